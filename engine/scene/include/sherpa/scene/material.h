@@ -1,0 +1,93 @@
+#pragma once
+// Materials: the CPU-side MaterialInstance and its GPU twin GPUMaterialData
+// (shaders/include/material.glsl must stay byte-identical).
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string>
+
+#include <glm/glm.hpp>
+
+namespace sherpa {
+
+enum class AlphaMode : std::uint32_t { Opaque = 0, Mask = 1, Blend = 2 };
+std::string_view to_string(AlphaMode m);
+
+// Unresolved texture index: the GPU layer replaces it by a default texture
+// (white for colour/linear roles, flat normal for normals, black for emissive).
+inline constexpr std::uint32_t kTextureSentinel = std::numeric_limits<std::uint32_t>::max();
+
+// KHR_texture_transform. `present` is false when the extension is absent.
+struct TextureTransform {
+    bool present = false;
+    glm::vec2 offset{0.0f};
+    glm::vec2 scale{1.0f};
+    float rotation = 0.0f; // radians, counter-clockwise in UV space
+    // UV transform as the extension defines it: T * R * S.
+    glm::mat3 matrix() const;
+};
+
+struct TextureSlot {
+    std::int32_t texture = -1; // index into Scene::textures, -1 = none
+    std::uint32_t tex_coord = 0; // effective TEXCOORD_n set (after KHR_texture_transform override)
+    TextureTransform transform;
+    bool present() const { return texture >= 0; }
+};
+
+struct MaterialInstance {
+    std::string name;
+    std::int32_t gltf_index = -1; // -1: Sherpa's default material
+    glm::vec4 base_color_factor{1.0f};
+    glm::vec3 emissive_factor{0.0f};
+    float emissive_strength = 1.0f; // KHR_materials_emissive_strength
+    float metallic_factor = 1.0f;
+    float roughness_factor = 1.0f;
+    float normal_scale = 1.0f;
+    float occlusion_strength = 1.0f;
+    float alpha_cutoff = 0.5f;
+    AlphaMode alpha_mode = AlphaMode::Opaque;
+    bool double_sided = false;
+    bool unlit = false; // KHR_materials_unlit
+    TextureSlot base_color, metallic_roughness, normal, occlusion, emissive;
+};
+
+// std430, 80 bytes, Himalaya's field order. Texture fields hold bindless indices once
+// the GPU layer resolves them; straight from the importer they hold glTF texture
+// indices or kTextureSentinel.
+struct alignas(16) GPUMaterialData {
+    glm::vec4 base_color_factor;     // 0
+    glm::vec4 emissive_factor;       // 16: xyz factor, w = KHR_materials_emissive_strength
+    float metallic_factor;           // 32
+    float roughness_factor;          // 36
+    float normal_scale;              // 40
+    float occlusion_strength;        // 44
+    std::uint32_t base_color_tex;    // 48
+    std::uint32_t emissive_tex;      // 52
+    std::uint32_t metallic_roughness_tex; // 56
+    std::uint32_t normal_tex;        // 60
+    std::uint32_t occlusion_tex;     // 64
+    float alpha_cutoff;              // 68
+    std::uint32_t alpha_mode;        // 72: AlphaMode
+    std::uint32_t double_sided;      // 76
+};
+static_assert(sizeof(GPUMaterialData) == 80);
+static_assert(alignof(GPUMaterialData) == 16);
+static_assert(offsetof(GPUMaterialData, base_color_factor) == 0);
+static_assert(offsetof(GPUMaterialData, emissive_factor) == 16);
+static_assert(offsetof(GPUMaterialData, metallic_factor) == 32);
+static_assert(offsetof(GPUMaterialData, roughness_factor) == 36);
+static_assert(offsetof(GPUMaterialData, normal_scale) == 40);
+static_assert(offsetof(GPUMaterialData, occlusion_strength) == 44);
+static_assert(offsetof(GPUMaterialData, base_color_tex) == 48);
+static_assert(offsetof(GPUMaterialData, emissive_tex) == 52);
+static_assert(offsetof(GPUMaterialData, metallic_roughness_tex) == 56);
+static_assert(offsetof(GPUMaterialData, normal_tex) == 60);
+static_assert(offsetof(GPUMaterialData, occlusion_tex) == 64);
+static_assert(offsetof(GPUMaterialData, alpha_cutoff) == 68);
+static_assert(offsetof(GPUMaterialData, alpha_mode) == 72);
+static_assert(offsetof(GPUMaterialData, double_sided) == 76);
+
+// GPU record with glTF texture indices (or the sentinel) in the texture fields.
+GPUMaterialData to_gpu_material(const MaterialInstance& m);
+
+} // namespace sherpa

@@ -1,0 +1,181 @@
+#pragma once
+// The engine's flat, render-ready scene model. Built by the glTF importer or the
+// built-in scene generators; knows nothing about files or GPUs.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <sherpa/core/aabb.h>
+#include <sherpa/scene/material.h>
+#include <sherpa/scene/texture_records.h>
+#include <sherpa/scene/vertex.h>
+
+namespace sherpa {
+
+// glTF primitive topology (values equal glTF's `mode`).
+enum class PrimitiveMode : std::uint8_t {
+    Points = 0, Lines = 1, LineLoop = 2, LineStrip = 3,
+    Triangles = 4, TriangleStrip = 5, TriangleFan = 6,
+};
+std::string_view to_string(PrimitiveMode m);
+
+// Where an attribute came from in the file (for the mesh/attribute dock).
+struct AccessorSource {
+    std::int32_t accessor = -1;
+    std::int32_t component_type = 0; // glTF componentType (5120..5126)
+    bool normalized = false;
+    std::uint32_t components = 0; // 1 (SCALAR) .. 4 (VEC4)
+    std::uint32_t count = 0;
+    std::int32_t buffer_view = -1;
+    std::uint32_t byte_stride = 0; // effective stride in bytes (0 without bufferView)
+    bool sparse = false;
+    std::uint32_t sparse_count = 0;
+    std::vector<double> min, max; // as declared in the file (may be empty)
+};
+
+// One engine mesh per glTF primitive with triangle topology.
+struct Mesh {
+    std::uint32_t group_id = 0;        // source glTF mesh index
+    std::uint32_t primitive_index = 0; // index within the glTF mesh
+    std::string name;
+    PrimitiveMode source_mode = PrimitiveMode::Triangles;
+    std::uint32_t material_id = 0; // index into Scene::materials
+    std::vector<Vertex> vertices;
+    std::vector<std::uint32_t> indices;  // triangle list
+    std::vector<glm::vec4> colors;       // COLOR_0 (RGBA, linear) or empty
+    std::array<Provenance, kVertexAttributeCount> provenance{};
+    std::array<std::optional<AccessorSource>, kVertexAttributeCount> sources;
+    std::optional<AccessorSource> index_source;
+    Aabb local_bounds;
+    // Counted the glTF way, before unwelding/splitting.
+    std::uint32_t source_vertex_count = 0;
+    std::uint32_t source_triangle_count = 0;
+    bool unwelded = false; // vertices were split per corner for flat normals
+
+    Provenance provenance_of(VertexAttribute a) const {
+        return provenance[static_cast<std::size_t>(a)];
+    }
+    std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(indices.size() / 3); }
+};
+
+// Every glTF primitive, triangle or not, as the file describes it.
+struct PrimitiveInfo {
+    std::uint32_t mesh = 0, primitive = 0;
+    PrimitiveMode mode = PrimitiveMode::Triangles;
+    std::uint32_t vertices = 0;   // POSITION count
+    std::uint32_t indices = 0;    // index accessor count (0 if non-indexed)
+    std::uint32_t triangles = 0;  // after strip/fan conversion
+    std::int32_t material = -1;   // glTF material index (-1: none)
+    std::int32_t engine_mesh = -1; // index into Scene::meshes, -1 if skipped
+    std::string skipped_reason;   // why no engine mesh was made
+    std::vector<std::pair<std::string, Provenance>> attributes;
+};
+
+struct Node {
+    std::string name;
+    std::int32_t parent = -1;
+    std::vector<std::uint32_t> children;
+    bool has_matrix = false;
+    glm::mat4 matrix{1.0f};
+    glm::vec3 translation{0.0f};
+    glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
+    glm::vec3 scale{1.0f};
+    std::int32_t mesh = -1, camera = -1, light = -1, skin = -1;
+    glm::mat4 local_transform() const;
+};
+
+enum class LightType : std::uint8_t { Directional, Point, Spot };
+struct Light {
+    std::string name;
+    LightType type = LightType::Directional;
+    glm::vec3 color{1.0f};
+    float intensity = 1.0f;
+    float range = 0.0f; // 0 = infinite
+    float inner_cone = 0.0f, outer_cone = 0.785398163f;
+};
+
+enum class CameraType : std::uint8_t { Perspective, Orthographic };
+struct Camera {
+    std::string name;
+    CameraType type = CameraType::Perspective;
+    float yfov = 0.8f, aspect = 0.0f; // aspect 0: use the viewport's
+    float znear = 0.05f, zfar = 0.0f; // zfar 0: infinite (perspective)
+    float xmag = 1.0f, ymag = 1.0f;
+};
+
+// A light or camera placed by a node of the displayed scene.
+struct PlacedLight {
+    std::uint32_t light = 0, node = 0;
+    glm::vec3 position{0.0f};
+    glm::vec3 direction{0.0f, 0.0f, -1.0f}; // world-space, unit: where the light points
+};
+struct PlacedCamera {
+    std::uint32_t camera = 0, node = 0;
+    glm::mat4 world{1.0f}; // camera-to-world; looks down -Z, up +Y
+};
+
+// One drawable: node x primitive of the displayed scene.
+struct MeshInstance {
+    std::uint32_t mesh_id = 0;
+    std::uint32_t material_id = 0;
+    std::uint32_t node_id = 0;
+    glm::mat4 world{1.0f};
+    glm::mat4 prev_world{1.0f};
+    Aabb world_bounds;
+};
+
+struct SceneDef {
+    std::string name;
+    std::vector<std::uint32_t> roots;
+};
+
+// Counts as the file states them (before unwelding or splitting).
+struct SourceCounts {
+    std::uint64_t scenes = 0, nodes = 0, meshes = 0, primitives = 0, materials = 0,
+                  textures = 0, images = 0, samplers = 0, lights = 0, cameras = 0,
+                  vertices = 0, triangles = 0;
+};
+
+struct Scene {
+    std::string source; // file path or builtin:... spec
+    SourceCounts counts;
+
+    std::vector<SceneDef> scenes;
+    std::int32_t displayed_scene = 0;
+    std::vector<Node> nodes;
+    std::vector<Mesh> meshes;
+    std::vector<PrimitiveInfo> primitives;
+    // Per glTF mesh: engine mesh id per primitive (-1 where skipped).
+    std::vector<std::vector<std::int32_t>> mesh_primitives;
+    std::vector<MaterialInstance> materials; // glTF materials, then the default if needed
+    std::vector<TextureRecord> textures;
+    std::vector<ImageRecord> images;
+    std::vector<SamplerDesc> samplers;
+    std::vector<Light> lights;
+    std::vector<Camera> cameras;
+
+    // Flattened displayed scene.
+    std::vector<MeshInstance> instances;
+    std::vector<PlacedLight> placed_lights;
+    std::vector<PlacedCamera> placed_cameras;
+    std::vector<glm::mat4> node_world; // identity for nodes outside the displayed scene
+    Aabb bounds;
+
+    std::vector<std::string> warnings;
+    double parse_ms = 0.0, process_ms = 0.0;
+
+    // Sampler for a texture, the glTF default when it names none.
+    SamplerDesc sampler_of(const TextureRecord& t) const;
+};
+
+// Rebuilds the flattened data (instances, placed lights/cameras, bounds) for
+// `scene_index`. Returns false with `error` set if the index is out of range or a
+// transform is not finite; the scene is unchanged then.
+bool select_scene(Scene& scene, std::int32_t scene_index, std::string& error);
+
+} // namespace sherpa

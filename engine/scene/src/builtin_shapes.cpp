@@ -79,7 +79,7 @@ Mesh make_uv_sphere(float radius, std::uint32_t segments, std::uint32_t rings) {
             m.vertices.push_back(vx);
         }
     }
-    grid_indices(m, segments, rings, true);
+    grid_indices(m, segments, rings, false);
     finish(m);
     return m;
 }
@@ -100,7 +100,7 @@ Mesh make_torus(float major_radius, float minor_radius, std::uint32_t segments,
             m.vertices.push_back(vx);
         }
     }
-    grid_indices(m, segments, sides, false);
+    grid_indices(m, segments, sides, true);
     finish(m);
     return m;
 }

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <chrono>
 #include <filesystem>
 
@@ -37,8 +38,18 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-std::string join_lines(const std::string& s) {
+// tinygltf messages can embed whole data URIs; keep messages one readable line.
+std::string clean_message(const std::string& s) {
     std::string out = s;
+    for (std::size_t at = out.find("base64,"); at != std::string::npos;
+         at = out.find("base64,", at + 1)) {
+        const std::size_t begin = at + 7;
+        std::size_t end = begin;
+        while (end < out.size() && (std::isalnum(static_cast<unsigned char>(out[end])) ||
+                                    out[end] == '+' || out[end] == '/' || out[end] == '='))
+            ++end;
+        if (end - begin > 16) out.replace(begin, end - begin, "...");
+    }
     while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
     std::replace(out.begin(), out.end(), '\n', ';');
     return out;
@@ -72,13 +83,13 @@ LoadResult import_gltf(const std::string& path, const LoadOptions& options) {
                                         reinterpret_cast<const char*>(bytes.data()),
                                         static_cast<unsigned>(bytes.size()), base_dir);
     if (!ok) {
-        result.error = path + ": " + (err.empty() ? "not a valid glTF file" : join_lines(err));
+        result.error = path + ": " + (err.empty() ? "not a valid glTF file" : clean_message(err));
         return result;
     }
     auto scene = std::make_unique<Scene>();
     scene->source = path;
     scene->parse_ms = ms_since(t_parse);
-    if (!warn.empty()) scene->warnings.push_back("tinygltf: " + join_lines(warn));
+    if (!warn.empty()) scene->warnings.push_back("tinygltf: " + clean_message(warn));
 
     const auto t_process = std::chrono::steady_clock::now();
     try {

@@ -34,6 +34,7 @@ struct Triangles {
     std::vector<std::uint8_t> flags;     // kOrientPreserving | kGroupWithAny
     std::vector<std::int32_t> neighbour; // 3 per triangle, across edge (i, i+1)
     std::vector<std::uint32_t> group_of; // 3 per triangle: the corner's group
+    std::vector<float> angle;            // 3 per triangle: the corner's weight
 };
 
 struct Group {
@@ -75,25 +76,32 @@ int corner_of(const std::uint32_t* cls3, std::uint32_t cls) {
     return cls3[0] == cls ? 0 : (cls3[1] == cls ? 1 : 2);
 }
 
+// Group members are stored as triangle << 2 | corner, so later steps need not search the
+// triangle for the group's vertex again. Sorting these sorts by triangle.
+std::uint32_t member(std::size_t triangle, int corner) {
+    return static_cast<std::uint32_t>(triangle << 2) | static_cast<std::uint32_t>(corner);
+}
+
 // Groups corners around each vertex (the reference's Build4RuleGroups/AssignRecur). The
 // reference recurses into the left neighbour, then the right; an explicit stack visits
 // triangles in the same order, which matters: the first group to reach a "group with
 // any" triangle decides that triangle's orientation.
-std::vector<Group> build_groups(Triangles& tris, std::vector<std::uint32_t>& faces) {
+std::vector<Group> build_groups(Triangles& tris, std::vector<std::uint32_t>& members) {
     const std::size_t count = tris.original.size();
     tris.group_of.assign(3 * count, kNoGroup);
-    faces.clear();
-    faces.reserve(3 * count);
+    members.clear();
+    members.reserve(3 * count);
     std::vector<Group> groups;
+    groups.reserve(count);
     std::vector<std::int32_t> stack;
     for (std::size_t f = 0; f < count; ++f) {
         if (tris.flags[f] & kGroupWithAny) continue;
         for (int i = 0; i < 3; ++i) {
             if (tris.group_of[3 * f + i] != kNoGroup) continue;
             const auto id = static_cast<std::uint32_t>(groups.size());
-            Group g{tris.cls[3 * f + i], static_cast<std::uint32_t>(faces.size()), 0,
+            Group g{tris.cls[3 * f + i], static_cast<std::uint32_t>(members.size()), 0,
                     (tris.flags[f] & kOrientPreserving) != 0};
-            faces.push_back(static_cast<std::uint32_t>(f));
+            members.push_back(member(f, i));
             tris.group_of[3 * f + i] = id;
             stack.assign({tris.neighbour[3 * f + (i + 2) % 3], tris.neighbour[3 * f + i]});
             while (!stack.empty()) {
@@ -105,44 +113,78 @@ std::vector<Group> build_groups(Triangles& tris, std::vector<std::uint32_t>& fac
                 const int c = corner_of(cls3, g.cls);
                 if (assigned[c] != kNoGroup) continue; // already ours, or another group's
                 std::uint8_t& flags = tris.flags[t];
-                if ((flags & kGroupWithAny) && assigned[0] == kNoGroup && assigned[1] == kNoGroup &&
-                    assigned[2] == kNoGroup)
+                if ((flags & kGroupWithAny) && assigned[0] == kNoGroup &&
+                    assigned[1] == kNoGroup && assigned[2] == kNoGroup)
                     flags = (flags & ~kOrientPreserving) | (g.orient_preserving ? 1 : 0);
                 if (((flags & kOrientPreserving) != 0) != g.orient_preserving) continue;
-                faces.push_back(static_cast<std::uint32_t>(t));
+                members.push_back(member(std::size_t(t), c));
                 assigned[c] = id;
                 const std::int32_t* nb = &tris.neighbour[3 * std::size_t(t)];
                 stack.push_back(nb[(c + 2) % 3]); // right, visited after all of left
                 stack.push_back(nb[c]);           // left
             }
-            g.size = static_cast<std::uint32_t>(faces.size()) - g.first;
+            g.size = static_cast<std::uint32_t>(members.size()) - g.first;
             groups.push_back(g);
         }
     }
     return groups;
 }
 
-// Angle-weighted average of the projected dP/du of `members` (ascending triangle order)
-// at the group's vertex: the reference's EvalTspace. `proj_os` holds each member's
-// projected, normalised dP/du, indexed like `members`.
-glm::vec3 eval_tangent(const TangentInput& in, const Triangles& tris,
-                       std::span<const std::uint32_t> members, std::span<const glm::vec3> proj_os,
-                       std::uint32_t cls, const glm::vec3& n) {
-    glm::vec3 sum(0.0f);
-    for (std::size_t m = 0; m < members.size(); ++m) {
-        const std::uint32_t f = members[m];
-        if (tris.flags[f] & kGroupWithAny) continue;
-        const int c = corner_of(&tris.cls[3 * std::size_t(f)], cls);
+// acos on [-1, 1] from Abramowitz & Stegun 4.4.46 (|error| <= 2e-8 rad): the angle
+// weights only need float accuracy, and this is several times cheaper than acosf.
+float fast_acos(float x) {
+    const float a = std::fabs(x);
+    float p = -0.0012624911f;
+    p = p * a + 0.0066700901f;
+    p = p * a - 0.0170881256f;
+    p = p * a + 0.0308918810f;
+    p = p * a - 0.0501743046f;
+    p = p * a + 0.0889789874f;
+    p = p * a - 0.2145988016f;
+    p = p * a + 1.5707963050f;
+    const float r = std::sqrt(1.0f - a) * p;
+    return x < 0.0f ? 3.14159265f - r : r;
+}
+
+// The angle of every kept corner between its two edges, projected onto the tangent
+// plane of the corner's normal: the weight MikkTSpace gives the triangle at that vertex.
+// One streaming pass instead of random access from inside the groups.
+void compute_corner_angles(const TangentInput& in, const WeldedCorners& weld, Triangles& tris) {
+    const std::size_t count = tris.original.size();
+    tris.angle.resize(3 * count);
+    for (std::size_t f = 0; f < count; ++f) {
         const std::uint32_t* idx = &in.indices[3 * std::size_t(tris.original[f])];
-        const glm::vec3 p0 = in.positions[idx[(c + 2) % 3]];
-        const glm::vec3 p1 = in.positions[idx[c]];
-        const glm::vec3 p2 = in.positions[idx[(c + 1) % 3]];
-        const glm::vec3 v1 = project_normalized(p0 - p1, n);
-        const glm::vec3 v2 = project_normalized(p2 - p1, n);
-        const float cosine = std::clamp(dot3(v1, v2), -1.0f, 1.0f);
-        sum += std::acos(cosine) * proj_os[m];
+        const glm::vec3 p[3] = {in.positions[idx[0]], in.positions[idx[1]], in.positions[idx[2]]};
+        for (int c = 0; c < 3; ++c) {
+            const glm::vec3 n = weld.class_normal[tris.cls[3 * f + c]];
+            const glm::vec3 v1 = project_normalized(p[(c + 2) % 3] - p[c], n);
+            const glm::vec3 v2 = project_normalized(p[(c + 1) % 3] - p[c], n);
+            tris.angle[3 * f + c] = fast_acos(std::clamp(dot3(v1, v2), -1.0f, 1.0f));
+        }
+    }
+}
+
+// Angle-weighted average of the projected dP/du over `sorted` (members in ascending
+// triangle order; `proj_os[k]` belongs to sorted[k]): the reference's EvalTspace.
+glm::vec3 eval_tangent(const Triangles& tris, std::span<const std::uint32_t> sorted,
+                       std::span<const glm::vec3> proj_os) {
+    glm::vec3 sum(0.0f);
+    for (std::size_t k = 0; k < sorted.size(); ++k) {
+        const std::uint32_t f = sorted[k] >> 2, c = sorted[k] & 3;
+        if (tris.flags[f] & kGroupWithAny) continue;
+        sum += tris.angle[3 * std::size_t(f) + c] * proj_os[k];
     }
     return not_zero(sum) ? normalized(sum) : sum;
+}
+
+// Sorts members (and their projected tangents alongside) by triangle. Groups hold a
+// vertex's valence worth of members, so insertion sort.
+void sort_members(std::span<std::uint32_t> m, std::span<glm::vec3> os) {
+    for (std::size_t i = 1; i < m.size(); ++i)
+        for (std::size_t j = i; j > 0 && m[j - 1] > m[j]; --j) {
+            std::swap(m[j - 1], m[j]);
+            std::swap(os[j - 1], os[j]);
+        }
 }
 
 } // namespace
@@ -175,27 +217,27 @@ void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
     tris.neighbour.resize(tris.cls.size());
     build_neighbours(tris.cls, static_cast<std::uint32_t>(weld.class_normal.size()),
                      tris.neighbour);
-    std::vector<std::uint32_t> faces;
-    const std::vector<Group> groups = build_groups(tris, faces);
+    compute_corner_angles(in, weld, tris);
+    std::vector<std::uint32_t> members;
+    const std::vector<Group> groups = build_groups(tris, members);
 
     // The reference's threshold is cos(180°) computed in float, i.e. exactly -1: two
     // triangles stay in one subgroup unless their projected tangents point exactly apart.
     constexpr float kThresholdCos = -1.0f;
-    std::vector<glm::vec3> proj_os, proj_ot;
-    std::vector<std::uint32_t> sorted, members, subgroup_members, subgroup_first, everyone, local;
-    std::vector<glm::vec3> subgroup_tangent, member_os;
+    std::vector<glm::vec3> proj_os, proj_ot, sorted_os, subgroup_tangent;
+    std::vector<std::uint32_t> sorted, subgroup_members, subgroup_first;
     for (const Group& g : groups) {
-        const std::span<const std::uint32_t> group_faces(&faces[g.first], g.size);
+        const std::span<const std::uint32_t> group(&members[g.first], g.size);
         const glm::vec3 n = weld.class_normal[g.cls];
         proj_os.resize(g.size);
         proj_ot.resize(g.size);
         for (std::uint32_t m = 0; m < g.size; ++m) {
-            proj_os[m] = project_normalized(tris.os[group_faces[m]], n);
-            proj_ot[m] = project_normalized(tris.ot[group_faces[m]], n);
+            proj_os[m] = project_normalized(tris.os[group[m] >> 2], n);
+            proj_ot[m] = project_normalized(tris.ot[group[m] >> 2], n);
         }
         auto together = [&](std::uint32_t a, std::uint32_t b) {
-            const std::uint32_t fa = group_faces[a], fb = group_faces[b];
-            return a == b || ((tris.flags[fa] | tris.flags[fb]) & kGroupWithAny) ||
+            return a == b ||
+                   ((tris.flags[group[a] >> 2] | tris.flags[group[b] >> 2]) & kGroupWithAny) ||
                    (dot3(proj_os[a], proj_os[b]) > kThresholdCos &&
                     dot3(proj_ot[a], proj_ot[b]) > kThresholdCos);
         };
@@ -204,33 +246,16 @@ void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
             for (std::uint32_t b = a + 1; b < g.size && all_together; ++b)
                 all_together = together(a, b);
 
-        // Member positions within the group sorted by triangle index: the reference sums
-        // each subgroup in ascending triangle order.
         auto write = [&](std::uint32_t m, const glm::vec3& tangent) {
-            const std::uint32_t f = group_faces[m];
-            const int c = corner_of(&tris.cls[3 * std::size_t(f)], g.cls);
-            const std::size_t corner = 3 * std::size_t(tris.original[f]) + c;
+            const std::size_t corner = 3 * std::size_t(tris.original[group[m] >> 2]) + (group[m] & 3);
             out[corner] = glm::vec4(tangent, g.orient_preserving ? -1.0f : 1.0f);
             assigned[corner] = 1;
         };
-        auto eval_subgroup = [&](std::span<const std::uint32_t> positions_in_group) {
-            sorted.clear();
-            member_os.clear();
-            for (std::uint32_t m : positions_in_group) sorted.push_back(m);
-            std::sort(sorted.begin(), sorted.end(), [&](std::uint32_t a, std::uint32_t b) {
-                return group_faces[a] < group_faces[b];
-            });
-            members.clear();
-            for (std::uint32_t m : sorted) {
-                members.push_back(group_faces[m]);
-                member_os.push_back(proj_os[m]);
-            }
-            return eval_tangent(in, tris, members, member_os, g.cls, n);
-        };
-        if (all_together) {
-            everyone.resize(g.size);
-            for (std::uint32_t m = 0; m < g.size; ++m) everyone[m] = m;
-            const glm::vec3 tangent = eval_subgroup(everyone);
+        if (all_together) { // one subgroup: the whole group
+            sorted.assign(group.begin(), group.end());
+            sorted_os.assign(proj_os.begin(), proj_os.end());
+            sort_members(sorted, sorted_os);
+            const glm::vec3 tangent = eval_tangent(tris, sorted, sorted_os);
             for (std::uint32_t m = 0; m < g.size; ++m) write(m, tangent);
             continue;
         }
@@ -240,15 +265,19 @@ void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
         subgroup_first.clear();
         subgroup_tangent.clear();
         for (std::uint32_t a = 0; a < g.size; ++a) {
-            local.clear();
+            sorted.clear();
+            sorted_os.clear();
             for (std::uint32_t b = 0; b < g.size; ++b)
-                if (together(a, b)) local.push_back(b);
-            std::sort(local.begin(), local.end());
+                if (together(a, b)) {
+                    sorted.push_back(group[b]);
+                    sorted_os.push_back(proj_os[b]);
+                }
+            sort_members(sorted, sorted_os);
             std::size_t found = subgroup_first.size();
             for (std::size_t s = 0; s < subgroup_first.size(); ++s) {
-                const std::size_t end =
-                    s + 1 < subgroup_first.size() ? subgroup_first[s + 1] : subgroup_members.size();
-                if (std::equal(local.begin(), local.end(),
+                const std::size_t end = s + 1 < subgroup_first.size() ? subgroup_first[s + 1]
+                                                                      : subgroup_members.size();
+                if (std::equal(sorted.begin(), sorted.end(),
                                subgroup_members.begin() + subgroup_first[s],
                                subgroup_members.begin() + end)) {
                     found = s;
@@ -257,8 +286,8 @@ void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
             }
             if (found == subgroup_first.size()) {
                 subgroup_first.push_back(static_cast<std::uint32_t>(subgroup_members.size()));
-                subgroup_members.insert(subgroup_members.end(), local.begin(), local.end());
-                subgroup_tangent.push_back(eval_subgroup(local));
+                subgroup_members.insert(subgroup_members.end(), sorted.begin(), sorted.end());
+                subgroup_tangent.push_back(eval_tangent(tris, sorted, sorted_os));
             }
             write(a, subgroup_tangent[found]);
         }

@@ -15,6 +15,9 @@ struct Subcommand {
 constexpr Subcommand kSubcommands[] = {
     {"info", sherpa::cli::run_info,
      "info SCENE [--json] [--scene N]   report on a scene (path or builtin:...)"},
+    {"tangents", sherpa::cli::run_tangents,
+     "tangents SCENE --dump FILE.csv [--method NAME] [--regenerate]   per-corner tangents\n"
+     "  tangents SCENE --compare [--method NAME] [--json]   authored vs regenerated"},
 };
 
 int usage(std::FILE* out) {

@@ -63,7 +63,8 @@ void report_tangents(Scene& scene, const SceneTangentReport& report) {
         const std::string where = "mesh " + std::to_string(mesh.group_id) + " primitive " +
                                   std::to_string(mesh.primitive_index) + ": ";
         if (!m.generated) {
-            if (m.reason.rfind("tangent generation failed", 0) == 0) scene.warnings.push_back(where + m.reason);
+            if (m.reason.rfind("tangent generation failed", 0) == 0)
+                scene.warnings.push_back(where + m.reason);
             continue;
         }
         if (m.reason != "generated") scene.warnings.push_back(where + m.reason);
@@ -124,7 +125,8 @@ LoadResult import_gltf(const std::string& path, const LoadOptions& options) {
         detail::import_samplers_images_textures(ctx);
         detail::import_materials(ctx);
         detail::import_meshes(ctx);
-        if (options.generate_tangents) report_tangents(*scene, generate_scene_tangents(*scene, options.tangents));
+        if (options.generate_tangents)
+            report_tangents(*scene, generate_scene_tangents(*scene, options.tangents));
         detail::import_lights_cameras(ctx);
         detail::import_nodes_and_scenes(ctx);
         const std::int32_t scene_index =

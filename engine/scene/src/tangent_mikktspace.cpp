@@ -113,8 +113,8 @@ std::vector<Group> build_groups(Triangles& tris, std::vector<std::uint32_t>& mem
                 const int c = corner_of(cls3, g.cls);
                 if (assigned[c] != kNoGroup) continue; // already ours, or another group's
                 std::uint8_t& flags = tris.flags[t];
-                if ((flags & kGroupWithAny) && assigned[0] == kNoGroup &&
-                    assigned[1] == kNoGroup && assigned[2] == kNoGroup)
+                if ((flags & kGroupWithAny) && assigned[0] == kNoGroup && assigned[1] == kNoGroup &&
+                    assigned[2] == kNoGroup)
                     flags = (flags & ~kOrientPreserving) | (g.orient_preserving ? 1 : 0);
                 if (((flags & kOrientPreserving) != 0) != g.orient_preserving) continue;
                 members.push_back(member(std::size_t(t), c));
@@ -247,7 +247,8 @@ void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
                 all_together = together(a, b);
 
         auto write = [&](std::uint32_t m, const glm::vec3& tangent) {
-            const std::size_t corner = 3 * std::size_t(tris.original[group[m] >> 2]) + (group[m] & 3);
+            const std::size_t corner =
+                3 * std::size_t(tris.original[group[m] >> 2]) + (group[m] & 3);
             out[corner] = glm::vec4(tangent, g.orient_preserving ? -1.0f : 1.0f);
             assigned[corner] = 1;
         };
@@ -275,8 +276,8 @@ void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
             sort_members(sorted, sorted_os);
             std::size_t found = subgroup_first.size();
             for (std::size_t s = 0; s < subgroup_first.size(); ++s) {
-                const std::size_t end = s + 1 < subgroup_first.size() ? subgroup_first[s + 1]
-                                                                      : subgroup_members.size();
+                const std::size_t end =
+                    s + 1 < subgroup_first.size() ? subgroup_first[s + 1] : subgroup_members.size();
                 if (std::equal(sorted.begin(), sorted.end(),
                                subgroup_members.begin() + subgroup_first[s],
                                subgroup_members.begin() + end)) {

@@ -17,6 +17,9 @@ constexpr Subcommand kSubcommands[] = {
      "info SCENE [--json] [--scene N]   report on a scene (path or builtin:...)"},
     {"cull", sherpa::cli::run_cull,
      "cull SCENE --camera eye=x,y,z:target=x,y,z[:...] [--method sphere|pvertex|exact] [--json]"},
+    {"tangents", sherpa::cli::run_tangents,
+     "tangents SCENE --dump FILE.csv [--method NAME] [--regenerate]   per-corner tangents\n"
+     "  tangents SCENE --compare [--method NAME] [--json]   authored vs regenerated"},
 };
 
 int usage(std::FILE* out) {

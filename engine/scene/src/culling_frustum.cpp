@@ -134,15 +134,24 @@ bool sphere_visible(const Frustum& f, const Aabb& box) {
     return true;
 }
 
+namespace {
+
+// The box corner farthest along the plane normal (p-vertex), or against it (n-vertex).
+glm::vec3 p_vertex(const Plane& p, const Aabb& b) {
+    return {p.normal.x >= 0 ? b.max.x : b.min.x, p.normal.y >= 0 ? b.max.y : b.min.y,
+            p.normal.z >= 0 ? b.max.z : b.min.z};
+}
+glm::vec3 n_vertex(const Plane& p, const Aabb& b) {
+    return {p.normal.x >= 0 ? b.min.x : b.max.x, p.normal.y >= 0 ? b.min.y : b.max.y,
+            p.normal.z >= 0 ? b.min.z : b.max.z};
+}
+
+} // namespace
+
 bool pvertex_visible(const Frustum& f, const Aabb& box) {
     if (f.empty) return false;
-    for (std::uint32_t i = 0; i < f.plane_count; ++i) {
-        const Plane& p = f.planes[i];
-        const glm::vec3 v{p.normal.x >= 0 ? box.max.x : box.min.x,
-                          p.normal.y >= 0 ? box.max.y : box.min.y,
-                          p.normal.z >= 0 ? box.max.z : box.min.z};
-        if (p.distance(v) < 0.0f) return false;
-    }
+    for (std::uint32_t i = 0; i < f.plane_count; ++i)
+        if (f.planes[i].distance(p_vertex(f.planes[i], box)) < 0.0f) return false;
     return true;
 }
 
@@ -153,14 +162,8 @@ bool exact_visible(const Frustum& f, const Aabb& box) {
     bool wholly_inside = true;
     for (std::uint32_t i = 0; i < f.plane_count; ++i) {
         const Plane& p = f.planes[i];
-        const glm::vec3 pv{p.normal.x >= 0 ? box.max.x : box.min.x,
-                           p.normal.y >= 0 ? box.max.y : box.min.y,
-                           p.normal.z >= 0 ? box.max.z : box.min.z};
-        if (p.distance(pv) < 0.0f) return false;
-        const glm::vec3 nv{p.normal.x >= 0 ? box.min.x : box.max.x,
-                           p.normal.y >= 0 ? box.min.y : box.max.y,
-                           p.normal.z >= 0 ? box.min.z : box.max.z};
-        wholly_inside &= p.distance(nv) >= 0.0f;
+        if (p.distance(p_vertex(p, box)) < 0.0f) return false;
+        wholly_inside &= p.distance(n_vertex(p, box)) >= 0.0f;
     }
     if (wholly_inside) return true;
     const glm::dvec3 c = glm::dvec3(box.center()), e = 0.5 * glm::dvec3(box.extent());

@@ -46,7 +46,7 @@ void main() {
 
     vec4 base = m.base_color_factor * in_color *
                 sample_slot(x, SLOT_BASE_COLOR, m.base_color_tex, in_uv0, in_uv1);
-    if (m.alpha_mode == 1u && base.a < m.alpha_cutoff) discard;
+    if (m.alpha_mode == SHERPA_ALPHA_MASK && base.a < m.alpha_cutoff) discard;
 
     vec3 v = normalize(pc.frame.camera_position.xyz - in_world_pos);
     // Geometric normal from screen derivatives, turned towards the viewer.
@@ -77,7 +77,7 @@ void main() {
     float ao = 1.0 + m.occlusion_strength * (ao_tex - 1.0);
     vec3 emissive = m.emissive_factor.rgb * m.emissive_factor.w *
                     sample_slot(x, SLOT_EMISSIVE, m.emissive_tex, in_uv0, in_uv1).rgb;
-    float alpha = m.alpha_mode == 2u ? base.a : 1.0;
+    float alpha = m.alpha_mode == SHERPA_ALPHA_BLEND ? base.a : 1.0;
 
     vec3 c;
     switch (view) {

@@ -9,6 +9,7 @@
 #extension GL_EXT_nonuniform_qualifier : require
 
 #include "material.glsl"
+#include "material_extra.glsl"
 
 const uint MAX_LIGHTS = 16;
 const uint MAX_CASCADES = 4;

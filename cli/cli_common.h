@@ -13,5 +13,6 @@ inline constexpr int kExitUsage = 2;
 using Args = std::span<const std::string_view>;
 
 int run_info(Args args);
+int run_render(Args args);
 
 } // namespace sherpa::cli

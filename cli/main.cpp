@@ -15,6 +15,10 @@ struct Subcommand {
 constexpr Subcommand kSubcommands[] = {
     {"info", sherpa::cli::run_info,
      "info SCENE [--json] [--scene N]   report on a scene (path or builtin:...)"},
+    {"render", sherpa::cli::run_render,
+     "render SCENE -o OUT.png [--width W --height H] [--view NAME] [--overlay NAME ...]\n"
+     "         [--camera auto|gltf:N|eye=x,y,z:target=x,y,z] [--frames N] [--report FILE.json]\n"
+     "                                     render offscreen (Vulkan) to a PNG"},
 };
 
 int usage(std::FILE* out) {

@@ -60,6 +60,8 @@ std::string missing_features(const FeatureChain& f) {
          "descriptorBindingSampledImageUpdateAfterBind");
     need(f.v12.shaderSampledImageArrayNonUniformIndexing,
          "shaderSampledImageArrayNonUniformIndexing");
+    need(f.v12.descriptorBindingUpdateUnusedWhilePending,
+         "descriptorBindingUpdateUnusedWhilePending");
     need(f.v12.bufferDeviceAddress, "bufferDeviceAddress");
     need(f.v12.scalarBlockLayout, "scalarBlockLayout");
     need(f.v12.hostQueryReset, "hostQueryReset");
@@ -85,17 +87,19 @@ bool ContextOptions::default_validation() {
 #endif
 }
 
-std::vector<std::string> Context::required_instance_extensions(bool validation) {
+std::vector<std::string> Context::required_instance_extensions(bool validation, bool presentation) {
     std::vector<std::string> out;
     if (validation) out.emplace_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    if (presentation) out.emplace_back(VK_KHR_SURFACE_EXTENSION_NAME);
     return out;
 }
 
 Context::Context(const ContextOptions& options) : validation_(std::make_unique<ValidationLog>()) {
+    validation_->set_echo(options.echo_validation);
     try {
         create_instance(options);
         pick_physical_device(options);
-        create_device();
+        create_device(options.presentation);
     } catch (...) {
         destroy(); // the destructor does not run for a throwing constructor
         throw;
@@ -157,7 +161,8 @@ void Context::create_instance(const ContextOptions& options) {
         owns_instance_ = false;
     } else {
         std::vector<std::string> ext_names = options.instance_extensions;
-        for (auto& e : required_instance_extensions(validation)) ext_names.push_back(e);
+        for (auto& e : required_instance_extensions(validation, options.presentation))
+            ext_names.push_back(e);
         std::sort(ext_names.begin(), ext_names.end());
         ext_names.erase(std::unique(ext_names.begin(), ext_names.end()), ext_names.end());
         std::vector<const char*> exts;
@@ -243,7 +248,7 @@ void Context::pick_physical_device(const ContextOptions& options) {
     vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
 }
 
-void Context::create_device() {
+void Context::create_device(bool presentation) {
     std::uint32_t n = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(physical_, &n, nullptr);
     std::vector<VkQueueFamilyProperties> families(n);
@@ -278,6 +283,7 @@ void Context::create_device() {
     f.v12.descriptorBindingVariableDescriptorCount = VK_TRUE;
     f.v12.descriptorBindingSampledImageUpdateAfterBind = VK_TRUE;
     f.v12.shaderSampledImageArrayNonUniformIndexing = VK_TRUE;
+    f.v12.descriptorBindingUpdateUnusedWhilePending = VK_TRUE;
     f.v12.bufferDeviceAddress = VK_TRUE;
     f.v12.scalarBlockLayout = VK_TRUE;
     f.v12.hostQueryReset = VK_TRUE;
@@ -313,7 +319,9 @@ void Context::create_device() {
     }
 
     std::vector<const char*> enabled;
-    if (has_extension(exts, VK_KHR_SWAPCHAIN_EXTENSION_NAME)) {
+    if (presentation) {
+        if (!has_extension(exts, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
+            throw GpuError(info_.name + ": presentation requested but VK_KHR_swapchain is missing");
         enabled.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
         info_.swapchain = true;
     }

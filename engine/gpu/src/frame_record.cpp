@@ -179,6 +179,8 @@ void Renderer::record_passes(VkCommandBuffer cmd, FrameSlot& slot, const RenderT
     VkDescriptorSet set = bindless_->set();
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.layout(), 0, 1, &set, 0,
                             nullptr);
+    if (scene_ && scene_->index_buffer() != VK_NULL_HANDLE)
+        vkCmdBindIndexBuffer(cmd, scene_->index_buffer(), 0, VK_INDEX_TYPE_UINT32);
     VkQueryPool ts = slot.timestamps.get();
     vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ts, 0);
     if (shadows) record_shadows(cmd, slot, p, cascades);

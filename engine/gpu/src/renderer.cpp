@@ -63,7 +63,8 @@ void Renderer::init_shadow_map() {
     d.format = kDepthFormat;
     d.width = d.height = options_.shadow_resolution;
     d.layers = kMaxCascades;
-    d.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    d.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+              VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     d.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
     d.view_type = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
     d.layer_views = true;

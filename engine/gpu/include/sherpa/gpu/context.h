@@ -30,6 +30,12 @@ struct ContextOptions {
     // It stays owned by the caller and must outlive the Context.
     VkInstance external_instance = VK_NULL_HANDLE;
 
+    // Enable VK_KHR_surface on the instance and VK_KHR_swapchain on the device. Add
+    // the platform's surface extension (e.g. VK_KHR_xcb_surface) to instance_extensions.
+    bool presentation = false;
+    // Print each validation message to stderr as it arrives (from instance creation on).
+    bool echo_validation = false;
+
     static bool default_validation();
 };
 
@@ -59,7 +65,8 @@ public:
 
     // Instance extensions the engine needs when the caller creates the instance
     // (VK_KHR_surface is added when presenting; debug utils when validating).
-    static std::vector<std::string> required_instance_extensions(bool validation);
+    static std::vector<std::string> required_instance_extensions(bool validation,
+                                                                 bool presentation);
 
     VkInstance instance() const { return instance_; }
     VkPhysicalDevice physical_device() const { return physical_; }
@@ -83,7 +90,7 @@ public:
 private:
     void create_instance(const ContextOptions& options);
     void pick_physical_device(const ContextOptions& options);
-    void create_device();
+    void create_device(bool presentation);
     void destroy();
 
     std::unique_ptr<ValidationLog> validation_;

@@ -64,7 +64,10 @@ public:
     // World bounds per GPU instance (draw-group order) for sorting and overlays.
     const std::vector<Aabb>& instance_bounds() const { return instance_bounds_; }
     const Aabb& bounds() const { return bounds_; }
-    VkBuffer index_buffer() const { return resources_.get(indices_).buffer.get(); }
+    // Null when no instanced mesh has triangles (then there are no draw groups).
+    VkBuffer index_buffer() const {
+        return indices_.valid() ? resources_.get(indices_).buffer.get() : VK_NULL_HANDLE;
+    }
     VkDeviceAddress instances_address() const { return resources_.get(instances_).address; }
     VkDeviceAddress materials_address() const { return resources_.get(materials_).address; }
     VkDeviceAddress material_extras_address() const {

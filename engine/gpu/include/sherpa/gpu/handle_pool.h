@@ -3,6 +3,7 @@
 // bumps its generation, so every later use of an old handle is detected and
 // reported as a GpuError instead of touching whatever reuses the slot.
 #include <cstdint>
+#include <deque>
 #include <optional>
 #include <string>
 #include <vector>
@@ -78,7 +79,7 @@ private:
     }
 
     const char* kind_;
-    std::vector<Slot> slots_;
+    std::deque<Slot> slots_; // deque: references from get() survive later inserts
     std::vector<std::uint32_t> free_;
     std::size_t live_ = 0;
     std::uint64_t stale_uses_ = 0;

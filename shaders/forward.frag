@@ -6,6 +6,7 @@
 #include "brdf.glsl"
 #include "shadows.glsl"
 #include "debug_views.glsl"
+#include "material_sampling.glsl"
 
 layout(location = 0) in vec3 in_world_pos;
 layout(location = 1) in vec3 in_normal;
@@ -39,20 +40,24 @@ vec3 punctual_light(Surface s, GPULight light, vec3 pos) {
     return brdf_times_cos(s, l) * radiance;
 }
 
+vec3 geometric_normal(vec3 v) {
+    // Face normal from screen derivatives, turned towards the viewer.
+    vec3 geo = normalize(cross(dFdx(in_world_pos), dFdy(in_world_pos)));
+    return dot(geo, v) < 0.0 ? -geo : geo;
+}
+
 void main() {
     GPUMaterialData m = pc.materials.v[pc.material_id];
     GPUMaterialExtra x = pc.material_extras.v[pc.material_id];
     uint view = pc.frame.params.x;
+    vec2 uv0 = in_uv0, uv1 = in_uv1;
 
-    vec4 base = m.base_color_factor * in_color *
-                sample_slot(x, SLOT_BASE_COLOR, m.base_color_tex, in_uv0, in_uv1);
+    // Alpha decides coverage in every view; other inputs only where a view shows them.
+    bool need_base = view == VIEW_LIT || view == VIEW_BASE_COLOR || m.alpha_mode != SHERPA_ALPHA_OPAQUE;
+    vec4 base = need_base ? base_color(m, x, in_color, uv0, uv1) : vec4(1.0);
     if (m.alpha_mode == SHERPA_ALPHA_MASK && base.a < m.alpha_cutoff) discard;
 
     vec3 v = normalize(pc.frame.camera_position.xyz - in_world_pos);
-    // Geometric normal from screen derivatives, turned towards the viewer.
-    vec3 geo = normalize(cross(dFdx(in_world_pos), dFdy(in_world_pos)));
-    if (dot(geo, v) < 0.0) geo = -geo;
-
     vec3 n = normalize(in_normal);
     vec3 t = in_tangent.xyz;
     t = dot(t, t) > 1e-12 ? normalize(t - n * dot(n, t)) : vec3(1.0, 0.0, 0.0);
@@ -64,20 +69,6 @@ void main() {
         t = -t;
         b = -b;
     }
-    vec3 shading_n = n;
-    if (has(HAS_TANGENT) || m.normal_tex > 2u) {
-        vec3 tn = sample_slot(x, SLOT_NORMAL, m.normal_tex, in_uv0, in_uv1).xyz * 2.0 - 1.0;
-        tn.xy *= m.normal_scale;
-        shading_n = normalize(mat3(t, b, n) * tn);
-    }
-    vec4 mr = sample_slot(x, SLOT_METALLIC_ROUGHNESS, m.metallic_roughness_tex, in_uv0, in_uv1);
-    float metallic = clamp(m.metallic_factor * mr.b, 0.0, 1.0);
-    float roughness = clamp(m.roughness_factor * mr.g, 0.0, 1.0);
-    float ao_tex = sample_slot(x, SLOT_OCCLUSION, m.occlusion_tex, in_uv0, in_uv1).r;
-    float ao = 1.0 + m.occlusion_strength * (ao_tex - 1.0);
-    vec3 emissive = m.emissive_factor.rgb * m.emissive_factor.w *
-                    sample_slot(x, SLOT_EMISSIVE, m.emissive_tex, in_uv0, in_uv1).rgb;
-    float alpha = m.alpha_mode == SHERPA_ALPHA_BLEND ? base.a : 1.0;
 
     vec3 c;
     switch (view) {
@@ -88,32 +79,40 @@ void main() {
         c = in_tangent.w > 0.0 ? vec3(0.15, 0.75, 0.2) : in_tangent.w < 0.0 ? vec3(0.9, 0.15, 0.1)
                                                                             : vec3(0.95, 0.8, 0.1);
         break;
-    case VIEW_UV0: c = vec3(fract(in_uv0), 0.0); break;
-    case VIEW_UV1: c = vec3(fract(in_uv1), 0.0); break;
-    case VIEW_UV0_CHECKER: c = checker_color(in_uv0); break;
-    case VIEW_UV1_CHECKER: c = checker_color(in_uv1); break;
+    case VIEW_UV0: c = vec3(fract(uv0), 0.0); break;
+    case VIEW_UV1: c = vec3(fract(uv1), 0.0); break;
+    case VIEW_UV0_CHECKER: c = checker_color(uv0); break;
+    case VIEW_UV1_CHECKER: c = checker_color(uv1); break;
     case VIEW_BASE_COLOR: c = base.rgb; break;
-    case VIEW_METALLIC: c = vec3(metallic); break;
-    case VIEW_ROUGHNESS: c = vec3(roughness); break;
-    case VIEW_OCCLUSION: c = vec3(ao); break;
-    case VIEW_EMISSIVE: c = emissive; break;
-    case VIEW_GEOMETRIC_VS_SHADING: c = angle_ramp(acos(clamp(dot(geo, shading_n), -1.0, 1.0))); break;
+    case VIEW_METALLIC: c = vec3(metallic_roughness(m, x, uv0, uv1).x); break;
+    case VIEW_ROUGHNESS: c = vec3(metallic_roughness(m, x, uv0, uv1).y); break;
+    case VIEW_OCCLUSION: c = vec3(occlusion(m, x, uv0, uv1)); break;
+    case VIEW_EMISSIVE: c = emission(m, x, uv0, uv1); break;
+    case VIEW_GEOMETRIC_VS_SHADING: {
+        vec3 sn = mapped_normal(m, x, t, b, n, uv0, uv1);
+        c = angle_ramp(acos(clamp(dot(geometric_normal(v), sn), -1.0, 1.0)));
+        break;
+    }
     case VIEW_PROVENANCE: c = provenance_color((pc.mesh_flags >> TANGENT_PROVENANCE_SHIFT) & 3u); break;
-    case VIEW_SHADING_NORMAL: c = encode_vector(shading_n); break;
+    case VIEW_SHADING_NORMAL: c = encode_vector(mapped_normal(m, x, t, b, n, uv0, uv1)); break;
     default: {
         if (x.unlit != 0u) {
             c = base.rgb;
             break;
         }
-        Surface s = Surface(base.rgb, metallic, roughness, shading_n, v);
+        vec2 mr = metallic_roughness(m, x, uv0, uv1);
+        Surface s = Surface(base.rgb, mr.x, mr.y, mapped_normal(m, x, t, b, n, uv0, uv1), v);
         float view_depth = -(pc.frame.view * vec4(in_world_pos, 1.0)).z;
-        float shadow = sun_shadow(in_world_pos, geo, view_depth);
+        // Shadow normal offset along the interpolated normal (cheaper than derivatives).
+        float shadow = sun_shadow(in_world_pos, n, view_depth);
         c = brdf_times_cos(s, -normalize(pc.frame.sun_direction.xyz)) * pc.frame.sun_radiance.rgb * shadow;
         for (uint i = 0u; i < pc.frame.params.y; ++i) c += punctual_light(s, pc.frame.lights[i], in_world_pos);
-        c += ambient_light(s, pc.frame.ambient.rgb) * ao;
-        c += emissive;
+        c += ambient_light(s, pc.frame.ambient.rgb) * occlusion(m, x, uv0, uv1);
+        c += emission(m, x, uv0, uv1);
         break;
     }
     }
-    out_color = vec4(c, view == VIEW_LIT ? alpha : 1.0);
+    // Colour views (lit, base colour, emissive) are linear radiance; the rest are data.
+    if (view != VIEW_LIT && view != VIEW_BASE_COLOR && view != VIEW_EMISSIVE) c = display_to_linear(c);
+    out_color = vec4(c, view == VIEW_LIT && m.alpha_mode == SHERPA_ALPHA_BLEND ? base.a : 1.0);
 }

@@ -7,6 +7,6 @@ layout(set = 0, binding = 0) uniform sampler2DArrayShadow shadow_map;
 layout(set = 0, binding = 1) uniform sampler2D textures[];
 
 vec4 sample_slot(GPUMaterialExtra extra, uint slot, uint tex, vec2 uv0, vec2 uv1) {
-    return texture(textures[nonuniformEXT(tex)], transform_uv(extra.uv[slot], uv0, uv1));
+    return texture(textures[tex], transform_uv(extra.uv[slot], uv0, uv1));
 }
 #endif

@@ -46,13 +46,21 @@ vec3 brdf_times_cos(Surface s, vec3 l) {
     return (diffuse + specular) * n_dot_l;
 }
 
-// The simple ambient term: uniform radiance, diffuse plus a roughness-dimmed
-// Fresnel-weighted specular so metals are not black without an environment map.
+// The simple ambient term: a sky/ground hemisphere (brighter above, darker below)
+// instead of an environment map. Diffuse reads it along the normal, specular along
+// the reflection vector, so normal-mapped metals still show their relief.
+vec3 hemisphere(vec3 dir, vec3 radiance) {
+    return radiance * mix(0.35, 1.6, 0.5 + 0.5 * dir.y);
+}
+
 vec3 ambient_light(Surface s, vec3 radiance) {
     float n_dot_v = clamp(abs(dot(s.n, s.v)), 1e-4, 1.0);
     vec3 f0 = mix(vec3(0.04), s.albedo, s.metallic);
     vec3 f = f0 + (max(vec3(1.0 - s.roughness), f0) - f0) * pow(1.0 - n_dot_v, 5.0);
-    vec3 diffuse = (1.0 - f) * (1.0 - s.metallic) * s.albedo;
-    return (diffuse + f) * radiance;
+    vec3 diffuse = (1.0 - f) * (1.0 - s.metallic) * s.albedo * hemisphere(s.n, radiance);
+    vec3 r = reflect(-s.v, s.n);
+    // Rough surfaces see a blurrier sky: blend the reflected towards the normal's.
+    vec3 specular = f * hemisphere(normalize(mix(r, s.n, s.roughness * s.roughness)), radiance);
+    return diffuse + specular;
 }
 #endif

@@ -31,7 +31,7 @@ layout(buffer_reference, scalar, buffer_reference_align = 16) readonly buffer Fr
     vec4 sun_direction;                     // 480: xyz direction light travels, w 1 = shadowed
     vec4 sun_radiance;                      // 496: rgb colour * intensity
     vec4 ambient;                           // 512: rgb ambient radiance
-    uvec4 params;                           // 528: x view, y lights, z cascades, w unused
+    uvec4 params;                           // 528: x view, y lights, z cascades, w shadow taps
     vec4 overlay;                           // 544: x glyph length
     GPULight lights[MAX_LIGHTS];            // 560
 };

@@ -3,6 +3,13 @@
 #define SHERPA_DEBUG_VIEWS_GLSL
 vec3 encode_vector(vec3 v) { return 0.5 + 0.5 * v; }
 
+// Data views (vectors, UVs, scalars) must show their values as stored bytes, the
+// way tools display normal maps; the sRGB target encodes on write, so decode first.
+vec3 display_to_linear(vec3 c) {
+    c = clamp(c, 0.0, 1.0);
+    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), greaterThan(c, vec3(0.04045)));
+}
+
 float checker(vec2 uv) {
     // 8x8 checks per UV unit; the tint shows which way U (red) and V (green) grow.
     vec2 c = floor(uv * 8.0);

@@ -72,7 +72,9 @@ void Renderer::fill_frame_data(FrameSlot& slot, const RenderSettings& settings, 
         shadows = c.count > 0 && (!shadow_map_valid_ || key != shadow_key_);
         if (shadows) shadow_key_ = std::move(key);
     }
-    f.params = glm::uvec4(static_cast<std::uint32_t>(settings.view), count, cascades, 0u);
+    // Every filtered fetch is expensive on a CPU rasterizer: one 2x2 PCF tap there.
+    const std::uint32_t taps = context_.info().is_cpu() ? 1u : 4u;
+    f.params = glm::uvec4(static_cast<std::uint32_t>(settings.view), count, cascades, taps);
     const float diagonal = info.bounds.valid() ? glm::length(info.bounds.extent()) : 1.0f;
     f.overlay = glm::vec4(settings.glyph_length > 0.0f ? settings.glyph_length : 0.02f * diagonal,
                           0.0f, 0.0f, 0.0f);

@@ -123,13 +123,12 @@ void GpuScene::upload_geometry(const Scene& scene) {
                            std::to_string(mesh.material_id) + " of " +
                            std::to_string(scene.materials.size()));
 
-        std::array<bool, kVertexAttributeCount> upload{};
-        if (policy_ == StreamPolicy::UsedByMaterials) {
-            upload = attributes_used(scene.materials[mesh.material_id], mesh);
-        } else {
+        // What shading reads; debug views add every authored or generated stream.
+        std::array<bool, kVertexAttributeCount> upload =
+            attributes_used(scene.materials[mesh.material_id], mesh);
+        if (policy_ == StreamPolicy::AllPresent)
             for (VertexAttribute a : kAllVertexAttributes)
-                upload[std::size_t(a)] = mesh.provenance_of(a) != Provenance::Defaulted;
-        }
+                if (mesh.provenance_of(a) != Provenance::Defaulted) upload[std::size_t(a)] = true;
         upload[std::size_t(VertexAttribute::Position)] = true; // every pass reads positions
         if (mesh.colors.size() != mesh.vertices.size())
             upload[std::size_t(VertexAttribute::Color0)] = false;

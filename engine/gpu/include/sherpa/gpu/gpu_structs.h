@@ -39,7 +39,7 @@ struct GPUFrameData {
     glm::vec4 sun_direction;
     glm::vec4 sun_radiance;
     glm::vec4 ambient;
-    glm::uvec4 params; // x view, y light count, z cascade count
+    glm::uvec4 params; // x view, y light count, z cascade count, w shadow taps (1 or 4)
     glm::vec4 overlay;
     GPULight lights[kMaxLights];
 };

@@ -130,6 +130,10 @@ void Renderer::unload() {
     resources_->collect_garbage();
 }
 
+void Renderer::wait_for_slot(std::uint32_t slot) {
+    wait_slot(*slots_.at(slot));
+}
+
 void Renderer::wait_slot(FrameSlot& slot) {
     if (slot.submission) resources_->wait_for(slot.submission);
 }

@@ -74,6 +74,8 @@ public:
     void record_frame(VkCommandBuffer cmd, std::uint32_t slot, const RenderTarget& target,
                       const RenderSettings& settings);
     void finish_frame(std::uint32_t slot, std::uint64_t submission);
+    // Waits until the last frame recorded in `slot` has completed on the GPU.
+    void wait_for_slot(std::uint32_t slot);
     // Results of the last completed frame recorded in `slot` (waits for it).
     FrameStats slot_stats(std::uint32_t slot);
 

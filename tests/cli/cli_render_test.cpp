@@ -1,5 +1,6 @@
 // sherpa-cli render: PNG output, report JSON schema, error exits. Runs the CLI
 // with --validation so any Vulkan validation message fails the command.
+#include "cli/cli_run.h"
 #include "test_support.h"
 
 #include <sherpa/gpu/image_io.h>
@@ -13,23 +14,8 @@
 
 namespace {
 
-struct CliRun {
-    int exit_code;
-    std::string out;
-};
-
-CliRun run_cli(const std::string& args) {
-    const std::string cmd = std::string(SHERPA_CLI_PATH) + " " + args + " 2>&1";
-    FILE* p = popen(cmd.c_str(), "r");
-    CliRun r{-1, {}};
-    if (!p) return r;
-    std::array<char, 4096> buf;
-    std::size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-    const int status = pclose(p);
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
+using sherpa::test::CliRun;
+using sherpa::test::run_cli;
 
 std::string temp_path(const std::string& name) {
     return (std::filesystem::temp_directory_path() /

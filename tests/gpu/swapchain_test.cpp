@@ -73,6 +73,17 @@ struct XcbWindow {
     }
 };
 
+VkSurfaceKHR make_surface(const gpu::Context& context, const XcbWindow& window) {
+    auto sci =
+        gpu::vk_init<VkXcbSurfaceCreateInfoKHR>(VK_STRUCTURE_TYPE_XCB_SURFACE_CREATE_INFO_KHR);
+    sci.connection = window.connection;
+    sci.window = window.window;
+    VkSurfaceKHR surface = VK_NULL_HANDLE;
+    gpu::vk_check(vkCreateXcbSurfaceKHR(context.instance(), &sci, nullptr, &surface),
+                  "vkCreateXcbSurfaceKHR");
+    return surface;
+}
+
 class SwapchainTest : public ::testing::Test {
 protected:
     void SetUp() override {
@@ -89,12 +100,7 @@ TEST_F(SwapchainTest, PresentsFramesAndSurvivesResizeWithoutValidationMessages) 
     options.instance_extensions = {VK_KHR_XCB_SURFACE_EXTENSION_NAME};
     gpu::Context context(options);
 
-    auto sci =
-        gpu::vk_init<VkXcbSurfaceCreateInfoKHR>(VK_STRUCTURE_TYPE_XCB_SURFACE_CREATE_INFO_KHR);
-    sci.connection = window.connection;
-    sci.window = window.window;
-    VkSurfaceKHR surface = VK_NULL_HANDLE;
-    ASSERT_EQ(vkCreateXcbSurfaceKHR(context.instance(), &sci, nullptr, &surface), VK_SUCCESS);
+    VkSurfaceKHR surface = make_surface(context, window);
     {
         gpu::Renderer renderer(context);
         LoadResult scene = load_scene("builtin:default");
@@ -134,12 +140,7 @@ TEST_F(SwapchainTest, ContextWithoutPresentationRefusesASurface) {
     options.instance_extensions = {VK_KHR_SURFACE_EXTENSION_NAME,
                                    VK_KHR_XCB_SURFACE_EXTENSION_NAME};
     gpu::Context context(options);
-    auto sci =
-        gpu::vk_init<VkXcbSurfaceCreateInfoKHR>(VK_STRUCTURE_TYPE_XCB_SURFACE_CREATE_INFO_KHR);
-    sci.connection = window.connection;
-    sci.window = window.window;
-    VkSurfaceKHR surface = VK_NULL_HANDLE;
-    ASSERT_EQ(vkCreateXcbSurfaceKHR(context.instance(), &sci, nullptr, &surface), VK_SUCCESS);
+    VkSurfaceKHR surface = make_surface(context, window);
     {
         gpu::Renderer renderer(context);
         EXPECT_THROW(gpu::Presenter(renderer, surface, 64, 64), gpu::GpuError);

@@ -35,9 +35,13 @@ TEST(UsageReport, UntexturedBoxNeedsPositionAndNormalOnly) {
 }
 
 TEST(UsageReport, NormalMapNeedsTangentsEvenWhenNotAuthored) {
-    const auto rep = report_for("DamagedHelmet");
+    std::unique_ptr<sherpa::Scene> scene;
+    const auto rep = report_for("DamagedHelmet", &scene);
     const auto& u = rep.primitives.at(0);
-    EXPECT_FALSE(u.present[idx(VertexAttribute::Tangent)]);
+    // Not authored, so the loader generated them (MikkTSpace): present as Generated.
+    EXPECT_TRUE(u.present[idx(VertexAttribute::Tangent)]);
+    EXPECT_EQ(scene->meshes.at(0).provenance_of(VertexAttribute::Tangent),
+              sherpa::Provenance::Generated);
     EXPECT_TRUE(u.used[idx(VertexAttribute::Tangent)]);
     EXPECT_TRUE(u.used[idx(VertexAttribute::TexCoord0)]);
     EXPECT_FALSE(u.used[idx(VertexAttribute::TexCoord1)]);

@@ -4,9 +4,13 @@
 // with positions only and a constant colour. Also the lit frame with the shadow
 // cascades re-rendered every frame (normally they are cached while camera, light
 // and scene stay unchanged). Frame time = submit to completion, wall clock; the
-// first two frames (pipeline compilation, first shadow map) are not counted.
+// first two frames (pipeline compilation, first shadow map) are not counted. The
+// CPU columns are process CPU time per frame (lavapipe's threads included): on a
+// shared machine they move less than wall time does.
 #include <sherpa/gpu/renderer.h>
 #include <sherpa/scene/scene_loader.h>
+
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
@@ -27,9 +31,23 @@ double median(std::vector<double> v) {
     return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
-double median_frame_ms(gpu::Renderer& renderer, const gpu::RenderSettings& s, int frames) {
+double cpu_ms() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u); // every thread of the process: lavapipe's too
+    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) * 1e3 +
+           double(u.ru_utime.tv_usec + u.ru_stime.tv_usec) * 1e-3;
+}
+
+struct FrameTimes {
+    double wall_ms = 0.0; // median wall clock per frame
+    double cpu_ms = 0.0;  // mean CPU time per frame, all threads (less sensitive to a busy machine)
+};
+
+FrameTimes measure(gpu::Renderer& renderer, const gpu::RenderSettings& s, int frames) {
     std::vector<double> ms;
+    double cpu0 = 0.0;
     for (int f = 0; f < frames + 2; ++f) {
+        if (f == 2) cpu0 = cpu_ms();
         const auto t0 = std::chrono::steady_clock::now();
         renderer.render(s);
         const double dt =
@@ -37,7 +55,7 @@ double median_frame_ms(gpu::Renderer& renderer, const gpu::RenderSettings& s, in
                 .count();
         if (f >= 2) ms.push_back(dt);
     }
-    return median(ms);
+    return {median(ms), (cpu_ms() - cpu0) / frames};
 }
 
 std::vector<std::string> default_scenes() {
@@ -80,10 +98,11 @@ int main(int argc, char** argv) {
     std::printf("device: %s, %ux%u, median of %d frames\n", context.info().name.c_str(), lit.width,
                 lit.height, frames);
     if (csv)
-        std::printf("scene,triangles,floor_ms,lit_ms,ratio,lit_fps,lit_shadows_each_frame_ms\n");
+        std::printf("scene,triangles,floor_ms,lit_ms,ratio,lit_fps,lit_shadows_each_frame_ms,floor_"
+                    "cpu_ms,lit_cpu_ms\n");
     else
-        std::printf("%-26s %9s %9s %9s %7s %8s %14s\n", "scene", "triangles", "floor ms", "lit ms",
-                    "ratio", "lit fps", "lit+shadow ms");
+        std::printf("%-26s %9s %9s %9s %6s %8s %13s %10s %8s\n", "scene", "triangles", "floor ms",
+                    "lit ms", "ratio", "lit fps", "lit+shadow ms", "floor cpu", "lit cpu");
     for (const std::string& spec : scenes) {
         LoadResult r = load_scene(spec);
         if (!r) {
@@ -95,18 +114,21 @@ int main(int argc, char** argv) {
         floor.floor_only = true;
         gpu::RenderSettings uncached = lit;
         uncached.cache_shadows = false;
-        const double floor_ms = median_frame_ms(renderer, floor, frames);
-        const double lit_ms = median_frame_ms(renderer, lit, frames);
-        const double shadow_ms = median_frame_ms(renderer, uncached, frames);
+        const FrameTimes floor_t = measure(renderer, floor, frames);
+        const FrameTimes lit_t = measure(renderer, lit, frames);
+        const double shadow_ms = measure(renderer, uncached, frames).wall_ms;
+        const double floor_ms = floor_t.wall_ms, lit_ms = lit_t.wall_ms;
         const std::string name =
             spec.rfind("builtin:", 0) == 0 ? spec : fs::path(spec).stem().string();
         const auto tris = static_cast<unsigned long long>(renderer.scene()->triangle_count());
         if (csv)
-            std::printf("%s,%llu,%.2f,%.2f,%.2f,%.1f,%.2f\n", name.c_str(), tris, floor_ms, lit_ms,
-                        lit_ms / floor_ms, 1000.0 / lit_ms, shadow_ms);
+            std::printf("%s,%llu,%.2f,%.2f,%.2f,%.1f,%.2f,%.2f,%.2f\n", name.c_str(), tris,
+                        floor_ms, lit_ms, lit_ms / floor_ms, 1000.0 / lit_ms, shadow_ms,
+                        floor_t.cpu_ms, lit_t.cpu_ms);
         else
-            std::printf("%-26s %9llu %9.2f %9.2f %7.2f %8.1f %14.2f\n", name.c_str(), tris,
-                        floor_ms, lit_ms, lit_ms / floor_ms, 1000.0 / lit_ms, shadow_ms);
+            std::printf("%-26s %9llu %9.2f %9.2f %6.2f %8.1f %13.2f %10.2f %8.2f\n", name.c_str(),
+                        tris, floor_ms, lit_ms, lit_ms / floor_ms, 1000.0 / lit_ms, shadow_ms,
+                        floor_t.cpu_ms, lit_t.cpu_ms);
         std::fflush(stdout);
         renderer.unload();
     }

@@ -11,7 +11,7 @@ invariant gl_Position;
 
 void main() {
     uint i = uint(gl_VertexIndex);
-    GPUInstanceData inst = pc.instances.v[gl_InstanceIndex];
+    GPUInstanceData inst = pc.instances.v[pc.instance_ids.v[gl_InstanceIndex]];
     vec4 world = inst.model * vec4(pc.positions.v[i], 1.0);
     GPUMaterialExtra extra = material_extras[pc.material_id];
     out_uv = transform_uv(extra.uv[SLOT_BASE_COLOR], fetch_uv0(i), fetch_uv1(i));

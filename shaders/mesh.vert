@@ -19,7 +19,7 @@ invariant gl_Position;
 
 void main() {
     uint i = uint(gl_VertexIndex);
-    GPUInstanceData inst = pc.instances.v[gl_InstanceIndex];
+    GPUInstanceData inst = pc.instances.v[pc.instance_ids.v[gl_InstanceIndex]];
     vec4 world = inst.model * vec4(pc.positions.v[i], 1.0);
     mat3 nm = normal_matrix(inst);
     vec4 t = fetch_tangent(i);

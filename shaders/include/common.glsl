@@ -70,6 +70,12 @@ layout(buffer_reference, scalar, buffer_reference_align = 16) readonly buffer Li
     LineVertex v[];
 };
 
+// Which GPU instance each drawn instance is: culling compacts the visible ones here
+// (CPU-written or by shaders/cull.comp); without culling it is the identity.
+layout(buffer_reference, scalar, buffer_reference_align = 4) readonly buffer InstanceIdRef {
+    uint v[];
+};
+
 layout(push_constant, scalar) uniform Push {
     InstanceRef instances;          // 0
     Vec3Ref positions;              // 8
@@ -84,6 +90,7 @@ layout(push_constant, scalar) uniform Push {
     uint cascade;                   // 72: shadow cascade, or NO_CASCADE for the camera
     float glyph_length;             // 76
     vec4 color;                     // 80: flat colour of overlays
+    InstanceIdRef instance_ids;     // 96: gl_InstanceIndex -> GPU instance
 } pc;
 
 // mesh_flags: which streams the GPU holds (bit = VertexAttribute), provenance, glyph kind.

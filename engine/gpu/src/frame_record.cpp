@@ -64,7 +64,9 @@ void Renderer::draw_groups(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines
     bool bound = false;
     GPUPushConstants pc = slot.push_base;
     pc.cascade = cascade;
-    for (const DrawGroup& g : scene_->groups()) {
+    const bool culled = cascade == kNoCascade && slot.cull != CullPath::None;
+    for (std::size_t gi = 0; gi < scene_->groups().size(); ++gi) {
+        const DrawGroup& g = scene_->groups()[gi];
         if (g.alpha != alpha) continue;
         if (!bound) {
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
@@ -75,6 +77,10 @@ void Renderer::draw_groups(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines
         vkCmdSetFrontFace(cmd,
                           g.mirrored ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
         set_mesh(pc, mesh, g.material);
+        if (culled) {
+            if (draw_culled(cmd, slot, p.layout(), gi, pc)) ++slot.draw_calls;
+            continue;
+        }
         push(cmd, p.layout(), pc);
         vkCmdDrawIndexed(cmd, mesh.index_count, g.instance_count, mesh.first_index, 0,
                          g.first_instance);
@@ -107,6 +113,7 @@ void Renderer::draw_blended(VkCommandBuffer cmd, FrameSlot& slot, const Pipeline
     GPUPushConstants pc = slot.push_base;
     pc.cascade = kNoCascade;
     for (const Item& it : items) {
+        if (slot.cull != CullPath::None && !slot.visible[it.instance]) continue;
         const DrawGroup& g = groups[it.group];
         const GpuMesh& mesh = scene_->meshes()[g.mesh];
         vkCmdSetCullMode(cmd, g.double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
@@ -172,6 +179,7 @@ void Renderer::record_passes(VkCommandBuffer cmd, FrameSlot& slot, const RenderT
     if (scene_) slot.push_base.instances = scene_->instances_address();
     bind_frame_set(slot);
     slot.push_base.cascade = kNoCascade;
+    cull_camera(cmd, slot, settings, float(target.width) / float(target.height));
 
     const VkDescriptorSet sets[] = {bindless_->set(), slot.set};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.layout(), 0, 2, sets, 0,

@@ -117,10 +117,13 @@ void Renderer::bind_frame_set(FrameSlot& slot) {
 
 Renderer::~Renderer() {
     context_.wait_idle();
+    if (culling_) resources_->destroy(culling_->identity);
+    culling_.reset();
     scene_.reset();
     for (auto& slot : slots_) {
         resources_->destroy(slot->frame_data);
         resources_->destroy(slot->lines);
+        resources_->destroy(slot->cull_ids);
     }
     slots_.clear();
     resources_->destroy(color_);
@@ -186,6 +189,7 @@ Pipelines& Renderer::pipelines_for(VkFormat format) {
 void Renderer::load(const Scene& scene, StreamPolicy policy) {
     unload();
     scene_ = std::make_unique<GpuScene>(*resources_, *bindless_, scene, policy);
+    build_culling();
     Scene& info = lighting_->info;
     info.bounds = scene_->bounds().valid() ? scene_->bounds() : scene.bounds;
     info.cameras = scene.cameras;
@@ -200,6 +204,8 @@ void Renderer::unload() {
     // Frames in flight may still read the scene's buffers and textures: wait for
     // them, so that the bindless slots the scene gives back can be reused at once.
     for (auto& slot : slots_) wait_slot(*slot);
+    if (culling_) resources_->destroy(culling_->identity);
+    culling_.reset();
     scene_.reset();
     ++scene_generation_; // frame sets must stop naming the freed material buffers
     lighting_->info = Scene{};
@@ -310,6 +316,7 @@ FrameStats Renderer::read_stats(FrameSlot& slot) {
     if (!slot.has_results) return s;
     s.shadows_rendered = slot.shadows_rendered;
     s.draw_calls = slot.draw_calls;
+    s.cull = slot.cull_stats;
     if (context_.info().timestamps) {
         std::uint64_t ts[kTimestampCount] = {};
         vk_check(vkGetQueryPoolResults(context_.device(), slot.timestamps.get(), 0, kTimestampCount,

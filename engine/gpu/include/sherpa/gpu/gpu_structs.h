@@ -119,12 +119,15 @@ struct GPUPushConstants {
     std::uint32_t cascade;
     float glyph_length;
     glm::vec4 color;
+    // gl_InstanceIndex -> GPU instance: culling's compacted ids, else the identity.
+    VkDeviceAddress instance_ids;
 };
 static_assert(offsetof(GPUPushConstants, lines) == 56);
 static_assert(offsetof(GPUPushConstants, material_id) == 64);
 static_assert(offsetof(GPUPushConstants, cascade) == 72);
 static_assert(offsetof(GPUPushConstants, color) == 80);
-static_assert(sizeof(GPUPushConstants) == 96);
+static_assert(offsetof(GPUPushConstants, instance_ids) == 96);
+static_assert(sizeof(GPUPushConstants) == 104);
 static_assert(sizeof(GPUPushConstants) <= 128,
               "Vulkan guarantees only 128 bytes of push constants");
 

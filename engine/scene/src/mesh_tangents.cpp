@@ -76,15 +76,15 @@ TangentInput MeshTangentInput::view(const Mesh& mesh) const {
     return TangentInput{positions, normals, uvs, mesh.indices};
 }
 
-MeshTangentReport generate_mesh_tangents(Mesh& mesh, std::uint32_t tex_coord,
-                                         TangentMethod method) {
+MeshTangentReport generate_mesh_tangents(Mesh& mesh, std::uint32_t tex_coord, TangentMethod method,
+                                         TangentWorkspace* workspace) {
     MeshTangentReport report;
     report.tex_coord = tex_coord > 1 ? 0 : tex_coord;
     if (tex_coord > 1)
         report.reason = "TEXCOORD_" + std::to_string(tex_coord) + " is not kept; used TEXCOORD_0";
     const MeshTangentInput input = tangent_input_of(mesh, report.tex_coord);
     std::vector<glm::vec4> corners(mesh.indices.size());
-    report.stats = generate_corner_tangents(input.view(mesh), method, corners);
+    report.stats = generate_corner_tangents(input.view(mesh), method, corners, {}, workspace);
     report.split_vertices = apply_corner_tangents(mesh, corners);
     mesh.provenance[attribute_slot(VertexAttribute::Tangent)] = Provenance::Generated;
     report.generated = true;
@@ -97,29 +97,34 @@ SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptio
     const auto mesh_count = static_cast<std::int64_t>(scene.meshes.size());
     // Meshes are independent; dynamic scheduling because their sizes vary by orders of
     // magnitude. Exceptions cannot cross the OpenMP region, so they become reasons.
-#pragma omp parallel for schedule(dynamic, 1)
-    for (std::int64_t i = 0; i < mesh_count; ++i) {
-        Mesh& mesh = scene.meshes[static_cast<std::size_t>(i)];
-        MeshTangentReport& out = report.meshes[static_cast<std::size_t>(i)];
-        const bool authored = mesh.provenance_of(VertexAttribute::Tangent) == Provenance::Authored;
-        const MaterialInstance* material = mesh.material_id < scene.materials.size()
-                                               ? &scene.materials[mesh.material_id]
-                                               : nullptr;
-        const bool normal_texture = material && material->normal.present();
-        if (!options.regenerate && authored) {
-            out.reason = "authored TANGENT kept";
-            continue;
-        }
-        if (!options.regenerate && !normal_texture) {
-            out.reason = "no normal texture: tangents not needed";
-            continue;
-        }
-        const std::uint32_t set = normal_texture ? material->normal.tex_coord : 0;
-        try {
-            out = generate_mesh_tangents(mesh, set, options.method);
-            if (out.reason.empty()) out.reason = authored ? "regenerated" : "generated";
-        } catch (const std::exception& e) {
-            out.reason = std::string("tangent generation failed: ") + e.what();
+#pragma omp parallel
+    {
+        TangentWorkspace workspace;
+#pragma omp for schedule(dynamic, 1)
+        for (std::int64_t i = 0; i < mesh_count; ++i) {
+            Mesh& mesh = scene.meshes[static_cast<std::size_t>(i)];
+            MeshTangentReport& out = report.meshes[static_cast<std::size_t>(i)];
+            const bool authored =
+                mesh.provenance_of(VertexAttribute::Tangent) == Provenance::Authored;
+            const MaterialInstance* material = mesh.material_id < scene.materials.size()
+                                                   ? &scene.materials[mesh.material_id]
+                                                   : nullptr;
+            const bool normal_texture = material && material->normal.present();
+            if (!options.regenerate && authored) {
+                out.reason = "authored TANGENT kept";
+                continue;
+            }
+            if (!options.regenerate && !normal_texture) {
+                out.reason = "no normal texture: tangents not needed";
+                continue;
+            }
+            const std::uint32_t set = normal_texture ? material->normal.tex_coord : 0;
+            try {
+                out = generate_mesh_tangents(mesh, set, options.method, &workspace);
+                if (out.reason.empty()) out.reason = authored ? "regenerated" : "generated";
+            } catch (const std::exception& e) {
+                out.reason = std::string("tangent generation failed: ") + e.what();
+            }
         }
     }
     for (const MeshTangentReport& m : report.meshes) {

@@ -71,15 +71,77 @@ inline bool finite(const glm::vec2& v) {
 inline bool finite(const glm::vec4& v) {
     return finite(glm::vec3(v)) && std::isfinite(v.w);
 }
+inline bool usable_normal(const glm::vec3& n) {
+    return finite(n) && not_zero(n);
+}
 
 // Vertex welding as MikkTSpace defines it: corners are one vertex exactly when position,
 // normal and uv compare equal as floats (so -0 == +0, and a NaN never equals anything).
 struct WeldedCorners {
-    std::vector<std::uint32_t> corner_class; // per corner: dense class id
-    std::vector<glm::vec3> class_normal;     // per class: projection_normal() of its normal
-    std::uint64_t rescaled_normals = 0;      // classes whose normal was rescaled
+    std::vector<std::uint32_t> corner_class;       // per corner: dense class id
+    std::vector<glm::vec3> class_normal;           // per class: projection_normal() of its normal
+    std::vector<std::uint8_t> class_normal_usable; // per class: normal finite and not zero
+    std::uint64_t rescaled_normals = 0;            // classes whose normal was rescaled
+    // Scratch.
+    std::vector<std::uint32_t> vertex_class, class_vertex;
+    std::vector<std::uint64_t> vertex_hash, table;
 };
-WeldedCorners weld_corners(const TangentInput& input);
+
+// The kept (non-degenerate) triangles, structure of arrays, 3 entries per triangle where
+// noted. Corner i's edge is (i, i+1).
+struct TriangleSet {
+    std::vector<std::uint32_t> original; // triangle index in the input
+    std::vector<std::uint32_t> dropped;  // input triangles with a repeated welded vertex
+    std::vector<std::uint32_t> cls;      // 3: welded classes
+    std::vector<glm::vec3> os, ot;       // unit dP/du, dP/dv (zero when undefined)
+    std::vector<std::uint8_t> flags;     // kOrientPreserving | kGroupWithAny
+    std::vector<std::int32_t> neighbour; // 3: triangle across the corner's edge, or -1
+    std::vector<std::uint32_t> group_of; // 3: the corner's group
+    std::vector<float> angle;            // 3: the corner's weight
+};
+
+struct Group {
+    std::uint32_t cls;         // the welded vertex the group is around
+    std::uint32_t first, size; // range in GroupScratch::members
+    bool orient_preserving;
+};
+
+struct GroupScratch {
+    std::vector<Group> groups;
+    std::vector<std::uint32_t> members; // triangle << 2 | corner, grouped
+    std::vector<std::int32_t> stack;
+    std::vector<glm::vec3> proj_os, proj_ot, sorted_os, subgroup_tangent;
+    std::vector<std::uint32_t> sorted, subgroup_members, subgroup_first, first_kept;
+};
+
+struct NeighbourScratch {
+    std::vector<std::uint32_t> bucket_start, fill;
+    std::vector<std::uint64_t> sorted;
+};
+
+struct MethodScratch {
+    std::vector<std::uint8_t> assigned, flags;
+    std::vector<std::uint32_t> last_corner;
+    std::vector<glm::vec3> sdir_sum, tdir_sum;
+};
+
+} // namespace sherpa::tangent_detail
+
+namespace sherpa {
+// Everything a call allocates, kept between calls that share a workspace.
+struct TangentWorkspace::Buffers {
+    tangent_detail::WeldedCorners weld;
+    tangent_detail::TriangleSet tris;
+    tangent_detail::NeighbourScratch neighbours;
+    tangent_detail::GroupScratch groups;
+    tangent_detail::MethodScratch method;
+};
+} // namespace sherpa
+
+namespace sherpa::tangent_detail {
+
+// Fills `weld` (all fields) for the input.
+void weld_corners(const TangentInput& input, WeldedCorners& weld);
 
 // Face adjacency over triangles given as welded corner classes (3 per triangle, no
 // class repeated within a triangle). neighbour[3t+i] receives the triangle across edge
@@ -87,14 +149,17 @@ WeldedCorners weld_corners(const TangentInput& input);
 // in opposite directions; where more than two qualify, triangles pair in index order,
 // first come first served, exactly as the reference does.
 void build_neighbours(std::span<const std::uint32_t> triangle_classes, std::uint32_t class_count,
-                      std::span<std::int32_t> neighbour);
+                      std::span<std::int32_t> neighbour, NeighbourScratch& scratch);
 
 // Raw per-corner results of one method before the guard. `assigned[c]` is 0 where the
-// method left corner c at a default instead of computing it.
+// method left corner c at a default instead of computing it, or computed a zero or
+// non-finite tangent, or the corner's normal is zero or non-finite: exactly the corners
+// the guard must replace.
 void mikktspace_corners(const TangentInput& input, std::span<glm::vec4> out,
-                        std::span<std::uint8_t> assigned, std::uint64_t& rescaled_normals);
+                        std::span<std::uint8_t> assigned, std::uint64_t& rescaled_normals,
+                        TangentWorkspace::Buffers& buffers);
 void lengyel_corners(const TangentInput& input, std::span<glm::vec4> out,
                      std::span<std::uint8_t> assigned, std::uint64_t& rescaled_normals,
-                     std::uint64_t& nonfinite_unguarded);
+                     std::uint64_t& nonfinite_unguarded, MethodScratch& scratch);
 
 } // namespace sherpa::tangent_detail

@@ -26,25 +26,29 @@ constexpr std::uint8_t kOrientPreserving = 1; // uv winding agrees with position
 constexpr std::uint8_t kGroupWithAny = 2;     // zero uv area or zero tangent magnitude
 constexpr std::uint32_t kNoGroup = ~0u;
 
-// Per kept triangle, structure of arrays.
-struct Triangles {
-    std::vector<std::uint32_t> original; // triangle index in the input
-    std::vector<std::uint32_t> cls;      // 3 welded classes per triangle
-    std::vector<glm::vec3> os, ot;       // unit dP/du, dP/dv (zero when undefined)
-    std::vector<std::uint8_t> flags;     // kOrientPreserving | kGroupWithAny
-    std::vector<std::int32_t> neighbour; // 3 per triangle, across edge (i, i+1)
-    std::vector<std::uint32_t> group_of; // 3 per triangle: the corner's group
-    std::vector<float> angle;            // 3 per triangle: the corner's weight
-};
+// acos on [-1, 1] from Abramowitz & Stegun 4.4.46 (|error| <= 2e-8 rad): the angle
+// weights only need float accuracy, and this is several times cheaper than acosf.
+float fast_acos(float x) {
+    const float a = std::fabs(x);
+    float p = -0.0012624911f;
+    p = p * a + 0.0066700901f;
+    p = p * a - 0.0170881256f;
+    p = p * a + 0.0308918810f;
+    p = p * a - 0.0501743046f;
+    p = p * a + 0.0889789874f;
+    p = p * a - 0.2145988016f;
+    p = p * a + 1.5707963050f;
+    const float r = std::sqrt(1.0f - a) * p;
+    return x < 0.0f ? 3.14159265f - r : r;
+}
 
-struct Group {
-    std::uint32_t cls;         // the welded vertex the group is around
-    std::uint32_t first, size; // range in the face buffer
-    bool orient_preserving;
-};
-
-void compute_triangle_frames(const TangentInput& in, Triangles& tris) {
+// Per kept triangle: unit dP/du and dP/dv with orientation and degeneracy flags (the
+// reference's InitTriInfo), and the weight of each corner: the angle between its two
+// edges projected onto the tangent plane of the corner's normal (computed here, in one
+// streaming pass, rather than from inside the groups).
+void compute_triangle_frames(const TangentInput& in, const WeldedCorners& weld, TriangleSet& tris) {
     const std::size_t count = tris.original.size();
+    tris.angle.resize(3 * count);
     tris.os.assign(count, glm::vec3(0.0f));
     tris.ot.assign(count, glm::vec3(0.0f));
     tris.flags.assign(count, kGroupWithAny);
@@ -69,6 +73,13 @@ void compute_triangle_frames(const TangentInput& in, Triangles& tris) {
             if (not_zero(len_os / abs_area) && not_zero(len_ot / abs_area)) flags &= ~kGroupWithAny;
         }
         tris.flags[f] = flags;
+        const glm::vec3 p[3] = {p1, p2, p3};
+        for (int c = 0; c < 3; ++c) {
+            const glm::vec3 n = weld.class_normal[tris.cls[3 * f + c]];
+            const glm::vec3 v1 = project_normalized(p[(c + 2) % 3] - p[c], n);
+            const glm::vec3 v2 = project_normalized(p[(c + 1) % 3] - p[c], n);
+            tris.angle[3 * f + c] = fast_acos(std::clamp(dot3(v1, v2), -1.0f, 1.0f));
+        }
     }
 }
 
@@ -86,14 +97,14 @@ std::uint32_t member(std::size_t triangle, int corner) {
 // reference recurses into the left neighbour, then the right; an explicit stack visits
 // triangles in the same order, which matters: the first group to reach a "group with
 // any" triangle decides that triangle's orientation.
-std::vector<Group> build_groups(Triangles& tris, std::vector<std::uint32_t>& members) {
+void build_groups(TriangleSet& tris, GroupScratch& scratch) {
     const std::size_t count = tris.original.size();
     tris.group_of.assign(3 * count, kNoGroup);
+    std::vector<std::uint32_t>& members = scratch.members;
+    std::vector<Group>& groups = scratch.groups;
+    std::vector<std::int32_t>& stack = scratch.stack;
     members.clear();
-    members.reserve(3 * count);
-    std::vector<Group> groups;
-    groups.reserve(count);
-    std::vector<std::int32_t> stack;
+    groups.clear();
     for (std::size_t f = 0; f < count; ++f) {
         if (tris.flags[f] & kGroupWithAny) continue;
         for (int i = 0; i < 3; ++i) {
@@ -103,7 +114,9 @@ std::vector<Group> build_groups(Triangles& tris, std::vector<std::uint32_t>& mem
                     (tris.flags[f] & kOrientPreserving) != 0};
             members.push_back(member(f, i));
             tris.group_of[3 * f + i] = id;
-            stack.assign({tris.neighbour[3 * f + (i + 2) % 3], tris.neighbour[3 * f + i]});
+            stack.clear();
+            stack.push_back(tris.neighbour[3 * f + (i + 2) % 3]);
+            stack.push_back(tris.neighbour[3 * f + i]);
             while (!stack.empty()) {
                 const std::int32_t t = stack.back();
                 stack.pop_back();
@@ -127,46 +140,11 @@ std::vector<Group> build_groups(Triangles& tris, std::vector<std::uint32_t>& mem
             groups.push_back(g);
         }
     }
-    return groups;
-}
-
-// acos on [-1, 1] from Abramowitz & Stegun 4.4.46 (|error| <= 2e-8 rad): the angle
-// weights only need float accuracy, and this is several times cheaper than acosf.
-float fast_acos(float x) {
-    const float a = std::fabs(x);
-    float p = -0.0012624911f;
-    p = p * a + 0.0066700901f;
-    p = p * a - 0.0170881256f;
-    p = p * a + 0.0308918810f;
-    p = p * a - 0.0501743046f;
-    p = p * a + 0.0889789874f;
-    p = p * a - 0.2145988016f;
-    p = p * a + 1.5707963050f;
-    const float r = std::sqrt(1.0f - a) * p;
-    return x < 0.0f ? 3.14159265f - r : r;
-}
-
-// The angle of every kept corner between its two edges, projected onto the tangent
-// plane of the corner's normal: the weight MikkTSpace gives the triangle at that vertex.
-// One streaming pass instead of random access from inside the groups.
-void compute_corner_angles(const TangentInput& in, const WeldedCorners& weld, Triangles& tris) {
-    const std::size_t count = tris.original.size();
-    tris.angle.resize(3 * count);
-    for (std::size_t f = 0; f < count; ++f) {
-        const std::uint32_t* idx = &in.indices[3 * std::size_t(tris.original[f])];
-        const glm::vec3 p[3] = {in.positions[idx[0]], in.positions[idx[1]], in.positions[idx[2]]};
-        for (int c = 0; c < 3; ++c) {
-            const glm::vec3 n = weld.class_normal[tris.cls[3 * f + c]];
-            const glm::vec3 v1 = project_normalized(p[(c + 2) % 3] - p[c], n);
-            const glm::vec3 v2 = project_normalized(p[(c + 1) % 3] - p[c], n);
-            tris.angle[3 * f + c] = fast_acos(std::clamp(dot3(v1, v2), -1.0f, 1.0f));
-        }
-    }
 }
 
 // Angle-weighted average of the projected dP/du over `sorted` (members in ascending
 // triangle order; `proj_os[k]` belongs to sorted[k]): the reference's EvalTspace.
-glm::vec3 eval_tangent(const Triangles& tris, std::span<const std::uint32_t> sorted,
+glm::vec3 eval_tangent(const TriangleSet& tris, std::span<const std::uint32_t> sorted,
                        std::span<const glm::vec3> proj_os) {
     glm::vec3 sum(0.0f);
     for (std::size_t k = 0; k < sorted.size(); ++k) {
@@ -190,9 +168,11 @@ void sort_members(std::span<std::uint32_t> m, std::span<glm::vec3> os) {
 } // namespace
 
 void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
-                        std::span<std::uint8_t> assigned, std::uint64_t& rescaled_normals) {
+                        std::span<std::uint8_t> assigned, std::uint64_t& rescaled_normals,
+                        TangentWorkspace::Buffers& buffers) {
     const std::size_t tri_count = in.indices.size() / 3;
-    WeldedCorners weld = weld_corners(in);
+    WeldedCorners& weld = buffers.weld;
+    weld_corners(in, weld);
     rescaled_normals = weld.rescaled_normals;
 
     // Unassigned corners keep the reference's default: tangent +x, bitangent sign -1
@@ -200,35 +180,38 @@ void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
     std::fill(out.begin(), out.end(), glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
     std::fill(assigned.begin(), assigned.end(), std::uint8_t{0});
 
-    Triangles tris;
-    tris.original.reserve(tri_count);
-    tris.cls.reserve(3 * tri_count);
-    std::vector<std::uint32_t> dropped; // repeated welded vertex
+    TriangleSet& tris = buffers.tris;
+    tris.original.clear();
+    tris.dropped.clear();
+    tris.cls.clear();
     for (std::size_t t = 0; t < tri_count; ++t) {
         const std::uint32_t* c = &weld.corner_class[3 * t];
         if (c[0] == c[1] || c[0] == c[2] || c[1] == c[2]) {
-            dropped.push_back(static_cast<std::uint32_t>(t));
+            tris.dropped.push_back(static_cast<std::uint32_t>(t));
             continue;
         }
         tris.original.push_back(static_cast<std::uint32_t>(t));
         tris.cls.insert(tris.cls.end(), c, c + 3);
     }
-    compute_triangle_frames(in, tris);
+    compute_triangle_frames(in, weld, tris);
     tris.neighbour.resize(tris.cls.size());
-    build_neighbours(tris.cls, static_cast<std::uint32_t>(weld.class_normal.size()),
-                     tris.neighbour);
-    compute_corner_angles(in, weld, tris);
-    std::vector<std::uint32_t> members;
-    const std::vector<Group> groups = build_groups(tris, members);
+    build_neighbours(tris.cls, static_cast<std::uint32_t>(weld.class_normal.size()), tris.neighbour,
+                     buffers.neighbours);
+    GroupScratch& scratch = buffers.groups;
+    build_groups(tris, scratch);
+    const std::vector<std::uint32_t>& members = scratch.members;
 
     // The reference's threshold is cos(180°) computed in float, i.e. exactly -1: two
     // triangles stay in one subgroup unless their projected tangents point exactly apart.
     constexpr float kThresholdCos = -1.0f;
-    std::vector<glm::vec3> proj_os, proj_ot, sorted_os, subgroup_tangent;
-    std::vector<std::uint32_t> sorted, subgroup_members, subgroup_first;
-    for (const Group& g : groups) {
+    std::vector<glm::vec3>&proj_os = scratch.proj_os, &proj_ot = scratch.proj_ot,
+    &sorted_os = scratch.sorted_os, &subgroup_tangent = scratch.subgroup_tangent;
+    std::vector<std::uint32_t>&sorted = scratch.sorted,
+    &subgroup_members = scratch.subgroup_members, &subgroup_first = scratch.subgroup_first;
+    for (const Group& g : scratch.groups) {
         const std::span<const std::uint32_t> group(&members[g.first], g.size);
         const glm::vec3 n = weld.class_normal[g.cls];
+        const bool usable = weld.class_normal_usable[g.cls] != 0;
         proj_os.resize(g.size);
         proj_ot.resize(g.size);
         for (std::uint32_t m = 0; m < g.size; ++m) {
@@ -241,16 +224,27 @@ void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
                    (dot3(proj_os[a], proj_os[b]) > kThresholdCos &&
                     dot3(proj_ot[a], proj_ot[b]) > kThresholdCos);
         };
+        // Usually every pair is together, and that is cheap to prove: unit vectors all
+        // within 89.4° of one of them (dot > 0.01) are at most 178.9° apart pairwise, so
+        // their dot products stay far above -1. Only otherwise test each pair.
         bool all_together = true;
-        for (std::uint32_t a = 0; a < g.size && all_together; ++a)
-            for (std::uint32_t b = a + 1; b < g.size && all_together; ++b)
-                all_together = together(a, b);
+        for (std::uint32_t m = 1; m < g.size && all_together; ++m)
+            all_together =
+                dot3(proj_os[0], proj_os[m]) > 0.01f && dot3(proj_ot[0], proj_ot[m]) > 0.01f;
+        if (!all_together) {
+            all_together = true;
+            for (std::uint32_t a = 0; a < g.size && all_together; ++a)
+                for (std::uint32_t b = a + 1; b < g.size && all_together; ++b)
+                    all_together = together(a, b);
+        }
 
         auto write = [&](std::uint32_t m, const glm::vec3& tangent) {
             const std::size_t corner =
                 3 * std::size_t(tris.original[group[m] >> 2]) + (group[m] & 3);
             out[corner] = glm::vec4(tangent, g.orient_preserving ? -1.0f : 1.0f);
-            assigned[corner] = 1;
+            // A zero or non-finite result (cancelled sums, NaN input) and an unusable
+            // normal count as not computed: the guard replaces them.
+            assigned[corner] = usable && finite(tangent) && not_zero(tangent) ? 1 : 0;
         };
         if (all_together) { // one subgroup: the whole group
             sorted.assign(group.begin(), group.end());
@@ -295,14 +289,15 @@ void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
     }
 
     // Corners of dropped triangles copy the first kept corner of the same welded vertex.
-    if (!dropped.empty()) {
-        std::vector<std::uint32_t> first_kept(weld.class_normal.size(), ~0u);
+    if (!tris.dropped.empty()) {
+        std::vector<std::uint32_t>& first_kept = scratch.first_kept;
+        first_kept.assign(weld.class_normal.size(), ~0u);
         for (std::size_t f = 0; f < tris.original.size(); ++f)
             for (int i = 0; i < 3; ++i) {
                 std::uint32_t& first = first_kept[tris.cls[3 * f + i]];
                 if (first == ~0u) first = 3 * tris.original[f] + i;
             }
-        for (std::uint32_t t : dropped)
+        for (std::uint32_t t : tris.dropped)
             for (int i = 0; i < 3; ++i) {
                 const std::size_t corner = 3 * std::size_t(t) + i;
                 const std::uint32_t source = first_kept[weld.corner_class[corner]];

@@ -9,6 +9,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string_view>
 
@@ -70,11 +71,28 @@ struct TangentInput {
     std::span<const std::uint32_t> indices;
 };
 
+// Scratch memory that calls may share to avoid reallocating (and re-faulting) their
+// buffers: results never depend on what a workspace held before. Not thread-safe: one
+// per thread.
+class TangentWorkspace {
+public:
+    TangentWorkspace();
+    ~TangentWorkspace();
+    TangentWorkspace(TangentWorkspace&&) noexcept;
+    TangentWorkspace& operator=(TangentWorkspace&&) noexcept;
+    struct Buffers;
+    Buffers& buffers() { return *buffers_; }
+
+private:
+    std::unique_ptr<Buffers> buffers_;
+};
+
 // Computes one tangent per corner (out.size() == indices.size()). `fallbacks`, when not
-// empty, must have the same size and receives each corner's TangentFallback. Pure: no
-// state survives the call; allocation is proportional to the input.
+// empty, must have the same size and receives each corner's TangentFallback. Without a
+// workspace the call allocates its own scratch, proportional to the input.
 TangentStats generate_corner_tangents(const TangentInput& input, TangentMethod method,
                                       std::span<glm::vec4> out,
-                                      std::span<TangentFallback> fallbacks = {});
+                                      std::span<TangentFallback> fallbacks = {},
+                                      TangentWorkspace* workspace = nullptr);
 
 } // namespace sherpa

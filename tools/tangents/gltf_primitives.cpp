@@ -7,7 +7,7 @@
 
 #include <tiny_gltf.h>
 
-namespace sherpa::test {
+namespace sherpa::tools {
 namespace {
 
 // One component of an accessor element as float, normalised integers mapped as glTF says.
@@ -194,4 +194,4 @@ std::string sample_model_path(const std::string& assets_dir, const std::string& 
     return assets_dir + "/gltf/" + name + "/glTF/" + name + ".gltf";
 }
 
-} // namespace sherpa::test
+} // namespace sherpa::tools

@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-namespace sherpa::test {
+namespace sherpa::tools {
 
 struct GltfPrimitive {
     std::uint32_t mesh = 0, primitive = 0;
@@ -28,4 +28,4 @@ std::vector<GltfPrimitive> read_gltf_primitives(const std::string& path);
 std::vector<std::string> sample_models(const std::string& assets_dir);
 std::string sample_model_path(const std::string& assets_dir, const std::string& name);
 
-} // namespace sherpa::test
+} // namespace sherpa::tools

@@ -1,8 +1,7 @@
 #pragma once
-// A small glTF reader for tangent tests and benchmarks, independent of the engine's
-// importer so that importer changes cannot mask tangent regressions (and vice versa):
-// every triangle primitive as plain arrays, in glTF triangle order after strip/fan
-// conversion.
+// glTF primitives as plain arrays for tangent tests, benchmarks and reports: every
+// triangle primitive as the engine's importer reads it (glTF triangle order after
+// strip/fan conversion), with only the attributes the file provides.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -21,7 +20,8 @@ struct GltfPrimitive {
     bool has_normal_texture = false;
 };
 
-// Reads every triangle-topology primitive of a .gltf/.glb. Throws std::runtime_error.
+// Reads every triangle-topology primitive of a .gltf/.glb (no tangent generation).
+// Throws std::runtime_error with the importer's message.
 std::vector<GltfPrimitive> read_gltf_primitives(const std::string& path);
 
 // Model names under SHERPA_ASSETS_DIR/gltf, sorted, whose NAME/glTF/NAME.gltf exists.

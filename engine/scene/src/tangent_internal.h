@@ -1,5 +1,6 @@
 #pragma once
 // Shared pieces of the tangent generators (engine/scene/src/tangent_*.cpp). Not installed.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -48,6 +49,20 @@ inline glm::vec3 normalized(const glm::vec3& v) {
 inline glm::vec3 project_normalized(const glm::vec3& v, const glm::vec3& n) {
     const glm::vec3 p = v - n * dot3(n, v);
     return not_zero(p) ? normalized(p) : p;
+}
+
+// Whether triangle (p0, p1, p2) has zero area up to the rounding of its coordinates:
+// twice its area is at most what moving a corner by a few float ulps of the largest
+// coordinate could produce. Collinear corners written from floats (a midpoint, say) are
+// rarely exactly collinear, so an exact test would miss them.
+inline bool zero_area(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2) {
+    const glm::dvec3 a(p0), d1 = glm::dvec3(p1) - a, d2 = glm::dvec3(p2) - a;
+    const glm::dvec3 m =
+        glm::max(glm::max(glm::abs(a), glm::abs(glm::dvec3(p1))), glm::abs(glm::dvec3(p2)));
+    const double scale = std::max(m.x, std::max(m.y, m.z));
+    const double edge = std::sqrt(std::max(glm::dot(d1, d1), glm::dot(d2, d2)));
+    const double twice_area = glm::length(glm::cross(d1, d2));
+    return !(twice_area > 4.0 * std::numeric_limits<float>::epsilon() * scale * edge);
 }
 
 // The normal the generators project with: the file's normal when it is within

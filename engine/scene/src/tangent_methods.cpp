@@ -133,9 +133,8 @@ TangentFallback classify(const TangentInput& in, std::size_t corner) {
         !finite(in.uvs[i0]) || !finite(in.uvs[i1]) || !finite(in.uvs[i2]) || !finite(n))
         return TangentFallback::NonFiniteInput;
     if (dot3(n, n) == 0.0f) return TangentFallback::InvalidNormal;
-    const glm::vec3 d1 = in.positions[i1] - in.positions[i0];
-    const glm::vec3 d2 = in.positions[i2] - in.positions[i0];
-    if (!not_zero(glm::cross(d1, d2))) return TangentFallback::DegeneratePosition;
+    if (zero_area(in.positions[i0], in.positions[i1], in.positions[i2]))
+        return TangentFallback::DegeneratePosition;
     const glm::vec2 t1 = in.uvs[i1] - in.uvs[i0], t2 = in.uvs[i2] - in.uvs[i0];
     if (!tangent_detail::not_zero(t1.x * t2.y - t1.y * t2.x)) return TangentFallback::DegenerateUv;
     return TangentFallback::ZeroResult;

@@ -24,6 +24,10 @@ namespace {
 
 constexpr std::uint8_t kOrientPreserving = 1; // uv winding agrees with position winding
 constexpr std::uint8_t kGroupWithAny = 2;     // zero uv area or zero tangent magnitude
+// Zero area in position space (collinear or coincident corners). The reference still
+// uses such triangles; a corner whose tangent comes from nothing but them gets the
+// fallback instead (its dP/du only runs along a line, or nowhere).
+constexpr std::uint8_t kZeroArea = 4;
 constexpr std::uint32_t kNoGroup = ~0u;
 
 // acos on [-1, 1] from Abramowitz & Stegun 4.4.46 (|error| <= 2e-8 rad): the angle
@@ -74,6 +78,7 @@ void compute_triangle_frames(const TangentInput& in, const WeldedCorners& weld, 
         const glm::vec3 os = t31y * d1 - t21y * d2;
         const glm::vec3 ot = -t31x * d1 + t21x * d2;
         std::uint8_t flags = kGroupWithAny | (signed_area_x2 > 0.0f ? kOrientPreserving : 0);
+        if (zero_area(p1, p2, p3)) flags |= kZeroArea;
         if (not_zero(signed_area_x2)) {
             const float abs_area = std::fabs(signed_area_x2);
             const float len_os = robust_length(os), len_ot = robust_length(ot);
@@ -156,14 +161,16 @@ void build_groups(TriangleSet& tris, GroupScratch& scratch) {
 glm::vec3 eval_tangent(const TriangleSet& tris, std::span<const std::uint32_t> sorted,
                        std::span<const glm::vec3> proj_os) {
     glm::vec3 sum(0.0f);
+    bool any_area = false;
     for (std::size_t k = 0; k < sorted.size(); ++k) {
         const std::uint32_t f = sorted[k] >> 2, c = sorted[k] & 3;
         if (tris.flags[f] & kGroupWithAny) continue;
         sum += tris.angle[3 * std::size_t(f) + c] * proj_os[k];
+        any_area = any_area || !(tris.flags[f] & kZeroArea);
     }
+    if (!any_area) return glm::vec3(0.0f); // see kZeroArea
     return not_zero(sum) ? normalized(sum) : sum;
 }
-
 // Sorts members (and their projected tangents alongside) by triangle. Groups hold a
 // vertex's valence worth of members, so insertion sort.
 void sort_members(std::span<std::uint32_t> m, std::span<glm::vec3> os) {

@@ -56,13 +56,21 @@ inline glm::vec3 project_normalized(const glm::vec3& v, const glm::vec3& n) {
 // coordinate could produce. Collinear corners written from floats (a midpoint, say) are
 // rarely exactly collinear, so an exact test would miss them.
 inline bool zero_area(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2) {
+    constexpr double kUlps = 4.0 * std::numeric_limits<float>::epsilon();
+    const glm::vec3 m = glm::max(glm::max(glm::abs(p0), glm::abs(p1)), glm::abs(p2));
+    const float scale = std::max(m.x, std::max(m.y, m.z));
+    // Fast path in float: its own rounding is far below the margin of 8x.
+    {
+        const glm::vec3 d1 = p1 - p0, d2 = p2 - p0, c = glm::cross(d1, d2);
+        const float edge2 = std::max(dot3(d1, d1), dot3(d2, d2));
+        const float limit = float(kUlps) * scale;
+        if (dot3(c, c) > 64.0f * limit * limit * edge2 && std::isfinite(dot3(c, c))) return false;
+    }
     const glm::dvec3 a(p0), d1 = glm::dvec3(p1) - a, d2 = glm::dvec3(p2) - a;
-    const glm::dvec3 m =
-        glm::max(glm::max(glm::abs(a), glm::abs(glm::dvec3(p1))), glm::abs(glm::dvec3(p2)));
-    const double scale = std::max(m.x, std::max(m.y, m.z));
-    const double edge = std::sqrt(std::max(glm::dot(d1, d1), glm::dot(d2, d2)));
-    const double twice_area = glm::length(glm::cross(d1, d2));
-    return !(twice_area > 4.0 * std::numeric_limits<float>::epsilon() * scale * edge);
+    const double edge2 = std::max(glm::dot(d1, d1), glm::dot(d2, d2));
+    const glm::dvec3 c = glm::cross(d1, d2);
+    const double limit = kUlps * double(scale);
+    return !(glm::dot(c, c) > limit * limit * edge2);
 }
 
 // The normal the generators project with: the file's normal when it is within

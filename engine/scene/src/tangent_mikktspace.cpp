@@ -228,12 +228,16 @@ void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
         const std::span<const std::uint32_t> group(&members[g.first], g.size);
         const glm::vec3 n = weld.class_normal[g.cls];
         const bool usable = weld.class_normal_usable[g.cls] != 0;
+        // Projected dP/du, normalised: what the tangent averages. dP/dv only matters for
+        // the subgroup test, and only normalised when that test cannot be settled cheaply.
         proj_os.resize(g.size);
         proj_ot.resize(g.size);
         for (std::uint32_t m = 0; m < g.size; ++m) {
             proj_os[m] = project_normalized(tris.os[group[m] >> 2], n);
-            proj_ot[m] = project_normalized(tris.ot[group[m] >> 2], n);
+            const glm::vec3& ot = tris.ot[group[m] >> 2];
+            proj_ot[m] = ot - n * dot3(n, ot);
         }
+        // The reference's subgroup relation (needs proj_ot normalised).
         auto together = [&](std::uint32_t a, std::uint32_t b) {
             return a == b ||
                    ((tris.flags[group[a] >> 2] | tris.flags[group[b] >> 2]) & kGroupWithAny) ||
@@ -241,13 +245,19 @@ void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
                     dot3(proj_ot[a], proj_ot[b]) > kThresholdCos);
         };
         // Usually every pair is together, and that is cheap to prove: unit vectors all
-        // within 89.4° of one of them (dot > 0.01) are at most 178.9° apart pairwise, so
-        // their dot products stay far above -1. Only otherwise test each pair.
+        // within 89.4° of one of them (cosine > 0.01) are at most 178.9° apart pairwise,
+        // so their dot products stay far above the threshold of -1. The dP/dv test runs
+        // on unnormalised projections: cos > 0.01 <=> d > 0 and d^2 > 1e-4 |a|^2 |b|^2.
         bool all_together = true;
-        for (std::uint32_t m = 1; m < g.size && all_together; ++m)
-            all_together =
-                dot3(proj_os[0], proj_os[m]) > 0.01f && dot3(proj_ot[0], proj_ot[m]) > 0.01f;
+        const float ot0 = dot3(proj_ot[0], proj_ot[0]);
+        for (std::uint32_t m = 1; m < g.size && all_together; ++m) {
+            const float d = dot3(proj_ot[0], proj_ot[m]);
+            all_together = dot3(proj_os[0], proj_os[m]) > 0.01f && d > 0.0f &&
+                           d * d > 1e-4f * ot0 * dot3(proj_ot[m], proj_ot[m]);
+        }
         if (!all_together) {
+            for (glm::vec3& ot : proj_ot)
+                if (not_zero(ot)) ot = normalized(ot); // as the reference has them
             all_together = true;
             for (std::uint32_t a = 0; a < g.size && all_together; ++a)
                 for (std::uint32_t b = a + 1; b < g.size && all_together; ++b)

@@ -13,6 +13,7 @@ inline constexpr int kExitUsage = 2;
 using Args = std::span<const std::string_view>;
 
 int run_info(Args args);
+int run_cull(Args args);
 int run_tangents(Args args);
 
 } // namespace sherpa::cli

@@ -297,3 +297,53 @@ TEST(Tangents, MethodsAgreeOnSmoothSurfaces) {
 
 } // namespace
 } // namespace sherpa
+
+namespace sherpa {
+namespace {
+
+// A workspace carries memory, never results: reusing one across meshes of different
+// sizes and methods gives what fresh calls give.
+TEST(Tangents, WorkspaceReuseNeverChangesResults) {
+    TestMesh small = square(), large;
+    for (int i = 0; i < 40; ++i) {
+        const float x = float(i);
+        const auto a = large.vertex({x, 0, 0}, {x, 1}), b = large.vertex({x + 1, 0, 0}, {x + 1, 1});
+        const auto c = large.vertex({x + 1, 1, 0.5f}, {x + 1, 0}),
+                   d = large.vertex({x, 1, 0.5f}, {x, 0});
+        large.triangle(a, b, c);
+        large.triangle(a, c, d);
+        large.triangle(a, a, c); // dropped (repeated vertex)
+    }
+    TangentWorkspace workspace;
+    for (int round = 0; round < 2; ++round)
+        for (const TestMesh* m : {&large, &small, &large})
+            for (TangentMethod method : kAllTangentMethods) {
+                const Result fresh = run(*m, method);
+                std::vector<glm::vec4> reused(m->indices.size());
+                std::vector<TangentFallback> fallbacks(m->indices.size());
+                const TangentStats stats =
+                    generate_corner_tangents(m->input(), method, reused, fallbacks, &workspace);
+                EXPECT_EQ(reused, fresh.tangents) << to_string(method);
+                EXPECT_EQ(fallbacks, fresh.fallbacks) << to_string(method);
+                EXPECT_EQ(stats.corners, fresh.stats.corners) << to_string(method);
+            }
+}
+
+TEST(Tangents, StatsAddUp) {
+    TangentStats a, b;
+    a.corners[0] = 3;
+    a.corners[static_cast<std::size_t>(TangentFallback::DegenerateUv)] = 2;
+    b.corners[static_cast<std::size_t>(TangentFallback::ZeroResult)] = 1;
+    b.nonfinite_before_guard = 4;
+    b.rescaled_normals = 5;
+    a += b;
+    EXPECT_EQ(a.fallbacks(), 3u);
+    EXPECT_EQ(a.count(TangentFallback::None), 3u);
+    EXPECT_EQ(a.nonfinite_before_guard, 4u);
+    EXPECT_EQ(a.rescaled_normals, 5u);
+    for (std::size_t c = 0; c < kTangentFallbackCauses; ++c)
+        EXPECT_NE(to_string(TangentFallback(c)), "unknown");
+}
+
+} // namespace
+} // namespace sherpa

@@ -12,9 +12,18 @@
 //  6. per group: split it into subgroups by tangent direction, then average each
 //     subgroup's projected dP/du weighted by the corner angles;
 //  7. corners of dropped triangles copy the first kept corner of their vertex.
-// What differs is the data layout and the work avoided: per-group projections are
-// computed once instead of once per pair, and the subgroup search is skipped when every
-// pair in a group agrees (the common case).
+// What differs is the data layout and the work avoided: welding hashes indexed vertices
+// instead of gridding corners, edges are bucketed instead of quicksorted, per-group
+// projections are computed once instead of once per pair, the subgroup search is skipped
+// when every pair in a group provably agrees (the common case), and acos is a polynomial.
+// Results equal the reference's to float rounding (about 1e-5 degrees), except where the
+// reference returns nothing usable, on purpose:
+//  - lengths are computed without overflow/underflow (coordinates beyond ~1e19 or below
+//    ~1e-19 lose their triangles in the reference);
+//  - normals further than kNormalUnitTolerance from unit length are rescaled before
+//    projecting (the reference's projection is then not orthogonal);
+//  - a corner whose tangent would come only from zero-area triangles is left to the
+//    guard (the reference returns dP/du along a collinear line, or zero).
 #include <algorithm>
 
 #include "tangent_internal.h"

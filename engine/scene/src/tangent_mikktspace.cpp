@@ -26,6 +26,10 @@
 //    guard (the reference returns dP/du along a collinear line, or zero).
 #include <algorithm>
 
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
+
 #include "tangent_internal.h"
 
 namespace sherpa::tangent_detail {
@@ -65,6 +69,83 @@ float corner_angle(const glm::vec3& e1, const glm::vec3& e2, const glm::vec3& n)
     return fast_acos(std::clamp(dot3(v1, v2), -1.0f, 1.0f));
 }
 
+// Four floats, one per corner of a triangle (the fourth lane repeats the first): GCC's
+// vector extension, so the same source compiles to SSE on x86-64 and to scalars elsewhere.
+using Lanes = float __attribute__((vector_size(16)));
+using LaneMask = std::int32_t __attribute__((vector_size(16)));
+
+Lanes lane_sqrt(Lanes x) {
+#if defined(__SSE2__)
+    return reinterpret_cast<Lanes>(_mm_sqrt_ps(reinterpret_cast<__m128>(x)));
+#else
+    for (int i = 0; i < 4; ++i) x[i] = std::sqrt(x[i]);
+    return x;
+#endif
+}
+
+Lanes lane_abs(Lanes x) {
+    return reinterpret_cast<Lanes>(reinterpret_cast<LaneMask>(x) & 0x7fffffff);
+}
+
+struct LaneVec {
+    Lanes x, y, z;
+};
+Lanes lane_dot(const LaneVec& a, const LaneVec& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+// project_normalized() per lane, with the same operations in the same order. `in_range`
+// turns false where the scalar code would take robust_length's rescaling path.
+LaneVec lane_project_normalized(const LaneVec& v, const LaneVec& n, LaneMask& in_range) {
+    const Lanes d = lane_dot(n, v);
+    const LaneVec p{v.x - n.x * d, v.y - n.y * d, v.z - n.z * d};
+    const float kMin = std::numeric_limits<float>::min();
+    const LaneMask nonzero =
+        (lane_abs(p.x) > kMin) | (lane_abs(p.y) > kMin) | (lane_abs(p.z) > kMin);
+    const Lanes squared = lane_dot(p, p);
+    in_range &= ~nonzero | ((squared > 1e-30f) & (squared < 1e30f));
+    const Lanes inverse = 1.0f / lane_sqrt(squared);
+    return {nonzero ? p.x * inverse : p.x, nonzero ? p.y * inverse : p.y,
+            nonzero ? p.z * inverse : p.z};
+}
+
+// The three corner angles of triangle p (normals n), as corner_angle() computes them, in
+// one pass of four lanes. Returns false (writing nothing) where some edge needs the
+// rescaled length; the caller then uses corner_angle().
+bool triangle_corner_angles(const glm::vec3 p[3], const glm::vec3 n[3], float* out) {
+    auto lanes = [](float a, float b, float c) { return Lanes{a, b, c, a}; };
+    const glm::vec3 e1[3] = {p[2] - p[0], p[0] - p[1], p[1] - p[2]};
+    const glm::vec3 e2[3] = {p[1] - p[0], p[2] - p[1], p[0] - p[2]};
+    const LaneVec a{lanes(e1[0].x, e1[1].x, e1[2].x), lanes(e1[0].y, e1[1].y, e1[2].y),
+                    lanes(e1[0].z, e1[1].z, e1[2].z)};
+    const LaneVec b{lanes(e2[0].x, e2[1].x, e2[2].x), lanes(e2[0].y, e2[1].y, e2[2].y),
+                    lanes(e2[0].z, e2[1].z, e2[2].z)};
+    const LaneVec normal{lanes(n[0].x, n[1].x, n[2].x), lanes(n[0].y, n[1].y, n[2].y),
+                         lanes(n[0].z, n[1].z, n[2].z)};
+    LaneMask in_range = LaneMask{} == 0;
+    const LaneVec v1 = lane_project_normalized(a, normal, in_range);
+    const LaneVec v2 = lane_project_normalized(b, normal, in_range);
+    if (!(in_range[0] & in_range[1] & in_range[2])) return false;
+    Lanes x = lane_dot(v1, v2);
+    x = x < -1.0f ? Lanes{} - 1.0f : (1.0f < x ? Lanes{} + 1.0f : x); // std::clamp, NaN kept
+    // fast_acos, per lane.
+    const Lanes abs_x = lane_abs(x);
+    Lanes poly = Lanes{} - 0.0012624911f;
+    poly = poly * abs_x + 0.0066700901f;
+    poly = poly * abs_x - 0.0170881256f;
+    poly = poly * abs_x + 0.0308918810f;
+    poly = poly * abs_x - 0.0501743046f;
+    poly = poly * abs_x + 0.0889789874f;
+    poly = poly * abs_x - 0.2145988016f;
+    poly = poly * abs_x + 1.5707963050f;
+    const Lanes r = lane_sqrt(1.0f - abs_x) * poly;
+    const Lanes angle = x < 0.0f ? 3.14159265f - r : r;
+    out[0] = angle[0];
+    out[1] = angle[1];
+    out[2] = angle[2];
+    return true;
+}
+
 // Per kept triangle: unit dP/du and dP/dv with orientation and degeneracy flags (the
 // reference's InitTriInfo), and the weight of each corner: the angle between its two
 // edges projected onto the tangent plane of the corner's normal (computed here, in one
@@ -98,10 +179,13 @@ void compute_triangle_frames(const TangentInput& in, const WeldedCorners& weld, 
         }
         tris.flags[f] = flags;
         const glm::vec3 p[3] = {p1, p2, p3};
-        for (int c = 0; c < 3; ++c) {
-            tris.angle[3 * f + c] = corner_angle(p[(c + 2) % 3] - p[c], p[(c + 1) % 3] - p[c],
-                                                 weld.class_normal[tris.cls[3 * f + c]]);
-        }
+        const glm::vec3 n[3] = {weld.class_normal[tris.cls[3 * f]],
+                                weld.class_normal[tris.cls[3 * f + 1]],
+                                weld.class_normal[tris.cls[3 * f + 2]]};
+        if (!triangle_corner_angles(p, n, &tris.angle[3 * f]))
+            for (int c = 0; c < 3; ++c)
+                tris.angle[3 * f + c] =
+                    corner_angle(p[(c + 2) % 3] - p[c], p[(c + 1) % 3] - p[c], n[c]);
     }
 }
 
@@ -122,26 +206,30 @@ std::uint32_t member(std::size_t triangle, int corner) {
 void build_groups(TriangleSet& tris, GroupScratch& scratch) {
     const std::size_t count = tris.original.size();
     tris.group_of.assign(3 * count, kNoGroup);
-    std::vector<std::uint32_t>& members = scratch.members;
+    // Sized up front to their bounds (every corner joins at most one group; a group holds
+    // a triangle at most once, and each triangle it takes pushes two neighbours), so the
+    // walk below needs no capacity checks.
+    scratch.members.resize(3 * count);
+    scratch.stack.resize(2 * count + 2);
+    std::uint32_t* members = scratch.members.data();
+    std::int32_t* stack = scratch.stack.data();
+    std::size_t member_count = 0;
     std::vector<Group>& groups = scratch.groups;
-    std::vector<std::int32_t>& stack = scratch.stack;
-    members.clear();
     groups.clear();
     for (std::size_t f = 0; f < count; ++f) {
         if (tris.flags[f] & kGroupWithAny) continue;
         for (int i = 0; i < 3; ++i) {
             if (tris.group_of[3 * f + i] != kNoGroup) continue;
             const auto id = static_cast<std::uint32_t>(groups.size());
-            Group g{tris.cls[3 * f + i], static_cast<std::uint32_t>(members.size()), 0,
+            Group g{tris.cls[3 * f + i], static_cast<std::uint32_t>(member_count), 0,
                     (tris.flags[f] & kOrientPreserving) != 0};
-            members.push_back(member(f, i));
+            members[member_count++] = member(f, i);
             tris.group_of[3 * f + i] = id;
-            stack.clear();
-            stack.push_back(tris.neighbour[3 * f + (i + 2) % 3]);
-            stack.push_back(tris.neighbour[3 * f + i]);
-            while (!stack.empty()) {
-                const std::int32_t t = stack.back();
-                stack.pop_back();
+            std::size_t top = 0;
+            stack[top++] = tris.neighbour[3 * f + (i + 2) % 3];
+            stack[top++] = tris.neighbour[3 * f + i];
+            while (top > 0) {
+                const std::int32_t t = stack[--top];
                 if (t < 0) continue;
                 const std::uint32_t* cls3 = &tris.cls[3 * std::size_t(t)];
                 std::uint32_t* assigned = &tris.group_of[3 * std::size_t(t)];
@@ -152,16 +240,17 @@ void build_groups(TriangleSet& tris, GroupScratch& scratch) {
                     assigned[2] == kNoGroup)
                     flags = (flags & ~kOrientPreserving) | (g.orient_preserving ? 1 : 0);
                 if (((flags & kOrientPreserving) != 0) != g.orient_preserving) continue;
-                members.push_back(member(std::size_t(t), c));
+                members[member_count++] = member(std::size_t(t), c);
                 assigned[c] = id;
                 const std::int32_t* nb = &tris.neighbour[3 * std::size_t(t)];
-                stack.push_back(nb[(c + 2) % 3]); // right, visited after all of left
-                stack.push_back(nb[c]);           // left
+                stack[top++] = nb[(c + 2) % 3]; // right, visited after all of left
+                stack[top++] = nb[c];           // left
             }
-            g.size = static_cast<std::uint32_t>(members.size()) - g.first;
+            g.size = static_cast<std::uint32_t>(member_count) - g.first;
             groups.push_back(g);
         }
     }
+    scratch.members.resize(member_count);
 }
 
 // Angle-weighted average of the projected dP/du over `sorted` (members, in ascending

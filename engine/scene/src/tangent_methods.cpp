@@ -69,15 +69,15 @@ namespace tangent_detail {
 void lengyel_corners(const TangentInput& in, std::span<glm::vec4> out,
                      std::span<std::uint8_t> assigned, std::uint64_t& rescaled_normals,
                      std::uint64_t& nonfinite_unguarded, MethodScratch& scratch) {
-    // Per indexed vertex: sums of each triangle's dP/du and dP/dv, unnormalised, so
-    // larger triangles (in uv space: smaller) weigh more. A triangle whose uv area is
-    // zero makes the textbook formula divide by zero; it is left out here, and the
-    // vertices it would have poisoned are counted.
+    // Per indexed vertex: the plain sum of its triangles' dP/du and dP/dv (no angle
+    // weights, no welding by value, no handedness groups: the textbook method). A
+    // triangle whose uv area is zero makes the textbook formula divide by zero; it is
+    // left out here, and the corners it would have poisoned are counted.
     const std::size_t vertex_count = in.positions.size();
-    std::vector<glm::vec3>& sdir_sum = scratch.sdir_sum;
-    std::vector<glm::vec3>& tdir_sum = scratch.tdir_sum;
+    auto& sdir_sum = scratch.sdir_sum;
+    auto& tdir_sum = scratch.tdir_sum;
     // Per vertex: bit 0 poisoned by a non-finite triangle, bit 1 already counted.
-    std::vector<std::uint8_t>& state = scratch.flags;
+    auto& state = scratch.flags;
     sdir_sum.assign(vertex_count, glm::vec3(0.0f));
     tdir_sum.assign(vertex_count, glm::vec3(0.0f));
     state.assign(vertex_count, 0);
@@ -200,7 +200,7 @@ TangentStats generate_corner_tangents(const TangentInput& in, TangentMethod meth
     TangentWorkspace local;
     TangentWorkspace::Buffers& buffers = (workspace ? *workspace : local).buffers();
     TangentStats stats;
-    std::vector<std::uint8_t>& assigned = buffers.method.assigned;
+    auto& assigned = buffers.method.assigned;
     assigned.resize(out.size());
     if (method == TangentMethod::Lengyel) {
         lengyel_corners(in, out, assigned, stats.rescaled_normals, stats.nonfinite_before_guard,
@@ -209,7 +209,7 @@ TangentStats generate_corner_tangents(const TangentInput& in, TangentMethod meth
         mikktspace_corners(in, out, assigned, stats.rescaled_normals, buffers);
         if (method == TangentMethod::MikkTSpaceWelded) {
             // One tangent per indexed vertex: the last corner written wins.
-            std::vector<std::uint32_t>& last_corner = buffers.method.last_corner;
+            auto& last_corner = buffers.method.last_corner;
             last_corner.resize(in.positions.size());
             for (std::size_t c = 0; c < out.size(); ++c)
                 last_corner[in.indices[c]] = static_cast<std::uint32_t>(c);

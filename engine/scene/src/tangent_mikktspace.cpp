@@ -108,7 +108,7 @@ void build_groups(TriangleSet& tris, GroupScratch& scratch) {
     std::uint32_t* members = scratch.members.data();
     std::int32_t* stack = scratch.stack.data();
     std::size_t member_count = 0;
-    std::vector<Group>& groups = scratch.groups;
+    auto& groups = scratch.groups;
     groups.clear();
     for (std::size_t f = 0; f < count; ++f) {
         if (tris.flags[f] & kGroupWithAny) continue;
@@ -207,15 +207,15 @@ void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
                      buffers.neighbours);
     GroupScratch& scratch = buffers.groups;
     build_groups(tris, scratch);
-    const std::vector<std::uint32_t>& members = scratch.members;
+    const auto& members = scratch.members;
 
     // The reference's threshold is cos(180°) computed in float, i.e. exactly -1: two
     // triangles stay in one subgroup unless their projected tangents point exactly apart.
     constexpr float kThresholdCos = -1.0f;
-    std::vector<glm::vec3>&proj_os = scratch.proj_os, &proj_ot = scratch.proj_ot,
-    &sorted_os = scratch.sorted_os, &subgroup_tangent = scratch.subgroup_tangent;
-    std::vector<std::uint32_t>&sorted = scratch.sorted,
-    &subgroup_members = scratch.subgroup_members, &subgroup_first = scratch.subgroup_first;
+    auto &proj_os = scratch.proj_os, &proj_ot = scratch.proj_ot, &sorted_os = scratch.sorted_os,
+         &subgroup_tangent = scratch.subgroup_tangent;
+    auto &sorted = scratch.sorted, &subgroup_members = scratch.subgroup_members,
+         &subgroup_first = scratch.subgroup_first;
     for (const Group& g : scratch.groups) {
         const std::span<const std::uint32_t> group(&members[g.first], g.size);
         const glm::vec3 n = weld.class_normal[g.cls];
@@ -308,7 +308,7 @@ void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
 
     // Corners of dropped triangles copy the first kept corner of the same welded vertex.
     if (!tris.dropped.empty()) {
-        std::vector<std::uint32_t>& first_kept = scratch.first_kept;
+        auto& first_kept = scratch.first_kept;
         first_kept.assign(weld.class_normal.size(), ~0u);
         for (std::size_t f = 0; f < tris.original.size(); ++f)
             for (int i = 0; i < 3; ++i) {

@@ -120,7 +120,7 @@ void build_neighbours(std::span<const std::uint32_t> tri_class, std::uint32_t cl
     std::fill(neighbour.begin(), neighbour.end(), -1);
 
     // Counting sort by the lower class; within a bucket edges stay in triangle order.
-    std::vector<std::uint32_t>& bucket_start = scratch.bucket_start;
+    auto& bucket_start = scratch.bucket_start;
     bucket_start.assign(std::size_t(class_count) + 1, 0);
     for (std::size_t t = 0; t < edges; t += 3) {
         const std::uint32_t a = tri_class[t], b = tri_class[t + 1], c = tri_class[t + 2];
@@ -133,10 +133,10 @@ void build_neighbours(std::span<const std::uint32_t> tri_class, std::uint32_t cl
     // whether the edge runs from the lower class to the upper. Sorting a bucket orders it
     // by (upper class, triangle) like the reference's three-key sort, and two edges of a
     // run are opposite exactly when their direction bits differ.
-    std::vector<std::uint64_t>& sorted = scratch.sorted;
+    auto& sorted = scratch.sorted;
     sorted.resize(edges);
     {
-        std::vector<std::uint32_t>& fill = scratch.fill;
+        auto& fill = scratch.fill;
         fill.assign(bucket_start.begin(), bucket_start.end() - 1);
         for (std::size_t e = 0; e < edges; ++e) {
             const std::uint32_t from = tri_class[e];

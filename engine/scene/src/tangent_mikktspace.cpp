@@ -147,6 +147,32 @@ void build_groups(TriangleSet& tris, GroupScratch& scratch) {
     scratch.members.resize(member_count);
 }
 
+// For four group members: dP/du projected onto the tangent plane of n and normalised,
+// and dP/dv projected only, in SIMD lanes with the scalar code's operations. Returns
+// false (writing nothing) where a length needs robust_length's rescaling.
+bool project_members(const TriangleSet& tris, const std::uint32_t* members, const glm::vec3& n,
+                     glm::vec3* os_out, glm::vec3* ot_out) {
+    const glm::vec3 &s0 = tris.os[members[0] >> 2], &s1 = tris.os[members[1] >> 2],
+                    &s2 = tris.os[members[2] >> 2], &s3 = tris.os[members[3] >> 2];
+    const glm::vec3 &t0 = tris.ot[members[0] >> 2], &t1 = tris.ot[members[1] >> 2],
+                    &t2 = tris.ot[members[2] >> 2], &t3 = tris.ot[members[3] >> 2];
+    const LaneVec normal{Lanes{} + n.x, Lanes{} + n.y, Lanes{} + n.z};
+    const LaneVec os{Lanes{s0.x, s1.x, s2.x, s3.x}, Lanes{s0.y, s1.y, s2.y, s3.y},
+                     Lanes{s0.z, s1.z, s2.z, s3.z}};
+    const LaneVec ot{Lanes{t0.x, t1.x, t2.x, t3.x}, Lanes{t0.y, t1.y, t2.y, t3.y},
+                     Lanes{t0.z, t1.z, t2.z, t3.z}};
+    LaneMask in_range = LaneMask{} == 0;
+    const LaneVec u = lane_project_normalized(os, normal, in_range);
+    if (!(in_range[0] & in_range[1] & in_range[2] & in_range[3])) return false;
+    const Lanes d = lane_dot(normal, ot);
+    const LaneVec v{ot.x - normal.x * d, ot.y - normal.y * d, ot.z - normal.z * d};
+    for (int k = 0; k < 4; ++k) {
+        os_out[k] = glm::vec3(u.x[k], u.y[k], u.z[k]);
+        ot_out[k] = glm::vec3(v.x[k], v.y[k], v.z[k]);
+    }
+    return true;
+}
+
 // Angle-weighted average of the projected dP/du over `sorted` (members, in ascending
 // triangle order to sum like the reference; `proj_os[k]` belongs to sorted[k]): the
 // reference's EvalTspace.
@@ -224,10 +250,13 @@ void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
         // the subgroup test, and only normalised when that test cannot be settled cheaply.
         proj_os.resize(g.size);
         proj_ot.resize(g.size);
-        for (std::uint32_t m = 0; m < g.size; ++m) {
-            proj_os[m] = project_normalized(tris.os[group[m] >> 2], n);
-            const glm::vec3& ot = tris.ot[group[m] >> 2];
-            proj_ot[m] = ot - n * dot3(n, ot);
+        std::uint32_t done = 0;
+        for (; done + 4 <= g.size; done += 4) // four members at a time where lengths allow
+            if (!project_members(tris, &group[done], n, &proj_os[done], &proj_ot[done])) break;
+        for (; done < g.size; ++done) {
+            proj_os[done] = project_normalized(tris.os[group[done] >> 2], n);
+            const glm::vec3& ot = tris.ot[group[done] >> 2];
+            proj_ot[done] = ot - n * dot3(n, ot);
         }
         // The reference's subgroup relation (needs proj_ot normalised).
         auto together = [&](std::uint32_t a, std::uint32_t b) {

@@ -72,10 +72,19 @@ OracleResult run_oracle(const OracleSetup& setup, const std::vector<TangentInput
     return result;
 }
 
-bool oracle_marks_degenerate(const glm::vec4& t) {
+bool oracle_unusable(const glm::vec4& t) {
     const bool finite = std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z);
-    return !finite || (t.x == 1.0f && t.y == 0.0f && t.z == 0.0f) ||
-           (t.x == 0.0f && t.y == 0.0f && t.z == 0.0f);
+    return !finite || (t.x == 0.0f && t.y == 0.0f && t.z == 0.0f);
+}
+
+bool oracle_agrees_with_fallback(const glm::vec4& t, TangentFallback cause) {
+    if (oracle_unusable(t)) return true;
+    // The reference's untouched default (+x, sign -1 before the flip to glTF's +1) is a
+    // plausible tangent too, so it only counts where the input itself is degenerate.
+    const bool is_default = t.x == 1.0f && t.y == 0.0f && t.z == 0.0f && t.w == 1.0f;
+    return is_default && (cause == TangentFallback::DegenerateUv ||
+                          cause == TangentFallback::DegeneratePosition ||
+                          cause == TangentFallback::NonFiniteInput);
 }
 
 } // namespace sherpa::tools

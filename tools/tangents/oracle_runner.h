@@ -30,8 +30,13 @@ struct OracleResult {
 OracleResult run_oracle(const OracleSetup& setup, const std::vector<TangentInput>& meshes,
                         int time_repeats = 0);
 
-// Whether the oracle left a corner degenerate: non-finite, zero, or the reference's
-// default tangent (+x) that it leaves on corners it could not compute.
-bool oracle_marks_degenerate(const glm::vec4& t);
+// Whether the oracle's tangent is no tangent at all: NaN/Inf or zero.
+bool oracle_unusable(const glm::vec4& t);
+
+// Whether the oracle itself marks a corner degenerate where we report `cause`: it gave no
+// usable tangent, or it left the corner at the reference's default (+x, glTF sign +1),
+// which it does for corners of degenerate triangles that no group reached, and our
+// cause confirms the corner's triangle is degenerate.
+bool oracle_agrees_with_fallback(const glm::vec4& t, TangentFallback cause);
 
 } // namespace sherpa::tools

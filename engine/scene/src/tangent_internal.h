@@ -165,6 +165,13 @@ struct MethodScratch {
     ScratchVector<glm::vec3> sdir_sum, tdir_sum;
 };
 
+// generate_mesh_tangents(): the mesh's streams as spans, and the per-corner result.
+struct MeshScratch {
+    ScratchVector<glm::vec3> positions, normals;
+    ScratchVector<glm::vec2> uvs;
+    ScratchVector<glm::vec4> corners;
+};
+
 } // namespace sherpa::tangent_detail
 
 namespace sherpa {
@@ -175,6 +182,7 @@ struct TangentWorkspace::Buffers {
     tangent_detail::NeighbourScratch neighbours;
     tangent_detail::GroupScratch groups;
     tangent_detail::MethodScratch method;
+    tangent_detail::MeshScratch mesh;
 };
 } // namespace sherpa
 

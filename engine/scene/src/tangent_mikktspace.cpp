@@ -110,6 +110,7 @@ void build_groups(TriangleSet& tris, GroupScratch& scratch) {
     std::size_t member_count = 0;
     auto& groups = scratch.groups;
     groups.clear();
+    groups.reserve(count); // typically about one group per vertex: half the triangles
     for (std::size_t f = 0; f < count; ++f) {
         if (tris.flags[f] & kGroupWithAny) continue;
         for (int i = 0; i < 3; ++i) {
@@ -218,6 +219,8 @@ void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
     tris.original.clear();
     tris.dropped.clear();
     tris.cls.clear();
+    tris.original.reserve(tri_count);
+    tris.cls.reserve(3 * tri_count);
     for (std::size_t t = 0; t < tri_count; ++t) {
         const std::uint32_t* c = &weld.corner_class[3 * t];
         if (c[0] == c[1] || c[0] == c[2] || c[1] == c[2]) {

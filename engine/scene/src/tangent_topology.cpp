@@ -52,6 +52,11 @@ void weld_corners(const TangentInput& in, WeldedCorners& out) {
     out.class_normal_usable.clear();
     out.class_vertex.clear();
     out.rescaled_normals = 0;
+    // Reserved at their bound (one class per vertex, plus corners of vertices with NaN),
+    // so growth never copies and re-faults the buffers.
+    out.class_normal.reserve(vertices);
+    out.class_normal_usable.reserve(vertices);
+    out.class_vertex.reserve(vertices);
     auto new_class = [&](std::uint32_t v) {
         bool rescaled = false;
         out.class_normal.push_back(projection_normal(in.normals[v], rescaled));

@@ -1,7 +1,6 @@
 #pragma once
 // Tangent-space generation: exact MikkTSpace and two cheaper alternatives, computed per
-// face corner over plain spans, plus the step that writes per-corner tangents into a Mesh
-// by splitting the vertices whose corners disagree.
+// face corner over plain spans. mesh_tangents.h writes the results into meshes.
 //
 // Conventions: uvs are glTF texture coordinates (origin top-left, v down). The returned
 // tangents follow glTF: xyz tangent (direction of increasing u), w = +1/-1 such that
@@ -43,12 +42,14 @@ inline constexpr std::size_t kTangentFallbackCauses = 6;
 std::string_view to_string(TangentFallback f);
 
 struct TangentStats {
-    // Corners per fallback cause; index by TangentFallback ([None] counts exact corners).
+    // Corners per fallback cause; index by TangentFallback ([None] counts the corners the
+    // method computed itself).
     std::array<std::uint64_t, kTangentFallbackCauses> corners{};
     // Corners whose value, before the fallback guard, was NaN/Inf: what the method
     // yields unguarded. The returned tangents are always finite.
     std::uint64_t nonfinite_before_guard = 0;
-    // Normals further than kNormalUnitTolerance from unit length, rescaled before use.
+    // Vertices whose normal is further than kNormalUnitTolerance from unit length and
+    // was rescaled before use.
     std::uint64_t rescaled_normals = 0;
 
     std::uint64_t fallbacks() const;

@@ -29,7 +29,7 @@ TEST(CliInfo, JsonHasEveryRequiredKey) {
     for (const char* key :
          {"mesh", "primitive", "mode", "vertices", "indices", "material", "attributes"})
         EXPECT_TRUE(p.contains(key)) << key;
-    EXPECT_EQ(p["attributes"]["TANGENT"], "defaulted");
+    EXPECT_EQ(p["attributes"]["TANGENT"], "generated") << "normal map without TANGENT: MikkTSpace";
     EXPECT_EQ(p["attributes"]["NORMAL"], "authored");
     EXPECT_TRUE(j["usage"].contains("primitives"));
     EXPECT_TRUE(j["warnings"].is_array());

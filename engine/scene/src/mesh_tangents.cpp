@@ -161,4 +161,27 @@ SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptio
     return report;
 }
 
+void add_tangent_warnings(Scene& scene, const SceneTangentReport& report) {
+    for (std::size_t i = 0; i < report.meshes.size(); ++i) {
+        const MeshTangentReport& m = report.meshes[i];
+        const Mesh& mesh = scene.meshes[i];
+        const std::string where = "mesh " + std::to_string(mesh.group_id) + " primitive " +
+                                  std::to_string(mesh.primitive_index) + ": ";
+        if (!m.generated) {
+            if (m.reason.rfind("tangent generation failed", 0) == 0)
+                scene.warnings.push_back(where + m.reason);
+            continue;
+        }
+        if (m.reason != "generated") scene.warnings.push_back(where + m.reason);
+        if (m.stats.fallbacks() == 0) continue;
+        std::string causes;
+        for (std::size_t c = 1; c < kTangentFallbackCauses; ++c)
+            if (m.stats.corners[c] > 0)
+                causes += (causes.empty() ? "" : ", ") + std::to_string(m.stats.corners[c]) + " " +
+                          std::string(to_string(static_cast<TangentFallback>(c)));
+        scene.warnings.push_back(where + std::to_string(m.stats.fallbacks()) +
+                                 " corners got fallback tangents (" + causes + ")");
+    }
+}
+
 } // namespace sherpa

@@ -1,3 +1,4 @@
+#include <sherpa/scene/mesh_tangents.h>
 #include <sherpa/scene/scene_loader.h>
 
 namespace sherpa {
@@ -5,6 +6,9 @@ namespace sherpa {
 LoadResult load_scene(std::string_view spec, const LoadOptions& options) {
     if (spec.rfind("builtin:", 0) == 0) {
         LoadResult r = make_builtin_scene(spec);
+        // Same tangent rule as for files: generated scenes carry normal maps too.
+        if (r && options.generate_tangents)
+            add_tangent_warnings(*r.scene, generate_scene_tangents(*r.scene, options.tangents));
         if (r && options.scene_index > 0) {
             std::string error;
             if (!select_scene(*r.scene, options.scene_index, error))

@@ -58,5 +58,7 @@ struct SceneTangentReport {
 // one workspace per thread).(OpenMP; one
 // workspace per thread).
 SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptions& options);
+// Appends the report's failures and fallback counts to scene.warnings.
+void add_tangent_warnings(Scene& scene, const SceneTangentReport& report);
 
 } // namespace sherpa

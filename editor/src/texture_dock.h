@@ -1,0 +1,42 @@
+#pragma once
+// Dock 4: every texture with thumbnail, source, role and sizes, totals, and the
+// cache actions. Cache-only columns and actions stay disabled until the texture
+// cache (engine/texture) is part of the build.
+#include <QDockWidget>
+
+class QLabel;
+class QPushButton;
+class QTableView;
+
+namespace sherpa::editor {
+
+class EditorContext;
+class TextureTableModel;
+
+class TextureDock : public QDockWidget {
+    Q_OBJECT
+public:
+    explicit TextureDock(const EditorContext& context, QWidget* parent = nullptr);
+    void retranslate();
+    TextureTableModel* model() const { return model_; }
+    QTableView* view() const { return view_; }
+
+Q_SIGNALS:
+    void selectTextureRequested(int texture);
+    void openCacheFolderRequested();
+
+private:
+    void showScene();
+    void syncSelection();
+    void updateTotals();
+
+    const EditorContext& context_;
+    TextureTableModel* model_;
+    QTableView* view_;
+    QLabel* totals_;
+    QPushButton* recompress_;
+    QPushButton* clear_;
+    QPushButton* open_folder_;
+};
+
+} // namespace sherpa::editor

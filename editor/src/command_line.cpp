@@ -32,10 +32,13 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
     const QCommandLineOption language(QStringLiteral("language"),
                                       QStringLiteral("UI language: en, zh_CN, de."),
                                       QStringLiteral("code"));
+    const QCommandLineOption select(QStringLiteral("select"),
+                                    QStringLiteral("Select this node (name or index) once loaded."),
+                                    QStringLiteral("node"));
     const QCommandLineOption timing(
         QStringLiteral("timing"),
         QStringLiteral("Print launch, load and first-frame times in ms."));
-    p.addOptions({view, shot, quit, language, timing});
+    p.addOptions({view, shot, quit, language, select, timing});
     p.process(arguments);
     const QStringList positional = p.positionalArguments();
     if (positional.size() > 1) {
@@ -44,6 +47,7 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
     }
     out.scene = positional.value(0);
     out.view = p.value(view);
+    out.select = p.value(select);
     out.screenshot = p.value(shot);
     out.language = p.value(language);
     out.quit = p.isSet(quit);
@@ -83,6 +87,11 @@ void run_command_line(MainWindow& window, const CommandLine& cl, qint64 started_
             std::fflush(stdout);
         });
     }
+    if (!cl.select.isEmpty())
+        QObject::connect(&window, &MainWindow::sceneLoaded, &window, [&window, cl] {
+            if (!window.selectNodeNamed(cl.select))
+                std::fprintf(stderr, "sherpa: no node '%s'\n", qPrintable(cl.select));
+        });
     if (!cl.screenshot.isEmpty()) {
         auto failed = std::make_shared<bool>(false);
         const auto shoot = [&window, cl, failed] {

@@ -1,5 +1,6 @@
 #pragma once
-// sherpa [SCENE] [--view NAME] [--screenshot OUT.png [--quit]] [--language CODE] [--timing]
+// sherpa [SCENE] [--view NAME] [--select NODE] [--screenshot OUT.png [--quit]] [--language CODE]
+//        [--timing]
 #include <QString>
 #include <QStringList>
 
@@ -10,6 +11,7 @@ class MainWindow;
 struct CommandLine {
     QString scene; // empty: builtin:default
     QString view;
+    QString select; // node name or index to select once the scene is loaded
     QString screenshot;
     QString language;
     bool quit = false;

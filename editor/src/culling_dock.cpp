@@ -42,7 +42,7 @@ CullingDock::CullingDock(const CullingMonitor& monitor, QWidget* parent)
     x_axis_ = new QValueAxis(chart_);
     y_axis_ = new QValueAxis(chart_);
     x_axis_->setLabelFormat(QStringLiteral("%d"));
-    y_axis_->setLabelFormat(QStringLiteral("%d"));
+    y_axis_->setLabelFormat(QStringLiteral("%g"));
     chart_->addAxis(x_axis_, Qt::AlignBottom);
     chart_->addAxis(y_axis_, Qt::AlignLeft);
     for (QLineSeries* s : {visible_series_, culled_series_}) {
@@ -124,6 +124,7 @@ void CullingDock::refresh() {
     culled_series_->replace(culled);
     x_axis_->setRange(0, static_cast<double>(CullingMonitor::kHistory));
     y_axis_->setRange(0, top);
+    y_axis_->applyNiceNumbers(); // whole, readable ticks whatever the instance count
 }
 
 } // namespace sherpa::editor

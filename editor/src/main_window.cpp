@@ -235,6 +235,20 @@ int MainWindow::pickAt(QPointF ndc) {
     return static_cast<int>(hit.instance);
 }
 
+bool MainWindow::selectNodeNamed(const QString& name_or_index) {
+    const Scene* scene = context_.scene();
+    if (!scene) return false;
+    bool is_index = false;
+    const int index = name_or_index.toInt(&is_index);
+    for (std::size_t n = 0; n < scene->nodes.size(); ++n)
+        if (is_index ? static_cast<int>(n) == index
+                     : QString::fromStdString(scene->nodes[n].name) == name_or_index) {
+            context_.selectNode(static_cast<int>(n));
+            return true;
+        }
+    return false;
+}
+
 void MainWindow::frameSelection() {
     const Scene* scene = context_.scene();
     const int node = context_.selection().node;

@@ -60,6 +60,8 @@ public:
     const QString& language() const { return translations_.current(); }
     // The whole window as shown, the viewport's last frame composited in.
     QImage screenshot();
+    // Selects a node by name (first match) or index; false if there is none.
+    bool selectNodeNamed(const QString& name_or_index);
     // Selects whatever is under a viewport point (NDC); returns the instance or -1.
     int pickAt(QPointF ndc);
     // Test hook: the number of GPU objects the renderer holds (-1 without renderer).

@@ -1,7 +1,11 @@
 #include "scene_load_job.h"
 
+#include <QBuffer>
 #include <QElapsedTimer>
+#include <QImageReader>
+#include <QtConcurrent/QtConcurrentMap>
 #include <QtConcurrent/QtConcurrentRun>
+#include <numeric>
 
 #include <sherpa/scene/scene_loader.h>
 
@@ -20,19 +24,29 @@ QImage decode_thumbnail(const Scene& scene, const TextureRecord& texture, QSize&
     if (texture.image < 0 || static_cast<std::size_t>(texture.image) >= scene.images.size())
         return {};
     const ImageRecord& image = scene.images[static_cast<std::size_t>(texture.image)];
-    QImage full;
     if (!image.pixels.empty() && image.width > 0 && image.height > 0) {
         // Built-in scenes generate raw RGBA8; wrap it without copying, scale copies.
-        full = QImage(image.pixels.data(), static_cast<int>(image.width),
-                      static_cast<int>(image.height), static_cast<int>(image.width) * 4,
-                      QImage::Format_RGBA8888);
-    } else if (!image.encoded.empty()) {
-        full = QImage::fromData(image.encoded.data(), static_cast<int>(image.encoded.size()));
+        source_size = QSize(static_cast<int>(image.width), static_cast<int>(image.height));
+        return QImage(image.pixels.data(), source_size.width(), source_size.height(),
+                      source_size.width() * 4, QImage::Format_RGBA8888)
+            .scaled(kThumbnailSize, kThumbnailSize, Qt::KeepAspectRatio, Qt::SmoothTransformation);
     }
-    if (full.isNull()) return {};
-    source_size = full.size();
-    return full.scaled(kThumbnailSize, kThumbnailSize, Qt::KeepAspectRatio,
-                       Qt::SmoothTransformation);
+    if (image.encoded.empty()) return {};
+    const QByteArray bytes =
+        QByteArray::fromRawData(reinterpret_cast<const char*>(image.encoded.data()),
+                                static_cast<qsizetype>(image.encoded.size()));
+    QBuffer buffer;
+    buffer.setData(bytes);
+    buffer.open(QIODevice::ReadOnly);
+    QImageReader reader(&buffer);
+    source_size = reader.size(); // from the header, no decode
+    if (source_size.isValid())
+        // JPEG decodes straight to a reduced size (DCT scaling): 2048² in a few ms.
+        reader.setScaledSize(
+            source_size.scaled(kThumbnailSize, kThumbnailSize, Qt::KeepAspectRatio));
+    QImage thumb = reader.read();
+    if (thumb.isNull()) source_size = {};
+    return thumb;
 }
 
 LoadOutcome run_load(const QString& spec, SceneLoadJob::State* state);
@@ -124,14 +138,21 @@ LoadOutcome run_load(const QString& spec, SceneLoadJob::State* state) {
     state->total = static_cast<int>(scene.textures.size());
     clock.restart();
     extras->thumbnails.resize(scene.textures.size());
+    std::vector<QSize> sizes(scene.textures.size());
+    // Textures decode independently: spread them over the pool, counting as they finish.
+    std::vector<int> order(scene.textures.size());
+    std::iota(order.begin(), order.end(), 0);
+    QtConcurrent::blockingMap(order, [&](int i) {
+        if (state->cancel) return;
+        const auto t = static_cast<std::size_t>(i);
+        extras->thumbnails[t] = decode_thumbnail(scene, scene.textures[t], sizes[t]);
+        ++state->done;
+    });
     extras->image_sizes.resize(scene.images.size());
-    for (std::size_t i = 0; i < scene.textures.size() && !state->cancel; ++i) {
-        QSize size;
-        extras->thumbnails[i] = decode_thumbnail(scene, scene.textures[i], size);
-        const std::int32_t image = scene.textures[i].image;
+    for (std::size_t t = 0; t < scene.textures.size(); ++t) {
+        const std::int32_t image = scene.textures[t].image;
         if (image >= 0 && static_cast<std::size_t>(image) < extras->image_sizes.size())
-            extras->image_sizes[static_cast<std::size_t>(image)] = size;
-        state->done = static_cast<int>(i + 1);
+            extras->image_sizes[static_cast<std::size_t>(image)] = sizes[t];
     }
     extras->thumbnails_ms = static_cast<double>(clock.nsecsElapsed()) / 1e6;
     out.scene = std::move(result.scene);

@@ -284,7 +284,10 @@ bool MainWindow::setDebugView(const QString& name) {
 bool MainWindow::setLanguage(const QString& code) {
     if (!translations_.install(code)) return false;
     settings_.setLanguage(code);
-    return true; // QEvent::LanguageChange reaches changeEvent(), which retranslates
+    // Qt posts LanguageChange (changeEvent retranslates again then); doing it now makes
+    // the switch visible in the same event-loop turn.
+    retranslate();
+    return true;
 }
 
 void MainWindow::updateStatus() {

@@ -118,13 +118,18 @@ void VertexTableModel::sort(int column, Qt::SortOrder order) {
     for (const QModelIndex& i : persistent) persistent_vertex.push_back(vertexOfRow(i.row()));
 
     const std::size_t n = mesh_.get()->vertices.size();
+    // Keys first (one pass over the vertices), then an index sort on plain doubles:
+    // several times faster than calling value() inside the comparator.
+    std::vector<double> keys(n);
+    for (std::size_t v = 0; v < n; ++v) keys[v] = value(v, column);
     order_.resize(n);
     std::iota(order_.begin(), order_.end(), 0u);
     // NaN ("no value") sorts last in both directions.
+    const bool ascending = order == Qt::AscendingOrder;
     std::stable_sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
-        const double x = value(a, column), y = value(b, column);
+        const double x = keys[a], y = keys[b];
         if (std::isnan(x) || std::isnan(y)) return !std::isnan(x) && std::isnan(y);
-        return order == Qt::AscendingOrder ? x < y : x > y;
+        return ascending ? x < y : x > y;
     });
     inverse_.resize(n);
     for (std::size_t r = 0; r < n; ++r) inverse_[order_[r]] = static_cast<std::uint32_t>(r);

@@ -588,6 +588,26 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <source>&lt;h3&gt;Sherpa %1&lt;/h3&gt;&lt;p&gt;A glTF 2.0 scene inspection editor.&lt;/p&gt;&lt;p&gt;Qt %2 (built with %3)&lt;br&gt;Vulkan devices: %4&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Sherpa %1&lt;/h3&gt;&lt;p&gt;Ein Editor zur Untersuchung von glTF-2.0-Szenen.&lt;/p&gt;&lt;p&gt;Qt %2 (gebaut mit %3)&lt;br&gt;Vulkan-Geräte: %4&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>No Vulkan instance: the viewport cannot render.</source>
+        <translation>Keine Vulkan-Instanz: der Viewport kann nicht rendern.</translation>
+    </message>
+    <message>
+        <source>The renderer could not start: %1</source>
+        <translation>Der Renderer konnte nicht starten: %1</translation>
+    </message>
+    <message>
+        <source>Rendering on %1 (renderer ready in %2 ms).</source>
+        <translation>Rendern auf %1 (Renderer nach %2 ms bereit).</translation>
+    </message>
+    <message>
+        <source>GPU upload failed: %1</source>
+        <translation>GPU-Upload fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Rendering stopped: %1</source>
+        <translation>Rendern angehalten: %1</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>

@@ -588,6 +588,26 @@ The current scene is kept.</translation>
         <source>&lt;h3&gt;Sherpa %1&lt;/h3&gt;&lt;p&gt;A glTF 2.0 scene inspection editor.&lt;/p&gt;&lt;p&gt;Qt %2 (built with %3)&lt;br&gt;Vulkan devices: %4&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Sherpa %1&lt;/h3&gt;&lt;p&gt;A glTF 2.0 scene inspection editor.&lt;/p&gt;&lt;p&gt;Qt %2 (built with %3)&lt;br&gt;Vulkan devices: %4&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>No Vulkan instance: the viewport cannot render.</source>
+        <translation>No Vulkan instance: the viewport cannot render.</translation>
+    </message>
+    <message>
+        <source>The renderer could not start: %1</source>
+        <translation>The renderer could not start: %1</translation>
+    </message>
+    <message>
+        <source>Rendering on %1 (renderer ready in %2 ms).</source>
+        <translation>Rendering on %1 (renderer ready in %2 ms).</translation>
+    </message>
+    <message>
+        <source>GPU upload failed: %1</source>
+        <translation>GPU upload failed: %1</translation>
+    </message>
+    <message>
+        <source>Rendering stopped: %1</source>
+        <translation>Rendering stopped: %1</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>

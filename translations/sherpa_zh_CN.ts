@@ -588,6 +588,26 @@ The current scene is kept.</source>
         <source>&lt;h3&gt;Sherpa %1&lt;/h3&gt;&lt;p&gt;A glTF 2.0 scene inspection editor.&lt;/p&gt;&lt;p&gt;Qt %2 (built with %3)&lt;br&gt;Vulkan devices: %4&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Sherpa %1&lt;/h3&gt;&lt;p&gt;glTF 2.0 场景检查编辑器。&lt;/p&gt;&lt;p&gt;Qt %2（构建时为 %3）&lt;br&gt;Vulkan 设备：%4&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>No Vulkan instance: the viewport cannot render.</source>
+        <translation>没有 Vulkan 实例：视口无法渲染。</translation>
+    </message>
+    <message>
+        <source>The renderer could not start: %1</source>
+        <translation>渲染器无法启动：%1</translation>
+    </message>
+    <message>
+        <source>Rendering on %1 (renderer ready in %2 ms).</source>
+        <translation>在 %1 上渲染（渲染器 %2 ms 后就绪）。</translation>
+    </message>
+    <message>
+        <source>GPU upload failed: %1</source>
+        <translation>GPU 上传失败：%1</translation>
+    </message>
+    <message>
+        <source>Rendering stopped: %1</source>
+        <translation>渲染已停止：%1</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>

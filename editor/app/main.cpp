@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "command_line.h"
+#include "gpu_viewport.h"
 #include "main_window.h"
 
 int main(int argc, char** argv) {
@@ -25,13 +26,14 @@ int main(int argc, char** argv) {
 
     // The engine needs Vulkan 1.3; the instance is Qt's so that surfaceForWindow works.
     QVulkanInstance vulkan;
-    vulkan.setApiVersion(QVersionNumber(1, 3));
+    sherpa::editor::GpuViewport::configureInstance(vulkan);
     if (!vulkan.create())
         std::fprintf(stderr, "sherpa: no Vulkan instance (error %d); the viewport stays empty\n",
                      static_cast<int>(vulkan.errorCode()));
 
     sherpa::editor::MainWindow window(vulkan.isValid() ? &vulkan : nullptr);
-    window.show();
+    // The scene starts loading on the thread pool before the window is shown.
     sherpa::editor::run_command_line(window, cl, launch.nsecsElapsed());
+    window.show();
     return QApplication::exec();
 }

@@ -2,6 +2,7 @@
 
 #include <QPlainTextEdit>
 #include <QTime>
+#include <cstdio>
 
 namespace sherpa::editor {
 
@@ -32,6 +33,8 @@ void LogDock::append(Level level, const QString& message) {
         ++errors_;
         break;
     }
+    // Mirrored to stderr: headless runs (--screenshot, tests) show what the dock shows.
+    std::fprintf(stderr, "sherpa [%s] %s\n", qPrintable(tag), qPrintable(message));
     text_->appendPlainText(
         QStringLiteral("%1 [%2] %3")
             .arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), tag, message));

@@ -4,6 +4,7 @@
 #include <QCloseEvent>
 #include <QDragEnterEvent>
 #include <QDropEvent>
+#include <QElapsedTimer>
 #include <QFileInfo>
 #include <QLabel>
 #include <QMessageBox>
@@ -11,11 +12,14 @@
 #include <QPainter>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScreen>
 #include <QStatusBar>
+#include <QTimer>
 #include <QVulkanInstance>
 
 #include "culling_dock.h"
 #include "culling_monitor.h"
+#include "gpu_viewport.h"
 #include "log_dock.h"
 #include "material_dock.h"
 #include "mesh_dock.h"
@@ -62,6 +66,9 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent)
     statusBar()->addPermanentWidget(frame_label_);
 
     createDocks();
+    // After the constructor returns, so that a scene load started right away (command
+    // line) runs on the pool while the device and pipelines are created here.
+    QTimer::singleShot(0, this, &MainWindow::createRenderer);
     createActions();
     createMenus();
     connectActions();
@@ -77,7 +84,64 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent)
     updateStatus();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    // The swapchain must go before the window's surface does.
+    gpu_.reset();
+}
+
+void MainWindow::createRenderer() {
+    if (!vulkan_) {
+        log_->append(LogDock::Level::Error, tr("No Vulkan instance: the viewport cannot render."));
+        return;
+    }
+    QElapsedTimer clock;
+    clock.start();
+    QString error;
+    gpu_ = GpuViewport::create(*vulkan_, error);
+    if (!gpu_) {
+        log_->append(LogDock::Level::Error, tr("The renderer could not start: %1").arg(error));
+        return;
+    }
+    log_->append(LogDock::Level::Info,
+                 tr("Rendering on %1 (renderer ready in %2 ms).")
+                     .arg(gpu_->deviceName())
+                     .arg(static_cast<double>(clock.nsecsElapsed()) / 1e6, 0, 'f', 1));
+    viewport_->setFrameCallback([this] { return renderFrame(); });
+    material_->setReadback([this](int material) { return gpu_->readMaterial(material); });
+    gpuObjectCount = [this] { return gpu_->objectCount(); };
+    connect(&context_, &EditorContext::sceneChanged, this, &MainWindow::uploadScene);
+    if (context_.scene()) uploadScene(); // a scene that arrived before the renderer
+    Q_EMIT rendererReady();
+}
+
+void MainWindow::uploadScene() {
+    try {
+        gpu_->setScene(context_.scene());
+    } catch (const std::exception& e) {
+        log_->append(LogDock::Level::Error,
+                     tr("GPU upload failed: %1").arg(QString::fromUtf8(e.what())));
+    }
+    viewport_->scheduleFrame();
+}
+
+bool MainWindow::renderFrame() {
+    if (!gpu_ || gpu_failed_) return false;
+    ViewportFrame frame;
+    const QSize pixels = viewport_->pixelSize();
+    frame.width = static_cast<std::uint32_t>(pixels.width());
+    frame.height = static_cast<std::uint32_t>(pixels.height());
+    frame.camera = viewport_->camera().spec();
+    frame.view = view_;
+    frame.overlays = overlays_;
+    try {
+        return gpu_->present(viewport_->vulkanSurface(), frame);
+    } catch (const std::exception& e) {
+        gpu_failed_ = true;
+        log_->append(LogDock::Level::Error,
+                     tr("Rendering stopped: %1").arg(QString::fromUtf8(e.what())));
+        return false;
+    }
+}
 
 void MainWindow::createDocks() {
     scene_tree_ = new SceneTreeDock(context_, this);
@@ -312,6 +376,12 @@ QImage MainWindow::screenshot() {
     // Widgets paint into the pixmap; the native viewport does not, so its frame is
     // composited from the renderer's readback when there is one.
     QImage image = grab().toImage();
+    if (gpu_ && viewport_->isExposed()) {
+        // The X server holds the presented frame: read it back like any window.
+        const QPixmap frame = viewport_->screen()->grabWindow(viewport_->winId());
+        QPainter painter(&image);
+        painter.drawPixmap(viewport_container_->mapTo(this, QPoint(0, 0)), frame);
+    }
     return image;
 }
 

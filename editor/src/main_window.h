@@ -23,6 +23,7 @@ class QVulkanInstance;
 namespace sherpa::editor {
 
 class CullingDock;
+class GpuViewport;
 class CullingMonitor;
 class LogDock;
 class MaterialDock;
@@ -72,6 +73,7 @@ Q_SIGNALS:
     void loadFailed(const QString& spec, const QString& error);
     void loadCanceled(const QString& spec);
     void firstFrame();
+    void rendererReady(); // the GPU viewport exists (shortly after construction)
 
 protected:
     void closeEvent(QCloseEvent* e) override;
@@ -89,6 +91,9 @@ private:
     void openFileDialog();
 
     void createDocks();
+    void createRenderer();
+    void uploadScene();
+    bool renderFrame();
     void connectActions();
     void onLoaded(const QString& spec, const LoadOutcome& outcome, double ms);
     void onLoadFailed(const QString& spec, const QString& error);
@@ -104,6 +109,8 @@ private:
     SceneLoadJob loader_;
     CullingMonitor* culling_ = nullptr;
     QVulkanInstance* vulkan_ = nullptr;
+    std::unique_ptr<GpuViewport> gpu_; // null without a usable Vulkan device
+    bool gpu_failed_ = false;          // a frame threw: stop drawing, say so once
     ViewportWindow* viewport_ = nullptr;
     QWidget* viewport_container_ = nullptr;
     SceneTreeDock* scene_tree_ = nullptr;

@@ -20,6 +20,7 @@
 
 #include "culling_dock.h"
 #include "culling_monitor.h"
+#include "gpu_viewport.h"
 #include "log_dock.h"
 #include "material_dock.h"
 #include "mesh_dock.h"
@@ -332,7 +333,9 @@ void MainWindow::openFileDialog() {
 
 void MainWindow::showAbout() {
     QString device = tr("none (Vulkan unavailable)");
-    if (vulkan_ && vulkan_->isValid()) {
+    if (gpu_) {
+        device = gpu_->deviceName();
+    } else if (vulkan_ && vulkan_->isValid()) {
         // The first physical device; the engine picks its device the same way (lavapipe first).
         QVulkanFunctions* f = vulkan_->functions();
         uint32_t count = 0;

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "gpu_viewport.h"
 #include "main_window.h"
 #include "vertex_table_model.h"
 
@@ -33,7 +34,7 @@ double switch_ms(MainWindow& w, const QString& spec) {
 
 void bench_switch() {
     QVulkanInstance vulkan;
-    vulkan.setApiVersion(QVersionNumber(1, 3));
+    sherpa::editor::GpuViewport::configureInstance(vulkan);
     vulkan.create();
     MainWindow w(vulkan.isValid() ? &vulkan : nullptr);
     w.show();

@@ -12,6 +12,7 @@
 #include "culling_dock.h"
 #include "culling_monitor.h"
 #include "editor_settings.h"
+#include "gpu_viewport.h"
 #include "log_dock.h"
 #include "main_window.h"
 #include "material_dock.h"
@@ -74,7 +75,7 @@ private:
 void WindowTests::initTestCase() {
     QStandardPaths::setTestModeEnabled(true); // settings go to a test location
     QSettings().clear();
-    vulkan_.setApiVersion(QVersionNumber(1, 3));
+    GpuViewport::configureInstance(vulkan_);
     vulkan_.create(); // optional: without Vulkan the viewport stays empty
     window_ = std::make_unique<MainWindow>(vulkan_.isValid() ? &vulkan_ : nullptr);
     window_->setLanguage(QStringLiteral("en"));

@@ -94,9 +94,9 @@ int run_cull(Args args) {
         return kExitLoadError;
     }
     const Scene& s = *r.scene;
-    const BoxesSoA boxes = instance_boxes(s);
+    const CullInput input = prepare_cull_input(s);
     std::vector<PassResult> passes;
-    passes.push_back(cull_pass(s, boxes, frustum_from_view_projection(camera.view_projection()),
+    passes.push_back(cull_pass(s, input, frustum_from_view_projection(camera.view_projection()),
                                camera.eye, options, "camera"));
     glm::vec3 sun{-0.4f, -1.0f, -0.3f};
     for (const PlacedLight& pl : s.placed_lights)
@@ -106,7 +106,7 @@ int run_cull(Args args) {
         }
     const auto cascades = cascade_view_projections(camera, sun, s.bounds, {});
     for (std::size_t c = 0; c < cascades.size(); ++c)
-        passes.push_back(cull_pass(s, boxes, frustum_from_view_projection(cascades[c]), camera.eye,
+        passes.push_back(cull_pass(s, input, frustum_from_view_projection(cascades[c]), camera.eye,
                                    options, "cascade" + std::to_string(c)));
     if (as_json) {
         nlohmann::json j = {{"passes", nlohmann::json::array()}};

@@ -6,7 +6,7 @@ CullingMonitor::CullingMonitor(const EditorContext& context, QObject* parent)
     : QObject(parent), context_(context) {
     options_.count_false_positives = true; // the dock shows them; the exact test is cheap
     connect(&context_, &EditorContext::sceneChanged, this, [this] {
-        boxes_ = context_.scene() ? instance_boxes(*context_.scene()) : BoxesSoA{};
+        input_ = context_.scene() ? prepare_cull_input(*context_.scene()) : CullInput{};
         history_ = RingHistory<CullSample>(kHistory);
         frozen_.reset();
         rerun();
@@ -40,7 +40,7 @@ void CullingMonitor::rerun() {
     }
     const CameraSpec& cam = cullingCamera();
     const Frustum frustum = frustum_from_view_projection(cam.view_projection());
-    PassResult pass = cull_pass(*scene, boxes_, frustum, cam.eye, options_, "camera");
+    PassResult pass = cull_pass(*scene, input_, frustum, cam.eye, options_, "camera");
     visible_.assign(scene->instances.size(), 0);
     for (std::uint32_t i : pass.visible_opaque) visible_[i] = 1;
     for (std::uint32_t i : pass.visible_transparent) visible_[i] = 1;

@@ -48,7 +48,7 @@ private:
     void rerun();
 
     const EditorContext& context_;
-    BoxesSoA boxes_;
+    CullInput input_; // boxes and draw groups, prepared once per scene
     CullOptions options_;
     CameraSpec camera_;
     std::optional<CameraSpec> frozen_;

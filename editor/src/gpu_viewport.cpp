@@ -118,8 +118,42 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame) {
 }
 
 std::optional<GpuMaterialReadback> GpuViewport::readMaterial(int material) {
-    (void)material;
-    return std::nullopt;
+    const gpu::GpuScene* scene = impl_->renderer->scene();
+    if (!scene || !impl_->scene || material < 0 ||
+        static_cast<std::size_t>(material) >= impl_->scene->materials.size())
+        return std::nullopt;
+    gpu::ResourceManager& resources = impl_->renderer->resources();
+    constexpr VkDeviceSize kSize = sizeof(GPUMaterialData);
+    gpu::BufferHandle staging =
+        resources.create_buffer({kSize, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                 gpu::MemoryUsage::Readback, "editor material readback"});
+    // One copy out of the device-local material array, waited on: a dock refresh, not a frame.
+    gpu::CommandRecorder recorder(*impl_->context);
+    const VkCommandBuffer cmd = recorder.begin();
+    const VkBufferCopy region{static_cast<VkDeviceSize>(material) * kSize, 0, kSize};
+    vkCmdCopyBuffer(cmd, resources.get(scene->materials_buffer()).buffer.get(),
+                    resources.get(staging).buffer.get(), 1, &region);
+    resources.wait_for(recorder.submit(resources));
+    const gpu::Buffer& readback = resources.get(staging);
+    // Readback memory may be cached without coherence: make the GPU's writes visible.
+    const VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, nullptr,
+                                    readback.memory.get(), 0, VK_WHOLE_SIZE};
+    vkInvalidateMappedMemoryRanges(impl_->context->device(), 1, &range);
+    GpuMaterialReadback out;
+    std::memcpy(&out.record, readback.mapped, kSize);
+    resources.destroy(staging);
+
+    // Every (texture, colour space) slot the scene registered, inverted.
+    for (std::size_t t = 0; t < impl_->scene->textures.size(); ++t)
+        for (bool srgb : {true, false}) {
+            const std::uint32_t slot =
+                scene->textures().slot(static_cast<std::int32_t>(t), srgb, kTextureSentinel);
+            if (slot == kTextureSentinel) continue;
+            if (slot >= out.bindless_to_texture.size())
+                out.bindless_to_texture.resize(slot + 1, -1);
+            out.bindless_to_texture[slot] = static_cast<int>(t);
+        }
+    return out;
 }
 
 std::int64_t GpuViewport::objectCount() const {

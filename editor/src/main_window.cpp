@@ -158,7 +158,7 @@ void MainWindow::createDocks() {
     addDockWidget(Qt::BottomDockWidgetArea, log_);
     tabifyDockWidget(textures_, log_);
     textures_->raise();
-    resizeDocks({scene_tree_, mesh_}, {380, 560}, Qt::Horizontal);
+    resizeDocks({scene_tree_, mesh_}, {340, 520}, Qt::Horizontal);
     resizeDocks({textures_}, {230}, Qt::Vertical);
 }
 

@@ -89,12 +89,14 @@ QVariant VertexTableModel::data(const QModelIndex& index, int role) const {
     const auto v = static_cast<std::size_t>(vertexOfRow(index.row()));
     if (role == VertexRole) return static_cast<int>(v);
     if (role == Qt::TextAlignmentRole) return int(Qt::AlignRight | Qt::AlignVCenter);
-    const double x = value(v, index.column());
+    // Views ask for a dozen roles per cell; only two need the value.
     if (role == Qt::DisplayRole) {
         if (index.column() == IndexColumn) return static_cast<qulonglong>(v);
+        const double x = value(v, index.column());
         return std::isnan(x) ? QStringLiteral("—") : Format::number(x);
     }
-    if (role == Qt::ForegroundRole && index.column() == TangentErrorColumn && x > 5.0)
+    if (role == Qt::ForegroundRole && index.column() == TangentErrorColumn &&
+        value(v, index.column()) > 5.0)
         return QBrush(QColor(220, 80, 60)); // large disagreement stands out when scrolling
     return {};
 }

@@ -875,8 +875,12 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <translation>Benötigt den Textur-Cache, der in diesem Build fehlt</translation>
     </message>
     <message>
-        <source>%1 textures, %2 encoded on disk, thumbnails decoded in %3 ms</source>
-        <translation>%1 Texturen, %2 kodiert auf der Festplatte, Vorschaubilder in %3 ms dekodiert</translation>
+        <source>no renderer</source>
+        <translation>kein Renderer</translation>
+    </message>
+    <message>
+        <source>%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms</source>
+        <translation>%1 Texturen, %2 kodiert auf der Festplatte, %3 auf der GPU, Vorschaubilder in %4 ms dekodiert</translation>
     </message>
 </context>
 <context>

@@ -875,8 +875,12 @@ The current scene is kept.</translation>
         <translation>Needs the texture cache, which is not part of this build</translation>
     </message>
     <message>
-        <source>%1 textures, %2 encoded on disk, thumbnails decoded in %3 ms</source>
-        <translation>%1 textures, %2 encoded on disk, thumbnails decoded in %3 ms</translation>
+        <source>no renderer</source>
+        <translation>no renderer</translation>
+    </message>
+    <message>
+        <source>%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms</source>
+        <translation>%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms</translation>
     </message>
 </context>
 <context>

@@ -875,8 +875,12 @@ The current scene is kept.</source>
         <translation>需要纹理缓存，但此版本未包含</translation>
     </message>
     <message>
-        <source>%1 textures, %2 encoded on disk, thumbnails decoded in %3 ms</source>
-        <translation>%1 个纹理，磁盘上编码数据 %2，缩略图解码用时 %3 ms</translation>
+        <source>no renderer</source>
+        <translation>无渲染器</translation>
+    </message>
+    <message>
+        <source>%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms</source>
+        <translation>%1 个纹理，磁盘上编码数据 %2，GPU 上 %3，缩略图解码用时 %4 ms</translation>
     </message>
 </context>
 <context>

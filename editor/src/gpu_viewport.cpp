@@ -163,3 +163,12 @@ std::int64_t GpuViewport::objectCount() const {
 }
 
 } // namespace sherpa::editor
+
+namespace sherpa::editor {
+
+std::uint64_t GpuViewport::textureBytes() const {
+    const gpu::GpuScene* scene = impl_->renderer->scene();
+    return scene ? scene->textures().gpu_bytes() : 0;
+}
+
+} // namespace sherpa::editor

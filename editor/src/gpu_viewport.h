@@ -48,6 +48,8 @@ public:
     std::optional<GpuMaterialReadback> readMaterial(int material);
     // Buffers, images and samplers alive in the engine (leak checks).
     std::int64_t objectCount() const;
+    // Bytes of the loaded scene's textures on the GPU (0 without a scene).
+    std::uint64_t textureBytes() const;
     double lastGpuMs() const { return last_gpu_ms_; }
 
 private:

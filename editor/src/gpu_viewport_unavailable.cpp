@@ -35,5 +35,8 @@ std::optional<GpuMaterialReadback> GpuViewport::readMaterial(int) {
 std::int64_t GpuViewport::objectCount() const {
     return -1;
 }
+std::uint64_t GpuViewport::textureBytes() const {
+    return 0;
+}
 
 } // namespace sherpa::editor

@@ -117,6 +117,7 @@ void MainWindow::createRenderer() {
 void MainWindow::uploadScene() {
     try {
         gpu_->setScene(context_.scene());
+        textures_->setGpuBytes(static_cast<std::int64_t>(gpu_->textureBytes()));
     } catch (const std::exception& e) {
         log_->append(LogDock::Level::Error,
                      tr("GPU upload failed: %1").arg(QString::fromUtf8(e.what())));

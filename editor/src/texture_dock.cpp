@@ -80,12 +80,21 @@ void TextureDock::syncSelection() {
     }
 }
 
+void TextureDock::setGpuBytes(std::int64_t bytes) {
+    gpu_bytes_ = bytes;
+    updateTotals();
+}
+
 void TextureDock::updateTotals() {
     const SceneExtras* extras = context_.extras();
-    totals_->setText(tr("%1 textures, %2 encoded on disk, thumbnails decoded in %3 ms")
-                         .arg(model_->rowCount())
-                         .arg(Format::bytes(model_->totalDiskBytes()))
-                         .arg(extras ? extras->thumbnails_ms : 0.0, 0, 'f', 1));
+    const QString gpu =
+        gpu_bytes_ < 0 ? tr("no renderer") : Format::bytes(static_cast<std::uint64_t>(gpu_bytes_));
+    totals_->setText(
+        tr("%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms")
+            .arg(model_->rowCount())
+            .arg(Format::bytes(model_->totalDiskBytes()))
+            .arg(gpu)
+            .arg(extras ? extras->thumbnails_ms : 0.0, 0, 'f', 1));
 }
 
 } // namespace sherpa::editor

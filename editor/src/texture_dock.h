@@ -20,6 +20,8 @@ public:
     void retranslate();
     TextureTableModel* model() const { return model_; }
     QTableView* view() const { return view_; }
+    // Bytes the renderer holds for the scene's textures (-1: no renderer), for the totals.
+    void setGpuBytes(std::int64_t bytes);
 
 Q_SIGNALS:
     void selectTextureRequested(int texture);
@@ -37,6 +39,7 @@ private:
     QPushButton* recompress_;
     QPushButton* clear_;
     QPushButton* open_folder_;
+    std::int64_t gpu_bytes_ = -1;
 };
 
 } // namespace sherpa::editor

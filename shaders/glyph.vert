@@ -18,5 +18,5 @@ void main() {
     vec3 dir = kind == 0u ? n : kind == 1u ? t : normalize(cross(n, t) * t4.w);
     if (tip) p += dir * pc.glyph_length;
     out_color = pc.color;
-    gl_Position = pc.frame.view_proj * vec4(p, 1.0);
+    gl_Position = frame.view_proj * vec4(p, 1.0);
 }

@@ -51,6 +51,8 @@ std::string missing_features(const FeatureChain& f) {
     };
     need(f.core.features.shaderInt64, "shaderInt64");
     need(f.core.features.fillModeNonSolid, "fillModeNonSolid");
+    need(f.core.features.multiDrawIndirect, "multiDrawIndirect");
+    need(f.v12.drawIndirectCount, "drawIndirectCount");
     need(f.v12.descriptorIndexing, "descriptorIndexing");
     need(f.v12.runtimeDescriptorArray, "runtimeDescriptorArray");
     need(f.v12.descriptorBindingPartiallyBound, "descriptorBindingPartiallyBound");
@@ -272,6 +274,7 @@ void Context::create_device(bool presentation) {
     FeatureChain f;
     f.core.features.shaderInt64 = VK_TRUE;
     f.core.features.fillModeNonSolid = VK_TRUE;
+    f.core.features.multiDrawIndirect = VK_TRUE; // GPU-driven culling's indirect draws
     f.core.features.samplerAnisotropy = supported.core.features.samplerAnisotropy;
     f.core.features.wideLines = supported.core.features.wideLines;
     f.core.features.pipelineStatisticsQuery = supported.core.features.pipelineStatisticsQuery;
@@ -287,6 +290,7 @@ void Context::create_device(bool presentation) {
     f.v12.bufferDeviceAddress = VK_TRUE;
     f.v12.scalarBlockLayout = VK_TRUE;
     f.v12.hostQueryReset = VK_TRUE;
+    f.v12.drawIndirectCount = VK_TRUE;
     f.v12.timelineSemaphore = supported.v12.timelineSemaphore;
     f.v13.dynamicRendering = VK_TRUE;
     f.v13.synchronization2 = VK_TRUE;

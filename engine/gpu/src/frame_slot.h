@@ -15,8 +15,10 @@ inline constexpr std::uint32_t kTimestampCount = std::size(kPassNames) + 1;
 struct Renderer::FrameSlot {
     explicit FrameSlot(Context& context) : recorder(context) {}
     CommandRecorder recorder;
-    BufferHandle frame_data; // GPUFrameData, host-visible
-    BufferHandle lines;      // overlay line vertices, host-visible, grown on demand
+    BufferHandle frame_data;              // GPUFrameData, host-visible uniform buffer
+    VkDescriptorSet set = VK_NULL_HANDLE; // set 1: frame data + the scene's materials
+    std::uint64_t set_generation = ~0ull; // scene generation the set's materials belong to
+    BufferHandle lines;                   // overlay line vertices, host-visible, grown on demand
     VkDeviceSize lines_capacity = 0;
     UniqueQueryPool timestamps, statistics;
     std::uint64_t submission = 0; // timeline value of the last frame recorded here

@@ -55,6 +55,9 @@ struct RenderSettings {
     CameraSpec camera;
     bool shadows = true;
     std::uint32_t cascades = 3;
+    // Reuse the shadow cascades while camera, light and scene are unchanged. False
+    // re-renders them every frame (to measure their cost).
+    bool cache_shadows = true;
     bool depth_prepass = true;
     // Benchmark floor: the same draws with positions only and a constant colour.
     bool floor_only = false;

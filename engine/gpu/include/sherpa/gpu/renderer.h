@@ -91,16 +91,19 @@ private:
     void ensure_offscreen(std::uint32_t width, std::uint32_t height);
     void ensure_depth(std::uint32_t width, std::uint32_t height);
     void init_shadow_map();
-    const Pipelines& pipelines_for(VkFormat format);
+    Pipelines& pipelines_for(VkFormat format);
+    void create_frame_sets();
+    void bind_frame_set(FrameSlot& slot);
     void fill_frame_data(FrameSlot& slot, const RenderSettings& settings, float aspect,
                          bool& shadows, std::uint32_t& cascades);
     void record_passes(VkCommandBuffer cmd, FrameSlot& slot, const RenderTarget& target,
                        const RenderSettings& settings);
     void record_shadows(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
                         std::uint32_t cascades);
-    void draw_groups(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p, PipelineId id,
+    void draw_groups(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p, VkPipeline pipeline,
                      AlphaMode alpha, std::uint32_t cascade, bool cull);
-    void draw_blended(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p);
+    void draw_blended(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
+                      VkPipeline pipeline);
     void draw_overlays(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
                        const RenderSettings& s);
     FrameStats read_stats(FrameSlot& slot);
@@ -109,6 +112,9 @@ private:
     RendererOptions options_;
     std::unique_ptr<ResourceManager> resources_;
     std::unique_ptr<BindlessTable> bindless_;
+    UniqueDescriptorSetLayout frame_layout_;
+    UniqueDescriptorPool frame_pool_;
+    BufferHandle no_materials_; // bound while no scene is loaded
     std::map<VkFormat, std::unique_ptr<Pipelines>> pipelines_;
     std::unique_ptr<GpuScene> scene_;
     std::unique_ptr<Lighting> lighting_; // lights, cameras and bounds of the loaded scene

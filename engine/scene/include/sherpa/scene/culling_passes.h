@@ -29,6 +29,11 @@ struct CullStats {
     std::int64_t false_positives = -1;
     std::uint64_t draw_calls = 0, triangles = 0;
     double cpu_ms = 0.0;
+    // GPU-driven path: compute time from timestamps (-1: CPU path or no timestamps)
+    // and the objects whose visibility differs from the CPU path's (-1: not checked).
+    bool gpu = false;
+    double gpu_ms = -1.0;
+    std::int64_t cpu_gpu_differences = -1;
 };
 
 struct PassResult {

@@ -131,8 +131,8 @@ std::optional<GpuMaterialReadback> GpuViewport::readMaterial(int material) {
     gpu::CommandRecorder recorder(*impl_->context);
     const VkCommandBuffer cmd = recorder.begin();
     const VkBufferCopy region{static_cast<VkDeviceSize>(material) * kSize, 0, kSize};
-    vkCmdCopyBuffer(cmd, resources.get(scene->materials_buffer()).buffer.get(),
-                    resources.get(staging).buffer.get(), 1, &region);
+    vkCmdCopyBuffer(cmd, scene->materials_buffer(), resources.get(staging).buffer.get(), 1,
+                    &region);
     resources.wait_for(recorder.submit(resources));
     const gpu::Buffer& readback = resources.get(staging);
     // Readback memory may be cached without coherence: make the GPU's writes visible.

@@ -135,7 +135,11 @@ bool MainWindow::renderFrame() {
     frame.view = view_;
     frame.overlays = overlays_;
     try {
-        return gpu_->present(viewport_->vulkanSurface(), frame);
+        const bool shown = gpu_->present(viewport_->vulkanSurface(), frame);
+        // Skipped because the swapchain was out of date and has just been recreated:
+        // draw again at the new size, or the last size change would never show.
+        if (!shown) viewport_->scheduleFrame();
+        return shown;
     } catch (const std::exception& e) {
         gpu_failed_ = true;
         log_->append(LogDock::Level::Error,
@@ -260,6 +264,7 @@ void MainWindow::onLoaded(const QString& spec, const LoadOutcome& outcome, doubl
                                            .arg(outcome.extras->load_ms, 0, 'f', 1)
                                            .arg(outcome.extras->thumbnails_ms, 0, 'f', 1));
     viewport_->camera().frame(outcome.scene->bounds);
+    viewport_->setAutoFrame(true);
     onCameraChanged();
     updateStatus();
     Q_EMIT sceneLoaded(spec, ms);
@@ -329,6 +334,7 @@ void MainWindow::frameSelection() {
 void MainWindow::jumpToCamera(int node) {
     const Scene* scene = context_.scene();
     if (!scene) return;
+    viewport_->setAutoFrame(false);
     for (std::size_t i = 0; i < scene->placed_cameras.size(); ++i)
         if (static_cast<int>(scene->placed_cameras[i].node) == node) {
             viewport_->camera().jumpTo(*scene, i);

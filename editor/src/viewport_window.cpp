@@ -71,6 +71,7 @@ void ViewportWindow::renderNow() {
 }
 
 void ViewportWindow::mousePressEvent(QMouseEvent* e) {
+    auto_frame_ = false;
     press_pos_ = last_pos_ = e->position();
     buttons_ = e->buttons();
     dragged_ = false;
@@ -103,12 +104,14 @@ void ViewportWindow::mouseReleaseEvent(QMouseEvent* e) {
 }
 
 void ViewportWindow::wheelEvent(QWheelEvent* e) {
+    auto_frame_ = false;
     camera_.dolly(static_cast<float>(e->angleDelta().y()) / 120.0f);
     Q_EMIT cameraChanged();
     scheduleFrame();
 }
 
 void ViewportWindow::keyPressEvent(QKeyEvent* e) {
+    auto_frame_ = false;
     if (e->key() == Qt::Key_F && !e->isAutoRepeat()) {
         if (e->modifiers() & Qt::ShiftModifier)
             Q_EMIT frameSelectionRequested();

@@ -33,6 +33,9 @@ public:
     // Something visible changed: render once more (coalesced by Qt to the refresh rate).
     void scheduleFrame();
     double lastFrameMs() const { return last_frame_ms_; }
+    // Until the user moves the camera, a resize re-frames the scene (the first
+    // scene is framed before the window has its final size).
+    void setAutoFrame(bool on) { auto_frame_ = on; }
     std::uint64_t framesRendered() const { return frames_; }
 
 Q_SIGNALS:
@@ -63,6 +66,7 @@ private:
     Qt::MouseButtons buttons_;
     bool dragged_ = false;
     bool fly_ = false;
+    bool auto_frame_ = false;
     QSet<int> keys_held_;
     QTimer fly_timer_;
     QElapsedTimer fly_clock_;

@@ -76,9 +76,7 @@ public:
     }
     const GpuMemoryReport& memory() const { return memory_; }
     std::uint64_t triangle_count() const { return triangles_; }
-    // For inspection (the editor reads materials back as the shaders see them, and
-    // maps their bindless slots back to scene textures).
-    BufferHandle materials_buffer() const { return materials_; }
+    // For inspection: the editor maps material bindless slots back to scene textures.
     const SceneTextures& textures() const { return *textures_; }
     const std::vector<std::string>& warnings() const { return textures_->warnings(); }
 

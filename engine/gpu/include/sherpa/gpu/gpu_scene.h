@@ -76,6 +76,8 @@ public:
     }
     const GpuMemoryReport& memory() const { return memory_; }
     std::uint64_t triangle_count() const { return triangles_; }
+    // For inspection: the editor maps material bindless slots back to scene textures.
+    const SceneTextures& textures() const { return *textures_; }
     const std::vector<std::string>& warnings() const { return textures_->warnings(); }
 
 private:

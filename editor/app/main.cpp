@@ -1,0 +1,39 @@
+// sherpa: the editor. See command_line.h for the arguments.
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QVulkanInstance>
+#include <cstdio>
+
+#include "command_line.h"
+#include "gpu_viewport.h"
+#include "main_window.h"
+
+int main(int argc, char** argv) {
+    QElapsedTimer launch;
+    launch.start();
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("Sherpa"));
+    QApplication::setApplicationName(QStringLiteral("Sherpa"));
+    QApplication::setApplicationVersion(QStringLiteral(SHERPA_VERSION));
+    QApplication::setDesktopFileName(QStringLiteral("sherpa"));
+
+    sherpa::editor::CommandLine cl;
+    QString error;
+    if (!sherpa::editor::parse_command_line(QApplication::arguments(), cl, error)) {
+        std::fprintf(stderr, "sherpa: %s\n", qPrintable(error));
+        return 2;
+    }
+
+    // The engine needs Vulkan 1.3; the instance is Qt's so that surfaceForWindow works.
+    QVulkanInstance vulkan;
+    sherpa::editor::GpuViewport::configureInstance(vulkan);
+    if (!vulkan.create())
+        std::fprintf(stderr, "sherpa: no Vulkan instance (error %d); the viewport stays empty\n",
+                     static_cast<int>(vulkan.errorCode()));
+
+    sherpa::editor::MainWindow window(vulkan.isValid() ? &vulkan : nullptr);
+    // The scene starts loading on the thread pool before the window is shown.
+    sherpa::editor::run_command_line(window, cl, launch.nsecsElapsed());
+    window.show();
+    return QApplication::exec();
+}

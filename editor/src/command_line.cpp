@@ -1,0 +1,121 @@
+#include "command_line.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QElapsedTimer>
+#include <QImage>
+#include <QTimer>
+#include <cstdio>
+
+#include "main_window.h"
+#include "view_catalog.h"
+
+namespace sherpa::editor {
+
+bool parse_command_line(const QStringList& arguments, CommandLine& out, QString& error) {
+    QCommandLineParser p;
+    p.setApplicationDescription(QStringLiteral("Sherpa: a glTF 2.0 scene inspection editor."));
+    p.addHelpOption();
+    p.addVersionOption();
+    p.addPositionalArgument(
+        QStringLiteral("scene"),
+        QStringLiteral("A .gltf/.glb file, builtin:default or builtin:grid?n=N."));
+    const QCommandLineOption view(QStringLiteral("view"),
+                                  QStringLiteral("Debug view (lit, normal, tangent, ...)."),
+                                  QStringLiteral("name"));
+    const QCommandLineOption shot(
+        QStringLiteral("screenshot"),
+        QStringLiteral("Save the window to this PNG once the scene is shown."),
+        QStringLiteral("file"));
+    const QCommandLineOption quit(QStringLiteral("quit"),
+                                  QStringLiteral("Quit after the screenshot."));
+    const QCommandLineOption language(QStringLiteral("language"),
+                                      QStringLiteral("UI language: en, zh_CN, de."),
+                                      QStringLiteral("code"));
+    const QCommandLineOption select(QStringLiteral("select"),
+                                    QStringLiteral("Select this node (name or index) once loaded."),
+                                    QStringLiteral("node"));
+    const QCommandLineOption timing(
+        QStringLiteral("timing"),
+        QStringLiteral("Print launch, load and first-frame times in ms."));
+    p.addOptions({view, shot, quit, language, select, timing});
+    p.process(arguments);
+    const QStringList positional = p.positionalArguments();
+    if (positional.size() > 1) {
+        error = QStringLiteral("at most one scene");
+        return false;
+    }
+    out.scene = positional.value(0);
+    out.view = p.value(view);
+    out.select = p.value(select);
+    out.screenshot = p.value(shot);
+    out.language = p.value(language);
+    out.quit = p.isSet(quit);
+    out.timing = p.isSet(timing);
+    if (!out.view.isEmpty() && !ViewCatalog::isView(out.view)) {
+        QStringList names;
+        for (const ViewEntry& v : ViewCatalog::views()) names << QString::fromLatin1(v.name);
+        error = QStringLiteral("unknown view '%1' (one of: %2)")
+                    .arg(out.view, names.join(QStringLiteral(", ")));
+        return false;
+    }
+    if (out.quit && out.screenshot.isEmpty()) {
+        error = QStringLiteral("--quit needs --screenshot");
+        return false;
+    }
+    return true;
+}
+
+void run_command_line(MainWindow& window, const CommandLine& cl, qint64 started_ns) {
+    auto clock = std::make_shared<QElapsedTimer>();
+    clock->start();
+    const auto since_launch = [clock, started_ns] {
+        return static_cast<double>(clock->nsecsElapsed() + started_ns) / 1e6;
+    };
+    if (!cl.language.isEmpty() && !window.setLanguage(cl.language))
+        std::fprintf(stderr, "sherpa: no translation for '%s'\n", qPrintable(cl.language));
+    if (!cl.view.isEmpty()) window.setDebugView(cl.view);
+    if (cl.timing) {
+        QObject::connect(&window, &MainWindow::sceneLoaded, &window,
+                         [since_launch](const QString& spec, double ms) {
+                             std::printf("sherpa: %s loaded in %.1f ms (%.1f ms after launch)\n",
+                                         qPrintable(spec), ms, since_launch());
+                             std::fflush(stdout);
+                         });
+        QObject::connect(&window, &MainWindow::firstFrame, &window, [since_launch] {
+            std::printf("sherpa: first frame %.1f ms after launch\n", since_launch());
+            std::fflush(stdout);
+        });
+    }
+    if (!cl.select.isEmpty())
+        QObject::connect(&window, &MainWindow::sceneLoaded, &window, [&window, cl] {
+            if (!window.selectNodeNamed(cl.select))
+                std::fprintf(stderr, "sherpa: no node '%s'\n", qPrintable(cl.select));
+        });
+    if (!cl.screenshot.isEmpty()) {
+        auto failed = std::make_shared<bool>(false);
+        const auto shoot = [&window, cl, failed] {
+            // Let docks lay out and the viewport present its frame before grabbing.
+            QTimer::singleShot(400, &window, [&window, cl, failed] {
+                const QImage image = window.screenshot();
+                const bool saved = image.save(cl.screenshot, "PNG");
+                std::fprintf(stderr, "sherpa: screenshot %s (%dx%d) %s\n",
+                             qPrintable(cl.screenshot), image.width(), image.height(),
+                             saved ? "saved" : "NOT saved");
+                if (cl.quit) QCoreApplication::exit(!saved ? 3 : *failed ? 1 : 0);
+            });
+        };
+        QObject::connect(&window, &MainWindow::sceneLoaded, &window, shoot,
+                         Qt::SingleShotConnection);
+        QObject::connect(
+            &window, &MainWindow::loadFailed, &window,
+            [shoot, failed] {
+                *failed = true;
+                shoot();
+            },
+            Qt::SingleShotConnection);
+    }
+    window.openScene(cl.scene.isEmpty() ? QStringLiteral("builtin:default") : cl.scene);
+}
+
+} // namespace sherpa::editor

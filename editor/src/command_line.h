@@ -1,0 +1,30 @@
+#pragma once
+// sherpa [SCENE] [--view NAME] [--select NODE] [--screenshot OUT.png [--quit]] [--language CODE]
+//        [--timing]
+#include <QString>
+#include <QStringList>
+
+namespace sherpa::editor {
+
+class MainWindow;
+
+struct CommandLine {
+    QString scene; // empty: builtin:default
+    QString view;
+    QString select; // node name or index to select once the scene is loaded
+    QString screenshot;
+    QString language;
+    bool quit = false;
+    bool timing = false; // print launch/load/first-frame milliseconds to stdout
+};
+
+// Returns false with `error` set on bad usage (unknown view, --quit without --screenshot...).
+// --help and --version are handled by QCommandLineParser (they exit).
+bool parse_command_line(const QStringList& arguments, CommandLine& out, QString& error);
+
+// Wires the window for the command line: opens the scene, and with --screenshot saves
+// the window once the scene is shown (and quits with --quit: exit code 0, or 1 when the
+// scene failed to load, 3 when the image could not be written).
+void run_command_line(MainWindow& window, const CommandLine& cl, qint64 started_ns);
+
+} // namespace sherpa::editor

@@ -1,0 +1,130 @@
+#include "culling_dock.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QGridLayout>
+#include <QLabel>
+#include <QLineSeries>
+#include <QVBoxLayout>
+#include <QValueAxis>
+
+#include "culling_monitor.h"
+
+namespace sherpa::editor {
+
+CullingDock::CullingDock(const CullingMonitor& monitor, QWidget* parent)
+    : QDockWidget(parent), monitor_(monitor) {
+    setObjectName(QStringLiteral("cullingDock"));
+    auto* body = new QWidget(this);
+    auto* layout = new QVBoxLayout(body);
+    layout->setContentsMargins(2, 2, 2, 2);
+    auto* grid = new QGridLayout;
+    for (int r = 0; r < RowCount; ++r) {
+        names_[r] = new QLabel(body);
+        values_[r] = new QLabel(body);
+        values_[r]->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        values_[r]->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        // Two columns of label/value pairs keep the dock short.
+        grid->addWidget(names_[r], r % 4, (r / 4) * 2);
+        grid->addWidget(values_[r], r % 4, (r / 4) * 2 + 1);
+    }
+    method_ = new QLabel(body);
+    agreement_ = new QLabel(body);
+    layout->addLayout(grid);
+    layout->addWidget(method_);
+    layout->addWidget(agreement_);
+
+    chart_ = new QChart;
+    visible_series_ = new QLineSeries(chart_);
+    culled_series_ = new QLineSeries(chart_);
+    chart_->addSeries(visible_series_);
+    chart_->addSeries(culled_series_);
+    x_axis_ = new QValueAxis(chart_);
+    y_axis_ = new QValueAxis(chart_);
+    x_axis_->setLabelFormat(QStringLiteral("%d"));
+    y_axis_->setLabelFormat(QStringLiteral("%g"));
+    chart_->addAxis(x_axis_, Qt::AlignBottom);
+    chart_->addAxis(y_axis_, Qt::AlignLeft);
+    for (QLineSeries* s : {visible_series_, culled_series_}) {
+        s->attachAxis(x_axis_);
+        s->attachAxis(y_axis_);
+    }
+    chart_->setMargins(QMargins(2, 2, 2, 2));
+    chart_->legend()->setAlignment(Qt::AlignBottom);
+    chart_view_ = new QChartView(chart_, body);
+    chart_view_->setRenderHint(QPainter::Antialiasing);
+    chart_view_->setMinimumHeight(160);
+    layout->addWidget(chart_view_, 1);
+    setWidget(body);
+    connect(&monitor_, &CullingMonitor::updated, this, &CullingDock::refresh);
+    retranslate();
+}
+
+void CullingDock::retranslate() {
+    setWindowTitle(tr("Culling Statistics"));
+    const QString names[RowCount] = {tr("Total"),           tr("Visible"),    tr("Culled"),
+                                     tr("False positives"), tr("Draw calls"), tr("Triangles"),
+                                     tr("CPU cull ms"),     tr("GPU cull ms")};
+    for (int r = 0; r < RowCount; ++r) names_[r]->setText(names[r]);
+    visible_series_->setName(tr("visible"));
+    culled_series_->setName(tr("culled"));
+    x_axis_->setTitleText(tr("update"));
+    refresh();
+}
+
+QString CullingDock::valueText(int row) const {
+    return row >= 0 && row < RowCount ? values_[row]->text() : QString();
+}
+
+void CullingDock::refresh() {
+    const CullSample* s = monitor_.latest();
+    if (!s) {
+        for (QLabel* v : values_) v->setText(QStringLiteral("—"));
+        method_->clear();
+        agreement_->setText(tr("No scene."));
+        visible_series_->clear();
+        culled_series_->clear();
+        return;
+    }
+    const CullStats& c = s->cpu;
+    values_[Total]->setText(QString::number(c.total));
+    values_[Visible]->setText(QString::number(c.visible));
+    values_[Culled]->setText(QString::number(c.culled));
+    values_[FalsePositives]->setText(c.false_positives < 0 ? QStringLiteral("—")
+                                                           : QString::number(c.false_positives));
+    values_[DrawCalls]->setText(QString::number(c.draw_calls));
+    values_[Triangles]->setText(QString::number(c.triangles));
+    values_[CpuMs]->setText(QString::number(c.cpu_ms, 'f', 3));
+    values_[GpuMs]->setText(s->gpu_ms < 0 ? QStringLiteral("—")
+                                          : QString::number(s->gpu_ms, 'f', 3));
+    const std::string_view m = to_string(c.method), simd = to_string(c.simd);
+    method_->setText(tr("Pass \"%1\": method %2, %3%4")
+                         .arg(QString::fromStdString(c.pass))
+                         .arg(QString::fromUtf8(m.data(), static_cast<qsizetype>(m.size())))
+                         .arg(QString::fromUtf8(simd.data(), static_cast<qsizetype>(simd.size())))
+                         .arg(monitor_.frozen() ? tr(", culling camera frozen") : QString()));
+    if (s->gpu_visible < 0)
+        agreement_->setText(tr("CPU/GPU agreement: GPU culling path not available in this build"));
+    else if (static_cast<std::uint64_t>(s->gpu_visible) == c.visible)
+        agreement_->setText(tr("CPU/GPU agreement: ✔ both keep %1").arg(c.visible));
+    else
+        agreement_->setText(
+            tr("CPU/GPU agreement: ✘ CPU %1, GPU %2").arg(c.visible).arg(s->gpu_visible));
+
+    // Rebuild the series from the ring: at most kHistory points, cheap.
+    const auto& h = monitor_.history();
+    QList<QPointF> visible, culled;
+    double top = 1.0;
+    for (std::size_t i = 0; i < h.size(); ++i) {
+        visible << QPointF(static_cast<double>(i), static_cast<double>(h[i].cpu.visible));
+        culled << QPointF(static_cast<double>(i), static_cast<double>(h[i].cpu.culled));
+        top = std::max(top, static_cast<double>(h[i].cpu.total));
+    }
+    visible_series_->replace(visible);
+    culled_series_->replace(culled);
+    x_axis_->setRange(0, static_cast<double>(CullingMonitor::kHistory));
+    y_axis_->setRange(0, top);
+    y_axis_->applyNiceNumbers(); // whole, readable ticks whatever the instance count
+}
+
+} // namespace sherpa::editor

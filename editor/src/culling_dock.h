@@ -1,0 +1,53 @@
+#pragma once
+// Dock 5: live numbers of the last culling pass and a scrolling history chart.
+#include <QDockWidget>
+
+#include <array>
+
+class QChart;
+class QChartView;
+class QLabel;
+class QLineSeries;
+class QValueAxis;
+
+namespace sherpa::editor {
+
+class CullingMonitor;
+
+class CullingDock : public QDockWidget {
+    Q_OBJECT
+public:
+    explicit CullingDock(const CullingMonitor& monitor, QWidget* parent = nullptr);
+    void retranslate();
+    // The numbers as shown, row by row (for the tests).
+    QString valueText(int row) const;
+    enum Row {
+        Total,
+        Visible,
+        Culled,
+        FalsePositives,
+        DrawCalls,
+        Triangles,
+        CpuMs,
+        GpuMs,
+        RowCount
+    };
+
+private:
+    void refresh();
+
+    const CullingMonitor& monitor_;
+    std::array<QLabel*, RowCount> names_{};
+    std::array<QLabel*, RowCount> values_{};
+    QLabel* agreement_;
+    QLabel* method_;
+    QChart* chart_;
+    QChartView* chart_view_;
+    QLineSeries* visible_series_;
+    QLineSeries* culled_series_;
+    QValueAxis* x_axis_;
+    QValueAxis* y_axis_;
+    std::uint64_t samples_seen_ = 0;
+};
+
+} // namespace sherpa::editor

@@ -1,0 +1,59 @@
+#pragma once
+// Runs the engine's CPU culling pass for the viewport camera whenever it moves and
+// keeps a history for the culling dock's chart. "Freeze" keeps culling with the
+// camera as it was, so the user can fly outside and look at what was culled.
+#include <QObject>
+
+#include <optional>
+
+#include <sherpa/scene/culling_passes.h>
+
+#include "editor_context.h"
+
+namespace sherpa::editor {
+
+struct CullSample {
+    CullStats cpu;
+    // The GPU culling path reports here when the renderer offers one; -1: not run.
+    double gpu_ms = -1.0;
+    std::int64_t gpu_visible = -1;
+};
+
+class CullingMonitor : public QObject {
+    Q_OBJECT
+public:
+    static constexpr std::size_t kHistory = 240;
+    explicit CullingMonitor(const EditorContext& context, QObject* parent = nullptr);
+
+    void setMethod(CullMethod method);
+    CullMethod method() const { return options_.method; }
+    void setFrozen(bool frozen);
+    bool frozen() const { return frozen_.has_value(); }
+    // The camera the culling runs for (the frozen one while frozen).
+    const CameraSpec& cullingCamera() const { return frozen_ ? *frozen_ : camera_; }
+    // Culls for `camera` now (the viewport calls this when the camera moves).
+    void update(const CameraSpec& camera);
+
+    const RingHistory<CullSample>& history() const { return history_; }
+    const CullSample* latest() const {
+        return history_.size() ? &history_[history_.size() - 1] : nullptr;
+    }
+    // Per-instance result of the last pass (1 visible), for box colouring.
+    const std::vector<std::uint8_t>& visible() const { return visible_; }
+
+Q_SIGNALS:
+    void updated();
+
+private:
+    void rerun();
+
+    const EditorContext& context_;
+    CullInput input_; // boxes and draw groups, prepared once per scene
+    CullOptions options_;
+    CameraSpec camera_;
+    std::optional<CameraSpec> frozen_;
+    RingHistory<CullSample> history_{kHistory};
+    std::vector<std::uint8_t> visible_;
+};
+
+} // namespace sherpa::editor

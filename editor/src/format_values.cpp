@@ -1,0 +1,88 @@
+#include "format_values.h"
+
+#include <QStringList>
+
+namespace sherpa::editor {
+
+QString Format::number(double v) {
+    return QString::number(v, 'g', 9);
+}
+
+QString Format::vec(const float* v, int n) {
+    QStringList parts;
+    for (int i = 0; i < n; ++i) parts << QString::number(static_cast<double>(v[i]), 'g', 6);
+    return QStringLiteral("(") + parts.join(QStringLiteral(", ")) + QStringLiteral(")");
+}
+
+QString Format::bytes(std::uint64_t n) {
+    if (n < 1024) return tr("%1 B").arg(n);
+    if (n < 1024 * 1024) return tr("%1 KiB").arg(static_cast<double>(n) / 1024.0, 0, 'f', 1);
+    return tr("%1 MiB").arg(static_cast<double>(n) / (1024.0 * 1024.0), 0, 'f', 2);
+}
+
+QString Format::componentType(std::int32_t t) {
+    switch (t) {
+    case 5120:
+        return QStringLiteral("BYTE");
+    case 5121:
+        return QStringLiteral("UNSIGNED_BYTE");
+    case 5122:
+        return QStringLiteral("SHORT");
+    case 5123:
+        return QStringLiteral("UNSIGNED_SHORT");
+    case 5125:
+        return QStringLiteral("UNSIGNED_INT");
+    case 5126:
+        return QStringLiteral("FLOAT");
+    default:
+        return tr("unknown (%1)").arg(t);
+    }
+}
+
+QString Format::provenance(Provenance p) {
+    switch (p) {
+    case Provenance::Authored:
+        return tr("authored");
+    case Provenance::Generated:
+        return tr("generated");
+    case Provenance::Defaulted:
+        return tr("defaulted");
+    }
+    return {};
+}
+
+QString Format::attribute(VertexAttribute a) {
+    const std::string_view n = gltf_name(a); // glTF semantics are names, not prose
+    return QString::fromUtf8(n.data(), static_cast<qsizetype>(n.size()));
+}
+
+QString Format::alphaMode(AlphaMode m) {
+    switch (m) {
+    case AlphaMode::Opaque:
+        return QStringLiteral("OPAQUE");
+    case AlphaMode::Mask:
+        return QStringLiteral("MASK");
+    case AlphaMode::Blend:
+        return QStringLiteral("BLEND");
+    }
+    return {};
+}
+
+QString Format::roles(std::uint8_t r) {
+    QStringList parts;
+    if (r & kRoleColor) parts << tr("colour (sRGB)");
+    if (r & kRoleLinear) parts << tr("linear data");
+    if (r & kRoleNormal) parts << tr("normal map");
+    return parts.isEmpty() ? tr("unused") : parts.join(QStringLiteral(", "));
+}
+
+QString Format::primitiveMode(PrimitiveMode m) {
+    const std::string_view n = to_string(m);
+    return QString::fromUtf8(n.data(), static_cast<qsizetype>(n.size()));
+}
+
+QString Format::yesNo(bool b) {
+    return b ? tr("yes") : tr("no");
+}
+
+} // namespace sherpa::editor

@@ -1,0 +1,32 @@
+#pragma once
+// Formatting of engine values for display: numbers at full float precision,
+// glTF enums by name, byte sizes. Every user-visible word goes through tr().
+#include <QCoreApplication>
+#include <QString>
+
+#include <glm/glm.hpp>
+
+#include <sherpa/scene/scene.h>
+
+namespace sherpa::editor {
+
+class Format {
+    Q_DECLARE_TR_FUNCTIONS(Format)
+public:
+    // Shortest text that reads back as the same float (what the GPU sees, not rounded).
+    static QString number(double v);
+    static QString vec(const float* v, int n);
+    static QString vec(glm::vec2 v) { return vec(&v.x, 2); }
+    static QString vec(glm::vec3 v) { return vec(&v.x, 3); }
+    static QString vec(glm::vec4 v) { return vec(&v.x, 4); }
+    static QString bytes(std::uint64_t n);
+    static QString componentType(std::int32_t gltf_component_type);
+    static QString provenance(Provenance p);
+    static QString attribute(VertexAttribute a);
+    static QString alphaMode(AlphaMode m);
+    static QString roles(std::uint8_t roles);
+    static QString primitiveMode(PrimitiveMode m);
+    static QString yesNo(bool b);
+};
+
+} // namespace sherpa::editor

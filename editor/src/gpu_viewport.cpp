@@ -1,0 +1,174 @@
+// The engine's headers come first: Qt's QVulkanInstance defines VK_NO_PROTOTYPES,
+// which would hide the Vulkan prototypes the engine's handle types are built on.
+#include <sherpa/gpu/commands.h>
+#include <sherpa/gpu/context.h>
+#include <sherpa/gpu/presenter.h>
+#include <sherpa/gpu/renderer.h>
+
+#include "gpu_viewport.h"
+
+#include <QVulkanInstance>
+#include <cstring>
+
+namespace sherpa::editor {
+
+struct GpuViewport::Impl {
+    std::unique_ptr<gpu::Context> context;
+    std::unique_ptr<gpu::Renderer> renderer;
+    std::unique_ptr<gpu::Presenter> presenter;
+    std::uint64_t surface = 0;
+    std::uint32_t width = 0, height = 0;
+    const Scene* scene = nullptr;
+    bool all_streams = false;
+};
+
+GpuViewport::GpuViewport(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+
+GpuViewport::~GpuViewport() {
+    if (!impl_) return;
+    impl_->presenter.reset();
+    impl_->renderer.reset();
+    impl_->context.reset();
+}
+
+void GpuViewport::configureInstance(QVulkanInstance& instance) {
+    const bool validation = gpu::ContextOptions::default_validation();
+    QByteArrayList extensions;
+    for (const std::string& e : gpu::Context::required_instance_extensions(validation, true))
+        extensions << QByteArray::fromStdString(e);
+    instance.setApiVersion(QVersionNumber(1, 3));
+    instance.setExtensions(extensions); // Qt adds the platform's surface extension itself
+    if (validation) instance.setLayers({QByteArrayLiteral("VK_LAYER_KHRONOS_validation")});
+}
+
+std::unique_ptr<GpuViewport> GpuViewport::create(QVulkanInstance& instance, QString& error) {
+    try {
+        auto impl = std::make_unique<Impl>();
+        gpu::ContextOptions options;
+        options.external_instance = instance.vkInstance();
+        options.presentation = true;
+        impl->context = std::make_unique<gpu::Context>(options);
+        impl->renderer = std::make_unique<gpu::Renderer>(*impl->context);
+        return std::unique_ptr<GpuViewport>(new GpuViewport(std::move(impl)));
+    } catch (const std::exception& e) {
+        error = QString::fromUtf8(e.what());
+        return nullptr;
+    }
+}
+
+QString GpuViewport::deviceName() const {
+    const gpu::DeviceInfo& info = impl_->context->info();
+    return QStringLiteral("%1 (Vulkan %2.%3.%4)")
+        .arg(QString::fromStdString(info.name))
+        .arg(VK_API_VERSION_MAJOR(info.api_version))
+        .arg(VK_API_VERSION_MINOR(info.api_version))
+        .arg(VK_API_VERSION_PATCH(info.api_version));
+}
+
+void GpuViewport::setScene(const Scene* scene) {
+    impl_->scene = scene;
+    if (scene)
+        impl_->renderer->load(*scene, impl_->all_streams ? gpu::StreamPolicy::AllPresent
+                                                         : gpu::StreamPolicy::UsedByMaterials);
+    else
+        impl_->renderer->unload();
+}
+
+void GpuViewport::releaseSurface() {
+    impl_->presenter.reset();
+    impl_->surface = 0;
+}
+
+bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame) {
+    if (!surface || frame.width == 0 || frame.height == 0) return false;
+    gpu::RenderSettings settings;
+    settings.width = frame.width;
+    settings.height = frame.height;
+    if (auto v = gpu::parse_debug_view(frame.view.toStdString())) settings.view = *v;
+    for (const QString& o : frame.overlays)
+        if (auto bit = gpu::parse_overlay(o.toStdString())) settings.overlays |= *bit;
+    settings.camera.kind = gpu::CameraSpec::Kind::Explicit;
+    settings.camera.eye = frame.camera.eye;
+    settings.camera.target = frame.camera.target;
+    settings.camera.up = frame.camera.up;
+    settings.camera.fov_degrees = frame.camera.fov_y_degrees;
+    settings.camera.near_plane = frame.camera.near_plane;
+    settings.camera.far_plane = frame.camera.far_plane;
+    // Views of streams the materials do not read need every stream on the GPU.
+    const bool all = gpu::needs_all_streams(settings);
+    if (all != impl_->all_streams) {
+        impl_->all_streams = all;
+        if (impl_->scene) setScene(impl_->scene);
+    }
+    if (!impl_->presenter || impl_->surface != surface) {
+        impl_->presenter.reset();
+        impl_->presenter = std::make_unique<gpu::Presenter>(
+            *impl_->renderer, reinterpret_cast<VkSurfaceKHR>(surface), frame.width, frame.height);
+        impl_->surface = surface;
+        impl_->width = frame.width;
+        impl_->height = frame.height;
+    } else if (frame.width != impl_->width || frame.height != impl_->height) {
+        impl_->presenter->resize(frame.width, frame.height);
+        impl_->width = frame.width;
+        impl_->height = frame.height;
+    }
+    const bool shown = impl_->presenter->present_frame(settings);
+    impl_->renderer->resources().collect_garbage();
+    return shown;
+}
+
+std::optional<GpuMaterialReadback> GpuViewport::readMaterial(int material) {
+    const gpu::GpuScene* scene = impl_->renderer->scene();
+    if (!scene || !impl_->scene || material < 0 ||
+        static_cast<std::size_t>(material) >= impl_->scene->materials.size())
+        return std::nullopt;
+    gpu::ResourceManager& resources = impl_->renderer->resources();
+    constexpr VkDeviceSize kSize = sizeof(GPUMaterialData);
+    gpu::BufferHandle staging =
+        resources.create_buffer({kSize, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                 gpu::MemoryUsage::Readback, "editor material readback"});
+    // One copy out of the device-local material array, waited on: a dock refresh, not a frame.
+    gpu::CommandRecorder recorder(*impl_->context);
+    const VkCommandBuffer cmd = recorder.begin();
+    const VkBufferCopy region{static_cast<VkDeviceSize>(material) * kSize, 0, kSize};
+    vkCmdCopyBuffer(cmd, scene->materials_buffer(), resources.get(staging).buffer.get(), 1,
+                    &region);
+    resources.wait_for(recorder.submit(resources));
+    const gpu::Buffer& readback = resources.get(staging);
+    // Readback memory may be cached without coherence: make the GPU's writes visible.
+    const VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, nullptr,
+                                    readback.memory.get(), 0, VK_WHOLE_SIZE};
+    vkInvalidateMappedMemoryRanges(impl_->context->device(), 1, &range);
+    GpuMaterialReadback out;
+    std::memcpy(&out.record, readback.mapped, kSize);
+    resources.destroy(staging);
+
+    // Every (texture, colour space) slot the scene registered, inverted.
+    for (std::size_t t = 0; t < impl_->scene->textures.size(); ++t)
+        for (bool srgb : {true, false}) {
+            const std::uint32_t slot =
+                scene->textures().slot(static_cast<std::int32_t>(t), srgb, kTextureSentinel);
+            if (slot == kTextureSentinel) continue;
+            if (slot >= out.bindless_to_texture.size())
+                out.bindless_to_texture.resize(slot + 1, -1);
+            out.bindless_to_texture[slot] = static_cast<int>(t);
+        }
+    return out;
+}
+
+std::int64_t GpuViewport::objectCount() const {
+    // Settle first: objects retired by earlier frames are freed once the GPU is idle.
+    impl_->renderer->resources().flush();
+    return static_cast<std::int64_t>(impl_->renderer->resources().counts().total());
+}
+
+} // namespace sherpa::editor
+
+namespace sherpa::editor {
+
+std::uint64_t GpuViewport::textureBytes() const {
+    const gpu::GpuScene* scene = impl_->renderer->scene();
+    return scene ? scene->textures().gpu_bytes() : 0;
+}
+
+} // namespace sherpa::editor

@@ -1,0 +1,42 @@
+// GpuViewport for builds without the engine renderer (engine/gpu not yet merged):
+// creation fails with a clear message and the viewport stays empty. Nothing here
+// draws; it only lets the rest of the editor build and run.
+#include "gpu_viewport.h"
+
+#include <QVulkanInstance>
+
+namespace sherpa::editor {
+
+struct GpuViewport::Impl {};
+
+GpuViewport::GpuViewport(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+GpuViewport::~GpuViewport() = default;
+
+void GpuViewport::configureInstance(QVulkanInstance& instance) {
+    instance.setApiVersion(QVersionNumber(1, 3));
+}
+
+std::unique_ptr<GpuViewport> GpuViewport::create(QVulkanInstance&, QString& error) {
+    error = QStringLiteral("this build has no renderer (engine/gpu)");
+    return nullptr;
+}
+
+QString GpuViewport::deviceName() const {
+    return {};
+}
+void GpuViewport::setScene(const Scene*) {}
+bool GpuViewport::present(std::uint64_t, const ViewportFrame&) {
+    return false;
+}
+void GpuViewport::releaseSurface() {}
+std::optional<GpuMaterialReadback> GpuViewport::readMaterial(int) {
+    return std::nullopt;
+}
+std::int64_t GpuViewport::objectCount() const {
+    return -1;
+}
+std::uint64_t GpuViewport::textureBytes() const {
+    return 0;
+}
+
+} // namespace sherpa::editor

@@ -1,0 +1,423 @@
+#include "main_window.h"
+#include "main_window_actions.h"
+
+#include <QCloseEvent>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QPainter>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScreen>
+#include <QStatusBar>
+#include <QTimer>
+#include <QVulkanInstance>
+
+#include "culling_dock.h"
+#include "culling_monitor.h"
+#include "gpu_viewport.h"
+#include "log_dock.h"
+#include "material_dock.h"
+#include "mesh_dock.h"
+#include "picking.h"
+#include "scene_tree_dock.h"
+#include "texture_dock.h"
+#include "view_catalog.h"
+#include "viewport_window.h"
+
+namespace sherpa::editor {
+
+namespace {
+bool is_scene_file(const QString& path) {
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    return suffix == QLatin1String("gltf") || suffix == QLatin1String("glb");
+}
+} // namespace
+
+MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent)
+    : QMainWindow(parent), vulkan_(vulkan) {
+    setObjectName(QStringLiteral("sherpaMainWindow"));
+    setWindowIcon(QIcon(QStringLiteral(":/sherpa.svg")));
+    setAcceptDrops(true);
+    setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
+    culling_ = new CullingMonitor(context_, this);
+
+    viewport_ = new ViewportWindow(vulkan_);
+    viewport_container_ = QWidget::createWindowContainer(viewport_, this);
+    viewport_container_->setObjectName(QStringLiteral("viewport"));
+    viewport_container_->setMinimumSize(320, 240);
+    viewport_container_->setFocusPolicy(Qt::StrongFocus);
+    setCentralWidget(viewport_container_);
+
+    progress_ = new QProgressBar(this);
+    progress_->setMaximumWidth(220);
+    progress_->hide();
+    cancel_ = new QPushButton(this);
+    cancel_->hide();
+    frame_label_ = new QLabel(this);
+    scene_label_ = new QLabel(this);
+    statusBar()->addWidget(scene_label_, 1);
+    statusBar()->addPermanentWidget(progress_);
+    statusBar()->addPermanentWidget(cancel_);
+    statusBar()->addPermanentWidget(frame_label_);
+
+    createDocks();
+    // After the constructor returns, so that a scene load started right away (command
+    // line) runs on the pool while the device and pipelines are created here.
+    QTimer::singleShot(0, this, &MainWindow::createRenderer);
+    createActions();
+    createMenus();
+    connectActions();
+
+    resize(1600, 1000);
+    restoreGeometry(settings_.geometry());
+    restoreState(settings_.windowState());
+    setDebugView(settings_.lastView());
+    QString language = settings_.language();
+    if (language.isEmpty()) language = Translations::systemDefault();
+    setLanguage(language);
+    retranslate();
+    updateStatus();
+}
+
+MainWindow::~MainWindow() {
+    // The swapchain must go before the window's surface does.
+    gpu_.reset();
+}
+
+void MainWindow::createRenderer() {
+    if (!vulkan_) {
+        log_->append(LogDock::Level::Error, tr("No Vulkan instance: the viewport cannot render."));
+        return;
+    }
+    QElapsedTimer clock;
+    clock.start();
+    QString error;
+    gpu_ = GpuViewport::create(*vulkan_, error);
+    if (!gpu_) {
+        log_->append(LogDock::Level::Error, tr("The renderer could not start: %1").arg(error));
+        return;
+    }
+    log_->append(LogDock::Level::Info,
+                 tr("Rendering on %1 (renderer ready in %2 ms).")
+                     .arg(gpu_->deviceName())
+                     .arg(static_cast<double>(clock.nsecsElapsed()) / 1e6, 0, 'f', 1));
+    viewport_->setFrameCallback([this] { return renderFrame(); });
+    material_->setReadback([this](int material) { return gpu_->readMaterial(material); });
+    gpuObjectCount = [this] { return gpu_->objectCount(); };
+    connect(&context_, &EditorContext::sceneChanged, this, &MainWindow::uploadScene);
+    if (context_.scene()) uploadScene(); // a scene that arrived before the renderer
+    Q_EMIT rendererReady();
+}
+
+void MainWindow::uploadScene() {
+    try {
+        gpu_->setScene(context_.scene());
+        textures_->setGpuBytes(static_cast<std::int64_t>(gpu_->textureBytes()));
+    } catch (const std::exception& e) {
+        log_->append(LogDock::Level::Error,
+                     tr("GPU upload failed: %1").arg(QString::fromUtf8(e.what())));
+    }
+    viewport_->scheduleFrame();
+}
+
+bool MainWindow::renderFrame() {
+    if (!gpu_ || gpu_failed_) return false;
+    ViewportFrame frame;
+    const QSize pixels = viewport_->pixelSize();
+    frame.width = static_cast<std::uint32_t>(pixels.width());
+    frame.height = static_cast<std::uint32_t>(pixels.height());
+    frame.camera = viewport_->camera().spec();
+    frame.view = view_;
+    frame.overlays = overlays_;
+    try {
+        const bool shown = gpu_->present(viewport_->vulkanSurface(), frame);
+        // Skipped because the swapchain was out of date and has just been recreated:
+        // draw again at the new size, or the last size change would never show.
+        if (!shown) viewport_->scheduleFrame();
+        return shown;
+    } catch (const std::exception& e) {
+        gpu_failed_ = true;
+        log_->append(LogDock::Level::Error,
+                     tr("Rendering stopped: %1").arg(QString::fromUtf8(e.what())));
+        return false;
+    }
+}
+
+void MainWindow::createDocks() {
+    scene_tree_ = new SceneTreeDock(context_, this);
+    mesh_ = new MeshDock(context_, this);
+    material_ = new MaterialDock(context_, this);
+    textures_ = new TextureDock(context_, this);
+    culling_dock_ = new CullingDock(*culling_, this);
+    log_ = new LogDock(this);
+    addDockWidget(Qt::LeftDockWidgetArea, scene_tree_);
+    addDockWidget(Qt::LeftDockWidgetArea, culling_dock_);
+    addDockWidget(Qt::RightDockWidgetArea, mesh_);
+    addDockWidget(Qt::RightDockWidgetArea, material_);
+    addDockWidget(Qt::BottomDockWidgetArea, textures_);
+    addDockWidget(Qt::BottomDockWidgetArea, log_);
+    tabifyDockWidget(textures_, log_);
+    textures_->raise();
+    resizeDocks({scene_tree_, mesh_}, {340, 520}, Qt::Horizontal);
+    resizeDocks({textures_}, {230}, Qt::Vertical);
+}
+
+void MainWindow::connectActions() {
+    // Actions out of the docks become context changes here, and only here.
+    connect(scene_tree_, &SceneTreeDock::selectNodeRequested, &context_,
+            &EditorContext::selectNode);
+    connect(scene_tree_, &SceneTreeDock::selectMeshRequested, &context_,
+            &EditorContext::selectMesh);
+    connect(scene_tree_, &SceneTreeDock::selectMaterialRequested, &context_,
+            &EditorContext::selectMaterial);
+    connect(scene_tree_, &SceneTreeDock::visibilityRequested, &context_,
+            &EditorContext::setNodeVisible);
+    connect(scene_tree_, &SceneTreeDock::jumpToCameraRequested, this, &MainWindow::jumpToCamera);
+    connect(mesh_, &MeshDock::selectVertexRequested, &context_, &EditorContext::selectVertex);
+    connect(mesh_, &MeshDock::selectTriangleRequested, &context_, &EditorContext::selectTriangle);
+    connect(material_, &MaterialDock::selectTextureRequested, this, [this](int texture) {
+        context_.selectTexture(texture);
+        textures_->show();
+        textures_->raise();
+    });
+    connect(textures_, &TextureDock::selectTextureRequested, &context_,
+            &EditorContext::selectTexture);
+
+    connect(&loader_, &SceneLoadJob::loaded, this, &MainWindow::onLoaded);
+    connect(&loader_, &SceneLoadJob::failed, this, &MainWindow::onLoadFailed);
+    connect(&loader_, &SceneLoadJob::progress, this, &MainWindow::onProgress);
+    connect(&loader_, &SceneLoadJob::canceled, this, [this](const QString& spec) {
+        log_->append(LogDock::Level::Info,
+                     tr("Loading %1 cancelled; the result is discarded.").arg(spec));
+        onProgress(LoadStage::Idle, 0, 0);
+        Q_EMIT loadCanceled(spec);
+    });
+    connect(cancel_, &QPushButton::clicked, this, &MainWindow::cancelLoad);
+
+    connect(viewport_, &ViewportWindow::cameraChanged, this, &MainWindow::onCameraChanged);
+    connect(viewport_, &ViewportWindow::clicked, this, [this](QPointF ndc) { pickAt(ndc); });
+    connect(viewport_, &ViewportWindow::frameAllRequested, this, [this] {
+        if (context_.scene()) viewport_->camera().frame(context_.scene()->bounds);
+        onCameraChanged();
+    });
+    connect(viewport_, &ViewportWindow::frameSelectionRequested, this, &MainWindow::frameSelection);
+    connect(viewport_, &ViewportWindow::frameRendered, this, [this](double ms) {
+        frame_label_->setText(tr("frame %1 ms").arg(ms, 0, 'f', 2));
+        if (!first_frame_seen_) {
+            first_frame_seen_ = true;
+            Q_EMIT firstFrame();
+        }
+    });
+    connect(&context_, &EditorContext::selectionChanged, viewport_, &ViewportWindow::scheduleFrame);
+    connect(&context_, &EditorContext::visibilityChanged, viewport_,
+            &ViewportWindow::scheduleFrame);
+}
+
+void MainWindow::openScene(const QString& spec) {
+    log_->append(LogDock::Level::Info, tr("Loading %1…").arg(spec));
+    loader_.start(spec);
+}
+
+void MainWindow::reloadScene() {
+    if (!context_.sceneSpec().isEmpty()) openScene(context_.sceneSpec());
+}
+
+void MainWindow::closeScene() {
+    loader_.cancel();
+    context_.clearScene();
+    updateStatus();
+    viewport_->scheduleFrame();
+}
+
+void MainWindow::cancelLoad() {
+    loader_.cancel();
+}
+
+void MainWindow::onProgress(LoadStage stage, int done, int total) {
+    const bool busy = stage != LoadStage::Idle;
+    progress_->setVisible(busy);
+    cancel_->setVisible(busy);
+    if (stage == LoadStage::Loading) {
+        progress_->setRange(0, 0); // the engine reports no fraction for parse/geometry/tangents
+        progress_->setFormat(tr("parse, geometry, tangents…"));
+    } else if (stage == LoadStage::Textures) {
+        progress_->setRange(0, std::max(total, 1));
+        progress_->setValue(done);
+        progress_->setFormat(tr("textures %1/%2").arg(done).arg(total));
+    }
+}
+
+void MainWindow::onLoaded(const QString& spec, const LoadOutcome& outcome, double ms) {
+    // The swap: one assignment, so the old scene is shown until this very moment.
+    context_.setScene(spec, outcome.scene, outcome.extras);
+    settings_.addRecentFile(spec);
+    for (const std::string& w : outcome.scene->warnings)
+        log_->append(LogDock::Level::Warning, QString::fromStdString(w));
+    log_->append(LogDock::Level::Info, tr("Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms).")
+                                           .arg(spec)
+                                           .arg(ms, 0, 'f', 1)
+                                           .arg(outcome.extras->load_ms, 0, 'f', 1)
+                                           .arg(outcome.extras->thumbnails_ms, 0, 'f', 1));
+    viewport_->camera().frame(outcome.scene->bounds);
+    viewport_->setAutoFrame(true);
+    onCameraChanged();
+    updateStatus();
+    Q_EMIT sceneLoaded(spec, ms);
+}
+
+void MainWindow::onLoadFailed(const QString& spec, const QString& error) {
+    log_->append(LogDock::Level::Error, error);
+    statusBar()->showMessage(tr("Could not load %1; the current scene is kept.").arg(spec), 8000);
+    auto* box =
+        new QMessageBox(QMessageBox::Warning, tr("Load failed"),
+                        tr("Could not load %1:\n%2\n\nThe current scene is kept.").arg(spec, error),
+                        QMessageBox::Ok, this);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open(); // not modal: the editor stays usable (and scriptable)
+    Q_EMIT loadFailed(spec, error);
+}
+
+void MainWindow::onCameraChanged() {
+    culling_->update(viewport_->camera().spec());
+    viewport_->scheduleFrame();
+}
+
+int MainWindow::pickAt(QPointF ndc) {
+    const Scene* scene = context_.scene();
+    if (!scene) return -1;
+    glm::vec3 origin, direction;
+    viewport_->camera().ray({static_cast<float>(ndc.x()), static_cast<float>(ndc.y())}, origin,
+                            direction);
+    const PickHit hit = pick(*scene, origin, direction,
+                             [this](std::size_t i) { return context_.instanceVisible(i); });
+    if (!hit) {
+        context_.setSelection({});
+        return -1;
+    }
+    const MeshInstance& inst = scene->instances[static_cast<std::size_t>(hit.instance)];
+    context_.selectMesh(static_cast<int>(inst.mesh_id), static_cast<int>(inst.node_id));
+    context_.selectTriangle(static_cast<int>(hit.triangle));
+    return static_cast<int>(hit.instance);
+}
+
+bool MainWindow::selectNodeNamed(const QString& name_or_index) {
+    const Scene* scene = context_.scene();
+    if (!scene) return false;
+    bool is_index = false;
+    const int index = name_or_index.toInt(&is_index);
+    for (std::size_t n = 0; n < scene->nodes.size(); ++n)
+        if (is_index ? static_cast<int>(n) == index
+                     : QString::fromStdString(scene->nodes[n].name) == name_or_index) {
+            context_.selectNode(static_cast<int>(n));
+            return true;
+        }
+    return false;
+}
+
+void MainWindow::frameSelection() {
+    const Scene* scene = context_.scene();
+    const int node = context_.selection().node;
+    if (!scene || node < 0) return;
+    Aabb box;
+    for (const MeshInstance& inst : scene->instances)
+        if (static_cast<int>(inst.node_id) == node) box.expand(inst.world_bounds);
+    if (!box.valid()) box.expand(glm::vec3(scene->node_world[static_cast<std::size_t>(node)][3]));
+    viewport_->camera().frame(box);
+    onCameraChanged();
+}
+
+void MainWindow::jumpToCamera(int node) {
+    const Scene* scene = context_.scene();
+    if (!scene) return;
+    viewport_->setAutoFrame(false);
+    for (std::size_t i = 0; i < scene->placed_cameras.size(); ++i)
+        if (static_cast<int>(scene->placed_cameras[i].node) == node) {
+            viewport_->camera().jumpTo(*scene, i);
+            onCameraChanged();
+            return;
+        }
+}
+
+bool MainWindow::setDebugView(const QString& name) {
+    if (!ViewCatalog::isView(name)) return false;
+    view_ = name;
+    settings_.setLastView(name);
+    retranslate(); // checks the matching menu entry
+    viewport_->scheduleFrame();
+    return true;
+}
+
+bool MainWindow::setLanguage(const QString& code) {
+    if (!translations_.install(code)) return false;
+    settings_.setLanguage(code);
+    // Qt posts LanguageChange (changeEvent retranslates again then); doing it now makes
+    // the switch visible in the same event-loop turn.
+    retranslate();
+    return true;
+}
+
+void MainWindow::updateStatus() {
+    const Scene* s = context_.scene();
+    if (!s) {
+        scene_label_->setText(
+            tr("No scene. Open a glTF file or a built-in scene from the File menu."));
+        setWindowTitle(tr("Sherpa"));
+        return;
+    }
+    scene_label_->setText(tr("%1: %2 nodes, %3 primitives, %4 instances, %5 materials, %6 textures")
+                              .arg(context_.sceneSpec())
+                              .arg(s->nodes.size())
+                              .arg(s->meshes.size())
+                              .arg(s->instances.size())
+                              .arg(s->materials.size())
+                              .arg(s->textures.size()));
+    setWindowTitle(tr("%1 — Sherpa").arg(QFileInfo(context_.sceneSpec()).fileName()));
+}
+
+QImage MainWindow::screenshot() {
+    // Widgets paint into the pixmap; the native viewport does not, so its frame is
+    // composited from the renderer's readback when there is one.
+    QImage image = grab().toImage();
+    if (gpu_ && viewport_->isExposed()) {
+        // The X server holds the presented frame: read it back like any window.
+        const QPixmap frame = viewport_->screen()->grabWindow(viewport_->winId());
+        QPainter painter(&image);
+        painter.drawPixmap(viewport_container_->mapTo(this, QPoint(0, 0)), frame);
+    }
+    return image;
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+    settings_.saveLayout(saveGeometry(), saveState());
+    loader_.cancel();
+    QMainWindow::closeEvent(e);
+}
+
+void MainWindow::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::LanguageChange) retranslate();
+    QMainWindow::changeEvent(e);
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
+    for (const QUrl& url : e->mimeData()->urls())
+        if (url.isLocalFile() && is_scene_file(url.toLocalFile())) {
+            e->acceptProposedAction();
+            return;
+        }
+}
+
+void MainWindow::dropEvent(QDropEvent* e) {
+    for (const QUrl& url : e->mimeData()->urls())
+        if (url.isLocalFile() && is_scene_file(url.toLocalFile())) {
+            openScene(url.toLocalFile());
+            e->acceptProposedAction();
+            return;
+        }
+}
+
+} // namespace sherpa::editor

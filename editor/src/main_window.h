@@ -1,0 +1,134 @@
+#pragma once
+// The editor window: the Vulkan viewport in the centre, the five inspection docks
+// and the log around it, menus and toolbar, scene loading off the UI thread.
+// It owns the one mutable EditorContext and turns the docks' actions into changes.
+#include <QMainWindow>
+#include <QPointer>
+
+#include <functional>
+
+#include "editor_context.h"
+#include "editor_settings.h"
+#include "scene_load_job.h"
+#include "translations.h"
+
+class QActionGroup;
+class QLabel;
+class QMenu;
+class QProgressBar;
+class QPushButton;
+class QToolBar;
+class QVulkanInstance;
+
+namespace sherpa::editor {
+
+class CullingDock;
+class GpuViewport;
+class CullingMonitor;
+class LogDock;
+class MaterialDock;
+class MeshDock;
+class SceneTreeDock;
+class TextureDock;
+class ViewportWindow;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    // `vulkan` may be null (no Vulkan): the viewport then stays empty and says why.
+    explicit MainWindow(QVulkanInstance* vulkan, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    const EditorContext& context() const { return context_; }
+    SceneTreeDock* sceneTreeDock() const { return scene_tree_; }
+    MeshDock* meshDock() const { return mesh_; }
+    MaterialDock* materialDock() const { return material_; }
+    TextureDock* textureDock() const { return textures_; }
+    CullingDock* cullingDock() const { return culling_dock_; }
+    LogDock* logDock() const { return log_; }
+    CullingMonitor& cullingMonitor() const { return *culling_; }
+    ViewportWindow* viewport() const { return viewport_; }
+    SceneLoadJob& loader() { return loader_; }
+
+    // Starts loading; the current scene stays until the new one is ready.
+    void openScene(const QString& spec);
+    void reloadScene();
+    void closeScene();
+    void cancelLoad();
+    bool setDebugView(const QString& name);
+    const QString& debugView() const { return view_; }
+    bool setLanguage(const QString& code);
+    const QString& language() const { return translations_.current(); }
+    // The whole window as shown, the viewport's last frame composited in.
+    QImage screenshot();
+    // Selects a node by name (first match) or index; false if there is none.
+    bool selectNodeNamed(const QString& name_or_index);
+    // Selects whatever is under a viewport point (NDC); returns the instance or -1.
+    int pickAt(QPointF ndc);
+    // Test hook: the number of GPU objects the renderer holds (-1 without renderer).
+    std::function<std::int64_t()> gpuObjectCount;
+
+Q_SIGNALS:
+    void sceneLoaded(const QString& spec, double ms);
+    void loadFailed(const QString& spec, const QString& error);
+    void loadCanceled(const QString& spec);
+    void firstFrame();
+    void rendererReady(); // the GPU viewport exists (shortly after construction)
+
+protected:
+    void closeEvent(QCloseEvent* e) override;
+    void changeEvent(QEvent* e) override;
+    void dragEnterEvent(QDragEnterEvent* e) override;
+    void dropEvent(QDropEvent* e) override;
+
+private:
+    // main_window_menus.cpp
+    void createActions();
+    void createMenus();
+    void retranslate();
+    void rebuildRecentMenu();
+    void showAbout();
+    void openFileDialog();
+
+    void createDocks();
+    void createRenderer();
+    void uploadScene();
+    bool renderFrame();
+    void connectActions();
+    void onLoaded(const QString& spec, const LoadOutcome& outcome, double ms);
+    void onLoadFailed(const QString& spec, const QString& error);
+    void onProgress(LoadStage stage, int done, int total);
+    void onCameraChanged();
+    void frameSelection();
+    void jumpToCamera(int node);
+    void updateStatus();
+
+    EditorContext context_;
+    EditorSettings settings_;
+    Translations translations_;
+    SceneLoadJob loader_;
+    CullingMonitor* culling_ = nullptr;
+    QVulkanInstance* vulkan_ = nullptr;
+    std::unique_ptr<GpuViewport> gpu_; // null without a usable Vulkan device
+    bool gpu_failed_ = false;          // a frame threw: stop drawing, say so once
+    ViewportWindow* viewport_ = nullptr;
+    QWidget* viewport_container_ = nullptr;
+    SceneTreeDock* scene_tree_ = nullptr;
+    MeshDock* mesh_ = nullptr;
+    MaterialDock* material_ = nullptr;
+    TextureDock* textures_ = nullptr;
+    CullingDock* culling_dock_ = nullptr;
+    LogDock* log_ = nullptr;
+    QProgressBar* progress_ = nullptr;
+    QPushButton* cancel_ = nullptr;
+    QLabel* frame_label_ = nullptr;
+    QLabel* scene_label_ = nullptr;
+    QString view_ = QStringLiteral("lit");
+    QStringList overlays_;
+    bool first_frame_seen_ = false;
+
+    struct Actions; // every QAction, built in main_window_menus.cpp
+    std::unique_ptr<Actions> a_;
+};
+
+} // namespace sherpa::editor

@@ -1,0 +1,364 @@
+// The menus, toolbar and their texts. Texts are (re)set in retranslate() so a
+// language switch at runtime updates every entry.
+#include "main_window.h"
+#include "main_window_actions.h"
+
+#include <QAbstractItemModel>
+#include <QActionGroup>
+#include <QApplication>
+#include <QDesktopServices>
+#include <QDir>
+#include <QFileDialog>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QToolBar>
+#include <QToolButton>
+#include <QUrl>
+#include <QVulkanFunctions>
+#include <QVulkanInstance>
+
+#include "culling_dock.h"
+#include "culling_monitor.h"
+#include "gpu_viewport.h"
+#include "log_dock.h"
+#include "material_dock.h"
+#include "mesh_dock.h"
+#include "scene_tree_dock.h"
+#include "texture_dock.h"
+#include "view_catalog.h"
+#include "viewport_window.h"
+
+namespace sherpa::editor {
+
+namespace {
+const char* const kBuiltins[] = {"builtin:default", "builtin:grid?n=10", "builtin:grid?n=100",
+                                 "builtin:grid?n=1000"};
+const char* const kQualities[] = {"fast", "balanced", "best"};
+} // namespace
+
+void MainWindow::createActions() {
+    a_ = std::make_unique<Actions>();
+    Actions& a = *a_;
+    a.open = new QAction(this);
+    a.open->setShortcut(QKeySequence::Open);
+    a.reload = new QAction(this);
+    a.reload->setShortcuts({QKeySequence::Refresh, QKeySequence(Qt::CTRL | Qt::Key_R)});
+    a.close = new QAction(this);
+    a.close->setShortcut(QKeySequence::Close);
+    a.quit = new QAction(this);
+    a.quit->setShortcut(QKeySequence::Quit);
+    a.clear_recent = new QAction(this);
+    a.frame_all = new QAction(this);
+    a.frame_selection = new QAction(this);
+    a.fly = new QAction(this);
+    a.fly->setCheckable(true);
+    a.fly->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_G));
+    a.reset_layout = new QAction(this);
+    a.freeze = new QAction(this);
+    a.freeze->setCheckable(true);
+    a.box_colouring = new QAction(this);
+    a.box_colouring->setCheckable(true);
+    a.cpu_path = new QAction(this);
+    a.cpu_path->setCheckable(true);
+    a.cpu_path->setChecked(true);
+    a.gpu_path = new QAction(this);
+    a.gpu_path->setCheckable(true);
+    a.gpu_path->setEnabled(false); // the renderer's GPU culling path is not in this build
+    auto* path_group = new QActionGroup(this);
+    path_group->addAction(a.cpu_path);
+    path_group->addAction(a.gpu_path);
+    a.cache_dir = new QAction(this);
+    a.about = new QAction(this);
+    a.about_qt = new QAction(this);
+
+    a.view_group = new QActionGroup(this);
+    for (const ViewEntry& v : ViewCatalog::views()) {
+        QAction* act = a.view_group->addAction(QString());
+        act->setCheckable(true);
+        act->setData(QString::fromLatin1(v.name));
+        connect(act, &QAction::triggered, this,
+                [this, act] { setDebugView(act->data().toString()); });
+        a.view_actions.push_back(act);
+    }
+    for (const ViewEntry& o : ViewCatalog::overlays()) {
+        auto* act = new QAction(this);
+        act->setCheckable(true);
+        act->setData(QString::fromLatin1(o.name));
+        connect(act, &QAction::toggled, this, [this, act](bool on) {
+            overlays_.removeAll(act->data().toString());
+            if (on) overlays_ << act->data().toString();
+            viewport_->scheduleFrame();
+        });
+        a.overlay_actions.push_back(act);
+    }
+    a.method_group = new QActionGroup(this);
+    for (CullMethod m : {CullMethod::Sphere, CullMethod::PVertex, CullMethod::Exact}) {
+        QAction* act = a.method_group->addAction(QString());
+        act->setCheckable(true);
+        act->setChecked(m == culling_->method());
+        connect(act, &QAction::triggered, this, [this, m] { culling_->setMethod(m); });
+        a.method_actions.push_back(act);
+    }
+    a.language_group = new QActionGroup(this);
+    for (const QString& code : Translations::available()) {
+        QAction* act = a.language_group->addAction(Translations::nativeName(code));
+        act->setCheckable(true);
+        act->setData(code);
+        connect(act, &QAction::triggered, this, [this, code] { setLanguage(code); });
+        a.language_actions.push_back(act);
+    }
+    a.quality_group = new QActionGroup(this);
+    for (const char* q : kQualities) {
+        QAction* act = a.quality_group->addAction(QString());
+        act->setCheckable(true);
+        act->setChecked(settings_.textureQuality() == QLatin1String(q));
+        connect(act, &QAction::triggered, this,
+                [this, q] { settings_.setTextureQuality(QString::fromLatin1(q)); });
+        a.quality_actions.push_back(act);
+    }
+    for (const char* spec : kBuiltins) {
+        auto* act = new QAction(this);
+        connect(act, &QAction::triggered, this,
+                [this, spec] { openScene(QString::fromLatin1(spec)); });
+        a.builtin_actions.push_back(act);
+    }
+
+    connect(a.open, &QAction::triggered, this, &MainWindow::openFileDialog);
+    connect(a.reload, &QAction::triggered, this, &MainWindow::reloadScene);
+    connect(a.close, &QAction::triggered, this, &MainWindow::closeScene);
+    connect(a.quit, &QAction::triggered, this, &QWidget::close);
+    connect(a.clear_recent, &QAction::triggered, this, [this] { settings_.clearRecentFiles(); });
+    connect(a.frame_all, &QAction::triggered, viewport_, &ViewportWindow::frameAllRequested);
+    connect(a.frame_selection, &QAction::triggered, this, &MainWindow::frameSelection);
+    connect(a.fly, &QAction::toggled, viewport_, &ViewportWindow::setFlyMode);
+    connect(a.freeze, &QAction::toggled, culling_, &CullingMonitor::setFrozen);
+    connect(a.box_colouring, &QAction::toggled, viewport_, &ViewportWindow::scheduleFrame);
+    connect(a.reset_layout, &QAction::triggered, this, [this] {
+        for (QDockWidget* d : findChildren<QDockWidget*>()) {
+            d->setFloating(false);
+            d->show();
+        }
+    });
+    connect(a.cache_dir, &QAction::triggered, this, [this] {
+        const QString dir = QFileDialog::getExistingDirectory(this, tr("Texture cache directory"),
+                                                              settings_.cacheDirectory());
+        if (!dir.isEmpty()) settings_.setCacheDirectory(dir);
+    });
+    connect(textures_, &TextureDock::openCacheFolderRequested, this, [this] {
+        QDir().mkpath(settings_.cacheDirectory());
+        QDesktopServices::openUrl(QUrl::fromLocalFile(settings_.cacheDirectory()));
+    });
+    connect(a.about, &QAction::triggered, this, &MainWindow::showAbout);
+    connect(a.about_qt, &QAction::triggered, qApp, &QApplication::aboutQt);
+}
+
+void MainWindow::createMenus() {
+    Actions& a = *a_;
+    QMenuBar* bar = menuBar();
+    a.file = bar->addMenu(QString());
+    a.file->addAction(a.open);
+    a.recent = a.file->addMenu(QString());
+    connect(a.recent, &QMenu::aboutToShow, this, &MainWindow::rebuildRecentMenu);
+    a.builtin = a.file->addMenu(QString());
+    for (QAction* act : a.builtin_actions) a.builtin->addAction(act);
+    a.file->addSeparator();
+    a.file->addAction(a.reload);
+    a.file->addAction(a.close);
+    a.file->addSeparator();
+    a.file->addAction(a.quit);
+
+    a.view = bar->addMenu(QString());
+    a.debug_views = a.view->addMenu(QString());
+    for (QAction* act : a.view_actions) a.debug_views->addAction(act);
+    a.overlays = a.view->addMenu(QString());
+    for (QAction* act : a.overlay_actions) a.overlays->addAction(act);
+    a.view->addSeparator();
+    a.view->addAction(a.frame_all);
+    a.view->addAction(a.frame_selection);
+    a.view->addAction(a.fly);
+    a.cameras = a.view->addMenu(QString());
+    connect(a.cameras, &QMenu::aboutToShow, this, [this] {
+        Actions& acts = *a_;
+        acts.cameras->clear();
+        const Scene* s = context_.scene();
+        if (!s || s->placed_cameras.empty()) {
+            acts.cameras->addAction(tr("(the scene has no cameras)"))->setEnabled(false);
+            return;
+        }
+        for (std::size_t i = 0; i < s->placed_cameras.size(); ++i) {
+            const Camera& c = s->cameras[s->placed_cameras[i].camera];
+            const QString name =
+                c.name.empty() ? tr("Camera %1").arg(i) : QString::fromStdString(c.name);
+            const int node = static_cast<int>(s->placed_cameras[i].node);
+            connect(acts.cameras->addAction(name), &QAction::triggered, this,
+                    [this, node] { jumpToCamera(node); });
+        }
+    });
+    a.view->addSeparator();
+    a.docks = a.view->addMenu(QString());
+    for (QDockWidget* d :
+         {static_cast<QDockWidget*>(scene_tree_), static_cast<QDockWidget*>(mesh_),
+          static_cast<QDockWidget*>(material_), static_cast<QDockWidget*>(textures_),
+          static_cast<QDockWidget*>(culling_dock_), static_cast<QDockWidget*>(log_)})
+        a.docks->addAction(d->toggleViewAction());
+    a.view->addAction(a.reset_layout);
+
+    a.culling = bar->addMenu(QString());
+    a.culling->addAction(a.freeze);
+    a.culling->addAction(a.box_colouring);
+    a.cull_method = a.culling->addMenu(QString());
+    for (QAction* act : a.method_actions) a.cull_method->addAction(act);
+    a.cull_path = a.culling->addMenu(QString());
+    a.cull_path->addAction(a.cpu_path);
+    a.cull_path->addAction(a.gpu_path);
+
+    a.settings = bar->addMenu(QString());
+    a.language = a.settings->addMenu(QString());
+    for (QAction* act : a.language_actions) a.language->addAction(act);
+    a.quality = a.settings->addMenu(QString());
+    for (QAction* act : a.quality_actions) a.quality->addAction(act);
+    a.settings->addAction(a.cache_dir);
+
+    a.help = bar->addMenu(QString());
+    a.help->addAction(a.about);
+    a.help->addAction(a.about_qt);
+
+    a.toolbar = addToolBar(QString());
+    a.toolbar->setObjectName(QStringLiteral("mainToolbar"));
+    a.toolbar->addAction(a.open);
+    a.toolbar->addAction(a.reload);
+    a.toolbar->addSeparator();
+    a.view_button = new QToolButton(a.toolbar);
+    a.view_button->setMenu(a.debug_views);
+    a.view_button->setPopupMode(QToolButton::InstantPopup);
+    a.toolbar->addWidget(a.view_button);
+    for (QAction* act : a.overlay_actions) a.toolbar->addAction(act);
+    a.toolbar->addSeparator();
+    a.toolbar->addAction(a.frame_all);
+    a.toolbar->addAction(a.fly);
+    a.toolbar->addAction(a.freeze);
+}
+
+void MainWindow::retranslate() {
+    if (!a_) return;
+    Actions& a = *a_;
+    a.file->setTitle(tr("&File"));
+    a.open->setText(tr("&Open…"));
+    a.recent->setTitle(tr("Open &Recent"));
+    a.builtin->setTitle(tr("&Built-in Scenes"));
+    const QString builtin_names[] = {tr("Default scene"), tr("Grid, 10 × 10"),
+                                     tr("Grid, 100 × 100"), tr("Grid, 1000 × 1000")};
+    for (std::size_t i = 0; i < a.builtin_actions.size(); ++i)
+        a.builtin_actions[i]->setText(builtin_names[i]);
+    a.reload->setText(tr("Re&load"));
+    a.close->setText(tr("&Close"));
+    a.quit->setText(tr("&Quit"));
+    a.clear_recent->setText(tr("Clear list"));
+    a.view->setTitle(tr("&View"));
+    a.debug_views->setTitle(tr("&Debug View"));
+    const std::vector<ViewEntry> views = ViewCatalog::views();
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        a.view_actions[i]->setText(views[i].label);
+        a.view_actions[i]->setChecked(view_ == QLatin1String(views[i].name));
+        if (view_ == QLatin1String(views[i].name))
+            a.view_button->setText(tr("View: %1").arg(views[i].label));
+    }
+    a.overlays->setTitle(tr("&Overlays"));
+    const std::vector<ViewEntry> overlays = ViewCatalog::overlays();
+    for (std::size_t i = 0; i < overlays.size(); ++i)
+        a.overlay_actions[i]->setText(overlays[i].label);
+    a.frame_all->setText(tr("Frame &All (F)"));
+    a.frame_selection->setText(tr("Frame &Selection (Shift+F)"));
+    a.fly->setText(tr("&Fly Mode (WASD, Q/E)"));
+    a.cameras->setTitle(tr("glTF &Cameras"));
+    a.docks->setTitle(tr("&Docks"));
+    a.reset_layout->setText(tr("&Reset Layout"));
+    a.culling->setTitle(tr("&Culling"));
+    a.freeze->setText(tr("&Freeze Culling Camera"));
+    a.box_colouring->setText(tr("&Colour Boxes by Result"));
+    a.cull_method->setTitle(tr("&Method"));
+    const QString methods[] = {tr("Bounding sphere"), tr("P-vertex (AABB)"), tr("Exact (SAT)")};
+    for (std::size_t i = 0; i < a.method_actions.size(); ++i)
+        a.method_actions[i]->setText(methods[i]);
+    a.cull_path->setTitle(tr("&Path"));
+    a.cpu_path->setText(tr("CPU"));
+    a.gpu_path->setText(tr("GPU (not available in this build)"));
+    a.settings->setTitle(tr("&Settings"));
+    a.language->setTitle(tr("&Language"));
+    for (QAction* act : a.language_actions)
+        act->setChecked(act->data().toString() == translations_.current());
+    a.quality->setTitle(tr("&Texture Quality"));
+    const QString qualities[] = {tr("Fast"), tr("Balanced"), tr("Best")};
+    for (std::size_t i = 0; i < a.quality_actions.size(); ++i)
+        a.quality_actions[i]->setText(qualities[i]);
+    a.cache_dir->setText(tr("Texture Cache &Directory…"));
+    a.help->setTitle(tr("&Help"));
+    a.about->setText(tr("&About Sherpa"));
+    a.about_qt->setText(tr("About &Qt"));
+    a.toolbar->setWindowTitle(tr("Main Toolbar"));
+    cancel_->setText(tr("Cancel"));
+
+    scene_tree_->retranslate();
+    mesh_->retranslate();
+    material_->retranslate();
+    textures_->retranslate();
+    culling_dock_->retranslate();
+    log_->retranslate();
+    // Models read tr() in headerData/data: tell the views to ask again.
+    for (QAbstractItemModel* m : findChildren<QAbstractItemModel*>()) {
+        if (m->columnCount() > 0)
+            Q_EMIT m->headerDataChanged(Qt::Horizontal, 0, m->columnCount() - 1);
+        Q_EMIT m->layoutChanged();
+    }
+    updateStatus();
+}
+
+void MainWindow::rebuildRecentMenu() {
+    Actions& a = *a_;
+    a.recent->clear();
+    const QStringList files = settings_.recentFiles();
+    if (files.isEmpty()) a.recent->addAction(tr("(no recent files)"))->setEnabled(false);
+    for (const QString& f : files)
+        connect(a.recent->addAction(f), &QAction::triggered, this, [this, f] { openScene(f); });
+    a.recent->addSeparator();
+    a.recent->addAction(a.clear_recent);
+}
+
+void MainWindow::openFileDialog() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open glTF scene"), QString(), tr("glTF scenes (*.gltf *.glb);;All files (*)"));
+    if (!path.isEmpty()) openScene(path);
+}
+
+void MainWindow::showAbout() {
+    QString device = tr("none (Vulkan unavailable)");
+    if (gpu_) {
+        device = gpu_->deviceName();
+    } else if (vulkan_ && vulkan_->isValid()) {
+        // The first physical device; the engine picks its device the same way (lavapipe first).
+        QVulkanFunctions* f = vulkan_->functions();
+        uint32_t count = 0;
+        f->vkEnumeratePhysicalDevices(vulkan_->vkInstance(), &count, nullptr);
+        std::vector<VkPhysicalDevice> devices(count);
+        f->vkEnumeratePhysicalDevices(vulkan_->vkInstance(), &count, devices.data());
+        QStringList names;
+        for (VkPhysicalDevice d : devices) {
+            VkPhysicalDeviceProperties p{};
+            f->vkGetPhysicalDeviceProperties(d, &p);
+            names << QStringLiteral("%1 (Vulkan %2.%3.%4)")
+                         .arg(QString::fromUtf8(p.deviceName))
+                         .arg(VK_API_VERSION_MAJOR(p.apiVersion))
+                         .arg(VK_API_VERSION_MINOR(p.apiVersion))
+                         .arg(VK_API_VERSION_PATCH(p.apiVersion));
+        }
+        device = names.join(QStringLiteral("; "));
+    }
+    QMessageBox::about(this, tr("About Sherpa"),
+                       tr("<h3>Sherpa %1</h3><p>A glTF 2.0 scene inspection editor.</p>"
+                          "<p>Qt %2 (built with %3)<br>Vulkan devices: %4</p>")
+                           .arg(QStringLiteral(SHERPA_VERSION), QString::fromLatin1(qVersion()),
+                                QStringLiteral(QT_VERSION_STR), device.toHtmlEscaped()));
+}
+
+} // namespace sherpa::editor

@@ -1,0 +1,79 @@
+#include "material_dock.h"
+
+#include <QHeaderView>
+#include <QLabel>
+#include <QTableView>
+#include <QVBoxLayout>
+
+#include "editor_context.h"
+#include "material_fields_model.h"
+
+namespace sherpa::editor {
+
+MaterialDock::MaterialDock(const EditorContext& context, QWidget* parent)
+    : QDockWidget(parent), context_(context) {
+    setObjectName(QStringLiteral("materialDock"));
+    model_ = new MaterialFieldsModel(this);
+    auto* body = new QWidget(this);
+    auto* layout = new QVBoxLayout(body);
+    layout->setContentsMargins(2, 2, 2, 2);
+    header_ = new QLabel(body);
+    header_->setWordWrap(true);
+    view_ = new QTableView(body);
+    view_->setModel(model_);
+    view_->verticalHeader()->hide();
+    view_->setWordWrap(false);
+    view_->setIconSize(QSize(24, 24));
+    view_->horizontalHeader()->setStretchLastSection(true);
+    layout->addWidget(header_);
+    layout->addWidget(view_);
+    setWidget(body);
+    connect(view_, &QTableView::doubleClicked, this, [this](const QModelIndex& index) {
+        const int texture = index.data(MaterialFieldsModel::TextureRole).toInt();
+        if (texture >= 0) Q_EMIT selectTextureRequested(texture);
+    });
+    connect(&context_, &EditorContext::selectionChanged, this, &MaterialDock::showMaterial);
+    retranslate();
+}
+
+void MaterialDock::setReadback(MaterialReadback readback) {
+    readback_ = std::move(readback);
+    showMaterial();
+}
+
+void MaterialDock::retranslate() {
+    setWindowTitle(tr("Material SSBO"));
+    showMaterial();
+}
+
+void MaterialDock::showMaterial() {
+    const Scene* scene = context_.scene();
+    const int material = context_.selection().material;
+    if (!scene || material < 0 || static_cast<std::size_t>(material) >= scene->materials.size()) {
+        model_->clear();
+        header_->setText(tr("No material selected."));
+        return;
+    }
+    const MaterialInstance& m = scene->materials[static_cast<std::size_t>(material)];
+    const QString name = m.name.empty() ? tr("(unnamed)") : QString::fromStdString(m.name);
+    std::optional<GpuMaterialReadback> gpu = readback_ ? readback_(material) : std::nullopt;
+    if (gpu) {
+        model_->setMaterial(context_.sharedScene(), context_.sharedExtras(), material, gpu->record,
+                            MaterialFieldsModel::Source::GpuReadback,
+                            std::move(gpu->bindless_to_texture));
+        header_->setText(tr("Material %1 %2: 80-byte std430 record read back from the GPU "
+                            "material buffer at offset %3.")
+                             .arg(material)
+                             .arg(name)
+                             .arg(material * 80));
+    } else {
+        model_->setMaterial(context_.sharedScene(), context_.sharedExtras(), material,
+                            to_gpu_material(m), MaterialFieldsModel::Source::Cpu);
+        header_->setText(tr("Material %1 %2: the importer's CPU record (no renderer attached, so "
+                            "texture fields hold glTF texture indices, not bindless slots).")
+                             .arg(material)
+                             .arg(name));
+    }
+}
+
+} // namespace sherpa::editor

@@ -1,0 +1,50 @@
+#pragma once
+// Dock 3: the selected material's GPUMaterialData as the GPU sees it. With a
+// renderer attached the record is read back from the GPU material buffer; without
+// one the importer's CPU record is shown and the dock says so.
+#include <QDockWidget>
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include <sherpa/scene/material.h>
+
+class QLabel;
+class QTableView;
+
+namespace sherpa::editor {
+
+class EditorContext;
+class MaterialFieldsModel;
+
+// What a renderer hands back for one material: the bytes in its buffer and how its
+// bindless texture indices map to Scene::textures.
+struct GpuMaterialReadback {
+    GPUMaterialData record{};
+    std::vector<int> bindless_to_texture;
+};
+using MaterialReadback = std::function<std::optional<GpuMaterialReadback>(int material)>;
+
+class MaterialDock : public QDockWidget {
+    Q_OBJECT
+public:
+    explicit MaterialDock(const EditorContext& context, QWidget* parent = nullptr);
+    void retranslate();
+    void setReadback(MaterialReadback readback);
+    MaterialFieldsModel* model() const { return model_; }
+
+Q_SIGNALS:
+    void selectTextureRequested(int texture);
+
+private:
+    void showMaterial();
+
+    const EditorContext& context_;
+    MaterialFieldsModel* model_;
+    QLabel* header_;
+    QTableView* view_;
+    MaterialReadback readback_;
+};
+
+} // namespace sherpa::editor

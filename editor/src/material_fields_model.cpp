@@ -1,0 +1,195 @@
+#include "material_fields_model.h"
+
+#include <QFileInfo>
+#include <cstddef>
+#include <cstring>
+
+#include "format_values.h"
+
+namespace sherpa::editor {
+
+namespace {
+
+enum class FieldType { Vec4, Float, TextureIndex, AlphaMode, Bool };
+
+struct Field {
+    std::size_t offset;
+    const char* name;
+    FieldType type;
+    const char* gltf_property; // glTF JSON path, not translated (it is a file format name)
+};
+
+constexpr Field kFields[] = {
+    {offsetof(GPUMaterialData, base_color_factor), "base_color_factor", FieldType::Vec4,
+     "pbrMetallicRoughness.baseColorFactor"},
+    {offsetof(GPUMaterialData, emissive_factor), "emissive_factor", FieldType::Vec4,
+     "emissiveFactor, KHR_materials_emissive_strength"},
+    {offsetof(GPUMaterialData, metallic_factor), "metallic_factor", FieldType::Float,
+     "pbrMetallicRoughness.metallicFactor"},
+    {offsetof(GPUMaterialData, roughness_factor), "roughness_factor", FieldType::Float,
+     "pbrMetallicRoughness.roughnessFactor"},
+    {offsetof(GPUMaterialData, normal_scale), "normal_scale", FieldType::Float,
+     "normalTexture.scale"},
+    {offsetof(GPUMaterialData, occlusion_strength), "occlusion_strength", FieldType::Float,
+     "occlusionTexture.strength"},
+    {offsetof(GPUMaterialData, base_color_tex), "base_color_tex", FieldType::TextureIndex,
+     "pbrMetallicRoughness.baseColorTexture"},
+    {offsetof(GPUMaterialData, emissive_tex), "emissive_tex", FieldType::TextureIndex,
+     "emissiveTexture"},
+    {offsetof(GPUMaterialData, metallic_roughness_tex), "metallic_roughness_tex",
+     FieldType::TextureIndex, "pbrMetallicRoughness.metallicRoughnessTexture"},
+    {offsetof(GPUMaterialData, normal_tex), "normal_tex", FieldType::TextureIndex, "normalTexture"},
+    {offsetof(GPUMaterialData, occlusion_tex), "occlusion_tex", FieldType::TextureIndex,
+     "occlusionTexture"},
+    {offsetof(GPUMaterialData, alpha_cutoff), "alpha_cutoff", FieldType::Float, "alphaCutoff"},
+    {offsetof(GPUMaterialData, alpha_mode), "alpha_mode", FieldType::AlphaMode, "alphaMode"},
+    {offsetof(GPUMaterialData, double_sided), "double_sided", FieldType::Bool, "doubleSided"},
+};
+constexpr int kFieldCount = static_cast<int>(sizeof kFields / sizeof kFields[0]);
+
+template <typename T> T read(const GPUMaterialData& r, std::size_t offset) {
+    T v;
+    std::memcpy(&v, reinterpret_cast<const unsigned char*>(&r) + offset, sizeof v);
+    return v;
+}
+
+} // namespace
+
+MaterialFieldsModel::MaterialFieldsModel(QObject* parent) : QAbstractTableModel(parent) {}
+
+void MaterialFieldsModel::setMaterial(std::shared_ptr<const Scene> scene,
+                                      std::shared_ptr<const SceneExtras> extras, int material,
+                                      const GPUMaterialData& record, Source source,
+                                      std::vector<int> bindless_to_texture) {
+    beginResetModel();
+    scene_ = std::move(scene);
+    extras_ = std::move(extras);
+    material_ = material;
+    record_ = record;
+    source_ = source;
+    bindless_to_texture_ = std::move(bindless_to_texture);
+    endResetModel();
+}
+
+void MaterialFieldsModel::clear() {
+    beginResetModel();
+    scene_.reset();
+    extras_.reset();
+    material_ = -1;
+    endResetModel();
+}
+
+int MaterialFieldsModel::textureOfRow(int row) const {
+    if (!scene_ || row < 0 || row >= kFieldCount) return -1;
+    if (kFields[row].type != FieldType::TextureIndex) return -1;
+    const auto value = read<std::uint32_t>(record_, kFields[row].offset);
+    if (value == kTextureSentinel) return -1;
+    int texture = static_cast<int>(value);
+    if (source_ == Source::GpuReadback)
+        texture = value < bindless_to_texture_.size() ? bindless_to_texture_[value] : -1;
+    return texture >= 0 && static_cast<std::size_t>(texture) < scene_->textures.size() ? texture
+                                                                                       : -1;
+}
+
+QString MaterialFieldsModel::chain(int texture) const {
+    const TextureRecord& t = scene_->textures[static_cast<std::size_t>(texture)];
+    QString text = tr("texture %1").arg(texture);
+    if (!t.name.empty()) text += QStringLiteral(" \"%1\"").arg(QString::fromStdString(t.name));
+    if (t.image >= 0) {
+        const ImageRecord& img = scene_->images[static_cast<std::size_t>(t.image)];
+        const QString where = !img.uri.empty()
+                                  ? QFileInfo(QString::fromStdString(img.uri)).fileName()
+                              : img.buffer_view >= 0 ? tr("bufferView %1").arg(img.buffer_view)
+                                                     : tr("generated");
+        text += tr(" → image %1 (%2)").arg(t.image).arg(where);
+    }
+    // The texture cache (issue #5) is not in this build; say so rather than invent a state.
+    text += tr(" → cache: not available");
+    return text;
+}
+
+int MaterialFieldsModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() || material_ < 0 ? 0 : kFieldCount;
+}
+
+int MaterialFieldsModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant MaterialFieldsModel::data(const QModelIndex& index, int role) const {
+    if (!index.isValid() || material_ < 0) return {};
+    const Field& f = kFields[index.row()];
+    const int texture = textureOfRow(index.row());
+    if (role == TextureRole) return texture;
+    if (role == Qt::DecorationRole && index.column() == ChainColumn && texture >= 0 && extras_ &&
+        static_cast<std::size_t>(texture) < extras_->thumbnails.size())
+        return extras_->thumbnails[static_cast<std::size_t>(texture)].scaled(
+            24, 24, Qt::KeepAspectRatio, Qt::SmoothTransformation);
+    if (role == Qt::ToolTipRole && index.column() == ChainColumn && texture >= 0)
+        return tr("Double-click to show this texture in the texture dock");
+    if (role != Qt::DisplayRole) return {};
+    switch (index.column()) {
+    case OffsetColumn:
+        return static_cast<int>(f.offset);
+    case FieldColumn:
+        return QString::fromLatin1(f.name);
+    case PropertyColumn:
+        return QString::fromLatin1(f.gltf_property);
+    case TypeColumn:
+        switch (f.type) {
+        case FieldType::Vec4:
+            return QStringLiteral("vec4");
+        case FieldType::Float:
+            return QStringLiteral("float");
+        default:
+            return QStringLiteral("uint");
+        }
+    case ValueColumn:
+        switch (f.type) {
+        case FieldType::Vec4:
+            return Format::vec(read<glm::vec4>(record_, f.offset));
+        case FieldType::Float:
+            return Format::number(read<float>(record_, f.offset));
+        case FieldType::TextureIndex: {
+            const auto v = read<std::uint32_t>(record_, f.offset);
+            return v == kTextureSentinel ? tr("none (0x%1)").arg(v, 8, 16, QLatin1Char('0'))
+                                         : QString::number(v);
+        }
+        case FieldType::AlphaMode: {
+            const auto v = read<std::uint32_t>(record_, f.offset);
+            return QStringLiteral("%1 (%2)").arg(v).arg(
+                v <= 2 ? Format::alphaMode(static_cast<AlphaMode>(v)) : QStringLiteral("?"));
+        }
+        case FieldType::Bool:
+            return read<std::uint32_t>(record_, f.offset);
+        }
+        return {};
+    case ChainColumn:
+        if (f.type != FieldType::TextureIndex) return {};
+        return texture >= 0 ? chain(texture) : tr("default texture");
+    default:
+        return {};
+    }
+}
+
+QVariant MaterialFieldsModel::headerData(int section, Qt::Orientation o, int role) const {
+    if (o != Qt::Horizontal || role != Qt::DisplayRole) return {};
+    switch (section) {
+    case OffsetColumn:
+        return tr("Offset");
+    case FieldColumn:
+        return tr("Field");
+    case TypeColumn:
+        return tr("Type");
+    case ValueColumn:
+        return tr("Value");
+    case PropertyColumn:
+        return tr("glTF property");
+    case ChainColumn:
+        return tr("Texture chain");
+    default:
+        return {};
+    }
+}
+
+} // namespace sherpa::editor

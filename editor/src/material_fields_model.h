@@ -1,0 +1,64 @@
+#pragma once
+// The selected material's GPUMaterialData, field by field as the shader sees it
+// (std430 offsets), with the glTF property each field came from and, for texture
+// fields, the chain texture -> image -> source.
+#include <QAbstractTableModel>
+#include <QImage>
+
+#include <memory>
+#include <vector>
+
+#include <sherpa/scene/material.h>
+#include <sherpa/scene/scene.h>
+
+#include "scene_extras.h"
+
+namespace sherpa::editor {
+
+class MaterialFieldsModel : public QAbstractTableModel {
+    Q_OBJECT
+public:
+    enum Column {
+        OffsetColumn,
+        FieldColumn,
+        TypeColumn,
+        ValueColumn,
+        PropertyColumn,
+        ChainColumn,
+        ColumnCount
+    };
+    static constexpr int TextureRole = Qt::UserRole + 1; // texture index of a row, -1 if none
+
+    // Where the record came from: the renderer's GPU buffer (texture fields hold
+    // bindless indices) or the importer's CPU record (glTF texture indices).
+    enum class Source { Cpu, GpuReadback };
+
+    explicit MaterialFieldsModel(QObject* parent = nullptr);
+    // `bindless_to_texture` maps a GPU record's texture fields back to Scene::textures
+    // (empty for a CPU record).
+    void setMaterial(std::shared_ptr<const Scene> scene, std::shared_ptr<const SceneExtras> extras,
+                     int material, const GPUMaterialData& record, Source source,
+                     std::vector<int> bindless_to_texture = {});
+    void clear();
+    Source source() const { return source_; }
+    const GPUMaterialData& record() const { return record_; }
+    // Scene::textures index a texture field refers to, -1 for the sentinel/defaults.
+    int textureOfRow(int row) const;
+
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role) const override;
+    QVariant headerData(int section, Qt::Orientation o, int role) const override;
+
+private:
+    QString chain(int texture) const;
+
+    std::shared_ptr<const Scene> scene_;
+    std::shared_ptr<const SceneExtras> extras_;
+    int material_ = -1;
+    GPUMaterialData record_{};
+    Source source_ = Source::Cpu;
+    std::vector<int> bindless_to_texture_;
+};
+
+} // namespace sherpa::editor

@@ -1,0 +1,110 @@
+#include "scene_tree_dock.h"
+
+#include <QHeaderView>
+#include <QLineEdit>
+#include <QSortFilterProxyModel>
+#include <QTreeView>
+#include <QVBoxLayout>
+
+#include "editor_context.h"
+#include "scene_tree_model.h"
+
+namespace sherpa::editor {
+
+SceneTreeDock::SceneTreeDock(const EditorContext& context, QWidget* parent)
+    : QDockWidget(parent), context_(context) {
+    setObjectName(QStringLiteral("sceneTreeDock"));
+    model_ = new SceneTreeModel(context, this);
+    proxy_ = new QSortFilterProxyModel(this);
+    proxy_->setSourceModel(model_);
+    proxy_->setRecursiveFilteringEnabled(true); // a match keeps its ancestors visible
+    proxy_->setFilterCaseSensitivity(Qt::CaseInsensitive);
+    proxy_->setFilterKeyColumn(SceneTreeModel::NameColumn);
+
+    auto* body = new QWidget(this);
+    auto* layout = new QVBoxLayout(body);
+    layout->setContentsMargins(2, 2, 2, 2);
+    filter_ = new QLineEdit(body);
+    filter_->setClearButtonEnabled(true);
+    view_ = new QTreeView(body);
+    view_->setModel(proxy_);
+    view_->setUniformRowHeights(true);
+    view_->header()->setSectionResizeMode(SceneTreeModel::NameColumn,
+                                          QHeaderView::ResizeToContents);
+    layout->addWidget(filter_);
+    layout->addWidget(view_);
+    setWidget(body);
+
+    connect(filter_, &QLineEdit::textChanged, this, [this](const QString& text) {
+        proxy_->setFilterFixedString(text);
+        if (!text.isEmpty()) view_->expandAll();
+    });
+    connect(view_->selectionModel(), &QItemSelectionModel::currentChanged, this,
+            [this](const QModelIndex& current) { onCurrentChanged(current); });
+    connect(view_, &QTreeView::doubleClicked, this, [this](const QModelIndex& index) {
+        if (index.data(SceneTreeModel::KindRole).toInt() ==
+            static_cast<int>(SceneTreeModel::Kind::Camera))
+            Q_EMIT jumpToCameraRequested(index.data(SceneTreeModel::NodeRole).toInt());
+    });
+    connect(model_, &SceneTreeModel::visibilityRequested, this,
+            &SceneTreeDock::visibilityRequested);
+    connect(model_, &QAbstractItemModel::modelReset, this, [this] { view_->expandToDepth(1); });
+    connect(&context_, &EditorContext::selectionChanged, this, &SceneTreeDock::syncFromContext);
+    retranslate();
+}
+
+void SceneTreeDock::retranslate() {
+    setWindowTitle(tr("Scene Tree"));
+    filter_->setPlaceholderText(tr("Filter by name…"));
+}
+
+void SceneTreeDock::setFilter(const QString& text) {
+    filter_->setText(text);
+}
+
+void SceneTreeDock::onCurrentChanged(const QModelIndex& current) {
+    if (syncing_ || !current.isValid()) return;
+    const auto kind =
+        static_cast<SceneTreeModel::Kind>(current.data(SceneTreeModel::KindRole).toInt());
+    const int index = current.data(SceneTreeModel::IndexRole).toInt();
+    const int node = current.data(SceneTreeModel::NodeRole).toInt();
+    switch (kind) {
+    case SceneTreeModel::Kind::Node:
+    case SceneTreeModel::Kind::Light:
+    case SceneTreeModel::Kind::Camera:
+        Q_EMIT selectNodeRequested(node);
+        break;
+    case SceneTreeModel::Kind::Primitive: {
+        const int mesh = context_.scene()->primitives[static_cast<std::size_t>(index)].engine_mesh;
+        if (mesh >= 0) Q_EMIT selectMeshRequested(mesh, node);
+        break;
+    }
+    case SceneTreeModel::Kind::Material:
+        Q_EMIT selectMaterialRequested(index);
+        break;
+    case SceneTreeModel::Kind::SceneRoot:
+        break;
+    }
+}
+
+void SceneTreeDock::syncFromContext() {
+    const Selection& s = context_.selection();
+    // Already on an item of the selected node (its material, light...): stay there.
+    const QModelIndex current = view_->currentIndex();
+    if (current.isValid() && s.node >= 0 &&
+        current.data(SceneTreeModel::NodeRole).toInt() == s.node &&
+        current.data(SceneTreeModel::KindRole).toInt() !=
+            static_cast<int>(SceneTreeModel::Kind::Node))
+        return;
+    const QModelIndex source =
+        s.mesh >= 0 ? model_->indexOfPrimitive(s.node, s.mesh) : model_->indexOfNode(s.node);
+    const QModelIndex target = proxy_->mapFromSource(source);
+    if (!target.isValid() || target == view_->currentIndex()) return;
+    // Selecting in the viewport must not echo back as a new action.
+    syncing_ = true;
+    view_->setCurrentIndex(target);
+    view_->scrollTo(target);
+    syncing_ = false;
+}
+
+} // namespace sherpa::editor

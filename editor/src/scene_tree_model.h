@@ -1,0 +1,60 @@
+#pragma once
+// The glTF hierarchy as a tree: scenes > nodes > (child nodes, primitives >
+// material, light, camera). Only a small index of items is built per scene (a
+// few ints per node); names and values are read from the engine's Scene.
+#include <QAbstractItemModel>
+
+#include <vector>
+
+#include "editor_context.h"
+
+namespace sherpa::editor {
+
+class SceneTreeModel : public QAbstractItemModel {
+    Q_OBJECT
+public:
+    enum class Kind : std::uint8_t { SceneRoot, Node, Primitive, Material, Light, Camera };
+    enum Column { NameColumn, TypeColumn, DetailColumn, ColumnCount };
+    enum Role { KindRole = Qt::UserRole + 1, IndexRole, NodeRole };
+
+    explicit SceneTreeModel(const EditorContext& context, QObject* parent = nullptr);
+
+    QModelIndex index(int row, int column, const QModelIndex& parent = {}) const override;
+    QModelIndex parent(const QModelIndex& child) const override;
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role) const override;
+    bool setData(const QModelIndex& index, const QVariant& value, int role) override;
+    Qt::ItemFlags flags(const QModelIndex& index) const override;
+    QVariant headerData(int section, Qt::Orientation o, int role) const override;
+
+    // The item showing `node` in the displayed scene (first occurrence), or invalid.
+    QModelIndex indexOfNode(int node) const;
+    QModelIndex indexOfPrimitive(int node, int mesh) const;
+
+Q_SIGNALS:
+    // Action out: the user ticked a node's visibility box.
+    void visibilityRequested(int node, bool visible);
+
+private:
+    struct Item {
+        Kind kind;
+        int index;  // scene, node, PrimitiveInfo, material, light or camera index
+        int node;   // owning node (-1 for scenes)
+        int parent; // item index, -1 for top level
+        int row;
+        std::vector<int> children;
+    };
+    void rebuild();
+    int addItem(Kind kind, int index, int node, int parent);
+    void addNode(int node, int parent, int depth);
+    QString name(const Item& item) const;
+    QString detail(const Item& item) const;
+
+    const EditorContext& context_;
+    std::vector<Item> items_;
+    std::vector<int> top_;
+    std::vector<int> node_item_; // first item per node in the displayed scene
+};
+
+} // namespace sherpa::editor

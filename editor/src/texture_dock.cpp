@@ -1,0 +1,100 @@
+#include "texture_dock.h"
+
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QTableView>
+#include <QVBoxLayout>
+
+#include "editor_context.h"
+#include "format_values.h"
+#include "scene_extras.h"
+#include "texture_table_model.h"
+
+namespace sherpa::editor {
+
+TextureDock::TextureDock(const EditorContext& context, QWidget* parent)
+    : QDockWidget(parent), context_(context) {
+    setObjectName(QStringLiteral("textureDock"));
+    model_ = new TextureTableModel(this);
+    auto* body = new QWidget(this);
+    auto* layout = new QVBoxLayout(body);
+    layout->setContentsMargins(2, 2, 2, 2);
+    view_ = new QTableView(body);
+    view_->setModel(model_);
+    view_->verticalHeader()->hide();
+    view_->setIconSize(QSize(kThumbnailSize / 2, kThumbnailSize / 2));
+    view_->verticalHeader()->setDefaultSectionSize(kThumbnailSize / 2 + 4);
+    view_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    view_->setSelectionMode(QAbstractItemView::SingleSelection);
+    view_->setWordWrap(false);
+    auto* actions = new QHBoxLayout;
+    totals_ = new QLabel(body);
+    recompress_ = new QPushButton(body);
+    clear_ = new QPushButton(body);
+    open_folder_ = new QPushButton(body);
+    // Needs the texture cache, which this build does not contain yet.
+    recompress_->setEnabled(false);
+    clear_->setEnabled(false);
+    actions->addWidget(totals_, 1);
+    actions->addWidget(recompress_);
+    actions->addWidget(clear_);
+    actions->addWidget(open_folder_);
+    layout->addWidget(view_);
+    layout->addLayout(actions);
+    setWidget(body);
+    connect(open_folder_, &QPushButton::clicked, this, &TextureDock::openCacheFolderRequested);
+    connect(view_->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
+            [this](const QModelIndex& current) {
+                if (current.isValid() && current.row() != context_.selection().texture)
+                    Q_EMIT selectTextureRequested(current.row());
+            });
+    connect(&context_, &EditorContext::sceneChanged, this, &TextureDock::showScene);
+    connect(&context_, &EditorContext::selectionChanged, this, &TextureDock::syncSelection);
+    retranslate();
+}
+
+void TextureDock::retranslate() {
+    setWindowTitle(tr("Texture Cache"));
+    recompress_->setText(tr("Recompress selected"));
+    clear_->setText(tr("Clear cache"));
+    open_folder_->setText(tr("Open cache folder"));
+    const QString why = tr("Needs the texture cache, which is not part of this build");
+    recompress_->setToolTip(why);
+    clear_->setToolTip(why);
+    updateTotals();
+}
+
+void TextureDock::showScene() {
+    model_->setScene(context_.sharedScene(), context_.sharedExtras());
+    view_->resizeColumnsToContents();
+    updateTotals();
+}
+
+void TextureDock::syncSelection() {
+    const int t = context_.selection().texture;
+    if (t >= 0 && t < model_->rowCount() && view_->currentIndex().row() != t) {
+        view_->setCurrentIndex(model_->index(t, 0));
+        view_->scrollTo(model_->index(t, 0));
+    }
+}
+
+void TextureDock::setGpuBytes(std::int64_t bytes) {
+    gpu_bytes_ = bytes;
+    updateTotals();
+}
+
+void TextureDock::updateTotals() {
+    const SceneExtras* extras = context_.extras();
+    const QString gpu =
+        gpu_bytes_ < 0 ? tr("no renderer") : Format::bytes(static_cast<std::uint64_t>(gpu_bytes_));
+    totals_->setText(
+        tr("%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms")
+            .arg(model_->rowCount())
+            .arg(Format::bytes(model_->totalDiskBytes()))
+            .arg(gpu)
+            .arg(extras ? extras->thumbnails_ms : 0.0, 0, 'f', 1));
+}
+
+} // namespace sherpa::editor

@@ -1,0 +1,49 @@
+#pragma once
+// Every texture of the scene with its thumbnail, source, role and sizes. Columns
+// that only the texture cache can fill (hash, GPU format, mips, GPU bytes, cache
+// state, encode time, PSNR) show "—" until a cache report is attached.
+#include <QAbstractTableModel>
+
+#include <memory>
+
+#include <sherpa/scene/scene.h>
+
+#include "scene_extras.h"
+
+namespace sherpa::editor {
+
+class TextureTableModel : public QAbstractTableModel {
+    Q_OBJECT
+public:
+    enum Column {
+        NameColumn,
+        SourceColumn,
+        HashColumn,
+        RoleColumn,
+        FormatColumn,
+        SizeColumn,
+        MipsColumn,
+        DiskBytesColumn,
+        GpuBytesColumn,
+        CacheStateColumn,
+        DecodeMsColumn,
+        EncodeMsColumn,
+        PsnrColumn,
+        ColumnCount
+    };
+    explicit TextureTableModel(QObject* parent = nullptr);
+    void setScene(std::shared_ptr<const Scene> scene, std::shared_ptr<const SceneExtras> extras);
+    // Encoded bytes of every image referenced by a texture (each image once).
+    std::uint64_t totalDiskBytes() const;
+
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role) const override;
+    QVariant headerData(int section, Qt::Orientation o, int role) const override;
+
+private:
+    std::shared_ptr<const Scene> scene_;
+    std::shared_ptr<const SceneExtras> extras_;
+};
+
+} // namespace sherpa::editor

@@ -1,0 +1,68 @@
+#include "triangle_table_model.h"
+
+#include "format_values.h"
+
+namespace sherpa::editor {
+
+TriangleTableModel::TriangleTableModel(QObject* parent) : QAbstractTableModel(parent) {}
+
+void TriangleTableModel::setMesh(MeshRef mesh) {
+    beginResetModel();
+    mesh_ = std::move(mesh);
+    endResetModel();
+}
+
+int TriangleTableModel::rowCount(const QModelIndex& parent) const {
+    const Mesh* m = mesh_.get();
+    return parent.isValid() || !m ? 0 : static_cast<int>(m->triangle_count());
+}
+
+int TriangleTableModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant TriangleTableModel::data(const QModelIndex& index, int role) const {
+    const Mesh* m = mesh_.get();
+    if (!index.isValid() || !m) return {};
+    if (role == Qt::TextAlignmentRole) return int(Qt::AlignRight | Qt::AlignVCenter);
+    if (role != Qt::DisplayRole) return {};
+    const std::size_t t = static_cast<std::size_t>(index.row()) * 3;
+    switch (index.column()) {
+    case IndexColumn:
+        return index.row();
+    case V0:
+    case V1:
+    case V2:
+        return m->indices[t + static_cast<std::size_t>(index.column() - V0)];
+    case AreaColumn: {
+        // Degenerate (zero-area) triangles are what breaks tangent generation: show them.
+        const glm::vec3 a = m->vertices[m->indices[t]].position;
+        const glm::vec3 b = m->vertices[m->indices[t + 1]].position;
+        const glm::vec3 c = m->vertices[m->indices[t + 2]].position;
+        return Format::number(0.5 * static_cast<double>(glm::length(glm::cross(b - a, c - a))));
+    }
+    default:
+        return {};
+    }
+}
+
+QVariant TriangleTableModel::headerData(int section, Qt::Orientation o, int role) const {
+    if (role != Qt::DisplayRole) return {};
+    if (o == Qt::Vertical) return section;
+    switch (section) {
+    case IndexColumn:
+        return QStringLiteral("#");
+    case V0:
+        return tr("vertex 0");
+    case V1:
+        return tr("vertex 1");
+    case V2:
+        return tr("vertex 2");
+    case AreaColumn:
+        return tr("area");
+    default:
+        return {};
+    }
+}
+
+} // namespace sherpa::editor

@@ -1,0 +1,154 @@
+#include "viewport_window.h"
+
+#include <QExposeEvent>
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QVulkanInstance>
+#include <QWheelEvent>
+
+namespace sherpa::editor {
+
+namespace {
+constexpr double kClickSlopPixels = 4.0; // a press that moves less than this is a pick
+} // namespace
+
+ViewportWindow::ViewportWindow(QVulkanInstance* instance) {
+    if (instance) {
+        setSurfaceType(QSurface::VulkanSurface);
+        setVulkanInstance(instance);
+    }
+    fly_timer_.setInterval(16);
+    connect(&fly_timer_, &QTimer::timeout, this, &ViewportWindow::flyStep);
+}
+
+quint64 ViewportWindow::vulkanSurface() const {
+    QVulkanInstance* inst = vulkanInstance();
+    if (!inst || !handle()) return 0;
+    // VkSurfaceKHR is a non-dispatchable handle: a 64-bit value on every platform.
+    return reinterpret_cast<quint64>(
+        QVulkanInstance::surfaceForWindow(const_cast<ViewportWindow*>(this)));
+}
+
+void ViewportWindow::setFlyMode(bool fly) {
+    fly_ = fly;
+    keys_held_.clear();
+    fly_timer_.stop();
+}
+
+void ViewportWindow::scheduleFrame() {
+    if (isExposed()) requestUpdate();
+}
+
+bool ViewportWindow::event(QEvent* e) {
+    if (e->type() == QEvent::UpdateRequest) {
+        renderNow();
+        return true;
+    }
+    return QWindow::event(e);
+}
+
+void ViewportWindow::exposeEvent(QExposeEvent*) {
+    // Minimised or hidden windows are not exposed: no frames at all then.
+    if (isExposed()) scheduleFrame();
+}
+
+void ViewportWindow::resizeEvent(QResizeEvent*) {
+    camera_.setAspect(height() > 0 ? static_cast<float>(width()) / static_cast<float>(height())
+                                   : 1.0f);
+    Q_EMIT cameraChanged();
+    scheduleFrame();
+}
+
+void ViewportWindow::renderNow() {
+    if (!isExposed() || !frame_) return;
+    QElapsedTimer t;
+    t.start();
+    if (frame_()) {
+        last_frame_ms_ = static_cast<double>(t.nsecsElapsed()) / 1e6;
+        ++frames_;
+        Q_EMIT frameRendered(last_frame_ms_);
+    }
+}
+
+void ViewportWindow::mousePressEvent(QMouseEvent* e) {
+    auto_frame_ = false;
+    press_pos_ = last_pos_ = e->position();
+    buttons_ = e->buttons();
+    dragged_ = false;
+}
+
+void ViewportWindow::mouseMoveEvent(QMouseEvent* e) {
+    if (e->buttons() == Qt::NoButton) return;
+    const QPointF d = e->position() - last_pos_;
+    last_pos_ = e->position();
+    if ((e->position() - press_pos_).manhattanLength() > kClickSlopPixels) dragged_ = true;
+    const auto dx = static_cast<float>(d.x()), dy = static_cast<float>(d.y());
+    const bool pan = (e->buttons() & Qt::MiddleButton) ||
+                     ((e->buttons() & Qt::LeftButton) && (e->modifiers() & Qt::ShiftModifier));
+    if (pan)
+        camera_.pan(dx, dy, static_cast<float>(height()));
+    else if (e->buttons() & Qt::LeftButton)
+        fly_ ? camera_.look(dx, dy) : camera_.orbit(dx, dy);
+    else if (e->buttons() & Qt::RightButton)
+        camera_.dolly(-dy / 40.0f);
+    Q_EMIT cameraChanged();
+    scheduleFrame();
+}
+
+void ViewportWindow::mouseReleaseEvent(QMouseEvent* e) {
+    if (!dragged_ && (buttons_ & Qt::LeftButton) && width() > 0 && height() > 0) {
+        const QPointF p = e->position();
+        Q_EMIT clicked(QPointF(2.0 * p.x() / width() - 1.0, 1.0 - 2.0 * p.y() / height()));
+    }
+    buttons_ = Qt::NoButton;
+}
+
+void ViewportWindow::wheelEvent(QWheelEvent* e) {
+    auto_frame_ = false;
+    camera_.dolly(static_cast<float>(e->angleDelta().y()) / 120.0f);
+    Q_EMIT cameraChanged();
+    scheduleFrame();
+}
+
+void ViewportWindow::keyPressEvent(QKeyEvent* e) {
+    auto_frame_ = false;
+    if (e->key() == Qt::Key_F && !e->isAutoRepeat()) {
+        if (e->modifiers() & Qt::ShiftModifier)
+            Q_EMIT frameSelectionRequested();
+        else
+            Q_EMIT frameAllRequested();
+        return;
+    }
+    if (fly_ && !e->isAutoRepeat()) {
+        keys_held_.insert(e->key());
+        if (!fly_timer_.isActive()) {
+            fly_clock_.start();
+            fly_timer_.start();
+        }
+    }
+}
+
+void ViewportWindow::keyReleaseEvent(QKeyEvent* e) {
+    if (e->isAutoRepeat()) return;
+    keys_held_.remove(e->key());
+    if (keys_held_.isEmpty()) fly_timer_.stop();
+}
+
+void ViewportWindow::flyStep() {
+    // WASD + Q/E, speed proportional to the orbit distance so every scale feels the same.
+    const float dt = static_cast<float>(fly_clock_.restart()) / 1000.0f;
+    const float speed = std::max(camera_.distance(), 0.1f) * dt;
+    glm::vec3 move(0.0f);
+    if (keys_held_.contains(Qt::Key_W)) move.z += speed;
+    if (keys_held_.contains(Qt::Key_S)) move.z -= speed;
+    if (keys_held_.contains(Qt::Key_D)) move.x += speed;
+    if (keys_held_.contains(Qt::Key_A)) move.x -= speed;
+    if (keys_held_.contains(Qt::Key_E)) move.y += speed;
+    if (keys_held_.contains(Qt::Key_Q)) move.y -= speed;
+    if (move == glm::vec3(0.0f)) return;
+    camera_.fly(move);
+    Q_EMIT cameraChanged();
+    scheduleFrame();
+}
+
+} // namespace sherpa::editor

@@ -1,0 +1,77 @@
+#pragma once
+// The viewport: a QWindow with a Vulkan surface (QVulkanInstance::surfaceForWindow),
+// embedded with QWidget::createWindowContainer. The engine owns device and
+// swapchain; this window owns the camera and input, and asks for a frame only
+// when something changed (requestUpdate), so an idle editor renders nothing.
+#include <QElapsedTimer>
+#include <QSet>
+#include <QTimer>
+#include <QWindow>
+
+#include <functional>
+
+#include "orbit_camera.h"
+
+class QVulkanInstance;
+
+namespace sherpa::editor {
+
+class ViewportWindow : public QWindow {
+    Q_OBJECT
+public:
+    explicit ViewportWindow(QVulkanInstance* instance);
+
+    OrbitCamera& camera() { return camera_; }
+    const OrbitCamera& camera() const { return camera_; }
+    bool flyMode() const { return fly_; }
+    void setFlyMode(bool fly);
+    // The surface for the engine's swapchain; VK_NULL_HANDLE until the window exists.
+    quint64 vulkanSurface() const;
+    QSize pixelSize() const { return size() * devicePixelRatio(); }
+    // Called for each paced frame while exposed; returns false if nothing was drawn.
+    void setFrameCallback(std::function<bool()> callback) { frame_ = std::move(callback); }
+    // Something visible changed: render once more (coalesced by Qt to the refresh rate).
+    void scheduleFrame();
+    double lastFrameMs() const { return last_frame_ms_; }
+    // Until the user moves the camera, a resize re-frames the scene (the first
+    // scene is framed before the window has its final size).
+    void setAutoFrame(bool on) { auto_frame_ = on; }
+    std::uint64_t framesRendered() const { return frames_; }
+
+Q_SIGNALS:
+    void cameraChanged();
+    void clicked(QPointF ndc); // normalised device coordinates, y up
+    void frameAllRequested();
+    void frameSelectionRequested();
+    void frameRendered(double ms);
+
+protected:
+    bool event(QEvent* e) override;
+    void exposeEvent(QExposeEvent* e) override;
+    void resizeEvent(QResizeEvent* e) override;
+    void mousePressEvent(QMouseEvent* e) override;
+    void mouseMoveEvent(QMouseEvent* e) override;
+    void mouseReleaseEvent(QMouseEvent* e) override;
+    void wheelEvent(QWheelEvent* e) override;
+    void keyPressEvent(QKeyEvent* e) override;
+    void keyReleaseEvent(QKeyEvent* e) override;
+
+private:
+    void renderNow();
+    void flyStep();
+
+    OrbitCamera camera_;
+    std::function<bool()> frame_;
+    QPointF press_pos_, last_pos_;
+    Qt::MouseButtons buttons_;
+    bool dragged_ = false;
+    bool fly_ = false;
+    bool auto_frame_ = false;
+    QSet<int> keys_held_;
+    QTimer fly_timer_;
+    QElapsedTimer fly_clock_;
+    double last_frame_ms_ = 0.0;
+    std::uint64_t frames_ = 0;
+};
+
+} // namespace sherpa::editor

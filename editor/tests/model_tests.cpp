@@ -1,0 +1,330 @@
+// The docks' models against the engine data they present, over every sample model,
+// plus the camera, picking, culling monitor and a million-vertex table.
+#include <QSignalSpy>
+#include <QtTest>
+
+#include <sherpa/scene/culling_passes.h>
+
+#include "attribute_model.h"
+#include "culling_monitor.h"
+#include "editor_context.h"
+#include "format_values.h"
+#include "material_fields_model.h"
+#include "orbit_camera.h"
+#include "picking.h"
+#include "scene_load_job.h"
+#include "scene_tree_model.h"
+#include "tangent_error.h"
+#include "test_assets.h"
+#include "texture_table_model.h"
+#include "triangle_table_model.h"
+#include "vertex_table_model.h"
+
+using namespace sherpa;
+using namespace sherpa::editor;
+
+namespace {
+
+QString display(const QAbstractItemModel& m, int row, int column, const QModelIndex& parent = {}) {
+    return m.data(m.index(row, column, parent), Qt::DisplayRole).toString();
+}
+
+// Checks every node of the displayed scene against its tree item, recursively.
+void check_node(const Scene& s, const SceneTreeModel& model, std::uint32_t n) {
+    const QModelIndex item = model.indexOfNode(static_cast<int>(n));
+    QVERIFY2(item.isValid(), qPrintable(QStringLiteral("node %1 has no item").arg(n)));
+    const Node& node = s.nodes[n];
+    const QString name =
+        node.name.empty() ? QStringLiteral("Node %1").arg(n) : QString::fromStdString(node.name);
+    QCOMPARE(item.data().toString(), name);
+    QCOMPARE(item.data(Qt::CheckStateRole).toInt(), static_cast<int>(Qt::Checked));
+    int expected = static_cast<int>(node.children.size()) + (node.light >= 0) + (node.camera >= 0);
+    if (node.mesh >= 0) {
+        for (const PrimitiveInfo& p : s.primitives)
+            expected += p.mesh == static_cast<std::uint32_t>(node.mesh);
+    }
+    QCOMPARE(model.rowCount(item), expected);
+    for (std::uint32_t c : node.children) check_node(s, model, c);
+}
+
+void check_vertex_rows(const Mesh& mesh, const VertexTableModel& model) {
+    QCOMPARE(model.rowCount(), static_cast<int>(mesh.vertices.size()));
+    const std::size_t n = mesh.vertices.size();
+    for (std::size_t v : {std::size_t{0}, n / 2, n - 1}) {
+        const Vertex& x = mesh.vertices[v];
+        const int row = static_cast<int>(v);
+        QCOMPARE(display(model, row, VertexTableModel::IndexColumn), QString::number(v));
+        for (int c = 0; c < 3; ++c) {
+            QCOMPARE(display(model, row, VertexTableModel::PosX + c),
+                     Format::number(x.position[c]));
+            QCOMPARE(display(model, row, VertexTableModel::NrmX + c), Format::number(x.normal[c]));
+        }
+        for (int c = 0; c < 4; ++c)
+            QCOMPARE(display(model, row, VertexTableModel::TanX + c), Format::number(x.tangent[c]));
+        for (int c = 0; c < 2; ++c) {
+            QCOMPARE(display(model, row, VertexTableModel::Uv0U + c), Format::number(x.uv0[c]));
+            QCOMPARE(display(model, row, VertexTableModel::Uv1U + c), Format::number(x.uv1[c]));
+        }
+        QCOMPARE(display(model, row, VertexTableModel::ColR),
+                 mesh.colors.empty() ? QStringLiteral("—") : Format::number(mesh.colors[v].r));
+    }
+}
+
+} // namespace
+
+class ModelTests : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { QVERIFY(!test::all_assets().isEmpty()); }
+    void everyAssetMatchesTheEngine_data();
+    void everyAssetMatchesTheEngine();
+    void materialFieldsFollowTheGpuLayout();
+    void millionVertexTableSortsByPermutation();
+    void generatedTangentsAgreeWithRegeneration();
+    void frameKeepsTheBoxInView();
+    void pickHitsTheInstanceUnderTheRay();
+    void cullingMonitorFreezes();
+    void selectionFollowsActions();
+};
+
+void ModelTests::everyAssetMatchesTheEngine_data() {
+    QTest::addColumn<QString>("name");
+    for (const QString& n : test::all_assets()) QTest::newRow(qPrintable(n)) << n;
+}
+
+void ModelTests::everyAssetMatchesTheEngine() {
+    QFETCH(QString, name);
+    const LoadOutcome out = SceneLoadJob::loadNow(test::asset(name));
+    QVERIFY2(out.scene, qPrintable(out.error));
+    const Scene& s = *out.scene;
+    EditorContext context;
+    SceneTreeModel tree(context);
+    context.setScene(test::asset(name), out.scene, out.extras);
+
+    QCOMPARE(tree.rowCount(), static_cast<int>(s.scenes.size()));
+    if (!s.scenes.empty())
+        for (std::uint32_t r : s.scenes[static_cast<std::size_t>(s.displayed_scene)].roots)
+            check_node(s, tree, r);
+
+    AttributeModel attributes;
+    VertexTableModel vertices;
+    TriangleTableModel triangles;
+    for (std::size_t m = 0; m < s.meshes.size(); ++m) {
+        const Mesh& mesh = s.meshes[m];
+        const MeshRef ref{out.scene, static_cast<int>(m)};
+        attributes.setMesh(ref);
+        vertices.setMesh(ref);
+        triangles.setMesh(ref);
+        QCOMPARE(attributes.rowCount(), static_cast<int>(kVertexAttributeCount) + 1);
+        for (std::size_t a = 0; a < kVertexAttributeCount; ++a) {
+            const int row = static_cast<int>(a);
+            QCOMPARE(display(attributes, row, AttributeModel::ProvenanceColumn),
+                     Format::provenance(mesh.provenance[a]));
+            if (mesh.sources[a])
+                QCOMPARE(display(attributes, row, AttributeModel::CountColumn),
+                         QString::number(mesh.sources[a]->count));
+            const std::uint64_t gpu = attributes.gpuBytes(row);
+            QVERIFY(gpu == 0 || gpu == std::uint64_t{stream_stride(kAllVertexAttributes[a])} *
+                                           mesh.vertices.size());
+        }
+        QCOMPARE(attributes.gpuBytes(AttributeModel::kIndexRow), mesh.indices.size() * 4);
+        if (!mesh.vertices.empty()) check_vertex_rows(mesh, vertices);
+        QCOMPARE(triangles.rowCount(), static_cast<int>(mesh.triangle_count()));
+        if (mesh.triangle_count() > 0) {
+            const int last = static_cast<int>(mesh.triangle_count()) - 1;
+            for (int c = 0; c < 3; ++c)
+                QCOMPARE(display(triangles, last, TriangleTableModel::V0 + c),
+                         QString::number(mesh.indices[static_cast<std::size_t>(last) * 3 +
+                                                      static_cast<std::size_t>(c)]));
+        }
+    }
+
+    TextureTableModel textures;
+    textures.setScene(out.scene, out.extras);
+    QCOMPARE(textures.rowCount(), static_cast<int>(s.textures.size()));
+    for (std::size_t t = 0; t < s.textures.size(); ++t) {
+        QCOMPARE(display(textures, static_cast<int>(t), TextureTableModel::RoleColumn),
+                 Format::roles(s.textures[t].roles));
+        const std::int32_t image = s.textures[t].image;
+        if (image >= 0 && !s.images[static_cast<std::size_t>(image)].encoded.empty())
+            QVERIFY2(!out.extras->thumbnails[t].isNull(),
+                     "every sample texture decodes to a thumbnail");
+    }
+}
+
+void ModelTests::materialFieldsFollowTheGpuLayout() {
+    const LoadOutcome out = SceneLoadJob::loadNow(test::asset(QStringLiteral("DamagedHelmet")));
+    QVERIFY(out.scene);
+    const MaterialInstance& m = out.scene->materials[0];
+    MaterialFieldsModel model;
+    model.setMaterial(out.scene, out.extras, 0, to_gpu_material(m),
+                      MaterialFieldsModel::Source::Cpu);
+    QCOMPARE(model.rowCount(), 14);
+    // Offsets strictly increase and end at 76 (80-byte std430 record).
+    int last = -1;
+    for (int r = 0; r < model.rowCount(); ++r) {
+        const int offset =
+            model.data(model.index(r, MaterialFieldsModel::OffsetColumn), Qt::DisplayRole).toInt();
+        QVERIFY(offset > last);
+        last = offset;
+    }
+    QCOMPARE(last, 76);
+    QCOMPARE(display(model, 0, MaterialFieldsModel::ValueColumn), Format::vec(m.base_color_factor));
+    QCOMPARE(display(model, 0, MaterialFieldsModel::FieldColumn),
+             QStringLiteral("base_color_factor"));
+    QCOMPARE(model.textureOfRow(6), m.base_color.texture); // base_color_tex
+    QCOMPARE(model.textureOfRow(9), m.normal.texture);     // normal_tex
+    QVERIFY(
+        model.data(model.index(6, MaterialFieldsModel::ChainColumn), Qt::DecorationRole).isValid());
+    // A GPU record maps bindless slots back through the table it comes with.
+    GPUMaterialData gpu = to_gpu_material(m);
+    gpu.base_color_tex = 7;
+    std::vector<int> table(8, -1);
+    table[7] = 3;
+    model.setMaterial(out.scene, out.extras, 0, gpu, MaterialFieldsModel::Source::GpuReadback,
+                      table);
+    QCOMPARE(model.textureOfRow(6), 3);
+}
+
+void ModelTests::millionVertexTableSortsByPermutation() {
+    auto scene = std::make_shared<Scene>();
+    Mesh mesh;
+    constexpr std::size_t kSide = 1000;
+    mesh.vertices.resize(kSide * kSide);
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+        // x decreases with the index so a sort must really permute.
+        mesh.vertices[i].position = {static_cast<float>(kSide * kSide - i),
+                                     static_cast<float>(i % kSide), 0.0f};
+    }
+    mesh.indices = {0, 1, 2};
+    scene->meshes.push_back(std::move(mesh));
+    VertexTableModel model;
+    model.setMesh(MeshRef{scene, 0});
+    QCOMPARE(model.rowCount(), 1000000);
+    QCOMPARE(display(model, 999999, VertexTableModel::PosX), Format::number(1.0));
+    model.sort(VertexTableModel::PosX, Qt::AscendingOrder);
+    QCOMPARE(model.vertexOfRow(0), 999999);
+    QCOMPARE(model.rowOfVertex(999999), 0);
+    QCOMPARE(display(model, 0, VertexTableModel::IndexColumn), QStringLiteral("999999"));
+    model.sort(VertexTableModel::PosY, Qt::DescendingOrder);
+    QCOMPARE(display(model, 0, VertexTableModel::PosY), Format::number(999.0));
+    for (int v : {0, 12345, 999999}) QCOMPARE(model.vertexOfRow(model.rowOfVertex(v)), v);
+}
+
+void ModelTests::generatedTangentsAgreeWithRegeneration() {
+    // DamagedHelmet has no TANGENT: the importer generates MikkTSpace ones, so
+    // regenerating them must agree to float precision everywhere.
+    const LoadOutcome out = SceneLoadJob::loadNow(test::asset(QStringLiteral("DamagedHelmet")));
+    QVERIFY(out.scene);
+    const Mesh& mesh = out.scene->meshes[0];
+    QCOMPARE(mesh.provenance_of(VertexAttribute::Tangent), Provenance::Generated);
+    const TangentErrors e = tangent_errors(mesh, 0);
+    QCOMPARE(e.degrees.size(), mesh.vertices.size());
+    QVERIFY2(e.max < 1e-2, qPrintable(QString::number(e.max)));
+    QCOMPARE(e.flips, std::uint64_t{0});
+    VertexTableModel model;
+    model.setMesh(MeshRef{out.scene, 0});
+    model.setTangentErrors(std::make_shared<const TangentErrors>(e));
+    model.sort(VertexTableModel::TangentErrorColumn, Qt::DescendingOrder);
+    const int worst = model.vertexOfRow(0);
+    QCOMPARE(display(model, 0, VertexTableModel::TangentErrorColumn),
+             Format::number(e.degrees[static_cast<std::size_t>(worst)]));
+}
+
+void ModelTests::frameKeepsTheBoxInView() {
+    OrbitCamera cam;
+    cam.setAspect(1.5f);
+    const Aabb box = Aabb::from_min_max({-3, -1, -2}, {5, 4, 1});
+    cam.orbit(40, -25);
+    cam.frame(box);
+    const glm::mat4 vp = cam.spec().view_projection();
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 p((c & 1) ? box.max.x : box.min.x, (c & 2) ? box.max.y : box.min.y,
+                          (c & 4) ? box.max.z : box.min.z);
+        const glm::vec4 clip = vp * glm::vec4(p, 1.0f);
+        QVERIFY(clip.w > 0.0f);
+        QVERIFY(std::abs(clip.x / clip.w) <= 1.0001f);
+        QVERIFY(std::abs(clip.y / clip.w) <= 1.0001f);
+    }
+    CameraSpec spec;
+    std::string error;
+    QVERIFY2(parse_camera_spec(cam.toString(), spec, error), error.c_str());
+}
+
+void ModelTests::pickHitsTheInstanceUnderTheRay() {
+    const LoadOutcome out = SceneLoadJob::loadNow(QStringLiteral("builtin:default"));
+    QVERIFY(out.scene);
+    const Scene& s = *out.scene;
+    OrbitCamera cam;
+    cam.frame(s.bounds);
+    // Aim at the centre of a solid instance from outside the scene: it (or something in
+    // front of it) must be hit, and the hit must lie on the ray inside that instance's box.
+    for (std::size_t i = 0; i < s.instances.size(); i += 7) {
+        const Aabb& box = s.instances[i].world_bounds;
+        const glm::vec3 dir = glm::normalize(box.center() - cam.eye());
+        const PickHit hit = pick(s, cam.eye(), dir, [](std::size_t) { return true; });
+        QVERIFY(hit);
+        const glm::vec3 p = cam.eye() + dir * hit.distance;
+        const Aabb& hit_box = s.instances[static_cast<std::size_t>(hit.instance)].world_bounds;
+        QVERIFY(glm::all(glm::greaterThanEqual(p, hit_box.min - 1e-3f)) &&
+                glm::all(glm::lessThanEqual(p, hit_box.max + 1e-3f)));
+    }
+    // Hidden instances are not pickable.
+    const PickHit none = pick(s, cam.eye(), cam.forward(), [](std::size_t) { return false; });
+    QVERIFY(!none);
+}
+
+void ModelTests::cullingMonitorFreezes() {
+    const LoadOutcome out = SceneLoadJob::loadNow(QStringLiteral("builtin:default"));
+    EditorContext context;
+    CullingMonitor monitor(context);
+    context.setScene(QStringLiteral("builtin:default"), out.scene, out.extras);
+    OrbitCamera cam;
+    cam.frame(out.scene->bounds);
+    monitor.update(cam.spec());
+    const std::uint64_t total = out.scene->instances.size();
+    QCOMPARE(monitor.latest()->cpu.total, total);
+    QCOMPARE(monitor.latest()->cpu.visible, total); // framed: everything in view
+    monitor.setFrozen(true);
+    CameraSpec away = cam.spec();
+    away.target = away.eye + (away.eye - cam.target()); // look away from the scene
+    monitor.update(away);
+    QCOMPARE(monitor.latest()->cpu.visible, total); // still culling with the frozen camera
+    monitor.setFrozen(false);
+    QVERIFY(monitor.latest()->cpu.visible < total);
+    QVERIFY(monitor.history().size() >= 4);
+}
+
+void ModelTests::selectionFollowsActions() {
+    const LoadOutcome out = SceneLoadJob::loadNow(test::asset(QStringLiteral("Duck")));
+    EditorContext context;
+    SceneTreeModel tree(context);
+    context.setScene(QStringLiteral("Duck"), out.scene, out.extras);
+    QSignalSpy selection(&context, &EditorContext::selectionChanged);
+    int mesh_node = -1;
+    for (std::size_t n = 0; n < out.scene->nodes.size(); ++n)
+        if (out.scene->nodes[n].mesh >= 0) mesh_node = static_cast<int>(n);
+    QVERIFY(mesh_node >= 0);
+    context.selectNode(mesh_node);
+    QCOMPARE(selection.count(), 1);
+    QCOMPARE(context.selection().node, mesh_node);
+    QVERIFY(context.selection().mesh >= 0);
+    QCOMPARE(
+        context.selection().material,
+        static_cast<int>(
+            out.scene->meshes[static_cast<std::size_t>(context.selection().mesh)].material_id));
+    // Unticking a node is an action out of the model, applied by the owner of the context.
+    QSignalSpy requested(&tree, &SceneTreeModel::visibilityRequested);
+    QVERIFY(tree.setData(tree.indexOfNode(mesh_node), Qt::Unchecked, Qt::CheckStateRole));
+    QCOMPARE(requested.count(), 1);
+    QVERIFY(context.nodeVisible(mesh_node));
+    context.setNodeVisible(mesh_node, false);
+    QCOMPARE(tree.indexOfNode(mesh_node).data(Qt::CheckStateRole).toInt(),
+             static_cast<int>(Qt::Unchecked));
+    for (std::size_t i = 0; i < out.scene->instances.size(); ++i)
+        if (static_cast<int>(out.scene->instances[i].node_id) == mesh_node)
+            QVERIFY(!context.instanceVisible(i));
+}
+
+QTEST_MAIN(ModelTests)
+#include "model_tests.moc"

@@ -1,0 +1,237 @@
+// The editor window end to end under Xvfb: loading, selection across docks,
+// scene switching, cancel, broken files, languages, layout persistence.
+#include <QDockWidget>
+#include <QMenuBar>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTreeView>
+#include <QVulkanInstance>
+#include <QtTest>
+#include <fstream>
+
+#include "culling_dock.h"
+#include "culling_monitor.h"
+#include "editor_settings.h"
+#include "gpu_viewport.h"
+#include "log_dock.h"
+#include "main_window.h"
+#include "material_dock.h"
+#include "material_fields_model.h"
+#include "mesh_dock.h"
+#include "scene_tree_dock.h"
+#include "scene_tree_model.h"
+#include "test_assets.h"
+#include "texture_dock.h"
+#include "texture_table_model.h"
+#include "vertex_table_model.h"
+#include "viewport_window.h"
+
+using namespace sherpa;
+using namespace sherpa::editor;
+
+namespace {
+
+constexpr int kLoadTimeoutMs = 60000;
+
+bool load(MainWindow& w, const QString& spec) {
+    QSignalSpy loaded(&w, &MainWindow::sceneLoaded);
+    QSignalSpy failed(&w, &MainWindow::loadFailed);
+    w.openScene(spec);
+    QElapsedTimer t;
+    t.start();
+    while (loaded.isEmpty() && failed.isEmpty() && t.elapsed() < kLoadTimeoutMs)
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 20);
+    return loaded.count() == 1;
+}
+
+std::uint64_t resident_kib() {
+    std::ifstream statm("/proc/self/statm");
+    std::uint64_t size = 0, resident = 0;
+    statm >> size >> resident;
+    return resident * 4; // 4 KiB pages
+}
+
+} // namespace
+
+class WindowTests : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void cleanupTestCase() { window_.reset(); }
+    void opensEveryAsset();
+    void selectionReachesEveryDock();
+    void pickingSelectsInTheTree();
+    void failedLoadKeepsTheScene();
+    void cancelKeepsTheScene();
+    void switchingFiftyTimesDoesNotGrow();
+    void languagesSwitchAtRuntime();
+    void layoutIsSavedAndRestored();
+
+private:
+    QVulkanInstance vulkan_;
+    std::unique_ptr<MainWindow> window_;
+};
+
+void WindowTests::initTestCase() {
+    QStandardPaths::setTestModeEnabled(true); // settings go to a test location
+    QSettings().clear();
+    GpuViewport::configureInstance(vulkan_);
+    vulkan_.create(); // optional: without Vulkan the viewport stays empty
+    window_ = std::make_unique<MainWindow>(vulkan_.isValid() ? &vulkan_ : nullptr);
+    window_->setLanguage(QStringLiteral("en"));
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    QVERIFY(load(*window_, QStringLiteral("builtin:default")));
+}
+
+void WindowTests::opensEveryAsset() {
+    for (const QString& name : test::all_assets()) {
+        QVERIFY2(load(*window_, test::asset(name)), qPrintable(name));
+        const Scene* s = window_->context().scene();
+        QCOMPARE(window_->context().sceneSpec(), test::asset(name));
+        QCOMPARE(window_->sceneTreeDock()->model()->rowCount(), static_cast<int>(s->scenes.size()));
+        QCOMPARE(window_->textureDock()->model()->rowCount(), static_cast<int>(s->textures.size()));
+        QCOMPARE(window_->cullingMonitor().latest()->cpu.total, s->instances.size());
+    }
+}
+
+void WindowTests::selectionReachesEveryDock() {
+    QVERIFY(load(*window_, test::asset(QStringLiteral("DamagedHelmet"))));
+    const Scene& s = *window_->context().scene();
+    // Select through the tree view as a user would: the node's primitive row.
+    QTreeView* tree = window_->sceneTreeDock()->view();
+    const QModelIndex node = tree->model()->index(0, 0, tree->model()->index(0, 0));
+    QVERIFY(node.isValid());
+    tree->setCurrentIndex(node);
+    QCOMPARE(window_->context().selection().node, 0);
+    const int mesh = window_->context().selection().mesh;
+    QVERIFY(mesh >= 0);
+    QCOMPARE(window_->meshDock()->vertices()->rowCount(),
+             static_cast<int>(s.meshes[static_cast<std::size_t>(mesh)].vertices.size()));
+    QCOMPARE(window_->materialDock()->model()->rowCount(), 14);
+    QCOMPARE(window_->materialDock()->model()->textureOfRow(6), s.materials[0].base_color.texture);
+    // Jump to a vertex: the table scrolls there and the selection says so.
+    window_->meshDock()->jumpToVertex(12345);
+    QCOMPARE(window_->context().selection().vertex, 12345);
+    // Tangent comparison runs off the UI thread and fills the sortable column.
+    QSignalSpy ready(window_->meshDock(), &MeshDock::tangentErrorsReady);
+    window_->meshDock()->computeTangentErrors();
+    QVERIFY(ready.wait(kLoadTimeoutMs));
+    QVERIFY(
+        window_->meshDock()
+            ->vertices()
+            ->data(window_->meshDock()->vertices()->index(0, VertexTableModel::TangentErrorColumn),
+                   Qt::DisplayRole)
+            .toString() != QStringLiteral("—"));
+    // Filter the tree: only matching names (and their ancestors) stay.
+    window_->sceneTreeDock()->setFilter(QStringLiteral("no such node"));
+    QCOMPARE(tree->model()->rowCount(), 0);
+    window_->sceneTreeDock()->setFilter(QString());
+    QCOMPARE(tree->model()->rowCount(), static_cast<int>(s.scenes.size()));
+}
+
+void WindowTests::pickingSelectsInTheTree() {
+    QVERIFY(load(*window_, test::asset(QStringLiteral("Duck"))));
+    const int instance = window_->pickAt(QPointF(0.0, 0.0)); // framed: the duck is in the middle
+    QVERIFY(instance >= 0);
+    const int node = static_cast<int>(
+        window_->context().scene()->instances[static_cast<std::size_t>(instance)].node_id);
+    QCOMPARE(window_->context().selection().node, node);
+    QVERIFY(window_->context().selection().triangle >= 0);
+    const QModelIndex current = window_->sceneTreeDock()->view()->currentIndex();
+    QCOMPARE(current.data(SceneTreeModel::NodeRole).toInt(), node);
+    QCOMPARE(window_->pickAt(QPointF(0.99, 0.99)), -1); // a corner shows only background
+    QCOMPARE(window_->context().selection().node, -1);
+}
+
+void WindowTests::failedLoadKeepsTheScene() {
+    QVERIFY(load(*window_, test::asset(QStringLiteral("Box"))));
+    const Scene* before = window_->context().scene();
+    const int errors = window_->logDock()->errorCount();
+    for (const char* broken : {"invalid_json.gltf", "truncated.glb", "missing_buffer.gltf"}) {
+        const QString path = QStringLiteral(SHERPA_TEST_DATA_DIR "/") + QLatin1String(broken);
+        QVERIFY(!load(*window_, path));
+        QCOMPARE(window_->context().scene(), before);
+        QCOMPARE(window_->context().sceneSpec(), test::asset(QStringLiteral("Box")));
+    }
+    QCOMPARE(window_->logDock()->errorCount(), errors + 3);
+    QVERIFY(!load(*window_, QStringLiteral("/no/such/file.gltf")));
+    QCOMPARE(window_->context().scene(), before);
+}
+
+void WindowTests::cancelKeepsTheScene() {
+    QVERIFY(load(*window_, test::asset(QStringLiteral("Box"))));
+    const Scene* before = window_->context().scene();
+    QSignalSpy loaded(window_.get(), &MainWindow::sceneLoaded);
+    QSignalSpy canceled(window_.get(), &MainWindow::loadCanceled);
+    window_->openScene(test::asset(QStringLiteral("DamagedHelmet")));
+    window_->cancelLoad();
+    QCOMPARE(canceled.count(), 1);
+    QVERIFY(window_->logDock()->text().contains(QStringLiteral("cancelled")));
+    QTest::qWait(1500); // the worker finishes in the background; its result must be dropped
+    QCOMPARE(loaded.count(), 0);
+    QCOMPARE(window_->context().scene(), before);
+    // A new load after a cancel works normally.
+    QVERIFY(load(*window_, QStringLiteral("builtin:grid?n=10")));
+}
+
+void WindowTests::switchingFiftyTimesDoesNotGrow() {
+    const QStringList specs = {
+        test::asset(QStringLiteral("Duck")), QStringLiteral("builtin:default"),
+        test::asset(QStringLiteral("Suzanne")), test::asset(QStringLiteral("BoxTextured")),
+        QStringLiteral("builtin:grid?n=20")};
+    std::uint64_t warm = 0;
+    std::int64_t gpu_objects = -1;
+    for (int i = 0; i < 50; ++i) {
+        QVERIFY(load(*window_, specs[i % specs.size()]));
+        QCoreApplication::processEvents();
+        if (i == specs.size() * 2 - 1) { // after two full rounds: allocator pools are warm
+            warm = resident_kib();
+            if (window_->gpuObjectCount) gpu_objects = window_->gpuObjectCount();
+        }
+        if (i == 49 && window_->gpuObjectCount && gpu_objects >= 0) {
+            // Same scene as at the warm point (50 - 10 is a multiple of 5): same objects.
+            QCOMPARE(window_->gpuObjectCount(), gpu_objects);
+        }
+    }
+    const std::uint64_t end = resident_kib();
+    qInfo("resident memory after warm-up %llu KiB, after 50 switches %llu KiB",
+          static_cast<unsigned long long>(warm), static_cast<unsigned long long>(end));
+    // Forty more switches over the same scenes may not keep growing; 32 MiB of slack
+    // covers allocator and Qt cache noise, a leak of the scenes themselves is far more.
+    QVERIFY2(end < warm + 32 * 1024, "memory grows with scene switches");
+}
+
+void WindowTests::languagesSwitchAtRuntime() {
+    const auto file_menu = [this] { return window_->menuBar()->actions().at(0)->text(); };
+    QVERIFY(window_->setLanguage(QStringLiteral("de")));
+    QCOMPARE(file_menu(), QStringLiteral("&Datei"));
+    QCOMPARE(window_->sceneTreeDock()->windowTitle(), QStringLiteral("Szenenbaum"));
+    QVERIFY(window_->setLanguage(QStringLiteral("zh_CN")));
+    QCOMPARE(file_menu(), QStringLiteral("文件(&F)"));
+    QCOMPARE(window_->cullingDock()->windowTitle(), QStringLiteral("剔除统计"));
+    QCOMPARE(
+        window_->textureDock()->model()->headerData(0, Qt::Horizontal, Qt::DisplayRole).toString(),
+        QStringLiteral("纹理"));
+    QVERIFY(!window_->setLanguage(QStringLiteral("xx")));
+    QVERIFY(window_->setLanguage(QStringLiteral("en")));
+    QCOMPARE(file_menu(), QStringLiteral("&File"));
+}
+
+void WindowTests::layoutIsSavedAndRestored() {
+    window_->cullingDock()->setFloating(true);
+    window_->logDock()->hide();
+    window_->close(); // saves geometry and dock state
+    MainWindow second(nullptr);
+    QVERIFY(second.cullingDock()->isFloating());
+    QVERIFY(second.logDock()->isHidden());
+    QVERIFY(!EditorSettings().recentFiles().isEmpty());
+    // The last file switched to (built-in scenes are not files).
+    QCOMPARE(EditorSettings().recentFiles().value(0), test::asset(QStringLiteral("BoxTextured")));
+    second.cullingDock()->setFloating(false);
+    second.logDock()->show();
+    second.close();
+}
+
+QTEST_MAIN(WindowTests)
+#include "window_tests.moc"

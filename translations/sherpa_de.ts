@@ -1,0 +1,987 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de">
+<context>
+    <name>Format</name>
+    <message>
+        <source>%1 B</source>
+        <translation>%1 B</translation>
+    </message>
+    <message>
+        <source>%1 KiB</source>
+        <translation>%1 KiB</translation>
+    </message>
+    <message>
+        <source>%1 MiB</source>
+        <translation>%1 MiB</translation>
+    </message>
+    <message>
+        <source>unknown (%1)</source>
+        <translation>unbekannt (%1)</translation>
+    </message>
+    <message>
+        <source>authored</source>
+        <translation>aus der Datei</translation>
+    </message>
+    <message>
+        <source>generated</source>
+        <translation>erzeugt</translation>
+    </message>
+    <message>
+        <source>defaulted</source>
+        <translation>Standardwert</translation>
+    </message>
+    <message>
+        <source>colour (sRGB)</source>
+        <translation>Farbe (sRGB)</translation>
+    </message>
+    <message>
+        <source>linear data</source>
+        <translation>lineare Daten</translation>
+    </message>
+    <message>
+        <source>normal map</source>
+        <translation>Normal-Map</translation>
+    </message>
+    <message>
+        <source>unused</source>
+        <translation>unbenutzt</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+</context>
+<context>
+    <name>ViewCatalog</name>
+    <message>
+        <source>Lit</source>
+        <translation>Beleuchtet</translation>
+    </message>
+    <message>
+        <source>Normals</source>
+        <translation>Normalen</translation>
+    </message>
+    <message>
+        <source>Tangents</source>
+        <translation>Tangenten</translation>
+    </message>
+    <message>
+        <source>Bitangents</source>
+        <translation>Bitangenten</translation>
+    </message>
+    <message>
+        <source>Handedness (tangent w)</source>
+        <translation>Händigkeit (Tangente w)</translation>
+    </message>
+    <message>
+        <source>UV 0</source>
+        <translation>UV 0</translation>
+    </message>
+    <message>
+        <source>UV 1</source>
+        <translation>UV 1</translation>
+    </message>
+    <message>
+        <source>UV 0 checker</source>
+        <translation>UV-0-Schachbrett</translation>
+    </message>
+    <message>
+        <source>UV 1 checker</source>
+        <translation>UV-1-Schachbrett</translation>
+    </message>
+    <message>
+        <source>Base colour</source>
+        <translation>Grundfarbe</translation>
+    </message>
+    <message>
+        <source>Metallic</source>
+        <translation>Metallisch</translation>
+    </message>
+    <message>
+        <source>Roughness</source>
+        <translation>Rauheit</translation>
+    </message>
+    <message>
+        <source>Occlusion</source>
+        <translation>Verdeckung</translation>
+    </message>
+    <message>
+        <source>Emissive</source>
+        <translation>Emission</translation>
+    </message>
+    <message>
+        <source>Geometric vs shading normal</source>
+        <translation>Geometrie- vs. Shading-Normale</translation>
+    </message>
+    <message>
+        <source>Tangent provenance</source>
+        <translation>Herkunft der Tangenten</translation>
+    </message>
+    <message>
+        <source>Shading normal</source>
+        <translation>Shading-Normale</translation>
+    </message>
+    <message>
+        <source>Wireframe</source>
+        <translation>Drahtgitter</translation>
+    </message>
+    <message>
+        <source>Normal glyphs</source>
+        <translation>Normalen-Glyphen</translation>
+    </message>
+    <message>
+        <source>Tangent glyphs</source>
+        <translation>Tangenten-Glyphen</translation>
+    </message>
+    <message>
+        <source>Bitangent glyphs</source>
+        <translation>Bitangenten-Glyphen</translation>
+    </message>
+    <message>
+        <source>Bounding boxes</source>
+        <translation>Hüllquader</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::AttributeModel</name>
+    <message>
+        <source>indices</source>
+        <translation>Indizes</translation>
+    </message>
+    <message>
+        <source>authored</source>
+        <translation>aus der Datei</translation>
+    </message>
+    <message>
+        <source>generated</source>
+        <translation>erzeugt</translation>
+    </message>
+    <message>
+        <source>not uploaded</source>
+        <translation>nicht hochgeladen</translation>
+    </message>
+    <message>
+        <source>yes (%1 values)</source>
+        <translation>ja (%1 Werte)</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>%1 (stride %2)</source>
+        <translation>%1 (Schrittweite %2)</translation>
+    </message>
+    <message>
+        <source>Attribute</source>
+        <translation>Attribut</translation>
+    </message>
+    <message>
+        <source>Provenance</source>
+        <translation>Herkunft</translation>
+    </message>
+    <message>
+        <source>Accessor</source>
+        <translation>Accessor</translation>
+    </message>
+    <message>
+        <source>Component type</source>
+        <translation>Komponententyp</translation>
+    </message>
+    <message>
+        <source>Normalized</source>
+        <translation>Normalisiert</translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation>Anzahl</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>Min</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Max</translation>
+    </message>
+    <message>
+        <source>Sparse</source>
+        <translation>Sparse</translation>
+    </message>
+    <message>
+        <source>Buffer view</source>
+        <translation>Buffer-View</translation>
+    </message>
+    <message>
+        <source>GPU bytes</source>
+        <translation>GPU-Bytes</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::CullingDock</name>
+    <message>
+        <source>Culling Statistics</source>
+        <translation>Culling-Statistik</translation>
+    </message>
+    <message>
+        <source>Total</source>
+        <translation>Gesamt</translation>
+    </message>
+    <message>
+        <source>Visible</source>
+        <translation>Sichtbar</translation>
+    </message>
+    <message>
+        <source>Culled</source>
+        <translation>Verworfen</translation>
+    </message>
+    <message>
+        <source>False positives</source>
+        <translation>Falsch positiv</translation>
+    </message>
+    <message>
+        <source>Draw calls</source>
+        <translation>Draw-Calls</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>Dreiecke</translation>
+    </message>
+    <message>
+        <source>CPU cull ms</source>
+        <translation>CPU-Culling ms</translation>
+    </message>
+    <message>
+        <source>GPU cull ms</source>
+        <translation>GPU-Culling ms</translation>
+    </message>
+    <message>
+        <source>visible</source>
+        <translation>sichtbar</translation>
+    </message>
+    <message>
+        <source>culled</source>
+        <translation>verworfen</translation>
+    </message>
+    <message>
+        <source>update</source>
+        <translation>Aktualisierung</translation>
+    </message>
+    <message>
+        <source>No scene.</source>
+        <translation>Keine Szene.</translation>
+    </message>
+    <message>
+        <source>Pass &quot;%1&quot;: method %2, %3%4</source>
+        <translation>Durchgang „%1“: Methode %2, %3%4</translation>
+    </message>
+    <message>
+        <source>, culling camera frozen</source>
+        <translation>, Culling-Kamera eingefroren</translation>
+    </message>
+    <message>
+        <source>CPU/GPU agreement: GPU culling path not available in this build</source>
+        <translation>CPU/GPU-Übereinstimmung: GPU-Culling ist in diesem Build nicht verfügbar</translation>
+    </message>
+    <message>
+        <source>CPU/GPU agreement: ✔ both keep %1</source>
+        <translation>CPU/GPU-Übereinstimmung: ✔ beide behalten %1</translation>
+    </message>
+    <message>
+        <source>CPU/GPU agreement: ✘ CPU %1, GPU %2</source>
+        <translation>CPU/GPU-Übereinstimmung: ✘ CPU %1, GPU %2</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::LogDock</name>
+    <message>
+        <source>Log</source>
+        <translation>Protokoll</translation>
+    </message>
+    <message>
+        <source>info</source>
+        <translation>Info</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>Fehler</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::MainWindow</name>
+    <message>
+        <source>Loading %1 cancelled; the result is discarded.</source>
+        <translation>Laden von %1 abgebrochen; das Ergebnis wird verworfen.</translation>
+    </message>
+    <message>
+        <source>frame %1 ms</source>
+        <translation>Bild %1 ms</translation>
+    </message>
+    <message>
+        <source>Loading %1…</source>
+        <translation>Lade %1 …</translation>
+    </message>
+    <message>
+        <source>parse, geometry, tangents…</source>
+        <translation>Parsen, Geometrie, Tangenten …</translation>
+    </message>
+    <message>
+        <source>textures %1/%2</source>
+        <translation>Texturen %1/%2</translation>
+    </message>
+    <message>
+        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms).</source>
+        <translation>%1 in %2 ms geladen (Engine %3 ms, Vorschaubilder %4 ms).</translation>
+    </message>
+    <message>
+        <source>Could not load %1; the current scene is kept.</source>
+        <translation>%1 konnte nicht geladen werden; die aktuelle Szene bleibt.</translation>
+    </message>
+    <message>
+        <source>Load failed</source>
+        <translation>Laden fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Could not load %1:
+%2
+
+The current scene is kept.</source>
+        <translation>%1 konnte nicht geladen werden:
+%2
+
+Die aktuelle Szene bleibt erhalten.</translation>
+    </message>
+    <message>
+        <source>No scene. Open a glTF file or a built-in scene from the File menu.</source>
+        <translation>Keine Szene. Öffnen Sie eine glTF-Datei oder eine eingebaute Szene über das Menü „Datei“.</translation>
+    </message>
+    <message>
+        <source>Sherpa</source>
+        <translation>Sherpa</translation>
+    </message>
+    <message>
+        <source>%1: %2 nodes, %3 primitives, %4 instances, %5 materials, %6 textures</source>
+        <translation>%1: %2 Knoten, %3 Primitive, %4 Instanzen, %5 Materialien, %6 Texturen</translation>
+    </message>
+    <message>
+        <source>%1 — Sherpa</source>
+        <translation>%1 — Sherpa</translation>
+    </message>
+    <message>
+        <source>Texture cache directory</source>
+        <translation>Verzeichnis des Textur-Caches</translation>
+    </message>
+    <message>
+        <source>(the scene has no cameras)</source>
+        <translation>(die Szene hat keine Kameras)</translation>
+    </message>
+    <message>
+        <source>Camera %1</source>
+        <translation>Kamera %1</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>Ö&amp;ffnen …</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <source>&amp;Built-in Scenes</source>
+        <translation>&amp;Eingebaute Szenen</translation>
+    </message>
+    <message>
+        <source>Default scene</source>
+        <translation>Standardszene</translation>
+    </message>
+    <message>
+        <source>Grid, 10 × 10</source>
+        <translation>Raster, 10 × 10</translation>
+    </message>
+    <message>
+        <source>Grid, 100 × 100</source>
+        <translation>Raster, 100 × 100</translation>
+    </message>
+    <message>
+        <source>Grid, 1000 × 1000</source>
+        <translation>Raster, 1000 × 1000</translation>
+    </message>
+    <message>
+        <source>Re&amp;load</source>
+        <translation>&amp;Neu laden</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Schließen</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>Clear list</source>
+        <translation>Liste leeren</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Debug View</source>
+        <translation>&amp;Debug-Ansicht</translation>
+    </message>
+    <message>
+        <source>View: %1</source>
+        <translation>Ansicht: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Overlays</source>
+        <translation>Ü&amp;berlagerungen</translation>
+    </message>
+    <message>
+        <source>Frame &amp;All (F)</source>
+        <translation>&amp;Alles einpassen (F)</translation>
+    </message>
+    <message>
+        <source>Frame &amp;Selection (Shift+F)</source>
+        <translation>Au&amp;swahl einpassen (Umschalt+F)</translation>
+    </message>
+    <message>
+        <source>&amp;Fly Mode (WASD, Q/E)</source>
+        <translation>&amp;Flugmodus (WASD, Q/E)</translation>
+    </message>
+    <message>
+        <source>glTF &amp;Cameras</source>
+        <translation>glTF-&amp;Kameras</translation>
+    </message>
+    <message>
+        <source>&amp;Docks</source>
+        <translation>&amp;Docks</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Layout</source>
+        <translation>Layout &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <source>&amp;Culling</source>
+        <translation>&amp;Culling</translation>
+    </message>
+    <message>
+        <source>&amp;Freeze Culling Camera</source>
+        <translation>Culling-Kamera &amp;einfrieren</translation>
+    </message>
+    <message>
+        <source>&amp;Colour Boxes by Result</source>
+        <translation>Quader nach Ergebnis &amp;färben</translation>
+    </message>
+    <message>
+        <source>&amp;Method</source>
+        <translation>&amp;Methode</translation>
+    </message>
+    <message>
+        <source>Bounding sphere</source>
+        <translation>Hüllkugel</translation>
+    </message>
+    <message>
+        <source>P-vertex (AABB)</source>
+        <translation>P-Vertex (AABB)</translation>
+    </message>
+    <message>
+        <source>Exact (SAT)</source>
+        <translation>Exakt (SAT)</translation>
+    </message>
+    <message>
+        <source>&amp;Path</source>
+        <translation>&amp;Pfad</translation>
+    </message>
+    <message>
+        <source>CPU</source>
+        <translation>CPU</translation>
+    </message>
+    <message>
+        <source>GPU (not available in this build)</source>
+        <translation>GPU (in diesem Build nicht verfügbar)</translation>
+    </message>
+    <message>
+        <source>&amp;Settings</source>
+        <translation>&amp;Einstellungen</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <source>&amp;Texture Quality</source>
+        <translation>&amp;Texturqualität</translation>
+    </message>
+    <message>
+        <source>Fast</source>
+        <translation>Schnell</translation>
+    </message>
+    <message>
+        <source>Balanced</source>
+        <translation>Ausgewogen</translation>
+    </message>
+    <message>
+        <source>Best</source>
+        <translation>Beste</translation>
+    </message>
+    <message>
+        <source>Texture Cache &amp;Directory…</source>
+        <translation>&amp;Verzeichnis des Textur-Caches …</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>&amp;About Sherpa</source>
+        <translation>&amp;Über Sherpa</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>Über &amp;Qt</translation>
+    </message>
+    <message>
+        <source>Main Toolbar</source>
+        <translation>Hauptwerkzeugleiste</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>(no recent files)</source>
+        <translation>(keine zuletzt geöffneten Dateien)</translation>
+    </message>
+    <message>
+        <source>Open glTF scene</source>
+        <translation>glTF-Szene öffnen</translation>
+    </message>
+    <message>
+        <source>glTF scenes (*.gltf *.glb);;All files (*)</source>
+        <translation>glTF-Szenen (*.gltf *.glb);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>none (Vulkan unavailable)</source>
+        <translation>keines (Vulkan nicht verfügbar)</translation>
+    </message>
+    <message>
+        <source>About Sherpa</source>
+        <translation>Über Sherpa</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Sherpa %1&lt;/h3&gt;&lt;p&gt;A glTF 2.0 scene inspection editor.&lt;/p&gt;&lt;p&gt;Qt %2 (built with %3)&lt;br&gt;Vulkan devices: %4&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Sherpa %1&lt;/h3&gt;&lt;p&gt;Ein Editor zur Untersuchung von glTF-2.0-Szenen.&lt;/p&gt;&lt;p&gt;Qt %2 (gebaut mit %3)&lt;br&gt;Vulkan-Geräte: %4&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>No Vulkan instance: the viewport cannot render.</source>
+        <translation>Keine Vulkan-Instanz: der Viewport kann nicht rendern.</translation>
+    </message>
+    <message>
+        <source>The renderer could not start: %1</source>
+        <translation>Der Renderer konnte nicht starten: %1</translation>
+    </message>
+    <message>
+        <source>Rendering on %1 (renderer ready in %2 ms).</source>
+        <translation>Rendern auf %1 (Renderer nach %2 ms bereit).</translation>
+    </message>
+    <message>
+        <source>GPU upload failed: %1</source>
+        <translation>GPU-Upload fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Rendering stopped: %1</source>
+        <translation>Rendern angehalten: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::MaterialDock</name>
+    <message>
+        <source>Material SSBO</source>
+        <translation>Material-SSBO</translation>
+    </message>
+    <message>
+        <source>No material selected.</source>
+        <translation>Kein Material ausgewählt.</translation>
+    </message>
+    <message>
+        <source>(unnamed)</source>
+        <translation>(unbenannt)</translation>
+    </message>
+    <message>
+        <source>Material %1 %2: 80-byte std430 record read back from the GPU material buffer at offset %3.</source>
+        <translation>Material %1 %2: 80-Byte-std430-Datensatz, aus dem GPU-Materialpuffer bei Offset %3 zurückgelesen.</translation>
+    </message>
+    <message>
+        <source>Material %1 %2: the importer&apos;s CPU record (no renderer attached, so texture fields hold glTF texture indices, not bindless slots).</source>
+        <translation>Material %1 %2: der CPU-Datensatz des Importers (kein Renderer angebunden, daher enthalten die Texturfelder glTF-Texturindizes, keine Bindless-Slots).</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::MaterialFieldsModel</name>
+    <message>
+        <source>texture %1</source>
+        <translation>Textur %1</translation>
+    </message>
+    <message>
+        <source>bufferView %1</source>
+        <translation>bufferView %1</translation>
+    </message>
+    <message>
+        <source>generated</source>
+        <translation>erzeugt</translation>
+    </message>
+    <message>
+        <source> → image %1 (%2)</source>
+        <translation> → Bild %1 (%2)</translation>
+    </message>
+    <message>
+        <source> → cache: not available</source>
+        <translation> → Cache: nicht verfügbar</translation>
+    </message>
+    <message>
+        <source>Double-click to show this texture in the texture dock</source>
+        <translation>Doppelklick zeigt diese Textur im Textur-Dock</translation>
+    </message>
+    <message>
+        <source>none (0x%1)</source>
+        <translation>keine (0x%1)</translation>
+    </message>
+    <message>
+        <source>default texture</source>
+        <translation>Standardtextur</translation>
+    </message>
+    <message>
+        <source>Offset</source>
+        <translation>Offset</translation>
+    </message>
+    <message>
+        <source>Field</source>
+        <translation>Feld</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>glTF property</source>
+        <translation>glTF-Eigenschaft</translation>
+    </message>
+    <message>
+        <source>Texture chain</source>
+        <translation>Texturkette</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::MeshDock</name>
+    <message>
+        <source>max %1°, mean %2°, %3 handedness flips</source>
+        <translation>max. %1°, Mittel %2°, %3 Händigkeitswechsel</translation>
+    </message>
+    <message>
+        <source>Mesh Attributes</source>
+        <translation>Mesh-Attribute</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>Vertices</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>Dreiecke</translation>
+    </message>
+    <message>
+        <source>Jump to vertex</source>
+        <translation>Zu Vertex springen</translation>
+    </message>
+    <message>
+        <source>Compare tangents</source>
+        <translation>Tangenten vergleichen</translation>
+    </message>
+    <message>
+        <source>Regenerate MikkTSpace tangents and show the angle to the mesh&apos;s tangents per vertex (sortable column)</source>
+        <translation>MikkTSpace-Tangenten neu erzeugen und je Vertex den Winkel zu den Tangenten des Meshes zeigen (sortierbare Spalte)</translation>
+    </message>
+    <message>
+        <source>No primitive selected. Select a node or primitive in the scene tree or click an object in the viewport.</source>
+        <translation>Kein Primitiv ausgewählt. Wählen Sie einen Knoten oder ein Primitiv im Szenenbaum oder klicken Sie ein Objekt im Viewport an.</translation>
+    </message>
+    <message>
+        <source>Mesh %1 primitive %2 &quot;%3&quot;: %4 vertices (file: %5), %6 triangles, material %7, %8 on the GPU%9</source>
+        <translation>Mesh %1 Primitiv %2 „%3“: %4 Vertices (Datei: %5), %6 Dreiecke, Material %7, %8 auf der GPU%9</translation>
+    </message>
+    <message>
+        <source> (unwelded for flat normals)</source>
+        <translation> (für flache Normalen aufgetrennt)</translation>
+    </message>
+    <message>
+        <source>Comparing…</source>
+        <translation>Vergleiche …</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::SceneTreeDock</name>
+    <message>
+        <source>Scene Tree</source>
+        <translation>Szenenbaum</translation>
+    </message>
+    <message>
+        <source>Filter by name…</source>
+        <translation>Nach Namen filtern …</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::SceneTreeModel</name>
+    <message>
+        <source>Scene %1</source>
+        <translation>Szene %1</translation>
+    </message>
+    <message>
+        <source>Node %1</source>
+        <translation>Knoten %1</translation>
+    </message>
+    <message>
+        <source>Primitive %1</source>
+        <translation>Primitiv %1</translation>
+    </message>
+    <message>
+        <source>Material %1</source>
+        <translation>Material %1</translation>
+    </message>
+    <message>
+        <source>Light %1</source>
+        <translation>Licht %1</translation>
+    </message>
+    <message>
+        <source>Camera %1</source>
+        <translation>Kamera %1</translation>
+    </message>
+    <message>
+        <source>displayed</source>
+        <translation>angezeigt</translation>
+    </message>
+    <message>
+        <source>matrix</source>
+        <translation>Matrix</translation>
+    </message>
+    <message>
+        <source>T %1  R %2  S %3</source>
+        <translation>T %1  R %2  S %3</translation>
+    </message>
+    <message>
+        <source>skipped: %1</source>
+        <translation>übersprungen: %1</translation>
+    </message>
+    <message>
+        <source>%1, %2 vertices, %3 triangles</source>
+        <translation>%1, %2 Vertices, %3 Dreiecke</translation>
+    </message>
+    <message>
+        <source>directional</source>
+        <translation>gerichtet</translation>
+    </message>
+    <message>
+        <source>point</source>
+        <translation>Punkt</translation>
+    </message>
+    <message>
+        <source>spot</source>
+        <translation>Spot</translation>
+    </message>
+    <message>
+        <source>perspective</source>
+        <translation>perspektivisch</translation>
+    </message>
+    <message>
+        <source>orthographic</source>
+        <translation>orthografisch</translation>
+    </message>
+    <message>
+        <source>scene</source>
+        <translation>Szene</translation>
+    </message>
+    <message>
+        <source>node</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>primitive</source>
+        <translation>Primitiv</translation>
+    </message>
+    <message>
+        <source>material</source>
+        <translation>Material</translation>
+    </message>
+    <message>
+        <source>light</source>
+        <translation>Licht</translation>
+    </message>
+    <message>
+        <source>camera</source>
+        <translation>Kamera</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>Details</source>
+        <translation>Details</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::TextureDock</name>
+    <message>
+        <source>Texture Cache</source>
+        <translation>Textur-Cache</translation>
+    </message>
+    <message>
+        <source>Recompress selected</source>
+        <translation>Auswahl neu komprimieren</translation>
+    </message>
+    <message>
+        <source>Clear cache</source>
+        <translation>Cache leeren</translation>
+    </message>
+    <message>
+        <source>Open cache folder</source>
+        <translation>Cache-Ordner öffnen</translation>
+    </message>
+    <message>
+        <source>Needs the texture cache, which is not part of this build</source>
+        <translation>Benötigt den Textur-Cache, der in diesem Build fehlt</translation>
+    </message>
+    <message>
+        <source>no renderer</source>
+        <translation>kein Renderer</translation>
+    </message>
+    <message>
+        <source>%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms</source>
+        <translation>%1 Texturen, %2 kodiert auf der Festplatte, %3 auf der GPU, Vorschaubilder in %4 ms dekodiert</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::TextureTableModel</name>
+    <message>
+        <source>Texture %1</source>
+        <translation>Textur %1</translation>
+    </message>
+    <message>
+        <source>no image</source>
+        <translation>kein Bild</translation>
+    </message>
+    <message>
+        <source>bufferView %1</source>
+        <translation>bufferView %1</translation>
+    </message>
+    <message>
+        <source>generated</source>
+        <translation>erzeugt</translation>
+    </message>
+    <message>
+        <source>undecodable</source>
+        <translation>nicht dekodierbar</translation>
+    </message>
+    <message>
+        <source>Texture</source>
+        <translation>Textur</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Quelle</translation>
+    </message>
+    <message>
+        <source>Content hash</source>
+        <translation>Inhalts-Hash</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>Rolle</translation>
+    </message>
+    <message>
+        <source>Format</source>
+        <translation>Format</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Größe</translation>
+    </message>
+    <message>
+        <source>Mips</source>
+        <translation>Mips</translation>
+    </message>
+    <message>
+        <source>Disk bytes</source>
+        <translation>Bytes auf Festplatte</translation>
+    </message>
+    <message>
+        <source>GPU bytes</source>
+        <translation>GPU-Bytes</translation>
+    </message>
+    <message>
+        <source>Cache state</source>
+        <translation>Cache-Zustand</translation>
+    </message>
+    <message>
+        <source>Decode ms</source>
+        <translation>Dekodieren ms</translation>
+    </message>
+    <message>
+        <source>Encode ms</source>
+        <translation>Kodieren ms</translation>
+    </message>
+    <message>
+        <source>PSNR</source>
+        <translation>PSNR</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::TriangleTableModel</name>
+    <message>
+        <source>vertex 0</source>
+        <translation>Vertex 0</translation>
+    </message>
+    <message>
+        <source>vertex 1</source>
+        <translation>Vertex 1</translation>
+    </message>
+    <message>
+        <source>vertex 2</source>
+        <translation>Vertex 2</translation>
+    </message>
+    <message>
+        <source>area</source>
+        <translation>Fläche</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::VertexTableModel</name>
+    <message>
+        <source>tangent error (deg)</source>
+        <translation>Tangentenfehler (Grad)</translation>
+    </message>
+</context>
+</TS>

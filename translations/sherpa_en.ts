@@ -1,0 +1,987 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="en">
+<context>
+    <name>Format</name>
+    <message>
+        <source>%1 B</source>
+        <translation>%1 B</translation>
+    </message>
+    <message>
+        <source>%1 KiB</source>
+        <translation>%1 KiB</translation>
+    </message>
+    <message>
+        <source>%1 MiB</source>
+        <translation>%1 MiB</translation>
+    </message>
+    <message>
+        <source>unknown (%1)</source>
+        <translation>unknown (%1)</translation>
+    </message>
+    <message>
+        <source>authored</source>
+        <translation>authored</translation>
+    </message>
+    <message>
+        <source>generated</source>
+        <translation>generated</translation>
+    </message>
+    <message>
+        <source>defaulted</source>
+        <translation>defaulted</translation>
+    </message>
+    <message>
+        <source>colour (sRGB)</source>
+        <translation>colour (sRGB)</translation>
+    </message>
+    <message>
+        <source>linear data</source>
+        <translation>linear data</translation>
+    </message>
+    <message>
+        <source>normal map</source>
+        <translation>normal map</translation>
+    </message>
+    <message>
+        <source>unused</source>
+        <translation>unused</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>yes</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>no</translation>
+    </message>
+</context>
+<context>
+    <name>ViewCatalog</name>
+    <message>
+        <source>Lit</source>
+        <translation>Lit</translation>
+    </message>
+    <message>
+        <source>Normals</source>
+        <translation>Normals</translation>
+    </message>
+    <message>
+        <source>Tangents</source>
+        <translation>Tangents</translation>
+    </message>
+    <message>
+        <source>Bitangents</source>
+        <translation>Bitangents</translation>
+    </message>
+    <message>
+        <source>Handedness (tangent w)</source>
+        <translation>Handedness (tangent w)</translation>
+    </message>
+    <message>
+        <source>UV 0</source>
+        <translation>UV 0</translation>
+    </message>
+    <message>
+        <source>UV 1</source>
+        <translation>UV 1</translation>
+    </message>
+    <message>
+        <source>UV 0 checker</source>
+        <translation>UV 0 checker</translation>
+    </message>
+    <message>
+        <source>UV 1 checker</source>
+        <translation>UV 1 checker</translation>
+    </message>
+    <message>
+        <source>Base colour</source>
+        <translation>Base colour</translation>
+    </message>
+    <message>
+        <source>Metallic</source>
+        <translation>Metallic</translation>
+    </message>
+    <message>
+        <source>Roughness</source>
+        <translation>Roughness</translation>
+    </message>
+    <message>
+        <source>Occlusion</source>
+        <translation>Occlusion</translation>
+    </message>
+    <message>
+        <source>Emissive</source>
+        <translation>Emissive</translation>
+    </message>
+    <message>
+        <source>Geometric vs shading normal</source>
+        <translation>Geometric vs shading normal</translation>
+    </message>
+    <message>
+        <source>Tangent provenance</source>
+        <translation>Tangent provenance</translation>
+    </message>
+    <message>
+        <source>Shading normal</source>
+        <translation>Shading normal</translation>
+    </message>
+    <message>
+        <source>Wireframe</source>
+        <translation>Wireframe</translation>
+    </message>
+    <message>
+        <source>Normal glyphs</source>
+        <translation>Normal glyphs</translation>
+    </message>
+    <message>
+        <source>Tangent glyphs</source>
+        <translation>Tangent glyphs</translation>
+    </message>
+    <message>
+        <source>Bitangent glyphs</source>
+        <translation>Bitangent glyphs</translation>
+    </message>
+    <message>
+        <source>Bounding boxes</source>
+        <translation>Bounding boxes</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::AttributeModel</name>
+    <message>
+        <source>indices</source>
+        <translation>indices</translation>
+    </message>
+    <message>
+        <source>authored</source>
+        <translation>authored</translation>
+    </message>
+    <message>
+        <source>generated</source>
+        <translation>generated</translation>
+    </message>
+    <message>
+        <source>not uploaded</source>
+        <translation>not uploaded</translation>
+    </message>
+    <message>
+        <source>yes (%1 values)</source>
+        <translation>yes (%1 values)</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>%1 (stride %2)</source>
+        <translation>%1 (stride %2)</translation>
+    </message>
+    <message>
+        <source>Attribute</source>
+        <translation>Attribute</translation>
+    </message>
+    <message>
+        <source>Provenance</source>
+        <translation>Provenance</translation>
+    </message>
+    <message>
+        <source>Accessor</source>
+        <translation>Accessor</translation>
+    </message>
+    <message>
+        <source>Component type</source>
+        <translation>Component type</translation>
+    </message>
+    <message>
+        <source>Normalized</source>
+        <translation>Normalized</translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation>Count</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>Min</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Max</translation>
+    </message>
+    <message>
+        <source>Sparse</source>
+        <translation>Sparse</translation>
+    </message>
+    <message>
+        <source>Buffer view</source>
+        <translation>Buffer view</translation>
+    </message>
+    <message>
+        <source>GPU bytes</source>
+        <translation>GPU bytes</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::CullingDock</name>
+    <message>
+        <source>Culling Statistics</source>
+        <translation>Culling Statistics</translation>
+    </message>
+    <message>
+        <source>Total</source>
+        <translation>Total</translation>
+    </message>
+    <message>
+        <source>Visible</source>
+        <translation>Visible</translation>
+    </message>
+    <message>
+        <source>Culled</source>
+        <translation>Culled</translation>
+    </message>
+    <message>
+        <source>False positives</source>
+        <translation>False positives</translation>
+    </message>
+    <message>
+        <source>Draw calls</source>
+        <translation>Draw calls</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>Triangles</translation>
+    </message>
+    <message>
+        <source>CPU cull ms</source>
+        <translation>CPU cull ms</translation>
+    </message>
+    <message>
+        <source>GPU cull ms</source>
+        <translation>GPU cull ms</translation>
+    </message>
+    <message>
+        <source>visible</source>
+        <translation>visible</translation>
+    </message>
+    <message>
+        <source>culled</source>
+        <translation>culled</translation>
+    </message>
+    <message>
+        <source>update</source>
+        <translation>update</translation>
+    </message>
+    <message>
+        <source>No scene.</source>
+        <translation>No scene.</translation>
+    </message>
+    <message>
+        <source>Pass &quot;%1&quot;: method %2, %3%4</source>
+        <translation>Pass &quot;%1&quot;: method %2, %3%4</translation>
+    </message>
+    <message>
+        <source>, culling camera frozen</source>
+        <translation>, culling camera frozen</translation>
+    </message>
+    <message>
+        <source>CPU/GPU agreement: GPU culling path not available in this build</source>
+        <translation>CPU/GPU agreement: GPU culling path not available in this build</translation>
+    </message>
+    <message>
+        <source>CPU/GPU agreement: ✔ both keep %1</source>
+        <translation>CPU/GPU agreement: ✔ both keep %1</translation>
+    </message>
+    <message>
+        <source>CPU/GPU agreement: ✘ CPU %1, GPU %2</source>
+        <translation>CPU/GPU agreement: ✘ CPU %1, GPU %2</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::LogDock</name>
+    <message>
+        <source>Log</source>
+        <translation>Log</translation>
+    </message>
+    <message>
+        <source>info</source>
+        <translation>info</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>warning</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>error</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::MainWindow</name>
+    <message>
+        <source>Loading %1 cancelled; the result is discarded.</source>
+        <translation>Loading %1 cancelled; the result is discarded.</translation>
+    </message>
+    <message>
+        <source>frame %1 ms</source>
+        <translation>frame %1 ms</translation>
+    </message>
+    <message>
+        <source>Loading %1…</source>
+        <translation>Loading %1…</translation>
+    </message>
+    <message>
+        <source>parse, geometry, tangents…</source>
+        <translation>parse, geometry, tangents…</translation>
+    </message>
+    <message>
+        <source>textures %1/%2</source>
+        <translation>textures %1/%2</translation>
+    </message>
+    <message>
+        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms).</source>
+        <translation>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms).</translation>
+    </message>
+    <message>
+        <source>Could not load %1; the current scene is kept.</source>
+        <translation>Could not load %1; the current scene is kept.</translation>
+    </message>
+    <message>
+        <source>Load failed</source>
+        <translation>Load failed</translation>
+    </message>
+    <message>
+        <source>Could not load %1:
+%2
+
+The current scene is kept.</source>
+        <translation>Could not load %1:
+%2
+
+The current scene is kept.</translation>
+    </message>
+    <message>
+        <source>No scene. Open a glTF file or a built-in scene from the File menu.</source>
+        <translation>No scene. Open a glTF file or a built-in scene from the File menu.</translation>
+    </message>
+    <message>
+        <source>Sherpa</source>
+        <translation>Sherpa</translation>
+    </message>
+    <message>
+        <source>%1: %2 nodes, %3 primitives, %4 instances, %5 materials, %6 textures</source>
+        <translation>%1: %2 nodes, %3 primitives, %4 instances, %5 materials, %6 textures</translation>
+    </message>
+    <message>
+        <source>%1 — Sherpa</source>
+        <translation>%1 — Sherpa</translation>
+    </message>
+    <message>
+        <source>Texture cache directory</source>
+        <translation>Texture cache directory</translation>
+    </message>
+    <message>
+        <source>(the scene has no cameras)</source>
+        <translation>(the scene has no cameras)</translation>
+    </message>
+    <message>
+        <source>Camera %1</source>
+        <translation>Camera %1</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;File</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>&amp;Open…</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Open &amp;Recent</translation>
+    </message>
+    <message>
+        <source>&amp;Built-in Scenes</source>
+        <translation>&amp;Built-in Scenes</translation>
+    </message>
+    <message>
+        <source>Default scene</source>
+        <translation>Default scene</translation>
+    </message>
+    <message>
+        <source>Grid, 10 × 10</source>
+        <translation>Grid, 10 × 10</translation>
+    </message>
+    <message>
+        <source>Grid, 100 × 100</source>
+        <translation>Grid, 100 × 100</translation>
+    </message>
+    <message>
+        <source>Grid, 1000 × 1000</source>
+        <translation>Grid, 1000 × 1000</translation>
+    </message>
+    <message>
+        <source>Re&amp;load</source>
+        <translation>Re&amp;load</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Close</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Quit</translation>
+    </message>
+    <message>
+        <source>Clear list</source>
+        <translation>Clear list</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;View</translation>
+    </message>
+    <message>
+        <source>&amp;Debug View</source>
+        <translation>&amp;Debug View</translation>
+    </message>
+    <message>
+        <source>View: %1</source>
+        <translation>View: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Overlays</source>
+        <translation>&amp;Overlays</translation>
+    </message>
+    <message>
+        <source>Frame &amp;All (F)</source>
+        <translation>Frame &amp;All (F)</translation>
+    </message>
+    <message>
+        <source>Frame &amp;Selection (Shift+F)</source>
+        <translation>Frame &amp;Selection (Shift+F)</translation>
+    </message>
+    <message>
+        <source>&amp;Fly Mode (WASD, Q/E)</source>
+        <translation>&amp;Fly Mode (WASD, Q/E)</translation>
+    </message>
+    <message>
+        <source>glTF &amp;Cameras</source>
+        <translation>glTF &amp;Cameras</translation>
+    </message>
+    <message>
+        <source>&amp;Docks</source>
+        <translation>&amp;Docks</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Layout</source>
+        <translation>&amp;Reset Layout</translation>
+    </message>
+    <message>
+        <source>&amp;Culling</source>
+        <translation>&amp;Culling</translation>
+    </message>
+    <message>
+        <source>&amp;Freeze Culling Camera</source>
+        <translation>&amp;Freeze Culling Camera</translation>
+    </message>
+    <message>
+        <source>&amp;Colour Boxes by Result</source>
+        <translation>&amp;Colour Boxes by Result</translation>
+    </message>
+    <message>
+        <source>&amp;Method</source>
+        <translation>&amp;Method</translation>
+    </message>
+    <message>
+        <source>Bounding sphere</source>
+        <translation>Bounding sphere</translation>
+    </message>
+    <message>
+        <source>P-vertex (AABB)</source>
+        <translation>P-vertex (AABB)</translation>
+    </message>
+    <message>
+        <source>Exact (SAT)</source>
+        <translation>Exact (SAT)</translation>
+    </message>
+    <message>
+        <source>&amp;Path</source>
+        <translation>&amp;Path</translation>
+    </message>
+    <message>
+        <source>CPU</source>
+        <translation>CPU</translation>
+    </message>
+    <message>
+        <source>GPU (not available in this build)</source>
+        <translation>GPU (not available in this build)</translation>
+    </message>
+    <message>
+        <source>&amp;Settings</source>
+        <translation>&amp;Settings</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Language</translation>
+    </message>
+    <message>
+        <source>&amp;Texture Quality</source>
+        <translation>&amp;Texture Quality</translation>
+    </message>
+    <message>
+        <source>Fast</source>
+        <translation>Fast</translation>
+    </message>
+    <message>
+        <source>Balanced</source>
+        <translation>Balanced</translation>
+    </message>
+    <message>
+        <source>Best</source>
+        <translation>Best</translation>
+    </message>
+    <message>
+        <source>Texture Cache &amp;Directory…</source>
+        <translation>Texture Cache &amp;Directory…</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Help</translation>
+    </message>
+    <message>
+        <source>&amp;About Sherpa</source>
+        <translation>&amp;About Sherpa</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>About &amp;Qt</translation>
+    </message>
+    <message>
+        <source>Main Toolbar</source>
+        <translation>Main Toolbar</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <source>(no recent files)</source>
+        <translation>(no recent files)</translation>
+    </message>
+    <message>
+        <source>Open glTF scene</source>
+        <translation>Open glTF scene</translation>
+    </message>
+    <message>
+        <source>glTF scenes (*.gltf *.glb);;All files (*)</source>
+        <translation>glTF scenes (*.gltf *.glb);;All files (*)</translation>
+    </message>
+    <message>
+        <source>none (Vulkan unavailable)</source>
+        <translation>none (Vulkan unavailable)</translation>
+    </message>
+    <message>
+        <source>About Sherpa</source>
+        <translation>About Sherpa</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Sherpa %1&lt;/h3&gt;&lt;p&gt;A glTF 2.0 scene inspection editor.&lt;/p&gt;&lt;p&gt;Qt %2 (built with %3)&lt;br&gt;Vulkan devices: %4&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Sherpa %1&lt;/h3&gt;&lt;p&gt;A glTF 2.0 scene inspection editor.&lt;/p&gt;&lt;p&gt;Qt %2 (built with %3)&lt;br&gt;Vulkan devices: %4&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>No Vulkan instance: the viewport cannot render.</source>
+        <translation>No Vulkan instance: the viewport cannot render.</translation>
+    </message>
+    <message>
+        <source>The renderer could not start: %1</source>
+        <translation>The renderer could not start: %1</translation>
+    </message>
+    <message>
+        <source>Rendering on %1 (renderer ready in %2 ms).</source>
+        <translation>Rendering on %1 (renderer ready in %2 ms).</translation>
+    </message>
+    <message>
+        <source>GPU upload failed: %1</source>
+        <translation>GPU upload failed: %1</translation>
+    </message>
+    <message>
+        <source>Rendering stopped: %1</source>
+        <translation>Rendering stopped: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::MaterialDock</name>
+    <message>
+        <source>Material SSBO</source>
+        <translation>Material SSBO</translation>
+    </message>
+    <message>
+        <source>No material selected.</source>
+        <translation>No material selected.</translation>
+    </message>
+    <message>
+        <source>(unnamed)</source>
+        <translation>(unnamed)</translation>
+    </message>
+    <message>
+        <source>Material %1 %2: 80-byte std430 record read back from the GPU material buffer at offset %3.</source>
+        <translation>Material %1 %2: 80-byte std430 record read back from the GPU material buffer at offset %3.</translation>
+    </message>
+    <message>
+        <source>Material %1 %2: the importer&apos;s CPU record (no renderer attached, so texture fields hold glTF texture indices, not bindless slots).</source>
+        <translation>Material %1 %2: the importer&apos;s CPU record (no renderer attached, so texture fields hold glTF texture indices, not bindless slots).</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::MaterialFieldsModel</name>
+    <message>
+        <source>texture %1</source>
+        <translation>texture %1</translation>
+    </message>
+    <message>
+        <source>bufferView %1</source>
+        <translation>bufferView %1</translation>
+    </message>
+    <message>
+        <source>generated</source>
+        <translation>generated</translation>
+    </message>
+    <message>
+        <source> → image %1 (%2)</source>
+        <translation> → image %1 (%2)</translation>
+    </message>
+    <message>
+        <source> → cache: not available</source>
+        <translation> → cache: not available</translation>
+    </message>
+    <message>
+        <source>Double-click to show this texture in the texture dock</source>
+        <translation>Double-click to show this texture in the texture dock</translation>
+    </message>
+    <message>
+        <source>none (0x%1)</source>
+        <translation>none (0x%1)</translation>
+    </message>
+    <message>
+        <source>default texture</source>
+        <translation>default texture</translation>
+    </message>
+    <message>
+        <source>Offset</source>
+        <translation>Offset</translation>
+    </message>
+    <message>
+        <source>Field</source>
+        <translation>Field</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Type</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Value</translation>
+    </message>
+    <message>
+        <source>glTF property</source>
+        <translation>glTF property</translation>
+    </message>
+    <message>
+        <source>Texture chain</source>
+        <translation>Texture chain</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::MeshDock</name>
+    <message>
+        <source>max %1°, mean %2°, %3 handedness flips</source>
+        <translation>max %1°, mean %2°, %3 handedness flips</translation>
+    </message>
+    <message>
+        <source>Mesh Attributes</source>
+        <translation>Mesh Attributes</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>Vertices</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>Triangles</translation>
+    </message>
+    <message>
+        <source>Jump to vertex</source>
+        <translation>Jump to vertex</translation>
+    </message>
+    <message>
+        <source>Compare tangents</source>
+        <translation>Compare tangents</translation>
+    </message>
+    <message>
+        <source>Regenerate MikkTSpace tangents and show the angle to the mesh&apos;s tangents per vertex (sortable column)</source>
+        <translation>Regenerate MikkTSpace tangents and show the angle to the mesh&apos;s tangents per vertex (sortable column)</translation>
+    </message>
+    <message>
+        <source>No primitive selected. Select a node or primitive in the scene tree or click an object in the viewport.</source>
+        <translation>No primitive selected. Select a node or primitive in the scene tree or click an object in the viewport.</translation>
+    </message>
+    <message>
+        <source>Mesh %1 primitive %2 &quot;%3&quot;: %4 vertices (file: %5), %6 triangles, material %7, %8 on the GPU%9</source>
+        <translation>Mesh %1 primitive %2 &quot;%3&quot;: %4 vertices (file: %5), %6 triangles, material %7, %8 on the GPU%9</translation>
+    </message>
+    <message>
+        <source> (unwelded for flat normals)</source>
+        <translation> (unwelded for flat normals)</translation>
+    </message>
+    <message>
+        <source>Comparing…</source>
+        <translation>Comparing…</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::SceneTreeDock</name>
+    <message>
+        <source>Scene Tree</source>
+        <translation>Scene Tree</translation>
+    </message>
+    <message>
+        <source>Filter by name…</source>
+        <translation>Filter by name…</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::SceneTreeModel</name>
+    <message>
+        <source>Scene %1</source>
+        <translation>Scene %1</translation>
+    </message>
+    <message>
+        <source>Node %1</source>
+        <translation>Node %1</translation>
+    </message>
+    <message>
+        <source>Primitive %1</source>
+        <translation>Primitive %1</translation>
+    </message>
+    <message>
+        <source>Material %1</source>
+        <translation>Material %1</translation>
+    </message>
+    <message>
+        <source>Light %1</source>
+        <translation>Light %1</translation>
+    </message>
+    <message>
+        <source>Camera %1</source>
+        <translation>Camera %1</translation>
+    </message>
+    <message>
+        <source>displayed</source>
+        <translation>displayed</translation>
+    </message>
+    <message>
+        <source>matrix</source>
+        <translation>matrix</translation>
+    </message>
+    <message>
+        <source>T %1  R %2  S %3</source>
+        <translation>T %1  R %2  S %3</translation>
+    </message>
+    <message>
+        <source>skipped: %1</source>
+        <translation>skipped: %1</translation>
+    </message>
+    <message>
+        <source>%1, %2 vertices, %3 triangles</source>
+        <translation>%1, %2 vertices, %3 triangles</translation>
+    </message>
+    <message>
+        <source>directional</source>
+        <translation>directional</translation>
+    </message>
+    <message>
+        <source>point</source>
+        <translation>point</translation>
+    </message>
+    <message>
+        <source>spot</source>
+        <translation>spot</translation>
+    </message>
+    <message>
+        <source>perspective</source>
+        <translation>perspective</translation>
+    </message>
+    <message>
+        <source>orthographic</source>
+        <translation>orthographic</translation>
+    </message>
+    <message>
+        <source>scene</source>
+        <translation>scene</translation>
+    </message>
+    <message>
+        <source>node</source>
+        <translation>node</translation>
+    </message>
+    <message>
+        <source>primitive</source>
+        <translation>primitive</translation>
+    </message>
+    <message>
+        <source>material</source>
+        <translation>material</translation>
+    </message>
+    <message>
+        <source>light</source>
+        <translation>light</translation>
+    </message>
+    <message>
+        <source>camera</source>
+        <translation>camera</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Type</translation>
+    </message>
+    <message>
+        <source>Details</source>
+        <translation>Details</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::TextureDock</name>
+    <message>
+        <source>Texture Cache</source>
+        <translation>Texture Cache</translation>
+    </message>
+    <message>
+        <source>Recompress selected</source>
+        <translation>Recompress selected</translation>
+    </message>
+    <message>
+        <source>Clear cache</source>
+        <translation>Clear cache</translation>
+    </message>
+    <message>
+        <source>Open cache folder</source>
+        <translation>Open cache folder</translation>
+    </message>
+    <message>
+        <source>Needs the texture cache, which is not part of this build</source>
+        <translation>Needs the texture cache, which is not part of this build</translation>
+    </message>
+    <message>
+        <source>no renderer</source>
+        <translation>no renderer</translation>
+    </message>
+    <message>
+        <source>%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms</source>
+        <translation>%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::TextureTableModel</name>
+    <message>
+        <source>Texture %1</source>
+        <translation>Texture %1</translation>
+    </message>
+    <message>
+        <source>no image</source>
+        <translation>no image</translation>
+    </message>
+    <message>
+        <source>bufferView %1</source>
+        <translation>bufferView %1</translation>
+    </message>
+    <message>
+        <source>generated</source>
+        <translation>generated</translation>
+    </message>
+    <message>
+        <source>undecodable</source>
+        <translation>undecodable</translation>
+    </message>
+    <message>
+        <source>Texture</source>
+        <translation>Texture</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Source</translation>
+    </message>
+    <message>
+        <source>Content hash</source>
+        <translation>Content hash</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>Role</translation>
+    </message>
+    <message>
+        <source>Format</source>
+        <translation>Format</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Size</translation>
+    </message>
+    <message>
+        <source>Mips</source>
+        <translation>Mips</translation>
+    </message>
+    <message>
+        <source>Disk bytes</source>
+        <translation>Disk bytes</translation>
+    </message>
+    <message>
+        <source>GPU bytes</source>
+        <translation>GPU bytes</translation>
+    </message>
+    <message>
+        <source>Cache state</source>
+        <translation>Cache state</translation>
+    </message>
+    <message>
+        <source>Decode ms</source>
+        <translation>Decode ms</translation>
+    </message>
+    <message>
+        <source>Encode ms</source>
+        <translation>Encode ms</translation>
+    </message>
+    <message>
+        <source>PSNR</source>
+        <translation>PSNR</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::TriangleTableModel</name>
+    <message>
+        <source>vertex 0</source>
+        <translation>vertex 0</translation>
+    </message>
+    <message>
+        <source>vertex 1</source>
+        <translation>vertex 1</translation>
+    </message>
+    <message>
+        <source>vertex 2</source>
+        <translation>vertex 2</translation>
+    </message>
+    <message>
+        <source>area</source>
+        <translation>area</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::VertexTableModel</name>
+    <message>
+        <source>tangent error (deg)</source>
+        <translation>tangent error (deg)</translation>
+    </message>
+</context>
+</TS>

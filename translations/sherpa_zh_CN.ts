@@ -1,0 +1,987 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_CN">
+<context>
+    <name>Format</name>
+    <message>
+        <source>%1 B</source>
+        <translation>%1 字节</translation>
+    </message>
+    <message>
+        <source>%1 KiB</source>
+        <translation>%1 KiB</translation>
+    </message>
+    <message>
+        <source>%1 MiB</source>
+        <translation>%1 MiB</translation>
+    </message>
+    <message>
+        <source>unknown (%1)</source>
+        <translation>未知 (%1)</translation>
+    </message>
+    <message>
+        <source>authored</source>
+        <translation>文件提供</translation>
+    </message>
+    <message>
+        <source>generated</source>
+        <translation>生成</translation>
+    </message>
+    <message>
+        <source>defaulted</source>
+        <translation>默认值</translation>
+    </message>
+    <message>
+        <source>colour (sRGB)</source>
+        <translation>颜色 (sRGB)</translation>
+    </message>
+    <message>
+        <source>linear data</source>
+        <translation>线性数据</translation>
+    </message>
+    <message>
+        <source>normal map</source>
+        <translation>法线贴图</translation>
+    </message>
+    <message>
+        <source>unused</source>
+        <translation>未使用</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>否</translation>
+    </message>
+</context>
+<context>
+    <name>ViewCatalog</name>
+    <message>
+        <source>Lit</source>
+        <translation>光照</translation>
+    </message>
+    <message>
+        <source>Normals</source>
+        <translation>法线</translation>
+    </message>
+    <message>
+        <source>Tangents</source>
+        <translation>切线</translation>
+    </message>
+    <message>
+        <source>Bitangents</source>
+        <translation>副切线</translation>
+    </message>
+    <message>
+        <source>Handedness (tangent w)</source>
+        <translation>手性 (切线 w)</translation>
+    </message>
+    <message>
+        <source>UV 0</source>
+        <translation>UV 0</translation>
+    </message>
+    <message>
+        <source>UV 1</source>
+        <translation>UV 1</translation>
+    </message>
+    <message>
+        <source>UV 0 checker</source>
+        <translation>UV 0 棋盘格</translation>
+    </message>
+    <message>
+        <source>UV 1 checker</source>
+        <translation>UV 1 棋盘格</translation>
+    </message>
+    <message>
+        <source>Base colour</source>
+        <translation>基础颜色</translation>
+    </message>
+    <message>
+        <source>Metallic</source>
+        <translation>金属度</translation>
+    </message>
+    <message>
+        <source>Roughness</source>
+        <translation>粗糙度</translation>
+    </message>
+    <message>
+        <source>Occlusion</source>
+        <translation>遮蔽</translation>
+    </message>
+    <message>
+        <source>Emissive</source>
+        <translation>自发光</translation>
+    </message>
+    <message>
+        <source>Geometric vs shading normal</source>
+        <translation>几何法线与着色法线之差</translation>
+    </message>
+    <message>
+        <source>Tangent provenance</source>
+        <translation>切线来源</translation>
+    </message>
+    <message>
+        <source>Shading normal</source>
+        <translation>着色法线</translation>
+    </message>
+    <message>
+        <source>Wireframe</source>
+        <translation>线框</translation>
+    </message>
+    <message>
+        <source>Normal glyphs</source>
+        <translation>法线箭头</translation>
+    </message>
+    <message>
+        <source>Tangent glyphs</source>
+        <translation>切线箭头</translation>
+    </message>
+    <message>
+        <source>Bitangent glyphs</source>
+        <translation>副切线箭头</translation>
+    </message>
+    <message>
+        <source>Bounding boxes</source>
+        <translation>包围盒</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::AttributeModel</name>
+    <message>
+        <source>indices</source>
+        <translation>索引</translation>
+    </message>
+    <message>
+        <source>authored</source>
+        <translation>文件提供</translation>
+    </message>
+    <message>
+        <source>generated</source>
+        <translation>生成</translation>
+    </message>
+    <message>
+        <source>not uploaded</source>
+        <translation>未上传</translation>
+    </message>
+    <message>
+        <source>yes (%1 values)</source>
+        <translation>是 (%1 个值)</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>%1 (stride %2)</source>
+        <translation>%1 (步长 %2)</translation>
+    </message>
+    <message>
+        <source>Attribute</source>
+        <translation>属性</translation>
+    </message>
+    <message>
+        <source>Provenance</source>
+        <translation>来源</translation>
+    </message>
+    <message>
+        <source>Accessor</source>
+        <translation>访问器</translation>
+    </message>
+    <message>
+        <source>Component type</source>
+        <translation>分量类型</translation>
+    </message>
+    <message>
+        <source>Normalized</source>
+        <translation>归一化</translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation>数量</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>最小值</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>最大值</translation>
+    </message>
+    <message>
+        <source>Sparse</source>
+        <translation>稀疏</translation>
+    </message>
+    <message>
+        <source>Buffer view</source>
+        <translation>缓冲视图</translation>
+    </message>
+    <message>
+        <source>GPU bytes</source>
+        <translation>GPU 字节</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::CullingDock</name>
+    <message>
+        <source>Culling Statistics</source>
+        <translation>剔除统计</translation>
+    </message>
+    <message>
+        <source>Total</source>
+        <translation>总数</translation>
+    </message>
+    <message>
+        <source>Visible</source>
+        <translation>可见</translation>
+    </message>
+    <message>
+        <source>Culled</source>
+        <translation>已剔除</translation>
+    </message>
+    <message>
+        <source>False positives</source>
+        <translation>误判可见</translation>
+    </message>
+    <message>
+        <source>Draw calls</source>
+        <translation>绘制调用</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>三角形</translation>
+    </message>
+    <message>
+        <source>CPU cull ms</source>
+        <translation>CPU 剔除 ms</translation>
+    </message>
+    <message>
+        <source>GPU cull ms</source>
+        <translation>GPU 剔除 ms</translation>
+    </message>
+    <message>
+        <source>visible</source>
+        <translation>可见</translation>
+    </message>
+    <message>
+        <source>culled</source>
+        <translation>已剔除</translation>
+    </message>
+    <message>
+        <source>update</source>
+        <translation>更新</translation>
+    </message>
+    <message>
+        <source>No scene.</source>
+        <translation>没有场景。</translation>
+    </message>
+    <message>
+        <source>Pass &quot;%1&quot;: method %2, %3%4</source>
+        <translation>通道“%1”：方法 %2，%3%4</translation>
+    </message>
+    <message>
+        <source>, culling camera frozen</source>
+        <translation>，剔除相机已冻结</translation>
+    </message>
+    <message>
+        <source>CPU/GPU agreement: GPU culling path not available in this build</source>
+        <translation>CPU/GPU 一致性：此版本不提供 GPU 剔除路径</translation>
+    </message>
+    <message>
+        <source>CPU/GPU agreement: ✔ both keep %1</source>
+        <translation>CPU/GPU 一致性：✔ 两者都保留 %1 个</translation>
+    </message>
+    <message>
+        <source>CPU/GPU agreement: ✘ CPU %1, GPU %2</source>
+        <translation>CPU/GPU 一致性：✘ CPU %1，GPU %2</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::LogDock</name>
+    <message>
+        <source>Log</source>
+        <translation>日志</translation>
+    </message>
+    <message>
+        <source>info</source>
+        <translation>信息</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>错误</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::MainWindow</name>
+    <message>
+        <source>Loading %1 cancelled; the result is discarded.</source>
+        <translation>已取消加载 %1；结果将被丢弃。</translation>
+    </message>
+    <message>
+        <source>frame %1 ms</source>
+        <translation>帧 %1 ms</translation>
+    </message>
+    <message>
+        <source>Loading %1…</source>
+        <translation>正在加载 %1…</translation>
+    </message>
+    <message>
+        <source>parse, geometry, tangents…</source>
+        <translation>解析、几何、切线…</translation>
+    </message>
+    <message>
+        <source>textures %1/%2</source>
+        <translation>纹理 %1/%2</translation>
+    </message>
+    <message>
+        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms).</source>
+        <translation>已加载 %1，用时 %2 ms（引擎 %3 ms，缩略图 %4 ms）。</translation>
+    </message>
+    <message>
+        <source>Could not load %1; the current scene is kept.</source>
+        <translation>无法加载 %1；保留当前场景。</translation>
+    </message>
+    <message>
+        <source>Load failed</source>
+        <translation>加载失败</translation>
+    </message>
+    <message>
+        <source>Could not load %1:
+%2
+
+The current scene is kept.</source>
+        <translation>无法加载 %1：
+%2
+
+保留当前场景。</translation>
+    </message>
+    <message>
+        <source>No scene. Open a glTF file or a built-in scene from the File menu.</source>
+        <translation>没有场景。请通过“文件”菜单打开 glTF 文件或内置场景。</translation>
+    </message>
+    <message>
+        <source>Sherpa</source>
+        <translation>Sherpa</translation>
+    </message>
+    <message>
+        <source>%1: %2 nodes, %3 primitives, %4 instances, %5 materials, %6 textures</source>
+        <translation>%1：%2 个节点，%3 个图元，%4 个实例，%5 个材质，%6 个纹理</translation>
+    </message>
+    <message>
+        <source>%1 — Sherpa</source>
+        <translation>%1 — Sherpa</translation>
+    </message>
+    <message>
+        <source>Texture cache directory</source>
+        <translation>纹理缓存目录</translation>
+    </message>
+    <message>
+        <source>(the scene has no cameras)</source>
+        <translation>（场景中没有相机）</translation>
+    </message>
+    <message>
+        <source>Camera %1</source>
+        <translation>相机 %1</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>打开(&amp;O)…</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>最近打开(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Built-in Scenes</source>
+        <translation>内置场景(&amp;B)</translation>
+    </message>
+    <message>
+        <source>Default scene</source>
+        <translation>默认场景</translation>
+    </message>
+    <message>
+        <source>Grid, 10 × 10</source>
+        <translation>网格，10 × 10</translation>
+    </message>
+    <message>
+        <source>Grid, 100 × 100</source>
+        <translation>网格，100 × 100</translation>
+    </message>
+    <message>
+        <source>Grid, 1000 × 1000</source>
+        <translation>网格，1000 × 1000</translation>
+    </message>
+    <message>
+        <source>Re&amp;load</source>
+        <translation>重新加载(&amp;L)</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>关闭(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>退出(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>Clear list</source>
+        <translation>清空列表</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <source>&amp;Debug View</source>
+        <translation>调试视图(&amp;D)</translation>
+    </message>
+    <message>
+        <source>View: %1</source>
+        <translation>视图：%1</translation>
+    </message>
+    <message>
+        <source>&amp;Overlays</source>
+        <translation>叠加层(&amp;O)</translation>
+    </message>
+    <message>
+        <source>Frame &amp;All (F)</source>
+        <translation>全部框选(&amp;A) (F)</translation>
+    </message>
+    <message>
+        <source>Frame &amp;Selection (Shift+F)</source>
+        <translation>框选所选(&amp;S) (Shift+F)</translation>
+    </message>
+    <message>
+        <source>&amp;Fly Mode (WASD, Q/E)</source>
+        <translation>飞行模式(&amp;F) (WASD, Q/E)</translation>
+    </message>
+    <message>
+        <source>glTF &amp;Cameras</source>
+        <translation>glTF 相机(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Docks</source>
+        <translation>停靠面板(&amp;D)</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Layout</source>
+        <translation>重置布局(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Culling</source>
+        <translation>剔除(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Freeze Culling Camera</source>
+        <translation>冻结剔除相机(&amp;F)</translation>
+    </message>
+    <message>
+        <source>&amp;Colour Boxes by Result</source>
+        <translation>按结果为包围盒着色(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Method</source>
+        <translation>方法(&amp;M)</translation>
+    </message>
+    <message>
+        <source>Bounding sphere</source>
+        <translation>包围球</translation>
+    </message>
+    <message>
+        <source>P-vertex (AABB)</source>
+        <translation>P 顶点 (AABB)</translation>
+    </message>
+    <message>
+        <source>Exact (SAT)</source>
+        <translation>精确 (SAT)</translation>
+    </message>
+    <message>
+        <source>&amp;Path</source>
+        <translation>路径(&amp;P)</translation>
+    </message>
+    <message>
+        <source>CPU</source>
+        <translation>CPU</translation>
+    </message>
+    <message>
+        <source>GPU (not available in this build)</source>
+        <translation>GPU（此版本不可用）</translation>
+    </message>
+    <message>
+        <source>&amp;Settings</source>
+        <translation>设置(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>语言(&amp;L)</translation>
+    </message>
+    <message>
+        <source>&amp;Texture Quality</source>
+        <translation>纹理质量(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Fast</source>
+        <translation>快速</translation>
+    </message>
+    <message>
+        <source>Balanced</source>
+        <translation>均衡</translation>
+    </message>
+    <message>
+        <source>Best</source>
+        <translation>最佳</translation>
+    </message>
+    <message>
+        <source>Texture Cache &amp;Directory…</source>
+        <translation>纹理缓存目录(&amp;D)…</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>&amp;About Sherpa</source>
+        <translation>关于 Sherpa(&amp;A)</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>关于 Qt(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>Main Toolbar</source>
+        <translation>主工具栏</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>(no recent files)</source>
+        <translation>（没有最近文件）</translation>
+    </message>
+    <message>
+        <source>Open glTF scene</source>
+        <translation>打开 glTF 场景</translation>
+    </message>
+    <message>
+        <source>glTF scenes (*.gltf *.glb);;All files (*)</source>
+        <translation>glTF 场景 (*.gltf *.glb);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>none (Vulkan unavailable)</source>
+        <translation>无（Vulkan 不可用）</translation>
+    </message>
+    <message>
+        <source>About Sherpa</source>
+        <translation>关于 Sherpa</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Sherpa %1&lt;/h3&gt;&lt;p&gt;A glTF 2.0 scene inspection editor.&lt;/p&gt;&lt;p&gt;Qt %2 (built with %3)&lt;br&gt;Vulkan devices: %4&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Sherpa %1&lt;/h3&gt;&lt;p&gt;glTF 2.0 场景检查编辑器。&lt;/p&gt;&lt;p&gt;Qt %2（构建时为 %3）&lt;br&gt;Vulkan 设备：%4&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>No Vulkan instance: the viewport cannot render.</source>
+        <translation>没有 Vulkan 实例：视口无法渲染。</translation>
+    </message>
+    <message>
+        <source>The renderer could not start: %1</source>
+        <translation>渲染器无法启动：%1</translation>
+    </message>
+    <message>
+        <source>Rendering on %1 (renderer ready in %2 ms).</source>
+        <translation>在 %1 上渲染（渲染器 %2 ms 后就绪）。</translation>
+    </message>
+    <message>
+        <source>GPU upload failed: %1</source>
+        <translation>GPU 上传失败：%1</translation>
+    </message>
+    <message>
+        <source>Rendering stopped: %1</source>
+        <translation>渲染已停止：%1</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::MaterialDock</name>
+    <message>
+        <source>Material SSBO</source>
+        <translation>材质 SSBO</translation>
+    </message>
+    <message>
+        <source>No material selected.</source>
+        <translation>未选择材质。</translation>
+    </message>
+    <message>
+        <source>(unnamed)</source>
+        <translation>（未命名）</translation>
+    </message>
+    <message>
+        <source>Material %1 %2: 80-byte std430 record read back from the GPU material buffer at offset %3.</source>
+        <translation>材质 %1 %2：从 GPU 材质缓冲区偏移 %3 处读回的 80 字节 std430 记录。</translation>
+    </message>
+    <message>
+        <source>Material %1 %2: the importer&apos;s CPU record (no renderer attached, so texture fields hold glTF texture indices, not bindless slots).</source>
+        <translation>材质 %1 %2：导入器的 CPU 记录（未连接渲染器，因此纹理字段是 glTF 纹理索引，而非无绑定槽位）。</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::MaterialFieldsModel</name>
+    <message>
+        <source>texture %1</source>
+        <translation>纹理 %1</translation>
+    </message>
+    <message>
+        <source>bufferView %1</source>
+        <translation>bufferView %1</translation>
+    </message>
+    <message>
+        <source>generated</source>
+        <translation>生成</translation>
+    </message>
+    <message>
+        <source> → image %1 (%2)</source>
+        <translation> → 图像 %1 (%2)</translation>
+    </message>
+    <message>
+        <source> → cache: not available</source>
+        <translation> → 缓存：不可用</translation>
+    </message>
+    <message>
+        <source>Double-click to show this texture in the texture dock</source>
+        <translation>双击在纹理面板中显示此纹理</translation>
+    </message>
+    <message>
+        <source>none (0x%1)</source>
+        <translation>无 (0x%1)</translation>
+    </message>
+    <message>
+        <source>default texture</source>
+        <translation>默认纹理</translation>
+    </message>
+    <message>
+        <source>Offset</source>
+        <translation>偏移</translation>
+    </message>
+    <message>
+        <source>Field</source>
+        <translation>字段</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>类型</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>glTF property</source>
+        <translation>glTF 属性</translation>
+    </message>
+    <message>
+        <source>Texture chain</source>
+        <translation>纹理链</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::MeshDock</name>
+    <message>
+        <source>max %1°, mean %2°, %3 handedness flips</source>
+        <translation>最大 %1°，平均 %2°，%3 处手性翻转</translation>
+    </message>
+    <message>
+        <source>Mesh Attributes</source>
+        <translation>网格属性</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>顶点</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>三角形</translation>
+    </message>
+    <message>
+        <source>Jump to vertex</source>
+        <translation>跳转到顶点</translation>
+    </message>
+    <message>
+        <source>Compare tangents</source>
+        <translation>比较切线</translation>
+    </message>
+    <message>
+        <source>Regenerate MikkTSpace tangents and show the angle to the mesh&apos;s tangents per vertex (sortable column)</source>
+        <translation>重新生成 MikkTSpace 切线，并逐顶点显示与网格切线的夹角（可排序列）</translation>
+    </message>
+    <message>
+        <source>No primitive selected. Select a node or primitive in the scene tree or click an object in the viewport.</source>
+        <translation>未选择图元。请在场景树中选择节点或图元，或在视口中单击物体。</translation>
+    </message>
+    <message>
+        <source>Mesh %1 primitive %2 &quot;%3&quot;: %4 vertices (file: %5), %6 triangles, material %7, %8 on the GPU%9</source>
+        <translation>网格 %1 图元 %2“%3”：%4 个顶点（文件中 %5 个），%6 个三角形，材质 %7，GPU 上 %8%9</translation>
+    </message>
+    <message>
+        <source> (unwelded for flat normals)</source>
+        <translation>（为平面法线拆分顶点）</translation>
+    </message>
+    <message>
+        <source>Comparing…</source>
+        <translation>正在比较…</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::SceneTreeDock</name>
+    <message>
+        <source>Scene Tree</source>
+        <translation>场景树</translation>
+    </message>
+    <message>
+        <source>Filter by name…</source>
+        <translation>按名称筛选…</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::SceneTreeModel</name>
+    <message>
+        <source>Scene %1</source>
+        <translation>场景 %1</translation>
+    </message>
+    <message>
+        <source>Node %1</source>
+        <translation>节点 %1</translation>
+    </message>
+    <message>
+        <source>Primitive %1</source>
+        <translation>图元 %1</translation>
+    </message>
+    <message>
+        <source>Material %1</source>
+        <translation>材质 %1</translation>
+    </message>
+    <message>
+        <source>Light %1</source>
+        <translation>灯光 %1</translation>
+    </message>
+    <message>
+        <source>Camera %1</source>
+        <translation>相机 %1</translation>
+    </message>
+    <message>
+        <source>displayed</source>
+        <translation>显示中</translation>
+    </message>
+    <message>
+        <source>matrix</source>
+        <translation>矩阵</translation>
+    </message>
+    <message>
+        <source>T %1  R %2  S %3</source>
+        <translation>平移 %1  旋转 %2  缩放 %3</translation>
+    </message>
+    <message>
+        <source>skipped: %1</source>
+        <translation>已跳过：%1</translation>
+    </message>
+    <message>
+        <source>%1, %2 vertices, %3 triangles</source>
+        <translation>%1，%2 个顶点，%3 个三角形</translation>
+    </message>
+    <message>
+        <source>directional</source>
+        <translation>平行光</translation>
+    </message>
+    <message>
+        <source>point</source>
+        <translation>点光源</translation>
+    </message>
+    <message>
+        <source>spot</source>
+        <translation>聚光灯</translation>
+    </message>
+    <message>
+        <source>perspective</source>
+        <translation>透视</translation>
+    </message>
+    <message>
+        <source>orthographic</source>
+        <translation>正交</translation>
+    </message>
+    <message>
+        <source>scene</source>
+        <translation>场景</translation>
+    </message>
+    <message>
+        <source>node</source>
+        <translation>节点</translation>
+    </message>
+    <message>
+        <source>primitive</source>
+        <translation>图元</translation>
+    </message>
+    <message>
+        <source>material</source>
+        <translation>材质</translation>
+    </message>
+    <message>
+        <source>light</source>
+        <translation>灯光</translation>
+    </message>
+    <message>
+        <source>camera</source>
+        <translation>相机</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>类型</translation>
+    </message>
+    <message>
+        <source>Details</source>
+        <translation>详情</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::TextureDock</name>
+    <message>
+        <source>Texture Cache</source>
+        <translation>纹理缓存</translation>
+    </message>
+    <message>
+        <source>Recompress selected</source>
+        <translation>重新压缩所选</translation>
+    </message>
+    <message>
+        <source>Clear cache</source>
+        <translation>清空缓存</translation>
+    </message>
+    <message>
+        <source>Open cache folder</source>
+        <translation>打开缓存文件夹</translation>
+    </message>
+    <message>
+        <source>Needs the texture cache, which is not part of this build</source>
+        <translation>需要纹理缓存，但此版本未包含</translation>
+    </message>
+    <message>
+        <source>no renderer</source>
+        <translation>无渲染器</translation>
+    </message>
+    <message>
+        <source>%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms</source>
+        <translation>%1 个纹理，磁盘上编码数据 %2，GPU 上 %3，缩略图解码用时 %4 ms</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::TextureTableModel</name>
+    <message>
+        <source>Texture %1</source>
+        <translation>纹理 %1</translation>
+    </message>
+    <message>
+        <source>no image</source>
+        <translation>无图像</translation>
+    </message>
+    <message>
+        <source>bufferView %1</source>
+        <translation>bufferView %1</translation>
+    </message>
+    <message>
+        <source>generated</source>
+        <translation>生成</translation>
+    </message>
+    <message>
+        <source>undecodable</source>
+        <translation>无法解码</translation>
+    </message>
+    <message>
+        <source>Texture</source>
+        <translation>纹理</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>来源</translation>
+    </message>
+    <message>
+        <source>Content hash</source>
+        <translation>内容哈希</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>用途</translation>
+    </message>
+    <message>
+        <source>Format</source>
+        <translation>格式</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>尺寸</translation>
+    </message>
+    <message>
+        <source>Mips</source>
+        <translation>Mip 层级</translation>
+    </message>
+    <message>
+        <source>Disk bytes</source>
+        <translation>磁盘字节</translation>
+    </message>
+    <message>
+        <source>GPU bytes</source>
+        <translation>GPU 字节</translation>
+    </message>
+    <message>
+        <source>Cache state</source>
+        <translation>缓存状态</translation>
+    </message>
+    <message>
+        <source>Decode ms</source>
+        <translation>解码 ms</translation>
+    </message>
+    <message>
+        <source>Encode ms</source>
+        <translation>编码 ms</translation>
+    </message>
+    <message>
+        <source>PSNR</source>
+        <translation>PSNR</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::TriangleTableModel</name>
+    <message>
+        <source>vertex 0</source>
+        <translation>顶点 0</translation>
+    </message>
+    <message>
+        <source>vertex 1</source>
+        <translation>顶点 1</translation>
+    </message>
+    <message>
+        <source>vertex 2</source>
+        <translation>顶点 2</translation>
+    </message>
+    <message>
+        <source>area</source>
+        <translation>面积</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::VertexTableModel</name>
+    <message>
+        <source>tangent error (deg)</source>
+        <translation>切线误差（度）</translation>
+    </message>
+</context>
+</TS>

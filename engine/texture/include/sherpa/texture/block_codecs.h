@@ -1,0 +1,81 @@
+#pragma once
+// Block compression for BC7 (RGBA, 8 bits per texel) and BC5 (two channels,
+// 8 bits per texel): pure functions over one 4x4 block or a whole image.
+//
+// Texel order inside a block is row-major (x fastest), 4 bytes per texel (RGBA8).
+// Blocks of an image are stored row-major, 16 bytes each. Images whose sides are
+// not multiples of 4 are encoded with their edge texels replicated into the
+// padding, so every decoded in-image texel comes from real data.
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace sherpa::tex {
+
+// Instruction sets the encoders have kernels for. `best_simd_level()` asks the CPU;
+// callers pass the level explicitly so tests can compare kernels.
+enum class SimdLevel : std::uint8_t { Scalar, Avx2, Avx512 };
+SimdLevel best_simd_level();
+std::string_view to_string(SimdLevel level);
+
+// BC7 quality levels, fastest first. Level 0 uses mode 6 alone; higher levels add
+// partitioned modes, more partitions tried and more endpoint refinement.
+inline constexpr int kBc7MinLevel = 0;
+inline constexpr int kBc7MaxLevel = 4;
+inline constexpr int kBc7DefaultLevel = 2;
+
+// BC5 quality levels: 0 fits endpoints by least squares, 1 also searches around them.
+inline constexpr int kBc5MinLevel = 0;
+inline constexpr int kBc5MaxLevel = 1;
+inline constexpr int kBc5DefaultLevel = 1;
+
+struct EncodeSettings {
+    int level = kBc7DefaultLevel; // clamped to the format's range
+    SimdLevel simd = SimdLevel::Scalar;
+};
+
+inline constexpr std::size_t kBlockBytes = 16;
+inline constexpr std::size_t kBlockTexelBytes = 64; // 16 texels x RGBA8
+
+void encode_bc7_block(std::span<const std::uint8_t, kBlockTexelBytes> rgba,
+                      const EncodeSettings& settings, std::span<std::uint8_t, kBlockBytes> out);
+// Reserved mode bytes (no mode bit set) decode to transparent black, as the spec says.
+void decode_bc7_block(std::span<const std::uint8_t, kBlockBytes> block,
+                      std::span<std::uint8_t, kBlockTexelBytes> rgba);
+
+// BC5 stores the red and green channels; blue and alpha of the input are ignored.
+void encode_bc5_block(std::span<const std::uint8_t, kBlockTexelBytes> rgba,
+                      const EncodeSettings& settings, std::span<std::uint8_t, kBlockBytes> out);
+// Writes R and G; blue decodes to 0 and alpha to 255.
+void decode_bc5_block(std::span<const std::uint8_t, kBlockBytes> block,
+                      std::span<std::uint8_t, kBlockTexelBytes> rgba);
+
+enum class BlockFormat : std::uint8_t { Bc7, Bc5 };
+
+inline std::uint32_t blocks_along(std::uint32_t texels) {
+    return (texels + 3) / 4;
+}
+inline std::size_t compressed_size(std::uint32_t width, std::uint32_t height) {
+    return std::size_t{blocks_along(width)} * blocks_along(height) * kBlockBytes;
+}
+
+// Copies the 4x4 block at block coordinates (bx, by) out of a tightly packed
+// RGBA8 image, replicating edge texels where the block overhangs the image.
+void gather_block(std::span<const std::uint8_t> rgba, std::uint32_t width, std::uint32_t height,
+                  std::uint32_t bx, std::uint32_t by,
+                  std::span<std::uint8_t, kBlockTexelBytes> block);
+
+// Compresses a tightly packed RGBA8 image (width * height * 4 bytes, both sides
+// >= 1). Blocks are encoded in parallel with OpenMP over `threads` threads
+// (0: OpenMP's default). Throws std::invalid_argument on a size mismatch.
+std::vector<std::uint8_t> encode_image(BlockFormat format, std::span<const std::uint8_t> rgba,
+                                       std::uint32_t width, std::uint32_t height,
+                                       const EncodeSettings& settings, int threads = 0);
+
+// Decodes compressed blocks back to a tightly packed RGBA8 image of the given size.
+// Throws std::invalid_argument when `blocks` has the wrong size.
+std::vector<std::uint8_t> decode_image(BlockFormat format, std::span<const std::uint8_t> blocks,
+                                       std::uint32_t width, std::uint32_t height);
+
+} // namespace sherpa::tex

@@ -75,9 +75,13 @@ inline int expand_to_8(int value, int bits) {
 // 128-bit block as two little-endian words; bit 0 is the block's first bit.
 class BitWriter {
 public:
+    // Appends the low `count` bits of `value` (count <= 32; higher bits must be 0).
     void put(std::uint32_t value, int count) {
-        for (int i = 0; i < count; ++i, ++pos_)
-            if ((value >> i) & 1u) words_[pos_ >> 6] |= std::uint64_t{1} << (pos_ & 63);
+        if (count == 0) return;
+        const int word = pos_ >> 6, shift = pos_ & 63;
+        words_[word] |= std::uint64_t{value} << shift;
+        if (shift + count > 64) words_[word + 1] |= std::uint64_t{value} >> (64 - shift);
+        pos_ += count;
     }
     int position() const { return pos_; }
     void store(std::uint8_t out[16]) const {
@@ -86,7 +90,7 @@ public:
     }
 
 private:
-    std::uint64_t words_[2] = {0, 0};
+    std::uint64_t words_[3] = {0, 0, 0}; // a spare word keeps edge reads in bounds
     int pos_ = 0;
 };
 
@@ -95,15 +99,18 @@ public:
     explicit BitReader(const std::uint8_t in[16]) {
         for (int i = 0; i < 16; ++i) words_[i >> 3] |= std::uint64_t{in[i]} << ((i & 7) * 8);
     }
+    // Reads the next `count` bits (count <= 32), least significant first.
     std::uint32_t get(int count) {
-        std::uint32_t v = 0;
-        for (int i = 0; i < count; ++i, ++pos_)
-            v |= static_cast<std::uint32_t>((words_[pos_ >> 6] >> (pos_ & 63)) & 1u) << i;
-        return v;
+        if (count == 0) return 0;
+        const int word = pos_ >> 6, shift = pos_ & 63;
+        std::uint64_t v = words_[word] >> shift;
+        if (shift + count > 64) v |= words_[word + 1] << (64 - shift);
+        pos_ += count;
+        return static_cast<std::uint32_t>(v & ((std::uint64_t{1} << count) - 1));
     }
 
 private:
-    std::uint64_t words_[2] = {0, 0};
+    std::uint64_t words_[3] = {0, 0, 0}; // a spare word keeps edge reads in bounds
     int pos_ = 0;
 };
 

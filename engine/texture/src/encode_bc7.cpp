@@ -8,6 +8,7 @@
 #include "encode_kernels.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "bc7_tables.h"
@@ -20,19 +21,20 @@ using namespace bc7;
 
 // What one quality level tries. Counts are partitions fitted per partitioned mode.
 struct LevelConfig {
-    int refine_passes;          // least-squares passes after the principal-axis start
-    bool exhaustive_pbits;      // try every p-bit combination instead of the nearest
-    int two_subset_parts;       // modes 1 and 3 (opaque) / mode 7 (alpha)
-    int three_subset_parts;     // modes 0 and 2 (opaque only)
-    int rotations;              // modes 4 and 5: 0 skips them, 1 tries rotation 0, 4 all
-    bool separate_alpha_opaque; // try modes 4/5 on opaque blocks too
-    float good_enough;          // stop trying modes once the block error is below this
+    int refine_passes;           // least-squares passes after the principal-axis start (mode 6)
+    int partition_refine_passes; // the same for the other modes
+    bool exhaustive_pbits;       // try every p-bit combination instead of the nearest
+    int two_subset_parts;        // modes 1 and 3 (opaque) / mode 7 (alpha)
+    int three_subset_parts;      // modes 0 and 2 (opaque only)
+    int rotations;               // modes 4 and 5: 0 skips them, 1 tries rotation 0, 4 all
+    bool separate_alpha_opaque;  // try modes 4/5 on opaque blocks too
+    float good_enough;           // stop trying modes once the block error is below this
 };
 
 constexpr LevelConfig kLevels[kBc7MaxLevel + 1] = {
-    {1, false, 0, 0, 0, false, 0.0f}, {1, false, 3, 0, 1, false, 48.0f},
-    {2, false, 8, 4, 4, true, 16.0f}, {3, true, 20, 10, 4, true, 4.0f},
-    {4, true, 64, 64, 4, true, 0.0f},
+    {0, 0, false, 0, 0, 0, false, 0.0f}, {1, 0, false, 1, 0, 1, false, 64.0f},
+    {2, 1, false, 2, 1, 4, true, 32.0f}, {3, 2, true, 8, 4, 4, true, 8.0f},
+    {4, 4, true, 64, 64, 4, true, 0.0f},
 };
 
 enum class Pbits : std::uint8_t { None, PerEndpoint, Shared };
@@ -58,16 +60,16 @@ int quantize_channel(float v, int bits, int pbit, int& decoded) {
     const int has_p = pbit >= 0 ? 1 : 0;
     const int total = bits + has_p;
     const int max_q = (1 << bits) - 1;
-    const float level = v * static_cast<float>((1 << total) - 1) / 255.0f;
-    int q = has_p ? static_cast<int>((level - pbit) * 0.5f + 0.5f) : static_cast<int>(level + 0.5f);
-    q = std::clamp(q, 0, max_q);
-    int best_q = q, best_d = 256;
-    for (int cand = std::max(q - 1, 0); cand <= std::min(q + 1, max_q); ++cand) {
-        const int dec = expand_to_8(has_p ? (cand << 1) | pbit : cand, total);
-        const int d = std::abs(dec - static_cast<int>(v + 0.5f));
-        if (d < best_d) best_d = d, best_q = cand, decoded = dec;
-    }
-    return best_q;
+    const float level = v * (static_cast<float>((1 << total) - 1) * (1.0f / 255.0f));
+    // Decoded values grow with q, so the nearest is the floor or the one above.
+    const float qf = has_p ? (level - static_cast<float>(pbit)) * 0.5f : level;
+    const int lo = std::clamp(static_cast<int>(qf), 0, max_q), hi = std::min(lo + 1, max_q);
+    const int dec_lo = expand_to_8(has_p ? (lo << 1) | pbit : lo, total);
+    const int dec_hi = expand_to_8(has_p ? (hi << 1) | pbit : hi, total);
+    const bool take_hi =
+        std::abs(static_cast<float>(dec_hi) - v) < std::abs(static_cast<float>(dec_lo) - v);
+    decoded = take_hi ? dec_hi : dec_lo;
+    return take_hi ? hi : lo;
 }
 
 // Quantises one endpoint with p-bit `pbit` (-1: none); returns its squared error.
@@ -84,15 +86,21 @@ float quantize_endpoint(const float e[4], const Precision& prec, int pbit, int q
 
 // Fits one subset (texels in `mask`) with `index_bits` indices: principal-axis
 // endpoints, then `passes` rounds of least squares. Indices go to idx[] for masked texels.
-SubsetFit fit_subset(const Texels& t, std::uint32_t mask, const Precision& prec, int index_bits,
-                     const LevelConfig& cfg, std::uint8_t idx[16]) {
+// `channels` is a template parameter (equal to prec.channels) so that the
+// per-channel loops unroll and the 16-texel loops vectorise.
+template <int channels>
+SubsetFit fit_subset_n(const Texels& t, std::uint32_t mask, const Precision& prec, int index_bits,
+                       int passes, bool exhaustive_pbits, std::uint8_t idx[16]) {
     float e[2][4] = {};
-    principal_endpoints(t, mask, prec.channels, e[0], e[1]);
+    principal_endpoints<channels>(t, mask, e[0], e[1]);
     const std::uint8_t* weights = weights_for_bits(index_bits);
     const int entries = 1 << index_bits;
+    // Weights padded to 16 entries (the tail repeats the last weight, never selected).
+    std::uint8_t weights16[16];
+    for (int j = 0; j < 16; ++j) weights16[j] = weights[j < entries ? j : entries - 1];
     SubsetFit best;
     std::uint8_t trial_idx[16] = {};
-    for (int pass = 0; pass <= cfg.refine_passes; ++pass) {
+    for (int pass = 0; pass <= passes; ++pass) {
         // p-bit candidates: (-1,-1) for none; else per endpoint pairs.
         int combos[4][2];
         int combo_count = 0;
@@ -101,7 +109,7 @@ SubsetFit fit_subset(const Texels& t, std::uint32_t mask, const Precision& prec,
         } else if (prec.pbits == Pbits::Shared) {
             for (int p = 0; p < 2; ++p)
                 combos[combo_count][0] = combos[combo_count][1] = p, ++combo_count;
-        } else if (cfg.exhaustive_pbits) {
+        } else if (exhaustive_pbits) {
             for (int p = 0; p < 4; ++p)
                 combos[combo_count][0] = p & 1, combos[combo_count][1] = p >> 1, ++combo_count;
         } else {
@@ -124,11 +132,11 @@ SubsetFit fit_subset(const Texels& t, std::uint32_t mask, const Precision& prec,
             }
             Palette pal;
             pal.count = entries;
-            for (int j = 0; j < entries; ++j)
-                for (int c = 0; c < prec.channels; ++c)
+            for (int c = 0; c < channels; ++c)
+                for (int j = 0; j < 16; ++j) // fixed trip count: vectorises
                     pal.ch[c][j] =
-                        static_cast<float>(interpolate(dec[0][c], dec[1][c], weights[j]));
-            fit.error = select_indices(t, mask, pal, prec.channels, trial_idx);
+                        static_cast<float>(interpolate(dec[0][c], dec[1][c], weights16[j]));
+            fit.error = select_indices(t, mask, pal, channels, trial_idx);
             if (fit.error < best.error) {
                 best = fit;
                 improved = true;
@@ -136,10 +144,22 @@ SubsetFit fit_subset(const Texels& t, std::uint32_t mask, const Precision& prec,
                     if (mask >> i & 1u) idx[i] = trial_idx[i];
             }
         }
-        if (pass == cfg.refine_passes || best.error == 0.0f || (!improved && pass > 0)) break;
-        if (!solve_endpoints(t, mask, idx, weights, prec.channels, e[0], e[1])) break;
+        if (pass == passes || best.error == 0.0f || (!improved && pass > 0)) break;
+        if (!solve_endpoints<channels>(t, mask, idx, weights, e[0], e[1])) break;
     }
     return best;
+}
+
+SubsetFit fit_subset(const Texels& t, std::uint32_t mask, const Precision& prec, int index_bits,
+                     int passes, bool exhaustive_pbits, std::uint8_t idx[16]) {
+    switch (prec.channels) {
+    case 1:
+        return fit_subset_n<1>(t, mask, prec, index_bits, passes, exhaustive_pbits, idx);
+    case 3:
+        return fit_subset_n<3>(t, mask, prec, index_bits, passes, exhaustive_pbits, idx);
+    default:
+        return fit_subset_n<4>(t, mask, prec, index_bits, passes, exhaustive_pbits, idx);
+    }
 }
 
 // A complete encoding of one block in one mode, ready to pack.
@@ -219,7 +239,9 @@ Candidate fit_mode(const Texels& t, int mode, int partition, const LevelConfig& 
         const std::uint32_t mask = m.subsets == 1   ? 0xFFFFu
                                    : m.subsets == 2 ? kTwoSubsetMasks[partition][s]
                                                     : kThreeSubsetMasks[partition][s];
-        const SubsetFit fit = fit_subset(t, mask, prec, m.index_bits, cfg, c.color_idx);
+        const int passes = mode == 6 ? cfg.refine_passes : cfg.partition_refine_passes;
+        const SubsetFit fit =
+            fit_subset(t, mask, prec, m.index_bits, passes, cfg.exhaustive_pbits, c.color_idx);
         for (int k = 0; k < 2; ++k) {
             for (int ch = 0; ch < 4; ++ch) c.q[2 * s + k][ch] = fit.q[k][ch];
             c.p[2 * s + k] = fit.p[k];
@@ -241,10 +263,12 @@ Candidate fit_separate_alpha(const Texels& t, int mode, int rotation, int select
     const int alpha_index_bits = mode == 4 ? (selector == 1 ? 2 : 3) : 2;
     Candidate c;
     c.mode = mode, c.rotation = rotation, c.selector = selector;
-    const SubsetFit color = fit_subset(rotated, 0xFFFFu, Precision{m.color_bits, 0, Pbits::None, 3},
-                                       color_index_bits, cfg, c.color_idx);
-    const SubsetFit alpha = fit_subset(scalar, 0xFFFFu, Precision{m.alpha_bits, 0, Pbits::None, 1},
-                                       alpha_index_bits, cfg, c.alpha_idx);
+    const SubsetFit color =
+        fit_subset(rotated, 0xFFFFu, Precision{m.color_bits, 0, Pbits::None, 3}, color_index_bits,
+                   cfg.partition_refine_passes, false, c.color_idx);
+    const SubsetFit alpha =
+        fit_subset(scalar, 0xFFFFu, Precision{m.alpha_bits, 0, Pbits::None, 1}, alpha_index_bits,
+                   cfg.partition_refine_passes, false, c.alpha_idx);
     for (int k = 0; k < 2; ++k) {
         for (int ch = 0; ch < 3; ++ch) c.q[k][ch] = color.q[k][ch];
         c.q[k][3] = alpha.q[k][0];
@@ -253,65 +277,123 @@ Candidate fit_separate_alpha(const Texels& t, int mode, int rotation, int select
     return c;
 }
 
-// Residual of a subset off its best-fit line: trace of the scatter matrix minus its
-// largest eigenvalue (two power iterations). `s` holds sums of x_c, x_c*x_d, count.
-float line_residual(const float s[16], int channels) {
-    const float n = s[14];
-    if (n < 2.0f) return 0.0f;
-    // Product slots: rr gg bb aa rg rb ra gb ga ba.
-    static constexpr int kSlot[4][4] = {
-        {4, 8, 9, 10}, {8, 5, 11, 12}, {9, 11, 6, 13}, {10, 12, 13, 7}};
-    float cov[4][4];
-    const float inv_n = 1.0f / n;
-    float trace = 0.0f;
-    int widest = 0;
-    for (int a = 0; a < channels; ++a) {
-        for (int b = 0; b < channels; ++b) cov[a][b] = s[kSlot[a][b]] - s[a] * s[b] * inv_n;
-        trace += cov[a][a];
-        if (cov[a][a] > cov[widest][widest]) widest = a;
-    }
-    float v[4];
-    for (int a = 0; a < channels; ++a) v[a] = cov[a][widest];
-    float lambda = 0.0f;
-    for (int iter = 0; iter < 2; ++iter) {
-        float next[4] = {0, 0, 0, 0}, vv = 0.0f, vn = 0.0f;
-        for (int a = 0; a < channels; ++a) {
-            for (int b = 0; b < channels; ++b) next[a] += cov[a][b] * v[b];
-            vv += v[a] * v[a], vn += v[a] * next[a];
-        }
-        if (vv < 1e-12f) return trace;
-        lambda = vn / vv;
-        for (int a = 0; a < channels; ++a) v[a] = next[a];
-    }
-    return trace - lambda;
+// Subset-membership of every texel for every partition as 0/1 floats,
+// partition-minor, so the ranking below runs over 64 partitions in SIMD lanes.
+struct MembershipTable {
+    alignas(64) float in_subset[2][16][64]; // [subset - 1][texel][partition]
+};
+
+constexpr MembershipTable make_membership(const SubsetMasks& masks) {
+    MembershipTable t{};
+    for (int s = 1; s < 3; ++s)
+        for (int i = 0; i < 16; ++i)
+            for (int p = 0; p < 64; ++p)
+                t.in_subset[s - 1][i][p] = (masks[p][s] >> i) & 1u ? 1.0f : 0.0f;
+    return t;
 }
 
-// Writes the `wanted` partitions (of `available`) with the smallest estimated
-// line residual into best[], best first; returns how many were written.
+const MembershipTable& membership(int subsets) {
+    static const MembershipTable two = make_membership(kTwoSubsetMasks);
+    static const MembershipTable three = make_membership(kThreeSubsetMasks);
+    return subsets == 2 ? two : three;
+}
+
+// Moments of one subset for all 64 partitions: sums of x_c, x_c * x_d and count.
+template <int C> struct PartitionMoments {
+    static constexpr int kProducts = C * (C + 1) / 2;
+    alignas(64) float sum[C][64];
+    alignas(64) float prod[kProducts][64];
+    alignas(64) float count[64];
+};
+
+// Residual off the best-fit line, per partition: trace of the scatter matrix minus
+// its largest eigenvalue (Rayleigh quotient after two power iterations from C*1).
+// Written without branches so the loop over partitions vectorises.
+template <int C> void add_line_residuals(const PartitionMoments<C>& m, float score[64]) {
+    for (int p = 0; p < 64; ++p) {
+        const float n = m.count[p];
+        const float inv_n = n > 0.5f ? 1.0f / n : 0.0f;
+        float cov[C][C];
+        int k = 0;
+        for (int a = 0; a < C; ++a)
+            for (int b = a; b < C; ++b, ++k)
+                cov[a][b] = cov[b][a] = m.prod[k][p] - m.sum[a][p] * m.sum[b][p] * inv_n;
+        float trace = 0.0f, v[C];
+        for (int a = 0; a < C; ++a) {
+            trace += cov[a][a];
+            v[a] = 0.0f;
+            for (int b = 0; b < C; ++b) v[a] += cov[a][b];
+        }
+        float vv = 0.0f, vcv = 0.0f;
+        for (int iter = 0; iter < 2; ++iter) {
+            float next[C];
+            vv = 0.0f, vcv = 0.0f;
+            for (int a = 0; a < C; ++a) {
+                next[a] = 0.0f;
+                for (int b = 0; b < C; ++b) next[a] += cov[a][b] * v[b];
+                vv += v[a] * v[a], vcv += v[a] * next[a];
+            }
+            // Rescale to keep the magnitudes in float range.
+            const float scale = 1.0f / (vcv > 1e-20f ? std::sqrt(vcv) : 1.0f);
+            for (int a = 0; a < C; ++a) v[a] = next[a] * scale;
+        }
+        const float lambda = vv > 1e-20f ? vcv / vv : 0.0f;
+        score[p] += trace - lambda;
+    }
+}
+
+template <int C> void rank_scores(const Texels& t, int subsets, float score[64]) {
+    const MembershipTable& table = membership(subsets);
+    float total_sum[C] = {}, total_prod[PartitionMoments<C>::kProducts] = {};
+    for (int i = 0; i < 16; ++i) {
+        int k = 0;
+        for (int a = 0; a < C; ++a) {
+            total_sum[a] += t.ch[a][i];
+            for (int b = a; b < C; ++b, ++k) total_prod[k] += t.ch[a][i] * t.ch[b][i];
+        }
+    }
+    PartitionMoments<C> rest; // subset 0: the total minus the other subsets
+    for (int p = 0; p < 64; ++p) {
+        rest.count[p] = 16.0f;
+        for (int a = 0; a < C; ++a) rest.sum[a][p] = total_sum[a];
+        for (int k = 0; k < PartitionMoments<C>::kProducts; ++k) rest.prod[k][p] = total_prod[k];
+        score[p] = 0.0f;
+    }
+    for (int s = 1; s < subsets; ++s) {
+        PartitionMoments<C> m{};
+        for (int i = 0; i < 16; ++i) {
+            const float* in = table.in_subset[s - 1][i];
+            int k = 0;
+            for (int a = 0; a < C; ++a) {
+                const float x = t.ch[a][i];
+                for (int p = 0; p < 64; ++p) m.sum[a][p] += in[p] * x;
+                for (int b = a; b < C; ++b, ++k) {
+                    const float xy = x * t.ch[b][i];
+                    for (int p = 0; p < 64; ++p) m.prod[k][p] += in[p] * xy;
+                }
+            }
+            for (int p = 0; p < 64; ++p) m.count[p] += in[p];
+        }
+        for (int p = 0; p < 64; ++p) {
+            rest.count[p] -= m.count[p];
+            for (int a = 0; a < C; ++a) rest.sum[a][p] -= m.sum[a][p];
+            for (int k = 0; k < PartitionMoments<C>::kProducts; ++k)
+                rest.prod[k][p] -= m.prod[k][p];
+        }
+        add_line_residuals<C>(m, score);
+    }
+    add_line_residuals<C>(rest, score);
+}
+
+// Writes the `wanted` partitions (of the first `available`) with the smallest
+// estimated line residual into best[], best first; returns how many were written.
 int rank_partitions(const Texels& t, int subsets, int available, int channels, int wanted,
                     int best[64]) {
-    float moments[16][16];
-    float total[16] = {};
-    for (int i = 0; i < 16; ++i) {
-        const float r = t.ch[0][i], g = t.ch[1][i], b = t.ch[2][i], a = t.ch[3][i];
-        const float m[16] = {r,     g,     b,     a,     r * r, g * g, b * b, a * a,
-                             r * g, r * b, r * a, g * b, g * a, b * a, 1.0f,  0.0f};
-        for (int k = 0; k < 16; ++k) moments[i][k] = m[k], total[k] += m[k];
-    }
-    const SubsetMasks& masks = subsets == 2 ? kTwoSubsetMasks : kThreeSubsetMasks;
     float score[64];
-    for (int p = 0; p < available; ++p) {
-        float sums[3][16] = {};
-        for (int s = 1; s < subsets; ++s)
-            for (std::uint32_t bitsleft = masks[p][s]; bitsleft; bitsleft &= bitsleft - 1) {
-                const int i = __builtin_ctz(bitsleft);
-                for (int k = 0; k < 16; ++k) sums[s][k] += moments[i][k];
-            }
-        for (int k = 0; k < 16; ++k)
-            sums[0][k] = total[k] - sums[1][k] - (subsets == 3 ? sums[2][k] : 0.0f);
-        score[p] = 0.0f;
-        for (int s = 0; s < subsets; ++s) score[p] += line_residual(sums[s], channels);
-    }
+    if (channels == 4)
+        rank_scores<4>(t, subsets, score);
+    else
+        rank_scores<3>(t, subsets, score);
     const int count = std::min(wanted, available);
     int order[64];
     for (int p = 0; p < available; ++p) order[p] = p;

@@ -122,19 +122,33 @@ inline float select_indices(const Texels& t, std::uint32_t mask, const Palette& 
 }
 #endif
 
+// Texel membership as 0/1 weights, so the loops below have no branches and the
+// compiler vectorises them across the 16 texels.
+struct alignas(64) MaskWeights {
+    float w[16];
+    explicit MaskWeights(std::uint32_t mask) {
+        for (int i = 0; i < 16; ++i) w[i] = static_cast<float>((mask >> i) & 1u);
+    }
+};
+
 // Least-squares endpoints for fixed interpolation weights: minimises
 // sum |(1 - w_i) e0 + w_i e1 - x_i|^2 over the masked texels. Returns false when
 // the weights are all equal (the system is singular); endpoints are unchanged then.
+template <int channels>
 inline bool solve_endpoints(const Texels& t, std::uint32_t mask, const std::uint8_t idx[16],
-                            const std::uint8_t* weights, int channels, float e0[4], float e1[4]) {
-    float aa = 0, ab = 0, bb = 0, ax[4] = {0, 0, 0, 0}, bx[4] = {0, 0, 0, 0};
+                            const std::uint8_t* weights, float e0[4], float e1[4]) {
+    const MaskWeights m(mask);
+    alignas(64) float wb[16], wa[16];
     for (int i = 0; i < 16; ++i) {
-        if (!(mask >> i & 1u)) continue;
-        const float w = weights[idx[i]] * (1.0f / 64.0f);
-        const float a = 1.0f - w;
-        aa += a * a, ab += a * w, bb += w * w;
-        for (int c = 0; c < channels; ++c) ax[c] += a * t.ch[c][i], bx[c] += w * t.ch[c][i];
+        const float w = static_cast<float>(weights[idx[i] & 15]) * (1.0f / 64.0f);
+        wb[i] = w * m.w[i];
+        wa[i] = (1.0f - w) * m.w[i];
     }
+    float aa = 0, ab = 0, bb = 0;
+    for (int i = 0; i < 16; ++i) aa += wa[i] * wa[i], ab += wa[i] * wb[i], bb += wb[i] * wb[i];
+    float ax[4] = {0, 0, 0, 0}, bx[4] = {0, 0, 0, 0};
+    for (int c = 0; c < channels; ++c)
+        for (int i = 0; i < 16; ++i) ax[c] += wa[i] * t.ch[c][i], bx[c] += wb[i] * t.ch[c][i];
     const float det = aa * bb - ab * ab;
     if (det < 1e-6f) return false;
     const float inv = 1.0f / det;
@@ -150,31 +164,33 @@ inline bool solve_endpoints(const Texels& t, std::uint32_t mask, const std::uint
 // Endpoints along the principal axis of the masked texels: the mean plus the
 // extreme projections. The axis comes from a few power iterations on the
 // covariance, started from the bounding-box diagonal.
-inline void principal_endpoints(const Texels& t, std::uint32_t mask, int channels, float e0[4],
-                                float e1[4]) {
-    float n = 0, mean[4] = {0, 0, 0, 0}, lo[4], hi[4];
-    for (int c = 0; c < 4; ++c) lo[c] = 255.0f, hi[c] = 0.0f;
-    for (int i = 0; i < 16; ++i) {
-        if (!(mask >> i & 1u)) continue;
-        n += 1.0f;
-        for (int c = 0; c < channels; ++c) {
+template <int channels>
+inline void principal_endpoints(const Texels& t, std::uint32_t mask, float e0[4], float e1[4]) {
+    const MaskWeights m(mask);
+    float n = 0.0f;
+    for (int i = 0; i < 16; ++i) n += m.w[i];
+    float mean[4] = {0, 0, 0, 0}, lo[4] = {0, 0, 0, 0}, hi[4] = {0, 0, 0, 0};
+    alignas(64) float d[4][16];
+    for (int c = 0; c < channels; ++c) {
+        float sum = 0.0f, mn = 255.0f, mx = 0.0f;
+        for (int i = 0; i < 16; ++i) {
             const float v = t.ch[c][i];
-            mean[c] += v;
-            lo[c] = v < lo[c] ? v : lo[c];
-            hi[c] = v > hi[c] ? v : hi[c];
+            sum += v * m.w[i];
+            // Texels outside the subset are pushed out of the min/max race.
+            const float up = v + (1.0f - m.w[i]) * 1024.0f, down = v - (1.0f - m.w[i]) * 1024.0f;
+            mn = up < mn ? up : mn;
+            mx = down > mx ? down : mx;
         }
+        mean[c] = sum / n, lo[c] = mn, hi[c] = mx;
+        for (int i = 0; i < 16; ++i) d[c][i] = (t.ch[c][i] - mean[c]) * m.w[i];
     }
-    for (int c = 0; c < channels; ++c) mean[c] /= n;
     float cov[4][4] = {};
-    for (int i = 0; i < 16; ++i) {
-        if (!(mask >> i & 1u)) continue;
-        float d[4];
-        for (int c = 0; c < channels; ++c) d[c] = t.ch[c][i] - mean[c];
-        for (int a = 0; a < channels; ++a)
-            for (int b = a; b < channels; ++b) cov[a][b] += d[a] * d[b];
-    }
     for (int a = 0; a < channels; ++a)
-        for (int b = 0; b < a; ++b) cov[a][b] = cov[b][a];
+        for (int b = a; b < channels; ++b) {
+            float s = 0.0f;
+            for (int i = 0; i < 16; ++i) s += d[a][i] * d[b][i];
+            cov[a][b] = cov[b][a] = s;
+        }
     float axis[4];
     for (int c = 0; c < channels; ++c) axis[c] = hi[c] - lo[c];
     // Orient the diagonal by the sign of the covariance with the widest channel, so
@@ -184,12 +200,12 @@ inline void principal_endpoints(const Texels& t, std::uint32_t mask, int channel
         if (cov[c][c] > cov[widest][widest]) widest = c;
     for (int c = 0; c < channels; ++c)
         if (cov[widest][c] < 0.0f) axis[c] = -axis[c];
-    for (int iter = 0; iter < 4; ++iter) {
+    for (int iter = 0; iter < 3; ++iter) {
         float next[4] = {0, 0, 0, 0}, len = 0.0f;
         for (int a = 0; a < channels; ++a) {
             for (int b = 0; b < channels; ++b) next[a] += cov[a][b] * axis[b];
-            len =
-                len > (next[a] < 0 ? -next[a] : next[a]) ? len : (next[a] < 0 ? -next[a] : next[a]);
+            const float mag = next[a] < 0.0f ? -next[a] : next[a];
+            len = mag > len ? mag : len;
         }
         if (len < 1e-9f) break;
         for (int c = 0; c < channels; ++c) axis[c] = next[c] / len;
@@ -200,9 +216,10 @@ inline void principal_endpoints(const Texels& t, std::uint32_t mask, int channel
     if (norm2 > 1e-12f) {
         tmin = 3.0e38f, tmax = -3.0e38f;
         for (int i = 0; i < 16; ++i) {
-            if (!(mask >> i & 1u)) continue;
             float s = 0.0f;
-            for (int c = 0; c < channels; ++c) s += (t.ch[c][i] - mean[c]) * axis[c];
+            for (int c = 0; c < channels; ++c) s += d[c][i] * axis[c];
+            // Masked-out texels project to 0, which lies inside [tmin, tmax] anyway
+            // because the mean is inside the subset's extent.
             tmin = s < tmin ? s : tmin;
             tmax = s > tmax ? s : tmax;
         }

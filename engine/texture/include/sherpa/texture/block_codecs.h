@@ -23,12 +23,12 @@ std::string_view to_string(SimdLevel level);
 // partitioned modes, more partitions tried and more endpoint refinement.
 inline constexpr int kBc7MinLevel = 0;
 inline constexpr int kBc7MaxLevel = 4;
-inline constexpr int kBc7DefaultLevel = 2;
+inline constexpr int kBc7DefaultLevel = 1;
 
 // BC5 quality levels: 0 fits endpoints by least squares, 1 also searches around them.
 inline constexpr int kBc5MinLevel = 0;
 inline constexpr int kBc5MaxLevel = 1;
-inline constexpr int kBc5DefaultLevel = 1;
+inline constexpr int kBc5DefaultLevel = 0;
 
 struct EncodeSettings {
     int level = kBc7DefaultLevel; // clamped to the format's range

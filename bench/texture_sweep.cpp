@@ -44,7 +44,8 @@ struct Row {
 
 Row measure(const std::vector<bench::CorpusTexture>& set, tex::BlockFormat format, int level,
             const std::string& kind, const Options& opt) {
-    Row row{kind, level, set.size()};
+    Row row;
+    row.kind = kind, row.level = level, row.textures = set.size();
     const unsigned channels = kind == "bc7-rgba" ? tex::kChannelsRgba
                               : kind == "bc5"    ? tex::kChannelsRg
                                                  : tex::kChannelsRgb;

@@ -95,9 +95,10 @@ SubsetFit fit_subset_n(const Texels& t, std::uint32_t mask, const Precision& pre
     principal_endpoints<channels>(t, mask, e[0], e[1]);
     const std::uint8_t* weights = weights_for_bits(index_bits);
     const int entries = 1 << index_bits;
-    // Weights padded to 16 entries (the tail repeats the last weight, never selected).
+    // Weights padded to 16 entries (the tail repeats the table; only the first
+    // `entries` are ever selected because the palette's count says so).
     std::uint8_t weights16[16];
-    for (int j = 0; j < 16; ++j) weights16[j] = weights[j < entries ? j : entries - 1];
+    for (int j = 0; j < 16; ++j) weights16[j] = weights[j & (entries - 1)];
     SubsetFit best;
     std::uint8_t trial_idx[16] = {};
     for (int pass = 0; pass <= passes; ++pass) {

@@ -18,7 +18,8 @@ bool read_file(const std::filesystem::path& path, std::vector<std::uint8_t>& out
     out.clear();
     std::uint8_t chunk[1 << 16];
     std::size_t n = 0;
-    while ((n = std::fread(chunk, 1, sizeof(chunk), f)) > 0) out.insert(out.end(), chunk, chunk + n);
+    while ((n = std::fread(chunk, 1, sizeof(chunk), f)) > 0)
+        out.insert(out.end(), chunk, chunk + n);
     const bool failed = std::ferror(f) != 0;
     std::fclose(f);
     if (failed) {

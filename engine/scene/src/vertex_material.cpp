@@ -3,6 +3,7 @@
 #include <sherpa/scene/texture_records.h>
 #include <sherpa/scene/vertex.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -11,21 +12,30 @@ namespace sherpa {
 
 std::string_view gltf_name(VertexAttribute a) {
     switch (a) {
-    case VertexAttribute::Position: return "POSITION";
-    case VertexAttribute::Normal: return "NORMAL";
-    case VertexAttribute::Tangent: return "TANGENT";
-    case VertexAttribute::TexCoord0: return "TEXCOORD_0";
-    case VertexAttribute::TexCoord1: return "TEXCOORD_1";
-    case VertexAttribute::Color0: return "COLOR_0";
+    case VertexAttribute::Position:
+        return "POSITION";
+    case VertexAttribute::Normal:
+        return "NORMAL";
+    case VertexAttribute::Tangent:
+        return "TANGENT";
+    case VertexAttribute::TexCoord0:
+        return "TEXCOORD_0";
+    case VertexAttribute::TexCoord1:
+        return "TEXCOORD_1";
+    case VertexAttribute::Color0:
+        return "COLOR_0";
     }
     return "?";
 }
 
 std::string_view to_string(Provenance p) {
     switch (p) {
-    case Provenance::Authored: return "authored";
-    case Provenance::Generated: return "generated";
-    case Provenance::Defaulted: return "defaulted";
+    case Provenance::Authored:
+        return "authored";
+    case Provenance::Generated:
+        return "generated";
+    case Provenance::Defaulted:
+        return "defaulted";
     }
     return "?";
 }
@@ -33,33 +43,46 @@ std::string_view to_string(Provenance p) {
 std::uint32_t stream_stride(VertexAttribute a) {
     switch (a) {
     case VertexAttribute::Position:
-    case VertexAttribute::Normal: return 12;
+    case VertexAttribute::Normal:
+        return 12;
     case VertexAttribute::TexCoord0:
-    case VertexAttribute::TexCoord1: return 8;
+    case VertexAttribute::TexCoord1:
+        return 8;
     case VertexAttribute::Tangent:
-    case VertexAttribute::Color0: return 16;
+    case VertexAttribute::Color0:
+        return 16;
     }
     return 0;
 }
 
 std::string_view to_string(AlphaMode m) {
     switch (m) {
-    case AlphaMode::Opaque: return "OPAQUE";
-    case AlphaMode::Mask: return "MASK";
-    case AlphaMode::Blend: return "BLEND";
+    case AlphaMode::Opaque:
+        return "OPAQUE";
+    case AlphaMode::Mask:
+        return "MASK";
+    case AlphaMode::Blend:
+        return "BLEND";
     }
     return "?";
 }
 
 std::string_view to_string(PrimitiveMode m) {
     switch (m) {
-    case PrimitiveMode::Points: return "POINTS";
-    case PrimitiveMode::Lines: return "LINES";
-    case PrimitiveMode::LineLoop: return "LINE_LOOP";
-    case PrimitiveMode::LineStrip: return "LINE_STRIP";
-    case PrimitiveMode::Triangles: return "TRIANGLES";
-    case PrimitiveMode::TriangleStrip: return "TRIANGLE_STRIP";
-    case PrimitiveMode::TriangleFan: return "TRIANGLE_FAN";
+    case PrimitiveMode::Points:
+        return "POINTS";
+    case PrimitiveMode::Lines:
+        return "LINES";
+    case PrimitiveMode::LineLoop:
+        return "LINE_LOOP";
+    case PrimitiveMode::LineStrip:
+        return "LINE_STRIP";
+    case PrimitiveMode::Triangles:
+        return "TRIANGLES";
+    case PrimitiveMode::TriangleStrip:
+        return "TRIANGLE_STRIP";
+    case PrimitiveMode::TriangleFan:
+        return "TRIANGLE_FAN";
     }
     return "?";
 }
@@ -98,29 +121,61 @@ GPUMaterialData to_gpu_material(const MaterialInstance& m) {
 
 SamplerDesc sampler_from_gltf(int mag_filter, int min_filter, int wrap_s, int wrap_t) {
     SamplerDesc d;
+    // tinygltf reports an absent filter as -1, the JSON default would be 0: both mean unspecified.
+    mag_filter = std::max(mag_filter, 0);
+    min_filter = std::max(min_filter, 0);
     switch (mag_filter) {
     case 0:
-    case 9729: d.mag_filter = Filter::Linear; break;
-    case 9728: d.mag_filter = Filter::Nearest; break;
-    default: throw std::invalid_argument("magFilter " + std::to_string(mag_filter) + " is not valid");
+    case 9729:
+        d.mag_filter = Filter::Linear;
+        break;
+    case 9728:
+        d.mag_filter = Filter::Nearest;
+        break;
+    default:
+        throw std::invalid_argument("magFilter " + std::to_string(mag_filter) + " is not valid");
     }
     switch (min_filter) {
     case 0: // unspecified: trilinear, as most viewers do
-    case 9987: d.min_filter = Filter::Linear; d.mipmap_mode = MipmapMode::Linear; break;
-    case 9728: d.min_filter = Filter::Nearest; d.max_lod = 0.0f; break;
-    case 9729: d.min_filter = Filter::Linear; d.max_lod = 0.0f; break;
-    case 9984: d.min_filter = Filter::Nearest; d.mipmap_mode = MipmapMode::Nearest; break;
-    case 9985: d.min_filter = Filter::Linear; d.mipmap_mode = MipmapMode::Nearest; break;
-    case 9986: d.min_filter = Filter::Nearest; d.mipmap_mode = MipmapMode::Linear; break;
-    default: throw std::invalid_argument("minFilter " + std::to_string(min_filter) + " is not valid");
+    case 9987:
+        d.min_filter = Filter::Linear;
+        d.mipmap_mode = MipmapMode::Linear;
+        break;
+    case 9728:
+        d.min_filter = Filter::Nearest;
+        d.max_lod = 0.0f;
+        break;
+    case 9729:
+        d.min_filter = Filter::Linear;
+        d.max_lod = 0.0f;
+        break;
+    case 9984:
+        d.min_filter = Filter::Nearest;
+        d.mipmap_mode = MipmapMode::Nearest;
+        break;
+    case 9985:
+        d.min_filter = Filter::Linear;
+        d.mipmap_mode = MipmapMode::Nearest;
+        break;
+    case 9986:
+        d.min_filter = Filter::Nearest;
+        d.mipmap_mode = MipmapMode::Linear;
+        break;
+    default:
+        throw std::invalid_argument("minFilter " + std::to_string(min_filter) + " is not valid");
     }
     auto wrap = [](int w, const char* what) {
         switch (w) {
         case 0:
-        case 10497: return AddressMode::Repeat;
-        case 33648: return AddressMode::MirroredRepeat;
-        case 33071: return AddressMode::ClampToEdge;
-        default: throw std::invalid_argument(std::string(what) + " " + std::to_string(w) + " is not valid");
+        case 10497:
+            return AddressMode::Repeat;
+        case 33648:
+            return AddressMode::MirroredRepeat;
+        case 33071:
+            return AddressMode::ClampToEdge;
+        default:
+            throw std::invalid_argument(std::string(what) + " " + std::to_string(w) +
+                                        " is not valid");
         }
     };
     d.wrap_u = wrap(wrap_s, "wrapS");

@@ -28,7 +28,7 @@ struct TextureTransform {
 };
 
 struct TextureSlot {
-    std::int32_t texture = -1; // index into Scene::textures, -1 = none
+    std::int32_t texture = -1;   // index into Scene::textures, -1 = none
     std::uint32_t tex_coord = 0; // effective TEXCOORD_n set (after KHR_texture_transform override)
     TextureTransform transform;
     bool present() const { return texture >= 0; }
@@ -55,20 +55,20 @@ struct MaterialInstance {
 // the GPU layer resolves them; straight from the importer they hold glTF texture
 // indices or kTextureSentinel.
 struct alignas(16) GPUMaterialData {
-    glm::vec4 base_color_factor;     // 0
-    glm::vec4 emissive_factor;       // 16: xyz factor, w = KHR_materials_emissive_strength
-    float metallic_factor;           // 32
-    float roughness_factor;          // 36
-    float normal_scale;              // 40
-    float occlusion_strength;        // 44
-    std::uint32_t base_color_tex;    // 48
-    std::uint32_t emissive_tex;      // 52
+    glm::vec4 base_color_factor;          // 0
+    glm::vec4 emissive_factor;            // 16: xyz factor, w = KHR_materials_emissive_strength
+    float metallic_factor;                // 32
+    float roughness_factor;               // 36
+    float normal_scale;                   // 40
+    float occlusion_strength;             // 44
+    std::uint32_t base_color_tex;         // 48
+    std::uint32_t emissive_tex;           // 52
     std::uint32_t metallic_roughness_tex; // 56
-    std::uint32_t normal_tex;        // 60
-    std::uint32_t occlusion_tex;     // 64
-    float alpha_cutoff;              // 68
-    std::uint32_t alpha_mode;        // 72: AlphaMode
-    std::uint32_t double_sided;      // 76
+    std::uint32_t normal_tex;             // 60
+    std::uint32_t occlusion_tex;          // 64
+    float alpha_cutoff;                   // 68
+    std::uint32_t alpha_mode;             // 72: AlphaMode
+    std::uint32_t double_sided;           // 76
 };
 static_assert(sizeof(GPUMaterialData) == 80);
 static_assert(alignof(GPUMaterialData) == 16);

@@ -19,8 +19,13 @@ namespace sherpa {
 
 // glTF primitive topology (values equal glTF's `mode`).
 enum class PrimitiveMode : std::uint8_t {
-    Points = 0, Lines = 1, LineLoop = 2, LineStrip = 3,
-    Triangles = 4, TriangleStrip = 5, TriangleFan = 6,
+    Points = 0,
+    Lines = 1,
+    LineLoop = 2,
+    LineStrip = 3,
+    Triangles = 4,
+    TriangleStrip = 5,
+    TriangleFan = 6,
 };
 std::string_view to_string(PrimitiveMode m);
 
@@ -46,8 +51,8 @@ struct Mesh {
     PrimitiveMode source_mode = PrimitiveMode::Triangles;
     std::uint32_t material_id = 0; // index into Scene::materials
     std::vector<Vertex> vertices;
-    std::vector<std::uint32_t> indices;  // triangle list
-    std::vector<glm::vec4> colors;       // COLOR_0 (RGBA, linear) or empty
+    std::vector<std::uint32_t> indices; // triangle list
+    std::vector<glm::vec4> colors;      // COLOR_0 (RGBA, linear) or empty
     std::array<Provenance, kVertexAttributeCount> provenance{};
     std::array<std::optional<AccessorSource>, kVertexAttributeCount> sources;
     std::optional<AccessorSource> index_source;
@@ -67,12 +72,12 @@ struct Mesh {
 struct PrimitiveInfo {
     std::uint32_t mesh = 0, primitive = 0;
     PrimitiveMode mode = PrimitiveMode::Triangles;
-    std::uint32_t vertices = 0;   // POSITION count
-    std::uint32_t indices = 0;    // index accessor count (0 if non-indexed)
-    std::uint32_t triangles = 0;  // after strip/fan conversion
-    std::int32_t material = -1;   // glTF material index (-1: none)
+    std::uint32_t vertices = 0;    // POSITION count
+    std::uint32_t indices = 0;     // index accessor count (0 if non-indexed)
+    std::uint32_t triangles = 0;   // after strip/fan conversion
+    std::int32_t material = -1;    // glTF material index (-1: none)
     std::int32_t engine_mesh = -1; // index into Scene::meshes, -1 if skipped
-    std::string skipped_reason;   // why no engine mesh was made
+    std::string skipped_reason;    // why no engine mesh was made
     std::vector<std::pair<std::string, Provenance>> attributes;
 };
 
@@ -136,9 +141,8 @@ struct SceneDef {
 
 // Counts as the file states them (before unwelding or splitting).
 struct SourceCounts {
-    std::uint64_t scenes = 0, nodes = 0, meshes = 0, primitives = 0, materials = 0,
-                  textures = 0, images = 0, samplers = 0, lights = 0, cameras = 0,
-                  vertices = 0, triangles = 0;
+    std::uint64_t scenes = 0, nodes = 0, meshes = 0, primitives = 0, materials = 0, textures = 0,
+                  images = 0, samplers = 0, lights = 0, cameras = 0, vertices = 0, triangles = 0;
 };
 
 struct Scene {

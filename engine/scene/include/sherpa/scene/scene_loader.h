@@ -4,12 +4,17 @@
 #include <string>
 #include <string_view>
 
+#include <sherpa/scene/mesh_tangents.h>
 #include <sherpa/scene/scene.h>
 
 namespace sherpa {
 
 struct LoadOptions {
     std::int32_t scene_index = -1; // -1: the file's default scene
+    // Tangents after import: by default the glTF rule (generate with MikkTSpace where
+    // TANGENT is absent and the material has a normal texture). Off: tangents stay as read.
+    bool generate_tangents = true;
+    SceneTangentOptions tangents;
 };
 
 // Either a scene or an error message naming the source and the problem. A failed

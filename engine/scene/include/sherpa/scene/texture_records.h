@@ -42,10 +42,10 @@ struct TextureRecord {
 
 struct ImageRecord {
     std::string name;
-    std::string uri;             // external or data URI (data URIs abbreviated), "" if bufferView
+    std::string uri; // external or data URI (data URIs abbreviated), "" if bufferView
     std::int32_t buffer_view = -1;
-    std::string mime_type;       // "image/png", "image/jpeg", ... or "image/x-sherpa-rgba8"
-    std::uint64_t byte_size = 0; // encoded bytes
+    std::string mime_type;             // "image/png", "image/jpeg", ... or "image/x-sherpa-rgba8"
+    std::uint64_t byte_size = 0;       // encoded bytes
     std::vector<std::uint8_t> encoded; // encoded source bytes (hashed by the texture cache)
     // Set only for images generated in code (built-in scenes): raw RGBA8 pixels.
     std::uint32_t width = 0, height = 0;

@@ -17,7 +17,7 @@ struct PrimitiveUsage {
     std::uint64_t vertex_count = 0;
     std::array<bool, kVertexAttributeCount> present{}; // authored or generated
     std::array<bool, kVertexAttributeCount> used{};    // read by the material's shading
-    std::uint64_t used_bytes = 0;    // only the used streams
+    std::uint64_t used_bytes = 0;                      // only the used streams
     std::uint64_t unified_bytes = 0; // 56-byte unified vertex (+ colour stream if present)
 };
 

@@ -32,7 +32,14 @@ enum class Provenance : std::uint8_t {
     Defaulted, // absent in the file; a constant default stands in
 };
 
-enum class VertexAttribute : std::uint8_t { Position, Normal, Tangent, TexCoord0, TexCoord1, Color0 };
+enum class VertexAttribute : std::uint8_t {
+    Position,
+    Normal,
+    Tangent,
+    TexCoord0,
+    TexCoord1,
+    Color0
+};
 inline constexpr std::size_t kVertexAttributeCount = 6;
 inline constexpr std::array<VertexAttribute, kVertexAttributeCount> kAllVertexAttributes{
     VertexAttribute::Position,  VertexAttribute::Normal,    VertexAttribute::Tangent,

@@ -1,0 +1,44 @@
+// sherpa-cli SUBCOMMAND ...: headless access to the engine.
+#include "cli_common.h"
+
+#include <cstdio>
+#include <vector>
+
+namespace {
+
+struct Subcommand {
+    std::string_view name;
+    int (*run)(sherpa::cli::Args);
+    std::string_view usage;
+};
+
+constexpr Subcommand kSubcommands[] = {
+    {"info", sherpa::cli::run_info,
+     "info SCENE [--json] [--scene N]   report on a scene (path or builtin:...)"},
+    {"cull", sherpa::cli::run_cull,
+     "cull SCENE --camera eye=x,y,z:target=x,y,z[:...] [--method sphere|pvertex|exact] [--json]"},
+    {"tangents", sherpa::cli::run_tangents,
+     "tangents SCENE --dump FILE.csv [--method NAME] [--regenerate]   per-corner tangents\n"
+     "  tangents SCENE --compare [--method NAME] [--json]   authored vs regenerated"},
+};
+
+int usage(std::FILE* out) {
+    std::fprintf(out, "usage: sherpa-cli SUBCOMMAND ...\n\nsubcommands:\n");
+    for (const auto& s : kSubcommands)
+        std::fprintf(out, "  %.*s\n", static_cast<int>(s.usage.size()), s.usage.data());
+    std::fprintf(out, "\nSCENE is a .gltf/.glb path, builtin:default or builtin:grid?n=N\n");
+    return out == stdout ? sherpa::cli::kExitOk : sherpa::cli::kExitUsage;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string_view> args(argv + 1, argv + argc);
+    if (args.empty()) return usage(stderr);
+    if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") return usage(stdout);
+    for (const auto& s : kSubcommands)
+        if (s.name == args[0]) return s.run(sherpa::cli::Args(args).subspan(1));
+    std::fprintf(stderr, "error: unknown subcommand '%.*s'\n", static_cast<int>(args[0].size()),
+                 args[0].data());
+    return usage(stderr);
+}

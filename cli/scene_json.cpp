@@ -1,0 +1,81 @@
+#include "scene_json.h"
+
+namespace sherpa::cli {
+
+using nlohmann::json;
+
+json aabb_json(const Aabb& box) {
+    if (!box.valid()) return json{{"min", nullptr}, {"max", nullptr}, {"empty", true}};
+    return json{{"min", {box.min.x, box.min.y, box.min.z}},
+                {"max", {box.max.x, box.max.y, box.max.z}}};
+}
+
+json usage_json(const Scene& scene, const UsageReport& report) {
+    json prims = json::array();
+    for (const auto& u : report.primitives) {
+        json present = json::array(), used = json::array();
+        for (VertexAttribute a : kAllVertexAttributes) {
+            const auto i = static_cast<std::size_t>(a);
+            if (u.present[i]) present.push_back(gltf_name(a));
+            if (u.used[i]) used.push_back(gltf_name(a));
+        }
+        prims.push_back({{"mesh", u.group_id},
+                         {"primitive", u.primitive_index},
+                         {"material", scene.materials[u.material_id].gltf_index},
+                         {"instances", u.instances},
+                         {"vertices", u.vertex_count},
+                         {"present", present},
+                         {"used", used},
+                         {"used_bytes", u.used_bytes},
+                         {"unified_bytes", u.unified_bytes}});
+    }
+    const double saved =
+        report.unified_bytes ? 1.0 - double(report.used_bytes) / double(report.unified_bytes) : 0.0;
+    return json{{"primitives", prims},
+                {"used_bytes", report.used_bytes},
+                {"unified_bytes", report.unified_bytes},
+                {"saved_fraction", saved}};
+}
+
+json scene_info_json(const Scene& scene) {
+    const SourceCounts& c = scene.counts;
+    json j = {{"source", scene.source},
+              {"scenes", c.scenes},
+              {"displayed_scene", scene.displayed_scene},
+              {"nodes", c.nodes},
+              {"meshes", c.meshes},
+              {"primitives", c.primitives},
+              {"materials", c.materials},
+              {"textures", c.textures},
+              {"images", c.images},
+              {"samplers", c.samplers},
+              {"lights", c.lights},
+              {"cameras", c.cameras},
+              {"instances", scene.instances.size()},
+              {"vertices", c.vertices},
+              {"triangles", c.triangles},
+              {"bounds", aabb_json(scene.bounds)}};
+    json detail = json::array();
+    for (const auto& p : scene.primitives) {
+        json attrs = json::object();
+        for (const auto& [name, prov] : p.attributes) attrs[name] = to_string(prov);
+        json e = {{"mesh", p.mesh},         {"primitive", p.primitive}, {"mode", to_string(p.mode)},
+                  {"vertices", p.vertices}, {"indices", p.indices},     {"triangles", p.triangles},
+                  {"material", p.material}, {"attributes", attrs}};
+        if (p.engine_mesh >= 0) {
+            const Mesh& m = scene.meshes[static_cast<std::size_t>(p.engine_mesh)];
+            e["engine_vertices"] = m.vertices.size();
+            e["unwelded"] = m.unwelded;
+        } else {
+            e["skipped"] = p.skipped_reason;
+        }
+        detail.push_back(std::move(e));
+    }
+    j["primitives_detail"] = std::move(detail);
+    j["usage"] = usage_json(scene, build_usage_report(scene));
+    j["warnings"] = scene.warnings;
+    j["timings_ms"] = {{"parse", scene.parse_ms}, {"process", scene.process_ms}};
+    return j;
+}
+
+} // namespace sherpa::cli

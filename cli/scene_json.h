@@ -1,0 +1,15 @@
+#pragma once
+// JSON views of engine data, shared by CLI subcommands.
+#include <nlohmann/json.hpp>
+
+#include <sherpa/scene/scene.h>
+#include <sherpa/scene/usage_report.h>
+
+namespace sherpa::cli {
+
+nlohmann::json aabb_json(const Aabb& box);
+nlohmann::json usage_json(const Scene& scene, const UsageReport& report);
+// The `sherpa-cli info --json` object.
+nlohmann::json scene_info_json(const Scene& scene);
+
+} // namespace sherpa::cli

@@ -1,0 +1,90 @@
+#pragma once
+// CPU frustum culling of world AABBs: frustum extraction, three methods of
+// increasing precision (sphere, p-vertex, exact), scalar and SIMD batch paths.
+//
+// Contracts: planes are normalised and point inward (inside: dot(n, p) + d >= 0).
+// The sphere and p-vertex tests are conservative: they never reject a box that
+// intersects the frustum. The exact test rejects every box that does not.
+// Boxes that are invalid (non-finite or inverted) are never culled: they are
+// reported (CullCounts::invalid) and treated as visible.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include <sherpa/core/aabb.h>
+
+namespace sherpa {
+
+struct Plane {
+    glm::vec3 normal{0.0f};
+    float d = 0.0f;
+    float distance(glm::vec3 p) const { return glm::dot(normal, p) + d; }
+};
+
+struct Frustum {
+    std::array<Plane, 6> planes{};
+    std::uint32_t plane_count = 0; // 5 when the far plane is at infinity
+    // World-space corners of the NDC cube unprojected, homogeneous: w == 0 marks a
+    // corner at infinity (infinite far plane), xyz is then its direction.
+    std::array<glm::vec4, 8> corners{};
+    bool empty = false; // the matrix admits no point (degenerate or NaN)
+};
+
+// Gribb-Hartmann plane extraction for Vulkan clip space (0 <= z <= w). Works for
+// perspective, orthographic, reverse-Z and infinite far planes (a plane whose
+// normal vanishes is dropped).
+Frustum frustum_from_view_projection(const glm::mat4& view_projection);
+
+enum class CullMethod : std::uint8_t { Sphere, PVertex, Exact };
+std::string_view to_string(CullMethod m);
+bool parse_cull_method(std::string_view s, CullMethod& out);
+
+// Single-box reference tests (valid boxes only).
+bool sphere_visible(const Frustum& f, const Aabb& box);
+bool pvertex_visible(const Frustum& f, const Aabb& box);
+// Separating-axis test between the box and the frustum polyhedron (handles an
+// infinite far plane through the corners at infinity).
+bool exact_visible(const Frustum& f, const Aabb& box);
+// Not valid: non-finite components or min > max on some axis.
+bool box_is_invalid(glm::vec3 min, glm::vec3 max);
+
+// Structure-of-arrays boxes for the batch paths.
+struct BoxesSoA {
+    std::vector<float> min_x, min_y, min_z, max_x, max_y, max_z;
+    std::vector<std::uint32_t> invalid; // indices of invalid boxes (stored as empty boxes)
+    void assign(std::span<const Aabb> boxes);
+    std::size_t size() const { return min_x.size(); }
+    Aabb box(std::size_t i) const {
+        return Aabb::from_min_max({min_x[i], min_y[i], min_z[i]}, {max_x[i], max_y[i], max_z[i]});
+    }
+};
+
+enum class SimdLevel : std::uint8_t { Scalar, Avx2, Avx512 };
+std::string_view to_string(SimdLevel s);
+SimdLevel best_simd_level(); // runtime CPU dispatch
+
+struct CullCounts {
+    std::uint64_t tested = 0, visible = 0, culled = 0, invalid = 0;
+};
+
+// Culls every box; writes visible[i] = 1 or 0. `visible.size()` must equal
+// `boxes.size()`. `level` above what the CPU supports falls back to the best one.
+// `threads` > 1 splits the range across OpenMP threads.
+CullCounts cull_boxes(const Frustum& f, const BoxesSoA& boxes, CullMethod method, SimdLevel level,
+                      std::span<std::uint8_t> visible, int threads = 1);
+
+namespace detail {
+// p-vertex batch kernels over [begin, end); exposed for the benchmark.
+void pvertex_scalar(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t end,
+                    std::uint8_t* out);
+void pvertex_avx2(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t end,
+                  std::uint8_t* out);
+void pvertex_avx512(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t end,
+                    std::uint8_t* out);
+} // namespace detail
+
+} // namespace sherpa

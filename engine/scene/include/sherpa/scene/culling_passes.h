@@ -1,0 +1,90 @@
+#pragma once
+// Culling passes over a Scene: the camera pass and shadow-cascade passes, their
+// visible lists, draw groups and statistics.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <sherpa/scene/camera_spec.h>
+#include <sherpa/scene/culling.h>
+#include <sherpa/scene/scene.h>
+
+namespace sherpa {
+
+// One instanced draw: consecutive visible instances sharing mesh, alpha mode and
+// double-sidedness (the renderer's pipeline/culling-mode key).
+struct DrawGroup {
+    std::uint32_t mesh_id = 0;
+    AlphaMode alpha_mode = AlphaMode::Opaque;
+    bool double_sided = false;
+    std::uint32_t first = 0, count = 0; // range in PassResult::draw_order
+};
+
+struct CullStats {
+    std::string pass;
+    CullMethod method = CullMethod::PVertex;
+    SimdLevel simd = SimdLevel::Scalar;
+    std::uint64_t total = 0, tested = 0, visible = 0, culled = 0, invalid = 0;
+    // Kept by this method although the exact test rejects them (-1: not measured).
+    std::int64_t false_positives = -1;
+    std::uint64_t draw_calls = 0, triangles = 0;
+    double cpu_ms = 0.0;
+};
+
+struct PassResult {
+    std::vector<std::uint32_t> visible_opaque;      // instance indices (opaque and mask)
+    std::vector<std::uint32_t> visible_transparent; // blend, sorted back to front
+    std::vector<std::uint32_t> draw_order;          // opaque instances sorted by group key
+    std::vector<DrawGroup> groups;                  // over draw_order, then one per transparent
+    CullStats stats;
+};
+
+struct CullOptions {
+    CullMethod method = CullMethod::PVertex;
+    SimdLevel simd = SimdLevel::Avx512; // clamped to the CPU's best
+    int threads = 1;
+    bool count_false_positives = false; // also run the exact test to count them
+};
+
+// World AABBs of the scene's instances, as the batch kernels want them.
+BoxesSoA instance_boxes(const Scene& scene);
+
+PassResult cull_pass(const Scene& scene, const BoxesSoA& boxes, const Frustum& frustum,
+                     glm::vec3 eye, const CullOptions& options, std::string pass_name);
+
+// Shadow cascades for a directional light: the camera frustum is split (practical
+// split scheme, `lambda` between uniform and logarithmic) up to `max_distance`
+// (0: as far as the scene bounds reach); each slice gets a light-space box that is
+// extended toward the light up to the scene bounds, so casters outside the view
+// still cast. Returns one view-projection per cascade (reverse-Z orthographic).
+struct CascadeSetup {
+    std::uint32_t count = 4;
+    float lambda = 0.75f;
+    float max_distance = 0.0f;
+};
+std::vector<glm::mat4> cascade_view_projections(const CameraSpec& camera, glm::vec3 light_direction,
+                                                const Aabb& scene_bounds,
+                                                const CascadeSetup& setup);
+
+// Fixed-capacity history of per-frame statistics, oldest overwritten first.
+template <typename T> class RingHistory {
+public:
+    explicit RingHistory(std::size_t capacity) : items_(capacity) {}
+    void push(T v) {
+        items_[(start_ + size_) % items_.size()] = std::move(v);
+        if (size_ < items_.size())
+            ++size_;
+        else
+            start_ = (start_ + 1) % items_.size();
+    }
+    std::size_t size() const { return size_; }
+    const T& operator[](std::size_t i) const {
+        return items_[(start_ + i) % items_.size()];
+    } // 0 = oldest
+
+private:
+    std::vector<T> items_;
+    std::size_t start_ = 0, size_ = 0;
+};
+
+} // namespace sherpa

@@ -1,0 +1,35 @@
+#pragma once
+// Internal: bounds-checked decoding of glTF accessors (any component type,
+// normalized or not, strided/interleaved, sparse) into floats or indices.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <sherpa/scene/scene.h>
+
+namespace tinygltf {
+class Model;
+}
+
+namespace sherpa::detail {
+
+// Decodes accessor `index` into `components` floats per element, applying glTF's
+// normalisation rules and sparse substitution. `where` is the JSON path used in
+// error messages (e.g. "meshes[0].primitives[1].attributes.POSITION").
+// Throws ImportError if the accessor is out of range, has the wrong type
+// (component count not in `allowed_components`), or reads past its buffer.
+std::vector<float> read_accessor_floats(const tinygltf::Model& model, int index,
+                                        std::initializer_list<std::uint32_t> allowed_components,
+                                        std::uint32_t& components, const std::string& where);
+
+// Decodes an index accessor (SCALAR of unsigned byte/short/int).
+std::vector<std::uint32_t> read_accessor_indices(const tinygltf::Model& model, int index,
+                                                 const std::string& where);
+
+// Describes where the accessor's data lives, for the inspection docks.
+AccessorSource describe_accessor(const tinygltf::Model& model, int index);
+
+// Number of elements, after validating the index only.
+std::uint32_t accessor_count(const tinygltf::Model& model, int index, const std::string& where);
+
+} // namespace sherpa::detail

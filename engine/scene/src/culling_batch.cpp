@@ -1,0 +1,192 @@
+// Batch culling over structure-of-arrays boxes: scalar reference kernels and
+// AVX2 / AVX-512 p-vertex kernels chosen at run time.
+#include <sherpa/scene/culling.h>
+
+#include <algorithm>
+#include <immintrin.h>
+
+namespace sherpa {
+
+std::string_view to_string(SimdLevel s) {
+    switch (s) {
+    case SimdLevel::Scalar:
+        return "scalar";
+    case SimdLevel::Avx2:
+        return "avx2";
+    case SimdLevel::Avx512:
+        return "avx512";
+    }
+    return "?";
+}
+
+SimdLevel best_simd_level() {
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+        __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("bmi2"))
+        return SimdLevel::Avx512;
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&
+        __builtin_cpu_supports("bmi2"))
+        return SimdLevel::Avx2;
+    return SimdLevel::Scalar;
+}
+
+void BoxesSoA::assign(std::span<const Aabb> boxes) {
+    for (auto* v : {&min_x, &min_y, &min_z, &max_x, &max_y, &max_z}) v->resize(boxes.size());
+    invalid.clear();
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        glm::vec3 lo = boxes[i].min, hi = boxes[i].max;
+        if (!boxes[i].valid() || box_is_invalid(lo, hi)) {
+            invalid.push_back(static_cast<std::uint32_t>(i));
+            lo = hi = glm::vec3(0.0f); // kernels see a harmless point; the result is overridden
+        }
+        min_x[i] = lo.x, min_y[i] = lo.y, min_z[i] = lo.z;
+        max_x[i] = hi.x, max_y[i] = hi.y, max_z[i] = hi.z;
+    }
+}
+
+namespace detail {
+namespace {
+
+// Per plane, the p-vertex reads max or min along each axis by the normal's sign:
+// choose the arrays once per plane so the inner loop is branch-free.
+struct PlaneArrays {
+    const float *x, *y, *z;
+    float nx, ny, nz, d;
+};
+
+std::uint32_t plane_arrays(const Frustum& f, const BoxesSoA& b, PlaneArrays* out) {
+    for (std::uint32_t i = 0; i < f.plane_count; ++i) {
+        const Plane& p = f.planes[i];
+        out[i] = {p.normal.x >= 0 ? b.max_x.data() : b.min_x.data(),
+                  p.normal.y >= 0 ? b.max_y.data() : b.min_y.data(),
+                  p.normal.z >= 0 ? b.max_z.data() : b.min_z.data(),
+                  p.normal.x,
+                  p.normal.y,
+                  p.normal.z,
+                  p.d};
+    }
+    return f.plane_count;
+}
+
+} // namespace
+
+void pvertex_scalar(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t end,
+                    std::uint8_t* out) {
+    PlaneArrays pa[6];
+    const std::uint32_t n = plane_arrays(f, b, pa);
+    for (std::size_t i = begin; i < end; ++i) {
+        bool inside = !f.empty;
+        for (std::uint32_t k = 0; k < n; ++k)
+            inside &=
+                pa[k].nx * pa[k].x[i] + pa[k].ny * pa[k].y[i] + pa[k].nz * pa[k].z[i] + pa[k].d >=
+                0.0f;
+        out[i] = inside ? 1 : 0;
+    }
+}
+
+__attribute__((target("avx2,fma,bmi2"))) void pvertex_avx2(const Frustum& f, const BoxesSoA& b,
+                                                           std::size_t begin, std::size_t end,
+                                                           std::uint8_t* out) {
+    PlaneArrays pa[6];
+    const std::uint32_t n = plane_arrays(f, b, pa);
+    std::size_t i = begin;
+    if (!f.empty)
+        for (; i + 8 <= end; i += 8) {
+            __m256 all = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
+            for (std::uint32_t k = 0; k < n; ++k) {
+                __m256 dist = _mm256_set1_ps(pa[k].d);
+                dist =
+                    _mm256_fmadd_ps(_mm256_set1_ps(pa[k].nx), _mm256_loadu_ps(pa[k].x + i), dist);
+                dist =
+                    _mm256_fmadd_ps(_mm256_set1_ps(pa[k].ny), _mm256_loadu_ps(pa[k].y + i), dist);
+                dist =
+                    _mm256_fmadd_ps(_mm256_set1_ps(pa[k].nz), _mm256_loadu_ps(pa[k].z + i), dist);
+                all = _mm256_and_ps(all, _mm256_cmp_ps(dist, _mm256_setzero_ps(), _CMP_GE_OQ));
+            }
+            const int mask = _mm256_movemask_ps(all);
+            // Spread 8 mask bits to 8 bytes of 0/1.
+            const std::uint64_t bytes =
+                _pdep_u64(static_cast<std::uint64_t>(mask), 0x0101010101010101ull);
+            __builtin_memcpy(out + i, &bytes, 8);
+        }
+    pvertex_scalar(f, b, i, end, out);
+}
+
+__attribute__((target("avx512f,avx512bw,avx512vl,bmi2"))) void
+pvertex_avx512(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t end,
+               std::uint8_t* out) {
+    PlaneArrays pa[6];
+    const std::uint32_t n = plane_arrays(f, b, pa);
+    std::size_t i = begin;
+    if (!f.empty)
+        for (; i + 16 <= end; i += 16) {
+            __mmask16 all = 0xFFFF;
+            for (std::uint32_t k = 0; k < n; ++k) {
+                __m512 dist = _mm512_set1_ps(pa[k].d);
+                dist =
+                    _mm512_fmadd_ps(_mm512_set1_ps(pa[k].nx), _mm512_loadu_ps(pa[k].x + i), dist);
+                dist =
+                    _mm512_fmadd_ps(_mm512_set1_ps(pa[k].ny), _mm512_loadu_ps(pa[k].y + i), dist);
+                dist =
+                    _mm512_fmadd_ps(_mm512_set1_ps(pa[k].nz), _mm512_loadu_ps(pa[k].z + i), dist);
+                all = _mm512_mask_cmp_ps_mask(all, dist, _mm512_setzero_ps(), _CMP_GE_OQ);
+            }
+            _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i), _mm_maskz_set1_epi8(all, 1));
+        }
+    pvertex_scalar(f, b, i, end, out);
+}
+
+} // namespace detail
+
+namespace {
+
+void sphere_range(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t end,
+                  std::uint8_t* out) {
+    for (std::size_t i = begin; i < end; ++i) out[i] = sphere_visible(f, b.box(i)) ? 1 : 0;
+}
+
+void run_range(const Frustum& f, const BoxesSoA& b, CullMethod method, SimdLevel level,
+               std::size_t begin, std::size_t end, std::uint8_t* out) {
+    if (method == CullMethod::Sphere) return sphere_range(f, b, begin, end, out);
+    switch (level) {
+    case SimdLevel::Avx512:
+        detail::pvertex_avx512(f, b, begin, end, out);
+        break;
+    case SimdLevel::Avx2:
+        detail::pvertex_avx2(f, b, begin, end, out);
+        break;
+    default:
+        detail::pvertex_scalar(f, b, begin, end, out);
+        break;
+    }
+    if (method == CullMethod::Exact) // the exact test only refines p-vertex survivors
+        for (std::size_t i = begin; i < end; ++i)
+            if (out[i] && !exact_visible(f, b.box(i))) out[i] = 0;
+}
+
+} // namespace
+
+CullCounts cull_boxes(const Frustum& f, const BoxesSoA& boxes, CullMethod method, SimdLevel level,
+                      std::span<std::uint8_t> visible, int threads) {
+    const std::size_t n = boxes.size();
+    level = std::min(level, best_simd_level());
+    if (threads > 1 && n > 4096) {
+        const auto chunks = static_cast<std::int64_t>((n + 4095) / 4096);
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 4)
+        for (std::int64_t c = 0; c < chunks; ++c) {
+            const std::size_t begin = static_cast<std::size_t>(c) * 4096;
+            run_range(f, boxes, method, level, begin, std::min(n, begin + 4096), visible.data());
+        }
+    } else {
+        run_range(f, boxes, method, level, 0, n, visible.data());
+    }
+    CullCounts counts;
+    counts.tested = n;
+    for (std::uint32_t i : boxes.invalid) visible[i] = 1;
+    counts.invalid = boxes.invalid.size();
+    for (std::size_t i = 0; i < n; ++i) counts.visible += visible[i];
+    counts.culled = n - counts.visible;
+    return counts;
+}
+
+} // namespace sherpa

@@ -1,0 +1,266 @@
+// glTF primitives -> engine meshes: attribute decoding, topology conversion,
+// flat normals for primitives without NORMAL, validation.
+#include "accessor_reader.h"
+#include "import_context.h"
+#include "import_error.h"
+
+#include <cmath>
+
+#include <tiny_gltf.h>
+
+namespace sherpa::detail {
+namespace {
+
+std::vector<std::uint32_t> to_triangle_list(PrimitiveMode mode,
+                                            const std::vector<std::uint32_t>& in) {
+    std::vector<std::uint32_t> out;
+    const std::size_t n = in.size();
+    switch (mode) {
+    case PrimitiveMode::Triangles:
+        out.assign(in.begin(), in.begin() + static_cast<std::ptrdiff_t>(n - n % 3));
+        break;
+    case PrimitiveMode::TriangleStrip:
+        // glTF: triangle i = {v_i, v_(i+1+i%2), v_(i+2-i%2)} keeps a consistent winding.
+        for (std::size_t i = 0; i + 2 < n; ++i) {
+            const std::size_t odd = i % 2;
+            out.insert(out.end(), {in[i], in[i + 1 + odd], in[i + 2 - odd]});
+        }
+        break;
+    case PrimitiveMode::TriangleFan:
+        // glTF: triangle i = {v_(i+1), v_(i+2), v_0}.
+        for (std::size_t i = 0; i + 2 < n; ++i)
+            out.insert(out.end(), {in[i + 1], in[i + 2], in[0]});
+        break;
+    default:
+        break;
+    }
+    return out;
+}
+
+template <typename Apply>
+void read_vec_attribute(const tinygltf::Model& model, const tinygltf::Primitive& prim,
+                        const char* name, std::initializer_list<std::uint32_t> comps,
+                        std::uint32_t expected_count, const std::string& where, Mesh& mesh,
+                        VertexAttribute attr, Apply&& apply) {
+    const auto it = prim.attributes.find(name);
+    const auto slot = static_cast<std::size_t>(attr);
+    if (it == prim.attributes.end()) {
+        mesh.provenance[slot] = Provenance::Defaulted;
+        return;
+    }
+    const std::string path = where + ".attributes." + name;
+    std::uint32_t nc = 0;
+    const auto values = read_accessor_floats(model, it->second, comps, nc, path);
+    if (values.size() / nc != expected_count)
+        fail(path + ": has " + std::to_string(values.size() / nc) + " elements but POSITION has " +
+             std::to_string(expected_count));
+    for (std::uint32_t i = 0; i < expected_count; ++i) apply(i, &values[i * nc], nc);
+    mesh.provenance[slot] = Provenance::Authored;
+    mesh.sources[slot] = describe_accessor(model, it->second);
+}
+
+// Replaces the mesh's vertices by one vertex per triangle corner with the face
+// normal, as glTF requires when NORMAL is absent.
+std::uint32_t unweld_with_flat_normals(Mesh& mesh) {
+    std::vector<Vertex> out;
+    std::vector<glm::vec4> colors;
+    out.reserve(mesh.indices.size());
+    if (!mesh.colors.empty()) colors.reserve(mesh.indices.size());
+    std::uint32_t degenerate = 0;
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const Vertex& a = mesh.vertices[mesh.indices[t]];
+        const Vertex& b = mesh.vertices[mesh.indices[t + 1]];
+        const Vertex& c = mesh.vertices[mesh.indices[t + 2]];
+        // Cross product in double: tiny or huge coordinates must not underflow to zero.
+        const glm::dvec3 e1 = glm::dvec3(b.position) - glm::dvec3(a.position);
+        const glm::dvec3 e2 = glm::dvec3(c.position) - glm::dvec3(a.position);
+        glm::dvec3 n = glm::cross(e1, e2);
+        const double len = glm::length(n);
+        glm::vec3 normal(0.0f, 0.0f, 1.0f);
+        if (len > 0.0 && std::isfinite(len))
+            normal = glm::vec3(n / len);
+        else
+            ++degenerate;
+        for (int k = 0; k < 3; ++k) {
+            Vertex v = mesh.vertices[mesh.indices[t + static_cast<std::size_t>(k)]];
+            v.normal = normal;
+            out.push_back(v);
+            if (!mesh.colors.empty())
+                colors.push_back(mesh.colors[mesh.indices[t + static_cast<std::size_t>(k)]]);
+        }
+    }
+    mesh.vertices = std::move(out);
+    mesh.colors = std::move(colors);
+    for (std::uint32_t i = 0; i < mesh.indices.size(); ++i) mesh.indices[i] = i;
+    mesh.unwelded = true;
+    return degenerate;
+}
+
+void import_primitive(ImportContext& ctx, std::uint32_t mesh_index, std::uint32_t prim_index) {
+    const auto& model = ctx.model;
+    const auto& prim = model.meshes[mesh_index].primitives[prim_index];
+    const std::string where =
+        "meshes[" + std::to_string(mesh_index) + "].primitives[" + std::to_string(prim_index) + "]";
+    Scene& scene = ctx.scene;
+
+    PrimitiveInfo info;
+    info.mesh = mesh_index;
+    info.primitive = prim_index;
+    const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+    if (mode > TINYGLTF_MODE_TRIANGLE_FAN)
+        fail(where + ".mode: " + std::to_string(mode) + " is not a valid primitive mode");
+    info.mode = static_cast<PrimitiveMode>(mode);
+    info.material = prim.material;
+    if (prim.material >= static_cast<int>(model.materials.size()) || prim.material < -1)
+        fail(where + ".material: index " + std::to_string(prim.material) +
+             " out of range (file has " + std::to_string(model.materials.size()) + " materials)");
+
+    const auto pos_it = prim.attributes.find("POSITION");
+    for (const auto& [name, accessor] : prim.attributes) {
+        accessor_count(model, accessor, where + ".attributes." + name); // validates the index
+        info.attributes.emplace_back(name, Provenance::Authored);
+    }
+    auto finish_skipped = [&](std::string reason) {
+        ctx.warn(where + ": " + reason);
+        info.skipped_reason = std::move(reason);
+        scene.mesh_primitives[mesh_index].push_back(-1);
+        scene.primitives.push_back(std::move(info));
+    };
+    if (pos_it == prim.attributes.end()) {
+        ++scene.counts.primitives;
+        return finish_skipped("no POSITION attribute; primitive not drawn");
+    }
+    const std::uint32_t vertex_count =
+        accessor_count(model, pos_it->second, where + ".attributes.POSITION");
+    info.vertices = vertex_count;
+    scene.counts.vertices += vertex_count;
+    ++scene.counts.primitives;
+
+    std::vector<std::uint32_t> source_indices;
+    if (prim.indices >= 0) {
+        source_indices = read_accessor_indices(model, prim.indices, where + ".indices");
+        for (std::size_t i = 0; i < source_indices.size(); ++i)
+            if (source_indices[i] >= vertex_count)
+                fail(where + ".indices (accessors[" + std::to_string(prim.indices) + "])[" +
+                     std::to_string(i) + "] = " + std::to_string(source_indices[i]) +
+                     " is beyond the vertex count " + std::to_string(vertex_count));
+        info.indices = static_cast<std::uint32_t>(source_indices.size());
+    } else {
+        source_indices.resize(vertex_count);
+        for (std::uint32_t i = 0; i < vertex_count; ++i) source_indices[i] = i;
+    }
+    if (mode < TINYGLTF_MODE_TRIANGLES)
+        return finish_skipped(std::string(to_string(info.mode)) +
+                              " primitive kept out of the triangle path (not drawn)");
+
+    Mesh mesh;
+    mesh.group_id = mesh_index;
+    mesh.primitive_index = prim_index;
+    mesh.name = model.meshes[mesh_index].name + "#" + std::to_string(prim_index);
+    mesh.source_mode = info.mode;
+    mesh.indices = to_triangle_list(info.mode, source_indices);
+    if (mode == TINYGLTF_MODE_TRIANGLES && source_indices.size() % 3 != 0)
+        ctx.warn(where + ": " + std::to_string(source_indices.size() % 3) +
+                 " trailing indices ignored (count not a multiple of 3)");
+    info.triangles = mesh.triangle_count();
+    mesh.source_vertex_count = vertex_count;
+    mesh.source_triangle_count = info.triangles;
+    scene.counts.triangles += info.triangles;
+    if (vertex_count == 0 || info.triangles == 0)
+        return finish_skipped("empty primitive (" + std::to_string(vertex_count) + " vertices, " +
+                              std::to_string(info.triangles) + " triangles); not drawn");
+
+    mesh.vertices.resize(vertex_count);
+    read_vec_attribute(model, prim, "POSITION", {3}, vertex_count, where, mesh,
+                       VertexAttribute::Position,
+                       [&](std::uint32_t i, const float* v, std::uint32_t) {
+                           mesh.vertices[i].position = {v[0], v[1], v[2]};
+                       });
+    for (std::uint32_t i = 0; i < vertex_count; ++i)
+        if (!is_finite(mesh.vertices[i].position))
+            fail(where + ".attributes.POSITION[" + std::to_string(i) +
+                 "] is not finite (NaN or Inf)");
+    read_vec_attribute(model, prim, "NORMAL", {3}, vertex_count, where, mesh,
+                       VertexAttribute::Normal,
+                       [&](std::uint32_t i, const float* v, std::uint32_t) {
+                           mesh.vertices[i].normal = {v[0], v[1], v[2]};
+                       });
+    read_vec_attribute(model, prim, "TANGENT", {4}, vertex_count, where, mesh,
+                       VertexAttribute::Tangent,
+                       [&](std::uint32_t i, const float* v, std::uint32_t) {
+                           mesh.vertices[i].tangent = {v[0], v[1], v[2], v[3]};
+                       });
+    read_vec_attribute(model, prim, "TEXCOORD_0", {2}, vertex_count, where, mesh,
+                       VertexAttribute::TexCoord0,
+                       [&](std::uint32_t i, const float* v, std::uint32_t) {
+                           mesh.vertices[i].uv0 = {v[0], v[1]};
+                       });
+    read_vec_attribute(model, prim, "TEXCOORD_1", {2}, vertex_count, where, mesh,
+                       VertexAttribute::TexCoord1,
+                       [&](std::uint32_t i, const float* v, std::uint32_t) {
+                           mesh.vertices[i].uv1 = {v[0], v[1]};
+                       });
+    if (prim.attributes.count("COLOR_0")) mesh.colors.resize(vertex_count);
+    read_vec_attribute(model, prim, "COLOR_0", {3, 4}, vertex_count, where, mesh,
+                       VertexAttribute::Color0,
+                       [&](std::uint32_t i, const float* v, std::uint32_t n) {
+                           mesh.colors[i] = {v[0], v[1], v[2], n == 4 ? v[3] : 1.0f};
+                       });
+    if (prim.indices >= 0) mesh.index_source = describe_accessor(model, prim.indices);
+
+    if (mesh.provenance_of(VertexAttribute::Normal) == Provenance::Defaulted) {
+        const std::uint32_t degenerate = unweld_with_flat_normals(mesh);
+        mesh.provenance[static_cast<std::size_t>(VertexAttribute::Normal)] = Provenance::Generated;
+        if (degenerate)
+            ctx.warn(where + ": " + std::to_string(degenerate) +
+                     " degenerate triangles have no face normal; +Z used");
+    } else {
+        std::uint32_t renormalised = 0, invalid = 0;
+        for (auto& v : mesh.vertices) {
+            const float len = glm::length(v.normal);
+            if (!std::isfinite(len) || len == 0.0f)
+                ++invalid;
+            else if (std::abs(len - 1.0f) > 1e-3f) {
+                v.normal /= len;
+                ++renormalised;
+            }
+        }
+        if (renormalised)
+            ctx.warn(where + ": " + std::to_string(renormalised) +
+                     " non-unit normals renormalised");
+        if (invalid)
+            ctx.warn(where + ": " + std::to_string(invalid) +
+                     " zero-length or NaN normals kept as authored");
+    }
+
+    mesh.material_id =
+        prim.material >= 0 ? static_cast<std::uint32_t>(prim.material) : ctx.default_material_id();
+    if (prim.material < 0) ctx.warn(where + ": no material; using the default material");
+    for (const auto& v : mesh.vertices) mesh.local_bounds.expand(v.position);
+
+    for (auto& [name, prov] : info.attributes) {
+        for (VertexAttribute a : kAllVertexAttributes)
+            if (name == gltf_name(a)) prov = mesh.provenance_of(a);
+    }
+    for (VertexAttribute a : kAllVertexAttributes)
+        if (mesh.provenance_of(a) != Provenance::Authored)
+            info.attributes.emplace_back(gltf_name(a), mesh.provenance_of(a));
+
+    info.engine_mesh = static_cast<std::int32_t>(scene.meshes.size());
+    scene.mesh_primitives[mesh_index].push_back(info.engine_mesh);
+    scene.meshes.push_back(std::move(mesh));
+    scene.primitives.push_back(std::move(info));
+}
+
+} // namespace
+
+void import_meshes(ImportContext& ctx) {
+    const auto& model = ctx.model;
+    ctx.scene.counts.meshes = model.meshes.size();
+    ctx.scene.mesh_primitives.resize(model.meshes.size());
+    for (std::uint32_t m = 0; m < model.meshes.size(); ++m)
+        for (std::uint32_t p = 0; p < model.meshes[m].primitives.size(); ++p)
+            import_primitive(ctx, m, p);
+}
+
+} // namespace sherpa::detail

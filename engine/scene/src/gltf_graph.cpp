@@ -1,0 +1,186 @@
+// glTF lights, cameras, nodes and scenes -> engine records; hierarchy validation.
+#include "import_context.h"
+#include "import_error.h"
+
+#include <cmath>
+
+#include <glm/gtc/type_ptr.hpp>
+#include <tiny_gltf.h>
+
+namespace sherpa::detail {
+
+void import_lights_cameras(ImportContext& ctx) {
+    const auto& model = ctx.model;
+    Scene& scene = ctx.scene;
+    for (std::size_t i = 0; i < model.lights.size(); ++i) {
+        const auto& src = model.lights[i];
+        const std::string where =
+            "extensions.KHR_lights_punctual.lights[" + std::to_string(i) + "]";
+        Light l;
+        l.name = src.name;
+        if (src.type == "directional")
+            l.type = LightType::Directional;
+        else if (src.type == "point")
+            l.type = LightType::Point;
+        else if (src.type == "spot")
+            l.type = LightType::Spot;
+        else
+            fail(where + ".type: \"" + src.type + "\" is not directional, point or spot");
+        if (src.color.size() == 3) l.color = {src.color[0], src.color[1], src.color[2]};
+        l.intensity = static_cast<float>(src.intensity);
+        l.range = static_cast<float>(src.range);
+        l.inner_cone = static_cast<float>(src.spot.innerConeAngle);
+        l.outer_cone = static_cast<float>(src.spot.outerConeAngle);
+        scene.lights.push_back(l);
+    }
+    for (std::size_t i = 0; i < model.cameras.size(); ++i) {
+        const auto& src = model.cameras[i];
+        const std::string where = "cameras[" + std::to_string(i) + "]";
+        Camera c;
+        c.name = src.name;
+        if (src.type == "perspective") {
+            c.type = CameraType::Perspective;
+            c.yfov = static_cast<float>(src.perspective.yfov);
+            c.aspect = static_cast<float>(src.perspective.aspectRatio);
+            c.znear = static_cast<float>(src.perspective.znear);
+            c.zfar = static_cast<float>(src.perspective.zfar);
+            if (!(c.yfov > 0.0f && c.yfov < 3.14159f))
+                fail(where + ".perspective.yfov: " + std::to_string(c.yfov) + " is not in (0, pi)");
+            if (!(c.znear > 0.0f)) fail(where + ".perspective.znear: must be > 0");
+        } else if (src.type == "orthographic") {
+            c.type = CameraType::Orthographic;
+            c.xmag = static_cast<float>(src.orthographic.xmag);
+            c.ymag = static_cast<float>(src.orthographic.ymag);
+            c.znear = static_cast<float>(src.orthographic.znear);
+            c.zfar = static_cast<float>(src.orthographic.zfar);
+            if (c.xmag == 0.0f || c.ymag == 0.0f)
+                fail(where + ".orthographic: xmag and ymag must not be zero");
+        } else {
+            fail(where + ".type: \"" + src.type + "\" is not perspective or orthographic");
+        }
+        scene.cameras.push_back(c);
+    }
+    scene.counts.lights = model.lights.size();
+    scene.counts.cameras = model.cameras.size();
+}
+
+namespace {
+
+void check_index(int index, std::size_t size, const std::string& where, const char* what) {
+    if (index < -1 || index >= static_cast<int>(size))
+        fail(where + ": " + what + " index " + std::to_string(index) + " out of range (file has " +
+             std::to_string(size) + ")");
+}
+
+} // namespace
+
+void import_nodes_and_scenes(ImportContext& ctx) {
+    const auto& model = ctx.model;
+    Scene& scene = ctx.scene;
+    const std::size_t n = model.nodes.size();
+    scene.nodes.resize(n);
+    std::size_t skinned = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto& src = model.nodes[i];
+        const std::string where = "nodes[" + std::to_string(i) + "]";
+        Node& node = scene.nodes[i];
+        node.name = src.name;
+        check_index(src.mesh, model.meshes.size(), where + ".mesh", "mesh");
+        check_index(src.camera, model.cameras.size(), where + ".camera", "camera");
+        check_index(src.skin, model.skins.size(), where + ".skin", "skin");
+        node.mesh = src.mesh;
+        node.camera = src.camera;
+        node.skin = src.skin;
+        if (src.skin >= 0 && src.mesh >= 0) ++skinned;
+        if (const auto it = src.extensions.find("KHR_lights_punctual");
+            it != src.extensions.end()) {
+            const auto& v = it->second;
+            if (!v.IsObject() || !v.Has("light") || !v.Get("light").IsNumber())
+                fail(where + ".extensions.KHR_lights_punctual: missing \"light\" index");
+            const int light = v.Get("light").GetNumberAsInt();
+            check_index(light, model.lights.size(), where + ".extensions.KHR_lights_punctual.light",
+                        "light");
+            node.light = light;
+        }
+        if (src.matrix.size() == 16) {
+            node.has_matrix = true;
+            for (int k = 0; k < 16; ++k)
+                glm::value_ptr(node.matrix)[k] =
+                    static_cast<float>(src.matrix[static_cast<std::size_t>(k)]);
+            if (!is_finite(node.matrix)) fail(where + ".matrix: not finite");
+        } else if (!src.matrix.empty()) {
+            fail(where + ".matrix: has " + std::to_string(src.matrix.size()) + " elements, not 16");
+        }
+        if (src.translation.size() == 3)
+            node.translation = {src.translation[0], src.translation[1], src.translation[2]};
+        if (src.scale.size() == 3) node.scale = {src.scale[0], src.scale[1], src.scale[2]};
+        if (src.rotation.size() ==
+            4) // glTF stores (x, y, z, w); glm::quat's constructor takes w first.
+            node.rotation =
+                glm::quat(static_cast<float>(src.rotation[3]), static_cast<float>(src.rotation[0]),
+                          static_cast<float>(src.rotation[1]), static_cast<float>(src.rotation[2]));
+        if (!is_finite(node.local_transform()))
+            fail(where + ": translation/rotation/scale not finite");
+        for (int child : src.children) {
+            if (child < 0 || static_cast<std::size_t>(child) >= n)
+                fail(where + ".children: node " + std::to_string(child) +
+                     " out of range (file has " + std::to_string(n) + " nodes)");
+            Node& c = scene.nodes[static_cast<std::size_t>(child)];
+            if (static_cast<std::size_t>(child) == i)
+                fail(where + ".children: node " + std::to_string(i) + " is its own child (cycle)");
+            if (c.parent >= 0)
+                fail("nodes[" + std::to_string(child) + "] is a child of both nodes[" +
+                     std::to_string(c.parent) + "] and nodes[" + std::to_string(i) +
+                     "]: glTF nodes must form disjoint trees");
+            c.parent = static_cast<std::int32_t>(i);
+            node.children.push_back(static_cast<std::uint32_t>(child));
+        }
+    }
+    // With at most one parent per node, a cycle is a parent chain that never ends.
+    std::vector<std::uint8_t> state(n, 0); // 0 unvisited, 1 on current chain, 2 reaches a root
+    for (std::size_t i = 0; i < n; ++i) {
+        std::size_t cur = i;
+        std::vector<std::size_t> chain;
+        while (state[cur] == 0) {
+            state[cur] = 1;
+            chain.push_back(cur);
+            if (scene.nodes[cur].parent < 0) break;
+            cur = static_cast<std::size_t>(scene.nodes[cur].parent);
+            if (state[cur] == 1)
+                fail("nodes[" + std::to_string(cur) +
+                     "]: the node hierarchy has a cycle through this node");
+        }
+        for (std::size_t c : chain) state[c] = 2;
+    }
+    if (skinned)
+        ctx.warn(std::to_string(skinned) + " skinned mesh nodes are shown in their node pose; "
+                                           "skinning and animation are not applied");
+    scene.counts.nodes = n;
+
+    for (std::size_t s = 0; s < model.scenes.size(); ++s) {
+        SceneDef def;
+        def.name = model.scenes[s].name;
+        for (int root : model.scenes[s].nodes) {
+            if (root < 0 || static_cast<std::size_t>(root) >= n)
+                fail("scenes[" + std::to_string(s) + "].nodes: node " + std::to_string(root) +
+                     " out of range");
+            if (scene.nodes[static_cast<std::size_t>(root)].parent >= 0)
+                fail("scenes[" + std::to_string(s) + "].nodes: node " + std::to_string(root) +
+                     " is not a root node");
+            def.roots.push_back(static_cast<std::uint32_t>(root));
+        }
+        scene.scenes.push_back(std::move(def));
+    }
+    scene.counts.scenes = model.scenes.size();
+    if (scene.scenes.empty() && n > 0) {
+        // No scene at all: show every root node rather than nothing, and say so.
+        SceneDef def;
+        def.name = "(all root nodes)";
+        for (std::size_t i = 0; i < n; ++i)
+            if (scene.nodes[i].parent < 0) def.roots.push_back(static_cast<std::uint32_t>(i));
+        scene.scenes.push_back(std::move(def));
+        ctx.warn("the file defines no scenes; showing all root nodes");
+    }
+}
+
+} // namespace sherpa::detail

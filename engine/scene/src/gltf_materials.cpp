@@ -1,0 +1,179 @@
+// glTF samplers, images, textures and materials -> engine records.
+#include "import_context.h"
+#include "import_error.h"
+
+#include <stdexcept>
+
+#include <tiny_gltf.h>
+
+namespace sherpa::detail {
+namespace {
+
+float number_or(const tinygltf::Value& obj, const char* key, float fallback) {
+    if (!obj.IsObject() || !obj.Has(key)) return fallback;
+    const auto& v = obj.Get(key);
+    return v.IsNumber() ? static_cast<float>(v.GetNumberAsDouble()) : fallback;
+}
+
+glm::vec2 vec2_or(const tinygltf::Value& obj, const char* key, glm::vec2 fallback) {
+    if (!obj.IsObject() || !obj.Has(key)) return fallback;
+    const auto& v = obj.Get(key);
+    if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
+        return fallback;
+    return {static_cast<float>(v.Get(0).GetNumberAsDouble()),
+            static_cast<float>(v.Get(1).GetNumberAsDouble())};
+}
+
+TextureSlot read_slot(ImportContext& ctx, int index, int tex_coord,
+                      const tinygltf::ExtensionMap& ext, const std::string& where,
+                      TextureRole role) {
+    TextureSlot slot;
+    if (index < 0) return slot;
+    if (static_cast<std::size_t>(index) >= ctx.scene.textures.size())
+        fail(where + ".index: texture " + std::to_string(index) + " out of range (file has " +
+             std::to_string(ctx.scene.textures.size()) + " textures)");
+    if (tex_coord < 0) fail(where + ".texCoord: " + std::to_string(tex_coord) + " is negative");
+    slot.texture = index;
+    slot.tex_coord = static_cast<std::uint32_t>(tex_coord);
+    if (const auto it = ext.find("KHR_texture_transform"); it != ext.end()) {
+        const auto& t = it->second;
+        slot.transform.present = true;
+        slot.transform.offset = vec2_or(t, "offset", glm::vec2(0.0f));
+        slot.transform.scale = vec2_or(t, "scale", glm::vec2(1.0f));
+        slot.transform.rotation = number_or(t, "rotation", 0.0f);
+        if (t.IsObject() && t.Has("texCoord") && t.Get("texCoord").IsNumber())
+            slot.tex_coord =
+                static_cast<std::uint32_t>(std::max(0, t.Get("texCoord").GetNumberAsInt()));
+    }
+    if (slot.tex_coord > 1)
+        ctx.warn(where + ": uses TEXCOORD_" + std::to_string(slot.tex_coord) +
+                 "; Sherpa keeps TEXCOORD_0 and TEXCOORD_1 only, so it samples with zero UVs");
+    ctx.scene.textures[static_cast<std::size_t>(index)].roles |= role;
+    return slot;
+}
+
+AlphaMode parse_alpha_mode(const std::string& s, const std::string& where) {
+    if (s.empty() || s == "OPAQUE") return AlphaMode::Opaque;
+    if (s == "MASK") return AlphaMode::Mask;
+    if (s == "BLEND") return AlphaMode::Blend;
+    fail(where + ".alphaMode: \"" + s + "\" is not OPAQUE, MASK or BLEND");
+}
+
+} // namespace
+
+std::uint32_t ImportContext::default_material_id() {
+    if (default_material < 0) {
+        MaterialInstance m;
+        m.name = "sherpa:default";
+        default_material = static_cast<std::int32_t>(scene.materials.size());
+        scene.materials.push_back(m);
+    }
+    return static_cast<std::uint32_t>(default_material);
+}
+
+void import_samplers_images_textures(ImportContext& ctx) {
+    const auto& model = ctx.model;
+    Scene& scene = ctx.scene;
+    for (std::size_t i = 0; i < model.samplers.size(); ++i) {
+        const auto& s = model.samplers[i];
+        try {
+            scene.samplers.push_back(sampler_from_gltf(s.magFilter, s.minFilter, s.wrapS, s.wrapT));
+        } catch (const std::invalid_argument& e) {
+            fail("samplers[" + std::to_string(i) + "]: " + e.what());
+        }
+    }
+    for (std::size_t i = 0; i < model.images.size(); ++i) {
+        const auto& img = model.images[i];
+        ImageRecord rec;
+        rec.name = img.name;
+        rec.uri = img.uri.rfind("data:", 0) == 0 ? img.uri.substr(0, img.uri.find(',')) + ",..."
+                                                 : img.uri;
+        rec.buffer_view = img.bufferView;
+        rec.mime_type = img.mimeType;
+        if (img.bufferView >= static_cast<int>(model.bufferViews.size()))
+            fail("images[" + std::to_string(i) + "].bufferView: index " +
+                 std::to_string(img.bufferView) + " out of range");
+        // The custom image loader (gltf_import.cpp) stored the encoded bytes undecoded.
+        rec.encoded = img.image;
+        rec.byte_size = rec.encoded.size();
+        if (rec.mime_type.empty()) {
+            const auto dot = img.uri.rfind('.');
+            const std::string ext = dot == std::string::npos ? "" : img.uri.substr(dot + 1);
+            if (ext == "png")
+                rec.mime_type = "image/png";
+            else if (ext == "jpg" || ext == "jpeg")
+                rec.mime_type = "image/jpeg";
+            else if (img.uri.rfind("data:image/", 0) == 0)
+                rec.mime_type = img.uri.substr(5, img.uri.find(';') - 5);
+        }
+        scene.images.push_back(std::move(rec));
+    }
+    for (std::size_t i = 0; i < model.textures.size(); ++i) {
+        const auto& t = model.textures[i];
+        const std::string where = "textures[" + std::to_string(i) + "]";
+        TextureRecord rec;
+        rec.name = t.name;
+        if (t.source >= static_cast<int>(model.images.size()))
+            fail(where + ".source: image " + std::to_string(t.source) + " out of range (file has " +
+                 std::to_string(model.images.size()) + " images)");
+        if (t.sampler >= static_cast<int>(model.samplers.size()))
+            fail(where + ".sampler: " + std::to_string(t.sampler) + " out of range (file has " +
+                 std::to_string(model.samplers.size()) + " samplers)");
+        if (t.source < 0)
+            ctx.warn(where + ": no image source; materials using it read default textures");
+        rec.image = t.source;
+        rec.sampler = t.sampler;
+        scene.textures.push_back(std::move(rec));
+    }
+    scene.counts.samplers = model.samplers.size();
+    scene.counts.images = model.images.size();
+    scene.counts.textures = model.textures.size();
+}
+
+void import_materials(ImportContext& ctx) {
+    const auto& model = ctx.model;
+    for (std::size_t i = 0; i < model.materials.size(); ++i) {
+        const auto& src = model.materials[i];
+        const std::string where = "materials[" + std::to_string(i) + "]";
+        MaterialInstance m;
+        m.name = src.name;
+        m.gltf_index = static_cast<std::int32_t>(i);
+        const auto& pbr = src.pbrMetallicRoughness;
+        if (pbr.baseColorFactor.size() == 4)
+            m.base_color_factor = {pbr.baseColorFactor[0], pbr.baseColorFactor[1],
+                                   pbr.baseColorFactor[2], pbr.baseColorFactor[3]};
+        if (src.emissiveFactor.size() == 3)
+            m.emissive_factor = {src.emissiveFactor[0], src.emissiveFactor[1],
+                                 src.emissiveFactor[2]};
+        m.metallic_factor = static_cast<float>(pbr.metallicFactor);
+        m.roughness_factor = static_cast<float>(pbr.roughnessFactor);
+        m.normal_scale = static_cast<float>(src.normalTexture.scale);
+        m.occlusion_strength = static_cast<float>(src.occlusionTexture.strength);
+        m.alpha_cutoff = static_cast<float>(src.alphaCutoff);
+        m.alpha_mode = parse_alpha_mode(src.alphaMode, where);
+        m.double_sided = src.doubleSided;
+        if (const auto it = src.extensions.find("KHR_materials_emissive_strength");
+            it != src.extensions.end())
+            m.emissive_strength = number_or(it->second, "emissiveStrength", 1.0f);
+        m.unlit = src.extensions.count("KHR_materials_unlit") != 0;
+        m.base_color = read_slot(ctx, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+                                 pbr.baseColorTexture.extensions,
+                                 where + ".pbrMetallicRoughness.baseColorTexture", kRoleColor);
+        m.metallic_roughness = read_slot(
+            ctx, pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+            pbr.metallicRoughnessTexture.extensions,
+            where + ".pbrMetallicRoughness.metallicRoughnessTexture", kRoleLinear);
+        m.normal = read_slot(ctx, src.normalTexture.index, src.normalTexture.texCoord,
+                             src.normalTexture.extensions, where + ".normalTexture", kRoleNormal);
+        m.occlusion =
+            read_slot(ctx, src.occlusionTexture.index, src.occlusionTexture.texCoord,
+                      src.occlusionTexture.extensions, where + ".occlusionTexture", kRoleLinear);
+        m.emissive =
+            read_slot(ctx, src.emissiveTexture.index, src.emissiveTexture.texCoord,
+                      src.emissiveTexture.extensions, where + ".emissiveTexture", kRoleColor);
+        ctx.scene.materials.push_back(std::move(m));
+    }
+    ctx.scene.counts.materials = model.materials.size();
+}
+
+} // namespace sherpa::detail

@@ -1,0 +1,96 @@
+#include <sherpa/scene/scene.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace sherpa {
+
+glm::mat4 Node::local_transform() const {
+    if (has_matrix) return matrix;
+    return glm::translate(glm::mat4(1.0f), translation) * glm::mat4_cast(rotation) *
+           glm::scale(glm::mat4(1.0f), scale);
+}
+
+SamplerDesc Scene::sampler_of(const TextureRecord& t) const {
+    if (t.sampler >= 0 && static_cast<std::size_t>(t.sampler) < samplers.size())
+        return samplers[static_cast<std::size_t>(t.sampler)];
+    return SamplerDesc{}; // glTF: repeat wrapping, auto filtering
+}
+
+bool select_scene(Scene& scene, std::int32_t scene_index, std::string& error) {
+    if (scene.scenes.empty()) {
+        // Nothing to display (e.g. a file with no nodes): an empty flattening.
+        scene.displayed_scene = -1;
+        scene.instances.clear();
+        scene.placed_lights.clear();
+        scene.placed_cameras.clear();
+        scene.node_world.assign(scene.nodes.size(), glm::mat4(1.0f));
+        scene.bounds = Aabb::empty();
+        return true;
+    }
+    if (scene_index < 0 || static_cast<std::size_t>(scene_index) >= scene.scenes.size()) {
+        error = "scene index " + std::to_string(scene_index) + " out of range (" +
+                std::to_string(scene.scenes.size()) + " scenes)";
+        return false;
+    }
+    std::vector<MeshInstance> instances;
+    std::vector<PlacedLight> lights;
+    std::vector<PlacedCamera> cameras;
+    std::vector<glm::mat4> world(scene.nodes.size(), glm::mat4(1.0f));
+    Aabb bounds;
+
+    // Iterative DFS: hierarchies can be deep (VC) and the importer has already
+    // rejected cycles and multiple parents, so every node is visited once.
+    std::vector<std::uint32_t> stack(
+        scene.scenes[static_cast<std::size_t>(scene_index)].roots.rbegin(),
+        scene.scenes[static_cast<std::size_t>(scene_index)].roots.rend());
+    for (std::uint32_t r : stack) world[r] = scene.nodes[r].local_transform();
+    while (!stack.empty()) {
+        const std::uint32_t id = stack.back();
+        stack.pop_back();
+        const Node& node = scene.nodes[id];
+        const glm::mat4& m = world[id];
+        if (!is_finite(m)) {
+            error = "nodes[" + std::to_string(id) + "]: world transform is not finite";
+            return false;
+        }
+        if (node.mesh >= 0 && static_cast<std::size_t>(node.mesh) < scene.mesh_primitives.size()) {
+            for (std::int32_t mesh_id :
+                 scene.mesh_primitives[static_cast<std::size_t>(node.mesh)]) {
+                if (mesh_id < 0) continue;
+                const Mesh& mesh = scene.meshes[static_cast<std::size_t>(mesh_id)];
+                MeshInstance inst;
+                inst.mesh_id = static_cast<std::uint32_t>(mesh_id);
+                inst.material_id = mesh.material_id;
+                inst.node_id = id;
+                inst.world = inst.prev_world = m;
+                inst.world_bounds = mesh.local_bounds.transformed(m);
+                bounds.expand(inst.world_bounds);
+                instances.push_back(inst);
+            }
+        }
+        if (node.light >= 0) {
+            PlacedLight pl;
+            pl.light = static_cast<std::uint32_t>(node.light);
+            pl.node = id;
+            pl.position = glm::vec3(m[3]);
+            const glm::vec3 d = glm::vec3(m * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));
+            const float len = glm::length(d);
+            pl.direction = len > 0.0f ? d / len : glm::vec3(0.0f, 0.0f, -1.0f);
+            lights.push_back(pl);
+        }
+        if (node.camera >= 0) cameras.push_back({static_cast<std::uint32_t>(node.camera), id, m});
+        for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) {
+            world[*it] = m * scene.nodes[*it].local_transform();
+            stack.push_back(*it);
+        }
+    }
+    scene.displayed_scene = scene_index;
+    scene.instances = std::move(instances);
+    scene.placed_lights = std::move(lights);
+    scene.placed_cameras = std::move(cameras);
+    scene.node_world = std::move(world);
+    scene.bounds = bounds;
+    return true;
+}
+
+} // namespace sherpa

@@ -1,0 +1,76 @@
+// sherpa-cli info: exit codes, error format, JSON schema.
+#include "test_support.h"
+
+#include <array>
+#include <cstdio>
+#include <sys/wait.h>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+struct CliRun {
+    int exit_code;
+    std::string out;
+};
+
+CliRun run_cli(const std::string& args) {
+    const std::string cmd = std::string(SHERPA_CLI_PATH) + " " + args + " 2>&1";
+    FILE* p = popen(cmd.c_str(), "r");
+    CliRun r{-1, {}};
+    if (!p) return r;
+    std::array<char, 4096> buf;
+    std::size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
+    const int status = pclose(p);
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+TEST(CliInfo, JsonHasEveryRequiredKey) {
+    const CliRun r = run_cli("info '" + sherpa::test::gltf_asset("DamagedHelmet") + "' --json");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    const auto j = nlohmann::json::parse(r.out);
+    for (const char* key :
+         {"scenes", "nodes", "meshes", "primitives", "materials", "textures", "images", "samplers",
+          "lights", "cameras", "instances", "vertices", "triangles"})
+        EXPECT_TRUE(j.at(key).is_number_integer()) << key;
+    EXPECT_EQ(j["vertices"], 14556);
+    EXPECT_EQ(j["triangles"], 15452);
+    EXPECT_EQ(j["bounds"]["min"].size(), 3u);
+    EXPECT_EQ(j["bounds"]["max"].size(), 3u);
+    const auto& p = j["primitives_detail"].at(0);
+    for (const char* key :
+         {"mesh", "primitive", "mode", "vertices", "indices", "material", "attributes"})
+        EXPECT_TRUE(p.contains(key)) << key;
+    EXPECT_EQ(p["attributes"]["TANGENT"], "defaulted");
+    EXPECT_EQ(p["attributes"]["NORMAL"], "authored");
+    EXPECT_TRUE(j["usage"].contains("primitives"));
+    EXPECT_TRUE(j["warnings"].is_array());
+    EXPECT_TRUE(j["timings_ms"]["parse"].is_number());
+    EXPECT_TRUE(j["timings_ms"]["process"].is_number());
+}
+
+TEST(CliInfo, BuiltinDefaultWorks) {
+    const CliRun r = run_cli("info builtin:default");
+    EXPECT_EQ(r.exit_code, 0) << r.out;
+    EXPECT_NE(r.out.find("instances"), std::string::npos);
+}
+
+TEST(CliInfo, LoadErrorExitsOneWithErrorPrefix) {
+    const CliRun r =
+        run_cli("info '" + (sherpa::test::data_dir() / "node_cycle.gltf").string() + "'");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_EQ(r.out.rfind("error: ", 0), 0u) << r.out;
+    EXPECT_NE(r.out.find("node_cycle.gltf"), std::string::npos);
+}
+
+TEST(CliInfo, BadUsageExitsTwo) {
+    EXPECT_EQ(run_cli("").exit_code, 2);
+    EXPECT_EQ(run_cli("info").exit_code, 2);
+    EXPECT_EQ(run_cli("info builtin:default --bogus").exit_code, 2);
+    EXPECT_EQ(run_cli("frobnicate").exit_code, 2);
+    EXPECT_EQ(run_cli("info builtin:default --scene x").exit_code, 2);
+}
+
+} // namespace

@@ -1,0 +1,288 @@
+// Culling against an exact brute-force reference: the intersection of the box and
+// the frustum half-spaces is a bounded convex polytope; it is non-empty iff some
+// triple of constraint planes meets in a point satisfying every constraint.
+#include <sherpa/scene/camera_spec.h>
+#include <sherpa/scene/culling.h>
+#include <sherpa/scene/culling_passes.h>
+#include <sherpa/scene/scene_loader.h>
+
+#include <random>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+namespace {
+
+using namespace sherpa;
+
+struct Half {
+    glm::dvec3 n;
+    double d;
+}; // n.x + d >= 0
+
+// Feasibility of box ∩ frustum with every constraint shifted by `slack`
+// (positive slack loosens, negative tightens).
+bool reference_feasible(const glm::mat4& vp, const Aabb& box, double slack) {
+    std::vector<Half> hs;
+    auto row = [&](int r) { return glm::dvec4(vp[0][r], vp[1][r], vp[2][r], vp[3][r]); };
+    const glm::dvec4 raw[6] = {row(3) + row(0), row(3) - row(0), row(3) + row(1),
+                               row(3) - row(1), row(2),          row(3) - row(2)};
+    for (const auto& p : raw) {
+        const double len = glm::length(glm::dvec3(p));
+        if (len < 1e-12) {
+            if (p.w < 0) return false;
+            continue;
+        }
+        hs.push_back({glm::dvec3(p) / len, p.w / len + slack});
+    }
+    for (int a = 0; a < 3; ++a) {
+        glm::dvec3 e(0.0);
+        e[a] = 1.0;
+        hs.push_back({e, -double(box.min[a]) + slack});
+        hs.push_back({-e, double(box.max[a]) + slack});
+    }
+    const std::size_t n = hs.size();
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i + 1; j < n; ++j)
+            for (std::size_t k = j + 1; k < n; ++k) {
+                const glm::dmat3 m = glm::transpose(glm::dmat3(hs[i].n, hs[j].n, hs[k].n));
+                const double det = glm::determinant(m);
+                if (std::abs(det) < 1e-12) continue;
+                const glm::dvec3 x = glm::inverse(m) * glm::dvec3(-hs[i].d, -hs[j].d, -hs[k].d);
+                bool ok = true;
+                for (const Half& h : hs)
+                    ok &= glm::dot(h.n, x) + h.d >= -1e-9 * (1.0 + glm::length(x));
+                if (ok) return true;
+            }
+    return false;
+}
+
+struct RandomCase {
+    glm::mat4 vp;
+    glm::vec3 eye;
+};
+
+RandomCase random_camera(std::mt19937& rng) {
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    CameraSpec c;
+    c.eye = glm::vec3(u(rng), u(rng), u(rng)) * 20.0f;
+    c.target =
+        c.eye + glm::normalize(glm::vec3(u(rng), u(rng), u(rng)) + glm::vec3(0.0f, 0.0f, 0.01f));
+    c.fov_y_degrees = 20.0f + 100.0f * (0.5f + 0.5f * u(rng));
+    c.aspect = 0.5f + 1.25f * (1.0f + u(rng));
+    c.near_plane = 0.01f + 0.5f * (1.0f + u(rng));
+    c.far_plane = (rng() % 2) ? 0.0f : c.near_plane + 5.0f + 40.0f * (1.0f + u(rng));
+    if (rng() % 5 == 0) { // orthographic
+        const glm::mat4 p =
+            orthographic_reverse_z(1.0f + 10.0f * (1.0f + u(rng)), 1.0f + 10.0f * (1.0f + u(rng)),
+                                   -5.0f + 5.0f * u(rng), 20.0f + 20.0f * (1.0f + u(rng)));
+        return {p * c.view(), c.eye};
+    }
+    return {c.view_projection(), c.eye};
+}
+
+Aabb random_box(std::mt19937& rng, glm::vec3 eye) {
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    const int kind = static_cast<int>(rng() % 10);
+    glm::vec3 c = glm::vec3(u(rng), u(rng), u(rng)) * 40.0f;
+    float size = std::pow(10.0f, -3.0f + 5.0f * (0.5f + 0.5f * u(rng)));
+    if (kind == 0) c = eye + glm::vec3(u(rng), u(rng), u(rng)) * 0.1f; // contains the camera
+    if (kind == 1) size = 1e5f;                                        // huge
+    if (kind == 2) size = 1e-6f;                                       // tiny
+    glm::vec3 half =
+        glm::vec3(0.5f + 0.5f * u(rng), 0.5f + 0.5f * u(rng), 0.5f + 0.5f * u(rng)) * size;
+    if (kind == 3) half[rng() % 3] = 0.0f; // flat
+    return Aabb::from_min_max(c - half, c + half);
+}
+
+TEST(Culling, EveryMethodAgreesWithTheBruteForceReference) {
+    std::mt19937 rng(12345);
+    int checked = 0, visible_cases = 0, culled_cases = 0;
+    std::uint64_t false_negatives[3] = {}, exact_false_positives = 0;
+    for (int cam = 0; cam < 60; ++cam) {
+        const RandomCase rc = random_camera(rng);
+        const Frustum f = frustum_from_view_projection(rc.vp);
+        std::vector<Aabb> boxes;
+        for (int b = 0; b < 150; ++b) boxes.push_back(random_box(rng, rc.eye));
+        BoxesSoA soa;
+        soa.assign(boxes);
+        std::vector<std::uint8_t> results[3];
+        for (CullMethod m : {CullMethod::Sphere, CullMethod::PVertex, CullMethod::Exact}) {
+            auto& out = results[static_cast<int>(m)];
+            out.resize(boxes.size());
+            cull_boxes(f, soa, m, SimdLevel::Avx512, out);
+        }
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+            const double scale = 1e-5 * std::max({1.0, double(glm::length(boxes[i].max)),
+                                                  double(glm::length(boxes[i].min))});
+            const bool surely_visible = reference_feasible(rc.vp, boxes[i], -scale);
+            const bool surely_culled = !reference_feasible(rc.vp, boxes[i], scale);
+            ++checked;
+            visible_cases += surely_visible;
+            culled_cases += surely_culled;
+            for (int m = 0; m < 3; ++m)
+                false_negatives[m] += (surely_visible && !results[m][i]) ? 1 : 0;
+            exact_false_positives += (surely_culled && results[2][i]) ? 1 : 0;
+            // Precision is monotone: exact ⊆ p-vertex ⊆ sphere.
+            ASSERT_LE(results[2][i], results[1][i]);
+            ASSERT_LE(results[1][i], results[0][i]);
+        }
+    }
+    EXPECT_EQ(false_negatives[0], 0u) << "sphere";
+    EXPECT_EQ(false_negatives[1], 0u) << "p-vertex";
+    EXPECT_EQ(false_negatives[2], 0u) << "exact";
+    EXPECT_EQ(exact_false_positives, 0u);
+    EXPECT_GT(visible_cases, 500);
+    EXPECT_GT(culled_cases, 500);
+    EXPECT_EQ(checked, 60 * 150);
+}
+
+TEST(Culling, PVertexKeepsBoxesOutsideAFrustumCornerButExactDropsThem) {
+    // With a rotated camera the side planes mix all three axes, and boxes outside
+    // a frustum edge can straddle both planes' extensions: the p-vertex test keeps
+    // them, the exact test must not. Deterministic search for such boxes.
+    CameraSpec c;
+    std::string error;
+    ASSERT_TRUE(parse_camera_spec("eye=0,0,0:target=1,0.7,-1.3:fov=50:aspect=1.5:far=40", c, error))
+        << error;
+    const Frustum f = frustum_from_view_projection(c.view_projection());
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    int found = 0;
+    for (int i = 0; i < 20000 && found < 20; ++i) {
+        const glm::vec3 centre = glm::vec3(u(rng), u(rng), u(rng)) * 30.0f;
+        const Aabb box = Aabb::from_min_max(centre - glm::vec3(1.5f), centre + glm::vec3(1.5f));
+        if (!pvertex_visible(f, box) || reference_feasible(c.view_projection(), box, 1e-3))
+            continue;
+        ++found;
+        EXPECT_FALSE(exact_visible(f, box))
+            << "box at " << centre.x << "," << centre.y << "," << centre.z;
+    }
+    EXPECT_GE(found, 5)
+        << "the p-vertex test's false positives exist and the exact test removes them";
+}
+
+TEST(Culling, InvalidBoxesAreReportedAndKept) {
+    CameraSpec c;
+    c.eye = {0, 0, 10};
+    c.target = {0, 0, 0};
+    const Frustum f = frustum_from_view_projection(c.view_projection());
+    std::vector<Aabb> boxes = {Aabb::from_min_max({1000, 0, 0}, {1001, 1, 1}),  // culled
+                               Aabb::from_min_max({NAN, 0, 0}, {1, 1, 1}),      // NaN
+                               Aabb::from_min_max({0, 0, 0}, {INFINITY, 1, 1}), // Inf
+                               Aabb::from_min_max({5000, 1, 1}, {4000, 0, 0}),  // inverted
+                               Aabb::empty()};                                  // never set
+    BoxesSoA soa;
+    soa.assign(boxes);
+    for (CullMethod m : {CullMethod::Sphere, CullMethod::PVertex, CullMethod::Exact})
+        for (SimdLevel s : {SimdLevel::Scalar, SimdLevel::Avx2, SimdLevel::Avx512}) {
+            std::vector<std::uint8_t> vis(boxes.size());
+            const CullCounts counts = cull_boxes(f, soa, m, s, vis);
+            EXPECT_EQ(counts.invalid, 4u);
+            EXPECT_EQ(vis, (std::vector<std::uint8_t>{0, 1, 1, 1, 1}));
+        }
+}
+
+TEST(Culling, FrustumPlanesForInfiniteAndFiniteReverseZ) {
+    CameraSpec c;
+    c.eye = {0, 0, 0};
+    c.target = {0, 0, -1};
+    Frustum inf = frustum_from_view_projection(c.view_projection());
+    EXPECT_EQ(inf.plane_count, 5u);
+    EXPECT_TRUE(pvertex_visible(inf, Aabb::from_min_max({-1, -1, -1e6f}, {1, 1, -1e6f + 1})));
+    EXPECT_FALSE(pvertex_visible(inf, Aabb::from_min_max({-1, -1, 1}, {1, 1, 2})))
+        << "behind the eye";
+    c.far_plane = 100.0f;
+    Frustum fin = frustum_from_view_projection(c.view_projection());
+    EXPECT_EQ(fin.plane_count, 6u);
+    EXPECT_FALSE(pvertex_visible(fin, Aabb::from_min_max({-1, -1, -300}, {1, 1, -200})));
+    for (std::uint32_t i = 0; i < fin.plane_count; ++i)
+        EXPECT_NEAR(glm::length(fin.planes[i].normal), 1.0f, 1e-5f);
+    EXPECT_TRUE(frustum_from_view_projection(glm::mat4(NAN)).empty);
+}
+
+TEST(Culling, SimdPathsMatchScalarOnTheGrid) {
+    const LoadResult r = load_scene("builtin:grid?n=10000");
+    ASSERT_TRUE(r) << r.error;
+    const BoxesSoA boxes = instance_boxes(*r.scene);
+    CameraSpec c;
+    ASSERT_TRUE(parse_camera_spec("eye=20,15,40:target=0,0,0:fov=50", c, *new std::string));
+    const Frustum f = frustum_from_view_projection(c.view_projection());
+    std::vector<std::uint8_t> scalar(boxes.size()), simd(boxes.size());
+    cull_boxes(f, boxes, CullMethod::PVertex, SimdLevel::Scalar, scalar);
+    for (SimdLevel s : {SimdLevel::Avx2, SimdLevel::Avx512})
+        for (int threads : {1, 2}) {
+            cull_boxes(f, boxes, CullMethod::PVertex, s, simd, threads);
+            EXPECT_EQ(scalar, simd) << to_string(s) << " threads " << threads;
+        }
+}
+
+TEST(CullPass, ListsGroupsAndBackToFrontTransparents) {
+    const LoadResult r = load_scene("builtin:default");
+    ASSERT_TRUE(r) << r.error;
+    CameraSpec c;
+    std::string error;
+    ASSERT_TRUE(parse_camera_spec("eye=0,6,14:target=0,0,0", c, error)) << error;
+    CullOptions opt;
+    opt.count_false_positives = true;
+    const PassResult p =
+        cull_pass(*r.scene, instance_boxes(*r.scene),
+                  frustum_from_view_projection(c.view_projection()), c.eye, opt, "camera");
+    EXPECT_EQ(p.stats.visible, p.visible_opaque.size() + p.visible_transparent.size());
+    EXPECT_GE(p.visible_transparent.size(), 1u);
+    EXPECT_GE(p.stats.false_positives, 0);
+    std::uint32_t grouped = 0;
+    for (const auto& g : p.groups) grouped += g.count;
+    EXPECT_EQ(grouped, p.stats.visible);
+    EXPECT_LT(p.groups.size(), p.stats.visible) << "instances sharing a mesh share a draw";
+}
+
+TEST(Cascades, ExtendTowardTheLightToCoverOffscreenCasters) {
+    const LoadResult r = load_scene("builtin:default");
+    ASSERT_TRUE(r) << r.error;
+    CameraSpec c;
+    std::string error;
+    ASSERT_TRUE(parse_camera_spec("eye=0,1,6:target=0,1,0:far=20", c, error)) << error;
+    const glm::vec3 light_dir = glm::normalize(glm::vec3(0.0f, -1.0f, -0.2f));
+    const auto vps = cascade_view_projections(c, light_dir, r.scene->bounds, {});
+    ASSERT_EQ(vps.size(), 4u);
+    // A caster high above the view, between the light and the first slice, is kept.
+    // The light travels along (0, -1, -0.2): from y = 30 it lands about 5.8 units
+    // toward -z, right on the first slice (z about 4.6 .. 6 in front of the eye).
+    const Aabb caster = Aabb::from_min_max({-0.5f, 30.0f, 10.5f}, {0.5f, 31.0f, 11.5f});
+    const Aabb with_caster = [&] {
+        Aabb b = r.scene->bounds;
+        b.expand(caster);
+        return b;
+    }();
+    const auto vps2 = cascade_view_projections(c, light_dir, with_caster, {});
+    EXPECT_TRUE(exact_visible(frustum_from_view_projection(vps2[0]), caster));
+    EXPECT_FALSE(pvertex_visible(frustum_from_view_projection(c.view_projection()), caster))
+        << "not in the camera view";
+}
+
+TEST(CameraSpec, ParsesDefaultsAndRejectsBadInput) {
+    CameraSpec c;
+    std::string error;
+    ASSERT_TRUE(parse_camera_spec("eye=1,2,3:target=0,0,0", c, error)) << error;
+    EXPECT_EQ(c.up, glm::vec3(0, 1, 0));
+    EXPECT_FLOAT_EQ(c.fov_y_degrees, 60.0f);
+    EXPECT_FLOAT_EQ(c.aspect, 16.0f / 9.0f);
+    EXPECT_FLOAT_EQ(c.near_plane, 0.05f);
+    EXPECT_FLOAT_EQ(c.far_plane, 0.0f);
+    for (const char* bad : {"", "eye=1,2,3", "eye=1,2:target=0,0,0", "eye=0,0,0:target=0,0,0",
+                            "eye=0,1,0:target=0,0,0", "eye=1,2,3:target=0,0,0:fov=180",
+                            "eye=1,2,3:target=0,0,0:near=0", "eye=1,2,3:target=0,0,0:far=0.01",
+                            "eye=1,2,3:target=0,0,0:zoom=2", "eye=nan,0,0:target=0,0,1"})
+        EXPECT_FALSE(parse_camera_spec(bad, c, error)) << bad;
+}
+
+TEST(RingHistory, KeepsTheNewest) {
+    RingHistory<int> h(3);
+    for (int i = 0; i < 5; ++i) h.push(i);
+    ASSERT_EQ(h.size(), 3u);
+    EXPECT_EQ(h[0], 2);
+    EXPECT_EQ(h[2], 4);
+}
+
+} // namespace

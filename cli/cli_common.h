@@ -15,5 +15,6 @@ using Args = std::span<const std::string_view>;
 int run_info(Args args);
 int run_cull(Args args);
 int run_tangents(Args args);
+int run_textures(Args args);
 
 } // namespace sherpa::cli

@@ -20,6 +20,9 @@ constexpr Subcommand kSubcommands[] = {
     {"tangents", sherpa::cli::run_tangents,
      "tangents SCENE --dump FILE.csv [--method NAME] [--regenerate]   per-corner tangents\n"
      "  tangents SCENE --compare [--method NAME] [--json]   authored vs regenerated"},
+    {"textures", sherpa::cli::run_textures,
+     "textures SCENE [--cache-dir DIR] [--quality N] [--no-cache] [--no-bc] [--json]   texture "
+     "pipeline and cache report"},
 };
 
 int usage(std::FILE* out) {

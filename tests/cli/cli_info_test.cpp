@@ -1,5 +1,6 @@
 // sherpa-cli info: exit codes, error format, JSON schema.
 #include "test_support.h"
+#include "cli/cli_run.h"
 
 #include <array>
 #include <cstdio>
@@ -9,23 +10,8 @@
 
 namespace {
 
-struct CliRun {
-    int exit_code;
-    std::string out;
-};
-
-CliRun run_cli(const std::string& args) {
-    const std::string cmd = std::string(SHERPA_CLI_PATH) + " " + args + " 2>&1";
-    FILE* p = popen(cmd.c_str(), "r");
-    CliRun r{-1, {}};
-    if (!p) return r;
-    std::array<char, 4096> buf;
-    std::size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-    const int status = pclose(p);
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
+using sherpa::test::run_cli;
+using sherpa::test::CliRun;
 
 TEST(CliInfo, JsonHasEveryRequiredKey) {
     const CliRun r = run_cli("info '" + sherpa::test::gltf_asset("DamagedHelmet") + "' --json");

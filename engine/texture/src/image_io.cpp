@@ -51,12 +51,15 @@ bool read_from(OIIO::ImageInput* in, std::string_view name, RgbaImage& out, std:
 
 bool decode_encoded_image(std::span<const std::uint8_t> bytes, std::string_view name_hint,
                           RgbaImage& out, std::string& error) {
-    // OpenImageIO reads from memory through an IOProxy; the name only picks the plugin.
+    // OpenImageIO reads from memory through an IOProxy; the name only picks the
+    // plugin. The proxy must be attached before open(), which then reads from it.
     OIIO::Filesystem::IOMemReader reader(const_cast<std::uint8_t*>(bytes.data()), bytes.size());
-    OIIO::ImageSpec config;
-    auto in = OIIO::ImageInput::open(std::string(name_hint), &config, &reader);
-    if (!in) {
-        error = std::string(name_hint) + ": cannot decode: " + OIIO::geterror();
+    auto in = OIIO::ImageInput::create(std::string(name_hint), false, nullptr, &reader);
+    OIIO::ImageSpec spec;
+    if (!in || !in->supports("ioproxy") || !in->set_ioproxy(&reader) ||
+        !in->open(std::string(name_hint), spec)) {
+        error =
+            std::string(name_hint) + ": cannot decode: " + (in ? in->geterror() : OIIO::geterror());
         return false;
     }
     const bool ok = read_from(in.get(), name_hint, out, error);

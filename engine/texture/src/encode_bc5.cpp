@@ -3,6 +3,7 @@
 #include "encode_kernels.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "kernel_entry.h"
 
@@ -25,29 +26,15 @@ void bc4_palette(int e0, int e1, float pal[8]) {
     }
 }
 
-// Squared error of the best index per texel; indices go to idx[].
-float bc4_select(const float v[16], int e0, int e1, std::uint8_t idx[16]) {
-    float pal[8];
-    bc4_palette(e0, e1, pal);
-    float best[16];
-    std::uint8_t choice[16];
-    for (int i = 0; i < 16; ++i) {
-        const float d = v[i] - pal[0];
-        best[i] = d * d;
-        choice[i] = 0;
-    }
-    for (int k = 1; k < 8; ++k) {
-        for (int i = 0; i < 16; ++i) {
-            const float d = v[i] - pal[k];
-            const float e = d * d;
-            const bool better = e < best[i];
-            best[i] = better ? e : best[i];
-            choice[i] = better ? static_cast<std::uint8_t>(k) : choice[i];
-        }
-    }
-    float total = 0.0f;
-    for (int i = 0; i < 16; ++i) total += best[i], idx[i] = choice[i];
-    return total;
+// Squared error of the best index per texel; indices go to idx[]. The channel
+// sits in row 0 of `t`, so the SIMD index search of the BC7 encoder serves here.
+float bc4_select(const Texels& t, int e0, int e1, std::uint8_t idx[16]) {
+    float values[8];
+    bc4_palette(e0, e1, values);
+    Palette pal;
+    pal.count = 8;
+    for (int k = 0; k < 8; ++k) pal.ch[0][k] = values[k];
+    return select_indices(t, 0xFFFFu, pal, 1, idx);
 }
 
 // Weight of e1 for each index of the eight-value (e0 > e1) mode.
@@ -60,24 +47,25 @@ struct Bc4Fit {
     float error = 3.0e38f;
 };
 
-void try_endpoints(const float v[16], int e0, int e1, Bc4Fit& best) {
+void try_endpoints(const Texels& t, int e0, int e1, Bc4Fit& best) {
     std::uint8_t idx[16];
-    const float err = bc4_select(v, e0, e1, idx);
+    const float err = bc4_select(t, e0, e1, idx);
     if (err < best.error) {
         best.e0 = e0, best.e1 = e1, best.error = err;
         std::copy(idx, idx + 16, best.idx);
     }
 }
 
-Bc4Fit fit_bc4(const float v[16], int level) {
+Bc4Fit fit_bc4(const Texels& t, int level) {
+    const float* v = t.ch[0];
     float lo = v[0], hi = v[0];
     for (int i = 1; i < 16; ++i) lo = std::min(lo, v[i]), hi = std::max(hi, v[i]);
     Bc4Fit best;
     if (lo == hi) { // constant: six-value mode with both endpoints equal is exact
-        try_endpoints(v, static_cast<int>(lo), static_cast<int>(lo), best);
+        try_endpoints(t, static_cast<int>(lo), static_cast<int>(lo), best);
         return best;
     }
-    try_endpoints(v, static_cast<int>(hi), static_cast<int>(lo), best);
+    try_endpoints(t, static_cast<int>(hi), static_cast<int>(lo), best);
     // Alternate index choice and 1-D least squares on the eight-value mode.
     const int passes = level == 0 ? 1 : 3;
     for (int pass = 0; pass < passes && best.e0 > best.e1; ++pass) {
@@ -91,23 +79,23 @@ Bc4Fit fit_bc4(const float v[16], int level) {
         const int e0 = std::clamp(static_cast<int>((bb * av - ab * bv) / det + 0.5f), 0, 255);
         const int e1 = std::clamp(static_cast<int>((aa * bv - ab * av) / det + 0.5f), 0, 255);
         if (e0 <= e1 || (e0 == best.e0 && e1 == best.e1)) break;
-        try_endpoints(v, e0, e1, best);
+        try_endpoints(t, e0, e1, best);
     }
-    if (level >= 1) {
-        // Local search around the best eight-value endpoints.
+    // Blocks already within about one step per texel gain nothing from searching.
+    if (level >= 1 && best.error > 12.0f) {
+        // Local search: nudge each endpoint of the best eight-value pair by one.
         const int c0 = best.e0, c1 = best.e1;
-        for (int d0 = -1; d0 <= 1; ++d0)
-            for (int d1 = -1; d1 <= 1; ++d1) {
-                const int e0 = c0 + d0, e1 = c1 + d1;
-                if ((d0 || d1) && e0 <= 255 && e1 >= 0 && e0 > e1) try_endpoints(v, e0, e1, best);
-            }
+        for (const auto& [d0, d1] : {std::pair{-1, 0}, {1, 0}, {0, -1}, {0, 1}}) {
+            const int e0 = c0 + d0, e1 = c1 + d1;
+            if (e0 <= 255 && e1 >= 0 && e0 > e1) try_endpoints(t, e0, e1, best);
+        }
         // Six-value mode pays off when a block holds exact 0 or 255 texels.
         if (lo == 0.0f || hi == 255.0f) {
             float ilo = 255.0f, ihi = 0.0f;
             for (int i = 0; i < 16; ++i)
                 if (v[i] > 0.0f && v[i] < 255.0f)
                     ilo = std::min(ilo, v[i]), ihi = std::max(ihi, v[i]);
-            if (ilo <= ihi) try_endpoints(v, static_cast<int>(ilo), static_cast<int>(ihi), best);
+            if (ilo <= ihi) try_endpoints(t, static_cast<int>(ilo), static_cast<int>(ihi), best);
         }
     }
     return best;
@@ -125,9 +113,9 @@ void pack_bc4(const Bc4Fit& fit, std::uint8_t out[8]) {
 
 void encode_bc5_block_kernel(const std::uint8_t rgba[64], int level, std::uint8_t out[16]) {
     for (int channel = 0; channel < 2; ++channel) {
-        float v[16];
-        for (int i = 0; i < 16; ++i) v[i] = static_cast<float>(rgba[i * 4 + channel]);
-        pack_bc4(fit_bc4(v, level), out + 8 * channel);
+        Texels t{};
+        for (int i = 0; i < 16; ++i) t.ch[0][i] = static_cast<float>(rgba[i * 4 + channel]);
+        pack_bc4(fit_bc4(t, level), out + 8 * channel);
     }
 }
 

@@ -57,12 +57,14 @@ inline float select_indices(const Texels& t, std::uint32_t mask, const Palette& 
         best = _mm512_mask_mov_ps(best, better, e);
         best_i = _mm512_mask_mov_epi32(best_i, better, _mm512_set1_epi32(k));
     }
-    const __mmask16 m = static_cast<__mmask16>(mask);
     alignas(64) std::int32_t chosen[16];
+    alignas(64) float err[16];
     _mm512_store_si512(chosen, best_i);
+    _mm512_store_ps(err, best);
+    float total = 0.0f;
     for (int i = 0; i < 16; ++i)
-        if (mask >> i & 1u) idx[i] = static_cast<std::uint8_t>(chosen[i]);
-    return _mm512_mask_reduce_add_ps(m, best);
+        if (mask >> i & 1u) idx[i] = static_cast<std::uint8_t>(chosen[i]), total += err[i];
+    return total;
 }
 #elif defined(__AVX2__)
 inline float select_indices(const Texels& t, std::uint32_t mask, const Palette& p, int channels,

@@ -25,10 +25,11 @@ inline constexpr int kBc7MinLevel = 0;
 inline constexpr int kBc7MaxLevel = 4;
 inline constexpr int kBc7DefaultLevel = 1;
 
-// BC5 quality levels: 0 fits endpoints by least squares, 1 also searches around them.
+// BC5 quality levels: 0 fits endpoints by one least-squares pass; 1 runs three and
+// then nudges the endpoints (and tries the six-value mode) on blocks still off.
 inline constexpr int kBc5MinLevel = 0;
 inline constexpr int kBc5MaxLevel = 1;
-inline constexpr int kBc5DefaultLevel = 0;
+inline constexpr int kBc5DefaultLevel = 1;
 
 struct EncodeSettings {
     int level = kBc7DefaultLevel; // clamped to the format's range

@@ -37,7 +37,9 @@ constexpr LevelConfig kLevels[kBc7MaxLevel + 1] = {
     {4, 4, true, 64, 64, 4, true, 0.0f},
 };
 
-enum class Pbits : std::uint8_t { None, PerEndpoint, Shared };
+// ForcedOne: per-endpoint p-bits fixed to 1, used for mode 6 on opaque blocks so
+// that alpha (stored 127 with p-bit 1) decodes to exactly 255.
+enum class Pbits : std::uint8_t { None, PerEndpoint, Shared, ForcedOne };
 
 // How one subset's endpoints are stored.
 struct Precision {
@@ -107,6 +109,8 @@ SubsetFit fit_subset_n(const Texels& t, std::uint32_t mask, const Precision& pre
         int combo_count = 0;
         if (prec.pbits == Pbits::None) {
             combos[combo_count][0] = combos[combo_count][1] = -1, ++combo_count;
+        } else if (prec.pbits == Pbits::ForcedOne) {
+            combos[combo_count][0] = combos[combo_count][1] = 1, ++combo_count;
         } else if (prec.pbits == Pbits::Shared) {
             for (int p = 0; p < 2; ++p)
                 combos[combo_count][0] = combos[combo_count][1] = p, ++combo_count;
@@ -227,13 +231,17 @@ void pack(Candidate c, std::uint8_t out[16]) {
 }
 
 // Modes with one index set per subset (0, 1, 2, 3, 6, 7).
-Candidate fit_mode(const Texels& t, int mode, int partition, const LevelConfig& cfg) {
+// `opaque`: every texel has alpha 255. Mode 6 then fits RGB only with p-bits
+// forced to 1, which keeps alpha exactly 255 (opaque stays opaque).
+Candidate fit_mode(const Texels& t, int mode, int partition, const LevelConfig& cfg, bool opaque) {
     const ModeInfo& m = kModes[mode];
+    const bool opaque_mode6 = mode == 6 && opaque;
     const Precision prec{m.color_bits, m.alpha_bits,
-                         m.endpoint_pbits ? Pbits::PerEndpoint
-                         : m.shared_pbits ? Pbits::Shared
-                                          : Pbits::None,
-                         m.alpha_bits ? 4 : 3};
+                         opaque_mode6       ? Pbits::ForcedOne
+                         : m.endpoint_pbits ? Pbits::PerEndpoint
+                         : m.shared_pbits   ? Pbits::Shared
+                                            : Pbits::None,
+                         (m.alpha_bits && !opaque_mode6) ? 4 : 3};
     Candidate c;
     c.mode = mode, c.partition = partition, c.error = 0.0f;
     for (int s = 0; s < m.subsets; ++s) {
@@ -245,6 +253,7 @@ Candidate fit_mode(const Texels& t, int mode, int partition, const LevelConfig& 
             fit_subset(t, mask, prec, m.index_bits, passes, cfg.exhaustive_pbits, c.color_idx);
         for (int k = 0; k < 2; ++k) {
             for (int ch = 0; ch < 4; ++ch) c.q[2 * s + k][ch] = fit.q[k][ch];
+            if (opaque_mode6) c.q[2 * s + k][3] = 127; // with p-bit 1: 255
             c.p[2 * s + k] = fit.p[k];
         }
         c.error += fit.error;
@@ -412,7 +421,7 @@ void encode_bc7_block_kernel(const std::uint8_t rgba[64], int level, std::uint8_
     bool opaque = true;
     for (int i = 0; i < 16; ++i) opaque &= rgba[i * 4 + 3] == 255;
 
-    Candidate best = fit_mode(t, 6, 0, cfg);
+    Candidate best = fit_mode(t, 6, 0, cfg, opaque);
     auto consider = [&](const Candidate& c) {
         if (c.error < best.error) best = c;
     };
@@ -421,20 +430,20 @@ void encode_bc7_block_kernel(const std::uint8_t rgba[64], int level, std::uint8_
     if (opaque) {
         if (cfg.two_subset_parts && !done()) {
             const int n = rank_partitions(t, 2, 64, 3, cfg.two_subset_parts, parts);
-            for (int i = 0; i < n; ++i) consider(fit_mode(t, 1, parts[i], cfg));
-            for (int i = 0; i < n; ++i) consider(fit_mode(t, 3, parts[i], cfg));
+            for (int i = 0; i < n; ++i) consider(fit_mode(t, 1, parts[i], cfg, opaque));
+            for (int i = 0; i < n; ++i) consider(fit_mode(t, 3, parts[i], cfg, opaque));
         }
         if (cfg.three_subset_parts && !done()) {
             const int n = rank_partitions(t, 3, 64, 3, cfg.three_subset_parts, parts);
             for (int i = 0; i < n; ++i) {
-                consider(fit_mode(t, 2, parts[i], cfg));
-                if (parts[i] < 16) consider(fit_mode(t, 0, parts[i], cfg));
+                consider(fit_mode(t, 2, parts[i], cfg, opaque));
+                if (parts[i] < 16) consider(fit_mode(t, 0, parts[i], cfg, opaque));
             }
         }
     } else {
         if (cfg.two_subset_parts && !done()) {
             const int n = rank_partitions(t, 2, 64, 4, cfg.two_subset_parts, parts);
-            for (int i = 0; i < n; ++i) consider(fit_mode(t, 7, parts[i], cfg));
+            for (int i = 0; i < n; ++i) consider(fit_mode(t, 7, parts[i], cfg, opaque));
         }
     }
     if (cfg.rotations && (!opaque || cfg.separate_alpha_opaque) && !done()) {

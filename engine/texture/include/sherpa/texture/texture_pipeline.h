@@ -18,7 +18,7 @@
 namespace sherpa::tex {
 
 // Bumped whenever encoder or mip output changes, so old cache files stop matching.
-inline constexpr int kTextureEncoderVersion = 1;
+inline constexpr int kTextureEncoderVersion = 2;
 
 // One image in one role, as used by the displayed scene's materials.
 struct TextureUse {

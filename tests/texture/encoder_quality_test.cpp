@@ -48,7 +48,7 @@ int max_abs_diff(const std::vector<std::uint8_t>& a, const std::vector<std::uint
 // Floors sit a little under what each level measured on these crops when the
 // test was written; a level must also never be worse than the one below it.
 TEST(EncoderQuality, Bc7PsnrFloorsPerLevel) {
-    const double floors[kBc7MaxLevel + 1] = {35.8, 40.0, 42.6, 42.8, 42.8};
+    const double floors[kBc7MaxLevel + 1] = {35.8, 40.0, 41.2, 42.7, 42.8};
     const auto samples = bc7_samples();
     double previous = 0.0;
     for (int level = kBc7MinLevel; level <= kBc7MaxLevel; ++level) {

@@ -32,9 +32,11 @@ struct LevelConfig {
 };
 
 constexpr LevelConfig kLevels[kBc7MaxLevel + 1] = {
-    {0, 0, false, 0, 0, 0, false, 0.0f}, {1, 0, false, 1, 0, 1, false, 64.0f},
-    {2, 1, false, 2, 1, 4, true, 32.0f}, {3, 2, true, 8, 4, 4, true, 8.0f},
-    {4, 4, true, 64, 64, 4, true, 0.0f},
+    {0, 0, false, 0, 0, 0, false, 0.0f},     // mode 6 only
+    {1, 0, false, 1, 0, 1, false, 64.0f},    // + best 2-subset partition (modes 1, 3)
+    {2, 1, false, 3, 1, 1, false, 32.0f},    // + 3-subset modes, more refinement
+    {2, 1, false, 8, 4, 4, true, 16.0f},     // + all rotations of modes 4/5
+    {3, 2, true, 20, 10, 4, true, 4.0f},     // wide partition search, every p-bit pair
 };
 
 // ForcedOne: per-endpoint p-bits fixed to 1, used for mode 6 on opaque blocks so

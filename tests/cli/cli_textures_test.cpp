@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <sys/wait.h>
 
@@ -81,4 +82,32 @@ TEST(CliTextures, NoCacheAndUsageErrors) {
     EXPECT_EQ(run_cli("textures").exit_code, 2);
     EXPECT_EQ(run_cli("textures '" + box + "' --quality 9").exit_code, 2);
     EXPECT_EQ(run_cli("textures /nonexistent.gltf --no-cache").exit_code, 1);
+}
+
+TEST(CliTextures, TwoProcessesWritingTheSameCacheAtOnce) {
+    const auto dir = sherpa::test::fresh_temp_dir("cli-textures-concurrent");
+    const std::string box =
+        (sherpa::test::assets_dir() / "gltf/BoxTextured/glTF/BoxTextured.gltf").string();
+    const std::string cli = std::string(SHERPA_CLI_PATH) + " textures '" + box + "' --cache-dir '" +
+                            dir.string() + "' --json";
+    // Both processes miss and write the same key; each renames a complete file.
+    const std::string both = "(" + cli + " >" + (dir / "a.json").string() + " & " + cli + " >" +
+                             (dir / "b.json").string() + " & wait) 2>/dev/null";
+    ASSERT_EQ(std::system(both.c_str()), 0);
+    for (const char* name : {"a.json", "b.json"}) {
+        std::ifstream f(dir / name);
+        const auto j = nlohmann::json::parse(f);
+        // Usually both miss; a late starter may already find the other's file.
+        const std::string state = j["textures"][0]["state"];
+        EXPECT_TRUE(state == "miss" || state == "hit") << name << ": " << state;
+    }
+    const CliRun after =
+        run_cli("textures '" + box + "' --cache-dir '" + dir.string() + "' --json");
+    ASSERT_EQ(after.exit_code, 0);
+    EXPECT_EQ(nlohmann::json::parse(after.out)["textures"][0]["state"], "hit");
+    std::size_t leftovers = 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+        leftovers += e.path().filename().string().find(".tmp.") != std::string::npos;
+    EXPECT_EQ(leftovers, 0u);
+    std::filesystem::remove_all(dir);
 }

@@ -32,11 +32,11 @@ struct LevelConfig {
 };
 
 constexpr LevelConfig kLevels[kBc7MaxLevel + 1] = {
-    {0, 0, false, 0, 0, 0, false, 0.0f},     // mode 6 only
-    {1, 0, false, 1, 0, 1, false, 64.0f},    // + best 2-subset partition (modes 1, 3)
-    {2, 1, false, 3, 1, 1, false, 32.0f},    // + 3-subset modes, more refinement
-    {2, 1, false, 8, 4, 4, true, 16.0f},     // + all rotations of modes 4/5
-    {3, 2, true, 20, 10, 4, true, 4.0f},     // wide partition search, every p-bit pair
+    {0, 0, false, 0, 0, 0, false, 0.0f},  // mode 6 only
+    {1, 0, false, 1, 0, 1, false, 64.0f}, // + best 2-subset partition (modes 1, 3)
+    {2, 1, false, 3, 1, 1, false, 32.0f}, // + 3-subset modes, more refinement
+    {2, 1, false, 8, 4, 4, true, 16.0f},  // + all rotations of modes 4/5
+    {3, 2, true, 16, 8, 4, true, 4.0f},   // wide partition search, every p-bit pair
 };
 
 // ForcedOne: per-endpoint p-bits fixed to 1, used for mode 6 on opaque blocks so
@@ -90,13 +90,22 @@ float quantize_endpoint(const float e[4], const Precision& prec, int pbit, int q
 
 // Fits one subset (texels in `mask`) with `index_bits` indices: principal-axis
 // endpoints, then `passes` rounds of least squares. Indices go to idx[] for masked texels.
+// Float endpoints a fit starts from.
+struct Endpoints {
+    float e[2][4] = {};
+};
+
 // `channels` is a template parameter (equal to prec.channels) so that the
 // per-channel loops unroll and the 16-texel loops vectorise.
 template <int channels>
 SubsetFit fit_subset_n(const Texels& t, std::uint32_t mask, const Precision& prec, int index_bits,
-                       int passes, bool exhaustive_pbits, std::uint8_t idx[16]) {
+                       int passes, bool exhaustive_pbits, const Endpoints* start,
+                       std::uint8_t idx[16]) {
     float e[2][4] = {};
-    principal_endpoints<channels>(t, mask, e[0], e[1]);
+    if (start)
+        std::copy(&start->e[0][0], &start->e[0][0] + 8, &e[0][0]);
+    else
+        principal_endpoints<channels>(t, mask, e[0], e[1]);
     const std::uint8_t* weights = weights_for_bits(index_bits);
     const int entries = 1 << index_bits;
     // Weights padded to 16 entries (the tail repeats the table; only the first
@@ -158,14 +167,15 @@ SubsetFit fit_subset_n(const Texels& t, std::uint32_t mask, const Precision& pre
 }
 
 SubsetFit fit_subset(const Texels& t, std::uint32_t mask, const Precision& prec, int index_bits,
-                     int passes, bool exhaustive_pbits, std::uint8_t idx[16]) {
+                     int passes, bool exhaustive_pbits, std::uint8_t idx[16],
+                     const Endpoints* start = nullptr) {
     switch (prec.channels) {
     case 1:
-        return fit_subset_n<1>(t, mask, prec, index_bits, passes, exhaustive_pbits, idx);
+        return fit_subset_n<1>(t, mask, prec, index_bits, passes, exhaustive_pbits, start, idx);
     case 3:
-        return fit_subset_n<3>(t, mask, prec, index_bits, passes, exhaustive_pbits, idx);
+        return fit_subset_n<3>(t, mask, prec, index_bits, passes, exhaustive_pbits, start, idx);
     default:
-        return fit_subset_n<4>(t, mask, prec, index_bits, passes, exhaustive_pbits, idx);
+        return fit_subset_n<4>(t, mask, prec, index_bits, passes, exhaustive_pbits, start, idx);
     }
 }
 
@@ -235,7 +245,10 @@ void pack(Candidate c, std::uint8_t out[16]) {
 // Modes with one index set per subset (0, 1, 2, 3, 6, 7).
 // `opaque`: every texel has alpha 255. Mode 6 then fits RGB only with p-bits
 // forced to 1, which keeps alpha exactly 255 (opaque stays opaque).
-Candidate fit_mode(const Texels& t, int mode, int partition, const LevelConfig& cfg, bool opaque) {
+// `starts`: principal-axis endpoints per subset when the caller already has them
+// (modes 1 and 3, or 0 and 2, share partitions, so the axes are computed once).
+Candidate fit_mode(const Texels& t, int mode, int partition, const LevelConfig& cfg, bool opaque,
+                   const Endpoints* starts = nullptr) {
     const ModeInfo& m = kModes[mode];
     const bool opaque_mode6 = mode == 6 && opaque;
     const Precision prec{m.color_bits, m.alpha_bits,
@@ -251,8 +264,8 @@ Candidate fit_mode(const Texels& t, int mode, int partition, const LevelConfig& 
                                    : m.subsets == 2 ? kTwoSubsetMasks[partition][s]
                                                     : kThreeSubsetMasks[partition][s];
         const int passes = mode == 6 ? cfg.refine_passes : cfg.partition_refine_passes;
-        const SubsetFit fit =
-            fit_subset(t, mask, prec, m.index_bits, passes, cfg.exhaustive_pbits, c.color_idx);
+        const SubsetFit fit = fit_subset(t, mask, prec, m.index_bits, passes, cfg.exhaustive_pbits,
+                                         c.color_idx, starts ? &starts[s] : nullptr);
         for (int k = 0; k < 2; ++k) {
             for (int ch = 0; ch < 4; ++ch) c.q[2 * s + k][ch] = fit.q[k][ch];
             if (opaque_mode6) c.q[2 * s + k][3] = 127; // with p-bit 1: 255
@@ -415,6 +428,14 @@ int rank_partitions(const Texels& t, int subsets, int available, int channels, i
     return count;
 }
 
+// Principal-axis start endpoints (RGB) of every subset of a partition, into buf.
+const Endpoints* subset_starts(const Texels& t, int subsets, int partition, Endpoints buf[3]) {
+    const SubsetMasks& masks = subsets == 2 ? kTwoSubsetMasks : kThreeSubsetMasks;
+    for (int s = 0; s < subsets; ++s)
+        principal_endpoints<3>(t, masks[partition][s], buf[s].e[0], buf[s].e[1]);
+    return buf;
+}
+
 } // namespace
 
 void encode_bc7_block_kernel(const std::uint8_t rgba[64], int level, std::uint8_t out[16]) {
@@ -429,17 +450,22 @@ void encode_bc7_block_kernel(const std::uint8_t rgba[64], int level, std::uint8_
     };
     auto done = [&] { return best.error <= cfg.good_enough; };
     int parts[64];
+    Endpoints starts_buf[3];
     if (opaque) {
         if (cfg.two_subset_parts && !done()) {
             const int n = rank_partitions(t, 2, 64, 3, cfg.two_subset_parts, parts);
-            for (int i = 0; i < n; ++i) consider(fit_mode(t, 1, parts[i], cfg, opaque));
-            for (int i = 0; i < n; ++i) consider(fit_mode(t, 3, parts[i], cfg, opaque));
+            for (int i = 0; i < n; ++i) {
+                const Endpoints* starts = subset_starts(t, 2, parts[i], starts_buf);
+                consider(fit_mode(t, 1, parts[i], cfg, opaque, starts));
+                consider(fit_mode(t, 3, parts[i], cfg, opaque, starts));
+            }
         }
         if (cfg.three_subset_parts && !done()) {
             const int n = rank_partitions(t, 3, 64, 3, cfg.three_subset_parts, parts);
             for (int i = 0; i < n; ++i) {
-                consider(fit_mode(t, 2, parts[i], cfg, opaque));
-                if (parts[i] < 16) consider(fit_mode(t, 0, parts[i], cfg, opaque));
+                const Endpoints* starts = subset_starts(t, 3, parts[i], starts_buf);
+                consider(fit_mode(t, 2, parts[i], cfg, opaque, starts));
+                if (parts[i] < 16) consider(fit_mode(t, 0, parts[i], cfg, opaque, starts));
             }
         }
     } else {

@@ -149,6 +149,21 @@ TEST(TexturePipeline, DamagedFilesAreReportedAndReplaced) {
     std::filesystem::remove_all(dir);
 }
 
+TEST(TexturePipeline, ResolvesMaterialTexturesToBindlessSlots) {
+    const Scene scene = small_scene();
+    PipelineOptions o;
+    o.bc7_level = 0;
+    const auto set = prepare_textures(scene, o);
+    const std::vector<std::uint32_t> slots = {7, 9}; // where the GPU layer put set.textures[0], [1]
+    const GPUMaterialData m0 = resolve_material(scene.materials[0], set, slots);
+    EXPECT_EQ(m0.base_color_tex, 7u);
+    EXPECT_EQ(m0.normal_tex, 9u);
+    EXPECT_EQ(m0.emissive_tex, kTextureSentinel);
+    EXPECT_EQ(resolve_material(scene.materials[1], set, slots).base_color_tex, 7u); // shared image
+    EXPECT_EQ(resolve_material(scene.materials[2], set, slots).base_color_tex,
+              kTextureSentinel); // not displayed
+}
+
 TEST(TexturePipeline, FileForAnotherRecipeIsStale) {
     const auto dir = test::fresh_temp_dir("cache-stale");
     const Scene scene = small_scene();

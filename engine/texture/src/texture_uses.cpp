@@ -75,4 +75,21 @@ std::int32_t PreparedTextureSet::find(std::int32_t texture, TextureRole role) co
     return -1;
 }
 
+GPUMaterialData resolve_material(const MaterialInstance& material, const PreparedTextureSet& set,
+                                 std::span<const std::uint32_t> bindless_slot) {
+    GPUMaterialData gpu = to_gpu_material(material);
+    auto slot = [&](const TextureSlot& s, TextureRole role) {
+        const std::int32_t i = s.present() ? set.find(s.texture, role) : -1;
+        if (i < 0 || std::size_t(i) >= bindless_slot.size() || set.textures[std::size_t(i)].failed)
+            return kTextureSentinel;
+        return bindless_slot[std::size_t(i)];
+    };
+    gpu.base_color_tex = slot(material.base_color, kRoleColor);
+    gpu.emissive_tex = slot(material.emissive, kRoleColor);
+    gpu.metallic_roughness_tex = slot(material.metallic_roughness, kRoleLinear);
+    gpu.occlusion_tex = slot(material.occlusion, kRoleLinear);
+    gpu.normal_tex = slot(material.normal, kRoleNormal);
+    return gpu;
+}
+
 } // namespace sherpa::tex

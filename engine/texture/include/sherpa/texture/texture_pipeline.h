@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -79,5 +80,12 @@ struct PreparedTextureSet {
 std::string texture_recipe(const TextureUse& use, const PipelineOptions& options);
 
 PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& options);
+
+// For the GPU layer once it has uploaded set.textures[i] to bindless slot
+// bindless_slot[i]: the material's GPU record with every texture field resolved to
+// its slot, or kTextureSentinel where the slot has no texture or its texture
+// failed (the GPU layer then binds its default texture).
+GPUMaterialData resolve_material(const MaterialInstance& material, const PreparedTextureSet& set,
+                                 std::span<const std::uint32_t> bindless_slot);
 
 } // namespace sherpa::tex

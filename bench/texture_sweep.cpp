@@ -38,7 +38,7 @@ struct Row {
     std::string kind; // bc7-rgb, bc7-rgba, bc5
     int level = 0;
     std::size_t textures = 0;
-    double mpix = 0, ms = 0, psnr_sum = 0, angle_sum = 0;
+    double mpix = 0, ms = 0, psnr_sum = 0, angle_sum = 0, angle_rgb_sum = 0;
     tex::SquaredError pooled; // all texels of all textures together
 };
 
@@ -63,8 +63,10 @@ Row measure(const std::vector<bench::CorpusTexture>& set, tex::BlockFormat forma
         row.mpix += double(t.image.width) * t.image.height / 1e6;
         row.ms += ms;
         row.psnr_sum += psnr;
-        if (format == tex::BlockFormat::Bc5)
+        if (format == tex::BlockFormat::Bc5) {
             row.angle_sum += tex::normal_angle_error(t.image.pixels, decoded).mean();
+            row.angle_rgb_sum += tex::normal_angle_error_vs_rgb(t.image.pixels, decoded).mean();
+        }
         std::fprintf(stderr, "  %s L%d %-28s %7.1f ms/MPix %6.2f dB\n", kind.c_str(), level,
                      t.name.c_str(), ms / (double(t.image.width) * t.image.height / 1e6), psnr);
     }
@@ -122,20 +124,26 @@ int main(int argc, char** argv) {
             rows.push_back(measure(corpus.normal, tex::BlockFormat::Bc5, level, "bc5", opt));
 
     std::ostringstream csv;
-    csv << "kind,level,textures,mpix,ms_per_mpix,psnr_db,pooled_psnr_db,mean_angle_deg\n";
-    std::printf("| kind | level | textures | ms/MPix | PSNR dB | mean angle deg "
-                "|\n|---|---|---|---|---|---|\n");
+    csv << "kind,level,textures,mpix,ms_per_mpix,psnr_db,pooled_psnr_db,mean_angle_deg,mean_angle_"
+           "vs_rgb_deg\n";
+    std::printf(
+        "| kind | level | textures | ms/MPix | mean PSNR dB | pooled PSNR dB | mean angle deg "
+        "| mean angle vs source RGB deg |\n|---|---|---|---|---|---|---|---|\n");
     for (const Row& r : rows) {
         const double n = double(r.textures ? r.textures : 1);
         const double ms_per_mpix = r.mpix > 0 ? r.ms / r.mpix : 0.0;
+        const bool bc5 = r.kind == "bc5";
         char line[256];
-        std::snprintf(line, sizeof line, "%s,%d,%zu,%.3f,%.2f,%.3f,%.3f,%.3f\n", r.kind.c_str(),
-                      r.level, r.textures, r.mpix, ms_per_mpix, r.psnr_sum / n, r.pooled.psnr(),
-                      r.angle_sum / n);
+        std::snprintf(line, sizeof line, "%s,%d,%zu,%.3f,%.2f,%.3f,%.3f,%.3f,%.3f\n",
+                      r.kind.c_str(), r.level, r.textures, r.mpix, ms_per_mpix, r.psnr_sum / n,
+                      r.pooled.psnr(), r.angle_sum / n, r.angle_rgb_sum / n);
         csv << line;
+        char angles[64] = "- | -";
+        if (bc5)
+            std::snprintf(angles, sizeof angles, "%.3f | %.3f", r.angle_sum / n,
+                          r.angle_rgb_sum / n);
         std::printf("| %s | %d | %zu | %.1f | %.2f | %.2f | %s |\n", r.kind.c_str(), r.level,
-                    r.textures, ms_per_mpix, r.psnr_sum / n, r.pooled.psnr(),
-                    r.kind == "bc5" ? std::to_string(r.angle_sum / n).substr(0, 5).c_str() : "-");
+                    r.textures, ms_per_mpix, r.psnr_sum / n, r.pooled.psnr(), angles);
     }
     if (!opt.csv.empty()) {
         std::ofstream(opt.csv) << csv.str();

@@ -85,6 +85,12 @@ void decode_bc5_block(std::span<const std::uint8_t, kBlockBytes> block,
 void gather_block(std::span<const std::uint8_t> rgba, std::uint32_t width, std::uint32_t height,
                   std::uint32_t bx, std::uint32_t by,
                   std::span<std::uint8_t, kBlockTexelBytes> block) {
+    if (bx * 4 + 4 <= width && by * 4 + 4 <= height) { // interior: four 16-byte rows
+        for (std::uint32_t y = 0; y < 4; ++y)
+            std::copy_n(rgba.data() + ((std::size_t{by} * 4 + y) * width + bx * 4) * 4, 16,
+                        block.data() + y * 16);
+        return;
+    }
     for (std::uint32_t y = 0; y < 4; ++y) {
         const std::uint32_t sy = std::min(by * 4 + y, height - 1);
         for (std::uint32_t x = 0; x < 4; ++x) {

@@ -33,5 +33,10 @@ struct AngleError {
     double mean() const { return texels ? sum_degrees / double(texels) : 0.0; }
 };
 AngleError normal_angle_error(std::span<const std::uint8_t> a, std::span<const std::uint8_t> b);
+// The same, but the reference is the source's own 3-channel normal, normalised
+// (R, G, B of `source`), so the source's deviation from unit length and its
+// quantised Z count as error too.
+AngleError normal_angle_error_vs_rgb(std::span<const std::uint8_t> source,
+                                     std::span<const std::uint8_t> two_channel);
 
 } // namespace sherpa::tex

@@ -1,4 +1,5 @@
-// sherpa-cli textures SCENE [--cache-dir DIR] [--quality N] [--no-cache] [--no-bc] [--json]
+// sherpa-cli textures SCENE [--cache-dir DIR] [--cache-cap-mb N] [--quality N] [--no-cache]
+//                          [--no-bc] [--json]
 // Runs the texture pipeline over the displayed scene and prints, per (image,
 // role), what the texture-cache dock shows.
 #include "cli_common.h"
@@ -17,8 +18,9 @@ namespace sherpa::cli {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: sherpa-cli textures SCENE [--cache-dir DIR] [--quality N] [--no-cache] [--no-bc] "
-    "[--json]\n"
+    "usage: sherpa-cli textures SCENE [--cache-dir DIR] [--cache-cap-mb N] [--quality N] "
+    "[--no-cache] [--no-bc] [--json]\n"
+    "  --cache-cap-mb N   least recently used files go beyond N MiB (default 2048)\n"
     "  --quality N   BC7 quality level 0 (fastest) .. 4 (best); default 1\n"
     "  --no-bc       pretend the device cannot sample BC formats (RGBA8 fallback)\n";
 
@@ -67,6 +69,15 @@ int run_textures(Args args) {
             options.device_supports_bc = false;
         } else if (a == "--cache-dir" && i + 1 < args.size()) {
             cache_dir = std::filesystem::path(std::string(args[++i]));
+        } else if (a == "--cache-cap-mb" && i + 1 < args.size()) {
+            const std::string_view v = args[++i];
+            std::uint64_t mb = 0;
+            const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), mb);
+            if (ec != std::errc() || end != v.data() + v.size() || mb == 0) {
+                std::fprintf(stderr, "error: --cache-cap-mb needs a positive number\n%s", kUsage);
+                return kExitUsage;
+            }
+            options.cache_cap_bytes = mb << 20;
         } else if (a == "--quality" && i + 1 < args.size()) {
             const std::string_view v = args[++i];
             int level = -1;

@@ -21,9 +21,8 @@ constexpr Subcommand kSubcommands[] = {
      "tangents SCENE --dump FILE.csv [--method NAME] [--regenerate]   per-corner tangents\n"
      "  tangents SCENE --compare [--method NAME] [--json]   authored vs regenerated"},
     {"textures", sherpa::cli::run_textures,
-     "textures SCENE [--cache-dir DIR] [--cache-cap-mb N] [--quality N] [--no-cache] [--no-bc] [--json]\n"
-     "    texture "
-     "pipeline and cache report"},
+     "textures SCENE [--cache-dir DIR] [--cache-cap-mb N] [--quality N] [--no-cache] [--no-bc]\n"
+     "           [--json]   texture pipeline and cache report"},
 };
 
 int usage(std::FILE* out) {

@@ -16,5 +16,6 @@ int run_info(Args args);
 int run_cull(Args args);
 int run_tangents(Args args);
 int run_textures(Args args);
+int run_render(Args args);
 
 } // namespace sherpa::cli

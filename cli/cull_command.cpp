@@ -2,6 +2,7 @@
 // The camera pass plus one pass per shadow cascade of the scene's first
 // directional light (or a default sun).
 #include "cli_common.h"
+#include "cull_gpu.h"
 
 #include <sherpa/scene/culling_passes.h>
 #include <sherpa/scene/scene_loader.h>
@@ -32,7 +33,10 @@ nlohmann::json pass_json(const Scene& s, const PassResult& p) {
     return {{"name", st.pass},
             {"visible", visible},
             {"stats",
-             {{"method", to_string(st.method)},
+             {{"method", st.gpu ? std::string("gpu (") + std::string(to_string(st.method)) + ")"
+                                : std::string(to_string(st.method))},
+              {"gpu_ms", st.gpu_ms},
+              {"cpu_gpu_differences", st.cpu_gpu_differences},
               {"simd", to_string(st.simd)},
               {"total", st.total},
               {"tested", st.tested},
@@ -77,13 +81,10 @@ int run_cull(Args args) {
     }
     CullOptions options;
     options.count_false_positives = true;
-    if (method_text == "gpu") {
-        std::fprintf(
-            stderr,
-            "error: --method gpu needs the Vulkan renderer, which this build does not have yet\n");
-        return kExitLoadError;
-    }
-    if (!parse_cull_method(method_text, options.method)) {
+    const bool on_gpu = method_text == "gpu";
+    if (on_gpu)
+        options.method = CullMethod::PVertex; // the GPU runs the p-vertex test
+    else if (!parse_cull_method(method_text, options.method)) {
         std::fprintf(stderr, "error: unknown method '%.*s'\n%s",
                      static_cast<int>(method_text.size()), method_text.data(), kUsage);
         return kExitUsage;
@@ -94,9 +95,9 @@ int run_cull(Args args) {
         return kExitLoadError;
     }
     const Scene& s = *r.scene;
-    const BoxesSoA boxes = instance_boxes(s);
+    const CullInput input = prepare_cull_input(s);
     std::vector<PassResult> passes;
-    passes.push_back(cull_pass(s, boxes, frustum_from_view_projection(camera.view_projection()),
+    passes.push_back(cull_pass(s, input, frustum_from_view_projection(camera.view_projection()),
                                camera.eye, options, "camera"));
     glm::vec3 sun{-0.4f, -1.0f, -0.3f};
     for (const PlacedLight& pl : s.placed_lights)
@@ -105,23 +106,38 @@ int run_cull(Args args) {
             break;
         }
     const auto cascades = cascade_view_projections(camera, sun, s.bounds, {});
-    for (std::size_t c = 0; c < cascades.size(); ++c)
-        passes.push_back(cull_pass(s, boxes, frustum_from_view_projection(cascades[c]), camera.eye,
-                                   options, "cascade" + std::to_string(c)));
+    std::vector<std::pair<std::string, Frustum>> frusta = {
+        {"camera", frustum_from_view_projection(camera.view_projection())}};
+    for (std::size_t c = 0; c < cascades.size(); ++c) {
+        frusta.emplace_back("cascade" + std::to_string(c),
+                            frustum_from_view_projection(cascades[c]));
+        passes.push_back(
+            cull_pass(s, input, frusta.back().second, camera.eye, options, frusta.back().first));
+    }
+    if (on_gpu) {
+        std::vector<PassResult> gpu_passes;
+        if (!gpu_cull_passes(s, frusta, passes, gpu_passes, error)) {
+            std::fprintf(stderr, "error: %s\n", error.c_str());
+            return kExitLoadError;
+        }
+        passes = std::move(gpu_passes);
+    }
     if (as_json) {
         nlohmann::json j = {{"passes", nlohmann::json::array()}};
         for (const auto& p : passes) j["passes"].push_back(pass_json(s, p));
         std::cout << j.dump(1) << "\n";
     } else {
-        std::printf("%-9s %8s %9s %9s %8s %8s %6s %10s %8s\n", "pass", "method", "total", "visible",
-                    "culled", "falsepos", "draws", "triangles", "cpu ms");
+        std::printf("%-9s %8s %9s %9s %8s %8s %6s %10s %8s %8s %8s\n", "pass", "method", "total",
+                    "visible", "culled", "falsepos", "draws", "triangles", "cpu ms", "gpu ms",
+                    "cpu!=gpu");
         for (const auto& p : passes) {
             const CullStats& st = p.stats;
-            std::printf("%-9s %8s %9llu %9llu %8llu %8lld %6llu %10llu %8.3f\n", st.pass.c_str(),
-                        std::string(to_string(st.method)).c_str(), (unsigned long long)st.total,
-                        (unsigned long long)st.visible, (unsigned long long)st.culled,
-                        (long long)st.false_positives, (unsigned long long)st.draw_calls,
-                        (unsigned long long)st.triangles, st.cpu_ms);
+            std::printf("%-9s %8s %9llu %9llu %8llu %8lld %6llu %10llu %8.3f %8.3f %8lld\n",
+                        st.pass.c_str(), st.gpu ? "gpu" : std::string(to_string(st.method)).c_str(),
+                        (unsigned long long)st.total, (unsigned long long)st.visible,
+                        (unsigned long long)st.culled, (long long)st.false_positives,
+                        (unsigned long long)st.draw_calls, (unsigned long long)st.triangles,
+                        st.cpu_ms, st.gpu_ms, (long long)st.cpu_gpu_differences);
         }
     }
     return kExitOk;

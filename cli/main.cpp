@@ -23,6 +23,10 @@ constexpr Subcommand kSubcommands[] = {
     {"textures", sherpa::cli::run_textures,
      "textures SCENE [--cache-dir DIR] [--cache-cap-mb N] [--quality N] [--no-cache] [--no-bc]\n"
      "           [--json]   texture pipeline and cache report"},
+    {"render", sherpa::cli::run_render,
+     "render SCENE -o OUT.png [--width W --height H] [--view NAME] [--overlay NAME ...]\n"
+     "         [--camera auto|gltf:N|eye=x,y,z:target=x,y,z] [--frames N] [--report FILE.json]\n"
+     "                                     render offscreen (Vulkan) to a PNG"},
 };
 
 int usage(std::FILE* out) {

@@ -51,7 +51,8 @@ json scene_info_json(const Scene& scene) {
               {"samplers", c.samplers},
               {"lights", c.lights},
               {"cameras", c.cameras},
-              {"instances", scene.instances.size()},
+              {"instances", scene.node_primitive_pairs()},
+              {"drawable_instances", scene.instances.size()},
               {"vertices", c.vertices},
               {"triangles", c.triangles},
               {"bounds", aabb_json(scene.bounds)}};

@@ -1,6 +1,6 @@
 // sherpa-cli info: exit codes, error format, JSON schema.
-#include "test_support.h"
 #include "cli/cli_run.h"
+#include "test_support.h"
 
 #include <array>
 #include <cstdio>
@@ -10,8 +10,8 @@
 
 namespace {
 
-using sherpa::test::run_cli;
 using sherpa::test::CliRun;
+using sherpa::test::run_cli;
 
 TEST(CliInfo, JsonHasEveryRequiredKey) {
     const CliRun r = run_cli("info '" + sherpa::test::gltf_asset("DamagedHelmet") + "' --json");

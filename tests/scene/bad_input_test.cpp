@@ -88,6 +88,8 @@ TEST(AllowedInput, PointsAreKeptOutOfTheTrianglePath) {
     EXPECT_TRUE(r.scene->meshes.empty());
     EXPECT_EQ(r.scene->counts.primitives, 1u);
     EXPECT_EQ(r.scene->counts.triangles, 0u);
+    EXPECT_EQ(r.scene->node_primitive_pairs(), 1u) << "counted the glTF way";
+    EXPECT_TRUE(r.scene->instances.empty());
     EXPECT_NE(r.scene->primitives.at(0).skipped_reason.find("POINTS"), std::string::npos);
 }
 

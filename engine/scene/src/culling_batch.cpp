@@ -70,10 +70,11 @@ std::uint32_t plane_arrays(const Frustum& f, const BoxesSoA& b, PlaneArrays* out
 
 } // namespace
 
-void pvertex_scalar(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t end,
-                    std::uint8_t* out) {
+std::size_t pvertex_scalar(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t end,
+                           std::uint8_t* out) {
     PlaneArrays pa[6];
     const std::uint32_t n = plane_arrays(f, b, pa);
+    std::size_t visible = 0;
     for (std::size_t i = begin; i < end; ++i) {
         bool inside = !f.empty;
         for (std::uint32_t k = 0; k < n; ++k)
@@ -81,15 +82,17 @@ void pvertex_scalar(const Frustum& f, const BoxesSoA& b, std::size_t begin, std:
                 pa[k].nx * pa[k].x[i] + pa[k].ny * pa[k].y[i] + pa[k].nz * pa[k].z[i] + pa[k].d >=
                 0.0f;
         out[i] = inside ? 1 : 0;
+        visible += inside ? 1 : 0;
     }
+    return visible;
 }
 
-__attribute__((target("avx2,fma,bmi2"))) void pvertex_avx2(const Frustum& f, const BoxesSoA& b,
-                                                           std::size_t begin, std::size_t end,
-                                                           std::uint8_t* out) {
+__attribute__((target("avx2,fma,bmi2,popcnt"))) std::size_t
+pvertex_avx2(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t end,
+             std::uint8_t* out) {
     PlaneArrays pa[6];
     const std::uint32_t n = plane_arrays(f, b, pa);
-    std::size_t i = begin;
+    std::size_t i = begin, visible = 0;
     if (!f.empty)
         for (; i + 8 <= end; i += 8) {
             __m256 all = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
@@ -104,20 +107,21 @@ __attribute__((target("avx2,fma,bmi2"))) void pvertex_avx2(const Frustum& f, con
                 all = _mm256_and_ps(all, _mm256_cmp_ps(dist, _mm256_setzero_ps(), _CMP_GE_OQ));
             }
             const int mask = _mm256_movemask_ps(all);
+            visible += static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(mask)));
             // Spread 8 mask bits to 8 bytes of 0/1.
             const std::uint64_t bytes =
                 _pdep_u64(static_cast<std::uint64_t>(mask), 0x0101010101010101ull);
             __builtin_memcpy(out + i, &bytes, 8);
         }
-    pvertex_scalar(f, b, i, end, out);
+    return visible + pvertex_scalar(f, b, i, end, out);
 }
 
-__attribute__((target("avx512f,avx512bw,avx512vl,bmi2"))) void
+__attribute__((target("avx512f,avx512bw,avx512vl,bmi2,popcnt"))) std::size_t
 pvertex_avx512(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t end,
                std::uint8_t* out) {
     PlaneArrays pa[6];
     const std::uint32_t n = plane_arrays(f, b, pa);
-    std::size_t i = begin;
+    std::size_t i = begin, visible = 0;
     if (!f.empty)
         for (; i + 16 <= end; i += 16) {
             __mmask16 all = 0xFFFF;
@@ -132,36 +136,47 @@ pvertex_avx512(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size
                 all = _mm512_mask_cmp_ps_mask(all, dist, _mm512_setzero_ps(), _CMP_GE_OQ);
             }
             _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i), _mm_maskz_set1_epi8(all, 1));
+            visible += static_cast<std::size_t>(__builtin_popcount(all));
         }
-    pvertex_scalar(f, b, i, end, out);
+    return visible + pvertex_scalar(f, b, i, end, out);
 }
 
 } // namespace detail
 
 namespace {
 
-void sphere_range(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t end,
-                  std::uint8_t* out) {
-    for (std::size_t i = begin; i < end; ++i) out[i] = sphere_visible(f, b.box(i)) ? 1 : 0;
+std::size_t sphere_range(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t end,
+                         std::uint8_t* out) {
+    std::size_t visible = 0;
+    for (std::size_t i = begin; i < end; ++i) {
+        out[i] = sphere_visible(f, b.box(i)) ? 1 : 0;
+        visible += out[i];
+    }
+    return visible;
 }
 
-void run_range(const Frustum& f, const BoxesSoA& b, CullMethod method, SimdLevel level,
-               std::size_t begin, std::size_t end, std::uint8_t* out) {
+std::size_t run_range(const Frustum& f, const BoxesSoA& b, CullMethod method, SimdLevel level,
+                      std::size_t begin, std::size_t end, std::uint8_t* out) {
     if (method == CullMethod::Sphere) return sphere_range(f, b, begin, end, out);
+    std::size_t visible = 0;
     switch (level) {
     case SimdLevel::Avx512:
-        detail::pvertex_avx512(f, b, begin, end, out);
+        visible = detail::pvertex_avx512(f, b, begin, end, out);
         break;
     case SimdLevel::Avx2:
-        detail::pvertex_avx2(f, b, begin, end, out);
+        visible = detail::pvertex_avx2(f, b, begin, end, out);
         break;
     default:
-        detail::pvertex_scalar(f, b, begin, end, out);
+        visible = detail::pvertex_scalar(f, b, begin, end, out);
         break;
     }
     if (method == CullMethod::Exact) // the exact test only refines p-vertex survivors
         for (std::size_t i = begin; i < end; ++i)
-            if (out[i] && !exact_visible(f, b.box(i))) out[i] = 0;
+            if (out[i] && !exact_visible(f, b.box(i))) {
+                out[i] = 0;
+                --visible;
+            }
+    return visible;
 }
 
 } // namespace
@@ -170,22 +185,28 @@ CullCounts cull_boxes(const Frustum& f, const BoxesSoA& boxes, CullMethod method
                       std::span<std::uint8_t> visible, int threads) {
     const std::size_t n = boxes.size();
     level = std::min(level, best_simd_level());
+    std::size_t count = 0;
     if (threads > 1 && n > 4096) {
         const auto chunks = static_cast<std::int64_t>((n + 4095) / 4096);
-#pragma omp parallel for num_threads(threads) schedule(dynamic, 4)
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 4) reduction(+ : count)
         for (std::int64_t c = 0; c < chunks; ++c) {
             const std::size_t begin = static_cast<std::size_t>(c) * 4096;
-            run_range(f, boxes, method, level, begin, std::min(n, begin + 4096), visible.data());
+            count += run_range(f, boxes, method, level, begin, std::min(n, begin + 4096),
+                               visible.data());
         }
     } else {
-        run_range(f, boxes, method, level, 0, n, visible.data());
+        count = run_range(f, boxes, method, level, 0, n, visible.data());
+    }
+    // Invalid boxes were stored as a point at the origin; they are kept regardless.
+    for (std::uint32_t i : boxes.invalid) {
+        count += visible[i] ? 0 : 1;
+        visible[i] = 1;
     }
     CullCounts counts;
     counts.tested = n;
-    for (std::uint32_t i : boxes.invalid) visible[i] = 1;
     counts.invalid = boxes.invalid.size();
-    for (std::size_t i = 0; i < n; ++i) counts.visible += visible[i];
-    counts.culled = n - counts.visible;
+    counts.visible = count;
+    counts.culled = n - count;
     return counts;
 }
 

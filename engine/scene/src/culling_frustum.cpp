@@ -27,6 +27,65 @@ bool parse_cull_method(std::string_view s, CullMethod& out) {
     return false;
 }
 
+namespace {
+
+// Projection interval of the frustum on `axis`; corners at infinity extend it.
+void frustum_interval(const Frustum& f, glm::dvec3 axis, double& lo, double& hi) {
+    lo = std::numeric_limits<double>::infinity();
+    hi = -lo;
+    for (const glm::vec4& c : f.corners) {
+        const double d = glm::dot(glm::dvec3(c), axis);
+        if (c.w == 0.0f) {
+            if (d > 1e-12) hi = std::numeric_limits<double>::infinity();
+            if (d < -1e-12) lo = -std::numeric_limits<double>::infinity();
+        } else {
+            lo = std::min(lo, d);
+            hi = std::max(hi, d);
+        }
+    }
+}
+
+// The axes that can separate a world AABB from the frustum besides the frustum's
+// own planes: the 3 box face normals and the crosses of the box edge directions
+// with the frustum edge directions (4 lateral edges, 2 near-rectangle sides; the
+// far rectangle's sides are parallel to the near one's).
+void build_separating_axes(Frustum& f) {
+    glm::dvec3 edges[6];
+    for (int c = 0; c < 4; ++c) {
+        const glm::vec4 a = f.corners[static_cast<std::size_t>(c)],
+                        b = f.corners[static_cast<std::size_t>(c + 4)];
+        edges[c] = b.w == 0.0f ? glm::dvec3(b)
+                               : (a.w == 0.0f ? glm::dvec3(a) : glm::dvec3(b) - glm::dvec3(a));
+    }
+    const bool first_finite =
+        f.corners[0].w != 0.0f && f.corners[1].w != 0.0f && f.corners[2].w != 0.0f;
+    const std::size_t base =
+        first_finite ? 0 : 4; // reverse-Z infinite: corners 0..3 are at infinity
+    edges[4] = glm::dvec3(f.corners[base + 1]) - glm::dvec3(f.corners[base]);
+    edges[5] = glm::dvec3(f.corners[base + 2]) - glm::dvec3(f.corners[base]);
+    auto add = [&](glm::dvec3 axis) {
+        const double len = glm::length(axis);
+        if (!(len > 1e-9)) return; // parallel edges give no axis
+        axis /= len;
+        const std::uint32_t k = f.sat_count++;
+        f.sat_axes[k] = axis;
+        frustum_interval(f, axis, f.sat_lo[k], f.sat_hi[k]);
+    };
+    for (int a = 0; a < 3; ++a) {
+        glm::dvec3 axis(0.0);
+        axis[a] = 1.0;
+        add(axis);
+    }
+    for (const glm::dvec3& e : edges)
+        for (int a = 0; a < 3; ++a) {
+            glm::dvec3 axis(0.0);
+            axis[a] = 1.0;
+            add(glm::cross(axis, e));
+        }
+}
+
+} // namespace
+
 Frustum frustum_from_view_projection(const glm::mat4& m) {
     Frustum f;
     // Rows of the matrix (glm is column-major: m[col][row]).
@@ -58,6 +117,7 @@ Frustum frustum_from_view_projection(const glm::mat4& m) {
             p /= p.w;
         f.corners[static_cast<std::size_t>(c)] = glm::vec4(p);
     }
+    if (!f.empty) build_separating_axes(f);
     return f;
 }
 
@@ -74,90 +134,45 @@ bool sphere_visible(const Frustum& f, const Aabb& box) {
     return true;
 }
 
-bool pvertex_visible(const Frustum& f, const Aabb& box) {
-    if (f.empty) return false;
-    for (std::uint32_t i = 0; i < f.plane_count; ++i) {
-        const Plane& p = f.planes[i];
-        const glm::vec3 v{p.normal.x >= 0 ? box.max.x : box.min.x,
-                          p.normal.y >= 0 ? box.max.y : box.min.y,
-                          p.normal.z >= 0 ? box.max.z : box.min.z};
-        if (p.distance(v) < 0.0f) return false;
-    }
-    return true;
-}
-
 namespace {
 
-// Projection interval of the frustum on `axis`; corners at infinity extend it.
-void frustum_interval(const Frustum& f, glm::dvec3 axis, double& lo, double& hi) {
-    lo = std::numeric_limits<double>::infinity();
-    hi = -lo;
-    for (const glm::vec4& c : f.corners) {
-        const double d = glm::dot(glm::dvec3(c), axis);
-        if (c.w == 0.0f) {
-            if (d > 1e-12) hi = std::numeric_limits<double>::infinity();
-            if (d < -1e-12) lo = -std::numeric_limits<double>::infinity();
-        } else {
-            lo = std::min(lo, d);
-            hi = std::max(hi, d);
-        }
-    }
+// The box corner farthest along the plane normal (p-vertex), or against it (n-vertex).
+glm::vec3 p_vertex(const Plane& p, const Aabb& b) {
+    return {p.normal.x >= 0 ? b.max.x : b.min.x, p.normal.y >= 0 ? b.max.y : b.min.y,
+            p.normal.z >= 0 ? b.max.z : b.min.z};
 }
-
-void box_interval(const Aabb& b, glm::dvec3 axis, double& lo, double& hi) {
-    const glm::dvec3 c = glm::dvec3(b.center()), e = 0.5 * glm::dvec3(b.extent());
-    const double r = std::abs(axis.x) * e.x + std::abs(axis.y) * e.y + std::abs(axis.z) * e.z;
-    const double m = glm::dot(c, axis);
-    lo = m - r;
-    hi = m + r;
-}
-
-bool separated_on(const Frustum& f, const Aabb& b, glm::dvec3 axis) {
-    const double len = glm::length(axis);
-    if (len < 1e-9) return false; // parallel edges: no axis
-    axis /= len;
-    double flo, fhi, blo, bhi;
-    frustum_interval(f, axis, flo, fhi);
-    box_interval(b, axis, blo, bhi);
-    return bhi < flo || blo > fhi;
+glm::vec3 n_vertex(const Plane& p, const Aabb& b) {
+    return {p.normal.x >= 0 ? b.min.x : b.max.x, p.normal.y >= 0 ? b.min.y : b.max.y,
+            p.normal.z >= 0 ? b.min.z : b.max.z};
 }
 
 } // namespace
 
+bool pvertex_visible(const Frustum& f, const Aabb& box) {
+    if (f.empty) return false;
+    for (std::uint32_t i = 0; i < f.plane_count; ++i)
+        if (f.planes[i].distance(p_vertex(f.planes[i], box)) < 0.0f) return false;
+    return true;
+}
+
 bool exact_visible(const Frustum& f, const Aabb& box) {
-    if (!pvertex_visible(f, box)) return false; // frustum face normals: the cheap axes
-    // Box face normals.
-    for (int a = 0; a < 3; ++a) {
-        glm::dvec3 axis(0.0);
-        axis[a] = 1.0;
-        if (separated_on(f, box, axis)) return false;
+    if (f.empty) return false;
+    // Frustum planes: reject on any (the p-vertex test), and accept at once when
+    // the box's n-vertex is inside every plane (the box lies wholly inside).
+    bool wholly_inside = true;
+    for (std::uint32_t i = 0; i < f.plane_count; ++i) {
+        const Plane& p = f.planes[i];
+        if (p.distance(p_vertex(p, box)) < 0.0f) return false;
+        wholly_inside &= p.distance(n_vertex(p, box)) >= 0.0f;
     }
-    // Edge x edge axes. Frustum edge directions: the 4 lateral edges (near corner to
-    // far corner, or the direction at infinity) and the near rectangle's 2 sides
-    // (the far rectangle's sides are parallel to them).
-    glm::dvec3 edges[6];
-    for (int c = 0; c < 4; ++c) {
-        const glm::vec4 a = f.corners[static_cast<std::size_t>(c)],
-                        b = f.corners[static_cast<std::size_t>(c + 4)];
-        const glm::dvec3 pa = glm::dvec3(a), pb = glm::dvec3(b);
-        edges[c] = b.w == 0.0f ? pb : (a.w == 0.0f ? -pa : pb - pa);
+    if (wholly_inside) return true;
+    const glm::dvec3 c = glm::dvec3(box.center()), e = 0.5 * glm::dvec3(box.extent());
+    for (std::uint32_t k = 0; k < f.sat_count; ++k) {
+        const glm::dvec3& axis = f.sat_axes[k];
+        const double r = std::abs(axis.x) * e.x + std::abs(axis.y) * e.y + std::abs(axis.z) * e.z;
+        const double m = glm::dot(c, axis);
+        if (m + r < f.sat_lo[k] || m - r > f.sat_hi[k]) return false;
     }
-    const glm::vec4 c0 = f.corners[0], c1 = f.corners[1], c2 = f.corners[2];
-    const bool near_finite = c0.w != 0.0f && c1.w != 0.0f && c2.w != 0.0f;
-    const glm::vec4 d0 = f.corners[4], d1 = f.corners[5], d2 = f.corners[6];
-    if (near_finite) {
-        edges[4] = glm::dvec3(c1) - glm::dvec3(c0);
-        edges[5] = glm::dvec3(c2) - glm::dvec3(c0);
-    } else { // reverse-Z infinite: corners 0..3 are the far ones; use 4..6
-        edges[4] = glm::dvec3(d1) - glm::dvec3(d0);
-        edges[5] = glm::dvec3(d2) - glm::dvec3(d0);
-    }
-    for (const glm::dvec3& e : edges)
-        for (int a = 0; a < 3; ++a) {
-            glm::dvec3 axis_dir(0.0);
-            axis_dir[a] = 1.0;
-            if (separated_on(f, box, glm::cross(axis_dir, e))) return false;
-        }
     return true;
 }
 

@@ -17,53 +17,86 @@ BoxesSoA instance_boxes(const Scene& scene) {
     return soa;
 }
 
-PassResult cull_pass(const Scene& scene, const BoxesSoA& boxes, const Frustum& frustum,
+CullInput prepare_cull_input(const Scene& scene) {
+    CullInput in;
+    in.boxes = instance_boxes(scene);
+    const std::size_t n = scene.instances.size();
+    in.group_of.resize(n);
+    in.transparent.resize(n);
+    // Dense group ids in (mesh, alpha mode, double sided) order, so that bucketing
+    // by id yields the renderer's sorted draw order.
+    std::vector<std::tuple<std::uint32_t, std::uint32_t, bool, std::uint32_t>> keyed(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const MeshInstance& inst = scene.instances[i];
+        const MaterialInstance& m = scene.materials[inst.material_id];
+        keyed[i] = {inst.mesh_id, static_cast<std::uint32_t>(m.alpha_mode), m.double_sided, i};
+        in.transparent[i] = m.alpha_mode == AlphaMode::Blend ? 1 : 0;
+    }
+    std::sort(keyed.begin(), keyed.end());
+    for (std::size_t k = 0; k < n; ++k) {
+        const auto& [mesh, alpha, two_sided, i] = keyed[k];
+        if (k == 0 || std::get<0>(keyed[k - 1]) != mesh || std::get<1>(keyed[k - 1]) != alpha ||
+            std::get<2>(keyed[k - 1]) != two_sided) {
+            in.group_keys.push_back(
+                DrawGroup{mesh, static_cast<AlphaMode>(alpha), two_sided, 0, 0});
+            in.group_triangles.push_back(scene.meshes[mesh].triangle_count());
+        }
+        in.group_of[i] = static_cast<std::uint32_t>(in.group_keys.size() - 1);
+    }
+    return in;
+}
+
+PassResult cull_pass(const Scene& scene, const CullInput& input, const Frustum& frustum,
                      glm::vec3 eye, const CullOptions& options, std::string pass_name) {
     PassResult r;
     const auto t0 = std::chrono::steady_clock::now();
+    const BoxesSoA& boxes = input.boxes;
     std::vector<std::uint8_t> visible(boxes.size());
     const CullCounts counts =
         cull_boxes(frustum, boxes, options.method, options.simd, visible, options.threads);
-    std::vector<float> depth;
+    // Counting sort of visible opaque instances by group id: linear time.
+    const std::size_t groups = input.group_keys.size();
+    std::vector<std::uint32_t> offset(groups + 1, 0);
     for (std::uint32_t i = 0; i < visible.size(); ++i) {
         if (!visible[i]) continue;
-        const MeshInstance& inst = scene.instances[i];
-        if (scene.materials[inst.material_id].alpha_mode == AlphaMode::Blend)
+        if (input.transparent[i])
             r.visible_transparent.push_back(i);
         else
-            r.visible_opaque.push_back(i);
+            ++offset[input.group_of[i] + 1];
     }
-    // Transparents back to front by distance from the eye to the box centre.
-    auto dist2 = [&](std::uint32_t i) {
-        const glm::vec3 d = scene.instances[i].world_bounds.center() - eye;
-        return glm::dot(d, d);
-    };
-    std::sort(r.visible_transparent.begin(), r.visible_transparent.end(),
-              [&](std::uint32_t a, std::uint32_t b) { return dist2(a) > dist2(b); });
-    // Opaque draw groups keyed by (mesh, alpha mode, double sided).
-    auto key = [&](std::uint32_t i) {
-        const MeshInstance& inst = scene.instances[i];
-        const MaterialInstance& m = scene.materials[inst.material_id];
-        return std::tuple<std::uint32_t, std::uint32_t, bool>(
-            inst.mesh_id, static_cast<std::uint32_t>(m.alpha_mode), m.double_sided);
-    };
-    r.draw_order = r.visible_opaque;
-    std::stable_sort(r.draw_order.begin(), r.draw_order.end(),
-                     [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+    for (std::size_t g = 0; g < groups; ++g) offset[g + 1] += offset[g];
+    r.draw_order.resize(offset[groups]);
+    std::vector<std::uint32_t> cursor(offset.begin(), offset.end() - 1);
+    for (std::uint32_t i = 0; i < visible.size(); ++i)
+        if (visible[i] && !input.transparent[i]) r.draw_order[cursor[input.group_of[i]]++] = i;
+    r.visible_opaque = r.draw_order;
     std::uint64_t triangles = 0;
-    for (std::uint32_t k = 0; k < r.draw_order.size(); ++k) {
-        const std::uint32_t i = r.draw_order[k];
-        triangles += scene.meshes[scene.instances[i].mesh_id].triangle_count();
-        if (k == 0 || key(r.draw_order[k - 1]) != key(i)) {
-            const auto [mesh, alpha, two_sided] = key(i);
-            r.groups.push_back(DrawGroup{mesh, static_cast<AlphaMode>(alpha), two_sided, k, 0});
-        }
-        ++r.groups.back().count;
+    for (std::size_t g = 0; g < groups; ++g) {
+        const std::uint32_t count = offset[g + 1] - offset[g];
+        if (count == 0) continue;
+        DrawGroup d = input.group_keys[g];
+        d.first = offset[g];
+        d.count = count;
+        r.groups.push_back(d);
+        triangles += std::uint64_t{count} * input.group_triangles[g];
     }
-    for (std::uint32_t i : r.visible_transparent) { // blended: one draw each, in sorted order
-        const auto [mesh, alpha, two_sided] = key(i);
-        r.groups.push_back(DrawGroup{mesh, static_cast<AlphaMode>(alpha), two_sided, i, 1});
-        triangles += scene.meshes[mesh].triangle_count();
+    // Transparents back to front by distance from the eye to the box centre; each
+    // is its own draw, in that order.
+    std::vector<std::pair<float, std::uint32_t>> by_depth;
+    by_depth.reserve(r.visible_transparent.size());
+    for (std::uint32_t i : r.visible_transparent) {
+        const glm::vec3 d = boxes.box(i).center() - eye;
+        by_depth.emplace_back(-glm::dot(d, d), i);
+    }
+    std::sort(by_depth.begin(), by_depth.end());
+    for (std::size_t k = 0; k < by_depth.size(); ++k) {
+        const std::uint32_t i = by_depth[k].second;
+        r.visible_transparent[k] = i;
+        DrawGroup d = input.group_keys[input.group_of[i]];
+        d.first = i;
+        d.count = 1;
+        r.groups.push_back(d);
+        triangles += input.group_triangles[input.group_of[i]];
     }
     CullStats& s = r.stats;
     s.cpu_ms =

@@ -16,6 +16,14 @@ SamplerDesc Scene::sampler_of(const TextureRecord& t) const {
     return SamplerDesc{}; // glTF: repeat wrapping, auto filtering
 }
 
+std::uint64_t Scene::node_primitive_pairs() const {
+    std::uint64_t pairs = 0;
+    for (std::uint32_t n : displayed_nodes)
+        if (nodes[n].mesh >= 0 && static_cast<std::size_t>(nodes[n].mesh) < mesh_primitives.size())
+            pairs += mesh_primitives[static_cast<std::size_t>(nodes[n].mesh)].size();
+    return pairs;
+}
+
 bool select_scene(Scene& scene, std::int32_t scene_index, std::string& error) {
     if (scene.scenes.empty()) {
         // Nothing to display (e.g. a file with no nodes): an empty flattening.
@@ -24,6 +32,7 @@ bool select_scene(Scene& scene, std::int32_t scene_index, std::string& error) {
         scene.placed_lights.clear();
         scene.placed_cameras.clear();
         scene.node_world.assign(scene.nodes.size(), glm::mat4(1.0f));
+        scene.displayed_nodes.clear();
         scene.bounds = Aabb::empty();
         return true;
     }
@@ -36,6 +45,7 @@ bool select_scene(Scene& scene, std::int32_t scene_index, std::string& error) {
     std::vector<PlacedLight> lights;
     std::vector<PlacedCamera> cameras;
     std::vector<glm::mat4> world(scene.nodes.size(), glm::mat4(1.0f));
+    std::vector<std::uint32_t> displayed;
     Aabb bounds;
 
     // Iterative DFS: hierarchies can be deep (VC) and the importer has already
@@ -49,6 +59,7 @@ bool select_scene(Scene& scene, std::int32_t scene_index, std::string& error) {
         stack.pop_back();
         const Node& node = scene.nodes[id];
         const glm::mat4& m = world[id];
+        displayed.push_back(id);
         if (!is_finite(m)) {
             error = "nodes[" + std::to_string(id) + "]: world transform is not finite";
             return false;
@@ -89,6 +100,7 @@ bool select_scene(Scene& scene, std::int32_t scene_index, std::string& error) {
     scene.placed_lights = std::move(lights);
     scene.placed_cameras = std::move(cameras);
     scene.node_world = std::move(world);
+    scene.displayed_nodes = std::move(displayed);
     scene.bounds = bounds;
     return true;
 }

@@ -32,6 +32,12 @@ struct Frustum {
     // corner at infinity (infinite far plane), xyz is then its direction.
     std::array<glm::vec4, 8> corners{};
     bool empty = false; // the matrix admits no point (degenerate or NaN)
+    // Separating axes beyond the planes (3 box axes, box-edge x frustum-edge
+    // crosses) with the frustum's projection interval on each, computed once here
+    // so the exact test costs a few dot products per box.
+    std::array<glm::dvec3, 21> sat_axes{};
+    std::array<double, 21> sat_lo{}, sat_hi{};
+    std::uint32_t sat_count = 0;
 };
 
 // Gribb-Hartmann plane extraction for Vulkan clip space (0 <= z <= w). Works for
@@ -43,7 +49,7 @@ enum class CullMethod : std::uint8_t { Sphere, PVertex, Exact };
 std::string_view to_string(CullMethod m);
 bool parse_cull_method(std::string_view s, CullMethod& out);
 
-// Single-box reference tests (valid boxes only).
+// Single-box tests (valid boxes only).
 bool sphere_visible(const Frustum& f, const Aabb& box);
 bool pvertex_visible(const Frustum& f, const Aabb& box);
 // Separating-axis test between the box and the frustum polyhedron (handles an
@@ -78,13 +84,14 @@ CullCounts cull_boxes(const Frustum& f, const BoxesSoA& boxes, CullMethod method
                       std::span<std::uint8_t> visible, int threads = 1);
 
 namespace detail {
-// p-vertex batch kernels over [begin, end); exposed for the benchmark.
-void pvertex_scalar(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t end,
-                    std::uint8_t* out);
-void pvertex_avx2(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t end,
-                  std::uint8_t* out);
-void pvertex_avx512(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t end,
-                    std::uint8_t* out);
+// p-vertex batch kernels over [begin, end); return the number visible. Exposed
+// for the benchmark.
+std::size_t pvertex_scalar(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t end,
+                           std::uint8_t* out);
+std::size_t pvertex_avx2(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t end,
+                         std::uint8_t* out);
+std::size_t pvertex_avx512(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t end,
+                           std::uint8_t* out);
 } // namespace detail
 
 } // namespace sherpa

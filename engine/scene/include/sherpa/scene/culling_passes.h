@@ -29,6 +29,11 @@ struct CullStats {
     std::int64_t false_positives = -1;
     std::uint64_t draw_calls = 0, triangles = 0;
     double cpu_ms = 0.0;
+    // GPU-driven path: compute time from timestamps (-1: CPU path or no timestamps)
+    // and the objects whose visibility differs from the CPU path's (-1: not checked).
+    bool gpu = false;
+    double gpu_ms = -1.0;
+    std::int64_t cpu_gpu_differences = -1;
 };
 
 struct PassResult {
@@ -49,7 +54,19 @@ struct CullOptions {
 // World AABBs of the scene's instances, as the batch kernels want them.
 BoxesSoA instance_boxes(const Scene& scene);
 
-PassResult cull_pass(const Scene& scene, const BoxesSoA& boxes, const Frustum& frustum,
+// Per-scene data the passes reuse every frame: boxes, and each instance's draw
+// group (dense id of its (mesh, alpha mode, double sided) key) so that a pass
+// buckets visible instances in linear time instead of sorting them.
+struct CullInput {
+    BoxesSoA boxes;
+    std::vector<std::uint32_t> group_of;        // per instance
+    std::vector<std::uint8_t> transparent;      // per instance: alpha mode BLEND
+    std::vector<DrawGroup> group_keys;          // per group id: mesh, alpha, double sided
+    std::vector<std::uint32_t> group_triangles; // per group id: triangles per instance
+};
+CullInput prepare_cull_input(const Scene& scene);
+
+PassResult cull_pass(const Scene& scene, const CullInput& input, const Frustum& frustum,
                      glm::vec3 eye, const CullOptions& options, std::string pass_name);
 
 // Shadow cascades for a directional light: the camera frustum is split (practical

@@ -168,11 +168,15 @@ struct Scene {
     std::vector<PlacedLight> placed_lights;
     std::vector<PlacedCamera> placed_cameras;
     std::vector<glm::mat4> node_world; // identity for nodes outside the displayed scene
+    std::vector<std::uint32_t> displayed_nodes; // nodes of the displayed scene, depth-first
     Aabb bounds;
 
     std::vector<std::string> warnings;
     double parse_ms = 0.0, process_ms = 0.0;
 
+    // node x primitive pairs of the displayed scene, drawable or not (points,
+    // lines and empty primitives included), as the file states them.
+    std::uint64_t node_primitive_pairs() const;
     // Sampler for a texture, the glTF default when it names none.
     SamplerDesc sampler_of(const TextureRecord& t) const;
 };

@@ -1,0 +1,185 @@
+// sherpa-cli render SCENE -o OUT.png [--width W --height H] [--view NAME]
+//   [--overlay NAME ...] [--camera auto|gltf:N|eye=x,y,z:target=x,y,z[...]]
+//   [--frames N] [--report FILE.json] [--validation] [--no-shadows] [--no-prepass]
+//   [--glyph-length L] [--floor]
+#include "cli_common.h"
+#include "render_report.h"
+
+#include <sherpa/core/file_io.h>
+#include <sherpa/gpu/gpu_error.h>
+#include <sherpa/gpu/image_io.h>
+#include <sherpa/gpu/renderer.h>
+#include <sherpa/scene/scene_loader.h>
+
+#include <charconv>
+#include <chrono>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+namespace sherpa::cli {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: sherpa-cli render SCENE -o OUT.png [--width W --height H] [--view NAME]\n"
+    "         [--overlay NAME ...] [--camera auto|gltf:N|eye=x,y,z:target=x,y,z[:up=..][:fov=DEG]"
+    "[:aspect=A][:near=N][:far=F]]\n"
+    "         [--frames N] [--report FILE.json] [--validation] [--no-shadows] [--no-prepass]\n"
+    "         [--glyph-length L] [--floor]\n";
+
+int usage_error(const std::string& message) {
+    std::fprintf(stderr, "error: %s\n%s", message.c_str(), kUsage);
+    return kExitUsage;
+}
+
+template <typename T> bool parse_number(std::string_view s, T& out) {
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+    return ec == std::errc{} && end == s.data() + s.size();
+}
+
+std::string joined(const std::vector<std::string_view>& names) {
+    std::string out;
+    for (auto n : names) out += (out.empty() ? "" : ", ") + std::string(n);
+    return out;
+}
+
+} // namespace
+
+int run_render(Args args) {
+    std::string_view spec, out_path, report_path;
+    std::string camera_text = "auto";
+    gpu::RenderSettings settings;
+    std::uint32_t frames = 1;
+    bool validation = gpu::ContextOptions::default_validation();
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string_view a = args[i];
+        auto value = [&]() -> std::optional<std::string_view> {
+            if (i + 1 >= args.size()) return std::nullopt;
+            return args[++i];
+        };
+        if (a == "-o" || a == "--output") {
+            auto v = value();
+            if (!v) return usage_error("-o needs a file name");
+            out_path = *v;
+        } else if (a == "--width" || a == "--height" || a == "--frames") {
+            auto v = value();
+            std::uint32_t n = 0;
+            if (!v || !parse_number(*v, n) || n == 0 || n > 16384)
+                return usage_error(std::string(a) + " needs a positive integer (at most 16384)");
+            (a == "--width" ? settings.width : a == "--height" ? settings.height : frames) = n;
+        } else if (a == "--view") {
+            auto v = value();
+            auto view = v ? gpu::parse_debug_view(*v) : std::nullopt;
+            if (!view)
+                return usage_error("--view needs one of: " + joined(gpu::debug_view_names()));
+            settings.view = *view;
+        } else if (a == "--overlay") {
+            // One or more names; also accepted comma-separated or repeated.
+            bool any = false;
+            while (i + 1 < args.size() && !args[i + 1].empty() && args[i + 1][0] != '-') {
+                std::string_view list = args[i + 1];
+                bool all_known = true;
+                for (std::size_t at = 0; at <= list.size();) {
+                    const std::size_t comma = std::min(list.find(',', at), list.size());
+                    if (!gpu::parse_overlay(list.substr(at, comma - at))) all_known = false;
+                    at = comma + 1;
+                }
+                if (!all_known) break; // not an overlay name: the SCENE, probably
+                for (std::size_t at = 0; at <= list.size();) {
+                    const std::size_t comma = std::min(list.find(',', at), list.size());
+                    settings.overlays |= *gpu::parse_overlay(list.substr(at, comma - at));
+                    at = comma + 1;
+                }
+                any = true;
+                ++i;
+            }
+            if (!any)
+                return usage_error("--overlay needs one or more of: " +
+                                   joined(gpu::overlay_names()));
+        } else if (a == "--camera") {
+            auto v = value();
+            if (!v) return usage_error("--camera needs a spec");
+            std::string error;
+            if (!gpu::parse_camera_spec(*v, settings.camera, error)) return usage_error(error);
+            camera_text = std::string(*v);
+        } else if (a == "--report") {
+            auto v = value();
+            if (!v) return usage_error("--report needs a file name");
+            report_path = *v;
+        } else if (a == "--glyph-length") {
+            auto v = value();
+            if (!v || !parse_number(*v, settings.glyph_length) || !(settings.glyph_length > 0.0f))
+                return usage_error("--glyph-length needs a positive number");
+        } else if (a == "--validation") {
+            validation = true;
+        } else if (a == "--no-shadows") {
+            settings.shadows = false;
+        } else if (a == "--no-prepass") {
+            settings.depth_prepass = false;
+        } else if (a == "--floor") {
+            settings.floor_only = true;
+        } else if (!a.empty() && a[0] == '-') {
+            return usage_error("unknown option '" + std::string(a) + "'");
+        } else if (spec.empty()) {
+            spec = a;
+        } else {
+            return usage_error("more than one SCENE given");
+        }
+    }
+    if (spec.empty()) return usage_error("no SCENE given");
+    if (out_path.empty()) return usage_error("no output given (-o OUT.png)");
+
+    LoadResult loaded = load_scene(spec);
+    if (!loaded) {
+        std::fprintf(stderr, "error: %s\n", loaded.error.c_str());
+        return kExitLoadError;
+    }
+    try {
+        gpu::ContextOptions options;
+        options.validation = validation;
+        options.echo_validation = true;
+        gpu::Context context(options);
+        gpu::Renderer renderer(context);
+        renderer.load(*loaded.scene, gpu::needs_all_streams(settings)
+                                         ? gpu::StreamPolicy::AllPresent
+                                         : gpu::StreamPolicy::UsedByMaterials);
+        RenderRun run{std::string(spec), settings, camera_text, {}, {}};
+        std::vector<std::uint8_t> rgba;
+        for (std::uint32_t f = 0; f < frames; ++f) {
+            const auto t0 = std::chrono::steady_clock::now();
+            run.frames.push_back(renderer.render(settings, f + 1 == frames ? &rgba : nullptr));
+            run.cpu_frame_ms.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                    .count());
+        }
+        std::string error;
+        if (!gpu::write_png(std::string(out_path), settings.width, settings.height, rgba, error)) {
+            std::fprintf(stderr, "error: %s\n", error.c_str());
+            return kExitLoadError;
+        }
+        for (const auto& w : renderer.scene()->warnings())
+            std::fprintf(stderr, "warning: %s\n", w.c_str());
+        if (!report_path.empty()) {
+            const std::string text = render_report_json(renderer, run).dump(2) + "\n";
+            if (!write_file_atomic(
+                    std::string(report_path),
+                    std::span<const std::uint8_t>(
+                        reinterpret_cast<const std::uint8_t*>(text.data()), text.size()),
+                    error)) {
+                std::fprintf(stderr, "error: %s\n", error.c_str());
+                return kExitLoadError;
+            }
+        }
+        if (validation && context.validation().count() > 0) {
+            std::fprintf(stderr, "error: %zu Vulkan validation message(s)\n",
+                         context.validation().count());
+            return kExitLoadError;
+        }
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return kExitLoadError;
+    }
+    return kExitOk;
+}
+
+} // namespace sherpa::cli

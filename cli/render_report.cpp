@@ -1,0 +1,104 @@
+#include "render_report.h"
+
+#include <algorithm>
+#include <map>
+
+namespace sherpa::cli {
+
+namespace {
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::string device_type(VkPhysicalDeviceType t) {
+    switch (t) {
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+        return "integrated-gpu";
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+        return "discrete-gpu";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+        return "virtual-gpu";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+        return "cpu";
+    default:
+        return "other";
+    }
+}
+
+} // namespace
+
+nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run) {
+    using nlohmann::json;
+    const gpu::DeviceInfo& dev = renderer.context().info();
+    json j;
+    j["device"] = {{"name", dev.name},
+                   {"type", device_type(dev.type)},
+                   {"api_version", std::to_string(VK_API_VERSION_MAJOR(dev.api_version)) + "." +
+                                       std::to_string(VK_API_VERSION_MINOR(dev.api_version)) + "." +
+                                       std::to_string(VK_API_VERSION_PATCH(dev.api_version))},
+                   {"ray_tracing", dev.ray_tracing},
+                   {"ray_query", dev.ray_query}};
+    j["scene"] = run.scene;
+    j["width"] = run.settings.width;
+    j["height"] = run.settings.height;
+    j["view"] = std::string(gpu::to_string(run.settings.view));
+    j["camera"] = run.camera_text;
+    j["frames"] = run.frames.size();
+
+    const gpu::GpuScene* scene = renderer.scene();
+    if (scene) {
+        const gpu::GpuMemoryReport& m = scene->memory();
+        j["gpu_memory_bytes"] = {{"vertex_streams", m.vertex_streams},
+                                 {"indices", m.indices},
+                                 {"textures", m.textures},
+                                 {"materials", m.materials},
+                                 {"instances", m.instances},
+                                 {"total", m.total()},
+                                 {"render_targets", renderer.render_target_bytes()}};
+        j["vertex_layout"] = {
+            {"used_streams_bytes", m.vertex_streams},
+            {"unified_56_byte_bytes", m.unified_vertex_bytes},
+            {"saved_percent",
+             m.unified_vertex_bytes
+                 ? 100.0 * (1.0 - double(m.vertex_streams) / double(m.unified_vertex_bytes))
+                 : 0.0}};
+        j["triangles"] = scene->triangle_count();
+        j["draw_groups"] = scene->groups().size();
+        j["warnings"] = scene->warnings();
+    }
+
+    // Per pass: median over frames (the first frame also builds pipelines and
+    // shadow maps; medians keep the steady state).
+    std::map<std::string, std::vector<double>> per_pass;
+    std::vector<double> gpu_ms;
+    for (const gpu::FrameStats& f : run.frames) {
+        for (const gpu::PassTiming& p : f.passes) per_pass[p.name].push_back(p.ms);
+        gpu_ms.push_back(f.gpu_ms);
+    }
+    json passes = json::object();
+    for (auto& [name, v] : per_pass) passes[name] = median(v);
+    j["gpu_time_ms"] = {{"passes_median", passes},
+                        {"frame_median", median(gpu_ms)},
+                        {"first_frame", run.frames.empty() ? 0.0 : run.frames.front().gpu_ms}};
+    j["cpu_frame_ms_median"] = median(run.cpu_frame_ms);
+    if (!run.frames.empty()) {
+        const gpu::FrameStats& last = run.frames.back();
+        j["pipeline_statistics"] = {
+            {"input_assembly_primitives", last.input_primitives},
+            {"vertex_shader_invocations", last.vertex_invocations},
+            {"clipping_invocations", last.clipping_invocations},
+            {"clipping_primitives", last.clipping_primitives},
+            {"fragment_shader_invocations", last.fragment_invocations},
+            {"scope", "camera passes of the last frame (not shadow cascades)"}};
+        j["draw_calls"] = last.draw_calls;
+    }
+    if (renderer.context().validation_enabled())
+        j["validation_messages"] = renderer.context().validation().count();
+    return j;
+}
+
+} // namespace sherpa::cli

@@ -1,0 +1,22 @@
+# Speed against accuracy for CPU frustum culling on builtin:grid: ns per object
+# (log scale) for each method and size, labelled with its false positives against
+# the exact test. "read floor" is the memory-read floor measured in the same run;
+# "pass" is the whole camera pass (cull + draw-group build).
+set terminal pngcairo size 1100,600 font ",11"
+set output out
+set datafile separator ","
+set logscale y
+set ylabel "ns per object (one core, median of 21)"
+set title "Sherpa CPU culling: ns/object, labelled with false positives vs the exact test"
+set key top left
+set grid ytics
+set xrange [-0.6:7.6]
+set xtics ("read floor" 0, "sphere" 1, "p-vertex scalar" 2, "p-vertex AVX2" 3, "p-vertex AVX-512" 4, "exact (SAT)" 5, "pass: cull+groups" 6, "GPU p-vertex" 7)
+idx(s) = s eq "read floor" ? 0 : s eq "sphere" ? 1 : s eq "pvertex scalar" ? 2 : s eq "pvertex avx2" ? 3 : \
+         s eq "pvertex avx512" ? 4 : s eq "exact" ? 5 : s eq "pass (cull+groups)" ? 6 : s eq "gpu pvertex" ? 7 : NaN
+sizes = "10000 100000 1000000"
+off(i) = (i - 2) * 0.22
+plot for [i=1:3] csv using (stringcolumn(1) eq word(sizes,i) ? idx(stringcolumn(2)) + off(i) : NaN):3 \
+       with points pt 7 ps 1.6 lc i title sprintf("%s instances", word(sizes,i)), \
+     for [i=1:3] csv using (stringcolumn(1) eq word(sizes,i) && $4 >= 0 ? idx(stringcolumn(2)) + off(i) : NaN):3:(sprintf("%d", $4)) \
+       with labels offset 0,-1.1 font ",9" notitle

@@ -1,0 +1,46 @@
+#pragma once
+// Descriptor set 0 of every pipeline: the cascaded shadow map (binding 0) and a
+// bindless array of combined image samplers (binding 1). Slots are handed out
+// and given back by scenes; the default textures own slots 0..2 for the whole
+// lifetime of the table.
+#include <cstdint>
+#include <vector>
+
+#include <sherpa/gpu/resources.h>
+
+namespace sherpa::gpu {
+
+class BindlessTable {
+public:
+    static constexpr std::uint32_t kCapacity = 4096;
+
+    explicit BindlessTable(ResourceManager& resources);
+    ~BindlessTable();
+    BindlessTable(const BindlessTable&) = delete;
+    BindlessTable& operator=(const BindlessTable&) = delete;
+
+    VkDescriptorSetLayout layout() const { return layout_.get(); }
+    VkDescriptorSet set() const { return set_; }
+
+    // The image must be in SHADER_READ_ONLY_OPTIMAL whenever a draw may sample it.
+    std::uint32_t add(VkImageView view, VkSampler sampler);
+    void remove(std::uint32_t slot);
+    void set_shadow_map(VkImageView view, VkSampler compare_sampler);
+    std::uint32_t used_slots() const { return next_ - static_cast<std::uint32_t>(free_.size()); }
+
+private:
+    void write(std::uint32_t binding, std::uint32_t slot, VkImageView view, VkSampler sampler,
+               VkImageLayout layout);
+    void create_defaults();
+
+    ResourceManager& resources_;
+    UniqueDescriptorSetLayout layout_;
+    UniqueDescriptorPool pool_;
+    VkDescriptorSet set_ = VK_NULL_HANDLE;
+    std::uint32_t next_ = 0;
+    std::vector<std::uint32_t> free_;
+    ImageHandle defaults_[3];
+    SamplerHandle default_sampler_;
+};
+
+} // namespace sherpa::gpu

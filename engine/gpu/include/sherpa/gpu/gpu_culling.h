@@ -1,0 +1,101 @@
+#pragma once
+// GPU-driven culling of one mesh pass: a compute shader culls every pass object
+// and appends the visible ones to their indirect batch (instance count + compacted
+// instance-id array); the renderer then draws each batch with
+// vkCmdDrawIndexedIndirectCount. A check mode reads back the GPU's visible set so
+// it can be compared with the CPU path for the same method.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include <sherpa/gpu/commands.h>
+#include <sherpa/gpu/gpu_scene.h>
+#include <sherpa/gpu/resources.h>
+#include <sherpa/scene/culling.h>
+#include <sherpa/scene/mesh_pass.h>
+
+namespace sherpa::gpu {
+
+// Twins of shaders/include/cull_structs.glsl (scalar layout).
+struct GPUCullObject {
+    glm::vec3 min;
+    std::uint32_t batch;
+    glm::vec3 max;
+    std::uint32_t instance;
+};
+static_assert(sizeof(GPUCullObject) == 32);
+static_assert(offsetof(GPUCullObject, batch) == 12);
+static_assert(offsetof(GPUCullObject, max) == 16);
+static_assert(offsetof(GPUCullObject, instance) == 28);
+
+inline constexpr std::uint32_t kCullInvalidBit = 0x80000000u;
+inline constexpr std::uint32_t kCullMaxSatAxes = 21;
+
+struct GPUCullParams {
+    glm::vec4 planes[6];
+    glm::vec4 sat_axis[kCullMaxSatAxes];
+    glm::vec2 sat_range[kCullMaxSatAxes];
+    std::uint32_t plane_count, sat_count, method, object_count, empty;
+};
+static_assert(offsetof(GPUCullParams, sat_axis) == 96);
+static_assert(offsetof(GPUCullParams, sat_range) == 432);
+static_assert(offsetof(GPUCullParams, plane_count) == 600);
+static_assert(offsetof(GPUCullParams, object_count) == 612);
+static_assert(offsetof(GPUCullParams, empty) == 616);
+static_assert(sizeof(VkDrawIndexedIndirectCommand) == 20);
+
+GPUCullParams cull_params(const Frustum& frustum, CullMethod method, std::uint32_t object_count);
+
+// Results of one culling run, read back (check mode).
+struct GpuCullReadback {
+    std::vector<std::uint8_t> visible;          // per pass object, flat-batch order
+    std::vector<std::uint32_t> instance_counts; // per indirect batch
+    std::vector<std::uint32_t> instance_ids;    // compacted, valid within each batch's count
+    double gpu_ms = -1.0;                       // timestamped dispatch (-1: no timestamps)
+};
+
+class GpuCuller {
+public:
+    GpuCuller(Context& context, ResourceManager& resources);
+    ~GpuCuller();
+    GpuCuller(const GpuCuller&) = delete;
+    GpuCuller& operator=(const GpuCuller&) = delete;
+
+    // Builds the GPU arrays for `pass` (after MeshPass::update()). `bounds` are the
+    // scene's instance world boxes; `gpu_instance` maps a scene instance to the GPU
+    // instance index the draws read; `meshes` give each batch's index range.
+    void build(const MeshPass& pass, std::span<const Aabb> bounds,
+               std::span<const std::uint32_t> gpu_instance, std::span<const GpuMesh> meshes);
+
+    // Records: reset the indirect commands from their clear copy, write the frame's
+    // parameters, dispatch, and make the results visible to indirect draws, vertex
+    // shaders and transfers.
+    void record(VkCommandBuffer cmd, const Frustum& frustum, CullMethod method);
+
+    // One synchronous run with readback (tests, CLI, benchmarks).
+    GpuCullReadback run(const Frustum& frustum, CullMethod method);
+
+    std::uint32_t object_count() const { return objects_count_; }
+    std::uint32_t batch_count() const { return batch_count_; }
+    VkBuffer draws() const;
+    VkBuffer draw_counts() const; // one uint per batch: 1 (each batch is one draw)
+    VkDeviceAddress instance_ids() const;
+    // Scene instance of each pass object, flat-batch order.
+    const std::vector<std::uint32_t>& object_instances() const { return object_instance_; }
+
+private:
+    void release();
+    Context& context_;
+    ResourceManager& resources_;
+    UniquePipelineLayout layout_;
+    UniquePipeline pipeline_;
+    UniqueQueryPool timestamps_;
+    CommandRecorder recorder_;
+    BufferHandle objects_, params_, draws_, draws_clear_, counts_, ids_, visible_, readback_;
+    std::uint32_t objects_count_ = 0, batch_count_ = 0;
+    std::vector<std::uint32_t> object_instance_;
+};
+
+} // namespace sherpa::gpu

@@ -1,0 +1,134 @@
+#pragma once
+// C++ twins of the GPU-visible structures in shaders/include/{common,material}.glsl.
+// Every offset is pinned here; change both sides together.
+#include <cstddef>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+#include <vulkan/vulkan.h>
+
+#include <sherpa/scene/material.h>
+
+namespace sherpa::gpu {
+
+inline constexpr std::uint32_t kMaxLights = 16;
+inline constexpr std::uint32_t kMaxCascades = 4;
+inline constexpr std::uint32_t kNoCascade = 0xffffffffu;
+
+// Bindless slots registered before any scene texture.
+inline constexpr std::uint32_t kWhiteTexture = 0;
+inline constexpr std::uint32_t kFlatNormalTexture = 1;
+inline constexpr std::uint32_t kBlackTexture = 2;
+inline constexpr std::uint32_t kDefaultTextureCount = 3;
+
+struct GPULight {
+    glm::vec4 position_range;
+    glm::vec4 direction_type;
+    glm::vec4 color_intensity;
+    glm::vec4 cone;
+};
+static_assert(sizeof(GPULight) == 64);
+
+struct GPUFrameData {
+    glm::mat4 view;
+    glm::mat4 proj;
+    glm::mat4 view_proj;
+    glm::mat4 shadow_view_proj[kMaxCascades];
+    glm::vec4 camera_position;
+    glm::vec4 cascade_splits;
+    glm::vec4 sun_direction;
+    glm::vec4 sun_radiance;
+    glm::vec4 ambient;
+    glm::uvec4 params; // x view, y light count, z cascade count, w shadow taps (1 or 4)
+    glm::vec4 overlay;
+    GPULight lights[kMaxLights];
+};
+static_assert(offsetof(GPUFrameData, proj) == 64);
+static_assert(offsetof(GPUFrameData, view_proj) == 128);
+static_assert(offsetof(GPUFrameData, shadow_view_proj) == 192);
+static_assert(offsetof(GPUFrameData, camera_position) == 448);
+static_assert(offsetof(GPUFrameData, cascade_splits) == 464);
+static_assert(offsetof(GPUFrameData, sun_direction) == 480);
+static_assert(offsetof(GPUFrameData, sun_radiance) == 496);
+static_assert(offsetof(GPUFrameData, ambient) == 512);
+static_assert(offsetof(GPUFrameData, params) == 528);
+static_assert(offsetof(GPUFrameData, overlay) == 544);
+static_assert(offsetof(GPUFrameData, lights) == 560);
+static_assert(sizeof(GPUFrameData) == 560 + 64 * kMaxLights);
+
+// 128 bytes: model matrix and the CPU-computed normal matrix
+// transpose(inverse(mat3(model))) as three vec4 columns (layout-independent).
+struct GPUInstanceData {
+    glm::mat4 model;
+    glm::vec4 normal_matrix[3];
+    std::uint32_t material;
+    std::uint32_t mesh;
+    std::uint32_t flags;
+    std::uint32_t pad;
+};
+static_assert(sizeof(GPUInstanceData) == 128);
+static_assert(offsetof(GPUInstanceData, normal_matrix) == 64);
+static_assert(offsetof(GPUInstanceData, material) == 112);
+static_assert(offsetof(GPUInstanceData, mesh) == 116);
+static_assert(offsetof(GPUInstanceData, flags) == 120);
+
+enum TextureSlotIndex : std::uint32_t {
+    kSlotBaseColor = 0,
+    kSlotMetallicRoughness = 1,
+    kSlotNormal = 2,
+    kSlotOcclusion = 3,
+    kSlotEmissive = 4,
+    kSlotCount = 5,
+};
+
+struct GPUTextureTransform {
+    glm::vec4 row0; // w: TEXCOORD set
+    glm::vec4 row1;
+};
+struct GPUMaterialExtra {
+    GPUTextureTransform uv[kSlotCount];
+    std::uint32_t unlit;
+    std::uint32_t pad0, pad1, pad2;
+};
+static_assert(sizeof(GPUTextureTransform) == 32);
+static_assert(offsetof(GPUMaterialExtra, unlit) == 160);
+static_assert(sizeof(GPUMaterialExtra) == 176);
+
+// mesh_flags bits (common.glsl).
+inline constexpr std::uint32_t kTangentProvenanceShift = 8;
+inline constexpr std::uint32_t kNormalProvenanceShift = 10;
+inline constexpr std::uint32_t kGlyphKindShift = 16;
+
+struct GPUPushConstants {
+    VkDeviceAddress frame;
+    VkDeviceAddress instances;
+    VkDeviceAddress materials;
+    VkDeviceAddress material_extras;
+    VkDeviceAddress positions;
+    VkDeviceAddress normals;
+    VkDeviceAddress tangents;
+    VkDeviceAddress uv0;
+    VkDeviceAddress uv1;
+    VkDeviceAddress colors;
+    VkDeviceAddress lines;
+    std::uint32_t material_id;
+    std::uint32_t mesh_flags;
+    std::uint32_t cascade;
+    float glyph_length;
+    glm::vec4 color;
+};
+static_assert(offsetof(GPUPushConstants, lines) == 80);
+static_assert(offsetof(GPUPushConstants, material_id) == 88);
+static_assert(offsetof(GPUPushConstants, cascade) == 96);
+static_assert(offsetof(GPUPushConstants, color) == 104);
+static_assert(sizeof(GPUPushConstants) == 120);
+static_assert(sizeof(GPUPushConstants) <= 128,
+              "Vulkan guarantees only 128 bytes of push constants");
+
+struct GPULineVertex {
+    glm::vec4 position;
+    glm::vec4 color;
+};
+static_assert(sizeof(GPULineVertex) == 32);
+
+} // namespace sherpa::gpu

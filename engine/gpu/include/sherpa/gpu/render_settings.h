@@ -1,0 +1,73 @@
+#pragma once
+// What one rendered frame shows: size, debug view, overlays, camera, passes.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include <sherpa/gpu/camera.h>
+
+namespace sherpa::gpu {
+
+// Values equal the VIEW_* constants in shaders/include/common.glsl.
+enum class DebugView : std::uint32_t {
+    Lit = 0,
+    Normal = 1,    // interpolated vertex normal (world)
+    Tangent = 2,   // world tangent xyz
+    Bitangent = 3, // cross(N, T) * w
+    TangentW = 4,  // handedness: green +1, red -1, yellow 0
+    Uv0 = 5,
+    Uv1 = 6,
+    Uv0Checker = 7,
+    Uv1Checker = 8,
+    BaseColor = 9,
+    Metallic = 10,
+    Roughness = 11,
+    Occlusion = 12,
+    Emissive = 13,
+    GeometricVsShading = 14, // angle between face normal and normal-mapped shading normal
+    Provenance = 15,         // tangent provenance: green authored, yellow generated, red defaulted
+    ShadingNormal = 16,      // normal after normal mapping (world)
+};
+
+enum Overlay : std::uint32_t {
+    kOverlayWireframe = 1u << 0,
+    kOverlayNormals = 1u << 1,
+    kOverlayTangents = 1u << 2,
+    kOverlayBitangents = 1u << 3,
+    kOverlayBounds = 1u << 4,
+};
+
+std::string_view to_string(DebugView v);
+std::optional<DebugView> parse_debug_view(std::string_view name);
+std::vector<std::string_view> debug_view_names();
+std::optional<Overlay> parse_overlay(std::string_view name);
+std::vector<std::string_view> overlay_names();
+
+struct RenderSettings {
+    std::uint32_t width = 1280, height = 720;
+    DebugView view = DebugView::Lit;
+    std::uint32_t overlays = 0; // Overlay bits
+    float glyph_length = 0.0f;  // world units; 0: 2% of the scene's bounding diagonal
+    CameraSpec camera;
+    bool shadows = true;
+    std::uint32_t cascades = 3;
+    bool depth_prepass = true;
+    // Benchmark floor: the same draws with positions only and a constant colour.
+    bool floor_only = false;
+    glm::vec4 clear_color{0.18f, 0.19f, 0.21f, 1.0f}; // linear
+    // Scene lights only; when the scene has no directional light a default sun
+    // (and its shadows) is added.
+    glm::vec3 sun_direction{-0.4f, -1.0f, -0.55f}; // direction light travels
+    float sun_intensity = 3.0f;
+    float ambient = 0.25f;
+};
+
+// Does this view/overlay need streams the materials do not use (so the scene must
+// be uploaded with StreamPolicy::AllPresent)?
+bool needs_all_streams(const RenderSettings& settings);
+
+} // namespace sherpa::gpu

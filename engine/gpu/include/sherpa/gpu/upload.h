@@ -1,0 +1,42 @@
+#pragma once
+// Staging uploads into device-local memory. Copies are gathered, then one staging
+// buffer and one command buffer carry them all; submit_and_wait() returns when the
+// data is on the GPU and frees the staging memory.
+#include <cstdint>
+#include <vector>
+
+#include <sherpa/gpu/commands.h>
+#include <sherpa/gpu/resources.h>
+
+namespace sherpa::gpu {
+
+class UploadBatch {
+public:
+    explicit UploadBatch(ResourceManager& resources) : resources_(resources) {}
+
+    void upload_buffer(BufferHandle dst, VkDeviceSize dst_offset, const void* data,
+                       VkDeviceSize size);
+    // Level 0 from tightly packed texels; the other levels are made with linear
+    // blits. The image ends in SHADER_READ_ONLY_OPTIMAL for fragment shaders.
+    void upload_image(ImageHandle dst, const void* texels, VkDeviceSize size);
+    VkDeviceSize staged_bytes() const { return static_cast<VkDeviceSize>(staging_.size()); }
+    void submit_and_wait();
+
+private:
+    struct BufferCopy {
+        BufferHandle dst;
+        VkDeviceSize dst_offset, src_offset, size;
+    };
+    struct ImageCopy {
+        ImageHandle dst;
+        VkDeviceSize src_offset;
+    };
+    VkDeviceSize stage(const void* data, VkDeviceSize size);
+
+    ResourceManager& resources_;
+    std::vector<std::uint8_t> staging_;
+    std::vector<BufferCopy> buffer_copies_;
+    std::vector<ImageCopy> image_copies_;
+};
+
+} // namespace sherpa::gpu

@@ -1,0 +1,126 @@
+#include <sherpa/gpu/bindless.h>
+#include <sherpa/gpu/gpu_error.h>
+#include <sherpa/gpu/gpu_structs.h>
+#include <sherpa/gpu/upload.h>
+
+#include <array>
+
+namespace sherpa::gpu {
+
+BindlessTable::BindlessTable(ResourceManager& resources) : resources_(resources) {
+    VkDevice device = resources.context().device();
+    std::array<VkDescriptorSetLayoutBinding, 2> bindings{};
+    bindings[0] = {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT,
+                   nullptr};
+    bindings[1] = {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCapacity,
+                   VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+    // Slots are written while earlier frames that do not read them are in flight.
+    std::array<VkDescriptorBindingFlags, 2> flags{
+        VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT |
+            VK_DESCRIPTOR_BINDING_UPDATE_UNUSED_WHILE_PENDING_BIT,
+        VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT |
+            VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT |
+            VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT |
+            VK_DESCRIPTOR_BINDING_UPDATE_UNUSED_WHILE_PENDING_BIT};
+    auto flags_info = vk_init<VkDescriptorSetLayoutBindingFlagsCreateInfo>(
+        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_BINDING_FLAGS_CREATE_INFO);
+    flags_info.bindingCount = 2;
+    flags_info.pBindingFlags = flags.data();
+    auto lci = vk_init<VkDescriptorSetLayoutCreateInfo>(
+        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+    lci.pNext = &flags_info;
+    lci.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT;
+    lci.bindingCount = 2;
+    lci.pBindings = bindings.data();
+    VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+    vk_check(vkCreateDescriptorSetLayout(device, &lci, nullptr, &layout),
+             "vkCreateDescriptorSetLayout");
+    layout_ = UniqueDescriptorSetLayout(device, layout);
+
+    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCapacity + 1};
+    auto pci = vk_init<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
+    pci.flags = VK_DESCRIPTOR_POOL_CREATE_UPDATE_AFTER_BIND_BIT;
+    pci.maxSets = 1;
+    pci.poolSizeCount = 1;
+    pci.pPoolSizes = &size;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    vk_check(vkCreateDescriptorPool(device, &pci, nullptr, &pool), "vkCreateDescriptorPool");
+    pool_ = UniqueDescriptorPool(device, pool);
+
+    const std::uint32_t count = kCapacity;
+    auto vci = vk_init<VkDescriptorSetVariableDescriptorCountAllocateInfo>(
+        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_VARIABLE_DESCRIPTOR_COUNT_ALLOCATE_INFO);
+    vci.descriptorSetCount = 1;
+    vci.pDescriptorCounts = &count;
+    auto ai = vk_init<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
+    ai.pNext = &vci;
+    ai.descriptorPool = pool;
+    ai.descriptorSetCount = 1;
+    ai.pSetLayouts = &layout;
+    vk_check(vkAllocateDescriptorSets(device, &ai, &set_), "vkAllocateDescriptorSets");
+    create_defaults();
+}
+
+BindlessTable::~BindlessTable() {
+    for (ImageHandle& h : defaults_) resources_.destroy(h);
+    resources_.destroy(default_sampler_);
+}
+
+void BindlessTable::create_defaults() {
+    auto si = vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+    si.magFilter = si.minFilter = VK_FILTER_NEAREST;
+    si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    default_sampler_ = resources_.create_sampler(si);
+    // Slot order is fixed: kWhiteTexture, kFlatNormalTexture, kBlackTexture.
+    const std::uint8_t texels[3][4] = {{255, 255, 255, 255}, {128, 128, 255, 255}, {0, 0, 0, 255}};
+    const char* names[3] = {"default white", "default flat normal", "default black"};
+    UploadBatch batch(resources_);
+    for (int i = 0; i < 3; ++i) {
+        ImageDesc d;
+        d.format = VK_FORMAT_R8G8B8A8_UNORM;
+        d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+        d.name = names[i];
+        defaults_[i] = resources_.create_image(d);
+        batch.upload_image(defaults_[i], texels[i], 4);
+    }
+    batch.submit_and_wait();
+    for (int i = 0; i < 3; ++i)
+        add(resources_.get(defaults_[i]).view.get(), resources_.get(default_sampler_));
+}
+
+void BindlessTable::write(std::uint32_t binding, std::uint32_t slot, VkImageView view,
+                          VkSampler sampler, VkImageLayout layout) {
+    VkDescriptorImageInfo ii{sampler, view, layout};
+    auto w = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+    w.dstSet = set_;
+    w.dstBinding = binding;
+    w.dstArrayElement = slot;
+    w.descriptorCount = 1;
+    w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    w.pImageInfo = &ii;
+    vkUpdateDescriptorSets(resources_.context().device(), 1, &w, 0, nullptr);
+}
+
+std::uint32_t BindlessTable::add(VkImageView view, VkSampler sampler) {
+    std::uint32_t slot;
+    if (!free_.empty()) {
+        slot = free_.back();
+        free_.pop_back();
+    } else {
+        if (next_ >= kCapacity) throw GpuError("bindless texture table is full");
+        slot = next_++;
+    }
+    write(1, slot, view, sampler, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    return slot;
+}
+
+void BindlessTable::remove(std::uint32_t slot) {
+    // The descriptor stays as it is (partially bound): nothing indexes it any more.
+    if (slot >= kDefaultTextureCount) free_.push_back(slot);
+}
+
+void BindlessTable::set_shadow_map(VkImageView view, VkSampler compare_sampler) {
+    write(0, 0, view, compare_sampler, VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+}
+
+} // namespace sherpa::gpu

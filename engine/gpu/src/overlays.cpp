@@ -1,0 +1,121 @@
+// Overlays drawn over the shaded image: wireframe, per-vertex normal / tangent /
+// bitangent glyphs (generated in the vertex shader from the mesh streams) and
+// instance world AABBs (CPU-built line list).
+#include "frame_slot.h"
+
+#include <sherpa/gpu/gpu_error.h>
+#include <sherpa/gpu/gpu_structs.h>
+
+#include <cstring>
+
+namespace sherpa::gpu {
+
+namespace {
+
+void append_box(std::vector<GPULineVertex>& out, const Aabb& b, glm::vec4 color) {
+    if (!b.valid()) return;
+    auto corner = [&](int i) {
+        return glm::vec4((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
+                         (i & 4) ? b.max.z : b.min.z, 1.0f);
+    };
+    // The 12 edges join corners that differ in exactly one coordinate bit.
+    for (int i = 0; i < 8; ++i)
+        for (int bit = 1; bit < 8; bit <<= 1)
+            if (!(i & bit)) {
+                out.push_back({corner(i), color});
+                out.push_back({corner(i | bit), color});
+            }
+}
+
+} // namespace
+
+void Renderer::draw_overlays(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
+                             const RenderSettings& s) {
+    if (!scene_ || s.overlays == 0) return;
+    const VkPipelineLayout layout = p.layout();
+    const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    // Overlays sit on top of the surface they describe: test, never write depth.
+    vkCmdSetDepthCompareOp(cmd, VK_COMPARE_OP_GREATER_OR_EQUAL);
+    vkCmdSetDepthWriteEnable(cmd, VK_FALSE);
+    vkCmdSetCullMode(cmd, VK_CULL_MODE_NONE);
+    vkCmdSetFrontFace(cmd, VK_FRONT_FACE_COUNTER_CLOCKWISE);
+
+    auto for_each_group = [&](auto&& fn) {
+        for (const DrawGroup& g : scene_->groups()) {
+            GPUPushConstants pc = slot.push_base;
+            const GpuMesh& m = scene_->meshes()[g.mesh];
+            pc.positions = m.stream[std::size_t(VertexAttribute::Position)];
+            pc.normals = m.stream[std::size_t(VertexAttribute::Normal)];
+            pc.tangents = m.stream[std::size_t(VertexAttribute::Tangent)];
+            pc.uv0 = m.stream[std::size_t(VertexAttribute::TexCoord0)];
+            pc.uv1 = m.stream[std::size_t(VertexAttribute::TexCoord1)];
+            pc.material_id = g.material;
+            pc.mesh_flags = m.flags;
+            pc.cascade = kNoCascade;
+            fn(g, m, pc);
+        }
+    };
+
+    if (s.overlays & kOverlayWireframe) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::Wireframe));
+        // Reverse-Z: a positive bias pulls the lines towards the camera, off the fill.
+        vkCmdSetDepthBiasEnable(cmd, VK_TRUE);
+        vkCmdSetDepthBias(cmd, 1.0f, 0.0f, 1.0f);
+        for_each_group([&](const DrawGroup& g, const GpuMesh& m, GPUPushConstants& pc) {
+            pc.color = glm::vec4(0.25f, 0.85f, 1.0f, 1.0f);
+            vkCmdPushConstants(cmd, layout, stages, 0, sizeof(pc), &pc);
+            vkCmdDrawIndexed(cmd, m.index_count, g.instance_count, m.first_index, 0,
+                             g.first_instance);
+            ++slot.draw_calls;
+        });
+    }
+    vkCmdSetDepthBiasEnable(cmd, VK_FALSE);
+
+    const std::pair<Overlay, glm::vec4> glyphs[] = {
+        {kOverlayNormals, {0.2f, 0.45f, 1.0f, 1.0f}},
+        {kOverlayTangents, {1.0f, 0.2f, 0.2f, 1.0f}},
+        {kOverlayBitangents, {0.2f, 1.0f, 0.3f, 1.0f}},
+    };
+    for (std::uint32_t kind = 0; kind < 3; ++kind) {
+        if (!(s.overlays & glyphs[kind].first)) continue;
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::Glyphs));
+        for_each_group([&](const DrawGroup& g, const GpuMesh& m, GPUPushConstants& pc) {
+            pc.mesh_flags |= kind << kGlyphKindShift;
+            pc.color = glyphs[kind].second;
+            pc.glyph_length = s.glyph_length > 0.0f
+                                  ? s.glyph_length
+                                  : 0.02f * (lighting_->info.bounds.valid()
+                                                 ? glm::length(lighting_->info.bounds.extent())
+                                                 : 1.0f);
+            vkCmdPushConstants(cmd, layout, stages, 0, sizeof(pc), &pc);
+            vkCmdDraw(cmd, 2 * m.vertex_count, g.instance_count, 0, g.first_instance);
+            ++slot.draw_calls;
+        });
+    }
+
+    if (s.overlays & kOverlayBounds) {
+        std::vector<GPULineVertex> lines;
+        for (const Aabb& b : scene_->instance_bounds())
+            append_box(lines, b, glm::vec4(1.0f, 0.85f, 0.1f, 1.0f));
+        if (lines.empty()) return;
+        const VkDeviceSize bytes = lines.size() * sizeof(GPULineVertex);
+        if (bytes > slot.lines_capacity) {
+            resources_->destroy(slot.lines);
+            slot.lines_capacity = std::max<VkDeviceSize>(bytes, 4096);
+            slot.lines = resources_->create_buffer(
+                {slot.lines_capacity,
+                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                 MemoryUsage::Upload, "overlay lines"});
+        }
+        const Buffer& buf = resources_->get(slot.lines);
+        std::memcpy(buf.mapped, lines.data(), bytes);
+        GPUPushConstants pc = slot.push_base;
+        pc.lines = buf.address;
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::BoxLines));
+        vkCmdPushConstants(cmd, layout, stages, 0, sizeof(pc), &pc);
+        vkCmdDraw(cmd, static_cast<std::uint32_t>(lines.size()), 1, 0, 0);
+        ++slot.draw_calls;
+    }
+}
+
+} // namespace sherpa::gpu

@@ -1,0 +1,92 @@
+#include <sherpa/gpu/shadow_cascades.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sherpa::gpu {
+
+namespace {
+
+glm::vec3 corner(const Aabb& b, int i) {
+    return {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
+}
+
+} // namespace
+
+CascadeSetup fit_cascades(const CameraView& camera, const Aabb& scene_bounds, glm::vec3 light_dir,
+                          std::uint32_t cascades, std::uint32_t resolution) {
+    CascadeSetup out;
+    if (!scene_bounds.valid() || cascades == 0) return out;
+    cascades = std::min(cascades, kMaxCascades);
+
+    // The depth range worth shadowing: where the scene is, seen from the camera.
+    float scene_near = 1e30f, scene_far = 0.0f;
+    for (int i = 0; i < 8; ++i) {
+        const float d = -(camera.view * glm::vec4(corner(scene_bounds, i), 1.0f)).z;
+        scene_near = std::min(scene_near, d);
+        scene_far = std::max(scene_far, d);
+    }
+    const float n = std::max(camera.near_plane, scene_near);
+    float f = camera.far_plane > 0.0f ? std::min(camera.far_plane, scene_far) : scene_far;
+    if (f <= n * 1.001f) f = n * 1.001f + 1e-3f;
+
+    // One light view for every cascade keeps texel snapping consistent.
+    const glm::vec3 center = scene_bounds.center();
+    const float scene_radius = std::max(0.5f * glm::length(scene_bounds.extent()), 1e-4f);
+    const glm::vec3 up = std::abs(light_dir.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+    const glm::mat4 light_view =
+        glm::lookAtRH(center - light_dir * scene_radius * 2.0f, center, up);
+    float z_lo = 1e30f, z_hi = -1e30f; // light-view z of the scene, for the depth range
+    for (int i = 0; i < 8; ++i) {
+        const float z = (light_view * glm::vec4(corner(scene_bounds, i), 1.0f)).z;
+        z_lo = std::min(z_lo, z);
+        z_hi = std::max(z_hi, z);
+    }
+    const float depth_margin = 0.01f * scene_radius;
+
+    const glm::mat4 inv_view = glm::inverse(camera.view);
+    const float tan_y = std::tan(0.5f * camera.fov_y);
+    float slice_near = n;
+    for (std::uint32_t c = 0; c < cascades; ++c) {
+        // Practical split scheme: mostly logarithmic, partly uniform.
+        const float s = float(c + 1) / float(cascades);
+        const float log_split = n * std::pow(f / n, s);
+        const float uniform_split = n + (f - n) * s;
+        const float slice_far = 0.8f * log_split + 0.2f * uniform_split;
+
+        glm::vec3 corners[8];
+        glm::vec3 mid(0.0f);
+        for (int i = 0; i < 8; ++i) {
+            const float d = (i & 4) ? slice_far : slice_near;
+            const float hh = camera.orthographic ? camera.ortho_half_height : tan_y * d;
+            const float hw = camera.orthographic ? camera.ortho_half_width : hh * camera.aspect;
+            const glm::vec4 p_view((i & 1) ? hw : -hw, (i & 2) ? hh : -hh, -d, 1.0f);
+            corners[i] = glm::vec3(inv_view * p_view);
+            mid += corners[i] / 8.0f;
+        }
+        float radius = 0.0f;
+        for (const glm::vec3& p : corners) radius = std::max(radius, glm::length(p - mid));
+        if (radius > scene_radius) { // never wider than the scene needs
+            radius = scene_radius * 1.01f;
+            mid = center;
+        }
+        radius = std::ceil(radius * 16.0f) / 16.0f; // stable size as the camera turns
+
+        const float texel = 2.0f * radius / float(resolution);
+        glm::vec3 lc = glm::vec3(light_view * glm::vec4(mid, 1.0f));
+        lc.x = std::floor(lc.x / texel) * texel;
+        lc.y = std::floor(lc.y / texel) * texel;
+        const glm::mat4 proj =
+            glm::orthoRH_ZO(lc.x - radius, lc.x + radius, lc.y - radius, lc.y + radius,
+                            -z_hi - depth_margin, -z_lo + depth_margin);
+        out.view_proj[c] = proj * light_view;
+        out.splits[c] = slice_far;
+        slice_near = slice_far;
+    }
+    out.count = cascades;
+    return out;
+}
+
+} // namespace sherpa::gpu

@@ -1,0 +1,17 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Positions only (plus the base-colour UV for alpha-tested materials): depth
+// prepass, shadow cascades, wireframe and the benchmark's floor pass.
+#include "common.glsl"
+
+layout(location = 0) out vec2 out_uv;
+
+void main() {
+    uint i = uint(gl_VertexIndex);
+    GPUInstanceData inst = pc.instances.v[gl_InstanceIndex];
+    vec4 world = inst.model * vec4(pc.positions.v[i], 1.0);
+    GPUMaterialExtra extra = pc.material_extras.v[pc.material_id];
+    out_uv = transform_uv(extra.uv[SLOT_BASE_COLOR], fetch_uv0(i), fetch_uv1(i));
+    mat4 vp = pc.cascade == NO_CASCADE ? pc.frame.view_proj : pc.frame.shadow_view_proj[pc.cascade];
+    gl_Position = vp * world;
+}

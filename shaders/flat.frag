@@ -1,0 +1,6 @@
+#version 460
+// Interpolated colour from the vertex stage (line glyphs, bounding boxes).
+layout(location = 0) in vec4 in_color;
+layout(location = 0) out vec4 out_color;
+
+void main() { out_color = in_color; }

@@ -1,0 +1,118 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Forward shading of opaque, masked and blended materials, and every debug view.
+#include "common.glsl"
+#include "bindings.glsl"
+#include "brdf.glsl"
+#include "shadows.glsl"
+#include "debug_views.glsl"
+#include "material_sampling.glsl"
+
+layout(location = 0) in vec3 in_world_pos;
+layout(location = 1) in vec3 in_normal;
+layout(location = 2) in vec4 in_tangent;
+layout(location = 3) in vec2 in_uv0;
+layout(location = 4) in vec2 in_uv1;
+layout(location = 5) in vec4 in_color;
+
+layout(location = 0) out vec4 out_color;
+
+vec3 punctual_light(Surface s, GPULight light, vec3 pos) {
+    uint type = uint(light.direction_type.w);
+    vec3 radiance = light.color_intensity.rgb * light.color_intensity.w;
+    vec3 l;
+    if (type == 0u) {
+        l = -normalize(light.direction_type.xyz);
+    } else {
+        vec3 d = light.position_range.xyz - pos;
+        float dist2 = max(dot(d, d), 1e-8);
+        l = d * inversesqrt(dist2);
+        float range = light.position_range.w;
+        // KHR_lights_punctual recommended range falloff.
+        float falloff = range > 0.0 ? clamp(1.0 - pow(dist2 / (range * range), 2.0), 0.0, 1.0) : 1.0;
+        radiance *= falloff / dist2;
+        if (type == 2u) {
+            float cd = dot(normalize(light.direction_type.xyz), -l);
+            float t = clamp((cd - light.cone.x) / max(light.cone.y - light.cone.x, 1e-4), 0.0, 1.0);
+            radiance *= t * t;
+        }
+    }
+    return brdf_times_cos(s, l) * radiance;
+}
+
+vec3 geometric_normal(vec3 v) {
+    // Face normal from screen derivatives, turned towards the viewer.
+    vec3 geo = normalize(cross(dFdx(in_world_pos), dFdy(in_world_pos)));
+    return dot(geo, v) < 0.0 ? -geo : geo;
+}
+
+void main() {
+    GPUMaterialData m = pc.materials.v[pc.material_id];
+    GPUMaterialExtra x = pc.material_extras.v[pc.material_id];
+    uint view = pc.frame.params.x;
+    vec2 uv0 = in_uv0, uv1 = in_uv1;
+
+    // Alpha decides coverage in every view; other inputs only where a view shows them.
+    bool need_base = view == VIEW_LIT || view == VIEW_BASE_COLOR || m.alpha_mode != SHERPA_ALPHA_OPAQUE;
+    vec4 base = need_base ? base_color(m, x, in_color, uv0, uv1) : vec4(1.0);
+    if (m.alpha_mode == SHERPA_ALPHA_MASK && base.a < m.alpha_cutoff) discard;
+
+    vec3 v = normalize(pc.frame.camera_position.xyz - in_world_pos);
+    vec3 n = normalize(in_normal);
+    vec3 t = in_tangent.xyz;
+    t = dot(t, t) > 1e-12 ? normalize(t - n * dot(n, t)) : vec3(1.0, 0.0, 0.0);
+    float handedness = in_tangent.w < 0.0 ? -1.0 : 1.0;
+    vec3 b = cross(n, t) * handedness;
+    // Double-sided back faces shade with the normal flipped (glTF spec).
+    if (m.double_sided != 0u && !gl_FrontFacing) {
+        n = -n;
+        t = -t;
+        b = -b;
+    }
+
+    vec3 c;
+    switch (view) {
+    case VIEW_NORMAL: c = encode_vector(n); break;
+    case VIEW_TANGENT: c = encode_vector(t); break;
+    case VIEW_BITANGENT: c = encode_vector(b); break;
+    case VIEW_TANGENT_W:
+        c = in_tangent.w > 0.0 ? vec3(0.15, 0.75, 0.2) : in_tangent.w < 0.0 ? vec3(0.9, 0.15, 0.1)
+                                                                            : vec3(0.95, 0.8, 0.1);
+        break;
+    case VIEW_UV0: c = vec3(fract(uv0), 0.0); break;
+    case VIEW_UV1: c = vec3(fract(uv1), 0.0); break;
+    case VIEW_UV0_CHECKER: c = checker_color(uv0); break;
+    case VIEW_UV1_CHECKER: c = checker_color(uv1); break;
+    case VIEW_BASE_COLOR: c = base.rgb; break;
+    case VIEW_METALLIC: c = vec3(metallic_roughness(m, x, uv0, uv1).x); break;
+    case VIEW_ROUGHNESS: c = vec3(metallic_roughness(m, x, uv0, uv1).y); break;
+    case VIEW_OCCLUSION: c = vec3(occlusion(m, x, uv0, uv1)); break;
+    case VIEW_EMISSIVE: c = emission(m, x, uv0, uv1); break;
+    case VIEW_GEOMETRIC_VS_SHADING: {
+        vec3 sn = mapped_normal(m, x, t, b, n, uv0, uv1);
+        c = angle_ramp(acos(clamp(dot(geometric_normal(v), sn), -1.0, 1.0)));
+        break;
+    }
+    case VIEW_PROVENANCE: c = provenance_color((pc.mesh_flags >> TANGENT_PROVENANCE_SHIFT) & 3u); break;
+    case VIEW_SHADING_NORMAL: c = encode_vector(mapped_normal(m, x, t, b, n, uv0, uv1)); break;
+    default: {
+        if (x.unlit != 0u) {
+            c = base.rgb;
+            break;
+        }
+        vec2 mr = metallic_roughness(m, x, uv0, uv1);
+        Surface s = Surface(base.rgb, mr.x, mr.y, mapped_normal(m, x, t, b, n, uv0, uv1), v);
+        float view_depth = -(pc.frame.view * vec4(in_world_pos, 1.0)).z;
+        // Shadow normal offset along the interpolated normal (cheaper than derivatives).
+        float shadow = sun_shadow(in_world_pos, n, view_depth);
+        c = brdf_times_cos(s, -normalize(pc.frame.sun_direction.xyz)) * pc.frame.sun_radiance.rgb * shadow;
+        for (uint i = 0u; i < pc.frame.params.y; ++i) c += punctual_light(s, pc.frame.lights[i], in_world_pos);
+        c += ambient_light(s, pc.frame.ambient.rgb) * occlusion(m, x, uv0, uv1);
+        c += emission(m, x, uv0, uv1);
+        break;
+    }
+    }
+    // Colour views (lit, base colour, emissive) are linear radiance; the rest are data.
+    if (view != VIEW_LIT && view != VIEW_BASE_COLOR && view != VIEW_EMISSIVE) c = display_to_linear(c);
+    out_color = vec4(c, view == VIEW_LIT && m.alpha_mode == SHERPA_ALPHA_BLEND ? base.a : 1.0);
+}

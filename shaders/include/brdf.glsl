@@ -1,0 +1,66 @@
+// glTF 2.0 metallic-roughness BRDF (spec appendix B): GGX distribution,
+// height-correlated Smith visibility, Schlick Fresnel, Lambert diffuse.
+#ifndef SHERPA_BRDF_GLSL
+#define SHERPA_BRDF_GLSL
+const float PI = 3.14159265358979;
+
+struct Surface {
+    vec3 albedo;
+    float metallic;
+    float roughness;
+    vec3 n; // shading normal, unit, facing the viewer side of the surface
+    vec3 v; // unit vector to the eye
+};
+
+vec3 fresnel_schlick(vec3 f0, float v_dot_h) {
+    return f0 + (1.0 - f0) * pow(clamp(1.0 - v_dot_h, 0.0, 1.0), 5.0);
+}
+
+float d_ggx(float n_dot_h, float a) {
+    float a2 = a * a;
+    float d = n_dot_h * n_dot_h * (a2 - 1.0) + 1.0;
+    return a2 / (PI * d * d);
+}
+
+float v_smith_ggx(float n_dot_l, float n_dot_v, float a) {
+    float a2 = a * a;
+    float gv = n_dot_l * sqrt(n_dot_v * n_dot_v * (1.0 - a2) + a2);
+    float gl = n_dot_v * sqrt(n_dot_l * n_dot_l * (1.0 - a2) + a2);
+    float s = gv + gl;
+    return s > 0.0 ? 0.5 / s : 0.0;
+}
+
+// Outgoing radiance for unit radiance arriving from direction l.
+vec3 brdf_times_cos(Surface s, vec3 l) {
+    float n_dot_l = clamp(dot(s.n, l), 0.0, 1.0);
+    if (n_dot_l <= 0.0) return vec3(0.0);
+    vec3 h = normalize(l + s.v);
+    float n_dot_v = clamp(abs(dot(s.n, s.v)), 1e-4, 1.0);
+    float n_dot_h = clamp(dot(s.n, h), 0.0, 1.0);
+    float v_dot_h = clamp(dot(s.v, h), 0.0, 1.0);
+    float a = max(s.roughness * s.roughness, 1e-3);
+    vec3 f0 = mix(vec3(0.04), s.albedo, s.metallic);
+    vec3 f = fresnel_schlick(f0, v_dot_h);
+    vec3 diffuse = (1.0 - f) * (1.0 - s.metallic) * s.albedo / PI;
+    vec3 specular = f * d_ggx(n_dot_h, a) * v_smith_ggx(n_dot_l, n_dot_v, a);
+    return (diffuse + specular) * n_dot_l;
+}
+
+// The simple ambient term: a sky/ground hemisphere (brighter above, darker below)
+// instead of an environment map. Diffuse reads it along the normal, specular along
+// the reflection vector, so normal-mapped metals still show their relief.
+vec3 hemisphere(vec3 dir, vec3 radiance) {
+    return radiance * mix(0.35, 1.6, 0.5 + 0.5 * dir.y);
+}
+
+vec3 ambient_light(Surface s, vec3 radiance) {
+    float n_dot_v = clamp(abs(dot(s.n, s.v)), 1e-4, 1.0);
+    vec3 f0 = mix(vec3(0.04), s.albedo, s.metallic);
+    vec3 f = f0 + (max(vec3(1.0 - s.roughness), f0) - f0) * pow(1.0 - n_dot_v, 5.0);
+    vec3 diffuse = (1.0 - f) * (1.0 - s.metallic) * s.albedo * hemisphere(s.n, radiance);
+    vec3 r = reflect(-s.v, s.n);
+    // Rough surfaces see a blurrier sky: blend the reflected towards the normal's.
+    vec3 specular = f * hemisphere(normalize(mix(r, s.n, s.roughness * s.roughness)), radiance);
+    return diffuse + specular;
+}
+#endif

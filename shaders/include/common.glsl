@@ -1,0 +1,136 @@
+// Shared declarations: per-frame data, instances and vertex streams, all fetched
+// through buffer device addresses passed in push constants. C++ twins live in
+// engine/gpu/include/sherpa/gpu/gpu_structs.h with static_asserts on every offset.
+#ifndef SHERPA_COMMON_GLSL
+#define SHERPA_COMMON_GLSL
+
+#extension GL_EXT_buffer_reference : require
+#extension GL_EXT_scalar_block_layout : require
+#extension GL_EXT_nonuniform_qualifier : require
+
+#include "material.glsl"
+#include "material_extra.glsl"
+
+const uint MAX_LIGHTS = 16;
+const uint MAX_CASCADES = 4;
+
+struct GPULight {
+    vec4 position_range;  // xyz world position, w range (0 = infinite)
+    vec4 direction_type;  // xyz direction the light points, w type (0 dir, 1 point, 2 spot)
+    vec4 color_intensity; // rgb colour, w intensity
+    vec4 cone;            // x cos(outer), y cos(inner)
+};
+
+layout(buffer_reference, scalar, buffer_reference_align = 16) readonly buffer FrameRef {
+    mat4 view;                              // 0
+    mat4 proj;                              // 64
+    mat4 view_proj;                         // 128
+    mat4 shadow_view_proj[MAX_CASCADES];    // 192
+    vec4 camera_position;                   // 448
+    vec4 cascade_splits;                    // 464: view depth where each cascade ends
+    vec4 sun_direction;                     // 480: xyz direction light travels, w 1 = shadowed
+    vec4 sun_radiance;                      // 496: rgb colour * intensity
+    vec4 ambient;                           // 512: rgb ambient radiance
+    uvec4 params;                           // 528: x view, y lights, z cascades, w shadow taps
+    vec4 overlay;                           // 544: x glyph length
+    GPULight lights[MAX_LIGHTS];            // 560
+};
+
+struct GPUInstanceData {
+    mat4 model;              // 0
+    vec4 normal_matrix[3];   // 64: columns of transpose(inverse(mat3(model)))
+    uint material;           // 112
+    uint mesh;               // 116
+    uint flags;              // 120
+    uint pad;                // 124
+};
+
+layout(buffer_reference, scalar, buffer_reference_align = 16) readonly buffer InstanceRef {
+    GPUInstanceData v[];
+};
+layout(buffer_reference, scalar, buffer_reference_align = 16) readonly buffer MaterialRef {
+    GPUMaterialData v[];
+};
+layout(buffer_reference, scalar, buffer_reference_align = 16) readonly buffer MaterialExtraRef {
+    GPUMaterialExtra v[];
+};
+layout(buffer_reference, scalar, buffer_reference_align = 4) readonly buffer Vec2Ref { vec2 v[]; };
+layout(buffer_reference, scalar, buffer_reference_align = 4) readonly buffer Vec3Ref { vec3 v[]; };
+layout(buffer_reference, scalar, buffer_reference_align = 4) readonly buffer Vec4Ref { vec4 v[]; };
+struct LineVertex {
+    vec4 position;
+    vec4 color;
+};
+layout(buffer_reference, scalar, buffer_reference_align = 16) readonly buffer LineRef {
+    LineVertex v[];
+};
+
+layout(push_constant, scalar) uniform Push {
+    FrameRef frame;                 // 0
+    InstanceRef instances;          // 8
+    MaterialRef materials;          // 16
+    MaterialExtraRef material_extras; // 24
+    Vec3Ref positions;              // 32
+    Vec3Ref normals;                // 40
+    Vec4Ref tangents;               // 48
+    Vec2Ref uv0;                    // 56
+    Vec2Ref uv1;                    // 64
+    Vec4Ref colors;                 // 72
+    LineRef lines;                  // 80
+    uint material_id;               // 88
+    uint mesh_flags;                // 92
+    uint cascade;                   // 96: shadow cascade, or NO_CASCADE for the camera
+    float glyph_length;             // 100
+    vec4 color;                     // 104: flat colour of overlays
+} pc;
+
+// mesh_flags: which streams the GPU holds (bit = VertexAttribute), provenance, glyph kind.
+const uint HAS_POSITION = 1u << 0;
+const uint HAS_NORMAL = 1u << 1;
+const uint HAS_TANGENT = 1u << 2;
+const uint HAS_UV0 = 1u << 3;
+const uint HAS_UV1 = 1u << 4;
+const uint HAS_COLOR = 1u << 5;
+const uint TANGENT_PROVENANCE_SHIFT = 8;  // 0 authored, 1 generated, 2 defaulted
+const uint NORMAL_PROVENANCE_SHIFT = 10;
+const uint GLYPH_KIND_SHIFT = 16;         // 0 normal, 1 tangent, 2 bitangent
+const uint NO_CASCADE = 0xffffffffu;
+
+// Debug views (sherpa::gpu::DebugView).
+const uint VIEW_LIT = 0;
+const uint VIEW_NORMAL = 1;
+const uint VIEW_TANGENT = 2;
+const uint VIEW_BITANGENT = 3;
+const uint VIEW_TANGENT_W = 4;
+const uint VIEW_UV0 = 5;
+const uint VIEW_UV1 = 6;
+const uint VIEW_UV0_CHECKER = 7;
+const uint VIEW_UV1_CHECKER = 8;
+const uint VIEW_BASE_COLOR = 9;
+const uint VIEW_METALLIC = 10;
+const uint VIEW_ROUGHNESS = 11;
+const uint VIEW_OCCLUSION = 12;
+const uint VIEW_EMISSIVE = 13;
+const uint VIEW_GEOMETRIC_VS_SHADING = 14;
+const uint VIEW_PROVENANCE = 15;
+const uint VIEW_SHADING_NORMAL = 16;
+
+bool has(uint bit) { return (pc.mesh_flags & bit) != 0u; }
+
+// Default values of absent streams, as glTF defines them.
+vec3 fetch_normal(uint i) { return has(HAS_NORMAL) ? pc.normals.v[i] : vec3(0.0, 0.0, 1.0); }
+vec4 fetch_tangent(uint i) { return has(HAS_TANGENT) ? pc.tangents.v[i] : vec4(1.0, 0.0, 0.0, 1.0); }
+vec2 fetch_uv0(uint i) { return has(HAS_UV0) ? pc.uv0.v[i] : vec2(0.0); }
+vec2 fetch_uv1(uint i) { return has(HAS_UV1) ? pc.uv1.v[i] : vec2(0.0); }
+vec4 fetch_color(uint i) { return has(HAS_COLOR) ? pc.colors.v[i] : vec4(1.0); }
+
+mat3 normal_matrix(GPUInstanceData inst) {
+    return mat3(inst.normal_matrix[0].xyz, inst.normal_matrix[1].xyz, inst.normal_matrix[2].xyz);
+}
+
+vec2 transform_uv(GPUTextureTransform t, vec2 uv0, vec2 uv1) {
+    vec3 uv = vec3(t.row0.w > 0.5 ? uv1 : uv0, 1.0);
+    return vec2(dot(t.row0.xyz, uv), dot(t.row1.xyz, uv));
+}
+
+#endif

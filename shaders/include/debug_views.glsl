@@ -1,0 +1,37 @@
+// Colour encodings of the debug views. Vectors show as 0.5 + 0.5 * v.
+#ifndef SHERPA_DEBUG_VIEWS_GLSL
+#define SHERPA_DEBUG_VIEWS_GLSL
+vec3 encode_vector(vec3 v) { return 0.5 + 0.5 * v; }
+
+// Data views (vectors, UVs, scalars) must show their values as stored bytes, the
+// way tools display normal maps; the sRGB target encodes on write, so decode first.
+vec3 display_to_linear(vec3 c) {
+    c = clamp(c, 0.0, 1.0);
+    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), greaterThan(c, vec3(0.04045)));
+}
+
+float checker(vec2 uv) {
+    // 8x8 checks per UV unit; the tint shows which way U (red) and V (green) grow.
+    vec2 c = floor(uv * 8.0);
+    float k = mod(c.x + c.y, 2.0);
+    return k;
+}
+
+vec3 checker_color(vec2 uv) {
+    float k = checker(uv);
+    vec3 tint = vec3(fract(uv), 0.0) * 0.5 + 0.25;
+    return mix(vec3(0.1), tint + 0.5, k);
+}
+
+// Authored: green, generated: yellow, defaulted: red.
+vec3 provenance_color(uint p) {
+    return p == 0u ? vec3(0.15, 0.75, 0.2) : p == 1u ? vec3(0.95, 0.8, 0.1) : vec3(0.9, 0.15, 0.1);
+}
+
+// Angle between geometric and shading normal: blue (0) -> yellow (45) -> red (90+).
+vec3 angle_ramp(float radians_) {
+    float t = clamp(radians_ / (0.5 * 3.14159265), 0.0, 1.0);
+    return t < 0.5 ? mix(vec3(0.1, 0.2, 0.8), vec3(1.0, 0.9, 0.1), t * 2.0)
+                   : mix(vec3(1.0, 0.9, 0.1), vec3(0.9, 0.1, 0.05), t * 2.0 - 1.0);
+}
+#endif

@@ -1,0 +1,27 @@
+// GLSL twin of sherpa::gpu::GPUMaterialExtra (engine/gpu/include/sherpa/gpu/gpu_structs.h):
+// what GPUMaterialData (material.glsl) has no room for. Offsets are pinned by
+// static_asserts on the C++ side; keep the field order identical.
+#ifndef SHERPA_MATERIAL_EXTRA_GLSL
+#define SHERPA_MATERIAL_EXTRA_GLSL
+
+// Texture slots of GPUMaterialExtra.uv, in this order.
+const uint SLOT_BASE_COLOR = 0;
+const uint SLOT_METALLIC_ROUGHNESS = 1;
+const uint SLOT_NORMAL = 2;
+const uint SLOT_OCCLUSION = 3;
+const uint SLOT_EMISSIVE = 4;
+
+// KHR_texture_transform as two rows of the 2x3 affine UV matrix; row0.w holds the
+// TEXCOORD set the slot reads (0 or 1).
+struct GPUTextureTransform {
+    vec4 row0;
+    vec4 row1;
+};
+
+struct GPUMaterialExtra {
+    GPUTextureTransform uv[5]; // 0
+    uint unlit;                // 160: KHR_materials_unlit
+    uint pad0, pad1, pad2;     // 164..176
+};
+
+#endif

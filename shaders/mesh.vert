@@ -1,0 +1,27 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Full vertex pulling for shading: every stream the GPU holds, defaults for the rest.
+#include "common.glsl"
+
+layout(location = 0) out vec3 out_world_pos;
+layout(location = 1) out vec3 out_normal;
+layout(location = 2) out vec4 out_tangent;
+layout(location = 3) out vec2 out_uv0;
+layout(location = 4) out vec2 out_uv1;
+layout(location = 5) out vec4 out_color;
+
+void main() {
+    uint i = uint(gl_VertexIndex);
+    GPUInstanceData inst = pc.instances.v[gl_InstanceIndex];
+    vec4 world = inst.model * vec4(pc.positions.v[i], 1.0);
+    mat3 nm = normal_matrix(inst);
+    vec4 t = fetch_tangent(i);
+    out_world_pos = world.xyz;
+    out_normal = nm * fetch_normal(i);
+    // Tangents are directions on the surface: they transform with the model matrix.
+    out_tangent = vec4(mat3(inst.model) * t.xyz, t.w);
+    out_uv0 = fetch_uv0(i);
+    out_uv1 = fetch_uv1(i);
+    out_color = fetch_color(i);
+    gl_Position = pc.frame.view_proj * world;
+}

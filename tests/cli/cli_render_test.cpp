@@ -1,0 +1,91 @@
+// sherpa-cli render: PNG output, report JSON schema, error exits. Runs the CLI
+// with --validation so any Vulkan validation message fails the command.
+#include "cli/cli_run.h"
+#include "test_support.h"
+
+#include <sherpa/gpu/image_io.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <sys/wait.h>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using sherpa::test::CliRun;
+using sherpa::test::run_cli;
+
+std::string temp_path(const std::string& name) {
+    return (std::filesystem::temp_directory_path() /
+            ("sherpa_cli_render_" + std::to_string(::getpid()) + "_" + name))
+        .string();
+}
+
+TEST(CliRender, WritesPngAndReportWithEveryCategory) {
+    const std::string png = temp_path("helmet.png"), report = temp_path("helmet.json");
+    const CliRun r =
+        run_cli("render '" + sherpa::test::gltf_asset("DamagedHelmet") + "' -o " + png +
+                " --width 96 --height 64 --frames 3 --view lit --overlay wireframe aabb"
+                " --camera eye=0,0,3:target=0,0,0 --report " +
+                report + " --validation");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    std::uint32_t w = 0, h = 0;
+    std::vector<std::uint8_t> rgba;
+    std::string error;
+    ASSERT_TRUE(sherpa::gpu::read_png_rgba8(png, w, h, rgba, error)) << error;
+    EXPECT_EQ(w, 96u);
+    EXPECT_EQ(h, 64u);
+
+    const auto j = sherpa::test::read_json(report);
+    EXPECT_FALSE(j["device"]["name"].get<std::string>().empty());
+    EXPECT_TRUE(j["device"]["ray_tracing"].is_boolean());
+    for (const char* key :
+         {"vertex_streams", "indices", "textures", "materials", "instances", "total"})
+        EXPECT_GT(j["gpu_memory_bytes"][key].get<std::uint64_t>(), 0u) << key;
+    EXPECT_GT(j["vertex_layout"]["unified_56_byte_bytes"].get<std::uint64_t>(),
+              j["vertex_layout"]["used_streams_bytes"].get<std::uint64_t>());
+    for (const char* pass :
+         {"shadows", "depth_prepass", "opaque", "alpha_mask", "alpha_blend", "overlays"})
+        EXPECT_TRUE(j["gpu_time_ms"]["passes_median"][pass].is_number()) << pass;
+    for (const char* stat : {"vertex_shader_invocations", "fragment_shader_invocations",
+                             "clipping_primitives", "input_assembly_primitives"})
+        EXPECT_GT(j["pipeline_statistics"][stat].get<std::uint64_t>(), 0u) << stat;
+    EXPECT_EQ(j["frames"], 3);
+    EXPECT_EQ(j["validation_messages"], 0);
+    std::filesystem::remove(png);
+    std::filesystem::remove(report);
+}
+
+TEST(CliRender, GltfCameraAndDebugViewsWork) {
+    const std::string png = temp_path("cameras.png");
+    const CliRun r =
+        run_cli("render '" + sherpa::test::gltf_asset("Cameras") + "' -o " + png +
+                " --width 32 --height 32 --camera gltf:0 --view uv0-checker --validation");
+    EXPECT_EQ(r.exit_code, 0) << r.out;
+    std::filesystem::remove(png);
+}
+
+TEST(CliRender, ErrorsExitOneWithErrorPrefix) {
+    const std::string png = temp_path("bad.png");
+    const std::vector<std::string> failing{
+        "render /nonexistent.gltf -o " + png,
+        "render builtin:default -o " + png + " --camera gltf:7",
+        "render builtin:default -o /nonexistent-dir/x.png --width 8 --height 8"};
+    for (const std::string& args : failing) {
+        const CliRun r = run_cli(args);
+        EXPECT_EQ(r.exit_code, 1) << args << "\n" << r.out;
+        EXPECT_EQ(r.out.rfind("error:", 0), 0u) << args << "\n" << r.out;
+    }
+    // Usage mistakes exit 2, as for every subcommand.
+    for (const std::string args :
+         {"render builtin:default", "render builtin:default -o x.png --view nope",
+          "render builtin:default -o x.png --camera eye=1,2"}) {
+        const CliRun r = run_cli(args);
+        EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.out;
+        EXPECT_NE(r.out.find("error:"), std::string::npos) << args;
+    }
+}
+
+} // namespace

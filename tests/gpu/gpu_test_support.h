@@ -1,0 +1,59 @@
+#pragma once
+// One validated Vulkan context and renderer for the whole test binary (creating a
+// device per test would dominate the run time), and a fixture that fails any test
+// during which the validation layer said anything.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+
+#include <sherpa/gpu/context.h>
+#include <sherpa/gpu/renderer.h>
+#include <sherpa/scene/scene_loader.h>
+
+#include "test_support.h"
+
+namespace sherpa::test {
+
+struct GpuEnvironment {
+    std::unique_ptr<gpu::Context> context;
+    std::unique_ptr<gpu::Renderer> renderer;
+    GpuEnvironment() {
+        gpu::ContextOptions options;
+        options.validation = true; // every GPU test runs under the Khronos layer
+        context = std::make_unique<gpu::Context>(options);
+        renderer = std::make_unique<gpu::Renderer>(*context);
+    }
+    static GpuEnvironment& get() {
+        static GpuEnvironment env;
+        return env;
+    }
+    ~GpuEnvironment() {
+        renderer.reset(); // before the device it was made on
+        context.reset();
+    }
+};
+
+class GpuTest : public ::testing::Test {
+protected:
+    gpu::Context& context() { return *GpuEnvironment::get().context; }
+    gpu::Renderer& renderer() { return *GpuEnvironment::get().renderer; }
+
+    void SetUp() override { seen_ = context().validation().count(); }
+    void TearDown() override {
+        const auto messages = context().validation().messages();
+        for (std::size_t i = seen_; i < messages.size(); ++i)
+            ADD_FAILURE() << "validation: [" << messages[i].id_name << "] " << messages[i].text;
+    }
+
+    static std::unique_ptr<Scene> load(const std::string& spec) {
+        LoadResult r = load_scene(spec);
+        EXPECT_TRUE(r) << spec << ": " << r.error;
+        return std::move(r.scene);
+    }
+
+private:
+    std::size_t seen_ = 0;
+};
+
+} // namespace sherpa::test

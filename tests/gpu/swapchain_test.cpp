@@ -1,0 +1,152 @@
+// Swapchain path: an X11 window made with xcb in this test only (window-system
+// types stay out of the engine), a VkSurfaceKHR from it, frames presented under
+// the validation layer, a resize, and the pixels read back from the X server.
+// Run under `xvfb-run -a`; without a display the tests are skipped.
+#define VK_USE_PLATFORM_XCB_KHR
+#include <vulkan/vulkan.h>
+#include <xcb/xcb.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <cstring>
+
+#include <sherpa/gpu/gpu_error.h>
+#include <sherpa/gpu/presenter.h>
+#include <sherpa/gpu/renderer.h>
+#include <sherpa/scene/scene_loader.h>
+
+namespace {
+
+using namespace sherpa;
+
+// A mapped xcb window; closed on destruction.
+struct XcbWindow {
+    xcb_connection_t* connection = nullptr;
+    xcb_window_t window = 0;
+    std::uint32_t width, height;
+
+    XcbWindow(std::uint32_t w, std::uint32_t h) : width(w), height(h) {
+        connection = xcb_connect(nullptr, nullptr);
+        if (xcb_connection_has_error(connection)) return;
+        xcb_screen_t* screen = xcb_setup_roots_iterator(xcb_get_setup(connection)).data;
+        window = xcb_generate_id(connection);
+        const std::uint32_t values[] = {screen->black_pixel};
+        xcb_create_window(connection, XCB_COPY_FROM_PARENT, window, screen->root, 0, 0,
+                          std::uint16_t(w), std::uint16_t(h), 0, XCB_WINDOW_CLASS_INPUT_OUTPUT,
+                          screen->root_visual, XCB_CW_BACK_PIXEL, values);
+        xcb_map_window(connection, window);
+        xcb_flush(connection);
+    }
+    ~XcbWindow() {
+        if (window) xcb_destroy_window(connection, window);
+        if (connection) xcb_disconnect(connection);
+    }
+    bool ok() const { return connection && !xcb_connection_has_error(connection) && window; }
+    void resize(std::uint32_t w, std::uint32_t h) {
+        const std::uint32_t values[] = {w, h};
+        xcb_configure_window(connection, window, XCB_CONFIG_WINDOW_WIDTH | XCB_CONFIG_WINDOW_HEIGHT,
+                             values);
+        xcb_flush(connection);
+        width = w;
+        height = h;
+    }
+    // Distinct 32-bit pixel values in the window's current contents.
+    std::size_t distinct_pixels() {
+        auto* reply =
+            xcb_get_image_reply(connection,
+                                xcb_get_image(connection, XCB_IMAGE_FORMAT_Z_PIXMAP, window, 0, 0,
+                                              std::uint16_t(width), std::uint16_t(height), ~0u),
+                                nullptr);
+        if (!reply) return 0;
+        const std::uint8_t* data = xcb_get_image_data(reply);
+        const int len = xcb_get_image_data_length(reply);
+        std::vector<std::uint32_t> seen;
+        for (int i = 0; i + 3 < len && seen.size() < 64; i += 4 * 7) {
+            std::uint32_t p;
+            std::memcpy(&p, data + i, 4);
+            p &= 0x00ffffffu;
+            if (std::find(seen.begin(), seen.end(), p) == seen.end()) seen.push_back(p);
+        }
+        std::free(reply);
+        return seen.size();
+    }
+};
+
+VkSurfaceKHR make_surface(const gpu::Context& context, const XcbWindow& window) {
+    auto sci =
+        gpu::vk_init<VkXcbSurfaceCreateInfoKHR>(VK_STRUCTURE_TYPE_XCB_SURFACE_CREATE_INFO_KHR);
+    sci.connection = window.connection;
+    sci.window = window.window;
+    VkSurfaceKHR surface = VK_NULL_HANDLE;
+    gpu::vk_check(vkCreateXcbSurfaceKHR(context.instance(), &sci, nullptr, &surface),
+                  "vkCreateXcbSurfaceKHR");
+    return surface;
+}
+
+class SwapchainTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+    }
+};
+
+TEST_F(SwapchainTest, PresentsFramesAndSurvivesResizeWithoutValidationMessages) {
+    XcbWindow window(160, 120);
+    ASSERT_TRUE(window.ok());
+    gpu::ContextOptions options;
+    options.validation = true;
+    options.presentation = true;
+    options.instance_extensions = {VK_KHR_XCB_SURFACE_EXTENSION_NAME};
+    gpu::Context context(options);
+
+    VkSurfaceKHR surface = make_surface(context, window);
+    {
+        gpu::Renderer renderer(context);
+        LoadResult scene = load_scene("builtin:default");
+        ASSERT_TRUE(scene) << scene.error;
+        renderer.load(*scene.scene);
+        gpu::Presenter presenter(renderer, surface, window.width, window.height);
+        EXPECT_EQ(presenter.extent().width, 160u);
+        EXPECT_GE(presenter.image_count(), 2u);
+        gpu::RenderSettings settings;
+        settings.overlays = gpu::kOverlayBounds;
+        int shown = 0;
+        for (int i = 0; i < 6; ++i) shown += presenter.present_frame(settings) ? 1 : 0;
+        EXPECT_GE(shown, 5);
+        renderer.wait_for_slot(0);
+        renderer.wait_for_slot(1);
+        vkQueueWaitIdle(context.queue());
+        // The scene, not only the black window background, reached the X server.
+        EXPECT_GT(window.distinct_pixels(), 4u);
+
+        window.resize(200, 100);
+        presenter.resize(200, 100);
+        EXPECT_EQ(presenter.extent().width, 200u);
+        EXPECT_EQ(presenter.extent().height, 100u);
+        for (int i = 0; i < 4; ++i) presenter.present_frame(settings);
+        EXPECT_GE(presenter.frames_presented(), 8u);
+    }
+    vkDestroySurfaceKHR(context.instance(), surface, nullptr);
+    for (const auto& m : context.validation().messages())
+        ADD_FAILURE() << m.id_name << ": " << m.text;
+}
+
+TEST_F(SwapchainTest, ContextWithoutPresentationRefusesASurface) {
+    XcbWindow window(64, 64);
+    ASSERT_TRUE(window.ok());
+    gpu::ContextOptions options;
+    options.validation = true;
+    options.instance_extensions = {VK_KHR_SURFACE_EXTENSION_NAME,
+                                   VK_KHR_XCB_SURFACE_EXTENSION_NAME};
+    gpu::Context context(options);
+    VkSurfaceKHR surface = make_surface(context, window);
+    {
+        gpu::Renderer renderer(context);
+        EXPECT_THROW(gpu::Presenter(renderer, surface, 64, 64), gpu::GpuError);
+    }
+    vkDestroySurfaceKHR(context.instance(), surface, nullptr);
+    EXPECT_EQ(context.validation().count(), 0u);
+}
+
+} // namespace

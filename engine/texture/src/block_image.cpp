@@ -2,6 +2,7 @@
 #include <sherpa/texture/block_codecs.h>
 
 #include <algorithm>
+#include <omp.h>
 #include <stdexcept>
 #include <string>
 
@@ -119,7 +120,8 @@ std::vector<std::uint8_t> encode_image(BlockFormat format, std::span<const std::
     const std::uint32_t bw = blocks_along(width), bh = blocks_along(height);
     std::vector<std::uint8_t> out(compressed_size(width, height));
     const long long total = static_cast<long long>(bw) * bh;
-    const int team = threads > 0 ? threads : 0;
+    // num_threads must be positive: 0 means "OpenMP's default", spelled out here.
+    const int team = threads > 0 ? threads : omp_get_max_threads();
 #pragma omp parallel for schedule(dynamic, 64) num_threads(team) if (team != 1)
     for (long long b = 0; b < total; ++b) {
         std::uint8_t texels[kBlockTexelBytes];

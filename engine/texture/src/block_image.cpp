@@ -10,27 +10,6 @@
 
 namespace sherpa::tex {
 
-SimdLevel best_simd_level() {
-    __builtin_cpu_init();
-    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
-        __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq"))
-        return SimdLevel::Avx512;
-    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) return SimdLevel::Avx2;
-    return SimdLevel::Scalar;
-}
-
-std::string_view to_string(SimdLevel level) {
-    switch (level) {
-    case SimdLevel::Scalar:
-        return "scalar";
-    case SimdLevel::Avx2:
-        return "avx2";
-    case SimdLevel::Avx512:
-        return "avx512";
-    }
-    return "unknown";
-}
-
 namespace {
 using KernelFn = void (*)(const std::uint8_t*, int, std::uint8_t*);
 

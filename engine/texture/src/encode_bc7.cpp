@@ -13,7 +13,7 @@
 
 #include "bc7_tables.h"
 #include "kernel_entry.h"
-#include <sherpa/texture/block_codecs.h>
+#include <sherpa/texture/quality_levels.h>
 
 namespace sherpa::tex::SHERPA_KERNEL_NS {
 namespace {

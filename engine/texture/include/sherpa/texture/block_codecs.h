@@ -11,25 +11,17 @@
 #include <string_view>
 #include <vector>
 
+#include <sherpa/scene/culling.h>
+#include <sherpa/texture/quality_levels.h>
+
 namespace sherpa::tex {
 
-// Instruction sets the encoders have kernels for. `best_simd_level()` asks the CPU;
-// callers pass the level explicitly so tests can compare kernels.
-enum class SimdLevel : std::uint8_t { Scalar, Avx2, Avx512 };
-SimdLevel best_simd_level();
-std::string_view to_string(SimdLevel level);
-
-// BC7 quality levels, fastest first. Level 0 uses mode 6 alone; higher levels add
-// partitioned modes, more partitions tried and more endpoint refinement.
-inline constexpr int kBc7MinLevel = 0;
-inline constexpr int kBc7MaxLevel = 4;
-inline constexpr int kBc7DefaultLevel = 1;
-
-// BC5 quality levels: 0 fits endpoints by one least-squares pass; 1 runs three and
-// then nudges the endpoints (and tries the six-value mode) on blocks still off.
-inline constexpr int kBc5MinLevel = 0;
-inline constexpr int kBc5MaxLevel = 1;
-inline constexpr int kBc5DefaultLevel = 1;
+// Instruction sets the encoders have kernels for: the engine's one SimdLevel
+// (scene layer, shared with culling). `best_simd_level()` asks the CPU; callers
+// pass the level explicitly so tests can compare kernels.
+using ::sherpa::best_simd_level;
+using ::sherpa::SimdLevel;
+using ::sherpa::to_string;
 
 struct EncodeSettings {
     int level = kBc7DefaultLevel; // clamped to the format's range

@@ -8,6 +8,10 @@
 
 #include <glm/glm.hpp>
 
+#include <sherpa/scene/tangents.h>
+
+#include "gltf_primitives.h"
+
 namespace sherpa::bench {
 
 struct BenchMesh {
@@ -17,6 +21,7 @@ struct BenchMesh {
     std::vector<glm::vec4> authored; // per vertex, empty if none
     std::vector<std::uint32_t> indices;
     std::size_t triangles() const { return indices.size() / 3; }
+    TangentInput input() const { return {positions, normals, uvs, indices}; }
 };
 
 // A torus of rings x segments quads (2 triangles each) with a uv seam where u wraps and a
@@ -43,6 +48,33 @@ inline BenchMesh make_torus(std::uint32_t rings, std::uint32_t segments) {
             m.indices.insert(m.indices.end(), {a, b, b + 1, a, b + 1, a + 1});
         }
     return m;
+}
+
+// One BenchMesh per sample model: its triangle primitives with normals and uvs,
+// concatenated (named by the model). Authored tangents are kept only when every
+// primitive has them.
+inline std::vector<BenchMesh> load_sample_meshes(const std::string& assets_dir) {
+    std::vector<BenchMesh> out;
+    for (const std::string& name : tools::sample_models(assets_dir)) {
+        BenchMesh m;
+        m.name = name;
+        bool all_authored = true;
+        for (const tools::GltfPrimitive& p :
+             tools::read_gltf_primitives(tools::sample_model_path(assets_dir, name))) {
+            if (p.normals.empty() || p.uvs.empty() || p.indices.empty()) continue;
+            const auto base = static_cast<std::uint32_t>(m.positions.size());
+            m.positions.insert(m.positions.end(), p.positions.begin(), p.positions.end());
+            m.normals.insert(m.normals.end(), p.normals.begin(), p.normals.end());
+            m.uvs.insert(m.uvs.end(), p.uvs.begin(), p.uvs.end());
+            all_authored = all_authored && !p.tangents.empty();
+            if (!p.tangents.empty())
+                m.authored.insert(m.authored.end(), p.tangents.begin(), p.tangents.end());
+            for (std::uint32_t i : p.indices) m.indices.push_back(base + i);
+        }
+        if (!all_authored) m.authored.clear();
+        if (!m.indices.empty()) out.push_back(std::move(m));
+    }
+    return out;
 }
 
 } // namespace sherpa::bench

@@ -26,11 +26,8 @@ bool gpu_cull_passes(const Scene& scene, const std::vector<std::pair<std::string
         }
         // The camera sees every instance; cascades see the shadow casters.
         MeshPass camera_pass(MeshPassKind::Forward);
-        for (std::uint32_t i = 0; i < scene.instances.size(); ++i) {
-            const auto& m = scene.materials[scene.instances[i].material_id];
-            camera_pass.add(i, scene.instances[i].mesh_id,
-                            pipeline_key(m.alpha_mode, m.double_sided));
-        }
+        for (std::uint32_t i = 0; i < scene.instances.size(); ++i)
+            camera_pass.add(i, scene.instances[i].mesh_id, instance_pipeline_key(scene, i));
         camera_pass.update();
         const ScenePasses passes = build_mesh_passes(scene);
         gpu::GpuCuller camera_culler(context, resources), shadow_culler(context, resources);

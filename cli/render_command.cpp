@@ -25,7 +25,9 @@ constexpr const char* kUsage =
     "         [--overlay NAME ...] [--camera auto|gltf:N|eye=x,y,z:target=x,y,z[:up=..][:fov=DEG]"
     "[:aspect=A][:near=N][:far=F]]\n"
     "         [--frames N] [--report FILE.json] [--validation] [--no-shadows] [--no-prepass]\n"
-    "         [--glyph-length L] [--floor]\n";
+    "         [--glyph-length L] [--floor] [--cull none|cpu|gpu] [--cull-method "
+    "sphere|pvertex|exact]\n"
+    "         [--freeze-cull eye=x,y,z:target=x,y,z[:...]]\n";
 
 int usage_error(const std::string& message) {
     std::fprintf(stderr, "error: %s\n%s", message.c_str(), kUsage);
@@ -110,6 +112,22 @@ int run_render(Args args) {
             auto v = value();
             if (!v || !parse_number(*v, settings.glyph_length) || !(settings.glyph_length > 0.0f))
                 return usage_error("--glyph-length needs a positive number");
+        } else if (a == "--cull") {
+            auto v = value();
+            const auto path = v ? gpu::parse_cull_path(*v) : std::nullopt;
+            if (!path) return usage_error("--cull needs none, cpu or gpu");
+            settings.cull = *path;
+        } else if (a == "--cull-method") {
+            auto v = value();
+            if (!v || !parse_cull_method(*v, settings.cull_method))
+                return usage_error("--cull-method needs sphere, pvertex or exact");
+        } else if (a == "--freeze-cull") {
+            auto v = value();
+            if (!v) return usage_error("--freeze-cull needs a camera spec");
+            gpu::CameraSpec frozen;
+            std::string error;
+            if (!gpu::parse_camera_spec(*v, frozen, error)) return usage_error(error);
+            settings.freeze_cull = frozen;
         } else if (a == "--validation") {
             validation = true;
         } else if (a == "--no-shadows") {

@@ -95,6 +95,17 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
             {"fragment_shader_invocations", last.fragment_invocations},
             {"scope", "camera passes of the last frame (not shadow cascades)"}};
         j["draw_calls"] = last.draw_calls;
+        const CullStats& c = last.cull;
+        j["culling"] = c.pass.empty() ? nlohmann::json{{"path", "none"}}
+                                      : nlohmann::json{{"path", c.gpu ? "gpu" : "cpu"},
+                                                       {"method", to_string(c.method)},
+                                                       {"total", c.total},
+                                                       {"visible", c.visible},
+                                                       {"culled", c.culled},
+                                                       {"invalid", c.invalid},
+                                                       {"draw_calls", c.draw_calls},
+                                                       {"triangles", c.triangles},
+                                                       {"cpu_ms", c.cpu_ms}};
     }
     if (renderer.context().validation_enabled())
         j["validation_messages"] = renderer.context().validation().count();

@@ -6,12 +6,15 @@
 
 layout(location = 0) out vec2 out_uv;
 
+// Identical math to mesh.vert, so the depth prepass and shading agree exactly.
+invariant gl_Position;
+
 void main() {
     uint i = uint(gl_VertexIndex);
-    GPUInstanceData inst = pc.instances.v[gl_InstanceIndex];
+    GPUInstanceData inst = pc.instances.v[pc.instance_ids.v[gl_InstanceIndex]];
     vec4 world = inst.model * vec4(pc.positions.v[i], 1.0);
-    GPUMaterialExtra extra = pc.material_extras.v[pc.material_id];
+    GPUMaterialExtra extra = material_extras[pc.material_id];
     out_uv = transform_uv(extra.uv[SLOT_BASE_COLOR], fetch_uv0(i), fetch_uv1(i));
-    mat4 vp = pc.cascade == NO_CASCADE ? pc.frame.view_proj : pc.frame.shadow_view_proj[pc.cascade];
+    mat4 vp = pc.cascade == NO_CASCADE ? frame.view_proj : frame.shadow_view_proj[pc.cascade];
     gl_Position = vp * world;
 }

@@ -7,7 +7,7 @@
 layout(location = 0) in vec2 in_uv;
 
 void main() {
-    GPUMaterialData m = pc.materials.v[pc.material_id];
+    GPUMaterialData m = materials[pc.material_id];
     float alpha = m.base_color_factor.a * texture(textures[m.base_color_tex], in_uv).a;
     if (alpha < m.alpha_cutoff) discard;
 }

@@ -14,8 +14,14 @@ layout(location = 2) in vec4 in_tangent;
 layout(location = 3) in vec2 in_uv0;
 layout(location = 4) in vec2 in_uv1;
 layout(location = 5) in vec4 in_color;
+layout(location = 6) in vec3 in_shadow[SHADOW_CASCADES];
 
 layout(location = 0) out vec4 out_color;
+
+// The view is a specialization constant: each view gets its own pipeline, so the
+// lit pipeline carries no debug-view code. On a SIMD CPU rasterizer a run-time
+// switch would execute (masked) every case for every pixel.
+layout(constant_id = 0) const uint VIEW = VIEW_LIT;
 
 vec3 punctual_light(Surface s, GPULight light, vec3 pos) {
     uint type = uint(light.direction_type.w);
@@ -47,9 +53,9 @@ vec3 geometric_normal(vec3 v) {
 }
 
 void main() {
-    GPUMaterialData m = pc.materials.v[pc.material_id];
-    GPUMaterialExtra x = pc.material_extras.v[pc.material_id];
-    uint view = pc.frame.params.x;
+    GPUMaterialData m = materials[pc.material_id];
+    GPUMaterialExtra x = material_extras[pc.material_id];
+    const uint view = VIEW;
     vec2 uv0 = in_uv0, uv1 = in_uv1;
 
     // Alpha decides coverage in every view; other inputs only where a view shows them.
@@ -57,7 +63,7 @@ void main() {
     vec4 base = need_base ? base_color(m, x, in_color, uv0, uv1) : vec4(1.0);
     if (m.alpha_mode == SHERPA_ALPHA_MASK && base.a < m.alpha_cutoff) discard;
 
-    vec3 v = normalize(pc.frame.camera_position.xyz - in_world_pos);
+    vec3 v = normalize(frame.camera_position.xyz - in_world_pos);
     vec3 n = normalize(in_normal);
     vec3 t = in_tangent.xyz;
     t = dot(t, t) > 1e-12 ? normalize(t - n * dot(n, t)) : vec3(1.0, 0.0, 0.0);
@@ -102,12 +108,11 @@ void main() {
         }
         vec2 mr = metallic_roughness(m, x, uv0, uv1);
         Surface s = Surface(base.rgb, mr.x, mr.y, mapped_normal(m, x, t, b, n, uv0, uv1), v);
-        float view_depth = -(pc.frame.view * vec4(in_world_pos, 1.0)).z;
-        // Shadow normal offset along the interpolated normal (cheaper than derivatives).
-        float shadow = sun_shadow(in_world_pos, n, view_depth);
-        c = brdf_times_cos(s, -normalize(pc.frame.sun_direction.xyz)) * pc.frame.sun_radiance.rgb * shadow;
-        for (uint i = 0u; i < pc.frame.params.y; ++i) c += punctual_light(s, pc.frame.lights[i], in_world_pos);
-        c += ambient_light(s, pc.frame.ambient.rgb) * occlusion(m, x, uv0, uv1);
+        float view_depth = -(frame.view * vec4(in_world_pos, 1.0)).z;
+        float shadow = sun_shadow(in_shadow, view_depth);
+        c = brdf_times_cos(s, -normalize(frame.sun_direction.xyz)) * frame.sun_radiance.rgb * shadow;
+        for (uint i = 0u; i < frame.params.y; ++i) c += punctual_light(s, frame.lights[i], in_world_pos);
+        c += ambient_light(s, frame.ambient.rgb) * occlusion(m, x, uv0, uv1);
         c += emission(m, x, uv0, uv1);
         break;
     }

@@ -8,5 +8,5 @@ layout(location = 0) out vec4 out_color;
 void main() {
     LineVertex v = pc.lines.v[gl_VertexIndex];
     out_color = v.color;
-    gl_Position = pc.frame.view_proj * vec4(v.position.xyz, 1.0);
+    gl_Position = frame.view_proj * vec4(v.position.xyz, 1.0);
 }

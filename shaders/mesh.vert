@@ -9,10 +9,17 @@ layout(location = 2) out vec4 out_tangent;
 layout(location = 3) out vec2 out_uv0;
 layout(location = 4) out vec2 out_uv1;
 layout(location = 5) out vec4 out_color;
+// Shadow-map coordinates per cascade. The cascades are orthographic, so these are
+// affine in world space and interpolate exactly; computing them per vertex keeps
+// three matrix products (and their registers) out of the fragment shader.
+layout(location = 6) out vec3 out_shadow[SHADOW_CASCADES];
+
+// Identical math to depth.vert, so the depth prepass and shading agree exactly.
+invariant gl_Position;
 
 void main() {
     uint i = uint(gl_VertexIndex);
-    GPUInstanceData inst = pc.instances.v[gl_InstanceIndex];
+    GPUInstanceData inst = pc.instances.v[pc.instance_ids.v[gl_InstanceIndex]];
     vec4 world = inst.model * vec4(pc.positions.v[i], 1.0);
     mat3 nm = normal_matrix(inst);
     vec4 t = fetch_tangent(i);
@@ -23,5 +30,10 @@ void main() {
     out_uv0 = fetch_uv0(i);
     out_uv1 = fetch_uv1(i);
     out_color = fetch_color(i);
-    gl_Position = pc.frame.view_proj * world;
+    // Normal offset against shadow acne, scaled by each cascade's texel size.
+    vec3 n = out_normal;
+    n = dot(n, n) > 0.0 ? normalize(n) : vec3(0.0);
+    for (uint c = 0u; c < SHADOW_CASCADES; ++c)
+        out_shadow[c] = (frame.shadow_view_proj[c] * vec4(world.xyz + n * (frame.cascade_texel[c] * 1.5), 1.0)).xyz;
+    gl_Position = frame.view_proj * world;
 }

@@ -1,5 +1,5 @@
-// Shared declarations: per-frame data, instances and vertex streams, all fetched
-// through buffer device addresses passed in push constants. C++ twins live in
+// Shared declarations: per-frame data and materials (descriptor set 1), instances
+// and vertex streams (buffer device addresses passed in push constants). C++ twins live in
 // engine/gpu/include/sherpa/gpu/gpu_structs.h with static_asserts on every offset.
 #ifndef SHERPA_COMMON_GLSL
 #define SHERPA_COMMON_GLSL
@@ -12,7 +12,8 @@
 #include "material_extra.glsl"
 
 const uint MAX_LIGHTS = 16;
-const uint MAX_CASCADES = 4;
+const uint MAX_CASCADES = 4;   // array size in the frame block
+const uint SHADOW_CASCADES = 3; // cascades actually used (varyings of mesh.vert)
 
 struct GPULight {
     vec4 position_range;  // xyz world position, w range (0 = infinite)
@@ -21,7 +22,10 @@ struct GPULight {
     vec4 cone;            // x cos(outer), y cos(inner)
 };
 
-layout(buffer_reference, scalar, buffer_reference_align = 16) readonly buffer FrameRef {
+// Per-frame constants and materials come through descriptors, not buffer device
+// addresses: a CPU rasterizer (lavapipe) turns these uniform-indexed loads into one
+// scalar load per draw, where a pointer load costs a gather per pixel.
+layout(set = 1, binding = 0, std140) uniform FrameBlock {
     mat4 view;                              // 0
     mat4 proj;                              // 64
     mat4 view_proj;                         // 128
@@ -33,8 +37,9 @@ layout(buffer_reference, scalar, buffer_reference_align = 16) readonly buffer Fr
     vec4 ambient;                           // 512: rgb ambient radiance
     uvec4 params;                           // 528: x view, y lights, z cascades, w shadow taps
     vec4 overlay;                           // 544: x glyph length
-    GPULight lights[MAX_LIGHTS];            // 560
-};
+    vec4 cascade_texel;                     // 560: world size of a shadow texel per cascade
+    GPULight lights[MAX_LIGHTS];            // 576
+} frame;
 
 struct GPUInstanceData {
     mat4 model;              // 0
@@ -48,11 +53,11 @@ struct GPUInstanceData {
 layout(buffer_reference, scalar, buffer_reference_align = 16) readonly buffer InstanceRef {
     GPUInstanceData v[];
 };
-layout(buffer_reference, scalar, buffer_reference_align = 16) readonly buffer MaterialRef {
-    GPUMaterialData v[];
+layout(set = 1, binding = 1, std430) readonly buffer MaterialBlock {
+    GPUMaterialData materials[]; // the 80-byte records, one SSBO
 };
-layout(buffer_reference, scalar, buffer_reference_align = 16) readonly buffer MaterialExtraRef {
-    GPUMaterialExtra v[];
+layout(set = 1, binding = 2, std430) readonly buffer MaterialExtraBlock {
+    GPUMaterialExtra material_extras[];
 };
 layout(buffer_reference, scalar, buffer_reference_align = 4) readonly buffer Vec2Ref { vec2 v[]; };
 layout(buffer_reference, scalar, buffer_reference_align = 4) readonly buffer Vec3Ref { vec3 v[]; };
@@ -65,23 +70,27 @@ layout(buffer_reference, scalar, buffer_reference_align = 16) readonly buffer Li
     LineVertex v[];
 };
 
+// Which GPU instance each drawn instance is: culling compacts the visible ones here
+// (CPU-written or by shaders/cull.comp); without culling it is the identity.
+layout(buffer_reference, scalar, buffer_reference_align = 4) readonly buffer InstanceIdRef {
+    uint v[];
+};
+
 layout(push_constant, scalar) uniform Push {
-    FrameRef frame;                 // 0
-    InstanceRef instances;          // 8
-    MaterialRef materials;          // 16
-    MaterialExtraRef material_extras; // 24
-    Vec3Ref positions;              // 32
-    Vec3Ref normals;                // 40
-    Vec4Ref tangents;               // 48
-    Vec2Ref uv0;                    // 56
-    Vec2Ref uv1;                    // 64
-    Vec4Ref colors;                 // 72
-    LineRef lines;                  // 80
-    uint material_id;               // 88
-    uint mesh_flags;                // 92
-    uint cascade;                   // 96: shadow cascade, or NO_CASCADE for the camera
-    float glyph_length;             // 100
-    vec4 color;                     // 104: flat colour of overlays
+    InstanceRef instances;          // 0
+    Vec3Ref positions;              // 8
+    Vec3Ref normals;                // 16
+    Vec4Ref tangents;               // 24
+    Vec2Ref uv0;                    // 32
+    Vec2Ref uv1;                    // 40
+    Vec4Ref colors;                 // 48
+    LineRef lines;                  // 56
+    uint material_id;               // 64
+    uint mesh_flags;                // 68
+    uint cascade;                   // 72: shadow cascade, or NO_CASCADE for the camera
+    float glyph_length;             // 76
+    vec4 color;                     // 80: flat colour of overlays
+    InstanceIdRef instance_ids;     // 96: gl_InstanceIndex -> GPU instance
 } pc;
 
 // mesh_flags: which streams the GPU holds (bit = VertexAttribute), provenance, glyph kind.

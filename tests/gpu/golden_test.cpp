@@ -7,6 +7,7 @@
 #include <sherpa/gpu/image_io.h>
 
 #include <cstdlib>
+#include <ostream>
 
 namespace sherpa::test {
 namespace {
@@ -20,6 +21,11 @@ struct GoldenCase {
     std::uint32_t width, height;
     float glyph_length = 0.0f; // 0: automatic
 };
+
+// Test names and failure messages show the case's name, not its bytes.
+void PrintTo(const GoldenCase& c, std::ostream* os) {
+    *os << c.name;
+}
 
 // NormalTangentMirrorTest is seen straight on, as its upstream screenshot is.
 constexpr const char* kMirrorCamera = "eye=0,0,2.45:target=0,0,0:fov=50";

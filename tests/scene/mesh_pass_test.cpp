@@ -107,7 +107,19 @@ TEST(MeshPass, ScenePassesSplitByAlphaMode) {
     expect_consistent(passes.forward);
     EXPECT_LT(passes.forward.batches().size(), passes.forward.live_count())
         << "instances share batches";
-    EXPECT_LE(passes.forward.multi_batches().size(), 4u) << "one multi-batch per pipeline variant";
+    EXPECT_LE(passes.forward.multi_batches().size(), 8u) << "one multi-batch per pipeline state";
+    for (const auto& mb : passes.forward.multi_batches()) {
+        const PipelineState st = pipeline_state(passes.forward.batches()[mb.first].pipeline);
+        EXPECT_NE(st.alpha_mode, AlphaMode::Blend);
+    }
+    for (AlphaMode a : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend})
+        for (bool ds : {false, true})
+            for (bool mir : {false, true}) {
+                const PipelineState st = pipeline_state(pipeline_key(a, ds, mir));
+                EXPECT_EQ(st.alpha_mode, a);
+                EXPECT_EQ(st.double_sided, ds);
+                EXPECT_EQ(st.mirrored, mir);
+            }
 }
 
 } // namespace

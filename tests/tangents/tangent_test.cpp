@@ -191,10 +191,10 @@ TEST(Tangents, CollinearAndCoincidentCornersFallBack) {
     m.triangle(d, d, m.vertex({6, 5, 5}, {1, 0})); // repeated vertex
     const auto e = m.vertex({3, 3, 3}, {0, 0}), f = m.vertex({3, 3, 3}, {1, 0});
     m.triangle(e, f, m.vertex({3, 3, 3}, {0, 1})); // coincident, distinct uvs
-    // MikkTSpace: the collinear triangle still has a well-defined dP/du along its line; its
-    // middle corner (angle 180°) keeps it, its end corners weigh it by a zero angle and
-    // fall back. Lengyel keeps all three collinear corners (no angle weighting).
-    const std::size_t expected[] = {8, 8, 6};
+    // MikkTSpace: corners whose tangent would come only from zero-area triangles fall
+    // back (the reference would still return dP/du along the collinear line). Lengyel,
+    // as textbooks write it, keeps the collinear triangle's dP/du.
+    const std::size_t expected[] = {9, 9, 6};
     for (TangentMethod method : kAllTangentMethods) {
         const Result r = run(m, method);
         expect_finite_unit_orthogonal(r, m);
@@ -202,8 +202,8 @@ TEST(Tangents, CollinearAndCoincidentCornersFallBack) {
                   expected[static_cast<std::size_t>(method)])
             << to_string(method);
         EXPECT_EQ(r.stats.fallbacks(), r.stats.count(TangentFallback::DegeneratePosition));
-        expect_tangent(r.tangents[1], {1, 0, 0}, -1.0f);
     }
+    expect_tangent(run(m, TangentMethod::Lengyel).tangents[1], {1, 0, 0}, -1.0f);
 }
 
 // A degenerate triangle attached to a good one takes the good one's tangent at shared
@@ -293,6 +293,56 @@ TEST(Tangents, MethodsAgreeOnSmoothSurfaces) {
         EXPECT_GT(glm::dot(glm::vec3(mikk.tangents[c]), glm::vec3(lengyel.tangents[c])), 0.999f);
         EXPECT_EQ(mikk.tangents[c].w, lengyel.tangents[c].w);
     }
+}
+
+} // namespace
+} // namespace sherpa
+
+namespace sherpa {
+namespace {
+
+// A workspace carries memory, never results: reusing one across meshes of different
+// sizes and methods gives what fresh calls give.
+TEST(Tangents, WorkspaceReuseNeverChangesResults) {
+    TestMesh small = square(), large;
+    for (int i = 0; i < 40; ++i) {
+        const float x = float(i);
+        const auto a = large.vertex({x, 0, 0}, {x, 1}), b = large.vertex({x + 1, 0, 0}, {x + 1, 1});
+        const auto c = large.vertex({x + 1, 1, 0.5f}, {x + 1, 0}),
+                   d = large.vertex({x, 1, 0.5f}, {x, 0});
+        large.triangle(a, b, c);
+        large.triangle(a, c, d);
+        large.triangle(a, a, c); // dropped (repeated vertex)
+    }
+    TangentWorkspace workspace;
+    for (int round = 0; round < 2; ++round)
+        for (const TestMesh* m : {&large, &small, &large})
+            for (TangentMethod method : kAllTangentMethods) {
+                const Result fresh = run(*m, method);
+                std::vector<glm::vec4> reused(m->indices.size());
+                std::vector<TangentFallback> fallbacks(m->indices.size());
+                const TangentStats stats =
+                    generate_corner_tangents(m->input(), method, reused, fallbacks, &workspace);
+                EXPECT_EQ(reused, fresh.tangents) << to_string(method);
+                EXPECT_EQ(fallbacks, fresh.fallbacks) << to_string(method);
+                EXPECT_EQ(stats.corners, fresh.stats.corners) << to_string(method);
+            }
+}
+
+TEST(Tangents, StatsAddUp) {
+    TangentStats a, b;
+    a.corners[0] = 3;
+    a.corners[static_cast<std::size_t>(TangentFallback::DegenerateUv)] = 2;
+    b.corners[static_cast<std::size_t>(TangentFallback::ZeroResult)] = 1;
+    b.nonfinite_before_guard = 4;
+    b.rescaled_normals = 5;
+    a += b;
+    EXPECT_EQ(a.fallbacks(), 3u);
+    EXPECT_EQ(a.count(TangentFallback::None), 3u);
+    EXPECT_EQ(a.nonfinite_before_guard, 4u);
+    EXPECT_EQ(a.rescaled_normals, 5u);
+    for (std::size_t c = 0; c < kTangentFallbackCauses; ++c)
+        EXPECT_NE(to_string(TangentFallback(c)), "unknown");
 }
 
 } // namespace

@@ -9,35 +9,29 @@ namespace sherpa::gpu {
 
 BindlessTable::BindlessTable(ResourceManager& resources) : resources_(resources) {
     VkDevice device = resources.context().device();
-    std::array<VkDescriptorSetLayoutBinding, 2> bindings{};
-    bindings[0] = {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT,
-                   nullptr};
-    bindings[1] = {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCapacity,
-                   VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+    VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCapacity,
+                                         VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
     // Slots are written while earlier frames that do not read them are in flight.
-    std::array<VkDescriptorBindingFlags, 2> flags{
-        VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT |
-            VK_DESCRIPTOR_BINDING_UPDATE_UNUSED_WHILE_PENDING_BIT,
-        VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT |
-            VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT |
-            VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT |
-            VK_DESCRIPTOR_BINDING_UPDATE_UNUSED_WHILE_PENDING_BIT};
+    const VkDescriptorBindingFlags flags = VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT |
+                                           VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT |
+                                           VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT |
+                                           VK_DESCRIPTOR_BINDING_UPDATE_UNUSED_WHILE_PENDING_BIT;
     auto flags_info = vk_init<VkDescriptorSetLayoutBindingFlagsCreateInfo>(
         VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_BINDING_FLAGS_CREATE_INFO);
-    flags_info.bindingCount = 2;
-    flags_info.pBindingFlags = flags.data();
+    flags_info.bindingCount = 1;
+    flags_info.pBindingFlags = &flags;
     auto lci = vk_init<VkDescriptorSetLayoutCreateInfo>(
         VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
     lci.pNext = &flags_info;
     lci.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT;
-    lci.bindingCount = 2;
-    lci.pBindings = bindings.data();
+    lci.bindingCount = 1;
+    lci.pBindings = &binding;
     VkDescriptorSetLayout layout = VK_NULL_HANDLE;
     vk_check(vkCreateDescriptorSetLayout(device, &lci, nullptr, &layout),
              "vkCreateDescriptorSetLayout");
     layout_ = UniqueDescriptorSetLayout(device, layout);
 
-    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCapacity + 1};
+    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCapacity};
     auto pci = vk_init<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
     pci.flags = VK_DESCRIPTOR_POOL_CREATE_UPDATE_AFTER_BIND_BIT;
     pci.maxSets = 1;
@@ -110,17 +104,13 @@ std::uint32_t BindlessTable::add(VkImageView view, VkSampler sampler) {
         if (next_ >= kCapacity) throw GpuError("bindless texture table is full");
         slot = next_++;
     }
-    write(1, slot, view, sampler, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    write(0, slot, view, sampler, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     return slot;
 }
 
 void BindlessTable::remove(std::uint32_t slot) {
     // The descriptor stays as it is (partially bound): nothing indexes it any more.
     if (slot >= kDefaultTextureCount) free_.push_back(slot);
-}
-
-void BindlessTable::set_shadow_map(VkImageView view, VkSampler compare_sampler) {
-    write(0, 0, view, compare_sampler, VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
 }
 
 } // namespace sherpa::gpu

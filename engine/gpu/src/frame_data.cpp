@@ -5,6 +5,7 @@
 #include <sherpa/gpu/gpu_structs.h>
 #include <sherpa/gpu/shadow_cascades.h>
 
+#include <algorithm>
 #include <cstring>
 
 namespace sherpa::gpu {
@@ -55,11 +56,13 @@ void Renderer::fill_frame_data(FrameSlot& slot, const RenderSettings& settings, 
     cascades = 0;
     if (have_sun && settings.shadows && !settings.floor_only && scene_ &&
         settings.view == DebugView::Lit) {
-        const CascadeSetup c = fit_cascades(slot.camera, info.bounds, sun_dir, settings.cascades,
-                                            options_.shadow_resolution);
+        const CascadeSetup c =
+            fit_cascades(slot.camera, info.bounds, sun_dir,
+                         std::min(settings.cascades, kShadowCascades), options_.shadow_resolution);
         cascades = c.count;
         for (std::uint32_t i = 0; i < c.count; ++i) f.shadow_view_proj[i] = c.view_proj[i];
         f.cascade_splits = c.splits;
+        f.cascade_texel = c.texel;
         f.sun_direction.w = c.count > 0 ? 1.0f : 0.0f;
         // The cascades depend only on these inputs: unchanged means the map is reusable.
         std::vector<std::uint8_t> key(sizeof(c.view_proj) + sizeof(scene_generation_) +
@@ -69,7 +72,8 @@ void Renderer::fill_frame_data(FrameSlot& slot, const RenderSettings& settings, 
                     sizeof(scene_generation_));
         std::memcpy(key.data() + sizeof(c.view_proj) + sizeof(scene_generation_), &cascades,
                     sizeof(cascades));
-        shadows = c.count > 0 && (!shadow_map_valid_ || key != shadow_key_);
+        shadows =
+            c.count > 0 && (!settings.cache_shadows || !shadow_map_valid_ || key != shadow_key_);
         if (shadows) shadow_key_ = std::move(key);
     }
     // Every filtered fetch is expensive on a CPU rasterizer: one 2x2 PCF tap there.

@@ -58,16 +58,18 @@ void Renderer::record_frame(VkCommandBuffer cmd, std::uint32_t index, const Rend
     record_passes(cmd, slot, target, settings);
 }
 
-void Renderer::draw_groups(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p, PipelineId id,
-                           AlphaMode alpha, std::uint32_t cascade, bool cull) {
+void Renderer::draw_groups(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
+                           VkPipeline pipeline, AlphaMode alpha, std::uint32_t cascade, bool cull) {
     if (!scene_) return;
     bool bound = false;
     GPUPushConstants pc = slot.push_base;
     pc.cascade = cascade;
-    for (const DrawGroup& g : scene_->groups()) {
+    const bool culled = cascade == kNoCascade && slot.cull != CullPath::None;
+    for (std::size_t gi = 0; gi < scene_->groups().size(); ++gi) {
+        const DrawGroup& g = scene_->groups()[gi];
         if (g.alpha != alpha) continue;
         if (!bound) {
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(id));
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
             bound = true;
         }
         const GpuMesh& mesh = scene_->meshes()[g.mesh];
@@ -75,6 +77,10 @@ void Renderer::draw_groups(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines
         vkCmdSetFrontFace(cmd,
                           g.mirrored ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
         set_mesh(pc, mesh, g.material);
+        if (culled) {
+            if (draw_culled(cmd, slot, p.layout(), gi, pc)) ++slot.draw_calls;
+            continue;
+        }
         push(cmd, p.layout(), pc);
         vkCmdDrawIndexed(cmd, mesh.index_count, g.instance_count, mesh.first_index, 0,
                          g.first_instance);
@@ -82,7 +88,8 @@ void Renderer::draw_groups(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines
     }
 }
 
-void Renderer::draw_blended(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p) {
+void Renderer::draw_blended(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
+                            VkPipeline pipeline) {
     if (!scene_) return;
     // Back to front by the view depth of each instance's bounds centre.
     struct Item {
@@ -102,10 +109,11 @@ void Renderer::draw_blended(VkCommandBuffer cmd, FrameSlot& slot, const Pipeline
     if (items.empty()) return;
     std::stable_sort(items.begin(), items.end(),
                      [](const Item& a, const Item& b) { return a.depth < b.depth; });
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::ForwardBlend));
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     GPUPushConstants pc = slot.push_base;
     pc.cascade = kNoCascade;
     for (const Item& it : items) {
+        if (slot.cull != CullPath::None && !slot.visible[it.instance]) continue;
         const DrawGroup& g = groups[it.group];
         const GpuMesh& mesh = scene_->meshes()[g.mesh];
         vkCmdSetCullMode(cmd, g.double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
@@ -146,8 +154,8 @@ void Renderer::record_shadows(VkCommandBuffer cmd, FrameSlot& slot, const Pipeli
         set_viewport(cmd, res, res);
         // Standard Z for the light; slope-scaled bias against acne on grazing faces.
         set_depth(cmd, VK_COMPARE_OP_LESS, true, 1.0f, 1.5f);
-        draw_groups(cmd, slot, p, PipelineId::ShadowOpaque, AlphaMode::Opaque, c, false);
-        draw_groups(cmd, slot, p, PipelineId::ShadowMask, AlphaMode::Mask, c, false);
+        draw_groups(cmd, slot, p, p.get(PipelineId::ShadowOpaque), AlphaMode::Opaque, c, false);
+        draw_groups(cmd, slot, p, p.get(PipelineId::ShadowMask), AlphaMode::Mask, c, false);
         vkCmdEndRendering(cmd);
     }
     transition(cmd, {map.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT,
@@ -161,23 +169,20 @@ void Renderer::record_shadows(VkCommandBuffer cmd, FrameSlot& slot, const Pipeli
 
 void Renderer::record_passes(VkCommandBuffer cmd, FrameSlot& slot, const RenderTarget& target,
                              const RenderSettings& settings) {
-    const Pipelines& p = pipelines_for(target.format);
+    Pipelines& p = pipelines_for(target.format);
     ensure_depth(target.width, target.height);
     bool shadows = false;
     std::uint32_t cascades = 0;
     fill_frame_data(slot, settings, float(target.width) / float(target.height), shadows, cascades);
     slot.shadows_rendered = shadows;
     slot.push_base = GPUPushConstants{};
-    slot.push_base.frame = resources_->get(slot.frame_data).address;
-    if (scene_) {
-        slot.push_base.instances = scene_->instances_address();
-        slot.push_base.materials = scene_->materials_address();
-        slot.push_base.material_extras = scene_->material_extras_address();
-    }
+    if (scene_) slot.push_base.instances = scene_->instances_address();
+    bind_frame_set(slot);
     slot.push_base.cascade = kNoCascade;
+    cull_camera(cmd, slot, settings, float(target.width) / float(target.height));
 
-    VkDescriptorSet set = bindless_->set();
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.layout(), 0, 1, &set, 0,
+    const VkDescriptorSet sets[] = {bindless_->set(), slot.set};
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.layout(), 0, 2, sets, 0,
                             nullptr);
     if (scene_ && scene_->index_buffer() != VK_NULL_HANDLE)
         vkCmdBindIndexBuffer(cmd, scene_->index_buffer(), 0, VK_INDEX_TYPE_UINT32);
@@ -188,12 +193,14 @@ void Renderer::record_passes(VkCommandBuffer cmd, FrameSlot& slot, const RenderT
 
     const Image& depth_image = resources_->get(depth_);
     // Both attachments are cleared: their previous contents do not matter.
-    transition(cmd,
-               {target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_NONE,
-                VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT});
+    transition(
+        cmd,
+        {target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+         VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+         // Source stages include transfers: after an earlier frame's readback copy.
+         VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+         VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+         VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT});
     transition(
         cmd,
         {depth_image.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
@@ -231,27 +238,29 @@ void Renderer::record_passes(VkCommandBuffer cmd, FrameSlot& slot, const RenderT
         // Same triangles, one constant colour: what the rasterizer costs by itself.
         set_depth(cmd, VK_COMPARE_OP_GREATER, true);
         for (AlphaMode a : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend})
-            draw_groups(cmd, slot, p, PipelineId::Floor, a, kNoCascade, true);
+            draw_groups(cmd, slot, p, p.get(PipelineId::Floor), a, kNoCascade, true);
         for (std::uint32_t i = 2; i < kTimestampCount - 1; ++i)
             vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ts, i);
     } else {
         if (settings.depth_prepass) {
             set_depth(cmd, VK_COMPARE_OP_GREATER, true);
-            draw_groups(cmd, slot, p, PipelineId::PrepassOpaque, AlphaMode::Opaque, kNoCascade,
+            draw_groups(cmd, slot, p, p.get(PipelineId::PrepassOpaque), AlphaMode::Opaque,
+                        kNoCascade, true);
+            draw_groups(cmd, slot, p, p.get(PipelineId::PrepassMask), AlphaMode::Mask, kNoCascade,
                         true);
-            draw_groups(cmd, slot, p, PipelineId::PrepassMask, AlphaMode::Mask, kNoCascade, true);
         }
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ts, 2);
+        const VkPipeline forward = p.forward(static_cast<std::uint32_t>(settings.view), false);
         // After the prepass only the visible surface passes: shade each pixel once.
         set_depth(cmd,
                   settings.depth_prepass ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_GREATER,
                   !settings.depth_prepass);
-        draw_groups(cmd, slot, p, PipelineId::ForwardOpaque, AlphaMode::Opaque, kNoCascade, true);
+        draw_groups(cmd, slot, p, forward, AlphaMode::Opaque, kNoCascade, true);
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ts, 3);
-        draw_groups(cmd, slot, p, PipelineId::ForwardOpaque, AlphaMode::Mask, kNoCascade, true);
+        draw_groups(cmd, slot, p, forward, AlphaMode::Mask, kNoCascade, true);
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ts, 4);
         set_depth(cmd, VK_COMPARE_OP_GREATER, false);
-        draw_blended(cmd, slot, p);
+        draw_blended(cmd, slot, p, p.forward(static_cast<std::uint32_t>(settings.view), true));
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ts, 5);
     }
     draw_overlays(cmd, slot, p, settings);

@@ -4,6 +4,7 @@
 
 #include "cull_comp.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace sherpa::gpu {
@@ -35,7 +36,7 @@ GPUCullParams cull_params(const Frustum& f, CullMethod method, std::uint32_t obj
     return p;
 }
 
-GpuCuller::GpuCuller(Context& context, ResourceManager& resources)
+GpuCuller::GpuCuller(Context& context, ResourceManager& resources, std::uint32_t parameter_blocks)
     : context_(context), resources_(resources), recorder_(context) {
     const VkDevice device = context.device();
     auto range = VkPushConstantRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(CullPush)};
@@ -72,13 +73,14 @@ GpuCuller::GpuCuller(Context& context, ResourceManager& resources)
         vk_check(vkCreateQueryPool(device, &qi, nullptr, &pool), "vkCreateQueryPool");
         timestamps_ = UniqueQueryPool(device, pool);
     }
-    params_ = resources_.create_buffer(
-        {sizeof(GPUCullParams), kAddressable, MemoryUsage::Upload, "cull params"});
+    for (std::uint32_t b = 0; b < std::max(parameter_blocks, 1u); ++b)
+        params_.push_back(resources_.create_buffer(
+            {sizeof(GPUCullParams), kAddressable, MemoryUsage::Upload, "cull params"}));
 }
 
 GpuCuller::~GpuCuller() {
     release();
-    resources_.destroy(params_);
+    for (BufferHandle& b : params_) resources_.destroy(b);
 }
 
 void GpuCuller::release() {
@@ -89,16 +91,20 @@ void GpuCuller::release() {
     object_instance_.clear();
 }
 
+GPUCullObject make_cull_object(const Aabb& box, std::uint32_t batch, std::uint32_t instance) {
+    const bool invalid = !box.valid() || box_is_invalid(box.min, box.max);
+    return {invalid ? glm::vec3(0.0f) : box.min, batch | (invalid ? kCullInvalidBit : 0u),
+            invalid ? glm::vec3(0.0f) : box.max, instance};
+}
+
 void GpuCuller::build(const MeshPass& pass, std::span<const Aabb> bounds,
                       std::span<const std::uint32_t> gpu_instance,
                       std::span<const GpuMesh> meshes) {
-    release();
     const auto flat = pass.flat_batches();
     const auto batches = pass.batches();
-    if (flat.empty()) return;
     std::vector<GPUCullObject> objects(flat.size());
     std::vector<VkDrawIndexedIndirectCommand> draws(batches.size());
-    object_instance_.resize(flat.size());
+    std::vector<std::uint32_t> object_instance(flat.size());
     for (std::uint32_t b = 0; b < batches.size(); ++b) {
         const IndirectBatch& batch = batches[b];
         if (batch.mesh_id >= meshes.size())
@@ -107,16 +113,19 @@ void GpuCuller::build(const MeshPass& pass, std::span<const Aabb> bounds,
                     batch.first};
         for (std::uint32_t k = batch.first; k < batch.first + batch.count; ++k) {
             const std::uint32_t instance = pass.objects()[flat[k].object].instance;
-            const Aabb& box = bounds[instance];
-            GPUCullObject& o = objects[k];
-            const bool invalid = !box.valid() || box_is_invalid(box.min, box.max);
-            o.min = invalid ? glm::vec3(0.0f) : box.min;
-            o.max = invalid ? glm::vec3(0.0f) : box.max;
-            o.batch = b | (invalid ? kCullInvalidBit : 0u);
-            o.instance = gpu_instance[instance];
-            object_instance_[k] = instance;
+            objects[k] = make_cull_object(bounds[instance], b, gpu_instance[instance]);
+            object_instance[k] = instance;
         }
     }
+    build(objects, draws, std::move(object_instance));
+}
+
+void GpuCuller::build(std::span<const GPUCullObject> objects,
+                      std::span<const VkDrawIndexedIndirectCommand> draws,
+                      std::vector<std::uint32_t> object_instance) {
+    release();
+    if (objects.empty() || draws.empty()) return;
+    object_instance_ = std::move(object_instance);
     objects_count_ = static_cast<std::uint32_t>(objects.size());
     batch_count_ = static_cast<std::uint32_t>(draws.size());
     const VkDeviceSize draw_bytes = draws.size() * sizeof(VkDrawIndexedIndirectCommand);
@@ -134,7 +143,7 @@ void GpuCuller::build(const MeshPass& pass, std::span<const Aabb> bounds,
                                            VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                        MemoryUsage::DeviceLocal, "cull draws"});
     counts_ = resources_.create_buffer(
-        {batches.size() * sizeof(std::uint32_t),
+        {draws.size() * sizeof(std::uint32_t),
          VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
          MemoryUsage::DeviceLocal, "cull draw counts"});
     ids_ = resources_.create_buffer({id_bytes, kAddressable | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
@@ -144,7 +153,7 @@ void GpuCuller::build(const MeshPass& pass, std::span<const Aabb> bounds,
     readback_ =
         resources_.create_buffer({2 * id_bytes + draw_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                   MemoryUsage::Readback, "cull readback"});
-    const std::vector<std::uint32_t> ones(batches.size(), 1u); // each batch is one indirect draw
+    const std::vector<std::uint32_t> ones(draws.size(), 1u); // each batch is one indirect draw
     UploadBatch upload(resources_);
     upload.upload_buffer(objects_, 0, objects.data(), object_bytes);
     upload.upload_buffer(draws_clear_, 0, draws.data(), draw_bytes);
@@ -162,10 +171,13 @@ VkDeviceAddress GpuCuller::instance_ids() const {
     return resources_.get(ids_).address;
 }
 
-void GpuCuller::record(VkCommandBuffer cmd, const Frustum& frustum, CullMethod method) {
+void GpuCuller::record(VkCommandBuffer cmd, const Frustum& frustum, CullMethod method,
+                       std::uint32_t parameter_block, bool timestamps) {
     if (objects_count_ == 0) return;
     const GPUCullParams params = cull_params(frustum, method, objects_count_);
-    std::memcpy(resources_.get(params_).mapped, &params, sizeof(params));
+    const BufferHandle block = params_.at(parameter_block);
+    std::memcpy(resources_.get(block).mapped, &params, sizeof(params));
+    timestamps = timestamps && timestamps_.get() != VK_NULL_HANDLE;
     const VkDeviceSize draw_bytes =
         VkDeviceSize{batch_count_} * sizeof(VkDrawIndexedIndirectCommand);
     // Previous readers of the draws (indirect draws, transfers) finish before the reset.
@@ -180,17 +192,17 @@ void GpuCuller::record(VkCommandBuffer cmd, const Frustum& frustum, CullMethod m
     memory_barrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    if (timestamps_.get() != VK_NULL_HANDLE) {
+    if (timestamps) {
         vkCmdResetQueryPool(cmd, timestamps_.get(), 0, 2);
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, timestamps_.get(), 0);
     }
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
-    const CullPush push{resources_.get(params_).address, resources_.get(objects_).address,
+    const CullPush push{resources_.get(block).address, resources_.get(objects_).address,
                         resources_.get(draws_).address, instance_ids(),
                         resources_.get(visible_).address};
     vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
     vkCmdDispatch(cmd, (objects_count_ + 63) / 64, 1, 1);
-    if (timestamps_.get() != VK_NULL_HANDLE)
+    if (timestamps)
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, timestamps_.get(), 1);
     memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                    VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,

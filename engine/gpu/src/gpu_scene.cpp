@@ -174,7 +174,6 @@ void GpuScene::upload_geometry(const Scene& scene) {
     batch.submit_and_wait();
     memory_.vertex_streams = streams.size();
     memory_.indices = indices.size() * sizeof(std::uint32_t);
-    triangles_ = 0;
 }
 
 void GpuScene::upload_materials(const Scene& scene) {

@@ -35,6 +35,7 @@ struct PipelineDesc {
     bool color = true; // has the colour attachment (false: shadow rendering)
     bool write_color = true;
     bool blend = false;
+    const VkSpecializationInfo* frag_constants = nullptr;
 };
 
 UniquePipeline make_pipeline(VkDevice device, VkPipelineLayout layout, VkFormat color_format,
@@ -49,6 +50,7 @@ UniquePipeline make_pipeline(VkDevice device, VkPipelineLayout layout, VkFormat 
     if (d.frag) {
         stage.stage = VK_SHADER_STAGE_FRAGMENT_BIT;
         stage.module = d.frag;
+        stage.pSpecializationInfo = d.frag_constants;
         stages.push_back(stage);
     }
     // Vertex pulling: no vertex input bindings at all.
@@ -128,15 +130,16 @@ UniquePipeline make_pipeline(VkDevice device, VkPipelineLayout layout, VkFormat 
 
 } // namespace
 
-Pipelines::Pipelines(const Context& context, VkDescriptorSetLayout set_layout,
-                     VkFormat color_format)
-    : color_format_(color_format) {
+Pipelines::Pipelines(const Context& context, VkDescriptorSetLayout textures_layout,
+                     VkDescriptorSetLayout frame_layout, VkFormat color_format)
+    : color_format_(color_format), device_(context.device()) {
     VkDevice device = context.device();
     VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                              sizeof(GPUPushConstants)};
     auto lci = vk_init<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
-    lci.setLayoutCount = 1;
-    lci.pSetLayouts = &set_layout;
+    const VkDescriptorSetLayout set_layouts[] = {textures_layout, frame_layout};
+    lci.setLayoutCount = 2;
+    lci.pSetLayouts = set_layouts;
     lci.pushConstantRangeCount = 1;
     lci.pPushConstantRanges = &push;
     VkPipelineLayout layout = VK_NULL_HANDLE;
@@ -144,12 +147,12 @@ Pipelines::Pipelines(const Context& context, VkDescriptorSetLayout set_layout,
     layout_ = UniquePipelineLayout(device, layout);
 
     // Modules are only needed while the pipelines are created.
-    UniqueShaderModule mesh_vert = make_module(device, spirv_mesh_vert);
+    mesh_vert_ = make_module(device, spirv_mesh_vert);
+    forward_frag_ = make_module(device, spirv_forward_frag);
     UniqueShaderModule depth_vert = make_module(device, spirv_depth_vert);
     UniqueShaderModule glyph_vert = make_module(device, spirv_glyph_vert);
     UniqueShaderModule lines_vert = make_module(device, spirv_lines_vert);
     UniqueShaderModule depth_mask_frag = make_module(device, spirv_depth_mask_frag);
-    UniqueShaderModule forward_frag = make_module(device, spirv_forward_frag);
     UniqueShaderModule flat_frag = make_module(device, spirv_flat_frag);
     UniqueShaderModule floor_frag = make_module(device, spirv_floor_frag);
 
@@ -162,10 +165,6 @@ Pipelines::Pipelines(const Context& context, VkDescriptorSetLayout set_layout,
     make(PipelineId::PrepassMask,
          {depth_vert.get(), depth_mask_frag.get(), VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST,
           VK_POLYGON_MODE_FILL, true, false, false});
-    make(PipelineId::ForwardOpaque, {mesh_vert.get(), forward_frag.get()});
-    make(PipelineId::ForwardBlend,
-         {mesh_vert.get(), forward_frag.get(), VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST,
-          VK_POLYGON_MODE_FILL, true, true, true});
     make(PipelineId::Wireframe, {depth_vert.get(), floor_frag.get(),
                                  VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, VK_POLYGON_MODE_LINE});
     make(PipelineId::Glyphs, {glyph_vert.get(), flat_frag.get(), VK_PRIMITIVE_TOPOLOGY_LINE_LIST});
@@ -178,6 +177,19 @@ Pipelines::Pipelines(const Context& context, VkDescriptorSetLayout set_layout,
     make(PipelineId::ShadowMask,
          {depth_vert.get(), depth_mask_frag.get(), VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST,
           VK_POLYGON_MODE_FILL, false, false, false});
+}
+
+VkPipeline Pipelines::forward(std::uint32_t view, bool blend) {
+    auto& p = forward_[{view, blend}];
+    if (!p) {
+        const VkSpecializationMapEntry entry{0, 0, sizeof(std::uint32_t)};
+        VkSpecializationInfo constants{1, &entry, sizeof(view), &view};
+        PipelineDesc d{mesh_vert_.get(), forward_frag_.get()};
+        d.blend = blend;
+        d.frag_constants = &constants;
+        p = make_pipeline(device_, layout_.get(), color_format_, d);
+    }
+    return p.get();
 }
 
 } // namespace sherpa::gpu

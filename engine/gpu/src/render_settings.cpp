@@ -25,12 +25,13 @@ constexpr std::array<std::pair<DebugView, std::string_view>, 17> kViews{{
     {DebugView::Provenance, "provenance"},
     {DebugView::ShadingNormal, "shading-normal"},
 }};
-constexpr std::array<std::pair<Overlay, std::string_view>, 5> kOverlays{{
+constexpr std::array<std::pair<Overlay, std::string_view>, 6> kOverlays{{
     {kOverlayWireframe, "wireframe"},
     {kOverlayNormals, "normals"},
     {kOverlayTangents, "tangents"},
     {kOverlayBitangents, "bitangents"},
     {kOverlayBounds, "aabb"},
+    {kOverlayCullBoxes, "cull-boxes"},
 }};
 } // namespace
 
@@ -55,6 +56,24 @@ std::vector<std::string_view> debug_view_names() {
 std::optional<Overlay> parse_overlay(std::string_view name) {
     for (auto& [overlay, n] : kOverlays)
         if (n == name) return overlay;
+    return std::nullopt;
+}
+
+std::string_view to_string(CullPath p) {
+    switch (p) {
+    case CullPath::None:
+        return "none";
+    case CullPath::Cpu:
+        return "cpu";
+    case CullPath::Gpu:
+        return "gpu";
+    }
+    return "?";
+}
+
+std::optional<CullPath> parse_cull_path(std::string_view name) {
+    for (CullPath p : {CullPath::None, CullPath::Cpu, CullPath::Gpu})
+        if (to_string(p) == name) return p;
     return std::nullopt;
 }
 

@@ -13,10 +13,9 @@ Renderer::Renderer(Context& context, const RendererOptions& options)
     bindless_ = std::make_unique<BindlessTable>(*resources_);
     for (std::uint32_t i = 0; i < kFramesInFlight; ++i) {
         auto slot = std::make_unique<FrameSlot>(context_);
-        slot->frame_data = resources_->create_buffer(
-            {sizeof(GPUFrameData),
-             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-             MemoryUsage::Upload, "frame data"});
+        slot->frame_data =
+            resources_->create_buffer({sizeof(GPUFrameData), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                       MemoryUsage::Upload, "frame data"});
         auto qi = vk_init<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
         qi.queryType = VK_QUERY_TYPE_TIMESTAMP;
         qi.queryCount = kTimestampCount;
@@ -38,14 +37,93 @@ Renderer::Renderer(Context& context, const RendererOptions& options)
         slots_.push_back(std::move(slot));
     }
     init_shadow_map();
+    create_frame_sets();
+}
+
+void Renderer::create_frame_sets() {
+    VkDevice device = context_.device();
+    const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    const VkDescriptorSetLayoutBinding bindings[] = {
+        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, stages, nullptr},
+        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
+        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
+        {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+    };
+    auto lci = vk_init<VkDescriptorSetLayoutCreateInfo>(
+        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+    lci.bindingCount = 4;
+    lci.pBindings = bindings;
+    VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+    vk_check(vkCreateDescriptorSetLayout(device, &lci, nullptr, &layout),
+             "vkCreateDescriptorSetLayout(frame)");
+    frame_layout_ = UniqueDescriptorSetLayout(device, layout);
+    const VkDescriptorPoolSize sizes[] = {
+        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFramesInFlight},
+        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * kFramesInFlight},
+        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFramesInFlight}};
+    auto pci = vk_init<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
+    pci.maxSets = kFramesInFlight;
+    pci.poolSizeCount = 3;
+    pci.pPoolSizes = sizes;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    vk_check(vkCreateDescriptorPool(device, &pci, nullptr, &pool), "vkCreateDescriptorPool(frame)");
+    frame_pool_ = UniqueDescriptorPool(device, pool);
+    no_materials_ =
+        resources_->create_buffer({sizeof(GPUMaterialExtra), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                   MemoryUsage::Upload, "no materials"});
+    for (auto& slot : slots_) {
+        auto ai =
+            vk_init<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
+        ai.descriptorPool = pool;
+        ai.descriptorSetCount = 1;
+        ai.pSetLayouts = &layout;
+        vk_check(vkAllocateDescriptorSets(device, &ai, &slot->set),
+                 "vkAllocateDescriptorSets(frame)");
+    }
+}
+
+// Points the slot's set at its frame data and the current scene's materials. The
+// slot's previous frame has completed, so the set is not in use.
+void Renderer::bind_frame_set(FrameSlot& slot) {
+    if (slot.set_generation == scene_generation_) return;
+    const VkBuffer none = resources_->get(no_materials_).buffer.get();
+    const VkDescriptorBufferInfo infos[] = {
+        {resources_->get(slot.frame_data).buffer.get(), 0, sizeof(GPUFrameData)},
+        {scene_ ? scene_->materials_buffer() : none, 0, VK_WHOLE_SIZE},
+        {scene_ ? scene_->material_extras_buffer() : none, 0, VK_WHOLE_SIZE},
+    };
+    const VkDescriptorImageInfo shadow{resources_->get(shadow_sampler_),
+                                       resources_->get(shadow_map_).view.get(),
+                                       VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
+    VkWriteDescriptorSet writes[4];
+    writes[3] = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+    writes[3].dstSet = slot.set;
+    writes[3].dstBinding = 3;
+    writes[3].descriptorCount = 1;
+    writes[3].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    writes[3].pImageInfo = &shadow;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+        writes[i] = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        writes[i].dstSet = slot.set;
+        writes[i].dstBinding = i;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType =
+            i == 0 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        writes[i].pBufferInfo = &infos[i];
+    }
+    vkUpdateDescriptorSets(context_.device(), 4, writes, 0, nullptr);
+    slot.set_generation = scene_generation_;
 }
 
 Renderer::~Renderer() {
     context_.wait_idle();
+    if (culling_) resources_->destroy(culling_->identity);
+    culling_.reset();
     scene_.reset();
     for (auto& slot : slots_) {
         resources_->destroy(slot->frame_data);
         resources_->destroy(slot->lines);
+        resources_->destroy(slot->cull_ids);
     }
     slots_.clear();
     resources_->destroy(color_);
@@ -53,6 +131,7 @@ Renderer::~Renderer() {
     resources_->destroy(shadow_map_);
     resources_->destroy(shadow_sampler_);
     resources_->destroy(readback_);
+    resources_->destroy(no_materials_);
     pipelines_.clear();
     bindless_.reset();
     resources_->flush();
@@ -79,7 +158,6 @@ void Renderer::init_shadow_map() {
     si.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
     shadow_sampler_ = resources_->create_sampler(si);
     const Image& img = resources_->get(shadow_map_);
-    bindless_->set_shadow_map(img.view.get(), resources_->get(shadow_sampler_));
 
     // The descriptor names a read-only layout from the start, so the map is cleared
     // (fully lit) and put in that layout before any frame can sample it.
@@ -101,15 +179,17 @@ void Renderer::init_shadow_map() {
     resources_->wait_for(rec.submit(*resources_));
 }
 
-const Pipelines& Renderer::pipelines_for(VkFormat format) {
+Pipelines& Renderer::pipelines_for(VkFormat format) {
     auto& p = pipelines_[format];
-    if (!p) p = std::make_unique<Pipelines>(context_, bindless_->layout(), format);
+    if (!p)
+        p = std::make_unique<Pipelines>(context_, bindless_->layout(), frame_layout_.get(), format);
     return *p;
 }
 
 void Renderer::load(const Scene& scene, StreamPolicy policy) {
     unload();
     scene_ = std::make_unique<GpuScene>(*resources_, *bindless_, scene, policy);
+    build_culling();
     Scene& info = lighting_->info;
     info.bounds = scene_->bounds().valid() ? scene_->bounds() : scene.bounds;
     info.cameras = scene.cameras;
@@ -124,7 +204,10 @@ void Renderer::unload() {
     // Frames in flight may still read the scene's buffers and textures: wait for
     // them, so that the bindless slots the scene gives back can be reused at once.
     for (auto& slot : slots_) wait_slot(*slot);
+    if (culling_) resources_->destroy(culling_->identity);
+    culling_.reset();
     scene_.reset();
+    ++scene_generation_; // frame sets must stop naming the freed material buffers
     lighting_->info = Scene{};
     shadow_key_.clear();
     resources_->collect_garbage();
@@ -233,6 +316,7 @@ FrameStats Renderer::read_stats(FrameSlot& slot) {
     if (!slot.has_results) return s;
     s.shadows_rendered = slot.shadows_rendered;
     s.draw_calls = slot.draw_calls;
+    s.cull = slot.cull_stats;
     if (context_.info().timestamps) {
         std::uint64_t ts[kTimestampCount] = {};
         vk_check(vkGetQueryPoolResults(context_.device(), slot.timestamps.get(), 0, kTimestampCount,

@@ -83,6 +83,7 @@ CascadeSetup fit_cascades(const CameraView& camera, const Aabb& scene_bounds, gl
                             -z_hi - depth_margin, -z_lo + depth_margin);
         out.view_proj[c] = proj * light_view;
         out.splits[c] = slice_far;
+        out.texel[c] = texel;
         slice_near = slice_far;
     }
     out.count = cascades;

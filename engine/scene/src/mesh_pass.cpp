@@ -2,10 +2,23 @@
 
 #include <algorithm>
 
+#include <glm/glm.hpp>
+
 namespace sherpa {
 
-std::uint32_t pipeline_key(AlphaMode mode, bool double_sided) {
-    return static_cast<std::uint32_t>(mode) * 2u + (double_sided ? 1u : 0u);
+std::uint32_t pipeline_key(AlphaMode mode, bool double_sided, bool mirrored) {
+    return static_cast<std::uint32_t>(mode) << 2 | (double_sided ? 2u : 0u) | (mirrored ? 1u : 0u);
+}
+
+PipelineState pipeline_state(std::uint32_t key) {
+    return {static_cast<AlphaMode>(key >> 2), (key & 2u) != 0, (key & 1u) != 0};
+}
+
+std::uint32_t instance_pipeline_key(const Scene& scene, std::uint32_t instance) {
+    const MeshInstance& inst = scene.instances[instance];
+    const MaterialInstance& m = scene.materials[inst.material_id];
+    return pipeline_key(m.alpha_mode, m.double_sided,
+                        glm::determinant(glm::mat3(inst.world)) < 0.0f);
 }
 
 std::uint32_t MeshPass::add(std::uint32_t instance, std::uint32_t mesh_id, std::uint32_t pipeline) {
@@ -83,9 +96,8 @@ ScenePasses build_mesh_passes(const Scene& scene) {
     ScenePasses passes;
     for (std::uint32_t i = 0; i < scene.instances.size(); ++i) {
         const MeshInstance& inst = scene.instances[i];
-        const MaterialInstance& m = scene.materials[inst.material_id];
-        const std::uint32_t key = pipeline_key(m.alpha_mode, m.double_sided);
-        if (m.alpha_mode == AlphaMode::Blend) {
+        const std::uint32_t key = instance_pipeline_key(scene, i);
+        if (pipeline_state(key).alpha_mode == AlphaMode::Blend) {
             passes.transparent.add(i, inst.mesh_id, key);
         } else {
             passes.forward.add(i, inst.mesh_id, key);

@@ -5,6 +5,8 @@
 
 #include <sherpa/scene/mesh_tangents.h>
 
+#include "tangent_internal.h"
+
 namespace sherpa {
 namespace {
 
@@ -24,39 +26,47 @@ std::uint32_t apply_corner_tangents(Mesh& mesh, std::span<const glm::vec4> corne
     if (corner_tangents.size() != mesh.indices.size())
         throw std::invalid_argument("apply_corner_tangents: one tangent per index expected");
     const std::size_t original_count = mesh.vertices.size();
-    // For each vertex, the chain of its copies: next_copy[v] is the next vertex carrying
-    // the same attributes with another tangent. written[v] says whether v holds a tangent
-    // of this pass yet.
-    std::vector<std::uint32_t> next_copy(original_count, kNone);
+    // Pass 1 decides which vertex carries each corner's tangent, without growing the mesh:
+    // a vertex and its copies form a chain (next_copy), tangent_of holds each one's
+    // tangent of this pass, source_of each copy's original; written[v] says whether v
+    // has a tangent of this pass yet.
+    std::vector<glm::vec4> tangent_of(original_count);
+    std::vector<std::uint32_t> next_copy(original_count, kNone), source_of;
     std::vector<std::uint8_t> written(original_count, 0);
-    const bool has_colors = mesh.colors.size() == original_count;
     for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
         const glm::vec4& tangent = corner_tangents[c];
-        std::uint32_t v = mesh.indices[c];
-        if (!written[v]) {
-            mesh.vertices[v].tangent = tangent;
-            written[v] = 1;
+        const std::uint32_t original = mesh.indices[c];
+        if (!written[original]) {
+            tangent_of[original] = tangent;
+            written[original] = 1;
             continue;
         }
-        // Walk the copies for one holding this exact tangent; append a copy otherwise.
-        std::uint32_t last = v;
-        while (v != kNone && !same_bits(mesh.vertices[v].tangent, tangent)) {
+        // Walk the copies for one holding this exact tangent; add a copy otherwise.
+        std::uint32_t v = original, last = original;
+        while (v != kNone && !same_bits(tangent_of[v], tangent)) {
             last = v;
             v = next_copy[v];
         }
         if (v == kNone) {
-            v = static_cast<std::uint32_t>(mesh.vertices.size());
-            Vertex copy = mesh.vertices[last];
-            copy.tangent = tangent;
-            mesh.vertices.push_back(copy);
-            if (has_colors) mesh.colors.push_back(mesh.colors[last]);
+            v = static_cast<std::uint32_t>(tangent_of.size());
+            tangent_of.push_back(tangent);
             next_copy.push_back(kNone);
-            written.push_back(1);
             next_copy[last] = v;
+            source_of.push_back(original);
         }
         mesh.indices[c] = v;
     }
-    return static_cast<std::uint32_t>(mesh.vertices.size() - original_count);
+    // Pass 2 grows the mesh once and writes the tangents.
+    const bool has_colors = mesh.colors.size() == original_count;
+    mesh.vertices.reserve(tangent_of.size());
+    for (std::uint32_t source : source_of) mesh.vertices.push_back(mesh.vertices[source]);
+    if (has_colors) {
+        mesh.colors.reserve(tangent_of.size());
+        for (std::uint32_t source : source_of) mesh.colors.push_back(mesh.colors[source]);
+    }
+    for (std::size_t v = 0; v < tangent_of.size(); ++v)
+        if (v >= original_count || written[v]) mesh.vertices[v].tangent = tangent_of[v];
+    return static_cast<std::uint32_t>(source_of.size());
 }
 
 MeshTangentInput tangent_input_of(const Mesh& mesh, std::uint32_t tex_coord) {
@@ -76,16 +86,31 @@ TangentInput MeshTangentInput::view(const Mesh& mesh) const {
     return TangentInput{positions, normals, uvs, mesh.indices};
 }
 
-MeshTangentReport generate_mesh_tangents(Mesh& mesh, std::uint32_t tex_coord,
-                                         TangentMethod method) {
+MeshTangentReport generate_mesh_tangents(Mesh& mesh, std::uint32_t tex_coord, TangentMethod method,
+                                         TangentWorkspace* workspace) {
     MeshTangentReport report;
     report.tex_coord = tex_coord > 1 ? 0 : tex_coord;
     if (tex_coord > 1)
         report.reason = "TEXCOORD_" + std::to_string(tex_coord) + " is not kept; used TEXCOORD_0";
-    const MeshTangentInput input = tangent_input_of(mesh, report.tex_coord);
-    std::vector<glm::vec4> corners(mesh.indices.size());
-    report.stats = generate_corner_tangents(input.view(mesh), method, corners);
-    report.split_vertices = apply_corner_tangents(mesh, corners);
+    // The mesh's streams and the per-corner result live in the workspace, so a thread
+    // working through a scene's meshes reuses their memory.
+    TangentWorkspace local;
+    tangent_detail::MeshScratch& scratch = (workspace ? *workspace : local).buffers().mesh;
+    const std::size_t vertex_count = mesh.vertices.size();
+    scratch.positions.resize(vertex_count);
+    scratch.normals.resize(vertex_count);
+    scratch.uvs.resize(vertex_count);
+    for (std::size_t i = 0; i < vertex_count; ++i) {
+        const Vertex& v = mesh.vertices[i];
+        scratch.positions[i] = v.position;
+        scratch.normals[i] = v.normal;
+        scratch.uvs[i] = report.tex_coord == 1 ? v.uv1 : v.uv0;
+    }
+    scratch.corners.resize(mesh.indices.size());
+    const TangentInput input{scratch.positions, scratch.normals, scratch.uvs, mesh.indices};
+    report.stats = generate_corner_tangents(input, method, scratch.corners, {},
+                                            workspace ? workspace : &local);
+    report.split_vertices = apply_corner_tangents(mesh, scratch.corners);
     mesh.provenance[attribute_slot(VertexAttribute::Tangent)] = Provenance::Generated;
     report.generated = true;
     return report;
@@ -97,29 +122,34 @@ SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptio
     const auto mesh_count = static_cast<std::int64_t>(scene.meshes.size());
     // Meshes are independent; dynamic scheduling because their sizes vary by orders of
     // magnitude. Exceptions cannot cross the OpenMP region, so they become reasons.
-#pragma omp parallel for schedule(dynamic, 1)
-    for (std::int64_t i = 0; i < mesh_count; ++i) {
-        Mesh& mesh = scene.meshes[static_cast<std::size_t>(i)];
-        MeshTangentReport& out = report.meshes[static_cast<std::size_t>(i)];
-        const bool authored = mesh.provenance_of(VertexAttribute::Tangent) == Provenance::Authored;
-        const MaterialInstance* material = mesh.material_id < scene.materials.size()
-                                               ? &scene.materials[mesh.material_id]
-                                               : nullptr;
-        const bool normal_texture = material && material->normal.present();
-        if (!options.regenerate && authored) {
-            out.reason = "authored TANGENT kept";
-            continue;
-        }
-        if (!options.regenerate && !normal_texture) {
-            out.reason = "no normal texture: tangents not needed";
-            continue;
-        }
-        const std::uint32_t set = normal_texture ? material->normal.tex_coord : 0;
-        try {
-            out = generate_mesh_tangents(mesh, set, options.method);
-            if (out.reason.empty()) out.reason = authored ? "regenerated" : "generated";
-        } catch (const std::exception& e) {
-            out.reason = std::string("tangent generation failed: ") + e.what();
+#pragma omp parallel
+    {
+        TangentWorkspace workspace;
+#pragma omp for schedule(dynamic, 1)
+        for (std::int64_t i = 0; i < mesh_count; ++i) {
+            Mesh& mesh = scene.meshes[static_cast<std::size_t>(i)];
+            MeshTangentReport& out = report.meshes[static_cast<std::size_t>(i)];
+            const bool authored =
+                mesh.provenance_of(VertexAttribute::Tangent) == Provenance::Authored;
+            const MaterialInstance* material = mesh.material_id < scene.materials.size()
+                                                   ? &scene.materials[mesh.material_id]
+                                                   : nullptr;
+            const bool normal_texture = material && material->normal.present();
+            if (!options.regenerate && authored) {
+                out.reason = "authored TANGENT kept";
+                continue;
+            }
+            if (!options.regenerate && !normal_texture) {
+                out.reason = "no normal texture: tangents not needed";
+                continue;
+            }
+            const std::uint32_t set = normal_texture ? material->normal.tex_coord : 0;
+            try {
+                out = generate_mesh_tangents(mesh, set, options.method, &workspace);
+                if (out.reason.empty()) out.reason = authored ? "regenerated" : "generated";
+            } catch (const std::exception& e) {
+                out.reason = std::string("tangent generation failed: ") + e.what();
+            }
         }
     }
     for (const MeshTangentReport& m : report.meshes) {

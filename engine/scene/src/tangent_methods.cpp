@@ -52,6 +52,11 @@ std::uint64_t TangentStats::fallbacks() const {
     return total;
 }
 
+TangentWorkspace::TangentWorkspace() : buffers_(std::make_unique<Buffers>()) {}
+TangentWorkspace::~TangentWorkspace() = default;
+TangentWorkspace::TangentWorkspace(TangentWorkspace&&) noexcept = default;
+TangentWorkspace& TangentWorkspace::operator=(TangentWorkspace&&) noexcept = default;
+
 TangentStats& TangentStats::operator+=(const TangentStats& o) {
     for (std::size_t i = 0; i < corners.size(); ++i) corners[i] += o.corners[i];
     nonfinite_before_guard += o.nonfinite_before_guard;
@@ -63,15 +68,19 @@ namespace tangent_detail {
 
 void lengyel_corners(const TangentInput& in, std::span<glm::vec4> out,
                      std::span<std::uint8_t> assigned, std::uint64_t& rescaled_normals,
-                     std::uint64_t& nonfinite_unguarded) {
-    // Per indexed vertex: sums of each triangle's dP/du and dP/dv, unnormalised, so
-    // larger triangles (in uv space: smaller) weigh more. A triangle whose uv area is
-    // zero makes the textbook formula divide by zero; it is left out here, and the
-    // vertices it would have poisoned are counted.
+                     std::uint64_t& nonfinite_unguarded, MethodScratch& scratch) {
+    // Per indexed vertex: the plain sum of its triangles' dP/du and dP/dv (no angle
+    // weights, no welding by value, no handedness groups: the textbook method). A
+    // triangle whose uv area is zero makes the textbook formula divide by zero; it is
+    // left out here, and the corners it would have poisoned are counted.
     const std::size_t vertex_count = in.positions.size();
-    std::vector<glm::vec3> sdir_sum(vertex_count, glm::vec3(0.0f));
-    std::vector<glm::vec3> tdir_sum(vertex_count, glm::vec3(0.0f));
-    std::vector<std::uint8_t> poisoned(vertex_count, 0);
+    auto& sdir_sum = scratch.sdir_sum;
+    auto& tdir_sum = scratch.tdir_sum;
+    // Per vertex: bit 0 poisoned by a non-finite triangle, bit 1 already counted.
+    auto& state = scratch.flags;
+    sdir_sum.assign(vertex_count, glm::vec3(0.0f));
+    tdir_sum.assign(vertex_count, glm::vec3(0.0f));
+    state.assign(vertex_count, 0);
     for (std::size_t c = 0; c < in.indices.size(); c += 3) {
         const std::uint32_t i0 = in.indices[c], i1 = in.indices[c + 1], i2 = in.indices[c + 2];
         const glm::vec3 e1 = in.positions[i1] - in.positions[i0];
@@ -81,7 +90,9 @@ void lengyel_corners(const TangentInput& in, std::span<glm::vec4> out,
         const glm::vec3 sdir = (e1 * duv2.y - e2 * duv1.y) * r;
         const glm::vec3 tdir = (e2 * duv1.x - e1 * duv2.x) * r;
         if (!finite(sdir) || !finite(tdir)) {
-            poisoned[i0] = poisoned[i1] = poisoned[i2] = 1;
+            state[i0] |= 1;
+            state[i1] |= 1;
+            state[i2] |= 1;
             continue;
         }
         for (std::uint32_t v : {i0, i1, i2}) {
@@ -89,18 +100,17 @@ void lengyel_corners(const TangentInput& in, std::span<glm::vec4> out,
             tdir_sum[v] += tdir;
         }
     }
-    std::vector<std::uint8_t> counted(vertex_count, 0);
     for (std::size_t c = 0; c < in.indices.size(); ++c) {
         const std::uint32_t v = in.indices[c];
         bool rescaled = false;
         const glm::vec3 n = projection_normal(in.normals[v], rescaled);
-        if (!counted[v]) {
-            counted[v] = 1;
+        if (!(state[v] & 2)) {
+            state[v] |= 2;
             rescaled_normals += rescaled ? 1 : 0;
         }
-        nonfinite_unguarded += poisoned[v];
+        nonfinite_unguarded += state[v] & 1;
         const glm::vec3 t = sdir_sum[v] - n * dot3(n, sdir_sum[v]);
-        if (!not_zero(t) || !finite(t)) {
+        if (!not_zero(t) || !finite(t) || !usable_normal(n)) {
             out[c] = glm::vec4(1.0f, 0.0f, 0.0f, 1.0f);
             assigned[c] = 0;
             continue;
@@ -123,9 +133,8 @@ TangentFallback classify(const TangentInput& in, std::size_t corner) {
         !finite(in.uvs[i0]) || !finite(in.uvs[i1]) || !finite(in.uvs[i2]) || !finite(n))
         return TangentFallback::NonFiniteInput;
     if (dot3(n, n) == 0.0f) return TangentFallback::InvalidNormal;
-    const glm::vec3 d1 = in.positions[i1] - in.positions[i0];
-    const glm::vec3 d2 = in.positions[i2] - in.positions[i0];
-    if (!not_zero(glm::cross(d1, d2))) return TangentFallback::DegeneratePosition;
+    if (zero_area(in.positions[i0], in.positions[i1], in.positions[i2]))
+        return TangentFallback::DegeneratePosition;
     const glm::vec2 t1 = in.uvs[i1] - in.uvs[i0], t2 = in.uvs[i2] - in.uvs[i0];
     if (!tangent_detail::not_zero(t1.x * t2.y - t1.y * t2.x)) return TangentFallback::DegenerateUv;
     return TangentFallback::ZeroResult;
@@ -172,7 +181,8 @@ glm::vec4 fallback_tangent(const TangentInput& in, std::size_t corner, const glm
 
 TangentStats generate_corner_tangents(const TangentInput& in, TangentMethod method,
                                       std::span<glm::vec4> out,
-                                      std::span<TangentFallback> fallbacks) {
+                                      std::span<TangentFallback> fallbacks,
+                                      TangentWorkspace* workspace) {
     using namespace tangent_detail;
     if (in.normals.size() != in.positions.size() || in.uvs.size() != in.positions.size())
         throw std::invalid_argument("tangents: positions, normals and uvs differ in size");
@@ -180,20 +190,27 @@ TangentStats generate_corner_tangents(const TangentInput& in, TangentMethod meth
         throw std::invalid_argument("tangents: index count is not a multiple of 3");
     if (out.size() != in.indices.size() || (!fallbacks.empty() && fallbacks.size() != out.size()))
         throw std::invalid_argument("tangents: output size differs from the index count");
+    if (in.indices.size() >= (std::size_t(1) << 31))
+        throw std::invalid_argument("tangents: more than 2^31 corners in one call");
     for (std::uint32_t i : in.indices)
         if (i >= in.positions.size())
             throw std::invalid_argument("tangents: index " + std::to_string(i) +
                                         " is out of range");
 
+    TangentWorkspace local;
+    TangentWorkspace::Buffers& buffers = (workspace ? *workspace : local).buffers();
     TangentStats stats;
-    std::vector<std::uint8_t> assigned(out.size());
+    auto& assigned = buffers.method.assigned;
+    assigned.resize(out.size());
     if (method == TangentMethod::Lengyel) {
-        lengyel_corners(in, out, assigned, stats.rescaled_normals, stats.nonfinite_before_guard);
+        lengyel_corners(in, out, assigned, stats.rescaled_normals, stats.nonfinite_before_guard,
+                        buffers.method);
     } else {
-        mikktspace_corners(in, out, assigned, stats.rescaled_normals);
+        mikktspace_corners(in, out, assigned, stats.rescaled_normals, buffers);
         if (method == TangentMethod::MikkTSpaceWelded) {
             // One tangent per indexed vertex: the last corner written wins.
-            std::vector<std::uint32_t> last_corner(in.positions.size());
+            auto& last_corner = buffers.method.last_corner;
+            last_corner.resize(in.positions.size());
             for (std::size_t c = 0; c < out.size(); ++c)
                 last_corner[in.indices[c]] = static_cast<std::uint32_t>(c);
             for (std::size_t c = 0; c < out.size(); ++c) {
@@ -204,16 +221,16 @@ TangentStats generate_corner_tangents(const TangentInput& in, TangentMethod meth
         }
     }
 
+    // The methods mark every corner they could not compute (see tangent_internal.h), so
+    // the guard only visits those.
     for (std::size_t c = 0; c < out.size(); ++c) {
-        const glm::vec4 t = out[c];
-        const bool t_finite = finite(t);
-        if (!t_finite && method != TangentMethod::Lengyel) ++stats.nonfinite_before_guard;
-        const glm::vec3 n = in.normals[in.indices[c]];
-        const bool normal_ok = finite(n) && not_zero(n);
         TangentFallback cause = TangentFallback::None;
-        if (!assigned[c] || !t_finite || !not_zero(glm::vec3(t)) || !normal_ok) {
+        if (!assigned[c]) {
+            const glm::vec4 t = out[c];
+            const bool t_finite = finite(t);
+            if (!t_finite && method != TangentMethod::Lengyel) ++stats.nonfinite_before_guard;
             cause = classify(in, c);
-            out[c] = fallback_tangent(in, c, t, assigned[c] && t_finite);
+            out[c] = fallback_tangent(in, c, t, t_finite && not_zero(glm::vec3(t)));
         }
         ++stats.corners[static_cast<std::size_t>(cause)];
         if (!fallbacks.empty()) fallbacks[c] = cause;

@@ -12,11 +12,21 @@
 //  6. per group: split it into subgroups by tangent direction, then average each
 //     subgroup's projected dP/du weighted by the corner angles;
 //  7. corners of dropped triangles copy the first kept corner of their vertex.
-// What differs is the data layout and the work avoided: per-group projections are
-// computed once instead of once per pair, and the subgroup search is skipped when every
-// pair in a group agrees (the common case).
+// What differs is the data layout and the work avoided: welding hashes indexed vertices
+// instead of gridding corners, edges are bucketed instead of quicksorted, per-group
+// projections are computed once instead of once per pair, the subgroup search is skipped
+// when every pair in a group provably agrees (the common case), and acos is a polynomial.
+// Results equal the reference's to float rounding (about 1e-5 degrees), except where the
+// reference returns nothing usable, on purpose:
+//  - lengths are computed without overflow/underflow (coordinates beyond ~1e19 or below
+//    ~1e-19 lose their triangles in the reference);
+//  - normals further than kNormalUnitTolerance from unit length are rescaled before
+//    projecting (the reference's projection is then not orthogonal);
+//  - a corner whose tangent would come only from zero-area triangles is left to the
+//    guard (the reference returns dP/du along a collinear line, or zero).
 #include <algorithm>
 
+#include "tangent_corner_angles.h"
 #include "tangent_internal.h"
 
 namespace sherpa::tangent_detail {
@@ -24,27 +34,19 @@ namespace {
 
 constexpr std::uint8_t kOrientPreserving = 1; // uv winding agrees with position winding
 constexpr std::uint8_t kGroupWithAny = 2;     // zero uv area or zero tangent magnitude
+// Zero area in position space (collinear or coincident corners). The reference still
+// uses such triangles; a corner whose tangent comes from nothing but them gets the
+// fallback instead (its dP/du only runs along a line, or nowhere).
+constexpr std::uint8_t kZeroArea = 4;
 constexpr std::uint32_t kNoGroup = ~0u;
 
-// Per kept triangle, structure of arrays.
-struct Triangles {
-    std::vector<std::uint32_t> original; // triangle index in the input
-    std::vector<std::uint32_t> cls;      // 3 welded classes per triangle
-    std::vector<glm::vec3> os, ot;       // unit dP/du, dP/dv (zero when undefined)
-    std::vector<std::uint8_t> flags;     // kOrientPreserving | kGroupWithAny
-    std::vector<std::int32_t> neighbour; // 3 per triangle, across edge (i, i+1)
-    std::vector<std::uint32_t> group_of; // 3 per triangle: the corner's group
-    std::vector<float> angle;            // 3 per triangle: the corner's weight
-};
-
-struct Group {
-    std::uint32_t cls;         // the welded vertex the group is around
-    std::uint32_t first, size; // range in the face buffer
-    bool orient_preserving;
-};
-
-void compute_triangle_frames(const TangentInput& in, Triangles& tris) {
+// Per kept triangle: unit dP/du and dP/dv with orientation and degeneracy flags (the
+// reference's InitTriInfo), and the weight of each corner: the angle between its two
+// edges projected onto the tangent plane of the corner's normal (computed here, in one
+// streaming pass, rather than from inside the groups).
+void compute_triangle_frames(const TangentInput& in, const WeldedCorners& weld, TriangleSet& tris) {
     const std::size_t count = tris.original.size();
+    tris.angle.resize(3 * count);
     tris.os.assign(count, glm::vec3(0.0f));
     tris.ot.assign(count, glm::vec3(0.0f));
     tris.flags.assign(count, kGroupWithAny);
@@ -60,6 +62,7 @@ void compute_triangle_frames(const TangentInput& in, Triangles& tris) {
         const glm::vec3 os = t31y * d1 - t21y * d2;
         const glm::vec3 ot = -t31x * d1 + t21x * d2;
         std::uint8_t flags = kGroupWithAny | (signed_area_x2 > 0.0f ? kOrientPreserving : 0);
+        if (zero_area(p1, p2, p3)) flags |= kZeroArea;
         if (not_zero(signed_area_x2)) {
             const float abs_area = std::fabs(signed_area_x2);
             const float len_os = robust_length(os), len_ot = robust_length(ot);
@@ -69,6 +72,14 @@ void compute_triangle_frames(const TangentInput& in, Triangles& tris) {
             if (not_zero(len_os / abs_area) && not_zero(len_ot / abs_area)) flags &= ~kGroupWithAny;
         }
         tris.flags[f] = flags;
+        const glm::vec3 p[3] = {p1, p2, p3};
+        const glm::vec3 n[3] = {weld.class_normal[tris.cls[3 * f]],
+                                weld.class_normal[tris.cls[3 * f + 1]],
+                                weld.class_normal[tris.cls[3 * f + 2]]};
+        if (!triangle_corner_angles(p, n, &tris.angle[3 * f]))
+            for (int c = 0; c < 3; ++c)
+                tris.angle[3 * f + c] =
+                    corner_angle(p[(c + 2) % 3] - p[c], p[(c + 1) % 3] - p[c], n[c]);
     }
 }
 
@@ -86,27 +97,34 @@ std::uint32_t member(std::size_t triangle, int corner) {
 // reference recurses into the left neighbour, then the right; an explicit stack visits
 // triangles in the same order, which matters: the first group to reach a "group with
 // any" triangle decides that triangle's orientation.
-std::vector<Group> build_groups(Triangles& tris, std::vector<std::uint32_t>& members) {
+void build_groups(TriangleSet& tris, GroupScratch& scratch) {
     const std::size_t count = tris.original.size();
     tris.group_of.assign(3 * count, kNoGroup);
-    members.clear();
-    members.reserve(3 * count);
-    std::vector<Group> groups;
-    groups.reserve(count);
-    std::vector<std::int32_t> stack;
+    // Sized up front to their bounds (every corner joins at most one group; a group holds
+    // a triangle at most once, and each triangle it takes pushes two neighbours), so the
+    // walk below needs no capacity checks.
+    scratch.members.resize(3 * count);
+    scratch.stack.resize(2 * count + 2);
+    std::uint32_t* members = scratch.members.data();
+    std::int32_t* stack = scratch.stack.data();
+    std::size_t member_count = 0;
+    auto& groups = scratch.groups;
+    groups.clear();
+    groups.reserve(count); // typically about one group per vertex: half the triangles
     for (std::size_t f = 0; f < count; ++f) {
         if (tris.flags[f] & kGroupWithAny) continue;
         for (int i = 0; i < 3; ++i) {
             if (tris.group_of[3 * f + i] != kNoGroup) continue;
             const auto id = static_cast<std::uint32_t>(groups.size());
-            Group g{tris.cls[3 * f + i], static_cast<std::uint32_t>(members.size()), 0,
+            Group g{tris.cls[3 * f + i], static_cast<std::uint32_t>(member_count), 0,
                     (tris.flags[f] & kOrientPreserving) != 0};
-            members.push_back(member(f, i));
+            members[member_count++] = member(f, i);
             tris.group_of[3 * f + i] = id;
-            stack.assign({tris.neighbour[3 * f + (i + 2) % 3], tris.neighbour[3 * f + i]});
-            while (!stack.empty()) {
-                const std::int32_t t = stack.back();
-                stack.pop_back();
+            std::size_t top = 0;
+            stack[top++] = tris.neighbour[3 * f + (i + 2) % 3];
+            stack[top++] = tris.neighbour[3 * f + i];
+            while (top > 0) {
+                const std::int32_t t = stack[--top];
                 if (t < 0) continue;
                 const std::uint32_t* cls3 = &tris.cls[3 * std::size_t(t)];
                 std::uint32_t* assigned = &tris.group_of[3 * std::size_t(t)];
@@ -117,66 +135,61 @@ std::vector<Group> build_groups(Triangles& tris, std::vector<std::uint32_t>& mem
                     assigned[2] == kNoGroup)
                     flags = (flags & ~kOrientPreserving) | (g.orient_preserving ? 1 : 0);
                 if (((flags & kOrientPreserving) != 0) != g.orient_preserving) continue;
-                members.push_back(member(std::size_t(t), c));
+                members[member_count++] = member(std::size_t(t), c);
                 assigned[c] = id;
                 const std::int32_t* nb = &tris.neighbour[3 * std::size_t(t)];
-                stack.push_back(nb[(c + 2) % 3]); // right, visited after all of left
-                stack.push_back(nb[c]);           // left
+                stack[top++] = nb[(c + 2) % 3]; // right, visited after all of left
+                stack[top++] = nb[c];           // left
             }
-            g.size = static_cast<std::uint32_t>(members.size()) - g.first;
+            g.size = static_cast<std::uint32_t>(member_count) - g.first;
             groups.push_back(g);
         }
     }
-    return groups;
+    scratch.members.resize(member_count);
 }
 
-// acos on [-1, 1] from Abramowitz & Stegun 4.4.46 (|error| <= 2e-8 rad): the angle
-// weights only need float accuracy, and this is several times cheaper than acosf.
-float fast_acos(float x) {
-    const float a = std::fabs(x);
-    float p = -0.0012624911f;
-    p = p * a + 0.0066700901f;
-    p = p * a - 0.0170881256f;
-    p = p * a + 0.0308918810f;
-    p = p * a - 0.0501743046f;
-    p = p * a + 0.0889789874f;
-    p = p * a - 0.2145988016f;
-    p = p * a + 1.5707963050f;
-    const float r = std::sqrt(1.0f - a) * p;
-    return x < 0.0f ? 3.14159265f - r : r;
-}
-
-// The angle of every kept corner between its two edges, projected onto the tangent
-// plane of the corner's normal: the weight MikkTSpace gives the triangle at that vertex.
-// One streaming pass instead of random access from inside the groups.
-void compute_corner_angles(const TangentInput& in, const WeldedCorners& weld, Triangles& tris) {
-    const std::size_t count = tris.original.size();
-    tris.angle.resize(3 * count);
-    for (std::size_t f = 0; f < count; ++f) {
-        const std::uint32_t* idx = &in.indices[3 * std::size_t(tris.original[f])];
-        const glm::vec3 p[3] = {in.positions[idx[0]], in.positions[idx[1]], in.positions[idx[2]]};
-        for (int c = 0; c < 3; ++c) {
-            const glm::vec3 n = weld.class_normal[tris.cls[3 * f + c]];
-            const glm::vec3 v1 = project_normalized(p[(c + 2) % 3] - p[c], n);
-            const glm::vec3 v2 = project_normalized(p[(c + 1) % 3] - p[c], n);
-            tris.angle[3 * f + c] = fast_acos(std::clamp(dot3(v1, v2), -1.0f, 1.0f));
-        }
+// For four group members: dP/du projected onto the tangent plane of n and normalised,
+// and dP/dv projected only, in SIMD lanes with the scalar code's operations. Returns
+// false (writing nothing) where a length needs robust_length's rescaling.
+bool project_members(const TriangleSet& tris, const std::uint32_t* members, const glm::vec3& n,
+                     glm::vec3* os_out, glm::vec3* ot_out) {
+    const glm::vec3 &s0 = tris.os[members[0] >> 2], &s1 = tris.os[members[1] >> 2],
+                    &s2 = tris.os[members[2] >> 2], &s3 = tris.os[members[3] >> 2];
+    const glm::vec3 &t0 = tris.ot[members[0] >> 2], &t1 = tris.ot[members[1] >> 2],
+                    &t2 = tris.ot[members[2] >> 2], &t3 = tris.ot[members[3] >> 2];
+    const LaneVec normal{Lanes{} + n.x, Lanes{} + n.y, Lanes{} + n.z};
+    const LaneVec os{Lanes{s0.x, s1.x, s2.x, s3.x}, Lanes{s0.y, s1.y, s2.y, s3.y},
+                     Lanes{s0.z, s1.z, s2.z, s3.z}};
+    const LaneVec ot{Lanes{t0.x, t1.x, t2.x, t3.x}, Lanes{t0.y, t1.y, t2.y, t3.y},
+                     Lanes{t0.z, t1.z, t2.z, t3.z}};
+    LaneMask in_range = LaneMask{} == 0;
+    const LaneVec u = lane_project_normalized(os, normal, in_range);
+    if (!(in_range[0] & in_range[1] & in_range[2] & in_range[3])) return false;
+    const Lanes d = lane_dot(normal, ot);
+    const LaneVec v{ot.x - normal.x * d, ot.y - normal.y * d, ot.z - normal.z * d};
+    for (int k = 0; k < 4; ++k) {
+        os_out[k] = glm::vec3(u.x[k], u.y[k], u.z[k]);
+        ot_out[k] = glm::vec3(v.x[k], v.y[k], v.z[k]);
     }
+    return true;
 }
 
-// Angle-weighted average of the projected dP/du over `sorted` (members in ascending
-// triangle order; `proj_os[k]` belongs to sorted[k]): the reference's EvalTspace.
-glm::vec3 eval_tangent(const Triangles& tris, std::span<const std::uint32_t> sorted,
+// Angle-weighted average of the projected dP/du over `sorted` (members, in ascending
+// triangle order to sum like the reference; `proj_os[k]` belongs to sorted[k]): the
+// reference's EvalTspace.
+glm::vec3 eval_tangent(const TriangleSet& tris, std::span<const std::uint32_t> sorted,
                        std::span<const glm::vec3> proj_os) {
     glm::vec3 sum(0.0f);
+    bool any_area = false;
     for (std::size_t k = 0; k < sorted.size(); ++k) {
         const std::uint32_t f = sorted[k] >> 2, c = sorted[k] & 3;
         if (tris.flags[f] & kGroupWithAny) continue;
         sum += tris.angle[3 * std::size_t(f) + c] * proj_os[k];
+        any_area = any_area || !(tris.flags[f] & kZeroArea);
     }
+    if (!any_area) return glm::vec3(0.0f); // see kZeroArea
     return not_zero(sum) ? normalized(sum) : sum;
 }
-
 // Sorts members (and their projected tangents alongside) by triangle. Groups hold a
 // vertex's valence worth of members, so insertion sort.
 void sort_members(std::span<std::uint32_t> m, std::span<glm::vec3> os) {
@@ -190,9 +203,11 @@ void sort_members(std::span<std::uint32_t> m, std::span<glm::vec3> os) {
 } // namespace
 
 void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
-                        std::span<std::uint8_t> assigned, std::uint64_t& rescaled_normals) {
+                        std::span<std::uint8_t> assigned, std::uint64_t& rescaled_normals,
+                        TangentWorkspace::Buffers& buffers) {
     const std::size_t tri_count = in.indices.size() / 3;
-    WeldedCorners weld = weld_corners(in);
+    WeldedCorners& weld = buffers.weld;
+    weld_corners(in, weld);
     rescaled_normals = weld.rescaled_normals;
 
     // Unassigned corners keep the reference's default: tangent +x, bitangent sign -1
@@ -200,63 +215,92 @@ void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
     std::fill(out.begin(), out.end(), glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
     std::fill(assigned.begin(), assigned.end(), std::uint8_t{0});
 
-    Triangles tris;
+    TriangleSet& tris = buffers.tris;
+    tris.original.clear();
+    tris.dropped.clear();
+    tris.cls.clear();
     tris.original.reserve(tri_count);
     tris.cls.reserve(3 * tri_count);
-    std::vector<std::uint32_t> dropped; // repeated welded vertex
     for (std::size_t t = 0; t < tri_count; ++t) {
         const std::uint32_t* c = &weld.corner_class[3 * t];
         if (c[0] == c[1] || c[0] == c[2] || c[1] == c[2]) {
-            dropped.push_back(static_cast<std::uint32_t>(t));
+            tris.dropped.push_back(static_cast<std::uint32_t>(t));
             continue;
         }
         tris.original.push_back(static_cast<std::uint32_t>(t));
         tris.cls.insert(tris.cls.end(), c, c + 3);
     }
-    compute_triangle_frames(in, tris);
+    compute_triangle_frames(in, weld, tris);
     tris.neighbour.resize(tris.cls.size());
-    build_neighbours(tris.cls, static_cast<std::uint32_t>(weld.class_normal.size()),
-                     tris.neighbour);
-    compute_corner_angles(in, weld, tris);
-    std::vector<std::uint32_t> members;
-    const std::vector<Group> groups = build_groups(tris, members);
+    build_neighbours(tris.cls, static_cast<std::uint32_t>(weld.class_normal.size()), tris.neighbour,
+                     buffers.neighbours);
+    GroupScratch& scratch = buffers.groups;
+    build_groups(tris, scratch);
+    const auto& members = scratch.members;
 
     // The reference's threshold is cos(180°) computed in float, i.e. exactly -1: two
     // triangles stay in one subgroup unless their projected tangents point exactly apart.
     constexpr float kThresholdCos = -1.0f;
-    std::vector<glm::vec3> proj_os, proj_ot, sorted_os, subgroup_tangent;
-    std::vector<std::uint32_t> sorted, subgroup_members, subgroup_first;
-    for (const Group& g : groups) {
+    auto &proj_os = scratch.proj_os, &proj_ot = scratch.proj_ot, &sorted_os = scratch.sorted_os,
+         &subgroup_tangent = scratch.subgroup_tangent;
+    auto &sorted = scratch.sorted, &subgroup_members = scratch.subgroup_members,
+         &subgroup_first = scratch.subgroup_first;
+    for (const Group& g : scratch.groups) {
         const std::span<const std::uint32_t> group(&members[g.first], g.size);
         const glm::vec3 n = weld.class_normal[g.cls];
+        const bool usable = weld.class_normal_usable[g.cls] != 0;
+        // Projected dP/du, normalised: what the tangent averages. dP/dv only matters for
+        // the subgroup test, and only normalised when that test cannot be settled cheaply.
         proj_os.resize(g.size);
         proj_ot.resize(g.size);
-        for (std::uint32_t m = 0; m < g.size; ++m) {
-            proj_os[m] = project_normalized(tris.os[group[m] >> 2], n);
-            proj_ot[m] = project_normalized(tris.ot[group[m] >> 2], n);
+        std::uint32_t done = 0;
+        for (; done + 4 <= g.size; done += 4) // four members at a time where lengths allow
+            if (!project_members(tris, &group[done], n, &proj_os[done], &proj_ot[done])) break;
+        for (; done < g.size; ++done) {
+            proj_os[done] = project_normalized(tris.os[group[done] >> 2], n);
+            const glm::vec3& ot = tris.ot[group[done] >> 2];
+            proj_ot[done] = ot - n * dot3(n, ot);
         }
+        // The reference's subgroup relation (needs proj_ot normalised).
         auto together = [&](std::uint32_t a, std::uint32_t b) {
             return a == b ||
                    ((tris.flags[group[a] >> 2] | tris.flags[group[b] >> 2]) & kGroupWithAny) ||
                    (dot3(proj_os[a], proj_os[b]) > kThresholdCos &&
                     dot3(proj_ot[a], proj_ot[b]) > kThresholdCos);
         };
+        // Usually every pair is together, and that is cheap to prove: unit vectors all
+        // within 89.4° of one of them (cosine > 0.01) are at most 178.9° apart pairwise,
+        // so their dot products stay far above the threshold of -1. The dP/dv test runs
+        // on unnormalised projections: cos > 0.01 <=> d > 0 and d^2 > 1e-4 |a|^2 |b|^2.
         bool all_together = true;
-        for (std::uint32_t a = 0; a < g.size && all_together; ++a)
-            for (std::uint32_t b = a + 1; b < g.size && all_together; ++b)
-                all_together = together(a, b);
+        const float ot0 = dot3(proj_ot[0], proj_ot[0]);
+        for (std::uint32_t m = 1; m < g.size && all_together; ++m) {
+            const float d = dot3(proj_ot[0], proj_ot[m]);
+            all_together = dot3(proj_os[0], proj_os[m]) > 0.01f && d > 0.0f &&
+                           d * d > 1e-4f * ot0 * dot3(proj_ot[m], proj_ot[m]);
+        }
+        if (!all_together) {
+            for (glm::vec3& ot : proj_ot)
+                if (not_zero(ot)) ot = normalized(ot); // as the reference has them
+            all_together = true;
+            for (std::uint32_t a = 0; a < g.size && all_together; ++a)
+                for (std::uint32_t b = a + 1; b < g.size && all_together; ++b)
+                    all_together = together(a, b);
+        }
 
         auto write = [&](std::uint32_t m, const glm::vec3& tangent) {
             const std::size_t corner =
                 3 * std::size_t(tris.original[group[m] >> 2]) + (group[m] & 3);
             out[corner] = glm::vec4(tangent, g.orient_preserving ? -1.0f : 1.0f);
-            assigned[corner] = 1;
+            // A zero or non-finite result (cancelled sums, NaN input) and an unusable
+            // normal count as not computed: the guard replaces them.
+            assigned[corner] = usable && finite(tangent) && not_zero(tangent) ? 1 : 0;
         };
-        if (all_together) { // one subgroup: the whole group
-            sorted.assign(group.begin(), group.end());
-            sorted_os.assign(proj_os.begin(), proj_os.end());
-            sort_members(sorted, sorted_os);
-            const glm::vec3 tangent = eval_tangent(tris, sorted, sorted_os);
+        if (all_together) {
+            // One subgroup: the whole group. The reference sums it in ascending triangle
+            // order; summing in group order instead changes results by float rounding
+            // only (about 1e-7 relative) and saves sorting every group.
+            const glm::vec3 tangent = eval_tangent(tris, group, proj_os);
             for (std::uint32_t m = 0; m < g.size; ++m) write(m, tangent);
             continue;
         }
@@ -295,14 +339,15 @@ void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
     }
 
     // Corners of dropped triangles copy the first kept corner of the same welded vertex.
-    if (!dropped.empty()) {
-        std::vector<std::uint32_t> first_kept(weld.class_normal.size(), ~0u);
+    if (!tris.dropped.empty()) {
+        auto& first_kept = scratch.first_kept;
+        first_kept.assign(weld.class_normal.size(), ~0u);
         for (std::size_t f = 0; f < tris.original.size(); ++f)
             for (int i = 0; i < 3; ++i) {
                 std::uint32_t& first = first_kept[tris.cls[3 * f + i]];
                 if (first == ~0u) first = 3 * tris.original[f] + i;
             }
-        for (std::uint32_t t : dropped)
+        for (std::uint32_t t : tris.dropped)
             for (int i = 0; i < 3; ++i) {
                 const std::size_t corner = 3 * std::size_t(t) + i;
                 const std::uint32_t source = first_kept[weld.corner_class[corner]];

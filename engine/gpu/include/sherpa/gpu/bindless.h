@@ -1,8 +1,7 @@
 #pragma once
-// Descriptor set 0 of every pipeline: the cascaded shadow map (binding 0) and a
-// bindless array of combined image samplers (binding 1). Slots are handed out
-// and given back by scenes; the default textures own slots 0..2 for the whole
-// lifetime of the table.
+// Descriptor set 0 of every pipeline: a bindless array of combined image samplers. Slots are handed
+// out and given back by scenes; the default textures own slots 0..2 for the whole lifetime of the
+// table.
 #include <cstdint>
 #include <vector>
 
@@ -25,7 +24,6 @@ public:
     // The image must be in SHADER_READ_ONLY_OPTIMAL whenever a draw may sample it.
     std::uint32_t add(VkImageView view, VkSampler sampler);
     void remove(std::uint32_t slot);
-    void set_shadow_map(VkImageView view, VkSampler compare_sampler);
     std::uint32_t used_slots() const { return next_ - static_cast<std::uint32_t>(free_.size()); }
 
 private:

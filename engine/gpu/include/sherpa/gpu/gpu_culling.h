@@ -19,6 +19,8 @@
 namespace sherpa::gpu {
 
 // Twins of shaders/include/cull_structs.glsl (scalar layout).
+struct GPUCullObject;
+GPUCullObject make_cull_object(const Aabb& box, std::uint32_t batch, std::uint32_t instance);
 struct GPUCullObject {
     glm::vec3 min;
     std::uint32_t batch;
@@ -58,7 +60,9 @@ struct GpuCullReadback {
 
 class GpuCuller {
 public:
-    GpuCuller(Context& context, ResourceManager& resources);
+    // `parameter_blocks`: one per frame in flight, so that writing a frame's
+    // parameters never races a frame still running on the GPU.
+    GpuCuller(Context& context, ResourceManager& resources, std::uint32_t parameter_blocks = 1);
     ~GpuCuller();
     GpuCuller(const GpuCuller&) = delete;
     GpuCuller& operator=(const GpuCuller&) = delete;
@@ -66,13 +70,20 @@ public:
     // Builds the GPU arrays for `pass` (after MeshPass::update()). `bounds` are the
     // scene's instance world boxes; `gpu_instance` maps a scene instance to the GPU
     // instance index the draws read; `meshes` give each batch's index range.
+    // Lower level: objects (batch index per object, objects of a batch contiguous
+    // from its draw's firstInstance) and one indirect draw per batch.
+    // `object_instance` names each object's scene instance (check mode, reports).
+    void build(std::span<const GPUCullObject> objects,
+               std::span<const VkDrawIndexedIndirectCommand> draws,
+               std::vector<std::uint32_t> object_instance);
     void build(const MeshPass& pass, std::span<const Aabb> bounds,
                std::span<const std::uint32_t> gpu_instance, std::span<const GpuMesh> meshes);
 
     // Records: reset the indirect commands from their clear copy, write the frame's
     // parameters, dispatch, and make the results visible to indirect draws, vertex
     // shaders and transfers.
-    void record(VkCommandBuffer cmd, const Frustum& frustum, CullMethod method);
+    void record(VkCommandBuffer cmd, const Frustum& frustum, CullMethod method,
+                std::uint32_t parameter_block = 0, bool timestamps = true);
 
     // One synchronous run with readback (tests, CLI, benchmarks).
     GpuCullReadback run(const Frustum& frustum, CullMethod method);
@@ -93,7 +104,8 @@ private:
     UniquePipeline pipeline_;
     UniqueQueryPool timestamps_;
     CommandRecorder recorder_;
-    BufferHandle objects_, params_, draws_, draws_clear_, counts_, ids_, visible_, readback_;
+    std::vector<BufferHandle> params_;
+    BufferHandle objects_, draws_, draws_clear_, counts_, ids_, visible_, readback_;
     std::uint32_t objects_count_ = 0, batch_count_ = 0;
     std::vector<std::uint32_t> object_instance_;
 };

@@ -69,9 +69,10 @@ public:
         return indices_.valid() ? resources_.get(indices_).buffer.get() : VK_NULL_HANDLE;
     }
     VkDeviceAddress instances_address() const { return resources_.get(instances_).address; }
-    VkDeviceAddress materials_address() const { return resources_.get(materials_).address; }
-    VkDeviceAddress material_extras_address() const {
-        return resources_.get(material_extras_).address;
+    // The GPUMaterialData array (one SSBO) and its GPUMaterialExtra twin array.
+    VkBuffer materials_buffer() const { return resources_.get(materials_).buffer.get(); }
+    VkBuffer material_extras_buffer() const {
+        return resources_.get(material_extras_).buffer.get();
     }
     const GpuMemoryReport& memory() const { return memory_; }
     std::uint64_t triangle_count() const { return triangles_; }

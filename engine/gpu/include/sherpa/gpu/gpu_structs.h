@@ -12,7 +12,8 @@
 namespace sherpa::gpu {
 
 inline constexpr std::uint32_t kMaxLights = 16;
-inline constexpr std::uint32_t kMaxCascades = 4;
+inline constexpr std::uint32_t kMaxCascades = 4;    // array size in GPUFrameData
+inline constexpr std::uint32_t kShadowCascades = 3; // cascades used (mesh.vert varyings)
 inline constexpr std::uint32_t kNoCascade = 0xffffffffu;
 
 // Bindless slots registered before any scene texture.
@@ -29,6 +30,7 @@ struct GPULight {
 };
 static_assert(sizeof(GPULight) == 64);
 
+// std140 uniform block (set 1, binding 0): every member is 16-byte aligned.
 struct GPUFrameData {
     glm::mat4 view;
     glm::mat4 proj;
@@ -41,6 +43,7 @@ struct GPUFrameData {
     glm::vec4 ambient;
     glm::uvec4 params; // x view, y light count, z cascade count, w shadow taps (1 or 4)
     glm::vec4 overlay;
+    glm::vec4 cascade_texel; // world size of one shadow-map texel, per cascade
     GPULight lights[kMaxLights];
 };
 static_assert(offsetof(GPUFrameData, proj) == 64);
@@ -53,8 +56,9 @@ static_assert(offsetof(GPUFrameData, sun_radiance) == 496);
 static_assert(offsetof(GPUFrameData, ambient) == 512);
 static_assert(offsetof(GPUFrameData, params) == 528);
 static_assert(offsetof(GPUFrameData, overlay) == 544);
-static_assert(offsetof(GPUFrameData, lights) == 560);
-static_assert(sizeof(GPUFrameData) == 560 + 64 * kMaxLights);
+static_assert(offsetof(GPUFrameData, cascade_texel) == 560);
+static_assert(offsetof(GPUFrameData, lights) == 576);
+static_assert(sizeof(GPUFrameData) == 576 + 64 * kMaxLights);
 
 // 128 bytes: model matrix and the CPU-computed normal matrix
 // transpose(inverse(mat3(model))) as three vec4 columns (layout-independent).
@@ -99,11 +103,10 @@ inline constexpr std::uint32_t kTangentProvenanceShift = 8;
 inline constexpr std::uint32_t kNormalProvenanceShift = 10;
 inline constexpr std::uint32_t kGlyphKindShift = 16;
 
+// Per draw. Frame data and materials are not here: they come through descriptor
+// set 1 (see common.glsl for why).
 struct GPUPushConstants {
-    VkDeviceAddress frame;
     VkDeviceAddress instances;
-    VkDeviceAddress materials;
-    VkDeviceAddress material_extras;
     VkDeviceAddress positions;
     VkDeviceAddress normals;
     VkDeviceAddress tangents;
@@ -116,12 +119,15 @@ struct GPUPushConstants {
     std::uint32_t cascade;
     float glyph_length;
     glm::vec4 color;
+    // gl_InstanceIndex -> GPU instance: culling's compacted ids, else the identity.
+    VkDeviceAddress instance_ids;
 };
-static_assert(offsetof(GPUPushConstants, lines) == 80);
-static_assert(offsetof(GPUPushConstants, material_id) == 88);
-static_assert(offsetof(GPUPushConstants, cascade) == 96);
-static_assert(offsetof(GPUPushConstants, color) == 104);
-static_assert(sizeof(GPUPushConstants) == 120);
+static_assert(offsetof(GPUPushConstants, lines) == 56);
+static_assert(offsetof(GPUPushConstants, material_id) == 64);
+static_assert(offsetof(GPUPushConstants, cascade) == 72);
+static_assert(offsetof(GPUPushConstants, color) == 80);
+static_assert(offsetof(GPUPushConstants, instance_ids) == 96);
+static_assert(sizeof(GPUPushConstants) == 104);
 static_assert(sizeof(GPUPushConstants) <= 128,
               "Vulkan guarantees only 128 bytes of push constants");
 

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include <sherpa/gpu/camera.h>
+#include <sherpa/scene/culling.h>
 
 namespace sherpa::gpu {
 
@@ -39,7 +40,20 @@ enum Overlay : std::uint32_t {
     kOverlayTangents = 1u << 2,
     kOverlayBitangents = 1u << 3,
     kOverlayBounds = 1u << 4,
+    // Instance boxes coloured by the camera cull: green visible, red culled, yellow
+    // kept by the conservative test although the exact test rejects it. With a
+    // frozen culling camera its frustum is drawn too.
+    kOverlayCullBoxes = 1u << 5,
 };
+
+// Which path culls the camera passes.
+enum class CullPath : std::uint32_t {
+    None, // draw every instance
+    Cpu,  // CPU test, compacted instance ids written per frame
+    Gpu,  // compute shader fills indirect commands; vkCmdDrawIndexedIndirectCount
+};
+std::string_view to_string(CullPath p);
+std::optional<CullPath> parse_cull_path(std::string_view name);
 
 std::string_view to_string(DebugView v);
 std::optional<DebugView> parse_debug_view(std::string_view name);
@@ -55,6 +69,9 @@ struct RenderSettings {
     CameraSpec camera;
     bool shadows = true;
     std::uint32_t cascades = 3;
+    // Reuse the shadow cascades while camera, light and scene are unchanged. False
+    // re-renders them every frame (to measure their cost).
+    bool cache_shadows = true;
     bool depth_prepass = true;
     // Benchmark floor: the same draws with positions only and a constant colour.
     bool floor_only = false;
@@ -64,6 +81,10 @@ struct RenderSettings {
     glm::vec3 sun_direction{-0.4f, -1.0f, -0.55f}; // direction light travels
     float sun_intensity = 3.0f;
     float ambient = 0.25f;
+    CullPath cull = CullPath::Cpu;
+    CullMethod cull_method = CullMethod::PVertex;
+    // Cull with this camera instead of the view camera (visual debugging of culling).
+    std::optional<CameraSpec> freeze_cull;
 };
 
 // Does this view/overlay need streams the materials do not use (so the scene must

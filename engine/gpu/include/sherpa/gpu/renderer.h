@@ -13,9 +13,11 @@
 #include <sherpa/gpu/commands.h>
 #include <sherpa/gpu/context.h>
 #include <sherpa/gpu/gpu_scene.h>
+#include <sherpa/gpu/gpu_structs.h>
 #include <sherpa/gpu/pipelines.h>
 #include <sherpa/gpu/render_settings.h>
 #include <sherpa/gpu/resources.h>
+#include <sherpa/scene/culling_passes.h>
 
 namespace sherpa::gpu {
 
@@ -33,6 +35,7 @@ struct FrameStats {
     std::uint64_t input_primitives = 0, vertex_invocations = 0, clipping_invocations = 0,
                   clipping_primitives = 0, fragment_invocations = 0;
     std::uint64_t draw_calls = 0;
+    CullStats cull; // camera pass culling (cull.pass empty when culling is off)
 };
 
 struct RendererOptions {
@@ -87,20 +90,31 @@ public:
 private:
     struct FrameSlot;
     struct Lighting;
+    struct Culling;
+    void build_culling();
+    void cull_camera(VkCommandBuffer cmd, FrameSlot& slot, const RenderSettings& settings,
+                     float aspect);
+    // Camera draw of one group with the frame's culling; false: nothing to draw.
+    bool draw_culled(VkCommandBuffer cmd, FrameSlot& slot, VkPipelineLayout layout,
+                     std::size_t group, GPUPushConstants& pc);
+    void draw_cull_overlay(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p);
     void wait_slot(FrameSlot& slot);
     void ensure_offscreen(std::uint32_t width, std::uint32_t height);
     void ensure_depth(std::uint32_t width, std::uint32_t height);
     void init_shadow_map();
-    const Pipelines& pipelines_for(VkFormat format);
+    Pipelines& pipelines_for(VkFormat format);
+    void create_frame_sets();
+    void bind_frame_set(FrameSlot& slot);
     void fill_frame_data(FrameSlot& slot, const RenderSettings& settings, float aspect,
                          bool& shadows, std::uint32_t& cascades);
     void record_passes(VkCommandBuffer cmd, FrameSlot& slot, const RenderTarget& target,
                        const RenderSettings& settings);
     void record_shadows(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
                         std::uint32_t cascades);
-    void draw_groups(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p, PipelineId id,
+    void draw_groups(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p, VkPipeline pipeline,
                      AlphaMode alpha, std::uint32_t cascade, bool cull);
-    void draw_blended(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p);
+    void draw_blended(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
+                      VkPipeline pipeline);
     void draw_overlays(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
                        const RenderSettings& s);
     FrameStats read_stats(FrameSlot& slot);
@@ -109,9 +123,13 @@ private:
     RendererOptions options_;
     std::unique_ptr<ResourceManager> resources_;
     std::unique_ptr<BindlessTable> bindless_;
+    UniqueDescriptorSetLayout frame_layout_;
+    UniqueDescriptorPool frame_pool_;
+    BufferHandle no_materials_; // bound while no scene is loaded
     std::map<VkFormat, std::unique_ptr<Pipelines>> pipelines_;
     std::unique_ptr<GpuScene> scene_;
     std::unique_ptr<Lighting> lighting_; // lights, cameras and bounds of the loaded scene
+    std::unique_ptr<Culling> culling_;   // per loaded scene
     std::uint64_t scene_generation_ = 0;
     std::vector<std::unique_ptr<FrameSlot>> slots_;
     std::uint32_t next_slot_ = 0;

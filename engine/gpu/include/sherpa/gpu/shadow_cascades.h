@@ -17,6 +17,7 @@ namespace sherpa::gpu {
 struct CascadeSetup {
     glm::mat4 view_proj[kMaxCascades]{};
     glm::vec4 splits{0.0f}; // view depth where cascade i ends
+    glm::vec4 texel{0.0f};  // world size of one shadow-map texel in cascade i
     std::uint32_t count = 0;
 };
 

@@ -16,8 +16,17 @@ namespace sherpa {
 
 enum class MeshPassKind : std::uint8_t { Forward, Transparent, Shadow };
 
-// Pipeline variant of a draw: alpha mode and double-sidedness (cull mode).
-std::uint32_t pipeline_key(AlphaMode mode, bool double_sided);
+// Pipeline state of a draw: alpha mode, double-sidedness (cull mode) and mirrored
+// winding (a world transform with negative determinant flips the front face).
+std::uint32_t pipeline_key(AlphaMode mode, bool double_sided, bool mirrored);
+struct PipelineState {
+    AlphaMode alpha_mode;
+    bool double_sided, mirrored;
+};
+PipelineState pipeline_state(std::uint32_t key);
+// The key of a scene instance (its material's alpha mode and sidedness, its
+// transform's handedness).
+std::uint32_t instance_pipeline_key(const Scene& scene, std::uint32_t instance);
 
 struct FlatBatch {
     std::uint64_t sort_key = 0; // pipeline key << 32 | mesh id

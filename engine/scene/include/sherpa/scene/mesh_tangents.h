@@ -37,7 +37,8 @@ struct MeshTangentReport {
 
 // Generates tangents with `method` from uv set `tex_coord`, applies them (splitting as
 // above) and marks the tangent attribute Generated. tex_coord > 1 uses uv0 and says so.
-MeshTangentReport generate_mesh_tangents(Mesh& mesh, std::uint32_t tex_coord, TangentMethod method);
+MeshTangentReport generate_mesh_tangents(Mesh& mesh, std::uint32_t tex_coord, TangentMethod method,
+                                         TangentWorkspace* workspace = nullptr);
 
 struct SceneTangentOptions {
     TangentMethod method = TangentMethod::MikkTSpace;
@@ -53,7 +54,9 @@ struct SceneTangentReport {
     TangentStats stats; // summed over generated meshes
 };
 
-// Applies the options to every mesh of the scene, in parallel across meshes.
+// Applies the options to every mesh of the scene, in parallel across meshes (OpenMP,
+// one workspace per thread).(OpenMP; one
+// workspace per thread).
 SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptions& options);
 
 } // namespace sherpa

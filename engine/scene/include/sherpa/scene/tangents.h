@@ -1,7 +1,6 @@
 #pragma once
 // Tangent-space generation: exact MikkTSpace and two cheaper alternatives, computed per
-// face corner over plain spans, plus the step that writes per-corner tangents into a Mesh
-// by splitting the vertices whose corners disagree.
+// face corner over plain spans. mesh_tangents.h writes the results into meshes.
 //
 // Conventions: uvs are glTF texture coordinates (origin top-left, v down). The returned
 // tangents follow glTF: xyz tangent (direction of increasing u), w = +1/-1 such that
@@ -9,6 +8,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string_view>
 
@@ -42,12 +42,14 @@ inline constexpr std::size_t kTangentFallbackCauses = 6;
 std::string_view to_string(TangentFallback f);
 
 struct TangentStats {
-    // Corners per fallback cause; index by TangentFallback ([None] counts exact corners).
+    // Corners per fallback cause; index by TangentFallback ([None] counts the corners the
+    // method computed itself).
     std::array<std::uint64_t, kTangentFallbackCauses> corners{};
     // Corners whose value, before the fallback guard, was NaN/Inf: what the method
     // yields unguarded. The returned tangents are always finite.
     std::uint64_t nonfinite_before_guard = 0;
-    // Normals further than kNormalUnitTolerance from unit length, rescaled before use.
+    // Vertices whose normal is further than kNormalUnitTolerance from unit length and
+    // was rescaled before use.
     std::uint64_t rescaled_normals = 0;
 
     std::uint64_t fallbacks() const;
@@ -70,11 +72,28 @@ struct TangentInput {
     std::span<const std::uint32_t> indices;
 };
 
+// Scratch memory that calls may share to avoid reallocating (and re-faulting) their
+// buffers: results never depend on what a workspace held before. Not thread-safe: one
+// per thread.
+class TangentWorkspace {
+public:
+    TangentWorkspace();
+    ~TangentWorkspace();
+    TangentWorkspace(TangentWorkspace&&) noexcept;
+    TangentWorkspace& operator=(TangentWorkspace&&) noexcept;
+    struct Buffers;
+    Buffers& buffers() { return *buffers_; }
+
+private:
+    std::unique_ptr<Buffers> buffers_;
+};
+
 // Computes one tangent per corner (out.size() == indices.size()). `fallbacks`, when not
-// empty, must have the same size and receives each corner's TangentFallback. Pure: no
-// state survives the call; allocation is proportional to the input.
+// empty, must have the same size and receives each corner's TangentFallback. Without a
+// workspace the call allocates its own scratch, proportional to the input.
 TangentStats generate_corner_tangents(const TangentInput& input, TangentMethod method,
                                       std::span<glm::vec4> out,
-                                      std::span<TangentFallback> fallbacks = {});
+                                      std::span<TangentFallback> fallbacks = {},
+                                      TangentWorkspace* workspace = nullptr);
 
 } // namespace sherpa

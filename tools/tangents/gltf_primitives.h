@@ -1,15 +1,14 @@
 #pragma once
-// A small glTF reader for tangent tests and benchmarks, independent of the engine's
-// importer so that importer changes cannot mask tangent regressions (and vice versa):
-// every triangle primitive as plain arrays, in glTF triangle order after strip/fan
-// conversion.
+// glTF primitives as plain arrays for tangent tests, benchmarks and reports: every
+// triangle primitive as the engine's importer reads it (glTF triangle order after
+// strip/fan conversion), with only the attributes the file provides.
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
-namespace sherpa::test {
+namespace sherpa::tools {
 
 struct GltfPrimitive {
     std::uint32_t mesh = 0, primitive = 0;
@@ -21,11 +20,12 @@ struct GltfPrimitive {
     bool has_normal_texture = false;
 };
 
-// Reads every triangle-topology primitive of a .gltf/.glb. Throws std::runtime_error.
+// Reads every triangle-topology primitive of a .gltf/.glb (no tangent generation).
+// Throws std::runtime_error with the importer's message.
 std::vector<GltfPrimitive> read_gltf_primitives(const std::string& path);
 
 // Model names under SHERPA_ASSETS_DIR/gltf, sorted, whose NAME/glTF/NAME.gltf exists.
 std::vector<std::string> sample_models(const std::string& assets_dir);
 std::string sample_model_path(const std::string& assets_dir, const std::string& name);
 
-} // namespace sherpa::test
+} // namespace sherpa::tools

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace sherpa {
@@ -49,7 +50,11 @@ bool write_file_atomic(const std::filesystem::path& path, std::span<const std::u
         }
         written += static_cast<std::size_t>(w);
     }
-    if (::fsync(fd) != 0 || ::close(fd) != 0) {
+    // mkstemp creates the file 0600; give it the mode a plain create would have
+    // (0666 less the umask), so atomic writes do not make private files.
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    if (::fchmod(fd, 0666 & ~mask) != 0 || ::fsync(fd) != 0 || ::close(fd) != 0) {
         error = path.string() + ": fsync/close failed: " + std::strerror(errno);
         ::unlink(tmpl.c_str());
         return false;

@@ -6,6 +6,7 @@
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/gpu_structs.h>
 
+#include <algorithm>
 #include <cstring>
 
 namespace sherpa::gpu {
@@ -97,25 +98,71 @@ void Renderer::draw_overlays(VkCommandBuffer cmd, FrameSlot& slot, const Pipelin
         std::vector<GPULineVertex> lines;
         for (const Aabb& b : scene_->instance_bounds())
             append_box(lines, b, glm::vec4(1.0f, 0.85f, 0.1f, 1.0f));
-        if (lines.empty()) return;
-        const VkDeviceSize bytes = lines.size() * sizeof(GPULineVertex);
-        if (bytes > slot.lines_capacity) {
-            resources_->destroy(slot.lines);
-            slot.lines_capacity = std::max<VkDeviceSize>(bytes, 4096);
-            slot.lines = resources_->create_buffer(
-                {slot.lines_capacity,
-                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-                 MemoryUsage::Upload, "overlay lines"});
-        }
-        const Buffer& buf = resources_->get(slot.lines);
-        std::memcpy(buf.mapped, lines.data(), bytes);
-        GPUPushConstants pc = slot.push_base;
-        pc.lines = buf.address;
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::BoxLines));
-        vkCmdPushConstants(cmd, layout, stages, 0, sizeof(pc), &pc);
-        vkCmdDraw(cmd, static_cast<std::uint32_t>(lines.size()), 1, 0, 0);
-        ++slot.draw_calls;
+        draw_lines(cmd, slot, p, lines);
     }
+    if (s.overlays & kOverlayCullBoxes) draw_cull_overlay(cmd, slot, p);
+}
+
+void Renderer::draw_lines(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
+                          const std::vector<GPULineVertex>& lines) {
+    if (lines.empty()) return;
+    const VkDeviceSize bytes = lines.size() * sizeof(GPULineVertex);
+    if (bytes > slot.lines_capacity) {
+        resources_->destroy(slot.lines);
+        slot.lines_capacity = std::max<VkDeviceSize>(bytes, 4096);
+        slot.lines = resources_->create_buffer(
+            {slot.lines_capacity,
+             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+             MemoryUsage::Upload, "overlay lines"});
+    }
+    const Buffer& buf = resources_->get(slot.lines);
+    std::memcpy(buf.mapped, lines.data(), bytes);
+    GPUPushConstants pc = slot.push_base;
+    pc.lines = buf.address;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::BoxLines));
+    vkCmdPushConstants(cmd, p.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
+                       0, sizeof(pc), &pc);
+    vkCmdDraw(cmd, static_cast<std::uint32_t>(lines.size()), 1, 0, 0);
+    ++slot.draw_calls;
+}
+
+// Culling made visible: instance boxes green (visible), red (culled) or yellow
+// (kept by the conservative test though the exact test rejects it: its false
+// positives); the culling frustum's edges in white (a frozen culling camera shows
+// where culling happened from) and each shadow cascade's volume in blue.
+void Renderer::draw_cull_overlay(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p) {
+    if (slot.cull == CullPath::None) return;
+    std::vector<GPULineVertex> lines;
+    const auto& bounds = scene_->instance_bounds();
+    for (std::size_t i = 0; i < bounds.size(); ++i) {
+        glm::vec4 color(0.9f, 0.15f, 0.1f, 1.0f);
+        if (slot.visible[i])
+            color = exact_visible(slot.cull_frustum, bounds[i]) ? glm::vec4(0.2f, 0.9f, 0.3f, 1.0f)
+                                                                : glm::vec4(1.0f, 0.9f, 0.1f, 1.0f);
+        append_box(lines, bounds[i], color);
+    }
+    // Corners at infinity (infinite far plane) end at twice the scene's size.
+    const float reach = 2.0f * glm::length(scene_->bounds().extent()) + 1.0f;
+    auto append_frustum = [&](const Frustum& f, glm::vec4 color) {
+        auto corner = [&](int i) {
+            const glm::vec4 c = f.corners[static_cast<std::size_t>(i)];
+            if (c.w != 0.0f) return glm::vec4(glm::vec3(c), 1.0f);
+            const glm::vec4 apex = f.corners[static_cast<std::size_t>(i ^ 4)]; // the near corner
+            return glm::vec4(glm::vec3(apex) + glm::normalize(glm::vec3(c)) * reach, 1.0f);
+        };
+        for (int i = 0; i < 8; ++i)
+            for (int bit = 1; bit < 8; bit <<= 1)
+                if (!(i & bit)) {
+                    lines.push_back({corner(i), color});
+                    lines.push_back({corner(i | bit), color});
+                }
+    };
+    append_frustum(slot.cull_frustum, glm::vec4(1.0f));
+    const auto* frame = static_cast<const GPUFrameData*>(resources_->get(slot.frame_data).mapped);
+    for (std::uint32_t c = 0; c < std::min(frame->params.z, kMaxCascades); ++c)
+        append_frustum(frustum_from_view_projection(frame->shadow_view_proj[c]),
+                       glm::vec4(0.3f, 0.5f, 1.0f, 1.0f));
+    draw_lines(cmd, slot, p, lines);
 }
 
 } // namespace sherpa::gpu

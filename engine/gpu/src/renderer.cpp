@@ -203,7 +203,12 @@ void Renderer::load(const Scene& scene, StreamPolicy policy) {
 void Renderer::unload() {
     // Frames in flight may still read the scene's buffers and textures: wait for
     // them, so that the bindless slots the scene gives back can be reused at once.
-    for (auto& slot : slots_) wait_slot(*slot);
+    for (auto& slot : slots_) {
+        wait_slot(*slot);
+        // Sized for the scene's instances: it goes with the scene.
+        resources_->destroy(slot->cull_ids);
+        slot->cull_ids_capacity = 0;
+    }
     if (culling_) resources_->destroy(culling_->identity);
     culling_.reset();
     scene_.reset();

@@ -98,6 +98,8 @@ private:
     bool draw_culled(VkCommandBuffer cmd, FrameSlot& slot, VkPipelineLayout layout,
                      std::size_t group, GPUPushConstants& pc);
     void draw_cull_overlay(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p);
+    void draw_lines(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
+                    const std::vector<GPULineVertex>& lines);
     void wait_slot(FrameSlot& slot);
     void ensure_offscreen(std::uint32_t width, std::uint32_t height);
     void ensure_depth(std::uint32_t width, std::uint32_t height);

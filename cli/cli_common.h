@@ -15,6 +15,7 @@ using Args = std::span<const std::string_view>;
 int run_info(Args args);
 int run_cull(Args args);
 int run_tangents(Args args);
+int run_textures(Args args);
 int run_render(Args args);
 
 } // namespace sherpa::cli

@@ -20,6 +20,9 @@ constexpr Subcommand kSubcommands[] = {
     {"tangents", sherpa::cli::run_tangents,
      "tangents SCENE --dump FILE.csv [--method NAME] [--regenerate]   per-corner tangents\n"
      "  tangents SCENE --compare [--method NAME] [--json]   authored vs regenerated"},
+    {"textures", sherpa::cli::run_textures,
+     "textures SCENE [--cache-dir DIR] [--cache-cap-mb N] [--quality N] [--no-cache] [--no-bc]\n"
+     "           [--json]   texture pipeline and cache report"},
     {"render", sherpa::cli::run_render,
      "render SCENE -o OUT.png [--width W --height H] [--view NAME] [--overlay NAME ...]\n"
      "         [--camera auto|gltf:N|eye=x,y,z:target=x,y,z] [--frames N] [--report FILE.json]\n"

@@ -1,5 +1,5 @@
 #pragma once
-// Runs sherpa-cli with arguments through the shell; captures stdout+stderr.
+// Runs sherpa-cli with arguments and collects its exit code and output.
 #include <array>
 #include <cstdio>
 #include <string>
@@ -12,8 +12,10 @@ struct CliRun {
     std::string out;
 };
 
-inline CliRun run_cli(const std::string& args) {
-    const std::string cmd = std::string(SHERPA_CLI_PATH) + " " + args + " 2>&1";
+// `args` is appended to the CLI path as shell text; `stderr_redirect` decides
+// where stderr goes ("2>&1" merges it into `out`).
+inline CliRun run_cli(const std::string& args, const std::string& stderr_redirect = "2>&1") {
+    const std::string cmd = std::string(SHERPA_CLI_PATH) + " " + args + " " + stderr_redirect;
     FILE* p = popen(cmd.c_str(), "r");
     CliRun r{-1, {}};
     if (!p) return r;

@@ -1,0 +1,34 @@
+#pragma once
+// Decoded images: tightly packed RGBA8, and decoding of encoded sources (PNG,
+// JPEG, ...) through OpenImageIO.
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sherpa::tex {
+
+struct RgbaImage {
+    std::uint32_t width = 0, height = 0;
+    std::vector<std::uint8_t> pixels; // width * height * 4 bytes, rows top to bottom
+
+    bool empty() const { return width == 0 || height == 0; }
+    // True when some texel's alpha is below 255.
+    bool has_alpha() const;
+};
+
+// Decodes encoded image bytes (any format OpenImageIO reads; `name_hint` supplies
+// the extension that picks the reader, and names the image in errors). Grey images
+// are replicated to RGB; missing alpha becomes 255; 16-bit and float sources are
+// converted to 8 bits. Returns false with `error` set on failure.
+bool decode_encoded_image(std::span<const std::uint8_t> bytes, std::string_view name_hint,
+                          RgbaImage& out, std::string& error);
+bool read_image_file(const std::filesystem::path& path, RgbaImage& out, std::string& error);
+
+// Writes an RGBA8 image with OpenImageIO (format from the extension).
+bool write_image_file(const std::filesystem::path& path, const RgbaImage& image,
+                      std::string& error);
+
+} // namespace sherpa::tex

@@ -1,0 +1,91 @@
+#pragma once
+// The texture pipeline over a Scene: find the (image, role) pairs the displayed
+// scene's materials use, load each from the KTX2 cache or decode, mip and
+// compress it, and hand back CPU-side prepared textures (levels + Vulkan format)
+// for the GPU layer to upload, with the inspection data the texture dock shows.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <sherpa/scene/scene.h>
+#include <sherpa/texture/block_codecs.h>
+#include <sherpa/texture/ktx2.h>
+#include <sherpa/texture/texture_cache.h>
+
+namespace sherpa::tex {
+
+// Bumped whenever encoder or mip output changes, so old cache files stop matching.
+inline constexpr int kTextureEncoderVersion = 2;
+
+// One image in one role, as used by the displayed scene's materials.
+struct TextureUse {
+    std::int32_t image = -1;
+    TextureRole role = kRoleColor;      // exactly one role bit
+    std::vector<std::int32_t> textures; // glTF texture indices that reach it in this role
+    // Set when some alpha-masked material uses it as base colour.
+    std::optional<float> alpha_cutoff;
+};
+
+// Unique (image, role) pairs over the materials of scene.instances, deduplicated
+// by image (two textures sharing an image share one use), in image order.
+std::vector<TextureUse> collect_texture_uses(const Scene& scene);
+
+struct PipelineOptions {
+    std::optional<std::filesystem::path> cache_dir; // nullopt: no cache at all
+    std::uint64_t cache_cap_bytes = kDefaultCacheCapBytes;
+    int bc7_level = kBc7DefaultLevel;
+    int bc5_level = kBc5DefaultLevel;
+    bool device_supports_bc = true; // false: RGBA8 fallback
+    int decode_threads = 2;         // OIIO gains nothing from threads within one file
+    SimdLevel simd = best_simd_level();
+};
+
+enum class CacheState : std::uint8_t { Hit, Miss, Stale, Recompressed, Fallback };
+std::string_view to_string(CacheState state); // hit, miss, stale, recompressed, fallback
+std::string_view role_name(TextureRole role); // color, linear, normal
+
+struct PreparedTexture {
+    std::int32_t image = -1;
+    std::string source; // URI, "bufferView N" or "generated"
+    TextureRole role = kRoleColor;
+    std::vector<std::int32_t> textures;
+    VkFormat format = VkFormat::Undefined;
+    std::uint32_t width = 0, height = 0;
+    std::vector<std::vector<std::uint8_t>> levels; // [0] full size; upload as is
+    Hash128 source_hash;
+    std::string recipe;
+    CacheState state = CacheState::Miss;
+    std::filesystem::path cache_file; // empty without a cache
+    std::uint64_t bytes_on_disk = 0;  // the KTX2 file (0 without a cache)
+    std::uint64_t bytes_gpu = 0;      // all levels
+    double decode_ms = 0, mip_ms = 0, encode_ms = 0;
+    std::optional<double> psnr; // level 0 against the decoded source; none for RGBA8
+    std::string note;           // why stale / recompressed, or a write failure
+    bool failed = false;        // source could not be decoded: no levels
+};
+
+struct PreparedTextureSet {
+    std::vector<PreparedTexture> textures;
+    std::vector<std::string> warnings; // fallbacks, decode failures, cache write failures
+
+    // Index into `textures` for glTF texture `texture` used in `role`, or -1.
+    std::int32_t find(std::int32_t texture, TextureRole role) const;
+};
+
+// Recipe text for one use: everything besides the source that shapes the output.
+std::string texture_recipe(const TextureUse& use, const PipelineOptions& options);
+
+PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& options);
+
+// For the GPU layer once it has uploaded set.textures[i] to bindless slot
+// bindless_slot[i]: the material's GPU record with every texture field resolved to
+// its slot, or kTextureSentinel where the slot has no texture or its texture
+// failed (the GPU layer then binds its default texture).
+GPUMaterialData resolve_material(const MaterialInstance& material, const PreparedTextureSet& set,
+                                 std::span<const std::uint32_t> bindless_slot);
+
+} // namespace sherpa::tex

@@ -1,0 +1,99 @@
+// OpenImageIO-backed decoding of encoded sources into RGBA8.
+#include <sherpa/texture/image.h>
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+
+namespace sherpa::tex {
+
+bool RgbaImage::has_alpha() const {
+    for (std::size_t i = 3; i < pixels.size(); i += 4)
+        if (pixels[i] != 255) return true;
+    return false;
+}
+
+namespace {
+// Expands `channels`-channel 8-bit rows to RGBA8 in place of `out`.
+void expand_to_rgba(const std::vector<std::uint8_t>& src, int channels, RgbaImage& out) {
+    const std::size_t texels = std::size_t{out.width} * out.height;
+    out.pixels.resize(texels * 4);
+    for (std::size_t i = 0; i < texels; ++i) {
+        const std::uint8_t* s = src.data() + i * channels;
+        std::uint8_t* d = out.pixels.data() + i * 4;
+        if (channels >= 3)
+            d[0] = s[0], d[1] = s[1], d[2] = s[2];
+        else
+            d[0] = d[1] = d[2] = s[0];
+        d[3] = channels == 4 ? s[3] : channels == 2 ? s[1] : 255;
+    }
+}
+
+bool read_from(OIIO::ImageInput* in, std::string_view name, RgbaImage& out, std::string& error) {
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
+        error = std::string(name) + ": image has no pixels";
+        return false;
+    }
+    const int channels = std::min(spec.nchannels, 4);
+    std::vector<std::uint8_t> raw(std::size_t(spec.width) * spec.height * channels);
+    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data())) {
+        error = std::string(name) + ": " + in->geterror();
+        return false;
+    }
+    out.width = static_cast<std::uint32_t>(spec.width);
+    out.height = static_cast<std::uint32_t>(spec.height);
+    expand_to_rgba(raw, channels, out);
+    return true;
+}
+} // namespace
+
+bool decode_encoded_image(std::span<const std::uint8_t> bytes, std::string_view name_hint,
+                          RgbaImage& out, std::string& error) {
+    // OpenImageIO reads from memory through an IOProxy; the name only picks the
+    // plugin. The proxy must be attached before open(), which then reads from it.
+    OIIO::Filesystem::IOMemReader reader(const_cast<std::uint8_t*>(bytes.data()), bytes.size());
+    auto in = OIIO::ImageInput::create(std::string(name_hint), false, nullptr, &reader);
+    OIIO::ImageSpec spec;
+    if (!in || !in->supports("ioproxy") || !in->set_ioproxy(&reader) ||
+        !in->open(std::string(name_hint), spec)) {
+        error =
+            std::string(name_hint) + ": cannot decode: " + (in ? in->geterror() : OIIO::geterror());
+        return false;
+    }
+    const bool ok = read_from(in.get(), name_hint, out, error);
+    in->close();
+    return ok;
+}
+
+bool read_image_file(const std::filesystem::path& path, RgbaImage& out, std::string& error) {
+    auto in = OIIO::ImageInput::open(path.string());
+    if (!in) {
+        error = path.string() + ": cannot open: " + OIIO::geterror();
+        return false;
+    }
+    const bool ok = read_from(in.get(), path.string(), out, error);
+    in->close();
+    return ok;
+}
+
+bool write_image_file(const std::filesystem::path& path, const RgbaImage& image,
+                      std::string& error) {
+    auto outfile = OIIO::ImageOutput::create(path.string());
+    if (!outfile) {
+        error = path.string() + ": no writer: " + OIIO::geterror();
+        return false;
+    }
+    OIIO::ImageSpec spec(static_cast<int>(image.width), static_cast<int>(image.height), 4,
+                         OIIO::TypeDesc::UINT8);
+    if (!outfile->open(path.string(), spec) ||
+        !outfile->write_image(OIIO::TypeDesc::UINT8, image.pixels.data())) {
+        error = path.string() + ": " + outfile->geterror();
+        return false;
+    }
+    outfile->close();
+    return true;
+}
+
+} // namespace sherpa::tex

@@ -1,0 +1,219 @@
+// prepare_textures: cache lookups, then decoding (a few files at a time),
+// mip generation and block compression of the misses, then cache writes.
+#include <sherpa/texture/texture_pipeline.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include <sherpa/texture/image.h>
+#include <sherpa/texture/mips.h>
+#include <sherpa/texture/quality.h>
+
+namespace sherpa::tex {
+
+namespace {
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+VkFormat output_format(TextureRole role, bool bc) {
+    if (!bc) return role == kRoleColor ? VkFormat::R8G8B8A8Srgb : VkFormat::R8G8B8A8Unorm;
+    return role == kRoleColor    ? VkFormat::Bc7SrgbBlock
+           : role == kRoleNormal ? VkFormat::Bc5UnormBlock
+                                 : VkFormat::Bc7UnormBlock;
+}
+
+MipFilter mip_filter(TextureRole role) {
+    return role == kRoleColor    ? MipFilter::Color
+           : role == kRoleNormal ? MipFilter::Normal
+                                 : MipFilter::Linear;
+}
+
+std::string source_name(const ImageRecord& img, std::int32_t index) {
+    if (!img.uri.empty()) return img.uri;
+    if (img.buffer_view >= 0) return "bufferView " + std::to_string(img.buffer_view);
+    if (!img.pixels.empty()) return "generated";
+    return "image " + std::to_string(index);
+}
+
+// A file name whose extension lets OpenImageIO pick the right reader.
+std::string decoder_hint(const ImageRecord& img) {
+    if (img.mime_type == "image/png") return "image.png";
+    if (img.mime_type == "image/jpeg") return "image.jpg";
+    if (img.mime_type == "image/webp") return "image.webp";
+    const auto slash = img.uri.find_last_of('/');
+    return img.uri.substr(slash == std::string::npos ? 0 : slash + 1);
+}
+
+Hash128 source_hash(const ImageRecord& img) {
+    if (!img.encoded.empty()) return hash_bytes(img.encoded);
+    // Generated images have no encoded form; their size is part of their identity.
+    std::vector<std::uint8_t> bytes(img.pixels);
+    for (int i = 0; i < 4; ++i) bytes.push_back(static_cast<std::uint8_t>(img.width >> (8 * i)));
+    for (int i = 0; i < 4; ++i) bytes.push_back(static_cast<std::uint8_t>(img.height >> (8 * i)));
+    return hash_bytes(bytes);
+}
+
+bool decode_source(const ImageRecord& img, RgbaImage& out, std::string& error) {
+    if (img.encoded.empty()) {
+        if (img.pixels.size() != std::size_t{img.width} * img.height * 4 || img.pixels.empty()) {
+            error = "image has neither encoded bytes nor RGBA8 pixels";
+            return false;
+        }
+        out = RgbaImage{img.width, img.height, img.pixels};
+        return true;
+    }
+    return decode_encoded_image(img.encoded, decoder_hint(img), out, error);
+}
+
+// PSNR of level 0 over the channels the role's shader reads.
+double measure_psnr(TextureRole role, const RgbaImage& source,
+                    const std::vector<std::uint8_t>& blocks, VkFormat format) {
+    const BlockFormat bf = format == VkFormat::Bc5UnormBlock ? BlockFormat::Bc5 : BlockFormat::Bc7;
+    const auto decoded = decode_image(bf, blocks, source.width, source.height);
+    const unsigned channels = role == kRoleNormal  ? kChannelsRg
+                              : source.has_alpha() ? kChannelsRgba
+                                                   : kChannelsRgb;
+    return squared_error(source.pixels, decoded, channels).psnr();
+}
+
+// Decodes, mips and compresses one texture whose source is already decoded.
+void compress(PreparedTexture& t, const TextureUse& use, const RgbaImage& source,
+              const PipelineOptions& opt) {
+    auto start = std::chrono::steady_clock::now();
+    const auto chain = build_mip_chain(source, {mip_filter(use.role), use.alpha_cutoff});
+    t.mip_ms = ms_since(start);
+    start = std::chrono::steady_clock::now();
+    t.levels.clear();
+    for (const RgbaImage& level : chain) {
+        if (!is_block_compressed(t.format)) {
+            t.levels.push_back(level.pixels);
+            continue;
+        }
+        const bool bc5 = t.format == VkFormat::Bc5UnormBlock;
+        const EncodeSettings settings{bc5 ? opt.bc5_level : opt.bc7_level, opt.simd};
+        t.levels.push_back(encode_image(bc5 ? BlockFormat::Bc5 : BlockFormat::Bc7, level.pixels,
+                                        level.width, level.height, settings));
+    }
+    t.encode_ms = ms_since(start);
+    if (is_block_compressed(t.format))
+        t.psnr = measure_psnr(use.role, source, t.levels[0], t.format);
+}
+
+} // namespace
+
+std::string texture_recipe(const TextureUse& use, const PipelineOptions& opt) {
+    const VkFormat format = output_format(use.role, opt.device_supports_bc);
+    std::string r = "sherpa-texture/" + std::to_string(kTextureEncoderVersion);
+    r += ";format=" + std::string(vk_format_name(format));
+    if (format == VkFormat::Bc7SrgbBlock || format == VkFormat::Bc7UnormBlock)
+        r += ";bc7-level=" + std::to_string(opt.bc7_level);
+    if (format == VkFormat::Bc5UnormBlock) r += ";bc5-level=" + std::to_string(opt.bc5_level);
+    r += ";mips=full-box;filter=" + std::string(role_name(use.role));
+    if (use.alpha_cutoff) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, ";coverage=%.4f", *use.alpha_cutoff);
+        r += buf;
+    }
+    return r;
+}
+
+PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& opt) {
+    PreparedTextureSet set;
+    const std::vector<TextureUse> uses = collect_texture_uses(scene);
+    std::optional<TextureCache> cache;
+    if (opt.cache_dir) cache.emplace(*opt.cache_dir, opt.cache_cap_bytes);
+    if (!opt.device_supports_bc && !uses.empty())
+        set.warnings.push_back(
+            "device cannot sample BC formats: textures fall back to uncompressed RGBA8");
+
+    std::vector<std::size_t> misses; // indices into set.textures still to be made
+    for (const TextureUse& use : uses) {
+        const ImageRecord& img = scene.images[std::size_t(use.image)];
+        PreparedTexture t;
+        t.image = use.image, t.role = use.role, t.textures = use.textures;
+        t.source = source_name(img, use.image);
+        t.format = output_format(use.role, opt.device_supports_bc);
+        t.source_hash = source_hash(img);
+        t.recipe = texture_recipe(use, opt);
+        const Hash128 key = cache_key(t.source_hash, t.recipe);
+        t.state = CacheState::Miss;
+        if (cache) {
+            t.cache_file = cache->file_for(key);
+            CacheLookup found = cache->load(key, t.source_hash, t.recipe);
+            if (found.state == LookupState::Hit) {
+                t.state = opt.device_supports_bc ? CacheState::Hit : CacheState::Fallback;
+                t.width = found.texture.width, t.height = found.texture.height;
+                t.levels = std::move(found.texture.levels);
+                t.bytes_on_disk = found.file_bytes;
+                if (const std::string* p = found.texture.find(kKeyPsnr))
+                    t.psnr = std::strtod(p->c_str(), nullptr);
+            } else if (found.state == LookupState::Stale || found.state == LookupState::Corrupt) {
+                t.state = found.state == LookupState::Stale ? CacheState::Stale
+                                                            : CacheState::Recompressed;
+                t.note = found.problem;
+                set.warnings.push_back("texture cache: " + found.problem + "; recompressing");
+            }
+        }
+        if (t.levels.empty()) misses.push_back(set.textures.size());
+        set.textures.push_back(std::move(t));
+    }
+
+    // Decode the misses, a few files at a time (OpenImageIO decodes one file on one thread).
+    std::vector<RgbaImage> decoded(misses.size());
+    std::vector<std::string> errors(misses.size());
+    std::atomic<std::size_t> next{0};
+    auto decode_worker = [&] {
+        for (std::size_t i; (i = next++) < misses.size();) {
+            PreparedTexture& t = set.textures[misses[i]];
+            const auto start = std::chrono::steady_clock::now();
+            if (!decode_source(scene.images[std::size_t(t.image)], decoded[i], errors[i]))
+                decoded[i] = {};
+            t.decode_ms = ms_since(start);
+        }
+    };
+    std::vector<std::thread> workers;
+    for (int w = 0; w < std::max(1, opt.decode_threads) && std::size_t(w) < misses.size(); ++w)
+        workers.emplace_back(decode_worker);
+    for (auto& w : workers) w.join();
+
+    // Compress (OpenMP across blocks inside encode_image), then store.
+    for (std::size_t i = 0; i < misses.size(); ++i) {
+        PreparedTexture& t = set.textures[misses[i]];
+        if (decoded[i].empty()) {
+            t.failed = true;
+            t.note = errors[i];
+            set.warnings.push_back(t.source + ": " + errors[i]);
+            continue;
+        }
+        const TextureUse& use = uses[misses[i]];
+        t.width = decoded[i].width, t.height = decoded[i].height;
+        compress(t, use, decoded[i], opt);
+        decoded[i] = {}; // release the pixels early: scenes can hold many large images
+        if (!opt.device_supports_bc) t.state = CacheState::Fallback;
+        if (!cache) continue;
+        Ktx2Texture ktx{t.format, t.width, t.height, t.levels, {}};
+        // "inf" for lossless levels; strtod reads it back.
+        if (t.psnr) ktx.metadata.emplace_back(std::string(kKeyPsnr), std::to_string(*t.psnr));
+        std::string error;
+        const Hash128 key = cache_key(t.source_hash, t.recipe);
+        if (!cache->store(key, t.source_hash, t.recipe, std::move(ktx), error)) {
+            t.note = error;
+            set.warnings.push_back("texture cache: " + error);
+        }
+    }
+    for (PreparedTexture& t : set.textures) {
+        for (const auto& level : t.levels) t.bytes_gpu += level.size();
+        std::error_code ec;
+        if (!t.cache_file.empty() && t.bytes_on_disk == 0 &&
+            std::filesystem::exists(t.cache_file, ec))
+            t.bytes_on_disk = std::filesystem::file_size(t.cache_file, ec);
+    }
+    return set;
+}
+
+} // namespace sherpa::tex

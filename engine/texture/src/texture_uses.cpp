@@ -1,0 +1,95 @@
+// Which images the displayed scene's materials use, and in which roles.
+#include <sherpa/texture/texture_pipeline.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace sherpa::tex {
+
+std::string_view role_name(TextureRole role) {
+    switch (role) {
+    case kRoleNormal:
+        return "normal";
+    case kRoleLinear:
+        return "linear";
+    default:
+        return "color";
+    }
+}
+
+std::string_view to_string(CacheState state) {
+    switch (state) {
+    case CacheState::Hit:
+        return "hit";
+    case CacheState::Miss:
+        return "miss";
+    case CacheState::Stale:
+        return "stale";
+    case CacheState::Recompressed:
+        return "recompressed";
+    case CacheState::Fallback:
+        return "fallback";
+    }
+    return "miss";
+}
+
+std::vector<TextureUse> collect_texture_uses(const Scene& scene) {
+    std::set<std::uint32_t> used_materials;
+    for (const MeshInstance& inst : scene.instances) used_materials.insert(inst.material_id);
+    std::map<std::pair<std::int32_t, int>, TextureUse> uses;
+    auto add = [&](const TextureSlot& slot, TextureRole role, std::optional<float> cutoff) {
+        if (!slot.present() || std::size_t(slot.texture) >= scene.textures.size()) return;
+        const std::int32_t image = scene.textures[std::size_t(slot.texture)].image;
+        if (image < 0 || std::size_t(image) >= scene.images.size()) return;
+        TextureUse& use = uses[{image, int(role)}];
+        use.image = image, use.role = role;
+        if (std::find(use.textures.begin(), use.textures.end(), slot.texture) == use.textures.end())
+            use.textures.push_back(slot.texture);
+        // Several masked materials on one image: the lowest cutoff keeps the most.
+        if (cutoff)
+            use.alpha_cutoff = use.alpha_cutoff ? std::min(*use.alpha_cutoff, *cutoff) : *cutoff;
+    };
+    for (std::uint32_t id : used_materials) {
+        if (id >= scene.materials.size()) continue;
+        const MaterialInstance& m = scene.materials[id];
+        const auto cutoff =
+            m.alpha_mode == AlphaMode::Mask ? std::optional<float>(m.alpha_cutoff) : std::nullopt;
+        add(m.base_color, kRoleColor, cutoff);
+        add(m.emissive, kRoleColor, std::nullopt);
+        add(m.metallic_roughness, kRoleLinear, std::nullopt);
+        add(m.occlusion, kRoleLinear, std::nullopt);
+        add(m.normal, kRoleNormal, std::nullopt);
+    }
+    std::vector<TextureUse> out;
+    for (auto& [key, use] : uses) out.push_back(std::move(use));
+    return out;
+}
+
+std::int32_t PreparedTextureSet::find(std::int32_t texture, TextureRole role) const {
+    for (std::size_t i = 0; i < textures.size(); ++i)
+        if (textures[i].role == role &&
+            std::find(textures[i].textures.begin(), textures[i].textures.end(), texture) !=
+                textures[i].textures.end())
+            return static_cast<std::int32_t>(i);
+    return -1;
+}
+
+GPUMaterialData resolve_material(const MaterialInstance& material, const PreparedTextureSet& set,
+                                 std::span<const std::uint32_t> bindless_slot) {
+    GPUMaterialData gpu = to_gpu_material(material);
+    auto slot = [&](const TextureSlot& s, TextureRole role) {
+        const std::int32_t i = s.present() ? set.find(s.texture, role) : -1;
+        if (i < 0 || std::size_t(i) >= bindless_slot.size() || set.textures[std::size_t(i)].failed)
+            return kTextureSentinel;
+        return bindless_slot[std::size_t(i)];
+    };
+    gpu.base_color_tex = slot(material.base_color, kRoleColor);
+    gpu.emissive_tex = slot(material.emissive, kRoleColor);
+    gpu.metallic_roughness_tex = slot(material.metallic_roughness, kRoleLinear);
+    gpu.occlusion_tex = slot(material.occlusion, kRoleLinear);
+    gpu.normal_tex = slot(material.normal, kRoleNormal);
+    return gpu;
+}
+
+} // namespace sherpa::tex

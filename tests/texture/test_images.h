@@ -1,0 +1,30 @@
+#pragma once
+// Small deterministic test images: synthetic patterns and crops of the real corpus.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include <sherpa/texture/image.h>
+
+namespace sherpa::test {
+
+inline std::filesystem::path assets_dir() {
+    return SHERPA_TEST_ASSETS_DIR;
+}
+
+// A w x h crop at (x, y) of a corpus image; fails the calling test via exception.
+tex::RgbaImage load_crop(const std::filesystem::path& file, std::uint32_t x, std::uint32_t y,
+                         std::uint32_t w, std::uint32_t h);
+
+// Gradients, hard edges, noise and an alpha ramp: every BC7 mode has a use here.
+tex::RgbaImage synthetic_image(std::uint32_t w, std::uint32_t h, bool with_alpha,
+                               std::uint32_t seed);
+
+// An image of one colour.
+tex::RgbaImage constant_image(std::uint32_t w, std::uint32_t h, std::uint8_t r, std::uint8_t g,
+                              std::uint8_t b, std::uint8_t a);
+
+// A fresh empty directory under the system temp directory, named after the test.
+std::filesystem::path fresh_temp_dir(const std::string& name);
+
+} // namespace sherpa::test

@@ -1,4 +1,5 @@
 #include <sherpa/gpu/camera.h>
+#include <sherpa/scene/camera_spec.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -106,28 +107,13 @@ bool parse_camera_spec(std::string_view text, CameraSpec& spec, std::string& err
     return true;
 }
 
+// One convention for the whole engine: the scene layer's (camera_spec.h).
 glm::mat4 reverse_z_perspective(float fov_y, float aspect, float n, float f) {
-    const float t = 1.0f / std::tan(0.5f * fov_y);
-    glm::mat4 p(0.0f);
-    p[0][0] = t / aspect;
-    p[1][1] = t;
-    p[2][3] = -1.0f; // w = -z_view
-    if (f <= 0.0f) {
-        p[3][2] = n; // depth = n / -z: 1 at the near plane, 0 at infinity
-    } else {
-        p[2][2] = n / (f - n);
-        p[3][2] = n * f / (f - n);
-    }
-    return p;
+    return perspective_reverse_z(fov_y, aspect, n, f);
 }
 
 glm::mat4 reverse_z_orthographic(float hw, float hh, float n, float f) {
-    glm::mat4 p(1.0f);
-    p[0][0] = 1.0f / hw;
-    p[1][1] = 1.0f / hh;
-    p[2][2] = 1.0f / (f - n); // depth 1 at -n, 0 at -f
-    p[3][2] = f / (f - n);
-    return p;
+    return orthographic_reverse_z(hw, hh, n, f);
 }
 
 CameraView resolve_camera(const CameraSpec& spec, const Scene& scene, float viewport_aspect) {

@@ -11,35 +11,6 @@
 
 namespace sherpa::gpu {
 
-namespace {
-
-bool parse_float(std::string_view s, float& out) {
-    const auto r = std::from_chars(s.data(), s.data() + s.size(), out);
-    return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(out);
-}
-
-bool parse_vec3(std::string_view s, glm::vec3& out) {
-    for (int i = 0; i < 3; ++i) {
-        const std::size_t comma = s.find(',');
-        if ((i < 2) != (comma != std::string_view::npos)) return false;
-        if (!parse_float(s.substr(0, comma), out[i])) return false;
-        if (i < 2) s.remove_prefix(comma + 1);
-    }
-    return true;
-}
-
-std::vector<std::string_view> split(std::string_view s, char sep) {
-    std::vector<std::string_view> out;
-    while (true) {
-        const std::size_t at = s.find(sep);
-        out.push_back(s.substr(0, at));
-        if (at == std::string_view::npos) return out;
-        s.remove_prefix(at + 1);
-    }
-}
-
-} // namespace
-
 bool parse_camera_spec(std::string_view text, CameraSpec& spec, std::string& error) {
     spec = CameraSpec{};
     if (text == "auto" || text.empty()) return true;
@@ -53,57 +24,21 @@ bool parse_camera_spec(std::string_view text, CameraSpec& spec, std::string& err
         spec.kind = CameraSpec::Kind::Gltf;
         return true;
     }
+    // Explicit cameras: the one parser of the camera string (scene layer).
+    sherpa::CameraSpec parsed;
+    std::string parse_error;
+    if (!sherpa::parse_camera_spec(text, parsed, parse_error)) {
+        error = "camera '" + std::string(text) + "': " + parse_error;
+        return false;
+    }
     spec.kind = CameraSpec::Kind::Explicit;
-    bool have_eye = false, have_target = false;
-    for (std::string_view field : split(text, ':')) {
-        const std::size_t eq = field.find('=');
-        const std::string_view key = field.substr(0, eq);
-        const std::string_view value =
-            eq == std::string_view::npos ? std::string_view() : field.substr(eq + 1);
-        bool ok = eq != std::string_view::npos;
-        if (!ok) {
-        } else if (key == "eye") {
-            ok = parse_vec3(value, spec.eye);
-            have_eye = true;
-        } else if (key == "target") {
-            ok = parse_vec3(value, spec.target);
-            have_target = true;
-        } else if (key == "up") {
-            ok = parse_vec3(value, spec.up) && glm::length(spec.up) > 0.0f;
-        } else if (key == "fov") {
-            ok = parse_float(value, spec.fov_degrees) && spec.fov_degrees > 0.0f &&
-                 spec.fov_degrees < 180.0f;
-        } else if (key == "aspect") {
-            ok = parse_float(value, spec.aspect) && spec.aspect > 0.0f;
-        } else if (key == "near") {
-            ok = parse_float(value, spec.near_plane) && spec.near_plane > 0.0f;
-        } else if (key == "far") {
-            ok = parse_float(value, spec.far_plane) && spec.far_plane >= 0.0f;
-        } else {
-            error = "camera '" + std::string(text) + "': unknown field '" + std::string(key) + "'";
-            return false;
-        }
-        if (!ok) {
-            error = "camera '" + std::string(text) + "': bad value in '" + std::string(field) + "'";
-            return false;
-        }
-    }
-    if (!have_eye || !have_target) {
-        error = "camera '" + std::string(text) +
-                "': needs eye=x,y,z and target=x,y,z (or auto, gltf:N)";
-        return false;
-    }
-    if (spec.far_plane != 0.0f && spec.far_plane <= spec.near_plane) {
-        error = "camera '" + std::string(text) + "': far must exceed near";
-        return false;
-    }
-    const glm::vec3 dir = spec.target - spec.eye;
-    if (glm::length(dir) == 0.0f ||
-        glm::length(glm::cross(dir, spec.up)) < 1e-6f * glm::length(dir)) {
-        error =
-            "camera '" + std::string(text) + "': eye equals target or up is parallel to the view";
-        return false;
-    }
+    spec.eye = parsed.eye;
+    spec.target = parsed.target;
+    spec.up = parsed.up;
+    spec.fov_degrees = parsed.fov_y_degrees;
+    spec.aspect = parsed.aspect_given ? parsed.aspect : 0.0f; // 0: the viewport's
+    spec.near_plane = parsed.near_plane;
+    spec.far_plane = parsed.far_plane;
     return true;
 }
 

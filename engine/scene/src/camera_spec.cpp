@@ -80,7 +80,7 @@ bool parse_camera_spec(std::string_view text, CameraSpec& out, std::string& erro
         else if (key == "fov")
             ok = parse_floats(value, &c.fov_y_degrees, 1);
         else if (key == "aspect")
-            ok = parse_floats(value, &c.aspect, 1);
+            ok = c.aspect_given = parse_floats(value, &c.aspect, 1);
         else if (key == "near")
             ok = parse_floats(value, &c.near_plane, 1);
         else if (key == "far")

@@ -20,6 +20,7 @@ struct CameraSpec {
     glm::vec3 up{0.0f, 1.0f, 0.0f};
     float fov_y_degrees = 60.0f;
     float aspect = 16.0f / 9.0f;
+    bool aspect_given = false; // the string named an aspect (else a viewport may supply its own)
     float near_plane = 0.05f;
     float far_plane = 0.0f; // 0 = infinite
 

@@ -157,13 +157,8 @@ int main(int argc, char** argv) {
         }
         if (gpu_culler) {
             // GPU-driven path: compute dispatch time from timestamps, median of runs.
-            std::vector<Aabb> bounds;
-            for (const auto& inst : r.scene->instances) bounds.push_back(inst.world_bounds);
-            std::vector<std::uint32_t> identity(bounds.size());
-            for (std::uint32_t i = 0; i < identity.size(); ++i) identity[i] = i;
-            std::vector<gpu::GpuMesh> meshes(r.scene->meshes.size());
             const ScenePasses passes = build_mesh_passes(*r.scene);
-            gpu_culler->build(passes.forward, bounds, identity, meshes);
+            gpu_culler->build(passes.forward, *r.scene);
             std::vector<double> ms;
             gpu::GpuCullReadback rb;
             for (int k = 0; k < std::max(3, repeat / 3); ++k) {

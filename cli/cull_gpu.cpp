@@ -13,17 +13,6 @@ bool gpu_cull_passes(const Scene& scene, const std::vector<std::pair<std::string
     try {
         gpu::Context context;
         gpu::ResourceManager resources(context);
-        std::vector<Aabb> bounds;
-        for (const auto& inst : scene.instances) bounds.push_back(inst.world_bounds);
-        std::vector<std::uint32_t> identity(bounds.size());
-        for (std::uint32_t i = 0; i < identity.size(); ++i) identity[i] = i;
-        std::vector<gpu::GpuMesh> meshes(scene.meshes.size());
-        std::uint32_t first = 0;
-        for (std::size_t m = 0; m < meshes.size(); ++m) {
-            meshes[m].first_index = first;
-            meshes[m].index_count = static_cast<std::uint32_t>(scene.meshes[m].indices.size());
-            first += meshes[m].index_count;
-        }
         // The camera sees every instance; cascades see the shadow casters.
         MeshPass camera_pass(MeshPassKind::Forward);
         for (std::uint32_t i = 0; i < scene.instances.size(); ++i)
@@ -31,8 +20,8 @@ bool gpu_cull_passes(const Scene& scene, const std::vector<std::pair<std::string
         camera_pass.update();
         const ScenePasses passes = build_mesh_passes(scene);
         gpu::GpuCuller camera_culler(context, resources), shadow_culler(context, resources);
-        camera_culler.build(camera_pass, bounds, identity, meshes);
-        shadow_culler.build(passes.shadow, bounds, identity, meshes);
+        camera_culler.build(camera_pass, scene);
+        shadow_culler.build(passes.shadow, scene);
         for (std::size_t p = 0; p < frusta.size(); ++p) {
             gpu::GpuCuller& culler = p == 0 ? camera_culler : shadow_culler;
             const gpu::GpuCullReadback r = culler.run(frusta[p].second, CullMethod::PVertex);

@@ -42,8 +42,7 @@ TEST_F(GpuCullingTest, AgreesWithTheCpuPathForEveryMethod) {
     ASSERT_TRUE(scene);
     ScenePasses passes = build_mesh_passes(*scene);
     gpu::GpuCuller culler(context(), renderer().resources());
-    const auto b = bounds(*scene);
-    culler.build(passes.forward, b, identity(b.size()), mesh_ranges(*scene));
+    culler.build(passes.forward, *scene);
     ASSERT_EQ(culler.object_count(), scene->instances.size());
     const CullInput input = prepare_cull_input(*scene);
     for (const char* cam :
@@ -77,8 +76,7 @@ TEST_F(GpuCullingTest, BatchesHoldExactlyTheirVisibleObjects) {
     ASSERT_TRUE(scene);
     ScenePasses passes = build_mesh_passes(*scene);
     gpu::GpuCuller culler(context(), renderer().resources());
-    const auto b = bounds(*scene);
-    culler.build(passes.forward, b, identity(b.size()), mesh_ranges(*scene));
+    culler.build(passes.forward, *scene);
     CameraSpec c;
     std::string error;
     ASSERT_TRUE(parse_camera_spec("eye=0,3,9:target=0,1,0", c, error)) << error;

@@ -97,6 +97,22 @@ GPUCullObject make_cull_object(const Aabb& box, std::uint32_t batch, std::uint32
             invalid ? glm::vec3(0.0f) : box.max, instance};
 }
 
+void GpuCuller::build(const MeshPass& pass, const Scene& scene) {
+    std::vector<Aabb> bounds;
+    bounds.reserve(scene.instances.size());
+    for (const MeshInstance& inst : scene.instances) bounds.push_back(inst.world_bounds);
+    std::vector<std::uint32_t> identity(bounds.size());
+    for (std::uint32_t i = 0; i < identity.size(); ++i) identity[i] = i;
+    std::vector<GpuMesh> meshes(scene.meshes.size());
+    std::uint32_t first = 0;
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+        meshes[m].first_index = first;
+        meshes[m].index_count = static_cast<std::uint32_t>(scene.meshes[m].indices.size());
+        first += meshes[m].index_count;
+    }
+    build(pass, bounds, identity, meshes);
+}
+
 void GpuCuller::build(const MeshPass& pass, std::span<const Aabb> bounds,
                       std::span<const std::uint32_t> gpu_instance,
                       std::span<const GpuMesh> meshes) {

@@ -76,6 +76,10 @@ public:
     void build(std::span<const GPUCullObject> objects,
                std::span<const VkDrawIndexedIndirectCommand> draws,
                std::vector<std::uint32_t> object_instance);
+    // For culling without a GpuScene (CLI, tests, benchmarks): the scene's instance
+    // bounds, GPU instance index = scene instance index, index ranges laid out mesh
+    // after mesh in one buffer.
+    void build(const MeshPass& pass, const Scene& scene);
     void build(const MeshPass& pass, std::span<const Aabb> bounds,
                std::span<const std::uint32_t> gpu_instance, std::span<const GpuMesh> meshes);
 

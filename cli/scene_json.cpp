@@ -59,13 +59,8 @@ json scene_info_json(const Scene& scene) {
     json detail = json::array();
     for (const auto& p : scene.primitives) {
         json attrs = json::object();
-        for (const auto& [name, prov] : p.attributes) attrs[name] = to_string(prov);
-        // The engine mesh is the truth once post-import steps (tangent generation)
-        // have run; the import-time list keeps the file's other attributes.
-        if (p.engine_mesh >= 0)
-            for (VertexAttribute a : kAllVertexAttributes)
-                attrs[std::string(gltf_name(a))] = to_string(
-                    scene.meshes[static_cast<std::size_t>(p.engine_mesh)].provenance_of(a));
+        for (const auto& [name, prov] : scene.attribute_provenance(p))
+            attrs[name] = to_string(prov);
         json e = {{"mesh", p.mesh},         {"primitive", p.primitive}, {"mode", to_string(p.mode)},
                   {"vertices", p.vertices}, {"indices", p.indices},     {"triangles", p.triangles},
                   {"material", p.material}, {"attributes", attrs}};

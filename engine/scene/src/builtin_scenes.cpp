@@ -36,8 +36,9 @@ struct SceneBuilder {
         info.triangles = geometry.source_triangle_count;
         info.material = static_cast<std::int32_t>(material);
         info.engine_mesh = static_cast<std::int32_t>(s.meshes.size());
-        for (VertexAttribute a : kAllVertexAttributes)
-            info.attributes.emplace_back(gltf_name(a), geometry.provenance_of(a));
+        for (VertexAttribute a : kAllVertexAttributes) // what the generator wrote
+            if (geometry.provenance_of(a) == Provenance::Authored)
+                info.file_attributes.emplace_back(gltf_name(a));
         s.counts.vertices += info.vertices;
         s.counts.triangles += info.triangles;
         s.mesh_primitives.push_back({info.engine_mesh});

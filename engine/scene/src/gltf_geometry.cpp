@@ -118,7 +118,7 @@ void import_primitive(ImportContext& ctx, std::uint32_t mesh_index, std::uint32_
     const auto pos_it = prim.attributes.find("POSITION");
     for (const auto& [name, accessor] : prim.attributes) {
         accessor_count(model, accessor, where + ".attributes." + name); // validates the index
-        info.attributes.emplace_back(name, Provenance::Authored);
+        info.file_attributes.push_back(name);
     }
     auto finish_skipped = [&](std::string reason) {
         ctx.warn(where + ": " + reason);
@@ -237,14 +237,6 @@ void import_primitive(ImportContext& ctx, std::uint32_t mesh_index, std::uint32_
         prim.material >= 0 ? static_cast<std::uint32_t>(prim.material) : ctx.default_material_id();
     if (prim.material < 0) ctx.warn(where + ": no material; using the default material");
     for (const auto& v : mesh.vertices) mesh.local_bounds.expand(v.position);
-
-    for (auto& [name, prov] : info.attributes) {
-        for (VertexAttribute a : kAllVertexAttributes)
-            if (name == gltf_name(a)) prov = mesh.provenance_of(a);
-    }
-    for (VertexAttribute a : kAllVertexAttributes)
-        if (mesh.provenance_of(a) != Provenance::Authored)
-            info.attributes.emplace_back(gltf_name(a), mesh.provenance_of(a));
 
     info.engine_mesh = static_cast<std::int32_t>(scene.meshes.size());
     scene.mesh_primitives[mesh_index].push_back(info.engine_mesh);

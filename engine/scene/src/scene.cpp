@@ -1,5 +1,7 @@
 #include <sherpa/scene/scene.h>
 
+#include <algorithm>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace sherpa {
@@ -14,6 +16,22 @@ SamplerDesc Scene::sampler_of(const TextureRecord& t) const {
     if (t.sampler >= 0 && static_cast<std::size_t>(t.sampler) < samplers.size())
         return samplers[static_cast<std::size_t>(t.sampler)];
     return SamplerDesc{}; // glTF: repeat wrapping, auto filtering
+}
+
+std::vector<std::pair<std::string, Provenance>>
+Scene::attribute_provenance(const PrimitiveInfo& p) const {
+    std::vector<std::pair<std::string, Provenance>> out;
+    const Mesh* mesh =
+        p.engine_mesh >= 0 ? &meshes[static_cast<std::size_t>(p.engine_mesh)] : nullptr;
+    if (mesh)
+        for (VertexAttribute a : kAllVertexAttributes)
+            out.emplace_back(gltf_name(a), mesh->provenance_of(a));
+    for (const std::string& name : p.file_attributes) {
+        const bool canonical =
+            std::any_of(out.begin(), out.end(), [&](const auto& e) { return e.first == name; });
+        if (!canonical) out.emplace_back(name, Provenance::Authored);
+    }
+    return out;
 }
 
 std::uint64_t Scene::node_primitive_pairs() const {

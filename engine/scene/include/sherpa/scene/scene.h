@@ -72,13 +72,13 @@ struct Mesh {
 struct PrimitiveInfo {
     std::uint32_t mesh = 0, primitive = 0;
     PrimitiveMode mode = PrimitiveMode::Triangles;
-    std::uint32_t vertices = 0;    // POSITION count
-    std::uint32_t indices = 0;     // index accessor count (0 if non-indexed)
-    std::uint32_t triangles = 0;   // after strip/fan conversion
-    std::int32_t material = -1;    // glTF material index (-1: none)
-    std::int32_t engine_mesh = -1; // index into Scene::meshes, -1 if skipped
-    std::string skipped_reason;    // why no engine mesh was made
-    std::vector<std::pair<std::string, Provenance>> attributes;
+    std::uint32_t vertices = 0;               // POSITION count
+    std::uint32_t indices = 0;                // index accessor count (0 if non-indexed)
+    std::uint32_t triangles = 0;              // after strip/fan conversion
+    std::int32_t material = -1;               // glTF material index (-1: none)
+    std::int32_t engine_mesh = -1;            // index into Scene::meshes, -1 if skipped
+    std::string skipped_reason;               // why no engine mesh was made
+    std::vector<std::string> file_attributes; // attribute semantics the file gives
 };
 
 struct Node {
@@ -167,7 +167,7 @@ struct Scene {
     std::vector<MeshInstance> instances;
     std::vector<PlacedLight> placed_lights;
     std::vector<PlacedCamera> placed_cameras;
-    std::vector<glm::mat4> node_world; // identity for nodes outside the displayed scene
+    std::vector<glm::mat4> node_world;          // identity for nodes outside the displayed scene
     std::vector<std::uint32_t> displayed_nodes; // nodes of the displayed scene, depth-first
     Aabb bounds;
 
@@ -177,6 +177,11 @@ struct Scene {
     // node x primitive pairs of the displayed scene, drawable or not (points,
     // lines and empty primitives included), as the file states them.
     std::uint64_t node_primitive_pairs() const;
+    // Every attribute of a primitive with its provenance: the engine mesh's six
+    // streams as they are now (after tangent generation and the like), plus the
+    // file's other attributes (JOINTS_0, ...) as authored.
+    std::vector<std::pair<std::string, Provenance>>
+    attribute_provenance(const PrimitiveInfo& p) const;
     // Sampler for a texture, the glTF default when it names none.
     SamplerDesc sampler_of(const TextureRecord& t) const;
 };

@@ -19,5 +19,5 @@ sed 's#"library_path": *"[^"]*"#"library_path": "./libVkLayer_khronos_validation
     >"$stage/sherpa/layers/VkLayer_khronos_validation.json"
 cp -r "$assets/gltf" "$stage/sherpa/gltf"
 mkdir -p "$out"
-tar -C "$stage" -cf - sherpa | xz -T2 -6 >"$out/sherpa-device.tar.xz"
+tar -C "$stage" -cf - sherpa | xz -T2 -2 >"$out/sherpa-device.tar.xz"
 ls -l "$out/sherpa-device.tar.xz"

@@ -143,11 +143,10 @@ std::optional<GpuMaterialReadback> GpuViewport::readMaterial(int material) {
     std::memcpy(&out.record, readback.mapped, kSize);
     resources.destroy(staging);
 
-    // Every (texture, colour space) slot the scene registered, inverted.
+    // Every (texture, role) slot the scene registered, inverted.
     for (std::size_t t = 0; t < impl_->scene->textures.size(); ++t)
-        for (bool srgb : {true, false}) {
-            const std::uint32_t slot =
-                scene->textures().slot(static_cast<std::int32_t>(t), srgb, kTextureSentinel);
+        for (TextureRole role : {kRoleColor, kRoleLinear, kRoleNormal}) {
+            const std::uint32_t slot = scene->textures().slot(static_cast<std::int32_t>(t), role);
             if (slot == kTextureSentinel) continue;
             if (slot >= out.bindless_to_texture.size())
                 out.bindless_to_texture.resize(slot + 1, -1);

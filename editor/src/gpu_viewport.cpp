@@ -65,6 +65,17 @@ QString GpuViewport::deviceName() const {
         .arg(VK_API_VERSION_PATCH(info.api_version));
 }
 
+void GpuViewport::setTextureCache(const QString& directory, const QString& quality) {
+    gpu::TextureSettings t = impl_->renderer->texture_settings();
+    t.cache_dir = directory.isEmpty()
+                      ? std::nullopt
+                      : std::optional(std::filesystem::path(directory.toStdString()));
+    t.quality = quality == QLatin1String("fast")   ? tex::kBc7MinLevel
+                : quality == QLatin1String("best") ? tex::kBc7MaxLevel
+                                                   : tex::kBc7DefaultLevel;
+    impl_->renderer->set_texture_settings(t);
+}
+
 void GpuViewport::setScene(const Scene* scene) {
     impl_->scene = scene;
     if (scene)

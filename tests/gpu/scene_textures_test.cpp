@@ -4,6 +4,7 @@
 // the material records.
 #include "gpu_test_support.h"
 
+#include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/scene_textures.h>
 
 #include <cmath>
@@ -103,6 +104,23 @@ TEST_F(SceneTexturesTest, PreparedOnAnotherThreadUploadsBlocksWithFullMipChains)
     EXPECT_EQ(d.emissive_tex, gpu::kBlackTexture);
     EXPECT_EQ(d.occlusion_tex, gpu::kWhiteTexture);
     EXPECT_EQ(d.metallic_roughness_tex, gpu::kWhiteTexture);
+}
+
+TEST_F(SceneTexturesTest, RefusesSetsWithoutLevelsOrForAnotherScene) {
+    const auto good =
+        gpu::prepare_scene_textures(*helmet_, context().info(), test_texture_settings());
+    auto stripped = std::make_shared<tex::PreparedTextureSet>(*good);
+    stripped->textures[2].levels.clear(); // as after GpuScene released them
+    EXPECT_THROW(renderer().load(*helmet_, stripped), gpu::GpuError);
+    auto truncated = std::make_shared<tex::PreparedTextureSet>(*good);
+    truncated->textures[1].levels[3].pop_back();
+    EXPECT_THROW(renderer().load(*helmet_, truncated), gpu::GpuError);
+    Scene other = *helmet_;
+    other.textures.resize(2); // the set names textures 2..4 too
+    EXPECT_THROW(renderer().load(other, good), gpu::GpuError);
+    // Nothing half-made stays behind; the good set still loads.
+    renderer().load(*helmet_, good);
+    EXPECT_EQ(renderer().scene()->textures().image_count(), 5u);
 }
 
 TEST_F(SceneTexturesTest, ForcedRgba8FallbackLooksLikeTheBlocksAndCostsFourTimesTheMemory) {

@@ -46,6 +46,29 @@ VkSamplerCreateInfo sampler_info(const SamplerDesc& d, const DeviceInfo& device)
     return si;
 }
 
+// A set prepared for another scene or device, or whose levels were released after an
+// earlier upload, would create invalid images: refuse it.
+void check_prepared(const tex::PreparedTexture& t, const Scene& scene, const DeviceInfo& device) {
+    const std::string what =
+        "prepared texture '" + t.source + "' (" + std::string(tex::role_name(t.role)) + ")";
+    for (std::int32_t texture : t.textures)
+        if (texture < 0 || std::size_t(texture) >= scene.textures.size())
+            throw GpuError(what + " names glTF texture " + std::to_string(texture) + " of " +
+                           std::to_string(scene.textures.size()) + ": prepared for another scene?");
+    if (tex::is_block_compressed(t.format) && !device.bc_textures)
+        throw GpuError(what + " is " + std::string(tex::vk_format_name(t.format)) + " but " +
+                       device.name + " cannot sample BC formats: prepare with its DeviceInfo");
+    if (t.levels.empty() || t.width == 0 || t.height == 0)
+        throw GpuError(what + " has no levels (released after an earlier upload?)");
+    for (std::size_t l = 0; l < t.levels.size(); ++l) {
+        const auto level = static_cast<std::uint32_t>(l);
+        if (t.levels[l].size() != tex::level_size(t.format, tex::mip_extent(t.width, level),
+                                                  tex::mip_extent(t.height, level)))
+            throw GpuError(what + ": mip level " + std::to_string(l) + " has " +
+                           std::to_string(t.levels[l].size()) + " bytes, not what its size needs");
+    }
+}
+
 } // namespace
 
 tex::PipelineOptions texture_pipeline_options(const DeviceInfo& device,
@@ -118,12 +141,8 @@ void SceneTextures::upload(const Scene& scene) {
     UploadBatch batch(resources_);
     for (std::size_t i = 0; i < records.size(); ++i) {
         const tex::PreparedTexture& t = records[i];
-        if (t.failed || t.levels.empty() || t.textures.empty()) continue; // default stands in
-        for (std::int32_t texture : t.textures)
-            if (texture < 0 || std::size_t(texture) >= scene.textures.size())
-                throw GpuError("prepared texture names glTF texture " + std::to_string(texture) +
-                               " of " + std::to_string(scene.textures.size()) +
-                               ": prepared for another scene?");
+        if (t.failed || t.textures.empty()) continue; // the default texture stands in
+        check_prepared(t, scene, resources_.context().info());
         ImageDesc d;
         d.format = static_cast<VkFormat>(t.format);
         d.width = t.width;

@@ -37,7 +37,11 @@ public:
     ~GpuViewport();
 
     QString deviceName() const;
-    // Uploads the scene (replacing the previous one; null unloads).
+    // Where setScene() finds and stores compressed textures, and the BC7 quality
+    // ("fast", "balanced" or "best", as in the settings); an empty directory: no cache.
+    void setTextureCache(const QString& directory, const QString& quality);
+    // Uploads the scene (replacing the previous one; null unloads). Prepares its
+    // textures (texture cache, BC7/BC5) on this thread first.
     void setScene(const Scene* scene);
     // Presents one frame on `surface` (the swapchain is created on first use and
     // recreated when the size changes). False when the frame was skipped.

@@ -25,6 +25,7 @@ gpu::TextureSettings TextureCliOptions::gpu_settings() const {
     s.cache_cap_bytes = cache_cap_bytes;
     s.quality = quality;
     s.force_rgba8 = no_bc;
+    s.decode_bc7_on_cpu = !keep_bc7;
     return s;
 }
 
@@ -39,6 +40,8 @@ OptionMatch parse_texture_option(Args args, std::size_t& i, TextureCliOptions& o
         out.use_cache = false;
     } else if (a == "--no-bc") {
         out.no_bc = true;
+    } else if (a == "--keep-bc7") {
+        out.keep_bc7 = true;
     } else if (a == "--cache-dir") {
         const auto v = value();
         if (!v || v->empty()) {

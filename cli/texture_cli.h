@@ -16,14 +16,17 @@
 namespace sherpa::cli {
 
 inline constexpr const char* kTextureOptionsSynopsis =
-    "[--cache-dir DIR] [--cache-cap-mb N] [--quality N] [--no-cache] [--no-bc]";
+    "[--cache-dir DIR] [--cache-cap-mb N] [--quality N] [--no-cache] [--no-bc]"
+    " [--keep-bc7]";
 inline constexpr const char* kTextureOptionsHelp =
     "  --cache-dir DIR    texture cache (default $XDG_CACHE_HOME/sherpa/textures, else\n"
     "                     ~/.cache/sherpa/textures)\n"
     "  --cache-cap-mb N   least recently used files go beyond N MiB (default 2048)\n"
     "  --no-cache         neither read nor write the cache\n"
     "  --quality N        BC7 quality level 0 (fastest) .. 4 (best); default 1\n"
-    "  --no-bc            upload RGBA8 as if the device could not sample BC formats\n";
+    "  --no-bc            upload RGBA8 as if the device could not sample BC formats\n"
+    "  --keep-bc7         sample BC7 blocks on CPU devices too (by default they are\n"
+    "                     decoded to RGBA8 at upload there: sampling BC7 is slow)\n";
 
 struct TextureCliOptions {
     bool use_cache = true;
@@ -31,6 +34,7 @@ struct TextureCliOptions {
     std::uint64_t cache_cap_bytes = tex::kDefaultCacheCapBytes;
     int quality = tex::kBc7DefaultLevel;
     bool no_bc = false;
+    bool keep_bc7 = false; // render only: no BC7 decoding at upload on CPU devices
 
     // The directory in use: nullopt with --no-cache, else --cache-dir or the default.
     std::optional<std::filesystem::path> resolved_cache_dir() const;

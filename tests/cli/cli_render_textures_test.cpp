@@ -7,6 +7,8 @@
 
 #include <sherpa/gpu/image_io.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <unistd.h>
@@ -57,7 +59,8 @@ protected:
 };
 
 TEST_F(CliRenderTextures, HelmetUploadsBc7AndBc5ThenHitsTheCache) {
-    const std::string cache = "--cache-dir '" + (dir_ / "cache").string() + "'";
+    // --keep-bc7: on a CPU device (lavapipe, here) BC7 is otherwise decoded at upload.
+    const std::string cache = "--keep-bc7 --cache-dir '" + (dir_ / "cache").string() + "'";
     std::vector<std::uint8_t> first_rgba, second_rgba;
     const nlohmann::json first = render(cache, "first", &first_rgba);
     ASSERT_FALSE(first.is_null());
@@ -88,6 +91,32 @@ TEST_F(CliRenderTextures, HelmetUploadsBc7AndBc5ThenHitsTheCache) {
     EXPECT_EQ(second["validation_messages"], 0);
     EXPECT_EQ(second["gpu_memory_bytes"]["textures"], first["gpu_memory_bytes"]["textures"]);
     EXPECT_EQ(second_rgba, first_rgba); // the cached blocks are the blocks just made
+
+    // The CPU-device default: the same cached BC7 blocks, decoded to RGBA8 at upload,
+    // look the same as sampling the blocks; BC5 stays compressed.
+    std::vector<std::uint8_t> decoded_rgba;
+    const nlohmann::json decoded =
+        render("--cache-dir '" + (dir_ / "cache").string() + "'", "decoded", &decoded_rgba);
+    ASSERT_FALSE(decoded.is_null());
+    if (decoded["device"]["type"] != "cpu") GTEST_SKIP() << "BC7 is decoded on CPU devices only";
+    EXPECT_EQ(counts(decoded["textures"]["by_state"]), (std::map<std::string, int>{{"hit", 5}}));
+    EXPECT_EQ(counts(decoded["textures"]["by_format"]),
+              (std::map<std::string, int>{{"VK_FORMAT_R8G8B8A8_SRGB", 2},
+                                          {"VK_FORMAT_R8G8B8A8_UNORM", 2},
+                                          {"VK_FORMAT_BC5_UNORM_BLOCK", 1}}));
+    for (const auto& tex : decoded["textures"]["textures"])
+        if (tex["format"] != "VK_FORMAT_BC5_UNORM_BLOCK")
+            EXPECT_NE(tex["note"].get<std::string>().find("decoded to RGBA8"), std::string::npos);
+    EXPECT_EQ(decoded["validation_messages"], 0);
+    ASSERT_EQ(decoded_rgba.size(), first_rgba.size());
+    std::size_t off = 0;
+    int worst = 0;
+    for (std::size_t i = 0; i < first_rgba.size(); ++i) {
+        const int d = std::abs(int(decoded_rgba[i]) - int(first_rgba[i]));
+        worst = std::max(worst, d);
+        off += d > 2;
+    }
+    EXPECT_EQ(off, 0u) << "largest channel difference " << worst;
 }
 
 TEST_F(CliRenderTextures, NoCacheRenderUsesNoDirectory) {

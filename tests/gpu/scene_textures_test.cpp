@@ -6,6 +6,7 @@
 
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/scene_textures.h>
+#include <sherpa/texture/block_codecs.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -40,6 +41,13 @@ protected:
     std::unique_ptr<Scene> helmet_;
 };
 
+// Blocks as they are, also on CPU devices (which decode BC7 at upload by default).
+gpu::TextureSettings block_settings() {
+    gpu::TextureSettings s = test_texture_settings();
+    s.decode_bc7_on_cpu = false;
+    return s;
+}
+
 TEST_F(SceneTexturesTest, DeviceSamplesBcOnLavapipe) {
     // Lavapipe decodes BC formats; a device without them takes the RGBA8 path (below).
     if (context().info().is_cpu()) EXPECT_TRUE(context().info().bc_textures);
@@ -49,9 +57,8 @@ TEST_F(SceneTexturesTest, PreparedOnAnotherThreadUploadsBlocksWithFullMipChains)
     if (!context().info().bc_textures) GTEST_SKIP() << "device cannot sample BC";
     // Preparation makes no Vulkan calls: run it where the editor's loader runs it.
     std::shared_ptr<const tex::PreparedTextureSet> set;
-    std::thread worker([&] {
-        set = gpu::prepare_scene_textures(*helmet_, context().info(), test_texture_settings());
-    });
+    std::thread worker(
+        [&] { set = gpu::prepare_scene_textures(*helmet_, context().info(), block_settings()); });
     worker.join();
     ASSERT_TRUE(set);
     renderer().load(*helmet_, set);
@@ -106,6 +113,39 @@ TEST_F(SceneTexturesTest, PreparedOnAnotherThreadUploadsBlocksWithFullMipChains)
     EXPECT_EQ(d.metallic_roughness_tex, gpu::kWhiteTexture);
 }
 
+TEST_F(SceneTexturesTest, CpuDevicesDecodeBc7AtUploadAndSaySo) {
+    if (!context().info().is_cpu() || !context().info().bc_textures)
+        GTEST_SKIP() << "BC7 is decoded at upload on CPU devices only";
+    const auto decoded =
+        gpu::prepare_scene_textures(*helmet_, context().info(), test_texture_settings());
+    const auto blocks = gpu::prepare_scene_textures(*helmet_, context().info(), block_settings());
+    ASSERT_EQ(decoded->textures.size(), blocks->textures.size());
+    for (std::size_t i = 0; i < blocks->textures.size(); ++i) {
+        const tex::PreparedTexture& b = blocks->textures[i];
+        const tex::PreparedTexture& d = decoded->textures[i];
+        if (b.format == tex::VkFormat::Bc5UnormBlock) {
+            EXPECT_EQ(d.format, b.format) << "BC5 samples as fast as RGBA8: kept";
+            continue;
+        }
+        ASSERT_TRUE(b.format == tex::VkFormat::Bc7SrgbBlock ||
+                    b.format == tex::VkFormat::Bc7UnormBlock);
+        EXPECT_EQ(tex::is_srgb(d.format), tex::is_srgb(b.format)) << b.source;
+        EXPECT_FALSE(tex::is_block_compressed(d.format)) << b.source;
+        ASSERT_EQ(d.levels.size(), b.levels.size());
+        // Every level is exactly the decoding of the cached blocks.
+        for (std::size_t l = 0; l < b.levels.size(); ++l)
+            EXPECT_EQ(d.levels[l], tex::decode_image(tex::BlockFormat::Bc7, b.levels[l],
+                                                     tex::mip_extent(b.width, std::uint32_t(l)),
+                                                     tex::mip_extent(b.height, std::uint32_t(l))))
+                << b.source << " level " << l;
+        EXPECT_EQ(d.state, b.state);
+        EXPECT_EQ(d.psnr, b.psnr);
+        EXPECT_NE(d.note.find("decoded to RGBA8"), std::string::npos);
+    }
+    ASSERT_FALSE(decoded->warnings.empty());
+    EXPECT_NE(decoded->warnings.back().find("CPU device"), std::string::npos);
+}
+
 TEST_F(SceneTexturesTest, RefusesSetsWithoutLevelsOrForAnotherScene) {
     const auto good =
         gpu::prepare_scene_textures(*helmet_, context().info(), test_texture_settings());
@@ -138,8 +178,7 @@ TEST_F(SceneTexturesTest, ForcedRgba8FallbackLooksLikeTheBlocksAndCostsFourTimes
     EXPECT_EQ(renderer().scene()->warnings(), fallback->warnings);
 
     if (!context().info().bc_textures) GTEST_SKIP() << "device cannot sample BC";
-    const auto blocks =
-        gpu::prepare_scene_textures(*helmet_, context().info(), test_texture_settings());
+    const auto blocks = gpu::prepare_scene_textures(*helmet_, context().info(), block_settings());
     const std::vector<std::uint8_t> compressed = render_helmet(blocks);
     const std::uint64_t block_bytes = renderer().scene()->memory().textures;
     // 1 byte per texel against 4 (tiny mip levels round up to whole 4x4 blocks).

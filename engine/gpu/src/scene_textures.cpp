@@ -3,7 +3,11 @@
 #include <sherpa/gpu/scene_textures.h>
 #include <sherpa/gpu/upload.h>
 
+#include <sherpa/texture/block_codecs.h>
+
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
 
 namespace sherpa::gpu {
 
@@ -69,6 +73,28 @@ void check_prepared(const tex::PreparedTexture& t, const Scene& scene, const Dev
     }
 }
 
+// Replaces t's BC7 levels by their RGBA8 decoding (what sampling the blocks returns).
+void decode_bc7_levels(tex::PreparedTexture& t) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const bool srgb = t.format == tex::VkFormat::Bc7SrgbBlock;
+    std::uint64_t bytes = 0;
+    for (std::size_t l = 0; l < t.levels.size(); ++l) {
+        const auto level = static_cast<std::uint32_t>(l);
+        t.levels[l] =
+            tex::decode_image(tex::BlockFormat::Bc7, t.levels[l], tex::mip_extent(t.width, level),
+                              tex::mip_extent(t.height, level));
+        bytes += t.levels[l].size();
+    }
+    t.format = srgb ? tex::VkFormat::R8G8B8A8Srgb : tex::VkFormat::R8G8B8A8Unorm;
+    t.bytes_gpu = bytes;
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    char note[96];
+    std::snprintf(note, sizeof note, "BC7 blocks decoded to RGBA8 for the CPU device (%.1f ms)",
+                  ms);
+    t.note = t.note.empty() ? note : t.note + "; " + note;
+}
+
 } // namespace
 
 tex::PipelineOptions texture_pipeline_options(const DeviceInfo& device,
@@ -99,6 +125,22 @@ prepare_scene_textures(const Scene& scene, const DeviceInfo& device,
                 : "RGBA8 forced by the texture settings: textures are uploaded uncompressed "
                   "although " +
                       device.name + " samples BC7/BC5");
+    }
+    if (device.is_cpu() && settings.decode_bc7_on_cpu) {
+        std::vector<tex::PreparedTexture*> bc7;
+        for (tex::PreparedTexture& t : set->textures)
+            if (!t.failed && (t.format == tex::VkFormat::Bc7SrgbBlock ||
+                              t.format == tex::VkFormat::Bc7UnormBlock))
+                bc7.push_back(&t);
+#pragma omp parallel for schedule(dynamic)
+        for (std::ptrdiff_t i = 0; i < std::ptrdiff_t(bc7.size()); ++i)
+            decode_bc7_levels(*bc7[std::size_t(i)]);
+        if (!bc7.empty())
+            set->warnings.push_back(
+                std::to_string(bc7.size()) +
+                " BC7 texture(s) decoded to RGBA8 at upload: " + device.name +
+                " is a CPU device, where sampling BC7 costs several times RGBA8 (keep the blocks "
+                "with TextureSettings::decode_bc7_on_cpu = false or --keep-bc7)");
     }
     return set;
 }

@@ -29,6 +29,12 @@ struct TextureSettings {
     int quality = tex::kBc7DefaultLevel; // BC7 level
     // Upload RGBA8 even where the device samples BC (what devices without BC get).
     bool force_rgba8 = false;
+    // CPU devices (lavapipe) decode a whole BC7 block for every texel they fetch:
+    // measured 5-7x the frame time of RGBA8 for DamagedHelmet at 720p. There the
+    // cached BC7 blocks are decoded to RGBA8 at upload (same pixels as sampling the
+    // blocks, 4x the memory); false keeps the blocks. BC5 costs the same either way
+    // and stays compressed.
+    bool decode_bc7_on_cpu = true;
 };
 
 // Pipeline options for `device`: block-compressed where the device can sample

@@ -49,9 +49,12 @@ void Renderer::build_culling() {
     culling_->invalid.assign(bounds.size(), 0);
     for (std::uint32_t i : culling_->boxes.invalid) culling_->invalid[i] = 1;
     culling_->blended.assign(bounds.size(), 0);
+    culling_->casters = static_cast<std::uint32_t>(bounds.size());
     for (const DrawGroup& g : scene_->groups())
-        if (g.alpha == AlphaMode::Blend)
+        if (g.alpha == AlphaMode::Blend) {
             std::fill_n(culling_->blended.begin() + g.first_instance, g.instance_count, 1);
+            culling_->casters -= g.instance_count;
+        }
     if (bounds.empty()) return;
     std::vector<std::uint32_t> identity(bounds.size());
     std::iota(identity.begin(), identity.end(), 0u);
@@ -102,9 +105,9 @@ void Renderer::cull_pass_cpu(FrameSlot& slot, std::uint32_t pass, CullMethod met
     PassCull& pc = slot.passes[pass];
     const auto& groups = scene_->groups();
     const BoxesSoA& boxes = culling_->boxes;
-    pc.visible.assign(boxes.size(), 0);
     pc.group_visible.assign(groups.size(), 0);
-    if (blended_only) {
+    if (blended_only) { // writes only the blended instances' flags: no O(instances) work
+        pc.visible.resize(boxes.size());
         for (std::size_t g = 0; g < groups.size(); ++g) {
             if (groups[g].alpha != AlphaMode::Blend) continue;
             for (std::uint32_t k = 0; k < groups[g].instance_count; ++k) {
@@ -116,6 +119,7 @@ void Renderer::cull_pass_cpu(FrameSlot& slot, std::uint32_t pass, CullMethod met
         }
         return;
     }
+    pc.visible.resize(boxes.size());
     cull_boxes(pc.frustum, boxes, method, SimdLevel::Avx512, pc.visible);
     pc.cpu_tested = true;
     CullStats& st = pc.stats;
@@ -143,8 +147,7 @@ void Renderer::cull_frame(VkCommandBuffer cmd, FrameSlot& slot, const RenderSett
     if (culling_->identity.valid())
         slot.push_base.instance_ids = resources_->get(culling_->identity).address;
     const std::uint32_t n = static_cast<std::uint32_t>(culling_->boxes.size());
-    std::uint32_t casters = 0;
-    for (std::uint8_t b : culling_->blended) casters += b ? 0 : 1;
+    const std::uint32_t casters = culling_->casters;
     slot.pass_count = 1 + cascades;
     if (slot.passes.size() < slot.pass_count) slot.passes.resize(slot.pass_count);
     glm::mat4 camera_vp = slot.camera.proj * slot.camera.view;

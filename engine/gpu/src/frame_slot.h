@@ -61,6 +61,7 @@ struct Renderer::Culling {
     BoxesSoA boxes;                    // instance bounds, GPU instance order
     std::vector<std::uint8_t> invalid; // per GPU instance: box not valid (never culled)
     std::vector<std::uint8_t> blended; // per GPU instance: alpha mode BLEND
+    std::uint32_t casters = 0;         // instances not blended (the shadow passes)
     // GPU path, built on first use: one culler per pass (camera, each cascade), all
     // over the non-blended groups, one batch per group.
     std::vector<std::unique_ptr<GpuCuller>> gpu;

@@ -51,6 +51,9 @@ void Renderer::record_frame(VkCommandBuffer cmd, std::uint32_t index, const Rend
                             const RenderSettings& settings) {
     FrameSlot& slot = *slots_.at(index);
     wait_slot(slot);
+    // Frames nobody read the results of (the swapchain path) still reach the
+    // culling history, before this slot's queries are reset.
+    if (slot.has_results && !slot.history_pushed) read_stats(slot);
     vkResetQueryPool(context_.device(), slot.timestamps.get(), 0, kTimestampCount);
     if (slot.statistics) vkResetQueryPool(context_.device(), slot.statistics.get(), 0, 1);
     slot.has_results = false;

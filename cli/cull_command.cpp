@@ -1,11 +1,14 @@
 // sherpa-cli cull SCENE --camera SPEC [--method sphere|pvertex|exact|gpu] [--json]
 // The camera pass plus one pass per shadow cascade of the scene's first
-// directional light (or a default sun).
+// directional light (or a default sun): the cascades the renderer draws for this
+// camera (sherpa/scene/shadow_cascades.h), casters only.
 #include "cli_common.h"
 #include "cull_gpu.h"
+#include "scene_json.h"
 
 #include <sherpa/scene/culling_passes.h>
 #include <sherpa/scene/scene_loader.h>
+#include <sherpa/scene/shadow_cascades.h>
 
 #include <cstdio>
 #include <iostream>
@@ -29,24 +32,13 @@ nlohmann::json pass_json(const Scene& s, const PassResult& p) {
     };
     for (std::uint32_t i : p.visible_opaque) add(i);
     for (std::uint32_t i : p.visible_transparent) add(i);
-    const CullStats& st = p.stats;
-    return {{"name", st.pass},
+    nlohmann::json stats = cull_stats_json(p.stats);
+    nlohmann::json matrix = stats["cull_view_projection"];
+    stats.erase("cull_view_projection");
+    return {{"name", p.stats.pass},
+            {"cull_view_projection", matrix},
             {"visible", visible},
-            {"stats",
-             {{"method", st.gpu ? std::string("gpu (") + std::string(to_string(st.method)) + ")"
-                                : std::string(to_string(st.method))},
-              {"gpu_ms", st.gpu_ms},
-              {"cpu_gpu_differences", st.cpu_gpu_differences},
-              {"simd", to_string(st.simd)},
-              {"total", st.total},
-              {"tested", st.tested},
-              {"visible", st.visible},
-              {"culled", st.culled},
-              {"invalid", st.invalid},
-              {"false_positives", st.false_positives},
-              {"draw_calls", st.draw_calls},
-              {"triangles", st.triangles},
-              {"cpu_ms", st.cpu_ms}}}};
+            {"stats", stats}};
 }
 
 } // namespace
@@ -99,20 +91,24 @@ int run_cull(Args args) {
     std::vector<PassResult> passes;
     passes.push_back(cull_pass(s, input, frustum_from_view_projection(camera.view_projection()),
                                camera.eye, options, "camera"));
-    glm::vec3 sun{-0.4f, -1.0f, -0.3f};
-    for (const PlacedLight& pl : s.placed_lights)
-        if (s.lights[pl.light].type == LightType::Directional) {
-            sun = pl.direction;
-            break;
-        }
-    const auto cascades = cascade_view_projections(camera, sun, s.bounds, {});
+    // The renderer's cascades for this camera (same fit, light, bounds and defaults),
+    // each culled against its volume extended toward the light; casters only.
     std::vector<std::pair<std::string, Frustum>> frusta = {
         {"camera", frustum_from_view_projection(camera.view_projection())}};
-    for (std::size_t c = 0; c < cascades.size(); ++c) {
-        frusta.emplace_back("cascade" + std::to_string(c),
-                            frustum_from_view_projection(cascades[c]));
-        passes.push_back(
-            cull_pass(s, input, frusta.back().second, camera.eye, options, frusta.back().first));
+    std::vector<glm::mat4> matrices = {camera.view_projection()};
+    if (const auto sun = main_light_direction(s)) {
+        const ShadowCascades cascades =
+            fit_shadow_cascades(cascade_camera(camera), drawable_bounds(s), *sun,
+                                kDefaultShadowCascades, kDefaultShadowResolution);
+        CullOptions shadow = options;
+        shadow.casters_only = true;
+        for (std::uint32_t c = 0; c < cascades.count; ++c) {
+            frusta.emplace_back("cascade" + std::to_string(c),
+                                frustum_from_view_projection(cascades.cull_view_proj[c]));
+            matrices.push_back(cascades.cull_view_proj[c]);
+            passes.push_back(
+                cull_pass(s, input, frusta.back().second, camera.eye, shadow, frusta.back().first));
+        }
     }
     if (on_gpu) {
         std::vector<PassResult> gpu_passes;
@@ -124,7 +120,10 @@ int run_cull(Args args) {
     }
     if (as_json) {
         nlohmann::json j = {{"passes", nlohmann::json::array()}};
-        for (const auto& p : passes) j["passes"].push_back(pass_json(s, p));
+        for (std::size_t p = 0; p < passes.size(); ++p) {
+            passes[p].stats.view_projection = matrices[p];
+            j["passes"].push_back(pass_json(s, passes[p]));
+        }
         std::cout << j.dump(1) << "\n";
     } else {
         std::printf("%-9s %8s %9s %9s %8s %8s %6s %10s %8s %8s %8s\n", "pass", "method", "total",

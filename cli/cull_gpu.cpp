@@ -35,7 +35,7 @@ bool gpu_cull_passes(const Scene& scene, const std::vector<std::pair<std::string
             st.method = CullMethod::PVertex;
             st.gpu = true;
             st.gpu_ms = r.gpu_ms;
-            st.total = scene.instances.size();
+            st.total = culler.object_count(); // casters only for cascades
             st.tested = culler.object_count();
             std::int64_t differences = 0;
             for (std::size_t k = 0; k < r.visible.size(); ++k) {

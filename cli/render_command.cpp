@@ -29,7 +29,7 @@ constexpr const char* kUsage =
     "         [--frames N] [--report FILE.json] [--validation] [--no-shadows] [--no-prepass]\n"
     "         [--glyph-length L] [--floor] [--cull none|cpu|gpu] [--cull-method "
     "sphere|pvertex|exact]\n"
-    "         [--freeze-cull eye=x,y,z:target=x,y,z[:...]]\n         ";
+    "         [--cull-check] [--freeze-cull eye=x,y,z:target=x,y,z[:...]]\n         ";
 
 int usage_error(const std::string& message) {
     std::fprintf(stderr, "error: %s\n%s%s\n%s", message.c_str(), kUsage, kTextureOptionsSynopsis,
@@ -134,6 +134,8 @@ int run_render(Args args) {
             auto v = value();
             if (!v || !parse_cull_method(*v, settings.cull_method))
                 return usage_error("--cull-method needs sphere, pvertex or exact");
+        } else if (a == "--cull-check") {
+            settings.cull_check = true;
         } else if (a == "--freeze-cull") {
             auto v = value();
             if (!v) return usage_error("--freeze-cull needs a camera spec");

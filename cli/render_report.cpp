@@ -1,4 +1,5 @@
 #include "render_report.h"
+#include "scene_json.h"
 #include "texture_cli.h"
 
 #include <algorithm>
@@ -129,17 +130,31 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
             {"fragment_shader_invocations", last.fragment_invocations},
             {"scope", "camera passes of the last frame (not shadow cascades)"}};
         j["draw_calls"] = last.draw_calls;
-        const CullStats& c = last.cull;
-        j["culling"] = c.pass.empty() ? nlohmann::json{{"path", "none"}}
-                                      : nlohmann::json{{"path", c.gpu ? "gpu" : "cpu"},
-                                                       {"method", to_string(c.method)},
-                                                       {"total", c.total},
-                                                       {"visible", c.visible},
-                                                       {"culled", c.culled},
-                                                       {"invalid", c.invalid},
-                                                       {"draw_calls", c.draw_calls},
-                                                       {"triangles", c.triangles},
-                                                       {"cpu_ms", c.cpu_ms}};
+        // Per culled pass of the last frame (cascades: of the last frame that rendered
+        // them); times are medians over the frames that ran the pass.
+        json culling = json::array();
+        for (const CullStats& c : last.culling) {
+            std::vector<double> cpu, gpu;
+            for (const gpu::FrameStats& f : run.frames)
+                if (const CullStats* same = f.pass(c.pass);
+                    same && (c.pass == "camera" || f.shadows_rendered)) {
+                    cpu.push_back(same->cpu_ms);
+                    if (same->gpu_ms >= 0.0) gpu.push_back(same->gpu_ms);
+                }
+            json pass = cull_stats_json(c);
+            pass["name"] = c.pass;
+            pass["path"] = std::string(gpu::to_string(run.settings.cull));
+            pass["cpu_ms_median"] = median(cpu);
+            pass["gpu_ms_median"] = gpu.empty() ? -1.0 : median(gpu);
+            culling.push_back(std::move(pass));
+        }
+        j["culling"] = culling;
+        j["culling_scope"] =
+            "camera: the shading draws (opaque, mask, blend) once; cascadeN: the shadow draws "
+            "into cascade N; depth_prepass: the prepass's repeat of the camera's opaque and "
+            "mask draws";
+        j["depth_prepass"] = {{"draw_calls", last.prepass.draw_calls},
+                              {"triangles", last.prepass.triangles}};
     }
     if (renderer.context().validation_enabled())
         j["validation_messages"] = renderer.context().validation().count();

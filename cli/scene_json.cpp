@@ -80,4 +80,25 @@ json scene_info_json(const Scene& scene) {
     return j;
 }
 
+nlohmann::json cull_stats_json(const CullStats& st) {
+    nlohmann::json matrix = nlohmann::json::array();
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) matrix.push_back(st.view_projection[c][r]);
+    return {{"cull_view_projection", matrix},
+            {"method", st.gpu ? std::string("gpu (") + std::string(to_string(st.method)) + ")"
+                              : std::string(to_string(st.method))},
+            {"simd", to_string(st.simd)},
+            {"total", st.total},
+            {"tested", st.tested},
+            {"visible", st.visible},
+            {"culled", st.culled},
+            {"invalid", st.invalid},
+            {"false_positives", st.false_positives},
+            {"cpu_gpu_differences", st.cpu_gpu_differences},
+            {"draw_calls", st.draw_calls},
+            {"triangles", st.triangles},
+            {"cpu_ms", st.cpu_ms},
+            {"gpu_ms", st.gpu_ms}};
+}
+
 } // namespace sherpa::cli

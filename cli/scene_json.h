@@ -2,6 +2,7 @@
 // JSON views of engine data, shared by CLI subcommands.
 #include <nlohmann/json.hpp>
 
+#include <sherpa/scene/culling_passes.h>
 #include <sherpa/scene/scene.h>
 #include <sherpa/scene/usage_report.h>
 
@@ -11,5 +12,8 @@ nlohmann::json aabb_json(const Aabb& box);
 nlohmann::json usage_json(const Scene& scene, const UsageReport& report);
 // The `sherpa-cli info --json` object.
 nlohmann::json scene_info_json(const Scene& scene);
+// A culling pass's statistics and the matrix it culled against
+// ("cull_view_projection", column-major), for `cull --json` and `render --report`.
+nlohmann::json cull_stats_json(const CullStats& stats);
 
 } // namespace sherpa::cli

@@ -181,4 +181,8 @@ std::uint64_t GpuViewport::textureBytes() const {
     return scene ? scene->textures().gpu_bytes() : 0;
 }
 
+const RingHistory<gpu::CullFrame>& GpuViewport::cullHistory() const {
+    return impl_->renderer->cull_history();
+}
+
 } // namespace sherpa::editor

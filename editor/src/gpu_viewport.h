@@ -11,11 +11,16 @@
 #include <optional>
 
 #include <sherpa/scene/camera_spec.h>
+#include <sherpa/scene/culling_passes.h>
 #include <sherpa/scene/scene.h>
 
 #include "material_dock.h"
 
 class QVulkanInstance;
+
+namespace sherpa::gpu {
+struct CullFrame;
+}
 
 namespace sherpa::editor {
 
@@ -55,6 +60,9 @@ public:
     // Bytes of the loaded scene's textures on the GPU (0 without a scene).
     std::uint64_t textureBytes() const;
     double lastGpuMs() const { return last_gpu_ms_; }
+    // The renderer's per-pass culling statistics of the last presented frames
+    // (camera and each shadow cascade), oldest first.
+    const RingHistory<gpu::CullFrame>& cullHistory() const;
 
 private:
     struct Impl;

@@ -5,6 +5,7 @@
 #include <sherpa/scene/culling.h>
 #include <sherpa/scene/culling_passes.h>
 #include <sherpa/scene/scene_loader.h>
+#include <sherpa/scene/shadow_cascades.h>
 
 #include <random>
 
@@ -237,28 +238,63 @@ TEST(CullPass, ListsGroupsAndBackToFrontTransparents) {
     EXPECT_LT(p.groups.size(), p.stats.visible) << "instances sharing a mesh share a draw";
 }
 
-TEST(Cascades, ExtendTowardTheLightToCoverOffscreenCasters) {
+TEST(Cascades, CullVolumeKeepsOffscreenAndLargeCastersAndDropsOnesBehindTheSlice) {
     const LoadResult r = load_scene("builtin:default");
     ASSERT_TRUE(r) << r.error;
     CameraSpec c;
     std::string error;
     ASSERT_TRUE(parse_camera_spec("eye=0,1,6:target=0,1,0:far=20", c, error)) << error;
     const glm::vec3 light_dir = glm::normalize(glm::vec3(0.0f, -1.0f, -0.2f));
-    const auto vps = cascade_view_projections(c, light_dir, r.scene->bounds, {});
-    ASSERT_EQ(vps.size(), 4u);
-    // A caster high above the view, between the light and the first slice, is kept.
-    // The light travels along (0, -1, -0.2): from y = 30 it lands about 5.8 units
-    // toward -z, right on the first slice (z about 4.6 .. 6 in front of the eye).
+    // A caster high above the view, between the light and the first slice: the light
+    // travels along (0, -1, -0.2), so from y = 30 it lands about 5.9 units toward -z,
+    // on the first slice (z about 4.4 .. 5.95 in front of the eye).
     const Aabb caster = Aabb::from_min_max({-0.5f, 30.0f, 10.5f}, {0.5f, 31.0f, 11.5f});
-    const Aabb with_caster = [&] {
-        Aabb b = r.scene->bounds;
-        b.expand(caster);
-        return b;
-    }();
-    const auto vps2 = cascade_view_projections(c, light_dir, with_caster, {});
-    EXPECT_TRUE(exact_visible(frustum_from_view_projection(vps2[0]), caster));
+    // A slab larger than any cascade, above everything: it shadows every slice.
+    const Aabb slab = Aabb::from_min_max({-100.0f, 20.0f, -100.0f}, {100.0f, 20.5f, 100.0f});
+    // Under the first slice along the light: farther from the light than every
+    // receiver of the slice, so it cannot shadow them.
+    const Aabb deep = Aabb::from_min_max({-0.5f, -30.5f, -1.6f}, {0.5f, -29.5f, -0.6f});
+    Aabb bounds = r.scene->bounds;
+    for (const Aabb& b : {caster, slab, deep}) bounds.expand(b);
+    const ShadowCascades s = fit_shadow_cascades(cascade_camera(c), bounds, light_dir, 3, 2048);
+    ASSERT_EQ(s.count, 3u);
+    const Frustum cull0 = frustum_from_view_projection(s.cull_view_proj[0]);
+    EXPECT_TRUE(exact_visible(cull0, caster));
     EXPECT_FALSE(pvertex_visible(frustum_from_view_projection(c.view_projection()), caster))
         << "not in the camera view";
+    for (std::uint32_t i = 0; i < s.count; ++i) {
+        const Frustum f = frustum_from_view_projection(s.cull_view_proj[i]);
+        EXPECT_TRUE(pvertex_visible(f, slab)) << "cascade " << i;
+        EXPECT_TRUE(exact_visible(f, slab)) << "cascade " << i;
+    }
+    EXPECT_TRUE(exact_visible(frustum_from_view_projection(s.view_proj[0]), deep))
+        << "inside the rendered volume, whose depth covers the scene";
+    EXPECT_FALSE(exact_visible(cull0, deep)) << "behind the slice as seen from the light";
+}
+
+TEST(Cascades, MainLightAndBoundsFollowTheRenderer) {
+    const LoadResult r = load_scene("builtin:grid?n=100");
+    ASSERT_TRUE(r) << r.error;
+    const auto sun = main_light_direction(*r.scene);
+    ASSERT_TRUE(sun.has_value());
+    for (const PlacedLight& pl : r.scene->placed_lights)
+        if (r.scene->lights[pl.light].type == LightType::Directional) {
+            EXPECT_NEAR(glm::length(*sun - glm::normalize(pl.direction)), 0.0f, 1e-6f);
+            break;
+        }
+    const Aabb b = drawable_bounds(*r.scene);
+    EXPECT_EQ(b.min, r.scene->bounds.min);
+    EXPECT_EQ(b.max, r.scene->bounds.max);
+    Scene no_lights;
+    const auto fallback = main_light_direction(no_lights);
+    ASSERT_TRUE(fallback.has_value());
+    EXPECT_NEAR(glm::length(*fallback - glm::normalize(kDefaultSunDirection)), 0.0f, 1e-6f);
+    Scene point_only;
+    point_only.lights.push_back(Light{});
+    point_only.lights.back().type = LightType::Point;
+    point_only.placed_lights.push_back(PlacedLight{});
+    EXPECT_FALSE(main_light_direction(point_only).has_value())
+        << "no directional light: no shadows";
 }
 
 TEST(CameraSpec, ParsesDefaultsAndRejectsBadInput) {

@@ -51,6 +51,19 @@ glm::mat4 reverse_z_orthographic(float hw, float hh, float n, float f) {
     return orthographic_reverse_z(hw, hh, n, f);
 }
 
+CascadeCamera cascade_camera(const CameraView& v) {
+    CascadeCamera c;
+    c.view = v.view;
+    c.near_plane = v.near_plane;
+    c.far_plane = v.far_plane;
+    c.fov_y = v.fov_y;
+    c.aspect = v.aspect;
+    c.orthographic = v.orthographic;
+    c.ortho_half_width = v.ortho_half_width;
+    c.ortho_half_height = v.ortho_half_height;
+    return c;
+}
+
 CameraView resolve_camera(const CameraSpec& spec, const Scene& scene, float viewport_aspect) {
     CameraView v;
     v.aspect = spec.aspect > 0.0f ? spec.aspect : viewport_aspect;

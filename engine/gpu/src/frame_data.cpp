@@ -3,7 +3,7 @@
 #include "frame_slot.h"
 
 #include <sherpa/gpu/gpu_structs.h>
-#include <sherpa/gpu/shadow_cascades.h>
+#include <sherpa/scene/shadow_cascades.h>
 
 #include <algorithm>
 #include <cstring>
@@ -54,11 +54,14 @@ void Renderer::fill_frame_data(FrameSlot& slot, const RenderSettings& settings, 
 
     shadows = false;
     cascades = 0;
+    slot.cascades = ShadowCascades{};
     if (have_sun && settings.shadows && !settings.floor_only && scene_ &&
         settings.view == DebugView::Lit) {
-        const CascadeSetup c =
-            fit_cascades(slot.camera, info.bounds, sun_dir,
-                         std::min(settings.cascades, kShadowCascades), options_.shadow_resolution);
+        // The one cascade fit (scene layer), shared with `sherpa-cli cull`.
+        const ShadowCascades c = fit_shadow_cascades(
+            cascade_camera(slot.camera), info.bounds, sun_dir,
+            std::min(settings.cascades, kShadowCascades), options_.shadow_resolution);
+        slot.cascades = c;
         cascades = c.count;
         for (std::uint32_t i = 0; i < c.count; ++i) f.shadow_view_proj[i] = c.view_proj[i];
         f.cascade_splits = c.splits;
@@ -67,7 +70,7 @@ void Renderer::fill_frame_data(FrameSlot& slot, const RenderSettings& settings, 
         // The cascades depend only on these inputs: unchanged means the map is reusable.
         std::vector<std::uint8_t> key(sizeof(c.view_proj) + sizeof(scene_generation_) +
                                       sizeof(cascades));
-        std::memcpy(key.data(), c.view_proj, sizeof(c.view_proj));
+        std::memcpy(key.data(), c.view_proj.data(), sizeof(c.view_proj));
         std::memcpy(key.data() + sizeof(c.view_proj), &scene_generation_,
                     sizeof(scene_generation_));
         std::memcpy(key.data() + sizeof(c.view_proj) + sizeof(scene_generation_), &cascades,

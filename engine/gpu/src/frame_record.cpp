@@ -51,6 +51,9 @@ void Renderer::record_frame(VkCommandBuffer cmd, std::uint32_t index, const Rend
                             const RenderSettings& settings) {
     FrameSlot& slot = *slots_.at(index);
     wait_slot(slot);
+    // Frames nobody read the results of (the swapchain path) still reach the
+    // culling history, before this slot's queries are reset.
+    if (slot.has_results && !slot.history_pushed) read_stats(slot);
     vkResetQueryPool(context_.device(), slot.timestamps.get(), 0, kTimestampCount);
     if (slot.statistics) vkResetQueryPool(context_.device(), slot.statistics.get(), 0, 1);
     slot.has_results = false;
@@ -59,12 +62,14 @@ void Renderer::record_frame(VkCommandBuffer cmd, std::uint32_t index, const Rend
 }
 
 void Renderer::draw_groups(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
-                           VkPipeline pipeline, AlphaMode alpha, std::uint32_t cascade, bool cull) {
+                           VkPipeline pipeline, AlphaMode alpha, std::uint32_t cascade, bool cull,
+                           CullStats& tally) {
     if (!scene_) return;
     bool bound = false;
     GPUPushConstants pc = slot.push_base;
     pc.cascade = cascade;
-    const bool culled = cascade == kNoCascade && slot.cull != CullPath::None;
+    const std::uint32_t pass = cascade == kNoCascade ? 0 : 1 + cascade;
+    const bool culled = slot.cull != CullPath::None && pass < slot.pass_count;
     for (std::size_t gi = 0; gi < scene_->groups().size(); ++gi) {
         const DrawGroup& g = scene_->groups()[gi];
         if (g.alpha != alpha) continue;
@@ -78,13 +83,15 @@ void Renderer::draw_groups(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines
                           g.mirrored ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
         set_mesh(pc, mesh, g.material);
         if (culled) {
-            if (draw_culled(cmd, slot, p.layout(), gi, pc)) ++slot.draw_calls;
+            if (draw_culled(cmd, slot, p.layout(), gi, pass, pc, tally)) ++slot.draw_calls;
             continue;
         }
         push(cmd, p.layout(), pc);
         vkCmdDrawIndexed(cmd, mesh.index_count, g.instance_count, mesh.first_index, 0,
                          g.first_instance);
         ++slot.draw_calls;
+        ++tally.draw_calls;
+        tally.triangles += std::uint64_t{g.instance_count} * (mesh.index_count / 3);
     }
 }
 
@@ -113,7 +120,7 @@ void Renderer::draw_blended(VkCommandBuffer cmd, FrameSlot& slot, const Pipeline
     GPUPushConstants pc = slot.push_base;
     pc.cascade = kNoCascade;
     for (const Item& it : items) {
-        if (slot.cull != CullPath::None && !slot.visible[it.instance]) continue;
+        if (slot.cull != CullPath::None && !slot.passes[0].visible[it.instance]) continue;
         const DrawGroup& g = groups[it.group];
         const GpuMesh& mesh = scene_->meshes()[g.mesh];
         vkCmdSetCullMode(cmd, g.double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
@@ -123,6 +130,10 @@ void Renderer::draw_blended(VkCommandBuffer cmd, FrameSlot& slot, const Pipeline
         push(cmd, p.layout(), pc);
         vkCmdDrawIndexed(cmd, mesh.index_count, 1, mesh.first_index, 0, it.instance);
         ++slot.draw_calls;
+        if (slot.pass_count) {
+            ++slot.passes[0].stats.draw_calls;
+            slot.passes[0].stats.triangles += mesh.index_count / 3;
+        }
     }
 }
 
@@ -154,8 +165,10 @@ void Renderer::record_shadows(VkCommandBuffer cmd, FrameSlot& slot, const Pipeli
         set_viewport(cmd, res, res);
         // Standard Z for the light; slope-scaled bias against acne on grazing faces.
         set_depth(cmd, VK_COMPARE_OP_LESS, true, 1.0f, 1.5f);
-        draw_groups(cmd, slot, p, p.get(PipelineId::ShadowOpaque), AlphaMode::Opaque, c, false);
-        draw_groups(cmd, slot, p, p.get(PipelineId::ShadowMask), AlphaMode::Mask, c, false);
+        CullStats& tally = slot.passes.at(1 + c).stats;
+        draw_groups(cmd, slot, p, p.get(PipelineId::ShadowOpaque), AlphaMode::Opaque, c, false,
+                    tally);
+        draw_groups(cmd, slot, p, p.get(PipelineId::ShadowMask), AlphaMode::Mask, c, false, tally);
         vkCmdEndRendering(cmd);
     }
     transition(cmd, {map.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT,
@@ -179,7 +192,10 @@ void Renderer::record_passes(VkCommandBuffer cmd, FrameSlot& slot, const RenderT
     if (scene_) slot.push_base.instances = scene_->instances_address();
     bind_frame_set(slot);
     slot.push_base.cascade = kNoCascade;
-    cull_camera(cmd, slot, settings, float(target.width) / float(target.height));
+    cull_frame(cmd, slot, settings, float(target.width) / float(target.height),
+               shadows ? cascades : 0);
+    CullStats unused;
+    CullStats& shading = slot.pass_count ? slot.passes[0].stats : unused;
 
     const VkDescriptorSet sets[] = {bindless_->set(), slot.set};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.layout(), 0, 2, sets, 0,
@@ -238,16 +254,16 @@ void Renderer::record_passes(VkCommandBuffer cmd, FrameSlot& slot, const RenderT
         // Same triangles, one constant colour: what the rasterizer costs by itself.
         set_depth(cmd, VK_COMPARE_OP_GREATER, true);
         for (AlphaMode a : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend})
-            draw_groups(cmd, slot, p, p.get(PipelineId::Floor), a, kNoCascade, true);
+            draw_groups(cmd, slot, p, p.get(PipelineId::Floor), a, kNoCascade, true, shading);
         for (std::uint32_t i = 2; i < kTimestampCount - 1; ++i)
             vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ts, i);
     } else {
         if (settings.depth_prepass) {
             set_depth(cmd, VK_COMPARE_OP_GREATER, true);
             draw_groups(cmd, slot, p, p.get(PipelineId::PrepassOpaque), AlphaMode::Opaque,
-                        kNoCascade, true);
+                        kNoCascade, true, slot.prepass);
             draw_groups(cmd, slot, p, p.get(PipelineId::PrepassMask), AlphaMode::Mask, kNoCascade,
-                        true);
+                        true, slot.prepass);
         }
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ts, 2);
         const VkPipeline forward = p.forward(static_cast<std::uint32_t>(settings.view), false);
@@ -255,9 +271,9 @@ void Renderer::record_passes(VkCommandBuffer cmd, FrameSlot& slot, const RenderT
         set_depth(cmd,
                   settings.depth_prepass ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_GREATER,
                   !settings.depth_prepass);
-        draw_groups(cmd, slot, p, forward, AlphaMode::Opaque, kNoCascade, true);
+        draw_groups(cmd, slot, p, forward, AlphaMode::Opaque, kNoCascade, true, shading);
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ts, 3);
-        draw_groups(cmd, slot, p, forward, AlphaMode::Mask, kNoCascade, true);
+        draw_groups(cmd, slot, p, forward, AlphaMode::Mask, kNoCascade, true, shading);
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ts, 4);
         set_depth(cmd, VK_COMPARE_OP_GREATER, false);
         draw_blended(cmd, slot, p, p.forward(static_cast<std::uint32_t>(settings.view), true));

@@ -6,6 +6,7 @@
 #include <sherpa/gpu/gpu_structs.h>
 #include <sherpa/gpu/renderer.h>
 #include <sherpa/scene/culling_passes.h>
+#include <sherpa/scene/shadow_cascades.h>
 
 namespace sherpa::gpu {
 
@@ -13,6 +14,16 @@ namespace sherpa::gpu {
 inline constexpr const char* kPassNames[] = {"shadows",    "depth_prepass", "opaque",
                                              "alpha_mask", "alpha_blend",   "overlays"};
 inline constexpr std::uint32_t kTimestampCount = std::size(kPassNames) + 1;
+
+// One culled pass of a frame.
+struct PassCull {
+    Frustum frustum;
+    std::vector<std::uint8_t> visible;        // per GPU instance, where the CPU test ran
+    std::vector<std::uint32_t> group_visible; // per draw group (CPU test)
+    bool cpu_tested = false;                  // `visible` holds every instance of the pass
+    CullStats stats;
+    VkDeviceSize readback = 0; // GPU path: offset of this pass in FrameSlot::cull_readback
+};
 
 struct Renderer::FrameSlot {
     explicit FrameSlot(Context& context) : recorder(context) {}
@@ -29,21 +40,31 @@ struct Renderer::FrameSlot {
     std::uint64_t draw_calls = 0;
     CameraView camera;
     GPUPushConstants push_base{}; // scene-wide addresses for this frame
-    // Camera culling of this frame (see frame_culling.cpp).
+    ShadowCascades cascades;      // fitted this frame (see frame_data.cpp)
+    // Culling of this frame (see frame_culling.cpp): pass 0 the camera, pass 1 + c
+    // shadow cascade c (only in frames that render the cascades).
     CullPath cull = CullPath::None;
-    std::uint32_t gpu_params = 0; // which GpuCuller parameter block
-    BufferHandle cull_ids;        // CPU path: compacted ids, host-visible
+    bool cull_check = false;
+    std::vector<PassCull> passes;
+    std::uint32_t pass_count = 0;
+    CullStats prepass;     // draws and triangles of the depth prepass
+    BufferHandle cull_ids; // CPU path: compacted ids per pass, host-visible
     VkDeviceSize cull_ids_capacity = 0;
-    std::vector<std::uint8_t> visible;        // per GPU instance (CPU test)
-    std::vector<std::uint32_t> group_visible; // per draw group: visible instances
-    CullStats cull_stats;
-    Frustum cull_frustum;
+    BufferHandle cull_readback; // GPU path: indirect commands (+ visible flags when checking)
+    VkDeviceSize cull_readback_capacity = 0;
+    UniqueQueryPool cull_timestamps; // two per pass around the GPU culling dispatch
+    bool history_pushed = false;
 };
 
 struct Renderer::Culling {
-    BufferHandle identity;                  // gl_InstanceIndex -> itself, per scene
-    BoxesSoA boxes;                         // instance bounds, GPU instance order
-    std::unique_ptr<GpuCuller> gpu;         // built on first use
+    BufferHandle identity;             // gl_InstanceIndex -> itself, per scene
+    BoxesSoA boxes;                    // instance bounds, GPU instance order
+    std::vector<std::uint8_t> invalid; // per GPU instance: box not valid (never culled)
+    std::vector<std::uint8_t> blended; // per GPU instance: alpha mode BLEND
+    std::uint32_t casters = 0;         // instances not blended (the shadow passes)
+    // GPU path, built on first use: one culler per pass (camera, each cascade), all
+    // over the non-blended groups, one batch per group.
+    std::vector<std::unique_ptr<GpuCuller>> gpu;
     std::vector<std::uint32_t> group_batch; // draw group -> GPU batch (~0u: blended)
 };
 

@@ -183,6 +183,9 @@ VkBuffer GpuCuller::draws() const {
 VkBuffer GpuCuller::draw_counts() const {
     return resources_.get(counts_).buffer.get();
 }
+VkBuffer GpuCuller::visible_flags() const {
+    return resources_.get(visible_).buffer.get();
+}
 VkDeviceAddress GpuCuller::instance_ids() const {
     return resources_.get(ids_).address;
 }

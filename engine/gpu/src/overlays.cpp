@@ -136,9 +136,10 @@ void Renderer::draw_cull_overlay(VkCommandBuffer cmd, FrameSlot& slot, const Pip
     const auto& bounds = scene_->instance_bounds();
     for (std::size_t i = 0; i < bounds.size(); ++i) {
         glm::vec4 color(0.9f, 0.15f, 0.1f, 1.0f);
-        if (slot.visible[i])
-            color = exact_visible(slot.cull_frustum, bounds[i]) ? glm::vec4(0.2f, 0.9f, 0.3f, 1.0f)
-                                                                : glm::vec4(1.0f, 0.9f, 0.1f, 1.0f);
+        if (slot.passes[0].visible[i])
+            color = exact_visible(slot.passes[0].frustum, bounds[i])
+                        ? glm::vec4(0.2f, 0.9f, 0.3f, 1.0f)
+                        : glm::vec4(1.0f, 0.9f, 0.1f, 1.0f);
         append_box(lines, bounds[i], color);
     }
     // Corners at infinity (infinite far plane) end at twice the scene's size.
@@ -157,7 +158,7 @@ void Renderer::draw_cull_overlay(VkCommandBuffer cmd, FrameSlot& slot, const Pip
                     lines.push_back({corner(i | bit), color});
                 }
     };
-    append_frustum(slot.cull_frustum, glm::vec4(1.0f));
+    append_frustum(slot.passes[0].frustum, glm::vec4(1.0f));
     const auto* frame = static_cast<const GPUFrameData*>(resources_->get(slot.frame_data).mapped);
     for (std::uint32_t c = 0; c < std::min(frame->params.z, kMaxCascades); ++c)
         append_frustum(frustum_from_view_projection(frame->shadow_view_proj[c]),

@@ -124,6 +124,7 @@ Renderer::~Renderer() {
         resources_->destroy(slot->frame_data);
         resources_->destroy(slot->lines);
         resources_->destroy(slot->cull_ids);
+        resources_->destroy(slot->cull_readback);
     }
     slots_.clear();
     resources_->destroy(color_);
@@ -220,7 +221,11 @@ void Renderer::unload() {
         // Sized for the scene's instances: it goes with the scene.
         resources_->destroy(slot->cull_ids);
         slot->cull_ids_capacity = 0;
+        resources_->destroy(slot->cull_readback);
+        slot->cull_readback_capacity = 0;
+        slot->pass_count = 0;
     }
+    cascade_stats_.clear();
     if (culling_) resources_->destroy(culling_->identity);
     culling_.reset();
     scene_.reset();
@@ -333,7 +338,7 @@ FrameStats Renderer::read_stats(FrameSlot& slot) {
     if (!slot.has_results) return s;
     s.shadows_rendered = slot.shadows_rendered;
     s.draw_calls = slot.draw_calls;
-    s.cull = slot.cull_stats;
+    read_cull_stats(slot, s);
     if (context_.info().timestamps) {
         std::uint64_t ts[kTimestampCount] = {};
         vk_check(vkGetQueryPoolResults(context_.device(), slot.timestamps.get(), 0, kTimestampCount,

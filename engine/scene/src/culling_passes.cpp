@@ -52,8 +52,21 @@ PassResult cull_pass(const Scene& scene, const CullInput& input, const Frustum& 
     const auto t0 = std::chrono::steady_clock::now();
     const BoxesSoA& boxes = input.boxes;
     std::vector<std::uint8_t> visible(boxes.size());
-    const CullCounts counts =
+    CullCounts counts =
         cull_boxes(frustum, boxes, options.method, options.simd, visible, options.threads);
+    std::uint64_t total = scene.instances.size();
+    if (options.casters_only) { // blended instances are not in a shadow pass
+        std::vector<std::uint8_t> invalid(boxes.size(), 0);
+        for (std::uint32_t i : boxes.invalid) invalid[i] = 1;
+        for (std::uint32_t i = 0; i < visible.size(); ++i) {
+            if (!input.transparent[i]) continue;
+            --total;
+            --counts.tested;
+            --(visible[i] ? counts.visible : counts.culled);
+            counts.invalid -= invalid[i];
+            visible[i] = 0;
+        }
+    }
     // Counting sort of visible opaque instances by group id: linear time.
     const std::size_t groups = input.group_keys.size();
     std::vector<std::uint32_t> offset(groups + 1, 0);
@@ -104,7 +117,7 @@ PassResult cull_pass(const Scene& scene, const CullInput& input, const Frustum& 
     s.pass = std::move(pass_name);
     s.method = options.method;
     s.simd = std::min(options.simd, best_simd_level());
-    s.total = scene.instances.size();
+    s.total = total;
     s.tested = counts.tested;
     s.visible = counts.visible;
     s.culled = counts.culled;
@@ -119,66 +132,6 @@ PassResult cull_pass(const Scene& scene, const CullInput& input, const Frustum& 
         s.false_positives = fp;
     }
     return r;
-}
-
-std::vector<glm::mat4> cascade_view_projections(const CameraSpec& camera, glm::vec3 light_direction,
-                                                const Aabb& scene_bounds,
-                                                const CascadeSetup& setup) {
-    std::vector<glm::mat4> out;
-    if (setup.count == 0 || !scene_bounds.valid() || glm::length(light_direction) == 0.0f)
-        return out;
-    const glm::vec3 dir = glm::normalize(light_direction);
-    // Far end: the camera's far plane, else the farthest scene corner.
-    float far_d = camera.far_plane > 0.0f ? camera.far_plane : 0.0f;
-    if (far_d == 0.0f)
-        for (int c = 0; c < 8; ++c) {
-            const glm::vec3 p{(c & 1) ? scene_bounds.max.x : scene_bounds.min.x,
-                              (c & 2) ? scene_bounds.max.y : scene_bounds.min.y,
-                              (c & 4) ? scene_bounds.max.z : scene_bounds.min.z};
-            far_d = std::max(far_d, glm::length(p - camera.eye));
-        }
-    if (setup.max_distance > 0.0f) far_d = std::min(far_d, setup.max_distance);
-    const float near_d = camera.near_plane;
-    far_d = std::max(far_d, near_d * 2.0f);
-    // Camera basis and the slice corners at distance d along the view direction.
-    const glm::vec3 fwd = glm::normalize(camera.target - camera.eye);
-    const glm::vec3 right = glm::normalize(glm::cross(fwd, camera.up));
-    const glm::vec3 up = glm::cross(right, fwd);
-    const float ty = std::tan(glm::radians(camera.fov_y_degrees) * 0.5f), tx = ty * camera.aspect;
-    const glm::vec3 light_up = std::abs(dir.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-    const glm::mat4 light_view = glm::lookAt(glm::vec3(0.0f), dir, light_up);
-    float scene_max_z = -INFINITY; // toward the light is +Z in light view space
-    for (int c = 0; c < 8; ++c) {
-        const glm::vec3 p{(c & 1) ? scene_bounds.max.x : scene_bounds.min.x,
-                          (c & 2) ? scene_bounds.max.y : scene_bounds.min.y,
-                          (c & 4) ? scene_bounds.max.z : scene_bounds.min.z};
-        scene_max_z = std::max(scene_max_z, (light_view * glm::vec4(p, 1.0f)).z);
-    }
-    float prev = near_d;
-    for (std::uint32_t i = 1; i <= setup.count; ++i) {
-        const float t = static_cast<float>(i) / static_cast<float>(setup.count);
-        const float split = setup.lambda * near_d * std::pow(far_d / near_d, t) +
-                            (1.0f - setup.lambda) * (near_d + (far_d - near_d) * t);
-        glm::vec3 lo(INFINITY), hi(-INFINITY);
-        for (float d : {prev, split})
-            for (int c = 0; c < 4; ++c) {
-                const glm::vec3 p = camera.eye + fwd * d +
-                                    right * (((c & 1) ? 1.0f : -1.0f) * tx * d) +
-                                    up * (((c & 2) ? 1.0f : -1.0f) * ty * d);
-                const glm::vec3 q = glm::vec3(light_view * glm::vec4(p, 1.0f));
-                lo = glm::min(lo, q);
-                hi = glm::max(hi, q);
-            }
-        hi.z = std::max(hi.z, scene_max_z); // extend toward the light: off-screen casters
-        const glm::vec2 c = 0.5f * (glm::vec2(lo) + glm::vec2(hi));
-        const glm::vec2 half = glm::max(0.5f * (glm::vec2(hi) - glm::vec2(lo)), glm::vec2(1e-4f));
-        // View-space depth runs along -Z: near = -hi.z, far = -lo.z.
-        const glm::mat4 proj =
-            orthographic_reverse_z(half.x, half.y, -hi.z, std::max(-lo.z, -hi.z + 1e-4f));
-        out.push_back(proj * glm::translate(glm::mat4(1.0f), glm::vec3(-c, 0.0f)) * light_view);
-        prev = split;
-    }
-    return out;
 }
 
 } // namespace sherpa

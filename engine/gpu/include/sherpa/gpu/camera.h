@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 
 #include <sherpa/scene/scene.h>
+#include <sherpa/scene/shadow_cascades.h>
 
 namespace sherpa::gpu {
 
@@ -40,6 +41,9 @@ struct CameraView {
     bool orthographic = false;
     float ortho_half_width = 1.0f, ortho_half_height = 1.0f;
 };
+
+// What the shadow-cascade fit needs of a resolved camera.
+CascadeCamera cascade_camera(const CameraView& view);
 
 // Resolves a spec against a scene for a viewport aspect (width / height). Throws
 // std::invalid_argument for a glTF camera index the scene lacks.

@@ -97,6 +97,7 @@ public:
     VkBuffer draws() const;
     VkBuffer draw_counts() const; // one uint per batch: 1 (each batch is one draw)
     VkDeviceAddress instance_ids() const;
+    VkBuffer visible_flags() const; // one uint per object, flat-batch order
     // Scene instance of each pass object, flat-batch order.
     const std::vector<std::uint32_t>& object_instances() const { return object_instance_; }
 

@@ -10,6 +10,7 @@
 
 #include <sherpa/gpu/camera.h>
 #include <sherpa/scene/culling.h>
+#include <sherpa/scene/shadow_cascades.h>
 
 namespace sherpa::gpu {
 
@@ -68,7 +69,7 @@ struct RenderSettings {
     float glyph_length = 0.0f;  // world units; 0: 2% of the scene's bounding diagonal
     CameraSpec camera;
     bool shadows = true;
-    std::uint32_t cascades = 3;
+    std::uint32_t cascades = kDefaultShadowCascades;
     // Reuse the shadow cascades while camera, light and scene are unchanged. False
     // re-renders them every frame (to measure their cost).
     bool cache_shadows = true;
@@ -78,11 +79,18 @@ struct RenderSettings {
     glm::vec4 clear_color{0.18f, 0.19f, 0.21f, 1.0f}; // linear
     // Scene lights only; when the scene has no directional light a default sun
     // (and its shadows) is added.
-    glm::vec3 sun_direction{-0.4f, -1.0f, -0.55f}; // direction light travels
+    glm::vec3 sun_direction = kDefaultSunDirection; // direction light travels
     float sun_intensity = 3.0f;
     float ambient = 0.25f;
+    // Culls the camera pass and each shadow cascade (against its volume extended
+    // toward the light, see sherpa/scene/shadow_cascades.h).
     CullPath cull = CullPath::Cpu;
     CullMethod cull_method = CullMethod::PVertex;
+    // Check mode: the CPU test also runs on the GPU path, the GPU's visible sets are
+    // read back and compared (CullStats::cpu_gpu_differences), and false positives
+    // against the exact test are counted. Off, the GPU path does no per-object CPU
+    // work except for blended instances (which the CPU sorts and draws one by one).
+    bool cull_check = false;
     // Cull with this camera instead of the view camera (visual debugging of culling).
     std::optional<CameraSpec> freeze_cull;
 };

@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <sherpa/gpu/bindless.h>
@@ -18,6 +19,7 @@
 #include <sherpa/gpu/render_settings.h>
 #include <sherpa/gpu/resources.h>
 #include <sherpa/scene/culling_passes.h>
+#include <sherpa/scene/shadow_cascades.h>
 
 namespace sherpa::gpu {
 
@@ -35,11 +37,30 @@ struct FrameStats {
     std::uint64_t input_primitives = 0, vertex_invocations = 0, clipping_invocations = 0,
                   clipping_primitives = 0, fragment_invocations = 0;
     std::uint64_t draw_calls = 0;
-    CullStats cull; // camera pass culling (cull.pass empty when culling is off)
+    // Per pass: [0] "camera", then "cascade0".. for each shadow cascade. The camera
+    // pass counts the shading draws (opaque, mask, blend) once; the depth prepass
+    // repeats its opaque and mask draws and is counted in `prepass`. Cascade
+    // statistics come from the last frame that rendered the cascades when they were
+    // reused (`shadows_rendered` false). With culling off every instance is visible
+    // and nothing is tested.
+    std::vector<CullStats> culling;
+    CullStats prepass; // depth prepass: draw_calls and triangles only
+    const CullStats* pass(std::string_view name) const {
+        for (const CullStats& c : culling)
+            if (c.pass == name) return &c;
+        return nullptr;
+    }
+};
+
+// One frame's culling statistics, for the renderer's history.
+struct CullFrame {
+    CullPath path = CullPath::None;
+    std::vector<CullStats> passes;
+    bool shadows_rendered = false;
 };
 
 struct RendererOptions {
-    std::uint32_t shadow_resolution = 2048;
+    std::uint32_t shadow_resolution = kDefaultShadowResolution;
     // How load(scene) prepares textures; default: no disk cache, BC where supported.
     TextureSettings textures;
 };
@@ -91,6 +112,11 @@ public:
     // Results of the last completed frame recorded in `slot` (waits for it).
     FrameStats slot_stats(std::uint32_t slot);
 
+    // Culling statistics of the last frames whose results were read (render(),
+    // slot_stats()), oldest first: what the editor's culling dock charts.
+    static constexpr std::size_t kCullHistory = 240;
+    const RingHistory<CullFrame>& cull_history() const { return cull_history_; }
+
     ResourceManager& resources() { return *resources_; }
     Context& context() { return context_; }
     // Bytes of the renderer's own images (offscreen target, depth, shadow map).
@@ -102,11 +128,16 @@ private:
     struct Culling;
     void adopt(const Scene& scene);
     void build_culling();
-    void cull_camera(VkCommandBuffer cmd, FrameSlot& slot, const RenderSettings& settings,
-                     float aspect);
-    // Camera draw of one group with the frame's culling; false: nothing to draw.
+    void build_gpu_culling();
+    // Culls the camera and (when `cascades` > 0) each shadow cascade.
+    void cull_frame(VkCommandBuffer cmd, FrameSlot& slot, const RenderSettings& settings,
+                    float aspect, std::uint32_t cascades);
+    void cull_pass_cpu(FrameSlot& slot, std::uint32_t pass, CullMethod method, bool blended_only);
+    void read_cull_stats(FrameSlot& slot, FrameStats& out);
+    // Draw of one group in pass `pass` (0 camera, 1 + c cascade c) with the frame's
+    // culling, tallied into `tally`; false: nothing to draw.
     bool draw_culled(VkCommandBuffer cmd, FrameSlot& slot, VkPipelineLayout layout,
-                     std::size_t group, GPUPushConstants& pc);
+                     std::size_t group, std::uint32_t pass, GPUPushConstants& pc, CullStats& tally);
     void draw_cull_overlay(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p);
     void draw_lines(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
                     const std::vector<GPULineVertex>& lines);
@@ -124,7 +155,7 @@ private:
     void record_shadows(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
                         std::uint32_t cascades);
     void draw_groups(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p, VkPipeline pipeline,
-                     AlphaMode alpha, std::uint32_t cascade, bool cull);
+                     AlphaMode alpha, std::uint32_t cascade, bool cull, CullStats& tally);
     void draw_blended(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
                       VkPipeline pipeline);
     void draw_overlays(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
@@ -150,6 +181,8 @@ private:
     BufferHandle readback_;
     bool shadow_map_valid_ = false;
     std::vector<std::uint8_t> shadow_key_; // inputs of the cached cascades
+    std::vector<CullStats> cascade_stats_; // of the last frame that rendered the cascades
+    RingHistory<CullFrame> cull_history_{kCullHistory};
 };
 
 } // namespace sherpa::gpu

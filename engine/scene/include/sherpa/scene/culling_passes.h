@@ -22,6 +22,7 @@ struct DrawGroup {
 
 struct CullStats {
     std::string pass;
+    glm::mat4 view_projection{1.0f}; // the volume culled against (set by the caller)
     CullMethod method = CullMethod::PVertex;
     SimdLevel simd = SimdLevel::Scalar;
     std::uint64_t total = 0, tested = 0, visible = 0, culled = 0, invalid = 0;
@@ -49,6 +50,9 @@ struct CullOptions {
     SimdLevel simd = SimdLevel::Avx512; // clamped to the CPU's best
     int threads = 1;
     bool count_false_positives = false; // also run the exact test to count them
+    // Shadow pass: only shadow casters (not alpha-blended) are in the pass; the
+    // others are neither tested nor counted.
+    bool casters_only = false;
 };
 
 // World AABBs of the scene's instances, as the batch kernels want them.
@@ -68,20 +72,6 @@ CullInput prepare_cull_input(const Scene& scene);
 
 PassResult cull_pass(const Scene& scene, const CullInput& input, const Frustum& frustum,
                      glm::vec3 eye, const CullOptions& options, std::string pass_name);
-
-// Shadow cascades for a directional light: the camera frustum is split (practical
-// split scheme, `lambda` between uniform and logarithmic) up to `max_distance`
-// (0: as far as the scene bounds reach); each slice gets a light-space box that is
-// extended toward the light up to the scene bounds, so casters outside the view
-// still cast. Returns one view-projection per cascade (reverse-Z orthographic).
-struct CascadeSetup {
-    std::uint32_t count = 4;
-    float lambda = 0.75f;
-    float max_distance = 0.0f;
-};
-std::vector<glm::mat4> cascade_view_projections(const CameraSpec& camera, glm::vec3 light_direction,
-                                                const Aabb& scene_bounds,
-                                                const CascadeSetup& setup);
 
 // Fixed-capacity history of per-frame statistics, oldest overwritten first.
 template <typename T> class RingHistory {

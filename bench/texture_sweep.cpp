@@ -1,6 +1,7 @@
 // sherpa-texture-sweep: encodes the corpus at every quality level and reports
 // speed (ms per megapixel, single thread unless --threads) against quality
 // (PSNR; mean normal-angle error for BC5). Writes CSV for docs/textures/.
+// --decode instead times BC7 decoding of the DamagedHelmet maps (see decode_bench.h).
 #include <cstdio>
 #include <cstring>
 #include <ctime>
@@ -12,6 +13,7 @@
 #include <sherpa/texture/block_codecs.h>
 #include <sherpa/texture/quality.h>
 
+#include "decode_bench.h"
 #include "texture_corpus.h"
 
 using namespace sherpa;
@@ -32,6 +34,7 @@ struct Options {
     std::string csv;
     std::string only;   // "bc7", "bc5" or "" for both
     int max_level = 99; // highest level swept
+    bool decode = false;
 };
 
 struct Row {
@@ -93,6 +96,8 @@ int main(int argc, char** argv) {
             opt.csv = next();
         else if (a == "--only")
             opt.only = next();
+        else if (a == "--decode")
+            opt.decode = true;
         else if (a == "--max-level")
             opt.max_level = std::stoi(next());
         else if (a == "--simd") {
@@ -103,10 +108,12 @@ int main(int argc, char** argv) {
         } else {
             std::cerr
                 << "usage: sherpa-texture-sweep [--assets DIR] [--textures N] [--threads N]"
-                   " [--simd scalar|avx2|avx512] [--only bc7|bc5] [--max-level N] [--csv FILE]\n";
+                   " [--simd scalar|avx2|avx512] [--only bc7|bc5] [--max-level N] [--csv FILE]"
+                   " [--decode]\n";
             return a == "--help" ? 0 : 2;
         }
     }
+    if (opt.decode) return bench::run_decode_bench(opt.assets, opt.threads);
     const bench::Corpus corpus = bench::load_corpus(opt.assets, opt.textures);
     std::fprintf(stderr, "corpus: %zu colour, %zu alpha, %zu normal maps; simd %s, %d thread(s)\n",
                  corpus.color.size(), corpus.alpha.size(), corpus.normal.size(),

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "bc7_decode_fast.h"
 #include "kernel_entry.h"
 
 namespace sherpa::tex {
@@ -112,13 +113,20 @@ std::vector<std::uint8_t> encode_image(BlockFormat format, std::span<const std::
     return out;
 }
 
-std::vector<std::uint8_t> decode_image(BlockFormat format, std::span<const std::uint8_t> blocks,
-                                       std::uint32_t width, std::uint32_t height) {
-    const std::uint32_t bw = blocks_along(width), bh = blocks_along(height);
+namespace {
+void check_blocks(std::span<const std::uint8_t> blocks, std::uint32_t width, std::uint32_t height) {
     if (width == 0 || height == 0 || blocks.size() != compressed_size(width, height))
         throw std::invalid_argument("decode_image: " + std::to_string(blocks.size()) +
                                     " bytes do not hold " + std::to_string(width) + "x" +
                                     std::to_string(height) + " in 4x4 blocks");
+}
+} // namespace
+
+std::vector<std::uint8_t> decode_image_per_block(BlockFormat format,
+                                                 std::span<const std::uint8_t> blocks,
+                                                 std::uint32_t width, std::uint32_t height) {
+    check_blocks(blocks, width, height);
+    const std::uint32_t bw = blocks_along(width), bh = blocks_along(height);
     std::vector<std::uint8_t> rgba(std::size_t{width} * height * 4);
     for (std::uint32_t by = 0; by < bh; ++by)
         for (std::uint32_t bx = 0; bx < bw; ++bx) {
@@ -135,6 +143,42 @@ std::vector<std::uint8_t> decode_image(BlockFormat format, std::span<const std::
                     std::copy_n(texels + (y * 4 + x) * 4, 4,
                                 rgba.data() + ((std::size_t{by} * 4 + y) * width + bx * 4 + x) * 4);
         }
+    return rgba;
+}
+
+std::vector<std::uint8_t> decode_image(BlockFormat format, std::span<const std::uint8_t> blocks,
+                                       std::uint32_t width, std::uint32_t height, int threads) {
+    check_blocks(blocks, width, height);
+    const std::uint32_t bw = blocks_along(width), bh = blocks_along(height);
+    std::vector<std::uint8_t> rgba(std::size_t{width} * height * 4);
+    const std::size_t pitch = std::size_t{width} * 4;
+    const bool bc7 = format == BlockFormat::Bc7;
+    const int team = threads > 0 ? threads : omp_get_max_threads();
+    // Below ~64K texels a thread team costs more than it saves.
+    const bool parallel = team != 1 && std::size_t{width} * height >= (1u << 16);
+#pragma omp parallel for schedule(dynamic, 4) num_threads(team) if (parallel)
+    for (long long row = 0; row < static_cast<long long>(bh); ++row) {
+        const auto by = static_cast<std::uint32_t>(row);
+        const std::uint8_t* in = blocks.data() + std::size_t{by} * bw * kBlockBytes;
+        std::uint8_t* out_row = rgba.data() + std::size_t{by} * 4 * pitch;
+        const std::uint32_t rows = std::min<std::uint32_t>(4, height - by * 4);
+        for (std::uint32_t bx = 0; bx < bw; ++bx, in += kBlockBytes) {
+            const std::uint32_t cols = std::min<std::uint32_t>(4, width - bx * 4);
+            std::uint8_t* out = out_row + std::size_t{bx} * 16;
+            if (bc7 && rows == 4 && cols == 4) { // interior: straight into the image
+                bc7::decode_block_fast(in, out, pitch);
+                continue;
+            }
+            std::uint8_t texels[kBlockTexelBytes];
+            if (bc7)
+                bc7::decode_block_fast(in, texels, 16);
+            else
+                decode_bc5_block(std::span<const std::uint8_t, kBlockBytes>(in, kBlockBytes),
+                                 std::span<std::uint8_t, kBlockTexelBytes>(texels));
+            for (std::uint32_t y = 0; y < rows; ++y)
+                std::copy_n(texels + y * 16, cols * 4, out + y * pitch);
+        }
+    }
     return rgba;
 }
 

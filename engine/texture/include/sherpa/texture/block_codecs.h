@@ -66,9 +66,19 @@ std::vector<std::uint8_t> encode_image(BlockFormat format, std::span<const std::
                                        std::uint32_t width, std::uint32_t height,
                                        const EncodeSettings& settings, int threads = 0);
 
-// Decodes compressed blocks back to a tightly packed RGBA8 image of the given size.
-// Throws std::invalid_argument when `blocks` has the wrong size.
+// Decodes compressed blocks back to a tightly packed RGBA8 image of the given size,
+// bit-exact with decode_bc7_block / decode_bc5_block. Block rows are decoded in
+// parallel with OpenMP over `threads` threads (0: OpenMP's default; small images
+// stay on the calling thread). Throws std::invalid_argument when `blocks` has the
+// wrong size.
 std::vector<std::uint8_t> decode_image(BlockFormat format, std::span<const std::uint8_t> blocks,
-                                       std::uint32_t width, std::uint32_t height);
+                                       std::uint32_t width, std::uint32_t height, int threads = 0);
+
+// The reference decode_image: decode_bc7_block / decode_bc5_block per block on one
+// thread, each block copied texel by texel. Slow; for tests and benchmarks of the
+// fast path. Same arguments, result and exceptions as decode_image.
+std::vector<std::uint8_t> decode_image_per_block(BlockFormat format,
+                                                 std::span<const std::uint8_t> blocks,
+                                                 std::uint32_t width, std::uint32_t height);
 
 } // namespace sherpa::tex

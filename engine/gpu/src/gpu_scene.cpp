@@ -265,6 +265,7 @@ void GpuScene::upload_instances(const Scene& scene) {
         ++groups_.back().instance_count;
         data.push_back(g);
         instance_bounds_.push_back(inst.world_bounds);
+        scene_instances_.push_back(k.instance);
         bounds_.expand(inst.world_bounds);
         triangles_ += meshes_[inst.mesh_id].index_count / 3;
     }

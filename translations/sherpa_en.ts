@@ -223,6 +223,13 @@
     </message>
 </context>
 <context>
+    <name>sherpa::editor::CommandLine</name>
+    <message>
+        <source>First frame of the scene %1 ms after launch.</source>
+        <translation>First frame of the scene %1 ms after launch.</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::CullingDock</name>
     <message>
         <source>Culling Statistics</source>
@@ -285,16 +292,16 @@
         <translation>, culling camera frozen</translation>
     </message>
     <message>
-        <source>CPU/GPU agreement: GPU culling path not available in this build</source>
-        <translation>CPU/GPU agreement: GPU culling path not available in this build</translation>
+        <source>CPU/GPU agreement: GPU path off (Culling › Path › GPU)</source>
+        <translation>CPU/GPU agreement: GPU path off (Culling › Path › GPU)</translation>
     </message>
     <message>
-        <source>CPU/GPU agreement: ✔ both keep %1</source>
-        <translation>CPU/GPU agreement: ✔ both keep %1</translation>
+        <source>CPU/GPU agreement: ✔ both keep %1 of %2</source>
+        <translation>CPU/GPU agreement: ✔ both keep %1 of %2</translation>
     </message>
     <message>
-        <source>CPU/GPU agreement: ✘ CPU %1, GPU %2</source>
-        <translation>CPU/GPU agreement: ✘ CPU %1, GPU %2</translation>
+        <source>CPU/GPU agreement: ✘ %1 objects differ (CPU keeps %2, GPU %3)</source>
+        <translation>CPU/GPU agreement: ✘ %1 objects differ (CPU keeps %2, GPU %3)</translation>
     </message>
 </context>
 <context>
@@ -329,14 +336,6 @@
     <message>
         <source>Loading %1…</source>
         <translation>Loading %1…</translation>
-    </message>
-    <message>
-        <source>parse, geometry, tangents…</source>
-        <translation>parse, geometry, tangents…</translation>
-    </message>
-    <message>
-        <source>textures %1/%2</source>
-        <translation>textures %1/%2</translation>
     </message>
     <message>
         <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms).</source>
@@ -513,10 +512,6 @@ The current scene is kept.</translation>
         <translation>CPU</translation>
     </message>
     <message>
-        <source>GPU (not available in this build)</source>
-        <translation>GPU (not available in this build)</translation>
-    </message>
-    <message>
         <source>&amp;Settings</source>
         <translation>&amp;Settings</translation>
     </message>
@@ -607,6 +602,30 @@ The current scene is kept.</translation>
     <message>
         <source>Rendering stopped: %1</source>
         <translation>Rendering stopped: %1</translation>
+    </message>
+    <message>
+        <source>GPU culling failed: %1</source>
+        <translation>GPU culling failed: %1</translation>
+    </message>
+    <message>
+        <source>1/4 parsing…</source>
+        <translation>1/4 parsing…</translation>
+    </message>
+    <message>
+        <source>2/4 geometry…</source>
+        <translation>2/4 geometry…</translation>
+    </message>
+    <message>
+        <source>3/4 tangents: mesh %1 of %2</source>
+        <translation>3/4 tangents: mesh %1 of %2</translation>
+    </message>
+    <message>
+        <source>4/4 textures: %1 of %2</source>
+        <translation>4/4 textures: %1 of %2</translation>
+    </message>
+    <message>
+        <source>GPU (compute shader, indirect draws)</source>
+        <translation>GPU (compute shader, indirect draws)</translation>
     </message>
 </context>
 <context>

@@ -223,6 +223,13 @@
     </message>
 </context>
 <context>
+    <name>sherpa::editor::CommandLine</name>
+    <message>
+        <source>First frame of the scene %1 ms after launch.</source>
+        <translation>启动后 %1 毫秒显示场景的第一帧。</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::CullingDock</name>
     <message>
         <source>Culling Statistics</source>
@@ -285,16 +292,16 @@
         <translation>，剔除相机已冻结</translation>
     </message>
     <message>
-        <source>CPU/GPU agreement: GPU culling path not available in this build</source>
-        <translation>CPU/GPU 一致性：此版本不提供 GPU 剔除路径</translation>
+        <source>CPU/GPU agreement: GPU path off (Culling › Path › GPU)</source>
+        <translation>CPU/GPU 一致性：GPU 路径已关闭（剔除 › 路径 › GPU）</translation>
     </message>
     <message>
-        <source>CPU/GPU agreement: ✔ both keep %1</source>
-        <translation>CPU/GPU 一致性：✔ 两者都保留 %1 个</translation>
+        <source>CPU/GPU agreement: ✔ both keep %1 of %2</source>
+        <translation>CPU/GPU 一致性：✔ 两者均保留 %2 个中的 %1 个</translation>
     </message>
     <message>
-        <source>CPU/GPU agreement: ✘ CPU %1, GPU %2</source>
-        <translation>CPU/GPU 一致性：✘ CPU %1，GPU %2</translation>
+        <source>CPU/GPU agreement: ✘ %1 objects differ (CPU keeps %2, GPU %3)</source>
+        <translation>CPU/GPU 一致性：✘ %1 个对象不一致（CPU 保留 %2 个，GPU %3 个）</translation>
     </message>
 </context>
 <context>
@@ -329,14 +336,6 @@
     <message>
         <source>Loading %1…</source>
         <translation>正在加载 %1…</translation>
-    </message>
-    <message>
-        <source>parse, geometry, tangents…</source>
-        <translation>解析、几何、切线…</translation>
-    </message>
-    <message>
-        <source>textures %1/%2</source>
-        <translation>纹理 %1/%2</translation>
     </message>
     <message>
         <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms).</source>
@@ -513,10 +512,6 @@ The current scene is kept.</source>
         <translation>CPU</translation>
     </message>
     <message>
-        <source>GPU (not available in this build)</source>
-        <translation>GPU（此版本不可用）</translation>
-    </message>
-    <message>
         <source>&amp;Settings</source>
         <translation>设置(&amp;S)</translation>
     </message>
@@ -607,6 +602,30 @@ The current scene is kept.</source>
     <message>
         <source>Rendering stopped: %1</source>
         <translation>渲染已停止：%1</translation>
+    </message>
+    <message>
+        <source>GPU culling failed: %1</source>
+        <translation>GPU 剔除失败：%1</translation>
+    </message>
+    <message>
+        <source>1/4 parsing…</source>
+        <translation>1/4 解析…</translation>
+    </message>
+    <message>
+        <source>2/4 geometry…</source>
+        <translation>2/4 几何…</translation>
+    </message>
+    <message>
+        <source>3/4 tangents: mesh %1 of %2</source>
+        <translation>3/4 切线：网格 %1 / %2</translation>
+    </message>
+    <message>
+        <source>4/4 textures: %1 of %2</source>
+        <translation>4/4 纹理：%1 / %2</translation>
+    </message>
+    <message>
+        <source>GPU (compute shader, indirect draws)</source>
+        <translation>GPU（计算着色器，间接绘制）</translation>
     </message>
 </context>
 <context>

@@ -7,6 +7,7 @@
 #include <QTimer>
 #include <cstdio>
 
+#include "log_dock.h"
 #include "main_window.h"
 #include "view_catalog.h"
 
@@ -75,6 +76,14 @@ void run_command_line(MainWindow& window, const CommandLine& cl, qint64 started_
     if (!cl.language.isEmpty() && !window.setLanguage(cl.language))
         std::fprintf(stderr, "sherpa: no translation for '%s'\n", qPrintable(cl.language));
     if (!cl.view.isEmpty()) window.setDebugView(cl.view);
+    // Always in the log dock; on stdout with --timing.
+    QObject::connect(&window, &MainWindow::firstFrame, &window, [&window, since_launch] {
+        window.logDock()->append(
+            LogDock::Level::Info,
+            QCoreApplication::translate("sherpa::editor::CommandLine",
+                                        "First frame of the scene %1 ms after launch.")
+                .arg(since_launch(), 0, 'f', 1));
+    });
     if (cl.timing) {
         QObject::connect(&window, &MainWindow::sceneLoaded, &window,
                          [since_launch](const QString& spec, double ms) {
@@ -83,7 +92,7 @@ void run_command_line(MainWindow& window, const CommandLine& cl, qint64 started_
                              std::fflush(stdout);
                          });
         QObject::connect(&window, &MainWindow::firstFrame, &window, [since_launch] {
-            std::printf("sherpa: first frame %.1f ms after launch\n", since_launch());
+            std::printf("sherpa: first frame of the scene %.1f ms after launch\n", since_launch());
             std::fflush(stdout);
         });
     }

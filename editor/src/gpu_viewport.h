@@ -9,8 +9,10 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include <sherpa/scene/camera_spec.h>
+#include <sherpa/scene/culling.h>
 #include <sherpa/scene/scene.h>
 
 #include "material_dock.h"
@@ -25,6 +27,11 @@ struct ViewportFrame {
     CameraSpec camera;
     QString view = QStringLiteral("lit");
     QStringList overlays;
+    // Selection highlight: a scene instance, and a triangle / vertex of its mesh.
+    std::optional<std::uint32_t> highlightInstance, highlightTriangle, highlightVertex;
+    bool gpuCulling = false; // the renderer's GPU-driven culling path
+    CullMethod cullMethod = CullMethod::PVertex;
+    std::optional<CameraSpec> frozenCulling; // cull from this camera instead
 };
 
 class GpuViewport {
@@ -51,6 +58,16 @@ public:
     // Bytes of the loaded scene's textures on the GPU (0 without a scene).
     std::uint64_t textureBytes() const;
     double lastGpuMs() const { return last_gpu_ms_; }
+    // Runs the renderer's GPU culling shader once for `frustum` over every instance
+    // of the scene and compares its visible set with `cpu_visible` (per scene
+    // instance). False without a scene.
+    struct GpuCullCheck {
+        double gpu_ms = -1.0;          // timestamped dispatch
+        std::uint64_t visible = 0;     // objects the GPU keeps
+        std::uint64_t differences = 0; // objects on which GPU and CPU disagree
+    };
+    bool checkGpuCulling(const Frustum& frustum, CullMethod method,
+                         const std::vector<std::uint8_t>& cpu_visible, GpuCullCheck& out);
 
 private:
     struct Impl;

@@ -109,6 +109,21 @@ void MainWindow::createRenderer() {
     viewport_->setFrameCallback([this] { return renderFrame(); });
     material_->setReadback([this](int material) { return gpu_->readMaterial(material); });
     gpuObjectCount = [this] { return gpu_->objectCount(); };
+    culling_->setGpuCheck([this](const Frustum& frustum, CullMethod method,
+                                 const std::vector<std::uint8_t>& cpu_visible, CullSample& out) {
+        GpuViewport::GpuCullCheck check;
+        try {
+            if (!gpu_->checkGpuCulling(frustum, method, cpu_visible, check)) return false;
+        } catch (const std::exception& e) {
+            log_->append(LogDock::Level::Error,
+                         tr("GPU culling failed: %1").arg(QString::fromUtf8(e.what())));
+            return false;
+        }
+        out.gpu_ms = check.gpu_ms;
+        out.gpu_visible = static_cast<std::int64_t>(check.visible);
+        out.cpu_gpu_differences = static_cast<std::int64_t>(check.differences);
+        return true;
+    });
     connect(&context_, &EditorContext::sceneChanged, this, &MainWindow::uploadScene);
     if (context_.scene()) uploadScene(); // a scene that arrived before the renderer
     Q_EMIT rendererReady();
@@ -134,6 +149,17 @@ bool MainWindow::renderFrame() {
     frame.camera = viewport_->camera().spec();
     frame.view = view_;
     frame.overlays = overlays_;
+    if (a_->box_colouring->isChecked()) frame.overlays << QStringLiteral("cull-boxes");
+    frame.gpuCulling = a_->gpu_path->isChecked();
+    frame.cullMethod = culling_->method();
+    if (culling_->frozen()) frame.frozenCulling = culling_->cullingCamera();
+    const Selection& sel = context_.selection();
+    if (const int instance = selectedInstance(); instance >= 0) {
+        frame.highlightInstance = static_cast<std::uint32_t>(instance);
+        if (sel.triangle >= 0) frame.highlightTriangle = static_cast<std::uint32_t>(sel.triangle);
+        if (sel.vertex >= 0) frame.highlightVertex = static_cast<std::uint32_t>(sel.vertex);
+    }
+    last_frame_ = frame;
     try {
         const bool shown = gpu_->present(viewport_->vulkanSurface(), frame);
         // Skipped because the swapchain was out of date and has just been recreated:
@@ -194,7 +220,7 @@ void MainWindow::connectActions() {
     connect(&loader_, &SceneLoadJob::canceled, this, [this](const QString& spec) {
         log_->append(LogDock::Level::Info,
                      tr("Loading %1 cancelled; the result is discarded.").arg(spec));
-        onProgress(LoadStage::Idle, 0, 0);
+        onProgress(LoadStep::Idle, 0, 0);
         Q_EMIT loadCanceled(spec);
     });
     connect(cancel_, &QPushButton::clicked, this, &MainWindow::cancelLoad);
@@ -208,7 +234,7 @@ void MainWindow::connectActions() {
     connect(viewport_, &ViewportWindow::frameSelectionRequested, this, &MainWindow::frameSelection);
     connect(viewport_, &ViewportWindow::frameRendered, this, [this](double ms) {
         frame_label_->setText(tr("frame %1 ms").arg(ms, 0, 'f', 2));
-        if (!first_frame_seen_) {
+        if (!first_frame_seen_ && context_.scene()) { // a frame that shows the scene
             first_frame_seen_ = true;
             Q_EMIT firstFrame();
         }
@@ -238,18 +264,30 @@ void MainWindow::cancelLoad() {
     loader_.cancel();
 }
 
-void MainWindow::onProgress(LoadStage stage, int done, int total) {
-    const bool busy = stage != LoadStage::Idle;
+void MainWindow::onProgress(LoadStep step, int done, int total) {
+    const bool busy = step != LoadStep::Idle;
     progress_->setVisible(busy);
     cancel_->setVisible(busy);
-    if (stage == LoadStage::Loading) {
-        progress_->setRange(0, 0); // the engine reports no fraction for parse/geometry/tangents
-        progress_->setFormat(tr("parse, geometry, tangents…"));
-    } else if (stage == LoadStage::Textures) {
-        progress_->setRange(0, std::max(total, 1));
-        progress_->setValue(done);
-        progress_->setFormat(tr("textures %1/%2").arg(done).arg(total));
+    if (!busy) return;
+    progress_->setRange(0, std::max(total, 1));
+    progress_->setValue(std::min(done, std::max(total, 1)));
+    switch (step) {
+    case LoadStep::Parse:
+        progress_->setFormat(tr("1/4 parsing…"));
+        break;
+    case LoadStep::Geometry:
+        progress_->setFormat(tr("2/4 geometry…"));
+        break;
+    case LoadStep::Tangents:
+        progress_->setFormat(tr("3/4 tangents: mesh %1 of %2").arg(done).arg(total));
+        break;
+    case LoadStep::Textures:
+        progress_->setFormat(tr("4/4 textures: %1 of %2").arg(done).arg(total));
+        break;
+    case LoadStep::Idle:
+        break;
     }
+    last_progress_ = progress_->text();
 }
 
 void MainWindow::onLoaded(const QString& spec, const LoadOutcome& outcome, double ms) {
@@ -303,6 +341,20 @@ int MainWindow::pickAt(QPointF ndc) {
     context_.selectMesh(static_cast<int>(inst.mesh_id), static_cast<int>(inst.node_id));
     context_.selectTriangle(static_cast<int>(hit.triangle));
     return static_cast<int>(hit.instance);
+}
+
+int MainWindow::selectedInstance() const {
+    const Scene* scene = context_.scene();
+    const Selection& sel = context_.selection();
+    if (!scene || sel.mesh < 0) return -1;
+    // The selected primitive as placed by the selected node (any node when none is).
+    for (std::size_t i = 0; i < scene->instances.size(); ++i) {
+        const MeshInstance& inst = scene->instances[i];
+        if (static_cast<int>(inst.mesh_id) == sel.mesh &&
+            (sel.node < 0 || static_cast<int>(inst.node_id) == sel.node))
+            return static_cast<int>(i);
+    }
+    return -1;
 }
 
 bool MainWindow::selectNodeNamed(const QString& name_or_index) {

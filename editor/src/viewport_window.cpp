@@ -55,6 +55,8 @@ void ViewportWindow::exposeEvent(QExposeEvent*) {
 void ViewportWindow::resizeEvent(QResizeEvent*) {
     camera_.setAspect(height() > 0 ? static_cast<float>(width()) / static_cast<float>(height())
                                    : 1.0f);
+    // Until the user moves the camera, the scene stays framed for the new aspect.
+    if (auto_frame_) Q_EMIT frameAllRequested();
     Q_EMIT cameraChanged();
     scheduleFrame();
 }

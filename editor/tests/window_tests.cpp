@@ -7,7 +7,6 @@
 #include <QTreeView>
 #include <QVulkanInstance>
 #include <QtTest>
-#include <fstream>
 
 #include "culling_dock.h"
 #include "culling_monitor.h"
@@ -25,33 +24,14 @@
 #include "texture_table_model.h"
 #include "vertex_table_model.h"
 #include "viewport_window.h"
+#include "window_test_support.h"
 
 using namespace sherpa;
 using namespace sherpa::editor;
 
-namespace {
-
-constexpr int kLoadTimeoutMs = 60000;
-
-bool load(MainWindow& w, const QString& spec) {
-    QSignalSpy loaded(&w, &MainWindow::sceneLoaded);
-    QSignalSpy failed(&w, &MainWindow::loadFailed);
-    w.openScene(spec);
-    QElapsedTimer t;
-    t.start();
-    while (loaded.isEmpty() && failed.isEmpty() && t.elapsed() < kLoadTimeoutMs)
-        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 20);
-    return loaded.count() == 1;
-}
-
-std::uint64_t resident_kib() {
-    std::ifstream statm("/proc/self/statm");
-    std::uint64_t size = 0, resident = 0;
-    statm >> size >> resident;
-    return resident * 4; // 4 KiB pages
-}
-
-} // namespace
+using test::kLoadTimeoutMs;
+using test::load;
+using test::resident_kib;
 
 class WindowTests : public QObject {
     Q_OBJECT

@@ -1,0 +1,251 @@
+// The viewport's inspection features end to end under Xvfb: the selection
+// highlight, the GPU culling path with its CPU/GPU agreement, framing for the
+// viewport's aspect, and load progress / cancel.
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QVulkanInstance>
+#include <QtTest>
+
+#include "culling_dock.h"
+#include "culling_monitor.h"
+#include "gpu_viewport.h"
+#include "log_dock.h"
+#include "main_window.h"
+#include "mesh_dock.h"
+#include "orbit_camera.h"
+#include "test_assets.h"
+#include "viewport_window.h"
+#include "window_test_support.h"
+
+using namespace sherpa;
+using namespace sherpa::editor;
+
+using test::kLoadTimeoutMs;
+using test::load;
+using test::resident_kib;
+
+namespace {
+
+// Waits (bounded, never asserted on) until the viewport has drawn a new frame.
+bool nextFrame(MainWindow& w) {
+    const std::uint64_t before = w.viewport()->framesRendered();
+    w.viewport()->scheduleFrame();
+    QElapsedTimer t;
+    t.start();
+    while (w.viewport()->framesRendered() == before && t.elapsed() < kLoadTimeoutMs)
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 20);
+    return w.viewport()->framesRendered() > before;
+}
+
+// Pixels of the highlight colour (sRGB of gpu::kHighlightColor) in the viewport.
+int orangePixels(MainWindow& w) {
+    const QImage shot = w.screenshot().convertToFormat(QImage::Format_RGB32);
+    const QWidget* vp = w.findChild<QWidget*>(QStringLiteral("viewport"));
+    const QRect r(vp->mapTo(&w, QPoint(0, 0)), vp->size());
+    int n = 0;
+    for (int y = r.top(); y <= r.bottom(); ++y)
+        for (int x = r.left(); x <= r.right(); ++x) {
+            const QRgb p = shot.pixel(x, y);
+            if (qRed(p) > 235 && qGreen(p) > 160 && qGreen(p) < 200 && qBlue(p) < 30) ++n;
+        }
+    return n;
+}
+
+// The camera has seen the window's current size.
+bool aspectFollows(const ViewportWindow& v) {
+    const float aspect =
+        static_cast<float>(v.width()) / static_cast<float>(std::max(v.height(), 1));
+    return std::abs(v.camera().spec().aspect - aspect) < 1e-3f;
+}
+
+// The largest |x| and |y| in NDC of the box's corners seen by `camera`.
+QPointF ndcExtent(const CameraSpec& camera, const Aabb& box) {
+    QPointF out(0, 0);
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec4 c((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                          (i & 4) ? box.max.z : box.min.z, 1.0f);
+        const glm::vec4 clip = camera.view_projection() * c;
+        out.setX(std::max(out.x(), static_cast<double>(std::abs(clip.x / clip.w))));
+        out.setY(std::max(out.y(), static_cast<double>(std::abs(clip.y / clip.w))));
+    }
+    return out;
+}
+
+} // namespace
+
+class ViewportTests : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void cleanupTestCase() { window_.reset(); }
+    void framingFitsEveryAspect();
+    void highlightFollowsSelection();
+    void gpuCullingAgreesWithCpu();
+    void narrowViewportFramesTheHelmet();
+    void progressReportsEveryStage();
+    void cancelDropsTheLoadAndLeaksNothing();
+
+private:
+    bool hasGpu() const { return static_cast<bool>(window_->gpuObjectCount); }
+    QVulkanInstance vulkan_;
+    std::unique_ptr<MainWindow> window_;
+};
+
+void ViewportTests::initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    QSettings().clear();
+    GpuViewport::configureInstance(vulkan_);
+    vulkan_.create();
+    window_ = std::make_unique<MainWindow>(vulkan_.isValid() ? &vulkan_ : nullptr);
+    window_->setLanguage(QStringLiteral("en"));
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    QVERIFY(load(*window_, QStringLiteral("builtin:default")));
+    QCoreApplication::processEvents();
+}
+
+void ViewportTests::framingFitsEveryAspect() {
+    // Plain camera math: whatever the aspect, all 8 corners inside, and tight on one axis.
+    const Aabb box = Aabb::from_min_max({-0.94f, -0.9f, -0.82f}, {0.94f, 0.9f, 0.82f});
+    for (float aspect : {0.2f, 0.5f, 1.0f, 1.78f, 4.0f}) {
+        OrbitCamera cam;
+        cam.setAspect(aspect);
+        cam.frame(box);
+        const QPointF e = ndcExtent(cam.spec(), box);
+        QVERIFY2(e.x() <= 1.0 && e.y() <= 1.0,
+                 qPrintable(QStringLiteral("aspect %1: %2 %3").arg(aspect).arg(e.x()).arg(e.y())));
+        QVERIFY2(std::max(e.x(), e.y()) > 0.9, qPrintable(QString::number(aspect)));
+    }
+}
+
+void ViewportTests::highlightFollowsSelection() {
+    QVERIFY(load(*window_, QStringLiteral("builtin:default")));
+    if (!hasGpu()) QSKIP("no Vulkan device: nothing is rendered");
+    window_->pickAt(QPointF(0.999, 0.999)); // background: clears the selection
+    QVERIFY(nextFrame(*window_));
+    QVERIFY(!window_->lastFrame().highlightInstance);
+    const int plain = orangePixels(*window_);
+
+    QVERIFY(window_->selectNodeNamed(QStringLiteral("sphere")));
+    const int instance = window_->selectedInstance();
+    QVERIFY(instance >= 0);
+    QVERIFY(nextFrame(*window_));
+    QCOMPARE(window_->lastFrame().highlightInstance.value_or(~0u),
+             static_cast<std::uint32_t>(instance));
+    QVERIFY2(orangePixels(*window_) > plain + 100, "the highlight is drawn");
+
+    // The mesh dock's vertex and triangle ride along.
+    Q_EMIT window_->meshDock()->selectTriangleRequested(7);
+    Q_EMIT window_->meshDock()->selectVertexRequested(3);
+    QVERIFY(nextFrame(*window_));
+    QCOMPARE(window_->lastFrame().highlightTriangle.value_or(~0u), 7u);
+    QCOMPARE(window_->lastFrame().highlightVertex.value_or(~0u), 3u);
+    QVERIFY(!window_->logDock()->text().contains(QStringLiteral("Rendering stopped")));
+}
+
+void ViewportTests::gpuCullingAgreesWithCpu() {
+    QVERIFY(load(*window_, QStringLiteral("builtin:grid?n=20")));
+    if (!hasGpu()) QSKIP("no Vulkan device: no GPU culling");
+    const int errors = window_->logDock()->errorCount();
+    window_->setGpuCulling(true);
+    for (int step = 0; step < 3; ++step) {
+        window_->viewport()->camera().orbit(120.0f, 20.0f); // new frustum each step
+        Q_EMIT window_->viewport()->cameraChanged();
+        const CullSample* s = window_->cullingMonitor().latest();
+        QVERIFY(s);
+        QVERIFY(s->gpu_visible >= 0);
+        QCOMPARE(s->cpu_gpu_differences, 0);
+        QCOMPARE(static_cast<std::uint64_t>(s->gpu_visible), s->cpu.visible);
+        QVERIFY(window_->cullingDock()->agreementText().contains(QStringLiteral("✔")));
+        QVERIFY(window_->cullingDock()->valueText(CullingDock::GpuMs) != QStringLiteral("—"));
+        QVERIFY(nextFrame(*window_));
+        QVERIFY(window_->lastFrame().gpuCulling);
+    }
+    window_->setGpuCulling(false);
+    QCOMPARE(window_->cullingMonitor().latest()->gpu_visible, -1);
+    QVERIFY(window_->cullingDock()->agreementText().contains(QStringLiteral("off")));
+    QVERIFY(nextFrame(*window_));
+    QVERIFY(!window_->lastFrame().gpuCulling);
+    QCOMPARE(window_->logDock()->errorCount(), errors);
+}
+
+void ViewportTests::narrowViewportFramesTheHelmet() {
+    // Loaded in a wide viewport, then the viewport turns tall and narrow (a dock
+    // dragged wider, the window resized) before the user touched the camera: the
+    // framing follows the new aspect instead of clipping the sides.
+    QWidget* vp = window_->findChild<QWidget*>(QStringLiteral("viewport"));
+    QVERIFY(load(*window_, test::asset(QStringLiteral("DamagedHelmet"))));
+    const Aabb bounds = window_->context().scene()->bounds;
+    QVERIFY(window_->viewport()->width() > 480);
+    vp->setMaximumWidth(330); // the viewport's minimum is 320
+    QTRY_VERIFY(vp->width() <= 330);
+    QTRY_COMPARE(window_->viewport()->width(), vp->width()); // the native window follows
+    QTRY_VERIFY(aspectFollows(*window_->viewport()));        // and its resize event has come
+    QVERIFY(window_->viewport()->height() > window_->viewport()->width());
+    QPointF e = ndcExtent(window_->viewport()->camera().spec(), bounds);
+    QVERIFY2(e.x() <= 1.0 && e.y() <= 1.0, "re-framed for the narrow viewport");
+    QVERIFY(std::max(e.x(), e.y()) > 0.9); // tight, not just inside
+    // Once the user has moved the camera it stays; F frames for the aspect again.
+    window_->viewport()->setAutoFrame(false);
+    window_->viewport()->camera().dolly(6.0f);
+    e = ndcExtent(window_->viewport()->camera().spec(), bounds);
+    QVERIFY(e.x() > 1.0); // dollied in: clipped, as the user asked
+    QTest::keyClick(window_->viewport(), Qt::Key_F);
+    e = ndcExtent(window_->viewport()->camera().spec(), bounds);
+    QVERIFY2(e.x() <= 1.0 && e.y() <= 1.0, "frame all (F)");
+    QVERIFY(std::max(e.x(), e.y()) > 0.9);
+    vp->setMaximumWidth(QWIDGETSIZE_MAX);
+}
+
+void ViewportTests::progressReportsEveryStage() {
+    QSignalSpy progress(&window_->loader(), &SceneLoadJob::progress);
+    QVERIFY(load(*window_, test::asset(QStringLiteral("DamagedHelmet"))));
+    QList<LoadStep> steps;
+    int last_textures_done = -1, textures_total = -1;
+    for (const QList<QVariant>& args : progress) {
+        const auto step = args.at(0).value<LoadStep>();
+        if (steps.isEmpty() || steps.back() != step) steps << step;
+        if (step == LoadStep::Textures) {
+            last_textures_done = args.at(1).toInt();
+            textures_total = args.at(2).toInt();
+        }
+    }
+    const QList<LoadStep> expected = {LoadStep::Parse, LoadStep::Geometry, LoadStep::Tangents,
+                                      LoadStep::Textures, LoadStep::Idle};
+    QCOMPARE(steps, expected);
+    const int textures = static_cast<int>(window_->context().scene()->textures.size());
+    QCOMPARE(textures_total, textures);
+    QCOMPARE(last_textures_done, textures); // the per-texture count reaches the end
+}
+
+void ViewportTests::cancelDropsTheLoadAndLeaksNothing() {
+    QVERIFY(load(*window_, QStringLiteral("builtin:default")));
+    const Scene* before = window_->context().scene();
+    const std::int64_t objects = hasGpu() ? window_->gpuObjectCount() : -1;
+    QSignalSpy loaded(window_.get(), &MainWindow::sceneLoaded);
+    QSignalSpy canceled(window_.get(), &MainWindow::loadCanceled);
+    std::uint64_t warm = 0;
+    for (int i = 0; i < 12; ++i) {
+        // Cancel as soon as the engine reports its first stage: the worker stops there.
+        QMetaObject::Connection c =
+            connect(&window_->loader(), &SceneLoadJob::progress, this, [this](LoadStep step) {
+                if (step == LoadStep::Geometry || step == LoadStep::Tangents) window_->cancelLoad();
+            });
+        window_->openScene(test::asset(QStringLiteral("DamagedHelmet")));
+        QTRY_VERIFY_WITH_TIMEOUT(!window_->loader().running(), kLoadTimeoutMs);
+        disconnect(c);
+        QTRY_COMPARE_WITH_TIMEOUT(SceneLoadJob::workersInFlight(), 0, kLoadTimeoutMs);
+        QCoreApplication::processEvents();
+        if (i == 3) warm = resident_kib();
+    }
+    QCOMPARE(canceled.count(), 12);
+    QCOMPARE(loaded.count(), 0);
+    QCOMPARE(window_->context().scene(), before); // rolled back: the old scene stays
+    QVERIFY(window_->lastProgressText().contains(QStringLiteral("/4")));
+    if (objects >= 0) QCOMPARE(window_->gpuObjectCount(), objects);
+    QVERIFY2(resident_kib() < warm + 32 * 1024, "cancelled loads leave memory behind");
+    QVERIFY(load(*window_, QStringLiteral("builtin:grid?n=10"))); // and loading still works
+}
+
+QTEST_MAIN(ViewportTests)
+#include "viewport_tests.moc"

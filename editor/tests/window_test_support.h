@@ -1,0 +1,34 @@
+#pragma once
+// Helpers of the window-level QtTest suites (under Xvfb).
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QSignalSpy>
+#include <cstdint>
+#include <fstream>
+
+#include "main_window.h"
+
+namespace sherpa::editor::test {
+
+inline constexpr int kLoadTimeoutMs = 60000;
+
+// Opens `spec` and waits (bounded) for the load to end; true when it loaded.
+inline bool load(MainWindow& w, const QString& spec) {
+    QSignalSpy loaded(&w, &MainWindow::sceneLoaded);
+    QSignalSpy failed(&w, &MainWindow::loadFailed);
+    w.openScene(spec);
+    QElapsedTimer t;
+    t.start();
+    while (loaded.isEmpty() && failed.isEmpty() && t.elapsed() < kLoadTimeoutMs)
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 20);
+    return loaded.count() == 1;
+}
+
+inline std::uint64_t resident_kib() {
+    std::ifstream statm("/proc/self/statm");
+    std::uint64_t size = 0, resident = 0;
+    statm >> size >> resident;
+    return resident * 4; // 4 KiB pages
+}
+
+} // namespace sherpa::editor::test

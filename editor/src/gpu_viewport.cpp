@@ -96,6 +96,10 @@ void GpuViewport::setScene(const Scene* scene) {
         impl_->renderer->unload();
 }
 
+const Scene* GpuViewport::scene() const {
+    return impl_->scene;
+}
+
 void GpuViewport::releaseSurface() {
     impl_->presenter.reset();
     impl_->surface = 0;

@@ -46,6 +46,8 @@ public:
     QString deviceName() const;
     // Uploads the scene (replacing the previous one; null unloads).
     void setScene(const Scene* scene);
+    // The scene last uploaded (compare only: it may be gone once replaced).
+    const Scene* scene() const;
     // Presents one frame on `surface` (the swapchain is created on first use and
     // recreated when the size changes). False when the frame was skipped.
     bool present(std::uint64_t surface, const ViewportFrame& frame);

@@ -111,6 +111,8 @@ void MainWindow::createRenderer() {
     gpuObjectCount = [this] { return gpu_->objectCount(); };
     culling_->setGpuCheck([this](const Frustum& frustum, CullMethod method,
                                  const std::vector<std::uint8_t>& cpu_visible, CullSample& out) {
+        // The monitor hears of a new scene before the renderer has uploaded it.
+        if (gpu_->scene() != context_.scene()) return false;
         GpuViewport::GpuCullCheck check;
         try {
             if (!gpu_->checkGpuCulling(frustum, method, cpu_visible, check)) return false;

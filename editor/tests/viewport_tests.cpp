@@ -92,8 +92,8 @@ private:
 };
 
 void ViewportTests::initTestCase() {
-    QStandardPaths::setTestModeEnabled(true);
-    QSettings().clear();
+    QStandardPaths::setTestModeEnabled(true); // caches go to a test location
+    test::isolate_settings();                 // settings to this process's own
     GpuViewport::configureInstance(vulkan_);
     vulkan_.create();
     window_ = std::make_unique<MainWindow>(vulkan_.isValid() ? &vulkan_ : nullptr);
@@ -160,6 +160,15 @@ void ViewportTests::gpuCullingAgreesWithCpu() {
         QVERIFY(window_->cullingDock()->valueText(CullingDock::GpuMs) != QStringLiteral("—"));
         QVERIFY(nextFrame(*window_));
         QVERIFY(window_->lastFrame().gpuCulling);
+    }
+    // Scene switches with the GPU path on: each new scene is checked against its own culler.
+    for (const QString& spec :
+         {QStringLiteral("builtin:default"), QStringLiteral("builtin:grid?n=10"),
+          test::asset(QStringLiteral("DamagedHelmet"))}) {
+        QVERIFY(load(*window_, spec));
+        const CullSample* s = window_->cullingMonitor().latest();
+        QVERIFY(s && s->gpu_visible >= 0);
+        QCOMPARE(s->cpu_gpu_differences, 0);
     }
     window_->setGpuCulling(false);
     QCOMPARE(window_->cullingMonitor().latest()->gpu_visible, -1);

@@ -2,7 +2,9 @@
 // Helpers of the window-level QtTest suites (under Xvfb).
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QSettings>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <cstdint>
 #include <fstream>
 
@@ -22,6 +24,15 @@ inline bool load(MainWindow& w, const QString& spec) {
     while (loaded.isEmpty() && failed.isEmpty() && t.elapsed() < kLoadTimeoutMs)
         QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 20);
     return loaded.count() == 1;
+}
+
+// Settings in a directory of this process alone: QStandardPaths' test mode shares
+// ~/.qttest between every test process of the user (other worktrees included).
+inline void isolate_settings() {
+    static QTemporaryDir dir;
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, dir.path());
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, dir.path());
+    QSettings().clear();
 }
 
 inline std::uint64_t resident_kib() {

@@ -53,8 +53,8 @@ private:
 };
 
 void WindowTests::initTestCase() {
-    QStandardPaths::setTestModeEnabled(true); // settings go to a test location
-    QSettings().clear();
+    QStandardPaths::setTestModeEnabled(true); // caches go to a test location
+    test::isolate_settings();                 // settings to this process's own
     GpuViewport::configureInstance(vulkan_);
     vulkan_.create(); // optional: without Vulkan the viewport stays empty
     window_ = std::make_unique<MainWindow>(vulkan_.isValid() ? &vulkan_ : nullptr);

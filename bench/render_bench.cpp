@@ -95,6 +95,9 @@ int main(int argc, char** argv) {
     options.validation = false; // the layer's CPU cost would distort frame times
     gpu::Context context(options);
     gpu::Renderer renderer(context);
+    gpu::TextureSettings textures; // as sherpa-cli render: the user's texture cache
+    textures.cache_dir = tex::default_cache_dir_from_environment();
+    renderer.set_texture_settings(textures);
     std::printf("device: %s, %ux%u, median of %d frames\n", context.info().name.c_str(), lit.width,
                 lit.height, frames);
     if (csv)

@@ -26,6 +26,7 @@ constexpr Subcommand kSubcommands[] = {
     {"render", sherpa::cli::run_render,
      "render SCENE -o OUT.png [--width W --height H] [--view NAME] [--overlay NAME ...]\n"
      "         [--camera auto|gltf:N|eye=x,y,z:target=x,y,z] [--frames N] [--report FILE.json]\n"
+     "         [--cache-dir DIR] [--no-cache] [--quality N] [--no-bc]\n"
      "                                     render offscreen (Vulkan) to a PNG"},
 };
 

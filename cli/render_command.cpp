@@ -1,9 +1,11 @@
 // sherpa-cli render SCENE -o OUT.png [--width W --height H] [--view NAME]
 //   [--overlay NAME ...] [--camera auto|gltf:N|eye=x,y,z:target=x,y,z[...]]
 //   [--frames N] [--report FILE.json] [--validation] [--no-shadows] [--no-prepass]
-//   [--glyph-length L] [--floor]
+//   [--glyph-length L] [--floor] [--cache-dir DIR] [--cache-cap-mb N] [--quality N]
+//   [--no-cache] [--no-bc]
 #include "cli_common.h"
 #include "render_report.h"
+#include "texture_cli.h"
 
 #include <sherpa/core/file_io.h>
 #include <sherpa/gpu/gpu_error.h>
@@ -27,11 +29,17 @@ constexpr const char* kUsage =
     "         [--frames N] [--report FILE.json] [--validation] [--no-shadows] [--no-prepass]\n"
     "         [--glyph-length L] [--floor] [--cull none|cpu|gpu] [--cull-method "
     "sphere|pvertex|exact]\n"
-    "         [--freeze-cull eye=x,y,z:target=x,y,z[:...]]\n";
+    "         [--freeze-cull eye=x,y,z:target=x,y,z[:...]]\n         ";
 
 int usage_error(const std::string& message) {
-    std::fprintf(stderr, "error: %s\n%s", message.c_str(), kUsage);
+    std::fprintf(stderr, "error: %s\n%s%s\n%s", message.c_str(), kUsage, kTextureOptionsSynopsis,
+                 kTextureOptionsHelp);
     return kExitUsage;
+}
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
 }
 
 template <typename T> bool parse_number(std::string_view s, T& out) {
@@ -53,8 +61,13 @@ int run_render(Args args) {
     gpu::RenderSettings settings;
     std::uint32_t frames = 1;
     bool validation = gpu::ContextOptions::default_validation();
+    TextureCliOptions texture_options;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string_view a = args[i];
+        std::string option_error;
+        const OptionMatch m = parse_texture_option(args, i, texture_options, option_error);
+        if (m == OptionMatch::Bad) return usage_error(option_error);
+        if (m == OptionMatch::Taken) continue;
         auto value = [&]() -> std::optional<std::string_view> {
             if (i + 1 >= args.size()) return std::nullopt;
             return args[++i];
@@ -147,7 +160,10 @@ int run_render(Args args) {
     if (spec.empty()) return usage_error("no SCENE given");
     if (out_path.empty()) return usage_error("no output given (-o OUT.png)");
 
+    const auto load_start = std::chrono::steady_clock::now();
     LoadResult loaded = load_scene(spec);
+    RenderRun run{std::string(spec), settings, camera_text, {}, {}, {}};
+    run.timing.scene_load_ms = ms_since(load_start);
     if (!loaded) {
         std::fprintf(stderr, "error: %s\n", loaded.error.c_str());
         return kExitLoadError;
@@ -158,18 +174,28 @@ int run_render(Args args) {
         options.echo_validation = true;
         gpu::Context context(options);
         gpu::Renderer renderer(context);
-        renderer.load(*loaded.scene, gpu::needs_all_streams(settings)
-                                         ? gpu::StreamPolicy::AllPresent
-                                         : gpu::StreamPolicy::UsedByMaterials);
-        RenderRun run{std::string(spec), settings, camera_text, {}, {}};
+        // Textures are prepared (cache lookups, decode, compression) before the upload,
+        // as a loader thread would, so the report can time the two apart.
+        auto start = std::chrono::steady_clock::now();
+        const auto textures = gpu::prepare_scene_textures(*loaded.scene, context.info(),
+                                                          texture_options.gpu_settings());
+        run.timing.texture_prepare_ms = ms_since(start);
+        start = std::chrono::steady_clock::now();
+        renderer.load(*loaded.scene, textures,
+                      gpu::needs_all_streams(settings) ? gpu::StreamPolicy::AllPresent
+                                                       : gpu::StreamPolicy::UsedByMaterials);
+        run.timing.gpu_upload_ms = ms_since(start);
+        run.cache_dir = texture_options.resolved_cache_dir();
         std::vector<std::uint8_t> rgba;
         for (std::uint32_t f = 0; f < frames; ++f) {
             const auto t0 = std::chrono::steady_clock::now();
             run.frames.push_back(renderer.render(settings, f + 1 == frames ? &rgba : nullptr));
-            run.cpu_frame_ms.push_back(
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                    .count());
+            run.cpu_frame_ms.push_back(ms_since(t0));
         }
+        // Device creation is left out: it is not the scene's cost.
+        run.timing.load_and_first_frame_ms = run.timing.scene_load_ms +
+                                             run.timing.texture_prepare_ms +
+                                             run.timing.gpu_upload_ms + run.cpu_frame_ms.front();
         std::string error;
         if (!gpu::write_png(std::string(out_path), settings.width, settings.height, rgba, error)) {
             std::fprintf(stderr, "error: %s\n", error.c_str());

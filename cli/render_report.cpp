@@ -1,4 +1,5 @@
 #include "render_report.h"
+#include "texture_cli.h"
 
 #include <algorithm>
 #include <map>
@@ -27,6 +28,33 @@ std::string device_type(VkPhysicalDeviceType t) {
     default:
         return "other";
     }
+}
+
+// Per prepared texture its record with the GPU side (bindless slot, mip levels,
+// device bytes), and counts by cache state and by format.
+nlohmann::json textures_json(const gpu::SceneTextures& textures,
+                             const std::optional<std::filesystem::path>& cache_dir) {
+    using nlohmann::json;
+    json list = json::array();
+    std::map<std::string, int> by_state, by_format;
+    for (std::size_t i = 0; i < textures.records().size(); ++i) {
+        const tex::PreparedTexture& t = textures.records()[i];
+        const gpu::GpuTexture& g = textures.gpu()[i];
+        json j = texture_json(t);
+        j["mips"] = g.mip_levels;
+        j["bindless_slot"] = g.slot == kTextureSentinel ? json(nullptr) : json(g.slot);
+        j["bytes"] = g.bytes; // device memory of the image
+        list.push_back(j);
+        ++by_state[std::string(tex::to_string(t.state))];
+        ++by_format[std::string(tex::vk_format_name(t.format))];
+    }
+    return {{"cache_dir",
+             cache_dir ? json(std::filesystem::absolute(*cache_dir).string()) : json(nullptr)},
+            {"count", list.size()},
+            {"by_state", by_state},
+            {"by_format", by_format},
+            {"gpu_bytes", textures.gpu_bytes()},
+            {"textures", list}};
 }
 
 } // namespace
@@ -69,7 +97,13 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
         j["triangles"] = scene->triangle_count();
         j["draw_groups"] = scene->groups().size();
         j["warnings"] = scene->warnings();
+        j["textures"] = textures_json(scene->textures(), run.cache_dir);
     }
+    j["load_ms"] = {{"scene_load", run.timing.scene_load_ms},
+                    {"texture_prepare", run.timing.texture_prepare_ms},
+                    {"gpu_upload", run.timing.gpu_upload_ms},
+                    {"load_and_first_frame", run.timing.load_and_first_frame_ms},
+                    {"scope", "wall clock, one run; device creation not included"}};
 
     // Per pass: median over frames (the first frame also builds pipelines and
     // shadow maps; medians keep the steady state).

@@ -3,11 +3,11 @@
 // Runs the texture pipeline over the displayed scene and prints, per (image,
 // role), what the texture-cache dock shows.
 #include "cli_common.h"
+#include "texture_cli.h"
 
 #include <sherpa/scene/scene_loader.h>
 #include <sherpa/texture/texture_pipeline.h>
 
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -17,92 +17,43 @@
 namespace sherpa::cli {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: sherpa-cli textures SCENE [--cache-dir DIR] [--cache-cap-mb N] [--quality N] "
-    "[--no-cache] [--no-bc] [--json]\n"
-    "  --cache-cap-mb N   least recently used files go beyond N MiB (default 2048)\n"
-    "  --quality N   BC7 quality level 0 (fastest) .. 4 (best); default 1\n"
-    "  --no-bc       pretend the device cannot sample BC formats (RGBA8 fallback)\n";
-
-nlohmann::json texture_json(const tex::PreparedTexture& t) {
-    nlohmann::json j = {
-        {"image", t.image},
-        {"source", t.source},
-        {"role", tex::role_name(t.role)},
-        {"format", tex::vk_format_name(t.format)},
-        {"width", t.width},
-        {"height", t.height},
-        {"mips", t.levels.size()},
-        {"state", tex::to_string(t.state)},
-        {"cache_file", t.cache_file.empty()
-                           ? nlohmann::json(nullptr)
-                           : nlohmann::json(std::filesystem::absolute(t.cache_file).string())},
-        {"hash", t.source_hash.hex()},
-        {"textures", t.textures},
-        {"bytes_on_disk", t.bytes_on_disk},
-        {"bytes_gpu", t.bytes_gpu},
-        {"decode_ms", t.decode_ms},
-        {"mip_ms", t.mip_ms},
-        {"encode_ms", t.encode_ms},
-        {"psnr",
-         t.psnr && std::isfinite(*t.psnr) ? nlohmann::json(*t.psnr) : nlohmann::json(nullptr)},
-    };
-    if (!t.note.empty()) j["note"] = t.note;
-    if (t.failed) j["failed"] = true;
-    return j;
+void print_usage() {
+    std::fprintf(stderr, "usage: sherpa-cli textures SCENE %s [--json]\n%s",
+                 kTextureOptionsSynopsis, kTextureOptionsHelp);
 }
 
 } // namespace
 
 int run_textures(Args args) {
     std::string_view spec;
-    bool as_json = false, use_cache = true;
-    tex::PipelineOptions options;
-    std::optional<std::filesystem::path> cache_dir;
+    bool as_json = false;
+    TextureCliOptions texture_options;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string_view a = args[i];
+        std::string error;
+        const OptionMatch m = parse_texture_option(args, i, texture_options, error);
+        if (m == OptionMatch::Bad) {
+            std::fprintf(stderr, "error: %s\n", error.c_str());
+            print_usage();
+            return kExitUsage;
+        }
+        if (m == OptionMatch::Taken) continue;
         if (a == "--json") {
             as_json = true;
-        } else if (a == "--no-cache") {
-            use_cache = false;
-        } else if (a == "--no-bc") {
-            options.device_supports_bc = false;
-        } else if (a == "--cache-dir" && i + 1 < args.size()) {
-            cache_dir = std::filesystem::path(std::string(args[++i]));
-        } else if (a == "--cache-cap-mb" && i + 1 < args.size()) {
-            const std::string_view v = args[++i];
-            std::uint64_t mb = 0;
-            const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), mb);
-            if (ec != std::errc() || end != v.data() + v.size() || mb == 0) {
-                std::fprintf(stderr, "error: --cache-cap-mb needs a positive number\n%s", kUsage);
-                return kExitUsage;
-            }
-            options.cache_cap_bytes = mb << 20;
-        } else if (a == "--quality" && i + 1 < args.size()) {
-            const std::string_view v = args[++i];
-            int level = -1;
-            const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), level);
-            if (ec != std::errc() || end != v.data() + v.size() || level < tex::kBc7MinLevel ||
-                level > tex::kBc7MaxLevel) {
-                std::fprintf(stderr, "error: --quality must be %d..%d\n%s", tex::kBc7MinLevel,
-                             tex::kBc7MaxLevel, kUsage);
-                return kExitUsage;
-            }
-            options.bc7_level = level;
         } else if (!a.empty() && a[0] != '-' && spec.empty()) {
             spec = a;
         } else {
-            std::fprintf(stderr, "error: unexpected argument '%.*s'\n%s",
-                         static_cast<int>(a.size()), a.data(), kUsage);
+            std::fprintf(stderr, "error: unexpected argument '%.*s'\n", static_cast<int>(a.size()),
+                         a.data());
+            print_usage();
             return kExitUsage;
         }
     }
     if (spec.empty()) {
-        std::fprintf(stderr, "%s", kUsage);
+        print_usage();
         return kExitUsage;
     }
-    if (use_cache)
-        options.cache_dir = cache_dir ? *cache_dir : tex::default_cache_dir_from_environment();
+    const tex::PipelineOptions options = texture_options.pipeline_options();
     const LoadResult r = load_scene(spec);
     if (!r) {
         std::fprintf(stderr, "error: %s\n", r.error.c_str());

@@ -83,6 +83,17 @@ QString GpuViewport::deviceName() const {
         .arg(VK_API_VERSION_PATCH(info.api_version));
 }
 
+void GpuViewport::setTextureCache(const QString& directory, const QString& quality) {
+    gpu::TextureSettings t = impl_->renderer->texture_settings();
+    t.cache_dir = directory.isEmpty()
+                      ? std::nullopt
+                      : std::optional(std::filesystem::path(directory.toStdString()));
+    t.quality = quality == QLatin1String("fast")   ? tex::kBc7MinLevel
+                : quality == QLatin1String("best") ? tex::kBc7MaxLevel
+                                                   : tex::kBc7DefaultLevel;
+    impl_->renderer->set_texture_settings(t);
+}
+
 void GpuViewport::setScene(const Scene* scene) {
     if (scene != impl_->scene) {
         impl_->culler.reset();
@@ -169,11 +180,10 @@ std::optional<GpuMaterialReadback> GpuViewport::readMaterial(int material) {
     std::memcpy(&out.record, readback.mapped, kSize);
     resources.destroy(staging);
 
-    // Every (texture, colour space) slot the scene registered, inverted.
+    // Every (texture, role) slot the scene registered, inverted.
     for (std::size_t t = 0; t < impl_->scene->textures.size(); ++t)
-        for (bool srgb : {true, false}) {
-            const std::uint32_t slot =
-                scene->textures().slot(static_cast<std::int32_t>(t), srgb, kTextureSentinel);
+        for (TextureRole role : {kRoleColor, kRoleLinear, kRoleNormal}) {
+            const std::uint32_t slot = scene->textures().slot(static_cast<std::int32_t>(t), role);
             if (slot == kTextureSentinel) continue;
             if (slot >= out.bindless_to_texture.size())
                 out.bindless_to_texture.resize(slot + 1, -1);

@@ -44,7 +44,11 @@ public:
     ~GpuViewport();
 
     QString deviceName() const;
-    // Uploads the scene (replacing the previous one; null unloads).
+    // Where setScene() finds and stores compressed textures, and the BC7 quality
+    // ("fast", "balanced" or "best", as in the settings); an empty directory: no cache.
+    void setTextureCache(const QString& directory, const QString& quality);
+    // Uploads the scene (replacing the previous one; null unloads). Prepares its
+    // textures (texture cache, BC7/BC5) on this thread first.
     void setScene(const Scene* scene);
     // The scene last uploaded (compare only: it may be gone once replaced).
     const Scene* scene() const;

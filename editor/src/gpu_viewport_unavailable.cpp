@@ -24,6 +24,7 @@ std::unique_ptr<GpuViewport> GpuViewport::create(QVulkanInstance&, QString& erro
 QString GpuViewport::deviceName() const {
     return {};
 }
+void GpuViewport::setTextureCache(const QString&, const QString&) {}
 void GpuViewport::setScene(const Scene*) {}
 bool GpuViewport::present(std::uint64_t, const ViewportFrame&) {
     return false;

@@ -133,6 +133,7 @@ void MainWindow::createRenderer() {
 
 void MainWindow::uploadScene() {
     try {
+        gpu_->setTextureCache(settings_.cacheDirectory(), settings_.textureQuality());
         gpu_->setScene(context_.scene());
         textures_->setGpuBytes(static_cast<std::int64_t>(gpu_->textureBytes()));
     } catch (const std::exception& e) {

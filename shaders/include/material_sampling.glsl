@@ -38,8 +38,10 @@ vec3 emission(GPUMaterialData m, GPUMaterialExtra x, vec2 uv0, vec2 uv1) {
 // Normal after normal mapping, in the frame (t, b, n).
 vec3 mapped_normal(GPUMaterialData m, GPUMaterialExtra x, vec3 t, vec3 b, vec3 n, vec2 uv0, vec2 uv1) {
     if (m.normal_tex == TEX_FLAT_NORMAL) return n;
-    vec3 tn = sample_slot(x, SLOT_NORMAL, m.normal_tex, uv0, uv1).xyz * 2.0 - 1.0;
-    tn.xy *= m.normal_scale;
+    // BC5 normal maps hold x and y only: z comes from unit length (RGBA8 maps are
+    // read the same way, so both formats shade alike). glTF's scale applies to x, y.
+    vec2 xy = sample_slot(x, SLOT_NORMAL, m.normal_tex, uv0, uv1).xy * 2.0 - 1.0;
+    vec3 tn = vec3(xy * m.normal_scale, sqrt(max(0.0, 1.0 - dot(xy, xy))));
     return normalize(mat3(t, b, n) * tn);
 }
 #endif

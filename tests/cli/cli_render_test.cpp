@@ -29,7 +29,7 @@ TEST(CliRender, WritesPngAndReportWithEveryCategory) {
         run_cli("render '" + sherpa::test::gltf_asset("DamagedHelmet") + "' -o " + png +
                 " --width 96 --height 64 --frames 3 --view lit --overlay wireframe aabb"
                 " --camera eye=0,0,3:target=0,0,0 --report " +
-                report + " --validation");
+                report + " --validation --cache-dir '" + SHERPA_TEST_TEXTURE_CACHE + "'");
     ASSERT_EQ(r.exit_code, 0) << r.out;
     std::uint32_t w = 0, h = 0;
     std::vector<std::uint8_t> rgba;
@@ -60,9 +60,9 @@ TEST(CliRender, WritesPngAndReportWithEveryCategory) {
 
 TEST(CliRender, GltfCameraAndDebugViewsWork) {
     const std::string png = temp_path("cameras.png");
-    const CliRun r =
-        run_cli("render '" + sherpa::test::gltf_asset("Cameras") + "' -o " + png +
-                " --width 32 --height 32 --camera gltf:0 --view uv0-checker --validation");
+    const CliRun r = run_cli(
+        "render '" + sherpa::test::gltf_asset("Cameras") + "' -o " + png +
+        " --width 32 --height 32 --camera gltf:0 --view uv0-checker --validation --no-cache");
     EXPECT_EQ(r.exit_code, 0) << r.out;
     std::filesystem::remove(png);
 }
@@ -70,9 +70,9 @@ TEST(CliRender, GltfCameraAndDebugViewsWork) {
 TEST(CliRender, ErrorsExitOneWithErrorPrefix) {
     const std::string png = temp_path("bad.png");
     const std::vector<std::string> failing{
-        "render /nonexistent.gltf -o " + png,
-        "render builtin:default -o " + png + " --camera gltf:7",
-        "render builtin:default -o /nonexistent-dir/x.png --width 8 --height 8"};
+        "render /nonexistent.gltf --no-cache -o " + png,
+        "render builtin:default --no-cache -o " + png + " --camera gltf:7",
+        "render builtin:default --no-cache -o /nonexistent-dir/x.png --width 8 --height 8"};
     for (const std::string& args : failing) {
         const CliRun r = run_cli(args);
         EXPECT_EQ(r.exit_code, 1) << args << "\n" << r.out;
@@ -80,7 +80,7 @@ TEST(CliRender, ErrorsExitOneWithErrorPrefix) {
     }
     // Usage mistakes exit 2, as for every subcommand.
     for (const std::string args :
-         {"render builtin:default", "render builtin:default -o x.png --view nope",
+         {"render builtin:default --no-cache", "render builtin:default -o x.png --view nope",
           "render builtin:default -o x.png --camera eye=1,2"}) {
         const CliRun r = run_cli(args);
         EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.out;

@@ -4,6 +4,7 @@
 // during which the validation layer said anything.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -15,6 +16,14 @@
 
 namespace sherpa::test {
 
+// Texture preparation for GPU tests: a cache in the build tree (never the user's),
+// shared by the tests so that the DamagedHelmet textures are compressed once.
+inline gpu::TextureSettings test_texture_settings() {
+    gpu::TextureSettings s;
+    s.cache_dir = std::filesystem::path(SHERPA_TEST_TEXTURE_CACHE);
+    return s;
+}
+
 struct GpuEnvironment {
     std::unique_ptr<gpu::Context> context;
     std::unique_ptr<gpu::Renderer> renderer;
@@ -23,6 +32,7 @@ struct GpuEnvironment {
         options.validation = true; // every GPU test runs under the Khronos layer
         context = std::make_unique<gpu::Context>(options);
         renderer = std::make_unique<gpu::Renderer>(*context);
+        renderer->set_texture_settings(test_texture_settings());
     }
     static GpuEnvironment& get() {
         static GpuEnvironment env;

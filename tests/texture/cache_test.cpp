@@ -82,6 +82,19 @@ TEST(TextureUses, DedupeByImageAndSkipUnusedMaterials) {
     EXPECT_EQ(uses[1].role, kRoleNormal);
 }
 
+TEST(TextureUses, DifferentCutoffsOnOneImageGetPlainMips) {
+    Scene s = small_scene();
+    // Texture 0 shares image 0 with masked texture 1 (cutoff 0.4); mask it at 0.7 too.
+    s.materials[0].alpha_mode = AlphaMode::Mask, s.materials[0].alpha_cutoff = 0.7f;
+    auto uses = collect_texture_uses(s);
+    ASSERT_EQ(uses[0].image, 0);
+    EXPECT_FALSE(uses[0].alpha_cutoff.has_value()); // no one scale keeps both coverages
+    s.materials[0].alpha_cutoff = 0.4f;             // the same cutoff twice: kept
+    uses = collect_texture_uses(s);
+    ASSERT_TRUE(uses[0].alpha_cutoff.has_value());
+    EXPECT_FLOAT_EQ(*uses[0].alpha_cutoff, 0.4f);
+}
+
 TEST(TexturePipeline, MissThenHitWithSameLevels) {
     const auto dir = test::fresh_temp_dir("cache-hit");
     const Scene scene = small_scene();

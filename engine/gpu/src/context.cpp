@@ -250,6 +250,25 @@ void Context::pick_physical_device(const ContextOptions& options) {
     vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
 }
 
+namespace {
+
+// The block-compressed formats the texture pipeline writes, each sampled with
+// linear filtering from an optimally tiled image.
+bool samples_bc(VkPhysicalDevice physical) {
+    constexpr VkFormatFeatureFlags kNeeded = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
+                                             VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT |
+                                             VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
+    for (VkFormat format :
+         {VK_FORMAT_BC7_SRGB_BLOCK, VK_FORMAT_BC7_UNORM_BLOCK, VK_FORMAT_BC5_UNORM_BLOCK}) {
+        VkFormatProperties props;
+        vkGetPhysicalDeviceFormatProperties(physical, format, &props);
+        if ((props.optimalTilingFeatures & kNeeded) != kNeeded) return false;
+    }
+    return true;
+}
+
+} // namespace
+
 void Context::create_device(bool presentation) {
     std::uint32_t n = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(physical_, &n, nullptr);
@@ -279,6 +298,7 @@ void Context::create_device(bool presentation) {
     f.core.features.wideLines = supported.core.features.wideLines;
     f.core.features.pipelineStatisticsQuery = supported.core.features.pipelineStatisticsQuery;
     f.core.features.depthClamp = supported.core.features.depthClamp;
+    f.core.features.textureCompressionBC = supported.core.features.textureCompressionBC;
     f.v11.shaderDrawParameters = supported.v11.shaderDrawParameters;
     f.v12.descriptorIndexing = VK_TRUE;
     f.v12.runtimeDescriptorArray = VK_TRUE;
@@ -298,6 +318,7 @@ void Context::create_device(bool presentation) {
     info_.anisotropy = f.core.features.samplerAnisotropy;
     info_.wide_lines = f.core.features.wideLines;
     info_.pipeline_statistics = f.core.features.pipelineStatisticsQuery;
+    info_.bc_textures = f.core.features.textureCompressionBC && samples_bc(physical_);
 
     // Ray tracing is recorded for a later issue, not enabled.
     if (has_extension(exts, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME) &&

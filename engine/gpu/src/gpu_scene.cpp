@@ -74,10 +74,24 @@ GPUTextureTransform uv_transform(const TextureSlot& slot) {
 } // namespace
 
 GpuScene::GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
-                   StreamPolicy policy)
-    : resources_(resources), policy_(policy) {
+                   std::shared_ptr<const tex::PreparedTextureSet> textures, StreamPolicy policy)
+    : resources_(resources), table_(table), policy_(policy) {
+    upload(scene, std::move(textures));
+}
+
+GpuScene::GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+                   const TextureSettings& texture_settings, StreamPolicy policy)
+    : resources_(resources), table_(table), policy_(policy) {
+    auto prepared = std::const_pointer_cast<tex::PreparedTextureSet>(
+        prepare_scene_textures(scene, resources.context().info(), texture_settings));
+    upload(scene, prepared);
+    // Nobody else holds this set: the levels are on the GPU now, keep the records only.
+    for (tex::PreparedTexture& t : prepared->textures) decltype(t.levels)().swap(t.levels);
+}
+
+void GpuScene::upload(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures) {
     try {
-        textures_ = std::make_unique<SceneTextures>(resources, table, scene);
+        textures_ = std::make_unique<SceneTextures>(resources_, table_, scene, std::move(textures));
         memory_.textures = textures_->gpu_bytes();
         upload_geometry(scene);
         upload_materials(scene);
@@ -180,18 +194,8 @@ void GpuScene::upload_materials(const Scene& scene) {
     std::vector<GPUMaterialData> data;
     std::vector<GPUMaterialExtra> extras;
     for (const MaterialInstance& m : scene.materials) {
-        GPUMaterialData g = to_gpu_material(m);
-        // Sentinels resolve to defaults; emissive without a texture is the factor
-        // alone (glTF), so it reads white when the factor is non-zero.
-        const bool emits = glm::any(glm::greaterThan(m.emissive_factor, glm::vec3(0.0f)));
-        g.base_color_tex = textures_->slot(m.base_color.texture, true, kWhiteTexture);
-        g.emissive_tex =
-            textures_->slot(m.emissive.texture, true, emits ? kWhiteTexture : kBlackTexture);
-        g.metallic_roughness_tex =
-            textures_->slot(m.metallic_roughness.texture, false, kWhiteTexture);
-        g.normal_tex = textures_->slot(m.normal.texture, false, kFlatNormalTexture);
-        g.occlusion_tex = textures_->slot(m.occlusion.texture, false, kWhiteTexture);
-        data.push_back(g);
+        // Texture fields resolved to bindless slots, absent ones to the defaults.
+        data.push_back(textures_->material(m));
         GPUMaterialExtra x{};
         x.uv[kSlotBaseColor] = uv_transform(m.base_color);
         x.uv[kSlotMetallicRoughness] = uv_transform(m.metallic_roughness);

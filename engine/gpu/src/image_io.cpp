@@ -1,6 +1,6 @@
 #include <sherpa/core/file_io.h>
 #include <sherpa/gpu/image_io.h>
-#include <sherpa/gpu/scene_textures.h>
+#include <sherpa/texture/image.h>
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -35,13 +35,16 @@ bool write_png(const std::string& path, std::uint32_t width, std::uint32_t heigh
 
 bool read_png_rgba8(const std::string& path, std::uint32_t& width, std::uint32_t& height,
                     std::vector<std::uint8_t>& rgba, std::string& error) {
-    ImageRecord record;
-    if (!read_file(path, record.encoded, error)) return false;
-    record.mime_type = "image/png";
-    if (!decode_rgba8(record, rgba, width, height, error)) {
+    std::vector<std::uint8_t> encoded;
+    if (!read_file(path, encoded, error)) return false;
+    tex::RgbaImage image;
+    if (!tex::decode_encoded_image(encoded, "image.png", image, error)) {
         error = path + ": " + error;
         return false;
     }
+    width = image.width;
+    height = image.height;
+    rgba = std::move(image.pixels);
     return true;
 }
 

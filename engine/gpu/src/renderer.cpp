@@ -188,7 +188,19 @@ Pipelines& Renderer::pipelines_for(VkFormat format) {
 
 void Renderer::load(const Scene& scene, StreamPolicy policy) {
     unload();
-    scene_ = std::make_unique<GpuScene>(*resources_, *bindless_, scene, policy);
+    scene_ = std::make_unique<GpuScene>(*resources_, *bindless_, scene, options_.textures, policy);
+    adopt(scene);
+}
+
+void Renderer::load(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
+                    StreamPolicy policy) {
+    unload();
+    scene_ =
+        std::make_unique<GpuScene>(*resources_, *bindless_, scene, std::move(textures), policy);
+    adopt(scene);
+}
+
+void Renderer::adopt(const Scene& scene) {
     build_culling();
     Scene& info = lighting_->info;
     info.bounds = scene_->bounds().valid() ? scene_->bounds() : scene.bounds;

@@ -3,71 +3,9 @@
 #include <sherpa/gpu/scene_textures.h>
 #include <sherpa/gpu/upload.h>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
-#include <bit>
-#include <cmath>
 
 namespace sherpa::gpu {
-
-bool decode_rgba8(const ImageRecord& image, std::vector<std::uint8_t>& rgba, std::uint32_t& width,
-                  std::uint32_t& height, std::string& error) {
-    if (!image.pixels.empty()) {
-        if (image.pixels.size() != std::size_t(image.width) * image.height * 4) {
-            error = "generated pixels do not match " + std::to_string(image.width) + "x" +
-                    std::to_string(image.height) + " RGBA8";
-            return false;
-        }
-        rgba = image.pixels;
-        width = image.width;
-        height = image.height;
-        return true;
-    }
-    if (image.encoded.empty()) {
-        error = "no image data";
-        return false;
-    }
-    // OIIO picks the reader by file extension; the proxy supplies the bytes.
-    const bool jpeg =
-        image.mime_type == "image/jpeg" ||
-        (image.encoded.size() > 2 && image.encoded[0] == 0xFF && image.encoded[1] == 0xD8);
-    OIIO::Filesystem::IOMemReader reader(const_cast<std::uint8_t*>(image.encoded.data()),
-                                         image.encoded.size());
-    auto in = OIIO::ImageInput::open(jpeg ? "image.jpg" : "image.png", nullptr, &reader);
-    if (!in) {
-        error = "cannot decode: " + OIIO::geterror();
-        return false;
-    }
-    const OIIO::ImageSpec& spec = in->spec();
-    const int channels = spec.nchannels;
-    if (spec.width <= 0 || spec.height <= 0 || channels < 1) {
-        error = "image has no pixels";
-        return false;
-    }
-    width = static_cast<std::uint32_t>(spec.width);
-    height = static_cast<std::uint32_t>(spec.height);
-    std::vector<std::uint8_t> raw(std::size_t(width) * height * channels);
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data())) {
-        error = "cannot decode: " + in->geterror();
-        return false;
-    }
-    rgba.resize(std::size_t(width) * height * 4);
-    const std::size_t n = std::size_t(width) * height;
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::uint8_t* s = &raw[i * channels];
-        std::uint8_t* d = &rgba[i * 4];
-        if (channels >= 3) {
-            d[0] = s[0], d[1] = s[1], d[2] = s[2];
-            d[3] = channels >= 4 ? s[3] : 255;
-        } else { // grey or grey + alpha
-            d[0] = d[1] = d[2] = s[0];
-            d[3] = channels == 2 ? s[1] : 255;
-        }
-    }
-    return true;
-}
 
 namespace {
 
@@ -108,10 +46,77 @@ VkSamplerCreateInfo sampler_info(const SamplerDesc& d, const DeviceInfo& device)
     return si;
 }
 
+// A set prepared for another scene or device, or whose levels were released after an
+// earlier upload, would create invalid images: refuse it.
+void check_prepared(const tex::PreparedTexture& t, const Scene& scene, const DeviceInfo& device) {
+    const std::string what =
+        "prepared texture '" + t.source + "' (" + std::string(tex::role_name(t.role)) + ")";
+    for (std::int32_t texture : t.textures)
+        if (texture < 0 || std::size_t(texture) >= scene.textures.size())
+            throw GpuError(what + " names glTF texture " + std::to_string(texture) + " of " +
+                           std::to_string(scene.textures.size()) + ": prepared for another scene?");
+    if (tex::is_block_compressed(t.format) && !device.bc_textures)
+        throw GpuError(what + " is " + std::string(tex::vk_format_name(t.format)) + " but " +
+                       device.name + " cannot sample BC formats: prepare with its DeviceInfo");
+    if (t.levels.empty() || t.width == 0 || t.height == 0)
+        throw GpuError(what + " has no levels (released after an earlier upload?)");
+    for (std::size_t l = 0; l < t.levels.size(); ++l) {
+        const auto level = static_cast<std::uint32_t>(l);
+        if (t.levels[l].size() != tex::level_size(t.format, tex::mip_extent(t.width, level),
+                                                  tex::mip_extent(t.height, level)))
+            throw GpuError(what + ": mip level " + std::to_string(l) + " has " +
+                           std::to_string(t.levels[l].size()) + " bytes, not what its size needs");
+    }
+}
+
 } // namespace
 
-SceneTextures::SceneTextures(ResourceManager& resources, BindlessTable& table, const Scene& scene)
-    : resources_(resources), table_(table) {
+tex::PipelineOptions texture_pipeline_options(const DeviceInfo& device,
+                                              const TextureSettings& settings) {
+    tex::PipelineOptions o;
+    o.cache_dir = settings.cache_dir;
+    o.cache_cap_bytes = settings.cache_cap_bytes;
+    o.bc7_level = settings.quality;
+    o.device_supports_bc = device.bc_textures && !settings.force_rgba8;
+    return o;
+}
+
+std::shared_ptr<const tex::PreparedTextureSet>
+prepare_scene_textures(const Scene& scene, const DeviceInfo& device,
+                       const TextureSettings& settings) {
+    auto set = std::make_shared<tex::PreparedTextureSet>(
+        tex::prepare_textures(scene, texture_pipeline_options(device, settings)));
+    // Say why there is no BC: the device, or the settings.
+    if (!set->textures.empty() && (!device.bc_textures || settings.force_rgba8)) {
+        std::erase_if(set->warnings, [](const std::string& w) {
+            return w.starts_with("device cannot sample BC formats");
+        });
+        set->warnings.insert(
+            set->warnings.begin(),
+            !device.bc_textures
+                ? device.name + " cannot sample BC7/BC5 (textureCompressionBC or format "
+                                "features missing): textures fall back to uncompressed RGBA8"
+                : "RGBA8 forced by the texture settings: textures are uploaded uncompressed "
+                  "although " +
+                      device.name + " samples BC7/BC5");
+    }
+    return set;
+}
+
+SceneTextures::SceneTextures(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+                             std::shared_ptr<const tex::PreparedTextureSet> prepared)
+    : resources_(resources), table_(table), prepared_(std::move(prepared)) {
+    if (!prepared_) prepared_ = std::make_shared<const tex::PreparedTextureSet>();
+    warnings_ = prepared_->warnings;
+    try {
+        upload(scene);
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
+void SceneTextures::upload(const Scene& scene) {
     // Samplers: one per distinct description (glTF default included).
     std::vector<SamplerDesc> descs;
     std::vector<std::uint32_t> sampler_of_texture(scene.textures.size());
@@ -126,80 +131,87 @@ SceneTextures::SceneTextures(ResourceManager& resources, BindlessTable& table, c
         }
         sampler_of_texture[t] = static_cast<std::uint32_t>(it - descs.begin());
     }
-
-    // Which (texture, colour space) pairs materials need.
-    struct Job {
-        std::int32_t texture;
-        bool srgb;
-        std::vector<std::uint8_t> rgba;
-        std::uint32_t width = 0, height = 0;
-        std::string error;
+    auto sampler_for = [&](std::int32_t texture) {
+        return resources_.get(samplers_[sampler_of_texture[std::size_t(texture)]]);
     };
-    std::vector<Job> jobs;
-    auto want = [&](const TextureSlot& s, bool srgb) {
-        if (!s.present() || s.texture >= static_cast<std::int32_t>(scene.textures.size())) return;
-        for (const Job& j : jobs)
-            if (j.texture == s.texture && j.srgb == srgb) return;
-        jobs.push_back({s.texture, srgb, {}, 0, 0, {}});
-    };
-    for (const MaterialInstance& m : scene.materials) {
-        want(m.base_color, true);
-        want(m.emissive, true);
-        want(m.metallic_roughness, false);
-        want(m.occlusion, false);
-        want(m.normal, false);
-    }
 
-    // Decoding dominates load time; images are independent.
-#pragma omp parallel for schedule(dynamic)
-    for (std::size_t i = 0; i < jobs.size(); ++i) {
-        Job& j = jobs[i];
-        const std::int32_t image = scene.textures[j.texture].image;
-        if (image < 0 || image >= static_cast<std::int32_t>(scene.images.size())) {
-            j.error = "texture " + std::to_string(j.texture) + " has no image";
-            continue;
-        }
-        if (!decode_rgba8(scene.images[image], j.rgba, j.width, j.height, j.error))
-            j.error = "image " + std::to_string(image) + " ('" + scene.images[image].name +
-                      "'): " + j.error;
-    }
-
+    const std::vector<tex::PreparedTexture>& records = prepared_->textures;
+    gpu_.resize(records.size());
+    slots_.assign(records.size(), kTextureSentinel);
     UploadBatch batch(resources_);
-    for (Job& j : jobs) {
-        if (!j.error.empty()) {
-            warnings_.push_back(j.error + "; the default texture stands in");
-            continue;
-        }
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        const tex::PreparedTexture& t = records[i];
+        if (t.failed || t.textures.empty()) continue; // the default texture stands in
+        check_prepared(t, scene, resources_.context().info());
         ImageDesc d;
-        d.format = j.srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
-        d.width = j.width;
-        d.height = j.height;
-        d.mip_levels = static_cast<std::uint32_t>(std::bit_width(std::max(j.width, j.height)));
-        d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-                  VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-        d.name = "texture " + std::to_string(j.texture) + (j.srgb ? " (sRGB)" : "");
-        ImageHandle h = resources_.create_image(d);
-        images_.push_back(h);
-        bytes_ += resources_.get(h).allocation_size;
-        batch.upload_image(h, j.rgba.data(), j.rgba.size());
-        const std::uint32_t s = table_.add(
-            resources_.get(h).view.get(), resources_.get(samplers_[sampler_of_texture[j.texture]]));
-        slots_.push_back(s);
-        slot_of_[{j.texture, j.srgb}] = s;
-        std::vector<std::uint8_t>().swap(j.rgba); // staged copy made; free the decode early
+        d.format = static_cast<VkFormat>(t.format);
+        d.width = t.width;
+        d.height = t.height;
+        d.mip_levels = static_cast<std::uint32_t>(t.levels.size());
+        d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+        d.name = "image " + std::to_string(t.image) + " (" + std::string(tex::role_name(t.role)) +
+                 ", " + std::string(tex::vk_format_name(t.format)) + ")";
+        GpuTexture& g = gpu_[i];
+        g.image = resources_.create_image(d);
+        g.mip_levels = d.mip_levels;
+        g.bytes = resources_.get(g.image).allocation_size;
+        bytes_ += g.bytes;
+        batch.upload_image_levels(g.image, t.levels);
+        const VkImageView view = resources_.get(g.image).view.get();
+        const std::int32_t first = t.textures.front();
+        g.slot = slots_[i] = table_.add(view, sampler_for(first));
+        // A texture sharing this image with a different sampler gets its own slot.
+        for (std::int32_t texture : t.textures)
+            if (sampler_of_texture[std::size_t(texture)] != sampler_of_texture[std::size_t(first)])
+                extra_slots_[{texture, t.role}] = table_.add(view, sampler_for(texture));
     }
     batch.submit_and_wait();
 }
 
-SceneTextures::~SceneTextures() {
-    for (std::uint32_t s : slots_) table_.remove(s);
-    for (ImageHandle& h : images_) resources_.destroy(h);
+void SceneTextures::release() {
+    for (std::uint32_t s : slots_)
+        if (s != kTextureSentinel) table_.remove(s);
+    for (const auto& [key, s] : extra_slots_) table_.remove(s);
+    for (GpuTexture& g : gpu_) resources_.destroy(g.image);
     for (SamplerHandle& h : samplers_) resources_.destroy(h);
+    slots_.clear();
+    extra_slots_.clear();
+    gpu_.clear();
+    samplers_.clear();
 }
 
-std::uint32_t SceneTextures::slot(std::int32_t texture, bool srgb, std::uint32_t fallback) const {
-    auto it = slot_of_.find({texture, srgb});
-    return it == slot_of_.end() ? fallback : it->second;
+SceneTextures::~SceneTextures() {
+    release();
+}
+
+std::size_t SceneTextures::image_count() const {
+    return static_cast<std::size_t>(std::count_if(
+        gpu_.begin(), gpu_.end(), [](const GpuTexture& g) { return g.image.valid(); }));
+}
+
+std::uint32_t SceneTextures::slot(std::int32_t texture, TextureRole role) const {
+    if (auto it = extra_slots_.find({texture, role}); it != extra_slots_.end()) return it->second;
+    const std::int32_t i = prepared_->find(texture, role);
+    return i < 0 || std::size_t(i) >= slots_.size() ? kTextureSentinel : slots_[std::size_t(i)];
+}
+
+GPUMaterialData SceneTextures::material(const MaterialInstance& m) const {
+    GPUMaterialData g = tex::resolve_material(m, *prepared_, slots_);
+    auto field = [&](std::uint32_t& value, const TextureSlot& s, TextureRole role,
+                     std::uint32_t fallback) {
+        if (s.present())
+            if (auto it = extra_slots_.find({s.texture, role}); it != extra_slots_.end())
+                value = it->second;
+        if (value == kTextureSentinel) value = fallback;
+    };
+    // Emissive without a texture is the factor alone (glTF): white when it emits.
+    const bool emits = glm::any(glm::greaterThan(m.emissive_factor, glm::vec3(0.0f)));
+    field(g.base_color_tex, m.base_color, kRoleColor, kWhiteTexture);
+    field(g.emissive_tex, m.emissive, kRoleColor, emits ? kWhiteTexture : kBlackTexture);
+    field(g.metallic_roughness_tex, m.metallic_roughness, kRoleLinear, kWhiteTexture);
+    field(g.occlusion_tex, m.occlusion, kRoleLinear, kWhiteTexture);
+    field(g.normal_tex, m.normal, kRoleNormal, kFlatNormalTexture);
+    return g;
 }
 
 } // namespace sherpa::gpu

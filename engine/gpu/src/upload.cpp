@@ -31,7 +31,45 @@ void UploadBatch::upload_image(ImageHandle dst, const void* texels, VkDeviceSize
         if (!(fp.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
             throw GpuError("format cannot be blitted with linear filtering for mip generation");
     }
-    image_copies_.push_back({dst, stage(texels, size)});
+    image_copies_.push_back({dst, stage(texels, size), {}});
+}
+
+void UploadBatch::upload_image_levels(ImageHandle dst,
+                                      std::span<const std::vector<std::uint8_t>> levels) {
+    const Image& img = resources_.get(dst);
+    if (levels.empty() || levels.size() != img.desc.mip_levels)
+        throw GpuError("image '" + img.desc.name + "' has " + std::to_string(img.desc.mip_levels) +
+                       " mip levels but " + std::to_string(levels.size()) + " were given");
+    ImageCopy c{dst, 0, {}};
+    for (const auto& level : levels) {
+        if (level.empty()) throw GpuError("image '" + img.desc.name + "' has an empty mip level");
+        c.level_offsets.push_back(stage(level.data(), level.size()));
+    }
+    image_copies_.push_back(std::move(c));
+}
+
+void UploadBatch::record_level_copies(VkCommandBuffer cmd, VkBuffer staging, const ImageCopy& c) {
+    const ImageDesc& d = resources_.get(c.dst).desc;
+    VkImage image = resources_.get(c.dst).image.get();
+    const std::uint32_t levels = static_cast<std::uint32_t>(c.level_offsets.size());
+    transition(cmd,
+               {image, d.aspect, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT,
+                VK_ACCESS_2_TRANSFER_WRITE_BIT, 0, levels});
+    std::vector<VkBufferImageCopy> regions(levels);
+    for (std::uint32_t level = 0; level < levels; ++level) {
+        VkBufferImageCopy& r = regions[level];
+        r.bufferOffset = c.level_offsets[level]; // 16-byte aligned: a BC block or 4 texels
+        r.imageSubresource = {d.aspect, level, 0, 1};
+        // The level's real extent; block formats round up to whole blocks in the buffer.
+        r.imageExtent = {std::max(1u, d.width >> level), std::max(1u, d.height >> level), 1};
+    }
+    vkCmdCopyBufferToImage(cmd, staging, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, levels,
+                           regions.data());
+    transition(cmd, {image, d.aspect, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+                     VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, 0, levels});
 }
 
 void UploadBatch::submit_and_wait() {
@@ -49,6 +87,10 @@ void UploadBatch::submit_and_wait() {
         vkCmdCopyBuffer(cmd, sb.buffer.get(), resources_.get(c.dst).buffer.get(), 1, &region);
     }
     for (const ImageCopy& c : image_copies_) {
+        if (!c.level_offsets.empty()) {
+            record_level_copies(cmd, sb.buffer.get(), c);
+            continue;
+        }
         const Image& img = resources_.get(c.dst);
         const ImageDesc& d = img.desc;
         VkImage image = img.image.get();

@@ -38,6 +38,7 @@ std::vector<TextureUse> collect_texture_uses(const Scene& scene) {
     std::set<std::uint32_t> used_materials;
     for (const MeshInstance& inst : scene.instances) used_materials.insert(inst.material_id);
     std::map<std::pair<std::int32_t, int>, TextureUse> uses;
+    std::map<std::pair<std::int32_t, int>, std::set<float>> cutoffs; // of masked materials
     auto add = [&](const TextureSlot& slot, TextureRole role, std::optional<float> cutoff) {
         if (!slot.present() || std::size_t(slot.texture) >= scene.textures.size()) return;
         const std::int32_t image = scene.textures[std::size_t(slot.texture)].image;
@@ -46,9 +47,7 @@ std::vector<TextureUse> collect_texture_uses(const Scene& scene) {
         use.image = image, use.role = role;
         if (std::find(use.textures.begin(), use.textures.end(), slot.texture) == use.textures.end())
             use.textures.push_back(slot.texture);
-        // Several masked materials on one image: the lowest cutoff keeps the most.
-        if (cutoff)
-            use.alpha_cutoff = use.alpha_cutoff ? std::min(*use.alpha_cutoff, *cutoff) : *cutoff;
+        if (cutoff) cutoffs[{image, int(role)}].insert(*cutoff);
     };
     for (std::uint32_t id : used_materials) {
         if (id >= scene.materials.size()) continue;
@@ -62,7 +61,15 @@ std::vector<TextureUse> collect_texture_uses(const Scene& scene) {
         add(m.normal, kRoleNormal, std::nullopt);
     }
     std::vector<TextureUse> out;
-    for (auto& [key, use] : uses) out.push_back(std::move(use));
+    for (auto& [key, use] : uses) {
+        // Coverage is kept for one cutoff only: scaling the mips' alpha for one cutoff
+        // shifts the others (AlphaBlendModeTest masks one image at 0.25, 0.5 and 0.75;
+        // kept for 0.25, the 0.75 panel vanished at a distance). Several different
+        // cutoffs on one image get plain filtering.
+        if (auto it = cutoffs.find(key); it != cutoffs.end() && it->second.size() == 1)
+            use.alpha_cutoff = *it->second.begin();
+        out.push_back(std::move(use));
+    }
     return out;
 }
 

@@ -53,6 +53,10 @@ struct DeviceInfo {
     bool timestamps = false;
     bool pipeline_statistics = false;
     float max_anisotropy = 1.0f;
+    // BC7 (sRGB and UNORM) and BC5 can be sampled with linear filtering from
+    // optimally tiled images (textureCompressionBC enabled and the format
+    // properties say so); false: textures fall back to RGBA8.
+    bool bc_textures = false;
     bool is_cpu() const { return type == VK_PHYSICAL_DEVICE_TYPE_CPU; }
 };
 

@@ -52,7 +52,15 @@ struct DrawGroup {
 
 class GpuScene {
 public:
+    // Uploads textures the caller prepared (prepare_scene_textures(), possibly on
+    // another thread) for this scene.
     GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+             std::shared_ptr<const tex::PreparedTextureSet> textures,
+             StreamPolicy policy = StreamPolicy::UsedByMaterials);
+    // Prepares the textures itself (on this thread), then uploads; the CPU copies of
+    // the texture levels are released after the upload.
+    GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+             const TextureSettings& texture_settings,
              StreamPolicy policy = StreamPolicy::UsedByMaterials);
     ~GpuScene();
     GpuScene(const GpuScene&) = delete;
@@ -78,16 +86,19 @@ public:
     }
     const GpuMemoryReport& memory() const { return memory_; }
     std::uint64_t triangle_count() const { return triangles_; }
-    // For inspection: the editor maps material bindless slots back to scene textures.
+    // For inspection: per prepared texture its pipeline record (state, hash, PSNR,
+    // timings, bytes) and bindless slot; the editor maps material slots back to them.
     const SceneTextures& textures() const { return *textures_; }
     const std::vector<std::string>& warnings() const { return textures_->warnings(); }
 
 private:
+    void upload(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures);
     void upload_geometry(const Scene& scene);
     void upload_materials(const Scene& scene);
     void upload_instances(const Scene& scene);
 
     ResourceManager& resources_;
+    BindlessTable& table_;
     StreamPolicy policy_;
     std::unique_ptr<SceneTextures> textures_;
     BufferHandle vertices_, indices_, materials_, material_extras_, instances_;

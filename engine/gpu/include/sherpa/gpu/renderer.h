@@ -40,6 +40,8 @@ struct FrameStats {
 
 struct RendererOptions {
     std::uint32_t shadow_resolution = 2048;
+    // How load(scene) prepares textures; default: no disk cache, BC where supported.
+    TextureSettings textures;
 };
 
 // A colour image the caller owns, in `layout` before the frame and left in
@@ -63,7 +65,14 @@ public:
     Renderer& operator=(const Renderer&) = delete;
 
     // Uploads `scene`, replacing the current one (freed once frames using it finish).
+    // Prepares its textures first, on this thread, with texture_settings().
     void load(const Scene& scene, StreamPolicy policy = StreamPolicy::UsedByMaterials);
+    // The same with textures already prepared for `scene` (prepare_scene_textures()
+    // with context().info(), e.g. on a loader thread); only the upload happens here.
+    void load(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
+              StreamPolicy policy = StreamPolicy::UsedByMaterials);
+    const TextureSettings& texture_settings() const { return options_.textures; }
+    void set_texture_settings(const TextureSettings& settings) { options_.textures = settings; }
     void unload();
     const GpuScene* scene() const { return scene_.get(); }
 
@@ -91,6 +100,7 @@ private:
     struct FrameSlot;
     struct Lighting;
     struct Culling;
+    void adopt(const Scene& scene);
     void build_culling();
     void cull_camera(VkCommandBuffer cmd, FrameSlot& slot, const RenderSettings& settings,
                      float aspect);

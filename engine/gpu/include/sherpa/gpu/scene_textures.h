@@ -1,48 +1,97 @@
 #pragma once
-// A scene's textures on the GPU: decoded to RGBA8 (sRGB for colour roles, UNORM
-// otherwise) with full mip chains, registered in the bindless table, plus the
-// sampler objects the glTF samplers map to. Stands in until the texture pipeline
-// (BC7/BC5/KTX2 cache) lands.
+// A scene's textures on the GPU: the texture pipeline's prepared levels (BC7 sRGB
+// for colour, BC7 UNORM for data, BC5 for normal maps, or RGBA8 where the device
+// cannot sample BC) uploaded as they are with their full mip chains through one
+// staging batch, registered in the bindless table, plus the sampler objects the
+// glTF samplers map to. Preparation (decode, mips, compression, cache) is CPU
+// work that may run on any thread before the upload: see prepare_scene_textures().
 #include <cstdint>
+#include <filesystem>
 #include <map>
+#include <memory>
+#include <optional>
+#include <span>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include <sherpa/gpu/bindless.h>
+#include <sherpa/gpu/context.h>
 #include <sherpa/gpu/resources.h>
 #include <sherpa/scene/scene.h>
+#include <sherpa/texture/texture_pipeline.h>
 
 namespace sherpa::gpu {
 
+// How a renderer prepares textures when it is handed a bare Scene.
+struct TextureSettings {
+    std::optional<std::filesystem::path> cache_dir; // nullopt: no disk cache
+    std::uint64_t cache_cap_bytes = tex::kDefaultCacheCapBytes;
+    int quality = tex::kBc7DefaultLevel; // BC7 level
+    // Upload RGBA8 even where the device samples BC (what devices without BC get).
+    bool force_rgba8 = false;
+};
+
+// Pipeline options for `device`: block-compressed where the device can sample
+// BC7/BC5 and `settings` does not force RGBA8.
+tex::PipelineOptions texture_pipeline_options(const DeviceInfo& device,
+                                              const TextureSettings& settings);
+
+// Runs the texture pipeline for `scene` on the calling thread (no Vulkan calls:
+// safe on a worker thread). Adds a warning naming the device when it cannot
+// sample BC formats.
+std::shared_ptr<const tex::PreparedTextureSet>
+prepare_scene_textures(const Scene& scene, const DeviceInfo& device,
+                       const TextureSettings& settings);
+
+// One prepared texture on the GPU.
+struct GpuTexture {
+    ImageHandle image;
+    std::uint32_t slot = kTextureSentinel; // bindless slot; sentinel when it failed
+    std::uint32_t mip_levels = 0;
+    std::uint64_t bytes = 0; // device memory of the image
+};
+
 class SceneTextures {
 public:
-    SceneTextures(ResourceManager& resources, BindlessTable& table, const Scene& scene);
+    // Uploads every texture of `prepared` (prepared for `scene`) that did not fail.
+    SceneTextures(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+                  std::shared_ptr<const tex::PreparedTextureSet> prepared);
     ~SceneTextures();
     SceneTextures(const SceneTextures&) = delete;
     SceneTextures& operator=(const SceneTextures&) = delete;
 
-    // Bindless slot of scene texture `texture` read as colour (sRGB) or data, or
-    // `fallback` (a default slot) when the slot is absent or could not be decoded.
-    std::uint32_t slot(std::int32_t texture, bool srgb, std::uint32_t fallback) const;
-    std::uint64_t gpu_bytes() const { return bytes_; }
-    std::size_t image_count() const { return images_.size(); }
+    // The pipeline's records (state, hash, PSNR, timings, bytes) for inspection;
+    // gpu()[i] is records()[i] on the GPU. Levels may have been released after upload.
+    const tex::PreparedTextureSet& prepared() const { return *prepared_; }
+    const std::vector<tex::PreparedTexture>& records() const { return prepared_->textures; }
+    const std::vector<GpuTexture>& gpu() const { return gpu_; }
+    std::span<const std::uint32_t> slots() const { return slots_; }
+
+    // The material's GPU record with texture fields resolved to bindless slots, and
+    // absent or failed textures to the default textures.
+    GPUMaterialData material(const MaterialInstance& material) const;
+    // Bindless slot of glTF texture `texture` read in `role`, or kTextureSentinel.
+    std::uint32_t slot(std::int32_t texture, TextureRole role) const;
+
+    std::uint64_t gpu_bytes() const { return bytes_; } // device memory of all images
+    std::size_t image_count() const;
     const std::vector<std::string>& warnings() const { return warnings_; }
 
 private:
+    void upload(const Scene& scene);
+    void release();
+
     ResourceManager& resources_;
     BindlessTable& table_;
-    std::vector<ImageHandle> images_;
+    std::shared_ptr<const tex::PreparedTextureSet> prepared_;
+    std::vector<GpuTexture> gpu_;
+    std::vector<std::uint32_t> slots_; // per record; sentinel where failed
+    // Textures sharing an image with another texture but not its sampler get a slot
+    // of their own (same view): (glTF texture, role) -> slot.
+    std::map<std::pair<std::int32_t, TextureRole>, std::uint32_t> extra_slots_;
     std::vector<SamplerHandle> samplers_;
-    std::vector<std::uint32_t> slots_;
-    std::map<std::pair<std::int32_t, bool>, std::uint32_t> slot_of_; // (texture, srgb) -> slot
     std::uint64_t bytes_ = 0;
     std::vector<std::string> warnings_;
 };
-
-// Decodes PNG/JPEG bytes (or takes generated RGBA8 pixels) into tightly packed
-// RGBA8. Returns false with `error` set when the image cannot be decoded.
-bool decode_rgba8(const ImageRecord& image, std::vector<std::uint8_t>& rgba, std::uint32_t& width,
-                  std::uint32_t& height, std::string& error);
 
 } // namespace sherpa::gpu

@@ -3,6 +3,7 @@
 // buffer and one command buffer carry them all; submit_and_wait() returns when the
 // data is on the GPU and frees the staging memory.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <sherpa/gpu/commands.h>
@@ -19,6 +20,10 @@ public:
     // Level 0 from tightly packed texels; the other levels are made with linear
     // blits. The image ends in SHADER_READ_ONLY_OPTIMAL for fragment shaders.
     void upload_image(ImageHandle dst, const void* texels, VkDeviceSize size);
+    // Every mip level given, as is (block-compressed or not; levels[0] full size,
+    // each level tightly packed). levels.size() must equal the image's mip count.
+    // The image ends in SHADER_READ_ONLY_OPTIMAL for fragment shaders.
+    void upload_image_levels(ImageHandle dst, std::span<const std::vector<std::uint8_t>> levels);
     VkDeviceSize staged_bytes() const { return static_cast<VkDeviceSize>(staging_.size()); }
     void submit_and_wait();
 
@@ -30,7 +35,10 @@ private:
     struct ImageCopy {
         ImageHandle dst;
         VkDeviceSize src_offset;
+        // Empty: level 0 only, the rest blitted; else one offset per level.
+        std::vector<VkDeviceSize> level_offsets;
     };
+    void record_level_copies(VkCommandBuffer cmd, VkBuffer staging, const ImageCopy& c);
     VkDeviceSize stage(const void* data, VkDeviceSize size);
 
     ResourceManager& resources_;

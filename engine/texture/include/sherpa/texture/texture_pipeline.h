@@ -27,7 +27,8 @@ struct TextureUse {
     std::int32_t image = -1;
     TextureRole role = kRoleColor;      // exactly one role bit
     std::vector<std::int32_t> textures; // glTF texture indices that reach it in this role
-    // Set when some alpha-masked material uses it as base colour.
+    // Set when alpha-masked materials use it as base colour, all with this cutoff
+    // (mips then keep its alpha coverage); unset when their cutoffs differ.
     std::optional<float> alpha_cutoff;
 };
 

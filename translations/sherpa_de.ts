@@ -338,10 +338,6 @@
         <translation>Lade %1 …</translation>
     </message>
     <message>
-        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms).</source>
-        <translation>%1 in %2 ms geladen (Engine %3 ms, Vorschaubilder %4 ms).</translation>
-    </message>
-    <message>
         <source>Could not load %1; the current scene is kept.</source>
         <translation>%1 konnte nicht geladen werden; die aktuelle Szene bleibt.</translation>
     </message>
@@ -627,6 +623,10 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <source>GPU (compute shader, indirect draws)</source>
         <translation>GPU (Compute-Shader, indirekte Draws)</translation>
     </message>
+    <message>
+        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</source>
+        <translation>%1 in %2 ms geladen (Engine %3 ms, Vorschaubilder %4 ms, Texturen %5 ms).</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -890,16 +890,16 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <translation>Cache-Ordner öffnen</translation>
     </message>
     <message>
-        <source>Needs the texture cache, which is not part of this build</source>
-        <translation>Benötigt den Textur-Cache, der in diesem Build fehlt</translation>
-    </message>
-    <message>
         <source>no renderer</source>
         <translation>kein Renderer</translation>
     </message>
     <message>
         <source>%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms</source>
         <translation>%1 Texturen, %2 kodiert auf der Festplatte, %3 auf der GPU, Vorschaubilder in %4 ms dekodiert</translation>
+    </message>
+    <message>
+        <source>Not available yet: the texture cache cannot drop or recompress single entries (Open cache folder shows its files)</source>
+        <translation>Noch nicht verfügbar: Der Texturcache kann einzelne Einträge weder entfernen noch neu komprimieren („Cache-Ordner öffnen“ zeigt seine Dateien)</translation>
     </message>
 </context>
 <context>
@@ -975,6 +975,30 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>PSNR</source>
         <translation>PSNR</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>hit</source>
+        <translation>Treffer</translation>
+    </message>
+    <message>
+        <source>miss</source>
+        <translation>Fehltreffer</translation>
+    </message>
+    <message>
+        <source>stale</source>
+        <translation>veraltet</translation>
+    </message>
+    <message>
+        <source>recompressed</source>
+        <translation>neu komprimiert</translation>
+    </message>
+    <message>
+        <source>fallback</source>
+        <translation>Ersatz (RGBA8)</translation>
     </message>
 </context>
 <context>

@@ -338,10 +338,6 @@
         <translation>Loading %1…</translation>
     </message>
     <message>
-        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms).</source>
-        <translation>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms).</translation>
-    </message>
-    <message>
         <source>Could not load %1; the current scene is kept.</source>
         <translation>Could not load %1; the current scene is kept.</translation>
     </message>
@@ -627,6 +623,10 @@ The current scene is kept.</translation>
         <source>GPU (compute shader, indirect draws)</source>
         <translation>GPU (compute shader, indirect draws)</translation>
     </message>
+    <message>
+        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</source>
+        <translation>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -890,16 +890,16 @@ The current scene is kept.</translation>
         <translation>Open cache folder</translation>
     </message>
     <message>
-        <source>Needs the texture cache, which is not part of this build</source>
-        <translation>Needs the texture cache, which is not part of this build</translation>
-    </message>
-    <message>
         <source>no renderer</source>
         <translation>no renderer</translation>
     </message>
     <message>
         <source>%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms</source>
         <translation>%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms</translation>
+    </message>
+    <message>
+        <source>Not available yet: the texture cache cannot drop or recompress single entries (Open cache folder shows its files)</source>
+        <translation>Not available yet: the texture cache cannot drop or recompress single entries (Open cache folder shows its files)</translation>
     </message>
 </context>
 <context>
@@ -975,6 +975,30 @@ The current scene is kept.</translation>
     <message>
         <source>PSNR</source>
         <translation>PSNR</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>failed</translation>
+    </message>
+    <message>
+        <source>hit</source>
+        <translation>hit</translation>
+    </message>
+    <message>
+        <source>miss</source>
+        <translation>miss</translation>
+    </message>
+    <message>
+        <source>stale</source>
+        <translation>stale</translation>
+    </message>
+    <message>
+        <source>recompressed</source>
+        <translation>recompressed</translation>
+    </message>
+    <message>
+        <source>fallback</source>
+        <translation>fallback</translation>
     </message>
 </context>
 <context>

@@ -338,10 +338,6 @@
         <translation>正在加载 %1…</translation>
     </message>
     <message>
-        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms).</source>
-        <translation>已加载 %1，用时 %2 ms（引擎 %3 ms，缩略图 %4 ms）。</translation>
-    </message>
-    <message>
         <source>Could not load %1; the current scene is kept.</source>
         <translation>无法加载 %1；保留当前场景。</translation>
     </message>
@@ -627,6 +623,10 @@ The current scene is kept.</source>
         <source>GPU (compute shader, indirect draws)</source>
         <translation>GPU（计算着色器，间接绘制）</translation>
     </message>
+    <message>
+        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</source>
+        <translation>已加载 %1，用时 %2 毫秒（引擎 %3 毫秒，缩略图 %4 毫秒，纹理 %5 毫秒）。</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -890,16 +890,16 @@ The current scene is kept.</source>
         <translation>打开缓存文件夹</translation>
     </message>
     <message>
-        <source>Needs the texture cache, which is not part of this build</source>
-        <translation>需要纹理缓存，但此版本未包含</translation>
-    </message>
-    <message>
         <source>no renderer</source>
         <translation>无渲染器</translation>
     </message>
     <message>
         <source>%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms</source>
         <translation>%1 个纹理，磁盘上编码数据 %2，GPU 上 %3，缩略图解码用时 %4 ms</translation>
+    </message>
+    <message>
+        <source>Not available yet: the texture cache cannot drop or recompress single entries (Open cache folder shows its files)</source>
+        <translation>尚不可用：纹理缓存无法删除或重新压缩单个条目（“打开缓存文件夹”可查看其文件）</translation>
     </message>
 </context>
 <context>
@@ -975,6 +975,30 @@ The current scene is kept.</source>
     <message>
         <source>PSNR</source>
         <translation>PSNR</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <source>hit</source>
+        <translation>命中</translation>
+    </message>
+    <message>
+        <source>miss</source>
+        <translation>未命中</translation>
+    </message>
+    <message>
+        <source>stale</source>
+        <translation>过期</translation>
+    </message>
+    <message>
+        <source>recompressed</source>
+        <translation>已重新压缩</translation>
+    </message>
+    <message>
+        <source>fallback</source>
+        <translation>回退（RGBA8）</translation>
     </message>
 </context>
 <context>

@@ -35,6 +35,7 @@ struct GpuViewport::Impl {
     std::uint32_t width = 0, height = 0;
     const Scene* scene = nullptr;
     bool all_streams = false;
+    PreparedTextures prepared;              // of `scene`
     std::unique_ptr<gpu::GpuCuller> culler; // CPU/GPU agreement checks, built per scene
     const Scene* culler_scene = nullptr;
 };
@@ -94,17 +95,40 @@ void GpuViewport::setTextureCache(const QString& directory, const QString& quali
     impl_->renderer->set_texture_settings(t);
 }
 
-void GpuViewport::setScene(const Scene* scene) {
+TexturePreparer GpuViewport::texturePreparer() const {
+    return [device = impl_->context->info(), settings = impl_->renderer->texture_settings()](
+               const Scene& scene, const ProgressCallback& progress, const CancelToken* cancel) {
+        gpu::TextureSettings s = settings;
+        s.progress = progress;
+        s.cancel = cancel;
+        PreparedTextures set = gpu::prepare_scene_textures(scene, device, s);
+        return set && !set->cancelled ? set : nullptr;
+    };
+}
+
+void GpuViewport::setScene(const Scene* scene, PreparedTextures textures) {
     if (scene != impl_->scene) {
         impl_->culler.reset();
         impl_->culler_scene = nullptr;
     }
     impl_->scene = scene;
-    if (scene)
-        impl_->renderer->load(*scene, impl_->all_streams ? gpu::StreamPolicy::AllPresent
-                                                         : gpu::StreamPolicy::UsedByMaterials);
-    else
+    if (!scene) {
+        impl_->prepared.reset();
         impl_->renderer->unload();
+        return;
+    }
+    // Kept (levels included) so that a stream-policy change can upload again.
+    if (!textures)
+        textures = gpu::prepare_scene_textures(*scene, impl_->context->info(),
+                                               impl_->renderer->texture_settings());
+    impl_->prepared = textures;
+    impl_->renderer->load(*scene, std::move(textures),
+                          impl_->all_streams ? gpu::StreamPolicy::AllPresent
+                                             : gpu::StreamPolicy::UsedByMaterials);
+}
+
+PreparedTextures GpuViewport::preparedTextures() const {
+    return impl_->scene ? impl_->prepared : nullptr;
 }
 
 const Scene* GpuViewport::scene() const {
@@ -135,7 +159,7 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame) {
     const bool all = gpu::needs_all_streams(settings);
     if (all != impl_->all_streams) {
         impl_->all_streams = all;
-        if (impl_->scene) setScene(impl_->scene);
+        if (impl_->scene) setScene(impl_->scene, impl_->prepared);
     }
     if (!impl_->presenter || impl_->surface != surface) {
         impl_->presenter.reset();

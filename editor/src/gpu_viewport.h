@@ -16,6 +16,7 @@
 #include <sherpa/scene/scene.h>
 
 #include "material_dock.h"
+#include "scene_extras.h"
 
 class QVulkanInstance;
 
@@ -47,9 +48,16 @@ public:
     // Where setScene() finds and stores compressed textures, and the BC7 quality
     // ("fast", "balanced" or "best", as in the settings); an empty directory: no cache.
     void setTextureCache(const QString& directory, const QString& quality);
-    // Uploads the scene (replacing the previous one; null unloads). Prepares its
-    // textures (texture cache, BC7/BC5) on this thread first.
-    void setScene(const Scene* scene);
+    // Prepares a scene's textures for this device with the texture cache settings
+    // of the moment; the callable copies what it needs and may run on any thread
+    // (the scene loader's), reporting per texture and stopping when cancelled.
+    TexturePreparer texturePreparer() const;
+    // Uploads the scene (replacing the previous one; null unloads) with textures
+    // prepared for it, or, without them, prepares them on this thread first.
+    void setScene(const Scene* scene, PreparedTextures textures = nullptr);
+    // The uploaded scene's prepared textures: cache state, hash, format, bytes,
+    // timings and PSNR per texture (null without a scene).
+    PreparedTextures preparedTextures() const;
     // The scene last uploaded (compare only: it may be gone once replaced).
     const Scene* scene() const;
     // Presents one frame on `surface` (the swapchain is created on first use and

@@ -134,7 +134,9 @@ void MainWindow::createRenderer() {
 void MainWindow::uploadScene() {
     try {
         gpu_->setTextureCache(settings_.cacheDirectory(), settings_.textureQuality());
-        gpu_->setScene(context_.scene());
+        const SceneExtras* extras = context_.extras();
+        gpu_->setScene(context_.scene(), extras ? extras->textures : nullptr);
+        textures_->setPrepared(gpu_->preparedTextures());
         textures_->setGpuBytes(static_cast<std::int64_t>(gpu_->textureBytes()));
     } catch (const std::exception& e) {
         log_->append(LogDock::Level::Error,
@@ -249,6 +251,10 @@ void MainWindow::connectActions() {
 
 void MainWindow::openScene(const QString& spec) {
     log_->append(LogDock::Level::Info, tr("Loading %1…").arg(spec));
+    if (gpu_) { // textures are prepared on the loader thread, for this device and settings
+        gpu_->setTextureCache(settings_.cacheDirectory(), settings_.textureQuality());
+        loader_.setTexturePreparer(gpu_->texturePreparer());
+    }
     loader_.start(spec);
 }
 
@@ -299,11 +305,13 @@ void MainWindow::onLoaded(const QString& spec, const LoadOutcome& outcome, doubl
     settings_.addRecentFile(spec);
     for (const std::string& w : outcome.scene->warnings)
         log_->append(LogDock::Level::Warning, QString::fromStdString(w));
-    log_->append(LogDock::Level::Info, tr("Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms).")
-                                           .arg(spec)
-                                           .arg(ms, 0, 'f', 1)
-                                           .arg(outcome.extras->load_ms, 0, 'f', 1)
-                                           .arg(outcome.extras->thumbnails_ms, 0, 'f', 1));
+    log_->append(LogDock::Level::Info,
+                 tr("Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).")
+                     .arg(spec)
+                     .arg(ms, 0, 'f', 1)
+                     .arg(outcome.extras->load_ms, 0, 'f', 1)
+                     .arg(outcome.extras->thumbnails_ms, 0, 'f', 1)
+                     .arg(outcome.extras->textures_ms, 0, 'f', 1));
     viewport_->camera().frame(outcome.scene->bounds);
     viewport_->setAutoFrame(true);
     onCameraChanged();

@@ -68,7 +68,8 @@ QImage decode_thumbnail(const Scene& scene, const TextureRecord& texture, QSize&
     return thumb;
 }
 
-LoadOutcome run_load(const QString& spec, SceneLoadJob::State* state);
+LoadOutcome run_load(const QString& spec, const TexturePreparer& preparer,
+                     SceneLoadJob::State* state);
 
 } // namespace
 
@@ -106,8 +107,8 @@ void SceneLoadJob::start(const QString& spec) {
         });
     };
     ++g_in_flight;
-    watcher_->setFuture(QtConcurrent::run([spec, state] {
-        LoadOutcome out = run_load(spec, state.get());
+    watcher_->setFuture(QtConcurrent::run([spec, state, preparer = preparer_] {
+        LoadOutcome out = run_load(spec, preparer, state.get());
         --g_in_flight;
         return out;
     }));
@@ -142,15 +143,16 @@ void SceneLoadJob::onFinished() {
         Q_EMIT failed(spec_, outcome.error);
 }
 
-LoadOutcome SceneLoadJob::loadNow(const QString& spec) {
+LoadOutcome SceneLoadJob::loadNow(const QString& spec, const TexturePreparer& preparer) {
     State state;
     state.clock.start();
-    return run_load(spec, &state);
+    return run_load(spec, preparer, &state);
 }
 
 namespace {
 
-LoadOutcome run_load(const QString& spec, SceneLoadJob::State* state) {
+LoadOutcome run_load(const QString& spec, const TexturePreparer& preparer,
+                     SceneLoadJob::State* state) {
     LoadOutcome out;
     QElapsedTimer clock;
     clock.start();
@@ -197,6 +199,23 @@ LoadOutcome run_load(const QString& spec, SceneLoadJob::State* state) {
             extras->image_sizes[static_cast<std::size_t>(image)] = sizes[t];
     }
     extras->thumbnails_ms = static_cast<double>(clock.nsecsElapsed()) / 1e6;
+    if (preparer && !state->cancel.cancelled()) {
+        // The GPU's textures (texture cache, BC7/BC5), counted per prepared texture.
+        clock.restart();
+        state->report(LoadStep::Textures, 0, 1);
+        extras->textures = preparer(
+            scene,
+            [state](std::size_t done, std::size_t total) {
+                state->report(LoadStep::Textures, done, total);
+            },
+            &state->cancel);
+        extras->textures_ms = static_cast<double>(clock.nsecsElapsed()) / 1e6;
+        if (state->cancel.cancelled()) {
+            out.cancelled = true; // scene, thumbnails and textures are dropped here
+            out.error = QStringLiteral("cancelled");
+            return out;
+        }
+    }
     out.scene = std::move(result.scene);
     out.extras = std::move(extras);
     return out;

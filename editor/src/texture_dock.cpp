@@ -34,7 +34,7 @@ TextureDock::TextureDock(const EditorContext& context, QWidget* parent)
     recompress_ = new QPushButton(body);
     clear_ = new QPushButton(body);
     open_folder_ = new QPushButton(body);
-    // Needs the texture cache, which this build does not contain yet.
+    // The engine's texture cache has no API to drop or recompress one entry yet.
     recompress_->setEnabled(false);
     clear_->setEnabled(false);
     actions->addWidget(totals_, 1);
@@ -60,7 +60,8 @@ void TextureDock::retranslate() {
     recompress_->setText(tr("Recompress selected"));
     clear_->setText(tr("Clear cache"));
     open_folder_->setText(tr("Open cache folder"));
-    const QString why = tr("Needs the texture cache, which is not part of this build");
+    const QString why = tr("Not available yet: the texture cache cannot drop or recompress "
+                           "single entries (Open cache folder shows its files)");
     recompress_->setToolTip(why);
     clear_->setToolTip(why);
     updateTotals();
@@ -78,6 +79,11 @@ void TextureDock::syncSelection() {
         view_->setCurrentIndex(model_->index(t, 0));
         view_->scrollTo(model_->index(t, 0));
     }
+}
+
+void TextureDock::setPrepared(PreparedTextures prepared) {
+    model_->setPrepared(std::move(prepared));
+    syncSelection();
 }
 
 void TextureDock::setGpuBytes(std::int64_t bytes) {

@@ -4,6 +4,8 @@
 // cache (engine/texture) is part of the build.
 #include <QDockWidget>
 
+#include "scene_extras.h"
+
 class QLabel;
 class QPushButton;
 class QTableView;
@@ -22,6 +24,8 @@ public:
     QTableView* view() const { return view_; }
     // Bytes the renderer holds for the scene's textures (-1: no renderer), for the totals.
     void setGpuBytes(std::int64_t bytes);
+    // The texture pipeline's records of the uploaded scene (cache columns).
+    void setPrepared(PreparedTextures prepared);
 
 Q_SIGNALS:
     void selectTextureRequested(int texture);

@@ -14,6 +14,8 @@
 #include "mesh_dock.h"
 #include "orbit_camera.h"
 #include "test_assets.h"
+#include "texture_dock.h"
+#include "texture_table_model.h"
 #include "viewport_window.h"
 #include "window_test_support.h"
 
@@ -222,9 +224,30 @@ void ViewportTests::progressReportsEveryStage() {
     const QList<LoadStep> expected = {LoadStep::Parse, LoadStep::Geometry, LoadStep::Tangents,
                                       LoadStep::Textures, LoadStep::Idle};
     QCOMPARE(steps, expected);
-    const int textures = static_cast<int>(window_->context().scene()->textures.size());
-    QCOMPARE(textures_total, textures);
-    QCOMPARE(last_textures_done, textures); // the per-texture count reaches the end
+    QVERIFY(textures_total > 0);
+    QCOMPARE(last_textures_done, textures_total); // the per-texture count reaches the end
+    if (!hasGpu()) return;
+    // The renderer was there: the loader thread prepared the GPU textures (cache,
+    // BC7/BC5), and the texture dock shows their records.
+    const SceneExtras* extras = window_->context().extras();
+    QVERIFY(extras && extras->textures);
+    QCOMPARE(textures_total, 5); // DamagedHelmet: five images in five roles
+    const TextureTableModel* m = window_->textureDock()->model();
+    const auto cell = [m](int row, int column) { return m->index(row, column).data().toString(); };
+    const QStringList states = {QStringLiteral("hit"), QStringLiteral("miss")};
+    for (int row = 0; row < m->rowCount(); ++row) {
+        QVERIFY2(states.contains(cell(row, TextureTableModel::CacheStateColumn)),
+                 qPrintable(cell(row, TextureTableModel::CacheStateColumn)));
+        QVERIFY(cell(row, TextureTableModel::FormatColumn).startsWith(QStringLiteral("BC")) ||
+                cell(row, TextureTableModel::FormatColumn).startsWith(QStringLiteral("R8G8B8A8")));
+        QCOMPARE(cell(row, TextureTableModel::HashColumn).size(), 16);
+        QVERIFY(cell(row, TextureTableModel::GpuBytesColumn) != QStringLiteral("—"));
+        QCOMPARE(cell(row, TextureTableModel::MipsColumn), QStringLiteral("12")); // 2048² chain
+    }
+    // Loaded again: every texture now comes out of the cache.
+    QVERIFY(load(*window_, test::asset(QStringLiteral("DamagedHelmet"))));
+    for (int row = 0; row < m->rowCount(); ++row)
+        QCOMPARE(cell(row, TextureTableModel::CacheStateColumn), QStringLiteral("hit"));
 }
 
 void ViewportTests::cancelDropsTheLoadAndLeaksNothing() {

@@ -29,6 +29,11 @@ struct TextureSettings {
     int quality = tex::kBc7DefaultLevel; // BC7 level
     // Upload RGBA8 even where the device samples BC (what devices without BC get).
     bool force_rgba8 = false;
+    // Handed to the texture pipeline (tex::PipelineOptions): textures ready of
+    // textures, and a token that stops the preparation (the set comes back
+    // `cancelled` and empty).
+    ProgressCallback progress;
+    const CancelToken* cancel = nullptr;
 };
 
 // Pipeline options for `device`: block-compressed where the device can sample

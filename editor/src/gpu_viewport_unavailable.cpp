@@ -25,7 +25,20 @@ QString GpuViewport::deviceName() const {
     return {};
 }
 void GpuViewport::setTextureCache(const QString&, const QString&) {}
-void GpuViewport::setScene(const Scene*) {}
+TexturePreparer GpuViewport::texturePreparer() const {
+    return {};
+}
+void GpuViewport::setScene(const Scene*, PreparedTextures) {}
+const Scene* GpuViewport::scene() const {
+    return nullptr;
+}
+PreparedTextures GpuViewport::preparedTextures() const {
+    return nullptr;
+}
+bool GpuViewport::checkGpuCulling(const Frustum&, CullMethod, const std::vector<std::uint8_t>&,
+                                  GpuCullCheck&) {
+    return false;
+}
 bool GpuViewport::present(std::uint64_t, const ViewportFrame&) {
     return false;
 }

@@ -627,6 +627,14 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</source>
         <translation>%1 in %2 ms geladen (Engine %3 ms, Vorschaubilder %4 ms, Texturen %5 ms).</translation>
     </message>
+    <message>
+        <source>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</source>
+        <translation>Texturcache geleert: %1 Dateien aus %2 gelöscht; das nächste Laden komprimiert erneut.</translation>
+    </message>
+    <message>
+        <source>Texture %1: %2 cache files deleted; reloading to compress it again.</source>
+        <translation>Textur %1: %2 Cache-Dateien gelöscht; die Szene wird neu geladen und die Textur neu komprimiert.</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -898,8 +906,12 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <translation>%1 Texturen, %2 kodiert auf der Festplatte, %3 auf der GPU, Vorschaubilder in %4 ms dekodiert</translation>
     </message>
     <message>
-        <source>Not available yet: the texture cache cannot drop or recompress single entries (Open cache folder shows its files)</source>
-        <translation>Noch nicht verfügbar: Der Texturcache kann einzelne Einträge weder entfernen noch neu komprimieren („Cache-Ordner öffnen“ zeigt seine Dateien)</translation>
+        <source>Delete the selected texture&apos;s cache files and load the scene again, which compresses it anew with the current quality</source>
+        <translation>Die Cache-Dateien der ausgewählten Textur löschen und die Szene neu laden, wodurch sie mit der aktuellen Qualität neu komprimiert wird</translation>
+    </message>
+    <message>
+        <source>Delete every KTX2 file in the texture cache directory</source>
+        <translation>Alle KTX2-Dateien im Texturcache-Verzeichnis löschen</translation>
     </message>
 </context>
 <context>

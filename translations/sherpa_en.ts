@@ -627,6 +627,14 @@ The current scene is kept.</translation>
         <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</source>
         <translation>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</translation>
     </message>
+    <message>
+        <source>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</source>
+        <translation>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</translation>
+    </message>
+    <message>
+        <source>Texture %1: %2 cache files deleted; reloading to compress it again.</source>
+        <translation>Texture %1: %2 cache files deleted; reloading to compress it again.</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -898,8 +906,12 @@ The current scene is kept.</translation>
         <translation>%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms</translation>
     </message>
     <message>
-        <source>Not available yet: the texture cache cannot drop or recompress single entries (Open cache folder shows its files)</source>
-        <translation>Not available yet: the texture cache cannot drop or recompress single entries (Open cache folder shows its files)</translation>
+        <source>Delete the selected texture&apos;s cache files and load the scene again, which compresses it anew with the current quality</source>
+        <translation>Delete the selected texture&apos;s cache files and load the scene again, which compresses it anew with the current quality</translation>
+    </message>
+    <message>
+        <source>Delete every KTX2 file in the texture cache directory</source>
+        <translation>Delete every KTX2 file in the texture cache directory</translation>
     </message>
 </context>
 <context>

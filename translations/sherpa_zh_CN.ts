@@ -627,6 +627,14 @@ The current scene is kept.</source>
         <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</source>
         <translation>已加载 %1，用时 %2 毫秒（引擎 %3 毫秒，缩略图 %4 毫秒，纹理 %5 毫秒）。</translation>
     </message>
+    <message>
+        <source>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</source>
+        <translation>纹理缓存已清空：已从 %2 删除 %1 个文件；下次加载时将重新压缩。</translation>
+    </message>
+    <message>
+        <source>Texture %1: %2 cache files deleted; reloading to compress it again.</source>
+        <translation>纹理 %1：已删除 %2 个缓存文件；正在重新加载以重新压缩。</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -898,8 +906,12 @@ The current scene is kept.</source>
         <translation>%1 个纹理，磁盘上编码数据 %2，GPU 上 %3，缩略图解码用时 %4 ms</translation>
     </message>
     <message>
-        <source>Not available yet: the texture cache cannot drop or recompress single entries (Open cache folder shows its files)</source>
-        <translation>尚不可用：纹理缓存无法删除或重新压缩单个条目（“打开缓存文件夹”可查看其文件）</translation>
+        <source>Delete the selected texture&apos;s cache files and load the scene again, which compresses it anew with the current quality</source>
+        <translation>删除所选纹理的缓存文件并重新加载场景，以当前质量重新压缩该纹理</translation>
+    </message>
+    <message>
+        <source>Delete every KTX2 file in the texture cache directory</source>
+        <translation>删除纹理缓存目录中的所有 KTX2 文件</translation>
     </message>
 </context>
 <context>

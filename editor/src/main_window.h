@@ -56,6 +56,10 @@ public:
     void reloadScene();
     void closeScene();
     void cancelLoad();
+    // Texture dock actions: delete every KTX2 file of the cache directory; delete one
+    // texture's cache files and reload, so it is compressed again.
+    int clearTextureCache();
+    void recompressTexture(int texture);
     bool setDebugView(const QString& name);
     // Culling › Path: the renderer culls on the GPU (true) or the CPU.
     void setGpuCulling(bool gpu);

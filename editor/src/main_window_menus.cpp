@@ -146,6 +146,8 @@ void MainWindow::createActions() {
                                                               settings_.cacheDirectory());
         if (!dir.isEmpty()) settings_.setCacheDirectory(dir);
     });
+    connect(textures_, &TextureDock::clearCacheRequested, this, &MainWindow::clearTextureCache);
+    connect(textures_, &TextureDock::recompressRequested, this, &MainWindow::recompressTexture);
     connect(textures_, &TextureDock::openCacheFolderRequested, this, [this] {
         QDir().mkpath(settings_.cacheDirectory());
         QDesktopServices::openUrl(QUrl::fromLocalFile(settings_.cacheDirectory()));

@@ -1,13 +1,16 @@
 // The viewport's inspection features end to end under Xvfb: the selection
 // highlight, the GPU culling path with its CPU/GPU agreement, framing for the
 // viewport's aspect, and load progress / cancel.
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QVulkanInstance>
 #include <QtTest>
 
 #include "culling_dock.h"
 #include "culling_monitor.h"
+#include "editor_settings.h"
 #include "gpu_viewport.h"
 #include "log_dock.h"
 #include "main_window.h"
@@ -86,6 +89,7 @@ private Q_SLOTS:
     void narrowViewportFramesTheHelmet();
     void progressReportsEveryStage();
     void cancelDropsTheLoadAndLeaksNothing();
+    void textureCacheActions();
 
 private:
     bool hasGpu() const { return static_cast<bool>(window_->gpuObjectCount); }
@@ -277,6 +281,37 @@ void ViewportTests::cancelDropsTheLoadAndLeaksNothing() {
     if (objects >= 0) QCOMPARE(window_->gpuObjectCount(), objects);
     QVERIFY2(resident_kib() < warm + 32 * 1024, "cancelled loads leave memory behind");
     QVERIFY(load(*window_, QStringLiteral("builtin:grid?n=10"))); // and loading still works
+}
+
+void ViewportTests::textureCacheActions() {
+    if (!hasGpu()) QSKIP("no Vulkan device: no texture upload");
+    QTemporaryDir dir; // a cache of this test alone
+    const QString before = EditorSettings().cacheDirectory();
+    EditorSettings().setCacheDirectory(dir.path());
+    const TextureTableModel* m = window_->textureDock()->model();
+    const auto state = [m](int row) {
+        return m->index(row, TextureTableModel::CacheStateColumn).data().toString();
+    };
+    QVERIFY(load(*window_, QStringLiteral("builtin:default")));
+    QCOMPARE(m->rowCount(), 3);
+    for (int row = 0; row < 3; ++row) QCOMPARE(state(row), QStringLiteral("miss"));
+    QVERIFY(window_->textureDock()->recompressButton()->isEnabled());
+    QVERIFY(window_->textureDock()->clearCacheButton()->isEnabled());
+    QVERIFY(load(*window_, QStringLiteral("builtin:default")));
+    for (int row = 0; row < 3; ++row) QCOMPARE(state(row), QStringLiteral("hit"));
+
+    // Recompress texture 0: its file goes, the reload compresses only it again.
+    QSignalSpy loaded(window_.get(), &MainWindow::sceneLoaded);
+    window_->recompressTexture(0);
+    QVERIFY(loaded.wait(kLoadTimeoutMs));
+    QCOMPARE(state(0), QStringLiteral("miss"));
+    QCOMPARE(state(1), QStringLiteral("hit"));
+    QCOMPARE(state(2), QStringLiteral("hit"));
+
+    // Clear: every KTX2 file of the directory is gone.
+    QCOMPARE(window_->clearTextureCache(), 3);
+    QVERIFY(QDir(dir.path()).entryList({QStringLiteral("*.ktx2")}, QDir::Files).isEmpty());
+    EditorSettings().setCacheDirectory(before);
 }
 
 QTEST_MAIN(ViewportTests)

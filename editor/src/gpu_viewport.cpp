@@ -127,6 +127,14 @@ void GpuViewport::setScene(const Scene* scene, PreparedTextures textures) {
                                              : gpu::StreamPolicy::UsedByMaterials);
 }
 
+QStringList GpuViewport::validationMessages() const {
+    QStringList out;
+    for (const gpu::ValidationMessage& m : impl_->context->validation().messages())
+        out << QStringLiteral("[%1] %2").arg(QString::fromStdString(m.id_name),
+                                             QString::fromStdString(m.text));
+    return out;
+}
+
 PreparedTextures GpuViewport::preparedTextures() const {
     return impl_->scene ? impl_->prepared : nullptr;
 }

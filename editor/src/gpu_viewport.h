@@ -72,6 +72,9 @@ public:
     // Bytes of the loaded scene's textures on the GPU (0 without a scene).
     std::uint64_t textureBytes() const;
     double lastGpuMs() const { return last_gpu_ms_; }
+    // Messages of the Khronos validation layer so far (SHERPA_VALIDATION=1 turns
+    // it on in release builds), one "[id] text" each; tests require none.
+    QStringList validationMessages() const;
     // Runs the renderer's GPU culling shader once for `frustum` over every instance
     // of the scene and compares its visible set with `cpu_visible` (per scene
     // instance). False without a scene.

@@ -46,6 +46,9 @@ void GpuViewport::releaseSurface() {}
 std::optional<GpuMaterialReadback> GpuViewport::readMaterial(int) {
     return std::nullopt;
 }
+QStringList GpuViewport::validationMessages() const {
+    return {};
+}
 std::int64_t GpuViewport::objectCount() const {
     return -1;
 }

@@ -85,7 +85,9 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
-    // The swapchain must go before the window's surface does.
+    // The swapchain must go before the window's surface does; the viewport's signals
+    // would reach this half-destroyed window while QWidget closes it.
+    viewport_->disconnect(this);
     gpu_.reset();
 }
 
@@ -107,8 +109,13 @@ void MainWindow::createRenderer() {
                      .arg(gpu_->deviceName())
                      .arg(static_cast<double>(clock.nsecsElapsed()) / 1e6, 0, 'f', 1));
     viewport_->setFrameCallback([this] { return renderFrame(); });
+    // The swapchain must go before its surface (closing the window destroys it).
+    connect(viewport_, &ViewportWindow::surfaceAboutToBeDestroyed, this, [this] {
+        if (gpu_) gpu_->releaseSurface();
+    });
     material_->setReadback([this](int material) { return gpu_->readMaterial(material); });
     gpuObjectCount = [this] { return gpu_->objectCount(); };
+    gpuValidationMessages = [this] { return gpu_->validationMessages(); };
     culling_->setGpuCheck([this](const Frustum& frustum, CullMethod method,
                                  const std::vector<std::uint8_t>& cpu_visible, CullSample& out) {
         // The monitor hears of a new scene before the renderer has uploaded it.

@@ -81,6 +81,8 @@ public:
     const QString& lastProgressText() const { return last_progress_; }
     // Test hook: the number of GPU objects the renderer holds (-1 without renderer).
     std::function<std::int64_t()> gpuObjectCount;
+    // Test hook: the validation layer's messages so far (empty without renderer).
+    std::function<QStringList()> gpuValidationMessages;
 
 Q_SIGNALS:
     void sceneLoaded(const QString& spec, double ms);

@@ -3,6 +3,7 @@
 #include <QExposeEvent>
 #include <QKeyEvent>
 #include <QMouseEvent>
+#include <QPlatformSurfaceEvent>
 #include <QVulkanInstance>
 #include <QWheelEvent>
 
@@ -44,6 +45,10 @@ bool ViewportWindow::event(QEvent* e) {
         renderNow();
         return true;
     }
+    if (e->type() == QEvent::PlatformSurface &&
+        static_cast<QPlatformSurfaceEvent*>(e)->surfaceEventType() ==
+            QPlatformSurfaceEvent::SurfaceAboutToBeDestroyed)
+        Q_EMIT surfaceAboutToBeDestroyed(); // before Qt destroys the VkSurfaceKHR
     return QWindow::event(e);
 }
 

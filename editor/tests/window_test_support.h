@@ -35,6 +35,16 @@ inline void isolate_settings() {
     QSettings().clear();
 }
 
+// The validation layer's messages since the last call ("" when none); suites set
+// SHERPA_VALIDATION=1 before creating the Vulkan instance and fail on any.
+inline QString fresh_validation_messages(const MainWindow& w, qsizetype& seen) {
+    if (!w.gpuValidationMessages) return {};
+    const QStringList messages = w.gpuValidationMessages();
+    const QStringList fresh = messages.mid(seen);
+    seen = messages.size();
+    return fresh.join(QLatin1Char('\n'));
+}
+
 inline std::uint64_t resident_kib() {
     std::ifstream statm("/proc/self/statm");
     std::uint64_t size = 0, resident = 0;

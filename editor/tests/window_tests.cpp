@@ -37,6 +37,12 @@ class WindowTests : public QObject {
     Q_OBJECT
 private Q_SLOTS:
     void initTestCase();
+    void cleanup() {
+        // Every test here runs under the Khronos validation layer: any message fails it.
+        if (!window_) return;
+        const QString fresh = test::fresh_validation_messages(*window_, seen_validation_);
+        QVERIFY2(fresh.isEmpty(), qPrintable(fresh));
+    }
     void cleanupTestCase() { window_.reset(); }
     void opensEveryAsset();
     void selectionReachesEveryDock();
@@ -50,11 +56,13 @@ private Q_SLOTS:
 private:
     QVulkanInstance vulkan_;
     std::unique_ptr<MainWindow> window_;
+    qsizetype seen_validation_ = 0;
 };
 
 void WindowTests::initTestCase() {
     QStandardPaths::setTestModeEnabled(true); // caches go to a test location
     test::isolate_settings();                 // settings to this process's own
+    qputenv("SHERPA_VALIDATION", "1");        // before the instance: it enables the layer
     GpuViewport::configureInstance(vulkan_);
     vulkan_.create(); // optional: without Vulkan the viewport stays empty
     window_ = std::make_unique<MainWindow>(vulkan_.isValid() ? &vulkan_ : nullptr);

@@ -223,6 +223,13 @@
     </message>
 </context>
 <context>
+    <name>sherpa::editor::CommandLine</name>
+    <message>
+        <source>First frame of the scene %1 ms after launch.</source>
+        <translation>Erstes Bild der Szene %1 ms nach dem Start.</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::CullingDock</name>
     <message>
         <source>Culling Statistics</source>
@@ -285,16 +292,16 @@
         <translation>, Culling-Kamera eingefroren</translation>
     </message>
     <message>
-        <source>CPU/GPU agreement: GPU culling path not available in this build</source>
-        <translation>CPU/GPU-Übereinstimmung: GPU-Culling ist in diesem Build nicht verfügbar</translation>
+        <source>CPU/GPU agreement: GPU path off (Culling › Path › GPU)</source>
+        <translation>CPU/GPU-Übereinstimmung: GPU-Pfad aus (Culling › Pfad › GPU)</translation>
     </message>
     <message>
-        <source>CPU/GPU agreement: ✔ both keep %1</source>
-        <translation>CPU/GPU-Übereinstimmung: ✔ beide behalten %1</translation>
+        <source>CPU/GPU agreement: ✔ both keep %1 of %2</source>
+        <translation>CPU/GPU-Übereinstimmung: ✔ beide behalten %1 von %2</translation>
     </message>
     <message>
-        <source>CPU/GPU agreement: ✘ CPU %1, GPU %2</source>
-        <translation>CPU/GPU-Übereinstimmung: ✘ CPU %1, GPU %2</translation>
+        <source>CPU/GPU agreement: ✘ %1 objects differ (CPU keeps %2, GPU %3)</source>
+        <translation>CPU/GPU-Übereinstimmung: ✘ %1 Objekte weichen ab (CPU behält %2, GPU %3)</translation>
     </message>
 </context>
 <context>
@@ -329,18 +336,6 @@
     <message>
         <source>Loading %1…</source>
         <translation>Lade %1 …</translation>
-    </message>
-    <message>
-        <source>parse, geometry, tangents…</source>
-        <translation>Parsen, Geometrie, Tangenten …</translation>
-    </message>
-    <message>
-        <source>textures %1/%2</source>
-        <translation>Texturen %1/%2</translation>
-    </message>
-    <message>
-        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms).</source>
-        <translation>%1 in %2 ms geladen (Engine %3 ms, Vorschaubilder %4 ms).</translation>
     </message>
     <message>
         <source>Could not load %1; the current scene is kept.</source>
@@ -513,10 +508,6 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <translation>CPU</translation>
     </message>
     <message>
-        <source>GPU (not available in this build)</source>
-        <translation>GPU (in diesem Build nicht verfügbar)</translation>
-    </message>
-    <message>
         <source>&amp;Settings</source>
         <translation>&amp;Einstellungen</translation>
     </message>
@@ -607,6 +598,42 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>Rendering stopped: %1</source>
         <translation>Rendern angehalten: %1</translation>
+    </message>
+    <message>
+        <source>GPU culling failed: %1</source>
+        <translation>GPU-Culling fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>1/4 parsing…</source>
+        <translation>1/4 Einlesen…</translation>
+    </message>
+    <message>
+        <source>2/4 geometry…</source>
+        <translation>2/4 Geometrie…</translation>
+    </message>
+    <message>
+        <source>3/4 tangents: mesh %1 of %2</source>
+        <translation>3/4 Tangenten: Mesh %1 von %2</translation>
+    </message>
+    <message>
+        <source>4/4 textures: %1 of %2</source>
+        <translation>4/4 Texturen: %1 von %2</translation>
+    </message>
+    <message>
+        <source>GPU (compute shader, indirect draws)</source>
+        <translation>GPU (Compute-Shader, indirekte Draws)</translation>
+    </message>
+    <message>
+        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</source>
+        <translation>%1 in %2 ms geladen (Engine %3 ms, Vorschaubilder %4 ms, Texturen %5 ms).</translation>
+    </message>
+    <message>
+        <source>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</source>
+        <translation>Texturcache geleert: %1 Dateien aus %2 gelöscht; das nächste Laden komprimiert erneut.</translation>
+    </message>
+    <message>
+        <source>Texture %1: %2 cache files deleted; reloading to compress it again.</source>
+        <translation>Textur %1: %2 Cache-Dateien gelöscht; die Szene wird neu geladen und die Textur neu komprimiert.</translation>
     </message>
 </context>
 <context>
@@ -871,16 +898,20 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <translation>Cache-Ordner öffnen</translation>
     </message>
     <message>
-        <source>Needs the texture cache, which is not part of this build</source>
-        <translation>Benötigt den Textur-Cache, der in diesem Build fehlt</translation>
-    </message>
-    <message>
         <source>no renderer</source>
         <translation>kein Renderer</translation>
     </message>
     <message>
         <source>%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms</source>
         <translation>%1 Texturen, %2 kodiert auf der Festplatte, %3 auf der GPU, Vorschaubilder in %4 ms dekodiert</translation>
+    </message>
+    <message>
+        <source>Delete the selected texture&apos;s cache files and load the scene again, which compresses it anew with the current quality</source>
+        <translation>Die Cache-Dateien der ausgewählten Textur löschen und die Szene neu laden, wodurch sie mit der aktuellen Qualität neu komprimiert wird</translation>
+    </message>
+    <message>
+        <source>Delete every KTX2 file in the texture cache directory</source>
+        <translation>Alle KTX2-Dateien im Texturcache-Verzeichnis löschen</translation>
     </message>
 </context>
 <context>
@@ -956,6 +987,30 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>PSNR</source>
         <translation>PSNR</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>hit</source>
+        <translation>Treffer</translation>
+    </message>
+    <message>
+        <source>miss</source>
+        <translation>Fehltreffer</translation>
+    </message>
+    <message>
+        <source>stale</source>
+        <translation>veraltet</translation>
+    </message>
+    <message>
+        <source>recompressed</source>
+        <translation>neu komprimiert</translation>
+    </message>
+    <message>
+        <source>fallback</source>
+        <translation>Ersatz (RGBA8)</translation>
     </message>
 </context>
 <context>

@@ -223,6 +223,13 @@
     </message>
 </context>
 <context>
+    <name>sherpa::editor::CommandLine</name>
+    <message>
+        <source>First frame of the scene %1 ms after launch.</source>
+        <translation>First frame of the scene %1 ms after launch.</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::CullingDock</name>
     <message>
         <source>Culling Statistics</source>
@@ -285,16 +292,16 @@
         <translation>, culling camera frozen</translation>
     </message>
     <message>
-        <source>CPU/GPU agreement: GPU culling path not available in this build</source>
-        <translation>CPU/GPU agreement: GPU culling path not available in this build</translation>
+        <source>CPU/GPU agreement: GPU path off (Culling › Path › GPU)</source>
+        <translation>CPU/GPU agreement: GPU path off (Culling › Path › GPU)</translation>
     </message>
     <message>
-        <source>CPU/GPU agreement: ✔ both keep %1</source>
-        <translation>CPU/GPU agreement: ✔ both keep %1</translation>
+        <source>CPU/GPU agreement: ✔ both keep %1 of %2</source>
+        <translation>CPU/GPU agreement: ✔ both keep %1 of %2</translation>
     </message>
     <message>
-        <source>CPU/GPU agreement: ✘ CPU %1, GPU %2</source>
-        <translation>CPU/GPU agreement: ✘ CPU %1, GPU %2</translation>
+        <source>CPU/GPU agreement: ✘ %1 objects differ (CPU keeps %2, GPU %3)</source>
+        <translation>CPU/GPU agreement: ✘ %1 objects differ (CPU keeps %2, GPU %3)</translation>
     </message>
 </context>
 <context>
@@ -329,18 +336,6 @@
     <message>
         <source>Loading %1…</source>
         <translation>Loading %1…</translation>
-    </message>
-    <message>
-        <source>parse, geometry, tangents…</source>
-        <translation>parse, geometry, tangents…</translation>
-    </message>
-    <message>
-        <source>textures %1/%2</source>
-        <translation>textures %1/%2</translation>
-    </message>
-    <message>
-        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms).</source>
-        <translation>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms).</translation>
     </message>
     <message>
         <source>Could not load %1; the current scene is kept.</source>
@@ -513,10 +508,6 @@ The current scene is kept.</translation>
         <translation>CPU</translation>
     </message>
     <message>
-        <source>GPU (not available in this build)</source>
-        <translation>GPU (not available in this build)</translation>
-    </message>
-    <message>
         <source>&amp;Settings</source>
         <translation>&amp;Settings</translation>
     </message>
@@ -607,6 +598,42 @@ The current scene is kept.</translation>
     <message>
         <source>Rendering stopped: %1</source>
         <translation>Rendering stopped: %1</translation>
+    </message>
+    <message>
+        <source>GPU culling failed: %1</source>
+        <translation>GPU culling failed: %1</translation>
+    </message>
+    <message>
+        <source>1/4 parsing…</source>
+        <translation>1/4 parsing…</translation>
+    </message>
+    <message>
+        <source>2/4 geometry…</source>
+        <translation>2/4 geometry…</translation>
+    </message>
+    <message>
+        <source>3/4 tangents: mesh %1 of %2</source>
+        <translation>3/4 tangents: mesh %1 of %2</translation>
+    </message>
+    <message>
+        <source>4/4 textures: %1 of %2</source>
+        <translation>4/4 textures: %1 of %2</translation>
+    </message>
+    <message>
+        <source>GPU (compute shader, indirect draws)</source>
+        <translation>GPU (compute shader, indirect draws)</translation>
+    </message>
+    <message>
+        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</source>
+        <translation>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</translation>
+    </message>
+    <message>
+        <source>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</source>
+        <translation>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</translation>
+    </message>
+    <message>
+        <source>Texture %1: %2 cache files deleted; reloading to compress it again.</source>
+        <translation>Texture %1: %2 cache files deleted; reloading to compress it again.</translation>
     </message>
 </context>
 <context>
@@ -871,16 +898,20 @@ The current scene is kept.</translation>
         <translation>Open cache folder</translation>
     </message>
     <message>
-        <source>Needs the texture cache, which is not part of this build</source>
-        <translation>Needs the texture cache, which is not part of this build</translation>
-    </message>
-    <message>
         <source>no renderer</source>
         <translation>no renderer</translation>
     </message>
     <message>
         <source>%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms</source>
         <translation>%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms</translation>
+    </message>
+    <message>
+        <source>Delete the selected texture&apos;s cache files and load the scene again, which compresses it anew with the current quality</source>
+        <translation>Delete the selected texture&apos;s cache files and load the scene again, which compresses it anew with the current quality</translation>
+    </message>
+    <message>
+        <source>Delete every KTX2 file in the texture cache directory</source>
+        <translation>Delete every KTX2 file in the texture cache directory</translation>
     </message>
 </context>
 <context>
@@ -956,6 +987,30 @@ The current scene is kept.</translation>
     <message>
         <source>PSNR</source>
         <translation>PSNR</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>failed</translation>
+    </message>
+    <message>
+        <source>hit</source>
+        <translation>hit</translation>
+    </message>
+    <message>
+        <source>miss</source>
+        <translation>miss</translation>
+    </message>
+    <message>
+        <source>stale</source>
+        <translation>stale</translation>
+    </message>
+    <message>
+        <source>recompressed</source>
+        <translation>recompressed</translation>
+    </message>
+    <message>
+        <source>fallback</source>
+        <translation>fallback</translation>
     </message>
 </context>
 <context>

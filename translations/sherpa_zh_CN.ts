@@ -223,6 +223,13 @@
     </message>
 </context>
 <context>
+    <name>sherpa::editor::CommandLine</name>
+    <message>
+        <source>First frame of the scene %1 ms after launch.</source>
+        <translation>启动后 %1 毫秒显示场景的第一帧。</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::CullingDock</name>
     <message>
         <source>Culling Statistics</source>
@@ -285,16 +292,16 @@
         <translation>，剔除相机已冻结</translation>
     </message>
     <message>
-        <source>CPU/GPU agreement: GPU culling path not available in this build</source>
-        <translation>CPU/GPU 一致性：此版本不提供 GPU 剔除路径</translation>
+        <source>CPU/GPU agreement: GPU path off (Culling › Path › GPU)</source>
+        <translation>CPU/GPU 一致性：GPU 路径已关闭（剔除 › 路径 › GPU）</translation>
     </message>
     <message>
-        <source>CPU/GPU agreement: ✔ both keep %1</source>
-        <translation>CPU/GPU 一致性：✔ 两者都保留 %1 个</translation>
+        <source>CPU/GPU agreement: ✔ both keep %1 of %2</source>
+        <translation>CPU/GPU 一致性：✔ 两者均保留 %2 个中的 %1 个</translation>
     </message>
     <message>
-        <source>CPU/GPU agreement: ✘ CPU %1, GPU %2</source>
-        <translation>CPU/GPU 一致性：✘ CPU %1，GPU %2</translation>
+        <source>CPU/GPU agreement: ✘ %1 objects differ (CPU keeps %2, GPU %3)</source>
+        <translation>CPU/GPU 一致性：✘ %1 个对象不一致（CPU 保留 %2 个，GPU %3 个）</translation>
     </message>
 </context>
 <context>
@@ -329,18 +336,6 @@
     <message>
         <source>Loading %1…</source>
         <translation>正在加载 %1…</translation>
-    </message>
-    <message>
-        <source>parse, geometry, tangents…</source>
-        <translation>解析、几何、切线…</translation>
-    </message>
-    <message>
-        <source>textures %1/%2</source>
-        <translation>纹理 %1/%2</translation>
-    </message>
-    <message>
-        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms).</source>
-        <translation>已加载 %1，用时 %2 ms（引擎 %3 ms，缩略图 %4 ms）。</translation>
     </message>
     <message>
         <source>Could not load %1; the current scene is kept.</source>
@@ -513,10 +508,6 @@ The current scene is kept.</source>
         <translation>CPU</translation>
     </message>
     <message>
-        <source>GPU (not available in this build)</source>
-        <translation>GPU（此版本不可用）</translation>
-    </message>
-    <message>
         <source>&amp;Settings</source>
         <translation>设置(&amp;S)</translation>
     </message>
@@ -607,6 +598,42 @@ The current scene is kept.</source>
     <message>
         <source>Rendering stopped: %1</source>
         <translation>渲染已停止：%1</translation>
+    </message>
+    <message>
+        <source>GPU culling failed: %1</source>
+        <translation>GPU 剔除失败：%1</translation>
+    </message>
+    <message>
+        <source>1/4 parsing…</source>
+        <translation>1/4 解析…</translation>
+    </message>
+    <message>
+        <source>2/4 geometry…</source>
+        <translation>2/4 几何…</translation>
+    </message>
+    <message>
+        <source>3/4 tangents: mesh %1 of %2</source>
+        <translation>3/4 切线：网格 %1 / %2</translation>
+    </message>
+    <message>
+        <source>4/4 textures: %1 of %2</source>
+        <translation>4/4 纹理：%1 / %2</translation>
+    </message>
+    <message>
+        <source>GPU (compute shader, indirect draws)</source>
+        <translation>GPU（计算着色器，间接绘制）</translation>
+    </message>
+    <message>
+        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</source>
+        <translation>已加载 %1，用时 %2 毫秒（引擎 %3 毫秒，缩略图 %4 毫秒，纹理 %5 毫秒）。</translation>
+    </message>
+    <message>
+        <source>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</source>
+        <translation>纹理缓存已清空：已从 %2 删除 %1 个文件；下次加载时将重新压缩。</translation>
+    </message>
+    <message>
+        <source>Texture %1: %2 cache files deleted; reloading to compress it again.</source>
+        <translation>纹理 %1：已删除 %2 个缓存文件；正在重新加载以重新压缩。</translation>
     </message>
 </context>
 <context>
@@ -871,16 +898,20 @@ The current scene is kept.</source>
         <translation>打开缓存文件夹</translation>
     </message>
     <message>
-        <source>Needs the texture cache, which is not part of this build</source>
-        <translation>需要纹理缓存，但此版本未包含</translation>
-    </message>
-    <message>
         <source>no renderer</source>
         <translation>无渲染器</translation>
     </message>
     <message>
         <source>%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms</source>
         <translation>%1 个纹理，磁盘上编码数据 %2，GPU 上 %3，缩略图解码用时 %4 ms</translation>
+    </message>
+    <message>
+        <source>Delete the selected texture&apos;s cache files and load the scene again, which compresses it anew with the current quality</source>
+        <translation>删除所选纹理的缓存文件并重新加载场景，以当前质量重新压缩该纹理</translation>
+    </message>
+    <message>
+        <source>Delete every KTX2 file in the texture cache directory</source>
+        <translation>删除纹理缓存目录中的所有 KTX2 文件</translation>
     </message>
 </context>
 <context>
@@ -956,6 +987,30 @@ The current scene is kept.</source>
     <message>
         <source>PSNR</source>
         <translation>PSNR</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <source>hit</source>
+        <translation>命中</translation>
+    </message>
+    <message>
+        <source>miss</source>
+        <translation>未命中</translation>
+    </message>
+    <message>
+        <source>stale</source>
+        <translation>过期</translation>
+    </message>
+    <message>
+        <source>recompressed</source>
+        <translation>已重新压缩</translation>
+    </message>
+    <message>
+        <source>fallback</source>
+        <translation>回退（RGBA8）</translation>
     </message>
 </context>
 <context>

@@ -2,15 +2,35 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QImage>
 #include <QTimer>
 #include <cstdio>
 
+#include "culling_dock.h"
+#include "log_dock.h"
 #include "main_window.h"
+#include "material_dock.h"
+#include "mesh_dock.h"
+#include "scene_tree_dock.h"
+#include "texture_dock.h"
 #include "view_catalog.h"
 
 namespace sherpa::editor {
+
+namespace {
+const QStringList kDockNames = {QStringLiteral("scene-tree"), QStringLiteral("mesh"),
+                                QStringLiteral("material"),   QStringLiteral("textures"),
+                                QStringLiteral("culling"),    QStringLiteral("log")};
+
+QDockWidget* dock_named(MainWindow& w, const QString& name) {
+    QDockWidget* docks[] = {w.sceneTreeDock(), w.meshDock(),    w.materialDock(),
+                            w.textureDock(),   w.cullingDock(), w.logDock()};
+    const auto i = kDockNames.indexOf(name);
+    return i >= 0 ? docks[i] : nullptr;
+}
+} // namespace
 
 bool parse_command_line(const QStringList& arguments, CommandLine& out, QString& error) {
     QCommandLineParser p;
@@ -38,7 +58,15 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
     const QCommandLineOption timing(
         QStringLiteral("timing"),
         QStringLiteral("Print launch, load and first-frame times in ms."));
-    p.addOptions({view, shot, quit, language, select, timing});
+    const QCommandLineOption dock(
+        QStringLiteral("dock"),
+        QStringLiteral("Show and raise this dock: scene-tree, mesh, material, textures, culling, "
+                       "log (may be repeated)."),
+        QStringLiteral("name"));
+    const QCommandLineOption gpu_culling(
+        QStringLiteral("gpu-culling"),
+        QStringLiteral("Cull on the GPU (Culling > Path > GPU) with the CPU/GPU agreement check."));
+    p.addOptions({view, shot, quit, language, select, timing, dock, gpu_culling});
     p.process(arguments);
     const QStringList positional = p.positionalArguments();
     if (positional.size() > 1) {
@@ -52,6 +80,14 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
     out.language = p.value(language);
     out.quit = p.isSet(quit);
     out.timing = p.isSet(timing);
+    out.docks = p.values(dock);
+    out.gpu_culling = p.isSet(gpu_culling);
+    for (const QString& d : out.docks)
+        if (!kDockNames.contains(d)) {
+            error = QStringLiteral("unknown dock '%1' (one of: %2)")
+                        .arg(d, kDockNames.join(QStringLiteral(", ")));
+            return false;
+        }
     if (!out.view.isEmpty() && !ViewCatalog::isView(out.view)) {
         QStringList names;
         for (const ViewEntry& v : ViewCatalog::views()) names << QString::fromLatin1(v.name);
@@ -75,6 +111,20 @@ void run_command_line(MainWindow& window, const CommandLine& cl, qint64 started_
     if (!cl.language.isEmpty() && !window.setLanguage(cl.language))
         std::fprintf(stderr, "sherpa: no translation for '%s'\n", qPrintable(cl.language));
     if (!cl.view.isEmpty()) window.setDebugView(cl.view);
+    if (cl.gpu_culling) window.setGpuCulling(true);
+    for (const QString& name : cl.docks)
+        if (QDockWidget* d = dock_named(window, name)) {
+            d->show();
+            d->raise();
+        }
+    // Always in the log dock; on stdout with --timing.
+    QObject::connect(&window, &MainWindow::firstFrame, &window, [&window, since_launch] {
+        window.logDock()->append(
+            LogDock::Level::Info,
+            QCoreApplication::translate("sherpa::editor::CommandLine",
+                                        "First frame of the scene %1 ms after launch.")
+                .arg(since_launch(), 0, 'f', 1));
+    });
     if (cl.timing) {
         QObject::connect(&window, &MainWindow::sceneLoaded, &window,
                          [since_launch](const QString& spec, double ms) {
@@ -83,7 +133,7 @@ void run_command_line(MainWindow& window, const CommandLine& cl, qint64 started_
                              std::fflush(stdout);
                          });
         QObject::connect(&window, &MainWindow::firstFrame, &window, [since_launch] {
-            std::printf("sherpa: first frame %.1f ms after launch\n", since_launch());
+            std::printf("sherpa: first frame of the scene %.1f ms after launch\n", since_launch());
             std::fflush(stdout);
         });
     }

@@ -1,6 +1,6 @@
 #pragma once
 // sherpa [SCENE] [--view NAME] [--select NODE] [--screenshot OUT.png [--quit]] [--language CODE]
-//        [--timing]
+//        [--timing] [--dock NAME ...] [--gpu-culling]
 #include <QString>
 #include <QStringList>
 
@@ -16,6 +16,8 @@ struct CommandLine {
     QString language;
     bool quit = false;
     bool timing = false; // print launch/load/first-frame milliseconds to stdout
+    QStringList docks;   // docks to show and raise (screenshots)
+    bool gpu_culling = false;
 };
 
 // Returns false with `error` set on bad usage (unknown view, --quit without --screenshot...).

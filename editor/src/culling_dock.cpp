@@ -76,6 +76,10 @@ QString CullingDock::valueText(int row) const {
     return row >= 0 && row < RowCount ? values_[row]->text() : QString();
 }
 
+QString CullingDock::agreementText() const {
+    return agreement_->text();
+}
+
 void CullingDock::refresh() {
     const CullSample* s = monitor_.latest();
     if (!s) {
@@ -103,13 +107,16 @@ void CullingDock::refresh() {
                          .arg(QString::fromUtf8(m.data(), static_cast<qsizetype>(m.size())))
                          .arg(QString::fromUtf8(simd.data(), static_cast<qsizetype>(simd.size())))
                          .arg(monitor_.frozen() ? tr(", culling camera frozen") : QString()));
-    if (s->gpu_visible < 0)
-        agreement_->setText(tr("CPU/GPU agreement: GPU culling path not available in this build"));
-    else if (static_cast<std::uint64_t>(s->gpu_visible) == c.visible)
-        agreement_->setText(tr("CPU/GPU agreement: ✔ both keep %1").arg(c.visible));
-    else
+    if (s->gpu_visible < 0 || s->cpu_gpu_differences < 0)
+        agreement_->setText(tr("CPU/GPU agreement: GPU path off (Culling › Path › GPU)"));
+    else if (s->cpu_gpu_differences == 0)
         agreement_->setText(
-            tr("CPU/GPU agreement: ✘ CPU %1, GPU %2").arg(c.visible).arg(s->gpu_visible));
+            tr("CPU/GPU agreement: ✔ both keep %1 of %2").arg(s->gpu_visible).arg(c.tested));
+    else
+        agreement_->setText(tr("CPU/GPU agreement: ✘ %1 objects differ (CPU keeps %2, GPU %3)")
+                                .arg(s->cpu_gpu_differences)
+                                .arg(c.visible)
+                                .arg(s->gpu_visible));
 
     // Rebuild the series from the ring: at most kHistory points, cheap.
     const auto& h = monitor_.history();

@@ -21,6 +21,7 @@ public:
     void retranslate();
     // The numbers as shown, row by row (for the tests).
     QString valueText(int row) const;
+    QString agreementText() const;
     enum Row {
         Total,
         Visible,

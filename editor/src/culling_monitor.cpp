@@ -26,6 +26,11 @@ void CullingMonitor::setFrozen(bool frozen) {
     rerun();
 }
 
+void CullingMonitor::setGpuPath(bool gpu) {
+    gpu_path_ = gpu;
+    rerun();
+}
+
 void CullingMonitor::update(const CameraSpec& camera) {
     camera_ = camera;
     rerun();
@@ -46,6 +51,8 @@ void CullingMonitor::rerun() {
     for (std::uint32_t i : pass.visible_transparent) visible_[i] = 1;
     CullSample sample;
     sample.cpu = std::move(pass.stats);
+    if (gpu_path_ && gpu_check_ && gpu_check_(frustum, options_.method, visible_, sample))
+        sample.cpu.cpu_gpu_differences = sample.cpu_gpu_differences;
     history_.push(std::move(sample));
     Q_EMIT updated();
 }

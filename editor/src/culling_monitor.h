@@ -4,6 +4,7 @@
 // camera as it was, so the user can fly outside and look at what was culled.
 #include <QObject>
 
+#include <functional>
 #include <optional>
 
 #include <sherpa/scene/culling_passes.h>
@@ -14,10 +15,17 @@ namespace sherpa::editor {
 
 struct CullSample {
     CullStats cpu;
-    // The GPU culling path reports here when the renderer offers one; -1: not run.
+    // The GPU culling shader run for the same frustum and method while the GPU path
+    // is on (the dock's agreement indicator); -1: not run.
     double gpu_ms = -1.0;
     std::int64_t gpu_visible = -1;
+    std::int64_t cpu_gpu_differences = -1; // objects the two paths disagree on
 };
+
+// Runs the GPU culling for a frustum and compares it with the CPU's visible set
+// (per scene instance); fills the sample's GPU fields, false when it could not run.
+using GpuCullCheck =
+    std::function<bool(const Frustum&, CullMethod, const std::vector<std::uint8_t>&, CullSample&)>;
 
 class CullingMonitor : public QObject {
     Q_OBJECT
@@ -28,6 +36,11 @@ public:
     void setMethod(CullMethod method);
     CullMethod method() const { return options_.method; }
     void setFrozen(bool frozen);
+    // The renderer culls on the GPU: each update also runs `check` (the renderer's
+    // GPU culling shader) and records how far it agrees with the CPU pass.
+    void setGpuPath(bool gpu);
+    bool gpuPath() const { return gpu_path_; }
+    void setGpuCheck(GpuCullCheck check) { gpu_check_ = std::move(check); }
     bool frozen() const { return frozen_.has_value(); }
     // The camera the culling runs for (the frozen one while frozen).
     const CameraSpec& cullingCamera() const { return frozen_ ? *frozen_ : camera_; }
@@ -54,6 +67,8 @@ private:
     std::optional<CameraSpec> frozen_;
     RingHistory<CullSample> history_{kHistory};
     std::vector<std::uint8_t> visible_;
+    bool gpu_path_ = false;
+    GpuCullCheck gpu_check_;
 };
 
 } // namespace sherpa::editor

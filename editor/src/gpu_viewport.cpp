@@ -2,6 +2,7 @@
 // which would hide the Vulkan prototypes the engine's handle types are built on.
 #include <sherpa/gpu/commands.h>
 #include <sherpa/gpu/context.h>
+#include <sherpa/gpu/gpu_culling.h>
 #include <sherpa/gpu/presenter.h>
 #include <sherpa/gpu/renderer.h>
 
@@ -12,6 +13,20 @@
 
 namespace sherpa::editor {
 
+namespace {
+gpu::CameraSpec to_gpu_camera(const CameraSpec& camera) {
+    gpu::CameraSpec out;
+    out.kind = gpu::CameraSpec::Kind::Explicit;
+    out.eye = camera.eye;
+    out.target = camera.target;
+    out.up = camera.up;
+    out.fov_degrees = camera.fov_y_degrees;
+    out.near_plane = camera.near_plane;
+    out.far_plane = camera.far_plane;
+    return out;
+}
+} // namespace
+
 struct GpuViewport::Impl {
     std::unique_ptr<gpu::Context> context;
     std::unique_ptr<gpu::Renderer> renderer;
@@ -20,12 +35,16 @@ struct GpuViewport::Impl {
     std::uint32_t width = 0, height = 0;
     const Scene* scene = nullptr;
     bool all_streams = false;
+    PreparedTextures prepared;              // of `scene`
+    std::unique_ptr<gpu::GpuCuller> culler; // CPU/GPU agreement checks, built per scene
+    const Scene* culler_scene = nullptr;
 };
 
 GpuViewport::GpuViewport(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 
 GpuViewport::~GpuViewport() {
     if (!impl_) return;
+    impl_->culler.reset();
     impl_->presenter.reset();
     impl_->renderer.reset();
     impl_->context.reset();
@@ -76,13 +95,52 @@ void GpuViewport::setTextureCache(const QString& directory, const QString& quali
     impl_->renderer->set_texture_settings(t);
 }
 
-void GpuViewport::setScene(const Scene* scene) {
+TexturePreparer GpuViewport::texturePreparer() const {
+    return [device = impl_->context->info(), settings = impl_->renderer->texture_settings()](
+               const Scene& scene, const ProgressCallback& progress, const CancelToken* cancel) {
+        gpu::TextureSettings s = settings;
+        s.progress = progress;
+        s.cancel = cancel;
+        PreparedTextures set = gpu::prepare_scene_textures(scene, device, s);
+        return set && !set->cancelled ? set : nullptr;
+    };
+}
+
+void GpuViewport::setScene(const Scene* scene, PreparedTextures textures) {
+    if (scene != impl_->scene) {
+        impl_->culler.reset();
+        impl_->culler_scene = nullptr;
+    }
     impl_->scene = scene;
-    if (scene)
-        impl_->renderer->load(*scene, impl_->all_streams ? gpu::StreamPolicy::AllPresent
-                                                         : gpu::StreamPolicy::UsedByMaterials);
-    else
+    if (!scene) {
+        impl_->prepared.reset();
         impl_->renderer->unload();
+        return;
+    }
+    // Kept (levels included) so that a stream-policy change can upload again.
+    if (!textures)
+        textures = gpu::prepare_scene_textures(*scene, impl_->context->info(),
+                                               impl_->renderer->texture_settings());
+    impl_->prepared = textures;
+    impl_->renderer->load(*scene, std::move(textures),
+                          impl_->all_streams ? gpu::StreamPolicy::AllPresent
+                                             : gpu::StreamPolicy::UsedByMaterials);
+}
+
+QStringList GpuViewport::validationMessages() const {
+    QStringList out;
+    for (const gpu::ValidationMessage& m : impl_->context->validation().messages())
+        out << QStringLiteral("[%1] %2").arg(QString::fromStdString(m.id_name),
+                                             QString::fromStdString(m.text));
+    return out;
+}
+
+PreparedTextures GpuViewport::preparedTextures() const {
+    return impl_->scene ? impl_->prepared : nullptr;
+}
+
+const Scene* GpuViewport::scene() const {
+    return impl_->scene;
 }
 
 void GpuViewport::releaseSurface() {
@@ -98,18 +156,18 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame) {
     if (auto v = gpu::parse_debug_view(frame.view.toStdString())) settings.view = *v;
     for (const QString& o : frame.overlays)
         if (auto bit = gpu::parse_overlay(o.toStdString())) settings.overlays |= *bit;
-    settings.camera.kind = gpu::CameraSpec::Kind::Explicit;
-    settings.camera.eye = frame.camera.eye;
-    settings.camera.target = frame.camera.target;
-    settings.camera.up = frame.camera.up;
-    settings.camera.fov_degrees = frame.camera.fov_y_degrees;
-    settings.camera.near_plane = frame.camera.near_plane;
-    settings.camera.far_plane = frame.camera.far_plane;
+    settings.camera = to_gpu_camera(frame.camera);
+    settings.highlight_instance = frame.highlightInstance;
+    settings.highlight_triangle = frame.highlightTriangle;
+    settings.highlight_vertex = frame.highlightVertex;
+    settings.cull = frame.gpuCulling ? gpu::CullPath::Gpu : gpu::CullPath::Cpu;
+    settings.cull_method = frame.cullMethod;
+    if (frame.frozenCulling) settings.freeze_cull = to_gpu_camera(*frame.frozenCulling);
     // Views of streams the materials do not read need every stream on the GPU.
     const bool all = gpu::needs_all_streams(settings);
     if (all != impl_->all_streams) {
         impl_->all_streams = all;
-        if (impl_->scene) setScene(impl_->scene);
+        if (impl_->scene) setScene(impl_->scene, impl_->prepared);
     }
     if (!impl_->presenter || impl_->surface != surface) {
         impl_->presenter.reset();
@@ -183,6 +241,42 @@ std::uint64_t GpuViewport::textureBytes() const {
 
 const RingHistory<gpu::CullFrame>& GpuViewport::cullHistory() const {
     return impl_->renderer->cull_history();
+}
+
+} // namespace sherpa::editor
+
+#include <sherpa/gpu/gpu_culling.h>
+#include <sherpa/scene/mesh_pass.h>
+
+namespace sherpa::editor {
+
+bool GpuViewport::checkGpuCulling(const Frustum& frustum, CullMethod method,
+                                  const std::vector<std::uint8_t>& cpu_visible, GpuCullCheck& out) {
+    const Scene* scene = impl_->scene;
+    if (!scene || scene->instances.empty()) return false;
+    if (!impl_->culler || impl_->culler_scene != scene) {
+        // The camera pass over every instance, as `sherpa-cli cull --method gpu` builds it.
+        MeshPass pass(MeshPassKind::Forward);
+        for (std::uint32_t i = 0; i < scene->instances.size(); ++i)
+            pass.add(i, scene->instances[i].mesh_id, instance_pipeline_key(*scene, i));
+        pass.update();
+        impl_->culler.reset();
+        impl_->culler =
+            std::make_unique<gpu::GpuCuller>(*impl_->context, impl_->renderer->resources());
+        impl_->culler->build(pass, *scene);
+        impl_->culler_scene = scene;
+    }
+    const gpu::GpuCullReadback r = impl_->culler->run(frustum, method);
+    out = {};
+    out.gpu_ms = r.gpu_ms;
+    const std::vector<std::uint32_t>& instances = impl_->culler->object_instances();
+    for (std::size_t k = 0; k < r.visible.size() && k < instances.size(); ++k) {
+        const bool gpu = r.visible[k] != 0;
+        const bool cpu = instances[k] < cpu_visible.size() && cpu_visible[instances[k]] != 0;
+        out.visible += gpu ? 1 : 0;
+        out.differences += gpu != cpu ? 1 : 0;
+    }
+    return true;
 }
 
 } // namespace sherpa::editor

@@ -9,12 +9,15 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include <sherpa/scene/camera_spec.h>
 #include <sherpa/scene/culling_passes.h>
+#include <sherpa/scene/culling.h>
 #include <sherpa/scene/scene.h>
 
 #include "material_dock.h"
+#include "scene_extras.h"
 
 class QVulkanInstance;
 
@@ -30,6 +33,11 @@ struct ViewportFrame {
     CameraSpec camera;
     QString view = QStringLiteral("lit");
     QStringList overlays;
+    // Selection highlight: a scene instance, and a triangle / vertex of its mesh.
+    std::optional<std::uint32_t> highlightInstance, highlightTriangle, highlightVertex;
+    bool gpuCulling = false; // the renderer's GPU-driven culling path
+    CullMethod cullMethod = CullMethod::PVertex;
+    std::optional<CameraSpec> frozenCulling; // cull from this camera instead
 };
 
 class GpuViewport {
@@ -45,9 +53,18 @@ public:
     // Where setScene() finds and stores compressed textures, and the BC7 quality
     // ("fast", "balanced" or "best", as in the settings); an empty directory: no cache.
     void setTextureCache(const QString& directory, const QString& quality);
-    // Uploads the scene (replacing the previous one; null unloads). Prepares its
-    // textures (texture cache, BC7/BC5) on this thread first.
-    void setScene(const Scene* scene);
+    // Prepares a scene's textures for this device with the texture cache settings
+    // of the moment; the callable copies what it needs and may run on any thread
+    // (the scene loader's), reporting per texture and stopping when cancelled.
+    TexturePreparer texturePreparer() const;
+    // Uploads the scene (replacing the previous one; null unloads) with textures
+    // prepared for it, or, without them, prepares them on this thread first.
+    void setScene(const Scene* scene, PreparedTextures textures = nullptr);
+    // The uploaded scene's prepared textures: cache state, hash, format, bytes,
+    // timings and PSNR per texture (null without a scene).
+    PreparedTextures preparedTextures() const;
+    // The scene last uploaded (compare only: it may be gone once replaced).
+    const Scene* scene() const;
     // Presents one frame on `surface` (the swapchain is created on first use and
     // recreated when the size changes). False when the frame was skipped.
     bool present(std::uint64_t surface, const ViewportFrame& frame);
@@ -63,6 +80,19 @@ public:
     // The renderer's per-pass culling statistics of the last presented frames
     // (camera and each shadow cascade), oldest first.
     const RingHistory<gpu::CullFrame>& cullHistory() const;
+    // Messages of the Khronos validation layer so far (SHERPA_VALIDATION=1 turns
+    // it on in release builds), one "[id] text" each; tests require none.
+    QStringList validationMessages() const;
+    // Runs the renderer's GPU culling shader once for `frustum` over every instance
+    // of the scene and compares its visible set with `cpu_visible` (per scene
+    // instance). False without a scene.
+    struct GpuCullCheck {
+        double gpu_ms = -1.0;          // timestamped dispatch
+        std::uint64_t visible = 0;     // objects the GPU keeps
+        std::uint64_t differences = 0; // objects on which GPU and CPU disagree
+    };
+    bool checkGpuCulling(const Frustum& frustum, CullMethod method,
+                         const std::vector<std::uint8_t>& cpu_visible, GpuCullCheck& out);
 
 private:
     struct Impl;

@@ -25,13 +25,29 @@ QString GpuViewport::deviceName() const {
     return {};
 }
 void GpuViewport::setTextureCache(const QString&, const QString&) {}
-void GpuViewport::setScene(const Scene*) {}
+TexturePreparer GpuViewport::texturePreparer() const {
+    return {};
+}
+void GpuViewport::setScene(const Scene*, PreparedTextures) {}
+const Scene* GpuViewport::scene() const {
+    return nullptr;
+}
+PreparedTextures GpuViewport::preparedTextures() const {
+    return nullptr;
+}
+bool GpuViewport::checkGpuCulling(const Frustum&, CullMethod, const std::vector<std::uint8_t>&,
+                                  GpuCullCheck&) {
+    return false;
+}
 bool GpuViewport::present(std::uint64_t, const ViewportFrame&) {
     return false;
 }
 void GpuViewport::releaseSurface() {}
 std::optional<GpuMaterialReadback> GpuViewport::readMaterial(int) {
     return std::nullopt;
+}
+QStringList GpuViewport::validationMessages() const {
+    return {};
 }
 std::int64_t GpuViewport::objectCount() const {
     return -1;

@@ -85,7 +85,9 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
-    // The swapchain must go before the window's surface does.
+    // The swapchain must go before the window's surface does; the viewport's signals
+    // would reach this half-destroyed window while QWidget closes it.
+    viewport_->disconnect(this);
     gpu_.reset();
 }
 
@@ -107,8 +109,30 @@ void MainWindow::createRenderer() {
                      .arg(gpu_->deviceName())
                      .arg(static_cast<double>(clock.nsecsElapsed()) / 1e6, 0, 'f', 1));
     viewport_->setFrameCallback([this] { return renderFrame(); });
+    // The swapchain must go before its surface (closing the window destroys it).
+    connect(viewport_, &ViewportWindow::surfaceAboutToBeDestroyed, this, [this] {
+        if (gpu_) gpu_->releaseSurface();
+    });
     material_->setReadback([this](int material) { return gpu_->readMaterial(material); });
     gpuObjectCount = [this] { return gpu_->objectCount(); };
+    gpuValidationMessages = [this] { return gpu_->validationMessages(); };
+    culling_->setGpuCheck([this](const Frustum& frustum, CullMethod method,
+                                 const std::vector<std::uint8_t>& cpu_visible, CullSample& out) {
+        // The monitor hears of a new scene before the renderer has uploaded it.
+        if (gpu_->scene() != context_.scene()) return false;
+        GpuViewport::GpuCullCheck check;
+        try {
+            if (!gpu_->checkGpuCulling(frustum, method, cpu_visible, check)) return false;
+        } catch (const std::exception& e) {
+            log_->append(LogDock::Level::Error,
+                         tr("GPU culling failed: %1").arg(QString::fromUtf8(e.what())));
+            return false;
+        }
+        out.gpu_ms = check.gpu_ms;
+        out.gpu_visible = static_cast<std::int64_t>(check.visible);
+        out.cpu_gpu_differences = static_cast<std::int64_t>(check.differences);
+        return true;
+    });
     connect(&context_, &EditorContext::sceneChanged, this, &MainWindow::uploadScene);
     if (context_.scene()) uploadScene(); // a scene that arrived before the renderer
     Q_EMIT rendererReady();
@@ -117,7 +141,9 @@ void MainWindow::createRenderer() {
 void MainWindow::uploadScene() {
     try {
         gpu_->setTextureCache(settings_.cacheDirectory(), settings_.textureQuality());
-        gpu_->setScene(context_.scene());
+        const SceneExtras* extras = context_.extras();
+        gpu_->setScene(context_.scene(), extras ? extras->textures : nullptr);
+        textures_->setPrepared(gpu_->preparedTextures());
         textures_->setGpuBytes(static_cast<std::int64_t>(gpu_->textureBytes()));
     } catch (const std::exception& e) {
         log_->append(LogDock::Level::Error,
@@ -135,6 +161,17 @@ bool MainWindow::renderFrame() {
     frame.camera = viewport_->camera().spec();
     frame.view = view_;
     frame.overlays = overlays_;
+    if (a_->box_colouring->isChecked()) frame.overlays << QStringLiteral("cull-boxes");
+    frame.gpuCulling = a_->gpu_path->isChecked();
+    frame.cullMethod = culling_->method();
+    if (culling_->frozen()) frame.frozenCulling = culling_->cullingCamera();
+    const Selection& sel = context_.selection();
+    if (const int instance = selectedInstance(); instance >= 0) {
+        frame.highlightInstance = static_cast<std::uint32_t>(instance);
+        if (sel.triangle >= 0) frame.highlightTriangle = static_cast<std::uint32_t>(sel.triangle);
+        if (sel.vertex >= 0) frame.highlightVertex = static_cast<std::uint32_t>(sel.vertex);
+    }
+    last_frame_ = frame;
     try {
         const bool shown = gpu_->present(viewport_->vulkanSurface(), frame);
         // Skipped because the swapchain was out of date and has just been recreated:
@@ -195,7 +232,7 @@ void MainWindow::connectActions() {
     connect(&loader_, &SceneLoadJob::canceled, this, [this](const QString& spec) {
         log_->append(LogDock::Level::Info,
                      tr("Loading %1 cancelled; the result is discarded.").arg(spec));
-        onProgress(LoadStage::Idle, 0, 0);
+        onProgress(LoadStep::Idle, 0, 0);
         Q_EMIT loadCanceled(spec);
     });
     connect(cancel_, &QPushButton::clicked, this, &MainWindow::cancelLoad);
@@ -209,7 +246,7 @@ void MainWindow::connectActions() {
     connect(viewport_, &ViewportWindow::frameSelectionRequested, this, &MainWindow::frameSelection);
     connect(viewport_, &ViewportWindow::frameRendered, this, [this](double ms) {
         frame_label_->setText(tr("frame %1 ms").arg(ms, 0, 'f', 2));
-        if (!first_frame_seen_) {
+        if (!first_frame_seen_ && context_.scene()) { // a frame that shows the scene
             first_frame_seen_ = true;
             Q_EMIT firstFrame();
         }
@@ -221,6 +258,10 @@ void MainWindow::connectActions() {
 
 void MainWindow::openScene(const QString& spec) {
     log_->append(LogDock::Level::Info, tr("Loading %1…").arg(spec));
+    if (gpu_) { // textures are prepared on the loader thread, for this device and settings
+        gpu_->setTextureCache(settings_.cacheDirectory(), settings_.textureQuality());
+        loader_.setTexturePreparer(gpu_->texturePreparer());
+    }
     loader_.start(spec);
 }
 
@@ -239,18 +280,30 @@ void MainWindow::cancelLoad() {
     loader_.cancel();
 }
 
-void MainWindow::onProgress(LoadStage stage, int done, int total) {
-    const bool busy = stage != LoadStage::Idle;
+void MainWindow::onProgress(LoadStep step, int done, int total) {
+    const bool busy = step != LoadStep::Idle;
     progress_->setVisible(busy);
     cancel_->setVisible(busy);
-    if (stage == LoadStage::Loading) {
-        progress_->setRange(0, 0); // the engine reports no fraction for parse/geometry/tangents
-        progress_->setFormat(tr("parse, geometry, tangents…"));
-    } else if (stage == LoadStage::Textures) {
-        progress_->setRange(0, std::max(total, 1));
-        progress_->setValue(done);
-        progress_->setFormat(tr("textures %1/%2").arg(done).arg(total));
+    if (!busy) return;
+    progress_->setRange(0, std::max(total, 1));
+    progress_->setValue(std::min(done, std::max(total, 1)));
+    switch (step) {
+    case LoadStep::Parse:
+        progress_->setFormat(tr("1/4 parsing…"));
+        break;
+    case LoadStep::Geometry:
+        progress_->setFormat(tr("2/4 geometry…"));
+        break;
+    case LoadStep::Tangents:
+        progress_->setFormat(tr("3/4 tangents: mesh %1 of %2").arg(done).arg(total));
+        break;
+    case LoadStep::Textures:
+        progress_->setFormat(tr("4/4 textures: %1 of %2").arg(done).arg(total));
+        break;
+    case LoadStep::Idle:
+        break;
     }
+    last_progress_ = progress_->text();
 }
 
 void MainWindow::onLoaded(const QString& spec, const LoadOutcome& outcome, double ms) {
@@ -259,11 +312,13 @@ void MainWindow::onLoaded(const QString& spec, const LoadOutcome& outcome, doubl
     settings_.addRecentFile(spec);
     for (const std::string& w : outcome.scene->warnings)
         log_->append(LogDock::Level::Warning, QString::fromStdString(w));
-    log_->append(LogDock::Level::Info, tr("Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms).")
-                                           .arg(spec)
-                                           .arg(ms, 0, 'f', 1)
-                                           .arg(outcome.extras->load_ms, 0, 'f', 1)
-                                           .arg(outcome.extras->thumbnails_ms, 0, 'f', 1));
+    log_->append(LogDock::Level::Info,
+                 tr("Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).")
+                     .arg(spec)
+                     .arg(ms, 0, 'f', 1)
+                     .arg(outcome.extras->load_ms, 0, 'f', 1)
+                     .arg(outcome.extras->thumbnails_ms, 0, 'f', 1)
+                     .arg(outcome.extras->textures_ms, 0, 'f', 1));
     viewport_->camera().frame(outcome.scene->bounds);
     viewport_->setAutoFrame(true);
     onCameraChanged();
@@ -304,6 +359,20 @@ int MainWindow::pickAt(QPointF ndc) {
     context_.selectMesh(static_cast<int>(inst.mesh_id), static_cast<int>(inst.node_id));
     context_.selectTriangle(static_cast<int>(hit.triangle));
     return static_cast<int>(hit.instance);
+}
+
+int MainWindow::selectedInstance() const {
+    const Scene* scene = context_.scene();
+    const Selection& sel = context_.selection();
+    if (!scene || sel.mesh < 0) return -1;
+    // The selected primitive as placed by the selected node (any node when none is).
+    for (std::size_t i = 0; i < scene->instances.size(); ++i) {
+        const MeshInstance& inst = scene->instances[i];
+        if (static_cast<int>(inst.mesh_id) == sel.mesh &&
+            (sel.node < 0 || static_cast<int>(inst.node_id) == sel.node))
+            return static_cast<int>(i);
+    }
+    return -1;
 }
 
 bool MainWindow::selectNodeNamed(const QString& name_or_index) {

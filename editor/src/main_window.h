@@ -9,6 +9,7 @@
 
 #include "editor_context.h"
 #include "editor_settings.h"
+#include "gpu_viewport.h"
 #include "scene_load_job.h"
 #include "translations.h"
 
@@ -55,7 +56,13 @@ public:
     void reloadScene();
     void closeScene();
     void cancelLoad();
+    // Texture dock actions: delete every KTX2 file of the cache directory; delete one
+    // texture's cache files and reload, so it is compressed again.
+    int clearTextureCache();
+    void recompressTexture(int texture);
     bool setDebugView(const QString& name);
+    // Culling › Path: the renderer culls on the GPU (true) or the CPU.
+    void setGpuCulling(bool gpu);
     const QString& debugView() const { return view_; }
     bool setLanguage(const QString& code);
     const QString& language() const { return translations_.current(); }
@@ -65,14 +72,23 @@ public:
     bool selectNodeNamed(const QString& name_or_index);
     // Selects whatever is under a viewport point (NDC); returns the instance or -1.
     int pickAt(QPointF ndc);
+    // The scene instance the viewport highlights (selected primitive placed by the
+    // selected node), or -1.
+    int selectedInstance() const;
+    // The settings of the last frame handed to the renderer (tests).
+    const ViewportFrame& lastFrame() const { return last_frame_; }
+    // The progress bar's text as last shown during a load (tests).
+    const QString& lastProgressText() const { return last_progress_; }
     // Test hook: the number of GPU objects the renderer holds (-1 without renderer).
     std::function<std::int64_t()> gpuObjectCount;
+    // Test hook: the validation layer's messages so far (empty without renderer).
+    std::function<QStringList()> gpuValidationMessages;
 
 Q_SIGNALS:
     void sceneLoaded(const QString& spec, double ms);
     void loadFailed(const QString& spec, const QString& error);
     void loadCanceled(const QString& spec);
-    void firstFrame();
+    void firstFrame();    // the first frame drawn with a scene loaded
     void rendererReady(); // the GPU viewport exists (shortly after construction)
 
 protected:
@@ -97,7 +113,7 @@ private:
     void connectActions();
     void onLoaded(const QString& spec, const LoadOutcome& outcome, double ms);
     void onLoadFailed(const QString& spec, const QString& error);
-    void onProgress(LoadStage stage, int done, int total);
+    void onProgress(LoadStep step, int done, int total);
     void onCameraChanged();
     void frameSelection();
     void jumpToCamera(int node);
@@ -126,6 +142,8 @@ private:
     QString view_ = QStringLiteral("lit");
     QStringList overlays_;
     bool first_frame_seen_ = false;
+    ViewportFrame last_frame_;
+    QString last_progress_;
 
     struct Actions; // every QAction, built in main_window_menus.cpp
     std::unique_ptr<Actions> a_;

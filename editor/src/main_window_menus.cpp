@@ -64,7 +64,6 @@ void MainWindow::createActions() {
     a.cpu_path->setChecked(true);
     a.gpu_path = new QAction(this);
     a.gpu_path->setCheckable(true);
-    a.gpu_path->setEnabled(false); // the renderer's GPU culling path is not in this build
     auto* path_group = new QActionGroup(this);
     path_group->addAction(a.cpu_path);
     path_group->addAction(a.gpu_path);
@@ -134,6 +133,8 @@ void MainWindow::createActions() {
     connect(a.fly, &QAction::toggled, viewport_, &ViewportWindow::setFlyMode);
     connect(a.freeze, &QAction::toggled, culling_, &CullingMonitor::setFrozen);
     connect(a.box_colouring, &QAction::toggled, viewport_, &ViewportWindow::scheduleFrame);
+    connect(a.gpu_path, &QAction::toggled, culling_, &CullingMonitor::setGpuPath);
+    connect(culling_, &CullingMonitor::updated, viewport_, &ViewportWindow::scheduleFrame);
     connect(a.reset_layout, &QAction::triggered, this, [this] {
         for (QDockWidget* d : findChildren<QDockWidget*>()) {
             d->setFloating(false);
@@ -145,6 +146,8 @@ void MainWindow::createActions() {
                                                               settings_.cacheDirectory());
         if (!dir.isEmpty()) settings_.setCacheDirectory(dir);
     });
+    connect(textures_, &TextureDock::clearCacheRequested, this, &MainWindow::clearTextureCache);
+    connect(textures_, &TextureDock::recompressRequested, this, &MainWindow::recompressTexture);
     connect(textures_, &TextureDock::openCacheFolderRequested, this, [this] {
         QDir().mkpath(settings_.cacheDirectory());
         QDesktopServices::openUrl(QUrl::fromLocalFile(settings_.cacheDirectory()));
@@ -283,7 +286,7 @@ void MainWindow::retranslate() {
         a.method_actions[i]->setText(methods[i]);
     a.cull_path->setTitle(tr("&Path"));
     a.cpu_path->setText(tr("CPU"));
-    a.gpu_path->setText(tr("GPU (not available in this build)"));
+    a.gpu_path->setText(tr("GPU (compute shader, indirect draws)"));
     a.settings->setTitle(tr("&Settings"));
     a.language->setTitle(tr("&Language"));
     for (QAction* act : a.language_actions)
@@ -312,6 +315,10 @@ void MainWindow::retranslate() {
         Q_EMIT m->layoutChanged();
     }
     updateStatus();
+}
+
+void MainWindow::setGpuCulling(bool gpu) {
+    (gpu ? a_->gpu_path : a_->cpu_path)->setChecked(true);
 }
 
 void MainWindow::rebuildRecentMenu() {

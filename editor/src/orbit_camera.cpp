@@ -56,10 +56,28 @@ void OrbitCamera::fly(glm::vec3 ruf) {
 void OrbitCamera::frame(const Aabb& box) {
     if (!box.valid()) return;
     target_ = box.center();
+    // Keep the viewing direction; back off until all 8 corners project inside both
+    // the vertical and the horizontal field of view of the current aspect, with a
+    // 5% border. A corner at (x, y) across the view and z along it (from the
+    // target) needs |x| <= (d + z) tan(half_fov_x), the same for y.
+    const glm::vec3 f = forward();
+    const glm::vec3 right = glm::normalize(glm::cross(f, glm::vec3(0, 1, 0)));
+    const glm::vec3 up = glm::cross(right, f);
+    const float tan_y = std::tan(glm::radians(fov_degrees_) * 0.5f) * 0.95f;
+    const float tan_x = tan_y * aspect_;
     const float radius = std::max(glm::length(box.extent()) * 0.5f, 1e-3f);
-    const float half_fov = glm::radians(fov_degrees_) * 0.5f;
-    const float half_fov_x = std::atan(std::tan(half_fov) * aspect_);
-    distance_ = radius / std::sin(std::min(half_fov, half_fov_x));
+    float d = 0.0f, nearest = 0.0f;
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 c((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                          (i & 4) ? box.max.z : box.min.z);
+        const glm::vec3 p = c - target_;
+        const float x = std::abs(glm::dot(p, right)), y = std::abs(glm::dot(p, up));
+        const float z = glm::dot(p, f);
+        d = std::max({d, x / tan_x - z, y / tan_y - z});
+        nearest = std::max(nearest, -z);
+    }
+    // Never inside the box: the nearest corner stays in front of the near plane.
+    distance_ = std::max(d, nearest + 0.01f * radius);
     near_ = std::max(distance_ * 1e-3f, 1e-4f);
 }
 

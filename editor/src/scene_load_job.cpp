@@ -1,10 +1,13 @@
 #include "scene_load_job.h"
 
 #include <QBuffer>
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QImageReader>
+#include <QPointer>
 #include <QtConcurrent/QtConcurrentMap>
 #include <QtConcurrent/QtConcurrentRun>
+#include <functional>
 #include <numeric>
 
 #include <sherpa/scene/scene_loader.h>
@@ -12,11 +15,27 @@
 namespace sherpa::editor {
 
 struct SceneLoadJob::State {
-    std::atomic<bool> cancel{false};
-    std::atomic<int> stage{static_cast<int>(LoadStage::Loading)};
-    std::atomic<int> done{0}, total{0};
+    CancelToken cancel;
     QElapsedTimer clock;
+    // Where the worker is; report() posts a progress signal when it changes enough.
+    std::atomic<int> step{static_cast<int>(LoadStep::Parse)}, done{0}, total{0};
+    std::function<void(LoadStep, int, int)> post; // null for synchronous loads
+
+    void report(LoadStep s, std::size_t d, std::size_t t) {
+        const int di = static_cast<int>(d), ti = static_cast<int>(t);
+        const int old_step = step.exchange(static_cast<int>(s));
+        const int old_done = done.exchange(di);
+        total = ti;
+        // Stage changes and ends always; counts in steps of about 1%.
+        const bool changed = old_step != static_cast<int>(s) || di == ti || di == 0 ||
+                             (ti > 0 && di * 100 / ti != old_done * 100 / ti);
+        if (post && changed) post(s, di, ti);
+    }
 };
+
+namespace {
+std::atomic<int> g_in_flight{0};
+} // namespace
 
 namespace {
 
@@ -49,21 +68,23 @@ QImage decode_thumbnail(const Scene& scene, const TextureRecord& texture, QSize&
     return thumb;
 }
 
-LoadOutcome run_load(const QString& spec, SceneLoadJob::State* state);
+LoadOutcome run_load(const QString& spec, const TexturePreparer& preparer,
+                     SceneLoadJob::State* state);
 
 } // namespace
 
-SceneLoadJob::SceneLoadJob(QObject* parent) : QObject(parent) {
-    poll_.setInterval(50);
-    connect(&poll_, &QTimer::timeout, this, &SceneLoadJob::pollProgress);
-}
+SceneLoadJob::SceneLoadJob(QObject* parent) : QObject(parent) {}
 
 SceneLoadJob::~SceneLoadJob() {
     if (watcher_) {
-        if (state_) state_->cancel = true;
+        if (state_) state_->cancel.cancel();
         watcher_->disconnect(this);
         watcher_->waitForFinished();
     }
+}
+
+int SceneLoadJob::workersInFlight() {
+    return g_in_flight.load();
 }
 
 void SceneLoadJob::start(const QString& spec) {
@@ -76,66 +97,84 @@ void SceneLoadJob::start(const QString& spec) {
     watcher_ = new QFutureWatcher<LoadOutcome>(this);
     connect(watcher_, &QFutureWatcher<LoadOutcome>::finished, this, &SceneLoadJob::onFinished);
     std::shared_ptr<State> state = state_;
-    watcher_->setFuture(QtConcurrent::run([spec, state] { return run_load(spec, state.get()); }));
-    poll_.start();
-    Q_EMIT progress(LoadStage::Loading, 0, 0);
+    // Reports travel as queued calls; those of a load cancelled meanwhile are dropped.
+    QPointer<SceneLoadJob> self(this);
+    State* raw = state.get();
+    state->post = [self, raw](LoadStep step, int done, int total) {
+        // Posted to the application (always alive), checked there: the job may be gone.
+        QMetaObject::invokeMethod(qApp, [self, raw, step, done, total] {
+            if (self && self->state_.get() == raw) Q_EMIT self->progress(step, done, total);
+        });
+    };
+    ++g_in_flight;
+    watcher_->setFuture(QtConcurrent::run([spec, state, preparer = preparer_] {
+        LoadOutcome out = run_load(spec, preparer, state.get());
+        --g_in_flight;
+        return out;
+    }));
+    Q_EMIT progress(LoadStep::Parse, 0, 1);
 }
 
 void SceneLoadJob::cancel() {
     if (!state_) return;
-    state_->cancel = true;
+    state_->cancel.cancel();
     QFutureWatcher<LoadOutcome>* old = watcher_;
     old->disconnect(this);
     connect(old, &QFutureWatcher<LoadOutcome>::finished, old, &QObject::deleteLater);
     if (old->isFinished()) old->deleteLater();
     watcher_ = nullptr;
     state_.reset();
-    poll_.stop();
+    Q_EMIT progress(LoadStep::Idle, 0, 0);
     Q_EMIT canceled(spec_);
 }
 
-void SceneLoadJob::pollProgress() {
-    if (!state_) return;
-    Q_EMIT progress(static_cast<LoadStage>(state_->stage.load()), state_->done.load(),
-                    state_->total.load());
-}
-
 void SceneLoadJob::onFinished() {
-    poll_.stop();
     const LoadOutcome outcome = watcher_->result();
     const double ms = static_cast<double>(state_->clock.nsecsElapsed()) / 1e6;
     watcher_->deleteLater();
     watcher_ = nullptr;
     state_.reset();
-    Q_EMIT progress(LoadStage::Idle, 0, 0);
-    if (outcome.scene)
+    Q_EMIT progress(LoadStep::Idle, 0, 0);
+    if (outcome.cancelled)
+        Q_EMIT canceled(spec_);
+    else if (outcome.scene)
         Q_EMIT loaded(spec_, outcome, ms);
     else
         Q_EMIT failed(spec_, outcome.error);
 }
 
-LoadOutcome SceneLoadJob::loadNow(const QString& spec) {
+LoadOutcome SceneLoadJob::loadNow(const QString& spec, const TexturePreparer& preparer) {
     State state;
     state.clock.start();
-    return run_load(spec, &state);
+    return run_load(spec, preparer, &state);
 }
 
 namespace {
 
-LoadOutcome run_load(const QString& spec, SceneLoadJob::State* state) {
+LoadOutcome run_load(const QString& spec, const TexturePreparer& preparer,
+                     SceneLoadJob::State* state) {
     LoadOutcome out;
     QElapsedTimer clock;
     clock.start();
-    LoadResult result = load_scene(spec.toStdString());
+    LoadOptions options;
+    options.cancel = &state->cancel;
+    options.progress = [state](sherpa::LoadStage stage, std::size_t done, std::size_t total) {
+        const LoadStep step = stage == sherpa::LoadStage::Parse      ? LoadStep::Parse
+                              : stage == sherpa::LoadStage::Geometry ? LoadStep::Geometry
+                                                                     : LoadStep::Tangents;
+        state->report(step, done, total);
+    };
+    LoadResult result = load_scene(spec.toStdString(), options);
     if (!result) {
+        out.cancelled = result.cancelled;
         out.error = QString::fromStdString(result.error);
         return out;
     }
     auto extras = std::make_shared<SceneExtras>();
     extras->load_ms = static_cast<double>(clock.nsecsElapsed()) / 1e6;
     const Scene& scene = *result.scene;
-    state->stage = static_cast<int>(LoadStage::Textures);
-    state->total = static_cast<int>(scene.textures.size());
+    state->report(LoadStep::Textures, 0, scene.textures.size());
+    std::atomic<std::size_t> textures_done{0};
     clock.restart();
     extras->thumbnails.resize(scene.textures.size());
     std::vector<QSize> sizes(scene.textures.size());
@@ -143,11 +182,16 @@ LoadOutcome run_load(const QString& spec, SceneLoadJob::State* state) {
     std::vector<int> order(scene.textures.size());
     std::iota(order.begin(), order.end(), 0);
     QtConcurrent::blockingMap(order, [&](int i) {
-        if (state->cancel) return;
+        if (state->cancel.cancelled()) return;
         const auto t = static_cast<std::size_t>(i);
         extras->thumbnails[t] = decode_thumbnail(scene, scene.textures[t], sizes[t]);
-        ++state->done;
+        state->report(LoadStep::Textures, ++textures_done, scene.textures.size());
     });
+    if (state->cancel.cancelled()) {
+        out.cancelled = true; // the scene and thumbnails are dropped here
+        out.error = QStringLiteral("cancelled");
+        return out;
+    }
     extras->image_sizes.resize(scene.images.size());
     for (std::size_t t = 0; t < scene.textures.size(); ++t) {
         const std::int32_t image = scene.textures[t].image;
@@ -155,6 +199,23 @@ LoadOutcome run_load(const QString& spec, SceneLoadJob::State* state) {
             extras->image_sizes[static_cast<std::size_t>(image)] = sizes[t];
     }
     extras->thumbnails_ms = static_cast<double>(clock.nsecsElapsed()) / 1e6;
+    if (preparer && !state->cancel.cancelled()) {
+        // The GPU's textures (texture cache, BC7/BC5), counted per prepared texture.
+        clock.restart();
+        state->report(LoadStep::Textures, 0, 1);
+        extras->textures = preparer(
+            scene,
+            [state](std::size_t done, std::size_t total) {
+                state->report(LoadStep::Textures, done, total);
+            },
+            &state->cancel);
+        extras->textures_ms = static_cast<double>(clock.nsecsElapsed()) / 1e6;
+        if (state->cancel.cancelled()) {
+            out.cancelled = true; // scene, thumbnails and textures are dropped here
+            out.error = QStringLiteral("cancelled");
+            return out;
+        }
+    }
     out.scene = std::move(result.scene);
     out.extras = std::move(extras);
     return out;

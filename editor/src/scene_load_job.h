@@ -1,12 +1,12 @@
 #pragma once
 // Loads a scene off the UI thread (QtConcurrent) while the current one stays
-// interactive. The engine's load_scene is synchronous and has no cancellation
-// hook, so Cancel discards the result when it arrives and says so; the thumbnail
-// stage that follows it checks the flag per texture and stops early.
+// interactive. The engine reports its stages (parse, geometry, tangents per mesh)
+// and polls the job's cancel token; the thumbnail stage that follows counts
+// textures. Cancel stops the worker at its next check and drops whatever it built:
+// the current scene is never touched.
 #include <QFutureWatcher>
 #include <QObject>
 #include <QString>
-#include <QTimer>
 
 #include <atomic>
 #include <memory>
@@ -17,45 +17,52 @@
 
 namespace sherpa::editor {
 
-enum class LoadStage : int { Idle, Loading, Textures };
+// What the progress bar shows; Parse..Tangents mirror the engine's LoadStage.
+enum class LoadStep : int { Idle, Parse, Geometry, Tangents, Textures };
 
 struct LoadOutcome {
     std::shared_ptr<const Scene> scene;
     std::shared_ptr<const SceneExtras> extras;
-    QString error; // empty on success
+    QString error;          // empty on success
+    bool cancelled = false; // stopped by cancel(): no scene, no error to show
 };
 
 class SceneLoadJob : public QObject {
     Q_OBJECT
 public:
     explicit SceneLoadJob(QObject* parent = nullptr);
-    ~SceneLoadJob() override; // waits for a running load (its result is dropped)
+    ~SceneLoadJob() override; // cancels and waits for a running load
 
+    // Loads started from now on also prepare their textures with `preparer` on
+    // the worker (progress per texture); null: they leave that to the viewport.
+    void setTexturePreparer(TexturePreparer preparer) { preparer_ = std::move(preparer); }
     // Starts loading `spec`; a load already running is cancelled first.
     void start(const QString& spec);
     void cancel();
     bool running() const { return state_ != nullptr; }
     const QString& spec() const { return spec_; }
+    // Loads cancelled whose workers have not finished yet (tests: none may linger).
+    static int workersInFlight();
 
     // Synchronous variant used by the command line's first scene and the tests.
-    static LoadOutcome loadNow(const QString& spec);
+    static LoadOutcome loadNow(const QString& spec, const TexturePreparer& preparer = {});
 
-    struct State; // progress and the cancel flag, shared with the worker
+    struct State; // progress and the cancel token, shared with the worker
 
 Q_SIGNALS:
-    void progress(sherpa::editor::LoadStage stage, int done, int total);
+    // Every stage change and count change (at most ~100 per stage), in order.
+    void progress(sherpa::editor::LoadStep step, int done, int total);
     void loaded(const QString& spec, const sherpa::editor::LoadOutcome& outcome, double ms);
     void failed(const QString& spec, const QString& error);
     void canceled(const QString& spec);
 
 private:
     void onFinished();
-    void pollProgress();
 
     QString spec_;
     std::shared_ptr<State> state_;
     QFutureWatcher<LoadOutcome>* watcher_ = nullptr;
-    QTimer poll_;
+    TexturePreparer preparer_;
 };
 
 } // namespace sherpa::editor

@@ -12,6 +12,8 @@
 #include "scene_extras.h"
 #include "texture_table_model.h"
 
+#include <sherpa/texture/texture_pipeline.h>
+
 namespace sherpa::editor {
 
 TextureDock::TextureDock(const EditorContext& context, QWidget* parent)
@@ -34,7 +36,7 @@ TextureDock::TextureDock(const EditorContext& context, QWidget* parent)
     recompress_ = new QPushButton(body);
     clear_ = new QPushButton(body);
     open_folder_ = new QPushButton(body);
-    // Needs the texture cache, which this build does not contain yet.
+    // Enabled once the uploaded scene's textures came through a disk cache.
     recompress_->setEnabled(false);
     clear_->setEnabled(false);
     actions->addWidget(totals_, 1);
@@ -45,6 +47,11 @@ TextureDock::TextureDock(const EditorContext& context, QWidget* parent)
     layout->addLayout(actions);
     setWidget(body);
     connect(open_folder_, &QPushButton::clicked, this, &TextureDock::openCacheFolderRequested);
+    connect(clear_, &QPushButton::clicked, this, &TextureDock::clearCacheRequested);
+    connect(recompress_, &QPushButton::clicked, this, [this] {
+        if (context_.selection().texture >= 0)
+            Q_EMIT recompressRequested(context_.selection().texture);
+    });
     connect(view_->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
             [this](const QModelIndex& current) {
                 if (current.isValid() && current.row() != context_.selection().texture)
@@ -60,9 +67,10 @@ void TextureDock::retranslate() {
     recompress_->setText(tr("Recompress selected"));
     clear_->setText(tr("Clear cache"));
     open_folder_->setText(tr("Open cache folder"));
-    const QString why = tr("Needs the texture cache, which is not part of this build");
-    recompress_->setToolTip(why);
-    clear_->setToolTip(why);
+    recompress_->setToolTip(
+        tr("Delete the selected texture's cache files and load the scene again, which "
+           "compresses it anew with the current quality"));
+    clear_->setToolTip(tr("Delete every KTX2 file in the texture cache directory"));
     updateTotals();
 }
 
@@ -78,6 +86,16 @@ void TextureDock::syncSelection() {
         view_->setCurrentIndex(model_->index(t, 0));
         view_->scrollTo(model_->index(t, 0));
     }
+}
+
+void TextureDock::setPrepared(PreparedTextures prepared) {
+    bool cached = false;
+    if (prepared)
+        for (const tex::PreparedTexture& t : prepared->textures) cached |= !t.cache_file.empty();
+    recompress_->setEnabled(cached);
+    clear_->setEnabled(cached);
+    model_->setPrepared(std::move(prepared));
+    syncSelection();
 }
 
 void TextureDock::setGpuBytes(std::int64_t bytes) {

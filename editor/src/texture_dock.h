@@ -4,6 +4,8 @@
 // cache (engine/texture) is part of the build.
 #include <QDockWidget>
 
+#include "scene_extras.h"
+
 class QLabel;
 class QPushButton;
 class QTableView;
@@ -22,10 +24,17 @@ public:
     QTableView* view() const { return view_; }
     // Bytes the renderer holds for the scene's textures (-1: no renderer), for the totals.
     void setGpuBytes(std::int64_t bytes);
+    // The texture pipeline's records of the uploaded scene (cache columns); the
+    // cache actions are enabled while they come from a disk cache.
+    void setPrepared(PreparedTextures prepared);
+    QPushButton* recompressButton() const { return recompress_; }
+    QPushButton* clearCacheButton() const { return clear_; }
 
 Q_SIGNALS:
     void selectTextureRequested(int texture);
     void openCacheFolderRequested();
+    void recompressRequested(int texture); // drop its cache files and prepare it again
+    void clearCacheRequested();
 
 private:
     void showScene();

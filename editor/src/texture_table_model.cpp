@@ -1,7 +1,11 @@
 #include "texture_table_model.h"
 
 #include <QFileInfo>
+#include <bit>
+#include <cmath>
 #include <set>
+
+#include <sherpa/texture/texture_pipeline.h>
 
 #include "format_values.h"
 
@@ -14,7 +18,71 @@ void TextureTableModel::setScene(std::shared_ptr<const Scene> scene,
     beginResetModel();
     scene_ = std::move(scene);
     extras_ = std::move(extras);
+    prepared_.reset();
     endResetModel();
+}
+
+void TextureTableModel::setPrepared(PreparedTextures prepared) {
+    beginResetModel();
+    prepared_ = std::move(prepared);
+    endResetModel();
+}
+
+QVariant TextureTableModel::cacheData(std::size_t row, int column) const {
+    const QString none = QStringLiteral("—");
+    if (!prepared_ || !scene_) return none;
+    // The first role this texture is prepared in (a texture used as colour and as
+    // data has two records; the dock shows one row per glTF texture).
+    const tex::PreparedTexture* r = nullptr;
+    for (TextureRole role : {kRoleColor, kRoleLinear, kRoleNormal})
+        if (const std::int32_t i = prepared_->find(static_cast<std::int32_t>(row), role); i >= 0) {
+            r = &prepared_->textures[static_cast<std::size_t>(i)];
+            break;
+        }
+    if (!r) return none;
+    switch (column) {
+    case HashColumn:
+        return QString::fromStdString(r->source_hash.hex()).left(16);
+    case FormatColumn: {
+        QString f =
+            QString::fromLatin1(tex::vk_format_name(r->format).data(),
+                                static_cast<qsizetype>(tex::vk_format_name(r->format).size()));
+        return f.remove(QStringLiteral("VK_FORMAT_")).remove(QStringLiteral("_BLOCK"));
+    }
+    case MipsColumn: {
+        if (!r->levels.empty()) return static_cast<int>(r->levels.size());
+        return r->width ? static_cast<int>(std::bit_width(std::max(r->width, r->height))) : 0;
+    }
+    case DiskBytesColumn:
+        return r->bytes_on_disk ? Format::bytes(r->bytes_on_disk) : none;
+    case GpuBytesColumn:
+        return Format::bytes(r->bytes_gpu);
+    case CacheStateColumn: {
+        if (r->failed) return tr("failed");
+        switch (r->state) {
+        case tex::CacheState::Hit:
+            return tr("hit");
+        case tex::CacheState::Miss:
+            return tr("miss");
+        case tex::CacheState::Stale:
+            return tr("stale");
+        case tex::CacheState::Recompressed:
+            return tr("recompressed");
+        case tex::CacheState::Fallback:
+            return tr("fallback");
+        }
+        return none;
+    }
+    case DecodeMsColumn:
+        return QString::number(r->decode_ms, 'f', 1);
+    case EncodeMsColumn:
+        return QString::number(r->mip_ms + r->encode_ms, 'f', 1);
+    case PsnrColumn:
+        if (!r->psnr) return none;
+        return std::isinf(*r->psnr) ? QStringLiteral("∞") : QString::number(*r->psnr, 'f', 2);
+    default:
+        return none;
+    }
 }
 
 std::uint64_t TextureTableModel::totalDiskBytes() const {
@@ -55,8 +123,6 @@ QVariant TextureTableModel::data(const QModelIndex& index, int role) const {
         return tr("generated");
     case RoleColumn:
         return Format::roles(t.roles);
-    case FormatColumn:
-        return img ? QString::fromStdString(img->mime_type) : QString();
     case SizeColumn: {
         if (!img || !extras_ || static_cast<std::size_t>(t.image) >= extras_->image_sizes.size())
             return QStringLiteral("—");
@@ -64,12 +130,15 @@ QVariant TextureTableModel::data(const QModelIndex& index, int role) const {
         return s.isEmpty() ? tr("undecodable")
                            : QStringLiteral("%1 × %2").arg(s.width()).arg(s.height());
     }
+    case FormatColumn:
+        if (prepared_) return cacheData(row, index.column()); // what the GPU samples
+        return img ? QString::fromStdString(img->mime_type) : QString();
     case DiskBytesColumn:
+        // The cache's KTX2 file once there is one, else the encoded source.
+        if (QVariant v = cacheData(row, DiskBytesColumn); v != QStringLiteral("—")) return v;
         return img ? Format::bytes(img->byte_size) : QString();
-    case DecodeMsColumn:
-        return QStringLiteral("—");
     default:
-        return QStringLiteral("—"); // filled by the texture cache's report
+        return cacheData(row, index.column());
     }
 }
 

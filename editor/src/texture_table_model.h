@@ -1,7 +1,8 @@
 #pragma once
 // Every texture of the scene with its thumbnail, source, role and sizes. Columns
-// that only the texture cache can fill (hash, GPU format, mips, GPU bytes, cache
-// state, encode time, PSNR) show "—" until a cache report is attached.
+// that only the texture pipeline can fill (hash, GPU format, mips, bytes on disk and
+// GPU, cache state, decode/encode time, PSNR) come from the prepared set the viewport
+// uploaded (setPrepared) and show "—" without one.
 #include <QAbstractTableModel>
 
 #include <memory>
@@ -33,6 +34,8 @@ public:
     };
     explicit TextureTableModel(QObject* parent = nullptr);
     void setScene(std::shared_ptr<const Scene> scene, std::shared_ptr<const SceneExtras> extras);
+    // The texture pipeline's records for the current scene: fill the cache columns.
+    void setPrepared(PreparedTextures prepared);
     // Encoded bytes of every image referenced by a texture (each image once).
     std::uint64_t totalDiskBytes() const;
 
@@ -42,7 +45,10 @@ public:
     QVariant headerData(int section, Qt::Orientation o, int role) const override;
 
 private:
+    QVariant cacheData(std::size_t row, int column) const; // "—" without a record
+
     std::shared_ptr<const Scene> scene_;
+    PreparedTextures prepared_;
     std::shared_ptr<const SceneExtras> extras_;
 };
 

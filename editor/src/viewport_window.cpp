@@ -3,6 +3,7 @@
 #include <QExposeEvent>
 #include <QKeyEvent>
 #include <QMouseEvent>
+#include <QPlatformSurfaceEvent>
 #include <QVulkanInstance>
 #include <QWheelEvent>
 
@@ -44,6 +45,10 @@ bool ViewportWindow::event(QEvent* e) {
         renderNow();
         return true;
     }
+    if (e->type() == QEvent::PlatformSurface &&
+        static_cast<QPlatformSurfaceEvent*>(e)->surfaceEventType() ==
+            QPlatformSurfaceEvent::SurfaceAboutToBeDestroyed)
+        Q_EMIT surfaceAboutToBeDestroyed(); // before Qt destroys the VkSurfaceKHR
     return QWindow::event(e);
 }
 
@@ -55,6 +60,8 @@ void ViewportWindow::exposeEvent(QExposeEvent*) {
 void ViewportWindow::resizeEvent(QResizeEvent*) {
     camera_.setAspect(height() > 0 ? static_cast<float>(width()) / static_cast<float>(height())
                                    : 1.0f);
+    // Until the user moves the camera, the scene stays framed for the new aspect.
+    if (auto_frame_) Q_EMIT frameAllRequested();
     Q_EMIT cameraChanged();
     scheduleFrame();
 }

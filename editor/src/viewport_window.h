@@ -44,6 +44,9 @@ Q_SIGNALS:
     void frameAllRequested();
     void frameSelectionRequested();
     void frameRendered(double ms);
+    // The native window (and with it the Vulkan surface) is about to go: whoever
+    // presents to it must drop its swapchain now.
+    void surfaceAboutToBeDestroyed();
 
 protected:
     bool event(QEvent* e) override;

@@ -6,6 +6,7 @@
 #include <sherpa/scene/culling_passes.h>
 
 #include "attribute_model.h"
+#include "command_line.h"
 #include "culling_monitor.h"
 #include "editor_context.h"
 #include "format_values.h"
@@ -85,6 +86,7 @@ private Q_SLOTS:
     void pickHitsTheInstanceUnderTheRay();
     void cullingMonitorFreezes();
     void selectionFollowsActions();
+    void commandLineDocksAndCulling();
 };
 
 void ModelTests::everyAssetMatchesTheEngine_data() {
@@ -324,6 +326,21 @@ void ModelTests::selectionFollowsActions() {
     for (std::size_t i = 0; i < out.scene->instances.size(); ++i)
         if (static_cast<int>(out.scene->instances[i].node_id) == mesh_node)
             QVERIFY(!context.instanceVisible(i));
+}
+
+void ModelTests::commandLineDocksAndCulling() {
+    CommandLine cl;
+    QString error;
+    const QString app = QStringLiteral("sherpa");
+    QVERIFY(parse_command_line({app, QStringLiteral("--dock"), QStringLiteral("log"),
+                                QStringLiteral("--dock"), QStringLiteral("culling"),
+                                QStringLiteral("--gpu-culling")},
+                               cl, error));
+    QCOMPARE(cl.docks, QStringList({QStringLiteral("log"), QStringLiteral("culling")}));
+    QVERIFY(cl.gpu_culling);
+    QVERIFY(
+        !parse_command_line({app, QStringLiteral("--dock"), QStringLiteral("nope")}, cl, error));
+    QVERIFY(error.contains(QStringLiteral("scene-tree")));
 }
 
 QTEST_MAIN(ModelTests)

@@ -7,7 +7,6 @@
 #include <QTreeView>
 #include <QVulkanInstance>
 #include <QtTest>
-#include <fstream>
 
 #include "culling_dock.h"
 #include "culling_monitor.h"
@@ -25,38 +24,25 @@
 #include "texture_table_model.h"
 #include "vertex_table_model.h"
 #include "viewport_window.h"
+#include "window_test_support.h"
 
 using namespace sherpa;
 using namespace sherpa::editor;
 
-namespace {
-
-constexpr int kLoadTimeoutMs = 60000;
-
-bool load(MainWindow& w, const QString& spec) {
-    QSignalSpy loaded(&w, &MainWindow::sceneLoaded);
-    QSignalSpy failed(&w, &MainWindow::loadFailed);
-    w.openScene(spec);
-    QElapsedTimer t;
-    t.start();
-    while (loaded.isEmpty() && failed.isEmpty() && t.elapsed() < kLoadTimeoutMs)
-        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 20);
-    return loaded.count() == 1;
-}
-
-std::uint64_t resident_kib() {
-    std::ifstream statm("/proc/self/statm");
-    std::uint64_t size = 0, resident = 0;
-    statm >> size >> resident;
-    return resident * 4; // 4 KiB pages
-}
-
-} // namespace
+using test::kLoadTimeoutMs;
+using test::load;
+using test::resident_kib;
 
 class WindowTests : public QObject {
     Q_OBJECT
 private Q_SLOTS:
     void initTestCase();
+    void cleanup() {
+        // Every test here runs under the Khronos validation layer: any message fails it.
+        if (!window_) return;
+        const QString fresh = test::fresh_validation_messages(*window_, seen_validation_);
+        QVERIFY2(fresh.isEmpty(), qPrintable(fresh));
+    }
     void cleanupTestCase() { window_.reset(); }
     void opensEveryAsset();
     void selectionReachesEveryDock();
@@ -70,11 +56,13 @@ private Q_SLOTS:
 private:
     QVulkanInstance vulkan_;
     std::unique_ptr<MainWindow> window_;
+    qsizetype seen_validation_ = 0;
 };
 
 void WindowTests::initTestCase() {
-    QStandardPaths::setTestModeEnabled(true); // settings go to a test location
-    QSettings().clear();
+    QStandardPaths::setTestModeEnabled(true); // caches go to a test location
+    test::isolate_settings();                 // settings to this process's own
+    qputenv("SHERPA_VALIDATION", "1");        // before the instance: it enables the layer
     GpuViewport::configureInstance(vulkan_);
     vulkan_.create(); // optional: without Vulkan the viewport stays empty
     window_ = std::make_unique<MainWindow>(vulkan_.isValid() ? &vulkan_ : nullptr);

@@ -293,3 +293,49 @@ TEST(TextureCache, DefaultDirectoryFollowsXdg) {
     EXPECT_EQ(default_cache_dir(std::string(""), std::string("/home/u")),
               "/home/u/.cache/sherpa/textures");
 }
+
+namespace {
+
+TEST(TexturePipeline, ProgressCountsEveryTexture) {
+    const auto dir = test::fresh_temp_dir("cache-progress");
+    const Scene scene = small_scene();
+    std::vector<std::pair<std::size_t, std::size_t>> reports;
+    PipelineOptions options = options_for(dir);
+    options.progress = [&](std::size_t done, std::size_t total) {
+        reports.emplace_back(done, total);
+    };
+    const auto set = prepare_textures(scene, options);
+    ASSERT_EQ(set.textures.size(), 2u);
+    EXPECT_FALSE(set.cancelled);
+    // 0 of 2 before the misses, then one report per texture made.
+    const std::vector<std::pair<std::size_t, std::size_t>> expected = {{0, 2}, {1, 2}, {2, 2}};
+    EXPECT_EQ(reports, expected);
+    reports.clear();
+    prepare_textures(scene, options); // all hits: ready at once
+    ASSERT_FALSE(reports.empty());
+    EXPECT_EQ(reports.front(), (std::pair<std::size_t, std::size_t>{2, 2}));
+}
+
+TEST(TexturePipeline, CancelStopsAndReturnsNothing) {
+    const auto dir = test::fresh_temp_dir("cache-cancel");
+    const Scene scene = small_scene();
+    CancelToken token;
+    PipelineOptions options = options_for(dir);
+    options.cancel = &token;
+    // Cancelled after the first texture is made: the second is never compressed.
+    options.progress = [&](std::size_t done, std::size_t) {
+        if (done == 1) token.cancel();
+    };
+    const auto set = prepare_textures(scene, options);
+    EXPECT_TRUE(set.cancelled);
+    EXPECT_TRUE(set.textures.empty());
+    // A later run without cancel completes (the first texture's cache file is a hit).
+    options.cancel = nullptr;
+    options.progress = nullptr;
+    const auto again = prepare_textures(scene, options);
+    ASSERT_EQ(again.textures.size(), 2u);
+    EXPECT_EQ(again.textures[0].state, CacheState::Hit);
+    EXPECT_EQ(again.textures[1].state, CacheState::Miss);
+}
+
+} // namespace

@@ -24,6 +24,8 @@ struct PassCull {
     CullStats stats;
     VkDeviceSize readback = 0; // GPU path: offset of this pass in FrameSlot::cull_readback
 };
+// The 12 edges of a world box as a line list (overlays.cpp).
+void append_box(std::vector<GPULineVertex>& out, const Aabb& box, glm::vec4 color);
 
 struct Renderer::FrameSlot {
     explicit FrameSlot(Context& context) : recorder(context) {}
@@ -32,7 +34,7 @@ struct Renderer::FrameSlot {
     VkDescriptorSet set = VK_NULL_HANDLE; // set 1: frame data + the scene's materials
     std::uint64_t set_generation = ~0ull; // scene generation the set's materials belong to
     BufferHandle lines;                   // overlay line vertices, host-visible, grown on demand
-    VkDeviceSize lines_capacity = 0;
+    VkDeviceSize lines_capacity = 0, lines_used = 0; // lines_used: bytes written this frame
     UniqueQueryPool timestamps, statistics;
     std::uint64_t submission = 0; // timeline value of the last frame recorded here
     bool has_results = false;

@@ -211,7 +211,9 @@ void GpuScene::upload_materials(const Scene& scene) {
     }
     const VkDeviceSize bytes = data.size() * sizeof(GPUMaterialData);
     const VkDeviceSize extra_bytes = extras.size() * sizeof(GPUMaterialExtra);
-    materials_ = resources_.create_buffer({bytes, kStorage, MemoryUsage::DeviceLocal, "materials"});
+    // Copied out too: the editor's material dock reads records back from this buffer.
+    materials_ = resources_.create_buffer({bytes, kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                           MemoryUsage::DeviceLocal, "materials"});
     material_extras_ =
         resources_.create_buffer({extra_bytes, kStorage, MemoryUsage::DeviceLocal, "material uv"});
     UploadBatch batch(resources_);
@@ -269,6 +271,7 @@ void GpuScene::upload_instances(const Scene& scene) {
         ++groups_.back().instance_count;
         data.push_back(g);
         instance_bounds_.push_back(inst.world_bounds);
+        scene_instances_.push_back(k.instance);
         bounds_.expand(inst.world_bounds);
         triangles_ += meshes_[inst.mesh_id].index_count / 3;
     }

@@ -11,8 +11,6 @@
 
 namespace sherpa::gpu {
 
-namespace {
-
 void append_box(std::vector<GPULineVertex>& out, const Aabb& b, glm::vec4 color) {
     if (!b.valid()) return;
     auto corner = [&](int i) {
@@ -28,11 +26,14 @@ void append_box(std::vector<GPULineVertex>& out, const Aabb& b, glm::vec4 color)
             }
 }
 
-} // namespace
-
 void Renderer::draw_overlays(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
                              const RenderSettings& s) {
-    if (!scene_ || s.overlays == 0) return;
+    if (!scene_) return;
+    slot.lines_used = 0;
+    if (s.overlays == 0) {
+        draw_highlight(cmd, slot, p, s);
+        return;
+    }
     const VkPipelineLayout layout = p.layout();
     const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     // Overlays sit on top of the surface they describe: test, never write depth.
@@ -101,24 +102,30 @@ void Renderer::draw_overlays(VkCommandBuffer cmd, FrameSlot& slot, const Pipelin
         draw_lines(cmd, slot, p, lines);
     }
     if (s.overlays & kOverlayCullBoxes) draw_cull_overlay(cmd, slot, p);
+    draw_highlight(cmd, slot, p, s);
 }
 
 void Renderer::draw_lines(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
                           const std::vector<GPULineVertex>& lines) {
     if (lines.empty()) return;
+    // Several line draws per frame: each gets its own range of the frame's buffer.
     const VkDeviceSize bytes = lines.size() * sizeof(GPULineVertex);
-    if (bytes > slot.lines_capacity) {
+    VkDeviceSize offset = slot.lines_used;
+    if (offset + bytes > slot.lines_capacity) {
+        // Earlier draws of this frame keep the old buffer: destruction is deferred.
         resources_->destroy(slot.lines);
-        slot.lines_capacity = std::max<VkDeviceSize>(bytes, 4096);
+        slot.lines_capacity = std::max<VkDeviceSize>(2 * (offset + bytes), 4096);
         slot.lines = resources_->create_buffer(
             {slot.lines_capacity,
              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
              MemoryUsage::Upload, "overlay lines"});
+        offset = 0;
     }
     const Buffer& buf = resources_->get(slot.lines);
-    std::memcpy(buf.mapped, lines.data(), bytes);
+    std::memcpy(static_cast<std::uint8_t*>(buf.mapped) + offset, lines.data(), bytes);
+    slot.lines_used = offset + bytes;
     GPUPushConstants pc = slot.push_base;
-    pc.lines = buf.address;
+    pc.lines = buf.address + offset;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::BoxLines));
     vkCmdPushConstants(cmd, p.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
                        0, sizeof(pc), &pc);

@@ -104,6 +104,8 @@ tex::PipelineOptions texture_pipeline_options(const DeviceInfo& device,
     o.cache_cap_bytes = settings.cache_cap_bytes;
     o.bc7_level = settings.quality;
     o.device_supports_bc = device.bc_textures && !settings.force_rgba8;
+    o.progress = settings.progress;
+    o.cancel = settings.cancel;
     return o;
 }
 

@@ -2,6 +2,7 @@
 // discards the partial scene and reports "FILE: what is wrong".
 #include "import_context.h"
 #include "import_error.h"
+#include "load_stages.h"
 
 #include <sherpa/core/file_io.h>
 #include <sherpa/scene/scene_loader.h>
@@ -61,6 +62,7 @@ std::string clean_message(const std::string& s) {
 
 LoadResult import_gltf(const std::string& path, const LoadOptions& options) {
     LoadResult result;
+    if (!detail::begin_stage(options, LoadStage::Parse)) return detail::cancelled_result();
     const auto t_parse = std::chrono::steady_clock::now();
     std::vector<std::uint8_t> bytes;
     std::string io_error;
@@ -92,6 +94,7 @@ LoadResult import_gltf(const std::string& path, const LoadOptions& options) {
     scene->source = path;
     scene->parse_ms = ms_since(t_parse);
     if (!warn.empty()) scene->warnings.push_back("tinygltf: " + clean_message(warn));
+    if (!detail::end_stage(options, LoadStage::Parse)) return detail::cancelled_result();
 
     const auto t_process = std::chrono::steady_clock::now();
     try {
@@ -100,11 +103,12 @@ LoadResult import_gltf(const std::string& path, const LoadOptions& options) {
                 kSupportedExtensions.end())
                 detail::fail("extensionsRequired: \"" + ext + "\" is not supported by Sherpa");
         detail::ImportContext ctx{model, *scene};
+        if (!detail::begin_stage(options, LoadStage::Geometry)) return detail::cancelled_result();
         detail::import_samplers_images_textures(ctx);
         detail::import_materials(ctx);
         detail::import_meshes(ctx);
-        if (options.generate_tangents)
-            add_tangent_warnings(*scene, generate_scene_tangents(*scene, options.tangents));
+        if (!detail::end_stage(options, LoadStage::Geometry)) return detail::cancelled_result();
+        if (!detail::tangent_stage(*scene, options)) return detail::cancelled_result();
         detail::import_lights_cameras(ctx);
         detail::import_nodes_and_scenes(ctx);
         const std::int32_t scene_index =

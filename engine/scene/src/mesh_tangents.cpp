@@ -1,5 +1,6 @@
 // Tangents on engine meshes: per-corner results written into vertices with splitting,
 // and the glTF rule deciding which meshes get generated tangents.
+#include <atomic>
 #include <cstring>
 #include <stdexcept>
 
@@ -120,6 +121,7 @@ SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptio
     SceneTangentReport report;
     report.meshes.resize(scene.meshes.size());
     const auto mesh_count = static_cast<std::int64_t>(scene.meshes.size());
+    std::atomic<std::size_t> meshes_done{0};
     // Meshes are independent; dynamic scheduling because their sizes vary by orders of
     // magnitude. Exceptions cannot cross the OpenMP region, so they become reasons.
 #pragma omp parallel
@@ -127,8 +129,19 @@ SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptio
         TangentWorkspace workspace;
 #pragma omp for schedule(dynamic, 1)
         for (std::int64_t i = 0; i < mesh_count; ++i) {
+            if (is_cancelled(options.cancel)) continue;
             Mesh& mesh = scene.meshes[static_cast<std::size_t>(i)];
             MeshTangentReport& out = report.meshes[static_cast<std::size_t>(i)];
+            // Reports the mesh as done however the body below leaves it.
+            struct Done {
+                const SceneTangentOptions& o;
+                std::atomic<std::size_t>& n;
+                std::size_t total;
+                ~Done() {
+                    const std::size_t d = ++n;
+                    if (o.progress) o.progress(d, total);
+                }
+            } done{options, meshes_done, static_cast<std::size_t>(mesh_count)};
             const bool authored =
                 mesh.provenance_of(VertexAttribute::Tangent) == Provenance::Authored;
             const MaterialInstance* material = mesh.material_id < scene.materials.size()

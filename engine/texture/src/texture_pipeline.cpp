@@ -163,12 +163,25 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
         set.textures.push_back(std::move(t));
     }
 
+    std::size_t ready = set.textures.size() - misses.size();
+    auto report = [&] {
+        if (opt.progress) opt.progress(ready, set.textures.size());
+    };
+    auto stop = [&set] {
+        set = {};
+        set.cancelled = true;
+        return std::move(set);
+    };
+    report();
+    if (is_cancelled(opt.cancel)) return stop();
+
     // Decode the misses, a few files at a time (OpenImageIO decodes one file on one thread).
     std::vector<RgbaImage> decoded(misses.size());
     std::vector<std::string> errors(misses.size());
     std::atomic<std::size_t> next{0};
     auto decode_worker = [&] {
         for (std::size_t i; (i = next++) < misses.size();) {
+            if (is_cancelled(opt.cancel)) return;
             PreparedTexture& t = set.textures[misses[i]];
             const auto start = std::chrono::steady_clock::now();
             if (!decode_source(scene.images[std::size_t(t.image)], decoded[i], errors[i]))
@@ -180,9 +193,11 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
     for (int w = 0; w < std::max(1, opt.decode_threads) && std::size_t(w) < misses.size(); ++w)
         workers.emplace_back(decode_worker);
     for (auto& w : workers) w.join();
+    if (is_cancelled(opt.cancel)) return stop();
 
     // Compress (OpenMP across blocks inside encode_image), then store.
-    for (std::size_t i = 0; i < misses.size(); ++i) {
+    for (std::size_t i = 0; i < misses.size(); ++i, ++ready, report()) {
+        if (is_cancelled(opt.cancel)) return stop();
         PreparedTexture& t = set.textures[misses[i]];
         if (decoded[i].empty()) {
             t.failed = true;

@@ -71,6 +71,8 @@ public:
     const std::vector<DrawGroup>& groups() const { return groups_; }
     // World bounds per GPU instance (draw-group order) for sorting and overlays.
     const std::vector<Aabb>& instance_bounds() const { return instance_bounds_; }
+    // Scene instance index per GPU instance (draw-group order).
+    const std::vector<std::uint32_t>& scene_instances() const { return scene_instances_; }
     const Aabb& bounds() const { return bounds_; }
     // Null when no instanced mesh has triangles (then there are no draw groups).
     VkBuffer index_buffer() const {
@@ -103,6 +105,7 @@ private:
     std::vector<GpuMesh> meshes_;
     std::vector<DrawGroup> groups_;
     std::vector<Aabb> instance_bounds_;
+    std::vector<std::uint32_t> scene_instances_;
     Aabb bounds_;
     GpuMemoryReport memory_;
     std::uint64_t triangles_ = 0;

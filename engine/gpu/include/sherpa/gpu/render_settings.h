@@ -93,7 +93,18 @@ struct RenderSettings {
     bool cull_check = false;
     // Cull with this camera instead of the view camera (visual debugging of culling).
     std::optional<CameraSpec> freeze_cull;
+    // Selection highlight (an editor's selection), drawn last, over everything:
+    // the instance (scene instance index) as its wireframe and world box in
+    // kHighlightColor; one triangle of its mesh filled, and one vertex as a
+    // normal/tangent/bitangent tripod, in kHighlightDetailColor. Ignored when the
+    // instance is not drawn (out of range, empty mesh).
+    std::optional<std::uint32_t> highlight_instance;
+    std::optional<std::uint32_t> highlight_triangle; // needs highlight_instance
+    std::optional<std::uint32_t> highlight_vertex;   // needs highlight_instance
 };
+
+inline const glm::vec4 kHighlightColor{1.0f, 0.45f, 0.0f, 1.0f};      // orange
+inline const glm::vec4 kHighlightDetailColor{1.0f, 0.0f, 1.0f, 1.0f}; // magenta
 
 // Does this view/overlay need streams the materials do not use (so the scene must
 // be uploaded with StreamPolicy::AllPresent)?

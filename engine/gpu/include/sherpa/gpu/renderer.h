@@ -139,6 +139,8 @@ private:
     bool draw_culled(VkCommandBuffer cmd, FrameSlot& slot, VkPipelineLayout layout,
                      std::size_t group, std::uint32_t pass, GPUPushConstants& pc, CullStats& tally);
     void draw_cull_overlay(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p);
+    void draw_highlight(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
+                        const RenderSettings& s);
     void draw_lines(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
                     const std::vector<GPULineVertex>& lines);
     void wait_slot(FrameSlot& slot);

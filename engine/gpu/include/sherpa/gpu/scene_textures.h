@@ -35,6 +35,11 @@ struct TextureSettings {
     // blocks, 4x the memory); false keeps the blocks. BC5 costs the same either way
     // and stays compressed.
     bool decode_bc7_on_cpu = true;
+    // Handed to the texture pipeline (tex::PipelineOptions): textures ready of
+    // textures, and a token that stops the preparation (the set comes back
+    // `cancelled` and empty).
+    ProgressCallback progress;
+    const CancelToken* cancel = nullptr;
 };
 
 // Pipeline options for `device`: block-compressed where the device can sample

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <sherpa/core/progress.h>
 #include <sherpa/scene/scene.h>
 #include <sherpa/scene/tangents.h>
 
@@ -45,6 +46,12 @@ struct SceneTangentOptions {
     // false: the glTF rule (tangents only where TANGENT is absent and the material has a
     // normal texture). true: every triangle mesh, replacing authored tangents too.
     bool regenerate = false;
+    // Meshes done of meshes in the scene, called on OpenMP worker threads as each
+    // mesh finishes; must be thread-safe.
+    ProgressCallback progress;
+    // Polled before each mesh: once cancelled the remaining meshes are skipped
+    // (the scene is then half done and must be discarded).
+    const CancelToken* cancel = nullptr;
 };
 
 struct SceneTangentReport {
@@ -55,8 +62,7 @@ struct SceneTangentReport {
 };
 
 // Applies the options to every mesh of the scene, in parallel across meshes (OpenMP,
-// one workspace per thread).(OpenMP; one
-// workspace per thread).
+// one workspace per thread).
 SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptions& options);
 // Appends the report's failures and fallback counts to scene.warnings.
 void add_tangent_warnings(Scene& scene, const SceneTangentReport& report);

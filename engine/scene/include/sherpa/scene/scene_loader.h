@@ -1,13 +1,19 @@
 #pragma once
 // The one entry point that turns a scene spec (a path or `builtin:...`) into a Scene.
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
 
+#include <sherpa/core/progress.h>
 #include <sherpa/scene/mesh_tangents.h>
 #include <sherpa/scene/scene.h>
 
 namespace sherpa {
+
+// Stages of load_scene, in order (builtin scenes skip Parse).
+enum class LoadStage { Parse, Geometry, Tangents };
+std::string_view to_string(LoadStage stage); // parse, geometry, tangents
 
 struct LoadOptions {
     std::int32_t scene_index = -1; // -1: the file's default scene
@@ -15,6 +21,12 @@ struct LoadOptions {
     // TANGENT is absent and the material has a normal texture). Off: tangents stay as read.
     bool generate_tangents = true;
     SceneTangentOptions tangents;
+    // Called on the loading thread when a stage starts (done 0) and ends (done ==
+    // total); tangents also report per mesh.
+    std::function<void(LoadStage stage, std::size_t done, std::size_t total)> progress;
+    // Polled between stages and between meshes of the tangent stage: a cancelled
+    // load returns no scene, `cancelled` set and error "cancelled".
+    const CancelToken* cancel = nullptr;
 };
 
 // Either a scene or an error message naming the source and the problem. A failed
@@ -22,6 +34,7 @@ struct LoadOptions {
 struct LoadResult {
     std::unique_ptr<Scene> scene;
     std::string error;
+    bool cancelled = false;
     explicit operator bool() const { return scene != nullptr; }
 };
 

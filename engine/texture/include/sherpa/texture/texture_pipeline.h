@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include <sherpa/core/progress.h>
 #include <sherpa/scene/scene.h>
 #include <sherpa/texture/block_codecs.h>
 #include <sherpa/texture/ktx2.h>
@@ -43,6 +44,13 @@ struct PipelineOptions {
     bool device_supports_bc = true; // false: RGBA8 fallback
     int decode_threads = 2;         // OIIO gains nothing from threads within one file
     SimdLevel simd = best_simd_level();
+    // Textures ready of textures to prepare (cache hits count at once, misses as
+    // each is compressed); called on the calling thread.
+    ProgressCallback progress;
+    // Polled before each decode and each compression: a cancelled run returns a
+    // set with `cancelled` set and no textures (cache files already written stay:
+    // they are complete entries).
+    const CancelToken* cancel = nullptr;
 };
 
 enum class CacheState : std::uint8_t { Hit, Miss, Stale, Recompressed, Fallback };
@@ -72,6 +80,7 @@ struct PreparedTexture {
 struct PreparedTextureSet {
     std::vector<PreparedTexture> textures;
     std::vector<std::string> warnings; // fallbacks, decode failures, cache write failures
+    bool cancelled = false;            // PipelineOptions::cancel stopped it: no textures
 
     // Index into `textures` for glTF texture `texture` used in `role`, or -1.
     std::int32_t find(std::int32_t texture, TextureRole role) const;

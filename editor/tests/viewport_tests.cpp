@@ -1,0 +1,332 @@
+// The viewport's inspection features end to end under Xvfb: the selection
+// highlight, the GPU culling path with its CPU/GPU agreement, framing for the
+// viewport's aspect, and load progress / cancel.
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QVulkanInstance>
+#include <QtTest>
+
+#include "culling_dock.h"
+#include "culling_monitor.h"
+#include "editor_settings.h"
+#include "gpu_viewport.h"
+#include "log_dock.h"
+#include "main_window.h"
+#include "mesh_dock.h"
+#include "orbit_camera.h"
+#include "test_assets.h"
+#include "texture_dock.h"
+#include "texture_table_model.h"
+#include "viewport_window.h"
+#include "window_test_support.h"
+
+using namespace sherpa;
+using namespace sherpa::editor;
+
+using test::kLoadTimeoutMs;
+using test::load;
+using test::resident_kib;
+
+namespace {
+
+// Waits (bounded, never asserted on) until the viewport has drawn a new frame.
+bool nextFrame(MainWindow& w) {
+    const std::uint64_t before = w.viewport()->framesRendered();
+    w.viewport()->scheduleFrame();
+    QElapsedTimer t;
+    t.start();
+    while (w.viewport()->framesRendered() == before && t.elapsed() < kLoadTimeoutMs)
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 20);
+    return w.viewport()->framesRendered() > before;
+}
+
+// Pixels of the highlight colour (sRGB of gpu::kHighlightColor) in the viewport.
+int orangePixels(MainWindow& w) {
+    const QImage shot = w.screenshot().convertToFormat(QImage::Format_RGB32);
+    const QWidget* vp = w.findChild<QWidget*>(QStringLiteral("viewport"));
+    const QRect r(vp->mapTo(&w, QPoint(0, 0)), vp->size());
+    int n = 0;
+    for (int y = r.top(); y <= r.bottom(); ++y)
+        for (int x = r.left(); x <= r.right(); ++x) {
+            const QRgb p = shot.pixel(x, y);
+            if (qRed(p) > 235 && qGreen(p) > 160 && qGreen(p) < 200 && qBlue(p) < 30) ++n;
+        }
+    return n;
+}
+
+// The camera has seen the window's current size.
+bool aspectFollows(const ViewportWindow& v) {
+    const float aspect =
+        static_cast<float>(v.width()) / static_cast<float>(std::max(v.height(), 1));
+    return std::abs(v.camera().spec().aspect - aspect) < 1e-3f;
+}
+
+// The largest |x| and |y| in NDC of the box's corners seen by `camera`.
+QPointF ndcExtent(const CameraSpec& camera, const Aabb& box) {
+    QPointF out(0, 0);
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec4 c((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                          (i & 4) ? box.max.z : box.min.z, 1.0f);
+        const glm::vec4 clip = camera.view_projection() * c;
+        out.setX(std::max(out.x(), static_cast<double>(std::abs(clip.x / clip.w))));
+        out.setY(std::max(out.y(), static_cast<double>(std::abs(clip.y / clip.w))));
+    }
+    return out;
+}
+
+} // namespace
+
+class ViewportTests : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void cleanup() {
+        // Every test here runs under the Khronos validation layer: any message fails it.
+        if (!window_) return;
+        const QString fresh = test::fresh_validation_messages(*window_, seen_validation_);
+        QVERIFY2(fresh.isEmpty(), qPrintable(fresh));
+    }
+    void cleanupTestCase() { window_.reset(); }
+    void framingFitsEveryAspect();
+    void highlightFollowsSelection();
+    void gpuCullingAgreesWithCpu();
+    void narrowViewportFramesTheHelmet();
+    void progressReportsEveryStage();
+    void cancelDropsTheLoadAndLeaksNothing();
+    void textureCacheActions();
+
+private:
+    bool hasGpu() const { return static_cast<bool>(window_->gpuObjectCount); }
+    QVulkanInstance vulkan_;
+    std::unique_ptr<MainWindow> window_;
+    qsizetype seen_validation_ = 0;
+};
+
+void ViewportTests::initTestCase() {
+    QStandardPaths::setTestModeEnabled(true); // caches go to a test location
+    test::isolate_settings();                 // settings to this process's own
+    qputenv("SHERPA_VALIDATION", "1");        // before the instance: it enables the layer
+    GpuViewport::configureInstance(vulkan_);
+    vulkan_.create();
+    window_ = std::make_unique<MainWindow>(vulkan_.isValid() ? &vulkan_ : nullptr);
+    window_->setLanguage(QStringLiteral("en"));
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    QVERIFY(load(*window_, QStringLiteral("builtin:default")));
+    QCoreApplication::processEvents();
+}
+
+void ViewportTests::framingFitsEveryAspect() {
+    // Plain camera math: whatever the aspect, all 8 corners inside, and tight on one axis.
+    const Aabb box = Aabb::from_min_max({-0.94f, -0.9f, -0.82f}, {0.94f, 0.9f, 0.82f});
+    for (float aspect : {0.2f, 0.5f, 1.0f, 1.78f, 4.0f}) {
+        OrbitCamera cam;
+        cam.setAspect(aspect);
+        cam.frame(box);
+        const QPointF e = ndcExtent(cam.spec(), box);
+        QVERIFY2(e.x() <= 1.0 && e.y() <= 1.0,
+                 qPrintable(QStringLiteral("aspect %1: %2 %3").arg(aspect).arg(e.x()).arg(e.y())));
+        QVERIFY2(std::max(e.x(), e.y()) > 0.9, qPrintable(QString::number(aspect)));
+    }
+}
+
+void ViewportTests::highlightFollowsSelection() {
+    QVERIFY(load(*window_, QStringLiteral("builtin:default")));
+    if (!hasGpu()) QSKIP("no Vulkan device: nothing is rendered");
+    window_->pickAt(QPointF(0.999, 0.999)); // background: clears the selection
+    QVERIFY(nextFrame(*window_));
+    QVERIFY(!window_->lastFrame().highlightInstance);
+    const int plain = orangePixels(*window_);
+
+    QVERIFY(window_->selectNodeNamed(QStringLiteral("sphere")));
+    const int instance = window_->selectedInstance();
+    QVERIFY(instance >= 0);
+    QVERIFY(nextFrame(*window_));
+    QCOMPARE(window_->lastFrame().highlightInstance.value_or(~0u),
+             static_cast<std::uint32_t>(instance));
+    QVERIFY2(orangePixels(*window_) > plain + 100, "the highlight is drawn");
+
+    // The mesh dock's vertex and triangle ride along.
+    Q_EMIT window_->meshDock()->selectTriangleRequested(7);
+    Q_EMIT window_->meshDock()->selectVertexRequested(3);
+    QVERIFY(nextFrame(*window_));
+    QCOMPARE(window_->lastFrame().highlightTriangle.value_or(~0u), 7u);
+    QCOMPARE(window_->lastFrame().highlightVertex.value_or(~0u), 3u);
+    QVERIFY(!window_->logDock()->text().contains(QStringLiteral("Rendering stopped")));
+}
+
+void ViewportTests::gpuCullingAgreesWithCpu() {
+    QVERIFY(load(*window_, QStringLiteral("builtin:grid?n=20")));
+    if (!hasGpu()) QSKIP("no Vulkan device: no GPU culling");
+    const int errors = window_->logDock()->errorCount();
+    window_->setGpuCulling(true);
+    for (int step = 0; step < 3; ++step) {
+        window_->viewport()->camera().orbit(120.0f, 20.0f); // new frustum each step
+        Q_EMIT window_->viewport()->cameraChanged();
+        const CullSample* s = window_->cullingMonitor().latest();
+        QVERIFY(s);
+        QVERIFY(s->gpu_visible >= 0);
+        QCOMPARE(s->cpu_gpu_differences, 0);
+        QCOMPARE(static_cast<std::uint64_t>(s->gpu_visible), s->cpu.visible);
+        QVERIFY(window_->cullingDock()->agreementText().contains(QStringLiteral("✔")));
+        QVERIFY(window_->cullingDock()->valueText(CullingDock::GpuMs) != QStringLiteral("—"));
+        QVERIFY(nextFrame(*window_));
+        QVERIFY(window_->lastFrame().gpuCulling);
+    }
+    // Scene switches with the GPU path on: each new scene is checked against its own culler.
+    for (const QString& spec :
+         {QStringLiteral("builtin:default"), QStringLiteral("builtin:grid?n=10"),
+          test::asset(QStringLiteral("DamagedHelmet"))}) {
+        QVERIFY(load(*window_, spec));
+        const CullSample* s = window_->cullingMonitor().latest();
+        QVERIFY(s && s->gpu_visible >= 0);
+        QCOMPARE(s->cpu_gpu_differences, 0);
+    }
+    window_->setGpuCulling(false);
+    QCOMPARE(window_->cullingMonitor().latest()->gpu_visible, -1);
+    QVERIFY(window_->cullingDock()->agreementText().contains(QStringLiteral("off")));
+    QVERIFY(nextFrame(*window_));
+    QVERIFY(!window_->lastFrame().gpuCulling);
+    QCOMPARE(window_->logDock()->errorCount(), errors);
+}
+
+void ViewportTests::narrowViewportFramesTheHelmet() {
+    // Loaded in a wide viewport, then the viewport turns tall and narrow (a dock
+    // dragged wider, the window resized) before the user touched the camera: the
+    // framing follows the new aspect instead of clipping the sides.
+    QWidget* vp = window_->findChild<QWidget*>(QStringLiteral("viewport"));
+    QVERIFY(load(*window_, test::asset(QStringLiteral("DamagedHelmet"))));
+    const Aabb bounds = window_->context().scene()->bounds;
+    QVERIFY(window_->viewport()->width() > 480);
+    vp->setMaximumWidth(330); // the viewport's minimum is 320
+    QTRY_VERIFY(vp->width() <= 330);
+    QTRY_COMPARE(window_->viewport()->width(), vp->width()); // the native window follows
+    QTRY_VERIFY(aspectFollows(*window_->viewport()));        // and its resize event has come
+    QVERIFY(window_->viewport()->height() > window_->viewport()->width());
+    QPointF e = ndcExtent(window_->viewport()->camera().spec(), bounds);
+    QVERIFY2(e.x() <= 1.0 && e.y() <= 1.0, "re-framed for the narrow viewport");
+    QVERIFY(std::max(e.x(), e.y()) > 0.9); // tight, not just inside
+    // Once the user has moved the camera it stays; F frames for the aspect again.
+    window_->viewport()->setAutoFrame(false);
+    window_->viewport()->camera().dolly(6.0f);
+    e = ndcExtent(window_->viewport()->camera().spec(), bounds);
+    QVERIFY(e.x() > 1.0); // dollied in: clipped, as the user asked
+    QTest::keyClick(window_->viewport(), Qt::Key_F);
+    e = ndcExtent(window_->viewport()->camera().spec(), bounds);
+    QVERIFY2(e.x() <= 1.0 && e.y() <= 1.0, "frame all (F)");
+    QVERIFY(std::max(e.x(), e.y()) > 0.9);
+    vp->setMaximumWidth(QWIDGETSIZE_MAX);
+}
+
+void ViewportTests::progressReportsEveryStage() {
+    QSignalSpy progress(&window_->loader(), &SceneLoadJob::progress);
+    QVERIFY(load(*window_, test::asset(QStringLiteral("DamagedHelmet"))));
+    QList<LoadStep> steps;
+    int last_textures_done = -1, textures_total = -1;
+    for (const QList<QVariant>& args : progress) {
+        const auto step = args.at(0).value<LoadStep>();
+        if (steps.isEmpty() || steps.back() != step) steps << step;
+        if (step == LoadStep::Textures) {
+            last_textures_done = args.at(1).toInt();
+            textures_total = args.at(2).toInt();
+        }
+    }
+    const QList<LoadStep> expected = {LoadStep::Parse, LoadStep::Geometry, LoadStep::Tangents,
+                                      LoadStep::Textures, LoadStep::Idle};
+    QCOMPARE(steps, expected);
+    QVERIFY(textures_total > 0);
+    QCOMPARE(last_textures_done, textures_total); // the per-texture count reaches the end
+    if (!hasGpu()) return;
+    // The renderer was there: the loader thread prepared the GPU textures (cache,
+    // BC7/BC5), and the texture dock shows their records.
+    const SceneExtras* extras = window_->context().extras();
+    QVERIFY(extras && extras->textures);
+    QCOMPARE(textures_total, 5); // DamagedHelmet: five images in five roles
+    const TextureTableModel* m = window_->textureDock()->model();
+    const auto cell = [m](int row, int column) { return m->index(row, column).data().toString(); };
+    const QStringList states = {QStringLiteral("hit"), QStringLiteral("miss")};
+    for (int row = 0; row < m->rowCount(); ++row) {
+        QVERIFY2(states.contains(cell(row, TextureTableModel::CacheStateColumn)),
+                 qPrintable(cell(row, TextureTableModel::CacheStateColumn)));
+        QVERIFY(cell(row, TextureTableModel::FormatColumn).startsWith(QStringLiteral("BC")) ||
+                cell(row, TextureTableModel::FormatColumn).startsWith(QStringLiteral("R8G8B8A8")));
+        QCOMPARE(cell(row, TextureTableModel::HashColumn).size(), 16);
+        QVERIFY(cell(row, TextureTableModel::GpuBytesColumn) != QStringLiteral("—"));
+        QCOMPARE(cell(row, TextureTableModel::MipsColumn), QStringLiteral("12")); // 2048² chain
+    }
+    // Loaded again: every texture now comes out of the cache.
+    QVERIFY(load(*window_, test::asset(QStringLiteral("DamagedHelmet"))));
+    for (int row = 0; row < m->rowCount(); ++row)
+        QCOMPARE(cell(row, TextureTableModel::CacheStateColumn), QStringLiteral("hit"));
+}
+
+void ViewportTests::cancelDropsTheLoadAndLeaksNothing() {
+    QVERIFY(load(*window_, QStringLiteral("builtin:default")));
+    const Scene* before = window_->context().scene();
+    // Per-frame buffers (overlay lines, culled ids) are made on first use, per frame
+    // in flight: draw a few frames first.
+    for (int f = 0; hasGpu() && f < 3; ++f) QVERIFY(nextFrame(*window_));
+    const std::int64_t objects = hasGpu() ? window_->gpuObjectCount() : -1;
+    QSignalSpy loaded(window_.get(), &MainWindow::sceneLoaded);
+    QSignalSpy canceled(window_.get(), &MainWindow::loadCanceled);
+    std::uint64_t warm = 0;
+    for (int i = 0; i < 12; ++i) {
+        // Cancel as soon as the engine reports its first stage: the worker stops there.
+        QMetaObject::Connection c =
+            connect(&window_->loader(), &SceneLoadJob::progress, this, [this](LoadStep step) {
+                if (step == LoadStep::Geometry || step == LoadStep::Tangents) window_->cancelLoad();
+            });
+        window_->openScene(test::asset(QStringLiteral("DamagedHelmet")));
+        QTRY_VERIFY_WITH_TIMEOUT(!window_->loader().running(), kLoadTimeoutMs);
+        disconnect(c);
+        QTRY_COMPARE_WITH_TIMEOUT(SceneLoadJob::workersInFlight(), 0, kLoadTimeoutMs);
+        QCoreApplication::processEvents();
+        if (i == 3) warm = resident_kib();
+    }
+    QCOMPARE(canceled.count(), 12);
+    QCOMPARE(loaded.count(), 0);
+    QCOMPARE(window_->context().scene(), before); // rolled back: the old scene stays
+    QVERIFY(window_->lastProgressText().contains(QStringLiteral("/4")));
+    if (objects >= 0) {
+        for (int f = 0; f < 3; ++f) QVERIFY(nextFrame(*window_));
+        QCOMPARE(window_->gpuObjectCount(), objects);
+    }
+    QVERIFY2(resident_kib() < warm + 32 * 1024, "cancelled loads leave memory behind");
+    QVERIFY(load(*window_, QStringLiteral("builtin:grid?n=10"))); // and loading still works
+}
+
+void ViewportTests::textureCacheActions() {
+    if (!hasGpu()) QSKIP("no Vulkan device: no texture upload");
+    QTemporaryDir dir; // a cache of this test alone
+    const QString before = EditorSettings().cacheDirectory();
+    EditorSettings().setCacheDirectory(dir.path());
+    const TextureTableModel* m = window_->textureDock()->model();
+    const auto state = [m](int row) {
+        return m->index(row, TextureTableModel::CacheStateColumn).data().toString();
+    };
+    QVERIFY(load(*window_, QStringLiteral("builtin:default")));
+    QCOMPARE(m->rowCount(), 3);
+    for (int row = 0; row < 3; ++row) QCOMPARE(state(row), QStringLiteral("miss"));
+    QVERIFY(window_->textureDock()->recompressButton()->isEnabled());
+    QVERIFY(window_->textureDock()->clearCacheButton()->isEnabled());
+    QVERIFY(load(*window_, QStringLiteral("builtin:default")));
+    for (int row = 0; row < 3; ++row) QCOMPARE(state(row), QStringLiteral("hit"));
+
+    // Recompress texture 0: its file goes, the reload compresses only it again.
+    QSignalSpy loaded(window_.get(), &MainWindow::sceneLoaded);
+    window_->recompressTexture(0);
+    QVERIFY(loaded.wait(kLoadTimeoutMs));
+    QCOMPARE(state(0), QStringLiteral("miss"));
+    QCOMPARE(state(1), QStringLiteral("hit"));
+    QCOMPARE(state(2), QStringLiteral("hit"));
+
+    // Clear: every KTX2 file of the directory is gone.
+    QCOMPARE(window_->clearTextureCache(), 3);
+    QVERIFY(QDir(dir.path()).entryList({QStringLiteral("*.ktx2")}, QDir::Files).isEmpty());
+    EditorSettings().setCacheDirectory(before);
+}
+
+QTEST_MAIN(ViewportTests)
+#include "viewport_tests.moc"

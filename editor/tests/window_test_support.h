@@ -1,0 +1,55 @@
+#pragma once
+// Helpers of the window-level QtTest suites (under Xvfb).
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <cstdint>
+#include <fstream>
+
+#include "main_window.h"
+
+namespace sherpa::editor::test {
+
+inline constexpr int kLoadTimeoutMs = 60000;
+
+// Opens `spec` and waits (bounded) for the load to end; true when it loaded.
+inline bool load(MainWindow& w, const QString& spec) {
+    QSignalSpy loaded(&w, &MainWindow::sceneLoaded);
+    QSignalSpy failed(&w, &MainWindow::loadFailed);
+    w.openScene(spec);
+    QElapsedTimer t;
+    t.start();
+    while (loaded.isEmpty() && failed.isEmpty() && t.elapsed() < kLoadTimeoutMs)
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 20);
+    return loaded.count() == 1;
+}
+
+// Settings in a directory of this process alone: QStandardPaths' test mode shares
+// ~/.qttest between every test process of the user (other worktrees included).
+inline void isolate_settings() {
+    static QTemporaryDir dir;
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, dir.path());
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, dir.path());
+    QSettings().clear();
+}
+
+// The validation layer's messages since the last call ("" when none); suites set
+// SHERPA_VALIDATION=1 before creating the Vulkan instance and fail on any.
+inline QString fresh_validation_messages(const MainWindow& w, qsizetype& seen) {
+    if (!w.gpuValidationMessages) return {};
+    const QStringList messages = w.gpuValidationMessages();
+    const QStringList fresh = messages.mid(seen);
+    seen = messages.size();
+    return fresh.join(QLatin1Char('\n'));
+}
+
+inline std::uint64_t resident_kib() {
+    std::ifstream statm("/proc/self/statm");
+    std::uint64_t size = 0, resident = 0;
+    statm >> size >> resident;
+    return resident * 4; // 4 KiB pages
+}
+
+} // namespace sherpa::editor::test

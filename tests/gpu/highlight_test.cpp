@@ -1,0 +1,90 @@
+// The selection highlight draws: the highlighted instance gains orange pixels
+// (wireframe and box), a highlighted triangle and vertex magenta ones; an
+// instance that is not drawn changes nothing. The highlighted render is written
+// to highlight_box.png next to the test binary for inspection.
+#include "gpu_test_support.h"
+
+#include <sherpa/gpu/image_io.h>
+
+namespace sherpa::test {
+namespace {
+
+constexpr std::uint32_t kSize = 160;
+
+struct Counts {
+    std::size_t orange = 0, magenta = 0;
+};
+
+Counts count_highlight(const std::vector<std::uint8_t>& rgba) {
+    // sRGB encodings of kHighlightColor (255, 180, 0) and kHighlightDetailColor.
+    Counts c;
+    for (std::size_t i = 0; i < rgba.size(); i += 4) {
+        const int r = rgba[i], g = rgba[i + 1], b = rgba[i + 2];
+        if (r > 235 && g > 160 && g < 200 && b < 30) ++c.orange;
+        if (r > 235 && g < 30 && b > 235) ++c.magenta;
+    }
+    return c;
+}
+
+class HighlightTest : public GpuTest {
+protected:
+    std::vector<std::uint8_t> render(const gpu::RenderSettings& s) {
+        std::vector<std::uint8_t> rgba;
+        renderer().render(s, &rgba);
+        return rgba;
+    }
+    gpu::RenderSettings settings() {
+        gpu::RenderSettings s;
+        s.width = s.height = kSize;
+        std::string error;
+        EXPECT_TRUE(gpu::parse_camera_spec("eye=1.5,1.2,2:target=0,0,0", s.camera, error)) << error;
+        return s;
+    }
+};
+
+TEST_F(HighlightTest, SelectedInstanceTriangleAndVertexAreDrawn) {
+    auto scene = load(gltf_asset("BoxTextured"));
+    ASSERT_TRUE(scene);
+    ASSERT_EQ(scene->instances.size(), 1u);
+    renderer().load(*scene);
+    gpu::RenderSettings s = settings();
+    const Counts plain = count_highlight(render(s));
+
+    s.highlight_instance = 0;
+    const Counts instance = count_highlight(render(s));
+    EXPECT_GT(instance.orange, plain.orange + 200) << "wireframe and box in orange";
+    EXPECT_EQ(instance.magenta, plain.magenta);
+
+    s.highlight_triangle = 0;
+    s.highlight_vertex = 0;
+    const std::vector<std::uint8_t> detailed = render(s);
+    const Counts detail = count_highlight(detailed);
+    EXPECT_GT(detail.magenta, plain.magenta + 100) << "filled triangle and vertex tripod";
+    std::string error;
+    EXPECT_TRUE(gpu::write_png("highlight_box.png", kSize, kSize, detailed, error)) << error;
+
+    // Out of range: no instance, so nothing is highlighted (and nothing breaks).
+    s.highlight_instance = 7;
+    const Counts none = count_highlight(render(s));
+    EXPECT_EQ(none.orange, plain.orange);
+    EXPECT_EQ(none.magenta, plain.magenta);
+    renderer().unload();
+}
+
+TEST_F(HighlightTest, HighlightAlongsideOtherLineOverlays) {
+    // The box overlay, the cull overlay and the highlight share the frame's line buffer.
+    auto scene = load("builtin:default");
+    ASSERT_TRUE(scene);
+    renderer().load(*scene);
+    gpu::RenderSettings s = settings();
+    s.camera = {};
+    s.overlays = gpu::kOverlayBounds | gpu::kOverlayCullBoxes;
+    const Counts plain = count_highlight(render(s));
+    s.highlight_instance = static_cast<std::uint32_t>(scene->instances.size() / 2);
+    const Counts lit = count_highlight(render(s));
+    EXPECT_GT(lit.orange, plain.orange);
+    renderer().unload();
+}
+
+} // namespace
+} // namespace sherpa::test

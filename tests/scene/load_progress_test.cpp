@@ -1,0 +1,90 @@
+// load_scene's progress reports and cancellation: every stage is reported in
+// order with a final done == total, and a cancelled load returns no scene.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <mutex>
+
+#include <sherpa/scene/scene_loader.h>
+
+#include "test_support.h"
+
+namespace sherpa::test {
+namespace {
+
+struct Report {
+    LoadStage stage;
+    std::size_t done, total;
+};
+
+std::vector<Report> load_with_reports(const std::string& spec, LoadResult& result) {
+    std::vector<Report> reports;
+    std::mutex m; // tangent progress comes from worker threads
+    LoadOptions options;
+    options.progress = [&](LoadStage stage, std::size_t done, std::size_t total) {
+        std::lock_guard lock(m);
+        reports.push_back({stage, done, total});
+    };
+    result = load_scene(spec, options);
+    return reports;
+}
+
+void expect_stages(const std::vector<Report>& reports, std::vector<LoadStage> stages,
+                   std::size_t meshes) {
+    std::vector<LoadStage> seen;
+    for (const Report& r : reports)
+        if (seen.empty() || seen.back() != r.stage) seen.push_back(r.stage);
+    EXPECT_EQ(seen, stages);
+    for (LoadStage stage : stages) { // each stage ends complete
+        const Report* last = nullptr;
+        for (const Report& r : reports)
+            if (r.stage == stage) last = &r;
+        ASSERT_NE(last, nullptr);
+        EXPECT_EQ(last->done, last->total) << to_string(stage);
+        if (stage == LoadStage::Tangents) {
+            EXPECT_EQ(last->total, meshes);
+        }
+    }
+}
+
+TEST(LoadProgress, GltfReportsParseGeometryTangents) {
+    LoadResult r;
+    const auto reports = load_with_reports(gltf_asset("DamagedHelmet"), r);
+    ASSERT_TRUE(r) << r.error;
+    expect_stages(reports, {LoadStage::Parse, LoadStage::Geometry, LoadStage::Tangents},
+                  r.scene->meshes.size());
+}
+
+TEST(LoadProgress, BuiltinReportsGeometryTangents) {
+    LoadResult r;
+    const auto reports = load_with_reports("builtin:default", r);
+    ASSERT_TRUE(r) << r.error;
+    expect_stages(reports, {LoadStage::Geometry, LoadStage::Tangents}, r.scene->meshes.size());
+}
+
+TEST(LoadProgress, CancelAtEachStageReturnsNoScene) {
+    for (LoadStage stop_at : {LoadStage::Parse, LoadStage::Geometry, LoadStage::Tangents}) {
+        CancelToken token;
+        LoadOptions options;
+        options.cancel = &token;
+        std::atomic<int> later{0}; // reports of stages after the cancelled one
+        options.progress = [&](LoadStage stage, std::size_t, std::size_t) {
+            if (token.cancelled() && stage != stop_at) ++later;
+            if (stage == stop_at) token.cancel();
+        };
+        const LoadResult r = load_scene(gltf_asset("DamagedHelmet"), options);
+        EXPECT_FALSE(r) << to_string(stop_at);
+        EXPECT_TRUE(r.cancelled) << to_string(stop_at);
+        EXPECT_EQ(r.error, "cancelled");
+        // The stage that saw the cancel may finish reporting; no later stage starts.
+        EXPECT_EQ(later.load(), 0) << to_string(stop_at);
+    }
+    CancelToken before;
+    before.cancel();
+    LoadOptions options;
+    options.cancel = &before;
+    EXPECT_TRUE(load_scene("builtin:default", options).cancelled);
+}
+
+} // namespace
+} // namespace sherpa::test

@@ -99,4 +99,21 @@ bool needs_all_streams(const RenderSettings& s) {
     return (s.overlays & (kOverlayNormals | kOverlayTangents | kOverlayBitangents)) != 0;
 }
 
+bool prepass_enabled(PrepassMode mode, bool cpu_device) {
+    // A CPU rasterizer (lavapipe) pays for the prepass with a second run of vertex
+    // pulling, triangle setup and binning over every triangle, and its early depth
+    // test already skips whole hidden blocks of a front-to-back-ish draw; measured
+    // there the prepass costs more than the overdraw it saves (engine/gpu/README.md).
+    // GPUs keep it: their cost is shading, and it shades each pixel once.
+    switch (mode) {
+    case PrepassMode::On:
+        return true;
+    case PrepassMode::Off:
+        return false;
+    case PrepassMode::Auto:
+        break;
+    }
+    return !cpu_device;
+}
+
 } // namespace sherpa::gpu

@@ -56,6 +56,9 @@ enum class CullPath : std::uint32_t {
 std::string_view to_string(CullPath p);
 std::optional<CullPath> parse_cull_path(std::string_view name);
 
+// Depth prepass before opaque shading. Auto picks per device (prepass_enabled).
+enum class PrepassMode : std::uint32_t { Auto, On, Off };
+
 std::string_view to_string(DebugView v);
 std::optional<DebugView> parse_debug_view(std::string_view name);
 std::vector<std::string_view> debug_view_names();
@@ -73,7 +76,7 @@ struct RenderSettings {
     // Reuse the shadow cascades while camera, light and scene are unchanged. False
     // re-renders them every frame (to measure their cost).
     bool cache_shadows = true;
-    bool depth_prepass = true;
+    PrepassMode depth_prepass = PrepassMode::Auto;
     // Benchmark floor: the same draws with positions only and a constant colour.
     bool floor_only = false;
     glm::vec4 clear_color{0.18f, 0.19f, 0.21f, 1.0f}; // linear
@@ -98,5 +101,8 @@ struct RenderSettings {
 // Does this view/overlay need streams the materials do not use (so the scene must
 // be uploaded with StreamPolicy::AllPresent)?
 bool needs_all_streams(const RenderSettings& settings);
+
+// Whether a frame on this kind of device draws the depth prepass.
+bool prepass_enabled(PrepassMode mode, bool cpu_device);
 
 } // namespace sherpa::gpu

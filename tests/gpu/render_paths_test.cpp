@@ -1,6 +1,6 @@
 // The renderer's speed choices must not change what a frame shows: the depth
-// prepass (on or off, per device by default) and forward pipelines specialised for
-// the vertex streams a mesh holds give the same pixels as the general paths.
+// prepass (on or off; Auto decides per device and scene density) and forward pipelines specialised
+// for the vertex streams a mesh holds give the same pixels as the general paths.
 #include "gpu_test_support.h"
 
 #include <sherpa/gpu/render_settings.h>
@@ -10,13 +10,19 @@
 namespace sherpa::test {
 namespace {
 
-TEST(PrepassModeTest, AutoIsOffOnCpuDevicesAndOnForGpus) {
-    EXPECT_FALSE(gpu::prepass_enabled(gpu::PrepassMode::Auto, true));
-    EXPECT_TRUE(gpu::prepass_enabled(gpu::PrepassMode::Auto, false));
-    for (bool cpu : {true, false}) {
-        EXPECT_TRUE(gpu::prepass_enabled(gpu::PrepassMode::On, cpu));
-        EXPECT_FALSE(gpu::prepass_enabled(gpu::PrepassMode::Off, cpu));
-    }
+TEST(PrepassModeTest, AutoIsOnForGpusAndOnCpuDevicesUpToOneTrianglePerFourPixels) {
+    constexpr std::uint64_t kPixels = 1280 * 720;
+    EXPECT_TRUE(gpu::prepass_enabled(gpu::PrepassMode::Auto, false, 15452, kPixels));
+    EXPECT_TRUE(gpu::prepass_enabled(gpu::PrepassMode::Auto, false, 1040409, kPixels));
+    EXPECT_TRUE(gpu::prepass_enabled(gpu::PrepassMode::Auto, true, 15452, kPixels));
+    EXPECT_TRUE(gpu::prepass_enabled(gpu::PrepassMode::Auto, true, kPixels / 4, kPixels));
+    EXPECT_FALSE(gpu::prepass_enabled(gpu::PrepassMode::Auto, true, kPixels / 4 + 1, kPixels));
+    EXPECT_FALSE(gpu::prepass_enabled(gpu::PrepassMode::Auto, true, 1040409, kPixels));
+    for (bool cpu : {true, false})
+        for (std::uint64_t triangles : {std::uint64_t{1}, kPixels}) {
+            EXPECT_TRUE(gpu::prepass_enabled(gpu::PrepassMode::On, cpu, triangles, kPixels));
+            EXPECT_FALSE(gpu::prepass_enabled(gpu::PrepassMode::Off, cpu, triangles, kPixels));
+        }
 }
 
 // Pixels where some channel differs by more than `tolerance`.

@@ -265,7 +265,9 @@ void Renderer::record_passes(VkCommandBuffer cmd, FrameSlot& slot, const RenderT
         for (std::uint32_t i = 2; i < kTimestampCount - 1; ++i)
             vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ts, i);
     } else {
-        const bool prepass = prepass_enabled(settings.depth_prepass, context_.info().is_cpu());
+        const bool prepass = prepass_enabled(settings.depth_prepass, context_.info().is_cpu(),
+                                             scene_ ? scene_->triangle_count() : 0,
+                                             std::uint64_t{target.width} * target.height);
         if (prepass) {
             set_depth(cmd, VK_COMPARE_OP_GREATER, true);
             draw_groups(cmd, slot, p, DrawPipeline{p.get(PipelineId::PrepassOpaque)},

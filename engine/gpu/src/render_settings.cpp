@@ -99,12 +99,8 @@ bool needs_all_streams(const RenderSettings& s) {
     return (s.overlays & (kOverlayNormals | kOverlayTangents | kOverlayBitangents)) != 0;
 }
 
-bool prepass_enabled(PrepassMode mode, bool cpu_device) {
-    // A CPU rasterizer (lavapipe) pays for the prepass with a second run of vertex
-    // pulling, triangle setup and binning over every triangle, and its early depth
-    // test already skips whole hidden blocks of a front-to-back-ish draw; measured
-    // there the prepass costs more than the overdraw it saves (engine/gpu/README.md).
-    // GPUs keep it: their cost is shading, and it shades each pixel once.
+bool prepass_enabled(PrepassMode mode, bool cpu_device, std::uint64_t triangles,
+                     std::uint64_t pixels) {
     switch (mode) {
     case PrepassMode::On:
         return true;
@@ -113,7 +109,13 @@ bool prepass_enabled(PrepassMode mode, bool cpu_device) {
     case PrepassMode::Auto:
         break;
     }
-    return !cpu_device;
+    // GPUs keep the prepass: their cost is shading, and it shades each pixel once.
+    // A CPU rasterizer (lavapipe) pays for it with a second run of vertex pulling,
+    // triangle setup and binning, per triangle; it saves the shading of hidden
+    // pixels, per pixel. Measured there (engine/gpu/README.md) it pays off up to
+    // DamagedHelmet's and 2CylinderEngine's densities (15k and 121k triangles at
+    // 1280x720: ~10% faster) and costs ~25% at MetalRoughSpheresNoTextures' 1M.
+    return !cpu_device || triangles * 4 <= pixels;
 }
 
 } // namespace sherpa::gpu

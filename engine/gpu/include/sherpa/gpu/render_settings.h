@@ -102,7 +102,10 @@ struct RenderSettings {
 // be uploaded with StreamPolicy::AllPresent)?
 bool needs_all_streams(const RenderSettings& settings);
 
-// Whether a frame on this kind of device draws the depth prepass.
-bool prepass_enabled(PrepassMode mode, bool cpu_device);
+// Whether a frame of `triangles` at `pixels` draws the depth prepass: Auto draws it
+// on GPUs, and on CPU devices unless the scene has more than one triangle per four
+// pixels (see render_settings.cpp).
+bool prepass_enabled(PrepassMode mode, bool cpu_device, std::uint64_t triangles,
+                     std::uint64_t pixels);
 
 } // namespace sherpa::gpu

@@ -1,5 +1,5 @@
 // sherpa-bench-render [--frames N] [--width W --height H] [--csv] [--no-prepass|--prepass]
-//                     [--no-shadows] [--view NAME] [--quick] [--lit-only] [SCENE...]
+//                     [--no-shadows] [--view NAME] [--quick] [--lit-only] [--no-bc] [SCENE...]
 // Per scene: median frame time of the full renderer (lit view, all passes) next to
 // a floor measured in the same run on the same device: the same triangles drawn
 // with positions only and a constant colour. Also the lit frame with the shadow
@@ -75,7 +75,7 @@ std::vector<std::string> default_scenes() {
 
 int main(int argc, char** argv) {
     int frames = 20;
-    bool csv = false, quick = false, lit_only = false;
+    bool csv = false, quick = false, lit_only = false, no_bc = false;
     gpu::RenderSettings lit;
     std::vector<std::string> scenes;
     for (int i = 1; i < argc; ++i) {
@@ -91,6 +91,8 @@ int main(int argc, char** argv) {
             lit.depth_prepass = gpu::PrepassMode::Off;
         else if (!std::strcmp(argv[i], "--prepass"))
             lit.depth_prepass = gpu::PrepassMode::On;
+        else if (!std::strcmp(argv[i], "--no-bc")) // RGBA8 textures, as render --no-bc
+            no_bc = true;
         else if (!std::strcmp(argv[i], "--no-shadows"))
             lit.shadows = false;
         else if (!std::strcmp(argv[i], "--quick")) // skip the shadows-every-frame column
@@ -115,6 +117,7 @@ int main(int argc, char** argv) {
     gpu::Renderer renderer(context);
     gpu::TextureSettings textures; // as sherpa-cli render: the user's texture cache
     textures.cache_dir = tex::default_cache_dir_from_environment();
+    textures.force_rgba8 = no_bc;
     renderer.set_texture_settings(textures);
     std::printf("device: %s, %ux%u, median of %d frames\n", context.info().name.c_str(), lit.width,
                 lit.height, frames);

@@ -1,4 +1,5 @@
-// sherpa-bench-render [--frames N] [--width W --height H] [--csv] [SCENE...]
+// sherpa-bench-render [--frames N] [--width W --height H] [--csv] [--no-prepass|--prepass]
+//                     [--no-shadows] [--view NAME] [--quick] [--lit-only] [--no-bc] [SCENE...]
 // Per scene: median frame time of the full renderer (lit view, all passes) next to
 // a floor measured in the same run on the same device: the same triangles drawn
 // with positions only and a constant colour. Also the lit frame with the shadow
@@ -74,7 +75,7 @@ std::vector<std::string> default_scenes() {
 
 int main(int argc, char** argv) {
     int frames = 20;
-    bool csv = false;
+    bool csv = false, quick = false, lit_only = false, no_bc = false;
     gpu::RenderSettings lit;
     std::vector<std::string> scenes;
     for (int i = 1; i < argc; ++i) {
@@ -86,7 +87,26 @@ int main(int argc, char** argv) {
             lit.height = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--csv"))
             csv = true;
-        else
+        else if (!std::strcmp(argv[i], "--no-prepass"))
+            lit.depth_prepass = gpu::PrepassMode::Off;
+        else if (!std::strcmp(argv[i], "--prepass"))
+            lit.depth_prepass = gpu::PrepassMode::On;
+        else if (!std::strcmp(argv[i], "--no-bc")) // RGBA8 textures, as render --no-bc
+            no_bc = true;
+        else if (!std::strcmp(argv[i], "--no-shadows"))
+            lit.shadows = false;
+        else if (!std::strcmp(argv[i], "--quick")) // skip the shadows-every-frame column
+            quick = true;
+        else if (!std::strcmp(argv[i], "--lit-only")) // for profilers: no floor, no shadow column
+            lit_only = quick = true;
+        else if (!std::strcmp(argv[i], "--view") && i + 1 < argc) {
+            const auto v = gpu::parse_debug_view(argv[++i]);
+            if (!v) {
+                std::fprintf(stderr, "error: unknown view %s\n", argv[i]);
+                return 2;
+            }
+            lit.view = *v;
+        } else
             scenes.push_back(argv[i]);
     }
     if (scenes.empty()) scenes = default_scenes();
@@ -97,6 +117,7 @@ int main(int argc, char** argv) {
     gpu::Renderer renderer(context);
     gpu::TextureSettings textures; // as sherpa-cli render: the user's texture cache
     textures.cache_dir = tex::default_cache_dir_from_environment();
+    textures.force_rgba8 = no_bc;
     renderer.set_texture_settings(textures);
     std::printf("device: %s, %ux%u, median of %d frames\n", context.info().name.c_str(), lit.width,
                 lit.height, frames);
@@ -117,9 +138,9 @@ int main(int argc, char** argv) {
         floor.floor_only = true;
         gpu::RenderSettings uncached = lit;
         uncached.cache_shadows = false;
-        const FrameTimes floor_t = measure(renderer, floor, frames);
+        const FrameTimes floor_t = lit_only ? FrameTimes{} : measure(renderer, floor, frames);
         const FrameTimes lit_t = measure(renderer, lit, frames);
-        const double shadow_ms = measure(renderer, uncached, frames).wall_ms;
+        const double shadow_ms = quick ? 0.0 : measure(renderer, uncached, frames).wall_ms;
         const double floor_ms = floor_t.wall_ms, lit_ms = lit_t.wall_ms;
         const std::string name =
             spec.rfind("builtin:", 0) == 0 ? spec : fs::path(spec).stem().string();

@@ -1,6 +1,6 @@
 // sherpa-cli render SCENE -o OUT.png [--width W --height H] [--view NAME]
 //   [--overlay NAME ...] [--camera auto|gltf:N|eye=x,y,z:target=x,y,z[...]]
-//   [--frames N] [--report FILE.json] [--validation] [--no-shadows] [--no-prepass]
+//   [--frames N] [--report FILE.json] [--validation] [--no-shadows] [--prepass|--no-prepass]
 //   [--glyph-length L] [--floor] [--cache-dir DIR] [--cache-cap-mb N] [--quality N]
 //   [--no-cache] [--no-bc]
 #include "cli_common.h"
@@ -26,7 +26,8 @@ constexpr const char* kUsage =
     "usage: sherpa-cli render SCENE -o OUT.png [--width W --height H] [--view NAME]\n"
     "         [--overlay NAME ...] [--camera auto|gltf:N|eye=x,y,z:target=x,y,z[:up=..][:fov=DEG]"
     "[:aspect=A][:near=N][:far=F]]\n"
-    "         [--frames N] [--report FILE.json] [--validation] [--no-shadows] [--no-prepass]\n"
+    "         [--frames N] [--report FILE.json] [--validation] [--no-shadows] "
+    "[--prepass|--no-prepass]\n"
     "         [--glyph-length L] [--floor] [--cull none|cpu|gpu] [--cull-method "
     "sphere|pvertex|exact]\n"
     "         [--cull-check] [--freeze-cull eye=x,y,z:target=x,y,z[:...]]\n         ";
@@ -147,8 +148,10 @@ int run_render(Args args) {
             validation = true;
         } else if (a == "--no-shadows") {
             settings.shadows = false;
+        } else if (a == "--prepass") {
+            settings.depth_prepass = gpu::PrepassMode::On;
         } else if (a == "--no-prepass") {
-            settings.depth_prepass = false;
+            settings.depth_prepass = gpu::PrepassMode::Off;
         } else if (a == "--floor") {
             settings.floor_only = true;
         } else if (!a.empty() && a[0] == '-') {

@@ -1,5 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_vote : require
 // Forward shading of opaque, masked and blended materials, and every debug view.
 #include "common.glsl"
 #include "bindings.glsl"
@@ -14,7 +15,6 @@ layout(location = 2) in vec4 in_tangent;
 layout(location = 3) in vec2 in_uv0;
 layout(location = 4) in vec2 in_uv1;
 layout(location = 5) in vec4 in_color;
-layout(location = 6) in vec3 in_shadow[SHADOW_CASCADES];
 
 layout(location = 0) out vec4 out_color;
 
@@ -22,6 +22,15 @@ layout(location = 0) out vec4 out_color;
 // lit pipeline carries no debug-view code. On a SIMD CPU rasterizer a run-time
 // switch would execute (masked) every case for every pixel.
 layout(constant_id = 0) const uint VIEW = VIEW_LIT;
+// The optional streams (HAS_TANGENT | HAS_UV0 | HAS_UV1 | HAS_COLOR) that the
+// drawn meshes hold. An absent one reads its glTF default as a constant, so its
+// varying is never set up or interpolated: on a CPU rasterizer each varying costs
+// per triangle and per pixel. Tangents are read whenever the view shows them (an
+// absent tangent stream means no material of the mesh has a normal map, so lit
+// shading never uses them).
+layout(constant_id = 1) const uint STREAMS = HAS_TANGENT | HAS_UV0 | HAS_UV1 | HAS_COLOR;
+const bool READ_TANGENT = (STREAMS & HAS_TANGENT) != 0u || VIEW == VIEW_TANGENT ||
+                          VIEW == VIEW_BITANGENT || VIEW == VIEW_TANGENT_W;
 
 vec3 punctual_light(Surface s, GPULight light, vec3 pos) {
     uint type = uint(light.direction_type.w);
@@ -56,18 +65,21 @@ void main() {
     GPUMaterialData m = materials[pc.material_id];
     GPUMaterialExtra x = material_extras[pc.material_id];
     const uint view = VIEW;
-    vec2 uv0 = in_uv0, uv1 = in_uv1;
+    vec2 uv0 = (STREAMS & HAS_UV0) != 0u ? in_uv0 : vec2(0.0);
+    vec2 uv1 = (STREAMS & HAS_UV1) != 0u ? in_uv1 : vec2(0.0);
+    vec4 color = (STREAMS & HAS_COLOR) != 0u ? in_color : vec4(1.0);
+    vec4 tangent = READ_TANGENT ? in_tangent : vec4(1.0, 0.0, 0.0, 1.0);
 
     // Alpha decides coverage in every view; other inputs only where a view shows them.
     bool need_base = view == VIEW_LIT || view == VIEW_BASE_COLOR || m.alpha_mode != SHERPA_ALPHA_OPAQUE;
-    vec4 base = need_base ? base_color(m, x, in_color, uv0, uv1) : vec4(1.0);
+    vec4 base = need_base ? base_color(m, x, color, uv0, uv1) : vec4(1.0);
     if (m.alpha_mode == SHERPA_ALPHA_MASK && base.a < m.alpha_cutoff) discard;
 
     vec3 v = normalize(frame.camera_position.xyz - in_world_pos);
     vec3 n = normalize(in_normal);
-    vec3 t = in_tangent.xyz;
+    vec3 t = tangent.xyz;
     t = dot(t, t) > 1e-12 ? normalize(t - n * dot(n, t)) : vec3(1.0, 0.0, 0.0);
-    float handedness = in_tangent.w < 0.0 ? -1.0 : 1.0;
+    float handedness = tangent.w < 0.0 ? -1.0 : 1.0;
     vec3 b = cross(n, t) * handedness;
     // Double-sided back faces shade with the normal flipped (glTF spec).
     if (m.double_sided != 0u && !gl_FrontFacing) {
@@ -82,16 +94,16 @@ void main() {
     case VIEW_TANGENT: c = encode_vector(t); break;
     case VIEW_BITANGENT: c = encode_vector(b); break;
     case VIEW_TANGENT_W:
-        c = in_tangent.w > 0.0 ? vec3(0.15, 0.75, 0.2) : in_tangent.w < 0.0 ? vec3(0.9, 0.15, 0.1)
-                                                                            : vec3(0.95, 0.8, 0.1);
+        c = tangent.w > 0.0 ? vec3(0.15, 0.75, 0.2) : tangent.w < 0.0 ? vec3(0.9, 0.15, 0.1)
+                                                                      : vec3(0.95, 0.8, 0.1);
         break;
     case VIEW_UV0: c = vec3(fract(uv0), 0.0); break;
     case VIEW_UV1: c = vec3(fract(uv1), 0.0); break;
     case VIEW_UV0_CHECKER: c = checker_color(uv0); break;
     case VIEW_UV1_CHECKER: c = checker_color(uv1); break;
     case VIEW_BASE_COLOR: c = base.rgb; break;
-    case VIEW_METALLIC: c = vec3(metallic_roughness(m, x, uv0, uv1).x); break;
-    case VIEW_ROUGHNESS: c = vec3(metallic_roughness(m, x, uv0, uv1).y); break;
+    case VIEW_METALLIC: c = vec3(metallic_roughness(m, metallic_roughness_texel(m, x, uv0, uv1)).x); break;
+    case VIEW_ROUGHNESS: c = vec3(metallic_roughness(m, metallic_roughness_texel(m, x, uv0, uv1)).y); break;
     case VIEW_OCCLUSION: c = vec3(occlusion(m, x, uv0, uv1)); break;
     case VIEW_EMISSIVE: c = emission(m, x, uv0, uv1); break;
     case VIEW_GEOMETRIC_VS_SHADING: {
@@ -106,13 +118,20 @@ void main() {
             c = base.rgb;
             break;
         }
-        vec2 mr = metallic_roughness(m, x, uv0, uv1);
+        vec4 mr_texel = metallic_roughness_texel(m, x, uv0, uv1);
+        vec2 mr = metallic_roughness(m, mr_texel);
         Surface s = Surface(base.rgb, mr.x, mr.y, mapped_normal(m, x, t, b, n, uv0, uv1), v);
-        float view_depth = -(frame.view * vec4(in_world_pos, 1.0)).z;
-        float shadow = sun_shadow(in_shadow, view_depth);
-        c = brdf_times_cos(s, -normalize(frame.sun_direction.xyz)) * frame.sun_radiance.rgb * shadow;
+        // The sun (and its shadow lookup) only where some pixel of the SIMD group
+        // faces it: a uniform branch, so a CPU rasterizer skips the work.
+        vec3 sun_l = -normalize(frame.sun_direction.xyz);
+        c = vec3(0.0);
+        if (subgroupAny(dot(s.n, sun_l) > 0.0)) {
+            float view_depth = -(frame.view * vec4(in_world_pos, 1.0)).z;
+            float shadow = sun_shadow(in_world_pos, normalize(in_normal), view_depth);
+            c = brdf_times_cos(s, sun_l) * frame.sun_radiance.rgb * shadow;
+        }
         for (uint i = 0u; i < frame.params.y; ++i) c += punctual_light(s, frame.lights[i], in_world_pos);
-        c += ambient_light(s, frame.ambient.rgb) * occlusion(m, x, uv0, uv1);
+        c += ambient_light(s, frame.ambient.rgb) * occlusion(m, x, uv0, uv1, mr_texel);
         c += emission(m, x, uv0, uv1);
         break;
     }

@@ -9,10 +9,8 @@ layout(location = 2) out vec4 out_tangent;
 layout(location = 3) out vec2 out_uv0;
 layout(location = 4) out vec2 out_uv1;
 layout(location = 5) out vec4 out_color;
-// Shadow-map coordinates per cascade. The cascades are orthographic, so these are
-// affine in world space and interpolate exactly; computing them per vertex keeps
-// three matrix products (and their registers) out of the fragment shader.
-layout(location = 6) out vec3 out_shadow[SHADOW_CASCADES];
+// Outputs the fragment shader does not read (absent streams are constants there,
+// see forward.frag) are removed when the pipeline links the two stages.
 
 // Identical math to depth.vert, so the depth prepass and shading agree exactly.
 invariant gl_Position;
@@ -30,10 +28,5 @@ void main() {
     out_uv0 = fetch_uv0(i);
     out_uv1 = fetch_uv1(i);
     out_color = fetch_color(i);
-    // Normal offset against shadow acne, scaled by each cascade's texel size.
-    vec3 n = out_normal;
-    n = dot(n, n) > 0.0 ? normalize(n) : vec3(0.0);
-    for (uint c = 0u; c < SHADOW_CASCADES; ++c)
-        out_shadow[c] = (frame.shadow_view_proj[c] * vec4(world.xyz + n * (frame.cascade_texel[c] * 1.5), 1.0)).xyz;
     gl_Position = frame.view_proj * world;
 }

@@ -12,8 +12,15 @@ struct Surface {
     vec3 v; // unit vector to the eye
 };
 
+// x^5 as products: a CPU rasterizer evaluates pow() as exp2(5 * log2(x)), two
+// polynomial approximations per lane.
+float pow5(float x) {
+    float x2 = x * x;
+    return x2 * x2 * x;
+}
+
 vec3 fresnel_schlick(vec3 f0, float v_dot_h) {
-    return f0 + (1.0 - f0) * pow(clamp(1.0 - v_dot_h, 0.0, 1.0), 5.0);
+    return f0 + (1.0 - f0) * pow5(clamp(1.0 - v_dot_h, 0.0, 1.0));
 }
 
 float d_ggx(float n_dot_h, float a) {
@@ -56,7 +63,7 @@ vec3 hemisphere(vec3 dir, vec3 radiance) {
 vec3 ambient_light(Surface s, vec3 radiance) {
     float n_dot_v = clamp(abs(dot(s.n, s.v)), 1e-4, 1.0);
     vec3 f0 = mix(vec3(0.04), s.albedo, s.metallic);
-    vec3 f = f0 + (max(vec3(1.0 - s.roughness), f0) - f0) * pow(1.0 - n_dot_v, 5.0);
+    vec3 f = f0 + (max(vec3(1.0 - s.roughness), f0) - f0) * pow5(1.0 - n_dot_v);
     vec3 diffuse = (1.0 - f) * (1.0 - s.metallic) * s.albedo * hemisphere(s.n, radiance);
     vec3 r = reflect(-s.v, s.n);
     // Rough surfaces see a blurrier sky: blend the reflected towards the normal's.

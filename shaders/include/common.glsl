@@ -13,7 +13,7 @@
 
 const uint MAX_LIGHTS = 16;
 const uint MAX_CASCADES = 4;   // array size in the frame block
-const uint SHADOW_CASCADES = 3; // cascades actually used (varyings of mesh.vert)
+const uint SHADOW_CASCADES = 3; // cascades actually used
 
 struct GPULight {
     vec4 position_range;  // xyz world position, w range (0 = infinite)

@@ -14,18 +14,35 @@ vec4 base_color(GPUMaterialData m, GPUMaterialExtra x, vec4 vertex_color, vec2 u
     return c;
 }
 
+// The metallic-roughness texel (white when the slot holds the default).
+vec4 metallic_roughness_texel(GPUMaterialData m, GPUMaterialExtra x, vec2 uv0, vec2 uv1) {
+    if (m.metallic_roughness_tex == TEX_WHITE) return vec4(1.0);
+    return sample_slot(x, SLOT_METALLIC_ROUGHNESS, m.metallic_roughness_tex, uv0, uv1);
+}
+
 // x: metallic, y: roughness.
-vec2 metallic_roughness(GPUMaterialData m, GPUMaterialExtra x, vec2 uv0, vec2 uv1) {
-    vec2 mr = vec2(m.metallic_factor, m.roughness_factor);
-    if (m.metallic_roughness_tex != TEX_WHITE)
-        mr *= sample_slot(x, SLOT_METALLIC_ROUGHNESS, m.metallic_roughness_tex, uv0, uv1).bg;
-    return clamp(mr, 0.0, 1.0);
+vec2 metallic_roughness(GPUMaterialData m, vec4 mr_texel) {
+    return clamp(vec2(m.metallic_factor, m.roughness_factor) * mr_texel.bg, 0.0, 1.0);
+}
+
+bool same_transform(GPUTextureTransform a, GPUTextureTransform b) {
+    return a.row0 == b.row0 && a.row1 == b.row1;
 }
 
 float occlusion(GPUMaterialData m, GPUMaterialExtra x, vec2 uv0, vec2 uv1) {
     if (m.occlusion_tex == TEX_WHITE) return 1.0;
     float ao = sample_slot(x, SLOT_OCCLUSION, m.occlusion_tex, uv0, uv1).r;
     return 1.0 + m.occlusion_strength * (ao - 1.0);
+}
+
+// The same, given the metallic-roughness texel already sampled for this pixel:
+// packed occlusion-roughness-metallic textures (the same image and UV transform in
+// both slots, as many exporters write them) are sampled once.
+float occlusion(GPUMaterialData m, GPUMaterialExtra x, vec2 uv0, vec2 uv1, vec4 mr_texel) {
+    if (m.occlusion_tex == m.metallic_roughness_tex && m.occlusion_tex != TEX_WHITE &&
+        same_transform(x.uv[SLOT_OCCLUSION], x.uv[SLOT_METALLIC_ROUGHNESS]))
+        return 1.0 + m.occlusion_strength * (mr_texel.r - 1.0);
+    return occlusion(m, x, uv0, uv1);
 }
 
 vec3 emission(GPUMaterialData m, GPUMaterialExtra x, vec2 uv0, vec2 uv1) {

@@ -1,25 +1,39 @@
-// Cascaded shadow lookup for the main directional light. The vertex stage gives
-// the shadow-map position in every cascade (normal offset included); the cascade
-// is picked by view depth. The comparison sampler filters 2x2 texels per tap;
-// 1 tap on CPU devices, 4 on GPUs (params.w).
+// Cascaded shadow lookup for the main directional light. The cascade is picked by
+// view depth; the shadow-map position is computed here from the world position
+// (normal offset against acne included) rather than interpolated: three vec3
+// varyings per cascade set cost more in triangle setup and interpolation on a CPU
+// rasterizer than one selected matrix product per pixel. The comparison sampler
+// filters 2x2 texels per tap; 1 tap on CPU devices, 4 on GPUs (params.w).
 #ifndef SHERPA_SHADOWS_GLSL
 #define SHERPA_SHADOWS_GLSL
-float sun_shadow(vec3 shadow_pos[SHADOW_CASCADES], float view_depth) {
+// The map has one mip level: explicit zero gradients keep the lookup free of
+// derivatives, so it may sit in non-uniform control flow.
+float shadow_tap(vec2 uv, uint cascade, float depth) {
+    return textureGrad(shadow_map, vec4(uv, float(cascade), depth), vec2(0.0), vec2(0.0));
+}
+
+// n: unit vertex normal (world).
+float sun_shadow(vec3 world, vec3 n, float view_depth) {
     uint cascades = frame.params.z;
     if (frame.sun_direction.w < 0.5 || cascades == 0u) return 1.0;
     vec4 splits = frame.cascade_splits;
     uint c = min(view_depth > splits.x ? (view_depth > splits.y ? 2u : 1u) : 0u, cascades - 1u);
-    vec3 p = c == 0u ? shadow_pos[0] : c == 1u ? shadow_pos[1] : shadow_pos[2];
+    // Per-pixel selects of uniform values; indexing the array with c would gather.
+    mat4 m = c == 0u ? frame.shadow_view_proj[0]
+           : c == 1u ? frame.shadow_view_proj[1] : frame.shadow_view_proj[2];
+    float texel = c == 0u ? frame.cascade_texel.x : c == 1u ? frame.cascade_texel.y : frame.cascade_texel.z;
+    // Normal offset against shadow acne, scaled by the cascade's texel size.
+    vec3 p = (m * vec4(world + n * (texel * 1.5), 1.0)).xyz;
     // The shadow pass uses the same flipped viewport as the camera: +Y is the top row.
     vec2 uv = vec2(0.5 + 0.5 * p.x, 0.5 - 0.5 * p.y);
     if (p.z > 1.0) return 1.0; // beyond the light's far plane; outside x/y the border is lit
-    if (frame.params.w < 4u) return texture(shadow_map, vec4(uv, float(c), p.z));
+    if (frame.params.w < 4u) return shadow_tap(uv, c, p.z);
     vec2 step_uv = 0.5 / vec2(textureSize(shadow_map, 0).xy);
     float lit = 0.0;
-    lit += texture(shadow_map, vec4(uv + vec2(-step_uv.x, -step_uv.y), float(c), p.z));
-    lit += texture(shadow_map, vec4(uv + vec2(step_uv.x, -step_uv.y), float(c), p.z));
-    lit += texture(shadow_map, vec4(uv + vec2(-step_uv.x, step_uv.y), float(c), p.z));
-    lit += texture(shadow_map, vec4(uv + vec2(step_uv.x, step_uv.y), float(c), p.z));
+    lit += shadow_tap(uv + vec2(-step_uv.x, -step_uv.y), c, p.z);
+    lit += shadow_tap(uv + vec2(step_uv.x, -step_uv.y), c, p.z);
+    lit += shadow_tap(uv + vec2(-step_uv.x, step_uv.y), c, p.z);
+    lit += shadow_tap(uv + vec2(step_uv.x, step_uv.y), c, p.z);
     return lit * 0.25;
 }
 #endif

@@ -21,6 +21,9 @@ protected:
         s.cull = path;
         s.cull_check = check;
         s.cache_shadows = false; // every frame culls and draws its cascades
+        // The prepass statistics are checked: draw it even where Auto would skip it
+        // (a CPU device at this size and density).
+        s.depth_prepass = gpu::PrepassMode::On;
         return s;
     }
 };

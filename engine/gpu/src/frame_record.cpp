@@ -61,11 +61,11 @@ void Renderer::record_frame(VkCommandBuffer cmd, std::uint32_t index, const Rend
     record_passes(cmd, slot, target, settings);
 }
 
-void Renderer::draw_groups(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
-                           VkPipeline pipeline, AlphaMode alpha, std::uint32_t cascade, bool cull,
+void Renderer::draw_groups(VkCommandBuffer cmd, FrameSlot& slot, Pipelines& p,
+                           DrawPipeline pipeline, AlphaMode alpha, std::uint32_t cascade, bool cull,
                            CullStats& tally) {
     if (!scene_) return;
-    bool bound = false;
+    VkPipeline bound = VK_NULL_HANDLE;
     GPUPushConstants pc = slot.push_base;
     pc.cascade = cascade;
     const std::uint32_t pass = cascade == kNoCascade ? 0 : 1 + cascade;
@@ -73,11 +73,12 @@ void Renderer::draw_groups(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines
     for (std::size_t gi = 0; gi < scene_->groups().size(); ++gi) {
         const DrawGroup& g = scene_->groups()[gi];
         if (g.alpha != alpha) continue;
-        if (!bound) {
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-            bound = true;
-        }
         const GpuMesh& mesh = scene_->meshes()[g.mesh];
+        // Groups are sorted by mesh: consecutive groups mostly share a pipeline.
+        if (const VkPipeline want = p.resolve(pipeline, mesh.flags); want != bound) {
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, want);
+            bound = want;
+        }
         vkCmdSetCullMode(cmd, cull && !g.double_sided ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE);
         vkCmdSetFrontFace(cmd,
                           g.mirrored ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
@@ -95,8 +96,8 @@ void Renderer::draw_groups(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines
     }
 }
 
-void Renderer::draw_blended(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
-                            VkPipeline pipeline) {
+void Renderer::draw_blended(VkCommandBuffer cmd, FrameSlot& slot, Pipelines& p,
+                            DrawPipeline pipeline) {
     if (!scene_) return;
     // Back to front by the view depth of each instance's bounds centre.
     struct Item {
@@ -116,13 +117,17 @@ void Renderer::draw_blended(VkCommandBuffer cmd, FrameSlot& slot, const Pipeline
     if (items.empty()) return;
     std::stable_sort(items.begin(), items.end(),
                      [](const Item& a, const Item& b) { return a.depth < b.depth; });
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    VkPipeline bound = VK_NULL_HANDLE;
     GPUPushConstants pc = slot.push_base;
     pc.cascade = kNoCascade;
     for (const Item& it : items) {
         if (slot.cull != CullPath::None && !slot.passes[0].visible[it.instance]) continue;
         const DrawGroup& g = groups[it.group];
         const GpuMesh& mesh = scene_->meshes()[g.mesh];
+        if (const VkPipeline want = p.resolve(pipeline, mesh.flags); want != bound) {
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, want);
+            bound = want;
+        }
         vkCmdSetCullMode(cmd, g.double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
         vkCmdSetFrontFace(cmd,
                           g.mirrored ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
@@ -137,7 +142,7 @@ void Renderer::draw_blended(VkCommandBuffer cmd, FrameSlot& slot, const Pipeline
     }
 }
 
-void Renderer::record_shadows(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
+void Renderer::record_shadows(VkCommandBuffer cmd, FrameSlot& slot, Pipelines& p,
                               std::uint32_t cascades) {
     const Image& map = resources_->get(shadow_map_);
     const std::uint32_t res = options_.shadow_resolution;
@@ -166,9 +171,10 @@ void Renderer::record_shadows(VkCommandBuffer cmd, FrameSlot& slot, const Pipeli
         // Standard Z for the light; slope-scaled bias against acne on grazing faces.
         set_depth(cmd, VK_COMPARE_OP_LESS, true, 1.0f, 1.5f);
         CullStats& tally = slot.passes.at(1 + c).stats;
-        draw_groups(cmd, slot, p, p.get(PipelineId::ShadowOpaque), AlphaMode::Opaque, c, false,
-                    tally);
-        draw_groups(cmd, slot, p, p.get(PipelineId::ShadowMask), AlphaMode::Mask, c, false, tally);
+        draw_groups(cmd, slot, p, DrawPipeline{p.get(PipelineId::ShadowOpaque)}, AlphaMode::Opaque,
+                    c, false, tally);
+        draw_groups(cmd, slot, p, DrawPipeline{p.get(PipelineId::ShadowMask)}, AlphaMode::Mask, c,
+                    false, tally);
         vkCmdEndRendering(cmd);
     }
     transition(cmd, {map.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT,
@@ -254,29 +260,33 @@ void Renderer::record_passes(VkCommandBuffer cmd, FrameSlot& slot, const RenderT
         // Same triangles, one constant colour: what the rasterizer costs by itself.
         set_depth(cmd, VK_COMPARE_OP_GREATER, true);
         for (AlphaMode a : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend})
-            draw_groups(cmd, slot, p, p.get(PipelineId::Floor), a, kNoCascade, true, shading);
+            draw_groups(cmd, slot, p, DrawPipeline{p.get(PipelineId::Floor)}, a, kNoCascade, true,
+                        shading);
         for (std::uint32_t i = 2; i < kTimestampCount - 1; ++i)
             vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ts, i);
     } else {
-        if (settings.depth_prepass) {
+        const bool prepass = prepass_enabled(settings.depth_prepass, context_.info().is_cpu(),
+                                             scene_ ? scene_->triangle_count() : 0,
+                                             std::uint64_t{target.width} * target.height);
+        if (prepass) {
             set_depth(cmd, VK_COMPARE_OP_GREATER, true);
-            draw_groups(cmd, slot, p, p.get(PipelineId::PrepassOpaque), AlphaMode::Opaque,
+            draw_groups(cmd, slot, p, DrawPipeline{p.get(PipelineId::PrepassOpaque)},
+                        AlphaMode::Opaque, kNoCascade, true, slot.prepass);
+            draw_groups(cmd, slot, p, DrawPipeline{p.get(PipelineId::PrepassMask)}, AlphaMode::Mask,
                         kNoCascade, true, slot.prepass);
-            draw_groups(cmd, slot, p, p.get(PipelineId::PrepassMask), AlphaMode::Mask, kNoCascade,
-                        true, slot.prepass);
         }
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ts, 2);
-        const VkPipeline forward = p.forward(static_cast<std::uint32_t>(settings.view), false);
+        const DrawPipeline forward{VK_NULL_HANDLE, static_cast<std::uint32_t>(settings.view),
+                                   false};
         // After the prepass only the visible surface passes: shade each pixel once.
-        set_depth(cmd,
-                  settings.depth_prepass ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_GREATER,
-                  !settings.depth_prepass);
+        set_depth(cmd, prepass ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_GREATER, !prepass);
         draw_groups(cmd, slot, p, forward, AlphaMode::Opaque, kNoCascade, true, shading);
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ts, 3);
         draw_groups(cmd, slot, p, forward, AlphaMode::Mask, kNoCascade, true, shading);
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ts, 4);
         set_depth(cmd, VK_COMPARE_OP_GREATER, false);
-        draw_blended(cmd, slot, p, p.forward(static_cast<std::uint32_t>(settings.view), true));
+        draw_blended(cmd, slot, p,
+                     DrawPipeline{VK_NULL_HANDLE, static_cast<std::uint32_t>(settings.view), true});
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ts, 5);
     }
     draw_overlays(cmd, slot, p, settings);

@@ -179,11 +179,13 @@ Pipelines::Pipelines(const Context& context, VkDescriptorSetLayout textures_layo
           VK_POLYGON_MODE_FILL, false, false, false});
 }
 
-VkPipeline Pipelines::forward(std::uint32_t view, bool blend) {
-    auto& p = forward_[{view, blend}];
+VkPipeline Pipelines::forward(std::uint32_t view, bool blend, std::uint32_t streams) {
+    auto& p = forward_[{view, blend, streams}];
     if (!p) {
-        const VkSpecializationMapEntry entry{0, 0, sizeof(std::uint32_t)};
-        VkSpecializationInfo constants{1, &entry, sizeof(view), &view};
+        const VkSpecializationMapEntry entries[] = {
+            {0, 0, sizeof(std::uint32_t)}, {1, sizeof(std::uint32_t), sizeof(std::uint32_t)}};
+        const std::uint32_t values[] = {view, streams};
+        VkSpecializationInfo constants{2, entries, sizeof(values), values};
         PipelineDesc d{mesh_vert_.get(), forward_frag_.get()};
         d.blend = blend;
         d.frag_constants = &constants;

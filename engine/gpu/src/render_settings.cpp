@@ -99,4 +99,23 @@ bool needs_all_streams(const RenderSettings& s) {
     return (s.overlays & (kOverlayNormals | kOverlayTangents | kOverlayBitangents)) != 0;
 }
 
+bool prepass_enabled(PrepassMode mode, bool cpu_device, std::uint64_t triangles,
+                     std::uint64_t pixels) {
+    switch (mode) {
+    case PrepassMode::On:
+        return true;
+    case PrepassMode::Off:
+        return false;
+    case PrepassMode::Auto:
+        break;
+    }
+    // GPUs keep the prepass: their cost is shading, and it shades each pixel once.
+    // A CPU rasterizer (lavapipe) pays for it with a second run of vertex pulling,
+    // triangle setup and binning, per triangle; it saves the shading of hidden
+    // pixels, per pixel. Measured there (engine/gpu/README.md) it pays off up to
+    // DamagedHelmet's and 2CylinderEngine's densities (15k and 121k triangles at
+    // 1280x720: ~10% faster) and costs ~25% at MetalRoughSpheresNoTextures' 1M.
+    return !cpu_device || triangles * 4 <= pixels;
+}
+
 } // namespace sherpa::gpu

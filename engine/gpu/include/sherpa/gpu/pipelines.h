@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <tuple>
 #include <utility>
 
 #include <sherpa/gpu/context.h>
@@ -29,14 +30,33 @@ enum class PipelineId : std::uint32_t {
 
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
+// The optional vertex streams forward shading is specialised for (bits of
+// GpuMesh::flags, HAS_TANGENT | HAS_UV0 | HAS_UV1 | HAS_COLOR in common.glsl).
+inline constexpr std::uint32_t kForwardStreamBits = 0x3cu;
+inline constexpr std::uint32_t forward_streams(std::uint32_t mesh_flags) {
+    return mesh_flags & kForwardStreamBits;
+}
+
+// The pipeline of a run of draws: a fixed one, or forward shading of a view, chosen
+// per mesh for the streams it holds.
+struct DrawPipeline {
+    VkPipeline fixed = VK_NULL_HANDLE;
+    std::uint32_t view = 0;
+    bool blend = false;
+};
+
 class Pipelines {
 public:
     Pipelines(const Context& context, VkDescriptorSetLayout textures_layout,
               VkDescriptorSetLayout frame_layout, VkFormat color_format);
     VkPipeline get(PipelineId id) const { return pipelines_[static_cast<std::size_t>(id)].get(); }
-    // Forward shading for one debug view (a specialization constant of
-    // forward.frag), blended or not; built on first use.
-    VkPipeline forward(std::uint32_t view, bool blend);
+    // Forward shading for one debug view and the optional streams a mesh holds
+    // (specialization constants of forward.frag; absent streams drop their
+    // varyings), blended or not; built on first use.
+    VkPipeline forward(std::uint32_t view, bool blend, std::uint32_t streams = kForwardStreamBits);
+    VkPipeline resolve(const DrawPipeline& d, std::uint32_t mesh_flags) {
+        return d.fixed ? d.fixed : forward(d.view, d.blend, forward_streams(mesh_flags));
+    }
     VkPipelineLayout layout() const { return layout_.get(); }
     VkFormat color_format() const { return color_format_; }
 
@@ -46,7 +66,7 @@ private:
     std::array<UniquePipeline, static_cast<std::size_t>(PipelineId::Count)> pipelines_;
     VkDevice device_;
     UniqueShaderModule mesh_vert_, forward_frag_; // kept for forward() variants
-    std::map<std::pair<std::uint32_t, bool>, UniquePipeline> forward_;
+    std::map<std::tuple<std::uint32_t, bool, std::uint32_t>, UniquePipeline> forward_;
 };
 
 } // namespace sherpa::gpu

@@ -56,6 +56,9 @@ enum class CullPath : std::uint32_t {
 std::string_view to_string(CullPath p);
 std::optional<CullPath> parse_cull_path(std::string_view name);
 
+// Depth prepass before opaque shading. Auto picks per device (prepass_enabled).
+enum class PrepassMode : std::uint32_t { Auto, On, Off };
+
 std::string_view to_string(DebugView v);
 std::optional<DebugView> parse_debug_view(std::string_view name);
 std::vector<std::string_view> debug_view_names();
@@ -73,7 +76,7 @@ struct RenderSettings {
     // Reuse the shadow cascades while camera, light and scene are unchanged. False
     // re-renders them every frame (to measure their cost).
     bool cache_shadows = true;
-    bool depth_prepass = true;
+    PrepassMode depth_prepass = PrepassMode::Auto;
     // Benchmark floor: the same draws with positions only and a constant colour.
     bool floor_only = false;
     glm::vec4 clear_color{0.18f, 0.19f, 0.21f, 1.0f}; // linear
@@ -109,5 +112,11 @@ inline const glm::vec4 kHighlightDetailColor{1.0f, 0.0f, 1.0f, 1.0f}; // magenta
 // Does this view/overlay need streams the materials do not use (so the scene must
 // be uploaded with StreamPolicy::AllPresent)?
 bool needs_all_streams(const RenderSettings& settings);
+
+// Whether a frame of `triangles` at `pixels` draws the depth prepass: Auto draws it
+// on GPUs, and on CPU devices unless the scene has more than one triangle per four
+// pixels (see render_settings.cpp).
+bool prepass_enabled(PrepassMode mode, bool cpu_device, std::uint64_t triangles,
+                     std::uint64_t pixels);
 
 } // namespace sherpa::gpu

@@ -154,12 +154,10 @@ private:
                          bool& shadows, std::uint32_t& cascades);
     void record_passes(VkCommandBuffer cmd, FrameSlot& slot, const RenderTarget& target,
                        const RenderSettings& settings);
-    void record_shadows(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
-                        std::uint32_t cascades);
-    void draw_groups(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p, VkPipeline pipeline,
+    void record_shadows(VkCommandBuffer cmd, FrameSlot& slot, Pipelines& p, std::uint32_t cascades);
+    void draw_groups(VkCommandBuffer cmd, FrameSlot& slot, Pipelines& p, DrawPipeline pipeline,
                      AlphaMode alpha, std::uint32_t cascade, bool cull, CullStats& tally);
-    void draw_blended(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
-                      VkPipeline pipeline);
+    void draw_blended(VkCommandBuffer cmd, FrameSlot& slot, Pipelines& p, DrawPipeline pipeline);
     void draw_overlays(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
                        const RenderSettings& s);
     FrameStats read_stats(FrameSlot& slot);

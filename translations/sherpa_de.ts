@@ -303,6 +303,22 @@
         <source>CPU/GPU agreement: ✘ %1 objects differ (CPU keeps %2, GPU %3)</source>
         <translation>CPU/GPU-Übereinstimmung: ✘ %1 Objekte weichen ab (CPU behält %2, GPU %3)</translation>
     </message>
+    <message>
+        <source>Pass</source>
+        <translation>Durchlauf</translation>
+    </message>
+    <message>
+        <source>Renderer passes: none (culling off or no frame yet)</source>
+        <translation>Renderer-Durchläufe: keine (Culling aus oder noch kein Bild)</translation>
+    </message>
+    <message>
+        <source>Renderer passes, last frame (cascades reused from the frame that drew them)</source>
+        <translation>Renderer-Durchläufe, letztes Bild (Kaskaden aus dem Bild übernommen, das sie gezeichnet hat)</translation>
+    </message>
+    <message>
+        <source>Renderer passes, last frame</source>
+        <translation>Renderer-Durchläufe, letztes Bild</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::LogDock</name>

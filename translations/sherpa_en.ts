@@ -303,6 +303,22 @@
         <source>CPU/GPU agreement: ✘ %1 objects differ (CPU keeps %2, GPU %3)</source>
         <translation>CPU/GPU agreement: ✘ %1 objects differ (CPU keeps %2, GPU %3)</translation>
     </message>
+    <message>
+        <source>Pass</source>
+        <translation>Pass</translation>
+    </message>
+    <message>
+        <source>Renderer passes: none (culling off or no frame yet)</source>
+        <translation>Renderer passes: none (culling off or no frame yet)</translation>
+    </message>
+    <message>
+        <source>Renderer passes, last frame (cascades reused from the frame that drew them)</source>
+        <translation>Renderer passes, last frame (cascades reused from the frame that drew them)</translation>
+    </message>
+    <message>
+        <source>Renderer passes, last frame</source>
+        <translation>Renderer passes, last frame</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::LogDock</name>

@@ -303,6 +303,22 @@
         <source>CPU/GPU agreement: ✘ %1 objects differ (CPU keeps %2, GPU %3)</source>
         <translation>CPU/GPU 一致性：✘ %1 个对象不一致（CPU 保留 %2 个，GPU %3 个）</translation>
     </message>
+    <message>
+        <source>Pass</source>
+        <translation>通道</translation>
+    </message>
+    <message>
+        <source>Renderer passes: none (culling off or no frame yet)</source>
+        <translation>渲染器通道：无（剔除已关闭或尚无帧）</translation>
+    </message>
+    <message>
+        <source>Renderer passes, last frame (cascades reused from the frame that drew them)</source>
+        <translation>渲染器通道，上一帧（级联沿用绘制它们的那一帧）</translation>
+    </message>
+    <message>
+        <source>Renderer passes, last frame</source>
+        <translation>渲染器通道，上一帧</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::LogDock</name>

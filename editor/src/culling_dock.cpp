@@ -3,8 +3,10 @@
 #include <QChart>
 #include <QChartView>
 #include <QGridLayout>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLineSeries>
+#include <QTableWidget>
 #include <QVBoxLayout>
 #include <QValueAxis>
 
@@ -33,6 +35,18 @@ CullingDock::CullingDock(const CullingMonitor& monitor, QWidget* parent)
     layout->addLayout(grid);
     layout->addWidget(method_);
     layout->addWidget(agreement_);
+    // The renderer's own passes: at most 1 + 4 rows, so a plain table widget.
+    passes_title_ = new QLabel(body);
+    passes_title_->setWordWrap(true); // a long title must not widen the dock either
+    passes_ = new QTableWidget(0, 8, body);
+    passes_->verticalHeader()->hide();
+    passes_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    passes_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    passes_->setMaximumHeight(150);
+    // Eight columns must not widen the dock (and narrow the viewport): it scrolls.
+    passes_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    layout->addWidget(passes_title_);
+    layout->addWidget(passes_);
 
     chart_ = new QChart;
     visible_series_ = new QLineSeries(chart_);
@@ -66,6 +80,10 @@ void CullingDock::retranslate() {
                                      tr("False positives"), tr("Draw calls"), tr("Triangles"),
                                      tr("CPU cull ms"),     tr("GPU cull ms")};
     for (int r = 0; r < RowCount; ++r) names_[r]->setText(names[r]);
+    passes_->setHorizontalHeaderLabels({tr("Pass"), tr("Total"), tr("Visible"), tr("Culled"),
+                                        tr("Draw calls"), tr("Triangles"), tr("CPU cull ms"),
+                                        tr("GPU cull ms")});
+    setRendererPasses(renderer_passes_, cached_shadows_);
     visible_series_->setName(tr("visible"));
     culled_series_->setName(tr("culled"));
     x_axis_->setTitleText(tr("update"));
@@ -78,6 +96,45 @@ QString CullingDock::valueText(int row) const {
 
 QString CullingDock::agreementText() const {
     return agreement_->text();
+}
+
+void CullingDock::setRendererPasses(const std::vector<CullStats>& passes, bool cached_shadows) {
+    if (&passes != &renderer_passes_) renderer_passes_ = passes;
+    cached_shadows_ = cached_shadows;
+    passes_title_->setText(
+        passes.empty() ? tr("Renderer passes: none (culling off or no frame yet)")
+        : cached_shadows
+            ? tr("Renderer passes, last frame (cascades reused from the frame that drew them)")
+            : tr("Renderer passes, last frame"));
+    passes_->setRowCount(static_cast<int>(passes.size()));
+    auto ms = [](double v) { return v < 0 ? QStringLiteral("—") : QString::number(v, 'f', 3); };
+    for (int r = 0; r < static_cast<int>(passes.size()); ++r) {
+        const CullStats& c = passes[std::size_t(r)];
+        const QString cells[8] = {QString::fromStdString(c.pass),
+                                  QString::number(c.total),
+                                  QString::number(c.visible),
+                                  QString::number(c.culled),
+                                  QString::number(c.draw_calls),
+                                  QString::number(c.triangles),
+                                  ms(c.cpu_ms),
+                                  ms(c.gpu_ms)};
+        for (int col = 0; col < 8; ++col) {
+            QTableWidgetItem* item = passes_->item(r, col);
+            if (!item) passes_->setItem(r, col, item = new QTableWidgetItem);
+            item->setText(cells[col]);
+            item->setTextAlignment(col == 0 ? Qt::AlignLeft | Qt::AlignVCenter
+                                            : Qt::AlignRight | Qt::AlignVCenter);
+        }
+    }
+}
+
+QString CullingDock::passText(int row, int column) const {
+    const QTableWidgetItem* item = passes_->item(row, column);
+    return item ? item->text() : QString();
+}
+
+int CullingDock::passRows() const {
+    return passes_->rowCount();
 }
 
 void CullingDock::refresh() {

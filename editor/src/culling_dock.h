@@ -3,11 +3,15 @@
 #include <QDockWidget>
 
 #include <array>
+#include <vector>
+
+#include <sherpa/scene/culling_passes.h>
 
 class QChart;
 class QChartView;
 class QLabel;
 class QLineSeries;
+class QTableWidget;
 class QValueAxis;
 
 namespace sherpa::editor {
@@ -22,6 +26,13 @@ public:
     // The numbers as shown, row by row (for the tests).
     QString valueText(int row) const;
     QString agreementText() const;
+    // What the renderer culled in its last frame, pass by pass (camera, then each
+    // shadow cascade): the passes' table. `cached_shadows`: the cascades were not
+    // redrawn this frame, their numbers are those of the frame that drew them.
+    void setRendererPasses(const std::vector<CullStats>& passes, bool cached_shadows);
+    // The passes' table as shown (for the tests); empty outside it.
+    QString passText(int row, int column) const;
+    int passRows() const;
     enum Row {
         Total,
         Visible,
@@ -41,6 +52,10 @@ private:
     std::array<QLabel*, RowCount> names_{};
     std::array<QLabel*, RowCount> values_{};
     QLabel* agreement_;
+    QLabel* passes_title_;
+    QTableWidget* passes_;
+    std::vector<CullStats> renderer_passes_;
+    bool cached_shadows_ = false;
     QLabel* method_;
     QChart* chart_;
     QChartView* chart_view_;

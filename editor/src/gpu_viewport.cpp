@@ -243,6 +243,15 @@ const RingHistory<gpu::CullFrame>& GpuViewport::cullHistory() const {
     return impl_->renderer->cull_history();
 }
 
+bool GpuViewport::lastCullPasses(std::vector<CullStats>& passes, bool& cached_shadows) const {
+    const RingHistory<gpu::CullFrame>& h = cullHistory();
+    if (h.size() == 0) return false;
+    const gpu::CullFrame& f = h[h.size() - 1];
+    passes = f.passes;
+    cached_shadows = !f.shadows_rendered;
+    return true;
+}
+
 } // namespace sherpa::editor
 
 #include <sherpa/gpu/gpu_culling.h>

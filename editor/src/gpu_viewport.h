@@ -12,8 +12,8 @@
 #include <vector>
 
 #include <sherpa/scene/camera_spec.h>
-#include <sherpa/scene/culling_passes.h>
 #include <sherpa/scene/culling.h>
+#include <sherpa/scene/culling_passes.h>
 #include <sherpa/scene/scene.h>
 
 #include "material_dock.h"
@@ -80,6 +80,9 @@ public:
     // The renderer's per-pass culling statistics of the last presented frames
     // (camera and each shadow cascade), oldest first.
     const RingHistory<gpu::CullFrame>& cullHistory() const;
+    // The last frame's passes from that history (camera, then each cascade); false
+    // before any culled frame. `cached_shadows`: the cascades were reused, not drawn.
+    bool lastCullPasses(std::vector<CullStats>& passes, bool& cached_shadows) const;
     // Messages of the Khronos validation layer so far (SHERPA_VALIDATION=1 turns
     // it on in release builds), one "[id] text" each; tests require none.
     QStringList validationMessages() const;

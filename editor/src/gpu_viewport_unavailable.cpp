@@ -39,6 +39,9 @@ bool GpuViewport::checkGpuCulling(const Frustum&, CullMethod, const std::vector<
                                   GpuCullCheck&) {
     return false;
 }
+bool GpuViewport::lastCullPasses(std::vector<CullStats>&, bool&) const {
+    return false;
+}
 bool GpuViewport::present(std::uint64_t, const ViewportFrame&) {
     return false;
 }

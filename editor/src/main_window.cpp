@@ -246,6 +246,10 @@ void MainWindow::connectActions() {
     connect(viewport_, &ViewportWindow::frameSelectionRequested, this, &MainWindow::frameSelection);
     connect(viewport_, &ViewportWindow::frameRendered, this, [this](double ms) {
         frame_label_->setText(tr("frame %1 ms").arg(ms, 0, 'f', 2));
+        std::vector<CullStats> passes;
+        bool cached_shadows = false;
+        if (gpu_ && gpu_->lastCullPasses(passes, cached_shadows))
+            culling_dock_->setRendererPasses(passes, cached_shadows);
         if (!first_frame_seen_ && context_.scene()) { // a frame that shows the scene
             first_frame_seen_ = true;
             Q_EMIT firstFrame();

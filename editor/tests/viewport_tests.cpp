@@ -92,6 +92,7 @@ private Q_SLOTS:
     void framingFitsEveryAspect();
     void highlightFollowsSelection();
     void gpuCullingAgreesWithCpu();
+    void cullingDockShowsTheRenderersPasses();
     void narrowViewportFramesTheHelmet();
     void progressReportsEveryStage();
     void cancelDropsTheLoadAndLeaksNothing();
@@ -190,6 +191,31 @@ void ViewportTests::gpuCullingAgreesWithCpu() {
     QVERIFY(nextFrame(*window_));
     QVERIFY(!window_->lastFrame().gpuCulling);
     QCOMPARE(window_->logDock()->errorCount(), errors);
+}
+
+void ViewportTests::cullingDockShowsTheRenderersPasses() {
+    // builtin:default has a sun: the renderer culls the camera and each cascade.
+    QVERIFY(load(*window_, QStringLiteral("builtin:default")));
+    if (!hasGpu()) QSKIP("no Vulkan device: nothing is rendered");
+    window_->viewport()->camera().orbit(30.0f, 0.0f); // the shadow cascades are redrawn
+    Q_EMIT window_->viewport()->cameraChanged();
+    // A frame's statistics are read when its frame slot comes round again.
+    const CullingDock& dock = *window_->cullingDock();
+    for (int frame = 0; frame < 6 && dock.passRows() < 2; ++frame) {
+        window_->viewport()->camera().orbit(5.0f, 0.0f);
+        Q_EMIT window_->viewport()->cameraChanged();
+        QVERIFY(nextFrame(*window_));
+    }
+    QVERIFY(dock.passRows() >= 2);
+    QCOMPARE(dock.passText(0, 0), QStringLiteral("camera"));
+    QCOMPARE(dock.passText(1, 0), QStringLiteral("cascade0"));
+    // The camera row is what the renderer counted for its own frame.
+    const std::uint64_t total = dock.passText(0, 1).toULongLong();
+    const std::uint64_t visible = dock.passText(0, 2).toULongLong();
+    const std::uint64_t culled = dock.passText(0, 3).toULongLong();
+    QVERIFY(total > 0);
+    QCOMPARE(visible + culled, total);
+    QVERIFY(dock.passText(0, 5).toULongLong() > 0); // triangles submitted
 }
 
 void ViewportTests::narrowViewportFramesTheHelmet() {

@@ -7,10 +7,14 @@
 #include <QPointer>
 #include <QtConcurrent/QtConcurrentMap>
 #include <QtConcurrent/QtConcurrentRun>
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <numeric>
 
 #include <sherpa/scene/scene_loader.h>
+#include <sherpa/texture/block_codecs.h>
+#include <sherpa/texture/texture_pipeline.h>
 
 namespace sherpa::editor {
 
@@ -66,6 +70,43 @@ QImage decode_thumbnail(const Scene& scene, const TextureRecord& texture, QSize&
     QImage thumb = reader.read();
     if (thumb.isNull()) source_size = {};
     return thumb;
+}
+
+// The thumbnail from the prepared (cached) texture that texture `t` reaches: its
+// smallest mip level at least kThumbnailSize wide or high, decoded from its blocks
+// if need be. Null when the texture was not prepared (no material uses it) or failed.
+QImage prepared_thumbnail(const tex::PreparedTextureSet* set, std::int32_t t, QSize& source_size) {
+    if (!set) return {};
+    for (const tex::PreparedTexture& p : set->textures) {
+        if (p.failed || p.levels.empty() ||
+            std::find(p.textures.begin(), p.textures.end(), t) == p.textures.end())
+            continue;
+        std::uint32_t level = 0;
+        while (level + 1 < p.levels.size() &&
+               std::max(tex::mip_extent(p.width, level + 1),
+                        tex::mip_extent(p.height, level + 1)) >= std::uint32_t(kThumbnailSize))
+            ++level;
+        const std::uint32_t w = tex::mip_extent(p.width, level),
+                            h = tex::mip_extent(p.height, level);
+        std::vector<std::uint8_t> rgba;
+        if (p.format == tex::VkFormat::Bc7SrgbBlock || p.format == tex::VkFormat::Bc7UnormBlock) {
+            rgba = tex::decode_image(tex::BlockFormat::Bc7, p.levels[level], w, h, 1);
+        } else if (p.format == tex::VkFormat::Bc5UnormBlock) {
+            rgba = tex::decode_image(tex::BlockFormat::Bc5, p.levels[level], w, h, 1);
+            for (std::size_t i = 0; i < rgba.size(); i += 4) { // z from x and y, as shaded
+                const float x = rgba[i] / 127.5f - 1.0f, y = rgba[i + 1] / 127.5f - 1.0f;
+                const float z = std::sqrt(std::max(0.0f, 1.0f - x * x - y * y));
+                rgba[i + 2] = static_cast<std::uint8_t>(std::lround((z + 1.0f) * 127.5f));
+            }
+        } else {
+            rgba = p.levels[level];
+        }
+        if (rgba.size() != std::size_t(w) * h * 4) return {};
+        source_size = QSize(static_cast<int>(p.width), static_cast<int>(p.height));
+        return QImage(rgba.data(), int(w), int(h), int(w) * 4, QImage::Format_RGBA8888)
+            .scaled(kThumbnailSize, kThumbnailSize, Qt::KeepAspectRatio, Qt::SmoothTransformation);
+    }
+    return {};
 }
 
 LoadOutcome run_load(const QString& spec, const TexturePreparer& preparer,
@@ -173,9 +214,27 @@ LoadOutcome run_load(const QString& spec, const TexturePreparer& preparer,
     auto extras = std::make_shared<SceneExtras>();
     extras->load_ms = static_cast<double>(clock.nsecsElapsed()) / 1e6;
     const Scene& scene = *result.scene;
+    // GPU textures first (texture cache, BC7/BC5), counted per prepared texture: the
+    // thumbnails then come from their small mip levels instead of decoding sources.
+    clock.restart();
+    if (preparer && !state->cancel.cancelled()) {
+        state->report(LoadStep::Textures, 0, 1);
+        extras->textures = preparer(
+            scene,
+            [state](std::size_t done, std::size_t total) {
+                state->report(LoadStep::Textures, done, total);
+            },
+            &state->cancel);
+        extras->textures_ms = static_cast<double>(clock.nsecsElapsed()) / 1e6;
+        clock.restart();
+        if (state->cancel.cancelled()) {
+            out.cancelled = true; // the scene and textures are dropped here
+            out.error = QStringLiteral("cancelled");
+            return out;
+        }
+    }
     state->report(LoadStep::Textures, 0, scene.textures.size());
     std::atomic<std::size_t> textures_done{0};
-    clock.restart();
     extras->thumbnails.resize(scene.textures.size());
     std::vector<QSize> sizes(scene.textures.size());
     // Textures decode independently: spread them over the pool, counting as they finish.
@@ -184,7 +243,9 @@ LoadOutcome run_load(const QString& spec, const TexturePreparer& preparer,
     QtConcurrent::blockingMap(order, [&](int i) {
         if (state->cancel.cancelled()) return;
         const auto t = static_cast<std::size_t>(i);
-        extras->thumbnails[t] = decode_thumbnail(scene, scene.textures[t], sizes[t]);
+        QImage thumb = prepared_thumbnail(extras->textures.get(), i, sizes[t]);
+        extras->thumbnails[t] =
+            thumb.isNull() ? decode_thumbnail(scene, scene.textures[t], sizes[t]) : thumb;
         state->report(LoadStep::Textures, ++textures_done, scene.textures.size());
     });
     if (state->cancel.cancelled()) {
@@ -199,23 +260,6 @@ LoadOutcome run_load(const QString& spec, const TexturePreparer& preparer,
             extras->image_sizes[static_cast<std::size_t>(image)] = sizes[t];
     }
     extras->thumbnails_ms = static_cast<double>(clock.nsecsElapsed()) / 1e6;
-    if (preparer && !state->cancel.cancelled()) {
-        // The GPU's textures (texture cache, BC7/BC5), counted per prepared texture.
-        clock.restart();
-        state->report(LoadStep::Textures, 0, 1);
-        extras->textures = preparer(
-            scene,
-            [state](std::size_t done, std::size_t total) {
-                state->report(LoadStep::Textures, done, total);
-            },
-            &state->cancel);
-        extras->textures_ms = static_cast<double>(clock.nsecsElapsed()) / 1e6;
-        if (state->cancel.cancelled()) {
-            out.cancelled = true; // scene, thumbnails and textures are dropped here
-            out.error = QStringLiteral("cancelled");
-            return out;
-        }
-    }
     out.scene = std::move(result.scene);
     out.extras = std::move(extras);
     return out;

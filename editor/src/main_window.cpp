@@ -92,6 +92,7 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::createRenderer() {
+    if (gpu_ || gpu_failed_) return; // made already (a scene opened before the timer ran)
     if (!vulkan_) {
         log_->append(LogDock::Level::Error, tr("No Vulkan instance: the viewport cannot render."));
         return;
@@ -262,6 +263,8 @@ void MainWindow::connectActions() {
 
 void MainWindow::openScene(const QString& spec) {
     log_->append(LogDock::Level::Info, tr("Loading %1…").arg(spec));
+    // The first scene too prepares its textures on the loader thread: that needs the device.
+    if (!gpu_ && vulkan_) createRenderer();
     if (gpu_) { // textures are prepared on the loader thread, for this device and settings
         gpu_->setTextureCache(settings_.cacheDirectory(), settings_.textureQuality());
         loader_.setTexturePreparer(gpu_->texturePreparer());

@@ -129,18 +129,17 @@ prepare_scene_textures(const Scene& scene, const DeviceInfo& device,
                       device.name + " samples BC7/BC5");
     }
     if (device.is_cpu() && settings.decode_bc7_on_cpu) {
-        std::vector<tex::PreparedTexture*> bc7;
+        // One texture at a time: decode_image spreads its block rows over the cores.
+        std::size_t bc7 = 0;
         for (tex::PreparedTexture& t : set->textures)
             if (!t.failed && (t.format == tex::VkFormat::Bc7SrgbBlock ||
-                              t.format == tex::VkFormat::Bc7UnormBlock))
-                bc7.push_back(&t);
-#pragma omp parallel for schedule(dynamic)
-        for (std::ptrdiff_t i = 0; i < std::ptrdiff_t(bc7.size()); ++i)
-            decode_bc7_levels(*bc7[std::size_t(i)]);
-        if (!bc7.empty())
+                              t.format == tex::VkFormat::Bc7UnormBlock)) {
+                decode_bc7_levels(t);
+                ++bc7;
+            }
+        if (bc7 > 0)
             set->warnings.push_back(
-                std::to_string(bc7.size()) +
-                " BC7 texture(s) decoded to RGBA8 at upload: " + device.name +
+                std::to_string(bc7) + " BC7 texture(s) decoded to RGBA8 at upload: " + device.name +
                 " is a CPU device, where sampling BC7 costs several times RGBA8 (keep the blocks "
                 "with TextureSettings::decode_bc7_on_cpu = false or --keep-bc7)");
     }

@@ -44,9 +44,8 @@ for f in sorted(glob.glob(sys.argv[1] + "/*.json")):
                                    "gpu_ms": r.get("gpu_time_ms", {}).get("frame_median")}
 json.dump(rows, open(sys.argv[1] + "/reports.json", "w"), indent=1)
 PY
-rm -f "$out"/*.json.tmp
 tar -C "$out" -cf "$out/logs.tar" $(cd "$out" && ls *.log *.json | grep -v reports.json) &&
     (cd "$out" && rm -f $(ls *.log *.json | grep -v reports.json))
-"$s/run.sh" sherpa-bench-render --frames "${SHERPA_BENCH_FRAMES:-50}" $(echo $scenes | tr ' ' '\n' | sed "s#^$s/gltf#$s/gltf#") \
+"$s/run.sh" sherpa-bench-render --frames "${SHERPA_BENCH_FRAMES:-50}" $scenes \
     | tee "$out/bench.txt"
 exit $fail

@@ -8,7 +8,9 @@
 #include <QLineSeries>
 #include <QTableWidget>
 #include <QVBoxLayout>
+
 #include <QValueAxis>
+#include <utility>
 
 #include "culling_monitor.h"
 
@@ -83,7 +85,7 @@ void CullingDock::retranslate() {
     passes_->setHorizontalHeaderLabels({tr("Pass"), tr("Total"), tr("Visible"), tr("Culled"),
                                         tr("Draw calls"), tr("Triangles"), tr("CPU cull ms"),
                                         tr("GPU cull ms")});
-    setRendererPasses(renderer_passes_, cached_shadows_);
+    showRendererPasses();
     visible_series_->setName(tr("visible"));
     culled_series_->setName(tr("culled"));
     x_axis_->setTitleText(tr("update"));
@@ -98,9 +100,15 @@ QString CullingDock::agreementText() const {
     return agreement_->text();
 }
 
-void CullingDock::setRendererPasses(const std::vector<CullStats>& passes, bool cached_shadows) {
-    if (&passes != &renderer_passes_) renderer_passes_ = passes;
+void CullingDock::setRendererPasses(std::vector<CullStats> passes, bool cached_shadows) {
+    renderer_passes_ = std::move(passes);
     cached_shadows_ = cached_shadows;
+    showRendererPasses();
+}
+
+void CullingDock::showRendererPasses() {
+    const std::vector<CullStats>& passes = renderer_passes_;
+    const bool cached_shadows = cached_shadows_;
     passes_title_->setText(
         passes.empty() ? tr("Renderer passes: none (culling off or no frame yet)")
         : cached_shadows

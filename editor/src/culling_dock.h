@@ -29,7 +29,7 @@ public:
     // What the renderer culled in its last frame, pass by pass (camera, then each
     // shadow cascade): the passes' table. `cached_shadows`: the cascades were not
     // redrawn this frame, their numbers are those of the frame that drew them.
-    void setRendererPasses(const std::vector<CullStats>& passes, bool cached_shadows);
+    void setRendererPasses(std::vector<CullStats> passes, bool cached_shadows);
     // The passes' table as shown (for the tests); empty outside it.
     QString passText(int row, int column) const;
     int passRows() const;
@@ -47,6 +47,7 @@ public:
 
 private:
     void refresh();
+    void showRendererPasses(); // renderer_passes_ into the table, in the current language
 
     const CullingMonitor& monitor_;
     std::array<QLabel*, RowCount> names_{};

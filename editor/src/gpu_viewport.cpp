@@ -13,20 +13,6 @@
 
 namespace sherpa::editor {
 
-namespace {
-gpu::CameraSpec to_gpu_camera(const CameraSpec& camera) {
-    gpu::CameraSpec out;
-    out.kind = gpu::CameraSpec::Kind::Explicit;
-    out.eye = camera.eye;
-    out.target = camera.target;
-    out.up = camera.up;
-    out.fov_degrees = camera.fov_y_degrees;
-    out.near_plane = camera.near_plane;
-    out.far_plane = camera.far_plane;
-    return out;
-}
-} // namespace
-
 struct GpuViewport::Impl {
     std::unique_ptr<gpu::Context> context;
     std::unique_ptr<gpu::Renderer> renderer;
@@ -156,13 +142,13 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame) {
     if (auto v = gpu::parse_debug_view(frame.view.toStdString())) settings.view = *v;
     for (const QString& o : frame.overlays)
         if (auto bit = gpu::parse_overlay(o.toStdString())) settings.overlays |= *bit;
-    settings.camera = to_gpu_camera(frame.camera);
+    settings.camera = gpu::explicit_camera(frame.camera);
     settings.highlight_instance = frame.highlightInstance;
     settings.highlight_triangle = frame.highlightTriangle;
     settings.highlight_vertex = frame.highlightVertex;
     settings.cull = frame.gpuCulling ? gpu::CullPath::Gpu : gpu::CullPath::Cpu;
     settings.cull_method = frame.cullMethod;
-    if (frame.frozenCulling) settings.freeze_cull = to_gpu_camera(*frame.frozenCulling);
+    if (frame.frozenCulling) settings.freeze_cull = gpu::explicit_camera(*frame.frozenCulling);
     // Views of streams the materials do not read need every stream on the GPU.
     const bool all = gpu::needs_all_streams(settings);
     if (all != impl_->all_streams) {

@@ -250,7 +250,7 @@ void MainWindow::connectActions() {
         std::vector<CullStats> passes;
         bool cached_shadows = false;
         if (gpu_ && gpu_->lastCullPasses(passes, cached_shadows))
-            culling_dock_->setRendererPasses(passes, cached_shadows);
+            culling_dock_->setRendererPasses(std::move(passes), cached_shadows);
         if (!first_frame_seen_ && context_.scene()) { // a frame that shows the scene
             first_frame_seen_ = true;
             Q_EMIT firstFrame();

@@ -31,15 +31,21 @@ bool parse_camera_spec(std::string_view text, CameraSpec& spec, std::string& err
         error = "camera '" + std::string(text) + "': " + parse_error;
         return false;
     }
-    spec.kind = CameraSpec::Kind::Explicit;
-    spec.eye = parsed.eye;
-    spec.target = parsed.target;
-    spec.up = parsed.up;
-    spec.fov_degrees = parsed.fov_y_degrees;
-    spec.aspect = parsed.aspect_given ? parsed.aspect : 0.0f; // 0: the viewport's
-    spec.near_plane = parsed.near_plane;
-    spec.far_plane = parsed.far_plane;
+    spec = explicit_camera(parsed);
     return true;
+}
+
+CameraSpec explicit_camera(const sherpa::CameraSpec& camera) {
+    CameraSpec spec;
+    spec.kind = CameraSpec::Kind::Explicit;
+    spec.eye = camera.eye;
+    spec.target = camera.target;
+    spec.up = camera.up;
+    spec.fov_degrees = camera.fov_y_degrees;
+    spec.aspect = camera.aspect_given ? camera.aspect : 0.0f; // 0: the viewport's
+    spec.near_plane = camera.near_plane;
+    spec.far_plane = camera.far_plane;
+    return spec;
 }
 
 // One convention for the whole engine: the scene layer's (camera_spec.h).

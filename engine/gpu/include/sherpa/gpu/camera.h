@@ -15,6 +15,7 @@
 
 #include <glm/glm.hpp>
 
+#include <sherpa/scene/camera_spec.h>
 #include <sherpa/scene/scene.h>
 #include <sherpa/scene/shadow_cascades.h>
 
@@ -29,6 +30,10 @@ struct CameraSpec {
     float near_plane = 0.05f;
     float far_plane = 0.0f; // 0: infinite
 };
+
+// The renderer's camera for an explicit scene-layer camera (what the camera string
+// parses to, or an editor's orbit camera); its aspect only where one was given.
+CameraSpec explicit_camera(const sherpa::CameraSpec& camera);
 
 // Parses a spec string; on failure returns false and names the problem in `error`.
 bool parse_camera_spec(std::string_view text, CameraSpec& spec, std::string& error);

@@ -103,7 +103,9 @@ QImage prepared_thumbnail(const tex::PreparedTextureSet* set, std::int32_t t, QS
         }
         if (rgba.size() != std::size_t(w) * h * 4) return {};
         source_size = QSize(static_cast<int>(p.width), static_cast<int>(p.height));
+        // copy(): scaled() to the size it already has would share `rgba`, freed on return.
         return QImage(rgba.data(), int(w), int(h), int(w) * 4, QImage::Format_RGBA8888)
+            .copy()
             .scaled(kThumbnailSize, kThumbnailSize, Qt::KeepAspectRatio, Qt::SmoothTransformation);
     }
     return {};

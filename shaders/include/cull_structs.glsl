@@ -35,9 +35,6 @@ struct DrawCommand {
     uint first_instance;
 };
 
-layout(buffer_reference, scalar, buffer_reference_align = 16) readonly buffer CullParamsRef {
-    CullParams p;
-};
 layout(buffer_reference, scalar, buffer_reference_align = 16) readonly buffer CullObjectRef {
     CullObject v[];
 };

@@ -35,6 +35,27 @@ protected:
         for (std::uint32_t i = 0; i < n; ++i) v[i] = i;
         return v;
     }
+    // Each batch's compacted instance ids are exactly its objects flagged visible
+    // (as multisets: the order within a batch is the GPU's). Returns the ids kept.
+    static std::uint32_t expect_batches_hold_visible(const gpu::GpuCuller& culler,
+                                                     const MeshPass& pass,
+                                                     const gpu::GpuCullReadback& r,
+                                                     const std::string& what) {
+        const auto batches = pass.batches();
+        EXPECT_EQ(r.instance_counts.size(), batches.size()) << what;
+        std::uint32_t kept = 0;
+        for (std::uint32_t bi = 0; bi < batches.size() && bi < r.instance_counts.size(); ++bi) {
+            std::multiset<std::uint32_t> want, got;
+            for (std::uint32_t k = batches[bi].first; k < batches[bi].first + batches[bi].count;
+                 ++k)
+                if (r.visible[k]) want.insert(culler.object_instances()[k]);
+            for (std::uint32_t s = 0; s < r.instance_counts[bi]; ++s)
+                got.insert(r.instance_ids[batches[bi].first + s]);
+            EXPECT_EQ(want, got) << what << ", batch " << bi;
+            kept += r.instance_counts[bi];
+        }
+        return kept;
+    }
 };
 
 TEST_F(GpuCullingTest, AgreesWithTheCpuPathForEveryMethod) {
@@ -82,18 +103,35 @@ TEST_F(GpuCullingTest, BatchesHoldExactlyTheirVisibleObjects) {
     ASSERT_TRUE(parse_camera_spec("eye=0,3,9:target=0,1,0", c, error)) << error;
     const gpu::GpuCullReadback r =
         culler.run(frustum_from_view_projection(c.view_projection()), CullMethod::Exact);
-    const auto batches = passes.forward.batches();
-    ASSERT_EQ(r.instance_counts.size(), batches.size());
-    for (std::uint32_t bi = 0; bi < batches.size(); ++bi) {
-        std::multiset<std::uint32_t> want, got;
-        for (std::uint32_t k = batches[bi].first; k < batches[bi].first + batches[bi].count; ++k)
-            if (r.visible[k]) want.insert(culler.object_instances()[k]);
-        for (std::uint32_t s = 0; s < r.instance_counts[bi]; ++s)
-            got.insert(r.instance_ids[batches[bi].first + s]);
-        EXPECT_EQ(want, got) << "batch " << bi;
-    }
+    expect_batches_hold_visible(culler, passes.forward, r, "builtin:default");
     if (context().info().timestamps) {
         EXPECT_GE(r.gpu_ms, 0.0);
+    }
+}
+
+// The grid's three batches are hundreds of objects long and meet inside a subgroup:
+// both the one-atomic-per-subgroup path (a subgroup within one batch) and the
+// per-object fallback (a subgroup across two batches) must fill every batch with
+// exactly its visible objects, for every method.
+TEST_F(GpuCullingTest, LongBatchesMeetingInsideASubgroupHoldExactlyTheirVisibleObjects) {
+    auto scene = load("builtin:grid?n=1000");
+    ASSERT_TRUE(scene);
+    ScenePasses passes = build_mesh_passes(*scene);
+    gpu::GpuCuller culler(context(), renderer().resources());
+    culler.build(passes.forward, *scene);
+    ASSERT_EQ(passes.forward.batches().size(), 3u);
+    for (const char* spec : {"eye=0,6,20:target=0,0,0", "eye=-30,4,-30:target=10,0,5:fov=35"}) {
+        CameraSpec c;
+        std::string error;
+        ASSERT_TRUE(parse_camera_spec(spec, c, error)) << error;
+        const Frustum f = frustum_from_view_projection(c.view_projection());
+        for (CullMethod m : {CullMethod::Sphere, CullMethod::PVertex, CullMethod::Exact}) {
+            const std::uint32_t kept = expect_batches_hold_visible(
+                culler, passes.forward, culler.run(f, m),
+                std::string(spec) + ", method " + std::to_string(int(m)));
+            EXPECT_GT(kept, 0u) << spec;
+            EXPECT_LT(kept, 1000u) << spec;
+        }
     }
 }
 

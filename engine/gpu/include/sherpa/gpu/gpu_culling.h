@@ -105,6 +105,9 @@ private:
     void release();
     Context& context_;
     ResourceManager& resources_;
+    UniqueDescriptorSetLayout set_layout_;
+    UniqueDescriptorPool pool_;
+    std::vector<VkDescriptorSet> param_sets_; // one per parameter block (uniform buffer)
     UniquePipelineLayout layout_;
     UniquePipeline pipeline_;
     UniqueQueryPool timestamps_;

@@ -1,7 +1,10 @@
-// Loading and unloading a scene gives every GPU object back.
+// Loading and unloading a scene gives every GPU object back; frames on a CPU device
+// do not fault their working memory in again.
 #include "gpu_test_support.h"
 
 #include <sherpa/gpu/scene_textures.h>
+
+#include <sys/resource.h>
 
 namespace sherpa::test {
 namespace {
@@ -38,6 +41,32 @@ TEST_F(LeakTest, HundredLoadUnloadCyclesOfDamagedHelmetLeaveNothingBehind) {
     EXPECT_EQ(gpu::live_vulkan_objects(), objects);
     EXPECT_EQ(renderer().resources().counts().total(), counts.total());
     EXPECT_EQ(renderer().resources().stale_handle_uses(), 0u);
+}
+
+long minor_page_faults() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return u.ru_minflt;
+}
+
+// On a CPU device the rasterizer's per-frame memory comes from this process's heap;
+// the context keeps it mapped (gpu::Context, keep_frame_memory_mapped) instead of
+// letting every frame fault it in again. Without that, 2CylinderEngine (many draws)
+// took about 5,400 page faults per 720p frame; with it, about 300.
+TEST_F(LeakTest, CpuDeviceFramesDoNotFaultTheirWorkingMemoryInAgain) {
+    if (!context().info().is_cpu()) GTEST_SKIP() << "the heap setting is for CPU devices";
+    auto scene = load(gltf_asset("2CylinderEngine"));
+    ASSERT_TRUE(scene);
+    renderer().load(*scene,
+                    gpu::prepare_scene_textures(*scene, context().info(), test_texture_settings()));
+    gpu::RenderSettings s;                            // 1280x720, lit
+    for (int i = 0; i < 3; ++i) renderer().render(s); // pipelines, shadow map, first frames
+    const long before = minor_page_faults();
+    constexpr int kFrames = 10;
+    for (int i = 0; i < kFrames; ++i) renderer().render(s);
+    const long per_frame = (minor_page_faults() - before) / kFrames;
+    renderer().unload();
+    EXPECT_LT(per_frame, 2000) << "page faults per frame";
 }
 
 } // namespace

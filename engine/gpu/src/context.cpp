@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cstdlib>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #include <cstring>
 #include <string_view>
 
@@ -24,6 +27,22 @@ std::vector<VkExtensionProperties> device_extensions(VkPhysicalDevice pd) {
     std::vector<VkExtensionProperties> out(n);
     vkEnumerateDeviceExtensionProperties(pd, nullptr, &n, out.data());
     return out;
+}
+
+// A CPU device (lavapipe) allocates each frame's working memory (binned triangles,
+// vertex-shader output per draw) from this process's heap and frees it when the
+// frame is done. glibc's defaults hand such blocks back to the kernel (blocks of
+// 128 KiB and more are mmapped and unmapped one by one, a freed heap top over 128
+// KiB is trimmed), so every frame page-faults and zeroes them again. Measured:
+// 2CylinderEngine 5,400 page faults per 720p frame (300 kept), 53 -> 42 ms a frame;
+// the 100k-instance grid 27,000 (400). Blocks up to 32 MiB now come from the heap
+// and up to 256 MiB of free heap stays mapped. Process-wide, and only where the
+// device rasterizes on the CPU.
+void keep_frame_memory_mapped() {
+#if defined(__GLIBC__)
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 256 << 20);
+#endif
 }
 
 // The feature set the renderer cannot work without. Returns the missing ones.
@@ -101,6 +120,7 @@ Context::Context(const ContextOptions& options) : validation_(std::make_unique<V
     try {
         create_instance(options);
         pick_physical_device(options);
+        if (info_.is_cpu()) keep_frame_memory_mapped();
         create_device(options.presentation);
     } catch (...) {
         destroy(); // the destructor does not run for a throwing constructor

@@ -14,7 +14,9 @@
 
 #include "cull_structs.glsl"
 
-layout(local_size_x = 64) in;
+// 256 invocations a workgroup: lavapipe runs each workgroup as one call of the
+// compiled shader, so fewer, larger workgroups spend less on dispatch.
+layout(local_size_x = 256) in;
 
 // Uniform for the whole dispatch: a CPU device (lavapipe) loads it once instead of
 // gathering it per lane, as it does for device-address reads.

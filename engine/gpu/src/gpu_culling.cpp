@@ -266,7 +266,7 @@ void GpuCuller::record(VkCommandBuffer cmd, const Frustum& frustum, CullMethod m
     const CullPush push{resources_.get(objects_).address, resources_.get(draws_).address,
                         instance_ids(), resources_.get(visible_).address};
     vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
-    vkCmdDispatch(cmd, (objects_count_ + 63) / 64, 1, 1);
+    vkCmdDispatch(cmd, (objects_count_ + 255) / 256, 1, 1);
     if (timestamps)
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, timestamps_.get(), 1);
     memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,

@@ -105,6 +105,7 @@ pvertex_avx2(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t
                 dist =
                     _mm256_fmadd_ps(_mm256_set1_ps(pa[k].nz), _mm256_loadu_ps(pa[k].z + i), dist);
                 all = _mm256_and_ps(all, _mm256_cmp_ps(dist, _mm256_setzero_ps(), _CMP_GE_OQ));
+                if (_mm256_testz_ps(all, all)) break; // all 8 outside: nothing left to test
             }
             const int mask = _mm256_movemask_ps(all);
             visible += static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(mask)));
@@ -134,6 +135,7 @@ pvertex_avx512(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size
                 dist =
                     _mm512_fmadd_ps(_mm512_set1_ps(pa[k].nz), _mm512_loadu_ps(pa[k].z + i), dist);
                 all = _mm512_mask_cmp_ps_mask(all, dist, _mm512_setzero_ps(), _CMP_GE_OQ);
+                if (all == 0) break; // all 16 outside: the other planes cannot change that
             }
             _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i), _mm_maskz_set1_epi8(all, 1));
             visible += static_cast<std::size_t>(__builtin_popcount(all));

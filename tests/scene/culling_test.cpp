@@ -7,6 +7,7 @@
 #include <sherpa/scene/scene_loader.h>
 #include <sherpa/scene/shadow_cascades.h>
 
+#include <numeric>
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -216,6 +217,56 @@ TEST(Culling, SimdPathsMatchScalarOnTheGrid) {
             cull_boxes(f, boxes, CullMethod::PVertex, s, simd, threads);
             EXPECT_EQ(scalar, simd) << to_string(s) << " threads " << threads;
         }
+}
+
+// The AVX-512 kernel decides whole blocks of 16 boxes from their bounds (all outside a
+// plane, or all inside every plane). Its result must be exactly what testing every
+// box gives: clustered boxes (tight blocks, decided whole), scattered ones (mixed
+// blocks), boxes straddling planes, invalid ones, sizes that end in a partial block,
+// one thread and two.
+TEST(Culling, BlockDecisionsEqualBoxByBoxResults) {
+    if (best_simd_level() < SimdLevel::Avx512) GTEST_SKIP() << "no AVX-512 here";
+    std::mt19937 rng(777);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    std::uint64_t whole_in = 0, whole_out = 0, mixed = 0;
+    for (int cam = 0; cam < 40; ++cam) {
+        const RandomCase rc = random_camera(rng);
+        const Frustum f = frustum_from_view_projection(rc.vp);
+        std::vector<Aabb> boxes;
+        const std::size_t count = 8192 + rng() % 700;
+        while (boxes.size() < count) {
+            const Aabb seed = random_box(rng, rc.eye);
+            const glm::vec3 c = seed.center();
+            const float spread = (rng() % 4 == 0) ? 30.0f : 0.05f * (1.0f + glm::length(c));
+            for (int k = 0; k < 16 && boxes.size() < count; ++k) {
+                const glm::vec3 p = c + glm::vec3(u(rng), u(rng), u(rng)) * spread;
+                const glm::vec3 h = glm::vec3(0.5f + 0.5f * u(rng)) * 0.02f * spread;
+                boxes.push_back(Aabb::from_min_max(p - h, p + h));
+            }
+        }
+        boxes[rng() % count] = Aabb::from_min_max({NAN, 0, 0}, {1, 1, 1});
+        boxes[rng() % count] = Aabb::from_min_max({3, 3, 3}, {-3, -3, -3});
+        BoxesSoA with_blocks;
+        with_blocks.assign(boxes);
+        BoxesSoA box_by_box = with_blocks;
+        for (auto* v : {&box_by_box.block_min_x, &box_by_box.block_min_y, &box_by_box.block_min_z,
+                        &box_by_box.block_max_x, &box_by_box.block_max_y, &box_by_box.block_max_z})
+            v->clear();
+        std::vector<std::uint8_t> want(count), got(count);
+        cull_boxes(f, box_by_box, CullMethod::PVertex, SimdLevel::Avx512, want);
+        for (int threads : {1, 2}) {
+            cull_boxes(f, with_blocks, CullMethod::PVertex, SimdLevel::Avx512, got, threads);
+            ASSERT_EQ(want, got) << "camera " << cam << ", threads " << threads;
+        }
+        for (std::size_t b = 0; b + 16 <= count; b += 16) {
+            const int n = std::accumulate(want.begin() + b, want.begin() + b + 16, 0);
+            (n == 16 ? whole_in : n == 0 ? whole_out : mixed) += 1;
+        }
+    }
+    // The cases above exercised every verdict.
+    EXPECT_GT(whole_in, 100u);
+    EXPECT_GT(whole_out, 100u);
+    EXPECT_GT(mixed, 100u);
 }
 
 TEST(CullPass, ListsGroupsAndBackToFrontTransparents) {

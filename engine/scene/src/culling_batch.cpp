@@ -3,7 +3,9 @@
 #include <sherpa/scene/culling.h>
 
 #include <algorithm>
+#include <cmath>
 #include <immintrin.h>
+#include <limits>
 
 namespace sherpa {
 
@@ -42,6 +44,20 @@ void BoxesSoA::assign(std::span<const Aabb> boxes) {
         min_x[i] = lo.x, min_y[i] = lo.y, min_z[i] = lo.z;
         max_x[i] = hi.x, max_y[i] = hi.y, max_z[i] = hi.z;
     }
+    const std::size_t block_count = (boxes.size() + kBlock - 1) / kBlock;
+    for (auto* v : {&block_min_x, &block_min_y, &block_min_z})
+        v->assign(block_count, std::numeric_limits<float>::infinity());
+    for (auto* v : {&block_max_x, &block_max_y, &block_max_z})
+        v->assign(block_count, -std::numeric_limits<float>::infinity());
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const std::size_t k = i / kBlock;
+        block_min_x[k] = std::min(block_min_x[k], min_x[i]);
+        block_min_y[k] = std::min(block_min_y[k], min_y[i]);
+        block_min_z[k] = std::min(block_min_z[k], min_z[i]);
+        block_max_x[k] = std::max(block_max_x[k], max_x[i]);
+        block_max_y[k] = std::max(block_max_y[k], max_y[i]);
+        block_max_z[k] = std::max(block_max_z[k], max_z[i]);
+    }
 }
 
 namespace detail {
@@ -52,18 +68,23 @@ namespace {
 struct PlaneArrays {
     const float *x, *y, *z;
     float nx, ny, nz, d;
+    bool x_max, y_max, z_max; // the p-vertex reads max (else min) on that axis
 };
 
 std::uint32_t plane_arrays(const Frustum& f, const BoxesSoA& b, PlaneArrays* out) {
     for (std::uint32_t i = 0; i < f.plane_count; ++i) {
         const Plane& p = f.planes[i];
-        out[i] = {p.normal.x >= 0 ? b.max_x.data() : b.min_x.data(),
-                  p.normal.y >= 0 ? b.max_y.data() : b.min_y.data(),
-                  p.normal.z >= 0 ? b.max_z.data() : b.min_z.data(),
+        const bool x_max = p.normal.x >= 0, y_max = p.normal.y >= 0, z_max = p.normal.z >= 0;
+        out[i] = {x_max ? b.max_x.data() : b.min_x.data(),
+                  y_max ? b.max_y.data() : b.min_y.data(),
+                  z_max ? b.max_z.data() : b.min_z.data(),
                   p.normal.x,
                   p.normal.y,
                   p.normal.z,
-                  p.d};
+                  p.d,
+                  x_max,
+                  y_max,
+                  z_max};
     }
     return f.plane_count;
 }
@@ -117,29 +138,85 @@ pvertex_avx2(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t
     return visible + pvertex_scalar(f, b, i, end, out);
 }
 
+namespace {
+
+// Signed distance of 16 corners to plane p: the corner takes max (else min) on each
+// axis where `max_x/y/z` says so. arrays: min x, y, z, max x, y, z at i.
+__attribute__((target("avx512f,avx512bw,avx512vl,bmi2,popcnt"))) inline __m512
+corner_distance16(const PlaneArrays& p, const float* const* arrays, std::size_t i, bool max_x,
+                  bool max_y, bool max_z) {
+    __m512 dist = _mm512_set1_ps(p.d);
+    dist = _mm512_fmadd_ps(_mm512_set1_ps(p.nx), _mm512_loadu_ps(arrays[max_x ? 3 : 0] + i), dist);
+    dist = _mm512_fmadd_ps(_mm512_set1_ps(p.ny), _mm512_loadu_ps(arrays[max_y ? 4 : 1] + i), dist);
+    return _mm512_fmadd_ps(_mm512_set1_ps(p.nz), _mm512_loadu_ps(arrays[max_z ? 5 : 2] + i), dist);
+}
+
+// p-vertex test of 16 boxes (or 16 block bounds) at i: bit j set where box i + j
+// passes every plane. With `wholly_inside`, also the n-vertex test: bit j set where
+// the whole box is inside every plane. Stops once all 16 have failed a plane.
+__attribute__((target("avx512f,avx512bw,avx512vl,bmi2,popcnt"))) inline __mmask16
+pvertex16(const PlaneArrays* pa, std::uint32_t n, const float* const* arrays, std::size_t i,
+          __mmask16* wholly_inside) {
+    const __m512 zero = _mm512_setzero_ps();
+    __mmask16 all = 0xFFFF, inside = 0xFFFF;
+    for (std::uint32_t k = 0; k < n; ++k) {
+        const PlaneArrays& p = pa[k];
+        all = _mm512_mask_cmp_ps_mask(
+            all, corner_distance16(p, arrays, i, p.x_max, p.y_max, p.z_max), zero, _CMP_GE_OQ);
+        if (wholly_inside)
+            inside = _mm512_mask_cmp_ps_mask(
+                inside, corner_distance16(p, arrays, i, !p.x_max, !p.y_max, !p.z_max), zero,
+                _CMP_GE_OQ);
+        if (all == 0) break; // all 16 outside: the other planes cannot change that
+    }
+    if (wholly_inside) *wholly_inside = inside & all;
+    return all;
+}
+
+} // namespace
+
+// Blocks of 16 boxes are first decided 16 at a time from their bounds, with the same
+// fused multiply-adds: rounding is monotonic, so a box inside a block's bounds never
+// gets a larger p-vertex distance than the bounds' p-vertex, nor a smaller one than
+// the bounds' n-vertex. A block outside some plane is all culled, one inside every
+// plane all visible, exactly as the per-box test would decide; the rest are tested
+// box by box.
 __attribute__((target("avx512f,avx512bw,avx512vl,bmi2,popcnt"))) std::size_t
 pvertex_avx512(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size_t end,
                std::uint8_t* out) {
+    static_assert(BoxesSoA::kBlock == 16, "one block per AVX-512 vector");
     PlaneArrays pa[6];
     const std::uint32_t n = plane_arrays(f, b, pa);
+    const float* boxes[6] = {b.min_x.data(), b.min_y.data(), b.min_z.data(),
+                             b.max_x.data(), b.max_y.data(), b.max_z.data()};
+    const float* blocks[6] = {b.block_min_x.data(), b.block_min_y.data(), b.block_min_z.data(),
+                              b.block_max_x.data(), b.block_max_y.data(), b.block_max_z.data()};
+    const bool have_blocks = b.block_min_x.size() == (b.size() + 15) / 16;
     std::size_t i = begin, visible = 0;
-    if (!f.empty)
-        for (; i + 16 <= end; i += 16) {
-            __mmask16 all = 0xFFFF;
-            for (std::uint32_t k = 0; k < n; ++k) {
-                __m512 dist = _mm512_set1_ps(pa[k].d);
-                dist =
-                    _mm512_fmadd_ps(_mm512_set1_ps(pa[k].nx), _mm512_loadu_ps(pa[k].x + i), dist);
-                dist =
-                    _mm512_fmadd_ps(_mm512_set1_ps(pa[k].ny), _mm512_loadu_ps(pa[k].y + i), dist);
-                dist =
-                    _mm512_fmadd_ps(_mm512_set1_ps(pa[k].nz), _mm512_loadu_ps(pa[k].z + i), dist);
-                all = _mm512_mask_cmp_ps_mask(all, dist, _mm512_setzero_ps(), _CMP_GE_OQ);
-                if (all == 0) break; // all 16 outside: the other planes cannot change that
+    if (f.empty) return pvertex_scalar(f, b, i, end, out);
+    while (i + 16 <= end) {
+        if (have_blocks && i % 256 == 0 && i + 256 <= end) {
+            __mmask16 inside = 0;
+            const __mmask16 some = pvertex16(pa, n, blocks, i / 16, &inside);
+            for (std::uint32_t j = 0; j < 16; ++j, i += 16) {
+                if (!((some >> j) & 1u) || ((inside >> j) & 1u)) {
+                    const bool in = (inside >> j) & 1u;
+                    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i),
+                                     _mm_set1_epi8(in ? 1 : 0));
+                    visible += in ? 16 : 0;
+                    continue;
+                }
+                const __mmask16 all = pvertex16(pa, n, boxes, i, nullptr);
+                _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i), _mm_maskz_set1_epi8(all, 1));
+                visible += static_cast<std::size_t>(__builtin_popcount(all));
             }
-            _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i), _mm_maskz_set1_epi8(all, 1));
-            visible += static_cast<std::size_t>(__builtin_popcount(all));
+            continue;
         }
+        const __mmask16 all = pvertex16(pa, n, boxes, i, nullptr);
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i), _mm_maskz_set1_epi8(all, 1));
+        visible += static_cast<std::size_t>(__builtin_popcount(all));
+        i += 16;
+    }
     return visible + pvertex_scalar(f, b, i, end, out);
 }
 

@@ -60,8 +60,14 @@ bool box_is_invalid(glm::vec3 min, glm::vec3 max);
 
 // Structure-of-arrays boxes for the batch paths.
 struct BoxesSoA {
+    static constexpr std::size_t kBlock = 16; // boxes per block (one AVX-512 vector)
     std::vector<float> min_x, min_y, min_z, max_x, max_y, max_z;
     std::vector<std::uint32_t> invalid; // indices of invalid boxes (stored as empty boxes)
+    // Bounds of each run of kBlock consecutive boxes (the last run may be shorter),
+    // the same six arrays: the AVX-512 kernel tests 16 blocks at a time and decides a
+    // whole block when its bounds are wholly outside a plane or wholly inside every
+    // plane. Filled by assign(); arrays changed afterwards need assign() again.
+    std::vector<float> block_min_x, block_min_y, block_min_z, block_max_x, block_max_y, block_max_z;
     void assign(std::span<const Aabb> boxes);
     std::size_t size() const { return min_x.size(); }
     Aabb box(std::size_t i) const {

@@ -65,7 +65,7 @@ bool visible_box(vec3 bmin, vec3 bmax) {
 void main() {
     const uint i = gl_GlobalInvocationID.x;
     const bool in_range = i < P.object_count;
-    CullObject o;
+    CullObject o = CullObject(vec3(0.0), 0u, vec3(0.0), 0u); // lanes past the end read nothing
     if (in_range) o = pc.objects.v[i];
     const bool invalid = in_range && (o.batch & CULL_INVALID_BIT) != 0u; // kept, as on the CPU
     const bool keep = in_range && (invalid || visible_box(o.bmin, o.bmax));

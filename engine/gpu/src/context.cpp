@@ -246,6 +246,22 @@ void Context::pick_physical_device(const ContextOptions& options) {
             rejected += name + ": lacks " + missing + "; ";
             continue;
         }
+        // Subgroup vote (forward shading's sun branch) in fragment shaders, vote and
+        // ballot (GPU culling's one atomic per subgroup) in compute shaders.
+        auto subgroup = vk_init<VkPhysicalDeviceSubgroupProperties>(
+            VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES);
+        auto props2 =
+            vk_init<VkPhysicalDeviceProperties2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2);
+        props2.pNext = &subgroup;
+        vkGetPhysicalDeviceProperties2(pd, &props2);
+        const VkSubgroupFeatureFlags ops =
+            VK_SUBGROUP_FEATURE_VOTE_BIT | VK_SUBGROUP_FEATURE_BALLOT_BIT;
+        if ((subgroup.supportedOperations & ops) != ops ||
+            (subgroup.supportedStages & VK_SHADER_STAGE_FRAGMENT_BIT) == 0 ||
+            (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) == 0) {
+            rejected += name + ": lacks subgroup vote/ballot in fragment and compute shaders; ";
+            continue;
+        }
         // Lavapipe is the default everywhere (reproducible images); otherwise any.
         const int score = name.find("llvmpipe") != std::string::npos ? 2 : 1;
         if (score > best_score) {

@@ -167,7 +167,7 @@ int run_render(Args args) {
 
     const auto load_start = std::chrono::steady_clock::now();
     LoadResult loaded = load_scene(spec);
-    RenderRun run{std::string(spec), settings, camera_text, {}, {}, {}};
+    RenderRun run{std::string(spec), settings, camera_text, {}, {}, {}, std::nullopt};
     run.timing.scene_load_ms = ms_since(load_start);
     if (!loaded) {
         std::fprintf(stderr, "error: %s\n", loaded.error.c_str());

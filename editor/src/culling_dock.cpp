@@ -128,10 +128,12 @@ void CullingDock::showRendererPasses() {
                                   ms(c.gpu_ms)};
         for (int col = 0; col < 8; ++col) {
             QTableWidgetItem* item = passes_->item(r, col);
-            if (!item) passes_->setItem(r, col, item = new QTableWidgetItem);
+            if (!item) {
+                passes_->setItem(r, col, item = new QTableWidgetItem);
+                item->setTextAlignment(col == 0 ? Qt::AlignLeft | Qt::AlignVCenter
+                                                : Qt::AlignRight | Qt::AlignVCenter);
+            }
             item->setText(cells[col]);
-            item->setTextAlignment(col == 0 ? Qt::AlignLeft | Qt::AlignVCenter
-                                            : Qt::AlignRight | Qt::AlignVCenter);
         }
     }
 }

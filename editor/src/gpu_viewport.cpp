@@ -122,7 +122,7 @@ QStringList GpuViewport::validationMessages() const {
 }
 
 PreparedTextures GpuViewport::preparedTextures() const {
-    return impl_->scene ? impl_->prepared : nullptr;
+    return impl_->prepared; // reset with the scene
 }
 
 const Scene* GpuViewport::scene() const {
@@ -225,12 +225,8 @@ std::uint64_t GpuViewport::textureBytes() const {
     return scene ? scene->textures().gpu_bytes() : 0;
 }
 
-const RingHistory<gpu::CullFrame>& GpuViewport::cullHistory() const {
-    return impl_->renderer->cull_history();
-}
-
 bool GpuViewport::lastCullPasses(std::vector<CullStats>& passes, bool& cached_shadows) const {
-    const RingHistory<gpu::CullFrame>& h = cullHistory();
+    const auto& h = impl_->renderer->cull_history();
     if (h.size() == 0) return false;
     const gpu::CullFrame& f = h[h.size() - 1];
     passes = f.passes;

@@ -21,10 +21,6 @@
 
 class QVulkanInstance;
 
-namespace sherpa::gpu {
-struct CullFrame;
-}
-
 namespace sherpa::editor {
 
 // What the window wants drawn; mapped to gpu::RenderSettings inside.
@@ -77,11 +73,9 @@ public:
     // Bytes of the loaded scene's textures on the GPU (0 without a scene).
     std::uint64_t textureBytes() const;
     double lastGpuMs() const { return last_gpu_ms_; }
-    // The renderer's per-pass culling statistics of the last presented frames
-    // (camera and each shadow cascade), oldest first.
-    const RingHistory<gpu::CullFrame>& cullHistory() const;
-    // The last frame's passes from that history (camera, then each cascade); false
-    // before any culled frame. `cached_shadows`: the cascades were reused, not drawn.
+    // The last presented frame's culling passes from the renderer's history (camera,
+    // then each cascade); false before any culled frame. `cached_shadows`: the cascades were
+    // reused, not drawn.
     bool lastCullPasses(std::vector<CullStats>& passes, bool& cached_shadows) const;
     // Messages of the Khronos validation layer so far (SHERPA_VALIDATION=1 turns
     // it on in release builds), one "[id] text" each; tests require none.

@@ -66,8 +66,9 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent)
     statusBar()->addPermanentWidget(frame_label_);
 
     createDocks();
-    // After the constructor returns, so that a scene load started right away (command
-    // line) runs on the pool while the device and pipelines are created here.
+    // After the constructor returns, so that the window shows first. A scene opened
+    // before then (command line) makes the device itself: its textures are prepared
+    // on the loader thread, for that device.
     QTimer::singleShot(0, this, &MainWindow::createRenderer);
     createActions();
     createMenus();
@@ -264,7 +265,7 @@ void MainWindow::connectActions() {
 void MainWindow::openScene(const QString& spec) {
     log_->append(LogDock::Level::Info, tr("Loading %1…").arg(spec));
     // The first scene too prepares its textures on the loader thread: that needs the device.
-    if (!gpu_ && vulkan_) createRenderer();
+    if (vulkan_) createRenderer(); // returns at once when made already
     if (gpu_) { // textures are prepared on the loader thread, for this device and settings
         gpu_->setTextureCache(settings_.cacheDirectory(), settings_.textureQuality());
         loader_.setTexturePreparer(gpu_->texturePreparer());

@@ -81,13 +81,7 @@ TEST_P(GoldenTest, MatchesCommittedImage) {
     ASSERT_EQ(h, c.height);
     // Tolerance: rasterizers may differ by rounding; a pixel counts as different
     // when a channel is off by more than 12, and at most 0.5% may differ.
-    std::size_t differing = 0;
-    for (std::size_t i = 0; i < actual.size(); i += 4)
-        for (int ch = 0; ch < 3; ++ch)
-            if (std::abs(int(actual[i + ch]) - int(expected[i + ch])) > 12) {
-                ++differing;
-                break;
-            }
+    const std::size_t differing = differing_pixels(actual, expected, 12, 3);
     const double fraction = double(differing) / double(std::size_t(w) * h);
     if (fraction > 0.005) {
         gpu::write_png(std::string("golden_actual_") + c.name + ".png", c.width, c.height, actual,

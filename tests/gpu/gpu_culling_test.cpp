@@ -128,7 +128,7 @@ TEST_F(GpuCullingTest, LongBatchesMeetingInsideASubgroupHoldExactlyTheirVisibleO
         for (CullMethod m : {CullMethod::Sphere, CullMethod::PVertex, CullMethod::Exact}) {
             const std::uint32_t kept = expect_batches_hold_visible(
                 culler, passes.forward, culler.run(f, m),
-                std::string(spec) + ", method " + std::to_string(int(m)));
+                std::string(spec) + ", method " + std::string(to_string(m)));
             EXPECT_GT(kept, 0u) << spec;
             EXPECT_LT(kept, 1000u) << spec;
         }

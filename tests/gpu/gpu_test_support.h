@@ -4,9 +4,12 @@
 // during which the validation layer said anything.
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <sherpa/gpu/context.h>
 #include <sherpa/gpu/renderer.h>
@@ -22,6 +25,22 @@ inline gpu::TextureSettings test_texture_settings() {
     gpu::TextureSettings s;
     s.cache_dir = std::filesystem::path(SHERPA_TEST_TEXTURE_CACHE);
     return s;
+}
+
+// RGBA8 pixels where one of the first `channels` channels differs by more than
+// `tolerance` (the sizes must match).
+inline std::size_t differing_pixels(const std::vector<std::uint8_t>& a,
+                                    const std::vector<std::uint8_t>& b, int tolerance,
+                                    int channels = 4) {
+    EXPECT_EQ(a.size(), b.size());
+    std::size_t n = 0;
+    for (std::size_t i = 0; i + 3 < a.size() && i + 3 < b.size(); i += 4)
+        for (int ch = 0; ch < channels; ++ch)
+            if (std::abs(int(a[i + ch]) - int(b[i + ch])) > tolerance) {
+                ++n;
+                break;
+            }
+    return n;
 }
 
 struct GpuEnvironment {

@@ -57,9 +57,8 @@ TEST_F(LeakTest, CpuDeviceFramesDoNotFaultTheirWorkingMemoryInAgain) {
     if (!context().info().is_cpu()) GTEST_SKIP() << "the heap setting is for CPU devices";
     auto scene = load(gltf_asset("2CylinderEngine"));
     ASSERT_TRUE(scene);
-    renderer().load(*scene,
-                    gpu::prepare_scene_textures(*scene, context().info(), test_texture_settings()));
-    gpu::RenderSettings s;                            // 1280x720, lit
+    renderer().load(*scene); // textures prepared with the renderer's test_texture_settings()
+    gpu::RenderSettings s;   // 1280x720, lit
     for (int i = 0; i < 3; ++i) renderer().render(s); // pipelines, shadow map, first frames
     const long before = minor_page_faults();
     constexpr int kFrames = 10;

@@ -25,20 +25,6 @@ TEST(PrepassModeTest, AutoIsOnForGpusAndOnCpuDevicesUpToOneTrianglePerFourPixels
         }
 }
 
-// Pixels where some channel differs by more than `tolerance`.
-std::size_t differing_pixels(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b,
-                             int tolerance) {
-    EXPECT_EQ(a.size(), b.size());
-    std::size_t n = 0;
-    for (std::size_t i = 0; i + 3 < a.size() && i + 3 < b.size(); i += 4)
-        for (int ch = 0; ch < 4; ++ch)
-            if (std::abs(int(a[i + ch]) - int(b[i + ch])) > tolerance) {
-                ++n;
-                break;
-            }
-    return n;
-}
-
 class RenderPathTest : public GpuTest, public ::testing::WithParamInterface<const char*> {
 protected:
     std::vector<std::uint8_t> render(const Scene& scene, gpu::StreamPolicy policy,

@@ -96,14 +96,8 @@ TEST_F(RendererCullingTest, CascadeCullingCutsShadowDrawsWithoutChangingTheImage
     }
     for (const auto* rgba : {&cpu_rgba, &gpu_rgba}) {
         ASSERT_EQ(rgba->size(), none_rgba.size());
-        std::size_t differing = 0;
-        for (std::size_t i = 0; i < rgba->size(); i += 4)
-            for (std::size_t c = 0; c < 3; ++c)
-                if (std::abs(int((*rgba)[i + c]) - int(none_rgba[i + c])) > 2) {
-                    ++differing;
-                    break;
-                }
-        EXPECT_EQ(differing, 0u) << "culled shadows and views look the same as unculled ones";
+        EXPECT_EQ(differing_pixels(*rgba, none_rgba, 2, 3), 0u)
+            << "culled shadows and views look the same as unculled ones";
     }
 }
 

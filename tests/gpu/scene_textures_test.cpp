@@ -50,7 +50,9 @@ gpu::TextureSettings block_settings() {
 
 TEST_F(SceneTexturesTest, DeviceSamplesBcOnLavapipe) {
     // Lavapipe decodes BC formats; a device without them takes the RGBA8 path (below).
-    if (context().info().is_cpu()) EXPECT_TRUE(context().info().bc_textures);
+    if (context().info().is_cpu()) {
+        EXPECT_TRUE(context().info().bc_textures);
+    }
 }
 
 TEST_F(SceneTexturesTest, PreparedOnAnotherThreadUploadsBlocksWithFullMipChains) {

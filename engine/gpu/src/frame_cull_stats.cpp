@@ -16,7 +16,7 @@ void Renderer::read_cull_stats(FrameSlot& slot, FrameStats& out) {
     if (slot.pass_count == 0) return;
     const bool gpu = slot.cull == CullPath::Gpu;
     const std::uint32_t passes = slot.pass_count;
-    std::uint64_t ts[2 * (1 + kMaxCascades)] = {};
+    std::uint64_t ts[2 * kMaxCullPasses] = {};
     bool have_ts = false;
     if (gpu && slot.cull_timestamps)
         have_ts =
@@ -26,7 +26,6 @@ void Renderer::read_cull_stats(FrameSlot& slot, FrameStats& out) {
     const auto* bytes =
         gpu ? static_cast<const std::uint8_t*>(resources_->get(slot.cull_readback).mapped)
             : nullptr;
-    const auto& groups = scene_ ? scene_->groups() : std::vector<DrawGroup>{};
     for (std::uint32_t p = 0; p < passes; ++p) {
         const PassCull& pc = slot.passes[p];
         CullStats st = pc.stats; // draws and CPU-path triangles tallied while recording
@@ -42,6 +41,8 @@ void Renderer::read_cull_stats(FrameSlot& slot, FrameStats& out) {
             }
             if (p == 0) {
                 // Blended instances: CPU-tested, drawn one by one (tallied already).
+                // A frame with passes had a scene.
+                const auto& groups = scene_->groups();
                 if (!pc.group_visible.empty())
                     for (std::size_t g = 0; g < groups.size(); ++g)
                         if (groups[g].alpha == AlphaMode::Blend) visible += pc.group_visible[g];

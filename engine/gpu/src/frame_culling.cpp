@@ -23,8 +23,6 @@ namespace sherpa::gpu {
 
 namespace {
 
-constexpr std::uint32_t kMaxPasses = 1 + kMaxCascades;
-
 bool box_visible(const Frustum& f, const Aabb& box, CullMethod m) {
     switch (m) {
     case CullMethod::Sphere:
@@ -91,7 +89,7 @@ void Renderer::build_gpu_culling() {
             instances.push_back(inst);
         }
     }
-    for (std::uint32_t p = 0; p < kMaxPasses; ++p) {
+    for (std::uint32_t p = 0; p < kMaxCullPasses; ++p) {
         auto culler = std::make_unique<GpuCuller>(context_, *resources_, kFramesInFlight);
         culler->build(objects, draws, instances);
         culling_->gpu.push_back(std::move(culler));
@@ -177,7 +175,7 @@ void Renderer::cull_frame(VkCommandBuffer cmd, FrameSlot& slot, const RenderSett
     // The cull-boxes overlay colours the camera pass's CPU result.
     const bool camera_cpu = !gpu || settings.cull_check || (settings.overlays & kOverlayCullBoxes);
 
-    const VkDeviceSize id_bytes = std::max<VkDeviceSize>(VkDeviceSize{n} * 4 * kMaxPasses, 4);
+    const VkDeviceSize id_bytes = std::max<VkDeviceSize>(VkDeviceSize{n} * 4 * kMaxCullPasses, 4);
     if (id_bytes > slot.cull_ids_capacity) {
         resources_->destroy(slot.cull_ids);
         slot.cull_ids_capacity = id_bytes;
@@ -195,7 +193,7 @@ void Renderer::cull_frame(VkCommandBuffer cmd, FrameSlot& slot, const RenderSett
         any && slot.cull_check ? VkDeviceSize{any->object_count()} * 4 : 0;
     if (gpu) {
         const VkDeviceSize bytes =
-            std::max<VkDeviceSize>((draw_bytes + flag_bytes) * kMaxPasses, 4);
+            std::max<VkDeviceSize>((draw_bytes + flag_bytes) * kMaxCullPasses, 4);
         if (bytes > slot.cull_readback_capacity) {
             resources_->destroy(slot.cull_readback);
             slot.cull_readback_capacity = bytes;
@@ -205,14 +203,14 @@ void Renderer::cull_frame(VkCommandBuffer cmd, FrameSlot& slot, const RenderSett
         if (!slot.cull_timestamps && context_.info().timestamps) {
             auto qi = vk_init<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
             qi.queryType = VK_QUERY_TYPE_TIMESTAMP;
-            qi.queryCount = 2 * kMaxPasses;
+            qi.queryCount = 2 * kMaxCullPasses;
             VkQueryPool pool = VK_NULL_HANDLE;
             vk_check(vkCreateQueryPool(context_.device(), &qi, nullptr, &pool),
                      "vkCreateQueryPool");
             slot.cull_timestamps = UniqueQueryPool(context_.device(), pool);
         }
         if (slot.cull_timestamps)
-            vkResetQueryPool(context_.device(), slot.cull_timestamps.get(), 0, 2 * kMaxPasses);
+            vkResetQueryPool(context_.device(), slot.cull_timestamps.get(), 0, 2 * kMaxCullPasses);
     }
     std::uint32_t block = 0;
     for (std::uint32_t i = 0; i < slots_.size(); ++i)

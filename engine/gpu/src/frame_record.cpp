@@ -53,7 +53,10 @@ void Renderer::record_frame(VkCommandBuffer cmd, std::uint32_t index, const Rend
     wait_slot(slot);
     // Frames nobody read the results of (the swapchain path) still reach the
     // culling history, before this slot's queries are reset.
-    if (slot.has_results && !slot.history_pushed) read_stats(slot);
+    if (slot.has_results && !slot.history_pushed) {
+        FrameStats unused;
+        read_cull_stats(slot, unused);
+    }
     vkResetQueryPool(context_.device(), slot.timestamps.get(), 0, kTimestampCount);
     if (slot.statistics) vkResetQueryPool(context_.device(), slot.statistics.get(), 0, 1);
     slot.has_results = false;
@@ -97,7 +100,7 @@ void Renderer::draw_groups(VkCommandBuffer cmd, FrameSlot& slot, Pipelines& p,
 }
 
 void Renderer::draw_blended(VkCommandBuffer cmd, FrameSlot& slot, Pipelines& p,
-                            DrawPipeline pipeline) {
+                            DrawPipeline pipeline, CullStats& tally) {
     if (!scene_) return;
     // Back to front by the view depth of each instance's bounds centre.
     struct Item {
@@ -135,10 +138,8 @@ void Renderer::draw_blended(VkCommandBuffer cmd, FrameSlot& slot, Pipelines& p,
         push(cmd, p.layout(), pc);
         vkCmdDrawIndexed(cmd, mesh.index_count, 1, mesh.first_index, 0, it.instance);
         ++slot.draw_calls;
-        if (slot.pass_count) {
-            ++slot.passes[0].stats.draw_calls;
-            slot.passes[0].stats.triangles += mesh.index_count / 3;
-        }
+        ++tally.draw_calls;
+        tally.triangles += mesh.index_count / 3;
     }
 }
 
@@ -286,7 +287,8 @@ void Renderer::record_passes(VkCommandBuffer cmd, FrameSlot& slot, const RenderT
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ts, 4);
         set_depth(cmd, VK_COMPARE_OP_GREATER, false);
         draw_blended(cmd, slot, p,
-                     DrawPipeline{VK_NULL_HANDLE, static_cast<std::uint32_t>(settings.view), true});
+                     DrawPipeline{VK_NULL_HANDLE, static_cast<std::uint32_t>(settings.view), true},
+                     shading);
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ts, 5);
     }
     draw_overlays(cmd, slot, p, settings);

@@ -15,6 +15,9 @@ inline constexpr const char* kPassNames[] = {"shadows",    "depth_prepass", "opa
                                              "alpha_mask", "alpha_blend",   "overlays"};
 inline constexpr std::uint32_t kTimestampCount = std::size(kPassNames) + 1;
 
+// Culled passes a frame can have: the camera and each shadow cascade in use.
+inline constexpr std::uint32_t kMaxCullPasses = 1 + kShadowCascades;
+
 // One culled pass of a frame.
 struct PassCull {
     Frustum frustum;

@@ -13,7 +13,7 @@ namespace sherpa::gpu {
 
 inline constexpr std::uint32_t kMaxLights = 16;
 inline constexpr std::uint32_t kMaxCascades = 4;    // array size in GPUFrameData
-inline constexpr std::uint32_t kShadowCascades = 3; // cascades used (mesh.vert varyings)
+inline constexpr std::uint32_t kShadowCascades = 3; // cascades the renderer fits and draws
 inline constexpr std::uint32_t kNoCascade = 0xffffffffu;
 
 // Bindless slots registered before any scene texture.

@@ -157,7 +157,9 @@ private:
     void record_shadows(VkCommandBuffer cmd, FrameSlot& slot, Pipelines& p, std::uint32_t cascades);
     void draw_groups(VkCommandBuffer cmd, FrameSlot& slot, Pipelines& p, DrawPipeline pipeline,
                      AlphaMode alpha, std::uint32_t cascade, bool cull, CullStats& tally);
-    void draw_blended(VkCommandBuffer cmd, FrameSlot& slot, Pipelines& p, DrawPipeline pipeline);
+    // Blended instances back to front, one draw each; draws and triangles go to `tally`.
+    void draw_blended(VkCommandBuffer cmd, FrameSlot& slot, Pipelines& p, DrawPipeline pipeline,
+                      CullStats& tally);
     void draw_overlays(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
                        const RenderSettings& s);
     FrameStats read_stats(FrameSlot& slot);

@@ -127,7 +127,7 @@ void main() {
         c = vec3(0.0);
         if (subgroupAny(dot(s.n, sun_l) > 0.0)) {
             float view_depth = -(frame.view * vec4(in_world_pos, 1.0)).z;
-            float shadow = sun_shadow(in_world_pos, normalize(in_normal), view_depth);
+            float shadow = sun_shadow(in_world_pos, in_normal, view_depth);
             c = brdf_times_cos(s, sun_l) * frame.sun_radiance.rgb * shadow;
         }
         for (uint i = 0u; i < frame.params.y; ++i) c += punctual_light(s, frame.lights[i], in_world_pos);

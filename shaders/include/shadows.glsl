@@ -12,10 +12,12 @@ float shadow_tap(vec2 uv, uint cascade, float depth) {
     return textureGrad(shadow_map, vec4(uv, float(cascade), depth), vec2(0.0), vec2(0.0));
 }
 
-// n: unit vertex normal (world).
-float sun_shadow(vec3 world, vec3 n, float view_depth) {
+// normal: the interpolated vertex normal (world), any length; a zero one (degenerate
+// input) gets no normal offset rather than NaN coordinates.
+float sun_shadow(vec3 world, vec3 normal, float view_depth) {
     uint cascades = frame.params.z;
     if (frame.sun_direction.w < 0.5 || cascades == 0u) return 1.0;
+    vec3 n = dot(normal, normal) > 0.0 ? normalize(normal) : vec3(0.0);
     vec4 splits = frame.cascade_splits;
     uint c = min(view_depth > splits.x ? (view_depth > splits.y ? 2u : 1u) : 0u, cascades - 1u);
     // Per-pixel selects of uniform values; indexing the array with c would gather.

@@ -19,15 +19,14 @@ bool gpu_cull_passes(const Scene& scene, const std::vector<std::pair<std::string
             camera_pass.add(i, scene.instances[i].mesh_id, instance_pipeline_key(scene, i));
         camera_pass.update();
         const ScenePasses passes = build_mesh_passes(scene);
-        gpu::GpuCuller camera_culler(context, resources), shadow_culler(context, resources);
+        const auto pipeline = std::make_shared<const gpu::GpuCullPipeline>(context);
+        gpu::GpuCuller camera_culler(context, resources, 1, pipeline),
+            shadow_culler(context, resources, 1, pipeline);
         camera_culler.build(camera_pass, scene);
         shadow_culler.build(passes.shadow, scene);
-        // Lavapipe compiles a compute pipeline at its first dispatch (171 ms for the
-        // camera pass of a 10k grid): one untimed run each keeps that out of `gpu ms`.
-        if (!frusta.empty()) {
-            camera_culler.run(frusta.front().second, CullMethod::PVertex);
-            shadow_culler.run(frusta.front().second, CullMethod::PVertex);
-        }
+        // Lavapipe compiles the (shared) pipeline at its first dispatch (171 ms for
+        // the camera pass of a 10k grid): one untimed run keeps that out of `gpu ms`.
+        if (!frusta.empty()) camera_culler.run(frusta.front().second, CullMethod::PVertex);
         for (std::size_t p = 0; p < frusta.size(); ++p) {
             gpu::GpuCuller& culler = p == 0 ? camera_culler : shadow_culler;
             const gpu::GpuCullReadback r = culler.run(frusta[p].second, CullMethod::PVertex);

@@ -89,8 +89,9 @@ void Renderer::build_gpu_culling() {
             instances.push_back(inst);
         }
     }
+    const auto pipeline = std::make_shared<const GpuCullPipeline>(context_); // one for all passes
     for (std::uint32_t p = 0; p < kMaxCullPasses; ++p) {
-        auto culler = std::make_unique<GpuCuller>(context_, *resources_, kFramesInFlight);
+        auto culler = std::make_unique<GpuCuller>(context_, *resources_, kFramesInFlight, pipeline);
         culler->build(objects, draws, instances);
         culling_->gpu.push_back(std::move(culler));
     }

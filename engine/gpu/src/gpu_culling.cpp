@@ -41,10 +41,8 @@ GPUCullParams cull_params(const Frustum& f, CullMethod method, std::uint32_t obj
     return p;
 }
 
-GpuCuller::GpuCuller(Context& context, ResourceManager& resources, std::uint32_t parameter_blocks)
-    : context_(context), resources_(resources), recorder_(context) {
+GpuCullPipeline::GpuCullPipeline(const Context& context) {
     const VkDevice device = context.device();
-    const std::uint32_t blocks = std::max(parameter_blocks, 1u);
     const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
                                                VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
     auto sli = vk_init<VkDescriptorSetLayoutCreateInfo>(
@@ -55,14 +53,6 @@ GpuCuller::GpuCuller(Context& context, ResourceManager& resources, std::uint32_t
     vk_check(vkCreateDescriptorSetLayout(device, &sli, nullptr, &set_layout),
              "vkCreateDescriptorSetLayout(cull)");
     set_layout_ = UniqueDescriptorSetLayout(device, set_layout);
-    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, blocks};
-    auto pci = vk_init<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
-    pci.maxSets = blocks;
-    pci.poolSizeCount = 1;
-    pci.pPoolSizes = &size;
-    VkDescriptorPool pool = VK_NULL_HANDLE;
-    vk_check(vkCreateDescriptorPool(device, &pci, nullptr, &pool), "vkCreateDescriptorPool(cull)");
-    pool_ = UniqueDescriptorPool(device, pool);
 
     auto range = VkPushConstantRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(CullPush)};
     auto li = vk_init<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
@@ -91,6 +81,24 @@ GpuCuller::GpuCuller(Context& context, ResourceManager& resources, std::uint32_t
     vk_check(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline),
              "vkCreateComputePipelines");
     pipeline_ = UniquePipeline(device, pipeline);
+}
+
+GpuCuller::GpuCuller(Context& context, ResourceManager& resources, std::uint32_t parameter_blocks,
+                     std::shared_ptr<const GpuCullPipeline> pipeline)
+    : context_(context), resources_(resources),
+      pipeline_(pipeline ? std::move(pipeline) : std::make_shared<const GpuCullPipeline>(context)),
+      recorder_(context) {
+    const VkDevice device = context.device();
+    const std::uint32_t blocks = std::max(parameter_blocks, 1u);
+    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, blocks};
+    auto pci = vk_init<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
+    pci.maxSets = blocks;
+    pci.poolSizeCount = 1;
+    pci.pPoolSizes = &size;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    vk_check(vkCreateDescriptorPool(device, &pci, nullptr, &pool), "vkCreateDescriptorPool(cull)");
+    pool_ = UniqueDescriptorPool(device, pool);
+    const VkDescriptorSetLayout set_layout = pipeline_->set_layout();
 
     if (context.info().timestamps) {
         auto qi = vk_init<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
@@ -260,12 +268,13 @@ void GpuCuller::record(VkCommandBuffer cmd, const Frustum& frustum, CullMethod m
         vkCmdResetQueryPool(cmd, timestamps_.get(), 0, 2);
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, timestamps_.get(), 0);
     }
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 1,
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_->pipeline());
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_->layout(), 0, 1,
                             &param_sets_.at(parameter_block), 0, nullptr);
     const CullPush push{resources_.get(objects_).address, resources_.get(draws_).address,
                         instance_ids(), resources_.get(visible_).address};
-    vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
+    vkCmdPushConstants(cmd, pipeline_->layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push),
+                       &push);
     vkCmdDispatch(cmd, (objects_count_ + 255) / 256, 1, 1);
     if (timestamps)
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, timestamps_.get(), 1);

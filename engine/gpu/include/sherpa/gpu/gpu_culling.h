@@ -5,6 +5,7 @@
 // vkCmdDrawIndexedIndirectCount. A check mode reads back the GPU's visible set so
 // it can be compared with the CPU path for the same method.
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -58,11 +59,29 @@ struct GpuCullReadback {
     double gpu_ms = -1.0;                       // timestamped dispatch (-1: no timestamps)
 };
 
+// shaders/cull.comp as a compute pipeline, with its layouts. Cullers made with the
+// same one share it: lavapipe compiles a pipeline at its first dispatch (~170 ms for
+// this one), so a renderer with a culler per pass makes it once.
+class GpuCullPipeline {
+public:
+    explicit GpuCullPipeline(const Context& context);
+    VkPipeline pipeline() const { return pipeline_.get(); }
+    VkPipelineLayout layout() const { return layout_.get(); }
+    VkDescriptorSetLayout set_layout() const { return set_layout_.get(); }
+
+private:
+    UniqueDescriptorSetLayout set_layout_;
+    UniquePipelineLayout layout_;
+    UniquePipeline pipeline_;
+};
+
 class GpuCuller {
 public:
     // `parameter_blocks`: one per frame in flight, so that writing a frame's
-    // parameters never races a frame still running on the GPU.
-    GpuCuller(Context& context, ResourceManager& resources, std::uint32_t parameter_blocks = 1);
+    // parameters never races a frame still running on the GPU. `pipeline`: shared
+    // with other cullers; null makes one for this culler.
+    GpuCuller(Context& context, ResourceManager& resources, std::uint32_t parameter_blocks = 1,
+              std::shared_ptr<const GpuCullPipeline> pipeline = nullptr);
     ~GpuCuller();
     GpuCuller(const GpuCuller&) = delete;
     GpuCuller& operator=(const GpuCuller&) = delete;
@@ -105,11 +124,9 @@ private:
     void release();
     Context& context_;
     ResourceManager& resources_;
-    UniqueDescriptorSetLayout set_layout_;
+    std::shared_ptr<const GpuCullPipeline> pipeline_;
     UniqueDescriptorPool pool_;
     std::vector<VkDescriptorSet> param_sets_; // one per parameter block (uniform buffer)
-    UniquePipelineLayout layout_;
-    UniquePipeline pipeline_;
     UniqueQueryPool timestamps_;
     CommandRecorder recorder_;
     std::vector<BufferHandle> params_;

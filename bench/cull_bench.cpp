@@ -195,8 +195,8 @@ int main(int argc, char** argv) {
         }
         CullOptions opt;
         opt.simd = best;
-        const double pass_ns = median_ns_per_object(
-            repeat, n, [&] { cull_pass(*r.scene, input, f, cam.eye, opt, "camera"); });
+        const double pass_ns =
+            median_ns_per_object(repeat, n, [&] { cull_pass(input, f, cam.eye, opt, "camera"); });
         row("pass (cull+groups)", pass_ns, -1, 0); // p-vertex pass; see its row for false positives
         std::printf("%10s full camera pass: %.3f ms\n", "",
                     pass_ns * static_cast<double>(n) * 1e-6);

@@ -1,8 +1,16 @@
 #pragma once
 // sherpa-texture-sweep --decode: BC7 decode throughput on the DamagedHelmet maps.
+#include <ctime>
 #include <filesystem>
 
 namespace sherpa::bench {
+
+// CPU time of the whole process (every thread), in ms.
+inline double cpu_ms() {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) * 1e3 + double(ts.tv_nsec) / 1e6;
+}
 
 // Encodes the four DamagedHelmet 2048^2 maps to BC7 at the default level, then
 // times decoding them with the reference per-block decoder (decode_bc7_block

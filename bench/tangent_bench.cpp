@@ -150,11 +150,13 @@ void run_parallel(std::uint32_t parts, std::uint32_t rings, std::uint32_t segmen
             Scene scene = base; // copied outside the timed region
             const auto t0 = std::chrono::steady_clock::now();
             generate_scene_tangents(scene, {});
-            best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+            best = std::min(
+                best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         }
-        std::printf("scene of %u primitives, %.1f Mtri, %d thread(s): %.3f s wall (%.3f s/Mtri, with "
-                    "copying vertices in and splitting them out)\n",
-                    parts, mtri, threads, best, best / mtri);
+        std::printf(
+            "scene of %u primitives, %.1f Mtri, %d thread(s): %.3f s wall (%.3f s/Mtri, with "
+            "copying vertices in and splitting them out)\n",
+            parts, mtri, threads, best, best / mtri);
     }
 }
 

@@ -17,14 +17,9 @@
 #include "texture_corpus.h"
 
 using namespace sherpa;
+using bench::cpu_ms;
 
 namespace {
-
-double cpu_ms() {
-    timespec ts{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return double(ts.tv_sec) * 1e3 + double(ts.tv_nsec) / 1e6;
-}
 
 struct Options {
     std::filesystem::path assets = SHERPA_DEFAULT_ASSETS_DIR;

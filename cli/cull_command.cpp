@@ -89,7 +89,7 @@ int run_cull(Args args) {
     const Scene& s = *r.scene;
     const CullInput input = prepare_cull_input(s);
     std::vector<PassResult> passes;
-    passes.push_back(cull_pass(s, input, frustum_from_view_projection(camera.view_projection()),
+    passes.push_back(cull_pass(input, frustum_from_view_projection(camera.view_projection()),
                                camera.eye, options, "camera"));
     // The renderer's cascades for this camera (same fit, light, bounds and defaults),
     // each culled against its volume extended toward the light; casters only.
@@ -107,7 +107,7 @@ int run_cull(Args args) {
                                 frustum_from_view_projection(cascades.cull_view_proj[c]));
             matrices.push_back(cascades.cull_view_proj[c]);
             passes.push_back(
-                cull_pass(s, input, frusta.back().second, camera.eye, shadow, frusta.back().first));
+                cull_pass(input, frusta.back().second, camera.eye, shadow, frusta.back().first));
         }
     }
     if (on_gpu) {

@@ -11,12 +11,10 @@ std::optional<std::filesystem::path> TextureCliOptions::resolved_cache_dir() con
 }
 
 tex::PipelineOptions TextureCliOptions::pipeline_options() const {
-    tex::PipelineOptions o;
-    o.cache_dir = resolved_cache_dir();
-    o.cache_cap_bytes = cache_cap_bytes;
-    o.bc7_level = quality;
-    o.device_supports_bc = !no_bc;
-    return o;
+    // The GPU layer's mapping, for a device that samples BC (--no-bc forces RGBA8).
+    gpu::DeviceInfo bc_device;
+    bc_device.bc_textures = true;
+    return gpu::texture_pipeline_options(bc_device, gpu_settings());
 }
 
 gpu::TextureSettings TextureCliOptions::gpu_settings() const {

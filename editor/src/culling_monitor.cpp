@@ -45,7 +45,7 @@ void CullingMonitor::rerun() {
     }
     const CameraSpec& cam = cullingCamera();
     const Frustum frustum = frustum_from_view_projection(cam.view_projection());
-    PassResult pass = cull_pass(*scene, input_, frustum, cam.eye, options_, "camera");
+    PassResult pass = cull_pass(input_, frustum, cam.eye, options_, "camera");
     visible_.assign(scene->instances.size(), 0);
     for (std::uint32_t i : pass.visible_opaque) visible_[i] = 1;
     for (std::uint32_t i : pass.visible_transparent) visible_[i] = 1;

@@ -278,8 +278,8 @@ TEST(CullPass, ListsGroupsAndBackToFrontTransparents) {
     CullOptions opt;
     opt.count_false_positives = true;
     const PassResult p =
-        cull_pass(*r.scene, prepare_cull_input(*r.scene),
-                  frustum_from_view_projection(c.view_projection()), c.eye, opt, "camera");
+        cull_pass(prepare_cull_input(*r.scene), frustum_from_view_projection(c.view_projection()),
+                  c.eye, opt, "camera");
     EXPECT_EQ(p.stats.visible, p.visible_opaque.size() + p.visible_transparent.size());
     EXPECT_GE(p.visible_transparent.size(), 1u);
     EXPECT_GE(p.stats.false_positives, 0);

@@ -173,6 +173,13 @@ pvertex16(const PlaneArrays* pa, std::uint32_t n, const float* const* arrays, st
     return all;
 }
 
+// Bit j of a 16-box verdict to out[j] as 0/1; returns the number visible.
+__attribute__((target("avx512f,avx512bw,avx512vl,bmi2,popcnt"))) inline std::size_t
+store16(std::uint8_t* out, __mmask16 verdict) {
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm_maskz_set1_epi8(verdict, 1));
+    return static_cast<std::size_t>(__builtin_popcount(verdict));
+}
+
 } // namespace
 
 // Blocks of 16 boxes are first decided 16 at a time from their bounds, with the same
@@ -191,7 +198,8 @@ pvertex_avx512(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size
                              b.max_x.data(), b.max_y.data(), b.max_z.data()};
     const float* blocks[6] = {b.block_min_x.data(), b.block_min_y.data(), b.block_min_z.data(),
                               b.block_max_x.data(), b.block_max_y.data(), b.block_max_z.data()};
-    const bool have_blocks = b.block_min_x.size() == (b.size() + 15) / 16;
+    const bool have_blocks =
+        b.block_min_x.size() == (b.size() + BoxesSoA::kBlock - 1) / BoxesSoA::kBlock;
     std::size_t i = begin, visible = 0;
     if (f.empty) return pvertex_scalar(f, b, i, end, out);
     while (i + 16 <= end) {
@@ -199,22 +207,16 @@ pvertex_avx512(const Frustum& f, const BoxesSoA& b, std::size_t begin, std::size
             __mmask16 inside = 0;
             const __mmask16 some = pvertex16(pa, n, blocks, i / 16, &inside);
             for (std::uint32_t j = 0; j < 16; ++j, i += 16) {
-                if (!((some >> j) & 1u) || ((inside >> j) & 1u)) {
-                    const bool in = (inside >> j) & 1u;
-                    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i),
-                                     _mm_set1_epi8(in ? 1 : 0));
-                    visible += in ? 16 : 0;
-                    continue;
-                }
-                const __mmask16 all = pvertex16(pa, n, boxes, i, nullptr);
-                _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i), _mm_maskz_set1_epi8(all, 1));
-                visible += static_cast<std::size_t>(__builtin_popcount(all));
+                if (!((some >> j) & 1u)) // block outside a plane
+                    visible += store16(out + i, 0);
+                else if ((inside >> j) & 1u) // block inside every plane
+                    visible += store16(out + i, 0xFFFF);
+                else
+                    visible += store16(out + i, pvertex16(pa, n, boxes, i, nullptr));
             }
             continue;
         }
-        const __mmask16 all = pvertex16(pa, n, boxes, i, nullptr);
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i), _mm_maskz_set1_epi8(all, 1));
-        visible += static_cast<std::size_t>(__builtin_popcount(all));
+        visible += store16(out + i, pvertex16(pa, n, boxes, i, nullptr));
         i += 16;
     }
     return visible + pvertex_scalar(f, b, i, end, out);

@@ -46,24 +46,20 @@ CullInput prepare_cull_input(const Scene& scene) {
     return in;
 }
 
-PassResult cull_pass(const Scene& scene, const CullInput& input, const Frustum& frustum,
-                     glm::vec3 eye, const CullOptions& options, std::string pass_name) {
+PassResult cull_pass(const CullInput& input, const Frustum& frustum, glm::vec3 eye,
+                     const CullOptions& options, std::string pass_name) {
     PassResult r;
     const auto t0 = std::chrono::steady_clock::now();
     const BoxesSoA& boxes = input.boxes;
     std::vector<std::uint8_t> visible(boxes.size());
     CullCounts counts =
         cull_boxes(frustum, boxes, options.method, options.simd, visible, options.threads);
-    std::uint64_t total = scene.instances.size();
     if (options.casters_only) { // blended instances are not in a shadow pass
-        std::vector<std::uint8_t> invalid(boxes.size(), 0);
-        for (std::uint32_t i : boxes.invalid) invalid[i] = 1;
+        for (std::uint32_t i : boxes.invalid) counts.invalid -= input.transparent[i];
         for (std::uint32_t i = 0; i < visible.size(); ++i) {
             if (!input.transparent[i]) continue;
-            --total;
             --counts.tested;
             --(visible[i] ? counts.visible : counts.culled);
-            counts.invalid -= invalid[i];
             visible[i] = 0;
         }
     }
@@ -117,7 +113,7 @@ PassResult cull_pass(const Scene& scene, const CullInput& input, const Frustum& 
     s.pass = std::move(pass_name);
     s.method = options.method;
     s.simd = std::min(options.simd, best_simd_level());
-    s.total = total;
+    s.total = counts.tested; // every instance of the pass (casters only for cascades)
     s.tested = counts.tested;
     s.visible = counts.visible;
     s.culled = counts.culled;

@@ -70,8 +70,8 @@ struct CullInput {
 };
 CullInput prepare_cull_input(const Scene& scene);
 
-PassResult cull_pass(const Scene& scene, const CullInput& input, const Frustum& frustum,
-                     glm::vec3 eye, const CullOptions& options, std::string pass_name);
+PassResult cull_pass(const CullInput& input, const Frustum& frustum, glm::vec3 eye,
+                     const CullOptions& options, std::string pass_name);
 
 // Fixed-capacity history of per-frame statistics, oldest overwritten first.
 template <typename T> class RingHistory {

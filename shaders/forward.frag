@@ -81,8 +81,12 @@ void main() {
     t = dot(t, t) > 1e-12 ? normalize(t - n * dot(n, t)) : vec3(1.0, 0.0, 0.0);
     float handedness = tangent.w < 0.0 ? -1.0 : 1.0;
     vec3 b = cross(n, t) * handedness;
-    // Double-sided back faces shade with the normal flipped (glTF spec).
+    // Double-sided back faces shade with the normal flipped (glTF spec). The shadow
+    // lookup offsets along the same side: offset along the unflipped normal, a back
+    // face lit from its own side would look up behind itself and shadow itself.
+    vec3 shadow_normal = in_normal;
     if (m.double_sided != 0u && !gl_FrontFacing) {
+        shadow_normal = -in_normal;
         n = -n;
         t = -t;
         b = -b;
@@ -127,7 +131,7 @@ void main() {
         c = vec3(0.0);
         if (subgroupAny(dot(s.n, sun_l) > 0.0)) {
             float view_depth = -(frame.view * vec4(in_world_pos, 1.0)).z;
-            float shadow = sun_shadow(in_world_pos, in_normal, view_depth);
+            float shadow = sun_shadow(in_world_pos, shadow_normal, view_depth);
             c = brdf_times_cos(s, sun_l) * frame.sun_radiance.rgb * shadow;
         }
         for (uint i = 0u; i < frame.params.y; ++i) c += punctual_light(s, frame.lights[i], in_world_pos);

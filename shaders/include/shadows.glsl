@@ -12,7 +12,8 @@ float shadow_tap(vec2 uv, uint cascade, float depth) {
     return textureGrad(shadow_map, vec4(uv, float(cascade), depth), vec2(0.0), vec2(0.0));
 }
 
-// normal: the interpolated vertex normal (world), any length; a zero one (degenerate
+// normal: the interpolated vertex normal (world) of the side being shaded (flipped on
+// the back of a double-sided surface), any length; a zero one (degenerate
 // input) gets no normal offset rather than NaN coordinates.
 float sun_shadow(vec3 world, vec3 normal, float view_depth) {
     uint cascades = frame.params.z;

@@ -172,10 +172,15 @@ void Renderer::record_shadows(VkCommandBuffer cmd, FrameSlot& slot, Pipelines& p
         // Standard Z for the light; slope-scaled bias against acne on grazing faces.
         set_depth(cmd, VK_COMPARE_OP_LESS, true, 1.0f, 1.5f);
         CullStats& tally = slot.passes.at(1 + c).stats;
+        // Casters cull as the camera does: a single-sided surface that the camera
+        // cannot see from its back blocks no light arriving at its back either (else
+        // TextureSettingsTest's hidden wrong-way polygon shadows the test behind it);
+        // double-sided surfaces cast from both sides. The light's viewport is flipped
+        // like the camera's, so front faces wind the same way.
         draw_groups(cmd, slot, p, DrawPipeline{p.get(PipelineId::ShadowOpaque)}, AlphaMode::Opaque,
-                    c, false, tally);
+                    c, true, tally);
         draw_groups(cmd, slot, p, DrawPipeline{p.get(PipelineId::ShadowMask)}, AlphaMode::Mask, c,
-                    false, tally);
+                    true, tally);
         vkCmdEndRendering(cmd);
     }
     transition(cmd, {map.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT,

@@ -242,7 +242,7 @@ void MainWindow::connectActions() {
     connect(viewport_, &ViewportWindow::cameraChanged, this, &MainWindow::onCameraChanged);
     connect(viewport_, &ViewportWindow::clicked, this, [this](QPointF ndc) { pickAt(ndc); });
     connect(viewport_, &ViewportWindow::frameAllRequested, this, [this] {
-        if (context_.scene()) viewport_->camera().frame(context_.scene()->bounds);
+        if (context_.scene()) viewport_->camera().frameAuto(context_.scene()->bounds);
         onCameraChanged();
     });
     connect(viewport_, &ViewportWindow::frameSelectionRequested, this, &MainWindow::frameSelection);
@@ -327,7 +327,7 @@ void MainWindow::onLoaded(const QString& spec, const LoadOutcome& outcome, doubl
                      .arg(outcome.extras->load_ms, 0, 'f', 1)
                      .arg(outcome.extras->thumbnails_ms, 0, 'f', 1)
                      .arg(outcome.extras->textures_ms, 0, 'f', 1));
-    viewport_->camera().frame(outcome.scene->bounds);
+    viewport_->camera().frameAuto(outcome.scene->bounds);
     viewport_->setAutoFrame(true);
     onCameraChanged();
     updateStatus();

@@ -53,32 +53,29 @@ void OrbitCamera::fly(glm::vec3 ruf) {
     target_ += ruf.x * right + ruf.y * up + ruf.z * f;
 }
 
+FramingOptions OrbitCamera::framingOptions() const {
+    FramingOptions options;
+    options.fov_y_degrees = fov_degrees_;
+    options.aspect = aspect_;
+    return options;
+}
+
+void OrbitCamera::take(const CameraSpec& framed) {
+    const glm::vec3 to_target = framed.target - framed.eye;
+    target_ = framed.target;
+    distance_ = std::max(glm::length(to_target), 1e-6f);
+    const glm::vec3 f = to_target / distance_;
+    pitch_ = std::clamp(std::asin(std::clamp(-f.y, -1.0f, 1.0f)), -kPitchLimit, kPitchLimit);
+    yaw_ = std::atan2(-f.x, -f.z);
+    near_ = framed.near_plane;
+}
+
 void OrbitCamera::frame(const Aabb& box) {
-    if (!box.valid()) return;
-    target_ = box.center();
-    // Keep the viewing direction; back off until all 8 corners project inside both
-    // the vertical and the horizontal field of view of the current aspect, with a
-    // 5% border. A corner at (x, y) across the view and z along it (from the
-    // target) needs |x| <= (d + z) tan(half_fov_x), the same for y.
-    const glm::vec3 f = forward();
-    const glm::vec3 right = glm::normalize(glm::cross(f, glm::vec3(0, 1, 0)));
-    const glm::vec3 up = glm::cross(right, f);
-    const float tan_y = std::tan(glm::radians(fov_degrees_) * 0.5f) * 0.95f;
-    const float tan_x = tan_y * aspect_;
-    const float radius = std::max(glm::length(box.extent()) * 0.5f, 1e-3f);
-    float d = 0.0f, nearest = 0.0f;
-    for (int i = 0; i < 8; ++i) {
-        const glm::vec3 c((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
-                          (i & 4) ? box.max.z : box.min.z);
-        const glm::vec3 p = c - target_;
-        const float x = std::abs(glm::dot(p, right)), y = std::abs(glm::dot(p, up));
-        const float z = glm::dot(p, f);
-        d = std::max({d, x / tan_x - z, y / tan_y - z});
-        nearest = std::max(nearest, -z);
-    }
-    // Never inside the box: the nearest corner stays in front of the near plane.
-    distance_ = std::max(d, nearest + 0.01f * radius);
-    near_ = std::max(distance_ * 1e-3f, 1e-4f);
+    if (box.valid()) take(frame_box_along(box, -forward(), framingOptions()));
+}
+
+void OrbitCamera::frameAuto(const Aabb& box) {
+    if (box.valid()) take(frame_box(box, framingOptions()));
 }
 
 void OrbitCamera::jumpTo(const Scene& scene, std::size_t index) {

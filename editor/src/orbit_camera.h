@@ -6,6 +6,7 @@
 
 #include <sherpa/core/aabb.h>
 #include <sherpa/scene/camera_spec.h>
+#include <sherpa/scene/framing.h>
 #include <sherpa/scene/scene.h>
 
 namespace sherpa::editor {
@@ -23,8 +24,12 @@ public:
     // Fly look: turns in place (eye fixed), same sensitivity as orbit.
     void look(float dx_pixels, float dy_pixels);
 
-    // Frames a box so it fills the view (keeps the viewing direction).
+    // Frames a box so it fills the view, keeping the viewing direction (Frame
+    // selection): the engine's framing (sherpa/scene/framing.h) along it.
     void frame(const Aabb& box);
+    // The engine's automatic view of a box (on load and Frame all), exactly what
+    // `sherpa-cli render --camera auto` shows at the same aspect and field of view.
+    void frameAuto(const Aabb& box);
     // Takes a glTF camera's pose and field of view.
     void jumpTo(const Scene& scene, std::size_t placed_camera);
 
@@ -41,6 +46,10 @@ public:
     std::string toString() const;
 
 private:
+    FramingOptions framingOptions() const;
+    // Orbits about the framed target, from the framed eye.
+    void take(const CameraSpec& framed);
+
     glm::vec3 target_{0.0f};
     float distance_ = 5.0f;
     float yaw_ = 0.6f, pitch_ = 0.35f; // radians; yaw about +Y, pitch above the horizon

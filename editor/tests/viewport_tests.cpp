@@ -94,6 +94,7 @@ private Q_SLOTS:
     void gpuCullingAgreesWithCpu();
     void cullingDockShowsTheRenderersPasses();
     void narrowViewportFramesTheHelmet();
+    void framingIsTheEnginesOnLoadFrameAllAndSelection();
     void progressReportsEveryStage();
     void cancelDropsTheLoadAndLeaksNothing();
     void textureCacheActions();
@@ -244,6 +245,38 @@ void ViewportTests::narrowViewportFramesTheHelmet() {
     QVERIFY2(e.x() <= 1.0 && e.y() <= 1.0, "frame all (F)");
     QVERIFY(std::max(e.x(), e.y()) > 0.9);
     vp->setMaximumWidth(QWIDGETSIZE_MAX);
+}
+
+void ViewportTests::framingIsTheEnginesOnLoadFrameAllAndSelection() {
+    // On load and on Frame all (F) the editor shows what `sherpa-cli render --camera
+    // auto` shows (sherpa::frame_box at the viewport's aspect), from above the top of
+    // the cube; Frame selection (Shift+F) keeps the user's direction.
+    QVERIFY(load(*window_, test::asset(QStringLiteral("OrientationTest"))));
+    ViewportWindow& vp = *window_->viewport();
+    QTRY_VERIFY(aspectFollows(vp));
+    const Aabb bounds = window_->context().scene()->bounds;
+    auto expectAuto = [&](const char* when) {
+        FramingOptions options;
+        options.aspect = vp.camera().spec().aspect;
+        options.fov_y_degrees = vp.camera().fovDegrees();
+        const CameraSpec engine = frame_box(bounds, options);
+        const float scale = glm::length(bounds.extent());
+        QVERIFY2(glm::length(vp.camera().eye() - engine.eye) < 1e-4f * scale, when);
+        QVERIFY2(glm::length(vp.camera().target() - engine.target) < 1e-4f * scale, when);
+        QVERIFY2(vp.camera().eye().y > bounds.max.y, when);
+    };
+    expectAuto("on load");
+    vp.camera().orbit(200.0f, -90.0f);
+    vp.camera().dolly(3.0f);
+    QTest::keyClick(&vp, Qt::Key_F);
+    expectAuto("frame all");
+    QVERIFY(window_->selectNodeNamed(QStringLiteral("0")));
+    vp.camera().orbit(-150.0f, 40.0f);
+    const glm::vec3 direction = vp.camera().forward();
+    QTest::keyClick(&vp, Qt::Key_F, Qt::ShiftModifier);
+    QVERIFY(glm::dot(vp.camera().forward(), direction) > 0.9999f);
+    QVERIFY(ndcExtent(vp.camera().spec(), bounds).x() > 0.0); // still a usable camera
+    QVERIFY(load(*window_, QStringLiteral("builtin:default")));
 }
 
 void ViewportTests::progressReportsEveryStage() {

@@ -1,5 +1,6 @@
 #include <sherpa/gpu/camera.h>
 #include <sherpa/scene/camera_spec.h>
+#include <sherpa/scene/framing.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -108,32 +109,16 @@ CameraView resolve_camera(const CameraSpec& spec, const Scene& scene, float view
         break;
     }
     case CameraSpec::Kind::Auto: {
-        // Look from the front (+Z, as glTF sample screenshots do), raised by about 17
-        // degrees so ground planes do not collapse to a line; back off until all 8
-        // corners of the bounds fit the frustum.
-        const Aabb b =
-            scene.bounds.valid() ? scene.bounds : Aabb::from_min_max(glm::vec3(-1), glm::vec3(1));
-        const glm::vec3 c = b.center();
-        const float r = std::max(0.5f * glm::length(b.extent()), 1e-4f);
-        v.fov_y = glm::radians(spec.fov_degrees);
-        const float tan_y = std::tan(0.5f * v.fov_y), tan_x = tan_y * v.aspect;
-        const glm::vec3 back = glm::normalize(glm::vec3(0.0f, 0.3f, 1.0f));
-        const glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), back));
-        const glm::vec3 up = glm::cross(back, right);
-        float d = 0.0f;
-        for (int i = 0; i < 8; ++i) {
-            const glm::vec3 p{(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
-                              (i & 4) ? b.max.z : b.min.z};
-            const glm::vec3 rel = p - c;
-            const float z = glm::dot(rel, back);
-            d = std::max({d, z + std::abs(glm::dot(rel, right)) / tan_x,
-                          z + std::abs(glm::dot(rel, up)) / tan_y});
-        }
-        d = std::max(d * 1.05f, 1e-3f);
-        v.position = c + back * d;
-        v.view = glm::lookAtRH(v.position, c, glm::vec3(0.0f, 1.0f, 0.0f));
-        v.near_plane = std::clamp(0.5f * (d - r), 1e-4f, spec.near_plane);
-        v.far_plane = 0.0f;
+        // The one framing of the engine (scene layer), shared with the editor.
+        FramingOptions options;
+        options.fov_y_degrees = spec.fov_degrees;
+        options.aspect = v.aspect;
+        const sherpa::CameraSpec framed = frame_box(scene.bounds, options);
+        v.position = framed.eye;
+        v.view = framed.view();
+        v.fov_y = glm::radians(framed.fov_y_degrees);
+        v.near_plane = framed.near_plane;
+        v.far_plane = framed.far_plane;
         break;
     }
     }

@@ -1,0 +1,46 @@
+#pragma once
+// Framing a box: where a camera looks from so that the whole box is in view. One
+// function for every caller (`--camera auto` in the CLI and tests, the editor on
+// load, "Frame all" and "Frame selection"), so that a scene looks the same in both.
+// Pure math over the box; no scene, no GPU.
+#include <sherpa/core/aabb.h>
+#include <sherpa/scene/camera_spec.h>
+
+#include <glm/glm.hpp>
+
+namespace sherpa {
+
+struct FramingOptions {
+    float fov_y_degrees = 60.0f; // vertical field of view, in (0, 180)
+    float aspect = 16.0f / 9.0f; // width / height of the viewport, > 0
+    // Kept free around the box, as a fraction of its bounding radius: the eye stays at
+    // least this far outside the box and every corner at least this far in front of
+    // it; and as a fraction of the half field of view, left as a border on screen.
+    float margin = 0.05f;
+};
+
+// Elevation and azimuth of the automatic view: looking down ~25 degrees, ~35 degrees
+// round from the front, so that a box shows its top and two sides.
+inline constexpr float kFramingElevationDegrees = 25.0f;
+inline constexpr float kFramingAzimuthDegrees = 35.0f;
+
+// Unit direction from the box's centre towards the eye for the automatic view. The
+// front is `front_hint`'s horizontal part where it has one; otherwise the horizontal
+// axis (+X or +Z) along which the box is clearly thinner (a character stands wider
+// across its shoulders than deep; a panel is thinnest along its normal), +Z on a tie.
+glm::vec3 auto_view_direction(const Aabb& box, glm::vec3 front_hint = glm::vec3(0.0f));
+
+// Camera at `box`'s centre, looking from `to_eye` (any length > 0; towards the eye),
+// backed off until all 8 corners lie inside the frustum of `options` (with the
+// screen border), every corner is in front of the eye by the margin, and the eye is
+// outside the box by the margin; when the view looks down (or up) by more than ~12
+// degrees it also stays above the box's top (below its bottom), so the top is seen.
+// Up is +Y (-Z when looking straight down or up); far is infinite. An invalid box
+// frames the unit cube around the origin.
+CameraSpec frame_box_along(const Aabb& box, glm::vec3 to_eye, const FramingOptions& options);
+
+// The automatic view: frame_box_along(box, auto_view_direction(box, front_hint), options).
+CameraSpec frame_box(const Aabb& box, const FramingOptions& options,
+                     glm::vec3 front_hint = glm::vec3(0.0f));
+
+} // namespace sherpa

@@ -1,0 +1,96 @@
+#include <sherpa/scene/framing.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sherpa {
+
+namespace {
+
+// A box made usable: invalid -> the unit cube, so callers always get a camera.
+Aabb usable(const Aabb& box) {
+    if (box.valid() && is_finite(box.min) && is_finite(box.max)) return box;
+    return Aabb::from_min_max(glm::vec3(-1.0f), glm::vec3(1.0f));
+}
+
+glm::vec3 corner(const Aabb& b, int i) {
+    return {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
+}
+
+} // namespace
+
+glm::vec3 auto_view_direction(const Aabb& box_in, glm::vec3 front_hint) {
+    const Aabb box = usable(box_in);
+    glm::vec3 front{0.0f, 0.0f, 1.0f}, side{1.0f, 0.0f, 0.0f};
+    const glm::vec2 hint{front_hint.x, front_hint.z};
+    if (glm::dot(hint, hint) > 1e-12f) {
+        const glm::vec2 h = glm::normalize(hint);
+        front = {h.x, 0.0f, h.y};
+        side = {h.y, 0.0f, -h.x}; // front turned 90 degrees clockwise seen from above
+    } else if (const glm::vec3 e = box.extent(); e.x < 0.8f * e.z) {
+        // Thinner along X: the model faces +X. Turn towards +Z, the glTF front.
+        front = {1.0f, 0.0f, 0.0f};
+        side = {0.0f, 0.0f, 1.0f};
+    }
+    const float az = glm::radians(kFramingAzimuthDegrees);
+    const float el = glm::radians(kFramingElevationDegrees);
+    const glm::vec3 horizontal = std::cos(az) * front + std::sin(az) * side;
+    return glm::normalize(std::cos(el) * horizontal + glm::vec3(0.0f, std::sin(el), 0.0f));
+}
+
+CameraSpec frame_box_along(const Aabb& box_in, glm::vec3 to_eye, const FramingOptions& o) {
+    const Aabb box = usable(box_in);
+    const glm::vec3 c = box.center(), half = 0.5f * box.extent();
+    const float radius = std::max(glm::length(half), 1e-4f);
+    const float m = std::max(o.margin, 0.0f) * radius;
+    const glm::vec3 back =
+        glm::dot(to_eye, to_eye) > 1e-20f ? glm::normalize(to_eye) : glm::vec3(0.0f, 0.0f, 1.0f);
+    // lookAt needs an up that is not parallel to the view.
+    const glm::vec3 world_up =
+        std::abs(back.y) > 0.999f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+    const glm::vec3 right = glm::normalize(glm::cross(world_up, back));
+    const glm::vec3 up = glm::cross(back, right);
+    const float border = 1.0f - std::clamp(o.margin, 0.0f, 0.5f);
+    const float tan_y = std::tan(0.5f * glm::radians(o.fov_y_degrees)) * border;
+    const float tan_x = tan_y * (o.aspect > 0.0f ? o.aspect : 1.0f);
+
+    // d is the eye's distance from the centre along `back`. A corner at `rel` from the
+    // centre lies (d - dot(rel, back)) in front of the eye and must satisfy
+    // |x| <= depth * tan_x, |y| <= depth * tan_y and depth >= m.
+    float d = 0.0f;
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 rel = corner(box, i) - c;
+        const float z = glm::dot(rel, back);
+        d = std::max({d, z + std::abs(glm::dot(rel, right)) / tan_x,
+                      z + std::abs(glm::dot(rel, up)) / tan_y, z + m});
+    }
+    // Outside the box grown by m: beyond its slab on at least one axis.
+    float outside = INFINITY;
+    for (int a = 0; a < 3; ++a)
+        if (std::abs(back[a]) > 1e-6f)
+            outside = std::min(outside, (half[a] + m) / std::abs(back[a]));
+    d = std::max(d, outside);
+    // Looking down (up) noticeably: the eye above the top (below the bottom), else a
+    // cube seen from an eye level with its sides reads as a flat trapezoid.
+    if (std::abs(back.y) > 0.2f) d = std::max(d, (half.y + m) / std::abs(back.y));
+
+    float nearest = INFINITY;
+    for (int i = 0; i < 8; ++i) nearest = std::min(nearest, d - glm::dot(corner(box, i) - c, back));
+    CameraSpec s;
+    s.eye = c + back * d;
+    s.target = c;
+    s.up = world_up;
+    s.fov_y_degrees = o.fov_y_degrees;
+    s.aspect = o.aspect > 0.0f ? o.aspect : 1.0f;
+    // Half the nearest corner's depth, at most 1% of the distance: room to orbit at
+    // that distance; reverse-Z keeps depth precision with a small near plane.
+    s.near_plane = std::max(std::min(0.5f * nearest, 0.01f * d), 1e-5f);
+    s.far_plane = 0.0f;
+    return s;
+}
+
+CameraSpec frame_box(const Aabb& box, const FramingOptions& options, glm::vec3 front_hint) {
+    return frame_box_along(box, auto_view_direction(box, front_hint), options);
+}
+
+} // namespace sherpa

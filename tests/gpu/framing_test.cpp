@@ -1,0 +1,107 @@
+// Auto framing (`--camera auto`, the editor's load and Frame all) over every sample
+// model: every corner of the scene bounds inside the frustum, the eye outside the
+// bounds with a margin and above their top (so a box shows its top face), filling
+// most of the view, for tall, square and wide viewports. No GPU needed.
+#include "test_support.h"
+
+#include <sherpa/gpu/camera.h>
+#include <sherpa/scene/framing.h>
+#include <sherpa/scene/scene_loader.h>
+
+#include <gtest/gtest.h>
+
+namespace sherpa::test {
+namespace {
+
+glm::vec3 corner(const Aabb& b, int i) {
+    return {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
+}
+
+// Distance from p to the box (0 inside).
+float distance_to_box(const Aabb& b, glm::vec3 p) {
+    return glm::length(glm::max(glm::max(b.min - p, p - b.max), glm::vec3(0.0f)));
+}
+
+void expect_framed(const Aabb& b, const gpu::CameraView& v, const std::string& what) {
+    const glm::mat4 vp = v.proj * v.view;
+    float widest = 0.0f; // the largest |x| or |y| of a corner in NDC
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec4 c = vp * glm::vec4(corner(b, i), 1.0f);
+        ASSERT_GT(c.w, 0.0f) << what << " corner " << i;
+        widest = std::max({widest, std::abs(c.x / c.w), std::abs(c.y / c.w)});
+        EXPECT_LE(std::abs(c.x / c.w), 1.0f) << what << " corner " << i;
+        EXPECT_LE(std::abs(c.y / c.w), 1.0f) << what << " corner " << i;
+        // Reverse-Z: in front of the near plane (depth <= 1) and before the far one.
+        EXPECT_GT(c.z / c.w, 0.0f) << what << " corner " << i;
+        EXPECT_LE(c.z / c.w, 1.0f) << what << " corner " << i;
+    }
+    // Framed, not just inside: tall flat panels (RiggedSimple, TextureSettingsTest) are
+    // the loosest, as the eye rises above their top; 0.95 where the fit decides.
+    EXPECT_GE(widest, 0.75f) << what;
+    const float radius = 0.5f * glm::length(b.extent());
+    EXPECT_GE(distance_to_box(b, v.position), 0.049f * radius) << what << ": eye in or at the box";
+    EXPECT_GT(v.position.y, b.max.y) << what << ": eye below the top of the box";
+}
+
+TEST(AutoFramingTest, EverySampleModelIsInViewFromOutsideAndAbove) {
+    const auto models = all_gltf_models();
+    ASSERT_GE(models.size(), 20u);
+    for (const auto& name : models) {
+        const LoadResult r = load_scene(gltf_asset(name));
+        ASSERT_TRUE(r) << name << ": " << r.error;
+        ASSERT_TRUE(r.scene->bounds.valid()) << name;
+        for (float aspect : {0.5f, 1.0f, 16.0f / 9.0f, 3.0f}) {
+            const gpu::CameraView v = gpu::resolve_camera(gpu::CameraSpec{}, *r.scene, aspect);
+            expect_framed(r.scene->bounds, v, name + " aspect " + std::to_string(aspect));
+        }
+    }
+}
+
+TEST(AutoFramingTest, LooksAtTheThinnerSideAsTheFrontFromThreeQuartersAbove) {
+    // Wide across X (shoulders), thin along Z: the front is +Z.
+    const glm::vec3 z_front = auto_view_direction(Aabb::from_min_max({-1, 0, -0.2f}, {1, 2, 0.2f}));
+    EXPECT_GT(z_front.z, std::abs(z_front.x));
+    // Thin along X: the model faces +X and is not seen in profile.
+    const glm::vec3 x_front = auto_view_direction(Aabb::from_min_max({-0.2f, 0, -1}, {0.2f, 2, 1}));
+    EXPECT_GT(x_front.x, std::abs(x_front.z));
+    for (glm::vec3 d : {z_front, x_front}) {
+        // Raised (elevation 20..35 degrees) and off the axis (a 3/4 view: both horizontal
+        // components at least sin(20 degrees) of the horizontal direction).
+        EXPECT_NEAR(glm::degrees(std::asin(d.y)), 27.5f, 7.5f);
+        const glm::vec2 h = glm::normalize(glm::vec2(d.x, d.z));
+        EXPECT_GT(std::abs(h.x), 0.34f);
+        EXPECT_GT(std::abs(h.y), 0.34f);
+    }
+    // A hint wins over the extents.
+    const glm::vec3 hinted =
+        auto_view_direction(Aabb::from_min_max({-1, 0, -0.2f}, {1, 2, 0.2f}), {-1, 0, 0});
+    EXPECT_LT(hinted.x, -std::abs(hinted.z));
+}
+
+TEST(AutoFramingTest, FramingAlongAGivenDirectionKeepsItAndFits) {
+    // What the editor's Frame selection does: keep the viewing direction.
+    const Aabb box = Aabb::from_min_max({-3, -1, -2}, {5, 4, 1});
+    const glm::vec3 to_eye = glm::normalize(glm::vec3(-1.0f, -0.8f, 2.0f));
+    FramingOptions options;
+    options.aspect = 1.5f;
+    const CameraSpec s = frame_box_along(box, to_eye, options);
+    EXPECT_NEAR(glm::dot(glm::normalize(s.eye - s.target), to_eye), 1.0f, 1e-5f);
+    gpu::CameraView v;
+    v.view = s.view();
+    v.proj = s.projection();
+    v.position = s.eye;
+    // Looking up from below: the eye stays below the box instead of above it.
+    const glm::mat4 vp = v.proj * v.view;
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec4 c = vp * glm::vec4(corner(box, i), 1.0f);
+        EXPECT_LE(std::abs(c.x / c.w), 1.0f) << i;
+        EXPECT_LE(std::abs(c.y / c.w), 1.0f) << i;
+        EXPECT_GT(c.z / c.w, 0.0f) << i;
+        EXPECT_LE(c.z / c.w, 1.0f) << i;
+    }
+    EXPECT_LT(s.eye.y, box.min.y);
+    EXPECT_GE(distance_to_box(box, s.eye), 0.049f * 0.5f * glm::length(box.extent()));
+}
+
+} // namespace
+} // namespace sherpa::test

@@ -17,13 +17,13 @@ std::string light_problem(const tinygltf::Light& src, const Light& l) {
     if (src.type != "directional" && src.type != "point" && src.type != "spot")
         return ".type: \"" + src.type + "\" is not directional, point or spot";
     if (!std::isfinite(l.intensity) || l.intensity < 0.0f)
-        return ".intensity: " + std::to_string(src.intensity) + " is negative or not finite";
+        return ".intensity: " + number_text(src.intensity) + " is negative or not finite";
     if (!is_finite(l.color) || l.color.x < 0.0f || l.color.y < 0.0f || l.color.z < 0.0f)
         return ".color: has negative or non-finite components";
     if (l.type == LightType::Spot &&
         !(l.inner_cone >= 0.0f && l.inner_cone < l.outer_cone && l.outer_cone <= 1.5707964f))
-        return ".spot: innerConeAngle " + std::to_string(src.spot.innerConeAngle) +
-               " and outerConeAngle " + std::to_string(src.spot.outerConeAngle) +
+        return ".spot: innerConeAngle " + number_text(src.spot.innerConeAngle) +
+               " and outerConeAngle " + number_text(src.spot.outerConeAngle) +
                " break 0 <= inner < outer <= pi/2";
     return {};
 }
@@ -33,24 +33,23 @@ std::string light_problem(const tinygltf::Light& src, const Light& l) {
 std::string camera_problem(const tinygltf::Camera& src, const Camera& c) {
     if (c.type == CameraType::Perspective) {
         if (!(c.yfov > 0.0f && c.yfov < 3.14159f))
-            return ".perspective.yfov: " + std::to_string(src.perspective.yfov) +
-                   " is not in (0, pi)";
+            return ".perspective.yfov: " + number_text(src.perspective.yfov) + " is not in (0, pi)";
         if (!(c.znear > 0.0f && std::isfinite(c.znear)))
-            return ".perspective.znear: " + std::to_string(src.perspective.znear) + " is not > 0";
+            return ".perspective.znear: " + number_text(src.perspective.znear) + " is not > 0";
         if (c.zfar != 0.0f && !(c.zfar > c.znear))
-            return ".perspective: zfar " + std::to_string(src.perspective.zfar) +
-                   " is not greater than znear " + std::to_string(src.perspective.znear);
+            return ".perspective: zfar " + number_text(src.perspective.zfar) +
+                   " is not greater than znear " + number_text(src.perspective.znear);
         if (!(c.aspect >= 0.0f) || !std::isfinite(c.aspect))
-            return ".perspective.aspectRatio: " + std::to_string(src.perspective.aspectRatio) +
+            return ".perspective.aspectRatio: " + number_text(src.perspective.aspectRatio) +
                    " is not > 0";
         return {};
     }
     if (!(c.xmag > 0.0f && c.ymag > 0.0f && std::isfinite(c.xmag) && std::isfinite(c.ymag)))
-        return ".orthographic: xmag " + std::to_string(src.orthographic.xmag) + " and ymag " +
-               std::to_string(src.orthographic.ymag) + " must be > 0";
+        return ".orthographic: xmag " + number_text(src.orthographic.xmag) + " and ymag " +
+               number_text(src.orthographic.ymag) + " must be > 0";
     if (!(c.znear >= 0.0f && c.zfar > c.znear && std::isfinite(c.zfar)))
-        return ".orthographic: zfar " + std::to_string(src.orthographic.zfar) +
-               " is not greater than znear " + std::to_string(src.orthographic.znear);
+        return ".orthographic: zfar " + number_text(src.orthographic.zfar) +
+               " is not greater than znear " + number_text(src.orthographic.znear);
     return {};
 }
 
@@ -213,12 +212,11 @@ void import_nodes_and_scenes(ImportContext& ctx) {
     for (std::size_t s = 0; s < model.scenes.size(); ++s) {
         SceneDef def;
         def.name = model.scenes[s].name;
+        std::size_t repeated = 0;
         for (int root : model.scenes[s].nodes) {
             if (std::find(def.roots.begin(), def.roots.end(), static_cast<std::uint32_t>(root)) !=
                 def.roots.end()) {
-                // glTF: scene.nodes are unique; a repeat would draw the subtree twice.
-                ctx.warn("scenes[" + std::to_string(s) + "].nodes: node " + std::to_string(root) +
-                         " is listed more than once; shown once");
+                ++repeated; // glTF: scene.nodes are unique; a repeat would draw twice
                 continue;
             }
             if (root < 0 || static_cast<std::size_t>(root) >= n)
@@ -229,6 +227,9 @@ void import_nodes_and_scenes(ImportContext& ctx) {
                      " is not a root node");
             def.roots.push_back(static_cast<std::uint32_t>(root));
         }
+        if (repeated)
+            ctx.warn("scenes[" + std::to_string(s) + "].nodes: " + std::to_string(repeated) +
+                     " repeated root node(s) ignored; each root is shown once");
         scene.scenes.push_back(std::move(def));
     }
     scene.counts.scenes = model.scenes.size();

@@ -91,8 +91,8 @@ void check_factors(ImportContext& ctx, MaterialInstance& m, const std::string& w
         const float clamped = std::isnan(m.normal_scale)
                                   ? 1.0f
                                   : std::clamp(m.normal_scale, -kMaxNormalScale, kMaxNormalScale);
-        ctx.warn(where + ".normalTexture.scale: " + std::to_string(m.normal_scale) +
-                 " would overflow shading; clamped to " + std::to_string(clamped));
+        ctx.warn(where + ".normalTexture.scale: " + number_text(m.normal_scale) +
+                 " would overflow shading; clamped to " + number_text(clamped));
         m.normal_scale = clamped;
     }
 }

@@ -2,6 +2,7 @@
 
 #include "checked_math.h"
 
+#include <cctype>
 #include <cstdio>
 #include <cstring>
 #include <optional>
@@ -161,6 +162,21 @@ struct Checker {
     }
 };
 
+// The problem with a buffer's relative-path URI, or "": tinygltf decodes percent
+// escapes leniently, so "%zz" and "%00" became a truncated or empty path.
+std::string uri_problem(const std::string& uri) {
+    if (uri.empty()) return "is empty";
+    if (uri.rfind("data:", 0) == 0) return {};
+    for (std::size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] != '%') continue;
+        if (i + 2 >= uri.size() || !std::isxdigit(static_cast<unsigned char>(uri[i + 1])) ||
+            !std::isxdigit(static_cast<unsigned char>(uri[i + 2])))
+            return "has a malformed percent escape at character " + std::to_string(i);
+        if (uri[i + 1] == '0' && uri[i + 2] == '0') return "contains a NUL byte (%00)";
+    }
+    return {};
+}
+
 constexpr std::uint64_t kMaxSafe = (std::uint64_t{1} << 53) - 1; // JSON's exact integers
 
 // asset.version and asset.minVersion: Sherpa reads glTF 2.0.
@@ -186,6 +202,12 @@ std::string check_properties(const json& root) {
     std::vector<std::uint64_t> buffer_lengths;
     c.each(root, "buffers", [&](const json& b, const std::string& w) {
         buffer_lengths.push_back(c.uint(b, "byteLength", w, 1, kMaxSafe, true).value_or(0));
+        if (const auto uri = b.find("uri"); c.error.empty() && uri != b.end()) {
+            if (!uri->is_string())
+                c.error = w + ".uri: " + describe(*uri) + " is not a string";
+            else if (const std::string p = uri_problem(uri->get<std::string>()); !p.empty())
+                c.error = w + ".uri " + describe(*uri) + ": " + p;
+        }
     });
     c.each(root, "bufferViews", [&](const json& v, const std::string& w) {
         const auto buffer = c.index(v, "buffer", w, true);

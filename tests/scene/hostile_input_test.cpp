@@ -2,6 +2,7 @@
 // silent garbage. Each reproducer lives in tests/data (make_malformed.py writes
 // them); docs/robustness.md lists them with what Sherpa does now.
 #include "cli/cli_run.h"
+#include "load_error_check.h"
 #include "test_support.h"
 
 #include <sherpa/scene/scene_loader.h>
@@ -19,63 +20,44 @@ namespace {
 
 namespace test = sherpa::test;
 
-struct HostileCase {
-    const char* file;
-    const char* message; // a fragment the error must contain
-};
+using test::BadCase;
+using test::expect_clear_load_error;
 
-class HostileFile : public ::testing::TestWithParam<HostileCase> {};
-
-void expect_clear_error(const std::string& path, const std::string& fragment) {
-    const sherpa::LoadResult r = sherpa::load_scene(path);
-    EXPECT_FALSE(r);
-    EXPECT_EQ(r.scene, nullptr);
-    EXPECT_EQ(r.error.rfind(path + ": ", 0), 0u) << "error must start with the file: " << r.error;
-    EXPECT_NE(r.error.find(fragment), std::string::npos) << r.error;
-    EXPECT_LT(r.error.size(), 400u) << "one readable line";
-    for (const char c : r.error)
-        EXPECT_TRUE(c >= 0x20 && c < 0x7F) << "no raw bytes in a message: " << r.error;
-}
+class HostileFile : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(HostileFile, FailsWithAClearMessage) {
-    expect_clear_error((test::data_dir() / GetParam().file).string(), GetParam().message);
+    expect_clear_load_error((test::data_dir() / GetParam().file).string(), GetParam().message);
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Issue12, HostileFile,
     ::testing::Values(
-        HostileCase{"view_offset_wraps.gltf",
-                    "bufferViews[0].byteOffset: 18446744073709551600 is out of the range"},
-        HostileCase{"negative_byte_offset.gltf",
-                    "accessors[0].byteOffset: -12 is not a non-negative integer"},
-        HostileCase{"string_byte_offset.gltf",
-                    "accessors[0].byteOffset: \"12\" is not a non-negative integer"},
-        HostileCase{"fractional_byte_length.gltf", "byteLength: 36.5 is not a non-negative"},
-        HostileCase{"buffer_uri_dot.gltf", ". : is a directory"},
-        HostileCase{"buffer_uri_parent.gltf", "../ : is a directory"},
-        HostileCase{"buffer_uri_root.gltf", "/ : is a directory"},
-        HostileCase{"buffer_uri_nul.gltf", "buffers[0].uri \"a%00\": contains a NUL byte"},
-        HostileCase{"buffer_uri_bad_escape.gltf", "malformed percent escape"},
-        HostileCase{"huge_count.gltf", "reads 804000000 bytes at offset 0 past the end"},
-        HostileCase{"zero_fill_count.gltf",
-                    "count 60000000 without a bufferView (all zeros) exceeds"},
-        HostileCase{"min_version_2_1.gltf", "asset.minVersion \"2.1\""},
-        HostileCase{"version_3.gltf", "asset.version \"3.0\""},
-        HostileCase{"world_bounds_overflow.gltf", "nodes[0]: world bounds of its mesh overflow"},
-        HostileCase{"sparse_index_max.gltf", "[2] = 4294967295 is beyond the vertex count 3"},
-        HostileCase{"sparse_index_2p24.gltf", "[2] = 16777217 is beyond the vertex count 3"},
-        HostileCase{"sparse_indices_normalized.gltf", "indices must not be normalized"},
-        HostileCase{"deep_nesting.gltf", "JSON nests deeper than 256 levels"},
-        HostileCase{"deep_nesting.glb", "JSON nests deeper than 256 levels"},
-        HostileCase{"png_renamed.gltf", "not a glTF file: starts with PNG image bytes"},
-        HostileCase{"image_view_past_buffer.glb",
-                    "bufferViews[2]: byteOffset 44 + byteLength 4096 exceeds buffers[0]"}),
-    [](const auto& param_info) {
-        std::string n = param_info.param.file;
-        for (char& c : n)
-            if (c == '.') c = '_';
-        return n;
-    });
+        BadCase{"view_offset_wraps.gltf",
+                "bufferViews[0].byteOffset: 18446744073709551600 is out of the range"},
+        BadCase{"negative_byte_offset.gltf",
+                "accessors[0].byteOffset: -12 is not a non-negative integer"},
+        BadCase{"string_byte_offset.gltf",
+                "accessors[0].byteOffset: \"12\" is not a non-negative integer"},
+        BadCase{"fractional_byte_length.gltf", "byteLength: 36.5 is not a non-negative"},
+        BadCase{"buffer_uri_dot.gltf", ". : is a directory"},
+        BadCase{"buffer_uri_parent.gltf", "../ : is a directory"},
+        BadCase{"buffer_uri_root.gltf", "/ : is a directory"},
+        BadCase{"buffer_uri_nul.gltf", "buffers[0].uri \"a%00\": contains a NUL byte"},
+        BadCase{"buffer_uri_bad_escape.gltf", "malformed percent escape"},
+        BadCase{"huge_count.gltf", "reads 804000000 bytes at offset 0 past the end"},
+        BadCase{"zero_fill_count.gltf", "count 60000000 without a bufferView (all zeros) exceeds"},
+        BadCase{"min_version_2_1.gltf", "asset.minVersion \"2.1\""},
+        BadCase{"version_3.gltf", "asset.version \"3.0\""},
+        BadCase{"world_bounds_overflow.gltf", "nodes[0]: world bounds of its mesh overflow"},
+        BadCase{"sparse_index_max.gltf", "[2] = 4294967295 is beyond the vertex count 3"},
+        BadCase{"sparse_index_2p24.gltf", "[2] = 16777217 is beyond the vertex count 3"},
+        BadCase{"sparse_indices_normalized.gltf", "indices must not be normalized"},
+        BadCase{"deep_nesting.gltf", "JSON nests deeper than 256 levels"},
+        BadCase{"deep_nesting.glb", "JSON nests deeper than 256 levels"},
+        BadCase{"png_renamed.gltf", "not a glTF file: starts with PNG image bytes"},
+        BadCase{"image_view_past_buffer.glb",
+                "bufferViews[2]: byteOffset 44 + byteLength 4096 exceeds buffers[0]"}),
+    test::case_name);
 
 TEST(HostileSizes, CheckedArithmeticNeverWraps) {
     using namespace sherpa::detail;
@@ -115,7 +97,7 @@ TEST(HostilePaths, DirectoryAsSceneSaysSo) {
     const auto dir = scratch_dir("dir");
     const auto scene = dir / "looks_like.gltf";
     std::filesystem::create_directory(scene);
-    expect_clear_error(scene.string(), "is a directory, not a glTF file");
+    expect_clear_load_error(scene.string(), "is a directory, not a glTF file");
     std::filesystem::remove_all(dir);
 }
 
@@ -124,12 +106,12 @@ TEST(HostilePaths, DirectoryAsSceneSaysSo) {
 TEST(HostilePaths, FifoAsSceneOrBufferIsRefusedWithoutBlocking) {
     const auto dir = scratch_dir("fifo");
     ASSERT_EQ(::mkfifo((dir / "pipe.gltf").c_str(), 0600), 0);
-    expect_clear_error((dir / "pipe.gltf").string(), "is a FIFO (named pipe)");
+    expect_clear_load_error((dir / "pipe.gltf").string(), "is a FIFO (named pipe)");
     ASSERT_EQ(::mkfifo((dir / "data.bin").c_str(), 0600), 0);
     auto doc = test::read_json((test::data_dir() / "missing_buffer.gltf").string());
     doc["buffers"][0]["uri"] = "data.bin";
     std::ofstream(dir / "fifo_buffer.gltf") << doc.dump();
-    expect_clear_error((dir / "fifo_buffer.gltf").string(), "is a FIFO (named pipe)");
+    expect_clear_load_error((dir / "fifo_buffer.gltf").string(), "is a FIFO (named pipe)");
     std::filesystem::remove_all(dir);
 }
 

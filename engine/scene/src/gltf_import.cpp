@@ -109,9 +109,7 @@ void warn_unsupported_content(detail::ImportContext& ctx) {
     }
 }
 
-} // namespace
-
-LoadResult import_gltf(const std::string& path, const LoadOptions& options) {
+LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& options) {
     LoadResult result;
     if (!detail::begin_stage(options, LoadStage::Parse)) return detail::cancelled_result();
     const auto t_parse = std::chrono::steady_clock::now();
@@ -191,6 +189,22 @@ LoadResult import_gltf(const std::string& path, const LoadOptions& options) {
     scene->process_ms = ms_since(t_process);
     result.scene = std::move(scene);
     return result;
+}
+
+} // namespace
+
+// The error boundary: whatever throws while one file is read, checked, parsed or
+// converted (allocation included) ends as "FILE: what went wrong", never an abort.
+LoadResult import_gltf(const std::string& path, const LoadOptions& options) {
+    LoadResult failed;
+    try {
+        return import_gltf_unguarded(path, options);
+    } catch (const std::bad_alloc&) {
+        failed.error = path + ": out of memory while loading";
+    } catch (const std::exception& e) {
+        failed.error = path + ": " + e.what();
+    }
+    return failed;
 }
 
 } // namespace sherpa

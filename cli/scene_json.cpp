@@ -76,6 +76,17 @@ json scene_info_json(const Scene& scene) {
     j["primitives_detail"] = std::move(detail);
     j["usage"] = usage_json(scene, build_usage_report(scene));
     j["warnings"] = scene.warnings;
+    json violations = json::array();
+    for (const auto& v : scene.range_violations)
+        violations.push_back({{"accessor", v.accessor},
+                              {"where", v.where},
+                              {"elements", v.elements},
+                              {"elements_outside", v.elements_outside},
+                              {"declared_min", v.declared_min},
+                              {"declared_max", v.declared_max},
+                              {"data_min", v.data_min},
+                              {"data_max", v.data_max}});
+    j["accessor_range_violations"] = std::move(violations);
     j["timings_ms"] = {{"parse", scene.parse_ms}, {"process", scene.process_ms}};
     return j;
 }

@@ -358,6 +358,20 @@
         <translation>%1 konnte nicht geladen werden; die aktuelle Szene bleibt.</translation>
     </message>
     <message>
+        <source>Could not load %1; no scene is open.</source>
+        <translation>%1 konnte nicht geladen werden; es ist keine Szene geöffnet.</translation>
+    </message>
+    <message>
+        <source>Could not load %1:
+%2
+
+No scene is open.</source>
+        <translation>%1 konnte nicht geladen werden:
+%2
+
+Es ist keine Szene geöffnet.</translation>
+    </message>
+    <message>
         <source>Load failed</source>
         <translation>Laden fehlgeschlagen</translation>
     </message>

@@ -358,6 +358,20 @@
         <translation>Could not load %1; the current scene is kept.</translation>
     </message>
     <message>
+        <source>Could not load %1; no scene is open.</source>
+        <translation>Could not load %1; no scene is open.</translation>
+    </message>
+    <message>
+        <source>Could not load %1:
+%2
+
+No scene is open.</source>
+        <translation>Could not load %1:
+%2
+
+No scene is open.</translation>
+    </message>
+    <message>
         <source>Load failed</source>
         <translation>Load failed</translation>
     </message>

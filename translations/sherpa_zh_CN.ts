@@ -358,6 +358,20 @@
         <translation>无法加载 %1；保留当前场景。</translation>
     </message>
     <message>
+        <source>Could not load %1; no scene is open.</source>
+        <translation>无法加载 %1；当前没有打开的场景。</translation>
+    </message>
+    <message>
+        <source>Could not load %1:
+%2
+
+No scene is open.</source>
+        <translation>无法加载 %1：
+%2
+
+当前没有打开的场景。</translation>
+    </message>
+    <message>
         <source>Load failed</source>
         <translation>加载失败</translation>
     </message>

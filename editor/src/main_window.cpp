@@ -336,11 +336,16 @@ void MainWindow::onLoaded(const QString& spec, const LoadOutcome& outcome, doubl
 
 void MainWindow::onLoadFailed(const QString& spec, const QString& error) {
     log_->append(LogDock::Level::Error, error);
-    statusBar()->showMessage(tr("Could not load %1; the current scene is kept.").arg(spec), 8000);
-    auto* box =
-        new QMessageBox(QMessageBox::Warning, tr("Load failed"),
-                        tr("Could not load %1:\n%2\n\nThe current scene is kept.").arg(spec, error),
-                        QMessageBox::Ok, this);
+    // Say what is on screen now: the previous scene, or nothing when there was none.
+    const bool kept = context_.scene() != nullptr;
+    statusBar()->showMessage(kept ? tr("Could not load %1; the current scene is kept.").arg(spec)
+                                  : tr("Could not load %1; no scene is open.").arg(spec),
+                             8000);
+    auto* box = new QMessageBox(
+        QMessageBox::Warning, tr("Load failed"),
+        kept ? tr("Could not load %1:\n%2\n\nThe current scene is kept.").arg(spec, error)
+             : tr("Could not load %1:\n%2\n\nNo scene is open.").arg(spec, error),
+        QMessageBox::Ok, this);
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->open(); // not modal: the editor stays usable (and scriptable)
     Q_EMIT loadFailed(spec, error);

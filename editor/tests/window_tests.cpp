@@ -2,8 +2,10 @@
 // scene switching, cancel, broken files, languages, layout persistence.
 #include <QDockWidget>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTreeView>
 #include <QVulkanInstance>
 #include <QtTest>
@@ -145,6 +147,18 @@ void WindowTests::failedLoadKeepsTheScene() {
     QCOMPARE(window_->logDock()->errorCount(), errors + 3);
     QVERIFY(!load(*window_, QStringLiteral("/no/such/file.gltf")));
     QCOMPARE(window_->context().scene(), before);
+    QVERIFY(window_->statusBar()->currentMessage().contains(
+        QLatin1String("the current scene is kept")));
+    // With nothing open, the failure must not claim that a scene is kept.
+    window_->closeScene();
+    QVERIFY(!load(*window_, QStringLiteral(SHERPA_TEST_DATA_DIR "/png_renamed.gltf")));
+    QVERIFY(window_->statusBar()->currentMessage().contains(QLatin1String("no scene is open")));
+    bool dialog_says_so = false;
+    for (const QMessageBox* box : window_->findChildren<QMessageBox*>())
+        dialog_says_so |= box->text().contains(QLatin1String("No scene is open")) &&
+                          box->text().contains(QLatin1String("starts with PNG image bytes")) &&
+                          !box->text().contains(QLatin1String("kept"));
+    QVERIFY(dialog_says_so);
 }
 
 void WindowTests::cancelKeepsTheScene() {

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
 #include <sys/wait.h>
 
 #include <gtest/gtest.h>
@@ -85,6 +86,36 @@ TEST(CliRender, ErrorsExitOneWithErrorPrefix) {
         const CliRun r = run_cli(args);
         EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.out;
         EXPECT_NE(r.out.find("error:"), std::string::npos) << args;
+    }
+}
+
+// True when a "warning: " line of `out` contains `fragment`.
+bool warned(const std::string& out, const std::string& fragment) {
+    std::istringstream lines(out);
+    for (std::string line; std::getline(lines, line);)
+        if (line.rfind("warning: ", 0) == 0 && line.find(fragment) != std::string::npos)
+            return true;
+    return false;
+}
+
+// Until skinning, morphing and animation are implemented, render says what it leaves
+// out, as info does: animations, morph targets, skins and unused attributes.
+TEST(CliRender, NamesWhatItDoesNotDraw) {
+    const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+        {"RiggedSimple",
+         {"animation(s)", "not played", "skinning is not applied",
+          "attributes JOINTS_0, WEIGHTS_0 are not used for drawing"}},
+        {"AnimatedMorphSphere",
+         {"animation(s) (\"Globe\")", "1 primitive(s) with 2 morph target(s)"}}};
+    for (const auto& [model, fragments] : cases) {
+        const std::string png = temp_path(model + ".png");
+        const CliRun r = run_cli("render '" + sherpa::test::gltf_asset(model) + "' -o " + png +
+                                 " --width 32 --height 32 --validation --cache-dir '" +
+                                 SHERPA_TEST_TEXTURE_CACHE + "'");
+        ASSERT_EQ(r.exit_code, 0) << r.out;
+        for (const auto& f : fragments)
+            EXPECT_TRUE(warned(r.out, f)) << model << ": " << f << "\n" << r.out;
+        std::filesystem::remove(png);
     }
 }
 

@@ -81,8 +81,113 @@ g = triangle(); g["scene"] = 3; cases["default_scene_out_of_range.gltf"] = g
 g = triangle(); g["accessors"][0]["componentType"] = 5130; cases["bad_component_type.gltf"] = g
 g = triangle(); g["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 1; cases["normal_wrong_type.gltf"] = g
 
+# --- issue #12: hostile input (see docs/robustness.md) ------------------------------
+def with_blob(doc, blob):
+    doc["buffers"][0] = {"uri": "data:application/octet-stream;base64," +
+                         base64.b64encode(blob).decode(), "byteLength": len(blob)}
+    return doc
+
+g = triangle(); g["bufferViews"][0]["byteOffset"] = 2**64 - 16; cases["view_offset_wraps.gltf"] = g
+g = triangle(); g["accessors"][0]["byteOffset"] = -12; cases["negative_byte_offset.gltf"] = g
+g = triangle(); g["accessors"][0]["byteOffset"] = "12"; cases["string_byte_offset.gltf"] = g
+g = triangle(); g["bufferViews"][0]["byteLength"] = 36.5; cases["fractional_byte_length.gltf"] = g
+for name, uri in [("dot", "."), ("parent", "%2e%2e/"), ("root", "/"), ("nul", "a%00"),
+                  ("bad_escape", "%zz%")]:
+    g = triangle(); g["buffers"][0]["uri"] = uri; cases["buffer_uri_" + name + ".gltf"] = g
+g = triangle(); g["textures"] = [{"source": 0}]; g["images"] = [{"uri": "."}]
+g["materials"][0]["pbrMetallicRoughness"] = {"baseColorTexture": {"index": 0}}
+cases["image_uri_directory.gltf"] = g
+# 67M positions backed by 36 bytes: refused before anything is allocated for them.
+g = triangle(); g["accessors"][0]["count"] = 67_000_000; cases["huge_count.gltf"] = g
+g = triangle(); del g["accessors"][0]["bufferView"]; g["accessors"][0]["count"] = 60_000_000
+g["meshes"][0]["primitives"][0].pop("indices"); cases["zero_fill_count.gltf"] = g
+g = triangle(); g["asset"]["minVersion"] = "2.1"; cases["min_version_2_1.gltf"] = g
+g = triangle(); g["asset"]["version"] = "3.0"; cases["version_3.gltf"] = g
+g = triangle(); g["nodes"][0]["scale"] = [1e38, 1e38, 1e38]
+g = with_blob(g, buffer_bytes([(0, 0, 0), (10, 0, 0), (0, 10, 0)], (0, 1, 2))[0] +
+              buffer_bytes([], (0, 1, 2))[1])
+g["accessors"][0]["max"] = [10, 10, 0]; cases["world_bounds_overflow.gltf"] = g
+
+# Index accessors (uint32) whose element 2 a sparse substitution sets to `value`.
+for name, value in [("sparse_index_max.gltf", 0xFFFFFFFF), ("sparse_index_2p24.gltf", 2**24 + 1)]:
+    g = triangle(); pos, _ = buffer_bytes([(0, 0, 0), (1, 0, 0), (0, 1, 0)], ())
+    idx = struct.pack("<3I", 0, 1, 2); sp = struct.pack("<I", 2) + struct.pack("<I", value)
+    g = with_blob(g, pos + idx + sp)
+    g["bufferViews"] = [{"buffer": 0, "byteOffset": 0, "byteLength": len(pos)},
+                        {"buffer": 0, "byteOffset": len(pos), "byteLength": 12},
+                        {"buffer": 0, "byteOffset": len(pos) + 12, "byteLength": 4},
+                        {"buffer": 0, "byteOffset": len(pos) + 16, "byteLength": 4}]
+    g["accessors"][1] = {"bufferView": 1, "componentType": 5125, "count": 3, "type": "SCALAR",
+                         "sparse": {"count": 1, "indices": {"bufferView": 2, "componentType": 5125},
+                                    "values": {"bufferView": 3}}}
+    cases[name] = g
+g = copy.deepcopy(cases["sparse_index_max.gltf"])
+g["accessors"][1]["componentType"] = 5123; g["accessors"][1]["normalized"] = True
+g["bufferViews"][1]["byteLength"] = 6; cases["sparse_indices_normalized.gltf"] = g
+# Data leaving the declared min/max: a flipped byte in a .bin looks like this.
+g = triangle(positions=((0, 0, 0), (1, 0, 0), (0, 1, 1.7e38)))
+g["accessors"][0]["max"] = [1, 1, 0.5]; cases["position_outside_minmax.gltf"] = g
+
+# Odd objects in otherwise valid files: skipped with a warning, the file kept.
+def with_camera(cam):
+    g = triangle(); g["cameras"] = [cam]; g["nodes"].append({"camera": 0, "translation": [0, 0, 3]})
+    g["scenes"][0]["nodes"] = [0, 1]; return g
+cases["camera_zfar_below_znear.gltf"] = with_camera(
+    {"type": "perspective", "perspective": {"yfov": 0.8, "znear": 10, "zfar": 1}})
+cases["camera_negative_xmag.gltf"] = with_camera(
+    {"type": "orthographic", "orthographic": {"xmag": -1, "ymag": 1, "znear": 0, "zfar": 10}})
+cases["camera_yfov_pi.gltf"] = with_camera(
+    {"type": "perspective", "perspective": {"yfov": 3.2, "znear": 0.1}})
+def with_light(light):
+    g = triangle(); g["extensionsUsed"] = ["KHR_lights_punctual"]
+    g["extensions"] = {"KHR_lights_punctual": {"lights": [light]}}
+    g["nodes"].append({"extensions": {"KHR_lights_punctual": {"light": 0}}})
+    g["scenes"][0]["nodes"] = [0, 1]; return g
+cases["light_negative_intensity.gltf"] = with_light({"type": "point", "intensity": -5})
+cases["light_cone_inverted.gltf"] = with_light(
+    {"type": "spot", "spot": {"innerConeAngle": 0.6, "outerConeAngle": 0.5}})
+cases["light_unknown_type.gltf"] = with_light({"type": "area"})
+g = triangle(); g["materials"][0]["normalTexture"] = {"index": 0, "scale": 1e30}
+g["textures"] = [{"source": 0}]
+g["images"] = [{"uri": "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR4nGP4z8DwHwAFAAH/iZk9HQAAAABJRU5ErkJggg=="}]
+cases["normal_scale_huge.gltf"] = g
+g = triangle(); pos, idx = buffer_bytes([(0, 0, 0), (1, 0, 0), (0, 1, 0)], (0, 1, 2))
+nrm = struct.pack("<3f", math.nan, 0, 1) + struct.pack("<3f", 0, 0, 0) + struct.pack("<3f", 0, 0, 1)
+g = with_blob(g, pos + idx + nrm)
+g["bufferViews"].append({"buffer": 0, "byteOffset": len(pos) + len(idx), "byteLength": 36})
+g["accessors"].append({"bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC3"})
+g["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 2; cases["nan_normals.gltf"] = g
+g = triangle(); g["scenes"][0]["nodes"] = [0, 0, 0]; cases["duplicate_scene_roots.gltf"] = g
+
 for name, doc in cases.items():
     write(name, doc)
+# ~20,000 levels of nesting in extras (40 KB): tinygltf's recursive parser overflowed
+# the stack on this. Also as the JSON chunk of a .glb.
+deep = json.dumps(triangle())[:-1] + ', "extras": ' + "[" * 20000 + "]" * 20000 + "}"
+with open("deep_nesting.gltf", "w") as f: f.write(deep)
+def glb(json_text, bin_chunk=b""):
+    j = json_text.encode(); j += b" " * ((4 - len(j) % 4) % 4)
+    chunks = struct.pack("<I", len(j)) + b"JSON" + j
+    if bin_chunk:
+        bin_chunk += b"\0" * ((4 - len(bin_chunk) % 4) % 4)
+        chunks += struct.pack("<I", len(bin_chunk)) + b"BIN\0" + bin_chunk
+    return b"glTF" + struct.pack("<II", 2, 12 + len(chunks)) + chunks
+with open("deep_nesting.glb", "wb") as f: f.write(glb(deep))
+# An image bufferView 4 KB long in a 68-byte BIN chunk: once copied past the end.
+g = triangle(); pos, idx = buffer_bytes([(0, 0, 0), (1, 0, 0), (0, 1, 0)], (0, 1, 2))
+g["buffers"] = [{"byteLength": len(pos) + len(idx) + 24}]
+g["bufferViews"].append({"buffer": 0, "byteOffset": len(pos) + len(idx), "byteLength": 4096})
+g["images"] = [{"bufferView": 2, "mimeType": "image/png"}]; g["textures"] = [{"source": 0}]
+with open("image_view_past_buffer.glb", "wb") as f:
+    f.write(glb(json.dumps(g), pos + idx + b"\x89PNG" + b"\0" * 20))
+# A valid .glb whose image lives in the BIN chunk (bytes taken, range-checked, by Sherpa).
+png = base64.b64decode("iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR4nGP4z8DwHwAFAAH/iZk9HQAAAABJRU5ErkJggg==")
+g["buffers"] = [{"byteLength": len(pos) + len(idx) + len(png)}]
+g["bufferViews"][2]["byteLength"] = len(png)
+with open("image_in_glb.glb", "wb") as f: f.write(glb(json.dumps(g), pos + idx + png))
+# A PNG renamed .gltf: the JSON library's exception once reached the user raw.
+with open("png_renamed.gltf", "wb") as f:
+    f.write(base64.b64decode("iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR4nGP4z8DwHwAFAAH/iZk9HQAAAABJRU5ErkJggg=="))
 with open("invalid_json.gltf", "w") as f: f.write('{"asset": {"version": "2.0"}, "nodes": [')
 open("empty.gltf", "w").close()
 with open("truncated.glb", "wb") as f:

@@ -1,6 +1,7 @@
 // Malformed input: a clear error naming the file and the problem, no partial
 // scene; or, where glTF allows it, a warning and a usable scene. Plus mutation
 // fuzzing: no input may crash or hang the importer.
+#include "load_error_check.h"
 #include "test_support.h"
 
 #include <sherpa/scene/scene_loader.h>
@@ -13,21 +14,13 @@ namespace {
 
 namespace test = sherpa::test;
 
-struct BadCase {
-    const char* file;
-    const char* message; // a fragment the error must contain
-};
+using test::BadCase;
 
 class BadInput : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(BadInput, FailsWithAClearMessageAndNoScene) {
-    const std::string path = (test::data_dir() / GetParam().file).string();
-    const sherpa::LoadResult r = sherpa::load_scene(path);
-    EXPECT_FALSE(r);
-    EXPECT_EQ(r.scene, nullptr);
-    EXPECT_EQ(r.error.rfind(path, 0), 0u) << "error must start with the file name: " << r.error;
-    EXPECT_NE(r.error.find(GetParam().message), std::string::npos) << r.error;
-    EXPECT_LT(r.error.size(), 400u) << "one readable line";
+    test::expect_clear_load_error((test::data_dir() / GetParam().file).string(),
+                                  GetParam().message);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -35,12 +28,12 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         BadCase{"missing_buffer.gltf", "does_not_exist.bin"},
         BadCase{"short_buffer.gltf", "short_buffer.bin"},
-        BadCase{"buffer_shorter_than_view.gltf", "Buffer"},
+        BadCase{"buffer_shorter_than_view.gltf", "exceeds buffers[0].byteLength 20"},
         BadCase{"accessor_out_of_range.gltf", "attributes.POSITION: accessor index 7 out of range"},
         BadCase{"bufferview_out_of_range.gltf", "bufferView index 9 out of range"},
         BadCase{"accessor_past_view.gltf", "past the end of bufferViews[0]"},
         BadCase{"stride_too_small.gltf", "byteStride 4 is smaller"},
-        BadCase{"bad_component_type.gltf", "componentType 5130"},
+        BadCase{"bad_component_type.gltf", "componentType: 5130 is out of the range"},
         BadCase{"normal_wrong_type.gltf", "attributes.NORMAL"},
         BadCase{"index_beyond_vertices.gltf", "= 5 is beyond the vertex count 3"},
         BadCase{"nan_position.gltf", "POSITION[1] is not finite"},
@@ -54,12 +47,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"default_scene_out_of_range.gltf", "scene index 3"},
         BadCase{"invalid_json.gltf", "parse error"}, BadCase{"empty.gltf", "empty"},
         BadCase{"truncated.glb", "binary"}, BadCase{"no_such_file.gltf", "cannot open"}),
-    [](const auto& param_info) {
-        std::string n = param_info.param.file;
-        for (char& c : n)
-            if (c == '.') c = '_';
-        return n;
-    });
+    test::case_name);
 
 TEST(AllowedInput, PrimitiveWithoutMaterialUsesTheDefaultWithAWarning) {
     const sherpa::LoadResult r =

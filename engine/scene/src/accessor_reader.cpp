@@ -1,8 +1,10 @@
 #include "accessor_reader.h"
 
+#include "checked_math.h"
 #include "import_error.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 
 #include <tiny_gltf.h>
@@ -54,7 +56,8 @@ const tinygltf::Accessor& checked_accessor(const tinygltf::Model& model, int ind
 }
 
 // Returns a pointer to `needed` bytes at `offset` within bufferView `view_index`,
-// with every range checked against the bufferView and its buffer.
+// with every range checked against the bufferView and its buffer (overflow-proof:
+// offsets near 2^64 must not wrap into a passing check).
 const std::uint8_t* checked_view_bytes(const tinygltf::Model& model, int view_index,
                                        std::size_t offset, std::size_t needed,
                                        const std::string& where) {
@@ -67,11 +70,11 @@ const std::uint8_t* checked_view_bytes(const tinygltf::Model& model, int view_in
     if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size())
         fail(view_path + ": buffer index " + std::to_string(view.buffer) + " out of range");
     const auto& buffer = model.buffers[static_cast<std::size_t>(view.buffer)];
-    if (view.byteOffset + view.byteLength > buffer.data.size())
+    if (!range_fits(view.byteOffset, view.byteLength, buffer.data.size()))
         fail(view_path + ": byteOffset " + std::to_string(view.byteOffset) + " + byteLength " +
              std::to_string(view.byteLength) + " exceeds buffers[" + std::to_string(view.buffer) +
              "] size " + std::to_string(buffer.data.size()) + " (missing or short buffer)");
-    if (offset > view.byteLength || needed > view.byteLength - offset)
+    if (!range_fits(offset, needed, view.byteLength))
         fail(where + ": reads " + std::to_string(needed) + " bytes at offset " +
              std::to_string(offset) + " past the end of " + view_path + " (byteLength " +
              std::to_string(view.byteLength) + ")");
@@ -130,29 +133,47 @@ std::uint32_t decode_index(const std::uint8_t* p, int component_type) {
     }
 }
 
-// Reads `count` elements of `components` components each from a (possibly strided)
-// bufferView region, calling `store(element, component, bytes)` for each.
-template <typename Store>
-void read_strided(const tinygltf::Model& model, int view_index, std::size_t byte_offset,
-                  std::size_t count, std::uint32_t components, int component_type,
-                  const std::string& where, Store&& store) {
-    if (count == 0) return;
-    const std::uint32_t elem = components * component_size(component_type);
+// `count` elements of `components` components each in a (possibly strided)
+// bufferView, located and range-checked before anything is allocated for them.
+struct StridedRegion {
+    const std::uint8_t* base = nullptr;
+    std::size_t stride = 0;
+    std::uint32_t component_bytes = 0;
+};
+
+StridedRegion locate_strided(const tinygltf::Model& model, int view_index, std::size_t byte_offset,
+                             std::size_t count, std::uint32_t components, int component_type,
+                             const std::string& where) {
+    StridedRegion r;
+    r.component_bytes = component_size(component_type);
+    const std::uint32_t elem = components * r.component_bytes;
     const auto& views = model.bufferViews;
-    std::size_t stride = elem;
+    r.stride = elem;
     if (view_index >= 0 && static_cast<std::size_t>(view_index) < views.size() &&
         views[static_cast<std::size_t>(view_index)].byteStride != 0) {
-        stride = views[static_cast<std::size_t>(view_index)].byteStride;
-        if (stride < elem)
+        r.stride = views[static_cast<std::size_t>(view_index)].byteStride;
+        if (r.stride < elem)
             fail(where + ": bufferViews[" + std::to_string(view_index) + "].byteStride " +
-                 std::to_string(stride) + " is smaller than the element size " +
+                 std::to_string(r.stride) + " is smaller than the element size " +
                  std::to_string(elem));
     }
-    const std::size_t needed = stride * (count - 1) + elem;
-    const std::uint8_t* base = checked_view_bytes(model, view_index, byte_offset, needed, where);
-    const std::uint32_t csize = component_size(component_type);
+    if (count == 0) return r;
+    const auto span = checked_mul(r.stride, count - 1);
+    const auto needed = span ? checked_add(*span, elem) : std::nullopt;
+    if (!needed)
+        fail(where + ": count " + std::to_string(count) + " x byteStride " +
+             std::to_string(r.stride) + " overflows the address space");
+    r.base = checked_view_bytes(model, view_index, byte_offset, *needed, where);
+    return r;
+}
+
+// Calls `store(element, component, bytes)` for each component of a located region.
+template <typename Store>
+void read_region(const StridedRegion& r, std::size_t count, std::uint32_t components,
+                 Store&& store) {
     for (std::size_t i = 0; i < count; ++i)
-        for (std::uint32_t c = 0; c < components; ++c) store(i, c, base + i * stride + c * csize);
+        for (std::uint32_t c = 0; c < components; ++c)
+            store(i, c, r.base + i * r.stride + c * r.component_bytes);
 }
 
 void validate_accessor_shape(const tinygltf::Accessor& acc, const std::string& where) {
@@ -172,6 +193,82 @@ std::uint32_t accessor_count(const tinygltf::Model& model, int index, const std:
     return static_cast<std::uint32_t>(acc.count);
 }
 
+namespace {
+
+// An accessor without a bufferView is all zeros (plus its sparse substitutions): its
+// count costs the file nothing, so a 1 KB file could ask for gigabytes. Such counts
+// are capped at one element per byte of buffer data the file carries, and never
+// below kZeroFillMinElements (sparse morph targets over small meshes stay legal).
+constexpr std::size_t kZeroFillMinElements = std::size_t{1} << 20;
+
+std::size_t zero_fill_limit(const tinygltf::Model& model) {
+    std::size_t bytes = 0;
+    for (const auto& b : model.buffers)
+        bytes = checked_add(bytes, b.data.size()).value_or(SIZE_MAX);
+    return std::max(kZeroFillMinElements, bytes);
+}
+
+// Decodes `count` x `components` values of an accessor (dense data, then sparse
+// substitution) with `decode(bytes)`. Every region is located and range-checked
+// before the output is allocated, so its size is always backed by the file's data.
+template <typename T, typename Decode>
+std::vector<T> decode_accessor(const tinygltf::Model& model, const tinygltf::Accessor& acc,
+                               std::size_t count, std::uint32_t components, const std::string& path,
+                               Decode&& decode) {
+    StridedRegion dense;
+    if (acc.bufferView >= 0)
+        dense = locate_strided(model, acc.bufferView, acc.byteOffset, count, components,
+                               acc.componentType, path);
+    else if (count > zero_fill_limit(model))
+        fail(path + ": count " + std::to_string(count) +
+             " without a bufferView (all zeros) exceeds Sherpa's limit of " +
+             std::to_string(zero_fill_limit(model)) +
+             " elements for such accessors (one per byte of buffer data, at least 2^20)");
+    const auto& sp = acc.sparse;
+    const std::string sp_path = path + ".sparse";
+    StridedRegion sp_indices, sp_values;
+    std::size_t sp_count = 0;
+    const int itype = sp.indices.componentType;
+    if (sp.isSparse) {
+        if (sp.count < 0 || static_cast<std::size_t>(sp.count) > count)
+            fail(sp_path + ": count " + std::to_string(sp.count) + " exceeds accessor count " +
+                 std::to_string(count));
+        if (itype != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+            itype != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+            itype != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+            fail(sp_path + ".indices: componentType " + std::to_string(itype) +
+                 " is not an unsigned integer type");
+        sp_count = static_cast<std::size_t>(sp.count);
+        sp_indices = locate_strided(model, sp.indices.bufferView,
+                                    static_cast<std::size_t>(sp.indices.byteOffset), sp_count, 1,
+                                    itype, sp_path + ".indices");
+        // Sparse values are tightly packed: the bufferView must not be strided.
+        sp_values = locate_strided(model, sp.values.bufferView,
+                                   static_cast<std::size_t>(sp.values.byteOffset), sp_count,
+                                   components, acc.componentType, sp_path + ".values");
+    }
+    // count <= 2^32 / 64 (accessor_count) and components <= 4: no overflow.
+    std::vector<T> out(count * components, T{});
+    if (acc.bufferView >= 0)
+        read_region(dense, count, components,
+                    [&](std::size_t i, std::uint32_t c, const std::uint8_t* p) {
+                        out[i * components + c] = decode(p);
+                    });
+    for (std::size_t i = 0; i < sp_count; ++i) {
+        // Indices are integers: decoded as such, never through float.
+        const std::uint32_t target = decode_index(sp_indices.base + i * sp_indices.stride, itype);
+        if (target >= count)
+            fail(sp_path + ".indices[" + std::to_string(i) + "] = " + std::to_string(target) +
+                 " is beyond the accessor count " + std::to_string(count));
+        for (std::uint32_t c = 0; c < components; ++c)
+            out[target * components + c] =
+                decode(sp_values.base + i * sp_values.stride + c * sp_values.component_bytes);
+    }
+    return out;
+}
+
+} // namespace
+
 std::vector<float> read_accessor_floats(const tinygltf::Model& model, int index,
                                         std::initializer_list<std::uint32_t> allowed_components,
                                         std::uint32_t& components, const std::string& where) {
@@ -183,50 +280,16 @@ std::vector<float> read_accessor_floats(const tinygltf::Model& model, int index,
         allowed_components.end())
         fail(path + ": has " + std::to_string(components) +
              " components per element, which this attribute does not allow");
+    if (acc.normalized && (acc.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
+                           acc.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+        fail(path + ": normalized is true for a FLOAT or UNSIGNED_INT accessor, which glTF "
+                    "forbids");
     const std::size_t count = accessor_count(model, index, where);
-    std::vector<float> out(count * components, 0.0f);
-    if (acc.bufferView >= 0) {
-        read_strided(model, acc.bufferView, acc.byteOffset, count, components, acc.componentType,
-                     path, [&](std::size_t i, std::uint32_t c, const std::uint8_t* p) {
-                         out[i * components + c] =
-                             decode_component(p, acc.componentType, acc.normalized);
-                     });
-    }
-    if (acc.sparse.isSparse) {
-        const auto& sp = acc.sparse;
-        const std::string sp_path = path + ".sparse";
-        if (sp.count < 0 || static_cast<std::size_t>(sp.count) > count)
-            fail(sp_path + ": count " + std::to_string(sp.count) + " exceeds accessor count " +
-                 std::to_string(count));
-        const int itype = sp.indices.componentType;
-        if (itype != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-            itype != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-            itype != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-            fail(sp_path + ".indices: componentType " + std::to_string(itype) +
-                 " is not an unsigned integer type");
-        std::vector<std::uint32_t> targets(static_cast<std::size_t>(sp.count));
-        read_strided(model, sp.indices.bufferView, static_cast<std::size_t>(sp.indices.byteOffset),
-                     targets.size(), 1, itype, sp_path + ".indices",
-                     [&](std::size_t i, std::uint32_t, const std::uint8_t* p) {
-                         targets[i] = decode_index(p, itype);
-                     });
-        std::vector<float> values(targets.size() * components);
-        // Sparse values are tightly packed: the bufferView must not be strided.
-        read_strided(model, sp.values.bufferView, static_cast<std::size_t>(sp.values.byteOffset),
-                     targets.size(), components, acc.componentType, sp_path + ".values",
-                     [&](std::size_t i, std::uint32_t c, const std::uint8_t* p) {
-                         values[i * components + c] =
-                             decode_component(p, acc.componentType, acc.normalized);
-                     });
-        for (std::size_t i = 0; i < targets.size(); ++i) {
-            if (targets[i] >= count)
-                fail(sp_path + ".indices[" + std::to_string(i) +
-                     "] = " + std::to_string(targets[i]) + " is beyond the accessor count " +
-                     std::to_string(count));
-            std::copy_n(&values[i * components], components, &out[targets[i] * components]);
-        }
-    }
-    return out;
+    const int ct = acc.componentType;
+    const bool normalized = acc.normalized;
+    return decode_accessor<float>(model, acc, count, components, path, [&](const std::uint8_t* p) {
+        return decode_component(p, ct, normalized);
+    });
 }
 
 std::vector<std::uint32_t> read_accessor_indices(const tinygltf::Model& model, int index,
@@ -240,21 +303,20 @@ std::vector<std::uint32_t> read_accessor_indices(const tinygltf::Model& model, i
         ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT && ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
         fail(path + ": indices componentType " + std::to_string(ct) +
              " is not an unsigned integer type");
-    if (acc.sparse.isSparse) {
-        // Rare but legal: decode via the float path (exact for values < 2^24), then convert.
-        std::uint32_t comps = 0;
-        const auto f = read_accessor_floats(model, index, {1}, comps, where);
-        std::vector<std::uint32_t> out(f.size());
-        for (std::size_t i = 0; i < f.size(); ++i) out[i] = static_cast<std::uint32_t>(f[i]);
-        return out;
-    }
+    // Normalized indices would be fractions of a vertex: meaningless, so refused.
+    if (acc.normalized) fail(path + ": indices must not be normalized");
     const std::size_t count = accessor_count(model, index, where);
-    std::vector<std::uint32_t> out(count, 0);
-    if (acc.bufferView < 0) return out;
-    read_strided(
-        model, acc.bufferView, acc.byteOffset, count, 1, ct, path,
-        [&](std::size_t i, std::uint32_t, const std::uint8_t* p) { out[i] = decode_index(p, ct); });
-    return out;
+    return decode_accessor<std::uint32_t>(
+        model, acc, count, 1, path, [&](const std::uint8_t* p) { return decode_index(p, ct); });
+}
+
+std::span<const std::uint8_t> buffer_view_bytes(const tinygltf::Model& model, int view_index,
+                                                const std::string& where) {
+    const std::size_t length =
+        view_index >= 0 && static_cast<std::size_t>(view_index) < model.bufferViews.size()
+            ? model.bufferViews[static_cast<std::size_t>(view_index)].byteLength
+            : 0;
+    return {checked_view_bytes(model, view_index, 0, length, where), length};
 }
 
 AccessorSource describe_accessor(const tinygltf::Model& model, int index) {

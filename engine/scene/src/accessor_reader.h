@@ -2,6 +2,8 @@
 // Internal: bounds-checked decoding of glTF accessors (any component type,
 // normalized or not, strided/interleaved, sparse) into floats or indices.
 #include <cstdint>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -26,10 +28,24 @@ std::vector<float> read_accessor_floats(const tinygltf::Model& model, int index,
 std::vector<std::uint32_t> read_accessor_indices(const tinygltf::Model& model, int index,
                                                  const std::string& where);
 
+// The bytes of bufferView `view_index`, range-checked against its buffer.
+std::span<const std::uint8_t> buffer_view_bytes(const tinygltf::Model& model, int view_index,
+                                                const std::string& where);
+
 // Describes where the accessor's data lives, for the inspection docks.
 AccessorSource describe_accessor(const tinygltf::Model& model, int index);
 
 // Number of elements, after validating the index only.
 std::uint32_t accessor_count(const tinygltf::Model& model, int index, const std::string& where);
+
+// The violation when the decoded `values` of accessor `index` leave the min/max it
+// declares (compared after normalisation, with slack for exporters' rounding);
+// nullopt when they fit or the accessor declares none.
+std::optional<AccessorRangeViolation> check_declared_range(const tinygltf::Model& model, int index,
+                                                           const std::vector<float>& values,
+                                                           std::uint32_t components,
+                                                           const std::string& where);
+// One warning line for a violation.
+std::string describe_range_violation(const AccessorRangeViolation& v);
 
 } // namespace sherpa::detail

@@ -38,10 +38,9 @@ std::vector<std::uint32_t> to_triangle_list(PrimitiveMode mode,
 }
 
 template <typename Apply>
-void read_vec_attribute(const tinygltf::Model& model, const tinygltf::Primitive& prim,
-                        const char* name, std::initializer_list<std::uint32_t> comps,
-                        std::uint32_t expected_count, const std::string& where, Mesh& mesh,
-                        VertexAttribute attr, Apply&& apply) {
+void read_vec_attribute(ImportContext& ctx, const tinygltf::Primitive& prim, const char* name,
+                        std::initializer_list<std::uint32_t> comps, std::uint32_t expected_count,
+                        const std::string& where, Mesh& mesh, VertexAttribute attr, Apply&& apply) {
     const auto it = prim.attributes.find(name);
     const auto slot = static_cast<std::size_t>(attr);
     if (it == prim.attributes.end()) {
@@ -50,7 +49,9 @@ void read_vec_attribute(const tinygltf::Model& model, const tinygltf::Primitive&
     }
     const std::string path = where + ".attributes." + name;
     std::uint32_t nc = 0;
+    const auto& model = ctx.model;
     const auto values = read_accessor_floats(model, it->second, comps, nc, path);
+    ctx.check_declared_range(it->second, values, nc, path);
     if (values.size() / nc != expected_count)
         fail(path + ": has " + std::to_string(values.size() / nc) + " elements but POSITION has " +
              std::to_string(expected_count));
@@ -96,6 +97,35 @@ std::uint32_t unweld_with_flat_normals(Mesh& mesh) {
     return degenerate;
 }
 
+// Gives each vertex whose normal is zero-length or not finite the area-weighted
+// normal of the triangles around it (+Z where those are degenerate too).
+void repair_invalid_normals(Mesh& mesh) {
+    auto invalid = [](const glm::vec3& n) {
+        const float len = glm::length(n);
+        return !std::isfinite(len) || len == 0.0f;
+    };
+    std::vector<std::uint8_t> bad(mesh.vertices.size(), 0);
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+        bad[i] = invalid(mesh.vertices[i].normal);
+    std::vector<glm::dvec3> sum(mesh.vertices.size(), glm::dvec3(0.0));
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
+        if (!bad[a] && !bad[b] && !bad[c]) continue;
+        const glm::dvec3 pa(mesh.vertices[a].position);
+        const glm::dvec3 n =
+            glm::cross(glm::dvec3(mesh.vertices[b].position) - pa,
+                       glm::dvec3(mesh.vertices[c].position) - pa); // length = 2 x area
+        for (std::uint32_t v : {a, b, c})
+            if (bad[v]) sum[v] += n;
+    }
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+        if (!bad[i]) continue;
+        const double len = glm::length(sum[i]);
+        mesh.vertices[i].normal =
+            len > 0.0 && std::isfinite(len) ? glm::vec3(sum[i] / len) : glm::vec3(0.0f, 0.0f, 1.0f);
+    }
+}
+
 void import_primitive(ImportContext& ctx, std::uint32_t mesh_index, std::uint32_t prim_index) {
     const auto& model = ctx.model;
     const auto& prim = model.meshes[mesh_index].primitives[prim_index];
@@ -132,6 +162,13 @@ void import_primitive(ImportContext& ctx, std::uint32_t mesh_index, std::uint32_
     }
     const std::uint32_t vertex_count =
         accessor_count(model, pos_it->second, where + ".attributes.POSITION");
+    // Positions are decoded (and their data range-checked) before anything is sized
+    // by vertex_count: a count is only believed once the file's bytes back it.
+    const std::string pos_path = where + ".attributes.POSITION";
+    std::uint32_t pos_components = 0;
+    const std::vector<float> positions =
+        read_accessor_floats(model, pos_it->second, {3}, pos_components, pos_path);
+    ctx.check_declared_range(pos_it->second, positions, 3, pos_path);
     info.vertices = vertex_count;
     scene.counts.vertices += vertex_count;
     ++scene.counts.primitives;
@@ -171,37 +208,36 @@ void import_primitive(ImportContext& ctx, std::uint32_t mesh_index, std::uint32_
                               std::to_string(info.triangles) + " triangles); not drawn");
 
     mesh.vertices.resize(vertex_count);
-    read_vec_attribute(model, prim, "POSITION", {3}, vertex_count, where, mesh,
-                       VertexAttribute::Position,
-                       [&](std::uint32_t i, const float* v, std::uint32_t) {
-                           mesh.vertices[i].position = {v[0], v[1], v[2]};
-                       });
+    for (std::uint32_t i = 0; i < vertex_count; ++i)
+        mesh.vertices[i].position = {positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]};
+    mesh.provenance[static_cast<std::size_t>(VertexAttribute::Position)] = Provenance::Authored;
+    mesh.sources[static_cast<std::size_t>(VertexAttribute::Position)] =
+        describe_accessor(model, pos_it->second);
     for (std::uint32_t i = 0; i < vertex_count; ++i)
         if (!is_finite(mesh.vertices[i].position))
             fail(where + ".attributes.POSITION[" + std::to_string(i) +
                  "] is not finite (NaN or Inf)");
-    read_vec_attribute(model, prim, "NORMAL", {3}, vertex_count, where, mesh,
-                       VertexAttribute::Normal,
+    read_vec_attribute(ctx, prim, "NORMAL", {3}, vertex_count, where, mesh, VertexAttribute::Normal,
                        [&](std::uint32_t i, const float* v, std::uint32_t) {
                            mesh.vertices[i].normal = {v[0], v[1], v[2]};
                        });
-    read_vec_attribute(model, prim, "TANGENT", {4}, vertex_count, where, mesh,
+    read_vec_attribute(ctx, prim, "TANGENT", {4}, vertex_count, where, mesh,
                        VertexAttribute::Tangent,
                        [&](std::uint32_t i, const float* v, std::uint32_t) {
                            mesh.vertices[i].tangent = {v[0], v[1], v[2], v[3]};
                        });
-    read_vec_attribute(model, prim, "TEXCOORD_0", {2}, vertex_count, where, mesh,
+    read_vec_attribute(ctx, prim, "TEXCOORD_0", {2}, vertex_count, where, mesh,
                        VertexAttribute::TexCoord0,
                        [&](std::uint32_t i, const float* v, std::uint32_t) {
                            mesh.vertices[i].uv0 = {v[0], v[1]};
                        });
-    read_vec_attribute(model, prim, "TEXCOORD_1", {2}, vertex_count, where, mesh,
+    read_vec_attribute(ctx, prim, "TEXCOORD_1", {2}, vertex_count, where, mesh,
                        VertexAttribute::TexCoord1,
                        [&](std::uint32_t i, const float* v, std::uint32_t) {
                            mesh.vertices[i].uv1 = {v[0], v[1]};
                        });
     if (prim.attributes.count("COLOR_0")) mesh.colors.resize(vertex_count);
-    read_vec_attribute(model, prim, "COLOR_0", {3, 4}, vertex_count, where, mesh,
+    read_vec_attribute(ctx, prim, "COLOR_0", {3, 4}, vertex_count, where, mesh,
                        VertexAttribute::Color0,
                        [&](std::uint32_t i, const float* v, std::uint32_t n) {
                            mesh.colors[i] = {v[0], v[1], v[2], n == 4 ? v[3] : 1.0f};
@@ -228,9 +264,12 @@ void import_primitive(ImportContext& ctx, std::uint32_t mesh_index, std::uint32_
         if (renormalised)
             ctx.warn(where + ": " + std::to_string(renormalised) +
                      " non-unit normals renormalised");
-        if (invalid)
+        if (invalid) {
+            repair_invalid_normals(mesh);
             ctx.warn(where + ": " + std::to_string(invalid) +
-                     " zero-length or NaN normals kept as authored");
+                     " zero-length or NaN normals replaced by their faces' normal (a NaN "
+                     "normal shades black)");
+        }
     }
 
     mesh.material_id =
@@ -245,6 +284,15 @@ void import_primitive(ImportContext& ctx, std::uint32_t mesh_index, std::uint32_
 }
 
 } // namespace
+
+void ImportContext::check_declared_range(int index, const std::vector<float>& values,
+                                         std::uint32_t components, const std::string& where) {
+    if (!range_checked.insert(index).second) return;
+    if (auto v = detail::check_declared_range(model, index, values, components, where)) {
+        warn(describe_range_violation(*v));
+        scene.range_violations.push_back(std::move(*v));
+    }
+}
 
 void import_meshes(ImportContext& ctx) {
     const auto& model = ctx.model;

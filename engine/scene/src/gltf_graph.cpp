@@ -2,6 +2,7 @@
 #include "import_context.h"
 #include "import_error.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -9,54 +10,102 @@
 
 namespace sherpa::detail {
 
+namespace {
+
+// Why a light cannot be shown, or "" when it can (KHR_lights_punctual's rules).
+std::string light_problem(const tinygltf::Light& src, const Light& l) {
+    if (src.type != "directional" && src.type != "point" && src.type != "spot")
+        return ".type: \"" + src.type + "\" is not directional, point or spot";
+    if (!std::isfinite(l.intensity) || l.intensity < 0.0f)
+        return ".intensity: " + number_text(src.intensity) + " is negative or not finite";
+    if (!is_finite(l.color) || l.color.x < 0.0f || l.color.y < 0.0f || l.color.z < 0.0f)
+        return ".color: has negative or non-finite components";
+    if (l.type == LightType::Spot &&
+        !(l.inner_cone >= 0.0f && l.inner_cone < l.outer_cone && l.outer_cone <= 1.5707964f))
+        return ".spot: innerConeAngle " + number_text(src.spot.innerConeAngle) +
+               " and outerConeAngle " + number_text(src.spot.outerConeAngle) +
+               " break 0 <= inner < outer <= pi/2";
+    return {};
+}
+
+// Why a camera cannot be shown, or "" when it can. tinygltf reads an absent
+// aspectRatio or zfar as 0: those mean "viewport aspect" and "infinite far plane".
+std::string camera_problem(const tinygltf::Camera& src, const Camera& c) {
+    if (c.type == CameraType::Perspective) {
+        if (!(c.yfov > 0.0f && c.yfov < 3.14159f))
+            return ".perspective.yfov: " + number_text(src.perspective.yfov) + " is not in (0, pi)";
+        if (!(c.znear > 0.0f && std::isfinite(c.znear)))
+            return ".perspective.znear: " + number_text(src.perspective.znear) + " is not > 0";
+        if (c.zfar != 0.0f && !(c.zfar > c.znear))
+            return ".perspective: zfar " + number_text(src.perspective.zfar) +
+                   " is not greater than znear " + number_text(src.perspective.znear);
+        if (!(c.aspect >= 0.0f) || !std::isfinite(c.aspect))
+            return ".perspective.aspectRatio: " + number_text(src.perspective.aspectRatio) +
+                   " is not > 0";
+        return {};
+    }
+    if (!(c.xmag > 0.0f && c.ymag > 0.0f && std::isfinite(c.xmag) && std::isfinite(c.ymag)))
+        return ".orthographic: xmag " + number_text(src.orthographic.xmag) + " and ymag " +
+               number_text(src.orthographic.ymag) + " must be > 0";
+    if (!(c.znear >= 0.0f && c.zfar > c.znear && std::isfinite(c.zfar)))
+        return ".orthographic: zfar " + number_text(src.orthographic.zfar) +
+               " is not greater than znear " + number_text(src.orthographic.znear);
+    return {};
+}
+
+} // namespace
+
 void import_lights_cameras(ImportContext& ctx) {
     const auto& model = ctx.model;
     Scene& scene = ctx.scene;
+    ctx.light_skipped.assign(model.lights.size(), 0);
     for (std::size_t i = 0; i < model.lights.size(); ++i) {
         const auto& src = model.lights[i];
-        const std::string where =
-            "extensions.KHR_lights_punctual.lights[" + std::to_string(i) + "]";
         Light l;
         l.name = src.name;
-        if (src.type == "directional")
-            l.type = LightType::Directional;
-        else if (src.type == "point")
-            l.type = LightType::Point;
-        else if (src.type == "spot")
-            l.type = LightType::Spot;
-        else
-            fail(where + ".type: \"" + src.type + "\" is not directional, point or spot");
+        l.type = src.type == "point"  ? LightType::Point
+                 : src.type == "spot" ? LightType::Spot
+                                      : LightType::Directional;
         if (src.color.size() == 3) l.color = {src.color[0], src.color[1], src.color[2]};
         l.intensity = static_cast<float>(src.intensity);
         l.range = static_cast<float>(src.range);
         l.inner_cone = static_cast<float>(src.spot.innerConeAngle);
         l.outer_cone = static_cast<float>(src.spot.outerConeAngle);
+        if (const std::string problem = light_problem(src, l); !problem.empty()) {
+            ctx.warn("extensions.KHR_lights_punctual.lights[" + std::to_string(i) + "]" + problem +
+                     "; light skipped (not placed), the rest of the file is kept");
+            ctx.light_skipped[i] = 1;
+        }
         scene.lights.push_back(l);
     }
+    ctx.camera_skipped.assign(model.cameras.size(), 0);
     for (std::size_t i = 0; i < model.cameras.size(); ++i) {
         const auto& src = model.cameras[i];
         const std::string where = "cameras[" + std::to_string(i) + "]";
         Camera c;
         c.name = src.name;
+        std::string problem;
         if (src.type == "perspective") {
             c.type = CameraType::Perspective;
             c.yfov = static_cast<float>(src.perspective.yfov);
             c.aspect = static_cast<float>(src.perspective.aspectRatio);
             c.znear = static_cast<float>(src.perspective.znear);
             c.zfar = static_cast<float>(src.perspective.zfar);
-            if (!(c.yfov > 0.0f && c.yfov < 3.14159f))
-                fail(where + ".perspective.yfov: " + std::to_string(c.yfov) + " is not in (0, pi)");
-            if (!(c.znear > 0.0f)) fail(where + ".perspective.znear: must be > 0");
+            problem = camera_problem(src, c);
         } else if (src.type == "orthographic") {
             c.type = CameraType::Orthographic;
             c.xmag = static_cast<float>(src.orthographic.xmag);
             c.ymag = static_cast<float>(src.orthographic.ymag);
             c.znear = static_cast<float>(src.orthographic.znear);
             c.zfar = static_cast<float>(src.orthographic.zfar);
-            if (c.xmag == 0.0f || c.ymag == 0.0f)
-                fail(where + ".orthographic: xmag and ymag must not be zero");
+            problem = camera_problem(src, c);
         } else {
-            fail(where + ".type: \"" + src.type + "\" is not perspective or orthographic");
+            problem = ".type: \"" + src.type + "\" is not perspective or orthographic";
+        }
+        if (!problem.empty()) {
+            ctx.warn(where + problem +
+                     "; camera skipped (not placed), the rest of the file is kept");
+            ctx.camera_skipped[i] = 1;
         }
         scene.cameras.push_back(c);
     }
@@ -89,7 +138,9 @@ void import_nodes_and_scenes(ImportContext& ctx) {
         check_index(src.camera, model.cameras.size(), where + ".camera", "camera");
         check_index(src.skin, model.skins.size(), where + ".skin", "skin");
         node.mesh = src.mesh;
-        node.camera = src.camera;
+        node.camera = src.camera >= 0 && ctx.camera_skipped[static_cast<std::size_t>(src.camera)]
+                          ? -1
+                          : src.camera;
         node.skin = src.skin;
         if (src.skin >= 0 && src.mesh >= 0) ++skinned;
         if (const auto it = src.extensions.find("KHR_lights_punctual");
@@ -100,7 +151,8 @@ void import_nodes_and_scenes(ImportContext& ctx) {
             const int light = v.Get("light").GetNumberAsInt();
             check_index(light, model.lights.size(), where + ".extensions.KHR_lights_punctual.light",
                         "light");
-            node.light = light;
+            if (light >= 0 && !ctx.light_skipped[static_cast<std::size_t>(light)])
+                node.light = light;
         }
         if (src.matrix.size() == 16) {
             node.has_matrix = true;
@@ -154,13 +206,19 @@ void import_nodes_and_scenes(ImportContext& ctx) {
     }
     if (skinned)
         ctx.warn(std::to_string(skinned) + " skinned mesh nodes are shown in their node pose; "
-                                           "skinning and animation are not applied");
+                                           "skinning is not applied");
     scene.counts.nodes = n;
 
     for (std::size_t s = 0; s < model.scenes.size(); ++s) {
         SceneDef def;
         def.name = model.scenes[s].name;
+        std::size_t repeated = 0;
         for (int root : model.scenes[s].nodes) {
+            if (std::find(def.roots.begin(), def.roots.end(), static_cast<std::uint32_t>(root)) !=
+                def.roots.end()) {
+                ++repeated; // glTF: scene.nodes are unique; a repeat would draw twice
+                continue;
+            }
             if (root < 0 || static_cast<std::size_t>(root) >= n)
                 fail("scenes[" + std::to_string(s) + "].nodes: node " + std::to_string(root) +
                      " out of range");
@@ -169,6 +227,9 @@ void import_nodes_and_scenes(ImportContext& ctx) {
                      " is not a root node");
             def.roots.push_back(static_cast<std::uint32_t>(root));
         }
+        if (repeated)
+            ctx.warn("scenes[" + std::to_string(s) + "].nodes: " + std::to_string(repeated) +
+                     " repeated root node(s) ignored; each root is shown once");
         scene.scenes.push_back(std::move(def));
     }
     scene.counts.scenes = model.scenes.size();

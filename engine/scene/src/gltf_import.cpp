@@ -1,10 +1,11 @@
 // import_gltf(): parse with tinygltf, validate, convert, flatten. Any failure
 // discards the partial scene and reports "FILE: what is wrong".
+#include "gltf_fs.h"
+#include "gltf_validate.h"
 #include "import_context.h"
 #include "import_error.h"
 #include "load_stages.h"
 
-#include <sherpa/core/file_io.h>
 #include <sherpa/scene/scene_loader.h>
 
 #include <algorithm>
@@ -12,11 +13,16 @@
 #include <cctype>
 #include <chrono>
 #include <filesystem>
+#include <set>
 
 #include <tiny_gltf.h>
 
 namespace sherpa {
 namespace {
+
+// The vertex attributes the engine draws with; any other is reported.
+constexpr std::array<std::string_view, 6> kDrawnAttributes{"POSITION",   "NORMAL",     "TANGENT",
+                                                           "TEXCOORD_0", "TEXCOORD_1", "COLOR_0"};
 
 constexpr std::array<std::string_view, 5> kSupportedExtensions{
     "KHR_texture_transform", "KHR_materials_emissive_strength",
@@ -25,11 +31,19 @@ constexpr std::array<std::string_view, 5> kSupportedExtensions{
 };
 
 // Keeps images encoded: decoding belongs to the texture pipeline, which hashes the
-// encoded bytes for its cache. tinygltf hands us the bytes of external files, data
-// URIs and bufferViews alike.
-bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+// encoded bytes for its cache. tinygltf hands us the bytes of external files and data
+// URIs; for a bufferView it passes the view's range unchecked (a view longer than
+// its buffer was copied past the end), so those bytes are taken later, range-checked,
+// by import_samplers_images_textures.
+bool keep_encoded_image(tinygltf::Image* image, const int, std::string* err, std::string*, int, int,
                         const unsigned char* bytes, int size, void*) {
-    image->image.assign(bytes, bytes + size);
+    if (image->bufferView < 0) {
+        if (size < 0) {
+            if (err) *err += "image larger than 2 GiB";
+            return false;
+        }
+        image->image.assign(bytes, bytes + size);
+    }
     image->width = image->height = -1;
     image->as_is = true;
     return true;
@@ -56,36 +70,82 @@ std::string clean_message(const std::string& s) {
     return out;
 }
 
-// Warnings for meshes whose tangents needed fallbacks or could not be generated.
+// Until skinning, morphing and animation are implemented, the file's animations,
+// morph targets and the attributes Sherpa does not draw with (JOINTS_n, WEIGHTS_n,
+// TEXCOORD_2+, ...) are each named in a warning: nothing is dropped without a word.
+void warn_unsupported_content(detail::ImportContext& ctx) {
+    const auto& model = ctx.model;
+    if (!model.animations.empty()) {
+        std::string names;
+        for (std::size_t i = 0; i < model.animations.size() && i < 5; ++i)
+            names += (i ? ", " : "") + (model.animations[i].name.empty()
+                                            ? "animations[" + std::to_string(i) + "]"
+                                            : "\"" + model.animations[i].name + "\"");
+        if (model.animations.size() > 5) names += ", ...";
+        ctx.warn(std::to_string(model.animations.size()) + " animation(s) (" + names +
+                 ") not played: animation is not implemented; the static pose is shown");
+    }
+    std::size_t morphed = 0, targets = 0;
+    std::set<std::string> unused;
+    for (const auto& mesh : model.meshes)
+        for (const auto& prim : mesh.primitives) {
+            if (!prim.targets.empty()) ++morphed;
+            targets += prim.targets.size();
+            for (const auto& [name, accessor] : prim.attributes)
+                if (std::find(kDrawnAttributes.begin(), kDrawnAttributes.end(), name) ==
+                    kDrawnAttributes.end())
+                    unused.insert(name);
+        }
+    if (morphed)
+        ctx.warn(std::to_string(morphed) + " primitive(s) with " + std::to_string(targets) +
+                 " morph target(s) shown in their base shape: morphing is not implemented");
+    if (!unused.empty()) {
+        std::string names;
+        for (const auto& n : unused) names += (names.empty() ? "" : ", ") + n;
+        ctx.warn("attributes " + names + " are not used for drawing" +
+                 (unused.count("JOINTS_0") || unused.count("WEIGHTS_0")
+                      ? std::string(" (skinning is not implemented)")
+                      : std::string()));
+    }
+}
 
-} // namespace
-
-LoadResult import_gltf(const std::string& path, const LoadOptions& options) {
+LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& options) {
     LoadResult result;
     if (!detail::begin_stage(options, LoadStage::Parse)) return detail::cancelled_result();
     const auto t_parse = std::chrono::steady_clock::now();
     std::vector<std::uint8_t> bytes;
-    std::string io_error;
-    if (!read_file(path, bytes, io_error)) {
-        result.error = io_error;
+    std::string problem;
+    if (!detail::read_regular_file(path, bytes, problem)) {
+        if (problem.rfind("is a directory", 0) == 0) problem = "is a directory, not a glTF file";
+        result.error = path + ": " + problem;
+        return result;
+    }
+    // Refuses what tinygltf would crash on or silently misread (see gltf_validate.h).
+    if (problem = detail::validate_gltf_bytes(bytes); !problem.empty()) {
+        result.error = path + ": " + problem;
         return result;
     }
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(keep_encoded_image, nullptr);
+    loader.SetFsCallbacks(detail::safe_fs_callbacks());
     tinygltf::Model model;
     std::string err, warn;
     const std::string base_dir = std::filesystem::path(path).parent_path().string();
     const bool is_glb = bytes.size() >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "glTF");
     bool ok = false;
-    if (bytes.empty())
-        err = "file is empty";
-    else if (is_glb)
-        ok = loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
-                                         static_cast<unsigned>(bytes.size()), base_dir);
-    else
-        ok = loader.LoadASCIIFromString(&model, &err, &warn,
-                                        reinterpret_cast<const char*>(bytes.data()),
-                                        static_cast<unsigned>(bytes.size()), base_dir);
+    try { // tinygltf allocates what the file asks for; keep its failures in this boundary
+        if (is_glb)
+            ok = loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
+                                             static_cast<unsigned>(bytes.size()), base_dir);
+        else
+            ok = loader.LoadASCIIFromString(&model, &err, &warn,
+                                            reinterpret_cast<const char*>(bytes.data()),
+                                            static_cast<unsigned>(bytes.size()), base_dir);
+    } catch (const std::bad_alloc&) {
+        err = "out of memory while parsing (the file asks for more than this machine has)";
+    } catch (const std::exception& e) {
+        err = e.what();
+    }
     if (!ok) {
         result.error = path + ": " + (err.empty() ? "not a valid glTF file" : clean_message(err));
         return result;
@@ -111,6 +171,7 @@ LoadResult import_gltf(const std::string& path, const LoadOptions& options) {
         if (!detail::tangent_stage(*scene, options)) return detail::cancelled_result();
         detail::import_lights_cameras(ctx);
         detail::import_nodes_and_scenes(ctx);
+        warn_unsupported_content(ctx);
         const std::int32_t scene_index =
             options.scene_index >= 0 ? options.scene_index : std::max(model.defaultScene, 0);
         std::string select_error;
@@ -118,13 +179,32 @@ LoadResult import_gltf(const std::string& path, const LoadOptions& options) {
     } catch (const detail::ImportError& e) {
         result.error = path + ": " + e.what();
         return result;
-    } catch (const std::exception& e) { // allocation failures on absurd sizes and the like
+    } catch (const std::bad_alloc&) {
+        result.error = path + ": out of memory while importing";
+        return result;
+    } catch (const std::exception& e) { // library failures on odd input
         result.error = path + ": " + e.what();
         return result;
     }
     scene->process_ms = ms_since(t_process);
     result.scene = std::move(scene);
     return result;
+}
+
+} // namespace
+
+// The error boundary: whatever throws while one file is read, checked, parsed or
+// converted (allocation included) ends as "FILE: what went wrong", never an abort.
+LoadResult import_gltf(const std::string& path, const LoadOptions& options) {
+    LoadResult failed;
+    try {
+        return import_gltf_unguarded(path, options);
+    } catch (const std::bad_alloc&) {
+        failed.error = path + ": out of memory while loading";
+    } catch (const std::exception& e) {
+        failed.error = path + ": " + e.what();
+    }
+    return failed;
 }
 
 } // namespace sherpa

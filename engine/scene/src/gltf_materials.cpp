@@ -1,7 +1,10 @@
 // glTF samplers, images, textures and materials -> engine records.
+#include "accessor_reader.h"
 #include "import_context.h"
 #include "import_error.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include <tiny_gltf.h>
@@ -59,6 +62,41 @@ AlphaMode parse_alpha_mode(const std::string& s, const std::string& where) {
     fail(where + ".alphaMode: \"" + s + "\" is not OPAQUE, MASK or BLEND");
 }
 
+// normalTexture.scale multiplies the sampled normal's XY before normalisation: past
+// about 1000 the result no longer changes, while 1e30 overflows to a black surface.
+constexpr float kMaxNormalScale = 1000.0f;
+
+// Factors JSON can state but shading cannot use (1e39 reads as infinity, a huge
+// normal scale overflows): reset or clamped, with a warning naming the property.
+void check_factors(ImportContext& ctx, MaterialInstance& m, const std::string& where) {
+    const MaterialInstance defaults;
+    auto reset = [&](bool bad, auto& value, const auto& fallback, const char* name) {
+        if (!bad) return;
+        value = fallback;
+        ctx.warn(where + "." + name + ": not finite; the glTF default is used");
+    };
+    reset(!is_finite(glm::vec3(m.base_color_factor)) || !std::isfinite(m.base_color_factor.w),
+          m.base_color_factor, defaults.base_color_factor, "pbrMetallicRoughness.baseColorFactor");
+    reset(!is_finite(m.emissive_factor), m.emissive_factor, defaults.emissive_factor,
+          "emissiveFactor");
+    reset(!std::isfinite(m.metallic_factor), m.metallic_factor, defaults.metallic_factor,
+          "pbrMetallicRoughness.metallicFactor");
+    reset(!std::isfinite(m.roughness_factor), m.roughness_factor, defaults.roughness_factor,
+          "pbrMetallicRoughness.roughnessFactor");
+    reset(!std::isfinite(m.occlusion_strength), m.occlusion_strength, defaults.occlusion_strength,
+          "occlusionTexture.strength");
+    reset(!std::isfinite(m.emissive_strength), m.emissive_strength, defaults.emissive_strength,
+          "extensions.KHR_materials_emissive_strength.emissiveStrength");
+    if (!std::isfinite(m.normal_scale) || std::abs(m.normal_scale) > kMaxNormalScale) {
+        const float clamped = std::isnan(m.normal_scale)
+                                  ? 1.0f
+                                  : std::clamp(m.normal_scale, -kMaxNormalScale, kMaxNormalScale);
+        ctx.warn(where + ".normalTexture.scale: " + number_text(m.normal_scale) +
+                 " would overflow shading; clamped to " + number_text(clamped));
+        m.normal_scale = clamped;
+    }
+}
+
 } // namespace
 
 std::uint32_t ImportContext::default_material_id() {
@@ -93,8 +131,15 @@ void import_samplers_images_textures(ImportContext& ctx) {
         if (img.bufferView >= static_cast<int>(model.bufferViews.size()))
             fail("images[" + std::to_string(i) + "].bufferView: index " +
                  std::to_string(img.bufferView) + " out of range");
-        // The custom image loader (gltf_import.cpp) stored the encoded bytes undecoded.
-        rec.encoded = img.image;
+        // The custom image loader (gltf_import.cpp) stored the encoded bytes of URIs
+        // undecoded; bufferView bytes are taken here, range-checked.
+        if (img.bufferView >= 0) {
+            const auto view =
+                buffer_view_bytes(model, img.bufferView, "images[" + std::to_string(i) + "]");
+            rec.encoded.assign(view.begin(), view.end());
+        } else {
+            rec.encoded = img.image;
+        }
         rec.byte_size = rec.encoded.size();
         if (rec.mime_type.empty()) {
             const auto dot = img.uri.rfind('.');
@@ -151,6 +196,7 @@ void import_materials(ImportContext& ctx) {
         m.occlusion_strength = static_cast<float>(src.occlusionTexture.strength);
         m.alpha_cutoff = static_cast<float>(src.alphaCutoff);
         m.alpha_mode = parse_alpha_mode(src.alphaMode, where);
+        check_factors(ctx, m, where);
         m.double_sided = src.doubleSided;
         if (const auto it = src.extensions.find("KHR_materials_emissive_strength");
             it != src.extensions.end())

@@ -1,6 +1,8 @@
 #pragma once
 // Internal: state shared by the importer stages while one glTF file is converted.
+#include <set>
 #include <string>
+#include <vector>
 
 #include <sherpa/scene/scene.h>
 
@@ -11,13 +13,22 @@ class Model;
 namespace sherpa::detail {
 
 struct ImportContext {
+    ImportContext(const tinygltf::Model& m, Scene& s) : model(m), scene(s) {}
     const tinygltf::Model& model;
     Scene& scene;
     std::int32_t default_material = -1; // created on first use
+    std::set<int> range_checked;        // accessors whose declared min/max were checked
+    // Lights and cameras skipped with a warning (an odd object does not refuse the
+    // whole file): their records stay for the indices, nodes do not place them.
+    std::vector<std::uint8_t> light_skipped, camera_skipped;
 
     void warn(std::string message) { scene.warnings.push_back(std::move(message)); }
     // Index of Sherpa's default material, appending it the first time it is needed.
     std::uint32_t default_material_id();
+    // Compares accessor `index`'s decoded values with its declared min/max once per
+    // accessor; a violation becomes a warning and a Scene::range_violations entry.
+    void check_declared_range(int index, const std::vector<float>& values, std::uint32_t components,
+                              const std::string& where);
 };
 
 // Stages, in the order import_gltf() runs them. Each throws ImportError on bad input.

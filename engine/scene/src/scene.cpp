@@ -93,6 +93,15 @@ bool select_scene(Scene& scene, std::int32_t scene_index, std::string& error) {
                 inst.node_id = id;
                 inst.world = inst.prev_world = m;
                 inst.world_bounds = mesh.local_bounds.transformed(m);
+                // Finite matrix x finite positions can still exceed the float range:
+                // infinite bounds would print as null and frame nothing.
+                if (!is_finite(inst.world_bounds.min) || !is_finite(inst.world_bounds.max)) {
+                    error = "nodes[" + std::to_string(id) + "]" +
+                            (node.name.empty() ? "" : " \"" + node.name + "\"") +
+                            ": world bounds of its mesh overflow the float range (node "
+                            "transform x positions)";
+                    return false;
+                }
                 bounds.expand(inst.world_bounds);
                 instances.push_back(inst);
             }

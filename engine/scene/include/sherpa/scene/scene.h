@@ -145,6 +145,17 @@ struct SourceCounts {
                   images = 0, samplers = 0, lights = 0, cameras = 0, vertices = 0, triangles = 0;
 };
 
+// An accessor whose decoded data leaves the min/max the file declares for it. glTF
+// requires POSITION min/max (and any declared min/max) to be exact, so this is how
+// an inspector finds a corrupt buffer: the data is kept as it is, and reported.
+struct AccessorRangeViolation {
+    std::int32_t accessor = -1;
+    std::string where;                              // JSON path of the first use
+    std::vector<double> declared_min, declared_max; // after normalisation, like the data
+    std::vector<float> data_min, data_max;
+    std::uint32_t elements_outside = 0, elements = 0;
+};
+
 struct Scene {
     std::string source; // file path or builtin:... spec
     SourceCounts counts;
@@ -172,6 +183,7 @@ struct Scene {
     Aabb bounds;
 
     std::vector<std::string> warnings;
+    std::vector<AccessorRangeViolation> range_violations;
     double parse_ms = 0.0, process_ms = 0.0;
 
     // node x primitive pairs of the displayed scene, drawable or not (points,

@@ -1,0 +1,306 @@
+#include "gltf_validate.h"
+
+#include "checked_math.h"
+
+#include <cctype>
+#include <cstdio>
+#include <cstring>
+#include <optional>
+
+#include <nlohmann/json.hpp>
+
+namespace sherpa::detail {
+namespace {
+
+using nlohmann::json;
+using Bytes = std::span<const std::uint8_t>;
+
+bool starts_with(Bytes b, const char* magic, std::size_t at = 0) {
+    const std::size_t n = std::strlen(magic);
+    return b.size() >= at + n && std::memcmp(b.data() + at, magic, n) == 0;
+}
+
+// What a file that is not a JSON object starts with, for "not a glTF file: starts
+// with ...". Recognises the formats people most often mistake for glTF.
+std::string sniff(Bytes b) {
+    if (starts_with(b, "\x89PNG")) return "PNG image bytes";
+    if (starts_with(b, "\xFF\xD8\xFF")) return "JPEG image bytes";
+    if (starts_with(b, "RIFF") && starts_with(b, "WEBP", 8)) return "WebP image bytes";
+    if (starts_with(b, "\xABKTX 20\xBB")) return "KTX2 texture bytes";
+    if (starts_with(b, "DDS ")) return "DDS texture bytes";
+    if (starts_with(b, "PK\x03\x04")) return "ZIP archive bytes";
+    if (starts_with(b, "\x1F\x8B")) return "gzip-compressed bytes";
+    if (!b.empty() && b[0] == '<') return "'<' (XML or HTML text)";
+    char hex[40];
+    const std::size_t n = std::min<std::size_t>(b.size(), 4);
+    bool binary = false;
+    for (std::size_t i = 0; i < n; ++i) binary |= b[i] < 0x09 || b[i] == 0x7F;
+    if (!binary && !b.empty() && b[0] >= 0x20 && b[0] < 0x7F)
+        return std::string("text that is not a JSON object ('") + static_cast<char>(b[0]) + "')";
+    int len = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        len += std::snprintf(hex + len, sizeof(hex) - static_cast<std::size_t>(len), "%s%02X",
+                             i ? " " : "", b[i]);
+    return "binary data (" + std::string(hex, static_cast<std::size_t>(len)) + ")";
+}
+
+std::uint32_t le32(Bytes b, std::size_t at) {
+    return static_cast<std::uint32_t>(b[at]) | static_cast<std::uint32_t>(b[at + 1]) << 8 |
+           static_cast<std::uint32_t>(b[at + 2]) << 16 |
+           static_cast<std::uint32_t>(b[at + 3]) << 24;
+}
+
+// The JSON chunk of a .glb, or the problem with its header.
+std::string glb_json(Bytes b, Bytes& json_bytes) {
+    if (b.size() < 20)
+        return "binary glTF (.glb) is truncated: " + std::to_string(b.size()) +
+               " bytes, the header alone needs 20";
+    if (le32(b, 4) != 2)
+        return "binary glTF (.glb) version " + std::to_string(le32(b, 4)) +
+               "; Sherpa reads version 2";
+    if (le32(b, 8) > b.size())
+        return "binary glTF (.glb) is truncated: its header says " + std::to_string(le32(b, 8)) +
+               " bytes, the file has " + std::to_string(b.size());
+    if (!starts_with(b, "JSON", 16)) return "binary glTF (.glb) does not start with a JSON chunk";
+    const std::size_t length = le32(b, 12);
+    if (!range_fits(20, length, b.size()))
+        return "binary glTF (.glb) JSON chunk of " + std::to_string(length) +
+               " bytes runs past the end of the file";
+    json_bytes = b.subspan(20, length);
+    return {};
+}
+
+// Nesting depth, counted without recursion (strings skipped, escapes honoured).
+std::string check_depth(Bytes b) {
+    std::size_t depth = 0;
+    bool in_string = false;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        const std::uint8_t c = b[i];
+        if (in_string) {
+            if (c == '\\')
+                ++i;
+            else if (c == '"')
+                in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '{' || c == '[') {
+            if (++depth > kMaxJsonDepth)
+                return "JSON nests deeper than " + std::to_string(kMaxJsonDepth) +
+                       " levels (at byte " + std::to_string(i) +
+                       "); no glTF needs that, and parsing it would overflow the stack";
+        } else if ((c == '}' || c == ']') && depth > 0) {
+            --depth;
+        }
+    }
+    return {};
+}
+
+std::string describe(const json& v) {
+    std::string s = v.dump(-1, ' ', true, json::error_handler_t::replace);
+    return s.size() > 40 ? s.substr(0, 37) + "..." : s;
+}
+
+// Raw JSON property checks: the properties whose values index memory or other
+// arrays, which tinygltf would silently turn into 0 or -1 when mistyped.
+struct Checker {
+    std::string error;
+
+    // JSON value `v` at `path` as an integer in [lo, hi].
+    std::optional<std::uint64_t> value(const json& v, const std::string& path, std::uint64_t lo,
+                                       std::uint64_t hi) {
+        if (!error.empty()) return std::nullopt;
+        if (!v.is_number_unsigned()) { // nlohmann stores every integer >= 0 as unsigned
+            error = path + ": " + describe(v) + " is not a non-negative integer";
+            return std::nullopt;
+        }
+        const std::uint64_t x = v.get<std::uint64_t>();
+        if (x < lo || x > hi) {
+            error = path + ": " + std::to_string(x) + " is out of the range " + std::to_string(lo) +
+                    ".." + std::to_string(hi);
+            return std::nullopt;
+        }
+        return x;
+    }
+    // An optional (or required) integer property in [lo, hi].
+    std::optional<std::uint64_t> uint(const json& obj, const char* key, const std::string& where,
+                                      std::uint64_t lo, std::uint64_t hi, bool required = false) {
+        if (!error.empty() || !obj.is_object()) return std::nullopt;
+        const auto it = obj.find(key);
+        if (it != obj.end()) return value(*it, where + "." + key, lo, hi);
+        if (required) error = where + "." + key + ": required property is missing";
+        return std::nullopt;
+    }
+    std::optional<std::uint64_t> index(const json& obj, const char* key, const std::string& where,
+                                       bool required = false) {
+        return uint(obj, key, where, 0, 0x7FFFFFFF, required);
+    }
+    void index_array(const json& obj, const char* key, const std::string& where) {
+        if (!error.empty() || !obj.is_object() || !obj.contains(key)) return;
+        const json& a = obj[key];
+        if (!a.is_array()) {
+            error = where + "." + key + ": is not an array";
+            return;
+        }
+        for (std::size_t i = 0; i < a.size(); ++i)
+            value(a[i], where + "." + key + "[" + std::to_string(i) + "]", 0, 0x7FFFFFFF);
+    }
+    // Each element of top-level array `key`, with its JSON path.
+    template <typename F> void each(const json& root, const char* key, F&& f) {
+        if (!error.empty() || !root.contains(key)) return;
+        const json& a = root[key];
+        if (!a.is_array()) {
+            error = std::string(key) + ": is not an array";
+            return;
+        }
+        for (std::size_t i = 0; i < a.size() && error.empty(); ++i) {
+            const std::string where = std::string(key) + "[" + std::to_string(i) + "]";
+            if (!a[i].is_object())
+                error = where + ": is not a JSON object";
+            else
+                f(a[i], where);
+        }
+    }
+};
+
+// The problem with a buffer's relative-path URI, or "": tinygltf decodes percent
+// escapes leniently, so "%zz" and "%00" became a truncated or empty path.
+std::string uri_problem(const std::string& uri) {
+    if (uri.empty()) return "is empty";
+    if (uri.rfind("data:", 0) == 0) return {};
+    for (std::size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] != '%') continue;
+        if (i + 2 >= uri.size() || !std::isxdigit(static_cast<unsigned char>(uri[i + 1])) ||
+            !std::isxdigit(static_cast<unsigned char>(uri[i + 2])))
+            return "has a malformed percent escape at character " + std::to_string(i);
+        if (uri[i + 1] == '0' && uri[i + 2] == '0') return "contains a NUL byte (%00)";
+    }
+    return {};
+}
+
+constexpr std::uint64_t kMaxSafe = (std::uint64_t{1} << 53) - 1; // JSON's exact integers
+
+// asset.version and asset.minVersion: Sherpa reads glTF 2.0.
+std::string check_asset(const json& root) {
+    const auto asset = root.find("asset");
+    if (asset == root.end() || !asset->is_object())
+        return "no \"asset\" object: not a glTF 2.0 file";
+    const auto version = asset->find("version");
+    if (version == asset->end() || !version->is_string())
+        return "asset.version is missing: not a glTF 2.0 file";
+    const std::string v = version->get<std::string>();
+    if (v.rfind("2.", 0) != 0) return "asset.version \"" + v + "\": Sherpa reads glTF 2.x only";
+    const auto min_version = asset->find("minVersion");
+    if (min_version != asset->end() &&
+        (!min_version->is_string() || min_version->get<std::string>() != "2.0"))
+        return "asset.minVersion " + describe(*min_version) +
+               ": the file needs a newer glTF than 2.0, which Sherpa reads";
+    return {};
+}
+
+std::string check_properties(const json& root) {
+    Checker c;
+    std::vector<std::uint64_t> buffer_lengths;
+    c.each(root, "buffers", [&](const json& b, const std::string& w) {
+        buffer_lengths.push_back(c.uint(b, "byteLength", w, 1, kMaxSafe, true).value_or(0));
+        if (const auto uri = b.find("uri"); c.error.empty() && uri != b.end()) {
+            if (!uri->is_string())
+                c.error = w + ".uri: " + describe(*uri) + " is not a string";
+            else if (const std::string p = uri_problem(uri->get<std::string>()); !p.empty())
+                c.error = w + ".uri " + describe(*uri) + ": " + p;
+        }
+    });
+    c.each(root, "bufferViews", [&](const json& v, const std::string& w) {
+        const auto buffer = c.index(v, "buffer", w, true);
+        const auto offset = c.uint(v, "byteOffset", w, 0, kMaxSafe).value_or(0);
+        const auto length = c.uint(v, "byteLength", w, 1, kMaxSafe, true).value_or(0);
+        if (const auto stride = c.uint(v, "byteStride", w, 4, 252); stride && *stride % 4)
+            c.error = w + ".byteStride: " + std::to_string(*stride) + " is not a multiple of 4";
+        if (c.error.empty() && buffer && *buffer < buffer_lengths.size() &&
+            !range_fits(offset, length, buffer_lengths[*buffer]))
+            c.error = w + ": byteOffset " + std::to_string(offset) + " + byteLength " +
+                      std::to_string(length) + " exceeds buffers[" + std::to_string(*buffer) +
+                      "].byteLength " + std::to_string(buffer_lengths[*buffer]);
+    });
+    c.each(root, "accessors", [&](const json& a, const std::string& w) {
+        c.index(a, "bufferView", w);
+        c.uint(a, "byteOffset", w, 0, kMaxSafe);
+        c.uint(a, "componentType", w, 5120, 5126, true);
+        c.uint(a, "count", w, 0, kMaxSafe, true);
+        if (c.error.empty() && a.contains("sparse")) {
+            const json& s = a["sparse"];
+            const std::string sw = w + ".sparse";
+            c.uint(s, "count", sw, 1, kMaxSafe, true);
+            for (const char* part : {"indices", "values"}) {
+                if (!c.error.empty()) break;
+                if (!s.contains(part) || !s[part].is_object()) {
+                    c.error = sw + "." + part + ": required object is missing";
+                    break;
+                }
+                c.index(s[part], "bufferView", sw + "." + part, true);
+                c.uint(s[part], "byteOffset", sw + "." + part, 0, kMaxSafe);
+            }
+            if (c.error.empty())
+                c.uint(s["indices"], "componentType", sw + ".indices", 5121, 5125, true);
+        }
+    });
+    c.each(root, "images",
+           [&](const json& i, const std::string& w) { c.index(i, "bufferView", w); });
+    c.each(root, "textures", [&](const json& t, const std::string& w) {
+        c.index(t, "source", w);
+        c.index(t, "sampler", w);
+    });
+    c.each(root, "meshes", [&](const json& m, const std::string& w) {
+        if (!m.contains("primitives") || !m["primitives"].is_array()) {
+            c.error = w + ".primitives: required array is missing";
+            return;
+        }
+        for (std::size_t p = 0; p < m["primitives"].size() && c.error.empty(); ++p) {
+            const json& prim = m["primitives"][p];
+            const std::string pw = w + ".primitives[" + std::to_string(p) + "]";
+            c.index(prim, "indices", pw);
+            c.index(prim, "material", pw);
+            c.uint(prim, "mode", pw, 0, 6);
+            if (prim.contains("attributes") && prim["attributes"].is_object())
+                for (const auto& [name, value] : prim["attributes"].items())
+                    c.index(prim["attributes"], name.c_str(), pw + ".attributes");
+        }
+    });
+    c.each(root, "nodes", [&](const json& n, const std::string& w) {
+        for (const char* key : {"mesh", "camera", "skin"}) c.index(n, key, w);
+        c.index_array(n, "children", w);
+    });
+    c.each(root, "scenes",
+           [&](const json& s, const std::string& w) { c.index_array(s, "nodes", w); });
+    if (c.error.empty()) c.index(root, "scene", "(root)");
+    return c.error;
+}
+
+} // namespace
+
+std::string validate_gltf_bytes(std::span<const std::uint8_t> bytes) {
+    if (bytes.empty()) return "file is empty";
+    Bytes text = bytes;
+    if (starts_with(bytes, "glTF")) {
+        if (std::string e = glb_json(bytes, text); !e.empty()) return e;
+    } else {
+        std::size_t at = starts_with(bytes, "\xEF\xBB\xBF") ? 3 : 0; // UTF-8 byte order mark
+        while (at < bytes.size() && std::strchr(" \t\r\n", bytes[at]) && bytes[at]) ++at;
+        if (at == bytes.size()) return "file holds only white space";
+        if (bytes[at] != '{') return "not a glTF file: starts with " + sniff(bytes.subspan(at));
+    }
+    if (std::string e = check_depth(text); !e.empty()) return e;
+    json root;
+    try {
+        root = json::parse(text.begin(), text.end());
+    } catch (const json::parse_error& e) {
+        return "not valid JSON: parse error at byte " + std::to_string(e.byte) +
+               (e.id == 101 ? " (syntax error or invalid UTF-8)" : "");
+    } catch (const std::exception&) {
+        return "not valid JSON";
+    }
+    if (!root.is_object()) return "the top-level JSON value is not an object: not a glTF file";
+    if (std::string e = check_asset(root); !e.empty()) return e;
+    return check_properties(root);
+}
+
+} // namespace sherpa::detail

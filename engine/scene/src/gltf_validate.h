@@ -1,0 +1,21 @@
+#pragma once
+// Internal: checks on a glTF file's raw bytes and JSON before tinygltf parses it.
+// tinygltf trusts too much: its recursive parser overflows the stack on deep
+// nesting, it turns a negative or wrongly typed byteOffset into 0 (so a mesh reads
+// the wrong bytes silently), and a PNG renamed .gltf reaches the user as the JSON
+// library's raw exception. These checks refuse such files first, in words.
+#include <cstdint>
+#include <span>
+#include <string>
+
+namespace sherpa::detail {
+
+// Deepest JSON nesting Sherpa parses. Real glTF files nest about 10 levels (extras
+// a few more); tinygltf recurses per level and overflowed at ~20,000.
+inline constexpr std::size_t kMaxJsonDepth = 256;
+
+// The problem with a .gltf/.glb file's bytes, or an empty string when they may be
+// handed to tinygltf. Never throws.
+std::string validate_gltf_bytes(std::span<const std::uint8_t> bytes);
+
+} // namespace sherpa::detail

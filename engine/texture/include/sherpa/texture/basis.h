@@ -43,4 +43,11 @@ bool transcode_ktx2_basis(std::span<const std::uint8_t> ktx2, BasisTexture& out,
 // Same for a file; errors start with the file's path.
 bool read_basis_ktx2_file(const std::filesystem::path& path, BasisTexture& out, std::string& error);
 
+// The entry an importer calls for any image source: KTX2 bytes (detected by
+// their identifier, not by `name_hint`) are transcoded and their level 0 returned
+// (the texture pipeline builds its own mip chain); anything else goes to
+// decode_encoded_image. Errors start with `name_hint` for KTX2 input.
+bool decode_image_or_ktx2(std::span<const std::uint8_t> bytes, std::string_view name_hint,
+                          RgbaImage& out, std::string& error);
+
 } // namespace sherpa::tex

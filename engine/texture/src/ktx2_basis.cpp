@@ -163,15 +163,27 @@ bool parse_ktx2_basis(std::span<const std::uint8_t> in, Ktx2BasisFile& out, std:
 }
 
 namespace {
-bool decode_uastc_level(const Ktx2BasisFile& file, std::size_t index, RgbaImage& image,
-                        std::string& error) {
+// One Zstandard decompression context for all levels of a file: creating one
+// per call costs more than inflating a small level.
+struct ZstdContext {
+    ZSTD_DCtx* context = nullptr;
+    ~ZstdContext() { ZSTD_freeDCtx(context); }
+    ZstdContext() = default;
+    ZstdContext(const ZstdContext&) = delete;
+    ZstdContext& operator=(const ZstdContext&) = delete;
+};
+
+bool decode_uastc_level(const Ktx2BasisFile& file, std::size_t index, ZstdContext& zstd,
+                        RgbaImage& image, std::string& error) {
     const Ktx2BasisLevel& level = file.levels[index];
     std::vector<std::uint8_t> inflated;
     std::span<const std::uint8_t> blocks = level.bytes;
     if (file.scheme == BasisSupercompression::Zstandard) {
+        if (!zstd.context && !(zstd.context = ZSTD_createDCtx()))
+            return error = "out of memory for a Zstandard context", false;
         inflated.resize(level.uncompressed_length);
-        const std::size_t got =
-            ZSTD_decompress(inflated.data(), inflated.size(), blocks.data(), blocks.size());
+        const std::size_t got = ZSTD_decompressDCtx(zstd.context, inflated.data(), inflated.size(),
+                                                    blocks.data(), blocks.size());
         if (ZSTD_isError(got))
             return error = "level " + str(index) + ": Zstandard: " + ZSTD_getErrorName(got), false;
         if (got != inflated.size())
@@ -218,8 +230,9 @@ bool transcode_ktx2_basis(std::span<const std::uint8_t> ktx2, BasisTexture& out,
     out.srgb = file.srgb, out.has_alpha = file.has_alpha;
     if (file.payload == BasisPayload::Etc1s) return decode_etc1s_levels(file, out.levels, error);
     out.levels.resize(file.levels.size());
+    ZstdContext zstd;
     for (std::size_t l = 0; l < file.levels.size(); ++l)
-        if (!decode_uastc_level(file, l, out.levels[l], error)) return false;
+        if (!decode_uastc_level(file, l, zstd, out.levels[l], error)) return false;
     return true;
 }
 

@@ -172,16 +172,14 @@ void read_endpoints(BlockReader& in, const Range& r, unsigned count, std::uint8_
         }
         groups[g] = in.read(bits);
     }
+    // Each group's digits, lowest first (one division per digit, not per value).
+    std::uint8_t digits[20] = {};
     const unsigned base = r.trits ? 3 : 5;
-    for (unsigned i = 0; i < count; ++i) {
-        unsigned v = in.read(r.bits);
-        if (group) {
-            std::uint32_t digits = groups[i / group];
-            for (unsigned k = 0; k < i % group; ++k) digits /= base;
-            v |= (digits % base) << r.bits;
-        }
-        values[i] = static_cast<std::uint8_t>(v);
-    }
+    for (unsigned g = 0; g < group_count; ++g)
+        for (unsigned k = 0; k < group; ++k, groups[g] /= base)
+            digits[g * group + k] = static_cast<std::uint8_t>(groups[g] % base);
+    for (unsigned i = 0; i < count; ++i)
+        values[i] = static_cast<std::uint8_t>(in.read(r.bits) | (unsigned(digits[i]) << r.bits));
 }
 
 } // namespace

@@ -105,6 +105,9 @@ TEST_F(BasisuBadInput, HeaderAndDescriptorProblemsAreNamed) {
     b[dfd + 10] = 0xFF, b[dfd + 11] = 0xFF; // descriptorBlockSize past the DFD
     EXPECT_NE(error_of(b).find("descriptorBlockSize"), std::string::npos) << error_of(b);
     b = raw;
+    put32(b, 16, 4); // typeSize
+    EXPECT_NE(error_of(b).find("typeSize"), std::string::npos) << error_of(b);
+    b = raw;
     put32(b, 20, 1u << 20); // width beyond the supported maximum
     EXPECT_NE(error_of(b).find("exceeds"), std::string::npos) << error_of(b);
 }

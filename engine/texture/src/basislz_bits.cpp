@@ -38,7 +38,8 @@ bool Huffman::build(const std::vector<std::uint8_t>& lengths) {
         left = left * 2 - count_[l];
         if (left < 0) return false;
     }
-    if (left == (1 << 16)) return false; // no symbol at all
+    // A table without any code is legal until a symbol is read from it (an
+    // encoder may send one for a model it never uses); decode() then fails.
     std::uint16_t offset[18] = {};
     for (int l = 1; l <= 16; ++l) offset[l + 1] = offset[l] + count_[l];
     sorted_.assign(offset[17], 0);
@@ -100,7 +101,7 @@ bool read_huffman(BitReader& in, Huffman& out, std::string& error) {
             return error = "Huffman code length run overruns the table", false;
         lengths.insert(lengths.end(), run, value);
     }
-    if (!out.build(lengths)) return error = "over-subscribed or empty Huffman code", false;
+    if (!out.build(lengths)) return error = "over-subscribed Huffman code", false;
     return true;
 }
 

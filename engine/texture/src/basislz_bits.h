@@ -30,7 +30,7 @@ private:
 // increasing length, then symbol; the first bit read is the code's top bit.
 class Huffman {
 public:
-    // False when the lengths over-subscribe the code space or none is non-zero.
+    // False when the lengths over-subscribe the code space.
     bool build(const std::vector<std::uint8_t>& lengths);
     // Next symbol, or -1 for a code that no symbol has (or data overrun).
     int decode(BitReader& in) const;

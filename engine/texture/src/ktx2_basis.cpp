@@ -99,6 +99,7 @@ bool parse_ktx2_basis(std::span<const std::uint8_t> in, Ktx2BasisFile& out, std:
         return error = "vkFormat " + str(le(in, 12, 4)) +
                        " is not VK_FORMAT_UNDEFINED, so this is not a Basis Universal texture",
                false;
+    if (le(in, 16, 4) != 1) return error = "typeSize must be 1", false;
     const std::uint64_t width = le(in, 20, 4), height = le(in, 24, 4);
     if (width == 0 || height == 0) return error = "zero width or height (1D textures)", false;
     if (width > kMaxSide || height > kMaxSide)

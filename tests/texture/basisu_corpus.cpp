@@ -1,5 +1,6 @@
 #include "basisu_corpus.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -20,6 +21,8 @@ std::filesystem::path BasisCorpusFile::reference_alpha(unsigned level) const {
 }
 
 std::filesystem::path basis_corpus_dir() {
+    // SHERPA_BASISU_CORPUS: another corpus of the same layout (ad-hoc sweeps).
+    if (const char* dir = std::getenv("SHERPA_BASISU_CORPUS")) return dir;
     return std::filesystem::path(SHERPA_BASISU_CACHE) / "corpus";
 }
 

@@ -22,7 +22,7 @@ struct BasisCorpusFile {
     int reference_alpha_channel() const { return payload == "uastc" ? 0 : 1; }
 };
 
-// Directory of the corpus (SHERPA_BASISU_CACHE/corpus).
+// Directory of the corpus: $SHERPA_BASISU_CORPUS, else SHERPA_BASISU_CACHE/corpus.
 std::filesystem::path basis_corpus_dir();
 // Entries of the corpus manifest; empty with `error` when it is missing.
 std::vector<BasisCorpusFile> basis_corpus(std::string& error);

@@ -206,6 +206,11 @@ int run_render(Args args) {
             std::fprintf(stderr, "error: %s\n", error.c_str());
             return kExitLoadError;
         }
+        // The importer's warnings, as info prints them (skipped objects, repaired data,
+        // what the renderer leaves out: animations, morph targets, skins), then the
+        // texture pipeline's: nothing the file holds is dropped without a word.
+        for (const auto& w : loaded.scene->warnings)
+            std::fprintf(stderr, "warning: %s\n", w.c_str());
         for (const auto& w : renderer.scene()->warnings())
             std::fprintf(stderr, "warning: %s\n", w.c_str());
         if (!report_path.empty()) {

@@ -97,6 +97,16 @@ void decode_bc7_levels(tex::PreparedTexture& t) {
 
 } // namespace
 
+std::string_view to_string(MissingTextures m) {
+    return m == MissingTextures::Neutral ? "neutral" : "checker";
+}
+
+std::optional<MissingTextures> parse_missing_textures(std::string_view name) {
+    if (name == "checker") return MissingTextures::Checker;
+    if (name == "neutral") return MissingTextures::Neutral;
+    return std::nullopt;
+}
+
 tex::PipelineOptions texture_pipeline_options(const DeviceInfo& device,
                                               const TextureSettings& settings) {
     tex::PipelineOptions o;
@@ -137,18 +147,19 @@ prepare_scene_textures(const Scene& scene, const DeviceInfo& device,
                 decode_bc7_levels(t);
                 ++bc7;
             }
+        // Nothing for the user to act on: the pixels are the same. A notice, not a warning.
         if (bc7 > 0)
-            set->warnings.push_back(
+            set->notices.push_back(
                 std::to_string(bc7) + " BC7 texture(s) decoded to RGBA8 at upload: " + device.name +
-                " is a CPU device, where sampling BC7 costs several times RGBA8 (keep the blocks "
-                "with TextureSettings::decode_bc7_on_cpu = false or --keep-bc7)");
+                " is a CPU device, where sampling BC7 costs several times RGBA8");
     }
     return set;
 }
 
 SceneTextures::SceneTextures(ResourceManager& resources, BindlessTable& table, const Scene& scene,
-                             std::shared_ptr<const tex::PreparedTextureSet> prepared)
-    : resources_(resources), table_(table), prepared_(std::move(prepared)) {
+                             std::shared_ptr<const tex::PreparedTextureSet> prepared,
+                             MissingTextures missing)
+    : resources_(resources), table_(table), prepared_(std::move(prepared)), missing_(missing) {
     if (!prepared_) prepared_ = std::make_shared<const tex::PreparedTextureSet>();
     warnings_ = prepared_->warnings;
     try {
@@ -240,12 +251,20 @@ std::uint32_t SceneTextures::slot(std::int32_t texture, TextureRole role) const 
 
 GPUMaterialData SceneTextures::material(const MaterialInstance& m) const {
     GPUMaterialData g = tex::resolve_material(m, *prepared_, slots_);
+    // A present slot whose texture failed draws the checker (colour slots) when asked.
+    auto failed = [&](const TextureSlot& s, TextureRole role) {
+        const std::int32_t i = s.present() ? prepared_->find(s.texture, role) : -1;
+        return i >= 0 && prepared_->textures[std::size_t(i)].failed;
+    };
     auto field = [&](std::uint32_t& value, const TextureSlot& s, TextureRole role,
                      std::uint32_t fallback) {
         if (s.present())
             if (auto it = extra_slots_.find({s.texture, role}); it != extra_slots_.end())
                 value = it->second;
-        if (value == kTextureSentinel) value = fallback;
+        if (value != kTextureSentinel) return;
+        value = role == kRoleColor && missing_ == MissingTextures::Checker && failed(s, role)
+                    ? kCheckerTexture
+                    : fallback;
     };
     // Emissive without a texture is the factor alone (glTF): white when it emits.
     const bool emits = glm::any(glm::greaterThan(m.emissive_factor, glm::vec3(0.0f)));

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <thread>
 
+#include <sherpa/scene/image_sources.h>
 #include <sherpa/texture/image.h>
 #include <sherpa/texture/mips.h>
 #include <sherpa/texture/quality.h>
@@ -104,6 +105,13 @@ void compress(PreparedTexture& t, const TextureUse& use, const RgbaImage& source
         t.psnr = measure_psnr(use.role, source, t.levels[0], t.format);
 }
 
+// "FILE (material 'M' baseColorTexture; material 'N' emissiveTexture)".
+std::string located_with_uses(const PreparedTexture& t) {
+    std::string s = t.location;
+    for (std::size_t i = 0; i < t.uses.size(); ++i) s += (i == 0 ? " (used by " : "; ") + t.uses[i];
+    return t.uses.empty() ? s : s + ")";
+}
+
 } // namespace
 
 std::string texture_recipe(const TextureUse& use, const PipelineOptions& opt) {
@@ -120,6 +128,27 @@ std::string texture_recipe(const TextureUse& use, const PipelineOptions& opt) {
         r += buf;
     }
     return r;
+}
+
+std::vector<ImageProblem> find_image_problems(const Scene& scene) {
+    std::vector<ImageProblem> problems;
+    for (std::size_t i = 0; i < scene.images.size(); ++i) {
+        const ImageRecord& img = scene.images[i];
+        const auto index = static_cast<std::int32_t>(i);
+        ImageProblem p{index,
+                       CacheState::Missing,
+                       image_location(scene, index),
+                       {},
+                       image_slot_uses(scene, index)};
+        if (!image_is_missing(img)) {
+            if (img.encoded.empty() ||
+                probe_encoded_image(img.encoded, decoder_hint(img), p.reason))
+                continue;
+            p.state = CacheState::Undecodable;
+        }
+        problems.push_back(std::move(p));
+    }
+    return problems;
 }
 
 PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& opt) {
@@ -140,8 +169,19 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
         t.format = output_format(use.role, opt.device_supports_bc);
         t.source_hash = source_hash(img);
         t.recipe = texture_recipe(use, opt);
+        t.location = image_location(scene, use.image);
+        t.uses = image_slot_uses(scene, use.image);
         const Hash128 key = cache_key(t.source_hash, t.recipe);
         t.state = CacheState::Miss;
+        if (image_is_missing(img)) {
+            // Nothing to look up or decode: say what is missing and who reads it.
+            t.state = CacheState::Missing;
+            t.failed = true;
+            t.note = "missing: " + t.location;
+            set.warnings.push_back("texture file missing: " + located_with_uses(t));
+            set.textures.push_back(std::move(t));
+            continue;
+        }
         if (cache) {
             t.cache_file = cache->file_for(key);
             CacheLookup found = cache->load(key, t.source_hash, t.recipe);
@@ -201,8 +241,10 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
         PreparedTexture& t = set.textures[misses[i]];
         if (decoded[i].empty()) {
             t.failed = true;
-            t.note = errors[i];
-            set.warnings.push_back(t.source + ": " + errors[i]);
+            t.state = CacheState::Undecodable;
+            t.note = "undecodable: " + errors[i];
+            set.warnings.push_back("texture undecodable: " + located_with_uses(t) + ": " +
+                                   errors[i]);
             continue;
         }
         const TextureUse& use = uses[misses[i]];

@@ -34,8 +34,7 @@ void print_text(const Scene& s, const std::vector<tex::ImageProblem>& problems) 
     std::printf("  vertex bytes: %llu for used streams vs %llu unified (56 B/vertex)\n",
                 (unsigned long long)usage.used_bytes, (unsigned long long)usage.unified_bytes);
     std::printf("  timings: parse %.2f ms, process %.2f ms\n", s.parse_ms, s.process_ms);
-    for (const auto& p : problems)
-        std::printf("  warning: texture %s\n", image_problem_text(p).c_str());
+    for (const auto& p : problems) std::printf("  warning: texture %s\n", tex::describe(p).c_str());
     for (const auto& w : s.warnings) std::printf("  warning: %s\n", w.c_str());
 }
 

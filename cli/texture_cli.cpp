@@ -125,15 +125,4 @@ nlohmann::json image_problem_json(const tex::ImageProblem& p) {
     return j;
 }
 
-std::string image_problem_text(const tex::ImageProblem& p) {
-    std::string s = std::string(tex::to_string(p.state)) + ": " + p.location;
-    for (std::size_t i = 0; i < p.uses.size(); ++i) s += (i == 0 ? " (used by " : "; ") + p.uses[i];
-    if (!p.uses.empty())
-        s += ")";
-    else
-        s += " (used by no material)";
-    if (!p.reason.empty()) s += ": " + p.reason;
-    return s;
-}
-
 } // namespace sherpa::cli

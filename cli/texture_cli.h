@@ -60,8 +60,5 @@ OptionMatch parse_texture_option(Args args, std::size_t& i, TextureCliOptions& o
 nlohmann::json texture_json(const tex::PreparedTexture& t);
 // An image that cannot become a texture, as `info --json` prints it.
 nlohmann::json image_problem_json(const tex::ImageProblem& p);
-// "missing: FILE (used by material 'M' baseColorTexture)" or "undecodable: FILE
-// (used by ...): REASON", one line.
-std::string image_problem_text(const tex::ImageProblem& p);
 
 } // namespace sherpa::cli

@@ -124,19 +124,21 @@ prepare_scene_textures(const Scene& scene, const DeviceInfo& device,
                        const TextureSettings& settings) {
     auto set = std::make_shared<tex::PreparedTextureSet>(
         tex::prepare_textures(scene, texture_pipeline_options(device, settings)));
-    // Say why there is no BC: the device, or the settings.
+    // Say why there is no BC: the device (a warning: textures cost 4x the memory and
+    // no setting helps), or the settings (a notice: the user asked for it).
     if (!set->textures.empty() && (!device.bc_textures || settings.force_rgba8)) {
         std::erase_if(set->warnings, [](const std::string& w) {
             return w.starts_with("device cannot sample BC formats");
         });
-        set->warnings.insert(
-            set->warnings.begin(),
-            !device.bc_textures
-                ? device.name + " cannot sample BC7/BC5 (textureCompressionBC or format "
-                                "features missing): textures fall back to uncompressed RGBA8"
-                : "RGBA8 forced by the texture settings: textures are uploaded uncompressed "
-                  "although " +
-                      device.name + " samples BC7/BC5");
+        if (!device.bc_textures)
+            set->warnings.insert(set->warnings.begin(),
+                                 device.name +
+                                     " cannot sample BC7/BC5 (textureCompressionBC or format "
+                                     "features missing): textures fall back to uncompressed RGBA8");
+        else
+            set->notices.push_back("RGBA8 forced (--no-bc): textures are uploaded uncompressed "
+                                   "although " +
+                                   device.name + " samples BC7/BC5");
     }
     if (device.is_cpu() && settings.decode_bc7_on_cpu) {
         // One texture at a time: decode_image spreads its block rows over the cores.

@@ -2,6 +2,7 @@
 // mip generation and block compression of the misses, then cache writes.
 #include <sherpa/texture/texture_pipeline.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -105,11 +106,23 @@ void compress(PreparedTexture& t, const TextureUse& use, const RgbaImage& source
         t.psnr = measure_psnr(use.role, source, t.levels[0], t.format);
 }
 
-// "FILE (material 'M' baseColorTexture; material 'N' emissiveTexture)".
-std::string located_with_uses(const PreparedTexture& t) {
-    std::string s = t.location;
-    for (std::size_t i = 0; i < t.uses.size(); ++i) s += (i == 0 ? " (used by " : "; ") + t.uses[i];
-    return t.uses.empty() ? s : s + ")";
+// One warning per image, not per role it is used in.
+void add_once(std::vector<std::string>& warnings, std::string warning) {
+    if (std::find(warnings.begin(), warnings.end(), warning) == warnings.end())
+        warnings.push_back(std::move(warning));
+}
+
+// A warning for a texture whose image failed (t.state Missing or Undecodable).
+std::string failure_warning(const PreparedTexture& t, std::string reason) {
+    return "texture " +
+           describe(ImageProblem{t.image, t.state, t.location, std::move(reason), t.uses});
+}
+
+// decode_encoded_image names the image by its decoder hint ("image.png: ..."); the
+// warning names the file already.
+std::string without_hint(const ImageRecord& img, const std::string& error) {
+    const std::string prefix = decoder_hint(img) + ": ";
+    return error.starts_with(prefix) ? error.substr(prefix.size()) : error;
 }
 
 } // namespace
@@ -128,6 +141,14 @@ std::string texture_recipe(const TextureUse& use, const PipelineOptions& opt) {
         r += buf;
     }
     return r;
+}
+
+std::string describe(const ImageProblem& p) {
+    std::string s = std::string(to_string(p.state)) + ": " + p.location;
+    for (std::size_t i = 0; i < p.uses.size(); ++i) s += (i == 0 ? " (used by " : "; ") + p.uses[i];
+    s += p.uses.empty() ? " (used by no material)" : ")";
+    if (!p.reason.empty()) s += ": " + p.reason;
+    return s;
 }
 
 std::vector<ImageProblem> find_image_problems(const Scene& scene) {
@@ -178,7 +199,7 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
             t.state = CacheState::Missing;
             t.failed = true;
             t.note = "missing: " + t.location;
-            set.warnings.push_back("texture file missing: " + located_with_uses(t));
+            add_once(set.warnings, failure_warning(t, {}));
             set.textures.push_back(std::move(t));
             continue;
         }
@@ -242,9 +263,9 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
         if (decoded[i].empty()) {
             t.failed = true;
             t.state = CacheState::Undecodable;
-            t.note = "undecodable: " + errors[i];
-            set.warnings.push_back("texture undecodable: " + located_with_uses(t) + ": " +
-                                   errors[i]);
+            const std::string reason = without_hint(scene.images[std::size_t(t.image)], errors[i]);
+            t.note = "undecodable: " + reason;
+            add_once(set.warnings, failure_warning(t, reason));
             continue;
         }
         const TextureUse& use = uses[misses[i]];

@@ -118,6 +118,9 @@ struct ImageProblem {
     std::string reason;                     // the decoder's words (Undecodable)
     std::vector<std::string> uses;          // image_slot_uses()
 };
+// "missing: FILE (used by material 'M' baseColorTexture, occlusionTexture)", or
+// "undecodable: FILE (used by ...): REASON"; one line.
+std::string describe(const ImageProblem& problem);
 // Every image of `scene` (used or not) that is missing or whose header does not
 // decode, in image order.
 std::vector<ImageProblem> find_image_problems(const Scene& scene);

@@ -1,6 +1,7 @@
 // sherpa-cli info SCENE [--json] [--scene N]
 #include "cli_common.h"
 #include "scene_json.h"
+#include "texture_cli.h"
 
 #include <sherpa/scene/scene_loader.h>
 
@@ -11,7 +12,7 @@
 namespace sherpa::cli {
 namespace {
 
-void print_text(const Scene& s) {
+void print_text(const Scene& s, const std::vector<tex::ImageProblem>& problems) {
     const SourceCounts& c = s.counts;
     const UsageReport usage = build_usage_report(s);
     std::printf("%s\n", s.source.c_str());
@@ -33,6 +34,7 @@ void print_text(const Scene& s) {
     std::printf("  vertex bytes: %llu for used streams vs %llu unified (56 B/vertex)\n",
                 (unsigned long long)usage.used_bytes, (unsigned long long)usage.unified_bytes);
     std::printf("  timings: parse %.2f ms, process %.2f ms\n", s.parse_ms, s.process_ms);
+    for (const auto& p : problems) std::printf("  warning: texture %s\n", tex::describe(p).c_str());
     for (const auto& w : s.warnings) std::printf("  warning: %s\n", w.c_str());
 }
 
@@ -75,10 +77,15 @@ int run_info(Args args) {
         std::fprintf(stderr, "error: %s\n", r.error.c_str());
         return kExitLoadError;
     }
-    if (as_json)
-        std::cout << scene_info_json(*r.scene).dump(2) << "\n";
-    else
-        print_text(*r.scene);
+    const std::vector<tex::ImageProblem> problems = tex::find_image_problems(*r.scene);
+    if (as_json) {
+        nlohmann::json j = scene_info_json(*r.scene);
+        j["image_problems"] = nlohmann::json::array();
+        for (const auto& p : problems) j["image_problems"].push_back(image_problem_json(p));
+        std::cout << j.dump(2) << "\n";
+    } else {
+        print_text(*r.scene, problems);
+    }
     return kExitOk;
 }
 

@@ -181,9 +181,11 @@ int run_render(Args args) {
         gpu::Renderer renderer(context);
         // Textures are prepared (cache lookups, decode, compression) before the upload,
         // as a loader thread would, so the report can time the two apart.
+        const gpu::TextureSettings texture_settings = texture_options.gpu_settings();
+        renderer.set_texture_settings(texture_settings); // how missing textures are drawn
         auto start = std::chrono::steady_clock::now();
-        const auto textures = gpu::prepare_scene_textures(*loaded.scene, context.info(),
-                                                          texture_options.gpu_settings());
+        const auto textures =
+            gpu::prepare_scene_textures(*loaded.scene, context.info(), texture_settings);
         run.timing.texture_prepare_ms = ms_since(start);
         start = std::chrono::steady_clock::now();
         renderer.load(*loaded.scene, textures,

@@ -98,6 +98,8 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
         j["triangles"] = scene->triangle_count();
         j["draw_groups"] = scene->groups().size();
         j["warnings"] = scene->warnings();
+        // What needs no action (how textures were stored for this device).
+        j["notices"] = scene->textures().prepared().notices;
         j["textures"] = textures_json(scene->textures(), run.cache_dir);
     }
     j["load_ms"] = {{"scene_load", run.timing.scene_load_ms},

@@ -24,6 +24,7 @@ gpu::TextureSettings TextureCliOptions::gpu_settings() const {
     s.quality = quality;
     s.force_rgba8 = no_bc;
     s.decode_bc7_on_cpu = !keep_bc7;
+    s.missing = missing;
     return s;
 }
 
@@ -40,6 +41,14 @@ OptionMatch parse_texture_option(Args args, std::size_t& i, TextureCliOptions& o
         out.no_bc = true;
     } else if (a == "--keep-bc7") {
         out.keep_bc7 = true;
+    } else if (a == "--missing-textures") {
+        const auto v = value();
+        const auto mode = v ? gpu::parse_missing_textures(*v) : std::nullopt;
+        if (!mode) {
+            error = "--missing-textures needs checker or neutral";
+            return OptionMatch::Bad;
+        }
+        out.missing = *mode;
     } else if (a == "--cache-dir") {
         const auto v = value();
         if (!v || v->empty()) {
@@ -99,7 +108,20 @@ nlohmann::json texture_json(const tex::PreparedTexture& t) {
          t.psnr && std::isfinite(*t.psnr) ? nlohmann::json(*t.psnr) : nlohmann::json(nullptr)},
     };
     if (!t.note.empty()) j["note"] = t.note;
-    if (t.failed) j["failed"] = true;
+    if (t.failed) {
+        j["failed"] = true;
+        j["location"] = t.location;
+        j["uses"] = t.uses;
+    }
+    return j;
+}
+
+nlohmann::json image_problem_json(const tex::ImageProblem& p) {
+    nlohmann::json j = {{"image", p.image},
+                        {"state", tex::to_string(p.state)},
+                        {"location", p.location},
+                        {"uses", p.uses}};
+    if (!p.reason.empty()) j["reason"] = p.reason;
     return j;
 }
 

@@ -17,7 +17,7 @@ namespace sherpa::cli {
 
 inline constexpr const char* kTextureOptionsSynopsis =
     "[--cache-dir DIR] [--cache-cap-mb N] [--quality N] [--no-cache] [--no-bc]"
-    " [--keep-bc7]";
+    " [--keep-bc7] [--missing-textures checker|neutral]";
 inline constexpr const char* kTextureOptionsHelp =
     "  --cache-dir DIR    texture cache (default $XDG_CACHE_HOME/sherpa/textures, else\n"
     "                     ~/.cache/sherpa/textures)\n"
@@ -26,7 +26,11 @@ inline constexpr const char* kTextureOptionsHelp =
     "  --quality N        BC7 quality level 0 (fastest) .. 4 (best); default 1\n"
     "  --no-bc            upload RGBA8 as if the device could not sample BC formats\n"
     "  --keep-bc7         sample BC7 blocks on CPU devices too (by default they are\n"
-    "                     decoded to RGBA8 at upload there: sampling BC7 is slow)\n";
+    "                     decoded to RGBA8 at upload there: sampling BC7 is slow)\n"
+    "  --missing-textures checker|neutral\n"
+    "                     render only: draw material slots whose image is missing or\n"
+    "                     undecodable as a magenta/black checker in colour slots\n"
+    "                     (default), or as the glTF defaults (white, flat normal)\n";
 
 struct TextureCliOptions {
     bool use_cache = true;
@@ -35,6 +39,7 @@ struct TextureCliOptions {
     int quality = tex::kBc7DefaultLevel;
     bool no_bc = false;
     bool keep_bc7 = false; // render only: no BC7 decoding at upload on CPU devices
+    gpu::MissingTextures missing = gpu::MissingTextures::Checker; // render only
 
     // The directory in use: nullopt with --no-cache, else --cache-dir or the default.
     std::optional<std::filesystem::path> resolved_cache_dir() const;
@@ -53,5 +58,7 @@ OptionMatch parse_texture_option(Args args, std::size_t& i, TextureCliOptions& o
 
 // One prepared texture as `textures --json` and `render --report` print it.
 nlohmann::json texture_json(const tex::PreparedTexture& t);
+// An image that cannot become a texture, as `info --json` prints it.
+nlohmann::json image_problem_json(const tex::ImageProblem& p);
 
 } // namespace sherpa::cli

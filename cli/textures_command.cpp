@@ -85,7 +85,8 @@ int run_textures(Args args) {
                     std::string(tex::role_name(t.role)).c_str(),
                     std::string(tex::vk_format_name(t.format)).c_str(), size.c_str(),
                     t.levels.size(), std::string(tex::to_string(t.state)).c_str(), t.decode_ms,
-                    t.mip_ms + t.encode_ms, psnr, t.source.c_str());
+                    t.mip_ms + t.encode_ms, psnr,
+                    t.failed ? t.location.c_str() : t.source.c_str()); // failed: the full path
     }
     return kExitOk;
 }

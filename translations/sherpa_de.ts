@@ -665,6 +665,14 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <source>Texture %1: %2 cache files deleted; reloading to compress it again.</source>
         <translation>Textur %1: %2 Cache-Dateien gelöscht; die Szene wird neu geladen und die Textur neu komprimiert.</translation>
     </message>
+    <message>
+        <source>&amp;Missing Textures as Checker</source>
+        <translation>&amp;Fehlende Texturen als Schachbrett</translation>
+    </message>
+    <message>
+        <source>Draw material slots whose image is missing or undecodable as a magenta/black checker (colour slots); off: the glTF defaults (white, flat normal)</source>
+        <translation>Materialslots, deren Bild fehlt oder nicht dekodierbar ist, als Magenta/Schwarz-Schachbrett zeichnen (Farbslots); aus: die glTF-Standardwerte (weiß, flache Normale)</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -1041,6 +1049,10 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>fallback</source>
         <translation>Ersatz (RGBA8)</translation>
+    </message>
+    <message>
+        <source>missing: %1</source>
+        <translation>fehlt: %1</translation>
     </message>
 </context>
 <context>

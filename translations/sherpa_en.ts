@@ -665,6 +665,14 @@ The current scene is kept.</translation>
         <source>Texture %1: %2 cache files deleted; reloading to compress it again.</source>
         <translation>Texture %1: %2 cache files deleted; reloading to compress it again.</translation>
     </message>
+    <message>
+        <source>&amp;Missing Textures as Checker</source>
+        <translation>&amp;Missing Textures as Checker</translation>
+    </message>
+    <message>
+        <source>Draw material slots whose image is missing or undecodable as a magenta/black checker (colour slots); off: the glTF defaults (white, flat normal)</source>
+        <translation>Draw material slots whose image is missing or undecodable as a magenta/black checker (colour slots); off: the glTF defaults (white, flat normal)</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -1041,6 +1049,10 @@ The current scene is kept.</translation>
     <message>
         <source>fallback</source>
         <translation>fallback</translation>
+    </message>
+    <message>
+        <source>missing: %1</source>
+        <translation>missing: %1</translation>
     </message>
 </context>
 <context>

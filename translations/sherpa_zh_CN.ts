@@ -665,6 +665,14 @@ The current scene is kept.</source>
         <source>Texture %1: %2 cache files deleted; reloading to compress it again.</source>
         <translation>纹理 %1：已删除 %2 个缓存文件；正在重新加载以重新压缩。</translation>
     </message>
+    <message>
+        <source>&amp;Missing Textures as Checker</source>
+        <translation>缺失纹理显示为棋盘格(&amp;M)</translation>
+    </message>
+    <message>
+        <source>Draw material slots whose image is missing or undecodable as a magenta/black checker (colour slots); off: the glTF defaults (white, flat normal)</source>
+        <translation>将图像缺失或无法解码的材质槽绘制为品红/黑色棋盘格(颜色槽);关闭时使用 glTF 默认值(白色、平坦法线)</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -1041,6 +1049,10 @@ The current scene is kept.</source>
     <message>
         <source>fallback</source>
         <translation>回退（RGBA8）</translation>
+    </message>
+    <message>
+        <source>missing: %1</source>
+        <translation>缺失:%1</translation>
     </message>
 </context>
 <context>

@@ -81,6 +81,12 @@ void GpuViewport::setTextureCache(const QString& directory, const QString& quali
     impl_->renderer->set_texture_settings(t);
 }
 
+void GpuViewport::setMissingTexturesChecker(bool checker) {
+    gpu::TextureSettings t = impl_->renderer->texture_settings();
+    t.missing = checker ? gpu::MissingTextures::Checker : gpu::MissingTextures::Neutral;
+    impl_->renderer->set_texture_settings(t);
+}
+
 TexturePreparer GpuViewport::texturePreparer() const {
     return [device = impl_->context->info(), settings = impl_->renderer->texture_settings()](
                const Scene& scene, const ProgressCallback& progress, const CancelToken* cancel) {

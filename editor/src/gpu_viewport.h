@@ -49,6 +49,9 @@ public:
     // Where setScene() finds and stores compressed textures, and the BC7 quality
     // ("fast", "balanced" or "best", as in the settings); an empty directory: no cache.
     void setTextureCache(const QString& directory, const QString& quality);
+    // Material slots whose texture is missing or undecodable: a magenta/black checker
+    // in colour slots (true), or the glTF defaults (false). Applies at the next setScene().
+    void setMissingTexturesChecker(bool checker);
     // Prepares a scene's textures for this device with the texture cache settings
     // of the moment; the callable copies what it needs and may run on any thread
     // (the scene loader's), reporting per texture and stopping when cancelled.

@@ -25,6 +25,7 @@ QString GpuViewport::deviceName() const {
     return {};
 }
 void GpuViewport::setTextureCache(const QString&, const QString&) {}
+void GpuViewport::setMissingTexturesChecker(bool) {}
 TexturePreparer GpuViewport::texturePreparer() const {
     return {};
 }

@@ -143,9 +143,11 @@ void MainWindow::createRenderer() {
 void MainWindow::uploadScene() {
     try {
         gpu_->setTextureCache(settings_.cacheDirectory(), settings_.textureQuality());
+        gpu_->setMissingTexturesChecker(a_->missing_checker->isChecked());
         const SceneExtras* extras = context_.extras();
         gpu_->setScene(context_.scene(), extras ? extras->textures : nullptr);
         textures_->setPrepared(gpu_->preparedTextures());
+        logTextureMessages();
         textures_->setGpuBytes(static_cast<std::int64_t>(gpu_->textureBytes()));
     } catch (const std::exception& e) {
         log_->append(LogDock::Level::Error,

@@ -109,6 +109,8 @@ private:
     void createDocks();
     void createRenderer();
     void uploadScene();
+    // The uploaded textures' warnings (missing, undecodable...) and notices, once per set.
+    void logTextureMessages();
     bool renderFrame();
     void connectActions();
     void onLoaded(const QString& spec, const LoadOutcome& outcome, double ms);
@@ -127,6 +129,7 @@ private:
     QVulkanInstance* vulkan_ = nullptr;
     std::unique_ptr<GpuViewport> gpu_; // null without a usable Vulkan device
     bool gpu_failed_ = false;          // a frame threw: stop drawing, say so once
+    std::weak_ptr<const tex::PreparedTextureSet> logged_textures_; // logTextureMessages()
     ViewportWindow* viewport_ = nullptr;
     QWidget* viewport_container_ = nullptr;
     SceneTreeDock* scene_tree_ = nullptr;

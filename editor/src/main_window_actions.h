@@ -17,8 +17,8 @@ struct MainWindow::Actions {
     QToolBar* toolbar;
     QToolButton* view_button;
     QAction *open, *reload, *close, *quit, *frame_all, *frame_selection, *fly, *reset_layout;
-    QAction *freeze, *box_colouring, *cpu_path, *gpu_path, *cache_dir, *about, *about_qt,
-        *clear_recent;
+    QAction *freeze, *box_colouring, *missing_checker, *cpu_path, *gpu_path, *cache_dir, *about,
+        *about_qt, *clear_recent;
     QActionGroup *view_group, *method_group, *language_group, *quality_group;
     std::vector<QAction*> view_actions, overlay_actions, method_actions, language_actions,
         quality_actions, builtin_actions;

@@ -59,6 +59,9 @@ void MainWindow::createActions() {
     a.freeze->setCheckable(true);
     a.box_colouring = new QAction(this);
     a.box_colouring->setCheckable(true);
+    a.missing_checker = new QAction(this);
+    a.missing_checker->setCheckable(true);
+    a.missing_checker->setChecked(true);
     a.cpu_path = new QAction(this);
     a.cpu_path->setCheckable(true);
     a.cpu_path->setChecked(true);
@@ -133,6 +136,10 @@ void MainWindow::createActions() {
     connect(a.fly, &QAction::toggled, viewport_, &ViewportWindow::setFlyMode);
     connect(a.freeze, &QAction::toggled, culling_, &CullingMonitor::setFrozen);
     connect(a.box_colouring, &QAction::toggled, viewport_, &ViewportWindow::scheduleFrame);
+    // Materials resolve failed textures at upload: upload again (uploadScene reads it).
+    connect(a.missing_checker, &QAction::toggled, this, [this] {
+        if (gpu_) uploadScene();
+    });
     connect(a.gpu_path, &QAction::toggled, culling_, &CullingMonitor::setGpuPath);
     connect(culling_, &CullingMonitor::updated, viewport_, &ViewportWindow::scheduleFrame);
     connect(a.reset_layout, &QAction::triggered, this, [this] {
@@ -180,6 +187,7 @@ void MainWindow::createMenus() {
     a.view->addAction(a.frame_all);
     a.view->addAction(a.frame_selection);
     a.view->addAction(a.fly);
+    a.view->addAction(a.missing_checker);
     a.cameras = a.view->addMenu(QString());
     connect(a.cameras, &QMenu::aboutToShow, this, [this] {
         Actions& acts = *a_;
@@ -280,6 +288,10 @@ void MainWindow::retranslate() {
     a.culling->setTitle(tr("&Culling"));
     a.freeze->setText(tr("&Freeze Culling Camera"));
     a.box_colouring->setText(tr("&Colour Boxes by Result"));
+    a.missing_checker->setText(tr("&Missing Textures as Checker"));
+    a.missing_checker->setToolTip(
+        tr("Draw material slots whose image is missing or undecodable as a magenta/black "
+           "checker (colour slots); off: the glTF defaults (white, flat normal)"));
     a.cull_method->setTitle(tr("&Method"));
     const QString methods[] = {tr("Bounding sphere"), tr("P-vertex (AABB)"), tr("Exact (SAT)")};
     for (std::size_t i = 0; i < a.method_actions.size(); ++i)

@@ -41,4 +41,15 @@ void MainWindow::recompressTexture(int texture) {
     reloadScene();
 }
 
+void MainWindow::logTextureMessages() {
+    const PreparedTextures prepared = gpu_ ? gpu_->preparedTextures() : nullptr;
+    // uploadScene() runs again for the same set (settings toggles): say it once.
+    if (!prepared || prepared == logged_textures_.lock()) return;
+    logged_textures_ = prepared;
+    for (const std::string& w : prepared->warnings)
+        log_->append(LogDock::Level::Warning, QString::fromStdString(w));
+    for (const std::string& n : prepared->notices)
+        log_->append(LogDock::Level::Info, QString::fromStdString(n));
+}
+
 } // namespace sherpa::editor

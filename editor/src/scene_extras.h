@@ -13,6 +13,7 @@
 
 namespace sherpa::tex {
 struct PreparedTextureSet;
+struct PreparedTexture;
 }
 
 namespace sherpa::editor {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <set>
 
+#include <sherpa/scene/image_sources.h>
 #include <sherpa/texture/texture_pipeline.h>
 
 #include "format_values.h"
@@ -28,17 +29,20 @@ void TextureTableModel::setPrepared(PreparedTextures prepared) {
     endResetModel();
 }
 
+const tex::PreparedTexture* TextureTableModel::preparedRecord(std::size_t row) const {
+    if (!prepared_) return nullptr;
+    // The first role this texture is prepared in (a texture used as colour and as
+    // data has two records; the dock shows one row per glTF texture).
+    for (TextureRole role : {kRoleColor, kRoleLinear, kRoleNormal})
+        if (const std::int32_t i = prepared_->find(static_cast<std::int32_t>(row), role); i >= 0)
+            return &prepared_->textures[static_cast<std::size_t>(i)];
+    return nullptr;
+}
+
 QVariant TextureTableModel::cacheData(std::size_t row, int column) const {
     const QString none = QStringLiteral("—");
     if (!prepared_ || !scene_) return none;
-    // The first role this texture is prepared in (a texture used as colour and as
-    // data has two records; the dock shows one row per glTF texture).
-    const tex::PreparedTexture* r = nullptr;
-    for (TextureRole role : {kRoleColor, kRoleLinear, kRoleNormal})
-        if (const std::int32_t i = prepared_->find(static_cast<std::int32_t>(row), role); i >= 0) {
-            r = &prepared_->textures[static_cast<std::size_t>(i)];
-            break;
-        }
+    const tex::PreparedTexture* r = preparedRecord(row);
     if (!r) return none;
     switch (column) {
     case HashColumn:
@@ -58,6 +62,10 @@ QVariant TextureTableModel::cacheData(std::size_t row, int column) const {
     case GpuBytesColumn:
         return Format::bytes(r->bytes_gpu);
     case CacheStateColumn: {
+        // What failed, not a cache state: "missing: FILE" or "undecodable".
+        if (r->state == tex::CacheState::Missing)
+            return tr("missing: %1").arg(QFileInfo(QString::fromStdString(r->location)).fileName());
+        if (r->state == tex::CacheState::Undecodable) return tr("undecodable");
         if (r->failed) return tr("failed");
         switch (r->state) {
         case tex::CacheState::Hit:
@@ -70,6 +78,9 @@ QVariant TextureTableModel::cacheData(std::size_t row, int column) const {
             return tr("recompressed");
         case tex::CacheState::Fallback:
             return tr("fallback");
+        case tex::CacheState::Missing:
+        case tex::CacheState::Undecodable:
+            break; // answered above
         }
         return none;
     }
@@ -112,6 +123,17 @@ QVariant TextureTableModel::data(const QModelIndex& index, int role) const {
     if (role == Qt::DecorationRole && index.column() == NameColumn && extras_ &&
         row < extras_->thumbnails.size() && !extras_->thumbnails[row].isNull())
         return extras_->thumbnails[row];
+    // A failed texture's whole story (file, reason, the slots that read it) on hover.
+    if (role == Qt::ToolTipRole && img &&
+        (index.column() == SizeColumn || index.column() == CacheStateColumn)) {
+        if (const tex::PreparedTexture* r = preparedRecord(row); r && r->failed) {
+            QString tip = QString::fromStdString(r->note);
+            for (const std::string& use : r->uses)
+                tip += QStringLiteral("\n") + QString::fromStdString(use);
+            return tip;
+        }
+        return {};
+    }
     if (role != Qt::DisplayRole) return {};
     switch (index.column()) {
     case NameColumn:
@@ -127,6 +149,8 @@ QVariant TextureTableModel::data(const QModelIndex& index, int role) const {
         if (!img || !extras_ || static_cast<std::size_t>(t.image) >= extras_->image_sizes.size())
             return QStringLiteral("—");
         const QSize s = extras_->image_sizes[static_cast<std::size_t>(t.image)];
+        if (image_is_missing(*img))
+            return tr("missing: %1").arg(QFileInfo(QString::fromStdString(img->uri)).fileName());
         return s.isEmpty() ? tr("undecodable")
                            : QStringLiteral("%1 × %2").arg(s.width()).arg(s.height());
     }

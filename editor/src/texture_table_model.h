@@ -46,6 +46,8 @@ public:
 
 private:
     QVariant cacheData(std::size_t row, int column) const; // "—" without a record
+    // The pipeline record of texture `row` (its first prepared role), or null.
+    const tex::PreparedTexture* preparedRecord(std::size_t row) const;
 
     std::shared_ptr<const Scene> scene_;
     PreparedTextures prepared_;

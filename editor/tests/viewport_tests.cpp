@@ -98,6 +98,7 @@ private Q_SLOTS:
     void progressReportsEveryStage();
     void cancelDropsTheLoadAndLeaksNothing();
     void textureCacheActions();
+    void missingTextureIsNamedInTheDockAndLog();
 
 private:
     bool hasGpu() const { return static_cast<bool>(window_->gpuObjectCount); }
@@ -388,4 +389,25 @@ void ViewportTests::textureCacheActions() {
 }
 
 QTEST_MAIN(ViewportTests)
+// A base-colour image that does not exist: the dock says "missing: FILE" (not a
+// cache state), the log names the file and the material slots.
+void ViewportTests::missingTextureIsNamedInTheDockAndLog() {
+    if (!hasGpu()) QSKIP("no Vulkan device: textures are prepared for the GPU");
+    QVERIFY(load(*window_, QStringLiteral(SHERPA_TEST_DATA_DIR "/missing_texture.gltf")));
+    QVERIFY(nextFrame(*window_));
+    const TextureTableModel* m = window_->textureDock()->model();
+    QCOMPARE(m->rowCount(), 1);
+    QCOMPARE(m->index(0, TextureTableModel::CacheStateColumn).data().toString(),
+             QStringLiteral("missing: does_not_exist.png"));
+    QCOMPARE(m->index(0, TextureTableModel::SizeColumn).data().toString(),
+             QStringLiteral("missing: does_not_exist.png"));
+    const QString tip =
+        m->index(0, TextureTableModel::CacheStateColumn).data(Qt::ToolTipRole).toString();
+    QVERIFY2(tip.contains(QStringLiteral("material 'Quad' baseColorTexture, occlusionTexture")),
+             qPrintable(tip));
+    QVERIFY2(window_->logDock()->text().contains(
+                 QStringLiteral("texture missing: " SHERPA_TEST_DATA_DIR "/does_not_exist.png")),
+             qPrintable(window_->logDock()->text()));
+}
+
 #include "viewport_tests.moc"

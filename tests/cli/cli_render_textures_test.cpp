@@ -95,10 +95,17 @@ TEST_F(CliRenderTextures, HelmetUploadsBc7AndBc5ThenHitsTheCache) {
     // The CPU-device default: the same cached BC7 blocks, decoded to RGBA8 at upload,
     // look the same as sampling the blocks; BC5 stays compressed.
     std::vector<std::uint8_t> decoded_rgba;
-    const nlohmann::json decoded =
-        render("--cache-dir '" + (dir_ / "cache").string() + "'", "decoded", &decoded_rgba);
+    std::string decoded_out;
+    const nlohmann::json decoded = render("--cache-dir '" + (dir_ / "cache").string() + "'",
+                                          "decoded", &decoded_rgba, &decoded_out);
     ASSERT_FALSE(decoded.is_null());
     if (decoded["device"]["type"] != "cpu") GTEST_SKIP() << "BC7 is decoded on CPU devices only";
+    // Same pixels, nothing to act on: in the report's notices, not on stderr, and no
+    // CLI message names an engine struct.
+    EXPECT_EQ(decoded_out.find("warning"), std::string::npos) << decoded_out;
+    EXPECT_EQ(decoded_out.find("::"), std::string::npos) << decoded_out;
+    ASSERT_FALSE(decoded["notices"].empty());
+    EXPECT_NE(decoded["notices"][0].get<std::string>().find("decoded to RGBA8"), std::string::npos);
     EXPECT_EQ(counts(decoded["textures"]["by_state"]), (std::map<std::string, int>{{"hit", 5}}));
     EXPECT_EQ(counts(decoded["textures"]["by_format"]),
               (std::map<std::string, int>{{"VK_FORMAT_R8G8B8A8_SRGB", 2},
@@ -138,7 +145,10 @@ TEST_F(CliRenderTextures, ForcedRgba8FallbackRendersAndReportsFallback) {
     EXPECT_EQ(counts(j["textures"]["by_format"]),
               (std::map<std::string, int>{{"VK_FORMAT_R8G8B8A8_SRGB", 2},
                                           {"VK_FORMAT_R8G8B8A8_UNORM", 3}}));
-    EXPECT_NE(out.find("warning: RGBA8 forced"), std::string::npos) << out;
+    // Asked for: reported, not warned about.
+    EXPECT_EQ(out.find("warning: RGBA8 forced"), std::string::npos) << out;
+    ASSERT_FALSE(j["notices"].empty());
+    EXPECT_NE(j["notices"][0].get<std::string>().find("RGBA8 forced (--no-bc)"), std::string::npos);
     EXPECT_EQ(j["validation_messages"], 0);
     EXPECT_GT(j["gpu_memory_bytes"]["textures"].get<std::uint64_t>(), 5ull * 2048 * 2048 * 4);
 }

@@ -65,20 +65,33 @@ void BindlessTable::create_defaults() {
     si.magFilter = si.minFilter = VK_FILTER_NEAREST;
     si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
     default_sampler_ = resources_.create_sampler(si);
-    // Slot order is fixed: kWhiteTexture, kFlatNormalTexture, kBlackTexture.
+    // Slot order is fixed: kWhiteTexture, kFlatNormalTexture, kBlackTexture, kCheckerTexture.
     const std::uint8_t texels[3][4] = {{255, 255, 255, 255}, {128, 128, 255, 255}, {0, 0, 0, 255}};
-    const char* names[3] = {"default white", "default flat normal", "default black"};
+    std::vector<std::uint8_t> checker(std::size_t(kCheckerTextureSize) * kCheckerTextureSize * 4);
+    for (std::uint32_t y = 0; y < kCheckerTextureSize; ++y)
+        for (std::uint32_t x = 0; x < kCheckerTextureSize; ++x) {
+            const std::uint8_t on = (x + y) % 2 == 0 ? 255 : 0; // magenta or black
+            std::uint8_t* t = checker.data() + (std::size_t(y) * kCheckerTextureSize + x) * 4;
+            t[0] = on, t[1] = 0, t[2] = on, t[3] = 255;
+        }
+    const char* names[kDefaultTextureCount] = {"default white", "default flat normal",
+                                               "default black", "missing-texture checker"};
     UploadBatch batch(resources_);
-    for (int i = 0; i < 3; ++i) {
+    for (std::uint32_t i = 0; i < kDefaultTextureCount; ++i) {
         ImageDesc d;
         d.format = VK_FORMAT_R8G8B8A8_UNORM;
         d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
         d.name = names[i];
+        const bool is_checker = i == kCheckerTexture;
+        if (is_checker) d.width = d.height = kCheckerTextureSize;
         defaults_[i] = resources_.create_image(d);
-        batch.upload_image(defaults_[i], texels[i], 4);
+        if (is_checker)
+            batch.upload_image(defaults_[i], checker.data(), checker.size());
+        else
+            batch.upload_image(defaults_[i], texels[i], 4);
     }
     batch.submit_and_wait();
-    for (int i = 0; i < 3; ++i)
+    for (std::uint32_t i = 0; i < kDefaultTextureCount; ++i)
         add(resources_.get(defaults_[i]).view.get(), resources_.get(default_sampler_));
 }
 

@@ -74,9 +74,10 @@ GPUTextureTransform uv_transform(const TextureSlot& slot) {
 } // namespace
 
 GpuScene::GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
-                   std::shared_ptr<const tex::PreparedTextureSet> textures, StreamPolicy policy)
+                   std::shared_ptr<const tex::PreparedTextureSet> textures, StreamPolicy policy,
+                   MissingTextures missing)
     : resources_(resources), table_(table), policy_(policy) {
-    upload(scene, std::move(textures));
+    upload(scene, std::move(textures), missing);
 }
 
 GpuScene::GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
@@ -84,14 +85,16 @@ GpuScene::GpuScene(ResourceManager& resources, BindlessTable& table, const Scene
     : resources_(resources), table_(table), policy_(policy) {
     auto prepared = std::const_pointer_cast<tex::PreparedTextureSet>(
         prepare_scene_textures(scene, resources.context().info(), texture_settings));
-    upload(scene, prepared);
+    upload(scene, prepared, texture_settings.missing);
     // Nobody else holds this set: the levels are on the GPU now, keep the records only.
     for (tex::PreparedTexture& t : prepared->textures) decltype(t.levels)().swap(t.levels);
 }
 
-void GpuScene::upload(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures) {
+void GpuScene::upload(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
+                      MissingTextures missing) {
     try {
-        textures_ = std::make_unique<SceneTextures>(resources_, table_, scene, std::move(textures));
+        textures_ = std::make_unique<SceneTextures>(resources_, table_, scene, std::move(textures),
+                                                    missing);
         memory_.textures = textures_->gpu_bytes();
         upload_geometry(scene);
         upload_materials(scene);

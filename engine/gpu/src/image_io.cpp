@@ -23,6 +23,9 @@ bool write_png(const std::string& path, std::uint32_t width, std::uint32_t heigh
         return false;
     }
     OIIO::ImageSpec spec(int(width), int(height), 4, OIIO::TypeDesc::UINT8);
+    // Rendered pixels are stored as they are; without this the PNG writer treats them
+    // as associated and divides colour by alpha.
+    spec.attribute("oiio:UnassociatedAlpha", 1);
     // The name only selects the format; the proxy receives the bytes.
     if (!out->set_ioproxy(&writer) || !out->open("out.png", spec) ||
         !out->write_image(OIIO::TypeDesc::UINT8, rgba.data()) || !out->close()) {

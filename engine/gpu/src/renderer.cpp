@@ -196,8 +196,8 @@ void Renderer::load(const Scene& scene, StreamPolicy policy) {
 void Renderer::load(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
                     StreamPolicy policy) {
     unload();
-    scene_ =
-        std::make_unique<GpuScene>(*resources_, *bindless_, scene, std::move(textures), policy);
+    scene_ = std::make_unique<GpuScene>(*resources_, *bindless_, scene, std::move(textures), policy,
+                                        options_.textures.missing);
     adopt(scene);
 }
 

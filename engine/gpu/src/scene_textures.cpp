@@ -97,6 +97,16 @@ void decode_bc7_levels(tex::PreparedTexture& t) {
 
 } // namespace
 
+std::string_view to_string(MissingTextures m) {
+    return m == MissingTextures::Neutral ? "neutral" : "checker";
+}
+
+std::optional<MissingTextures> parse_missing_textures(std::string_view name) {
+    if (name == "checker") return MissingTextures::Checker;
+    if (name == "neutral") return MissingTextures::Neutral;
+    return std::nullopt;
+}
+
 tex::PipelineOptions texture_pipeline_options(const DeviceInfo& device,
                                               const TextureSettings& settings) {
     tex::PipelineOptions o;
@@ -114,19 +124,21 @@ prepare_scene_textures(const Scene& scene, const DeviceInfo& device,
                        const TextureSettings& settings) {
     auto set = std::make_shared<tex::PreparedTextureSet>(
         tex::prepare_textures(scene, texture_pipeline_options(device, settings)));
-    // Say why there is no BC: the device, or the settings.
+    // Say why there is no BC: the device (a warning: textures cost 4x the memory and
+    // no setting helps), or the settings (a notice: the user asked for it).
     if (!set->textures.empty() && (!device.bc_textures || settings.force_rgba8)) {
         std::erase_if(set->warnings, [](const std::string& w) {
             return w.starts_with("device cannot sample BC formats");
         });
-        set->warnings.insert(
-            set->warnings.begin(),
-            !device.bc_textures
-                ? device.name + " cannot sample BC7/BC5 (textureCompressionBC or format "
-                                "features missing): textures fall back to uncompressed RGBA8"
-                : "RGBA8 forced by the texture settings: textures are uploaded uncompressed "
-                  "although " +
-                      device.name + " samples BC7/BC5");
+        if (!device.bc_textures)
+            set->warnings.insert(set->warnings.begin(),
+                                 device.name +
+                                     " cannot sample BC7/BC5 (textureCompressionBC or format "
+                                     "features missing): textures fall back to uncompressed RGBA8");
+        else
+            set->notices.push_back("RGBA8 forced (--no-bc): textures are uploaded uncompressed "
+                                   "although " +
+                                   device.name + " samples BC7/BC5");
     }
     if (device.is_cpu() && settings.decode_bc7_on_cpu) {
         // One texture at a time: decode_image spreads its block rows over the cores.
@@ -137,18 +149,19 @@ prepare_scene_textures(const Scene& scene, const DeviceInfo& device,
                 decode_bc7_levels(t);
                 ++bc7;
             }
+        // Nothing for the user to act on: the pixels are the same. A notice, not a warning.
         if (bc7 > 0)
-            set->warnings.push_back(
+            set->notices.push_back(
                 std::to_string(bc7) + " BC7 texture(s) decoded to RGBA8 at upload: " + device.name +
-                " is a CPU device, where sampling BC7 costs several times RGBA8 (keep the blocks "
-                "with TextureSettings::decode_bc7_on_cpu = false or --keep-bc7)");
+                " is a CPU device, where sampling BC7 costs several times RGBA8");
     }
     return set;
 }
 
 SceneTextures::SceneTextures(ResourceManager& resources, BindlessTable& table, const Scene& scene,
-                             std::shared_ptr<const tex::PreparedTextureSet> prepared)
-    : resources_(resources), table_(table), prepared_(std::move(prepared)) {
+                             std::shared_ptr<const tex::PreparedTextureSet> prepared,
+                             MissingTextures missing)
+    : resources_(resources), table_(table), prepared_(std::move(prepared)), missing_(missing) {
     if (!prepared_) prepared_ = std::make_shared<const tex::PreparedTextureSet>();
     warnings_ = prepared_->warnings;
     try {
@@ -240,12 +253,20 @@ std::uint32_t SceneTextures::slot(std::int32_t texture, TextureRole role) const 
 
 GPUMaterialData SceneTextures::material(const MaterialInstance& m) const {
     GPUMaterialData g = tex::resolve_material(m, *prepared_, slots_);
+    // A present slot whose texture failed draws the checker (colour slots) when asked.
+    auto failed = [&](const TextureSlot& s, TextureRole role) {
+        const std::int32_t i = s.present() ? prepared_->find(s.texture, role) : -1;
+        return i >= 0 && prepared_->textures[std::size_t(i)].failed;
+    };
     auto field = [&](std::uint32_t& value, const TextureSlot& s, TextureRole role,
                      std::uint32_t fallback) {
         if (s.present())
             if (auto it = extra_slots_.find({s.texture, role}); it != extra_slots_.end())
                 value = it->second;
-        if (value == kTextureSentinel) value = fallback;
+        if (value != kTextureSentinel) return;
+        value = role == kRoleColor && missing_ == MissingTextures::Checker && failed(s, role)
+                    ? kCheckerTexture
+                    : fallback;
     };
     // Emissive without a texture is the factor alone (glTF): white when it emits.
     const bool emits = glm::any(glm::greaterThan(m.emissive_factor, glm::vec3(0.0f)));

@@ -15,6 +15,15 @@ bool RgbaImage::has_alpha() const {
 }
 
 namespace {
+// glTF stores base colour unassociated ("straight") with alpha beside it; OpenImageIO
+// associates (premultiplies) alpha on read unless told otherwise, which darkens every
+// texel whose alpha is below 1 and, once blended, applies alpha twice.
+OIIO::ImageSpec unassociated_alpha_config() {
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    return config;
+}
+
 // Expands `channels`-channel 8-bit rows to RGBA8 in place of `out`.
 void expand_to_rgba(const std::vector<std::uint8_t>& src, int channels, RgbaImage& out) {
     const std::size_t texels = std::size_t{out.width} * out.height;
@@ -49,26 +58,47 @@ bool read_from(OIIO::ImageInput* in, std::string_view name, RgbaImage& out, std:
 }
 } // namespace
 
-bool decode_encoded_image(std::span<const std::uint8_t> bytes, std::string_view name_hint,
-                          RgbaImage& out, std::string& error) {
-    // OpenImageIO reads from memory through an IOProxy; the name only picks the
-    // plugin. The proxy must be attached before open(), which then reads from it.
+namespace {
+// Opens `bytes` through an IOProxy (the name only picks the plugin), then runs `read`.
+template <typename Read>
+bool with_encoded_image(std::span<const std::uint8_t> bytes, std::string_view name_hint,
+                        std::string& error, Read read) {
+    // The proxy must be attached before open(), which then reads from it.
     OIIO::Filesystem::IOMemReader reader(const_cast<std::uint8_t*>(bytes.data()), bytes.size());
     auto in = OIIO::ImageInput::create(std::string(name_hint), false, nullptr, &reader);
     OIIO::ImageSpec spec;
     if (!in || !in->supports("ioproxy") || !in->set_ioproxy(&reader) ||
-        !in->open(std::string(name_hint), spec)) {
+        !in->open(std::string(name_hint), spec, unassociated_alpha_config())) {
         error =
             std::string(name_hint) + ": cannot decode: " + (in ? in->geterror() : OIIO::geterror());
         return false;
     }
-    const bool ok = read_from(in.get(), name_hint, out, error);
+    const bool ok = read(in.get());
     in->close();
     return ok;
 }
+} // namespace
+
+bool decode_encoded_image(std::span<const std::uint8_t> bytes, std::string_view name_hint,
+                          RgbaImage& out, std::string& error) {
+    return with_encoded_image(bytes, name_hint, error, [&](OIIO::ImageInput* in) {
+        return read_from(in, name_hint, out, error);
+    });
+}
+
+bool probe_encoded_image(std::span<const std::uint8_t> bytes, std::string_view name_hint,
+                         std::string& error) {
+    return with_encoded_image(bytes, name_hint, error, [&](OIIO::ImageInput* in) {
+        const OIIO::ImageSpec& spec = in->spec();
+        if (spec.width > 0 && spec.height > 0 && spec.nchannels > 0) return true;
+        error = std::string(name_hint) + ": image has no pixels";
+        return false;
+    });
+}
 
 bool read_image_file(const std::filesystem::path& path, RgbaImage& out, std::string& error) {
-    auto in = OIIO::ImageInput::open(path.string());
+    const OIIO::ImageSpec config = unassociated_alpha_config();
+    auto in = OIIO::ImageInput::open(path.string(), &config);
     if (!in) {
         error = path.string() + ": cannot open: " + OIIO::geterror();
         return false;
@@ -87,6 +117,8 @@ bool write_image_file(const std::filesystem::path& path, const RgbaImage& image,
     }
     OIIO::ImageSpec spec(static_cast<int>(image.width), static_cast<int>(image.height), 4,
                          OIIO::TypeDesc::UINT8);
+    // The pixels are unassociated: without this the PNG writer would divide by alpha.
+    spec.attribute("oiio:UnassociatedAlpha", 1);
     if (!outfile->open(path.string(), spec) ||
         !outfile->write_image(OIIO::TypeDesc::UINT8, image.pixels.data())) {
         error = path.string() + ": " + outfile->geterror();

@@ -2,11 +2,13 @@
 // mip generation and block compression of the misses, then cache writes.
 #include <sherpa/texture/texture_pipeline.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <thread>
 
+#include <sherpa/scene/image_sources.h>
 #include <sherpa/texture/image.h>
 #include <sherpa/texture/mips.h>
 #include <sherpa/texture/quality.h>
@@ -104,6 +106,25 @@ void compress(PreparedTexture& t, const TextureUse& use, const RgbaImage& source
         t.psnr = measure_psnr(use.role, source, t.levels[0], t.format);
 }
 
+// One warning per image, not per role it is used in.
+void add_once(std::vector<std::string>& warnings, std::string warning) {
+    if (std::find(warnings.begin(), warnings.end(), warning) == warnings.end())
+        warnings.push_back(std::move(warning));
+}
+
+// A warning for a texture whose image failed (t.state Missing or Undecodable).
+std::string failure_warning(const PreparedTexture& t, std::string reason) {
+    return "texture " +
+           describe(ImageProblem{t.image, t.state, t.location, std::move(reason), t.uses});
+}
+
+// decode_encoded_image names the image by its decoder hint ("image.png: ..."); the
+// warning names the file already.
+std::string without_hint(const ImageRecord& img, const std::string& error) {
+    const std::string prefix = decoder_hint(img) + ": ";
+    return error.starts_with(prefix) ? error.substr(prefix.size()) : error;
+}
+
 } // namespace
 
 std::string texture_recipe(const TextureUse& use, const PipelineOptions& opt) {
@@ -120,6 +141,35 @@ std::string texture_recipe(const TextureUse& use, const PipelineOptions& opt) {
         r += buf;
     }
     return r;
+}
+
+std::string describe(const ImageProblem& p) {
+    std::string s = std::string(to_string(p.state)) + ": " + p.location;
+    for (std::size_t i = 0; i < p.uses.size(); ++i) s += (i == 0 ? " (used by " : "; ") + p.uses[i];
+    s += p.uses.empty() ? " (used by no material)" : ")";
+    if (!p.reason.empty()) s += ": " + p.reason;
+    return s;
+}
+
+std::vector<ImageProblem> find_image_problems(const Scene& scene) {
+    std::vector<ImageProblem> problems;
+    for (std::size_t i = 0; i < scene.images.size(); ++i) {
+        const ImageRecord& img = scene.images[i];
+        const auto index = static_cast<std::int32_t>(i);
+        ImageProblem p{index,
+                       CacheState::Missing,
+                       image_location(scene, index),
+                       {},
+                       image_slot_uses(scene, index)};
+        if (!image_is_missing(img)) {
+            if (img.encoded.empty() ||
+                probe_encoded_image(img.encoded, decoder_hint(img), p.reason))
+                continue;
+            p.state = CacheState::Undecodable;
+        }
+        problems.push_back(std::move(p));
+    }
+    return problems;
 }
 
 PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& opt) {
@@ -140,8 +190,19 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
         t.format = output_format(use.role, opt.device_supports_bc);
         t.source_hash = source_hash(img);
         t.recipe = texture_recipe(use, opt);
+        t.location = image_location(scene, use.image);
+        t.uses = image_slot_uses(scene, use.image);
         const Hash128 key = cache_key(t.source_hash, t.recipe);
         t.state = CacheState::Miss;
+        if (image_is_missing(img)) {
+            // Nothing to look up or decode: say what is missing and who reads it.
+            t.state = CacheState::Missing;
+            t.failed = true;
+            t.note = "missing: " + t.location;
+            add_once(set.warnings, failure_warning(t, {}));
+            set.textures.push_back(std::move(t));
+            continue;
+        }
         if (cache) {
             t.cache_file = cache->file_for(key);
             CacheLookup found = cache->load(key, t.source_hash, t.recipe);
@@ -201,8 +262,10 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
         PreparedTexture& t = set.textures[misses[i]];
         if (decoded[i].empty()) {
             t.failed = true;
-            t.note = errors[i];
-            set.warnings.push_back(t.source + ": " + errors[i]);
+            t.state = CacheState::Undecodable;
+            const std::string reason = without_hint(scene.images[std::size_t(t.image)], errors[i]);
+            t.note = "undecodable: " + reason;
+            add_once(set.warnings, failure_warning(t, reason));
             continue;
         }
         const TextureUse& use = uses[misses[i]];

@@ -30,6 +30,10 @@ std::string_view to_string(CacheState state) {
         return "recompressed";
     case CacheState::Fallback:
         return "fallback";
+    case CacheState::Missing:
+        return "missing";
+    case CacheState::Undecodable:
+        return "undecodable";
     }
     return "miss";
 }

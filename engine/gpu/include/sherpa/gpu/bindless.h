@@ -1,10 +1,11 @@
 #pragma once
 // Descriptor set 0 of every pipeline: a bindless array of combined image samplers. Slots are handed
-// out and given back by scenes; the default textures own slots 0..2 for the whole lifetime of the
+// out and given back by scenes; the default textures own slots 0..3 for the whole lifetime of the
 // table.
 #include <cstdint>
 #include <vector>
 
+#include <sherpa/gpu/gpu_structs.h>
 #include <sherpa/gpu/resources.h>
 
 namespace sherpa::gpu {
@@ -37,7 +38,7 @@ private:
     VkDescriptorSet set_ = VK_NULL_HANDLE;
     std::uint32_t next_ = 0;
     std::vector<std::uint32_t> free_;
-    ImageHandle defaults_[3];
+    ImageHandle defaults_[kDefaultTextureCount];
     SamplerHandle default_sampler_;
 };
 

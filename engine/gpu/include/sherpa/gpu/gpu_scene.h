@@ -56,7 +56,8 @@ public:
     // another thread) for this scene.
     GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
              std::shared_ptr<const tex::PreparedTextureSet> textures,
-             StreamPolicy policy = StreamPolicy::UsedByMaterials);
+             StreamPolicy policy = StreamPolicy::UsedByMaterials,
+             MissingTextures missing = MissingTextures::Checker);
     // Prepares the textures itself (on this thread), then uploads; the CPU copies of
     // the texture levels are released after the upload.
     GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
@@ -92,7 +93,8 @@ public:
     const std::vector<std::string>& warnings() const { return textures_->warnings(); }
 
 private:
-    void upload(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures);
+    void upload(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
+                MissingTextures missing);
     void upload_geometry(const Scene& scene);
     void upload_materials(const Scene& scene);
     void upload_instances(const Scene& scene);

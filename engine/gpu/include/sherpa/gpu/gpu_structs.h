@@ -20,7 +20,11 @@ inline constexpr std::uint32_t kNoCascade = 0xffffffffu;
 inline constexpr std::uint32_t kWhiteTexture = 0;
 inline constexpr std::uint32_t kFlatNormalTexture = 1;
 inline constexpr std::uint32_t kBlackTexture = 2;
-inline constexpr std::uint32_t kDefaultTextureCount = 3;
+// Magenta/black 8x8 checker drawn in colour slots whose texture is missing or
+// undecodable, so nobody mistakes the failure for intended white.
+inline constexpr std::uint32_t kCheckerTexture = 3;
+inline constexpr std::uint32_t kDefaultTextureCount = 4;
+inline constexpr std::uint32_t kCheckerTextureSize = 8;
 
 struct GPULight {
     glm::vec4 position_range;

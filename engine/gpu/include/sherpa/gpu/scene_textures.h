@@ -12,6 +12,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <sherpa/gpu/bindless.h>
@@ -21,6 +22,18 @@
 #include <sherpa/texture/texture_pipeline.h>
 
 namespace sherpa::gpu {
+
+// How material slots whose texture is missing or undecodable are drawn.
+enum class MissingTextures : std::uint8_t {
+    // A magenta/black checker in colour slots (base colour, emissive), the flat
+    // normal in normal slots, neutral data (occlusion 1, metallic-roughness factors
+    // alone) elsewhere: as a debug view would, so the failure is visible.
+    Checker,
+    // The glTF defaults for an absent texture in every slot (white colour).
+    Neutral,
+};
+std::string_view to_string(MissingTextures m); // "checker", "neutral"
+std::optional<MissingTextures> parse_missing_textures(std::string_view name);
 
 // How a renderer prepares textures when it is handed a bare Scene.
 struct TextureSettings {
@@ -35,6 +48,7 @@ struct TextureSettings {
     // blocks, 4x the memory); false keeps the blocks. BC5 costs the same either way
     // and stays compressed.
     bool decode_bc7_on_cpu = true;
+    MissingTextures missing = MissingTextures::Checker;
     // Handed to the texture pipeline (tex::PipelineOptions): textures ready of
     // textures, and a token that stops the preparation (the set comes back
     // `cancelled` and empty).
@@ -66,7 +80,8 @@ class SceneTextures {
 public:
     // Uploads every texture of `prepared` (prepared for `scene`) that did not fail.
     SceneTextures(ResourceManager& resources, BindlessTable& table, const Scene& scene,
-                  std::shared_ptr<const tex::PreparedTextureSet> prepared);
+                  std::shared_ptr<const tex::PreparedTextureSet> prepared,
+                  MissingTextures missing = MissingTextures::Checker);
     ~SceneTextures();
     SceneTextures(const SceneTextures&) = delete;
     SceneTextures& operator=(const SceneTextures&) = delete;
@@ -78,8 +93,9 @@ public:
     const std::vector<GpuTexture>& gpu() const { return gpu_; }
     std::span<const std::uint32_t> slots() const { return slots_; }
 
-    // The material's GPU record with texture fields resolved to bindless slots, and
-    // absent or failed textures to the default textures.
+    // The material's GPU record with texture fields resolved to bindless slots, absent
+    // textures to the default textures, and failed (missing, undecodable) ones as
+    // MissingTextures says.
     GPUMaterialData material(const MaterialInstance& material) const;
     // Bindless slot of glTF texture `texture` read in `role`, or kTextureSentinel.
     std::uint32_t slot(std::int32_t texture, TextureRole role) const;
@@ -95,6 +111,7 @@ private:
     ResourceManager& resources_;
     BindlessTable& table_;
     std::shared_ptr<const tex::PreparedTextureSet> prepared_;
+    MissingTextures missing_;
     std::vector<GpuTexture> gpu_;
     std::vector<std::uint32_t> slots_; // per record; sentinel where failed
     // Textures sharing an image with another texture but not its sampler get a slot

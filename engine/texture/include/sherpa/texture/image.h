@@ -25,6 +25,10 @@ struct RgbaImage {
 // converted to 8 bits. Returns false with `error` set on failure.
 bool decode_encoded_image(std::span<const std::uint8_t> bytes, std::string_view name_hint,
                           RgbaImage& out, std::string& error);
+// Opens the image and reads its header only: true when a decoder accepts it (the
+// pixels may still be damaged), else false with the decoder's reason in `error`.
+bool probe_encoded_image(std::span<const std::uint8_t> bytes, std::string_view name_hint,
+                         std::string& error);
 bool read_image_file(const std::filesystem::path& path, RgbaImage& out, std::string& error);
 
 // Writes an RGBA8 image with OpenImageIO (format from the extension).

@@ -19,8 +19,10 @@
 
 namespace sherpa::tex {
 
-// Bumped whenever encoder or mip output changes, so old cache files stop matching.
-inline constexpr int kTextureEncoderVersion = 2;
+// Bumped whenever encoder, decoder or mip output changes, so old cache files stop
+// matching. 3: sources are decoded with unassociated alpha (2 stored premultiplied
+// colour for every RGBA PNG).
+inline constexpr int kTextureEncoderVersion = 3;
 
 // One image in one role, as used by the displayed scene's materials.
 struct TextureUse {
@@ -53,8 +55,19 @@ struct PipelineOptions {
     const CancelToken* cancel = nullptr;
 };
 
-enum class CacheState : std::uint8_t { Hit, Miss, Stale, Recompressed, Fallback };
-std::string_view to_string(CacheState state); // hit, miss, stale, recompressed, fallback
+// Missing: the image's file could not be read (or its bufferView is empty);
+// Undecodable: it has bytes the decoder refuses. Both leave the texture `failed`.
+enum class CacheState : std::uint8_t {
+    Hit,
+    Miss,
+    Stale,
+    Recompressed,
+    Fallback,
+    Missing,
+    Undecodable
+};
+// hit, miss, stale, recompressed, fallback, missing, undecodable
+std::string_view to_string(CacheState state);
 std::string_view role_name(TextureRole role); // color, linear, normal
 
 struct PreparedTexture {
@@ -72,15 +85,20 @@ struct PreparedTexture {
     std::uint64_t bytes_on_disk = 0;  // the KTX2 file (0 without a cache)
     std::uint64_t bytes_gpu = 0;      // all levels
     double decode_ms = 0, mip_ms = 0, encode_ms = 0;
-    std::optional<double> psnr; // level 0 against the decoded source; none for RGBA8
-    std::string note;           // why stale / recompressed, or a write failure
-    bool failed = false;        // source could not be decoded: no levels
+    std::optional<double> psnr;    // level 0 against the decoded source; none for RGBA8
+    std::string note;              // why stale / recompressed / undecodable, or a write failure
+    bool failed = false;           // state Missing or Undecodable: no levels
+    std::string location;          // the image's file path, else "bufferView N", "data URI"...
+    std::vector<std::string> uses; // "material 'NAME' baseColorTexture, ..." (image_slot_uses)
 };
 
 struct PreparedTextureSet {
     std::vector<PreparedTexture> textures;
     std::vector<std::string> warnings; // fallbacks, decode failures, cache write failures
-    bool cancelled = false;            // PipelineOptions::cancel stopped it: no textures
+    // What the user need not act on (how textures were stored for the device): for
+    // reports and logs at info level, not printed as warnings.
+    std::vector<std::string> notices;
+    bool cancelled = false; // PipelineOptions::cancel stopped it: no textures
 
     // Index into `textures` for glTF texture `texture` used in `role`, or -1.
     std::int32_t find(std::int32_t texture, TextureRole role) const;
@@ -90,6 +108,22 @@ struct PreparedTextureSet {
 std::string texture_recipe(const TextureUse& use, const PipelineOptions& options);
 
 PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& options);
+
+// An image that cannot become a texture, without running the pipeline: its bytes
+// are missing, or the decoder refuses its header.
+struct ImageProblem {
+    std::int32_t image = -1;
+    CacheState state = CacheState::Missing; // Missing or Undecodable
+    std::string location;                   // image_location(): the file path, ...
+    std::string reason;                     // the decoder's words (Undecodable)
+    std::vector<std::string> uses;          // image_slot_uses()
+};
+// "missing: FILE (used by material 'M' baseColorTexture, occlusionTexture)", or
+// "undecodable: FILE (used by ...): REASON"; one line.
+std::string describe(const ImageProblem& problem);
+// Every image of `scene` (used or not) that is missing or whose header does not
+// decode, in image order.
+std::vector<ImageProblem> find_image_problems(const Scene& scene);
 
 // For the GPU layer once it has uploaded set.textures[i] to bindless slot
 // bindless_slot[i]: the material's GPU record with every texture field resolved to

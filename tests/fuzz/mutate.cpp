@@ -254,7 +254,7 @@ void mutate_json(Rng& rng, nlohmann::json& doc, int max_ops) {
     for (int op = 0; op < ops; ++op) {
         std::vector<nlohmann::json::json_pointer> all;
         collect_pointers(doc, nlohmann::json::json_pointer(), all, 20000);
-        // Prefer the leaves and small objects near them: that is where the numbers are.
+        // Uniform over every value: leaves dominate, which is where the numbers are.
         const auto& at = all[rng.below(all.size())];
         mutate_value(rng, doc, at, all);
     }

@@ -11,28 +11,43 @@ namespace sherpa {
 
 bool read_file(const std::filesystem::path& path, std::vector<std::uint8_t>& out,
                std::string& error) {
-    std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) {
+    // O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
         error = path.string() + ": cannot open: " + std::strerror(errno);
         return false;
     }
-    out.clear();
-    std::uint8_t chunk[1 << 16];
-    std::size_t n = 0;
-    while ((n = std::fread(chunk, 1, sizeof(chunk), f)) > 0)
-        out.insert(out.end(), chunk, chunk + n);
-    const bool failed = std::ferror(f) != 0;
-    std::fclose(f);
-    if (failed) {
-        error = path.string() + ": read error";
+    struct stat st {};
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        error = path.string() +
+                (S_ISDIR(st.st_mode) ? ": is a directory, not a file" : ": not a regular file");
+        ::close(fd);
         return false;
     }
+    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+    out.clear();
+    out.reserve(static_cast<std::size_t>(st.st_size));
+    std::uint8_t chunk[1 << 16];
+    for (;;) {
+        const ssize_t n = ::read(fd, chunk, sizeof(chunk));
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) {
+            error = path.string() + ": read error: " + std::strerror(errno);
+            ::close(fd);
+            return false;
+        }
+        if (n == 0) break;
+        out.insert(out.end(), chunk, chunk + n);
+    }
+    ::close(fd);
     return true;
 }
 
 bool write_file_atomic(const std::filesystem::path& path, std::span<const std::uint8_t> bytes,
                        std::string& error) {
-    std::string tmpl = (path.parent_path() / (path.filename().string() + ".tmp.XXXXXX")).string();
+    std::string tmpl = (path.parent_path() / (path.filename().string() + ".tmp." +
+                                              std::to_string(::getpid()) + ".XXXXXX"))
+                           .string();
     const int fd = ::mkstemp(tmpl.data());
     if (fd < 0) {
         error = path.string() + ": cannot create temp file: " + std::strerror(errno);
@@ -65,6 +80,20 @@ bool write_file_atomic(const std::filesystem::path& path, std::span<const std::u
         return false;
     }
     return true;
+}
+
+long temp_file_writer_pid(std::string_view filename) {
+    const std::size_t tmp = filename.rfind(".tmp.");
+    if (tmp == std::string_view::npos) return 0;
+    const std::string_view rest = filename.substr(tmp + 5); // "PID.XXXXXX"
+    const std::size_t dot = rest.find('.');
+    if (dot == 0 || dot == std::string_view::npos || dot > 9) return 0;
+    long pid = 0;
+    for (const char c : rest.substr(0, dot)) {
+        if (c < '0' || c > '9') return 0;
+        pid = pid * 10 + (c - '0');
+    }
+    return pid;
 }
 
 } // namespace sherpa

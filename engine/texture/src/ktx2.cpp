@@ -50,8 +50,8 @@ std::uint32_t max_levels(std::uint32_t w, std::uint32_t h) {
 }
 
 std::vector<std::uint8_t> key_value_data(std::vector<std::pair<std::string, std::string>> kv) {
-    if (std::none_of(kv.begin(), kv.end(), [](const auto& e) { return e.first == "KTXwriter"; }))
-        kv.emplace_back("KTXwriter", "Sherpa texture pipeline");
+    if (std::none_of(kv.begin(), kv.end(), [](const auto& e) { return e.first == kKeyKtxWriter; }))
+        kv.emplace_back(kKeyKtxWriter, kKtxWriterName);
     // Sorted by key as raw bytes (the spec's "sorted by codepoint").
     std::sort(kv.begin(), kv.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     std::vector<std::uint8_t> out;

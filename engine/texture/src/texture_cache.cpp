@@ -11,6 +11,8 @@
 
 #include <sherpa/core/file_io.h>
 
+#include "cache_files.h"
+
 namespace sherpa::tex {
 
 namespace fs = std::filesystem;
@@ -28,19 +30,48 @@ Hash128 hash_bytes(std::span<const std::uint8_t> bytes) {
 }
 
 Hash128 cache_key(const Hash128& source, std::string_view recipe) {
-    std::vector<std::uint8_t> buf(16 + recipe.size());
+    std::vector<std::uint8_t> buf(20 + recipe.size());
     for (int i = 0; i < 8; ++i) {
         buf[i] = static_cast<std::uint8_t>(source.high >> (8 * i));
         buf[8 + i] = static_cast<std::uint8_t>(source.low >> (8 * i));
     }
-    std::copy(recipe.begin(), recipe.end(), buf.begin() + 16);
+    for (int i = 0; i < 4; ++i)
+        buf[16 + i] = static_cast<std::uint8_t>(kCacheFormatVersion >> (8 * i));
+    std::copy(recipe.begin(), recipe.end(), buf.begin() + 20);
     return hash_bytes(buf);
 }
 
-std::string level_checksum(const Ktx2Texture& texture) {
+namespace {
+
+void hash_u64(XXH3_state_t* state, std::uint64_t v) {
+    std::uint8_t bytes[8];
+    for (int i = 0; i < 8; ++i) bytes[i] = static_cast<std::uint8_t>(v >> (8 * i));
+    XXH3_64bits_update(state, bytes, sizeof bytes);
+}
+
+void hash_sized(XXH3_state_t* state, const void* data, std::size_t size) {
+    hash_u64(state, size);
+    XXH3_64bits_update(state, data, size);
+}
+
+} // namespace
+
+std::string entry_checksum(const Ktx2Texture& texture) {
+    std::vector<std::pair<std::string, std::string>> metadata;
+    for (const auto& kv : texture.metadata)
+        if (kv.first != kKeyChecksum) metadata.push_back(kv);
+    std::sort(metadata.begin(), metadata.end()); // the order the KTX2 writer stores
     XXH3_state_t* state = XXH3_createState();
     XXH3_64bits_reset(state);
-    for (const auto& level : texture.levels) XXH3_64bits_update(state, level.data(), level.size());
+    hash_u64(state, static_cast<std::uint64_t>(texture.format));
+    hash_u64(state, texture.width);
+    hash_u64(state, texture.height);
+    hash_u64(state, texture.levels.size());
+    for (const auto& level : texture.levels) hash_sized(state, level.data(), level.size());
+    for (const auto& [key, value] : metadata) {
+        hash_sized(state, key.data(), key.size());
+        hash_sized(state, value.data(), value.size());
+    }
     const XXH64_hash_t h = XXH3_64bits_digest(state);
     XXH3_freeState(state);
     char buf[17];
@@ -77,12 +108,14 @@ CacheLookup TextureCache::load(const Hash128& key, const Hash128& source,
     CacheLookup result;
     const fs::path path = file_for(key);
     std::error_code ec;
-    if (!fs::exists(path, ec)) return result;
+    if (!fs::exists(fs::symlink_status(path, ec))) return result;
     std::vector<std::uint8_t> bytes;
     std::string error;
+    // read_file refuses directories, FIFOs and devices (with their path) unread.
     if (!read_file(path, bytes, error)) {
         // Vanished between the check and the read (another process evicted it).
-        result.state = fs::exists(path, ec) ? LookupState::Corrupt : LookupState::Missing;
+        result.state =
+            fs::exists(fs::symlink_status(path, ec)) ? LookupState::Corrupt : LookupState::Missing;
         result.problem = error;
         return result;
     }
@@ -94,9 +127,9 @@ CacheLookup TextureCache::load(const Hash128& key, const Hash128& source,
         return result;
     }
     const std::string* checksum = texture.find(kKeyChecksum);
-    if (!checksum || *checksum != level_checksum(texture)) {
+    if (!checksum || *checksum != entry_checksum(texture)) {
         result.state = LookupState::Corrupt;
-        result.problem = path.filename().string() + ": level data checksum mismatch";
+        result.problem = path.filename().string() + ": checksum mismatch (damaged file)";
         return result;
     }
     const std::string* stored_source = texture.find(kKeySourceHash);
@@ -126,7 +159,10 @@ bool TextureCache::store(const Hash128& key, const Hash128& source, std::string_
     });
     texture.metadata.emplace_back(std::string(kKeySourceHash), source.hex());
     texture.metadata.emplace_back(std::string(kKeyRecipe), std::string(recipe));
-    texture.metadata.emplace_back(std::string(kKeyChecksum), level_checksum(texture));
+    // Named here rather than by the writer, so the checksum covers it too.
+    if (!texture.find(kKeyKtxWriter))
+        texture.metadata.emplace_back(std::string(kKeyKtxWriter), std::string(kKtxWriterName));
+    texture.metadata.emplace_back(std::string(kKeyChecksum), entry_checksum(texture));
     const fs::path path = file_for(key);
     if (!write_file_atomic(path, write_ktx2(texture), error)) return false;
     evict(path);
@@ -144,12 +180,18 @@ std::size_t TextureCache::evict(const fs::path& keep) const {
     std::error_code ec;
     const auto now = fs::file_time_type::clock::now();
     for (fs::directory_iterator it(directory_, ec), end; !ec && it != end; it.increment(ec)) {
+        std::error_code entry_ec;
         const fs::path& p = it->path();
-        const auto bytes = it->file_size(ec);
-        const auto used = it->last_write_time(ec);
-        if (ec) continue; // removed meanwhile by another process
+        if (!it->is_regular_file(entry_ec)) continue; // not ours to count or remove
+        const auto bytes = it->file_size(entry_ec);
+        const auto used = it->last_write_time(entry_ec);
+        if (entry_ec) continue; // removed meanwhile by another process
         if (p.filename().string().find(".ktx2.tmp.") != std::string::npos) {
-            if (now - used > std::chrono::hours(1)) fs::remove(p, ec);
+            if (abandoned_temp_file(p.filename().string(), now - used)) {
+                fs::remove(p, entry_ec);
+                continue;
+            }
+            total += bytes; // a live writer's file takes its room under the cap too
             continue;
         }
         if (p.extension() != ".ktx2") continue;
@@ -163,6 +205,7 @@ std::size_t TextureCache::evict(const fs::path& keep) const {
         if (total <= max_bytes_) break;
         if (e.path == keep) continue;
         if (fs::remove(e.path, ec)) ++removed;
+        remove_unused_lock(e.path);
         total -= e.bytes;
     }
     return removed;

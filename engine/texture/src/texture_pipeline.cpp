@@ -125,6 +125,16 @@ std::string without_hint(const ImageRecord& img, const std::string& error) {
     return error.starts_with(prefix) ? error.substr(prefix.size()) : error;
 }
 
+// Takes a cache hit's levels and inspection data.
+void use_hit(PreparedTexture& t, CacheLookup& found, const PipelineOptions& opt) {
+    t.state = opt.device_supports_bc ? CacheState::Hit : CacheState::Fallback;
+    t.width = found.texture.width, t.height = found.texture.height;
+    t.levels = std::move(found.texture.levels);
+    t.bytes_on_disk = found.file_bytes;
+    if (const std::string* p = found.texture.find(kKeyPsnr))
+        t.psnr = std::strtod(p->c_str(), nullptr);
+}
+
 } // namespace
 
 std::string texture_recipe(const TextureUse& use, const PipelineOptions& opt) {
@@ -207,12 +217,7 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
             t.cache_file = cache->file_for(key);
             CacheLookup found = cache->load(key, t.source_hash, t.recipe);
             if (found.state == LookupState::Hit) {
-                t.state = opt.device_supports_bc ? CacheState::Hit : CacheState::Fallback;
-                t.width = found.texture.width, t.height = found.texture.height;
-                t.levels = std::move(found.texture.levels);
-                t.bytes_on_disk = found.file_bytes;
-                if (const std::string* p = found.texture.find(kKeyPsnr))
-                    t.psnr = std::strtod(p->c_str(), nullptr);
+                use_hit(t, found, opt);
             } else if (found.state == LookupState::Stale || found.state == LookupState::Corrupt) {
                 t.state = found.state == LookupState::Stale ? CacheState::Stale
                                                             : CacheState::Recompressed;
@@ -268,6 +273,22 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
             add_once(set.warnings, failure_warning(t, reason));
             continue;
         }
+        const Hash128 key = cache_key(t.source_hash, t.recipe);
+        EntryLock lock; // held until this entry is stored
+        if (cache) {
+            // Another process making the same entry holds its lock: wait, then reuse.
+            lock = cache->lock_entry(key, opt.cache_lock_timeout);
+            if (!lock.held())
+                set.warnings.push_back("texture cache: " + t.cache_file.string() +
+                                       ": another process is still making it; making it here too");
+            CacheLookup found = cache->load(key, t.source_hash, t.recipe);
+            if (found.state == LookupState::Hit) {
+                use_hit(t, found, opt);
+                t.note = "made by another process while this one waited";
+                decoded[i] = {};
+                continue;
+            }
+        }
         const TextureUse& use = uses[misses[i]];
         t.width = decoded[i].width, t.height = decoded[i].height;
         compress(t, use, decoded[i], opt);
@@ -278,7 +299,6 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
         // "inf" for lossless levels; strtod reads it back.
         if (t.psnr) ktx.metadata.emplace_back(std::string(kKeyPsnr), std::to_string(*t.psnr));
         std::string error;
-        const Hash128 key = cache_key(t.source_hash, t.recipe);
         if (!cache->store(key, t.source_hash, t.recipe, std::move(ktx), error)) {
             t.note = error;
             set.warnings.push_back("texture cache: " + error);
@@ -286,10 +306,14 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
     }
     for (PreparedTexture& t : set.textures) {
         for (const auto& level : t.levels) t.bytes_gpu += level.size();
+        // Only a regular file has a size on disk; a directory or FIFO where the entry
+        // belongs was reported by the lookup and the failed store (it stays 0 then).
         std::error_code ec;
         if (!t.cache_file.empty() && t.bytes_on_disk == 0 &&
-            std::filesystem::exists(t.cache_file, ec))
-            t.bytes_on_disk = std::filesystem::file_size(t.cache_file, ec);
+            std::filesystem::is_regular_file(t.cache_file, ec)) {
+            const std::uintmax_t size = std::filesystem::file_size(t.cache_file, ec);
+            if (!ec) t.bytes_on_disk = size;
+        }
     }
     return set;
 }

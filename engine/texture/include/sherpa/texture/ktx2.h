@@ -33,6 +33,10 @@ inline std::uint32_t mip_extent(std::uint32_t base, std::uint32_t level) {
     return v ? v : 1;
 }
 
+// The KTXwriter entry write_ktx2 adds when the metadata has none.
+inline constexpr std::string_view kKeyKtxWriter = "KTXwriter";
+inline constexpr std::string_view kKtxWriterName = "Sherpa texture pipeline";
+
 struct Ktx2Texture {
     VkFormat format = VkFormat::Undefined;
     std::uint32_t width = 0, height = 0;

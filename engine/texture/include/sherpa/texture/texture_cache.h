@@ -1,15 +1,18 @@
 #pragma once
 // On-disk cache of compressed textures: one KTX2 file per (source bytes, recipe),
 // named by a 128-bit key. Files carry their source hash, recipe and a checksum of
-// the level data in KTX2 key/value entries, so a damaged or mismatched file is
-// recognised. Writes are atomic (temp file, fsync, rename), which makes concurrent
-// writers of the same key safe: each renames a complete file and the last wins.
+// header, levels and metadata in KTX2 key/value entries, so a damaged or mismatched
+// file is recognised. Writes are atomic (temp file, fsync, rename), which makes
+// concurrent writers of the same key safe: each renames a complete file and the last
+// wins; a per-entry lock file lets a second writer wait for the first instead.
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include <sherpa/texture/ktx2.h>
 
@@ -23,11 +26,18 @@ struct Hash128 {
 
 // XXH3-128 of the bytes.
 Hash128 hash_bytes(std::span<const std::uint8_t> bytes);
-// The cache key: XXH3-128 over the source hash and the recipe text, which names
-// everything that changes the output (format, encoder version, quality, mips...).
+// Bumped when the file layout or what the checksum covers changes. Part of every
+// key, so files of older formats are never read (LRU eviction removes them).
+// 2: the checksum covers header and metadata too (a flipped PSNR digit was a hit).
+inline constexpr int kCacheFormatVersion = 2;
+// The cache key: XXH3-128 over the cache format, the source hash and the recipe
+// text, which names everything that changes the output (format, encoder version,
+// quality, mips...).
 Hash128 cache_key(const Hash128& source, std::string_view recipe);
-// XXH3-64 of all levels in order, as 16 hex digits (the KTX2 "sherpa.checksum").
-std::string level_checksum(const Ktx2Texture& texture);
+// XXH3-64 as 16 hex digits (the KTX2 "sherpa.checksum") over format, size, every
+// level and every metadata entry except the checksum itself (in key order, as the
+// KTX2 writer stores them), each length-prefixed so no two entries hash alike.
+std::string entry_checksum(const Ktx2Texture& texture);
 
 // Metadata keys Sherpa writes into its KTX2 files.
 inline constexpr std::string_view kKeySourceHash = "sherpa.source-hash";
@@ -59,6 +69,24 @@ struct CacheLookup {
     std::uint64_t file_bytes = 0;
 };
 
+// An exclusive lock on one cache entry (flock on "<key>.ktx2.lock"), held while the
+// entry is being made, so a second process making the same entry waits and reuses
+// it. Released when destroyed, or by the kernel when its holder dies.
+class EntryLock {
+public:
+    EntryLock() = default;
+    explicit EntryLock(int fd) : fd_(fd) {}
+    EntryLock(EntryLock&& other) noexcept : fd_(std::exchange(other.fd_, -1)) {}
+    EntryLock& operator=(EntryLock&& other) noexcept;
+    EntryLock(const EntryLock&) = delete;
+    EntryLock& operator=(const EntryLock&) = delete;
+    ~EntryLock();
+    bool held() const { return fd_ >= 0; }
+
+private:
+    int fd_ = -1;
+};
+
 class TextureCache {
 public:
     // `max_bytes`: total size of *.ktx2 files kept; older files (by last use)
@@ -78,9 +106,15 @@ public:
     bool store(const Hash128& key, const Hash128& source, std::string_view recipe,
                Ktx2Texture texture, std::string& error) const;
 
-    // Removes least recently used files until the total is within the cap, and
-    // temp files abandoned by crashed writers (older than an hour).
-    // Returns the number of cache files removed.
+    // Takes the entry's lock, waiting up to `timeout` while another process (or
+    // thread) holds it. Not held on timeout or when the lock file cannot be made:
+    // the caller then makes the entry itself (duplicate work, never a torn file).
+    EntryLock lock_entry(const Hash128& key, std::chrono::milliseconds timeout) const;
+
+    // Removes temp files abandoned by dead writers (see write_file_atomic: the name
+    // holds the writer's PID; a minute old and that process gone, or an hour old),
+    // then least recently used files until cache files plus live temp files are
+    // within the cap. Returns the number of cache files removed.
     std::size_t evict(const std::filesystem::path& keep = {}) const;
 
 private:

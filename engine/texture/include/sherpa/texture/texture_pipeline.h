@@ -3,6 +3,7 @@
 // scene's materials use, load each from the KTX2 cache or decode, mip and
 // compress it, and hand back CPU-side prepared textures (levels + Vulkan format)
 // for the GPU layer to upload, with the inspection data the texture dock shows.
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -45,6 +46,9 @@ struct PipelineOptions {
     int bc5_level = kBc5DefaultLevel;
     bool device_supports_bc = true; // false: RGBA8 fallback
     int decode_threads = 2;         // OIIO gains nothing from threads within one file
+    // How long to wait for another process (or thread) making the same cache entry
+    // before making it here too.
+    std::chrono::milliseconds cache_lock_timeout{std::chrono::minutes(2)};
     SimdLevel simd = best_simd_level();
     // Textures ready of textures to prepare (cache hits count at once, misses as
     // each is compressed); called on the calling thread.

@@ -58,18 +58,36 @@ def quat_axis(axis, angle):
 
 def rigged(times=(0.0, 1.0, 2.0), rot_keys=None, weights=None, ibm=None, joints=None,
            mesh_weights=(0.25, 0.5), node_weights=None, weight_times=None, weight_values=None,
-           scale_keys=None):
+           scale_keys=None, joint_type=5121, weight_type=5126, sparse_target=False):
     """Two triangles (a strip of 4 vertices) skinned to a 2-joint chain, 2 morph targets,
     an animation rotating the second joint and driving the weights."""
     b = Builder()
     pos = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]]
     p = b.add("f", pos, "VEC3", minmax=True)
     idx = b.add("H", [0, 1, 2, 2, 1, 3], "SCALAR", 5123)
-    j = b.add("B", joints or [[0, 1, 0, 0]] * 4, "VEC4", 5121)
-    w = b.add("f", weights or [[1, 0, 0, 0], [0.5, 0.5, 0, 0], [0.25, 0.75, 0, 0], [0, 1, 0, 0]],
-              "VEC4")
+    j = b.add("B" if joint_type == 5121 else "H", joints or [[0, 1, 0, 0]] * 4, "VEC4",
+              joint_type)
+    wv = weights or [[1, 0, 0, 0], [0.5, 0.5, 0, 0], [0.25, 0.75, 0, 0], [0, 1, 0, 0]]
+    if weight_type == 5126:
+        w = b.add("f", wv, "VEC4")
+    else:  # normalized unsigned byte/short: sums of exactly 255 / 65535
+        top = 255 if weight_type == 5121 else 65535
+        q = [[round(x * top) for x in v] for v in wv]
+        for v in q:
+            v[v.index(max(v))] += top - sum(v)
+        w = b.add("B" if weight_type == 5121 else "H", q, "VEC4", weight_type, normalized=True)
     t0 = b.add("f", [[0, 0, 0.5], [0, 0, 0], [0, 0, 0], [0, 0, 0.25]], "VEC3")
-    t1 = b.add("f", [[0.1, 0, 0], [0, 0.2, 0], [0, 0, 0.3], [0, 0, 0]], "VEC3")
+    if sparse_target:  # target 1 as a sparse accessor over zeros: vertices 1 and 2 move
+        si = b.add("B", [1, 2], "SCALAR", 5121)
+        sv = b.add("f", [[0, 0.2, 0], [0, 0, 0.3]], "VEC3")
+        b.accessors.append({"componentType": 5126, "count": 4, "type": "VEC3",
+                            "sparse": {"count": 2,
+                                       "indices": {"bufferView": b.accessors[si]["bufferView"],
+                                                   "componentType": 5121},
+                                       "values": {"bufferView": b.accessors[sv]["bufferView"]}}})
+        t1 = len(b.accessors) - 1
+    else:
+        t1 = b.add("f", [[0.1, 0, 0], [0, 0.2, 0], [0, 0, 0.3], [0, 0, 0]], "VEC3")
     ibm_values = ibm or [[1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1],
                          [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1]]
     ib = b.add("f", ibm_values, "MAT4")
@@ -150,6 +168,9 @@ def interpolation_test():
 def main():
     write("motion_valid.gltf", rigged())
     write("interpolation_test.gltf", interpolation_test())
+    write("motion_quantized.gltf", rigged(joint_type=5123, weight_type=5121))
+    write("motion_quantized_u16.gltf", rigged(joint_type=5121, weight_type=5123))
+    write("motion_sparse_target.gltf", rigged(sparse_target=True))
     # Import errors.
     write("motion_times_not_increasing.gltf", rigged(times=(0.0, 2.0, 1.0)))
     write("motion_nan_key.gltf",

@@ -4,6 +4,7 @@
 // TRS and our skinned + morphed world positions of every vertex must agree with it to
 // 1e-4 of the scene size. The generated InterpolationTest equivalent is compared at
 // 100 times per animation.
+#include "cli/cli_run.h"
 #include "test_support.h"
 
 #include <sherpa/scene/animation.h>
@@ -136,19 +137,21 @@ TEST_P(MotionOracle, PosedVerticesAndNodesAgreeWithThreeJs) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Issue16, MotionOracle,
-                         ::testing::Values("RiggedSimple", "SimpleMorph", "AnimatedMorphSphere",
-                                           "AnimatedCube", "BoxAnimated", "AnimatedTriangle", "VC",
-                                           std::string(SHERPA_TEST_DATA_DIR) + "/motion_valid.gltf",
-                                           std::string(SHERPA_TEST_DATA_DIR) +
-                                               "/motion_unnormalized_weights.gltf"),
-                         [](const auto& param_info) {
-                             std::string n =
-                                 param_info.param.substr(param_info.param.find_last_of('/') + 1);
-                             for (char& c : n)
-                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                             return n;
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Issue16, MotionOracle,
+    ::testing::Values("RiggedSimple", "SimpleMorph", "AnimatedMorphSphere", "AnimatedCube",
+                      "BoxAnimated", "AnimatedTriangle", "VC",
+                      std::string(SHERPA_TEST_DATA_DIR) + "/motion_valid.gltf",
+                      std::string(SHERPA_TEST_DATA_DIR) + "/motion_unnormalized_weights.gltf",
+                      std::string(SHERPA_TEST_DATA_DIR) + "/motion_quantized.gltf",
+                      std::string(SHERPA_TEST_DATA_DIR) + "/motion_quantized_u16.gltf",
+                      std::string(SHERPA_TEST_DATA_DIR) + "/motion_sparse_target.gltf"),
+    [](const auto& param_info) {
+        std::string n = param_info.param.substr(param_info.param.find_last_of('/') + 1);
+        for (char& c : n)
+            if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+        return n;
+    });
 
 // InterpolationTest's equivalent: nine animations (STEP, LINEAR, CUBICSPLINE on
 // translation, rotation, scale), each at 100 times across and a little beyond its keys.
@@ -165,6 +168,37 @@ TEST(MotionOracle, InterpolationTestAgreesAt100Times) {
         std::printf("%s: max TRS diff %.3g\n",
                     loaded.scene->animations[static_cast<std::size_t>(anim)].name.c_str(),
                     a.max_trs);
+    }
+}
+
+// `info --json --time T` reports as posed_bounds the bounds of the vertices three.js
+// poses at T (every primitive of the displayed scene).
+TEST(MotionOracle, CliPosedBoundsAreThreeJsVertexBounds) {
+    const std::pair<const char*, double> cases[] = {{"RiggedSimple", 0.5},
+                                                    {"AnimatedMorphSphere", 1.3},
+                                                    {"SimpleMorph", 2.2},
+                                                    {"BoxAnimated", 1.7}};
+    for (const auto& [model, t] : cases) {
+        const std::string file = test::gltf_asset(model);
+        const auto r =
+            sherpa::test::run_cli("info '" + file + "' --json --time " + std::to_string(t));
+        ASSERT_EQ(r.exit_code, 0) << r.out;
+        const json ours = json::parse(r.out);
+        const json oracle = run_oracle(file, 0, {t});
+        ASSERT_TRUE(oracle.contains("frames"));
+        glm::dvec3 lo(1e300), hi(-1e300);
+        for (const json& p : oracle["frames"][0]["primitives"])
+            for (std::size_t i = 0; i + 2 < p["positions"].size(); i += 3)
+                for (int c = 0; c < 3; ++c) {
+                    lo[c] = std::min(lo[c], p["positions"][i + c].get<double>());
+                    hi[c] = std::max(hi[c], p["positions"][i + c].get<double>());
+                }
+        const double size = glm::length(hi - lo);
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(ours["posed_bounds"]["min"][c].get<double>(), lo[c], 1e-4 * size) << model;
+            EXPECT_NEAR(ours["posed_bounds"]["max"][c].get<double>(), hi[c], 1e-4 * size) << model;
+        }
+        EXPECT_EQ(ours["pose"]["culling_contains_posed"], true) << model;
     }
 }
 

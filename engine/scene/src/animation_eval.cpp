@@ -27,9 +27,18 @@ glm::quat slerp(glm::quat a, glm::quat b, float u) {
     return normalised(a * (std::sin((1.0f - u) * theta) / s) + b * (std::sin(u * theta) / s));
 }
 
+// glTF stores quaternions as x, y, z, w; glm's constructor takes w first.
 glm::quat quat_at(const float* v) {
     return glm::quat(v[3], v[0], v[1], v[2]);
-} // glTF x,y,z,w
+}
+
+// T * R * S composed directly (the rotation's columns scaled), not as three matrix
+// products: this is the inner loop of evaluation.
+glm::mat4 trs(const glm::vec3& t, const glm::quat& r, const glm::vec3& s) {
+    const glm::mat3 m = glm::mat3_cast(r);
+    return glm::mat4(glm::vec4(m[0] * s.x, 0.0f), glm::vec4(m[1] * s.y, 0.0f),
+                     glm::vec4(m[2] * s.z, 0.0f), glm::vec4(t, 1.0f));
+}
 
 } // namespace
 
@@ -125,9 +134,7 @@ Pose evaluate_pose(const Scene& scene, std::int32_t animation, double time) {
     for (std::size_t i = 0; i < n; ++i)
         pose.local[i] = scene.nodes[i].has_matrix
                             ? scene.nodes[i].matrix
-                            : glm::translate(glm::mat4(1.0f), pose.translation[i]) *
-                                  glm::mat4_cast(pose.rotation[i]) *
-                                  glm::scale(glm::mat4(1.0f), pose.scale[i]);
+                            : trs(pose.translation[i], pose.rotation[i], pose.scale[i]);
     // Parents before children: walk each root's tree (the importer refused cycles).
     pose.world.assign(n, glm::mat4(1.0f));
     std::vector<std::uint32_t> stack;

@@ -206,6 +206,10 @@ int run_render(Args args) {
             std::fprintf(stderr, "error: %s\n", error.c_str());
             return kExitLoadError;
         }
+        // The importer's warnings (what is not drawn, repaired or skipped), then the
+        // texture pipeline's: render says what it leaves out, as info does.
+        for (const auto& w : loaded.scene->warnings)
+            std::fprintf(stderr, "warning: %s\n", w.c_str());
         for (const auto& w : renderer.scene()->warnings())
             std::fprintf(stderr, "warning: %s\n", w.c_str());
         if (!report_path.empty()) {

@@ -1,5 +1,7 @@
 #include "scene_json.h"
 
+#include "motion_json.h"
+
 namespace sherpa::cli {
 
 using nlohmann::json;
@@ -71,9 +73,12 @@ json scene_info_json(const Scene& scene) {
         } else {
             e["skipped"] = p.skipped_reason;
         }
+        if (p.morph_targets) e["morph_targets"] = morph_targets_json(scene, p);
         detail.push_back(std::move(e));
     }
     j["primitives_detail"] = std::move(detail);
+    j["skins"] = skins_json(scene);
+    j["animations"] = animations_json(scene);
     j["usage"] = usage_json(scene, build_usage_report(scene));
     j["warnings"] = scene.warnings;
     json violations = json::array();

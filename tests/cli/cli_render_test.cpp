@@ -98,12 +98,12 @@ bool warned(const std::string& out, const std::string& fragment) {
     return false;
 }
 
-// Until skinning, morphing and animation are implemented, render says what it leaves
+// Until the renderer skins, morphs and plays animations, render says what it leaves
 // out, as info does: animations, morph targets, skins and unused attributes.
 TEST(CliRender, NamesWhatItDoesNotDraw) {
     const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
         {"RiggedSimple",
-         {"animation(s)", "not played", "skinning is not applied",
+         {"animation(s)", "not played by `render`", "drawn in their bind pose",
           "attributes JOINTS_0, WEIGHTS_0 are not used for drawing"}},
         {"AnimatedMorphSphere",
          {"animation(s) (\"Globe\")", "1 primitive(s) with 2 morph target(s)"}}};

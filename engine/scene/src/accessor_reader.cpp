@@ -38,8 +38,10 @@ std::uint32_t type_components(int type) {
         return 3;
     case TINYGLTF_TYPE_VEC4:
         return 4;
+    case TINYGLTF_TYPE_MAT4:
+        return 16; // skins' inverseBindMatrices: 4-byte columns, no padding
     default:
-        return 0; // matrices are never vertex attributes or indices
+        return 0; // MAT2/MAT3 (column padding) are never used by what Sherpa reads
     }
 }
 
@@ -181,7 +183,7 @@ void validate_accessor_shape(const tinygltf::Accessor& acc, const std::string& w
         fail(where + ": componentType " + std::to_string(acc.componentType) + " is not valid");
     if (type_components(acc.type) == 0)
         fail(where + ": accessor type " + std::to_string(acc.type) +
-             " is not SCALAR/VEC2/VEC3/VEC4");
+             " is not SCALAR/VEC2/VEC3/VEC4/MAT4");
 }
 
 } // namespace
@@ -247,7 +249,7 @@ std::vector<T> decode_accessor(const tinygltf::Model& model, const tinygltf::Acc
                                    static_cast<std::size_t>(sp.values.byteOffset), sp_count,
                                    components, acc.componentType, sp_path + ".values");
     }
-    // count <= 2^32 / 64 (accessor_count) and components <= 4: no overflow.
+    // count <= 2^32 / 64 (accessor_count) and components <= 16: no overflow.
     std::vector<T> out(count * components, T{});
     if (acc.bufferView >= 0)
         read_region(dense, count, components,

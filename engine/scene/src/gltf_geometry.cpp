@@ -3,6 +3,7 @@
 #include "accessor_reader.h"
 #include "import_context.h"
 #include "import_error.h"
+#include "motion_internal.h"
 
 #include <cmath>
 
@@ -141,6 +142,7 @@ void import_primitive(ImportContext& ctx, std::uint32_t mesh_index, std::uint32_
         fail(where + ".mode: " + std::to_string(mode) + " is not a valid primitive mode");
     info.mode = static_cast<PrimitiveMode>(mode);
     info.material = prim.material;
+    info.morph_targets = static_cast<std::uint32_t>(prim.targets.size());
     if (prim.material >= static_cast<int>(model.materials.size()) || prim.material < -1)
         fail(where + ".material: index " + std::to_string(prim.material) +
              " out of range (file has " + std::to_string(model.materials.size()) + " materials)");
@@ -277,6 +279,7 @@ void import_primitive(ImportContext& ctx, std::uint32_t mesh_index, std::uint32_
     if (prim.material < 0) ctx.warn(where + ": no material; using the default material");
     for (const auto& v : mesh.vertices) mesh.local_bounds.expand(v.position);
 
+    info.motion = import_primitive_motion(ctx, prim, where, positions, info);
     info.engine_mesh = static_cast<std::int32_t>(scene.meshes.size());
     scene.mesh_primitives[mesh_index].push_back(info.engine_mesh);
     scene.meshes.push_back(std::move(mesh));

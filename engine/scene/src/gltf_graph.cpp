@@ -205,8 +205,9 @@ void import_nodes_and_scenes(ImportContext& ctx) {
         for (std::size_t c : chain) state[c] = 2;
     }
     if (skinned)
-        ctx.warn(std::to_string(skinned) + " skinned mesh nodes are shown in their node pose; "
-                                           "skinning is not applied");
+        ctx.warn(std::to_string(skinned) +
+                 " skinned mesh node(s) drawn in their bind pose: skins are imported and posed "
+                 "by `info --time`, but `render` does not skin yet");
     scene.counts.nodes = n;
 
     for (std::size_t s = 0; s < model.scenes.size(); ++s) {

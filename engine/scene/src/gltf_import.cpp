@@ -5,6 +5,7 @@
 #include "import_context.h"
 #include "import_error.h"
 #include "load_stages.h"
+#include "motion_internal.h"
 
 #include <sherpa/scene/scene_loader.h>
 
@@ -70,9 +71,10 @@ std::string clean_message(const std::string& s) {
     return out;
 }
 
-// Until skinning, morphing and animation are implemented, the file's animations,
-// morph targets and the attributes Sherpa does not draw with (JOINTS_n, WEIGHTS_n,
-// TEXCOORD_2+, ...) are each named in a warning: nothing is dropped without a word.
+// Skins, morph targets and animations are imported and evaluated (`info --time`), but
+// the renderer still draws the static pose: each is named in a warning, as are the
+// attributes Sherpa does not draw with (JOINTS_n, WEIGHTS_n, TEXCOORD_2+, ...), so
+// nothing is dropped or frozen without a word.
 void warn_unsupported_content(detail::ImportContext& ctx) {
     const auto& model = ctx.model;
     if (!model.animations.empty()) {
@@ -83,7 +85,8 @@ void warn_unsupported_content(detail::ImportContext& ctx) {
                                             : "\"" + model.animations[i].name + "\"");
         if (model.animations.size() > 5) names += ", ...";
         ctx.warn(std::to_string(model.animations.size()) + " animation(s) (" + names +
-                 ") not played: animation is not implemented; the static pose is shown");
+                 ") imported and evaluated by `info --time`, but not played by `render`, which "
+                 "shows the static pose");
     }
     std::size_t morphed = 0, targets = 0;
     std::set<std::string> unused;
@@ -98,13 +101,15 @@ void warn_unsupported_content(detail::ImportContext& ctx) {
         }
     if (morphed)
         ctx.warn(std::to_string(morphed) + " primitive(s) with " + std::to_string(targets) +
-                 " morph target(s) shown in their base shape: morphing is not implemented");
+                 " morph target(s) imported (posed by `info --time`) but drawn in their base shape "
+                 "by `render`");
     if (!unused.empty()) {
         std::string names;
         for (const auto& n : unused) names += (names.empty() ? "" : ", ") + n;
         ctx.warn("attributes " + names + " are not used for drawing" +
                  (unused.count("JOINTS_0") || unused.count("WEIGHTS_0")
-                      ? std::string(" (skinning is not implemented)")
+                      ? std::string(
+                            " (skinning is evaluated by `info --time`, not yet drawn by `render`)")
                       : std::string()));
     }
 }
@@ -171,6 +176,9 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         if (!detail::tangent_stage(*scene, options)) return detail::cancelled_result();
         detail::import_lights_cameras(ctx);
         detail::import_nodes_and_scenes(ctx);
+        detail::import_skins(ctx);
+        detail::import_default_weights(ctx);
+        detail::import_animations(ctx);
         warn_unsupported_content(ctx);
         const std::int32_t scene_index =
             options.scene_index >= 0 ? options.scene_index : std::max(model.defaultScene, 0);

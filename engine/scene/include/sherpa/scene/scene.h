@@ -12,6 +12,7 @@
 
 #include <sherpa/core/aabb.h>
 #include <sherpa/scene/material.h>
+#include <sherpa/scene/motion.h>
 #include <sherpa/scene/texture_records.h>
 #include <sherpa/scene/vertex.h>
 
@@ -79,6 +80,8 @@ struct PrimitiveInfo {
     std::int32_t engine_mesh = -1;            // index into Scene::meshes, -1 if skipped
     std::string skipped_reason;               // why no engine mesh was made
     std::vector<std::string> file_attributes; // attribute semantics the file gives
+    std::int32_t motion = -1;                 // index into Scene::motions, -1: static
+    std::uint32_t morph_targets = 0;          // as the file gives them
 };
 
 struct Node {
@@ -91,6 +94,7 @@ struct Node {
     glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
     glm::vec3 scale{1.0f};
     std::int32_t mesh = -1, camera = -1, light = -1, skin = -1;
+    std::vector<float> weights; // morph weights: the node's, else its mesh's, else zeros
     glm::mat4 local_transform() const;
 };
 
@@ -173,6 +177,10 @@ struct Scene {
     std::vector<SamplerDesc> samplers;
     std::vector<Light> lights;
     std::vector<Camera> cameras;
+    std::vector<Skin> skins;
+    std::vector<Animation> animations;
+    std::vector<PrimitiveMotion> motions;         // only primitives that skin or morph
+    std::vector<std::vector<float>> mesh_weights; // per glTF mesh: default morph weights
 
     // Flattened displayed scene.
     std::vector<MeshInstance> instances;

@@ -1,0 +1,28 @@
+#pragma once
+// `info` output for skins, animations and morph targets, and `info --time`'s pose.
+#include <nlohmann/json.hpp>
+
+#include <sherpa/scene/animation.h>
+#include <sherpa/scene/scene.h>
+
+namespace sherpa::cli {
+
+nlohmann::json skins_json(const Scene& scene);
+nlohmann::json animations_json(const Scene& scene);
+// `morph_targets` of one primitive: count, attributes, the mesh's default weights.
+nlohmann::json morph_targets_json(const Scene& scene, const PrimitiveInfo& p);
+
+struct PosedReport {
+    std::int32_t animation = -1; // -1: no animation, the default weights
+    double time = 0.0;
+    PosedBounds bounds;
+};
+PosedReport pose_report(const Scene& scene, std::int32_t animation, double time);
+// {"pose": {animation, animation_name, time, culling_contains_posed}, "posed_bounds",
+// "culling_bounds"}: merged into the top level of `info --json`.
+nlohmann::json posed_json(const Scene& scene, const PosedReport& r);
+
+void print_motion_text(const Scene& scene);
+void print_posed_text(const PosedReport& r);
+
+} // namespace sherpa::cli

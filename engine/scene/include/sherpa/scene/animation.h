@@ -1,0 +1,54 @@
+#pragma once
+// Animation evaluation and CPU posing: pure functions of (scene, animation, time).
+// Nothing here changes the Scene; the renderer and culling are not yet driven by it.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <sherpa/core/aabb.h>
+#include <sherpa/scene/scene.h>
+
+namespace sherpa {
+
+// Every node's transform and morph weights at one time.
+struct Pose {
+    std::vector<glm::vec3> translation, scale; // per node (TRS nodes; matrix nodes keep theirs)
+    std::vector<glm::quat> rotation;           // unit
+    std::vector<glm::mat4> local, world;     // per node, every node (not only the displayed scene)
+    std::vector<std::vector<float>> weights; // per node: morph weights (empty without targets)
+    std::vector<std::vector<glm::mat4>> joint_matrices; // per skin: world(joint) x inverseBind
+};
+
+// Samples `s` at `time` into `out` (s.width floats). Times outside the keys clamp to
+// the first/last key; STEP holds the key at or before `time`; LINEAR slerps rotations
+// (shortest arc) and lerps the rest; CUBICSPLINE evaluates glTF's Hermite spline with
+// tangents scaled by the key interval. Rotations come out normalised. A NaN time
+// evaluates as the first key.
+void sample_animation(const AnimationSampler& s, AnimationPath path, double time, float* out);
+
+// The pose of `scene` with animation `animation` (-1: none, the file's default pose) at
+// `time` seconds. Precondition: animation < scene.animations.size().
+Pose evaluate_pose(const Scene& scene, std::int32_t animation, double time);
+
+// World-space positions of primitive `prim`'s vertices (the file's vertex order) on node
+// `node`, morphed by the node's weights and skinned by its skin when both apply; static
+// primitives are transformed by the node's world matrix. Empty for primitives without an
+// engine mesh.
+std::vector<glm::vec3> posed_positions(const Scene& scene, const Pose& pose, std::uint32_t node,
+                                       const PrimitiveInfo& prim);
+
+// Conservative world bounds of the same vertices, from the per-joint boxes computed at
+// load (PrimitiveMotion::boxes) with the morph delta boxes scaled by the current
+// weights: always contains posed_positions, costs O(joints + targets), not O(vertices).
+Aabb culling_bounds(const Scene& scene, const Pose& pose, std::uint32_t node,
+                    const PrimitiveInfo& prim);
+
+// Exact and conservative bounds of the displayed scene's instances in `pose`.
+struct PosedBounds {
+    Aabb exact, culling;
+};
+PosedBounds posed_scene_bounds(const Scene& scene, const Pose& pose);
+
+} // namespace sherpa

@@ -1,0 +1,157 @@
+// glTF animations -> sherpa::Animation. Times must be finite and strictly increasing,
+// values finite and as many as the times and interpolation require: anything else is an
+// ImportError naming the sampler, so evaluation never meets NaN or an unsorted key list.
+#include "accessor_reader.h"
+#include "import_context.h"
+#include "import_error.h"
+#include "motion_internal.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tiny_gltf.h>
+
+namespace sherpa::detail {
+namespace {
+
+AnimationSampler read_sampler(ImportContext& ctx, const tinygltf::AnimationSampler& src,
+                              std::uint32_t width, std::uint32_t components,
+                              const std::string& where) {
+    AnimationSampler s;
+    s.width = width;
+    if (src.interpolation == "STEP")
+        s.interpolation = Interpolation::Step;
+    else if (src.interpolation == "LINEAR" || src.interpolation.empty())
+        s.interpolation = Interpolation::Linear;
+    else if (src.interpolation == "CUBICSPLINE")
+        s.interpolation = Interpolation::CubicSpline;
+    else
+        fail(where + ".interpolation: \"" + src.interpolation +
+             "\" is not STEP, LINEAR or CUBICSPLINE");
+    std::uint32_t nc = 0;
+    s.times = read_accessor_floats(ctx.model, src.input, {1}, nc, where + ".input");
+    if (s.times.empty()) fail(where + ".input: has no keyframes");
+    for (std::size_t k = 0; k < s.times.size(); ++k) {
+        if (!std::isfinite(s.times[k]))
+            fail(where + ".input[" + std::to_string(k) + "] is not finite");
+        if (k > 0 && !(s.times[k] > s.times[k - 1]))
+            fail(where + ".input: key times are not strictly increasing (key " + std::to_string(k) +
+                 " at " + number_text(s.times[k]) + " after " + number_text(s.times[k - 1]) + ")");
+    }
+    s.values = read_accessor_floats(ctx.model, src.output, {components}, nc, where + ".output");
+    const std::size_t per_key =
+        std::size_t{width} * (s.interpolation == Interpolation::CubicSpline ? 3 : 1);
+    if (s.values.size() != s.times.size() * per_key)
+        fail(where + ".output: has " + std::to_string(s.values.size()) + " values; " +
+             std::to_string(s.times.size()) + " keys " +
+             (s.interpolation == Interpolation::CubicSpline ? "(cubic spline) " : "") + "need " +
+             std::to_string(s.times.size() * per_key));
+    for (std::size_t i = 0; i < s.values.size(); ++i)
+        if (!std::isfinite(s.values[i]))
+            fail(where + ".output: value " + std::to_string(i) + " is not finite");
+    return s;
+}
+
+// Rotation keys should be unit quaternions; a zero one has no rotation at all and is
+// replaced by the identity (counted), others are normalised when evaluated.
+void check_rotation_keys(ImportContext& ctx, AnimationSampler& s, const std::string& where) {
+    const bool cubic = s.interpolation == Interpolation::CubicSpline;
+    std::uint32_t zero = 0, far = 0;
+    for (std::size_t k = 0; k < s.times.size(); ++k) {
+        float* q = &s.values[(cubic ? 3 * k + 1 : k) * 4];
+        const double len = std::sqrt(double(q[0]) * q[0] + double(q[1]) * q[1] +
+                                     double(q[2]) * q[2] + double(q[3]) * q[3]);
+        if (len < 1e-12) {
+            ++zero;
+            q[0] = q[1] = q[2] = 0.0f;
+            q[3] = 1.0f;
+        } else if (std::abs(len - 1.0) > 1e-3) {
+            ++far;
+        }
+    }
+    if (zero)
+        ctx.warn(where + ": " + std::to_string(zero) +
+                 " zero rotation keys replaced by the identity");
+    if (far)
+        ctx.warn(where + ": " + std::to_string(far) +
+                 " rotation keys are not unit quaternions; normalised when evaluated");
+}
+
+} // namespace
+
+void import_animations(ImportContext& ctx) {
+    const auto& model = ctx.model;
+    Scene& scene = ctx.scene;
+    for (std::size_t a = 0; a < model.animations.size(); ++a) {
+        const auto& src = model.animations[a];
+        const std::string where = "animations[" + std::to_string(a) + "]";
+        Animation anim;
+        anim.name = src.name;
+        // Each sampler is read with the width of the first channel that uses it.
+        std::vector<int> sampler_index(src.samplers.size(), -1);
+        std::uint32_t skipped = 0;
+        for (std::size_t c = 0; c < src.channels.size(); ++c) {
+            const auto& ch = src.channels[c];
+            const std::string cpath = where + ".channels[" + std::to_string(c) + "]";
+            if (ch.sampler < 0 || static_cast<std::size_t>(ch.sampler) >= src.samplers.size())
+                fail(cpath + ".sampler: index " + std::to_string(ch.sampler) + " out of range");
+            if (ch.target_node < 0) {
+                ++skipped; // glTF allows targets defined by extensions only
+                continue;
+            }
+            if (static_cast<std::size_t>(ch.target_node) >= scene.nodes.size())
+                fail(cpath + ".target.node: " + std::to_string(ch.target_node) + " out of range");
+            const Node& node = scene.nodes[static_cast<std::size_t>(ch.target_node)];
+            AnimationChannel out;
+            out.node = static_cast<std::uint32_t>(ch.target_node);
+            std::uint32_t width = 3, components = 3;
+            if (ch.target_path == "translation") {
+                out.path = AnimationPath::Translation;
+            } else if (ch.target_path == "scale") {
+                out.path = AnimationPath::Scale;
+            } else if (ch.target_path == "rotation") {
+                out.path = AnimationPath::Rotation;
+                width = components = 4;
+            } else if (ch.target_path == "weights") {
+                out.path = AnimationPath::Weights;
+                width = static_cast<std::uint32_t>(node.weights.size());
+                components = 1;
+                if (width == 0)
+                    fail(cpath + ": animates weights of nodes[" + std::to_string(out.node) +
+                         "], which has no morph targets");
+            } else {
+                ++skipped; // "pointer" and other extension paths
+                continue;
+            }
+            if (node.has_matrix && out.path != AnimationPath::Weights)
+                fail(cpath + ": animates nodes[" + std::to_string(out.node) +
+                     "], which has a matrix (glTF forbids animating it)");
+            int& si = sampler_index[static_cast<std::size_t>(ch.sampler)];
+            const std::string spath = where + ".samplers[" + std::to_string(ch.sampler) + "]";
+            if (si < 0) {
+                anim.samplers.push_back(
+                    read_sampler(ctx, src.samplers[static_cast<std::size_t>(ch.sampler)], width,
+                                 components, spath));
+                if (out.path == AnimationPath::Rotation)
+                    check_rotation_keys(ctx, anim.samplers.back(), spath);
+                si = static_cast<int>(anim.samplers.size() - 1);
+            } else if (anim.samplers[static_cast<std::size_t>(si)].width != width) {
+                fail(cpath + ": shares " + spath + " with a channel of another value size");
+            }
+            out.sampler = static_cast<std::uint32_t>(si);
+            anim.channels.push_back(out);
+        }
+        if (skipped)
+            ctx.warn(where + ": " + std::to_string(skipped) +
+                     " channel(s) without a node or with an unknown path ignored");
+        bool first = true;
+        for (const auto& s : anim.samplers) {
+            anim.start = first ? s.times.front() : std::min(anim.start, s.times.front());
+            anim.end = first ? s.times.back() : std::max(anim.end, s.times.back());
+            first = false;
+        }
+        scene.animations.push_back(std::move(anim));
+    }
+}
+
+} // namespace sherpa::detail

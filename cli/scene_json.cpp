@@ -1,5 +1,7 @@
 #include "scene_json.h"
 
+#include <sherpa/scene/gltf_extensions.h>
+
 namespace sherpa::cli {
 
 using nlohmann::json;
@@ -37,6 +39,14 @@ json usage_json(const Scene& scene, const UsageReport& report) {
                 {"saved_fraction", saved}};
 }
 
+// Each extension the file names, and whether Sherpa reads it.
+json extensions_json(const std::vector<std::string>& names) {
+    json out = json::array();
+    for (const auto& n : names)
+        out.push_back({{"name", n}, {"supported", is_supported_gltf_extension(n)}});
+    return out;
+}
+
 json scene_info_json(const Scene& scene) {
     const SourceCounts& c = scene.counts;
     json j = {{"source", scene.source},
@@ -64,6 +74,12 @@ json scene_info_json(const Scene& scene) {
         json e = {{"mesh", p.mesh},         {"primitive", p.primitive}, {"mode", to_string(p.mode)},
                   {"vertices", p.vertices}, {"indices", p.indices},     {"triangles", p.triangles},
                   {"material", p.material}, {"attributes", attrs}};
+        if (p.compression)
+            e["compression"] = {{"codec", p.compression->codec},
+                                {"mode", p.compression->modes},
+                                {"encoded_bytes", p.compression->encoded_bytes},
+                                {"decoded_bytes", p.compression->decoded_bytes},
+                                {"decode_ms", p.compression->decode_ms}};
         if (p.engine_mesh >= 0) {
             const Mesh& m = scene.meshes[static_cast<std::size_t>(p.engine_mesh)];
             e["engine_vertices"] = m.vertices.size();
@@ -74,6 +90,8 @@ json scene_info_json(const Scene& scene) {
         detail.push_back(std::move(e));
     }
     j["primitives_detail"] = std::move(detail);
+    j["extensions_used"] = extensions_json(scene.extensions_used);
+    j["extensions_required"] = extensions_json(scene.extensions_required);
     j["usage"] = usage_json(scene, build_usage_report(scene));
     j["warnings"] = scene.warnings;
     json violations = json::array();

@@ -1,6 +1,7 @@
 // import_gltf(): parse with tinygltf, validate, convert, flatten. Any failure
 // discards the partial scene and reports "FILE: what is wrong".
 #include "gltf_fs.h"
+#include "gltf_meshopt.h"
 #include "gltf_validate.h"
 #include "import_context.h"
 #include "import_error.h"
@@ -23,12 +24,6 @@ namespace {
 // The vertex attributes the engine draws with; any other is reported.
 constexpr std::array<std::string_view, 6> kDrawnAttributes{"POSITION",   "NORMAL",     "TANGENT",
                                                            "TEXCOORD_0", "TEXCOORD_1", "COLOR_0"};
-
-constexpr std::array<std::string_view, 5> kSupportedExtensions{
-    "KHR_texture_transform", "KHR_materials_emissive_strength",
-    "KHR_lights_punctual",   "KHR_materials_unlit",
-    "KHR_mesh_quantization", // every accessor component type is decoded
-};
 
 // Keeps images encoded: decoding belongs to the texture pipeline, which hashes the
 // encoded bytes for its cache. tinygltf hands us the bytes of external files and data
@@ -125,6 +120,9 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         result.error = path + ": " + problem;
         return result;
     }
+    // Compressors' fallback buffers have no data; tinygltf would refuse them.
+    if (auto rewritten = detail::without_fallback_buffers(bytes); !rewritten.empty())
+        bytes = std::move(rewritten);
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(keep_encoded_image, nullptr);
     loader.SetFsCallbacks(detail::safe_fs_callbacks());
@@ -158,15 +156,16 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
 
     const auto t_process = std::chrono::steady_clock::now();
     try {
-        for (const auto& ext : model.extensionsRequired)
-            if (std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), ext) ==
-                kSupportedExtensions.end())
-                detail::fail("extensionsRequired: \"" + ext + "\" is not supported by Sherpa");
+        // validate_gltf_bytes refused unsupported required extensions already.
+        scene->extensions_used = model.extensionsUsed;
+        scene->extensions_required = model.extensionsRequired;
+        const auto decoded_views = detail::decode_meshopt_views(model);
         detail::ImportContext ctx{model, *scene};
         if (!detail::begin_stage(options, LoadStage::Geometry)) return detail::cancelled_result();
         detail::import_samplers_images_textures(ctx);
         detail::import_materials(ctx);
         detail::import_meshes(ctx);
+        detail::attach_meshopt_compression(model, decoded_views, *scene);
         if (!detail::end_stage(options, LoadStage::Geometry)) return detail::cancelled_result();
         if (!detail::tangent_stage(*scene, options)) return detail::cancelled_result();
         detail::import_lights_cameras(ctx);

@@ -246,12 +246,13 @@ void attach_meshopt_compression(const tinygltf::Model& model, std::span<const De
         if (prim.indices >= 0) accessors.push_back(prim.indices);
         PrimitiveCompression c;
         std::set<int> seen;
+        std::set<std::string> modes;
         for (const int a : accessors) {
             if (a < 0 || std::size_t(a) >= model.accessors.size()) continue;
             const auto it = by_view.find(model.accessors[std::size_t(a)].bufferView);
             if (it == by_view.end() || !seen.insert(it->first).second) continue;
             c.codec = it->second->codec;
-            if (c.modes.find(it->second->mode) == std::string::npos)
+            if (modes.insert(it->second->mode).second)
                 c.modes += (c.modes.empty() ? "" : ", ") + it->second->mode;
             c.encoded_bytes += it->second->encoded_bytes;
             c.decoded_bytes += it->second->decoded_bytes;

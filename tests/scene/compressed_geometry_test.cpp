@@ -1,5 +1,6 @@
-// Compressed geometry made by the ecosystem's own tool (gltfpack: EXT_meshopt_compression
-// with KHR_mesh_quantization) from the shared sample models. The reference is the
+// Compressed geometry made by the ecosystem's own tools (gltfpack: EXT_meshopt_compression
+// with KHR_mesh_quantization; gltf-transform: KHR_draco_mesh_compression) from the
+// shared sample models. The reference is the
 // uncompressed source model, read by the same importer: every drawn vertex of the
 // compressed file (world space: gltfpack moves the dequantization into node
 // transforms) must match a vertex of the source within the quantization step, and
@@ -43,7 +44,12 @@ std::vector<CorpusFile> corpus() {
             {"2CylinderEngine.meshopt.glb", "2CylinderEngine", "EXT_meshopt_compression"},
             {"Duck.meshopt_vpf.glb", "Duck", "EXT_meshopt_compression"},
             {"Duck.meshopt.gltf", "Duck", "EXT_meshopt_compression"},
-            {"Duck.khr_meshopt.glb", "Duck", "KHR_meshopt_compression"}};
+            {"Duck.khr_meshopt.glb", "Duck", "KHR_meshopt_compression"},
+            {"Duck.draco.glb", "Duck", "KHR_draco_mesh_compression"},
+            {"DamagedHelmet.draco.glb", "DamagedHelmet", "KHR_draco_mesh_compression"},
+            {"BoxTextured.draco.glb", "BoxTextured", "KHR_draco_mesh_compression"},
+            {"2CylinderEngine.draco.glb", "2CylinderEngine", "KHR_draco_mesh_compression"},
+            {"Duck.draco.gltf", "Duck", "KHR_draco_mesh_compression"}};
 }
 
 // One drawn vertex: world position, world normal and the UV the base colour
@@ -220,7 +226,7 @@ std::string corpus_name(const ::testing::TestParamInfo<CorpusFile>& info) {
     return n;
 }
 
-INSTANTIATE_TEST_SUITE_P(Gltfpack, CompressedFile, ::testing::ValuesIn(corpus()), corpus_name);
+INSTANTIATE_TEST_SUITE_P(NpmTools, CompressedFile, ::testing::ValuesIn(corpus()), corpus_name);
 
 TEST(CompressedCorpus, IsPresent) {
     for (const auto& f : corpus())
@@ -274,6 +280,58 @@ TEST(BrokenMeshopt, CountBeyondTheViewIsNamed) {
     const std::string path =
         broken_copy("big_count.gltf", [](nlohmann::json& e) { e["count"] = 1u << 30; });
     test::expect_clear_load_error(path, "exceeds the view's byteLength");
+}
+
+// A copy of gltf-transform's Duck.draco.gltf (and its .bin), edited.
+std::string broken_draco(const std::string& name,
+                         const std::function<void(nlohmann::json&)>& edit) {
+    const fs::path dir = fs::temp_directory_path() / ("sherpa_draco_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    nlohmann::json doc = test::read_json((corpus_dir() / "Duck.draco.gltf").string());
+    for (const auto& b : doc["buffers"])
+        fs::copy_file(corpus_dir() / b["uri"].get<std::string>(), dir / b["uri"].get<std::string>(),
+                      fs::copy_options::overwrite_existing);
+    edit(doc);
+    const fs::path out = dir / name;
+    std::ofstream(out) << doc.dump();
+    return out.string();
+}
+
+nlohmann::json& draco_extension(nlohmann::json& doc) {
+    return doc["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"];
+}
+
+TEST(BrokenDraco, BlobCutShortIsNamed) {
+    const std::string path = broken_draco("cut_short.gltf", [](nlohmann::json& doc) {
+        auto& view = doc["bufferViews"][draco_extension(doc)["bufferView"].get<int>()];
+        view["byteLength"] = view["byteLength"].get<int>() / 2;
+    });
+    test::expect_clear_load_error(
+        path, "meshes[0].primitives[0].KHR_draco_mesh_compression: the Draco stream");
+}
+
+TEST(BrokenDraco, DeclaredCountDisagreeingWithTheStreamIsNamed) {
+    const std::string path = broken_draco("count.gltf", [](nlohmann::json& doc) {
+        const int a = doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"];
+        doc["accessors"][a]["count"] = doc["accessors"][a]["count"].get<int>() - 1;
+    });
+    test::expect_clear_load_error(path, "attributes.POSITION: accessor count 2398 but Draco "
+                                        "decoded 2399 points");
+}
+
+TEST(BrokenDraco, DeclaredMinMaxDisagreeingWithTheStreamIsNamed) {
+    const std::string path = broken_draco("minmax.gltf", [](nlohmann::json& doc) {
+        const int a = doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"];
+        doc["accessors"][a]["max"][1] = 100.0; // the duck is 164 units tall
+    });
+    test::expect_clear_load_error(path, "lies outside the accessor's declared");
+}
+
+TEST(BrokenDraco, MissingAttributeIdIsNamed) {
+    const std::string path = broken_draco("attribute_id.gltf", [](nlohmann::json& doc) {
+        draco_extension(doc)["attributes"]["POSITION"] = 17;
+    });
+    test::expect_clear_load_error(path, "attribute id 17 is not in the Draco stream");
 }
 
 } // namespace

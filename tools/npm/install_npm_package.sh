@@ -27,7 +27,8 @@ done
 [ ${#missing[@]} -eq 0 ] && exit 0
 command -v npm >/dev/null || { echo "${missing[*]}: npm not found (run .ci/setup)" >&2; exit 1; }
 mkdir -p "$cache"
-if ! npm install --prefix "$cache" --no-audit --no-fund --no-save "${flags[@]}" "${missing[@]}" \
+# All of them in one call: a --no-save install prunes packages it was not given.
+if ! npm install --prefix "$cache" --no-audit --no-fund --no-save "${flags[@]}" "$@" \
      >"$cache/npm-install.log" 2>&1; then
   echo "'npm install ${missing[*]}' failed; the npm registry is needed once to fill the" \
        "cache $cache (offline?). Log:" >&2

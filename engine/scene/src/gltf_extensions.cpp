@@ -6,10 +6,11 @@
 namespace sherpa {
 namespace {
 
-constexpr std::array<std::string_view, 7> kSupported{
-    "EXT_meshopt_compression", // through Debian's meshoptimizer
-    "KHR_meshopt_compression", // where its bitstream version is one meshoptimizer decodes
-    "KHR_lights_punctual",     "KHR_materials_emissive_strength", "KHR_materials_unlit",
+constexpr std::array<std::string_view, 8> kSupported{
+    "EXT_meshopt_compression",    // through Debian's meshoptimizer
+    "KHR_draco_mesh_compression", // through Debian's Draco
+    "KHR_meshopt_compression",    // where its bitstream version is one meshoptimizer decodes
+    "KHR_lights_punctual",        "KHR_materials_emissive_strength", "KHR_materials_unlit",
     "KHR_mesh_quantization", // every accessor component type is decoded
     "KHR_texture_transform",
 };

@@ -1,7 +1,9 @@
 // import_gltf(): parse with tinygltf, validate, convert, flatten. Any failure
 // discards the partial scene and reports "FILE: what is wrong".
+#include "gltf_draco.h"
 #include "gltf_fs.h"
 #include "gltf_meshopt.h"
+#include "gltf_prepare.h"
 #include "gltf_validate.h"
 #include "import_context.h"
 #include "import_error.h"
@@ -120,8 +122,8 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         result.error = path + ": " + problem;
         return result;
     }
-    // Compressors' fallback buffers have no data; tinygltf would refuse them.
-    if (auto rewritten = detail::without_fallback_buffers(bytes); !rewritten.empty())
+    // Compressed files hold what tinygltf would refuse (see gltf_prepare.h).
+    if (auto rewritten = detail::prepared_for_tinygltf(bytes); !rewritten.empty())
         bytes = std::move(rewritten);
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(keep_encoded_image, nullptr);
@@ -160,12 +162,16 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         scene->extensions_used = model.extensionsUsed;
         scene->extensions_required = model.extensionsRequired;
         const auto decoded_views = detail::decode_meshopt_views(model);
+        const auto decoded_draco = detail::decode_draco_primitives(model);
         detail::ImportContext ctx{model, *scene};
+        for (const auto& d : decoded_draco)
+            ctx.range_checked.insert(d.range_checked.begin(), d.range_checked.end());
         if (!detail::begin_stage(options, LoadStage::Geometry)) return detail::cancelled_result();
         detail::import_samplers_images_textures(ctx);
         detail::import_materials(ctx);
         detail::import_meshes(ctx);
         detail::attach_meshopt_compression(model, decoded_views, *scene);
+        detail::attach_draco_compression(decoded_draco, *scene);
         if (!detail::end_stage(options, LoadStage::Geometry)) return detail::cancelled_result();
         if (!detail::tangent_stage(*scene, options)) return detail::cancelled_result();
         detail::import_lights_cameras(ctx);

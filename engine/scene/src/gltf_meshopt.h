@@ -16,12 +16,6 @@ class Model;
 
 namespace sherpa::detail {
 
-// The extension's fallback buffers have no data (no uri), which tinygltf refuses in
-// a .gltf and, in a .glb, fills from the BIN chunk (failing when it is shorter).
-// Returns the file's bytes with each fallback buffer given a 1-byte data URI, or an
-// empty vector when the file has none. `bytes` passed validate_gltf_bytes.
-std::vector<std::uint8_t> without_fallback_buffers(std::span<const std::uint8_t> bytes);
-
 // What decoding one compressed bufferView did, for inspection.
 struct DecodedView {
     std::int32_t view = -1;

@@ -1,6 +1,10 @@
 #include "scene_json.h"
 
 #include <sherpa/scene/gltf_extensions.h>
+#include <sherpa/texture/basis.h>
+
+#include <chrono>
+#include <cstring>
 
 namespace sherpa::cli {
 
@@ -47,6 +51,47 @@ json extensions_json(const std::vector<std::string>& names) {
     return out;
 }
 
+// An encoded image's container, by its leading bytes (not its name or MIME type).
+std::string container_of(const std::vector<std::uint8_t>& b) {
+    const auto starts = [&](const char* magic, std::size_t at = 0) {
+        const std::size_t n = std::strlen(magic);
+        return b.size() >= at + n && std::memcmp(b.data() + at, magic, n) == 0;
+    };
+    if (starts("\x89PNG")) return "png";
+    if (starts("\xFF\xD8\xFF")) return "jpeg";
+    if (starts("RIFF") && starts("WEBP", 8)) return "webp";
+    return b.empty() ? "none" : "other";
+}
+
+// Per image: its container; KTX2 files are transcoded (as the texture pipeline
+// does) to tell ETC1S from UASTC and time it.
+json images_json(const Scene& scene) {
+    json out = json::array();
+    for (std::size_t i = 0; i < scene.images.size(); ++i) {
+        const ImageRecord& img = scene.images[i];
+        json e = {{"image", i}, {"uri", img.uri}, {"bytes", img.byte_size}};
+        if (tex::is_ktx2(img.encoded)) {
+            tex::BasisTexture t;
+            std::string error;
+            const auto t0 = std::chrono::steady_clock::now();
+            if (tex::transcode_ktx2_basis(img.encoded, t, error)) {
+                e["transcode_ms"] =
+                    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                        .count();
+                e["container"] = std::string(tex::basis_payload_name(t.payload));
+                e["supercompression"] = std::string(tex::supercompression_name(t.supercompression));
+            } else {
+                e["container"] = "ktx2";
+                e["error"] = error;
+            }
+        } else {
+            e["container"] = container_of(img.encoded);
+        }
+        out.push_back(std::move(e));
+    }
+    return out;
+}
+
 json scene_info_json(const Scene& scene) {
     const SourceCounts& c = scene.counts;
     json j = {{"source", scene.source},
@@ -90,6 +135,7 @@ json scene_info_json(const Scene& scene) {
         detail.push_back(std::move(e));
     }
     j["primitives_detail"] = std::move(detail);
+    j["images_detail"] = images_json(scene);
     j["extensions_used"] = extensions_json(scene.extensions_used);
     j["extensions_required"] = extensions_json(scene.extensions_required);
     j["usage"] = usage_json(scene, build_usage_report(scene));

@@ -90,6 +90,10 @@ void decode_primitive(tinygltf::Model& model, tinygltf::Primitive& prim, const s
              std::to_string(view.byteLength) +
              " bytes) does not decode: " + decoded.status().error_msg_string());
     const std::unique_ptr<draco::Mesh> mesh = std::move(decoded).value();
+    // Read before new buffers and views are appended (which moves `view` and `data`).
+    // The stream header: "DRACO", version major/minor, geometry type, method.
+    const std::size_t encoded_bytes = view.byteLength;
+    const bool edgebreaker = encoded_bytes > 8 && data[8] == 1;
     const std::size_t points = mesh->num_points();
 
     // The decoded data goes to one new buffer; the accessors are pointed at it.
@@ -152,9 +156,8 @@ void decode_primitive(tinygltf::Model& model, tinygltf::Primitive& prim, const s
         out.stats.decoded_bytes += indices.size() * sizeof(std::uint32_t);
     }
     out.stats.codec = kCodec;
-    // The stream header: "DRACO", version major/minor, geometry type, method.
-    out.stats.modes = view.byteLength > 8 && data[8] == 1 ? "edgebreaker" : "sequential";
-    out.stats.encoded_bytes = view.byteLength;
+    out.stats.modes = edgebreaker ? "edgebreaker" : "sequential";
+    out.stats.encoded_bytes = encoded_bytes;
     out.stats.decode_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }

@@ -6,12 +6,14 @@
 namespace sherpa {
 namespace {
 
-constexpr std::array<std::string_view, 8> kSupported{
+constexpr std::array<std::string_view, 10> kSupported{
     "EXT_meshopt_compression",    // through Debian's meshoptimizer
+    "EXT_texture_webp",           // through OpenImageIO
     "KHR_draco_mesh_compression", // through Debian's Draco
     "KHR_meshopt_compression",    // where its bitstream version is one meshoptimizer decodes
     "KHR_lights_punctual",        "KHR_materials_emissive_strength", "KHR_materials_unlit",
     "KHR_mesh_quantization", // every accessor component type is decoded
+    "KHR_texture_basisu",    // KTX2 (ETC1S / UASTC), engine/texture's transcoder
     "KHR_texture_transform",
 };
 

@@ -1,6 +1,6 @@
 #include "editor_settings.h"
 
-#include <QStandardPaths>
+#include <sherpa/texture/texture_cache.h>
 
 namespace sherpa::editor {
 
@@ -53,8 +53,9 @@ void EditorSettings::setLastView(const QString& view) {
 }
 
 QString EditorSettings::cacheDirectory() const {
-    const QString fallback = QStandardPaths::writableLocation(QStandardPaths::CacheLocation) +
-                             QStringLiteral("/textures");
+    // The engine's directory, so the editor and sherpa-cli share one cache.
+    const QString fallback =
+        QString::fromStdString(sherpa::tex::default_cache_dir_from_environment().string());
     return settings_.value(kCacheDir, fallback).toString();
 }
 

@@ -24,7 +24,7 @@ public:
 
     QString lastView() const;
     void setLastView(const QString& view);
-    QString cacheDirectory() const; // default: the user's cache location + /textures
+    QString cacheDirectory() const; // default: tex::default_cache_dir_from_environment()
     void setCacheDirectory(const QString& dir);
     QString textureQuality() const; // "fast" | "balanced" | "best"
     void setTextureQuality(const QString& quality);

@@ -135,12 +135,7 @@ void MainWindow::createActions() {
     connect(a.box_colouring, &QAction::toggled, viewport_, &ViewportWindow::scheduleFrame);
     connect(a.gpu_path, &QAction::toggled, culling_, &CullingMonitor::setGpuPath);
     connect(culling_, &CullingMonitor::updated, viewport_, &ViewportWindow::scheduleFrame);
-    connect(a.reset_layout, &QAction::triggered, this, [this] {
-        for (QDockWidget* d : findChildren<QDockWidget*>()) {
-            d->setFloating(false);
-            d->show();
-        }
-    });
+    connect(a.reset_layout, &QAction::triggered, this, &MainWindow::resetLayout);
     connect(a.cache_dir, &QAction::triggered, this, [this] {
         const QString dir = QFileDialog::getExistingDirectory(this, tr("Texture cache directory"),
                                                               settings_.cacheDirectory());

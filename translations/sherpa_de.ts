@@ -665,6 +665,10 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <source>Texture %1: %2 cache files deleted; reloading to compress it again.</source>
         <translation>Textur %1: %2 Cache-Dateien gelöscht; die Szene wird neu geladen und die Textur neu komprimiert.</translation>
     </message>
+    <message>
+        <source>&amp;UV Checker Density (checks per UV unit)</source>
+        <translation>&amp;UV-Schachbrettdichte (Felder pro UV-Einheit)</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -907,6 +911,30 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>Details</source>
         <translation>Details</translation>
+    </message>
+    <message>
+        <source>Scene %1: %2</source>
+        <translation>Szene %1: %2</translation>
+    </message>
+    <message>
+        <source>T %1</source>
+        <translation>T %1</translation>
+    </message>
+    <message>
+        <source>rotated</source>
+        <translation>gedreht</translation>
+    </message>
+    <message>
+        <source>S %1</source>
+        <translation>S %1</translation>
+    </message>
+    <message>
+        <source>identity</source>
+        <translation>Identität</translation>
+    </message>
+    <message>
+        <source>%1 vertices, %2 triangles</source>
+        <translation>%1 Vertices, %2 Dreiecke</translation>
     </message>
 </context>
 <context>

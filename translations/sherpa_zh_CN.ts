@@ -665,6 +665,10 @@ The current scene is kept.</source>
         <source>Texture %1: %2 cache files deleted; reloading to compress it again.</source>
         <translation>纹理 %1：已删除 %2 个缓存文件；正在重新加载以重新压缩。</translation>
     </message>
+    <message>
+        <source>&amp;UV Checker Density (checks per UV unit)</source>
+        <translation>UV 棋盘格密度（每 UV 单位格数）(&amp;U)</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -907,6 +911,30 @@ The current scene is kept.</source>
     <message>
         <source>Details</source>
         <translation>详情</translation>
+    </message>
+    <message>
+        <source>Scene %1: %2</source>
+        <translation>场景 %1：%2</translation>
+    </message>
+    <message>
+        <source>T %1</source>
+        <translation>平移 %1</translation>
+    </message>
+    <message>
+        <source>rotated</source>
+        <translation>已旋转</translation>
+    </message>
+    <message>
+        <source>S %1</source>
+        <translation>缩放 %1</translation>
+    </message>
+    <message>
+        <source>identity</source>
+        <translation>单位变换</translation>
+    </message>
+    <message>
+        <source>%1 vertices, %2 triangles</source>
+        <translation>%1 个顶点，%2 个三角形</translation>
     </message>
 </context>
 <context>

@@ -12,6 +12,7 @@ const QString kView = QStringLiteral("viewport/lastView");
 const QString kCacheDir = QStringLiteral("textures/cacheDirectory");
 const QString kQuality = QStringLiteral("textures/quality");
 const QString kLanguage = QStringLiteral("ui/language");
+const QString kCheckerDensity = QStringLiteral("viewport/checkerDensity");
 } // namespace
 
 QStringList EditorSettings::recentFiles() const {
@@ -69,6 +70,14 @@ QString EditorSettings::textureQuality() const {
 
 void EditorSettings::setTextureQuality(const QString& quality) {
     settings_.setValue(kQuality, quality);
+}
+
+int EditorSettings::checkerDensity() const {
+    return settings_.value(kCheckerDensity, 32).toInt();
+}
+
+void EditorSettings::setCheckerDensity(int checks) {
+    settings_.setValue(kCheckerDensity, checks);
 }
 
 QString EditorSettings::language() const {

@@ -175,6 +175,7 @@ bool MainWindow::renderFrame() {
     frame.camera = viewport_->camera().spec();
     frame.view = view_;
     frame.overlays = overlays_;
+    frame.checkerDensity = static_cast<float>(settings_.checkerDensity());
     if (a_->box_colouring->isChecked()) frame.overlays << QStringLiteral("cull-boxes");
     frame.gpuCulling = a_->gpu_path->isChecked();
     frame.cullMethod = culling_->method();

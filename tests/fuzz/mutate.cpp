@@ -152,9 +152,9 @@ void mutate_value(Rng& rng, nlohmann::json& doc, const nlohmann::json::json_poin
         else
             v = nested(1 + rng.below(200), rng.chance(2));
         return;
-    case 8: // a nearby integer
-        if (v.is_number_integer())
-            v = v.get<std::int64_t>() + std::int64_t(rng.below(9)) - 4;
+    case 8:                        // a nearby integer
+        if (v.is_number_integer()) // wrapping (unsigned) arithmetic: INT64_MAX + 1 is wanted
+            v = std::int64_t(std::uint64_t(v.get<std::int64_t>()) + rng.below(9) - 4);
         else if (v.is_number_float())
             v = v.get<double>() * -1e30;
         return;

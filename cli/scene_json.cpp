@@ -1,6 +1,11 @@
 #include "scene_json.h"
 
 #include "motion_json.h"
+#include <sherpa/scene/gltf_extensions.h>
+#include <sherpa/texture/basis.h>
+
+#include <chrono>
+#include <cstring>
 
 namespace sherpa::cli {
 
@@ -39,6 +44,55 @@ json usage_json(const Scene& scene, const UsageReport& report) {
                 {"saved_fraction", saved}};
 }
 
+// Each extension the file names, and whether Sherpa reads it.
+json extensions_json(const std::vector<std::string>& names) {
+    json out = json::array();
+    for (const auto& n : names)
+        out.push_back({{"name", n}, {"supported", is_supported_gltf_extension(n)}});
+    return out;
+}
+
+// An encoded image's container, by its leading bytes (not its name or MIME type).
+std::string container_of(const std::vector<std::uint8_t>& b) {
+    const auto starts = [&](const char* magic, std::size_t at = 0) {
+        const std::size_t n = std::strlen(magic);
+        return b.size() >= at + n && std::memcmp(b.data() + at, magic, n) == 0;
+    };
+    if (starts("\x89PNG")) return "png";
+    if (starts("\xFF\xD8\xFF")) return "jpeg";
+    if (starts("RIFF") && starts("WEBP", 8)) return "webp";
+    return b.empty() ? "none" : "other";
+}
+
+// Per image: its container; KTX2 files are transcoded (as the texture pipeline
+// does) to tell ETC1S from UASTC and time it.
+json images_json(const Scene& scene) {
+    json out = json::array();
+    for (std::size_t i = 0; i < scene.images.size(); ++i) {
+        const ImageRecord& img = scene.images[i];
+        json e = {{"image", i}, {"uri", img.uri}, {"bytes", img.byte_size}};
+        if (tex::is_ktx2(img.encoded)) {
+            tex::BasisTexture t;
+            std::string error;
+            const auto t0 = std::chrono::steady_clock::now();
+            if (tex::transcode_ktx2_basis(img.encoded, t, error)) {
+                e["transcode_ms"] =
+                    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                        .count();
+                e["container"] = std::string(tex::basis_payload_name(t.payload));
+                e["supercompression"] = std::string(tex::supercompression_name(t.supercompression));
+            } else {
+                e["container"] = "ktx2";
+                e["error"] = error;
+            }
+        } else {
+            e["container"] = container_of(img.encoded);
+        }
+        out.push_back(std::move(e));
+    }
+    return out;
+}
+
 json scene_info_json(const Scene& scene) {
     const SourceCounts& c = scene.counts;
     json j = {{"source", scene.source},
@@ -66,6 +120,12 @@ json scene_info_json(const Scene& scene) {
         json e = {{"mesh", p.mesh},         {"primitive", p.primitive}, {"mode", to_string(p.mode)},
                   {"vertices", p.vertices}, {"indices", p.indices},     {"triangles", p.triangles},
                   {"material", p.material}, {"attributes", attrs}};
+        if (p.compression)
+            e["compression"] = {{"codec", p.compression->codec},
+                                {"mode", p.compression->modes},
+                                {"encoded_bytes", p.compression->encoded_bytes},
+                                {"decoded_bytes", p.compression->decoded_bytes},
+                                {"decode_ms", p.compression->decode_ms}};
         if (p.engine_mesh >= 0) {
             const Mesh& m = scene.meshes[static_cast<std::size_t>(p.engine_mesh)];
             e["engine_vertices"] = m.vertices.size();
@@ -79,6 +139,9 @@ json scene_info_json(const Scene& scene) {
     j["primitives_detail"] = std::move(detail);
     j["skins"] = skins_json(scene);
     j["animations"] = animations_json(scene);
+    j["images_detail"] = images_json(scene);
+    j["extensions_used"] = extensions_json(scene.extensions_used);
+    j["extensions_required"] = extensions_json(scene.extensions_required);
     j["usage"] = usage_json(scene, build_usage_report(scene));
     j["warnings"] = scene.warnings;
     json violations = json::array();

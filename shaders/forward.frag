@@ -103,8 +103,8 @@ void main() {
         break;
     case VIEW_UV0: c = vec3(fract(uv0), 0.0); break;
     case VIEW_UV1: c = vec3(fract(uv1), 0.0); break;
-    case VIEW_UV0_CHECKER: c = checker_color(uv0); break;
-    case VIEW_UV1_CHECKER: c = checker_color(uv1); break;
+    case VIEW_UV0_CHECKER: c = checker_color(uv0, frame.overlay.y); break;
+    case VIEW_UV1_CHECKER: c = checker_color(uv1, frame.overlay.y); break;
     case VIEW_BASE_COLOR: c = base.rgb; break;
     case VIEW_METALLIC: c = vec3(metallic_roughness(m, metallic_roughness_texel(m, x, uv0, uv1)).x); break;
     case VIEW_ROUGHNESS: c = vec3(metallic_roughness(m, metallic_roughness_texel(m, x, uv0, uv1)).y); break;

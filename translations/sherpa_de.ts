@@ -673,6 +673,10 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <source>Draw material slots whose image is missing or undecodable as a magenta/black checker (colour slots); off: the glTF defaults (white, flat normal)</source>
         <translation>Materialslots, deren Bild fehlt oder nicht dekodierbar ist, als Magenta/Schwarz-Schachbrett zeichnen (Farbslots); aus: die glTF-Standardwerte (weiß, flache Normale)</translation>
     </message>
+    <message>
+        <source>&amp;UV Checker Density (checks per UV unit)</source>
+        <translation>&amp;UV-Schachbrettdichte (Felder pro UV-Einheit)</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -915,6 +919,30 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>Details</source>
         <translation>Details</translation>
+    </message>
+    <message>
+        <source>Scene %1: %2</source>
+        <translation>Szene %1: %2</translation>
+    </message>
+    <message>
+        <source>T %1</source>
+        <translation>T %1</translation>
+    </message>
+    <message>
+        <source>rotated</source>
+        <translation>gedreht</translation>
+    </message>
+    <message>
+        <source>S %1</source>
+        <translation>S %1</translation>
+    </message>
+    <message>
+        <source>identity</source>
+        <translation>Identität</translation>
+    </message>
+    <message>
+        <source>%1 vertices, %2 triangles</source>
+        <translation>%1 Vertices, %2 Dreiecke</translation>
     </message>
 </context>
 <context>

@@ -673,6 +673,10 @@ The current scene is kept.</translation>
         <source>Draw material slots whose image is missing or undecodable as a magenta/black checker (colour slots); off: the glTF defaults (white, flat normal)</source>
         <translation>Draw material slots whose image is missing or undecodable as a magenta/black checker (colour slots); off: the glTF defaults (white, flat normal)</translation>
     </message>
+    <message>
+        <source>&amp;UV Checker Density (checks per UV unit)</source>
+        <translation>&amp;UV Checker Density (checks per UV unit)</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -915,6 +919,30 @@ The current scene is kept.</translation>
     <message>
         <source>Details</source>
         <translation>Details</translation>
+    </message>
+    <message>
+        <source>Scene %1: %2</source>
+        <translation>Scene %1: %2</translation>
+    </message>
+    <message>
+        <source>T %1</source>
+        <translation>T %1</translation>
+    </message>
+    <message>
+        <source>rotated</source>
+        <translation>rotated</translation>
+    </message>
+    <message>
+        <source>S %1</source>
+        <translation>S %1</translation>
+    </message>
+    <message>
+        <source>identity</source>
+        <translation>identity</translation>
+    </message>
+    <message>
+        <source>%1 vertices, %2 triangles</source>
+        <translation>%1 vertices, %2 triangles</translation>
     </message>
 </context>
 <context>

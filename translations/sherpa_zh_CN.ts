@@ -673,6 +673,10 @@ The current scene is kept.</source>
         <source>Draw material slots whose image is missing or undecodable as a magenta/black checker (colour slots); off: the glTF defaults (white, flat normal)</source>
         <translation>将图像缺失或无法解码的材质槽绘制为品红/黑色棋盘格(颜色槽);关闭时使用 glTF 默认值(白色、平坦法线)</translation>
     </message>
+    <message>
+        <source>&amp;UV Checker Density (checks per UV unit)</source>
+        <translation>UV 棋盘格密度（每 UV 单位格数）(&amp;U)</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -915,6 +919,30 @@ The current scene is kept.</source>
     <message>
         <source>Details</source>
         <translation>详情</translation>
+    </message>
+    <message>
+        <source>Scene %1: %2</source>
+        <translation>场景 %1：%2</translation>
+    </message>
+    <message>
+        <source>T %1</source>
+        <translation>平移 %1</translation>
+    </message>
+    <message>
+        <source>rotated</source>
+        <translation>已旋转</translation>
+    </message>
+    <message>
+        <source>S %1</source>
+        <translation>缩放 %1</translation>
+    </message>
+    <message>
+        <source>identity</source>
+        <translation>单位变换</translation>
+    </message>
+    <message>
+        <source>%1 vertices, %2 triangles</source>
+        <translation>%1 个顶点，%2 个三角形</translation>
     </message>
 </context>
 <context>

@@ -16,6 +16,7 @@
 #include "scene_tree_dock.h"
 #include "texture_dock.h"
 #include "view_catalog.h"
+#include "viewport_window.h"
 
 namespace sherpa::editor {
 
@@ -31,6 +32,36 @@ QDockWidget* dock_named(MainWindow& w, const QString& name) {
     return i >= 0 ? docks[i] : nullptr;
 }
 } // namespace
+
+void when_layout_settles(MainWindow& window, std::function<void()> then) {
+    constexpr int kPollMs = 100;
+    constexpr int kStablePolls = 3; // the same size this many polls in a row
+    constexpr int kMaxPolls = 100;
+    struct State {
+        QSize last;
+        int stable = 0, polls = 0;
+        std::function<void()> then;
+    };
+    auto state = std::make_shared<State>(State{{}, 0, 0, std::move(then)});
+    auto* timer = new QTimer(&window);
+    timer->setInterval(kPollMs);
+    QObject::connect(timer, &QTimer::timeout, &window, [&window, state, timer] {
+        const QSize size = window.viewport()->pixelSize();
+        state->stable = size == state->last ? state->stable + 1 : 0;
+        state->last = size;
+        const ViewportFrame& f = window.lastFrame();
+        const bool drawn = !window.viewport()->isExposed() || !window.gpuObjectCount ||
+                           (static_cast<int>(f.width) == size.width() &&
+                            static_cast<int>(f.height) == size.height());
+        if (!drawn) window.viewport()->scheduleFrame();
+        if ((state->stable >= kStablePolls && drawn) || ++state->polls >= kMaxPolls) {
+            timer->stop();
+            timer->deleteLater();
+            state->then();
+        }
+    });
+    timer->start();
+}
 
 bool parse_command_line(const QStringList& arguments, CommandLine& out, QString& error) {
     QCommandLineParser p;
@@ -108,15 +139,20 @@ void run_command_line(MainWindow& window, const CommandLine& cl, qint64 started_
     const auto since_launch = [clock, started_ns] {
         return static_cast<double>(clock->nsecsElapsed() + started_ns) / 1e6;
     };
-    if (!cl.language.isEmpty() && !window.setLanguage(cl.language))
+    // One-shot: neither flag becomes the setting of later plain launches.
+    if (!cl.language.isEmpty() && !window.setLanguage(cl.language, false))
         std::fprintf(stderr, "sherpa: no translation for '%s'\n", qPrintable(cl.language));
-    if (!cl.view.isEmpty()) window.setDebugView(cl.view);
+    if (!cl.view.isEmpty()) window.setDebugView(cl.view, false);
     if (cl.gpu_culling) window.setGpuCulling(true);
-    for (const QString& name : cl.docks)
-        if (QDockWidget* d = dock_named(window, name)) {
-            d->show();
-            d->raise();
-        }
+    if (!cl.docks.isEmpty()) window.setLayoutRemembered(false);
+    // Once the window is shown: before, its dock tab bars do not exist to switch.
+    QTimer::singleShot(0, &window, [&window, docks = cl.docks] {
+        for (const QString& name : docks)
+            if (QDockWidget* d = dock_named(window, name)) {
+                d->show();
+                d->raise();
+            }
+    });
     // Always in the log dock; on stdout with --timing.
     QObject::connect(&window, &MainWindow::firstFrame, &window, [&window, since_launch] {
         window.logDock()->append(
@@ -145,8 +181,9 @@ void run_command_line(MainWindow& window, const CommandLine& cl, qint64 started_
     if (!cl.screenshot.isEmpty()) {
         auto failed = std::make_shared<bool>(false);
         const auto shoot = [&window, cl, failed] {
-            // Let docks lay out and the viewport present its frame before grabbing.
-            QTimer::singleShot(400, &window, [&window, cl, failed] {
+            // Not a fixed delay: that raced the docks' resize of the viewport, and the
+            // same command framed the scene at two zooms in two runs.
+            when_layout_settles(window, [&window, cl, failed] {
                 const QImage image = window.screenshot();
                 const bool saved = image.save(cl.screenshot, "PNG");
                 std::fprintf(stderr, "sherpa: screenshot %s (%dx%d) %s\n",

@@ -4,6 +4,8 @@
 #include <QString>
 #include <QStringList>
 
+#include <functional>
+
 namespace sherpa::editor {
 
 class MainWindow;
@@ -23,6 +25,12 @@ struct CommandLine {
 // Returns false with `error` set on bad usage (unknown view, --quit without --screenshot...).
 // --help and --version are handled by QCommandLineParser (they exit).
 bool parse_command_line(const QStringList& arguments, CommandLine& out, QString& error);
+
+// Calls `then` once the window's layout has settled, so a screenshot is the same on
+// every run: the viewport has kept one size for several polls (docks, fonts and
+// the selection have laid out) and the last frame drawn has exactly that size.
+// Gives up waiting after about ten seconds and calls `then` anyway.
+void when_layout_settles(MainWindow& window, std::function<void()> then);
 
 // Wires the window for the command line: opens the scene, and with --screenshot saves
 // the window once the scene is shown (and quits with --quit: exit code 0, or 1 when the

@@ -59,6 +59,11 @@ CullingDock::CullingDock(const CullingMonitor& monitor, QWidget* parent)
     y_axis_ = new QValueAxis(chart_);
     x_axis_->setLabelFormat(QStringLiteral("%d"));
     y_axis_->setLabelFormat(QStringLiteral("%g"));
+    // Few, short ticks that never truncate: Qt Charts drew every label as "…" when
+    // the dock was narrower than its default tick count wants.
+    x_axis_->setTickCount(5);
+    y_axis_->setTickCount(3);
+    for (QValueAxis* axis : {x_axis_, y_axis_}) axis->setTruncateLabels(false);
     chart_->addAxis(x_axis_, Qt::AlignBottom);
     chart_->addAxis(y_axis_, Qt::AlignLeft);
     for (QLineSeries* s : {visible_series_, culled_series_}) {

@@ -1,6 +1,6 @@
 #include "editor_settings.h"
 
-#include <QStandardPaths>
+#include <sherpa/texture/texture_cache.h>
 
 namespace sherpa::editor {
 
@@ -12,6 +12,7 @@ const QString kView = QStringLiteral("viewport/lastView");
 const QString kCacheDir = QStringLiteral("textures/cacheDirectory");
 const QString kQuality = QStringLiteral("textures/quality");
 const QString kLanguage = QStringLiteral("ui/language");
+const QString kCheckerDensity = QStringLiteral("viewport/checkerDensity");
 } // namespace
 
 QStringList EditorSettings::recentFiles() const {
@@ -53,8 +54,9 @@ void EditorSettings::setLastView(const QString& view) {
 }
 
 QString EditorSettings::cacheDirectory() const {
-    const QString fallback = QStandardPaths::writableLocation(QStandardPaths::CacheLocation) +
-                             QStringLiteral("/textures");
+    // The engine's directory, so the editor and sherpa-cli share one cache.
+    const QString fallback =
+        QString::fromStdString(sherpa::tex::default_cache_dir_from_environment().string());
     return settings_.value(kCacheDir, fallback).toString();
 }
 
@@ -68,6 +70,14 @@ QString EditorSettings::textureQuality() const {
 
 void EditorSettings::setTextureQuality(const QString& quality) {
     settings_.setValue(kQuality, quality);
+}
+
+int EditorSettings::checkerDensity() const {
+    return settings_.value(kCheckerDensity, 32).toInt();
+}
+
+void EditorSettings::setCheckerDensity(int checks) {
+    settings_.setValue(kCheckerDensity, checks);
 }
 
 QString EditorSettings::language() const {

@@ -24,10 +24,13 @@ public:
 
     QString lastView() const;
     void setLastView(const QString& view);
-    QString cacheDirectory() const; // default: the user's cache location + /textures
+    QString cacheDirectory() const; // default: tex::default_cache_dir_from_environment()
     void setCacheDirectory(const QString& dir);
     QString textureQuality() const; // "fast" | "balanced" | "best"
     void setTextureQuality(const QString& quality);
+    // Checks per UV unit of the uv checker views (View › Checker Density).
+    int checkerDensity() const; // default 32: fine enough for texture atlases
+    void setCheckerDensity(int checks);
     QString language() const; // "" = follow the system locale
     void setLanguage(const QString& code);
 

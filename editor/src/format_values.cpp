@@ -4,14 +4,31 @@
 
 namespace sherpa::editor {
 
+namespace {
+constexpr int kReadableDigits = 6;
+constexpr int kFloatDigits = 9; // max_digits10 of float
+
+QString join_vec(const float* v, int n, int digits) {
+    QStringList parts;
+    for (int i = 0; i < n; ++i) parts << QString::number(static_cast<double>(v[i]), 'g', digits);
+    return QStringLiteral("(") + parts.join(QStringLiteral(", ")) + QStringLiteral(")");
+}
+} // namespace
+
 QString Format::number(double v) {
-    return QString::number(v, 'g', 9);
+    return QString::number(v, 'g', kReadableDigits);
+}
+
+QString Format::exact(double v) {
+    return QString::number(v, 'g', kFloatDigits);
 }
 
 QString Format::vec(const float* v, int n) {
-    QStringList parts;
-    for (int i = 0; i < n; ++i) parts << QString::number(static_cast<double>(v[i]), 'g', 6);
-    return QStringLiteral("(") + parts.join(QStringLiteral(", ")) + QStringLiteral(")");
+    return join_vec(v, n, kReadableDigits);
+}
+
+QString Format::vecExact(const float* v, int n) {
+    return join_vec(v, n, kFloatDigits);
 }
 
 QString Format::bytes(std::uint64_t n) {

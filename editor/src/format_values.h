@@ -1,8 +1,10 @@
 #pragma once
-// Formatting of engine values for display: numbers at full float precision,
-// glTF enums by name, byte sizes. Every user-visible word goes through tr().
+// Formatting of engine values for display: numbers at a readable precision (six
+// significant digits; full float precision in tooltips and on copy), glTF enums
+// by name, byte sizes. Every user-visible word goes through tr().
 #include <QCoreApplication>
 #include <QString>
+#include <Qt>
 
 #include <glm/glm.hpp>
 
@@ -13,9 +15,17 @@ namespace sherpa::editor {
 class Format {
     Q_DECLARE_TR_FUNCTIONS(Format)
 public:
-    // Shortest text that reads back as the same float (what the GPU sees, not rounded).
+    // Models answer this role with the exact text of a rounded number (copy, tooltips).
+    static constexpr int kExactTextRole = Qt::UserRole + 0x45;
+
+    // Six significant digits: "0.0208333", not "0.0208333325".
     static QString number(double v);
+    // Nine significant digits: reads back as the same float (what the GPU sees).
+    static QString exact(double v);
     static QString vec(const float* v, int n);
+    static QString vecExact(const float* v, int n);
+    static QString vecExact(glm::vec3 v) { return vecExact(&v.x, 3); }
+    static QString vecExact(glm::vec4 v) { return vecExact(&v.x, 4); }
     static QString vec(glm::vec2 v) { return vec(&v.x, 2); }
     static QString vec(glm::vec3 v) { return vec(&v.x, 3); }
     static QString vec(glm::vec4 v) { return vec(&v.x, 4); }

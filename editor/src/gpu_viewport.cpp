@@ -149,6 +149,7 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame) {
     for (const QString& o : frame.overlays)
         if (auto bit = gpu::parse_overlay(o.toStdString())) settings.overlays |= *bit;
     settings.camera = gpu::explicit_camera(frame.camera);
+    settings.uv_checker_density = frame.checkerDensity;
     settings.highlight_instance = frame.highlightInstance;
     settings.highlight_triangle = frame.highlightTriangle;
     settings.highlight_vertex = frame.highlightVertex;

@@ -29,6 +29,7 @@ struct ViewportFrame {
     CameraSpec camera;
     QString view = QStringLiteral("lit");
     QStringList overlays;
+    float checkerDensity = 32.0f; // uv checker views: checks per UV unit
     // Selection highlight: a scene instance, and a triangle / vertex of its mesh.
     std::optional<std::uint32_t> highlightInstance, highlightTriangle, highlightVertex;
     bool gpuCulling = false; // the renderer's GPU-driven culling path

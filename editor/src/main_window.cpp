@@ -1,6 +1,7 @@
 #include "main_window.h"
 #include "main_window_actions.h"
 
+#include <QAbstractItemView>
 #include <QCloseEvent>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -14,6 +15,7 @@
 #include <QPushButton>
 #include <QScreen>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTimer>
 #include <QVulkanInstance>
 
@@ -27,11 +29,20 @@
 #include "scene_tree_dock.h"
 #include "texture_dock.h"
 #include "view_catalog.h"
+#include "view_fitting.h"
 #include "viewport_window.h"
 
 namespace sherpa::editor {
 
 namespace {
+// Default dock column widths at 1600×1000 and the narrowest a dock may be.
+constexpr int kLeftDockWidth = 330;
+constexpr int kRightDockWidth = 300;
+constexpr int kDockMinWidth = 160;
+// More than the renderer's frames in flight: the first frame's culling counts are
+// read back by then.
+constexpr int kPassReadbackFrames = 4;
+
 bool is_scene_file(const QString& path) {
     const QString suffix = QFileInfo(path).suffix().toLower();
     return suffix == QLatin1String("gltf") || suffix == QLatin1String("glb");
@@ -77,10 +88,11 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent)
     resize(1600, 1000);
     restoreGeometry(settings_.geometry());
     restoreState(settings_.windowState());
-    setDebugView(settings_.lastView());
+    setDebugView(settings_.lastView(), false);
     QString language = settings_.language();
+    // The system default is not a choice: leave the setting empty so it follows the system.
     if (language.isEmpty()) language = Translations::systemDefault();
-    setLanguage(language);
+    setLanguage(language, false);
     retranslate();
     updateStatus();
 }
@@ -146,6 +158,7 @@ void MainWindow::uploadScene() {
         gpu_->setMissingTexturesChecker(a_->missing_checker->isChecked());
         const SceneExtras* extras = context_.extras();
         gpu_->setScene(context_.scene(), extras ? extras->textures : nullptr);
+        pass_frames_left_ = kPassReadbackFrames;
         textures_->setPrepared(gpu_->preparedTextures());
         logTextureMessages();
         textures_->setGpuBytes(static_cast<std::int64_t>(gpu_->textureBytes()));
@@ -165,6 +178,7 @@ bool MainWindow::renderFrame() {
     frame.camera = viewport_->camera().spec();
     frame.view = view_;
     frame.overlays = overlays_;
+    frame.checkerDensity = static_cast<float>(settings_.checkerDensity());
     if (a_->box_colouring->isChecked()) frame.overlays << QStringLiteral("cull-boxes");
     frame.gpuCulling = a_->gpu_path->isChecked();
     frame.cullMethod = culling_->method();
@@ -197,16 +211,51 @@ void MainWindow::createDocks() {
     textures_ = new TextureDock(context_, this);
     culling_dock_ = new CullingDock(*culling_, this);
     log_ = new LogDock(this);
+    for (QDockWidget* d : findChildren<QDockWidget*>()) {
+        // A dock's width is the user's, never its content's: without this, a long
+        // summary line (selecting a primitive) widens the mesh dock and squeezes the
+        // viewport. Content scrolls or wraps instead.
+        d->widget()->setMinimumWidth(kDockMinWidth);
+        for (QLabel* label : d->widget()->findChildren<QLabel*>()) label->setWordWrap(true);
+        for (QAbstractItemView* view : d->widget()->findChildren<QAbstractItemView*>()) {
+            fit_columns_to_content(view);
+            copy_exact_on_ctrl_c(view);
+        }
+    }
+    // Content hashes: when a column must cut one, keep both ends.
+    if (auto* view = textures_->findChild<QAbstractItemView*>())
+        view->setTextElideMode(Qt::ElideMiddle);
+    resetLayout();
+}
+
+void MainWindow::resetLayout() {
+    // Two columns of tabs around the viewport, the primary dock of each in front:
+    // the viewport keeps most of the window (≥ 55% at 1600×1000).
+    for (QDockWidget* d : findChildren<QDockWidget*>()) {
+        d->setFloating(false);
+        removeDockWidget(d);
+    }
+    // Vertical tabs: every dock title fits along the column's height, in any language.
+    setTabPosition(Qt::LeftDockWidgetArea, QTabWidget::West);
+    setTabPosition(Qt::RightDockWidgetArea, QTabWidget::East);
     addDockWidget(Qt::LeftDockWidgetArea, scene_tree_);
-    addDockWidget(Qt::LeftDockWidgetArea, culling_dock_);
     addDockWidget(Qt::RightDockWidgetArea, mesh_);
-    addDockWidget(Qt::RightDockWidgetArea, material_);
-    addDockWidget(Qt::BottomDockWidgetArea, textures_);
-    addDockWidget(Qt::BottomDockWidgetArea, log_);
-    tabifyDockWidget(textures_, log_);
-    textures_->raise();
-    resizeDocks({scene_tree_, mesh_}, {340, 520}, Qt::Horizontal);
-    resizeDocks({textures_}, {230}, Qt::Vertical);
+    tabifyDockWidget(scene_tree_, culling_dock_);
+    tabifyDockWidget(culling_dock_, log_);
+    tabifyDockWidget(mesh_, material_);
+    tabifyDockWidget(material_, textures_);
+    for (QDockWidget* d : findChildren<QDockWidget*>()) d->show();
+    scene_tree_->raise();
+    mesh_->raise();
+    resizeDocks({scene_tree_, mesh_}, {kLeftDockWidth, kRightDockWidth}, Qt::Horizontal);
+    // The tab bars exist once the layout has run: dock titles scroll, never elide
+    // ("Szenenba…", "Proto…" in German).
+    QTimer::singleShot(0, this, [this] {
+        for (QTabBar* bar : findChildren<QTabBar*>(Qt::FindDirectChildrenOnly)) {
+            bar->setElideMode(Qt::ElideNone);
+            bar->setUsesScrollButtons(true);
+        }
+    });
 }
 
 void MainWindow::connectActions() {
@@ -254,6 +303,13 @@ void MainWindow::connectActions() {
         bool cached_shadows = false;
         if (gpu_ && gpu_->lastCullPasses(passes, cached_shadows))
             culling_dock_->setRendererPasses(std::move(passes), cached_shadows);
+        else if (context_.scene() && pass_frames_left_ > 0) {
+            // The renderer reads a frame's culling counts back when it reuses that
+            // frame's slot: draw the few frames that takes now, or the pass table
+            // says "no frame yet" until the camera first moves.
+            --pass_frames_left_;
+            viewport_->scheduleFrame();
+        }
         if (!first_frame_seen_ && context_.scene()) { // a frame that shows the scene
             first_frame_seen_ = true;
             Q_EMIT firstFrame();
@@ -428,18 +484,18 @@ void MainWindow::jumpToCamera(int node) {
         }
 }
 
-bool MainWindow::setDebugView(const QString& name) {
+bool MainWindow::setDebugView(const QString& name, bool remember) {
     if (!ViewCatalog::isView(name)) return false;
     view_ = name;
-    settings_.setLastView(name);
+    if (remember) settings_.setLastView(name);
     retranslate(); // checks the matching menu entry
     viewport_->scheduleFrame();
     return true;
 }
 
-bool MainWindow::setLanguage(const QString& code) {
+bool MainWindow::setLanguage(const QString& code, bool remember) {
     if (!translations_.install(code)) return false;
-    settings_.setLanguage(code);
+    if (remember) settings_.setLanguage(code);
     // Qt posts LanguageChange (changeEvent retranslates again then); doing it now makes
     // the switch visible in the same event-loop turn.
     retranslate();
@@ -469,6 +525,7 @@ QImage MainWindow::screenshot() {
     // composited from the renderer's readback when there is one.
     QImage image = grab().toImage();
     if (gpu_ && viewport_->isExposed()) {
+        viewport_->renderNow(); // not a frame of an earlier size or camera
         // The X server holds the presented frame: read it back like any window.
         const QPixmap frame = viewport_->screen()->grabWindow(viewport_->winId());
         QPainter painter(&image);
@@ -478,7 +535,7 @@ QImage MainWindow::screenshot() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
-    settings_.saveLayout(saveGeometry(), saveState());
+    if (remember_layout_) settings_.saveLayout(saveGeometry(), saveState());
     loader_.cancel();
     QMainWindow::closeEvent(e);
 }

@@ -60,12 +60,18 @@ public:
     // texture's cache files and reload, so it is compressed again.
     int clearTextureCache();
     void recompressTexture(int texture);
-    bool setDebugView(const QString& name);
+    // `remember`: store it as the setting of later launches. One-shot command-line
+    // flags pass false, so one `--view` or `--language` run does not stick.
+    bool setDebugView(const QString& name, bool remember = true);
     // Culling › Path: the renderer culls on the GPU (true) or the CPU.
     void setGpuCulling(bool gpu);
     const QString& debugView() const { return view_; }
-    bool setLanguage(const QString& code);
+    bool setLanguage(const QString& code, bool remember = true);
     const QString& language() const { return translations_.current(); }
+    // False for a one-shot `--dock` layout: closing then keeps the stored layout.
+    void setLayoutRemembered(bool remember) { remember_layout_ = remember; }
+    // Puts every dock back in the default arrangement (View › Reset Layout).
+    void resetLayout();
     // The whole window as shown, the viewport's last frame composited in.
     QImage screenshot();
     // Selects a node by name (first match) or index; false if there is none.
@@ -145,6 +151,8 @@ private:
     QString view_ = QStringLiteral("lit");
     QStringList overlays_;
     bool first_frame_seen_ = false;
+    bool remember_layout_ = true;
+    int pass_frames_left_ = 0; // extra frames until the pass table has the first frame
     ViewportFrame last_frame_;
     QString last_progress_;
 

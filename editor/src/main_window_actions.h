@@ -13,15 +13,15 @@ namespace sherpa::editor {
 
 struct MainWindow::Actions {
     QMenu *file, *recent, *builtin, *view, *debug_views, *overlays, *cameras, *docks, *culling,
-        *cull_method, *cull_path, *settings, *language, *quality, *help;
+        *cull_method, *cull_path, *settings, *language, *quality, *help, *checker_density;
     QToolBar* toolbar;
     QToolButton* view_button;
     QAction *open, *reload, *close, *quit, *frame_all, *frame_selection, *fly, *reset_layout;
     QAction *freeze, *box_colouring, *missing_checker, *cpu_path, *gpu_path, *cache_dir, *about,
         *about_qt, *clear_recent;
-    QActionGroup *view_group, *method_group, *language_group, *quality_group;
+    QActionGroup *view_group, *method_group, *language_group, *quality_group, *density_group;
     std::vector<QAction*> view_actions, overlay_actions, method_actions, language_actions,
-        quality_actions, builtin_actions;
+        quality_actions, builtin_actions, density_actions;
 };
 
 } // namespace sherpa::editor

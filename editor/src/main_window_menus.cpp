@@ -35,6 +35,8 @@ namespace {
 const char* const kBuiltins[] = {"builtin:default", "builtin:grid?n=10", "builtin:grid?n=100",
                                  "builtin:grid?n=1000"};
 const char* const kQualities[] = {"fast", "balanced", "best"};
+// Checks per UV unit offered for the uv checker views (the engine default is 8).
+constexpr int kCheckerDensities[] = {4, 8, 16, 32, 64, 128};
 } // namespace
 
 void MainWindow::createActions() {
@@ -119,6 +121,18 @@ void MainWindow::createActions() {
                 [this, q] { settings_.setTextureQuality(QString::fromLatin1(q)); });
         a.quality_actions.push_back(act);
     }
+    a.density_group = new QActionGroup(this);
+    for (const int checks : kCheckerDensities) {
+        QAction* act = a.density_group->addAction(QString::number(checks));
+        act->setCheckable(true);
+        act->setData(checks);
+        act->setChecked(settings_.checkerDensity() == checks);
+        connect(act, &QAction::triggered, this, [this, checks] {
+            settings_.setCheckerDensity(checks);
+            viewport_->scheduleFrame();
+        });
+        a.density_actions.push_back(act);
+    }
     for (const char* spec : kBuiltins) {
         auto* act = new QAction(this);
         connect(act, &QAction::triggered, this,
@@ -142,12 +156,7 @@ void MainWindow::createActions() {
     });
     connect(a.gpu_path, &QAction::toggled, culling_, &CullingMonitor::setGpuPath);
     connect(culling_, &CullingMonitor::updated, viewport_, &ViewportWindow::scheduleFrame);
-    connect(a.reset_layout, &QAction::triggered, this, [this] {
-        for (QDockWidget* d : findChildren<QDockWidget*>()) {
-            d->setFloating(false);
-            d->show();
-        }
-    });
+    connect(a.reset_layout, &QAction::triggered, this, &MainWindow::resetLayout);
     connect(a.cache_dir, &QAction::triggered, this, [this] {
         const QString dir = QFileDialog::getExistingDirectory(this, tr("Texture cache directory"),
                                                               settings_.cacheDirectory());
@@ -183,6 +192,8 @@ void MainWindow::createMenus() {
     for (QAction* act : a.view_actions) a.debug_views->addAction(act);
     a.overlays = a.view->addMenu(QString());
     for (QAction* act : a.overlay_actions) a.overlays->addAction(act);
+    a.checker_density = a.view->addMenu(QString());
+    for (QAction* act : a.density_actions) a.checker_density->addAction(act);
     a.view->addSeparator();
     a.view->addAction(a.frame_all);
     a.view->addAction(a.frame_selection);
@@ -276,6 +287,7 @@ void MainWindow::retranslate() {
             a.view_button->setText(tr("View: %1").arg(views[i].label));
     }
     a.overlays->setTitle(tr("&Overlays"));
+    a.checker_density->setTitle(tr("&UV Checker Density (checks per UV unit)"));
     const std::vector<ViewEntry> overlays = ViewCatalog::overlays();
     for (std::size_t i = 0; i < overlays.size(); ++i)
         a.overlay_actions[i]->setText(overlays[i].label);

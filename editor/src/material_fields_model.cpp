@@ -127,6 +127,11 @@ QVariant MaterialFieldsModel::data(const QModelIndex& index, int role) const {
             24, 24, Qt::KeepAspectRatio, Qt::SmoothTransformation);
     if (role == Qt::ToolTipRole && index.column() == ChainColumn && texture >= 0)
         return tr("Double-click to show this texture in the texture dock");
+    if ((role == Qt::ToolTipRole || role == Format::kExactTextRole) &&
+        index.column() == ValueColumn) { // the value the GPU holds, every digit
+        if (f.type == FieldType::Vec4) return Format::vecExact(read<glm::vec4>(record_, f.offset));
+        if (f.type == FieldType::Float) return Format::exact(read<float>(record_, f.offset));
+    }
     if (role != Qt::DisplayRole) return {};
     switch (index.column()) {
     case OffsetColumn:

@@ -1,5 +1,6 @@
 #include "mesh_dock.h"
 
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -56,17 +57,18 @@ MeshDock::MeshDock(const EditorContext& context, QWidget* parent)
     auto* vertex_page = new QWidget(tabs_);
     auto* vertex_layout = new QVBoxLayout(vertex_page);
     vertex_layout->setContentsMargins(0, 0, 0, 0);
-    auto* tools = new QHBoxLayout;
+    // Two rows: in one, German labels need more than the dock's default width.
+    auto* tools = new QGridLayout;
     jump_ = new QSpinBox(vertex_page);
     jump_->setRange(0, 0);
     jump_button_ = new QPushButton(vertex_page);
     tangent_button_ = new QPushButton(vertex_page);
     tangent_summary_ = new QLabel(vertex_page);
-    tools->addWidget(jump_);
-    tools->addWidget(jump_button_);
-    tools->addSpacing(12);
-    tools->addWidget(tangent_button_);
-    tools->addWidget(tangent_summary_, 1);
+    tools->addWidget(jump_, 0, 0);
+    tools->addWidget(jump_button_, 0, 1);
+    tools->addWidget(tangent_button_, 1, 0, 1, 2);
+    tools->addWidget(tangent_summary_, 1, 2);
+    tools->setColumnStretch(2, 1);
     vertex_view_ = make_big_table(vertex_page, vertices_);
     vertex_view_->setSortingEnabled(true);
     vertex_view_->horizontalHeader()->setSortIndicator(-1, Qt::AscendingOrder);

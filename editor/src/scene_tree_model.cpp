@@ -1,6 +1,7 @@
 #include "scene_tree_model.h"
 
 #include <QFont>
+#include <QStringList>
 #include <map>
 
 #include "format_values.h"
@@ -122,8 +123,10 @@ QString SceneTreeModel::name(const Item& it) const {
     const auto idx = static_cast<std::size_t>(it.index);
     switch (it.kind) {
     case Kind::SceneRoot: {
+        // The authored name is data (often Blender's default "Scene"): shown after a
+        // translated label, so the root reads as a scene in every language.
         const QString n = from_std(s.scenes[idx].name);
-        return n.isEmpty() ? tr("Scene %1").arg(it.index) : n;
+        return n.isEmpty() ? tr("Scene %1").arg(it.index) : tr("Scene %1: %2").arg(it.index).arg(n);
     }
     case Kind::Node: {
         const QString n = from_std(s.nodes[idx].name);
@@ -147,7 +150,7 @@ QString SceneTreeModel::name(const Item& it) const {
     return {};
 }
 
-QString SceneTreeModel::detail(const Item& it) const {
+QString SceneTreeModel::detail(const Item& it, bool full) const {
     const Scene& s = *context_.scene();
     const auto idx = static_cast<std::size_t>(it.index);
     switch (it.kind) {
@@ -156,6 +159,14 @@ QString SceneTreeModel::detail(const Item& it) const {
     case Kind::Node: {
         const Node& n = s.nodes[idx];
         if (n.has_matrix) return tr("matrix");
+        if (!full) { // what differs from identity; the whole TRS in the tooltip
+            QStringList parts;
+            if (n.translation != glm::vec3(0.0f))
+                parts << tr("T %1").arg(Format::vec(n.translation));
+            if (n.rotation != glm::quat(1.0f, 0.0f, 0.0f, 0.0f)) parts << tr("rotated");
+            if (n.scale != glm::vec3(1.0f)) parts << tr("S %1").arg(Format::vec(n.scale));
+            return parts.isEmpty() ? tr("identity") : parts.join(QStringLiteral("  "));
+        }
         return tr("T %1  R %2  S %3")
             .arg(Format::vec(n.translation))
             .arg(Format::vec(glm::vec4(n.rotation.x, n.rotation.y, n.rotation.z, n.rotation.w)))
@@ -164,6 +175,8 @@ QString SceneTreeModel::detail(const Item& it) const {
     case Kind::Primitive: {
         const PrimitiveInfo& p = s.primitives[idx];
         if (p.engine_mesh < 0) return tr("skipped: %1").arg(from_std(p.skipped_reason));
+        if (!full && p.mode == PrimitiveMode::Triangles)
+            return tr("%1 vertices, %2 triangles").arg(p.vertices).arg(p.triangles);
         return tr("%1, %2 vertices, %3 triangles")
             .arg(Format::primitiveMode(p.mode))
             .arg(p.vertices)
@@ -188,6 +201,8 @@ QVariant SceneTreeModel::data(const QModelIndex& index, int role) const {
     if (!index.isValid() || !context_.scene()) return {};
     const Item& it = items_[index.internalId()];
     switch (role) {
+    case Qt::ToolTipRole:
+        return index.column() == DetailColumn ? detail(it, true) : QVariant();
     case Qt::DisplayRole:
         if (index.column() == NameColumn) return name(it);
         if (index.column() == DetailColumn) return detail(it);

@@ -49,7 +49,8 @@ private:
     int addItem(Kind kind, int index, int node, int parent);
     void addNode(int node, int parent, int depth);
     QString name(const Item& item) const;
-    QString detail(const Item& item) const;
+    // `full`: every value (the tooltip); else short enough for a narrow dock.
+    QString detail(const Item& item, bool full = false) const;
 
     const EditorContext& context_;
     std::vector<Item> items_;

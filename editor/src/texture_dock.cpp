@@ -1,6 +1,6 @@
 #include "texture_dock.h"
 
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
@@ -31,7 +31,8 @@ TextureDock::TextureDock(const EditorContext& context, QWidget* parent)
     view_->setSelectionBehavior(QAbstractItemView::SelectRows);
     view_->setSelectionMode(QAbstractItemView::SingleSelection);
     view_->setWordWrap(false);
-    auto* actions = new QHBoxLayout;
+    // Three rows: in one, the buttons need more than a side dock's width.
+    auto* actions = new QGridLayout;
     totals_ = new QLabel(body);
     recompress_ = new QPushButton(body);
     clear_ = new QPushButton(body);
@@ -39,10 +40,10 @@ TextureDock::TextureDock(const EditorContext& context, QWidget* parent)
     // Enabled once the uploaded scene's textures came through a disk cache.
     recompress_->setEnabled(false);
     clear_->setEnabled(false);
-    actions->addWidget(totals_, 1);
-    actions->addWidget(recompress_);
-    actions->addWidget(clear_);
-    actions->addWidget(open_folder_);
+    actions->addWidget(totals_, 0, 0, 1, 2);
+    actions->addWidget(recompress_, 1, 0, 1, 2);
+    actions->addWidget(clear_, 2, 0);
+    actions->addWidget(open_folder_, 2, 1);
     layout->addWidget(view_);
     layout->addLayout(actions);
     setWidget(body);

@@ -25,7 +25,8 @@ QVariant TriangleTableModel::data(const QModelIndex& index, int role) const {
     const Mesh* m = mesh_.get();
     if (!index.isValid() || !m) return {};
     if (role == Qt::TextAlignmentRole) return int(Qt::AlignRight | Qt::AlignVCenter);
-    if (role != Qt::DisplayRole) return {};
+    const bool exact = role == Qt::ToolTipRole || role == Format::kExactTextRole;
+    if (role != Qt::DisplayRole && !(exact && index.column() == AreaColumn)) return {};
     const std::size_t t = static_cast<std::size_t>(index.row()) * 3;
     switch (index.column()) {
     case IndexColumn:
@@ -39,7 +40,8 @@ QVariant TriangleTableModel::data(const QModelIndex& index, int role) const {
         const glm::vec3 a = m->vertices[m->indices[t]].position;
         const glm::vec3 b = m->vertices[m->indices[t + 1]].position;
         const glm::vec3 c = m->vertices[m->indices[t + 2]].position;
-        return Format::number(0.5 * static_cast<double>(glm::length(glm::cross(b - a, c - a))));
+        const double area = 0.5 * static_cast<double>(glm::length(glm::cross(b - a, c - a)));
+        return exact ? Format::exact(area) : Format::number(area);
     }
     default:
         return {};

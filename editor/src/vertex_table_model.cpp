@@ -89,11 +89,13 @@ QVariant VertexTableModel::data(const QModelIndex& index, int role) const {
     const auto v = static_cast<std::size_t>(vertexOfRow(index.row()));
     if (role == VertexRole) return static_cast<int>(v);
     if (role == Qt::TextAlignmentRole) return int(Qt::AlignRight | Qt::AlignVCenter);
-    // Views ask for a dozen roles per cell; only two need the value.
-    if (role == Qt::DisplayRole) {
+    // Views ask for a dozen roles per cell; only these need the value. Shown at six
+    // digits so columns stay narrow; the float's exact text on hover and copy.
+    if (role == Qt::DisplayRole || role == Qt::ToolTipRole || role == Format::kExactTextRole) {
         if (index.column() == IndexColumn) return static_cast<qulonglong>(v);
         const double x = value(v, index.column());
-        return std::isnan(x) ? QStringLiteral("—") : Format::number(x);
+        if (std::isnan(x)) return QStringLiteral("—");
+        return role == Qt::DisplayRole ? Format::number(x) : Format::exact(x);
     }
     if (role == Qt::ForegroundRole && index.column() == TangentErrorColumn &&
         value(v, index.column()) > 5.0)

@@ -37,6 +37,8 @@ public:
     // scene is framed before the window has its final size).
     void setAutoFrame(bool on) { auto_frame_ = on; }
     std::uint64_t framesRendered() const { return frames_; }
+    // Draws a frame now (screenshots: the grab shows the current size and camera).
+    void renderNow();
 
 Q_SIGNALS:
     void cameraChanged();
@@ -60,7 +62,6 @@ protected:
     void keyReleaseEvent(QKeyEvent* e) override;
 
 private:
-    void renderNow();
     void flyStep();
 
     OrbitCamera camera_;

@@ -33,6 +33,8 @@ inline void isolate_settings() {
     QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, dir.path());
     QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, dir.path());
     QSettings().clear();
+    // The texture cache too (the engine's directory is $XDG_CACHE_HOME/sherpa).
+    qputenv("XDG_CACHE_HOME", (dir.path() + QStringLiteral("/cache")).toUtf8());
 }
 
 // The validation layer's messages since the last call ("" when none); suites set

@@ -36,7 +36,7 @@ layout(set = 1, binding = 0, std140) uniform FrameBlock {
     vec4 sun_radiance;                      // 496: rgb colour * intensity
     vec4 ambient;                           // 512: rgb ambient radiance
     uvec4 params;                           // 528: x view, y lights, z cascades, w shadow taps
-    vec4 overlay;                           // 544: x glyph length
+    vec4 overlay;                           // 544: x glyph length, y uv checks per unit
     vec4 cascade_texel;                     // 560: world size of a shadow texel per cascade
     GPULight lights[MAX_LIGHTS];            // 576
 } frame;

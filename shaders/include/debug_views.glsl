@@ -10,15 +10,20 @@ vec3 display_to_linear(vec3 c) {
     return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), greaterThan(c, vec3(0.04045)));
 }
 
-float checker(vec2 uv) {
-    // 8x8 checks per UV unit; the tint shows which way U (red) and V (green) grow.
-    vec2 c = floor(uv * 8.0);
-    float k = mod(c.x + c.y, 2.0);
-    return k;
+// The uv checker, `density` checks per UV unit, box-filtered over the pixel's UV
+// footprint (fwidth): the analytic integral of the square wave, so far or
+// minified checks fade to their mean instead of aliasing into moiré. 0 or 1 on
+// magnified checks, as mod(floor(u) + floor(v), 2) would be. Call in uniform control flow.
+float checker(vec2 uv, float density) {
+    vec2 p = uv * density;
+    vec2 w = max(fwidth(p), vec2(1e-4));
+    vec2 i = 2.0 * (abs(fract((p - 0.5 * w) * 0.5) - 0.5) - abs(fract((p + 0.5 * w) * 0.5) - 0.5)) / w;
+    return 0.5 - 0.5 * i.x * i.y;
 }
 
-vec3 checker_color(vec2 uv) {
-    float k = checker(uv);
+vec3 checker_color(vec2 uv, float density) {
+    float k = checker(uv, density);
+    // The tint shows which way U (red) and V (green) grow.
     vec3 tint = vec3(fract(uv), 0.0) * 0.5 + 0.25;
     return mix(vec3(0.1), tint + 0.5, k);
 }

@@ -37,6 +37,21 @@ TEST(CliInfo, JsonHasEveryRequiredKey) {
     EXPECT_TRUE(j["timings_ms"]["process"].is_number());
 }
 
+// Every extension the file names is listed with whether Sherpa reads it; an
+// unsupported one that is only used (not required) does not stop the file opening.
+TEST(CliInfo, JsonListsExtensionsUsedAndRequiredWithSupport) {
+    const CliRun r =
+        run_cli("info '" + (sherpa::test::data_dir() / "unsupported_used_extension.gltf").string() +
+                "' --json");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    const auto j = nlohmann::json::parse(r.out);
+    const nlohmann::json used = {{{"name", "EXT_made_up_extras"}, {"supported", false}},
+                                 {{"name", "KHR_texture_transform"}, {"supported", true}}};
+    const nlohmann::json required = {{{"name", "KHR_texture_transform"}, {"supported", true}}};
+    EXPECT_EQ(j.at("extensions_used"), used);
+    EXPECT_EQ(j.at("extensions_required"), required);
+}
+
 TEST(CliInfo, BuiltinDefaultWorks) {
     const CliRun r = run_cli("info builtin:default");
     EXPECT_EQ(r.exit_code, 0) << r.out;

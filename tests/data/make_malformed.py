@@ -64,8 +64,19 @@ cases["node_cycle.gltf"] = g
 g = triangle(); g["nodes"] = [{"mesh": 0, "children": [0]}]; cases["node_self_child.gltf"] = g
 g = triangle(); g["nodes"] = [{"children": [2]}, {"children": [2]}, {"mesh": 0}]
 g["scenes"] = [{"nodes": [0, 1]}]; cases["node_two_parents.gltf"] = g
-g = triangle(); g["extensionsUsed"] = ["KHR_draco_mesh_compression"]
-g["extensionsRequired"] = ["KHR_draco_mesh_compression"]; cases["unknown_required_extension.gltf"] = g
+g = triangle(); g["extensionsUsed"] = ["EXT_made_up_required"]
+g["extensionsRequired"] = ["EXT_made_up_required"]; cases["unknown_required_extension.gltf"] = g
+# As compressors write it: the accessors have no bufferView (the data is in the
+# extension's stream), which tinygltf alone reports as "accessor[1] invalid bufferView".
+g = triangle(); g["extensionsUsed"] = ["EXT_made_up_compression", "KHR_texture_transform"]
+g["extensionsRequired"] = ["EXT_made_up_compression"]
+for a in g["accessors"]: del a["bufferView"]
+g["meshes"][0]["primitives"][0]["extensions"] = {"EXT_made_up_compression": {"bufferView": 0}}
+cases["unknown_required_extension_no_views.gltf"] = g
+# Used but not required: the file opens; info --json reports it unsupported.
+g = triangle(); g["extensionsUsed"] = ["EXT_made_up_extras", "KHR_texture_transform"]
+g["extensionsRequired"] = ["KHR_texture_transform"]
+cases["unsupported_used_extension.gltf"] = g
 g = triangle(); del g["meshes"][0]["primitives"][0]["material"]; cases["no_material.gltf"] = g
 g = triangle(); g["materials"][0]["pbrMetallicRoughness"] = {"baseColorTexture": {"index": 3}}
 cases["texture_out_of_range.gltf"] = g

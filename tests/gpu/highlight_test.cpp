@@ -1,10 +1,14 @@
-// The selection highlight draws: the highlighted instance gains orange pixels
-// (wireframe and box), a highlighted triangle and vertex magenta ones; an
-// instance that is not drawn changes nothing. The highlighted render is written
-// to highlight_box.png next to the test binary for inspection.
+// The selection highlight draws: the highlighted instance's surface is tinted
+// orange with its shading still showing (every tinted pixel a mix of the plain
+// render and orange, never solid orange) and its box in orange; a highlighted
+// triangle and vertex magenta pixels; an instance that is not drawn changes nothing. The
+// highlighted render is written to highlight_box.png next to the test binary for inspection.
 #include "gpu_test_support.h"
 
 #include <sherpa/gpu/image_io.h>
+
+#include <algorithm>
+#include <cstdlib>
 
 namespace sherpa::test {
 namespace {
@@ -24,6 +28,35 @@ Counts count_highlight(const std::vector<std::uint8_t>& rgba) {
         if (r > 235 && g < 30 && b > 235) ++c.magenta;
     }
     return c;
+}
+
+struct Tint {
+    std::size_t tinted = 0; // changed pixels that lie between the plain pixel and orange
+    std::size_t solid = 0;  // changed pixels that went (almost) solid orange
+    std::size_t other = 0;  // changed any other way
+};
+
+// Compares a highlighted render with the plain one, pixel by pixel.
+Tint classify_tint(const std::vector<std::uint8_t>& plain, const std::vector<std::uint8_t>& lit) {
+    const int orange[3] = {255, 180, 0}; // kHighlightColor, sRGB-encoded
+    Tint t;
+    for (std::size_t i = 0; i < plain.size(); i += 4) {
+        bool changed = false, between = true, near_orange = true;
+        for (int c = 0; c < 3; ++c) {
+            const int p = plain[i + std::size_t(c)], l = lit[i + std::size_t(c)];
+            changed |= std::abs(l - p) > 2;
+            between &= l >= std::min(p, orange[c]) - 3 && l <= std::max(p, orange[c]) + 3;
+            near_orange &= std::abs(l - orange[c]) < 25;
+        }
+        if (!changed) continue;
+        if (near_orange)
+            ++t.solid;
+        else if (between)
+            ++t.tinted;
+        else
+            ++t.other;
+    }
+    return t;
 }
 
 class HighlightTest : public GpuTest {
@@ -48,12 +81,21 @@ TEST_F(HighlightTest, SelectedInstanceTriangleAndVertexAreDrawn) {
     ASSERT_EQ(scene->instances.size(), 1u);
     renderer().load(*scene);
     gpu::RenderSettings s = settings();
-    const Counts plain = count_highlight(render(s));
+    const std::vector<std::uint8_t> plain_rgba = render(s);
+    const Counts plain = count_highlight(plain_rgba);
 
     s.highlight_instance = 0;
-    const Counts instance = count_highlight(render(s));
-    EXPECT_GT(instance.orange, plain.orange + 200) << "wireframe and box in orange";
+    const std::vector<std::uint8_t> lit_rgba = render(s);
+    const Counts instance = count_highlight(lit_rgba);
+    EXPECT_GT(instance.orange, plain.orange + 200) << "the box in orange";
     EXPECT_EQ(instance.magenta, plain.magenta);
+    // The box covers about a quarter of the 160² image: its surface is tinted, and
+    // the tint keeps the shading (a mix with the plain pixel), apart from the box
+    // edges drawn in solid orange.
+    const Tint tint = classify_tint(plain_rgba, lit_rgba);
+    EXPECT_GT(tint.tinted, kSize * kSize / 8) << "the surface is tinted";
+    EXPECT_LT(tint.solid, tint.tinted / 4) << "solid orange only on the box's edges";
+    EXPECT_LT(tint.other, tint.tinted / 50) << "nothing but a mix towards orange";
 
     s.highlight_triangle = 0;
     s.highlight_vertex = 0;

@@ -41,7 +41,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"node_cycle.gltf", "cycle"}, BadCase{"node_self_child.gltf", "its own child"},
         BadCase{"node_two_parents.gltf", "child of both"},
         BadCase{"node_mesh_out_of_range.gltf", "nodes[0].mesh: mesh index 4 out of range"},
-        BadCase{"unknown_required_extension.gltf", "KHR_draco_mesh_compression"},
+        BadCase{"unknown_required_extension.gltf", "EXT_made_up_required"},
+        // named before the symptom (accessors without bufferView) is looked at
+        BadCase{"unknown_required_extension_no_views.gltf",
+                "extensionsRequired: \"EXT_made_up_compression\" not supported"},
         BadCase{"texture_out_of_range.gltf", "baseColorTexture.index: texture 3 out of range"},
         BadCase{"bad_mode.gltf", "mode: 9"},
         BadCase{"default_scene_out_of_range.gltf", "scene index 3"},

@@ -84,7 +84,7 @@ void Renderer::fill_frame_data(FrameSlot& slot, const RenderSettings& settings, 
     f.params = glm::uvec4(static_cast<std::uint32_t>(settings.view), count, cascades, taps);
     const float diagonal = info.bounds.valid() ? glm::length(info.bounds.extent()) : 1.0f;
     f.overlay = glm::vec4(settings.glyph_length > 0.0f ? settings.glyph_length : 0.02f * diagonal,
-                          0.0f, 0.0f, 0.0f);
+                          settings.uv_checker_density, 0.0f, 0.0f);
     std::memcpy(resources_->get(slot.frame_data).mapped, &f, sizeof(f));
 }
 

@@ -1,8 +1,9 @@
 // The selection highlight (RenderSettings::highlight_*): drawn after every other
-// overlay. The instance shows as its wireframe (depth tested, pulled towards the
-// camera like the wireframe overlay) and its world box drawn through everything,
-// both orange; a selected triangle is filled and a selected vertex gets a
-// normal/tangent/bitangent tripod, both magenta and never hidden by depth.
+// overlay. The instance's visible surface is tinted translucent orange (depth
+// tested, pulled towards the camera like the wireframe overlay), so its shading
+// still shows, and its world box is drawn through everything in orange; a selected triangle is
+// filled and a selected vertex gets a normal/tangent/bitangent tripod, both magenta and never
+// hidden by depth.
 #include "frame_slot.h"
 
 #include <algorithm>
@@ -41,12 +42,13 @@ void Renderer::draw_highlight(VkCommandBuffer cmd, FrameSlot& slot, const Pipeli
     vkCmdSetCullMode(cmd, VK_CULL_MODE_NONE);
     vkCmdSetDepthWriteEnable(cmd, VK_FALSE);
 
-    // The instance: wireframe on its visible surface.
+    // The instance: a translucent tint on its visible surface (not a wireframe: on a
+    // dense mesh that is solid orange and hides what the user selected it to see).
     vkCmdSetDepthCompareOp(cmd, VK_COMPARE_OP_GREATER_OR_EQUAL);
     vkCmdSetDepthBiasEnable(cmd, VK_TRUE);
     vkCmdSetDepthBias(cmd, 1.0f, 0.0f, 1.0f);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::Wireframe));
-    pc.color = kHighlightColor;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::Tint));
+    pc.color = kHighlightTint;
     vkCmdPushConstants(cmd, layout, stages, 0, sizeof(pc), &pc);
     vkCmdDrawIndexed(cmd, m.index_count, 1, m.first_index, 0, gpu_instance);
     ++slot.draw_calls;

@@ -171,6 +171,9 @@ Pipelines::Pipelines(const Context& context, VkDescriptorSetLayout textures_layo
     make(PipelineId::BoxLines,
          {lines_vert.get(), flat_frag.get(), VK_PRIMITIVE_TOPOLOGY_LINE_LIST});
     make(PipelineId::Floor, {depth_vert.get(), floor_frag.get()});
+    PipelineDesc tint{depth_vert.get(), floor_frag.get()};
+    tint.blend = true;
+    make(PipelineId::Tint, tint);
     make(PipelineId::ShadowOpaque,
          {depth_vert.get(), VK_NULL_HANDLE, VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST,
           VK_POLYGON_MODE_FILL, false, false, false});

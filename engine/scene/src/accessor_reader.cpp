@@ -28,23 +28,6 @@ std::uint32_t component_size(int component_type) {
     }
 }
 
-std::uint32_t type_components(int type) {
-    switch (type) {
-    case TINYGLTF_TYPE_SCALAR:
-        return 1;
-    case TINYGLTF_TYPE_VEC2:
-        return 2;
-    case TINYGLTF_TYPE_VEC3:
-        return 3;
-    case TINYGLTF_TYPE_VEC4:
-        return 4;
-    case TINYGLTF_TYPE_MAT4:
-        return 16; // skins' inverseBindMatrices: 4-byte columns, no padding
-    default:
-        return 0; // MAT2/MAT3 (column padding) are never used by what Sherpa reads
-    }
-}
-
 std::string accessor_path(int index) {
     return "accessors[" + std::to_string(index) + "]";
 }
@@ -187,6 +170,23 @@ void validate_accessor_shape(const tinygltf::Accessor& acc, const std::string& w
 }
 
 } // namespace
+
+std::uint32_t type_components(int type) {
+    switch (type) {
+    case TINYGLTF_TYPE_SCALAR:
+        return 1;
+    case TINYGLTF_TYPE_VEC2:
+        return 2;
+    case TINYGLTF_TYPE_VEC3:
+        return 3;
+    case TINYGLTF_TYPE_VEC4:
+        return 4;
+    case TINYGLTF_TYPE_MAT4:
+        return 16; // skins' inverseBindMatrices: 4-byte columns, no padding
+    default:
+        return 0; // MAT2/MAT3 (column padding) are never used by what Sherpa reads
+    }
+}
 
 std::uint32_t accessor_count(const tinygltf::Model& model, int index, const std::string& where) {
     const auto& acc = checked_accessor(model, index, where);

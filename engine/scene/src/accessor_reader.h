@@ -48,4 +48,8 @@ std::optional<AccessorRangeViolation> check_declared_range(const tinygltf::Model
 // One warning line for a violation.
 std::string describe_range_violation(const AccessorRangeViolation& v);
 
+// Components per element of an accessor type (SCALAR 1 .. VEC4 4); 0 for matrices,
+// which are never vertex attributes or indices.
+std::uint32_t type_components(int type);
+
 } // namespace sherpa::detail

@@ -1,6 +1,9 @@
 // import_gltf(): parse with tinygltf, validate, convert, flatten. Any failure
 // discards the partial scene and reports "FILE: what is wrong".
+#include "gltf_draco.h"
 #include "gltf_fs.h"
+#include "gltf_meshopt.h"
+#include "gltf_prepare.h"
 #include "gltf_validate.h"
 #include "import_context.h"
 #include "import_error.h"
@@ -24,12 +27,6 @@ namespace {
 // The vertex attributes the engine draws with; any other is reported.
 constexpr std::array<std::string_view, 6> kDrawnAttributes{"POSITION",   "NORMAL",     "TANGENT",
                                                            "TEXCOORD_0", "TEXCOORD_1", "COLOR_0"};
-
-constexpr std::array<std::string_view, 5> kSupportedExtensions{
-    "KHR_texture_transform", "KHR_materials_emissive_strength",
-    "KHR_lights_punctual",   "KHR_materials_unlit",
-    "KHR_mesh_quantization", // every accessor component type is decoded
-};
 
 // Keeps images encoded: decoding belongs to the texture pipeline, which hashes the
 // encoded bytes for its cache. tinygltf hands us the bytes of external files and data
@@ -130,6 +127,9 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         result.error = path + ": " + problem;
         return result;
     }
+    // Compressed files hold what tinygltf would refuse (see gltf_prepare.h).
+    if (auto rewritten = detail::prepared_for_tinygltf(bytes); !rewritten.empty())
+        bytes = std::move(rewritten);
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(keep_encoded_image, nullptr);
     loader.SetFsCallbacks(detail::safe_fs_callbacks());
@@ -163,15 +163,20 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
 
     const auto t_process = std::chrono::steady_clock::now();
     try {
-        for (const auto& ext : model.extensionsRequired)
-            if (std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), ext) ==
-                kSupportedExtensions.end())
-                detail::fail("extensionsRequired: \"" + ext + "\" is not supported by Sherpa");
+        // validate_gltf_bytes refused unsupported required extensions already.
+        scene->extensions_used = model.extensionsUsed;
+        scene->extensions_required = model.extensionsRequired;
+        const auto decoded_views = detail::decode_meshopt_views(model);
+        const auto decoded_draco = detail::decode_draco_primitives(model);
         detail::ImportContext ctx{model, *scene};
+        for (const auto& d : decoded_draco)
+            ctx.range_checked.insert(d.range_checked.begin(), d.range_checked.end());
         if (!detail::begin_stage(options, LoadStage::Geometry)) return detail::cancelled_result();
         detail::import_samplers_images_textures(ctx);
         detail::import_materials(ctx);
         detail::import_meshes(ctx);
+        detail::attach_meshopt_compression(model, decoded_views, *scene);
+        detail::attach_draco_compression(decoded_draco, *scene);
         if (!detail::end_stage(options, LoadStage::Geometry)) return detail::cancelled_result();
         if (!detail::tangent_stage(*scene, options)) return detail::cancelled_result();
         detail::import_lights_cameras(ctx);

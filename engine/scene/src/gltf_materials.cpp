@@ -109,6 +109,33 @@ std::uint32_t ImportContext::default_material_id() {
     return static_cast<std::uint32_t>(default_material);
 }
 
+namespace {
+
+// The image a texture shows: an image extension's source (KHR_texture_basisu: KTX2,
+// EXT_texture_webp: WebP; both decoded by the texture pipeline) when the texture
+// names one, else the core `source`, which is then the fallback for viewers without
+// the extension. Every index is range-checked.
+int texture_source(const tinygltf::Texture& t, std::size_t images, const std::string& where) {
+    const auto check = [&](int index, const std::string& at) {
+        if (index >= static_cast<int>(images))
+            fail(at + ": image " + std::to_string(index) + " out of range (file has " +
+                 std::to_string(images) + " images)");
+        return index;
+    };
+    check(t.source, where + ".source");
+    for (const char* ext : {"KHR_texture_basisu", "EXT_texture_webp"}) {
+        const auto it = t.extensions.find(ext);
+        if (it == t.extensions.end() || !it->second.Has("source")) continue;
+        const tinygltf::Value& v = it->second.Get("source");
+        if (!v.IsNumber() || v.GetNumberAsInt() < 0)
+            fail(where + ".extensions." + ext + ".source: not an image index");
+        return check(v.GetNumberAsInt(), where + ".extensions." + ext + ".source");
+    }
+    return t.source;
+}
+
+} // namespace
+
 void import_samplers_images_textures(ImportContext& ctx) {
     const auto& model = ctx.model;
     Scene& scene = ctx.scene;
@@ -148,6 +175,10 @@ void import_samplers_images_textures(ImportContext& ctx) {
                 rec.mime_type = "image/png";
             else if (ext == "jpg" || ext == "jpeg")
                 rec.mime_type = "image/jpeg";
+            else if (ext == "webp")
+                rec.mime_type = "image/webp";
+            else if (ext == "ktx2")
+                rec.mime_type = "image/ktx2";
             else if (img.uri.rfind("data:image/", 0) == 0)
                 rec.mime_type = img.uri.substr(5, img.uri.find(';') - 5);
         }
@@ -158,15 +189,13 @@ void import_samplers_images_textures(ImportContext& ctx) {
         const std::string where = "textures[" + std::to_string(i) + "]";
         TextureRecord rec;
         rec.name = t.name;
-        if (t.source >= static_cast<int>(model.images.size()))
-            fail(where + ".source: image " + std::to_string(t.source) + " out of range (file has " +
-                 std::to_string(model.images.size()) + " images)");
+        const int source = texture_source(t, model.images.size(), where);
         if (t.sampler >= static_cast<int>(model.samplers.size()))
             fail(where + ".sampler: " + std::to_string(t.sampler) + " out of range (file has " +
                  std::to_string(model.samplers.size()) + " samplers)");
-        if (t.source < 0)
+        if (source < 0)
             ctx.warn(where + ": no image source; materials using it read default textures");
-        rec.image = t.source;
+        rec.image = source;
         rec.sampler = t.sampler;
         scene.textures.push_back(std::move(rec));
     }

@@ -2,6 +2,8 @@
 
 #include "checked_math.h"
 
+#include <sherpa/scene/gltf_extensions.h>
+
 #include <cctype>
 #include <cstdio>
 #include <cstring>
@@ -197,6 +199,27 @@ std::string check_asset(const json& root) {
     return {};
 }
 
+// extensionsRequired, checked before any other property: a file that needs an
+// extension Sherpa does not read fails on the extension's name, not on a symptom of
+// it (a Draco primitive's accessors have no bufferView, which tinygltf reports as
+// "accessor[0] invalid bufferView").
+std::string check_required_extensions(const json& root) {
+    const auto required = root.find("extensionsRequired");
+    if (required == root.end()) return {};
+    if (!required->is_array())
+        return "extensionsRequired: " + describe(*required) + " is not an array";
+    std::string unsupported;
+    for (const json& name : *required) {
+        if (!name.is_string())
+            return "extensionsRequired: " + describe(name) + " is not an extension name";
+        if (!is_supported_gltf_extension(name.get<std::string>()))
+            unsupported += (unsupported.empty() ? "\"" : ", \"") + name.get<std::string>() + "\"";
+    }
+    if (unsupported.empty()) return {};
+    return "extensionsRequired: " + unsupported +
+           " not supported by Sherpa (the file cannot be read without it)";
+}
+
 std::string check_properties(const json& root) {
     Checker c;
     std::vector<std::uint64_t> buffer_lengths;
@@ -300,6 +323,7 @@ std::string validate_gltf_bytes(std::span<const std::uint8_t> bytes) {
     }
     if (!root.is_object()) return "the top-level JSON value is not an object: not a glTF file";
     if (std::string e = check_asset(root); !e.empty()) return e;
+    if (std::string e = check_required_extensions(root); !e.empty()) return e;
     return check_properties(root);
 }
 

@@ -1,5 +1,6 @@
 // prepare_textures: cache lookups, then decoding (a few files at a time),
 // mip generation and block compression of the misses, then cache writes.
+#include <sherpa/texture/basis.h>
 #include <sherpa/texture/texture_pipeline.h>
 
 #include <algorithm>
@@ -69,7 +70,7 @@ bool decode_source(const ImageRecord& img, RgbaImage& out, std::string& error) {
         out = RgbaImage{img.width, img.height, img.pixels};
         return true;
     }
-    return decode_encoded_image(img.encoded, decoder_hint(img), out, error);
+    return decode_image_or_ktx2(img.encoded, decoder_hint(img), out, error); // KTX2 by identifier
 }
 
 // PSNR of level 0 over the channels the role's shader reads.

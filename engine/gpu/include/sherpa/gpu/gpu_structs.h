@@ -45,8 +45,8 @@ struct GPUFrameData {
     glm::vec4 sun_direction;
     glm::vec4 sun_radiance;
     glm::vec4 ambient;
-    glm::uvec4 params; // x view, y light count, z cascade count, w shadow taps (1 or 4)
-    glm::vec4 overlay;
+    glm::uvec4 params;       // x view, y light count, z cascade count, w shadow taps (1 or 4)
+    glm::vec4 overlay;       // x glyph length, y uv checks per unit
     glm::vec4 cascade_texel; // world size of one shadow-map texel, per cascade
     GPULight lights[kMaxLights];
 };

@@ -23,6 +23,7 @@ enum class PipelineId : std::uint32_t {
     Glyphs,        // per-vertex normal/tangent/bitangent lines
     BoxLines,      // CPU-built world-space lines (instance AABBs)
     Floor,         // benchmark floor: positions and one constant colour
+    Tint,          // the Floor's constant colour, alpha-blended over the frame
     ShadowOpaque,  // shadow cascades (depth-only rendering, no colour attachment)
     ShadowMask,
     Count,

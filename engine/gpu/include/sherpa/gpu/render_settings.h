@@ -65,11 +65,16 @@ std::vector<std::string_view> debug_view_names();
 std::optional<Overlay> parse_overlay(std::string_view name);
 std::vector<std::string_view> overlay_names();
 
+inline constexpr float kDefaultCheckerDensity = 8.0f;
+
 struct RenderSettings {
     std::uint32_t width = 1280, height = 720;
     DebugView view = DebugView::Lit;
     std::uint32_t overlays = 0; // Overlay bits
     float glyph_length = 0.0f;  // world units; 0: 2% of the scene's bounding diagonal
+    // Checks per UV unit of the uv checker views (atlas UVs need more than whole-
+    // texture UVs); the checker is filtered, so any density is free of moiré.
+    float uv_checker_density = kDefaultCheckerDensity;
     CameraSpec camera;
     bool shadows = true;
     std::uint32_t cascades = kDefaultShadowCascades;
@@ -97,16 +102,18 @@ struct RenderSettings {
     // Cull with this camera instead of the view camera (visual debugging of culling).
     std::optional<CameraSpec> freeze_cull;
     // Selection highlight (an editor's selection), drawn last, over everything:
-    // the instance (scene instance index) as its wireframe and world box in
-    // kHighlightColor; one triangle of its mesh filled, and one vertex as a
-    // normal/tangent/bitangent tripod, in kHighlightDetailColor. Ignored when the
-    // instance is not drawn (out of range, empty mesh).
+    // the instance (scene instance index) tinted with kHighlightTint over its
+    // shading (which stays visible) and its world box in kHighlightColor; one triangle of its mesh
+    // filled, and one vertex as a normal/tangent/bitangent tripod, in kHighlightDetailColor.
+    // Ignored when the instance is not drawn (out of range, empty mesh).
     std::optional<std::uint32_t> highlight_instance;
     std::optional<std::uint32_t> highlight_triangle; // needs highlight_instance
     std::optional<std::uint32_t> highlight_vertex;   // needs highlight_instance
 };
 
-inline const glm::vec4 kHighlightColor{1.0f, 0.45f, 0.0f, 1.0f};      // orange
+inline const glm::vec4 kHighlightColor{1.0f, 0.45f, 0.0f, 1.0f}; // orange
+// Orange at 30%: a wireframe of a dense mesh painted it solid and hid its shading.
+inline const glm::vec4 kHighlightTint{1.0f, 0.45f, 0.0f, 0.3f};
 inline const glm::vec4 kHighlightDetailColor{1.0f, 0.0f, 1.0f, 1.0f}; // magenta
 
 // Does this view/overlay need streams the materials do not use (so the scene must

@@ -70,18 +70,28 @@ struct Mesh {
 };
 
 // Every glTF primitive, triangle or not, as the file describes it.
+// How a primitive's data was compressed in the file (EXT/KHR_meshopt_compression),
+// summed over the compressed bufferViews its accessors read.
+struct PrimitiveCompression {
+    std::string codec; // the extension's name
+    std::string modes; // e.g. "ATTRIBUTES/OCTAHEDRAL, ATTRIBUTES, TRIANGLES"
+    std::uint64_t encoded_bytes = 0, decoded_bytes = 0;
+    double decode_ms = 0.0;
+};
+
 struct PrimitiveInfo {
     std::uint32_t mesh = 0, primitive = 0;
     PrimitiveMode mode = PrimitiveMode::Triangles;
-    std::uint32_t vertices = 0;               // POSITION count
-    std::uint32_t indices = 0;                // index accessor count (0 if non-indexed)
-    std::uint32_t triangles = 0;              // after strip/fan conversion
-    std::int32_t material = -1;               // glTF material index (-1: none)
-    std::int32_t engine_mesh = -1;            // index into Scene::meshes, -1 if skipped
-    std::string skipped_reason;               // why no engine mesh was made
-    std::vector<std::string> file_attributes; // attribute semantics the file gives
-    std::int32_t motion = -1;                 // index into Scene::motions, -1: static
-    std::uint32_t morph_targets = 0;          // as the file gives them
+    std::uint32_t vertices = 0;                      // POSITION count
+    std::uint32_t indices = 0;                       // index accessor count (0 if non-indexed)
+    std::uint32_t triangles = 0;                     // after strip/fan conversion
+    std::int32_t material = -1;                      // glTF material index (-1: none)
+    std::int32_t engine_mesh = -1;                   // index into Scene::meshes, -1 if skipped
+    std::string skipped_reason;                      // why no engine mesh was made
+    std::vector<std::string> file_attributes;        // attribute semantics the file gives
+    std::optional<PrimitiveCompression> compression; // empty: stored uncompressed
+    std::int32_t motion = -1;                        // index into Scene::motions, -1: static
+    std::uint32_t morph_targets = 0;                 // as the file gives them
 };
 
 struct Node {
@@ -190,6 +200,8 @@ struct Scene {
     std::vector<std::uint32_t> displayed_nodes; // nodes of the displayed scene, depth-first
     Aabb bounds;
 
+    // The file's extensionsUsed / extensionsRequired, as written.
+    std::vector<std::string> extensions_used, extensions_required;
     std::vector<std::string> warnings;
     std::vector<AccessorRangeViolation> range_violations;
     double parse_ms = 0.0, process_ms = 0.0;

@@ -1,0 +1,36 @@
+#pragma once
+// Internal: KHR_draco_mesh_compression, decoded with Debian's Draco library before the
+// importer reads any accessor. Each compressed primitive's attributes (mapped by the
+// extension's unique ids) and indices are decoded, dequantized by Draco, checked
+// against the uncompressed accessors' declared count, type and min/max, and written
+// to a new buffer the accessors are pointed at (as FLOAT / UNSIGNED_INT data).
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <sherpa/scene/scene.h>
+
+namespace tinygltf {
+class Model;
+}
+
+namespace sherpa::detail {
+
+struct DecodedDracoPrimitive {
+    std::uint32_t mesh = 0, primitive = 0;
+    PrimitiveCompression stats;
+    // Accessors whose min/max decode_draco_primitives checked with Draco's
+    // quantization slack (the importer's exact check would flag its rounding).
+    std::vector<int> range_checked;
+};
+
+// Decodes every Draco-compressed primitive of `model` in place. Throws ImportError
+// naming the primitive: a stream that does not decode (truncated, corrupt), an
+// attribute id the stream lacks, or an accessor whose count, type or min/max
+// disagrees with what Draco produced.
+std::vector<DecodedDracoPrimitive> decode_draco_primitives(tinygltf::Model& model);
+
+// Sets PrimitiveInfo::compression of each decoded primitive.
+void attach_draco_compression(std::span<const DecodedDracoPrimitive> decoded, Scene& scene);
+
+} // namespace sherpa::detail

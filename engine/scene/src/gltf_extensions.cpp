@@ -1,0 +1,30 @@
+#include <sherpa/scene/gltf_extensions.h>
+
+#include <algorithm>
+#include <array>
+
+namespace sherpa {
+namespace {
+
+constexpr std::array<std::string_view, 10> kSupported{
+    "EXT_meshopt_compression",    // through Debian's meshoptimizer
+    "EXT_texture_webp",           // through OpenImageIO
+    "KHR_draco_mesh_compression", // through Debian's Draco
+    "KHR_meshopt_compression",    // where its bitstream version is one meshoptimizer decodes
+    "KHR_lights_punctual",        "KHR_materials_emissive_strength", "KHR_materials_unlit",
+    "KHR_mesh_quantization", // every accessor component type is decoded
+    "KHR_texture_basisu",    // KTX2 (ETC1S / UASTC), engine/texture's transcoder
+    "KHR_texture_transform",
+};
+
+} // namespace
+
+std::span<const std::string_view> supported_gltf_extensions() {
+    return kSupported;
+}
+
+bool is_supported_gltf_extension(std::string_view name) {
+    return std::find(kSupported.begin(), kSupported.end(), name) != kSupported.end();
+}
+
+} // namespace sherpa

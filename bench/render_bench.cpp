@@ -8,7 +8,7 @@
 // first two frames (pipeline compilation, first shadow map) are not counted. The
 // CPU columns are process CPU time per frame (lavapipe's threads included): on a
 // shared machine they move less than wall time does.
-#include <sherpa/gpu/renderer.h>
+#include <sherpa/render/renderer.h>
 #include <sherpa/scene/scene_loader.h>
 
 #include <sys/resource.h>

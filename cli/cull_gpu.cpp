@@ -1,7 +1,7 @@
 #include "cull_gpu.h"
 
 #include <sherpa/gpu/context.h>
-#include <sherpa/gpu/gpu_culling.h>
+#include <sherpa/render/gpu_culling.h>
 
 #include <exception>
 

@@ -10,7 +10,7 @@
 #include <sherpa/core/file_io.h>
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/image_io.h>
-#include <sherpa/gpu/renderer.h>
+#include <sherpa/render/renderer.h>
 #include <sherpa/scene/scene_loader.h>
 
 #include <charconv>

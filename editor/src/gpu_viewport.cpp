@@ -2,9 +2,9 @@
 // which would hide the Vulkan prototypes the engine's handle types are built on.
 #include <sherpa/gpu/commands.h>
 #include <sherpa/gpu/context.h>
-#include <sherpa/gpu/gpu_culling.h>
-#include <sherpa/gpu/presenter.h>
-#include <sherpa/gpu/renderer.h>
+#include <sherpa/render/gpu_culling.h>
+#include <sherpa/render/presenter.h>
+#include <sherpa/render/renderer.h>
 
 #include "gpu_viewport.h"
 
@@ -243,7 +243,7 @@ bool GpuViewport::lastCullPasses(std::vector<CullStats>& passes, bool& cached_sh
 
 } // namespace sherpa::editor
 
-#include <sherpa/gpu/gpu_culling.h>
+#include <sherpa/render/gpu_culling.h>
 #include <sherpa/scene/mesh_pass.h>
 
 namespace sherpa::editor {

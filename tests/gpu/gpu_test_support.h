@@ -12,7 +12,7 @@
 #include <vector>
 
 #include <sherpa/gpu/context.h>
-#include <sherpa/gpu/renderer.h>
+#include <sherpa/render/renderer.h>
 #include <sherpa/scene/scene_loader.h>
 
 #include "test_support.h"

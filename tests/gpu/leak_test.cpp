@@ -2,7 +2,7 @@
 // do not fault their working memory in again.
 #include "gpu_test_support.h"
 
-#include <sherpa/gpu/scene_textures.h>
+#include <sherpa/render/scene_textures.h>
 
 #include <sys/resource.h>
 

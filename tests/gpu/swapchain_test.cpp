@@ -12,8 +12,8 @@
 #include <cstring>
 
 #include <sherpa/gpu/gpu_error.h>
-#include <sherpa/gpu/presenter.h>
-#include <sherpa/gpu/renderer.h>
+#include <sherpa/render/presenter.h>
+#include <sherpa/render/renderer.h>
 #include <sherpa/scene/scene_loader.h>
 
 namespace {

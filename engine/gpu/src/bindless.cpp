@@ -1,6 +1,5 @@
 #include <sherpa/gpu/bindless.h>
 #include <sherpa/gpu/gpu_error.h>
-#include <sherpa/gpu/gpu_structs.h>
 #include <sherpa/gpu/upload.h>
 
 #include <array>

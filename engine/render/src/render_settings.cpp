@@ -1,4 +1,4 @@
-#include <sherpa/gpu/render_settings.h>
+#include <sherpa/render/render_settings.h>
 
 #include <array>
 #include <utility>

@@ -13,10 +13,10 @@
 #include <sherpa/gpu/bindless.h>
 #include <sherpa/gpu/commands.h>
 #include <sherpa/gpu/context.h>
-#include <sherpa/gpu/gpu_scene.h>
-#include <sherpa/gpu/gpu_structs.h>
-#include <sherpa/gpu/pipelines.h>
-#include <sherpa/gpu/render_settings.h>
+#include <sherpa/render/gpu_scene.h>
+#include <sherpa/render/gpu_structs.h>
+#include "pipelines.h"
+#include <sherpa/render/render_settings.h>
 #include <sherpa/gpu/resources.h>
 #include <sherpa/scene/culling_passes.h>
 #include <sherpa/scene/shadow_cascades.h>

@@ -11,7 +11,7 @@
 #include <sherpa/core/aabb.h>
 #include <sherpa/gpu/bindless.h>
 #include <sherpa/gpu/resources.h>
-#include <sherpa/gpu/scene_textures.h>
+#include <sherpa/render/scene_textures.h>
 #include <sherpa/scene/scene.h>
 
 namespace sherpa::gpu {

@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 #include <vulkan/vulkan.h>
 
+#include <sherpa/gpu/bindless.h>
 #include <sherpa/scene/material.h>
 
 namespace sherpa::gpu {
@@ -16,15 +17,7 @@ inline constexpr std::uint32_t kMaxCascades = 4;    // array size in GPUFrameDat
 inline constexpr std::uint32_t kShadowCascades = 3; // cascades the renderer fits and draws
 inline constexpr std::uint32_t kNoCascade = 0xffffffffu;
 
-// Bindless slots registered before any scene texture.
-inline constexpr std::uint32_t kWhiteTexture = 0;
-inline constexpr std::uint32_t kFlatNormalTexture = 1;
-inline constexpr std::uint32_t kBlackTexture = 2;
-// Magenta/black 8x8 checker drawn in colour slots whose texture is missing or
-// undecodable, so nobody mistakes the failure for intended white.
-inline constexpr std::uint32_t kCheckerTexture = 3;
-inline constexpr std::uint32_t kDefaultTextureCount = 4;
-inline constexpr std::uint32_t kCheckerTextureSize = 8;
+// Bindless default-texture slots (kWhiteTexture..): sherpa/gpu/bindless.h.
 
 struct GPULight {
     glm::vec4 position_range;

@@ -1,6 +1,6 @@
 #include <sherpa/gpu/gpu_error.h>
-#include <sherpa/gpu/gpu_scene.h>
-#include <sherpa/gpu/gpu_structs.h>
+#include <sherpa/render/gpu_scene.h>
+#include <sherpa/render/gpu_structs.h>
 #include <sherpa/gpu/upload.h>
 #include <sherpa/scene/usage_report.h>
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include <sherpa/gpu/commands.h>
-#include <sherpa/gpu/renderer.h>
+#include <sherpa/render/renderer.h>
 
 namespace sherpa::gpu {
 

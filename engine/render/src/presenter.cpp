@@ -1,5 +1,5 @@
 #include <sherpa/gpu/gpu_error.h>
-#include <sherpa/gpu/presenter.h>
+#include <sherpa/render/presenter.h>
 
 #include <algorithm>
 

@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-#include <sherpa/gpu/camera.h>
+#include <sherpa/render/camera.h>
 #include <sherpa/scene/culling.h>
 #include <sherpa/scene/shadow_cascades.h>
 

@@ -12,7 +12,7 @@
 #include <glm/glm.hpp>
 
 #include <sherpa/gpu/commands.h>
-#include <sherpa/gpu/gpu_scene.h>
+#include <sherpa/render/gpu_scene.h>
 #include <sherpa/gpu/resources.h>
 #include <sherpa/scene/culling.h>
 #include <sherpa/scene/mesh_pass.h>

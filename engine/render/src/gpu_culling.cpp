@@ -1,4 +1,4 @@
-#include <sherpa/gpu/gpu_culling.h>
+#include <sherpa/render/gpu_culling.h>
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/upload.h>
 

@@ -1,4 +1,4 @@
-#include <sherpa/gpu/camera.h>
+#include <sherpa/render/camera.h>
 #include <sherpa/scene/camera_spec.h>
 #include <sherpa/scene/framing.h>
 

@@ -1,10 +1,10 @@
 #pragma once
 // Per-frame-in-flight resources of the Renderer (private to the GPU layer).
-#include <sherpa/gpu/camera.h>
+#include <sherpa/render/camera.h>
 #include <sherpa/gpu/commands.h>
-#include <sherpa/gpu/gpu_culling.h>
-#include <sherpa/gpu/gpu_structs.h>
-#include <sherpa/gpu/renderer.h>
+#include <sherpa/render/gpu_culling.h>
+#include <sherpa/render/gpu_structs.h>
+#include <sherpa/render/renderer.h>
 #include <sherpa/scene/culling_passes.h>
 #include <sherpa/scene/shadow_cascades.h>
 

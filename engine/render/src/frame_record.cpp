@@ -4,7 +4,7 @@
 #include "frame_slot.h"
 
 #include <sherpa/gpu/gpu_error.h>
-#include <sherpa/gpu/gpu_structs.h>
+#include <sherpa/render/gpu_structs.h>
 
 #include <algorithm>
 

@@ -2,7 +2,7 @@
 // cascades, debug view. Decides whether the cached shadow cascades are still valid.
 #include "frame_slot.h"
 
-#include <sherpa/gpu/gpu_structs.h>
+#include <sherpa/render/gpu_structs.h>
 #include <sherpa/scene/shadow_cascades.h>
 
 #include <algorithm>

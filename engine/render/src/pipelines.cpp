@@ -1,6 +1,6 @@
 #include <sherpa/gpu/gpu_error.h>
-#include <sherpa/gpu/gpu_structs.h>
-#include <sherpa/gpu/pipelines.h>
+#include <sherpa/render/gpu_structs.h>
+#include "pipelines.h"
 
 #include "depth_mask_frag.h"
 #include "depth_vert.h"

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <sherpa/gpu/context.h>
+#include <sherpa/render/gpu_scene.h>
 #include <sherpa/render/renderer.h>
 #include <sherpa/scene/scene_loader.h>
 

@@ -1,6 +1,6 @@
 // Per-frame constants: camera, lights (scene lights or the default sun), shadow
 // cascades, debug view. Decides whether the cached shadow cascades are still valid.
-#include "frame_slot.h"
+#include "renderer_impl.h"
 
 #include <sherpa/render/gpu_structs.h>
 #include <sherpa/scene/shadow_cascades.h>
@@ -10,10 +10,11 @@
 
 namespace sherpa::gpu {
 
-void Renderer::fill_frame_data(FrameSlot& slot, const RenderSettings& settings, float aspect,
-                               bool& shadows, std::uint32_t& cascades) {
-    const Scene& info = lighting_->info;
-    slot.camera = resolve_camera(settings.camera, info, aspect);
+void Renderer::Impl::write_frame_data(FrameContext& frame) {
+    FrameSlot& slot = frame.slot;
+    const RenderSettings& settings = frame.settings;
+    const Scene& info = lighting_;
+    slot.camera = resolve_camera(settings.camera, info, frame.aspect());
     GPUFrameData f{};
     f.view = slot.camera.view;
     f.proj = slot.camera.proj;
@@ -52,40 +53,31 @@ void Renderer::fill_frame_data(FrameSlot& slot, const RenderSettings& settings, 
     f.sun_direction = glm::vec4(sun_dir, 0.0f);
     f.ambient = glm::vec4(glm::vec3(settings.ambient), 0.0f);
 
-    shadows = false;
-    cascades = 0;
+    std::uint32_t cascades = 0;
+    frame.cascades = 0;
     slot.cascades = ShadowCascades{};
-    if (have_sun && settings.shadows && !settings.floor_only && scene_ &&
+    if (have_sun && settings.shadows && !settings.floor_only && scene &&
         settings.view == DebugView::Lit) {
         // The one cascade fit (scene layer), shared with `sherpa-cli cull`.
         const ShadowCascades c = fit_shadow_cascades(
             cascade_camera(slot.camera), info.bounds, sun_dir,
-            std::min(settings.cascades, kShadowCascades), options_.shadow_resolution);
+            std::min(settings.cascades, kShadowCascades), options.shadow_resolution);
         slot.cascades = c;
         cascades = c.count;
         for (std::uint32_t i = 0; i < c.count; ++i) f.shadow_view_proj[i] = c.view_proj[i];
         f.cascade_splits = c.splits;
         f.cascade_texel = c.texel;
         f.sun_direction.w = c.count > 0 ? 1.0f : 0.0f;
-        // The cascades depend only on these inputs: unchanged means the map is reusable.
-        std::vector<std::uint8_t> key(sizeof(c.view_proj) + sizeof(scene_generation_) +
-                                      sizeof(cascades));
-        std::memcpy(key.data(), c.view_proj.data(), sizeof(c.view_proj));
-        std::memcpy(key.data() + sizeof(c.view_proj), &scene_generation_,
-                    sizeof(scene_generation_));
-        std::memcpy(key.data() + sizeof(c.view_proj) + sizeof(scene_generation_), &cascades,
-                    sizeof(cascades));
-        shadows =
-            c.count > 0 && (!settings.cache_shadows || !shadow_map_valid_ || key != shadow_key_);
-        if (shadows) shadow_key_ = std::move(key);
+        if (shadows_.needs_render(c, scene_generation_, settings.cache_shadows))
+            frame.cascades = c.count;
     }
     // Every filtered fetch is expensive on a CPU rasterizer: one 2x2 PCF tap there.
-    const std::uint32_t taps = context_.info().is_cpu() ? 1u : 4u;
+    const std::uint32_t taps = context.info().is_cpu() ? 1u : 4u;
     f.params = glm::uvec4(static_cast<std::uint32_t>(settings.view), count, cascades, taps);
     const float diagonal = info.bounds.valid() ? glm::length(info.bounds.extent()) : 1.0f;
     f.overlay = glm::vec4(settings.glyph_length > 0.0f ? settings.glyph_length : 0.02f * diagonal,
                           settings.uv_checker_density, 0.0f, 0.0f);
-    std::memcpy(resources_->get(slot.frame_data).mapped, &f, sizeof(f));
+    std::memcpy(resources->get(slot.frame_data).mapped, &f, sizeof(f));
 }
 
 } // namespace sherpa::gpu

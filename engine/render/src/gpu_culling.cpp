@@ -1,6 +1,7 @@
-#include <sherpa/render/gpu_culling.h>
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/upload.h>
+#include <sherpa/gpu/vk_helpers.h>
+#include <sherpa/render/gpu_culling.h>
 
 #include "cull_comp.h"
 
@@ -45,31 +46,16 @@ GpuCullPipeline::GpuCullPipeline(const Context& context) {
     const VkDevice device = context.device();
     const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
                                                VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-    auto sli = vk_init<VkDescriptorSetLayoutCreateInfo>(
-        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
-    sli.bindingCount = 1;
-    sli.pBindings = &binding;
-    VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
-    vk_check(vkCreateDescriptorSetLayout(device, &sli, nullptr, &set_layout),
-             "vkCreateDescriptorSetLayout(cull)");
-    set_layout_ = UniqueDescriptorSetLayout(device, set_layout);
-
-    auto range = VkPushConstantRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(CullPush)};
-    auto li = vk_init<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
-    li.setLayoutCount = 1;
-    li.pSetLayouts = &set_layout;
-    li.pushConstantRangeCount = 1;
-    li.pPushConstantRanges = &range;
-    VkPipelineLayout layout = VK_NULL_HANDLE;
-    vk_check(vkCreatePipelineLayout(device, &li, nullptr, &layout), "vkCreatePipelineLayout");
-    layout_ = UniquePipelineLayout(device, layout);
-
-    auto mi = vk_init<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
-    mi.codeSize = sizeof(spirv_cull_comp);
-    mi.pCode = spirv_cull_comp;
-    VkShaderModule module = VK_NULL_HANDLE;
-    vk_check(vkCreateShaderModule(device, &mi, nullptr, &module), "vkCreateShaderModule");
-    UniqueShaderModule module_owner(device, module);
+    set_layout_ =
+        create_descriptor_set_layout(device, {&binding, 1}, "vkCreateDescriptorSetLayout(cull)");
+    const VkDescriptorSetLayout set_layout = set_layout_.get();
+    const VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(CullPush)};
+    layout_ = create_pipeline_layout(device, {&set_layout, 1}, {&range, 1},
+                                     "vkCreatePipelineLayout(cull)");
+    const VkPipelineLayout layout = layout_.get();
+    const UniqueShaderModule module_owner =
+        create_shader_module(device, spirv_cull_comp, "vkCreateShaderModule(cull)");
+    const VkShaderModule module = module_owner.get();
     auto ci = vk_init<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
     ci.stage = vk_init<VkPipelineShaderStageCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
@@ -91,23 +77,12 @@ GpuCuller::GpuCuller(Context& context, ResourceManager& resources, std::uint32_t
     const VkDevice device = context.device();
     const std::uint32_t blocks = std::max(parameter_blocks, 1u);
     const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, blocks};
-    auto pci = vk_init<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
-    pci.maxSets = blocks;
-    pci.poolSizeCount = 1;
-    pci.pPoolSizes = &size;
-    VkDescriptorPool pool = VK_NULL_HANDLE;
-    vk_check(vkCreateDescriptorPool(device, &pci, nullptr, &pool), "vkCreateDescriptorPool(cull)");
-    pool_ = UniqueDescriptorPool(device, pool);
+    pool_ = create_descriptor_pool(device, blocks, {&size, 1}, "vkCreateDescriptorPool(cull)");
+    const VkDescriptorPool pool = pool_.get();
     const VkDescriptorSetLayout set_layout = pipeline_->set_layout();
 
-    if (context.info().timestamps) {
-        auto qi = vk_init<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
-        qi.queryType = VK_QUERY_TYPE_TIMESTAMP;
-        qi.queryCount = 2;
-        VkQueryPool queries = VK_NULL_HANDLE;
-        vk_check(vkCreateQueryPool(device, &qi, nullptr, &queries), "vkCreateQueryPool");
-        timestamps_ = UniqueQueryPool(device, queries);
-    }
+    if (context.info().timestamps)
+        timestamps_ = create_query_pool(device, VK_QUERY_TYPE_TIMESTAMP, 2);
     for (std::uint32_t b = 0; b < blocks; ++b) {
         params_.push_back(
             resources_.create_buffer({sizeof(GPUCullParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,

@@ -1,6 +1,7 @@
-#include <sherpa/gpu/gpu_error.h>
-#include <sherpa/render/gpu_structs.h>
 #include "pipelines.h"
+#include <sherpa/gpu/gpu_error.h>
+#include <sherpa/gpu/vk_helpers.h>
+#include <sherpa/render/gpu_structs.h>
 
 #include "depth_mask_frag.h"
 #include "depth_vert.h"
@@ -19,12 +20,7 @@ namespace sherpa::gpu {
 namespace {
 
 UniqueShaderModule make_module(VkDevice device, std::span<const std::uint32_t> code) {
-    auto ci = vk_init<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
-    ci.codeSize = code.size_bytes();
-    ci.pCode = code.data();
-    VkShaderModule m = VK_NULL_HANDLE;
-    vk_check(vkCreateShaderModule(device, &ci, nullptr, &m), "vkCreateShaderModule");
-    return UniqueShaderModule(device, m);
+    return create_shader_module(device, code, "vkCreateShaderModule");
 }
 
 struct PipelineDesc {
@@ -136,15 +132,9 @@ Pipelines::Pipelines(const Context& context, VkDescriptorSetLayout textures_layo
     VkDevice device = context.device();
     VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                              sizeof(GPUPushConstants)};
-    auto lci = vk_init<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
     const VkDescriptorSetLayout set_layouts[] = {textures_layout, frame_layout};
-    lci.setLayoutCount = 2;
-    lci.pSetLayouts = set_layouts;
-    lci.pushConstantRangeCount = 1;
-    lci.pPushConstantRanges = &push;
-    VkPipelineLayout layout = VK_NULL_HANDLE;
-    vk_check(vkCreatePipelineLayout(device, &lci, nullptr, &layout), "vkCreatePipelineLayout");
-    layout_ = UniquePipelineLayout(device, layout);
+    layout_ = create_pipeline_layout(device, set_layouts, {&push, 1}, "vkCreatePipelineLayout");
+    const VkPipelineLayout layout = layout_.get();
 
     // Modules are only needed while the pipelines are created.
     mesh_vert_ = make_module(device, spirv_mesh_vert);

@@ -1,3 +1,5 @@
+#include "renderer_impl.h"
+
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/render/presenter.h>
 
@@ -139,7 +141,7 @@ void Presenter::resize(std::uint32_t width, std::uint32_t height) {
 bool Presenter::present_frame(RenderSettings settings) {
     if (extent_.width == 0 || extent_.height == 0) return false; // minimised
     const std::uint32_t slot = frame_;
-    renderer_.wait_for_slot(slot); // its acquire semaphore and recorder are free again
+    renderer_.impl_->wait_for_slot(slot); // its acquire semaphore and recorder are free again
     std::uint32_t index = 0;
     VkResult r = vkAcquireNextImageKHR(context_.device(), swapchain_.get(), UINT64_MAX,
                                        acquired_[slot].get(), VK_NULL_HANDLE, &index);
@@ -154,7 +156,7 @@ bool Presenter::present_frame(RenderSettings settings) {
     VkCommandBuffer cmd = recorders_[slot]->begin();
     RenderTarget target{images_[index], views_[index].get(), format_,
                         extent_.width,  extent_.height,      VK_IMAGE_LAYOUT_PRESENT_SRC_KHR};
-    renderer_.record_frame(cmd, slot, target, settings);
+    renderer_.impl_->record_frame(cmd, slot, target, settings);
     auto wait = vk_init<VkSemaphoreSubmitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO);
     wait.semaphore = acquired_[slot].get();
     wait.stageMask =
@@ -164,7 +166,7 @@ bool Presenter::present_frame(RenderSettings settings) {
     signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
     const std::uint64_t value =
         recorders_[slot]->submit(renderer_.resources(), &wait, 1, &signal, 1);
-    renderer_.finish_frame(slot, value);
+    renderer_.impl_->finish_frame(slot, value);
     frame_ = (frame_ + 1) % Renderer::kFramesInFlight;
 
     VkSemaphore rendered = rendered_[index].get();

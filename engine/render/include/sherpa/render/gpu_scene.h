@@ -16,11 +16,6 @@
 
 namespace sherpa::gpu {
 
-enum class StreamPolicy {
-    UsedByMaterials, // the default: what shading reads
-    AllPresent,      // every authored or generated stream (debug views of unused streams)
-};
-
 struct GpuMemoryReport {
     std::uint64_t vertex_streams = 0, indices = 0, textures = 0, materials = 0, instances = 0;
     // The same vertices in the 56-byte unified layout (+16-byte colour stream where present).

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <sherpa/gpu/commands.h>
+#include <sherpa/gpu/context.h>
 #include <sherpa/render/renderer.h>
 
 namespace sherpa::gpu {

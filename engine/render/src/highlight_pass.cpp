@@ -4,32 +4,37 @@
 // still shows, and its world box is drawn through everything in orange; a selected triangle is
 // filled and a selected vertex gets a normal/tangent/bitangent tripod, both magenta and never
 // hidden by depth.
-#include "frame_slot.h"
+#include "draw.h"
+#include "passes.h"
 
 #include <algorithm>
 
 namespace sherpa::gpu {
 
-void Renderer::draw_highlight(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
-                              const RenderSettings& s) {
-    if (!scene_ || !s.highlight_instance || !culling_ || !culling_->identity.valid()) return;
-    const auto& ids = scene_->scene_instances();
+void HighlightPass::record(FrameContext& f) {
+    const RenderSettings& s = f.settings;
+    const GpuScene* scene = f.scene;
+    if (!scene || !s.highlight_instance || !f.culling || !f.culling->identity.valid()) return;
+    VkCommandBuffer cmd = f.cmd;
+    const Pipelines& p = f.pipelines;
+    FrameSlot& slot = f.slot;
+    const auto& ids = scene->scene_instances();
     const auto found = std::find(ids.begin(), ids.end(), *s.highlight_instance);
     if (found == ids.end()) return; // not drawn: nothing to highlight
     const auto gpu_instance = static_cast<std::uint32_t>(found - ids.begin());
     const auto group =
-        std::find_if(scene_->groups().begin(), scene_->groups().end(), [&](const DrawGroup& g) {
+        std::find_if(scene->groups().begin(), scene->groups().end(), [&](const DrawGroup& g) {
             return gpu_instance >= g.first_instance &&
                    gpu_instance < g.first_instance + g.instance_count;
         });
-    if (group == scene_->groups().end()) return;
-    const GpuMesh& m = scene_->meshes()[group->mesh];
+    if (group == scene->groups().end()) return;
+    const GpuMesh& m = scene->meshes()[group->mesh];
 
     const VkPipelineLayout layout = p.layout();
     const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     GPUPushConstants pc = slot.push_base;
     // Identity ids: gl_InstanceIndex (the draw's first instance) is the GPU instance.
-    pc.instance_ids = resources_->get(culling_->identity).address;
+    pc.instance_ids = f.resources.get(f.culling->identity).address;
     pc.positions = m.stream[std::size_t(VertexAttribute::Position)];
     pc.normals = m.stream[std::size_t(VertexAttribute::Normal)];
     pc.tangents = m.stream[std::size_t(VertexAttribute::Tangent)];
@@ -65,7 +70,7 @@ void Renderer::draw_highlight(VkCommandBuffer cmd, FrameSlot& slot, const Pipeli
     }
     if (s.highlight_vertex && *s.highlight_vertex < m.vertex_count) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::Glyphs));
-        const Aabb& box = scene_->instance_bounds()[gpu_instance];
+        const Aabb& box = scene->instance_bounds()[gpu_instance];
         pc.glyph_length = 0.15f * (box.valid() ? glm::length(box.extent()) : 1.0f);
         pc.color = kHighlightDetailColor;
         for (std::uint32_t kind = 0; kind < 3; ++kind) {
@@ -76,8 +81,8 @@ void Renderer::draw_highlight(VkCommandBuffer cmd, FrameSlot& slot, const Pipeli
         }
     }
     std::vector<GPULineVertex> lines;
-    append_box(lines, scene_->instance_bounds()[gpu_instance], kHighlightColor);
-    draw_lines(cmd, slot, p, lines); // binds its own pipeline; compare op stays ALWAYS
+    append_box(lines, scene->instance_bounds()[gpu_instance], kHighlightColor);
+    draw_lines(f, lines); // binds its own pipeline; compare op stays ALWAYS
     vkCmdSetDepthCompareOp(cmd, VK_COMPARE_OP_GREATER_OR_EQUAL);
 }
 

@@ -1,7 +1,8 @@
 // Overlays drawn over the shaded image: wireframe, per-vertex normal / tangent /
 // bitangent glyphs (generated in the vertex shader from the mesh streams) and
 // instance world AABBs (CPU-built line list).
-#include "frame_slot.h"
+#include "draw.h"
+#include "passes.h"
 
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/render/gpu_structs.h>
@@ -11,29 +12,15 @@
 
 namespace sherpa::gpu {
 
-void append_box(std::vector<GPULineVertex>& out, const Aabb& b, glm::vec4 color) {
-    if (!b.valid()) return;
-    auto corner = [&](int i) {
-        return glm::vec4((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
-                         (i & 4) ? b.max.z : b.min.z, 1.0f);
-    };
-    // The 12 edges join corners that differ in exactly one coordinate bit.
-    for (int i = 0; i < 8; ++i)
-        for (int bit = 1; bit < 8; bit <<= 1)
-            if (!(i & bit)) {
-                out.push_back({corner(i), color});
-                out.push_back({corner(i | bit), color});
-            }
-}
-
-void Renderer::draw_overlays(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
-                             const RenderSettings& s) {
-    if (!scene_) return;
-    slot.lines_used = 0;
-    if (s.overlays == 0) {
-        draw_highlight(cmd, slot, p, s);
-        return;
-    }
+void OverlayPass::record(FrameContext& f) {
+    if (!f.scene) return;
+    f.slot.lines_used = 0;
+    const RenderSettings& s = f.settings;
+    if (s.overlays == 0) return;
+    VkCommandBuffer cmd = f.cmd;
+    const Pipelines& p = f.pipelines;
+    FrameSlot& slot = f.slot;
+    const GpuScene* scene = f.scene;
     const VkPipelineLayout layout = p.layout();
     const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     // Overlays sit on top of the surface they describe: test, never write depth.
@@ -43,9 +30,9 @@ void Renderer::draw_overlays(VkCommandBuffer cmd, FrameSlot& slot, const Pipelin
     vkCmdSetFrontFace(cmd, VK_FRONT_FACE_COUNTER_CLOCKWISE);
 
     auto for_each_group = [&](auto&& fn) {
-        for (const DrawGroup& g : scene_->groups()) {
+        for (const DrawGroup& g : scene->groups()) {
             GPUPushConstants pc = slot.push_base;
-            const GpuMesh& m = scene_->meshes()[g.mesh];
+            const GpuMesh& m = scene->meshes()[g.mesh];
             pc.positions = m.stream[std::size_t(VertexAttribute::Position)];
             pc.normals = m.stream[std::size_t(VertexAttribute::Normal)];
             pc.tangents = m.stream[std::size_t(VertexAttribute::Tangent)];
@@ -84,11 +71,11 @@ void Renderer::draw_overlays(VkCommandBuffer cmd, FrameSlot& slot, const Pipelin
         for_each_group([&](const DrawGroup& g, const GpuMesh& m, GPUPushConstants& pc) {
             pc.mesh_flags |= kind << kGlyphKindShift;
             pc.color = glyphs[kind].second;
-            pc.glyph_length = s.glyph_length > 0.0f
-                                  ? s.glyph_length
-                                  : 0.02f * (lighting_->info.bounds.valid()
-                                                 ? glm::length(lighting_->info.bounds.extent())
-                                                 : 1.0f);
+            pc.glyph_length =
+                s.glyph_length > 0.0f
+                    ? s.glyph_length
+                    : 0.02f * (f.lighting.bounds.valid() ? glm::length(f.lighting.bounds.extent())
+                                                         : 1.0f);
             vkCmdPushConstants(cmd, layout, stages, 0, sizeof(pc), &pc);
             vkCmdDraw(cmd, 2 * m.vertex_count, g.instance_count, 0, g.first_instance);
             ++slot.draw_calls;
@@ -97,60 +84,31 @@ void Renderer::draw_overlays(VkCommandBuffer cmd, FrameSlot& slot, const Pipelin
 
     if (s.overlays & kOverlayBounds) {
         std::vector<GPULineVertex> lines;
-        for (const Aabb& b : scene_->instance_bounds())
+        for (const Aabb& b : scene->instance_bounds())
             append_box(lines, b, glm::vec4(1.0f, 0.85f, 0.1f, 1.0f));
-        draw_lines(cmd, slot, p, lines);
+        draw_lines(f, lines);
     }
-    if (s.overlays & kOverlayCullBoxes) draw_cull_overlay(cmd, slot, p);
-    draw_highlight(cmd, slot, p, s);
-}
-
-void Renderer::draw_lines(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p,
-                          const std::vector<GPULineVertex>& lines) {
-    if (lines.empty()) return;
-    // Several line draws per frame: each gets its own range of the frame's buffer.
-    const VkDeviceSize bytes = lines.size() * sizeof(GPULineVertex);
-    VkDeviceSize offset = slot.lines_used;
-    if (offset + bytes > slot.lines_capacity) {
-        // Earlier draws of this frame keep the old buffer: destruction is deferred.
-        resources_->destroy(slot.lines);
-        slot.lines_capacity = std::max<VkDeviceSize>(2 * (offset + bytes), 4096);
-        slot.lines = resources_->create_buffer(
-            {slot.lines_capacity,
-             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-             MemoryUsage::Upload, "overlay lines"});
-        offset = 0;
-    }
-    const Buffer& buf = resources_->get(slot.lines);
-    std::memcpy(static_cast<std::uint8_t*>(buf.mapped) + offset, lines.data(), bytes);
-    slot.lines_used = offset + bytes;
-    GPUPushConstants pc = slot.push_base;
-    pc.lines = buf.address + offset;
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::BoxLines));
-    vkCmdPushConstants(cmd, p.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
-                       0, sizeof(pc), &pc);
-    vkCmdDraw(cmd, static_cast<std::uint32_t>(lines.size()), 1, 0, 0);
-    ++slot.draw_calls;
+    if (s.overlays & kOverlayCullBoxes) draw_cull_boxes(f);
 }
 
 // Culling made visible: instance boxes green (visible), red (culled) or yellow
 // (kept by the conservative test though the exact test rejects it: its false
 // positives); the culling frustum's edges in white (a frozen culling camera shows
 // where culling happened from) and each shadow cascade's volume in blue.
-void Renderer::draw_cull_overlay(VkCommandBuffer cmd, FrameSlot& slot, const Pipelines& p) {
-    if (slot.cull == CullPath::None) return;
+void OverlayPass::draw_cull_boxes(FrameContext& f) {
+    const PassCull* camera = f.slot.culling.camera();
+    if (!camera) return;
     std::vector<GPULineVertex> lines;
-    const auto& bounds = scene_->instance_bounds();
+    const auto& bounds = f.scene->instance_bounds();
     for (std::size_t i = 0; i < bounds.size(); ++i) {
         glm::vec4 color(0.9f, 0.15f, 0.1f, 1.0f);
-        if (slot.passes[0].visible[i])
-            color = exact_visible(slot.passes[0].frustum, bounds[i])
-                        ? glm::vec4(0.2f, 0.9f, 0.3f, 1.0f)
-                        : glm::vec4(1.0f, 0.9f, 0.1f, 1.0f);
+        if (camera->visible[i])
+            color = exact_visible(camera->frustum, bounds[i]) ? glm::vec4(0.2f, 0.9f, 0.3f, 1.0f)
+                                                              : glm::vec4(1.0f, 0.9f, 0.1f, 1.0f);
         append_box(lines, bounds[i], color);
     }
     // Corners at infinity (infinite far plane) end at twice the scene's size.
-    const float reach = 2.0f * glm::length(scene_->bounds().extent()) + 1.0f;
+    const float reach = 2.0f * glm::length(f.scene->bounds().extent()) + 1.0f;
     auto append_frustum = [&](const Frustum& f, glm::vec4 color) {
         auto corner = [&](int i) {
             const glm::vec4 c = f.corners[static_cast<std::size_t>(i)];
@@ -165,12 +123,12 @@ void Renderer::draw_cull_overlay(VkCommandBuffer cmd, FrameSlot& slot, const Pip
                     lines.push_back({corner(i | bit), color});
                 }
     };
-    append_frustum(slot.passes[0].frustum, glm::vec4(1.0f));
-    const auto* frame = static_cast<const GPUFrameData*>(resources_->get(slot.frame_data).mapped);
+    append_frustum(camera->frustum, glm::vec4(1.0f));
+    const auto* frame = static_cast<const GPUFrameData*>(f.resources.get(f.slot.frame_data).mapped);
     for (std::uint32_t c = 0; c < std::min(frame->params.z, kMaxCascades); ++c)
         append_frustum(frustum_from_view_projection(frame->shadow_view_proj[c]),
                        glm::vec4(0.3f, 0.5f, 1.0f, 1.0f));
-    draw_lines(cmd, slot, p, lines);
+    draw_lines(f, lines);
 }
 
 } // namespace sherpa::gpu

@@ -2,7 +2,7 @@
 // the GPU path the visible counts and triangles come from the indirect commands
 // read back (no CPU test), the GPU time from timestamps around each dispatch, and
 // in check mode the differences against the CPU test.
-#include "frame_slot.h"
+#include "passes.h"
 
 #include <sherpa/gpu/gpu_error.h>
 
@@ -10,12 +10,13 @@
 
 namespace sherpa::gpu {
 
-void Renderer::read_cull_stats(FrameSlot& slot, FrameStats& out) {
+void CullingPass::read_stats(FrameSlot& slot, const GpuScene* scene, FrameStats& out) {
     out.prepass = slot.prepass;
     out.culling.clear();
-    if (slot.pass_count == 0) return;
-    const bool gpu = slot.cull == CullPath::Gpu;
-    const std::uint32_t passes = slot.pass_count;
+    const FrameCulling& fc = slot.culling;
+    if (fc.count == 0) return;
+    const bool gpu = fc.path == CullPath::Gpu;
+    const std::uint32_t passes = fc.count;
     std::uint64_t ts[2 * kMaxCullPasses] = {};
     bool have_ts = false;
     if (gpu && slot.cull_timestamps)
@@ -24,13 +25,12 @@ void Renderer::read_cull_stats(FrameSlot& slot, FrameStats& out) {
                                   sizeof(ts), ts, sizeof(std::uint64_t),
                                   VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) == VK_SUCCESS;
     const auto* bytes =
-        gpu ? static_cast<const std::uint8_t*>(resources_->get(slot.cull_readback).mapped)
-            : nullptr;
+        gpu ? static_cast<const std::uint8_t*>(resources_.get(slot.cull_readback).mapped) : nullptr;
     for (std::uint32_t p = 0; p < passes; ++p) {
-        const PassCull& pc = slot.passes[p];
+        const PassCull& pc = fc.views[p];
         CullStats st = pc.stats; // draws and CPU-path triangles tallied while recording
         if (gpu) {
-            const GpuCuller& culler = *culling_->gpu[p];
+            const GpuCuller& culler = *pc.gpu;
             std::vector<VkDrawIndexedIndirectCommand> draws(culler.batch_count());
             std::memcpy(draws.data(), bytes + pc.readback,
                         draws.size() * sizeof(VkDrawIndexedIndirectCommand));
@@ -42,7 +42,7 @@ void Renderer::read_cull_stats(FrameSlot& slot, FrameStats& out) {
             if (p == 0) {
                 // Blended instances: CPU-tested, drawn one by one (tallied already).
                 // A frame with passes had a scene.
-                const auto& groups = scene_->groups();
+                const auto& groups = scene->groups();
                 if (!pc.group_visible.empty())
                     for (std::size_t g = 0; g < groups.size(); ++g)
                         if (groups[g].alpha == AlphaMode::Blend) visible += pc.group_visible[g];
@@ -54,7 +54,7 @@ void Renderer::read_cull_stats(FrameSlot& slot, FrameStats& out) {
             if (have_ts)
                 st.gpu_ms =
                     double(ts[2 * p + 1] - ts[2 * p]) * context_.info().timestamp_period_ns * 1e-6;
-            if (slot.cull_check && pc.cpu_tested) {
+            if (fc.check && pc.cpu_tested) {
                 std::vector<std::uint32_t> flags(culler.object_count());
                 std::memcpy(flags.data(),
                             bytes + pc.readback +
@@ -74,7 +74,7 @@ void Renderer::read_cull_stats(FrameSlot& slot, FrameStats& out) {
     else
         out.culling.insert(out.culling.end(), cascade_stats_.begin(), cascade_stats_.end());
     if (!slot.history_pushed) {
-        cull_history_.push(CullFrame{slot.cull, out.culling, passes > 1});
+        history_.push(CullFrame{fc.path, out.culling, passes > 1});
         slot.history_pushed = true;
     }
 }

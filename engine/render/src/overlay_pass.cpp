@@ -109,11 +109,11 @@ void OverlayPass::draw_cull_boxes(FrameContext& f) {
     }
     // Corners at infinity (infinite far plane) end at twice the scene's size.
     const float reach = 2.0f * glm::length(f.scene->bounds().extent()) + 1.0f;
-    auto append_frustum = [&](const Frustum& f, glm::vec4 color) {
+    auto append_frustum = [&](const Frustum& frustum, glm::vec4 color) {
         auto corner = [&](int i) {
-            const glm::vec4 c = f.corners[static_cast<std::size_t>(i)];
+            const glm::vec4 c = frustum.corners[static_cast<std::size_t>(i)];
             if (c.w != 0.0f) return glm::vec4(glm::vec3(c), 1.0f);
-            const glm::vec4 apex = f.corners[static_cast<std::size_t>(i ^ 4)]; // the near corner
+            const glm::vec4 apex = frustum.corners[static_cast<std::size_t>(i ^ 4)]; // near corner
             return glm::vec4(glm::vec3(apex) + glm::normalize(glm::vec3(c)) * reach, 1.0f);
         };
         for (int i = 0; i < 8; ++i)

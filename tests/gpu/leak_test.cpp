@@ -2,7 +2,6 @@
 // do not fault their working memory in again.
 #include "gpu_test_support.h"
 
-#include <sherpa/core/heap_tuning.h>
 #include <sherpa/render/scene_textures.h>
 
 #include <sys/resource.h>
@@ -52,12 +51,12 @@ long minor_page_faults() {
 
 // On a CPU device the rasterizer's per-frame memory comes from this process's heap;
 // the applications keep it mapped (sherpa::keep_freed_memory_mapped(), called first
-// thing in sherpa-cli, the editor and sherpa-bench-render, as here) instead of
+// thing in sherpa-cli, the editor and sherpa-bench-render, and by GpuEnvironment
+// before it makes the device: called after that it does not help) instead of
 // letting every frame fault it in again. Without that, 2CylinderEngine (many draws)
 // took about 5,400 page faults per 720p frame; with it, about 300.
 TEST_F(LeakTest, CpuDeviceFramesDoNotFaultTheirWorkingMemoryInAgain) {
     if (!context().info().is_cpu()) GTEST_SKIP() << "the heap setting is for CPU devices";
-    keep_freed_memory_mapped(); // what every application does at start-up
     auto scene = load(gltf_asset("2CylinderEngine"));
     ASSERT_TRUE(scene);
     renderer().load(*scene); // textures prepared with the renderer's test_texture_settings()

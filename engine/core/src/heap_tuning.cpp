@@ -1,5 +1,7 @@
 #include <sherpa/core/heap_tuning.h>
 
+#include <cstdlib> // defines __GLIBC__ (via <features.h>) on glibc
+
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif

@@ -1,7 +1,7 @@
 #include <sherpa/gpu/gpu_error.h>
+#include <sherpa/gpu/upload.h>
 #include <sherpa/render/gpu_scene.h>
 #include <sherpa/render/gpu_structs.h>
-#include <sherpa/gpu/upload.h>
 #include <sherpa/scene/usage_report.h>
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 #include <sherpa/gpu/gpu_error.h>
+#include <sherpa/gpu/upload.h>
 #include <sherpa/render/gpu_structs.h>
 #include <sherpa/render/scene_textures.h>
-#include <sherpa/gpu/upload.h>
 
 #include <sherpa/texture/block_codecs.h>
 

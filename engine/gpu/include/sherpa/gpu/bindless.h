@@ -19,7 +19,6 @@ inline constexpr std::uint32_t kCheckerTexture = 3;
 inline constexpr std::uint32_t kDefaultTextureCount = 4;
 inline constexpr std::uint32_t kCheckerTextureSize = 8;
 
-
 class BindlessTable {
 public:
     static constexpr std::uint32_t kCapacity = 4096;

@@ -12,8 +12,8 @@
 #include <glm/glm.hpp>
 
 #include <sherpa/gpu/commands.h>
-#include <sherpa/render/gpu_scene.h>
 #include <sherpa/gpu/resources.h>
+#include <sherpa/render/gpu_scene.h>
 #include <sherpa/scene/culling.h>
 #include <sherpa/scene/mesh_pass.h>
 

@@ -4,7 +4,7 @@
 // in the same run (reading the six box arrays and writing one byte per box, with
 // the widest SIMD available), and the full camera pass (cull + draw groups).
 #include <sherpa/gpu/context.h>
-#include <sherpa/gpu/gpu_culling.h>
+#include <sherpa/render/gpu_culling.h>
 #include <sherpa/scene/camera_spec.h>
 #include <sherpa/scene/culling.h>
 #include <sherpa/scene/culling_passes.h>

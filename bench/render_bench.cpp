@@ -8,7 +8,10 @@
 // first two frames (pipeline compilation, first shadow map) are not counted. The
 // CPU columns are process CPU time per frame (lavapipe's threads included): on a
 // shared machine they move less than wall time does.
-#include <sherpa/gpu/renderer.h>
+#include <sherpa/core/heap_tuning.h>
+#include <sherpa/gpu/context.h>
+#include <sherpa/render/gpu_scene.h>
+#include <sherpa/render/renderer.h>
 #include <sherpa/scene/scene_loader.h>
 
 #include <sys/resource.h>
@@ -74,6 +77,8 @@ std::vector<std::string> default_scenes() {
 } // namespace
 
 int main(int argc, char** argv) {
+    // What sherpa-cli and the editor do: lavapipe's per-frame blocks stay mapped.
+    sherpa::keep_freed_memory_mapped();
     int frames = 20;
     bool csv = false, quick = false, lit_only = false, no_bc = false;
     gpu::RenderSettings lit;

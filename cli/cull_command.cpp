@@ -3,9 +3,9 @@
 // directional light (or a default sun): the cascades the renderer draws for this
 // camera (sherpa/scene/shadow_cascades.h), casters only.
 #include "cli_common.h"
-#include "cull_gpu.h"
 #include "scene_json.h"
 
+#include <sherpa/render/cull_check.h>
 #include <sherpa/scene/culling_passes.h>
 #include <sherpa/scene/scene_loader.h>
 #include <sherpa/scene/shadow_cascades.h>
@@ -112,7 +112,7 @@ int run_cull(Args args) {
     }
     if (on_gpu) {
         std::vector<PassResult> gpu_passes;
-        if (!gpu_cull_passes(s, frusta, passes, gpu_passes, error)) {
+        if (!gpu::gpu_cull_passes(s, frusta, passes, gpu_passes, error)) {
             std::fprintf(stderr, "error: %s\n", error.c_str());
             return kExitLoadError;
         }

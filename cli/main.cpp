@@ -1,6 +1,8 @@
 // sherpa-cli SUBCOMMAND ...: headless access to the engine.
 #include "cli_common.h"
 
+#include <sherpa/core/heap_tuning.h>
+
 #include <cstdio>
 #include <vector>
 
@@ -42,6 +44,9 @@ int usage(std::FILE* out) {
 } // namespace
 
 int main(int argc, char** argv) {
+    // A CPU Vulkan device frees and reallocates large blocks every frame: keep them mapped
+    // (see heap_tuning.h for the measurements).
+    sherpa::keep_freed_memory_mapped();
     std::vector<std::string_view> args(argv + 1, argv + argc);
     if (args.empty()) return usage(stderr);
     if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") return usage(stdout);

@@ -8,9 +8,11 @@
 #include "texture_cli.h"
 
 #include <sherpa/core/file_io.h>
+#include <sherpa/gpu/context.h>
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/image_io.h>
-#include <sherpa/gpu/renderer.h>
+#include <sherpa/render/gpu_scene.h>
+#include <sherpa/render/renderer.h>
 #include <sherpa/scene/scene_loader.h>
 
 #include <charconv>

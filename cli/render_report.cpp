@@ -2,6 +2,8 @@
 #include "scene_json.h"
 #include "texture_cli.h"
 
+#include <sherpa/render/gpu_scene.h>
+
 #include <algorithm>
 #include <map>
 

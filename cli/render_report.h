@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include <sherpa/gpu/renderer.h>
+#include <sherpa/render/renderer.h>
 
 namespace sherpa::cli {
 

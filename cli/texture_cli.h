@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include <sherpa/gpu/scene_textures.h>
+#include <sherpa/render/scene_textures.h>
 #include <sherpa/texture/texture_pipeline.h>
 
 #include "cli_common.h"

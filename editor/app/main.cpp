@@ -8,7 +8,11 @@
 #include "gpu_viewport.h"
 #include "main_window.h"
 
+#include <sherpa/core/heap_tuning.h>
+
 int main(int argc, char** argv) {
+    // A CPU Vulkan device frees and reallocates large blocks every frame: keep them mapped.
+    sherpa::keep_freed_memory_mapped();
     QElapsedTimer launch;
     launch.start();
     QApplication app(argc, argv);

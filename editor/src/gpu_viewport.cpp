@@ -1,10 +1,12 @@
 // The engine's headers come first: Qt's QVulkanInstance defines VK_NO_PROTOTYPES,
 // which would hide the Vulkan prototypes the engine's handle types are built on.
-#include <sherpa/gpu/commands.h>
 #include <sherpa/gpu/context.h>
-#include <sherpa/gpu/gpu_culling.h>
-#include <sherpa/gpu/presenter.h>
-#include <sherpa/gpu/renderer.h>
+#include <sherpa/gpu/devices.h>
+#include <sherpa/render/cull_check.h>
+#include <sherpa/render/gpu_scene.h>
+#include <sherpa/render/material_readback.h>
+#include <sherpa/render/presenter.h>
+#include <sherpa/render/renderer.h>
 
 #include "gpu_viewport.h"
 
@@ -21,9 +23,8 @@ struct GpuViewport::Impl {
     std::uint32_t width = 0, height = 0;
     const Scene* scene = nullptr;
     bool all_streams = false;
-    PreparedTextures prepared;              // of `scene`
-    std::unique_ptr<gpu::GpuCuller> culler; // CPU/GPU agreement checks, built per scene
-    const Scene* culler_scene = nullptr;
+    PreparedTextures prepared;                   // of `scene`
+    std::unique_ptr<gpu::GpuCullChecker> culler; // CPU/GPU agreement checks, built per scene
 };
 
 GpuViewport::GpuViewport(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -101,7 +102,6 @@ TexturePreparer GpuViewport::texturePreparer() const {
 void GpuViewport::setScene(const Scene* scene, PreparedTextures textures) {
     if (scene != impl_->scene) {
         impl_->culler.reset();
-        impl_->culler_scene = nullptr;
     }
     impl_->scene = scene;
     if (!scene) {
@@ -180,41 +180,11 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame) {
 }
 
 std::optional<GpuMaterialReadback> GpuViewport::readMaterial(int material) {
-    const gpu::GpuScene* scene = impl_->renderer->scene();
-    if (!scene || !impl_->scene || material < 0 ||
-        static_cast<std::size_t>(material) >= impl_->scene->materials.size())
-        return std::nullopt;
-    gpu::ResourceManager& resources = impl_->renderer->resources();
-    constexpr VkDeviceSize kSize = sizeof(GPUMaterialData);
-    gpu::BufferHandle staging =
-        resources.create_buffer({kSize, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                 gpu::MemoryUsage::Readback, "editor material readback"});
-    // One copy out of the device-local material array, waited on: a dock refresh, not a frame.
-    gpu::CommandRecorder recorder(*impl_->context);
-    const VkCommandBuffer cmd = recorder.begin();
-    const VkBufferCopy region{static_cast<VkDeviceSize>(material) * kSize, 0, kSize};
-    vkCmdCopyBuffer(cmd, scene->materials_buffer(), resources.get(staging).buffer.get(), 1,
-                    &region);
-    resources.wait_for(recorder.submit(resources));
-    const gpu::Buffer& readback = resources.get(staging);
-    // Readback memory may be cached without coherence: make the GPU's writes visible.
-    const VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, nullptr,
-                                    readback.memory.get(), 0, VK_WHOLE_SIZE};
-    vkInvalidateMappedMemoryRanges(impl_->context->device(), 1, &range);
-    GpuMaterialReadback out;
-    std::memcpy(&out.record, readback.mapped, kSize);
-    resources.destroy(staging);
-
-    // Every (texture, role) slot the scene registered, inverted.
-    for (std::size_t t = 0; t < impl_->scene->textures.size(); ++t)
-        for (TextureRole role : {kRoleColor, kRoleLinear, kRoleNormal}) {
-            const std::uint32_t slot = scene->textures().slot(static_cast<std::int32_t>(t), role);
-            if (slot == kTextureSentinel) continue;
-            if (slot >= out.bindless_to_texture.size())
-                out.bindless_to_texture.resize(slot + 1, -1);
-            out.bindless_to_texture[slot] = static_cast<int>(t);
-        }
-    return out;
+    if (!impl_->scene) return std::nullopt;
+    std::optional<gpu::MaterialReadback> r =
+        gpu::read_material(*impl_->renderer, *impl_->scene, material);
+    if (!r) return std::nullopt;
+    return GpuMaterialReadback{r->record, std::move(r->bindless_to_texture)};
 }
 
 std::int64_t GpuViewport::objectCount() const {
@@ -243,38 +213,28 @@ bool GpuViewport::lastCullPasses(std::vector<CullStats>& passes, bool& cached_sh
 
 } // namespace sherpa::editor
 
-#include <sherpa/gpu/gpu_culling.h>
-#include <sherpa/scene/mesh_pass.h>
-
 namespace sherpa::editor {
 
 bool GpuViewport::checkGpuCulling(const Frustum& frustum, CullMethod method,
                                   const std::vector<std::uint8_t>& cpu_visible, GpuCullCheck& out) {
     const Scene* scene = impl_->scene;
     if (!scene || scene->instances.empty()) return false;
-    if (!impl_->culler || impl_->culler_scene != scene) {
-        // The camera pass over every instance, as `sherpa-cli cull --method gpu` builds it.
-        MeshPass pass(MeshPassKind::Forward);
-        for (std::uint32_t i = 0; i < scene->instances.size(); ++i)
-            pass.add(i, scene->instances[i].mesh_id, instance_pipeline_key(*scene, i));
-        pass.update();
-        impl_->culler.reset();
-        impl_->culler =
-            std::make_unique<gpu::GpuCuller>(*impl_->context, impl_->renderer->resources());
-        impl_->culler->build(pass, *scene);
-        impl_->culler_scene = scene;
-    }
-    const gpu::GpuCullReadback r = impl_->culler->run(frustum, method);
+    if (!impl_->culler || &impl_->culler->scene() != scene)
+        impl_->culler = std::make_unique<gpu::GpuCullChecker>(*impl_->context,
+                                                              impl_->renderer->resources(), *scene);
+    const gpu::GpuCullComparison r = impl_->culler->compare(frustum, method, cpu_visible);
     out = {};
     out.gpu_ms = r.gpu_ms;
-    const std::vector<std::uint32_t>& instances = impl_->culler->object_instances();
-    for (std::size_t k = 0; k < r.visible.size() && k < instances.size(); ++k) {
-        const bool gpu = r.visible[k] != 0;
-        const bool cpu = instances[k] < cpu_visible.size() && cpu_visible[instances[k]] != 0;
-        out.visible += gpu ? 1 : 0;
-        out.differences += gpu != cpu ? 1 : 0;
-    }
+    out.visible = static_cast<decltype(out.visible)>(r.visible.size());
+    out.differences = static_cast<decltype(out.differences)>(r.differences);
     return true;
+}
+
+QStringList GpuViewport::deviceNames(void* instance) {
+    QStringList names;
+    for (const gpu::DeviceSummary& d : gpu::enumerate_devices(static_cast<VkInstance>(instance)))
+        names << QString::fromStdString(gpu::describe(d));
+    return names;
 }
 
 } // namespace sherpa::editor

@@ -94,6 +94,9 @@ public:
     };
     bool checkGpuCulling(const Frustum& frustum, CullMethod method,
                          const std::vector<std::uint8_t>& cpu_visible, GpuCullCheck& out);
+    // "NAME (Vulkan X.Y.Z)" of every physical device of `instance` (a VkInstance),
+    // through the engine's enumeration; empty in builds without the engine renderer.
+    static QStringList deviceNames(void* instance);
 
 private:
     struct Impl;

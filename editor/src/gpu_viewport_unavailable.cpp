@@ -60,4 +60,8 @@ std::uint64_t GpuViewport::textureBytes() const {
     return 0;
 }
 
+QStringList GpuViewport::deviceNames(void*) {
+    return {};
+}
+
 } // namespace sherpa::editor

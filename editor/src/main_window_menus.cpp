@@ -15,7 +15,6 @@
 #include <QToolBar>
 #include <QToolButton>
 #include <QUrl>
-#include <QVulkanFunctions>
 #include <QVulkanInstance>
 
 #include "culling_dock.h"
@@ -367,22 +366,8 @@ void MainWindow::showAbout() {
     if (gpu_) {
         device = gpu_->deviceName();
     } else if (vulkan_ && vulkan_->isValid()) {
-        // The first physical device; the engine picks its device the same way (lavapipe first).
-        QVulkanFunctions* f = vulkan_->functions();
-        uint32_t count = 0;
-        f->vkEnumeratePhysicalDevices(vulkan_->vkInstance(), &count, nullptr);
-        std::vector<VkPhysicalDevice> devices(count);
-        f->vkEnumeratePhysicalDevices(vulkan_->vkInstance(), &count, devices.data());
-        QStringList names;
-        for (VkPhysicalDevice d : devices) {
-            VkPhysicalDeviceProperties p{};
-            f->vkGetPhysicalDeviceProperties(d, &p);
-            names << QStringLiteral("%1 (Vulkan %2.%3.%4)")
-                         .arg(QString::fromUtf8(p.deviceName))
-                         .arg(VK_API_VERSION_MAJOR(p.apiVersion))
-                         .arg(VK_API_VERSION_MINOR(p.apiVersion))
-                         .arg(VK_API_VERSION_PATCH(p.apiVersion));
-        }
+        // Every physical device the instance sees (the engine picks lavapipe first).
+        const QStringList names = GpuViewport::deviceNames(vulkan_->vkInstance());
         device = names.join(QStringLiteral("; "));
     }
     QMessageBox::about(this, tr("About Sherpa"),

@@ -14,6 +14,7 @@
 
 #include <sherpa/scene/scene_loader.h>
 #include <sherpa/texture/block_codecs.h>
+#include <sherpa/texture/prepared_levels.h>
 #include <sherpa/texture/texture_pipeline.h>
 
 namespace sherpa::editor {
@@ -88,20 +89,8 @@ QImage prepared_thumbnail(const tex::PreparedTextureSet* set, std::int32_t t, QS
             ++level;
         const std::uint32_t w = tex::mip_extent(p.width, level),
                             h = tex::mip_extent(p.height, level);
-        std::vector<std::uint8_t> rgba;
-        if (p.format == tex::VkFormat::Bc7SrgbBlock || p.format == tex::VkFormat::Bc7UnormBlock) {
-            rgba = tex::decode_image(tex::BlockFormat::Bc7, p.levels[level], w, h, 1);
-        } else if (p.format == tex::VkFormat::Bc5UnormBlock) {
-            rgba = tex::decode_image(tex::BlockFormat::Bc5, p.levels[level], w, h, 1);
-            for (std::size_t i = 0; i < rgba.size(); i += 4) { // z from x and y, as shaded
-                const float x = rgba[i] / 127.5f - 1.0f, y = rgba[i + 1] / 127.5f - 1.0f;
-                const float z = std::sqrt(std::max(0.0f, 1.0f - x * x - y * y));
-                rgba[i + 2] = static_cast<std::uint8_t>(std::lround((z + 1.0f) * 127.5f));
-            }
-        } else {
-            rgba = p.levels[level];
-        }
-        if (rgba.size() != std::size_t(w) * h * 4) return {};
+        const std::vector<std::uint8_t> rgba = tex::decode_level_rgba8(p, level);
+        if (rgba.empty()) return {};
         source_size = QSize(static_cast<int>(p.width), static_cast<int>(p.height));
         // copy(): scaled() to the size it already has would share `rgba`, freed on return.
         return QImage(rgba.data(), int(w), int(h), int(w) * 4, QImage::Format_RGBA8888)

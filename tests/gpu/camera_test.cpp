@@ -1,7 +1,7 @@
 // Camera specs, reverse-Z projections and auto-framing (no GPU needed).
 #include <gtest/gtest.h>
 
-#include <sherpa/gpu/camera.h>
+#include <sherpa/render/camera.h>
 
 namespace sherpa::test {
 namespace {

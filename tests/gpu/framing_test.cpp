@@ -4,7 +4,7 @@
 // most of the view, for tall, square and wide viewports. No GPU needed.
 #include "test_support.h"
 
-#include <sherpa/gpu/camera.h>
+#include <sherpa/render/camera.h>
 #include <sherpa/scene/framing.h>
 #include <sherpa/scene/scene_loader.h>
 

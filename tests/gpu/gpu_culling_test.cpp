@@ -2,7 +2,7 @@
 // the same method, and its indirect batches hold exactly the visible objects.
 #include "gpu_test_support.h"
 
-#include <sherpa/gpu/gpu_culling.h>
+#include <sherpa/render/gpu_culling.h>
 #include <sherpa/scene/camera_spec.h>
 #include <sherpa/scene/culling_passes.h>
 

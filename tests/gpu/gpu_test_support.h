@@ -11,8 +11,10 @@
 #include <string>
 #include <vector>
 
+#include <sherpa/core/heap_tuning.h>
 #include <sherpa/gpu/context.h>
-#include <sherpa/gpu/renderer.h>
+#include <sherpa/render/gpu_scene.h>
+#include <sherpa/render/renderer.h>
 #include <sherpa/scene/scene_loader.h>
 
 #include "test_support.h"
@@ -47,6 +49,7 @@ struct GpuEnvironment {
     std::unique_ptr<gpu::Context> context;
     std::unique_ptr<gpu::Renderer> renderer;
     GpuEnvironment() {
+        keep_freed_memory_mapped(); // as every application does, before any device exists
         gpu::ContextOptions options;
         options.validation = true; // every GPU test runs under the Khronos layer
         context = std::make_unique<gpu::Context>(options);

@@ -2,7 +2,7 @@
 // do not fault their working memory in again.
 #include "gpu_test_support.h"
 
-#include <sherpa/gpu/scene_textures.h>
+#include <sherpa/render/scene_textures.h>
 
 #include <sys/resource.h>
 
@@ -50,7 +50,9 @@ long minor_page_faults() {
 }
 
 // On a CPU device the rasterizer's per-frame memory comes from this process's heap;
-// the context keeps it mapped (gpu::Context, keep_frame_memory_mapped) instead of
+// the applications keep it mapped (sherpa::keep_freed_memory_mapped(), called first
+// thing in sherpa-cli, the editor and sherpa-bench-render, and by GpuEnvironment
+// before it makes the device: called after that it does not help) instead of
 // letting every frame fault it in again. Without that, 2CylinderEngine (many draws)
 // took about 5,400 page faults per 720p frame; with it, about 300.
 TEST_F(LeakTest, CpuDeviceFramesDoNotFaultTheirWorkingMemoryInAgain) {

@@ -2,7 +2,7 @@
 // in the lit view and in every debug view with every overlay.
 #include "gpu_test_support.h"
 
-#include <sherpa/gpu/render_settings.h>
+#include <sherpa/render/render_settings.h>
 #include <sherpa/scene/usage_report.h>
 
 namespace sherpa::test {

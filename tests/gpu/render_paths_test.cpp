@@ -3,7 +3,7 @@
 // for the vertex streams a mesh holds give the same pixels as the general paths.
 #include "gpu_test_support.h"
 
-#include <sherpa/gpu/render_settings.h>
+#include <sherpa/render/render_settings.h>
 
 #include <cstdlib>
 

@@ -3,7 +3,7 @@
 // culling that removes shadow draws without changing the image.
 #include "gpu_test_support.h"
 
-#include <sherpa/gpu/renderer.h>
+#include <sherpa/render/renderer.h>
 
 #include <cstdlib>
 

@@ -5,7 +5,7 @@
 #include "gpu_test_support.h"
 
 #include <sherpa/gpu/gpu_error.h>
-#include <sherpa/gpu/scene_textures.h>
+#include <sherpa/render/scene_textures.h>
 #include <sherpa/texture/block_codecs.h>
 
 #include <cmath>

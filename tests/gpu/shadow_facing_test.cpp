@@ -6,7 +6,7 @@
 #include "gpu_test_support.h"
 
 #include <sherpa/gpu/image_io.h>
-#include <sherpa/gpu/render_settings.h>
+#include <sherpa/render/render_settings.h>
 
 #include <glm/gtc/matrix_inverse.hpp>
 

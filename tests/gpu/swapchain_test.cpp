@@ -12,8 +12,8 @@
 #include <cstring>
 
 #include <sherpa/gpu/gpu_error.h>
-#include <sherpa/gpu/presenter.h>
-#include <sherpa/gpu/renderer.h>
+#include <sherpa/render/presenter.h>
+#include <sherpa/render/renderer.h>
 #include <sherpa/scene/scene_loader.h>
 
 namespace {
@@ -114,8 +114,7 @@ TEST_F(SwapchainTest, PresentsFramesAndSurvivesResizeWithoutValidationMessages) 
         int shown = 0;
         for (int i = 0; i < 6; ++i) shown += presenter.present_frame(settings) ? 1 : 0;
         EXPECT_GE(shown, 5);
-        renderer.wait_for_slot(0);
-        renderer.wait_for_slot(1);
+        context.wait_idle(); // both frames in flight have completed
         vkQueueWaitIdle(context.queue());
         // The scene, not only the black window background, reached the X server.
         EXPECT_GT(window.distinct_pixels(), 4u);

@@ -1,7 +1,7 @@
 #include <sherpa/gpu/bindless.h>
 #include <sherpa/gpu/gpu_error.h>
-#include <sherpa/gpu/gpu_structs.h>
 #include <sherpa/gpu/upload.h>
+#include <sherpa/gpu/vk_helpers.h>
 
 #include <array>
 
@@ -20,26 +20,14 @@ BindlessTable::BindlessTable(ResourceManager& resources) : resources_(resources)
         VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_BINDING_FLAGS_CREATE_INFO);
     flags_info.bindingCount = 1;
     flags_info.pBindingFlags = &flags;
-    auto lci = vk_init<VkDescriptorSetLayoutCreateInfo>(
-        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
-    lci.pNext = &flags_info;
-    lci.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT;
-    lci.bindingCount = 1;
-    lci.pBindings = &binding;
-    VkDescriptorSetLayout layout = VK_NULL_HANDLE;
-    vk_check(vkCreateDescriptorSetLayout(device, &lci, nullptr, &layout),
-             "vkCreateDescriptorSetLayout");
-    layout_ = UniqueDescriptorSetLayout(device, layout);
-
-    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCapacity};
-    auto pci = vk_init<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
-    pci.flags = VK_DESCRIPTOR_POOL_CREATE_UPDATE_AFTER_BIND_BIT;
-    pci.maxSets = 1;
-    pci.poolSizeCount = 1;
-    pci.pPoolSizes = &size;
-    VkDescriptorPool pool = VK_NULL_HANDLE;
-    vk_check(vkCreateDescriptorPool(device, &pci, nullptr, &pool), "vkCreateDescriptorPool");
-    pool_ = UniqueDescriptorPool(device, pool);
+    layout_ = create_descriptor_set_layout(
+        device, {&binding, 1}, "vkCreateDescriptorSetLayout(bindless)",
+        VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT, &flags_info);
+    const VkDescriptorSetLayout layout = layout_.get();
+    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCapacity};
+    pool_ = create_descriptor_pool(device, 1, {&size, 1}, "vkCreateDescriptorPool(bindless)",
+                                   VK_DESCRIPTOR_POOL_CREATE_UPDATE_AFTER_BIND_BIT);
+    const VkDescriptorPool pool = pool_.get();
 
     const std::uint32_t count = kCapacity;
     auto vci = vk_init<VkDescriptorSetVariableDescriptorCountAllocateInfo>(

@@ -1,11 +1,10 @@
+#include "device_features.h"
 #include <sherpa/gpu/context.h>
+
 #include <sherpa/gpu/gpu_error.h>
 
 #include <algorithm>
 #include <cstdlib>
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
 #include <cstring>
 #include <string_view>
 
@@ -27,73 +26,6 @@ std::vector<VkExtensionProperties> device_extensions(VkPhysicalDevice pd) {
     std::vector<VkExtensionProperties> out(n);
     vkEnumerateDeviceExtensionProperties(pd, nullptr, &n, out.data());
     return out;
-}
-
-// A CPU device (lavapipe) allocates each frame's working memory (binned triangles,
-// vertex-shader output per draw) from this process's heap and frees it when the
-// frame is done. glibc's defaults hand such blocks back to the kernel (blocks of
-// 128 KiB and more are mmapped and unmapped one by one, a freed heap top over 128
-// KiB is trimmed), so every frame page-faults and zeroes them again. Measured:
-// 2CylinderEngine 5,400 page faults per 720p frame (300 kept), 53 -> 42 ms a frame;
-// the 100k-instance grid 27,000 (400). Blocks up to 32 MiB now come from the heap
-// and up to 256 MiB of free heap stays mapped. Process-wide, and only where the
-// device rasterizes on the CPU.
-void keep_frame_memory_mapped() {
-#if defined(__GLIBC__)
-    mallopt(M_MMAP_THRESHOLD, 32 << 20);
-    mallopt(M_TRIM_THRESHOLD, 256 << 20);
-#endif
-}
-
-// The feature set the renderer cannot work without. Returns the missing ones.
-struct FeatureChain {
-    VkPhysicalDeviceFeatures2 core =
-        vk_init<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
-    VkPhysicalDeviceVulkan11Features v11 = vk_init<VkPhysicalDeviceVulkan11Features>(
-        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES);
-    VkPhysicalDeviceVulkan12Features v12 = vk_init<VkPhysicalDeviceVulkan12Features>(
-        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES);
-    VkPhysicalDeviceVulkan13Features v13 = vk_init<VkPhysicalDeviceVulkan13Features>(
-        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES);
-    FeatureChain() {
-        core.pNext = &v11;
-        v11.pNext = &v12;
-        v12.pNext = &v13;
-    }
-    FeatureChain(const FeatureChain&) = delete;
-};
-
-std::string missing_features(const FeatureChain& f) {
-    std::string missing;
-    auto need = [&](VkBool32 v, const char* name) {
-        if (!v) missing += std::string(missing.empty() ? "" : ", ") + name;
-    };
-    need(f.core.features.shaderInt64, "shaderInt64");
-    need(f.core.features.fillModeNonSolid, "fillModeNonSolid");
-    need(f.core.features.multiDrawIndirect, "multiDrawIndirect");
-    need(f.v12.drawIndirectCount, "drawIndirectCount");
-    need(f.v12.descriptorIndexing, "descriptorIndexing");
-    need(f.v12.runtimeDescriptorArray, "runtimeDescriptorArray");
-    need(f.v12.descriptorBindingPartiallyBound, "descriptorBindingPartiallyBound");
-    need(f.v12.descriptorBindingVariableDescriptorCount,
-         "descriptorBindingVariableDescriptorCount");
-    need(f.v12.descriptorBindingSampledImageUpdateAfterBind,
-         "descriptorBindingSampledImageUpdateAfterBind");
-    need(f.v12.shaderSampledImageArrayNonUniformIndexing,
-         "shaderSampledImageArrayNonUniformIndexing");
-    need(f.v12.descriptorBindingUpdateUnusedWhilePending,
-         "descriptorBindingUpdateUnusedWhilePending");
-    need(f.v12.bufferDeviceAddress, "bufferDeviceAddress");
-    need(f.v12.scalarBlockLayout, "scalarBlockLayout");
-    need(f.v12.hostQueryReset, "hostQueryReset");
-    need(f.v13.dynamicRendering, "dynamicRendering");
-    need(f.v13.synchronization2, "synchronization2");
-    return missing;
-}
-
-std::string env_or(const char* name, std::string fallback) {
-    const char* v = std::getenv(name);
-    return v && *v ? std::string(v) : fallback;
 }
 
 } // namespace
@@ -120,7 +52,6 @@ Context::Context(const ContextOptions& options) : validation_(std::make_unique<V
     try {
         create_instance(options);
         pick_physical_device(options);
-        if (info_.is_cpu()) keep_frame_memory_mapped();
         create_device(options.presentation);
     } catch (...) {
         destroy(); // the destructor does not run for a throwing constructor
@@ -217,73 +148,6 @@ void Context::create_instance(const ContextOptions& options) {
         set_name_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
             vkGetInstanceProcAddr(instance_, "vkSetDebugUtilsObjectNameEXT"));
     }
-}
-
-void Context::pick_physical_device(const ContextOptions& options) {
-    std::uint32_t n = 0;
-    vkEnumeratePhysicalDevices(instance_, &n, nullptr);
-    std::vector<VkPhysicalDevice> devices(n);
-    vkEnumeratePhysicalDevices(instance_, &n, devices.data());
-    if (devices.empty()) throw GpuError("no Vulkan device found");
-
-    const std::string filter =
-        options.device_filter.empty() ? env_or("SHERPA_DEVICE", "") : options.device_filter;
-    std::string rejected;
-    VkPhysicalDevice best = VK_NULL_HANDLE;
-    int best_score = -1;
-    for (VkPhysicalDevice pd : devices) {
-        VkPhysicalDeviceProperties props;
-        vkGetPhysicalDeviceProperties(pd, &props);
-        const std::string name = props.deviceName;
-        if (!filter.empty() && name.find(filter) == std::string::npos) continue;
-        if (props.apiVersion < VK_API_VERSION_1_3) {
-            rejected += name + ": Vulkan < 1.3; ";
-            continue;
-        }
-        FeatureChain f;
-        vkGetPhysicalDeviceFeatures2(pd, &f.core);
-        if (auto missing = missing_features(f); !missing.empty()) {
-            rejected += name + ": lacks " + missing + "; ";
-            continue;
-        }
-        // Subgroup vote (forward shading's sun branch) in fragment shaders, vote and
-        // ballot (GPU culling's one atomic per subgroup) in compute shaders.
-        auto subgroup = vk_init<VkPhysicalDeviceSubgroupProperties>(
-            VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES);
-        auto props2 =
-            vk_init<VkPhysicalDeviceProperties2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2);
-        props2.pNext = &subgroup;
-        vkGetPhysicalDeviceProperties2(pd, &props2);
-        const VkSubgroupFeatureFlags ops =
-            VK_SUBGROUP_FEATURE_VOTE_BIT | VK_SUBGROUP_FEATURE_BALLOT_BIT;
-        if ((subgroup.supportedOperations & ops) != ops ||
-            (subgroup.supportedStages & VK_SHADER_STAGE_FRAGMENT_BIT) == 0 ||
-            (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) == 0) {
-            rejected += name + ": lacks subgroup vote/ballot in fragment and compute shaders; ";
-            continue;
-        }
-        // Lavapipe is the default everywhere (reproducible images); otherwise any.
-        const int score = name.find("llvmpipe") != std::string::npos ? 2 : 1;
-        if (score > best_score) {
-            best = pd;
-            best_score = score;
-        }
-    }
-    if (!best)
-        throw GpuError("no suitable Vulkan device" +
-                       (filter.empty() ? "" : " matching '" + filter + "'") +
-                       (rejected.empty() ? std::string() : ": " + rejected));
-    physical_ = best;
-
-    VkPhysicalDeviceProperties props;
-    vkGetPhysicalDeviceProperties(physical_, &props);
-    info_.name = props.deviceName;
-    info_.api_version = props.apiVersion;
-    info_.driver_version = props.driverVersion;
-    info_.type = props.deviceType;
-    info_.timestamp_period_ns = props.limits.timestampPeriod;
-    info_.max_anisotropy = props.limits.maxSamplerAnisotropy;
-    vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
 }
 
 namespace {

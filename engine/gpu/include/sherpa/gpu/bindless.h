@@ -5,10 +5,19 @@
 #include <cstdint>
 #include <vector>
 
-#include <sherpa/gpu/gpu_structs.h>
 #include <sherpa/gpu/resources.h>
 
 namespace sherpa::gpu {
+
+// Bindless slots registered before any scene texture.
+inline constexpr std::uint32_t kWhiteTexture = 0;
+inline constexpr std::uint32_t kFlatNormalTexture = 1;
+inline constexpr std::uint32_t kBlackTexture = 2;
+// Magenta/black 8x8 checker drawn in colour slots whose texture is missing or
+// undecodable, so nobody mistakes the failure for intended white.
+inline constexpr std::uint32_t kCheckerTexture = 3;
+inline constexpr std::uint32_t kDefaultTextureCount = 4;
+inline constexpr std::uint32_t kCheckerTextureSize = 8;
 
 class BindlessTable {
 public:

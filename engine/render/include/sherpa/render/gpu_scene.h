@@ -1,0 +1,111 @@
+#pragma once
+// A Scene on the GPU: only the vertex streams the materials use (per the usage
+// report) as separate tightly packed arrays read by vertex pulling through buffer
+// device addresses, one index buffer, the GPUMaterialData array, the instance
+// array sorted into draw groups, and the textures.
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <sherpa/core/aabb.h>
+#include <sherpa/gpu/bindless.h>
+#include <sherpa/gpu/resources.h>
+#include <sherpa/render/scene_textures.h>
+#include <sherpa/scene/scene.h>
+
+namespace sherpa::gpu {
+
+struct GpuMemoryReport {
+    std::uint64_t vertex_streams = 0, indices = 0, textures = 0, materials = 0, instances = 0;
+    // The same vertices in the 56-byte unified layout (+16-byte colour stream where present).
+    std::uint64_t unified_vertex_bytes = 0;
+    std::uint64_t total() const {
+        return vertex_streams + indices + textures + materials + instances;
+    }
+};
+
+struct GpuMesh {
+    std::array<VkDeviceAddress, kVertexAttributeCount> stream{}; // 0 = not on the GPU
+    std::uint32_t flags = 0;       // mesh_flags for shaders (streams, provenance)
+    std::uint32_t first_index = 0; // into the shared index buffer
+    std::uint32_t index_count = 0;
+    std::uint32_t vertex_count = 0;
+    std::uint32_t material = 0;
+};
+
+// Instances of one mesh that share alpha mode, sidedness and winding: one
+// instanced indexed draw.
+struct DrawGroup {
+    std::uint32_t mesh = 0;
+    std::uint32_t material = 0;
+    AlphaMode alpha = AlphaMode::Opaque;
+    bool double_sided = false;
+    bool mirrored = false; // negative determinant: front faces wind clockwise
+    std::uint32_t first_instance = 0, instance_count = 0;
+};
+
+class GpuScene {
+public:
+    // Uploads textures the caller prepared (prepare_scene_textures(), possibly on
+    // another thread) for this scene.
+    GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+             std::shared_ptr<const tex::PreparedTextureSet> textures,
+             StreamPolicy policy = StreamPolicy::UsedByMaterials,
+             MissingTextures missing = MissingTextures::Checker);
+    // Prepares the textures itself (on this thread), then uploads; the CPU copies of
+    // the texture levels are released after the upload.
+    GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+             const TextureSettings& texture_settings,
+             StreamPolicy policy = StreamPolicy::UsedByMaterials);
+    ~GpuScene();
+    GpuScene(const GpuScene&) = delete;
+    GpuScene& operator=(const GpuScene&) = delete;
+
+    StreamPolicy policy() const { return policy_; }
+    const std::vector<GpuMesh>& meshes() const { return meshes_; }
+    const std::vector<DrawGroup>& groups() const { return groups_; }
+    // World bounds per GPU instance (draw-group order) for sorting and overlays.
+    const std::vector<Aabb>& instance_bounds() const { return instance_bounds_; }
+    // Scene instance index per GPU instance (draw-group order).
+    const std::vector<std::uint32_t>& scene_instances() const { return scene_instances_; }
+    const Aabb& bounds() const { return bounds_; }
+    // Null when no instanced mesh has triangles (then there are no draw groups).
+    VkBuffer index_buffer() const {
+        return indices_.valid() ? resources_.get(indices_).buffer.get() : VK_NULL_HANDLE;
+    }
+    VkDeviceAddress instances_address() const { return resources_.get(instances_).address; }
+    // The GPUMaterialData array (one SSBO) and its GPUMaterialExtra twin array.
+    VkBuffer materials_buffer() const { return resources_.get(materials_).buffer.get(); }
+    VkBuffer material_extras_buffer() const {
+        return resources_.get(material_extras_).buffer.get();
+    }
+    const GpuMemoryReport& memory() const { return memory_; }
+    std::uint64_t triangle_count() const { return triangles_; }
+    // For inspection: per prepared texture its pipeline record (state, hash, PSNR,
+    // timings, bytes) and bindless slot; the editor maps material slots back to them.
+    const SceneTextures& textures() const { return *textures_; }
+    const std::vector<std::string>& warnings() const { return textures_->warnings(); }
+
+private:
+    void upload(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
+                MissingTextures missing);
+    void upload_geometry(const Scene& scene);
+    void upload_materials(const Scene& scene);
+    void upload_instances(const Scene& scene);
+
+    ResourceManager& resources_;
+    BindlessTable& table_;
+    StreamPolicy policy_;
+    std::unique_ptr<SceneTextures> textures_;
+    BufferHandle vertices_, indices_, materials_, material_extras_, instances_;
+    std::vector<GpuMesh> meshes_;
+    std::vector<DrawGroup> groups_;
+    std::vector<Aabb> instance_bounds_;
+    std::vector<std::uint32_t> scene_instances_;
+    Aabb bounds_;
+    GpuMemoryReport memory_;
+    std::uint64_t triangles_ = 0;
+};
+
+} // namespace sherpa::gpu

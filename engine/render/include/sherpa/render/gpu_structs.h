@@ -1,0 +1,137 @@
+#pragma once
+// C++ twins of the GPU-visible structures in shaders/include/{common,material}.glsl.
+// Every offset is pinned here; change both sides together.
+#include <cstddef>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+#include <vulkan/vulkan.h>
+
+#include <sherpa/gpu/bindless.h>
+#include <sherpa/scene/material.h>
+
+namespace sherpa::gpu {
+
+inline constexpr std::uint32_t kMaxLights = 16;
+inline constexpr std::uint32_t kMaxCascades = 4;    // array size in GPUFrameData
+inline constexpr std::uint32_t kShadowCascades = 3; // cascades the renderer fits and draws
+inline constexpr std::uint32_t kNoCascade = 0xffffffffu;
+
+// Bindless default-texture slots (kWhiteTexture..): sherpa/gpu/bindless.h.
+
+struct GPULight {
+    glm::vec4 position_range;
+    glm::vec4 direction_type;
+    glm::vec4 color_intensity;
+    glm::vec4 cone;
+};
+static_assert(sizeof(GPULight) == 64);
+
+// std140 uniform block (set 1, binding 0): every member is 16-byte aligned.
+struct GPUFrameData {
+    glm::mat4 view;
+    glm::mat4 proj;
+    glm::mat4 view_proj;
+    glm::mat4 shadow_view_proj[kMaxCascades];
+    glm::vec4 camera_position;
+    glm::vec4 cascade_splits;
+    glm::vec4 sun_direction;
+    glm::vec4 sun_radiance;
+    glm::vec4 ambient;
+    glm::uvec4 params;       // x view, y light count, z cascade count, w shadow taps (1 or 4)
+    glm::vec4 overlay;       // x glyph length, y uv checks per unit
+    glm::vec4 cascade_texel; // world size of one shadow-map texel, per cascade
+    GPULight lights[kMaxLights];
+};
+static_assert(offsetof(GPUFrameData, proj) == 64);
+static_assert(offsetof(GPUFrameData, view_proj) == 128);
+static_assert(offsetof(GPUFrameData, shadow_view_proj) == 192);
+static_assert(offsetof(GPUFrameData, camera_position) == 448);
+static_assert(offsetof(GPUFrameData, cascade_splits) == 464);
+static_assert(offsetof(GPUFrameData, sun_direction) == 480);
+static_assert(offsetof(GPUFrameData, sun_radiance) == 496);
+static_assert(offsetof(GPUFrameData, ambient) == 512);
+static_assert(offsetof(GPUFrameData, params) == 528);
+static_assert(offsetof(GPUFrameData, overlay) == 544);
+static_assert(offsetof(GPUFrameData, cascade_texel) == 560);
+static_assert(offsetof(GPUFrameData, lights) == 576);
+static_assert(sizeof(GPUFrameData) == 576 + 64 * kMaxLights);
+
+// 128 bytes: model matrix and the CPU-computed normal matrix
+// transpose(inverse(mat3(model))) as three vec4 columns (layout-independent).
+struct GPUInstanceData {
+    glm::mat4 model;
+    glm::vec4 normal_matrix[3];
+    std::uint32_t material;
+    std::uint32_t mesh;
+    std::uint32_t flags;
+    std::uint32_t pad;
+};
+static_assert(sizeof(GPUInstanceData) == 128);
+static_assert(offsetof(GPUInstanceData, normal_matrix) == 64);
+static_assert(offsetof(GPUInstanceData, material) == 112);
+static_assert(offsetof(GPUInstanceData, mesh) == 116);
+static_assert(offsetof(GPUInstanceData, flags) == 120);
+
+enum TextureSlotIndex : std::uint32_t {
+    kSlotBaseColor = 0,
+    kSlotMetallicRoughness = 1,
+    kSlotNormal = 2,
+    kSlotOcclusion = 3,
+    kSlotEmissive = 4,
+    kSlotCount = 5,
+};
+
+struct GPUTextureTransform {
+    glm::vec4 row0; // w: TEXCOORD set
+    glm::vec4 row1;
+};
+struct GPUMaterialExtra {
+    GPUTextureTransform uv[kSlotCount];
+    std::uint32_t unlit;
+    std::uint32_t pad0, pad1, pad2;
+};
+static_assert(sizeof(GPUTextureTransform) == 32);
+static_assert(offsetof(GPUMaterialExtra, unlit) == 160);
+static_assert(sizeof(GPUMaterialExtra) == 176);
+
+// mesh_flags bits (common.glsl).
+inline constexpr std::uint32_t kTangentProvenanceShift = 8;
+inline constexpr std::uint32_t kNormalProvenanceShift = 10;
+inline constexpr std::uint32_t kGlyphKindShift = 16;
+
+// Per draw. Frame data and materials are not here: they come through descriptor
+// set 1 (see common.glsl for why).
+struct GPUPushConstants {
+    VkDeviceAddress instances;
+    VkDeviceAddress positions;
+    VkDeviceAddress normals;
+    VkDeviceAddress tangents;
+    VkDeviceAddress uv0;
+    VkDeviceAddress uv1;
+    VkDeviceAddress colors;
+    VkDeviceAddress lines;
+    std::uint32_t material_id;
+    std::uint32_t mesh_flags;
+    std::uint32_t cascade;
+    float glyph_length;
+    glm::vec4 color;
+    // gl_InstanceIndex -> GPU instance: culling's compacted ids, else the identity.
+    VkDeviceAddress instance_ids;
+};
+static_assert(offsetof(GPUPushConstants, lines) == 56);
+static_assert(offsetof(GPUPushConstants, material_id) == 64);
+static_assert(offsetof(GPUPushConstants, cascade) == 72);
+static_assert(offsetof(GPUPushConstants, color) == 80);
+static_assert(offsetof(GPUPushConstants, instance_ids) == 96);
+static_assert(sizeof(GPUPushConstants) == 104);
+static_assert(sizeof(GPUPushConstants) <= 128,
+              "Vulkan guarantees only 128 bytes of push constants");
+
+struct GPULineVertex {
+    glm::vec4 position;
+    glm::vec4 color;
+};
+static_assert(sizeof(GPULineVertex) == 32);
+
+} // namespace sherpa::gpu

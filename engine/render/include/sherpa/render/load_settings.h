@@ -1,0 +1,52 @@
+#pragma once
+// How Renderer::load() brings a scene to the GPU: texture preparation and the
+// vertex streams it uploads. No Vulkan types: what the CLI and editor configure.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string_view>
+
+#include <sherpa/core/progress.h>
+#include <sherpa/texture/texture_pipeline.h>
+
+namespace sherpa::gpu {
+
+enum class StreamPolicy {
+    UsedByMaterials, // the default: what shading reads
+    AllPresent,      // every authored or generated stream (debug views of unused streams)
+};
+
+// How material slots whose texture is missing or undecodable are drawn.
+enum class MissingTextures : std::uint8_t {
+    // A magenta/black checker in colour slots (base colour, emissive), the flat
+    // normal in normal slots, neutral data (occlusion 1, metallic-roughness factors
+    // alone) elsewhere: as a debug view would, so the failure is visible.
+    Checker,
+    // The glTF defaults for an absent texture in every slot (white colour).
+    Neutral,
+};
+std::string_view to_string(MissingTextures m); // "checker", "neutral"
+std::optional<MissingTextures> parse_missing_textures(std::string_view name);
+
+// How a renderer prepares textures when it is handed a bare Scene.
+struct TextureSettings {
+    std::optional<std::filesystem::path> cache_dir; // nullopt: no disk cache
+    std::uint64_t cache_cap_bytes = tex::kDefaultCacheCapBytes;
+    int quality = tex::kBc7DefaultLevel; // BC7 level
+    // Upload RGBA8 even where the device samples BC (what devices without BC get).
+    bool force_rgba8 = false;
+    // CPU devices (lavapipe) decode a whole BC7 block for every texel they fetch:
+    // measured 5-7x the frame time of RGBA8 for DamagedHelmet at 720p. There the
+    // cached BC7 blocks are decoded to RGBA8 at upload (same pixels as sampling the
+    // blocks, 4x the memory); false keeps the blocks. BC5 costs the same either way
+    // and stays compressed.
+    bool decode_bc7_on_cpu = true;
+    MissingTextures missing = MissingTextures::Checker;
+    // Handed to the texture pipeline (tex::PipelineOptions): textures ready of
+    // textures, and a token that stops the preparation (the set comes back
+    // `cancelled` and empty).
+    ProgressCallback progress;
+    const CancelToken* cancel = nullptr;
+};
+
+} // namespace sherpa::gpu

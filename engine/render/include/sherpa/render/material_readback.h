@@ -1,0 +1,27 @@
+#pragma once
+// A material record read back from the loaded scene's GPU material array, with the
+// bindless slots inverted to the scene textures they hold: what the GPU really
+// shades with (the editor's material dock shows it next to the glTF values).
+#include <optional>
+#include <vector>
+
+#include <sherpa/scene/material.h>
+
+namespace sherpa {
+struct Scene;
+}
+
+namespace sherpa::gpu {
+
+class Renderer;
+
+struct MaterialReadback {
+    GPUMaterialData record{};
+    std::vector<int> bindless_to_texture; // bindless slot -> scene texture, -1: none
+};
+
+// Material `material` of `scene`, the scene the renderer has loaded; nullopt when
+// nothing is loaded or the index is out of range. Waits for one copy on the GPU.
+std::optional<MaterialReadback> read_material(Renderer& renderer, const Scene& scene, int material);
+
+} // namespace sherpa::gpu

@@ -1,0 +1,129 @@
+#pragma once
+// What one rendered frame shows: size, debug view, overlays, camera, passes.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include <sherpa/render/camera.h>
+#include <sherpa/scene/culling.h>
+#include <sherpa/scene/shadow_cascades.h>
+
+namespace sherpa::gpu {
+
+// Values equal the VIEW_* constants in shaders/include/common.glsl.
+enum class DebugView : std::uint32_t {
+    Lit = 0,
+    Normal = 1,    // interpolated vertex normal (world)
+    Tangent = 2,   // world tangent xyz
+    Bitangent = 3, // cross(N, T) * w
+    TangentW = 4,  // handedness: green +1, red -1, yellow 0
+    Uv0 = 5,
+    Uv1 = 6,
+    Uv0Checker = 7,
+    Uv1Checker = 8,
+    BaseColor = 9,
+    Metallic = 10,
+    Roughness = 11,
+    Occlusion = 12,
+    Emissive = 13,
+    GeometricVsShading = 14, // angle between face normal and normal-mapped shading normal
+    Provenance = 15,         // tangent provenance: green authored, yellow generated, red defaulted
+    ShadingNormal = 16,      // normal after normal mapping (world)
+};
+
+enum Overlay : std::uint32_t {
+    kOverlayWireframe = 1u << 0,
+    kOverlayNormals = 1u << 1,
+    kOverlayTangents = 1u << 2,
+    kOverlayBitangents = 1u << 3,
+    kOverlayBounds = 1u << 4,
+    // Instance boxes coloured by the camera cull: green visible, red culled, yellow
+    // kept by the conservative test although the exact test rejects it. With a
+    // frozen culling camera its frustum is drawn too.
+    kOverlayCullBoxes = 1u << 5,
+};
+
+// Which path culls the camera passes.
+enum class CullPath : std::uint32_t {
+    None, // draw every instance
+    Cpu,  // CPU test, compacted instance ids written per frame
+    Gpu,  // compute shader fills indirect commands; vkCmdDrawIndexedIndirectCount
+};
+std::string_view to_string(CullPath p);
+std::optional<CullPath> parse_cull_path(std::string_view name);
+
+// Depth prepass before opaque shading. Auto picks per device (prepass_enabled).
+enum class PrepassMode : std::uint32_t { Auto, On, Off };
+
+std::string_view to_string(DebugView v);
+std::optional<DebugView> parse_debug_view(std::string_view name);
+std::vector<std::string_view> debug_view_names();
+std::optional<Overlay> parse_overlay(std::string_view name);
+std::vector<std::string_view> overlay_names();
+
+inline constexpr float kDefaultCheckerDensity = 8.0f;
+
+struct RenderSettings {
+    std::uint32_t width = 1280, height = 720;
+    DebugView view = DebugView::Lit;
+    std::uint32_t overlays = 0; // Overlay bits
+    float glyph_length = 0.0f;  // world units; 0: 2% of the scene's bounding diagonal
+    // Checks per UV unit of the uv checker views (atlas UVs need more than whole-
+    // texture UVs); the checker is filtered, so any density is free of moiré.
+    float uv_checker_density = kDefaultCheckerDensity;
+    CameraSpec camera;
+    bool shadows = true;
+    std::uint32_t cascades = kDefaultShadowCascades;
+    // Reuse the shadow cascades while camera, light and scene are unchanged. False
+    // re-renders them every frame (to measure their cost).
+    bool cache_shadows = true;
+    PrepassMode depth_prepass = PrepassMode::Auto;
+    // Benchmark floor: the same draws with positions only and a constant colour.
+    bool floor_only = false;
+    glm::vec4 clear_color{0.18f, 0.19f, 0.21f, 1.0f}; // linear
+    // Scene lights only; when the scene has no directional light a default sun
+    // (and its shadows) is added.
+    glm::vec3 sun_direction = kDefaultSunDirection; // direction light travels
+    float sun_intensity = 3.0f;
+    float ambient = 0.25f;
+    // Culls the camera pass and each shadow cascade (against its volume extended
+    // toward the light, see sherpa/scene/shadow_cascades.h).
+    CullPath cull = CullPath::Cpu;
+    CullMethod cull_method = CullMethod::PVertex;
+    // Check mode: the CPU test also runs on the GPU path, the GPU's visible sets are
+    // read back and compared (CullStats::cpu_gpu_differences), and false positives
+    // against the exact test are counted. Off, the GPU path does no per-object CPU
+    // work except for blended instances (which the CPU sorts and draws one by one).
+    bool cull_check = false;
+    // Cull with this camera instead of the view camera (visual debugging of culling).
+    std::optional<CameraSpec> freeze_cull;
+    // Selection highlight (an editor's selection), drawn last, over everything:
+    // the instance (scene instance index) tinted with kHighlightTint over its
+    // shading (which stays visible) and its world box in kHighlightColor; one triangle of its mesh
+    // filled, and one vertex as a normal/tangent/bitangent tripod, in kHighlightDetailColor.
+    // Ignored when the instance is not drawn (out of range, empty mesh).
+    std::optional<std::uint32_t> highlight_instance;
+    std::optional<std::uint32_t> highlight_triangle; // needs highlight_instance
+    std::optional<std::uint32_t> highlight_vertex;   // needs highlight_instance
+};
+
+inline const glm::vec4 kHighlightColor{1.0f, 0.45f, 0.0f, 1.0f}; // orange
+// Orange at 30%: a wireframe of a dense mesh painted it solid and hid its shading.
+inline const glm::vec4 kHighlightTint{1.0f, 0.45f, 0.0f, 0.3f};
+inline const glm::vec4 kHighlightDetailColor{1.0f, 0.0f, 1.0f, 1.0f}; // magenta
+
+// Does this view/overlay need streams the materials do not use (so the scene must
+// be uploaded with StreamPolicy::AllPresent)?
+bool needs_all_streams(const RenderSettings& settings);
+
+// Whether a frame of `triangles` at `pixels` draws the depth prepass: Auto draws it
+// on GPUs, and on CPU devices unless the scene has more than one triangle per four
+// pixels (see render_settings.cpp).
+bool prepass_enabled(PrepassMode mode, bool cpu_device, std::uint64_t triangles,
+                     std::uint64_t pixels);
+
+} // namespace sherpa::gpu

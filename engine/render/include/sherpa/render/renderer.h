@@ -1,0 +1,117 @@
+#pragma once
+// The renderer: what the CLI and the editor drive. It holds at most one scene on
+// the GPU and records frames as an ordered list of passes (engine/render/src:
+// culling, shadow cascades, depth prepass, forward shading, overlays, highlight),
+// either into its own offscreen target (render()) or into a swapchain image through
+// a Presenter. Settings in, statistics out; pipelines, handle pools and frame
+// resources stay inside (Renderer::Impl). No Vulkan header here.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <sherpa/render/load_settings.h>
+#include <sherpa/render/render_settings.h>
+#include <sherpa/scene/culling_passes.h>
+#include <sherpa/scene/shadow_cascades.h>
+
+namespace sherpa {
+struct Scene;
+namespace tex {
+struct PreparedTextureSet;
+}
+} // namespace sherpa
+
+namespace sherpa::gpu {
+
+class Context;
+class ResourceManager;
+class GpuScene;
+class Presenter;
+
+struct PassTiming {
+    std::string name;
+    double ms = 0.0;
+};
+
+// GPU-side measurements of one frame (timestamps and pipeline statistics of the
+// camera passes; shadow cascades are timed but not in the statistics).
+struct FrameStats {
+    std::vector<PassTiming> passes;
+    double gpu_ms = 0.0;
+    bool shadows_rendered = false; // false when the cached cascades were reused
+    std::uint64_t input_primitives = 0, vertex_invocations = 0, clipping_invocations = 0,
+                  clipping_primitives = 0, fragment_invocations = 0;
+    std::uint64_t draw_calls = 0;
+    // Per culled view: "camera", then "cascade0".. for each shadow cascade. The camera
+    // counts the shading draws (opaque, mask, blend) once; the depth prepass
+    // repeats its opaque and mask draws and is counted in `prepass`. Cascade
+    // statistics come from the last frame that rendered the cascades when they were
+    // reused (`shadows_rendered` false). With culling off every instance is visible
+    // and nothing is tested.
+    std::vector<CullStats> culling;
+    CullStats prepass; // depth prepass: draw_calls and triangles only
+    const CullStats* pass(std::string_view name) const {
+        for (const CullStats& c : culling)
+            if (c.pass == name) return &c;
+        return nullptr;
+    }
+};
+
+// One frame's culling statistics, for the renderer's history.
+struct CullFrame {
+    CullPath path = CullPath::None;
+    std::vector<CullStats> passes;
+    bool shadows_rendered = false;
+};
+
+struct RendererOptions {
+    std::uint32_t shadow_resolution = kDefaultShadowResolution;
+    // How load(scene) prepares textures; default: no disk cache, BC where supported.
+    TextureSettings textures;
+};
+
+class Renderer {
+public:
+    static constexpr std::uint32_t kFramesInFlight = 2;
+    static constexpr std::size_t kCullHistory = 240;
+
+    explicit Renderer(Context& context, const RendererOptions& options = {});
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Uploads `scene`, replacing the current one (freed once frames using it finish).
+    // Prepares its textures first, on this thread, with texture_settings().
+    void load(const Scene& scene, StreamPolicy policy = StreamPolicy::UsedByMaterials);
+    // The same with textures already prepared for `scene` (prepare_scene_textures()
+    // with context().info(), e.g. on a loader thread); only the upload happens here.
+    void load(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
+              StreamPolicy policy = StreamPolicy::UsedByMaterials);
+    const TextureSettings& texture_settings() const;
+    void set_texture_settings(const TextureSettings& settings);
+    void unload();
+    const GpuScene* scene() const;
+
+    // Renders one frame offscreen and waits for it. With `rgba` set, reads the
+    // image back as tightly packed sRGB-encoded RGBA8 rows, top row first.
+    FrameStats render(const RenderSettings& settings, std::vector<std::uint8_t>* rgba = nullptr);
+
+    // Culling statistics of the last frames whose results were read (render(),
+    // presented frames), oldest first: what the editor's culling dock charts.
+    const RingHistory<CullFrame>& cull_history() const;
+
+    ResourceManager& resources();
+    Context& context();
+    // Bytes of the renderer's own images (offscreen target, depth, shadow map).
+    std::uint64_t render_target_bytes() const;
+
+    class Impl; // renderer_impl.h
+
+private:
+    friend class Presenter; // records swapchain frames through Impl
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace sherpa::gpu

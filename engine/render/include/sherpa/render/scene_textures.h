@@ -1,0 +1,93 @@
+#pragma once
+// A scene's textures on the GPU: the texture pipeline's prepared levels (BC7 sRGB
+// for colour, BC7 UNORM for data, BC5 for normal maps, or RGBA8 where the device
+// cannot sample BC) uploaded as they are with their full mip chains through one
+// staging batch, registered in the bindless table, plus the sampler objects the
+// glTF samplers map to. Preparation (decode, mips, compression, cache) is CPU
+// work that may run on any thread before the upload: see prepare_scene_textures().
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <sherpa/gpu/bindless.h>
+#include <sherpa/gpu/context.h>
+#include <sherpa/gpu/resources.h>
+#include <sherpa/render/load_settings.h>
+#include <sherpa/scene/scene.h>
+#include <sherpa/texture/texture_pipeline.h>
+
+namespace sherpa::gpu {
+
+// Pipeline options for `device`: block-compressed where the device can sample
+// BC7/BC5 and `settings` does not force RGBA8.
+tex::PipelineOptions texture_pipeline_options(const DeviceInfo& device,
+                                              const TextureSettings& settings);
+
+// Runs the texture pipeline for `scene` on the calling thread (no Vulkan calls:
+// safe on a worker thread). Adds a warning naming the device when it cannot
+// sample BC formats.
+std::shared_ptr<const tex::PreparedTextureSet>
+prepare_scene_textures(const Scene& scene, const DeviceInfo& device,
+                       const TextureSettings& settings);
+
+// One prepared texture on the GPU.
+struct GpuTexture {
+    ImageHandle image;
+    std::uint32_t slot = kTextureSentinel; // bindless slot; sentinel when it failed
+    std::uint32_t mip_levels = 0;
+    std::uint64_t bytes = 0; // device memory of the image
+};
+
+class SceneTextures {
+public:
+    // Uploads every texture of `prepared` (prepared for `scene`) that did not fail.
+    SceneTextures(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+                  std::shared_ptr<const tex::PreparedTextureSet> prepared,
+                  MissingTextures missing = MissingTextures::Checker);
+    ~SceneTextures();
+    SceneTextures(const SceneTextures&) = delete;
+    SceneTextures& operator=(const SceneTextures&) = delete;
+
+    // The pipeline's records (state, hash, PSNR, timings, bytes) for inspection;
+    // gpu()[i] is records()[i] on the GPU. Levels may have been released after upload.
+    const tex::PreparedTextureSet& prepared() const { return *prepared_; }
+    const std::vector<tex::PreparedTexture>& records() const { return prepared_->textures; }
+    const std::vector<GpuTexture>& gpu() const { return gpu_; }
+    std::span<const std::uint32_t> slots() const { return slots_; }
+
+    // The material's GPU record with texture fields resolved to bindless slots, absent
+    // textures to the default textures, and failed (missing, undecodable) ones as
+    // MissingTextures says.
+    GPUMaterialData material(const MaterialInstance& material) const;
+    // Bindless slot of glTF texture `texture` read in `role`, or kTextureSentinel.
+    std::uint32_t slot(std::int32_t texture, TextureRole role) const;
+
+    std::uint64_t gpu_bytes() const { return bytes_; } // device memory of all images
+    std::size_t image_count() const;
+    const std::vector<std::string>& warnings() const { return warnings_; }
+
+private:
+    void upload(const Scene& scene);
+    void release();
+
+    ResourceManager& resources_;
+    BindlessTable& table_;
+    std::shared_ptr<const tex::PreparedTextureSet> prepared_;
+    MissingTextures missing_;
+    std::vector<GpuTexture> gpu_;
+    std::vector<std::uint32_t> slots_; // per record; sentinel where failed
+    // Textures sharing an image with another texture but not its sampler get a slot
+    // of their own (same view): (glTF texture, role) -> slot.
+    std::map<std::pair<std::int32_t, TextureRole>, std::uint32_t> extra_slots_;
+    std::vector<SamplerHandle> samplers_;
+    std::uint64_t bytes_ = 0;
+    std::vector<std::string> warnings_;
+};
+
+} // namespace sherpa::gpu

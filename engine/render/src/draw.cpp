@@ -1,0 +1,196 @@
+#include "draw.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace sherpa::gpu {
+
+namespace {
+
+void push(VkCommandBuffer cmd, VkPipelineLayout layout, const GPUPushConstants& pc) {
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(pc), &pc);
+}
+
+// Draw of one group limited by `cull`, tallied into `tally`; false: nothing to draw.
+bool draw_culled(FrameContext& f, std::size_t group, const PassCull& cull, GPUPushConstants& pc,
+                 CullStats& tally) {
+    const DrawGroup& g = f.scene->groups()[group];
+    const GpuMesh& mesh = f.scene->meshes()[g.mesh];
+    const VkPipelineLayout layout = f.pipelines.layout();
+    if (cull.gpu && f.culling->group_batch[group] != ~0u) {
+        const std::uint32_t batch = f.culling->group_batch[group];
+        const GpuCuller& culler = *cull.gpu;
+        pc.instance_ids = culler.instance_ids();
+        push(f.cmd, layout, pc);
+        vkCmdDrawIndexedIndirectCount(f.cmd, culler.draws(),
+                                      batch * sizeof(VkDrawIndexedIndirectCommand),
+                                      culler.draw_counts(), batch * sizeof(std::uint32_t), 1,
+                                      sizeof(VkDrawIndexedIndirectCommand));
+        ++tally.draw_calls; // triangles: from the indirect commands read back
+        return true;
+    }
+    const std::uint32_t n = cull.group_visible[group];
+    if (n == 0) return false;
+    pc.instance_ids = f.resources.get(f.slot.cull_ids).address + cull.ids_offset;
+    push(f.cmd, layout, pc);
+    vkCmdDrawIndexed(f.cmd, mesh.index_count, n, mesh.first_index, 0, g.first_instance);
+    tally.triangles += std::uint64_t{n} * mesh.index_count / 3;
+    ++tally.draw_calls;
+    return true;
+}
+
+// The pipeline for `mesh` (bound when it differs from `bound`), the group's face
+// culling (back faces unless double sided) and winding, and the mesh into `pc`.
+void set_group_state(FrameContext& f, const DrawPipeline& pipeline, const DrawGroup& g,
+                     const GpuMesh& mesh, VkPipeline& bound, GPUPushConstants& pc) {
+    if (const VkPipeline want = f.pipelines.resolve(pipeline, mesh.flags); want != bound) {
+        vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, want);
+        bound = want;
+    }
+    vkCmdSetCullMode(f.cmd, g.double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
+    vkCmdSetFrontFace(f.cmd,
+                      g.mirrored ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
+    set_mesh(pc, mesh, g.material);
+}
+
+} // namespace
+
+void set_viewport(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height) {
+    // Negative height flips Y so clip-space +Y is up (see camera.h).
+    VkViewport vp{0.0f, float(height), float(width), -float(height), 0.0f, 1.0f};
+    VkRect2D scissor{{0, 0}, {width, height}};
+    vkCmdSetViewport(cmd, 0, 1, &vp);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
+void set_depth(VkCommandBuffer cmd, VkCompareOp op, bool write, float bias_constant,
+               float bias_slope) {
+    vkCmdSetDepthCompareOp(cmd, op);
+    vkCmdSetDepthWriteEnable(cmd, write ? VK_TRUE : VK_FALSE);
+    const bool bias = bias_constant != 0.0f || bias_slope != 0.0f;
+    vkCmdSetDepthBiasEnable(cmd, bias ? VK_TRUE : VK_FALSE);
+    if (bias) vkCmdSetDepthBias(cmd, bias_constant, 0.0f, bias_slope);
+}
+
+void set_mesh(GPUPushConstants& pc, const GpuMesh& mesh, std::uint32_t material) {
+    pc.positions = mesh.stream[std::size_t(VertexAttribute::Position)];
+    pc.normals = mesh.stream[std::size_t(VertexAttribute::Normal)];
+    pc.tangents = mesh.stream[std::size_t(VertexAttribute::Tangent)];
+    pc.uv0 = mesh.stream[std::size_t(VertexAttribute::TexCoord0)];
+    pc.uv1 = mesh.stream[std::size_t(VertexAttribute::TexCoord1)];
+    pc.colors = mesh.stream[std::size_t(VertexAttribute::Color0)];
+    pc.material_id = material;
+    pc.mesh_flags = mesh.flags;
+}
+
+void draw_groups(FrameContext& f, DrawPipeline pipeline, AlphaMode alpha, const DrawView& view,
+                 CullStats& tally) {
+    if (!f.scene) return;
+    VkCommandBuffer cmd = f.cmd;
+    Pipelines& p = f.pipelines;
+    VkPipeline bound = VK_NULL_HANDLE;
+    GPUPushConstants pc = f.slot.push_base;
+    pc.cascade = view.cascade;
+    for (std::size_t gi = 0; gi < f.scene->groups().size(); ++gi) {
+        const DrawGroup& g = f.scene->groups()[gi];
+        if (g.alpha != alpha) continue;
+        const GpuMesh& mesh = f.scene->meshes()[g.mesh];
+        // Groups are sorted by mesh: consecutive groups mostly share a pipeline.
+        set_group_state(f, pipeline, g, mesh, bound, pc);
+        if (view.cull) {
+            if (draw_culled(f, gi, *view.cull, pc, tally)) ++f.slot.draw_calls;
+            continue;
+        }
+        push(cmd, p.layout(), pc);
+        vkCmdDrawIndexed(cmd, mesh.index_count, g.instance_count, mesh.first_index, 0,
+                         g.first_instance);
+        ++f.slot.draw_calls;
+        ++tally.draw_calls;
+        tally.triangles += std::uint64_t{g.instance_count} * (mesh.index_count / 3);
+    }
+}
+
+void draw_blended(FrameContext& f, DrawPipeline pipeline, CullStats& tally) {
+    if (!f.scene) return;
+    VkCommandBuffer cmd = f.cmd;
+    Pipelines& p = f.pipelines;
+    // Back to front by the view depth of each instance's bounds centre.
+    struct Item {
+        float depth;
+        std::uint32_t group, instance;
+    };
+    std::vector<Item> items;
+    const auto& groups = f.scene->groups();
+    for (std::uint32_t gi = 0; gi < groups.size(); ++gi) {
+        if (groups[gi].alpha != AlphaMode::Blend) continue;
+        for (std::uint32_t k = 0; k < groups[gi].instance_count; ++k) {
+            const std::uint32_t inst = groups[gi].first_instance + k;
+            const glm::vec3 c = f.scene->instance_bounds()[inst].center();
+            items.push_back({(f.slot.camera.view * glm::vec4(c, 1.0f)).z, gi, inst});
+        }
+    }
+    if (items.empty()) return;
+    std::stable_sort(items.begin(), items.end(),
+                     [](const Item& a, const Item& b) { return a.depth < b.depth; });
+    VkPipeline bound = VK_NULL_HANDLE;
+    GPUPushConstants pc = f.slot.push_base;
+    pc.cascade = kNoCascade;
+    const PassCull* cull = f.slot.culling.camera();
+    for (const Item& it : items) {
+        if (cull && !cull->visible[it.instance]) continue;
+        const DrawGroup& g = groups[it.group];
+        const GpuMesh& mesh = f.scene->meshes()[g.mesh];
+        set_group_state(f, pipeline, g, mesh, bound, pc);
+        push(cmd, p.layout(), pc);
+        vkCmdDrawIndexed(cmd, mesh.index_count, 1, mesh.first_index, 0, it.instance);
+        ++f.slot.draw_calls;
+        ++tally.draw_calls;
+        tally.triangles += mesh.index_count / 3;
+    }
+}
+
+void draw_lines(FrameContext& f, const std::vector<GPULineVertex>& lines) {
+    if (lines.empty()) return;
+    FrameSlot& slot = f.slot;
+    // Several line draws per frame: each gets its own range of the frame's buffer.
+    const VkDeviceSize bytes = lines.size() * sizeof(GPULineVertex);
+    VkDeviceSize offset = slot.lines_used;
+    if (offset + bytes > slot.lines_capacity) {
+        // Earlier draws of this frame keep the old buffer: destruction is deferred.
+        f.resources.destroy(slot.lines);
+        slot.lines_capacity = std::max<VkDeviceSize>(2 * (offset + bytes), 4096);
+        slot.lines = f.resources.create_buffer(
+            {slot.lines_capacity,
+             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+             MemoryUsage::Upload, "overlay lines"});
+        offset = 0;
+    }
+    const Buffer& buf = f.resources.get(slot.lines);
+    std::memcpy(static_cast<std::uint8_t*>(buf.mapped) + offset, lines.data(), bytes);
+    slot.lines_used = offset + bytes;
+    GPUPushConstants pc = slot.push_base;
+    pc.lines = buf.address + offset;
+    vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                      f.pipelines.get(PipelineId::BoxLines));
+    push(f.cmd, f.pipelines.layout(), pc);
+    vkCmdDraw(f.cmd, static_cast<std::uint32_t>(lines.size()), 1, 0, 0);
+    ++slot.draw_calls;
+}
+
+void append_box(std::vector<GPULineVertex>& out, const Aabb& b, glm::vec4 color) {
+    if (!b.valid()) return;
+    auto corner = [&](int i) {
+        return glm::vec4((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
+                         (i & 4) ? b.max.z : b.min.z, 1.0f);
+    };
+    // The 12 edges join corners that differ in exactly one coordinate bit.
+    for (int i = 0; i < 8; ++i)
+        for (int bit = 1; bit < 8; bit <<= 1)
+            if (!(i & bit)) {
+                out.push_back({corner(i), color});
+                out.push_back({corner(i | bit), color});
+            }
+}
+
+} // namespace sherpa::gpu

@@ -1,0 +1,40 @@
+#pragma once
+// Draw helpers the passes share: dynamic state, the draw-group loops (culled or
+// not), back-to-front blended draws and CPU-built line lists.
+#include "frame_context.h"
+
+#include <vector>
+
+namespace sherpa::gpu {
+
+// Whose draws these are: the camera, or one shadow cascade; with the culling that
+// limits them (null: every instance).
+struct DrawView {
+    std::uint32_t cascade = kNoCascade; // the shader's cascade index (push constant)
+    PassCull* cull = nullptr;
+};
+inline DrawView camera_view(FrameContext& f) {
+    return {kNoCascade, f.slot.culling.camera()};
+}
+inline DrawView cascade_view(FrameContext& f, std::uint32_t c) {
+    return {c, f.slot.culling.cascade(c)};
+}
+
+void set_viewport(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height);
+void set_depth(VkCommandBuffer cmd, VkCompareOp op, bool write, float bias_constant = 0.0f,
+               float bias_slope = 0.0f);
+// The mesh's streams and flags and the material, into `pc`.
+void set_mesh(GPUPushConstants& pc, const GpuMesh& mesh, std::uint32_t material);
+
+// Every draw group of `alpha`, single-sided ones with back faces culled; draws and
+// triangles go to `tally`.
+void draw_groups(FrameContext& f, DrawPipeline pipeline, AlphaMode alpha, const DrawView& view,
+                 CullStats& tally);
+// Blended instances back to front, one draw each; draws and triangles go to `tally`.
+void draw_blended(FrameContext& f, DrawPipeline pipeline, CullStats& tally);
+// A line list in world space, in its own range of the frame's line buffer.
+void draw_lines(FrameContext& f, const std::vector<GPULineVertex>& lines);
+// The 12 edges of a world box as a line list.
+void append_box(std::vector<GPULineVertex>& out, const Aabb& box, glm::vec4 color);
+
+} // namespace sherpa::gpu

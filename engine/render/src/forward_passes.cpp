@@ -1,0 +1,42 @@
+// The camera's surface passes, inside the frame's dynamic-rendering pass: the
+// benchmark floor, the depth prepass and forward shading per alpha mode.
+#include "draw.h"
+#include "passes.h"
+
+namespace sherpa::gpu {
+
+void FloorPass::record(FrameContext& f) {
+    if (!f.settings.floor_only) return;
+    // Same triangles, one constant colour: what the rasterizer costs by itself.
+    set_depth(f.cmd, VK_COMPARE_OP_GREATER, true);
+    const DrawPipeline floor{f.pipelines.get(PipelineId::Floor)};
+    for (AlphaMode a : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend})
+        draw_groups(f, floor, a, camera_view(f), f.slot.culling.camera_stats());
+}
+
+void DepthPrepass::record(FrameContext& f) {
+    if (f.settings.floor_only || !f.prepass) return;
+    set_depth(f.cmd, VK_COMPARE_OP_GREATER, true);
+    const Pipelines& p = f.pipelines;
+    draw_groups(f, DrawPipeline{p.get(PipelineId::PrepassOpaque)}, AlphaMode::Opaque,
+                camera_view(f), f.slot.prepass);
+    draw_groups(f, DrawPipeline{p.get(PipelineId::PrepassMask)}, AlphaMode::Mask, camera_view(f),
+                f.slot.prepass);
+}
+
+void ForwardPass::record(FrameContext& f) {
+    if (f.settings.floor_only) return;
+    const auto view = static_cast<std::uint32_t>(f.settings.view);
+    CullStats& tally = f.slot.culling.camera_stats();
+    if (alpha_ == AlphaMode::Blend) {
+        set_depth(f.cmd, VK_COMPARE_OP_GREATER, false);
+        draw_blended(f, DrawPipeline{VK_NULL_HANDLE, view, true}, tally);
+        return;
+    }
+    // After the prepass only the visible surface passes: shade each pixel once.
+    set_depth(f.cmd, f.prepass ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_GREATER,
+              !f.prepass);
+    draw_groups(f, DrawPipeline{VK_NULL_HANDLE, view, false}, alpha_, camera_view(f), tally);
+}
+
+} // namespace sherpa::gpu

@@ -1,0 +1,124 @@
+#pragma once
+// What one frame's passes share (private to the render layer): the per-frame-in-
+// flight resources (FrameSlot), the per-scene culling data (SceneCulling), and the
+// FrameContext every pass records from. A pass is a class with
+// `void record(FrameContext&)`; the Renderer orders them (renderer_impl.h).
+#include "pipelines.h"
+
+#include <sherpa/gpu/commands.h>
+#include <sherpa/render/camera.h>
+#include <sherpa/render/gpu_culling.h>
+#include <sherpa/render/gpu_structs.h>
+#include <sherpa/render/renderer.h>
+#include <sherpa/scene/culling_passes.h>
+#include <sherpa/scene/shadow_cascades.h>
+
+namespace sherpa::gpu {
+
+// A colour image the caller owns, in `layout` before the frame and left in
+// `final_layout` after it.
+struct RenderTarget {
+    VkImage image = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    std::uint32_t width = 0, height = 0;
+    VkImageLayout final_layout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+};
+
+// Timestamps written between passes; pass i spans [i, i + 1].
+inline constexpr const char* kPassNames[] = {"shadows",    "depth_prepass", "opaque",
+                                             "alpha_mask", "alpha_blend",   "overlays"};
+inline constexpr std::uint32_t kTimestampCount = std::size(kPassNames) + 1;
+
+// Culled views a frame can have: the camera and each shadow cascade in use.
+inline constexpr std::uint32_t kMaxCullPasses = 1 + kShadowCascades;
+
+// One culled view of a frame (the camera or one shadow cascade).
+struct PassCull {
+    Frustum frustum;
+    std::vector<std::uint8_t> visible;        // per GPU instance, where the CPU test ran
+    std::vector<std::uint32_t> group_visible; // per draw group (CPU test)
+    bool cpu_tested = false;                  // `visible` holds every instance of the pass
+    CullStats stats;
+    VkDeviceSize ids_offset = 0; // CPU path: this view's region of FrameSlot::cull_ids
+    GpuCuller* gpu = nullptr;    // GPU path: this view's culler
+    VkDeviceSize readback = 0;   // GPU path: offset of this view in FrameSlot::cull_readback
+};
+
+// The culling of one frame: the camera, then the cascades re-rendered this frame.
+struct FrameCulling {
+    CullPath path = CullPath::None;
+    bool check = false;
+    std::vector<PassCull> views; // [camera, cascade 0, ..]: see camera() and cascade()
+    std::uint32_t count = 0;     // views with statistics this frame
+    CullStats unused;            // tally of draws no view counts (no scene)
+    // The culling that limits the camera's draws, or null when culling is off.
+    PassCull* camera() { return path != CullPath::None && count > 0 ? &views[0] : nullptr; }
+    // The same for shadow cascade `c`: null when off or the cascade is not culled.
+    PassCull* cascade(std::uint32_t c) {
+        return path != CullPath::None && 1 + c < count ? &views[1 + c] : nullptr;
+    }
+    // Where the draws of the camera / cascade `c` are tallied.
+    CullStats& camera_stats() { return count > 0 ? views[0].stats : unused; }
+    CullStats& cascade_stats(std::uint32_t c) { return views.at(1 + c).stats; }
+};
+
+// Resources of one frame in flight.
+struct FrameSlot {
+    explicit FrameSlot(Context& context) : recorder(context) {}
+    CommandRecorder recorder;
+    BufferHandle frame_data;              // GPUFrameData, host-visible uniform buffer
+    VkDescriptorSet set = VK_NULL_HANDLE; // set 1: frame data + the scene's materials
+    std::uint64_t set_generation = ~0ull; // scene generation the set's materials belong to
+    BufferHandle lines;                   // overlay line vertices, host-visible, grown on demand
+    VkDeviceSize lines_capacity = 0, lines_used = 0; // lines_used: bytes written this frame
+    UniqueQueryPool timestamps, statistics;
+    std::uint64_t submission = 0; // timeline value of the last frame recorded here
+    bool has_results = false;
+    bool shadows_rendered = false;
+    std::uint64_t draw_calls = 0;
+    CameraView camera;
+    GPUPushConstants push_base{}; // scene-wide addresses for this frame
+    ShadowCascades cascades;      // fitted this frame (see frame_data.cpp)
+    FrameCulling culling;         // see culling_pass.cpp
+    CullStats prepass;            // draws and triangles of the depth prepass
+    BufferHandle cull_ids;        // CPU path: compacted ids per view, host-visible
+    VkDeviceSize cull_ids_capacity = 0;
+    BufferHandle cull_readback; // GPU path: indirect commands (+ visible flags when checking)
+    VkDeviceSize cull_readback_capacity = 0;
+    UniqueQueryPool cull_timestamps; // two per view around the GPU culling dispatch
+    bool history_pushed = false;
+};
+
+// Culling data of the loaded scene.
+struct SceneCulling {
+    BufferHandle identity;             // gl_InstanceIndex -> itself, per scene
+    BoxesSoA boxes;                    // instance bounds, GPU instance order
+    std::vector<std::uint8_t> invalid; // per GPU instance: box not valid (never culled)
+    std::vector<std::uint8_t> blended; // per GPU instance: alpha mode BLEND
+    std::uint32_t casters = 0;         // instances not blended (the shadow passes)
+    // GPU path, built on first use: one culler per view (camera, each cascade), all
+    // over the non-blended groups, one batch per group.
+    std::vector<std::unique_ptr<GpuCuller>> gpu;
+    std::vector<std::uint32_t> group_batch; // draw group -> GPU batch (~0u: blended)
+};
+
+// Everything a pass records from. References live for one record_frame() call.
+struct FrameContext {
+    VkCommandBuffer cmd;
+    FrameSlot& slot;
+    std::uint32_t slot_index; // which frame in flight: the GPU cullers' block
+    Pipelines& pipelines;
+    const RenderSettings& settings;
+    const RenderTarget& target;
+    Context& context;
+    ResourceManager& resources;
+    const GpuScene* scene;      // null: nothing loaded
+    SceneCulling* culling;      // null: nothing loaded
+    const Scene& lighting;      // bounds, lights and cameras of the loaded scene
+    std::uint32_t cascades = 0; // shadow cascades re-rendered this frame (0: reused or none)
+    bool prepass = false;       // the depth prepass runs this frame
+    float aspect() const { return float(target.width) / float(target.height); }
+};
+
+} // namespace sherpa::gpu

@@ -1,0 +1,83 @@
+// Per-frame constants: camera, lights (scene lights or the default sun), shadow
+// cascades, debug view. Decides whether the cached shadow cascades are still valid.
+#include "renderer_impl.h"
+
+#include <sherpa/render/gpu_structs.h>
+#include <sherpa/scene/shadow_cascades.h>
+
+#include <algorithm>
+#include <cstring>
+
+namespace sherpa::gpu {
+
+void Renderer::Impl::write_frame_data(FrameContext& frame) {
+    FrameSlot& slot = frame.slot;
+    const RenderSettings& settings = frame.settings;
+    const Scene& info = lighting_;
+    slot.camera = resolve_camera(settings.camera, info, frame.aspect());
+    GPUFrameData f{};
+    f.view = slot.camera.view;
+    f.proj = slot.camera.proj;
+    f.view_proj = slot.camera.proj * slot.camera.view;
+    f.camera_position = glm::vec4(slot.camera.position, 1.0f);
+
+    // The first directional light is the main (shadowed) one; with no scene lights
+    // at all a default sun stands in.
+    bool have_sun = false;
+    glm::vec3 sun_dir(0.0f, -1.0f, 0.0f);
+    std::uint32_t count = 0;
+    for (const PlacedLight& pl : info.placed_lights) {
+        if (pl.light >= info.lights.size()) continue;
+        const Light& l = info.lights[pl.light];
+        if (l.type == LightType::Directional && !have_sun) {
+            have_sun = true;
+            sun_dir = glm::normalize(pl.direction);
+            f.sun_radiance = glm::vec4(l.color * l.intensity, 0.0f);
+            continue;
+        }
+        if (count >= kMaxLights) continue; // beyond the fixed array: not lit (documented limit)
+        GPULight& g = f.lights[count++];
+        g.position_range = glm::vec4(pl.position, l.range);
+        g.direction_type =
+            glm::vec4(glm::normalize(pl.direction), l.type == LightType::Directional ? 0.0f
+                                                    : l.type == LightType::Point     ? 1.0f
+                                                                                     : 2.0f);
+        g.color_intensity = glm::vec4(l.color, l.intensity);
+        g.cone = glm::vec4(std::cos(l.outer_cone), std::cos(l.inner_cone), 0.0f, 0.0f);
+    }
+    if (info.placed_lights.empty()) {
+        have_sun = true;
+        sun_dir = glm::normalize(settings.sun_direction);
+        f.sun_radiance = glm::vec4(glm::vec3(settings.sun_intensity), 0.0f);
+    }
+    f.sun_direction = glm::vec4(sun_dir, 0.0f);
+    f.ambient = glm::vec4(glm::vec3(settings.ambient), 0.0f);
+
+    std::uint32_t cascades = 0;
+    frame.cascades = 0;
+    slot.cascades = ShadowCascades{};
+    if (have_sun && settings.shadows && !settings.floor_only && scene &&
+        settings.view == DebugView::Lit) {
+        // The one cascade fit (scene layer), shared with `sherpa-cli cull`.
+        const ShadowCascades c = fit_shadow_cascades(
+            cascade_camera(slot.camera), info.bounds, sun_dir,
+            std::min(settings.cascades, kShadowCascades), options.shadow_resolution);
+        slot.cascades = c;
+        cascades = c.count;
+        for (std::uint32_t i = 0; i < c.count; ++i) f.shadow_view_proj[i] = c.view_proj[i];
+        f.cascade_splits = c.splits;
+        f.cascade_texel = c.texel;
+        f.sun_direction.w = c.count > 0 ? 1.0f : 0.0f;
+        if (shadows_.needs_render(c, scene_generation_, settings.cache_shadows))
+            frame.cascades = c.count;
+    }
+    // Every filtered fetch is expensive on a CPU rasterizer: one 2x2 PCF tap there.
+    const std::uint32_t taps = context.info().is_cpu() ? 1u : 4u;
+    f.params = glm::uvec4(static_cast<std::uint32_t>(settings.view), count, cascades, taps);
+    const float diagonal = info.bounds.valid() ? glm::length(info.bounds.extent()) : 1.0f;
+    f.overlay = glm::vec4(settings.glyph_length > 0.0f ? settings.glyph_length : 0.02f * diagonal,
+                          settings.uv_checker_density, 0.0f, 0.0f);
+    std::memcpy(resources->get(slot.frame_data).mapped, &f, sizeof(f));
+}
+
+} // namespace sherpa::gpu

@@ -1,0 +1,290 @@
+#include <sherpa/gpu/gpu_error.h>
+#include <sherpa/gpu/upload.h>
+#include <sherpa/render/gpu_scene.h>
+#include <sherpa/render/gpu_structs.h>
+#include <sherpa/scene/usage_report.h>
+
+#include <algorithm>
+#include <cstring>
+#include <numeric>
+#include <tuple>
+
+namespace sherpa::gpu {
+
+namespace {
+
+constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                        VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
+                                        VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+
+std::uint32_t provenance_bits(Provenance p) {
+    switch (p) {
+    case Provenance::Authored:
+        return 0;
+    case Provenance::Generated:
+        return 1;
+    case Provenance::Defaulted:
+        return 2;
+    }
+    return 2;
+}
+
+// One attribute of the interleaved CPU vertex as a tightly packed stream.
+void append_stream(std::vector<std::uint8_t>& out, const Mesh& mesh, VertexAttribute a) {
+    const std::size_t at = out.size();
+    const std::uint32_t stride = stream_stride(a);
+    out.resize(at + std::size_t(stride) * mesh.vertices.size());
+    std::uint8_t* dst = out.data() + at;
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i, dst += stride) {
+        const Vertex& v = mesh.vertices[i];
+        const void* src = nullptr;
+        switch (a) {
+        case VertexAttribute::Position:
+            src = &v.position;
+            break;
+        case VertexAttribute::Normal:
+            src = &v.normal;
+            break;
+        case VertexAttribute::Tangent:
+            src = &v.tangent;
+            break;
+        case VertexAttribute::TexCoord0:
+            src = &v.uv0;
+            break;
+        case VertexAttribute::TexCoord1:
+            src = &v.uv1;
+            break;
+        case VertexAttribute::Color0:
+            src = &mesh.colors[i];
+            break;
+        }
+        std::memcpy(dst, src, stride);
+    }
+}
+
+GPUTextureTransform uv_transform(const TextureSlot& slot) {
+    const glm::mat3 m = slot.transform.present ? slot.transform.matrix() : glm::mat3(1.0f);
+    GPUTextureTransform t;
+    // Rows of the 2x3 affine part; glm is column-major (m[column][row]).
+    t.row0 = glm::vec4(m[0][0], m[1][0], m[2][0], float(slot.tex_coord));
+    t.row1 = glm::vec4(m[0][1], m[1][1], m[2][1], 0.0f);
+    return t;
+}
+
+} // namespace
+
+GpuScene::GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+                   std::shared_ptr<const tex::PreparedTextureSet> textures, StreamPolicy policy,
+                   MissingTextures missing)
+    : resources_(resources), table_(table), policy_(policy) {
+    upload(scene, std::move(textures), missing);
+}
+
+GpuScene::GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+                   const TextureSettings& texture_settings, StreamPolicy policy)
+    : resources_(resources), table_(table), policy_(policy) {
+    auto prepared = std::const_pointer_cast<tex::PreparedTextureSet>(
+        prepare_scene_textures(scene, resources.context().info(), texture_settings));
+    upload(scene, prepared, texture_settings.missing);
+    // Nobody else holds this set: the levels are on the GPU now, keep the records only.
+    for (tex::PreparedTexture& t : prepared->textures) decltype(t.levels)().swap(t.levels);
+}
+
+void GpuScene::upload(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
+                      MissingTextures missing) {
+    try {
+        textures_ = std::make_unique<SceneTextures>(resources_, table_, scene, std::move(textures),
+                                                    missing);
+        memory_.textures = textures_->gpu_bytes();
+        upload_geometry(scene);
+        upload_materials(scene);
+        upload_instances(scene);
+    } catch (...) {
+        resources_.destroy(vertices_);
+        resources_.destroy(indices_);
+        resources_.destroy(materials_);
+        resources_.destroy(material_extras_);
+        resources_.destroy(instances_);
+        throw;
+    }
+}
+
+GpuScene::~GpuScene() {
+    resources_.destroy(vertices_);
+    resources_.destroy(indices_);
+    resources_.destroy(materials_);
+    resources_.destroy(material_extras_);
+    resources_.destroy(instances_);
+}
+
+void GpuScene::upload_geometry(const Scene& scene) {
+    std::vector<bool> instanced(scene.meshes.size(), false);
+    for (const MeshInstance& inst : scene.instances)
+        if (inst.mesh_id < scene.meshes.size()) instanced[inst.mesh_id] = true;
+
+    std::vector<std::uint8_t> streams;
+    std::vector<std::uint32_t> indices;
+    std::vector<std::array<VkDeviceSize, kVertexAttributeCount>> offsets(scene.meshes.size());
+    meshes_.resize(scene.meshes.size());
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+        const Mesh& mesh = scene.meshes[m];
+        GpuMesh& g = meshes_[m];
+        g.material = mesh.material_id;
+        g.flags = provenance_bits(mesh.provenance_of(VertexAttribute::Tangent))
+                      << kTangentProvenanceShift |
+                  provenance_bits(mesh.provenance_of(VertexAttribute::Normal))
+                      << kNormalProvenanceShift;
+        if (!instanced[m] || mesh.vertices.empty() || mesh.indices.empty()) continue;
+        if (mesh.material_id >= scene.materials.size())
+            throw GpuError("mesh " + std::to_string(m) + " names material " +
+                           std::to_string(mesh.material_id) + " of " +
+                           std::to_string(scene.materials.size()));
+
+        // What shading reads; debug views add every authored or generated stream.
+        std::array<bool, kVertexAttributeCount> upload =
+            attributes_used(scene.materials[mesh.material_id], mesh);
+        if (policy_ == StreamPolicy::AllPresent)
+            for (VertexAttribute a : kAllVertexAttributes)
+                if (mesh.provenance_of(a) != Provenance::Defaulted) upload[std::size_t(a)] = true;
+        upload[std::size_t(VertexAttribute::Position)] = true; // every pass reads positions
+        if (mesh.colors.size() != mesh.vertices.size())
+            upload[std::size_t(VertexAttribute::Color0)] = false;
+
+        for (VertexAttribute a : kAllVertexAttributes) {
+            const std::size_t ai = std::size_t(a);
+            offsets[m][ai] = ~VkDeviceSize(0);
+            if (!upload[ai]) continue;
+            streams.resize((streams.size() + 15) & ~std::size_t(15)); // 16-byte aligned streams
+            offsets[m][ai] = streams.size();
+            append_stream(streams, mesh, a);
+            g.flags |= 1u << ai;
+        }
+        g.first_index = static_cast<std::uint32_t>(indices.size());
+        g.index_count = static_cast<std::uint32_t>(mesh.indices.size());
+        g.vertex_count = static_cast<std::uint32_t>(mesh.vertices.size());
+        for (std::uint32_t i : mesh.indices)
+            if (i >= mesh.vertices.size())
+                throw GpuError("mesh " + std::to_string(m) + " has index " + std::to_string(i) +
+                               " past its " + std::to_string(mesh.vertices.size()) + " vertices");
+        indices.insert(indices.end(), mesh.indices.begin(), mesh.indices.end());
+        memory_.unified_vertex_bytes += std::uint64_t(sizeof(Vertex)) * mesh.vertices.size() +
+                                        (mesh.colors.empty() ? 0 : 16ull * mesh.colors.size());
+    }
+
+    UploadBatch batch(resources_);
+    if (!streams.empty()) {
+        vertices_ = resources_.create_buffer(
+            {streams.size(), kStorage, MemoryUsage::DeviceLocal, "vertex streams"});
+        batch.upload_buffer(vertices_, 0, streams.data(), streams.size());
+        const VkDeviceAddress base = resources_.get(vertices_).address;
+        for (std::size_t m = 0; m < meshes_.size(); ++m)
+            for (std::size_t a = 0; a < kVertexAttributeCount; ++a)
+                if (meshes_[m].flags & (1u << a)) meshes_[m].stream[a] = base + offsets[m][a];
+    }
+    if (!indices.empty()) {
+        const VkDeviceSize bytes = indices.size() * sizeof(std::uint32_t);
+        indices_ = resources_.create_buffer(
+            {bytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+             MemoryUsage::DeviceLocal, "indices"});
+        batch.upload_buffer(indices_, 0, indices.data(), bytes);
+    }
+    batch.submit_and_wait();
+    memory_.vertex_streams = streams.size();
+    memory_.indices = indices.size() * sizeof(std::uint32_t);
+}
+
+void GpuScene::upload_materials(const Scene& scene) {
+    std::vector<GPUMaterialData> data;
+    std::vector<GPUMaterialExtra> extras;
+    for (const MaterialInstance& m : scene.materials) {
+        // Texture fields resolved to bindless slots, absent ones to the defaults.
+        data.push_back(textures_->material(m));
+        GPUMaterialExtra x{};
+        x.uv[kSlotBaseColor] = uv_transform(m.base_color);
+        x.uv[kSlotMetallicRoughness] = uv_transform(m.metallic_roughness);
+        x.uv[kSlotNormal] = uv_transform(m.normal);
+        x.uv[kSlotOcclusion] = uv_transform(m.occlusion);
+        x.uv[kSlotEmissive] = uv_transform(m.emissive);
+        x.unlit = m.unlit ? 1u : 0u;
+        extras.push_back(x);
+    }
+    if (data.empty()) { // keep the addresses valid for scenes without materials
+        data.push_back(to_gpu_material(MaterialInstance{}));
+        extras.push_back(GPUMaterialExtra{});
+    }
+    const VkDeviceSize bytes = data.size() * sizeof(GPUMaterialData);
+    const VkDeviceSize extra_bytes = extras.size() * sizeof(GPUMaterialExtra);
+    // Copied out too: the editor's material dock reads records back from this buffer.
+    materials_ = resources_.create_buffer({bytes, kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                           MemoryUsage::DeviceLocal, "materials"});
+    material_extras_ =
+        resources_.create_buffer({extra_bytes, kStorage, MemoryUsage::DeviceLocal, "material uv"});
+    UploadBatch batch(resources_);
+    batch.upload_buffer(materials_, 0, data.data(), bytes);
+    batch.upload_buffer(material_extras_, 0, extras.data(), extra_bytes);
+    batch.submit_and_wait();
+    memory_.materials = bytes + extra_bytes;
+}
+
+void GpuScene::upload_instances(const Scene& scene) {
+    struct Keyed {
+        std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, bool, bool>
+            key; // mesh, alpha, material, ds, mirror
+        std::uint32_t instance;
+    };
+    std::vector<Keyed> order;
+    for (std::uint32_t i = 0; i < scene.instances.size(); ++i) {
+        const MeshInstance& inst = scene.instances[i];
+        if (inst.mesh_id >= meshes_.size() || meshes_[inst.mesh_id].index_count == 0) continue;
+        const std::uint32_t material = scene.meshes[inst.mesh_id].material_id;
+        const MaterialInstance& m = scene.materials[material];
+        const bool mirrored = glm::determinant(glm::mat3(inst.world)) < 0.0f;
+        order.push_back(
+            {{inst.mesh_id, std::uint32_t(m.alpha_mode), material, m.double_sided, mirrored}, i});
+    }
+    std::stable_sort(order.begin(), order.end(),
+                     [](const Keyed& a, const Keyed& b) { return a.key < b.key; });
+
+    std::vector<GPUInstanceData> data;
+    for (const Keyed& k : order) {
+        const MeshInstance& inst = scene.instances[k.instance];
+        GPUInstanceData g{};
+        g.model = inst.world;
+        const glm::mat3 upper(inst.world);
+        // Degenerate (zero-scale) transforms have no inverse; their normals do not matter.
+        const glm::mat3 nm = std::abs(glm::determinant(upper)) > 1e-30f
+                                 ? glm::transpose(glm::inverse(upper))
+                                 : upper;
+        for (int c = 0; c < 3; ++c) g.normal_matrix[c] = glm::vec4(nm[c], 0.0f);
+        g.material = std::get<2>(k.key);
+        g.mesh = inst.mesh_id;
+        if (groups_.empty() ||
+            std::make_tuple(groups_.back().mesh, std::uint32_t(groups_.back().alpha),
+                            groups_.back().material, groups_.back().double_sided,
+                            groups_.back().mirrored) != k.key) {
+            DrawGroup grp;
+            grp.mesh = inst.mesh_id;
+            grp.alpha = AlphaMode(std::get<1>(k.key));
+            grp.material = std::get<2>(k.key);
+            grp.double_sided = std::get<3>(k.key);
+            grp.mirrored = std::get<4>(k.key);
+            grp.first_instance = static_cast<std::uint32_t>(data.size());
+            groups_.push_back(grp);
+        }
+        ++groups_.back().instance_count;
+        data.push_back(g);
+        instance_bounds_.push_back(inst.world_bounds);
+        scene_instances_.push_back(k.instance);
+        bounds_.expand(inst.world_bounds);
+        triangles_ += meshes_[inst.mesh_id].index_count / 3;
+    }
+    if (data.empty()) data.push_back(GPUInstanceData{}); // valid address even for empty scenes
+    const VkDeviceSize bytes = data.size() * sizeof(GPUInstanceData);
+    instances_ = resources_.create_buffer({bytes, kStorage, MemoryUsage::DeviceLocal, "instances"});
+    UploadBatch batch(resources_);
+    batch.upload_buffer(instances_, 0, data.data(), bytes);
+    batch.submit_and_wait();
+    memory_.instances = bytes;
+}
+
+} // namespace sherpa::gpu

@@ -1,0 +1,49 @@
+#include <sherpa/gpu/commands.h>
+#include <sherpa/gpu/context.h>
+#include <sherpa/render/gpu_scene.h>
+#include <sherpa/render/material_readback.h>
+#include <sherpa/render/renderer.h>
+
+#include <cstring>
+
+namespace sherpa::gpu {
+
+std::optional<MaterialReadback> read_material(Renderer& renderer, const Scene& scene,
+                                              int material) {
+    const GpuScene* gpu_scene = renderer.scene();
+    if (!gpu_scene || material < 0 || static_cast<std::size_t>(material) >= scene.materials.size())
+        return std::nullopt;
+    ResourceManager& resources = renderer.resources();
+    constexpr VkDeviceSize kSize = sizeof(GPUMaterialData);
+    BufferHandle staging = resources.create_buffer(
+        {kSize, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::Readback, "material readback"});
+    // One copy out of the device-local material array, waited on: a dock refresh, not a frame.
+    CommandRecorder recorder(renderer.context());
+    const VkCommandBuffer cmd = recorder.begin();
+    const VkBufferCopy region{static_cast<VkDeviceSize>(material) * kSize, 0, kSize};
+    vkCmdCopyBuffer(cmd, gpu_scene->materials_buffer(), resources.get(staging).buffer.get(), 1,
+                    &region);
+    resources.wait_for(recorder.submit(resources));
+    const Buffer& readback = resources.get(staging);
+    // Readback memory may be cached without coherence: make the GPU's writes visible.
+    const VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, nullptr,
+                                    readback.memory.get(), 0, VK_WHOLE_SIZE};
+    vkInvalidateMappedMemoryRanges(renderer.context().device(), 1, &range);
+    MaterialReadback out;
+    std::memcpy(&out.record, readback.mapped, kSize);
+    resources.destroy(staging);
+
+    // Every (texture, role) slot the scene registered, inverted.
+    for (std::size_t t = 0; t < scene.textures.size(); ++t)
+        for (TextureRole role : {kRoleColor, kRoleLinear, kRoleNormal}) {
+            const std::uint32_t slot =
+                gpu_scene->textures().slot(static_cast<std::int32_t>(t), role);
+            if (slot == kTextureSentinel) continue;
+            if (slot >= out.bindless_to_texture.size())
+                out.bindless_to_texture.resize(slot + 1, -1);
+            out.bindless_to_texture[slot] = static_cast<int>(t);
+        }
+    return out;
+}
+
+} // namespace sherpa::gpu

@@ -1,0 +1,190 @@
+#include "pipelines.h"
+#include <sherpa/gpu/gpu_error.h>
+#include <sherpa/gpu/vk_helpers.h>
+#include <sherpa/render/gpu_structs.h>
+
+#include "depth_mask_frag.h"
+#include "depth_vert.h"
+#include "flat_frag.h"
+#include "floor_frag.h"
+#include "forward_frag.h"
+#include "glyph_vert.h"
+#include "lines_vert.h"
+#include "mesh_vert.h"
+
+#include <span>
+#include <vector>
+
+namespace sherpa::gpu {
+
+namespace {
+
+UniqueShaderModule make_module(VkDevice device, std::span<const std::uint32_t> code) {
+    return create_shader_module(device, code, "vkCreateShaderModule");
+}
+
+struct PipelineDesc {
+    VkShaderModule vert = VK_NULL_HANDLE;
+    VkShaderModule frag = VK_NULL_HANDLE; // null: depth only
+    VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkPolygonMode polygon = VK_POLYGON_MODE_FILL;
+    bool color = true; // has the colour attachment (false: shadow rendering)
+    bool write_color = true;
+    bool blend = false;
+    const VkSpecializationInfo* frag_constants = nullptr;
+};
+
+UniquePipeline make_pipeline(VkDevice device, VkPipelineLayout layout, VkFormat color_format,
+                             const PipelineDesc& d) {
+    std::vector<VkPipelineShaderStageCreateInfo> stages;
+    auto stage = vk_init<VkPipelineShaderStageCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+    stage.pName = "main";
+    stage.stage = VK_SHADER_STAGE_VERTEX_BIT;
+    stage.module = d.vert;
+    stages.push_back(stage);
+    if (d.frag) {
+        stage.stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+        stage.module = d.frag;
+        stage.pSpecializationInfo = d.frag_constants;
+        stages.push_back(stage);
+    }
+    // Vertex pulling: no vertex input bindings at all.
+    auto vertex_input = vk_init<VkPipelineVertexInputStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
+    auto assembly = vk_init<VkPipelineInputAssemblyStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
+    assembly.topology = d.topology;
+    auto viewport = vk_init<VkPipelineViewportStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
+    viewport.viewportCount = 1;
+    viewport.scissorCount = 1;
+    auto raster = vk_init<VkPipelineRasterizationStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
+    raster.polygonMode = d.polygon;
+    raster.lineWidth = 1.0f;
+    auto multisample = vk_init<VkPipelineMultisampleStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
+    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    auto depth = vk_init<VkPipelineDepthStencilStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
+    depth.depthTestEnable = VK_TRUE; // compare op and writes are dynamic
+    VkPipelineColorBlendAttachmentState attachment{};
+    attachment.colorWriteMask = d.write_color
+                                    ? VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                          VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT
+                                    : 0;
+    if (d.blend) {
+        // glTF BLEND: straight alpha over what is behind.
+        attachment.blendEnable = VK_TRUE;
+        attachment.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+        attachment.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+        attachment.colorBlendOp = VK_BLEND_OP_ADD;
+        attachment.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+        attachment.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+        attachment.alphaBlendOp = VK_BLEND_OP_ADD;
+    }
+    auto blend = vk_init<VkPipelineColorBlendStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
+    blend.attachmentCount = d.color ? 1 : 0;
+    blend.pAttachments = &attachment;
+    const VkDynamicState dynamic_states[] = {
+        VK_DYNAMIC_STATE_VIEWPORT,          VK_DYNAMIC_STATE_SCISSOR,
+        VK_DYNAMIC_STATE_CULL_MODE,         VK_DYNAMIC_STATE_FRONT_FACE,
+        VK_DYNAMIC_STATE_DEPTH_COMPARE_OP,  VK_DYNAMIC_STATE_DEPTH_WRITE_ENABLE,
+        VK_DYNAMIC_STATE_DEPTH_BIAS_ENABLE, VK_DYNAMIC_STATE_DEPTH_BIAS,
+    };
+    auto dynamic = vk_init<VkPipelineDynamicStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
+    dynamic.dynamicStateCount = static_cast<std::uint32_t>(std::size(dynamic_states));
+    dynamic.pDynamicStates = dynamic_states;
+    auto rendering =
+        vk_init<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
+    rendering.colorAttachmentCount = d.color ? 1 : 0;
+    rendering.pColorAttachmentFormats = &color_format;
+    rendering.depthAttachmentFormat = kDepthFormat;
+
+    auto ci =
+        vk_init<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
+    ci.pNext = &rendering;
+    ci.stageCount = static_cast<std::uint32_t>(stages.size());
+    ci.pStages = stages.data();
+    ci.pVertexInputState = &vertex_input;
+    ci.pInputAssemblyState = &assembly;
+    ci.pViewportState = &viewport;
+    ci.pRasterizationState = &raster;
+    ci.pMultisampleState = &multisample;
+    ci.pDepthStencilState = &depth;
+    ci.pColorBlendState = &blend;
+    ci.pDynamicState = &dynamic;
+    ci.layout = layout;
+    VkPipeline p = VK_NULL_HANDLE;
+    vk_check(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &p),
+             "vkCreateGraphicsPipelines");
+    return UniquePipeline(device, p);
+}
+
+} // namespace
+
+Pipelines::Pipelines(const Context& context, VkDescriptorSetLayout textures_layout,
+                     VkDescriptorSetLayout frame_layout, VkFormat color_format)
+    : color_format_(color_format), device_(context.device()) {
+    VkDevice device = context.device();
+    VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                             sizeof(GPUPushConstants)};
+    const VkDescriptorSetLayout set_layouts[] = {textures_layout, frame_layout};
+    layout_ = create_pipeline_layout(device, set_layouts, {&push, 1}, "vkCreatePipelineLayout");
+    const VkPipelineLayout layout = layout_.get();
+
+    // Modules are only needed while the pipelines are created.
+    mesh_vert_ = make_module(device, spirv_mesh_vert);
+    forward_frag_ = make_module(device, spirv_forward_frag);
+    UniqueShaderModule depth_vert = make_module(device, spirv_depth_vert);
+    UniqueShaderModule glyph_vert = make_module(device, spirv_glyph_vert);
+    UniqueShaderModule lines_vert = make_module(device, spirv_lines_vert);
+    UniqueShaderModule depth_mask_frag = make_module(device, spirv_depth_mask_frag);
+    UniqueShaderModule flat_frag = make_module(device, spirv_flat_frag);
+    UniqueShaderModule floor_frag = make_module(device, spirv_floor_frag);
+
+    auto make = [&](PipelineId id, const PipelineDesc& d) {
+        pipelines_[static_cast<std::size_t>(id)] = make_pipeline(device, layout, color_format, d);
+    };
+    make(PipelineId::PrepassOpaque,
+         {depth_vert.get(), VK_NULL_HANDLE, VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST,
+          VK_POLYGON_MODE_FILL, true, false, false});
+    make(PipelineId::PrepassMask,
+         {depth_vert.get(), depth_mask_frag.get(), VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST,
+          VK_POLYGON_MODE_FILL, true, false, false});
+    make(PipelineId::Wireframe, {depth_vert.get(), floor_frag.get(),
+                                 VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, VK_POLYGON_MODE_LINE});
+    make(PipelineId::Glyphs, {glyph_vert.get(), flat_frag.get(), VK_PRIMITIVE_TOPOLOGY_LINE_LIST});
+    make(PipelineId::BoxLines,
+         {lines_vert.get(), flat_frag.get(), VK_PRIMITIVE_TOPOLOGY_LINE_LIST});
+    make(PipelineId::Floor, {depth_vert.get(), floor_frag.get()});
+    PipelineDesc tint{depth_vert.get(), floor_frag.get()};
+    tint.blend = true;
+    make(PipelineId::Tint, tint);
+    make(PipelineId::ShadowOpaque,
+         {depth_vert.get(), VK_NULL_HANDLE, VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST,
+          VK_POLYGON_MODE_FILL, false, false, false});
+    make(PipelineId::ShadowMask,
+         {depth_vert.get(), depth_mask_frag.get(), VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST,
+          VK_POLYGON_MODE_FILL, false, false, false});
+}
+
+VkPipeline Pipelines::forward(std::uint32_t view, bool blend, std::uint32_t streams) {
+    auto& p = forward_[{view, blend, streams}];
+    if (!p) {
+        const VkSpecializationMapEntry entries[] = {
+            {0, 0, sizeof(std::uint32_t)}, {1, sizeof(std::uint32_t), sizeof(std::uint32_t)}};
+        const std::uint32_t values[] = {view, streams};
+        VkSpecializationInfo constants{2, entries, sizeof(values), values};
+        PipelineDesc d{mesh_vert_.get(), forward_frag_.get()};
+        d.blend = blend;
+        d.frag_constants = &constants;
+        p = make_pipeline(device_, layout_.get(), color_format_, d);
+    }
+    return p.get();
+}
+
+} // namespace sherpa::gpu

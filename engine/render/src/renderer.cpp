@@ -1,0 +1,346 @@
+// The Renderer and its frame resources: construction, scene load/unload, the
+// offscreen target and readback, statistics of completed frames.
+#include "renderer_impl.h"
+
+#include <sherpa/gpu/gpu_error.h>
+#include <sherpa/gpu/vk_helpers.h>
+#include <sherpa/render/gpu_structs.h>
+
+#include <cstring>
+
+namespace sherpa::gpu {
+
+Renderer::Impl::Impl(Context& ctx, const RendererOptions& opts)
+    : context(ctx), options(opts), resources(std::make_unique<ResourceManager>(ctx)),
+      bindless(std::make_unique<BindlessTable>(*resources)), culling(ctx, *resources),
+      shadows_(ctx, *resources, opts.shadow_resolution) {
+    for (std::uint32_t i = 0; i < kFramesInFlight; ++i) {
+        auto slot = std::make_unique<FrameSlot>(context);
+        slot->frame_data =
+            resources->create_buffer({sizeof(GPUFrameData), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                      MemoryUsage::Upload, "frame data"});
+        slot->timestamps =
+            create_query_pool(context.device(), VK_QUERY_TYPE_TIMESTAMP, kTimestampCount);
+        if (context.info().pipeline_statistics)
+            slot->statistics =
+                create_query_pool(context.device(), VK_QUERY_TYPE_PIPELINE_STATISTICS, 1,
+                                  VK_QUERY_PIPELINE_STATISTIC_INPUT_ASSEMBLY_PRIMITIVES_BIT |
+                                      VK_QUERY_PIPELINE_STATISTIC_VERTEX_SHADER_INVOCATIONS_BIT |
+                                      VK_QUERY_PIPELINE_STATISTIC_CLIPPING_INVOCATIONS_BIT |
+                                      VK_QUERY_PIPELINE_STATISTIC_CLIPPING_PRIMITIVES_BIT |
+                                      VK_QUERY_PIPELINE_STATISTIC_FRAGMENT_SHADER_INVOCATIONS_BIT);
+        slots_.push_back(std::move(slot));
+    }
+    create_frame_sets();
+}
+
+void Renderer::Impl::create_frame_sets() {
+    VkDevice device = context.device();
+    const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    const VkDescriptorSetLayoutBinding bindings[] = {
+        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, stages, nullptr},
+        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
+        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
+        {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+    };
+    frame_layout_ =
+        create_descriptor_set_layout(device, bindings, "vkCreateDescriptorSetLayout(frame)");
+    const VkDescriptorPoolSize sizes[] = {
+        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFramesInFlight},
+        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * kFramesInFlight},
+        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFramesInFlight}};
+    frame_pool_ =
+        create_descriptor_pool(device, kFramesInFlight, sizes, "vkCreateDescriptorPool(frame)");
+    no_materials_ =
+        resources->create_buffer({sizeof(GPUMaterialExtra), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                  MemoryUsage::Upload, "no materials"});
+    const VkDescriptorSetLayout layout = frame_layout_.get();
+    for (auto& slot : slots_) {
+        auto ai =
+            vk_init<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
+        ai.descriptorPool = frame_pool_.get();
+        ai.descriptorSetCount = 1;
+        ai.pSetLayouts = &layout;
+        vk_check(vkAllocateDescriptorSets(device, &ai, &slot->set),
+                 "vkAllocateDescriptorSets(frame)");
+    }
+}
+
+// Points the slot's set at its frame data and the current scene's materials. The
+// slot's previous frame has completed, so the set is not in use.
+void Renderer::Impl::bind_frame_set(FrameSlot& slot) {
+    if (slot.set_generation == scene_generation_) return;
+    const VkBuffer none = resources->get(no_materials_).buffer.get();
+    const VkDescriptorBufferInfo infos[] = {
+        {resources->get(slot.frame_data).buffer.get(), 0, sizeof(GPUFrameData)},
+        {scene ? scene->materials_buffer() : none, 0, VK_WHOLE_SIZE},
+        {scene ? scene->material_extras_buffer() : none, 0, VK_WHOLE_SIZE},
+    };
+    const VkDescriptorImageInfo shadow = shadows_.descriptor();
+    VkWriteDescriptorSet writes[4];
+    writes[3] = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+    writes[3].dstSet = slot.set;
+    writes[3].dstBinding = 3;
+    writes[3].descriptorCount = 1;
+    writes[3].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    writes[3].pImageInfo = &shadow;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+        writes[i] = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        writes[i].dstSet = slot.set;
+        writes[i].dstBinding = i;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType =
+            i == 0 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        writes[i].pBufferInfo = &infos[i];
+    }
+    vkUpdateDescriptorSets(context.device(), 4, writes, 0, nullptr);
+    slot.set_generation = scene_generation_;
+}
+
+Renderer::Impl::~Impl() {
+    context.wait_idle();
+    culling.reset();
+    scene.reset();
+    for (auto& slot : slots_) {
+        resources->destroy(slot->frame_data);
+        resources->destroy(slot->lines);
+        resources->destroy(slot->cull_ids);
+        resources->destroy(slot->cull_readback);
+    }
+    slots_.clear();
+    resources->destroy(color_);
+    resources->destroy(depth_);
+    resources->destroy(readback_);
+    resources->destroy(no_materials_);
+    pipelines_.clear();
+}
+
+Pipelines& Renderer::Impl::pipelines_for(VkFormat format) {
+    auto& p = pipelines_[format];
+    if (!p)
+        p = std::make_unique<Pipelines>(context, bindless->layout(), frame_layout_.get(), format);
+    return *p;
+}
+
+void Renderer::Impl::load(const Scene& source, std::unique_ptr<GpuScene> gpu_scene) {
+    scene = std::move(gpu_scene);
+    culling.build(*scene);
+    lighting_.bounds = scene->bounds().valid() ? scene->bounds() : source.bounds;
+    lighting_.cameras = source.cameras;
+    lighting_.placed_cameras = source.placed_cameras;
+    lighting_.lights = source.lights;
+    lighting_.placed_lights = source.placed_lights;
+    ++scene_generation_;
+    shadows_.invalidate();
+}
+
+void Renderer::Impl::unload() {
+    // Frames in flight may still read the scene's buffers and textures: wait for
+    // them, so that the bindless slots the scene gives back can be reused at once.
+    for (auto& slot : slots_) {
+        wait_slot(*slot);
+        // Sized for the scene's instances: it goes with the scene.
+        resources->destroy(slot->cull_ids);
+        slot->cull_ids_capacity = 0;
+        resources->destroy(slot->cull_readback);
+        slot->cull_readback_capacity = 0;
+        slot->culling.count = 0;
+    }
+    culling.reset();
+    scene.reset();
+    ++scene_generation_; // frame sets must stop naming the freed material buffers
+    lighting_ = Scene{};
+    shadows_.invalidate();
+    resources->collect_garbage();
+}
+
+void Renderer::Impl::wait_for_slot(std::uint32_t slot) {
+    wait_slot(*slots_.at(slot));
+}
+
+void Renderer::Impl::wait_slot(FrameSlot& slot) {
+    if (slot.submission) resources->wait_for(slot.submission);
+}
+
+void Renderer::Impl::ensure_depth(std::uint32_t width, std::uint32_t height) {
+    if (depth_.valid()) {
+        const ImageDesc& d = resources->get(depth_).desc;
+        if (d.width == width && d.height == height) return;
+        resources->destroy(depth_);
+    }
+    ImageDesc d;
+    d.format = kDepthFormat;
+    d.width = width;
+    d.height = height;
+    d.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+    d.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
+    d.name = "depth";
+    depth_ = resources->create_image(d);
+}
+
+void Renderer::Impl::ensure_offscreen(std::uint32_t width, std::uint32_t height) {
+    if (color_.valid()) {
+        const ImageDesc& d = resources->get(color_).desc;
+        if (d.width == width && d.height == height) return;
+        resources->destroy(color_);
+        resources->destroy(readback_);
+    }
+    ImageDesc d;
+    d.format = kOffscreenFormat;
+    d.width = width;
+    d.height = height;
+    d.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    d.name = "offscreen colour";
+    color_ = resources->create_image(d);
+    readback_ = resources->create_buffer({VkDeviceSize(width) * height * 4,
+                                          VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::Readback,
+                                          "readback"});
+}
+
+std::uint64_t Renderer::Impl::render_target_bytes() const {
+    std::uint64_t bytes = shadows_.bytes();
+    for (ImageHandle h : {color_, depth_})
+        if (h.valid()) bytes += resources->get(h).allocation_size;
+    return bytes;
+}
+
+FrameStats Renderer::Impl::render(const RenderSettings& settings, std::vector<std::uint8_t>* rgba) {
+    if (settings.width == 0 || settings.height == 0 || settings.width > 16384 ||
+        settings.height > 16384)
+        throw GpuError("render size " + std::to_string(settings.width) + "x" +
+                       std::to_string(settings.height) + " is out of range");
+    const std::uint32_t index = next_slot_;
+    next_slot_ = (next_slot_ + 1) % kFramesInFlight;
+    FrameSlot& slot = *slots_[index];
+    wait_slot(slot);
+    ensure_offscreen(settings.width, settings.height);
+    const Image& color = resources->get(color_);
+
+    VkCommandBuffer cmd = slot.recorder.begin();
+    RenderTarget target{color.image.get(), color.view.get(), kOffscreenFormat,
+                        settings.width,    settings.height,  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+    record_frame(cmd, index, target, settings);
+    if (rgba) {
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {settings.width, settings.height, 1};
+        vkCmdCopyImageToBuffer(cmd, color.image.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                               resources->get(readback_).buffer.get(), 1, &region);
+        memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    }
+    const std::uint64_t value = slot.recorder.submit(*resources);
+    finish_frame(index, value);
+    FrameStats stats = slot_stats(index);
+    if (rgba) {
+        const Buffer& rb = resources->get(readback_);
+        rgba->resize(std::size_t(settings.width) * settings.height * 4);
+        std::memcpy(rgba->data(), rb.mapped, rgba->size());
+    }
+    resources->collect_garbage();
+    return stats;
+}
+
+void Renderer::Impl::finish_frame(std::uint32_t slot, std::uint64_t submission) {
+    slots_.at(slot)->submission = submission;
+    slots_.at(slot)->has_results = true;
+}
+
+FrameStats Renderer::Impl::slot_stats(std::uint32_t index) {
+    FrameSlot& slot = *slots_.at(index);
+    wait_slot(slot);
+    return read_stats(slot);
+}
+
+FrameStats Renderer::Impl::read_stats(FrameSlot& slot) {
+    FrameStats s;
+    if (!slot.has_results) return s;
+    s.shadows_rendered = slot.shadows_rendered;
+    s.draw_calls = slot.draw_calls;
+    culling.read_stats(slot, scene.get(), s);
+    if (context.info().timestamps) {
+        std::uint64_t ts[kTimestampCount] = {};
+        vk_check(vkGetQueryPoolResults(context.device(), slot.timestamps.get(), 0, kTimestampCount,
+                                       sizeof(ts), ts, sizeof(std::uint64_t),
+                                       VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+                 "vkGetQueryPoolResults(timestamps)");
+        const double ns = context.info().timestamp_period_ns;
+        for (std::uint32_t i = 0; i + 1 < kTimestampCount; ++i)
+            s.passes.push_back({kPassNames[i], double(ts[i + 1] - ts[i]) * ns * 1e-6});
+        s.gpu_ms = double(ts[kTimestampCount - 1] - ts[0]) * ns * 1e-6;
+    }
+    if (slot.statistics) {
+        std::uint64_t v[5] = {};
+        vk_check(vkGetQueryPoolResults(context.device(), slot.statistics.get(), 0, 1, sizeof(v), v,
+                                       sizeof(v),
+                                       VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+                 "vkGetQueryPoolResults(statistics)");
+        // Results come in the order of the statistic bits.
+        s.input_primitives = v[0];
+        s.vertex_invocations = v[1];
+        s.clipping_invocations = v[2];
+        s.clipping_primitives = v[3];
+        s.fragment_invocations = v[4];
+    }
+    return s;
+}
+
+// The public face: forwards to Impl.
+
+Renderer::Renderer(Context& context, const RendererOptions& options)
+    : impl_(std::make_unique<Impl>(context, options)) {}
+
+Renderer::~Renderer() = default;
+
+void Renderer::load(const Scene& scene, StreamPolicy policy) {
+    unload();
+    Impl& r = *impl_;
+    r.load(scene, std::make_unique<GpuScene>(*r.resources, *r.bindless, scene, r.options.textures,
+                                             policy));
+}
+
+void Renderer::load(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
+                    StreamPolicy policy) {
+    unload();
+    Impl& r = *impl_;
+    r.load(scene, std::make_unique<GpuScene>(*r.resources, *r.bindless, scene, std::move(textures),
+                                             policy, r.options.textures.missing));
+}
+
+const TextureSettings& Renderer::texture_settings() const {
+    return impl_->options.textures;
+}
+
+void Renderer::set_texture_settings(const TextureSettings& settings) {
+    impl_->options.textures = settings;
+}
+
+void Renderer::unload() {
+    impl_->unload();
+}
+
+const GpuScene* Renderer::scene() const {
+    return impl_->scene.get();
+}
+
+FrameStats Renderer::render(const RenderSettings& settings, std::vector<std::uint8_t>* rgba) {
+    return impl_->render(settings, rgba);
+}
+
+const RingHistory<CullFrame>& Renderer::cull_history() const {
+    return impl_->culling.history();
+}
+
+ResourceManager& Renderer::resources() {
+    return *impl_->resources;
+}
+
+Context& Renderer::context() {
+    return impl_->context;
+}
+
+std::uint64_t Renderer::render_target_bytes() const {
+    return impl_->render_target_bytes();
+}
+
+} // namespace sherpa::gpu

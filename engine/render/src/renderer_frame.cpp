@@ -1,0 +1,157 @@
+// A frame as the Renderer records it: frame constants, then the passes in order
+// (record_passes), with a timestamp after each timed pass and the pipeline
+// statistics around the camera's passes.
+#include "draw.h"
+#include "renderer_impl.h"
+
+#include <sherpa/render/gpu_structs.h>
+
+namespace sherpa::gpu {
+
+namespace {
+
+// Timestamp indices: kPassNames[i] spans [i, i + 1].
+enum Timestamp : std::uint32_t {
+    kFrameStart,
+    kAfterShadows,
+    kAfterPrepass,
+    kAfterOpaque,
+    kAfterMask,
+    kAfterBlend,
+    kAfterOverlays,
+};
+static_assert(kAfterOverlays + 1 == kTimestampCount);
+
+} // namespace
+
+void Renderer::Impl::record_frame(VkCommandBuffer cmd, std::uint32_t index,
+                                  const RenderTarget& target, const RenderSettings& settings) {
+    FrameSlot& slot = *slots_.at(index);
+    wait_slot(slot);
+    // Frames nobody read the results of (the swapchain path) still reach the
+    // culling history, before this slot's queries are reset.
+    if (slot.has_results && !slot.history_pushed) {
+        FrameStats unused;
+        culling.read_stats(slot, scene.get(), unused);
+    }
+    vkResetQueryPool(context.device(), slot.timestamps.get(), 0, kTimestampCount);
+    if (slot.statistics) vkResetQueryPool(context.device(), slot.statistics.get(), 0, 1);
+    slot.has_results = false;
+    slot.draw_calls = 0;
+    FrameContext f{cmd,     slot,       index,       pipelines_for(target.format), settings, target,
+                   context, *resources, scene.get(), culling.scene_culling(),      lighting_};
+    record_passes(f);
+}
+
+void Renderer::Impl::record_passes(FrameContext& f) {
+    ensure_depth(f.target.width, f.target.height);
+    begin_frame(f);
+    culling.record(f);
+    bind_frame(f);
+    timestamp(f, kFrameStart);
+    shadows_.record(f);
+    timestamp(f, kAfterShadows);
+    begin_camera_rendering(f);
+    floor_.record(f);
+    prepass_.record(f);
+    timestamp(f, kAfterPrepass);
+    opaque_.record(f);
+    timestamp(f, kAfterOpaque);
+    mask_.record(f);
+    timestamp(f, kAfterMask);
+    blend_.record(f);
+    timestamp(f, kAfterBlend);
+    overlays_.record(f);
+    highlight_.record(f);
+    timestamp(f, kAfterOverlays);
+    end_camera_rendering(f);
+}
+
+void Renderer::Impl::timestamp(FrameContext& f, std::uint32_t index) {
+    vkCmdWriteTimestamp2(f.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, f.slot.timestamps.get(),
+                         index);
+}
+
+// Frame constants, the slot's descriptor set, and whether the depth prepass runs.
+void Renderer::Impl::begin_frame(FrameContext& f) {
+    FrameSlot& slot = f.slot;
+    write_frame_data(f);
+    slot.shadows_rendered = f.cascades > 0;
+    slot.push_base = GPUPushConstants{};
+    if (scene) slot.push_base.instances = scene->instances_address();
+    bind_frame_set(slot);
+    slot.push_base.cascade = kNoCascade;
+    f.prepass =
+        !f.settings.floor_only && prepass_enabled(f.settings.depth_prepass, context.info().is_cpu(),
+                                                  scene ? scene->triangle_count() : 0,
+                                                  std::uint64_t{f.target.width} * f.target.height);
+}
+
+// Descriptor sets and index buffer of every draw of the frame.
+void Renderer::Impl::bind_frame(FrameContext& f) {
+    const VkDescriptorSet sets[] = {bindless->set(), f.slot.set};
+    vkCmdBindDescriptorSets(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, f.pipelines.layout(), 0, 2,
+                            sets, 0, nullptr);
+    if (scene && scene->index_buffer() != VK_NULL_HANDLE)
+        vkCmdBindIndexBuffer(f.cmd, scene->index_buffer(), 0, VK_INDEX_TYPE_UINT32);
+}
+
+// The target and depth in attachment layouts (both cleared: their previous
+// contents do not matter), dynamic rendering begun, statistics started.
+void Renderer::Impl::begin_camera_rendering(FrameContext& f) {
+    const Image& depth_image = resources->get(depth_);
+    transition(
+        f.cmd,
+        {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+         VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+         // Source stages include transfers: after an earlier frame's readback copy.
+         VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+         VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+         VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT});
+    transition(
+        f.cmd,
+        {depth_image.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+         VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+         VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+         VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+         VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+         VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+             VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT});
+
+    auto color = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+    color.imageView = f.target.view;
+    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    const glm::vec4 cc = f.settings.clear_color;
+    color.clearValue.color = {{cc.r, cc.g, cc.b, cc.a}};
+    auto depth = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+    depth.imageView = depth_image.view.get();
+    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    depth.clearValue.depthStencil = {0.0f, 0}; // reverse-Z: 0 is infinitely far
+    auto ri = vk_init<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
+    ri.renderArea = {{0, 0}, {f.target.width, f.target.height}};
+    ri.layerCount = 1;
+    ri.colorAttachmentCount = 1;
+    ri.pColorAttachments = &color;
+    ri.pDepthAttachment = &depth;
+    vkCmdBeginRendering(f.cmd, &ri);
+    set_viewport(f.cmd, f.target.width, f.target.height);
+    if (f.slot.statistics) vkCmdBeginQuery(f.cmd, f.slot.statistics.get(), 0, 0);
+}
+
+void Renderer::Impl::end_camera_rendering(FrameContext& f) {
+    if (f.slot.statistics) vkCmdEndQuery(f.cmd, f.slot.statistics.get(), 0);
+    vkCmdEndRendering(f.cmd);
+    const bool to_transfer = f.target.final_layout == VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    transition(f.cmd,
+               {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                f.target.final_layout, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                to_transfer ? VK_PIPELINE_STAGE_2_COPY_BIT : VK_PIPELINE_STAGE_2_NONE,
+                to_transfer ? VK_ACCESS_2_TRANSFER_READ_BIT : VK_ACCESS_2_NONE});
+}
+
+} // namespace sherpa::gpu

@@ -1,0 +1,79 @@
+#pragma once
+// The Renderer's inside (private to the render layer): frame resources, targets,
+// pipelines and the passes, in frame order in record_passes() (renderer_frame.cpp).
+#include "passes.h"
+
+#include <sherpa/gpu/bindless.h>
+#include <sherpa/render/gpu_scene.h>
+
+#include <map>
+
+namespace sherpa::gpu {
+
+class Renderer::Impl {
+public:
+    static constexpr VkFormat kOffscreenFormat = VK_FORMAT_R8G8B8A8_SRGB;
+    Impl(Context& context, const RendererOptions& options);
+    ~Impl();
+
+    void load(const Scene& scene, std::unique_ptr<GpuScene> gpu_scene);
+    void unload();
+    FrameStats render(const RenderSettings& settings, std::vector<std::uint8_t>* rgba);
+    // Swapchain path: waits until frame slot `slot` is free, records the frame into
+    // `cmd` (already begun) drawing into `target`. The caller submits `cmd` with the
+    // value from `resources().begin_submission()` and passes it to finish_frame().
+    void record_frame(VkCommandBuffer cmd, std::uint32_t slot, const RenderTarget& target,
+                      const RenderSettings& settings);
+    void finish_frame(std::uint32_t slot, std::uint64_t submission);
+    // Waits until the last frame recorded in `slot` has completed on the GPU.
+    void wait_for_slot(std::uint32_t slot);
+    // Results of the last completed frame recorded in `slot` (waits for it).
+    FrameStats slot_stats(std::uint32_t slot);
+    std::uint64_t render_target_bytes() const;
+
+    Context& context;
+    RendererOptions options;
+    std::unique_ptr<ResourceManager> resources;
+    std::unique_ptr<BindlessTable> bindless;
+    std::unique_ptr<GpuScene> scene;
+    CullingPass culling;
+
+private:
+    // A frame, pass by pass.
+    void record_passes(FrameContext& f);
+    void begin_frame(FrameContext& f);
+    void bind_frame(FrameContext& f);
+    void begin_camera_rendering(FrameContext& f);
+    void end_camera_rendering(FrameContext& f);
+    void timestamp(FrameContext& f, std::uint32_t index);
+    // Camera, lights, cascades and view into the slot's GPUFrameData; sets
+    // f.cascades to the cascades that must be drawn this frame (frame_data.cpp).
+    void write_frame_data(FrameContext& f);
+    void create_frame_sets();
+    void bind_frame_set(FrameSlot& slot);
+    void wait_slot(FrameSlot& slot);
+    void ensure_offscreen(std::uint32_t width, std::uint32_t height);
+    void ensure_depth(std::uint32_t width, std::uint32_t height);
+    Pipelines& pipelines_for(VkFormat format);
+    FrameStats read_stats(FrameSlot& slot);
+
+    ShadowPass shadows_;
+    FloorPass floor_;
+    DepthPrepass prepass_;
+    ForwardPass opaque_{AlphaMode::Opaque}, mask_{AlphaMode::Mask}, blend_{AlphaMode::Blend};
+    OverlayPass overlays_;
+    HighlightPass highlight_;
+
+    UniqueDescriptorSetLayout frame_layout_;
+    UniqueDescriptorPool frame_pool_;
+    BufferHandle no_materials_; // bound while no scene is loaded
+    std::map<VkFormat, std::unique_ptr<Pipelines>> pipelines_;
+    Scene lighting_; // only bounds, lights and cameras: what camera and light resolution needs
+    std::uint64_t scene_generation_ = 0;
+    std::vector<std::unique_ptr<FrameSlot>> slots_;
+    std::uint32_t next_slot_ = 0;
+    ImageHandle color_, depth_;
+    BufferHandle readback_;
+};
+
+} // namespace sherpa::gpu

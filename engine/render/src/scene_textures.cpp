@@ -1,0 +1,281 @@
+#include <sherpa/gpu/gpu_error.h>
+#include <sherpa/gpu/upload.h>
+#include <sherpa/render/gpu_structs.h>
+#include <sherpa/render/scene_textures.h>
+
+#include <sherpa/texture/block_codecs.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+namespace sherpa::gpu {
+
+namespace {
+
+VkSamplerCreateInfo sampler_info(const SamplerDesc& d, const DeviceInfo& device) {
+    auto filter = [](Filter f) {
+        return f == Filter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
+    };
+    auto address = [](AddressMode m) {
+        switch (m) {
+        case AddressMode::MirroredRepeat:
+            return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+        case AddressMode::ClampToEdge:
+            return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+        case AddressMode::Repeat:
+            break;
+        }
+        return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    };
+    auto si = vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+    si.magFilter = filter(d.mag_filter);
+    si.minFilter = filter(d.min_filter);
+    // Trilinear filtering doubles the texel fetches of every sample; on a CPU
+    // rasterizer (lavapipe) that is the largest cost of a frame, so CPU devices
+    // filter within the nearest mip level. GPUs get the sampler as glTF asks.
+    si.mipmapMode = d.mipmap_mode == MipmapMode::Nearest || device.is_cpu()
+                        ? VK_SAMPLER_MIPMAP_MODE_NEAREST
+                        : VK_SAMPLER_MIPMAP_MODE_LINEAR;
+    si.addressModeU = address(d.wrap_u);
+    si.addressModeV = address(d.wrap_v);
+    si.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    si.maxLod = d.max_lod;
+    // Anisotropy costs many texel fetches per sample on a CPU rasterizer; GPUs get 8x.
+    if (device.anisotropy && !device.is_cpu() && d.max_lod > 0.0f &&
+        d.min_filter == Filter::Linear) {
+        si.anisotropyEnable = VK_TRUE;
+        si.maxAnisotropy = std::min(8.0f, device.max_anisotropy);
+    }
+    return si;
+}
+
+// A set prepared for another scene or device, or whose levels were released after an
+// earlier upload, would create invalid images: refuse it.
+void check_prepared(const tex::PreparedTexture& t, const Scene& scene, const DeviceInfo& device) {
+    const std::string what =
+        "prepared texture '" + t.source + "' (" + std::string(tex::role_name(t.role)) + ")";
+    for (std::int32_t texture : t.textures)
+        if (texture < 0 || std::size_t(texture) >= scene.textures.size())
+            throw GpuError(what + " names glTF texture " + std::to_string(texture) + " of " +
+                           std::to_string(scene.textures.size()) + ": prepared for another scene?");
+    if (tex::is_block_compressed(t.format) && !device.bc_textures)
+        throw GpuError(what + " is " + std::string(tex::vk_format_name(t.format)) + " but " +
+                       device.name + " cannot sample BC formats: prepare with its DeviceInfo");
+    if (t.levels.empty() || t.width == 0 || t.height == 0)
+        throw GpuError(what + " has no levels (released after an earlier upload?)");
+    for (std::size_t l = 0; l < t.levels.size(); ++l) {
+        const auto level = static_cast<std::uint32_t>(l);
+        if (t.levels[l].size() != tex::level_size(t.format, tex::mip_extent(t.width, level),
+                                                  tex::mip_extent(t.height, level)))
+            throw GpuError(what + ": mip level " + std::to_string(l) + " has " +
+                           std::to_string(t.levels[l].size()) + " bytes, not what its size needs");
+    }
+}
+
+// Replaces t's BC7 levels by their RGBA8 decoding (what sampling the blocks returns).
+void decode_bc7_levels(tex::PreparedTexture& t) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const bool srgb = t.format == tex::VkFormat::Bc7SrgbBlock;
+    std::uint64_t bytes = 0;
+    for (std::size_t l = 0; l < t.levels.size(); ++l) {
+        const auto level = static_cast<std::uint32_t>(l);
+        t.levels[l] =
+            tex::decode_image(tex::BlockFormat::Bc7, t.levels[l], tex::mip_extent(t.width, level),
+                              tex::mip_extent(t.height, level));
+        bytes += t.levels[l].size();
+    }
+    t.format = srgb ? tex::VkFormat::R8G8B8A8Srgb : tex::VkFormat::R8G8B8A8Unorm;
+    t.bytes_gpu = bytes;
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    char note[96];
+    std::snprintf(note, sizeof note, "BC7 blocks decoded to RGBA8 for the CPU device (%.1f ms)",
+                  ms);
+    t.note = t.note.empty() ? note : t.note + "; " + note;
+}
+
+} // namespace
+
+std::string_view to_string(MissingTextures m) {
+    return m == MissingTextures::Neutral ? "neutral" : "checker";
+}
+
+std::optional<MissingTextures> parse_missing_textures(std::string_view name) {
+    if (name == "checker") return MissingTextures::Checker;
+    if (name == "neutral") return MissingTextures::Neutral;
+    return std::nullopt;
+}
+
+tex::PipelineOptions texture_pipeline_options(const DeviceInfo& device,
+                                              const TextureSettings& settings) {
+    tex::PipelineOptions o;
+    o.cache_dir = settings.cache_dir;
+    o.cache_cap_bytes = settings.cache_cap_bytes;
+    o.bc7_level = settings.quality;
+    o.device_supports_bc = device.bc_textures && !settings.force_rgba8;
+    o.progress = settings.progress;
+    o.cancel = settings.cancel;
+    return o;
+}
+
+std::shared_ptr<const tex::PreparedTextureSet>
+prepare_scene_textures(const Scene& scene, const DeviceInfo& device,
+                       const TextureSettings& settings) {
+    auto set = std::make_shared<tex::PreparedTextureSet>(
+        tex::prepare_textures(scene, texture_pipeline_options(device, settings)));
+    // Say why there is no BC: the device (a warning: textures cost 4x the memory and
+    // no setting helps), or the settings (a notice: the user asked for it).
+    if (!set->textures.empty() && (!device.bc_textures || settings.force_rgba8)) {
+        std::erase_if(set->warnings, [](const std::string& w) {
+            return w.starts_with("device cannot sample BC formats");
+        });
+        if (!device.bc_textures)
+            set->warnings.insert(set->warnings.begin(),
+                                 device.name +
+                                     " cannot sample BC7/BC5 (textureCompressionBC or format "
+                                     "features missing): textures fall back to uncompressed RGBA8");
+        else
+            set->notices.push_back("RGBA8 forced (--no-bc): textures are uploaded uncompressed "
+                                   "although " +
+                                   device.name + " samples BC7/BC5");
+    }
+    if (device.is_cpu() && settings.decode_bc7_on_cpu) {
+        // One texture at a time: decode_image spreads its block rows over the cores.
+        std::size_t bc7 = 0;
+        for (tex::PreparedTexture& t : set->textures)
+            if (!t.failed && (t.format == tex::VkFormat::Bc7SrgbBlock ||
+                              t.format == tex::VkFormat::Bc7UnormBlock)) {
+                decode_bc7_levels(t);
+                ++bc7;
+            }
+        // Nothing for the user to act on: the pixels are the same. A notice, not a warning.
+        if (bc7 > 0)
+            set->notices.push_back(
+                std::to_string(bc7) + " BC7 texture(s) decoded to RGBA8 at upload: " + device.name +
+                " is a CPU device, where sampling BC7 costs several times RGBA8");
+    }
+    return set;
+}
+
+SceneTextures::SceneTextures(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+                             std::shared_ptr<const tex::PreparedTextureSet> prepared,
+                             MissingTextures missing)
+    : resources_(resources), table_(table), prepared_(std::move(prepared)), missing_(missing) {
+    if (!prepared_) prepared_ = std::make_shared<const tex::PreparedTextureSet>();
+    warnings_ = prepared_->warnings;
+    try {
+        upload(scene);
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
+void SceneTextures::upload(const Scene& scene) {
+    // Samplers: one per distinct description (glTF default included).
+    std::vector<SamplerDesc> descs;
+    std::vector<std::uint32_t> sampler_of_texture(scene.textures.size());
+    for (std::size_t t = 0; t < scene.textures.size(); ++t) {
+        const SamplerDesc d = scene.sampler_of(scene.textures[t]);
+        auto it = std::find(descs.begin(), descs.end(), d);
+        if (it == descs.end()) {
+            descs.push_back(d);
+            samplers_.push_back(
+                resources_.create_sampler(sampler_info(d, resources_.context().info())));
+            it = descs.end() - 1;
+        }
+        sampler_of_texture[t] = static_cast<std::uint32_t>(it - descs.begin());
+    }
+    auto sampler_for = [&](std::int32_t texture) {
+        return resources_.get(samplers_[sampler_of_texture[std::size_t(texture)]]);
+    };
+
+    const std::vector<tex::PreparedTexture>& records = prepared_->textures;
+    gpu_.resize(records.size());
+    slots_.assign(records.size(), kTextureSentinel);
+    UploadBatch batch(resources_);
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        const tex::PreparedTexture& t = records[i];
+        if (t.failed || t.textures.empty()) continue; // the default texture stands in
+        check_prepared(t, scene, resources_.context().info());
+        ImageDesc d;
+        d.format = static_cast<VkFormat>(t.format);
+        d.width = t.width;
+        d.height = t.height;
+        d.mip_levels = static_cast<std::uint32_t>(t.levels.size());
+        d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+        d.name = "image " + std::to_string(t.image) + " (" + std::string(tex::role_name(t.role)) +
+                 ", " + std::string(tex::vk_format_name(t.format)) + ")";
+        GpuTexture& g = gpu_[i];
+        g.image = resources_.create_image(d);
+        g.mip_levels = d.mip_levels;
+        g.bytes = resources_.get(g.image).allocation_size;
+        bytes_ += g.bytes;
+        batch.upload_image_levels(g.image, t.levels);
+        const VkImageView view = resources_.get(g.image).view.get();
+        const std::int32_t first = t.textures.front();
+        g.slot = slots_[i] = table_.add(view, sampler_for(first));
+        // A texture sharing this image with a different sampler gets its own slot.
+        for (std::int32_t texture : t.textures)
+            if (sampler_of_texture[std::size_t(texture)] != sampler_of_texture[std::size_t(first)])
+                extra_slots_[{texture, t.role}] = table_.add(view, sampler_for(texture));
+    }
+    batch.submit_and_wait();
+}
+
+void SceneTextures::release() {
+    for (std::uint32_t s : slots_)
+        if (s != kTextureSentinel) table_.remove(s);
+    for (const auto& [key, s] : extra_slots_) table_.remove(s);
+    for (GpuTexture& g : gpu_) resources_.destroy(g.image);
+    for (SamplerHandle& h : samplers_) resources_.destroy(h);
+    slots_.clear();
+    extra_slots_.clear();
+    gpu_.clear();
+    samplers_.clear();
+}
+
+SceneTextures::~SceneTextures() {
+    release();
+}
+
+std::size_t SceneTextures::image_count() const {
+    return static_cast<std::size_t>(std::count_if(
+        gpu_.begin(), gpu_.end(), [](const GpuTexture& g) { return g.image.valid(); }));
+}
+
+std::uint32_t SceneTextures::slot(std::int32_t texture, TextureRole role) const {
+    if (auto it = extra_slots_.find({texture, role}); it != extra_slots_.end()) return it->second;
+    const std::int32_t i = prepared_->find(texture, role);
+    return i < 0 || std::size_t(i) >= slots_.size() ? kTextureSentinel : slots_[std::size_t(i)];
+}
+
+GPUMaterialData SceneTextures::material(const MaterialInstance& m) const {
+    GPUMaterialData g = tex::resolve_material(m, *prepared_, slots_);
+    // A present slot whose texture failed draws the checker (colour slots) when asked.
+    auto failed = [&](const TextureSlot& s, TextureRole role) {
+        const std::int32_t i = s.present() ? prepared_->find(s.texture, role) : -1;
+        return i >= 0 && prepared_->textures[std::size_t(i)].failed;
+    };
+    auto field = [&](std::uint32_t& value, const TextureSlot& s, TextureRole role,
+                     std::uint32_t fallback) {
+        if (s.present())
+            if (auto it = extra_slots_.find({s.texture, role}); it != extra_slots_.end())
+                value = it->second;
+        if (value != kTextureSentinel) return;
+        value = role == kRoleColor && missing_ == MissingTextures::Checker && failed(s, role)
+                    ? kCheckerTexture
+                    : fallback;
+    };
+    // Emissive without a texture is the factor alone (glTF): white when it emits.
+    const bool emits = glm::any(glm::greaterThan(m.emissive_factor, glm::vec3(0.0f)));
+    field(g.base_color_tex, m.base_color, kRoleColor, kWhiteTexture);
+    field(g.emissive_tex, m.emissive, kRoleColor, emits ? kWhiteTexture : kBlackTexture);
+    field(g.metallic_roughness_tex, m.metallic_roughness, kRoleLinear, kWhiteTexture);
+    field(g.occlusion_tex, m.occlusion, kRoleLinear, kWhiteTexture);
+    field(g.normal_tex, m.normal, kRoleNormal, kFlatNormalTexture);
+    return g;
+}
+
+} // namespace sherpa::gpu

@@ -13,6 +13,7 @@
 #include <numeric>
 
 #include <sherpa/scene/scene_loader.h>
+#include <sherpa/texture/bc5_normal.h>
 #include <sherpa/texture/block_codecs.h>
 #include <sherpa/texture/texture_pipeline.h>
 
@@ -93,11 +94,7 @@ QImage prepared_thumbnail(const tex::PreparedTextureSet* set, std::int32_t t, QS
             rgba = tex::decode_image(tex::BlockFormat::Bc7, p.levels[level], w, h, 1);
         } else if (p.format == tex::VkFormat::Bc5UnormBlock) {
             rgba = tex::decode_image(tex::BlockFormat::Bc5, p.levels[level], w, h, 1);
-            for (std::size_t i = 0; i < rgba.size(); i += 4) { // z from x and y, as shaded
-                const float x = rgba[i] / 127.5f - 1.0f, y = rgba[i + 1] / 127.5f - 1.0f;
-                const float z = std::sqrt(std::max(0.0f, 1.0f - x * x - y * y));
-                rgba[i + 2] = static_cast<std::uint8_t>(std::lround((z + 1.0f) * 127.5f));
-            }
+            tex::rebuild_bc5_z(rgba); // z from x and y, as shaded
         } else {
             rgba = p.levels[level];
         }

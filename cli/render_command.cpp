@@ -10,10 +10,10 @@
 #include <sherpa/core/file_io.h>
 #include <sherpa/gpu/context.h>
 #include <sherpa/gpu/gpu_error.h>
-#include <sherpa/gpu/image_io.h>
 #include <sherpa/render/gpu_scene.h>
 #include <sherpa/render/renderer.h>
 #include <sherpa/scene/scene_loader.h>
+#include <sherpa/texture/image.h>
 
 #include <charconv>
 #include <chrono>
@@ -34,9 +34,13 @@ constexpr const char* kUsage =
     "sphere|pvertex|exact]\n"
     "         [--cull-check] [--freeze-cull eye=x,y,z:target=x,y,z[:...]]\n         ";
 
+std::string joined(const std::vector<std::string_view>& names);
+
 int usage_error(const std::string& message) {
-    std::fprintf(stderr, "error: %s\n%s%s\n%s", message.c_str(), kUsage, kTextureOptionsSynopsis,
-                 kTextureOptionsHelp);
+    // The names come from the engine's view/overlay tables (sherpa/gpu/debug_views.h).
+    std::fprintf(stderr, "error: %s\n%s%s\n%s  --view NAME        %s\n  --overlay NAME     %s\n",
+                 message.c_str(), kUsage, kTextureOptionsSynopsis, kTextureOptionsHelp,
+                 joined(gpu::debug_view_names()).c_str(), joined(gpu::overlay_names()).c_str());
     return kExitUsage;
 }
 
@@ -206,7 +210,7 @@ int run_render(Args args) {
                                              run.timing.texture_prepare_ms +
                                              run.timing.gpu_upload_ms + run.cpu_frame_ms.front();
         std::string error;
-        if (!gpu::write_png(std::string(out_path), settings.width, settings.height, rgba, error)) {
+        if (!tex::write_png(std::string(out_path), settings.width, settings.height, rgba, error)) {
             std::fprintf(stderr, "error: %s\n", error.c_str());
             return kExitLoadError;
         }

@@ -145,9 +145,8 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame) {
     gpu::RenderSettings settings;
     settings.width = frame.width;
     settings.height = frame.height;
-    if (auto v = gpu::parse_debug_view(frame.view.toStdString())) settings.view = *v;
-    for (const QString& o : frame.overlays)
-        if (auto bit = gpu::parse_overlay(o.toStdString())) settings.overlays |= *bit;
+    settings.view = static_cast<gpu::DebugView>(frame.view);
+    settings.overlays = frame.overlays;
     settings.camera = gpu::explicit_camera(frame.camera);
     settings.uv_checker_density = frame.checkerDensity;
     settings.highlight_instance = frame.highlightInstance;

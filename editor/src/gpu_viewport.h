@@ -27,8 +27,8 @@ namespace sherpa::editor {
 struct ViewportFrame {
     std::uint32_t width = 0, height = 0; // pixels
     CameraSpec camera;
-    QString view = QStringLiteral("lit");
-    QStringList overlays;
+    std::uint32_t view = 0;       // gpu::DebugView (ViewCatalog ids), Lit
+    std::uint32_t overlays = 0;   // gpu::Overlay bits
     float checkerDensity = 32.0f; // uv checker views: checks per UV unit
     // Selection highlight: a scene instance, and a triangle / vertex of its mesh.
     std::optional<std::uint32_t> highlightInstance, highlightTriangle, highlightVertex;

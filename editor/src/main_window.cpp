@@ -179,7 +179,7 @@ bool MainWindow::renderFrame() {
     frame.view = view_;
     frame.overlays = overlays_;
     frame.checkerDensity = static_cast<float>(settings_.checkerDensity());
-    if (a_->box_colouring->isChecked()) frame.overlays << QStringLiteral("cull-boxes");
+    if (a_->box_colouring->isChecked()) frame.overlays |= ViewCatalog::cullBoxesOverlay();
     frame.gpuCulling = a_->gpu_path->isChecked();
     frame.cullMethod = culling_->method();
     if (culling_->frozen()) frame.frozenCulling = culling_->cullingCamera();
@@ -484,9 +484,14 @@ void MainWindow::jumpToCamera(int node) {
         }
 }
 
+QString MainWindow::debugView() const {
+    return ViewCatalog::viewName(view_);
+}
+
 bool MainWindow::setDebugView(const QString& name, bool remember) {
-    if (!ViewCatalog::isView(name)) return false;
-    view_ = name;
+    const std::optional<std::uint32_t> id = ViewCatalog::viewId(name);
+    if (!id) return false;
+    view_ = *id;
     if (remember) settings_.setLastView(name);
     retranslate(); // checks the matching menu entry
     viewport_->scheduleFrame();

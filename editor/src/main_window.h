@@ -65,7 +65,7 @@ public:
     bool setDebugView(const QString& name, bool remember = true);
     // Culling › Path: the renderer culls on the GPU (true) or the CPU.
     void setGpuCulling(bool gpu);
-    const QString& debugView() const { return view_; }
+    QString debugView() const; // its name
     bool setLanguage(const QString& code, bool remember = true);
     const QString& language() const { return translations_.current(); }
     // False for a one-shot `--dock` layout: closing then keeps the stored layout.
@@ -148,8 +148,10 @@ private:
     QPushButton* cancel_ = nullptr;
     QLabel* frame_label_ = nullptr;
     QLabel* scene_label_ = nullptr;
-    QString view_ = QStringLiteral("lit");
-    QStringList overlays_;
+    // Ids from the engine's table (ViewCatalog): names are parsed once, where they
+    // enter (menu, settings, command line), never per frame.
+    std::uint32_t view_ = 0;     // gpu::DebugView::Lit
+    std::uint32_t overlays_ = 0; // gpu::Overlay bits of the Overlays menu
     bool first_frame_seen_ = false;
     bool remember_layout_ = true;
     int pass_frames_left_ = 0; // extra frames until the pass table has the first frame

@@ -88,9 +88,9 @@ void MainWindow::createActions() {
         auto* act = new QAction(this);
         act->setCheckable(true);
         act->setData(QString::fromLatin1(o.name));
-        connect(act, &QAction::toggled, this, [this, act](bool on) {
-            overlays_.removeAll(act->data().toString());
-            if (on) overlays_ << act->data().toString();
+        const std::uint32_t bit = o.id;
+        connect(act, &QAction::toggled, this, [this, bit](bool on) {
+            overlays_ = on ? overlays_ | bit : overlays_ & ~bit;
             viewport_->scheduleFrame();
         });
         a.overlay_actions.push_back(act);
@@ -281,9 +281,8 @@ void MainWindow::retranslate() {
     const std::vector<ViewEntry> views = ViewCatalog::views();
     for (std::size_t i = 0; i < views.size(); ++i) {
         a.view_actions[i]->setText(views[i].label);
-        a.view_actions[i]->setChecked(view_ == QLatin1String(views[i].name));
-        if (view_ == QLatin1String(views[i].name))
-            a.view_button->setText(tr("View: %1").arg(views[i].label));
+        a.view_actions[i]->setChecked(view_ == views[i].id);
+        if (view_ == views[i].id) a.view_button->setText(tr("View: %1").arg(views[i].label));
     }
     a.overlays->setTitle(tr("&Overlays"));
     a.checker_density->setTitle(tr("&UV Checker Density (checks per UV unit)"));

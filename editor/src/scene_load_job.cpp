@@ -13,6 +13,7 @@
 #include <numeric>
 
 #include <sherpa/scene/scene_loader.h>
+#include <sherpa/texture/bc5_normal.h>
 #include <sherpa/texture/block_codecs.h>
 #include <sherpa/texture/prepared_levels.h>
 #include <sherpa/texture/texture_pipeline.h>

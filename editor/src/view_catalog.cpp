@@ -1,41 +1,41 @@
 #include "view_catalog.h"
 
+#include <sherpa/gpu/debug_views.h>
+
 namespace sherpa::editor {
 
+namespace {
+QString translated(const char* label) {
+    return QCoreApplication::translate(gpu::kViewLabelContext, label);
+}
+} // namespace
+
 std::vector<ViewEntry> ViewCatalog::views() {
-    return {
-        {"lit", tr("Lit")},
-        {"normal", tr("Normals")},
-        {"tangent", tr("Tangents")},
-        {"bitangent", tr("Bitangents")},
-        {"tangent-w", tr("Handedness (tangent w)")},
-        {"uv0", tr("UV 0")},
-        {"uv1", tr("UV 1")},
-        {"uv0-checker", tr("UV 0 checker")},
-        {"uv1-checker", tr("UV 1 checker")},
-        {"base-color", tr("Base colour")},
-        {"metallic", tr("Metallic")},
-        {"roughness", tr("Roughness")},
-        {"occlusion", tr("Occlusion")},
-        {"emissive", tr("Emissive")},
-        {"geometric-vs-shading", tr("Geometric vs shading normal")},
-        {"provenance", tr("Tangent provenance")},
-        {"shading-normal", tr("Shading normal")},
-    };
+    std::vector<ViewEntry> out;
+    for (const gpu::DebugViewInfo& v : gpu::kDebugViews)
+        out.push_back({v.name.data(), translated(v.label), static_cast<std::uint32_t>(v.id)});
+    return out;
 }
 
 std::vector<ViewEntry> ViewCatalog::overlays() {
-    return {
-        {"wireframe", tr("Wireframe")},     {"normals", tr("Normal glyphs")},
-        {"tangents", tr("Tangent glyphs")}, {"bitangents", tr("Bitangent glyphs")},
-        {"aabb", tr("Bounding boxes")},
-    };
+    std::vector<ViewEntry> out;
+    for (const gpu::OverlayEntry& o : gpu::kOverlays)
+        if (o.label) out.push_back({o.name.data(), translated(o.label), o.bit});
+    return out;
 }
 
-bool ViewCatalog::isView(const QString& name) {
-    for (const ViewEntry& v : views())
-        if (name == QLatin1String(v.name)) return true;
-    return false;
+std::optional<std::uint32_t> ViewCatalog::viewId(const QString& name) {
+    if (auto v = gpu::find_debug_view(name.toStdString())) return static_cast<std::uint32_t>(*v);
+    return std::nullopt;
+}
+
+QString ViewCatalog::viewName(std::uint32_t id) {
+    if (id >= gpu::kDebugViews.size()) return {};
+    return QString::fromLatin1(gpu::kDebugViews[id].name.data());
+}
+
+std::uint32_t ViewCatalog::cullBoxesOverlay() {
+    return gpu::kOverlayCullBoxes;
 }
 
 } // namespace sherpa::editor

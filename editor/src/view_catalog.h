@@ -1,9 +1,12 @@
 #pragma once
-// The debug views and overlays the renderer offers, by the names its
-// RenderSettings parser accepts (--view NAME, settings), with display labels.
+// The debug views and overlays the renderer offers, read from the engine's one table
+// (sherpa/gpu/debug_views.h): names (settings, command line), ids the renderer
+// takes, and labels translated here in the table's context.
 #include <QCoreApplication>
 #include <QString>
 
+#include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace sherpa::editor {
@@ -11,14 +14,17 @@ namespace sherpa::editor {
 struct ViewEntry {
     const char* name; // renderer's name, stable (settings, command line)
     QString label;    // translated
+    std::uint32_t id; // gpu::DebugView value, or the gpu::Overlay bit
 };
 
 class ViewCatalog {
-    Q_DECLARE_TR_FUNCTIONS(ViewCatalog)
 public:
     static std::vector<ViewEntry> views();
-    static std::vector<ViewEntry> overlays();
-    static bool isView(const QString& name);
+    static std::vector<ViewEntry> overlays(); // those of the Overlays menu
+    static bool isView(const QString& name) { return viewId(name).has_value(); }
+    static std::optional<std::uint32_t> viewId(const QString& name);
+    static QString viewName(std::uint32_t id);
+    static std::uint32_t cullBoxesOverlay(); // switched from the Culling menu
 };
 
 } // namespace sherpa::editor

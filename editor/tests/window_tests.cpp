@@ -28,6 +28,8 @@
 #include "viewport_window.h"
 #include "window_test_support.h"
 
+#include <sherpa/gpu/debug_views.h>
+
 using namespace sherpa;
 using namespace sherpa::editor;
 
@@ -53,6 +55,7 @@ private Q_SLOTS:
     void cancelKeepsTheScene();
     void switchingFiftyTimesDoesNotGrow();
     void languagesSwitchAtRuntime();
+    void viewMenuIsTheEngineTable();
     void layoutIsSavedAndRestored();
 
 private:
@@ -218,6 +221,44 @@ void WindowTests::languagesSwitchAtRuntime() {
     QVERIFY(!window_->setLanguage(QStringLiteral("xx")));
     QVERIFY(window_->setLanguage(QStringLiteral("en")));
     QCOMPARE(file_menu(), QStringLiteral("&File"));
+}
+
+// View › Debug View and View › Overlays list the engine's table (sherpa/gpu/
+// debug_views.h) in order, with its labels translated; each view entry selects it.
+void WindowTests::viewMenuIsTheEngineTable() {
+    const auto submenu = [this](const QString& title) -> QMenu* {
+        for (QAction* top : window_->menuBar()->actions())
+            if (top->menu())
+                for (QAction* a : top->menu()->actions())
+                    if (a->menu() && a->menu()->title() == title) return a->menu();
+        return nullptr;
+    };
+    QVERIFY(window_->setLanguage(QStringLiteral("de")));
+    QMenu* views = submenu(QStringLiteral("&Debug-Ansicht"));
+    QVERIFY(views);
+    const QList<QAction*> view_actions = views->actions();
+    QCOMPARE(view_actions.size(), qsizetype(gpu::kDebugViews.size()));
+    QCOMPARE(view_actions.at(0)->text(), QStringLiteral("Beleuchtet")); // "Lit", translated
+    for (std::size_t i = 0; i < gpu::kDebugViews.size(); ++i) {
+        const gpu::DebugViewInfo& v = gpu::kDebugViews[i];
+        QCOMPARE(view_actions.at(qsizetype(i))->text(),
+                 QCoreApplication::translate(gpu::kViewLabelContext, v.label));
+    }
+    QVERIFY(window_->setLanguage(QStringLiteral("en")));
+    for (std::size_t i = 0; i < gpu::kDebugViews.size(); ++i) {
+        view_actions.at(qsizetype(i))->trigger();
+        QCOMPARE(window_->debugView(), QString::fromLatin1(gpu::kDebugViews[i].name.data()));
+        QVERIFY(view_actions.at(qsizetype(i))->isChecked());
+    }
+    QVERIFY(window_->setDebugView(QStringLiteral("lit"), false));
+    QMenu* overlays = submenu(QStringLiteral("&Overlays"));
+    QVERIFY(overlays);
+    QStringList expected;
+    for (const gpu::OverlayEntry& o : gpu::kOverlays)
+        if (o.label) expected << QString::fromLatin1(o.label);
+    QStringList shown;
+    for (QAction* a : overlays->actions()) shown << a->text();
+    QCOMPARE(shown, expected);
 }
 
 void WindowTests::layoutIsSavedAndRestored() {

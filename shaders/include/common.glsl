@@ -11,9 +11,9 @@
 #include "material.glsl"
 #include "material_extra.glsl"
 
-const uint MAX_LIGHTS = 16;
-const uint MAX_CASCADES = 4;   // array size in the frame block
-const uint SHADOW_CASCADES = 3; // cascades actually used
+// sherpa_*.glsl: generated at build time from the C++ definitions (gpu_structs.h,
+// debug_views.h) by engine/gpu/tools/glsl_constants.cpp.
+#include "sherpa_frame_limits.glsl" // MAX_LIGHTS, MAX_CASCADES, SHADOW_CASCADES
 
 struct GPULight {
     vec4 position_range;  // xyz world position, w range (0 = infinite)
@@ -93,36 +93,8 @@ layout(push_constant, scalar) uniform Push {
     InstanceIdRef instance_ids;     // 96: gl_InstanceIndex -> GPU instance
 } pc;
 
-// mesh_flags: which streams the GPU holds (bit = VertexAttribute), provenance, glyph kind.
-const uint HAS_POSITION = 1u << 0;
-const uint HAS_NORMAL = 1u << 1;
-const uint HAS_TANGENT = 1u << 2;
-const uint HAS_UV0 = 1u << 3;
-const uint HAS_UV1 = 1u << 4;
-const uint HAS_COLOR = 1u << 5;
-const uint TANGENT_PROVENANCE_SHIFT = 8;  // 0 authored, 1 generated, 2 defaulted
-const uint NORMAL_PROVENANCE_SHIFT = 10;
-const uint GLYPH_KIND_SHIFT = 16;         // 0 normal, 1 tangent, 2 bitangent
-const uint NO_CASCADE = 0xffffffffu;
-
-// Debug views (sherpa::gpu::DebugView).
-const uint VIEW_LIT = 0;
-const uint VIEW_NORMAL = 1;
-const uint VIEW_TANGENT = 2;
-const uint VIEW_BITANGENT = 3;
-const uint VIEW_TANGENT_W = 4;
-const uint VIEW_UV0 = 5;
-const uint VIEW_UV1 = 6;
-const uint VIEW_UV0_CHECKER = 7;
-const uint VIEW_UV1_CHECKER = 8;
-const uint VIEW_BASE_COLOR = 9;
-const uint VIEW_METALLIC = 10;
-const uint VIEW_ROUGHNESS = 11;
-const uint VIEW_OCCLUSION = 12;
-const uint VIEW_EMISSIVE = 13;
-const uint VIEW_GEOMETRIC_VS_SHADING = 14;
-const uint VIEW_PROVENANCE = 15;
-const uint VIEW_SHADING_NORMAL = 16;
+#include "sherpa_mesh_flags.glsl" // mesh_flags: HAS_* stream bits, *_SHIFT, NO_CASCADE
+#include "sherpa_views.glsl"      // VIEW_*: sherpa::gpu::kDebugViews
 
 bool has(uint bit) { return (pc.mesh_flags & bit) != 0u; }
 

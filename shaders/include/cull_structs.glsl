@@ -1,13 +1,10 @@
 // GLSL twins of sherpa::gpu::GPUCullObject / GPUCullParams / VkDrawIndexedIndirectCommand
-// (engine/gpu/include/sherpa/gpu/gpu_culling.h pins every offset). Scalar layout.
+// (engine/gpu/include/sherpa/gpu/gpu_structs.h pins every offset). Scalar layout.
 #ifndef SHERPA_CULL_STRUCTS_GLSL
 #define SHERPA_CULL_STRUCTS_GLSL
 
-#define CULL_SPHERE 0u
-#define CULL_PVERTEX 1u
-#define CULL_EXACT 2u
-#define CULL_INVALID_BIT 0x80000000u
-#define CULL_MAX_SAT_AXES 21
+// CULL_SPHERE, CULL_PVERTEX, CULL_EXACT, CULL_INVALID_BIT, CULL_MAX_SAT_AXES.
+#include "sherpa_cull.glsl" // generated from the C++ definitions
 
 struct CullObject {
     vec3 bmin;     // 0

@@ -3,9 +3,7 @@
 #ifndef SHERPA_MATERIAL_GLSL
 #define SHERPA_MATERIAL_GLSL
 
-#define SHERPA_ALPHA_OPAQUE 0u
-#define SHERPA_ALPHA_MASK 1u
-#define SHERPA_ALPHA_BLEND 2u
+#include "sherpa_alpha_modes.glsl" // SHERPA_ALPHA_*, generated from sherpa::AlphaMode
 
 struct GPUMaterialData {
     vec4 base_color_factor;      // 0

@@ -4,12 +4,7 @@
 #ifndef SHERPA_MATERIAL_EXTRA_GLSL
 #define SHERPA_MATERIAL_EXTRA_GLSL
 
-// Texture slots of GPUMaterialExtra.uv, in this order.
-const uint SLOT_BASE_COLOR = 0;
-const uint SLOT_METALLIC_ROUGHNESS = 1;
-const uint SLOT_NORMAL = 2;
-const uint SLOT_OCCLUSION = 3;
-const uint SLOT_EMISSIVE = 4;
+#include "sherpa_texture_slots.glsl" // SLOT_*, generated: texture slots of GPUMaterialExtra.uv
 
 // KHR_texture_transform as two rows of the 2x3 affine UV matrix; row0.w holds the
 // TEXCOORD set the slot reads (0 or 1).

@@ -4,9 +4,7 @@
 // lavapipe skips the sampling entirely instead of paying for a filtered fetch.
 #ifndef SHERPA_MATERIAL_SAMPLING_GLSL
 #define SHERPA_MATERIAL_SAMPLING_GLSL
-const uint TEX_WHITE = 0u;
-const uint TEX_FLAT_NORMAL = 1u;
-const uint TEX_BLACK = 2u;
+#include "sherpa_default_textures.glsl" // TEX_WHITE, TEX_FLAT_NORMAL, TEX_BLACK (generated)
 
 vec4 base_color(GPUMaterialData m, GPUMaterialExtra x, vec4 vertex_color, vec2 uv0, vec2 uv1) {
     vec4 c = m.base_color_factor * vertex_color;
@@ -57,6 +55,7 @@ vec3 mapped_normal(GPUMaterialData m, GPUMaterialExtra x, vec3 t, vec3 b, vec3 n
     if (m.normal_tex == TEX_FLAT_NORMAL) return n;
     // BC5 normal maps hold x and y only: z comes from unit length (RGBA8 maps are
     // read the same way, so both formats shade alike). glTF's scale applies to x, y.
+    // The only GLSL copy of sherpa::tex::bc5_normal_z (sherpa/texture/bc5_normal.h).
     vec2 xy = sample_slot(x, SLOT_NORMAL, m.normal_tex, uv0, uv1).xy * 2.0 - 1.0;
     vec3 tn = vec3(xy * m.normal_scale, sqrt(max(0.0, 1.0 - dot(xy, xy))));
     return normalize(mat3(t, b, n) * tn);

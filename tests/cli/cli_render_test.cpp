@@ -3,7 +3,7 @@
 #include "cli/cli_run.h"
 #include "test_support.h"
 
-#include <sherpa/gpu/image_io.h>
+#include <sherpa/texture/image.h>
 
 #include <array>
 #include <cstdio>
@@ -35,7 +35,7 @@ TEST(CliRender, WritesPngAndReportWithEveryCategory) {
     std::uint32_t w = 0, h = 0;
     std::vector<std::uint8_t> rgba;
     std::string error;
-    ASSERT_TRUE(sherpa::gpu::read_png_rgba8(png, w, h, rgba, error)) << error;
+    ASSERT_TRUE(sherpa::tex::read_png_rgba8(png, w, h, rgba, error)) << error;
     EXPECT_EQ(w, 96u);
     EXPECT_EQ(h, 64u);
 

@@ -5,7 +5,7 @@
 #include "cli/cli_run.h"
 #include "test_support.h"
 
-#include <sherpa/gpu/image_io.h>
+#include <sherpa/texture/image.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -46,7 +46,7 @@ protected:
         if (rgba) {
             std::uint32_t w = 0, h = 0;
             std::string error;
-            EXPECT_TRUE(sherpa::gpu::read_png_rgba8(png, w, h, *rgba, error)) << error;
+            EXPECT_TRUE(sherpa::tex::read_png_rgba8(png, w, h, *rgba, error)) << error;
         }
         return sherpa::test::read_json(report);
     }

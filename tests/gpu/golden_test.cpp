@@ -4,7 +4,7 @@
 // actual image next to the test binary as golden_actual_NAME.png.
 #include "gpu_test_support.h"
 
-#include <sherpa/gpu/image_io.h>
+#include <sherpa/texture/image.h>
 
 #include <cstdlib>
 #include <ostream>
@@ -75,12 +75,12 @@ TEST_P(GoldenTest, MatchesCommittedImage) {
     const std::string golden = std::string(SHERPA_GOLDEN_DIR) + "/" + c.name + ".png";
     if (const char* update = std::getenv("SHERPA_UPDATE_GOLDENS");
         update && std::string(update) == "1") {
-        ASSERT_TRUE(gpu::write_png(golden, c.width, c.height, actual, error)) << error;
+        ASSERT_TRUE(tex::write_png(golden, c.width, c.height, actual, error)) << error;
         GTEST_SKIP() << "wrote " << golden;
     }
     std::uint32_t w = 0, h = 0;
     std::vector<std::uint8_t> expected;
-    ASSERT_TRUE(gpu::read_png_rgba8(golden, w, h, expected, error)) << error;
+    ASSERT_TRUE(tex::read_png_rgba8(golden, w, h, expected, error)) << error;
     ASSERT_EQ(w, c.width);
     ASSERT_EQ(h, c.height);
     // Tolerance: rasterizers may differ by rounding; a pixel counts as different
@@ -88,7 +88,7 @@ TEST_P(GoldenTest, MatchesCommittedImage) {
     const std::size_t differing = differing_pixels(actual, expected, 12, 3);
     const double fraction = double(differing) / double(std::size_t(w) * h);
     if (fraction > 0.005) {
-        gpu::write_png(std::string("golden_actual_") + c.name + ".png", c.width, c.height, actual,
+        tex::write_png(std::string("golden_actual_") + c.name + ".png", c.width, c.height, actual,
                        error);
         FAIL() << c.name << ": " << differing << " pixels (" << fraction * 100.0
                << "%) differ; actual written to golden_actual_" << c.name << ".png";

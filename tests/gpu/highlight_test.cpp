@@ -5,7 +5,7 @@
 // highlighted render is written to highlight_box.png next to the test binary for inspection.
 #include "gpu_test_support.h"
 
-#include <sherpa/gpu/image_io.h>
+#include <sherpa/texture/image.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -103,7 +103,7 @@ TEST_F(HighlightTest, SelectedInstanceTriangleAndVertexAreDrawn) {
     const Counts detail = count_highlight(detailed);
     EXPECT_GT(detail.magenta, plain.magenta + 100) << "filled triangle and vertex tripod";
     std::string error;
-    EXPECT_TRUE(gpu::write_png("highlight_box.png", kSize, kSize, detailed, error)) << error;
+    EXPECT_TRUE(tex::write_png("highlight_box.png", kSize, kSize, detailed, error)) << error;
 
     // Out of range: no instance, so nothing is highlighted (and nothing breaks).
     s.highlight_instance = 7;

@@ -5,8 +5,8 @@
 // scene (tests/data/make_shadow_scene.py), not against our own earlier output.
 #include "gpu_test_support.h"
 
-#include <sherpa/gpu/image_io.h>
 #include <sherpa/render/render_settings.h>
+#include <sherpa/texture/image.h>
 
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -40,8 +40,8 @@ protected:
         ASSERT_EQ(lit_.size(), std::size_t{s.width} * s.height * 4);
         if (std::getenv("SHERPA_WRITE_SHADOW_IMAGES")) {
             std::string error;
-            gpu::write_png("shadow_" + name + "_lit.png", s.width, s.height, lit_, error);
-            gpu::write_png("shadow_" + name + "_unshadowed.png", s.width, s.height, unshadowed_,
+            tex::write_png("shadow_" + name + "_lit.png", s.width, s.height, lit_, error);
+            tex::write_png("shadow_" + name + "_unshadowed.png", s.width, s.height, unshadowed_,
                            error);
         }
     }

@@ -1,62 +1,24 @@
 #include <sherpa/render/render_settings.h>
 
-#include <array>
-#include <utility>
-
 namespace sherpa::gpu {
 
-namespace {
-constexpr std::array<std::pair<DebugView, std::string_view>, 17> kViews{{
-    {DebugView::Lit, "lit"},
-    {DebugView::Normal, "normal"},
-    {DebugView::Tangent, "tangent"},
-    {DebugView::Bitangent, "bitangent"},
-    {DebugView::TangentW, "tangent-w"},
-    {DebugView::Uv0, "uv0"},
-    {DebugView::Uv1, "uv1"},
-    {DebugView::Uv0Checker, "uv0-checker"},
-    {DebugView::Uv1Checker, "uv1-checker"},
-    {DebugView::BaseColor, "base-color"},
-    {DebugView::Metallic, "metallic"},
-    {DebugView::Roughness, "roughness"},
-    {DebugView::Occlusion, "occlusion"},
-    {DebugView::Emissive, "emissive"},
-    {DebugView::GeometricVsShading, "geometric-vs-shading"},
-    {DebugView::Provenance, "provenance"},
-    {DebugView::ShadingNormal, "shading-normal"},
-}};
-constexpr std::array<std::pair<Overlay, std::string_view>, 6> kOverlays{{
-    {kOverlayWireframe, "wireframe"},
-    {kOverlayNormals, "normals"},
-    {kOverlayTangents, "tangents"},
-    {kOverlayBitangents, "bitangents"},
-    {kOverlayBounds, "aabb"},
-    {kOverlayCullBoxes, "cull-boxes"},
-}};
-} // namespace
-
 std::string_view to_string(DebugView v) {
-    for (auto& [view, name] : kViews)
-        if (view == v) return name;
-    return "?";
+    const auto i = static_cast<std::size_t>(v);
+    return i < kDebugViews.size() ? kDebugViews[i].name : "?";
 }
 
 std::optional<DebugView> parse_debug_view(std::string_view name) {
-    for (auto& [view, n] : kViews)
-        if (n == name) return view;
-    return std::nullopt;
+    return find_debug_view(name);
 }
 
 std::vector<std::string_view> debug_view_names() {
     std::vector<std::string_view> out;
-    for (auto& entry : kViews) out.push_back(entry.second);
+    for (const DebugViewInfo& v : kDebugViews) out.push_back(v.name);
     return out;
 }
 
 std::optional<Overlay> parse_overlay(std::string_view name) {
-    for (auto& [overlay, n] : kOverlays)
-        if (n == name) return overlay;
-    return std::nullopt;
+    return find_overlay(name);
 }
 
 std::string_view to_string(CullPath p) {
@@ -79,24 +41,16 @@ std::optional<CullPath> parse_cull_path(std::string_view name) {
 
 std::vector<std::string_view> overlay_names() {
     std::vector<std::string_view> out;
-    for (auto& entry : kOverlays) out.push_back(entry.second);
+    for (const OverlayEntry& o : kOverlays) out.push_back(o.name);
     return out;
 }
 
 bool needs_all_streams(const RenderSettings& s) {
-    switch (s.view) {
-    case DebugView::Lit:
-    case DebugView::BaseColor:
-    case DebugView::Metallic:
-    case DebugView::Roughness:
-    case DebugView::Occlusion:
-    case DebugView::Emissive:
-    case DebugView::Provenance:
-        break;
-    default:
-        return true;
-    }
-    return (s.overlays & (kOverlayNormals | kOverlayTangents | kOverlayBitangents)) != 0;
+    const auto view = static_cast<std::size_t>(s.view);
+    std::uint32_t streams = view < kDebugViews.size() ? kDebugViews[view].streams : ~0u;
+    for (const OverlayEntry& o : kOverlays)
+        if (s.overlays & o.bit) streams |= o.streams;
+    return streams != 0;
 }
 
 bool prepass_enabled(PrepassMode mode, bool cpu_device, std::uint64_t triangles,

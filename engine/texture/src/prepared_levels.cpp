@@ -1,20 +1,11 @@
+#include <sherpa/texture/bc5_normal.h>
 #include <sherpa/texture/block_codecs.h>
 #include <sherpa/texture/ktx2.h>
 #include <sherpa/texture/prepared_levels.h>
 
-#include <algorithm>
-#include <cmath>
 #include <stdexcept>
 
 namespace sherpa::tex {
-
-void rebuild_normal_z(std::span<std::uint8_t> rgba) {
-    for (std::size_t i = 0; i + 3 < rgba.size(); i += 4) {
-        const float x = rgba[i] / 127.5f - 1.0f, y = rgba[i + 1] / 127.5f - 1.0f;
-        const float z = std::sqrt(std::max(0.0f, 1.0f - x * x - y * y));
-        rgba[i + 2] = static_cast<std::uint8_t>(std::lround((z + 1.0f) * 127.5f));
-    }
-}
 
 std::vector<std::uint8_t> decode_level_rgba8(const PreparedTexture& texture, std::uint32_t level) {
     if (texture.failed || level >= texture.levels.size()) return {};
@@ -25,7 +16,7 @@ std::vector<std::uint8_t> decode_level_rgba8(const PreparedTexture& texture, std
             rgba = decode_image(BlockFormat::Bc7, texture.levels[level], w, h, 1);
         } else if (texture.format == VkFormat::Bc5UnormBlock) {
             rgba = decode_image(BlockFormat::Bc5, texture.levels[level], w, h, 1);
-            rebuild_normal_z(rgba);
+            rebuild_bc5_z(rgba); // z from x and y, as shaded
         } else {
             rgba = texture.levels[level];
         }

@@ -1,3 +1,4 @@
+#include <sherpa/texture/bc5_normal.h>
 #include <sherpa/texture/quality.h>
 
 #include <algorithm>
@@ -38,8 +39,7 @@ namespace {
 void decode_normal(const std::uint8_t* t, bool use_blue, double n[3]) {
     n[0] = t[0] / 127.5 - 1.0;
     n[1] = t[1] / 127.5 - 1.0;
-    n[2] =
-        use_blue ? t[2] / 127.5 - 1.0 : std::sqrt(std::max(0.0, 1.0 - n[0] * n[0] - n[1] * n[1]));
+    n[2] = use_blue ? t[2] / 127.5 - 1.0 : bc5_normal_z(n[0], n[1]);
     const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     if (len < 1e-12) {
         n[0] = n[1] = 0.0, n[2] = 1.0;

@@ -12,6 +12,8 @@
 #include <glm/glm.hpp>
 
 #include <sherpa/gpu/commands.h>
+#include <sherpa/render/gpu_structs.h>
+#include <sherpa/render/gpu_scene.h>
 #include <sherpa/gpu/resources.h>
 #include <sherpa/render/gpu_scene.h>
 #include <sherpa/scene/culling.h>
@@ -19,36 +21,8 @@
 
 namespace sherpa::gpu {
 
-// Twins of shaders/include/cull_structs.glsl (scalar layout).
-struct GPUCullObject;
+// GPUCullObject, GPUCullParams: gpu_structs.h, with the engine's other GPU twins.
 GPUCullObject make_cull_object(const Aabb& box, std::uint32_t batch, std::uint32_t instance);
-struct GPUCullObject {
-    glm::vec3 min;
-    std::uint32_t batch;
-    glm::vec3 max;
-    std::uint32_t instance;
-};
-static_assert(sizeof(GPUCullObject) == 32);
-static_assert(offsetof(GPUCullObject, batch) == 12);
-static_assert(offsetof(GPUCullObject, max) == 16);
-static_assert(offsetof(GPUCullObject, instance) == 28);
-
-inline constexpr std::uint32_t kCullInvalidBit = 0x80000000u;
-inline constexpr std::uint32_t kCullMaxSatAxes = 21;
-
-struct GPUCullParams {
-    glm::vec4 planes[6];
-    glm::vec4 sat_axis[kCullMaxSatAxes];
-    glm::vec2 sat_range[kCullMaxSatAxes];
-    std::uint32_t plane_count, sat_count, method, object_count, empty;
-};
-static_assert(offsetof(GPUCullParams, sat_axis) == 96);
-static_assert(offsetof(GPUCullParams, sat_range) == 432);
-static_assert(offsetof(GPUCullParams, plane_count) == 600);
-static_assert(offsetof(GPUCullParams, object_count) == 612);
-static_assert(offsetof(GPUCullParams, empty) == 616);
-static_assert(sizeof(VkDrawIndexedIndirectCommand) == 20);
-
 GPUCullParams cull_params(const Frustum& frustum, CullMethod method, std::uint32_t object_count);
 
 // Results of one culling run, read back (check mode).

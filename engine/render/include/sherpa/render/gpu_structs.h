@@ -1,6 +1,9 @@
 #pragma once
-// C++ twins of the GPU-visible structures in shaders/include/{common,material}.glsl.
-// Every offset is pinned here; change both sides together.
+// C++ twins of the GPU-visible structures of the GPU layer, in one place:
+// shaders/include/{common,material_extra,cull_structs}.glsl (GPUMaterialData, the
+// scene layer's, is in sherpa/scene/material.h). Every offset is pinned here; change
+// both sides together. The constants and enum values the shaders use are not
+// copied: sherpa_glsl_constants generates them from this header (sherpa_constants.glsl).
 #include <cstddef>
 #include <cstdint>
 
@@ -133,5 +136,33 @@ struct GPULineVertex {
     glm::vec4 color;
 };
 static_assert(sizeof(GPULineVertex) == 32);
+
+// Culling (shaders/include/cull_structs.glsl, scalar layout).
+struct GPUCullObject {
+    glm::vec3 min;
+    std::uint32_t batch;
+    glm::vec3 max;
+    std::uint32_t instance;
+};
+static_assert(sizeof(GPUCullObject) == 32);
+static_assert(offsetof(GPUCullObject, batch) == 12);
+static_assert(offsetof(GPUCullObject, max) == 16);
+static_assert(offsetof(GPUCullObject, instance) == 28);
+
+inline constexpr std::uint32_t kCullInvalidBit = 0x80000000u;
+inline constexpr std::uint32_t kCullMaxSatAxes = 21;
+
+struct GPUCullParams {
+    glm::vec4 planes[6];
+    glm::vec4 sat_axis[kCullMaxSatAxes];
+    glm::vec2 sat_range[kCullMaxSatAxes];
+    std::uint32_t plane_count, sat_count, method, object_count, empty;
+};
+static_assert(offsetof(GPUCullParams, sat_axis) == 96);
+static_assert(offsetof(GPUCullParams, sat_range) == 432);
+static_assert(offsetof(GPUCullParams, plane_count) == 600);
+static_assert(offsetof(GPUCullParams, object_count) == 612);
+static_assert(offsetof(GPUCullParams, empty) == 616);
+static_assert(sizeof(VkDrawIndexedIndirectCommand) == 20);
 
 } // namespace sherpa::gpu

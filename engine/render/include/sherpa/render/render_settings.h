@@ -8,44 +8,12 @@
 
 #include <glm/glm.hpp>
 
+#include <sherpa/gpu/debug_views.h>
 #include <sherpa/render/camera.h>
 #include <sherpa/scene/culling.h>
 #include <sherpa/scene/shadow_cascades.h>
 
 namespace sherpa::gpu {
-
-// Values equal the VIEW_* constants in shaders/include/common.glsl.
-enum class DebugView : std::uint32_t {
-    Lit = 0,
-    Normal = 1,    // interpolated vertex normal (world)
-    Tangent = 2,   // world tangent xyz
-    Bitangent = 3, // cross(N, T) * w
-    TangentW = 4,  // handedness: green +1, red -1, yellow 0
-    Uv0 = 5,
-    Uv1 = 6,
-    Uv0Checker = 7,
-    Uv1Checker = 8,
-    BaseColor = 9,
-    Metallic = 10,
-    Roughness = 11,
-    Occlusion = 12,
-    Emissive = 13,
-    GeometricVsShading = 14, // angle between face normal and normal-mapped shading normal
-    Provenance = 15,         // tangent provenance: green authored, yellow generated, red defaulted
-    ShadingNormal = 16,      // normal after normal mapping (world)
-};
-
-enum Overlay : std::uint32_t {
-    kOverlayWireframe = 1u << 0,
-    kOverlayNormals = 1u << 1,
-    kOverlayTangents = 1u << 2,
-    kOverlayBitangents = 1u << 3,
-    kOverlayBounds = 1u << 4,
-    // Instance boxes coloured by the camera cull: green visible, red culled, yellow
-    // kept by the conservative test although the exact test rejects it. With a
-    // frozen culling camera its frustum is drawn too.
-    kOverlayCullBoxes = 1u << 5,
-};
 
 // Which path culls the camera passes.
 enum class CullPath : std::uint32_t {
@@ -59,6 +27,8 @@ std::optional<CullPath> parse_cull_path(std::string_view name);
 // Depth prepass before opaque shading. Auto picks per device (prepass_enabled).
 enum class PrepassMode : std::uint32_t { Auto, On, Off };
 
+// Views and overlays by their names in kDebugViews / kOverlays (debug_views.h):
+// parsed once where a name enters (command line, editor settings), never per frame.
 std::string_view to_string(DebugView v);
 std::optional<DebugView> parse_debug_view(std::string_view name);
 std::vector<std::string_view> debug_view_names();

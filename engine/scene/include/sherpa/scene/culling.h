@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 
 #include <sherpa/core/aabb.h>
+#include <sherpa/core/cpu_features.h>
 
 namespace sherpa {
 
@@ -75,9 +76,7 @@ struct BoxesSoA {
     }
 };
 
-enum class SimdLevel : std::uint8_t { Scalar, Avx2, Avx512 };
-std::string_view to_string(SimdLevel s);
-SimdLevel best_simd_level(); // runtime CPU dispatch
+// SimdLevel, best_simd_level(): sherpa/core/cpu_features.h (runtime CPU dispatch).
 
 struct CullCounts {
     std::uint64_t tested = 0, visible = 0, culled = 0, invalid = 0;

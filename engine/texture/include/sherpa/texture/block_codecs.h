@@ -11,13 +11,13 @@
 #include <string_view>
 #include <vector>
 
-#include <sherpa/scene/culling.h>
+#include <sherpa/core/cpu_features.h>
 #include <sherpa/texture/quality_levels.h>
 
 namespace sherpa::tex {
 
 // Instruction sets the encoders have kernels for: the engine's one SimdLevel
-// (scene layer, shared with culling). `best_simd_level()` asks the CPU; callers
+// (core layer, shared with the scene layer's culling). `best_simd_level()` asks the CPU; callers
 // pass the level explicitly so tests can compare kernels.
 using ::sherpa::best_simd_level;
 using ::sherpa::SimdLevel;

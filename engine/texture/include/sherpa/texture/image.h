@@ -1,6 +1,7 @@
 #pragma once
 // Decoded images: tightly packed RGBA8, and decoding of encoded sources (PNG,
-// JPEG, ...) through OpenImageIO.
+// JPEG, ...) through OpenImageIO. The engine's one image I/O module: the GPU layer,
+// the CLI and the tests read and write PNGs through it too.
 #include <cstdint>
 #include <filesystem>
 #include <span>
@@ -34,5 +35,13 @@ bool read_image_file(const std::filesystem::path& path, RgbaImage& out, std::str
 // Writes an RGBA8 image with OpenImageIO (format from the extension).
 bool write_image_file(const std::filesystem::path& path, const RgbaImage& image,
                       std::string& error);
+
+// PNG of rendered RGBA8 frames (golden images, sherpa-cli render): the pixels are
+// stored as they are (unassociated alpha). The file is encoded in memory and
+// replaced atomically, so readers never see a torn file.
+bool write_png(const std::string& path, std::uint32_t width, std::uint32_t height,
+               const std::vector<std::uint8_t>& rgba, std::string& error);
+bool read_png_rgba8(const std::string& path, std::uint32_t& width, std::uint32_t& height,
+                    std::vector<std::uint8_t>& rgba, std::string& error);
 
 } // namespace sherpa::tex

@@ -1,0 +1,151 @@
+#pragma once
+// The debug views and overlays, once: the enums, and one table row per entry with
+// its stable name (sherpa-cli --view/--overlay, editor settings), the vertex streams
+// it reads whatever the materials use, and an English label the editor translates.
+// Everything else derives from these tables: the CLI's parser and usage text, the
+// editor's View menu, and the shaders' VIEW_* / OVERLAY_* constants, which
+// tools/glsl_constants writes into a generated GLSL header at build time.
+//
+// Header-only and free of Vulkan, so that host tool can include it.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include <sherpa/scene/vertex.h>
+
+// Marks a label for translation without Qt (the engine has none): lupdate is told
+// to read it as QT_TRANSLATE_NOOP (editor/CMakeLists.txt, -tr-function-alias), and
+// the editor passes the label through QCoreApplication::translate(kViewLabelContext).
+#define SHERPA_TRANSLATE_NOOP(context, text) text
+
+namespace sherpa::gpu {
+
+// Values are the VIEW_* constants of the generated shader header (the forward
+// shader's specialization constant), so they are part of the pipeline cache key.
+enum class DebugView : std::uint32_t {
+    Lit = 0,
+    Normal = 1,    // interpolated vertex normal (world)
+    Tangent = 2,   // world tangent xyz
+    Bitangent = 3, // cross(N, T) * w
+    TangentW = 4,  // handedness: green +1, red -1, yellow 0
+    Uv0 = 5,
+    Uv1 = 6,
+    Uv0Checker = 7,
+    Uv1Checker = 8,
+    BaseColor = 9,
+    Metallic = 10,
+    Roughness = 11,
+    Occlusion = 12,
+    Emissive = 13,
+    GeometricVsShading = 14, // angle between face normal and normal-mapped shading normal
+    Provenance = 15,         // tangent provenance: green authored, yellow generated, red defaulted
+    ShadingNormal = 16,      // normal after normal mapping (world)
+};
+
+enum Overlay : std::uint32_t {
+    kOverlayWireframe = 1u << 0,
+    kOverlayNormals = 1u << 1,
+    kOverlayTangents = 1u << 2,
+    kOverlayBitangents = 1u << 3,
+    kOverlayBounds = 1u << 4,
+    // Instance boxes coloured by the camera cull: green visible, red culled, yellow
+    // kept by the conservative test although the exact test rejects it. With a
+    // frozen culling camera its frustum is drawn too.
+    kOverlayCullBoxes = 1u << 5,
+};
+
+// Bit (1 << VertexAttribute) per vertex stream.
+constexpr std::uint32_t stream_bit(VertexAttribute a) {
+    return 1u << static_cast<std::uint32_t>(a);
+}
+inline constexpr std::uint32_t kNormalStream = stream_bit(VertexAttribute::Normal);
+inline constexpr std::uint32_t kTangentStream = stream_bit(VertexAttribute::Tangent);
+inline constexpr std::uint32_t kUv0Stream = stream_bit(VertexAttribute::TexCoord0);
+inline constexpr std::uint32_t kUv1Stream = stream_bit(VertexAttribute::TexCoord1);
+
+// The context the editor translates labels in (the editor's former ViewCatalog,
+// whose translations the .ts files hold).
+inline constexpr const char* kViewLabelContext = "ViewCatalog";
+
+struct DebugViewInfo {
+    DebugView id;
+    std::string_view name; // stable: command line, settings; VIEW_<NAME> in GLSL
+    // Streams the view reads even where no material does (the scene is then uploaded
+    // with StreamPolicy::AllPresent); 0: only what the materials read.
+    std::uint32_t streams;
+    const char* label; // English; translated in kViewLabelContext
+};
+
+struct OverlayEntry {
+    Overlay bit;
+    std::string_view name; // stable: command line; OVERLAY_<NAME> in GLSL
+    std::uint32_t streams; // as DebugViewInfo::streams
+    // English, translated in kViewLabelContext; null: not in the editor's Overlays
+    // menu (cull-boxes is switched by its Culling menu).
+    const char* label;
+};
+
+inline constexpr std::array<DebugViewInfo, 17> kDebugViews{{
+    {DebugView::Lit, "lit", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Lit")},
+    {DebugView::Normal, "normal", kNormalStream, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Normals")},
+    {DebugView::Tangent, "tangent", kTangentStream,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Tangents")},
+    {DebugView::Bitangent, "bitangent", kNormalStream | kTangentStream,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Bitangents")},
+    {DebugView::TangentW, "tangent-w", kTangentStream,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Handedness (tangent w)")},
+    {DebugView::Uv0, "uv0", kUv0Stream, SHERPA_TRANSLATE_NOOP("ViewCatalog", "UV 0")},
+    {DebugView::Uv1, "uv1", kUv1Stream, SHERPA_TRANSLATE_NOOP("ViewCatalog", "UV 1")},
+    {DebugView::Uv0Checker, "uv0-checker", kUv0Stream,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "UV 0 checker")},
+    {DebugView::Uv1Checker, "uv1-checker", kUv1Stream,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "UV 1 checker")},
+    {DebugView::BaseColor, "base-color", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Base colour")},
+    {DebugView::Metallic, "metallic", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Metallic")},
+    {DebugView::Roughness, "roughness", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Roughness")},
+    {DebugView::Occlusion, "occlusion", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Occlusion")},
+    {DebugView::Emissive, "emissive", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Emissive")},
+    {DebugView::GeometricVsShading, "geometric-vs-shading", kNormalStream | kTangentStream,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Geometric vs shading normal")},
+    {DebugView::Provenance, "provenance", 0,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Tangent provenance")},
+    {DebugView::ShadingNormal, "shading-normal", kNormalStream | kTangentStream,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Shading normal")},
+}};
+
+inline constexpr std::array<OverlayEntry, 6> kOverlays{{
+    {kOverlayWireframe, "wireframe", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Wireframe")},
+    {kOverlayNormals, "normals", kNormalStream,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Normal glyphs")},
+    {kOverlayTangents, "tangents", kTangentStream,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Tangent glyphs")},
+    {kOverlayBitangents, "bitangents", kNormalStream | kTangentStream,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Bitangent glyphs")},
+    {kOverlayBounds, "aabb", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Bounding boxes")},
+    {kOverlayCullBoxes, "cull-boxes", 0, nullptr},
+}};
+
+// The row of `v`; the table is indexed by id (checked below).
+constexpr const DebugViewInfo& view_info(DebugView v) {
+    return kDebugViews[static_cast<std::size_t>(v)];
+}
+constexpr bool views_indexed_by_id() {
+    for (std::size_t i = 0; i < kDebugViews.size(); ++i)
+        if (static_cast<std::size_t>(kDebugViews[i].id) != i) return false;
+    return true;
+}
+static_assert(views_indexed_by_id(), "kDebugViews must list the views in id order");
+
+constexpr std::optional<DebugView> find_debug_view(std::string_view name) {
+    for (const DebugViewInfo& v : kDebugViews)
+        if (v.name == name) return v.id;
+    return std::nullopt;
+}
+constexpr std::optional<Overlay> find_overlay(std::string_view name) {
+    for (const OverlayEntry& o : kOverlays)
+        if (o.name == name) return o.bit;
+    return std::nullopt;
+}
+
+} // namespace sherpa::gpu

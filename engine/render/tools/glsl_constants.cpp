@@ -1,0 +1,167 @@
+// Build-time host tool: writes the GLSL constants the shaders share with the C++
+// engine (shaders/include/*.glsl include the result) from the C++ definitions
+// themselves, so no value is copied by hand. Usage: sherpa_glsl_constants OUT_DIR
+//
+// Each constant keeps the form (const uint or #define, literal spelling) its
+// hand-written copy had, so the compiled SPIR-V does not change.
+#include <sherpa/gpu/debug_views.h>
+#include <sherpa/render/gpu_structs.h>
+#include <sherpa/scene/culling.h>
+#include <sherpa/scene/material.h>
+#include <sherpa/scene/vertex.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace sherpa;
+
+// "tangent-w" -> "TANGENT_W": a table name as a GLSL identifier suffix.
+std::string glsl_name(std::string_view name) {
+    std::string out;
+    for (char c : name) out += c == '-' ? '_' : static_cast<char>(std::toupper(c));
+    return out;
+}
+
+std::string hex(std::uint32_t v) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "0x%08xu", v);
+    return buf;
+}
+
+template <typename E> unsigned u(E e) {
+    return static_cast<unsigned>(e);
+}
+
+struct Section {
+    const char* file;    // written into the output directory
+    const char* comment; // where the values come from
+    std::string body;
+};
+
+std::string views() {
+    std::ostringstream o;
+    for (const gpu::DebugViewInfo& v : gpu::kDebugViews)
+        o << "const uint VIEW_" << glsl_name(v.name) << " = " << u(v.id) << ";\n";
+    return o.str();
+}
+
+std::string overlays() {
+    std::ostringstream o;
+    for (const gpu::OverlayEntry& ov : gpu::kOverlays)
+        o << "const uint OVERLAY_" << glsl_name(ov.name) << " = " << u(ov.bit) << "u;\n";
+    return o.str();
+}
+
+std::string mesh_flags() {
+    std::ostringstream o;
+    const std::pair<VertexAttribute, const char*> streams[] = {
+        {VertexAttribute::Position, "POSITION"}, {VertexAttribute::Normal, "NORMAL"},
+        {VertexAttribute::Tangent, "TANGENT"},   {VertexAttribute::TexCoord0, "UV0"},
+        {VertexAttribute::TexCoord1, "UV1"},     {VertexAttribute::Color0, "COLOR"}};
+    static_assert(std::size(streams) == kVertexAttributeCount);
+    for (auto [a, name] : streams) o << "const uint HAS_" << name << " = 1u << " << u(a) << ";\n";
+    o << "const uint TANGENT_PROVENANCE_SHIFT = " << gpu::kTangentProvenanceShift
+      << "; // 0 authored, 1 generated, 2 defaulted\n";
+    o << "const uint NORMAL_PROVENANCE_SHIFT = " << gpu::kNormalProvenanceShift << ";\n";
+    o << "const uint GLYPH_KIND_SHIFT = " << gpu::kGlyphKindShift
+      << "; // 0 normal, 1 tangent, 2 bitangent\n";
+    o << "const uint NO_CASCADE = " << hex(gpu::kNoCascade) << ";\n";
+    return o.str();
+}
+
+std::string texture_slots() {
+    std::ostringstream o;
+    const std::pair<gpu::TextureSlotIndex, const char*> slots[] = {
+        {gpu::kSlotBaseColor, "BASE_COLOR"},
+        {gpu::kSlotMetallicRoughness, "METALLIC_ROUGHNESS"},
+        {gpu::kSlotNormal, "NORMAL"},
+        {gpu::kSlotOcclusion, "OCCLUSION"},
+        {gpu::kSlotEmissive, "EMISSIVE"}};
+    static_assert(std::size(slots) == gpu::kSlotCount);
+    for (auto [slot, name] : slots) o << "const uint SLOT_" << name << " = " << u(slot) << ";\n";
+    return o.str();
+}
+
+// One file per group, included where its hand-written copy stood: glslang numbers
+// even unused constants, so a shader that got constants it does not use (or got
+// them in another order) would compile to different SPIR-V.
+std::vector<Section> sections() {
+    std::ostringstream limits, textures, alpha, cull;
+    limits << "const uint MAX_LIGHTS = " << gpu::kMaxLights << ";\n"
+           << "const uint MAX_CASCADES = " << gpu::kMaxCascades
+           << "; // array size in the frame block\n"
+           << "const uint SHADOW_CASCADES = " << gpu::kShadowCascades
+           << "; // cascades actually used\n";
+    textures << "const uint TEX_WHITE = " << gpu::kWhiteTexture << "u;\n"
+             << "const uint TEX_FLAT_NORMAL = " << gpu::kFlatNormalTexture << "u;\n"
+             << "const uint TEX_BLACK = " << gpu::kBlackTexture << "u;\n";
+    alpha << "#define SHERPA_ALPHA_OPAQUE " << u(AlphaMode::Opaque) << "u\n"
+          << "#define SHERPA_ALPHA_MASK " << u(AlphaMode::Mask) << "u\n"
+          << "#define SHERPA_ALPHA_BLEND " << u(AlphaMode::Blend) << "u\n";
+    cull << "#define CULL_SPHERE " << u(CullMethod::Sphere) << "u\n"
+         << "#define CULL_PVERTEX " << u(CullMethod::PVertex) << "u\n"
+         << "#define CULL_EXACT " << u(CullMethod::Exact) << "u\n"
+         << "#define CULL_INVALID_BIT " << hex(gpu::kCullInvalidBit) << "\n"
+         << "#define CULL_MAX_SAT_AXES " << gpu::kCullMaxSatAxes << "\n";
+    return {
+        {"sherpa_frame_limits.glsl", "sherpa::gpu::kMaxLights, kMaxCascades, kShadowCascades",
+         limits.str()},
+        {"sherpa_mesh_flags.glsl",
+         "push constant mesh_flags: stream bits (sherpa::VertexAttribute), provenance and glyph "
+         "shifts (gpu_structs.h)",
+         mesh_flags()},
+        {"sherpa_views.glsl", "debug views, sherpa::gpu::kDebugViews (debug_views.h)", views()},
+        {"sherpa_overlays.glsl",
+         "overlay bits of RenderSettings::overlays, sherpa::gpu::kOverlays (debug_views.h)",
+         overlays()},
+        {"sherpa_texture_slots.glsl", "texture slots of GPUMaterialExtra.uv, in this order",
+         texture_slots()},
+        {"sherpa_default_textures.glsl", "default bindless textures, sherpa::gpu::kWhiteTexture...",
+         textures.str()},
+        {"sherpa_alpha_modes.glsl", "sherpa::AlphaMode (scene/material.h)", alpha.str()},
+        {"sherpa_cull.glsl",
+         "sherpa::CullMethod (scene/culling.h), sherpa::gpu::kCullInvalidBit, kCullMaxSatAxes",
+         cull.str()},
+    };
+}
+
+std::string file_text(const Section& s) {
+    std::string guard = "SHERPA_GENERATED_";
+    for (const char* c = s.file; *c && *c != '.'; ++c) guard += static_cast<char>(std::toupper(*c));
+    return std::string("// Generated at build time by sherpa_glsl_constants (engine/gpu/tools/\n"
+                       "// glsl_constants.cpp) from the C++ definitions; do not edit.\n// ") +
+           s.comment + "\n#ifndef " + guard + "\n#define " + guard + "\n" + s.body + "#endif\n";
+}
+
+// Writes `text` unless the file already holds it, so shaders recompile only on change.
+bool write_if_changed(const std::string& path, const std::string& text) {
+    {
+        std::ifstream old(path, std::ios::binary);
+        std::ostringstream old_text;
+        old_text << old.rdbuf();
+        if (old && old_text.str() == text) return true;
+    }
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out << text;
+    if (out.flush()) return true;
+    std::fprintf(stderr, "%s: cannot write\n", path.c_str());
+    return false;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: sherpa_glsl_constants OUT_DIR\n");
+        return 2;
+    }
+    for (const Section& section : sections())
+        if (!write_if_changed(std::string(argv[1]) + "/" + section.file, file_text(section)))
+            return 1;
+    return 0;
+}

@@ -1,0 +1,121 @@
+// The debug-view/overlay table (sherpa/gpu/debug_views.h) is the one source of the
+// views: the generated GLSL header must agree with it, the forward shader must
+// handle every view in it (a view added to the table but not to the shader's switch
+// falls through to lit shading: ForwardShaderHasACaseForEveryViewButLit fails), and
+// the CLI must list every name in it.
+#include "cli/cli_run.h"
+#include "gpu_test_support.h"
+
+#include <sherpa/gpu/debug_views.h>
+#include <sherpa/render/render_settings.h>
+
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+
+namespace sherpa::test {
+namespace {
+
+std::string read_text(const std::string& path) {
+    std::ifstream in(path);
+    EXPECT_TRUE(in) << path;
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::string glsl_name(std::string_view name) {
+    std::string out;
+    for (char c : name) out += c == '-' ? '_' : static_cast<char>(std::toupper(c));
+    return out;
+}
+
+// `const uint PREFIX_NAME = VALUE[u];` declarations of a GLSL file.
+std::map<std::string, std::uint32_t> glsl_constants(const std::string& text,
+                                                    const std::string& prefix) {
+    std::map<std::string, std::uint32_t> out;
+    const std::regex decl("const uint " + prefix + "(\\w+) = (\\d+)u?;");
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), decl);
+         it != std::sregex_iterator(); ++it)
+        out[(*it)[1]] = static_cast<std::uint32_t>(std::stoul((*it)[2]));
+    return out;
+}
+
+TEST(DebugViewTable, GeneratedGlslHeaderAgreesWithTheTable) {
+    const std::string dir = SHERPA_GLSL_GENERATED_DIR;
+    std::map<std::string, std::uint32_t> views, overlays;
+    for (const gpu::DebugViewInfo& v : gpu::kDebugViews)
+        views[glsl_name(v.name)] = static_cast<std::uint32_t>(v.id);
+    for (const gpu::OverlayEntry& o : gpu::kOverlays) overlays[glsl_name(o.name)] = o.bit;
+    EXPECT_EQ(glsl_constants(read_text(dir + "/sherpa_views.glsl"), "VIEW_"), views);
+    EXPECT_EQ(glsl_constants(read_text(dir + "/sherpa_overlays.glsl"), "OVERLAY_"), overlays);
+}
+
+TEST(DebugViewTable, ForwardShaderHasACaseForEveryViewButLit) {
+    const std::string frag = read_text(std::string(SHERPA_SHADER_DIR) + "/forward.frag");
+    std::set<std::string> cases;
+    const std::regex case_re("case VIEW_(\\w+):");
+    for (auto it = std::sregex_iterator(frag.begin(), frag.end(), case_re);
+         it != std::sregex_iterator(); ++it)
+        cases.insert((*it)[1]);
+    std::set<std::string> expected;
+    for (const gpu::DebugViewInfo& v : gpu::kDebugViews)
+        if (v.id != gpu::DebugView::Lit) expected.insert(glsl_name(v.name)); // lit: `default:`
+    EXPECT_EQ(cases, expected);
+}
+
+TEST(DebugViewTable, NamesAndLabelsAreUniqueAndComplete) {
+    std::set<std::string_view> names;
+    for (const gpu::DebugViewInfo& v : gpu::kDebugViews) {
+        EXPECT_TRUE(names.insert(v.name).second) << v.name;
+        EXPECT_TRUE(v.label && *v.label) << v.name;
+    }
+    std::uint32_t bits = 0;
+    for (const gpu::OverlayEntry& o : gpu::kOverlays) {
+        EXPECT_TRUE(names.insert(o.name).second) << o.name;
+        EXPECT_EQ(bits & o.bit, 0u) << o.name;
+        bits |= o.bit;
+    }
+}
+
+// The CLI's usage text lists every view and overlay of the table, and takes each.
+TEST(DebugViewTable, CliListsEveryName) {
+    const CliRun r = run_cli("render builtin:default -o /dev/null --view nonsense");
+    EXPECT_NE(r.exit_code, 0);
+    for (const gpu::DebugViewInfo& v : gpu::kDebugViews)
+        EXPECT_NE(r.out.find(std::string(v.name)), std::string::npos) << v.name << "\n" << r.out;
+    for (const gpu::OverlayEntry& o : gpu::kOverlays)
+        EXPECT_NE(r.out.find(std::string(o.name)), std::string::npos) << o.name << "\n" << r.out;
+}
+
+class DebugViewRenderTest : public GpuTest {};
+
+// Each view of the table renders validation-clean and shows something other than the
+// lit image.
+TEST_F(DebugViewRenderTest, EveryViewRendersAndDiffersFromLit) {
+    auto scene = load(gltf_asset("NormalTangentMirrorTest"));
+    ASSERT_TRUE(scene);
+    renderer().load(*scene, gpu::StreamPolicy::AllPresent);
+    gpu::RenderSettings s;
+    s.width = 64;
+    s.height = 64;
+    // Only the lit view draws shadows: compare shading, not shadows.
+    s.shadows = false;
+    std::vector<std::uint8_t> lit;
+    renderer().render(s, &lit);
+    ASSERT_EQ(lit.size(), 64u * 64u * 4u);
+    for (const gpu::DebugViewInfo& v : gpu::kDebugViews) {
+        if (v.id == gpu::DebugView::Lit) continue;
+        s.view = v.id;
+        std::vector<std::uint8_t> rgba;
+        renderer().render(s, &rgba);
+        ASSERT_EQ(rgba.size(), lit.size()) << v.name;
+        EXPECT_GT(differing_pixels(rgba, lit, 2), 100u) << v.name << " renders as lit";
+    }
+    renderer().unload();
+}
+
+} // namespace
+} // namespace sherpa::test

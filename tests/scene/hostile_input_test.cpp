@@ -1,7 +1,7 @@
 // Hostile input (issue #12): files that crashed, exhausted memory or loaded as
 // silent garbage. Each reproducer lives in tests/data (make_malformed.py writes
-// them); docs/robustness.md lists them with what Sherpa does now.
-#include "cli/cli_run.h"
+// them); docs/robustness.md lists them with what Sherpa does now. What sherpa-cli
+// makes of them: tests/cli/cli_hostile_test.cpp.
 #include "load_error_check.h"
 #include "test_support.h"
 
@@ -67,22 +67,6 @@ TEST(HostileSizes, CheckedArithmeticNeverWraps) {
     static_assert(!checked_add(near_max, 16).has_value());
     static_assert(!checked_mul(std::size_t{1} << 40, std::size_t{1} << 30).has_value());
     static_assert(checked_mul(252, 1000).value() == 252000);
-}
-
-// The 67M-vertex file once took 5.1 GB before its 36-byte bufferView was checked:
-// under a 1.5 GB address-space limit it must still fail with the range error.
-TEST(HostileSizes, HugeCountIsRefusedBeforeAllocating) {
-    const std::string cmd = "sh -c 'ulimit -v 1500000 && exec " + std::string(SHERPA_CLI_PATH) +
-                            " info \"" + (test::data_dir() / "huge_count.gltf").string() +
-                            "\"' 2>&1";
-    FILE* p = popen(cmd.c_str(), "r");
-    ASSERT_NE(p, nullptr);
-    std::string out;
-    char buf[4096];
-    for (std::size_t n; (n = fread(buf, 1, sizeof(buf), p)) > 0;) out.append(buf, n);
-    const int status = pclose(p);
-    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << out;
-    EXPECT_NE(out.find("past the end of bufferViews[0]"), std::string::npos) << out;
 }
 
 std::filesystem::path scratch_dir(const std::string& name) {
@@ -176,7 +160,8 @@ TEST(HostileObjects, RepeatedSceneRootsAreShownOnce) {
 }
 
 // glTF requires exact min/max: data outside them is reported (warning and
-// Scene::range_violations), and kept as it is.
+// Scene::range_violations), and kept as it is. `info --json` reports it too:
+// tests/cli/cli_hostile_test.cpp.
 TEST(HostileObjects, DataOutsideDeclaredMinMaxIsReported) {
     const auto r = load_data("position_outside_minmax.gltf");
     ASSERT_TRUE(r) << r.error;
@@ -187,13 +172,6 @@ TEST(HostileObjects, DataOutsideDeclaredMinMaxIsReported) {
     EXPECT_EQ(v.declared_max.at(2), 0.5);
     EXPECT_FLOAT_EQ(v.data_max.at(2), 1.7e38f);
     EXPECT_TRUE(has_warning(*r.scene, "outside the declared min"));
-    const test::CliRun cli = test::run_cli(
-        "info --json '" + (test::data_dir() / "position_outside_minmax.gltf").string() + "'",
-        "2>/dev/null");
-    ASSERT_EQ(cli.exit_code, 0) << cli.out;
-    const auto j = nlohmann::json::parse(cli.out);
-    ASSERT_EQ(j.at("accessor_range_violations").size(), 1u);
-    EXPECT_EQ(j["accessor_range_violations"][0]["elements_outside"], 1);
 }
 
 TEST(HostileObjects, ImageUriNamingADirectoryLeavesTheImageEmptyWithAWarning) {

@@ -24,8 +24,7 @@ TEST(MotionOracle, CliPosedBoundsAreThreeJsVertexBounds) {
                                                     {"BoxAnimated", 1.7}};
     for (const auto& [model, t] : cases) {
         const std::string file = test::gltf_asset(model);
-        const auto r =
-            test::run_cli("info '" + file + "' --json --time " + std::to_string(t));
+        const auto r = test::run_cli("info '" + file + "' --json --time " + std::to_string(t));
         ASSERT_EQ(r.exit_code, 0) << r.out;
         const json ours = json::parse(r.out);
         const json oracle = test::run_three_oracle(file, 0, {t});

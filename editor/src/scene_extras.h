@@ -14,7 +14,7 @@
 namespace sherpa::tex {
 struct PreparedTextureSet;
 struct PreparedTexture;
-}
+} // namespace sherpa::tex
 
 namespace sherpa::editor {
 

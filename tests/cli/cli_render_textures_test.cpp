@@ -113,9 +113,12 @@ TEST_F(CliRenderTextures, HelmetUploadsBc7AndBc5ThenHitsTheCache) {
               (std::map<std::string, int>{{"VK_FORMAT_R8G8B8A8_SRGB", 2},
                                           {"VK_FORMAT_R8G8B8A8_UNORM", 2},
                                           {"VK_FORMAT_BC5_UNORM_BLOCK", 1}}));
-    for (const auto& tex : decoded["textures"]["textures"])
-        if (tex["format"] != "VK_FORMAT_BC5_UNORM_BLOCK")
+    // Braces: EXPECT_* expands to an if/else of its own, which an unbraced if would capture.
+    for (const auto& tex : decoded["textures"]["textures"]) {
+        if (tex["format"] != "VK_FORMAT_BC5_UNORM_BLOCK") {
             EXPECT_NE(tex["note"].get<std::string>().find("decoded to RGBA8"), std::string::npos);
+        }
+    }
     EXPECT_EQ(decoded["validation_messages"], 0);
     ASSERT_EQ(decoded_rgba.size(), first_rgba.size());
     std::size_t off = 0;

@@ -3,8 +3,8 @@
 // skinned, morphed or animated sample model at several times per animation; our node
 // TRS and our skinned + morphed world positions of every vertex must agree with it to
 // 1e-4 of the scene size. The generated InterpolationTest equivalent is compared at
-// 100 times per animation.
-#include "cli/cli_run.h"
+// 100 times per animation. The CLI's posed bounds against it: tests/cli/cli_motion_oracle_test.cpp.
+#include "motion/three_oracle.h"
 #include "test_support.h"
 
 #include <sherpa/scene/animation.h>
@@ -12,7 +12,6 @@
 
 #include <cctype>
 #include <cstdio>
-#include <memory>
 
 #include <gtest/gtest.h>
 
@@ -20,21 +19,6 @@ namespace {
 
 namespace test = sherpa::test;
 using nlohmann::json;
-
-json run_oracle(const std::string& file, int animation, const std::vector<double>& times) {
-    std::string cmd = std::string("'") + SHERPA_NODE + "' '" + SHERPA_THREE_SCRIPT + "' '" +
-                      SHERPA_THREE_CACHE + "' '" + file + "' " + std::to_string(animation);
-    for (double t : times) cmd += " " + std::to_string(t);
-    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
-    std::string out;
-    char buf[65536];
-    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe.get())) > 0;) out.append(buf, n);
-    if (out.empty() || out[0] != '{') {
-        ADD_FAILURE() << "three.js oracle failed (is the three_oracle fixture installed?): " << cmd;
-        return json::object();
-    }
-    return json::parse(out);
-}
 
 struct Agreement {
     double max_position = 0.0, max_trs = 0.0;
@@ -53,7 +37,7 @@ Agreement compare(const std::string& file, int animation, const std::vector<doub
     EXPECT_TRUE(loaded) << loaded.error;
     if (!loaded) return a;
     const sherpa::Scene& scene = *loaded.scene;
-    const json oracle = run_oracle(file, animation, times);
+    const json oracle = test::run_three_oracle(file, animation, times);
     if (!oracle.contains("frames")) return a;
     const double size = glm::length(scene.bounds.extent());
     for (const json& frame : oracle["frames"]) {
@@ -168,37 +152,6 @@ TEST(MotionOracle, InterpolationTestAgreesAt100Times) {
         std::printf("%s: max TRS diff %.3g\n",
                     loaded.scene->animations[static_cast<std::size_t>(anim)].name.c_str(),
                     a.max_trs);
-    }
-}
-
-// `info --json --time T` reports as posed_bounds the bounds of the vertices three.js
-// poses at T (every primitive of the displayed scene).
-TEST(MotionOracle, CliPosedBoundsAreThreeJsVertexBounds) {
-    const std::pair<const char*, double> cases[] = {{"RiggedSimple", 0.5},
-                                                    {"AnimatedMorphSphere", 1.3},
-                                                    {"SimpleMorph", 2.2},
-                                                    {"BoxAnimated", 1.7}};
-    for (const auto& [model, t] : cases) {
-        const std::string file = test::gltf_asset(model);
-        const auto r =
-            sherpa::test::run_cli("info '" + file + "' --json --time " + std::to_string(t));
-        ASSERT_EQ(r.exit_code, 0) << r.out;
-        const json ours = json::parse(r.out);
-        const json oracle = run_oracle(file, 0, {t});
-        ASSERT_TRUE(oracle.contains("frames"));
-        glm::dvec3 lo(1e300), hi(-1e300);
-        for (const json& p : oracle["frames"][0]["primitives"])
-            for (std::size_t i = 0; i + 2 < p["positions"].size(); i += 3)
-                for (int c = 0; c < 3; ++c) {
-                    lo[c] = std::min(lo[c], p["positions"][i + c].get<double>());
-                    hi[c] = std::max(hi[c], p["positions"][i + c].get<double>());
-                }
-        const double size = glm::length(hi - lo);
-        for (int c = 0; c < 3; ++c) {
-            EXPECT_NEAR(ours["posed_bounds"]["min"][c].get<double>(), lo[c], 1e-4 * size) << model;
-            EXPECT_NEAR(ours["posed_bounds"]["max"][c].get<double>(), hi[c], 1e-4 * size) << model;
-        }
-        EXPECT_EQ(ours["pose"]["culling_contains_posed"], true) << model;
     }
 }
 

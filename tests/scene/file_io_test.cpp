@@ -20,7 +20,8 @@ TEST(FileIo, AtomicWriteReplacesTheFileWithUmaskPermissions) {
     std::vector<std::uint8_t> back;
     ASSERT_TRUE(sherpa::read_file(path, back, error)) << error;
     EXPECT_EQ(back, b);
-    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1) << "no temp files left";
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1)
+        << "no temp files left";
     struct stat st {};
     ASSERT_EQ(::stat(path.c_str(), &st), 0);
     const mode_t mask = ::umask(0);

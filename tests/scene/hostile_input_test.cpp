@@ -1,12 +1,11 @@
 // Hostile input (issue #12): files that crashed, exhausted memory or loaded as
 // silent garbage. Each reproducer lives in tests/data (make_malformed.py writes
-// them); docs/robustness.md lists them with what Sherpa does now.
+// them); docs/robustness.md lists them with what Sherpa does now. What sherpa-cli
+// makes of them: tests/cli/cli_hostile_test.cpp.
 #include "load_error_check.h"
 #include "test_support.h"
 
 #include <sherpa/scene/scene_loader.h>
-
-#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -161,7 +160,8 @@ TEST(HostileObjects, RepeatedSceneRootsAreShownOnce) {
 }
 
 // glTF requires exact min/max: data outside them is reported (warning and
-// Scene::range_violations), and kept as it is.
+// Scene::range_violations), and kept as it is. `info --json` reports it too:
+// tests/cli/cli_hostile_test.cpp.
 TEST(HostileObjects, DataOutsideDeclaredMinMaxIsReported) {
     const auto r = load_data("position_outside_minmax.gltf");
     ASSERT_TRUE(r) << r.error;

@@ -19,7 +19,10 @@ rm -rf "$corpus"; mkdir -p "$corpus/src"
 cp "$assets/gltf/BoxTexturedNonPowerOfTwo/glTF/CesiumLogoFlat.png" "$corpus/src/logo211.png"
 cp "$assets/gltf/VC/glTF/prop128.png" "$corpus/src/prop128.png"
 cp "$assets/gltf/TwoSidedPlane/glTF/TwoSidedPlane_Normal.png" "$corpus/src/normal256.png"
-sponza=$(ls "$assets"/textures/sponza/*.jpg | head -n1)
+# A glob, not `ls | head -n1`: when the listing passes 4 KiB, head exits before ls
+# writes the rest, ls dies of SIGPIPE and pipefail ends the script without a word.
+sponzas=("$assets"/textures/sponza/*.jpg)
+sponza="${sponzas[0]}"
 oiiotool "$sponza" --resize 302x170 -o "$corpus/src/sponza302.png"
 oiiotool "$assets/gltf/TextureCoordinateTest/glTF/TextureCoordinateTemplate.png" \
   --resize 192x192 -o "$corpus/src/grid192.png"

@@ -12,10 +12,9 @@
 #include <glm/glm.hpp>
 
 #include <sherpa/gpu/commands.h>
-#include <sherpa/render/gpu_structs.h>
-#include <sherpa/render/gpu_scene.h>
 #include <sherpa/gpu/resources.h>
 #include <sherpa/render/gpu_scene.h>
+#include <sherpa/render/gpu_structs.h>
 #include <sherpa/scene/culling.h>
 #include <sherpa/scene/mesh_pass.h>
 

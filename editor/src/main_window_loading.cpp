@@ -1,0 +1,115 @@
+// MainWindow: opening, reloading and closing scenes, and the background load's
+// progress, result and failure (the load itself runs in SceneLoadJob).
+#include "main_window.h"
+#include "main_window_actions.h"
+
+#include <QFileInfo>
+#include <QLabel>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QStatusBar>
+#include <QTimer>
+
+#include "culling_dock.h"
+#include "culling_monitor.h"
+#include "gpu_viewport.h"
+#include "log_dock.h"
+#include "material_dock.h"
+#include "mesh_dock.h"
+#include "scene_tree_dock.h"
+#include "texture_dock.h"
+#include "viewport_window.h"
+
+namespace sherpa::editor {
+
+void MainWindow::openScene(const QString& spec) {
+    log_->append(LogDock::Level::Info, tr("Loading %1…").arg(spec));
+    // The first scene too prepares its textures on the loader thread: that needs the device.
+    if (vulkan_) createRenderer(); // returns at once when made already
+    if (gpu_) { // textures are prepared on the loader thread, for this device and settings
+        gpu_->setTextureCache(settings_.cacheDirectory(), settings_.textureQuality());
+        loader_.setTexturePreparer(gpu_->texturePreparer());
+    }
+    loader_.start(spec);
+}
+
+void MainWindow::reloadScene() {
+    if (!context_.sceneSpec().isEmpty()) openScene(context_.sceneSpec());
+}
+
+void MainWindow::closeScene() {
+    loader_.cancel();
+    context_.clearScene();
+    updateStatus();
+    viewport_->scheduleFrame();
+}
+
+void MainWindow::cancelLoad() {
+    loader_.cancel();
+}
+
+void MainWindow::onProgress(LoadStep step, int done, int total) {
+    const bool busy = step != LoadStep::Idle;
+    progress_->setVisible(busy);
+    cancel_->setVisible(busy);
+    if (!busy) return;
+    progress_->setRange(0, std::max(total, 1));
+    progress_->setValue(std::min(done, std::max(total, 1)));
+    switch (step) {
+    case LoadStep::Parse:
+        progress_->setFormat(tr("1/4 parsing…"));
+        break;
+    case LoadStep::Geometry:
+        progress_->setFormat(tr("2/4 geometry…"));
+        break;
+    case LoadStep::Tangents:
+        progress_->setFormat(tr("3/4 tangents: mesh %1 of %2").arg(done).arg(total));
+        break;
+    case LoadStep::Textures:
+        progress_->setFormat(tr("4/4 textures: %1 of %2").arg(done).arg(total));
+        break;
+    case LoadStep::Idle:
+        break;
+    }
+    last_progress_ = progress_->text();
+}
+
+void MainWindow::onLoaded(const QString& spec, const LoadOutcome& outcome, double ms) {
+    // The swap: one assignment, so the old scene is shown until this very moment.
+    context_.setScene(spec, outcome.scene, outcome.extras);
+    settings_.addRecentFile(spec);
+    for (const std::string& w : outcome.scene->warnings)
+        log_->append(LogDock::Level::Warning, QString::fromStdString(w));
+    log_->append(LogDock::Level::Info,
+                 tr("Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).")
+                     .arg(spec)
+                     .arg(ms, 0, 'f', 1)
+                     .arg(outcome.extras->load_ms, 0, 'f', 1)
+                     .arg(outcome.extras->thumbnails_ms, 0, 'f', 1)
+                     .arg(outcome.extras->textures_ms, 0, 'f', 1));
+    viewport_->camera().frameAuto(outcome.scene->bounds);
+    viewport_->setAutoFrame(true);
+    onCameraChanged();
+    updateStatus();
+    Q_EMIT sceneLoaded(spec, ms);
+}
+
+void MainWindow::onLoadFailed(const QString& spec, const QString& error) {
+    log_->append(LogDock::Level::Error, error);
+    // Say what is on screen now: the previous scene, or nothing when there was none.
+    const bool kept = context_.scene() != nullptr;
+    statusBar()->showMessage(kept ? tr("Could not load %1; the current scene is kept.").arg(spec)
+                                  : tr("Could not load %1; no scene is open.").arg(spec),
+                             8000);
+    auto* box = new QMessageBox(
+        QMessageBox::Warning, tr("Load failed"),
+        kept ? tr("Could not load %1:\n%2\n\nThe current scene is kept.").arg(spec, error)
+             : tr("Could not load %1:\n%2\n\nNo scene is open.").arg(spec, error),
+        QMessageBox::Ok, this);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open(); // not modal: the editor stays usable (and scriptable)
+    Q_EMIT loadFailed(spec, error);
+}
+
+} // namespace sherpa::editor

@@ -9,6 +9,8 @@
 #include <sherpa/core/file_io.h>
 #include <sherpa/scene/scene_loader.h>
 
+#include "gltf_validate.h" // engine/scene/src: the importer's own depth scan
+
 namespace sherpa::fuzz {
 
 namespace fs = std::filesystem;
@@ -58,30 +60,6 @@ std::vector<std::uint8_t> make_glb(const std::string& json, std::span<const std:
     return out;
 }
 
-// True when the JSON text nests deeper than `limit` (strings skipped). Such a seed is
-// fuzzed at the byte level only: copying its parsed document recurses once per level
-// and overflowed the stack under AddressSanitizer (tests/data/deep_nesting.gltf).
-bool nests_deeper_than(std::span<const std::uint8_t> text, std::size_t limit) {
-    std::size_t depth = 0;
-    bool in_string = false;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const std::uint8_t c = text[i];
-        if (in_string) {
-            if (c == '\\')
-                ++i;
-            else if (c == '"')
-                in_string = false;
-        } else if (c == '"') {
-            in_string = true;
-        } else if (c == '[' || c == '{') {
-            if (++depth > limit) return true;
-        } else if ((c == ']' || c == '}') && depth > 0) {
-            --depth;
-        }
-    }
-    return false;
-}
-
 } // namespace
 
 bool GltfTarget::init(const TargetConfig& config, std::string& error) {
@@ -100,7 +78,10 @@ bool GltfTarget::init(const TargetConfig& config, std::string& error) {
         seed.source = file;
         seed.text = read_all(file);
         if (seed.text.empty() || seed.text.size() > config.max_size) continue;
-        if (!nests_deeper_than(seed.text, 256))
+        // Seeds nesting deeper than the importer parses are mutated as bytes only:
+        // copying their parsed document recurses once per level and overflowed the
+        // stack under AddressSanitizer (tests/data/deep_nesting.gltf).
+        if (detail::json_depth_exceeded_at(seed.text, detail::kMaxJsonDepth) == SIZE_MAX)
             seed.doc = nlohmann::json::parse(seed.text.begin(), seed.text.end(), nullptr, false);
         if (seed.doc.is_object() && seed.doc["buffers"].is_array())
             for (const auto& buffer : seed.doc["buffers"]) {

@@ -72,29 +72,11 @@ std::string glb_json(Bytes b, Bytes& json_bytes) {
     return {};
 }
 
-// Nesting depth, counted without recursion (strings skipped, escapes honoured).
 std::string check_depth(Bytes b) {
-    std::size_t depth = 0;
-    bool in_string = false;
-    for (std::size_t i = 0; i < b.size(); ++i) {
-        const std::uint8_t c = b[i];
-        if (in_string) {
-            if (c == '\\')
-                ++i;
-            else if (c == '"')
-                in_string = false;
-        } else if (c == '"') {
-            in_string = true;
-        } else if (c == '{' || c == '[') {
-            if (++depth > kMaxJsonDepth)
-                return "JSON nests deeper than " + std::to_string(kMaxJsonDepth) +
-                       " levels (at byte " + std::to_string(i) +
-                       "); no glTF needs that, and parsing it would overflow the stack";
-        } else if ((c == '}' || c == ']') && depth > 0) {
-            --depth;
-        }
-    }
-    return {};
+    const std::size_t at = json_depth_exceeded_at(b, kMaxJsonDepth);
+    if (at == SIZE_MAX) return {};
+    return "JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels (at byte " +
+           std::to_string(at) + "); no glTF needs that, and parsing it would overflow the stack";
 }
 
 std::string describe(const json& v) {
@@ -325,6 +307,27 @@ std::string validate_gltf_bytes(std::span<const std::uint8_t> bytes) {
     if (std::string e = check_asset(root); !e.empty()) return e;
     if (std::string e = check_required_extensions(root); !e.empty()) return e;
     return check_properties(root);
+}
+
+std::size_t json_depth_exceeded_at(std::span<const std::uint8_t> text, std::size_t limit) {
+    std::size_t depth = 0;
+    bool in_string = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const std::uint8_t c = text[i];
+        if (in_string) {
+            if (c == '\\')
+                ++i;
+            else if (c == '"')
+                in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '{' || c == '[') {
+            if (++depth > limit) return i;
+        } else if ((c == '}' || c == ']') && depth > 0) {
+            --depth;
+        }
+    }
+    return SIZE_MAX;
 }
 
 } // namespace sherpa::detail

@@ -14,6 +14,10 @@ namespace sherpa::detail {
 // a few more); tinygltf recurses per level and overflowed at ~20,000.
 inline constexpr std::size_t kMaxJsonDepth = 256;
 
+// Byte offset of the first bracket that nests deeper than `limit` in JSON text
+// (strings skipped, escapes honoured, no recursion), or SIZE_MAX when none does.
+std::size_t json_depth_exceeded_at(std::span<const std::uint8_t> text, std::size_t limit);
+
 // The problem with a .gltf/.glb file's bytes, or an empty string when they may be
 // handed to tinygltf. Never throws.
 std::string validate_gltf_bytes(std::span<const std::uint8_t> bytes);

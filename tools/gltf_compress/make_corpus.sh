@@ -14,21 +14,15 @@ install="$(dirname "$0")/../npm_cache_install.sh"
 gltfpack="$cache/gltfpack/node_modules/.bin/gltfpack"
 gltf_transform="$cache/gltf-transform/node_modules/.bin/gltf-transform"
 corpus="$cache/corpus"
-stamp="$corpus/manifest.txt"
 version="2" # bump when the list below changes
-if [ -f "$stamp" ] && head -n1 "$stamp" | grep -qx "# corpus v$version"; then
-  echo "compressed-geometry corpus v$version cached in $corpus"; exit 0
-fi
-rm -rf "$corpus"; mkdir -p "$corpus"
-{
-  echo "# corpus v$version"
-  echo "# file source-model codec: one compressed file per line"
-} >"$stamp.tmp"
+source "$(dirname "$0")/../corpus_lib.sh"
+corpus_is_current "$corpus" "$version" compressed-geometry && exit 0
+corpus_start "$corpus" "$version" "file source-model codec: one compressed file per line"
 pack() { # output, model, codec, gltfpack options...
   local out="$1" model="$2" codec="$3"; shift 3
-  "$gltfpack" -i "$assets/gltf/$model/glTF/$model.gltf" -o "$corpus/$out" "$@" \
-    >"$corpus/$out.log" 2>&1 || { echo "gltfpack failed on $out:"; tail -n 5 "$corpus/$out.log"; exit 1; } >&2
-  echo "$out $model $codec" >>"$stamp.tmp"
+  run_logged "$corpus/$out.log" "gltfpack on $out" \
+    "$gltfpack" -i "$assets/gltf/$model/glTF/$model.gltf" -o "$corpus/$out" "$@"
+  corpus_add "$corpus" "$out $model $codec"
 }
 for model in Duck DamagedHelmet BoxTextured 2CylinderEngine; do
   pack "$model.meshopt.glb" "$model" EXT_meshopt_compression -cc
@@ -38,13 +32,12 @@ pack Duck.meshopt.gltf Duck EXT_meshopt_compression -cc # .gltf + .bin: the brok
 pack Duck.khr_meshopt.glb Duck KHR_meshopt_compression -cc -ce khr
 draco() { # output, model
   local out="$1" model="$2"
-  "$gltf_transform" draco "$assets/gltf/$model/glTF/$model.gltf" "$corpus/$out" \
-    >"$corpus/$out.log" 2>&1 || { echo "gltf-transform draco failed on $out:"; tail -n 5 "$corpus/$out.log"; exit 1; } >&2
-  echo "$out $model KHR_draco_mesh_compression" >>"$stamp.tmp"
+  run_logged "$corpus/$out.log" "gltf-transform draco on $out" \
+    "$gltf_transform" draco "$assets/gltf/$model/glTF/$model.gltf" "$corpus/$out"
+  corpus_add "$corpus" "$out $model KHR_draco_mesh_compression"
 }
 for model in Duck DamagedHelmet BoxTextured 2CylinderEngine; do
   draco "$model.draco.glb" "$model"
 done
 draco Duck.draco.gltf Duck # .gltf + .bin: the broken variants start here
-mv "$stamp.tmp" "$stamp"
-echo "compressed-geometry corpus v$version written to $corpus"
+corpus_finish "$corpus" "$version" compressed-geometry

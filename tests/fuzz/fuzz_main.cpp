@@ -39,7 +39,7 @@ constexpr const char* kUsage =
     "                   [--findings DIR] [--work DIR] [--assets DIR] [--data DIR]\n"
     "                   [--max-size BYTES] [--max-seed-size BYTES] [--case-timeout SECONDS]\n"
     "                   [--jobs J] [--case I]\n"
-    "Runs N cases per target (gltf, glb, tangents, ktx2, cache; default all), case i of\n"
+    "Runs N cases per target (gltf, glb, tangents, ktx2, cache, basis; default all), case i of\n"
     "target t made from (S, t, i) alone. --time-limit stops each target after its share.\n"
     "--jobs J runs J worker processes, each every J-th case (the same cases as one job).\n"
     "--case I runs that one case in this process (to debug a reproducer). Exit 0: no\n"

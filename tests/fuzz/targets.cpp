@@ -1,5 +1,6 @@
 #include "targets.h"
 
+#include "basis_target.h"
 #include "gltf_targets.h"
 #include "texture_targets.h"
 
@@ -12,6 +13,7 @@ std::vector<std::unique_ptr<Target>> make_targets() {
     t.push_back(std::make_unique<TangentsTarget>());
     t.push_back(std::make_unique<Ktx2Target>());
     t.push_back(std::make_unique<CacheTarget>());
+    t.push_back(std::make_unique<BasisTarget>());
     return t;
 }
 

@@ -39,7 +39,7 @@ public:
     virtual std::vector<std::filesystem::path> case_files() const = 0;
 };
 
-// "gltf", "glb", "tangents", "ktx2", "cache", in that order.
+// "gltf", "glb", "tangents", "ktx2", "cache", "basis", in that order.
 std::vector<std::unique_ptr<Target>> make_targets();
 
 } // namespace sherpa::fuzz

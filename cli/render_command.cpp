@@ -219,7 +219,7 @@ int run_render(Args args) {
         // texture pipeline's: nothing the file holds is dropped without a word.
         for (const auto& w : loaded.scene->warnings)
             std::fprintf(stderr, "warning: %s\n", w.c_str());
-        for (const auto& w : renderer.scene()->warnings())
+        for (const auto& w : renderer.scene()->materials().textures().warnings())
             std::fprintf(stderr, "warning: %s\n", w.c_str());
         if (!report_path.empty()) {
             const std::string text = render_report_json(renderer, run).dump(2) + "\n";

@@ -99,10 +99,10 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
                  : 0.0}};
         j["triangles"] = scene->triangle_count();
         j["draw_groups"] = scene->groups().size();
-        j["warnings"] = scene->warnings();
+        j["warnings"] = scene->materials().textures().warnings();
         // What needs no action (how textures were stored for this device).
-        j["notices"] = scene->textures().prepared().notices;
-        j["textures"] = textures_json(scene->textures(), run.cache_dir);
+        j["notices"] = scene->materials().textures().prepared().notices;
+        j["textures"] = textures_json(scene->materials().textures(), run.cache_dir);
     }
     j["load_ms"] = {{"scene_load", run.timing.scene_load_ms},
                     {"texture_prepare", run.timing.texture_prepare_ms},
@@ -160,7 +160,7 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
         j["depth_prepass"] = {{"draw_calls", last.prepass.draw_calls},
                               {"triangles", last.prepass.triangles}};
     }
-    if (renderer.context().validation_enabled())
+    if (renderer.context().validation().enabled())
         j["validation_messages"] = renderer.context().validation().count();
     return j;
 }

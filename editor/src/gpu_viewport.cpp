@@ -2,10 +2,11 @@
 // which would hide the Vulkan prototypes the engine's handle types are built on.
 #include <sherpa/gpu/context.h>
 #include <sherpa/gpu/devices.h>
+#include <sherpa/gpu/presenter.h>
 #include <sherpa/render/cull_check.h>
 #include <sherpa/render/gpu_scene.h>
 #include <sherpa/render/material_readback.h>
-#include <sherpa/render/presenter.h>
+#include <sherpa/render/presented_frame.h>
 #include <sherpa/render/renderer.h>
 
 #include "gpu_viewport.h"
@@ -164,7 +165,8 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame) {
     if (!impl_->presenter || impl_->surface != surface) {
         impl_->presenter.reset();
         impl_->presenter = std::make_unique<gpu::Presenter>(
-            *impl_->renderer, reinterpret_cast<VkSurfaceKHR>(surface), frame.width, frame.height);
+            *impl_->context, impl_->renderer->resources(), reinterpret_cast<VkSurfaceKHR>(surface),
+            frame.width, frame.height);
         impl_->surface = surface;
         impl_->width = frame.width;
         impl_->height = frame.height;
@@ -173,7 +175,8 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame) {
         impl_->width = frame.width;
         impl_->height = frame.height;
     }
-    const bool shown = impl_->presenter->present_frame(settings);
+    gpu::PresentedFrame presented(*impl_->renderer, settings);
+    const bool shown = impl_->presenter->present_frame(presented);
     impl_->renderer->resources().collect_garbage();
     return shown;
 }
@@ -198,7 +201,7 @@ namespace sherpa::editor {
 
 std::uint64_t GpuViewport::textureBytes() const {
     const gpu::GpuScene* scene = impl_->renderer->scene();
-    return scene ? scene->textures().gpu_bytes() : 0;
+    return scene ? scene->materials().textures().gpu_bytes() : 0;
 }
 
 bool GpuViewport::lastCullPasses(std::vector<CullStats>& passes, bool& cached_shadows) const {

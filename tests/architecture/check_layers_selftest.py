@@ -6,10 +6,10 @@ Runs the checker as CTest does (same --layers list, passed on by CMake) on a cle
 line and the layers). Exit 0 when every case behaves, 1 otherwise.
 """
 import argparse
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
+
+from selftest_tree import run_cases
 
 CHECKER = Path(__file__).with_name("check_layers.py")
 
@@ -50,33 +50,13 @@ CASES = [
 ]
 
 
-def run_case(layers, extra):
-    with tempfile.TemporaryDirectory(prefix="sherpa_layers_") as tmp:
-        root = Path(tmp)
-        for rel, text in {**CLEAN, **extra}.items():
-            (root / rel).parent.mkdir(parents=True, exist_ok=True)
-            (root / rel).write_text(text)
-        r = subprocess.run([sys.executable, str(CHECKER), "--root", str(root), "--layers", *layers],
-                           capture_output=True, text=True, check=False)
-        return r.returncode, r.stdout + r.stderr
-
-
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--layers", required=True, nargs="+", help="layer order, lowest first")
     layers = ap.parse_args(argv).layers
-    failures = 0
-    for name, extra, want_rc, fragments in CASES:
-        rc, out = run_case(layers, extra)
-        missing = [f for f in fragments if f not in out]
-        ok = rc == want_rc and not missing
-        failures += not ok
-        print(f"{'ok  ' if ok else 'FAIL'} {name}: exit {rc} (want {want_rc})")
-        if not ok:
-            print("  missing: " + "; ".join(missing) + "\n  output:\n    "
-                  + out.replace("\n", "\n    "))
-    print(f"check_layers self-test: {len(CASES) - failures} of {len(CASES)} cases behave")
-    return 1 if failures else 0
+    cases = [(name, {**CLEAN, **extra}, ["--layers", *layers], want_rc, fragments)
+             for name, extra, want_rc, fragments in CASES]
+    return run_cases("check_layers", CHECKER, cases)
 
 
 if __name__ == "__main__":

@@ -47,12 +47,41 @@ TEST_F(ResourcesTest, DestructionWaitsForTheSubmissionsThatMayUseIt) {
     EXPECT_EQ(rm.counts().pending_destruction, 1u);
     gpu::CommandRecorder rec(context());
     rec.begin();
-    rm.wait_for(rec.submit(rm));
+    rm.timeline().wait_for(rec.submit(rm));
     rm.collect_garbage();
     EXPECT_EQ(rm.counts().pending_destruction, 0u);
     EXPECT_EQ(rm.counts().total(), 0u);
     EXPECT_EQ(gpu::live_vulkan_objects(), live_before + 1)
         << "only the recorder's command pool remains";
+}
+
+TEST_F(ResourcesTest, ImagesAndSamplersAreReleasedWithTheBuffersOfTheirSubmission) {
+    gpu::ResourceManager rm(context());
+    gpu::ImageDesc d;
+    d.usage = VK_IMAGE_USAGE_SAMPLED_BIT;
+    d.name = "img";
+    gpu::ImageHandle image = rm.images().create(d);
+    auto si = gpu::vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+    gpu::SamplerHandle sampler = rm.images().create_sampler(si);
+    EXPECT_EQ(rm.counts().images, 1u);
+    EXPECT_EQ(rm.counts().samplers, 1u);
+    const gpu::ImageHandle copy = image;
+    rm.images().destroy(image);
+    rm.images().destroy(sampler);
+    EXPECT_FALSE(image.valid());
+    EXPECT_FALSE(rm.images().alive(copy));
+    EXPECT_THROW(rm.images().get(copy), gpu::GpuError);
+    EXPECT_EQ(rm.stale_handle_uses(), 1u);
+    // Retired with the submission being recorded, like buffers.
+    EXPECT_EQ(rm.counts().pending_destruction, 2u);
+    rm.collect_garbage();
+    EXPECT_EQ(rm.counts().pending_destruction, 2u);
+    gpu::CommandRecorder rec(context());
+    rec.begin();
+    rm.timeline().wait_for(rec.submit(rm));
+    EXPECT_EQ(rm.timeline().completed_submission(), rm.timeline().last_submission());
+    rm.collect_garbage();
+    EXPECT_EQ(rm.counts().total(), 0u);
 }
 
 TEST_F(ResourcesTest, StagingUploadReachesDeviceLocalMemory) {
@@ -75,7 +104,7 @@ TEST_F(ResourcesTest, StagingUploadReachesDeviceLocalMemory) {
     vkCmdCopyBuffer(cmd, rm.get(device).buffer.get(), rm.get(readback).buffer.get(), 1, &region);
     gpu::memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
-    rm.wait_for(rec.submit(rm));
+    rm.timeline().wait_for(rec.submit(rm));
     EXPECT_EQ(std::memcmp(rm.get(readback).mapped, data.data(), bytes), 0);
     rm.destroy(device);
     rm.destroy(readback);
@@ -86,7 +115,7 @@ TEST_F(ResourcesTest, ContextRecordsDeviceCapabilities) {
     const gpu::DeviceInfo& info = context().info();
     EXPECT_FALSE(info.name.empty());
     EXPECT_GE(info.api_version, VK_API_VERSION_1_3);
-    EXPECT_TRUE(context().validation_enabled());
+    EXPECT_TRUE(context().validation().enabled());
     // Lavapipe from Mesa 25 exposes ray tracing; the flag must say what the device has.
     if (info.name.find("llvmpipe") != std::string::npos) {
         EXPECT_TRUE(info.ray_query);

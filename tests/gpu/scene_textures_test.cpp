@@ -65,7 +65,7 @@ TEST_F(SceneTexturesTest, PreparedOnAnotherThreadUploadsBlocksWithFullMipChains)
     ASSERT_TRUE(set);
     renderer().load(*helmet_, set);
     const gpu::GpuScene& scene = *renderer().scene();
-    const gpu::SceneTextures& textures = scene.textures();
+    const gpu::SceneTextures& textures = scene.materials().textures();
     ASSERT_EQ(textures.records().size(), 5u);
     ASSERT_EQ(textures.gpu().size(), 5u);
     std::multiset<tex::VkFormat> formats;
@@ -165,7 +165,7 @@ TEST_F(SceneTexturesTest, RefusesSetsWithoutLevelsOrForAnotherScene) {
     EXPECT_THROW(renderer().load(other, good), gpu::GpuError);
     // Nothing half-made stays behind; the good set still loads.
     renderer().load(*helmet_, good);
-    EXPECT_EQ(renderer().scene()->textures().image_count(), 5u);
+    EXPECT_EQ(renderer().scene()->materials().textures().image_count(), 5u);
 }
 
 TEST_F(SceneTexturesTest, ForcedRgba8FallbackLooksLikeTheBlocksAndCostsFourTimesTheMemory) {
@@ -180,7 +180,7 @@ TEST_F(SceneTexturesTest, ForcedRgba8FallbackLooksLikeTheBlocksAndCostsFourTimes
     }
     const std::vector<std::uint8_t> plain = render_helmet(fallback);
     const std::uint64_t plain_bytes = renderer().scene()->memory().textures;
-    EXPECT_EQ(renderer().scene()->warnings(), fallback->warnings);
+    EXPECT_EQ(renderer().scene()->materials().textures().warnings(), fallback->warnings);
 
     if (!context().info().bc_textures) GTEST_SKIP() << "device cannot sample BC";
     const auto blocks = gpu::prepare_scene_textures(*helmet_, context().info(), block_settings());

@@ -12,7 +12,8 @@
 #include <cstring>
 
 #include <sherpa/gpu/gpu_error.h>
-#include <sherpa/render/presenter.h>
+#include <sherpa/gpu/presenter.h>
+#include <sherpa/render/presented_frame.h>
 #include <sherpa/render/renderer.h>
 #include <sherpa/scene/scene_loader.h>
 
@@ -106,13 +107,15 @@ TEST_F(SwapchainTest, PresentsFramesAndSurvivesResizeWithoutValidationMessages) 
         LoadResult scene = load_scene("builtin:default");
         ASSERT_TRUE(scene) << scene.error;
         renderer.load(*scene.scene);
-        gpu::Presenter presenter(renderer, surface, window.width, window.height);
+        gpu::Presenter presenter(context, renderer.resources(), surface, window.width,
+                                 window.height);
         EXPECT_EQ(presenter.extent().width, 160u);
         EXPECT_GE(presenter.image_count(), 2u);
         gpu::RenderSettings settings;
         settings.overlays = gpu::kOverlayBounds;
         int shown = 0;
-        for (int i = 0; i < 6; ++i) shown += presenter.present_frame(settings) ? 1 : 0;
+        gpu::PresentedFrame frame(renderer, settings);
+        for (int i = 0; i < 6; ++i) shown += presenter.present_frame(frame) ? 1 : 0;
         EXPECT_GE(shown, 5);
         context.wait_idle(); // both frames in flight have completed
         vkQueueWaitIdle(context.queue());
@@ -123,7 +126,7 @@ TEST_F(SwapchainTest, PresentsFramesAndSurvivesResizeWithoutValidationMessages) 
         presenter.resize(200, 100);
         EXPECT_EQ(presenter.extent().width, 200u);
         EXPECT_EQ(presenter.extent().height, 100u);
-        for (int i = 0; i < 4; ++i) presenter.present_frame(settings);
+        for (int i = 0; i < 4; ++i) presenter.present_frame(frame);
         EXPECT_GE(presenter.frames_presented(), 8u);
     }
     vkDestroySurfaceKHR(context.instance(), surface, nullptr);
@@ -142,7 +145,7 @@ TEST_F(SwapchainTest, ContextWithoutPresentationRefusesASurface) {
     VkSurfaceKHR surface = make_surface(context, window);
     {
         gpu::Renderer renderer(context);
-        EXPECT_THROW(gpu::Presenter(renderer, surface, 64, 64), gpu::GpuError);
+        EXPECT_THROW(gpu::Presenter(context, renderer.resources(), surface, 64, 64), gpu::GpuError);
     }
     vkDestroySurfaceKHR(context.instance(), surface, nullptr);
     EXPECT_EQ(context.validation().count(), 0u);

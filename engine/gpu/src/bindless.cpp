@@ -44,15 +44,15 @@ BindlessTable::BindlessTable(ResourceManager& resources) : resources_(resources)
 }
 
 BindlessTable::~BindlessTable() {
-    for (ImageHandle& h : defaults_) resources_.destroy(h);
-    resources_.destroy(default_sampler_);
+    for (ImageHandle& h : defaults_) resources_.images().destroy(h);
+    resources_.images().destroy(default_sampler_);
 }
 
 void BindlessTable::create_defaults() {
     auto si = vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
     si.magFilter = si.minFilter = VK_FILTER_NEAREST;
     si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
-    default_sampler_ = resources_.create_sampler(si);
+    default_sampler_ = resources_.images().create_sampler(si);
     // Slot order is fixed: kWhiteTexture, kFlatNormalTexture, kBlackTexture, kCheckerTexture.
     const std::uint8_t texels[3][4] = {{255, 255, 255, 255}, {128, 128, 255, 255}, {0, 0, 0, 255}};
     std::vector<std::uint8_t> checker(std::size_t(kCheckerTextureSize) * kCheckerTextureSize * 4);
@@ -72,7 +72,7 @@ void BindlessTable::create_defaults() {
         d.name = names[i];
         const bool is_checker = i == kCheckerTexture;
         if (is_checker) d.width = d.height = kCheckerTextureSize;
-        defaults_[i] = resources_.create_image(d);
+        defaults_[i] = resources_.images().create(d);
         if (is_checker)
             batch.upload_image(defaults_[i], checker.data(), checker.size());
         else
@@ -80,7 +80,8 @@ void BindlessTable::create_defaults() {
     }
     batch.submit_and_wait();
     for (std::uint32_t i = 0; i < kDefaultTextureCount; ++i)
-        add(resources_.get(defaults_[i]).view.get(), resources_.get(default_sampler_));
+        add(resources_.images().get(defaults_[i]).view.get(),
+            resources_.images().get(default_sampler_));
 }
 
 void BindlessTable::write(std::uint32_t binding, std::uint32_t slot, VkImageView view,

@@ -65,11 +65,11 @@ std::uint64_t CommandRecorder::submit(ResourceManager& resources,
                                       const VkSemaphoreSubmitInfo* signals,
                                       std::uint32_t signal_count) {
     vk_check(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
-    const std::uint64_t value = resources.begin_submission();
+    const std::uint64_t value = resources.timeline().begin_submission();
     std::vector<VkSemaphoreSubmitInfo> all_signals(signals, signals + signal_count);
     VkSemaphoreSubmitInfo timeline =
         vk_init<VkSemaphoreSubmitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO);
-    timeline.semaphore = resources.timeline();
+    timeline.semaphore = resources.timeline().semaphore();
     timeline.value = value;
     timeline.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
     all_signals.push_back(timeline);

@@ -47,7 +47,8 @@ std::vector<std::string> Context::required_instance_extensions(bool validation, 
     return out;
 }
 
-Context::Context(const ContextOptions& options) : validation_(std::make_unique<ValidationLog>()) {
+Context::Context(const ContextOptions& options)
+    : validation_(std::make_unique<ValidationLog>(options.validation)) {
     validation_->set_echo(options.echo_validation);
     try {
         create_instance(options);
@@ -265,27 +266,6 @@ void Context::create_device(bool presentation) {
     ci.ppEnabledExtensionNames = enabled.data();
     vk_check(vkCreateDevice(physical_, &ci, nullptr, &device_), "vkCreateDevice");
     vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
-}
-
-bool Context::find_memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags properties,
-                               std::uint32_t& index) const {
-    for (std::uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
-        if ((type_bits & (1u << i)) &&
-            (memory_.memoryTypes[i].propertyFlags & properties) == properties) {
-            index = i;
-            return true;
-        }
-    }
-    return false;
-}
-
-std::uint32_t Context::memory_type(std::uint32_t type_bits,
-                                   VkMemoryPropertyFlags properties) const {
-    std::uint32_t index = 0;
-    if (!find_memory_type(type_bits, properties, index))
-        throw GpuError(info_.name + ": no memory type with properties " +
-                       std::to_string(properties));
-    return index;
 }
 
 void Context::set_debug_name(VkObjectType type, std::uint64_t handle, const char* name) const {

@@ -98,7 +98,7 @@ void Context::pick_physical_device(const ContextOptions& options) {
     info_.type = props.deviceType;
     info_.timestamp_period_ns = props.limits.timestampPeriod;
     info_.max_anisotropy = props.limits.maxSamplerAnisotropy;
-    vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+    vkGetPhysicalDeviceMemoryProperties(physical_, &info_.memory);
 }
 
 } // namespace sherpa::gpu

@@ -23,7 +23,7 @@ void UploadBatch::upload_buffer(BufferHandle dst, VkDeviceSize dst_offset, const
 }
 
 void UploadBatch::upload_image(ImageHandle dst, const void* texels, VkDeviceSize size) {
-    const Image& img = resources_.get(dst);
+    const Image& img = resources_.images().get(dst);
     if (img.desc.mip_levels > 1) {
         VkFormatProperties fp;
         vkGetPhysicalDeviceFormatProperties(resources_.context().physical_device(), img.desc.format,
@@ -36,7 +36,7 @@ void UploadBatch::upload_image(ImageHandle dst, const void* texels, VkDeviceSize
 
 void UploadBatch::upload_image_levels(ImageHandle dst,
                                       std::span<const std::vector<std::uint8_t>> levels) {
-    const Image& img = resources_.get(dst);
+    const Image& img = resources_.images().get(dst);
     if (levels.empty() || levels.size() != img.desc.mip_levels)
         throw GpuError("image '" + img.desc.name + "' has " + std::to_string(img.desc.mip_levels) +
                        " mip levels but " + std::to_string(levels.size()) + " were given");
@@ -49,8 +49,8 @@ void UploadBatch::upload_image_levels(ImageHandle dst,
 }
 
 void UploadBatch::record_level_copies(VkCommandBuffer cmd, VkBuffer staging, const ImageCopy& c) {
-    const ImageDesc& d = resources_.get(c.dst).desc;
-    VkImage image = resources_.get(c.dst).image.get();
+    const ImageDesc& d = resources_.images().get(c.dst).desc;
+    VkImage image = resources_.images().get(c.dst).image.get();
     const std::uint32_t levels = static_cast<std::uint32_t>(c.level_offsets.size());
     transition(cmd,
                {image, d.aspect, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
@@ -91,7 +91,7 @@ void UploadBatch::submit_and_wait() {
             record_level_copies(cmd, sb.buffer.get(), c);
             continue;
         }
-        const Image& img = resources_.get(c.dst);
+        const Image& img = resources_.images().get(c.dst);
         const ImageDesc& d = img.desc;
         VkImage image = img.image.get();
         transition(cmd, {image, d.aspect, VK_IMAGE_LAYOUT_UNDEFINED,
@@ -139,7 +139,7 @@ void UploadBatch::submit_and_wait() {
     memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                    VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
     const std::uint64_t value = rec.submit(resources_);
-    resources_.wait_for(value);
+    resources_.timeline().wait_for(value);
     resources_.destroy(staging);
     resources_.collect_garbage();
     staging_.clear();

@@ -6,6 +6,7 @@
 #include "pipelines.h"
 
 #include <sherpa/gpu/commands.h>
+#include <sherpa/gpu/frame_source.h>
 #include <sherpa/render/camera.h>
 #include <sherpa/render/gpu_culling.h>
 #include <sherpa/render/gpu_structs.h>
@@ -14,16 +15,6 @@
 #include <sherpa/scene/shadow_cascades.h>
 
 namespace sherpa::gpu {
-
-// A colour image the caller owns, in `layout` before the frame and left in
-// `final_layout` after it.
-struct RenderTarget {
-    VkImage image = VK_NULL_HANDLE;
-    VkImageView view = VK_NULL_HANDLE;
-    VkFormat format = VK_FORMAT_UNDEFINED;
-    std::uint32_t width = 0, height = 0;
-    VkImageLayout final_layout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
-};
 
 // Timestamps written between passes; pass i spans [i, i + 1].
 inline constexpr const char* kPassNames[] = {"shadows",    "depth_prepass", "opaque",

@@ -275,7 +275,7 @@ GpuCullReadback GpuCuller::run(const Frustum& frustum, CullMethod method) {
     vkCmdCopyBuffer(cmd, draws(), rb, 1, &dr);
     memory_barrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                    VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
-    resources_.wait_for(recorder_.submit(resources_));
+    resources_.timeline().wait_for(recorder_.submit(resources_));
     const auto* bytes = static_cast<const std::uint8_t*>(resources_.get(readback_).mapped);
     std::vector<std::uint32_t> vis32(n);
     std::memcpy(vis32.data(), bytes, 4 * n);

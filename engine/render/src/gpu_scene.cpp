@@ -93,17 +93,15 @@ GpuScene::GpuScene(ResourceManager& resources, BindlessTable& table, const Scene
 void GpuScene::upload(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
                       MissingTextures missing) {
     try {
-        textures_ = std::make_unique<SceneTextures>(resources_, table_, scene, std::move(textures),
-                                                    missing);
-        memory_.textures = textures_->gpu_bytes();
+        materials_ =
+            std::make_unique<GpuMaterials>(resources_, table_, scene, std::move(textures), missing);
+        memory_.textures = materials_->textures().gpu_bytes();
+        memory_.materials = materials_->bytes();
         upload_geometry(scene);
-        upload_materials(scene);
         upload_instances(scene);
     } catch (...) {
         resources_.destroy(vertices_);
         resources_.destroy(indices_);
-        resources_.destroy(materials_);
-        resources_.destroy(material_extras_);
         resources_.destroy(instances_);
         throw;
     }
@@ -112,9 +110,26 @@ void GpuScene::upload(const Scene& scene, std::shared_ptr<const tex::PreparedTex
 GpuScene::~GpuScene() {
     resources_.destroy(vertices_);
     resources_.destroy(indices_);
-    resources_.destroy(materials_);
-    resources_.destroy(material_extras_);
     resources_.destroy(instances_);
+}
+
+GpuMaterials::GpuMaterials(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+                           std::shared_ptr<const tex::PreparedTextureSet> textures,
+                           MissingTextures missing)
+    : resources_(resources), textures_(std::make_unique<SceneTextures>(
+                                 resources, table, scene, std::move(textures), missing)) {
+    try {
+        upload(scene);
+    } catch (...) {
+        resources_.destroy(materials_);
+        resources_.destroy(extras_);
+        throw;
+    }
+}
+
+GpuMaterials::~GpuMaterials() {
+    resources_.destroy(materials_);
+    resources_.destroy(extras_);
 }
 
 void GpuScene::upload_geometry(const Scene& scene) {
@@ -193,7 +208,7 @@ void GpuScene::upload_geometry(const Scene& scene) {
     memory_.indices = indices.size() * sizeof(std::uint32_t);
 }
 
-void GpuScene::upload_materials(const Scene& scene) {
+void GpuMaterials::upload(const Scene& scene) {
     std::vector<GPUMaterialData> data;
     std::vector<GPUMaterialExtra> extras;
     for (const MaterialInstance& m : scene.materials) {
@@ -217,13 +232,13 @@ void GpuScene::upload_materials(const Scene& scene) {
     // Copied out too: the editor's material dock reads records back from this buffer.
     materials_ = resources_.create_buffer({bytes, kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                            MemoryUsage::DeviceLocal, "materials"});
-    material_extras_ =
+    extras_ =
         resources_.create_buffer({extra_bytes, kStorage, MemoryUsage::DeviceLocal, "material uv"});
     UploadBatch batch(resources_);
     batch.upload_buffer(materials_, 0, data.data(), bytes);
-    batch.upload_buffer(material_extras_, 0, extras.data(), extra_bytes);
+    batch.upload_buffer(extras_, 0, extras.data(), extra_bytes);
     batch.submit_and_wait();
-    memory_.materials = bytes + extra_bytes;
+    bytes_ = bytes + extra_bytes;
 }
 
 void GpuScene::upload_instances(const Scene& scene) {

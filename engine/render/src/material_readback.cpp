@@ -21,9 +21,9 @@ std::optional<MaterialReadback> read_material(Renderer& renderer, const Scene& s
     CommandRecorder recorder(renderer.context());
     const VkCommandBuffer cmd = recorder.begin();
     const VkBufferCopy region{static_cast<VkDeviceSize>(material) * kSize, 0, kSize};
-    vkCmdCopyBuffer(cmd, gpu_scene->materials_buffer(), resources.get(staging).buffer.get(), 1,
+    vkCmdCopyBuffer(cmd, gpu_scene->materials().buffer(), resources.get(staging).buffer.get(), 1,
                     &region);
-    resources.wait_for(recorder.submit(resources));
+    resources.timeline().wait_for(recorder.submit(resources));
     const Buffer& readback = resources.get(staging);
     // Readback memory may be cached without coherence: make the GPU's writes visible.
     const VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, nullptr,
@@ -37,7 +37,7 @@ std::optional<MaterialReadback> read_material(Renderer& renderer, const Scene& s
     for (std::size_t t = 0; t < scene.textures.size(); ++t)
         for (TextureRole role : {kRoleColor, kRoleLinear, kRoleNormal}) {
             const std::uint32_t slot =
-                gpu_scene->textures().slot(static_cast<std::int32_t>(t), role);
+                gpu_scene->materials().textures().slot(static_cast<std::int32_t>(t), role);
             if (slot == kTextureSentinel) continue;
             if (slot >= out.bindless_to_texture.size())
                 out.bindless_to_texture.resize(slot + 1, -1);

@@ -73,8 +73,8 @@ void Renderer::Impl::bind_frame_set(FrameSlot& slot) {
     const VkBuffer none = resources->get(no_materials_).buffer.get();
     const VkDescriptorBufferInfo infos[] = {
         {resources->get(slot.frame_data).buffer.get(), 0, sizeof(GPUFrameData)},
-        {scene ? scene->materials_buffer() : none, 0, VK_WHOLE_SIZE},
-        {scene ? scene->material_extras_buffer() : none, 0, VK_WHOLE_SIZE},
+        {scene ? scene->materials().buffer() : none, 0, VK_WHOLE_SIZE},
+        {scene ? scene->materials().extras_buffer() : none, 0, VK_WHOLE_SIZE},
     };
     const VkDescriptorImageInfo shadow = shadows_.descriptor();
     VkWriteDescriptorSet writes[4];
@@ -108,8 +108,8 @@ Renderer::Impl::~Impl() {
         resources->destroy(slot->cull_readback);
     }
     slots_.clear();
-    resources->destroy(color_);
-    resources->destroy(depth_);
+    resources->images().destroy(color_);
+    resources->images().destroy(depth_);
     resources->destroy(readback_);
     resources->destroy(no_materials_);
     pipelines_.clear();
@@ -159,14 +159,14 @@ void Renderer::Impl::wait_for_slot(std::uint32_t slot) {
 }
 
 void Renderer::Impl::wait_slot(FrameSlot& slot) {
-    if (slot.submission) resources->wait_for(slot.submission);
+    if (slot.submission) resources->timeline().wait_for(slot.submission);
 }
 
 void Renderer::Impl::ensure_depth(std::uint32_t width, std::uint32_t height) {
     if (depth_.valid()) {
-        const ImageDesc& d = resources->get(depth_).desc;
+        const ImageDesc& d = resources->images().get(depth_).desc;
         if (d.width == width && d.height == height) return;
-        resources->destroy(depth_);
+        resources->images().destroy(depth_);
     }
     ImageDesc d;
     d.format = kDepthFormat;
@@ -175,14 +175,14 @@ void Renderer::Impl::ensure_depth(std::uint32_t width, std::uint32_t height) {
     d.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
     d.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
     d.name = "depth";
-    depth_ = resources->create_image(d);
+    depth_ = resources->images().create(d);
 }
 
 void Renderer::Impl::ensure_offscreen(std::uint32_t width, std::uint32_t height) {
     if (color_.valid()) {
-        const ImageDesc& d = resources->get(color_).desc;
+        const ImageDesc& d = resources->images().get(color_).desc;
         if (d.width == width && d.height == height) return;
-        resources->destroy(color_);
+        resources->images().destroy(color_);
         resources->destroy(readback_);
     }
     ImageDesc d;
@@ -191,7 +191,7 @@ void Renderer::Impl::ensure_offscreen(std::uint32_t width, std::uint32_t height)
     d.height = height;
     d.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     d.name = "offscreen colour";
-    color_ = resources->create_image(d);
+    color_ = resources->images().create(d);
     readback_ = resources->create_buffer({VkDeviceSize(width) * height * 4,
                                           VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::Readback,
                                           "readback"});
@@ -200,7 +200,7 @@ void Renderer::Impl::ensure_offscreen(std::uint32_t width, std::uint32_t height)
 std::uint64_t Renderer::Impl::render_target_bytes() const {
     std::uint64_t bytes = shadows_.bytes();
     for (ImageHandle h : {color_, depth_})
-        if (h.valid()) bytes += resources->get(h).allocation_size;
+        if (h.valid()) bytes += resources->images().get(h).allocation_size;
     return bytes;
 }
 
@@ -214,7 +214,7 @@ FrameStats Renderer::Impl::render(const RenderSettings& settings, std::vector<st
     FrameSlot& slot = *slots_[index];
     wait_slot(slot);
     ensure_offscreen(settings.width, settings.height);
-    const Image& color = resources->get(color_);
+    const Image& color = resources->images().get(color_);
 
     VkCommandBuffer cmd = slot.recorder.begin();
     RenderTarget target{color.image.get(), color.view.get(), kOffscreenFormat,

@@ -99,7 +99,7 @@ void Renderer::Impl::bind_frame(FrameContext& f) {
 // The target and depth in attachment layouts (both cleared: their previous
 // contents do not matter), dynamic rendering begun, statistics started.
 void Renderer::Impl::begin_camera_rendering(FrameContext& f) {
-    const Image& depth_image = resources->get(depth_);
+    const Image& depth_image = resources->images().get(depth_);
     transition(
         f.cmd,
         {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,

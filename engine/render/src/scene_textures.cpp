@@ -182,13 +182,13 @@ void SceneTextures::upload(const Scene& scene) {
         if (it == descs.end()) {
             descs.push_back(d);
             samplers_.push_back(
-                resources_.create_sampler(sampler_info(d, resources_.context().info())));
+                resources_.images().create_sampler(sampler_info(d, resources_.context().info())));
             it = descs.end() - 1;
         }
         sampler_of_texture[t] = static_cast<std::uint32_t>(it - descs.begin());
     }
     auto sampler_for = [&](std::int32_t texture) {
-        return resources_.get(samplers_[sampler_of_texture[std::size_t(texture)]]);
+        return resources_.images().get(samplers_[sampler_of_texture[std::size_t(texture)]]);
     };
 
     const std::vector<tex::PreparedTexture>& records = prepared_->textures;
@@ -208,12 +208,12 @@ void SceneTextures::upload(const Scene& scene) {
         d.name = "image " + std::to_string(t.image) + " (" + std::string(tex::role_name(t.role)) +
                  ", " + std::string(tex::vk_format_name(t.format)) + ")";
         GpuTexture& g = gpu_[i];
-        g.image = resources_.create_image(d);
+        g.image = resources_.images().create(d);
         g.mip_levels = d.mip_levels;
-        g.bytes = resources_.get(g.image).allocation_size;
+        g.bytes = resources_.images().get(g.image).allocation_size;
         bytes_ += g.bytes;
         batch.upload_image_levels(g.image, t.levels);
-        const VkImageView view = resources_.get(g.image).view.get();
+        const VkImageView view = resources_.images().get(g.image).view.get();
         const std::int32_t first = t.textures.front();
         g.slot = slots_[i] = table_.add(view, sampler_for(first));
         // A texture sharing this image with a different sampler gets its own slot.
@@ -228,8 +228,8 @@ void SceneTextures::release() {
     for (std::uint32_t s : slots_)
         if (s != kTextureSentinel) table_.remove(s);
     for (const auto& [key, s] : extra_slots_) table_.remove(s);
-    for (GpuTexture& g : gpu_) resources_.destroy(g.image);
-    for (SamplerHandle& h : samplers_) resources_.destroy(h);
+    for (GpuTexture& g : gpu_) resources_.images().destroy(g.image);
+    for (SamplerHandle& h : samplers_) resources_.images().destroy(h);
     slots_.clear();
     extra_slots_.clear();
     gpu_.clear();

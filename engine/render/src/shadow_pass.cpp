@@ -19,7 +19,7 @@ ShadowPass::ShadowPass(Context& context, ResourceManager& resources, std::uint32
     d.view_type = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
     d.layer_views = true;
     d.name = "shadow cascades";
-    map_ = resources_.create_image(d);
+    map_ = resources_.images().create(d);
 
     auto si = vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
     si.magFilter = si.minFilter = VK_FILTER_LINEAR; // 2x2 percentage-closer filtering per tap
@@ -27,8 +27,8 @@ ShadowPass::ShadowPass(Context& context, ResourceManager& resources, std::uint32
     si.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE; // outside every cascade: lit
     si.compareEnable = VK_TRUE;
     si.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
-    sampler_ = resources_.create_sampler(si);
-    const Image& img = resources_.get(map_);
+    sampler_ = resources_.images().create_sampler(si);
+    const Image& img = resources_.images().get(map_);
 
     // The descriptor names a read-only layout from the start, so the map is cleared
     // (fully lit) and put in that layout before any frame can sample it.
@@ -47,12 +47,12 @@ ShadowPass::ShadowPass(Context& context, ResourceManager& resources, std::uint32
                 VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_CLEAR_BIT,
                 VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
-    resources_.wait_for(rec.submit(resources_));
+    resources_.timeline().wait_for(rec.submit(resources_));
 }
 
 ShadowPass::~ShadowPass() {
-    resources_.destroy(map_);
-    resources_.destroy(sampler_);
+    resources_.images().destroy(map_);
+    resources_.images().destroy(sampler_);
 }
 
 bool ShadowPass::needs_render(const ShadowCascades& c, std::uint64_t scene_generation, bool cache) {
@@ -68,19 +68,19 @@ bool ShadowPass::needs_render(const ShadowCascades& c, std::uint64_t scene_gener
 }
 
 VkDescriptorImageInfo ShadowPass::descriptor() const {
-    return {resources_.get(sampler_), resources_.get(map_).view.get(),
+    return {resources_.images().get(sampler_), resources_.images().get(map_).view.get(),
             VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
 }
 
 std::uint64_t ShadowPass::bytes() const {
-    return resources_.get(map_).allocation_size;
+    return resources_.images().get(map_).allocation_size;
 }
 
 void ShadowPass::record(FrameContext& f) {
     if (f.cascades == 0) return; // no shadows, or the cached map is still valid
     VkCommandBuffer cmd = f.cmd;
     Pipelines& p = f.pipelines;
-    const Image& map = resources_.get(map_);
+    const Image& map = resources_.images().get(map_);
     const std::uint32_t res = resolution_;
     transition(
         cmd,

@@ -57,6 +57,8 @@ struct DeviceInfo {
     // optimally tiled images (textureCompressionBC enabled and the format
     // properties say so); false: textures fall back to RGBA8.
     bool bc_textures = false;
+    // Memory heaps and types; the RHI's allocator picks from them.
+    VkPhysicalDeviceMemoryProperties memory{};
     bool is_cpu() const { return type == VK_PHYSICAL_DEVICE_TYPE_CPU; }
 };
 
@@ -80,13 +82,6 @@ public:
     const DeviceInfo& info() const { return info_; }
     const ValidationLog& validation() const { return *validation_; }
     ValidationLog& validation() { return *validation_; }
-    bool validation_enabled() const { return messenger_ != VK_NULL_HANDLE; }
-
-    // Memory type index with all `properties` among `type_bits`; throws if none.
-    std::uint32_t memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags properties) const;
-    // Returns false instead of throwing (for optional properties such as host-cached).
-    bool find_memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags properties,
-                          std::uint32_t& index) const;
 
     void set_debug_name(VkObjectType type, std::uint64_t handle, const char* name) const;
     void wait_idle() const;
@@ -106,7 +101,6 @@ private:
     VkQueue queue_ = VK_NULL_HANDLE;
     std::uint32_t queue_family_ = 0;
     DeviceInfo info_;
-    VkPhysicalDeviceMemoryProperties memory_{};
     PFN_vkSetDebugUtilsObjectNameEXT set_name_ = nullptr;
 };
 

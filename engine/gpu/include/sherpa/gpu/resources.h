@@ -1,16 +1,21 @@
 #pragma once
-// The resource manager: buffers, images and samplers behind generation-checked
-// handles, one dedicated allocation each, destroyed only after every submission
-// that may use them has completed (tracked by a timeline semaphore that every
-// queue submission of the engine signals).
+// Buffers, images and samplers behind generation-checked handles, one dedicated
+// allocation each, destroyed only after every submission that may use them has
+// completed (the SubmissionTimeline that every queue submission of the engine
+// signals). ResourceManager owns the buffers, the timeline and the release of what
+// was retired; its ImagePool (images()) holds the images and the samplers that read
+// them.
 #include <cstdint>
+#include <deque>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <vulkan/vulkan.h>
 
 #include <sherpa/gpu/context.h>
 #include <sherpa/gpu/handle_pool.h>
+#include <sherpa/gpu/submission.h>
 #include <sherpa/gpu/unique_handle.h>
 
 namespace sherpa::gpu {
@@ -70,6 +75,53 @@ struct ResourceCounts {
     std::size_t total() const { return buffers + images + samplers + pending_destruction; }
 };
 
+// Objects the GPU may still use, each kept until the timeline completes the
+// value it was retired after. Values only grow, so the oldest go first.
+template <typename T> class DeferredRelease {
+public:
+    void retire(std::uint64_t after, T&& object) {
+        pending_.emplace_back(after, std::move(object));
+    }
+    void release(std::uint64_t completed) {
+        while (!pending_.empty() && pending_.front().first <= completed) pending_.pop_front();
+    }
+    void clear() { pending_.clear(); }
+    std::size_t size() const { return pending_.size(); }
+
+private:
+    std::deque<std::pair<std::uint64_t, T>> pending_;
+};
+
+// Images (with their views) and samplers: what shaders sample and passes render to.
+class ImagePool {
+public:
+    ImagePool(Context& context, const SubmissionTimeline& timeline);
+
+    ImageHandle create(const ImageDesc& desc);
+    SamplerHandle create_sampler(const VkSamplerCreateInfo& info);
+    // Throw GpuError for stale or invalid handles.
+    const Image& get(ImageHandle h) const { return images_.get(h); }
+    VkSampler get(SamplerHandle h) const { return samplers_.get(h).get(); }
+    bool alive(ImageHandle h) const { return images_.alive(h); }
+    // Invalidate the handle now; the Vulkan objects go once the GPU is past every
+    // submission made so far, including the one being recorded. Resets `h`.
+    void destroy(ImageHandle& h);
+    void destroy(SamplerHandle& h);
+
+private:
+    friend class ResourceManager; // releases, flushes and counts through these
+    void release(std::uint64_t completed);
+    void clear_retired();
+    std::size_t pending() const { return retired_images_.size() + retired_samplers_.size(); }
+
+    Context& context_;
+    const SubmissionTimeline& timeline_;
+    HandlePool<Image, ImageTag> images_{"image"};
+    HandlePool<UniqueSampler, SamplerTag> samplers_{"sampler"};
+    DeferredRelease<Image> retired_images_;
+    DeferredRelease<UniqueSampler> retired_samplers_;
+};
+
 class ResourceManager {
 public:
     explicit ResourceManager(Context& context);
@@ -78,59 +130,32 @@ public:
     ResourceManager& operator=(const ResourceManager&) = delete;
 
     BufferHandle create_buffer(const BufferDesc& desc);
-    ImageHandle create_image(const ImageDesc& desc);
-    SamplerHandle create_sampler(const VkSamplerCreateInfo& info);
-
-    // Throw GpuError for stale or invalid handles.
+    // Throws GpuError for a stale or invalid handle.
     const Buffer& get(BufferHandle h) const { return buffers_.get(h); }
-    const Image& get(ImageHandle h) const { return images_.get(h); }
-    VkSampler get(SamplerHandle h) const { return samplers_.get(h).get(); }
     bool alive(BufferHandle h) const { return buffers_.alive(h); }
-    bool alive(ImageHandle h) const { return images_.alive(h); }
-
-    // Invalidate the handle now; the Vulkan objects go once the GPU is past every
+    // Invalidates the handle now; the buffer goes once the GPU is past every
     // submission made so far, including the one being recorded. Resets `h`.
     void destroy(BufferHandle& h);
-    void destroy(ImageHandle& h);
-    void destroy(SamplerHandle& h);
 
-    // Submission timeline: every engine vkQueueSubmit2 signals timeline() with the
-    // value begin_submission() returns.
-    VkSemaphore timeline() const { return timeline_.get(); }
-    std::uint64_t begin_submission() { return ++submitted_; }
-    std::uint64_t last_submission() const { return submitted_; }
-    std::uint64_t completed_submission() const;
-    void wait_for(std::uint64_t value) const;
-    // Frees what retired submissions no longer use. Cheap; call once per frame.
+    ImagePool& images() { return images_; }
+    // Every engine vkQueueSubmit2 on these resources signals it (CommandRecorder::submit).
+    SubmissionTimeline& timeline() { return timeline_; }
+
+    // Frees what retired submissions no longer use, images and samplers too. Cheap;
+    // call once per frame.
     void collect_garbage();
     // Waits for all work, then frees everything pending.
     void flush();
-
     ResourceCounts counts() const;
-    std::uint64_t stale_handle_uses() const {
-        return buffers_.stale_uses() + images_.stale_uses() + samplers_.stale_uses();
-    }
+    std::uint64_t stale_handle_uses() const;
     Context& context() const { return context_; }
 
 private:
-    UniqueMemory allocate(const VkMemoryRequirements& req, MemoryUsage usage, bool device_address,
-                          VkDeviceSize& allocated);
-
-    struct Retired {
-        std::uint64_t after = 0; // free once the timeline reaches this value
-        std::vector<Buffer> buffers;
-        std::vector<Image> images;
-        std::vector<UniqueSampler> samplers;
-    };
-    Retired& retire_list();
-
     Context& context_;
-    UniqueSemaphore timeline_;
-    std::uint64_t submitted_ = 0;
+    SubmissionTimeline timeline_;
     HandlePool<Buffer, BufferTag> buffers_{"buffer"};
-    HandlePool<Image, ImageTag> images_{"image"};
-    HandlePool<UniqueSampler, SamplerTag> samplers_{"sampler"};
-    std::vector<Retired> retired_;
+    DeferredRelease<Buffer> retired_buffers_;
+    ImagePool images_;
 };
 
 } // namespace sherpa::gpu

@@ -19,6 +19,9 @@ struct ValidationMessage {
 
 class ValidationLog {
 public:
+    // `enabled`: the validation layer and a messenger feed this log (ContextOptions::validation).
+    explicit ValidationLog(bool enabled = false) : enabled_(enabled) {}
+    bool enabled() const { return enabled_; }
     void record(ValidationMessage m);
     std::size_t count() const;
     std::vector<ValidationMessage> messages() const;
@@ -35,6 +38,7 @@ private:
     mutable std::mutex mutex_;
     std::vector<ValidationMessage> messages_;
     bool echo_ = false;
+    bool enabled_ = false;
 };
 
 } // namespace sherpa::gpu

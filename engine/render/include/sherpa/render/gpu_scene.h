@@ -1,8 +1,8 @@
 #pragma once
 // A Scene on the GPU: only the vertex streams the materials use (per the usage
 // report) as separate tightly packed arrays read by vertex pulling through buffer
-// device addresses, one index buffer, the GPUMaterialData array, the instance
-// array sorted into draw groups, and the textures.
+// device addresses, one index buffer and the instance array sorted into draw groups
+// (GpuScene), and the materials with their textures (GpuMaterials).
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -45,6 +45,36 @@ struct DrawGroup {
     std::uint32_t first_instance = 0, instance_count = 0;
 };
 
+// The scene's materials: the GPUMaterialData array (one SSBO; texture fields
+// resolved to bindless slots, sentinels to the default textures), its
+// GPUMaterialExtra twin (KHR_texture_transform, TEXCOORD set, unlit) and the
+// textures those slots name.
+class GpuMaterials {
+public:
+    GpuMaterials(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+                 std::shared_ptr<const tex::PreparedTextureSet> textures, MissingTextures missing);
+    ~GpuMaterials();
+    GpuMaterials(const GpuMaterials&) = delete;
+    GpuMaterials& operator=(const GpuMaterials&) = delete;
+
+    VkBuffer buffer() const { return resources_.get(materials_).buffer.get(); }
+    VkBuffer extras_buffer() const { return resources_.get(extras_).buffer.get(); }
+    // Bytes of both arrays.
+    std::uint64_t bytes() const { return bytes_; }
+    // For inspection: per prepared texture its pipeline record (state, hash, PSNR,
+    // timings, bytes), warnings and bindless slot; the editor maps material slots
+    // back to them.
+    const SceneTextures& textures() const { return *textures_; }
+
+private:
+    void upload(const Scene& scene);
+
+    ResourceManager& resources_;
+    std::unique_ptr<SceneTextures> textures_;
+    BufferHandle materials_, extras_;
+    std::uint64_t bytes_ = 0;
+};
+
 class GpuScene {
 public:
     // Uploads textures the caller prepared (prepare_scene_textures(), possibly on
@@ -75,30 +105,21 @@ public:
         return indices_.valid() ? resources_.get(indices_).buffer.get() : VK_NULL_HANDLE;
     }
     VkDeviceAddress instances_address() const { return resources_.get(instances_).address; }
-    // The GPUMaterialData array (one SSBO) and its GPUMaterialExtra twin array.
-    VkBuffer materials_buffer() const { return resources_.get(materials_).buffer.get(); }
-    VkBuffer material_extras_buffer() const {
-        return resources_.get(material_extras_).buffer.get();
-    }
     const GpuMemoryReport& memory() const { return memory_; }
     std::uint64_t triangle_count() const { return triangles_; }
-    // For inspection: per prepared texture its pipeline record (state, hash, PSNR,
-    // timings, bytes) and bindless slot; the editor maps material slots back to them.
-    const SceneTextures& textures() const { return *textures_; }
-    const std::vector<std::string>& warnings() const { return textures_->warnings(); }
+    const GpuMaterials& materials() const { return *materials_; }
 
 private:
     void upload(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
                 MissingTextures missing);
     void upload_geometry(const Scene& scene);
-    void upload_materials(const Scene& scene);
     void upload_instances(const Scene& scene);
 
     ResourceManager& resources_;
     BindlessTable& table_;
     StreamPolicy policy_;
-    std::unique_ptr<SceneTextures> textures_;
-    BufferHandle vertices_, indices_, materials_, material_extras_, instances_;
+    std::unique_ptr<GpuMaterials> materials_;
+    BufferHandle vertices_, indices_, instances_;
     std::vector<GpuMesh> meshes_;
     std::vector<DrawGroup> groups_;
     std::vector<Aabb> instance_bounds_;

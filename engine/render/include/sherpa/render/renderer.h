@@ -3,8 +3,9 @@
 // the GPU and records frames as an ordered list of passes (engine/render/src:
 // culling, shadow cascades, depth prepass, forward shading, overlays, highlight),
 // either into its own offscreen target (render()) or into a swapchain image through
-// a Presenter. Settings in, statistics out; pipelines, handle pools and frame
-// resources stay inside (Renderer::Impl). No Vulkan header here.
+// the RHI's Presenter (PresentedFrame, presented_frame.h, is the frame source). Settings in,
+// statistics out; pipelines, handle pools and frame resources stay inside (Renderer::Impl). No
+// Vulkan header here.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -28,7 +29,7 @@ namespace sherpa::gpu {
 class Context;
 class ResourceManager;
 class GpuScene;
-class Presenter;
+class PresentedFrame;
 
 struct PassTiming {
     std::string name;
@@ -110,7 +111,7 @@ public:
     class Impl; // renderer_impl.h
 
 private:
-    friend class Presenter; // records swapchain frames through Impl
+    friend class PresentedFrame; // records swapchain frames through Impl
     std::unique_ptr<Impl> impl_;
 };
 

@@ -1,7 +1,5 @@
-#include "renderer_impl.h"
-
 #include <sherpa/gpu/gpu_error.h>
-#include <sherpa/render/presenter.h>
+#include <sherpa/gpu/presenter.h>
 
 #include <algorithm>
 
@@ -27,9 +25,9 @@ VkSurfaceFormatKHR pick_format(const std::vector<VkSurfaceFormatKHR>& formats) {
 
 } // namespace
 
-Presenter::Presenter(Renderer& renderer, VkSurfaceKHR surface, std::uint32_t width,
-                     std::uint32_t height, const PresenterOptions& options)
-    : renderer_(renderer), context_(renderer.context()), surface_(surface), options_(options) {
+Presenter::Presenter(Context& context, ResourceManager& resources, VkSurfaceKHR surface,
+                     std::uint32_t width, std::uint32_t height, const PresenterOptions& options)
+    : context_(context), resources_(resources), surface_(surface), options_(options) {
     if (!context_.info().swapchain)
         throw GpuError(
             "the Context was created without presentation (ContextOptions::presentation)");
@@ -40,17 +38,29 @@ Presenter::Presenter(Renderer& renderer, VkSurfaceKHR surface, std::uint32_t wid
     if (!supported)
         throw GpuError(context_.info().name +
                        " cannot present to this surface from its graphics queue");
-    for (std::uint32_t i = 0; i < Renderer::kFramesInFlight; ++i) {
-        acquired_.push_back(make_semaphore(context_.device()));
-        recorders_.push_back(std::make_unique<CommandRecorder>(context_));
-    }
     create_swapchain(width, height);
 }
 
 Presenter::~Presenter() {
     // Presentation may still read the images; nothing of ours may go before it ends.
     vkQueueWaitIdle(context_.queue());
-    renderer_.resources().collect_garbage();
+    resources_.collect_garbage();
+}
+
+// One acquire semaphore and one command recorder per frame slot of the source.
+void Presenter::make_slots(std::uint32_t frames_in_flight) {
+    if (!acquired_.empty()) {
+        if (acquired_.size() != frames_in_flight)
+            throw GpuError("a frame source with " + std::to_string(frames_in_flight) +
+                           " frames in flight given to a presenter made for " +
+                           std::to_string(acquired_.size()));
+        return;
+    }
+    if (frames_in_flight == 0) throw GpuError("a frame source with no frames in flight");
+    for (std::uint32_t i = 0; i < frames_in_flight; ++i) {
+        acquired_.push_back(make_semaphore(context_.device()));
+        recorders_.push_back(std::make_unique<CommandRecorder>(context_));
+    }
 }
 
 void Presenter::destroy_swapchain_views() {
@@ -138,10 +148,11 @@ void Presenter::resize(std::uint32_t width, std::uint32_t height) {
     create_swapchain(width, height);
 }
 
-bool Presenter::present_frame(RenderSettings settings) {
+bool Presenter::present_frame(FrameSource& source) {
     if (extent_.width == 0 || extent_.height == 0) return false; // minimised
+    make_slots(source.frames_in_flight());
     const std::uint32_t slot = frame_;
-    renderer_.impl_->wait_for_slot(slot); // its acquire semaphore and recorder are free again
+    source.wait_for_slot(slot); // its acquire semaphore and recorder are free again
     std::uint32_t index = 0;
     VkResult r = vkAcquireNextImageKHR(context_.device(), swapchain_.get(), UINT64_MAX,
                                        acquired_[slot].get(), VK_NULL_HANDLE, &index);
@@ -151,12 +162,10 @@ bool Presenter::present_frame(RenderSettings settings) {
     }
     if (r != VK_SUBOPTIMAL_KHR) vk_check(r, "vkAcquireNextImageKHR");
 
-    settings.width = extent_.width;
-    settings.height = extent_.height;
     VkCommandBuffer cmd = recorders_[slot]->begin();
     RenderTarget target{images_[index], views_[index].get(), format_,
                         extent_.width,  extent_.height,      VK_IMAGE_LAYOUT_PRESENT_SRC_KHR};
-    renderer_.impl_->record_frame(cmd, slot, target, settings);
+    source.record(cmd, slot, target);
     auto wait = vk_init<VkSemaphoreSubmitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO);
     wait.semaphore = acquired_[slot].get();
     wait.stageMask =
@@ -164,10 +173,9 @@ bool Presenter::present_frame(RenderSettings settings) {
     auto signal = vk_init<VkSemaphoreSubmitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO);
     signal.semaphore = rendered_[index].get();
     signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-    const std::uint64_t value =
-        recorders_[slot]->submit(renderer_.resources(), &wait, 1, &signal, 1);
-    renderer_.impl_->finish_frame(slot, value);
-    frame_ = (frame_ + 1) % Renderer::kFramesInFlight;
+    const std::uint64_t value = recorders_[slot]->submit(resources_, &wait, 1, &signal, 1);
+    source.submitted(slot, value);
+    frame_ = (frame_ + 1) % static_cast<std::uint32_t>(acquired_.size());
 
     VkSemaphore rendered = rendered_[index].get();
     VkSwapchainKHR swapchain = swapchain_.get();
@@ -178,7 +186,7 @@ bool Presenter::present_frame(RenderSettings settings) {
     pi.pSwapchains = &swapchain;
     pi.pImageIndices = &index;
     r = vkQueuePresentKHR(context_.queue(), &pi);
-    renderer_.resources().collect_garbage();
+    resources_.collect_garbage();
     if (r == VK_ERROR_OUT_OF_DATE_KHR || r == VK_SUBOPTIMAL_KHR) {
         resize(extent_.width, extent_.height);
         return r == VK_SUBOPTIMAL_KHR; // a suboptimal frame was still shown

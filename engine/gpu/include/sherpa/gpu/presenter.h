@@ -1,14 +1,18 @@
 #pragma once
-// Swapchain rendering on a VkSurfaceKHR the caller (the editor, a test window)
-// created from Context::instance(). The engine never sees window-system types:
-// the surface is opaque here and stays owned by the caller, who must destroy it
-// after the Presenter.
+// Swapchain presentation on a VkSurfaceKHR the caller (the editor, a test window)
+// created from Context::instance(): swapchain creation and recreation, acquire,
+// submission and present. What each frame shows comes from a FrameSource (the
+// renderer's: sherpa/render/presented_frame.h). The engine never sees
+// window-system types: the surface is opaque here and stays owned by the caller,
+// who must destroy it after the Presenter.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <sherpa/gpu/commands.h>
 #include <sherpa/gpu/context.h>
-#include <sherpa/render/renderer.h>
+#include <sherpa/gpu/frame_source.h>
+#include <sherpa/gpu/resources.h>
 
 namespace sherpa::gpu {
 
@@ -18,17 +22,18 @@ struct PresenterOptions {
 
 class Presenter {
 public:
-    // Throws GpuError when the device cannot present to `surface`.
-    Presenter(Renderer& renderer, VkSurfaceKHR surface, std::uint32_t width, std::uint32_t height,
-              const PresenterOptions& options = {});
+    // Submissions signal `resources`' timeline. Throws GpuError when the device
+    // cannot present to `surface`.
+    Presenter(Context& context, ResourceManager& resources, VkSurfaceKHR surface,
+              std::uint32_t width, std::uint32_t height, const PresenterOptions& options = {});
     ~Presenter();
     Presenter(const Presenter&) = delete;
     Presenter& operator=(const Presenter&) = delete;
 
-    // Renders `settings` (its width/height are replaced by the swapchain's) into
-    // the next image and queues it for presentation. Returns false when the
-    // swapchain was out of date: it is recreated and the frame is skipped.
-    bool present_frame(RenderSettings settings);
+    // Has `source` record into the next image and queues it for presentation.
+    // Returns false when the swapchain was out of date: it is recreated and the
+    // frame is skipped. Every source given must have the same frames_in_flight().
+    bool present_frame(FrameSource& source);
     // The window changed size: recreate the swapchain at the new size.
     void resize(std::uint32_t width, std::uint32_t height);
 
@@ -40,9 +45,10 @@ public:
 private:
     void create_swapchain(std::uint32_t width, std::uint32_t height);
     void destroy_swapchain_views();
+    void make_slots(std::uint32_t frames_in_flight);
 
-    Renderer& renderer_;
     Context& context_;
+    ResourceManager& resources_;
     VkSurfaceKHR surface_;
     PresenterOptions options_;
     UniqueSwapchain swapchain_;

@@ -41,6 +41,14 @@ Counts centre_colours(const sherpa::test::ReferenceImage& img) {
     return c;
 }
 
+// One texture or image problem record as the CLI's JSON writes it, in every report.
+void expect_problem(const nlohmann::json& record, const std::string& state,
+                    const std::string& file) {
+    EXPECT_EQ(record["state"], state) << record;
+    EXPECT_EQ(record["location"], file) << record;
+    EXPECT_EQ(record["uses"], nlohmann::json::array({kUses})) << record;
+}
+
 class CliMissingTextures : public ::testing::Test {
 protected:
     void SetUp() override {
@@ -90,11 +98,7 @@ TEST_F(CliMissingTextures, RenderDrawsAMagentaBlackCheckerAndSaysWhatIsMissing) 
         << r.out;
     EXPECT_EQ(r.out.find("neither encoded bytes"), std::string::npos) << r.out;
     ASSERT_FALSE(report["textures"]["textures"].empty());
-    for (const auto& t : report["textures"]["textures"]) {
-        EXPECT_EQ(t["state"], "missing");
-        EXPECT_EQ(t["location"], file);
-        EXPECT_EQ(t["uses"], nlohmann::json::array({kUses}));
-    }
+    for (const auto& t : report["textures"]["textures"]) expect_problem(t, "missing", file);
     EXPECT_EQ(report["validation_messages"], 0);
 }
 
@@ -131,18 +135,14 @@ TEST_F(CliMissingTextures, TexturesAndInfoReportStatePathAndSlots) {
     const nlohmann::json tj = nlohmann::json::parse(textures.out);
     ASSERT_EQ(tj["textures"].size(), 2u); // colour and linear role
     for (const auto& t : tj["textures"]) {
-        EXPECT_EQ(t["state"], "missing");
-        EXPECT_EQ(t["location"], file);
-        EXPECT_EQ(t["uses"], nlohmann::json::array({kUses}));
+        expect_problem(t, "missing", file);
         EXPECT_EQ(t["failed"], true);
     }
     const CliRun info = run_cli("info '" + kMissing + "' --json", "2>/dev/null");
     ASSERT_EQ(info.exit_code, 0) << info.out;
     const nlohmann::json ij = nlohmann::json::parse(info.out);
     ASSERT_EQ(ij["image_problems"].size(), 1u);
-    EXPECT_EQ(ij["image_problems"][0]["state"], "missing");
-    EXPECT_EQ(ij["image_problems"][0]["location"], file);
-    EXPECT_EQ(ij["image_problems"][0]["uses"], nlohmann::json::array({kUses}));
+    expect_problem(ij["image_problems"][0], "missing", file);
     const CliRun text = run_cli("info '" + kMissing + "'");
     EXPECT_NE(text.out.find("warning: texture missing: " + file + " (used by " + kUses + ")"),
               std::string::npos)

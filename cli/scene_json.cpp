@@ -120,6 +120,8 @@ json scene_info_json(const Scene& scene) {
         json e = {{"mesh", p.mesh},         {"primitive", p.primitive}, {"mode", to_string(p.mode)},
                   {"vertices", p.vertices}, {"indices", p.indices},     {"triangles", p.triangles},
                   {"material", p.material}, {"attributes", attrs}};
+        if (topology_of(p.mode) == Topology::Lines) e["segments"] = p.segments;
+        if (topology_of(p.mode) == Topology::Points) e["points"] = p.points;
         if (p.compression)
             e["compression"] = {{"codec", p.compression->codec},
                                 {"mode", p.compression->modes},

@@ -29,6 +29,9 @@ layout(constant_id = 0) const uint VIEW = VIEW_LIT;
 // absent tangent stream means no material of the mesh has a normal map, so lit
 // shading never uses them).
 layout(constant_id = 1) const uint STREAMS = HAS_TANGENT | HAS_UV0 | HAS_UV1 | HAS_COLOR;
+// Lines and points (MESH_LINES / MESH_POINTS in STREAMS) have no surface: they are
+// shaded unlit, base colour times vertex colour, like KHR_materials_unlit.
+const bool UNLIT_TOPOLOGY = (STREAMS & (MESH_LINES | MESH_POINTS)) != 0u;
 const bool READ_TANGENT = (STREAMS & HAS_TANGENT) != 0u || VIEW == VIEW_TANGENT ||
                           VIEW == VIEW_BITANGENT || VIEW == VIEW_TANGENT_W;
 
@@ -118,7 +121,7 @@ void main() {
     case VIEW_PROVENANCE: c = provenance_color((pc.mesh_flags >> TANGENT_PROVENANCE_SHIFT) & 3u); break;
     case VIEW_SHADING_NORMAL: c = encode_vector(mapped_normal(m, x, t, b, n, uv0, uv1)); break;
     default: {
-        if (x.unlit != 0u) {
+        if (x.unlit != 0u || UNLIT_TOPOLOGY) {
             c = base.rgb;
             break;
         }

@@ -134,6 +134,8 @@ void GpuScene::upload_geometry(const Scene& scene) {
                       << kTangentProvenanceShift |
                   provenance_bits(mesh.provenance_of(VertexAttribute::Normal))
                       << kNormalProvenanceShift;
+        if (mesh.topology() == Topology::Lines) g.flags |= kMeshLinesBit;
+        if (mesh.topology() == Topology::Points) g.flags |= kMeshPointsBit;
         if (!instanced[m] || mesh.vertices.empty() || mesh.indices.empty()) continue;
         if (mesh.material_id >= scene.materials.size())
             throw GpuError("mesh " + std::to_string(m) + " names material " +

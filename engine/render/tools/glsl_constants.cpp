@@ -65,6 +65,8 @@ std::string mesh_flags() {
         {VertexAttribute::TexCoord1, "UV1"},     {VertexAttribute::Color0, "COLOR"}};
     static_assert(std::size(streams) == kVertexAttributeCount);
     for (auto [a, name] : streams) o << "const uint HAS_" << name << " = 1u << " << u(a) << ";\n";
+    o << "const uint MESH_LINES = " << hex(gpu::kMeshLinesBit) << "; // topology bits\n";
+    o << "const uint MESH_POINTS = " << hex(gpu::kMeshPointsBit) << ";\n";
     o << "const uint TANGENT_PROVENANCE_SHIFT = " << gpu::kTangentProvenanceShift
       << "; // 0 authored, 1 generated, 2 defaulted\n";
     o << "const uint NORMAL_PROVENANCE_SHIFT = " << gpu::kNormalProvenanceShift << ";\n";

@@ -98,7 +98,14 @@ static_assert(sizeof(GPUTextureTransform) == 32);
 static_assert(offsetof(GPUMaterialExtra, unlit) == 160);
 static_assert(sizeof(GPUMaterialExtra) == 176);
 
-// mesh_flags bits (common.glsl).
+// mesh_flags bits (common.glsl). Bits 0-5 are the streams (1 << VertexAttribute);
+// a lines or points mesh sets one topology bit.
+inline constexpr std::uint32_t kMeshLinesBit = 1u << 6;
+inline constexpr std::uint32_t kMeshPointsBit = 1u << 7;
+inline constexpr std::uint32_t kMeshTopologyBits = kMeshLinesBit | kMeshPointsBit;
+// Points are drawn this many pixels wide where the device supports large points
+// (largePoints), else at its only size, 1.
+inline constexpr float kPointSizePixels = 4.0f;
 inline constexpr std::uint32_t kTangentProvenanceShift = 8;
 inline constexpr std::uint32_t kNormalProvenanceShift = 10;
 inline constexpr std::uint32_t kGlyphKindShift = 16;

@@ -125,9 +125,17 @@ void main() {
             c = base.rgb;
             break;
         }
-        vec4 mr_texel = metallic_roughness_texel(m, x, uv0, uv1);
-        vec2 mr = metallic_roughness(m, mr_texel);
-        Surface s = Surface(base.rgb, mr.x, mr.y, mapped_normal(m, x, t, b, n, uv0, uv1), v);
+        vec3 shading_n = mapped_normal(m, x, t, b, n, uv0, uv1);
+        Surface s;
+        vec4 mr_texel = vec4(1.0);
+        if (x.workflow == WORKFLOW_SPECULAR_GLOSSINESS) {
+            vec4 sg = specular_glossiness(x, uv0, uv1);
+            s = spec_gloss_surface(base.rgb, sg.rgb, sg.a, shading_n, v);
+        } else {
+            mr_texel = metallic_roughness_texel(m, x, uv0, uv1);
+            vec2 mr = metallic_roughness(m, mr_texel);
+            s = metal_rough_surface(base.rgb, mr.x, mr.y, shading_n, v);
+        }
         // The sun (and its shadow lookup) only where some pixel of the SIMD group
         // faces it: a uniform branch, so a CPU rasterizer skips the work.
         vec3 sun_l = -normalize(frame.sun_direction.xyz);
@@ -138,7 +146,9 @@ void main() {
             c = brdf_times_cos(s, sun_l) * frame.sun_radiance.rgb * shadow;
         }
         for (uint i = 0u; i < frame.params.y; ++i) c += punctual_light(s, frame.lights[i], in_world_pos);
-        c += ambient_light(s, frame.ambient.rgb) * occlusion(m, x, uv0, uv1, mr_texel);
+        float ao = x.workflow == WORKFLOW_SPECULAR_GLOSSINESS ? occlusion(m, x, uv0, uv1)
+                                                              : occlusion(m, x, uv0, uv1, mr_texel);
+        c += ambient_light(s, frame.ambient.rgb) * ao;
         c += emission(m, x, uv0, uv1);
         break;
     }

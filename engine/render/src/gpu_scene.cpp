@@ -208,6 +208,14 @@ void GpuScene::upload_materials(const Scene& scene) {
         x.uv[kSlotOcclusion] = uv_transform(m.occlusion);
         x.uv[kSlotEmissive] = uv_transform(m.emissive);
         x.unlit = m.unlit ? 1u : 0u;
+        x.specular_glossiness_tex = kWhiteTexture;
+        if (const auto& sg = m.specular_glossiness) {
+            x.workflow = kWorkflowSpecularGlossiness;
+            x.uv[kSlotSpecularGlossiness] = uv_transform(sg->specular_glossiness);
+            x.specular_glossiness_tex = textures_->field_slot(sg->specular_glossiness, kRoleColor,
+                                                              kWhiteTexture);
+            x.specular_glossiness = glm::vec4(sg->specular_factor, sg->glossiness_factor);
+        }
         extras.push_back(x);
     }
     if (data.empty()) { // keep the addresses valid for scenes without materials

@@ -212,8 +212,8 @@ void GpuScene::upload_materials(const Scene& scene) {
         if (const auto& sg = m.specular_glossiness) {
             x.workflow = kWorkflowSpecularGlossiness;
             x.uv[kSlotSpecularGlossiness] = uv_transform(sg->specular_glossiness);
-            x.specular_glossiness_tex = textures_->field_slot(sg->specular_glossiness, kRoleColor,
-                                                              kWhiteTexture);
+            x.specular_glossiness_tex =
+                textures_->field_slot(sg->specular_glossiness, kRoleColor, kWhiteTexture);
             x.specular_glossiness = glm::vec4(sg->specular_factor, sg->glossiness_factor);
         }
         extras.push_back(x);

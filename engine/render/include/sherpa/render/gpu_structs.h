@@ -97,10 +97,10 @@ struct GPUTextureTransform {
 struct GPUMaterialExtra {
     GPUTextureTransform uv[kSlotCount];
     std::uint32_t unlit;
-    std::uint32_t workflow;                 // kWorkflow*
-    std::uint32_t specular_glossiness_tex;  // bindless slot (white when absent)
+    std::uint32_t workflow;                // kWorkflow*
+    std::uint32_t specular_glossiness_tex; // bindless slot (white when absent)
     std::uint32_t pad0;
-    glm::vec4 specular_glossiness;          // xyz specularFactor, w glossinessFactor
+    glm::vec4 specular_glossiness; // xyz specularFactor, w glossinessFactor
 };
 static_assert(sizeof(GPUTextureTransform) == 32);
 static_assert(offsetof(GPUMaterialExtra, unlit) == 192);

@@ -3,6 +3,7 @@
 #include "motion_json.h"
 #include <sherpa/scene/gltf_extensions.h>
 #include <sherpa/texture/basis.h>
+#include <sherpa/texture/image_container.h>
 
 #include <chrono>
 #include <cstring>
@@ -52,18 +53,6 @@ json extensions_json(const std::vector<std::string>& names) {
     return out;
 }
 
-// An encoded image's container, by its leading bytes (not its name or MIME type).
-std::string container_of(const std::vector<std::uint8_t>& b) {
-    const auto starts = [&](const char* magic, std::size_t at = 0) {
-        const std::size_t n = std::strlen(magic);
-        return b.size() >= at + n && std::memcmp(b.data() + at, magic, n) == 0;
-    };
-    if (starts("\x89PNG")) return "png";
-    if (starts("\xFF\xD8\xFF")) return "jpeg";
-    if (starts("RIFF") && starts("WEBP", 8)) return "webp";
-    return b.empty() ? "none" : "other";
-}
-
 // Per image: its container; KTX2 files are transcoded (as the texture pipeline
 // does) to tell ETC1S from UASTC and time it.
 json images_json(const Scene& scene) {
@@ -86,7 +75,7 @@ json images_json(const Scene& scene) {
                 e["error"] = error;
             }
         } else {
-            e["container"] = container_of(img.encoded);
+            e["container"] = tex::image_container(img.encoded).name;
         }
         out.push_back(std::move(e));
     }
@@ -120,6 +109,8 @@ json scene_info_json(const Scene& scene) {
         json e = {{"mesh", p.mesh},         {"primitive", p.primitive}, {"mode", to_string(p.mode)},
                   {"vertices", p.vertices}, {"indices", p.indices},     {"triangles", p.triangles},
                   {"material", p.material}, {"attributes", attrs}};
+        if (topology_of(p.mode) == Topology::Lines) e["segments"] = p.segments;
+        if (topology_of(p.mode) == Topology::Points) e["points"] = p.points;
         if (p.compression)
             e["compression"] = {{"codec", p.compression->codec},
                                 {"mode", p.compression->modes},

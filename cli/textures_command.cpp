@@ -1,16 +1,19 @@
 // sherpa-cli textures SCENE [--cache-dir DIR] [--cache-cap-mb N] [--quality N] [--no-cache]
-//                          [--no-bc] [--json]
+//                          [--no-bc] [--json] [--export-source DIR]
 // Runs the texture pipeline over the displayed scene and prints, per (image,
-// role), what the texture-cache dock shows.
+// role), what the texture-cache dock shows. --export-source writes every source
+// image as the engine decoded it (level 0 PNG) instead.
 #include "cli_common.h"
 #include "texture_cli.h"
 
 #include <sherpa/scene/scene_loader.h>
+#include <sherpa/texture/source_export.h>
 #include <sherpa/texture/texture_pipeline.h>
 
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -18,8 +21,35 @@ namespace sherpa::cli {
 namespace {
 
 void print_usage() {
-    std::fprintf(stderr, "usage: sherpa-cli textures SCENE %s [--json]\n%s",
+    std::fprintf(stderr,
+                 "usage: sherpa-cli textures SCENE %s [--json] [--export-source DIR]\n%s"
+                 "  --export-source DIR  write every image of the file as decoded (level 0,\n"
+                 "                     RGBA8 PNG, unassociated alpha), named after its file\n",
                  kTextureOptionsSynopsis, kTextureOptionsHelp);
+}
+
+// Exit 1 when some image could not be exported (each named on stderr).
+int export_source_images(const Scene& scene, const std::filesystem::path& dir, bool as_json) {
+    const std::vector<tex::SourceExport> exports = tex::export_sources(scene, dir);
+    nlohmann::json j = nlohmann::json::array();
+    bool failed = false;
+    for (const tex::SourceExport& e : exports) {
+        failed |= !e.error.empty();
+        if (!e.error.empty())
+            std::fprintf(stderr, "error: image %d: %s\n", e.image, e.error.c_str());
+        if (as_json) {
+            j.push_back(
+                {{"image", e.image},
+                 {"file", e.file.string()},
+                 {"width", e.width},
+                 {"height", e.height},
+                 {"error", e.error.empty() ? nlohmann::json(nullptr) : nlohmann::json(e.error)}});
+        } else if (e.error.empty()) {
+            std::printf("%5d %5ux%-5u %s\n", e.image, e.width, e.height, e.file.string().c_str());
+        }
+    }
+    if (as_json) std::cout << nlohmann::json{{"exported", j}}.dump(1) << "\n";
+    return failed ? kExitLoadError : kExitOk;
 }
 
 } // namespace
@@ -27,6 +57,7 @@ void print_usage() {
 int run_textures(Args args) {
     std::string_view spec;
     bool as_json = false;
+    std::optional<std::filesystem::path> export_dir;
     TextureCliOptions texture_options;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string_view a = args[i];
@@ -40,6 +71,13 @@ int run_textures(Args args) {
         if (m == OptionMatch::Taken) continue;
         if (a == "--json") {
             as_json = true;
+        } else if (a == "--export-source") {
+            if (i + 1 >= args.size()) {
+                std::fprintf(stderr, "error: --export-source needs a directory\n");
+                print_usage();
+                return kExitUsage;
+            }
+            export_dir = std::filesystem::path(args[++i]);
         } else if (!a.empty() && a[0] != '-' && spec.empty()) {
             spec = a;
         } else {
@@ -59,6 +97,7 @@ int run_textures(Args args) {
         std::fprintf(stderr, "error: %s\n", r.error.c_str());
         return kExitLoadError;
     }
+    if (export_dir) return export_source_images(*r.scene, *export_dir, as_json);
     const tex::PreparedTextureSet set = tex::prepare_textures(*r.scene, options);
     for (const std::string& w : set.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     if (as_json) {

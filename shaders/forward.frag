@@ -29,6 +29,9 @@ layout(constant_id = 0) const uint VIEW = VIEW_LIT;
 // absent tangent stream means no material of the mesh has a normal map, so lit
 // shading never uses them).
 layout(constant_id = 1) const uint STREAMS = HAS_TANGENT | HAS_UV0 | HAS_UV1 | HAS_COLOR;
+// Lines and points (MESH_LINES / MESH_POINTS in STREAMS) have no surface: they are
+// shaded unlit, base colour times vertex colour, like KHR_materials_unlit.
+const bool UNLIT_TOPOLOGY = (STREAMS & (MESH_LINES | MESH_POINTS)) != 0u;
 const bool READ_TANGENT = (STREAMS & HAS_TANGENT) != 0u || VIEW == VIEW_TANGENT ||
                           VIEW == VIEW_BITANGENT || VIEW == VIEW_TANGENT_W;
 
@@ -118,13 +121,21 @@ void main() {
     case VIEW_PROVENANCE: c = provenance_color((pc.mesh_flags >> TANGENT_PROVENANCE_SHIFT) & 3u); break;
     case VIEW_SHADING_NORMAL: c = encode_vector(mapped_normal(m, x, t, b, n, uv0, uv1)); break;
     default: {
-        if (x.unlit != 0u) {
+        if (x.unlit != 0u || UNLIT_TOPOLOGY) {
             c = base.rgb;
             break;
         }
-        vec4 mr_texel = metallic_roughness_texel(m, x, uv0, uv1);
-        vec2 mr = metallic_roughness(m, mr_texel);
-        Surface s = Surface(base.rgb, mr.x, mr.y, mapped_normal(m, x, t, b, n, uv0, uv1), v);
+        vec3 shading_n = mapped_normal(m, x, t, b, n, uv0, uv1);
+        Surface s;
+        vec4 mr_texel = vec4(1.0);
+        if (x.workflow == WORKFLOW_SPECULAR_GLOSSINESS) {
+            vec4 sg = specular_glossiness(x, uv0, uv1);
+            s = spec_gloss_surface(base.rgb, sg.rgb, sg.a, shading_n, v);
+        } else {
+            mr_texel = metallic_roughness_texel(m, x, uv0, uv1);
+            vec2 mr = metallic_roughness(m, mr_texel);
+            s = metal_rough_surface(base.rgb, mr.x, mr.y, shading_n, v);
+        }
         // The sun (and its shadow lookup) only where some pixel of the SIMD group
         // faces it: a uniform branch, so a CPU rasterizer skips the work.
         vec3 sun_l = -normalize(frame.sun_direction.xyz);
@@ -135,7 +146,9 @@ void main() {
             c = brdf_times_cos(s, sun_l) * frame.sun_radiance.rgb * shadow;
         }
         for (uint i = 0u; i < frame.params.y; ++i) c += punctual_light(s, frame.lights[i], in_world_pos);
-        c += ambient_light(s, frame.ambient.rgb) * occlusion(m, x, uv0, uv1, mr_texel);
+        float ao = x.workflow == WORKFLOW_SPECULAR_GLOSSINESS ? occlusion(m, x, uv0, uv1)
+                                                              : occlusion(m, x, uv0, uv1, mr_texel);
+        c += ambient_light(s, frame.ambient.rgb) * ao;
         c += emission(m, x, uv0, uv1);
         break;
     }

@@ -12,6 +12,10 @@ layout(location = 5) out vec4 out_color;
 // Outputs the fragment shader does not read (absent streams are constants there,
 // see forward.frag) are removed when the pipeline links the two stages.
 
+// Points (MESH_POINTS meshes, point-list pipelines) are this many pixels wide: a
+// specialization constant, 1 on devices without largePoints (pipelines.cpp).
+layout(constant_id = 0) const float POINT_SIZE = 1.0;
+
 // Identical math to depth.vert, so the depth prepass and shading agree exactly.
 invariant gl_Position;
 
@@ -29,4 +33,5 @@ void main() {
     out_uv1 = fetch_uv1(i);
     out_color = fetch_color(i);
     gl_Position = frame.view_proj * world;
+    gl_PointSize = POINT_SIZE; // read only by point-list pipelines
 }

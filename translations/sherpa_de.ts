@@ -795,16 +795,40 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <translation>Kein Primitiv ausgewählt. Wählen Sie einen Knoten oder ein Primitiv im Szenenbaum oder klicken Sie ein Objekt im Viewport an.</translation>
     </message>
     <message>
-        <source>Mesh %1 primitive %2 &quot;%3&quot;: %4 vertices (file: %5), %6 triangles, material %7, %8 on the GPU%9</source>
-        <translation>Mesh %1 Primitiv %2 „%3“: %4 Vertices (Datei: %5), %6 Dreiecke, Material %7, %8 auf der GPU%9</translation>
-    </message>
-    <message>
         <source> (unwelded for flat normals)</source>
         <translation> (für flache Normalen aufgetrennt)</translation>
     </message>
     <message>
         <source>Comparing…</source>
         <translation>Vergleiche …</translation>
+    </message>
+    <message>
+        <source>Segments</source>
+        <translation>Segmente</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Punkte</translation>
+    </message>
+    <message>
+        <source>%1 line segments</source>
+        <translation>%1 Liniensegmente</translation>
+    </message>
+    <message>
+        <source>%1 points</source>
+        <translation>%1 Punkte</translation>
+    </message>
+    <message>
+        <source>%1 triangles</source>
+        <translation>%1 Dreiecke</translation>
+    </message>
+    <message>
+        <source>Mesh %1 primitive %2 &quot;%3&quot;: %4 vertices (file: %5), %6, material %7, %8 on the GPU%9</source>
+        <translation>Mesh %1 Primitiv %2 „%3“: %4 Vertices (Datei: %5), %6, Material %7, %8 auf der GPU%9</translation>
+    </message>
+    <message>
+        <source>; %1 %2: %3 → %4 decoded in %5 ms</source>
+        <translation>; %1 %2: %3 → %4 dekodiert in %5 ms</translation>
     </message>
 </context>
 <context>
@@ -1082,6 +1106,10 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <source>missing: %1</source>
         <translation>fehlt: %1</translation>
     </message>
+    <message>
+        <source>Container</source>
+        <translation>Container</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::TriangleTableModel</name>
@@ -1100,6 +1128,10 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>area</source>
         <translation>Fläche</translation>
+    </message>
+    <message>
+        <source>length</source>
+        <translation>Länge</translation>
     </message>
 </context>
 <context>

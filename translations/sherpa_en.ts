@@ -795,16 +795,40 @@ The current scene is kept.</translation>
         <translation>No primitive selected. Select a node or primitive in the scene tree or click an object in the viewport.</translation>
     </message>
     <message>
-        <source>Mesh %1 primitive %2 &quot;%3&quot;: %4 vertices (file: %5), %6 triangles, material %7, %8 on the GPU%9</source>
-        <translation>Mesh %1 primitive %2 &quot;%3&quot;: %4 vertices (file: %5), %6 triangles, material %7, %8 on the GPU%9</translation>
-    </message>
-    <message>
         <source> (unwelded for flat normals)</source>
         <translation> (unwelded for flat normals)</translation>
     </message>
     <message>
         <source>Comparing…</source>
         <translation>Comparing…</translation>
+    </message>
+    <message>
+        <source>Segments</source>
+        <translation>Segments</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Points</translation>
+    </message>
+    <message>
+        <source>%1 line segments</source>
+        <translation>%1 line segments</translation>
+    </message>
+    <message>
+        <source>%1 points</source>
+        <translation>%1 points</translation>
+    </message>
+    <message>
+        <source>%1 triangles</source>
+        <translation>%1 triangles</translation>
+    </message>
+    <message>
+        <source>Mesh %1 primitive %2 &quot;%3&quot;: %4 vertices (file: %5), %6, material %7, %8 on the GPU%9</source>
+        <translation>Mesh %1 primitive %2 &quot;%3&quot;: %4 vertices (file: %5), %6, material %7, %8 on the GPU%9</translation>
+    </message>
+    <message>
+        <source>; %1 %2: %3 → %4 decoded in %5 ms</source>
+        <translation>; %1 %2: %3 → %4 decoded in %5 ms</translation>
     </message>
 </context>
 <context>
@@ -1082,6 +1106,10 @@ The current scene is kept.</translation>
         <source>missing: %1</source>
         <translation>missing: %1</translation>
     </message>
+    <message>
+        <source>Container</source>
+        <translation>Container</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::TriangleTableModel</name>
@@ -1100,6 +1128,10 @@ The current scene is kept.</translation>
     <message>
         <source>area</source>
         <translation>area</translation>
+    </message>
+    <message>
+        <source>length</source>
+        <translation>length</translation>
     </message>
 </context>
 <context>

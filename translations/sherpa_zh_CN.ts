@@ -795,16 +795,40 @@ The current scene is kept.</source>
         <translation>未选择图元。请在场景树中选择节点或图元，或在视口中单击物体。</translation>
     </message>
     <message>
-        <source>Mesh %1 primitive %2 &quot;%3&quot;: %4 vertices (file: %5), %6 triangles, material %7, %8 on the GPU%9</source>
-        <translation>网格 %1 图元 %2“%3”：%4 个顶点（文件中 %5 个），%6 个三角形，材质 %7，GPU 上 %8%9</translation>
-    </message>
-    <message>
         <source> (unwelded for flat normals)</source>
         <translation>（为平面法线拆分顶点）</translation>
     </message>
     <message>
         <source>Comparing…</source>
         <translation>正在比较…</translation>
+    </message>
+    <message>
+        <source>Segments</source>
+        <translation>线段</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>点</translation>
+    </message>
+    <message>
+        <source>%1 line segments</source>
+        <translation>%1 条线段</translation>
+    </message>
+    <message>
+        <source>%1 points</source>
+        <translation>%1 个点</translation>
+    </message>
+    <message>
+        <source>%1 triangles</source>
+        <translation>%1 个三角形</translation>
+    </message>
+    <message>
+        <source>Mesh %1 primitive %2 &quot;%3&quot;: %4 vertices (file: %5), %6, material %7, %8 on the GPU%9</source>
+        <translation>网格 %1 图元 %2“%3”：%4 个顶点（文件中 %5 个），%6，材质 %7，GPU 上 %8%9</translation>
+    </message>
+    <message>
+        <source>; %1 %2: %3 → %4 decoded in %5 ms</source>
+        <translation>；%1 %2：%3 → %4，解码 %5 ms</translation>
     </message>
 </context>
 <context>
@@ -1082,6 +1106,10 @@ The current scene is kept.</source>
         <source>missing: %1</source>
         <translation>缺失:%1</translation>
     </message>
+    <message>
+        <source>Container</source>
+        <translation>容器</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::TriangleTableModel</name>
@@ -1100,6 +1128,10 @@ The current scene is kept.</source>
     <message>
         <source>area</source>
         <translation>面积</translation>
+    </message>
+    <message>
+        <source>length</source>
+        <translation>长度</translation>
     </message>
 </context>
 <context>

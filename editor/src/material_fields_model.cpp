@@ -6,6 +6,8 @@
 
 #include "format_values.h"
 
+#include <sherpa/render/gpu_structs.h>
+
 namespace sherpa::editor {
 
 namespace {
@@ -79,7 +81,54 @@ void MaterialFieldsModel::clear() {
     endResetModel();
 }
 
+const SpecularGlossiness* MaterialFieldsModel::specGloss() const {
+    if (!scene_ || material_ < 0 || std::size_t(material_) >= scene_->materials.size())
+        return nullptr;
+    const auto& sg = scene_->materials[std::size_t(material_)].specular_glossiness;
+    return sg ? &*sg : nullptr;
+}
+
+// Rows: workflow, specular_glossiness (xyz specularFactor, w glossinessFactor), the
+// texture. The extension's diffuse is in base_color_factor / base_color_tex.
+QVariant MaterialFieldsModel::specGlossData(int row, int column) const {
+    const SpecularGlossiness& sg = *specGloss();
+    static constexpr std::size_t kOffsets[] = {
+        offsetof(gpu::GPUMaterialExtra, workflow),
+        offsetof(gpu::GPUMaterialExtra, specular_glossiness),
+        offsetof(gpu::GPUMaterialExtra, specular_glossiness_tex)};
+    static constexpr const char* kNames[] = {"extra.workflow", "extra.specular_glossiness",
+                                             "extra.specular_glossiness_tex"};
+    static constexpr const char* kProperties[] = {
+        "KHR_materials_pbrSpecularGlossiness",
+        "KHR_materials_pbrSpecularGlossiness.specularFactor, glossinessFactor",
+        "KHR_materials_pbrSpecularGlossiness.specularGlossinessTexture"};
+    switch (column) {
+    case OffsetColumn:
+        return static_cast<int>(kOffsets[row]);
+    case FieldColumn:
+        return QString::fromLatin1(kNames[row]);
+    case PropertyColumn:
+        return QString::fromLatin1(kProperties[row]);
+    case TypeColumn:
+        return row == 1 ? QStringLiteral("vec4") : QStringLiteral("uint");
+    case ValueColumn:
+        if (row == 0)
+            return QStringLiteral("%1 (specular-glossiness)").arg(gpu::kWorkflowSpecularGlossiness);
+        if (row == 1) return Format::vec(glm::vec4(sg.specular_factor, sg.glossiness_factor));
+        return sg.specular_glossiness.present() ? QString::number(sg.specular_glossiness.texture)
+                                                : tr("default texture");
+    case ChainColumn:
+        if (row != 2) return {};
+        return sg.specular_glossiness.present() ? chain(sg.specular_glossiness.texture)
+                                                : tr("default texture");
+    default:
+        return {};
+    }
+}
+
 int MaterialFieldsModel::textureOfRow(int row) const {
+    if (row == kFieldCount + 2 && specGloss() && specGloss()->specular_glossiness.present())
+        return specGloss()->specular_glossiness.texture;
     if (!scene_ || row < 0 || row >= kFieldCount) return -1;
     if (kFields[row].type != FieldType::TextureIndex) return -1;
     const auto value = read<std::uint32_t>(record_, kFields[row].offset);
@@ -109,7 +158,7 @@ QString MaterialFieldsModel::chain(int texture) const {
 }
 
 int MaterialFieldsModel::rowCount(const QModelIndex& parent) const {
-    return parent.isValid() || material_ < 0 ? 0 : kFieldCount;
+    return parent.isValid() || material_ < 0 ? 0 : kFieldCount + (specGloss() ? 3 : 0);
 }
 
 int MaterialFieldsModel::columnCount(const QModelIndex& parent) const {
@@ -118,6 +167,12 @@ int MaterialFieldsModel::columnCount(const QModelIndex& parent) const {
 
 QVariant MaterialFieldsModel::data(const QModelIndex& index, int role) const {
     if (!index.isValid() || material_ < 0) return {};
+    if (index.row() >= kFieldCount) {
+        if (role == TextureRole) return textureOfRow(index.row());
+        return role == Qt::DisplayRole && specGloss()
+                   ? specGlossData(index.row() - kFieldCount, index.column())
+                   : QVariant();
+    }
     const Field& f = kFields[index.row()];
     const int texture = textureOfRow(index.row());
     if (role == TextureRole) return texture;
@@ -139,6 +194,11 @@ QVariant MaterialFieldsModel::data(const QModelIndex& index, int role) const {
     case FieldColumn:
         return QString::fromLatin1(f.name);
     case PropertyColumn:
+        // Spec-gloss materials keep their diffuse where the base colour goes.
+        if (specGloss() && f.offset == offsetof(GPUMaterialData, base_color_factor))
+            return QStringLiteral("KHR_materials_pbrSpecularGlossiness.diffuseFactor");
+        if (specGloss() && f.offset == offsetof(GPUMaterialData, base_color_tex))
+            return QStringLiteral("KHR_materials_pbrSpecularGlossiness.diffuseTexture");
         return QString::fromLatin1(f.gltf_property);
     case TypeColumn:
         switch (f.type) {

@@ -52,6 +52,10 @@ public:
 
 private:
     QString chain(int texture) const;
+    // KHR_materials_pbrSpecularGlossiness: the material's extension fields as rows
+    // after the GPUMaterialData ones (GPUMaterialExtra, from the CPU record).
+    const SpecularGlossiness* specGloss() const;
+    QVariant specGlossData(int row, int column) const;
 
     std::shared_ptr<const Scene> scene_;
     std::shared_ptr<const SceneExtras> extras_;

@@ -122,7 +122,11 @@ MeshDock::~MeshDock() {
 void MeshDock::retranslate() {
     setWindowTitle(tr("Mesh Attributes"));
     tabs_->setTabText(0, tr("Vertices"));
-    tabs_->setTabText(1, tr("Triangles"));
+    const Mesh* shown = MeshRef{context_.sharedScene(), shown_mesh_}.get();
+    const Topology topology = shown ? shown->topology() : Topology::Triangles;
+    tabs_->setTabText(1, topology == Topology::Lines    ? tr("Segments")
+                         : topology == Topology::Points ? tr("Points")
+                                                        : tr("Triangles"));
     jump_button_->setText(tr("Jump to vertex"));
     tangent_button_->setText(tr("Compare tangents"));
     tangent_button_->setToolTip(tr("Regenerate MikkTSpace tangents and show the angle to the "
@@ -143,12 +147,13 @@ void MeshDock::showMesh() {
     jump_->setRange(0, std::max(0, vertices_->rowCount() - 1));
     tangent_summary_->clear();
     attribute_view_->resizeColumnsToContents();
-    updateSummary();
+    retranslate(); // the element tab is named after the topology
 }
 
 void MeshDock::updateSummary() {
     const Mesh* m = MeshRef{context_.sharedScene(), shown_mesh_}.get();
-    tangent_button_->setEnabled(m != nullptr && !m->indices.empty() && !tangent_job_.isRunning());
+    tangent_button_->setEnabled(m != nullptr && m->triangle_count() > 0 &&
+                                !tangent_job_.isRunning());
     jump_button_->setEnabled(m != nullptr);
     if (!m) {
         summary_->setText(tr("No primitive selected. Select a node or primitive in the scene tree "
@@ -157,17 +162,36 @@ void MeshDock::updateSummary() {
     }
     std::uint64_t gpu = 0;
     for (int r = 0; r < attributes_->rowCount(); ++r) gpu += attributes_->gpuBytes(r);
-    summary_->setText(tr("Mesh %1 primitive %2 \"%3\": %4 vertices (file: %5), %6 triangles, "
+    const QString elements =
+        m->topology() == Topology::Lines    ? tr("%1 line segments").arg(m->element_count())
+        : m->topology() == Topology::Points ? tr("%1 points").arg(m->element_count())
+                                            : tr("%1 triangles").arg(m->triangle_count());
+    summary_->setText(tr("Mesh %1 primitive %2 \"%3\": %4 vertices (file: %5), %6, "
                          "material %7, %8 on the GPU%9")
                           .arg(m->group_id)
                           .arg(m->primitive_index)
                           .arg(QString::fromStdString(m->name))
                           .arg(m->vertices.size())
                           .arg(m->source_vertex_count)
-                          .arg(m->triangle_count())
+                          .arg(elements)
                           .arg(m->material_id)
                           .arg(Format::bytes(gpu))
-                          .arg(m->unwelded ? tr(" (unwelded for flat normals)") : QString()));
+                          .arg(m->unwelded ? tr(" (unwelded for flat normals)") : QString()) +
+                      compressionText(*context_.sharedScene(), shown_mesh_));
+}
+
+// "; EXT_meshopt_compression ATTRIBUTES/OCTAHEDRAL, TRIANGLES: 12 KB -> 48 KB in
+// 0.21 ms" for a primitive the file stores compressed, else empty.
+QString MeshDock::compressionText(const Scene& scene, int mesh) {
+    for (const PrimitiveInfo& p : scene.primitives) {
+        if (p.engine_mesh != mesh || !p.compression) continue;
+        const PrimitiveCompression& c = *p.compression;
+        return tr("; %1 %2: %3 → %4 decoded in %5 ms")
+            .arg(QString::fromStdString(c.codec), QString::fromStdString(c.modes),
+                 Format::bytes(c.encoded_bytes), Format::bytes(c.decoded_bytes))
+            .arg(c.decode_ms, 0, 'f', 2);
+    }
+    return {};
 }
 
 void MeshDock::computeTangentErrors() {

@@ -46,6 +46,7 @@ Q_SIGNALS:
 private:
     void showMesh();
     void updateSummary();
+    static QString compressionText(const Scene& scene, int mesh);
 
     const EditorContext& context_;
     int shown_mesh_ = -1;

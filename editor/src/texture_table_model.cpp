@@ -6,6 +6,7 @@
 #include <set>
 
 #include <sherpa/scene/image_sources.h>
+#include <sherpa/texture/image_container.h>
 #include <sherpa/texture/texture_pipeline.h>
 
 #include "format_values.h"
@@ -157,6 +158,15 @@ QVariant TextureTableModel::data(const QModelIndex& index, int role) const {
     case FormatColumn:
         if (prepared_) return cacheData(row, index.column()); // what the GPU samples
         return img ? QString::fromStdString(img->mime_type) : QString();
+    case ContainerColumn: {
+        // Decode ms is the transcode for KTX2 sources (the pipeline's decode step).
+        if (!img || img->encoded.empty()) return img ? tr("generated") : QString();
+        const tex::ImageContainer c = tex::image_container(img->encoded);
+        return c.supercompression.empty()
+                   ? QString::fromStdString(c.name)
+                   : QStringLiteral("%1 · %2").arg(QString::fromStdString(c.name),
+                                                   QString::fromStdString(c.supercompression));
+    }
     case DiskBytesColumn:
         // The cache's KTX2 file once there is one, else the encoded source.
         if (QVariant v = cacheData(row, DiskBytesColumn); v != QStringLiteral("—")) return v;
@@ -195,6 +205,8 @@ QVariant TextureTableModel::headerData(int section, Qt::Orientation o, int role)
         return tr("Encode ms");
     case PsnrColumn:
         return tr("PSNR");
+    case ContainerColumn:
+        return tr("Container");
     default:
         return {};
     }

@@ -30,6 +30,7 @@ public:
         DecodeMsColumn,
         EncodeMsColumn,
         PsnrColumn,
+        ContainerColumn, // png, jpeg, webp, ktx2-etc1s / ktx2-uastc with supercompression
         ColumnCount
     };
     explicit TextureTableModel(QObject* parent = nullptr);

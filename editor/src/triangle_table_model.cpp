@@ -14,7 +14,7 @@ void TriangleTableModel::setMesh(MeshRef mesh) {
 
 int TriangleTableModel::rowCount(const QModelIndex& parent) const {
     const Mesh* m = mesh_.get();
-    return parent.isValid() || !m ? 0 : static_cast<int>(m->triangle_count());
+    return parent.isValid() || !m ? 0 : static_cast<int>(m->element_count());
 }
 
 int TriangleTableModel::columnCount(const QModelIndex& parent) const {
@@ -27,15 +27,23 @@ QVariant TriangleTableModel::data(const QModelIndex& index, int role) const {
     if (role == Qt::TextAlignmentRole) return int(Qt::AlignRight | Qt::AlignVCenter);
     const bool exact = role == Qt::ToolTipRole || role == Format::kExactTextRole;
     if (role != Qt::DisplayRole && !(exact && index.column() == AreaColumn)) return {};
-    const std::size_t t = static_cast<std::size_t>(index.row()) * 3;
+    const std::size_t per = indices_per_element(m->topology());
+    const std::size_t t = static_cast<std::size_t>(index.row()) * per;
     switch (index.column()) {
     case IndexColumn:
         return index.row();
     case V0:
     case V1:
     case V2:
+        if (std::size_t(index.column() - V0) >= per) return {};
         return m->indices[t + static_cast<std::size_t>(index.column() - V0)];
     case AreaColumn: {
+        if (m->topology() == Topology::Points) return {};
+        if (m->topology() == Topology::Lines) {
+            const double length = static_cast<double>(glm::length(
+                m->vertices[m->indices[t + 1]].position - m->vertices[m->indices[t]].position));
+            return exact ? Format::exact(length) : Format::number(length);
+        }
         // Degenerate (zero-area) triangles are what breaks tangent generation: show them.
         const glm::vec3 a = m->vertices[m->indices[t]].position;
         const glm::vec3 b = m->vertices[m->indices[t + 1]].position;
@@ -60,8 +68,10 @@ QVariant TriangleTableModel::headerData(int section, Qt::Orientation o, int role
         return tr("vertex 1");
     case V2:
         return tr("vertex 2");
-    case AreaColumn:
-        return tr("area");
+    case AreaColumn: {
+        const Mesh* m = mesh_.get();
+        return m && m->topology() == Topology::Lines ? tr("length") : tr("area");
+    }
     default:
         return {};
     }

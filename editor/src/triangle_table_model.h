@@ -1,5 +1,6 @@
 #pragma once
-// Triangles of one primitive: the three indices straight from Mesh::indices.
+// Elements of one primitive straight from Mesh::indices: triangles (three vertices
+// and the area), line segments (two vertices and the length) or points (one vertex).
 #include <QAbstractTableModel>
 
 #include "mesh_models_common.h"

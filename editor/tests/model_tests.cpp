@@ -84,6 +84,7 @@ private Q_SLOTS:
     void generatedTangentsAgreeWithRegeneration();
     void frameKeepsTheBoxInView();
     void pickHitsTheInstanceUnderTheRay();
+    void pickHitsLinesAndPointsWithinACone();
     void cullingMonitorFreezes();
     void selectionFollowsActions();
     void commandLineDocksAndCulling();
@@ -274,6 +275,41 @@ void ModelTests::pickHitsTheInstanceUnderTheRay() {
     // Hidden instances are not pickable.
     const PickHit none = pick(s, cam.eye(), cam.forward(), [](std::size_t) { return false; });
     QVERIFY(!none);
+}
+
+// A line strip along x and a point above it: rays passing within the pick cone hit
+// them (segment / point index in `triangle`), rays further off do not.
+void ModelTests::pickHitsLinesAndPointsWithinACone() {
+    Scene s;
+    auto add = [&](PrimitiveMode mode, std::vector<glm::vec3> positions,
+                   std::vector<std::uint32_t> indices) {
+        Mesh m;
+        m.source_mode = mode;
+        for (glm::vec3 p : positions) {
+            m.vertices.push_back(Vertex{});
+            m.vertices.back().position = p;
+            m.local_bounds.expand(p);
+        }
+        m.indices = std::move(indices);
+        MeshInstance inst;
+        inst.mesh_id = static_cast<std::uint32_t>(s.meshes.size());
+        inst.world_bounds = m.local_bounds;
+        s.meshes.push_back(std::move(m));
+        s.instances.push_back(inst);
+    };
+    add(PrimitiveMode::LineStrip, {{-1, 0, 0}, {0, 0, 0}, {1, 0, 0}}, {0, 1, 1, 2});
+    add(PrimitiveMode::Points, {{0, 2, 0}}, {0});
+    const glm::vec3 down(0, 0, -1);
+    auto all = [](std::size_t) { return true; };
+    const PickHit line = pick(s, {0.5f, 0.02f, 5.0f}, down, all);
+    QCOMPARE(line.instance, std::int64_t{0});
+    QCOMPARE(line.triangle, std::int64_t{1}); // the second segment
+    QVERIFY(std::abs(line.distance - 5.0f) < 1e-3f);
+    QVERIFY(!pick(s, {0.5f, 0.2f, 5.0f}, down, all)); // 0.2 off at distance 5: outside
+    const PickHit point = pick(s, {0.03f, 2.0f, 5.0f}, down, all);
+    QCOMPARE(point.instance, std::int64_t{1});
+    QCOMPARE(point.triangle, std::int64_t{0});
+    QVERIFY(!pick(s, {0.3f, 2.0f, 5.0f}, down, all));
 }
 
 void ModelTests::cullingMonitorFreezes() {

@@ -4,13 +4,27 @@
 #define SHERPA_BRDF_GLSL
 const float PI = 3.14159265358979;
 
+// BRDF inputs, whichever workflow gave them: the diffuse reflectance, F0 and the
+// perceptual roughness.
 struct Surface {
-    vec3 albedo;
-    float metallic;
+    vec3 diffuse;
+    vec3 f0;
     float roughness;
     vec3 n; // shading normal, unit, facing the viewer side of the surface
     vec3 v; // unit vector to the eye
 };
+
+// glTF metallic-roughness: dielectric F0 0.04, metals reflect their base colour.
+Surface metal_rough_surface(vec3 albedo, float metallic, float roughness, vec3 n, vec3 v) {
+    return Surface(albedo * (1.0 - metallic), mix(vec3(0.04), albedo, metallic), roughness, n, v);
+}
+
+// KHR_materials_pbrSpecularGlossiness, by its definition: F0 = specular, roughness =
+// 1 - glossiness, and the diffuse reflectance diffuse * (1 - max(specular)).
+Surface spec_gloss_surface(vec3 diffuse, vec3 specular, float glossiness, vec3 n, vec3 v) {
+    float max_specular = max(max(specular.r, specular.g), specular.b);
+    return Surface(diffuse * (1.0 - max_specular), specular, 1.0 - glossiness, n, v);
+}
 
 // x^5 as products: a CPU rasterizer evaluates pow() as exp2(5 * log2(x)), two
 // polynomial approximations per lane.
@@ -46,9 +60,8 @@ vec3 brdf_times_cos(Surface s, vec3 l) {
     float n_dot_h = clamp(dot(s.n, h), 0.0, 1.0);
     float v_dot_h = clamp(dot(s.v, h), 0.0, 1.0);
     float a = max(s.roughness * s.roughness, 1e-3);
-    vec3 f0 = mix(vec3(0.04), s.albedo, s.metallic);
-    vec3 f = fresnel_schlick(f0, v_dot_h);
-    vec3 diffuse = (1.0 - f) * (1.0 - s.metallic) * s.albedo / PI;
+    vec3 f = fresnel_schlick(s.f0, v_dot_h);
+    vec3 diffuse = (1.0 - f) * s.diffuse / PI;
     vec3 specular = f * d_ggx(n_dot_h, a) * v_smith_ggx(n_dot_l, n_dot_v, a);
     return (diffuse + specular) * n_dot_l;
 }
@@ -62,9 +75,8 @@ vec3 hemisphere(vec3 dir, vec3 radiance) {
 
 vec3 ambient_light(Surface s, vec3 radiance) {
     float n_dot_v = clamp(abs(dot(s.n, s.v)), 1e-4, 1.0);
-    vec3 f0 = mix(vec3(0.04), s.albedo, s.metallic);
-    vec3 f = f0 + (max(vec3(1.0 - s.roughness), f0) - f0) * pow5(1.0 - n_dot_v);
-    vec3 diffuse = (1.0 - f) * (1.0 - s.metallic) * s.albedo * hemisphere(s.n, radiance);
+    vec3 f = s.f0 + (max(vec3(1.0 - s.roughness), s.f0) - s.f0) * pow5(1.0 - n_dot_v);
+    vec3 diffuse = (1.0 - f) * s.diffuse * hemisphere(s.n, radiance);
     vec3 r = reflect(-s.v, s.n);
     // Rough surfaces see a blurrier sky: blend the reflected towards the normal's.
     vec3 specular = f * hemisphere(normalize(mix(r, s.n, s.roughness * s.roughness)), radiance);

@@ -4,7 +4,7 @@
 #ifndef SHERPA_MATERIAL_EXTRA_GLSL
 #define SHERPA_MATERIAL_EXTRA_GLSL
 
-#include "sherpa_texture_slots.glsl" // SLOT_*, generated: texture slots of GPUMaterialExtra.uv
+#include "sherpa_texture_slots.glsl" // SLOT_*, WORKFLOW_*, generated: slots of GPUMaterialExtra.uv
 
 // KHR_texture_transform as two rows of the 2x3 affine UV matrix; row0.w holds the
 // TEXCOORD set the slot reads (0 or 1).
@@ -14,9 +14,12 @@ struct GPUTextureTransform {
 };
 
 struct GPUMaterialExtra {
-    GPUTextureTransform uv[5]; // 0
-    uint unlit;                // 160: KHR_materials_unlit
-    uint pad0, pad1, pad2;     // 164..176
+    GPUTextureTransform uv[SLOT_COUNT]; // 0
+    uint unlit;                         // 192: KHR_materials_unlit
+    uint workflow;                      // 196: WORKFLOW_*
+    uint specular_glossiness_tex;       // 200: KHR_materials_pbrSpecularGlossiness texture
+    uint pad0;                          // 204
+    vec4 specular_glossiness;           // 208: xyz specularFactor, w glossinessFactor
 };
 
 #endif

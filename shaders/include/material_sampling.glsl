@@ -23,6 +23,15 @@ vec2 metallic_roughness(GPUMaterialData m, vec4 mr_texel) {
     return clamp(vec2(m.metallic_factor, m.roughness_factor) * mr_texel.bg, 0.0, 1.0);
 }
 
+// KHR_materials_pbrSpecularGlossiness: rgb specular (its texture is sampled through
+// an sRGB format, as the extension stores it), a glossiness.
+vec4 specular_glossiness(GPUMaterialExtra x, vec2 uv0, vec2 uv1) {
+    vec4 sg = x.specular_glossiness;
+    if (x.specular_glossiness_tex != TEX_WHITE)
+        sg *= sample_slot(x, SLOT_SPECULAR_GLOSSINESS, x.specular_glossiness_tex, uv0, uv1);
+    return clamp(sg, 0.0, 1.0);
+}
+
 bool same_transform(GPUTextureTransform a, GPUTextureTransform b) {
     return a.row0 == b.row0 && a.row1 == b.row1;
 }

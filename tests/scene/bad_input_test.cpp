@@ -73,15 +73,23 @@ TEST(AllowedInput, EmptyPrimitiveIsSkippedWithoutInvertedBounds) {
     EXPECT_FALSE(r.scene->warnings.empty());
 }
 
-TEST(AllowedInput, PointsAreKeptOutOfTheTrianglePath) {
+TEST(AllowedInput, PointsAreImportedAsPointsAndBounded) {
     const sherpa::LoadResult r = sherpa::load_scene((test::data_dir() / "points.gltf").string());
     ASSERT_TRUE(r) << r.error;
-    EXPECT_TRUE(r.scene->meshes.empty());
+    ASSERT_EQ(r.scene->meshes.size(), 1u);
+    EXPECT_EQ(r.scene->meshes[0].topology(), sherpa::Topology::Points);
+    EXPECT_EQ(r.scene->meshes[0].element_count(), 3u);
+    EXPECT_EQ(r.scene->meshes[0].triangle_count(), 0u);
     EXPECT_EQ(r.scene->counts.primitives, 1u);
     EXPECT_EQ(r.scene->counts.triangles, 0u);
     EXPECT_EQ(r.scene->node_primitive_pairs(), 1u) << "counted the glTF way";
-    EXPECT_TRUE(r.scene->instances.empty());
-    EXPECT_NE(r.scene->primitives.at(0).skipped_reason.find("POINTS"), std::string::npos);
+    ASSERT_EQ(r.scene->instances.size(), 1u);
+    EXPECT_EQ(r.scene->primitives.at(0).points, 3u);
+    EXPECT_TRUE(r.scene->primitives.at(0).skipped_reason.empty());
+    // The three points (0,0,0), (1,0,0), (0,1,0) span the scene bounds.
+    ASSERT_TRUE(r.scene->bounds.valid());
+    EXPECT_EQ(r.scene->bounds.min, glm::vec3(0.0f));
+    EXPECT_EQ(r.scene->bounds.max, glm::vec3(1.0f, 1.0f, 0.0f));
 }
 
 // Random byte mutations of real files (text and binary) must each end in either a

@@ -197,6 +197,7 @@ void Context::create_device(bool presentation) {
     f.core.features.multiDrawIndirect = VK_TRUE; // GPU-driven culling's indirect draws
     f.core.features.samplerAnisotropy = supported.core.features.samplerAnisotropy;
     f.core.features.wideLines = supported.core.features.wideLines;
+    f.core.features.largePoints = supported.core.features.largePoints; // points drawn > 1 px
     f.core.features.pipelineStatisticsQuery = supported.core.features.pipelineStatisticsQuery;
     f.core.features.depthClamp = supported.core.features.depthClamp;
     f.core.features.textureCompressionBC = supported.core.features.textureCompressionBC;
@@ -218,6 +219,7 @@ void Context::create_device(bool presentation) {
     f.v13.maintenance4 = supported.v13.maintenance4;
     info_.anisotropy = f.core.features.samplerAnisotropy;
     info_.wide_lines = f.core.features.wideLines;
+    info_.large_points = f.core.features.largePoints;
     info_.pipeline_statistics = f.core.features.pipelineStatisticsQuery;
     info_.bc_textures = f.core.features.textureCompressionBC && samples_bc(physical_);
 

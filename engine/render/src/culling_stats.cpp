@@ -34,10 +34,17 @@ void CullingPass::read_stats(FrameSlot& slot, const GpuScene* scene, FrameStats&
             std::vector<VkDrawIndexedIndirectCommand> draws(culler.batch_count());
             std::memcpy(draws.data(), bytes + pc.readback,
                         draws.size() * sizeof(VkDrawIndexedIndirectCommand));
+            // Batches of lines and points meshes draw no triangles.
+            std::vector<bool> triangle_batch(draws.size(), true);
+            for (std::size_t g = 0; g < scene->groups().size(); ++g)
+                if (const std::uint32_t b = culling_->group_batch[g]; b < draws.size())
+                    triangle_batch[b] =
+                        is_triangle_mesh(scene->meshes()[scene->groups()[g].mesh].flags);
             std::uint64_t visible = 0, triangles = 0;
-            for (const auto& d : draws) {
-                visible += d.instanceCount;
-                triangles += std::uint64_t{d.instanceCount} * (d.indexCount / 3);
+            for (std::size_t b = 0; b < draws.size(); ++b) {
+                visible += draws[b].instanceCount;
+                if (triangle_batch[b])
+                    triangles += std::uint64_t{draws[b].instanceCount} * (draws[b].indexCount / 3);
             }
             if (p == 0) {
                 // Blended instances: CPU-tested, drawn one by one (tallied already).

@@ -35,15 +35,18 @@ bool draw_culled(FrameContext& f, std::size_t group, const PassCull& cull, GPUPu
     pc.instance_ids = f.resources.get(f.slot.cull_ids).address + cull.ids_offset;
     push(f.cmd, layout, pc);
     vkCmdDrawIndexed(f.cmd, mesh.index_count, n, mesh.first_index, 0, g.first_instance);
-    tally.triangles += std::uint64_t{n} * mesh.index_count / 3;
+    tally.triangles += std::uint64_t{n} * triangles_of(mesh);
     ++tally.draw_calls;
     return true;
 }
 
 // The pipeline for `mesh` (bound when it differs from `bound`), the group's face
 // culling (back faces unless double sided) and winding, and the mesh into `pc`.
-void set_group_state(FrameContext& f, const DrawPipeline& pipeline, const DrawGroup& g,
+// False: the pipeline does not draw this mesh (a fixed, triangle-only pipeline and
+// a lines or points mesh).
+bool set_group_state(FrameContext& f, const DrawPipeline& pipeline, const DrawGroup& g,
                      const GpuMesh& mesh, VkPipeline& bound, GPUPushConstants& pc) {
+    if (pipeline.fixed && !is_triangle_mesh(mesh.flags)) return false;
     if (const VkPipeline want = f.pipelines.resolve(pipeline, mesh.flags); want != bound) {
         vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, want);
         bound = want;
@@ -52,6 +55,7 @@ void set_group_state(FrameContext& f, const DrawPipeline& pipeline, const DrawGr
     vkCmdSetFrontFace(f.cmd,
                       g.mirrored ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
     set_mesh(pc, mesh, g.material);
+    return true;
 }
 
 } // namespace
@@ -97,7 +101,7 @@ void draw_groups(FrameContext& f, DrawPipeline pipeline, AlphaMode alpha, const 
         if (g.alpha != alpha) continue;
         const GpuMesh& mesh = f.scene->meshes()[g.mesh];
         // Groups are sorted by mesh: consecutive groups mostly share a pipeline.
-        set_group_state(f, pipeline, g, mesh, bound, pc);
+        if (!set_group_state(f, pipeline, g, mesh, bound, pc)) continue;
         if (view.cull) {
             if (draw_culled(f, gi, *view.cull, pc, tally)) ++f.slot.draw_calls;
             continue;
@@ -107,7 +111,7 @@ void draw_groups(FrameContext& f, DrawPipeline pipeline, AlphaMode alpha, const 
                          g.first_instance);
         ++f.slot.draw_calls;
         ++tally.draw_calls;
-        tally.triangles += std::uint64_t{g.instance_count} * (mesh.index_count / 3);
+        tally.triangles += std::uint64_t{g.instance_count} * triangles_of(mesh);
     }
 }
 
@@ -141,12 +145,12 @@ void draw_blended(FrameContext& f, DrawPipeline pipeline, CullStats& tally) {
         if (cull && !cull->visible[it.instance]) continue;
         const DrawGroup& g = groups[it.group];
         const GpuMesh& mesh = f.scene->meshes()[g.mesh];
-        set_group_state(f, pipeline, g, mesh, bound, pc);
+        if (!set_group_state(f, pipeline, g, mesh, bound, pc)) continue;
         push(cmd, p.layout(), pc);
         vkCmdDrawIndexed(cmd, mesh.index_count, 1, mesh.first_index, 0, it.instance);
         ++f.slot.draw_calls;
         ++tally.draw_calls;
-        tally.triangles += mesh.index_count / 3;
+        tally.triangles += triangles_of(mesh);
     }
 }
 

@@ -23,6 +23,10 @@ inline DrawView cascade_view(FrameContext& f, std::uint32_t c) {
 void set_viewport(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height);
 void set_depth(VkCommandBuffer cmd, VkCompareOp op, bool write, float bias_constant = 0.0f,
                float bias_slope = 0.0f);
+// Triangles one instance of the mesh draws (0 for lines and points).
+inline std::uint32_t triangles_of(const GpuMesh& mesh) {
+    return is_triangle_mesh(mesh.flags) ? mesh.index_count / 3 : 0;
+}
 // The mesh's streams and flags and the material, into `pc`.
 void set_mesh(GPUPushConstants& pc, const GpuMesh& mesh, std::uint32_t material);
 

@@ -149,6 +149,8 @@ void GpuScene::upload_geometry(const Scene& scene) {
                       << kTangentProvenanceShift |
                   provenance_bits(mesh.provenance_of(VertexAttribute::Normal))
                       << kNormalProvenanceShift;
+        if (mesh.topology() == Topology::Lines) g.flags |= kMeshLinesBit;
+        if (mesh.topology() == Topology::Points) g.flags |= kMeshPointsBit;
         if (!instanced[m] || mesh.vertices.empty() || mesh.indices.empty()) continue;
         if (mesh.material_id >= scene.materials.size())
             throw GpuError("mesh " + std::to_string(m) + " names material " +
@@ -221,6 +223,14 @@ void GpuMaterials::upload(const Scene& scene) {
         x.uv[kSlotOcclusion] = uv_transform(m.occlusion);
         x.uv[kSlotEmissive] = uv_transform(m.emissive);
         x.unlit = m.unlit ? 1u : 0u;
+        x.specular_glossiness_tex = kWhiteTexture;
+        if (const auto& sg = m.specular_glossiness) {
+            x.workflow = kWorkflowSpecularGlossiness;
+            x.uv[kSlotSpecularGlossiness] = uv_transform(sg->specular_glossiness);
+            x.specular_glossiness_tex =
+                textures_->field_slot(sg->specular_glossiness, kRoleColor, kWhiteTexture);
+            x.specular_glossiness = glm::vec4(sg->specular_factor, sg->glossiness_factor);
+        }
         extras.push_back(x);
     }
     if (data.empty()) { // keep the addresses valid for scenes without materials

@@ -49,19 +49,23 @@ void HighlightPass::record(FrameContext& f) {
 
     // The instance: a translucent tint on its visible surface (not a wireframe: on a
     // dense mesh that is solid orange and hides what the user selected it to see).
-    vkCmdSetDepthCompareOp(cmd, VK_COMPARE_OP_GREATER_OR_EQUAL);
-    vkCmdSetDepthBiasEnable(cmd, VK_TRUE);
-    vkCmdSetDepthBias(cmd, 1.0f, 0.0f, 1.0f);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::Tint));
-    pc.color = kHighlightTint;
-    vkCmdPushConstants(cmd, layout, stages, 0, sizeof(pc), &pc);
-    vkCmdDrawIndexed(cmd, m.index_count, 1, m.first_index, 0, gpu_instance);
-    ++slot.draw_calls;
-    vkCmdSetDepthBiasEnable(cmd, VK_FALSE);
+    // Lines and points have no surface to tint: their box and vertex show them.
+    const bool triangles = is_triangle_mesh(m.flags);
+    if (triangles) {
+        vkCmdSetDepthCompareOp(cmd, VK_COMPARE_OP_GREATER_OR_EQUAL);
+        vkCmdSetDepthBiasEnable(cmd, VK_TRUE);
+        vkCmdSetDepthBias(cmd, 1.0f, 0.0f, 1.0f);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::Tint));
+        pc.color = kHighlightTint;
+        vkCmdPushConstants(cmd, layout, stages, 0, sizeof(pc), &pc);
+        vkCmdDrawIndexed(cmd, m.index_count, 1, m.first_index, 0, gpu_instance);
+        ++slot.draw_calls;
+        vkCmdSetDepthBiasEnable(cmd, VK_FALSE);
+    }
 
     // Detail that must never hide behind other surfaces.
     vkCmdSetDepthCompareOp(cmd, VK_COMPARE_OP_ALWAYS);
-    if (s.highlight_triangle && *s.highlight_triangle < m.index_count / 3) {
+    if (triangles && s.highlight_triangle && *s.highlight_triangle < m.index_count / 3) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::Floor));
         pc.color = kHighlightDetailColor;
         vkCmdPushConstants(cmd, layout, stages, 0, sizeof(pc), &pc);

@@ -51,6 +51,7 @@ void OverlayPass::record(FrameContext& f) {
         vkCmdSetDepthBiasEnable(cmd, VK_TRUE);
         vkCmdSetDepthBias(cmd, 1.0f, 0.0f, 1.0f);
         for_each_group([&](const DrawGroup& g, const GpuMesh& m, GPUPushConstants& pc) {
+            if (!is_triangle_mesh(m.flags)) return; // lines and points are their own wireframe
             pc.color = glm::vec4(0.25f, 0.85f, 1.0f, 1.0f);
             vkCmdPushConstants(cmd, layout, stages, 0, sizeof(pc), &pc);
             vkCmdDrawIndexed(cmd, m.index_count, g.instance_count, m.first_index, 0,

@@ -32,6 +32,7 @@ struct PipelineDesc {
     bool write_color = true;
     bool blend = false;
     const VkSpecializationInfo* frag_constants = nullptr;
+    const VkSpecializationInfo* vert_constants = nullptr;
 };
 
 UniquePipeline make_pipeline(VkDevice device, VkPipelineLayout layout, VkFormat color_format,
@@ -42,6 +43,7 @@ UniquePipeline make_pipeline(VkDevice device, VkPipelineLayout layout, VkFormat 
     stage.pName = "main";
     stage.stage = VK_SHADER_STAGE_VERTEX_BIT;
     stage.module = d.vert;
+    stage.pSpecializationInfo = d.vert_constants;
     stages.push_back(stage);
     if (d.frag) {
         stage.stage = VK_SHADER_STAGE_FRAGMENT_BIT;
@@ -128,7 +130,9 @@ UniquePipeline make_pipeline(VkDevice device, VkPipelineLayout layout, VkFormat 
 
 Pipelines::Pipelines(const Context& context, VkDescriptorSetLayout textures_layout,
                      VkDescriptorSetLayout frame_layout, VkFormat color_format)
-    : color_format_(color_format), device_(context.device()) {
+    : color_format_(color_format),
+      point_size_(context.info().large_points ? kPointSizePixels : 1.0f),
+      device_(context.device()) {
     VkDevice device = context.device();
     VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                              sizeof(GPUPushConstants)};
@@ -179,9 +183,15 @@ VkPipeline Pipelines::forward(std::uint32_t view, bool blend, std::uint32_t stre
             {0, 0, sizeof(std::uint32_t)}, {1, sizeof(std::uint32_t), sizeof(std::uint32_t)}};
         const std::uint32_t values[] = {view, streams};
         VkSpecializationInfo constants{2, entries, sizeof(values), values};
+        const VkSpecializationMapEntry point_entry{0, 0, sizeof(float)};
+        VkSpecializationInfo vert_constants{1, &point_entry, sizeof(float), &point_size_};
         PipelineDesc d{mesh_vert_.get(), forward_frag_.get()};
         d.blend = blend;
         d.frag_constants = &constants;
+        d.vert_constants = &vert_constants;
+        d.topology = (streams & kMeshPointsBit)  ? VK_PRIMITIVE_TOPOLOGY_POINT_LIST
+                     : (streams & kMeshLinesBit) ? VK_PRIMITIVE_TOPOLOGY_LINE_LIST
+                                                 : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
         p = make_pipeline(device_, layout_.get(), color_format_, d);
     }
     return p.get();

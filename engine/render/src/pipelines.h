@@ -13,6 +13,7 @@
 
 #include <sherpa/gpu/context.h>
 #include <sherpa/gpu/unique_handle.h>
+#include <sherpa/render/gpu_structs.h>
 
 namespace sherpa::gpu {
 
@@ -34,8 +35,15 @@ inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 // The optional vertex streams forward shading is specialised for (bits of
 // GpuMesh::flags, HAS_TANGENT | HAS_UV0 | HAS_UV1 | HAS_COLOR in common.glsl).
 inline constexpr std::uint32_t kForwardStreamBits = 0x3cu;
+// Forward pipelines also differ by topology (MESH_LINES / MESH_POINTS: line or
+// point list, shaded unlit); the bits ride along in the streams constant.
 inline constexpr std::uint32_t forward_streams(std::uint32_t mesh_flags) {
-    return mesh_flags & kForwardStreamBits;
+    return mesh_flags & (kForwardStreamBits | kMeshTopologyBits);
+}
+// Lines and points meshes are drawn only by forward shading; the fixed pipelines
+// (depth prepass, shadows, floor, wireframe) rasterize triangle lists.
+inline constexpr bool is_triangle_mesh(std::uint32_t mesh_flags) {
+    return (mesh_flags & kMeshTopologyBits) == 0;
 }
 
 // The pipeline of a run of draws: a fixed one, or forward shading of a view, chosen
@@ -50,6 +58,9 @@ class Pipelines {
 public:
     Pipelines(const Context& context, VkDescriptorSetLayout textures_layout,
               VkDescriptorSetLayout frame_layout, VkFormat color_format);
+    // Point size forward shading gives points: kPointSizePixels, or 1 on a device
+    // without largePoints.
+    float point_size() const { return point_size_; }
     VkPipeline get(PipelineId id) const { return pipelines_[static_cast<std::size_t>(id)].get(); }
     // Forward shading for one debug view and the optional streams a mesh holds
     // (specialization constants of forward.frag; absent streams drop their
@@ -63,6 +74,7 @@ public:
 
 private:
     VkFormat color_format_;
+    float point_size_ = 1.0f;
     UniquePipelineLayout layout_;
     std::array<UniquePipeline, static_cast<std::size_t>(PipelineId::Count)> pipelines_;
     VkDevice device_;

@@ -251,23 +251,26 @@ std::uint32_t SceneTextures::slot(std::int32_t texture, TextureRole role) const 
     return i < 0 || std::size_t(i) >= slots_.size() ? kTextureSentinel : slots_[std::size_t(i)];
 }
 
+std::uint32_t SceneTextures::field_slot(const TextureSlot& s, TextureRole role,
+                                        std::uint32_t fallback) const {
+    const std::int32_t i = s.present() ? prepared_->find(s.texture, role) : -1;
+    const bool failed = i >= 0 && prepared_->textures[std::size_t(i)].failed;
+    std::uint32_t value = i >= 0 && std::size_t(i) < slots_.size() && !failed
+                              ? slots_[std::size_t(i)]
+                              : kTextureSentinel; // as tex::resolve_material
+    if (s.present())
+        if (auto it = extra_slots_.find({s.texture, role}); it != extra_slots_.end())
+            value = it->second;
+    if (value != kTextureSentinel) return value;
+    // A present slot whose texture failed draws the checker (colour slots) when asked.
+    return role == kRoleColor && missing_ == MissingTextures::Checker && failed ? kCheckerTexture
+                                                                                : fallback;
+}
+
 GPUMaterialData SceneTextures::material(const MaterialInstance& m) const {
     GPUMaterialData g = tex::resolve_material(m, *prepared_, slots_);
-    // A present slot whose texture failed draws the checker (colour slots) when asked.
-    auto failed = [&](const TextureSlot& s, TextureRole role) {
-        const std::int32_t i = s.present() ? prepared_->find(s.texture, role) : -1;
-        return i >= 0 && prepared_->textures[std::size_t(i)].failed;
-    };
     auto field = [&](std::uint32_t& value, const TextureSlot& s, TextureRole role,
-                     std::uint32_t fallback) {
-        if (s.present())
-            if (auto it = extra_slots_.find({s.texture, role}); it != extra_slots_.end())
-                value = it->second;
-        if (value != kTextureSentinel) return;
-        value = role == kRoleColor && missing_ == MissingTextures::Checker && failed(s, role)
-                    ? kCheckerTexture
-                    : fallback;
-    };
+                     std::uint32_t fallback) { value = field_slot(s, role, fallback); };
     // Emissive without a texture is the factor alone (glTF): white when it emits.
     const bool emits = glm::any(glm::greaterThan(m.emissive_factor, glm::vec3(0.0f)));
     field(g.base_color_tex, m.base_color, kRoleColor, kWhiteTexture);

@@ -65,6 +65,8 @@ std::string mesh_flags() {
         {VertexAttribute::TexCoord1, "UV1"},     {VertexAttribute::Color0, "COLOR"}};
     static_assert(std::size(streams) == kVertexAttributeCount);
     for (auto [a, name] : streams) o << "const uint HAS_" << name << " = 1u << " << u(a) << ";\n";
+    o << "const uint MESH_LINES = " << hex(gpu::kMeshLinesBit) << "; // topology bits\n";
+    o << "const uint MESH_POINTS = " << hex(gpu::kMeshPointsBit) << ";\n";
     o << "const uint TANGENT_PROVENANCE_SHIFT = " << gpu::kTangentProvenanceShift
       << "; // 0 authored, 1 generated, 2 defaulted\n";
     o << "const uint NORMAL_PROVENANCE_SHIFT = " << gpu::kNormalProvenanceShift << ";\n";
@@ -77,13 +79,15 @@ std::string mesh_flags() {
 std::string texture_slots() {
     std::ostringstream o;
     const std::pair<gpu::TextureSlotIndex, const char*> slots[] = {
-        {gpu::kSlotBaseColor, "BASE_COLOR"},
-        {gpu::kSlotMetallicRoughness, "METALLIC_ROUGHNESS"},
-        {gpu::kSlotNormal, "NORMAL"},
-        {gpu::kSlotOcclusion, "OCCLUSION"},
-        {gpu::kSlotEmissive, "EMISSIVE"}};
+        {gpu::kSlotBaseColor, "BASE_COLOR"}, {gpu::kSlotMetallicRoughness, "METALLIC_ROUGHNESS"},
+        {gpu::kSlotNormal, "NORMAL"},        {gpu::kSlotOcclusion, "OCCLUSION"},
+        {gpu::kSlotEmissive, "EMISSIVE"},    {gpu::kSlotSpecularGlossiness, "SPECULAR_GLOSSINESS"}};
     static_assert(std::size(slots) == gpu::kSlotCount);
     for (auto [slot, name] : slots) o << "const uint SLOT_" << name << " = " << u(slot) << ";\n";
+    o << "const uint SLOT_COUNT = " << u(gpu::kSlotCount) << ";\n";
+    o << "const uint WORKFLOW_METALLIC_ROUGHNESS = " << u(gpu::kWorkflowMetallicRoughness) << ";\n";
+    o << "const uint WORKFLOW_SPECULAR_GLOSSINESS = " << u(gpu::kWorkflowSpecularGlossiness)
+      << ";\n";
     return o.str();
 }
 
@@ -119,8 +123,8 @@ std::vector<Section> sections() {
         {"sherpa_overlays.glsl",
          "overlay bits of RenderSettings::overlays, sherpa::gpu::kOverlays (debug_views.h)",
          overlays()},
-        {"sherpa_texture_slots.glsl", "texture slots of GPUMaterialExtra.uv, in this order",
-         texture_slots()},
+        {"sherpa_texture_slots.glsl",
+         "texture slots of GPUMaterialExtra.uv, in this order, and its workflows", texture_slots()},
         {"sherpa_default_textures.glsl", "default bindless textures, sherpa::gpu::kWhiteTexture...",
          textures.str()},
         {"sherpa_alpha_modes.glsl", "sherpa::AlphaMode (scene/material.h)", alpha.str()},

@@ -6,14 +6,17 @@
 namespace sherpa {
 namespace {
 
-constexpr std::array<std::string_view, 10> kSupported{
+constexpr std::array<std::string_view, 11> kSupported{
     "EXT_meshopt_compression",    // through Debian's meshoptimizer
     "EXT_texture_webp",           // through OpenImageIO
     "KHR_draco_mesh_compression", // through Debian's Draco
     "KHR_meshopt_compression",    // where its bitstream version is one meshoptimizer decodes
-    "KHR_lights_punctual",        "KHR_materials_emissive_strength", "KHR_materials_unlit",
-    "KHR_mesh_quantization", // every accessor component type is decoded
-    "KHR_texture_basisu",    // KTX2 (ETC1S / UASTC), engine/texture's transcoder
+    "KHR_lights_punctual",
+    "KHR_materials_emissive_strength",
+    "KHR_materials_unlit",
+    "KHR_materials_pbrSpecularGlossiness", // shaded by its own definition (forward.frag)
+    "KHR_mesh_quantization",               // every accessor component type is decoded
+    "KHR_texture_basisu",                  // KTX2 (ETC1S / UASTC), engine/texture's transcoder
     "KHR_texture_transform",
 };
 

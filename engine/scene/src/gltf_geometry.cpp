@@ -38,6 +38,31 @@ std::vector<std::uint32_t> to_triangle_list(PrimitiveMode mode,
     return out;
 }
 
+// LINES, LINE_STRIP and LINE_LOOP as a line list (pairs of indices); POINTS as
+// they are. glTF: LINES ignores a trailing odd index; a loop closes back to the
+// first index.
+std::vector<std::uint32_t> to_line_or_point_list(PrimitiveMode mode,
+                                                 const std::vector<std::uint32_t>& in) {
+    std::vector<std::uint32_t> out;
+    const std::size_t n = in.size();
+    switch (mode) {
+    case PrimitiveMode::Points:
+        out = in;
+        break;
+    case PrimitiveMode::Lines:
+        out.assign(in.begin(), in.begin() + std::ptrdiff_t(n - n % 2));
+        break;
+    case PrimitiveMode::LineStrip:
+    case PrimitiveMode::LineLoop:
+        for (std::size_t i = 0; i + 1 < n; ++i) out.insert(out.end(), {in[i], in[i + 1]});
+        if (mode == PrimitiveMode::LineLoop && n > 2) out.insert(out.end(), {in[n - 1], in[0]});
+        break;
+    default:
+        break;
+    }
+    return out;
+}
+
 template <typename Apply>
 void read_vec_attribute(ImportContext& ctx, const tinygltf::Primitive& prim, const char* name,
                         std::initializer_list<std::uint32_t> comps, std::uint32_t expected_count,
@@ -188,26 +213,29 @@ void import_primitive(ImportContext& ctx, std::uint32_t mesh_index, std::uint32_
         source_indices.resize(vertex_count);
         for (std::uint32_t i = 0; i < vertex_count; ++i) source_indices[i] = i;
     }
-    if (mode < TINYGLTF_MODE_TRIANGLES)
-        return finish_skipped(std::string(to_string(info.mode)) +
-                              " primitive kept out of the triangle path (not drawn)");
-
     Mesh mesh;
     mesh.group_id = mesh_index;
     mesh.primitive_index = prim_index;
     mesh.name = model.meshes[mesh_index].name + "#" + std::to_string(prim_index);
     mesh.source_mode = info.mode;
-    mesh.indices = to_triangle_list(info.mode, source_indices);
+    const Topology topology = mesh.topology();
+    mesh.indices = topology == Topology::Triangles
+                       ? to_triangle_list(info.mode, source_indices)
+                       : to_line_or_point_list(info.mode, source_indices);
     if (mode == TINYGLTF_MODE_TRIANGLES && source_indices.size() % 3 != 0)
         ctx.warn(where + ": " + std::to_string(source_indices.size() % 3) +
                  " trailing indices ignored (count not a multiple of 3)");
+    if (info.mode == PrimitiveMode::Lines && source_indices.size() % 2 != 0)
+        ctx.warn(where + ": 1 trailing index ignored (LINES count not a multiple of 2)");
     info.triangles = mesh.triangle_count();
+    if (topology == Topology::Lines) info.segments = mesh.element_count();
+    if (topology == Topology::Points) info.points = mesh.element_count();
     mesh.source_vertex_count = vertex_count;
     mesh.source_triangle_count = info.triangles;
     scene.counts.triangles += info.triangles;
-    if (vertex_count == 0 || info.triangles == 0)
-        return finish_skipped("empty primitive (" + std::to_string(vertex_count) + " vertices, " +
-                              std::to_string(info.triangles) + " triangles); not drawn");
+    if (vertex_count == 0 || mesh.element_count() == 0)
+        return finish_skipped("empty primitive (" + std::to_string(vertex_count) + " vertices, 0 " +
+                              std::string(to_string(topology)) + "); not drawn");
 
     mesh.vertices.resize(vertex_count);
     for (std::uint32_t i = 0; i < vertex_count; ++i)
@@ -246,7 +274,9 @@ void import_primitive(ImportContext& ctx, std::uint32_t mesh_index, std::uint32_
                        });
     if (prim.indices >= 0) mesh.index_source = describe_accessor(model, prim.indices);
 
-    if (mesh.provenance_of(VertexAttribute::Normal) == Provenance::Defaulted) {
+    if (topology != Topology::Triangles) {
+        // Lines and points are drawn unlit: no faces to take a normal from.
+    } else if (mesh.provenance_of(VertexAttribute::Normal) == Provenance::Defaulted) {
         const std::uint32_t degenerate = unweld_with_flat_normals(mesh);
         mesh.provenance[static_cast<std::size_t>(VertexAttribute::Normal)] = Provenance::Generated;
         if (degenerate)

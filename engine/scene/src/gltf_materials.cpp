@@ -55,6 +55,56 @@ TextureSlot read_slot(ImportContext& ctx, int index, int tex_coord,
     return slot;
 }
 
+// A textureInfo inside an extension object (tinygltf leaves those as JSON values).
+TextureSlot read_value_slot(ImportContext& ctx, const tinygltf::Value& info,
+                            const std::string& where, TextureRole role) {
+    if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsNumber()) {
+        if (info.IsObject()) fail(where + ".index: required number is missing");
+        return {};
+    }
+    tinygltf::ExtensionMap ext;
+    if (info.Has("extensions") && info.Get("extensions").IsObject())
+        for (const auto& key : info.Get("extensions").Keys())
+            ext[key] = info.Get("extensions").Get(key);
+    const int tex_coord = info.Has("texCoord") && info.Get("texCoord").IsNumber()
+                              ? info.Get("texCoord").GetNumberAsInt()
+                              : 0;
+    return read_slot(ctx, info.Get("index").GetNumberAsInt(), tex_coord, ext, where, role);
+}
+
+glm::vec4 vec_or(const tinygltf::Value& obj, const char* key, glm::vec4 fallback, int n) {
+    if (!obj.IsObject() || !obj.Has(key)) return fallback;
+    const auto& v = obj.Get(key);
+    if (!v.IsArray() || v.ArrayLen() != std::size_t(n)) return fallback;
+    glm::vec4 out = fallback;
+    for (int i = 0; i < n; ++i) {
+        if (!v.Get(i).IsNumber()) return fallback;
+        out[i] = static_cast<float>(v.Get(i).GetNumberAsDouble());
+    }
+    return out;
+}
+
+// KHR_materials_pbrSpecularGlossiness: its diffuse replaces the base colour; the
+// extension's defaults are those of its schema (all ones).
+void read_specular_glossiness(ImportContext& ctx, const tinygltf::Value& e, MaterialInstance& m,
+                              const std::string& where) {
+    const std::string w = where + ".extensions.KHR_materials_pbrSpecularGlossiness";
+    SpecularGlossiness sg;
+    m.base_color_factor = vec_or(e, "diffuseFactor", glm::vec4(1.0f), 4);
+    sg.specular_factor = glm::vec3(vec_or(e, "specularFactor", glm::vec4(1.0f), 3));
+    sg.glossiness_factor = number_or(e, "glossinessFactor", 1.0f);
+    if (!is_finite(glm::vec3(m.base_color_factor)) || !std::isfinite(m.base_color_factor.w) ||
+        !is_finite(sg.specular_factor) || !std::isfinite(sg.glossiness_factor))
+        fail(w + ": diffuseFactor, specularFactor and glossinessFactor must be finite");
+    m.base_color = e.Has("diffuseTexture") ? read_value_slot(ctx, e.Get("diffuseTexture"),
+                                                             w + ".diffuseTexture", kRoleColor)
+                                           : TextureSlot{};
+    if (e.Has("specularGlossinessTexture"))
+        sg.specular_glossiness = read_value_slot(ctx, e.Get("specularGlossinessTexture"),
+                                                 w + ".specularGlossinessTexture", kRoleColor);
+    m.specular_glossiness = sg;
+}
+
 AlphaMode parse_alpha_mode(const std::string& s, const std::string& where) {
     if (s.empty() || s == "OPAQUE") return AlphaMode::Opaque;
     if (s == "MASK") return AlphaMode::Mask;
@@ -246,6 +296,9 @@ void import_materials(ImportContext& ctx) {
         m.emissive =
             read_slot(ctx, src.emissiveTexture.index, src.emissiveTexture.texCoord,
                       src.emissiveTexture.extensions, where + ".emissiveTexture", kRoleColor);
+        if (const auto it = src.extensions.find("KHR_materials_pbrSpecularGlossiness");
+            it != src.extensions.end())
+            read_specular_glossiness(ctx, it->second, m, where);
         ctx.scene.materials.push_back(std::move(m));
     }
     ctx.scene.counts.materials = model.materials.size();

@@ -63,6 +63,9 @@ std::vector<std::string> image_slot_uses(const Scene& scene, std::int32_t image)
         for (const auto& [slot, name] : slots)
             if (reads_image(scene, *slot, image))
                 names += (names.empty() ? "" : ", ") + std::string(name);
+        if (mat.specular_glossiness &&
+            reads_image(scene, mat.specular_glossiness->specular_glossiness, image))
+            names += (names.empty() ? "" : ", ") + std::string("specularGlossinessTexture");
         if (names.empty()) continue;
         const std::string who =
             mat.name.empty() ? "material " + std::to_string(m) : "material '" + mat.name + "'";

@@ -148,6 +148,10 @@ SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptio
                                                    ? &scene.materials[mesh.material_id]
                                                    : nullptr;
             const bool normal_texture = material && material->normal.present();
+            if (mesh.topology() != Topology::Triangles) {
+                out.reason = "lines and points have no surface: no tangents";
+                continue;
+            }
             if (!options.regenerate && authored) {
                 out.reason = "authored TANGENT kept";
                 continue;

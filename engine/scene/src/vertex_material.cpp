@@ -67,6 +67,18 @@ std::string_view to_string(AlphaMode m) {
     return "?";
 }
 
+std::string_view to_string(Topology t) {
+    switch (t) {
+    case Topology::Triangles:
+        return "triangles";
+    case Topology::Lines:
+        return "lines";
+    case Topology::Points:
+        return "points";
+    }
+    return "?";
+}
+
 std::string_view to_string(PrimitiveMode m) {
     switch (m) {
     case PrimitiveMode::Points:

@@ -13,6 +13,7 @@
 #include <sherpa/texture/image.h>
 #include <sherpa/texture/mips.h>
 #include <sherpa/texture/quality.h>
+#include <sherpa/texture/source_export.h>
 
 namespace sherpa::tex {
 
@@ -43,15 +44,6 @@ std::string source_name(const ImageRecord& img, std::int32_t index) {
     return "image " + std::to_string(index);
 }
 
-// A file name whose extension lets OpenImageIO pick the right reader.
-std::string decoder_hint(const ImageRecord& img) {
-    if (img.mime_type == "image/png") return "image.png";
-    if (img.mime_type == "image/jpeg") return "image.jpg";
-    if (img.mime_type == "image/webp") return "image.webp";
-    const auto slash = img.uri.find_last_of('/');
-    return img.uri.substr(slash == std::string::npos ? 0 : slash + 1);
-}
-
 Hash128 source_hash(const ImageRecord& img) {
     if (!img.encoded.empty()) return hash_bytes(img.encoded);
     // Generated images have no encoded form; their size is part of their identity.
@@ -59,18 +51,6 @@ Hash128 source_hash(const ImageRecord& img) {
     for (int i = 0; i < 4; ++i) bytes.push_back(static_cast<std::uint8_t>(img.width >> (8 * i)));
     for (int i = 0; i < 4; ++i) bytes.push_back(static_cast<std::uint8_t>(img.height >> (8 * i)));
     return hash_bytes(bytes);
-}
-
-bool decode_source(const ImageRecord& img, RgbaImage& out, std::string& error) {
-    if (img.encoded.empty()) {
-        if (img.pixels.size() != std::size_t{img.width} * img.height * 4 || img.pixels.empty()) {
-            error = "image has neither encoded bytes nor RGBA8 pixels";
-            return false;
-        }
-        out = RgbaImage{img.width, img.height, img.pixels};
-        return true;
-    }
-    return decode_image_or_ktx2(img.encoded, decoder_hint(img), out, error); // KTX2 by identifier
 }
 
 // PSNR of level 0 over the channels the role's shader reads.
@@ -122,7 +102,7 @@ std::string failure_warning(const PreparedTexture& t, std::string reason) {
 // decode_encoded_image names the image by its decoder hint ("image.png: ..."); the
 // warning names the file already.
 std::string without_hint(const ImageRecord& img, const std::string& error) {
-    const std::string prefix = decoder_hint(img) + ": ";
+    const std::string prefix = image_decoder_hint(img) + ": ";
     return error.starts_with(prefix) ? error.substr(prefix.size()) : error;
 }
 
@@ -174,7 +154,7 @@ std::vector<ImageProblem> find_image_problems(const Scene& scene) {
                        image_slot_uses(scene, index)};
         if (!image_is_missing(img)) {
             if (img.encoded.empty() ||
-                probe_encoded_image(img.encoded, decoder_hint(img), p.reason))
+                probe_encoded_image(img.encoded, image_decoder_hint(img), p.reason))
                 continue;
             p.state = CacheState::Undecodable;
         }
@@ -251,7 +231,7 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
             if (is_cancelled(opt.cancel)) return;
             PreparedTexture& t = set.textures[misses[i]];
             const auto start = std::chrono::steady_clock::now();
-            if (!decode_source(scene.images[std::size_t(t.image)], decoded[i], errors[i]))
+            if (!decode_image_source(scene.images[std::size_t(t.image)], decoded[i], errors[i]))
                 decoded[i] = {};
             t.decode_ms = ms_since(start);
         }

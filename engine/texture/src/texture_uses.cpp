@@ -63,6 +63,10 @@ std::vector<TextureUse> collect_texture_uses(const Scene& scene) {
         add(m.metallic_roughness, kRoleLinear, std::nullopt);
         add(m.occlusion, kRoleLinear, std::nullopt);
         add(m.normal, kRoleNormal, std::nullopt);
+        // Specular is sRGB colour and glossiness linear alpha: an sRGB format
+        // decodes exactly that.
+        if (m.specular_glossiness)
+            add(m.specular_glossiness->specular_glossiness, kRoleColor, std::nullopt);
     }
     std::vector<TextureUse> out;
     for (auto& [key, use] : uses) {

@@ -49,6 +49,7 @@ struct DeviceInfo {
     bool swapchain = false; // VK_KHR_swapchain enabled
     bool anisotropy = false;
     bool wide_lines = false;
+    bool large_points = false; // point sizes above 1 px (largePoints)
     float timestamp_period_ns = 1.0f;
     bool timestamps = false;
     bool pipeline_statistics = false;

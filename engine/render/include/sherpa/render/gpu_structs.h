@@ -82,8 +82,13 @@ enum TextureSlotIndex : std::uint32_t {
     kSlotNormal = 2,
     kSlotOcclusion = 3,
     kSlotEmissive = 4,
-    kSlotCount = 5,
+    kSlotSpecularGlossiness = 5, // KHR_materials_pbrSpecularGlossiness's texture
+    kSlotCount = 6,
 };
+
+// GPUMaterialExtra::workflow: which BRDF inputs the material gives.
+inline constexpr std::uint32_t kWorkflowMetallicRoughness = 0;
+inline constexpr std::uint32_t kWorkflowSpecularGlossiness = 1;
 
 struct GPUTextureTransform {
     glm::vec4 row0; // w: TEXCOORD set
@@ -92,13 +97,26 @@ struct GPUTextureTransform {
 struct GPUMaterialExtra {
     GPUTextureTransform uv[kSlotCount];
     std::uint32_t unlit;
-    std::uint32_t pad0, pad1, pad2;
+    std::uint32_t workflow;                // kWorkflow*
+    std::uint32_t specular_glossiness_tex; // bindless slot (white when absent)
+    std::uint32_t pad0;
+    glm::vec4 specular_glossiness; // xyz specularFactor, w glossinessFactor
 };
 static_assert(sizeof(GPUTextureTransform) == 32);
-static_assert(offsetof(GPUMaterialExtra, unlit) == 160);
-static_assert(sizeof(GPUMaterialExtra) == 176);
+static_assert(offsetof(GPUMaterialExtra, unlit) == 192);
+static_assert(offsetof(GPUMaterialExtra, workflow) == 196);
+static_assert(offsetof(GPUMaterialExtra, specular_glossiness_tex) == 200);
+static_assert(offsetof(GPUMaterialExtra, specular_glossiness) == 208);
+static_assert(sizeof(GPUMaterialExtra) == 224);
 
-// mesh_flags bits (common.glsl).
+// mesh_flags bits (common.glsl). Bits 0-5 are the streams (1 << VertexAttribute);
+// a lines or points mesh sets one topology bit.
+inline constexpr std::uint32_t kMeshLinesBit = 1u << 6;
+inline constexpr std::uint32_t kMeshPointsBit = 1u << 7;
+inline constexpr std::uint32_t kMeshTopologyBits = kMeshLinesBit | kMeshPointsBit;
+// Points are drawn this many pixels wide where the device supports large points
+// (largePoints), else at its only size, 1.
+inline constexpr float kPointSizePixels = 4.0f;
 inline constexpr std::uint32_t kTangentProvenanceShift = 8;
 inline constexpr std::uint32_t kNormalProvenanceShift = 10;
 inline constexpr std::uint32_t kGlyphKindShift = 16;

@@ -65,6 +65,10 @@ public:
     // textures to the default textures, and failed (missing, undecodable) ones as
     // MissingTextures says.
     GPUMaterialData material(const MaterialInstance& material) const;
+    // One texture field resolved the same way: its bindless slot, `fallback` when
+    // absent, the checker for a failed colour texture when MissingTextures says so.
+    std::uint32_t field_slot(const TextureSlot& slot, TextureRole role,
+                             std::uint32_t fallback) const;
     // Bindless slot of glTF texture `texture` read in `role`, or kTextureSentinel.
     std::uint32_t slot(std::int32_t texture, TextureRole role) const;
 

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -34,6 +35,16 @@ struct TextureSlot {
     bool present() const { return texture >= 0; }
 };
 
+// KHR_materials_pbrSpecularGlossiness, shaded by its own definition: its diffuse
+// (diffuseFactor, diffuseTexture) is held in MaterialInstance::base_color_factor and
+// base_color (same role: sRGB colour with alpha for coverage), and F0 = specular,
+// roughness = 1 - glossiness, diffuse reflectance = diffuse * (1 - max(specular)).
+struct SpecularGlossiness {
+    glm::vec3 specular_factor{1.0f};
+    float glossiness_factor = 1.0f;
+    TextureSlot specular_glossiness; // RGB specular (sRGB), A glossiness (linear)
+};
+
 struct MaterialInstance {
     std::string name;
     std::int32_t gltf_index = -1; // -1: Sherpa's default material
@@ -48,6 +59,9 @@ struct MaterialInstance {
     AlphaMode alpha_mode = AlphaMode::Opaque;
     bool double_sided = false;
     bool unlit = false; // KHR_materials_unlit
+    // Set when the material uses KHR_materials_pbrSpecularGlossiness (then the
+    // metallic-roughness fields are its fallback and are not shaded).
+    std::optional<SpecularGlossiness> specular_glossiness;
     TextureSlot base_color, metallic_roughness, normal, occlusion, emissive;
 };
 

@@ -30,6 +30,19 @@ enum class PrimitiveMode : std::uint8_t {
 };
 std::string_view to_string(PrimitiveMode m);
 
+// What the engine draws a primitive as: strips, fans and loops become lists.
+enum class Topology : std::uint8_t { Triangles, Lines, Points };
+constexpr Topology topology_of(PrimitiveMode m) {
+    return m == PrimitiveMode::Points                                   ? Topology::Points
+           : m >= PrimitiveMode::Lines && m <= PrimitiveMode::LineStrip ? Topology::Lines
+                                                                        : Topology::Triangles;
+}
+// Indices per element of the topology: 3, 2, 1.
+constexpr std::uint32_t indices_per_element(Topology t) {
+    return t == Topology::Triangles ? 3u : t == Topology::Lines ? 2u : 1u;
+}
+std::string_view to_string(Topology t); // "triangles", "lines", "points"
+
 // Where an attribute came from in the file (for the mesh/attribute dock).
 struct AccessorSource {
     std::int32_t accessor = -1;
@@ -44,7 +57,7 @@ struct AccessorSource {
     std::vector<double> min, max; // as declared in the file (may be empty)
 };
 
-// One engine mesh per glTF primitive with triangle topology.
+// One engine mesh per drawable glTF primitive: triangles, lines or points.
 struct Mesh {
     std::uint32_t group_id = 0;        // source glTF mesh index
     std::uint32_t primitive_index = 0; // index within the glTF mesh
@@ -52,7 +65,7 @@ struct Mesh {
     PrimitiveMode source_mode = PrimitiveMode::Triangles;
     std::uint32_t material_id = 0; // index into Scene::materials
     std::vector<Vertex> vertices;
-    std::vector<std::uint32_t> indices; // triangle list
+    std::vector<std::uint32_t> indices; // triangle, line or point list (topology())
     std::vector<glm::vec4> colors;      // COLOR_0 (RGBA, linear) or empty
     std::array<Provenance, kVertexAttributeCount> provenance{};
     std::array<std::optional<AccessorSource>, kVertexAttributeCount> sources;
@@ -66,7 +79,16 @@ struct Mesh {
     Provenance provenance_of(VertexAttribute a) const {
         return provenance[static_cast<std::size_t>(a)];
     }
-    std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(indices.size() / 3); }
+    Topology topology() const { return topology_of(source_mode); }
+    // Triangles of a triangle mesh, 0 for lines and points.
+    std::uint32_t triangle_count() const {
+        return topology() == Topology::Triangles ? static_cast<std::uint32_t>(indices.size() / 3)
+                                                 : 0u;
+    }
+    // Triangles, line segments or points: what one draw of the mesh rasterizes.
+    std::uint32_t element_count() const {
+        return static_cast<std::uint32_t>(indices.size() / indices_per_element(topology()));
+    }
 };
 
 // Every glTF primitive, triangle or not, as the file describes it.
@@ -85,6 +107,8 @@ struct PrimitiveInfo {
     std::uint32_t vertices = 0;                      // POSITION count
     std::uint32_t indices = 0;                       // index accessor count (0 if non-indexed)
     std::uint32_t triangles = 0;                     // after strip/fan conversion
+    std::uint32_t segments = 0;                      // lines: after strip/loop conversion
+    std::uint32_t points = 0;                        // points: one per index (or vertex)
     std::int32_t material = -1;                      // glTF material index (-1: none)
     std::int32_t engine_mesh = -1;                   // index into Scene::meshes, -1 if skipped
     std::string skipped_reason;                      // why no engine mesh was made

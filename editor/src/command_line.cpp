@@ -50,7 +50,7 @@ void when_layout_settles(MainWindow& window, std::function<void()> then) {
         state->stable = size == state->last ? state->stable + 1 : 0;
         state->last = size;
         const ViewportFrame& f = window.lastFrame();
-        const bool drawn = !window.viewport()->isExposed() || !window.gpuObjectCount ||
+        const bool drawn = !window.viewport()->isExposed() || !window.renderer() ||
                            (static_cast<int>(f.width) == size.width() &&
                             static_cast<int>(f.height) == size.height());
         if (!drawn) window.viewport()->scheduleFrame();

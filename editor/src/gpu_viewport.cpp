@@ -21,7 +21,7 @@ struct GpuViewport::Impl {
     std::unique_ptr<gpu::Presenter> presenter;
     std::uint64_t surface = 0;
     std::uint32_t width = 0, height = 0;
-    const Scene* scene = nullptr;
+    std::shared_ptr<const Scene> scene; // on the GPU
     bool all_streams = false;
     PreparedTextures prepared;                   // of `scene`
     std::unique_ptr<gpu::GpuCullChecker> culler; // CPU/GPU agreement checks, built per scene
@@ -71,15 +71,30 @@ QString GpuViewport::deviceName() const {
         .arg(VK_API_VERSION_PATCH(info.api_version));
 }
 
-void GpuViewport::setTextureCache(const QString& directory, const QString& quality) {
-    gpu::TextureSettings t = impl_->renderer->texture_settings();
-    t.cache_dir = directory.isEmpty()
-                      ? std::nullopt
-                      : std::optional(std::filesystem::path(directory.toStdString()));
-    t.quality = quality == QLatin1String("fast")   ? tex::kBc7MinLevel
-                : quality == QLatin1String("best") ? tex::kBc7MaxLevel
-                                                   : tex::kBc7DefaultLevel;
-    impl_->renderer->set_texture_settings(t);
+TexturePlan GpuViewport::texturePlan() const {
+    const gpu::DeviceInfo& info = impl_->context->info();
+    TexturePlan plan;
+    plan.device = true;
+    plan.device_name = info.name;
+    plan.bc_textures = info.bc_textures;
+    plan.cpu_device = info.is_cpu();
+    return plan;
+}
+
+PreparedTextures prepareTextures(const TexturePlan& plan, const Scene& scene,
+                                 const ProgressCallback& progress, const CancelToken* cancel) {
+    if (!plan.device) return nullptr;
+    gpu::DeviceInfo device;
+    device.name = plan.device_name;
+    device.bc_textures = plan.bc_textures;
+    device.type = plan.cpu_device ? VK_PHYSICAL_DEVICE_TYPE_CPU : VK_PHYSICAL_DEVICE_TYPE_OTHER;
+    gpu::TextureSettings settings;
+    if (!plan.cache_dir.empty()) settings.cache_dir = std::filesystem::path(plan.cache_dir);
+    settings.quality = plan.bc7_level;
+    settings.progress = progress;
+    settings.cancel = cancel;
+    PreparedTextures set = gpu::prepare_scene_textures(scene, device, settings);
+    return set && !set->cancelled ? set : nullptr;
 }
 
 void GpuViewport::setMissingTexturesChecker(bool checker) {
@@ -88,35 +103,35 @@ void GpuViewport::setMissingTexturesChecker(bool checker) {
     impl_->renderer->set_texture_settings(t);
 }
 
-TexturePreparer GpuViewport::texturePreparer() const {
-    return [device = impl_->context->info(), settings = impl_->renderer->texture_settings()](
-               const Scene& scene, const ProgressCallback& progress, const CancelToken* cancel) {
-        gpu::TextureSettings s = settings;
-        s.progress = progress;
-        s.cancel = cancel;
-        PreparedTextures set = gpu::prepare_scene_textures(scene, device, s);
-        return set && !set->cancelled ? set : nullptr;
-    };
+void GpuViewport::setScene(std::shared_ptr<const Scene> scene, PreparedTextures textures) {
+    if (scene != impl_->scene) impl_->culler.reset();
+    impl_->scene = std::move(scene);
+    impl_->prepared = std::move(textures);
+    upload();
 }
 
-void GpuViewport::setScene(const Scene* scene, PreparedTextures textures) {
-    if (scene != impl_->scene) {
-        impl_->culler.reset();
-    }
-    impl_->scene = scene;
-    if (!scene) {
-        impl_->prepared.reset();
+// The current scene to the GPU with the current stream policy.
+void GpuViewport::upload() {
+    if (!impl_->scene) {
         impl_->renderer->unload();
         return;
     }
-    // Kept (levels included) so that a stream-policy change can upload again.
-    if (!textures)
-        textures = gpu::prepare_scene_textures(*scene, impl_->context->info(),
-                                               impl_->renderer->texture_settings());
-    impl_->prepared = textures;
-    impl_->renderer->load(*scene, std::move(textures),
+    // No textures prepared (cancelled, no plan): an empty set, so that load() does
+    // not run the texture pipeline on this thread.
+    if (!impl_->prepared) impl_->prepared = std::make_shared<const tex::PreparedTextureSet>();
+    impl_->renderer->load(*impl_->scene, impl_->prepared,
                           impl_->all_streams ? gpu::StreamPolicy::AllPresent
                                              : gpu::StreamPolicy::UsedByMaterials);
+}
+
+void GpuViewport::useStreamsFor(const ViewportFrame& frame) {
+    gpu::RenderSettings settings;
+    settings.view = static_cast<gpu::DebugView>(frame.view);
+    settings.overlays = frame.overlays;
+    const bool all = gpu::needs_all_streams(settings);
+    if (all == impl_->all_streams) return;
+    impl_->all_streams = all;
+    upload();
 }
 
 QStringList GpuViewport::validationMessages() const {
@@ -132,7 +147,17 @@ PreparedTextures GpuViewport::preparedTextures() const {
 }
 
 const Scene* GpuViewport::scene() const {
-    return impl_->scene;
+    return impl_->scene.get();
+}
+
+void GpuViewport::finish() {
+    impl_->context->wait_idle();
+}
+
+double GpuViewport::lastGpuMs() const {
+    if (!impl_->presenter) return -1.0;
+    const gpu::FrameStats& s = impl_->presenter->completed_stats();
+    return s.passes.empty() ? -1.0 : s.gpu_ms;
 }
 
 void GpuViewport::releaseSurface() {
@@ -140,7 +165,7 @@ void GpuViewport::releaseSurface() {
     impl_->surface = 0;
 }
 
-bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame) {
+bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame, float scale) {
     if (!surface || frame.width == 0 || frame.height == 0) return false;
     gpu::RenderSettings settings;
     settings.width = frame.width;
@@ -155,12 +180,6 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame) {
     settings.cull = frame.gpuCulling ? gpu::CullPath::Gpu : gpu::CullPath::Cpu;
     settings.cull_method = frame.cullMethod;
     if (frame.frozenCulling) settings.freeze_cull = gpu::explicit_camera(*frame.frozenCulling);
-    // Views of streams the materials do not read need every stream on the GPU.
-    const bool all = gpu::needs_all_streams(settings);
-    if (all != impl_->all_streams) {
-        impl_->all_streams = all;
-        if (impl_->scene) setScene(impl_->scene, impl_->prepared);
-    }
     if (!impl_->presenter || impl_->surface != surface) {
         impl_->presenter.reset();
         impl_->presenter = std::make_unique<gpu::Presenter>(
@@ -173,7 +192,7 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame) {
         impl_->width = frame.width;
         impl_->height = frame.height;
     }
-    const bool shown = impl_->presenter->present_frame(settings);
+    const bool shown = impl_->presenter->present_frame(settings, scale);
     impl_->renderer->resources().collect_garbage();
     return shown;
 }
@@ -216,7 +235,7 @@ namespace sherpa::editor {
 
 bool GpuViewport::checkGpuCulling(const Frustum& frustum, CullMethod method,
                                   const std::vector<std::uint8_t>& cpu_visible, GpuCullCheck& out) {
-    const Scene* scene = impl_->scene;
+    const Scene* scene = impl_->scene.get();
     if (!scene || scene->instances.empty()) return false;
     if (!impl_->culler || &impl_->culler->scene() != scene)
         impl_->culler = std::make_unique<gpu::GpuCullChecker>(*impl_->context,

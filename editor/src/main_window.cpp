@@ -26,6 +26,7 @@
 #include "material_dock.h"
 #include "mesh_dock.h"
 #include "picking.h"
+#include "render_thread.h"
 #include "scene_tree_dock.h"
 #include "texture_dock.h"
 #include "view_catalog.h"
@@ -76,14 +77,13 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent)
     statusBar()->addPermanentWidget(cancel_);
     statusBar()->addPermanentWidget(frame_label_);
 
+    last_report_ = std::make_unique<FrameReport>();
     createDocks();
-    // After the constructor returns, so that the window shows first. A scene opened
-    // before then (command line) makes the device itself: its textures are prepared
-    // on the loader thread, for that device.
-    QTimer::singleShot(0, this, &MainWindow::createRenderer);
     createActions();
     createMenus();
     connectActions();
+    // Now, not later: the first scene's textures are prepared for this device.
+    createRenderer();
 
     resize(1600, 1000);
     restoreGeometry(settings_.geometry());
@@ -101,11 +101,10 @@ MainWindow::~MainWindow() {
     // The swapchain must go before the window's surface does; the viewport's signals
     // would reach this half-destroyed window while QWidget closes it.
     viewport_->disconnect(this);
-    gpu_.reset();
+    render_.reset(); // finishes the frame in flight, frees the engine on its thread
 }
 
 void MainWindow::createRenderer() {
-    if (gpu_ || gpu_failed_) return; // made already (a scene opened before the timer ran)
     if (!vulkan_) {
         log_->append(LogDock::Level::Error, tr("No Vulkan instance: the viewport cannot render."));
         return;
@@ -113,30 +112,45 @@ void MainWindow::createRenderer() {
     QElapsedTimer clock;
     clock.start();
     QString error;
-    gpu_ = GpuViewport::create(*vulkan_, error);
-    if (!gpu_) {
+    std::unique_ptr<GpuViewport> made = GpuViewport::create(*vulkan_, error);
+    if (!made) {
         log_->append(LogDock::Level::Error, tr("The renderer could not start: %1").arg(error));
         return;
     }
     log_->append(LogDock::Level::Info,
                  tr("Rendering on %1 (renderer ready in %2 ms).")
-                     .arg(gpu_->deviceName())
+                     .arg(made->deviceName())
                      .arg(static_cast<double>(clock.nsecsElapsed()) / 1e6, 0, 'f', 1));
-    viewport_->setFrameCallback([this] { return renderFrame(); });
-    // The swapchain must go before its surface (closing the window destroys it).
-    connect(viewport_, &ViewportWindow::surfaceAboutToBeDestroyed, this, [this] {
-        if (gpu_) gpu_->releaseSurface();
+    device_plan_ = made->texturePlan();
+    render_ = std::make_unique<RenderThread>(std::move(made));
+    connect(render_.get(), &RenderThread::frameDone, this, &MainWindow::onFrameDone);
+    connect(render_.get(), &RenderThread::renderError, this, [this](const QString& e) {
+        gpu_failed_ = true;
+        log_->append(LogDock::Level::Error, tr("Rendering stopped: %1").arg(e));
     });
-    material_->setReadback([this](int material) { return gpu_->readMaterial(material); });
-    gpuObjectCount = [this] { return gpu_->objectCount(); };
-    gpuValidationMessages = [this] { return gpu_->validationMessages(); };
+    viewport_->setFrameCallback([this] { renderFrame(); });
+    // The swapchain must go before its surface (closing the window destroys it).
+    connect(viewport_, &ViewportWindow::surfaceAboutToBeDestroyed, this,
+            [this] { render_->releaseSurface(); });
+    // Read back on the render thread, shown when it comes (the dock shows the CPU
+    // record meanwhile): selecting a material never waits for a frame.
+    material_->setReadback([this](int material, MaterialReadbackDone done) {
+        render_->post([this, material, done = std::move(done)](GpuViewport& gpu) {
+            std::optional<GpuMaterialReadback> r = gpu.readMaterial(material);
+            QMetaObject::invokeMethod(this, [done, r] { done(r); });
+        });
+    });
     culling_->setGpuCheck([this](const Frustum& frustum, CullMethod method,
                                  const std::vector<std::uint8_t>& cpu_visible, CullSample& out) {
-        // The monitor hears of a new scene before the renderer has uploaded it.
-        if (gpu_->scene() != context_.scene()) return false;
         GpuViewport::GpuCullCheck check;
         try {
-            if (!gpu_->checkGpuCulling(frustum, method, cpu_visible, check)) return false;
+            // Runs between frames (the GPU path's check mode waits for the frame in
+            // flight); a scene not uploaded yet is not compared.
+            const bool ran = render_->call([&, scene = context_.scene()](GpuViewport& gpu) {
+                return gpu.scene() == scene &&
+                       gpu.checkGpuCulling(frustum, method, cpu_visible, check);
+            });
+            if (!ran) return false;
         } catch (const std::exception& e) {
             log_->append(LogDock::Level::Error,
                          tr("GPU culling failed: %1").arg(QString::fromUtf8(e.what())));
@@ -148,29 +162,35 @@ void MainWindow::createRenderer() {
         return true;
     });
     connect(&context_, &EditorContext::sceneChanged, this, &MainWindow::uploadScene);
-    if (context_.scene()) uploadScene(); // a scene that arrived before the renderer
-    Q_EMIT rendererReady();
 }
 
 void MainWindow::uploadScene() {
-    try {
-        gpu_->setTextureCache(settings_.cacheDirectory(), settings_.textureQuality());
-        gpu_->setMissingTexturesChecker(a_->missing_checker->isChecked());
-        const SceneExtras* extras = context_.extras();
-        gpu_->setScene(context_.scene(), extras ? extras->textures : nullptr);
-        pass_frames_left_ = kPassReadbackFrames;
-        textures_->setPrepared(gpu_->preparedTextures());
-        logTextureMessages();
-        textures_->setGpuBytes(static_cast<std::int64_t>(gpu_->textureBytes()));
-    } catch (const std::exception& e) {
-        log_->append(LogDock::Level::Error,
-                     tr("GPU upload failed: %1").arg(QString::fromUtf8(e.what())));
-    }
+    const SceneExtras* extras = context_.extras();
+    prepared_ = extras ? extras->textures : nullptr;
+    textures_->setPrepared(prepared_);
+    logTextureMessages();
+    pass_frames_left_ = kPassReadbackFrames;
+    if (!render_) return;
+    const ViewportFrame streams = currentFrame();
+    render_->post([this, scene = context_.sharedScene(), prepared = prepared_, streams,
+                   checker = a_->missing_checker->isChecked()](GpuViewport& gpu) {
+        gpu.setScene(nullptr, nullptr); // so that the stream policy costs no upload
+        gpu.setMissingTexturesChecker(checker);
+        gpu.useStreamsFor(streams);
+        gpu.setScene(scene, prepared);
+        const auto bytes = static_cast<std::int64_t>(gpu.textureBytes());
+        QMetaObject::invokeMethod(this, [this, bytes] { textures_->setGpuBytes(bytes); });
+    });
     viewport_->scheduleFrame();
 }
 
-bool MainWindow::renderFrame() {
-    if (!gpu_ || gpu_failed_) return false;
+void MainWindow::updateStreams() {
+    if (render_)
+        render_->post([frame = currentFrame()](GpuViewport& gpu) { gpu.useStreamsFor(frame); });
+    viewport_->scheduleFrame();
+}
+
+ViewportFrame MainWindow::currentFrame() const {
     ViewportFrame frame;
     const QSize pixels = viewport_->pixelSize();
     frame.width = static_cast<std::uint32_t>(pixels.width());
@@ -189,18 +209,53 @@ bool MainWindow::renderFrame() {
         if (sel.triangle >= 0) frame.highlightTriangle = static_cast<std::uint32_t>(sel.triangle);
         if (sel.vertex >= 0) frame.highlightVertex = static_cast<std::uint32_t>(sel.vertex);
     }
-    last_frame_ = frame;
-    try {
-        const bool shown = gpu_->present(viewport_->vulkanSurface(), frame);
-        // Skipped because the swapchain was out of date and has just been recreated:
-        // draw again at the new size, or the last size change would never show.
-        if (!shown) viewport_->scheduleFrame();
-        return shown;
-    } catch (const std::exception& e) {
-        gpu_failed_ = true;
-        log_->append(LogDock::Level::Error,
-                     tr("Rendering stopped: %1").arg(QString::fromUtf8(e.what())));
-        return false;
+    return frame;
+}
+
+void MainWindow::renderFrame() {
+    if (!render_ || gpu_failed_) return;
+    last_frame_ = currentFrame();
+    // Handed over, not waited for: a newer request replaces it if not started yet.
+    render_->requestFrame(last_frame_, viewport_->vulkanSurface());
+}
+
+void MainWindow::onFrameDone(const FrameReport& report) {
+    // Skipped because the swapchain was out of date and has just been recreated:
+    // draw again at the new size, or the last size change would never show.
+    if (!report.shown) {
+        viewport_->scheduleFrame();
+        return;
+    }
+    *last_report_ = report;
+    frame_times_.add(report.ms);
+    // The first frame makes the pipelines: shown as such, not as a frame rate.
+    QString text = frame_times_.count() == 0
+                       ? tr("first frame %1 ms (makes the pipelines)").arg(report.ms, 0, 'f', 1)
+                       : tr("%1 fps, %2 ms per frame")
+                             .arg(frame_times_.fps(), 0, 'f', 1)
+                             .arg(frame_times_.meanMs(), 0, 'f', 1);
+    if (report.gpu_ms >= 0.0) text += tr(" (GPU %1 ms)").arg(report.gpu_ms, 0, 'f', 1);
+    text += tr(", resolution %1%").arg(qRound(report.scale * 100.0f));
+    frame_label_->setText(text);
+    frame_label_->setToolTip(
+        tr("Mean of the last %1 frames, not counting the renderer's first (pipeline "
+           "creation). While the camera moves, frames are drawn at a lower resolution to keep "
+           "%2 fps; at rest the full-resolution frame follows.")
+            .arg(frame_times_.count())
+            .arg(qRound(1000.0 / kTargetFrameMs)));
+    viewport_->frameDrawn(report.ms);
+    if (report.cull_passes)
+        culling_dock_->setRendererPasses(report.passes, report.cached_shadows);
+    else if (context_.scene() && pass_frames_left_ > 0) {
+        // The renderer reads a frame's culling counts back when it reuses that
+        // frame's slot: draw the few frames that takes now, or the pass table
+        // says "no frame yet" until the camera first moves.
+        --pass_frames_left_;
+        viewport_->scheduleFrame();
+    }
+    if (!first_frame_seen_ && context_.scene()) { // a frame that shows the scene
+        first_frame_seen_ = true;
+        Q_EMIT firstFrame();
     }
 }
 
@@ -297,24 +352,6 @@ void MainWindow::connectActions() {
         onCameraChanged();
     });
     connect(viewport_, &ViewportWindow::frameSelectionRequested, this, &MainWindow::frameSelection);
-    connect(viewport_, &ViewportWindow::frameRendered, this, [this](double ms) {
-        frame_label_->setText(tr("frame %1 ms").arg(ms, 0, 'f', 2));
-        std::vector<CullStats> passes;
-        bool cached_shadows = false;
-        if (gpu_ && gpu_->lastCullPasses(passes, cached_shadows))
-            culling_dock_->setRendererPasses(std::move(passes), cached_shadows);
-        else if (context_.scene() && pass_frames_left_ > 0) {
-            // The renderer reads a frame's culling counts back when it reuses that
-            // frame's slot: draw the few frames that takes now, or the pass table
-            // says "no frame yet" until the camera first moves.
-            --pass_frames_left_;
-            viewport_->scheduleFrame();
-        }
-        if (!first_frame_seen_ && context_.scene()) { // a frame that shows the scene
-            first_frame_seen_ = true;
-            Q_EMIT firstFrame();
-        }
-    });
     connect(&context_, &EditorContext::selectionChanged, viewport_, &ViewportWindow::scheduleFrame);
     connect(&context_, &EditorContext::visibilityChanged, viewport_,
             &ViewportWindow::scheduleFrame);
@@ -330,7 +367,7 @@ bool MainWindow::setDebugView(const QString& name, bool remember) {
     view_ = *id;
     if (remember) settings_.setLastView(name);
     retranslate(); // checks the matching menu entry
-    viewport_->scheduleFrame();
+    updateStreams();
     return true;
 }
 
@@ -365,8 +402,10 @@ QImage MainWindow::screenshot() {
     // Widgets paint into the pixmap; the native viewport does not, so its frame is
     // composited from the renderer's readback when there is one.
     QImage image = grab().toImage();
-    if (gpu_ && viewport_->isExposed()) {
-        viewport_->renderNow(); // not a frame of an earlier size or camera
+    if (render_ && !gpu_failed_ && viewport_->isExposed()) {
+        // Drawn now at full size (not a reduced or earlier frame), and on screen.
+        last_frame_ = currentFrame();
+        render_->renderAndWait(last_frame_, viewport_->vulkanSurface());
         // The X server holds the presented frame: read it back like any window.
         const QPixmap frame = viewport_->screen()->grabWindow(viewport_->winId());
         QPainter painter(&image);

@@ -101,7 +101,7 @@ private Q_SLOTS:
     void missingTextureIsNamedInTheDockAndLog();
 
 private:
-    bool hasGpu() const { return static_cast<bool>(window_->gpuObjectCount); }
+    bool hasGpu() const { return window_->renderer() != nullptr; }
     QVulkanInstance vulkan_;
     std::unique_ptr<MainWindow> window_;
     qsizetype seen_validation_ = 0;
@@ -328,7 +328,7 @@ void ViewportTests::cancelDropsTheLoadAndLeaksNothing() {
     // Per-frame buffers (overlay lines, culled ids) are made on first use, per frame
     // in flight: draw a few frames first.
     for (int f = 0; hasGpu() && f < 3; ++f) QVERIFY(nextFrame(*window_));
-    const std::int64_t objects = hasGpu() ? window_->gpuObjectCount() : -1;
+    const std::int64_t objects = hasGpu() ? test::gpu_objects(*window_) : -1;
     QSignalSpy loaded(window_.get(), &MainWindow::sceneLoaded);
     QSignalSpy canceled(window_.get(), &MainWindow::loadCanceled);
     std::uint64_t warm = 0;
@@ -351,7 +351,7 @@ void ViewportTests::cancelDropsTheLoadAndLeaksNothing() {
     QVERIFY(window_->lastProgressText().contains(QStringLiteral("/4")));
     if (objects >= 0) {
         for (int f = 0; f < 3; ++f) QVERIFY(nextFrame(*window_));
-        QCOMPARE(window_->gpuObjectCount(), objects);
+        QCOMPARE(test::gpu_objects(*window_), objects);
     }
     QVERIFY2(resident_kib() < warm + 32 * 1024, "cancelled loads leave memory behind");
     QVERIFY(load(*window_, QStringLiteral("builtin:grid?n=10"))); // and loading still works

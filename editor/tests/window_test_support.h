@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "main_window.h"
+#include "render_thread.h"
 
 namespace sherpa::editor::test {
 
@@ -40,11 +41,18 @@ inline void isolate_settings() {
 // The validation layer's messages since the last call ("" when none); suites set
 // SHERPA_VALIDATION=1 before creating the Vulkan instance and fail on any.
 inline QString fresh_validation_messages(const MainWindow& w, qsizetype& seen) {
-    if (!w.gpuValidationMessages) return {};
-    const QStringList messages = w.gpuValidationMessages();
+    if (!w.renderer()) return {};
+    const QStringList messages =
+        w.renderer()->call([](GpuViewport& gpu) { return gpu.validationMessages(); });
     const QStringList fresh = messages.mid(seen);
     seen = messages.size();
     return fresh.join(QLatin1Char('\n'));
+}
+
+// GPU objects (buffers, images, samplers) the renderer holds; -1 without one.
+inline std::int64_t gpu_objects(const MainWindow& w) {
+    if (!w.renderer()) return -1;
+    return w.renderer()->call([](GpuViewport& gpu) { return gpu.objectCount(); });
 }
 
 inline std::uint64_t resident_kib() {

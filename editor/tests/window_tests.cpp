@@ -192,11 +192,11 @@ void WindowTests::switchingFiftyTimesDoesNotGrow() {
         QCoreApplication::processEvents();
         if (i == specs.size() * 2 - 1) { // after two full rounds: allocator pools are warm
             warm = resident_kib();
-            if (window_->gpuObjectCount) gpu_objects = window_->gpuObjectCount();
+            if (window_->renderer()) gpu_objects = test::gpu_objects(*window_);
         }
-        if (i == 49 && window_->gpuObjectCount && gpu_objects >= 0) {
+        if (i == 49 && window_->renderer() && gpu_objects >= 0) {
             // Same scene as at the warm point (50 - 10 is a multiple of 5): same objects.
-            QCOMPARE(window_->gpuObjectCount(), gpu_objects);
+            QCOMPARE(test::gpu_objects(*window_), gpu_objects);
         }
     }
     const std::uint64_t end = resident_kib();

@@ -96,7 +96,10 @@ void Presenter::create_swapchain(std::uint32_t width, std::uint32_t height) {
     ci.imageColorSpace = format.colorSpace;
     ci.imageExtent = extent;
     ci.imageArrayLayers = 1;
+    // Transfer writes too where allowed: reduced-resolution frames are blitted in.
+    blit_target_ = (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT) != 0;
     ci.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+    if (blit_target_) ci.imageUsage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     ci.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
     ci.preTransform = caps.currentTransform;
     ci.compositeAlpha =
@@ -114,6 +117,14 @@ void Presenter::create_swapchain(std::uint32_t width, std::uint32_t height) {
     swapchain_ = UniqueSwapchain(context_.device(), swapchain); // retires the old one
     format_ = format.format;
     extent_ = extent;
+    VkFormatProperties props{};
+    vkGetPhysicalDeviceFormatProperties(pd, format_, &props);
+    const VkFormatFeatureFlags blit =
+        VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT;
+    blit_target_ = blit_target_ && (props.optimalTilingFeatures & blit) == blit;
+    blit_filter_ = (props.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT)
+                       ? VK_FILTER_LINEAR
+                       : VK_FILTER_NEAREST;
 
     vkGetSwapchainImagesKHR(context_.device(), swapchain, &n, nullptr);
     images_.resize(n);
@@ -138,10 +149,36 @@ void Presenter::resize(std::uint32_t width, std::uint32_t height) {
     create_swapchain(width, height);
 }
 
-bool Presenter::present_frame(RenderSettings settings) {
+namespace {
+
+// The reduced frame (in TRANSFER_SRC layout) stretched over the whole swapchain image.
+void blit_to_swapchain(VkCommandBuffer cmd, VkImage from, VkExtent2D from_size, VkImage to,
+                       VkExtent2D to_size, VkFilter filter) {
+    transition(cmd, {to, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                     VK_ACCESS_2_NONE, // the acquire wait
+                     VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
+    VkImageBlit region{};
+    region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.srcOffsets[1] = {static_cast<std::int32_t>(from_size.width),
+                            static_cast<std::int32_t>(from_size.height), 1};
+    region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.dstOffsets[1] = {static_cast<std::int32_t>(to_size.width),
+                            static_cast<std::int32_t>(to_size.height), 1};
+    vkCmdBlitImage(cmd, from, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, to,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, filter);
+    transition(cmd, {to, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_2_BLIT_BIT,
+                     VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE});
+}
+
+} // namespace
+
+bool Presenter::present_frame(RenderSettings settings, float resolution_scale) {
     if (extent_.width == 0 || extent_.height == 0) return false; // minimised
     const std::uint32_t slot = frame_;
-    renderer_.impl_->wait_for_slot(slot); // its acquire semaphore and recorder are free again
+    // The slot's previous frame is done: its timestamps and culling counts are final.
+    completed_ = renderer_.impl_->slot_stats(slot);
     std::uint32_t index = 0;
     VkResult r = vkAcquireNextImageKHR(context_.device(), swapchain_.get(), UINT64_MAX,
                                        acquired_[slot].get(), VK_NULL_HANDLE, &index);
@@ -151,16 +188,33 @@ bool Presenter::present_frame(RenderSettings settings) {
     }
     if (r != VK_SUBOPTIMAL_KHR) vk_check(r, "vkAcquireNextImageKHR");
 
-    settings.width = extent_.width;
-    settings.height = extent_.height;
+    const auto scaled = [&](std::uint32_t side) {
+        return std::max(1u,
+                        static_cast<std::uint32_t>(static_cast<float>(side) * resolution_scale));
+    };
+    const bool reduced = blit_target_ && resolution_scale > 0.0f && resolution_scale < 1.0f;
+    const VkExtent2D size =
+        reduced ? VkExtent2D{scaled(extent_.width), scaled(extent_.height)} : extent_;
+    settings.width = size.width;
+    settings.height = size.height;
     VkCommandBuffer cmd = recorders_[slot]->begin();
-    RenderTarget target{images_[index], views_[index].get(), format_,
-                        extent_.width,  extent_.height,      VK_IMAGE_LAYOUT_PRESENT_SRC_KHR};
-    renderer_.impl_->record_frame(cmd, slot, target, settings);
+    if (reduced) {
+        const Image& image = renderer_.impl_->scaled_target(format_, size.width, size.height);
+        RenderTarget target{image.image.get(), image.view.get(),
+                            format_,           size.width,
+                            size.height,       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+        renderer_.impl_->record_frame(cmd, slot, target, settings);
+        blit_to_swapchain(cmd, image.image.get(), size, images_[index], extent_, blit_filter_);
+    } else {
+        RenderTarget target{images_[index], views_[index].get(), format_,
+                            extent_.width,  extent_.height,      VK_IMAGE_LAYOUT_PRESENT_SRC_KHR};
+        renderer_.impl_->record_frame(cmd, slot, target, settings);
+    }
     auto wait = vk_init<VkSemaphoreSubmitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO);
     wait.semaphore = acquired_[slot].get();
+    // Where the image is first written: drawn into, or the reduced frame blitted in.
     wait.stageMask =
-        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT; // where the image is first written
+        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
     auto signal = vk_init<VkSemaphoreSubmitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO);
     signal.semaphore = rendered_[index].get();
     signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;

@@ -28,7 +28,15 @@ public:
     // Renders `settings` (its width/height are replaced by the swapchain's) into
     // the next image and queues it for presentation. Returns false when the
     // swapchain was out of date: it is recreated and the frame is skipped.
-    bool present_frame(RenderSettings settings);
+    // `resolution_scale` below 1 (interaction on slow devices) draws each side at
+    // that fraction into an intermediate image and scales it up (linear filter)
+    // into the swapchain image; 1, or a surface that cannot be a blit target,
+    // draws at full size.
+    bool present_frame(RenderSettings settings, float resolution_scale = 1.0f);
+    // Statistics (GPU timestamps, culling) of the latest frame known to be complete:
+    // read when its frame slot comes round again, kFramesInFlight frames behind the
+    // last one queued. Empty before that.
+    const FrameStats& completed_stats() const { return completed_; }
     // The window changed size: recreate the swapchain at the new size.
     void resize(std::uint32_t width, std::uint32_t height);
 
@@ -57,6 +65,9 @@ private:
     std::vector<std::unique_ptr<CommandRecorder>> recorders_; // per frame slot
     std::uint32_t frame_ = 0;
     std::uint64_t presented_ = 0;
+    bool blit_target_ = false; // swapchain images take transfer writes (scaled frames)
+    VkFilter blit_filter_ = VK_FILTER_NEAREST;
+    FrameStats completed_;
 };
 
 } // namespace sherpa::gpu

@@ -83,6 +83,8 @@ public:
     int selectedInstance() const;
     // The settings of the last frame handed to the renderer.
     const ViewportFrame& lastFrame() const { return last_frame_; }
+    // The serial of the last frame request (FrameReport::request of its frame).
+    std::uint64_t lastRequest() const { return last_request_; }
     // The last frame the render thread drew (size, scale, timings).
     const FrameReport& lastReport() const { return *last_report_; }
     // The progress bar's text as last shown during a load.
@@ -144,6 +146,7 @@ private:
     PreparedTextures prepared_;            // of the scene on screen (texture dock, cache)
     std::weak_ptr<const tex::PreparedTextureSet> logged_textures_; // logTextureMessages()
     std::unique_ptr<FrameReport> last_report_;
+    std::uint64_t last_request_ = 0;
     FrameTimes frame_times_;
     ViewportWindow* viewport_ = nullptr;
     QWidget* viewport_container_ = nullptr;

@@ -4,6 +4,7 @@
 #include "main_window_actions.h"
 
 #include <QAbstractItemModel>
+#include <QAbstractProxyModel>
 #include <QActionGroup>
 #include <QApplication>
 #include <QDesktopServices>
@@ -330,10 +331,15 @@ void MainWindow::retranslate() {
     textures_->retranslate();
     culling_dock_->retranslate();
     log_->retranslate();
-    // Models read tr() in headerData/data: tell the views to ask again.
+    // Models read tr() in headerData/data: tell the views to ask again. Source models
+    // only, each change announced first: a proxy forwards its source's signals, and a
+    // bare layoutChanged() on it left its persistent indices dangling (a crash when a
+    // view was chosen with a scene tree item selected).
     for (QAbstractItemModel* m : findChildren<QAbstractItemModel*>()) {
+        if (qobject_cast<QAbstractProxyModel*>(m)) continue;
         if (m->columnCount() > 0)
             Q_EMIT m->headerDataChanged(Qt::Horizontal, 0, m->columnCount() - 1);
+        Q_EMIT m->layoutAboutToBeChanged();
         Q_EMIT m->layoutChanged();
     }
     updateStatus();

@@ -2,8 +2,6 @@
 
 #include <chrono>
 
-#include "resolution_scale.h"
-
 namespace sherpa::editor {
 
 namespace {
@@ -56,6 +54,11 @@ void RenderThread::post(Task task) {
 void RenderThread::setInteractiveScaling(bool on) {
     std::lock_guard lock(mutex_);
     scaling_ = on;
+}
+
+void RenderThread::setTargetFrameMs(double ms) {
+    std::lock_guard lock(mutex_);
+    target_ms_ = ms;
 }
 
 float RenderThread::interactiveScale() const {
@@ -171,7 +174,7 @@ void RenderThread::draw(GpuViewport& gpu, const Request& request, bool still) {
         }
         // Every frame informs the next moving frame's scale: a still frame too says
         // what full size costs.
-        if (report.shown) scale_ = next_resolution_scale(scale, cost);
+        if (report.shown) scale_ = next_resolution_scale(scale, cost, target_ms_);
         last_ = request;
         refine_ = report.shown && scale < 1.0f;
     }

@@ -20,6 +20,7 @@
 #include <thread>
 
 #include "gpu_viewport.h"
+#include "resolution_scale.h"
 
 namespace sherpa::editor {
 
@@ -63,6 +64,8 @@ public:
     void setInteractiveScaling(bool on);
     // The scale the next moving frame gets (1: full size).
     float interactiveScale() const;
+    // The frame time moving frames aim at (kTargetFrameMs: 30 fps).
+    void setTargetFrameMs(double ms);
 
     static constexpr int kRestMs = 80; // no new camera for this long: the camera rests
 
@@ -87,6 +90,7 @@ private:
     bool refine_ = false;         // last_ was drawn reduced: draw it full at rest
     bool stop_ = false;
     bool scaling_ = true;
+    double target_ms_ = kTargetFrameMs;
     float scale_ = 1.0f;             // for the next moving frame
     std::deque<float> drawn_scales_; // of the last presents (to match GPU timings)
     std::uint64_t serial_ = 0;

@@ -11,7 +11,7 @@ float next_resolution_scale(float scale, double frame_ms, double target_ms) {
     const double wanted = static_cast<double>(scale) * std::sqrt(target_ms / frame_ms);
     const double clamped = std::clamp(wanted, static_cast<double>(kMinResolutionScale), 1.0);
     const double step = static_cast<double>(kResolutionScaleStep);
-    const auto rounded = static_cast<float>(std::floor(clamped / step + 1e-6) * step);
+    const auto rounded = static_cast<float>(std::round(clamped / step) * step);
     const float next = std::clamp(rounded, kMinResolutionScale, 1.0f);
     // Within one step of the current scale: keep it (no new image for a jitter).
     if (std::abs(next - scale) < kResolutionScaleStep * 0.999f && next < 1.0f) return scale;

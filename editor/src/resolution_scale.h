@@ -15,7 +15,7 @@ inline constexpr float kResolutionScaleStep = 1.0f / 16.0f;
 // The scale of the next moving frame, given the last one drawn at `scale` cost
 // `frame_ms`. Frame cost is taken as proportional to the pixels drawn (scale²), so
 // the area is multiplied by target/cost; the result is clamped to
-// [kMinResolutionScale, 1] and rounded down to kResolutionScaleStep, and changes
+// [kMinResolutionScale, 1] and rounded to kResolutionScaleStep, and changes
 // of less than one step are ignored (a new size reallocates the reduced image).
 // A non-positive `frame_ms` (not measured) keeps `scale`.
 float next_resolution_scale(float scale, double frame_ms, double target_ms = kTargetFrameMs);

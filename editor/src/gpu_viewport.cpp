@@ -150,6 +150,14 @@ const Scene* GpuViewport::scene() const {
     return impl_->scene.get();
 }
 
+QStringList GpuViewport::lastPassTimes() const {
+    QStringList out;
+    if (!impl_->presenter) return out;
+    for (const gpu::PassTiming& p : impl_->presenter->completed_stats().passes)
+        out << QStringLiteral("%1 %2 ms").arg(QString::fromStdString(p.name)).arg(p.ms, 0, 'f', 1);
+    return out;
+}
+
 void GpuViewport::finish() {
     impl_->context->wait_idle();
 }
@@ -180,10 +188,20 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame, flo
     settings.cull = frame.gpuCulling ? gpu::CullPath::Gpu : gpu::CullPath::Cpu;
     settings.cull_method = frame.cullMethod;
     if (frame.frozenCulling) settings.freeze_cull = gpu::explicit_camera(*frame.frozenCulling);
+    // A reduced frame means a slow device while the camera moves: the shadow cascades
+    // follow the camera and cost the same at any resolution (DamagedHelmet on lavapipe:
+    // 165 of 245 ms), so moving frames go without them; the still frame has them.
+    if (scale < 1.0f) settings.shadows = false;
     if (!impl_->presenter || impl_->surface != surface) {
         impl_->presenter.reset();
-        impl_->presenter = std::make_unique<gpu::Presenter>(
-            *impl_->renderer, reinterpret_cast<VkSurfaceKHR>(surface), frame.width, frame.height);
+        // Not FIFO: the render thread must not block on the display's refresh, and
+        // Mesa's X11 path then puts the image to the server within the present call,
+        // so a screenshot taken after it sees this frame, not an earlier one.
+        gpu::PresenterOptions options;
+        options.vsync = false;
+        impl_->presenter = std::make_unique<gpu::Presenter>(*impl_->renderer,
+                                                            reinterpret_cast<VkSurfaceKHR>(surface),
+                                                            frame.width, frame.height, options);
         impl_->surface = surface;
         impl_->width = frame.width;
         impl_->height = frame.height;

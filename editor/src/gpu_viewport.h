@@ -74,7 +74,8 @@ public:
     const Scene* scene() const;
     // Presents one frame on `surface` (the swapchain is created on first use and
     // recreated when the size changes), each side drawn at `scale` of the frame's
-    // size and scaled up (interaction on slow devices). False when it was skipped.
+    // size and scaled up, without shadows (interaction on slow devices). False when
+    // it was skipped.
     bool present(std::uint64_t surface, const ViewportFrame& frame, float scale = 1.0f);
     // Waits until the queue is idle (the presented frame is on screen).
     void finish();
@@ -89,6 +90,8 @@ public:
     // GPU time (timestamps, first to last pass) of the latest completed frame; -1
     // before one completed or without timestamps.
     double lastGpuMs() const;
+    // The same frame pass by pass: "NAME MS ms" each, in frame order.
+    QStringList lastPassTimes() const;
     static constexpr std::size_t kFramesInFlight = 2; // gpu::Renderer::kFramesInFlight
     // The last presented frame's culling passes from the renderer's history (camera,
     // then each cascade); false before any culled frame. `cached_shadows`: the cascades were

@@ -36,6 +36,9 @@ void GpuViewport::setScene(std::shared_ptr<const Scene>, PreparedTextures) {}
 void GpuViewport::useStreamsFor(const ViewportFrame&) {}
 void GpuViewport::upload() {}
 void GpuViewport::finish() {}
+QStringList GpuViewport::lastPassTimes() const {
+    return {};
+}
 double GpuViewport::lastGpuMs() const {
     return -1.0;
 }

@@ -244,11 +244,16 @@ void MainWindow::updateStatus() {
 QImage MainWindow::screenshot() {
     // Widgets paint into the pixmap; the native viewport does not, so its frame is
     // composited from the renderer's readback when there is one.
-    QImage image = grab().toImage();
-    if (render_ && !gpu_failed_ && viewport_->isExposed()) {
+    const bool drawn = render_ && !gpu_failed_ && viewport_->isExposed();
+    if (drawn) {
         // Drawn now at full size (not a reduced or earlier frame), and on screen.
         last_frame_ = currentFrame();
         render_->renderAndWait(last_frame_, viewport_->vulkanSurface());
+        // What the render thread posted back (texture bytes, frame times) shows too.
+        QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
+    }
+    QImage image = grab().toImage();
+    if (drawn) {
         // The X server holds the presented frame: read it back like any window.
         const QPixmap frame = viewport_->screen()->grabWindow(viewport_->winId());
         QPainter painter(&image);

@@ -160,8 +160,8 @@ void MainWindow::onFrameDone(const FrameReport& report) {
     frame_label_->setText(text);
     frame_label_->setToolTip(
         tr("Mean of the last %1 frames, not counting the renderer's first (pipeline "
-           "creation). While the camera moves, frames are drawn at a lower resolution to keep "
-           "%2 fps; at rest the full-resolution frame follows.")
+           "creation). While the camera moves on a slow device, frames are drawn at a lower "
+           "resolution and without shadows to keep %2 fps; at rest the full frame follows.")
             .arg(frame_times_.count())
             .arg(qRound(1000.0 / kTargetFrameMs)));
     viewport_->frameDrawn(report.ms);

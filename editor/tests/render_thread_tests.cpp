@@ -75,16 +75,8 @@ private:
 };
 
 void RenderThreadTests::initTestCase() {
-    QStandardPaths::setTestModeEnabled(true);
-    test::isolate_settings();
-    qputenv("SHERPA_VALIDATION", "1"); // before the instance: it enables the layer
-    GpuViewport::configureInstance(vulkan_);
-    vulkan_.create();
-    window_ = std::make_unique<MainWindow>(vulkan_.isValid() ? &vulkan_ : nullptr);
-    window_->setLanguage(QStringLiteral("en"));
-    window_->show();
-    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
-    QVERIFY(test::load(*window_, QStringLiteral("builtin:default")));
+    window_ = test::open_validated_window(vulkan_);
+    QVERIFY(window_);
 }
 
 void RenderThreadTests::guiWorksWhileAFrameIsInFlight() {

@@ -66,16 +66,8 @@ private:
 };
 
 void WindowTests::initTestCase() {
-    QStandardPaths::setTestModeEnabled(true); // caches go to a test location
-    test::isolate_settings();                 // settings to this process's own
-    qputenv("SHERPA_VALIDATION", "1");        // before the instance: it enables the layer
-    GpuViewport::configureInstance(vulkan_);
-    vulkan_.create(); // optional: without Vulkan the viewport stays empty
-    window_ = std::make_unique<MainWindow>(vulkan_.isValid() ? &vulkan_ : nullptr);
-    window_->setLanguage(QStringLiteral("en"));
-    window_->show();
-    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
-    QVERIFY(load(*window_, QStringLiteral("builtin:default")));
+    window_ = test::open_validated_window(vulkan_);
+    QVERIFY(window_);
 }
 
 void WindowTests::opensEveryAsset() {

@@ -249,8 +249,10 @@ QImage MainWindow::screenshot() {
         // Drawn now at full size (not a reduced or earlier frame), and on screen.
         last_frame_ = currentFrame();
         render_->renderAndWait(last_frame_, viewport_->vulkanSurface());
-        // What the render thread posted back (texture bytes, frame times) shows too.
-        QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
+        // What the render thread posted back (texture bytes, frame times, passes) shows
+        // too, and the columns refitted for it (a zero-time timer each: a few rounds).
+        for (int round = 0; round < 3; ++round)
+            QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
     }
     QImage image = grab().toImage();
     if (drawn) {

@@ -102,6 +102,7 @@ void MainWindow::uploadScene() {
         const auto bytes = static_cast<std::int64_t>(gpu.textureBytes());
         QMetaObject::invokeMethod(this, [this, bytes] { textures_->setGpuBytes(bytes); });
     });
+    render_->forgetMotion(); // the new scene's first frame at full size
     viewport_->scheduleFrame();
 }
 

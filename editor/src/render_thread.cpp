@@ -51,6 +51,12 @@ void RenderThread::post(Task task) {
     wake_.notify_all();
 }
 
+void RenderThread::forgetMotion() {
+    std::lock_guard lock(mutex_);
+    last_.reset(); // no camera to compare with: still
+    refine_ = false;
+}
+
 void RenderThread::setInteractiveScaling(bool on) {
     std::lock_guard lock(mutex_);
     scaling_ = on;

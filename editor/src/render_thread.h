@@ -60,6 +60,9 @@ public:
     bool renderAndWait(const ViewportFrame& frame, std::uint64_t surface);
     // Drops the swapchain and any request for it, and waits (the surface is going).
     void releaseSurface();
+    // The next frame is still (full size) whatever its camera: a new scene's framing
+    // is a jump, not motion.
+    void forgetMotion();
     // Reduced resolution while moving; off draws every frame at full size.
     void setInteractiveScaling(bool on);
     // The scale the next moving frame gets (1: full size).

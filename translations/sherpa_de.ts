@@ -346,10 +346,6 @@
         <translation>Laden von %1 abgebrochen; das Ergebnis wird verworfen.</translation>
     </message>
     <message>
-        <source>frame %1 ms</source>
-        <translation>Bild %1 ms</translation>
-    </message>
-    <message>
         <source>Loading %1…</source>
         <translation>Lade %1 …</translation>
     </message>
@@ -622,10 +618,6 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <translation>Rendern auf %1 (Renderer nach %2 ms bereit).</translation>
     </message>
     <message>
-        <source>GPU upload failed: %1</source>
-        <translation>GPU-Upload fehlgeschlagen: %1</translation>
-    </message>
-    <message>
         <source>Rendering stopped: %1</source>
         <translation>Rendern angehalten: %1</translation>
     </message>
@@ -676,6 +668,26 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>&amp;UV Checker Density (checks per UV unit)</source>
         <translation>&amp;UV-Schachbrettdichte (Felder pro UV-Einheit)</translation>
+    </message>
+    <message>
+        <source>first frame %1 ms (makes the pipelines)</source>
+        <translation>erstes Bild %1 ms (erstellt die Pipelines)</translation>
+    </message>
+    <message>
+        <source>%1 fps, %2 ms per frame</source>
+        <translation>%1 fps, %2 ms pro Bild</translation>
+    </message>
+    <message>
+        <source> (GPU %1 ms)</source>
+        <translation> (GPU %1 ms)</translation>
+    </message>
+    <message>
+        <source>, resolution %1%</source>
+        <translation>, Auflösung %1 %</translation>
+    </message>
+    <message>
+        <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</source>
+        <translation>Mittel der letzten %1 Bilder ohne das erste des Renderers (Pipeline-Erstellung). Während sich die Kamera auf einem langsamen Gerät bewegt, werden Bilder mit geringerer Auflösung und ohne Schatten gezeichnet, um %2 fps zu halten; in Ruhe folgt das volle Bild.</translation>
     </message>
 </context>
 <context>

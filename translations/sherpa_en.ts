@@ -346,10 +346,6 @@
         <translation>Loading %1 cancelled; the result is discarded.</translation>
     </message>
     <message>
-        <source>frame %1 ms</source>
-        <translation>frame %1 ms</translation>
-    </message>
-    <message>
         <source>Loading %1…</source>
         <translation>Loading %1…</translation>
     </message>
@@ -622,10 +618,6 @@ The current scene is kept.</translation>
         <translation>Rendering on %1 (renderer ready in %2 ms).</translation>
     </message>
     <message>
-        <source>GPU upload failed: %1</source>
-        <translation>GPU upload failed: %1</translation>
-    </message>
-    <message>
         <source>Rendering stopped: %1</source>
         <translation>Rendering stopped: %1</translation>
     </message>
@@ -676,6 +668,26 @@ The current scene is kept.</translation>
     <message>
         <source>&amp;UV Checker Density (checks per UV unit)</source>
         <translation>&amp;UV Checker Density (checks per UV unit)</translation>
+    </message>
+    <message>
+        <source>first frame %1 ms (makes the pipelines)</source>
+        <translation>first frame %1 ms (makes the pipelines)</translation>
+    </message>
+    <message>
+        <source>%1 fps, %2 ms per frame</source>
+        <translation>%1 fps, %2 ms per frame</translation>
+    </message>
+    <message>
+        <source> (GPU %1 ms)</source>
+        <translation> (GPU %1 ms)</translation>
+    </message>
+    <message>
+        <source>, resolution %1%</source>
+        <translation>, resolution %1%</translation>
+    </message>
+    <message>
+        <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</source>
+        <translation>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</translation>
     </message>
 </context>
 <context>

@@ -346,10 +346,6 @@
         <translation>已取消加载 %1；结果将被丢弃。</translation>
     </message>
     <message>
-        <source>frame %1 ms</source>
-        <translation>帧 %1 ms</translation>
-    </message>
-    <message>
         <source>Loading %1…</source>
         <translation>正在加载 %1…</translation>
     </message>
@@ -622,10 +618,6 @@ The current scene is kept.</source>
         <translation>在 %1 上渲染（渲染器 %2 ms 后就绪）。</translation>
     </message>
     <message>
-        <source>GPU upload failed: %1</source>
-        <translation>GPU 上传失败：%1</translation>
-    </message>
-    <message>
         <source>Rendering stopped: %1</source>
         <translation>渲染已停止：%1</translation>
     </message>
@@ -676,6 +668,26 @@ The current scene is kept.</source>
     <message>
         <source>&amp;UV Checker Density (checks per UV unit)</source>
         <translation>UV 棋盘格密度（每 UV 单位格数）(&amp;U)</translation>
+    </message>
+    <message>
+        <source>first frame %1 ms (makes the pipelines)</source>
+        <translation>首帧 %1 毫秒（创建管线）</translation>
+    </message>
+    <message>
+        <source>%1 fps, %2 ms per frame</source>
+        <translation>%1 fps，每帧 %2 毫秒</translation>
+    </message>
+    <message>
+        <source> (GPU %1 ms)</source>
+        <translation>（GPU %1 毫秒）</translation>
+    </message>
+    <message>
+        <source>, resolution %1%</source>
+        <translation>，分辨率 %1%</translation>
+    </message>
+    <message>
+        <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</source>
+        <translation>最近 %1 帧的平均值，不计渲染器的第一帧（创建管线）。在慢速设备上移动相机时，以较低分辨率且不带阴影绘制以保持 %2 fps；静止后显示完整画面。</translation>
     </message>
 </context>
 <context>

@@ -50,9 +50,12 @@ void when_layout_settles(MainWindow& window, std::function<void()> then) {
         state->stable = size == state->last ? state->stable + 1 : 0;
         state->last = size;
         const ViewportFrame& f = window.lastFrame();
-        const bool drawn = !window.viewport()->isExposed() || !window.gpuObjectCount ||
+        // Drawn at the final size, and the renderer's culling passes read back (the
+        // culling dock's pass table), so that a screenshot shows them.
+        const bool drawn = !window.viewport()->isExposed() || !window.renderer() ||
                            (static_cast<int>(f.width) == size.width() &&
-                            static_cast<int>(f.height) == size.height());
+                            static_cast<int>(f.height) == size.height() &&
+                            (!window.context().scene() || window.cullingDock()->passRows() > 0));
         if (!drawn) window.viewport()->scheduleFrame();
         if ((state->stable >= kStablePolls && drawn) || ++state->polls >= kMaxPolls) {
             timer->stop();

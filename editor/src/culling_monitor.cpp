@@ -1,10 +1,15 @@
 #include "culling_monitor.h"
 
+#include <QElapsedTimer>
+
 namespace sherpa::editor {
 
 CullingMonitor::CullingMonitor(const EditorContext& context, QObject* parent)
     : QObject(parent), context_(context) {
     options_.count_false_positives = true; // the dock shows them; the exact test is cheap
+    deferred_ = new QTimer(this);
+    deferred_->setSingleShot(true);
+    connect(deferred_, &QTimer::timeout, this, &CullingMonitor::rerun);
     connect(&context_, &EditorContext::sceneChanged, this, [this] {
         input_ = context_.scene() ? prepare_cull_input(*context_.scene()) : CullInput{};
         history_ = RingHistory<CullSample>(kHistory);
@@ -33,10 +38,20 @@ void CullingMonitor::setGpuPath(bool gpu) {
 
 void CullingMonitor::update(const CameraSpec& camera) {
     camera_ = camera;
-    rerun();
+    if (last_ms_ < kSynchronousMs) return rerun();
+    // Expensive: the latest camera once the GUI thread has had twice the pass's time.
+    if (!deferred_->isActive()) deferred_->start(static_cast<int>(2.0 * last_ms_));
+}
+
+void CullingMonitor::flush() {
+    if (deferred_->isActive()) {
+        deferred_->stop();
+        rerun();
+    }
 }
 
 void CullingMonitor::rerun() {
+    deferred_->stop();
     const Scene* scene = context_.scene();
     if (!scene) {
         visible_.clear();
@@ -45,7 +60,10 @@ void CullingMonitor::rerun() {
     }
     const CameraSpec& cam = cullingCamera();
     const Frustum frustum = frustum_from_view_projection(cam.view_projection());
+    QElapsedTimer clock; // the CPU pass alone (the GPU check waits for a frame)
+    clock.start();
     PassResult pass = cull_pass(input_, frustum, cam.eye, options_, "camera");
+    last_ms_ = static_cast<double>(clock.nsecsElapsed()) / 1e6;
     visible_.assign(scene->instances.size(), 0);
     for (std::uint32_t i : pass.visible_opaque) visible_[i] = 1;
     for (std::uint32_t i : pass.visible_transparent) visible_[i] = 1;

@@ -20,9 +20,10 @@ struct GpuViewport::Impl {
     std::unique_ptr<gpu::Context> context;
     std::unique_ptr<gpu::Renderer> renderer;
     std::unique_ptr<gpu::Presenter> presenter;
+    gpu::FrameStats completed; // of the latest frame known complete (status bar, pass table)
     std::uint64_t surface = 0;
     std::uint32_t width = 0, height = 0;
-    const Scene* scene = nullptr;
+    std::shared_ptr<const Scene> scene; // on the GPU
     bool all_streams = false;
     PreparedTextures prepared;                   // of `scene`
     std::unique_ptr<gpu::GpuCullChecker> culler; // CPU/GPU agreement checks, built per scene
@@ -72,15 +73,30 @@ QString GpuViewport::deviceName() const {
         .arg(VK_API_VERSION_PATCH(info.api_version));
 }
 
-void GpuViewport::setTextureCache(const QString& directory, const QString& quality) {
-    gpu::TextureSettings t = impl_->renderer->texture_settings();
-    t.cache_dir = directory.isEmpty()
-                      ? std::nullopt
-                      : std::optional(std::filesystem::path(directory.toStdString()));
-    t.quality = quality == QLatin1String("fast")   ? tex::kBc7MinLevel
-                : quality == QLatin1String("best") ? tex::kBc7MaxLevel
-                                                   : tex::kBc7DefaultLevel;
-    impl_->renderer->set_texture_settings(t);
+TexturePlan GpuViewport::texturePlan() const {
+    const gpu::DeviceInfo& info = impl_->context->info();
+    TexturePlan plan;
+    plan.device = true;
+    plan.device_name = info.name;
+    plan.bc_textures = info.bc_textures;
+    plan.cpu_device = info.is_cpu();
+    return plan;
+}
+
+PreparedTextures prepareTextures(const TexturePlan& plan, const Scene& scene,
+                                 const ProgressCallback& progress, const CancelToken* cancel) {
+    if (!plan.device) return nullptr;
+    gpu::DeviceInfo device;
+    device.name = plan.device_name;
+    device.bc_textures = plan.bc_textures;
+    device.type = plan.cpu_device ? VK_PHYSICAL_DEVICE_TYPE_CPU : VK_PHYSICAL_DEVICE_TYPE_OTHER;
+    gpu::TextureSettings settings;
+    if (!plan.cache_dir.empty()) settings.cache_dir = std::filesystem::path(plan.cache_dir);
+    settings.quality = plan.bc7_level;
+    settings.progress = progress;
+    settings.cancel = cancel;
+    PreparedTextures set = gpu::prepare_scene_textures(scene, device, settings);
+    return set && !set->cancelled ? set : nullptr;
 }
 
 void GpuViewport::setMissingTexturesChecker(bool checker) {
@@ -89,35 +105,35 @@ void GpuViewport::setMissingTexturesChecker(bool checker) {
     impl_->renderer->set_texture_settings(t);
 }
 
-TexturePreparer GpuViewport::texturePreparer() const {
-    return [device = impl_->context->info(), settings = impl_->renderer->texture_settings()](
-               const Scene& scene, const ProgressCallback& progress, const CancelToken* cancel) {
-        gpu::TextureSettings s = settings;
-        s.progress = progress;
-        s.cancel = cancel;
-        PreparedTextures set = gpu::prepare_scene_textures(scene, device, s);
-        return set && !set->cancelled ? set : nullptr;
-    };
+void GpuViewport::setScene(std::shared_ptr<const Scene> scene, PreparedTextures textures) {
+    if (scene != impl_->scene) impl_->culler.reset();
+    impl_->scene = std::move(scene);
+    impl_->prepared = std::move(textures);
+    upload();
 }
 
-void GpuViewport::setScene(const Scene* scene, PreparedTextures textures) {
-    if (scene != impl_->scene) {
-        impl_->culler.reset();
-    }
-    impl_->scene = scene;
-    if (!scene) {
-        impl_->prepared.reset();
+// The current scene to the GPU with the current stream policy.
+void GpuViewport::upload() {
+    if (!impl_->scene) {
         impl_->renderer->unload();
         return;
     }
-    // Kept (levels included) so that a stream-policy change can upload again.
-    if (!textures)
-        textures = gpu::prepare_scene_textures(*scene, impl_->context->info(),
-                                               impl_->renderer->texture_settings());
-    impl_->prepared = textures;
-    impl_->renderer->load(*scene, std::move(textures),
+    // No textures prepared (cancelled, no plan): an empty set, so that load() does
+    // not run the texture pipeline on this thread.
+    if (!impl_->prepared) impl_->prepared = std::make_shared<const tex::PreparedTextureSet>();
+    impl_->renderer->load(*impl_->scene, impl_->prepared,
                           impl_->all_streams ? gpu::StreamPolicy::AllPresent
                                              : gpu::StreamPolicy::UsedByMaterials);
+}
+
+void GpuViewport::useStreamsFor(const ViewportFrame& frame) {
+    gpu::RenderSettings settings;
+    settings.view = static_cast<gpu::DebugView>(frame.view);
+    settings.overlays = frame.overlays;
+    const bool all = gpu::needs_all_streams(settings);
+    if (all == impl_->all_streams) return;
+    impl_->all_streams = all;
+    upload();
 }
 
 QStringList GpuViewport::validationMessages() const {
@@ -133,15 +149,34 @@ PreparedTextures GpuViewport::preparedTextures() const {
 }
 
 const Scene* GpuViewport::scene() const {
-    return impl_->scene;
+    return impl_->scene.get();
+}
+
+QStringList GpuViewport::lastPassTimes() const {
+    QStringList out;
+    if (!impl_->presenter) return out;
+    for (const gpu::PassTiming& p : impl_->completed.passes)
+        out << QStringLiteral("%1 %2 ms").arg(QString::fromStdString(p.name)).arg(p.ms, 0, 'f', 1);
+    return out;
+}
+
+void GpuViewport::finish() {
+    impl_->context->wait_idle();
+}
+
+double GpuViewport::lastGpuMs() const {
+    if (!impl_->presenter) return -1.0;
+    const gpu::FrameStats& s = impl_->completed;
+    return s.passes.empty() ? -1.0 : s.gpu_ms;
 }
 
 void GpuViewport::releaseSurface() {
     impl_->presenter.reset();
+    impl_->completed = {};
     impl_->surface = 0;
 }
 
-bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame) {
+bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame, float scale) {
     if (!surface || frame.width == 0 || frame.height == 0) return false;
     gpu::RenderSettings settings;
     settings.width = frame.width;
@@ -156,17 +191,20 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame) {
     settings.cull = frame.gpuCulling ? gpu::CullPath::Gpu : gpu::CullPath::Cpu;
     settings.cull_method = frame.cullMethod;
     if (frame.frozenCulling) settings.freeze_cull = gpu::explicit_camera(*frame.frozenCulling);
-    // Views of streams the materials do not read need every stream on the GPU.
-    const bool all = gpu::needs_all_streams(settings);
-    if (all != impl_->all_streams) {
-        impl_->all_streams = all;
-        if (impl_->scene) setScene(impl_->scene, impl_->prepared);
-    }
+    // A reduced frame means a slow device while the camera moves: the shadow cascades
+    // follow the camera and cost the same at any resolution (DamagedHelmet on lavapipe:
+    // 165 of 245 ms), so moving frames go without them; the still frame has them.
+    if (scale < 1.0f) settings.shadows = false;
     if (!impl_->presenter || impl_->surface != surface) {
         impl_->presenter.reset();
+        // Not FIFO: the render thread must not block on the display's refresh, and
+        // Mesa's X11 path then puts the image to the server within the present call,
+        // so a screenshot taken after it sees this frame, not an earlier one.
+        gpu::PresenterOptions options;
+        options.vsync = false;
         impl_->presenter = std::make_unique<gpu::Presenter>(
             *impl_->context, impl_->renderer->resources(), reinterpret_cast<VkSurfaceKHR>(surface),
-            frame.width, frame.height);
+            frame.width, frame.height, options);
         impl_->surface = surface;
         impl_->width = frame.width;
         impl_->height = frame.height;
@@ -175,8 +213,9 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame) {
         impl_->width = frame.width;
         impl_->height = frame.height;
     }
-    gpu::PresentedFrame presented(*impl_->renderer, settings);
+    gpu::PresentedFrame presented(*impl_->renderer, settings, scale);
     const bool shown = impl_->presenter->present_frame(presented);
+    impl_->completed = presented.completed_stats();
     impl_->renderer->resources().collect_garbage();
     return shown;
 }
@@ -219,7 +258,7 @@ namespace sherpa::editor {
 
 bool GpuViewport::checkGpuCulling(const Frustum& frustum, CullMethod method,
                                   const std::vector<std::uint8_t>& cpu_visible, GpuCullCheck& out) {
-    const Scene* scene = impl_->scene;
+    const Scene* scene = impl_->scene.get();
     if (!scene || scene->instances.empty()) return false;
     if (!impl_->culler || &impl_->culler->scene() != scene)
         impl_->culler = std::make_unique<gpu::GpuCullChecker>(*impl_->context,

@@ -37,6 +37,12 @@ struct ViewportFrame {
     std::optional<CameraSpec> frozenCulling; // cull from this camera instead
 };
 
+// Prepares a scene's textures as `plan` says (the texture pipeline: cache, BC7/BC5,
+// CPU decode for CPU devices); CPU work only, for the loader thread. Null when
+// cancelled or without a device in the plan.
+PreparedTextures prepareTextures(const TexturePlan& plan, const Scene& scene,
+                                 const ProgressCallback& progress, const CancelToken* cancel);
+
 class GpuViewport {
 public:
     // Sets API version, extensions (and validation layer when on) that the engine
@@ -47,27 +53,32 @@ public:
     ~GpuViewport();
 
     QString deviceName() const;
-    // Where setScene() finds and stores compressed textures, and the BC7 quality
-    // ("fast", "balanced" or "best", as in the settings); an empty directory: no cache.
-    void setTextureCache(const QString& directory, const QString& quality);
+    // The device's side of the loader's texture plan (its capabilities); the caller
+    // adds the cache settings. Plain data; prepareTextures() runs it on any thread.
+    TexturePlan texturePlan() const;
     // Material slots whose texture is missing or undecodable: a magenta/black checker
     // in colour slots (true), or the glTF defaults (false). Applies at the next setScene().
     void setMissingTexturesChecker(bool checker);
-    // Prepares a scene's textures for this device with the texture cache settings
-    // of the moment; the callable copies what it needs and may run on any thread
-    // (the scene loader's), reporting per texture and stopping when cancelled.
-    TexturePreparer texturePreparer() const;
-    // Uploads the scene (replacing the previous one; null unloads) with textures
-    // prepared for it, or, without them, prepares them on this thread first.
-    void setScene(const Scene* scene, PreparedTextures textures = nullptr);
+    // Uploads the scene (replacing the previous one; null unloads) with the textures
+    // the loader prepared for it (none: uploaded without textures). The viewport keeps
+    // `scene` alive while it is on the GPU.
+    void setScene(std::shared_ptr<const Scene> scene, PreparedTextures textures);
+    // The streams the view and overlays of `frame` read: a debug view of streams no
+    // material reads uploads the scene again with every stream (when the view changes,
+    // never per frame).
+    void useStreamsFor(const ViewportFrame& frame);
     // The uploaded scene's prepared textures: cache state, hash, format, bytes,
     // timings and PSNR per texture (null without a scene).
     PreparedTextures preparedTextures() const;
-    // The scene last uploaded (compare only: it may be gone once replaced).
+    // The scene last uploaded.
     const Scene* scene() const;
     // Presents one frame on `surface` (the swapchain is created on first use and
-    // recreated when the size changes). False when the frame was skipped.
-    bool present(std::uint64_t surface, const ViewportFrame& frame);
+    // recreated when the size changes), each side drawn at `scale` of the frame's
+    // size and scaled up, without shadows (interaction on slow devices). False when
+    // it was skipped.
+    bool present(std::uint64_t surface, const ViewportFrame& frame, float scale = 1.0f);
+    // Waits until the queue is idle (the presented frame is on screen).
+    void finish();
     // Drops the swapchain (before the window's surface goes away).
     void releaseSurface();
     // The material record as stored in the GPU buffer, and bindless slot -> texture.
@@ -76,7 +87,12 @@ public:
     std::int64_t objectCount() const;
     // Bytes of the loaded scene's textures on the GPU (0 without a scene).
     std::uint64_t textureBytes() const;
-    double lastGpuMs() const { return last_gpu_ms_; }
+    // GPU time (timestamps, first to last pass) of the latest completed frame; -1
+    // before one completed or without timestamps.
+    double lastGpuMs() const;
+    // The same frame pass by pass: "NAME MS ms" each, in frame order.
+    QStringList lastPassTimes() const;
+    static constexpr std::size_t kFramesInFlight = 2; // gpu::Renderer::kFramesInFlight
     // The last presented frame's culling passes from the renderer's history (camera,
     // then each cascade); false before any culled frame. `cached_shadows`: the cascades were
     // reused, not drawn.
@@ -101,8 +117,8 @@ public:
 private:
     struct Impl;
     explicit GpuViewport(std::unique_ptr<Impl> impl);
+    void upload();
     std::unique_ptr<Impl> impl_;
-    double last_gpu_ms_ = 0.0;
 };
 
 } // namespace sherpa::editor

@@ -24,12 +24,24 @@ std::unique_ptr<GpuViewport> GpuViewport::create(QVulkanInstance&, QString& erro
 QString GpuViewport::deviceName() const {
     return {};
 }
-void GpuViewport::setTextureCache(const QString&, const QString&) {}
-void GpuViewport::setMissingTexturesChecker(bool) {}
-TexturePreparer GpuViewport::texturePreparer() const {
+TexturePlan GpuViewport::texturePlan() const {
     return {};
 }
-void GpuViewport::setScene(const Scene*, PreparedTextures) {}
+PreparedTextures prepareTextures(const TexturePlan&, const Scene&, const ProgressCallback&,
+                                 const CancelToken*) {
+    return nullptr;
+}
+void GpuViewport::setMissingTexturesChecker(bool) {}
+void GpuViewport::setScene(std::shared_ptr<const Scene>, PreparedTextures) {}
+void GpuViewport::useStreamsFor(const ViewportFrame&) {}
+void GpuViewport::upload() {}
+void GpuViewport::finish() {}
+QStringList GpuViewport::lastPassTimes() const {
+    return {};
+}
+double GpuViewport::lastGpuMs() const {
+    return -1.0;
+}
 const Scene* GpuViewport::scene() const {
     return nullptr;
 }
@@ -43,7 +55,7 @@ bool GpuViewport::checkGpuCulling(const Frustum&, CullMethod, const std::vector<
 bool GpuViewport::lastCullPasses(std::vector<CullStats>&, bool&) const {
     return false;
 }
-bool GpuViewport::present(std::uint64_t, const ViewportFrame&) {
+bool GpuViewport::present(std::uint64_t, const ViewportFrame&, float) {
     return false;
 }
 void GpuViewport::releaseSurface() {}

@@ -26,6 +26,7 @@
 #include "material_dock.h"
 #include "mesh_dock.h"
 #include "picking.h"
+#include "render_thread.h"
 #include "scene_tree_dock.h"
 #include "texture_dock.h"
 #include "view_catalog.h"
@@ -39,9 +40,6 @@ namespace {
 constexpr int kLeftDockWidth = 330;
 constexpr int kRightDockWidth = 300;
 constexpr int kDockMinWidth = 160;
-// More than the renderer's frames in flight: the first frame's culling counts are
-// read back by then.
-constexpr int kPassReadbackFrames = 4;
 
 bool is_scene_file(const QString& path) {
     const QString suffix = QFileInfo(path).suffix().toLower();
@@ -70,20 +68,20 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent)
     cancel_ = new QPushButton(this);
     cancel_->hide();
     frame_label_ = new QLabel(this);
+    frame_label_->setObjectName(QStringLiteral("frameLabel"));
     scene_label_ = new QLabel(this);
     statusBar()->addWidget(scene_label_, 1);
     statusBar()->addPermanentWidget(progress_);
     statusBar()->addPermanentWidget(cancel_);
     statusBar()->addPermanentWidget(frame_label_);
 
+    last_report_ = std::make_unique<FrameReport>();
     createDocks();
-    // After the constructor returns, so that the window shows first. A scene opened
-    // before then (command line) makes the device itself: its textures are prepared
-    // on the loader thread, for that device.
-    QTimer::singleShot(0, this, &MainWindow::createRenderer);
     createActions();
     createMenus();
     connectActions();
+    // Now, not later: the first scene's textures are prepared for this device.
+    createRenderer();
 
     resize(1600, 1000);
     restoreGeometry(settings_.geometry());
@@ -101,107 +99,7 @@ MainWindow::~MainWindow() {
     // The swapchain must go before the window's surface does; the viewport's signals
     // would reach this half-destroyed window while QWidget closes it.
     viewport_->disconnect(this);
-    gpu_.reset();
-}
-
-void MainWindow::createRenderer() {
-    if (gpu_ || gpu_failed_) return; // made already (a scene opened before the timer ran)
-    if (!vulkan_) {
-        log_->append(LogDock::Level::Error, tr("No Vulkan instance: the viewport cannot render."));
-        return;
-    }
-    QElapsedTimer clock;
-    clock.start();
-    QString error;
-    gpu_ = GpuViewport::create(*vulkan_, error);
-    if (!gpu_) {
-        log_->append(LogDock::Level::Error, tr("The renderer could not start: %1").arg(error));
-        return;
-    }
-    log_->append(LogDock::Level::Info,
-                 tr("Rendering on %1 (renderer ready in %2 ms).")
-                     .arg(gpu_->deviceName())
-                     .arg(static_cast<double>(clock.nsecsElapsed()) / 1e6, 0, 'f', 1));
-    viewport_->setFrameCallback([this] { return renderFrame(); });
-    // The swapchain must go before its surface (closing the window destroys it).
-    connect(viewport_, &ViewportWindow::surfaceAboutToBeDestroyed, this, [this] {
-        if (gpu_) gpu_->releaseSurface();
-    });
-    material_->setReadback([this](int material) { return gpu_->readMaterial(material); });
-    gpuObjectCount = [this] { return gpu_->objectCount(); };
-    gpuValidationMessages = [this] { return gpu_->validationMessages(); };
-    culling_->setGpuCheck([this](const Frustum& frustum, CullMethod method,
-                                 const std::vector<std::uint8_t>& cpu_visible, CullSample& out) {
-        // The monitor hears of a new scene before the renderer has uploaded it.
-        if (gpu_->scene() != context_.scene()) return false;
-        GpuViewport::GpuCullCheck check;
-        try {
-            if (!gpu_->checkGpuCulling(frustum, method, cpu_visible, check)) return false;
-        } catch (const std::exception& e) {
-            log_->append(LogDock::Level::Error,
-                         tr("GPU culling failed: %1").arg(QString::fromUtf8(e.what())));
-            return false;
-        }
-        out.gpu_ms = check.gpu_ms;
-        out.gpu_visible = static_cast<std::int64_t>(check.visible);
-        out.cpu_gpu_differences = static_cast<std::int64_t>(check.differences);
-        return true;
-    });
-    connect(&context_, &EditorContext::sceneChanged, this, &MainWindow::uploadScene);
-    if (context_.scene()) uploadScene(); // a scene that arrived before the renderer
-    Q_EMIT rendererReady();
-}
-
-void MainWindow::uploadScene() {
-    try {
-        gpu_->setTextureCache(settings_.cacheDirectory(), settings_.textureQuality());
-        gpu_->setMissingTexturesChecker(a_->missing_checker->isChecked());
-        const SceneExtras* extras = context_.extras();
-        gpu_->setScene(context_.scene(), extras ? extras->textures : nullptr);
-        pass_frames_left_ = kPassReadbackFrames;
-        textures_->setPrepared(gpu_->preparedTextures());
-        logTextureMessages();
-        textures_->setGpuBytes(static_cast<std::int64_t>(gpu_->textureBytes()));
-    } catch (const std::exception& e) {
-        log_->append(LogDock::Level::Error,
-                     tr("GPU upload failed: %1").arg(QString::fromUtf8(e.what())));
-    }
-    viewport_->scheduleFrame();
-}
-
-bool MainWindow::renderFrame() {
-    if (!gpu_ || gpu_failed_) return false;
-    ViewportFrame frame;
-    const QSize pixels = viewport_->pixelSize();
-    frame.width = static_cast<std::uint32_t>(pixels.width());
-    frame.height = static_cast<std::uint32_t>(pixels.height());
-    frame.camera = viewport_->camera().spec();
-    frame.view = view_;
-    frame.overlays = overlays_;
-    frame.checkerDensity = static_cast<float>(settings_.checkerDensity());
-    if (a_->box_colouring->isChecked()) frame.overlays |= ViewCatalog::cullBoxesOverlay();
-    frame.gpuCulling = a_->gpu_path->isChecked();
-    frame.cullMethod = culling_->method();
-    if (culling_->frozen()) frame.frozenCulling = culling_->cullingCamera();
-    const Selection& sel = context_.selection();
-    if (const int instance = selectedInstance(); instance >= 0) {
-        frame.highlightInstance = static_cast<std::uint32_t>(instance);
-        if (sel.triangle >= 0) frame.highlightTriangle = static_cast<std::uint32_t>(sel.triangle);
-        if (sel.vertex >= 0) frame.highlightVertex = static_cast<std::uint32_t>(sel.vertex);
-    }
-    last_frame_ = frame;
-    try {
-        const bool shown = gpu_->present(viewport_->vulkanSurface(), frame);
-        // Skipped because the swapchain was out of date and has just been recreated:
-        // draw again at the new size, or the last size change would never show.
-        if (!shown) viewport_->scheduleFrame();
-        return shown;
-    } catch (const std::exception& e) {
-        gpu_failed_ = true;
-        log_->append(LogDock::Level::Error,
-                     tr("Rendering stopped: %1").arg(QString::fromUtf8(e.what())));
-        return false;
-    }
+    render_.reset(); // finishes the frame in flight, frees the engine on its thread
 }
 
 void MainWindow::createDocks() {
@@ -297,24 +195,6 @@ void MainWindow::connectActions() {
         onCameraChanged();
     });
     connect(viewport_, &ViewportWindow::frameSelectionRequested, this, &MainWindow::frameSelection);
-    connect(viewport_, &ViewportWindow::frameRendered, this, [this](double ms) {
-        frame_label_->setText(tr("frame %1 ms").arg(ms, 0, 'f', 2));
-        std::vector<CullStats> passes;
-        bool cached_shadows = false;
-        if (gpu_ && gpu_->lastCullPasses(passes, cached_shadows))
-            culling_dock_->setRendererPasses(std::move(passes), cached_shadows);
-        else if (context_.scene() && pass_frames_left_ > 0) {
-            // The renderer reads a frame's culling counts back when it reuses that
-            // frame's slot: draw the few frames that takes now, or the pass table
-            // says "no frame yet" until the camera first moves.
-            --pass_frames_left_;
-            viewport_->scheduleFrame();
-        }
-        if (!first_frame_seen_ && context_.scene()) { // a frame that shows the scene
-            first_frame_seen_ = true;
-            Q_EMIT firstFrame();
-        }
-    });
     connect(&context_, &EditorContext::selectionChanged, viewport_, &ViewportWindow::scheduleFrame);
     connect(&context_, &EditorContext::visibilityChanged, viewport_,
             &ViewportWindow::scheduleFrame);
@@ -330,7 +210,7 @@ bool MainWindow::setDebugView(const QString& name, bool remember) {
     view_ = *id;
     if (remember) settings_.setLastView(name);
     retranslate(); // checks the matching menu entry
-    viewport_->scheduleFrame();
+    updateStreams();
     return true;
 }
 
@@ -364,9 +244,18 @@ void MainWindow::updateStatus() {
 QImage MainWindow::screenshot() {
     // Widgets paint into the pixmap; the native viewport does not, so its frame is
     // composited from the renderer's readback when there is one.
+    const bool drawn = render_ && !gpu_failed_ && viewport_->isExposed();
+    if (drawn) {
+        // Drawn now at full size (not a reduced or earlier frame), and on screen.
+        last_frame_ = currentFrame();
+        render_->renderAndWait(last_frame_, viewport_->vulkanSurface());
+        // What the render thread posted back (texture bytes, frame times, passes) shows
+        // too, and the columns refitted for it (a zero-time timer each: a few rounds).
+        for (int round = 0; round < 3; ++round)
+            QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
+    }
     QImage image = grab().toImage();
-    if (gpu_ && viewport_->isExposed()) {
-        viewport_->renderNow(); // not a frame of an earlier size or camera
+    if (drawn) {
         // The X server holds the presented frame: read it back like any window.
         const QPixmap frame = viewport_->screen()->grabWindow(viewport_->winId());
         QPainter painter(&image);

@@ -5,11 +5,10 @@
 #include <QMainWindow>
 #include <QPointer>
 
-#include <functional>
-
 #include "editor_context.h"
 #include "editor_settings.h"
 #include "gpu_viewport.h"
+#include "resolution_scale.h"
 #include "scene_load_job.h"
 #include "translations.h"
 
@@ -24,8 +23,9 @@ class QVulkanInstance;
 namespace sherpa::editor {
 
 class CullingDock;
-class GpuViewport;
 class CullingMonitor;
+class RenderThread;
+struct FrameReport;
 class LogDock;
 class MaterialDock;
 class MeshDock;
@@ -81,21 +81,22 @@ public:
     // The scene instance the viewport highlights (selected primitive placed by the
     // selected node), or -1.
     int selectedInstance() const;
-    // The settings of the last frame handed to the renderer (tests).
+    // The settings of the last frame handed to the renderer.
     const ViewportFrame& lastFrame() const { return last_frame_; }
-    // The progress bar's text as last shown during a load (tests).
+    // The serial of the last frame request (FrameReport::request of its frame).
+    std::uint64_t lastRequest() const { return last_request_; }
+    // The last frame the render thread drew (size, scale, timings).
+    const FrameReport& lastReport() const { return *last_report_; }
+    // The progress bar's text as last shown during a load.
     const QString& lastProgressText() const { return last_progress_; }
-    // Test hook: the number of GPU objects the renderer holds (-1 without renderer).
-    std::function<std::int64_t()> gpuObjectCount;
-    // Test hook: the validation layer's messages so far (empty without renderer).
-    std::function<QStringList()> gpuValidationMessages;
+    // The thread that owns the engine and draws; null without a usable Vulkan device.
+    RenderThread* renderer() const { return render_.get(); }
 
 Q_SIGNALS:
     void sceneLoaded(const QString& spec, double ms);
     void loadFailed(const QString& spec, const QString& error);
     void loadCanceled(const QString& spec);
-    void firstFrame();    // the first frame drawn with a scene loaded
-    void rendererReady(); // the GPU viewport exists (shortly after construction)
+    void firstFrame(); // the first frame drawn with a scene loaded
 
 protected:
     void closeEvent(QCloseEvent* e) override;
@@ -117,7 +118,13 @@ private:
     void uploadScene();
     // The uploaded textures' warnings (missing, undecodable...) and notices, once per set.
     void logTextureMessages();
-    bool renderFrame();
+    // What the viewport should show now (size, camera, view, selection...).
+    ViewportFrame currentFrame() const;
+    void renderFrame();
+    void onFrameDone(const FrameReport& report);
+    // The view's streams on the GPU (a re-upload when a view needs more), before
+    // the next frame.
+    void updateStreams();
     void connectActions();
     void onLoaded(const QString& spec, const LoadOutcome& outcome, double ms);
     void onLoadFailed(const QString& spec, const QString& error);
@@ -133,9 +140,14 @@ private:
     SceneLoadJob loader_;
     CullingMonitor* culling_ = nullptr;
     QVulkanInstance* vulkan_ = nullptr;
-    std::unique_ptr<GpuViewport> gpu_; // null without a usable Vulkan device
-    bool gpu_failed_ = false;          // a frame threw: stop drawing, say so once
+    std::unique_ptr<RenderThread> render_; // null without a usable Vulkan device
+    TexturePlan device_plan_;              // the device's side of the loader's texture plan
+    bool gpu_failed_ = false;              // a frame threw: stop drawing, say so once
+    PreparedTextures prepared_;            // of the scene on screen (texture dock, cache)
     std::weak_ptr<const tex::PreparedTextureSet> logged_textures_; // logTextureMessages()
+    std::unique_ptr<FrameReport> last_report_;
+    std::uint64_t last_request_ = 0;
+    FrameTimes frame_times_;
     ViewportWindow* viewport_ = nullptr;
     QWidget* viewport_container_ = nullptr;
     SceneTreeDock* scene_tree_ = nullptr;

@@ -11,6 +11,8 @@
 #include <QStatusBar>
 #include <QTimer>
 
+#include <sherpa/texture/quality_levels.h>
+
 #include "culling_dock.h"
 #include "culling_monitor.h"
 #include "gpu_viewport.h"
@@ -25,13 +27,15 @@ namespace sherpa::editor {
 
 void MainWindow::openScene(const QString& spec) {
     log_->append(LogDock::Level::Info, tr("Loading %1…").arg(spec));
-    // The first scene too prepares its textures on the loader thread: that needs the device.
-    if (vulkan_) createRenderer(); // returns at once when made already
-    if (gpu_) { // textures are prepared on the loader thread, for this device and settings
-        gpu_->setTextureCache(settings_.cacheDirectory(), settings_.textureQuality());
-        loader_.setTexturePreparer(gpu_->texturePreparer());
-    }
-    loader_.start(spec);
+    // Textures are prepared on the loader thread for this device, with the cache
+    // settings of this moment.
+    TexturePlan plan = device_plan_;
+    plan.cache_dir = settings_.cacheDirectory().toStdString();
+    const QString quality = settings_.textureQuality();
+    plan.bc7_level = quality == QLatin1String("fast")   ? tex::kBc7MinLevel
+                     : quality == QLatin1String("best") ? tex::kBc7MaxLevel
+                                                        : tex::kBc7DefaultLevel;
+    loader_.start(spec, plan);
 }
 
 void MainWindow::reloadScene() {

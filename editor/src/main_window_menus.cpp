@@ -4,6 +4,7 @@
 #include "main_window_actions.h"
 
 #include <QAbstractItemModel>
+#include <QAbstractProxyModel>
 #include <QActionGroup>
 #include <QApplication>
 #include <QDesktopServices>
@@ -91,7 +92,7 @@ void MainWindow::createActions() {
         const std::uint32_t bit = o.id;
         connect(act, &QAction::toggled, this, [this, bit](bool on) {
             overlays_ = on ? overlays_ | bit : overlays_ & ~bit;
-            viewport_->scheduleFrame();
+            updateStreams(); // an overlay may read streams no material does
         });
         a.overlay_actions.push_back(act);
     }
@@ -148,10 +149,10 @@ void MainWindow::createActions() {
     connect(a.frame_selection, &QAction::triggered, this, &MainWindow::frameSelection);
     connect(a.fly, &QAction::toggled, viewport_, &ViewportWindow::setFlyMode);
     connect(a.freeze, &QAction::toggled, culling_, &CullingMonitor::setFrozen);
-    connect(a.box_colouring, &QAction::toggled, viewport_, &ViewportWindow::scheduleFrame);
+    connect(a.box_colouring, &QAction::toggled, this, &MainWindow::updateStreams);
     // Materials resolve failed textures at upload: upload again (uploadScene reads it).
     connect(a.missing_checker, &QAction::toggled, this, [this] {
-        if (gpu_) uploadScene();
+        if (render_) uploadScene();
     });
     connect(a.gpu_path, &QAction::toggled, culling_, &CullingMonitor::setGpuPath);
     connect(culling_, &CullingMonitor::updated, viewport_, &ViewportWindow::scheduleFrame);
@@ -330,10 +331,15 @@ void MainWindow::retranslate() {
     textures_->retranslate();
     culling_dock_->retranslate();
     log_->retranslate();
-    // Models read tr() in headerData/data: tell the views to ask again.
+    // Models read tr() in headerData/data: tell the views to ask again. Source models
+    // only, each change announced first: a proxy forwards its source's signals, and a
+    // bare layoutChanged() on it left its persistent indices dangling (a crash when a
+    // view was chosen with a scene tree item selected).
     for (QAbstractItemModel* m : findChildren<QAbstractItemModel*>()) {
+        if (qobject_cast<QAbstractProxyModel*>(m)) continue;
         if (m->columnCount() > 0)
             Q_EMIT m->headerDataChanged(Qt::Horizontal, 0, m->columnCount() - 1);
+        Q_EMIT m->layoutAboutToBeChanged();
         Q_EMIT m->layoutChanged();
     }
     updateStatus();
@@ -362,8 +368,8 @@ void MainWindow::openFileDialog() {
 
 void MainWindow::showAbout() {
     QString device = tr("none (Vulkan unavailable)");
-    if (gpu_) {
-        device = gpu_->deviceName();
+    if (render_) {
+        device = QString::fromStdString(device_plan_.device_name);
     } else if (vulkan_ && vulkan_->isValid()) {
         // Every physical device the instance sees (the engine picks lavapipe first).
         const QStringList names = GpuViewport::deviceNames(vulkan_->vkInstance());

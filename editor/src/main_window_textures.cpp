@@ -27,7 +27,7 @@ int MainWindow::clearTextureCache() {
 }
 
 void MainWindow::recompressTexture(int texture) {
-    const PreparedTextures prepared = gpu_ ? gpu_->preparedTextures() : nullptr;
+    const PreparedTextures prepared = prepared_;
     if (!prepared || texture < 0) return;
     int removed = 0;
     for (const tex::PreparedTexture& t : prepared->textures)
@@ -42,7 +42,7 @@ void MainWindow::recompressTexture(int texture) {
 }
 
 void MainWindow::logTextureMessages() {
-    const PreparedTextures prepared = gpu_ ? gpu_->preparedTextures() : nullptr;
+    const PreparedTextures prepared = prepared_;
     // uploadScene() runs again for the same set (settings toggles): say it once.
     if (!prepared || prepared == logged_textures_.lock()) return;
     logged_textures_ = prepared;

@@ -56,24 +56,33 @@ void MaterialDock::showMaterial() {
     }
     const MaterialInstance& m = scene->materials[static_cast<std::size_t>(material)];
     const QString name = m.name.empty() ? tr("(unnamed)") : QString::fromStdString(m.name);
-    std::optional<GpuMaterialReadback> gpu = readback_ ? readback_(material) : std::nullopt;
-    if (gpu) {
-        model_->setMaterial(context_.sharedScene(), context_.sharedExtras(), material, gpu->record,
-                            MaterialFieldsModel::Source::GpuReadback,
-                            std::move(gpu->bindless_to_texture));
-        header_->setText(tr("Material %1 %2: 80-byte std430 record read back from the GPU "
-                            "material buffer at offset %3.")
-                             .arg(material)
-                             .arg(name)
-                             .arg(material * 80));
-    } else {
-        model_->setMaterial(context_.sharedScene(), context_.sharedExtras(), material,
-                            to_gpu_material(m), MaterialFieldsModel::Source::Cpu);
-        header_->setText(tr("Material %1 %2: the importer's CPU record (no renderer attached, so "
-                            "texture fields hold glTF texture indices, not bindless slots).")
-                             .arg(material)
-                             .arg(name));
-    }
+    model_->setMaterial(context_.sharedScene(), context_.sharedExtras(), material,
+                        to_gpu_material(m), MaterialFieldsModel::Source::Cpu);
+    header_->setText(tr("Material %1 %2: the importer's CPU record (no renderer attached, so "
+                        "texture fields hold glTF texture indices, not bindless slots).")
+                         .arg(material)
+                         .arg(name));
+    // The GPU record replaces it when the render thread has read it back.
+    if (readback_)
+        readback_(material, [this, material,
+                             scene = context_.scene()](std::optional<GpuMaterialReadback> gpu) {
+            if (context_.scene() == scene && context_.selection().material == material)
+                showReadback(material, std::move(gpu));
+        });
+}
+
+void MaterialDock::showReadback(int material, std::optional<GpuMaterialReadback> gpu) {
+    if (!gpu) return;
+    const MaterialInstance& m = context_.scene()->materials[static_cast<std::size_t>(material)];
+    const QString name = m.name.empty() ? tr("(unnamed)") : QString::fromStdString(m.name);
+    model_->setMaterial(context_.sharedScene(), context_.sharedExtras(), material, gpu->record,
+                        MaterialFieldsModel::Source::GpuReadback,
+                        std::move(gpu->bindless_to_texture));
+    header_->setText(tr("Material %1 %2: 80-byte std430 record read back from the GPU "
+                        "material buffer at offset %3.")
+                         .arg(material)
+                         .arg(name)
+                         .arg(material * 80));
 }
 
 } // namespace sherpa::editor

@@ -24,7 +24,10 @@ struct GpuMaterialReadback {
     GPUMaterialData record{};
     std::vector<int> bindless_to_texture;
 };
-using MaterialReadback = std::function<std::optional<GpuMaterialReadback>(int material)>;
+// Asks for material `material`'s record; `done` is called later on the GUI thread
+// (nothing when there is no renderer or scene).
+using MaterialReadbackDone = std::function<void(std::optional<GpuMaterialReadback>)>;
+using MaterialReadback = std::function<void(int material, MaterialReadbackDone done)>;
 
 class MaterialDock : public QDockWidget {
     Q_OBJECT
@@ -39,6 +42,7 @@ Q_SIGNALS:
 
 private:
     void showMaterial();
+    void showReadback(int material, std::optional<GpuMaterialReadback> gpu);
 
     const EditorContext& context_;
     MaterialFieldsModel* model_;

@@ -1,5 +1,7 @@
 #include "scene_load_job.h"
 
+#include "gpu_viewport.h"
+
 #include <QBuffer>
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -101,8 +103,7 @@ QImage prepared_thumbnail(const tex::PreparedTextureSet* set, std::int32_t t, QS
     return {};
 }
 
-LoadOutcome run_load(const QString& spec, const TexturePreparer& preparer,
-                     SceneLoadJob::State* state);
+LoadOutcome run_load(const QString& spec, const TexturePlan& plan, SceneLoadJob::State* state);
 
 } // namespace
 
@@ -120,7 +121,7 @@ int SceneLoadJob::workersInFlight() {
     return g_in_flight.load();
 }
 
-void SceneLoadJob::start(const QString& spec) {
+void SceneLoadJob::start(const QString& spec, const TexturePlan& plan) {
     cancel();
     spec_ = spec;
     state_ = std::make_shared<State>();
@@ -140,8 +141,8 @@ void SceneLoadJob::start(const QString& spec) {
         });
     };
     ++g_in_flight;
-    watcher_->setFuture(QtConcurrent::run([spec, state, preparer = preparer_] {
-        LoadOutcome out = run_load(spec, preparer, state.get());
+    watcher_->setFuture(QtConcurrent::run([spec, state, plan] {
+        LoadOutcome out = run_load(spec, plan, state.get());
         --g_in_flight;
         return out;
     }));
@@ -176,16 +177,15 @@ void SceneLoadJob::onFinished() {
         Q_EMIT failed(spec_, outcome.error);
 }
 
-LoadOutcome SceneLoadJob::loadNow(const QString& spec, const TexturePreparer& preparer) {
+LoadOutcome SceneLoadJob::loadNow(const QString& spec, const TexturePlan& plan) {
     State state;
     state.clock.start();
-    return run_load(spec, preparer, &state);
+    return run_load(spec, plan, &state);
 }
 
 namespace {
 
-LoadOutcome run_load(const QString& spec, const TexturePreparer& preparer,
-                     SceneLoadJob::State* state) {
+LoadOutcome run_load(const QString& spec, const TexturePlan& plan, SceneLoadJob::State* state) {
     LoadOutcome out;
     QElapsedTimer clock;
     clock.start();
@@ -209,10 +209,10 @@ LoadOutcome run_load(const QString& spec, const TexturePreparer& preparer,
     // GPU textures first (texture cache, BC7/BC5), counted per prepared texture: the
     // thumbnails then come from their small mip levels instead of decoding sources.
     clock.restart();
-    if (preparer && !state->cancel.cancelled()) {
+    if (plan.device && !state->cancel.cancelled()) {
         state->report(LoadStep::Textures, 0, 1);
-        extras->textures = preparer(
-            scene,
+        extras->textures = prepareTextures(
+            plan, scene,
             [state](std::size_t done, std::size_t total) {
                 state->report(LoadStep::Textures, done, total);
             },

@@ -33,11 +33,9 @@ public:
     explicit SceneLoadJob(QObject* parent = nullptr);
     ~SceneLoadJob() override; // cancels and waits for a running load
 
-    // Loads started from now on also prepare their textures with `preparer` on
-    // the worker (progress per texture); null: they leave that to the viewport.
-    void setTexturePreparer(TexturePreparer preparer) { preparer_ = std::move(preparer); }
-    // Starts loading `spec`; a load already running is cancelled first.
-    void start(const QString& spec);
+    // Starts loading `spec`, its textures prepared on the worker as `plan` says
+    // (progress per texture); a load already running is cancelled first.
+    void start(const QString& spec, const TexturePlan& plan = {});
     void cancel();
     bool running() const { return state_ != nullptr; }
     const QString& spec() const { return spec_; }
@@ -45,7 +43,7 @@ public:
     static int workersInFlight();
 
     // Synchronous variant used by the command line's first scene and the tests.
-    static LoadOutcome loadNow(const QString& spec, const TexturePreparer& preparer = {});
+    static LoadOutcome loadNow(const QString& spec, const TexturePlan& plan = {});
 
     struct State; // progress and the cancel token, shared with the worker
 
@@ -62,7 +60,6 @@ private:
     QString spec_;
     std::shared_ptr<State> state_;
     QFutureWatcher<LoadOutcome>* watcher_ = nullptr;
-    TexturePreparer preparer_;
 };
 
 } // namespace sherpa::editor

@@ -28,16 +28,19 @@ public:
     // The surface for the engine's swapchain; VK_NULL_HANDLE until the window exists.
     quint64 vulkanSurface() const;
     QSize pixelSize() const { return size() * devicePixelRatio(); }
-    // Called for each paced frame while exposed; returns false if nothing was drawn.
-    void setFrameCallback(std::function<bool()> callback) { frame_ = std::move(callback); }
+    // Called for each paced frame while exposed: asks for a frame (drawn elsewhere,
+    // reported back with frameDrawn()).
+    void setFrameCallback(std::function<void()> callback) { frame_ = std::move(callback); }
     // Something visible changed: render once more (coalesced by Qt to the refresh rate).
     void scheduleFrame();
     double lastFrameMs() const { return last_frame_ms_; }
+    // A frame asked for has been presented, drawing took `ms`.
+    void frameDrawn(double ms);
     // Until the user moves the camera, a resize re-frames the scene (the first
     // scene is framed before the window has its final size).
     void setAutoFrame(bool on) { auto_frame_ = on; }
     std::uint64_t framesRendered() const { return frames_; }
-    // Draws a frame now (screenshots: the grab shows the current size and camera).
+    // Asks for a frame now, not at the next paced update.
     void renderNow();
 
 Q_SIGNALS:
@@ -65,7 +68,7 @@ private:
     void flyStep();
 
     OrbitCamera camera_;
-    std::function<bool()> frame_;
+    std::function<void()> frame_;
     QPointF press_pos_, last_pos_;
     Qt::MouseButtons buttons_;
     bool dragged_ = false;

@@ -13,6 +13,7 @@
 #include "material_fields_model.h"
 #include "orbit_camera.h"
 #include "picking.h"
+#include "resolution_scale.h"
 #include "scene_load_job.h"
 #include "scene_tree_model.h"
 #include "tangent_error.h"
@@ -88,6 +89,7 @@ private Q_SLOTS:
     void cullingMonitorFreezes();
     void selectionFollowsActions();
     void commandLineDocksAndCulling();
+    void resolutionScaleHoldsTheTargetRate();
 };
 
 void ModelTests::everyAssetMatchesTheEngine_data() {
@@ -377,6 +379,36 @@ void ModelTests::commandLineDocksAndCulling() {
     QVERIFY(
         !parse_command_line({app, QStringLiteral("--dock"), QStringLiteral("nope")}, cl, error));
     QVERIFY(error.contains(QStringLiteral("scene-tree")));
+}
+
+void ModelTests::resolutionScaleHoldsTheTargetRate() {
+    // Cost taken as proportional to the pixels: 4x the target at full size wants half
+    // of each side; at the target it stays; cheap frames go back up to full size.
+    QCOMPARE(next_resolution_scale(1.0f, 4.0 * kTargetFrameMs), 0.5f);
+    QCOMPARE(next_resolution_scale(0.5f, kTargetFrameMs), 0.5f);
+    QCOMPARE(next_resolution_scale(0.5f, kTargetFrameMs / 4.0), 1.0f);
+    QCOMPARE(next_resolution_scale(1.0f, kTargetFrameMs / 2.0), 1.0f);
+    // Clamped to the smallest scale however slow (the 100k grid: 2 s a frame).
+    QCOMPARE(next_resolution_scale(1.0f, 2000.0), kMinResolutionScale);
+    // Less than a step of change keeps the scale (no new image for jitter); steps are 1/16.
+    QCOMPARE(next_resolution_scale(0.5f, kTargetFrameMs * 1.1), 0.5f);
+    const float s = next_resolution_scale(1.0f, 2.0 * kTargetFrameMs);
+    QCOMPARE(s, 0.6875f); // sqrt(1/2) = 0.707, to the nearest 1/16
+    // Unmeasured: unchanged.
+    QCOMPARE(next_resolution_scale(0.75f, 0.0), 0.75f);
+
+    // The status bar's running frame time leaves out the first frame (pipelines).
+    FrameTimes times;
+    times.add(430.0);
+    QCOMPARE(times.count(), std::size_t{0});
+    QCOMPARE(times.meanMs(), 0.0);
+    times.add(20.0);
+    times.add(40.0);
+    QCOMPARE(times.meanMs(), 30.0);
+    QCOMPARE(times.fps(), 1000.0 / 30.0);
+    for (int i = 0; i < 100; ++i) times.add(10.0);
+    QCOMPARE(times.count(), FrameTimes::kWindow);
+    QCOMPARE(times.meanMs(), 10.0);
 }
 
 QTEST_MAIN(ModelTests)

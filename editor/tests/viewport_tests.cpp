@@ -16,6 +16,7 @@
 #include "main_window.h"
 #include "mesh_dock.h"
 #include "orbit_camera.h"
+#include "render_thread.h"
 #include "test_assets.h"
 #include "texture_dock.h"
 #include "texture_table_model.h"
@@ -101,23 +102,15 @@ private Q_SLOTS:
     void missingTextureIsNamedInTheDockAndLog();
 
 private:
-    bool hasGpu() const { return static_cast<bool>(window_->gpuObjectCount); }
+    bool hasGpu() const { return window_->renderer() != nullptr; }
     QVulkanInstance vulkan_;
     std::unique_ptr<MainWindow> window_;
     qsizetype seen_validation_ = 0;
 };
 
 void ViewportTests::initTestCase() {
-    QStandardPaths::setTestModeEnabled(true); // caches go to a test location
-    test::isolate_settings();                 // settings to this process's own
-    qputenv("SHERPA_VALIDATION", "1");        // before the instance: it enables the layer
-    GpuViewport::configureInstance(vulkan_);
-    vulkan_.create();
-    window_ = std::make_unique<MainWindow>(vulkan_.isValid() ? &vulkan_ : nullptr);
-    window_->setLanguage(QStringLiteral("en"));
-    window_->show();
-    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
-    QVERIFY(load(*window_, QStringLiteral("builtin:default")));
+    window_ = test::open_validated_window(vulkan_);
+    QVERIFY(window_);
     QCoreApplication::processEvents();
 }
 
@@ -199,6 +192,9 @@ void ViewportTests::cullingDockShowsTheRenderersPasses() {
     // builtin:default has a sun: the renderer culls the camera and each cascade.
     QVERIFY(load(*window_, QStringLiteral("builtin:default")));
     if (!hasGpu()) QSKIP("no Vulkan device: nothing is rendered");
+    // Full-size frames: moving frames drawn reduced on a slow device have no shadows.
+    window_->renderer()->setInteractiveScaling(false);
+    const auto restore = qScopeGuard([this] { window_->renderer()->setInteractiveScaling(true); });
     window_->viewport()->camera().orbit(30.0f, 0.0f); // the shadow cascades are redrawn
     Q_EMIT window_->viewport()->cameraChanged();
     // A frame's statistics are read when its frame slot comes round again.
@@ -328,7 +324,7 @@ void ViewportTests::cancelDropsTheLoadAndLeaksNothing() {
     // Per-frame buffers (overlay lines, culled ids) are made on first use, per frame
     // in flight: draw a few frames first.
     for (int f = 0; hasGpu() && f < 3; ++f) QVERIFY(nextFrame(*window_));
-    const std::int64_t objects = hasGpu() ? window_->gpuObjectCount() : -1;
+    const std::int64_t objects = hasGpu() ? test::gpu_objects(*window_) : -1;
     QSignalSpy loaded(window_.get(), &MainWindow::sceneLoaded);
     QSignalSpy canceled(window_.get(), &MainWindow::loadCanceled);
     std::uint64_t warm = 0;
@@ -351,7 +347,7 @@ void ViewportTests::cancelDropsTheLoadAndLeaksNothing() {
     QVERIFY(window_->lastProgressText().contains(QStringLiteral("/4")));
     if (objects >= 0) {
         for (int f = 0; f < 3; ++f) QVERIFY(nextFrame(*window_));
-        QCOMPARE(window_->gpuObjectCount(), objects);
+        QCOMPARE(test::gpu_objects(*window_), objects);
     }
     QVERIFY2(resident_kib() < warm + 32 * 1024, "cancelled loads leave memory behind");
     QVERIFY(load(*window_, QStringLiteral("builtin:grid?n=10"))); // and loading still works

@@ -4,11 +4,16 @@
 #include <QElapsedTimer>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QTest>
+#include <QVulkanInstance>
 #include <cstdint>
 #include <fstream>
 
 #include "main_window.h"
+#include "render_thread.h"
+#include "viewport_window.h"
 
 namespace sherpa::editor::test {
 
@@ -40,11 +45,40 @@ inline void isolate_settings() {
 // The validation layer's messages since the last call ("" when none); suites set
 // SHERPA_VALIDATION=1 before creating the Vulkan instance and fail on any.
 inline QString fresh_validation_messages(const MainWindow& w, qsizetype& seen) {
-    if (!w.gpuValidationMessages) return {};
-    const QStringList messages = w.gpuValidationMessages();
+    if (!w.renderer()) return {};
+    const QStringList messages =
+        w.renderer()->call([](GpuViewport& gpu) { return gpu.validationMessages(); });
     const QStringList fresh = messages.mid(seen);
     seen = messages.size();
     return fresh.join(QLatin1Char('\n'));
+}
+
+// The window the suites share: settings and caches of this process, the Khronos
+// validation layer on (the suites fail on any message), English, shown and exposed,
+// builtin:default loaded. Null when it did not come up.
+inline std::unique_ptr<MainWindow> open_validated_window(QVulkanInstance& vulkan) {
+    QStandardPaths::setTestModeEnabled(true); // caches go to a test location
+    isolate_settings();                       // settings to this process's own
+    qputenv("SHERPA_VALIDATION", "1");        // before the instance: it enables the layer
+    GpuViewport::configureInstance(vulkan);
+    vulkan.create(); // optional: without Vulkan the viewport stays empty
+    auto window = std::make_unique<MainWindow>(vulkan.isValid() ? &vulkan : nullptr);
+    window->setLanguage(QStringLiteral("en"));
+    window->show();
+    if (!QTest::qWaitForWindowExposed(window.get()) ||
+        !load(*window, QStringLiteral("builtin:default")))
+        return nullptr;
+    return window;
+}
+
+// GPU objects (buffers, images, samplers) the renderer holds; -1 without one. Frames
+// are drawn on another thread: `n` full-size frames are drawn first, so that every
+// frame slot holds its per-scene buffers whatever was drawn before.
+inline std::int64_t gpu_objects(MainWindow& w, int n = 3) {
+    if (!w.renderer()) return -1;
+    for (int i = 0; i < n; ++i)
+        w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
+    return w.renderer()->call([](GpuViewport& gpu) { return gpu.objectCount(); });
 }
 
 inline std::uint64_t resident_kib() {

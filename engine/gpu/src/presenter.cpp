@@ -106,7 +106,10 @@ void Presenter::create_swapchain(std::uint32_t width, std::uint32_t height) {
     ci.imageColorSpace = format.colorSpace;
     ci.imageExtent = extent;
     ci.imageArrayLayers = 1;
+    // Transfer writes too where allowed: reduced-resolution frames are blitted in.
+    blit_target_ = (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT) != 0;
     ci.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+    if (blit_target_) ci.imageUsage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     ci.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
     ci.preTransform = caps.currentTransform;
     ci.compositeAlpha =
@@ -124,6 +127,13 @@ void Presenter::create_swapchain(std::uint32_t width, std::uint32_t height) {
     swapchain_ = UniqueSwapchain(context_.device(), swapchain); // retires the old one
     format_ = format.format;
     extent_ = extent;
+    VkFormatProperties props{};
+    vkGetPhysicalDeviceFormatProperties(pd, format_, &props);
+    const VkFormatFeatureFlags blit = VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT;
+    blit_target_ = blit_target_ && (props.optimalTilingFeatures & blit) == blit;
+    blit_filter_ = (props.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT)
+                       ? VK_FILTER_LINEAR
+                       : VK_FILTER_NEAREST;
 
     vkGetSwapchainImagesKHR(context_.device(), swapchain, &n, nullptr);
     images_.resize(n);
@@ -163,13 +173,16 @@ bool Presenter::present_frame(FrameSource& source) {
     if (r != VK_SUBOPTIMAL_KHR) vk_check(r, "vkAcquireNextImageKHR");
 
     VkCommandBuffer cmd = recorders_[slot]->begin();
-    RenderTarget target{images_[index], views_[index].get(), format_,
-                        extent_.width,  extent_.height,      VK_IMAGE_LAYOUT_PRESENT_SRC_KHR};
+    const RenderTarget target{images_[index], views_[index].get(),
+                              format_,        extent_.width,
+                              extent_.height, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+                              blit_target_,   blit_filter_};
     source.record(cmd, slot, target);
     auto wait = vk_init<VkSemaphoreSubmitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO);
     wait.semaphore = acquired_[slot].get();
+    // Where the image is first written: drawn into, or a reduced frame blitted in.
     wait.stageMask =
-        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT; // where the image is first written
+        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
     auto signal = vk_init<VkSemaphoreSubmitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO);
     signal.semaphore = rendered_[index].get();
     signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;

@@ -1,20 +1,67 @@
 #include "renderer_impl.h"
 
+#include <algorithm>
+
 #include <sherpa/render/presented_frame.h>
 
 namespace sherpa::gpu {
 
-PresentedFrame::PresentedFrame(Renderer& renderer, const RenderSettings& settings)
-    : renderer_(renderer), settings_(settings) {}
+namespace {
+
+// The reduced frame (in TRANSFER_SRC layout) stretched over the whole target, which
+// is left in its final layout.
+void blit_to_target(VkCommandBuffer cmd, VkImage from, VkExtent2D from_size,
+                    const RenderTarget& to) {
+    transition(cmd, {to.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                     VK_ACCESS_2_NONE, // the acquire wait
+                     VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
+    VkImageBlit region{};
+    region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.srcOffsets[1] = {static_cast<std::int32_t>(from_size.width),
+                            static_cast<std::int32_t>(from_size.height), 1};
+    region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.dstOffsets[1] = {static_cast<std::int32_t>(to.width),
+                            static_cast<std::int32_t>(to.height), 1};
+    vkCmdBlitImage(cmd, from, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, to.image,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, to.blit_filter);
+    transition(cmd, {to.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     to.final_layout, VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                     VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE});
+}
+
+} // namespace
+
+PresentedFrame::PresentedFrame(Renderer& renderer, const RenderSettings& settings,
+                               float resolution_scale)
+    : renderer_(renderer), settings_(settings), resolution_scale_(resolution_scale) {}
 
 void PresentedFrame::wait_for_slot(std::uint32_t slot) {
-    renderer_.impl_->wait_for_slot(slot);
+    // The slot's previous frame is done: its timestamps and culling counts are final.
+    completed_ = renderer_.impl_->slot_stats(slot);
 }
 
 void PresentedFrame::record(VkCommandBuffer cmd, std::uint32_t slot, const RenderTarget& target) {
-    settings_.width = target.width;
-    settings_.height = target.height;
-    renderer_.impl_->record_frame(cmd, slot, target, settings_);
+    const bool reduced =
+        target.blit_target && resolution_scale_ > 0.0f && resolution_scale_ < 1.0f;
+    if (!reduced) {
+        settings_.width = target.width;
+        settings_.height = target.height;
+        renderer_.impl_->record_frame(cmd, slot, target, settings_);
+        return;
+    }
+    const auto scaled = [&](std::uint32_t side) {
+        return std::max(1u,
+                        static_cast<std::uint32_t>(static_cast<float>(side) * resolution_scale_));
+    };
+    const VkExtent2D size{scaled(target.width), scaled(target.height)};
+    settings_.width = size.width;
+    settings_.height = size.height;
+    const Image& image = renderer_.impl_->scaled_target(target.format, size.width, size.height);
+    RenderTarget reduced_target{image.image.get(), image.view.get(), target.format,
+                                size.width,        size.height,      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+    renderer_.impl_->record_frame(cmd, slot, reduced_target, settings_);
+    blit_to_target(cmd, image.image.get(), size, target);
 }
 
 void PresentedFrame::submitted(std::uint32_t slot, std::uint64_t submission) {

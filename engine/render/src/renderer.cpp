@@ -110,6 +110,7 @@ Renderer::Impl::~Impl() {
     slots_.clear();
     resources->images().destroy(color_);
     resources->images().destroy(depth_);
+    resources->images().destroy(scaled_);
     resources->destroy(readback_);
     resources->destroy(no_materials_);
     pipelines_.clear();
@@ -197,9 +198,27 @@ void Renderer::Impl::ensure_offscreen(std::uint32_t width, std::uint32_t height)
                                           "readback"});
 }
 
+const Image& Renderer::Impl::scaled_target(VkFormat format, std::uint32_t width,
+                                           std::uint32_t height) {
+    if (scaled_.valid()) {
+        const ImageDesc& d = resources->images().get(scaled_).desc;
+        if (d.format == format && d.width == width && d.height == height)
+            return resources->images().get(scaled_);
+        resources->images().destroy(scaled_); // freed once the frames drawing into it are done
+    }
+    ImageDesc d;
+    d.format = format;
+    d.width = width;
+    d.height = height;
+    d.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    d.name = "reduced-resolution colour";
+    scaled_ = resources->images().create(d);
+    return resources->images().get(scaled_);
+}
+
 std::uint64_t Renderer::Impl::render_target_bytes() const {
     std::uint64_t bytes = shadows_.bytes();
-    for (ImageHandle h : {color_, depth_})
+    for (ImageHandle h : {color_, depth_, scaled_})
         if (h.valid()) bytes += resources->images().get(h).allocation_size;
     return bytes;
 }

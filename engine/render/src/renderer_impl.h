@@ -30,6 +30,9 @@ public:
     // Results of the last completed frame recorded in `slot` (waits for it).
     FrameStats slot_stats(std::uint32_t slot);
     std::uint64_t render_target_bytes() const;
+    // The presenter's reduced-resolution image (`format`, width x height, colour
+    // attachment and blit source), made or remade when the size changes.
+    const Image& scaled_target(VkFormat format, std::uint32_t width, std::uint32_t height);
 
     Context& context;
     RendererOptions options;
@@ -72,7 +75,7 @@ private:
     std::uint64_t scene_generation_ = 0;
     std::vector<std::unique_ptr<FrameSlot>> slots_;
     std::uint32_t next_slot_ = 0;
-    ImageHandle color_, depth_;
+    ImageHandle color_, depth_, scaled_;
     BufferHandle readback_;
 };
 

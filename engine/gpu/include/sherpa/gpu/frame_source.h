@@ -17,6 +17,10 @@ struct RenderTarget {
     VkFormat format = VK_FORMAT_UNDEFINED;
     std::uint32_t width = 0, height = 0;
     VkImageLayout final_layout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+    // The image also takes blits (transfer writes), filtered with `blit_filter`: a
+    // source may draw a reduced-resolution frame elsewhere and scale it up into it.
+    bool blit_target = false;
+    VkFilter blit_filter = VK_FILTER_NEAREST;
 };
 
 // Frame slots: the presenter cycles slot = 0, 1, .., frames_in_flight() - 1 and,

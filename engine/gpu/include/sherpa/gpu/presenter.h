@@ -63,6 +63,8 @@ private:
     std::vector<std::unique_ptr<CommandRecorder>> recorders_; // per frame slot
     std::uint32_t frame_ = 0;
     std::uint64_t presented_ = 0;
+    bool blit_target_ = false; // swapchain images take blits (reduced-resolution frames)
+    VkFilter blit_filter_ = VK_FILTER_NEAREST;
 };
 
 } // namespace sherpa::gpu

@@ -11,17 +11,28 @@ namespace sherpa::gpu {
 
 class PresentedFrame final : public FrameSource {
 public:
-    // `settings`' width and height are replaced by the target's.
-    PresentedFrame(Renderer& renderer, const RenderSettings& settings);
+    // `settings`' width and height are replaced by the target's. `resolution_scale`
+    // below 1 (interaction on slow devices) draws each side at that fraction into an
+    // intermediate image and scales it up (the target's blit filter) into the
+    // target; 1, or a target that takes no blits, draws at full size.
+    PresentedFrame(Renderer& renderer, const RenderSettings& settings,
+                   float resolution_scale = 1.0f);
 
     std::uint32_t frames_in_flight() const override { return Renderer::kFramesInFlight; }
     void wait_for_slot(std::uint32_t slot) override;
     void record(VkCommandBuffer cmd, std::uint32_t slot, const RenderTarget& target) override;
     void submitted(std::uint32_t slot, std::uint64_t submission) override;
 
+    // Statistics (GPU timestamps, culling) of the latest frame known to be complete:
+    // the one drawn before in this frame's slot, kFramesInFlight frames back, read
+    // once the presenter has waited for the slot. Empty before that.
+    const FrameStats& completed_stats() const { return completed_; }
+
 private:
     Renderer& renderer_;
     RenderSettings settings_;
+    float resolution_scale_;
+    FrameStats completed_;
 };
 
 } // namespace sherpa::gpu

@@ -1,0 +1,184 @@
+// MainWindow and its render thread: the device made at start, scene uploads and
+// stream changes posted to the thread, frames asked for and reported back (status
+// bar, culling dock), material readback and the GPU culling check routed there.
+#include "main_window.h"
+#include "main_window_actions.h"
+
+#include <QElapsedTimer>
+#include <QLabel>
+
+#include "culling_dock.h"
+#include "culling_monitor.h"
+#include "gpu_viewport.h"
+#include "log_dock.h"
+#include "material_dock.h"
+#include "render_thread.h"
+#include "texture_dock.h"
+#include "view_catalog.h"
+#include "viewport_window.h"
+
+namespace sherpa::editor {
+
+namespace {
+// More than the renderer's frames in flight: the first frame's culling counts are
+// read back by then.
+constexpr int kPassReadbackFrames = 4;
+} // namespace
+
+void MainWindow::createRenderer() {
+    if (!vulkan_) {
+        log_->append(LogDock::Level::Error, tr("No Vulkan instance: the viewport cannot render."));
+        return;
+    }
+    QElapsedTimer clock;
+    clock.start();
+    QString error;
+    std::unique_ptr<GpuViewport> made = GpuViewport::create(*vulkan_, error);
+    if (!made) {
+        log_->append(LogDock::Level::Error, tr("The renderer could not start: %1").arg(error));
+        return;
+    }
+    log_->append(LogDock::Level::Info,
+                 tr("Rendering on %1 (renderer ready in %2 ms).")
+                     .arg(made->deviceName())
+                     .arg(static_cast<double>(clock.nsecsElapsed()) / 1e6, 0, 'f', 1));
+    device_plan_ = made->texturePlan();
+    render_ = std::make_unique<RenderThread>(std::move(made));
+    connect(render_.get(), &RenderThread::frameDone, this, &MainWindow::onFrameDone);
+    connect(render_.get(), &RenderThread::renderError, this, [this](const QString& e) {
+        gpu_failed_ = true;
+        log_->append(LogDock::Level::Error, tr("Rendering stopped: %1").arg(e));
+    });
+    viewport_->setFrameCallback([this] { renderFrame(); });
+    // The swapchain must go before its surface (closing the window destroys it).
+    connect(viewport_, &ViewportWindow::surfaceAboutToBeDestroyed, this,
+            [this] { render_->releaseSurface(); });
+    // Read back on the render thread, shown when it comes (the dock shows the CPU
+    // record meanwhile): selecting a material never waits for a frame.
+    material_->setReadback([this](int material, MaterialReadbackDone done) {
+        render_->post([this, material, done = std::move(done)](GpuViewport& gpu) {
+            std::optional<GpuMaterialReadback> r = gpu.readMaterial(material);
+            QMetaObject::invokeMethod(this, [done, r] { done(r); });
+        });
+    });
+    culling_->setGpuCheck([this](const Frustum& frustum, CullMethod method,
+                                 const std::vector<std::uint8_t>& cpu_visible, CullSample& out) {
+        GpuViewport::GpuCullCheck check;
+        try {
+            // Runs between frames (the GPU path's check mode waits for the frame in
+            // flight); a scene not uploaded yet is not compared.
+            const bool ran = render_->call([&, scene = context_.scene()](GpuViewport& gpu) {
+                return gpu.scene() == scene &&
+                       gpu.checkGpuCulling(frustum, method, cpu_visible, check);
+            });
+            if (!ran) return false;
+        } catch (const std::exception& e) {
+            log_->append(LogDock::Level::Error,
+                         tr("GPU culling failed: %1").arg(QString::fromUtf8(e.what())));
+            return false;
+        }
+        out.gpu_ms = check.gpu_ms;
+        out.gpu_visible = static_cast<std::int64_t>(check.visible);
+        out.cpu_gpu_differences = static_cast<std::int64_t>(check.differences);
+        return true;
+    });
+    connect(&context_, &EditorContext::sceneChanged, this, &MainWindow::uploadScene);
+}
+
+void MainWindow::uploadScene() {
+    const SceneExtras* extras = context_.extras();
+    prepared_ = extras ? extras->textures : nullptr;
+    textures_->setPrepared(prepared_);
+    logTextureMessages();
+    pass_frames_left_ = kPassReadbackFrames;
+    if (!render_) return;
+    const ViewportFrame streams = currentFrame();
+    render_->post([this, scene = context_.sharedScene(), prepared = prepared_, streams,
+                   checker = a_->missing_checker->isChecked()](GpuViewport& gpu) {
+        gpu.setScene(nullptr, nullptr); // so that the stream policy costs no upload
+        gpu.setMissingTexturesChecker(checker);
+        gpu.useStreamsFor(streams);
+        gpu.setScene(scene, prepared);
+        const auto bytes = static_cast<std::int64_t>(gpu.textureBytes());
+        QMetaObject::invokeMethod(this, [this, bytes] { textures_->setGpuBytes(bytes); });
+    });
+    render_->forgetMotion(); // the new scene's first frame at full size
+    viewport_->scheduleFrame();
+}
+
+void MainWindow::updateStreams() {
+    if (render_)
+        render_->post([frame = currentFrame()](GpuViewport& gpu) { gpu.useStreamsFor(frame); });
+    viewport_->scheduleFrame();
+}
+
+ViewportFrame MainWindow::currentFrame() const {
+    ViewportFrame frame;
+    const QSize pixels = viewport_->pixelSize();
+    frame.width = static_cast<std::uint32_t>(pixels.width());
+    frame.height = static_cast<std::uint32_t>(pixels.height());
+    frame.camera = viewport_->camera().spec();
+    frame.view = view_;
+    frame.overlays = overlays_;
+    frame.checkerDensity = static_cast<float>(settings_.checkerDensity());
+    if (a_->box_colouring->isChecked()) frame.overlays |= ViewCatalog::cullBoxesOverlay();
+    frame.gpuCulling = a_->gpu_path->isChecked();
+    frame.cullMethod = culling_->method();
+    if (culling_->frozen()) frame.frozenCulling = culling_->cullingCamera();
+    const Selection& sel = context_.selection();
+    if (const int instance = selectedInstance(); instance >= 0) {
+        frame.highlightInstance = static_cast<std::uint32_t>(instance);
+        if (sel.triangle >= 0) frame.highlightTriangle = static_cast<std::uint32_t>(sel.triangle);
+        if (sel.vertex >= 0) frame.highlightVertex = static_cast<std::uint32_t>(sel.vertex);
+    }
+    return frame;
+}
+
+void MainWindow::renderFrame() {
+    if (!render_ || gpu_failed_) return;
+    last_frame_ = currentFrame();
+    // Handed over, not waited for: a newer request replaces it if not started yet.
+    last_request_ = render_->requestFrame(last_frame_, viewport_->vulkanSurface());
+}
+
+void MainWindow::onFrameDone(const FrameReport& report) {
+    // Skipped because the swapchain was out of date and has just been recreated:
+    // draw again at the new size, or the last size change would never show.
+    if (!report.shown) {
+        viewport_->scheduleFrame();
+        return;
+    }
+    *last_report_ = report;
+    frame_times_.add(report.ms);
+    // The first frame makes the pipelines: shown as such, not as a frame rate.
+    QString text = frame_times_.count() == 0
+                       ? tr("first frame %1 ms (makes the pipelines)").arg(report.ms, 0, 'f', 1)
+                       : tr("%1 fps, %2 ms per frame")
+                             .arg(frame_times_.fps(), 0, 'f', 1)
+                             .arg(frame_times_.meanMs(), 0, 'f', 1);
+    if (report.gpu_ms >= 0.0) text += tr(" (GPU %1 ms)").arg(report.gpu_ms, 0, 'f', 1);
+    text += tr(", resolution %1%").arg(qRound(report.scale * 100.0f));
+    frame_label_->setText(text);
+    frame_label_->setToolTip(
+        tr("Mean of the last %1 frames, not counting the renderer's first (pipeline "
+           "creation). While the camera moves on a slow device, frames are drawn at a lower "
+           "resolution and without shadows to keep %2 fps; at rest the full frame follows.")
+            .arg(frame_times_.count())
+            .arg(qRound(1000.0 / kTargetFrameMs)));
+    viewport_->frameDrawn(report.ms);
+    if (report.cull_passes)
+        culling_dock_->setRendererPasses(report.passes, report.cached_shadows);
+    else if (context_.scene() && pass_frames_left_ > 0) {
+        // The renderer reads a frame's culling counts back when it reuses that
+        // frame's slot: draw the few frames that takes now, or the pass table
+        // says "no frame yet" until the camera first moves.
+        --pass_frames_left_;
+        viewport_->scheduleFrame();
+    }
+    if (!first_frame_seen_ && context_.scene()) { // a frame that shows the scene
+        first_frame_seen_ = true;
+        Q_EMIT firstFrame();
+    }
+}
+
+} // namespace sherpa::editor

@@ -1,0 +1,190 @@
+#include "render_thread.h"
+
+#include <chrono>
+
+namespace sherpa::editor {
+
+namespace {
+
+bool same_camera(const CameraSpec& a, const CameraSpec& b) {
+    return a.eye == b.eye && a.target == b.target && a.up == b.up &&
+           a.fov_y_degrees == b.fov_y_degrees && a.aspect == b.aspect;
+}
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+} // namespace
+
+RenderThread::RenderThread(std::unique_ptr<GpuViewport> gpu, QObject* parent)
+    : QObject(parent), gpu_(std::move(gpu)) {
+    thread_ = std::thread([this] { run(); });
+}
+
+RenderThread::~RenderThread() {
+    {
+        std::lock_guard lock(mutex_);
+        stop_ = true;
+    }
+    wake_.notify_all();
+    if (thread_.joinable()) thread_.join();
+}
+
+std::uint64_t RenderThread::requestFrame(const ViewportFrame& frame, std::uint64_t surface) {
+    std::uint64_t serial = 0;
+    {
+        std::lock_guard lock(mutex_);
+        serial = ++serial_;
+        pending_ = Request{frame, surface, serial}; // an older request not yet started goes
+    }
+    wake_.notify_all();
+    return serial;
+}
+
+void RenderThread::post(Task task) {
+    {
+        std::lock_guard lock(mutex_);
+        tasks_.push_back(std::move(task));
+    }
+    wake_.notify_all();
+}
+
+void RenderThread::forgetMotion() {
+    std::lock_guard lock(mutex_);
+    last_.reset(); // no camera to compare with: still
+    refine_ = false;
+}
+
+void RenderThread::setInteractiveScaling(bool on) {
+    std::lock_guard lock(mutex_);
+    scaling_ = on;
+}
+
+void RenderThread::setTargetFrameMs(double ms) {
+    std::lock_guard lock(mutex_);
+    target_ms_ = ms;
+}
+
+float RenderThread::interactiveScale() const {
+    std::lock_guard lock(mutex_);
+    return scaling_ ? scale_ : 1.0f;
+}
+
+bool RenderThread::renderAndWait(const ViewportFrame& frame, std::uint64_t surface) {
+    std::uint64_t serial = 0;
+    {
+        std::lock_guard lock(mutex_);
+        serial = ++serial_;
+        pending_.reset(); // this one is newer
+        refine_ = false;
+    }
+    const Request request{frame, surface, serial};
+    return call([this, request](GpuViewport& gpu) {
+        draw(gpu, request, true);
+        gpu.finish();
+        return true;
+    });
+}
+
+void RenderThread::releaseSurface() {
+    {
+        std::lock_guard lock(mutex_);
+        pending_.reset();
+        last_.reset();
+        refine_ = false;
+    }
+    call([](GpuViewport& gpu) { gpu.releaseSurface(); });
+}
+
+void RenderThread::run() {
+    GpuViewport& gpu = *gpu_;
+    std::unique_lock lock(mutex_);
+    while (true) {
+        const auto woken = [this] { return stop_ || !tasks_.empty() || pending_.has_value(); };
+        bool rested = false;
+        if (refine_ && !woken())
+            rested = !wake_.wait_for(lock, std::chrono::milliseconds(kRestMs), woken);
+        else
+            wake_.wait(lock, woken);
+        if (stop_) break;
+        if (!tasks_.empty()) { // before frames: a frame may depend on them (uploads)
+            Task task = std::move(tasks_.front());
+            tasks_.pop_front();
+            lock.unlock();
+            try {
+                task(gpu);
+            } catch (const std::exception& e) {
+                Q_EMIT renderError(QString::fromUtf8(e.what()));
+            }
+            task = nullptr;
+            lock.lock();
+            continue;
+        }
+        Request request;
+        bool still = true;
+        if (pending_) {
+            request = *pending_;
+            pending_.reset();
+            // Moving: the camera changed since the last frame drawn.
+            still = !last_ || same_camera(last_->frame.camera, request.frame.camera);
+        } else if (rested && last_) {
+            request = *last_; // the camera rests: the same frame at full size
+        } else {
+            refine_ = false;
+            continue;
+        }
+        lock.unlock();
+        draw(gpu, request, still);
+        lock.lock();
+    }
+    lock.unlock();
+    gpu_.reset(); // the engine goes on the thread that used it
+}
+
+// Draws on the render thread; `still`: at full size whatever the interactive scale.
+void RenderThread::draw(GpuViewport& gpu, const Request& request, bool still) {
+    float scale = 1.0f;
+    {
+        std::lock_guard lock(mutex_);
+        if (!still && scaling_) scale = scale_;
+    }
+    FrameReport report;
+    report.request = request.serial;
+    report.scale = scale;
+    report.width = request.frame.width;
+    report.height = request.frame.height;
+    const auto start = std::chrono::steady_clock::now();
+    try {
+        report.shown = gpu.present(request.surface, request.frame, scale);
+    } catch (const std::exception& e) {
+        Q_EMIT renderError(QString::fromUtf8(e.what()));
+        std::lock_guard lock(mutex_);
+        last_.reset();
+        refine_ = false;
+        return;
+    }
+    report.ms = ms_since(start);
+    report.gpu_ms = gpu.lastGpuMs();
+    report.cull_passes = gpu.lastCullPasses(report.passes, report.cached_shadows);
+    {
+        std::lock_guard lock(mutex_);
+        // The completed frame's GPU time belongs to the present kFramesInFlight back.
+        drawn_scales_.push_back(scale);
+        while (drawn_scales_.size() > GpuViewport::kFramesInFlight + 1) drawn_scales_.pop_front();
+        double cost = report.ms;
+        if (report.gpu_ms > 0.0 && drawn_scales_.size() > GpuViewport::kFramesInFlight) {
+            const float then = drawn_scales_.front();
+            cost = std::max(cost, report.gpu_ms * double(scale * scale) / double(then * then));
+        }
+        // Every frame informs the next moving frame's scale: a still frame too says
+        // what full size costs.
+        if (report.shown) scale_ = next_resolution_scale(scale, cost, target_ms_);
+        last_ = request;
+        refine_ = report.shown && scale < 1.0f;
+    }
+    Q_EMIT frameDone(report);
+}
+
+} // namespace sherpa::editor

@@ -1,0 +1,125 @@
+#pragma once
+// Frames off the GUI thread. One thread owns the engine side of the viewport
+// (GpuViewport: device, queue, renderer, swapchain) and is the only thread that
+// calls it. The GUI thread hands it the latest frame it wants (a newer request
+// replaces one not yet started, so camera input coalesces to its latest state)
+// and tasks (upload a scene, read a material back); results come back as queued
+// signals. Nothing on the GUI thread waits for a frame in flight except call()
+// (tests, screenshots, the window's surface going away).
+#include <QMetaType>
+#include <QObject>
+#include <QString>
+
+#include <condition_variable>
+#include <deque>
+#include <functional>
+#include <future>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "gpu_viewport.h"
+#include "resolution_scale.h"
+
+namespace sherpa::editor {
+
+// One frame as the render thread drew it.
+struct FrameReport {
+    std::uint64_t request = 0;           // the requestFrame() it drew (1, 2, ...)
+    bool shown = false;                  // false: skipped (swapchain recreated)
+    double ms = 0.0;                     // present() on the render thread, wall clock
+    double gpu_ms = -1.0;                // timestamps of the latest completed frame
+    float scale = 1.0f;                  // each side drawn at this fraction
+    std::uint32_t width = 0, height = 0; // the full (viewport) size in pixels
+    bool cull_passes = false;            // the renderer's culling passes are known
+    std::vector<CullStats> passes;
+    bool cached_shadows = false;
+};
+
+class RenderThread : public QObject {
+    Q_OBJECT
+public:
+    using Task = std::function<void(GpuViewport&)>;
+    // Starts the thread, which owns `gpu` from now on (made on the GUI thread so
+    // that its capabilities are known before the first scene loads).
+    explicit RenderThread(std::unique_ptr<GpuViewport> gpu, QObject* parent = nullptr);
+    ~RenderThread() override; // finishes the frame in flight; frees the engine there
+
+    // The frame to draw next on `surface`; replaces a request not yet started. A
+    // frame whose camera differs from the last one drawn is "moving": drawn at the
+    // interactive resolution scale; once no new request comes for kRestMs, the last
+    // frame is drawn again at full size (the still image is always full size).
+    std::uint64_t requestFrame(const ViewportFrame& frame, std::uint64_t surface);
+    // Runs `task` on the render thread before the next frame, in order of posting.
+    void post(Task task);
+    // Runs `task` there and waits for its result (so for the frame in flight too).
+    template <class F> auto call(F task) -> decltype(task(std::declval<GpuViewport&>()));
+    // Draws `frame` at full size now and waits until it is presented and the queue
+    // is idle (screenshots read the window right after).
+    bool renderAndWait(const ViewportFrame& frame, std::uint64_t surface);
+    // Drops the swapchain and any request for it, and waits (the surface is going).
+    void releaseSurface();
+    // The next frame is still (full size) whatever its camera: a new scene's framing
+    // is a jump, not motion.
+    void forgetMotion();
+    // Reduced resolution while moving; off draws every frame at full size.
+    void setInteractiveScaling(bool on);
+    // The scale the next moving frame gets (1: full size).
+    float interactiveScale() const;
+    // The frame time moving frames aim at (kTargetFrameMs: 30 fps).
+    void setTargetFrameMs(double ms);
+
+    static constexpr int kRestMs = 80; // no new camera for this long: the camera rests
+
+Q_SIGNALS:
+    void frameDone(const sherpa::editor::FrameReport& report);
+    void renderError(const QString& error);
+
+private:
+    struct Request {
+        ViewportFrame frame;
+        std::uint64_t surface = 0;
+        std::uint64_t serial = 0;
+    };
+    void run();
+    void draw(GpuViewport& gpu, const Request& request, bool still);
+
+    mutable std::mutex mutex_;
+    std::condition_variable wake_;
+    std::deque<Task> tasks_;
+    std::optional<Request> pending_;
+    std::optional<Request> last_; // the last frame drawn (for the refinement at rest)
+    bool refine_ = false;         // last_ was drawn reduced: draw it full at rest
+    bool stop_ = false;
+    bool scaling_ = true;
+    double target_ms_ = kTargetFrameMs;
+    float scale_ = 1.0f;             // for the next moving frame
+    std::deque<float> drawn_scales_; // of the last presents (to match GPU timings)
+    std::uint64_t serial_ = 0;
+    std::unique_ptr<GpuViewport> gpu_; // used on thread_ only
+    std::thread thread_;
+};
+
+template <class F> auto RenderThread::call(F task) -> decltype(task(std::declval<GpuViewport&>())) {
+    using R = decltype(task(std::declval<GpuViewport&>()));
+    auto promise = std::make_shared<std::promise<R>>();
+    std::future<R> result = promise->get_future();
+    post([promise, task = std::move(task)](GpuViewport& gpu) mutable {
+        try {
+            if constexpr (std::is_void_v<R>) {
+                task(gpu);
+                promise->set_value();
+            } else {
+                promise->set_value(task(gpu));
+            }
+        } catch (...) {
+            promise->set_exception(std::current_exception());
+        }
+    });
+    return result.get();
+}
+
+} // namespace sherpa::editor
+
+Q_DECLARE_METATYPE(sherpa::editor::FrameReport)

@@ -129,7 +129,8 @@ void Presenter::create_swapchain(std::uint32_t width, std::uint32_t height) {
     extent_ = extent;
     VkFormatProperties props{};
     vkGetPhysicalDeviceFormatProperties(pd, format_, &props);
-    const VkFormatFeatureFlags blit = VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT;
+    const VkFormatFeatureFlags blit =
+        VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT;
     blit_target_ = blit_target_ && (props.optimalTilingFeatures & blit) == blit;
     blit_filter_ = (props.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT)
                        ? VK_FILTER_LINEAR
@@ -173,9 +174,8 @@ bool Presenter::present_frame(FrameSource& source) {
     if (r != VK_SUBOPTIMAL_KHR) vk_check(r, "vkAcquireNextImageKHR");
 
     VkCommandBuffer cmd = recorders_[slot]->begin();
-    const RenderTarget target{images_[index], views_[index].get(),
-                              format_,        extent_.width,
-                              extent_.height, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+    const RenderTarget target{images_[index], views_[index].get(), format_,
+                              extent_.width,  extent_.height,      VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
                               blit_target_,   blit_filter_};
     source.record(cmd, slot, target);
     auto wait = vk_init<VkSemaphoreSubmitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO);

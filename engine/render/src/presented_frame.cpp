@@ -42,8 +42,7 @@ void PresentedFrame::wait_for_slot(std::uint32_t slot) {
 }
 
 void PresentedFrame::record(VkCommandBuffer cmd, std::uint32_t slot, const RenderTarget& target) {
-    const bool reduced =
-        target.blit_target && resolution_scale_ > 0.0f && resolution_scale_ < 1.0f;
+    const bool reduced = target.blit_target && resolution_scale_ > 0.0f && resolution_scale_ < 1.0f;
     if (!reduced) {
         settings_.width = target.width;
         settings_.height = target.height;
@@ -58,8 +57,9 @@ void PresentedFrame::record(VkCommandBuffer cmd, std::uint32_t slot, const Rende
     settings_.width = size.width;
     settings_.height = size.height;
     const Image& image = renderer_.impl_->scaled_target(target.format, size.width, size.height);
-    RenderTarget reduced_target{image.image.get(), image.view.get(), target.format,
-                                size.width,        size.height,      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+    RenderTarget reduced_target{image.image.get(), image.view.get(),
+                                target.format,     size.width,
+                                size.height,       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
     renderer_.impl_->record_frame(cmd, slot, reduced_target, settings_);
     blit_to_target(cmd, image.image.get(), size, target);
 }

@@ -6,6 +6,7 @@
 #include <csetjmp>
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 #include <jpeglib.h>
 #include <png.h>
@@ -30,29 +31,22 @@ void jpeg_error_exit(j_common_ptr info) {
     std::longjmp(err->jump, 1);
 }
 
-} // namespace
-
-bool read_png_reference(const std::filesystem::path& path, ReferenceImage& out,
-                        std::string& error) {
-    File file(std::fopen(path.c_str(), "rb"));
-    if (!file) {
-        error = path.string() + ": cannot open";
-        return false;
-    }
+// The libpng and libjpeg calls run in frames of their own that hold no C++ object
+// with a destructor: longjmp skips destructors, and GCC (-Wclobbered, at -O1) warns
+// that locals of a frame that calls setjmp may be clobbered. Each returns nullptr,
+// or what went wrong; the callers build the messages.
+const char* decode_png(std::FILE* file, ReferenceImage& out, std::vector<png_bytep>& rows) {
     png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!info) {
         png_destroy_read_struct(&png, nullptr, nullptr);
-        error = path.string() + ": libpng could not start";
-        return false;
+        return "libpng could not start";
     }
-    std::vector<png_bytep> rows;
     if (setjmp(png_jmpbuf(png))) {
         png_destroy_read_struct(&png, &info, nullptr);
-        error = path.string() + ": libpng failed to decode it";
-        return false;
+        return "libpng failed to decode it";
     }
-    png_init_io(png, file.get());
+    png_init_io(png, file);
     png_read_info(png, info);
     // Expand whatever the file stores to 8-bit RGBA, without touching colour values:
     // no gamma handling and no alpha association (libpng never associates unless
@@ -67,8 +61,7 @@ bool read_png_reference(const std::filesystem::path& path, ReferenceImage& out,
     out.height = png_get_image_height(png, info);
     if (png_get_rowbytes(png, info) != std::size_t(out.width) * 4) {
         png_destroy_read_struct(&png, &info, nullptr);
-        error = path.string() + ": libpng did not expand it to RGBA8";
-        return false;
+        return "libpng did not expand it to RGBA8";
     }
     out.rgba.assign(std::size_t(out.width) * out.height * 4, 0);
     rows.resize(out.height);
@@ -77,28 +70,21 @@ bool read_png_reference(const std::filesystem::path& path, ReferenceImage& out,
     png_read_image(png, rows.data());
     png_read_end(png, nullptr);
     png_destroy_read_struct(&png, &info, nullptr);
-    return true;
+    return nullptr;
 }
 
-bool read_jpeg_reference(const std::filesystem::path& path, ReferenceImage& out,
-                         std::string& error) {
-    File file(std::fopen(path.c_str(), "rb"));
-    if (!file) {
-        error = path.string() + ": cannot open";
-        return false;
-    }
+// `err.message` holds libjpeg's own words when this returns "libjpeg".
+const char* decode_jpeg(std::FILE* file, ReferenceImage& out, std::vector<std::uint8_t>& row,
+                        JpegError& err) {
     jpeg_decompress_struct info{};
-    JpegError err;
     info.err = jpeg_std_error(&err.mgr);
     err.mgr.error_exit = jpeg_error_exit;
-    std::vector<std::uint8_t> row;
     if (setjmp(err.jump)) {
         jpeg_destroy_decompress(&info);
-        error = path.string() + ": libjpeg: " + err.message;
-        return false;
+        return "libjpeg";
     }
     jpeg_create_decompress(&info);
-    jpeg_stdio_src(&info, file.get());
+    jpeg_stdio_src(&info, file);
     jpeg_read_header(&info, TRUE);
     info.out_color_space = JCS_RGB;
     jpeg_start_decompress(&info);
@@ -116,6 +102,39 @@ bool read_jpeg_reference(const std::filesystem::path& path, ReferenceImage& out,
     }
     jpeg_finish_decompress(&info);
     jpeg_destroy_decompress(&info);
+    return nullptr;
+}
+
+} // namespace
+
+bool read_png_reference(const std::filesystem::path& path, ReferenceImage& out,
+                        std::string& error) {
+    File file(std::fopen(path.c_str(), "rb"));
+    if (!file) {
+        error = path.string() + ": cannot open";
+        return false;
+    }
+    std::vector<png_bytep> rows;
+    if (const char* problem = decode_png(file.get(), out, rows)) {
+        error = path.string() + ": " + problem;
+        return false;
+    }
+    return true;
+}
+
+bool read_jpeg_reference(const std::filesystem::path& path, ReferenceImage& out,
+                         std::string& error) {
+    File file(std::fopen(path.c_str(), "rb"));
+    if (!file) {
+        error = path.string() + ": cannot open";
+        return false;
+    }
+    std::vector<std::uint8_t> row;
+    JpegError err;
+    if (const char* problem = decode_jpeg(file.get(), out, row, err)) {
+        error = path.string() + ": " + problem + ": " + err.message;
+        return false;
+    }
     return true;
 }
 

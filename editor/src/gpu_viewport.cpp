@@ -215,8 +215,7 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame, flo
     }
     gpu::PresentedFrame presented(*impl_->renderer, settings, scale);
     const bool shown = impl_->presenter->present_frame(presented);
-    impl_->completed = presented.completed_stats();
-    impl_->renderer->resources().collect_garbage();
+    impl_->completed = presented.completed_stats(); // garbage: the presenter collects it
     return shown;
 }
 

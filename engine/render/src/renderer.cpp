@@ -155,10 +155,6 @@ void Renderer::Impl::unload() {
     resources->collect_garbage();
 }
 
-void Renderer::Impl::wait_for_slot(std::uint32_t slot) {
-    wait_slot(*slots_.at(slot));
-}
-
 void Renderer::Impl::wait_slot(FrameSlot& slot) {
     if (slot.submission) resources->timeline().wait_for(slot.submission);
 }
@@ -179,20 +175,26 @@ void Renderer::Impl::ensure_depth(std::uint32_t width, std::uint32_t height) {
     depth_ = resources->images().create(d);
 }
 
-void Renderer::Impl::ensure_offscreen(std::uint32_t width, std::uint32_t height) {
-    if (color_.valid()) {
-        const ImageDesc& d = resources->images().get(color_).desc;
-        if (d.width == width && d.height == height) return;
-        resources->images().destroy(color_);
-        resources->destroy(readback_);
+bool Renderer::Impl::ensure_color_target(ImageHandle& image, VkFormat format, std::uint32_t width,
+                                         std::uint32_t height, const char* name) {
+    if (image.valid()) {
+        const ImageDesc& d = resources->images().get(image).desc;
+        if (d.format == format && d.width == width && d.height == height) return false;
+        resources->images().destroy(image); // freed once the frames drawing into it are done
     }
     ImageDesc d;
-    d.format = kOffscreenFormat;
+    d.format = format;
     d.width = width;
     d.height = height;
     d.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    d.name = "offscreen colour";
-    color_ = resources->images().create(d);
+    d.name = name;
+    image = resources->images().create(d);
+    return true;
+}
+
+void Renderer::Impl::ensure_offscreen(std::uint32_t width, std::uint32_t height) {
+    if (!ensure_color_target(color_, kOffscreenFormat, width, height, "offscreen colour")) return;
+    resources->destroy(readback_); // sized by the colour target
     readback_ = resources->create_buffer({VkDeviceSize(width) * height * 4,
                                           VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::Readback,
                                           "readback"});
@@ -200,19 +202,7 @@ void Renderer::Impl::ensure_offscreen(std::uint32_t width, std::uint32_t height)
 
 const Image& Renderer::Impl::scaled_target(VkFormat format, std::uint32_t width,
                                            std::uint32_t height) {
-    if (scaled_.valid()) {
-        const ImageDesc& d = resources->images().get(scaled_).desc;
-        if (d.format == format && d.width == width && d.height == height)
-            return resources->images().get(scaled_);
-        resources->images().destroy(scaled_); // freed once the frames drawing into it are done
-    }
-    ImageDesc d;
-    d.format = format;
-    d.width = width;
-    d.height = height;
-    d.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    d.name = "reduced-resolution colour";
-    scaled_ = resources->images().create(d);
+    ensure_color_target(scaled_, format, width, height, "reduced-resolution colour");
     return resources->images().get(scaled_);
 }
 

@@ -25,8 +25,6 @@ public:
     void record_frame(VkCommandBuffer cmd, std::uint32_t slot, const RenderTarget& target,
                       const RenderSettings& settings);
     void finish_frame(std::uint32_t slot, std::uint64_t submission);
-    // Waits until the last frame recorded in `slot` has completed on the GPU.
-    void wait_for_slot(std::uint32_t slot);
     // Results of the last completed frame recorded in `slot` (waits for it).
     FrameStats slot_stats(std::uint32_t slot);
     std::uint64_t render_target_bytes() const;
@@ -55,6 +53,10 @@ private:
     void create_frame_sets();
     void bind_frame_set(FrameSlot& slot);
     void wait_slot(FrameSlot& slot);
+    // Keeps `image` a colour attachment and transfer source of this format and size;
+    // true when it was (re)made.
+    bool ensure_color_target(ImageHandle& image, VkFormat format, std::uint32_t width,
+                             std::uint32_t height, const char* name);
     void ensure_offscreen(std::uint32_t width, std::uint32_t height);
     void ensure_depth(std::uint32_t width, std::uint32_t height);
     Pipelines& pipelines_for(VkFormat format);

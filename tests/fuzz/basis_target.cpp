@@ -6,7 +6,6 @@
 #include "basis_target.h"
 
 #include <algorithm>
-#include <fstream>
 
 #include <sherpa/core/file_io.h>
 #include <sherpa/texture/ktx2.h>
@@ -42,15 +41,6 @@ bool BasisTarget::init(const TargetConfig& config, std::string& error) {
     return true;
 }
 
-fs::path BasisTarget::make_case(Rng& rng) {
-    bytes_ = seeds_[rng.below(seeds_.size())];
-    mutate_bytes(rng, bytes_, seeds_[rng.below(seeds_.size())], config_.max_size);
-    // The file is the reproducer; the transcode itself works on memory.
-    std::ofstream(config_.work_dir / "__case.ktx2", std::ios::binary)
-        .write(reinterpret_cast<const char*>(bytes_.data()), std::streamsize(bytes_.size()));
-    return config_.work_dir;
-}
-
 std::optional<std::string> BasisTarget::run() {
     tex::BasisTexture texture;
     std::string error;
@@ -74,10 +64,6 @@ std::optional<std::string> BasisTarget::run() {
                    " with the wrong number of pixel bytes";
     }
     return std::nullopt;
-}
-
-std::vector<fs::path> BasisTarget::case_files() const {
-    return {config_.work_dir / "__case.ktx2"};
 }
 
 } // namespace sherpa::fuzz

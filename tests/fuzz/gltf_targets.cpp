@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <fstream>
 
 #include <sherpa/core/file_io.h>
 #include <sherpa/scene/scene_loader.h>
@@ -22,12 +21,6 @@ std::vector<std::uint8_t> read_all(const fs::path& path) {
     std::string error;
     if (!read_file(path, bytes, error)) bytes.clear();
     return bytes;
-}
-
-void write_all(const fs::path& path, std::span<const std::uint8_t> bytes) {
-    fs::remove(path);
-    std::ofstream(path, std::ios::binary)
-        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
 }
 
 std::vector<std::uint8_t> as_bytes(const std::string& s) {
@@ -127,7 +120,7 @@ fs::path GltfTarget::make_case(Rng& rng) {
             std::vector<std::uint8_t> bin = seed.bins[j];
             mutate_bytes(rng, bin, {}, config_.max_size);
             const std::string name = "__case_" + std::to_string(j) + ".bin";
-            write_all(seed.case_dir / name, bin);
+            write_case_file(seed.case_dir / name, bin);
             written_.push_back(seed.case_dir / name);
             doc["buffers"][j]["uri"] = name;
         }
@@ -144,7 +137,7 @@ fs::path GltfTarget::make_case(Rng& rng) {
 fs::path GltfTarget::write_case(const Seed& seed, const std::string& name,
                                 std::span<const std::uint8_t> bytes) {
     case_path_ = seed.case_dir / name;
-    write_all(case_path_, bytes);
+    write_case_file(case_path_, bytes);
     written_.push_back(case_path_);
     return seed.case_dir;
 }

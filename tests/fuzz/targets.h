@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,28 @@ public:
     // Case files in the case directory (what a reproducer consists of).
     virtual std::vector<std::filesystem::path> case_files() const = 0;
 };
+
+// Targets whose case is one byte string: a seed, mutated (spliced with another seed
+// now and then), written to `case_name` in the work directory as the reproducer.
+// Subclasses fill `seeds_` in init() and run the code under test on `bytes_`.
+class ByteTarget : public Target {
+public:
+    std::filesystem::path make_case(Rng& rng) override;
+    std::vector<std::filesystem::path> case_files() const override;
+
+protected:
+    explicit ByteTarget(std::string case_name) : case_name_(std::move(case_name)) {}
+
+    TargetConfig config_;
+    std::vector<std::vector<std::uint8_t>> seeds_;
+    std::vector<std::uint8_t> bytes_; // the case made last
+
+private:
+    std::string case_name_;
+};
+
+// Replaces `path` (a file left by an earlier case) with `bytes`.
+void write_case_file(const std::filesystem::path& path, std::span<const std::uint8_t> bytes);
 
 // "gltf", "glb", "tangents", "ktx2", "cache", "basis", in that order.
 std::vector<std::unique_ptr<Target>> make_targets();

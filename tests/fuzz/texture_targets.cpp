@@ -3,7 +3,6 @@
 // TextureCache::load, which must never serve a changed entry as a hit.
 #include "texture_targets.h"
 
-#include <fstream>
 #include <sys/stat.h>
 
 #include <sherpa/core/file_io.h>
@@ -42,11 +41,6 @@ std::vector<Ktx2Texture> seed_textures() {
     return out;
 }
 
-void write_all(const fs::path& path, std::span<const std::uint8_t> bytes) {
-    std::ofstream(path, std::ios::binary)
-        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-}
-
 // What differs between two textures, or "" when they are the same.
 std::string difference(const Ktx2Texture& a, const Ktx2Texture& b) {
     if (a.format != b.format || a.width != b.width || a.height != b.height) return "header";
@@ -65,14 +59,6 @@ bool Ktx2Target::init(const TargetConfig& config, std::string& error) {
     return true;
 }
 
-fs::path Ktx2Target::make_case(Rng& rng) {
-    bytes_ = seeds_[rng.below(seeds_.size())];
-    mutate_bytes(rng, bytes_, seeds_[rng.below(seeds_.size())], config_.max_size);
-    // The file is the reproducer; the read itself works on memory.
-    write_all(config_.work_dir / "__case.ktx2", bytes_);
-    return config_.work_dir;
-}
-
 std::optional<std::string> Ktx2Target::run() {
     Ktx2Texture texture;
     std::string error;
@@ -87,10 +73,6 @@ std::optional<std::string> Ktx2Target::run() {
             return "read_ktx2 accepted level " + std::to_string(l) + " of the wrong size";
     if (texture.levels.empty()) return "read_ktx2 accepted a texture without levels";
     return std::nullopt;
-}
-
-std::vector<fs::path> Ktx2Target::case_files() const {
-    return {config_.work_dir / "__case.ktx2"};
 }
 
 bool CacheTarget::init(const TargetConfig& config, std::string& error) {
@@ -143,7 +125,7 @@ fs::path CacheTarget::make_case(Rng& rng) {
     }
     std::vector<std::uint8_t> bytes = e.bytes;
     mutate_bytes(rng, bytes, entries_[rng.below(entries_.size())].bytes, config_.max_size);
-    write_all(path, bytes);
+    write_case_file(path, bytes);
     return cache_->directory();
 }
 

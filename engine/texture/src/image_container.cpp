@@ -23,10 +23,15 @@ ImageContainer image_container(std::span<const std::uint8_t> b) {
         // KTX2 header: vkFormat at byte 12, supercompressionScheme at byte 44.
         if (b.size() < 48) return {"ktx2", "?"};
         const std::uint32_t vk_format = u32_at(b, 12), scheme = u32_at(b, 44);
-        const char* schemes[] = {"none", "basislz", "zstd", "zlib"};
-        const std::string super = scheme < 4 ? schemes[scheme] : "?";
-        if (scheme == 1) return {"ktx2-etc1s", super};
-        if (vk_format == 0 && (scheme == 0 || scheme == 2)) return {"ktx2-uastc", super};
+        // The Basis names come from basis.h; zlib (scheme 3) is KTX2's but not Basis'.
+        const std::string super =
+            scheme <= 2   ? std::string(supercompression_name(BasisSupercompression(scheme)))
+            : scheme == 3 ? "zlib"
+                          : "?";
+        const auto payload = [](BasisPayload p) { return std::string(basis_payload_name(p)); };
+        if (scheme == 1) return {payload(BasisPayload::Etc1s), super};
+        if (vk_format == 0 && (scheme == 0 || scheme == 2))
+            return {payload(BasisPayload::Uastc), super};
         return {"ktx2", super};
     }
     if (starts("\x89PNG")) return {"png", {}};

@@ -33,14 +33,22 @@ using test::resident_kib;
 namespace {
 
 // Waits (bounded, never asserted on) until the viewport has drawn a new frame.
+// Waits for a frame to be drawn and for a frame to have been asked for after this
+// call: lastFrame() is the last frame asked for, and a frame already in flight can be
+// drawn before the scheduled one is asked for (gpuCullingAgreesWithCpu then read the
+// state from before setGpuCulling, 2 runs in 3).
 bool nextFrame(MainWindow& w) {
     const std::uint64_t before = w.viewport()->framesRendered();
+    const std::uint64_t asked_before = w.lastRequest();
     w.viewport()->scheduleFrame();
     QElapsedTimer t;
     t.start();
-    while (w.viewport()->framesRendered() == before && t.elapsed() < kLoadTimeoutMs)
+    const auto done = [&] {
+        return w.viewport()->framesRendered() > before && w.lastRequest() > asked_before;
+    };
+    while (!done() && t.elapsed() < kLoadTimeoutMs)
         QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 20);
-    return w.viewport()->framesRendered() > before;
+    return done();
 }
 
 // Pixels of the highlight colour (sRGB of gpu::kHighlightColor) in the viewport.

@@ -179,7 +179,8 @@ TEST(PointsAndLines, PointsAreDrawnAtTheirProjectedPixelsWithAVisibleSize) {
 }
 
 TEST(PointsAndLines, LineOnlyFileRendersItsLinesValidationClean) {
-    // A LINE_LOOP square: its four sides cross the pixel rows and columns they project to.
+    // A LINE_LOOP square: its four sides cross the pixel rows and columns they project
+    // to, kLineWidthPixels (2) wide on a device with wideLines (lavapipe has them).
     const std::string path = write_gltf("loop.gltf", 2, {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0});
     const Image img = render(path);
     ASSERT_EQ(img.w, 64u);
@@ -188,21 +189,25 @@ TEST(PointsAndLines, LineOnlyFileRendersItsLinesValidationClean) {
     for (int y = 0; y < 64; ++y)
         for (int x = 0; x < 64; ++x) red += img.red(x, y);
     const float side = lo.y - hi.y; // pixels
-    EXPECT_GE(red, int(4 * side) - 8) << "four 1-pixel sides";
-    EXPECT_LE(red, int(4 * side) + 8);
-    // Every red pixel lies on the square's outline (within a pixel).
+    EXPECT_GE(red, int(2 * 4 * side) - 16) << "four 2-pixel sides";
+    EXPECT_LE(red, int(2 * 4 * side) + 16);
+    // Every red pixel lies on the square's outline (its centre within the line's
+    // half width of 1 px, plus a pixel of rasterization slack).
     for (int y = 0; y < 64; ++y)
         for (int x = 0; x < 64; ++x) {
             if (!img.red(x, y)) continue;
             const float px = float(x) + 0.5f, py = float(y) + 0.5f;
-            const bool on = std::abs(px - lo.x) <= 1 || std::abs(px - hi.x) <= 1 ||
-                            std::abs(py - lo.y) <= 1 || std::abs(py - hi.y) <= 1;
+            const bool on = std::abs(px - lo.x) <= 1.5f || std::abs(px - hi.x) <= 1.5f ||
+                            std::abs(py - lo.y) <= 1.5f || std::abs(py - hi.y) <= 1.5f;
             EXPECT_TRUE(on) << x << "," << y;
         }
-    // The middle of the square's left side.
+    // Across the middle of each vertical side, exactly two red pixels: the width.
     const int mid = int((lo.y + hi.y) / 2);
-    EXPECT_TRUE(img.red(int(lo.x), mid) || img.red(int(lo.x) - 1, mid) ||
-                img.red(int(lo.x) + 1, mid));
+    for (const float side_x : {lo.x, hi.x}) {
+        int across = 0;
+        for (int x = int(side_x) - 3; x <= int(side_x) + 3; ++x) across += img.red(x, mid);
+        EXPECT_EQ(across, 2) << "line width at x " << side_x;
+    }
 }
 
 } // namespace

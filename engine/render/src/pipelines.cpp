@@ -33,6 +33,7 @@ struct PipelineDesc {
     bool blend = false;
     const VkSpecializationInfo* frag_constants = nullptr;
     const VkSpecializationInfo* vert_constants = nullptr;
+    float line_width = 1.0f; // overlays and wireframe stay 1 px
 };
 
 UniquePipeline make_pipeline(VkDevice device, VkPipelineLayout layout, VkFormat color_format,
@@ -64,7 +65,7 @@ UniquePipeline make_pipeline(VkDevice device, VkPipelineLayout layout, VkFormat 
     auto raster = vk_init<VkPipelineRasterizationStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
     raster.polygonMode = d.polygon;
-    raster.lineWidth = 1.0f;
+    raster.lineWidth = d.line_width;
     auto multisample = vk_init<VkPipelineMultisampleStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
     multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
@@ -132,7 +133,7 @@ Pipelines::Pipelines(const Context& context, VkDescriptorSetLayout textures_layo
                      VkDescriptorSetLayout frame_layout, VkFormat color_format)
     : color_format_(color_format),
       point_size_(context.info().large_points ? kPointSizePixels : 1.0f),
-      device_(context.device()) {
+      line_width_(context.info().wide_lines ? kLineWidthPixels : 1.0f), device_(context.device()) {
     VkDevice device = context.device();
     VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                              sizeof(GPUPushConstants)};
@@ -192,6 +193,7 @@ VkPipeline Pipelines::forward(std::uint32_t view, bool blend, std::uint32_t stre
         d.topology = (streams & kMeshPointsBit)  ? VK_PRIMITIVE_TOPOLOGY_POINT_LIST
                      : (streams & kMeshLinesBit) ? VK_PRIMITIVE_TOPOLOGY_LINE_LIST
                                                  : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+        if (streams & kMeshLinesBit) d.line_width = line_width_;
         p = make_pipeline(device_, layout_.get(), color_format_, d);
     }
     return p.get();

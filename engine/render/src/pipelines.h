@@ -75,6 +75,7 @@ public:
 private:
     VkFormat color_format_;
     float point_size_ = 1.0f;
+    float line_width_ = 1.0f;
     UniquePipelineLayout layout_;
     std::array<UniquePipeline, static_cast<std::size_t>(PipelineId::Count)> pipelines_;
     VkDevice device_;

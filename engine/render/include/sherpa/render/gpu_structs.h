@@ -117,6 +117,10 @@ inline constexpr std::uint32_t kMeshTopologyBits = kMeshLinesBit | kMeshPointsBi
 // Points are drawn this many pixels wide where the device supports large points
 // (largePoints), else at its only size, 1.
 inline constexpr float kPointSizePixels = 4.0f;
+// Lines (LINES, LINE_STRIP, LINE_LOOP primitives) are drawn this many pixels wide
+// where the device supports wide lines (wideLines), else 1: a 1-px line is hard to
+// see and to pick on a high-DPI screen.
+inline constexpr float kLineWidthPixels = 2.0f;
 inline constexpr std::uint32_t kTangentProvenanceShift = 8;
 inline constexpr std::uint32_t kNormalProvenanceShift = 10;
 inline constexpr std::uint32_t kGlyphKindShift = 16;

@@ -74,7 +74,8 @@ void main() {
     vec4 tangent = READ_TANGENT ? in_tangent : vec4(1.0, 0.0, 0.0, 1.0);
 
     // Alpha decides coverage in every view; other inputs only where a view shows them.
-    bool need_base = view == VIEW_LIT || view == VIEW_BASE_COLOR || m.alpha_mode != SHERPA_ALPHA_OPAQUE;
+    bool need_base = view == VIEW_LIT || view == VIEW_BASE_COLOR || view == VIEW_SPECULAR ||
+                     m.alpha_mode != SHERPA_ALPHA_OPAQUE;
     vec4 base = need_base ? base_color(m, x, color, uv0, uv1) : vec4(1.0);
     if (m.alpha_mode == SHERPA_ALPHA_MASK && base.a < m.alpha_cutoff) discard;
 
@@ -109,8 +110,24 @@ void main() {
     case VIEW_UV0_CHECKER: c = checker_color(uv0, frame.overlay.y); break;
     case VIEW_UV1_CHECKER: c = checker_color(uv1, frame.overlay.y); break;
     case VIEW_BASE_COLOR: c = base.rgb; break;
-    case VIEW_METALLIC: c = vec3(metallic_roughness(m, metallic_roughness_texel(m, x, uv0, uv1)).x); break;
-    case VIEW_ROUGHNESS: c = vec3(metallic_roughness(m, metallic_roughness_texel(m, x, uv0, uv1)).y); break;
+    // Specular-glossiness materials have no metallic value: the metallic view flags
+    // them (SPEC_GLOSS_FLAG, sherpa::gpu::kSpecGlossFlagColor), their roughness is 1 - glossiness and their F0 the
+    // specular colour (VIEW_SPECULAR; metal-rough: mix(0.04, base, metallic)).
+    case VIEW_METALLIC:
+        c = x.workflow == WORKFLOW_SPECULAR_GLOSSINESS
+                ? SPEC_GLOSS_FLAG
+                : vec3(metallic_roughness(m, metallic_roughness_texel(m, x, uv0, uv1)).x);
+        break;
+    case VIEW_ROUGHNESS:
+        c = vec3(x.workflow == WORKFLOW_SPECULAR_GLOSSINESS
+                     ? 1.0 - specular_glossiness(x, uv0, uv1).a
+                     : metallic_roughness(m, metallic_roughness_texel(m, x, uv0, uv1)).y);
+        break;
+    case VIEW_SPECULAR:
+        c = x.workflow == WORKFLOW_SPECULAR_GLOSSINESS
+                ? specular_glossiness(x, uv0, uv1).rgb
+                : mix(vec3(0.04), base.rgb, metallic_roughness(m, metallic_roughness_texel(m, x, uv0, uv1)).x);
+        break;
     case VIEW_OCCLUSION: c = vec3(occlusion(m, x, uv0, uv1)); break;
     case VIEW_EMISSIVE: c = emission(m, x, uv0, uv1); break;
     case VIEW_GEOMETRIC_VS_SHADING: {

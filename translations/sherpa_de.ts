@@ -127,6 +127,10 @@
         <translation>Shading-Normale</translation>
     </message>
     <message>
+        <source>Specular (F0)</source>
+        <translation>Spiegelnd (F0)</translation>
+    </message>
+    <message>
         <source>Wireframe</source>
         <translation>Drahtgitter</translation>
     </message>

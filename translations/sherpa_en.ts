@@ -127,6 +127,10 @@
         <translation>Shading normal</translation>
     </message>
     <message>
+        <source>Specular (F0)</source>
+        <translation>Specular (F0)</translation>
+    </message>
+    <message>
         <source>Wireframe</source>
         <translation>Wireframe</translation>
     </message>

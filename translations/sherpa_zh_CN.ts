@@ -127,6 +127,10 @@
         <translation>着色法线</translation>
     </message>
     <message>
+        <source>Specular (F0)</source>
+        <translation>镜面反射 (F0)</translation>
+    </message>
+    <message>
         <source>Wireframe</source>
         <translation>线框</translation>
     </message>

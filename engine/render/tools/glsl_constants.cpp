@@ -47,6 +47,9 @@ std::string views() {
     std::ostringstream o;
     for (const gpu::DebugViewInfo& v : gpu::kDebugViews)
         o << "const uint VIEW_" << glsl_name(v.name) << " = " << u(v.id) << ";\n";
+    const auto& f = gpu::kSpecGlossFlagColor;
+    o << "// The metallic view on specular-glossiness materials (no metallic value).\n"
+      << "const vec3 SPEC_GLOSS_FLAG = vec3(" << f[0] << ", " << f[1] << ", " << f[2] << ");\n";
     return o.str();
 }
 

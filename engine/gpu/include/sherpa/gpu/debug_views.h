@@ -41,7 +41,13 @@ enum class DebugView : std::uint32_t {
     GeometricVsShading = 14, // angle between face normal and normal-mapped shading normal
     Provenance = 15,         // tangent provenance: green authored, yellow generated, red defaulted
     ShadingNormal = 16,      // normal after normal mapping (world)
+    Specular = 17,           // F0: specular-glossiness' specular, else mix(0.04, base, metallic)
 };
+
+// The metallic view's colour on specular-glossiness materials (no metallic value
+// there): not a grey, so no metallic value reads as it. GLSL: SPEC_GLOSS_FLAG
+// (generated with the VIEW_* constants). Linear data, stored as the 8-bit value.
+inline constexpr std::array<float, 3> kSpecGlossFlagColor{0.0f, 0.5f, 1.0f};
 
 enum Overlay : std::uint32_t {
     kOverlayWireframe = 1u << 0,
@@ -86,7 +92,7 @@ struct OverlayEntry {
     const char* label;
 };
 
-inline constexpr std::array<DebugViewInfo, 17> kDebugViews{{
+inline constexpr std::array<DebugViewInfo, 18> kDebugViews{{
     {DebugView::Lit, "lit", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Lit")},
     {DebugView::Normal, "normal", kNormalStream, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Normals")},
     {DebugView::Tangent, "tangent", kTangentStream,
@@ -112,6 +118,7 @@ inline constexpr std::array<DebugViewInfo, 17> kDebugViews{{
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Tangent provenance")},
     {DebugView::ShadingNormal, "shading-normal", kNormalStream | kTangentStream,
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Shading normal")},
+    {DebugView::Specular, "specular", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Specular (F0)")},
 }};
 
 inline constexpr std::array<OverlayEntry, 6> kOverlays{{

@@ -100,6 +100,9 @@ TEST_P(TextureExtension, ExtensionImageIsUsedAndRendersValidationClean) {
         EXPECT_TRUE(img.at("transcode_ms").is_number());
     }
     EXPECT_EQ(j.at("extensions_used").at(0).at("supported"), true);
+    // Every image of the file (PNG, WebP, both KTX2) decodes: none is a problem
+    // (info once probed KTX2 with OpenImageIO, which cannot read it).
+    EXPECT_EQ(j.at("image_problems"), nlohmann::json::array()) << j.at("image_problems");
     const std::string png = (work_dir() / (std::string(c.file) + ".png")).string();
     const test::CliRun render = test::run_cli(
         "render '" + path + "' -o '" + png + "' --width 64 --height 48 --validation --cache-dir '" +
@@ -144,6 +147,48 @@ TEST(TextureExtension, ExtensionSourceOutOfRangeIsNamed) {
         r.error.find("textures[0].extensions.KHR_texture_basisu.source: image 9 out of range"),
         std::string::npos)
         << r.error;
+}
+
+// Hand-broken KTX2 files (a level index whose offset wraps past 2^64, supercompression
+// global data that overruns the file) referenced through KHR_texture_basisu: the file
+// still opens, and info names the image's file and the problem (an undecodable image,
+// drawn as the missing-texture checker), never a crash.
+TEST(TextureExtension, BrokenKtx2NamesTheFileAndTheProblem) {
+    const auto put64 = [](std::vector<unsigned char>& b, std::size_t at, std::uint64_t v) {
+        for (int i = 0; i < 8; ++i)
+            b[at + std::size_t(i)] = static_cast<unsigned char>(v >> (8 * i));
+    };
+    struct Broken {
+        const char* file;
+        std::uint64_t at, value, at2, value2;
+        const char* problem;
+    };
+    const std::vector<unsigned char> good = test::read_bytes(work_dir() / "logo_uastc.ktx2");
+    for (const Broken& c :
+         {Broken{"bad_level_index.ktx2", 80, ~std::uint64_t{0} - 8, 88, 16, "level 0"},
+          Broken{"bad_sgd.ktx2", 64, good.size() - 4, 72, 64,
+                 "supercompression global data overruns"}}) {
+        std::vector<unsigned char> bytes = good;
+        put64(bytes, c.at, c.value);
+        put64(bytes, c.at2, c.value2);
+        std::ofstream(work_dir() / c.file, std::ios::binary)
+            .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+        nlohmann::json doc = test::read_json(box_with(std::string(c.file) + ".gltf",
+                                                      ext_texture("KHR_texture_basisu", 2, false),
+                                                      {"KHR_texture_basisu"}));
+        doc["images"][2]["uri"] = c.file;
+        const fs::path gltf = work_dir() / (std::string(c.file) + ".gltf");
+        std::ofstream(gltf) << doc.dump();
+        const test::CliRun info =
+            test::run_cli("info '" + gltf.string() + "' --json", "2>/dev/null");
+        ASSERT_EQ(info.exit_code, 0) << c.file << ": " << info.out;
+        const nlohmann::json problems = nlohmann::json::parse(info.out).at("image_problems");
+        ASSERT_EQ(problems.size(), 1u) << c.file << ": " << info.out;
+        const nlohmann::json& p = problems.at(0);
+        EXPECT_EQ(p.at("state"), "undecodable") << p;
+        EXPECT_NE(p.at("location").get<std::string>().find(c.file), std::string::npos) << p;
+        EXPECT_NE(p.at("reason").get<std::string>().find(c.problem), std::string::npos) << p;
+    }
 }
 
 } // namespace

@@ -37,6 +37,9 @@ public:
     void computeTangentErrors();
     // Scrolls the vertex table to a vertex and selects it (what "jump to vertex" does).
     void jumpToVertex(int vertex);
+    // The summary's compression clause for engine mesh `mesh` ("; codec modes: encoded
+    // -> decoded in N ms"), empty for a primitive the file does not compress.
+    static QString compressionText(const Scene& scene, int mesh);
 
 Q_SIGNALS:
     void selectVertexRequested(int vertex);
@@ -46,7 +49,6 @@ Q_SIGNALS:
 private:
     void showMesh();
     void updateSummary();
-    static QString compressionText(const Scene& scene, int mesh);
 
     const EditorContext& context_;
     int shown_mesh_ = -1;

@@ -1,6 +1,10 @@
 // The docks' models against the engine data they present, over every sample model,
 // plus the camera, picking, culling monitor and a million-vertex table.
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QtTest>
 
 #include <sherpa/scene/culling_passes.h>
@@ -11,6 +15,7 @@
 #include "editor_context.h"
 #include "format_values.h"
 #include "material_fields_model.h"
+#include "mesh_dock.h"
 #include "orbit_camera.h"
 #include "picking.h"
 #include "resolution_scale.h"
@@ -81,6 +86,7 @@ private Q_SLOTS:
     void everyAssetMatchesTheEngine_data();
     void everyAssetMatchesTheEngine();
     void materialFieldsFollowTheGpuLayout();
+    void docksShowCompressionContainerAndSpecGloss();
     void millionVertexTableSortsByPermutation();
     void generatedTangentsAgreeWithRegeneration();
     void frameKeepsTheBoxInView();
@@ -189,6 +195,82 @@ void ModelTests::materialFieldsFollowTheGpuLayout() {
     model.setMaterial(out.scene, out.extras, 0, gpu, MaterialFieldsModel::Source::GpuReadback,
                       table);
     QCOMPARE(model.textureOfRow(6), 3);
+}
+
+// What issue 15's files show in the docks: a Draco primitive's codec and sizes in the
+// mesh summary (as info --json reports them), a KTX2 image's payload and
+// supercompression in the texture table, and a spec-gloss material's own fields.
+void ModelTests::docksShowCompressionContainerAndSpecGloss() {
+    const LoadOutcome draco = SceneLoadJob::loadNow(
+        QStringLiteral(SHERPA_GLTF_COMPRESS_CACHE "/corpus/DamagedHelmet.draco.glb"));
+    QVERIFY2(draco.scene, qPrintable(draco.error));
+    const PrimitiveInfo& p = draco.scene->primitives.at(0);
+    QVERIFY(p.compression);
+    const QString text = MeshDock::compressionText(*draco.scene, int(p.engine_mesh));
+    QVERIFY2(text.contains(QStringLiteral("KHR_draco_mesh_compression ") +
+                           QString::fromStdString(p.compression->modes)),
+             qPrintable(text));
+    QVERIFY2(text.contains(Format::bytes(p.compression->encoded_bytes)) &&
+                 text.contains(Format::bytes(p.compression->decoded_bytes)),
+             qPrintable(text));
+    const LoadOutcome plain = SceneLoadJob::loadNow(test::asset(QStringLiteral("DamagedHelmet")));
+    QVERIFY(plain.scene);
+    QVERIFY(MeshDock::compressionText(*plain.scene, 0).isEmpty());
+
+    // BoxTextured with its image replaced by a Zstandard UASTC KTX2 of the basisu corpus,
+    // and its material by a spec-gloss one reading that texture.
+    QTemporaryDir dir;
+    QVERIFY(QFile::copy(QStringLiteral(SHERPA_BASISU_CACHE "/corpus/logo211_uastc_zstd.ktx2"),
+                        dir.filePath(QStringLiteral("logo.ktx2"))));
+    QVERIFY(QFile::copy(QStringLiteral(SHERPA_ASSETS_DIR "/gltf/BoxTextured/glTF/BoxTextured0.bin"),
+                        dir.filePath(QStringLiteral("BoxTextured0.bin"))));
+    QFile in(test::asset(QStringLiteral("BoxTextured")));
+    QVERIFY(in.open(QIODevice::ReadOnly));
+    QJsonObject doc = QJsonDocument::fromJson(in.readAll()).object();
+    doc[QStringLiteral("images")] =
+        QJsonArray{QJsonObject{{QStringLiteral("uri"), QStringLiteral("logo.ktx2")}}};
+    doc[QStringLiteral("textures")] = QJsonArray{QJsonObject{
+        {QStringLiteral("extensions"), QJsonObject{{QStringLiteral("KHR_texture_basisu"),
+                                                    QJsonObject{{QStringLiteral("source"), 0}}}}}}};
+    const QJsonObject sg{
+        {QStringLiteral("diffuseFactor"), QJsonArray{0.2, 0.4, 0.6, 1.0}},
+        {QStringLiteral("specularFactor"), QJsonArray{0.1, 0.2, 0.3}},
+        {QStringLiteral("glossinessFactor"), 0.7},
+        {QStringLiteral("specularGlossinessTexture"), QJsonObject{{QStringLiteral("index"), 0}}}};
+    doc[QStringLiteral("materials")] = QJsonArray{
+        QJsonObject{{QStringLiteral("extensions"),
+                     QJsonObject{{QStringLiteral("KHR_materials_pbrSpecularGlossiness"), sg}}}}};
+    doc[QStringLiteral("extensionsUsed")] =
+        QJsonArray{QStringLiteral("KHR_texture_basisu"),
+                   QStringLiteral("KHR_materials_pbrSpecularGlossiness")};
+    const QString path = dir.filePath(QStringLiteral("box.gltf"));
+    QFile out(path);
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write(QJsonDocument(doc).toJson());
+    out.close();
+    const LoadOutcome box = SceneLoadJob::loadNow(path);
+    QVERIFY2(box.scene, qPrintable(box.error));
+    TextureTableModel textures;
+    textures.setScene(box.scene, box.extras);
+    QCOMPARE(display(textures, 0, TextureTableModel::ContainerColumn),
+             QStringLiteral("ktx2-uastc · zstd"));
+
+    const MaterialInstance& m = box.scene->materials.at(0);
+    QVERIFY(m.specular_glossiness);
+    MaterialFieldsModel fields;
+    fields.setMaterial(box.scene, box.extras, 0, to_gpu_material(m),
+                       MaterialFieldsModel::Source::Cpu);
+    QCOMPARE(fields.rowCount(), 14 + 3); // the GPUMaterialData fields, then the extension's
+    QCOMPARE(display(fields, 0, MaterialFieldsModel::PropertyColumn),
+             QStringLiteral("KHR_materials_pbrSpecularGlossiness.diffuseFactor"));
+    QCOMPARE(display(fields, 0, MaterialFieldsModel::ValueColumn),
+             Format::vec(glm::vec4(0.2f, 0.4f, 0.6f, 1.0f)));
+    QCOMPARE(display(fields, 15, MaterialFieldsModel::ValueColumn),
+             Format::vec(glm::vec4(0.1f, 0.2f, 0.3f, 0.7f)));
+    QCOMPARE(
+        display(fields, 15, MaterialFieldsModel::PropertyColumn),
+        QStringLiteral("KHR_materials_pbrSpecularGlossiness.specularFactor, glossinessFactor"));
+    QCOMPARE(fields.textureOfRow(16), 0); // specularGlossinessTexture
 }
 
 void ModelTests::millionVertexTableSortsByPermutation() {

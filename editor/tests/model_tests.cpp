@@ -394,6 +394,20 @@ void ModelTests::pickHitsLinesAndPointsWithinACone() {
     QCOMPARE(point.instance, std::int64_t{1});
     QCOMPARE(point.triangle, std::int64_t{0});
     QVERIFY(!pick(s, {0.3f, 2.0f, 5.0f}, down, all));
+    // The mesh dock's element table lists them as what they are: segments (two
+    // vertices, a length) and points (one vertex, no area).
+    auto shared = std::make_shared<const Scene>(std::move(s));
+    TriangleTableModel elements;
+    elements.setMesh(MeshRef{shared, 0});
+    QCOMPARE(elements.rowCount(), 2);
+    QCOMPARE(display(elements, 1, TriangleTableModel::V0), QStringLiteral("1"));
+    QCOMPARE(display(elements, 1, TriangleTableModel::V1), QStringLiteral("2"));
+    QVERIFY(display(elements, 1, TriangleTableModel::V2).isEmpty());
+    QCOMPARE(display(elements, 1, TriangleTableModel::AreaColumn), Format::number(1.0));
+    elements.setMesh(MeshRef{shared, 1});
+    QCOMPARE(elements.rowCount(), 1);
+    QVERIFY(display(elements, 0, TriangleTableModel::V1).isEmpty());
+    QVERIFY(display(elements, 0, TriangleTableModel::AreaColumn).isEmpty());
 }
 
 void ModelTests::cullingMonitorFreezes() {

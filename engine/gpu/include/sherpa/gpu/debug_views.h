@@ -41,6 +41,7 @@ enum class DebugView : std::uint32_t {
     GeometricVsShading = 14, // angle between face normal and normal-mapped shading normal
     Provenance = 15,         // tangent provenance: green authored, yellow generated, red defaulted
     ShadingNormal = 16,      // normal after normal mapping (world)
+    JointInfluence = 17,     // weight of RenderSettings::selected_joint, as a heat map
 };
 
 enum Overlay : std::uint32_t {
@@ -86,7 +87,7 @@ struct OverlayEntry {
     const char* label;
 };
 
-inline constexpr std::array<DebugViewInfo, 17> kDebugViews{{
+inline constexpr std::array<DebugViewInfo, 18> kDebugViews{{
     {DebugView::Lit, "lit", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Lit")},
     {DebugView::Normal, "normal", kNormalStream, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Normals")},
     {DebugView::Tangent, "tangent", kTangentStream,
@@ -112,6 +113,8 @@ inline constexpr std::array<DebugViewInfo, 17> kDebugViews{{
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Tangent provenance")},
     {DebugView::ShadingNormal, "shading-normal", kNormalStream | kTangentStream,
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Shading normal")},
+    {DebugView::JointInfluence, "joint-influence", 0,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Joint influence")},
 }};
 
 inline constexpr std::array<OverlayEntry, 6> kOverlays{{

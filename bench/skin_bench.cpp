@@ -184,6 +184,20 @@ int main(int argc, char** argv) {
         settings.width = width;
         settings.height = height;
         settings.pose = pose;
+        // One camera for both, on the posed geometry (auto framing would frame each
+        // scene's bounds as loaded: the moving one's are the bind pose's).
+        const Aabb posed = posed_scene_bounds(s, *pose).exact;
+        const glm::vec3 c = posed.center();
+        const float r = std::max(0.5f * glm::length(posed.extent()), 1e-3f);
+        const glm::vec3 eye = c + glm::normalize(glm::vec3(0.35f, 0.3f, 1.0f)) * (2.2f * r);
+        char camera[256];
+        std::snprintf(camera, sizeof(camera), "eye=%g,%g,%g:target=%g,%g,%g:near=%g", eye.x,
+                      eye.y, eye.z, c.x, c.y, c.z, 0.01f * r);
+        std::string error;
+        if (!gpu::parse_camera_spec(camera, settings.camera, error)) {
+            std::fprintf(stderr, "%s: %s\n", m.name.c_str(), error.c_str());
+            return 1;
+        }
         Times skinned, still;
         std::uint64_t vertices = 0;
         for (const Mesh& mesh : s.meshes) vertices += mesh.vertices.size();

@@ -227,7 +227,7 @@ int run_render(Args args) {
             return kExitLoadError;
         }
         // The importer's warnings, as info prints them (skipped objects, repaired data,
-        // what the renderer leaves out: animations, morph targets, skins), then the
+        // what the renderer leaves out: animations without --time, unused attributes), then the
         // texture pipeline's: nothing the file holds is dropped without a word.
         for (const auto& w : loaded.scene->warnings)
             std::fprintf(stderr, "warning: %s\n", w.c_str());

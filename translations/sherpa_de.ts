@@ -127,6 +127,10 @@
         <translation>Shading-Normale</translation>
     </message>
     <message>
+        <source>Joint influence</source>
+        <translation>Gelenkeinfluss</translation>
+    </message>
+    <message>
         <source>Wireframe</source>
         <translation>Drahtgitter</translation>
     </message>

@@ -127,6 +127,10 @@
         <translation>Shading normal</translation>
     </message>
     <message>
+        <source>Joint influence</source>
+        <translation>Joint influence</translation>
+    </message>
+    <message>
         <source>Wireframe</source>
         <translation>Wireframe</translation>
     </message>

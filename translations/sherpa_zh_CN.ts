@@ -127,6 +127,10 @@
         <translation>着色法线</translation>
     </message>
     <message>
+        <source>Joint influence</source>
+        <translation>关节影响</translation>
+    </message>
+    <message>
         <source>Wireframe</source>
         <translation>线框</translation>
     </message>

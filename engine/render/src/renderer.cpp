@@ -150,6 +150,10 @@ void Renderer::Impl::unload() {
         slot->cull_readback_capacity = 0;
         slot->culling.count = 0;
         slot->posed = false;
+        resources->destroy(slot->pose); // sized for the scene's instances and joints
+        slot->pose_capacity = 0;
+        resources->destroy(slot->cull_objects);
+        slot->cull_objects_capacity = 0;
     }
     culling.reset();
     pose_.reset();

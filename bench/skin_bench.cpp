@@ -191,8 +191,8 @@ int main(int argc, char** argv) {
         const float r = std::max(0.5f * glm::length(posed.extent()), 1e-3f);
         const glm::vec3 eye = c + glm::normalize(glm::vec3(0.35f, 0.3f, 1.0f)) * (2.2f * r);
         char camera[256];
-        std::snprintf(camera, sizeof(camera), "eye=%g,%g,%g:target=%g,%g,%g:near=%g", eye.x,
-                      eye.y, eye.z, c.x, c.y, c.z, 0.01f * r);
+        std::snprintf(camera, sizeof(camera), "eye=%g,%g,%g:target=%g,%g,%g:near=%g", eye.x, eye.y,
+                      eye.z, c.x, c.y, c.z, 0.01f * r);
         std::string error;
         if (!gpu::parse_camera_spec(camera, settings.camera, error)) {
             std::fprintf(stderr, "%s: %s\n", m.name.c_str(), error.c_str());

@@ -8,13 +8,13 @@
 // first two frames (pipeline compilation, first shadow map) are not counted. The
 // CPU columns are process CPU time per frame (lavapipe's threads included): on a
 // shared machine they move less than wall time does.
+#include "process_cpu.h"
+
 #include <sherpa/core/heap_tuning.h>
 #include <sherpa/gpu/context.h>
 #include <sherpa/render/gpu_scene.h>
 #include <sherpa/render/renderer.h>
 #include <sherpa/scene/scene_loader.h>
-
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
@@ -35,13 +35,6 @@ double median(std::vector<double> v) {
     return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
-double cpu_ms() {
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u); // every thread of the process: lavapipe's too
-    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) * 1e3 +
-           double(u.ru_utime.tv_usec + u.ru_stime.tv_usec) * 1e-3;
-}
-
 struct FrameTimes {
     double wall_ms = 0.0; // median wall clock per frame
     double cpu_ms = 0.0;  // mean CPU time per frame, all threads (less sensitive to a busy machine)
@@ -51,7 +44,7 @@ FrameTimes measure(gpu::Renderer& renderer, const gpu::RenderSettings& s, int fr
     std::vector<double> ms;
     double cpu0 = 0.0;
     for (int f = 0; f < frames + 2; ++f) {
-        if (f == 2) cpu0 = cpu_ms();
+        if (f == 2) cpu0 = bench::process_cpu_ms();
         const auto t0 = std::chrono::steady_clock::now();
         renderer.render(s);
         const double dt =
@@ -59,7 +52,7 @@ FrameTimes measure(gpu::Renderer& renderer, const gpu::RenderSettings& s, int fr
                 .count();
         if (f >= 2) ms.push_back(dt);
     }
-    return {median(ms), (cpu_ms() - cpu0) / frames};
+    return {median(ms), (bench::process_cpu_ms() - cpu0) / frames};
 }
 
 std::vector<std::string> default_scenes() {

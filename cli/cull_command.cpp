@@ -1,8 +1,10 @@
 // sherpa-cli cull SCENE --camera SPEC [--method sphere|pvertex|exact|gpu] [--json]
+//   [--animation N --time T | --pose bind]
 // The camera pass plus one pass per shadow cascade of the scene's first
 // directional light (or a default sun): the cascades the renderer draws for this
 // camera (sherpa/scene/shadow_cascades.h), casters only.
 #include "cli_common.h"
+#include "pose_options.h"
 #include "scene_json.h"
 
 #include <sherpa/render/cull_check.h>
@@ -21,7 +23,8 @@ namespace {
 constexpr const char* kUsage =
     "usage: sherpa-cli cull SCENE --camera "
     "eye=x,y,z:target=x,y,z[:up=..][:fov=DEG][:aspect=A][:near=N][:far=F]\n"
-    "                          [--method sphere|pvertex|exact|gpu] [--json]\n";
+    "                          [--method sphere|pvertex|exact|gpu] [--json]\n"
+    "                          [--animation N --time T | --pose bind]\n";
 
 nlohmann::json pass_json(const Scene& s, const PassResult& p) {
     nlohmann::json visible = nlohmann::json::array();
@@ -46,7 +49,15 @@ nlohmann::json pass_json(const Scene& s, const PassResult& p) {
 int run_cull(Args args) {
     std::string_view spec, camera_text, method_text = "pvertex";
     bool as_json = false;
+    PoseOptions pose_options;
     for (std::size_t i = 0; i < args.size(); ++i) {
+        std::string pose_error;
+        const OptionMatch pm = parse_pose_option(args, i, pose_options, pose_error);
+        if (pm == OptionMatch::Bad) {
+            std::fprintf(stderr, "error: %s\n%s", pose_error.c_str(), kUsage);
+            return kExitUsage;
+        }
+        if (pm == OptionMatch::Taken) continue;
         if (args[i] == "--json")
             as_json = true;
         else if (args[i] == "--camera" && i + 1 < args.size())
@@ -85,6 +96,13 @@ int run_cull(Args args) {
     if (!r) {
         std::fprintf(stderr, "error: %s\n", r.error.c_str());
         return kExitLoadError;
+    }
+    // Posed: every instance culled with its conservative bounds in that pose.
+    if (const auto pose = resolve_pose(*r.scene, pose_options, error); pose)
+        apply_pose_bounds(*r.scene, *pose);
+    else if (!error.empty()) {
+        std::fprintf(stderr, "error: %s\n%s", error.c_str(), kUsage);
+        return kExitUsage;
     }
     const Scene& s = *r.scene;
     const CullInput input = prepare_cull_input(s);

@@ -2,8 +2,9 @@
 //   [--overlay NAME ...] [--camera auto|gltf:N|eye=x,y,z:target=x,y,z[...]]
 //   [--frames N] [--report FILE.json] [--validation] [--no-shadows] [--prepass|--no-prepass]
 //   [--glyph-length L] [--floor] [--cache-dir DIR] [--cache-cap-mb N] [--quality N]
-//   [--no-cache] [--no-bc]
+//   [--no-cache] [--no-bc] [--animation N --time T | --pose bind]
 #include "cli_common.h"
+#include "pose_options.h"
 #include "render_report.h"
 #include "texture_cli.h"
 
@@ -32,7 +33,8 @@ constexpr const char* kUsage =
     "[--prepass|--no-prepass]\n"
     "         [--glyph-length L] [--floor] [--cull none|cpu|gpu] [--cull-method "
     "sphere|pvertex|exact]\n"
-    "         [--cull-check] [--freeze-cull eye=x,y,z:target=x,y,z[:...]]\n         ";
+    "         [--cull-check] [--freeze-cull eye=x,y,z:target=x,y,z[:...]]\n"
+    "         [--animation N --time T | --pose bind]\n         ";
 
 std::string joined(const std::vector<std::string_view>& names);
 
@@ -69,12 +71,16 @@ int run_render(Args args) {
     std::uint32_t frames = 1;
     bool validation = gpu::ContextOptions::default_validation();
     TextureCliOptions texture_options;
+    PoseOptions pose_options;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string_view a = args[i];
         std::string option_error;
         const OptionMatch m = parse_texture_option(args, i, texture_options, option_error);
         if (m == OptionMatch::Bad) return usage_error(option_error);
         if (m == OptionMatch::Taken) continue;
+        const OptionMatch pm = parse_pose_option(args, i, pose_options, option_error);
+        if (pm == OptionMatch::Bad) return usage_error(option_error);
+        if (pm == OptionMatch::Taken) continue;
         auto value = [&]() -> std::optional<std::string_view> {
             if (i + 1 >= args.size()) return std::nullopt;
             return args[++i];
@@ -179,6 +185,12 @@ int run_render(Args args) {
         std::fprintf(stderr, "error: %s\n", loaded.error.c_str());
         return kExitLoadError;
     }
+    {
+        std::string error;
+        settings.pose = resolve_pose(*loaded.scene, pose_options, error);
+        if (!error.empty()) return usage_error(error);
+        run.settings.pose = settings.pose;
+    }
     try {
         gpu::ContextOptions options;
         options.validation = validation;
@@ -215,7 +227,7 @@ int run_render(Args args) {
             return kExitLoadError;
         }
         // The importer's warnings, as info prints them (skipped objects, repaired data,
-        // what the renderer leaves out: animations, morph targets, skins), then the
+        // what the renderer leaves out: animations without --time, unused attributes), then the
         // texture pipeline's: nothing the file holds is dropped without a word.
         for (const auto& w : loaded.scene->warnings)
             std::fprintf(stderr, "warning: %s\n", w.c_str());

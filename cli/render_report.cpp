@@ -88,6 +88,8 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
                                  {"textures", m.textures},
                                  {"materials", m.materials},
                                  {"instances", m.instances},
+                                 // Skinning and morph streams: 0 for a static scene.
+                                 {"motion", m.motion},
                                  {"total", m.total()},
                                  {"render_targets", renderer.render_target_bytes()}};
         j["vertex_layout"] = {

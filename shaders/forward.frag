@@ -15,6 +15,7 @@ layout(location = 2) in vec4 in_tangent;
 layout(location = 3) in vec2 in_uv0;
 layout(location = 4) in vec2 in_uv1;
 layout(location = 5) in vec4 in_color;
+layout(location = 6) in float in_joint_weight; // read only by the joint-influence view
 
 layout(location = 0) out vec4 out_color;
 
@@ -137,6 +138,7 @@ void main() {
     }
     case VIEW_PROVENANCE: c = provenance_color((pc.mesh_flags >> TANGENT_PROVENANCE_SHIFT) & 3u); break;
     case VIEW_SHADING_NORMAL: c = encode_vector(mapped_normal(m, x, t, b, n, uv0, uv1)); break;
+    case VIEW_JOINT_INFLUENCE: c = heat_ramp(in_joint_weight); break;
     default: {
         if (x.unlit != 0u || UNLIT_TOPOLOGY) {
             c = base.rgb;

@@ -1,7 +1,9 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Full vertex pulling for shading: every stream the GPU holds, defaults for the rest.
+// Full vertex pulling for shading: every stream the GPU holds, defaults for the rest;
+// moving meshes are skinned and morphed first (motion.glsl, MOTION pipelines only).
 #include "common.glsl"
+#include "motion.glsl"
 
 layout(location = 0) out vec3 out_world_pos;
 layout(location = 1) out vec3 out_normal;
@@ -9,6 +11,7 @@ layout(location = 2) out vec4 out_tangent;
 layout(location = 3) out vec2 out_uv0;
 layout(location = 4) out vec2 out_uv1;
 layout(location = 5) out vec4 out_color;
+layout(location = 6) out float out_joint_weight; // the joint-influence view
 // Outputs the fragment shader does not read (absent streams are constants there,
 // see forward.frag) are removed when the pipeline links the two stages.
 
@@ -22,16 +25,14 @@ invariant gl_Position;
 void main() {
     uint i = uint(gl_VertexIndex);
     GPUInstanceData inst = pc.instances.v[pc.instance_ids.v[gl_InstanceIndex]];
-    vec4 world = inst.model * vec4(pc.positions.v[i], 1.0);
-    mat3 nm = normal_matrix(inst);
-    vec4 t = fetch_tangent(i);
-    out_world_pos = world.xyz;
-    out_normal = nm * fetch_normal(i);
-    // Tangents are directions on the surface: they transform with the model matrix.
-    out_tangent = vec4(mat3(inst.model) * t.xyz, t.w);
+    Deformed d = deform(i, inst, true);
+    out_world_pos = d.position;
+    out_normal = d.normal;
+    out_tangent = d.tangent;
     out_uv0 = fetch_uv0(i);
     out_uv1 = fetch_uv1(i);
     out_color = fetch_color(i);
-    gl_Position = frame.view_proj * world;
+    out_joint_weight = d.highlight;
+    gl_Position = frame.view_proj * vec4(d.position, 1.0);
     gl_PointSize = POINT_SIZE; // read only by point-list pipelines
 }

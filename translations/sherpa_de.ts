@@ -131,6 +131,10 @@
         <translation>Spiegelnd (F0)</translation>
     </message>
     <message>
+        <source>Joint influence</source>
+        <translation>Gelenkeinfluss</translation>
+    </message>
+    <message>
         <source>Wireframe</source>
         <translation>Drahtgitter</translation>
     </message>

@@ -131,6 +131,10 @@
         <translation>Specular (F0)</translation>
     </message>
     <message>
+        <source>Joint influence</source>
+        <translation>Joint influence</translation>
+    </message>
+    <message>
         <source>Wireframe</source>
         <translation>Wireframe</translation>
     </message>

@@ -131,6 +131,10 @@
         <translation>镜面反射 (F0)</translation>
     </message>
     <message>
+        <source>Joint influence</source>
+        <translation>关节影响</translation>
+    </message>
+    <message>
         <source>Wireframe</source>
         <translation>线框</translation>
     </message>

@@ -46,8 +46,8 @@ struct GPUInstanceData {
     vec4 normal_matrix[3];   // 64: columns of transpose(inverse(mat3(model)))
     uint material;           // 112
     uint mesh;               // 116
-    uint flags;              // 120
-    uint pad;                // 124
+    uint joint_base;         // 120: moving meshes: first joint matrix in the pose buffer
+    uint weight_base;        // 124: first morph weight (a float index into the pose buffer)
 };
 
 layout(buffer_reference, scalar, buffer_reference_align = 16) readonly buffer InstanceRef {
@@ -76,6 +76,20 @@ layout(buffer_reference, scalar, buffer_reference_align = 4) readonly buffer Ins
     uint v[];
 };
 
+// Skinning and morphing streams of one moving mesh (GPUMotionMesh; motion.glsl uses it).
+layout(buffer_reference, scalar, buffer_reference_align = 4) readonly buffer JointRef { uvec2 v[]; };
+layout(buffer_reference, scalar, buffer_reference_align = 8) readonly buffer MotionMeshRef {
+    JointRef joints;         // 0: four 16-bit joint indices per vertex and set
+    Vec4Ref weights;         // 8
+    Vec3Ref morph_positions; // 16: per target and vertex, target-major
+    Vec3Ref morph_normals;   // 24
+    Vec3Ref morph_tangents;  // 32
+    uint vertex_count;       // 40
+    uint influence_sets;     // 44
+    uint target_count;       // 48
+    uint flags;              // 52: MOTION_*
+};
+
 layout(push_constant, scalar) uniform Push {
     InstanceRef instances;          // 0
     Vec3Ref positions;              // 8
@@ -91,6 +105,10 @@ layout(push_constant, scalar) uniform Push {
     float glyph_length;             // 76
     vec4 color;                     // 80: flat colour of overlays
     InstanceIdRef instance_ids;     // 96: gl_InstanceIndex -> GPU instance
+    MotionMeshRef motion;           // 104: the drawn mesh's motion streams (moving meshes)
+    Vec4Ref pose;                   // 112: joint matrices (4 vec4 each), then floats
+    uint highlight_base;            // 120: float index of the joint-influence highlights
+    uint pad;                       // 124
 } pc;
 
 #include "sherpa_mesh_flags.glsl" // mesh_flags: HAS_* stream bits, *_SHIFT, NO_CASCADE

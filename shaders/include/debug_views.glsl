@@ -39,4 +39,11 @@ vec3 angle_ramp(float radians_) {
     return t < 0.5 ? mix(vec3(0.1, 0.2, 0.8), vec3(1.0, 0.9, 0.1), t * 2.0)
                    : mix(vec3(1.0, 0.9, 0.1), vec3(0.9, 0.1, 0.05), t * 2.0 - 1.0);
 }
+// Weight of the selected joint: dark blue 0 -> cyan -> yellow -> red 1.
+vec3 heat_ramp(float w) {
+    float t = clamp(w, 0.0, 1.0);
+    return t < 0.33 ? mix(vec3(0.05, 0.05, 0.35), vec3(0.1, 0.7, 0.9), t / 0.33)
+         : t < 0.66 ? mix(vec3(0.1, 0.7, 0.9), vec3(1.0, 0.9, 0.1), (t - 0.33) / 0.33)
+                    : mix(vec3(1.0, 0.9, 0.1), vec3(0.9, 0.1, 0.05), (t - 0.66) / 0.34);
+}
 #endif

@@ -1,10 +1,14 @@
 // sherpa-cli info on skins, morph targets and animations (issue #16): the JSON keys,
-// --time/--animation, and usage errors. The posed bounds are checked against three.js
-// in motion_oracle_test.cpp.
+// --time/--animation, and usage errors; render and cull with a pose. The posed bounds are checked
+// against three.js in motion_oracle_test.cpp.
 #include "cli/cli_run.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include <sherpa/texture/image.h>
 
 namespace {
 
@@ -78,6 +82,69 @@ TEST(CliMotion, BadAnimationOrTimeIsAUsageError) {
         const CliRun r = run_cli(f + args);
         EXPECT_EQ(r.exit_code, 2) << args << ": " << r.out;
         EXPECT_NE(r.out.find("error: "), std::string::npos) << args;
+    }
+}
+
+std::vector<std::uint8_t> render_rgba(const std::string& file, const std::string& extra) {
+    const std::string png =
+        (std::filesystem::temp_directory_path() / "sherpa_cli_motion_render.png").string();
+    const CliRun r = run_cli("render '" + file + "' -o " + png +
+                             " --width 64 --height 64 --validation --cache-dir '" +
+                             SHERPA_TEST_TEXTURE_CACHE + "' " + extra);
+    EXPECT_EQ(r.exit_code, 0) << extra << ": " << r.out;
+    std::uint32_t w = 0, h = 0;
+    std::vector<std::uint8_t> rgba;
+    std::string error;
+    if (r.exit_code == 0) {
+        EXPECT_TRUE(sherpa::tex::read_png_rgba8(png, w, h, rgba, error)) << error;
+    }
+    std::filesystem::remove(png);
+    return rgba;
+}
+
+TEST(CliMotion, RenderDrawsThePoseAskedFor) {
+    const std::string rig = sherpa::test::gltf_asset("RiggedSimple");
+    const auto posed = render_rgba(rig, "--animation 0 --time 0.5 --camera auto");
+    const auto bind = render_rgba(rig, "--pose bind --camera auto");
+    const auto plain = render_rgba(rig, "--camera auto");
+    ASSERT_FALSE(posed.empty());
+    EXPECT_EQ(bind, plain) << "without a pose option the default pose is drawn";
+    EXPECT_NE(posed, bind) << "the rig bends at t = 0.5";
+    // A morph target's default weights are drawn: not the base shape.
+    EXPECT_FALSE(render_rgba(sherpa::test::gltf_asset("SimpleMorph"), "--time 0").empty());
+}
+
+TEST(CliMotion, CullTestsTheInstancesWhereThePosePutsThem) {
+    // BoxAnimated's inner box rises to y = 3.1 at t = 1.5 (its bounds as loaded end at
+    // y = 0.5): a narrow camera on the top of the posed bounds sees it only posed.
+    const std::string box = sherpa::test::gltf_asset("BoxAnimated");
+    const json at = info_json(box, "--time 1.5");
+    const float top = at["posed_bounds"]["max"][1].get<float>();
+    ASSERT_GT(top, 2.0f);
+    const std::string y = std::to_string(top - 0.3f);
+    const std::string camera = "--camera eye=0," + y + ",6:target=0," + y + ",0:fov=10";
+    for (const char* method : {"pvertex", "gpu"}) {
+        const CliRun posed =
+            run_cli("cull '" + box + "' --json " + camera + " --method " + method + " --time 1.5");
+        ASSERT_EQ(posed.exit_code, 0) << posed.out;
+        EXPECT_FALSE(json::parse(posed.out)["passes"][0]["visible"].empty()) << method;
+        const CliRun bind =
+            run_cli("cull '" + box + "' --json " + camera + " --method " + method + " --pose bind");
+        ASSERT_EQ(bind.exit_code, 0) << bind.out;
+        EXPECT_TRUE(json::parse(bind.out)["passes"][0]["visible"].empty()) << method;
+    }
+}
+
+TEST(CliMotion, BadPoseOptionsAreUsageErrors) {
+    const std::string rig = sherpa::test::gltf_asset("RiggedSimple");
+    for (const char* args : {"--pose rest", "--pose bind --time 1", "--time nan",
+                             "--animation 3 --time 0", "--animation 0"}) {
+        for (const std::string& cmd : {"render '" + rig + "' -o /dev/null ",
+                                       "cull '" + rig + "' --camera eye=0,0,5:target=0,0,0 "}) {
+            const CliRun r = run_cli(cmd + args);
+            EXPECT_EQ(r.exit_code, 2) << cmd << args << ": " << r.out;
+            EXPECT_NE(r.out.find("error: "), std::string::npos) << args;
+        }
     }
 }
 

@@ -45,6 +45,8 @@ TEST(CliRender, WritesPngAndReportWithEveryCategory) {
     for (const char* key :
          {"vertex_streams", "indices", "textures", "materials", "instances", "total"})
         EXPECT_GT(j["gpu_memory_bytes"][key].get<std::uint64_t>(), 0u) << key;
+    // A static scene carries no skinning or morph bytes.
+    EXPECT_EQ(j["gpu_memory_bytes"]["motion"].get<std::uint64_t>(), 0u);
     EXPECT_GT(j["vertex_layout"]["unified_56_byte_bytes"].get<std::uint64_t>(),
               j["vertex_layout"]["used_streams_bytes"].get<std::uint64_t>());
     for (const char* pass :
@@ -98,15 +100,12 @@ bool warned(const std::string& out, const std::string& fragment) {
     return false;
 }
 
-// Until the renderer skins, morphs and plays animations, render says what it leaves
-// out, as info does: animations, morph targets, skins and unused attributes.
+// Render says what it leaves out, as info does: animations drawn in their default
+// pose without --time, and unused attributes (skins and morph targets are drawn).
 TEST(CliRender, NamesWhatItDoesNotDraw) {
     const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
-        {"RiggedSimple",
-         {"animation(s)", "not played by `render`", "drawn in their bind pose",
-          "attributes JOINTS_0, WEIGHTS_0 are not used for drawing"}},
-        {"AnimatedMorphSphere",
-         {"animation(s) (\"Globe\")", "1 primitive(s) with 2 morph target(s)"}}};
+        {"RiggedSimple", {"animation(s)", "draw the default pose unless given `--animation N"}},
+        {"AnimatedMorphSphere", {"animation(s) (\"Globe\")", "`--animation N --time T`"}}};
     for (const auto& [model, fragments] : cases) {
         const std::string png = temp_path(model + ".png");
         const CliRun r = run_cli("render '" + sherpa::test::gltf_asset(model) + "' -o " + png +

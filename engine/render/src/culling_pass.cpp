@@ -102,6 +102,7 @@ void CullingPass::build_gpu(const GpuScene& scene) {
             objects.push_back(
                 make_cull_object(scene.instance_bounds()[inst], culling_->group_batch[g], inst));
             instances.push_back(inst);
+            culling_->gpu_object_batch.push_back(culling_->group_batch[g]);
         }
     }
     const auto pipeline = std::make_shared<const GpuCullPipeline>(context_); // one for all views
@@ -128,7 +129,7 @@ void CullingPass::test_cpu(FrameContext& f, PassCull& view, bool caster_view, bo
             for (std::uint32_t k = 0; k < groups[g].instance_count; ++k) {
                 const std::uint32_t i = groups[g].first_instance + k;
                 view.visible[i] = culling_->invalid[i] ||
-                                  box_visible(view.frustum, f.scene->instance_bounds()[i], method);
+                                  box_visible(view.frustum, instance_bounds(f)[i], method);
                 view.group_visible[g] += view.visible[i];
             }
         }
@@ -148,6 +149,36 @@ void CullingPass::test_cpu(FrameContext& f, PassCull& view, bool caster_view, bo
         st.visible += view.group_visible[g];
     }
     st.culled = st.tested - st.visible;
+}
+
+// A moving scene's instance boxes in this frame's pose, for the CPU test.
+void CullingPass::use_posed_bounds(FrameContext& f) {
+    const auto& bounds = f.slot.posed_bounds;
+    culling_->boxes.assign(bounds);
+    std::fill(culling_->invalid.begin(), culling_->invalid.end(), 0);
+    for (std::uint32_t i : culling_->boxes.invalid) culling_->invalid[i] = 1;
+}
+
+// The GPU cullers' objects with this frame's posed boxes, in the cullers' order,
+// into the slot's host-visible buffer; returns its address.
+VkDeviceAddress CullingPass::write_posed_objects(FrameContext& f) {
+    FrameSlot& slot = f.slot;
+    const GpuCuller& culler = *culling_->gpu.front();
+    const auto& instances = culler.object_instances();
+    const VkDeviceSize bytes = std::max<VkDeviceSize>(instances.size(), 1) * sizeof(GPUCullObject);
+    if (bytes > slot.cull_objects_capacity) {
+        resources_.destroy(slot.cull_objects);
+        slot.cull_objects_capacity = bytes;
+        slot.cull_objects = resources_.create_buffer(
+            {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+             MemoryUsage::Upload, "posed cull objects"});
+    }
+    const Buffer& buf = resources_.get(slot.cull_objects);
+    auto* out = static_cast<GPUCullObject*>(buf.mapped);
+    for (std::size_t k = 0; k < instances.size(); ++k)
+        out[k] = make_cull_object(slot.posed_bounds[instances[k]], culling_->gpu_object_batch[k],
+                                  instances[k]);
+    return buf.address;
 }
 
 // Per-frame buffers sized for `instances`: compacted ids (CPU path), the readback of
@@ -196,6 +227,7 @@ void CullingPass::record(FrameContext& f) {
     slot.prepass.pass = "depth_prepass";
     slot.history_pushed = false;
     if (!f.scene || !culling_) return;
+    if (slot.posed) use_posed_bounds(f);
     if (culling_->identity.valid())
         slot.push_base.instance_ids = resources_.get(culling_->identity).address;
     const std::uint32_t n = static_cast<std::uint32_t>(culling_->boxes.size());
@@ -237,6 +269,7 @@ void CullingPass::record(FrameContext& f) {
         any ? VkDeviceSize{any->batch_count()} * sizeof(VkDrawIndexedIndirectCommand) : 0;
     const VkDeviceSize flag_bytes = any && fc.check ? VkDeviceSize{any->object_count()} * 4 : 0;
     const std::uint32_t block = f.slot_index % Renderer::kFramesInFlight;
+    const VkDeviceAddress posed_objects = gpu && slot.posed ? write_posed_objects(f) : 0;
 
     const auto& groups = f.scene->groups();
     for (std::uint32_t v = 0; v < fc.count; ++v) {
@@ -275,7 +308,7 @@ void CullingPass::record(FrameContext& f) {
             if (slot.cull_timestamps)
                 vkCmdWriteTimestamp2(f.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                                      slot.cull_timestamps.get(), 2 * v);
-            culler.record(f.cmd, view.frustum, settings.cull_method, block, false);
+            culler.record(f.cmd, view.frustum, settings.cull_method, block, false, posed_objects);
             if (slot.cull_timestamps)
                 vkCmdWriteTimestamp2(f.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                                      slot.cull_timestamps.get(), 2 * v + 1);

@@ -46,7 +46,7 @@ bool draw_culled(FrameContext& f, std::size_t group, const PassCull& cull, GPUPu
 // a lines or points mesh).
 bool set_group_state(FrameContext& f, const DrawPipeline& pipeline, const DrawGroup& g,
                      const GpuMesh& mesh, VkPipeline& bound, GPUPushConstants& pc) {
-    if (pipeline.fixed && !is_triangle_mesh(mesh.flags)) return false;
+    if (pipeline.fixed != PipelineId::Count && !is_triangle_mesh(mesh.flags)) return false;
     if (const VkPipeline want = f.pipelines.resolve(pipeline, mesh.flags); want != bound) {
         vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, want);
         bound = want;
@@ -86,6 +86,14 @@ void set_mesh(GPUPushConstants& pc, const GpuMesh& mesh, std::uint32_t material)
     pc.colors = mesh.stream[std::size_t(VertexAttribute::Color0)];
     pc.material_id = material;
     pc.mesh_flags = mesh.flags;
+    pc.motion = mesh.motion;
+}
+
+void bind_for_mesh(FrameContext& f, PipelineId id, const GpuMesh& mesh, VkPipeline& bound) {
+    if (const VkPipeline want = f.pipelines.get(id, mesh.flags); want != bound) {
+        vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, want);
+        bound = want;
+    }
 }
 
 void draw_groups(FrameContext& f, DrawPipeline pipeline, AlphaMode alpha, const DrawView& view,
@@ -130,7 +138,7 @@ void draw_blended(FrameContext& f, DrawPipeline pipeline, CullStats& tally) {
         if (groups[gi].alpha != AlphaMode::Blend) continue;
         for (std::uint32_t k = 0; k < groups[gi].instance_count; ++k) {
             const std::uint32_t inst = groups[gi].first_instance + k;
-            const glm::vec3 c = f.scene->instance_bounds()[inst].center();
+            const glm::vec3 c = instance_bounds(f)[inst].center();
             items.push_back({(f.slot.camera.view * glm::vec4(c, 1.0f)).z, gi, inst});
         }
     }

@@ -27,8 +27,11 @@ void set_depth(VkCommandBuffer cmd, VkCompareOp op, bool write, float bias_const
 inline std::uint32_t triangles_of(const GpuMesh& mesh) {
     return is_triangle_mesh(mesh.flags) ? mesh.index_count / 3 : 0;
 }
-// The mesh's streams and flags and the material, into `pc`.
+// The mesh's streams, flags and motion record and the material, into `pc`.
 void set_mesh(GPUPushConstants& pc, const GpuMesh& mesh, std::uint32_t material);
+// Binds fixed pipeline `id` for `mesh` (its MOTION twin for a moving mesh) unless
+// `bound` already is it.
+void bind_for_mesh(FrameContext& f, PipelineId id, const GpuMesh& mesh, VkPipeline& bound);
 
 // Every draw group of `alpha`, single-sided ones with back faces culled; draws and
 // triangles go to `tally`.

@@ -9,7 +9,7 @@ void FloorPass::record(FrameContext& f) {
     if (!f.settings.floor_only) return;
     // Same triangles, one constant colour: what the rasterizer costs by itself.
     set_depth(f.cmd, VK_COMPARE_OP_GREATER, true);
-    const DrawPipeline floor{f.pipelines.get(PipelineId::Floor)};
+    const DrawPipeline floor{PipelineId::Floor};
     for (AlphaMode a : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend})
         draw_groups(f, floor, a, camera_view(f), f.slot.culling.camera_stats());
 }
@@ -17,10 +17,9 @@ void FloorPass::record(FrameContext& f) {
 void DepthPrepass::record(FrameContext& f) {
     if (f.settings.floor_only || !f.prepass) return;
     set_depth(f.cmd, VK_COMPARE_OP_GREATER, true);
-    const Pipelines& p = f.pipelines;
-    draw_groups(f, DrawPipeline{p.get(PipelineId::PrepassOpaque)}, AlphaMode::Opaque,
-                camera_view(f), f.slot.prepass);
-    draw_groups(f, DrawPipeline{p.get(PipelineId::PrepassMask)}, AlphaMode::Mask, camera_view(f),
+    draw_groups(f, DrawPipeline{PipelineId::PrepassOpaque}, AlphaMode::Opaque, camera_view(f),
+                f.slot.prepass);
+    draw_groups(f, DrawPipeline{PipelineId::PrepassMask}, AlphaMode::Mask, camera_view(f),
                 f.slot.prepass);
 }
 
@@ -30,13 +29,13 @@ void ForwardPass::record(FrameContext& f) {
     CullStats& tally = f.slot.culling.camera_stats();
     if (alpha_ == AlphaMode::Blend) {
         set_depth(f.cmd, VK_COMPARE_OP_GREATER, false);
-        draw_blended(f, DrawPipeline{VK_NULL_HANDLE, view, true}, tally);
+        draw_blended(f, DrawPipeline{PipelineId::Count, view, true}, tally);
         return;
     }
     // After the prepass only the visible surface passes: shade each pixel once.
     set_depth(f.cmd, f.prepass ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_GREATER,
               !f.prepass);
-    draw_groups(f, DrawPipeline{VK_NULL_HANDLE, view, false}, alpha_, camera_view(f), tally);
+    draw_groups(f, DrawPipeline{PipelineId::Count, view, false}, alpha_, camera_view(f), tally);
 }
 
 } // namespace sherpa::gpu

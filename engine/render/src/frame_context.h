@@ -79,6 +79,19 @@ struct FrameSlot {
     VkDeviceSize cull_readback_capacity = 0;
     UniqueQueryPool cull_timestamps; // two per view around the GPU culling dispatch
     bool history_pushed = false;
+    // Scenes that move (PosePass): this frame's instances, joint matrices, morph
+    // weights and joint highlights, host-visible; and each GPU instance's world bounds
+    // in the frame's pose, which culling, sorting and overlays use instead of the
+    // scene's static ones.
+    BufferHandle pose;
+    VkDeviceSize pose_capacity = 0;
+    bool posed = false;
+    std::vector<Aabb> posed_bounds;
+    std::uint64_t pose_key = 0; // hash of the pose drawn (the shadow cache's key)
+    VkDeviceAddress posed_instances = 0, pose_address = 0; // push constants of posed frames
+    std::uint32_t highlight_base = 0;
+    BufferHandle cull_objects; // GPU path while posed: GPUCullObjects of the posed bounds
+    VkDeviceSize cull_objects_capacity = 0;
 };
 
 // Culling data of the loaded scene.
@@ -91,7 +104,8 @@ struct SceneCulling {
     // GPU path, built on first use: one culler per view (camera, each cascade), all
     // over the non-blended groups, one batch per group.
     std::vector<std::unique_ptr<GpuCuller>> gpu;
-    std::vector<std::uint32_t> group_batch; // draw group -> GPU batch (~0u: blended)
+    std::vector<std::uint32_t> group_batch;      // draw group -> GPU batch (~0u: blended)
+    std::vector<std::uint32_t> gpu_object_batch; // per GPU culler object: its batch
 };
 
 // Everything a pass records from. References live for one record_frame() call.
@@ -111,5 +125,10 @@ struct FrameContext {
     bool prepass = false;       // the depth prepass runs this frame
     float aspect() const { return float(target.width) / float(target.height); }
 };
+
+// World bounds per GPU instance in this frame: posed when the scene moves.
+inline const std::vector<Aabb>& instance_bounds(const FrameContext& f) {
+    return f.slot.posed ? f.slot.posed_bounds : f.scene->instance_bounds();
+}
 
 } // namespace sherpa::gpu

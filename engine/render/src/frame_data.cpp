@@ -10,6 +10,15 @@
 
 namespace sherpa::gpu {
 
+// The bounds shadow cascades are fitted to: the scene's, grown by where its moving
+// instances are in this frame's pose (an arm raised above the bind pose still casts).
+Aabb Renderer::Impl::shadow_bounds(const FrameContext& frame) const {
+    Aabb b = lighting_.bounds;
+    if (frame.slot.posed)
+        for (const Aabb& box : frame.slot.posed_bounds) b.expand(box);
+    return b;
+}
+
 void Renderer::Impl::write_frame_data(FrameContext& frame) {
     FrameSlot& slot = frame.slot;
     const RenderSettings& settings = frame.settings;
@@ -60,7 +69,7 @@ void Renderer::Impl::write_frame_data(FrameContext& frame) {
         settings.view == DebugView::Lit) {
         // The one cascade fit (scene layer), shared with `sherpa-cli cull`.
         const ShadowCascades c = fit_shadow_cascades(
-            cascade_camera(slot.camera), info.bounds, sun_dir,
+            cascade_camera(slot.camera), shadow_bounds(frame), sun_dir,
             std::min(settings.cascades, kShadowCascades), options.shadow_resolution);
         slot.cascades = c;
         cascades = c.count;
@@ -68,8 +77,10 @@ void Renderer::Impl::write_frame_data(FrameContext& frame) {
         f.cascade_splits = c.splits;
         f.cascade_texel = c.texel;
         f.sun_direction.w = c.count > 0 ? 1.0f : 0.0f;
-        if (shadows_.needs_render(c, scene_generation_, settings.cache_shadows))
-            frame.cascades = c.count;
+        // A new pose moves the casters: the cached cascades are redrawn.
+        const std::uint64_t generation =
+            scene_generation_ ^ (slot.pose_key * 0x9e3779b97f4a7c15ull);
+        if (shadows_.needs_render(c, generation, settings.cache_shadows)) frame.cascades = c.count;
     }
     // Every filtered fetch is expensive on a CPU rasterizer: one 2x2 PCF tap there.
     const std::uint32_t taps = context.info().is_cpu() ? 1u : 4u;

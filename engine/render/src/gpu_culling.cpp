@@ -219,7 +219,7 @@ VkDeviceAddress GpuCuller::instance_ids() const {
 }
 
 void GpuCuller::record(VkCommandBuffer cmd, const Frustum& frustum, CullMethod method,
-                       std::uint32_t parameter_block, bool timestamps) {
+                       std::uint32_t parameter_block, bool timestamps, VkDeviceAddress objects) {
     if (objects_count_ == 0) return;
     const GPUCullParams params = cull_params(frustum, method, objects_count_);
     const BufferHandle block = params_.at(parameter_block);
@@ -246,8 +246,9 @@ void GpuCuller::record(VkCommandBuffer cmd, const Frustum& frustum, CullMethod m
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_->pipeline());
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_->layout(), 0, 1,
                             &param_sets_.at(parameter_block), 0, nullptr);
-    const CullPush push{resources_.get(objects_).address, resources_.get(draws_).address,
-                        instance_ids(), resources_.get(visible_).address};
+    const CullPush push{objects ? objects : resources_.get(objects_).address,
+                        resources_.get(draws_).address, instance_ids(),
+                        resources_.get(visible_).address};
     vkCmdPushConstants(cmd, pipeline_->layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push),
                        &push);
     vkCmdDispatch(cmd, (objects_count_ + 255) / 256, 1, 1);

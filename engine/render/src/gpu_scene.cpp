@@ -1,3 +1,5 @@
+#include "motion_streams.h"
+
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/upload.h>
 #include <sherpa/render/gpu_scene.h>
@@ -100,17 +102,18 @@ void GpuScene::upload(const Scene& scene, std::shared_ptr<const tex::PreparedTex
         upload_geometry(scene);
         upload_instances(scene);
     } catch (...) {
-        resources_.destroy(vertices_);
-        resources_.destroy(indices_);
-        resources_.destroy(instances_);
+        release();
         throw;
     }
 }
 
 GpuScene::~GpuScene() {
-    resources_.destroy(vertices_);
-    resources_.destroy(indices_);
-    resources_.destroy(instances_);
+    release();
+}
+
+void GpuScene::release() {
+    for (BufferHandle* b : {&vertices_, &indices_, &instances_, &motion_streams_, &motion_meshes_})
+        resources_.destroy(*b);
 }
 
 GpuMaterials::GpuMaterials(ResourceManager& resources, BindlessTable& table, const Scene& scene,
@@ -205,9 +208,46 @@ void GpuScene::upload_geometry(const Scene& scene) {
              MemoryUsage::DeviceLocal, "indices"});
         batch.upload_buffer(indices_, 0, indices.data(), bytes);
     }
+    upload_motion(scene, instanced, batch);
     batch.submit_and_wait();
     memory_.vertex_streams = streams.size();
     memory_.indices = indices.size() * sizeof(std::uint32_t);
+}
+
+// Skinning and morph streams, only for the meshes that move: a static scene makes
+// no buffer and reports 0 motion bytes.
+void GpuScene::upload_motion(const Scene& scene, const std::vector<bool>& instanced,
+                             UploadBatch& batch) {
+    MotionStreams motion = build_motion_streams(scene, instanced);
+    if (motion.records.empty()) return;
+    VkDeviceAddress base = 0;
+    if (!motion.bytes.empty()) {
+        motion_streams_ = resources_.create_buffer(
+            {motion.bytes.size(), kStorage, MemoryUsage::DeviceLocal, "motion streams"});
+        batch.upload_buffer(motion_streams_, 0, motion.bytes.data(), motion.bytes.size());
+        base = resources_.get(motion_streams_).address;
+    }
+    for (GPUMotionMesh& r : motion.records) { // offsets of the streams present -> addresses
+        const std::pair<VkDeviceAddress*, std::uint32_t> streams[] = {
+            {&r.joints, kMotionSkin},
+            {&r.weights, kMotionSkin},
+            {&r.morph_positions, kMotionMorphPositions},
+            {&r.morph_normals, kMotionMorphNormals},
+            {&r.morph_tangents, kMotionMorphTangents}};
+        for (auto [address, bit] : streams)
+            if (r.flags & bit) *address += base;
+    }
+    const VkDeviceSize bytes = motion.records.size() * sizeof(GPUMotionMesh);
+    motion_meshes_ =
+        resources_.create_buffer({bytes, kStorage, MemoryUsage::DeviceLocal, "motion meshes"});
+    batch.upload_buffer(motion_meshes_, 0, motion.records.data(), bytes);
+    const VkDeviceAddress records = resources_.get(motion_meshes_).address;
+    for (std::size_t m = 0; m < meshes_.size(); ++m)
+        if (const std::int32_t r = motion.record_of_mesh[m]; r >= 0) {
+            meshes_[m].motion = records + VkDeviceSize(r) * sizeof(GPUMotionMesh);
+            meshes_[m].flags |= kMeshMotionBit;
+        }
+    memory_.motion = motion.bytes.size() + bytes;
 }
 
 void GpuMaterials::upload(const Scene& scene) {

@@ -16,7 +16,7 @@ void HighlightPass::record(FrameContext& f) {
     const GpuScene* scene = f.scene;
     if (!scene || !s.highlight_instance || !f.culling || !f.culling->identity.valid()) return;
     VkCommandBuffer cmd = f.cmd;
-    const Pipelines& p = f.pipelines;
+    Pipelines& p = f.pipelines;
     FrameSlot& slot = f.slot;
     const auto& ids = scene->scene_instances();
     const auto found = std::find(ids.begin(), ids.end(), *s.highlight_instance);
@@ -35,14 +35,7 @@ void HighlightPass::record(FrameContext& f) {
     GPUPushConstants pc = slot.push_base;
     // Identity ids: gl_InstanceIndex (the draw's first instance) is the GPU instance.
     pc.instance_ids = f.resources.get(f.culling->identity).address;
-    pc.positions = m.stream[std::size_t(VertexAttribute::Position)];
-    pc.normals = m.stream[std::size_t(VertexAttribute::Normal)];
-    pc.tangents = m.stream[std::size_t(VertexAttribute::Tangent)];
-    pc.uv0 = m.stream[std::size_t(VertexAttribute::TexCoord0)]; // depth.vert reads the UVs
-    pc.uv1 = m.stream[std::size_t(VertexAttribute::TexCoord1)];
-    pc.colors = m.stream[std::size_t(VertexAttribute::Color0)];
-    pc.material_id = group->material;
-    pc.mesh_flags = m.flags;
+    set_mesh(pc, m, group->material); // depth.vert reads the UVs too
     pc.cascade = kNoCascade;
     vkCmdSetCullMode(cmd, VK_CULL_MODE_NONE);
     vkCmdSetDepthWriteEnable(cmd, VK_FALSE);
@@ -55,7 +48,7 @@ void HighlightPass::record(FrameContext& f) {
         vkCmdSetDepthCompareOp(cmd, VK_COMPARE_OP_GREATER_OR_EQUAL);
         vkCmdSetDepthBiasEnable(cmd, VK_TRUE);
         vkCmdSetDepthBias(cmd, 1.0f, 0.0f, 1.0f);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::Tint));
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::Tint, m.flags));
         pc.color = kHighlightTint;
         vkCmdPushConstants(cmd, layout, stages, 0, sizeof(pc), &pc);
         vkCmdDrawIndexed(cmd, m.index_count, 1, m.first_index, 0, gpu_instance);
@@ -66,15 +59,15 @@ void HighlightPass::record(FrameContext& f) {
     // Detail that must never hide behind other surfaces.
     vkCmdSetDepthCompareOp(cmd, VK_COMPARE_OP_ALWAYS);
     if (triangles && s.highlight_triangle && *s.highlight_triangle < m.index_count / 3) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::Floor));
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::Floor, m.flags));
         pc.color = kHighlightDetailColor;
         vkCmdPushConstants(cmd, layout, stages, 0, sizeof(pc), &pc);
         vkCmdDrawIndexed(cmd, 3, 1, m.first_index + 3 * *s.highlight_triangle, 0, gpu_instance);
         ++slot.draw_calls;
     }
     if (s.highlight_vertex && *s.highlight_vertex < m.vertex_count) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::Glyphs));
-        const Aabb& box = scene->instance_bounds()[gpu_instance];
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::Glyphs, m.flags));
+        const Aabb& box = instance_bounds(f)[gpu_instance];
         pc.glyph_length = 0.15f * (box.valid() ? glm::length(box.extent()) : 1.0f);
         pc.color = kHighlightDetailColor;
         for (std::uint32_t kind = 0; kind < 3; ++kind) {
@@ -85,7 +78,7 @@ void HighlightPass::record(FrameContext& f) {
         }
     }
     std::vector<GPULineVertex> lines;
-    append_box(lines, scene->instance_bounds()[gpu_instance], kHighlightColor);
+    append_box(lines, instance_bounds(f)[gpu_instance], kHighlightColor);
     draw_lines(f, lines); // binds its own pipeline; compare op stays ALWAYS
     vkCmdSetDepthCompareOp(cmd, VK_COMPARE_OP_GREATER_OR_EQUAL);
 }

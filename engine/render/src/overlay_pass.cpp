@@ -18,7 +18,7 @@ void OverlayPass::record(FrameContext& f) {
     const RenderSettings& s = f.settings;
     if (s.overlays == 0) return;
     VkCommandBuffer cmd = f.cmd;
-    const Pipelines& p = f.pipelines;
+    Pipelines& p = f.pipelines;
     FrameSlot& slot = f.slot;
     const GpuScene* scene = f.scene;
     const VkPipelineLayout layout = p.layout();
@@ -33,25 +33,20 @@ void OverlayPass::record(FrameContext& f) {
         for (const DrawGroup& g : scene->groups()) {
             GPUPushConstants pc = slot.push_base;
             const GpuMesh& m = scene->meshes()[g.mesh];
-            pc.positions = m.stream[std::size_t(VertexAttribute::Position)];
-            pc.normals = m.stream[std::size_t(VertexAttribute::Normal)];
-            pc.tangents = m.stream[std::size_t(VertexAttribute::Tangent)];
-            pc.uv0 = m.stream[std::size_t(VertexAttribute::TexCoord0)];
-            pc.uv1 = m.stream[std::size_t(VertexAttribute::TexCoord1)];
-            pc.material_id = g.material;
-            pc.mesh_flags = m.flags;
+            set_mesh(pc, m, g.material);
             pc.cascade = kNoCascade;
             fn(g, m, pc);
         }
     };
 
     if (s.overlays & kOverlayWireframe) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::Wireframe));
+        VkPipeline bound = VK_NULL_HANDLE;
         // Reverse-Z: a positive bias pulls the lines towards the camera, off the fill.
         vkCmdSetDepthBiasEnable(cmd, VK_TRUE);
         vkCmdSetDepthBias(cmd, 1.0f, 0.0f, 1.0f);
         for_each_group([&](const DrawGroup& g, const GpuMesh& m, GPUPushConstants& pc) {
             if (!is_triangle_mesh(m.flags)) return; // lines and points are their own wireframe
+            bind_for_mesh(f, PipelineId::Wireframe, m, bound);
             pc.color = glm::vec4(0.25f, 0.85f, 1.0f, 1.0f);
             vkCmdPushConstants(cmd, layout, stages, 0, sizeof(pc), &pc);
             vkCmdDrawIndexed(cmd, m.index_count, g.instance_count, m.first_index, 0,
@@ -68,8 +63,9 @@ void OverlayPass::record(FrameContext& f) {
     };
     for (std::uint32_t kind = 0; kind < 3; ++kind) {
         if (!(s.overlays & glyphs[kind].first)) continue;
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.get(PipelineId::Glyphs));
+        VkPipeline bound = VK_NULL_HANDLE;
         for_each_group([&](const DrawGroup& g, const GpuMesh& m, GPUPushConstants& pc) {
+            bind_for_mesh(f, PipelineId::Glyphs, m, bound);
             pc.mesh_flags |= kind << kGlyphKindShift;
             pc.color = glyphs[kind].second;
             pc.glyph_length =
@@ -85,7 +81,7 @@ void OverlayPass::record(FrameContext& f) {
 
     if (s.overlays & kOverlayBounds) {
         std::vector<GPULineVertex> lines;
-        for (const Aabb& b : scene->instance_bounds())
+        for (const Aabb& b : instance_bounds(f))
             append_box(lines, b, glm::vec4(1.0f, 0.85f, 0.1f, 1.0f));
         draw_lines(f, lines);
     }
@@ -100,7 +96,7 @@ void OverlayPass::draw_cull_boxes(FrameContext& f) {
     const PassCull* camera = f.slot.culling.camera();
     if (!camera) return;
     std::vector<GPULineVertex> lines;
-    const auto& bounds = f.scene->instance_bounds();
+    const auto& bounds = instance_bounds(f);
     for (std::size_t i = 0; i < bounds.size(); ++i) {
         glm::vec4 color(0.9f, 0.15f, 0.1f, 1.0f);
         if (camera->visible[i])

@@ -9,6 +9,41 @@
 
 namespace sherpa::gpu {
 
+// Scenes that move (skins, morph targets, animations): each frame, the pose
+// (RenderSettings::pose, else the scene's default pose) into the frame's pose buffer
+// (posed instances, joint matrices, morph weights, joint-influence highlights) and
+// each instance's conservative world bounds (culling_bounds()) into
+// FrameSlot::posed_bounds, which culling, sorting and overlays use. Static scenes
+// skip it: no buffer, no work (pose_pass.cpp).
+class PosePass {
+public:
+    PosePass(ResourceManager& resources) : resources_(resources) {}
+    void build(const Scene& scene, const GpuScene& gpu); // a scene was loaded
+    void reset();                                        // the scene is unloaded
+    void record(FrameContext& f);
+
+private:
+    struct Instance {
+        std::uint32_t node = 0, mesh = 0, material = 0;
+        std::int32_t primitive = -1; // into scene_.primitives when it skins or morphs
+        std::int32_t skin = -1;      // the node's skin when the mesh is skinned
+        std::uint32_t targets = 0;   // morph weights it reads
+        glm::mat4 world{1.0f};       // as loaded
+        Aabb local, bounds;          // mesh bounds; world bounds as loaded
+    };
+    const Pose& pose_of(const RenderSettings& settings) const;
+    void write(FrameContext& f, const Pose& pose);
+
+    ResourceManager& resources_;
+    bool active_ = false;
+    Scene scene_; // nodes, skins, motions and primitives: what culling_bounds() reads
+    Pose default_;
+    std::vector<Instance> instances_;        // per GPU instance
+    std::vector<std::uint32_t> skin_base_;   // first joint matrix of each skin
+    std::vector<std::uint32_t> skin_slots_;  // matrices each skin takes
+    std::uint32_t joints_ = 0, weights_ = 0; // totals per frame
+};
+
 // Culling of the camera and of each shadow cascade re-rendered this frame, on the
 // CPU or with shaders/cull.comp (culling_pass.cpp); its statistics once the frame
 // completed (culling_stats.cpp). Owns the loaded scene's culling data.
@@ -29,6 +64,8 @@ private:
     void build_gpu(const GpuScene& scene);
     void test_cpu(FrameContext& f, PassCull& view, bool caster_view, bool blended_only);
     void prepare_buffers(FrameContext& f, std::uint32_t instances);
+    void use_posed_bounds(FrameContext& f);
+    VkDeviceAddress write_posed_objects(FrameContext& f);
     Context& context_;
     ResourceManager& resources_;
     std::unique_ptr<SceneCulling> culling_;

@@ -23,19 +23,6 @@ UniqueShaderModule make_module(VkDevice device, std::span<const std::uint32_t> c
     return create_shader_module(device, code, "vkCreateShaderModule");
 }
 
-struct PipelineDesc {
-    VkShaderModule vert = VK_NULL_HANDLE;
-    VkShaderModule frag = VK_NULL_HANDLE; // null: depth only
-    VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkPolygonMode polygon = VK_POLYGON_MODE_FILL;
-    bool color = true; // has the colour attachment (false: shadow rendering)
-    bool write_color = true;
-    bool blend = false;
-    const VkSpecializationInfo* frag_constants = nullptr;
-    const VkSpecializationInfo* vert_constants = nullptr;
-    float line_width = 1.0f; // overlays and wireframe stay 1 px
-};
-
 UniquePipeline make_pipeline(VkDevice device, VkPipelineLayout layout, VkFormat color_format,
                              const PipelineDesc& d) {
     std::vector<VkPipelineShaderStageCreateInfo> stages;
@@ -141,40 +128,55 @@ Pipelines::Pipelines(const Context& context, VkDescriptorSetLayout textures_layo
     layout_ = create_pipeline_layout(device, set_layouts, {&push, 1}, "vkCreatePipelineLayout");
     const VkPipelineLayout layout = layout_.get();
 
-    // Modules are only needed while the pipelines are created.
+    // Kept: forward() variants and MOTION twins are built on first use.
     mesh_vert_ = make_module(device, spirv_mesh_vert);
     forward_frag_ = make_module(device, spirv_forward_frag);
-    UniqueShaderModule depth_vert = make_module(device, spirv_depth_vert);
-    UniqueShaderModule glyph_vert = make_module(device, spirv_glyph_vert);
-    UniqueShaderModule lines_vert = make_module(device, spirv_lines_vert);
-    UniqueShaderModule depth_mask_frag = make_module(device, spirv_depth_mask_frag);
-    UniqueShaderModule flat_frag = make_module(device, spirv_flat_frag);
-    UniqueShaderModule floor_frag = make_module(device, spirv_floor_frag);
+    depth_vert_ = make_module(device, spirv_depth_vert);
+    glyph_vert_ = make_module(device, spirv_glyph_vert);
+    lines_vert_ = make_module(device, spirv_lines_vert);
+    depth_mask_frag_ = make_module(device, spirv_depth_mask_frag);
+    flat_frag_ = make_module(device, spirv_flat_frag);
+    floor_frag_ = make_module(device, spirv_floor_frag);
+    const VkShaderModule depth_vert = depth_vert_.get(), glyph_vert = glyph_vert_.get(),
+                         lines_vert = lines_vert_.get(), depth_mask_frag = depth_mask_frag_.get(),
+                         flat_frag = flat_frag_.get(), floor_frag = floor_frag_.get();
 
     auto make = [&](PipelineId id, const PipelineDesc& d) {
+        descs_[static_cast<std::size_t>(id)] = d;
         pipelines_[static_cast<std::size_t>(id)] = make_pipeline(device, layout, color_format, d);
     };
     make(PipelineId::PrepassOpaque,
-         {depth_vert.get(), VK_NULL_HANDLE, VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST,
-          VK_POLYGON_MODE_FILL, true, false, false});
-    make(PipelineId::PrepassMask,
-         {depth_vert.get(), depth_mask_frag.get(), VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST,
-          VK_POLYGON_MODE_FILL, true, false, false});
-    make(PipelineId::Wireframe, {depth_vert.get(), floor_frag.get(),
-                                 VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, VK_POLYGON_MODE_LINE});
-    make(PipelineId::Glyphs, {glyph_vert.get(), flat_frag.get(), VK_PRIMITIVE_TOPOLOGY_LINE_LIST});
-    make(PipelineId::BoxLines,
-         {lines_vert.get(), flat_frag.get(), VK_PRIMITIVE_TOPOLOGY_LINE_LIST});
-    make(PipelineId::Floor, {depth_vert.get(), floor_frag.get()});
-    PipelineDesc tint{depth_vert.get(), floor_frag.get()};
+         {depth_vert, VK_NULL_HANDLE, VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, VK_POLYGON_MODE_FILL,
+          true, false, false});
+    make(PipelineId::PrepassMask, {depth_vert, depth_mask_frag, VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST,
+                                   VK_POLYGON_MODE_FILL, true, false, false});
+    make(PipelineId::Wireframe,
+         {depth_vert, floor_frag, VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, VK_POLYGON_MODE_LINE});
+    make(PipelineId::Glyphs, {glyph_vert, flat_frag, VK_PRIMITIVE_TOPOLOGY_LINE_LIST});
+    make(PipelineId::BoxLines, {lines_vert, flat_frag, VK_PRIMITIVE_TOPOLOGY_LINE_LIST});
+    make(PipelineId::Floor, {depth_vert, floor_frag});
+    PipelineDesc tint{depth_vert, floor_frag};
     tint.blend = true;
     make(PipelineId::Tint, tint);
-    make(PipelineId::ShadowOpaque,
-         {depth_vert.get(), VK_NULL_HANDLE, VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST,
-          VK_POLYGON_MODE_FILL, false, false, false});
-    make(PipelineId::ShadowMask,
-         {depth_vert.get(), depth_mask_frag.get(), VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST,
-          VK_POLYGON_MODE_FILL, false, false, false});
+    make(PipelineId::ShadowOpaque, {depth_vert, VK_NULL_HANDLE, VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST,
+                                    VK_POLYGON_MODE_FILL, false, false, false});
+    make(PipelineId::ShadowMask, {depth_vert, depth_mask_frag, VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST,
+                                  VK_POLYGON_MODE_FILL, false, false, false});
+}
+
+VkPipeline Pipelines::get(PipelineId id, std::uint32_t mesh_flags) {
+    const auto i = static_cast<std::size_t>(id);
+    if (!is_moving_mesh(mesh_flags)) return pipelines_[i].get();
+    if (!motion_[i]) {
+        // MOTION (constant_id 1 of the vertex stages, motion.glsl) on.
+        const VkSpecializationMapEntry entry{1, 0, sizeof(VkBool32)};
+        const VkBool32 on = VK_TRUE;
+        const VkSpecializationInfo constants{1, &entry, sizeof(on), &on};
+        PipelineDesc d = descs_[i];
+        d.vert_constants = &constants;
+        motion_[i] = make_pipeline(device_, layout_.get(), color_format_, d);
+    }
+    return motion_[i].get();
 }
 
 VkPipeline Pipelines::forward(std::uint32_t view, bool blend, std::uint32_t streams) {
@@ -182,10 +184,16 @@ VkPipeline Pipelines::forward(std::uint32_t view, bool blend, std::uint32_t stre
     if (!p) {
         const VkSpecializationMapEntry entries[] = {
             {0, 0, sizeof(std::uint32_t)}, {1, sizeof(std::uint32_t), sizeof(std::uint32_t)}};
-        const std::uint32_t values[] = {view, streams};
+        const std::uint32_t values[] = {view, streams & ~kMeshMotionBit};
         VkSpecializationInfo constants{2, entries, sizeof(values), values};
-        const VkSpecializationMapEntry point_entry{0, 0, sizeof(float)};
-        VkSpecializationInfo vert_constants{1, &point_entry, sizeof(float), &point_size_};
+        // POINT_SIZE (constant_id 0) and MOTION (constant_id 1) of mesh.vert.
+        struct {
+            float point_size;
+            VkBool32 motion;
+        } vert_values{point_size_, is_moving_mesh(streams) ? VK_TRUE : VK_FALSE};
+        const VkSpecializationMapEntry vert_entries[] = {{0, 0, sizeof(float)},
+                                                         {1, sizeof(float), sizeof(VkBool32)}};
+        VkSpecializationInfo vert_constants{2, vert_entries, sizeof(vert_values), &vert_values};
         PipelineDesc d{mesh_vert_.get(), forward_frag_.get()};
         d.blend = blend;
         d.frag_constants = &constants;

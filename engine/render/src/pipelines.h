@@ -36,9 +36,13 @@ inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 // GpuMesh::flags, HAS_TANGENT | HAS_UV0 | HAS_UV1 | HAS_COLOR in common.glsl).
 inline constexpr std::uint32_t kForwardStreamBits = 0x3cu;
 // Forward pipelines also differ by topology (MESH_LINES / MESH_POINTS: line or
-// point list, shaded unlit); the bits ride along in the streams constant.
+// point list, shaded unlit) and by motion (kMeshMotionBit: the vertex stage skins
+// and morphs); the bits ride along in the streams key.
 inline constexpr std::uint32_t forward_streams(std::uint32_t mesh_flags) {
-    return mesh_flags & (kForwardStreamBits | kMeshTopologyBits);
+    return mesh_flags & (kForwardStreamBits | kMeshTopologyBits | kMeshMotionBit);
+}
+inline constexpr bool is_moving_mesh(std::uint32_t mesh_flags) {
+    return (mesh_flags & kMeshMotionBit) != 0;
 }
 // Lines and points meshes are drawn only by forward shading; the fixed pipelines
 // (depth prepass, shadows, floor, wireframe) rasterize triangle lists.
@@ -46,10 +50,24 @@ inline constexpr bool is_triangle_mesh(std::uint32_t mesh_flags) {
     return (mesh_flags & kMeshTopologyBits) == 0;
 }
 
+// How one pipeline is built (pipelines.cpp).
+struct PipelineDesc {
+    VkShaderModule vert = VK_NULL_HANDLE;
+    VkShaderModule frag = VK_NULL_HANDLE; // null: depth only
+    VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkPolygonMode polygon = VK_POLYGON_MODE_FILL;
+    bool color = true; // has the colour attachment (false: shadow rendering)
+    bool write_color = true;
+    bool blend = false;
+    const VkSpecializationInfo* frag_constants = nullptr;
+    const VkSpecializationInfo* vert_constants = nullptr;
+    float line_width = 1.0f; // overlays and wireframe stay 1 px
+};
+
 // The pipeline of a run of draws: a fixed one, or forward shading of a view, chosen
 // per mesh for the streams it holds.
 struct DrawPipeline {
-    VkPipeline fixed = VK_NULL_HANDLE;
+    PipelineId fixed = PipelineId::Count; // Count: forward shading
     std::uint32_t view = 0;
     bool blend = false;
 };
@@ -62,12 +80,16 @@ public:
     // without largePoints.
     float point_size() const { return point_size_; }
     VkPipeline get(PipelineId id) const { return pipelines_[static_cast<std::size_t>(id)].get(); }
+    // The same for meshes of `mesh_flags`: moving meshes get the pipeline's MOTION
+    // twin (skinning and morphing in the vertex stage), built on first use.
+    VkPipeline get(PipelineId id, std::uint32_t mesh_flags);
     // Forward shading for one debug view and the optional streams a mesh holds
     // (specialization constants of forward.frag; absent streams drop their
     // varyings), blended or not; built on first use.
     VkPipeline forward(std::uint32_t view, bool blend, std::uint32_t streams = kForwardStreamBits);
     VkPipeline resolve(const DrawPipeline& d, std::uint32_t mesh_flags) {
-        return d.fixed ? d.fixed : forward(d.view, d.blend, forward_streams(mesh_flags));
+        return d.fixed != PipelineId::Count ? get(d.fixed, mesh_flags)
+                                            : forward(d.view, d.blend, forward_streams(mesh_flags));
     }
     VkPipelineLayout layout() const { return layout_.get(); }
     VkFormat color_format() const { return color_format_; }
@@ -77,9 +99,13 @@ private:
     float point_size_ = 1.0f;
     float line_width_ = 1.0f;
     UniquePipelineLayout layout_;
-    std::array<UniquePipeline, static_cast<std::size_t>(PipelineId::Count)> pipelines_;
+    static constexpr std::size_t kFixedCount = static_cast<std::size_t>(PipelineId::Count);
+    std::array<UniquePipeline, kFixedCount> pipelines_, motion_;
     VkDevice device_;
-    UniqueShaderModule mesh_vert_, forward_frag_; // kept for forward() variants
+    // Kept for the forward() variants and the MOTION twins of the fixed pipelines.
+    UniqueShaderModule mesh_vert_, forward_frag_, depth_vert_, glyph_vert_, lines_vert_,
+        depth_mask_frag_, flat_frag_, floor_frag_;
+    std::array<PipelineDesc, kFixedCount> descs_{};
     std::map<std::tuple<std::uint32_t, bool, std::uint32_t>, UniquePipeline> forward_;
 };
 

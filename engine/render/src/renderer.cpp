@@ -13,7 +13,7 @@ namespace sherpa::gpu {
 Renderer::Impl::Impl(Context& ctx, const RendererOptions& opts)
     : context(ctx), options(opts), resources(std::make_unique<ResourceManager>(ctx)),
       bindless(std::make_unique<BindlessTable>(*resources)), culling(ctx, *resources),
-      shadows_(ctx, *resources, opts.shadow_resolution) {
+      pose_(*resources), shadows_(ctx, *resources, opts.shadow_resolution) {
     for (std::uint32_t i = 0; i < kFramesInFlight; ++i) {
         auto slot = std::make_unique<FrameSlot>(context);
         slot->frame_data =
@@ -106,6 +106,8 @@ Renderer::Impl::~Impl() {
         resources->destroy(slot->lines);
         resources->destroy(slot->cull_ids);
         resources->destroy(slot->cull_readback);
+        resources->destroy(slot->pose);
+        resources->destroy(slot->cull_objects);
     }
     slots_.clear();
     resources->images().destroy(color_);
@@ -126,6 +128,7 @@ Pipelines& Renderer::Impl::pipelines_for(VkFormat format) {
 void Renderer::Impl::load(const Scene& source, std::unique_ptr<GpuScene> gpu_scene) {
     scene = std::move(gpu_scene);
     culling.build(*scene);
+    pose_.build(source, *scene);
     lighting_.bounds = scene->bounds().valid() ? scene->bounds() : source.bounds;
     lighting_.cameras = source.cameras;
     lighting_.placed_cameras = source.placed_cameras;
@@ -146,8 +149,14 @@ void Renderer::Impl::unload() {
         resources->destroy(slot->cull_readback);
         slot->cull_readback_capacity = 0;
         slot->culling.count = 0;
+        slot->posed = false;
+        resources->destroy(slot->pose); // sized for the scene's instances and joints
+        slot->pose_capacity = 0;
+        resources->destroy(slot->cull_objects);
+        slot->cull_objects_capacity = 0;
     }
     culling.reset();
+    pose_.reset();
     scene.reset();
     ++scene_generation_; // frame sets must stop naming the freed material buffers
     lighting_ = Scene{};

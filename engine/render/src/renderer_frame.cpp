@@ -45,6 +45,7 @@ void Renderer::Impl::record_frame(VkCommandBuffer cmd, std::uint32_t index,
 
 void Renderer::Impl::record_passes(FrameContext& f) {
     ensure_depth(f.target.width, f.target.height);
+    pose_.record(f); // before the frame data: the shadow fit and cache read the pose
     begin_frame(f);
     culling.record(f);
     bind_frame(f);
@@ -79,6 +80,11 @@ void Renderer::Impl::begin_frame(FrameContext& f) {
     slot.shadows_rendered = f.cascades > 0;
     slot.push_base = GPUPushConstants{};
     if (scene) slot.push_base.instances = scene->instances_address();
+    if (slot.posed) { // moving scenes draw the instances of this frame's pose
+        slot.push_base.instances = slot.posed_instances;
+        slot.push_base.pose = slot.pose_address;
+        slot.push_base.highlight_base = slot.highlight_base;
+    }
     bind_frame_set(slot);
     slot.push_base.cascade = kNoCascade;
     f.prepass =

@@ -50,6 +50,7 @@ private:
     // Camera, lights, cascades and view into the slot's GPUFrameData; sets
     // f.cascades to the cascades that must be drawn this frame (frame_data.cpp).
     void write_frame_data(FrameContext& f);
+    Aabb shadow_bounds(const FrameContext& f) const;
     void create_frame_sets();
     void bind_frame_set(FrameSlot& slot);
     void wait_slot(FrameSlot& slot);
@@ -62,6 +63,7 @@ private:
     Pipelines& pipelines_for(VkFormat format);
     FrameStats read_stats(FrameSlot& slot);
 
+    PosePass pose_;
     ShadowPass shadows_;
     FloorPass floor_;
     DepthPrepass prepass_;

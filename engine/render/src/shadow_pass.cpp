@@ -79,7 +79,6 @@ std::uint64_t ShadowPass::bytes() const {
 void ShadowPass::record(FrameContext& f) {
     if (f.cascades == 0) return; // no shadows, or the cached map is still valid
     VkCommandBuffer cmd = f.cmd;
-    Pipelines& p = f.pipelines;
     const Image& map = resources_.images().get(map_);
     const std::uint32_t res = resolution_;
     transition(
@@ -113,9 +112,8 @@ void ShadowPass::record(FrameContext& f) {
         // double-sided surfaces cast from both sides. The light's viewport is flipped
         // like the camera's, so front faces wind the same way.
         const DrawView view = cascade_view(f, c);
-        draw_groups(f, DrawPipeline{p.get(PipelineId::ShadowOpaque)}, AlphaMode::Opaque, view,
-                    tally);
-        draw_groups(f, DrawPipeline{p.get(PipelineId::ShadowMask)}, AlphaMode::Mask, view, tally);
+        draw_groups(f, DrawPipeline{PipelineId::ShadowOpaque}, AlphaMode::Opaque, view, tally);
+        draw_groups(f, DrawPipeline{PipelineId::ShadowMask}, AlphaMode::Mask, view, tally);
         vkCmdEndRendering(cmd);
     }
     transition(cmd, {map.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT,

@@ -76,6 +76,11 @@ std::string mesh_flags() {
     o << "const uint GLYPH_KIND_SHIFT = " << gpu::kGlyphKindShift
       << "; // 0 normal, 1 tangent, 2 bitangent\n";
     o << "const uint NO_CASCADE = " << hex(gpu::kNoCascade) << ";\n";
+    o << "const uint MESH_MOTION = " << hex(gpu::kMeshMotionBit) << "; // skins or morphs\n";
+    o << "const uint MOTION_SKIN = " << hex(gpu::kMotionSkin) << "; // GPUMotionMesh.flags\n";
+    o << "const uint MOTION_MORPH_POSITIONS = " << hex(gpu::kMotionMorphPositions) << ";\n";
+    o << "const uint MOTION_MORPH_NORMALS = " << hex(gpu::kMotionMorphNormals) << ";\n";
+    o << "const uint MOTION_MORPH_TANGENTS = " << hex(gpu::kMotionMorphTangents) << ";\n";
     return o.str();
 }
 

@@ -91,7 +91,9 @@ void read_vec_attribute(ImportContext& ctx, const tinygltf::Primitive& prim, con
 std::uint32_t unweld_with_flat_normals(Mesh& mesh) {
     std::vector<Vertex> out;
     std::vector<glm::vec4> colors;
+    std::vector<std::uint32_t> source;
     out.reserve(mesh.indices.size());
+    source.reserve(mesh.indices.size());
     if (!mesh.colors.empty()) colors.reserve(mesh.indices.size());
     std::uint32_t degenerate = 0;
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
@@ -109,15 +111,18 @@ std::uint32_t unweld_with_flat_normals(Mesh& mesh) {
         else
             ++degenerate;
         for (int k = 0; k < 3; ++k) {
-            Vertex v = mesh.vertices[mesh.indices[t + static_cast<std::size_t>(k)]];
+            const std::uint32_t from = mesh.indices[t + static_cast<std::size_t>(k)];
+            Vertex v = mesh.vertices[from];
             v.normal = normal;
             out.push_back(v);
+            source.push_back(mesh.source_vertex.empty() ? from : mesh.source_vertex[from]);
             if (!mesh.colors.empty())
                 colors.push_back(mesh.colors[mesh.indices[t + static_cast<std::size_t>(k)]]);
         }
     }
     mesh.vertices = std::move(out);
     mesh.colors = std::move(colors);
+    mesh.source_vertex = std::move(source);
     for (std::uint32_t i = 0; i < mesh.indices.size(); ++i) mesh.indices[i] = i;
     mesh.unwelded = true;
     return degenerate;

@@ -128,7 +128,6 @@ void import_nodes_and_scenes(ImportContext& ctx) {
     Scene& scene = ctx.scene;
     const std::size_t n = model.nodes.size();
     scene.nodes.resize(n);
-    std::size_t skinned = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const auto& src = model.nodes[i];
         const std::string where = "nodes[" + std::to_string(i) + "]";
@@ -142,7 +141,6 @@ void import_nodes_and_scenes(ImportContext& ctx) {
                           ? -1
                           : src.camera;
         node.skin = src.skin;
-        if (src.skin >= 0 && src.mesh >= 0) ++skinned;
         if (const auto it = src.extensions.find("KHR_lights_punctual");
             it != src.extensions.end()) {
             const auto& v = it->second;
@@ -204,10 +202,6 @@ void import_nodes_and_scenes(ImportContext& ctx) {
         }
         for (std::size_t c : chain) state[c] = 2;
     }
-    if (skinned)
-        ctx.warn(std::to_string(skinned) +
-                 " skinned mesh node(s) drawn in their bind pose: skins are imported and posed "
-                 "by `info --time`, but `render` does not skin yet");
     scene.counts.nodes = n;
 
     for (std::size_t s = 0; s < model.scenes.size(); ++s) {

@@ -68,10 +68,10 @@ std::string clean_message(const std::string& s) {
     return out;
 }
 
-// Skins, morph targets and animations are imported and evaluated (`info --time`), but
-// the renderer still draws the static pose: each is named in a warning, as are the
-// attributes Sherpa does not draw with (JOINTS_n, WEIGHTS_n, TEXCOORD_2+, ...), so
-// nothing is dropped or frozen without a word.
+// Animations are imported and evaluated, but a render without a time draws the
+// default pose: they are named in a warning, as are the attributes Sherpa does not
+// draw with (TEXCOORD_2+, ...), so nothing is dropped or frozen without a word.
+// Skins and morph targets are drawn (the renderer skins and morphs on the GPU).
 void warn_unsupported_content(detail::ImportContext& ctx) {
     const auto& model = ctx.model;
     if (!model.animations.empty()) {
@@ -82,32 +82,23 @@ void warn_unsupported_content(detail::ImportContext& ctx) {
                                             : "\"" + model.animations[i].name + "\"");
         if (model.animations.size() > 5) names += ", ...";
         ctx.warn(std::to_string(model.animations.size()) + " animation(s) (" + names +
-                 ") imported and evaluated by `info --time`, but not played by `render`, which "
-                 "shows the static pose");
+                 ") imported; `render` and `cull` draw the default pose unless given "
+                 "`--animation N --time T`");
     }
-    std::size_t morphed = 0, targets = 0;
     std::set<std::string> unused;
+    auto drawn = [](const std::string& name) { // JOINTS_n / WEIGHTS_n: GPU skinning
+        return std::find(kDrawnAttributes.begin(), kDrawnAttributes.end(), name) !=
+                   kDrawnAttributes.end() ||
+               name.starts_with("JOINTS_") || name.starts_with("WEIGHTS_");
+    };
     for (const auto& mesh : model.meshes)
-        for (const auto& prim : mesh.primitives) {
-            if (!prim.targets.empty()) ++morphed;
-            targets += prim.targets.size();
+        for (const auto& prim : mesh.primitives)
             for (const auto& [name, accessor] : prim.attributes)
-                if (std::find(kDrawnAttributes.begin(), kDrawnAttributes.end(), name) ==
-                    kDrawnAttributes.end())
-                    unused.insert(name);
-        }
-    if (morphed)
-        ctx.warn(std::to_string(morphed) + " primitive(s) with " + std::to_string(targets) +
-                 " morph target(s) imported (posed by `info --time`) but drawn in their base shape "
-                 "by `render`");
+                if (!drawn(name)) unused.insert(name);
     if (!unused.empty()) {
         std::string names;
         for (const auto& n : unused) names += (names.empty() ? "" : ", ") + n;
-        ctx.warn("attributes " + names + " are not used for drawing" +
-                 (unused.count("JOINTS_0") || unused.count("WEIGHTS_0")
-                      ? std::string(
-                            " (skinning is evaluated by `info --time`, not yet drawn by `render`)")
-                      : std::string()));
+        ctx.warn("attributes " + names + " are not used for drawing");
     }
 }
 

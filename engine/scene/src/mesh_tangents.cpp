@@ -61,6 +61,14 @@ std::uint32_t apply_corner_tangents(Mesh& mesh, std::span<const glm::vec4> corne
     const bool has_colors = mesh.colors.size() == original_count;
     mesh.vertices.reserve(tangent_of.size());
     for (std::uint32_t source : source_of) mesh.vertices.push_back(mesh.vertices[source]);
+    if (!source_of.empty()) { // copies name their original's source vertex
+        if (mesh.source_vertex.empty()) {
+            mesh.source_vertex.resize(original_count);
+            for (std::uint32_t v = 0; v < original_count; ++v) mesh.source_vertex[v] = v;
+        }
+        for (std::uint32_t source : source_of)
+            mesh.source_vertex.push_back(mesh.source_vertex[source]);
+    }
     if (has_colors) {
         mesh.colors.reserve(tangent_of.size());
         for (std::uint32_t source : source_of) mesh.colors.push_back(mesh.colors[source]);

@@ -90,6 +90,28 @@ Aabb culling_bounds(const Scene& scene, const Pose& pose, std::uint32_t node,
     return padded(out);
 }
 
+std::vector<Aabb> instance_culling_bounds(const Scene& scene, const Pose& pose) {
+    std::vector<const PrimitiveInfo*> of_mesh(scene.meshes.size(), nullptr);
+    for (const PrimitiveInfo& p : scene.primitives)
+        if (p.engine_mesh >= 0) of_mesh[static_cast<std::size_t>(p.engine_mesh)] = &p;
+    std::vector<Aabb> out;
+    out.reserve(scene.instances.size());
+    for (const MeshInstance& inst : scene.instances) {
+        const PrimitiveInfo* p = inst.mesh_id < of_mesh.size() ? of_mesh[inst.mesh_id] : nullptr;
+        out.push_back(p ? culling_bounds(scene, pose, inst.node_id, *p) : inst.world_bounds);
+    }
+    return out;
+}
+
+void apply_pose_bounds(Scene& scene, const Pose& pose) {
+    const std::vector<Aabb> bounds = instance_culling_bounds(scene, pose);
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        MeshInstance& inst = scene.instances[i];
+        inst.world = pose.world[inst.node_id];
+        inst.world_bounds = bounds[i];
+    }
+}
+
 PosedBounds posed_scene_bounds(const Scene& scene, const Pose& pose) {
     PosedBounds out;
     for (std::uint32_t n : scene.displayed_nodes) {

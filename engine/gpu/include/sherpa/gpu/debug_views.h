@@ -42,6 +42,7 @@ enum class DebugView : std::uint32_t {
     Provenance = 15,         // tangent provenance: green authored, yellow generated, red defaulted
     ShadingNormal = 16,      // normal after normal mapping (world)
     Specular = 17,           // F0: specular-glossiness' specular, else mix(0.04, base, metallic)
+    JointInfluence = 18,     // weight of RenderSettings::selected_joint, as a heat map
 };
 
 // The metallic view's colour on specular-glossiness materials (no metallic value
@@ -92,7 +93,7 @@ struct OverlayEntry {
     const char* label;
 };
 
-inline constexpr std::array<DebugViewInfo, 18> kDebugViews{{
+inline constexpr std::array<DebugViewInfo, 19> kDebugViews{{
     {DebugView::Lit, "lit", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Lit")},
     {DebugView::Normal, "normal", kNormalStream, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Normals")},
     {DebugView::Tangent, "tangent", kTangentStream,
@@ -119,6 +120,8 @@ inline constexpr std::array<DebugViewInfo, 18> kDebugViews{{
     {DebugView::ShadingNormal, "shading-normal", kNormalStream | kTangentStream,
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Shading normal")},
     {DebugView::Specular, "specular", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Specular (F0)")},
+    {DebugView::JointInfluence, "joint-influence", 0,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Joint influence")},
 }};
 
 inline constexpr std::array<OverlayEntry, 6> kOverlays{{

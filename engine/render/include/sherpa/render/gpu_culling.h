@@ -77,9 +77,11 @@ public:
 
     // Records: reset the indirect commands from their clear copy, write the frame's
     // parameters, dispatch, and make the results visible to indirect draws, vertex
-    // shaders and transfers.
+    // shaders and transfers. `objects`: this frame's objects instead of the built
+    // ones (the same order, batches and count; e.g. boxes of a moving scene's pose).
     void record(VkCommandBuffer cmd, const Frustum& frustum, CullMethod method,
-                std::uint32_t parameter_block = 0, bool timestamps = true);
+                std::uint32_t parameter_block = 0, bool timestamps = true,
+                VkDeviceAddress objects = 0);
 
     // One synchronous run with readback (tests, CLI, benchmarks).
     GpuCullReadback run(const Frustum& frustum, CullMethod method);

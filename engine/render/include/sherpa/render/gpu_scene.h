@@ -11,6 +11,7 @@
 #include <sherpa/core/aabb.h>
 #include <sherpa/gpu/bindless.h>
 #include <sherpa/gpu/resources.h>
+#include <sherpa/gpu/upload.h>
 #include <sherpa/render/scene_textures.h>
 #include <sherpa/scene/scene.h>
 
@@ -18,10 +19,12 @@ namespace sherpa::gpu {
 
 struct GpuMemoryReport {
     std::uint64_t vertex_streams = 0, indices = 0, textures = 0, materials = 0, instances = 0;
+    // Skinning and morph streams and their per-mesh records: 0 for static scenes.
+    std::uint64_t motion = 0;
     // The same vertices in the 56-byte unified layout (+16-byte colour stream where present).
     std::uint64_t unified_vertex_bytes = 0;
     std::uint64_t total() const {
-        return vertex_streams + indices + textures + materials + instances;
+        return vertex_streams + indices + textures + materials + instances + motion;
     }
 };
 
@@ -32,6 +35,7 @@ struct GpuMesh {
     std::uint32_t index_count = 0;
     std::uint32_t vertex_count = 0;
     std::uint32_t material = 0;
+    VkDeviceAddress motion = 0; // its GPUMotionMesh when it skins or morphs (kMeshMotionBit)
 };
 
 // Instances of one mesh that share alpha mode, sidedness and winding: one
@@ -114,12 +118,14 @@ private:
                 MissingTextures missing);
     void upload_geometry(const Scene& scene);
     void upload_instances(const Scene& scene);
+    void upload_motion(const Scene& scene, const std::vector<bool>& instanced, UploadBatch& batch);
+    void release();
 
     ResourceManager& resources_;
     BindlessTable& table_;
     StreamPolicy policy_;
     std::unique_ptr<GpuMaterials> materials_;
-    BufferHandle vertices_, indices_, instances_;
+    BufferHandle vertices_, indices_, instances_, motion_streams_, motion_meshes_;
     std::vector<GpuMesh> meshes_;
     std::vector<DrawGroup> groups_;
     std::vector<Aabb> instance_bounds_;

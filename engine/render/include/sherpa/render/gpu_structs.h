@@ -67,14 +67,45 @@ struct GPUInstanceData {
     glm::vec4 normal_matrix[3];
     std::uint32_t material;
     std::uint32_t mesh;
-    std::uint32_t flags;
-    std::uint32_t pad;
+    // Moving meshes only (GPUMotionMesh): the instance's first joint matrix and first
+    // morph weight in the frame's pose buffer (GPUPushConstants::pose).
+    std::uint32_t joint_base;
+    std::uint32_t weight_base;
 };
 static_assert(sizeof(GPUInstanceData) == 128);
 static_assert(offsetof(GPUInstanceData, normal_matrix) == 64);
 static_assert(offsetof(GPUInstanceData, material) == 112);
 static_assert(offsetof(GPUInstanceData, mesh) == 116);
-static_assert(offsetof(GPUInstanceData, flags) == 120);
+static_assert(offsetof(GPUInstanceData, joint_base) == 120);
+static_assert(offsetof(GPUInstanceData, weight_base) == 124);
+
+// Skinning and morphing (shaders/include/motion.glsl, scalar layout): one record per
+// mesh that skins or morphs, its streams in engine-vertex order. Static meshes have
+// none, and their pipelines are built without the motion code (MOTION constant).
+inline constexpr std::uint32_t kMotionSkin = 1u << 0;           // joints + weights streams
+inline constexpr std::uint32_t kMotionMorphPositions = 1u << 1; // target deltas present
+inline constexpr std::uint32_t kMotionMorphNormals = 1u << 2;
+inline constexpr std::uint32_t kMotionMorphTangents = 1u << 3;
+struct GPUMotionMesh {
+    VkDeviceAddress joints;          // uvec2 per vertex and set of 4: four 16-bit joint indices
+    VkDeviceAddress weights;         // vec4 per vertex and set of 4
+    VkDeviceAddress morph_positions; // vec3 per target and vertex, target-major
+    VkDeviceAddress morph_normals;
+    VkDeviceAddress morph_tangents;
+    std::uint32_t vertex_count;
+    std::uint32_t influence_sets; // sets of 4 joints per vertex
+    std::uint32_t target_count;
+    std::uint32_t flags; // kMotion*
+};
+static_assert(offsetof(GPUMotionMesh, weights) == 8);
+static_assert(offsetof(GPUMotionMesh, morph_positions) == 16);
+static_assert(offsetof(GPUMotionMesh, morph_normals) == 24);
+static_assert(offsetof(GPUMotionMesh, morph_tangents) == 32);
+static_assert(offsetof(GPUMotionMesh, vertex_count) == 40);
+static_assert(offsetof(GPUMotionMesh, influence_sets) == 44);
+static_assert(offsetof(GPUMotionMesh, target_count) == 48);
+static_assert(offsetof(GPUMotionMesh, flags) == 52);
+static_assert(sizeof(GPUMotionMesh) == 56);
 
 enum TextureSlotIndex : std::uint32_t {
     kSlotBaseColor = 0,
@@ -124,6 +155,8 @@ inline constexpr float kLineWidthPixels = 2.0f;
 inline constexpr std::uint32_t kTangentProvenanceShift = 8;
 inline constexpr std::uint32_t kNormalProvenanceShift = 10;
 inline constexpr std::uint32_t kGlyphKindShift = 16;
+// The mesh skins or morphs: drawn by the MOTION pipelines with its GPUMotionMesh.
+inline constexpr std::uint32_t kMeshMotionBit = 1u << 12;
 
 // Per draw. Frame data and materials are not here: they come through descriptor
 // set 1 (see common.glsl for why).
@@ -143,13 +176,22 @@ struct GPUPushConstants {
     glm::vec4 color;
     // gl_InstanceIndex -> GPU instance: culling's compacted ids, else the identity.
     VkDeviceAddress instance_ids;
+    VkDeviceAddress motion; // the drawn mesh's GPUMotionMesh (moving meshes only)
+    // The frame's pose: joint matrices (mat4), then morph weights and the
+    // joint-influence highlight (floats, from index highlight_base).
+    VkDeviceAddress pose;
+    std::uint32_t highlight_base;
+    std::uint32_t pad;
 };
 static_assert(offsetof(GPUPushConstants, lines) == 56);
 static_assert(offsetof(GPUPushConstants, material_id) == 64);
 static_assert(offsetof(GPUPushConstants, cascade) == 72);
 static_assert(offsetof(GPUPushConstants, color) == 80);
 static_assert(offsetof(GPUPushConstants, instance_ids) == 96);
-static_assert(sizeof(GPUPushConstants) == 104);
+static_assert(offsetof(GPUPushConstants, motion) == 104);
+static_assert(offsetof(GPUPushConstants, pose) == 112);
+static_assert(offsetof(GPUPushConstants, highlight_base) == 120);
+static_assert(sizeof(GPUPushConstants) == 128);
 static_assert(sizeof(GPUPushConstants) <= 128,
               "Vulkan guarantees only 128 bytes of push constants");
 

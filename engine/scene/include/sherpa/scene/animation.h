@@ -1,6 +1,7 @@
 #pragma once
 // Animation evaluation and CPU posing: pure functions of (scene, animation, time).
-// Nothing here changes the Scene; the renderer and culling are not yet driven by it.
+// Nothing here changes the Scene except apply_pose_bounds(); the renderer poses on the GPU
+// (RenderSettings::pose).
 #include <cstdint>
 #include <vector>
 
@@ -44,6 +45,20 @@ std::vector<glm::vec3> posed_positions(const Scene& scene, const Pose& pose, std
 // weights: always contains posed_positions, costs O(joints + targets), not O(vertices).
 Aabb culling_bounds(const Scene& scene, const Pose& pose, std::uint32_t node,
                     const PrimitiveInfo& prim);
+
+// Conservative world bounds of every instance (Scene::instances order) in `pose`: its
+// primitive's culling_bounds() on its node. What culling uses while things move.
+std::vector<Aabb> instance_culling_bounds(const Scene& scene, const Pose& pose);
+
+// Moves `scene`'s instances to `pose` for culling: world matrices from the pose and
+// world_bounds from instance_culling_bounds() (vertices are not changed).
+void apply_pose_bounds(Scene& scene, const Pose& pose);
+
+// `scene` posed on the CPU as a static scene: one mesh per instance in world space,
+// positions from posed_positions(), normals morphed and then transformed as the GPU's
+// vertex stage does (the blended joint matrix, or the node's normal matrix; not
+// renormalised); no skins, morph targets or animations are left. Costs O(vertices).
+Scene freeze_pose(const Scene& scene, const Pose& pose);
 
 // Exact and conservative bounds of the displayed scene's instances in `pose`.
 struct PosedBounds {

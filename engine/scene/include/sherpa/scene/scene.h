@@ -75,6 +75,10 @@ struct Mesh {
     std::uint32_t source_vertex_count = 0;
     std::uint32_t source_triangle_count = 0;
     bool unwelded = false; // vertices were split per corner for flat normals
+    // Per vertex: its index in the file's POSITION accessor, where unwelding or
+    // tangent splitting changed the vertices; empty while vertex i is source vertex i.
+    // Skinning and morph data (PrimitiveMotion) are in source order: this maps them.
+    std::vector<std::uint32_t> source_vertex;
 
     Provenance provenance_of(VertexAttribute a) const {
         return provenance[static_cast<std::size_t>(a)];

@@ -1,0 +1,34 @@
+#pragma once
+// The pose options `render` and `cull` share: --animation N --time T, --pose bind.
+#include "cli_common.h"
+#include "texture_cli.h" // OptionMatch
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include <sherpa/scene/animation.h>
+
+namespace sherpa::cli {
+
+struct PoseOptions {
+    std::int32_t animation = -1; // -1: the first animation (when --time is given)
+    double time = 0.0;
+    bool timed = false; // --time given
+    bool bind = false;  // --pose bind
+};
+
+inline constexpr const char* kPoseOptionsSynopsis = "[--animation N --time T | --pose bind]";
+
+// If args[i] is a pose option, consumes it and its value (advancing i) into `out`;
+// Bad sets `error`.
+OptionMatch parse_pose_option(Args args, std::size_t& i, PoseOptions& out, std::string& error);
+
+// The pose the options ask for: null without any (the scene as loaded); the file's
+// default pose for --pose bind; else animation N (default: the first; none: the
+// default weights) at time T, clamped to its keys. Empty `error` unless the options
+// do not fit the scene (then null).
+std::shared_ptr<const Pose> resolve_pose(const Scene& scene, const PoseOptions& options,
+                                         std::string& error);
+
+} // namespace sherpa::cli

@@ -126,7 +126,7 @@ private:
     // the next frame.
     void updateStreams();
     void connectActions();
-    void onLoaded(const QString& spec, const LoadOutcome& outcome, double ms);
+    void onLoaded(SharedSession session);
     void onLoadFailed(const QString& spec, const QString& error);
     void onProgress(LoadStep step, int done, int total);
     void onCameraChanged();
@@ -143,7 +143,6 @@ private:
     std::unique_ptr<RenderThread> render_; // null without a usable Vulkan device
     TexturePlan device_plan_;              // the device's side of the loader's texture plan
     bool gpu_failed_ = false;              // a frame threw: stop drawing, say so once
-    PreparedTextures prepared_;            // of the scene on screen (texture dock, cache)
     std::weak_ptr<const tex::PreparedTextureSet> logged_textures_; // logTextureMessages()
     std::unique_ptr<FrameReport> last_report_;
     std::uint64_t last_request_ = 0;

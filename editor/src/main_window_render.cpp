@@ -61,44 +61,44 @@ void MainWindow::createRenderer() {
             QMetaObject::invokeMethod(this, [done, r] { done(r); });
         });
     });
+    // Checked on the render thread between frames, answered later: the GUI thread
+    // never waits for the frame in flight. A scene not uploaded yet is not compared.
     culling_->setGpuCheck([this](const Frustum& frustum, CullMethod method,
-                                 const std::vector<std::uint8_t>& cpu_visible, CullSample& out) {
-        GpuViewport::GpuCullCheck check;
-        try {
-            // Runs between frames (the GPU path's check mode waits for the frame in
-            // flight); a scene not uploaded yet is not compared.
-            const bool ran = render_->call([&, scene = context_.scene()](GpuViewport& gpu) {
-                return gpu.scene() == scene &&
-                       gpu.checkGpuCulling(frustum, method, cpu_visible, check);
+                                 std::vector<std::uint8_t> cpu_visible, GpuCullDone done) {
+        render_->post([this, frustum, method, cpu_visible = std::move(cpu_visible),
+                       scene = context_.sharedScene(), done = std::move(done)](GpuViewport& gpu) {
+            std::optional<GpuCullResult> result;
+            QString failure;
+            try {
+                GpuViewport::GpuCullCheck check;
+                if (gpu.scene() == scene.get() &&
+                    gpu.checkGpuCulling(frustum, method, cpu_visible, check))
+                    result = GpuCullResult{check.gpu_ms, static_cast<std::int64_t>(check.visible),
+                                           static_cast<std::int64_t>(check.differences)};
+            } catch (const std::exception& e) {
+                failure = QString::fromUtf8(e.what());
+            }
+            QMetaObject::invokeMethod(culling_, [this, done, result, failure] {
+                if (!failure.isEmpty())
+                    log_->append(LogDock::Level::Error, tr("GPU culling failed: %1").arg(failure));
+                done(result);
             });
-            if (!ran) return false;
-        } catch (const std::exception& e) {
-            log_->append(LogDock::Level::Error,
-                         tr("GPU culling failed: %1").arg(QString::fromUtf8(e.what())));
-            return false;
-        }
-        out.gpu_ms = check.gpu_ms;
-        out.gpu_visible = static_cast<std::int64_t>(check.visible);
-        out.cpu_gpu_differences = static_cast<std::int64_t>(check.differences);
-        return true;
+        });
     });
-    connect(&context_, &EditorContext::sceneChanged, this, &MainWindow::uploadScene);
+    connect(&context_, &EditorContext::sceneReady, this, &MainWindow::uploadScene);
 }
 
 void MainWindow::uploadScene() {
-    const SceneExtras* extras = context_.extras();
-    prepared_ = extras ? extras->textures : nullptr;
-    textures_->setPrepared(prepared_);
     logTextureMessages();
     pass_frames_left_ = kPassReadbackFrames;
     if (!render_) return;
     const ViewportFrame streams = currentFrame();
-    render_->post([this, scene = context_.sharedScene(), prepared = prepared_, streams,
+    render_->post([this, session = context_.sharedSession(), streams,
                    checker = a_->missing_checker->isChecked()](GpuViewport& gpu) {
-        gpu.setScene(nullptr, nullptr); // so that the stream policy costs no upload
+        gpu.setSession(nullptr); // so that the stream policy costs no upload
         gpu.setMissingTexturesChecker(checker);
         gpu.useStreamsFor(streams);
-        gpu.setScene(scene, prepared);
+        gpu.setSession(session);
         const auto bytes = static_cast<std::int64_t>(gpu.textureBytes());
         QMetaObject::invokeMethod(this, [this, bytes] { textures_->setGpuBytes(bytes); });
     });

@@ -169,9 +169,11 @@ void ViewportTests::gpuCullingAgreesWithCpu() {
     for (int step = 0; step < 3; ++step) {
         window_->viewport()->camera().orbit(120.0f, 20.0f); // new frustum each step
         Q_EMIT window_->viewport()->cameraChanged();
+        // The CPU pass is there at once; the GPU's answer comes from the render thread.
+        QVERIFY(window_->cullingMonitor().latest());
+        QTRY_VERIFY_WITH_TIMEOUT(window_->cullingMonitor().latest()->gpu_visible >= 0,
+                                 kLoadTimeoutMs);
         const CullSample* s = window_->cullingMonitor().latest();
-        QVERIFY(s);
-        QVERIFY(s->gpu_visible >= 0);
         QCOMPARE(s->cpu_gpu_differences, 0);
         QCOMPARE(static_cast<std::uint64_t>(s->gpu_visible), s->cpu.visible);
         QVERIFY(window_->cullingDock()->agreementText().contains(QStringLiteral("✔")));
@@ -184,8 +186,9 @@ void ViewportTests::gpuCullingAgreesWithCpu() {
          {QStringLiteral("builtin:default"), QStringLiteral("builtin:grid?n=10"),
           test::asset(QStringLiteral("DamagedHelmet"))}) {
         QVERIFY(load(*window_, spec));
+        QTRY_VERIFY_WITH_TIMEOUT(window_->cullingMonitor().latest()->gpu_visible >= 0,
+                                 kLoadTimeoutMs);
         const CullSample* s = window_->cullingMonitor().latest();
-        QVERIFY(s && s->gpu_visible >= 0);
         QCOMPARE(s->cpu_gpu_differences, 0);
     }
     window_->setGpuCulling(false);
@@ -305,8 +308,8 @@ void ViewportTests::progressReportsEveryStage() {
     if (!hasGpu()) return;
     // The renderer was there: the loader thread prepared the GPU textures (cache,
     // BC7/BC5), and the texture dock shows their records.
-    const SceneExtras* extras = window_->context().extras();
-    QVERIFY(extras && extras->textures);
+    const SceneSession* session = window_->context().session();
+    QVERIFY(session && session->textures);
     QCOMPARE(textures_total, 5); // DamagedHelmet: five images in five roles
     const TextureTableModel* m = window_->textureDock()->model();
     const auto cell = [m](int row, int column) { return m->index(row, column).data().toString(); };

@@ -25,6 +25,7 @@ struct GpuViewport::Impl {
     std::uint32_t width = 0, height = 0;
     SharedSession session; // on the GPU: its scene and prepared textures
     bool all_streams = false;
+    bool reduced_prepass = false;                // setReducedFramePrepass()
     std::unique_ptr<gpu::GpuCullChecker> culler; // CPU/GPU agreement checks, built per scene
 };
 
@@ -96,6 +97,10 @@ PreparedTextures prepareTextures(const TexturePlan& plan, const Scene& scene,
     settings.cancel = cancel;
     PreparedTextures set = gpu::prepare_scene_textures(scene, device, settings);
     return set && !set->cancelled ? set : nullptr;
+}
+
+void GpuViewport::setReducedFramePrepass(bool prepass) {
+    impl_->reduced_prepass = prepass;
 }
 
 void GpuViewport::setMissingTexturesChecker(bool checker) {
@@ -189,7 +194,9 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame, flo
     // A reduced frame means a slow device while the camera moves: the shadow cascades
     // follow the camera and cost the same at any resolution (DamagedHelmet on lavapipe:
     // 165 of 245 ms), so moving frames go without them; the still frame has them.
+    // So does the depth prepass, unless asked for (setReducedFramePrepass).
     if (scale < 1.0f) settings.shadows = false;
+    if (scale < 1.0f && !impl_->reduced_prepass) settings.depth_prepass = gpu::PrepassMode::Off;
     if (!impl_->presenter || impl_->surface != surface) {
         impl_->presenter.reset();
         // Not FIFO: the render thread must not block on the display's refresh, and

@@ -59,6 +59,11 @@ public:
     // Material slots whose texture is missing or undecodable: a magenta/black checker
     // in colour slots (true), or the glTF defaults (false). Applies at the next setSession().
     void setMissingTexturesChecker(bool checker);
+    // Whether frames drawn reduced (scale < 1, moving on a slow device) keep the
+    // depth prepass the renderer would choose. Off by default: at a third of each
+    // side DamagedHelmet's prepass saves less shading than it costs on lavapipe
+    // (sherpa-bench-orbit: 1.09-1.22x the frame rate without it).
+    void setReducedFramePrepass(bool prepass);
     // Uploads the session's scene (replacing the previous one; null unloads) with the
     // textures the loader prepared for it (none: uploaded without textures). The
     // viewport keeps the session alive while its scene is on the GPU.

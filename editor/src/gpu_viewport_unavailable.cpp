@@ -32,6 +32,7 @@ PreparedTextures prepareTextures(const TexturePlan&, const Scene&, const Progres
     return nullptr;
 }
 void GpuViewport::setMissingTexturesChecker(bool) {}
+void GpuViewport::setReducedFramePrepass(bool) {}
 void GpuViewport::setSession(SharedSession) {}
 void GpuViewport::useStreamsFor(const ViewportFrame&) {}
 void GpuViewport::upload() {}

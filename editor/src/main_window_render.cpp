@@ -164,7 +164,7 @@ void MainWindow::onFrameDone(const FrameReport& report) {
            "creation). While the camera moves on a slow device, frames are drawn at a lower "
            "resolution and without shadows to keep %2 fps; at rest the full frame follows.")
             .arg(frame_times_.count())
-            .arg(qRound(1000.0 / kTargetFrameMs)));
+            .arg(kGoalFps));
     viewport_->frameDrawn(report.ms);
     if (report.cull_passes)
         culling_dock_->setRendererPasses(report.passes, report.cached_shadows);

@@ -67,7 +67,7 @@ public:
     void setInteractiveScaling(bool on);
     // The scale the next moving frame gets (1: full size).
     float interactiveScale() const;
-    // The frame time moving frames aim at (kTargetFrameMs: 30 fps).
+    // The frame time moving frames aim at (kTargetFrameMs: 36 fps, for a 30 fps goal).
     void setTargetFrameMs(double ms);
 
     static constexpr int kRestMs = 80; // no new camera for this long: the camera rests

@@ -26,6 +26,10 @@
 namespace sherpa::editor {
 
 void MainWindow::openScene(const QString& spec) {
+    if (device_pending_) { // the texture plan needs the device's capabilities
+        pending_open_ = spec;
+        return;
+    }
     log_->append(LogDock::Level::Info, tr("Loading %1…").arg(spec));
     // Textures are prepared on the loader thread for this device, with the cache
     // settings of this moment.
@@ -43,6 +47,7 @@ void MainWindow::reloadScene() {
 }
 
 void MainWindow::closeScene() {
+    pending_open_.clear();
     loader_.cancel();
     context_.clearScene();
     updateStatus();

@@ -18,11 +18,13 @@ namespace sherpa::editor {
 class MaterialFieldsModel : public QAbstractTableModel {
     Q_OBJECT
 public:
+    // Field and value first: in a side dock of the default width (1600x1000) they
+    // are what shows without scrolling (the value was cut off behind offset and type).
     enum Column {
-        OffsetColumn,
         FieldColumn,
-        TypeColumn,
         ValueColumn,
+        TypeColumn,
+        OffsetColumn,
         PropertyColumn,
         ChainColumn,
         ColumnCount

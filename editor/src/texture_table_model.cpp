@@ -45,8 +45,11 @@ QVariant TextureTableModel::cacheData(std::size_t row, int column) const {
     const tex::PreparedTexture* r = preparedRecord(row);
     if (!r) return none;
     switch (column) {
-    case HashColumn:
-        return QString::fromStdString(r->source_hash.hex()).left(16);
+    case HashColumn: {
+        // Both ends of the 32 digits, the middle elided; all of them on hover and copy.
+        const QString hex = QString::fromStdString(r->source_hash.hex());
+        return hex.left(8) + QChar(0x2026) + hex.right(8);
+    }
     case FormatColumn: {
         QString f =
             QString::fromLatin1(tex::vk_format_name(r->format).data(),
@@ -123,6 +126,11 @@ QVariant TextureTableModel::data(const QModelIndex& index, int role) const {
     if (role == Qt::DecorationRole && index.column() == NameColumn && session_ &&
         row < session_->thumbnails.size() && !session_->thumbnails[row].isNull())
         return session_->thumbnails[row];
+    if ((role == Qt::ToolTipRole || role == Format::kExactTextRole) &&
+        index.column() == HashColumn) {
+        const tex::PreparedTexture* r = preparedRecord(row);
+        return r ? QVariant(QString::fromStdString(r->source_hash.hex())) : QVariant();
+    }
     // A failed texture's whole story (file, reason, the slots that read it) on hover.
     if (role == Qt::ToolTipRole && img &&
         (index.column() == SizeColumn || index.column() == CacheStateColumn)) {

@@ -11,6 +11,7 @@
 #include "culling_dock.h"
 #include "culling_monitor.h"
 #include "editor_settings.h"
+#include "format_values.h"
 #include "gpu_viewport.h"
 #include "log_dock.h"
 #include "main_window.h"
@@ -319,7 +320,14 @@ void ViewportTests::progressReportsEveryStage() {
                  qPrintable(cell(row, TextureTableModel::CacheStateColumn)));
         QVERIFY(cell(row, TextureTableModel::FormatColumn).startsWith(QStringLiteral("BC")) ||
                 cell(row, TextureTableModel::FormatColumn).startsWith(QStringLiteral("R8G8B8A8")));
-        QCOMPARE(cell(row, TextureTableModel::HashColumn).size(), 16);
+        // The hash elided in the middle; all 32 digits on hover and on copy.
+        const QString hash = cell(row, TextureTableModel::HashColumn);
+        const QString full =
+            m->index(row, TextureTableModel::HashColumn).data(Format::kExactTextRole).toString();
+        QCOMPARE(full.size(), 32);
+        QCOMPARE(hash, full.left(8) + QChar(0x2026) + full.right(8));
+        QCOMPARE(m->index(row, TextureTableModel::HashColumn).data(Qt::ToolTipRole).toString(),
+                 full);
         QVERIFY(cell(row, TextureTableModel::GpuBytesColumn) != QStringLiteral("—"));
         QCOMPARE(cell(row, TextureTableModel::MipsColumn), QStringLiteral("12")); // 2048² chain
     }

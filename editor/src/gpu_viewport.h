@@ -61,8 +61,8 @@ public:
     void setMissingTexturesChecker(bool checker);
     // Whether frames drawn reduced (scale < 1, moving on a slow device) keep the
     // depth prepass the renderer would choose. Off by default: at a third of each
-    // side DamagedHelmet's prepass saves less shading than it costs on lavapipe
-    // (sherpa-bench-orbit: 1.09-1.22x the frame rate without it).
+    // side DamagedHelmet's prepass saves about as much shading as it costs on
+    // lavapipe (sherpa-bench-orbit: 1.00-1.22x the frame rate without it, four runs).
     void setReducedFramePrepass(bool prepass);
     // Uploads the session's scene (replacing the previous one; null unloads) with the
     // textures the loader prepared for it (none: uploaded without textures). The

@@ -36,7 +36,8 @@ int main(int argc, char** argv) {
                      static_cast<int>(vulkan.errorCode()));
 
     sherpa::editor::MainWindow window(vulkan.isValid() ? &vulkan : nullptr);
-    // The scene starts loading on the thread pool before the window is shown.
+    // The device is made on the render thread while the window shows; the scene
+    // starts loading on the thread pool once it is known.
     sherpa::editor::run_command_line(window, cl, launch.nsecsElapsed());
     window.show();
     return QApplication::exec();

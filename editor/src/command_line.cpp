@@ -149,7 +149,11 @@ void run_command_line(MainWindow& window, const CommandLine& cl, qint64 started_
     if (cl.gpu_culling) window.setGpuCulling(true);
     if (!cl.docks.isEmpty()) window.setLayoutRemembered(false);
     // Once the window is shown: before, its dock tab bars do not exist to switch.
-    QTimer::singleShot(0, &window, [&window, docks = cl.docks] {
+    QTimer::singleShot(0, &window, [&window, docks = cl.docks, timing = cl.timing, since_launch] {
+        if (timing) {
+            std::printf("sherpa: window shown %.1f ms after launch\n", since_launch());
+            std::fflush(stdout);
+        }
         for (const QString& name : docks)
             if (QDockWidget* d = dock_named(window, name)) {
                 d->show();

@@ -10,7 +10,7 @@ CullingMonitor::CullingMonitor(const EditorContext& context, QObject* parent)
     deferred_ = new QTimer(this);
     deferred_->setSingleShot(true);
     connect(deferred_, &QTimer::timeout, this, &CullingMonitor::rerun);
-    connect(&context_, &EditorContext::sceneChanged, this, [this] {
+    connect(&context_, &EditorContext::sceneReady, this, [this] {
         input_ = context_.scene() ? prepare_cull_input(*context_.scene()) : CullInput{};
         history_ = RingHistory<CullSample>(kHistory);
         frozen_.reset();
@@ -38,7 +38,7 @@ void CullingMonitor::setGpuPath(bool gpu) {
 
 void CullingMonitor::update(const CameraSpec& camera) {
     camera_ = camera;
-    if (last_ms_ < kSynchronousMs) return rerun();
+    if (last_ms_ < coalesce_above_ms_) return rerun();
     // Expensive: the latest camera once the GUI thread has had twice the pass's time.
     if (!deferred_->isActive()) deferred_->start(static_cast<int>(2.0 * last_ms_));
 }
@@ -60,7 +60,7 @@ void CullingMonitor::rerun() {
     }
     const CameraSpec& cam = cullingCamera();
     const Frustum frustum = frustum_from_view_projection(cam.view_projection());
-    QElapsedTimer clock; // the CPU pass alone (the GPU check waits for a frame)
+    QElapsedTimer clock; // the CPU pass alone
     clock.start();
     PassResult pass = cull_pass(input_, frustum, cam.eye, options_, "camera");
     last_ms_ = static_cast<double>(clock.nsecsElapsed()) / 1e6;
@@ -69,10 +69,21 @@ void CullingMonitor::rerun() {
     for (std::uint32_t i : pass.visible_transparent) visible_[i] = 1;
     CullSample sample;
     sample.cpu = std::move(pass.stats);
-    if (gpu_path_ && gpu_check_ && gpu_check_(frustum, options_.method, visible_, sample))
-        sample.cpu.cpu_gpu_differences = sample.cpu_gpu_differences;
     history_.push(std::move(sample));
+    const std::uint64_t serial = ++samples_;
     Q_EMIT updated();
+    if (!gpu_path_ || !gpu_check_) return;
+    gpu_check_(frustum, options_.method, visible_, [this, serial](std::optional<GpuCullResult> r) {
+        // Only for the sample it was asked for: a newer pass (camera, scene, method)
+        // asks again.
+        if (!r || serial != samples_ || history_.size() == 0) return;
+        CullSample& s = history_.back();
+        s.gpu_ms = r->gpu_ms;
+        s.gpu_visible = r->visible;
+        s.cpu_gpu_differences = r->differences;
+        s.cpu.cpu_gpu_differences = r->differences;
+        Q_EMIT updated();
+    });
 }
 
 } // namespace sherpa::editor

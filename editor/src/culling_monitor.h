@@ -23,10 +23,18 @@ struct CullSample {
     std::int64_t cpu_gpu_differences = -1; // objects the two paths disagree on
 };
 
-// Runs the GPU culling for a frustum and compares it with the CPU's visible set
-// (per scene instance); fills the sample's GPU fields, false when it could not run.
-using GpuCullCheck =
-    std::function<bool(const Frustum&, CullMethod, const std::vector<std::uint8_t>&, CullSample&)>;
+// What the GPU culling shader made of a frustum, against the CPU's visible set.
+struct GpuCullResult {
+    double gpu_ms = -1.0;
+    std::int64_t visible = -1;
+    std::int64_t differences = -1; // objects the two paths disagree on
+};
+// Called on the GUI thread when the check is done; nullopt when it could not run.
+using GpuCullDone = std::function<void(std::optional<GpuCullResult>)>;
+// Runs the GPU culling for a frustum and compares it with the CPU's visible set (per
+// scene instance) without waiting: the answer comes through `done`, later.
+using GpuCullCheck = std::function<void(const Frustum&, CullMethod,
+                                        std::vector<std::uint8_t> cpu_visible, GpuCullDone done)>;
 
 class CullingMonitor : public QObject {
     Q_OBJECT
@@ -37,8 +45,10 @@ public:
     void setMethod(CullMethod method);
     CullMethod method() const { return options_.method; }
     void setFrozen(bool frozen);
-    // The renderer culls on the GPU: each update also runs `check` (the renderer's
-    // GPU culling shader) and records how far it agrees with the CPU pass.
+    // The renderer culls on the GPU: each update also asks `check` (the renderer's
+    // GPU culling shader) how far it agrees with the CPU pass; the answer fills the
+    // newest sample when it comes (one for an older sample is dropped) and emits
+    // updated() again. Nothing waits for it.
     void setGpuPath(bool gpu);
     bool gpuPath() const { return gpu_path_; }
     void setGpuCheck(GpuCullCheck check) { gpu_check_ = std::move(check); }
@@ -49,6 +59,12 @@ public:
     // the pass is cheap, else coalesced so that culling takes at most a third of the
     // GUI thread (the 100k grid costs tens of ms per pass; camera input comes at 60 Hz).
     void update(const CameraSpec& camera);
+    // Passes that cost at least this much are coalesced (kCoalesceAboveMs by default).
+    void setCoalesceAboveMs(double ms) { coalesce_above_ms_ = ms; }
+    // What the last CPU pass cost.
+    double lastPassMs() const { return last_ms_; }
+    // A coalesced update is waiting.
+    bool deferred() const { return deferred_->isActive(); }
     // Runs a deferred update now (tests, before reading latest()).
     void flush();
 
@@ -65,7 +81,7 @@ Q_SIGNALS:
 private:
     void rerun();
 
-    static constexpr double kSynchronousMs = 4.0; // passes cheaper than this run at once
+    static constexpr double kCoalesceAboveMs = 4.0; // passes cheaper than this run at once
     const EditorContext& context_;
     CullInput input_; // boxes and draw groups, prepared once per scene
     CullOptions options_;
@@ -76,7 +92,9 @@ private:
     bool gpu_path_ = false;
     GpuCullCheck gpu_check_;
     double last_ms_ = 0.0; // cost of the last pass
-    QTimer* deferred_;     // a coalesced update waiting
+    double coalesce_above_ms_ = kCoalesceAboveMs;
+    std::uint64_t samples_ = 0; // passes run; a GPU answer belongs to one of them
+    QTimer* deferred_;          // a coalesced update waiting
 };
 
 } // namespace sherpa::editor

@@ -1,7 +1,5 @@
 #include "editor_context.h"
 
-#include "scene_extras.h"
-
 namespace sherpa::editor {
 
 EditorContext::EditorContext(QObject* parent) : QObject(parent) {}
@@ -13,27 +11,20 @@ bool EditorContext::nodeVisible(int node) const {
 }
 
 bool EditorContext::instanceVisible(std::size_t instance) const {
-    if (!scene_ || instance >= scene_->instances.size()) return false;
+    if (!scene() || instance >= scene()->instances.size()) return false;
     // Hiding a node hides its subtree, as in every DCC tool.
-    for (int n = static_cast<int>(scene_->instances[instance].node_id); n >= 0;
-         n = scene_->nodes[static_cast<std::size_t>(n)].parent)
+    for (int n = static_cast<int>(scene()->instances[instance].node_id); n >= 0;
+         n = scene()->nodes[static_cast<std::size_t>(n)].parent)
         if (!nodeVisible(n)) return false;
     return true;
 }
 
-void EditorContext::setScene(QString spec, std::shared_ptr<const Scene> scene,
-                             std::shared_ptr<const SceneExtras> extras) {
-    spec_ = std::move(spec);
-    scene_ = std::move(scene);
-    extras_ = std::move(extras);
+void EditorContext::setSession(SharedSession session) {
+    session_ = std::move(session);
     selection_ = {};
-    node_visible_.assign(scene_ ? scene_->nodes.size() : 0, 1);
-    Q_EMIT sceneChanged();
+    node_visible_.assign(session_ ? session_->scene->nodes.size() : 0, 1);
+    Q_EMIT sceneReady();
     Q_EMIT selectionChanged();
-}
-
-void EditorContext::clearScene() {
-    setScene({}, nullptr, nullptr);
 }
 
 void EditorContext::setSelection(const Selection& selection) {
@@ -44,27 +35,27 @@ void EditorContext::setSelection(const Selection& selection) {
 
 void EditorContext::selectNode(int node) {
     Selection s;
-    if (!scene_ || node < 0 || static_cast<std::size_t>(node) >= scene_->nodes.size())
+    if (!scene() || node < 0 || static_cast<std::size_t>(node) >= scene()->nodes.size())
         return setSelection(s);
     s.node = node;
-    const Node& n = scene_->nodes[static_cast<std::size_t>(node)];
-    if (n.mesh >= 0 && static_cast<std::size_t>(n.mesh) < scene_->mesh_primitives.size())
-        for (std::int32_t m : scene_->mesh_primitives[static_cast<std::size_t>(n.mesh)])
+    const Node& n = scene()->nodes[static_cast<std::size_t>(node)];
+    if (n.mesh >= 0 && static_cast<std::size_t>(n.mesh) < scene()->mesh_primitives.size())
+        for (std::int32_t m : scene()->mesh_primitives[static_cast<std::size_t>(n.mesh)])
             if (m >= 0) {
                 s.mesh = m;
                 s.material =
-                    static_cast<int>(scene_->meshes[static_cast<std::size_t>(m)].material_id);
+                    static_cast<int>(scene()->meshes[static_cast<std::size_t>(m)].material_id);
                 break;
             }
     setSelection(s);
 }
 
 void EditorContext::selectMesh(int mesh, int node) {
-    if (!scene_ || mesh < 0 || static_cast<std::size_t>(mesh) >= scene_->meshes.size()) return;
+    if (!scene() || mesh < 0 || static_cast<std::size_t>(mesh) >= scene()->meshes.size()) return;
     Selection s;
     s.node = node;
     s.mesh = mesh;
-    s.material = static_cast<int>(scene_->meshes[static_cast<std::size_t>(mesh)].material_id);
+    s.material = static_cast<int>(scene()->meshes[static_cast<std::size_t>(mesh)].material_id);
     setSelection(s);
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // The read-only state every dock sees ("context in, actions out"): the current
-// scene, the selection, per-node visibility and the latest culling numbers. Docks
-// hold a const reference and only listen; the main window owns the one mutable
-// instance and changes it in answer to the actions docks emit.
+// scene session (the scene with its prepared textures, thumbnails and timings), the selection,
+// per-node visibility and the latest culling numbers. Docks hold a const reference and only listen;
+// the main window owns the one mutable instance and changes it in answer to the actions docks emit.
 #include <QObject>
 #include <QString>
 
@@ -10,6 +10,8 @@
 #include <vector>
 
 #include <sherpa/scene/scene.h>
+
+#include "scene_session.h"
 
 namespace sherpa::editor {
 
@@ -23,29 +25,29 @@ struct Selection {
     bool operator==(const Selection&) const = default;
 };
 
-// Thumbnails and other per-scene data computed off the UI thread along with the scene.
-struct SceneExtras;
-
 class EditorContext : public QObject {
     Q_OBJECT
 public:
     explicit EditorContext(QObject* parent = nullptr);
     ~EditorContext() override;
 
-    const Scene* scene() const { return scene_.get(); }
-    std::shared_ptr<const Scene> sharedScene() const { return scene_; }
-    const SceneExtras* extras() const { return extras_.get(); }
-    std::shared_ptr<const SceneExtras> sharedExtras() const { return extras_; }
-    const QString& sceneSpec() const { return spec_; }
+    // The loaded scene as one value; null when none is open.
+    const SceneSession* session() const { return session_.get(); }
+    const SharedSession& sharedSession() const { return session_; }
+    const Scene* scene() const { return session_ ? session_->scene.get() : nullptr; }
+    std::shared_ptr<const Scene> sharedScene() const {
+        return session_ ? session_->scene : nullptr;
+    }
+    QString sceneSpec() const { return session_ ? session_->spec : QString(); }
     const Selection& selection() const { return selection_; }
     bool nodeVisible(int node) const;
     // Instances whose node and every ancestor are visible.
     bool instanceVisible(std::size_t instance) const;
 
     // --- mutation, for the main window only (docks see a const context) ---
-    void setScene(QString spec, std::shared_ptr<const Scene> scene,
-                  std::shared_ptr<const SceneExtras> extras);
-    void clearScene();
+    // Swaps in a loaded scene in one step (null: none open) and emits sceneReady.
+    void setSession(SharedSession session);
+    void clearScene() { setSession(nullptr); }
     void setSelection(const Selection& selection);
     // Selects a node and its first primitive (and that primitive's material).
     void selectNode(int node);
@@ -58,16 +60,16 @@ public:
     void setNodeVisible(int node, bool visible);
 
 Q_SIGNALS:
-    void sceneChanged();
+    // A new session (or none, after Close): the docks read it from the context, the
+    // viewport uploads it. Emitted once per setSession(), before selectionChanged.
+    void sceneReady();
     void selectionChanged();
     void visibilityChanged();
 
 private:
     void setSelectionField(int Selection::*field, int value);
 
-    QString spec_;
-    std::shared_ptr<const Scene> scene_;
-    std::shared_ptr<const SceneExtras> extras_;
+    SharedSession session_;
     Selection selection_;
     std::vector<char> node_visible_;
 };

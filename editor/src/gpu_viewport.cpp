@@ -23,9 +23,9 @@ struct GpuViewport::Impl {
     gpu::FrameStats completed; // of the latest frame known complete (status bar, pass table)
     std::uint64_t surface = 0;
     std::uint32_t width = 0, height = 0;
-    std::shared_ptr<const Scene> scene; // on the GPU
+    SharedSession session; // on the GPU: its scene and prepared textures
     bool all_streams = false;
-    PreparedTextures prepared;                   // of `scene`
+    bool reduced_prepass = false;                // setReducedFramePrepass()
     std::unique_ptr<gpu::GpuCullChecker> culler; // CPU/GPU agreement checks, built per scene
 };
 
@@ -99,29 +99,33 @@ PreparedTextures prepareTextures(const TexturePlan& plan, const Scene& scene,
     return set && !set->cancelled ? set : nullptr;
 }
 
+void GpuViewport::setReducedFramePrepass(bool prepass) {
+    impl_->reduced_prepass = prepass;
+}
+
 void GpuViewport::setMissingTexturesChecker(bool checker) {
     gpu::TextureSettings t = impl_->renderer->texture_settings();
     t.missing = checker ? gpu::MissingTextures::Checker : gpu::MissingTextures::Neutral;
     impl_->renderer->set_texture_settings(t);
 }
 
-void GpuViewport::setScene(std::shared_ptr<const Scene> scene, PreparedTextures textures) {
-    if (scene != impl_->scene) impl_->culler.reset();
-    impl_->scene = std::move(scene);
-    impl_->prepared = std::move(textures);
+void GpuViewport::setSession(SharedSession session) {
+    if (session != impl_->session) impl_->culler.reset();
+    impl_->session = std::move(session);
     upload();
 }
 
 // The current scene to the GPU with the current stream policy.
 void GpuViewport::upload() {
-    if (!impl_->scene) {
+    if (!impl_->session) {
         impl_->renderer->unload();
         return;
     }
     // No textures prepared (cancelled, no plan): an empty set, so that load() does
     // not run the texture pipeline on this thread.
-    if (!impl_->prepared) impl_->prepared = std::make_shared<const tex::PreparedTextureSet>();
-    impl_->renderer->load(*impl_->scene, impl_->prepared,
+    PreparedTextures textures = impl_->session->textures;
+    if (!textures) textures = std::make_shared<const tex::PreparedTextureSet>();
+    impl_->renderer->load(*impl_->session->scene, std::move(textures),
                           impl_->all_streams ? gpu::StreamPolicy::AllPresent
                                              : gpu::StreamPolicy::UsedByMaterials);
 }
@@ -144,12 +148,8 @@ QStringList GpuViewport::validationMessages() const {
     return out;
 }
 
-PreparedTextures GpuViewport::preparedTextures() const {
-    return impl_->prepared; // reset with the scene
-}
-
 const Scene* GpuViewport::scene() const {
-    return impl_->scene.get();
+    return impl_->session ? impl_->session->scene.get() : nullptr;
 }
 
 QStringList GpuViewport::lastPassTimes() const {
@@ -194,7 +194,9 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame, flo
     // A reduced frame means a slow device while the camera moves: the shadow cascades
     // follow the camera and cost the same at any resolution (DamagedHelmet on lavapipe:
     // 165 of 245 ms), so moving frames go without them; the still frame has them.
+    // So does the depth prepass, unless asked for (setReducedFramePrepass).
     if (scale < 1.0f) settings.shadows = false;
+    if (scale < 1.0f && !impl_->reduced_prepass) settings.depth_prepass = gpu::PrepassMode::Off;
     if (!impl_->presenter || impl_->surface != surface) {
         impl_->presenter.reset();
         // Not FIFO: the render thread must not block on the display's refresh, and
@@ -220,9 +222,9 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame, flo
 }
 
 std::optional<GpuMaterialReadback> GpuViewport::readMaterial(int material) {
-    if (!impl_->scene) return std::nullopt;
+    if (!scene()) return std::nullopt;
     std::optional<gpu::MaterialReadback> r =
-        gpu::read_material(*impl_->renderer, *impl_->scene, material);
+        gpu::read_material(*impl_->renderer, *scene(), material);
     if (!r) return std::nullopt;
     return GpuMaterialReadback{r->record, std::move(r->bindless_to_texture)};
 }
@@ -257,7 +259,7 @@ namespace sherpa::editor {
 
 bool GpuViewport::checkGpuCulling(const Frustum& frustum, CullMethod method,
                                   const std::vector<std::uint8_t>& cpu_visible, GpuCullCheck& out) {
-    const Scene* scene = impl_->scene.get();
+    const Scene* scene = this->scene();
     if (!scene || scene->instances.empty()) return false;
     if (!impl_->culler || &impl_->culler->scene() != scene)
         impl_->culler = std::make_unique<gpu::GpuCullChecker>(*impl_->context,

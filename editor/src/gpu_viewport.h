@@ -17,7 +17,7 @@
 #include <sherpa/scene/scene.h>
 
 #include "material_dock.h"
-#include "scene_extras.h"
+#include "scene_session.h"
 
 class QVulkanInstance;
 
@@ -57,19 +57,21 @@ public:
     // adds the cache settings. Plain data; prepareTextures() runs it on any thread.
     TexturePlan texturePlan() const;
     // Material slots whose texture is missing or undecodable: a magenta/black checker
-    // in colour slots (true), or the glTF defaults (false). Applies at the next setScene().
+    // in colour slots (true), or the glTF defaults (false). Applies at the next setSession().
     void setMissingTexturesChecker(bool checker);
-    // Uploads the scene (replacing the previous one; null unloads) with the textures
-    // the loader prepared for it (none: uploaded without textures). The viewport keeps
-    // `scene` alive while it is on the GPU.
-    void setScene(std::shared_ptr<const Scene> scene, PreparedTextures textures);
+    // Whether frames drawn reduced (scale < 1, moving on a slow device) keep the
+    // depth prepass the renderer would choose. Off by default: at a third of each
+    // side DamagedHelmet's prepass saves about as much shading as it costs on
+    // lavapipe (sherpa-bench-orbit: 1.00-1.22x the frame rate without it, four runs).
+    void setReducedFramePrepass(bool prepass);
+    // Uploads the session's scene (replacing the previous one; null unloads) with the
+    // textures the loader prepared for it (none: uploaded without textures). The
+    // viewport keeps the session alive while its scene is on the GPU.
+    void setSession(SharedSession session);
     // The streams the view and overlays of `frame` read: a debug view of streams no
     // material reads uploads the scene again with every stream (when the view changes,
     // never per frame).
     void useStreamsFor(const ViewportFrame& frame);
-    // The uploaded scene's prepared textures: cache state, hash, format, bytes,
-    // timings and PSNR per texture (null without a scene).
-    PreparedTextures preparedTextures() const;
     // The scene last uploaded.
     const Scene* scene() const;
     // Presents one frame on `surface` (the swapchain is created on first use and

@@ -32,7 +32,8 @@ PreparedTextures prepareTextures(const TexturePlan&, const Scene&, const Progres
     return nullptr;
 }
 void GpuViewport::setMissingTexturesChecker(bool) {}
-void GpuViewport::setScene(std::shared_ptr<const Scene>, PreparedTextures) {}
+void GpuViewport::setReducedFramePrepass(bool) {}
+void GpuViewport::setSession(SharedSession) {}
 void GpuViewport::useStreamsFor(const ViewportFrame&) {}
 void GpuViewport::upload() {}
 void GpuViewport::finish() {}
@@ -43,9 +44,6 @@ double GpuViewport::lastGpuMs() const {
     return -1.0;
 }
 const Scene* GpuViewport::scene() const {
-    return nullptr;
-}
-PreparedTextures GpuViewport::preparedTextures() const {
     return nullptr;
 }
 bool GpuViewport::checkGpuCulling(const Frustum&, CullMethod, const std::vector<std::uint8_t>&,

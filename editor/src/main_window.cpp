@@ -80,7 +80,8 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent)
     createActions();
     createMenus();
     connectActions();
-    // Now, not later: the first scene's textures are prepared for this device.
+    // Its device is made on the render thread while the window shows; the first
+    // scene starts loading once it is known (its textures are prepared for it).
     createRenderer();
 
     resize(1600, 1000);

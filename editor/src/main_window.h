@@ -115,6 +115,8 @@ private:
 
     void createDocks();
     void createRenderer();
+    // The render thread has made its device or failed to: open the scene asked for.
+    void deviceKnown();
     void uploadScene();
     // The uploaded textures' warnings (missing, undecodable...) and notices, once per set.
     void logTextureMessages();
@@ -126,7 +128,7 @@ private:
     // the next frame.
     void updateStreams();
     void connectActions();
-    void onLoaded(const QString& spec, const LoadOutcome& outcome, double ms);
+    void onLoaded(SharedSession session);
     void onLoadFailed(const QString& spec, const QString& error);
     void onProgress(LoadStep step, int done, int total);
     void onCameraChanged();
@@ -142,8 +144,9 @@ private:
     QVulkanInstance* vulkan_ = nullptr;
     std::unique_ptr<RenderThread> render_; // null without a usable Vulkan device
     TexturePlan device_plan_;              // the device's side of the loader's texture plan
+    bool device_pending_ = false;          // the render thread is still making the device
+    QString pending_open_;                 // asked for while the device was pending
     bool gpu_failed_ = false;              // a frame threw: stop drawing, say so once
-    PreparedTextures prepared_;            // of the scene on screen (texture dock, cache)
     std::weak_ptr<const tex::PreparedTextureSet> logged_textures_; // logTextureMessages()
     std::unique_ptr<FrameReport> last_report_;
     std::uint64_t last_request_ = 0;

@@ -26,6 +26,10 @@
 namespace sherpa::editor {
 
 void MainWindow::openScene(const QString& spec) {
+    if (device_pending_) { // the texture plan needs the device's capabilities
+        pending_open_ = spec;
+        return;
+    }
     log_->append(LogDock::Level::Info, tr("Loading %1…").arg(spec));
     // Textures are prepared on the loader thread for this device, with the cache
     // settings of this moment.
@@ -43,6 +47,7 @@ void MainWindow::reloadScene() {
 }
 
 void MainWindow::closeScene() {
+    pending_open_.clear();
     loader_.cancel();
     context_.clearScene();
     updateStatus();
@@ -79,24 +84,26 @@ void MainWindow::onProgress(LoadStep step, int done, int total) {
     last_progress_ = progress_->text();
 }
 
-void MainWindow::onLoaded(const QString& spec, const LoadOutcome& outcome, double ms) {
-    // The swap: one assignment, so the old scene is shown until this very moment.
-    context_.setScene(spec, outcome.scene, outcome.extras);
-    settings_.addRecentFile(spec);
-    for (const std::string& w : outcome.scene->warnings)
+void MainWindow::onLoaded(SharedSession session) {
+    const SceneSession& s = *session;
+    // The swap: one assignment, so the old scene is shown until this very moment. Its
+    // sceneReady reaches the docks and uploadScene().
+    context_.setSession(session);
+    settings_.addRecentFile(s.spec);
+    for (const std::string& w : s.scene->warnings)
         log_->append(LogDock::Level::Warning, QString::fromStdString(w));
     log_->append(LogDock::Level::Info,
                  tr("Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).")
-                     .arg(spec)
-                     .arg(ms, 0, 'f', 1)
-                     .arg(outcome.extras->load_ms, 0, 'f', 1)
-                     .arg(outcome.extras->thumbnails_ms, 0, 'f', 1)
-                     .arg(outcome.extras->textures_ms, 0, 'f', 1));
-    viewport_->camera().frameAuto(outcome.scene->bounds);
+                     .arg(s.spec)
+                     .arg(s.timings.total_ms, 0, 'f', 1)
+                     .arg(s.timings.engine_ms, 0, 'f', 1)
+                     .arg(s.timings.thumbnails_ms, 0, 'f', 1)
+                     .arg(s.timings.textures_ms, 0, 'f', 1));
+    viewport_->camera().frameAuto(s.scene->bounds);
     viewport_->setAutoFrame(true);
     onCameraChanged();
     updateStatus();
-    Q_EMIT sceneLoaded(spec, ms);
+    Q_EMIT sceneLoaded(s.spec, s.timings.total_ms);
 }
 
 void MainWindow::onLoadFailed(const QString& spec, const QString& error) {

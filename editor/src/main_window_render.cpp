@@ -6,6 +6,7 @@
 
 #include <QElapsedTimer>
 #include <QLabel>
+#include <utility>
 
 #include "culling_dock.h"
 #include "culling_monitor.h"
@@ -30,20 +31,25 @@ void MainWindow::createRenderer() {
         log_->append(LogDock::Level::Error, tr("No Vulkan instance: the viewport cannot render."));
         return;
     }
-    QElapsedTimer clock;
-    clock.start();
-    QString error;
-    std::unique_ptr<GpuViewport> made = GpuViewport::create(*vulkan_, error);
-    if (!made) {
+    // The device is made on the render thread while the window shows. openScene()
+    // waits for it (the loader's texture plan needs its capabilities): a scene asked
+    // for meanwhile starts loading when it is known, either way.
+    device_pending_ = true;
+    render_ = std::make_unique<RenderThread>(
+        [instance = vulkan_](QString& error) { return GpuViewport::create(*instance, error); });
+    connect(render_.get(), &RenderThread::deviceReady, this,
+            [this](const TexturePlan& plan, const QString& name, double ms) {
+                log_->append(
+                    LogDock::Level::Info,
+                    tr("Rendering on %1 (renderer ready in %2 ms).").arg(name).arg(ms, 0, 'f', 1));
+                device_plan_ = plan;
+                deviceKnown();
+            });
+    connect(render_.get(), &RenderThread::deviceFailed, this, [this](const QString& error) {
         log_->append(LogDock::Level::Error, tr("The renderer could not start: %1").arg(error));
-        return;
-    }
-    log_->append(LogDock::Level::Info,
-                 tr("Rendering on %1 (renderer ready in %2 ms).")
-                     .arg(made->deviceName())
-                     .arg(static_cast<double>(clock.nsecsElapsed()) / 1e6, 0, 'f', 1));
-    device_plan_ = made->texturePlan();
-    render_ = std::make_unique<RenderThread>(std::move(made));
+        render_.release()->deleteLater(); // its thread has ended; the signal is still on
+        deviceKnown();
+    });
     connect(render_.get(), &RenderThread::frameDone, this, &MainWindow::onFrameDone);
     connect(render_.get(), &RenderThread::renderError, this, [this](const QString& e) {
         gpu_failed_ = true;
@@ -51,54 +57,65 @@ void MainWindow::createRenderer() {
     });
     viewport_->setFrameCallback([this] { renderFrame(); });
     // The swapchain must go before its surface (closing the window destroys it).
-    connect(viewport_, &ViewportWindow::surfaceAboutToBeDestroyed, this,
-            [this] { render_->releaseSurface(); });
+    connect(viewport_, &ViewportWindow::surfaceAboutToBeDestroyed, this, [this] {
+        if (render_) render_->releaseSurface();
+    });
     // Read back on the render thread, shown when it comes (the dock shows the CPU
     // record meanwhile): selecting a material never waits for a frame.
     material_->setReadback([this](int material, MaterialReadbackDone done) {
-        render_->post([this, material, done = std::move(done)](GpuViewport& gpu) {
-            std::optional<GpuMaterialReadback> r = gpu.readMaterial(material);
-            QMetaObject::invokeMethod(this, [done, r] { done(r); });
-        });
-    });
-    culling_->setGpuCheck([this](const Frustum& frustum, CullMethod method,
-                                 const std::vector<std::uint8_t>& cpu_visible, CullSample& out) {
-        GpuViewport::GpuCullCheck check;
-        try {
-            // Runs between frames (the GPU path's check mode waits for the frame in
-            // flight); a scene not uploaded yet is not compared.
-            const bool ran = render_->call([&, scene = context_.scene()](GpuViewport& gpu) {
-                return gpu.scene() == scene &&
-                       gpu.checkGpuCulling(frustum, method, cpu_visible, check);
+        if (render_)
+            render_->post([this, material, done = std::move(done)](GpuViewport& gpu) {
+                std::optional<GpuMaterialReadback> r = gpu.readMaterial(material);
+                QMetaObject::invokeMethod(this, [done, r] { done(r); });
             });
-            if (!ran) return false;
-        } catch (const std::exception& e) {
-            log_->append(LogDock::Level::Error,
-                         tr("GPU culling failed: %1").arg(QString::fromUtf8(e.what())));
-            return false;
-        }
-        out.gpu_ms = check.gpu_ms;
-        out.gpu_visible = static_cast<std::int64_t>(check.visible);
-        out.cpu_gpu_differences = static_cast<std::int64_t>(check.differences);
-        return true;
     });
-    connect(&context_, &EditorContext::sceneChanged, this, &MainWindow::uploadScene);
+    // Checked on the render thread between frames, answered later: the GUI thread
+    // never waits for the frame in flight. A scene not uploaded yet is not compared.
+    culling_->setGpuCheck([this](const Frustum& frustum, CullMethod method,
+                                 std::vector<std::uint8_t> cpu_visible, GpuCullDone done) {
+        if (render_)
+            render_->post([this, frustum, method, cpu_visible = std::move(cpu_visible),
+                           scene = context_.sharedScene(),
+                           done = std::move(done)](GpuViewport& gpu) {
+                std::optional<GpuCullResult> result;
+                QString failure;
+                try {
+                    GpuViewport::GpuCullCheck check;
+                    if (gpu.scene() == scene.get() &&
+                        gpu.checkGpuCulling(frustum, method, cpu_visible, check))
+                        result =
+                            GpuCullResult{check.gpu_ms, static_cast<std::int64_t>(check.visible),
+                                          static_cast<std::int64_t>(check.differences)};
+                } catch (const std::exception& e) {
+                    failure = QString::fromUtf8(e.what());
+                }
+                QMetaObject::invokeMethod(culling_, [this, done, result, failure] {
+                    if (!failure.isEmpty())
+                        log_->append(LogDock::Level::Error,
+                                     tr("GPU culling failed: %1").arg(failure));
+                    done(result);
+                });
+            });
+    });
+    connect(&context_, &EditorContext::sceneReady, this, &MainWindow::uploadScene);
+}
+
+void MainWindow::deviceKnown() {
+    device_pending_ = false;
+    if (!pending_open_.isEmpty()) openScene(std::exchange(pending_open_, QString()));
 }
 
 void MainWindow::uploadScene() {
-    const SceneExtras* extras = context_.extras();
-    prepared_ = extras ? extras->textures : nullptr;
-    textures_->setPrepared(prepared_);
     logTextureMessages();
     pass_frames_left_ = kPassReadbackFrames;
     if (!render_) return;
     const ViewportFrame streams = currentFrame();
-    render_->post([this, scene = context_.sharedScene(), prepared = prepared_, streams,
+    render_->post([this, session = context_.sharedSession(), streams,
                    checker = a_->missing_checker->isChecked()](GpuViewport& gpu) {
-        gpu.setScene(nullptr, nullptr); // so that the stream policy costs no upload
+        gpu.setSession(nullptr); // so that the stream policy costs no upload
         gpu.setMissingTexturesChecker(checker);
         gpu.useStreamsFor(streams);
-        gpu.setScene(scene, prepared);
+        gpu.setSession(session);
         const auto bytes = static_cast<std::int64_t>(gpu.textureBytes());
         QMetaObject::invokeMethod(this, [this, bytes] { textures_->setGpuBytes(bytes); });
     });
@@ -164,7 +181,7 @@ void MainWindow::onFrameDone(const FrameReport& report) {
            "creation). While the camera moves on a slow device, frames are drawn at a lower "
            "resolution and without shadows to keep %2 fps; at rest the full frame follows.")
             .arg(frame_times_.count())
-            .arg(qRound(1000.0 / kTargetFrameMs)));
+            .arg(kGoalFps));
     viewport_->frameDrawn(report.ms);
     if (report.cull_passes)
         culling_dock_->setRendererPasses(report.passes, report.cached_shadows);

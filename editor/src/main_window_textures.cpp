@@ -27,7 +27,8 @@ int MainWindow::clearTextureCache() {
 }
 
 void MainWindow::recompressTexture(int texture) {
-    const PreparedTextures prepared = prepared_;
+    const SceneSession* session = context_.session();
+    const PreparedTextures prepared = session ? session->textures : nullptr;
     if (!prepared || texture < 0) return;
     int removed = 0;
     for (const tex::PreparedTexture& t : prepared->textures)
@@ -42,7 +43,8 @@ void MainWindow::recompressTexture(int texture) {
 }
 
 void MainWindow::logTextureMessages() {
-    const PreparedTextures prepared = prepared_;
+    const SceneSession* session = context_.session();
+    const PreparedTextures prepared = session ? session->textures : nullptr;
     // uploadScene() runs again for the same set (settings toggles): say it once.
     if (!prepared || prepared == logged_textures_.lock()) return;
     logged_textures_ = prepared;

@@ -56,8 +56,8 @@ void MaterialDock::showMaterial() {
     }
     const MaterialInstance& m = scene->materials[static_cast<std::size_t>(material)];
     const QString name = m.name.empty() ? tr("(unnamed)") : QString::fromStdString(m.name);
-    model_->setMaterial(context_.sharedScene(), context_.sharedExtras(), material,
-                        to_gpu_material(m), MaterialFieldsModel::Source::Cpu);
+    model_->setMaterial(context_.sharedSession(), material, to_gpu_material(m),
+                        MaterialFieldsModel::Source::Cpu);
     header_->setText(tr("Material %1 %2: the importer's CPU record (no renderer attached, so "
                         "texture fields hold glTF texture indices, not bindless slots).")
                          .arg(material)
@@ -75,7 +75,7 @@ void MaterialDock::showReadback(int material, std::optional<GpuMaterialReadback>
     if (!gpu) return;
     const MaterialInstance& m = context_.scene()->materials[static_cast<std::size_t>(material)];
     const QString name = m.name.empty() ? tr("(unnamed)") : QString::fromStdString(m.name);
-    model_->setMaterial(context_.sharedScene(), context_.sharedExtras(), material, gpu->record,
+    model_->setMaterial(context_.sharedSession(), material, gpu->record,
                         MaterialFieldsModel::Source::GpuReadback,
                         std::move(gpu->bindless_to_texture));
     header_->setText(tr("Material %1 %2: 80-byte std430 record read back from the GPU "

@@ -59,13 +59,11 @@ template <typename T> T read(const GPUMaterialData& r, std::size_t offset) {
 
 MaterialFieldsModel::MaterialFieldsModel(QObject* parent) : QAbstractTableModel(parent) {}
 
-void MaterialFieldsModel::setMaterial(std::shared_ptr<const Scene> scene,
-                                      std::shared_ptr<const SceneExtras> extras, int material,
+void MaterialFieldsModel::setMaterial(SharedSession session, int material,
                                       const GPUMaterialData& record, Source source,
                                       std::vector<int> bindless_to_texture) {
     beginResetModel();
-    scene_ = std::move(scene);
-    extras_ = std::move(extras);
+    session_ = std::move(session);
     material_ = material;
     record_ = record;
     source_ = source;
@@ -75,16 +73,15 @@ void MaterialFieldsModel::setMaterial(std::shared_ptr<const Scene> scene,
 
 void MaterialFieldsModel::clear() {
     beginResetModel();
-    scene_.reset();
-    extras_.reset();
+    session_.reset();
     material_ = -1;
     endResetModel();
 }
 
 const SpecularGlossiness* MaterialFieldsModel::specGloss() const {
-    if (!scene_ || material_ < 0 || std::size_t(material_) >= scene_->materials.size())
+    if (!scene() || material_ < 0 || std::size_t(material_) >= scene()->materials.size())
         return nullptr;
-    const auto& sg = scene_->materials[std::size_t(material_)].specular_glossiness;
+    const auto& sg = scene()->materials[std::size_t(material_)].specular_glossiness;
     return sg ? &*sg : nullptr;
 }
 
@@ -129,23 +126,23 @@ QVariant MaterialFieldsModel::specGlossData(int row, int column) const {
 int MaterialFieldsModel::textureOfRow(int row) const {
     if (row == kFieldCount + 2 && specGloss() && specGloss()->specular_glossiness.present())
         return specGloss()->specular_glossiness.texture;
-    if (!scene_ || row < 0 || row >= kFieldCount) return -1;
+    if (!scene() || row < 0 || row >= kFieldCount) return -1;
     if (kFields[row].type != FieldType::TextureIndex) return -1;
     const auto value = read<std::uint32_t>(record_, kFields[row].offset);
     if (value == kTextureSentinel) return -1;
     int texture = static_cast<int>(value);
     if (source_ == Source::GpuReadback)
         texture = value < bindless_to_texture_.size() ? bindless_to_texture_[value] : -1;
-    return texture >= 0 && static_cast<std::size_t>(texture) < scene_->textures.size() ? texture
-                                                                                       : -1;
+    return texture >= 0 && static_cast<std::size_t>(texture) < scene()->textures.size() ? texture
+                                                                                        : -1;
 }
 
 QString MaterialFieldsModel::chain(int texture) const {
-    const TextureRecord& t = scene_->textures[static_cast<std::size_t>(texture)];
+    const TextureRecord& t = scene()->textures[static_cast<std::size_t>(texture)];
     QString text = tr("texture %1").arg(texture);
     if (!t.name.empty()) text += QStringLiteral(" \"%1\"").arg(QString::fromStdString(t.name));
     if (t.image >= 0) {
-        const ImageRecord& img = scene_->images[static_cast<std::size_t>(t.image)];
+        const ImageRecord& img = scene()->images[static_cast<std::size_t>(t.image)];
         const QString where = !img.uri.empty()
                                   ? QFileInfo(QString::fromStdString(img.uri)).fileName()
                               : img.buffer_view >= 0 ? tr("bufferView %1").arg(img.buffer_view)
@@ -176,9 +173,9 @@ QVariant MaterialFieldsModel::data(const QModelIndex& index, int role) const {
     const Field& f = kFields[index.row()];
     const int texture = textureOfRow(index.row());
     if (role == TextureRole) return texture;
-    if (role == Qt::DecorationRole && index.column() == ChainColumn && texture >= 0 && extras_ &&
-        static_cast<std::size_t>(texture) < extras_->thumbnails.size())
-        return extras_->thumbnails[static_cast<std::size_t>(texture)].scaled(
+    if (role == Qt::DecorationRole && index.column() == ChainColumn && texture >= 0 && session_ &&
+        static_cast<std::size_t>(texture) < session_->thumbnails.size())
+        return session_->thumbnails[static_cast<std::size_t>(texture)].scaled(
             24, 24, Qt::KeepAspectRatio, Qt::SmoothTransformation);
     if (role == Qt::ToolTipRole && index.column() == ChainColumn && texture >= 0)
         return tr("Double-click to show this texture in the texture dock");

@@ -11,18 +11,20 @@
 #include <sherpa/scene/material.h>
 #include <sherpa/scene/scene.h>
 
-#include "scene_extras.h"
+#include "scene_session.h"
 
 namespace sherpa::editor {
 
 class MaterialFieldsModel : public QAbstractTableModel {
     Q_OBJECT
 public:
+    // Field and value first: in a side dock of the default width (1600x1000) they
+    // are what shows without scrolling (the value was cut off behind offset and type).
     enum Column {
-        OffsetColumn,
         FieldColumn,
-        TypeColumn,
         ValueColumn,
+        TypeColumn,
+        OffsetColumn,
         PropertyColumn,
         ChainColumn,
         ColumnCount
@@ -36,9 +38,8 @@ public:
     explicit MaterialFieldsModel(QObject* parent = nullptr);
     // `bindless_to_texture` maps a GPU record's texture fields back to Scene::textures
     // (empty for a CPU record).
-    void setMaterial(std::shared_ptr<const Scene> scene, std::shared_ptr<const SceneExtras> extras,
-                     int material, const GPUMaterialData& record, Source source,
-                     std::vector<int> bindless_to_texture = {});
+    void setMaterial(SharedSession session, int material, const GPUMaterialData& record,
+                     Source source, std::vector<int> bindless_to_texture = {});
     void clear();
     Source source() const { return source_; }
     const GPUMaterialData& record() const { return record_; }
@@ -57,8 +58,9 @@ private:
     const SpecularGlossiness* specGloss() const;
     QVariant specGlossData(int row, int column) const;
 
-    std::shared_ptr<const Scene> scene_;
-    std::shared_ptr<const SceneExtras> extras_;
+    const Scene* scene() const { return session_ ? session_->scene.get() : nullptr; }
+
+    SharedSession session_; // the scene and its thumbnails
     int material_ = -1;
     GPUMaterialData record_{};
     Source source_ = Source::Cpu;

@@ -111,7 +111,7 @@ MeshDock::MeshDock(const EditorContext& context, QWidget* parent)
                 Q_EMIT tangentErrorsReady();
             });
     connect(&context_, &EditorContext::selectionChanged, this, &MeshDock::showMesh);
-    connect(&context_, &EditorContext::sceneChanged, this, &MeshDock::showMesh);
+    connect(&context_, &EditorContext::sceneReady, this, &MeshDock::showMesh);
     retranslate();
 }
 

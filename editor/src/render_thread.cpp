@@ -18,8 +18,8 @@ double ms_since(std::chrono::steady_clock::time_point start) {
 
 } // namespace
 
-RenderThread::RenderThread(std::unique_ptr<GpuViewport> gpu, QObject* parent)
-    : QObject(parent), gpu_(std::move(gpu)) {
+RenderThread::RenderThread(DeviceFactory make, QObject* parent)
+    : QObject(parent), make_(std::move(make)) {
     thread_ = std::thread([this] { run(); });
 }
 
@@ -46,6 +46,7 @@ std::uint64_t RenderThread::requestFrame(const ViewportFrame& frame, std::uint64
 void RenderThread::post(Task task) {
     {
         std::lock_guard lock(mutex_);
+        if (failed_) return; // a call() waiting on it throws (broken promise)
         tasks_.push_back(std::move(task));
     }
     wake_.notify_all();
@@ -76,6 +77,7 @@ bool RenderThread::renderAndWait(const ViewportFrame& frame, std::uint64_t surfa
     std::uint64_t serial = 0;
     {
         std::lock_guard lock(mutex_);
+        if (failed_) return false;
         serial = ++serial_;
         pending_.reset(); // this one is newer
         refine_ = false;
@@ -94,11 +96,36 @@ void RenderThread::releaseSurface() {
         pending_.reset();
         last_.reset();
         refine_ = false;
+        if (failed_) return; // no swapchain was ever made
     }
     call([](GpuViewport& gpu) { gpu.releaseSurface(); });
 }
 
+bool RenderThread::makeDevice() {
+    const auto start = std::chrono::steady_clock::now();
+    QString error;
+    try {
+        gpu_ = make_(error);
+    } catch (const std::exception& e) {
+        error = QString::fromUtf8(e.what());
+    }
+    if (!gpu_) {
+        {
+            std::lock_guard lock(mutex_);
+            failed_ = true;
+            tasks_.clear();
+            pending_.reset();
+        }
+        QMetaObject::invokeMethod(this, [this, error] { Q_EMIT deviceFailed(error); });
+        return false;
+    }
+    QMetaObject::invokeMethod(this, [this, plan = gpu_->texturePlan(), name = gpu_->deviceName(),
+                                     ms = ms_since(start)] { Q_EMIT deviceReady(plan, name, ms); });
+    return true;
+}
+
 void RenderThread::run() {
+    if (!makeDevice()) return;
     GpuViewport& gpu = *gpu_;
     std::unique_lock lock(mutex_);
     while (true) {

@@ -41,9 +41,12 @@ class RenderThread : public QObject {
     Q_OBJECT
 public:
     using Task = std::function<void(GpuViewport&)>;
-    // Starts the thread, which owns `gpu` from now on (made on the GUI thread so
-    // that its capabilities are known before the first scene loads).
-    explicit RenderThread(std::unique_ptr<GpuViewport> gpu, QObject* parent = nullptr);
+    // Makes the engine side (device, renderer); null with `error` set when it cannot.
+    using DeviceFactory = std::function<std::unique_ptr<GpuViewport>(QString& error)>;
+    // Starts the thread, which first makes the device with `make` (so that the window
+    // shows meanwhile) and owns it from then on. Tasks and frames asked for before
+    // the device exists wait for it; deviceReady or deviceFailed says how it went.
+    explicit RenderThread(DeviceFactory make, QObject* parent = nullptr);
     ~RenderThread() override; // finishes the frame in flight; frees the engine there
 
     // The frame to draw next on `surface`; replaces a request not yet started. A
@@ -51,9 +54,11 @@ public:
     // interactive resolution scale; once no new request comes for kRestMs, the last
     // frame is drawn again at full size (the still image is always full size).
     std::uint64_t requestFrame(const ViewportFrame& frame, std::uint64_t surface);
-    // Runs `task` on the render thread before the next frame, in order of posting.
+    // Runs `task` on the render thread before the next frame, in order of posting
+    // (dropped when the device could not be made).
     void post(Task task);
-    // Runs `task` there and waits for its result (so for the frame in flight too).
+    // Runs `task` there and waits for its result (so for the frame in flight too);
+    // throws std::future_error when the device could not be made.
     template <class F> auto call(F task) -> decltype(task(std::declval<GpuViewport&>()));
     // Draws `frame` at full size now and waits until it is presented and the queue
     // is idle (screenshots read the window right after).
@@ -67,12 +72,17 @@ public:
     void setInteractiveScaling(bool on);
     // The scale the next moving frame gets (1: full size).
     float interactiveScale() const;
-    // The frame time moving frames aim at (kTargetFrameMs: 30 fps).
+    // The frame time moving frames aim at (kTargetFrameMs: 36 fps, for a 30 fps goal).
     void setTargetFrameMs(double ms);
 
     static constexpr int kRestMs = 80; // no new camera for this long: the camera rests
 
 Q_SIGNALS:
+    // The device exists (GUI thread): what the loader's texture plan needs of it,
+    // its name and how long making it took.
+    void deviceReady(const sherpa::editor::TexturePlan& plan, const QString& name, double ms);
+    // It could not be made: nothing will be drawn, posted tasks are dropped.
+    void deviceFailed(const QString& error);
     void frameDone(const sherpa::editor::FrameReport& report);
     void renderError(const QString& error);
 
@@ -82,6 +92,7 @@ private:
         std::uint64_t surface = 0;
         std::uint64_t serial = 0;
     };
+    bool makeDevice(); // on thread_, first
     void run();
     void draw(GpuViewport& gpu, const Request& request, bool still);
 
@@ -92,12 +103,14 @@ private:
     std::optional<Request> last_; // the last frame drawn (for the refinement at rest)
     bool refine_ = false;         // last_ was drawn reduced: draw it full at rest
     bool stop_ = false;
+    bool failed_ = false; // no device: tasks are dropped
     bool scaling_ = true;
     double target_ms_ = kTargetFrameMs;
     float scale_ = 1.0f;             // for the next moving frame
     std::deque<float> drawn_scales_; // of the last presents (to match GPU timings)
     std::uint64_t serial_ = 0;
-    std::unique_ptr<GpuViewport> gpu_; // used on thread_ only
+    DeviceFactory make_;
+    std::unique_ptr<GpuViewport> gpu_; // made and used on thread_ only
     std::thread thread_;
 };
 

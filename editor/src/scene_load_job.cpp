@@ -164,15 +164,16 @@ void SceneLoadJob::cancel() {
 
 void SceneLoadJob::onFinished() {
     const LoadOutcome outcome = watcher_->result();
-    const double ms = static_cast<double>(state_->clock.nsecsElapsed()) / 1e6;
+    if (outcome.session)
+        outcome.session->timings.total_ms = static_cast<double>(state_->clock.nsecsElapsed()) / 1e6;
     watcher_->deleteLater();
     watcher_ = nullptr;
     state_.reset();
     Q_EMIT progress(LoadStep::Idle, 0, 0);
     if (outcome.cancelled)
         Q_EMIT canceled(spec_);
-    else if (outcome.scene)
-        Q_EMIT loaded(spec_, outcome, ms);
+    else if (outcome.session)
+        Q_EMIT loaded(outcome.session);
     else
         Q_EMIT failed(spec_, outcome.error);
 }
@@ -180,7 +181,10 @@ void SceneLoadJob::onFinished() {
 LoadOutcome SceneLoadJob::loadNow(const QString& spec, const TexturePlan& plan) {
     State state;
     state.clock.start();
-    return run_load(spec, plan, &state);
+    LoadOutcome out = run_load(spec, plan, &state);
+    if (out.session)
+        out.session->timings.total_ms = static_cast<double>(state.clock.nsecsElapsed()) / 1e6;
+    return out;
 }
 
 namespace {
@@ -203,21 +207,22 @@ LoadOutcome run_load(const QString& spec, const TexturePlan& plan, SceneLoadJob:
         out.error = QString::fromStdString(result.error);
         return out;
     }
-    auto extras = std::make_shared<SceneExtras>();
-    extras->load_ms = static_cast<double>(clock.nsecsElapsed()) / 1e6;
+    auto session = std::make_shared<SceneSession>();
+    session->spec = spec;
+    session->timings.engine_ms = static_cast<double>(clock.nsecsElapsed()) / 1e6;
     const Scene& scene = *result.scene;
     // GPU textures first (texture cache, BC7/BC5), counted per prepared texture: the
     // thumbnails then come from their small mip levels instead of decoding sources.
     clock.restart();
     if (plan.device && !state->cancel.cancelled()) {
         state->report(LoadStep::Textures, 0, 1);
-        extras->textures = prepareTextures(
+        session->textures = prepareTextures(
             plan, scene,
             [state](std::size_t done, std::size_t total) {
                 state->report(LoadStep::Textures, done, total);
             },
             &state->cancel);
-        extras->textures_ms = static_cast<double>(clock.nsecsElapsed()) / 1e6;
+        session->timings.textures_ms = static_cast<double>(clock.nsecsElapsed()) / 1e6;
         clock.restart();
         if (state->cancel.cancelled()) {
             out.cancelled = true; // the scene and textures are dropped here
@@ -227,7 +232,7 @@ LoadOutcome run_load(const QString& spec, const TexturePlan& plan, SceneLoadJob:
     }
     state->report(LoadStep::Textures, 0, scene.textures.size());
     std::atomic<std::size_t> textures_done{0};
-    extras->thumbnails.resize(scene.textures.size());
+    session->thumbnails.resize(scene.textures.size());
     std::vector<QSize> sizes(scene.textures.size());
     // Textures decode independently: spread them over the pool, counting as they finish.
     std::vector<int> order(scene.textures.size());
@@ -235,8 +240,8 @@ LoadOutcome run_load(const QString& spec, const TexturePlan& plan, SceneLoadJob:
     QtConcurrent::blockingMap(order, [&](int i) {
         if (state->cancel.cancelled()) return;
         const auto t = static_cast<std::size_t>(i);
-        QImage thumb = prepared_thumbnail(extras->textures.get(), i, sizes[t]);
-        extras->thumbnails[t] =
+        QImage thumb = prepared_thumbnail(session->textures.get(), i, sizes[t]);
+        session->thumbnails[t] =
             thumb.isNull() ? decode_thumbnail(scene, scene.textures[t], sizes[t]) : thumb;
         state->report(LoadStep::Textures, ++textures_done, scene.textures.size());
     });
@@ -245,15 +250,15 @@ LoadOutcome run_load(const QString& spec, const TexturePlan& plan, SceneLoadJob:
         out.error = QStringLiteral("cancelled");
         return out;
     }
-    extras->image_sizes.resize(scene.images.size());
+    session->image_sizes.resize(scene.images.size());
     for (std::size_t t = 0; t < scene.textures.size(); ++t) {
         const std::int32_t image = scene.textures[t].image;
-        if (image >= 0 && static_cast<std::size_t>(image) < extras->image_sizes.size())
-            extras->image_sizes[static_cast<std::size_t>(image)] = sizes[t];
+        if (image >= 0 && static_cast<std::size_t>(image) < session->image_sizes.size())
+            session->image_sizes[static_cast<std::size_t>(image)] = sizes[t];
     }
-    extras->thumbnails_ms = static_cast<double>(clock.nsecsElapsed()) / 1e6;
-    out.scene = std::move(result.scene);
-    out.extras = std::move(extras);
+    session->timings.thumbnails_ms = static_cast<double>(clock.nsecsElapsed()) / 1e6;
+    session->scene = std::move(result.scene);
+    out.session = std::move(session);
     return out;
 }
 

@@ -13,18 +13,18 @@
 
 #include <sherpa/scene/scene.h>
 
-#include "scene_extras.h"
+#include "scene_session.h"
 
 namespace sherpa::editor {
 
 // What the progress bar shows; Parse..Tangents mirror the engine's LoadStage.
 enum class LoadStep : int { Idle, Parse, Geometry, Tangents, Textures };
 
+// The worker's answer: the session, or why there is none.
 struct LoadOutcome {
-    std::shared_ptr<const Scene> scene;
-    std::shared_ptr<const SceneExtras> extras;
-    QString error;          // empty on success
-    bool cancelled = false; // stopped by cancel(): no scene, no error to show
+    std::shared_ptr<SceneSession> session; // null on failure or cancel
+    QString error;                         // empty on success
+    bool cancelled = false;                // stopped by cancel(): no scene, no error to show
 };
 
 class SceneLoadJob : public QObject {
@@ -50,7 +50,8 @@ public:
 Q_SIGNALS:
     // Every stage change and count change (at most ~100 per stage), in order.
     void progress(sherpa::editor::LoadStep step, int done, int total);
-    void loaded(const QString& spec, const sherpa::editor::LoadOutcome& outcome, double ms);
+    // The loaded scene as one value (its timings.total_ms filled in).
+    void loaded(sherpa::editor::SharedSession session);
     void failed(const QString& spec, const QString& error);
     void canceled(const QString& spec);
 

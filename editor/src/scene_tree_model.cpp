@@ -19,7 +19,7 @@ QString from_std(const std::string& s) {
 
 SceneTreeModel::SceneTreeModel(const EditorContext& context, QObject* parent)
     : QAbstractItemModel(parent), context_(context) {
-    connect(&context_, &EditorContext::sceneChanged, this, [this] {
+    connect(&context_, &EditorContext::sceneReady, this, [this] {
         beginResetModel();
         rebuild();
         endResetModel();

@@ -9,7 +9,7 @@
 
 #include "editor_context.h"
 #include "format_values.h"
-#include "scene_extras.h"
+#include "scene_session.h"
 #include "texture_table_model.h"
 
 #include <sherpa/texture/texture_pipeline.h>
@@ -58,7 +58,7 @@ TextureDock::TextureDock(const EditorContext& context, QWidget* parent)
                 if (current.isValid() && current.row() != context_.selection().texture)
                     Q_EMIT selectTextureRequested(current.row());
             });
-    connect(&context_, &EditorContext::sceneChanged, this, &TextureDock::showScene);
+    connect(&context_, &EditorContext::sceneReady, this, &TextureDock::showScene);
     connect(&context_, &EditorContext::selectionChanged, this, &TextureDock::syncSelection);
     retranslate();
 }
@@ -76,7 +76,15 @@ void TextureDock::retranslate() {
 }
 
 void TextureDock::showScene() {
-    model_->setScene(context_.sharedScene(), context_.sharedExtras());
+    const SharedSession& session = context_.sharedSession();
+    model_->setSession(session);
+    // The cache actions are enabled while the textures came through a disk cache.
+    bool cached = false;
+    if (session && session->textures)
+        for (const tex::PreparedTexture& t : session->textures->textures)
+            cached |= !t.cache_file.empty();
+    recompress_->setEnabled(cached);
+    clear_->setEnabled(cached);
     view_->resizeColumnsToContents();
     updateTotals();
 }
@@ -89,23 +97,13 @@ void TextureDock::syncSelection() {
     }
 }
 
-void TextureDock::setPrepared(PreparedTextures prepared) {
-    bool cached = false;
-    if (prepared)
-        for (const tex::PreparedTexture& t : prepared->textures) cached |= !t.cache_file.empty();
-    recompress_->setEnabled(cached);
-    clear_->setEnabled(cached);
-    model_->setPrepared(std::move(prepared));
-    syncSelection();
-}
-
 void TextureDock::setGpuBytes(std::int64_t bytes) {
     gpu_bytes_ = bytes;
     updateTotals();
 }
 
 void TextureDock::updateTotals() {
-    const SceneExtras* extras = context_.extras();
+    const SceneSession* session = context_.session();
     const QString gpu =
         gpu_bytes_ < 0 ? tr("no renderer") : Format::bytes(static_cast<std::uint64_t>(gpu_bytes_));
     totals_->setText(
@@ -113,7 +111,7 @@ void TextureDock::updateTotals() {
             .arg(model_->rowCount())
             .arg(Format::bytes(model_->totalDiskBytes()))
             .arg(gpu)
-            .arg(extras ? extras->thumbnails_ms : 0.0, 0, 'f', 1));
+            .arg(session ? session->timings.thumbnails_ms : 0.0, 0, 'f', 1));
 }
 
 } // namespace sherpa::editor

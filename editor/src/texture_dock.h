@@ -4,7 +4,7 @@
 // cache (engine/texture) is part of the build.
 #include <QDockWidget>
 
-#include "scene_extras.h"
+#include "scene_session.h"
 
 class QLabel;
 class QPushButton;
@@ -24,9 +24,6 @@ public:
     QTableView* view() const { return view_; }
     // Bytes the renderer holds for the scene's textures (-1: no renderer), for the totals.
     void setGpuBytes(std::int64_t bytes);
-    // The texture pipeline's records of the uploaded scene (cache columns); the
-    // cache actions are enabled while they come from a disk cache.
-    void setPrepared(PreparedTextures prepared);
     QPushButton* recompressButton() const { return recompress_; }
     QPushButton* clearCacheButton() const { return clear_; }
 

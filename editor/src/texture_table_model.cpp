@@ -15,39 +15,41 @@ namespace sherpa::editor {
 
 TextureTableModel::TextureTableModel(QObject* parent) : QAbstractTableModel(parent) {}
 
-void TextureTableModel::setScene(std::shared_ptr<const Scene> scene,
-                                 std::shared_ptr<const SceneExtras> extras) {
+void TextureTableModel::setSession(SharedSession session) {
     beginResetModel();
-    scene_ = std::move(scene);
-    extras_ = std::move(extras);
-    prepared_.reset();
+    session_ = std::move(session);
     endResetModel();
 }
 
-void TextureTableModel::setPrepared(PreparedTextures prepared) {
-    beginResetModel();
-    prepared_ = std::move(prepared);
-    endResetModel();
+const Scene* TextureTableModel::scene() const {
+    return session_ ? session_->scene.get() : nullptr;
+}
+
+const tex::PreparedTextureSet* TextureTableModel::prepared() const {
+    return session_ ? session_->textures.get() : nullptr;
 }
 
 const tex::PreparedTexture* TextureTableModel::preparedRecord(std::size_t row) const {
-    if (!prepared_) return nullptr;
+    if (!prepared()) return nullptr;
     // The first role this texture is prepared in (a texture used as colour and as
     // data has two records; the dock shows one row per glTF texture).
     for (TextureRole role : {kRoleColor, kRoleLinear, kRoleNormal})
-        if (const std::int32_t i = prepared_->find(static_cast<std::int32_t>(row), role); i >= 0)
-            return &prepared_->textures[static_cast<std::size_t>(i)];
+        if (const std::int32_t i = prepared()->find(static_cast<std::int32_t>(row), role); i >= 0)
+            return &prepared()->textures[static_cast<std::size_t>(i)];
     return nullptr;
 }
 
 QVariant TextureTableModel::cacheData(std::size_t row, int column) const {
     const QString none = QStringLiteral("—");
-    if (!prepared_ || !scene_) return none;
+    if (!prepared() || !scene()) return none;
     const tex::PreparedTexture* r = preparedRecord(row);
     if (!r) return none;
     switch (column) {
-    case HashColumn:
-        return QString::fromStdString(r->source_hash.hex()).left(16);
+    case HashColumn: {
+        // Both ends of the 32 digits, the middle elided; all of them on hover and copy.
+        const QString hex = QString::fromStdString(r->source_hash.hex());
+        return hex.left(8) + QChar(0x2026) + hex.right(8);
+    }
     case FormatColumn: {
         QString f =
             QString::fromLatin1(tex::vk_format_name(r->format).data(),
@@ -98,17 +100,17 @@ QVariant TextureTableModel::cacheData(std::size_t row, int column) const {
 }
 
 std::uint64_t TextureTableModel::totalDiskBytes() const {
-    if (!scene_) return 0;
+    if (!scene()) return 0;
     std::set<std::int32_t> images;
     std::uint64_t total = 0;
-    for (const TextureRecord& t : scene_->textures)
+    for (const TextureRecord& t : scene()->textures)
         if (t.image >= 0 && images.insert(t.image).second)
-            total += scene_->images[static_cast<std::size_t>(t.image)].byte_size;
+            total += scene()->images[static_cast<std::size_t>(t.image)].byte_size;
     return total;
 }
 
 int TextureTableModel::rowCount(const QModelIndex& parent) const {
-    return parent.isValid() || !scene_ ? 0 : static_cast<int>(scene_->textures.size());
+    return parent.isValid() || !scene() ? 0 : static_cast<int>(scene()->textures.size());
 }
 
 int TextureTableModel::columnCount(const QModelIndex& parent) const {
@@ -116,14 +118,19 @@ int TextureTableModel::columnCount(const QModelIndex& parent) const {
 }
 
 QVariant TextureTableModel::data(const QModelIndex& index, int role) const {
-    if (!index.isValid() || !scene_) return {};
+    if (!index.isValid() || !scene()) return {};
     const auto row = static_cast<std::size_t>(index.row());
-    const TextureRecord& t = scene_->textures[row];
+    const TextureRecord& t = scene()->textures[row];
     const ImageRecord* img =
-        t.image >= 0 ? &scene_->images[static_cast<std::size_t>(t.image)] : nullptr;
-    if (role == Qt::DecorationRole && index.column() == NameColumn && extras_ &&
-        row < extras_->thumbnails.size() && !extras_->thumbnails[row].isNull())
-        return extras_->thumbnails[row];
+        t.image >= 0 ? &scene()->images[static_cast<std::size_t>(t.image)] : nullptr;
+    if (role == Qt::DecorationRole && index.column() == NameColumn && session_ &&
+        row < session_->thumbnails.size() && !session_->thumbnails[row].isNull())
+        return session_->thumbnails[row];
+    if ((role == Qt::ToolTipRole || role == Format::kExactTextRole) &&
+        index.column() == HashColumn) {
+        const tex::PreparedTexture* r = preparedRecord(row);
+        return r ? QVariant(QString::fromStdString(r->source_hash.hex())) : QVariant();
+    }
     // A failed texture's whole story (file, reason, the slots that read it) on hover.
     if (role == Qt::ToolTipRole && img &&
         (index.column() == SizeColumn || index.column() == CacheStateColumn)) {
@@ -147,16 +154,16 @@ QVariant TextureTableModel::data(const QModelIndex& index, int role) const {
     case RoleColumn:
         return Format::roles(t.roles);
     case SizeColumn: {
-        if (!img || !extras_ || static_cast<std::size_t>(t.image) >= extras_->image_sizes.size())
+        if (!img || !session_ || static_cast<std::size_t>(t.image) >= session_->image_sizes.size())
             return QStringLiteral("—");
-        const QSize s = extras_->image_sizes[static_cast<std::size_t>(t.image)];
+        const QSize s = session_->image_sizes[static_cast<std::size_t>(t.image)];
         if (image_is_missing(*img))
             return tr("missing: %1").arg(QFileInfo(QString::fromStdString(img->uri)).fileName());
         return s.isEmpty() ? tr("undecodable")
                            : QStringLiteral("%1 × %2").arg(s.width()).arg(s.height());
     }
     case FormatColumn:
-        if (prepared_) return cacheData(row, index.column()); // what the GPU samples
+        if (prepared()) return cacheData(row, index.column()); // what the GPU samples
         return img ? QString::fromStdString(img->mime_type) : QString();
     case ContainerColumn: {
         // Decode ms is the transcode for KTX2 sources (the pipeline's decode step).

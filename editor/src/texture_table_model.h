@@ -1,15 +1,15 @@
 #pragma once
 // Every texture of the scene with its thumbnail, source, role and sizes. Columns
 // that only the texture pipeline can fill (hash, GPU format, mips, bytes on disk and
-// GPU, cache state, decode/encode time, PSNR) come from the prepared set the viewport
-// uploaded (setPrepared) and show "—" without one.
+// GPU, cache state, decode/encode time, PSNR) come from the session's prepared set
+// (the textures the viewport uploads) and show "—" without one.
 #include <QAbstractTableModel>
 
 #include <memory>
 
 #include <sherpa/scene/scene.h>
 
-#include "scene_extras.h"
+#include "scene_session.h"
 
 namespace sherpa::editor {
 
@@ -34,9 +34,8 @@ public:
         ColumnCount
     };
     explicit TextureTableModel(QObject* parent = nullptr);
-    void setScene(std::shared_ptr<const Scene> scene, std::shared_ptr<const SceneExtras> extras);
-    // The texture pipeline's records for the current scene: fill the cache columns.
-    void setPrepared(PreparedTextures prepared);
+    // The scene's textures, thumbnails and the texture pipeline's records (null: none).
+    void setSession(SharedSession session);
     // Encoded bytes of every image referenced by a texture (each image once).
     std::uint64_t totalDiskBytes() const;
 
@@ -50,9 +49,10 @@ private:
     // The pipeline record of texture `row` (its first prepared role), or null.
     const tex::PreparedTexture* preparedRecord(std::size_t row) const;
 
-    std::shared_ptr<const Scene> scene_;
-    PreparedTextures prepared_;
-    std::shared_ptr<const SceneExtras> extras_;
+    const Scene* scene() const;                      // null without a session
+    const tex::PreparedTextureSet* prepared() const; // null without prepared textures
+
+    SharedSession session_;
 };
 
 } // namespace sherpa::editor

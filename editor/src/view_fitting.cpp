@@ -1,9 +1,9 @@
 #include "view_fitting.h"
 
-#include <QAction>
 #include <QApplication>
 #include <QClipboard>
 #include <QHeaderView>
+#include <QKeyEvent>
 #include <QTableView>
 #include <QTimer>
 #include <QTreeView>
@@ -54,17 +54,23 @@ void fit_columns_to_content(QAbstractItemView* view) {
 }
 
 void copy_exact_on_ctrl_c(QAbstractItemView* view) {
-    auto* copy = new QAction(view);
-    copy->setShortcut(QKeySequence::Copy);
-    copy->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    QObject::connect(copy, &QAction::triggered, view, [view] {
-        const QModelIndex index = view->currentIndex();
-        if (!index.isValid()) return;
-        QVariant text = index.data(Format::kExactTextRole);
-        if (!text.isValid()) text = index.data(Qt::DisplayRole);
-        QApplication::clipboard()->setText(text.toString());
-    });
-    view->addAction(copy);
+    // An event filter, not a QAction shortcut: QAbstractItemView takes Ctrl+C itself
+    // (a shortcut override) and copies the rounded display text.
+    struct ExactCopy : QObject {
+        using QObject::QObject;
+        bool eventFilter(QObject* watched, QEvent* e) override {
+            if (e->type() != QEvent::KeyPress ||
+                !static_cast<QKeyEvent*>(e)->matches(QKeySequence::Copy))
+                return false;
+            const QModelIndex index = static_cast<QAbstractItemView*>(watched)->currentIndex();
+            if (!index.isValid()) return false;
+            QVariant text = index.data(Format::kExactTextRole);
+            if (!text.isValid()) text = index.data(Qt::DisplayRole);
+            QApplication::clipboard()->setText(text.toString());
+            return true;
+        }
+    };
+    view->installEventFilter(new ExactCopy(view));
 }
 
 } // namespace sherpa::editor

@@ -21,6 +21,7 @@
 #include "log_dock.h"
 #include "main_window.h"
 #include "material_dock.h"
+#include "material_fields_model.h"
 #include "mesh_dock.h"
 #include "scene_tree_dock.h"
 #include "texture_dock.h"
@@ -91,6 +92,33 @@ QStringList cut_texts(QWidget& root) {
                 row = row.siblingAtRow(row.row() + 1);
         }
     }
+    return cut;
+}
+
+// Cells of `columns` in the dock's table that reach past its visible width (so
+// hidden behind the horizontal scroll bar) or are not shown at all, as
+// "dock column C: text".
+QStringList cut_off_columns(QDockWidget& dock, std::initializer_list<int> columns) {
+    QStringList cut;
+    auto* view = dock.findChild<QTableView*>();
+    if (!view || !view->model()) return {QStringLiteral("%1: no table").arg(dock.objectName())};
+    if (view->model()->rowCount() == 0)
+        return {QStringLiteral("%1: empty table").arg(dock.objectName())};
+    const QRect area = view->viewport()->rect();
+    for (int row = 0; row < view->model()->rowCount(); ++row)
+        for (int c : columns) {
+            const QModelIndex cell = view->model()->index(row, c);
+            const QRect r = view->visualRect(cell);
+            if (r.isEmpty() || r.top() > area.bottom()) continue; // below: rows scroll
+            if (r.left() < area.left() || r.right() > area.right())
+                cut << QStringLiteral("%1 column %2: %3 (%4..%5 outside 0..%6)")
+                           .arg(dock.objectName())
+                           .arg(c)
+                           .arg(cell.data().toString())
+                           .arg(r.left())
+                           .arg(r.right())
+                           .arg(area.right());
+        }
     return cut;
 }
 
@@ -295,6 +323,11 @@ void LayoutTests::nothingIsCutOffInAnyLanguage() {
             QTest::qWait(200); // the raised tab's own layout (the viewport does not change)
             cut << cut_texts(*w) << cut_chart_labels(*w);
         }
+        // The material dock's field names and values show whole without scrolling.
+        w->materialDock()->raise();
+        wait_settled(*w);
+        cut << cut_off_columns(*w->materialDock(), {MaterialFieldsModel::FieldColumn,
+                                                    MaterialFieldsModel::ValueColumn});
         cut.removeDuplicates();
         QVERIFY2(cut.isEmpty(), qPrintable(language + ": " + cut.join(QStringLiteral("\n"))));
     }

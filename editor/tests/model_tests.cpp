@@ -93,6 +93,7 @@ private Q_SLOTS:
     void pickHitsTheInstanceUnderTheRay();
     void pickHitsLinesAndPointsWithinACone();
     void cullingMonitorFreezes();
+    void cullingMonitorCoalescesExpensivePasses();
     void selectionFollowsActions();
     void commandLineDocksAndCulling();
     void resolutionScaleHoldsTheTargetRate();
@@ -106,11 +107,11 @@ void ModelTests::everyAssetMatchesTheEngine_data() {
 void ModelTests::everyAssetMatchesTheEngine() {
     QFETCH(QString, name);
     const LoadOutcome out = SceneLoadJob::loadNow(test::asset(name));
-    QVERIFY2(out.scene, qPrintable(out.error));
-    const Scene& s = *out.scene;
+    QVERIFY2(out.session, qPrintable(out.error));
+    const Scene& s = *out.session->scene;
     EditorContext context;
     SceneTreeModel tree(context);
-    context.setScene(test::asset(name), out.scene, out.extras);
+    context.setSession(out.session);
 
     QCOMPARE(tree.rowCount(), static_cast<int>(s.scenes.size()));
     if (!s.scenes.empty())
@@ -122,7 +123,7 @@ void ModelTests::everyAssetMatchesTheEngine() {
     TriangleTableModel triangles;
     for (std::size_t m = 0; m < s.meshes.size(); ++m) {
         const Mesh& mesh = s.meshes[m];
-        const MeshRef ref{out.scene, static_cast<int>(m)};
+        const MeshRef ref{out.session->scene, static_cast<int>(m)};
         attributes.setMesh(ref);
         vertices.setMesh(ref);
         triangles.setMesh(ref);
@@ -151,25 +152,24 @@ void ModelTests::everyAssetMatchesTheEngine() {
     }
 
     TextureTableModel textures;
-    textures.setScene(out.scene, out.extras);
+    textures.setSession(out.session);
     QCOMPARE(textures.rowCount(), static_cast<int>(s.textures.size()));
     for (std::size_t t = 0; t < s.textures.size(); ++t) {
         QCOMPARE(display(textures, static_cast<int>(t), TextureTableModel::RoleColumn),
                  Format::roles(s.textures[t].roles));
         const std::int32_t image = s.textures[t].image;
         if (image >= 0 && !s.images[static_cast<std::size_t>(image)].encoded.empty())
-            QVERIFY2(!out.extras->thumbnails[t].isNull(),
+            QVERIFY2(!out.session->thumbnails[t].isNull(),
                      "every sample texture decodes to a thumbnail");
     }
 }
 
 void ModelTests::materialFieldsFollowTheGpuLayout() {
     const LoadOutcome out = SceneLoadJob::loadNow(test::asset(QStringLiteral("DamagedHelmet")));
-    QVERIFY(out.scene);
-    const MaterialInstance& m = out.scene->materials[0];
+    QVERIFY(out.session);
+    const MaterialInstance& m = out.session->scene->materials[0];
     MaterialFieldsModel model;
-    model.setMaterial(out.scene, out.extras, 0, to_gpu_material(m),
-                      MaterialFieldsModel::Source::Cpu);
+    model.setMaterial(out.session, 0, to_gpu_material(m), MaterialFieldsModel::Source::Cpu);
     QCOMPARE(model.rowCount(), 14);
     // Offsets strictly increase and end at 76 (80-byte std430 record).
     int last = -1;
@@ -192,8 +192,7 @@ void ModelTests::materialFieldsFollowTheGpuLayout() {
     gpu.base_color_tex = 7;
     std::vector<int> table(8, -1);
     table[7] = 3;
-    model.setMaterial(out.scene, out.extras, 0, gpu, MaterialFieldsModel::Source::GpuReadback,
-                      table);
+    model.setMaterial(out.session, 0, gpu, MaterialFieldsModel::Source::GpuReadback, table);
     QCOMPARE(model.textureOfRow(6), 3);
 }
 
@@ -302,15 +301,15 @@ void ModelTests::generatedTangentsAgreeWithRegeneration() {
     // DamagedHelmet has no TANGENT: the importer generates MikkTSpace ones, so
     // regenerating them must agree to float precision everywhere.
     const LoadOutcome out = SceneLoadJob::loadNow(test::asset(QStringLiteral("DamagedHelmet")));
-    QVERIFY(out.scene);
-    const Mesh& mesh = out.scene->meshes[0];
+    QVERIFY(out.session);
+    const Mesh& mesh = out.session->scene->meshes[0];
     QCOMPARE(mesh.provenance_of(VertexAttribute::Tangent), Provenance::Generated);
     const TangentErrors e = tangent_errors(mesh, 0);
     QCOMPARE(e.degrees.size(), mesh.vertices.size());
     QVERIFY2(e.max < 1e-2, qPrintable(QString::number(e.max)));
     QCOMPARE(e.flips, std::uint64_t{0});
     VertexTableModel model;
-    model.setMesh(MeshRef{out.scene, 0});
+    model.setMesh(MeshRef{out.session->scene, 0});
     model.setTangentErrors(std::make_shared<const TangentErrors>(e));
     model.sort(VertexTableModel::TangentErrorColumn, Qt::DescendingOrder);
     const int worst = model.vertexOfRow(0);
@@ -340,8 +339,8 @@ void ModelTests::frameKeepsTheBoxInView() {
 
 void ModelTests::pickHitsTheInstanceUnderTheRay() {
     const LoadOutcome out = SceneLoadJob::loadNow(QStringLiteral("builtin:default"));
-    QVERIFY(out.scene);
-    const Scene& s = *out.scene;
+    QVERIFY(out.session);
+    const Scene& s = *out.session->scene;
     OrbitCamera cam;
     cam.frame(s.bounds);
     // Aim at the centre of a solid instance from outside the scene: it (or something in
@@ -414,11 +413,11 @@ void ModelTests::cullingMonitorFreezes() {
     const LoadOutcome out = SceneLoadJob::loadNow(QStringLiteral("builtin:default"));
     EditorContext context;
     CullingMonitor monitor(context);
-    context.setScene(QStringLiteral("builtin:default"), out.scene, out.extras);
+    context.setSession(out.session);
     OrbitCamera cam;
-    cam.frame(out.scene->bounds);
+    cam.frame(out.session->scene->bounds);
     monitor.update(cam.spec());
-    const std::uint64_t total = out.scene->instances.size();
+    const std::uint64_t total = out.session->scene->instances.size();
     QCOMPARE(monitor.latest()->cpu.total, total);
     QCOMPARE(monitor.latest()->cpu.visible, total); // framed: everything in view
     monitor.setFrozen(true);
@@ -431,24 +430,76 @@ void ModelTests::cullingMonitorFreezes() {
     QVERIFY(monitor.history().size() >= 4);
 }
 
+void ModelTests::cullingMonitorCoalescesExpensivePasses() {
+    const LoadOutcome out = SceneLoadJob::loadNow(QStringLiteral("builtin:default"));
+    QVERIFY(out.session);
+    EditorContext context;
+    CullingMonitor monitor(context);
+    context.setSession(out.session);
+    OrbitCamera cam;
+    cam.frame(out.session->scene->bounds);
+    const std::uint64_t total = out.session->scene->instances.size();
+    QSignalSpy updated(&monitor, &CullingMonitor::updated);
+    // Cheap passes (ten instances: microseconds, far under 4 ms) run at once, one
+    // sample per camera step.
+    QVERIFY(monitor.lastPassMs() < 4.0);
+    std::size_t samples = monitor.history().size();
+    for (int i = 0; i < 5; ++i) {
+        cam.orbit(10.0f, 0.0f);
+        monitor.update(cam.spec());
+    }
+    QCOMPARE(monitor.history().size(), samples + 5);
+    QCOMPARE(updated.count(), 5);
+    QVERIFY(!monitor.deferred());
+    // Passes over the limit (every pass, with the limit at 0): a burst of camera steps
+    // runs no pass on the GUI thread until the timer fires, then one for the latest camera.
+    monitor.setCoalesceAboveMs(0.0);
+    samples = monitor.history().size();
+    updated.clear();
+    CameraSpec away = cam.spec();
+    for (int i = 0; i < 20; ++i) {
+        cam.orbit(10.0f, 0.0f);
+        monitor.update(cam.spec());
+    }
+    away.target = away.eye + (away.eye - cam.target()); // the last step looks away
+    monitor.update(away);
+    QVERIFY(monitor.deferred());
+    QCOMPARE(monitor.history().size(), samples);
+    QCOMPARE(updated.count(), 0);
+    QTRY_VERIFY(!monitor.deferred()); // the timer: twice the last pass's cost
+    QCOMPARE(monitor.history().size(), samples + 1);
+    QCOMPARE(updated.count(), 1);
+    QVERIFY(monitor.latest()->cpu.visible < total); // culled for the latest camera
+    QCOMPARE(monitor.cullingCamera().target, away.target);
+    // flush() runs a waiting pass at once.
+    OrbitCamera framed;
+    framed.frame(out.session->scene->bounds);
+    monitor.update(framed.spec());
+    QVERIFY(monitor.deferred());
+    monitor.flush();
+    QVERIFY(!monitor.deferred());
+    QCOMPARE(monitor.history().size(), samples + 2);
+    QCOMPARE(monitor.latest()->cpu.visible, total);
+}
+
 void ModelTests::selectionFollowsActions() {
     const LoadOutcome out = SceneLoadJob::loadNow(test::asset(QStringLiteral("Duck")));
     EditorContext context;
     SceneTreeModel tree(context);
-    context.setScene(QStringLiteral("Duck"), out.scene, out.extras);
+    context.setSession(out.session);
     QSignalSpy selection(&context, &EditorContext::selectionChanged);
     int mesh_node = -1;
-    for (std::size_t n = 0; n < out.scene->nodes.size(); ++n)
-        if (out.scene->nodes[n].mesh >= 0) mesh_node = static_cast<int>(n);
+    for (std::size_t n = 0; n < out.session->scene->nodes.size(); ++n)
+        if (out.session->scene->nodes[n].mesh >= 0) mesh_node = static_cast<int>(n);
     QVERIFY(mesh_node >= 0);
     context.selectNode(mesh_node);
     QCOMPARE(selection.count(), 1);
     QCOMPARE(context.selection().node, mesh_node);
     QVERIFY(context.selection().mesh >= 0);
-    QCOMPARE(
-        context.selection().material,
-        static_cast<int>(
-            out.scene->meshes[static_cast<std::size_t>(context.selection().mesh)].material_id));
+    QCOMPARE(context.selection().material,
+             static_cast<int>(
+                 out.session->scene->meshes[static_cast<std::size_t>(context.selection().mesh)]
+                     .material_id));
     // Unticking a node is an action out of the model, applied by the owner of the context.
     QSignalSpy requested(&tree, &SceneTreeModel::visibilityRequested);
     QVERIFY(tree.setData(tree.indexOfNode(mesh_node), Qt::Unchecked, Qt::CheckStateRole));
@@ -457,8 +508,8 @@ void ModelTests::selectionFollowsActions() {
     context.setNodeVisible(mesh_node, false);
     QCOMPARE(tree.indexOfNode(mesh_node).data(Qt::CheckStateRole).toInt(),
              static_cast<int>(Qt::Unchecked));
-    for (std::size_t i = 0; i < out.scene->instances.size(); ++i)
-        if (static_cast<int>(out.scene->instances[i].node_id) == mesh_node)
+    for (std::size_t i = 0; i < out.session->scene->instances.size(); ++i)
+        if (static_cast<int>(out.session->scene->instances[i].node_id) == mesh_node)
             QVERIFY(!context.instanceVisible(i));
 }
 

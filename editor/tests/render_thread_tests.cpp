@@ -67,6 +67,7 @@ private Q_SLOTS:
     void guiWorksWhileAFrameIsInFlight();
     void stillFrameIsFullResolutionAfterMotion();
     void gpuTimeIsMeasured();
+    void sceneAskedForBeforeTheDeviceWaitsForIt();
 
 private:
     QVulkanInstance vulkan_;
@@ -188,6 +189,26 @@ void RenderThreadTests::gpuTimeIsMeasured() {
     QVERIFY(label);
     QVERIFY2(label->text().contains(QStringLiteral("GPU")), qPrintable(label->text()));
     QVERIFY2(label->text().contains(QStringLiteral("fps")), qPrintable(label->text()));
+}
+
+// The device is made on the render thread while the window shows: a scene opened
+// before it is known (as the command line's is) starts loading once it is, with the
+// device's texture plan; never without it (the race of the old zero-delay timer).
+void RenderThreadTests::sceneAskedForBeforeTheDeviceWaitsForIt() {
+    if (!window_->renderer()) QSKIP("no Vulkan device");
+    MainWindow w(&vulkan_);
+    w.setLanguage(QStringLiteral("en"), false);
+    QVERIFY(w.renderer());
+    // deviceReady reaches the GUI thread as a queued call: not before the event loop runs.
+    int ready = 0;
+    connect(w.renderer(), &RenderThread::deviceReady, this, [&ready] { ++ready; });
+    QSignalSpy loaded(&w, &MainWindow::sceneLoaded);
+    w.openScene(QStringLiteral("builtin:default"));
+    QVERIFY(!w.loader().running()); // waits for the device
+    QVERIFY(loaded.wait(test::kLoadTimeoutMs));
+    QCOMPARE(ready, 1);
+    // Its textures were prepared for the device (a plan without one prepares none).
+    QVERIFY(w.context().session() && w.context().session()->textures);
 }
 
 QTEST_MAIN(RenderThreadTests)

@@ -1,11 +1,13 @@
 // The editor window end to end under Xvfb: loading, selection across docks,
 // scene switching, cancel, broken files, languages, layout persistence.
+#include <QClipboard>
 #include <QDockWidget>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTableView>
 #include <QTreeView>
 #include <QVulkanInstance>
 #include <QtTest>
@@ -13,6 +15,7 @@
 #include "culling_dock.h"
 #include "culling_monitor.h"
 #include "editor_settings.h"
+#include "format_values.h"
 #include "gpu_viewport.h"
 #include "log_dock.h"
 #include "main_window.h"
@@ -109,6 +112,28 @@ void WindowTests::selectionReachesEveryDock() {
             ->data(window_->meshDock()->vertices()->index(0, VertexTableModel::TangentErrorColumn),
                    Qt::DisplayRole)
             .toString() != QStringLiteral("—"));
+    // Numbers show six significant digits; Ctrl+C copies all nine of the float.
+    QTableView* vertices = window_->meshDock()->vertexView();
+    const QAbstractItemModel* vm = vertices->model();
+    QModelIndex rounded;
+    for (int row = 0; row < 64 && !rounded.isValid(); ++row)
+        for (int c = VertexTableModel::PosX; c <= VertexTableModel::PosZ; ++c) {
+            const QModelIndex i = vm->index(row, c);
+            if (i.data(Format::kExactTextRole).toString() != i.data().toString()) {
+                rounded = i;
+                break;
+            }
+        }
+    QVERIFY2(rounded.isValid(), "a DamagedHelmet position needs more than six digits");
+    QVERIFY(rounded.data().toString().size() <
+            rounded.data(Format::kExactTextRole).toString().size());
+    vertices->setCurrentIndex(rounded);
+    vertices->setFocus();
+    QApplication::clipboard()->clear();
+    QTest::keyClick(vertices, Qt::Key_C, Qt::ControlModifier);
+    QCOMPARE(QApplication::clipboard()->text(), rounded.data(Format::kExactTextRole).toString());
+    QCOMPARE(QApplication::clipboard()->text().toFloat(),
+             rounded.data(Format::kExactTextRole).toString().toFloat());
     // Filter the tree: only matching names (and their ancestors) stay.
     window_->sceneTreeDock()->setFilter(QStringLiteral("no such node"));
     QCOMPARE(tree->model()->rowCount(), 0);
@@ -211,9 +236,16 @@ void WindowTests::languagesSwitchAtRuntime() {
     QVERIFY(window_->setLanguage(QStringLiteral("de")));
     QCOMPARE(file_menu(), QStringLiteral("&Datei"));
     QCOMPARE(window_->sceneTreeDock()->windowTitle(), QStringLiteral("Szenenbaum"));
+    // The scene tree's root item ("Scene 0") is translated too.
+    const auto root = [this] {
+        const QAbstractItemModel* m = window_->sceneTreeDock()->model();
+        return m->index(0, 0).data().toString();
+    };
+    QVERIFY2(root().startsWith(QStringLiteral("Szene ")), qPrintable(root()));
     QVERIFY(window_->setLanguage(QStringLiteral("zh_CN")));
     QCOMPARE(file_menu(), QStringLiteral("文件(&F)"));
     QCOMPARE(window_->cullingDock()->windowTitle(), QStringLiteral("剔除统计"));
+    QVERIFY2(root().startsWith(QStringLiteral("场景 ")), qPrintable(root()));
     QCOMPARE(
         window_->textureDock()->model()->headerData(0, Qt::Horizontal, Qt::DisplayRole).toString(),
         QStringLiteral("纹理"));

@@ -88,6 +88,8 @@ public:
     const T& operator[](std::size_t i) const {
         return items_[(start_ + i) % items_.size()];
     } // 0 = oldest
+    // The newest item, for results that arrive after it was pushed; size() > 0.
+    T& back() { return items_[(start_ + size_ - 1) % items_.size()]; }
 
 private:
     std::vector<T> items_;

@@ -1,6 +1,10 @@
 #pragma once
-// What the editor computes along with a scene, off the UI thread: texture thumbnails
-// (QImage is safe outside the GUI thread, QPixmap is not) and load timings.
+// A loaded scene as one value: the engine's Scene with everything the editor made for
+// it off the UI thread (the textures prepared for the device, thumbnails, source image
+// sizes, timings). The loader builds it, EditorContext owns the current one and its
+// one sceneReady signal hands it to the docks (they read it) and to the viewport (it
+// uploads it and keeps it alive while on the GPU). Immutable once made: shared, never
+// copied, and swapped in one step.
 #include <QImage>
 #include <QString>
 
@@ -34,16 +38,25 @@ struct TexturePlan {
     int bc7_level = 0;        // BC7 encoder quality level
 };
 
-struct SceneExtras {
-    std::vector<QImage> thumbnails; // per Scene::textures; null when undecodable
-    std::vector<QSize> image_sizes; // per Scene::images, pixel size of the source (0x0 unknown)
-    double load_ms = 0.0;           // engine load_scene (parse, geometry, tangents)
-    double thumbnails_ms = 0.0;
+// Where a load's time went (the log says it after each load).
+struct LoadTimings {
+    double engine_ms = 0.0;     // engine load_scene (parse, geometry, tangents)
+    double textures_ms = 0.0;   // the texture pipeline (cache, BC7/BC5) for the device
+    double thumbnails_ms = 0.0; // thumbnails and source sizes
+    double total_ms = 0.0;      // SceneLoadJob::start() to the loaded scene on the GUI thread
+};
+
+struct SceneSession {
+    QString spec;                       // what was opened: a path or a built-in spec
+    std::shared_ptr<const Scene> scene; // never null
     // Prepared on the loader thread for the viewport's device (TexturePlan); null
     // without a device.
     PreparedTextures textures;
-    double textures_ms = 0.0;
+    std::vector<QImage> thumbnails; // per Scene::textures; null when undecodable
+    std::vector<QSize> image_sizes; // per Scene::images, pixel size of the source (0x0 unknown)
+    LoadTimings timings;
 };
+using SharedSession = std::shared_ptr<const SceneSession>;
 
 inline constexpr int kThumbnailSize = 64;
 

@@ -1,6 +1,7 @@
 #pragma once
 // What one rendered frame shows: size, debug view, overlays, camera, passes.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -10,6 +11,7 @@
 
 #include <sherpa/gpu/debug_views.h>
 #include <sherpa/render/camera.h>
+#include <sherpa/scene/animation.h>
 #include <sherpa/scene/culling.h>
 #include <sherpa/scene/shadow_cascades.h>
 
@@ -79,6 +81,13 @@ struct RenderSettings {
     std::optional<std::uint32_t> highlight_instance;
     std::optional<std::uint32_t> highlight_triangle; // needs highlight_instance
     std::optional<std::uint32_t> highlight_vertex;   // needs highlight_instance
+    // The pose to draw (evaluate_pose(), morph weights possibly overridden by the editor); null:
+    // the scene as loaded (bind pose, default weights). Skinned/morphed primitives are deformed
+    // on the GPU; culling and shadows use the pose's conservative bounds.
+    std::shared_ptr<const Pose> pose;
+    // A joint (node index) to highlight: the joint-influence view shows its weight as a heat
+    // map, the skeleton overlay draws it in kHighlightDetailColor.
+    std::optional<std::uint32_t> selected_joint;
 };
 
 inline const glm::vec4 kHighlightColor{1.0f, 0.45f, 0.0f, 1.0f}; // orange

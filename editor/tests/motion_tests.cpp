@@ -1,0 +1,201 @@
+// The editor's motion tools (issue 16) against the engine's evaluation: the timeline
+// lists the file's animations, scrubbing and the play loop (advance, wrap, stop)
+// change the pose it posts, morph weight sliders override the pose's weights, the
+// scene tree shows skins, joints and animations, the vertex table JOINTS/WEIGHTS and
+// morph deltas; in the window, the frame handed to the renderer carries the pose and
+// the selected joint.
+#include <QComboBox>
+#include <QLabel>
+#include <QtTest>
+
+#include <sherpa/scene/scene_loader.h>
+
+#include "editor_context.h"
+#include "main_window.h"
+#include "morph_weights_panel.h"
+#include "test_assets.h"
+#include "timeline_dock.h"
+#include "window_test_support.h"
+
+using namespace sherpa;
+using namespace sherpa::editor;
+
+namespace {
+
+// `name` loaded into `context` (the engine's loader: no textures needed here).
+std::shared_ptr<const Scene> load_into(EditorContext& context, const QString& name) {
+    LoadResult r = load_scene(test::asset(name).toStdString());
+    if (!r) return nullptr;
+    std::shared_ptr<const Scene> scene(std::move(r.scene));
+    context.setScene(test::asset(name), scene, nullptr);
+    return scene;
+}
+
+bool same_matrix(const glm::mat4& a, const glm::mat4& b) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (std::abs(a[c][r] - b[c][r]) > 1e-5f) return false;
+    return true;
+}
+
+} // namespace
+
+class MotionTests : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void timelineListsTheFilesAnimations();
+    void scrubbingChangesThePose();
+    void playLoopAdvancesAndWraps();
+    void morphSlidersOverrideThePoseWeights();
+    void windowPostsThePoseAndSelectedJoint();
+};
+
+void MotionTests::timelineListsTheFilesAnimations() {
+    EditorContext context;
+    TimelineDock dock(context);
+    QCOMPARE(dock.animationBox()->count(), 1); // "No animation"
+    QVERIFY(!dock.pose());
+    auto scene = load_into(context, QStringLiteral("BoxAnimated"));
+    QVERIFY(scene);
+    QCOMPARE(dock.animationBox()->count(), static_cast<int>(scene->animations.size()) + 1);
+    QCOMPARE(dock.animation(), 0); // the first, paused at its start
+    QCOMPARE(dock.time(), static_cast<double>(scene->animations[0].start));
+    QVERIFY(dock.pose());
+    // Ticks: every key time of the animation's samplers, once.
+    std::vector<double> keys;
+    for (const AnimationSampler& s : scene->animations[0].samplers)
+        keys.insert(keys.end(), s.times.begin(), s.times.end());
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    QCOMPARE(dock.slider()->ticks().size(), keys.size());
+    QCOMPARE(dock.slider()->ticks().front(), 0.0);
+    QCOMPARE(dock.slider()->ticks().back(), 1.0);
+    // No animation selected, nothing overridden: no pose (the scene as loaded).
+    dock.setAnimation(-1);
+    QVERIFY(!dock.pose());
+    QVERIFY(!dock.slider()->isEnabled());
+    // A file without animations lists none.
+    load_into(context, QStringLiteral("Box"));
+    QCOMPARE(dock.animationBox()->count(), 1);
+    QVERIFY(!dock.pose());
+}
+
+void MotionTests::scrubbingChangesThePose() {
+    EditorContext context;
+    TimelineDock dock(context);
+    auto scene = load_into(context, QStringLiteral("BoxAnimated"));
+    QVERIFY(scene);
+    QSignalSpy changed(&dock, &TimelineDock::poseChanged);
+    const Animation& anim = scene->animations[0];
+    const std::uint32_t node = anim.channels[0].node;
+    const double t1 = anim.start + 0.25 * (anim.end - anim.start);
+    const double t2 = anim.start + 0.6 * (anim.end - anim.start);
+    dock.scrubTo(t1);
+    QVERIFY(!changed.isEmpty());
+    const glm::mat4 at1 = dock.pose()->world[node];
+    QVERIFY(same_matrix(at1, evaluate_pose(*scene, 0, t1).world[node]));
+    dock.scrubTo(t2);
+    QVERIFY(same_matrix(dock.pose()->world[node], evaluate_pose(*scene, 0, t2).world[node]));
+    QVERIFY(!same_matrix(dock.pose()->world[node], at1));
+    QVERIFY(dock.timeLabel()->text().contains(QString::number(t2, 'f', 3)));
+    // The slider scrubs too (its range is the animation's).
+    dock.slider()->setValue(TimelineDock::kSliderSteps / 2);
+    QCOMPARE(dock.time(), 0.5 * (anim.start + anim.end));
+    QVERIFY(
+        same_matrix(dock.pose()->world[node], evaluate_pose(*scene, 0, dock.time()).world[node]));
+    // Beyond the range: clamped to the last key.
+    dock.scrubTo(anim.end + 100.0);
+    QCOMPARE(dock.time(), static_cast<double>(anim.end));
+}
+
+void MotionTests::playLoopAdvancesAndWraps() {
+    EditorContext context;
+    TimelineDock dock(context);
+    auto scene = load_into(context, QStringLiteral("AnimatedCube"));
+    QVERIFY(scene);
+    const Animation& anim = scene->animations[0];
+    const double duration = anim.end - anim.start;
+    QVERIFY(duration > 0.0);
+    dock.advance(0.1); // paused: nothing moves
+    QCOMPARE(dock.time(), static_cast<double>(anim.start));
+    dock.setPlaying(true);
+    dock.advance(0.25 * duration);
+    QCOMPARE(dock.time(), anim.start + 0.25 * duration);
+    dock.setSpeed(2.0);
+    dock.advance(0.25 * duration); // twice as fast: at three quarters
+    QVERIFY(std::abs(dock.time() - (anim.start + 0.75 * duration)) < 1e-9);
+    dock.advance(0.25 * duration); // past the end: wraps to a quarter
+    QVERIFY(std::abs(dock.time() - (anim.start + 0.25 * duration)) < 1e-6);
+    QVERIFY(dock.clock().playing);
+    QVERIFY(same_matrix(dock.pose()->world[anim.channels[0].node],
+                        evaluate_pose(*scene, 0, dock.time()).world[anim.channels[0].node]));
+    // Without loop the run stops on the last key.
+    dock.setLoop(false);
+    dock.advance(10.0 * duration);
+    QCOMPARE(dock.time(), static_cast<double>(anim.end));
+    QVERIFY(!dock.clock().playing);
+    // The timer drives it while playing (wall clock; not asserted on how far).
+    dock.setLoop(true);
+    dock.setSpeed(1.0);
+    dock.setPlaying(true);
+    const double before = dock.time();
+    QTRY_VERIFY(dock.time() != before);
+    dock.setPlaying(false);
+}
+
+void MotionTests::morphSlidersOverrideThePoseWeights() {
+    EditorContext context;
+    TimelineDock dock(context);
+    auto scene = load_into(context, QStringLiteral("SimpleMorph"));
+    QVERIFY(scene);
+    int node = -1;
+    for (std::size_t n = 0; n < scene->nodes.size(); ++n)
+        if (scene->nodes[n].mesh >= 0 && !scene->nodes[n].weights.empty()) node = int(n);
+    QVERIFY(node >= 0);
+    const auto mesh = scene->nodes[std::size_t(node)].mesh;
+    dock.scrubTo(1.0);
+    const std::vector<float> animated = evaluate_pose(*scene, 0, 1.0).weights[std::size_t(node)];
+    QCOMPARE(dock.pose()->weights[std::size_t(node)], animated);
+    QVERIFY(!dock.morphWeights()->setOverride(mesh, 7, 0.5f)); // no such target
+    QVERIFY(dock.morphWeights()->setOverride(mesh, 1, 0.75f));
+    QCOMPARE(dock.pose()->weights[std::size_t(node)][1], 0.75f);
+    // The other target keeps the slider's value (which followed the animation).
+    QVERIFY(std::abs(dock.pose()->weights[std::size_t(node)][0] - animated[0]) < 1e-3f);
+    // Overrides hold while the time changes, and without an animation.
+    dock.scrubTo(3.0);
+    QCOMPARE(dock.pose()->weights[std::size_t(node)][1], 0.75f);
+    dock.setAnimation(-1);
+    QVERIFY(dock.pose());
+    QCOMPARE(dock.pose()->weights[std::size_t(node)][1], 0.75f);
+}
+
+void MotionTests::windowPostsThePoseAndSelectedJoint() {
+    QVulkanInstance vulkan;
+    std::unique_ptr<MainWindow> w = test::open_validated_window(vulkan);
+    QVERIFY(w);
+    if (!w->renderer()) QSKIP("no Vulkan device: no frames are asked for");
+    QVERIFY(!w->timelineDock()->isVisible()); // builtin:default does not move
+    QVERIFY(!w->lastFrame().pose);
+    QVERIFY(test::load(*w, test::asset(QStringLiteral("BoxAnimated"))));
+    QVERIFY(w->timelineDock()->isVisible());
+    const Scene& scene = *w->context().scene();
+    const Animation& anim = scene.animations[0];
+    const std::uint32_t node = anim.channels[0].node;
+    for (const double t : {anim.start + 0.3 * (anim.end - anim.start), double(anim.end)}) {
+        w->timelineDock()->scrubTo(t);
+        const glm::mat4 expected = evaluate_pose(scene, 0, t).world[node];
+        QTRY_VERIFY(w->lastFrame().pose && same_matrix(w->lastFrame().pose->world[node], expected));
+    }
+    // Selecting a joint puts it in the frame; other nodes do not.
+    QVERIFY(test::load(*w, test::asset(QStringLiteral("RiggedSimple"))));
+    const std::uint32_t joint = w->context().scene()->skins[0].joints[1];
+    QVERIFY(w->selectNodeNamed(QString::number(joint)));
+    QTRY_COMPARE(w->lastFrame().selectedJoint.value_or(~0u), joint);
+    QVERIFY(w->selectNodeNamed(QStringLiteral("0")));
+    QTRY_VERIFY(!w->lastFrame().selectedJoint);
+    qsizetype seen = 0;
+    QCOMPARE(test::fresh_validation_messages(*w, seen), QString());
+}
+
+QTEST_MAIN(MotionTests)
+#include "motion_tests.moc"

@@ -6,15 +6,21 @@
 // the selected joint.
 #include <QComboBox>
 #include <QLabel>
+#include <QSortFilterProxyModel>
+#include <QTreeView>
 #include <QtTest>
 
 #include <sherpa/scene/scene_loader.h>
 
 #include "editor_context.h"
+#include "format_values.h"
 #include "main_window.h"
 #include "morph_weights_panel.h"
+#include "scene_tree_dock.h"
+#include "scene_tree_model.h"
 #include "test_assets.h"
 #include "timeline_dock.h"
+#include "vertex_table_model.h"
 #include "window_test_support.h"
 
 using namespace sherpa;
@@ -47,8 +53,135 @@ private Q_SLOTS:
     void scrubbingChangesThePose();
     void playLoopAdvancesAndWraps();
     void morphSlidersOverrideThePoseWeights();
+    void sceneTreeShowsSkinsJointsAndAnimations();
+    void vertexTableHasJointsWeightsAndMorphDeltas();
     void windowPostsThePoseAndSelectedJoint();
 };
+
+void MotionTests::sceneTreeShowsSkinsJointsAndAnimations() {
+    EditorContext context;
+    SceneTreeDock dock(context);
+    const SceneTreeModel& tree = *dock.model();
+    auto scene = load_into(context, QStringLiteral("RiggedSimple"));
+    QVERIFY(scene);
+    QCOMPARE(scene->skins.size(), 1u);
+    QCOMPARE(scene->animations.size(), 1u);
+    // Scenes first, then the skin, then the animation.
+    const int scenes = static_cast<int>(scene->scenes.size());
+    QCOMPARE(tree.rowCount(), scenes + 2);
+    auto cell = [&](const QModelIndex& i, int column) {
+        return i.siblingAtColumn(column).data().toString();
+    };
+    const QModelIndex skin = tree.index(scenes, 0);
+    QCOMPARE(cell(skin, SceneTreeModel::NameColumn),
+             QStringLiteral("Skin 0: %1").arg(QString::fromStdString(scene->skins[0].name)));
+    QCOMPARE(cell(skin, SceneTreeModel::TypeColumn), QStringLiteral("skin"));
+    QVERIFY(cell(skin, SceneTreeModel::DetailColumn).startsWith(QStringLiteral("2 joints")));
+    QCOMPARE(tree.rowCount(skin), static_cast<int>(scene->skins[0].joints.size()));
+    for (int r = 0; r < tree.rowCount(skin); ++r) {
+        const QModelIndex joint = tree.index(r, 0, skin);
+        const std::uint32_t node = scene->skins[0].joints[std::size_t(r)];
+        QCOMPARE(cell(joint, SceneTreeModel::TypeColumn), QStringLiteral("joint"));
+        QCOMPARE(joint.data(SceneTreeModel::NodeRole).toInt(), static_cast<int>(node));
+        // The node's own row in the hierarchy is marked as a joint too.
+        QCOMPARE(cell(tree.indexOfNode(static_cast<int>(node)), SceneTreeModel::TypeColumn),
+                 QStringLiteral("joint"));
+    }
+    QCOMPARE(cell(tree.indexOfNode(0), SceneTreeModel::TypeColumn), QStringLiteral("node"));
+
+    const Animation& anim = scene->animations[0];
+    const QModelIndex a = tree.index(scenes + 1, 0);
+    QCOMPARE(cell(a, SceneTreeModel::TypeColumn), QStringLiteral("animation"));
+    QCOMPARE(cell(a, SceneTreeModel::DetailColumn),
+             QStringLiteral("%1 s, %2 channels")
+                 .arg(double(anim.end - anim.start), 0, 'f', 3)
+                 .arg(anim.channels.size()));
+    QCOMPARE(tree.rowCount(a), static_cast<int>(anim.channels.size() + anim.samplers.size()));
+    const QModelIndex channel = tree.index(1, 0, a);
+    QCOMPARE(cell(channel, SceneTreeModel::TypeColumn), QStringLiteral("channel"));
+    QVERIFY2(cell(channel, SceneTreeModel::DetailColumn).contains(QStringLiteral("rotation")),
+             qPrintable(cell(channel, SceneTreeModel::DetailColumn)));
+    const QModelIndex sampler = tree.index(static_cast<int>(anim.channels.size()), 0, a);
+    QCOMPARE(cell(sampler, SceneTreeModel::TypeColumn), QStringLiteral("sampler"));
+    QCOMPARE(cell(sampler, SceneTreeModel::DetailColumn),
+             QStringLiteral("LINEAR, %1 keys").arg(anim.samplers[0].times.size()));
+    QVERIFY(sampler.siblingAtColumn(SceneTreeModel::DetailColumn)
+                .data(Qt::ToolTipRole)
+                .toString()
+                .contains(QStringLiteral(" s")));
+
+    // Choosing a joint row selects the joint's node.
+    QSignalSpy select(&dock, &SceneTreeDock::selectNodeRequested);
+    dock.view()->setCurrentIndex(static_cast<QSortFilterProxyModel*>(dock.view()->model())
+                                     ->mapFromSource(tree.index(1, 0, skin)));
+    QCOMPARE(select.count(), 1);
+    QCOMPARE(select.front().front().toInt(), static_cast<int>(scene->skins[0].joints[1]));
+}
+
+void MotionTests::vertexTableHasJointsWeightsAndMorphDeltas() {
+    EditorContext context;
+    auto rigged = load_into(context, QStringLiteral("RiggedSimple"));
+    QVERIFY(rigged);
+    VertexTableModel table;
+    QCOMPARE(table.columnCount(), static_cast<int>(VertexTableModel::ColumnCount));
+    const PrimitiveInfo* skinned = nullptr;
+    for (const PrimitiveInfo& p : rigged->primitives)
+        if (p.motion >= 0) skinned = &p;
+    QVERIFY(skinned);
+    table.setMesh({rigged, skinned->engine_mesh});
+    QCOMPARE(table.columnCount(), VertexTableModel::ColumnCount + 2);
+    QCOMPARE(
+        table.headerData(VertexTableModel::ColumnCount, Qt::Horizontal, Qt::DisplayRole).toString(),
+        QStringLiteral("JOINTS"));
+    QCOMPARE(table.headerData(VertexTableModel::ColumnCount + 1, Qt::Horizontal, Qt::DisplayRole)
+                 .toString(),
+             QStringLiteral("WEIGHTS"));
+    const PrimitiveMotion& motion = rigged->motions[std::size_t(skinned->motion)];
+    const Mesh& mesh = rigged->meshes[std::size_t(skinned->engine_mesh)];
+    for (int row : {0, table.rowCount() / 2, table.rowCount() - 1}) {
+        const auto v = static_cast<std::size_t>(table.vertexOfRow(row));
+        const std::int64_t f = table.motionColumns().sourceVertex(v);
+        QVERIFY(f >= 0);
+        // The file vertex shown is one at the engine vertex's position.
+        QCOMPARE(motion.base_positions[std::size_t(f)], mesh.vertices[v].position);
+        QStringList joints, weights;
+        for (std::uint32_t k = 0; k < motion.influences; ++k) {
+            joints << QString::number(motion.joints[std::size_t(f) * motion.influences + k]);
+            weights << Format::number(motion.weights[std::size_t(f) * motion.influences + k]);
+        }
+        QCOMPARE(table.index(row, VertexTableModel::ColumnCount).data().toString(),
+                 joints.join(QLatin1Char(' ')));
+        QCOMPARE(table.index(row, VertexTableModel::ColumnCount + 1).data().toString(),
+                 weights.join(QLatin1Char(' ')));
+    }
+    // Sorting by WEIGHTS orders by the first weight.
+    table.sort(VertexTableModel::ColumnCount + 1, Qt::AscendingOrder);
+    const double first = table.motionColumns().key(std::size_t(table.vertexOfRow(0)), 1);
+    const double last =
+        table.motionColumns().key(std::size_t(table.vertexOfRow(table.rowCount() - 1)), 1);
+    QVERIFY(first <= last);
+
+    // Morph deltas: one column per target attribute.
+    auto morph = load_into(context, QStringLiteral("SimpleMorph"));
+    QVERIFY(morph);
+    const PrimitiveInfo& p = morph->primitives[0];
+    QVERIFY(p.motion >= 0);
+    const PrimitiveMotion& m = morph->motions[std::size_t(p.motion)];
+    table.setMesh({morph, p.engine_mesh});
+    QCOMPARE(table.columnCount(),
+             VertexTableModel::ColumnCount + static_cast<int>(m.targets.size()));
+    QCOMPARE(table.headerData(VertexTableModel::ColumnCount + 1, Qt::Horizontal, Qt::DisplayRole)
+                 .toString(),
+             QStringLiteral("Δpos 1"));
+    const auto v = static_cast<std::size_t>(table.vertexOfRow(2));
+    const auto f = static_cast<std::size_t>(table.motionColumns().sourceVertex(v));
+    QCOMPARE(table.index(2, VertexTableModel::ColumnCount + 1).data().toString(),
+             Format::vec(m.targets[1].position[f]));
+    // A static mesh has none.
+    auto box = load_into(context, QStringLiteral("Box"));
+    table.setMesh({box, 0});
+    QCOMPARE(table.columnCount(), static_cast<int>(VertexTableModel::ColumnCount));
+}
 
 void MotionTests::timelineListsTheFilesAnimations() {
     EditorContext context;

@@ -171,7 +171,10 @@ void MainWindow::showTimelineForScene() {
 
 void MainWindow::connectActions() {
     // Actions out of the docks become context changes here, and only here.
-    connect(timeline_, &TimelineDock::poseChanged, viewport_, &ViewportWindow::scheduleFrame);
+    connect(timeline_, &TimelineDock::poseChanged, this, [this] {
+        culling_->setPose(timeline_->pose()); // the culling dock follows the motion
+        viewport_->scheduleFrame();
+    });
     connect(&context_, &EditorContext::sceneChanged, this, &MainWindow::showTimelineForScene);
     connect(scene_tree_, &SceneTreeDock::selectNodeRequested, &context_,
             &EditorContext::selectNode);

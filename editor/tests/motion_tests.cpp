@@ -12,6 +12,7 @@
 
 #include <sherpa/scene/scene_loader.h>
 
+#include "culling_monitor.h"
 #include "editor_context.h"
 #include "format_values.h"
 #include "main_window.h"
@@ -318,6 +319,21 @@ void MotionTests::windowPostsThePoseAndSelectedJoint() {
         w->timelineDock()->scrubTo(t);
         const glm::mat4 expected = evaluate_pose(scene, 0, t).world[node];
         QTRY_VERIFY(w->lastFrame().pose && same_matrix(w->lastFrame().pose->world[node], expected));
+        // The culling dock culls the instances where the pose puts them.
+        const Pose pose = evaluate_pose(scene, 0, t);
+        w->cullingMonitor().flush();
+        for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+            const MeshInstance& inst = scene.instances[i];
+            const auto prim = std::find_if(
+                scene.primitives.begin(), scene.primitives.end(),
+                [&](const PrimitiveInfo& p) { return p.engine_mesh == int(inst.mesh_id); });
+            const Aabb expected_box = culling_bounds(scene, pose, inst.node_id, *prim);
+            const Aabb box = w->cullingMonitor().box(i);
+            QVERIFY(
+                glm::all(glm::lessThan(glm::abs(box.min - expected_box.min), glm::vec3(1e-5f))));
+            QVERIFY(
+                glm::all(glm::lessThan(glm::abs(box.max - expected_box.max), glm::vec3(1e-5f))));
+        }
     }
     // Selecting a joint puts it in the frame; other nodes do not.
     QVERIFY(test::load(*w, test::asset(QStringLiteral("RiggedSimple"))));

@@ -97,6 +97,7 @@ TimelineDock::TimelineDock(const EditorContext& context, QWidget* parent)
     scroll->setWidget(morph_);
     scroll->setWidgetResizable(true);
     scroll->setMinimumWidth(260);
+    scroll->setMinimumHeight(120); // two targets without scrolling
     morph_area_ = scroll;
     outer->addLayout(controls, 3);
     outer->addWidget(scroll, 1);

@@ -66,6 +66,12 @@ void CullingMonitor::setPose(std::shared_ptr<const Pose> pose) {
                                    : inst.world_bounds;
     }
     input_.boxes.assign(boxes);
+    // The GPU path's check waits for the render thread: at most a few per second while
+    // the timeline plays, not one per tick.
+    if (gpu_path_ && gpu_check_) {
+        if (!deferred_->isActive()) deferred_->start(kPosedGpuCheckMs);
+        return;
+    }
     update(camera_); // coalesced like camera moves: playing costs the GUI what orbiting does
 }
 

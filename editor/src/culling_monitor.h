@@ -73,6 +73,7 @@ private:
     void rerun();
 
     static constexpr double kSynchronousMs = 4.0; // passes cheaper than this run at once
+    static constexpr int kPosedGpuCheckMs = 200;  // pose changes with the GPU check on
     const EditorContext& context_;
     CullInput input_; // boxes and draw groups, prepared once per scene
     CullOptions options_;

@@ -154,6 +154,10 @@
         <source>Bounding boxes</source>
         <translation>Hüllquader</translation>
     </message>
+    <message>
+        <source>Skeleton</source>
+        <translation>Skelett</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AttributeModel</name>
@@ -852,6 +856,25 @@ Die aktuelle Szene bleibt erhalten.</translation>
     </message>
 </context>
 <context>
+    <name>sherpa::editor::MorphWeightsPanel</name>
+    <message>
+        <source>No morph targets in this scene.</source>
+        <translation>Keine Morph-Ziele in dieser Szene.</translation>
+    </message>
+    <message>
+        <source>Override mesh %1</source>
+        <translation>Mesh %1 überschreiben</translation>
+    </message>
+    <message>
+        <source>Override %1</source>
+        <translation>%1 überschreiben</translation>
+    </message>
+    <message>
+        <source>target %1</source>
+        <translation>Ziel %1</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::SceneTreeDock</name>
     <message>
         <source>Scene Tree</source>
@@ -987,6 +1010,82 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>%1 vertices, %2 triangles</source>
         <translation>%1 Vertices, %2 Dreiecke</translation>
+    </message>
+    <message>
+        <source>joint</source>
+        <translation>Gelenk</translation>
+    </message>
+    <message>
+        <source>Skin %1</source>
+        <translation>Skin %1</translation>
+    </message>
+    <message>
+        <source>Skin %1: %2</source>
+        <translation>Skin %1: %2</translation>
+    </message>
+    <message>
+        <source>Animation %1</source>
+        <translation>Animation %1</translation>
+    </message>
+    <message>
+        <source>Animation %1: %2</source>
+        <translation>Animation %1: %2</translation>
+    </message>
+    <message>
+        <source>Channel %1</source>
+        <translation>Kanal %1</translation>
+    </message>
+    <message>
+        <source>Sampler %1</source>
+        <translation>Sampler %1</translation>
+    </message>
+    <message>
+        <source>skin</source>
+        <translation>Skin</translation>
+    </message>
+    <message>
+        <source>animation</source>
+        <translation>Animation</translation>
+    </message>
+    <message>
+        <source>channel</source>
+        <translation>Kanal</translation>
+    </message>
+    <message>
+        <source>sampler</source>
+        <translation>Sampler</translation>
+    </message>
+    <message>
+        <source>%1 joints</source>
+        <translation>%1 Gelenke</translation>
+    </message>
+    <message>
+        <source>%1, skeleton %2</source>
+        <translation>%1, Skelett %2</translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation>Knoten %1</translation>
+    </message>
+    <message>
+        <source>%1 s, %2 channels</source>
+        <translation>%1 s, %2 Kanäle</translation>
+    </message>
+    <message>
+        <source>%1, %2 samplers, %3 keys, %4 to %5 s</source>
+        <translation>%1, %2 Sampler, %3 Keyframes, %4 bis %5 s</translation>
+    </message>
+    <message>
+        <source>%1 %2, sampler %3</source>
+        <translation>%1 %2, Sampler %3</translation>
+    </message>
+    <message>
+        <source>%1, %2 keys</source>
+        <translation>%1, %2 Keyframes</translation>
+    </message>
+    <message>
+        <source>%1, %2 to %3 s</source>
+        <translation>%1, %2 bis %3 s</translation>
     </message>
 </context>
 <context>
@@ -1129,6 +1228,53 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>Container</source>
         <translation>Container</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::TimelineDock</name>
+    <message>
+        <source>Timeline</source>
+        <translation>Zeitleiste</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Tempo</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>Schleife</translation>
+    </message>
+    <message>
+        <source>Scrub; the ticks are the animation&apos;s key times</source>
+        <translation>Zeit wählen; die Striche sind die Keyframe-Zeiten der Animation</translation>
+    </message>
+    <message>
+        <source>No animation</source>
+        <translation>Keine Animation</translation>
+    </message>
+    <message>
+        <source>Animation %1</source>
+        <translation>Animation %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Abspielen</translation>
+    </message>
+    <message>
+        <source>no animation</source>
+        <translation>keine Animation</translation>
+    </message>
+    <message>
+        <source>%1 / %2 s</source>
+        <translation>%1 / %2 s</translation>
     </message>
 </context>
 <context>

@@ -154,6 +154,10 @@
         <source>Bounding boxes</source>
         <translation>Bounding boxes</translation>
     </message>
+    <message>
+        <source>Skeleton</source>
+        <translation>Skeleton</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AttributeModel</name>
@@ -852,6 +856,25 @@ The current scene is kept.</translation>
     </message>
 </context>
 <context>
+    <name>sherpa::editor::MorphWeightsPanel</name>
+    <message>
+        <source>No morph targets in this scene.</source>
+        <translation>No morph targets in this scene.</translation>
+    </message>
+    <message>
+        <source>Override mesh %1</source>
+        <translation>Override mesh %1</translation>
+    </message>
+    <message>
+        <source>Override %1</source>
+        <translation>Override %1</translation>
+    </message>
+    <message>
+        <source>target %1</source>
+        <translation>target %1</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::SceneTreeDock</name>
     <message>
         <source>Scene Tree</source>
@@ -987,6 +1010,82 @@ The current scene is kept.</translation>
     <message>
         <source>%1 vertices, %2 triangles</source>
         <translation>%1 vertices, %2 triangles</translation>
+    </message>
+    <message>
+        <source>joint</source>
+        <translation>joint</translation>
+    </message>
+    <message>
+        <source>Skin %1</source>
+        <translation>Skin %1</translation>
+    </message>
+    <message>
+        <source>Skin %1: %2</source>
+        <translation>Skin %1: %2</translation>
+    </message>
+    <message>
+        <source>Animation %1</source>
+        <translation>Animation %1</translation>
+    </message>
+    <message>
+        <source>Animation %1: %2</source>
+        <translation>Animation %1: %2</translation>
+    </message>
+    <message>
+        <source>Channel %1</source>
+        <translation>Channel %1</translation>
+    </message>
+    <message>
+        <source>Sampler %1</source>
+        <translation>Sampler %1</translation>
+    </message>
+    <message>
+        <source>skin</source>
+        <translation>skin</translation>
+    </message>
+    <message>
+        <source>animation</source>
+        <translation>animation</translation>
+    </message>
+    <message>
+        <source>channel</source>
+        <translation>channel</translation>
+    </message>
+    <message>
+        <source>sampler</source>
+        <translation>sampler</translation>
+    </message>
+    <message>
+        <source>%1 joints</source>
+        <translation>%1 joints</translation>
+    </message>
+    <message>
+        <source>%1, skeleton %2</source>
+        <translation>%1, skeleton %2</translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation>node %1</translation>
+    </message>
+    <message>
+        <source>%1 s, %2 channels</source>
+        <translation>%1 s, %2 channels</translation>
+    </message>
+    <message>
+        <source>%1, %2 samplers, %3 keys, %4 to %5 s</source>
+        <translation>%1, %2 samplers, %3 keys, %4 to %5 s</translation>
+    </message>
+    <message>
+        <source>%1 %2, sampler %3</source>
+        <translation>%1 %2, sampler %3</translation>
+    </message>
+    <message>
+        <source>%1, %2 keys</source>
+        <translation>%1, %2 keys</translation>
+    </message>
+    <message>
+        <source>%1, %2 to %3 s</source>
+        <translation>%1, %2 to %3 s</translation>
     </message>
 </context>
 <context>
@@ -1129,6 +1228,53 @@ The current scene is kept.</translation>
     <message>
         <source>Container</source>
         <translation>Container</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::TimelineDock</name>
+    <message>
+        <source>Timeline</source>
+        <translation>Timeline</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Speed</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>Loop</translation>
+    </message>
+    <message>
+        <source>Scrub; the ticks are the animation&apos;s key times</source>
+        <translation>Scrub; the ticks are the animation&apos;s key times</translation>
+    </message>
+    <message>
+        <source>No animation</source>
+        <translation>No animation</translation>
+    </message>
+    <message>
+        <source>Animation %1</source>
+        <translation>Animation %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Play</translation>
+    </message>
+    <message>
+        <source>no animation</source>
+        <translation>no animation</translation>
+    </message>
+    <message>
+        <source>%1 / %2 s</source>
+        <translation>%1 / %2 s</translation>
     </message>
 </context>
 <context>

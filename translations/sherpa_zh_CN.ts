@@ -154,6 +154,10 @@
         <source>Bounding boxes</source>
         <translation>包围盒</translation>
     </message>
+    <message>
+        <source>Skeleton</source>
+        <translation>骨架</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AttributeModel</name>
@@ -852,6 +856,25 @@ The current scene is kept.</source>
     </message>
 </context>
 <context>
+    <name>sherpa::editor::MorphWeightsPanel</name>
+    <message>
+        <source>No morph targets in this scene.</source>
+        <translation>此场景没有变形目标。</translation>
+    </message>
+    <message>
+        <source>Override mesh %1</source>
+        <translation>覆盖网格 %1</translation>
+    </message>
+    <message>
+        <source>Override %1</source>
+        <translation>覆盖 %1</translation>
+    </message>
+    <message>
+        <source>target %1</source>
+        <translation>目标 %1</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::SceneTreeDock</name>
     <message>
         <source>Scene Tree</source>
@@ -987,6 +1010,82 @@ The current scene is kept.</source>
     <message>
         <source>%1 vertices, %2 triangles</source>
         <translation>%1 个顶点，%2 个三角形</translation>
+    </message>
+    <message>
+        <source>joint</source>
+        <translation>关节</translation>
+    </message>
+    <message>
+        <source>Skin %1</source>
+        <translation>蒙皮 %1</translation>
+    </message>
+    <message>
+        <source>Skin %1: %2</source>
+        <translation>蒙皮 %1: %2</translation>
+    </message>
+    <message>
+        <source>Animation %1</source>
+        <translation>动画 %1</translation>
+    </message>
+    <message>
+        <source>Animation %1: %2</source>
+        <translation>动画 %1: %2</translation>
+    </message>
+    <message>
+        <source>Channel %1</source>
+        <translation>通道 %1</translation>
+    </message>
+    <message>
+        <source>Sampler %1</source>
+        <translation>采样器 %1</translation>
+    </message>
+    <message>
+        <source>skin</source>
+        <translation>蒙皮</translation>
+    </message>
+    <message>
+        <source>animation</source>
+        <translation>动画</translation>
+    </message>
+    <message>
+        <source>channel</source>
+        <translation>通道</translation>
+    </message>
+    <message>
+        <source>sampler</source>
+        <translation>采样器</translation>
+    </message>
+    <message>
+        <source>%1 joints</source>
+        <translation>%1 个关节</translation>
+    </message>
+    <message>
+        <source>%1, skeleton %2</source>
+        <translation>%1，骨架 %2</translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation>节点 %1</translation>
+    </message>
+    <message>
+        <source>%1 s, %2 channels</source>
+        <translation>%1 秒，%2 个通道</translation>
+    </message>
+    <message>
+        <source>%1, %2 samplers, %3 keys, %4 to %5 s</source>
+        <translation>%1，%2 个采样器，%3 个关键帧，%4 至 %5 秒</translation>
+    </message>
+    <message>
+        <source>%1 %2, sampler %3</source>
+        <translation>%1 %2，采样器 %3</translation>
+    </message>
+    <message>
+        <source>%1, %2 keys</source>
+        <translation>%1，%2 个关键帧</translation>
+    </message>
+    <message>
+        <source>%1, %2 to %3 s</source>
+        <translation>%1，%2 至 %3 秒</translation>
     </message>
 </context>
 <context>
@@ -1129,6 +1228,53 @@ The current scene is kept.</source>
     <message>
         <source>Container</source>
         <translation>容器</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::TimelineDock</name>
+    <message>
+        <source>Timeline</source>
+        <translation>时间轴</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>循环</translation>
+    </message>
+    <message>
+        <source>Scrub; the ticks are the animation&apos;s key times</source>
+        <translation>拖动定位；刻度为动画的关键帧时间</translation>
+    </message>
+    <message>
+        <source>No animation</source>
+        <translation>无动画</translation>
+    </message>
+    <message>
+        <source>Animation %1</source>
+        <translation>动画 %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>播放</translation>
+    </message>
+    <message>
+        <source>no animation</source>
+        <translation>无动画</translation>
+    </message>
+    <message>
+        <source>%1 / %2 s</source>
+        <translation>%1 / %2 秒</translation>
     </message>
 </context>
 <context>

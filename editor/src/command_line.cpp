@@ -15,6 +15,7 @@
 #include "mesh_dock.h"
 #include "scene_tree_dock.h"
 #include "texture_dock.h"
+#include "timeline_dock.h"
 #include "view_catalog.h"
 #include "viewport_window.h"
 
@@ -23,11 +24,12 @@ namespace sherpa::editor {
 namespace {
 const QStringList kDockNames = {QStringLiteral("scene-tree"), QStringLiteral("mesh"),
                                 QStringLiteral("material"),   QStringLiteral("textures"),
-                                QStringLiteral("culling"),    QStringLiteral("log")};
+                                QStringLiteral("culling"),    QStringLiteral("log"),
+                                QStringLiteral("timeline")};
 
 QDockWidget* dock_named(MainWindow& w, const QString& name) {
-    QDockWidget* docks[] = {w.sceneTreeDock(), w.meshDock(),    w.materialDock(),
-                            w.textureDock(),   w.cullingDock(), w.logDock()};
+    QDockWidget* docks[] = {w.sceneTreeDock(), w.meshDock(), w.materialDock(), w.textureDock(),
+                            w.cullingDock(),   w.logDock(),  w.timelineDock()};
     const auto i = kDockNames.indexOf(name);
     return i >= 0 ? docks[i] : nullptr;
 }
@@ -95,12 +97,20 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
     const QCommandLineOption dock(
         QStringLiteral("dock"),
         QStringLiteral("Show and raise this dock: scene-tree, mesh, material, textures, culling, "
-                       "log (may be repeated)."),
+                       "log, timeline (may be repeated)."),
         QStringLiteral("name"));
     const QCommandLineOption gpu_culling(
         QStringLiteral("gpu-culling"),
         QStringLiteral("Cull on the GPU (Culling > Path > GPU) with the CPU/GPU agreement check."));
-    p.addOptions({view, shot, quit, language, select, timing, dock, gpu_culling});
+    const QCommandLineOption overlay(
+        QStringLiteral("overlay"),
+        QStringLiteral("Switch this overlay on (wireframe, normals, aabb, skeleton, ...)."),
+        QStringLiteral("name"));
+    const QCommandLineOption time(
+        QStringLiteral("time"),
+        QStringLiteral("Show the first animation at this time (seconds) once loaded."),
+        QStringLiteral("seconds"));
+    p.addOptions({view, shot, quit, language, select, timing, dock, gpu_culling, overlay, time});
     p.process(arguments);
     const QStringList positional = p.positionalArguments();
     if (positional.size() > 1) {
@@ -116,6 +126,24 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
     out.timing = p.isSet(timing);
     out.docks = p.values(dock);
     out.gpu_culling = p.isSet(gpu_culling);
+    out.overlays = p.values(overlay);
+    if (p.isSet(time)) {
+        bool ok = false;
+        out.time = p.value(time).toDouble(&ok);
+        if (!ok || !(out.time >= 0.0)) {
+            error = QStringLiteral("--time needs seconds >= 0, not '%1'").arg(p.value(time));
+            return false;
+        }
+    }
+    for (const QString& o : out.overlays) {
+        QStringList names;
+        for (const ViewEntry& e : ViewCatalog::overlays()) names << QString::fromLatin1(e.name);
+        if (!names.contains(o)) {
+            error = QStringLiteral("unknown overlay '%1' (one of: %2)")
+                        .arg(o, names.join(QStringLiteral(", ")));
+            return false;
+        }
+    }
     for (const QString& d : out.docks)
         if (!kDockNames.contains(d)) {
             error = QStringLiteral("unknown dock '%1' (one of: %2)")
@@ -147,6 +175,10 @@ void run_command_line(MainWindow& window, const CommandLine& cl, qint64 started_
         std::fprintf(stderr, "sherpa: no translation for '%s'\n", qPrintable(cl.language));
     if (!cl.view.isEmpty()) window.setDebugView(cl.view, false);
     if (cl.gpu_culling) window.setGpuCulling(true);
+    // The Overlays menu's actions carry the overlay's name.
+    for (QAction* act : window.findChildren<QAction*>())
+        if (act->isCheckable() && cl.overlays.contains(act->data().toString()))
+            act->setChecked(true);
     if (!cl.docks.isEmpty()) window.setLayoutRemembered(false);
     // Once the window is shown: before, its dock tab bars do not exist to switch.
     QTimer::singleShot(0, &window, [&window, docks = cl.docks, timing = cl.timing, since_launch] {
@@ -185,6 +217,9 @@ void run_command_line(MainWindow& window, const CommandLine& cl, qint64 started_
             if (!window.selectNodeNamed(cl.select))
                 std::fprintf(stderr, "sherpa: no node '%s'\n", qPrintable(cl.select));
         });
+    if (cl.time >= 0.0)
+        QObject::connect(&window, &MainWindow::sceneLoaded, &window,
+                         [&window, t = cl.time] { window.timelineDock()->scrubTo(t); });
     if (!cl.screenshot.isEmpty()) {
         auto failed = std::make_shared<bool>(false);
         const auto shoot = [&window, cl, failed] {

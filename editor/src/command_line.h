@@ -20,6 +20,8 @@ struct CommandLine {
     bool timing = false; // print launch/load/first-frame milliseconds to stdout
     QStringList docks;   // docks to show and raise (screenshots)
     bool gpu_culling = false;
+    QStringList overlays; // overlays to switch on (names of the engine's table)
+    double time = -1.0;   // timeline time to show once loaded (seconds); < 0: the start
 };
 
 // Returns false with `error` set on bad usage (unknown view, --quit without --screenshot...).

@@ -6,8 +6,10 @@
 #include <QTimer>
 
 #include <functional>
+#include <memory>
 #include <optional>
 
+#include <sherpa/scene/animation.h>
 #include <sherpa/scene/culling_passes.h>
 
 #include "editor_context.h"
@@ -67,6 +69,11 @@ public:
     bool deferred() const { return deferred_->isActive(); }
     // Runs a deferred update now (tests, before reading latest()).
     void flush();
+    // The pose on screen (the timeline's; null: the scene as loaded): instances are
+    // culled with their conservative posed bounds (culling_bounds()), as the renderer does.
+    void setPose(std::shared_ptr<const Pose> pose);
+    // The box instance `i` is culled with now.
+    Aabb box(std::size_t i) const { return input_.boxes.box(i); }
 
     const RingHistory<CullSample>& history() const { return history_; }
     const CullSample* latest() const {
@@ -82,6 +89,7 @@ private:
     void rerun();
 
     static constexpr double kCoalesceAboveMs = 4.0; // passes cheaper than this run at once
+    static constexpr int kPosedGpuCheckMs = 200;  // pose changes with the GPU check on
     const EditorContext& context_;
     CullInput input_; // boxes and draw groups, prepared once per scene
     CullOptions options_;
@@ -89,6 +97,8 @@ private:
     std::optional<CameraSpec> frozen_;
     RingHistory<CullSample> history_{kHistory};
     std::vector<std::uint8_t> visible_;
+    std::shared_ptr<const Pose> pose_;
+    std::vector<std::int32_t> primitive_of_mesh_; // engine mesh -> Scene::primitives
     bool gpu_path_ = false;
     GpuCullCheck gpu_check_;
     double last_ms_ = 0.0; // cost of the last pass

@@ -190,6 +190,8 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame, flo
     settings.highlight_vertex = frame.highlightVertex;
     settings.cull = frame.gpuCulling ? gpu::CullPath::Gpu : gpu::CullPath::Cpu;
     settings.cull_method = frame.cullMethod;
+    settings.pose = frame.pose;
+    settings.selected_joint = frame.selectedJoint;
     if (frame.frozenCulling) settings.freeze_cull = gpu::explicit_camera(*frame.frozenCulling);
     // A reduced frame means a slow device while the camera moves: the shadow cascades
     // follow the camera and cost the same at any resolution (DamagedHelmet on lavapipe:

@@ -11,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include <sherpa/scene/animation.h>
 #include <sherpa/scene/camera_spec.h>
 #include <sherpa/scene/culling.h>
 #include <sherpa/scene/culling_passes.h>
@@ -34,7 +35,9 @@ struct ViewportFrame {
     std::optional<std::uint32_t> highlightInstance, highlightTriangle, highlightVertex;
     bool gpuCulling = false; // the renderer's GPU-driven culling path
     CullMethod cullMethod = CullMethod::PVertex;
-    std::optional<CameraSpec> frozenCulling; // cull from this camera instead
+    std::optional<CameraSpec> frozenCulling;    // cull from this camera instead
+    std::shared_ptr<const Pose> pose;           // the timeline's; null: the scene as loaded
+    std::optional<std::uint32_t> selectedJoint; // a joint node (skeleton, joint influence)
 };
 
 // Prepares a scene's textures as `plan` says (the texture pipeline: cache, BC7/BC5,

@@ -29,6 +29,7 @@
 #include "render_thread.h"
 #include "scene_tree_dock.h"
 #include "texture_dock.h"
+#include "timeline_dock.h"
 #include "view_catalog.h"
 #include "view_fitting.h"
 #include "viewport_window.h"
@@ -124,6 +125,7 @@ void MainWindow::createDocks() {
     // Content hashes: when a column must cut one, keep both ends.
     if (auto* view = textures_->findChild<QAbstractItemView*>())
         view->setTextElideMode(Qt::ElideMiddle);
+    timeline_ = new TimelineDock(context_, this);
     resetLayout();
 }
 
@@ -147,6 +149,12 @@ void MainWindow::resetLayout() {
     scene_tree_->raise();
     mesh_->raise();
     resizeDocks({scene_tree_, mesh_}, {kLeftDockWidth, kRightDockWidth}, Qt::Horizontal);
+    // The timeline under the viewport only (the side columns keep their height), shown
+    // for scenes that move.
+    setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+    addDockWidget(Qt::BottomDockWidgetArea, timeline_);
+    showTimelineForScene();
     // The tab bars exist once the layout has run: dock titles scroll, never elide
     // ("Szenenba…", "Proto…" in German).
     QTimer::singleShot(0, this, [this] {
@@ -157,8 +165,18 @@ void MainWindow::resetLayout() {
     });
 }
 
+void MainWindow::showTimelineForScene() {
+    const Scene* scene = context_.scene();
+    timeline_->setVisible(scene && (!scene->animations.empty() || !scene->motions.empty()));
+}
+
 void MainWindow::connectActions() {
     // Actions out of the docks become context changes here, and only here.
+    connect(timeline_, &TimelineDock::poseChanged, this, [this] {
+        culling_->setPose(timeline_->pose()); // the culling dock follows the motion
+        viewport_->scheduleFrame();
+    });
+    connect(&context_, &EditorContext::sceneReady, this, &MainWindow::showTimelineForScene);
     connect(scene_tree_, &SceneTreeDock::selectNodeRequested, &context_,
             &EditorContext::selectNode);
     connect(scene_tree_, &SceneTreeDock::selectMeshRequested, &context_,

@@ -31,6 +31,7 @@ class MaterialDock;
 class MeshDock;
 class SceneTreeDock;
 class TextureDock;
+class TimelineDock;
 class ViewportWindow;
 
 class MainWindow : public QMainWindow {
@@ -46,6 +47,7 @@ public:
     MaterialDock* materialDock() const { return material_; }
     TextureDock* textureDock() const { return textures_; }
     CullingDock* cullingDock() const { return culling_dock_; }
+    TimelineDock* timelineDock() const { return timeline_; }
     LogDock* logDock() const { return log_; }
     CullingMonitor& cullingMonitor() const { return *culling_; }
     ViewportWindow* viewport() const { return viewport_; }
@@ -114,6 +116,7 @@ private:
     void openFileDialog();
 
     void createDocks();
+    void showTimelineForScene();
     void createRenderer();
     // The render thread has made its device or failed to: open the scene asked for.
     void deviceKnown();
@@ -158,6 +161,7 @@ private:
     MaterialDock* material_ = nullptr;
     TextureDock* textures_ = nullptr;
     CullingDock* culling_dock_ = nullptr;
+    TimelineDock* timeline_ = nullptr; // animation playback: the pose each frame draws
     LogDock* log_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;

@@ -26,6 +26,7 @@
 #include "mesh_dock.h"
 #include "scene_tree_dock.h"
 #include "texture_dock.h"
+#include "timeline_dock.h"
 #include "view_catalog.h"
 #include "viewport_window.h"
 
@@ -222,7 +223,8 @@ void MainWindow::createMenus() {
     for (QDockWidget* d :
          {static_cast<QDockWidget*>(scene_tree_), static_cast<QDockWidget*>(mesh_),
           static_cast<QDockWidget*>(material_), static_cast<QDockWidget*>(textures_),
-          static_cast<QDockWidget*>(culling_dock_), static_cast<QDockWidget*>(log_)})
+          static_cast<QDockWidget*>(culling_dock_), static_cast<QDockWidget*>(log_),
+          static_cast<QDockWidget*>(timeline_)})
         a.docks->addAction(d->toggleViewAction());
     a.view->addAction(a.reset_layout);
 
@@ -331,6 +333,7 @@ void MainWindow::retranslate() {
     textures_->retranslate();
     culling_dock_->retranslate();
     log_->retranslate();
+    timeline_->retranslate();
     // Models read tr() in headerData/data: tell the views to ask again. Source models
     // only, each change announced first: a proxy forwards its source's signals, and a
     // bare layoutChanged() on it left its persistent indices dangling (a crash when a

@@ -13,8 +13,10 @@
 #include "gpu_viewport.h"
 #include "log_dock.h"
 #include "material_dock.h"
+#include "motion_playback.h"
 #include "render_thread.h"
 #include "texture_dock.h"
+#include "timeline_dock.h"
 #include "view_catalog.h"
 #include "viewport_window.h"
 
@@ -143,6 +145,10 @@ ViewportFrame MainWindow::currentFrame() const {
     frame.cullMethod = culling_->method();
     if (culling_->frozen()) frame.frozenCulling = culling_->cullingCamera();
     const Selection& sel = context_.selection();
+    frame.pose = timeline_->pose();
+    if (const Scene* scene = context_.scene();
+        scene && sel.node >= 0 && is_joint(*scene, static_cast<std::uint32_t>(sel.node)))
+        frame.selectedJoint = static_cast<std::uint32_t>(sel.node);
     if (const int instance = selectedInstance(); instance >= 0) {
         frame.highlightInstance = static_cast<std::uint32_t>(instance);
         if (sel.triangle >= 0) frame.highlightTriangle = static_cast<std::uint32_t>(sel.triangle);

@@ -82,7 +82,14 @@ void SceneTreeDock::onCurrentChanged(const QModelIndex& current) {
     case SceneTreeModel::Kind::Material:
         Q_EMIT selectMaterialRequested(index);
         break;
+    case SceneTreeModel::Kind::Joint:   // the joint's node (skeleton highlight, joint influence)
+    case SceneTreeModel::Kind::Channel: // its target node
+        if (node >= 0) Q_EMIT selectNodeRequested(node);
+        break;
     case SceneTreeModel::Kind::SceneRoot:
+    case SceneTreeModel::Kind::Skin:
+    case SceneTreeModel::Kind::Animation:
+    case SceneTreeModel::Kind::Sampler:
         break;
     }
 }

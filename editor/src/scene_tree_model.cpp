@@ -92,6 +92,7 @@ void SceneTreeModel::rebuild() {
         Walker w{*this, *scene, primitive_info, static_cast<int>(si) == scene->displayed_scene};
         for (std::uint32_t r : scene->scenes[si].roots) w.node(static_cast<int>(r), root, 0);
     }
+    addMotion(*scene);
 }
 
 QModelIndex SceneTreeModel::index(int row, int column, const QModelIndex& parent) const {
@@ -146,6 +147,12 @@ QString SceneTreeModel::name(const Item& it) const {
         const QString n = from_std(s.cameras[idx].name);
         return n.isEmpty() ? tr("Camera %1").arg(it.index) : n;
     }
+    case Kind::Skin:
+    case Kind::Joint:
+    case Kind::Animation:
+    case Kind::Channel:
+    case Kind::Sampler:
+        return motionName(it);
     }
     return {};
 }
@@ -193,6 +200,12 @@ QString SceneTreeModel::detail(const Item& it, bool full) const {
     case Kind::Camera:
         return s.cameras[idx].type == CameraType::Perspective ? tr("perspective")
                                                               : tr("orthographic");
+    case Kind::Skin:
+    case Kind::Joint:
+    case Kind::Animation:
+    case Kind::Channel:
+    case Kind::Sampler:
+        return motionDetail(it, full);
     }
     return {};
 }
@@ -210,7 +223,10 @@ QVariant SceneTreeModel::data(const QModelIndex& index, int role) const {
         case Kind::SceneRoot:
             return tr("scene");
         case Kind::Node:
-            return tr("node");
+            return static_cast<std::size_t>(it.index) < joint_.size() &&
+                           joint_[static_cast<std::size_t>(it.index)]
+                       ? tr("joint")
+                       : tr("node");
         case Kind::Primitive:
             return tr("primitive");
         case Kind::Material:
@@ -219,6 +235,12 @@ QVariant SceneTreeModel::data(const QModelIndex& index, int role) const {
             return tr("light");
         case Kind::Camera:
             return tr("camera");
+        case Kind::Skin:
+        case Kind::Joint:
+        case Kind::Animation:
+        case Kind::Channel:
+        case Kind::Sampler:
+            return motionType(it);
         }
         return {};
     case Qt::CheckStateRole:

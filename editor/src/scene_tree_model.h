@@ -1,6 +1,7 @@
 #pragma once
 // The glTF hierarchy as a tree: scenes > nodes > (child nodes, primitives >
-// material, light, camera). Only a small index of items is built per scene (a
+// material, light, camera); after the scenes, skins > joints and animations >
+// channels, samplers (scene_tree_motion.cpp). Only a small index of items is built per scene (a
 // few ints per node); names and values are read from the engine's Scene.
 #include <QAbstractItemModel>
 
@@ -13,7 +14,19 @@ namespace sherpa::editor {
 class SceneTreeModel : public QAbstractItemModel {
     Q_OBJECT
 public:
-    enum class Kind : std::uint8_t { SceneRoot, Node, Primitive, Material, Light, Camera };
+    enum class Kind : std::uint8_t {
+        SceneRoot,
+        Node,
+        Primitive,
+        Material,
+        Light,
+        Camera,
+        Skin,      // index: Scene::skins
+        Joint,     // index and node: the joint's node
+        Animation, // index: Scene::animations
+        Channel,   // index: in its animation (the parent item); node: its target
+        Sampler,   // index: in its animation (the parent item)
+    };
     enum Column { NameColumn, TypeColumn, DetailColumn, ColumnCount };
     enum Role { KindRole = Qt::UserRole + 1, IndexRole, NodeRole };
 
@@ -51,6 +64,12 @@ private:
     QString name(const Item& item) const;
     // `full`: every value (the tooltip); else short enough for a narrow dock.
     QString detail(const Item& item, bool full = false) const;
+    // scene_tree_motion.cpp: skins, joints and animations.
+    void addMotion(const Scene& scene);
+    QString motionName(const Item& item) const;
+    QString motionType(const Item& item) const;
+    QString motionDetail(const Item& item, bool full) const;
+    std::vector<char> joint_; // per node: a joint of some skin
 
     const EditorContext& context_;
     std::vector<Item> items_;

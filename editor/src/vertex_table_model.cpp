@@ -16,6 +16,7 @@ VertexTableModel::VertexTableModel(QObject* parent) : QAbstractTableModel(parent
 void VertexTableModel::setMesh(MeshRef mesh) {
     beginResetModel();
     mesh_ = std::move(mesh);
+    motion_.set(mesh_.scene.get(), mesh_.mesh);
     errors_.reset();
     order_.clear();
     inverse_.clear();
@@ -34,7 +35,7 @@ int VertexTableModel::rowCount(const QModelIndex& parent) const {
 }
 
 int VertexTableModel::columnCount(const QModelIndex& parent) const {
-    return parent.isValid() ? 0 : ColumnCount;
+    return parent.isValid() ? 0 : ColumnCount + motion_.count();
 }
 
 int VertexTableModel::vertexOfRow(int row) const {
@@ -80,7 +81,7 @@ double VertexTableModel::value(std::size_t v, int column) const {
     case TangentErrorColumn:
         return errors_ && v < errors_->degrees.size() ? errors_->degrees[v] : nan;
     default:
-        return nan;
+        return column > TangentErrorColumn ? motion_.key(v, column - ColumnCount) : nan;
     }
 }
 
@@ -93,6 +94,7 @@ QVariant VertexTableModel::data(const QModelIndex& index, int role) const {
     // digits so columns stay narrow; the float's exact text on hover and copy.
     if (role == Qt::DisplayRole || role == Qt::ToolTipRole || role == Format::kExactTextRole) {
         if (index.column() == IndexColumn) return static_cast<qulonglong>(v);
+        if (index.column() >= ColumnCount) return motion_.text(v, index.column() - ColumnCount);
         const double x = value(v, index.column());
         if (std::isnan(x)) return QStringLiteral("—");
         return role == Qt::DisplayRole ? Format::number(x) : Format::exact(x);
@@ -111,6 +113,7 @@ QVariant VertexTableModel::headerData(int section, Qt::Orientation o, int role) 
         "tan.y", "tan.z", "tan.w", "uv1.u", "uv1.v", "col.r", "col.g", "col.b", "col.a", nullptr};
     if (section == TangentErrorColumn) return tr("tangent error (deg)");
     if (section >= 0 && section < ColumnCount) return QString::fromLatin1(kHeaders[section]);
+    if (section >= ColumnCount) return motion_.header(section - ColumnCount);
     return {};
 }
 

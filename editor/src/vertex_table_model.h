@@ -9,6 +9,7 @@
 
 #include "mesh_models_common.h"
 #include "tangent_error.h"
+#include "vertex_motion_columns.h"
 
 namespace sherpa::editor {
 
@@ -36,7 +37,7 @@ public:
         ColB,
         ColA,
         TangentErrorColumn,
-        ColumnCount
+        ColumnCount // then the motion columns of skinned or morphed primitives
     };
     static constexpr int VertexRole = Qt::UserRole + 1; // engine vertex index of a row
 
@@ -45,6 +46,7 @@ public:
     void setMesh(MeshRef mesh);
     void setTangentErrors(std::shared_ptr<const TangentErrors> errors);
     const MeshRef& mesh() const { return mesh_; }
+    const VertexMotionColumns& motionColumns() const { return motion_; }
     // Row showing engine vertex `vertex` under the current sort (-1 if out of range).
     int rowOfVertex(int vertex) const;
     int vertexOfRow(int row) const;
@@ -60,6 +62,7 @@ private:
 
     MeshRef mesh_;
     std::shared_ptr<const TangentErrors> errors_;
+    VertexMotionColumns motion_;         // JOINTS/WEIGHTS, morph deltas, after ColumnCount
     std::vector<std::uint32_t> order_;   // row -> vertex; empty: identity
     std::vector<std::uint32_t> inverse_; // vertex -> row, built with order_
 };

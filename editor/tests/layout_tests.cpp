@@ -24,6 +24,7 @@
 #include "material_fields_model.h"
 #include "mesh_dock.h"
 #include "scene_tree_dock.h"
+#include "test_assets.h"
 #include "texture_dock.h"
 #include "viewport_window.h"
 #include "window_test_support.h"
@@ -140,6 +141,20 @@ void wait_settled(MainWindow& w) {
     when_layout_settles(w, [&settled] { settled = true; });
     QTRY_VERIFY_WITH_TIMEOUT(settled, 20000);
 }
+
+// Each tab of each dock group in front in turn: what is cut off anywhere.
+QStringList cut_in_every_dock(MainWindow& w) {
+    QStringList cut;
+    for (QDockWidget* dock : w.findChildren<QDockWidget*>()) {
+        if (dock->isHidden()) continue; // the timeline of a scene that does not move
+        dock->raise();
+        wait_settled(w);
+        QTest::qWait(200); // the raised tab's own layout (the viewport does not change)
+        cut << cut_texts(w) << cut_chart_labels(w);
+    }
+    cut.removeDuplicates();
+    return cut;
+}
 } // namespace
 
 class LayoutTests : public QObject {
@@ -152,6 +167,7 @@ private Q_SLOTS:
     void viewportKeepsMostOfTheWindow();
     void passTableFilledByTheFirstFrame();
     void nothingIsCutOffInAnyLanguage();
+    void motionSceneIsNotCutOff();
 
 private:
     // A window of 1600×1000 with builtin:default loaded and the sphere selected,
@@ -316,19 +332,28 @@ void LayoutTests::nothingIsCutOffInAnyLanguage() {
                                       bar->tabRect(i).height()), // vertical tabs
                          qPrintable(language + ": tab " + bar->tabText(i)));
         // Each tab of each dock group in front in turn.
-        QStringList cut;
-        for (QDockWidget* dock : w->findChildren<QDockWidget*>()) {
-            dock->raise();
-            wait_settled(*w);
-            QTest::qWait(200); // the raised tab's own layout (the viewport does not change)
-            cut << cut_texts(*w) << cut_chart_labels(*w);
-        }
+        QStringList cut = cut_in_every_dock(*w);
         // The material dock's field names and values show whole without scrolling.
         w->materialDock()->raise();
         wait_settled(*w);
         cut << cut_off_columns(*w->materialDock(), {MaterialFieldsModel::FieldColumn,
                                                     MaterialFieldsModel::ValueColumn});
         cut.removeDuplicates();
+        QVERIFY2(cut.isEmpty(), qPrintable(language + ": " + cut.join(QStringLiteral("\n"))));
+    }
+}
+
+void LayoutTests::motionSceneIsNotCutOff() {
+    // A skinned, animated scene: skins, joints and animations in the scene tree, the
+    // timeline shown under the viewport, the vertex table's JOINTS/WEIGHTS columns.
+    for (const QString& language :
+         {QStringLiteral("en"), QStringLiteral("de"), QStringLiteral("zh_CN")}) {
+        std::unique_ptr<MainWindow> w = launch(language);
+        QVERIFY(w);
+        QVERIFY(test::load(*w, test::asset(QStringLiteral("RiggedSimple"))));
+        QVERIFY(w->selectNodeNamed(QStringLiteral("1")));
+        w->sceneTreeDock()->view()->expandAll();
+        const QStringList cut = cut_in_every_dock(*w);
         QVERIFY2(cut.isEmpty(), qPrintable(language + ": " + cut.join(QStringLiteral("\n"))));
     }
 }

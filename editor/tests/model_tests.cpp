@@ -113,7 +113,9 @@ void ModelTests::everyAssetMatchesTheEngine() {
     SceneTreeModel tree(context);
     context.setSession(out.session);
 
-    QCOMPARE(tree.rowCount(), static_cast<int>(s.scenes.size()));
+    // Scenes, then skins and animations (scene_tree_motion.cpp).
+    QCOMPARE(tree.rowCount(),
+             static_cast<int>(s.scenes.size() + s.skins.size() + s.animations.size()));
     if (!s.scenes.empty())
         for (std::uint32_t r : s.scenes[static_cast<std::size_t>(s.displayed_scene)].roots)
             check_node(s, tree, r);
@@ -202,10 +204,10 @@ void ModelTests::materialFieldsFollowTheGpuLayout() {
 void ModelTests::docksShowCompressionContainerAndSpecGloss() {
     const LoadOutcome draco = SceneLoadJob::loadNow(
         QStringLiteral(SHERPA_GLTF_COMPRESS_CACHE "/corpus/DamagedHelmet.draco.glb"));
-    QVERIFY2(draco.scene, qPrintable(draco.error));
-    const PrimitiveInfo& p = draco.scene->primitives.at(0);
+    QVERIFY2(draco.session, qPrintable(draco.error));
+    const PrimitiveInfo& p = draco.session->scene->primitives.at(0);
     QVERIFY(p.compression);
-    const QString text = MeshDock::compressionText(*draco.scene, int(p.engine_mesh));
+    const QString text = MeshDock::compressionText(*draco.session->scene, int(p.engine_mesh));
     QVERIFY2(text.contains(QStringLiteral("KHR_draco_mesh_compression ") +
                            QString::fromStdString(p.compression->modes)),
              qPrintable(text));
@@ -213,8 +215,8 @@ void ModelTests::docksShowCompressionContainerAndSpecGloss() {
                  text.contains(Format::bytes(p.compression->decoded_bytes)),
              qPrintable(text));
     const LoadOutcome plain = SceneLoadJob::loadNow(test::asset(QStringLiteral("DamagedHelmet")));
-    QVERIFY(plain.scene);
-    QVERIFY(MeshDock::compressionText(*plain.scene, 0).isEmpty());
+    QVERIFY(plain.session);
+    QVERIFY(MeshDock::compressionText(*plain.session->scene, 0).isEmpty());
 
     // BoxTextured with its image replaced by a Zstandard UASTC KTX2 of the basisu corpus,
     // and its material by a spec-gloss one reading that texture.
@@ -248,16 +250,16 @@ void ModelTests::docksShowCompressionContainerAndSpecGloss() {
     out.write(QJsonDocument(doc).toJson());
     out.close();
     const LoadOutcome box = SceneLoadJob::loadNow(path);
-    QVERIFY2(box.scene, qPrintable(box.error));
+    QVERIFY2(box.session, qPrintable(box.error));
     TextureTableModel textures;
-    textures.setScene(box.scene, box.extras);
+    textures.setSession(box.session);
     QCOMPARE(display(textures, 0, TextureTableModel::ContainerColumn),
              QStringLiteral("ktx2-uastc · zstd"));
 
-    const MaterialInstance& m = box.scene->materials.at(0);
+    const MaterialInstance& m = box.session->scene->materials.at(0);
     QVERIFY(m.specular_glossiness);
     MaterialFieldsModel fields;
-    fields.setMaterial(box.scene, box.extras, 0, to_gpu_material(m),
+    fields.setMaterial(box.session, 0, to_gpu_material(m),
                        MaterialFieldsModel::Source::Cpu);
     QCOMPARE(fields.rowCount(), 14 + 3); // the GPUMaterialData fields, then the extension's
     QCOMPARE(display(fields, 0, MaterialFieldsModel::PropertyColumn),

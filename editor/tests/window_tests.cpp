@@ -78,7 +78,9 @@ void WindowTests::opensEveryAsset() {
         QVERIFY2(load(*window_, test::asset(name)), qPrintable(name));
         const Scene* s = window_->context().scene();
         QCOMPARE(window_->context().sceneSpec(), test::asset(name));
-        QCOMPARE(window_->sceneTreeDock()->model()->rowCount(), static_cast<int>(s->scenes.size()));
+        // Scenes, then skins and animations.
+        QCOMPARE(window_->sceneTreeDock()->model()->rowCount(),
+                 static_cast<int>(s->scenes.size() + s->skins.size() + s->animations.size()));
         QCOMPARE(window_->textureDock()->model()->rowCount(), static_cast<int>(s->textures.size()));
         QCOMPARE(window_->cullingMonitor().latest()->cpu.total, s->instances.size());
     }

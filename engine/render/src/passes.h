@@ -123,13 +123,14 @@ private:
 };
 
 // RenderSettings::overlays: wireframe, normal/tangent/bitangent glyphs, instance
-// bounds and the culling boxes.
+// bounds, the culling boxes and the skeleton.
 class OverlayPass {
 public:
     void record(FrameContext& f);
 
 private:
     void draw_cull_boxes(FrameContext& f);
+    void draw_skeleton(FrameContext& f);
 };
 
 // The selection (RenderSettings::highlight_*), over everything else.

@@ -75,7 +75,9 @@ private:
     UniqueDescriptorPool frame_pool_;
     BufferHandle no_materials_; // bound while no scene is loaded
     std::map<VkFormat, std::unique_ptr<Pipelines>> pipelines_;
-    Scene lighting_; // only bounds, lights and cameras: what camera and light resolution needs
+    // Only bounds, lights and cameras (what camera and light resolution needs), and the
+    // skins with the node hierarchy (the skeleton overlay).
+    Scene lighting_;
     std::uint64_t scene_generation_ = 0;
     std::vector<std::unique_ptr<FrameSlot>> slots_;
     std::uint32_t next_slot_ = 0;

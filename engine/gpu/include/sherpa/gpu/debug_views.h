@@ -60,6 +60,9 @@ enum Overlay : std::uint32_t {
     // kept by the conservative test although the exact test rejects it. With a
     // frozen culling camera its frustum is drawn too.
     kOverlayCullBoxes = 1u << 5,
+    // Joints and bones of every skin as lines (world positions from the frame's pose, else
+    // the scene as loaded), the selected joint (RenderSettings::selected_joint) highlighted.
+    kOverlaySkeleton = 1u << 6,
 };
 
 // Bit (1 << VertexAttribute) per vertex stream.
@@ -124,7 +127,7 @@ inline constexpr std::array<DebugViewInfo, 19> kDebugViews{{
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Joint influence")},
 }};
 
-inline constexpr std::array<OverlayEntry, 6> kOverlays{{
+inline constexpr std::array<OverlayEntry, 7> kOverlays{{
     {kOverlayWireframe, "wireframe", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Wireframe")},
     {kOverlayNormals, "normals", kNormalStream,
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Normal glyphs")},
@@ -134,6 +137,7 @@ inline constexpr std::array<OverlayEntry, 6> kOverlays{{
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Bitangent glyphs")},
     {kOverlayBounds, "aabb", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Bounding boxes")},
     {kOverlayCullBoxes, "cull-boxes", 0, nullptr},
+    {kOverlaySkeleton, "skeleton", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Skeleton")},
 }};
 
 // The row of `v`; the table is indexed by id (checked below).

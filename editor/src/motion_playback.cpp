@@ -1,0 +1,67 @@
+#include "motion_playback.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sherpa::editor {
+
+void PlaybackClock::reset(double first, double last) {
+    start = first;
+    end = std::max(first, last);
+    time = start;
+    playing = false;
+}
+
+bool PlaybackClock::advance(double seconds) {
+    if (!playing || !(seconds > 0.0) || !std::isfinite(seconds)) return false;
+    const double before = time;
+    const double range = duration();
+    time += seconds * speed;
+    if (time > end || time < start) {
+        if (loop && range > 0.0) {
+            time = start + std::fmod(time - start, range);
+            if (time < start) time += range; // negative speed
+        } else {
+            time = std::clamp(time, start, end);
+            playing = false;
+        }
+    }
+    return time != before;
+}
+
+double PlaybackClock::fraction() const {
+    return duration() > 0.0 ? (time - start) / duration() : 0.0;
+}
+
+std::vector<double> key_times(const Animation& animation) {
+    std::vector<double> out;
+    for (const AnimationSampler& s : animation.samplers)
+        out.insert(out.end(), s.times.begin(), s.times.end());
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+std::shared_ptr<const Pose> make_pose(const Scene& scene, std::int32_t animation, double time,
+                                      const MorphOverrides& overrides) {
+    if (animation >= static_cast<std::int32_t>(scene.animations.size())) animation = -1;
+    if (animation < 0 && overrides.empty()) return nullptr;
+    auto pose = std::make_shared<Pose>(evaluate_pose(scene, animation, time));
+    for (std::size_t n = 0; n < scene.nodes.size() && n < pose->weights.size(); ++n) {
+        const Node& node = scene.nodes[n];
+        if (node.mesh < 0) continue;
+        const auto it = overrides.find(static_cast<std::uint32_t>(node.mesh));
+        if (it == overrides.end()) continue;
+        std::vector<float>& w = pose->weights[n];
+        for (std::size_t k = 0; k < w.size() && k < it->second.size(); ++k) w[k] = it->second[k];
+    }
+    return pose;
+}
+
+bool is_joint(const Scene& scene, std::uint32_t node) {
+    return std::any_of(scene.skins.begin(), scene.skins.end(), [&](const Skin& s) {
+        return std::find(s.joints.begin(), s.joints.end(), node) != s.joints.end();
+    });
+}
+
+} // namespace sherpa::editor

@@ -56,6 +56,7 @@ nlohmann::json comparison_json(const lab::FileComparison& c) {
             {"textures", textures},
             {"bytes",
              {{"file", {c.file_bytes_a, c.file_bytes_b}},
+              {"total", {c.total_bytes_a, c.total_bytes_b}},
               {"images", {c.image_bytes_a, c.image_bytes_b}}}},
             {"notes", c.notes}};
 }
@@ -64,8 +65,9 @@ void print_text(const lab::FileComparison& c) {
     for (const lab::CountDiff& d : c.counts)
         std::printf("%-11s %10llu %10llu%s\n", d.name.c_str(), (unsigned long long)d.a,
                     (unsigned long long)d.b, d.a != d.b ? "  differs" : "");
-    std::printf("bytes: file %llu -> %llu, images %llu -> %llu\n",
+    std::printf("bytes: file %llu -> %llu, with external files %llu -> %llu, images %llu -> %llu\n",
                 (unsigned long long)c.file_bytes_a, (unsigned long long)c.file_bytes_b,
+                (unsigned long long)c.total_bytes_a, (unsigned long long)c.total_bytes_b,
                 (unsigned long long)c.image_bytes_a, (unsigned long long)c.image_bytes_b);
     for (const lab::PrimitiveDiff& p : c.primitives) {
         std::printf("mesh %u prim %u: vertices %llu/%llu indices %llu/%llu", p.mesh, p.primitive,
@@ -141,9 +143,10 @@ int run_compare(Args args) {
             {"threshold", d.threshold},
             {"over_threshold_percent", d.over_threshold_percent}};
         if (!json)
-            std::printf("image %s: mean %.3g max %.0g PSNR %.2f dB, %.2f%% pixels over %u\n",
-                        image.c_str(), d.mean, d.max, d.psnr, d.over_threshold_percent,
-                        d.threshold);
+            std::printf(
+                "image %s: mean %.3g max %.0f (white: %.0f) PSNR %.2f dB, %.2f%% pixels over %u\n",
+                image.c_str(), d.mean, d.max, d.scale, d.psnr, d.over_threshold_percent,
+                d.threshold);
     }
     if (json)
         std::cout << out.dump(2) << "\n";

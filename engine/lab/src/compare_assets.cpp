@@ -7,7 +7,9 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <functional>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
 
 #include "compare_detail.h"
 
@@ -94,10 +96,28 @@ TextureDiff compare_image(const Scene& a, const Scene& b, std::int32_t i) {
     return d;
 }
 
-std::uint64_t file_bytes(const std::string& source) {
+std::uint64_t file_bytes(const std::filesystem::path& path) {
     std::error_code ec;
-    const auto size = std::filesystem::file_size(source, ec);
+    const auto size = std::filesystem::file_size(path, ec);
     return ec ? 0 : std::uint64_t(size);
+}
+
+// The file plus the external buffers and images a .gltf names (percent escapes are
+// rare in sample files and left as written: such a file counts 0).
+std::uint64_t total_bytes(const Scene& scene) {
+    const std::filesystem::path path(scene.source);
+    std::uint64_t total = file_bytes(path);
+    std::ifstream in(path);
+    const nlohmann::json doc =
+        path.extension() == ".gltf" ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+    if (!doc.is_object()) return total;
+    for (const char* array : {"buffers", "images"})
+        for (const nlohmann::json& item : doc.value(array, nlohmann::json::array()))
+            if (item.is_object() && item.contains("uri") && item["uri"].is_string()) {
+                const std::string uri = item["uri"];
+                if (uri.rfind("data:", 0) != 0) total += file_bytes(path.parent_path() / uri);
+            }
+    return total;
 }
 
 } // namespace
@@ -126,6 +146,7 @@ FileComparison compare_files(const Scene& a, const Scene& b) {
         out.notes.push_back("image counts differ: the first " + std::to_string(images) +
                             " compared");
     out.file_bytes_a = file_bytes(a.source), out.file_bytes_b = file_bytes(b.source);
+    out.total_bytes_a = total_bytes(a), out.total_bytes_b = total_bytes(b);
     for (const ImageRecord& i : a.images) out.image_bytes_a += i.byte_size;
     for (const ImageRecord& i : b.images) out.image_bytes_b += i.byte_size;
     return out;

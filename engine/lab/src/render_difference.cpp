@@ -78,13 +78,24 @@ DifferenceImage render_difference(const Scene& a, const Scene& b,
     tex::RgbaImage& heat = out.heat;
     heat.width = options.width, heat.height = options.height + kLegendRows;
     heat.pixels.assign(std::size_t(heat.width) * heat.height * 4, 255);
-    const double scale = out.max > 0.0 ? out.max : 1.0;
+    // One stray pixel would make everything else black at a scale of the largest d:
+    // the scale is the 99.9th percentile of the pixels that differ at all.
+    std::vector<std::uint8_t> nonzero;
+    for (std::uint8_t v : d)
+        if (v) nonzero.push_back(v);
+    if (!nonzero.empty()) {
+        const std::size_t rank =
+            std::min(nonzero.size() - 1, std::size_t(0.999 * double(nonzero.size())));
+        std::nth_element(nonzero.begin(), nonzero.begin() + std::ptrdiff_t(rank), nonzero.end());
+        out.scale = nonzero[rank];
+    }
+    const double scale = std::max(1.0, out.scale);
     auto put = [&](std::size_t at, double t) {
         const auto c = heat_colour(t);
         std::copy(c.begin(), c.end(), heat.pixels.begin() + std::ptrdiff_t(4 * at));
     };
     for (std::size_t p = 0; p < pixels; ++p) put(p, d[p] / scale);
-    // Legend: 0 at the left to the largest difference at the right.
+    // Legend: 0 at the left to `scale` (and above) at the right.
     for (std::uint32_t y = 0; y < kLegendRows; ++y)
         for (std::uint32_t x = 0; x < heat.width; ++x)
             put(pixels + std::size_t(y) * heat.width + x, double(x) / std::max(1u, heat.width - 1));

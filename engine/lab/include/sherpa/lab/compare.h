@@ -54,7 +54,9 @@ struct FileComparison {
     std::vector<PrimitiveDiff> primitives;
     std::vector<MaterialDiff> materials; // only materials with differing fields
     std::vector<TextureDiff> textures;
-    std::uint64_t file_bytes_a = 0, file_bytes_b = 0;   // the .gltf/.glb file itself
+    std::uint64_t file_bytes_a = 0, file_bytes_b = 0; // the .gltf/.glb file itself
+    // The file and every external file it names (buffers, images): what ships.
+    std::uint64_t total_bytes_a = 0, total_bytes_b = 0;
     std::uint64_t image_bytes_a = 0, image_bytes_b = 0; // encoded images, all
     std::vector<std::string> notes;
 };
@@ -64,10 +66,12 @@ FileComparison compare_files(const Scene& a, const Scene& b);
 
 // Both scenes rendered (lit, no shadows) from `camera` and differenced per pixel:
 // the largest RGB channel difference d (0..255) as a heat map (black, blue, red,
-// yellow, white from 0 to the largest d) with a legend strip along the bottom.
+// yellow, white from 0 to `scale`, the 99.9th percentile of the differing pixels' d)
+// with a legend strip along the bottom.
 struct DifferenceImage {
     tex::RgbaImage heat;
     double mean = 0.0, max = 0.0; // of d
+    double scale = 0.0;           // d shown white
     double psnr = 0.0;            // RGB, dB
     double over_threshold_percent = 0.0;
     std::uint32_t threshold = 8;

@@ -19,5 +19,6 @@ int run_textures(Args args);
 int run_render(Args args);
 int run_lab(Args args);
 int run_compare(Args args);
+int run_budget(Args args);
 
 } // namespace sherpa::cli

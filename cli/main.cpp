@@ -36,6 +36,8 @@ constexpr Subcommand kSubcommands[] = {
      "      [--repeat N] [--sample-texels N] [--cameras N] [--no-gpu]   methods: time vs error"},
     {"compare", sherpa::cli::run_compare,
      "compare A B [--json] [--image OUT.png]   structural diff of two glTF files"},
+    {"budget", sherpa::cli::run_budget,
+     "budget SCENE [--json] [--viewport-height N]   GPU bytes against what the scene needs"},
 };
 
 int usage(std::FILE* out) {

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <unistd.h>
 
@@ -99,6 +100,25 @@ TEST(CliCompare, AFileAgainstItselfIsAllZeros) {
     ASSERT_FALSE(j["textures"].empty());
     for (const auto& t : j["textures"]) EXPECT_TRUE(t["identical"].get<bool>()) << t.dump();
     EXPECT_EQ(j["bytes"]["file"][0], j["bytes"]["file"][1]);
+}
+
+} // namespace
+
+namespace {
+
+TEST(CliBudget, RiggedSimpleJointsAreReadByMotionOnly) {
+    const auto r = sherpa::test::run_cli(
+        "budget '" + sherpa::test::gltf_asset("RiggedSimple") + "' --json", "2>/dev/null");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    const auto j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(j["categories"].size(), 5u);
+    EXPECT_LE(j["categories"][0]["stored"].get<double>(),
+              j["categories"][0]["unified"].get<double>());
+    std::set<std::string> unread;
+    for (const auto& u : j["unread_attributes"]) unread.insert(u["attribute"].get<std::string>());
+    EXPECT_TRUE(unread.count("JOINTS_0") && unread.count("WEIGHTS_0"))
+        << j["unread_attributes"].dump();
+    EXPECT_EQ(sherpa::test::run_cli("budget").exit_code, 2);
 }
 
 } // namespace

@@ -89,6 +89,11 @@ TEST(LabFamilies, CancelStopsWithNoMethodsAndProgressReachesTheEnd) {
     lab::make_tangent_family()->run(scene, watched);
     EXPECT_EQ(last_done, last_total);
     EXPECT_EQ(last_total, 6u); // 2 meshes x 3 methods
+    for (std::string_view name : lab::family_names()) {
+        last_done = 0;
+        lab::make_family(name)->run(test::scene_of({}), watched);
+        EXPECT_EQ(last_done, last_total) << name << " on an empty scene";
+    }
     EXPECT_EQ(lab::make_family("no-such-family"), nullptr);
 }
 

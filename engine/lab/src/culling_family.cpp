@@ -119,6 +119,7 @@ FamilyReport CullFamily::run(const Scene& scene, const RunControl& control) cons
     }
     report.methods.push_back(run_gpu(scene, frusta, exact, progress));
     if (progress.stop()) return detail::cancelled_report(report.family);
+    progress.finish();
     return report;
 }
 

@@ -37,6 +37,11 @@ public:
         report();
     }
     bool stop() const { return is_cancelled(control_.cancel); }
+    // Units skipped (a method that could not run) count as done.
+    void finish() {
+        done_ = total_;
+        report();
+    }
 
 private:
     void report() const {

@@ -174,6 +174,7 @@ FamilyReport TextureFamily::run(const Scene& scene, const RunControl& control) c
             r.errors.push_back({"angle_mean_deg", angle_sum / double(count)});
         report.methods.push_back(std::move(r));
     }
+    progress.finish();
     return report;
 }
 

@@ -96,14 +96,14 @@ void print_text(const lab::FamilyReport& r) {
             m.method.name + (m.method.parameters.empty() ? "" : " " + m.method.parameters);
         if (!m.ran) {
             std::printf("%-22s not run: %s\n", name.c_str(), m.note.c_str());
-            continue;
+        } else {
+            const bool pareto = std::find(front.begin(), front.end(), i) != front.end();
+            std::printf("%-22s %11.4g %s%s", name.c_str(), m.time, r.time_unit.c_str(),
+                        pareto ? " *" : "  ");
+            for (const lab::ErrorFigure& e : m.errors)
+                std::printf("  %s %.4g", e.name.c_str(), e.value);
+            std::printf("\n");
         }
-        const bool pareto = std::find(front.begin(), front.end(), i) != front.end();
-        std::printf("%-22s %11.4g %s%s", name.c_str(), m.time, r.time_unit.c_str(),
-                    pareto ? " *" : "  ");
-        for (const lab::ErrorFigure& e : m.errors)
-            std::printf("  %s %.4g", e.name.c_str(), e.value);
-        std::printf("\n");
         for (const lab::Failure& f : m.failures)
             std::printf("    failure: %s at %s (%llu)\n", f.cause.c_str(), f.where.c_str(),
                         (unsigned long long)f.count);

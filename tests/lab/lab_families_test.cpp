@@ -197,7 +197,8 @@ TEST(LabTextures, PsnrIsTheCodecsOwnAndMissingImagesAreFailures) {
     const ImageRecord& color = scene.images[0];
     for (const lab::MethodResult& m : r.methods) {
         ASSERT_TRUE(m.ran) << m.method.name << " " << m.note;
-        EXPECT_EQ(failures(m, "missing"), 1u) << m.method.name;
+        // The missing image is an occlusion map: BC7's failure, not BC5's.
+        EXPECT_EQ(failures(m, "missing"), m.method.name == "bc7" ? 1u : 0u) << m.method.name;
         EXPECT_GT(m.time, 0.0);
         if (m.method.name != "bc7") {
             EXPECT_GT(figure(m, "angle_mean_deg"), 0.0);

@@ -101,7 +101,7 @@ FamilyReport TextureFamily::run(const Scene& scene, const RunControl& control) c
     detail::Progress progress(control, units);
     if (progress.stop()) return detail::cancelled_report(report.family);
     std::vector<Input> inputs;
-    std::vector<Failure> failures;
+    std::vector<std::pair<TextureRole, Failure>> failures; // by the role the image has
     bool sampled = false;
     for (const tex::TextureUse& use : uses) {
         if (progress.stop()) return detail::cancelled_report(report.family);
@@ -113,9 +113,9 @@ FamilyReport TextureFamily::run(const Scene& scene, const RunControl& control) c
         std::string error;
         tex::RgbaImage decoded;
         if (image_is_missing(img))
-            failures.push_back({"missing", in.where, 1});
+            failures.push_back({use.role, {"missing", in.where, 1}});
         else if (!tex::decode_image_source(img, decoded, error) || decoded.empty())
-            failures.push_back({"undecodable: " + error, in.where, 1});
+            failures.push_back({use.role, {"undecodable: " + error, in.where, 1}});
         else {
             in.source_texels = std::uint64_t(decoded.width) * decoded.height;
             in.image = sample_mosaic(std::move(decoded), options_.sample_texels);
@@ -157,11 +157,13 @@ FamilyReport TextureFamily::run(const Scene& scene, const RunControl& control) c
             ++count;
             progress.step();
         }
-        r.failures = failures;
+        for (const auto& [role, failure] : failures)
+            if (applies(method, role)) r.failures.push_back(failure);
         if (count == 0) {
-            r.note = method.format == tex::BlockFormat::Bc5
-                         ? "no normal map in the scene"
-                         : "no colour or data texture in the scene";
+            r.note =
+                std::string(r.failures.empty() ? "no " : "no decodable ") +
+                (method.format == tex::BlockFormat::Bc5 ? "normal map in the scene"
+                                                        : "colour or data texture in the scene");
             report.methods.push_back(std::move(r));
             continue;
         }

@@ -69,9 +69,13 @@ struct Axis {
             lo = std::pow(10.0, std::floor(std::log10(pmin)) - (vmin <= 0.0 ? 1.0 : 0.0));
             hi = std::pow(10.0, std::ceil(std::log10(pmax)));
         } else {
-            lo = std::min(0.0, vmin), hi = vmax;
+            // From 0 when the values come near it (counts, angles); around the values
+            // otherwise (PSNR between 44 and 54 dB).
+            lo = vmin >= 0.0 && vmin <= 0.25 * vmax ? 0.0 : vmin, hi = vmax;
             if (hi - lo <= 0.0) hi = lo + (std::abs(lo) > 0 ? std::abs(lo) : 1.0);
-            hi += 0.05 * (hi - lo);
+            const double pad = 0.05 * (hi - lo);
+            hi += pad;
+            if (lo != 0.0) lo -= pad;
         }
     }
     double operator()(double v) const {

@@ -24,6 +24,7 @@ namespace sherpa::editor {
 
 class CullingDock;
 class CullingMonitor;
+class LabDock;
 class RenderThread;
 struct FrameReport;
 class LogDock;
@@ -47,6 +48,7 @@ public:
     TextureDock* textureDock() const { return textures_; }
     CullingDock* cullingDock() const { return culling_dock_; }
     LogDock* logDock() const { return log_; }
+    LabDock* labDock() const { return lab_; }
     CullingMonitor& cullingMonitor() const { return *culling_; }
     ViewportWindow* viewport() const { return viewport_; }
     SceneLoadJob& loader() { return loader_; }
@@ -126,6 +128,7 @@ private:
     // the next frame.
     void updateStreams();
     void connectActions();
+    void connectLab(); // main_window_lab.cpp
     void onLoaded(const QString& spec, const LoadOutcome& outcome, double ms);
     void onLoadFailed(const QString& spec, const QString& error);
     void onProgress(LoadStep step, int done, int total);
@@ -156,6 +159,7 @@ private:
     TextureDock* textures_ = nullptr;
     CullingDock* culling_dock_ = nullptr;
     LogDock* log_ = nullptr;
+    LabDock* lab_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;
     QLabel* frame_label_ = nullptr;

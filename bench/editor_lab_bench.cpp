@@ -1,0 +1,139 @@
+// sherpa-bench-lab: UI event latency while the Lab dock runs a family on
+// DamagedHelmet (goal: p99 <= 50 ms on lavapipe), run under
+// `xvfb-run -a -s "-screen 0 1920x1200x24"`. A second thread posts an event to the
+// GUI thread every 10 ms; the delay until each runs is recorded (p50, p99, max):
+//   idle (the scene shown, nothing running: the floor of this machine),
+//   each family running in the dock (its worker thread),
+//   the tangents family run on the GUI thread (what a dock without a worker would
+//   do: the reference the ratio is printed against).
+// Prints numbers; never part of the test suite.
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QVulkanInstance>
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include <sherpa/lab/family.h>
+#include <sherpa/scene/scene_loader.h>
+
+#include "gpu_viewport.h"
+#include "lab_dock.h"
+#include "lab_runner.h"
+#include "main_window.h"
+
+using namespace sherpa;
+using namespace sherpa::editor;
+
+namespace {
+
+bool load(MainWindow& w, const QString& spec) {
+    QSignalSpy loaded(&w, &MainWindow::sceneLoaded);
+    w.openScene(spec);
+    return loaded.wait(120000);
+}
+
+double percentile(std::vector<double> v, double p) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    return v[std::min(v.size() - 1, static_cast<std::size_t>(p * double(v.size())))];
+}
+
+// Delays of events posted to the GUI thread every 10 ms while `work` runs.
+std::vector<double> latencies_during(const std::function<void()>& work) {
+    std::vector<double> delays;
+    std::mutex m;
+    std::atomic<bool> stop{false};
+    std::thread poster([&] {
+        while (!stop) {
+            const auto posted = std::chrono::steady_clock::now();
+            QMetaObject::invokeMethod(qApp, [&, posted] {
+                const double ms = std::chrono::duration<double, std::milli>(
+                                      std::chrono::steady_clock::now() - posted)
+                                      .count();
+                std::lock_guard lock(m);
+                delays.push_back(ms);
+            });
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+    });
+    work();
+    stop = true;
+    poster.join();
+    QCoreApplication::processEvents();
+    std::lock_guard lock(m);
+    return delays;
+}
+
+void print_latency(const char* what, double seconds, const std::vector<double>& d) {
+    std::printf("  %-30s %6.1f s %5zu events: p50 %6.1f ms, p99 %7.1f ms, max %7.1f ms\n", what,
+                seconds, d.size(), percentile(d, 0.5), percentile(d, 0.99), percentile(d, 1.0));
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    QApplication app(argc, argv);
+    QStandardPaths::setTestModeEnabled(true);
+    QVulkanInstance vulkan;
+    GpuViewport::configureInstance(vulkan);
+    vulkan.create();
+    MainWindow w(vulkan.isValid() ? &vulkan : nullptr);
+    w.setLanguage(QStringLiteral("en"), false);
+    w.setLayoutRemembered(false);
+    w.resize(1600, 1000);
+    w.show();
+    const QString helmet =
+        QStringLiteral(SHERPA_ASSETS_DIR "/gltf/DamagedHelmet/glTF/DamagedHelmet.gltf");
+    if (!load(w, helmet)) {
+        std::fprintf(stderr, "could not load %s\n", qPrintable(helmet));
+        return 1;
+    }
+    LabDock& dock = *w.labDock();
+    dock.show();
+    dock.raise();
+    std::printf("DamagedHelmet, window 1600x1000, Lab dock shown; events posted every 10 ms\n");
+    QElapsedTimer t;
+    t.start();
+    const std::vector<double> idle = latencies_during([] {
+        QElapsedTimer idle_t;
+        idle_t.start();
+        while (idle_t.elapsed() < 3000) QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+    });
+    print_latency("idle", double(t.elapsed()) / 1e3, idle);
+    const QStringList families =
+        argc > 1 ? QStringList{QString::fromLocal8Bit(argv[1])}
+                 : QStringList{QStringLiteral("tangents"), QStringLiteral("textures"),
+                               QStringLiteral("culling")};
+    double worst_p99 = 0.0;
+    for (const QString& family : families) {
+        bool done = false;
+        auto c = QObject::connect(&dock.runner(), &LabRunner::finished, &w, [&] { done = true; });
+        t.restart();
+        const std::vector<double> d = latencies_during([&] {
+            dock.run(family);
+            while (!done) QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
+        });
+        QObject::disconnect(c);
+        const QByteArray what = ("lab " + family + " (worker)").toUtf8();
+        print_latency(what.constData(), double(t.elapsed()) / 1e3, d);
+        worst_p99 = std::max(worst_p99, percentile(d, 0.99));
+    }
+    // The reference: the same work on the GUI thread.
+    t.restart();
+    const std::vector<double> blocking = latencies_during([&] {
+        LoadResult scene = load_scene(helmet.toStdString(), lab::lab_load_options());
+        lab::make_family("tangents")->run(*scene.scene, {});
+    });
+    print_latency("tangents on the GUI thread", double(t.elapsed()) / 1e3, blocking);
+    std::printf("  worst p99 with the worker %.1f ms (goal <= 50 ms); GUI-thread p99 / worker "
+                "p99: %.1fx\n",
+                worst_p99, percentile(blocking, 0.99) / std::max(0.001, worst_p99));
+    return 0;
+}

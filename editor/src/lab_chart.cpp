@@ -1,6 +1,7 @@
 #include "lab_chart.h"
 
 #include <QChart>
+#include <QCoreApplication>
 #include <QLineSeries>
 #include <QLogValueAxis>
 #include <QScatterSeries>
@@ -77,8 +78,8 @@ std::vector<QScatterSeries*> show_lab_report(QChart& chart, const lab::FamilyRep
     }
     x.decide();
     y.decide();
-    QAbstractAxis* x_axis =
-        make_axis(x, QChart::tr("time (%1)").arg(QString::fromStdString(report.time_unit)));
+    QAbstractAxis* x_axis = make_axis(x, QCoreApplication::translate("LabChart", "time (%1)")
+                                             .arg(QString::fromStdString(report.time_unit)));
     QAbstractAxis* y_axis = make_axis(y, QString::fromStdString(report.chart_error));
     chart.addAxis(x_axis, Qt::AlignBottom);
     chart.addAxis(y_axis, Qt::AlignLeft);
@@ -88,7 +89,7 @@ std::vector<QScatterSeries*> show_lab_report(QChart& chart, const lab::FamilyRep
     };
 
     auto* front = new QLineSeries;
-    front->setName(QChart::tr("Pareto front"));
+    front->setName(QCoreApplication::translate("LabChart", "Pareto front"));
     for (std::size_t i : lab::pareto_front(report)) front->append(point(i));
     chart.addSeries(front);
     front->attachAxis(x_axis);
@@ -103,7 +104,7 @@ std::vector<QScatterSeries*> show_lab_report(QChart& chart, const lab::FamilyRep
             name += QLatin1Char(' ') + QString::fromStdString(m.method.parameters);
         const bool in_use = !method_in_use.isEmpty() && method_in_use == m.method.name.c_str();
         if (in_use) {
-            name = QChart::tr("%1 (in use)").arg(name);
+            name = QCoreApplication::translate("LabChart", "%1 (in use)").arg(name);
             s->setMarkerSize(18.0);
             s->setBorderColor(Qt::black);
             s->setPen(QPen(Qt::black, 3.0));

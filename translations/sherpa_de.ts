@@ -461,6 +461,10 @@
         <source>Export the Lab report</source>
         <translation>Laborbericht exportieren</translation>
     </message>
+    <message>
+        <source>The line joins the Pareto front; the method in use is ringed.</source>
+        <translation>Die Linie verbindet die Pareto-Front; die verwendete Methode ist umringt.</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::LabTableModel</name>

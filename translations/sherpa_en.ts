@@ -461,6 +461,10 @@
         <source>Export the Lab report</source>
         <translation>Export the Lab report</translation>
     </message>
+    <message>
+        <source>The line joins the Pareto front; the method in use is ringed.</source>
+        <translation>The line joins the Pareto front; the method in use is ringed.</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::LabTableModel</name>

@@ -461,6 +461,10 @@
         <source>Export the Lab report</source>
         <translation>导出实验室报告</translation>
     </message>
+    <message>
+        <source>The line joins the Pareto front; the method in use is ringed.</source>
+        <translation>折线连接帕累托前沿；正在使用的方法带圆圈标记。</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::LabTableModel</name>

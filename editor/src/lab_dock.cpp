@@ -94,7 +94,7 @@ QWidget* LabDock::buildMethodsTab() {
     chart_->setMargins(QMargins(2, 2, 2, 2));
     chart_view_ = new QChartView(chart_, page);
     chart_view_->setRenderHint(QPainter::Antialiasing);
-    chart_view_->setMinimumHeight(220);
+    chart_view_->setMinimumHeight(300);
     tables_ = new QTabWidget(page);
     methods_view_ = make_table(methods_, tables_);
     tables_->addTab(methods_view_, QString());
@@ -102,6 +102,8 @@ QWidget* LabDock::buildMethodsTab() {
     auto* split = new QSplitter(Qt::Vertical, page);
     split->addWidget(chart_view_);
     split->addWidget(tables_);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 2);
     export_csv_ = new QPushButton(page);
     export_svg_ = new QPushButton(page);
     export_png_ = new QPushButton(page);
@@ -212,11 +214,8 @@ void LabDock::onSceneChanged() {
     failures_->clear();
     categories_->clear();
     findings_->clear();
-    chart_->removeAllSeries();
-    for (QAbstractAxis* axis : chart_->axes()) {
-        chart_->removeAxis(axis);
-        delete axis;
-    }
+    clear_lab_chart(*chart_, labels_);
+    chart_->setTitle(QString());
     const bool scene = context_.scene() != nullptr;
     status_->setText(scene ? tr("Pick a family and run it on %1.").arg(context_.sceneSpec())
                            : tr("Open a scene to measure its methods."));
@@ -257,6 +256,7 @@ void LabDock::showReport(std::shared_ptr<const lab::FamilyReport> report) {
                                QString::fromStdString(report_->reference),
                                QString::fromStdString(report_->time_unit))};
     for (const std::string& n : report_->notes) lines << QString::fromStdString(n);
+    lines << tr("The line joins the Pareto front; the method in use is ringed.");
     status_->setText(lines.join(QLatin1Char('\n')));
     refreshMethodInUse();
 }
@@ -275,7 +275,7 @@ void LabDock::refreshMethodInUse() {
     if (!report_) return;
     const QString family = QString::fromStdString(report_->family);
     const QString in_use = in_use_ ? in_use_(family) : QString();
-    for (QScatterSeries* s : show_lab_report(*chart_, *report_, in_use))
+    for (QScatterSeries* s : show_lab_report(*chart_, *report_, in_use, labels_))
         connect(s, &QScatterSeries::clicked, this,
                 [this, s] { apply(std::size_t(s->property("method").toULongLong())); });
 }

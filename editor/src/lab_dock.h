@@ -13,6 +13,8 @@
 #include <sherpa/lab/budget.h>
 #include <sherpa/lab/family.h>
 
+#include "lab_chart.h"
+
 class QChart;
 class QChartView;
 class QComboBox;
@@ -88,6 +90,7 @@ private:
     QLabel* status_ = nullptr;
     QLabel* budget_status_ = nullptr;
     QChart* chart_ = nullptr;
+    LabChartLabels labels_;
     QChartView* chart_view_ = nullptr;
     QTabWidget* tables_ = nullptr;
     LabTableModel* methods_ = nullptr;

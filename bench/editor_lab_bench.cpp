@@ -28,9 +28,12 @@
 #include "lab_dock.h"
 #include "lab_runner.h"
 #include "main_window.h"
+#include "ui_latency.h"
 
 using namespace sherpa;
 using namespace sherpa::editor;
+using sherpa::bench::latencies_during;
+using sherpa::bench::percentile;
 
 namespace {
 
@@ -38,38 +41,6 @@ bool load(MainWindow& w, const QString& spec) {
     QSignalSpy loaded(&w, &MainWindow::sceneLoaded);
     w.openScene(spec);
     return loaded.wait(120000);
-}
-
-double percentile(std::vector<double> v, double p) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[std::min(v.size() - 1, static_cast<std::size_t>(p * double(v.size())))];
-}
-
-// Delays of events posted to the GUI thread every 10 ms while `work` runs.
-std::vector<double> latencies_during(const std::function<void()>& work) {
-    std::vector<double> delays;
-    std::mutex m;
-    std::atomic<bool> stop{false};
-    std::thread poster([&] {
-        while (!stop) {
-            const auto posted = std::chrono::steady_clock::now();
-            QMetaObject::invokeMethod(qApp, [&, posted] {
-                const double ms = std::chrono::duration<double, std::milli>(
-                                      std::chrono::steady_clock::now() - posted)
-                                      .count();
-                std::lock_guard lock(m);
-                delays.push_back(ms);
-            });
-            std::this_thread::sleep_for(std::chrono::milliseconds(10));
-        }
-    });
-    work();
-    stop = true;
-    poster.join();
-    QCoreApplication::processEvents();
-    std::lock_guard lock(m);
-    return delays;
 }
 
 void print_latency(const char* what, double seconds, const std::vector<double>& d) {

@@ -69,6 +69,7 @@ private Q_SLOTS:
     void budgetAgreesWithTheCli();
     void runningKeepsTheUiResponsive();
     void cancelAndNewSceneStopARun();
+    void closingCancelsARun();
     void exportsAreTheEngineWriters();
     void clickingAPointAppliesACullingMethod();
 
@@ -218,6 +219,20 @@ void LabTests::cancelAndNewSceneStopARun() {
     QTest::qWait(50);
     QCOMPARE(finished.count(), 0);
     QVERIFY(!dock().report());
+}
+
+void LabTests::closingCancelsARun() {
+    int cancelled = 0, finished = 0;
+    {
+        LabRunner runner; // the dock's, destroyed with the window
+        connect(&runner, &LabRunner::cancelled, this, [&] { ++cancelled; });
+        connect(&runner, &LabRunner::finished, this, [&] { ++finished; });
+        runner.start(QStringLiteral("textures"), test::asset(QStringLiteral("DamagedHelmet")));
+        QTest::qWait(200); // the worker is loading or measuring
+        QVERIFY(runner.running());
+    } // the destructor cancels the run and waits for its worker
+    QCOMPARE(cancelled, 1);
+    QCOMPARE(finished, 0);
 }
 
 void LabTests::exportsAreTheEngineWriters() {

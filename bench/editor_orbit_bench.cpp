@@ -28,10 +28,13 @@
 #include "main_window.h"
 #include "render_thread.h"
 #include "resolution_scale.h"
+#include "ui_latency.h"
 #include "viewport_window.h"
 
 using namespace sherpa;
 using namespace sherpa::editor;
+using sherpa::bench::latencies_during;
+using sherpa::bench::percentile;
 
 namespace {
 
@@ -117,38 +120,6 @@ OrbitResult orbit(MainWindow& w, double seconds, float dx, bool blocking, int mi
     QObject::disconnect(c);
     r.mean_scale = r.frames ? scales / r.frames : 0.0;
     return r;
-}
-
-double percentile(std::vector<double> v, double p) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[std::min(v.size() - 1, static_cast<std::size_t>(p * double(v.size())))];
-}
-
-// Delays of events posted to the GUI thread every 10 ms while `work` runs.
-std::vector<double> latencies_during(const std::function<void()>& work) {
-    std::vector<double> delays;
-    std::mutex m;
-    std::atomic<bool> stop{false};
-    std::thread poster([&] {
-        while (!stop) {
-            const auto posted = std::chrono::steady_clock::now();
-            QMetaObject::invokeMethod(qApp, [&, posted] {
-                const double ms = std::chrono::duration<double, std::milli>(
-                                      std::chrono::steady_clock::now() - posted)
-                                      .count();
-                std::lock_guard lock(m);
-                delays.push_back(ms);
-            });
-            std::this_thread::sleep_for(std::chrono::milliseconds(10));
-        }
-    });
-    work();
-    stop = true;
-    poster.join();
-    QCoreApplication::processEvents();
-    std::lock_guard lock(m);
-    return delays;
 }
 
 void print_orbit(const char* what, const OrbitResult& r) {

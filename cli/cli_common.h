@@ -17,5 +17,8 @@ int run_cull(Args args);
 int run_tangents(Args args);
 int run_textures(Args args);
 int run_render(Args args);
+int run_lab(Args args);
+int run_compare(Args args);
+int run_budget(Args args);
 
 } // namespace sherpa::cli

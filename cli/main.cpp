@@ -31,6 +31,13 @@ constexpr Subcommand kSubcommands[] = {
      "         [--camera auto|gltf:N|eye=x,y,z:target=x,y,z] [--frames N] [--report FILE.json]\n"
      "         [--cache-dir DIR] [--no-cache] [--quality N] [--no-bc]\n"
      "                                     render offscreen (Vulkan) to a PNG"},
+    {"lab", sherpa::cli::run_lab,
+     "lab SCENE --family tangents|textures|culling [--json|--csv] [--chart OUT.svg]\n"
+     "      [--repeat N] [--sample-texels N] [--cameras N] [--no-gpu]   methods: time vs error"},
+    {"compare", sherpa::cli::run_compare,
+     "compare A B [--json] [--image OUT.png]   structural diff of two glTF files"},
+    {"budget", sherpa::cli::run_budget,
+     "budget SCENE [--json] [--viewport-height N]   GPU bytes against what the scene needs"},
 };
 
 int usage(std::FILE* out) {

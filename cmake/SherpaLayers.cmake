@@ -8,7 +8,7 @@
 # of one level that may not use each other (the CLI and the editor).
 # `render` (the passes layer of issue #13) is listed before it exists: a missing
 # layer is skipped, so adding engine/render needs no change here.
-set(SHERPA_LAYERS core scene texture gpu render "cli,editor")
+set(SHERPA_LAYERS core scene texture gpu render lab "cli,editor")
 
 # The CMake target that is a layer: engine/LAYER builds sherpa_LAYER; the CLI and the
 # editor are named after what they build.

@@ -57,6 +57,21 @@
     </message>
 </context>
 <context>
+    <name>LabChart</name>
+    <message>
+        <source>time (%1)</source>
+        <translation>Zeit (%1)</translation>
+    </message>
+    <message>
+        <source>Pareto front</source>
+        <translation>Pareto-Front</translation>
+    </message>
+    <message>
+        <source>%1 (in use)</source>
+        <translation>%1 (in Verwendung)</translation>
+    </message>
+</context>
+<context>
     <name>ViewCatalog</name>
     <message>
         <source>Lit</source>
@@ -330,6 +345,212 @@
     <message>
         <source>Renderer passes, last frame</source>
         <translation>Renderer-Durchläufe, letztes Bild</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::LabDock</name>
+    <message>
+        <source>The Lab could not run: %1</source>
+        <translation>Das Labor konnte nicht laufen: %1</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>SVG (*.svg)</source>
+        <translation>SVG (*.svg)</translation>
+    </message>
+    <message>
+        <source>PNG (*.png)</source>
+        <translation>PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>Lab</source>
+        <translation>Labor</translation>
+    </message>
+    <message>
+        <source>Methods</source>
+        <translation>Methoden</translation>
+    </message>
+    <message>
+        <source>Budget</source>
+        <translation>Budget</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Ausführen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Compute budget</source>
+        <translation>Budget berechnen</translation>
+    </message>
+    <message>
+        <source>Numbers</source>
+        <translation>Zahlen</translation>
+    </message>
+    <message>
+        <source>Failures</source>
+        <translation>Fehlschläge</translation>
+    </message>
+    <message>
+        <source>CSV…</source>
+        <translation>CSV…</translation>
+    </message>
+    <message>
+        <source>SVG…</source>
+        <translation>SVG…</translation>
+    </message>
+    <message>
+        <source>PNG…</source>
+        <translation>PNG…</translation>
+    </message>
+    <message>
+        <source>The family of methods to measure on the loaded scene</source>
+        <translation>Die Methodenfamilie, die an der geladenen Szene gemessen wird</translation>
+    </message>
+    <message>
+        <source>Measure every method of the family on this scene, off the UI thread</source>
+        <translation>Jede Methode der Familie an dieser Szene messen, außerhalb des UI-Threads</translation>
+    </message>
+    <message>
+        <source>The numbers, as sherpa-cli lab --csv writes them</source>
+        <translation>Die Zahlen, wie sherpa-cli lab --csv sie schreibt</translation>
+    </message>
+    <message>
+        <source>The chart, as sherpa-cli lab --chart writes it</source>
+        <translation>Das Diagramm, wie sherpa-cli lab --chart es schreibt</translation>
+    </message>
+    <message>
+        <source>The chart as shown</source>
+        <translation>Das Diagramm wie angezeigt</translation>
+    </message>
+    <message>
+        <source>Click a point (or double-click a row) to use that method in the viewport: culling methods only. Tangent and texture methods are measured here but the viewport has no switch for them, so clicking them changes nothing.</source>
+        <translation>Einen Punkt anklicken (oder eine Zeile doppelklicken), um diese Methode im Viewport zu verwenden: nur Culling-Methoden. Tangenten- und Texturmethoden werden hier gemessen, aber der Viewport hat keinen Schalter dafür; ein Klick ändert dort nichts.</translation>
+    </message>
+    <message>
+        <source>Pick a family and run it on %1.</source>
+        <translation>Eine Familie wählen und auf %1 ausführen.</translation>
+    </message>
+    <message>
+        <source>Open a scene to measure its methods.</source>
+        <translation>Eine Szene öffnen, um ihre Methoden zu messen.</translation>
+    </message>
+    <message>
+        <source>Compute the budget of %1.</source>
+        <translation>Das Budget von %1 berechnen.</translation>
+    </message>
+    <message>
+        <source>Open a scene to compute its budget.</source>
+        <translation>Eine Szene öffnen, um ihr Budget zu berechnen.</translation>
+    </message>
+    <message>
+        <source>Running %1 on %2…</source>
+        <translation>%1 läuft auf %2…</translation>
+    </message>
+    <message>
+        <source>Computing the budget of %1…</source>
+        <translation>Budget von %1 wird berechnet…</translation>
+    </message>
+    <message>
+        <source>%1 against %2; time in %3</source>
+        <translation>%1 gegen %2; Zeit in %3</translation>
+    </message>
+    <message>
+        <source>Could not write %1.</source>
+        <translation>%1 konnte nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>Export the Lab report</source>
+        <translation>Laborbericht exportieren</translation>
+    </message>
+    <message>
+        <source>The line joins the Pareto front; the method in use is ringed.</source>
+        <translation>Die Linie verbindet die Pareto-Front; die verwendete Methode ist umringt.</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::LabTableModel</name>
+    <message>
+        <source>Method</source>
+        <translation>Methode</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Time (%1)</source>
+        <translation>Zeit (%1)</translation>
+    </message>
+    <message>
+        <source>Failures</source>
+        <translation>Fehlschläge</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>Hinweis</translation>
+    </message>
+    <message>
+        <source>not run</source>
+        <translation>nicht gelaufen</translation>
+    </message>
+    <message>
+        <source>Cause</source>
+        <translation>Ursache</translation>
+    </message>
+    <message>
+        <source>Where</source>
+        <translation>Wo</translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation>Anzahl</translation>
+    </message>
+    <message>
+        <source>GPU bytes</source>
+        <translation>GPU-Bytes</translation>
+    </message>
+    <message>
+        <source>Unified</source>
+        <translation>Einheitlich</translation>
+    </message>
+    <message>
+        <source>Stored</source>
+        <translation>Gespeichert</translation>
+    </message>
+    <message>
+        <source>Needed</source>
+        <translation>Benötigt</translation>
+    </message>
+    <message>
+        <source>Oversized texture</source>
+        <translation>Übergroße Textur</translation>
+    </message>
+    <message>
+        <source>%1×%2: %3 texels per pixel at best, 1/%4 per side would look the same</source>
+        <translation>%1×%2: bestenfalls %3 Texel pro Pixel, 1/%4 pro Seite sähe gleich aus</translation>
+    </message>
+    <message>
+        <source>Unread attribute</source>
+        <translation>Ungelesenes Attribut</translation>
+    </message>
+    <message>
+        <source>Finding</source>
+        <translation>Befund</translation>
+    </message>
+    <message>
+        <source>Detail</source>
+        <translation>Detail</translation>
     </message>
 </context>
 <context>

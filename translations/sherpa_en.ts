@@ -57,6 +57,21 @@
     </message>
 </context>
 <context>
+    <name>LabChart</name>
+    <message>
+        <source>time (%1)</source>
+        <translation>time (%1)</translation>
+    </message>
+    <message>
+        <source>Pareto front</source>
+        <translation>Pareto front</translation>
+    </message>
+    <message>
+        <source>%1 (in use)</source>
+        <translation>%1 (in use)</translation>
+    </message>
+</context>
+<context>
     <name>ViewCatalog</name>
     <message>
         <source>Lit</source>
@@ -330,6 +345,212 @@
     <message>
         <source>Renderer passes, last frame</source>
         <translation>Renderer passes, last frame</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::LabDock</name>
+    <message>
+        <source>The Lab could not run: %1</source>
+        <translation>The Lab could not run: %1</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Cancelled.</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>SVG (*.svg)</source>
+        <translation>SVG (*.svg)</translation>
+    </message>
+    <message>
+        <source>PNG (*.png)</source>
+        <translation>PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>Lab</source>
+        <translation>Lab</translation>
+    </message>
+    <message>
+        <source>Methods</source>
+        <translation>Methods</translation>
+    </message>
+    <message>
+        <source>Budget</source>
+        <translation>Budget</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Run</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <source>Compute budget</source>
+        <translation>Compute budget</translation>
+    </message>
+    <message>
+        <source>Numbers</source>
+        <translation>Numbers</translation>
+    </message>
+    <message>
+        <source>Failures</source>
+        <translation>Failures</translation>
+    </message>
+    <message>
+        <source>CSV…</source>
+        <translation>CSV…</translation>
+    </message>
+    <message>
+        <source>SVG…</source>
+        <translation>SVG…</translation>
+    </message>
+    <message>
+        <source>PNG…</source>
+        <translation>PNG…</translation>
+    </message>
+    <message>
+        <source>The family of methods to measure on the loaded scene</source>
+        <translation>The family of methods to measure on the loaded scene</translation>
+    </message>
+    <message>
+        <source>Measure every method of the family on this scene, off the UI thread</source>
+        <translation>Measure every method of the family on this scene, off the UI thread</translation>
+    </message>
+    <message>
+        <source>The numbers, as sherpa-cli lab --csv writes them</source>
+        <translation>The numbers, as sherpa-cli lab --csv writes them</translation>
+    </message>
+    <message>
+        <source>The chart, as sherpa-cli lab --chart writes it</source>
+        <translation>The chart, as sherpa-cli lab --chart writes it</translation>
+    </message>
+    <message>
+        <source>The chart as shown</source>
+        <translation>The chart as shown</translation>
+    </message>
+    <message>
+        <source>Click a point (or double-click a row) to use that method in the viewport: culling methods only. Tangent and texture methods are measured here but the viewport has no switch for them, so clicking them changes nothing.</source>
+        <translation>Click a point (or double-click a row) to use that method in the viewport: culling methods only. Tangent and texture methods are measured here but the viewport has no switch for them, so clicking them changes nothing.</translation>
+    </message>
+    <message>
+        <source>Pick a family and run it on %1.</source>
+        <translation>Pick a family and run it on %1.</translation>
+    </message>
+    <message>
+        <source>Open a scene to measure its methods.</source>
+        <translation>Open a scene to measure its methods.</translation>
+    </message>
+    <message>
+        <source>Compute the budget of %1.</source>
+        <translation>Compute the budget of %1.</translation>
+    </message>
+    <message>
+        <source>Open a scene to compute its budget.</source>
+        <translation>Open a scene to compute its budget.</translation>
+    </message>
+    <message>
+        <source>Running %1 on %2…</source>
+        <translation>Running %1 on %2…</translation>
+    </message>
+    <message>
+        <source>Computing the budget of %1…</source>
+        <translation>Computing the budget of %1…</translation>
+    </message>
+    <message>
+        <source>%1 against %2; time in %3</source>
+        <translation>%1 against %2; time in %3</translation>
+    </message>
+    <message>
+        <source>Could not write %1.</source>
+        <translation>Could not write %1.</translation>
+    </message>
+    <message>
+        <source>Export the Lab report</source>
+        <translation>Export the Lab report</translation>
+    </message>
+    <message>
+        <source>The line joins the Pareto front; the method in use is ringed.</source>
+        <translation>The line joins the Pareto front; the method in use is ringed.</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::LabTableModel</name>
+    <message>
+        <source>Method</source>
+        <translation>Method</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Parameters</translation>
+    </message>
+    <message>
+        <source>Time (%1)</source>
+        <translation>Time (%1)</translation>
+    </message>
+    <message>
+        <source>Failures</source>
+        <translation>Failures</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>Note</translation>
+    </message>
+    <message>
+        <source>not run</source>
+        <translation>not run</translation>
+    </message>
+    <message>
+        <source>Cause</source>
+        <translation>Cause</translation>
+    </message>
+    <message>
+        <source>Where</source>
+        <translation>Where</translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation>Count</translation>
+    </message>
+    <message>
+        <source>GPU bytes</source>
+        <translation>GPU bytes</translation>
+    </message>
+    <message>
+        <source>Unified</source>
+        <translation>Unified</translation>
+    </message>
+    <message>
+        <source>Stored</source>
+        <translation>Stored</translation>
+    </message>
+    <message>
+        <source>Needed</source>
+        <translation>Needed</translation>
+    </message>
+    <message>
+        <source>Oversized texture</source>
+        <translation>Oversized texture</translation>
+    </message>
+    <message>
+        <source>%1×%2: %3 texels per pixel at best, 1/%4 per side would look the same</source>
+        <translation>%1×%2: %3 texels per pixel at best, 1/%4 per side would look the same</translation>
+    </message>
+    <message>
+        <source>Unread attribute</source>
+        <translation>Unread attribute</translation>
+    </message>
+    <message>
+        <source>Finding</source>
+        <translation>Finding</translation>
+    </message>
+    <message>
+        <source>Detail</source>
+        <translation>Detail</translation>
     </message>
 </context>
 <context>

@@ -57,6 +57,21 @@
     </message>
 </context>
 <context>
+    <name>LabChart</name>
+    <message>
+        <source>time (%1)</source>
+        <translation>时间（%1）</translation>
+    </message>
+    <message>
+        <source>Pareto front</source>
+        <translation>帕累托前沿</translation>
+    </message>
+    <message>
+        <source>%1 (in use)</source>
+        <translation>%1（使用中）</translation>
+    </message>
+</context>
+<context>
     <name>ViewCatalog</name>
     <message>
         <source>Lit</source>
@@ -330,6 +345,212 @@
     <message>
         <source>Renderer passes, last frame</source>
         <translation>渲染器通道，上一帧</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::LabDock</name>
+    <message>
+        <source>The Lab could not run: %1</source>
+        <translation>实验室无法运行：%1</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>已取消。</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>SVG (*.svg)</source>
+        <translation>SVG (*.svg)</translation>
+    </message>
+    <message>
+        <source>PNG (*.png)</source>
+        <translation>PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>Lab</source>
+        <translation>实验室</translation>
+    </message>
+    <message>
+        <source>Methods</source>
+        <translation>方法</translation>
+    </message>
+    <message>
+        <source>Budget</source>
+        <translation>预算</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>运行</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Compute budget</source>
+        <translation>计算预算</translation>
+    </message>
+    <message>
+        <source>Numbers</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <source>Failures</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <source>CSV…</source>
+        <translation>CSV…</translation>
+    </message>
+    <message>
+        <source>SVG…</source>
+        <translation>SVG…</translation>
+    </message>
+    <message>
+        <source>PNG…</source>
+        <translation>PNG…</translation>
+    </message>
+    <message>
+        <source>The family of methods to measure on the loaded scene</source>
+        <translation>要在已加载场景上测量的方法族</translation>
+    </message>
+    <message>
+        <source>Measure every method of the family on this scene, off the UI thread</source>
+        <translation>在界面线程之外，于此场景上测量该族的每种方法</translation>
+    </message>
+    <message>
+        <source>The numbers, as sherpa-cli lab --csv writes them</source>
+        <translation>数值，与 sherpa-cli lab --csv 的输出相同</translation>
+    </message>
+    <message>
+        <source>The chart, as sherpa-cli lab --chart writes it</source>
+        <translation>图表，与 sherpa-cli lab --chart 的输出相同</translation>
+    </message>
+    <message>
+        <source>The chart as shown</source>
+        <translation>按显示的图表</translation>
+    </message>
+    <message>
+        <source>Click a point (or double-click a row) to use that method in the viewport: culling methods only. Tangent and texture methods are measured here but the viewport has no switch for them, so clicking them changes nothing.</source>
+        <translation>单击一个点（或双击一行）即在视口中使用该方法：仅限剔除方法。切线和纹理方法在此测量，但视口没有相应开关，单击它们不会改变任何内容。</translation>
+    </message>
+    <message>
+        <source>Pick a family and run it on %1.</source>
+        <translation>选择一个方法族并在 %1 上运行。</translation>
+    </message>
+    <message>
+        <source>Open a scene to measure its methods.</source>
+        <translation>打开场景以测量其方法。</translation>
+    </message>
+    <message>
+        <source>Compute the budget of %1.</source>
+        <translation>计算 %1 的预算。</translation>
+    </message>
+    <message>
+        <source>Open a scene to compute its budget.</source>
+        <translation>打开场景以计算其预算。</translation>
+    </message>
+    <message>
+        <source>Running %1 on %2…</source>
+        <translation>正在 %2 上运行 %1…</translation>
+    </message>
+    <message>
+        <source>Computing the budget of %1…</source>
+        <translation>正在计算 %1 的预算…</translation>
+    </message>
+    <message>
+        <source>%1 against %2; time in %3</source>
+        <translation>%1 对比 %2；时间单位 %3</translation>
+    </message>
+    <message>
+        <source>Could not write %1.</source>
+        <translation>无法写入 %1。</translation>
+    </message>
+    <message>
+        <source>Export the Lab report</source>
+        <translation>导出实验室报告</translation>
+    </message>
+    <message>
+        <source>The line joins the Pareto front; the method in use is ringed.</source>
+        <translation>折线连接帕累托前沿；正在使用的方法带圆圈标记。</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::LabTableModel</name>
+    <message>
+        <source>Method</source>
+        <translation>方法</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>Time (%1)</source>
+        <translation>时间（%1）</translation>
+    </message>
+    <message>
+        <source>Failures</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>备注</translation>
+    </message>
+    <message>
+        <source>not run</source>
+        <translation>未运行</translation>
+    </message>
+    <message>
+        <source>Cause</source>
+        <translation>原因</translation>
+    </message>
+    <message>
+        <source>Where</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation>数量</translation>
+    </message>
+    <message>
+        <source>GPU bytes</source>
+        <translation>GPU 字节</translation>
+    </message>
+    <message>
+        <source>Unified</source>
+        <translation>统一布局</translation>
+    </message>
+    <message>
+        <source>Stored</source>
+        <translation>实际存储</translation>
+    </message>
+    <message>
+        <source>Needed</source>
+        <translation>所需</translation>
+    </message>
+    <message>
+        <source>Oversized texture</source>
+        <translation>过大的纹理</translation>
+    </message>
+    <message>
+        <source>%1×%2: %3 texels per pixel at best, 1/%4 per side would look the same</source>
+        <translation>%1×%2：最多每像素 %3 个纹素，每边缩小到 1/%4 看起来相同</translation>
+    </message>
+    <message>
+        <source>Unread attribute</source>
+        <translation>未读取的属性</translation>
+    </message>
+    <message>
+        <source>Finding</source>
+        <translation>发现</translation>
+    </message>
+    <message>
+        <source>Detail</source>
+        <translation>详情</translation>
     </message>
 </context>
 <context>

@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "culling_dock.h"
+#include "lab_dock.h"
 #include "log_dock.h"
 #include "main_window.h"
 #include "material_dock.h"
@@ -25,11 +26,11 @@ namespace {
 const QStringList kDockNames = {QStringLiteral("scene-tree"), QStringLiteral("mesh"),
                                 QStringLiteral("material"),   QStringLiteral("textures"),
                                 QStringLiteral("culling"),    QStringLiteral("log"),
-                                QStringLiteral("timeline")};
+                                QStringLiteral("timeline"),   QStringLiteral("lab")};
 
 QDockWidget* dock_named(MainWindow& w, const QString& name) {
     QDockWidget* docks[] = {w.sceneTreeDock(), w.meshDock(), w.materialDock(), w.textureDock(),
-                            w.cullingDock(),   w.logDock(),  w.timelineDock()};
+                            w.cullingDock(),   w.logDock(),  w.timelineDock(), w.labDock()};
     const auto i = kDockNames.indexOf(name);
     return i >= 0 ? docks[i] : nullptr;
 }
@@ -97,7 +98,7 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
     const QCommandLineOption dock(
         QStringLiteral("dock"),
         QStringLiteral("Show and raise this dock: scene-tree, mesh, material, textures, culling, "
-                       "log, timeline (may be repeated)."),
+                       "log, timeline, lab (may be repeated)."),
         QStringLiteral("name"));
     const QCommandLineOption gpu_culling(
         QStringLiteral("gpu-culling"),

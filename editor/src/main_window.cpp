@@ -22,6 +22,7 @@
 #include "culling_dock.h"
 #include "culling_monitor.h"
 #include "gpu_viewport.h"
+#include "lab_dock.h"
 #include "log_dock.h"
 #include "material_dock.h"
 #include "mesh_dock.h"
@@ -111,6 +112,7 @@ void MainWindow::createDocks() {
     textures_ = new TextureDock(context_, this);
     culling_dock_ = new CullingDock(*culling_, this);
     log_ = new LogDock(this);
+    lab_ = new LabDock(context_, this);
     for (QDockWidget* d : findChildren<QDockWidget*>()) {
         // A dock's width is the user's, never its content's: without this, a long
         // summary line (selecting a primitive) widens the mesh dock and squeezes the
@@ -145,6 +147,7 @@ void MainWindow::resetLayout() {
     tabifyDockWidget(culling_dock_, log_);
     tabifyDockWidget(mesh_, material_);
     tabifyDockWidget(material_, textures_);
+    tabifyDockWidget(textures_, lab_);
     for (QDockWidget* d : findChildren<QDockWidget*>()) d->show();
     scene_tree_->raise();
     mesh_->raise();
@@ -196,6 +199,7 @@ void MainWindow::connectActions() {
     connect(textures_, &TextureDock::selectTextureRequested, &context_,
             &EditorContext::selectTexture);
 
+    connectLab();
     connect(&loader_, &SceneLoadJob::loaded, this, &MainWindow::onLoaded);
     connect(&loader_, &SceneLoadJob::failed, this, &MainWindow::onLoadFailed);
     connect(&loader_, &SceneLoadJob::progress, this, &MainWindow::onProgress);

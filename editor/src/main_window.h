@@ -24,6 +24,7 @@ namespace sherpa::editor {
 
 class CullingDock;
 class CullingMonitor;
+class LabDock;
 class RenderThread;
 struct FrameReport;
 class LogDock;
@@ -49,6 +50,7 @@ public:
     CullingDock* cullingDock() const { return culling_dock_; }
     TimelineDock* timelineDock() const { return timeline_; }
     LogDock* logDock() const { return log_; }
+    LabDock* labDock() const { return lab_; }
     CullingMonitor& cullingMonitor() const { return *culling_; }
     ViewportWindow* viewport() const { return viewport_; }
     SceneLoadJob& loader() { return loader_; }
@@ -131,6 +133,7 @@ private:
     // the next frame.
     void updateStreams();
     void connectActions();
+    void connectLab(); // main_window_lab.cpp
     void onLoaded(SharedSession session);
     void onLoadFailed(const QString& spec, const QString& error);
     void onProgress(LoadStep step, int done, int total);
@@ -163,6 +166,7 @@ private:
     CullingDock* culling_dock_ = nullptr;
     TimelineDock* timeline_ = nullptr; // animation playback: the pose each frame draws
     LogDock* log_ = nullptr;
+    LabDock* lab_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;
     QLabel* frame_label_ = nullptr;

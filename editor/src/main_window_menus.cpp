@@ -21,6 +21,7 @@
 #include "culling_dock.h"
 #include "culling_monitor.h"
 #include "gpu_viewport.h"
+#include "lab_dock.h"
 #include "log_dock.h"
 #include "material_dock.h"
 #include "mesh_dock.h"
@@ -224,7 +225,7 @@ void MainWindow::createMenus() {
          {static_cast<QDockWidget*>(scene_tree_), static_cast<QDockWidget*>(mesh_),
           static_cast<QDockWidget*>(material_), static_cast<QDockWidget*>(textures_),
           static_cast<QDockWidget*>(culling_dock_), static_cast<QDockWidget*>(log_),
-          static_cast<QDockWidget*>(timeline_)})
+          static_cast<QDockWidget*>(timeline_), static_cast<QDockWidget*>(lab_)})
         a.docks->addAction(d->toggleViewAction());
     a.view->addAction(a.reset_layout);
 

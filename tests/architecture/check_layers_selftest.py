@@ -25,7 +25,7 @@ CLEAN = {
 
 # (name, extra files, expected exit code, fragments the output must contain)
 CASES = [
-    ("clean tree", {}, 0, ["0 violation(s)", "(absent: render)"]),
+    ("clean tree", {}, 0, ["0 violation(s)", "(absent: render"]),
     ("core includes scene", {"engine/core/src/file_io.cpp": "#include <sherpa/scene/scene.h>\n"},
      1, ["engine/core/src/file_io.cpp:1: layer core includes <sherpa/scene/...>, a layer above"]),
     ("scene header includes gpu, quoted, indented",

@@ -1,0 +1,173 @@
+// sherpa-cli lab SCENE --family NAME [--json|--csv] [--chart OUT.svg] [family options]
+// Runs one Lab family (engine/lab) on the scene and prints per method its time, its
+// error figures against the family's reference and its failures by cause.
+#include "cli_common.h"
+
+#include <sherpa/core/file_io.h>
+#include <sherpa/lab/families.h>
+#include <sherpa/lab/report_export.h>
+#include <sherpa/scene/scene_loader.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+namespace sherpa::cli {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: sherpa-cli lab SCENE --family tangents|textures|culling [--json|--csv]\n"
+    "           [--chart OUT.svg] [--repeat N] [--sample-texels N] [--cameras N] [--no-gpu]\n";
+
+struct Options {
+    std::string spec, family, chart;
+    bool json = false, csv = false, gpu = true;
+    int repeat = 0; // 0: the family's default
+    long long sample_texels = -1, cameras = -1;
+};
+
+int usage_error(const std::string& message) {
+    std::fprintf(stderr, "error: %s\n%s", message.c_str(), kUsage);
+    return kExitUsage;
+}
+
+std::unique_ptr<lab::Family> make(const Options& o) {
+    if (o.family == "tangents") {
+        lab::TangentFamilyOptions t;
+        if (o.repeat > 0) t.repeat = o.repeat;
+        return lab::make_tangent_family(t);
+    }
+    if (o.family == "textures") {
+        lab::TextureFamilyOptions t;
+        if (o.sample_texels >= 0) t.sample_texels = std::uint64_t(o.sample_texels);
+        return lab::make_texture_family(t);
+    }
+    if (o.family == "culling") {
+        lab::CullFamilyOptions c;
+        if (o.repeat > 0) c.repeat = o.repeat;
+        if (o.cameras > 0) c.path_length = std::uint32_t(o.cameras);
+        c.gpu = o.gpu;
+        return lab::make_cull_family(c);
+    }
+    return nullptr;
+}
+
+nlohmann::json report_json(const Scene& scene, const lab::FamilyReport& r) {
+    const std::vector<std::size_t> front = lab::pareto_front(r);
+    nlohmann::json methods = nlohmann::json::array();
+    for (std::size_t i = 0; i < r.methods.size(); ++i) {
+        const lab::MethodResult& m = r.methods[i];
+        nlohmann::json errors = nlohmann::json::object(), failures = nlohmann::json::array();
+        std::map<std::string, std::uint64_t> by_cause;
+        for (const lab::ErrorFigure& e : m.errors) errors[e.name] = e.value;
+        for (const lab::Failure& f : m.failures) {
+            failures.push_back({{"cause", f.cause}, {"where", f.where}, {"count", f.count}});
+            by_cause[f.cause] += f.count;
+        }
+        methods.push_back({{"name", m.method.name},
+                           {"parameters", m.method.parameters},
+                           {"group", m.method.group},
+                           {"ran", m.ran},
+                           {"note", m.note},
+                           {"time", m.time},
+                           {"time_unit", r.time_unit},
+                           {"total_ms", m.total_ms},
+                           {"errors", errors},
+                           {"failures", failures},
+                           {"failures_by_cause", by_cause},
+                           {"pareto", std::find(front.begin(), front.end(), i) != front.end()}});
+    }
+    return {{"source", scene.source},   {"family", r.family},           {"reference", r.reference},
+            {"time_unit", r.time_unit}, {"chart_error", r.chart_error}, {"notes", r.notes},
+            {"methods", methods}};
+}
+
+void print_text(const lab::FamilyReport& r) {
+    std::printf("%s against %s; time in %s\n", r.family.c_str(), r.reference.c_str(),
+                r.time_unit.c_str());
+    for (const std::string& n : r.notes) std::printf("  note: %s\n", n.c_str());
+    const std::vector<std::size_t> front = lab::pareto_front(r);
+    for (std::size_t i = 0; i < r.methods.size(); ++i) {
+        const lab::MethodResult& m = r.methods[i];
+        const std::string name =
+            m.method.name + (m.method.parameters.empty() ? "" : " " + m.method.parameters);
+        if (!m.ran) {
+            std::printf("%-22s not run: %s\n", name.c_str(), m.note.c_str());
+        } else {
+            const bool pareto = std::find(front.begin(), front.end(), i) != front.end();
+            std::printf("%-22s %11.4g %s%s", name.c_str(), m.time, r.time_unit.c_str(),
+                        pareto ? " *" : "  ");
+            for (const lab::ErrorFigure& e : m.errors)
+                std::printf("  %s %.4g", e.name.c_str(), e.value);
+            std::printf("\n");
+        }
+        for (const lab::Failure& f : m.failures)
+            std::printf("    failure: %s at %s (%llu)\n", f.cause.c_str(), f.where.c_str(),
+                        (unsigned long long)f.count);
+    }
+    std::printf("* on the Pareto front of time against %s\n", r.chart_error.c_str());
+}
+
+} // namespace
+
+int run_lab(Args args) {
+    Options o;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string_view a = args[i];
+        const bool has_value = i + 1 < args.size();
+        if (a == "--family" && has_value)
+            o.family = std::string(args[++i]);
+        else if (a == "--chart" && has_value)
+            o.chart = std::string(args[++i]);
+        else if (a == "--repeat" && has_value)
+            o.repeat = std::max(1, std::atoi(std::string(args[++i]).c_str()));
+        else if (a == "--sample-texels" && has_value)
+            o.sample_texels = std::max(0LL, std::atoll(std::string(args[++i]).c_str()));
+        else if (a == "--cameras" && has_value)
+            o.cameras = std::max(1LL, std::atoll(std::string(args[++i]).c_str()));
+        else if (a == "--json")
+            o.json = true;
+        else if (a == "--csv")
+            o.csv = true;
+        else if (a == "--no-gpu")
+            o.gpu = false;
+        else if (!a.empty() && a[0] == '-')
+            return usage_error("unknown or incomplete option '" + std::string(a) + "'");
+        else if (o.spec.empty())
+            o.spec = std::string(a);
+        else
+            return usage_error("more than one SCENE given");
+    }
+    if (o.spec.empty()) return usage_error("no SCENE given");
+    if (o.json && o.csv) return usage_error("give at most one of --json and --csv");
+    std::unique_ptr<lab::Family> family = make(o);
+    if (!family) return usage_error("unknown family '" + o.family + "'");
+    LoadResult loaded = load_scene(o.spec, lab::lab_load_options());
+    if (!loaded) {
+        std::fprintf(stderr, "error: %s\n", loaded.error.c_str());
+        return kExitLoadError;
+    }
+    const lab::FamilyReport report = family->run(*loaded.scene, {});
+    if (!o.chart.empty()) {
+        const std::string svg = lab::report_svg(report);
+        std::string error;
+        if (!write_file_atomic(
+                o.chart, std::span(reinterpret_cast<const std::uint8_t*>(svg.data()), svg.size()),
+                error)) {
+            std::fprintf(stderr, "error: %s\n", error.c_str());
+            return kExitLoadError;
+        }
+    }
+    if (o.json)
+        std::cout << report_json(*loaded.scene, report).dump(2) << "\n";
+    else if (o.csv)
+        std::cout << lab::report_csv(report);
+    else
+        print_text(report);
+    return kExitOk;
+}
+
+} // namespace sherpa::cli

@@ -1,0 +1,33 @@
+#pragma once
+// The Lab's scatter chart of time against the family's chart error, drawn with Qt
+// Charts as lab::report_svg draws it for the CLI: one point per method that ran, an
+// axis logarithmic where its positive values span more than a decade (zeros then sit
+// on the axis floor), the Pareto front joined, the method in use ringed.
+#include <QPointer>
+#include <QString>
+
+#include <vector>
+
+#include <sherpa/lab/family.h>
+
+class QChart;
+class QGraphicsTextItem;
+class QScatterSeries;
+
+namespace sherpa::editor {
+
+// The points' labels (method and parameters), items of the chart kept beside it.
+using LabChartLabels = std::vector<QPointer<QGraphicsTextItem>>;
+
+// Replaces `chart`'s series, axes and `labels`. Returns one series per plotted method
+// with its index into report.methods as the series' "method" property; each point is
+// labelled with its method (a legend would not fit a dock's width).
+std::vector<QScatterSeries*> show_lab_report(QChart& chart, const lab::FamilyReport& report,
+                                             const QString& method_in_use, LabChartLabels& labels);
+// Removes every series, axis and label.
+void clear_lab_chart(QChart& chart, LabChartLabels& labels);
+
+// Whether positive values spanning [lo, hi] want a logarithmic axis (lab::report_svg's rule).
+bool wants_log_axis(double lo, double hi);
+
+} // namespace sherpa::editor

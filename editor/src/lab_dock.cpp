@@ -1,0 +1,314 @@
+#include "lab_dock.h"
+
+#include <QBoxLayout>
+#include <QChart>
+#include <QChartView>
+#include <QComboBox>
+#include <QEvent>
+#include <QFile>
+#include <QFileDialog>
+#include <QHeaderView>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScatterSeries>
+#include <QSplitter>
+#include <QTabWidget>
+#include <QTableView>
+
+#include <sherpa/lab/report_export.h>
+
+#include "editor_context.h"
+#include "lab_chart.h"
+#include "lab_runner.h"
+#include "lab_table_model.h"
+
+namespace sherpa::editor {
+namespace {
+
+QTableView* make_table(LabTableModel* model, QWidget* parent) {
+    auto* view = new QTableView(parent);
+    view->setModel(model);
+    view->setSelectionBehavior(QAbstractItemView::SelectRows);
+    view->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    view->verticalHeader()->hide();
+    view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    return view;
+}
+
+bool write_text(const QString& path, const std::string& text) {
+    QFile f(path);
+    return f.open(QIODevice::WriteOnly | QIODevice::Truncate) &&
+           f.write(text.data(), qint64(text.size())) == qint64(text.size());
+}
+
+} // namespace
+
+LabDock::LabDock(const EditorContext& context, QWidget* parent)
+    : QDockWidget(parent), context_(context), runner_(new LabRunner(this)) {
+    setObjectName(QStringLiteral("labDock"));
+    methods_ = new LabTableModel(this);
+    failures_ = new LabTableModel(this);
+    categories_ = new LabTableModel(this);
+    findings_ = new LabTableModel(this);
+    tabs_ = new QTabWidget(this);
+    tabs_->addTab(buildMethodsTab(), QString());
+    tabs_->addTab(buildBudgetTab(), QString());
+    setWidget(tabs_);
+
+    connect(runner_, &LabRunner::progress, this, [this](int done, int total) {
+        progress_->setRange(0, std::max(total, 1));
+        progress_->setValue(done);
+    });
+    connect(runner_, &LabRunner::finished, this, &LabDock::showReport);
+    connect(runner_, &LabRunner::budgetFinished, this, &LabDock::showBudget);
+    connect(runner_, &LabRunner::failed, this, [this](const QString& error) {
+        setBusy(false);
+        status_->setText(tr("The Lab could not run: %1").arg(error));
+        budget_status_->setText(status_->text());
+    });
+    connect(runner_, &LabRunner::cancelled, this, [this] {
+        setBusy(false);
+        status_->setText(tr("Cancelled."));
+    });
+    connect(&context_, &EditorContext::sceneReady, this, &LabDock::onSceneChanged);
+    retranslate();
+    onSceneChanged();
+}
+
+LabDock::~LabDock() = default; // the runner cancels and waits for its worker
+
+QWidget* LabDock::buildMethodsTab() {
+    auto* page = new QWidget(this);
+    family_ = new QComboBox(page);
+    for (std::string_view name : lab::family_names())
+        family_->addItem(QString::fromLatin1(name.data(), qsizetype(name.size())),
+                         QString::fromLatin1(name.data(), qsizetype(name.size())));
+    run_ = new QPushButton(page);
+    cancel_ = new QPushButton(page);
+    progress_ = new QProgressBar(page);
+    status_ = new QLabel(page);
+    status_->setWordWrap(true);
+    chart_ = new QChart;
+    chart_->legend()->setAlignment(Qt::AlignBottom);
+    chart_->setMargins(QMargins(2, 2, 2, 2));
+    chart_view_ = new QChartView(chart_, page);
+    chart_view_->setRenderHint(QPainter::Antialiasing);
+    chart_view_->setMinimumHeight(300);
+    tables_ = new QTabWidget(page);
+    methods_view_ = make_table(methods_, tables_);
+    tables_->addTab(methods_view_, QString());
+    tables_->addTab(make_table(failures_, tables_), QString());
+    auto* split = new QSplitter(Qt::Vertical, page);
+    split->addWidget(chart_view_);
+    split->addWidget(tables_);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 2);
+    export_csv_ = new QPushButton(page);
+    export_svg_ = new QPushButton(page);
+    export_png_ = new QPushButton(page);
+
+    auto* top = new QHBoxLayout;
+    top->addWidget(family_, 1);
+    top->addWidget(run_);
+    top->addWidget(cancel_);
+    auto* exports = new QHBoxLayout;
+    exports->addWidget(export_csv_);
+    exports->addWidget(export_svg_);
+    exports->addWidget(export_png_);
+    exports->addStretch(1);
+    auto* layout = new QVBoxLayout(page);
+    layout->addLayout(top);
+    layout->addWidget(progress_);
+    layout->addWidget(status_);
+    layout->addWidget(split, 1);
+    layout->addLayout(exports);
+
+    connect(run_, &QPushButton::clicked, this, [this] { run(family_->currentData().toString()); });
+    connect(cancel_, &QPushButton::clicked, this, &LabDock::cancel);
+    connect(methods_view_, &QTableView::doubleClicked, this,
+            [this](const QModelIndex& index) { apply(std::size_t(index.row())); });
+    connect(export_csv_, &QPushButton::clicked, this,
+            [this] { exportDialog(tr("CSV (*.csv)"), &LabDock::exportCsv); });
+    connect(export_svg_, &QPushButton::clicked, this,
+            [this] { exportDialog(tr("SVG (*.svg)"), &LabDock::exportSvg); });
+    connect(export_png_, &QPushButton::clicked, this,
+            [this] { exportDialog(tr("PNG (*.png)"), &LabDock::exportPng); });
+    return page;
+}
+
+QWidget* LabDock::buildBudgetTab() {
+    auto* page = new QWidget(this);
+    budget_run_ = new QPushButton(page);
+    budget_status_ = new QLabel(page);
+    budget_status_->setWordWrap(true);
+    auto* layout = new QVBoxLayout(page);
+    auto* top = new QHBoxLayout;
+    top->addWidget(budget_run_);
+    top->addStretch(1);
+    layout->addLayout(top);
+    layout->addWidget(budget_status_);
+    layout->addWidget(make_table(categories_, page), 1);
+    layout->addWidget(make_table(findings_, page), 1);
+    connect(budget_run_, &QPushButton::clicked, this, &LabDock::runBudget);
+    return page;
+}
+
+void LabDock::retranslate() {
+    setWindowTitle(tr("Lab"));
+    tabs_->setTabText(0, tr("Methods"));
+    tabs_->setTabText(1, tr("Budget"));
+    run_->setText(tr("Run"));
+    cancel_->setText(tr("Cancel"));
+    budget_run_->setText(tr("Compute budget"));
+    tables_->setTabText(0, tr("Numbers"));
+    tables_->setTabText(1, tr("Failures"));
+    export_csv_->setText(tr("CSV…"));
+    export_svg_->setText(tr("SVG…"));
+    export_png_->setText(tr("PNG…"));
+    family_->setToolTip(tr("The family of methods to measure on the loaded scene"));
+    run_->setToolTip(tr("Measure every method of the family on this scene, off the UI thread"));
+    export_csv_->setToolTip(tr("The numbers, as sherpa-cli lab --csv writes them"));
+    export_svg_->setToolTip(tr("The chart, as sherpa-cli lab --chart writes it"));
+    export_png_->setToolTip(tr("The chart as shown"));
+    const QString apply_tip =
+        tr("Click a point (or double-click a row) to use that method in the viewport: culling "
+           "methods only. Tangent and texture methods are measured here but the viewport has "
+           "no switch for them, so clicking them changes nothing.");
+    chart_view_->setToolTip(apply_tip);
+    methods_view_->setToolTip(apply_tip);
+    if (report_) {
+        fill_methods(*methods_, *report_);
+        fill_failures(*failures_, *report_);
+        refreshMethodInUse();
+    }
+    if (budget_) {
+        fill_budget_categories(*categories_, *budget_);
+        fill_budget_findings(*findings_, *budget_);
+    }
+}
+
+void LabDock::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::LanguageChange) retranslate();
+    QDockWidget::changeEvent(e);
+}
+
+void LabDock::setMethodInUse(std::function<QString(const QString&)> in_use) {
+    in_use_ = std::move(in_use);
+    refreshMethodInUse();
+}
+
+void LabDock::setBusy(bool busy) {
+    run_->setEnabled(!busy && context_.scene());
+    budget_run_->setEnabled(!busy && context_.scene());
+    cancel_->setEnabled(busy);
+    progress_->setVisible(busy);
+}
+
+void LabDock::onSceneChanged() {
+    // Numbers of another scene would lie about this one.
+    cancel();
+    report_.reset();
+    budget_.reset();
+    methods_->clear();
+    failures_->clear();
+    categories_->clear();
+    findings_->clear();
+    clear_lab_chart(*chart_, labels_);
+    chart_->setTitle(QString());
+    const bool scene = context_.scene() != nullptr;
+    status_->setText(scene ? tr("Pick a family and run it on %1.").arg(context_.sceneSpec())
+                           : tr("Open a scene to measure its methods."));
+    budget_status_->setText(scene ? tr("Compute the budget of %1.").arg(context_.sceneSpec())
+                                  : tr("Open a scene to compute its budget."));
+    setBusy(false);
+}
+
+void LabDock::run(const QString& family) {
+    if (!context_.scene()) return;
+    const int index = family_->findData(family);
+    if (index >= 0) family_->setCurrentIndex(index);
+    status_->setText(tr("Running %1 on %2…").arg(family, context_.sceneSpec()));
+    progress_->setRange(0, 0);
+    setBusy(true);
+    runner_->start(family, context_.sceneSpec());
+}
+
+void LabDock::runBudget() {
+    if (!context_.scene()) return;
+    budget_status_->setText(tr("Computing the budget of %1…").arg(context_.sceneSpec()));
+    setBusy(true);
+    progress_->setRange(0, 0);
+    runner_->startBudget(context_.sceneSpec());
+}
+
+void LabDock::cancel() {
+    runner_->cancel();
+}
+
+void LabDock::showReport(std::shared_ptr<const lab::FamilyReport> report) {
+    setBusy(false);
+    report_ = std::move(report);
+    fill_methods(*methods_, *report_);
+    fill_failures(*failures_, *report_);
+    QStringList lines{tr("%1 against %2; time in %3")
+                          .arg(QString::fromStdString(report_->family),
+                               QString::fromStdString(report_->reference),
+                               QString::fromStdString(report_->time_unit))};
+    for (const std::string& n : report_->notes) lines << QString::fromStdString(n);
+    lines << tr("The line joins the Pareto front; the method in use is ringed.");
+    status_->setText(lines.join(QLatin1Char('\n')));
+    refreshMethodInUse();
+}
+
+void LabDock::showBudget(std::shared_ptr<const lab::BudgetReport> report) {
+    setBusy(false);
+    budget_ = std::move(report);
+    fill_budget_categories(*categories_, *budget_);
+    fill_budget_findings(*findings_, *budget_);
+    QStringList lines;
+    for (const std::string& n : budget_->notes) lines << QString::fromStdString(n);
+    budget_status_->setText(lines.join(QLatin1Char('\n')));
+}
+
+void LabDock::refreshMethodInUse() {
+    if (!report_) return;
+    const QString family = QString::fromStdString(report_->family);
+    const QString in_use = in_use_ ? in_use_(family) : QString();
+    for (QScatterSeries* s : show_lab_report(*chart_, *report_, in_use, labels_))
+        connect(s, &QScatterSeries::clicked, this,
+                [this, s] { apply(std::size_t(s->property("method").toULongLong())); });
+}
+
+void LabDock::apply(std::size_t method) {
+    if (!report_ || method >= report_->methods.size()) return;
+    Q_EMIT applyRequested(QString::fromStdString(report_->family),
+                          QString::fromStdString(report_->methods[method].method.name));
+    refreshMethodInUse();
+}
+
+bool LabDock::exportCsv(const QString& path) {
+    const bool ok = report_ && write_text(path, lab::report_csv(*report_));
+    if (!ok) status_->setText(tr("Could not write %1.").arg(path));
+    return ok;
+}
+
+bool LabDock::exportSvg(const QString& path) {
+    const bool ok = report_ && write_text(path, lab::report_svg(*report_));
+    if (!ok) status_->setText(tr("Could not write %1.").arg(path));
+    return ok;
+}
+
+bool LabDock::exportPng(const QString& path) {
+    const bool ok = report_ && chart_view_->grab().save(path, "PNG");
+    if (!ok) status_->setText(tr("Could not write %1.").arg(path));
+    return ok;
+}
+
+void LabDock::exportDialog(const QString& filter, bool (LabDock::*write)(const QString&)) {
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export the Lab report"), {}, filter);
+    if (!path.isEmpty()) (this->*write)(path);
+}
+
+} // namespace sherpa::editor

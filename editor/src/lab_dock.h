@@ -1,0 +1,106 @@
+#pragma once
+// The Lab dock: runs a method family of engine/lab on the loaded scene off the UI
+// thread (LabRunner) and shows time against error (chart, Pareto front, the method in
+// use ringed), the numbers and where each method failed; a Budget tab shows what
+// `sherpa-cli budget` prints. Exports CSV and SVG from the engine's writers (the same
+// bytes as `sherpa-cli lab --csv` / `--chart`) and the chart as shown in PNG.
+// Context in (the scene, the method in use), actions out (applyRequested).
+#include <QDockWidget>
+
+#include <functional>
+#include <memory>
+
+#include <sherpa/lab/budget.h>
+#include <sherpa/lab/family.h>
+
+#include "lab_chart.h"
+
+class QChart;
+class QChartView;
+class QComboBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QTabWidget;
+class QTableView;
+
+namespace sherpa::editor {
+
+class EditorContext;
+class LabRunner;
+class LabTableModel;
+
+class LabDock : public QDockWidget {
+    Q_OBJECT
+public:
+    explicit LabDock(const EditorContext& context, QWidget* parent = nullptr);
+    ~LabDock() override;
+
+    // The viewport's method of `family` now ("pvertex"; empty where the editor has
+    // no switch for that family), asked whenever the chart is drawn.
+    void setMethodInUse(std::function<QString(const QString& family)> in_use);
+    // Runs `family` on the scene in the context (cancels a run in flight).
+    void run(const QString& family);
+    void runBudget();
+    void cancel();
+    void refreshMethodInUse();
+
+    const lab::FamilyReport* report() const { return report_.get(); }
+    const lab::BudgetReport* budget() const { return budget_.get(); }
+    LabRunner& runner() const { return *runner_; }
+    LabTableModel& methodsModel() const { return *methods_; }
+    LabTableModel& failuresModel() const { return *failures_; }
+    QChart* chart() const { return chart_; }
+
+    // The engine's CSV / SVG of the report shown; the chart as shown. False (and a
+    // message in the status line) when there is no report or the file can't be written.
+    bool exportCsv(const QString& path);
+    bool exportSvg(const QString& path);
+    bool exportPng(const QString& path);
+
+Q_SIGNALS:
+    // A chart point or table row asked to show `method` of `family` in the viewport.
+    void applyRequested(const QString& family, const QString& method);
+
+protected:
+    void changeEvent(QEvent* e) override;
+
+private:
+    QWidget* buildMethodsTab();
+    QWidget* buildBudgetTab();
+    void retranslate();
+    void onSceneChanged();
+    void showReport(std::shared_ptr<const lab::FamilyReport> report);
+    void showBudget(std::shared_ptr<const lab::BudgetReport> report);
+    void setBusy(bool busy);
+    void apply(std::size_t method);
+    void exportDialog(const QString& filter, bool (LabDock::*write)(const QString&));
+
+    const EditorContext& context_;
+    LabRunner* runner_;
+    std::function<QString(const QString&)> in_use_;
+    std::shared_ptr<const lab::FamilyReport> report_;
+    std::shared_ptr<const lab::BudgetReport> budget_;
+    QTabWidget* tabs_ = nullptr;
+    QComboBox* family_ = nullptr;
+    QPushButton* run_ = nullptr;
+    QPushButton* cancel_ = nullptr;
+    QPushButton* budget_run_ = nullptr;
+    QProgressBar* progress_ = nullptr;
+    QLabel* status_ = nullptr;
+    QLabel* budget_status_ = nullptr;
+    QChart* chart_ = nullptr;
+    LabChartLabels labels_;
+    QChartView* chart_view_ = nullptr;
+    QTabWidget* tables_ = nullptr;
+    LabTableModel* methods_ = nullptr;
+    LabTableModel* failures_ = nullptr;
+    LabTableModel* categories_ = nullptr;
+    LabTableModel* findings_ = nullptr;
+    QTableView* methods_view_ = nullptr;
+    QPushButton* export_csv_ = nullptr;
+    QPushButton* export_svg_ = nullptr;
+    QPushButton* export_png_ = nullptr;
+};
+
+} // namespace sherpa::editor

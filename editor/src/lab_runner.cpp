@@ -1,0 +1,126 @@
+#include "lab_runner.h"
+
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <atomic>
+
+#include <sherpa/core/progress.h>
+#include <sherpa/scene/scene_loader.h>
+
+namespace sherpa::editor {
+
+// Shared by the UI thread and one worker: the cancel token and the last progress
+// posted (the engine may report per unit of work; the UI hears about each percent).
+struct LabRunner::Job {
+    CancelToken cancel;
+    std::atomic<int> posted_permille{-1};
+};
+
+LabRunner::LabRunner(QObject* parent) : QObject(parent) {
+    // One run at a time, and the one cancelled before it may still be returning.
+    pool_.setMaxThreadCount(2);
+}
+
+LabRunner::~LabRunner() {
+    cancel();
+    wait();
+}
+
+void LabRunner::cancel() {
+    if (!job_) return;
+    job_->cancel.cancel();
+    job_.reset(); // whatever the worker still posts is dropped
+    if (running_) {
+        running_ = false;
+        Q_EMIT cancelled();
+    }
+}
+
+void LabRunner::wait() {
+    for (QFuture<void>& f : workers_) f.waitForFinished();
+    workers_.clear();
+}
+
+std::shared_ptr<LabRunner::Job> LabRunner::begin() {
+    cancel();
+    workers_.removeIf([](const QFuture<void>& f) { return f.isFinished(); });
+    job_ = std::make_shared<Job>();
+    running_ = true;
+    return job_;
+}
+
+void LabRunner::end(const std::shared_ptr<Job>& job) {
+    if (job == job_) {
+        job_.reset();
+        running_ = false;
+    }
+}
+
+namespace {
+
+// Posts `f` to `runner`'s thread, where it runs only if `job` is still the current one.
+template <class F> void post(LabRunner* runner, F f) {
+    QMetaObject::invokeMethod(runner, std::move(f), Qt::QueuedConnection);
+}
+
+} // namespace
+
+void LabRunner::start(const QString& family_name, const QString& spec) {
+    std::shared_ptr<Job> job = begin();
+    workers_ << QtConcurrent::run(
+        &pool_, [this, job, family = family_name.toStdString(), path = spec.toStdString()] {
+            std::unique_ptr<lab::Family> family_ptr = lab::make_family(family);
+            auto fail = [this, job](QString error) {
+                post(this, [this, job, error] {
+                    if (job != job_) return;
+                    end(job);
+                    Q_EMIT failed(error);
+                });
+            };
+            if (!family_ptr) return fail(QStringLiteral("unknown family '%1'").arg(family.c_str()));
+            LoadResult loaded = load_scene(path, lab::lab_load_options());
+            if (job->cancel.cancelled()) return;
+            if (!loaded) return fail(QString::fromStdString(loaded.error));
+            lab::RunControl control;
+            control.cancel = &job->cancel;
+            control.progress = [this, job](std::size_t done, std::size_t total) {
+                const int permille = total ? int(1000 * done / total) : 0;
+                if (job->posted_permille.exchange(permille) / 10 == permille / 10) return;
+                post(this, [this, job, done, total] {
+                    if (job == job_) Q_EMIT progress(int(done), int(total));
+                });
+            };
+            auto report =
+                std::make_shared<const lab::FamilyReport>(family_ptr->run(*loaded.scene, control));
+            if (report->cancelled) return;
+            post(this, [this, job, report] {
+                if (job != job_) return;
+                end(job);
+                Q_EMIT finished(report);
+            });
+        });
+}
+
+void LabRunner::startBudget(const QString& spec) {
+    std::shared_ptr<Job> job = begin();
+    workers_ << QtConcurrent::run(&pool_, [this, job, path = spec.toStdString()] {
+        LoadResult loaded = load_scene(path);
+        if (job->cancel.cancelled()) return;
+        if (!loaded) {
+            post(this, [this, job, error = QString::fromStdString(loaded.error)] {
+                if (job != job_) return;
+                end(job);
+                Q_EMIT failed(error);
+            });
+            return;
+        }
+        auto report = std::make_shared<const lab::BudgetReport>(lab::build_budget(*loaded.scene));
+        post(this, [this, job, report] {
+            if (job != job_) return;
+            end(job);
+            Q_EMIT budgetFinished(report);
+        });
+    });
+}
+
+} // namespace sherpa::editor

@@ -1,0 +1,56 @@
+#pragma once
+// Runs a Lab family (engine/lab) or the budget report off the UI thread. The worker
+// loads the scene file again as `sherpa-cli lab` does (lab_load_options(): tangents
+// as in the file), so the dock and the CLI measure the same input, and reports its
+// progress; cancel() stops it at its next unit of work and drops what it measured.
+// One run at a time: starting another cancels the one in flight.
+#include <QFuture>
+#include <QList>
+#include <QObject>
+#include <QString>
+#include <QThreadPool>
+
+#include <memory>
+
+#include <sherpa/lab/budget.h>
+#include <sherpa/lab/family.h>
+
+namespace sherpa::editor {
+
+class LabRunner : public QObject {
+    Q_OBJECT
+public:
+    explicit LabRunner(QObject* parent = nullptr);
+    ~LabRunner() override; // cancels and waits for the worker
+
+    // Runs family `family` ("tangents", "textures", "culling") on the scene `spec`.
+    void start(const QString& family, const QString& spec);
+    // Builds the budget report of `spec` (loaded as `sherpa-cli budget` loads it).
+    void startBudget(const QString& spec);
+    void cancel();
+    bool running() const { return running_; }
+    // Blocks until the worker has returned (tests, shutdown).
+    void wait();
+
+Q_SIGNALS:
+    void progress(int done, int total);
+    void finished(std::shared_ptr<const sherpa::lab::FamilyReport> report);
+    void budgetFinished(std::shared_ptr<const sherpa::lab::BudgetReport> report);
+    void failed(const QString& error);
+    void cancelled();
+
+private:
+    struct Job;
+    std::shared_ptr<Job> begin();
+    void end(const std::shared_ptr<Job>& job);
+
+    std::shared_ptr<Job> job_;
+    // Its own threads: a family runs for seconds, and in the global pool it would hold
+    // the thread the scene loader's thumbnails wait for (measured: Box took 29 s to load
+    // while a textures run held the pool of a 2-core machine).
+    QThreadPool pool_;
+    QList<QFuture<void>> workers_; // cancelled ones may still be returning
+    bool running_ = false;
+};
+
+} // namespace sherpa::editor

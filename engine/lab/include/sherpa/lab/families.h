@@ -1,0 +1,58 @@
+#pragma once
+// The Lab's families with their options (make_family() gives the defaults).
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <sherpa/core/aabb.h>
+#include <sherpa/lab/family.h>
+#include <sherpa/scene/camera_spec.h>
+
+namespace sherpa::lab {
+
+// Tangents: exact MikkTSpace, welded MikkTSpace, Lengyel on every triangle mesh, from
+// the uv set its normal texture samples (uv0 without one). Reference: exact
+// MikkTSpace (corners where it falls back are left out); where the file has authored
+// tangents, errors against them too (`authored_*`). Errors: angle mean/p99/max in
+// degrees, handedness flips, corners differing from the reference (angle above
+// kDifferingDegrees or flipped). Failures: fallback corners per primitive and cause,
+// primitives without the uv set. Time: CPU ms per million triangles, best of `repeat`.
+struct TangentFamilyOptions {
+    int repeat = 1;
+};
+inline constexpr double kDifferingDegrees = 1e-3;
+std::unique_ptr<Family> make_tangent_family(const TangentFamilyOptions& options = {});
+
+// Texture compression: BC7 levels on the colour and data textures, BC5 levels on the
+// normal maps the displayed scene's materials use. Errors: PSNR over the channels the
+// role reads (mean over textures, and pooled), for BC5 the mean normal angle against
+// the source's RGB normal. Time: CPU ms per megapixel (one thread). Images larger
+// than `sample_texels` are measured on a mosaic of 64x64 tiles spread evenly over
+// the image (`sample_texels` texels; 0: whole images), noted in the report.
+// Failures: images missing or undecodable.
+struct TextureFamilyOptions {
+    std::uint64_t sample_texels = 512 * 512;
+    int threads = 1;
+};
+std::unique_ptr<Family> make_texture_family(const TextureFamilyOptions& options = {});
+
+// Culling: sphere, p-vertex and exact on the CPU (best SIMD level), and the GPU
+// shader (p-vertex) where a Vulkan device is available, over a camera path.
+// Reference: the exact test. Errors: false positives (kept, though exact culls them)
+// summed over the path, as a fraction of the objects tested; false negatives (must be
+// 0; each is a Failure). Time: ns per object tested (GPU: timestamped dispatch).
+struct CullFamilyOptions {
+    std::vector<CameraSpec> path; // empty: camera_path(scene.bounds, path_length)
+    std::uint32_t path_length = 32;
+    bool gpu = true;
+    bool gpu_validation = false; // Khronos validation on the GPU method's device (tests)
+    int repeat = 3;              // CPU timings: best of
+};
+std::unique_ptr<Family> make_cull_family(const CullFamilyOptions& options = {});
+
+// The culling family's default path around `bounds`: half the cameras orbit outside
+// at the framing distance looking at the centre (everything in view), half stand
+// inside at half the radius looking outward (about half culled); 60 degrees, 16:9.
+std::vector<CameraSpec> camera_path(const Aabb& bounds, std::uint32_t count);
+
+} // namespace sherpa::lab

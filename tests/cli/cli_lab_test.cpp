@@ -1,0 +1,124 @@
+// sherpa-cli lab and compare: the JSON the Lab's families and the file comparison
+// give, the CSV and SVG, and bad usage.
+#include "cli/cli_run.h"
+#include "test_support.h"
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+using sherpa::test::run_cli;
+
+nlohmann::json lab_json(const std::string& args) {
+    const auto r = run_cli("lab " + args + " --json", "2>/dev/null");
+    EXPECT_EQ(r.exit_code, 0) << r.out;
+    return nlohmann::json::parse(r.out, nullptr, false);
+}
+
+TEST(CliLab, TangentsOnDamagedHelmetMatchTheDocumentedAccuracy) {
+    const auto j =
+        lab_json("'" + sherpa::test::gltf_asset("DamagedHelmet") + "' --family tangents");
+    ASSERT_EQ(j.at("methods").size(), 3u);
+    const auto& lengyel = j["methods"][2];
+    EXPECT_EQ(lengyel.at("name"), "lengyel");
+    // docs/tangents/methods.csv: 0.456144 mean, 44.0339 max degrees against exact.
+    EXPECT_NEAR(lengyel["errors"]["angle_mean_deg"].get<double>(), 0.456144, 1e-5);
+    EXPECT_NEAR(lengyel["errors"]["angle_max_deg"].get<double>(), 44.0339, 1e-3);
+    EXPECT_EQ(j["methods"][0]["errors"]["angle_max_deg"].get<double>(), 0.0);
+    // 24 corners with degenerate uvs on the helmet: a failure by cause, with where.
+    EXPECT_EQ(lengyel["failures_by_cause"]["degenerate_uv"].get<int>(), 24);
+    EXPECT_NE(lengyel["failures"][0]["where"].get<std::string>().find("mesh 0 primitive 0"),
+              std::string::npos);
+    EXPECT_EQ(j["time_unit"], "ms/Mtri");
+    EXPECT_TRUE(lengyel["pareto"].get<bool>()) << "fastest";
+}
+
+TEST(CliLab, CullingOnAGridHasNoFalseNegatives) {
+    const auto j = lab_json("'builtin:grid?n=400' --family culling --cameras 8 --no-gpu");
+    ASSERT_EQ(j.at("methods").size(), 4u);
+    for (int m = 0; m < 3; ++m) {
+        EXPECT_EQ(j["methods"][m]["errors"]["false_negatives"].get<int>(), 0);
+        EXPECT_GT(j["methods"][m]["time"].get<double>(), 0.0);
+    }
+    EXPECT_EQ(j["methods"][2]["errors"]["false_positives"].get<int>(), 0) << "exact";
+    EXPECT_GE(j["methods"][0]["errors"]["false_positives"].get<int>(),
+              j["methods"][1]["errors"]["false_positives"].get<int>())
+        << "sphere keeps at least what p-vertex keeps";
+    EXPECT_FALSE(j["methods"][3]["ran"].get<bool>());
+}
+
+TEST(CliLab, CsvAndChart) {
+    const fs::path svg =
+        fs::temp_directory_path() / ("sherpa_lab_" + std::to_string(::getpid()) + ".svg");
+    const auto r =
+        run_cli("lab builtin:default --family tangents --csv --chart '" + svg.string() + "'",
+                "2>/dev/null");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    EXPECT_EQ(r.out.rfind("method,parameters,ran,time,time_unit,total_ms,angle_mean_deg", 0), 0u)
+        << r.out;
+    std::ifstream in(svg);
+    std::stringstream text;
+    text << in.rdbuf();
+    EXPECT_EQ(text.str().rfind("<svg", 0), 0u);
+    EXPECT_NE(text.str().find("mikktspace-welded"), std::string::npos);
+    fs::remove(svg);
+}
+
+TEST(CliLab, BadUsageAndBadFiles) {
+    EXPECT_EQ(run_cli("lab builtin:default --family nope").exit_code, 2);
+    EXPECT_EQ(run_cli("lab builtin:default").exit_code, 2) << "no family";
+    EXPECT_EQ(run_cli("lab builtin:default --family tangents --json --csv").exit_code, 2);
+    const auto r = run_cli("lab /no/such/file.gltf --family tangents");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.out.find("/no/such/file.gltf"), std::string::npos) << r.out;
+    EXPECT_EQ(run_cli("compare builtin:default").exit_code, 2);
+}
+
+TEST(CliCompare, AFileAgainstItselfIsAllZeros) {
+    const std::string duck = sherpa::test::gltf_asset("Duck");
+    const auto r = run_cli("compare '" + duck + "' '" + duck + "' --json", "2>/dev/null");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    const auto j = nlohmann::json::parse(r.out);
+    for (const auto& [name, c] : j["counts"].items()) EXPECT_EQ(c["a"], c["b"]) << name;
+    ASSERT_FALSE(j["primitives"].empty());
+    for (const auto& p : j["primitives"]) {
+        EXPECT_EQ(p["vertices"][0], p["vertices"][1]);
+        EXPECT_EQ(p["position_error"]["max"].get<double>(), 0.0);
+        EXPECT_EQ(p["position_error"]["rms"].get<double>(), 0.0);
+        EXPECT_EQ(p["normal_error_deg"]["max"].get<double>(), 0.0);
+        EXPECT_EQ(p["uv_error"]["max"].get<double>(), 0.0);
+    }
+    EXPECT_TRUE(j["materials"].empty());
+    ASSERT_FALSE(j["textures"].empty());
+    for (const auto& t : j["textures"]) EXPECT_TRUE(t["identical"].get<bool>()) << t.dump();
+    EXPECT_EQ(j["bytes"]["file"][0], j["bytes"]["file"][1]);
+}
+
+} // namespace
+
+namespace {
+
+TEST(CliBudget, RiggedSimpleJointsAreReadByMotionOnly) {
+    const auto r = sherpa::test::run_cli(
+        "budget '" + sherpa::test::gltf_asset("RiggedSimple") + "' --json", "2>/dev/null");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    const auto j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(j["categories"].size(), 5u);
+    EXPECT_LE(j["categories"][0]["stored"].get<double>(),
+              j["categories"][0]["unified"].get<double>());
+    std::set<std::string> unread;
+    for (const auto& u : j["unread_attributes"]) unread.insert(u["attribute"].get<std::string>());
+    EXPECT_TRUE(unread.count("JOINTS_0") && unread.count("WEIGHTS_0"))
+        << j["unread_attributes"].dump();
+    EXPECT_EQ(sherpa::test::run_cli("budget").exit_code, 2);
+}
+
+} // namespace

@@ -89,7 +89,7 @@ private:
     void rerun();
 
     static constexpr double kCoalesceAboveMs = 4.0; // passes cheaper than this run at once
-    static constexpr int kPosedGpuCheckMs = 200;  // pose changes with the GPU check on
+    static constexpr int kPosedGpuCheckMs = 200;    // pose changes with the GPU check on
     const EditorContext& context_;
     CullInput input_; // boxes and draw groups, prepared once per scene
     CullOptions options_;

@@ -259,8 +259,7 @@ void ModelTests::docksShowCompressionContainerAndSpecGloss() {
     const MaterialInstance& m = box.session->scene->materials.at(0);
     QVERIFY(m.specular_glossiness);
     MaterialFieldsModel fields;
-    fields.setMaterial(box.session, 0, to_gpu_material(m),
-                       MaterialFieldsModel::Source::Cpu);
+    fields.setMaterial(box.session, 0, to_gpu_material(m), MaterialFieldsModel::Source::Cpu);
     QCOMPARE(fields.rowCount(), 14 + 3); // the GPUMaterialData fields, then the extension's
     QCOMPARE(display(fields, 0, MaterialFieldsModel::PropertyColumn),
              QStringLiteral("KHR_materials_pbrSpecularGlossiness.diffuseFactor"));

@@ -17,5 +17,6 @@ int run_cull(Args args);
 int run_tangents(Args args);
 int run_textures(Args args);
 int run_render(Args args);
+int run_rt(Args args);
 
 } // namespace sherpa::cli

@@ -32,7 +32,8 @@ constexpr const char* kUsage =
     "[--prepass|--no-prepass]\n"
     "         [--glyph-length L] [--floor] [--cull none|cpu|gpu] [--cull-method "
     "sphere|pvertex|exact]\n"
-    "         [--cull-check] [--freeze-cull eye=x,y,z:target=x,y,z[:...]]\n         ";
+    "         [--cull-check] [--freeze-cull eye=x,y,z:target=x,y,z[:...]] [--rt on|off]\n"
+    "         ";
 
 std::string joined(const std::vector<std::string_view>& names);
 
@@ -68,6 +69,7 @@ int run_render(Args args) {
     gpu::RenderSettings settings;
     std::uint32_t frames = 1;
     bool validation = gpu::ContextOptions::default_validation();
+    bool ray_tracing = true;
     TextureCliOptions texture_options;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string_view a = args[i];
@@ -152,6 +154,10 @@ int run_render(Args args) {
             settings.freeze_cull = frozen;
         } else if (a == "--validation") {
             validation = true;
+        } else if (a == "--rt") {
+            auto v = value();
+            if (!v || (*v != "on" && *v != "off")) return usage_error("--rt needs on or off");
+            ray_tracing = *v == "on";
         } else if (a == "--no-shadows") {
             settings.shadows = false;
         } else if (a == "--prepass") {
@@ -183,6 +189,7 @@ int run_render(Args args) {
         gpu::ContextOptions options;
         options.validation = validation;
         options.echo_validation = true;
+        options.ray_tracing = ray_tracing;
         gpu::Context context(options);
         gpu::Renderer renderer(context);
         // Textures are prepared (cache lookups, decode, compression) before the upload,

@@ -12,6 +12,7 @@
 
 #include <sherpa/gpu/bindless.h>
 #include <sherpa/scene/material.h>
+#include <sherpa/scene/vertex.h>
 
 namespace sherpa::gpu {
 
@@ -182,5 +183,23 @@ static_assert(offsetof(GPUCullParams, plane_count) == 600);
 static_assert(offsetof(GPUCullParams, object_count) == 612);
 static_assert(offsetof(GPUCullParams, empty) == 616);
 static_assert(sizeof(VkDrawIndexedIndirectCommand) == 20);
+
+// Ray tracing (shaders/include/rt_geometry.glsl, scalar layout): one record per BLAS
+// geometry (a triangle primitive), found in hit shaders at
+// gl_InstanceCustomIndexEXT + gl_GeometryIndexEXT. Our vertex streams are separate
+// arrays, so the record reaches each one the mesh has on the GPU by device address
+// (0: absent, read as the shader default), and its first index.
+struct GPUGeometryInfo {
+    VkDeviceAddress stream[kVertexAttributeCount]; // by VertexAttribute
+    VkDeviceAddress indices; // the geometry's first index (uint32 triangle list)
+    std::uint32_t material;  // into the materials array
+    std::uint32_t flags;     // mesh_flags (streams, provenance)
+};
+static_assert(kVertexAttributeCount == 6);
+static_assert(offsetof(GPUGeometryInfo, stream) == 0);
+static_assert(offsetof(GPUGeometryInfo, indices) == 48);
+static_assert(offsetof(GPUGeometryInfo, material) == 56);
+static_assert(offsetof(GPUGeometryInfo, flags) == 60);
+static_assert(sizeof(GPUGeometryInfo) == 64);
 
 } // namespace sherpa::gpu

@@ -158,6 +158,44 @@ TEST_F(AccelerationTest, DegenerateTrianglesAndEmptyMeshesBuildCleanly) {
     for (const gpu::BlasStats& b : s.blas) EXPECT_NE(b.mesh, scene->meshes[1].group_id);
 }
 
+TEST_F(AccelerationTest, MovedInstancesRefitAndVisibilityChangesRebuild) {
+    if (!has_rt()) GTEST_SKIP() << "device without ray tracing";
+    auto scene = load("builtin:default");
+    gpu::ResourceManager& rm = renderer().resources();
+    {
+        gpu::BindlessTable table(rm);
+        gpu::GpuScene gpu_scene(rm, table, *scene, no_textures());
+        gpu::SceneAccelerationStructures as(rm, *scene, gpu_scene);
+        EXPECT_EQ(as.stats().tlas.builds, 1u);
+        EXPECT_EQ(as.stats().tlas.refits, 0u);
+        // Animation: every instance moves, the set stays: a refit.
+        for (MeshInstance& inst : scene->instances)
+            inst.world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.5f, 0.0f)) * inst.world;
+        as.update_instances(*scene, {});
+        EXPECT_EQ(as.stats().tlas.builds, 1u);
+        EXPECT_EQ(as.stats().tlas.refits, 1u);
+        EXPECT_EQ(as.stats().tlas.instances, scene->instances.size());
+        // A node hidden: fewer instances, a rebuild.
+        std::vector<bool> hidden(scene->nodes.size(), false);
+        hidden[scene->instances[0].node_id] = true;
+        as.update_instances(*scene, hidden);
+        EXPECT_EQ(as.stats().tlas.builds, 2u);
+        EXPECT_EQ(as.stats().tlas.hidden, 1u);
+        EXPECT_EQ(as.stats().tlas.instances, scene->instances.size() - 1);
+        EXPECT_NE(as.tlas(), VK_NULL_HANDLE);
+        // Everything hidden: no TLAS at all.
+        hidden.assign(hidden.size(), true);
+        as.update_instances(*scene, hidden);
+        EXPECT_EQ(as.tlas(), VK_NULL_HANDLE);
+        EXPECT_EQ(as.stats().tlas.instances, 0u);
+        // Shown again: built anew.
+        as.update_instances(*scene, {});
+        EXPECT_NE(as.tlas(), VK_NULL_HANDLE);
+        EXPECT_EQ(as.stats().tlas.builds, 3u);
+    }
+    rm.flush();
+}
+
 TEST(RtPlan, BatchesStayUnderTheScratchBudget) {
     const std::vector<std::uint64_t> scratch = {100, 30, 70, 500, 1, 1};
     const auto batches = gpu::batch_by_scratch(scratch, 128, 8);

@@ -3,7 +3,8 @@
 // (one geometry per triangle primitive, VK_GEOMETRY_OPAQUE_BIT only for opaque
 // materials, compacted), the GPUGeometryInfo array hit shaders read vertices and
 // materials through, and the top-level structure with one instance per (node, glTF
-// mesh). Built once on scene load, batched under a scratch budget; never per frame.
+// mesh). Built once on scene load, batched under a scratch budget; never per frame
+// (the TLAS is refitted or rebuilt on demand when transforms or visibility change).
 // Needs a Context with DeviceInfo::ray_tracing_enabled (GpuScene's buffers then carry
 // the build-input usage).
 #include <cstdint>
@@ -40,7 +41,10 @@ struct TlasStats {
     std::uint64_t hidden = 0;          // excluded: node hidden
     std::uint64_t non_finite = 0;      // excluded: NaN or infinite transform (with a warning)
     std::uint64_t bytes = 0, scratch_bytes = 0, instance_buffer_bytes = 0;
-    double build_ms = -1.0;
+    double build_ms = -1.0; // the last build or refit
+    // Full builds (the first on load, then whenever the instance set changed) and
+    // refits (only transforms moved) so far.
+    std::uint64_t builds = 0, refits = 0;
 };
 
 struct AccelerationStats {
@@ -83,16 +87,21 @@ public:
     VkAccelerationStructureKHR tlas() const { return tlas_.get(); }
     // The GPUGeometryInfo array (0 when there are no geometries).
     VkDeviceAddress geometry_records() const;
+    // After transforms (animation) or visibility changed: the TLAS is refitted when
+    // the same instances remain (same BLAS in the same order), else rebuilt. `scene`
+    // is the one the structures were built from, with its instances' world
+    // transforms updated. Waits for the build; no frame may be using the TLAS.
+    void update_instances(const Scene& scene, const std::vector<bool>& hidden_nodes);
 
 private:
     void build_blas(const Scene& scene, const GpuScene& gpu, const AccelerationSettings& s);
-    void build_tlas(const Scene& scene, const AccelerationSettings& s);
 
     ResourceManager& resources_;
     RayTracingFunctions fn_;
     std::vector<AccelerationStructure> blas_; // by stats_.blas
     std::vector<std::int32_t> blas_of_mesh_;  // per glTF mesh: index into blas_, -1 none
     AccelerationStructure tlas_;
+    std::vector<std::uint32_t> tlas_blas_; // BLAS per TLAS instance, as last built
     BufferHandle records_, instances_;
     AccelerationStats stats_;
 };

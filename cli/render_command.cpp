@@ -33,6 +33,7 @@ constexpr const char* kUsage =
     "         [--glyph-length L] [--floor] [--cull none|cpu|gpu] [--cull-method "
     "sphere|pvertex|exact]\n"
     "         [--cull-check] [--freeze-cull eye=x,y,z:target=x,y,z[:...]] [--rt on|off]\n"
+    "         [--renderer raster|rt] [--texture-lod N]\n"
     "         ";
 
 std::string joined(const std::vector<std::string_view>& names);
@@ -158,6 +159,16 @@ int run_render(Args args) {
             auto v = value();
             if (!v || (*v != "on" && *v != "off")) return usage_error("--rt needs on or off");
             ray_tracing = *v == "on";
+        } else if (a == "--renderer") {
+            auto v = value();
+            const auto kind = v ? gpu::parse_renderer(*v) : std::nullopt;
+            if (!kind) return usage_error("--renderer needs raster or rt");
+            settings.renderer = *kind;
+        } else if (a == "--texture-lod") {
+            auto v = value();
+            if (!v || !parse_number(*v, settings.texture_lod) || !(settings.texture_lod >= 0.0f) ||
+                settings.texture_lod > 16.0f)
+                return usage_error("--texture-lod needs a mip level from 0 to 16");
         } else if (a == "--no-shadows") {
             settings.shadows = false;
         } else if (a == "--prepass") {
@@ -176,6 +187,12 @@ int run_render(Args args) {
     }
     if (spec.empty()) return usage_error("no SCENE given");
     if (out_path.empty()) return usage_error("no output given (-o OUT.png)");
+    const bool ray_traced = settings.renderer == gpu::RendererKind::RayTraced;
+    if (ray_traced && !ray_tracing) return usage_error("--renderer rt needs --rt on");
+    if (ray_traced && !gpu::ray_traced_view(settings.view))
+        return usage_error("--renderer rt does not draw view '" +
+                           std::string(gpu::to_string(settings.view)) + "' yet");
+    if (ray_traced && settings.overlays != 0) return usage_error("--renderer rt draws no overlays");
 
     const auto load_start = std::chrono::steady_clock::now();
     LoadResult loaded = load_scene(spec);
@@ -191,7 +208,9 @@ int run_render(Args args) {
         options.echo_validation = true;
         options.ray_tracing = ray_tracing;
         gpu::Context context(options);
-        gpu::Renderer renderer(context);
+        gpu::RendererOptions renderer_options;
+        renderer_options.ray_tracing = ray_traced; // acceleration structures built on load
+        gpu::Renderer renderer(context, renderer_options);
         // Textures are prepared (cache lookups, decode, compression) before the upload,
         // as a loader thread would, so the report can time the two apart.
         const gpu::TextureSettings texture_settings = texture_options.gpu_settings();

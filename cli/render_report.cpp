@@ -79,6 +79,7 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
     j["width"] = run.settings.width;
     j["height"] = run.settings.height;
     j["view"] = std::string(gpu::to_string(run.settings.view));
+    j["renderer"] = std::string(gpu::to_string(run.settings.renderer));
     j["camera"] = run.camera_text;
     j["frames"] = run.frames.size();
 

@@ -7,6 +7,8 @@
 #include "cli_run.h"
 #include "test_support.h"
 
+#include <sherpa/texture/image.h>
+
 namespace sherpa::test {
 namespace {
 
@@ -160,6 +162,43 @@ TEST(CliRt, RenderReportShowsBuildInputUsageOnlyWithRt) {
         EXPECT_TRUE(on["device"]["ray_tracing_enabled"].get<bool>());
         EXPECT_TRUE(on["geometry_buffers"]["acceleration_structure_input"].get<bool>());
     }
+}
+
+// render --renderer rt: the helmet's normal view through rays, validation clean, close
+// to the rasterizer's (the exactness check itself is tests/gpu/rt_exactness_test.cpp);
+// views the ray tracer has no formula for, overlays and --rt off are refused.
+TEST(CliRt, RenderRendererRtDrawsSurfaceViewsAndRefusesTheRest) {
+    const std::string dir = ::testing::TempDir();
+    const std::string helmet = "'" + gltf_asset("DamagedHelmet") + "'";
+    const std::string common = " --width 64 --height 48 --view normal --texture-lod 0 --validation"
+                               " --cache-dir '" SHERPA_TEST_TEXTURE_CACHE "'";
+    std::vector<std::uint8_t> images[2];
+    for (int i = 0; i < 2; ++i) {
+        const std::string png = dir + "/renderer_" + std::to_string(i) + ".png";
+        const CliRun r = run_cli("render " + helmet + " -o " + png + common + " --renderer " +
+                                     (i ? "rt" : "raster"),
+                                 "2>&1");
+        ASSERT_EQ(r.exit_code, 0) << r.out;
+        std::uint32_t w = 0, h = 0;
+        std::string error;
+        ASSERT_TRUE(tex::read_png_rgba8(png, w, h, images[i], error)) << error;
+        EXPECT_EQ(w, 64u);
+    }
+    std::size_t close = 0;
+    for (std::size_t p = 0; p + 3 < images[0].size(); p += 4) {
+        int d = 0;
+        for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(images[0][p + c] - images[1][p + c]));
+        close += d <= 2;
+    }
+    EXPECT_GE(close, images[0].size() / 4 * 98 / 100); // silhouettes included here
+    const std::string out = " -o " + dir + "/refused.png";
+    for (const std::string bad : {" --view lit", " --view uv0-checker", " --overlay aabb",
+                                  " --rt off", " --texture-lod -1"}) {
+        const CliRun r =
+            run_cli("render " + helmet + out + " --renderer rt --width 8 --height 8" + bad, "2>&1");
+        EXPECT_EQ(r.exit_code, 2) << bad << "\n" << r.out;
+    }
+    EXPECT_EQ(run_cli("render builtin:default -o x.png --renderer vulkan").exit_code, 2);
 }
 
 } // namespace

@@ -89,7 +89,8 @@ TEST_F(AccelerationTest, OneBlasPerGltfMeshOpaqueOnlyForOpaqueMaterials) {
     for (const Mesh& m : scene->meshes) {
         groups.insert(m.group_id);
         triangles += m.indices.size() / 3;
-        opaque += scene->materials[m.material_id].alpha_mode == AlphaMode::Opaque;
+        const MaterialInstance& material = scene->materials[m.material_id];
+        opaque += material.alpha_mode == AlphaMode::Opaque && material.double_sided;
     }
     ASSERT_EQ(s.blas.size(), groups.size());
     EXPECT_EQ(s.blas_triangles(), triangles);
@@ -228,8 +229,10 @@ TEST(RtPlan, GeometriesFollowPrimitivesOfEachGltfMesh) {
     EXPECT_EQ(plans[0].group, 0u);
     EXPECT_EQ(plans[0].name, "m0");
     ASSERT_EQ(plans[0].geometries.size(), 2u);
-    EXPECT_TRUE(plans[0].geometries[0].opaque);
+    EXPECT_FALSE(plans[0].geometries[0].opaque); // single-sided: any-hit culls back faces
     EXPECT_FALSE(plans[0].geometries[1].opaque); // masked: reaches any-hit
+    scene.materials[0].double_sided = true;
+    EXPECT_TRUE(gpu::plan_blas(scene, meshes)[0].geometries[0].opaque);
     EXPECT_EQ(plans[0].triangles, 4u);
 }
 

@@ -29,7 +29,8 @@ std::vector<BlasPlan> plan_blas(const Scene& scene, std::span<const GpuMesh> mes
             geometry.mesh = m;
             geometry.triangles = g.index_count / 3;
             geometry.opaque = mesh.material_id < scene.materials.size() &&
-                              scene.materials[mesh.material_id].alpha_mode == AlphaMode::Opaque;
+                              scene.materials[mesh.material_id].alpha_mode == AlphaMode::Opaque &&
+                              scene.materials[mesh.material_id].double_sided;
             plan.triangles += geometry.triangles;
             plan.geometries.push_back(geometry);
             if (plan.name.empty()) plan.name = mesh.name.substr(0, mesh.name.rfind('#'));

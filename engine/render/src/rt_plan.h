@@ -18,7 +18,10 @@ namespace sherpa::gpu {
 struct BlasGeometryPlan {
     std::uint32_t mesh = 0; // engine mesh (Scene::meshes, GpuScene::meshes)
     std::uint32_t triangles = 0;
-    bool opaque = true; // material alpha mode OPAQUE: no any-hit
+    // Opaque and double-sided material: no any-hit. Single-sided ones reach any-hit,
+    // which culls their back faces per material (the instance flags cannot: a glTF
+    // mesh mixes materials), masked ones for the alpha test.
+    bool opaque = true;
 };
 
 // One BLAS: the triangle primitives of one glTF mesh that are on the GPU, in

@@ -66,8 +66,8 @@ void SceneAccelerationStructures::update_instances(const Scene& scene,
         inst.instanceCustomIndex = first;
         inst.mask = 0xff;
         inst.instanceShaderBindingTableRecordOffset = 0;
-        // Facing is decided in the hit shaders from world-space geometry (as the
-        // rasterizer's winding is per material), so the hardware culls nothing.
+        // Facing is decided in the hit shaders from the object-space winding (culling
+        // is per material, in rt.rahit, as the rasterizer's), so the hardware culls nothing.
         inst.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
         inst.accelerationStructureReference = blas_[p.blas].address();
         std::memcpy(out + i, &inst, sizeof(inst));

@@ -20,5 +20,6 @@ int run_render(Args args);
 int run_lab(Args args);
 int run_compare(Args args);
 int run_budget(Args args);
+int run_rt(Args args);
 
 } // namespace sherpa::cli

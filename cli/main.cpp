@@ -31,6 +31,9 @@ constexpr Subcommand kSubcommands[] = {
      "         [--camera auto|gltf:N|eye=x,y,z:target=x,y,z] [--frames N] [--report FILE.json]\n"
      "         [--cache-dir DIR] [--no-cache] [--quality N] [--no-bc]\n"
      "                                     render offscreen (Vulkan) to a PNG"},
+    {"rt", sherpa::cli::run_rt,
+     "rt SCENE [--json] [--validation] [--scratch-budget BYTES] [--no-compact] [--rt on|off]\n"
+     "                                     acceleration structures: BLAS/TLAS statistics"},
     {"lab", sherpa::cli::run_lab,
      "lab SCENE --family tangents|textures|culling [--json|--csv] [--chart OUT.svg]\n"
      "      [--repeat N] [--sample-texels N] [--cameras N] [--no-gpu]   methods: time vs error"},

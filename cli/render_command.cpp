@@ -33,8 +33,9 @@ constexpr const char* kUsage =
     "[--prepass|--no-prepass]\n"
     "         [--glyph-length L] [--floor] [--cull none|cpu|gpu] [--cull-method "
     "sphere|pvertex|exact]\n"
-    "         [--cull-check] [--freeze-cull eye=x,y,z:target=x,y,z[:...]]\n"
-    "         [--animation N --time T | --pose bind]\n         ";
+    "         [--cull-check] [--freeze-cull eye=x,y,z:target=x,y,z[:...]] [--rt on|off]\n"
+    "         [--renderer raster|rt] [--texture-lod N] [--animation N --time T | --pose bind]\n"
+    "         ";
 
 std::string joined(const std::vector<std::string_view>& names);
 
@@ -70,6 +71,7 @@ int run_render(Args args) {
     gpu::RenderSettings settings;
     std::uint32_t frames = 1;
     bool validation = gpu::ContextOptions::default_validation();
+    bool ray_tracing = true;
     TextureCliOptions texture_options;
     PoseOptions pose_options;
     for (std::size_t i = 0; i < args.size(); ++i) {
@@ -158,6 +160,20 @@ int run_render(Args args) {
             settings.freeze_cull = frozen;
         } else if (a == "--validation") {
             validation = true;
+        } else if (a == "--rt") {
+            auto v = value();
+            if (!v || (*v != "on" && *v != "off")) return usage_error("--rt needs on or off");
+            ray_tracing = *v == "on";
+        } else if (a == "--renderer") {
+            auto v = value();
+            const auto kind = v ? gpu::parse_renderer(*v) : std::nullopt;
+            if (!kind) return usage_error("--renderer needs raster or rt");
+            settings.renderer = *kind;
+        } else if (a == "--texture-lod") {
+            auto v = value();
+            if (!v || !parse_number(*v, settings.texture_lod) || !(settings.texture_lod >= 0.0f) ||
+                settings.texture_lod > 16.0f)
+                return usage_error("--texture-lod needs a mip level from 0 to 16");
         } else if (a == "--no-shadows") {
             settings.shadows = false;
         } else if (a == "--prepass") {
@@ -176,6 +192,12 @@ int run_render(Args args) {
     }
     if (spec.empty()) return usage_error("no SCENE given");
     if (out_path.empty()) return usage_error("no output given (-o OUT.png)");
+    const bool ray_traced = settings.renderer == gpu::RendererKind::RayTraced;
+    if (ray_traced && !ray_tracing) return usage_error("--renderer rt needs --rt on");
+    if (ray_traced && !gpu::ray_traced_view(settings.view))
+        return usage_error("--renderer rt does not draw view '" +
+                           std::string(gpu::to_string(settings.view)) + "' yet");
+    if (ray_traced && settings.overlays != 0) return usage_error("--renderer rt draws no overlays");
 
     const auto load_start = std::chrono::steady_clock::now();
     LoadResult loaded = load_scene(spec);
@@ -195,8 +217,11 @@ int run_render(Args args) {
         gpu::ContextOptions options;
         options.validation = validation;
         options.echo_validation = true;
+        options.ray_tracing = ray_tracing;
         gpu::Context context(options);
-        gpu::Renderer renderer(context);
+        gpu::RendererOptions renderer_options;
+        renderer_options.ray_tracing = ray_traced; // acceleration structures built on load
+        gpu::Renderer renderer(context, renderer_options);
         // Textures are prepared (cache lookups, decode, compression) before the upload,
         // as a loader thread would, so the report can time the two apart.
         const gpu::TextureSettings texture_settings = texture_options.gpu_settings();

@@ -72,11 +72,14 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
                                        std::to_string(VK_API_VERSION_MINOR(dev.api_version)) + "." +
                                        std::to_string(VK_API_VERSION_PATCH(dev.api_version))},
                    {"ray_tracing", dev.ray_tracing},
-                   {"ray_query", dev.ray_query}};
+                   {"ray_query", dev.ray_query},
+                   {"ray_tracing_enabled", dev.ray_tracing_enabled},
+                   {"ray_query_enabled", dev.ray_query_enabled}};
     j["scene"] = run.scene;
     j["width"] = run.settings.width;
     j["height"] = run.settings.height;
     j["view"] = std::string(gpu::to_string(run.settings.view));
+    j["renderer"] = std::string(gpu::to_string(run.settings.renderer));
     j["camera"] = run.camera_text;
     j["frames"] = run.frames.size();
 
@@ -92,6 +95,13 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
                                  {"motion", m.motion},
                                  {"total", m.total()},
                                  {"render_targets", renderer.render_target_bytes()}};
+        // What the geometry buffers were made for: acceleration-structure build input
+        // and index device addresses only with ray tracing enabled (`--rt`).
+        j["geometry_buffers"] = {
+            {"usage_flags", m.geometry_usage},
+            {"acceleration_structure_input",
+             (m.geometry_usage &
+              VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR) != 0}};
         j["vertex_layout"] = {
             {"used_streams_bytes", m.vertex_streams},
             {"unified_56_byte_bytes", m.unified_vertex_bytes},

@@ -8,6 +8,7 @@
 #include "shadows.glsl"
 #include "debug_views.glsl"
 #include "material_sampling.glsl"
+#include "surface_views.glsl"
 
 layout(location = 0) in vec3 in_world_pos;
 layout(location = 1) in vec3 in_normal;
@@ -81,63 +82,24 @@ void main() {
     if (m.alpha_mode == SHERPA_ALPHA_MASK && base.a < m.alpha_cutoff) discard;
 
     vec3 v = normalize(frame.camera_position.xyz - in_world_pos);
-    vec3 n = normalize(in_normal);
-    vec3 t = tangent.xyz;
-    t = dot(t, t) > 1e-12 ? normalize(t - n * dot(n, t)) : vec3(1.0, 0.0, 0.0);
-    float handedness = tangent.w < 0.0 ? -1.0 : 1.0;
-    vec3 b = cross(n, t) * handedness;
-    // Double-sided back faces shade with the normal flipped (glTF spec). The shadow
+    // Double-sided back faces shade with the frame flipped (shading_frame). The shadow
     // lookup offsets along the same side: offset along the unflipped normal, a back
     // face lit from its own side would look up behind itself and shadow itself.
-    vec3 shadow_normal = in_normal;
-    if (m.double_sided != 0u && !gl_FrontFacing) {
-        shadow_normal = -in_normal;
-        n = -n;
-        t = -t;
-        b = -b;
-    }
+    const bool flip = m.double_sided != 0u && !gl_FrontFacing;
+    vec3 n, t, b;
+    shading_frame(in_normal, tangent, flip, n, t, b);
+    vec3 shadow_normal = flip ? -in_normal : in_normal;
 
     vec3 c;
+    if (!surface_view_color(view, m, x, base, n, t, b, tangent.w, uv0, uv1, pc.mesh_flags, c)) {
     switch (view) {
-    case VIEW_NORMAL: c = encode_vector(n); break;
-    case VIEW_TANGENT: c = encode_vector(t); break;
-    case VIEW_BITANGENT: c = encode_vector(b); break;
-    case VIEW_TANGENT_W:
-        c = tangent.w > 0.0 ? vec3(0.15, 0.75, 0.2) : tangent.w < 0.0 ? vec3(0.9, 0.15, 0.1)
-                                                                      : vec3(0.95, 0.8, 0.1);
-        break;
-    case VIEW_UV0: c = vec3(fract(uv0), 0.0); break;
-    case VIEW_UV1: c = vec3(fract(uv1), 0.0); break;
     case VIEW_UV0_CHECKER: c = checker_color(uv0, frame.overlay.y); break;
     case VIEW_UV1_CHECKER: c = checker_color(uv1, frame.overlay.y); break;
-    case VIEW_BASE_COLOR: c = base.rgb; break;
-    // Specular-glossiness materials have no metallic value: the metallic view flags
-    // them (SPEC_GLOSS_FLAG, sherpa::gpu::kSpecGlossFlagColor), their roughness is 1 - glossiness and their F0 the
-    // specular colour (VIEW_SPECULAR; metal-rough: mix(0.04, base, metallic)).
-    case VIEW_METALLIC:
-        c = x.workflow == WORKFLOW_SPECULAR_GLOSSINESS
-                ? SPEC_GLOSS_FLAG
-                : vec3(metallic_roughness(m, metallic_roughness_texel(m, x, uv0, uv1)).x);
-        break;
-    case VIEW_ROUGHNESS:
-        c = vec3(x.workflow == WORKFLOW_SPECULAR_GLOSSINESS
-                     ? 1.0 - specular_glossiness(x, uv0, uv1).a
-                     : metallic_roughness(m, metallic_roughness_texel(m, x, uv0, uv1)).y);
-        break;
-    case VIEW_SPECULAR:
-        c = x.workflow == WORKFLOW_SPECULAR_GLOSSINESS
-                ? specular_glossiness(x, uv0, uv1).rgb
-                : mix(vec3(0.04), base.rgb, metallic_roughness(m, metallic_roughness_texel(m, x, uv0, uv1)).x);
-        break;
-    case VIEW_OCCLUSION: c = vec3(occlusion(m, x, uv0, uv1)); break;
-    case VIEW_EMISSIVE: c = emission(m, x, uv0, uv1); break;
     case VIEW_GEOMETRIC_VS_SHADING: {
         vec3 sn = mapped_normal(m, x, t, b, n, uv0, uv1);
         c = angle_ramp(acos(clamp(dot(geometric_normal(v), sn), -1.0, 1.0)));
         break;
     }
-    case VIEW_PROVENANCE: c = provenance_color((pc.mesh_flags >> TANGENT_PROVENANCE_SHIFT) & 3u); break;
-    case VIEW_SHADING_NORMAL: c = encode_vector(mapped_normal(m, x, t, b, n, uv0, uv1)); break;
     case VIEW_JOINT_INFLUENCE: c = heat_ramp(in_joint_weight); break;
     default: {
         if (x.unlit != 0u || UNLIT_TOPOLOGY) {
@@ -170,6 +132,7 @@ void main() {
         c += ambient_light(s, frame.ambient.rgb) * ao;
         c += emission(m, x, uv0, uv1);
         break;
+    }
     }
     }
     // Colour views (lit, base colour, emissive) are linear radiance; the rest are data.

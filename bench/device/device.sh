@@ -1,10 +1,13 @@
 #!/bin/sh
-# device.sh TARBALL OUT: on the device machine, unpack pack.sh's bundle and run
+# device.sh TARBALL OUT [rt]: on the device machine, unpack pack.sh's bundle and run
 # every asset through the renderer with the validation layer on (any message
-# fails), then the render benchmark at 1280x720. Results land in OUT.
+# fails), then the render benchmark at 1280x720. Results land in OUT. With `rt`:
+# `sherpa-cli rt --json --validation` (acceleration structures) of every asset and
+# the 100k grid instead, one JSON per scene, rt_summary.txt with the totals.
 set -u
 tarball=$1
 out=$2
+mode=${3:-render}
 work=/tmp/sherpa-device
 rm -rf "$work" && mkdir -p "$work" && tar -C "$work" -xJf "$tarball" || exit 1
 s=$work/sherpa
@@ -24,6 +27,25 @@ for d in "$s"/gltf/*/; do
     n=$(basename "$d")
     [ -f "$d/glTF/$n.gltf" ] && scenes="$scenes $d/glTF/$n.gltf"
 done
+if [ "$mode" = rt ]; then
+    for scene in $scenes "builtin:grid?n=100000"; do
+        name=$(basename "$scene" .gltf | tr ':?=' '___')
+        if "$s/run.sh" sherpa-cli rt "$scene" --json --validation >"$out/rt_$name.json" \
+            2>"$out/rt_$name.log"; then echo "ok   $name"; else echo "FAIL $name"; cat "$out/rt_$name.log"; fail=1; fi
+    done
+    python3 - "$out" <<'PY' | tee "$out/rt_summary.txt"
+import json, glob, sys
+for f in sorted(glob.glob(sys.argv[1] + "/rt_*.json")):
+    try: t = json.load(open(f))["totals"]
+    except Exception: continue
+    print(f.split("/")[-1][3:-5], t["blas"], t["triangles"], t["blas_build_bytes"],
+          t["blas_compacted_bytes"], round(t["compaction_ratio"], 3),
+          round(t["blas_mtriangles_per_s"], 1), round(t["build_wall_ms"], 1))
+PY
+    tar -C "$out" -cf "$out/rt.tar" $(cd "$out" && ls rt_*.json rt_*.log) &&
+        (cd "$out" && rm -f rt_*.json rt_*.log)
+    exit $fail
+fi
 for scene in $scenes; do
     name=$(basename "$scene" .gltf | tr ':' '_')
     if "$s/run.sh" sherpa-cli render "$scene" -o "$out/$name.png" --width 640 --height 360 \

@@ -8,7 +8,11 @@ layout(set = 0, binding = 0) uniform sampler2D textures[];
 // sampling code specialised for a statically bound view, several times faster.
 layout(set = 1, binding = 3) uniform sampler2DArrayShadow shadow_map;
 
+// frame.overlay.z >= 0: every texture at that mip level (render --texture-lod, so
+// the ray tracer's explicit LOD and ours sample the same texels); else derivatives.
 vec4 sample_slot(GPUMaterialExtra extra, uint slot, uint tex, vec2 uv0, vec2 uv1) {
-    return texture(textures[tex], transform_uv(extra.uv[slot], uv0, uv1));
+    vec2 uv = transform_uv(extra.uv[slot], uv0, uv1);
+    if (frame.overlay.z >= 0.0) return textureLod(textures[tex], uv, frame.overlay.z);
+    return texture(textures[tex], uv);
 }
 #endif

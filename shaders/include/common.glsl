@@ -36,7 +36,7 @@ layout(set = 1, binding = 0, std140) uniform FrameBlock {
     vec4 sun_radiance;                      // 496: rgb colour * intensity
     vec4 ambient;                           // 512: rgb ambient radiance
     uvec4 params;                           // 528: x view, y lights, z cascades, w shadow taps
-    vec4 overlay;                           // 544: x glyph length, y uv checks per unit
+    vec4 overlay;                           // 544: x glyph length, y uv checks per unit, z texture LOD
     vec4 cascade_texel;                     // 560: world size of a shadow texel per cascade
     GPULight lights[MAX_LIGHTS];            // 576
 } frame;
@@ -59,9 +59,7 @@ layout(set = 1, binding = 1, std430) readonly buffer MaterialBlock {
 layout(set = 1, binding = 2, std430) readonly buffer MaterialExtraBlock {
     GPUMaterialExtra material_extras[];
 };
-layout(buffer_reference, scalar, buffer_reference_align = 4) readonly buffer Vec2Ref { vec2 v[]; };
-layout(buffer_reference, scalar, buffer_reference_align = 4) readonly buffer Vec3Ref { vec3 v[]; };
-layout(buffer_reference, scalar, buffer_reference_align = 4) readonly buffer Vec4Ref { vec4 v[]; };
+#include "stream_refs.glsl" // Vec2Ref, Vec3Ref, Vec4Ref
 struct LineVertex {
     vec4 position;
     vec4 color;
@@ -125,11 +123,6 @@ vec4 fetch_color(uint i) { return has(HAS_COLOR) ? pc.colors.v[i] : vec4(1.0); }
 
 mat3 normal_matrix(GPUInstanceData inst) {
     return mat3(inst.normal_matrix[0].xyz, inst.normal_matrix[1].xyz, inst.normal_matrix[2].xyz);
-}
-
-vec2 transform_uv(GPUTextureTransform t, vec2 uv0, vec2 uv1) {
-    vec3 uv = vec3(t.row0.w > 0.5 ? uv1 : uv0, 1.0);
-    return vec2(dot(t.row0.xyz, uv), dot(t.row1.xyz, uv));
 }
 
 #endif

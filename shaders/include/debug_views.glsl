@@ -10,6 +10,7 @@ vec3 display_to_linear(vec3 c) {
     return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), greaterThan(c, vec3(0.04045)));
 }
 
+#ifndef SHERPA_NO_DERIVATIVES // ray-tracing stages have no fwidth
 // The uv checker, `density` checks per UV unit, box-filtered over the pixel's UV
 // footprint (fwidth): the analytic integral of the square wave, so far or
 // minified checks fade to their mean instead of aliasing into moiré. 0 or 1 on
@@ -27,6 +28,7 @@ vec3 checker_color(vec2 uv, float density) {
     vec3 tint = vec3(fract(uv), 0.0) * 0.5 + 0.25;
     return mix(vec3(0.1), tint + 0.5, k);
 }
+#endif
 
 // Authored: green, generated: yellow, defaulted: red.
 vec3 provenance_color(uint p) {

@@ -22,4 +22,9 @@ struct GPUMaterialExtra {
     vec4 specular_glossiness;           // 208: xyz specularFactor, w glossinessFactor
 };
 
+vec2 transform_uv(GPUTextureTransform t, vec2 uv0, vec2 uv1) {
+    vec3 uv = vec3(t.row0.w > 0.5 ? uv1 : uv0, 1.0);
+    return vec2(dot(t.row0.xyz, uv), dot(t.row1.xyz, uv));
+}
+
 #endif

@@ -119,6 +119,11 @@ TEST_F(ResourcesTest, ContextRecordsDeviceCapabilities) {
     // Lavapipe from Mesa 25 exposes ray tracing; the flag must say what the device has.
     if (info.name.find("llvmpipe") != std::string::npos) {
         EXPECT_TRUE(info.ray_query);
+        // Enabled by default (ContextOptions::ray_tracing), with its properties.
+        EXPECT_TRUE(info.ray_tracing_enabled);
+        EXPECT_TRUE(info.ray_query_enabled);
+        EXPECT_GT(info.as_scratch_alignment, 0u);
+        EXPECT_GT(info.shader_group_handle_size, 0u);
     }
 }
 

@@ -53,17 +53,29 @@ TEST(DebugViewTable, GeneratedGlslHeaderAgreesWithTheTable) {
     EXPECT_EQ(glsl_constants(read_text(dir + "/sherpa_overlays.glsl"), "OVERLAY_"), overlays);
 }
 
-TEST(DebugViewTable, ForwardShaderHasACaseForEveryViewButLit) {
-    const std::string frag = read_text(std::string(SHERPA_SHADER_DIR) + "/forward.frag");
+std::set<std::string> view_cases(const std::string& shader) {
+    const std::string text = read_text(std::string(SHERPA_SHADER_DIR) + "/" + shader);
     std::set<std::string> cases;
     const std::regex case_re("case VIEW_(\\w+):");
-    for (auto it = std::sregex_iterator(frag.begin(), frag.end(), case_re);
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), case_re);
          it != std::sregex_iterator(); ++it)
         cases.insert((*it)[1]);
-    std::set<std::string> expected;
-    for (const gpu::DebugViewInfo& v : gpu::kDebugViews)
+    return cases;
+}
+
+// The forward shader's own cases plus the surface-data views it shares with the ray
+// tracer (include/surface_views.glsl); those are exactly the ray-traced views.
+TEST(DebugViewTable, ForwardShaderHasACaseForEveryViewButLit) {
+    std::set<std::string> cases = view_cases("forward.frag");
+    const std::set<std::string> surface = view_cases("include/surface_views.glsl");
+    cases.insert(surface.begin(), surface.end());
+    std::set<std::string> expected, ray_traced;
+    for (const gpu::DebugViewInfo& v : gpu::kDebugViews) {
         if (v.id != gpu::DebugView::Lit) expected.insert(glsl_name(v.name)); // lit: `default:`
+        if (gpu::ray_traced_view(v.id)) ray_traced.insert(glsl_name(v.name));
+    }
     EXPECT_EQ(cases, expected);
+    EXPECT_EQ(surface, ray_traced);
 }
 
 TEST(DebugViewTable, NamesAndLabelsAreUniqueAndComplete) {

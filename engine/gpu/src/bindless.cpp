@@ -9,8 +9,14 @@ namespace sherpa::gpu {
 
 BindlessTable::BindlessTable(ResourceManager& resources) : resources_(resources) {
     VkDevice device = resources.context().device();
+    // Hit shaders sample materials too where the device ray traces.
+    const VkShaderStageFlags stages = resources.context().info().ray_tracing_enabled
+                                          ? VK_SHADER_STAGE_FRAGMENT_BIT |
+                                                VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR |
+                                                VK_SHADER_STAGE_ANY_HIT_BIT_KHR
+                                          : VkShaderStageFlags(VK_SHADER_STAGE_FRAGMENT_BIT);
     VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCapacity,
-                                         VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+                                         stages, nullptr};
     // Slots are written while earlier frames that do not read them are in flight.
     const VkDescriptorBindingFlags flags = VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT |
                                            VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT |

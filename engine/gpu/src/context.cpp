@@ -1,4 +1,5 @@
 #include "device_features.h"
+#include "ray_tracing_features.h"
 #include <sherpa/gpu/context.h>
 
 #include <sherpa/gpu/gpu_error.h>
@@ -53,7 +54,7 @@ Context::Context(const ContextOptions& options)
     try {
         create_instance(options);
         pick_physical_device(options);
-        create_device(options.presentation);
+        create_device(options.presentation, options.ray_tracing);
     } catch (...) {
         destroy(); // the destructor does not run for a throwing constructor
         throw;
@@ -170,7 +171,7 @@ bool samples_bc(VkPhysicalDevice physical) {
 
 } // namespace
 
-void Context::create_device(bool presentation) {
+void Context::create_device(bool presentation, bool ray_tracing) {
     std::uint32_t n = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(physical_, &n, nullptr);
     std::vector<VkQueueFamilyProperties> families(n);
@@ -223,30 +224,19 @@ void Context::create_device(bool presentation) {
     info_.pipeline_statistics = f.core.features.pipelineStatisticsQuery;
     info_.bc_textures = f.core.features.textureCompressionBC && samples_bc(physical_);
 
-    // Ray tracing is recorded for a later issue, not enabled.
-    if (has_extension(exts, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME) &&
-        has_extension(exts, VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME)) {
-        VkPhysicalDeviceAccelerationStructureFeaturesKHR as =
-            vk_init<VkPhysicalDeviceAccelerationStructureFeaturesKHR>(
-                VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR);
-        VkPhysicalDeviceRayTracingPipelineFeaturesKHR rt =
-            vk_init<VkPhysicalDeviceRayTracingPipelineFeaturesKHR>(
-                VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR);
-        VkPhysicalDeviceRayQueryFeaturesKHR rq = vk_init<VkPhysicalDeviceRayQueryFeaturesKHR>(
-            VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR);
-        as.pNext = &rt;
-        rt.pNext = &rq;
-        VkPhysicalDeviceFeatures2 f2 =
-            vk_init<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
-        f2.pNext = &as;
-        vkGetPhysicalDeviceFeatures2(physical_, &f2);
-        const bool pipeline_ext = has_extension(exts, VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME);
-        const bool query_ext = has_extension(exts, VK_KHR_RAY_QUERY_EXTENSION_NAME);
-        info_.ray_query = as.accelerationStructure && query_ext && rq.rayQuery;
-        info_.ray_tracing = as.accelerationStructure && pipeline_ext && rt.rayTracingPipeline;
+    std::vector<const char*> enabled;
+    // Ray tracing: recorded always, enabled where supported unless switched off.
+    RayTracingFeatures rt;
+    rt.query_support(physical_, exts);
+    info_.ray_tracing = rt.pipelines;
+    info_.ray_query = rt.query;
+    if (ray_tracing && rt.pipelines) {
+        rt.enable(f.v13, enabled);
+        info_.ray_tracing_enabled = true;
+        info_.ray_query_enabled = rt.query;
+        record_ray_tracing_properties(physical_, info_);
     }
 
-    std::vector<const char*> enabled;
     if (presentation) {
         if (!has_extension(exts, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
             throw GpuError(info_.name + ": presentation requested but VK_KHR_swapchain is missing");

@@ -87,7 +87,8 @@ void Renderer::Impl::write_frame_data(FrameContext& frame) {
     f.params = glm::uvec4(static_cast<std::uint32_t>(settings.view), count, cascades, taps);
     const float diagonal = info.bounds.valid() ? glm::length(info.bounds.extent()) : 1.0f;
     f.overlay = glm::vec4(settings.glyph_length > 0.0f ? settings.glyph_length : 0.02f * diagonal,
-                          settings.uv_checker_density, 0.0f, 0.0f);
+                          settings.uv_checker_density,
+                          settings.texture_lod >= 0.0f ? settings.texture_lod : -1.0f, 0.0f);
     std::memcpy(resources->get(slot.frame_data).mapped, &f, sizeof(f));
 }
 

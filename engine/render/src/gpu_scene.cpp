@@ -191,10 +191,20 @@ void GpuScene::upload_geometry(const Scene& scene) {
                                         (mesh.colors.empty() ? 0 : 16ull * mesh.colors.size());
     }
 
+    // Ray tracing builds from positions and indices and reads every stream in hit
+    // shaders by device address; without it the buffers carry none of that usage.
+    const bool rt = resources_.context().info().ray_tracing_enabled;
+    const VkBufferUsageFlags as_input =
+        rt ? VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR : 0;
+    const VkBufferUsageFlags vertex_usage = kStorage | as_input;
+    const VkBufferUsageFlags index_usage = VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
+                                           VK_BUFFER_USAGE_TRANSFER_DST_BIT | as_input |
+                                           (rt ? VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT : 0);
     UploadBatch batch(resources_);
     if (!streams.empty()) {
         vertices_ = resources_.create_buffer(
-            {streams.size(), kStorage, MemoryUsage::DeviceLocal, "vertex streams"});
+            {streams.size(), vertex_usage, MemoryUsage::DeviceLocal, "vertex streams"});
+        memory_.geometry_usage |= vertex_usage;
         batch.upload_buffer(vertices_, 0, streams.data(), streams.size());
         const VkDeviceAddress base = resources_.get(vertices_).address;
         for (std::size_t m = 0; m < meshes_.size(); ++m)
@@ -203,9 +213,9 @@ void GpuScene::upload_geometry(const Scene& scene) {
     }
     if (!indices.empty()) {
         const VkDeviceSize bytes = indices.size() * sizeof(std::uint32_t);
-        indices_ = resources_.create_buffer(
-            {bytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-             MemoryUsage::DeviceLocal, "indices"});
+        indices_ =
+            resources_.create_buffer({bytes, index_usage, MemoryUsage::DeviceLocal, "indices"});
+        memory_.geometry_usage |= index_usage;
         batch.upload_buffer(indices_, 0, indices.data(), bytes);
     }
     upload_motion(scene, instanced, batch);

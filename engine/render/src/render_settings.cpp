@@ -21,6 +21,38 @@ std::optional<Overlay> parse_overlay(std::string_view name) {
     return find_overlay(name);
 }
 
+std::string_view to_string(RendererKind k) {
+    return k == RendererKind::RayTraced ? "rt" : "raster";
+}
+
+std::optional<RendererKind> parse_renderer(std::string_view name) {
+    for (RendererKind k : {RendererKind::Raster, RendererKind::RayTraced})
+        if (to_string(k) == name) return k;
+    return std::nullopt;
+}
+
+bool ray_traced_view(DebugView v) {
+    switch (v) {
+    case DebugView::Normal:
+    case DebugView::Tangent:
+    case DebugView::Bitangent:
+    case DebugView::TangentW:
+    case DebugView::Uv0:
+    case DebugView::Uv1:
+    case DebugView::BaseColor:
+    case DebugView::Metallic:
+    case DebugView::Roughness:
+    case DebugView::Occlusion:
+    case DebugView::Emissive:
+    case DebugView::Provenance:
+    case DebugView::ShadingNormal:
+    case DebugView::Specular:
+        return true;
+    default:
+        return false;
+    }
+}
+
 std::string_view to_string(CullPath p) {
     switch (p) {
     case CullPath::None:

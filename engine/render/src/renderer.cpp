@@ -100,6 +100,8 @@ void Renderer::Impl::bind_frame_set(FrameSlot& slot) {
 Renderer::Impl::~Impl() {
     context.wait_idle();
     culling.reset();
+    rt_views_.reset();
+    acceleration.reset();
     scene.reset();
     for (auto& slot : slots_) {
         resources->destroy(slot->frame_data);
@@ -127,6 +129,12 @@ Pipelines& Renderer::Impl::pipelines_for(VkFormat format) {
 
 void Renderer::Impl::load(const Scene& source, std::unique_ptr<GpuScene> gpu_scene) {
     scene = std::move(gpu_scene);
+    if (options.ray_tracing) {
+        if (!context.info().ray_tracing_enabled)
+            throw GpuError("ray tracing was asked for but the device does not ray trace "
+                           "(or it was turned off: --rt off)");
+        acceleration = std::make_unique<SceneAccelerationStructures>(*resources, source, *scene);
+    }
     culling.build(*scene);
     pose_.build(source, *scene);
     lighting_.bounds = scene->bounds().valid() ? scene->bounds() : source.bounds;
@@ -164,6 +172,7 @@ void Renderer::Impl::unload() {
     }
     culling.reset();
     pose_.reset();
+    acceleration.reset();
     scene.reset();
     ++scene_generation_; // frame sets must stop naming the freed material buffers
     lighting_ = Scene{};
@@ -234,6 +243,7 @@ FrameStats Renderer::Impl::render(const RenderSettings& settings, std::vector<st
         settings.height > 16384)
         throw GpuError("render size " + std::to_string(settings.width) + "x" +
                        std::to_string(settings.height) + " is out of range");
+    if (settings.renderer == RendererKind::RayTraced) return render_rt(settings, rgba);
     const std::uint32_t index = next_slot_;
     next_slot_ = (next_slot_ + 1) % kFramesInFlight;
     FrameSlot& slot = *slots_[index];

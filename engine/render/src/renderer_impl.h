@@ -2,8 +2,10 @@
 // The Renderer's inside (private to the render layer): frame resources, targets,
 // pipelines and the passes, in frame order in record_passes() (renderer_frame.cpp).
 #include "passes.h"
+#include "rt_view_pass.h"
 
 #include <sherpa/gpu/bindless.h>
+#include <sherpa/render/acceleration_structures.h>
 #include <sherpa/render/gpu_scene.h>
 
 #include <map>
@@ -37,6 +39,8 @@ public:
     std::unique_ptr<ResourceManager> resources;
     std::unique_ptr<BindlessTable> bindless;
     std::unique_ptr<GpuScene> scene;
+    // With RendererOptions::ray_tracing: the scene's BLAS/TLAS and the ray-traced views.
+    std::unique_ptr<SceneAccelerationStructures> acceleration;
     CullingPass culling;
 
 private:
@@ -62,6 +66,10 @@ private:
     void ensure_depth(std::uint32_t width, std::uint32_t height);
     Pipelines& pipelines_for(VkFormat format);
     FrameStats read_stats(FrameSlot& slot);
+    // RenderSettings::renderer = RayTraced (renderer_rt.cpp).
+    FrameStats render_rt(const RenderSettings& settings, std::vector<std::uint8_t>* rgba);
+
+    std::unique_ptr<RtViewPass> rt_views_;
 
     PosePass pose_;
     ShadowPass shadows_;

@@ -1,8 +1,9 @@
 #pragma once
 // The Vulkan instance, physical device and logical device the engine renders with.
 // Requires Vulkan 1.3 with dynamic rendering, synchronization2, descriptor
-// indexing, buffer device address and scalar block layout; ray-tracing support is
-// detected and recorded (not enabled). No window-system types: a caller that wants
+// indexing, buffer device address and scalar block layout. Acceleration structures
+// and ray-tracing pipelines (and ray query) are enabled where the device has them,
+// unless ContextOptions::ray_tracing is off. No window-system types: a caller that wants
 // to present creates its surface from instance() (or hands in its own instance
 // created with required_instance_extensions()).
 #include <cstdint>
@@ -35,6 +36,10 @@ struct ContextOptions {
     bool presentation = false;
     // Print each validation message to stderr as it arrives (from instance creation on).
     bool echo_validation = false;
+    // Enable acceleration structures and ray-tracing pipelines (+ ray query) where the
+    // device has them. Off (`--rt off`): none of it is enabled, and nothing the engine
+    // allocates carries acceleration-structure or extra device-address usage.
+    bool ray_tracing = true;
 
     static bool default_validation();
 };
@@ -44,8 +49,18 @@ struct DeviceInfo {
     std::uint32_t api_version = 0;
     std::uint32_t driver_version = 0;
     VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
-    bool ray_tracing = false; // acceleration structures + ray-tracing pipelines + ray query
+    // What the device supports: acceleration structures + ray-tracing pipelines, and
+    // ray query (with acceleration structures).
+    bool ray_tracing = false;
     bool ray_query = false;
+    // What this context enabled (support and ContextOptions::ray_tracing).
+    bool ray_tracing_enabled = false;
+    bool ray_query_enabled = false;
+    // VkPhysicalDeviceAccelerationStructurePropertiesKHR / RayTracingPipelineProperties
+    // (0 while ray tracing is not enabled).
+    std::uint32_t as_scratch_alignment = 0;
+    std::uint32_t shader_group_handle_size = 0, shader_group_handle_alignment = 0,
+                  shader_group_base_alignment = 0, max_ray_recursion_depth = 0;
     bool swapchain = false; // VK_KHR_swapchain enabled
     bool anisotropy = false;
     bool wide_lines = false;
@@ -90,7 +105,7 @@ public:
 private:
     void create_instance(const ContextOptions& options);
     void pick_physical_device(const ContextOptions& options);
-    void create_device(bool presentation);
+    void create_device(bool presentation, bool ray_tracing);
     void destroy();
 
     std::unique_ptr<ValidationLog> validation_;

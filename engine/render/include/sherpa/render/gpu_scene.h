@@ -23,6 +23,10 @@ struct GpuMemoryReport {
     std::uint64_t motion = 0;
     // The same vertices in the 56-byte unified layout (+16-byte colour stream where present).
     std::uint64_t unified_vertex_bytes = 0;
+    // VkBufferUsageFlags of the vertex-stream and index buffers: acceleration-structure
+    // build input (and device addresses of the indices) only where the device has ray
+    // tracing enabled.
+    std::uint32_t geometry_usage = 0;
     std::uint64_t total() const {
         return vertex_streams + indices + textures + materials + instances + motion;
     }
@@ -109,6 +113,11 @@ public:
         return indices_.valid() ? resources_.get(indices_).buffer.get() : VK_NULL_HANDLE;
     }
     VkDeviceAddress instances_address() const { return resources_.get(instances_).address; }
+    // Device address of the shared index buffer: 0 unless ray tracing is enabled (what
+    // acceleration-structure builds and hit shaders read) or there are no triangles.
+    VkDeviceAddress index_address() const {
+        return indices_.valid() ? resources_.get(indices_).address : 0;
+    }
     const GpuMemoryReport& memory() const { return memory_; }
     std::uint64_t triangle_count() const { return triangles_; }
     const GpuMaterials& materials() const { return *materials_; }

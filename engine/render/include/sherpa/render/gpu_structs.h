@@ -12,6 +12,7 @@
 
 #include <sherpa/gpu/bindless.h>
 #include <sherpa/scene/material.h>
+#include <sherpa/scene/vertex.h>
 
 namespace sherpa::gpu {
 
@@ -41,8 +42,8 @@ struct GPUFrameData {
     glm::vec4 sun_direction;
     glm::vec4 sun_radiance;
     glm::vec4 ambient;
-    glm::uvec4 params;       // x view, y light count, z cascade count, w shadow taps (1 or 4)
-    glm::vec4 overlay;       // x glyph length, y uv checks per unit
+    glm::uvec4 params; // x view, y light count, z cascade count, w shadow taps (1 or 4)
+    glm::vec4 overlay; // x glyph length, y uv checks per unit, z texture LOD (< 0: derivatives)
     glm::vec4 cascade_texel; // world size of one shadow-map texel, per cascade
     GPULight lights[kMaxLights];
 };
@@ -228,5 +229,37 @@ static_assert(offsetof(GPUCullParams, plane_count) == 600);
 static_assert(offsetof(GPUCullParams, object_count) == 612);
 static_assert(offsetof(GPUCullParams, empty) == 616);
 static_assert(sizeof(VkDrawIndexedIndirectCommand) == 20);
+
+// Ray tracing (shaders/include/rt_geometry.glsl, scalar layout): one record per BLAS
+// geometry (a triangle primitive), found in hit shaders at
+// gl_InstanceCustomIndexEXT + gl_GeometryIndexEXT. Our vertex streams are separate
+// arrays, so the record reaches each one the mesh has on the GPU by device address
+// (0: absent, read as the shader default), and its first index.
+struct GPUGeometryInfo {
+    VkDeviceAddress stream[kVertexAttributeCount]; // by VertexAttribute
+    VkDeviceAddress indices; // the geometry's first index (uint32 triangle list)
+    std::uint32_t material;  // into the materials array
+    std::uint32_t flags;     // mesh_flags (streams, provenance)
+};
+static_assert(kVertexAttributeCount == 6);
+static_assert(offsetof(GPUGeometryInfo, stream) == 0);
+static_assert(offsetof(GPUGeometryInfo, indices) == 48);
+static_assert(offsetof(GPUGeometryInfo, material) == 56);
+static_assert(offsetof(GPUGeometryInfo, flags) == 60);
+static_assert(sizeof(GPUGeometryInfo) == 64);
+
+// Push constants of the ray-tracing debug views (shaders/include/rt_hit.glsl, scalar).
+struct GPURayPushConstants {
+    glm::mat4 inv_view_proj;    // NDC -> world (reverse Z)
+    VkDeviceAddress geometries; // the GPUGeometryInfo array
+    std::uint32_t view;         // DebugView
+    float texture_lod;          // mip level of every texture (< 0: level 0)
+    glm::vec4 clear_color;      // linear
+};
+static_assert(offsetof(GPURayPushConstants, geometries) == 64);
+static_assert(offsetof(GPURayPushConstants, view) == 72);
+static_assert(offsetof(GPURayPushConstants, texture_lod) == 76);
+static_assert(offsetof(GPURayPushConstants, clear_color) == 80);
+static_assert(sizeof(GPURayPushConstants) == 96);
 
 } // namespace sherpa::gpu

@@ -26,6 +26,16 @@ enum class CullPath : std::uint32_t {
 std::string_view to_string(CullPath p);
 std::optional<CullPath> parse_cull_path(std::string_view name);
 
+// Which renderer draws the frame: the rasterizer (every view, overlays, lighting) or
+// primary rays through the scene's acceleration structures (the surface-data views
+// of ray_traced_view(); needs RendererOptions::ray_tracing on a device with it).
+enum class RendererKind : std::uint32_t { Raster, RayTraced };
+std::string_view to_string(RendererKind k);
+std::optional<RendererKind> parse_renderer(std::string_view name); // "raster", "rt"
+// Whether the ray tracer draws `v` (the same formula as the rasterizer, shared in
+// shaders/include/surface_views.glsl); the others are refused, never drawn wrong.
+bool ray_traced_view(DebugView v);
+
 // Depth prepass before opaque shading. Auto picks per device (prepass_enabled).
 enum class PrepassMode : std::uint32_t { Auto, On, Off };
 
@@ -48,6 +58,11 @@ struct RenderSettings {
     // texture UVs); the checker is filtered, so any density is free of moiré.
     float uv_checker_density = kDefaultCheckerDensity;
     CameraSpec camera;
+    RendererKind renderer = RendererKind::Raster;
+    // >= 0: every material texture is sampled at this mip level by both renderers
+    // (rays have no derivatives; comparing them needs the same texels). < 0: the
+    // rasterizer uses derivatives, rays level 0.
+    float texture_lod = -1.0f;
     bool shadows = true;
     std::uint32_t cascades = kDefaultShadowCascades;
     // Reuse the shadow cascades while camera, light and scene are unchanged. False

@@ -71,6 +71,10 @@ struct RendererOptions {
     std::uint32_t shadow_resolution = kDefaultShadowResolution;
     // How load(scene) prepares textures; default: no disk cache, BC where supported.
     TextureSettings textures;
+    // Build the scene's acceleration structures on load (off the frame path) so that
+    // RenderSettings::renderer = RayTraced can draw; needs a Context with
+    // DeviceInfo::ray_tracing_enabled (else load() throws). Off: nothing RT is made.
+    bool ray_tracing = false;
 };
 
 class Renderer {

@@ -1,0 +1,204 @@
+// sherpa-cli rt SCENE [--json] [--validation] [--scratch-budget BYTES] [--no-compact]
+//                     [--rt on|off]
+// The scene's ray-tracing data on the device: per BLAS (one per glTF mesh) its
+// geometries, triangles, build time, size before and after compaction and scratch;
+// the TLAS instances (deduplicated, mirrored, hidden, non-finite) and memory totals.
+// Textures are not prepared: acceleration structures do not read them.
+#include "cli_common.h"
+
+#include <sherpa/gpu/bindless.h>
+#include <sherpa/gpu/context.h>
+#include <sherpa/render/acceleration_structures.h>
+#include <sherpa/render/gpu_scene.h>
+#include <sherpa/scene/scene_loader.h>
+#include <sherpa/texture/texture_pipeline.h>
+
+#include <charconv>
+#include <cstdio>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+namespace sherpa::cli {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: sherpa-cli rt SCENE [--json] [--validation] [--scratch-budget BYTES] [--no-compact]\n"
+    "                           [--rt on|off]\n";
+
+int usage_error(const std::string& what) {
+    std::fprintf(stderr, "error: %s\n%s", what.c_str(), kUsage);
+    return kExitUsage;
+}
+
+double ratio(std::uint64_t after, std::uint64_t before) {
+    return before ? double(after) / double(before) : 1.0;
+}
+
+// Triangles per second of GPU build time, in millions (0 when unmeasured).
+double mtris_per_s(const gpu::AccelerationStats& s) {
+    double ms = 0.0;
+    for (const gpu::BlasStats& b : s.blas) ms += b.build_ms > 0.0 ? b.build_ms : 0.0;
+    return ms > 0.0 ? double(s.blas_triangles()) / (ms * 1e3) : 0.0;
+}
+
+nlohmann::json to_json(const gpu::Context& context, const gpu::AccelerationStats& s) {
+    nlohmann::json blas = nlohmann::json::array();
+    for (const gpu::BlasStats& b : s.blas)
+        blas.push_back({{"mesh", b.mesh},
+                        {"name", b.name},
+                        {"geometries", b.geometries},
+                        {"opaque_geometries", b.opaque_geometries},
+                        {"triangles", b.triangles},
+                        {"first_geometry", b.first_geometry},
+                        {"batch", b.batch},
+                        {"build_ms", b.build_ms},
+                        {"build_bytes", b.build_bytes},
+                        {"compacted_bytes", b.compacted_bytes},
+                        {"scratch_bytes", b.scratch_bytes}});
+    const gpu::TlasStats& t = s.tlas;
+    return {{"device",
+             {{"name", context.info().name},
+              {"ray_tracing_enabled", context.info().ray_tracing_enabled},
+              {"ray_query_enabled", context.info().ray_query_enabled}}},
+            {"blas", blas},
+            {"tlas",
+             {{"node_mesh_pairs", t.node_mesh_pairs},
+              {"instances", t.instances},
+              {"deduplicated", t.deduplicated},
+              {"mirrored", t.mirrored},
+              {"hidden", t.hidden},
+              {"non_finite", t.non_finite},
+              {"bytes", t.bytes},
+              {"scratch_bytes", t.scratch_bytes},
+              {"instance_buffer_bytes", t.instance_buffer_bytes},
+              {"build_ms", t.build_ms}}},
+            {"totals",
+             {{"blas", s.blas.size()},
+              {"triangles", s.blas_triangles()},
+              {"blas_build_bytes", s.blas_build_bytes()},
+              {"blas_compacted_bytes", s.blas_compacted_bytes()},
+              {"compaction_ratio", ratio(s.blas_compacted_bytes(), s.blas_build_bytes())},
+              {"geometry_records", s.geometry_records},
+              {"geometry_record_bytes", s.geometry_record_bytes},
+              {"total_bytes", s.total_bytes()},
+              {"batches", s.batches},
+              {"scratch_budget", s.scratch_budget},
+              {"scratch_buffer_bytes", s.scratch_buffer_bytes},
+              {"blas_mtriangles_per_s", mtris_per_s(s)},
+              {"build_wall_ms", s.build_wall_ms}}},
+            {"warnings", s.warnings}};
+}
+
+void print_text(const gpu::Context& context, const gpu::AccelerationStats& s) {
+    std::printf("device: %s (ray query %s)\n", context.info().name.c_str(),
+                context.info().ray_query_enabled ? "enabled" : "absent");
+    std::printf("%-5s %-24s %6s %6s %10s %9s %12s %12s %6s %12s %5s\n", "mesh", "name", "geoms",
+                "opaque", "triangles", "build ms", "built B", "compacted B", "ratio", "scratch B",
+                "batch");
+    for (const gpu::BlasStats& b : s.blas)
+        std::printf("%-5u %-24.24s %6u %6u %10llu %9.3f %12llu %12llu %6.3f %12llu %5u\n", b.mesh,
+                    b.name.c_str(), b.geometries, b.opaque_geometries,
+                    (unsigned long long)b.triangles, b.build_ms, (unsigned long long)b.build_bytes,
+                    (unsigned long long)b.compacted_bytes, ratio(b.compacted_bytes, b.build_bytes),
+                    (unsigned long long)b.scratch_bytes, b.batch);
+    const gpu::TlasStats& t = s.tlas;
+    std::printf("TLAS: %llu instances of %llu (node, mesh) pairs: %llu deduplicated, %llu "
+                "mirrored, %llu hidden, %llu non-finite; %llu B, scratch %llu B, instances %llu "
+                "B, build %.3f ms\n",
+                (unsigned long long)t.instances, (unsigned long long)t.node_mesh_pairs,
+                (unsigned long long)t.deduplicated, (unsigned long long)t.mirrored,
+                (unsigned long long)t.hidden, (unsigned long long)t.non_finite,
+                (unsigned long long)t.bytes, (unsigned long long)t.scratch_bytes,
+                (unsigned long long)t.instance_buffer_bytes, t.build_ms);
+    std::printf(
+        "totals: %zu BLAS, %llu triangles, BLAS %llu -> %llu B compacted (%.3f), %llu "
+        "geometry records (%llu B), %llu B in all; %u batches under a %llu B scratch "
+        "budget (scratch buffer %llu B); %.2f M triangles/s; %.1f ms wall\n",
+        s.blas.size(), (unsigned long long)s.blas_triangles(),
+        (unsigned long long)s.blas_build_bytes(), (unsigned long long)s.blas_compacted_bytes(),
+        ratio(s.blas_compacted_bytes(), s.blas_build_bytes()),
+        (unsigned long long)s.geometry_records, (unsigned long long)s.geometry_record_bytes,
+        (unsigned long long)s.total_bytes(), s.batches, (unsigned long long)s.scratch_budget,
+        (unsigned long long)s.scratch_buffer_bytes, mtris_per_s(s), s.build_wall_ms);
+}
+
+} // namespace
+
+int run_rt(Args args) {
+    std::string_view spec;
+    bool as_json = false, validation = gpu::ContextOptions::default_validation(), rt = true;
+    gpu::AccelerationSettings settings;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string_view a = args[i];
+        if (a == "--json") {
+            as_json = true;
+        } else if (a == "--validation") {
+            validation = true;
+        } else if (a == "--no-compact") {
+            settings.compact = false;
+        } else if (a == "--scratch-budget") {
+            std::uint64_t bytes = 0;
+            const std::string_view v = i + 1 < args.size() ? args[++i] : std::string_view();
+            const auto r = std::from_chars(v.data(), v.data() + v.size(), bytes);
+            if (v.empty() || r.ec != std::errc() || r.ptr != v.data() + v.size() || bytes == 0)
+                return usage_error("--scratch-budget needs a positive number of bytes");
+            settings.scratch_budget = bytes;
+        } else if (a == "--rt") {
+            const std::string_view v = i + 1 < args.size() ? args[++i] : std::string_view();
+            if (v != "on" && v != "off") return usage_error("--rt needs on or off");
+            rt = v == "on";
+        } else if (!a.empty() && a[0] == '-') {
+            return usage_error("unknown option '" + std::string(a) + "'");
+        } else if (spec.empty()) {
+            spec = a;
+        } else {
+            return usage_error("more than one SCENE given");
+        }
+    }
+    if (spec.empty()) return usage_error("no SCENE given");
+    LoadResult loaded = load_scene(spec);
+    if (!loaded) {
+        std::fprintf(stderr, "error: %s\n", loaded.error.c_str());
+        return kExitLoadError;
+    }
+    try {
+        gpu::ContextOptions options;
+        options.validation = validation;
+        options.echo_validation = true;
+        options.ray_tracing = rt;
+        gpu::Context context(options);
+        if (!context.info().ray_tracing_enabled) {
+            std::fprintf(stderr, "error: %s: ray tracing is %s\n", context.info().name.c_str(),
+                         rt ? "not supported by the device" : "off (--rt off)");
+            return kExitLoadError;
+        }
+        gpu::ResourceManager resources(context);
+        gpu::BindlessTable table(resources);
+        {
+            // No textures: the structures read positions and indices only.
+            gpu::GpuScene scene(resources, table, *loaded.scene,
+                                std::make_shared<const tex::PreparedTextureSet>(),
+                                gpu::StreamPolicy::UsedByMaterials, gpu::MissingTextures::Neutral);
+            gpu::SceneAccelerationStructures structures(resources, *loaded.scene, scene, settings);
+            for (const auto& w : structures.stats().warnings)
+                std::fprintf(stderr, "warning: %s\n", w.c_str());
+            if (as_json)
+                std::cout << to_json(context, structures.stats()).dump(1) << "\n";
+            else
+                print_text(context, structures.stats());
+        }
+        resources.flush();
+        if (validation && context.validation().count() > 0) {
+            std::fprintf(stderr, "error: %zu Vulkan validation message(s)\n",
+                         context.validation().count());
+            return kExitLoadError;
+        }
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: %.*s: %s\n", int(spec.size()), spec.data(), e.what());
+        return kExitLoadError;
+    }
+    return kExitOk;
+}
+
+} // namespace sherpa::cli

@@ -1,0 +1,109 @@
+#pragma once
+// A scene's ray-tracing data: one bottom-level acceleration structure per glTF mesh
+// (one geometry per triangle primitive, VK_GEOMETRY_OPAQUE_BIT only for opaque
+// materials, compacted), the GPUGeometryInfo array hit shaders read vertices and
+// materials through, and the top-level structure with one instance per (node, glTF
+// mesh). Built once on scene load, batched under a scratch budget; never per frame
+// (the TLAS is refitted or rebuilt on demand when transforms or visibility change).
+// Needs a Context with DeviceInfo::ray_tracing_enabled (GpuScene's buffers then carry
+// the build-input usage).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <sherpa/gpu/acceleration_structure.h>
+#include <sherpa/gpu/resources.h>
+#include <sherpa/render/gpu_scene.h>
+#include <sherpa/scene/scene.h>
+
+namespace sherpa::gpu {
+
+struct BlasStats {
+    std::uint32_t mesh = 0; // glTF mesh (Mesh::group_id)
+    std::string name;
+    std::uint32_t geometries = 0, opaque_geometries = 0;
+    std::uint64_t triangles = 0;
+    std::uint32_t first_geometry = 0; // its first GPUGeometryInfo record
+    std::uint32_t batch = 0;
+    // GPU time of its build (timestamps around it; the builds of a batch are
+    // serialised by barriers so each is timed alone); negative without timestamps.
+    double build_ms = -1.0;
+    std::uint64_t build_bytes = 0;     // accelerationStructureSize as built
+    std::uint64_t compacted_bytes = 0; // after compaction (= build_bytes when not compacted)
+    std::uint64_t scratch_bytes = 0;   // buildScratchSize
+};
+
+struct TlasStats {
+    std::uint64_t node_mesh_pairs = 0; // (node, glTF mesh) pairs with a BLAS
+    std::uint64_t instances = 0;       // in the TLAS
+    std::uint64_t deduplicated = 0;    // same mesh and identical world transform as another
+    std::uint64_t mirrored = 0;        // negative determinant
+    std::uint64_t hidden = 0;          // excluded: node hidden
+    std::uint64_t non_finite = 0;      // excluded: NaN or infinite transform (with a warning)
+    std::uint64_t bytes = 0, scratch_bytes = 0, instance_buffer_bytes = 0;
+    double build_ms = -1.0; // the last build or refit
+    // Full builds (the first on load, then whenever the instance set changed) and
+    // refits (only transforms moved) so far.
+    std::uint64_t builds = 0, refits = 0;
+};
+
+struct AccelerationStats {
+    std::vector<BlasStats> blas;
+    TlasStats tlas;
+    std::uint32_t batches = 0;
+    std::uint64_t scratch_budget = 0;
+    std::uint64_t scratch_buffer_bytes = 0; // the largest batch's scratch buffer
+    std::uint64_t geometry_records = 0, geometry_record_bytes = 0;
+    double build_wall_ms = 0.0; // everything, on the CPU clock, waits included
+    std::vector<std::string> warnings;
+
+    std::uint64_t blas_triangles() const;
+    std::uint64_t blas_build_bytes() const;
+    std::uint64_t blas_compacted_bytes() const;
+    // Device memory kept after the build: compacted BLAS, TLAS, instances, records.
+    std::uint64_t total_bytes() const;
+};
+
+struct AccelerationSettings {
+    // The summed scratch of the BLAS built in one submission stays under this; a BLAS
+    // that alone needs more is built alone.
+    std::uint64_t scratch_budget = 64ull << 20;
+    bool compact = true;
+    // Per node: true excludes its instances (empty: every node shown).
+    std::vector<bool> hidden_nodes;
+};
+
+class SceneAccelerationStructures {
+public:
+    // `gpu` is `scene` on the GPU (same meshes, buffers with the build-input usage).
+    SceneAccelerationStructures(ResourceManager& resources, const Scene& scene, const GpuScene& gpu,
+                                const AccelerationSettings& settings = {});
+    ~SceneAccelerationStructures();
+    SceneAccelerationStructures(const SceneAccelerationStructures&) = delete;
+    SceneAccelerationStructures& operator=(const SceneAccelerationStructures&) = delete;
+
+    const AccelerationStats& stats() const { return stats_; }
+    // Null when no instance has triangles.
+    VkAccelerationStructureKHR tlas() const { return tlas_.get(); }
+    // The GPUGeometryInfo array (0 when there are no geometries).
+    VkDeviceAddress geometry_records() const;
+    // After transforms (animation) or visibility changed: the TLAS is refitted when
+    // the same instances remain (same BLAS in the same order), else rebuilt. `scene`
+    // is the one the structures were built from, with its instances' world
+    // transforms updated. Waits for the build; no frame may be using the TLAS.
+    void update_instances(const Scene& scene, const std::vector<bool>& hidden_nodes);
+
+private:
+    void build_blas(const Scene& scene, const GpuScene& gpu, const AccelerationSettings& s);
+
+    ResourceManager& resources_;
+    RayTracingFunctions fn_;
+    std::vector<AccelerationStructure> blas_; // by stats_.blas
+    std::vector<std::int32_t> blas_of_mesh_;  // per glTF mesh: index into blas_, -1 none
+    AccelerationStructure tlas_;
+    std::vector<std::uint32_t> tlas_blas_; // BLAS per TLAS instance, as last built
+    BufferHandle records_, instances_;
+    AccelerationStats stats_;
+};
+
+} // namespace sherpa::gpu

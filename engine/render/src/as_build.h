@@ -1,0 +1,56 @@
+#pragma once
+// What BLAS and TLAS builds share (private to the render layer): a scratch buffer
+// whose device address honours the device's scratch alignment, and GPU timestamps
+// around each build of a submission.
+#include <cstdint>
+#include <vector>
+
+#include <sherpa/gpu/resources.h>
+#include <sherpa/gpu/unique_handle.h>
+
+namespace sherpa::gpu {
+
+inline std::uint64_t align_up(std::uint64_t v, std::uint64_t a) {
+    return a ? (v + a - 1) / a * a : v;
+}
+
+// Device-local scratch, released (deferred) when it goes out of scope.
+class ScratchBuffer {
+public:
+    ScratchBuffer(ResourceManager& resources, std::uint64_t bytes);
+    ~ScratchBuffer() { resources_.destroy(buffer_); }
+    ScratchBuffer(const ScratchBuffer&) = delete;
+    ScratchBuffer& operator=(const ScratchBuffer&) = delete;
+    VkDeviceAddress address() const { return address_; } // aligned
+    std::uint64_t bytes() const { return bytes_; }
+
+private:
+    ResourceManager& resources_;
+    BufferHandle buffer_;
+    VkDeviceAddress address_ = 0;
+    std::uint64_t bytes_ = 0;
+};
+
+// Pairs of timestamps (before, after) around `count` builds; empty on devices
+// without timestamps.
+class BuildTimer {
+public:
+    BuildTimer(const Context& context, std::uint32_t count);
+    void begin(VkCommandBuffer cmd, std::uint32_t i) const { write(cmd, 2 * i); }
+    void end(VkCommandBuffer cmd, std::uint32_t i) const { write(cmd, 2 * i + 1); }
+    // Milliseconds per build after the submission completed; -1 where unmeasured.
+    std::vector<double> read() const;
+
+private:
+    void write(VkCommandBuffer cmd, std::uint32_t query) const;
+
+    const Context& context_;
+    std::uint32_t count_;
+    UniqueQueryPool pool_;
+};
+
+// Orders one build's writes before the next build and before queries and copies
+// of the structures it built.
+void build_barrier(VkCommandBuffer cmd);
+
+} // namespace sherpa::gpu

@@ -1,0 +1,214 @@
+#include "rt_view_pass.h"
+
+#include <sherpa/gpu/commands.h>
+#include <sherpa/gpu/gpu_error.h>
+#include <sherpa/gpu/vk_helpers.h>
+
+#include <array>
+#include <cstring>
+
+#include "rt_rahit.h"
+#include "rt_rchit.h"
+#include "rt_rgen.h"
+#include "rt_rmiss.h"
+
+namespace sherpa::gpu {
+namespace {
+
+constexpr VkShaderStageFlags kHitStages =
+    VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR | VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
+constexpr VkShaderStageFlags kAllStages =
+    VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR | kHitStages;
+
+VkDeviceSize align_up(VkDeviceSize v, VkDeviceSize a) {
+    return a ? (v + a - 1) / a * a : v;
+}
+
+} // namespace
+
+RtViewPass::RtViewPass(Context& context, ResourceManager& resources,
+                       VkDescriptorSetLayout bindless_layout)
+    : context_(context), resources_(resources), fn_(RayTracingFunctions::load(context)) {
+    VkDevice device = context.device();
+    const VkDescriptorSetLayoutBinding bindings[] = {
+        {0, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1, VK_SHADER_STAGE_RAYGEN_BIT_KHR,
+         nullptr},
+        {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_RAYGEN_BIT_KHR, nullptr},
+        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kHitStages, nullptr},
+        {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kHitStages, nullptr},
+    };
+    set_layout_ = create_descriptor_set_layout(device, bindings, "vkCreateDescriptorSetLayout(rt)");
+    const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1},
+                                          {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
+                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2}};
+    pool_ = create_descriptor_pool(device, 1, sizes, "vkCreateDescriptorPool(rt)");
+    const VkDescriptorSetLayout set_layout = set_layout_.get();
+    auto ai = vk_init<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
+    ai.descriptorPool = pool_.get();
+    ai.descriptorSetCount = 1;
+    ai.pSetLayouts = &set_layout;
+    vk_check(vkAllocateDescriptorSets(device, &ai, &set_), "vkAllocateDescriptorSets(rt)");
+
+    const VkDescriptorSetLayout sets[] = {bindless_layout, set_layout};
+    const VkPushConstantRange push{kAllStages, 0, sizeof(GPURayPushConstants)};
+    layout_ = create_pipeline_layout(device, sets, {&push, 1}, "vkCreatePipelineLayout(rt)");
+
+    const UniqueShaderModule modules[] = {
+        create_shader_module(device, spirv_rt_rgen, "vkCreateShaderModule(rt.rgen)"),
+        create_shader_module(device, spirv_rt_rmiss, "vkCreateShaderModule(rt.rmiss)"),
+        create_shader_module(device, spirv_rt_rchit, "vkCreateShaderModule(rt.rchit)"),
+        create_shader_module(device, spirv_rt_rahit, "vkCreateShaderModule(rt.rahit)"),
+    };
+    const VkShaderStageFlagBits stage_bits[] = {
+        VK_SHADER_STAGE_RAYGEN_BIT_KHR, VK_SHADER_STAGE_MISS_BIT_KHR,
+        VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR, VK_SHADER_STAGE_ANY_HIT_BIT_KHR};
+    std::array<VkPipelineShaderStageCreateInfo, 4> stages{};
+    for (std::size_t i = 0; i < stages.size(); ++i) {
+        stages[i] = vk_init<VkPipelineShaderStageCreateInfo>(
+            VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+        stages[i].stage = stage_bits[i];
+        stages[i].module = modules[i].get();
+        stages[i].pName = "main";
+    }
+    std::array<VkRayTracingShaderGroupCreateInfoKHR, 3> groups{};
+    for (auto& g : groups) {
+        g = vk_init<VkRayTracingShaderGroupCreateInfoKHR>(
+            VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR);
+        g.generalShader = g.closestHitShader = g.anyHitShader = g.intersectionShader =
+            VK_SHADER_UNUSED_KHR;
+    }
+    groups[0].type = groups[1].type = VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR;
+    groups[0].generalShader = 0;
+    groups[1].generalShader = 1;
+    groups[2].type = VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR;
+    groups[2].closestHitShader = 2;
+    groups[2].anyHitShader = 3;
+    auto ci = vk_init<VkRayTracingPipelineCreateInfoKHR>(
+        VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR);
+    ci.stageCount = static_cast<std::uint32_t>(stages.size());
+    ci.pStages = stages.data();
+    ci.groupCount = static_cast<std::uint32_t>(groups.size());
+    ci.pGroups = groups.data();
+    ci.maxPipelineRayRecursionDepth = 1;
+    ci.layout = layout_.get();
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    vk_check(
+        fn_.create_pipelines(device, VK_NULL_HANDLE, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline),
+        "vkCreateRayTracingPipelinesKHR");
+    pipeline_ = UniquePipeline(device, pipeline);
+    create_shader_binding_table();
+}
+
+RtViewPass::~RtViewPass() {
+    resources_.destroy(sbt_);
+    resources_.destroy(readback_);
+    resources_.images().destroy(target_);
+}
+
+// Raygen, miss and hit group, each in its own region at the base alignment; the
+// buffer is over-allocated so the first region's address can be aligned.
+void RtViewPass::create_shader_binding_table() {
+    const DeviceInfo& info = context_.info();
+    const std::uint32_t handle = info.shader_group_handle_size;
+    const VkDeviceSize stride = align_up(handle, info.shader_group_handle_alignment);
+    const VkDeviceSize region = align_up(stride, info.shader_group_base_alignment);
+    std::vector<std::uint8_t> handles(3 * std::size_t(handle));
+    vk_check(fn_.get_group_handles(context_.device(), pipeline_.get(), 0, 3, handles.size(),
+                                   handles.data()),
+             "vkGetRayTracingShaderGroupHandlesKHR");
+    sbt_ = resources_.create_buffer(
+        {3 * region + info.shader_group_base_alignment,
+         VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+         MemoryUsage::Upload, "shader binding table"});
+    const Buffer& b = resources_.get(sbt_);
+    const VkDeviceAddress base = align_up(b.address, info.shader_group_base_alignment);
+    auto* bytes = static_cast<std::uint8_t*>(b.mapped) + (base - b.address);
+    for (std::uint32_t g = 0; g < 3; ++g)
+        std::memcpy(bytes + g * region, handles.data() + g * handle, handle);
+    raygen_ = {base, stride, stride}; // the raygen region's size must equal its stride
+    miss_ = {base + region, stride, stride};
+    hit_ = {base + 2 * region, stride, stride};
+}
+
+void RtViewPass::ensure_target(std::uint32_t width, std::uint32_t height) {
+    if (target_.valid() && width == width_ && height == height_) return;
+    resources_.images().destroy(target_);
+    resources_.destroy(readback_);
+    ImageDesc d;
+    d.format = VK_FORMAT_R8G8B8A8_UNORM; // storage: the shader writes sRGB-encoded bytes
+    d.width = width;
+    d.height = height;
+    d.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    d.name = "ray-traced view";
+    target_ = resources_.images().create(d);
+    readback_ = resources_.create_buffer({VkDeviceSize(width) * height * 4,
+                                          VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::Readback,
+                                          "ray-traced view readback"});
+    width_ = width;
+    height_ = height;
+}
+
+void RtViewPass::record(VkCommandBuffer cmd, const RayTracedFrame& f) {
+    ensure_target(f.width, f.height);
+    const Image& image = resources_.images().get(target_);
+    auto as_write = vk_init<VkWriteDescriptorSetAccelerationStructureKHR>(
+        VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR);
+    as_write.accelerationStructureCount = 1;
+    as_write.pAccelerationStructures = &f.tlas;
+    const VkDescriptorImageInfo image_info{VK_NULL_HANDLE, image.view.get(),
+                                           VK_IMAGE_LAYOUT_GENERAL};
+    const VkDescriptorBufferInfo buffers[] = {{f.materials, 0, VK_WHOLE_SIZE},
+                                              {f.material_extras, 0, VK_WHOLE_SIZE}};
+    std::array<VkWriteDescriptorSet, 4> writes{};
+    for (std::uint32_t i = 0; i < writes.size(); ++i) {
+        writes[i] = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        writes[i].dstSet = set_;
+        writes[i].dstBinding = i;
+        writes[i].descriptorCount = 1;
+    }
+    writes[0].descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+    writes[0].pNext = &as_write;
+    writes[1].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    writes[1].pImageInfo = &image_info;
+    for (std::uint32_t i = 2; i < 4; ++i) {
+        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        writes[i].pBufferInfo = &buffers[i - 2];
+    }
+    vkUpdateDescriptorSets(context_.device(), static_cast<std::uint32_t>(writes.size()),
+                           writes.data(), 0, nullptr);
+
+    ImageTransition t;
+    t.image = image.image.get();
+    t.to = VK_IMAGE_LAYOUT_GENERAL;
+    t.dst_stage = VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR;
+    t.dst_access = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    transition(cmd, t);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline_.get());
+    const VkDescriptorSet sets[] = {f.bindless, set_};
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, layout_.get(), 0, 2, sets,
+                            0, nullptr);
+    vkCmdPushConstants(cmd, layout_.get(), kAllStages, 0, sizeof(f.push), &f.push);
+    fn_.cmd_trace_rays(cmd, &raygen_, &miss_, &hit_, &callable_, f.width, f.height, 1);
+
+    t.from = VK_IMAGE_LAYOUT_GENERAL;
+    t.to = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    t.src_stage = VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR;
+    t.src_access = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    t.dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT;
+    t.dst_access = VK_ACCESS_2_TRANSFER_READ_BIT;
+    transition(cmd, t);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {f.width, f.height, 1};
+    vkCmdCopyImageToBuffer(cmd, image.image.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           resources_.get(readback_).buffer.get(), 1, &region);
+    memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                   VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+}
+
+void RtViewPass::read(std::vector<std::uint8_t>& rgba) const {
+    rgba.resize(std::size_t(width_) * height_ * 4);
+    std::memcpy(rgba.data(), resources_.get(readback_).mapped, rgba.size());
+}
+
+} // namespace sherpa::gpu

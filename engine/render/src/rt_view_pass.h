@@ -1,0 +1,56 @@
+#pragma once
+// The ray-traced debug views (render --renderer rt): one ray-tracing pipeline
+// (shaders/rt.rgen, rt.rmiss, and one hit group of rt.rchit + rt.rahit), its shader
+// binding table, its descriptor set and the storage image the rays write, read back
+// as the rasterizer's offscreen target is. Private to the render layer; the
+// Renderer drives it (renderer_rt.cpp) with the scene's acceleration structures.
+#include <sherpa/gpu/acceleration_structure.h>
+#include <sherpa/gpu/resources.h>
+#include <sherpa/render/gpu_structs.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace sherpa::gpu {
+
+struct RayTracedFrame {
+    VkDescriptorSet bindless = VK_NULL_HANDLE;
+    VkAccelerationStructureKHR tlas = VK_NULL_HANDLE;
+    VkBuffer materials = VK_NULL_HANDLE, material_extras = VK_NULL_HANDLE;
+    std::uint32_t width = 0, height = 0;
+    GPURayPushConstants push{};
+};
+
+class RtViewPass {
+public:
+    RtViewPass(Context& context, ResourceManager& resources, VkDescriptorSetLayout bindless_layout);
+    ~RtViewPass();
+    RtViewPass(const RtViewPass&) = delete;
+    RtViewPass& operator=(const RtViewPass&) = delete;
+
+    // Records the rays and the copy of the image into the readback buffer. The
+    // previous frame of this pass must have completed (its set is rewritten).
+    void record(VkCommandBuffer cmd, const RayTracedFrame& frame);
+    // After the submission completed: RGBA8 rows, top first (sRGB-encoded bytes).
+    void read(std::vector<std::uint8_t>& rgba) const;
+
+private:
+    void ensure_target(std::uint32_t width, std::uint32_t height);
+    void create_shader_binding_table();
+
+    Context& context_;
+    ResourceManager& resources_;
+    RayTracingFunctions fn_;
+    UniqueDescriptorSetLayout set_layout_;
+    UniqueDescriptorPool pool_;
+    VkDescriptorSet set_ = VK_NULL_HANDLE;
+    UniquePipelineLayout layout_;
+    UniquePipeline pipeline_;
+    BufferHandle sbt_;
+    VkStridedDeviceAddressRegionKHR raygen_{}, miss_{}, hit_{}, callable_{};
+    ImageHandle target_;
+    BufferHandle readback_;
+    std::uint32_t width_ = 0, height_ = 0;
+};
+
+} // namespace sherpa::gpu

@@ -1,0 +1,128 @@
+// The TLAS: one instance per (node, glTF mesh) as plan_tlas decides, built on load
+// and rebuilt or refitted when transforms or visibility change.
+#include "as_build.h"
+#include "rt_plan.h"
+
+#include <sherpa/gpu/commands.h>
+#include <sherpa/gpu/gpu_error.h>
+#include <sherpa/render/acceleration_structures.h>
+
+#include <cstring>
+
+namespace sherpa::gpu {
+
+namespace {
+
+// glm is column-major; VkTransformMatrixKHR is 3 rows of 4.
+VkTransformMatrixKHR to_vk(const glm::mat4& m) {
+    VkTransformMatrixKHR t{};
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) t.matrix[r][c] = m[c][r];
+    return t;
+}
+
+} // namespace
+
+void SceneAccelerationStructures::update_instances(const Scene& scene,
+                                                   const std::vector<bool>& hidden_nodes) {
+    TlasPlan plan = plan_tlas(scene, blas_of_mesh_, hidden_nodes);
+    stats_.warnings = std::move(plan.warnings); // the TLAS's are the only warnings
+    std::vector<std::uint32_t> order;
+    for (const TlasInstancePlan& p : plan.instances) order.push_back(p.blas);
+    // A refit keeps the structure's instances and only moves them: same count, same
+    // BLAS in the same order. Anything else (a node hidden or shown) is a rebuild.
+    const bool refit = tlas_ && order == tlas_blas_;
+    const TlasStats previous = stats_.tlas;
+    stats_.tlas = plan.counts;
+    stats_.tlas.builds = previous.builds;
+    stats_.tlas.refits = previous.refits;
+    if (plan.instances.empty()) {
+        tlas_ = AccelerationStructure();
+        resources_.destroy(instances_);
+        tlas_blas_.clear();
+        return;
+    }
+
+    const std::uint32_t count = static_cast<std::uint32_t>(plan.instances.size());
+    const VkDeviceSize bytes = VkDeviceSize(count) * sizeof(VkAccelerationStructureInstanceKHR);
+    if (!instances_.valid() || resources_.get(instances_).size < bytes) {
+        resources_.destroy(instances_);
+        instances_ = resources_.create_buffer(
+            {bytes,
+             VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+                 VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+             MemoryUsage::Upload, "TLAS instances"});
+    }
+    auto* out = static_cast<VkAccelerationStructureInstanceKHR*>(resources_.get(instances_).mapped);
+    for (std::uint32_t i = 0; i < count; ++i) {
+        const TlasInstancePlan& p = plan.instances[i];
+        VkAccelerationStructureInstanceKHR inst{};
+        inst.transform = to_vk(p.world);
+        // 24 bits: more geometry records than that cannot be addressed.
+        const std::uint32_t first = stats_.blas[p.blas].first_geometry;
+        if (first >= (1u << 24))
+            throw GpuError("ray tracing: geometry record " + std::to_string(first) +
+                           " is past the 24-bit instance custom index");
+        inst.instanceCustomIndex = first;
+        inst.mask = 0xff;
+        inst.instanceShaderBindingTableRecordOffset = 0;
+        // Facing is decided in the hit shaders from the object-space winding (culling
+        // is per material, in rt.rahit, as the rasterizer's), so the hardware culls nothing.
+        inst.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
+        inst.accelerationStructureReference = blas_[p.blas].address();
+        std::memcpy(out + i, &inst, sizeof(inst));
+    }
+    stats_.tlas.instance_buffer_bytes = resources_.get(instances_).size;
+
+    auto geometry = vk_init<VkAccelerationStructureGeometryKHR>(
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR);
+    geometry.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
+    geometry.geometry.instances = vk_init<VkAccelerationStructureGeometryInstancesDataKHR>(
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR);
+    geometry.geometry.instances.data.deviceAddress = resources_.get(instances_).address;
+    auto info = vk_init<VkAccelerationStructureBuildGeometryInfoKHR>(
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
+    info.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR;
+    info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR |
+                 VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_UPDATE_BIT_KHR;
+    info.mode = refit ? VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR
+                      : VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
+    info.geometryCount = 1;
+    info.pGeometries = &geometry;
+    auto sizes = vk_init<VkAccelerationStructureBuildSizesInfoKHR>(
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR);
+    const VkDevice device = resources_.context().device();
+    fn_.get_build_sizes(device, VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &info, &count,
+                        &sizes);
+    if (!refit) {
+        // The previous TLAS (if any) is unused: every build and update waits for itself.
+        tlas_ = AccelerationStructure(resources_, fn_, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
+                                      sizes.accelerationStructureSize, "TLAS");
+        tlas_blas_ = order;
+    } else {
+        info.srcAccelerationStructure = tlas_.get();
+    }
+    const VkDeviceSize scratch_bytes = refit ? sizes.updateScratchSize : sizes.buildScratchSize;
+    ScratchBuffer scratch(resources_, scratch_bytes);
+    info.dstAccelerationStructure = tlas_.get();
+    info.scratchData.deviceAddress = scratch.address();
+    VkAccelerationStructureBuildRangeInfoKHR range{count, 0, 0, 0};
+    const VkAccelerationStructureBuildRangeInfoKHR* ranges = &range;
+
+    BuildTimer timer(resources_.context(), 1);
+    CommandRecorder rec(resources_.context());
+    VkCommandBuffer cmd = rec.begin();
+    // The BLAS builds (and a previous TLAS build) completed in earlier submissions.
+    build_barrier(cmd);
+    timer.begin(cmd, 0);
+    fn_.cmd_build(cmd, 1, &info, &ranges);
+    build_barrier(cmd);
+    timer.end(cmd, 0);
+    resources_.timeline().wait_for(rec.submit(resources_));
+    stats_.tlas.build_ms = timer.read()[0];
+    ++(refit ? stats_.tlas.refits : stats_.tlas.builds);
+    stats_.tlas.bytes = tlas_.size();
+    stats_.tlas.scratch_bytes = scratch_bytes;
+}
+
+} // namespace sherpa::gpu

@@ -1,0 +1,240 @@
+// Acceleration structures on the device (lavapipe: CPU builds) under the validation
+// layer: RT off allocates and flags nothing, one BLAS per glTF mesh with the opaque
+// flag per material, the TLAS's dedup/hidden/mirrored/non-finite handling, and
+// hostile geometry (degenerate triangles, empty meshes). The planning functions are
+// checked without a device.
+#include "gpu_test_support.h"
+#include "rt_plan.h"
+
+#include <sherpa/gpu/acceleration_structure.h>
+#include <sherpa/render/acceleration_structures.h>
+#include <sherpa/render/gpu_structs.h>
+#include <sherpa/texture/texture_pipeline.h>
+
+#include <cmath>
+#include <limits>
+#include <set>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace sherpa::test {
+namespace {
+
+constexpr VkBufferUsageFlags kAsInput =
+    VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR;
+
+std::shared_ptr<const tex::PreparedTextureSet> no_textures() {
+    return std::make_shared<const tex::PreparedTextureSet>();
+}
+
+class AccelerationTest : public GpuTest {
+protected:
+    // Builds `scene` on the shared device; `check` sees the statistics.
+    gpu::AccelerationStats build(const Scene& scene, const gpu::AccelerationSettings& s = {}) {
+        gpu::ResourceManager& rm = renderer().resources();
+        gpu::BindlessTable table(rm);
+        gpu::AccelerationStats stats;
+        {
+            gpu::GpuScene gpu_scene(rm, table, scene, no_textures());
+            gpu::SceneAccelerationStructures as(rm, scene, gpu_scene, s);
+            stats = as.stats();
+            EXPECT_EQ(as.tlas() != VK_NULL_HANDLE, stats.tlas.instances > 0);
+            EXPECT_EQ(as.geometry_records() != 0, stats.geometry_records > 0);
+        }
+        rm.flush();
+        return stats;
+    }
+    bool has_rt() { return context().info().ray_tracing_enabled; }
+};
+
+TEST_F(AccelerationTest, RtOffEnablesNothingAndBuffersCarryNoBuildInputUsage) {
+    auto scene = load("builtin:default");
+    auto usage_of = [&](gpu::Context& ctx, VkDeviceAddress& index_address) {
+        gpu::ResourceManager rm(ctx);
+        gpu::BindlessTable table(rm);
+        gpu::GpuScene g(rm, table, *scene, no_textures());
+        index_address = g.index_address();
+        return g.memory().geometry_usage;
+    };
+    gpu::ContextOptions off_options;
+    off_options.validation = true;
+    off_options.ray_tracing = false;
+    gpu::Context off(off_options);
+    EXPECT_FALSE(off.info().ray_tracing_enabled);
+    EXPECT_FALSE(off.info().ray_query_enabled);
+    EXPECT_EQ(off.info().as_scratch_alignment, 0u);
+    EXPECT_THROW(gpu::RayTracingFunctions::load(off), gpu::GpuError);
+    VkDeviceAddress off_index = 1, on_index = 0;
+    const std::uint32_t off_usage = usage_of(off, off_index);
+    EXPECT_EQ(off_usage & kAsInput, 0u);
+    EXPECT_EQ(off_index, 0u); // the index buffer has no device address
+    EXPECT_EQ(off.validation().count(), 0u);
+
+    const std::uint32_t on_usage = usage_of(context(), on_index);
+    if (!context().info().ray_tracing) GTEST_SKIP() << "device without ray tracing";
+    EXPECT_TRUE(context().info().ray_tracing_enabled);
+    EXPECT_NE(on_usage & kAsInput, 0u);
+    EXPECT_NE(on_index, 0u);
+    // Nothing else changes: the same streams are uploaded either way.
+    EXPECT_EQ(on_usage & ~(kAsInput | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT),
+              off_usage & ~(kAsInput | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT));
+}
+
+TEST_F(AccelerationTest, OneBlasPerGltfMeshOpaqueOnlyForOpaqueMaterials) {
+    if (!has_rt()) GTEST_SKIP() << "device without ray tracing";
+    auto scene = load("builtin:default");
+    const gpu::AccelerationStats s = build(*scene);
+    std::set<std::uint32_t> groups;
+    std::uint64_t triangles = 0, opaque = 0;
+    for (const Mesh& m : scene->meshes) {
+        groups.insert(m.group_id);
+        triangles += m.indices.size() / 3;
+        const MaterialInstance& material = scene->materials[m.material_id];
+        opaque += material.alpha_mode == AlphaMode::Opaque && material.double_sided;
+    }
+    ASSERT_EQ(s.blas.size(), groups.size());
+    EXPECT_EQ(s.blas_triangles(), triangles);
+    std::uint64_t opaque_geometries = 0;
+    for (const gpu::BlasStats& b : s.blas) {
+        opaque_geometries += b.opaque_geometries;
+        EXPECT_GT(b.scratch_bytes, 0u);
+        EXPECT_LE(b.compacted_bytes, b.build_bytes);
+    }
+    EXPECT_EQ(opaque_geometries, opaque);
+    EXPECT_LT(opaque_geometries, s.geometry_records); // glass and perforated box
+    EXPECT_EQ(s.geometry_record_bytes, s.geometry_records * sizeof(gpu::GPUGeometryInfo));
+    EXPECT_EQ(s.tlas.instances, scene->instances.size()); // one primitive per mesh here
+    EXPECT_EQ(s.tlas.deduplicated + s.tlas.hidden + s.tlas.non_finite, 0u);
+}
+
+TEST_F(AccelerationTest, TlasDeduplicatesHidesMirrorsAndDropsNonFiniteTransforms) {
+    if (!has_rt()) GTEST_SKIP() << "device without ray tracing";
+    auto scene = load("builtin:default");
+    const std::size_t base = scene->instances.size();
+    // New nodes placing instance 0's mesh: once at the same transform (a duplicate),
+    // once mirrored, once with a NaN transform.
+    auto place = [&](const glm::mat4& world) {
+        MeshInstance inst = scene->instances[0];
+        inst.node_id = static_cast<std::uint32_t>(scene->nodes.size());
+        inst.world = world;
+        scene->nodes.push_back(Node{});
+        scene->nodes.back().name = "added";
+        scene->instances.push_back(inst);
+    };
+    const glm::mat4 w = scene->instances[0].world;
+    place(w);
+    place(glm::scale(w, glm::vec3(-1.0f, 1.0f, 1.0f)));
+    glm::mat4 nan = w;
+    nan[3][1] = std::numeric_limits<float>::quiet_NaN();
+    place(nan);
+    gpu::AccelerationSettings settings;
+    settings.hidden_nodes.assign(scene->nodes.size(), false);
+    settings.hidden_nodes[scene->instances[1].node_id] = true;
+    const gpu::AccelerationStats s = build(*scene, settings);
+    EXPECT_EQ(s.tlas.node_mesh_pairs, base + 3);
+    EXPECT_EQ(s.tlas.deduplicated, 1u);
+    EXPECT_EQ(s.tlas.mirrored, 1u);
+    EXPECT_EQ(s.tlas.non_finite, 1u);
+    EXPECT_EQ(s.tlas.hidden, 1u);
+    EXPECT_EQ(s.tlas.instances, base + 3 - 3);
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_NE(s.warnings[0].find("not finite"), std::string::npos) << s.warnings[0];
+}
+
+TEST_F(AccelerationTest, DegenerateTrianglesAndEmptyMeshesBuildCleanly) {
+    if (!has_rt()) GTEST_SKIP() << "device without ray tracing";
+    auto scene = load("builtin:default");
+    // Mesh 0: every triangle collapsed to a point or a line; mesh 1: no triangles.
+    Mesh& degenerate = scene->meshes[0];
+    for (std::size_t t = 0; t + 2 < degenerate.indices.size(); t += 3) {
+        const std::uint32_t a = degenerate.indices[t];
+        if ((t / 3) % 2 == 0) degenerate.indices[t + 1] = a; // a point
+        degenerate.indices[t + 2] = a;                       // else a line
+    }
+    scene->meshes[1].indices.clear();
+    const gpu::AccelerationStats s = build(*scene);
+    std::set<std::uint32_t> groups;
+    for (const Mesh& m : scene->meshes) groups.insert(m.group_id);
+    EXPECT_EQ(s.blas.size(), groups.size() - 1); // the empty mesh has no BLAS
+    for (const gpu::BlasStats& b : s.blas) EXPECT_NE(b.mesh, scene->meshes[1].group_id);
+}
+
+TEST_F(AccelerationTest, MovedInstancesRefitAndVisibilityChangesRebuild) {
+    if (!has_rt()) GTEST_SKIP() << "device without ray tracing";
+    auto scene = load("builtin:default");
+    gpu::ResourceManager& rm = renderer().resources();
+    {
+        gpu::BindlessTable table(rm);
+        gpu::GpuScene gpu_scene(rm, table, *scene, no_textures());
+        gpu::SceneAccelerationStructures as(rm, *scene, gpu_scene);
+        EXPECT_EQ(as.stats().tlas.builds, 1u);
+        EXPECT_EQ(as.stats().tlas.refits, 0u);
+        // Animation: every instance moves, the set stays: a refit.
+        for (MeshInstance& inst : scene->instances)
+            inst.world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.5f, 0.0f)) * inst.world;
+        as.update_instances(*scene, {});
+        EXPECT_EQ(as.stats().tlas.builds, 1u);
+        EXPECT_EQ(as.stats().tlas.refits, 1u);
+        EXPECT_EQ(as.stats().tlas.instances, scene->instances.size());
+        // A node hidden: fewer instances, a rebuild.
+        std::vector<bool> hidden(scene->nodes.size(), false);
+        hidden[scene->instances[0].node_id] = true;
+        as.update_instances(*scene, hidden);
+        EXPECT_EQ(as.stats().tlas.builds, 2u);
+        EXPECT_EQ(as.stats().tlas.hidden, 1u);
+        EXPECT_EQ(as.stats().tlas.instances, scene->instances.size() - 1);
+        EXPECT_NE(as.tlas(), VK_NULL_HANDLE);
+        // Everything hidden: no TLAS at all.
+        hidden.assign(hidden.size(), true);
+        as.update_instances(*scene, hidden);
+        EXPECT_EQ(as.tlas(), VK_NULL_HANDLE);
+        EXPECT_EQ(as.stats().tlas.instances, 0u);
+        // Shown again: built anew.
+        as.update_instances(*scene, {});
+        EXPECT_NE(as.tlas(), VK_NULL_HANDLE);
+        EXPECT_EQ(as.stats().tlas.builds, 3u);
+    }
+    rm.flush();
+}
+
+TEST(RtPlan, BatchesStayUnderTheScratchBudget) {
+    const std::vector<std::uint64_t> scratch = {100, 30, 70, 500, 1, 1};
+    const auto batches = gpu::batch_by_scratch(scratch, 128, 8);
+    // Rounded: 104, 32, 72, 504, 8, 8.
+    ASSERT_EQ(batches.size(), 4u);
+    EXPECT_EQ(batches[0], (std::vector<std::uint32_t>{0}));
+    EXPECT_EQ(batches[1], (std::vector<std::uint32_t>{1, 2}));
+    EXPECT_EQ(batches[2], (std::vector<std::uint32_t>{3})); // alone over the budget
+    EXPECT_EQ(batches[3], (std::vector<std::uint32_t>{4, 5}));
+    EXPECT_TRUE(gpu::batch_by_scratch({}, 128, 8).empty());
+}
+
+TEST(RtPlan, GeometriesFollowPrimitivesOfEachGltfMesh) {
+    Scene scene;
+    scene.materials.resize(2);
+    scene.materials[1].alpha_mode = AlphaMode::Mask;
+    std::vector<gpu::GpuMesh> meshes(4);
+    for (std::uint32_t i = 0; i < 4; ++i) {
+        Mesh m;
+        m.group_id = i < 2 ? 0 : i - 1; // mesh 0: primitives 0, 1; mesh 1: 2; mesh 2: 3
+        m.material_id = i == 1 ? 1 : 0;
+        m.name = "m" + std::to_string(m.group_id) + "#" + std::to_string(i);
+        scene.meshes.push_back(m);
+        meshes[i].index_count = 6;
+    }
+    meshes[2].flags = gpu::kMeshLinesBit; // lines: no geometry, so mesh 1 has no BLAS
+    meshes[3].index_count = 0;            // empty: no geometry, no BLAS
+    const auto plans = gpu::plan_blas(scene, meshes);
+    ASSERT_EQ(plans.size(), 1u);
+    EXPECT_EQ(plans[0].group, 0u);
+    EXPECT_EQ(plans[0].name, "m0");
+    ASSERT_EQ(plans[0].geometries.size(), 2u);
+    EXPECT_FALSE(plans[0].geometries[0].opaque); // single-sided: any-hit culls back faces
+    EXPECT_FALSE(plans[0].geometries[1].opaque); // masked: reaches any-hit
+    scene.materials[0].double_sided = true;
+    EXPECT_TRUE(gpu::plan_blas(scene, meshes)[0].geometries[0].opaque);
+    EXPECT_EQ(plans[0].triangles, 4u);
+}
+
+} // namespace
+} // namespace sherpa::test

@@ -114,7 +114,38 @@ TEST_P(RtExactnessTest, RaysAndRasterAgreeOnEverySurfaceView) {
     const float lod = GetParam() == "VC" ? 6.0f : 0.0f;
     auto scene = load(gltf_asset(GetParam()));
     ASSERT_TRUE(scene);
+    // SimpleMorph's mesh weights (0.5) raise half of it in its default pose: the
+    // rasterizer morphs it, the acceleration structures hold the stored vertices, so
+    // the ray tracer must refuse it (RayTracerRefusesMeshesItsStructuresDoNotHold).
+    if (GetParam() == "SimpleMorph") GTEST_SKIP() << "refused by the ray tracer (see below)";
     check_views(*scene, GetParam(), lod);
+}
+
+// A mesh whose default pose moves its vertices (default morph weights, skins) is not
+// what the acceleration structures hold: the ray tracer names it and draws nothing.
+// Found by the exactness test above once the rasterizer morphed (32.6% agreement).
+TEST_F(RtExactness, RayTracerRefusesMeshesItsStructuresDoNotHold) {
+    if (!context().info().ray_tracing_enabled) GTEST_SKIP() << "device without ray tracing";
+    auto scene = load(gltf_asset("SimpleMorph"));
+    ASSERT_TRUE(scene);
+    gpu::RendererOptions options;
+    options.ray_tracing = true;
+    options.textures = test_texture_settings();
+    gpu::Renderer renderer(context(), options);
+    renderer.load(*scene, gpu::StreamPolicy::AllPresent);
+    gpu::RenderSettings s;
+    s.width = 32;
+    s.height = 24;
+    s.view = gpu::DebugView::Normal;
+    renderer.render(s); // the rasterizer draws it
+    s.renderer = gpu::RendererKind::RayTraced;
+    try {
+        renderer.render(s);
+        FAIL() << "the ray tracer drew SimpleMorph's unmorphed vertices";
+    } catch (const gpu::GpuError& e) {
+        EXPECT_NE(std::string(e.what()).find("mesh 0 primitive 0"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("default pose"), std::string::npos) << e.what();
+    }
 }
 
 // Negative-determinant instances: the rasterizer flips its front face per instance,

@@ -102,6 +102,7 @@ Renderer::Impl::~Impl() {
     culling.reset();
     rt_views_.reset();
     acceleration.reset();
+    rt_refusal_.clear();
     scene.reset();
     for (auto& slot : slots_) {
         resources->destroy(slot->frame_data);
@@ -134,6 +135,7 @@ void Renderer::Impl::load(const Scene& source, std::unique_ptr<GpuScene> gpu_sce
             throw GpuError("ray tracing was asked for but the device does not ray trace "
                            "(or it was turned off: --rt off)");
         acceleration = std::make_unique<SceneAccelerationStructures>(*resources, source, *scene);
+        rt_refusal_ = unposed_motion_mesh(source);
     }
     culling.build(*scene);
     pose_.build(source, *scene);
@@ -173,6 +175,7 @@ void Renderer::Impl::unload() {
     culling.reset();
     pose_.reset();
     acceleration.reset();
+    rt_refusal_.clear();
     scene.reset();
     ++scene_generation_; // frame sets must stop naming the freed material buffers
     lighting_ = Scene{};

@@ -12,6 +12,11 @@
 
 namespace sherpa::gpu {
 
+// The first displayed primitive (as "mesh M primitive P (node 'N')") whose default pose
+// moves its vertices off the stored positions by more than 1e-4 of the scene size;
+// empty when none does (renderer_rt.cpp).
+std::string unposed_motion_mesh(const Scene& scene);
+
 class Renderer::Impl {
 public:
     static constexpr VkFormat kOffscreenFormat = VK_FORMAT_R8G8B8A8_SRGB;
@@ -70,6 +75,10 @@ private:
     FrameStats render_rt(const RenderSettings& settings, std::vector<std::uint8_t>* rgba);
 
     std::unique_ptr<RtViewPass> rt_views_;
+    // Set at load when a mesh's default pose (skinning, default morph weights) moves its
+    // vertices off the stored positions the acceleration structures hold: render_rt
+    // refuses with it rather than draw geometry the rasterizer does not show.
+    std::string rt_refusal_;
 
     PosePass pose_;
     ShadowPass shadows_;

@@ -6,6 +6,7 @@
 
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/vk_helpers.h>
+#include <sherpa/scene/animation.h>
 
 #include <cmath>
 
@@ -27,6 +28,30 @@ std::string ray_traced_view_names() {
 
 } // namespace
 
+std::string unposed_motion_mesh(const Scene& scene) {
+    if (scene.motions.empty()) return {};
+    const Pose pose = evaluate_pose(scene, -1, 0.0);
+    const float tolerance = 1e-4f * std::max(glm::length(scene.bounds.extent()), 1e-6f);
+    for (std::uint32_t n : scene.displayed_nodes) {
+        const Node& node = scene.nodes[n];
+        if (node.mesh < 0) continue;
+        for (const PrimitiveInfo& p : scene.primitives) {
+            if (p.mesh != static_cast<std::uint32_t>(node.mesh) || p.engine_mesh < 0 ||
+                p.motion < 0)
+                continue;
+            const std::vector<glm::vec3>& stored = scene.motions[p.motion].base_positions;
+            const std::vector<glm::vec3> posed = posed_positions(scene, pose, n, p);
+            const glm::mat4& world = pose.world[n];
+            for (std::size_t i = 0; i < posed.size() && i < stored.size(); ++i)
+                if (glm::distance(posed[i], glm::vec3(world * glm::vec4(stored[i], 1.0f))) >
+                    tolerance)
+                    return "mesh " + std::to_string(p.mesh) + " primitive " +
+                           std::to_string(p.primitive) + " (node '" + node.name + "')";
+        }
+    }
+    return {};
+}
+
 FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
                                      std::vector<std::uint8_t>* rgba) {
     if (!acceleration)
@@ -40,6 +65,10 @@ FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
         throw GpuError("the ray tracer draws no overlays or highlights (raster only)");
     // The acceleration structures hold the scene as loaded (no skinning or morphing):
     // a posed frame drawn by rays would silently show the bind pose.
+    if (!rt_refusal_.empty())
+        throw GpuError("the ray tracer builds its structures from the stored vertices, but " +
+                       rt_refusal_ +
+                       " moves in its default pose (skin or default morph weights): raster only");
     if (settings.pose)
         throw GpuError("the ray tracer draws the scene as loaded (bind pose): posed frames "
                        "(--animation/--time) are raster only");

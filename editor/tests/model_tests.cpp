@@ -1,21 +1,15 @@
 // The docks' models against the engine data they present, over every sample model,
-// plus the camera, picking, culling monitor and a million-vertex table.
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
+// plus the camera, picking, command line, resolution scale and a million-vertex table.
 #include <QSignalSpy>
-#include <QTemporaryDir>
 #include <QtTest>
 
 #include <sherpa/scene/culling_passes.h>
 
 #include "attribute_model.h"
 #include "command_line.h"
-#include "culling_monitor.h"
 #include "editor_context.h"
 #include "format_values.h"
 #include "material_fields_model.h"
-#include "mesh_dock.h"
 #include "orbit_camera.h"
 #include "picking.h"
 #include "resolution_scale.h"
@@ -86,14 +80,11 @@ private Q_SLOTS:
     void everyAssetMatchesTheEngine_data();
     void everyAssetMatchesTheEngine();
     void materialFieldsFollowTheGpuLayout();
-    void docksShowCompressionContainerAndSpecGloss();
     void millionVertexTableSortsByPermutation();
     void generatedTangentsAgreeWithRegeneration();
     void frameKeepsTheBoxInView();
     void pickHitsTheInstanceUnderTheRay();
     void pickHitsLinesAndPointsWithinACone();
-    void cullingMonitorFreezes();
-    void cullingMonitorCoalescesExpensivePasses();
     void selectionFollowsActions();
     void commandLineDocksAndCulling();
     void resolutionScaleHoldsTheTargetRate();
@@ -196,81 +187,6 @@ void ModelTests::materialFieldsFollowTheGpuLayout() {
     table[7] = 3;
     model.setMaterial(out.session, 0, gpu, MaterialFieldsModel::Source::GpuReadback, table);
     QCOMPARE(model.textureOfRow(6), 3);
-}
-
-// What issue 15's files show in the docks: a Draco primitive's codec and sizes in the
-// mesh summary (as info --json reports them), a KTX2 image's payload and
-// supercompression in the texture table, and a spec-gloss material's own fields.
-void ModelTests::docksShowCompressionContainerAndSpecGloss() {
-    const LoadOutcome draco = SceneLoadJob::loadNow(
-        QStringLiteral(SHERPA_GLTF_COMPRESS_CACHE "/corpus/DamagedHelmet.draco.glb"));
-    QVERIFY2(draco.session, qPrintable(draco.error));
-    const PrimitiveInfo& p = draco.session->scene->primitives.at(0);
-    QVERIFY(p.compression);
-    const QString text = MeshDock::compressionText(*draco.session->scene, int(p.engine_mesh));
-    QVERIFY2(text.contains(QStringLiteral("KHR_draco_mesh_compression ") +
-                           QString::fromStdString(p.compression->modes)),
-             qPrintable(text));
-    QVERIFY2(text.contains(Format::bytes(p.compression->encoded_bytes)) &&
-                 text.contains(Format::bytes(p.compression->decoded_bytes)),
-             qPrintable(text));
-    const LoadOutcome plain = SceneLoadJob::loadNow(test::asset(QStringLiteral("DamagedHelmet")));
-    QVERIFY(plain.session);
-    QVERIFY(MeshDock::compressionText(*plain.session->scene, 0).isEmpty());
-
-    // BoxTextured with its image replaced by a Zstandard UASTC KTX2 of the basisu corpus,
-    // and its material by a spec-gloss one reading that texture.
-    QTemporaryDir dir;
-    QVERIFY(QFile::copy(QStringLiteral(SHERPA_BASISU_CACHE "/corpus/logo211_uastc_zstd.ktx2"),
-                        dir.filePath(QStringLiteral("logo.ktx2"))));
-    QVERIFY(QFile::copy(QStringLiteral(SHERPA_ASSETS_DIR "/gltf/BoxTextured/glTF/BoxTextured0.bin"),
-                        dir.filePath(QStringLiteral("BoxTextured0.bin"))));
-    QFile in(test::asset(QStringLiteral("BoxTextured")));
-    QVERIFY(in.open(QIODevice::ReadOnly));
-    QJsonObject doc = QJsonDocument::fromJson(in.readAll()).object();
-    doc[QStringLiteral("images")] =
-        QJsonArray{QJsonObject{{QStringLiteral("uri"), QStringLiteral("logo.ktx2")}}};
-    doc[QStringLiteral("textures")] = QJsonArray{QJsonObject{
-        {QStringLiteral("extensions"), QJsonObject{{QStringLiteral("KHR_texture_basisu"),
-                                                    QJsonObject{{QStringLiteral("source"), 0}}}}}}};
-    const QJsonObject sg{
-        {QStringLiteral("diffuseFactor"), QJsonArray{0.2, 0.4, 0.6, 1.0}},
-        {QStringLiteral("specularFactor"), QJsonArray{0.1, 0.2, 0.3}},
-        {QStringLiteral("glossinessFactor"), 0.7},
-        {QStringLiteral("specularGlossinessTexture"), QJsonObject{{QStringLiteral("index"), 0}}}};
-    doc[QStringLiteral("materials")] = QJsonArray{
-        QJsonObject{{QStringLiteral("extensions"),
-                     QJsonObject{{QStringLiteral("KHR_materials_pbrSpecularGlossiness"), sg}}}}};
-    doc[QStringLiteral("extensionsUsed")] =
-        QJsonArray{QStringLiteral("KHR_texture_basisu"),
-                   QStringLiteral("KHR_materials_pbrSpecularGlossiness")};
-    const QString path = dir.filePath(QStringLiteral("box.gltf"));
-    QFile out(path);
-    QVERIFY(out.open(QIODevice::WriteOnly));
-    out.write(QJsonDocument(doc).toJson());
-    out.close();
-    const LoadOutcome box = SceneLoadJob::loadNow(path);
-    QVERIFY2(box.session, qPrintable(box.error));
-    TextureTableModel textures;
-    textures.setSession(box.session);
-    QCOMPARE(display(textures, 0, TextureTableModel::ContainerColumn),
-             QStringLiteral("ktx2-uastc · zstd"));
-
-    const MaterialInstance& m = box.session->scene->materials.at(0);
-    QVERIFY(m.specular_glossiness);
-    MaterialFieldsModel fields;
-    fields.setMaterial(box.session, 0, to_gpu_material(m), MaterialFieldsModel::Source::Cpu);
-    QCOMPARE(fields.rowCount(), 14 + 3); // the GPUMaterialData fields, then the extension's
-    QCOMPARE(display(fields, 0, MaterialFieldsModel::PropertyColumn),
-             QStringLiteral("KHR_materials_pbrSpecularGlossiness.diffuseFactor"));
-    QCOMPARE(display(fields, 0, MaterialFieldsModel::ValueColumn),
-             Format::vec(glm::vec4(0.2f, 0.4f, 0.6f, 1.0f)));
-    QCOMPARE(display(fields, 15, MaterialFieldsModel::ValueColumn),
-             Format::vec(glm::vec4(0.1f, 0.2f, 0.3f, 0.7f)));
-    QCOMPARE(
-        display(fields, 15, MaterialFieldsModel::PropertyColumn),
-        QStringLiteral("KHR_materials_pbrSpecularGlossiness.specularFactor, glossinessFactor"));
-    QCOMPARE(fields.textureOfRow(16), 0); // specularGlossinessTexture
 }
 
 void ModelTests::millionVertexTableSortsByPermutation() {
@@ -408,79 +324,6 @@ void ModelTests::pickHitsLinesAndPointsWithinACone() {
     QCOMPARE(elements.rowCount(), 1);
     QVERIFY(display(elements, 0, TriangleTableModel::V1).isEmpty());
     QVERIFY(display(elements, 0, TriangleTableModel::AreaColumn).isEmpty());
-}
-
-void ModelTests::cullingMonitorFreezes() {
-    const LoadOutcome out = SceneLoadJob::loadNow(QStringLiteral("builtin:default"));
-    EditorContext context;
-    CullingMonitor monitor(context);
-    context.setSession(out.session);
-    OrbitCamera cam;
-    cam.frame(out.session->scene->bounds);
-    monitor.update(cam.spec());
-    const std::uint64_t total = out.session->scene->instances.size();
-    QCOMPARE(monitor.latest()->cpu.total, total);
-    QCOMPARE(monitor.latest()->cpu.visible, total); // framed: everything in view
-    monitor.setFrozen(true);
-    CameraSpec away = cam.spec();
-    away.target = away.eye + (away.eye - cam.target()); // look away from the scene
-    monitor.update(away);
-    QCOMPARE(monitor.latest()->cpu.visible, total); // still culling with the frozen camera
-    monitor.setFrozen(false);
-    QVERIFY(monitor.latest()->cpu.visible < total);
-    QVERIFY(monitor.history().size() >= 4);
-}
-
-void ModelTests::cullingMonitorCoalescesExpensivePasses() {
-    const LoadOutcome out = SceneLoadJob::loadNow(QStringLiteral("builtin:default"));
-    QVERIFY(out.session);
-    EditorContext context;
-    CullingMonitor monitor(context);
-    context.setSession(out.session);
-    OrbitCamera cam;
-    cam.frame(out.session->scene->bounds);
-    const std::uint64_t total = out.session->scene->instances.size();
-    QSignalSpy updated(&monitor, &CullingMonitor::updated);
-    // Cheap passes (ten instances: microseconds, far under 4 ms) run at once, one
-    // sample per camera step.
-    QVERIFY(monitor.lastPassMs() < 4.0);
-    std::size_t samples = monitor.history().size();
-    for (int i = 0; i < 5; ++i) {
-        cam.orbit(10.0f, 0.0f);
-        monitor.update(cam.spec());
-    }
-    QCOMPARE(monitor.history().size(), samples + 5);
-    QCOMPARE(updated.count(), 5);
-    QVERIFY(!monitor.deferred());
-    // Passes over the limit (every pass, with the limit at 0): a burst of camera steps
-    // runs no pass on the GUI thread until the timer fires, then one for the latest camera.
-    monitor.setCoalesceAboveMs(0.0);
-    samples = monitor.history().size();
-    updated.clear();
-    CameraSpec away = cam.spec();
-    for (int i = 0; i < 20; ++i) {
-        cam.orbit(10.0f, 0.0f);
-        monitor.update(cam.spec());
-    }
-    away.target = away.eye + (away.eye - cam.target()); // the last step looks away
-    monitor.update(away);
-    QVERIFY(monitor.deferred());
-    QCOMPARE(monitor.history().size(), samples);
-    QCOMPARE(updated.count(), 0);
-    QTRY_VERIFY(!monitor.deferred()); // the timer: twice the last pass's cost
-    QCOMPARE(monitor.history().size(), samples + 1);
-    QCOMPARE(updated.count(), 1);
-    QVERIFY(monitor.latest()->cpu.visible < total); // culled for the latest camera
-    QCOMPARE(monitor.cullingCamera().target, away.target);
-    // flush() runs a waiting pass at once.
-    OrbitCamera framed;
-    framed.frame(out.session->scene->bounds);
-    monitor.update(framed.spec());
-    QVERIFY(monitor.deferred());
-    monitor.flush();
-    QVERIFY(!monitor.deferred());
-    QCOMPARE(monitor.history().size(), samples + 2);
-    QCOMPARE(monitor.latest()->cpu.visible, total);
 }
 
 void ModelTests::selectionFollowsActions() {

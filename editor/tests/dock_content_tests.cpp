@@ -1,0 +1,111 @@
+// What issue 15's files show in the docks (compressed geometry, KTX2 containers,
+// specular-glossiness fields), from the test fixtures' generated files.
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include "editor_context.h"
+#include "format_values.h"
+#include "material_fields_model.h"
+#include "mesh_dock.h"
+#include "scene_load_job.h"
+#include "test_assets.h"
+#include "texture_table_model.h"
+
+using namespace sherpa;
+using namespace sherpa::editor;
+
+namespace {
+
+QString display(const QAbstractItemModel& m, int row, int column) {
+    return m.data(m.index(row, column), Qt::DisplayRole).toString();
+}
+
+} // namespace
+
+class DockContentTests : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void docksShowCompressionContainerAndSpecGloss();
+};
+
+// What issue 15's files show in the docks: a Draco primitive's codec and sizes in the
+// mesh summary (as info --json reports them), a KTX2 image's payload and
+// supercompression in the texture table, and a spec-gloss material's own fields.
+void DockContentTests::docksShowCompressionContainerAndSpecGloss() {
+    const LoadOutcome draco = SceneLoadJob::loadNow(
+        QStringLiteral(SHERPA_GLTF_COMPRESS_CACHE "/corpus/DamagedHelmet.draco.glb"));
+    QVERIFY2(draco.session, qPrintable(draco.error));
+    const PrimitiveInfo& p = draco.session->scene->primitives.at(0);
+    QVERIFY(p.compression);
+    const QString text = MeshDock::compressionText(*draco.session->scene, int(p.engine_mesh));
+    QVERIFY2(text.contains(QStringLiteral("KHR_draco_mesh_compression ") +
+                           QString::fromStdString(p.compression->modes)),
+             qPrintable(text));
+    QVERIFY2(text.contains(Format::bytes(p.compression->encoded_bytes)) &&
+                 text.contains(Format::bytes(p.compression->decoded_bytes)),
+             qPrintable(text));
+    const LoadOutcome plain = SceneLoadJob::loadNow(test::asset(QStringLiteral("DamagedHelmet")));
+    QVERIFY(plain.session);
+    QVERIFY(MeshDock::compressionText(*plain.session->scene, 0).isEmpty());
+
+    // BoxTextured with its image replaced by a Zstandard UASTC KTX2 of the basisu corpus,
+    // and its material by a spec-gloss one reading that texture.
+    QTemporaryDir dir;
+    QVERIFY(QFile::copy(QStringLiteral(SHERPA_BASISU_CACHE "/corpus/logo211_uastc_zstd.ktx2"),
+                        dir.filePath(QStringLiteral("logo.ktx2"))));
+    QVERIFY(QFile::copy(QStringLiteral(SHERPA_ASSETS_DIR "/gltf/BoxTextured/glTF/BoxTextured0.bin"),
+                        dir.filePath(QStringLiteral("BoxTextured0.bin"))));
+    QFile in(test::asset(QStringLiteral("BoxTextured")));
+    QVERIFY(in.open(QIODevice::ReadOnly));
+    QJsonObject doc = QJsonDocument::fromJson(in.readAll()).object();
+    doc[QStringLiteral("images")] =
+        QJsonArray{QJsonObject{{QStringLiteral("uri"), QStringLiteral("logo.ktx2")}}};
+    doc[QStringLiteral("textures")] = QJsonArray{QJsonObject{
+        {QStringLiteral("extensions"), QJsonObject{{QStringLiteral("KHR_texture_basisu"),
+                                                    QJsonObject{{QStringLiteral("source"), 0}}}}}}};
+    const QJsonObject sg{
+        {QStringLiteral("diffuseFactor"), QJsonArray{0.2, 0.4, 0.6, 1.0}},
+        {QStringLiteral("specularFactor"), QJsonArray{0.1, 0.2, 0.3}},
+        {QStringLiteral("glossinessFactor"), 0.7},
+        {QStringLiteral("specularGlossinessTexture"), QJsonObject{{QStringLiteral("index"), 0}}}};
+    doc[QStringLiteral("materials")] = QJsonArray{
+        QJsonObject{{QStringLiteral("extensions"),
+                     QJsonObject{{QStringLiteral("KHR_materials_pbrSpecularGlossiness"), sg}}}}};
+    doc[QStringLiteral("extensionsUsed")] =
+        QJsonArray{QStringLiteral("KHR_texture_basisu"),
+                   QStringLiteral("KHR_materials_pbrSpecularGlossiness")};
+    const QString path = dir.filePath(QStringLiteral("box.gltf"));
+    QFile out(path);
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write(QJsonDocument(doc).toJson());
+    out.close();
+    const LoadOutcome box = SceneLoadJob::loadNow(path);
+    QVERIFY2(box.session, qPrintable(box.error));
+    TextureTableModel textures;
+    textures.setSession(box.session);
+    QCOMPARE(display(textures, 0, TextureTableModel::ContainerColumn),
+             QStringLiteral("ktx2-uastc · zstd"));
+
+    const MaterialInstance& m = box.session->scene->materials.at(0);
+    QVERIFY(m.specular_glossiness);
+    MaterialFieldsModel fields;
+    fields.setMaterial(box.session, 0, to_gpu_material(m), MaterialFieldsModel::Source::Cpu);
+    QCOMPARE(fields.rowCount(), 14 + 3); // the GPUMaterialData fields, then the extension's
+    QCOMPARE(display(fields, 0, MaterialFieldsModel::PropertyColumn),
+             QStringLiteral("KHR_materials_pbrSpecularGlossiness.diffuseFactor"));
+    QCOMPARE(display(fields, 0, MaterialFieldsModel::ValueColumn),
+             Format::vec(glm::vec4(0.2f, 0.4f, 0.6f, 1.0f)));
+    QCOMPARE(display(fields, 15, MaterialFieldsModel::ValueColumn),
+             Format::vec(glm::vec4(0.1f, 0.2f, 0.3f, 0.7f)));
+    QCOMPARE(
+        display(fields, 15, MaterialFieldsModel::PropertyColumn),
+        QStringLiteral("KHR_materials_pbrSpecularGlossiness.specularFactor, glossinessFactor"));
+    QCOMPARE(fields.textureOfRow(16), 0); // specularGlossinessTexture
+}
+
+QTEST_MAIN(DockContentTests)
+#include "dock_content_tests.moc"

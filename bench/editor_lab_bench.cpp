@@ -29,19 +29,16 @@
 #include "lab_runner.h"
 #include "main_window.h"
 #include "ui_latency.h"
+#include "window_test_support.h"
 
 using namespace sherpa;
 using namespace sherpa::editor;
 using sherpa::bench::latencies_during;
 using sherpa::bench::percentile;
 
-namespace {
+using sherpa::editor::test::load; // the editor suites' bounded load
 
-bool load(MainWindow& w, const QString& spec) {
-    QSignalSpy loaded(&w, &MainWindow::sceneLoaded);
-    w.openScene(spec);
-    return loaded.wait(120000);
-}
+namespace {
 
 void print_latency(const char* what, double seconds, const std::vector<double>& d) {
     std::printf("  %-30s %6.1f s %5zu events: p50 %6.1f ms, p99 %7.1f ms, max %7.1f ms\n", what,

@@ -30,26 +30,18 @@
 #include "resolution_scale.h"
 #include "ui_latency.h"
 #include "viewport_window.h"
+#include "window_test_support.h"
 
 using namespace sherpa;
 using namespace sherpa::editor;
 using sherpa::bench::latencies_during;
 using sherpa::bench::percentile;
 
+using sherpa::editor::test::load; // the editor suites' bounded load
+
 namespace {
 
 constexpr int kStepMs = 16; // camera steps at 60 Hz, as mouse moves come
-
-bool load(MainWindow& w, const QString& spec) {
-    bool done = false, ok = false;
-    const auto a = QObject::connect(&w, &MainWindow::sceneLoaded, [&] { done = ok = true; });
-    const auto b = QObject::connect(&w, &MainWindow::loadFailed, [&] { done = true; });
-    w.openScene(spec);
-    while (!done) QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
-    QObject::disconnect(a);
-    QObject::disconnect(b);
-    return ok;
-}
 
 void settle(MainWindow& w) {
     w.screenshot(); // a full-size frame, waited for

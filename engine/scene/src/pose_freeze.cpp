@@ -17,6 +17,7 @@ Scene freeze_pose(const Scene& s, const Pose& pose) {
         Mesh mesh = s.meshes[inst.mesh_id];
         const std::vector<glm::vec3> posed = posed_positions(s, pose, inst.node_id, *prim);
         const glm::mat4& world = pose.world[inst.node_id];
+        const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(world)));
         const PrimitiveMotion* m =
             prim->motion >= 0 ? &s.motions[static_cast<std::size_t>(prim->motion)] : nullptr;
         const std::int32_t skin = s.nodes[inst.node_id].skin;
@@ -46,7 +47,7 @@ Scene freeze_pose(const Scene& s, const Pose& pose) {
                 n = glm::mat3(j) * n;
                 t = glm::mat3(j) * t;
             } else {
-                n = glm::transpose(glm::inverse(glm::mat3(world))) * n;
+                n = normal_matrix * n;
                 t = glm::mat3(world) * t; // tangents follow the surface (handedness kept)
             }
             vx.normal = n;

@@ -155,14 +155,12 @@ std::vector<ImageProblem> find_image_problems(const Scene& scene) {
         if (!image_is_missing(img)) {
             // OpenImageIO reads no KTX2: those are transcoded (a bad level index or
             // bad global data shows only there), the rest probed.
-            BasisTexture ktx2;
+            RgbaImage ktx2;
             if (img.encoded.empty() ||
                 (is_ktx2(img.encoded)
-                     ? transcode_ktx2_basis(img.encoded, ktx2, p.reason)
+                     ? decode_image_or_ktx2(img.encoded, image_decoder_hint(img), ktx2, p.reason)
                      : probe_encoded_image(img.encoded, image_decoder_hint(img), p.reason)))
                 continue;
-            if (is_ktx2(img.encoded))
-                p.reason = std::string(image_decoder_hint(img)) + ": " + p.reason;
             p.state = CacheState::Undecodable;
         }
         problems.push_back(std::move(p));

@@ -10,15 +10,10 @@
 // Prints numbers; never part of the test suite.
 #include <QApplication>
 #include <QElapsedTimer>
-#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QVulkanInstance>
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cstdio>
-#include <mutex>
-#include <thread>
 #include <vector>
 
 #include <sherpa/lab/family.h>

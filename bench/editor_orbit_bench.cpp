@@ -17,11 +17,7 @@
 #include <QTimer>
 #include <QVulkanInstance>
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cstdio>
-#include <mutex>
-#include <thread>
 #include <vector>
 
 #include "gpu_viewport.h"

@@ -18,8 +18,6 @@ struct PoseOptions {
     bool bind = false;  // --pose bind
 };
 
-inline constexpr const char* kPoseOptionsSynopsis = "[--animation N --time T | --pose bind]";
-
 // If args[i] is a pose option, consumes it and its value (advancing i) into `out`;
 // Bad sets `error`.
 OptionMatch parse_pose_option(Args args, std::size_t& i, PoseOptions& out, std::string& error);

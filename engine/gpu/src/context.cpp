@@ -11,15 +11,15 @@
 
 namespace sherpa::gpu {
 
-namespace {
-
-constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
-
 bool has_extension(const std::vector<VkExtensionProperties>& list, const char* name) {
     return std::any_of(list.begin(), list.end(), [&](const VkExtensionProperties& e) {
         return std::strcmp(e.extensionName, name) == 0;
     });
 }
+
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
 std::vector<VkExtensionProperties> device_extensions(VkPhysicalDevice pd) {
     std::uint32_t n = 0;

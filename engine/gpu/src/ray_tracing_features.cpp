@@ -5,21 +5,11 @@
 
 namespace sherpa::gpu {
 
-namespace {
-
-bool has(const std::vector<VkExtensionProperties>& list, const char* name) {
-    return std::any_of(list.begin(), list.end(), [&](const VkExtensionProperties& e) {
-        return std::strcmp(e.extensionName, name) == 0;
-    });
-}
-
-} // namespace
-
 void RayTracingFeatures::query_support(VkPhysicalDevice physical,
                                        const std::vector<VkExtensionProperties>& extensions) {
     pipelines = query = false;
-    if (!has(extensions, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME) ||
-        !has(extensions, VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME))
+    if (!has_extension(extensions, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME) ||
+        !has_extension(extensions, VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME))
         return;
     as_.pNext = &pipeline_;
     pipeline_.pNext = &query_;
@@ -28,9 +18,9 @@ void RayTracingFeatures::query_support(VkPhysicalDevice physical,
     f2.pNext = &as_;
     vkGetPhysicalDeviceFeatures2(physical, &f2);
     pipelines = as_.accelerationStructure && pipeline_.rayTracingPipeline &&
-                has(extensions, VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME);
+                has_extension(extensions, VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME);
     query = as_.accelerationStructure && query_.rayQuery &&
-            has(extensions, VK_KHR_RAY_QUERY_EXTENSION_NAME);
+            has_extension(extensions, VK_KHR_RAY_QUERY_EXTENSION_NAME);
 }
 
 void RayTracingFeatures::enable(VkPhysicalDeviceVulkan13Features& last,
@@ -70,7 +60,6 @@ void record_ray_tracing_properties(VkPhysicalDevice physical, DeviceInfo& info) 
     info.shader_group_handle_size = rt.shaderGroupHandleSize;
     info.shader_group_handle_alignment = rt.shaderGroupHandleAlignment;
     info.shader_group_base_alignment = rt.shaderGroupBaseAlignment;
-    info.max_ray_recursion_depth = rt.maxRayRecursionDepth;
 }
 
 } // namespace sherpa::gpu

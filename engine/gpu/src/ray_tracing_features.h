@@ -9,6 +9,10 @@
 
 namespace sherpa::gpu {
 
+// Whether `list` (vkEnumerateDeviceExtensionProperties) names extension `name`
+// (context.cpp).
+bool has_extension(const std::vector<VkExtensionProperties>& list, const char* name);
+
 struct RayTracingFeatures {
     bool pipelines = false; // acceleration structures + ray-tracing pipelines
     bool query = false;     // acceleration structures + ray query

@@ -7,6 +7,7 @@
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/vk_helpers.h>
 #include <sherpa/scene/animation.h>
+#include <sherpa/texture/mips.h>
 
 #include <cmath>
 
@@ -14,9 +15,8 @@ namespace sherpa::gpu {
 namespace {
 
 std::uint8_t srgb_byte(float linear) {
-    const float c = std::clamp(linear, 0.0f, 1.0f);
-    const float s = c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-    return static_cast<std::uint8_t>(std::lround(s * 255.0f));
+    return static_cast<std::uint8_t>(
+        std::lround(tex::linear_to_srgb(std::clamp(linear, 0.0f, 1.0f)) * 255.0f));
 }
 
 std::string ray_traced_view_names() {

@@ -1,5 +1,7 @@
 #include "rt_view_pass.h"
 
+#include "as_build.h"
+
 #include <sherpa/gpu/commands.h>
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/vk_helpers.h>
@@ -19,10 +21,6 @@ constexpr VkShaderStageFlags kHitStages =
     VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR | VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
 constexpr VkShaderStageFlags kAllStages =
     VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR | kHitStages;
-
-VkDeviceSize align_up(VkDeviceSize v, VkDeviceSize a) {
-    return a ? (v + a - 1) / a * a : v;
-}
 
 } // namespace
 

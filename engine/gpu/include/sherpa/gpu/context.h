@@ -60,7 +60,7 @@ struct DeviceInfo {
     // (0 while ray tracing is not enabled).
     std::uint32_t as_scratch_alignment = 0;
     std::uint32_t shader_group_handle_size = 0, shader_group_handle_alignment = 0,
-                  shader_group_base_alignment = 0, max_ray_recursion_depth = 0;
+                  shader_group_base_alignment = 0;
     bool swapchain = false; // VK_KHR_swapchain enabled
     bool anisotropy = false;
     bool wide_lines = false;

@@ -13,14 +13,6 @@ CullingMonitor::CullingMonitor(const EditorContext& context, QObject* parent)
     connect(&context_, &EditorContext::sceneReady, this, [this] {
         input_ = context_.scene() ? prepare_cull_input(*context_.scene()) : CullInput{};
         pose_.reset();
-        primitive_of_mesh_.clear();
-        if (const Scene* scene = context_.scene()) {
-            primitive_of_mesh_.assign(scene->meshes.size(), -1);
-            for (std::size_t p = 0; p < scene->primitives.size(); ++p)
-                if (const std::int32_t m = scene->primitives[p].engine_mesh;
-                    m >= 0 && static_cast<std::size_t>(m) < primitive_of_mesh_.size())
-                    primitive_of_mesh_[static_cast<std::size_t>(m)] = static_cast<std::int32_t>(p);
-        }
         history_ = RingHistory<CullSample>(kHistory);
         frozen_.reset();
         rerun();
@@ -56,15 +48,11 @@ void CullingMonitor::setPose(std::shared_ptr<const Pose> pose) {
     const Scene* scene = context_.scene();
     if (!scene || pose == pose_) return;
     pose_ = std::move(pose);
-    std::vector<Aabb> boxes(scene->instances.size());
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-        const MeshInstance& inst = scene->instances[i];
-        const std::int32_t p =
-            inst.mesh_id < primitive_of_mesh_.size() ? primitive_of_mesh_[inst.mesh_id] : -1;
-        boxes[i] = pose_ && p >= 0 ? culling_bounds(*scene, *pose_, inst.node_id,
-                                                    scene->primitives[static_cast<std::size_t>(p)])
-                                   : inst.world_bounds;
-    }
+    std::vector<Aabb> boxes;
+    if (pose_)
+        boxes = instance_culling_bounds(*scene, *pose_);
+    else
+        for (const MeshInstance& inst : scene->instances) boxes.push_back(inst.world_bounds);
     input_.boxes.assign(boxes);
     // The GPU path's check waits for the render thread: at most a few per second while
     // the timeline plays, not one per tick.

@@ -98,7 +98,6 @@ private:
     RingHistory<CullSample> history_{kHistory};
     std::vector<std::uint8_t> visible_;
     std::shared_ptr<const Pose> pose_;
-    std::vector<std::int32_t> primitive_of_mesh_; // engine mesh -> Scene::primitives
     bool gpu_path_ = false;
     GpuCullCheck gpu_check_;
     double last_ms_ = 0.0; // cost of the last pass

@@ -90,7 +90,13 @@ struct FrameSlot {
     std::uint64_t pose_key = 0; // hash of the pose drawn (the shadow cache's key)
     VkDeviceAddress posed_instances = 0, pose_address = 0; // push constants of posed frames
     std::uint32_t highlight_base = 0;
-    BufferHandle cull_objects; // GPU path while posed: GPUCullObjects of the posed bounds
+    // What this slot's pose buffer holds (PosePass): the pose (null: the default one),
+    // the selected joint and the scene's load; a frame asking for the same again
+    // (paused, or a file's default pose) reuses it without rewriting.
+    std::shared_ptr<const Pose> pose_written;
+    std::optional<std::uint32_t> joint_written;
+    std::uint64_t pose_generation = 0; // 0: nothing written
+    BufferHandle cull_objects;         // GPU path while posed: GPUCullObjects of the posed bounds
     VkDeviceSize cull_objects_capacity = 0;
 };
 

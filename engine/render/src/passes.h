@@ -42,6 +42,7 @@ private:
     std::vector<std::uint32_t> skin_base_;   // first joint matrix of each skin
     std::vector<std::uint32_t> skin_slots_;  // matrices each skin takes
     std::uint32_t joints_ = 0, weights_ = 0; // totals per frame
+    std::uint64_t generation_ = 0;           // counts build(): a slot's pose is of this scene
 };
 
 // Culling of the camera and of each shadow cascade re-rendered this frame, on the

@@ -53,10 +53,23 @@ void PosePass::build(const Scene& scene, const GpuScene& gpu) {
     reset();
     active_ = !scene.motions.empty() || !scene.animations.empty();
     if (!active_) return;
+    ++generation_;
     scene_.nodes = scene.nodes;
     scene_.skins = scene.skins;
-    scene_.motions = scene.motions;
     scene_.primitives = scene.primitives;
+    // culling_bounds() reads the per-joint boxes and the target count, not the
+    // per-vertex arrays (the largest of the scene, already uploaded): no copy of those.
+    scene_.motions.reserve(scene.motions.size());
+    for (const PrimitiveMotion& m : scene.motions) {
+        PrimitiveMotion& c = scene_.motions.emplace_back();
+        c.mesh = m.mesh;
+        c.primitive = m.primitive;
+        c.influences = m.influences;
+        c.max_joint = m.max_joint;
+        c.targets.resize(m.targets.size());
+        c.target_attributes = m.target_attributes;
+        c.boxes = m.boxes;
+    }
     default_ = evaluate_pose(scene_, -1, 0.0);
     std::vector<std::int32_t> primitive_of_mesh(scene.meshes.size(), -1);
     for (std::size_t p = 0; p < scene.primitives.size(); ++p)
@@ -112,10 +125,21 @@ const Pose& PosePass::pose_of(const RenderSettings& settings) const {
 
 void PosePass::record(FrameContext& f) {
     FrameSlot& slot = f.slot;
-    slot.posed = false;
-    slot.pose_key = 0;
-    if (!active_ || !f.scene) return;
+    if (!active_ || !f.scene) {
+        slot.posed = false;
+        slot.pose_key = 0;
+        slot.pose_generation = 0;
+        return;
+    }
+    // The same pose as this slot's last frame (a paused timeline, the default pose):
+    // its buffer, bounds and key stand.
+    if (slot.pose_generation == generation_ && slot.pose_written == f.settings.pose &&
+        slot.joint_written == f.settings.selected_joint)
+        return;
     write(f, pose_of(f.settings));
+    slot.pose_written = f.settings.pose;
+    slot.joint_written = f.settings.selected_joint;
+    slot.pose_generation = generation_;
 }
 
 void PosePass::write(FrameContext& f, const Pose& pose) {

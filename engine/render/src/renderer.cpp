@@ -167,6 +167,8 @@ void Renderer::Impl::unload() {
         slot->cull_readback_capacity = 0;
         slot->culling.count = 0;
         slot->posed = false;
+        slot->pose_generation = 0;
+        slot->pose_written.reset();
         resources->destroy(slot->pose); // sized for the scene's instances and joints
         slot->pose_capacity = 0;
         resources->destroy(slot->cull_objects);

@@ -35,8 +35,9 @@ constexpr Subcommand kSubcommands[] = {
      "rt SCENE [--json] [--validation] [--scratch-budget BYTES] [--no-compact] [--rt on|off]\n"
      "                                     acceleration structures: BLAS/TLAS statistics"},
     {"lab", sherpa::cli::run_lab,
-     "lab SCENE --family tangents|textures|culling [--json|--csv] [--chart OUT.svg]\n"
-     "      [--repeat N] [--sample-texels N] [--cameras N] [--no-gpu]   methods: time vs error"},
+     "lab SCENE --family tangents|textures|culling|mesh-compression\n"
+     "      [--json|--csv] [--chart OUT.svg] [--repeat N] [--sample-texels N] [--cameras N] "
+     "[--no-gpu]   methods: time vs error"},
     {"compare", sherpa::cli::run_compare,
      "compare A B [--json] [--image OUT.png]   structural diff of two glTF files"},
     {"budget", sherpa::cli::run_budget,

@@ -84,7 +84,7 @@ std::vector<QScatterSeries*> show_lab_report(QChart& chart, const lab::FamilyRep
         const lab::MethodResult& m = report.methods[i];
         const lab::ErrorFigure* e = m.error(report.chart_error);
         if (!m.ran || !e) continue;
-        x.add(m.time);
+        x.add(lab::chart_x_value(report, m));
         y.add(e->value);
         plotted.push_back(i);
     }
@@ -92,14 +92,17 @@ std::vector<QScatterSeries*> show_lab_report(QChart& chart, const lab::FamilyRep
     y.decide();
     // The error's name as the chart's title: a vertical axis title does not fit a dock.
     chart.setTitle(QString::fromStdString(report.chart_error));
-    QAbstractAxis* x_axis = make_axis(x, QCoreApplication::translate("LabChart", "time (%1)")
-                                             .arg(QString::fromStdString(report.time_unit)));
+    QAbstractAxis* x_axis =
+        make_axis(x, report.chart_x.empty() ? QCoreApplication::translate("LabChart", "time (%1)")
+                                                  .arg(QString::fromStdString(report.time_unit))
+                                            : QString::fromStdString(report.chart_x));
     QAbstractAxis* y_axis = make_axis(y, QString());
     chart.addAxis(x_axis, Qt::AlignBottom);
     chart.addAxis(y_axis, Qt::AlignLeft);
     auto point = [&](std::size_t i) {
         const lab::MethodResult& m = report.methods[i];
-        return QPointF(x.place(m.time), y.place(m.error(report.chart_error)->value));
+        return QPointF(x.place(lab::chart_x_value(report, m)),
+                       y.place(m.error(report.chart_error)->value));
     };
 
     chart.legend()->hide();

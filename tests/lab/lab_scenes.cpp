@@ -1,6 +1,22 @@
 #include "lab_scenes.h"
 
+#include <cmath>
+
 namespace sherpa::test {
+namespace {
+
+// Positions, normals and uv0 from the file; counts and bounds from the vertices.
+void finish_uv_mesh(Mesh& m) {
+    m.provenance[std::size_t(VertexAttribute::TexCoord0)] = Provenance::Authored;
+    m.provenance[std::size_t(VertexAttribute::Tangent)] = Provenance::Defaulted;
+    m.provenance[std::size_t(VertexAttribute::TexCoord1)] = Provenance::Defaulted;
+    m.provenance[std::size_t(VertexAttribute::Color0)] = Provenance::Defaulted;
+    for (const Vertex& v : m.vertices) m.local_bounds.expand(v.position);
+    m.source_vertex_count = std::uint32_t(m.vertices.size());
+    m.source_triangle_count = std::uint32_t(m.indices.size() / 3);
+}
+
+} // namespace
 
 Mesh mirrored_strip() {
     Mesh m;
@@ -17,13 +33,29 @@ Mesh mirrored_strip() {
     // Quad corners a (bottom left), b (bottom right), c (top left), d (top right):
     // triangles a b d, a d c. Left quad: 0 1 4 3; right quad: 1 2 5 4.
     m.indices = {0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4};
-    m.provenance[std::size_t(VertexAttribute::TexCoord0)] = Provenance::Authored;
-    m.provenance[std::size_t(VertexAttribute::Tangent)] = Provenance::Defaulted;
-    m.provenance[std::size_t(VertexAttribute::TexCoord1)] = Provenance::Defaulted;
-    m.provenance[std::size_t(VertexAttribute::Color0)] = Provenance::Defaulted;
-    for (const Vertex& v : m.vertices) m.local_bounds.expand(v.position);
-    m.source_vertex_count = std::uint32_t(m.vertices.size());
-    m.source_triangle_count = std::uint32_t(m.indices.size() / 3);
+    finish_uv_mesh(m);
+    return m;
+}
+
+Mesh wavy_grid(int n) {
+    Mesh m;
+    m.name = "wavy";
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const float u = float(i) / float(n - 1), v = float(j) / float(n - 1);
+            Vertex vx;
+            vx.position = {3.0f * u, v, 0.25f + 0.25f * std::sin(7.0f * u + 3.0f * v)};
+            vx.normal = glm::normalize(glm::vec3(std::sin(5.0f * u), std::cos(4.0f * v), 1.3f));
+            vx.uv0 = {2.0f * u, v};
+            m.vertices.push_back(vx);
+        }
+    for (int j = 0; j + 1 < n; ++j)
+        for (int i = 0; i + 1 < n; ++i) {
+            const std::uint32_t a = std::uint32_t(j * n + i), b = a + 1, c = a + std::uint32_t(n),
+                                d = c + 1;
+            m.indices.insert(m.indices.end(), {a, b, d, a, d, c});
+        }
+    finish_uv_mesh(m);
     return m;
 }
 

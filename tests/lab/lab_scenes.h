@@ -11,6 +11,10 @@ namespace sherpa::test {
 // the left quad's 3 corners on the seam differ.
 Mesh mirrored_strip();
 
+// An n x n grid of vertices over x 0..3, y 0..1 on a wavy surface (z up to 0.5),
+// normals tilted in every direction, uv0 over 0..2 x 0..1, triangles between them.
+Mesh wavy_grid(int n);
+
 // A scene of the given meshes, each drawn once with one default material.
 Scene scene_of(std::vector<Mesh> meshes);
 

@@ -96,6 +96,12 @@ struct Axis {
 
 } // namespace
 
+double chart_x_value(const FamilyReport& report, const MethodResult& m) {
+    if (report.chart_x.empty()) return m.time;
+    const ErrorFigure* e = m.error(report.chart_x);
+    return e && std::isfinite(e->value) ? e->value : 0.0;
+}
+
 std::vector<std::size_t> pareto_front(const FamilyReport& report) {
     const double sign = higher_is_better(report) ? -1.0 : 1.0; // compare as lower-is-better
     std::vector<std::size_t> front;
@@ -108,12 +114,13 @@ std::vector<std::size_t> pareto_front(const FamilyReport& report) {
             const MethodResult& b = report.methods[j];
             if (j == i || !b.ran || b.method.group != a.method.group) continue;
             const double eb = sign * chart_value(report, b);
-            beaten = b.time <= a.time && eb <= ea && (b.time < a.time || eb < ea);
+            const double xa = chart_x_value(report, a), xb = chart_x_value(report, b);
+            beaten = xb <= xa && eb <= ea && (xb < xa || eb < ea);
         }
         if (!beaten) front.push_back(i);
     }
     std::sort(front.begin(), front.end(), [&](std::size_t x, std::size_t y) {
-        return report.methods[x].time < report.methods[y].time;
+        return chart_x_value(report, report.methods[x]) < chart_x_value(report, report.methods[y]);
     });
     return front;
 }
@@ -150,7 +157,7 @@ std::string report_svg(const FamilyReport& report, int width, int height) {
     for (std::size_t i = 0; i < report.methods.size(); ++i)
         if (report.methods[i].ran) {
             ran.push_back(i);
-            xs.push_back(report.methods[i].time);
+            xs.push_back(chart_x_value(report, report.methods[i]));
             ys.push_back(chart_value(report, report.methods[i]));
         }
     const Axis ax(xs, left, right), ay(ys, bottom, top);
@@ -159,9 +166,9 @@ std::string report_svg(const FamilyReport& report, int width, int height) {
     s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
       << "\" viewBox=\"0 0 " << width << " " << height << "\" font-family=\"sans-serif\" "
       << "font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    s << "<text x=\"" << left << "\" y=\"20\" font-size=\"14\">" << escape(report.family)
-      << ": time against " << escape(report.chart_error)
-      << " (reference: " << escape(report.reference) << ")</text>\n";
+    s << "<text x=\"" << left << "\" y=\"20\" font-size=\"14\">" << escape(report.family) << ": "
+      << (report.chart_x.empty() ? "time" : escape(report.chart_x)) << " against "
+      << escape(report.chart_error) << " (reference: " << escape(report.reference) << ")</text>\n";
     s << "<path d=\"M" << left << " " << top << " V" << bottom << " H" << right
       << "\" stroke=\"black\" fill=\"none\"/>\n";
     for (double t : ax.ticks())
@@ -171,8 +178,9 @@ std::string report_svg(const FamilyReport& report, int width, int height) {
         s << "<text x=\"" << left - 5 << "\" y=\"" << ay(t) + 4 << "\" text-anchor=\"end\">"
           << number(t) << "</text>\n";
     s << "<text x=\"" << (left + right) / 2 << "\" y=\"" << height - 12
-      << "\" text-anchor=\"middle\">time, " << escape(report.time_unit) << (ax.log ? " (log)" : "")
-      << "</text>\n";
+      << "\" text-anchor=\"middle\">"
+      << (report.chart_x.empty() ? "time, " + escape(report.time_unit) : escape(report.chart_x))
+      << (ax.log ? " (log)" : "") << "</text>\n";
     s << "<text transform=\"translate(16 " << (top + bottom) / 2
       << ") rotate(-90)\" text-anchor=\"middle\">" << escape(report.chart_error)
       << (ay.log ? " (log)" : "") << (higher_is_better(report) ? ", higher is better" : "")
@@ -185,14 +193,14 @@ std::string report_svg(const FamilyReport& report, int width, int height) {
         s << "<polyline fill=\"none\" stroke=\"#d62728\" stroke-dasharray=\"4 3\" points=\"";
         for (std::size_t i : front)
             if (report.methods[i].method.group == g)
-                s << ax(report.methods[i].time) << "," << ay(chart_value(report, report.methods[i]))
-                  << " ";
+                s << ax(chart_x_value(report, report.methods[i])) << ","
+                  << ay(chart_value(report, report.methods[i])) << " ";
         s << "\"/>\n";
     }
     for (std::size_t i : ran) {
         const MethodResult& m = report.methods[i];
         const bool on_front = std::find(front.begin(), front.end(), i) != front.end();
-        const double x = ax(m.time), y = ay(chart_value(report, m));
+        const double x = ax(chart_x_value(report, m)), y = ay(chart_value(report, m));
         s << "<circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"5\" stroke=\"#1f77b4\" fill=\""
           << (on_front ? "#d62728" : "white") << "\"><title>" << escape(m.method.name) << " "
           << escape(m.method.parameters) << ": " << number(m.time) << " "

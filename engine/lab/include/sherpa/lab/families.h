@@ -50,6 +50,24 @@ struct CullFamilyOptions {
 };
 std::unique_ptr<Family> make_cull_family(const CullFamilyOptions& options = {});
 
+// Mesh compression: KHR_mesh_quantization presets as gltfpack writes them (positions
+// as integers over each primitive's bounds, the dequantization in the node transform;
+// normals and tangents signed normalized, not octahedral; uvs normalized over their
+// range; bits vp/vn/vt from 8/8/8 to 16/16/16, gltfpack's default 14/8/12 among them)
+// and the 32-bit float reference, each alone (group KHR_mesh_quantization) and through
+// meshoptimizer's vertex and index codecs (group "meshopt codec", no filters).
+// Errors against the float geometry: position RMS (the chart error) and max in world
+// units, the grid step, normal and tangent angle mean/max (degrees), uv RMS/max (uv
+// units); bytes of the vertex streams (4-byte aligned elements) and indices, and the
+// chart's x. Time: CPU ms per million vertices to encode and decode, best of
+// `repeat`. Failures: primitives without finite positions, normals or tangents
+// quantized to zero, tangent frames whose bitangent flips, codec round trips.
+struct MeshCompressionFamilyOptions {
+    int repeat = 3;
+};
+std::unique_ptr<Family>
+make_mesh_compression_family(const MeshCompressionFamilyOptions& options = {});
+
 // The culling family's default path around `bounds`: half the cameras orbit outside
 // at the framing distance looking at the centre (everything in view), half stand
 // inside at half the radius looking outward (about half culled); 60 degrees, 16:9.

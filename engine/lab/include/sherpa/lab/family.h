@@ -67,6 +67,9 @@ struct FamilyReport {
     std::string reference;   // what the errors are measured against
     std::string time_unit;   // "ms/Mtri", "ms/MPix", "ns/object"
     std::string chart_error; // the figure a time-vs-error chart plots
+    // The figure on the chart's x axis instead of time (mesh compression: "bytes");
+    // empty: time. The Pareto front is taken over the same two.
+    std::string chart_x;
     std::vector<MethodResult> methods;
     std::vector<std::string> notes; // what was measured (inputs skipped, sampling)
     bool cancelled = false;         // RunControl::cancel stopped it: no methods
@@ -94,7 +97,7 @@ public:
 // vertex splits would make welded MikkTSpace equal the exact one everywhere).
 LoadOptions lab_load_options();
 
-// "tangents", "textures", "culling".
+// "tangents", "textures", "culling", "mesh-compression".
 std::vector<std::string_view> family_names();
 // The family with default options, or nullptr for an unknown name.
 std::unique_ptr<Family> make_family(std::string_view name);

@@ -10,9 +10,14 @@
 
 namespace sherpa::lab {
 
+// A method's x on the chart: its time, or the figure FamilyReport::chart_x names (0
+// when the method lacks it).
+double chart_x_value(const FamilyReport& report, const MethodResult& m);
+
 // Indices into report.methods of the methods that ran and that no other method of
-// their group (MethodInfo::group) beats on both time and the chart error (lower time; lower error,
-// or higher where the figure is higher-is-better), ordered by time.
+// their group (MethodInfo::group) beats on both chart_x_value (time unless FamilyReport::chart_x)
+// and the chart error (lower x; lower error, or higher where the figure is higher-is-better),
+// ordered by time.
 std::vector<std::size_t> pareto_front(const FamilyReport& report);
 
 // One row per method: method,parameters,ran,time,<unit>,total_ms, then every error

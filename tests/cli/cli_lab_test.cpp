@@ -55,6 +55,42 @@ TEST(CliLab, CullingOnAGridHasNoFalseNegatives) {
     EXPECT_FALSE(j["methods"][3]["ran"].get<bool>());
 }
 
+TEST(CliLab, MeshCompressionJsonShape) {
+    const auto j = lab_json("'" + sherpa::test::gltf_asset("Duck") + "' --family mesh-compression");
+    EXPECT_EQ(j.at("family"), "mesh-compression");
+    EXPECT_EQ(j.at("chart_error"), "position_rms");
+    EXPECT_EQ(j.at("chart_x"), "bytes");
+    EXPECT_EQ(j.at("time_unit"), "ms/Mvert");
+    ASSERT_EQ(j.at("methods").size(), 14u);
+    std::set<std::string> groups;
+    for (const auto& m : j["methods"]) {
+        SCOPED_TRACE(m.dump());
+        groups.insert(m.at("group").get<std::string>());
+        EXPECT_TRUE(m.at("ran").get<bool>());
+        EXPECT_GT(m.at("time").get<double>(), 0.0);
+        for (const char* e : {"position_rms", "position_max", "position_step", "bytes",
+                              "vertex_bytes", "index_bytes", "bytes_per_vertex", "normal_mean_deg",
+                              "normal_max_deg", "uv_rms", "uv_max"})
+            EXPECT_TRUE(m["errors"].contains(e)) << e;
+        EXPECT_TRUE(m.at("failures").empty());
+    }
+    EXPECT_EQ(groups, (std::set<std::string>{"KHR_mesh_quantization", "meshopt codec"}));
+    const auto& reference = j["methods"][0];
+    EXPECT_EQ(reference["name"], "float");
+    EXPECT_EQ(reference["errors"]["position_max"].get<double>(), 0.0);
+    EXPECT_EQ(reference["errors"]["bytes_per_vertex"].get<double>(), 32.0) << "12 + 12 + 8";
+    EXPECT_TRUE(reference["pareto"].get<bool>()) << "exact";
+    EXPECT_TRUE(j["methods"][1]["pareto"].get<bool>()) << "fewest bytes of its group";
+    // An empty primitive: nothing to quantize, said per method.
+    const auto e = lab_json("'" + std::string(SHERPA_TEST_DATA_DIR) +
+                            "/empty_primitive.gltf' --family mesh-compression");
+    ASSERT_EQ(e.at("methods").size(), 14u);
+    for (const auto& m : e["methods"]) {
+        EXPECT_FALSE(m["ran"].get<bool>());
+        EXPECT_EQ(m["note"], "no mesh primitive with vertices");
+    }
+}
+
 TEST(CliLab, CsvAndChart) {
     const fs::path svg =
         fs::temp_directory_path() / ("sherpa_lab_" + std::to_string(::getpid()) + ".svg");

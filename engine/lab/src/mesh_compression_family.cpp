@@ -233,19 +233,22 @@ FamilyReport MeshCompressionFamily::run(const Scene& scene, const RunControl& co
             measure(in, e, tallies[k]);
             progress.step();
         }
+    const bool any_vertices = std::any_of(scene.meshes.begin(), scene.meshes.end(),
+                                          [](const Mesh& m) { return !m.vertices.empty(); });
+    const std::string why =
+        any_vertices ? "no primitive with finite positions" : "no mesh primitive with vertices";
     for (std::size_t k = 0; k < infos.size(); ++k) {
         if (inputs.empty()) {
             MethodResult r;
             r.method = infos[k];
-            r.note = "no primitive with finite positions";
+            r.note = why;
             r.failures = input_failures;
             report.methods.push_back(std::move(r));
             continue;
         }
         report.methods.push_back(result_of(infos[k], tallies[k], input_failures));
     }
-    if (inputs.empty())
-        report.notes.push_back("no primitive with finite positions: nothing to quantize");
+    if (inputs.empty()) report.notes.push_back(why + ": nothing to quantize");
     report.notes.push_back(
         "errors: positions in world space under each primitive's first instance; "
         "normal/tangent angles in object space; uv in uv units (no texture "

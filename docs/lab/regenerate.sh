@@ -12,3 +12,7 @@ assets="$here/../../../shared/assets/gltf"
   --chart "$here/textures_damaged_helmet.svg" > "$here/textures_damaged_helmet.csv"
 "$cli" lab "$assets/2CylinderEngine/glTF/2CylinderEngine.gltf" --family culling --csv \
   --chart "$here/culling_2cylinder_engine.svg" > "$here/culling_2cylinder_engine.csv"
+"$cli" lab "$assets/2CylinderEngine/glTF/2CylinderEngine.gltf" --family mesh-compression --csv \
+  --chart "$here/mesh_compression_2cylinder_engine.svg" > "$here/mesh_compression_2cylinder_engine.csv"
+"$cli" lab "$assets/DamagedHelmet/glTF/DamagedHelmet.gltf" --family mesh-compression --csv \
+  --chart "$here/mesh_compression_damaged_helmet.svg" > "$here/mesh_compression_damaged_helmet.csv"

@@ -95,6 +95,8 @@ void LabTests::dockAgreesWithTheCli_data() {
                               << "textures";
     QTest::newRow("culling") << "2CylinderEngine"
                              << "culling";
+    QTest::newRow("mesh-compression") << "NormalTangentMirrorTest"
+                                      << "mesh-compression";
 }
 
 void LabTests::dockAgreesWithTheCli() {
@@ -148,6 +150,13 @@ void LabTests::dockAgreesWithTheCli() {
     int ran = 0;
     for (const lab::MethodResult& r : report->methods) ran += r.ran && r.error(report->chart_error);
     QCOMPARE(plotted, ran);
+    // The x axis: time, or the figure the family charts instead (mesh compression: bytes).
+    const QList<QAbstractAxis*> x_axes = dock().chart()->axes(Qt::Horizontal);
+    QCOMPARE(x_axes.size(), 1);
+    if (!report->chart_x.empty())
+        QCOMPARE(x_axes.front()->titleText(), QString::fromStdString(report->chart_x));
+    else
+        QVERIFY(x_axes.front()->titleText().startsWith(QStringLiteral("time")));
 }
 
 void LabTests::budgetAgreesWithTheCli() {

@@ -61,7 +61,7 @@ TEST(CliLab, MeshCompressionJsonShape) {
     EXPECT_EQ(j.at("chart_error"), "position_rms");
     EXPECT_EQ(j.at("chart_x"), "bytes");
     EXPECT_EQ(j.at("time_unit"), "ms/Mvert");
-    ASSERT_EQ(j.at("methods").size(), 14u);
+    ASSERT_EQ(j.at("methods").size(), 16u);
     std::set<std::string> groups;
     for (const auto& m : j["methods"]) {
         SCOPED_TRACE(m.dump());
@@ -84,7 +84,7 @@ TEST(CliLab, MeshCompressionJsonShape) {
     // An empty primitive: nothing to quantize, said per method.
     const auto e = lab_json("'" + std::string(SHERPA_TEST_DATA_DIR) +
                             "/empty_primitive.gltf' --family mesh-compression");
-    ASSERT_EQ(e.at("methods").size(), 14u);
+    ASSERT_EQ(e.at("methods").size(), 16u);
     for (const auto& m : e["methods"]) {
         EXPECT_FALSE(m["ran"].get<bool>());
         EXPECT_EQ(m["note"], "no mesh primitive with vertices");

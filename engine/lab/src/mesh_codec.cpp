@@ -4,6 +4,8 @@
 
 #include <sherpa/lab/quantize.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include <meshoptimizer.h>
@@ -101,9 +103,57 @@ private:
     bool meshopt_;
 };
 
+// xyz renormalized as a shader does; counts the vectors quantized to zero.
+template <int N> void renormalize(std::vector<glm::vec<N, float>>& out, EncodedMesh& e) {
+    for (auto& v : out) {
+        const float len = glm::length(glm::vec3(v));
+        if (!(len > 0.0f)) {
+            ++e.zero_normals;
+            continue;
+        }
+        for (int a = 0; a < 3; ++a) v[a] /= len;
+    }
+}
+
 // Unit vectors (normals: 3 components, tangents: xyz and the handedness w) through
-// signed normalized integers, xyz renormalized as a shader does. Counts the vectors
-// quantized to zero.
+// meshopt's OCTAHEDRAL filter: x/y in `bits` on the octahedron, stored as 8-bit (bits
+// <= 8, 4 bytes) or 16-bit components with z = 1 and w, as EXT_meshopt_compression
+// carries them; decoded with meshopt_decodeFilterOct. Non-finite input becomes +Z.
+template <int N>
+std::vector<std::uint8_t> octahedral_stream(const std::vector<glm::vec<N, float>>& in, int bits,
+                                            std::vector<glm::vec<N, float>>& out, EncodedMesh& e) {
+    const std::size_t n = in.size(), stride = bits <= 8 ? 4 : 8;
+    std::vector<float> four(n * 4, 0.0f);
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::vec3 xyz(in[i]);
+        const bool ok = std::isfinite(xyz.x) && std::isfinite(xyz.y) && std::isfinite(xyz.z);
+        e.nonfinite_values += !ok;
+        const glm::vec3 v = ok ? xyz : glm::vec3(0, 0, 1);
+        four[i * 4] = v.x, four[i * 4 + 1] = v.y, four[i * 4 + 2] = v.z;
+        if constexpr (N == 4) four[i * 4 + 3] = std::isfinite(in[i].w) ? in[i].w : 1.0f;
+    }
+    std::vector<std::uint8_t> filtered(n * stride);
+    meshopt_encodeFilterOct(filtered.data(), n, stride, bits, four.data());
+    std::vector<std::uint8_t> back = filtered;
+    meshopt_decodeFilterOct(back.data(), n, stride);
+    out = in;
+    for (std::size_t i = 0; i < n; ++i)
+        for (int a = 0; a < N; ++a) {
+            float c = 0.0f;
+            if (stride == 4) {
+                c = float(std::int8_t(back[i * 4 + std::size_t(a)])) / 127.0f;
+            } else {
+                std::int16_t s = 0;
+                std::memcpy(&s, &back[i * 8 + std::size_t(a) * 2], 2);
+                c = float(s) / 32767.0f;
+            }
+            out[i][a] = std::max(c, -1.0f);
+        }
+    renormalize(out, e);
+    return filtered;
+}
+
+// Unit vectors through signed normalized integers per component.
 template <int N>
 std::vector<std::uint8_t> snorm_stream(const std::vector<glm::vec<N, float>>& in, int bits,
                                        std::vector<glm::vec<N, float>>& out, EncodedMesh& e) {
@@ -113,17 +163,18 @@ std::vector<std::uint8_t> snorm_stream(const std::vector<glm::vec<N, float>>& in
     std::vector<std::int16_t> codes(flat.size());
     e.nonfinite_values += std::uint64_t(quantize_snorm(flat, bits, codes));
     dequantize_snorm(codes, bits, std::span<float>(&out[0][0], flat.size()));
-    for (auto& v : out) {
-        const glm::vec3 xyz(v);
-        const float len = glm::length(xyz);
-        if (!(len > 0.0f)) {
-            ++e.zero_normals;
-            continue;
-        }
-        for (int a = 0; a < 3; ++a) v[a] /= len;
-    }
+    renormalize(out, e);
     return pack_bits<std::int8_t, std::int16_t>(
         bits, in.size(), N, [&](std::size_t i, int a) { return codes[i * N + std::size_t(a)]; });
+}
+
+// The normal or tangent stream the preset asks for.
+template <int N>
+std::vector<std::uint8_t> unit_stream(const std::vector<glm::vec<N, float>>& in,
+                                      const QuantizationPreset& p,
+                                      std::vector<glm::vec<N, float>>& out, EncodedMesh& e) {
+    return p.octahedral && p.normal != 0 ? octahedral_stream<N>(in, p.normal, out, e)
+                                         : snorm_stream<N>(in, p.normal, out, e);
 }
 
 std::vector<std::uint8_t> uv_stream(const std::vector<glm::vec2>& in, int bits,
@@ -141,9 +192,9 @@ std::vector<std::uint8_t> uv_stream(const std::vector<glm::vec2>& in, int bits,
 
 } // namespace
 
-EncodedMesh encode_mesh(const MeshStreams& in, const QuantizationPreset& preset, bool meshopt) {
+EncodedMesh encode_mesh(const MeshStreams& in, const QuantizationPreset& preset) {
     EncodedMesh e;
-    Buffers buffers(meshopt);
+    Buffers buffers(preset.meshopt);
     const std::size_t n = in.position.size();
     MeshStreams& out = e.decoded;
     out.position = in.position;
@@ -163,9 +214,9 @@ EncodedMesh encode_mesh(const MeshStreams& in, const QuantizationPreset& preset,
             pack<float>(n, 3, [&](std::size_t i, int a) { return in.position[i][a]; }), n);
     }
     if (!in.normal.empty())
-        buffers.vertex_stream(snorm_stream<3>(in.normal, preset.normal, out.normal, e), n);
+        buffers.vertex_stream(unit_stream<3>(in.normal, preset, out.normal, e), n);
     if (!in.tangent.empty())
-        buffers.vertex_stream(snorm_stream<4>(in.tangent, preset.normal, out.tangent, e), n);
+        buffers.vertex_stream(unit_stream<4>(in.tangent, preset, out.tangent, e), n);
     if (!in.uv0.empty()) buffers.vertex_stream(uv_stream(in.uv0, preset.uv, out.uv0, e), n);
     if (!in.uv1.empty()) buffers.vertex_stream(uv_stream(in.uv1, preset.uv, out.uv1, e), n);
     buffers.indices(in.indices, n, in.triangles);

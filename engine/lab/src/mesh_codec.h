@@ -11,9 +11,13 @@
 
 namespace sherpa::lab::detail {
 
-// Bits per attribute; 0 keeps 32-bit floats. Tangents use the normal bits.
+// Bits per attribute; 0 keeps 32-bit floats. Tangents use the normal bits. `meshopt`:
+// the streams through meshoptimizer's codecs; `octahedral` (with meshopt only, as
+// EXT_meshopt_compression's OCTAHEDRAL filter carries it): normals and tangents
+// through meshopt_encodeFilterOct instead of per-component snorm.
 struct QuantizationPreset {
     int position = 0, normal = 0, uv = 0;
+    bool meshopt = false, octahedral = false;
 };
 
 // A primitive's attributes (empty where the file has none) and its index list.
@@ -34,7 +38,7 @@ struct EncodedMesh {
     std::string codec_error;            // meshopt: an encoder or round trip failure
 };
 
-// Quantizes and dequantizes every stream of `in`; with `meshopt`, encodes each packed
+// Quantizes and dequantizes every stream of `in`; with `preset.meshopt`, encodes each packed
 // stream (as KHR_mesh_quantization lays it out, one buffer per attribute as gltfpack
 // writes them) with meshopt_encodeVertexBuffer and the indices with
 // meshopt_encodeIndexBuffer (triangles) or meshopt_encodeIndexSequence, decodes them
@@ -42,6 +46,6 @@ struct EncodedMesh {
 // stream_stride), indices as 16-bit below 65536 vertices else 32-bit, each buffer
 // padded to 4 bytes; with meshopt the encoded sizes. `in.position` must hold a finite
 // value (position_grid succeeds).
-EncodedMesh encode_mesh(const MeshStreams& in, const QuantizationPreset& preset, bool meshopt);
+EncodedMesh encode_mesh(const MeshStreams& in, const QuantizationPreset& preset);
 
 } // namespace sherpa::lab::detail

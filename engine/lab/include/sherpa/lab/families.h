@@ -52,10 +52,12 @@ std::unique_ptr<Family> make_cull_family(const CullFamilyOptions& options = {});
 
 // Mesh compression: KHR_mesh_quantization presets as gltfpack writes them (positions
 // as integers over each primitive's bounds, the dequantization in the node transform;
-// normals and tangents signed normalized, not octahedral; uvs normalized over their
+// normals and tangents signed normalized per component; uvs normalized over their
 // range; bits vp/vn/vt from 8/8/8 to 16/16/16, gltfpack's default 14/8/12 among them)
 // and the 32-bit float reference, each alone (group KHR_mesh_quantization) and through
-// meshoptimizer's vertex and index codecs (group "meshopt codec", no filters).
+// meshoptimizer's vertex and index codecs (group "meshopt codec"), where 14/8/12 and
+// 16/16/16 also come with octahedral normals and tangents through meshopt's OCTAHEDRAL
+// filter ("quantized+meshopt-oct": what gltfpack -cc writes).
 // Errors against the float geometry: position RMS (the chart error) and max in world
 // units, the grid step, normal and tangent angle mean/max (degrees), uv RMS/max (uv
 // units); bytes of the vertex streams (4-byte aligned elements) and indices, and the

@@ -68,9 +68,10 @@ TEST(CliLab, MeshCompressionJsonShape) {
         groups.insert(m.at("group").get<std::string>());
         EXPECT_TRUE(m.at("ran").get<bool>());
         EXPECT_GT(m.at("time").get<double>(), 0.0);
-        for (const char* e : {"position_rms", "position_max", "position_step", "bytes",
-                              "vertex_bytes", "index_bytes", "bytes_per_vertex", "normal_mean_deg",
-                              "normal_max_deg", "uv_rms", "uv_max"})
+        for (const char* e :
+             {"position_rms", "position_max", "position_step", "bytes", "vertex_bytes",
+              "index_bytes", "bytes_per_vertex", "normal_mean_deg", "normal_max_deg", "uv_rms",
+              "uv_max", "uv_max_texels", "uv_rms_texels"})
             EXPECT_TRUE(m["errors"].contains(e)) << e;
         EXPECT_TRUE(m.at("failures").empty());
     }
@@ -81,6 +82,10 @@ TEST(CliLab, MeshCompressionJsonShape) {
     EXPECT_EQ(reference["errors"]["bytes_per_vertex"].get<double>(), 32.0) << "12 + 12 + 8";
     EXPECT_TRUE(reference["pareto"].get<bool>()) << "exact";
     EXPECT_TRUE(j["methods"][1]["pareto"].get<bool>()) << "fewest bytes of its group";
+    // DuckCM.png is 512 x 512 (read from its header): uv error in its texels.
+    for (const auto& m : j["methods"])
+        EXPECT_NEAR(m["errors"]["uv_max_texels"].get<double>(),
+                    m["errors"]["uv_max"].get<double>() * 512, 1e-6);
     // An empty primitive: nothing to quantize, said per method.
     const auto e = lab_json("'" + std::string(SHERPA_TEST_DATA_DIR) +
                             "/empty_primitive.gltf' --family mesh-compression");

@@ -105,6 +105,30 @@ TEST(LabMeshCompression, KnownBoundsBytesAndMonotonicErrors) {
     }
 }
 
+TEST(LabMeshCompression, UvErrorInTexelsOfTheBaseColourTexture) {
+    Scene scene = test::scene_of({test::wavy_grid(13)}); // no uv on the grid of 2^vt - 1
+    lab::FamilyReport r = lab::make_family("mesh-compression")->run(scene, {});
+    EXPECT_EQ(r.methods[1].error("uv_max_texels"), nullptr) << "no texture, no texel figure";
+    ImageRecord image; // generated in code: the size is in the record
+    image.width = 512, image.height = 256;
+    image.pixels.resize(512 * 256 * 4);
+    scene.images.push_back(image);
+    scene.textures.push_back({"base", 0, -1, kRoleColor});
+    scene.materials[0].base_color.texture = 0;
+    r = lab::make_family("mesh-compression")->run(scene, {});
+    for (const lab::MethodResult& m : r.methods) {
+        SCOPED_TRACE(m.method.name + " " + m.method.parameters);
+        const int vt = bits_of(m, "vt=");
+        // Half a step on u (range 2) and v (range 1), in texels of 512 x 256.
+        const double half_u = vt ? 1.0 / double((1 << vt) - 1) : 0.0, half_v = half_u / 2;
+        // Slack: a float ulp of u near 2 (2.4e-7) in texels.
+        EXPECT_LE(figure(m, "uv_max_texels"), std::hypot(512 * half_u, 256 * half_v) + 2e-4);
+        EXPECT_LE(figure(m, "uv_max_texels"), figure(m, "uv_max") * 512 + 1e-9);
+        EXPECT_GE(figure(m, "uv_max_texels"), figure(m, "uv_max") * 256 - 1e-9);
+        EXPECT_EQ(figure(m, "uv_max_texels") > 0.0, vt > 0);
+    }
+}
+
 TEST(LabMeshCompression, TangentFramesThatCollapseAreFailures) {
     Mesh m = test::mirrored_strip();
     m.provenance[std::size_t(VertexAttribute::Tangent)] = Provenance::Authored;

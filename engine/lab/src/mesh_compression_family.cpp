@@ -2,6 +2,9 @@
 // and meshoptimizer's codecs over the same streams, on every primitive of the scene,
 // against the uncompressed geometry.
 #include <sherpa/lab/families.h>
+#include <sherpa/scene/image_sources.h>
+#include <sherpa/texture/image.h>
+#include <sherpa/texture/source_export.h>
 
 #include <algorithm>
 #include <array>
@@ -60,12 +63,19 @@ struct Input {
     const Mesh* mesh = nullptr;
     glm::mat4 world{1.0f};
     detail::MeshStreams streams;
+    // The base colour texture's size in texels (0: none or unreadable), the uv set it
+    // samples and its KHR_texture_transform's linear part.
+    glm::dvec2 texels{0.0};
+    std::uint32_t uv_set = 0;
+    glm::dmat2 uv_matrix{1.0};
 };
 
 // Error sums of one method over the whole scene.
 struct Tally {
     double pos_max = 0, pos_sq = 0, step = 0;
     double nrm_sum = 0, nrm_max = 0, tan_sum = 0, tan_max = 0, uv_max = 0, uv_sq = 0;
+    double texel_max = 0, texel_sq = 0;
+    std::uint64_t texel_n = 0;
     std::uint64_t pos_n = 0, nrm_n = 0, tan_n = 0, uv_n = 0, vertices = 0;
     std::uint64_t vertex_bytes = 0, index_bytes = 0;
     double ms = 0;
@@ -122,6 +132,14 @@ void measure(const Input& in, const detail::EncodedMesh& e, Tally& t) {
     }
     add_uv(s.uv0, d.uv0, t);
     add_uv(s.uv1, d.uv1, t);
+    const std::vector<glm::vec2>&src = in.uv_set ? s.uv1 : s.uv0, &dec = in.uv_set ? d.uv1 : d.uv0;
+    if (in.texels.x > 0.0)
+        for (std::size_t i = 0; i < src.size(); ++i) {
+            const double px =
+                glm::length(in.texels * (in.uv_matrix * (glm::dvec2(src[i]) - glm::dvec2(dec[i]))));
+            if (!std::isfinite(px)) continue;
+            t.texel_max = std::max(t.texel_max, px), t.texel_sq += px * px, ++t.texel_n;
+        }
     if (flips) t.failures[{"tangent frame flipped (bitangent reversed)", where}] += flips;
     if (e.zero_normals)
         t.failures[{"normal or tangent quantized to zero", where}] += e.zero_normals;
@@ -145,9 +163,44 @@ detail::MeshStreams streams_of(const Mesh& m) {
     return s;
 }
 
+// Sizes of the scene's images in texels, read from their headers once per image (0
+// where the header cannot be read, as for KTX2 here: no texel figure there).
+class ImageSizes {
+public:
+    explicit ImageSizes(const Scene& scene) : scene_(scene) {}
+    glm::dvec2 of(std::int32_t image) {
+        if (image < 0 || std::size_t(image) >= scene_.images.size()) return glm::dvec2(0.0);
+        const auto [it, fresh] = sizes_.try_emplace(image, 0.0);
+        if (!fresh) return it->second;
+        const ImageRecord& img = scene_.images[std::size_t(image)];
+        std::uint32_t w = img.width, h = img.height;
+        std::string error;
+        if ((w == 0 || h == 0) && !img.encoded.empty() &&
+            !tex::probe_encoded_image(img.encoded, tex::image_decoder_hint(img), error, &w, &h))
+            unreadable.push_back(image_location(scene_, image));
+        return it->second = glm::dvec2(w, h);
+    }
+    std::vector<std::string> unreadable;
+
+private:
+    const Scene& scene_;
+    std::map<std::int32_t, glm::dvec2> sizes_;
+};
+
+void set_texture(const Scene& scene, ImageSizes& sizes, Input& in) {
+    if (in.mesh->material_id >= scene.materials.size()) return;
+    const TextureSlot& base = scene.materials[in.mesh->material_id].base_color;
+    if (!base.present() || std::size_t(base.texture) >= scene.textures.size() || base.tex_coord > 1)
+        return;
+    in.texels = sizes.of(scene.textures[std::size_t(base.texture)].image);
+    in.uv_set = base.tex_coord;
+    if (base.transform.present) in.uv_matrix = glm::dmat2(glm::mat2(base.transform.matrix()));
+}
+
 // The primitives to measure (under their first instance's transform); what cannot be
 // measured at all goes to `failures` for every method.
-std::vector<Input> inputs_of(const Scene& scene, std::vector<Failure>& failures) {
+std::vector<Input> inputs_of(const Scene& scene, std::vector<Failure>& failures,
+                             ImageSizes& sizes) {
     std::vector<Input> out;
     for (std::uint32_t id = 0; id < scene.meshes.size(); ++id) {
         const Mesh& m = scene.meshes[id];
@@ -168,6 +221,7 @@ std::vector<Input> inputs_of(const Scene& scene, std::vector<Failure>& failures)
                 break;
             }
         in.streams = streams_of(m);
+        set_texture(scene, sizes, in);
         out.push_back(std::move(in));
     }
     return out;
@@ -198,6 +252,10 @@ MethodResult result_of(const MethodInfo& info, const Tally& t, const std::vector
     if (t.uv_n) {
         r.errors.push_back({"uv_rms", rms(t.uv_sq, t.uv_n)});
         r.errors.push_back({"uv_max", t.uv_max});
+    }
+    if (t.texel_n) {
+        r.errors.push_back({"uv_rms_texels", rms(t.texel_sq, t.texel_n)});
+        r.errors.push_back({"uv_max_texels", t.texel_max});
     }
     r.failures = input;
     for (const auto& [key, count] : t.failures)
@@ -231,7 +289,8 @@ FamilyReport MeshCompressionFamily::run(const Scene& scene, const RunControl& co
     report.chart_x = "bytes";
     const std::vector<MethodInfo> infos = methods();
     std::vector<Failure> input_failures;
-    const std::vector<Input> inputs = inputs_of(scene, input_failures);
+    ImageSizes sizes(scene);
+    const std::vector<Input> inputs = inputs_of(scene, input_failures, sizes);
     detail::Progress progress(control, inputs.size() * infos.size());
     if (progress.stop()) return detail::cancelled_report(report.family);
     std::vector<Tally> tallies(infos.size());
@@ -268,8 +327,11 @@ FamilyReport MeshCompressionFamily::run(const Scene& scene, const RunControl& co
     report.notes.push_back(
         "errors: positions in world space under each primitive's first instance; "
         "normal/tangent angles in object space; uv in uv units (no texture "
+        "transform), uv_*_texels in texels of the base colour texture (through its "
         "transform); time: CPU encode+decode, best of " +
         std::to_string(std::max(1, options_.repeat)));
+    for (const std::string& image : sizes.unreadable)
+        report.notes.push_back("no uv error in texels on " + image + ": its size is unreadable");
     return report;
 }
 

@@ -89,9 +89,11 @@ bool decode_encoded_image(std::span<const std::uint8_t> bytes, std::string_view 
 }
 
 bool probe_encoded_image(std::span<const std::uint8_t> bytes, std::string_view name_hint,
-                         std::string& error) {
+                         std::string& error, std::uint32_t* width, std::uint32_t* height) {
     return with_encoded_image(bytes, name_hint, error, [&](OIIO::ImageInput* in) {
         const OIIO::ImageSpec& spec = in->spec();
+        if (width) *width = std::uint32_t(std::max(spec.width, 0));
+        if (height) *height = std::uint32_t(std::max(spec.height, 0));
         if (spec.width > 0 && spec.height > 0 && spec.nchannels > 0) return true;
         error = std::string(name_hint) + ": image has no pixels";
         return false;

@@ -60,10 +60,11 @@ std::unique_ptr<Family> make_cull_family(const CullFamilyOptions& options = {});
 // filter ("quantized+meshopt-oct": what gltfpack -cc writes).
 // Errors against the float geometry: position RMS (the chart error) and max in world
 // units, the grid step, normal and tangent angle mean/max (degrees), uv RMS/max (uv
-// units); bytes of the vertex streams (4-byte aligned elements) and indices, and the
-// chart's x. Time: CPU ms per million vertices to encode and decode, best of
-// `repeat`. Failures: primitives without finite positions, normals or tangents
-// quantized to zero, tangent frames whose bitangent flips, codec round trips.
+// units, and in texels of the base colour texture where its size is readable); bytes
+// of the vertex streams (4-byte aligned elements) and indices, the chart's x. Time: CPU ms per
+// million vertices to encode and decode, best of `repeat`. Failures: primitives without finite
+// positions, normals or tangents quantized to zero, tangent frames whose bitangent flips, codec
+// round trips.
 struct MeshCompressionFamilyOptions {
     int repeat = 3;
 };

@@ -28,8 +28,10 @@ bool decode_encoded_image(std::span<const std::uint8_t> bytes, std::string_view 
                           RgbaImage& out, std::string& error);
 // Opens the image and reads its header only: true when a decoder accepts it (the
 // pixels may still be damaged), else false with the decoder's reason in `error`.
+// `width`/`height`, when given, receive the header's size.
 bool probe_encoded_image(std::span<const std::uint8_t> bytes, std::string_view name_hint,
-                         std::string& error);
+                         std::string& error, std::uint32_t* width = nullptr,
+                         std::uint32_t* height = nullptr);
 bool read_image_file(const std::filesystem::path& path, RgbaImage& out, std::string& error);
 
 // Writes an RGBA8 image with OpenImageIO (format from the extension).

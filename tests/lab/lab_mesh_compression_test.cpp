@@ -159,8 +159,19 @@ TEST(LabMeshCompression, NothingToQuantizeIsSaidNotHidden) {
     for (Vertex& v : bad.vertices) v.position.x = std::numeric_limits<float>::quiet_NaN();
     Mesh partly = test::wavy_grid(3);
     partly.vertices[4].position.y = INFINITY;
+    Mesh huge = test::wavy_grid(3); // near FLT_MAX, drawn under a scale of 10
+    for (Vertex& v : huge.vertices) v.position *= 1e37f;
     const lab::FamilyReport r =
         lab::make_family("mesh-compression")->run(test::scene_of({bad, partly}), {});
+    Scene far = test::scene_of({huge});
+    far.instances[0].world = glm::scale(glm::mat4(1.0f), glm::vec3(10.0f));
+    for (const lab::MethodResult& m : lab::make_family("mesh-compression")->run(far, {}).methods) {
+        SCOPED_TRACE(m.method.name + " " + m.method.parameters);
+        EXPECT_TRUE(m.failures.empty());
+        EXPECT_TRUE(std::isfinite(figure(m, "position_rms")));
+        EXPECT_LE(figure(m, "position_max"),
+                  std::sqrt(3.0) / 2 * figure(m, "position_step") * (1 + 1e-6));
+    }
     for (const lab::MethodResult& m : r.methods) {
         SCOPED_TRACE(m.method.name + " " + m.method.parameters);
         ASSERT_TRUE(m.ran) << "the finite mesh is measured";

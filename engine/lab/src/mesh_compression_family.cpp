@@ -108,13 +108,21 @@ void add_uv(const std::vector<glm::vec2>& a, const std::vector<glm::vec2>& b, Ta
 void measure(const Input& in, const detail::EncodedMesh& e, Tally& t) {
     const detail::MeshStreams &s = in.streams, &d = e.decoded;
     const std::string where = detail::describe_mesh(*in.mesh);
+    // In double: coordinates near the float range under a scale stay finite.
+    const glm::dmat4 world(in.world);
+    std::uint64_t lost = 0;
     for (std::size_t i = 0; i < s.position.size(); ++i) {
         if (!finite(s.position[i])) continue; // an input failure, counted once
-        const glm::dvec3 a(in.world * glm::vec4(s.position[i], 1.0f)),
-            b(in.world * glm::vec4(d.position[i], 1.0f));
+        const glm::dvec3 a(world * glm::dvec4(glm::dvec3(s.position[i]), 1.0)),
+            b(world * glm::dvec4(glm::dvec3(d.position[i]), 1.0));
         const double dist = glm::length(a - b);
+        if (!std::isfinite(dist)) {
+            ++lost; // a non-finite node transform
+            continue;
+        }
         t.pos_max = std::max(t.pos_max, dist), t.pos_sq += dist * dist, ++t.pos_n;
     }
+    if (lost) t.failures[{"non-finite world position (node transform)", where}] += lost;
     t.step = std::max(t.step, e.position_step * double(glm::length(glm::vec3(in.world[0]))));
     for (std::size_t i = 0; i < s.normal.size(); ++i)
         if (const double a = angle_deg(s.normal[i], d.normal[i]); a >= 0.0)

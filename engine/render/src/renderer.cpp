@@ -133,7 +133,8 @@ void Renderer::Impl::load(const Scene& source, std::unique_ptr<GpuScene> gpu_sce
         if (!context.info().ray_tracing_enabled)
             throw GpuError("ray tracing was asked for but the device does not ray trace "
                            "(or it was turned off: --rt off)");
-        acceleration = std::make_unique<SceneAccelerationStructures>(*resources, source, *scene);
+        acceleration = std::make_unique<SceneAccelerationStructures>(*resources, source, *scene,
+                                                                     options.acceleration);
     }
     culling.build(*scene);
     pose_.build(source, *scene);

@@ -5,6 +5,8 @@
 // materials through, and the top-level structure with one instance per (node, glTF
 // mesh). Built once on scene load, batched under a scratch budget; never per frame
 // (the TLAS is refitted or rebuilt on demand when transforms or visibility change).
+// Instances of meshes that skin or morph get posed vertex copies and BLAS of their
+// own, refitted when the pose changes (update_pose(), PosedStats).
 // Needs a Context with DeviceInfo::ray_tracing_enabled (GpuScene's buffers then carry
 // the build-input usage).
 #include <cstdint>

@@ -151,9 +151,10 @@ void SceneAccelerationStructures::build_blas(const Scene& scene, const GpuScene&
         for (std::uint32_t i : batch) sum += align_up(scratch[i], alignment);
         stats_.scratch_buffer_bytes = std::max(stats_.scratch_buffer_bytes, sum);
     }
+    blas_.resize(plans.size()); // empty where not built
+    if (batches.empty()) return; // every mesh is instanced posed only (posed_geometry.cpp)
     ScratchBuffer scratch_buffer(resources_, stats_.scratch_buffer_bytes);
 
-    blas_.resize(plans.size());
     CommandRecorder rec(resources_.context());
     for (std::uint32_t b = 0; b < batches.size(); ++b) {
         const auto& batch = batches[b];

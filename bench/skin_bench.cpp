@@ -1,4 +1,4 @@
-// sherpa-bench-skin [--frames N] [--width W --height H] [--rounds R]
+// sherpa-bench-skin [--frames N] [--width W --height H] [--rounds R] [--rt]
 // GPU skinning and morphing cost (issue #16): the lit frame of a moving model posed on
 // the GPU (RenderSettings::pose: the MOTION pipelines skin and morph in the vertex
 // stage) against the same model frozen in that pose on the CPU (freeze_pose(): a
@@ -7,6 +7,10 @@
 // and the moving sample models with skins or morph targets. Prints medians and the
 // ratio (goal: skinning <= 1.3x the static frame). Animation evaluation per frame
 // (BrainStem-sized and 1,000-joint rigs) is sherpa-bench-anim's.
+// --rt: the ray tracer's posed frames (issue #17) instead: every frame a new pose
+// (the tube bends 0..8 degrees per joint, the sample models sweep their animation),
+// so each one poses the moving vertices, refits (or rebuilds) their BLAS and the
+// TLAS, then traces; GPU ms per part, medians, refit against rebuild in one run.
 #include "process_cpu.h"
 
 #include <sherpa/core/heap_tuning.h>
@@ -136,14 +140,68 @@ Scene skinned_tube(std::uint32_t joints, std::uint32_t rings, std::uint32_t segm
     return s;
 }
 
+// The tube's pose with every joint bent by `degrees` about Z.
+Pose bent(const Scene& tube, float degrees) {
+    Scene copy;
+    copy.nodes = tube.nodes;
+    copy.skins = tube.skins;
+    for (Node& n : copy.nodes)
+        if (n.mesh < 0) n.rotation = glm::angleAxis(glm::radians(degrees), glm::vec3(0, 0, 1));
+    return evaluate_pose(copy, -1, 0.0);
+}
+
+double pass_ms(const gpu::FrameStats& f, std::string_view name) {
+    for (const gpu::PassTiming& p : f.passes)
+        if (p.name == name) return p.ms;
+    return 0.0;
+}
+
+// Posed ray-traced frames of `s` through `poses` (cycled), refit and rebuild.
+void measure_rt(gpu::Context& context, const std::string& name, const Scene& s,
+                const std::vector<std::shared_ptr<const Pose>>& poses, int frames,
+                std::uint32_t width, std::uint32_t height) {
+    for (bool refit : {true, false}) {
+        gpu::RendererOptions options;
+        options.ray_tracing = true;
+        options.acceleration.refit_posed = refit;
+        gpu::Renderer renderer(context, options);
+        renderer.load(s);
+        gpu::RenderSettings settings;
+        settings.width = width;
+        settings.height = height;
+        settings.shadows = false;
+        settings.view = gpu::DebugView::Normal;
+        settings.renderer = gpu::RendererKind::RayTraced;
+        std::vector<double> pose, blas, tlas, rays;
+        for (int f = 0; f < frames; ++f) {
+            settings.pose = poses[std::size_t(f) % poses.size()];
+            const gpu::FrameStats st = renderer.render(settings);
+            pose.push_back(pass_ms(st, "pose_vertices"));
+            blas.push_back(pass_ms(st, "posed_blas"));
+            tlas.push_back(pass_ms(st, "tlas"));
+            rays.push_back(pass_ms(st, "rays"));
+        }
+        std::printf("%-22s %-8s %10.3f %10.3f %10.3f %10.3f\n", name.c_str(),
+                    refit ? "refit" : "rebuild", median(pose), median(blas), median(tlas),
+                    median(rays));
+    }
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
     keep_freed_memory_mapped();
     int frames = 20, rounds = 3;
     std::uint32_t width = 1280, height = 720;
+    bool rt = false;
+    for (int i = 1; i < argc; ++i)
+        if (std::string(argv[i]) == "--rt") rt = true;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
+        if (a == "--rt") {
+            --i;
+            continue;
+        }
         const int v = std::atoi(argv[i + 1]);
         if (a == "--frames") frames = std::max(1, v);
         if (a == "--rounds") rounds = std::max(1, v);
@@ -170,6 +228,26 @@ int main(int argc, char** argv) {
             continue;
         }
         models.push_back({name, std::move(*r.scene)});
+    }
+    if (rt) {
+        std::printf("ray traced, normal view; GPU ms per frame (medians), a new pose each frame\n");
+        std::printf("%-22s %-8s %10s %10s %10s %10s\n", "model", "BLAS", "pose", "posed BLAS",
+                    "TLAS", "rays");
+        for (const Model& m : models) {
+            std::vector<std::shared_ptr<const Pose>> poses;
+            for (int k = 0; k < 8; ++k) {
+                const double f = (k + 0.5) / 8.0;
+                if (m.scene.animations.empty()) {
+                    poses.push_back(std::make_shared<const Pose>(bent(m.scene, 8.0f * float(f))));
+                } else {
+                    const Animation& a = m.scene.animations[0];
+                    poses.push_back(std::make_shared<const Pose>(
+                        evaluate_pose(m.scene, 0, a.start + f * (a.end - a.start))));
+                }
+            }
+            measure_rt(context, m.name, m.scene, poses, frames, width, height);
+        }
+        return 0;
     }
     for (const Model& m : models) {
         const Scene& s = m.scene;

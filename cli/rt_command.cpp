@@ -2,7 +2,9 @@
 //                     [--rt on|off]
 // The scene's ray-tracing data on the device: per BLAS (one per glTF mesh) its
 // geometries, triangles, build time, size before and after compaction and scratch;
-// the TLAS instances (deduplicated, mirrored, hidden, non-finite) and memory totals.
+// the TLAS instances (deduplicated, mirrored, hidden, non-finite), the posed copies
+// and BLAS of instances that skin or morph (their bytes; the TLAS counts them once
+// posed, which the renderer does on load: here they are not yet) and memory totals.
 // Textures are not prepared: acceleration structures do not read them.
 #include "cli_common.h"
 
@@ -51,12 +53,14 @@ nlohmann::json to_json(const gpu::Context& context, const gpu::AccelerationStats
                         {"opaque_geometries", b.opaque_geometries},
                         {"triangles", b.triangles},
                         {"first_geometry", b.first_geometry},
+                        {"built", b.built},
                         {"batch", b.batch},
                         {"build_ms", b.build_ms},
                         {"build_bytes", b.build_bytes},
                         {"compacted_bytes", b.compacted_bytes},
                         {"scratch_bytes", b.scratch_bytes}});
     const gpu::TlasStats& t = s.tlas;
+    const gpu::PosedStats& p = s.posed;
     return {{"device",
              {{"name", context.info().name},
               {"ray_tracing_enabled", context.info().ray_tracing_enabled},
@@ -73,6 +77,16 @@ nlohmann::json to_json(const gpu::Context& context, const gpu::AccelerationStats
               {"scratch_bytes", t.scratch_bytes},
               {"instance_buffer_bytes", t.instance_buffer_bytes},
               {"build_ms", t.build_ms}}},
+            {"posed",
+             {{"blas", p.blas},
+              {"geometries", p.geometries},
+              {"world_space", p.world_space},
+              {"vertices", p.vertices},
+              {"triangles", p.triangles},
+              {"stream_bytes", p.stream_bytes},
+              {"blas_bytes", p.blas_bytes},
+              {"scratch_bytes", p.scratch_bytes},
+              {"update", p.refit ? "refit" : "rebuild"}}},
             {"totals",
              {{"blas", s.blas.size()},
               {"triangles", s.blas_triangles()},
@@ -111,6 +125,16 @@ void print_text(const gpu::Context& context, const gpu::AccelerationStats& s) {
                 (unsigned long long)t.hidden, (unsigned long long)t.non_finite,
                 (unsigned long long)t.bytes, (unsigned long long)t.scratch_bytes,
                 (unsigned long long)t.instance_buffer_bytes, t.build_ms);
+    const gpu::PosedStats& p = s.posed;
+    if (p.blas)
+        std::printf("posed (skinned or morphed instances): %llu BLAS (%llu in world space), %llu "
+                    "geometries, %llu vertices, %llu triangles; streams %llu B, BLAS %llu B, "
+                    "scratch %llu B; %s on pose changes\n",
+                    (unsigned long long)p.blas, (unsigned long long)p.world_space,
+                    (unsigned long long)p.geometries, (unsigned long long)p.vertices,
+                    (unsigned long long)p.triangles, (unsigned long long)p.stream_bytes,
+                    (unsigned long long)p.blas_bytes, (unsigned long long)p.scratch_bytes,
+                    p.refit ? "refit" : "rebuilt");
     std::printf(
         "totals: %zu BLAS, %llu triangles, BLAS %llu -> %llu B compacted (%.3f), %llu "
         "geometry records (%llu B), %llu B in all; %u batches under a %llu B scratch "

@@ -41,25 +41,14 @@ layout(set = 1, binding = 0, std140) uniform FrameBlock {
     GPULight lights[MAX_LIGHTS];            // 576
 } frame;
 
-struct GPUInstanceData {
-    mat4 model;              // 0
-    vec4 normal_matrix[3];   // 64: columns of transpose(inverse(mat3(model)))
-    uint material;           // 112
-    uint mesh;               // 116
-    uint joint_base;         // 120: moving meshes: first joint matrix in the pose buffer
-    uint weight_base;        // 124: first morph weight (a float index into the pose buffer)
-};
+#include "instance_data.glsl" // GPUInstanceData, InstanceRef, MotionMeshRef
 
-layout(buffer_reference, scalar, buffer_reference_align = 16) readonly buffer InstanceRef {
-    GPUInstanceData v[];
-};
 layout(set = 1, binding = 1, std430) readonly buffer MaterialBlock {
     GPUMaterialData materials[]; // the 80-byte records, one SSBO
 };
 layout(set = 1, binding = 2, std430) readonly buffer MaterialExtraBlock {
     GPUMaterialExtra material_extras[];
 };
-#include "stream_refs.glsl" // Vec2Ref, Vec3Ref, Vec4Ref
 struct LineVertex {
     vec4 position;
     vec4 color;
@@ -72,20 +61,6 @@ layout(buffer_reference, scalar, buffer_reference_align = 16) readonly buffer Li
 // (CPU-written or by shaders/cull.comp); without culling it is the identity.
 layout(buffer_reference, scalar, buffer_reference_align = 4) readonly buffer InstanceIdRef {
     uint v[];
-};
-
-// Skinning and morphing streams of one moving mesh (GPUMotionMesh; motion.glsl uses it).
-layout(buffer_reference, scalar, buffer_reference_align = 4) readonly buffer JointRef { uvec2 v[]; };
-layout(buffer_reference, scalar, buffer_reference_align = 8) readonly buffer MotionMeshRef {
-    JointRef joints;         // 0: four 16-bit joint indices per vertex and set
-    Vec4Ref weights;         // 8
-    Vec3Ref morph_positions; // 16: per target and vertex, target-major
-    Vec3Ref morph_normals;   // 24
-    Vec3Ref morph_tangents;  // 32
-    uint vertex_count;       // 40
-    uint influence_sets;     // 44
-    uint target_count;       // 48
-    uint flags;              // 52: MOTION_*
 };
 
 layout(push_constant, scalar) uniform Push {
@@ -120,9 +95,5 @@ vec4 fetch_tangent(uint i) { return has(HAS_TANGENT) ? pc.tangents.v[i] : vec4(1
 vec2 fetch_uv0(uint i) { return has(HAS_UV0) ? pc.uv0.v[i] : vec2(0.0); }
 vec2 fetch_uv1(uint i) { return has(HAS_UV1) ? pc.uv1.v[i] : vec2(0.0); }
 vec4 fetch_color(uint i) { return has(HAS_COLOR) ? pc.colors.v[i] : vec4(1.0); }
-
-mat3 normal_matrix(GPUInstanceData inst) {
-    return mat3(inst.normal_matrix[0].xyz, inst.normal_matrix[1].xyz, inst.normal_matrix[2].xyz);
-}
 
 #endif

@@ -201,5 +201,40 @@ TEST(CliRt, RenderRendererRtDrawsSurfaceViewsAndRefusesTheRest) {
     EXPECT_EQ(run_cli("render builtin:default -o x.png --renderer vulkan").exit_code, 2);
 }
 
+// Meshes that skin or morph: a posed BLAS per instance over posed copies of the moving
+// vertices (bytes reported), no static BLAS for a mesh only instanced posed; static
+// scenes carry none of it. `render --renderer rt --animation --time` draws a posed
+// frame validation-clean (its exactness: RtExactness.PosedFramesAgree).
+TEST(CliRt, PosedMeshesGetPosedStreamsAndBlasOnlyWhereTheyMove) {
+    const json rigged = rt_json(gltf_asset("RiggedSimple"));
+    ASSERT_FALSE(rigged.is_null());
+    const json& p = rigged["posed"];
+    EXPECT_EQ(p["blas"].get<int>(), 1);
+    EXPECT_EQ(p["world_space"].get<int>(), 1); // skinned
+    EXPECT_EQ(p["update"], "refit");
+    // Positions and normals (12 B each) of its vertices, after a 64-byte zero record.
+    EXPECT_GE(p["stream_bytes"].get<std::uint64_t>(), 64 + 24 * p["vertices"].get<std::uint64_t>());
+    EXPECT_GT(p["blas_bytes"].get<std::uint64_t>(), 0u);
+    EXPECT_FALSE(rigged["blas"][0]["built"].get<bool>()); // its only instance is posed
+    EXPECT_EQ(rigged["totals"]["blas_build_bytes"].get<std::uint64_t>(), 0u);
+    const json morph = rt_json(gltf_asset("AnimatedMorphSphere"));
+    ASSERT_FALSE(morph.is_null());
+    EXPECT_EQ(morph["posed"]["blas"].get<int>(), 1);
+    EXPECT_EQ(morph["posed"]["world_space"].get<int>(), 0); // morphed in the mesh's space
+    for (const char* still : {"Box", "BoxAnimated"}) {      // BoxAnimated moves nodes only
+        const json j = rt_json(gltf_asset(still));
+        ASSERT_FALSE(j.is_null());
+        EXPECT_EQ(j["posed"]["blas"].get<int>(), 0) << still;
+        EXPECT_EQ(j["posed"]["stream_bytes"].get<std::uint64_t>(), 0u) << still;
+        EXPECT_EQ(j["posed"]["blas_bytes"].get<std::uint64_t>(), 0u) << still;
+    }
+    const std::string png = ::testing::TempDir() + "/posed_rt.png";
+    const CliRun r = run_cli("render '" + gltf_asset("RiggedSimple") + "' -o " + png +
+                                 " --renderer rt --view normal --width 32 --height 24"
+                                 " --animation 0 --time 0.5 --validation",
+                             "2>&1");
+    EXPECT_EQ(r.exit_code, 0) << r.out;
+}
+
 } // namespace
 } // namespace sherpa::test

@@ -236,5 +236,74 @@ TEST(RtPlan, GeometriesFollowPrimitivesOfEachGltfMesh) {
     EXPECT_EQ(plans[0].triangles, 4u);
 }
 
+// Posed BLAS: one per (node, glTF mesh) instance with a moving primitive; skinned
+// instances in world space (every geometry copied, the static one too), the others in
+// the mesh's space (only the moving geometry copied); the TLAS puts world-space
+// instances at the identity and the rest at the pose's node transforms.
+TEST(RtPlan, PosedBlasPerMovingInstanceWorldSpaceOnlyWhenSkinned) {
+    Scene scene;
+    scene.materials.resize(1);
+    scene.skins.resize(1);
+    scene.nodes.resize(3);
+    scene.nodes[0].skin = 0; // node 1 draws the skinned mesh without its skin
+    std::vector<gpu::GpuMesh> meshes(3);
+    for (std::uint32_t i = 0; i < 3; ++i) {
+        Mesh m;
+        m.group_id = i < 2 ? 0 : 1; // glTF mesh 0: engine meshes 0 (skinned) and 1 (static)
+        scene.meshes.push_back(m);
+        meshes[i].index_count = 6;
+        PrimitiveInfo p;
+        p.engine_mesh = static_cast<std::int32_t>(i);
+        p.motion = i == 0 ? 0 : i == 2 ? 1 : -1;
+        scene.primitives.push_back(p);
+    }
+    meshes[0].motion = 0x100;
+    meshes[2].motion = 0x200; // glTF mesh 1: morphed
+    scene.motions.resize(2);
+    scene.motions[0].influences = 4;
+    scene.motions[1].targets.resize(1);
+    const std::pair<std::uint32_t, std::uint32_t> placed[] = {
+        {0, 0}, {0, 1}, {1, 0}, {1, 1}, {2, 2}};
+    for (auto [node, mesh] : placed) {
+        MeshInstance inst;
+        inst.node_id = node;
+        inst.mesh_id = mesh;
+        inst.world = glm::translate(glm::mat4(1.0f), glm::vec3(float(node), 0.0f, 0.0f));
+        scene.instances.push_back(inst);
+    }
+    const std::vector<std::uint32_t> gpu_order = {4, 3, 2, 1, 0}; // GPU instance -> scene's
+    const auto plans = gpu::plan_blas(scene, meshes);
+    ASSERT_EQ(plans.size(), 2u);
+    const auto posed = gpu::plan_posed_blas(scene, meshes, gpu_order, plans);
+    ASSERT_EQ(posed.size(), 3u);
+    EXPECT_EQ(posed[0].node, 0u);
+    EXPECT_TRUE(posed[0].world_space);
+    ASSERT_EQ(posed[0].geometries.size(), 2u);
+    EXPECT_TRUE(posed[0].geometries[0].moves && posed[0].geometries[0].posed);
+    EXPECT_TRUE(!posed[0].geometries[1].moves && posed[0].geometries[1].posed);
+    EXPECT_EQ(posed[0].geometries[0].gpu_instance, 4u);
+    EXPECT_EQ(posed[0].geometries[1].gpu_instance, 3u);
+    EXPECT_FALSE(posed[1].world_space); // node 1 has no skin
+    EXPECT_FALSE(posed[1].geometries[1].posed);
+    EXPECT_EQ(posed[2].group, 1u);
+    EXPECT_FALSE(posed[2].world_space);
+    EXPECT_EQ(posed[2].geometries[0].gpu_instance, 0u);
+    // Static meshes: nothing posed.
+    for (gpu::GpuMesh& m : meshes) m.motion = 0;
+    EXPECT_TRUE(gpu::plan_posed_blas(scene, meshes, gpu_order, plans).empty());
+
+    std::vector<gpu::TlasCandidate> candidates = gpu::tlas_candidates(scene, std::vector{0, 1});
+    ASSERT_EQ(candidates.size(), 3u); // (0, 0), (1, 0), (2, 1)
+    candidates[0].blas = 2;
+    candidates[0].world_space = true;
+    const std::vector<glm::mat4> pose(3, glm::scale(glm::mat4(1.0f), glm::vec3(2.0f)));
+    const gpu::TlasPlan tlas = gpu::plan_tlas(candidates, {}, pose);
+    ASSERT_EQ(tlas.instances.size(), 3u);
+    EXPECT_EQ(tlas.instances[0].blas, 2u);
+    EXPECT_EQ(tlas.instances[0].world, glm::mat4(1.0f));
+    EXPECT_EQ(tlas.instances[1].world, pose[1]);
+    EXPECT_EQ(gpu::plan_tlas(candidates, {}).instances[1].world, scene.instances[2].world);
+}
+
 } // namespace
 } // namespace sherpa::test

@@ -1,6 +1,7 @@
 // The scene's acceleration structures: construction and what the BLAS and TLAS
 // builds share (scratch, timing). The builds: blas_builder.cpp, tlas_builder.cpp.
 #include "as_build.h"
+#include "posed_geometry.h"
 #include "rt_plan.h"
 
 #include <sherpa/gpu/commands.h>
@@ -79,7 +80,8 @@ std::uint64_t AccelerationStats::blas_compacted_bytes() const {
 }
 
 std::uint64_t AccelerationStats::total_bytes() const {
-    return blas_compacted_bytes() + tlas.bytes + tlas.instance_buffer_bytes + geometry_record_bytes;
+    return blas_compacted_bytes() + tlas.bytes + tlas.instance_buffer_bytes +
+           geometry_record_bytes + posed.stream_bytes + posed.blas_bytes + posed.scratch_bytes;
 }
 
 SceneAccelerationStructures::SceneAccelerationStructures(ResourceManager& resources,
@@ -91,6 +93,7 @@ SceneAccelerationStructures::SceneAccelerationStructures(ResourceManager& resour
         build_blas(scene, gpu, settings);
         update_instances(scene, settings.hidden_nodes);
     } catch (...) {
+        posed_.reset();
         resources_.destroy(records_);
         resources_.destroy(instances_);
         throw;
@@ -100,8 +103,22 @@ SceneAccelerationStructures::SceneAccelerationStructures(ResourceManager& resour
 }
 
 SceneAccelerationStructures::~SceneAccelerationStructures() {
+    posed_.reset();
     resources_.destroy(records_);
     resources_.destroy(instances_);
+}
+
+void SceneAccelerationStructures::update_pose(const PoseFrame& frame) {
+    if (posed_) {
+        BuildTimer timer(resources_.context(), 2);
+        CommandRecorder rec(resources_.context());
+        VkCommandBuffer cmd = rec.begin();
+        posed_->record(cmd, frame, timer);
+        resources_.timeline().wait_for(rec.submit(resources_));
+        posed_->finish(timer);
+        stats_.posed = posed_->stats();
+    }
+    build_tlas(frame.node_world);
 }
 
 VkDeviceAddress SceneAccelerationStructures::geometry_records() const {

@@ -1,12 +1,14 @@
 #pragma once
 // What BLAS and TLAS builds share (private to the render layer): a scratch buffer
-// whose device address honours the device's scratch alignment, and GPU timestamps
-// around each build of a submission.
+// whose device address honours the device's scratch alignment, GPU timestamps
+// around each build of a submission, and the description of a BLAS build.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <sherpa/gpu/resources.h>
 #include <sherpa/gpu/unique_handle.h>
+#include <sherpa/render/gpu_scene.h>
 
 namespace sherpa::gpu {
 
@@ -48,6 +50,23 @@ private:
     std::uint32_t count_;
     UniqueQueryPool pool_;
 };
+
+struct BlasPlan;
+
+// The Vulkan description of one planned BLAS; stays put while its build is recorded.
+struct BlasInput {
+    std::vector<VkAccelerationStructureGeometryKHR> geometries;
+    std::vector<VkAccelerationStructureBuildRangeInfoKHR> ranges;
+    std::vector<std::uint32_t> max_primitives;
+    VkAccelerationStructureBuildGeometryInfoKHR info{};
+    VkAccelerationStructureBuildSizesInfoKHR sizes{};
+};
+
+// `plan`'s geometries over `gpu`'s index buffer and position streams, or, per
+// geometry k < positions.size(), over positions[k] (posed vertices); mode BUILD.
+BlasInput describe_blas(const BlasPlan& plan, const GpuScene& gpu,
+                        VkBuildAccelerationStructureFlagsKHR flags,
+                        std::span<const VkDeviceAddress> positions = {});
 
 // Orders one build's writes before the next build and before queries and copies
 // of the structures it built.

@@ -1,6 +1,7 @@
 // One BLAS per glTF mesh: the geometry records, the builds batched under the
 // scratch budget (one submission per batch, each build timed), then compaction.
 #include "as_build.h"
+#include "posed_geometry.h"
 #include "rt_plan.h"
 
 #include <sherpa/gpu/commands.h>
@@ -14,20 +15,12 @@
 
 namespace sherpa::gpu {
 
-namespace {
-
-// The Vulkan description of one planned BLAS; stays put while its build is recorded.
-struct BlasInput {
-    std::vector<VkAccelerationStructureGeometryKHR> geometries;
-    std::vector<VkAccelerationStructureBuildRangeInfoKHR> ranges;
-    std::vector<std::uint32_t> max_primitives;
-    VkAccelerationStructureBuildGeometryInfoKHR info{};
-    VkAccelerationStructureBuildSizesInfoKHR sizes{};
-};
-
-BlasInput describe(const BlasPlan& plan, const GpuScene& gpu, bool compact) {
+BlasInput describe_blas(const BlasPlan& plan, const GpuScene& gpu,
+                        VkBuildAccelerationStructureFlagsKHR flags,
+                        std::span<const VkDeviceAddress> positions) {
     BlasInput in;
-    for (const BlasGeometryPlan& g : plan.geometries) {
+    for (std::size_t k = 0; k < plan.geometries.size(); ++k) {
+        const BlasGeometryPlan& g = plan.geometries[k];
         const GpuMesh& mesh = gpu.meshes()[g.mesh];
         auto geometry = vk_init<VkAccelerationStructureGeometryKHR>(
             VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR);
@@ -40,7 +33,9 @@ BlasInput describe(const BlasPlan& plan, const GpuScene& gpu, bool compact) {
         t = vk_init<VkAccelerationStructureGeometryTrianglesDataKHR>(
             VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR);
         t.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
-        t.vertexData.deviceAddress = mesh.stream[std::size_t(VertexAttribute::Position)];
+        t.vertexData.deviceAddress = k < positions.size()
+                                         ? positions[k]
+                                         : mesh.stream[std::size_t(VertexAttribute::Position)];
         t.vertexStride = stream_stride(VertexAttribute::Position);
         t.maxVertex = mesh.vertex_count - 1;
         t.indexType = VK_INDEX_TYPE_UINT32;
@@ -53,8 +48,7 @@ BlasInput describe(const BlasPlan& plan, const GpuScene& gpu, bool compact) {
     in.info = vk_init<VkAccelerationStructureBuildGeometryInfoKHR>(
         VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
     in.info.type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR;
-    in.info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR |
-                    (compact ? VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR : 0);
+    in.info.flags = flags;
     in.info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
     in.info.geometryCount = static_cast<std::uint32_t>(in.geometries.size());
     in.info.pGeometries = in.geometries.data();
@@ -62,8 +56,6 @@ BlasInput describe(const BlasPlan& plan, const GpuScene& gpu, bool compact) {
         VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR);
     return in;
 }
-
-} // namespace
 
 void SceneAccelerationStructures::build_blas(const Scene& scene, const GpuScene& gpu,
                                              const AccelerationSettings& settings) {
@@ -96,6 +88,23 @@ void SceneAccelerationStructures::build_blas(const Scene& scene, const GpuScene&
         stats_.blas.push_back(std::move(s));
     }
     if (records.empty()) return;
+    // Instances that skin or morph: posed copies, their BLAS and records (after the
+    // static ones).
+    std::vector<PosedBlasPlan> posed =
+        plan_posed_blas(scene, gpu.meshes(), gpu.scene_instances(), plans);
+    // A glTF mesh whose every instance is posed needs no static BLAS (its records stay:
+    // the posed ones are copies of them).
+    std::vector<std::int64_t> static_pairs(plans.size(), 0);
+    for (const TlasCandidate& c : tlas_candidates(scene, blas_of_mesh_)) ++static_pairs[c.blas];
+    for (const PosedBlasPlan& p : posed) --static_pairs[p.plan];
+    if (!posed.empty()) {
+        posed_ = std::make_unique<PosedGeometry>(resources_, fn_, gpu, plans, std::move(posed),
+                                                 settings.refit_posed);
+        std::vector<std::uint32_t> first_static;
+        for (const BlasStats& s : stats_.blas) first_static.push_back(s.first_geometry);
+        posed_->append_records(records, first_static);
+        stats_.posed = posed_->stats();
+    }
     const VkDeviceSize record_bytes = records.size() * sizeof(GPUGeometryInfo);
     records_ = resources_.create_buffer({record_bytes,
                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
@@ -114,14 +123,27 @@ void SceneAccelerationStructures::build_blas(const Scene& scene, const GpuScene&
     std::vector<BlasInput> inputs;
     std::vector<std::uint64_t> scratch;
     for (const BlasPlan& plan : plans) {
-        inputs.push_back(describe(plan, gpu, settings.compact));
+        inputs.push_back(describe_blas(
+            plan, gpu,
+            VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR |
+                (settings.compact ? VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR : 0)));
         BlasInput& in = inputs.back();
         fn_.get_build_sizes(device, VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &in.info,
                             in.max_primitives.data(), &in.sizes);
         scratch.push_back(in.sizes.buildScratchSize);
     }
+    std::vector<std::uint32_t> order; // the plans built
+    std::vector<std::uint64_t> built_scratch;
+    for (std::uint32_t i = 0; i < plans.size(); ++i) {
+        stats_.blas[i].built = static_pairs[i] > 0;
+        if (!stats_.blas[i].built) continue;
+        order.push_back(i);
+        built_scratch.push_back(scratch[i]);
+    }
     const std::uint64_t alignment = context.info().as_scratch_alignment;
-    const auto batches = batch_by_scratch(scratch, settings.scratch_budget, alignment);
+    auto batches = batch_by_scratch(built_scratch, settings.scratch_budget, alignment);
+    for (auto& batch : batches)
+        for (std::uint32_t& k : batch) k = order[k];
     stats_.batches = static_cast<std::uint32_t>(batches.size());
     stats_.scratch_budget = settings.scratch_budget;
     for (const auto& batch : batches) {
@@ -129,9 +151,10 @@ void SceneAccelerationStructures::build_blas(const Scene& scene, const GpuScene&
         for (std::uint32_t i : batch) sum += align_up(scratch[i], alignment);
         stats_.scratch_buffer_bytes = std::max(stats_.scratch_buffer_bytes, sum);
     }
+    blas_.resize(plans.size()); // empty where not built
+    if (batches.empty()) return; // every mesh is instanced posed only (posed_geometry.cpp)
     ScratchBuffer scratch_buffer(resources_, stats_.scratch_buffer_bytes);
 
-    blas_.resize(plans.size());
     CommandRecorder rec(resources_.context());
     for (std::uint32_t b = 0; b < batches.size(); ++b) {
         const auto& batch = batches[b];

@@ -20,7 +20,13 @@ public:
     PosePass(ResourceManager& resources) : resources_(resources) {}
     void build(const Scene& scene, const GpuScene& gpu); // a scene was loaded
     void reset();                                        // the scene is unloaded
-    void record(FrameContext& f);
+    void record(FrameContext& f) { record(f.slot, f.settings, f.scene != nullptr); }
+    // The same for a frame without a FrameContext (the ray tracer's).
+    void record(FrameSlot& slot, const RenderSettings& settings, bool scene_loaded);
+    // The scene skins, morphs or animates: slots get a pose buffer.
+    bool active() const { return active_; }
+    // settings.pose where it fits the scene, else the scene's default pose.
+    const Pose& pose_of(const RenderSettings& settings) const;
 
 private:
     struct Instance {
@@ -31,8 +37,7 @@ private:
         glm::mat4 world{1.0f};       // as loaded
         Aabb local, bounds;          // mesh bounds; world bounds as loaded
     };
-    const Pose& pose_of(const RenderSettings& settings) const;
-    void write(FrameContext& f, const Pose& pose);
+    void write(FrameSlot& slot, const RenderSettings& settings, const Pose& pose);
 
     ResourceManager& resources_;
     bool active_ = false;

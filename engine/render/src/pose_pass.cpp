@@ -123,9 +123,8 @@ const Pose& PosePass::pose_of(const RenderSettings& settings) const {
     return default_;
 }
 
-void PosePass::record(FrameContext& f) {
-    FrameSlot& slot = f.slot;
-    if (!active_ || !f.scene) {
+void PosePass::record(FrameSlot& slot, const RenderSettings& settings, bool scene_loaded) {
+    if (!active_ || !scene_loaded) {
         slot.posed = false;
         slot.pose_key = 0;
         slot.pose_generation = 0;
@@ -133,17 +132,16 @@ void PosePass::record(FrameContext& f) {
     }
     // The same pose as this slot's last frame (a paused timeline, the default pose):
     // its buffer, bounds and key stand.
-    if (slot.pose_generation == generation_ && slot.pose_written == f.settings.pose &&
-        slot.joint_written == f.settings.selected_joint)
+    if (slot.pose_generation == generation_ && slot.pose_written == settings.pose &&
+        slot.joint_written == settings.selected_joint)
         return;
-    write(f, pose_of(f.settings));
-    slot.pose_written = f.settings.pose;
-    slot.joint_written = f.settings.selected_joint;
+    write(slot, settings, pose_of(settings));
+    slot.pose_written = settings.pose;
+    slot.joint_written = settings.selected_joint;
     slot.pose_generation = generation_;
 }
 
-void PosePass::write(FrameContext& f, const Pose& pose) {
-    FrameSlot& slot = f.slot;
+void PosePass::write(FrameSlot& slot, const RenderSettings& settings, const Pose& pose) {
     const std::size_t n = instances_.size();
     const VkDeviceSize instance_bytes = std::max<std::size_t>(n, 1) * sizeof(GPUInstanceData);
     const std::uint32_t floats = (weights_ + joints_ + 3) & ~3u;
@@ -171,10 +169,10 @@ void PosePass::write(FrameContext& f, const Pose& pose) {
         for (std::uint32_t j = 0; j < skin_slots_[s]; ++j) {
             const std::uint32_t at = skin_base_[s] + j;
             joints[at] = j < m.size() ? m[j] : glm::mat4(1.0f);
-            values[highlight + at] = f.settings.selected_joint && j < nodes.size() &&
-                                             nodes[j] == *f.settings.selected_joint
-                                         ? 1.0f
-                                         : 0.0f;
+            values[highlight + at] =
+                settings.selected_joint && j < nodes.size() && nodes[j] == *settings.selected_joint
+                    ? 1.0f
+                    : 0.0f;
         }
         key = fnv(key, m.data(), m.size() * sizeof(glm::mat4));
     }

@@ -102,7 +102,6 @@ Renderer::Impl::~Impl() {
     culling.reset();
     rt_views_.reset();
     acceleration.reset();
-    rt_refusal_.clear();
     scene.reset();
     for (auto& slot : slots_) {
         resources->destroy(slot->frame_data);
@@ -134,8 +133,8 @@ void Renderer::Impl::load(const Scene& source, std::unique_ptr<GpuScene> gpu_sce
         if (!context.info().ray_tracing_enabled)
             throw GpuError("ray tracing was asked for but the device does not ray trace "
                            "(or it was turned off: --rt off)");
-        acceleration = std::make_unique<SceneAccelerationStructures>(*resources, source, *scene);
-        rt_refusal_ = unposed_motion_mesh(source);
+        acceleration = std::make_unique<SceneAccelerationStructures>(*resources, source, *scene,
+                                                                     options.acceleration);
     }
     culling.build(*scene);
     pose_.build(source, *scene);
@@ -153,6 +152,12 @@ void Renderer::Impl::load(const Scene& source, std::unique_ptr<GpuScene> gpu_sce
     }
     ++scene_generation_;
     shadows_.invalidate();
+    // Meshes that skin or morph join the TLAS in the file's default pose, on load.
+    if (acceleration && acceleration->posed()) {
+        FrameSlot& slot = *slots_[next_slot_];
+        wait_slot(slot);
+        pose_acceleration(slot, RenderSettings{});
+    }
 }
 
 void Renderer::Impl::unload() {
@@ -177,7 +182,6 @@ void Renderer::Impl::unload() {
     culling.reset();
     pose_.reset();
     acceleration.reset();
-    rt_refusal_.clear();
     scene.reset();
     ++scene_generation_; // frame sets must stop naming the freed material buffers
     lighting_ = Scene{};

@@ -12,11 +12,6 @@
 
 namespace sherpa::gpu {
 
-// The first displayed primitive (as "mesh M primitive P (node 'N')") whose default pose
-// moves its vertices off the stored positions by more than 1e-4 of the scene size;
-// empty when none does (renderer_rt.cpp).
-std::string unposed_motion_mesh(const Scene& scene);
-
 class Renderer::Impl {
 public:
     static constexpr VkFormat kOffscreenFormat = VK_FORMAT_R8G8B8A8_SRGB;
@@ -73,12 +68,13 @@ private:
     FrameStats read_stats(FrameSlot& slot);
     // RenderSettings::renderer = RayTraced (renderer_rt.cpp).
     FrameStats render_rt(const RenderSettings& settings, std::vector<std::uint8_t>* rgba);
+    // Writes the pose of `settings` into `slot` (not in flight) and, when the
+    // acceleration structures hold another pose, poses them; true when it did.
+    bool pose_acceleration(FrameSlot& slot, const RenderSettings& settings);
 
     std::unique_ptr<RtViewPass> rt_views_;
-    // Set at load when a mesh's default pose (skinning, default morph weights) moves its
-    // vertices off the stored positions the acceleration structures hold: render_rt
-    // refuses with it rather than draw geometry the rasterizer does not show.
-    std::string rt_refusal_;
+    // The pose the acceleration structures hold (FrameSlot::pose_key, of this scene load).
+    std::uint64_t rt_pose_key_ = 0, rt_pose_generation_ = 0;
 
     PosePass pose_;
     ShadowPass shadows_;

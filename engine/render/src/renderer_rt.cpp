@@ -28,28 +28,21 @@ std::string ray_traced_view_names() {
 
 } // namespace
 
-std::string unposed_motion_mesh(const Scene& scene) {
-    if (scene.motions.empty()) return {};
-    const Pose pose = evaluate_pose(scene, -1, 0.0);
-    const float tolerance = 1e-4f * std::max(glm::length(scene.bounds.extent()), 1e-6f);
-    for (std::uint32_t n : scene.displayed_nodes) {
-        const Node& node = scene.nodes[n];
-        if (node.mesh < 0) continue;
-        for (const PrimitiveInfo& p : scene.primitives) {
-            if (p.mesh != static_cast<std::uint32_t>(node.mesh) || p.engine_mesh < 0 ||
-                p.motion < 0)
-                continue;
-            const std::vector<glm::vec3>& stored = scene.motions[p.motion].base_positions;
-            const std::vector<glm::vec3> posed = posed_positions(scene, pose, n, p);
-            const glm::mat4& world = pose.world[n];
-            for (std::size_t i = 0; i < posed.size() && i < stored.size(); ++i)
-                if (glm::distance(posed[i], glm::vec3(world * glm::vec4(stored[i], 1.0f))) >
-                    tolerance)
-                    return "mesh " + std::to_string(p.mesh) + " primitive " +
-                           std::to_string(p.primitive) + " (node '" + node.name + "')";
-        }
-    }
-    return {};
+bool Renderer::Impl::pose_acceleration(FrameSlot& slot, const RenderSettings& settings) {
+    if (!acceleration || !pose_.active()) return false;
+    pose_.record(slot, settings, scene != nullptr);
+    // The structures hold this pose already (a paused timeline, the default pose).
+    if (!slot.posed || (rt_pose_key_ == slot.pose_key && rt_pose_generation_ == scene_generation_))
+        return false;
+    PoseFrame frame;
+    frame.instances = slot.posed_instances;
+    frame.pose = slot.pose_address;
+    frame.highlight_base = slot.highlight_base;
+    frame.node_world = pose_.pose_of(settings).world;
+    acceleration->update_pose(frame);
+    rt_pose_key_ = slot.pose_key;
+    rt_pose_generation_ = scene_generation_;
+    return true;
 }
 
 FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
@@ -63,16 +56,8 @@ FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
                        ray_traced_view_names() + ")");
     if (settings.overlays != 0 || settings.highlight_instance)
         throw GpuError("the ray tracer draws no overlays or highlights (raster only)");
-    // The acceleration structures hold the scene as loaded (no skinning or morphing):
-    // a posed frame drawn by rays would silently show the bind pose.
-    if (!rt_refusal_.empty())
-        throw GpuError("the ray tracer builds its structures from the stored vertices, but " +
-                       rt_refusal_ +
-                       " moves in its default pose (skin or default morph weights): raster only");
-    if (settings.pose)
-        throw GpuError("the ray tracer draws the scene as loaded (bind pose): posed frames "
-                       "(--animation/--time) are raster only");
-    // Its descriptor set is rewritten per frame: no earlier frame may be in flight.
+    // Its descriptor set is rewritten per frame, and the structures are posed below:
+    // no earlier frame may be in flight.
     for (auto& s : slots_) wait_slot(*s);
     if (!rt_views_)
         rt_views_ = std::make_unique<RtViewPass>(context, *resources, bindless->layout());
@@ -80,6 +65,14 @@ FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
     next_slot_ = (next_slot_ + 1) % kFramesInFlight;
     FrameSlot& slot = *slots_[index];
     FrameStats stats;
+    // Moving meshes and node transforms of this frame's pose (RenderSettings::pose,
+    // else the file's default pose) into the structures, when it is not the pose they hold.
+    if (pose_acceleration(slot, settings)) {
+        const AccelerationStats& a = acceleration->stats();
+        if (a.posed.pose_ms >= 0.0) stats.passes.push_back({"pose_vertices", a.posed.pose_ms});
+        if (a.posed.blas_ms >= 0.0) stats.passes.push_back({"posed_blas", a.posed.blas_ms});
+        if (a.tlas.build_ms >= 0.0) stats.passes.push_back({"tlas", a.tlas.build_ms});
+    }
     const VkAccelerationStructureKHR tlas = acceleration->tlas();
     if (tlas == VK_NULL_HANDLE) { // nothing with triangles: every ray misses
         if (rgba) {
@@ -126,6 +119,8 @@ FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
                  "vkGetQueryPoolResults(rt timestamps)");
         stats.gpu_ms = double(ts[1] - ts[0]) * context.info().timestamp_period_ns * 1e-6;
         stats.passes.push_back({"rays", stats.gpu_ms});
+        for (const PassTiming& p : stats.passes)
+            if (p.name != "rays") stats.gpu_ms += p.ms;
     }
     if (rgba) rt_views_->read(*rgba);
     resources->collect_garbage();

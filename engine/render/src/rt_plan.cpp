@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <set>
 
 namespace sherpa::gpu {
@@ -69,30 +70,47 @@ bool finite(const glm::mat4& m) {
 
 } // namespace
 
-TlasPlan plan_tlas(const Scene& scene, std::span<const std::int32_t> blas_of_group,
-                   const std::vector<bool>& hidden_nodes) {
-    TlasPlan plan;
+std::vector<TlasCandidate> tlas_candidates(const Scene& scene,
+                                           std::span<const std::int32_t> blas_of_group) {
+    std::vector<TlasCandidate> out;
     std::set<std::pair<std::uint32_t, std::uint32_t>> pairs; // (node, group)
-    std::set<std::array<std::uint32_t, 17>> placed;          // (blas, world bits)
-    std::uint64_t quiet_warnings = 0;
     for (const MeshInstance& inst : scene.instances) {
         if (inst.mesh_id >= scene.meshes.size()) continue;
         const std::uint32_t group = scene.meshes[inst.mesh_id].group_id;
         if (group >= blas_of_group.size() || blas_of_group[group] < 0) continue;
         if (!pairs.insert({inst.node_id, group}).second) continue; // another primitive of it
+        TlasCandidate c;
+        c.node = inst.node_id;
+        c.group = group;
+        c.blas = blas_of_group[group];
+        c.world = inst.world;
+        c.node_name = inst.node_id < scene.nodes.size() ? scene.nodes[inst.node_id].name : "";
+        out.push_back(std::move(c));
+    }
+    return out;
+}
+
+TlasPlan plan_tlas(std::span<const TlasCandidate> candidates, const std::vector<bool>& hidden_nodes,
+                   std::span<const glm::mat4> node_world) {
+    TlasPlan plan;
+    std::set<std::array<std::uint32_t, 17>> placed; // (blas, world bits)
+    std::uint64_t quiet_warnings = 0;
+    for (const TlasCandidate& c : candidates) {
+        if (c.blas < 0) continue;
         ++plan.counts.node_mesh_pairs;
-        if (inst.node_id < hidden_nodes.size() && hidden_nodes[inst.node_id]) {
+        if (c.node < hidden_nodes.size() && hidden_nodes[c.node]) {
             ++plan.counts.hidden;
             continue;
         }
-        if (!finite(inst.world)) {
+        const glm::mat4 world = c.world_space                ? glm::mat4(1.0f)
+                                : c.node < node_world.size() ? node_world[c.node]
+                                                             : c.world;
+        if (!finite(world)) {
             ++plan.counts.non_finite;
             if (plan.warnings.size() < 8) {
-                const std::string name =
-                    inst.node_id < scene.nodes.size() ? scene.nodes[inst.node_id].name : "";
-                plan.warnings.push_back("node " + std::to_string(inst.node_id) + " '" + name +
+                plan.warnings.push_back("node " + std::to_string(c.node) + " '" + c.node_name +
                                         "': world transform is not finite; its instance of mesh " +
-                                        std::to_string(group) +
+                                        std::to_string(c.group) +
                                         " is left out of the acceleration structure");
             } else {
                 ++quiet_warnings;
@@ -100,17 +118,17 @@ TlasPlan plan_tlas(const Scene& scene, std::span<const std::int32_t> blas_of_gro
             continue;
         }
         std::array<std::uint32_t, 17> key{};
-        key[0] = std::uint32_t(blas_of_group[group]);
-        std::memcpy(&key[1], &inst.world, sizeof(glm::mat4));
+        key[0] = std::uint32_t(c.blas);
+        std::memcpy(&key[1], &world, sizeof(glm::mat4));
         if (!placed.insert(key).second) {
             ++plan.counts.deduplicated;
             continue;
         }
         TlasInstancePlan p;
         p.blas = key[0];
-        p.node = inst.node_id;
-        p.world = inst.world;
-        p.mirrored = glm::determinant(glm::mat3(inst.world)) < 0.0f;
+        p.node = c.node;
+        p.world = world;
+        p.mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
         plan.counts.mirrored += p.mirrored ? 1 : 0;
         plan.instances.push_back(p);
     }
@@ -119,6 +137,64 @@ TlasPlan plan_tlas(const Scene& scene, std::span<const std::int32_t> blas_of_gro
                                 " more instances with non-finite transforms left out");
     plan.counts.instances = plan.instances.size();
     return plan;
+}
+
+std::vector<PosedBlasPlan> plan_posed_blas(const Scene& scene, std::span<const GpuMesh> meshes,
+                                           std::span<const std::uint32_t> scene_instances,
+                                           std::span<const BlasPlan> plans) {
+    std::vector<PosedBlasPlan> out;
+    std::vector<std::int32_t> plan_of_group;
+    bool any = false;
+    for (std::uint32_t p = 0; p < plans.size(); ++p) {
+        if (plans[p].group >= plan_of_group.size()) plan_of_group.resize(plans[p].group + 1, -1);
+        plan_of_group[plans[p].group] = static_cast<std::int32_t>(p);
+        for (const BlasGeometryPlan& g : plans[p].geometries)
+            any = any || (g.mesh < meshes.size() && meshes[g.mesh].motion != 0);
+    }
+    if (!any) return out;
+    // Which engine meshes skin (their primitive's motion has joints).
+    std::vector<char> skins(meshes.size(), 0);
+    for (const PrimitiveInfo& prim : scene.primitives)
+        if (prim.engine_mesh >= 0 && prim.motion >= 0 &&
+            std::size_t(prim.engine_mesh) < skins.size() &&
+            scene.motions[std::size_t(prim.motion)].skinned())
+            skins[std::size_t(prim.engine_mesh)] = 1;
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> gpu_instance; // (node, mesh)
+    for (std::uint32_t i = 0; i < scene_instances.size(); ++i) {
+        const MeshInstance& inst = scene.instances[scene_instances[i]];
+        gpu_instance.emplace(std::pair{inst.node_id, inst.mesh_id}, i);
+    }
+    std::set<std::pair<std::uint32_t, std::uint32_t>> pairs; // (node, group)
+    for (const MeshInstance& inst : scene.instances) {
+        if (inst.mesh_id >= meshes.size() || meshes[inst.mesh_id].motion == 0) continue;
+        const std::uint32_t group = scene.meshes[inst.mesh_id].group_id;
+        if (group >= plan_of_group.size() || plan_of_group[group] < 0) continue;
+        if (!pairs.insert({inst.node_id, group}).second) continue;
+        PosedBlasPlan posed;
+        posed.node = inst.node_id;
+        posed.group = group;
+        posed.plan = static_cast<std::uint32_t>(plan_of_group[group]);
+        const bool has_skin =
+            inst.node_id < scene.nodes.size() && scene.nodes[inst.node_id].skin >= 0;
+        bool complete = true;
+        for (const BlasGeometryPlan& g : plans[posed.plan].geometries) {
+            const auto it = gpu_instance.find({inst.node_id, g.mesh});
+            if (it == gpu_instance.end()) {
+                complete = false;
+                break;
+            }
+            PosedGeometryPlan pg;
+            pg.mesh = g.mesh;
+            pg.gpu_instance = it->second;
+            pg.moves = meshes[g.mesh].motion != 0;
+            posed.world_space = posed.world_space || (pg.moves && has_skin && skins[g.mesh]);
+            posed.geometries.push_back(pg);
+        }
+        if (!complete) continue;
+        for (PosedGeometryPlan& pg : posed.geometries) pg.posed = pg.moves || posed.world_space;
+        out.push_back(std::move(posed));
+    }
+    return out;
 }
 
 } // namespace sherpa::gpu

@@ -45,6 +45,22 @@ std::vector<std::vector<std::uint32_t>> batch_by_scratch(std::span<const std::ui
                                                          std::uint64_t budget,
                                                          std::uint64_t alignment);
 
+// A (node, glTF mesh) pair of the displayed scene with a triangle on the GPU, in
+// scene-instance order: what the TLAS may instance. `blas` (into the combined BLAS
+// list: the static ones, then the posed ones) is -1 while it has none.
+struct TlasCandidate {
+    std::uint32_t node = 0, group = 0;
+    std::int32_t blas = -1;
+    bool world_space = false; // posed in world space (skinned): the instance is the identity
+    glm::mat4 world{1.0f};    // as loaded
+    std::string node_name;    // for warnings
+};
+
+// One per (node, glTF mesh) pair of `scene.instances` (its first primitive's), with
+// `blas_of_group[group]` as its BLAS (-1 where the mesh has none).
+std::vector<TlasCandidate> tlas_candidates(const Scene& scene,
+                                           std::span<const std::int32_t> blas_of_group);
+
 struct TlasInstancePlan {
     std::uint32_t blas = 0; // index into the BLAS list
     std::uint32_t node = 0;
@@ -58,11 +74,39 @@ struct TlasPlan {
     std::vector<std::string> warnings;
 };
 
-// One instance per (node, glTF mesh) of the displayed scene whose mesh has a BLAS
-// (`blas_of_group[group]` >= 0). Excluded and counted: hidden nodes
-// (`hidden_nodes[node]`), non-finite transforms (with a warning), and pairs with
-// the same BLAS and a bitwise identical world transform as an earlier one.
-TlasPlan plan_tlas(const Scene& scene, std::span<const std::int32_t> blas_of_group,
-                   const std::vector<bool>& hidden_nodes);
+// One instance per candidate with a BLAS, at `node_world[node]` (the frame's pose;
+// empty: the candidate's world as loaded), the identity for world-space ones.
+// Excluded and counted: hidden nodes (`hidden_nodes[node]`), non-finite transforms
+// (with a warning), and pairs with the same BLAS and a bitwise identical world
+// transform as an earlier one.
+TlasPlan plan_tlas(std::span<const TlasCandidate> candidates, const std::vector<bool>& hidden_nodes,
+                   std::span<const glm::mat4> node_world = {});
+
+// A (node, glTF mesh) instance whose mesh skins or morphs: it gets a BLAS of its own
+// over posed copies of the vertices (posed_geometry.h), rewritten when the pose changes.
+struct PosedGeometryPlan {
+    std::uint32_t mesh = 0;         // engine mesh
+    std::uint32_t gpu_instance = 0; // its GPU instance (the pose buffer's GPUInstanceData)
+    bool moves = false;             // the mesh skins or morphs (a GPUMotionMesh)
+    // Posed streams of its own: it moves, or the instance is posed in world space.
+    bool posed = false;
+};
+
+struct PosedBlasPlan {
+    std::uint32_t node = 0, group = 0;
+    std::uint32_t plan = 0; // the glTF mesh's BlasPlan (geometries, opacity) in plan_blas's list
+    // Some geometry is skinned by the node's skin: every posed geometry is in world
+    // space (a skinned node's transform does not apply), else in the mesh's space.
+    bool world_space = false;
+    std::vector<PosedGeometryPlan> geometries; // as the BlasPlan's
+};
+
+// The posed BLAS of a scene: one per (node, glTF mesh) instance of `plans` where a
+// geometry's engine mesh has motion streams (`meshes[m].motion`) and every geometry
+// is a GPU instance of that node (`scene_instances`: scene instance per GPU
+// instance). Empty for static scenes.
+std::vector<PosedBlasPlan> plan_posed_blas(const Scene& scene, std::span<const GpuMesh> meshes,
+                                           std::span<const std::uint32_t> scene_instances,
+                                           std::span<const BlasPlan> plans);
 
 } // namespace sherpa::gpu

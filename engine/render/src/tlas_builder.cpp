@@ -1,6 +1,7 @@
 // The TLAS: one instance per (node, glTF mesh) as plan_tlas decides, built on load
-// and rebuilt or refitted when transforms or visibility change.
+// and rebuilt or refitted when transforms, the pose or visibility change.
 #include "as_build.h"
+#include "posed_geometry.h"
 #include "rt_plan.h"
 
 #include <sherpa/gpu/commands.h>
@@ -8,6 +9,7 @@
 #include <sherpa/render/acceleration_structures.h>
 
 #include <cstring>
+#include <map>
 
 namespace sherpa::gpu {
 
@@ -25,7 +27,41 @@ VkTransformMatrixKHR to_vk(const glm::mat4& m) {
 
 void SceneAccelerationStructures::update_instances(const Scene& scene,
                                                    const std::vector<bool>& hidden_nodes) {
-    TlasPlan plan = plan_tlas(scene, blas_of_mesh_, hidden_nodes);
+    candidates_ = tlas_candidates(scene, blas_of_mesh_);
+    if (posed_) {
+        std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> posed; // (node, group)
+        for (std::uint32_t i = 0; i < posed_->size(); ++i)
+            posed.emplace(std::pair{posed_->plan(i).node, posed_->plan(i).group}, i);
+        for (TlasCandidate& c : candidates_) {
+            const auto it = posed.find({c.node, c.group});
+            if (it == posed.end()) continue;
+            c.blas = static_cast<std::int32_t>(blas_.size() + it->second);
+            c.world_space = posed_->plan(it->second).world_space;
+        }
+    }
+    hidden_ = hidden_nodes;
+    build_tlas({});
+}
+
+VkDeviceAddress SceneAccelerationStructures::blas_address(std::uint32_t blas) const {
+    return blas < blas_.size() ? blas_[blas].address() : posed_->blas_address(blas - blas_.size());
+}
+
+std::uint32_t SceneAccelerationStructures::first_geometry(std::uint32_t blas) const {
+    return blas < blas_.size() ? stats_.blas[blas].first_geometry
+                               : posed_->first_geometry(blas - blas_.size());
+}
+
+void SceneAccelerationStructures::build_tlas(std::span<const glm::mat4> node_world) {
+    // Posed instances join once their BLAS were built (the first update_pose()).
+    std::vector<TlasCandidate> unposed;
+    const bool pending = posed_ && posed_->stats().updates == 0;
+    if (pending) {
+        unposed = candidates_;
+        for (TlasCandidate& c : unposed)
+            if (c.blas >= static_cast<std::int32_t>(blas_.size())) c.blas = -1;
+    }
+    TlasPlan plan = plan_tlas(pending ? unposed : candidates_, hidden_, node_world);
     stats_.warnings = std::move(plan.warnings); // the TLAS's are the only warnings
     std::vector<std::uint32_t> order;
     for (const TlasInstancePlan& p : plan.instances) order.push_back(p.blas);
@@ -59,7 +95,7 @@ void SceneAccelerationStructures::update_instances(const Scene& scene,
         VkAccelerationStructureInstanceKHR inst{};
         inst.transform = to_vk(p.world);
         // 24 bits: more geometry records than that cannot be addressed.
-        const std::uint32_t first = stats_.blas[p.blas].first_geometry;
+        const std::uint32_t first = first_geometry(p.blas);
         if (first >= (1u << 24))
             throw GpuError("ray tracing: geometry record " + std::to_string(first) +
                            " is past the 24-bit instance custom index");
@@ -69,7 +105,7 @@ void SceneAccelerationStructures::update_instances(const Scene& scene,
         // Facing is decided in the hit shaders from the object-space winding (culling
         // is per material, in rt.rahit, as the rasterizer's), so the hardware culls nothing.
         inst.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
-        inst.accelerationStructureReference = blas_[p.blas].address();
+        inst.accelerationStructureReference = blas_address(p.blas);
         std::memcpy(out + i, &inst, sizeof(inst));
     }
     stats_.tlas.instance_buffer_bytes = resources_.get(instances_).size;

@@ -5,9 +5,13 @@
 // materials through, and the top-level structure with one instance per (node, glTF
 // mesh). Built once on scene load, batched under a scratch budget; never per frame
 // (the TLAS is refitted or rebuilt on demand when transforms or visibility change).
+// Instances of meshes that skin or morph get posed vertex copies and BLAS of their
+// own, refitted when the pose changes (update_pose(), PosedStats).
 // Needs a Context with DeviceInfo::ray_tracing_enabled (GpuScene's buffers then carry
 // the build-input usage).
 #include <cstdint>
+#include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -18,12 +22,17 @@
 
 namespace sherpa::gpu {
 
+struct TlasCandidate; // rt_plan.h
+
 struct BlasStats {
     std::uint32_t mesh = 0; // glTF mesh (Mesh::group_id)
     std::string name;
     std::uint32_t geometries = 0, opaque_geometries = 0;
     std::uint64_t triangles = 0;
     std::uint32_t first_geometry = 0; // its first GPUGeometryInfo record
+    // False when every instance of the mesh skins or morphs: only their posed BLAS
+    // (PosedStats) are built, and this one's sizes are 0.
+    bool built = true;
     std::uint32_t batch = 0;
     // GPU time of its build (timestamps around it; the builds of a batch are
     // serialised by barriers so each is timed alone); negative without timestamps.
@@ -47,9 +56,27 @@ struct TlasStats {
     std::uint64_t builds = 0, refits = 0;
 };
 
+// The structures of meshes that skin or morph: per (node, glTF mesh) instance of
+// one, posed copies of its moving vertices (positions, and the normals and tangents
+// the hit shaders read) written by a compute pass from the frame's pose, and a BLAS
+// over them, refitted (or rebuilt) when the pose changes. None for static scenes.
+struct PosedStats {
+    std::uint64_t blas = 0, geometries = 0, vertices = 0, triangles = 0;
+    std::uint64_t world_space = 0;  // skinned instances: posed in world space
+    std::uint64_t stream_bytes = 0; // the posed streams' buffer
+    std::uint64_t blas_bytes = 0, scratch_bytes = 0;
+    bool refit = true; // pose changes refit the BLAS (ALLOW_UPDATE), else rebuild them
+    // Poses applied: 0 until the first (until then the TLAS leaves these instances out;
+    // the Renderer applies the default pose on load).
+    std::uint64_t updates = 0;
+    std::uint64_t builds = 0, refits = 0;  // per posed BLAS, summed
+    double pose_ms = -1.0, blas_ms = -1.0; // the last update: posing dispatches, BLAS builds
+};
+
 struct AccelerationStats {
     std::vector<BlasStats> blas;
     TlasStats tlas;
+    PosedStats posed;
     std::uint32_t batches = 0;
     std::uint64_t scratch_budget = 0;
     std::uint64_t scratch_buffer_bytes = 0; // the largest batch's scratch buffer
@@ -60,7 +87,8 @@ struct AccelerationStats {
     std::uint64_t blas_triangles() const;
     std::uint64_t blas_build_bytes() const;
     std::uint64_t blas_compacted_bytes() const;
-    // Device memory kept after the build: compacted BLAS, TLAS, instances, records.
+    // Device memory kept after the build: compacted BLAS, TLAS, instances, records,
+    // and the posed streams, BLAS and scratch of moving meshes.
     std::uint64_t total_bytes() const;
 };
 
@@ -69,9 +97,22 @@ struct AccelerationSettings {
     // that alone needs more is built alone.
     std::uint64_t scratch_budget = 64ull << 20;
     bool compact = true;
+    // Posed BLAS (meshes that skin or morph) are refitted when the pose changes; false:
+    // rebuilt (PREFER_FAST_BUILD, no ALLOW_UPDATE).
+    bool refit_posed = true;
     // Per node: true excludes its instances (empty: every node shown).
     std::vector<bool> hidden_nodes;
 };
+
+// The frame's pose on the GPU (the Renderer's PosePass writes it, motion.glsl reads it).
+struct PoseFrame {
+    VkDeviceAddress instances = 0; // GPUInstanceData per GPU instance (GpuScene order)
+    VkDeviceAddress pose = 0;      // joint matrices, then floats
+    std::uint32_t highlight_base = 0;
+    std::span<const glm::mat4> node_world; // per node: world transforms of the pose
+};
+
+class PosedGeometry;
 
 class SceneAccelerationStructures {
 public:
@@ -92,14 +133,28 @@ public:
     // is the one the structures were built from, with its instances' world
     // transforms updated. Waits for the build; no frame may be using the TLAS.
     void update_instances(const Scene& scene, const std::vector<bool>& hidden_nodes);
+    // True when some instance skins or morphs (then update_pose() must run before its
+    // instances are in the TLAS).
+    bool posed() const { return posed_ != nullptr; }
+    // Applies a pose: the moving meshes' vertices are posed and their BLAS refitted
+    // (or rebuilt), then the TLAS refitted with the pose's node transforms (hidden
+    // nodes as last given). Waits; no frame may be using the structures.
+    void update_pose(const PoseFrame& frame);
 
 private:
     void build_blas(const Scene& scene, const GpuScene& gpu, const AccelerationSettings& s);
+    // The TLAS over candidates_ (hidden_ excluded) at `node_world` (empty: as loaded).
+    void build_tlas(std::span<const glm::mat4> node_world);
+    VkDeviceAddress blas_address(std::uint32_t blas) const;
+    std::uint32_t first_geometry(std::uint32_t blas) const;
 
     ResourceManager& resources_;
     RayTracingFunctions fn_;
     std::vector<AccelerationStructure> blas_; // by stats_.blas
     std::vector<std::int32_t> blas_of_mesh_;  // per glTF mesh: index into blas_, -1 none
+    std::unique_ptr<PosedGeometry> posed_;    // BLAS blas_.size() + i: posed_'s i-th
+    std::vector<TlasCandidate> candidates_;   // what the TLAS may instance
+    std::vector<bool> hidden_;
     AccelerationStructure tlas_;
     std::vector<std::uint32_t> tlas_blas_; // BLAS per TLAS instance, as last built
     BufferHandle records_, instances_;

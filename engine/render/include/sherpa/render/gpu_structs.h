@@ -262,4 +262,26 @@ static_assert(offsetof(GPURayPushConstants, texture_lod) == 76);
 static_assert(offsetof(GPURayPushConstants, clear_color) == 80);
 static_assert(sizeof(GPURayPushConstants) == 96);
 
+// Push constants of the ray tracer's posing pass (shaders/pose_vertices.comp, scalar):
+// one dispatch per posed geometry (posed_geometry.cpp).
+struct GPUPoseVerticesPush {
+    VkDeviceAddress instance;  // its GPUInstanceData in the frame's pose buffer
+    VkDeviceAddress positions; // stored streams
+    VkDeviceAddress normals;
+    VkDeviceAddress tangents;
+    VkDeviceAddress motion; // GPUMotionMesh (a zero record for a static mesh)
+    VkDeviceAddress pose;   // joint matrices, then floats
+    VkDeviceAddress out_positions, out_normals, out_tangents;
+    std::uint32_t mesh_flags;
+    std::uint32_t highlight_base;
+    std::uint32_t vertex_count;
+    std::uint32_t object_space; // 1: the mesh's space, 0: world space (skinned)
+};
+static_assert(offsetof(GPUPoseVerticesPush, motion) == 32);
+static_assert(offsetof(GPUPoseVerticesPush, out_positions) == 48);
+static_assert(offsetof(GPUPoseVerticesPush, out_tangents) == 64);
+static_assert(offsetof(GPUPoseVerticesPush, mesh_flags) == 72);
+static_assert(offsetof(GPUPoseVerticesPush, object_space) == 84);
+static_assert(sizeof(GPUPoseVerticesPush) == 88);
+
 } // namespace sherpa::gpu

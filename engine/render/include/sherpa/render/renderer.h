@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include <sherpa/render/acceleration_structures.h>
 #include <sherpa/render/load_settings.h>
 #include <sherpa/render/render_settings.h>
 #include <sherpa/scene/culling_passes.h>
@@ -75,6 +76,8 @@ struct RendererOptions {
     // RenderSettings::renderer = RayTraced can draw; needs a Context with
     // DeviceInfo::ray_tracing_enabled (else load() throws). Off: nothing RT is made.
     bool ray_tracing = false;
+    // How they are built (scratch budget, compaction, posed BLAS refit or rebuild).
+    AccelerationSettings acceleration;
 };
 
 class Renderer {

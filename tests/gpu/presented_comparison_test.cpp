@@ -8,7 +8,8 @@ namespace sherpa::test {
 namespace {
 
 // The viewport's RT switch: a presented ray-traced frame is the offscreen RT image,
-// on an RGBA and a BGRA (swapchain-like) target; refusals come before recording.
+// on RGBA and BGRA (swapchain-like) targets, sRGB or UNORM; refusals come before
+// recording.
 TEST_F(ComparisonTest, PresentedRayTracedFrameIsTheOffscreenImage) {
     if (!context().info().ray_tracing_enabled) GTEST_SKIP() << "device without ray tracing";
     auto scene = load(gltf_asset("BoxTextured"));
@@ -18,7 +19,8 @@ TEST_F(ComparisonTest, PresentedRayTracedFrameIsTheOffscreenImage) {
     s.renderer = gpu::RendererKind::RayTraced;
     std::vector<std::uint8_t> offscreen;
     r->render(s, &offscreen);
-    for (VkFormat format : {VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_B8G8R8A8_SRGB}) {
+    for (VkFormat format :
+         {VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_B8G8R8A8_UNORM}) {
         gpu::PresentedFrame frame(*r, s);
         const auto shown = present_offscreen(context(), r->resources(), frame, format);
         EXPECT_EQ(differing_pixels(shown, offscreen, 0, 3), 0u) << format;

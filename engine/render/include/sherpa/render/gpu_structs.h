@@ -284,4 +284,27 @@ static_assert(offsetof(GPUPoseVerticesPush, mesh_flags) == 72);
 static_assert(offsetof(GPUPoseVerticesPush, object_space) == 84);
 static_assert(sizeof(GPUPoseVerticesPush) == 88);
 
+// Push constants of the comparison pass (shaders/include/compare.glsl, scalar).
+struct GPUComparePush {
+    glm::uvec2 side_size;      // both side images
+    glm::uvec2 target_size;    // the composited target
+    std::uint32_t mode;        // 0 side A only, 1 split, 2 difference
+    std::uint32_t target_srgb; // 1: the target encodes the fragment output
+    float divider_px;          // Split: the divider's x in target pixels
+    float heat_max;            // Difference: full heat at this byte difference
+};
+static_assert(offsetof(GPUComparePush, target_size) == 8);
+static_assert(offsetof(GPUComparePush, mode) == 16);
+static_assert(offsetof(GPUComparePush, target_srgb) == 20);
+static_assert(offsetof(GPUComparePush, divider_px) == 24);
+static_assert(sizeof(GPUComparePush) == 32);
+
+// The statistics buffer compare.comp fills: a histogram of the per-pixel largest
+// byte difference and the 64-bit sum of squared R, G, B byte differences (two words).
+struct GPUCompareStats {
+    std::uint32_t histogram[256];
+    std::uint32_t squared_lo, squared_hi;
+};
+static_assert(sizeof(GPUCompareStats) == 1032);
+
 } // namespace sherpa::gpu

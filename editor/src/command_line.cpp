@@ -8,6 +8,7 @@
 #include <QTimer>
 #include <cstdio>
 
+#include "acceleration_dock.h"
 #include "culling_dock.h"
 #include "lab_dock.h"
 #include "log_dock.h"
@@ -23,14 +24,15 @@
 namespace sherpa::editor {
 
 namespace {
-const QStringList kDockNames = {QStringLiteral("scene-tree"), QStringLiteral("mesh"),
-                                QStringLiteral("material"),   QStringLiteral("textures"),
-                                QStringLiteral("culling"),    QStringLiteral("log"),
-                                QStringLiteral("timeline"),   QStringLiteral("lab")};
+const QStringList kDockNames = {
+    QStringLiteral("scene-tree"), QStringLiteral("mesh"),    QStringLiteral("material"),
+    QStringLiteral("textures"),   QStringLiteral("culling"), QStringLiteral("log"),
+    QStringLiteral("timeline"),   QStringLiteral("lab"),     QStringLiteral("acceleration")};
 
 QDockWidget* dock_named(MainWindow& w, const QString& name) {
-    QDockWidget* docks[] = {w.sceneTreeDock(), w.meshDock(), w.materialDock(), w.textureDock(),
-                            w.cullingDock(),   w.logDock(),  w.timelineDock(), w.labDock()};
+    QDockWidget* docks[] = {w.sceneTreeDock(), w.meshDock(),    w.materialDock(),
+                            w.textureDock(),   w.cullingDock(), w.logDock(),
+                            w.timelineDock(),  w.labDock(),     w.accelerationDock()};
     const auto i = kDockNames.indexOf(name);
     return i >= 0 ? docks[i] : nullptr;
 }
@@ -98,7 +100,7 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
     const QCommandLineOption dock(
         QStringLiteral("dock"),
         QStringLiteral("Show and raise this dock: scene-tree, mesh, material, textures, culling, "
-                       "log, timeline, lab (may be repeated)."),
+                       "log, timeline, lab, acceleration (may be repeated)."),
         QStringLiteral("name"));
     const QCommandLineOption gpu_culling(
         QStringLiteral("gpu-culling"),
@@ -111,7 +113,14 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
         QStringLiteral("time"),
         QStringLiteral("Show the first animation at this time (seconds) once loaded."),
         QStringLiteral("seconds"));
-    p.addOptions({view, shot, quit, language, select, timing, dock, gpu_culling, overlay, time});
+    const QCommandLineOption rt(
+        QStringLiteral("rt"),
+        QStringLiteral(
+            "Ray tracing where the device has it: on (default; acceleration structures "
+            "built on load, the ray-traced viewport modes) or off (nothing RT is made)."),
+        QStringLiteral("on|off"), QStringLiteral("on"));
+    p.addOptions(
+        {view, shot, quit, language, select, timing, dock, gpu_culling, overlay, time, rt});
     p.process(arguments);
     const QStringList positional = p.positionalArguments();
     if (positional.size() > 1) {
@@ -128,6 +137,11 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
     out.docks = p.values(dock);
     out.gpu_culling = p.isSet(gpu_culling);
     out.overlays = p.values(overlay);
+    if (p.value(rt) != QLatin1String("on") && p.value(rt) != QLatin1String("off")) {
+        error = QStringLiteral("--rt needs on or off, not '%1'").arg(p.value(rt));
+        return false;
+    }
+    out.ray_tracing = p.value(rt) == QLatin1String("on");
     if (p.isSet(time)) {
         bool ok = false;
         out.time = p.value(time).toDouble(&ok);

@@ -1,6 +1,6 @@
 #pragma once
 // sherpa [SCENE] [--view NAME] [--select NODE] [--screenshot OUT.png [--quit]] [--language CODE]
-//        [--timing] [--dock NAME ...] [--gpu-culling]
+//        [--timing] [--dock NAME ...] [--gpu-culling] [--rt on|off]
 #include <QString>
 #include <QStringList>
 
@@ -20,8 +20,9 @@ struct CommandLine {
     bool timing = false; // print launch/load/first-frame milliseconds to stdout
     QStringList docks;   // docks to show and raise (screenshots)
     bool gpu_culling = false;
-    QStringList overlays; // overlays to switch on (names of the engine's table)
-    double time = -1.0;   // timeline time to show once loaded (seconds); < 0: the start
+    QStringList overlays;    // overlays to switch on (names of the engine's table)
+    double time = -1.0;      // timeline time to show once loaded (seconds); < 0: the start
+    bool ray_tracing = true; // --rt: ray trace where the device can (MainWindow's argument)
 };
 
 // Returns false with `error` set on bad usage (unknown view, --quit without --screenshot...).

@@ -3,6 +3,7 @@
 #include <sherpa/gpu/context.h>
 #include <sherpa/gpu/devices.h>
 #include <sherpa/gpu/presenter.h>
+#include <sherpa/render/acceleration_structures.h>
 #include <sherpa/render/cull_check.h>
 #include <sherpa/render/gpu_scene.h>
 #include <sherpa/render/material_readback.h>
@@ -49,14 +50,20 @@ void GpuViewport::configureInstance(QVulkanInstance& instance) {
     if (validation) instance.setLayers({QByteArrayLiteral("VK_LAYER_KHRONOS_validation")});
 }
 
-std::unique_ptr<GpuViewport> GpuViewport::create(QVulkanInstance& instance, QString& error) {
+std::unique_ptr<GpuViewport> GpuViewport::create(QVulkanInstance& instance, bool ray_tracing,
+                                                 QString& error) {
     try {
         auto impl = std::make_unique<Impl>();
         gpu::ContextOptions options;
         options.external_instance = instance.vkInstance();
         options.presentation = true;
+        options.ray_tracing = ray_tracing;
         impl->context = std::make_unique<gpu::Context>(options);
-        impl->renderer = std::make_unique<gpu::Renderer>(*impl->context);
+        // Acceleration structures only where the device ray traces: without, nothing
+        // RT-related is allocated.
+        gpu::RendererOptions renderer;
+        renderer.ray_tracing = impl->context->info().ray_tracing_enabled;
+        impl->renderer = std::make_unique<gpu::Renderer>(*impl->context, renderer);
         return std::unique_ptr<GpuViewport>(new GpuViewport(std::move(impl)));
     } catch (const std::exception& e) {
         error = QString::fromUtf8(e.what());
@@ -150,6 +157,15 @@ QStringList GpuViewport::validationMessages() const {
 
 const Scene* GpuViewport::scene() const {
     return impl_->session ? impl_->session->scene.get() : nullptr;
+}
+
+bool GpuViewport::rayTracing() const {
+    return impl_->context->info().ray_tracing_enabled;
+}
+
+std::shared_ptr<const gpu::AccelerationStats> GpuViewport::accelerationStats() const {
+    const gpu::AccelerationStats* stats = impl_->renderer->acceleration_stats();
+    return stats ? std::make_shared<const gpu::AccelerationStats>(*stats) : nullptr;
 }
 
 QStringList GpuViewport::lastPassTimes() const {

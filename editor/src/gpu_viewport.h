@@ -22,6 +22,10 @@
 
 class QVulkanInstance;
 
+namespace sherpa::gpu {
+struct AccelerationStats;
+}
+
 namespace sherpa::editor {
 
 // What the window wants drawn; mapped to gpu::RenderSettings inside.
@@ -51,8 +55,11 @@ public:
     // Sets API version, extensions (and validation layer when on) that the engine
     // needs on a QVulkanInstance; call before create().
     static void configureInstance(QVulkanInstance& instance);
-    // Null with `error` set when the device lacks what the engine needs.
-    static std::unique_ptr<GpuViewport> create(QVulkanInstance& instance, QString& error);
+    // Null with `error` set when the device lacks what the engine needs. `ray_tracing`
+    // (the command line's --rt on|off): enable it where the device has it; the
+    // renderer then builds each scene's acceleration structures on upload.
+    static std::unique_ptr<GpuViewport> create(QVulkanInstance& instance, bool ray_tracing,
+                                               QString& error);
     ~GpuViewport();
 
     QString deviceName() const;
@@ -77,6 +84,11 @@ public:
     void useStreamsFor(const ViewportFrame& frame);
     // The scene last uploaded.
     const Scene* scene() const;
+    // Whether the renderer ray traces (device support and --rt on).
+    bool rayTracing() const;
+    // A copy of the uploaded scene's BLAS/TLAS statistics; null without ray tracing
+    // or a scene.
+    std::shared_ptr<const gpu::AccelerationStats> accelerationStats() const;
     // Presents one frame on `surface` (the swapchain is created on first use and
     // recreated when the size changes), each side drawn at `scale` of the frame's
     // size and scaled up, without shadows (interaction on slow devices). False when

@@ -19,6 +19,7 @@
 #include <QTimer>
 #include <QVulkanInstance>
 
+#include "acceleration_dock.h"
 #include "culling_dock.h"
 #include "culling_monitor.h"
 #include "gpu_viewport.h"
@@ -49,8 +50,8 @@ bool is_scene_file(const QString& path) {
 }
 } // namespace
 
-MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent)
-    : QMainWindow(parent), vulkan_(vulkan) {
+MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent, bool ray_tracing)
+    : QMainWindow(parent), vulkan_(vulkan), ray_tracing_asked_(ray_tracing) {
     setObjectName(QStringLiteral("sherpaMainWindow"));
     setWindowIcon(QIcon(QStringLiteral(":/sherpa.svg")));
     setAcceptDrops(true);
@@ -113,6 +114,7 @@ void MainWindow::createDocks() {
     culling_dock_ = new CullingDock(*culling_, this);
     log_ = new LogDock(this);
     lab_ = new LabDock(context_, this);
+    acceleration_ = new AccelerationDock(context_, this);
     for (QDockWidget* d : findChildren<QDockWidget*>()) {
         // A dock's width is the user's, never its content's: without this, a long
         // summary line (selecting a primitive) widens the mesh dock and squeezes the
@@ -145,6 +147,7 @@ void MainWindow::resetLayout() {
     addDockWidget(Qt::RightDockWidgetArea, mesh_);
     tabifyDockWidget(scene_tree_, culling_dock_);
     tabifyDockWidget(culling_dock_, log_);
+    tabifyDockWidget(log_, acceleration_);
     tabifyDockWidget(mesh_, material_);
     tabifyDockWidget(material_, textures_);
     tabifyDockWidget(textures_, lab_);
@@ -189,6 +192,8 @@ void MainWindow::connectActions() {
     connect(scene_tree_, &SceneTreeDock::visibilityRequested, &context_,
             &EditorContext::setNodeVisible);
     connect(scene_tree_, &SceneTreeDock::jumpToCameraRequested, this, &MainWindow::jumpToCamera);
+    connect(acceleration_, &AccelerationDock::selectMeshRequested, &context_,
+            &EditorContext::selectMesh);
     connect(mesh_, &MeshDock::selectVertexRequested, &context_, &EditorContext::selectVertex);
     connect(mesh_, &MeshDock::selectTriangleRequested, &context_, &EditorContext::selectTriangle);
     connect(material_, &MaterialDock::selectTextureRequested, this, [this](int texture) {

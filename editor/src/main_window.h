@@ -22,6 +22,7 @@ class QVulkanInstance;
 
 namespace sherpa::editor {
 
+class AccelerationDock;
 class CullingDock;
 class CullingMonitor;
 class LabDock;
@@ -39,7 +40,10 @@ class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
     // `vulkan` may be null (no Vulkan): the viewport then stays empty and says why.
-    explicit MainWindow(QVulkanInstance* vulkan, QWidget* parent = nullptr);
+    // `ray_tracing` (--rt on|off): ray trace where the device can (RT viewport modes,
+    // acceleration structures built on upload).
+    explicit MainWindow(QVulkanInstance* vulkan, QWidget* parent = nullptr,
+                        bool ray_tracing = true);
     ~MainWindow() override;
 
     const EditorContext& context() const { return context_; }
@@ -51,6 +55,9 @@ public:
     TimelineDock* timelineDock() const { return timeline_; }
     LogDock* logDock() const { return log_; }
     LabDock* labDock() const { return lab_; }
+    AccelerationDock* accelerationDock() const { return acceleration_; }
+    // The renderer ray traces (device support and --rt on); false until the device is known.
+    bool rayTracing() const { return ray_tracing_; }
     CullingMonitor& cullingMonitor() const { return *culling_; }
     ViewportWindow* viewport() const { return viewport_; }
     SceneLoadJob& loader() { return loader_; }
@@ -123,6 +130,8 @@ private:
     // The render thread has made its device or failed to: open the scene asked for.
     void deviceKnown();
     void uploadScene();
+    // Why the acceleration dock has no structures (--rt off, device, scene).
+    QString noAccelerationReason() const;
     // The uploaded textures' warnings (missing, undecodable...) and notices, once per set.
     void logTextureMessages();
     // What the viewport should show now (size, camera, view, selection...).
@@ -151,6 +160,8 @@ private:
     std::unique_ptr<RenderThread> render_; // null without a usable Vulkan device
     TexturePlan device_plan_;              // the device's side of the loader's texture plan
     bool device_pending_ = false;          // the render thread is still making the device
+    bool ray_tracing_asked_ = true;        // --rt on|off
+    bool ray_tracing_ = false;             // the device's renderer ray traces
     QString pending_open_;                 // asked for while the device was pending
     bool gpu_failed_ = false;              // a frame threw: stop drawing, say so once
     std::weak_ptr<const tex::PreparedTextureSet> logged_textures_; // logTextureMessages()
@@ -167,6 +178,7 @@ private:
     TimelineDock* timeline_ = nullptr; // animation playback: the pose each frame draws
     LogDock* log_ = nullptr;
     LabDock* lab_ = nullptr;
+    AccelerationDock* acceleration_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;
     QLabel* frame_label_ = nullptr;

@@ -18,6 +18,7 @@
 #include <QUrl>
 #include <QVulkanInstance>
 
+#include "acceleration_dock.h"
 #include "culling_dock.h"
 #include "culling_monitor.h"
 #include "gpu_viewport.h"
@@ -225,7 +226,8 @@ void MainWindow::createMenus() {
          {static_cast<QDockWidget*>(scene_tree_), static_cast<QDockWidget*>(mesh_),
           static_cast<QDockWidget*>(material_), static_cast<QDockWidget*>(textures_),
           static_cast<QDockWidget*>(culling_dock_), static_cast<QDockWidget*>(log_),
-          static_cast<QDockWidget*>(timeline_), static_cast<QDockWidget*>(lab_)})
+          static_cast<QDockWidget*>(timeline_), static_cast<QDockWidget*>(lab_),
+          static_cast<QDockWidget*>(acceleration_)})
         a.docks->addAction(d->toggleViewAction());
     a.view->addAction(a.reset_layout);
 
@@ -335,6 +337,7 @@ void MainWindow::retranslate() {
     culling_dock_->retranslate();
     log_->retranslate();
     timeline_->retranslate();
+    acceleration_->retranslate();
     // Models read tr() in headerData/data: tell the views to ask again. Source models
     // only, each change announced first: a proxy forwards its source's signals, and a
     // bare layoutChanged() on it left its persistent indices dangling (a crash when a

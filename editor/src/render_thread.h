@@ -80,7 +80,9 @@ public:
 Q_SIGNALS:
     // The device exists (GUI thread): what the loader's texture plan needs of it,
     // its name and how long making it took.
-    void deviceReady(const sherpa::editor::TexturePlan& plan, const QString& name, double ms);
+    // `ray_tracing`: the renderer ray traces (acceleration structures built on upload).
+    void deviceReady(const sherpa::editor::TexturePlan& plan, const QString& name, double ms,
+                     bool ray_tracing);
     // It could not be made: nothing will be drawn, posted tasks are dropped.
     void deviceFailed(const QString& error);
     void frameDone(const sherpa::editor::FrameReport& report);

@@ -19,12 +19,14 @@
 
 #include "material_dock.h"
 #include "scene_session.h"
+#include "viewport_mode.h"
 
 class QVulkanInstance;
 
 namespace sherpa::gpu {
 struct AccelerationStats;
-}
+struct RenderSettings;
+} // namespace sherpa::gpu
 
 namespace sherpa::editor {
 
@@ -42,6 +44,8 @@ struct ViewportFrame {
     std::optional<CameraSpec> frozenCulling;    // cull from this camera instead
     std::shared_ptr<const Pose> pose;           // the timeline's; null: the scene as loaded
     std::optional<std::uint32_t> selectedJoint; // a joint node (skeleton, joint influence)
+    ViewportComparison compare;                 // raster, ray traced, split or difference
+    SharedSession compareSession;               // SideB::OtherFile: the other file
 };
 
 // Prepares a scene's textures as `plan` says (the texture pipeline: cache, BC7/BC5,
@@ -94,6 +98,11 @@ public:
     // size and scaled up, without shadows (interaction on slow devices). False when
     // it was skipped.
     bool present(std::uint64_t surface, const ViewportFrame& frame, float scale = 1.0f);
+    // Why the last present() drew nothing: what the ray tracer refused (a view
+    // without a ray formula, a posed frame...); empty when it drew.
+    QString lastRefusal() const;
+    // The difference numbers of the latest completed comparison frame.
+    DifferenceNumbers lastDifference() const;
     // Waits until the queue is idle (the presented frame is on screen).
     void finish();
     // Drops the swapchain (before the window's surface goes away).
@@ -135,6 +144,9 @@ private:
     struct Impl;
     explicit GpuViewport(std::unique_ptr<Impl> impl);
     void upload();
+    void preparePresenter(std::uint64_t surface, const ViewportFrame& frame);
+    // gpu_viewport_compare.cpp: side B loaded as `frame` asks, both drawn and composited.
+    bool presentComparison(const ViewportFrame& frame, const gpu::RenderSettings& a, float scale);
     std::unique_ptr<Impl> impl_;
 };
 

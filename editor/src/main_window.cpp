@@ -7,6 +7,7 @@
 #include <QDropEvent>
 #include <QElapsedTimer>
 #include <QFileInfo>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QMessageBox>
 #include <QMimeData>
@@ -20,7 +21,9 @@
 #include <QVulkanInstance>
 
 #include "acceleration_dock.h"
+#include "compare_controls.h"
 #include "culling_dock.h"
+#include "difference_legend.h"
 #include "culling_monitor.h"
 #include "gpu_viewport.h"
 #include "lab_dock.h"
@@ -63,7 +66,17 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent, bool ray_tracin
     viewport_container_->setObjectName(QStringLiteral("viewport"));
     viewport_container_->setMinimumSize(320, 240);
     viewport_container_->setFocusPolicy(Qt::StrongFocus);
-    setCentralWidget(viewport_container_);
+    // The difference legend beside the viewport, shown in Difference mode only.
+    auto* centre = new QWidget(this);
+    auto* centre_layout = new QHBoxLayout(centre);
+    centre_layout->setContentsMargins(0, 0, 0, 0);
+    centre_layout->setSpacing(0);
+    legend_ = new DifferenceLegend(centre);
+    legend_->hide();
+    centre_layout->addWidget(viewport_container_, 1);
+    centre_layout->addWidget(legend_);
+    setCentralWidget(centre);
+    compare_ = new CompareControls(this);
 
     progress_ = new QProgressBar(this);
     progress_->setMaximumWidth(220);
@@ -205,6 +218,7 @@ void MainWindow::connectActions() {
             &EditorContext::selectTexture);
 
     connectLab();
+    connectCompare();
     connect(&loader_, &SceneLoadJob::loaded, this, &MainWindow::onLoaded);
     connect(&loader_, &SceneLoadJob::failed, this, &MainWindow::onLoadFailed);
     connect(&loader_, &SceneLoadJob::progress, this, &MainWindow::onProgress);

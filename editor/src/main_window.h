@@ -23,7 +23,9 @@ class QVulkanInstance;
 namespace sherpa::editor {
 
 class AccelerationDock;
+class CompareControls;
 class CullingDock;
+class DifferenceLegend;
 class CullingMonitor;
 class LabDock;
 class RenderThread;
@@ -102,6 +104,13 @@ public:
     const QString& lastProgressText() const { return last_progress_; }
     // The thread that owns the engine and draws; null without a usable Vulkan device.
     RenderThread* renderer() const { return render_.get(); }
+    // The viewport's mode switch and side B of a comparison (main_window_compare.cpp).
+    CompareControls& compareControls() const { return *compare_; }
+    DifferenceLegend* differenceLegend() const { return legend_; }
+    // Loads `spec` as side B of the comparison (File dialog of "Another File…").
+    void compareWithFile(const QString& spec);
+    // The other file's session while comparing with it (null otherwise).
+    const SharedSession& compareSession() const { return compare_session_; }
 
 Q_SIGNALS:
     void sceneLoaded(const QString& spec, double ms);
@@ -143,6 +152,12 @@ private:
     void updateStreams();
     void connectActions();
     void connectLab(); // main_window_lab.cpp
+    // main_window_compare.cpp
+    void connectCompare();
+    void onCompareChanged();
+    // A frame the ray tracer refused: said in the log and status bar, back to raster.
+    void onRefused(const QString& why);
+    TexturePlan texturePlan() const; // the device's, with the cache settings of now
     void onLoaded(SharedSession session);
     void onLoadFailed(const QString& spec, const QString& error);
     void onProgress(LoadStep step, int done, int total);
@@ -178,6 +193,10 @@ private:
     TimelineDock* timeline_ = nullptr; // animation playback: the pose each frame draws
     LogDock* log_ = nullptr;
     LabDock* lab_ = nullptr;
+    CompareControls* compare_ = nullptr;
+    DifferenceLegend* legend_ = nullptr;
+    SceneLoadJob compare_loader_;   // side B's file
+    SharedSession compare_session_; // loaded by it, kept while comparing with it
     AccelerationDock* acceleration_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;

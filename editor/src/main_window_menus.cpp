@@ -19,7 +19,9 @@
 #include <QVulkanInstance>
 
 #include "acceleration_dock.h"
+#include "compare_controls.h"
 #include "culling_dock.h"
+#include "difference_legend.h"
 #include "culling_monitor.h"
 #include "gpu_viewport.h"
 #include "lab_dock.h"
@@ -202,6 +204,7 @@ void MainWindow::createMenus() {
     a.view->addAction(a.frame_selection);
     a.view->addAction(a.fly);
     a.view->addAction(a.missing_checker);
+    a.view->addMenu(compare_->menu());
     a.cameras = a.view->addMenu(QString());
     connect(a.cameras, &QMenu::aboutToShow, this, [this] {
         Actions& acts = *a_;
@@ -260,6 +263,7 @@ void MainWindow::createMenus() {
     a.view_button->setMenu(a.debug_views);
     a.view_button->setPopupMode(QToolButton::InstantPopup);
     a.toolbar->addWidget(a.view_button);
+    compare_->addToToolBar(a.toolbar);
     for (QAction* act : a.overlay_actions) a.toolbar->addAction(act);
     a.toolbar->addSeparator();
     a.toolbar->addAction(a.frame_all);
@@ -338,6 +342,8 @@ void MainWindow::retranslate() {
     log_->retranslate();
     timeline_->retranslate();
     acceleration_->retranslate();
+    compare_->retranslate();
+    legend_->retranslate();
     // Models read tr() in headerData/data: tell the views to ask again. Source models
     // only, each change announced first: a proxy forwards its source's signals, and a
     // bare layoutChanged() on it left its persistent indices dangling (a crash when a

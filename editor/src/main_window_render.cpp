@@ -9,7 +9,9 @@
 #include <utility>
 
 #include "acceleration_dock.h"
+#include "compare_controls.h"
 #include "culling_dock.h"
+#include "difference_legend.h"
 #include "culling_monitor.h"
 #include "gpu_viewport.h"
 #include "log_dock.h"
@@ -49,6 +51,7 @@ void MainWindow::createRenderer() {
                     tr("Rendering on %1 (renderer ready in %2 ms).").arg(name).arg(ms, 0, 'f', 1));
                 device_plan_ = plan;
                 ray_tracing_ = rt;
+                compare_->setRayTracing(rt);
                 deviceKnown();
             });
     connect(render_.get(), &RenderThread::deviceFailed, this, [this](const QString& error) {
@@ -161,6 +164,8 @@ ViewportFrame MainWindow::currentFrame() const {
     frame.gpuCulling = a_->gpu_path->isChecked();
     frame.cullMethod = culling_->method();
     if (culling_->frozen()) frame.frozenCulling = culling_->cullingCamera();
+    frame.compare = compare_->state();
+    frame.compareSession = compare_session_;
     const Selection& sel = context_.selection();
     frame.pose = timeline_->pose();
     if (const Scene* scene = context_.scene();
@@ -182,6 +187,11 @@ void MainWindow::renderFrame() {
 }
 
 void MainWindow::onFrameDone(const FrameReport& report) {
+    if (!report.refused.isEmpty()) {
+        onRefused(report.refused);
+        return;
+    }
+    if (report.difference.valid) legend_->setNumbers(report.difference);
     // Skipped because the swapchain was out of date and has just been recreated:
     // draw again at the new size, or the last size change would never show.
     if (!report.shown) {

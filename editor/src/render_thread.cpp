@@ -194,6 +194,8 @@ void RenderThread::draw(GpuViewport& gpu, const Request& request, bool still) {
         return;
     }
     report.ms = ms_since(start);
+    report.refused = gpu.lastRefusal();
+    report.difference = gpu.lastDifference();
     report.gpu_ms = gpu.lastGpuMs();
     report.cull_passes = gpu.lastCullPasses(report.passes, report.cached_shadows);
     {

@@ -3,6 +3,7 @@
 // and its selection, the viewport's raster / ray traced / split / difference modes.
 // The engine's headers first: Qt's QVulkanInstance defines VK_NO_PROTOTYPES.
 #include <sherpa/render/acceleration_structures.h>
+#include <sherpa/render/comparison.h>
 
 #include <QHeaderView>
 #include <QSignalSpy>
@@ -14,6 +15,11 @@
 #include "acceleration_dock.h"
 #include "acceleration_model.h"
 #include "command_line.h"
+#include "compare_controls.h"
+#include "difference_legend.h"
+#include "log_dock.h"
+#include "view_catalog.h"
+#include "viewport_window.h"
 #include "main_window.h"
 #include "scene_tree_dock.h"
 #include "test_assets.h"
@@ -22,6 +28,43 @@
 using namespace sherpa;
 using namespace sherpa::editor;
 
+namespace {
+
+// The viewport's part of a fresh screenshot (drawn at full size, waited for).
+QImage viewportShot(MainWindow& w) {
+    const QImage shot = w.screenshot().convertToFormat(QImage::Format_RGB32);
+    const QWidget* vp = w.findChild<QWidget*>(QStringLiteral("viewport"));
+    return shot.copy(QRect(vp->mapTo(&w, QPoint(0, 0)), vp->size()));
+}
+
+// Pixels of columns [x0, x1) where the two images differ by more than 2/255 in a channel.
+int differing(const QImage& a, const QImage& b, int x0, int x1) {
+    int n = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = x0; x < x1; ++x) {
+            const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
+            if (std::abs(qRed(p) - qRed(q)) > 2 || std::abs(qGreen(p) - qGreen(q)) > 2 ||
+                std::abs(qBlue(p) - qBlue(q)) > 2)
+                ++n;
+        }
+    return n;
+}
+
+// Pixels whose colour differs from the background corner's: something is drawn.
+int covered(const QImage& image) {
+    const QRgb bg = image.pixel(0, 0);
+    int n = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) n += image.pixel(x, y) != bg;
+    return n;
+}
+
+std::uint32_t view(const char* name) {
+    return *ViewCatalog::viewId(QString::fromLatin1(name));
+}
+
+} // namespace
+
 class RtTests : public QObject {
     Q_OBJECT
 private Q_SLOTS:
@@ -29,6 +72,12 @@ private Q_SLOTS:
     void cleanupTestCase();
     void commandLineTakesRt();
     void accelerationDockListsBlasAndSelectsMesh();
+    void rayTracedModeDrawsRtFrames();
+    void refusedViewGoesBackToRaster();
+    void splitShowsALeftAndBRight();
+    void draggingMovesTheDivider();
+    void differenceOfASceneWithItselfIsZero();
+    void cleanup();
 
 private:
     void checkValidation();
@@ -108,6 +157,183 @@ void RtTests::accelerationDockListsBlasAndSelectsMesh() {
             QCOMPARE(none.count(), 0); // no echo
             break;
         }
+    checkValidation();
+}
+
+void RtTests::cleanup() {
+    if (!window_) return;
+    window_->compareControls().setMode(ViewportMode::Raster);
+    window_->setDebugView(QStringLiteral("lit"), false);
+}
+
+void RtTests::rayTracedModeDrawsRtFrames() {
+    MainWindow& w = *window_;
+    QVERIFY(test::load(w, test::asset(QStringLiteral("Suzanne"))));
+    w.pickAt(QPointF(-0.99, 0.99)); // nothing selected: no highlight on the raster side
+    QVERIFY(w.setDebugView(QStringLiteral("normal"), false));
+    const QImage raster = viewportShot(w);
+    w.compareControls().setMode(ViewportMode::RayTraced);
+    QCOMPARE(w.lastFrame().compare.mode, ViewportMode::RayTraced);
+    const QImage rays = viewportShot(w);
+    QCOMPARE(w.compareControls().state().mode, ViewportMode::RayTraced); // not refused
+    QVERIFY(w.lastReport().refused.isEmpty());
+    // The ray tracer's pass drew it: its timings name it.
+    QStringList passes;
+    for (int i = 0; i < 4 && !passes.join(' ').contains(QStringLiteral("ray")); ++i) {
+        w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
+        passes = w.renderer()->call([](GpuViewport& gpu) { return gpu.lastPassTimes(); });
+    }
+    QVERIFY2(passes.join(' ').contains(QStringLiteral("ray"), Qt::CaseInsensitive),
+             qPrintable(passes.join(QStringLiteral(", "))));
+    // The same surface as the rasterizer (the engine's exactness check holds >= 99.5%
+    // of covered pixels; silhouettes differ by a pixel here and there).
+    QVERIFY(covered(rays) > rays.width() * rays.height() / 20);
+    const int diff = differing(raster, rays, 0, rays.width());
+    QVERIFY2(diff < covered(rays) / 20,
+             qPrintable(QStringLiteral("%1 of %2").arg(diff).arg(covered(rays))));
+    checkValidation();
+}
+
+void RtTests::refusedViewGoesBackToRaster() {
+    MainWindow& w = *window_;
+    QVERIFY(test::load(w, QStringLiteral("builtin:default")));
+    QVERIFY(w.setDebugView(QStringLiteral("lit"), false)); // lights: no ray formula
+    const int errors = w.logDock()->errorCount();
+    w.compareControls().setMode(ViewportMode::RayTraced);
+    viewportShot(w);
+    QTRY_COMPARE_WITH_TIMEOUT(w.compareControls().state().mode, ViewportMode::Raster, 10000);
+    QVERIFY2(w.logDock()->text().contains(QStringLiteral("The ray tracer cannot draw")),
+             qPrintable(w.logDock()->text()));
+    QVERIFY(w.logDock()->text().contains(QStringLiteral("lit")));
+    QCOMPARE(w.logDock()->errorCount(), errors); // a warning, and rendering goes on
+    const std::uint64_t before = w.viewport()->framesRendered();
+    w.viewport()->scheduleFrame();
+    QTRY_VERIFY_WITH_TIMEOUT(w.viewport()->framesRendered() > before, 10000);
+    checkValidation();
+}
+
+void RtTests::splitShowsALeftAndBRight() {
+    MainWindow& w = *window_;
+    QVERIFY(test::load(w, QStringLiteral("builtin:default")));
+    w.pickAt(QPointF(-0.99, 0.99));
+    QVERIFY(w.setDebugView(QStringLiteral("normal"), false));
+    const QImage a = viewportShot(w);
+    QVERIFY(w.setDebugView(QStringLiteral("uv0"), false));
+    const QImage b = viewportShot(w);
+    QVERIFY(w.setDebugView(QStringLiteral("normal"), false));
+    CompareControls& c = w.compareControls();
+    c.setSide(SideB::OtherView, view("uv0"));
+    c.setMode(ViewportMode::Split);
+    c.setDivider(0.5f);
+    const QImage split = viewportShot(w);
+    QVERIFY(w.lastReport().refused.isEmpty());
+    const int mid = split.width() / 2, band = 4, h = split.height();
+    QVERIFY(differing(a, b, 0, split.width()) > split.width() * h / 10); // the views differ
+    // A left of the divider, B right of it (a thin band around the line aside).
+    const int left = differing(split, a, 0, mid - band);
+    const int right = differing(split, b, mid + band, split.width());
+    QVERIFY2(left <= (mid - band) * h / 200, qPrintable(QString::number(left)));
+    QVERIFY2(right <= (mid - band) * h / 200, qPrintable(QString::number(right)));
+    QVERIFY(differing(split, a, mid + band, split.width()) > mid * h / 20);
+    // The screenshot the docs show.
+    if (qEnvironmentVariableIsSet("SHERPA_SPLIT_SHOT"))
+        w.screenshot().save(qEnvironmentVariable("SHERPA_SPLIT_SHOT"));
+    checkValidation();
+}
+
+void RtTests::draggingMovesTheDivider() {
+    MainWindow& w = *window_;
+    CompareControls& c = w.compareControls();
+    c.setSide(SideB::OtherView, view("uv0"));
+    c.setMode(ViewportMode::Split);
+    c.setDivider(0.5f);
+    ViewportWindow* vp = w.viewport();
+    QCOMPARE(vp->divider().value_or(-1.0f), 0.5f);
+    const int y = vp->height() / 2, width = vp->width();
+    const CameraSpec camera = vp->camera().spec();
+    // Grabbed at the line (within the grab zone), dropped at a quarter of the width.
+    QTest::mousePress(vp, Qt::LeftButton, Qt::NoModifier, QPoint(width / 2 + 3, y));
+    QTest::mouseMove(vp, QPoint(width / 3, y));
+    QTest::mouseMove(vp, QPoint(width / 4, y));
+    QTest::mouseRelease(vp, Qt::LeftButton, Qt::NoModifier, QPoint(width / 4, y));
+    QVERIFY(std::abs(c.state().divider - 0.25f) < 0.01f);
+    QCOMPARE(vp->camera().spec().eye, camera.eye); // the camera did not orbit
+    // Ctrl+drag from anywhere.
+    QTest::mousePress(vp, Qt::LeftButton, Qt::ControlModifier, QPoint(width * 3 / 4, y));
+    QTest::mouseMove(vp, QPoint(width * 7 / 10, y));
+    QTest::mouseMove(vp, QPoint(width * 4 / 5, y));
+    QTest::mouseRelease(vp, Qt::LeftButton, Qt::ControlModifier, QPoint(width * 4 / 5, y));
+    QVERIFY(std::abs(c.state().divider - 0.8f) < 0.01f);
+    QCOMPARE(vp->camera().spec().eye, camera.eye);
+    // The frame follows: B (uv0) now starts at 80% of the width.
+    const QImage split = viewportShot(w);
+    QVERIFY(w.setDebugView(QStringLiteral("normal"), false));
+    c.setMode(ViewportMode::Raster);
+    const QImage a = viewportShot(w);
+    const int at = split.width() * 4 / 5;
+    QVERIFY(differing(split, a, 0, at - 4) <= at * split.height() / 200);
+    // Without a split, a drag orbits again.
+    QVERIFY(!vp->divider());
+    QTest::mousePress(vp, Qt::LeftButton, Qt::NoModifier, QPoint(width / 2, y));
+    QTest::mouseMove(vp, QPoint(width / 2 + 40, y));
+    QTest::mouseMove(vp, QPoint(width / 2 + 80, y));
+    QTest::mouseRelease(vp, Qt::LeftButton, Qt::NoModifier, QPoint(width / 2 + 80, y));
+    QVERIFY(vp->camera().spec().eye != camera.eye);
+    checkValidation();
+}
+
+void RtTests::differenceOfASceneWithItselfIsZero() {
+    MainWindow& w = *window_;
+    const QString file = test::asset(QStringLiteral("BoxTextured"));
+    QVERIFY(test::load(w, file));
+    QVERIFY(w.setDebugView(QStringLiteral("base-color"), false));
+    CompareControls& c = w.compareControls();
+    c.setMode(ViewportMode::Difference);
+    // Side B: the same file, loaded again as another file is.
+    w.compareWithFile(file);
+    QTRY_VERIFY_WITH_TIMEOUT(w.compareSession() != nullptr, 30000);
+    QCOMPARE(c.state().side, SideB::OtherFile);
+    QVERIFY(w.compareSession() != w.context().sharedSession()); // a second scene
+    DifferenceLegend& legend = *w.differenceLegend();
+    QVERIFY(legend.isVisible());
+    // The numbers are those of the latest completed frame: a few frames later.
+    QElapsedTimer t;
+    t.start();
+    while (!w.lastReport().difference.valid && t.elapsed() < 30000) {
+        w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
+        QCoreApplication::processEvents();
+    }
+    const DifferenceNumbers& n = w.lastReport().difference;
+    QVERIFY(n.valid);
+    QCOMPARE(n.pixels, std::uint64_t(w.lastFrame().width) * w.lastFrame().height);
+    QCOMPARE(n.mean, 0.0);
+    QCOMPARE(n.max, 0.0);
+    QCOMPARE(n.over_threshold_percent, 0.0);
+    QVERIFY(std::isinf(n.psnr_db));
+    const QString text = legend.numbersText();
+    QVERIFY2(text.contains(QStringLiteral("mean 0.00")) && text.contains(QStringLiteral("max 0.00")) &&
+                 text.contains(QStringLiteral("∞")) && text.contains(QStringLiteral("0.00%")),
+             qPrintable(text));
+    // The colour bar is the engine's heat scale: full heat on top, none at the bottom.
+    const QImage bar = legend.colourBar();
+    const auto top = gpu::heat_colour(1.0), bottom = gpu::heat_colour(0.0);
+    QCOMPARE(bar.pixel(0, 0), qRgb(top[0], top[1], top[2]));
+    QCOMPARE(bar.pixel(0, bar.height() - 1), qRgb(bottom[0], bottom[1], bottom[2]));
+    // Against another view instead: not identical, and the numbers say so.
+    c.setSide(SideB::OtherView, view("normal"));
+    t.restart();
+    double max = 0.0;
+    while (max == 0.0 && t.elapsed() < 30000) {
+        w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
+        QCoreApplication::processEvents();
+        max = w.lastReport().difference.max;
+    }
+    QVERIFY(max > 0.0);
+    QVERIFY(!legend.numbersText().contains(QStringLiteral("∞")));
+    // Leaving the comparison frees the other file.
+    c.setMode(ViewportMode::Raster);
+    QVERIFY(!w.compareSession());
+    QVERIFY(!legend.isVisible());
     checkValidation();
 }
 

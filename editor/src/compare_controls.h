@@ -1,0 +1,61 @@
+#pragma once
+// The viewport's mode switch (View › Viewport Mode and two toolbar buttons): Raster,
+// Ray traced, Split, Difference, and what side B of a comparison draws (the ray
+// tracer, another debug view, another file). Actions in, one plain state out
+// (ViewportComparison, which the main window puts into every ViewportFrame).
+#include <QObject>
+
+#include <vector>
+
+#include "viewport_mode.h"
+
+class QAction;
+class QActionGroup;
+class QMenu;
+class QToolBar;
+class QToolButton;
+class QWidget;
+
+namespace sherpa::editor {
+
+class CompareControls : public QObject {
+    Q_OBJECT
+public:
+    explicit CompareControls(QWidget* parent);
+    const ViewportComparison& state() const { return state_; }
+    QMenu* menu() const { return menu_; } // for View › Viewport Mode
+    void addToToolBar(QToolBar* bar);
+
+    void setMode(ViewportMode mode);
+    void setSide(SideB side, std::uint32_t view = 0);
+    void setDivider(float fraction);
+    // The device ray traces: the ray-traced mode and side are offered.
+    void setRayTracing(bool available);
+    // The other file side B shows (its name in the menu); empty: none chosen.
+    void setOtherFile(const QString& name);
+    void retranslate();
+
+Q_SIGNALS:
+    void changed();
+    // The user chose "Other file…": the window asks for one and loads it.
+    void otherFileRequested();
+
+private:
+    void sync(); // checks, enabled states and button texts from state_
+
+    ViewportComparison state_;
+    QString other_file_;
+    QMenu* menu_;
+    QMenu* side_menu_;
+    QMenu* side_views_;
+    QActionGroup* modes_;
+    QActionGroup* sides_;
+    std::vector<QAction*> mode_actions_; // by ViewportMode
+    QAction* side_rays_;
+    QAction* side_file_;
+    std::vector<QAction*> view_actions_; // ViewCatalog::views() order
+    QToolButton* mode_button_ = nullptr;
+    QToolButton* side_button_ = nullptr;
+};
+
+} // namespace sherpa::editor

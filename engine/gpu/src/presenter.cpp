@@ -183,10 +183,13 @@ bool Presenter::present_frame(FrameSource& source) {
     // Where the image is first written: drawn into, or a reduced frame blitted in.
     wait.stageMask =
         VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
-    auto signal = vk_init<VkSemaphoreSubmitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO);
-    signal.semaphore = rendered_[index].get();
-    signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-    const std::uint64_t value = recorders_[slot]->submit(resources_, &wait, 1, &signal, 1);
+    std::vector<VkSemaphoreSubmitInfo> signals{
+        vk_init<VkSemaphoreSubmitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO)};
+    signals[0].semaphore = rendered_[index].get();
+    signals[0].stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    for (const VkSemaphoreSubmitInfo& s : source.signals(slot)) signals.push_back(s);
+    const std::uint64_t value = recorders_[slot]->submit(
+        resources_, &wait, 1, signals.data(), static_cast<std::uint32_t>(signals.size()));
     source.submitted(slot, value);
     frame_ = (frame_ + 1) % static_cast<std::uint32_t>(acquired_.size());
 

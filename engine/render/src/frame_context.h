@@ -79,6 +79,8 @@ struct FrameSlot {
     VkDeviceSize cull_readback_capacity = 0;
     UniqueQueryPool cull_timestamps; // two per view around the GPU culling dispatch
     bool history_pushed = false;
+    // The frame was ray traced (record_side): two timestamps, no culling or statistics.
+    bool ray_traced = false;
     // Scenes that move (PosePass): this frame's instances, joint matrices, morph
     // weights and joint highlights, host-visible; and each GPU instance's world bounds
     // in the frame's pose, which culling, sorting and overlays use instead of the

@@ -34,7 +34,9 @@ void blit_to_target(VkCommandBuffer cmd, VkImage from, VkExtent2D from_size,
 
 PresentedFrame::PresentedFrame(Renderer& renderer, const RenderSettings& settings,
                                float resolution_scale)
-    : renderer_(renderer), settings_(settings), resolution_scale_(resolution_scale) {}
+    : renderer_(renderer), settings_(settings), resolution_scale_(resolution_scale) {
+    renderer_.impl_->check_drawable(settings_);
+}
 
 void PresentedFrame::wait_for_slot(std::uint32_t slot) {
     // The slot's previous frame is done: its timestamps and culling counts are final.
@@ -42,6 +44,23 @@ void PresentedFrame::wait_for_slot(std::uint32_t slot) {
 }
 
 void PresentedFrame::record(VkCommandBuffer cmd, std::uint32_t slot, const RenderTarget& target) {
+    if (settings_.renderer == RendererKind::RayTraced) {
+        // The rays' storage image (sRGB-encoded bytes in a UNORM image: no blit converts
+        // it right) reaches the target through the comparison pass's composite of side
+        // A alone, which also scales a reduced frame up (nearest).
+        const float scale =
+            resolution_scale_ > 0.0f && resolution_scale_ < 1.0f ? resolution_scale_ : 1.0f;
+        settings_.width = std::max(1u, static_cast<std::uint32_t>(float(target.width) * scale));
+        settings_.height = std::max(1u, static_cast<std::uint32_t>(float(target.height) * scale));
+        Renderer::Impl& r = *renderer_.impl_;
+        CompositeInputs in;
+        in.width = settings_.width;
+        in.height = settings_.height;
+        in.a = in.b = r.record_side(cmd, slot, settings_);
+        r.comparison().bind(slot, in);
+        r.comparison().record_composite(cmd, slot, in, target, CompositeMode::SideA, 0.0f, 1.0f);
+        return;
+    }
     const bool reduced = target.blit_target && resolution_scale_ > 0.0f && resolution_scale_ < 1.0f;
     if (!reduced) {
         settings_.width = target.width;

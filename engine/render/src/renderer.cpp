@@ -116,6 +116,8 @@ Renderer::Impl::~Impl() {
     resources->images().destroy(color_);
     resources->images().destroy(depth_);
     resources->images().destroy(scaled_);
+    resources->images().destroy(side_);
+    comparison_.reset();
     resources->destroy(readback_);
     resources->destroy(no_materials_);
     pipelines_.clear();
@@ -238,7 +240,7 @@ const Image& Renderer::Impl::scaled_target(VkFormat format, std::uint32_t width,
 
 std::uint64_t Renderer::Impl::render_target_bytes() const {
     std::uint64_t bytes = shadows_.bytes();
-    for (ImageHandle h : {color_, depth_, scaled_})
+    for (ImageHandle h : {color_, depth_, scaled_, side_})
         if (h.valid()) bytes += resources->images().get(h).allocation_size;
     return bytes;
 }
@@ -253,32 +255,45 @@ FrameStats Renderer::Impl::render(const RenderSettings& settings, std::vector<st
     next_slot_ = (next_slot_ + 1) % kFramesInFlight;
     FrameSlot& slot = *slots_[index];
     wait_slot(slot);
-    ensure_offscreen(settings.width, settings.height);
-    const Image& color = resources->images().get(color_);
-
+    const RenderTarget target = offscreen_target(settings.width, settings.height);
     VkCommandBuffer cmd = slot.recorder.begin();
-    RenderTarget target{color.image.get(), color.view.get(), kOffscreenFormat,
-                        settings.width,    settings.height,  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
     record_frame(cmd, index, target, settings);
-    if (rgba) {
-        VkBufferImageCopy region{};
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {settings.width, settings.height, 1};
-        vkCmdCopyImageToBuffer(cmd, color.image.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                               resources->get(readback_).buffer.get(), 1, &region);
-        memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
-    }
+    if (rgba) record_readback(cmd, settings.width, settings.height);
     const std::uint64_t value = slot.recorder.submit(*resources);
     finish_frame(index, value);
     FrameStats stats = slot_stats(index);
-    if (rgba) {
-        const Buffer& rb = resources->get(readback_);
-        rgba->resize(std::size_t(settings.width) * settings.height * 4);
-        std::memcpy(rgba->data(), rb.mapped, rgba->size());
-    }
+    if (rgba) read_offscreen(*rgba, settings.width, settings.height);
     resources->collect_garbage();
     return stats;
+}
+
+RenderTarget Renderer::Impl::offscreen_target(std::uint32_t width, std::uint32_t height) {
+    ensure_offscreen(width, height);
+    const Image& color = resources->images().get(color_);
+    return {color.image.get(),
+            color.view.get(),
+            kOffscreenFormat,
+            width,
+            height,
+            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+}
+
+void Renderer::Impl::record_readback(VkCommandBuffer cmd, std::uint32_t width,
+                                     std::uint32_t height) {
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {width, height, 1};
+    vkCmdCopyImageToBuffer(cmd, resources->images().get(color_).image.get(),
+                           VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           resources->get(readback_).buffer.get(), 1, &region);
+    memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                   VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+}
+
+void Renderer::Impl::read_offscreen(std::vector<std::uint8_t>& rgba, std::uint32_t width,
+                                    std::uint32_t height) const {
+    rgba.resize(std::size_t(width) * height * 4);
+    std::memcpy(rgba.data(), resources->get(readback_).mapped, rgba.size());
 }
 
 void Renderer::Impl::finish_frame(std::uint32_t slot, std::uint64_t submission) {
@@ -295,6 +310,7 @@ FrameStats Renderer::Impl::slot_stats(std::uint32_t index) {
 FrameStats Renderer::Impl::read_stats(FrameSlot& slot) {
     FrameStats s;
     if (!slot.has_results) return s;
+    if (slot.ray_traced) return read_rt_stats(slot);
     s.shadows_rendered = slot.shadows_rendered;
     s.draw_calls = slot.draw_calls;
     culling.read_stats(slot, scene.get(), s);

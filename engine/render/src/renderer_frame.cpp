@@ -37,6 +37,7 @@ void Renderer::Impl::record_frame(VkCommandBuffer cmd, std::uint32_t index,
     vkResetQueryPool(context.device(), slot.timestamps.get(), 0, kTimestampCount);
     if (slot.statistics) vkResetQueryPool(context.device(), slot.statistics.get(), 0, 1);
     slot.has_results = false;
+    slot.ray_traced = false;
     slot.draw_calls = 0;
     FrameContext f{cmd,     slot,       index,       pipelines_for(target.format), settings, target,
                    context, *resources, scene.get(), culling.scene_culling(),      lighting_};
@@ -106,14 +107,16 @@ void Renderer::Impl::bind_frame(FrameContext& f) {
 // contents do not matter), dynamic rendering begun, statistics started.
 void Renderer::Impl::begin_camera_rendering(FrameContext& f) {
     const Image& depth_image = resources->images().get(depth_);
-    transition(
-        f.cmd,
-        {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-         VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-         // Source stages include transfers: after an earlier frame's readback copy.
-         VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-         VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-         VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT});
+    transition(f.cmd,
+               {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                // Source stages include transfers: after an earlier frame's readback copy;
+                // and shader reads: an earlier comparison read this side image.
+                VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT |
+                    VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
+                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT});
     transition(
         f.cmd,
         {depth_image.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
@@ -151,13 +154,21 @@ void Renderer::Impl::begin_camera_rendering(FrameContext& f) {
 void Renderer::Impl::end_camera_rendering(FrameContext& f) {
     if (f.slot.statistics) vkCmdEndQuery(f.cmd, f.slot.statistics.get(), 0);
     vkCmdEndRendering(f.cmd);
-    const bool to_transfer = f.target.final_layout == VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    // What reads the target next: a copy (readback, blit), shaders (a comparison
+    // side, see renderer_side.cpp) or the presentation engine (no access).
+    VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_NONE;
+    VkAccessFlags2 access = VK_ACCESS_2_NONE;
+    if (f.target.final_layout == VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL) {
+        stage = VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT;
+        access = VK_ACCESS_2_TRANSFER_READ_BIT;
+    } else if (f.target.final_layout == VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL) {
+        stage = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+        access = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+    }
     transition(f.cmd,
                {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                 f.target.final_layout, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                to_transfer ? VK_PIPELINE_STAGE_2_COPY_BIT : VK_PIPELINE_STAGE_2_NONE,
-                to_transfer ? VK_ACCESS_2_TRANSFER_READ_BIT : VK_ACCESS_2_NONE});
+                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, stage, access});
 }
 
 } // namespace sherpa::gpu

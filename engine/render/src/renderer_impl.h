@@ -1,6 +1,7 @@
 #pragma once
 // The Renderer's inside (private to the render layer): frame resources, targets,
 // pipelines and the passes, in frame order in record_passes() (renderer_frame.cpp).
+#include "comparison_pass.h"
 #include "passes.h"
 #include "rt_view_pass.h"
 
@@ -39,6 +40,25 @@ public:
     // attachment and blit source), made or remade when the size changes.
     const Image& scaled_target(VkFormat format, std::uint32_t width, std::uint32_t height);
 
+    // A comparison side or a presented ray-traced frame (renderer_side.cpp): records
+    // `settings` (its width x height) with frame slot `slot` into an image of this
+    // renderer that shaders can read, returned with its layout. The caller submits
+    // and calls finish_frame() as for record_frame().
+    SideImage record_side(VkCommandBuffer cmd, std::uint32_t slot, const RenderSettings& settings);
+    // Throws GpuError for settings this renderer refuses to draw (the ray tracer's
+    // views, overlays, poses), before anything is recorded.
+    void check_drawable(const RenderSettings& settings) const;
+    // The compositing pass (comparison_pass.h), made on first use.
+    ComparisonPass& comparison();
+    // Offscreen comparisons (comparison.cpp): frame slot `slot`'s command recorder,
+    // the offscreen target of that size (left in TRANSFER_SRC layout by the frame),
+    // its copy into the readback buffer, and the rows read back once complete.
+    CommandRecorder& recorder(std::uint32_t slot) { return slots_.at(slot)->recorder; }
+    RenderTarget offscreen_target(std::uint32_t width, std::uint32_t height);
+    void record_readback(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height);
+    void read_offscreen(std::vector<std::uint8_t>& rgba, std::uint32_t width,
+                        std::uint32_t height) const;
+
     Context& context;
     RendererOptions options;
     std::unique_ptr<ResourceManager> resources;
@@ -71,8 +91,16 @@ private:
     void ensure_depth(std::uint32_t width, std::uint32_t height);
     Pipelines& pipelines_for(VkFormat format);
     FrameStats read_stats(FrameSlot& slot);
+    // A ray-traced side (renderer_side.cpp): its timestamps and statistics.
+    void begin_rt_side(VkCommandBuffer cmd, FrameSlot& slot);
+    void end_rt_side(VkCommandBuffer cmd, FrameSlot& slot);
+    FrameStats read_rt_stats(FrameSlot& slot);
     // RenderSettings::renderer = RayTraced (renderer_rt.cpp).
     FrameStats render_rt(const RenderSettings& settings, std::vector<std::uint8_t>* rgba);
+    void check_rt(const RenderSettings& settings) const;
+    // The ray tracer's frame of `settings` (the TLAS must exist).
+    RayTracedFrame rt_frame(const RenderSettings& settings) const;
+    SideImage record_rt_side(VkCommandBuffer cmd, FrameSlot& slot, const RenderSettings& settings);
 
     std::unique_ptr<RtViewPass> rt_views_;
     // Set at load when a mesh's default pose (skinning, default morph weights) moves its
@@ -98,7 +126,9 @@ private:
     std::uint64_t scene_generation_ = 0;
     std::vector<std::unique_ptr<FrameSlot>> slots_;
     std::uint32_t next_slot_ = 0;
+    std::unique_ptr<ComparisonPass> comparison_;
     ImageHandle color_, depth_, scaled_;
+    ImageHandle side_; // record_side's raster image (sampled by the comparison pass)
     BufferHandle readback_;
 };
 

@@ -52,8 +52,7 @@ std::string unposed_motion_mesh(const Scene& scene) {
     return {};
 }
 
-FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
-                                     std::vector<std::uint8_t>* rgba) {
+void Renderer::Impl::check_rt(const RenderSettings& settings) const {
     if (!acceleration)
         throw GpuError("the ray tracer needs the scene's acceleration structures: create the "
                        "renderer with RendererOptions::ray_tracing on a device that ray traces");
@@ -72,6 +71,29 @@ FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
     if (settings.pose)
         throw GpuError("the ray tracer draws the scene as loaded (bind pose): posed frames "
                        "(--animation/--time) are raster only");
+}
+
+RayTracedFrame Renderer::Impl::rt_frame(const RenderSettings& settings) const {
+    const CameraView camera =
+        resolve_camera(settings.camera, lighting_, float(settings.width) / float(settings.height));
+    RayTracedFrame f;
+    f.bindless = bindless->set();
+    f.tlas = acceleration->tlas();
+    f.materials = scene->materials().buffer();
+    f.material_extras = scene->materials().extras_buffer();
+    f.width = settings.width;
+    f.height = settings.height;
+    f.push.inv_view_proj = glm::inverse(camera.proj * camera.view);
+    f.push.geometries = acceleration->geometry_records();
+    f.push.view = static_cast<std::uint32_t>(settings.view);
+    f.push.texture_lod = settings.texture_lod;
+    f.push.clear_color = settings.clear_color;
+    return f;
+}
+
+FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
+                                     std::vector<std::uint8_t>* rgba) {
+    check_rt(settings);
     // Its descriptor set is rewritten per frame: no earlier frame may be in flight.
     for (auto& s : slots_) wait_slot(*s);
     if (!rt_views_)
@@ -91,21 +113,7 @@ FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
         }
         return stats;
     }
-    const CameraView camera =
-        resolve_camera(settings.camera, lighting_, float(settings.width) / float(settings.height));
-    RayTracedFrame f;
-    f.bindless = bindless->set();
-    f.tlas = tlas;
-    f.materials = scene->materials().buffer();
-    f.material_extras = scene->materials().extras_buffer();
-    f.width = settings.width;
-    f.height = settings.height;
-    f.push.inv_view_proj = glm::inverse(camera.proj * camera.view);
-    f.push.geometries = acceleration->geometry_records();
-    f.push.view = static_cast<std::uint32_t>(settings.view);
-    f.push.texture_lod = settings.texture_lod;
-    f.push.clear_color = settings.clear_color;
-
+    const RayTracedFrame f = rt_frame(settings);
     VkCommandBuffer cmd = slot.recorder.begin();
     const bool timed = context.info().timestamps;
     if (timed) {

@@ -136,7 +136,8 @@ void RtViewPass::ensure_target(std::uint32_t width, std::uint32_t height) {
     d.format = VK_FORMAT_R8G8B8A8_UNORM; // storage: the shader writes sRGB-encoded bytes
     d.width = width;
     d.height = height;
-    d.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    d.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+              VK_IMAGE_USAGE_SAMPLED_BIT; // read by the comparison pass
     d.name = "ray-traced view";
     target_ = resources_.images().create(d);
     readback_ = resources_.create_buffer({VkDeviceSize(width) * height * 4,
@@ -146,7 +147,7 @@ void RtViewPass::ensure_target(std::uint32_t width, std::uint32_t height) {
     height_ = height;
 }
 
-void RtViewPass::record(VkCommandBuffer cmd, const RayTracedFrame& f) {
+void RtViewPass::record(VkCommandBuffer cmd, const RayTracedFrame& f, bool readback) {
     ensure_target(f.width, f.height);
     const Image& image = resources_.images().get(target_);
     auto as_write = vk_init<VkWriteDescriptorSetAccelerationStructureKHR>(
@@ -187,7 +188,14 @@ void RtViewPass::record(VkCommandBuffer cmd, const RayTracedFrame& f) {
                             0, nullptr);
     vkCmdPushConstants(cmd, layout_.get(), kAllStages, 0, sizeof(f.push), &f.push);
     fn_.cmd_trace_rays(cmd, &raygen_, &miss_, &hit_, &callable_, f.width, f.height, 1);
-
+    if (!readback) {
+        memory_barrier(cmd, VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR,
+                       VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT |
+                           VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                       VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+        return;
+    }
     t.from = VK_IMAGE_LAYOUT_GENERAL;
     t.to = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
     t.src_stage = VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR;

@@ -30,7 +30,11 @@ public:
 
     // Records the rays and the copy of the image into the readback buffer. The
     // previous frame of this pass must have completed (its set is rewritten).
-    void record(VkCommandBuffer cmd, const RayTracedFrame& frame);
+    // Without `readback` the image stays in GENERAL layout for sampled reads by
+    // compute and fragment shaders (the comparison pass, a presented RT frame).
+    void record(VkCommandBuffer cmd, const RayTracedFrame& frame, bool readback = true);
+    // The image (RGBA8 UNORM holding sRGB-encoded bytes) of the last frame recorded.
+    VkImageView view() const { return resources_.images().get(target_).view.get(); }
     // After the submission completed: RGBA8 rows, top first (sRGB-encoded bytes).
     void read(std::vector<std::uint8_t>& rgba) const;
 

@@ -4,6 +4,7 @@
 // frame into the image it is handed. The render layer's PresentedFrame
 // (sherpa/render/presented_frame.h) is the renderer as a frame source.
 #include <cstdint>
+#include <span>
 
 #include <vulkan/vulkan.h>
 
@@ -35,6 +36,14 @@ public:
     virtual void wait_for_slot(std::uint32_t slot) = 0;
     // Records the frame drawing into `target` (its size is the swapchain's).
     virtual void record(VkCommandBuffer cmd, std::uint32_t slot, const RenderTarget& target) = 0;
+    // Semaphores the submission of the frame just recorded in `slot` also signals
+    // (asked after record): a source drawing with another ResourceManager's
+    // resources signals that manager's timeline too, so its waits and deferred
+    // releases see the frame.
+    virtual std::span<const VkSemaphoreSubmitInfo> signals(std::uint32_t slot) const {
+        (void)slot;
+        return {};
+    }
     // The frame recorded in `slot` was submitted, signalling `submission`.
     virtual void submitted(std::uint32_t slot, std::uint64_t submission) = 0;
 };

@@ -14,7 +14,12 @@ public:
     // `settings`' width and height are replaced by the target's. `resolution_scale`
     // below 1 (interaction on slow devices) draws each side at that fraction into an
     // intermediate image and scales it up (the target's blit filter) into the
-    // target; 1, or a target that takes no blits, draws at full size.
+    // target; 1, or a target that takes no blits, draws at full size. Ray-traced
+    // settings (RendererKind::RayTraced) trace the rays into the renderer's storage
+    // image and composite it into the target (any target; reduced frames scale up
+    // nearest); what the ray tracer refuses throws GpuError here, before recording.
+    // The ray tracer rewrites its descriptor set per frame, so a ray-traced frame
+    // waits for the renderer's frame in flight before it records.
     PresentedFrame(Renderer& renderer, const RenderSettings& settings,
                    float resolution_scale = 1.0f);
 

@@ -32,6 +32,9 @@ class Context;
 class ResourceManager;
 class GpuScene;
 class PresentedFrame;
+class ComparisonFrame;
+struct ComparisonSettings;
+struct ComparisonStats;
 
 struct PassTiming {
     std::string name;
@@ -121,6 +124,10 @@ public:
 
 private:
     friend class PresentedFrame; // records swapchain frames through Impl
+    friend class ComparisonFrame;
+    friend ComparisonStats render_comparison(Renderer&, const RenderSettings&, Renderer&,
+                                             const RenderSettings&, const ComparisonSettings&,
+                                             std::vector<std::uint8_t>*);
     std::unique_ptr<Impl> impl_;
 };
 

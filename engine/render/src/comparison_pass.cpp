@@ -1,0 +1,272 @@
+#include "comparison_pass.h"
+
+#include <sherpa/gpu/commands.h>
+#include <sherpa/gpu/gpu_error.h>
+#include <sherpa/gpu/vk_helpers.h>
+
+#include <array>
+#include <cstring>
+
+#include "compare_comp.h"
+#include "compare_frag.h"
+#include "compare_vert.h"
+
+namespace sherpa::gpu {
+namespace {
+
+constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_COMPUTE_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+constexpr std::uint32_t kGroup = 16; // compare.comp's local size (x and y)
+
+bool encodes_srgb(VkFormat format) {
+    switch (format) {
+    case VK_FORMAT_R8G8B8A8_SRGB:
+    case VK_FORMAT_B8G8R8A8_SRGB:
+    case VK_FORMAT_A8B8G8R8_SRGB_PACK32:
+        return true;
+    default:
+        return false;
+    }
+}
+
+// One triangle, no vertex input, no depth, no blending: the fragment shader writes
+// every pixel of the target.
+UniquePipeline make_composite(VkDevice device, VkPipelineLayout layout, VkShaderModule vert,
+                              VkShaderModule frag, VkFormat format) {
+    std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
+    for (auto& s : stages) {
+        s = vk_init<VkPipelineShaderStageCreateInfo>(
+            VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+        s.pName = "main";
+    }
+    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+    stages[0].module = vert;
+    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+    stages[1].module = frag;
+    auto vertex_input = vk_init<VkPipelineVertexInputStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
+    auto assembly = vk_init<VkPipelineInputAssemblyStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
+    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    auto viewport = vk_init<VkPipelineViewportStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
+    viewport.viewportCount = 1;
+    viewport.scissorCount = 1;
+    auto raster = vk_init<VkPipelineRasterizationStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
+    raster.polygonMode = VK_POLYGON_MODE_FILL;
+    raster.cullMode = VK_CULL_MODE_NONE;
+    raster.lineWidth = 1.0f;
+    auto multisample = vk_init<VkPipelineMultisampleStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
+    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    VkPipelineColorBlendAttachmentState attachment{};
+    attachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    auto blend = vk_init<VkPipelineColorBlendStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
+    blend.attachmentCount = 1;
+    blend.pAttachments = &attachment;
+    const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    auto dynamic = vk_init<VkPipelineDynamicStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
+    dynamic.dynamicStateCount = 2;
+    dynamic.pDynamicStates = dynamic_states;
+    auto rendering =
+        vk_init<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachmentFormats = &format;
+    auto ci =
+        vk_init<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
+    ci.pNext = &rendering;
+    ci.stageCount = 2;
+    ci.pStages = stages.data();
+    ci.pVertexInputState = &vertex_input;
+    ci.pInputAssemblyState = &assembly;
+    ci.pViewportState = &viewport;
+    ci.pRasterizationState = &raster;
+    ci.pMultisampleState = &multisample;
+    ci.pColorBlendState = &blend;
+    ci.pDynamicState = &dynamic;
+    ci.layout = layout;
+    VkPipeline p = VK_NULL_HANDLE;
+    vk_check(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &p),
+             "vkCreateGraphicsPipelines(compare)");
+    return UniquePipeline(device, p);
+}
+
+} // namespace
+
+ComparisonPass::ComparisonPass(Context& context, ResourceManager& resources, std::uint32_t slots)
+    : context_(context), resources_(resources) {
+    VkDevice device = context.device();
+    const VkDescriptorSetLayoutBinding bindings[] = {
+        {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, kStages, nullptr},
+        {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, kStages, nullptr},
+        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+    };
+    set_layout_ =
+        create_descriptor_set_layout(device, bindings, "vkCreateDescriptorSetLayout(compare)");
+    const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2 * slots},
+                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, slots}};
+    pool_ = create_descriptor_pool(device, slots, sizes, "vkCreateDescriptorPool(compare)");
+    const VkDescriptorSetLayout set_layout = set_layout_.get();
+    const VkPushConstantRange push{kStages, 0, sizeof(GPUComparePush)};
+    layout_ = create_pipeline_layout(device, {&set_layout, 1}, {&push, 1},
+                                     "vkCreatePipelineLayout(compare)");
+
+    const UniqueShaderModule comp =
+        create_shader_module(device, spirv_compare_comp, "vkCreateShaderModule(compare.comp)");
+    auto ci = vk_init<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+    ci.stage = vk_init<VkPipelineShaderStageCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+    ci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    ci.stage.module = comp.get();
+    ci.stage.pName = "main";
+    ci.layout = layout_.get();
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    vk_check(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline),
+             "vkCreateComputePipelines(compare)");
+    stats_pipeline_ = UniquePipeline(device, pipeline);
+    vert_ = create_shader_module(device, spirv_compare_vert, "vkCreateShaderModule(compare.vert)");
+    frag_ = create_shader_module(device, spirv_compare_frag, "vkCreateShaderModule(compare.frag)");
+
+    auto si = vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+    si.magFilter = si.minFilter = VK_FILTER_NEAREST; // the shaders only texelFetch
+    si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    sampler_ = resources.images().create_sampler(si);
+
+    slots_.resize(slots);
+    for (Slot& s : slots_) {
+        auto ai =
+            vk_init<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
+        ai.descriptorPool = pool_.get();
+        ai.descriptorSetCount = 1;
+        ai.pSetLayouts = &set_layout;
+        vk_check(vkAllocateDescriptorSets(device, &ai, &s.set),
+                 "vkAllocateDescriptorSets(compare)");
+        s.stats = resources.create_buffer(
+            {sizeof(GPUCompareStats),
+             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+             MemoryUsage::Readback, "comparison statistics"});
+    }
+}
+
+ComparisonPass::~ComparisonPass() {
+    for (Slot& s : slots_) resources_.destroy(s.stats);
+    resources_.images().destroy(sampler_);
+}
+
+VkPipeline ComparisonPass::pipeline_for(VkFormat format) {
+    UniquePipeline& p = composite_[format];
+    if (!p) p = make_composite(context_.device(), layout_.get(), vert_.get(), frag_.get(), format);
+    return p.get();
+}
+
+void ComparisonPass::bind(std::uint32_t index, const CompositeInputs& in) {
+    Slot& slot = slots_.at(index);
+    const VkSampler sampler = resources_.images().get(sampler_);
+    const VkDescriptorImageInfo images[] = {{sampler, in.a.view, in.a.layout},
+                                            {sampler, in.b.view, in.b.layout}};
+    const VkDescriptorBufferInfo buffer{resources_.get(slot.stats).buffer.get(), 0,
+                                        sizeof(GPUCompareStats)};
+    std::array<VkWriteDescriptorSet, 3> writes{};
+    for (std::uint32_t i = 0; i < writes.size(); ++i) {
+        writes[i] = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        writes[i].dstSet = slot.set;
+        writes[i].dstBinding = i;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType =
+            i < 2 ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    }
+    writes[0].pImageInfo = &images[0];
+    writes[1].pImageInfo = &images[1];
+    writes[2].pBufferInfo = &buffer;
+    vkUpdateDescriptorSets(context_.device(), 3, writes.data(), 0, nullptr);
+}
+
+void ComparisonPass::record_stats(VkCommandBuffer cmd, std::uint32_t index,
+                                  const CompositeInputs& in) {
+    Slot& slot = slots_.at(index);
+    const VkBuffer stats = resources_.get(slot.stats).buffer.get();
+    vkCmdFillBuffer(cmd, stats, 0, VK_WHOLE_SIZE, 0);
+    memory_barrier(cmd, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    GPUComparePush push{};
+    push.side_size = {in.width, in.height};
+    push.target_size = push.side_size;
+    push.a_linear = in.a.linear ? 1u : 0u;
+    push.b_linear = in.b.linear ? 1u : 0u;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, stats_pipeline_.get());
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 1, &slot.set, 0,
+                            nullptr);
+    vkCmdPushConstants(cmd, layout_.get(), kStages, 0, sizeof(push), &push);
+    vkCmdDispatch(cmd, (in.width + kGroup - 1) / kGroup, (in.height + kGroup - 1) / kGroup, 1);
+    memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                   VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                   VK_ACCESS_2_HOST_READ_BIT);
+    slot.pending = true;
+    slot.pixels = std::uint64_t(in.width) * in.height;
+}
+
+void ComparisonPass::record_composite(VkCommandBuffer cmd, std::uint32_t index,
+                                      const CompositeInputs& in, const RenderTarget& target,
+                                      CompositeMode mode, float divider, float heat_max) {
+    Slot& slot = slots_.at(index);
+    transition(cmd, {target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                     // After the acquire wait, or an earlier frame's readback copy.
+                     VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT |
+                         VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                     VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
+    auto color = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+    color.imageView = target.view;
+    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    color.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE; // every pixel is written
+    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    auto ri = vk_init<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
+    ri.renderArea = {{0, 0}, {target.width, target.height}};
+    ri.layerCount = 1;
+    ri.colorAttachmentCount = 1;
+    ri.pColorAttachments = &color;
+    vkCmdBeginRendering(cmd, &ri);
+    const VkViewport vp{0.0f, 0.0f, float(target.width), float(target.height), 0.0f, 1.0f};
+    const VkRect2D scissor{{0, 0}, {target.width, target.height}};
+    vkCmdSetViewport(cmd, 0, 1, &vp);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    GPUComparePush push{};
+    push.side_size = {in.width, in.height};
+    push.target_size = {target.width, target.height};
+    push.mode = static_cast<std::uint32_t>(mode);
+    push.a_linear = in.a.linear ? 1u : 0u;
+    push.b_linear = in.b.linear ? 1u : 0u;
+    push.target_srgb = encodes_srgb(target.format) ? 1u : 0u;
+    push.divider_px = divider * float(target.width);
+    push.heat_max = heat_max * 255.0f;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_for(target.format));
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1, &slot.set, 0,
+                            nullptr);
+    vkCmdPushConstants(cmd, layout_.get(), kStages, 0, sizeof(push), &push);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+    vkCmdEndRendering(cmd);
+    const bool to_transfer = target.final_layout == VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    transition(cmd,
+               {target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                target.final_layout, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                to_transfer ? VK_PIPELINE_STAGE_2_COPY_BIT : VK_PIPELINE_STAGE_2_NONE,
+                to_transfer ? VK_ACCESS_2_TRANSFER_READ_BIT : VK_ACCESS_2_NONE});
+}
+
+std::optional<ReducedStats> ComparisonPass::take_stats(std::uint32_t index) {
+    Slot& slot = slots_.at(index);
+    if (!slot.pending) return std::nullopt;
+    slot.pending = false;
+    ReducedStats out;
+    std::memcpy(&out.raw, resources_.get(slot.stats).mapped, sizeof(out.raw));
+    out.pixels = slot.pixels;
+    return out;
+}
+
+} // namespace sherpa::gpu

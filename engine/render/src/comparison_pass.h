@@ -1,0 +1,81 @@
+#pragma once
+// The comparison's compositing pass (sherpa/render/comparison.h): two side images
+// of one size in, the target out. record_stats() dispatches shaders/compare.comp,
+// which reduces the per-pixel differences into the slot's statistics buffer;
+// record_composite() draws one fullscreen triangle (compare.vert/.frag) writing side
+// A alone (a presented ray-traced frame), Split or Difference into the target.
+// Private to the render layer; a Renderer owns one (renderer_impl.h), made on first
+// use, with a descriptor set and statistics buffer per frame slot.
+#include <sherpa/gpu/frame_source.h>
+#include <sherpa/gpu/resources.h>
+#include <sherpa/render/gpu_structs.h>
+
+#include <map>
+#include <optional>
+#include <vector>
+
+namespace sherpa::gpu {
+
+// One side's image, readable by shaders.
+struct SideImage {
+    VkImageView view = VK_NULL_HANDLE;
+    VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    bool linear = true; // the view decodes sRGB (false: raw sRGB-encoded bytes)
+};
+
+struct CompositeInputs {
+    SideImage a, b;
+    std::uint32_t width = 0, height = 0; // both sides
+};
+
+// What compare.comp reduced in one frame, over `pixels` pixels.
+struct ReducedStats {
+    GPUCompareStats raw{};
+    std::uint64_t pixels = 0;
+};
+
+enum class CompositeMode : std::uint32_t { SideA = 0, Split = 1, Difference = 2 };
+
+class ComparisonPass {
+public:
+    ComparisonPass(Context& context, ResourceManager& resources, std::uint32_t slots);
+    ~ComparisonPass();
+    ComparisonPass(const ComparisonPass&) = delete;
+    ComparisonPass& operator=(const ComparisonPass&) = delete;
+
+    // Points the slot's set at the sides (the slot's previous frame has completed);
+    // call before record_stats / record_composite of this frame.
+    void bind(std::uint32_t slot, const CompositeInputs& in);
+    // Clears the slot's statistics and reduces the differences into them.
+    void record_stats(VkCommandBuffer cmd, std::uint32_t slot, const CompositeInputs& in);
+    // Writes the target (left in target.final_layout). `divider` is a fraction of the
+    // width, `heat_max` a difference in 0..1.
+    void record_composite(VkCommandBuffer cmd, std::uint32_t slot, const CompositeInputs& in,
+                          const RenderTarget& target, CompositeMode mode, float divider,
+                          float heat_max);
+    // The statistics recorded in `slot`, once its submission completed (then cleared);
+    // nullopt when that frame recorded none.
+    std::optional<ReducedStats> take_stats(std::uint32_t slot);
+
+private:
+    VkPipeline pipeline_for(VkFormat format);
+
+    Context& context_;
+    ResourceManager& resources_;
+    UniqueDescriptorSetLayout set_layout_;
+    UniqueDescriptorPool pool_;
+    UniquePipelineLayout layout_;
+    UniquePipeline stats_pipeline_;
+    UniqueShaderModule vert_, frag_;
+    std::map<VkFormat, UniquePipeline> composite_;
+    SamplerHandle sampler_;
+    struct Slot {
+        VkDescriptorSet set = VK_NULL_HANDLE;
+        BufferHandle stats; // GPUCompareStats, host-visible
+        bool pending = false;
+        std::uint64_t pixels = 0;
+    };
+    std::vector<Slot> slots_;
+};
+
+} // namespace sherpa::gpu

@@ -1,0 +1,116 @@
+// The renderer as one side of a comparison, or a presented ray-traced frame: the
+// frame recorded into an image of the renderer that the comparison pass samples
+// (comparison_pass.h), raster or ray traced, with the presenter's frame slots.
+#include "renderer_impl.h"
+
+#include <sherpa/gpu/gpu_error.h>
+#include <sherpa/gpu/vk_helpers.h>
+
+namespace sherpa::gpu {
+
+void Renderer::Impl::check_drawable(const RenderSettings& settings) const {
+    if (settings.renderer == RendererKind::RayTraced) check_rt(settings);
+}
+
+ComparisonPass& Renderer::Impl::comparison() {
+    if (!comparison_)
+        comparison_ = std::make_unique<ComparisonPass>(context, *resources, kFramesInFlight);
+    return *comparison_;
+}
+
+SideImage Renderer::Impl::record_side(VkCommandBuffer cmd, std::uint32_t index,
+                                      const RenderSettings& settings) {
+    FrameSlot& slot = *slots_.at(index);
+    if (settings.renderer == RendererKind::RayTraced && acceleration &&
+        acceleration->tlas() != VK_NULL_HANDLE)
+        return record_rt_side(cmd, slot, settings);
+    check_drawable(settings);
+    ImageDesc d;
+    d.format = kOffscreenFormat;
+    d.width = settings.width;
+    d.height = settings.height;
+    d.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+              VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    d.name = "comparison side";
+    if (!side_.valid() || resources->images().get(side_).desc.width != d.width ||
+        resources->images().get(side_).desc.height != d.height) {
+        resources->images().destroy(side_); // freed once the frames reading it are done
+        side_ = resources->images().create(d);
+    }
+    const Image& image = resources->images().get(side_);
+    if (settings.renderer == RendererKind::RayTraced) {
+        // Nothing with triangles to trace: every ray misses, the clear colour.
+        for (auto& s : slots_) wait_slot(*s);
+        begin_rt_side(cmd, slot);
+        transition(
+            cmd, {image.image.get(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                  VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
+        const glm::vec4 c = settings.clear_color;
+        const VkClearColorValue clear{{c.r, c.g, c.b, 1.0f}};
+        const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        vkCmdClearColorImage(cmd, image.image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &clear,
+                             1, &range);
+        transition(
+            cmd, {image.image.get(), VK_IMAGE_ASPECT_COLOR_BIT,
+                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                  VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
+        end_rt_side(cmd, slot);
+        return {image.view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, true};
+    }
+    slot.ray_traced = false;
+    const RenderTarget target{image.image.get(), image.view.get(),
+                              kOffscreenFormat,  settings.width,
+                              settings.height,   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    record_frame(cmd, index, target, settings);
+    return {image.view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, true};
+}
+
+SideImage Renderer::Impl::record_rt_side(VkCommandBuffer cmd, FrameSlot& slot,
+                                         const RenderSettings& settings) {
+    check_rt(settings);
+    // The ray tracer's descriptor set and image are rewritten per frame: no earlier
+    // frame of this renderer may still be in flight (a presented RT frame waits for
+    // the previous one; rays on lavapipe take far longer than that wait).
+    for (auto& s : slots_) wait_slot(*s);
+    if (!rt_views_)
+        rt_views_ = std::make_unique<RtViewPass>(context, *resources, bindless->layout());
+    begin_rt_side(cmd, slot);
+    rt_views_->record(cmd, rt_frame(settings), false);
+    end_rt_side(cmd, slot);
+    return {rt_views_->view(), VK_IMAGE_LAYOUT_GENERAL, false};
+}
+
+// A ray-traced side has two timestamps, no culling, draws or pipeline statistics.
+void Renderer::Impl::begin_rt_side(VkCommandBuffer cmd, FrameSlot& slot) {
+    slot.ray_traced = true;
+    slot.history_pushed = true; // no culling to report
+    slot.has_results = false;
+    slot.draw_calls = 0;
+    if (!context.info().timestamps) return;
+    vkResetQueryPool(context.device(), slot.timestamps.get(), 0, kTimestampCount);
+    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_NONE, slot.timestamps.get(), 0);
+}
+
+void Renderer::Impl::end_rt_side(VkCommandBuffer cmd, FrameSlot& slot) {
+    if (context.info().timestamps)
+        vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, slot.timestamps.get(), 1);
+}
+
+FrameStats Renderer::Impl::read_rt_stats(FrameSlot& slot) {
+    FrameStats s;
+    if (!slot.has_results || !context.info().timestamps) return s;
+    std::uint64_t ts[2] = {};
+    vk_check(vkGetQueryPoolResults(context.device(), slot.timestamps.get(), 0, 2, sizeof(ts), ts,
+                                   sizeof(std::uint64_t),
+                                   VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+             "vkGetQueryPoolResults(rt timestamps)");
+    s.gpu_ms = double(ts[1] - ts[0]) * context.info().timestamp_period_ns * 1e-6;
+    s.passes.push_back({"rays", s.gpu_ms});
+    return s;
+}
+
+} // namespace sherpa::gpu

@@ -86,7 +86,8 @@ void CompareControls::setRayTracing(bool available) {
     // Without rays, a comparison starts against the normal view.
     if (!available && state_.side == SideB::RayTraced) {
         state_.side = SideB::OtherView;
-        if (const auto normal = ViewCatalog::viewId(QStringLiteral("normal"))) state_.view = *normal;
+        if (const auto normal = ViewCatalog::viewId(QStringLiteral("normal")))
+            state_.view = *normal;
     }
     sync();
 }

@@ -80,8 +80,8 @@ void DifferenceLegend::showNumbers() {
         numbers_->setText(tr("No frame compared yet."));
         return;
     }
-    const QString psnr = std::isinf(last_.psnr_db) ? tr("∞ (identical)")
-                                                   : tr("%1 dB").arg(last_.psnr_db, 0, 'f', 2);
+    const QString psnr =
+        std::isinf(last_.psnr_db) ? tr("∞ (identical)") : tr("%1 dB").arg(last_.psnr_db, 0, 'f', 2);
     numbers_->setText(tr("mean %1\nmax %2\nPSNR %3\n%4% of %5 pixels over %6")
                           .arg(eighths(last_.mean), eighths(last_.max), psnr)
                           .arg(last_.over_threshold_percent, 0, 'f', 2)

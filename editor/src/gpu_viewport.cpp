@@ -18,7 +18,6 @@
 
 namespace sherpa::editor {
 
-
 GpuViewport::GpuViewport(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 
 GpuViewport::~GpuViewport() {

@@ -82,8 +82,8 @@ bool GpuViewport::presentComparison(const ViewportFrame& frame, const gpu::Rende
         impl.b.ray_tracing = rays;
     }
     gpu::ComparisonSettings compare;
-    compare.mode = c.mode == ViewportMode::Split ? gpu::CompareMode::Split
-                                                 : gpu::CompareMode::Difference;
+    compare.mode =
+        c.mode == ViewportMode::Split ? gpu::CompareMode::Split : gpu::CompareMode::Difference;
     compare.divider = c.divider;
     compare.threshold = c.threshold;
     compare.heat_max = c.heat_max;

@@ -35,7 +35,7 @@ struct FrameReport {
     bool cull_passes = false;            // the renderer's culling passes are known
     std::vector<CullStats> passes;
     bool cached_shadows = false;
-    QString refused;              // not drawn: what the ray tracer refused (GpuViewport::lastRefusal)
+    QString refused; // not drawn: what the ray tracer refused (GpuViewport::lastRefusal)
     DifferenceNumbers difference; // comparison frames: the latest completed difference
 };
 

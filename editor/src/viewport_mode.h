@@ -27,7 +27,9 @@ struct ViewportComparison {
     // difference of heat_max and above is drawn at full heat.
     float threshold = 2.0f / 255.0f;
     float heat_max = 16.0f / 255.0f;
-    bool comparing() const { return mode == ViewportMode::Split || mode == ViewportMode::Difference; }
+    bool comparing() const {
+        return mode == ViewportMode::Split || mode == ViewportMode::Difference;
+    }
     // The frame goes through the ray tracer on some side (no overlays, no highlight).
     bool rays() const {
         return mode == ViewportMode::RayTraced || (comparing() && side == SideB::RayTraced);

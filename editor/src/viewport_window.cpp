@@ -1,13 +1,13 @@
 #include "viewport_window.h"
 
 #include <QExposeEvent>
-#include <algorithm>
-#include <cmath>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPlatformSurfaceEvent>
 #include <QVulkanInstance>
 #include <QWheelEvent>
+#include <algorithm>
+#include <cmath>
 
 namespace sherpa::editor {
 

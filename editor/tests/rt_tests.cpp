@@ -18,11 +18,11 @@
 #include "compare_controls.h"
 #include "difference_legend.h"
 #include "log_dock.h"
-#include "view_catalog.h"
-#include "viewport_window.h"
 #include "main_window.h"
 #include "scene_tree_dock.h"
 #include "test_assets.h"
+#include "view_catalog.h"
+#include "viewport_window.h"
 #include "window_test_support.h"
 
 using namespace sherpa;
@@ -173,8 +173,8 @@ void RtTests::rayTracedModeDrawsRtFrames() {
     QVERIFY(w.setDebugView(QStringLiteral("normal"), false));
     const QImage raster = viewportShot(w);
     w.compareControls().setMode(ViewportMode::RayTraced);
-    QCOMPARE(w.lastFrame().compare.mode, ViewportMode::RayTraced);
     const QImage rays = viewportShot(w);
+    QCOMPARE(w.lastFrame().compare.mode, ViewportMode::RayTraced);
     QCOMPARE(w.compareControls().state().mode, ViewportMode::RayTraced); // not refused
     QVERIFY(w.lastReport().refused.isEmpty());
     // The ray tracer's pass drew it: its timings name it.
@@ -243,6 +243,7 @@ void RtTests::splitShowsALeftAndBRight() {
 
 void RtTests::draggingMovesTheDivider() {
     MainWindow& w = *window_;
+    QVERIFY(w.setDebugView(QStringLiteral("normal"), false));
     CompareControls& c = w.compareControls();
     c.setSide(SideB::OtherView, view("uv0"));
     c.setMode(ViewportMode::Split);
@@ -267,7 +268,6 @@ void RtTests::draggingMovesTheDivider() {
     QCOMPARE(vp->camera().spec().eye, camera.eye);
     // The frame follows: B (uv0) now starts at 80% of the width.
     const QImage split = viewportShot(w);
-    QVERIFY(w.setDebugView(QStringLiteral("normal"), false));
     c.setMode(ViewportMode::Raster);
     const QImage a = viewportShot(w);
     const int at = split.width() * 4 / 5;
@@ -296,10 +296,15 @@ void RtTests::differenceOfASceneWithItselfIsZero() {
     QVERIFY(w.compareSession() != w.context().sharedSession()); // a second scene
     DifferenceLegend& legend = *w.differenceLegend();
     QVERIFY(legend.isVisible());
-    // The numbers are those of the latest completed frame: a few frames later.
+    // The numbers are those of the latest completed frame: a few frames later (and
+    // at the viewport's size with the legend beside it).
+    const auto current = [&w] {
+        const DifferenceNumbers& d = w.lastReport().difference;
+        return d.valid && d.pixels == std::uint64_t(w.lastFrame().width) * w.lastFrame().height;
+    };
     QElapsedTimer t;
     t.start();
-    while (!w.lastReport().difference.valid && t.elapsed() < 30000) {
+    while (!current() && t.elapsed() < 30000) {
         w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
         QCoreApplication::processEvents();
     }
@@ -311,8 +316,9 @@ void RtTests::differenceOfASceneWithItselfIsZero() {
     QCOMPARE(n.over_threshold_percent, 0.0);
     QVERIFY(std::isinf(n.psnr_db));
     const QString text = legend.numbersText();
-    QVERIFY2(text.contains(QStringLiteral("mean 0.00")) && text.contains(QStringLiteral("max 0.00")) &&
-                 text.contains(QStringLiteral("∞")) && text.contains(QStringLiteral("0.00%")),
+    QVERIFY2(text.contains(QStringLiteral("mean 0.00")) &&
+                 text.contains(QStringLiteral("max 0.00")) && text.contains(QStringLiteral("∞")) &&
+                 text.contains(QStringLiteral("0.00%")),
              qPrintable(text));
     // The colour bar is the engine's heat scale: full heat on top, none at the bottom.
     const QImage bar = legend.colourBar();

@@ -1,5 +1,7 @@
 #include "command_line.h"
 
+#include "compare_controls.h"
+
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDockWidget>
@@ -28,6 +30,21 @@ const QStringList kDockNames = {
     QStringLiteral("scene-tree"), QStringLiteral("mesh"),    QStringLiteral("material"),
     QStringLiteral("textures"),   QStringLiteral("culling"), QStringLiteral("log"),
     QStringLiteral("timeline"),   QStringLiteral("lab"),     QStringLiteral("acceleration")};
+
+// By ViewportMode.
+const QStringList kModeNames = {QStringLiteral("raster"), QStringLiteral("rt"),
+                                QStringLiteral("split"), QStringLiteral("difference")};
+
+// --mode and --compare-with, once the scene is loaded.
+void apply_viewport_mode(MainWindow& window, const CommandLine& cl) {
+    CompareControls& compare = window.compareControls();
+    const QString& side = cl.compare_with;
+    if (side.startsWith(QLatin1String("view:")))
+        compare.setSide(SideB::OtherView, *ViewCatalog::viewId(side.mid(5)));
+    else if (!side.isEmpty() && side != QLatin1String("rt"))
+        window.compareWithFile(side); // loaded on the thread pool, then side B
+    if (!cl.mode.isEmpty()) compare.setMode(static_cast<ViewportMode>(kModeNames.indexOf(cl.mode)));
+}
 
 QDockWidget* dock_named(MainWindow& w, const QString& name) {
     QDockWidget* docks[] = {w.sceneTreeDock(), w.meshDock(),    w.materialDock(),
@@ -119,8 +136,17 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
             "Ray tracing where the device has it: on (default; acceleration structures "
             "built on load, the ray-traced viewport modes) or off (nothing RT is made)."),
         QStringLiteral("on|off"), QStringLiteral("on"));
-    p.addOptions(
-        {view, shot, quit, language, select, timing, dock, gpu_culling, overlay, time, rt});
+    const QCommandLineOption mode(
+        QStringLiteral("mode"),
+        QStringLiteral("Viewport mode once loaded: raster, rt, split or difference."),
+        QStringLiteral("mode"));
+    const QCommandLineOption compare_with(
+        QStringLiteral("compare-with"),
+        QStringLiteral("Side B of split/difference: rt (the ray tracer), view:NAME (another "
+                       "debug view) or a glTF file."),
+        QStringLiteral("side"));
+    p.addOptions({view, shot, quit, language, select, timing, dock, gpu_culling, overlay, time, rt,
+                  mode, compare_with});
     p.process(arguments);
     const QStringList positional = p.positionalArguments();
     if (positional.size() > 1) {
@@ -142,6 +168,18 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
         return false;
     }
     out.ray_tracing = p.value(rt) == QLatin1String("on");
+    out.mode = p.value(mode);
+    if (!out.mode.isEmpty() && !kModeNames.contains(out.mode)) {
+        error = QStringLiteral("unknown mode '%1' (one of: %2)")
+                    .arg(out.mode, kModeNames.join(QStringLiteral(", ")));
+        return false;
+    }
+    out.compare_with = p.value(compare_with);
+    if (out.compare_with.startsWith(QLatin1String("view:")) &&
+        !ViewCatalog::isView(out.compare_with.mid(5))) {
+        error = QStringLiteral("--compare-with: unknown view '%1'").arg(out.compare_with.mid(5));
+        return false;
+    }
     if (p.isSet(time)) {
         bool ok = false;
         out.time = p.value(time).toDouble(&ok);
@@ -232,6 +270,10 @@ void run_command_line(MainWindow& window, const CommandLine& cl, qint64 started_
             if (!window.selectNodeNamed(cl.select))
                 std::fprintf(stderr, "sherpa: no node '%s'\n", qPrintable(cl.select));
         });
+    if (!cl.mode.isEmpty() || !cl.compare_with.isEmpty())
+        QObject::connect(
+            &window, &MainWindow::sceneLoaded, &window,
+            [&window, cl] { apply_viewport_mode(window, cl); }, Qt::SingleShotConnection);
     if (cl.time >= 0.0)
         QObject::connect(&window, &MainWindow::sceneLoaded, &window,
                          [&window, t = cl.time] { window.timelineDock()->scrubTo(t); });

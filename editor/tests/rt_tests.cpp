@@ -115,6 +115,16 @@ void RtTests::commandLineTakesRt() {
     QVERIFY(!parse_command_line(
         {QStringLiteral("sherpa"), QStringLiteral("--rt"), QStringLiteral("maybe")}, cl, error));
     QVERIFY(error.contains(QStringLiteral("--rt")));
+    QVERIFY(parse_command_line({QStringLiteral("sherpa"), QStringLiteral("--mode"),
+                                QStringLiteral("difference"), QStringLiteral("--compare-with"),
+                                QStringLiteral("view:uv0")},
+                               cl, error));
+    QCOMPARE(cl.mode, QStringLiteral("difference"));
+    QVERIFY(!parse_command_line(
+        {QStringLiteral("sherpa"), QStringLiteral("--mode"), QStringLiteral("blend")}, cl, error));
+    QVERIFY(!parse_command_line(
+        {QStringLiteral("sherpa"), QStringLiteral("--compare-with"), QStringLiteral("view:nope")},
+        cl, error));
 }
 
 void RtTests::accelerationDockListsBlasAndSelectsMesh() {

@@ -30,7 +30,10 @@ constexpr Subcommand kSubcommands[] = {
      "render SCENE -o OUT.png [--width W --height H] [--view NAME] [--overlay NAME ...]\n"
      "         [--camera auto|gltf:N|eye=x,y,z:target=x,y,z] [--frames N] [--report FILE.json]\n"
      "         [--cache-dir DIR] [--no-cache] [--quality N] [--no-bc]\n"
-     "                                     render offscreen (Vulkan) to a PNG"},
+     "         [--compare split|difference [--compare-with FILE] [--compare-renderer raster|rt]\n"
+     "          [--compare-view NAME] [--divider F] [--threshold T] [--json] ...]\n"
+     "                                     render offscreen (Vulkan) to a PNG; with --compare\n"
+     "                                     side A against side B, split or difference"},
     {"rt", sherpa::cli::run_rt,
      "rt SCENE [--json] [--validation] [--scratch-budget BYTES] [--no-compact] [--rt on|off]\n"
      "                                     acceleration structures: BLAS/TLAS statistics"},

@@ -3,7 +3,9 @@
 //   [--frames N] [--report FILE.json] [--validation] [--no-shadows] [--prepass|--no-prepass]
 //   [--glyph-length L] [--floor] [--cache-dir DIR] [--cache-cap-mb N] [--quality N]
 //   [--no-cache] [--no-bc] [--animation N --time T | --pose bind]
+//   [--compare split|difference ... (compare_options.h)]
 #include "cli_common.h"
+#include "compare_options.h"
 #include "pose_options.h"
 #include "render_report.h"
 #include "texture_cli.h"
@@ -36,13 +38,16 @@ constexpr const char* kUsage =
     "         [--cull-check] [--freeze-cull eye=x,y,z:target=x,y,z[:...]] [--rt on|off]\n"
     "         [--renderer raster|rt] [--texture-lod N] [--animation N --time T | --pose bind]\n"
     "         ";
+constexpr const char* kCompareIndent = "\n         ";
 
 std::string joined(const std::vector<std::string_view>& names);
 
 int usage_error(const std::string& message) {
     // The names come from the engine's view/overlay tables (sherpa/gpu/debug_views.h).
-    std::fprintf(stderr, "error: %s\n%s%s\n%s  --view NAME        %s\n  --overlay NAME     %s\n",
-                 message.c_str(), kUsage, kTextureOptionsSynopsis, kTextureOptionsHelp,
+    std::fprintf(stderr,
+                 "error: %s\n%s%s%s%s\n%s%s  --view NAME        %s\n  --overlay NAME     %s\n",
+                 message.c_str(), kUsage, kTextureOptionsSynopsis, kCompareIndent,
+                 kCompareOptionsSynopsis, kTextureOptionsHelp, kCompareOptionsHelp,
                  joined(gpu::debug_view_names()).c_str(), joined(gpu::overlay_names()).c_str());
     return kExitUsage;
 }
@@ -74,6 +79,7 @@ int run_render(Args args) {
     bool ray_tracing = true;
     TextureCliOptions texture_options;
     PoseOptions pose_options;
+    CompareCliOptions compare_options;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string_view a = args[i];
         std::string option_error;
@@ -83,6 +89,9 @@ int run_render(Args args) {
         const OptionMatch pm = parse_pose_option(args, i, pose_options, option_error);
         if (pm == OptionMatch::Bad) return usage_error(option_error);
         if (pm == OptionMatch::Taken) continue;
+        const OptionMatch cm = parse_compare_option(args, i, compare_options, option_error);
+        if (cm == OptionMatch::Bad) return usage_error(option_error);
+        if (cm == OptionMatch::Taken) continue;
         auto value = [&]() -> std::optional<std::string_view> {
             if (i + 1 >= args.size()) return std::nullopt;
             return args[++i];
@@ -192,6 +201,8 @@ int run_render(Args args) {
     }
     if (spec.empty()) return usage_error("no SCENE given");
     if (out_path.empty()) return usage_error("no output given (-o OUT.png)");
+    if (!compare_options.mode && (compare_options.side_b_changed() || compare_options.json))
+        return usage_error("--compare-* and --json need --compare split|difference");
     const bool ray_traced = settings.renderer == gpu::RendererKind::RayTraced;
     if (ray_traced && !ray_tracing) return usage_error("--renderer rt needs --rt on");
     if (ray_traced && !gpu::ray_traced_view(settings.view))
@@ -213,6 +224,10 @@ int run_render(Args args) {
         if (!error.empty()) return usage_error(error);
         run.settings.pose = settings.pose;
     }
+    if (compare_options.mode)
+        return run_comparison({loaded.scene.get(), std::string(spec), settings, texture_options,
+                               validation, ray_tracing, std::string(out_path)},
+                              compare_options);
     try {
         gpu::ContextOptions options;
         options.validation = validation;

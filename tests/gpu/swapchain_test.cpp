@@ -13,6 +13,7 @@
 
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/presenter.h>
+#include <sherpa/render/comparison.h>
 #include <sherpa/render/presented_frame.h>
 #include <sherpa/render/renderer.h>
 #include <sherpa/scene/scene_loader.h>
@@ -85,6 +86,15 @@ VkSurfaceKHR make_surface(const gpu::Context& context, const XcbWindow& window) 
     return surface;
 }
 
+// A validated context that presents to xcb windows.
+gpu::ContextOptions presenting_options() {
+    gpu::ContextOptions options;
+    options.validation = true;
+    options.presentation = true;
+    options.instance_extensions = {VK_KHR_XCB_SURFACE_EXTENSION_NAME};
+    return options;
+}
+
 class SwapchainTest : public ::testing::Test {
 protected:
     void SetUp() override {
@@ -95,11 +105,7 @@ protected:
 TEST_F(SwapchainTest, PresentsFramesAndSurvivesResizeWithoutValidationMessages) {
     XcbWindow window(160, 120);
     ASSERT_TRUE(window.ok());
-    gpu::ContextOptions options;
-    options.validation = true;
-    options.presentation = true;
-    options.instance_extensions = {VK_KHR_XCB_SURFACE_EXTENSION_NAME};
-    gpu::Context context(options);
+    gpu::Context context(presenting_options());
 
     VkSurfaceKHR surface = make_surface(context, window);
     {
@@ -128,6 +134,59 @@ TEST_F(SwapchainTest, PresentsFramesAndSurvivesResizeWithoutValidationMessages) 
         EXPECT_EQ(presenter.extent().height, 100u);
         for (int i = 0; i < 4; ++i) presenter.present_frame(frame);
         EXPECT_GE(presenter.frames_presented(), 8u);
+    }
+    vkDestroySurfaceKHR(context.instance(), surface, nullptr);
+    for (const auto& m : context.validation().messages())
+        ADD_FAILURE() << m.id_name << ": " << m.text;
+}
+
+// The viewport's raster / RT / split / difference switch through a real swapchain:
+// a ray-traced frame (full and half resolution), then comparison frames of two
+// renderers on the context (raster against rays), the second renderer's timeline
+// signalled by the presenter's submission.
+TEST_F(SwapchainTest, PresentsRayTracedAndComparisonFrames) {
+    XcbWindow window(96, 72);
+    ASSERT_TRUE(window.ok());
+    gpu::Context context(presenting_options());
+    if (!context.info().ray_tracing_enabled) GTEST_SKIP() << "device without ray tracing";
+    VkSurfaceKHR surface = make_surface(context, window);
+    {
+        LoadResult scene = load_scene("builtin:default");
+        ASSERT_TRUE(scene) << scene.error;
+        gpu::Renderer raster(context);
+        gpu::RendererOptions rt_options;
+        rt_options.ray_tracing = true;
+        gpu::Renderer rays(context, rt_options);
+        raster.load(*scene.scene);
+        rays.load(*scene.scene);
+        gpu::Presenter presenter(context, rays.resources(), surface, window.width, window.height);
+        gpu::RenderSettings settings;
+        settings.view = gpu::DebugView::Normal;
+        gpu::RenderSettings rt = settings;
+        rt.renderer = gpu::RendererKind::RayTraced;
+        for (float scale : {1.0f, 0.5f}) {
+            gpu::PresentedFrame frame(rays, rt, scale);
+            for (int i = 0; i < 3; ++i) presenter.present_frame(frame);
+        }
+        context.wait_idle();
+        EXPECT_GT(window.distinct_pixels(), 2u);
+        for (gpu::CompareMode mode : {gpu::CompareMode::Split, gpu::CompareMode::Difference}) {
+            gpu::ComparisonSettings compare;
+            compare.mode = mode;
+            for (int i = 0; i < 4; ++i) {
+                // Made per frame, as the editor does; a is the presenter's renderer.
+                gpu::ComparisonFrame frame(rays, rt, raster, settings, compare);
+                presenter.present_frame(frame);
+                if (i == 3) {
+                    EXPECT_TRUE(frame.completed_comparison().valid);
+                    EXPECT_EQ(frame.completed_comparison().pixels, 96u * 72u);
+                    // Normals agree inside the model, not along its silhouettes.
+                    EXPECT_LT(frame.completed_comparison().mean, 0.05);
+                }
+            }
+        }
+        context.wait_idle();
+        EXPECT_GE(presenter.frames_presented(), 14u);
     }
     vkDestroySurfaceKHR(context.instance(), surface, nullptr);
     for (const auto& m : context.validation().messages())

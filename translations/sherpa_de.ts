@@ -384,6 +384,10 @@
         <source>What side B of the comparison draws</source>
         <translation>Was Seite B des Vergleichs zeichnet</translation>
     </message>
+    <message>
+        <source>This File, Source Textures (no BC7/BC5)</source>
+        <translation>Diese Datei, Quelltexturen (ohne BC7/BC5)</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::CullingDock</name>
@@ -1123,6 +1127,10 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>The ray tracer cannot draw this frame: %1. Back to Raster.</source>
         <translation>Der Raytracer kann dieses Bild nicht zeichnen: %1. Zurück zur Rasterisierung.</translation>
+    </message>
+    <message>
+        <source>%1, source textures</source>
+        <translation>%1, Quelltexturen</translation>
     </message>
 </context>
 <context>

@@ -384,6 +384,10 @@
         <source>What side B of the comparison draws</source>
         <translation>What side B of the comparison draws</translation>
     </message>
+    <message>
+        <source>This File, Source Textures (no BC7/BC5)</source>
+        <translation>This File, Source Textures (no BC7/BC5)</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::CullingDock</name>
@@ -1123,6 +1127,10 @@ The current scene is kept.</translation>
     <message>
         <source>The ray tracer cannot draw this frame: %1. Back to Raster.</source>
         <translation>The ray tracer cannot draw this frame: %1. Back to Raster.</translation>
+    </message>
+    <message>
+        <source>%1, source textures</source>
+        <translation>%1, source textures</translation>
     </message>
 </context>
 <context>

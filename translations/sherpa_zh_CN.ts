@@ -384,6 +384,10 @@
         <source>What side B of the comparison draws</source>
         <translation>比较中 B 侧绘制的内容</translation>
     </message>
+    <message>
+        <source>This File, Source Textures (no BC7/BC5)</source>
+        <translation>此文件，源纹理（无 BC7/BC5）</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::CullingDock</name>
@@ -1123,6 +1127,10 @@ The current scene is kept.</source>
     <message>
         <source>The ray tracer cannot draw this frame: %1. Back to Raster.</source>
         <translation>光线追踪器无法绘制此画面：%1。已切回光栅化。</translation>
+    </message>
+    <message>
+        <source>%1, source textures</source>
+        <translation>%1，源纹理</translation>
     </message>
 </context>
 <context>

@@ -45,6 +45,8 @@ CompareControls::CompareControls(QWidget* parent) : QObject(parent) {
         Q_EMIT otherFileRequested();
     });
     side_menu_->addAction(side_file_);
+    side_source_ = side_menu_->addAction(QString());
+    connect(side_source_, &QAction::triggered, this, &CompareControls::sourceTexturesRequested);
     sync();
 }
 
@@ -116,6 +118,7 @@ void CompareControls::retranslate() {
     side_menu_->setTitle(tr("Compare &With (side B)"));
     side_views_->setTitle(tr("Another Debug View"));
     side_rays_->setText(tr("The Ray Tracer"));
+    side_source_->setText(tr("This File, Source Textures (no BC7/BC5)"));
     side_file_->setText(other_file_.isEmpty() ? tr("Another File…")
                                               : tr("Another File… (%1)").arg(other_file_));
     const std::vector<ViewEntry> views = ViewCatalog::views();

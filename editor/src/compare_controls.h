@@ -37,8 +37,10 @@ public:
 
 Q_SIGNALS:
     void changed();
-    // The user chose "Other file…": the window asks for one and loads it.
+    // The user chose "Another File…": the window asks for one and loads it.
     void otherFileRequested();
+    // The user chose this file with its source textures (no BC7/BC5): the window loads it.
+    void sourceTexturesRequested();
 
 private:
     void sync(); // checks, enabled states and button texts from state_
@@ -53,6 +55,7 @@ private:
     std::vector<QAction*> mode_actions_; // by ViewportMode
     QAction* side_rays_;
     QAction* side_file_;
+    QAction* side_source_;
     std::vector<QAction*> view_actions_; // ViewCatalog::views() order
     QToolButton* mode_button_ = nullptr;
     QToolButton* side_button_ = nullptr;

@@ -107,8 +107,10 @@ public:
     // The viewport's mode switch and side B of a comparison (main_window_compare.cpp).
     CompareControls& compareControls() const { return *compare_; }
     DifferenceLegend* differenceLegend() const { return legend_; }
-    // Loads `spec` as side B of the comparison (File dialog of "Another File…").
-    void compareWithFile(const QString& spec);
+    // Loads `spec` as side B of the comparison (File dialog of "Another File…");
+    // `source_textures`: its textures uploaded as decoded from their images, not
+    // through BC7/BC5 (the compression's error against the source).
+    void compareWithFile(const QString& spec, bool source_textures = false);
     // The other file's session while comparing with it (null otherwise).
     const SharedSession& compareSession() const { return compare_session_; }
 
@@ -197,6 +199,7 @@ private:
     DifferenceLegend* legend_ = nullptr;
     SceneLoadJob compare_loader_;   // side B's file
     SharedSession compare_session_; // loaded by it, kept while comparing with it
+    QString compare_label_;         // what side B shows (the file, its textures)
     AccelerationDock* acceleration_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;

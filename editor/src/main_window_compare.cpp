@@ -24,11 +24,14 @@ void MainWindow::connectCompare() {
             tr("glTF scenes (*.gltf *.glb);;All files (*)"));
         if (!path.isEmpty()) compareWithFile(path);
     });
+    connect(compare_, &CompareControls::sourceTexturesRequested, this, [this] {
+        if (context_.scene()) compareWithFile(context_.sceneSpec(), true);
+    });
     connect(viewport_, &ViewportWindow::dividerMoved, compare_, &CompareControls::setDivider);
     connect(&compare_loader_, &SceneLoadJob::loaded, this, [this](SharedSession session) {
         log_->append(LogDock::Level::Info, tr("Side B: %1 loaded.").arg(session->spec));
         compare_session_ = std::move(session);
-        compare_->setOtherFile(QFileInfo(compare_session_->spec).fileName());
+        compare_->setOtherFile(compare_label_);
         compare_->setSide(SideB::OtherFile);
         if (!compare_->state().comparing()) compare_->setMode(ViewportMode::Split);
     });
@@ -39,9 +42,15 @@ void MainWindow::connectCompare() {
             });
 }
 
-void MainWindow::compareWithFile(const QString& spec) {
+void MainWindow::compareWithFile(const QString& spec, bool source_textures) {
     log_->append(LogDock::Level::Info, tr("Side B: loading %1…").arg(spec));
-    compare_loader_.start(spec, texturePlan());
+    TexturePlan plan = texturePlan();
+    compare_label_ = QFileInfo(spec).fileName();
+    if (source_textures) {
+        plan.bc_textures = false; // RGBA8 as decoded from the images
+        compare_label_ = tr("%1, source textures").arg(compare_label_);
+    }
+    compare_loader_.start(spec, plan);
 }
 
 void MainWindow::onCompareChanged() {

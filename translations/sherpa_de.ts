@@ -388,6 +388,22 @@
         <source>This File, Source Textures (no BC7/BC5)</source>
         <translation>Diese Datei, Quelltexturen (ohne BC7/BC5)</translation>
     </message>
+    <message>
+        <source>The rasterizer: every view, overlays and the selection</source>
+        <translation>Der Rasterisierer: jede Ansicht, Overlays und die Auswahl</translation>
+    </message>
+    <message>
+        <source>Primary rays through the acceleration structures: the surface-data views</source>
+        <translation>Primärstrahlen durch die Beschleunigungsstrukturen: die Oberflächendaten-Ansichten</translation>
+    </message>
+    <message>
+        <source>Side A left, side B right, one camera: drag the divider line (or Ctrl+drag anywhere) to move it</source>
+        <translation>Seite A links, Seite B rechts, eine Kamera: die Trennlinie ziehen (oder Strg+Ziehen an beliebiger Stelle), um sie zu verschieben</translation>
+    </message>
+    <message>
+        <source>Heat map of |A − B| with its legend: mean, max, PSNR, % of pixels over the threshold</source>
+        <translation>Heatmap von |A − B| mit Legende: Mittel, Maximum, PSNR, % der Pixel über dem Schwellwert</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::CullingDock</name>

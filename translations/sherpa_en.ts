@@ -388,6 +388,22 @@
         <source>This File, Source Textures (no BC7/BC5)</source>
         <translation>This File, Source Textures (no BC7/BC5)</translation>
     </message>
+    <message>
+        <source>The rasterizer: every view, overlays and the selection</source>
+        <translation>The rasterizer: every view, overlays and the selection</translation>
+    </message>
+    <message>
+        <source>Primary rays through the acceleration structures: the surface-data views</source>
+        <translation>Primary rays through the acceleration structures: the surface-data views</translation>
+    </message>
+    <message>
+        <source>Side A left, side B right, one camera: drag the divider line (or Ctrl+drag anywhere) to move it</source>
+        <translation>Side A left, side B right, one camera: drag the divider line (or Ctrl+drag anywhere) to move it</translation>
+    </message>
+    <message>
+        <source>Heat map of |A − B| with its legend: mean, max, PSNR, % of pixels over the threshold</source>
+        <translation>Heat map of |A − B| with its legend: mean, max, PSNR, % of pixels over the threshold</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::CullingDock</name>

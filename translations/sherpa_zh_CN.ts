@@ -388,6 +388,22 @@
         <source>This File, Source Textures (no BC7/BC5)</source>
         <translation>此文件，源纹理（无 BC7/BC5）</translation>
     </message>
+    <message>
+        <source>The rasterizer: every view, overlays and the selection</source>
+        <translation>光栅化器：所有视图、叠加层和选择</translation>
+    </message>
+    <message>
+        <source>Primary rays through the acceleration structures: the surface-data views</source>
+        <translation>穿过加速结构的主光线：表面数据视图</translation>
+    </message>
+    <message>
+        <source>Side A left, side B right, one camera: drag the divider line (or Ctrl+drag anywhere) to move it</source>
+        <translation>A 侧在左，B 侧在右，同一相机：拖动分隔线（或在任意位置 Ctrl+拖动）来移动它</translation>
+    </message>
+    <message>
+        <source>Heat map of |A − B| with its legend: mean, max, PSNR, % of pixels over the threshold</source>
+        <translation>|A − B| 的热图及图例：平均值、最大值、PSNR、超过阈值的像素百分比</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::CullingDock</name>

@@ -114,6 +114,17 @@ void CompareControls::retranslate() {
     const QString modes[] = {tr("Raster"), tr("Ray traced"), tr("Split (A | B)"),
                              tr("Difference (heat map)")};
     for (std::size_t i = 0; i < mode_actions_.size(); ++i) mode_actions_[i]->setText(modes[i]);
+    const QString tips[] = {
+        tr("The rasterizer: every view, overlays and the selection"),
+        tr("Primary rays through the acceleration structures: the surface-data views"),
+        tr("Side A left, side B right, one camera: drag the divider line (or Ctrl+drag "
+           "anywhere) to move it"),
+        tr("Heat map of |A − B| with its legend: mean, max, PSNR, % of pixels over the "
+           "threshold")};
+    for (std::size_t i = 0; i < mode_actions_.size(); ++i) {
+        mode_actions_[i]->setStatusTip(tips[i]);
+        mode_actions_[i]->setToolTip(tips[i]);
+    }
     menu_->setTitle(tr("Viewport &Mode"));
     side_menu_->setTitle(tr("Compare &With (side B)"));
     side_views_->setTitle(tr("Another Debug View"));

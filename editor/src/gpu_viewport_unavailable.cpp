@@ -37,6 +37,12 @@ void GpuViewport::setSession(SharedSession) {}
 void GpuViewport::useStreamsFor(const ViewportFrame&) {}
 void GpuViewport::upload() {}
 void GpuViewport::finish() {}
+QString GpuViewport::lastRefusal() const {
+    return {};
+}
+DifferenceNumbers GpuViewport::lastDifference() const {
+    return {};
+}
 bool GpuViewport::rayTracing() const {
     return false;
 }

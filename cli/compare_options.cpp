@@ -6,6 +6,7 @@
 #include <sherpa/scene/scene_loader.h>
 #include <sherpa/texture/image.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +20,11 @@ namespace {
 bool parse_float(std::string_view s, float& out) {
     const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
     return ec == std::errc{} && end == s.data() + s.size() && std::isfinite(out);
+}
+
+double median(std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+    return v[v.size() / 2];
 }
 
 nlohmann::json side_json(const std::string& file, const gpu::RenderSettings& s) {
@@ -152,7 +158,15 @@ int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
         };
         a.load(*run.scene, policy(sa));
         b.load(*scene_b, policy(sb));
-        stats = gpu::render_comparison(a, sa, b, sb, o.compare, &rgba);
+        std::vector<double> reduce, composite;
+        for (std::uint32_t f = 0; f < run.frames; ++f) {
+            stats = gpu::render_comparison(a, sa, b, sb, o.compare,
+                                           f + 1 == run.frames ? &rgba : nullptr);
+            reduce.push_back(stats.reduce_ms);
+            composite.push_back(stats.composite_ms);
+        }
+        stats.reduce_ms = median(reduce);
+        stats.composite_ms = median(composite);
         if (run.validation && context.validation().count() > 0) {
             std::fprintf(stderr, "error: %zu Vulkan validation message(s)\n",
                          context.validation().count());
@@ -170,20 +184,22 @@ int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
     // In 8-bit steps (0..255), as `compare --image` reports them.
     const double threshold = std::round(double(o.compare.threshold) * 255.0 * 1000.0) / 1000.0;
     if (o.json) {
-        nlohmann::json j{{"mode", gpu::to_string(*o.mode)},
-                         {"output", run.output},
-                         {"width", sa.width},
-                         {"height", sa.height},
-                         {"a", side_json(run.scene_name, sa)},
-                         {"b", side_json(file_b, sb)},
-                         {"pixels", stats.pixels},
-                         {"mean", stats.mean * 255.0},
-                         {"max", stats.max * 255.0},
-                         {"psnr_db", std::isfinite(stats.psnr_db) ? nlohmann::json(stats.psnr_db)
-                                                                  : nlohmann::json(nullptr)},
-                         {"threshold", threshold},
-                         {"over_threshold_percent", stats.over_threshold_percent},
-                         {"percentile_999", stats.percentile_999() * 255.0}};
+        nlohmann::json j{
+            {"mode", gpu::to_string(*o.mode)},
+            {"output", run.output},
+            {"width", sa.width},
+            {"height", sa.height},
+            {"a", side_json(run.scene_name, sa)},
+            {"b", side_json(file_b, sb)},
+            {"pixels", stats.pixels},
+            {"mean", stats.mean * 255.0},
+            {"max", stats.max * 255.0},
+            {"psnr_db", std::isfinite(stats.psnr_db) ? nlohmann::json(stats.psnr_db)
+                                                     : nlohmann::json(nullptr)},
+            {"threshold", threshold},
+            {"over_threshold_percent", stats.over_threshold_percent},
+            {"percentile_999", stats.percentile_999() * 255.0},
+            {"pass_gpu_ms", {{"reduce", stats.reduce_ms}, {"composite", stats.composite_ms}}}};
         std::cout << j.dump(2) << "\n";
     } else {
         std::printf("%s: A %s vs B %s\n", std::string(gpu::to_string(*o.mode)).c_str(),
@@ -193,6 +209,9 @@ int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
                     stats.mean * 255.0, stats.max * 255.0, stats.psnr_db,
                     stats.over_threshold_percent, static_cast<unsigned long long>(stats.pixels),
                     threshold);
+        std::printf("comparison pass GPU time (median of %u): %.3f ms statistics, %.3f ms "
+                    "composite\n",
+                    run.frames, stats.reduce_ms, stats.composite_ms);
     }
     return kExitOk;
 }

@@ -65,7 +65,8 @@ struct CompareRun {
     gpu::RenderSettings settings; // side A's
     TextureCliOptions textures;
     bool validation = false, ray_tracing = true;
-    std::string output; // the PNG
+    std::string output;       // the PNG
+    std::uint32_t frames = 1; // --frames: comparisons drawn (pass times: their median)
 };
 
 // Renders, writes the PNG and prints the statistics; returns the exit code.

@@ -226,7 +226,7 @@ int run_render(Args args) {
     }
     if (compare_options.mode)
         return run_comparison({loaded.scene.get(), std::string(spec), settings, texture_options,
-                               validation, ray_tracing, std::string(out_path)},
+                               validation, ray_tracing, std::string(out_path), frames},
                               compare_options);
     try {
         gpu::ContextOptions options;

@@ -12,6 +12,10 @@ layout(location = 0) out vec4 out_color;
 
 const vec3 DIVIDER = vec3(255.0, 200.0, 40.0); // amber bytes
 
+float decode_srgb(float e) {
+    return e <= 0.04045 ? e / 12.92 : pow((e + 0.055) / 1.055, 2.4);
+}
+
 void main() {
     const vec2 at = gl_FragCoord.xy;
     const ivec2 p = min(ivec2(at * vec2(pc.side_size) / vec2(pc.target_size)),

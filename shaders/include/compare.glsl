@@ -16,31 +16,15 @@ layout(push_constant, scalar) uniform ComparePush {
     uvec2 side_size;   // both side images
     uvec2 target_size; // the composited target
     uint mode;         // COMPARE_*
-    uint a_linear;     // 1: side A's view decodes sRGB (re-encode to compare bytes)
-    uint b_linear;
     uint target_srgb;  // 1: the target encodes what the fragment shader writes
     float divider_px;  // Split: the divider's x in target pixels
     float heat_max;    // Difference: this byte difference and above is full heat
 } pc;
 
-float encode_srgb(float l) {
-    l = clamp(l, 0.0, 1.0);
-    return l <= 0.0031308 ? 12.92 * l : 1.055 * pow(l, 1.0 / 2.4) - 0.055;
-}
-
-float decode_srgb(float e) {
-    return e <= 0.04045 ? e / 12.92 : pow((e + 0.055) / 1.055, 2.4);
-}
-
-// The side's texel as sRGB-encoded bytes (what render() reads back).
-ivec3 side_bytes(vec4 texel, uint linear_view) {
-    vec3 c = texel.rgb;
-    if (linear_view != 0u) c = vec3(encode_srgb(c.r), encode_srgb(c.g), encode_srgb(c.b));
-    return ivec3(round(clamp(c, 0.0, 1.0) * 255.0));
-}
-
-ivec3 bytes_a(ivec2 p) { return side_bytes(texelFetch(side_a, p, 0), pc.a_linear); }
-ivec3 bytes_b(ivec2 p) { return side_bytes(texelFetch(side_b, p, 0), pc.b_linear); }
+// The sides are read through UNORM views: the sRGB-encoded bytes as stored (what
+// render() reads back), so no shader converts them to compare them.
+ivec3 bytes_a(ivec2 p) { return ivec3(round(texelFetch(side_a, p, 0).rgb * 255.0)); }
+ivec3 bytes_b(ivec2 p) { return ivec3(round(texelFetch(side_b, p, 0).rgb * 255.0)); }
 
 // Black, blue, red, yellow, white over t in 0..1, as bytes.
 vec3 heat_bytes(float t) {

@@ -192,8 +192,12 @@ TEST_F(ComparisonTest, DifferenceOfASceneWithItselfIsBlack) {
     const gpu::RenderSettings s = small_settings(*scene, gpu::DebugView::Lit);
     gpu::ComparisonSettings c;
     c.mode = gpu::CompareMode::Difference;
+    c.heat_max = 0.0f; // automatic: statistics first, composite in a second submission
     std::vector<std::uint8_t> image;
     const gpu::ComparisonStats stats = gpu::render_comparison(*a, s, *b, s, c, &image);
+    if (context().info().timestamps) {
+        EXPECT_GT(stats.composite_ms, 0.0);
+    }
     ASSERT_TRUE(stats.valid);
     EXPECT_EQ(stats.pixels, std::uint64_t(kW) * kH);
     EXPECT_EQ(stats.mean, 0.0);
@@ -236,6 +240,10 @@ TEST_F(ComparisonTest, RasterAgainstRaysMatchesCpuStatisticsAndHeatColours) {
     EXPECT_NEAR(stats.max, cpu.max, 1.0 / 255);
     EXPECT_NEAR(stats.psnr_db, cpu.psnr, 0.05);
     EXPECT_NEAR(stats.over_threshold_percent, cpu.over_percent, 100.0 / (kW * kH) + 1e-9);
+    if (context().info().timestamps) {
+        EXPECT_GT(stats.reduce_ms, 0.0);
+        EXPECT_GT(stats.composite_ms, 0.0);
+    }
     std::size_t off = 0;
     for (std::size_t p = 0; p < cpu.d.size(); ++p) {
         const auto want = gpu::heat_colour(cpu.d[p] / 24.0);
@@ -292,6 +300,10 @@ TEST_F(ComparisonTest, PresentedRayTracedFrameIsTheOffscreenImage) {
         EXPECT_EQ(differing_pixels(shown, offscreen, 0, 3), 0u) << format;
         ASSERT_FALSE(frame.completed_stats().passes.empty());
         EXPECT_EQ(frame.completed_stats().passes[0].name, "rays");
+        if (context().info().timestamps) {
+            ASSERT_EQ(frame.completed_stats().passes.size(), 2u);
+            EXPECT_EQ(frame.completed_stats().passes[1].name, "composite");
+        }
     }
     // Half resolution: every pixel is one of the reduced image's, scaled up nearest.
     gpu::PresentedFrame half(*r, s, 0.5f);

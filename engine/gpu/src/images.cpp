@@ -15,6 +15,7 @@ ImageHandle ImagePool::create(const ImageDesc& desc) {
     img.desc = desc;
     VkImageCreateInfo ci = vk_init<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
     ci.imageType = VK_IMAGE_TYPE_2D;
+    if (desc.alias_format != VK_FORMAT_UNDEFINED) ci.flags = VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT;
     ci.format = desc.format;
     ci.extent = {desc.width, desc.height, 1};
     ci.mipLevels = desc.mip_levels;
@@ -33,21 +34,24 @@ ImageHandle ImagePool::create(const ImageDesc& desc) {
         allocate_memory(context_, req, MemoryUsage::DeviceLocal, false, img.allocation_size);
     vk_check(vkBindImageMemory(device, raw, img.memory.get(), 0), "vkBindImageMemory");
 
-    auto make_view = [&](VkImageViewType type, std::uint32_t base_layer, std::uint32_t layers) {
+    auto make_view = [&](VkImageViewType type, std::uint32_t base_layer, std::uint32_t layers,
+                         VkFormat format) {
         VkImageViewCreateInfo vi =
             vk_init<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
         vi.image = raw;
         vi.viewType = type;
-        vi.format = desc.format;
+        vi.format = format;
         vi.subresourceRange = {desc.aspect, 0, desc.mip_levels, base_layer, layers};
         VkImageView v = VK_NULL_HANDLE;
         vk_check(vkCreateImageView(device, &vi, nullptr, &v), "vkCreateImageView");
         return UniqueImageView(device, v);
     };
-    img.view = make_view(desc.view_type, 0, desc.layers);
+    img.view = make_view(desc.view_type, 0, desc.layers, desc.format);
     if (desc.layer_views)
         for (std::uint32_t l = 0; l < desc.layers; ++l)
-            img.layer_views.push_back(make_view(VK_IMAGE_VIEW_TYPE_2D, l, 1));
+            img.layer_views.push_back(make_view(VK_IMAGE_VIEW_TYPE_2D, l, 1, desc.format));
+    if (desc.alias_format != VK_FORMAT_UNDEFINED)
+        img.alias_view = make_view(desc.view_type, 0, desc.layers, desc.alias_format);
     context_.set_debug_name(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<std::uint64_t>(raw),
                             desc.name.c_str());
     return images_.insert(std::move(img));

@@ -112,8 +112,13 @@ ComparisonFrame::ComparisonFrame(Renderer& a, const RenderSettings& a_settings, 
 void ComparisonFrame::wait_for_slot(std::uint32_t slot) {
     completed_a_ = a_.impl_->slot_stats(slot);
     completed_b_ = b_.impl_->slot_stats(slot);
-    if (std::optional<ReducedStats> r = a_.impl_->comparison().take_stats(slot))
-        completed_ = to_stats(r->raw, r->pixels, compare_.threshold);
+    const ReducedStats r = a_.impl_->comparison().take_stats(slot);
+    if (r.raw) {
+        completed_ = to_stats(*r.raw, r.pixels, compare_.threshold);
+        completed_.reduce_ms = r.reduce_ms;
+    }
+    // render_comparison's automatic heat scale composites in a second submission.
+    if (r.composite_ms > 0.0) completed_.composite_ms = r.composite_ms;
 }
 
 // Both sides at the (scaled) target size into their renderers' side images.

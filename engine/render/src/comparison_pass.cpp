@@ -15,7 +15,8 @@ namespace sherpa::gpu {
 namespace {
 
 constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_COMPUTE_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-constexpr std::uint32_t kGroup = 16; // compare.comp's local size (x and y)
+// compare.comp: each invocation reduces kRun pixels of a row, kGroup invocations a group.
+constexpr std::uint32_t kRun = 16, kGroup = 64;
 
 bool encodes_srgb(VkFormat format) {
     switch (format) {
@@ -135,6 +136,8 @@ ComparisonPass::ComparisonPass(Context& context, ResourceManager& resources, std
     si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     sampler_ = resources.images().create_sampler(si);
 
+    if (context.info().timestamps)
+        timestamps_ = create_query_pool(device, VK_QUERY_TYPE_TIMESTAMP, 4 * slots);
     slots_.resize(slots);
     for (Slot& s : slots_) {
         auto ai =
@@ -188,6 +191,7 @@ void ComparisonPass::record_stats(VkCommandBuffer cmd, std::uint32_t index,
                                   const CompositeInputs& in) {
     Slot& slot = slots_.at(index);
     const VkBuffer stats = resources_.get(slot.stats).buffer.get();
+    timestamp(cmd, 4 * index, VK_PIPELINE_STAGE_2_NONE);
     vkCmdFillBuffer(cmd, stats, 0, VK_WHOLE_SIZE, 0);
     memory_barrier(cmd, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -195,17 +199,17 @@ void ComparisonPass::record_stats(VkCommandBuffer cmd, std::uint32_t index,
     GPUComparePush push{};
     push.side_size = {in.width, in.height};
     push.target_size = push.side_size;
-    push.a_linear = in.a.linear ? 1u : 0u;
-    push.b_linear = in.b.linear ? 1u : 0u;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, stats_pipeline_.get());
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 1, &slot.set, 0,
                             nullptr);
     vkCmdPushConstants(cmd, layout_.get(), kStages, 0, sizeof(push), &push);
-    vkCmdDispatch(cmd, (in.width + kGroup - 1) / kGroup, (in.height + kGroup - 1) / kGroup, 1);
+    const std::uint32_t runs = (in.width + kRun - 1) / kRun * in.height;
+    vkCmdDispatch(cmd, (runs + kGroup - 1) / kGroup, 1, 1);
     memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                    VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
                    VK_ACCESS_2_HOST_READ_BIT);
-    slot.pending = true;
+    timestamp(cmd, 4 * index + 1, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+    slot.stats_pending = true;
     slot.pixels = std::uint64_t(in.width) * in.height;
 }
 
@@ -213,6 +217,7 @@ void ComparisonPass::record_composite(VkCommandBuffer cmd, std::uint32_t index,
                                       const CompositeInputs& in, const RenderTarget& target,
                                       CompositeMode mode, float divider, float heat_max) {
     Slot& slot = slots_.at(index);
+    timestamp(cmd, 4 * index + 2, VK_PIPELINE_STAGE_2_NONE);
     transition(cmd, {target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                      // After the acquire wait, or an earlier frame's readback copy.
@@ -239,8 +244,6 @@ void ComparisonPass::record_composite(VkCommandBuffer cmd, std::uint32_t index,
     push.side_size = {in.width, in.height};
     push.target_size = {target.width, target.height};
     push.mode = static_cast<std::uint32_t>(mode);
-    push.a_linear = in.a.linear ? 1u : 0u;
-    push.b_linear = in.b.linear ? 1u : 0u;
     push.target_srgb = encodes_srgb(target.format) ? 1u : 0u;
     push.divider_px = divider * float(target.width);
     push.heat_max = heat_max * 255.0f;
@@ -257,15 +260,40 @@ void ComparisonPass::record_composite(VkCommandBuffer cmd, std::uint32_t index,
                 VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
                 to_transfer ? VK_PIPELINE_STAGE_2_COPY_BIT : VK_PIPELINE_STAGE_2_NONE,
                 to_transfer ? VK_ACCESS_2_TRANSFER_READ_BIT : VK_ACCESS_2_NONE});
+    timestamp(cmd, 4 * index + 3, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT);
+    slot.composite_pending = true;
 }
 
-std::optional<ReducedStats> ComparisonPass::take_stats(std::uint32_t index) {
+void ComparisonPass::timestamp(VkCommandBuffer cmd, std::uint32_t query,
+                               VkPipelineStageFlags2 stage) {
+    if (!timestamps_) return;
+    // The slot's previous frame has completed: its queries may be reset from the host.
+    if (query % 2 == 0) vkResetQueryPool(context_.device(), timestamps_.get(), query, 2);
+    vkCmdWriteTimestamp2(cmd, stage, timestamps_.get(), query);
+}
+
+double ComparisonPass::elapsed_ms(std::uint32_t first_query) const {
+    if (!timestamps_) return 0.0;
+    std::uint64_t ts[2] = {};
+    vk_check(vkGetQueryPoolResults(context_.device(), timestamps_.get(), first_query, 2, sizeof(ts),
+                                   ts, sizeof(std::uint64_t),
+                                   VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+             "vkGetQueryPoolResults(compare timestamps)");
+    return double(ts[1] - ts[0]) * context_.info().timestamp_period_ns * 1e-6;
+}
+
+ReducedStats ComparisonPass::take_stats(std::uint32_t index) {
     Slot& slot = slots_.at(index);
-    if (!slot.pending) return std::nullopt;
-    slot.pending = false;
     ReducedStats out;
-    std::memcpy(&out.raw, resources_.get(slot.stats).mapped, sizeof(out.raw));
-    out.pixels = slot.pixels;
+    if (slot.stats_pending) {
+        GPUCompareStats raw;
+        std::memcpy(&raw, resources_.get(slot.stats).mapped, sizeof(raw));
+        out.raw = raw;
+        out.pixels = slot.pixels;
+        out.reduce_ms = elapsed_ms(4 * index);
+    }
+    if (slot.composite_pending) out.composite_ms = elapsed_ms(4 * index + 2);
+    slot.stats_pending = slot.composite_pending = false;
     return out;
 }
 

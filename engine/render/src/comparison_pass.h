@@ -16,11 +16,11 @@
 
 namespace sherpa::gpu {
 
-// One side's image, readable by shaders.
+// One side's image, readable by shaders: an RGBA8 UNORM view of the sRGB-encoded
+// bytes (the raster target's alias view, the ray tracer's storage image).
 struct SideImage {
     VkImageView view = VK_NULL_HANDLE;
     VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    bool linear = true; // the view decodes sRGB (false: raw sRGB-encoded bytes)
 };
 
 struct CompositeInputs {
@@ -28,10 +28,13 @@ struct CompositeInputs {
     std::uint32_t width = 0, height = 0; // both sides
 };
 
-// What compare.comp reduced in one frame, over `pixels` pixels.
+// What one frame of the pass left in its slot: what compare.comp reduced over
+// `pixels` pixels (when it ran), and the GPU time of the dispatch and of the draw
+// (0 where not recorded or the device has no timestamps).
 struct ReducedStats {
-    GPUCompareStats raw{};
+    std::optional<GPUCompareStats> raw;
     std::uint64_t pixels = 0;
+    double reduce_ms = 0.0, composite_ms = 0.0;
 };
 
 enum class CompositeMode : std::uint32_t { SideA = 0, Split = 1, Difference = 2 };
@@ -53,12 +56,14 @@ public:
     void record_composite(VkCommandBuffer cmd, std::uint32_t slot, const CompositeInputs& in,
                           const RenderTarget& target, CompositeMode mode, float divider,
                           float heat_max);
-    // The statistics recorded in `slot`, once its submission completed (then cleared);
-    // nullopt when that frame recorded none.
-    std::optional<ReducedStats> take_stats(std::uint32_t slot);
+    // What was recorded in `slot` since the last call, once its submission completed.
+    ReducedStats take_stats(std::uint32_t slot);
 
 private:
     VkPipeline pipeline_for(VkFormat format);
+    // Timestamps of `slot`: [4 slot, +1] around the dispatch, [+2, +3] around the draw.
+    void timestamp(VkCommandBuffer cmd, std::uint32_t query, VkPipelineStageFlags2 stage);
+    double elapsed_ms(std::uint32_t first_query) const;
 
     Context& context_;
     ResourceManager& resources_;
@@ -69,10 +74,11 @@ private:
     UniqueShaderModule vert_, frag_;
     std::map<VkFormat, UniquePipeline> composite_;
     SamplerHandle sampler_;
+    UniqueQueryPool timestamps_; // null without device timestamps
     struct Slot {
         VkDescriptorSet set = VK_NULL_HANDLE;
         BufferHandle stats; // GPUCompareStats, host-visible
-        bool pending = false;
+        bool stats_pending = false, composite_pending = false;
         std::uint64_t pixels = 0;
     };
     std::vector<Slot> slots_;

@@ -41,6 +41,13 @@ PresentedFrame::PresentedFrame(Renderer& renderer, const RenderSettings& setting
 void PresentedFrame::wait_for_slot(std::uint32_t slot) {
     // The slot's previous frame is done: its timestamps and culling counts are final.
     completed_ = renderer_.impl_->slot_stats(slot);
+    if (settings_.renderer == RendererKind::RayTraced) { // the rays' image into the target
+        const double ms = renderer_.impl_->comparison().take_stats(slot).composite_ms;
+        if (ms > 0.0) {
+            completed_.passes.push_back({"composite", ms});
+            completed_.gpu_ms += ms;
+        }
+    }
 }
 
 void PresentedFrame::record(VkCommandBuffer cmd, std::uint32_t slot, const RenderTarget& target) {

@@ -31,6 +31,8 @@ SideImage Renderer::Impl::record_side(VkCommandBuffer cmd, std::uint32_t index,
     d.height = settings.height;
     d.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
               VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    // The comparison reads the stored sRGB bytes as they are, through an UNORM view.
+    d.alias_format = VK_FORMAT_R8G8B8A8_UNORM;
     d.name = "comparison side";
     if (!side_.valid() || resources->images().get(side_).desc.width != d.width ||
         resources->images().get(side_).desc.height != d.height) {
@@ -59,14 +61,14 @@ SideImage Renderer::Impl::record_side(VkCommandBuffer cmd, std::uint32_t index,
                   VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                   VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
         end_rt_side(cmd, slot);
-        return {image.view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, true};
+        return {image.alias_view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     }
     slot.ray_traced = false;
     const RenderTarget target{image.image.get(), image.view.get(),
                               kOffscreenFormat,  settings.width,
                               settings.height,   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     record_frame(cmd, index, target, settings);
-    return {image.view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, true};
+    return {image.alias_view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
 }
 
 SideImage Renderer::Impl::record_rt_side(VkCommandBuffer cmd, FrameSlot& slot,
@@ -81,7 +83,7 @@ SideImage Renderer::Impl::record_rt_side(VkCommandBuffer cmd, FrameSlot& slot,
     begin_rt_side(cmd, slot);
     rt_views_->record(cmd, rt_frame(settings), false);
     end_rt_side(cmd, slot);
-    return {rt_views_->view(), VK_IMAGE_LAYOUT_GENERAL, false};
+    return {rt_views_->view(), VK_IMAGE_LAYOUT_GENERAL};
 }
 
 // A ray-traced side has two timestamps, no culling, draws or pipeline statistics.

@@ -49,6 +49,9 @@ struct ImageDesc {
     VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
     VkImageViewType view_type = VK_IMAGE_VIEW_TYPE_2D;
     bool layer_views = false; // also create one 2D view per array layer (shadow cascades)
+    // Also a view in this (size-compatible) format, on a MUTABLE_FORMAT image: e.g. the
+    // raw bytes of an sRGB colour target through an UNORM view. UNDEFINED: none.
+    VkFormat alias_format = VK_FORMAT_UNDEFINED;
     std::string name;
 };
 
@@ -66,6 +69,7 @@ struct Image {
     UniqueMemory memory;
     UniqueImageView view;
     std::vector<UniqueImageView> layer_views;
+    UniqueImageView alias_view; // ImageDesc::alias_format
     ImageDesc desc;
     VkDeviceSize allocation_size = 0;
 };

@@ -44,6 +44,9 @@ struct ComparisonStats {
     double over_threshold_percent = 0;
     // Pixels per difference value d (0..255): d = round(255 * difference).
     std::array<std::uint64_t, kDifferenceBins> histogram{};
+    // GPU time of the comparison pass: the statistics dispatch and the composite (0
+    // without device timestamps); the sides' own frames are in their FrameStats.
+    double reduce_ms = 0, composite_ms = 0;
     // The 99.9th percentile of the differences above 0 (0 when none): the auto heat scale.
     double percentile_999() const;
 };

@@ -264,20 +264,18 @@ static_assert(sizeof(GPURayPushConstants) == 96);
 
 // Push constants of the comparison pass (shaders/include/compare.glsl, scalar).
 struct GPUComparePush {
-    glm::uvec2 side_size;   // both side images
-    glm::uvec2 target_size; // the composited target
-    std::uint32_t mode;     // 0 side A only, 1 split, 2 difference
-    std::uint32_t a_linear; // 1: side A is read through an sRGB view (decoded)
-    std::uint32_t b_linear;
+    glm::uvec2 side_size;      // both side images
+    glm::uvec2 target_size;    // the composited target
+    std::uint32_t mode;        // 0 side A only, 1 split, 2 difference
     std::uint32_t target_srgb; // 1: the target encodes the fragment output
     float divider_px;          // Split: the divider's x in target pixels
     float heat_max;            // Difference: full heat at this byte difference
 };
 static_assert(offsetof(GPUComparePush, target_size) == 8);
 static_assert(offsetof(GPUComparePush, mode) == 16);
-static_assert(offsetof(GPUComparePush, target_srgb) == 28);
-static_assert(offsetof(GPUComparePush, divider_px) == 32);
-static_assert(sizeof(GPUComparePush) == 40);
+static_assert(offsetof(GPUComparePush, target_srgb) == 20);
+static_assert(offsetof(GPUComparePush, divider_px) == 24);
+static_assert(sizeof(GPUComparePush) == 32);
 
 // The statistics buffer compare.comp fills: a histogram of the per-pixel largest
 // byte difference and the 64-bit sum of squared R, G, B byte differences (two words).

@@ -73,6 +73,7 @@ private Q_SLOTS:
     void cleanupTestCase();
     void commandLineTakesRt();
     void accelerationDockListsBlasAndSelectsMesh();
+    void rtOffBuildsNothing();
     void rayTracedModeDrawsRtFrames();
     void refusedViewGoesBackToRaster();
     void splitShowsALeftAndBRight();
@@ -169,6 +170,27 @@ void RtTests::accelerationDockListsBlasAndSelectsMesh() {
             break;
         }
     checkValidation();
+}
+
+void RtTests::rtOffBuildsNothing() {
+    // --rt off: a device without ray tracing, no structures, the dock says why.
+    MainWindow off(&vulkan_, nullptr, false);
+    off.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&off));
+    QVERIFY(test::load(off, test::asset(QStringLiteral("Box"))));
+    QVERIFY(!off.rayTracing());
+    QTRY_VERIFY_WITH_TIMEOUT(
+        off.accelerationDock()->summaryText().contains(QStringLiteral("--rt off")), 10000);
+    QCOMPARE(off.accelerationDock()->model()->rowCount(), 0);
+    QVERIFY(!off.accelerationDock()->model()->stats());
+    // The ray-traced mode is refused there, never drawn: back to raster.
+    off.setDebugView(QStringLiteral("normal"), false);
+    off.compareControls().setMode(ViewportMode::RayTraced);
+    viewportShot(off);
+    QTRY_COMPARE_WITH_TIMEOUT(off.compareControls().state().mode, ViewportMode::Raster, 10000);
+    qsizetype seen = 0;
+    const QString fresh = test::fresh_validation_messages(off, seen);
+    QVERIFY2(fresh.isEmpty(), qPrintable(fresh));
 }
 
 void RtTests::cleanup() {

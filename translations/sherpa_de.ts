@@ -404,6 +404,26 @@
         <source>Heat map of |A − B| with its legend: mean, max, PSNR, % of pixels over the threshold</source>
         <translation>Heatmap von |A − B| mit Legende: Mittel, Maximum, PSNR, % der Pixel über dem Schwellwert</translation>
     </message>
+    <message>
+        <source>Difference &amp;Heat Scale</source>
+        <translation>&amp;Heatmap-Skala der Differenz</translation>
+    </message>
+    <message>
+        <source>Difference &amp;Threshold</source>
+        <translation>&amp;Schwellwert der Differenz</translation>
+    </message>
+    <message>
+        <source>%1/255 and above at full heat</source>
+        <translation>%1/255 und mehr in voller Hitze</translation>
+    </message>
+    <message>
+        <source>Automatic (99.9th percentile of the differences)</source>
+        <translation>Automatisch (99,9. Perzentil der Differenzen)</translation>
+    </message>
+    <message>
+        <source>Over %1/255</source>
+        <translation>Über %1/255</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::CullingDock</name>
@@ -527,6 +547,14 @@ PSNR %3
 Max. %2
 PSNR %3
 %4% von %5 Pixeln über %6</translation>
+    </message>
+    <message>
+        <source>≥ %1 (auto)</source>
+        <translation>≥ %1 (automatisch)</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>automatisch</translation>
     </message>
 </context>
 <context>

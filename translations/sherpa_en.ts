@@ -404,6 +404,26 @@
         <source>Heat map of |A − B| with its legend: mean, max, PSNR, % of pixels over the threshold</source>
         <translation>Heat map of |A − B| with its legend: mean, max, PSNR, % of pixels over the threshold</translation>
     </message>
+    <message>
+        <source>Difference &amp;Heat Scale</source>
+        <translation>Difference &amp;Heat Scale</translation>
+    </message>
+    <message>
+        <source>Difference &amp;Threshold</source>
+        <translation>Difference &amp;Threshold</translation>
+    </message>
+    <message>
+        <source>%1/255 and above at full heat</source>
+        <translation>%1/255 and above at full heat</translation>
+    </message>
+    <message>
+        <source>Automatic (99.9th percentile of the differences)</source>
+        <translation>Automatic (99.9th percentile of the differences)</translation>
+    </message>
+    <message>
+        <source>Over %1/255</source>
+        <translation>Over %1/255</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::CullingDock</name>
@@ -527,6 +547,14 @@ PSNR %3
 max %2
 PSNR %3
 %4% of %5 pixels over %6</translation>
+    </message>
+    <message>
+        <source>≥ %1 (auto)</source>
+        <translation>≥ %1 (auto)</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>auto</translation>
     </message>
 </context>
 <context>

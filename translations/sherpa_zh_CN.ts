@@ -404,6 +404,26 @@
         <source>Heat map of |A − B| with its legend: mean, max, PSNR, % of pixels over the threshold</source>
         <translation>|A − B| 的热图及图例：平均值、最大值、PSNR、超过阈值的像素百分比</translation>
     </message>
+    <message>
+        <source>Difference &amp;Heat Scale</source>
+        <translation>差异热图刻度(&amp;H)</translation>
+    </message>
+    <message>
+        <source>Difference &amp;Threshold</source>
+        <translation>差异阈值(&amp;T)</translation>
+    </message>
+    <message>
+        <source>%1/255 and above at full heat</source>
+        <translation>%1/255 及以上为最热</translation>
+    </message>
+    <message>
+        <source>Automatic (99.9th percentile of the differences)</source>
+        <translation>自动（差异的第 99.9 百分位）</translation>
+    </message>
+    <message>
+        <source>Over %1/255</source>
+        <translation>超过 %1/255</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::CullingDock</name>
@@ -527,6 +547,14 @@ PSNR %3
 最大 %2
 PSNR %3
 %5 个像素中 %4% 超过 %6</translation>
+    </message>
+    <message>
+        <source>≥ %1 (auto)</source>
+        <translation>≥ %1（自动）</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>自动</translation>
     </message>
 </context>
 <context>

@@ -5,10 +5,17 @@
 #include <QMenu>
 #include <QToolBar>
 #include <QToolButton>
+#include <cmath>
 
 #include "view_catalog.h"
 
 namespace sherpa::editor {
+
+namespace {
+// Of 255 (sRGB bytes); 0: automatic.
+constexpr int kHeatScales[] = {4, 16, 64, 0};
+constexpr int kThresholds[] = {1, 2, 4, 8};
+} // namespace
 
 CompareControls::CompareControls(QWidget* parent) : QObject(parent) {
     menu_ = new QMenu(parent);
@@ -45,6 +52,24 @@ CompareControls::CompareControls(QWidget* parent) : QObject(parent) {
         Q_EMIT otherFileRequested();
     });
     side_menu_->addAction(side_file_);
+    heat_menu_ = menu_->addMenu(QString());
+    threshold_menu_ = menu_->addMenu(QString());
+    auto* heats = new QActionGroup(this);
+    for (const int h : kHeatScales) {
+        QAction* act = heats->addAction(QString());
+        act->setCheckable(true);
+        connect(act, &QAction::triggered, this, [this, h] { setHeatScale(float(h) / 255.0f); });
+        heat_actions_.push_back(act);
+        heat_menu_->addAction(act);
+    }
+    auto* thresholds = new QActionGroup(this);
+    for (const int t : kThresholds) {
+        QAction* act = thresholds->addAction(QString());
+        act->setCheckable(true);
+        connect(act, &QAction::triggered, this, [this, t] { setThreshold(float(t) / 255.0f); });
+        threshold_actions_.push_back(act);
+        threshold_menu_->addAction(act);
+    }
     side_source_ = side_menu_->addAction(QString());
     connect(side_source_, &QAction::triggered, this, &CompareControls::sourceTexturesRequested);
     sync();
@@ -82,6 +107,18 @@ void CompareControls::setDivider(float fraction) {
     Q_EMIT changed();
 }
 
+void CompareControls::setHeatScale(float heat_max) {
+    state_.heat_max = heat_max;
+    sync();
+    Q_EMIT changed();
+}
+
+void CompareControls::setThreshold(float threshold) {
+    state_.threshold = threshold;
+    sync();
+    Q_EMIT changed();
+}
+
 void CompareControls::setRayTracing(bool available) {
     mode_actions_[static_cast<std::size_t>(ViewportMode::RayTraced)]->setEnabled(available);
     side_rays_->setEnabled(available);
@@ -106,6 +143,10 @@ void CompareControls::sync() {
     const std::vector<ViewEntry> views = ViewCatalog::views();
     for (std::size_t i = 0; i < views.size(); ++i)
         view_actions_[i]->setChecked(state_.side == SideB::OtherView && views[i].id == state_.view);
+    for (std::size_t i = 0; i < heat_actions_.size(); ++i)
+        heat_actions_[i]->setChecked(std::lround(state_.heat_max * 255.0f) == kHeatScales[i]);
+    for (std::size_t i = 0; i < threshold_actions_.size(); ++i)
+        threshold_actions_[i]->setChecked(std::lround(state_.threshold * 255.0f) == kThresholds[i]);
     if (side_button_) side_button_->setEnabled(state_.comparing());
     retranslate();
 }
@@ -128,6 +169,14 @@ void CompareControls::retranslate() {
     menu_->setTitle(tr("Viewport &Mode"));
     side_menu_->setTitle(tr("Compare &With (side B)"));
     side_views_->setTitle(tr("Another Debug View"));
+    heat_menu_->setTitle(tr("Difference &Heat Scale"));
+    threshold_menu_->setTitle(tr("Difference &Threshold"));
+    for (std::size_t i = 0; i < heat_actions_.size(); ++i)
+        heat_actions_[i]->setText(kHeatScales[i] > 0
+                                      ? tr("%1/255 and above at full heat").arg(kHeatScales[i])
+                                      : tr("Automatic (99.9th percentile of the differences)"));
+    for (std::size_t i = 0; i < threshold_actions_.size(); ++i)
+        threshold_actions_[i]->setText(tr("Over %1/255").arg(kThresholds[i]));
     side_rays_->setText(tr("The Ray Tracer"));
     side_source_->setText(tr("This File, Source Textures (no BC7/BC5)"));
     side_file_->setText(other_file_.isEmpty() ? tr("Another File…")

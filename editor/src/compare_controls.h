@@ -29,6 +29,9 @@ public:
     void setMode(ViewportMode mode);
     void setSide(SideB side, std::uint32_t view = 0);
     void setDivider(float fraction);
+    // Difference: full heat at this difference (0: automatic), "over" above threshold.
+    void setHeatScale(float heat_max);
+    void setThreshold(float threshold);
     // The device ray traces: the ray-traced mode and side are offered.
     void setRayTracing(bool available);
     // The other file side B shows (its name in the menu); empty: none chosen.
@@ -50,6 +53,9 @@ private:
     QMenu* menu_;
     QMenu* side_menu_;
     QMenu* side_views_;
+    QMenu* heat_menu_;
+    QMenu* threshold_menu_;
+    std::vector<QAction*> heat_actions_, threshold_actions_; // kHeatScales, kThresholds
     QActionGroup* modes_;
     QActionGroup* sides_;
     std::vector<QAction*> mode_actions_; // by ViewportMode

@@ -64,18 +64,26 @@ void DifferenceLegend::setNumbers(const DifferenceNumbers& numbers) {
     showNumbers();
 }
 
+QString DifferenceLegend::scaleText() const {
+    return top_->text();
+}
+
 QString DifferenceLegend::numbersText() const {
     return numbers_->text();
 }
 
 void DifferenceLegend::retranslate() {
     title_->setText(tr("|A − B|, largest of R, G, B (of 255)"));
-    top_->setText(tr("≥ %1").arg(eighths(heat_max_)));
     bottom_->setText(QStringLiteral("0"));
     showNumbers();
 }
 
 void DifferenceLegend::showNumbers() {
+    // The automatic scale is the one of the frame the numbers are of.
+    if (heat_max_ > 0.0f)
+        top_->setText(tr("≥ %1").arg(eighths(heat_max_)));
+    else
+        top_->setText(last_.valid ? tr("≥ %1 (auto)").arg(eighths(last_.heat_max)) : tr("auto"));
     if (!last_.valid) {
         numbers_->setText(tr("No frame compared yet."));
         return;

@@ -14,7 +14,9 @@ class DifferenceLegend : public QWidget {
     Q_OBJECT
 public:
     explicit DifferenceLegend(QWidget* parent = nullptr);
-    void setScale(float heat_max, float threshold); // sRGB 0..1
+    // sRGB 0..1; heat_max 0: automatic (the numbers say which).
+    void setScale(float heat_max, float threshold);
+    QString scaleText() const; // the top label
     void setNumbers(const DifferenceNumbers& numbers);
     QString numbersText() const;
     // The colour bar as drawn (top: full heat), for the tests.

@@ -34,7 +34,7 @@ gpu::RenderSettings side_b_settings(const ViewportFrame& frame, const gpu::Rende
     return b;
 }
 
-DifferenceNumbers numbers(const gpu::ComparisonStats& s) {
+DifferenceNumbers numbers(const gpu::ComparisonStats& s, float heat_max) {
     DifferenceNumbers out;
     out.valid = s.valid;
     out.pixels = s.pixels;
@@ -42,6 +42,7 @@ DifferenceNumbers numbers(const gpu::ComparisonStats& s) {
     out.max = s.max;
     out.psnr_db = s.psnr_db;
     out.over_threshold_percent = s.over_threshold_percent;
+    out.heat_max = heat_max > 0.0f ? double(heat_max) : s.percentile_999();
     return out;
 }
 
@@ -96,7 +97,7 @@ bool GpuViewport::presentComparison(const ViewportFrame& frame, const gpu::Rende
     }
     const bool shown = impl.presenter->present_frame(*pair);
     impl.completed = pair->completed_stats_a();
-    impl.difference = numbers(pair->completed_comparison());
+    impl.difference = numbers(pair->completed_comparison(), compare.heat_max);
     return shown;
 }
 

@@ -24,7 +24,8 @@ struct ViewportComparison {
     std::uint32_t view = 0; // SideB::OtherView: a gpu::DebugView (ViewCatalog id)
     float divider = 0.5f;   // Split: fraction of the width, A left of it
     // A pixel differs when a channel differs by more than this (sRGB 0..1); a
-    // difference of heat_max and above is drawn at full heat.
+    // difference of heat_max and above is drawn at full heat; 0: automatic (the 99.9th
+    // percentile of the differing pixels of the latest completed frame).
     float threshold = 2.0f / 255.0f;
     float heat_max = 16.0f / 255.0f;
     bool comparing() const {
@@ -44,6 +45,7 @@ struct DifferenceNumbers {
     double mean = 0.0, max = 0.0;
     double psnr_db = 0.0; // infinity when identical
     double over_threshold_percent = 0.0;
+    double heat_max = 0.0; // the scale drawn: the chosen one, or the automatic one
 };
 
 } // namespace sherpa::editor

@@ -384,6 +384,18 @@ void RtTests::differenceOfASceneWithItselfIsZero() {
     }
     QVERIFY(max > 0.0);
     QVERIFY(!legend.numbersText().contains(QStringLiteral("∞")));
+    QCOMPARE(legend.scaleText(), QStringLiteral("≥ 16.0"));
+    // The automatic heat scale: the 99.9th percentile of the differing pixels, named.
+    c.setHeatScale(0.0f);
+    QCOMPARE(legend.scaleText(), QStringLiteral("auto"));
+    for (int i = 0; i < 10 && !legend.scaleText().contains(QStringLiteral("(auto)")); ++i) {
+        w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
+        QCoreApplication::processEvents();
+    }
+    QVERIFY2(legend.scaleText().contains(QStringLiteral("(auto)")), qPrintable(legend.scaleText()));
+    QVERIFY(w.lastReport().difference.heat_max > 0.0);
+    QVERIFY(w.lastReport().difference.heat_max <= w.lastReport().difference.max);
+    c.setHeatScale(16.0f / 255.0f);
     // Leaving the comparison frees the other file.
     c.setMode(ViewportMode::Raster);
     QVERIFY(!w.compareSession());

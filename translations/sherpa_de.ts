@@ -175,6 +175,68 @@
     </message>
 </context>
 <context>
+    <name>sherpa::editor::AccelerationDock</name>
+    <message>
+        <source>Acceleration Structures</source>
+        <translation>Beschleunigungsstrukturen</translation>
+    </message>
+    <message>
+        <source>%1 BLAS, %2 triangles, %3 built, %4 compacted (%5%), %6 batches, built in %7 ms</source>
+        <translation>%1 BLAS, %2 Dreiecke, %3 gebaut, %4 kompaktiert (%5%), %6 Stapel, gebaut in %7 ms</translation>
+    </message>
+    <message>
+        <source>TLAS: %1 instances of %2 node/mesh pairs, %3 deduplicated, %4 mirrored, %5 hidden, %6 non-finite; %7</source>
+        <translation>TLAS: %1 Instanzen aus %2 Knoten/Mesh-Paaren, %3 dedupliziert, %4 gespiegelt, %5 ausgeblendet, %6 nicht endlich; %7</translation>
+    </message>
+    <message>
+        <source>Total on the GPU: %1 (scratch buffer %2)</source>
+        <translation>Gesamt auf der GPU: %1 (Scratch-Puffer %2)</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::AccelerationModel</name>
+    <message>
+        <source>%1 geometries (one per triangle primitive), %2 of them opaque (no any-hit)</source>
+        <translation>%1 Geometrien (eine je Dreiecksprimitiv), davon %2 opak (kein Any-Hit)</translation>
+    </message>
+    <message>
+        <source>mesh %1</source>
+        <translation>Mesh %1</translation>
+    </message>
+    <message>
+        <source>Geometries (opaque)</source>
+        <translation>Geometrien (opak)</translation>
+    </message>
+    <message>
+        <source>Mesh</source>
+        <translation>Mesh</translation>
+    </message>
+    <message>
+        <source>Geometries</source>
+        <translation>Geometrien</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>Dreiecke</translation>
+    </message>
+    <message>
+        <source>Build ms</source>
+        <translation>Bau ms</translation>
+    </message>
+    <message>
+        <source>Built</source>
+        <translation>Gebaut</translation>
+    </message>
+    <message>
+        <source>Compacted</source>
+        <translation>Kompaktiert</translation>
+    </message>
+    <message>
+        <source>Scratch</source>
+        <translation>Scratch</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::AttributeModel</name>
     <message>
         <source>indices</source>
@@ -254,6 +316,113 @@
     <message>
         <source>First frame of the scene %1 ms after launch.</source>
         <translation>Erstes Bild der Szene %1 ms nach dem Start.</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::CompareControls</name>
+    <message>
+        <source>Raster</source>
+        <translation>Rasterisierung</translation>
+    </message>
+    <message>
+        <source>Ray traced</source>
+        <translation>Raytracing</translation>
+    </message>
+    <message>
+        <source>Split (A | B)</source>
+        <translation>Geteilt (A | B)</translation>
+    </message>
+    <message>
+        <source>Difference (heat map)</source>
+        <translation>Differenz (Heatmap)</translation>
+    </message>
+    <message>
+        <source>Viewport &amp;Mode</source>
+        <translation>Ansichts&amp;modus</translation>
+    </message>
+    <message>
+        <source>Compare &amp;With (side B)</source>
+        <translation>&amp;Vergleichen mit (Seite B)</translation>
+    </message>
+    <message>
+        <source>Another Debug View</source>
+        <translation>Andere Debug-Ansicht</translation>
+    </message>
+    <message>
+        <source>The Ray Tracer</source>
+        <translation>Der Raytracer</translation>
+    </message>
+    <message>
+        <source>Another File…</source>
+        <translation>Andere Datei…</translation>
+    </message>
+    <message>
+        <source>Another File… (%1)</source>
+        <translation>Andere Datei… (%1)</translation>
+    </message>
+    <message>
+        <source>Viewport: %1</source>
+        <translation>Ansicht: %1</translation>
+    </message>
+    <message>
+        <source>Raster or ray traced frame, or side A (this view, rasterized) against side B with one camera. Split: drag the divider line (or Ctrl+drag anywhere) to move it.</source>
+        <translation>Rasterisiertes oder per Raytracing berechnetes Bild, oder Seite A (diese Ansicht, rasterisiert) gegen Seite B mit einer Kamera. Geteilt: die Trennlinie ziehen (oder Strg+Ziehen an beliebiger Stelle), um sie zu verschieben.</translation>
+    </message>
+    <message>
+        <source>ray tracer</source>
+        <translation>Raytracer</translation>
+    </message>
+    <message>
+        <source>no file</source>
+        <translation>keine Datei</translation>
+    </message>
+    <message>
+        <source>B: %1</source>
+        <translation>B: %1</translation>
+    </message>
+    <message>
+        <source>What side B of the comparison draws</source>
+        <translation>Was Seite B des Vergleichs zeichnet</translation>
+    </message>
+    <message>
+        <source>This File, Source Textures (no BC7/BC5)</source>
+        <translation>Diese Datei, Quelltexturen (ohne BC7/BC5)</translation>
+    </message>
+    <message>
+        <source>The rasterizer: every view, overlays and the selection</source>
+        <translation>Der Rasterisierer: jede Ansicht, Overlays und die Auswahl</translation>
+    </message>
+    <message>
+        <source>Primary rays through the acceleration structures: the surface-data views</source>
+        <translation>Primärstrahlen durch die Beschleunigungsstrukturen: die Oberflächendaten-Ansichten</translation>
+    </message>
+    <message>
+        <source>Side A left, side B right, one camera: drag the divider line (or Ctrl+drag anywhere) to move it</source>
+        <translation>Seite A links, Seite B rechts, eine Kamera: die Trennlinie ziehen (oder Strg+Ziehen an beliebiger Stelle), um sie zu verschieben</translation>
+    </message>
+    <message>
+        <source>Heat map of |A − B| with its legend: mean, max, PSNR, % of pixels over the threshold</source>
+        <translation>Heatmap von |A − B| mit Legende: Mittel, Maximum, PSNR, % der Pixel über dem Schwellwert</translation>
+    </message>
+    <message>
+        <source>Difference &amp;Heat Scale</source>
+        <translation>&amp;Heatmap-Skala der Differenz</translation>
+    </message>
+    <message>
+        <source>Difference &amp;Threshold</source>
+        <translation>&amp;Schwellwert der Differenz</translation>
+    </message>
+    <message>
+        <source>%1/255 and above at full heat</source>
+        <translation>%1/255 und mehr in voller Hitze</translation>
+    </message>
+    <message>
+        <source>Automatic (99.9th percentile of the differences)</source>
+        <translation>Automatisch (99,9. Perzentil der Differenzen)</translation>
+    </message>
+    <message>
+        <source>Over %1/255</source>
+        <translation>Über %1/255</translation>
     </message>
 </context>
 <context>
@@ -345,6 +514,47 @@
     <message>
         <source>Renderer passes, last frame</source>
         <translation>Renderer-Durchläufe, letztes Bild</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::DifferenceLegend</name>
+    <message>
+        <source>|A − B|, largest of R, G, B (of 255)</source>
+        <translation>|A − B|, größter Wert von R, G, B (von 255)</translation>
+    </message>
+    <message>
+        <source>≥ %1</source>
+        <translation>≥ %1</translation>
+    </message>
+    <message>
+        <source>No frame compared yet.</source>
+        <translation>Noch kein Bild verglichen.</translation>
+    </message>
+    <message>
+        <source>∞ (identical)</source>
+        <translation>∞ (identisch)</translation>
+    </message>
+    <message>
+        <source>%1 dB</source>
+        <translation>%1 dB</translation>
+    </message>
+    <message>
+        <source>mean %1
+max %2
+PSNR %3
+%4% of %5 pixels over %6</source>
+        <translation>Mittel %1
+Max. %2
+PSNR %3
+%4% von %5 Pixeln über %6</translation>
+    </message>
+    <message>
+        <source>≥ %1 (auto)</source>
+        <translation>≥ %1 (automatisch)</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>automatisch</translation>
     </message>
 </context>
 <context>
@@ -921,6 +1131,50 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</source>
         <translation>Mittel der letzten %1 Bilder ohne das erste des Renderers (Pipeline-Erstellung). Während sich die Kamera auf einem langsamen Gerät bewegt, werden Bilder mit geringerer Auflösung und ohne Schatten gezeichnet, um %2 fps zu halten; in Ruhe folgt das volle Bild.</translation>
+    </message>
+    <message>
+        <source>Ray tracing is off (--rt off): no acceleration structures.</source>
+        <translation>Raytracing ist aus (--rt off): keine Beschleunigungsstrukturen.</translation>
+    </message>
+    <message>
+        <source>The device does not ray trace: no acceleration structures.</source>
+        <translation>Das Gerät beherrscht kein Raytracing: keine Beschleunigungsstrukturen.</translation>
+    </message>
+    <message>
+        <source>No scene.</source>
+        <translation>Keine Szene.</translation>
+    </message>
+    <message>
+        <source>The scene has no triangles: no acceleration structures.</source>
+        <translation>Die Szene hat keine Dreiecke: keine Beschleunigungsstrukturen.</translation>
+    </message>
+    <message>
+        <source>Compare with glTF scene</source>
+        <translation>Mit glTF-Szene vergleichen</translation>
+    </message>
+    <message>
+        <source>Side B: %1 loaded.</source>
+        <translation>Seite B: %1 geladen.</translation>
+    </message>
+    <message>
+        <source>Side B: %1 could not be loaded: %2</source>
+        <translation>Seite B: %1 konnte nicht geladen werden: %2</translation>
+    </message>
+    <message>
+        <source>Side B: loading %1…</source>
+        <translation>Seite B: %1 wird geladen…</translation>
+    </message>
+    <message>
+        <source>Overlays and the selection highlight are drawn in the Raster mode only.</source>
+        <translation>Overlays und die Auswahlhervorhebung werden nur im Rastermodus gezeichnet.</translation>
+    </message>
+    <message>
+        <source>The ray tracer cannot draw this frame: %1. Back to Raster.</source>
+        <translation>Der Raytracer kann dieses Bild nicht zeichnen: %1. Zurück zur Rasterisierung.</translation>
+    </message>
+    <message>
+        <source>%1, source textures</source>
+        <translation>%1, Quelltexturen</translation>
     </message>
 </context>
 <context>

@@ -175,6 +175,68 @@
     </message>
 </context>
 <context>
+    <name>sherpa::editor::AccelerationDock</name>
+    <message>
+        <source>Acceleration Structures</source>
+        <translation>Acceleration Structures</translation>
+    </message>
+    <message>
+        <source>%1 BLAS, %2 triangles, %3 built, %4 compacted (%5%), %6 batches, built in %7 ms</source>
+        <translation>%1 BLAS, %2 triangles, %3 built, %4 compacted (%5%), %6 batches, built in %7 ms</translation>
+    </message>
+    <message>
+        <source>TLAS: %1 instances of %2 node/mesh pairs, %3 deduplicated, %4 mirrored, %5 hidden, %6 non-finite; %7</source>
+        <translation>TLAS: %1 instances of %2 node/mesh pairs, %3 deduplicated, %4 mirrored, %5 hidden, %6 non-finite; %7</translation>
+    </message>
+    <message>
+        <source>Total on the GPU: %1 (scratch buffer %2)</source>
+        <translation>Total on the GPU: %1 (scratch buffer %2)</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::AccelerationModel</name>
+    <message>
+        <source>%1 geometries (one per triangle primitive), %2 of them opaque (no any-hit)</source>
+        <translation>%1 geometries (one per triangle primitive), %2 of them opaque (no any-hit)</translation>
+    </message>
+    <message>
+        <source>mesh %1</source>
+        <translation>mesh %1</translation>
+    </message>
+    <message>
+        <source>Geometries (opaque)</source>
+        <translation>Geometries (opaque)</translation>
+    </message>
+    <message>
+        <source>Mesh</source>
+        <translation>Mesh</translation>
+    </message>
+    <message>
+        <source>Geometries</source>
+        <translation>Geometries</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>Triangles</translation>
+    </message>
+    <message>
+        <source>Build ms</source>
+        <translation>Build ms</translation>
+    </message>
+    <message>
+        <source>Built</source>
+        <translation>Built</translation>
+    </message>
+    <message>
+        <source>Compacted</source>
+        <translation>Compacted</translation>
+    </message>
+    <message>
+        <source>Scratch</source>
+        <translation>Scratch</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::AttributeModel</name>
     <message>
         <source>indices</source>
@@ -254,6 +316,113 @@
     <message>
         <source>First frame of the scene %1 ms after launch.</source>
         <translation>First frame of the scene %1 ms after launch.</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::CompareControls</name>
+    <message>
+        <source>Raster</source>
+        <translation>Raster</translation>
+    </message>
+    <message>
+        <source>Ray traced</source>
+        <translation>Ray traced</translation>
+    </message>
+    <message>
+        <source>Split (A | B)</source>
+        <translation>Split (A | B)</translation>
+    </message>
+    <message>
+        <source>Difference (heat map)</source>
+        <translation>Difference (heat map)</translation>
+    </message>
+    <message>
+        <source>Viewport &amp;Mode</source>
+        <translation>Viewport &amp;Mode</translation>
+    </message>
+    <message>
+        <source>Compare &amp;With (side B)</source>
+        <translation>Compare &amp;With (side B)</translation>
+    </message>
+    <message>
+        <source>Another Debug View</source>
+        <translation>Another Debug View</translation>
+    </message>
+    <message>
+        <source>The Ray Tracer</source>
+        <translation>The Ray Tracer</translation>
+    </message>
+    <message>
+        <source>Another File…</source>
+        <translation>Another File…</translation>
+    </message>
+    <message>
+        <source>Another File… (%1)</source>
+        <translation>Another File… (%1)</translation>
+    </message>
+    <message>
+        <source>Viewport: %1</source>
+        <translation>Viewport: %1</translation>
+    </message>
+    <message>
+        <source>Raster or ray traced frame, or side A (this view, rasterized) against side B with one camera. Split: drag the divider line (or Ctrl+drag anywhere) to move it.</source>
+        <translation>Raster or ray traced frame, or side A (this view, rasterized) against side B with one camera. Split: drag the divider line (or Ctrl+drag anywhere) to move it.</translation>
+    </message>
+    <message>
+        <source>ray tracer</source>
+        <translation>ray tracer</translation>
+    </message>
+    <message>
+        <source>no file</source>
+        <translation>no file</translation>
+    </message>
+    <message>
+        <source>B: %1</source>
+        <translation>B: %1</translation>
+    </message>
+    <message>
+        <source>What side B of the comparison draws</source>
+        <translation>What side B of the comparison draws</translation>
+    </message>
+    <message>
+        <source>This File, Source Textures (no BC7/BC5)</source>
+        <translation>This File, Source Textures (no BC7/BC5)</translation>
+    </message>
+    <message>
+        <source>The rasterizer: every view, overlays and the selection</source>
+        <translation>The rasterizer: every view, overlays and the selection</translation>
+    </message>
+    <message>
+        <source>Primary rays through the acceleration structures: the surface-data views</source>
+        <translation>Primary rays through the acceleration structures: the surface-data views</translation>
+    </message>
+    <message>
+        <source>Side A left, side B right, one camera: drag the divider line (or Ctrl+drag anywhere) to move it</source>
+        <translation>Side A left, side B right, one camera: drag the divider line (or Ctrl+drag anywhere) to move it</translation>
+    </message>
+    <message>
+        <source>Heat map of |A − B| with its legend: mean, max, PSNR, % of pixels over the threshold</source>
+        <translation>Heat map of |A − B| with its legend: mean, max, PSNR, % of pixels over the threshold</translation>
+    </message>
+    <message>
+        <source>Difference &amp;Heat Scale</source>
+        <translation>Difference &amp;Heat Scale</translation>
+    </message>
+    <message>
+        <source>Difference &amp;Threshold</source>
+        <translation>Difference &amp;Threshold</translation>
+    </message>
+    <message>
+        <source>%1/255 and above at full heat</source>
+        <translation>%1/255 and above at full heat</translation>
+    </message>
+    <message>
+        <source>Automatic (99.9th percentile of the differences)</source>
+        <translation>Automatic (99.9th percentile of the differences)</translation>
+    </message>
+    <message>
+        <source>Over %1/255</source>
+        <translation>Over %1/255</translation>
     </message>
 </context>
 <context>
@@ -345,6 +514,47 @@
     <message>
         <source>Renderer passes, last frame</source>
         <translation>Renderer passes, last frame</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::DifferenceLegend</name>
+    <message>
+        <source>|A − B|, largest of R, G, B (of 255)</source>
+        <translation>|A − B|, largest of R, G, B (of 255)</translation>
+    </message>
+    <message>
+        <source>≥ %1</source>
+        <translation>≥ %1</translation>
+    </message>
+    <message>
+        <source>No frame compared yet.</source>
+        <translation>No frame compared yet.</translation>
+    </message>
+    <message>
+        <source>∞ (identical)</source>
+        <translation>∞ (identical)</translation>
+    </message>
+    <message>
+        <source>%1 dB</source>
+        <translation>%1 dB</translation>
+    </message>
+    <message>
+        <source>mean %1
+max %2
+PSNR %3
+%4% of %5 pixels over %6</source>
+        <translation>mean %1
+max %2
+PSNR %3
+%4% of %5 pixels over %6</translation>
+    </message>
+    <message>
+        <source>≥ %1 (auto)</source>
+        <translation>≥ %1 (auto)</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>auto</translation>
     </message>
 </context>
 <context>
@@ -921,6 +1131,50 @@ The current scene is kept.</translation>
     <message>
         <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</source>
         <translation>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</translation>
+    </message>
+    <message>
+        <source>Ray tracing is off (--rt off): no acceleration structures.</source>
+        <translation>Ray tracing is off (--rt off): no acceleration structures.</translation>
+    </message>
+    <message>
+        <source>The device does not ray trace: no acceleration structures.</source>
+        <translation>The device does not ray trace: no acceleration structures.</translation>
+    </message>
+    <message>
+        <source>No scene.</source>
+        <translation>No scene.</translation>
+    </message>
+    <message>
+        <source>The scene has no triangles: no acceleration structures.</source>
+        <translation>The scene has no triangles: no acceleration structures.</translation>
+    </message>
+    <message>
+        <source>Compare with glTF scene</source>
+        <translation>Compare with glTF scene</translation>
+    </message>
+    <message>
+        <source>Side B: %1 loaded.</source>
+        <translation>Side B: %1 loaded.</translation>
+    </message>
+    <message>
+        <source>Side B: %1 could not be loaded: %2</source>
+        <translation>Side B: %1 could not be loaded: %2</translation>
+    </message>
+    <message>
+        <source>Side B: loading %1…</source>
+        <translation>Side B: loading %1…</translation>
+    </message>
+    <message>
+        <source>Overlays and the selection highlight are drawn in the Raster mode only.</source>
+        <translation>Overlays and the selection highlight are drawn in the Raster mode only.</translation>
+    </message>
+    <message>
+        <source>The ray tracer cannot draw this frame: %1. Back to Raster.</source>
+        <translation>The ray tracer cannot draw this frame: %1. Back to Raster.</translation>
+    </message>
+    <message>
+        <source>%1, source textures</source>
+        <translation>%1, source textures</translation>
     </message>
 </context>
 <context>

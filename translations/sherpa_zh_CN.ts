@@ -175,6 +175,68 @@
     </message>
 </context>
 <context>
+    <name>sherpa::editor::AccelerationDock</name>
+    <message>
+        <source>Acceleration Structures</source>
+        <translation>加速结构</translation>
+    </message>
+    <message>
+        <source>%1 BLAS, %2 triangles, %3 built, %4 compacted (%5%), %6 batches, built in %7 ms</source>
+        <translation>%1 个 BLAS，%2 个三角形，构建 %3，压缩后 %4（%5%），%6 批，构建用时 %7 ms</translation>
+    </message>
+    <message>
+        <source>TLAS: %1 instances of %2 node/mesh pairs, %3 deduplicated, %4 mirrored, %5 hidden, %6 non-finite; %7</source>
+        <translation>TLAS：%2 个节点/网格对中的 %1 个实例，%3 个去重，%4 个镜像，%5 个隐藏，%6 个非有限；%7</translation>
+    </message>
+    <message>
+        <source>Total on the GPU: %1 (scratch buffer %2)</source>
+        <translation>GPU 上共计：%1（暂存缓冲区 %2）</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::AccelerationModel</name>
+    <message>
+        <source>%1 geometries (one per triangle primitive), %2 of them opaque (no any-hit)</source>
+        <translation>%1 个几何体（每个三角形图元一个），其中 %2 个不透明（无 any-hit）</translation>
+    </message>
+    <message>
+        <source>mesh %1</source>
+        <translation>网格 %1</translation>
+    </message>
+    <message>
+        <source>Geometries (opaque)</source>
+        <translation>几何体（不透明）</translation>
+    </message>
+    <message>
+        <source>Mesh</source>
+        <translation>网格</translation>
+    </message>
+    <message>
+        <source>Geometries</source>
+        <translation>几何体</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>三角形</translation>
+    </message>
+    <message>
+        <source>Build ms</source>
+        <translation>构建 ms</translation>
+    </message>
+    <message>
+        <source>Built</source>
+        <translation>构建</translation>
+    </message>
+    <message>
+        <source>Compacted</source>
+        <translation>压缩后</translation>
+    </message>
+    <message>
+        <source>Scratch</source>
+        <translation>暂存</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::AttributeModel</name>
     <message>
         <source>indices</source>
@@ -254,6 +316,113 @@
     <message>
         <source>First frame of the scene %1 ms after launch.</source>
         <translation>启动后 %1 毫秒显示场景的第一帧。</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::CompareControls</name>
+    <message>
+        <source>Raster</source>
+        <translation>光栅化</translation>
+    </message>
+    <message>
+        <source>Ray traced</source>
+        <translation>光线追踪</translation>
+    </message>
+    <message>
+        <source>Split (A | B)</source>
+        <translation>分屏（A | B）</translation>
+    </message>
+    <message>
+        <source>Difference (heat map)</source>
+        <translation>差异（热图）</translation>
+    </message>
+    <message>
+        <source>Viewport &amp;Mode</source>
+        <translation>视口模式(&amp;M)</translation>
+    </message>
+    <message>
+        <source>Compare &amp;With (side B)</source>
+        <translation>比较对象（B 侧）(&amp;W)</translation>
+    </message>
+    <message>
+        <source>Another Debug View</source>
+        <translation>其他调试视图</translation>
+    </message>
+    <message>
+        <source>The Ray Tracer</source>
+        <translation>光线追踪器</translation>
+    </message>
+    <message>
+        <source>Another File…</source>
+        <translation>其他文件…</translation>
+    </message>
+    <message>
+        <source>Another File… (%1)</source>
+        <translation>其他文件…（%1）</translation>
+    </message>
+    <message>
+        <source>Viewport: %1</source>
+        <translation>视口：%1</translation>
+    </message>
+    <message>
+        <source>Raster or ray traced frame, or side A (this view, rasterized) against side B with one camera. Split: drag the divider line (or Ctrl+drag anywhere) to move it.</source>
+        <translation>光栅化或光线追踪的画面，或以同一相机比较 A 侧（此视图，光栅化）与 B 侧。分屏：拖动分隔线（或在任意位置 Ctrl+拖动）来移动它。</translation>
+    </message>
+    <message>
+        <source>ray tracer</source>
+        <translation>光线追踪器</translation>
+    </message>
+    <message>
+        <source>no file</source>
+        <translation>无文件</translation>
+    </message>
+    <message>
+        <source>B: %1</source>
+        <translation>B：%1</translation>
+    </message>
+    <message>
+        <source>What side B of the comparison draws</source>
+        <translation>比较中 B 侧绘制的内容</translation>
+    </message>
+    <message>
+        <source>This File, Source Textures (no BC7/BC5)</source>
+        <translation>此文件，源纹理（无 BC7/BC5）</translation>
+    </message>
+    <message>
+        <source>The rasterizer: every view, overlays and the selection</source>
+        <translation>光栅化器：所有视图、叠加层和选择</translation>
+    </message>
+    <message>
+        <source>Primary rays through the acceleration structures: the surface-data views</source>
+        <translation>穿过加速结构的主光线：表面数据视图</translation>
+    </message>
+    <message>
+        <source>Side A left, side B right, one camera: drag the divider line (or Ctrl+drag anywhere) to move it</source>
+        <translation>A 侧在左，B 侧在右，同一相机：拖动分隔线（或在任意位置 Ctrl+拖动）来移动它</translation>
+    </message>
+    <message>
+        <source>Heat map of |A − B| with its legend: mean, max, PSNR, % of pixels over the threshold</source>
+        <translation>|A − B| 的热图及图例：平均值、最大值、PSNR、超过阈值的像素百分比</translation>
+    </message>
+    <message>
+        <source>Difference &amp;Heat Scale</source>
+        <translation>差异热图刻度(&amp;H)</translation>
+    </message>
+    <message>
+        <source>Difference &amp;Threshold</source>
+        <translation>差异阈值(&amp;T)</translation>
+    </message>
+    <message>
+        <source>%1/255 and above at full heat</source>
+        <translation>%1/255 及以上为最热</translation>
+    </message>
+    <message>
+        <source>Automatic (99.9th percentile of the differences)</source>
+        <translation>自动（差异的第 99.9 百分位）</translation>
+    </message>
+    <message>
+        <source>Over %1/255</source>
+        <translation>超过 %1/255</translation>
     </message>
 </context>
 <context>
@@ -345,6 +514,47 @@
     <message>
         <source>Renderer passes, last frame</source>
         <translation>渲染器通道，上一帧</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::DifferenceLegend</name>
+    <message>
+        <source>|A − B|, largest of R, G, B (of 255)</source>
+        <translation>|A − B|，R、G、B 中的最大值（满值 255）</translation>
+    </message>
+    <message>
+        <source>≥ %1</source>
+        <translation>≥ %1</translation>
+    </message>
+    <message>
+        <source>No frame compared yet.</source>
+        <translation>尚未比较任何画面。</translation>
+    </message>
+    <message>
+        <source>∞ (identical)</source>
+        <translation>∞（完全相同）</translation>
+    </message>
+    <message>
+        <source>%1 dB</source>
+        <translation>%1 dB</translation>
+    </message>
+    <message>
+        <source>mean %1
+max %2
+PSNR %3
+%4% of %5 pixels over %6</source>
+        <translation>平均 %1
+最大 %2
+PSNR %3
+%5 个像素中 %4% 超过 %6</translation>
+    </message>
+    <message>
+        <source>≥ %1 (auto)</source>
+        <translation>≥ %1（自动）</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>自动</translation>
     </message>
 </context>
 <context>
@@ -921,6 +1131,50 @@ The current scene is kept.</source>
     <message>
         <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</source>
         <translation>最近 %1 帧的平均值，不计渲染器的第一帧（创建管线）。在慢速设备上移动相机时，以较低分辨率且不带阴影绘制以保持 %2 fps；静止后显示完整画面。</translation>
+    </message>
+    <message>
+        <source>Ray tracing is off (--rt off): no acceleration structures.</source>
+        <translation>光线追踪已关闭（--rt off）：没有加速结构。</translation>
+    </message>
+    <message>
+        <source>The device does not ray trace: no acceleration structures.</source>
+        <translation>该设备不支持光线追踪：没有加速结构。</translation>
+    </message>
+    <message>
+        <source>No scene.</source>
+        <translation>没有场景。</translation>
+    </message>
+    <message>
+        <source>The scene has no triangles: no acceleration structures.</source>
+        <translation>场景没有三角形：没有加速结构。</translation>
+    </message>
+    <message>
+        <source>Compare with glTF scene</source>
+        <translation>与 glTF 场景比较</translation>
+    </message>
+    <message>
+        <source>Side B: %1 loaded.</source>
+        <translation>B 侧：已加载 %1。</translation>
+    </message>
+    <message>
+        <source>Side B: %1 could not be loaded: %2</source>
+        <translation>B 侧：无法加载 %1：%2</translation>
+    </message>
+    <message>
+        <source>Side B: loading %1…</source>
+        <translation>B 侧：正在加载 %1…</translation>
+    </message>
+    <message>
+        <source>Overlays and the selection highlight are drawn in the Raster mode only.</source>
+        <translation>叠加层和选择高亮仅在光栅化模式下绘制。</translation>
+    </message>
+    <message>
+        <source>The ray tracer cannot draw this frame: %1. Back to Raster.</source>
+        <translation>光线追踪器无法绘制此画面：%1。已切回光栅化。</translation>
+    </message>
+    <message>
+        <source>%1, source textures</source>
+        <translation>%1，源纹理</translation>
     </message>
 </context>
 <context>

@@ -35,7 +35,8 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "sherpa: no Vulkan instance (error %d); the viewport stays empty\n",
                      static_cast<int>(vulkan.errorCode()));
 
-    sherpa::editor::MainWindow window(vulkan.isValid() ? &vulkan : nullptr);
+    sherpa::editor::MainWindow window(vulkan.isValid() ? &vulkan : nullptr, nullptr,
+                                      cl.ray_tracing);
     // The device is made on the render thread while the window shows; the scene
     // starts loading on the thread pool once it is known.
     sherpa::editor::run_command_line(window, cl, launch.nsecsElapsed());

@@ -1,5 +1,7 @@
 #include "command_line.h"
 
+#include "compare_controls.h"
+
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDockWidget>
@@ -8,6 +10,7 @@
 #include <QTimer>
 #include <cstdio>
 
+#include "acceleration_dock.h"
 #include "culling_dock.h"
 #include "lab_dock.h"
 #include "log_dock.h"
@@ -23,14 +26,30 @@
 namespace sherpa::editor {
 
 namespace {
-const QStringList kDockNames = {QStringLiteral("scene-tree"), QStringLiteral("mesh"),
-                                QStringLiteral("material"),   QStringLiteral("textures"),
-                                QStringLiteral("culling"),    QStringLiteral("log"),
-                                QStringLiteral("timeline"),   QStringLiteral("lab")};
+const QStringList kDockNames = {
+    QStringLiteral("scene-tree"), QStringLiteral("mesh"),    QStringLiteral("material"),
+    QStringLiteral("textures"),   QStringLiteral("culling"), QStringLiteral("log"),
+    QStringLiteral("timeline"),   QStringLiteral("lab"),     QStringLiteral("acceleration")};
+
+// By ViewportMode.
+const QStringList kModeNames = {QStringLiteral("raster"), QStringLiteral("rt"),
+                                QStringLiteral("split"), QStringLiteral("difference")};
+
+// --mode and --compare-with, once the scene is loaded.
+void apply_viewport_mode(MainWindow& window, const CommandLine& cl) {
+    CompareControls& compare = window.compareControls();
+    const QString& side = cl.compare_with;
+    if (side.startsWith(QLatin1String("view:")))
+        compare.setSide(SideB::OtherView, *ViewCatalog::viewId(side.mid(5)));
+    else if (!side.isEmpty() && side != QLatin1String("rt"))
+        window.compareWithFile(side); // loaded on the thread pool, then side B
+    if (!cl.mode.isEmpty()) compare.setMode(static_cast<ViewportMode>(kModeNames.indexOf(cl.mode)));
+}
 
 QDockWidget* dock_named(MainWindow& w, const QString& name) {
-    QDockWidget* docks[] = {w.sceneTreeDock(), w.meshDock(), w.materialDock(), w.textureDock(),
-                            w.cullingDock(),   w.logDock(),  w.timelineDock(), w.labDock()};
+    QDockWidget* docks[] = {w.sceneTreeDock(), w.meshDock(),    w.materialDock(),
+                            w.textureDock(),   w.cullingDock(), w.logDock(),
+                            w.timelineDock(),  w.labDock(),     w.accelerationDock()};
     const auto i = kDockNames.indexOf(name);
     return i >= 0 ? docks[i] : nullptr;
 }
@@ -98,7 +117,7 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
     const QCommandLineOption dock(
         QStringLiteral("dock"),
         QStringLiteral("Show and raise this dock: scene-tree, mesh, material, textures, culling, "
-                       "log, timeline, lab (may be repeated)."),
+                       "log, timeline, lab, acceleration (may be repeated)."),
         QStringLiteral("name"));
     const QCommandLineOption gpu_culling(
         QStringLiteral("gpu-culling"),
@@ -111,7 +130,23 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
         QStringLiteral("time"),
         QStringLiteral("Show the first animation at this time (seconds) once loaded."),
         QStringLiteral("seconds"));
-    p.addOptions({view, shot, quit, language, select, timing, dock, gpu_culling, overlay, time});
+    const QCommandLineOption rt(
+        QStringLiteral("rt"),
+        QStringLiteral(
+            "Ray tracing where the device has it: on (default; acceleration structures "
+            "built on load, the ray-traced viewport modes) or off (nothing RT is made)."),
+        QStringLiteral("on|off"), QStringLiteral("on"));
+    const QCommandLineOption mode(
+        QStringLiteral("mode"),
+        QStringLiteral("Viewport mode once loaded: raster, rt, split or difference."),
+        QStringLiteral("mode"));
+    const QCommandLineOption compare_with(
+        QStringLiteral("compare-with"),
+        QStringLiteral("Side B of split/difference: rt (the ray tracer), view:NAME (another "
+                       "debug view) or a glTF file."),
+        QStringLiteral("side"));
+    p.addOptions({view, shot, quit, language, select, timing, dock, gpu_culling, overlay, time, rt,
+                  mode, compare_with});
     p.process(arguments);
     const QStringList positional = p.positionalArguments();
     if (positional.size() > 1) {
@@ -128,6 +163,23 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
     out.docks = p.values(dock);
     out.gpu_culling = p.isSet(gpu_culling);
     out.overlays = p.values(overlay);
+    if (p.value(rt) != QLatin1String("on") && p.value(rt) != QLatin1String("off")) {
+        error = QStringLiteral("--rt needs on or off, not '%1'").arg(p.value(rt));
+        return false;
+    }
+    out.ray_tracing = p.value(rt) == QLatin1String("on");
+    out.mode = p.value(mode);
+    if (!out.mode.isEmpty() && !kModeNames.contains(out.mode)) {
+        error = QStringLiteral("unknown mode '%1' (one of: %2)")
+                    .arg(out.mode, kModeNames.join(QStringLiteral(", ")));
+        return false;
+    }
+    out.compare_with = p.value(compare_with);
+    if (out.compare_with.startsWith(QLatin1String("view:")) &&
+        !ViewCatalog::isView(out.compare_with.mid(5))) {
+        error = QStringLiteral("--compare-with: unknown view '%1'").arg(out.compare_with.mid(5));
+        return false;
+    }
     if (p.isSet(time)) {
         bool ok = false;
         out.time = p.value(time).toDouble(&ok);
@@ -218,6 +270,10 @@ void run_command_line(MainWindow& window, const CommandLine& cl, qint64 started_
             if (!window.selectNodeNamed(cl.select))
                 std::fprintf(stderr, "sherpa: no node '%s'\n", qPrintable(cl.select));
         });
+    if (!cl.mode.isEmpty() || !cl.compare_with.isEmpty())
+        QObject::connect(
+            &window, &MainWindow::sceneLoaded, &window,
+            [&window, cl] { apply_viewport_mode(window, cl); }, Qt::SingleShotConnection);
     if (cl.time >= 0.0)
         QObject::connect(&window, &MainWindow::sceneLoaded, &window,
                          [&window, t = cl.time] { window.timelineDock()->scrubTo(t); });

@@ -1,6 +1,7 @@
 #pragma once
 // sherpa [SCENE] [--view NAME] [--select NODE] [--screenshot OUT.png [--quit]] [--language CODE]
-//        [--timing] [--dock NAME ...] [--gpu-culling]
+//        [--timing] [--dock NAME ...] [--gpu-culling] [--rt on|off]
+//        [--mode raster|rt|split|difference] [--compare-with rt|view:NAME|FILE]
 #include <QString>
 #include <QStringList>
 
@@ -20,8 +21,11 @@ struct CommandLine {
     bool timing = false; // print launch/load/first-frame milliseconds to stdout
     QStringList docks;   // docks to show and raise (screenshots)
     bool gpu_culling = false;
-    QStringList overlays; // overlays to switch on (names of the engine's table)
-    double time = -1.0;   // timeline time to show once loaded (seconds); < 0: the start
+    QStringList overlays;    // overlays to switch on (names of the engine's table)
+    double time = -1.0;      // timeline time to show once loaded (seconds); < 0: the start
+    bool ray_tracing = true; // --rt: ray trace where the device can (MainWindow's argument)
+    QString mode;            // the viewport's mode once loaded: raster, rt, split, difference
+    QString compare_with;    // side B: rt, view:NAME or a file (empty: the default, rt)
 };
 
 // Returns false with `error` set on bad usage (unknown view, --quit without --screenshot...).

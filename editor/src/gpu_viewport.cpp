@@ -2,32 +2,21 @@
 // which would hide the Vulkan prototypes the engine's handle types are built on.
 #include <sherpa/gpu/context.h>
 #include <sherpa/gpu/devices.h>
+#include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/presenter.h>
+#include <sherpa/render/acceleration_structures.h>
 #include <sherpa/render/cull_check.h>
 #include <sherpa/render/gpu_scene.h>
 #include <sherpa/render/material_readback.h>
 #include <sherpa/render/presented_frame.h>
 #include <sherpa/render/renderer.h>
 
-#include "gpu_viewport.h"
+#include "gpu_viewport_impl.h"
 
 #include <QVulkanInstance>
 #include <cstring>
 
 namespace sherpa::editor {
-
-struct GpuViewport::Impl {
-    std::unique_ptr<gpu::Context> context;
-    std::unique_ptr<gpu::Renderer> renderer;
-    std::unique_ptr<gpu::Presenter> presenter;
-    gpu::FrameStats completed; // of the latest frame known complete (status bar, pass table)
-    std::uint64_t surface = 0;
-    std::uint32_t width = 0, height = 0;
-    SharedSession session; // on the GPU: its scene and prepared textures
-    bool all_streams = false;
-    bool reduced_prepass = false;                // setReducedFramePrepass()
-    std::unique_ptr<gpu::GpuCullChecker> culler; // CPU/GPU agreement checks, built per scene
-};
 
 GpuViewport::GpuViewport(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 
@@ -35,6 +24,7 @@ GpuViewport::~GpuViewport() {
     if (!impl_) return;
     impl_->culler.reset();
     impl_->presenter.reset();
+    impl_->b = {};
     impl_->renderer.reset();
     impl_->context.reset();
 }
@@ -49,14 +39,20 @@ void GpuViewport::configureInstance(QVulkanInstance& instance) {
     if (validation) instance.setLayers({QByteArrayLiteral("VK_LAYER_KHRONOS_validation")});
 }
 
-std::unique_ptr<GpuViewport> GpuViewport::create(QVulkanInstance& instance, QString& error) {
+std::unique_ptr<GpuViewport> GpuViewport::create(QVulkanInstance& instance, bool ray_tracing,
+                                                 QString& error) {
     try {
         auto impl = std::make_unique<Impl>();
         gpu::ContextOptions options;
         options.external_instance = instance.vkInstance();
         options.presentation = true;
+        options.ray_tracing = ray_tracing;
         impl->context = std::make_unique<gpu::Context>(options);
-        impl->renderer = std::make_unique<gpu::Renderer>(*impl->context);
+        // Acceleration structures only where the device ray traces: without, nothing
+        // RT-related is allocated.
+        gpu::RendererOptions renderer;
+        renderer.ray_tracing = impl->context->info().ray_tracing_enabled;
+        impl->renderer = std::make_unique<gpu::Renderer>(*impl->context, renderer);
         return std::unique_ptr<GpuViewport>(new GpuViewport(std::move(impl)));
     } catch (const std::exception& e) {
         error = QString::fromUtf8(e.what());
@@ -152,6 +148,15 @@ const Scene* GpuViewport::scene() const {
     return impl_->session ? impl_->session->scene.get() : nullptr;
 }
 
+bool GpuViewport::rayTracing() const {
+    return impl_->context->info().ray_tracing_enabled;
+}
+
+std::shared_ptr<const gpu::AccelerationStats> GpuViewport::accelerationStats() const {
+    const gpu::AccelerationStats* stats = impl_->renderer->acceleration_stats();
+    return stats ? std::make_shared<const gpu::AccelerationStats>(*stats) : nullptr;
+}
+
 QStringList GpuViewport::lastPassTimes() const {
     QStringList out;
     if (!impl_->presenter) return out;
@@ -176,8 +181,7 @@ void GpuViewport::releaseSurface() {
     impl_->surface = 0;
 }
 
-bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame, float scale) {
-    if (!surface || frame.width == 0 || frame.height == 0) return false;
+gpu::RenderSettings render_settings(const ViewportFrame& frame, float scale, bool reduced_prepass) {
     gpu::RenderSettings settings;
     settings.width = frame.width;
     settings.height = frame.height;
@@ -198,7 +202,21 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame, flo
     // 165 of 245 ms), so moving frames go without them; the still frame has them.
     // So does the depth prepass, unless asked for (setReducedFramePrepass).
     if (scale < 1.0f) settings.shadows = false;
-    if (scale < 1.0f && !impl_->reduced_prepass) settings.depth_prepass = gpu::PrepassMode::Off;
+    if (scale < 1.0f && !reduced_prepass) settings.depth_prepass = gpu::PrepassMode::Off;
+    // Rays draw the surface only: overlays and the selection are the rasterizer's,
+    // and a comparison shows the two sides' surfaces, nothing drawn over one of them.
+    if (frame.compare.rays() || frame.compare.comparing()) {
+        settings.overlays = 0;
+        settings.highlight_instance.reset();
+        settings.highlight_triangle.reset();
+        settings.highlight_vertex.reset();
+    }
+    if (frame.compare.mode == ViewportMode::RayTraced)
+        settings.renderer = gpu::RendererKind::RayTraced;
+    return settings;
+}
+
+void GpuViewport::preparePresenter(std::uint64_t surface, const ViewportFrame& frame) {
     if (!impl_->presenter || impl_->surface != surface) {
         impl_->presenter.reset();
         // Not FIFO: the render thread must not block on the display's refresh, and
@@ -217,10 +235,35 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame, flo
         impl_->width = frame.width;
         impl_->height = frame.height;
     }
-    gpu::PresentedFrame presented(*impl_->renderer, settings, scale);
-    const bool shown = impl_->presenter->present_frame(presented);
-    impl_->completed = presented.completed_stats(); // garbage: the presenter collects it
+}
+
+bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame, float scale) {
+    impl_->refusal.clear();
+    if (!surface || frame.width == 0 || frame.height == 0) return false;
+    const gpu::RenderSettings settings = render_settings(frame, scale, impl_->reduced_prepass);
+    preparePresenter(surface, frame);
+    if (frame.compare.comparing()) return presentComparison(frame, settings, scale);
+    impl_->b = {}; // side B lives only while comparing
+    impl_->difference = {};
+    std::optional<gpu::PresentedFrame> presented;
+    try {
+        presented.emplace(*impl_->renderer, settings, scale);
+    } catch (const gpu::GpuError& e) { // refused before anything was recorded
+        if (settings.renderer != gpu::RendererKind::RayTraced) throw;
+        impl_->refusal = QString::fromUtf8(e.what());
+        return false;
+    }
+    const bool shown = impl_->presenter->present_frame(*presented);
+    impl_->completed = presented->completed_stats(); // garbage: the presenter collects it
     return shown;
+}
+
+QString GpuViewport::lastRefusal() const {
+    return impl_->refusal;
+}
+
+DifferenceNumbers GpuViewport::lastDifference() const {
+    return impl_->difference;
 }
 
 std::optional<GpuMaterialReadback> GpuViewport::readMaterial(int material) {

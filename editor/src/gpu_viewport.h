@@ -19,8 +19,14 @@
 
 #include "material_dock.h"
 #include "scene_session.h"
+#include "viewport_mode.h"
 
 class QVulkanInstance;
+
+namespace sherpa::gpu {
+struct AccelerationStats;
+struct RenderSettings;
+} // namespace sherpa::gpu
 
 namespace sherpa::editor {
 
@@ -38,6 +44,8 @@ struct ViewportFrame {
     std::optional<CameraSpec> frozenCulling;    // cull from this camera instead
     std::shared_ptr<const Pose> pose;           // the timeline's; null: the scene as loaded
     std::optional<std::uint32_t> selectedJoint; // a joint node (skeleton, joint influence)
+    ViewportComparison compare;                 // raster, ray traced, split or difference
+    SharedSession compareSession;               // SideB::OtherFile: the other file
 };
 
 // Prepares a scene's textures as `plan` says (the texture pipeline: cache, BC7/BC5,
@@ -51,8 +59,11 @@ public:
     // Sets API version, extensions (and validation layer when on) that the engine
     // needs on a QVulkanInstance; call before create().
     static void configureInstance(QVulkanInstance& instance);
-    // Null with `error` set when the device lacks what the engine needs.
-    static std::unique_ptr<GpuViewport> create(QVulkanInstance& instance, QString& error);
+    // Null with `error` set when the device lacks what the engine needs. `ray_tracing`
+    // (the command line's --rt on|off): enable it where the device has it; the
+    // renderer then builds each scene's acceleration structures on upload.
+    static std::unique_ptr<GpuViewport> create(QVulkanInstance& instance, bool ray_tracing,
+                                               QString& error);
     ~GpuViewport();
 
     QString deviceName() const;
@@ -77,11 +88,21 @@ public:
     void useStreamsFor(const ViewportFrame& frame);
     // The scene last uploaded.
     const Scene* scene() const;
+    // Whether the renderer ray traces (device support and --rt on).
+    bool rayTracing() const;
+    // A copy of the uploaded scene's BLAS/TLAS statistics; null without ray tracing
+    // or a scene.
+    std::shared_ptr<const gpu::AccelerationStats> accelerationStats() const;
     // Presents one frame on `surface` (the swapchain is created on first use and
     // recreated when the size changes), each side drawn at `scale` of the frame's
     // size and scaled up, without shadows (interaction on slow devices). False when
     // it was skipped.
     bool present(std::uint64_t surface, const ViewportFrame& frame, float scale = 1.0f);
+    // Why the last present() drew nothing: what the ray tracer refused (a view
+    // without a ray formula, a posed frame...); empty when it drew.
+    QString lastRefusal() const;
+    // The difference numbers of the latest completed comparison frame.
+    DifferenceNumbers lastDifference() const;
     // Waits until the queue is idle (the presented frame is on screen).
     void finish();
     // Drops the swapchain (before the window's surface goes away).
@@ -123,6 +144,9 @@ private:
     struct Impl;
     explicit GpuViewport(std::unique_ptr<Impl> impl);
     void upload();
+    void preparePresenter(std::uint64_t surface, const ViewportFrame& frame);
+    // gpu_viewport_compare.cpp: side B loaded as `frame` asks, both drawn and composited.
+    bool presentComparison(const ViewportFrame& frame, const gpu::RenderSettings& a, float scale);
     std::unique_ptr<Impl> impl_;
 };
 

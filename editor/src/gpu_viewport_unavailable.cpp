@@ -16,7 +16,7 @@ void GpuViewport::configureInstance(QVulkanInstance& instance) {
     instance.setApiVersion(QVersionNumber(1, 3));
 }
 
-std::unique_ptr<GpuViewport> GpuViewport::create(QVulkanInstance&, QString& error) {
+std::unique_ptr<GpuViewport> GpuViewport::create(QVulkanInstance&, bool, QString& error) {
     error = QStringLiteral("this build has no renderer (engine/gpu)");
     return nullptr;
 }
@@ -37,6 +37,18 @@ void GpuViewport::setSession(SharedSession) {}
 void GpuViewport::useStreamsFor(const ViewportFrame&) {}
 void GpuViewport::upload() {}
 void GpuViewport::finish() {}
+QString GpuViewport::lastRefusal() const {
+    return {};
+}
+DifferenceNumbers GpuViewport::lastDifference() const {
+    return {};
+}
+bool GpuViewport::rayTracing() const {
+    return false;
+}
+std::shared_ptr<const gpu::AccelerationStats> GpuViewport::accelerationStats() const {
+    return nullptr;
+}
 QStringList GpuViewport::lastPassTimes() const {
     return {};
 }

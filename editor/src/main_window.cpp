@@ -7,6 +7,7 @@
 #include <QDropEvent>
 #include <QElapsedTimer>
 #include <QFileInfo>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QMessageBox>
 #include <QMimeData>
@@ -19,8 +20,11 @@
 #include <QTimer>
 #include <QVulkanInstance>
 
+#include "acceleration_dock.h"
+#include "compare_controls.h"
 #include "culling_dock.h"
 #include "culling_monitor.h"
+#include "difference_legend.h"
 #include "gpu_viewport.h"
 #include "lab_dock.h"
 #include "log_dock.h"
@@ -49,8 +53,8 @@ bool is_scene_file(const QString& path) {
 }
 } // namespace
 
-MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent)
-    : QMainWindow(parent), vulkan_(vulkan) {
+MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent, bool ray_tracing)
+    : QMainWindow(parent), vulkan_(vulkan), ray_tracing_asked_(ray_tracing) {
     setObjectName(QStringLiteral("sherpaMainWindow"));
     setWindowIcon(QIcon(QStringLiteral(":/sherpa.svg")));
     setAcceptDrops(true);
@@ -62,7 +66,17 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent)
     viewport_container_->setObjectName(QStringLiteral("viewport"));
     viewport_container_->setMinimumSize(320, 240);
     viewport_container_->setFocusPolicy(Qt::StrongFocus);
-    setCentralWidget(viewport_container_);
+    // The difference legend beside the viewport, shown in Difference mode only.
+    auto* centre = new QWidget(this);
+    auto* centre_layout = new QHBoxLayout(centre);
+    centre_layout->setContentsMargins(0, 0, 0, 0);
+    centre_layout->setSpacing(0);
+    legend_ = new DifferenceLegend(centre);
+    legend_->hide();
+    centre_layout->addWidget(viewport_container_, 1);
+    centre_layout->addWidget(legend_);
+    setCentralWidget(centre);
+    compare_ = new CompareControls(this);
 
     progress_ = new QProgressBar(this);
     progress_->setMaximumWidth(220);
@@ -113,6 +127,7 @@ void MainWindow::createDocks() {
     culling_dock_ = new CullingDock(*culling_, this);
     log_ = new LogDock(this);
     lab_ = new LabDock(context_, this);
+    acceleration_ = new AccelerationDock(context_, this);
     for (QDockWidget* d : findChildren<QDockWidget*>()) {
         // A dock's width is the user's, never its content's: without this, a long
         // summary line (selecting a primitive) widens the mesh dock and squeezes the
@@ -145,6 +160,7 @@ void MainWindow::resetLayout() {
     addDockWidget(Qt::RightDockWidgetArea, mesh_);
     tabifyDockWidget(scene_tree_, culling_dock_);
     tabifyDockWidget(culling_dock_, log_);
+    tabifyDockWidget(log_, acceleration_);
     tabifyDockWidget(mesh_, material_);
     tabifyDockWidget(material_, textures_);
     tabifyDockWidget(textures_, lab_);
@@ -189,6 +205,8 @@ void MainWindow::connectActions() {
     connect(scene_tree_, &SceneTreeDock::visibilityRequested, &context_,
             &EditorContext::setNodeVisible);
     connect(scene_tree_, &SceneTreeDock::jumpToCameraRequested, this, &MainWindow::jumpToCamera);
+    connect(acceleration_, &AccelerationDock::selectMeshRequested, &context_,
+            &EditorContext::selectMesh);
     connect(mesh_, &MeshDock::selectVertexRequested, &context_, &EditorContext::selectVertex);
     connect(mesh_, &MeshDock::selectTriangleRequested, &context_, &EditorContext::selectTriangle);
     connect(material_, &MaterialDock::selectTextureRequested, this, [this](int texture) {
@@ -200,6 +218,7 @@ void MainWindow::connectActions() {
             &EditorContext::selectTexture);
 
     connectLab();
+    connectCompare();
     connect(&loader_, &SceneLoadJob::loaded, this, &MainWindow::onLoaded);
     connect(&loader_, &SceneLoadJob::failed, this, &MainWindow::onLoadFailed);
     connect(&loader_, &SceneLoadJob::progress, this, &MainWindow::onProgress);

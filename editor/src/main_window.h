@@ -22,7 +22,10 @@ class QVulkanInstance;
 
 namespace sherpa::editor {
 
+class AccelerationDock;
+class CompareControls;
 class CullingDock;
+class DifferenceLegend;
 class CullingMonitor;
 class LabDock;
 class RenderThread;
@@ -39,7 +42,10 @@ class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
     // `vulkan` may be null (no Vulkan): the viewport then stays empty and says why.
-    explicit MainWindow(QVulkanInstance* vulkan, QWidget* parent = nullptr);
+    // `ray_tracing` (--rt on|off): ray trace where the device can (RT viewport modes,
+    // acceleration structures built on upload).
+    explicit MainWindow(QVulkanInstance* vulkan, QWidget* parent = nullptr,
+                        bool ray_tracing = true);
     ~MainWindow() override;
 
     const EditorContext& context() const { return context_; }
@@ -51,6 +57,9 @@ public:
     TimelineDock* timelineDock() const { return timeline_; }
     LogDock* logDock() const { return log_; }
     LabDock* labDock() const { return lab_; }
+    AccelerationDock* accelerationDock() const { return acceleration_; }
+    // The renderer ray traces (device support and --rt on); false until the device is known.
+    bool rayTracing() const { return ray_tracing_; }
     CullingMonitor& cullingMonitor() const { return *culling_; }
     ViewportWindow* viewport() const { return viewport_; }
     SceneLoadJob& loader() { return loader_; }
@@ -95,6 +104,15 @@ public:
     const QString& lastProgressText() const { return last_progress_; }
     // The thread that owns the engine and draws; null without a usable Vulkan device.
     RenderThread* renderer() const { return render_.get(); }
+    // The viewport's mode switch and side B of a comparison (main_window_compare.cpp).
+    CompareControls& compareControls() const { return *compare_; }
+    DifferenceLegend* differenceLegend() const { return legend_; }
+    // Loads `spec` as side B of the comparison (File dialog of "Another File…");
+    // `source_textures`: its textures uploaded as decoded from their images, not
+    // through BC7/BC5 (the compression's error against the source).
+    void compareWithFile(const QString& spec, bool source_textures = false);
+    // The other file's session while comparing with it (null otherwise).
+    const SharedSession& compareSession() const { return compare_session_; }
 
 Q_SIGNALS:
     void sceneLoaded(const QString& spec, double ms);
@@ -123,6 +141,8 @@ private:
     // The render thread has made its device or failed to: open the scene asked for.
     void deviceKnown();
     void uploadScene();
+    // Why the acceleration dock has no structures (--rt off, device, scene).
+    QString noAccelerationReason() const;
     // The uploaded textures' warnings (missing, undecodable...) and notices, once per set.
     void logTextureMessages();
     // What the viewport should show now (size, camera, view, selection...).
@@ -134,6 +154,12 @@ private:
     void updateStreams();
     void connectActions();
     void connectLab(); // main_window_lab.cpp
+    // main_window_compare.cpp
+    void connectCompare();
+    void onCompareChanged();
+    // A frame the ray tracer refused: said in the log and status bar, back to raster.
+    void onRefused(const QString& why);
+    TexturePlan texturePlan() const; // the device's, with the cache settings of now
     void onLoaded(SharedSession session);
     void onLoadFailed(const QString& spec, const QString& error);
     void onProgress(LoadStep step, int done, int total);
@@ -151,6 +177,8 @@ private:
     std::unique_ptr<RenderThread> render_; // null without a usable Vulkan device
     TexturePlan device_plan_;              // the device's side of the loader's texture plan
     bool device_pending_ = false;          // the render thread is still making the device
+    bool ray_tracing_asked_ = true;        // --rt on|off
+    bool ray_tracing_ = false;             // the device's renderer ray traces
     QString pending_open_;                 // asked for while the device was pending
     bool gpu_failed_ = false;              // a frame threw: stop drawing, say so once
     std::weak_ptr<const tex::PreparedTextureSet> logged_textures_; // logTextureMessages()
@@ -167,6 +195,12 @@ private:
     TimelineDock* timeline_ = nullptr; // animation playback: the pose each frame draws
     LogDock* log_ = nullptr;
     LabDock* lab_ = nullptr;
+    CompareControls* compare_ = nullptr;
+    DifferenceLegend* legend_ = nullptr;
+    SceneLoadJob compare_loader_;   // side B's file
+    SharedSession compare_session_; // loaded by it, kept while comparing with it
+    QString compare_label_;         // what side B shows (the file, its textures)
+    AccelerationDock* acceleration_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;
     QLabel* frame_label_ = nullptr;

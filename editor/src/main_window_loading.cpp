@@ -31,6 +31,10 @@ void MainWindow::openScene(const QString& spec) {
         return;
     }
     log_->append(LogDock::Level::Info, tr("Loading %1…").arg(spec));
+    loader_.start(spec, texturePlan());
+}
+
+TexturePlan MainWindow::texturePlan() const {
     // Textures are prepared on the loader thread for this device, with the cache
     // settings of this moment.
     TexturePlan plan = device_plan_;
@@ -39,7 +43,7 @@ void MainWindow::openScene(const QString& spec) {
     plan.bc7_level = quality == QLatin1String("fast")   ? tex::kBc7MinLevel
                      : quality == QLatin1String("best") ? tex::kBc7MaxLevel
                                                         : tex::kBc7DefaultLevel;
-    loader_.start(spec, plan);
+    return plan;
 }
 
 void MainWindow::reloadScene() {

@@ -18,8 +18,11 @@
 #include <QUrl>
 #include <QVulkanInstance>
 
+#include "acceleration_dock.h"
+#include "compare_controls.h"
 #include "culling_dock.h"
 #include "culling_monitor.h"
+#include "difference_legend.h"
 #include "gpu_viewport.h"
 #include "lab_dock.h"
 #include "log_dock.h"
@@ -201,6 +204,7 @@ void MainWindow::createMenus() {
     a.view->addAction(a.frame_selection);
     a.view->addAction(a.fly);
     a.view->addAction(a.missing_checker);
+    a.view->addMenu(compare_->menu());
     a.cameras = a.view->addMenu(QString());
     connect(a.cameras, &QMenu::aboutToShow, this, [this] {
         Actions& acts = *a_;
@@ -225,7 +229,8 @@ void MainWindow::createMenus() {
          {static_cast<QDockWidget*>(scene_tree_), static_cast<QDockWidget*>(mesh_),
           static_cast<QDockWidget*>(material_), static_cast<QDockWidget*>(textures_),
           static_cast<QDockWidget*>(culling_dock_), static_cast<QDockWidget*>(log_),
-          static_cast<QDockWidget*>(timeline_), static_cast<QDockWidget*>(lab_)})
+          static_cast<QDockWidget*>(timeline_), static_cast<QDockWidget*>(lab_),
+          static_cast<QDockWidget*>(acceleration_)})
         a.docks->addAction(d->toggleViewAction());
     a.view->addAction(a.reset_layout);
 
@@ -258,6 +263,7 @@ void MainWindow::createMenus() {
     a.view_button->setMenu(a.debug_views);
     a.view_button->setPopupMode(QToolButton::InstantPopup);
     a.toolbar->addWidget(a.view_button);
+    compare_->addToToolBar(a.toolbar);
     for (QAction* act : a.overlay_actions) a.toolbar->addAction(act);
     a.toolbar->addSeparator();
     a.toolbar->addAction(a.frame_all);
@@ -335,6 +341,9 @@ void MainWindow::retranslate() {
     culling_dock_->retranslate();
     log_->retranslate();
     timeline_->retranslate();
+    acceleration_->retranslate();
+    compare_->retranslate();
+    legend_->retranslate();
     // Models read tr() in headerData/data: tell the views to ask again. Source models
     // only, each change announced first: a proxy forwards its source's signals, and a
     // bare layoutChanged() on it left its persistent indices dangling (a crash when a

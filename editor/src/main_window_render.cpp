@@ -8,8 +8,11 @@
 #include <QLabel>
 #include <utility>
 
+#include "acceleration_dock.h"
+#include "compare_controls.h"
 #include "culling_dock.h"
 #include "culling_monitor.h"
+#include "difference_legend.h"
 #include "gpu_viewport.h"
 #include "log_dock.h"
 #include "material_dock.h"
@@ -38,13 +41,17 @@ void MainWindow::createRenderer() {
     // for meanwhile starts loading when it is known, either way.
     device_pending_ = true;
     render_ = std::make_unique<RenderThread>(
-        [instance = vulkan_](QString& error) { return GpuViewport::create(*instance, error); });
+        [instance = vulkan_, rt = ray_tracing_asked_](QString& error) {
+            return GpuViewport::create(*instance, rt, error);
+        });
     connect(render_.get(), &RenderThread::deviceReady, this,
-            [this](const TexturePlan& plan, const QString& name, double ms) {
+            [this](const TexturePlan& plan, const QString& name, double ms, bool rt) {
                 log_->append(
                     LogDock::Level::Info,
                     tr("Rendering on %1 (renderer ready in %2 ms).").arg(name).arg(ms, 0, 'f', 1));
                 device_plan_ = plan;
+                ray_tracing_ = rt;
+                compare_->setRayTracing(rt);
                 deviceKnown();
             });
     connect(render_.get(), &RenderThread::deviceFailed, this, [this](const QString& error) {
@@ -119,10 +126,23 @@ void MainWindow::uploadScene() {
         gpu.useStreamsFor(streams);
         gpu.setSession(session);
         const auto bytes = static_cast<std::int64_t>(gpu.textureBytes());
-        QMetaObject::invokeMethod(this, [this, bytes] { textures_->setGpuBytes(bytes); });
+        // Built on upload (ray tracing on): handed over as data, for this session only.
+        QMetaObject::invokeMethod(this, [this, bytes, session, stats = gpu.accelerationStats()] {
+            textures_->setGpuBytes(bytes);
+            if (session == context_.sharedSession())
+                acceleration_->setStats(stats, noAccelerationReason());
+        });
     });
     render_->forgetMotion(); // the new scene's first frame at full size
     viewport_->scheduleFrame();
+}
+
+QString MainWindow::noAccelerationReason() const {
+    if (!ray_tracing_asked_)
+        return tr("Ray tracing is off (--rt off): no acceleration structures.");
+    if (!ray_tracing_) return tr("The device does not ray trace: no acceleration structures.");
+    if (!context_.scene()) return tr("No scene.");
+    return tr("The scene has no triangles: no acceleration structures.");
 }
 
 void MainWindow::updateStreams() {
@@ -144,6 +164,8 @@ ViewportFrame MainWindow::currentFrame() const {
     frame.gpuCulling = a_->gpu_path->isChecked();
     frame.cullMethod = culling_->method();
     if (culling_->frozen()) frame.frozenCulling = culling_->cullingCamera();
+    frame.compare = compare_->state();
+    frame.compareSession = compare_session_;
     const Selection& sel = context_.selection();
     frame.pose = timeline_->pose();
     if (const Scene* scene = context_.scene();
@@ -165,6 +187,11 @@ void MainWindow::renderFrame() {
 }
 
 void MainWindow::onFrameDone(const FrameReport& report) {
+    if (!report.refused.isEmpty()) {
+        onRefused(report.refused);
+        return;
+    }
+    if (report.difference.valid) legend_->setNumbers(report.difference);
     // Skipped because the swapchain was out of date and has just been recreated:
     // draw again at the new size, or the last size change would never show.
     if (!report.shown) {

@@ -119,8 +119,9 @@ bool RenderThread::makeDevice() {
         QMetaObject::invokeMethod(this, [this, error] { Q_EMIT deviceFailed(error); });
         return false;
     }
-    QMetaObject::invokeMethod(this, [this, plan = gpu_->texturePlan(), name = gpu_->deviceName(),
-                                     ms = ms_since(start)] { Q_EMIT deviceReady(plan, name, ms); });
+    QMetaObject::invokeMethod(
+        this, [this, plan = gpu_->texturePlan(), name = gpu_->deviceName(), ms = ms_since(start),
+               rt = gpu_->rayTracing()] { Q_EMIT deviceReady(plan, name, ms, rt); });
     return true;
 }
 
@@ -193,6 +194,8 @@ void RenderThread::draw(GpuViewport& gpu, const Request& request, bool still) {
         return;
     }
     report.ms = ms_since(start);
+    report.refused = gpu.lastRefusal();
+    report.difference = gpu.lastDifference();
     report.gpu_ms = gpu.lastGpuMs();
     report.cull_passes = gpu.lastCullPasses(report.passes, report.cached_shadows);
     {

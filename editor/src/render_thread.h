@@ -35,6 +35,8 @@ struct FrameReport {
     bool cull_passes = false;            // the renderer's culling passes are known
     std::vector<CullStats> passes;
     bool cached_shadows = false;
+    QString refused; // not drawn: what the ray tracer refused (GpuViewport::lastRefusal)
+    DifferenceNumbers difference; // comparison frames: the latest completed difference
 };
 
 class RenderThread : public QObject {
@@ -80,7 +82,9 @@ public:
 Q_SIGNALS:
     // The device exists (GUI thread): what the loader's texture plan needs of it,
     // its name and how long making it took.
-    void deviceReady(const sherpa::editor::TexturePlan& plan, const QString& name, double ms);
+    // `ray_tracing`: the renderer ray traces (acceleration structures built on upload).
+    void deviceReady(const sherpa::editor::TexturePlan& plan, const QString& name, double ms,
+                     bool ray_tracing);
     // It could not be made: nothing will be drawn, posted tasks are dropped.
     void deviceFailed(const QString& error);
     void frameDone(const sherpa::editor::FrameReport& report);

@@ -6,6 +6,8 @@
 #include <QPlatformSurfaceEvent>
 #include <QVulkanInstance>
 #include <QWheelEvent>
+#include <algorithm>
+#include <cmath>
 
 namespace sherpa::editor {
 
@@ -76,15 +78,43 @@ void ViewportWindow::frameDrawn(double ms) {
     Q_EMIT frameRendered(ms);
 }
 
+void ViewportWindow::setDivider(std::optional<float> fraction) {
+    divider_ = fraction;
+    if (!divider_) {
+        dragging_divider_ = false;
+        unsetCursor();
+    }
+}
+
+bool ViewportWindow::nearDivider(QPointF p) const {
+    return divider_ && std::abs(p.x() - double(*divider_) * width()) <= kDividerGrabPixels;
+}
+
 void ViewportWindow::mousePressEvent(QMouseEvent* e) {
     auto_frame_ = false;
     press_pos_ = last_pos_ = e->position();
     buttons_ = e->buttons();
     dragged_ = false;
+    dragging_divider_ = divider_ && e->button() == Qt::LeftButton &&
+                        (nearDivider(e->position()) || (e->modifiers() & Qt::ControlModifier));
 }
 
 void ViewportWindow::mouseMoveEvent(QMouseEvent* e) {
-    if (e->buttons() == Qt::NoButton) return;
+    if (dragging_divider_ && (e->buttons() & Qt::LeftButton) && width() > 0) {
+        dragged_ = true; // not a pick
+        divider_ = static_cast<float>(std::clamp(e->position().x() / width(), 0.0, 1.0));
+        Q_EMIT dividerMoved(*divider_);
+        scheduleFrame();
+        return;
+    }
+    if (e->buttons() == Qt::NoButton) {
+        // The grab zone shows itself: the split cursor over the divider.
+        if (nearDivider(e->position()))
+            setCursor(Qt::SplitHCursor);
+        else if (divider_)
+            unsetCursor();
+        return;
+    }
     const QPointF d = e->position() - last_pos_;
     last_pos_ = e->position();
     if ((e->position() - press_pos_).manhattanLength() > kClickSlopPixels) dragged_ = true;
@@ -107,6 +137,7 @@ void ViewportWindow::mouseReleaseEvent(QMouseEvent* e) {
         Q_EMIT clicked(QPointF(2.0 * p.x() / width() - 1.0, 1.0 - 2.0 * p.y() / height()));
     }
     buttons_ = Qt::NoButton;
+    dragging_divider_ = false;
 }
 
 void ViewportWindow::wheelEvent(QWheelEvent* e) {

@@ -9,6 +9,7 @@
 #include <QWindow>
 
 #include <functional>
+#include <optional>
 
 #include "orbit_camera.h"
 
@@ -42,6 +43,12 @@ public:
     std::uint64_t framesRendered() const { return frames_; }
     // Asks for a frame now, not at the next paced update.
     void renderNow();
+    // Split view: the divider at this fraction of the width (none: no divider). A
+    // left drag that starts within kDividerGrabPixels of it (the cursor shows it), or
+    // with Ctrl held anywhere, moves it instead of the camera.
+    void setDivider(std::optional<float> fraction);
+    std::optional<float> divider() const { return divider_; }
+    static constexpr double kDividerGrabPixels = 8.0;
 
 Q_SIGNALS:
     void cameraChanged();
@@ -49,6 +56,7 @@ Q_SIGNALS:
     void frameAllRequested();
     void frameSelectionRequested();
     void frameRendered(double ms);
+    void dividerMoved(float fraction); // dragged by the user, 0..1 of the width
     // The native window (and with it the Vulkan surface) is about to go: whoever
     // presents to it must drop its swapchain now.
     void surfaceAboutToBeDestroyed();
@@ -66,12 +74,15 @@ protected:
 
 private:
     void flyStep();
+    bool nearDivider(QPointF p) const;
 
     OrbitCamera camera_;
     std::function<void()> frame_;
     QPointF press_pos_, last_pos_;
     Qt::MouseButtons buttons_;
     bool dragged_ = false;
+    std::optional<float> divider_;
+    bool dragging_divider_ = false;
     bool fly_ = false;
     bool auto_frame_ = false;
     QSet<int> keys_held_;

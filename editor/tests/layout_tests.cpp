@@ -7,15 +7,20 @@
 #include <QDockWidget>
 #include <QGraphicsTextItem>
 #include <QHeaderView>
+#include <QLabel>
 #include <QStyle>
 #include <QTabBar>
 #include <QTableView>
+#include <QToolBar>
+#include <QToolButton>
 #include <QTreeView>
 #include <QVulkanInstance>
 #include <QtTest>
 
 #include "command_line.h"
+#include "compare_controls.h"
 #include "culling_dock.h"
+#include "difference_legend.h"
 #include "editor_settings.h"
 #include "gpu_viewport.h"
 #include "lab_dock.h"
@@ -28,6 +33,7 @@
 #include "scene_tree_dock.h"
 #include "test_assets.h"
 #include "texture_dock.h"
+#include "view_catalog.h"
 #include "viewport_window.h"
 #include "window_test_support.h"
 
@@ -170,6 +176,7 @@ private Q_SLOTS:
     void passTableFilledByTheFirstFrame();
     void nothingIsCutOffInAnyLanguage();
     void motionSceneIsNotCutOff();
+    void viewportModesAreNotCutOff();
 
 private:
     // A window of 1600×1000 with builtin:default loaded and the sphere selected,
@@ -360,6 +367,46 @@ void LayoutTests::motionSceneIsNotCutOff() {
         QVERIFY(w->selectNodeNamed(QStringLiteral("1")));
         w->sceneTreeDock()->view()->expandAll();
         const QStringList cut = cut_in_every_dock(*w);
+        QVERIFY2(cut.isEmpty(), qPrintable(language + ": " + cut.join(QStringLiteral("\n"))));
+    }
+}
+
+void LayoutTests::viewportModesAreNotCutOff() {
+    // The mode switch's toolbar buttons and the difference legend beside the viewport
+    // (issues 17, 18), in Difference mode with numbers, in every language.
+    if (!vulkan_.isValid()) QSKIP("no Vulkan");
+    for (const QString& language :
+         {QStringLiteral("en"), QStringLiteral("de"), QStringLiteral("zh_CN")}) {
+        std::unique_ptr<MainWindow> w = launch(language);
+        QVERIFY(w);
+        w->compareControls().setSide(SideB::OtherView, *ViewCatalog::viewId(QStringLiteral("uv0")));
+        w->compareControls().setMode(ViewportMode::Difference);
+        // Numbers of the latest completed frame: a few frames on.
+        for (int i = 0; i < 20 && !w->lastReport().difference.valid; ++i) {
+            w->renderer()->renderAndWait(w->lastFrame(), w->viewport()->vulkanSurface());
+            QCoreApplication::processEvents();
+        }
+        QVERIFY(w->lastReport().difference.valid);
+        wait_settled(*w);
+        QStringList cut;
+        // The window's minimum width still fits the screen (the toolbar overflows).
+        if (w->minimumSizeHint().width() > kWindow.width())
+            cut << QStringLiteral("minimum width %1").arg(w->minimumSizeHint().width());
+        // Toolbar buttons on the bar are whole (those past its end are in its menu).
+        for (auto* bar : w->findChildren<QToolBar*>())
+            for (auto* button : bar->findChildren<QToolButton*>())
+                if (button->isVisible() && button->width() < button->sizeHint().width())
+                    cut << QStringLiteral("toolbar: %1 (%2 < %3)")
+                               .arg(button->text())
+                               .arg(button->width())
+                               .arg(button->sizeHint().width());
+        // The legend's texts fit its width and height.
+        for (QLabel* label : w->differenceLegend()->findChildren<QLabel*>()) {
+            if (label->pixmap().isNull() &&
+                (label->wordWrap() ? label->heightForWidth(label->width()) > label->height()
+                                   : label->sizeHint().width() > label->width()))
+                cut << QStringLiteral("legend: %1").arg(label->text());
+        }
         QVERIFY2(cut.isEmpty(), qPrintable(language + ": " + cut.join(QStringLiteral("\n"))));
     }
 }

@@ -399,6 +399,10 @@ Context& Renderer::context() {
     return impl_->context;
 }
 
+const AccelerationStats* Renderer::acceleration_stats() const {
+    return impl_->acceleration && impl_->scene ? &impl_->acceleration->stats() : nullptr;
+}
+
 std::uint64_t Renderer::render_target_bytes() const {
     return impl_->render_target_bytes();
 }

@@ -27,6 +27,8 @@ struct PreparedTextureSet;
 
 namespace sherpa::gpu {
 
+struct AccelerationStats; // sherpa/render/acceleration_structures.h
+
 class Context;
 class ResourceManager;
 class GpuScene;
@@ -104,6 +106,9 @@ public:
     void set_texture_settings(const TextureSettings& settings);
     void unload();
     const GpuScene* scene() const;
+    // The loaded scene's acceleration structures (BLAS/TLAS statistics); null without
+    // RendererOptions::ray_tracing or a scene.
+    const AccelerationStats* acceleration_stats() const;
 
     // Renders one frame offscreen and waits for it. With `rgba` set, reads the
     // image back as tightly packed sRGB-encoded RGBA8 rows, top row first.

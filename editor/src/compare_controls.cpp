@@ -1,0 +1,203 @@
+#include "compare_controls.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QMenu>
+#include <QToolBar>
+#include <QToolButton>
+#include <cmath>
+
+#include "view_catalog.h"
+
+namespace sherpa::editor {
+
+namespace {
+// Of 255 (sRGB bytes); 0: automatic.
+constexpr int kHeatScales[] = {4, 16, 64, 0};
+constexpr int kThresholds[] = {1, 2, 4, 8};
+} // namespace
+
+CompareControls::CompareControls(QWidget* parent) : QObject(parent) {
+    menu_ = new QMenu(parent);
+    modes_ = new QActionGroup(this);
+    for (ViewportMode m : {ViewportMode::Raster, ViewportMode::RayTraced, ViewportMode::Split,
+                           ViewportMode::Difference}) {
+        QAction* act = modes_->addAction(QString());
+        act->setCheckable(true);
+        connect(act, &QAction::triggered, this, [this, m] { setMode(m); });
+        mode_actions_.push_back(act);
+        menu_->addAction(act);
+    }
+    menu_->addSeparator();
+    side_menu_ = menu_->addMenu(QString());
+    sides_ = new QActionGroup(this);
+    side_rays_ = sides_->addAction(QString());
+    side_rays_->setCheckable(true);
+    connect(side_rays_, &QAction::triggered, this, [this] { setSide(SideB::RayTraced); });
+    side_menu_->addAction(side_rays_);
+    side_views_ = side_menu_->addMenu(QString());
+    for (const ViewEntry& v : ViewCatalog::views()) {
+        QAction* act = sides_->addAction(QString());
+        act->setCheckable(true);
+        const std::uint32_t id = v.id;
+        connect(act, &QAction::triggered, this, [this, id] { setSide(SideB::OtherView, id); });
+        view_actions_.push_back(act);
+        side_views_->addAction(act);
+    }
+    side_file_ = sides_->addAction(QString());
+    side_file_->setCheckable(true);
+    // Always asks (another file, or the same one again): the choice lands in setOtherFile.
+    connect(side_file_, &QAction::triggered, this, [this] {
+        sync(); // keeps the current side checked until a file is loaded
+        Q_EMIT otherFileRequested();
+    });
+    side_menu_->addAction(side_file_);
+    heat_menu_ = menu_->addMenu(QString());
+    threshold_menu_ = menu_->addMenu(QString());
+    auto* heats = new QActionGroup(this);
+    for (const int h : kHeatScales) {
+        QAction* act = heats->addAction(QString());
+        act->setCheckable(true);
+        connect(act, &QAction::triggered, this, [this, h] { setHeatScale(float(h) / 255.0f); });
+        heat_actions_.push_back(act);
+        heat_menu_->addAction(act);
+    }
+    auto* thresholds = new QActionGroup(this);
+    for (const int t : kThresholds) {
+        QAction* act = thresholds->addAction(QString());
+        act->setCheckable(true);
+        connect(act, &QAction::triggered, this, [this, t] { setThreshold(float(t) / 255.0f); });
+        threshold_actions_.push_back(act);
+        threshold_menu_->addAction(act);
+    }
+    side_source_ = side_menu_->addAction(QString());
+    connect(side_source_, &QAction::triggered, this, &CompareControls::sourceTexturesRequested);
+    sync();
+}
+
+void CompareControls::addToToolBar(QToolBar* bar) {
+    mode_button_ = new QToolButton(bar);
+    mode_button_->setObjectName(QStringLiteral("viewportModeButton"));
+    mode_button_->setMenu(menu_);
+    mode_button_->setPopupMode(QToolButton::InstantPopup);
+    side_button_ = new QToolButton(bar);
+    side_button_->setObjectName(QStringLiteral("compareSideButton"));
+    side_button_->setMenu(side_menu_);
+    side_button_->setPopupMode(QToolButton::InstantPopup);
+    bar->addWidget(mode_button_);
+    bar->addWidget(side_button_);
+    retranslate();
+}
+
+void CompareControls::setMode(ViewportMode mode) {
+    state_.mode = mode;
+    sync();
+    Q_EMIT changed();
+}
+
+void CompareControls::setSide(SideB side, std::uint32_t view) {
+    state_.side = side;
+    state_.view = view;
+    sync();
+    Q_EMIT changed();
+}
+
+void CompareControls::setDivider(float fraction) {
+    state_.divider = fraction;
+    Q_EMIT changed();
+}
+
+void CompareControls::setHeatScale(float heat_max) {
+    state_.heat_max = heat_max;
+    sync();
+    Q_EMIT changed();
+}
+
+void CompareControls::setThreshold(float threshold) {
+    state_.threshold = threshold;
+    sync();
+    Q_EMIT changed();
+}
+
+void CompareControls::setRayTracing(bool available) {
+    mode_actions_[static_cast<std::size_t>(ViewportMode::RayTraced)]->setEnabled(available);
+    side_rays_->setEnabled(available);
+    // Without rays, a comparison starts against the normal view.
+    if (!available && state_.side == SideB::RayTraced) {
+        state_.side = SideB::OtherView;
+        if (const auto normal = ViewCatalog::viewId(QStringLiteral("normal")))
+            state_.view = *normal;
+    }
+    sync();
+}
+
+void CompareControls::setOtherFile(const QString& name) {
+    other_file_ = name;
+    retranslate();
+}
+
+void CompareControls::sync() {
+    mode_actions_[static_cast<std::size_t>(state_.mode)]->setChecked(true);
+    side_rays_->setChecked(state_.side == SideB::RayTraced);
+    side_file_->setChecked(state_.side == SideB::OtherFile);
+    const std::vector<ViewEntry> views = ViewCatalog::views();
+    for (std::size_t i = 0; i < views.size(); ++i)
+        view_actions_[i]->setChecked(state_.side == SideB::OtherView && views[i].id == state_.view);
+    for (std::size_t i = 0; i < heat_actions_.size(); ++i)
+        heat_actions_[i]->setChecked(std::lround(state_.heat_max * 255.0f) == kHeatScales[i]);
+    for (std::size_t i = 0; i < threshold_actions_.size(); ++i)
+        threshold_actions_[i]->setChecked(std::lround(state_.threshold * 255.0f) == kThresholds[i]);
+    if (side_button_) side_button_->setEnabled(state_.comparing());
+    retranslate();
+}
+
+void CompareControls::retranslate() {
+    const QString modes[] = {tr("Raster"), tr("Ray traced"), tr("Split (A | B)"),
+                             tr("Difference (heat map)")};
+    for (std::size_t i = 0; i < mode_actions_.size(); ++i) mode_actions_[i]->setText(modes[i]);
+    const QString tips[] = {
+        tr("The rasterizer: every view, overlays and the selection"),
+        tr("Primary rays through the acceleration structures: the surface-data views"),
+        tr("Side A left, side B right, one camera: drag the divider line (or Ctrl+drag "
+           "anywhere) to move it"),
+        tr("Heat map of |A − B| with its legend: mean, max, PSNR, % of pixels over the "
+           "threshold")};
+    for (std::size_t i = 0; i < mode_actions_.size(); ++i) {
+        mode_actions_[i]->setStatusTip(tips[i]);
+        mode_actions_[i]->setToolTip(tips[i]);
+    }
+    menu_->setTitle(tr("Viewport &Mode"));
+    side_menu_->setTitle(tr("Compare &With (side B)"));
+    side_views_->setTitle(tr("Another Debug View"));
+    heat_menu_->setTitle(tr("Difference &Heat Scale"));
+    threshold_menu_->setTitle(tr("Difference &Threshold"));
+    for (std::size_t i = 0; i < heat_actions_.size(); ++i)
+        heat_actions_[i]->setText(kHeatScales[i] > 0
+                                      ? tr("%1/255 and above at full heat").arg(kHeatScales[i])
+                                      : tr("Automatic (99.9th percentile of the differences)"));
+    for (std::size_t i = 0; i < threshold_actions_.size(); ++i)
+        threshold_actions_[i]->setText(tr("Over %1/255").arg(kThresholds[i]));
+    side_rays_->setText(tr("The Ray Tracer"));
+    side_source_->setText(tr("This File, Source Textures (no BC7/BC5)"));
+    side_file_->setText(other_file_.isEmpty() ? tr("Another File…")
+                                              : tr("Another File… (%1)").arg(other_file_));
+    const std::vector<ViewEntry> views = ViewCatalog::views();
+    QString view_label;
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        view_actions_[i]->setText(views[i].label);
+        if (views[i].id == state_.view) view_label = views[i].label;
+    }
+    if (!mode_button_) return;
+    mode_button_->setText(tr("Viewport: %1").arg(modes[static_cast<std::size_t>(state_.mode)]));
+    mode_button_->setStatusTip(
+        tr("Raster or ray traced frame, or side A (this view, rasterized) against side B with "
+           "one camera. Split: drag the divider line (or Ctrl+drag anywhere) to move it."));
+    const QString side = state_.side == SideB::RayTraced ? tr("ray tracer")
+                         : state_.side == SideB::OtherView
+                             ? view_label
+                             : (other_file_.isEmpty() ? tr("no file") : other_file_);
+    side_button_->setText(tr("B: %1").arg(side));
+    side_button_->setStatusTip(tr("What side B of the comparison draws"));
+}
+
+} // namespace sherpa::editor

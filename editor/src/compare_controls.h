@@ -1,0 +1,70 @@
+#pragma once
+// The viewport's mode switch (View › Viewport Mode and two toolbar buttons): Raster,
+// Ray traced, Split, Difference, and what side B of a comparison draws (the ray
+// tracer, another debug view, another file). Actions in, one plain state out
+// (ViewportComparison, which the main window puts into every ViewportFrame).
+#include <QObject>
+
+#include <vector>
+
+#include "viewport_mode.h"
+
+class QAction;
+class QActionGroup;
+class QMenu;
+class QToolBar;
+class QToolButton;
+class QWidget;
+
+namespace sherpa::editor {
+
+class CompareControls : public QObject {
+    Q_OBJECT
+public:
+    explicit CompareControls(QWidget* parent);
+    const ViewportComparison& state() const { return state_; }
+    QMenu* menu() const { return menu_; } // for View › Viewport Mode
+    void addToToolBar(QToolBar* bar);
+
+    void setMode(ViewportMode mode);
+    void setSide(SideB side, std::uint32_t view = 0);
+    void setDivider(float fraction);
+    // Difference: full heat at this difference (0: automatic), "over" above threshold.
+    void setHeatScale(float heat_max);
+    void setThreshold(float threshold);
+    // The device ray traces: the ray-traced mode and side are offered.
+    void setRayTracing(bool available);
+    // The other file side B shows (its name in the menu); empty: none chosen.
+    void setOtherFile(const QString& name);
+    void retranslate();
+
+Q_SIGNALS:
+    void changed();
+    // The user chose "Another File…": the window asks for one and loads it.
+    void otherFileRequested();
+    // The user chose this file with its source textures (no BC7/BC5): the window loads it.
+    void sourceTexturesRequested();
+
+private:
+    void sync(); // checks, enabled states and button texts from state_
+
+    ViewportComparison state_;
+    QString other_file_;
+    QMenu* menu_;
+    QMenu* side_menu_;
+    QMenu* side_views_;
+    QMenu* heat_menu_;
+    QMenu* threshold_menu_;
+    std::vector<QAction*> heat_actions_, threshold_actions_; // kHeatScales, kThresholds
+    QActionGroup* modes_;
+    QActionGroup* sides_;
+    std::vector<QAction*> mode_actions_; // by ViewportMode
+    QAction* side_rays_;
+    QAction* side_file_;
+    QAction* side_source_;
+    std::vector<QAction*> view_actions_; // ViewCatalog::views() order
+    QToolButton* mode_button_ = nullptr;
+    QToolButton* side_button_ = nullptr;
+};
+
+} // namespace sherpa::editor

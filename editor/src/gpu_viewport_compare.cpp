@@ -1,0 +1,104 @@
+// The viewport's A/B comparison (issue 18 item 3): side A is the viewport's own
+// raster frame, side B the same camera with one thing changed (the ray tracer,
+// another debug view, another file), drawn by a second Renderer on the same
+// context that exists only while comparing (GpuViewport::present frees it after).
+// The engine's ComparisonFrame draws both and composites them into the swapchain.
+#include <sherpa/gpu/gpu_error.h>
+#include <sherpa/render/comparison.h>
+#include <sherpa/render/presented_frame.h>
+
+#include "gpu_viewport_impl.h"
+
+#include <cmath>
+
+namespace sherpa::editor {
+
+namespace {
+
+gpu::RenderSettings side_b_settings(const ViewportFrame& frame, const gpu::RenderSettings& a) {
+    gpu::RenderSettings b = a;
+    switch (frame.compare.side) {
+    case SideB::RayTraced:
+        b.renderer = gpu::RendererKind::RayTraced;
+        break;
+    case SideB::OtherView:
+        b.view = static_cast<gpu::DebugView>(frame.compare.view);
+        break;
+    case SideB::OtherFile:
+        // The pose and joint are the first scene's nodes: the other file as loaded.
+        b.pose = nullptr;
+        b.selected_joint.reset();
+        b.freeze_cull.reset();
+        break;
+    }
+    return b;
+}
+
+DifferenceNumbers numbers(const gpu::ComparisonStats& s, float heat_max) {
+    DifferenceNumbers out;
+    out.valid = s.valid;
+    out.pixels = s.pixels;
+    out.mean = s.mean;
+    out.max = s.max;
+    out.psnr_db = s.psnr_db;
+    out.over_threshold_percent = s.over_threshold_percent;
+    out.heat_max = heat_max > 0.0f ? double(heat_max) : s.percentile_999();
+    return out;
+}
+
+} // namespace
+
+bool GpuViewport::presentComparison(const ViewportFrame& frame, const gpu::RenderSettings& a_in,
+                                    float scale) {
+    Impl& impl = *impl_;
+    const ViewportComparison& c = frame.compare;
+    gpu::RenderSettings a = a_in;
+    // Rays have no derivatives: against the ray tracer both sides sample mip 0, so the
+    // difference shows the data paths, not two LOD choices (the engine's exactness check).
+    if (c.side == SideB::RayTraced) a.texture_lod = 0.0f;
+    const gpu::RenderSettings b = side_b_settings(frame, a);
+    const SharedSession session = c.side == SideB::OtherFile ? frame.compareSession : impl.session;
+    if (!session) {
+        impl.refusal = QStringLiteral("side B has no scene (choose the other file first)");
+        return false;
+    }
+    // Side B's renderer, loaded as this frame needs it (another scene, more streams,
+    // acceleration structures for rays); reloaded only when one of those changes.
+    const bool all = impl.all_streams || gpu::needs_all_streams(b);
+    const bool rays = b.renderer == gpu::RendererKind::RayTraced;
+    if (!impl.b.renderer || impl.b.session != session || impl.b.all_streams != all ||
+        impl.b.ray_tracing != rays) {
+        impl.b = {};
+        gpu::RendererOptions options;
+        options.ray_tracing = rays && impl.context->info().ray_tracing_enabled;
+        options.textures = impl.renderer->texture_settings();
+        impl.b.renderer = std::make_unique<gpu::Renderer>(*impl.context, options);
+        PreparedTextures textures = session->textures;
+        if (!textures) textures = std::make_shared<const tex::PreparedTextureSet>();
+        impl.b.renderer->load(*session->scene, std::move(textures),
+                              all ? gpu::StreamPolicy::AllPresent
+                                  : gpu::StreamPolicy::UsedByMaterials);
+        impl.b.session = session;
+        impl.b.all_streams = all;
+        impl.b.ray_tracing = rays;
+    }
+    gpu::ComparisonSettings compare;
+    compare.mode =
+        c.mode == ViewportMode::Split ? gpu::CompareMode::Split : gpu::CompareMode::Difference;
+    compare.divider = c.divider;
+    compare.threshold = c.threshold;
+    compare.heat_max = c.heat_max;
+    std::optional<gpu::ComparisonFrame> pair;
+    try {
+        pair.emplace(*impl.renderer, a, *impl.b.renderer, b, compare, scale);
+    } catch (const gpu::GpuError& e) { // refused before anything was recorded
+        impl.refusal = QString::fromUtf8(e.what());
+        return false;
+    }
+    const bool shown = impl.presenter->present_frame(*pair);
+    impl.completed = pair->completed_stats_a();
+    impl.difference = numbers(pair->completed_comparison(), compare.heat_max);
+    return shown;
+}
+
+} // namespace sherpa::editor

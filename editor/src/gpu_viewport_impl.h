@@ -1,0 +1,41 @@
+#pragma once
+// GpuViewport's engine state (private to gpu_viewport*.cpp, which include the
+// engine's headers before Qt's).
+#include <sherpa/gpu/context.h>
+#include <sherpa/gpu/presenter.h>
+#include <sherpa/render/cull_check.h>
+#include <sherpa/render/renderer.h>
+
+#include <QString>
+
+#include "gpu_viewport.h"
+
+namespace sherpa::editor {
+
+struct GpuViewport::Impl {
+    std::unique_ptr<gpu::Context> context;
+    std::unique_ptr<gpu::Renderer> renderer;
+    std::unique_ptr<gpu::Presenter> presenter;
+    gpu::FrameStats completed; // of the latest frame known complete (status bar, pass table)
+    std::uint64_t surface = 0;
+    std::uint32_t width = 0, height = 0;
+    SharedSession session; // on the GPU: its scene and prepared textures
+    bool all_streams = false;
+    bool reduced_prepass = false;                // setReducedFramePrepass()
+    std::unique_ptr<gpu::GpuCullChecker> culler; // CPU/GPU agreement checks, built per scene
+
+    // Side B of a comparison (gpu_viewport_compare.cpp): a second renderer on the same
+    // context, with what it was loaded with; made while comparing, freed after.
+    struct SideB {
+        std::unique_ptr<gpu::Renderer> renderer;
+        SharedSession session;
+        bool all_streams = false, ray_tracing = false;
+    } b;
+    DifferenceNumbers difference; // of the latest completed comparison frame
+    QString refusal;              // why the last frame was not drawn (the ray tracer refused)
+};
+
+// The engine's settings for what the window wants drawn (side A of a comparison).
+gpu::RenderSettings render_settings(const ViewportFrame& frame, float scale, bool reduced_prepass);
+
+} // namespace sherpa::editor

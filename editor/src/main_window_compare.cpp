@@ -1,0 +1,83 @@
+// MainWindow: the viewport's mode switch (raster, ray traced, split, difference),
+// side B of a comparison (another file loaded by its own SceneLoadJob, kept only
+// while comparing with it), the split divider dragged in the viewport and the
+// difference legend's numbers. One path: an action changes CompareControls' state,
+// currentFrame() puts it into the next ViewportFrame, GpuViewport draws it.
+#include "main_window.h"
+
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QStatusBar>
+
+#include "compare_controls.h"
+#include "difference_legend.h"
+#include "log_dock.h"
+#include "viewport_window.h"
+
+namespace sherpa::editor {
+
+void MainWindow::connectCompare() {
+    connect(compare_, &CompareControls::changed, this, &MainWindow::onCompareChanged);
+    connect(compare_, &CompareControls::otherFileRequested, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Compare with glTF scene"), QFileInfo(context_.sceneSpec()).path(),
+            tr("glTF scenes (*.gltf *.glb);;All files (*)"));
+        if (!path.isEmpty()) compareWithFile(path);
+    });
+    connect(compare_, &CompareControls::sourceTexturesRequested, this, [this] {
+        if (context_.scene()) compareWithFile(context_.sceneSpec(), true);
+    });
+    connect(viewport_, &ViewportWindow::dividerMoved, compare_, &CompareControls::setDivider);
+    connect(&compare_loader_, &SceneLoadJob::loaded, this, [this](SharedSession session) {
+        log_->append(LogDock::Level::Info, tr("Side B: %1 loaded.").arg(session->spec));
+        compare_session_ = std::move(session);
+        compare_->setOtherFile(compare_label_);
+        compare_->setSide(SideB::OtherFile);
+        if (!compare_->state().comparing()) compare_->setMode(ViewportMode::Split);
+    });
+    connect(&compare_loader_, &SceneLoadJob::failed, this,
+            [this](const QString& spec, const QString& error) {
+                log_->append(LogDock::Level::Error,
+                             tr("Side B: %1 could not be loaded: %2").arg(spec, error));
+            });
+}
+
+void MainWindow::compareWithFile(const QString& spec, bool source_textures) {
+    log_->append(LogDock::Level::Info, tr("Side B: loading %1…").arg(spec));
+    TexturePlan plan = texturePlan();
+    compare_label_ = QFileInfo(spec).fileName();
+    if (source_textures) {
+        plan.bc_textures = false; // RGBA8 as decoded from the images
+        compare_label_ = tr("%1, source textures").arg(compare_label_);
+    }
+    compare_loader_.start(spec, plan);
+}
+
+void MainWindow::onCompareChanged() {
+    const ViewportComparison& c = compare_->state();
+    // The other file is loaded only while comparing: leaving frees it (the render
+    // thread drops side B's renderer with the next frame that does not compare).
+    if (!c.comparing() && compare_session_) {
+        compare_session_.reset();
+        compare_->setOtherFile(QString());
+        if (c.side == SideB::OtherFile) compare_->setSide(SideB::RayTraced);
+    }
+    legend_->setScale(c.heat_max, c.threshold);
+    legend_->setNumbers({});
+    legend_->setVisible(c.mode == ViewportMode::Difference);
+    viewport_->setDivider(c.mode == ViewportMode::Split ? std::optional<float>(c.divider)
+                                                        : std::nullopt);
+    if (c.rays() || c.comparing())
+        statusBar()->showMessage(
+            tr("Overlays and the selection highlight are drawn in the Raster mode only."), 5000);
+    viewport_->scheduleFrame();
+}
+
+void MainWindow::onRefused(const QString& why) {
+    const QString text = tr("The ray tracer cannot draw this frame: %1. Back to Raster.").arg(why);
+    log_->append(LogDock::Level::Warning, text);
+    statusBar()->showMessage(text, 15000);
+    compare_->setMode(ViewportMode::Raster);
+}
+
+} // namespace sherpa::editor

@@ -1,0 +1,407 @@
+// Ray tracing in the editor (issue 17) and A/B comparison in the viewport (issue 18),
+// end to end under Xvfb with the validation layer: the acceleration-structure dock
+// and its selection, the viewport's raster / ray traced / split / difference modes.
+// The engine's headers first: Qt's QVulkanInstance defines VK_NO_PROTOTYPES.
+#include <sherpa/render/acceleration_structures.h>
+#include <sherpa/render/comparison.h>
+
+#include <QHeaderView>
+#include <QSignalSpy>
+#include <QTableView>
+#include <QVulkanInstance>
+#include <QtTest>
+#include <limits>
+#include <set>
+
+#include "acceleration_dock.h"
+#include "acceleration_model.h"
+#include "command_line.h"
+#include "compare_controls.h"
+#include "difference_legend.h"
+#include "log_dock.h"
+#include "main_window.h"
+#include "scene_tree_dock.h"
+#include "test_assets.h"
+#include "view_catalog.h"
+#include "viewport_window.h"
+#include "window_test_support.h"
+
+using namespace sherpa;
+using namespace sherpa::editor;
+
+namespace {
+
+// The viewport's part of a fresh screenshot (drawn at full size, waited for).
+QImage viewportShot(MainWindow& w) {
+    const QImage shot = w.screenshot().convertToFormat(QImage::Format_RGB32);
+    const QWidget* vp = w.findChild<QWidget*>(QStringLiteral("viewport"));
+    return shot.copy(QRect(vp->mapTo(&w, QPoint(0, 0)), vp->size()));
+}
+
+// Pixels of columns [x0, x1) where the two images differ by more than 2/255 in a channel.
+int differing(const QImage& a, const QImage& b, int x0, int x1) {
+    int n = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = x0; x < x1; ++x) {
+            const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
+            if (std::abs(qRed(p) - qRed(q)) > 2 || std::abs(qGreen(p) - qGreen(q)) > 2 ||
+                std::abs(qBlue(p) - qBlue(q)) > 2)
+                ++n;
+        }
+    return n;
+}
+
+// Pixels whose colour differs from the background corner's: something is drawn.
+int covered(const QImage& image) {
+    const QRgb bg = image.pixel(0, 0);
+    int n = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) n += image.pixel(x, y) != bg;
+    return n;
+}
+
+std::uint32_t view(const char* name) {
+    return *ViewCatalog::viewId(QString::fromLatin1(name));
+}
+
+} // namespace
+
+class RtTests : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void cleanupTestCase();
+    void commandLineTakesRt();
+    void accelerationDockListsBlasAndSelectsMesh();
+    void rtOffBuildsNothing();
+    void rayTracedModeDrawsRtFrames();
+    void refusedViewGoesBackToRaster();
+    void splitShowsALeftAndBRight();
+    void draggingMovesTheDivider();
+    void differenceOfASceneWithItselfIsZero();
+    void cleanup();
+
+private:
+    void checkValidation();
+
+    QVulkanInstance vulkan_;
+    std::unique_ptr<MainWindow> window_;
+    qsizetype seen_ = 0;
+};
+
+void RtTests::initTestCase() {
+    window_ = test::open_validated_window(vulkan_);
+    QVERIFY(window_);
+    if (!window_->renderer()) QSKIP("no Vulkan device");
+    QTRY_VERIFY_WITH_TIMEOUT(window_->rayTracing(), 10000);
+}
+
+void RtTests::cleanupTestCase() {
+    if (window_) checkValidation();
+    window_.reset();
+}
+
+void RtTests::checkValidation() {
+    const QString fresh = test::fresh_validation_messages(*window_, seen_);
+    QVERIFY2(fresh.isEmpty(), qPrintable(fresh));
+}
+
+void RtTests::commandLineTakesRt() {
+    CommandLine cl;
+    QString error;
+    QVERIFY(parse_command_line({QStringLiteral("sherpa")}, cl, error));
+    QVERIFY(cl.ray_tracing); // default on where the device has it
+    QVERIFY(parse_command_line(
+        {QStringLiteral("sherpa"), QStringLiteral("--rt"), QStringLiteral("off")}, cl, error));
+    QVERIFY(!cl.ray_tracing);
+    QVERIFY(!parse_command_line(
+        {QStringLiteral("sherpa"), QStringLiteral("--rt"), QStringLiteral("maybe")}, cl, error));
+    QVERIFY(error.contains(QStringLiteral("--rt")));
+    QVERIFY(parse_command_line({QStringLiteral("sherpa"), QStringLiteral("--mode"),
+                                QStringLiteral("difference"), QStringLiteral("--compare-with"),
+                                QStringLiteral("view:uv0")},
+                               cl, error));
+    QCOMPARE(cl.mode, QStringLiteral("difference"));
+    QVERIFY(!parse_command_line(
+        {QStringLiteral("sherpa"), QStringLiteral("--mode"), QStringLiteral("blend")}, cl, error));
+    QVERIFY(!parse_command_line(
+        {QStringLiteral("sherpa"), QStringLiteral("--compare-with"), QStringLiteral("view:nope")},
+        cl, error));
+}
+
+void RtTests::accelerationDockListsBlasAndSelectsMesh() {
+    MainWindow& w = *window_;
+    QVERIFY(test::load(w, test::asset(QStringLiteral("2CylinderEngine"))));
+    AccelerationDock& dock = *w.accelerationDock();
+    AccelerationModel& model = *dock.model();
+    // Handed over from the render thread after the upload: one BLAS per glTF mesh.
+    const Scene& scene = *w.context().scene();
+    std::set<std::uint32_t> gltf_meshes;
+    for (const Mesh& m : scene.meshes) gltf_meshes.insert(m.group_id);
+    QTRY_COMPARE_WITH_TIMEOUT(model.rowCount(), static_cast<int>(gltf_meshes.size()), 30000);
+    std::uint64_t triangles = 0;
+    for (const Mesh& m : scene.meshes) triangles += m.indices.size() / 3;
+    QCOMPARE(model.stats()->blas_triangles(), triangles);
+    QVERIFY(dock.summaryText().contains(QStringLiteral("%1 BLAS").arg(gltf_meshes.size())));
+    for (int r = 0; r < model.rowCount(); ++r) {
+        QVERIFY(!model.index(r, AccelerationModel::MeshColumn).data().toString().isEmpty());
+        QVERIFY(model.stats()->blas[static_cast<std::size_t>(r)].compacted_bytes > 0);
+    }
+
+    // Selecting a row selects a primitive of that glTF mesh (the scene tree's path).
+    const int row = model.rowCount() / 2;
+    const int gltf_mesh = model.index(row, 0).data(AccelerationModel::MeshRole).toInt();
+    dock.view()->setCurrentIndex(model.index(row, 0));
+    const Selection& sel = w.context().selection();
+    QVERIFY(sel.mesh >= 0);
+    QCOMPARE(static_cast<int>(scene.meshes[static_cast<std::size_t>(sel.mesh)].group_id),
+             gltf_mesh);
+    QVERIFY(sel.node >= 0);
+    QVERIFY(w.selectedInstance() >= 0); // the viewport highlights it
+    // And back: a primitive selected elsewhere moves the dock's current row.
+    const int other = (row + 1) % model.rowCount();
+    const int other_mesh = model.index(other, 0).data(AccelerationModel::MeshRole).toInt();
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m)
+        if (static_cast<int>(scene.meshes[m].group_id) == other_mesh) {
+            QSignalSpy none(&dock, &AccelerationDock::selectMeshRequested);
+            Q_EMIT w.sceneTreeDock()->selectMeshRequested(static_cast<int>(m), -1);
+            QCOMPARE(dock.view()->currentIndex().row(), other);
+            QCOMPARE(none.count(), 0); // no echo
+            break;
+        }
+    checkValidation();
+}
+
+void RtTests::rtOffBuildsNothing() {
+    // --rt off: a device without ray tracing, no structures, the dock says why.
+    MainWindow off(&vulkan_, nullptr, false);
+    off.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&off));
+    QVERIFY(test::load(off, test::asset(QStringLiteral("Box"))));
+    QVERIFY(!off.rayTracing());
+    QTRY_VERIFY_WITH_TIMEOUT(
+        off.accelerationDock()->summaryText().contains(QStringLiteral("--rt off")), 10000);
+    QCOMPARE(off.accelerationDock()->model()->rowCount(), 0);
+    QVERIFY(!off.accelerationDock()->model()->stats());
+    // The ray-traced mode is refused there, never drawn: back to raster.
+    off.setDebugView(QStringLiteral("normal"), false);
+    off.compareControls().setMode(ViewportMode::RayTraced);
+    viewportShot(off);
+    QTRY_COMPARE_WITH_TIMEOUT(off.compareControls().state().mode, ViewportMode::Raster, 10000);
+    qsizetype seen = 0;
+    const QString fresh = test::fresh_validation_messages(off, seen);
+    QVERIFY2(fresh.isEmpty(), qPrintable(fresh));
+}
+
+void RtTests::cleanup() {
+    if (!window_) return;
+    window_->compareControls().setMode(ViewportMode::Raster);
+    window_->setDebugView(QStringLiteral("lit"), false);
+}
+
+void RtTests::rayTracedModeDrawsRtFrames() {
+    MainWindow& w = *window_;
+    QVERIFY(test::load(w, test::asset(QStringLiteral("Suzanne"))));
+    w.pickAt(QPointF(-0.99, 0.99)); // nothing selected: no highlight on the raster side
+    QVERIFY(w.setDebugView(QStringLiteral("normal"), false));
+    const QImage raster = viewportShot(w);
+    w.compareControls().setMode(ViewportMode::RayTraced);
+    const QImage rays = viewportShot(w);
+    QCOMPARE(w.lastFrame().compare.mode, ViewportMode::RayTraced);
+    QCOMPARE(w.compareControls().state().mode, ViewportMode::RayTraced); // not refused
+    QVERIFY(w.lastReport().refused.isEmpty());
+    // The ray tracer's pass drew it: its timings name it.
+    QStringList passes;
+    for (int i = 0; i < 4 && !passes.join(' ').contains(QStringLiteral("ray")); ++i) {
+        w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
+        passes = w.renderer()->call([](GpuViewport& gpu) { return gpu.lastPassTimes(); });
+    }
+    QVERIFY2(passes.join(' ').contains(QStringLiteral("ray"), Qt::CaseInsensitive),
+             qPrintable(passes.join(QStringLiteral(", "))));
+    // The same surface as the rasterizer (the engine's exactness check holds >= 99.5%
+    // of covered pixels; silhouettes differ by a pixel here and there).
+    QVERIFY(covered(rays) > rays.width() * rays.height() / 20);
+    const int diff = differing(raster, rays, 0, rays.width());
+    QVERIFY2(diff < covered(rays) / 20,
+             qPrintable(QStringLiteral("%1 of %2").arg(diff).arg(covered(rays))));
+    checkValidation();
+}
+
+void RtTests::refusedViewGoesBackToRaster() {
+    MainWindow& w = *window_;
+    QVERIFY(test::load(w, QStringLiteral("builtin:default")));
+    QVERIFY(w.setDebugView(QStringLiteral("lit"), false)); // lights: no ray formula
+    const int errors = w.logDock()->errorCount();
+    w.compareControls().setMode(ViewportMode::RayTraced);
+    viewportShot(w);
+    QTRY_COMPARE_WITH_TIMEOUT(w.compareControls().state().mode, ViewportMode::Raster, 10000);
+    QVERIFY2(w.logDock()->text().contains(QStringLiteral("The ray tracer cannot draw")),
+             qPrintable(w.logDock()->text()));
+    QVERIFY(w.logDock()->text().contains(QStringLiteral("lit")));
+    QCOMPARE(w.logDock()->errorCount(), errors); // a warning, and rendering goes on
+    const std::uint64_t before = w.viewport()->framesRendered();
+    w.viewport()->scheduleFrame();
+    QTRY_VERIFY_WITH_TIMEOUT(w.viewport()->framesRendered() > before, 10000);
+    checkValidation();
+}
+
+void RtTests::splitShowsALeftAndBRight() {
+    MainWindow& w = *window_;
+    QVERIFY(test::load(w, QStringLiteral("builtin:default")));
+    w.pickAt(QPointF(-0.99, 0.99));
+    QVERIFY(w.setDebugView(QStringLiteral("normal"), false));
+    const QImage a = viewportShot(w);
+    QVERIFY(w.setDebugView(QStringLiteral("uv0"), false));
+    const QImage b = viewportShot(w);
+    QVERIFY(w.setDebugView(QStringLiteral("normal"), false));
+    CompareControls& c = w.compareControls();
+    c.setSide(SideB::OtherView, view("uv0"));
+    c.setMode(ViewportMode::Split);
+    c.setDivider(0.5f);
+    const QImage split = viewportShot(w);
+    QVERIFY(w.lastReport().refused.isEmpty());
+    const int mid = split.width() / 2, band = 4, h = split.height();
+    QVERIFY(differing(a, b, 0, split.width()) > split.width() * h / 10); // the views differ
+    // A left of the divider, B right of it (a thin band around the line aside).
+    const int left = differing(split, a, 0, mid - band);
+    const int right = differing(split, b, mid + band, split.width());
+    QVERIFY2(left <= (mid - band) * h / 200, qPrintable(QString::number(left)));
+    QVERIFY2(right <= (mid - band) * h / 200, qPrintable(QString::number(right)));
+    QVERIFY(differing(split, a, mid + band, split.width()) > mid * h / 20);
+    // The screenshot the docs show.
+    if (qEnvironmentVariableIsSet("SHERPA_SPLIT_SHOT"))
+        w.screenshot().save(qEnvironmentVariable("SHERPA_SPLIT_SHOT"));
+    checkValidation();
+}
+
+void RtTests::draggingMovesTheDivider() {
+    MainWindow& w = *window_;
+    QVERIFY(w.setDebugView(QStringLiteral("normal"), false));
+    CompareControls& c = w.compareControls();
+    c.setSide(SideB::OtherView, view("uv0"));
+    c.setMode(ViewportMode::Split);
+    c.setDivider(0.5f);
+    ViewportWindow* vp = w.viewport();
+    QCOMPARE(vp->divider().value_or(-1.0f), 0.5f);
+    const int y = vp->height() / 2, width = vp->width();
+    const CameraSpec camera = vp->camera().spec();
+    // Grabbed at the line (within the grab zone), dropped at a quarter of the width.
+    QTest::mousePress(vp, Qt::LeftButton, Qt::NoModifier, QPoint(width / 2 + 3, y));
+    QTest::mouseMove(vp, QPoint(width / 3, y));
+    QTest::mouseMove(vp, QPoint(width / 4, y));
+    QTest::mouseRelease(vp, Qt::LeftButton, Qt::NoModifier, QPoint(width / 4, y));
+    QVERIFY(std::abs(c.state().divider - 0.25f) < 0.01f);
+    QCOMPARE(vp->camera().spec().eye, camera.eye); // the camera did not orbit
+    // Ctrl+drag from anywhere.
+    QTest::mousePress(vp, Qt::LeftButton, Qt::ControlModifier, QPoint(width * 3 / 4, y));
+    QTest::mouseMove(vp, QPoint(width * 7 / 10, y));
+    QTest::mouseMove(vp, QPoint(width * 4 / 5, y));
+    QTest::mouseRelease(vp, Qt::LeftButton, Qt::ControlModifier, QPoint(width * 4 / 5, y));
+    QVERIFY(std::abs(c.state().divider - 0.8f) < 0.01f);
+    QCOMPARE(vp->camera().spec().eye, camera.eye);
+    // The frame follows: B (uv0) now starts at 80% of the width.
+    const QImage split = viewportShot(w);
+    c.setMode(ViewportMode::Raster);
+    const QImage a = viewportShot(w);
+    const int at = split.width() * 4 / 5;
+    QVERIFY(differing(split, a, 0, at - 4) <= at * split.height() / 200);
+    // Without a split, a drag orbits again.
+    QVERIFY(!vp->divider());
+    QTest::mousePress(vp, Qt::LeftButton, Qt::NoModifier, QPoint(width / 2, y));
+    QTest::mouseMove(vp, QPoint(width / 2 + 40, y));
+    QTest::mouseMove(vp, QPoint(width / 2 + 80, y));
+    QTest::mouseRelease(vp, Qt::LeftButton, Qt::NoModifier, QPoint(width / 2 + 80, y));
+    QVERIFY(vp->camera().spec().eye != camera.eye);
+    checkValidation();
+}
+
+void RtTests::differenceOfASceneWithItselfIsZero() {
+    MainWindow& w = *window_;
+    const QString file = test::asset(QStringLiteral("BoxTextured"));
+    QVERIFY(test::load(w, file));
+    QVERIFY(w.setDebugView(QStringLiteral("base-color"), false));
+    CompareControls& c = w.compareControls();
+    c.setMode(ViewportMode::Difference);
+    // Side B: the same file, loaded again as another file is.
+    w.compareWithFile(file);
+    QTRY_VERIFY_WITH_TIMEOUT(w.compareSession() != nullptr, 30000);
+    QCOMPARE(c.state().side, SideB::OtherFile);
+    QVERIFY(w.compareSession() != w.context().sharedSession()); // a second scene
+    DifferenceLegend& legend = *w.differenceLegend();
+    QVERIFY(legend.isVisible());
+    // The numbers are those of the latest completed frame: a few frames later (and
+    // at the viewport's size with the legend beside it).
+    const auto current = [&w] {
+        const DifferenceNumbers& d = w.lastReport().difference;
+        return d.valid && d.pixels == std::uint64_t(w.lastFrame().width) * w.lastFrame().height;
+    };
+    QElapsedTimer t;
+    t.start();
+    while (!current() && t.elapsed() < 30000) {
+        w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
+        QCoreApplication::processEvents();
+    }
+    const DifferenceNumbers& n = w.lastReport().difference;
+    QVERIFY(n.valid);
+    QCOMPARE(n.pixels, std::uint64_t(w.lastFrame().width) * w.lastFrame().height);
+    QCOMPARE(n.mean, 0.0);
+    QCOMPARE(n.max, 0.0);
+    QCOMPARE(n.over_threshold_percent, 0.0);
+    QVERIFY(std::isinf(n.psnr_db));
+    const QString text = legend.numbersText();
+    QVERIFY2(text.contains(QStringLiteral("mean 0.00")) &&
+                 text.contains(QStringLiteral("max 0.00")) && text.contains(QStringLiteral("∞")) &&
+                 text.contains(QStringLiteral("0.00%")),
+             qPrintable(text));
+    // The colour bar is the engine's heat scale: full heat on top, none at the bottom.
+    const QImage bar = legend.colourBar();
+    const auto top = gpu::heat_colour(1.0), bottom = gpu::heat_colour(0.0);
+    QCOMPARE(bar.pixel(0, 0), qRgb(top[0], top[1], top[2]));
+    QCOMPARE(bar.pixel(0, bar.height() - 1), qRgb(bottom[0], bottom[1], bottom[2]));
+    // The same file with its source textures (no BC7): the compression's error, small.
+    const SharedSession bc7 = w.compareSession();
+    w.compareWithFile(file, true);
+    QTRY_VERIFY_WITH_TIMEOUT(w.compareSession() != bc7, 30000);
+    t.restart();
+    double psnr = std::numeric_limits<double>::infinity();
+    while (std::isinf(psnr) && t.elapsed() < 30000) {
+        w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
+        QCoreApplication::processEvents();
+        if (current()) psnr = w.lastReport().difference.psnr_db;
+    }
+    qInfo("BoxTextured base colour, BC7 against source textures: PSNR %.2f dB, max %.1f/255", psnr,
+          w.lastReport().difference.max * 255.0);
+    QVERIFY2(psnr > 30.0 && psnr < 80.0, qPrintable(QString::number(psnr)));
+    QVERIFY(w.lastReport().difference.max > 0.0);
+    // Against another view instead: not identical, and the numbers say so.
+    c.setSide(SideB::OtherView, view("normal"));
+    t.restart();
+    double max = 0.0;
+    while (max == 0.0 && t.elapsed() < 30000) {
+        w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
+        QCoreApplication::processEvents();
+        max = w.lastReport().difference.max;
+    }
+    QVERIFY(max > 0.0);
+    QVERIFY(!legend.numbersText().contains(QStringLiteral("∞")));
+    QCOMPARE(legend.scaleText(), QStringLiteral("≥ 16.0"));
+    // The automatic heat scale: the 99.9th percentile of the differing pixels, named.
+    c.setHeatScale(0.0f);
+    QCOMPARE(legend.scaleText(), QStringLiteral("auto"));
+    for (int i = 0; i < 10 && !legend.scaleText().contains(QStringLiteral("(auto)")); ++i) {
+        w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
+        QCoreApplication::processEvents();
+    }
+    QVERIFY2(legend.scaleText().contains(QStringLiteral("(auto)")), qPrintable(legend.scaleText()));
+    QVERIFY(w.lastReport().difference.heat_max > 0.0);
+    QVERIFY(w.lastReport().difference.heat_max <= w.lastReport().difference.max);
+    c.setHeatScale(16.0f / 255.0f);
+    // Leaving the comparison frees the other file.
+    c.setMode(ViewportMode::Raster);
+    QVERIFY(!w.compareSession());
+    QVERIFY(!legend.isVisible());
+    checkValidation();
+}
+
+QTEST_MAIN(RtTests)
+#include "rt_tests.moc"

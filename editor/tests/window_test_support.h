@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <fstream>
 
+#include <malloc.h>
+
 #include "main_window.h"
 #include "render_thread.h"
 #include "viewport_window.h"
@@ -81,7 +83,11 @@ inline std::int64_t gpu_objects(MainWindow& w, int n = 3) {
     return w.renderer()->call([](GpuViewport& gpu) { return gpu.objectCount(); });
 }
 
+// Resident memory after glibc hands its free pages back (malloc_trim): what stays is
+// held, not the arenas' high-water mark, which varies run to run with lavapipe's
+// threads and would hide or fake a leak.
 inline std::uint64_t resident_kib() {
+    malloc_trim(0);
     std::ifstream statm("/proc/self/statm");
     std::uint64_t size = 0, resident = 0;
     statm >> size >> resident;

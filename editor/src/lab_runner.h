@@ -3,7 +3,8 @@
 // loads the scene file again as `sherpa-cli lab` does (lab_load_options(): tangents
 // as in the file), so the dock and the CLI measure the same input, and reports its
 // progress; cancel() stops it at its next unit of work and drops what it measured.
-// One run at a time: starting another cancels the one in flight.
+// One run at a time: starting another cancels the one in flight. Workers run at nice 10
+// and post progress at most 20 times a second, so the UI thread keeps its cores.
 #include <QFuture>
 #include <QList>
 #include <QObject>

@@ -130,7 +130,7 @@ struct FrameContext {
     ResourceManager& resources;
     const GpuScene* scene;      // null: nothing loaded
     SceneCulling* culling;      // null: nothing loaded
-    const Scene& lighting;      // bounds, lights, cameras (and skins) of the loaded scene
+    const Scene& lighting;      // bounds, lights and cameras of the loaded scene
     std::uint32_t cascades = 0; // shadow cascades re-rendered this frame (0: reused or none)
     bool prepass = false;       // the depth prepass runs this frame
     float aspect() const { return float(target.width) / float(target.height); }

@@ -50,10 +50,7 @@ void LabRunner::cancel() {
     if (!job_) return;
     job_->cancel.cancel();
     job_.reset(); // whatever the worker still posts is dropped
-    if (running_) {
-        running_ = false;
-        Q_EMIT cancelled();
-    }
+    Q_EMIT cancelled();
 }
 
 void LabRunner::wait() {
@@ -65,15 +62,11 @@ std::shared_ptr<LabRunner::Job> LabRunner::begin() {
     cancel();
     workers_.removeIf([](const QFuture<void>& f) { return f.isFinished(); });
     job_ = std::make_shared<Job>();
-    running_ = true;
     return job_;
 }
 
 void LabRunner::end(const std::shared_ptr<Job>& job) {
-    if (job == job_) {
-        job_.reset();
-        running_ = false;
-    }
+    if (job == job_) job_.reset();
 }
 
 namespace {
@@ -132,21 +125,12 @@ void LabRunner::start(const QString& family_name, const QString& spec) {
         });
 }
 
-void LabRunner::startBudget(const QString& spec) {
+void LabRunner::startBudget(std::shared_ptr<const Scene> scene) {
     std::shared_ptr<Job> job = begin();
-    workers_ << QtConcurrent::run(&pool_, [this, job, path = spec.toStdString()] {
+    workers_ << QtConcurrent::run(&pool_, [this, job, scene = std::move(scene)] {
         lower_worker_priority();
-        LoadResult loaded = load_scene(path);
+        auto report = std::make_shared<const lab::BudgetReport>(lab::build_budget(*scene));
         if (job->cancel.cancelled()) return;
-        if (!loaded) {
-            post(this, [this, job, error = QString::fromStdString(loaded.error)] {
-                if (job != job_) return;
-                end(job);
-                Q_EMIT failed(error);
-            });
-            return;
-        }
-        auto report = std::make_shared<const lab::BudgetReport>(lab::build_budget(*loaded.scene));
         post(this, [this, job, report] {
             if (job != job_) return;
             end(job);

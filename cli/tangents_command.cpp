@@ -32,8 +32,7 @@ struct Options {
 };
 
 int usage_error(const std::string& message) {
-    std::fprintf(stderr, "error: %s\n%s", message.c_str(), kUsage);
-    return kExitUsage;
+    return cli::usage_error(message, kUsage);
 }
 
 std::uint32_t normal_uv_set(const Scene& scene, const Mesh& mesh) {

@@ -35,12 +35,6 @@ int usage_error(const std::string& message) {
     return cli::usage_error(message, kUsage);
 }
 
-std::uint32_t normal_uv_set(const Scene& scene, const Mesh& mesh) {
-    if (mesh.material_id >= scene.materials.size()) return 0;
-    const TextureSlot& normal = scene.materials[mesh.material_id].normal;
-    return normal.present() ? normal.tex_coord : 0;
-}
-
 bool authored(const Mesh& mesh) {
     return mesh.provenance_of(VertexAttribute::Tangent) == Provenance::Authored;
 }

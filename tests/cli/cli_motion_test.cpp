@@ -1,6 +1,7 @@
 // sherpa-cli info on skins, morph targets and animations (issue #16): the JSON keys,
 // --time/--animation, and usage errors; render and cull with a pose. The posed bounds are checked
 // against three.js in motion_oracle_test.cpp.
+#include "cli/cli_json.h"
 #include "cli/cli_run.h"
 #include "test_support.h"
 
@@ -14,13 +15,8 @@ namespace {
 
 using nlohmann::json;
 using sherpa::test::CliRun;
+using sherpa::test::info_json;
 using sherpa::test::run_cli;
-
-json info_json(const std::string& file, const std::string& extra = "") {
-    const CliRun r = run_cli("info '" + file + "' --json " + extra);
-    EXPECT_EQ(r.exit_code, 0) << r.out;
-    return r.exit_code == 0 ? json::parse(r.out) : json::object();
-}
 
 std::string data(const char* name) {
     return (sherpa::test::data_dir() / name).string();

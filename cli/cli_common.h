@@ -1,5 +1,9 @@
 #pragma once
-// Shared conventions of sherpa-cli subcommands: exit codes and argument access.
+// Shared conventions of sherpa-cli subcommands: exit codes, argument access and the
+// parsing every subcommand does the same way.
+#include <charconv>
+#include <cstdint>
+#include <cstdio>
 #include <span>
 #include <string>
 #include <string_view>
@@ -11,6 +15,18 @@ inline constexpr int kExitLoadError = 1; // message on stderr starting "error:"
 inline constexpr int kExitUsage = 2;
 
 using Args = std::span<const std::string_view>;
+
+// "error: MESSAGE" and the subcommand's usage on stderr; returns kExitUsage.
+inline int usage_error(std::string_view message, const char* usage) {
+    std::fprintf(stderr, "error: %.*s\n%s", int(message.size()), message.data(), usage);
+    return kExitUsage;
+}
+
+// A non-negative integer, all of `v`.
+inline bool parse_index(std::string_view v, std::int32_t& out) {
+    const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
+    return ec == std::errc{} && end == v.data() + v.size() && out >= 0;
+}
 
 int run_info(Args args);
 int run_cull(Args args);

@@ -1,6 +1,7 @@
-// sherpa-cli info SCENE [--json] [--scene N] [--animation N] [--time T]
+// sherpa-cli info SCENE [--json] [--scene N] [--animation N --time T | --pose bind]
 #include "cli_common.h"
 #include "motion_json.h"
+#include "pose_options.h"
 #include "scene_json.h"
 #include "texture_cli.h"
 
@@ -42,18 +43,8 @@ void print_text(const Scene& s, const std::vector<tex::ImageProblem>& problems) 
 }
 
 constexpr const char* kUsage =
-    "usage: sherpa-cli info SCENE [--json] [--scene N] [--animation N] [--time T]\n";
-
-bool parse_int(std::string_view v, std::int32_t& out) {
-    const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
-    return ec == std::errc{} && end == v.data() + v.size() && out >= 0;
-}
-
-// A finite time in seconds (std::from_chars for double accepts "nan" and "inf").
-bool parse_time(std::string_view v, double& out) {
-    const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
-    return ec == std::errc{} && end == v.data() + v.size() && std::isfinite(out);
-}
+    "usage: sherpa-cli info SCENE [--json] [--scene N]\n"
+    "                             [--animation N --time T | --pose bind]\n";
 
 } // namespace
 
@@ -61,28 +52,17 @@ int run_info(Args args) {
     std::string_view spec;
     bool as_json = false;
     LoadOptions options;
-    std::int32_t animation = -1;
-    double time = 0.0;
-    bool posed = false;
+    PoseOptions pose;
+    std::string error;
     for (std::size_t i = 0; i < args.size(); ++i) {
+        const OptionMatch m = parse_pose_option(args, i, pose, error);
+        if (m == OptionMatch::Bad) return usage_error(error, kUsage);
+        if (m == OptionMatch::Taken) continue;
         if (args[i] == "--json")
             as_json = true;
         else if (args[i] == "--scene" && i + 1 < args.size()) {
-            if (!parse_int(args[++i], options.scene_index)) {
-                std::fprintf(stderr, "error: --scene needs a non-negative integer\n");
-                return kExitUsage;
-            }
-        } else if (args[i] == "--animation" && i + 1 < args.size()) {
-            if (!parse_int(args[++i], animation)) {
-                std::fprintf(stderr, "error: --animation needs a non-negative integer\n");
-                return kExitUsage;
-            }
-        } else if (args[i] == "--time" && i + 1 < args.size()) {
-            if (!parse_time(args[++i], time)) {
-                std::fprintf(stderr, "error: --time needs a finite number of seconds\n");
-                return kExitUsage;
-            }
-            posed = true;
+            if (!parse_index(args[++i], options.scene_index))
+                return usage_error("--scene needs a non-negative integer", kUsage);
         } else if (!args[i].empty() && args[i][0] == '-') {
             std::fprintf(stderr, "error: unknown option '%.*s'\n%s",
                          static_cast<int>(args[i].size()), args[i].data(), kUsage);
@@ -104,17 +84,10 @@ int run_info(Args args) {
         return kExitLoadError;
     }
     const Scene& scene = *r.scene;
-    if (animation >= 0 && !posed) {
-        std::fprintf(stderr, "error: --animation needs --time T\n");
-        return kExitUsage;
-    }
-    if (animation >= static_cast<std::int32_t>(scene.animations.size())) {
-        std::fprintf(stderr, "error: %s: --animation %d out of range (the file has %zu)\n",
-                     scene.source.c_str(), animation, scene.animations.size());
-        return kExitUsage;
-    }
-    // Without --animation: the first animation, or the default weights when there is none.
-    if (posed && animation < 0 && !scene.animations.empty()) animation = 0;
+    std::int32_t animation = -1;
+    if (!pose_animation(scene, pose, animation, error)) return usage_error(error, kUsage);
+    const bool posed = pose.bind || pose.timed;
+    const double time = pose.time;
     const std::vector<tex::ImageProblem> problems = tex::find_image_problems(scene);
     if (as_json) {
         nlohmann::json j = scene_info_json(scene);

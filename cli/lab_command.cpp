@@ -31,8 +31,7 @@ struct Options {
 };
 
 int usage_error(const std::string& message) {
-    std::fprintf(stderr, "error: %s\n%s", message.c_str(), kUsage);
-    return kExitUsage;
+    return cli::usage_error(message, kUsage);
 }
 
 std::unique_ptr<lab::Family> make(const Options& o) {

@@ -16,8 +16,8 @@ struct Subcommand {
 
 constexpr Subcommand kSubcommands[] = {
     {"info", sherpa::cli::run_info,
-     "info SCENE [--json] [--scene N] [--time T [--animation N]]   report on a scene (path or "
-     "builtin:...)"},
+     "info SCENE [--json] [--scene N] [--animation N --time T | --pose bind]   report on a scene "
+     "(path or builtin:...)"},
     {"cull", sherpa::cli::run_cull,
      "cull SCENE --camera eye=x,y,z:target=x,y,z[:...] [--method sphere|pvertex|exact] [--json]"},
     {"tangents", sherpa::cli::run_tangents,

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <string>
 
 namespace sherpa::cli {
 
@@ -20,8 +21,7 @@ OptionMatch parse_pose_option(Args args, std::size_t& i, PoseOptions& out, std::
         }
         out.bind = true;
     } else if (a == "--animation") {
-        const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out.animation);
-        if (ec != std::errc{} || end != v.data() + v.size() || out.animation < 0) {
+        if (!parse_index(v, out.animation)) {
             error = "--animation needs a non-negative integer";
             return OptionMatch::Bad;
         }
@@ -37,26 +37,32 @@ OptionMatch parse_pose_option(Args args, std::size_t& i, PoseOptions& out, std::
     return OptionMatch::Taken;
 }
 
-std::shared_ptr<const Pose> resolve_pose(const Scene& scene, const PoseOptions& options,
-                                         std::string& error) {
+bool pose_animation(const Scene& scene, const PoseOptions& options, std::int32_t& animation,
+                    std::string& error) {
     error.clear();
     if (options.bind && (options.timed || options.animation >= 0)) {
         error = "--pose bind takes no --animation or --time";
-        return nullptr;
+        return false;
     }
-    if (options.bind) return std::make_shared<const Pose>(evaluate_pose(scene, -1, 0.0));
     if (options.animation >= 0 && !options.timed) {
         error = "--animation needs --time T";
-        return nullptr;
+        return false;
     }
-    if (!options.timed) return nullptr;
     if (options.animation >= static_cast<std::int32_t>(scene.animations.size())) {
         error = scene.source + ": --animation " + std::to_string(options.animation) +
                 " out of range (the file has " + std::to_string(scene.animations.size()) + ")";
-        return nullptr;
+        return false;
     }
-    std::int32_t animation = options.animation;
-    if (animation < 0 && !scene.animations.empty()) animation = 0;
+    animation = options.animation;
+    if (options.timed && animation < 0 && !scene.animations.empty()) animation = 0;
+    return true;
+}
+
+std::shared_ptr<const Pose> resolve_pose(const Scene& scene, const PoseOptions& options,
+                                         std::string& error) {
+    std::int32_t animation = -1;
+    if (!pose_animation(scene, options, animation, error) || !(options.bind || options.timed))
+        return nullptr;
     return std::make_shared<const Pose>(evaluate_pose(scene, animation, options.time));
 }
 

@@ -22,6 +22,13 @@ struct PoseOptions {
 // Bad sets `error`.
 OptionMatch parse_pose_option(Args args, std::size_t& i, PoseOptions& out, std::string& error);
 
+// Checks the options against each other and the scene, and gives the animation to
+// evaluate: -1 for --pose bind and for --time on a file without animations (its
+// default weights), else --animation N (default: the first). False with `error` when
+// they do not fit.
+bool pose_animation(const Scene& scene, const PoseOptions& options, std::int32_t& animation,
+                    std::string& error);
+
 // The pose the options ask for: null without any (the scene as loaded); the file's
 // default pose for --pose bind; else animation N (default: the first; none: the
 // default weights) at time T, clamped to its keys. Empty `error` unless the options

@@ -28,9 +28,8 @@ constexpr const char* kUsage =
     "usage: sherpa-cli rt SCENE [--json] [--validation] [--scratch-budget BYTES] [--no-compact]\n"
     "                           [--rt on|off]\n";
 
-int usage_error(const std::string& what) {
-    std::fprintf(stderr, "error: %s\n%s", what.c_str(), kUsage);
-    return kExitUsage;
+int usage_error(const std::string& message) {
+    return cli::usage_error(message, kUsage);
 }
 
 double ratio(std::uint64_t after, std::uint64_t before) {

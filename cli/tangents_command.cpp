@@ -32,14 +32,7 @@ struct Options {
 };
 
 int usage_error(const std::string& message) {
-    std::fprintf(stderr, "error: %s\n%s", message.c_str(), kUsage);
-    return kExitUsage;
-}
-
-std::uint32_t normal_uv_set(const Scene& scene, const Mesh& mesh) {
-    if (mesh.material_id >= scene.materials.size()) return 0;
-    const TextureSlot& normal = scene.materials[mesh.material_id].normal;
-    return normal.present() ? normal.tex_coord : 0;
+    return cli::usage_error(message, kUsage);
 }
 
 bool authored(const Mesh& mesh) {

@@ -239,7 +239,7 @@ void LabDock::runBudget() {
     budget_status_->setText(tr("Computing the budget of %1…").arg(context_.sceneSpec()));
     setBusy(true);
     progress_->setRange(0, 0);
-    runner_->startBudget(context_.sceneSpec());
+    runner_->startBudget(context_.sharedScene());
 }
 
 void LabDock::cancel() {

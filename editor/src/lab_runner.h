@@ -1,9 +1,11 @@
 #pragma once
-// Runs a Lab family (engine/lab) or the budget report off the UI thread. The worker
-// loads the scene file again as `sherpa-cli lab` does (lab_load_options(): tangents
-// as in the file), so the dock and the CLI measure the same input, and reports its
-// progress; cancel() stops it at its next unit of work and drops what it measured.
-// One run at a time: starting another cancels the one in flight.
+// Runs a Lab family (engine/lab) or the budget report off the UI thread. A family's
+// worker loads the scene file again as `sherpa-cli lab` does (lab_load_options():
+// tangents as in the file, not as the editor shows them), so the dock and the CLI
+// measure the same input, and reports its progress; the budget reads the editor's scene; cancel()
+// stops it at its next unit of work and drops what it measured. One run at a time: starting another
+// cancels the one in flight. Workers run at nice 10 and post progress at most 20 times a second, so
+// the UI thread keeps its cores.
 #include <QFuture>
 #include <QList>
 #include <QObject>
@@ -25,10 +27,11 @@ public:
 
     // Runs family `family` ("tangents", "textures", "culling") on the scene `spec`.
     void start(const QString& family, const QString& spec);
-    // Builds the budget report of `spec` (loaded as `sherpa-cli budget` loads it).
-    void startBudget(const QString& spec);
+    // Builds the budget report of `scene`, the scene the editor shows (loaded with the
+    // options `sherpa-cli budget` uses), without loading it again.
+    void startBudget(std::shared_ptr<const Scene> scene);
     void cancel();
-    bool running() const { return running_; }
+    bool running() const { return job_ != nullptr; }
     // Blocks until the worker has returned (tests, shutdown).
     void wait();
 
@@ -44,13 +47,12 @@ private:
     std::shared_ptr<Job> begin();
     void end(const std::shared_ptr<Job>& job);
 
-    std::shared_ptr<Job> job_;
+    std::shared_ptr<Job> job_; // the run in flight; null: none
     // Its own threads: a family runs for seconds, and in the global pool it would hold
     // the thread the scene loader's thumbnails wait for (measured: Box took 29 s to load
     // while a textures run held the pool of a 2-core machine).
     QThreadPool pool_;
     QList<QFuture<void>> workers_; // cancelled ones may still be returning
-    bool running_ = false;
 };
 
 } // namespace sherpa::editor

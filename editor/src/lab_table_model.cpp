@@ -2,7 +2,7 @@
 
 #include <QLocale>
 
-#include <set>
+#include <sherpa/lab/report_export.h>
 
 namespace sherpa::editor {
 
@@ -48,11 +48,7 @@ QVariant LabTableModel::headerData(int section, Qt::Orientation o, int role) con
 }
 
 void fill_methods(LabTableModel& model, const lab::FamilyReport& report) {
-    std::vector<std::string> figures; // in order of first appearance, as the CSV
-    std::set<std::string> seen;
-    for (const lab::MethodResult& m : report.methods)
-        for (const lab::ErrorFigure& e : m.errors)
-            if (seen.insert(e.name).second) figures.push_back(e.name);
+    const std::vector<std::string> figures = lab::error_figure_names(report); // the CSV's
     QStringList headers{
         LabTableModel::tr("Method"), LabTableModel::tr("Parameters"),
         LabTableModel::tr("Time (%1)").arg(QString::fromStdString(report.time_unit))};
@@ -65,9 +61,8 @@ void fill_methods(LabTableModel& model, const lab::FamilyReport& report) {
                          m.ran ? QVariant(m.time) : QVariant(LabTableModel::tr("not run"))};
         for (const std::string& f : figures)
             row << (m.error(f) ? QVariant(m.error(f)->value) : QVariant());
-        quint64 failures = 0;
-        for (const lab::Failure& f : m.failures) failures += f.count;
-        row << QVariant::fromValue<qulonglong>(failures) << QString::fromStdString(m.note);
+        row << QVariant::fromValue<qulonglong>(lab::failure_units(m))
+            << QString::fromStdString(m.note);
         rows.push_back(std::move(row));
     }
     model.setTable(std::move(headers), std::move(rows));

@@ -156,6 +156,7 @@ void TimelineDock::setAnimation(int animation) {
 
 void TimelineDock::onSceneChanged() {
     const Scene* scene = context_.scene();
+    pose_inputs_.reset();
     {
         const QSignalBlocker block(animations_);
         animations_->clear();
@@ -237,8 +238,14 @@ void TimelineDock::updatePlayButton() {
 
 void TimelineDock::refresh() {
     const Scene* scene = context_.scene();
-    pose_ = scene ? make_pose(*scene, animation(), clock_.time, morph_->overrides()) : nullptr;
-    morph_->showPose(pose_.get());
+    PoseInputs inputs{animation(), clock_.time, morph_->overrides()};
+    const bool changed = inputs != pose_inputs_;
+    if (changed) {
+        pose_ =
+            scene ? make_pose(*scene, inputs.animation, inputs.time, inputs.overrides) : nullptr;
+        pose_inputs_ = std::move(inputs);
+        morph_->showPose(pose_.get());
+    }
     {
         const QSignalBlocker block(slider_);
         slider_->setValue(static_cast<int>(std::lround(clock_.fraction() * kSliderSteps)));
@@ -247,7 +254,7 @@ void TimelineDock::refresh() {
     time_label_->setText(
         animation() < 0 ? tr("no animation")
                         : tr("%1 / %2 s").arg(clock_.time, 0, 'f', 3).arg(clock_.end, 0, 'f', 3));
-    Q_EMIT poseChanged();
+    if (changed) Q_EMIT poseChanged();
 }
 
 } // namespace sherpa::editor

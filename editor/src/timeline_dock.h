@@ -9,6 +9,7 @@
 #include <QTimer>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "motion_playback.h"
@@ -73,12 +74,21 @@ Q_SIGNALS:
 private:
     void onSceneChanged();
     void onTick();
-    void refresh(); // pose, slider, readout
+    void refresh(); // pose (when its inputs changed), slider, readout
     void updatePlayButton();
 
     const EditorContext& context_;
     PlaybackClock clock_;
     std::shared_ptr<const Pose> pose_;
+    // What pose_ was made from. Retranslating, play/pause or a tick that lands on the same
+    // time make no new pose: a new one would have the viewport rewrite and redraw it.
+    struct PoseInputs {
+        int animation = -1;
+        double time = 0.0;
+        MorphOverrides overrides;
+        bool operator==(const PoseInputs&) const = default;
+    };
+    std::optional<PoseInputs> pose_inputs_; // none: make it (another scene)
     QTimer timer_;
     QElapsedTimer elapsed_;
     QComboBox* animations_;

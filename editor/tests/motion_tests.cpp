@@ -230,6 +230,16 @@ void MotionTests::scrubbingChangesThePose() {
     dock.scrubTo(t1);
     QVERIFY(!changed.isEmpty());
     const glm::mat4 at1 = dock.pose()->world[node];
+    // The same pose is not made and announced again: retranslating, play then pause
+    // before a tick, scrubbing to the same time.
+    const qsizetype announced = changed.count();
+    const std::shared_ptr<const Pose> same = dock.pose();
+    dock.retranslate();
+    dock.setPlaying(true);
+    dock.setPlaying(false);
+    dock.scrubTo(t1);
+    QCOMPARE(changed.count(), announced);
+    QCOMPARE(dock.pose(), same);
     QVERIFY(same_matrix(at1, evaluate_pose(*scene, 0, t1).world[node]));
     dock.scrubTo(t2);
     QVERIFY(same_matrix(dock.pose()->world[node], evaluate_pose(*scene, 0, t2).world[node]));

@@ -1,4 +1,5 @@
 // sherpa-cli info: exit codes, error format, JSON schema.
+#include "cli/cli_json.h"
 #include "cli/cli_run.h"
 #include "test_support.h"
 
@@ -11,12 +12,12 @@
 namespace {
 
 using sherpa::test::CliRun;
+using sherpa::test::info_json;
 using sherpa::test::run_cli;
 
 TEST(CliInfo, JsonHasEveryRequiredKey) {
-    const CliRun r = run_cli("info '" + sherpa::test::gltf_asset("DamagedHelmet") + "' --json");
-    ASSERT_EQ(r.exit_code, 0) << r.out;
-    const auto j = nlohmann::json::parse(r.out);
+    const auto j = info_json(sherpa::test::gltf_asset("DamagedHelmet"));
+    ASSERT_FALSE(j.empty());
     for (const char* key :
          {"scenes", "nodes", "meshes", "primitives", "materials", "textures", "images", "samplers",
           "lights", "cameras", "instances", "vertices", "triangles"})
@@ -40,11 +41,9 @@ TEST(CliInfo, JsonHasEveryRequiredKey) {
 // Every extension the file names is listed with whether Sherpa reads it; an
 // unsupported one that is only used (not required) does not stop the file opening.
 TEST(CliInfo, JsonListsExtensionsUsedAndRequiredWithSupport) {
-    const CliRun r =
-        run_cli("info '" + (sherpa::test::data_dir() / "unsupported_used_extension.gltf").string() +
-                "' --json");
-    ASSERT_EQ(r.exit_code, 0) << r.out;
-    const auto j = nlohmann::json::parse(r.out);
+    const auto j =
+        info_json((sherpa::test::data_dir() / "unsupported_used_extension.gltf").string());
+    ASSERT_FALSE(j.empty());
     const nlohmann::json used = {{{"name", "EXT_made_up_extras"}, {"supported", false}},
                                  {{"name", "KHR_texture_transform"}, {"supported", true}}};
     const nlohmann::json required = {{{"name", "KHR_texture_transform"}, {"supported", true}}};

@@ -1,6 +1,7 @@
 // sherpa-cli info on skins, morph targets and animations (issue #16): the JSON keys,
 // --time/--animation, and usage errors; render and cull with a pose. The posed bounds are checked
 // against three.js in motion_oracle_test.cpp.
+#include "cli/cli_json.h"
 #include "cli/cli_run.h"
 #include "test_support.h"
 
@@ -14,13 +15,8 @@ namespace {
 
 using nlohmann::json;
 using sherpa::test::CliRun;
+using sherpa::test::info_json;
 using sherpa::test::run_cli;
-
-json info_json(const std::string& file, const std::string& extra = "") {
-    const CliRun r = run_cli("info '" + file + "' --json " + extra);
-    EXPECT_EQ(r.exit_code, 0) << r.out;
-    return r.exit_code == 0 ? json::parse(r.out) : json::object();
-}
 
 std::string data(const char* name) {
     return (sherpa::test::data_dir() / name).string();
@@ -69,6 +65,10 @@ TEST(CliMotion, TimeAddsPosedAndCullingBounds) {
     const json box = info_json(sherpa::test::gltf_asset("Box"), "--time 3");
     EXPECT_TRUE(box["pose"]["animation"].is_null());
     EXPECT_EQ(box["posed_bounds"], box["bounds"]);
+    // --pose bind (as render and cull take it): the file's default pose, no animation.
+    const json bind = info_json(sherpa::test::gltf_asset("RiggedSimple"), "--pose bind");
+    EXPECT_TRUE(bind["pose"]["animation"].is_null());
+    EXPECT_EQ(bind["pose"]["culling_contains_posed"], true);
     const CliRun text =
         run_cli("info '" + sherpa::test::gltf_asset("RiggedSimple") + "' --time 0.5");
     EXPECT_NE(text.out.find("posed bounds"), std::string::npos) << text.out;
@@ -77,8 +77,9 @@ TEST(CliMotion, TimeAddsPosedAndCullingBounds) {
 
 TEST(CliMotion, BadAnimationOrTimeIsAUsageError) {
     const std::string f = "info '" + sherpa::test::gltf_asset("RiggedSimple") + "' ";
-    for (const char* args : {"--time nan", "--time inf", "--time x", "--animation 1 --time 0",
-                             "--animation 0", "--animation -1 --time 0"}) {
+    for (const char* args :
+         {"--time nan", "--time inf", "--time x", "--animation 1 --time 0", "--animation 0",
+          "--animation -1 --time 0", "--pose bind --time 0", "--pose rest", "--scene x"}) {
         const CliRun r = run_cli(f + args);
         EXPECT_EQ(r.exit_code, 2) << args << ": " << r.out;
         EXPECT_NE(r.out.find("error: "), std::string::npos) << args;

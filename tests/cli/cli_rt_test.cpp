@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_json.h" // info_json: the importer's counts, independent of the AS code
 #include "cli_run.h"
 #include "test_support.h"
 
@@ -18,13 +19,6 @@ json rt_json(const std::string& scene, const std::string& extra = "") {
     const CliRun r = run_cli("rt '" + scene + "' --json --validation " + extra, "2>/dev/null");
     EXPECT_EQ(r.exit_code, 0) << scene << "\n" << r.out;
     return r.exit_code == 0 ? json::parse(r.out) : json();
-}
-
-// Independent of the acceleration-structure code: the importer's counts.
-json info_json(const std::string& scene) {
-    const CliRun r = run_cli("info '" + scene + "' --json", "2>/dev/null");
-    EXPECT_EQ(r.exit_code, 0) << r.out;
-    return json::parse(r.out);
 }
 
 void expect_consistent(const json& j, const std::string& scene) {

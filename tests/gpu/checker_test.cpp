@@ -24,9 +24,7 @@ protected:
         s.uv_checker_density = density;
         std::string error;
         EXPECT_TRUE(gpu::parse_camera_spec(kGrazing, s.camera, error)) << error;
-        std::vector<std::uint8_t> rgba;
-        renderer().render(s, &rgba);
-        return rgba;
+        return draw(s);
     }
 };
 

@@ -78,6 +78,13 @@ protected:
             ADD_FAILURE() << "validation: [" << messages[i].id_name << "] " << messages[i].text;
     }
 
+    // The frame `s` asks for, as RGBA8 rows (top first).
+    std::vector<std::uint8_t> draw(const gpu::RenderSettings& s) {
+        std::vector<std::uint8_t> rgba;
+        renderer().render(s, &rgba);
+        return rgba;
+    }
+
     static std::unique_ptr<Scene> load(const std::string& spec) {
         LoadResult r = load_scene(spec);
         EXPECT_TRUE(r) << spec << ": " << r.error;

@@ -61,11 +61,6 @@ Tint classify_tint(const std::vector<std::uint8_t>& plain, const std::vector<std
 
 class HighlightTest : public GpuTest {
 protected:
-    std::vector<std::uint8_t> render(const gpu::RenderSettings& s) {
-        std::vector<std::uint8_t> rgba;
-        renderer().render(s, &rgba);
-        return rgba;
-    }
     gpu::RenderSettings settings() {
         gpu::RenderSettings s;
         s.width = s.height = kSize;
@@ -81,11 +76,11 @@ TEST_F(HighlightTest, SelectedInstanceTriangleAndVertexAreDrawn) {
     ASSERT_EQ(scene->instances.size(), 1u);
     renderer().load(*scene);
     gpu::RenderSettings s = settings();
-    const std::vector<std::uint8_t> plain_rgba = render(s);
+    const std::vector<std::uint8_t> plain_rgba = draw(s);
     const Counts plain = count_highlight(plain_rgba);
 
     s.highlight_instance = 0;
-    const std::vector<std::uint8_t> lit_rgba = render(s);
+    const std::vector<std::uint8_t> lit_rgba = draw(s);
     const Counts instance = count_highlight(lit_rgba);
     EXPECT_GT(instance.orange, plain.orange + 200) << "the box in orange";
     EXPECT_EQ(instance.magenta, plain.magenta);
@@ -99,7 +94,7 @@ TEST_F(HighlightTest, SelectedInstanceTriangleAndVertexAreDrawn) {
 
     s.highlight_triangle = 0;
     s.highlight_vertex = 0;
-    const std::vector<std::uint8_t> detailed = render(s);
+    const std::vector<std::uint8_t> detailed = draw(s);
     const Counts detail = count_highlight(detailed);
     EXPECT_GT(detail.magenta, plain.magenta + 100) << "filled triangle and vertex tripod";
     std::string error;
@@ -107,7 +102,7 @@ TEST_F(HighlightTest, SelectedInstanceTriangleAndVertexAreDrawn) {
 
     // Out of range: no instance, so nothing is highlighted (and nothing breaks).
     s.highlight_instance = 7;
-    const Counts none = count_highlight(render(s));
+    const Counts none = count_highlight(draw(s));
     EXPECT_EQ(none.orange, plain.orange);
     EXPECT_EQ(none.magenta, plain.magenta);
     renderer().unload();
@@ -121,9 +116,9 @@ TEST_F(HighlightTest, HighlightAlongsideOtherLineOverlays) {
     gpu::RenderSettings s = settings();
     s.camera = {};
     s.overlays = gpu::kOverlayBounds | gpu::kOverlayCullBoxes;
-    const Counts plain = count_highlight(render(s));
+    const Counts plain = count_highlight(draw(s));
     s.highlight_instance = static_cast<std::uint32_t>(scene->instances.size() / 2);
-    const Counts lit = count_highlight(render(s));
+    const Counts lit = count_highlight(draw(s));
     EXPECT_GT(lit.orange, plain.orange);
     renderer().unload();
 }

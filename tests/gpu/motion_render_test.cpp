@@ -34,14 +34,7 @@ double mid_time(const Scene& s, std::size_t a) {
     return s.animations[a].start + 0.37 * (s.animations[a].end - s.animations[a].start);
 }
 
-class MotionRenderTest : public GpuTest {
-protected:
-    std::vector<std::uint8_t> draw(const gpu::RenderSettings& s) {
-        std::vector<std::uint8_t> rgba;
-        renderer().render(s, &rgba);
-        return rgba;
-    }
-};
+using MotionRenderTest = GpuTest;
 
 TEST_F(MotionRenderTest, GpuSkinningAndMorphingMatchTheCpuPosedStaticMesh) {
     for (const char* name : {"RiggedSimple", "SimpleMorph", "AnimatedMorphSphere"}) {

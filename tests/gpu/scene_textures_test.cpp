@@ -25,9 +25,7 @@ protected:
         std::string error;
         EXPECT_TRUE(gpu::parse_camera_spec("eye=1.6,0.5,2.6:target=0,0,0", s.camera, error));
         renderer().load(*helmet_, std::move(set));
-        std::vector<std::uint8_t> rgba;
-        renderer().render(s, &rgba);
-        return rgba;
+        return draw(s);
     }
     void SetUp() override {
         GpuTest::SetUp();

@@ -48,11 +48,6 @@ int near_projection(const Pixels& rgba, const glm::mat4& view_proj, glm::vec3 wo
 
 class SkeletonTest : public GpuTest {
 protected:
-    Pixels render(const gpu::RenderSettings& s) {
-        Pixels rgba;
-        renderer().render(s, &rgba);
-        return rgba;
-    }
     static gpu::RenderSettings settings(const Scene& scene) {
         gpu::RenderSettings s;
         s.width = s.height = kSize;
@@ -82,9 +77,9 @@ TEST_F(SkeletonTest, JointsDrawnWhereTheyProjectInBindPoseAndPosed) {
     renderer().load(*scene);
     gpu::RenderSettings s = settings(*scene);
     const glm::mat4 vp = view_proj(s, *scene);
-    const Pixels plain = render(s);
+    const Pixels plain = draw(s);
     s.overlays = gpu::kOverlaySkeleton;
-    const Pixels bind = render(s);
+    const Pixels bind = draw(s);
     for (const std::uint32_t j : scene->skins[0].joints) {
         const glm::vec3 p(scene->node_world[j][3]);
         EXPECT_EQ(near_projection(plain, vp, p, 3, cyan), 0) << "joint " << j;
@@ -101,7 +96,7 @@ TEST_F(SkeletonTest, JointsDrawnWhereTheyProjectInBindPoseAndPosed) {
                                                             glm::length(scene->bounds.extent())) *
                         pose->world[last];
     s.pose = pose;
-    const Pixels posed = render(s);
+    const Pixels posed = draw(s);
     std::string error;
     EXPECT_TRUE(tex::write_png("skeleton_pose.png", kSize, kSize, posed, error)) << error;
     int moved = 0;
@@ -122,7 +117,7 @@ TEST_F(SkeletonTest, JointsDrawnWhereTheyProjectInBindPoseAndPosed) {
     // The selected joint in magenta, only there.
     const std::uint32_t selected = scene->skins[0].joints.back();
     s.selected_joint = selected;
-    const Pixels lit = render(s);
+    const Pixels lit = draw(s);
     EXPECT_GT(near_projection(lit, vp, glm::vec3(pose->world[selected][3]), 4, magenta), 3);
     EXPECT_EQ(near_projection(posed, vp, glm::vec3(pose->world[selected][3]), 4, magenta), 0);
     renderer().unload();
@@ -133,9 +128,9 @@ TEST_F(SkeletonTest, SceneWithoutSkinsDrawsNothingMore) {
     ASSERT_TRUE(scene);
     renderer().load(*scene);
     gpu::RenderSettings s = settings(*scene);
-    const Pixels plain = render(s);
+    const Pixels plain = draw(s);
     s.overlays = gpu::kOverlaySkeleton;
-    EXPECT_EQ(render(s), plain);
+    EXPECT_EQ(draw(s), plain);
     renderer().unload();
 }
 

@@ -89,6 +89,40 @@ int uv_set_for(const Scene& scene, const MaterialInstance& m, std::int32_t image
     return -1;
 }
 
+// An image's size and how many texels of it a pixel covers at best over the views
+// (infinite when no view sees a surface using it); `ok` false when it can't be decoded.
+struct ImageMeasure {
+    bool ok = false;
+    std::uint32_t width = 0, height = 0;
+    double texels_per_pixel = 0.0;
+};
+
+ImageMeasure measure_image(const Scene& scene, std::int32_t image,
+                           const std::vector<CameraSpec>& views, const std::vector<Frustum>& frusta,
+                           std::uint32_t viewport_height, std::vector<std::string>& notes) {
+    ImageMeasure out;
+    tex::RgbaImage decoded;
+    std::string error;
+    if (!tex::decode_image_source(scene.images[std::size_t(image)], decoded, error)) {
+        notes.push_back("image " + std::to_string(image) + " not measured: " + error);
+        return out;
+    }
+    out.ok = true;
+    out.width = decoded.width;
+    out.height = decoded.height;
+    std::vector<std::pair<double, double>> ratios;
+    for (const MeshInstance& inst : scene.instances) {
+        const int set = uv_set_for(scene, scene.materials[inst.material_id], image);
+        const double screen = max_screen_density(inst, views, frusta, viewport_height);
+        if (set >= 0 && screen > 0.0)
+            texel_ratios(scene, inst, std::uint32_t(set), out.width, out.height, screen, ratios);
+    }
+    out.texels_per_pixel = area_quantile(std::move(ratios));
+    if (!std::isfinite(out.texels_per_pixel))
+        notes.push_back("image " + std::to_string(image) + ": no view sees a surface using it");
+    return out;
+}
+
 void add_unread(const Scene& scene, const UsageReport& usage, BudgetReport& out) {
     std::map<std::uint32_t, const PrimitiveUsage*> by_mesh;
     for (const PrimitiveUsage& u : usage.primitives) by_mesh[u.mesh_id] = &u;
@@ -143,22 +177,17 @@ BudgetReport build_budget(const Scene& scene, const BudgetOptions& options) {
     out.notes.push_back("views: " + std::to_string(views.size()) + " cameras at " +
                         std::to_string(options.viewport_height) + " px height");
     BudgetCategory textures{"textures", 0, 0, 0};
+    // An image in two roles (occlusion and metal-roughness in one file) is stored once
+    // per role but decoded and measured once.
+    std::map<std::int32_t, ImageMeasure> measured;
     for (const tex::TextureUse& use : tex::collect_texture_uses(scene)) {
-        tex::RgbaImage image;
-        std::string error;
-        if (!tex::decode_image_source(scene.images[std::size_t(use.image)], image, error)) {
-            out.notes.push_back("image " + std::to_string(use.image) + " not measured: " + error);
-            continue;
-        }
-        std::vector<std::pair<double, double>> ratios;
-        for (const MeshInstance& inst : scene.instances) {
-            const int set = uv_set_for(scene, scene.materials[inst.material_id], use.image);
-            const double screen = max_screen_density(inst, views, frusta, options.viewport_height);
-            if (set >= 0 && screen > 0.0)
-                texel_ratios(scene, inst, std::uint32_t(set), image.width, image.height, screen,
-                             ratios);
-        }
-        const double texels_per_pixel = area_quantile(std::move(ratios));
+        auto [it, fresh] = measured.try_emplace(use.image);
+        if (fresh)
+            it->second =
+                measure_image(scene, use.image, views, frusta, options.viewport_height, out.notes);
+        const ImageMeasure& image = it->second;
+        if (!image.ok) continue;
+        const double texels_per_pixel = image.texels_per_pixel;
         std::uint32_t reduce = 1;
         if (std::isfinite(texels_per_pixel))
             while (reduce * 2 <= texels_per_pixel && image.width / (reduce * 2) >= 1 &&
@@ -174,9 +203,6 @@ BudgetReport build_budget(const Scene& scene, const BudgetOptions& options) {
                                      image_location(scene, use.image) + " (" +
                                          std::string(tex::role_name(use.role)) + ")",
                                      image.width, image.height, texels_per_pixel, reduce});
-        else if (!std::isfinite(texels_per_pixel))
-            out.notes.push_back("image " + std::to_string(use.image) +
-                                ": no view sees a surface using it");
     }
     out.categories.push_back(textures);
     const std::uint64_t materials = sizeof(GPUMaterialData) * scene.materials.size();

@@ -125,19 +125,28 @@ std::vector<std::size_t> pareto_front(const FamilyReport& report) {
     return front;
 }
 
-std::string report_csv(const FamilyReport& report) {
+std::vector<std::string> error_figure_names(const FamilyReport& report) {
     std::vector<std::string> figures;
     for (const MethodResult& m : report.methods)
         for (const ErrorFigure& e : m.errors)
             if (std::find(figures.begin(), figures.end(), e.name) == figures.end())
                 figures.push_back(e.name);
+    return figures;
+}
+
+std::uint64_t failure_units(const MethodResult& m) {
+    std::uint64_t units = 0;
+    for (const Failure& f : m.failures) units += f.count;
+    return units;
+}
+
+std::string report_csv(const FamilyReport& report) {
+    const std::vector<std::string> figures = error_figure_names(report);
     std::ostringstream out;
     out << "method,parameters,ran,time,time_unit,total_ms";
     for (const std::string& f : figures) out << "," << f;
     out << ",failures,note\n";
     for (const MethodResult& m : report.methods) {
-        std::uint64_t failures = 0;
-        for (const Failure& f : m.failures) failures += f.count;
         out << csv_field(m.method.name) << "," << csv_field(m.method.parameters) << ","
             << (m.ran ? 1 : 0) << "," << number(m.time) << "," << report.time_unit << ","
             << number(m.total_ms);
@@ -145,7 +154,7 @@ std::string report_csv(const FamilyReport& report) {
             const ErrorFigure* e = m.error(f);
             out << "," << (e ? number(e->value) : "");
         }
-        out << "," << failures << "," << csv_field(m.note) << "\n";
+        out << "," << failure_units(m) << "," << csv_field(m.note) << "\n";
     }
     return out.str();
 }

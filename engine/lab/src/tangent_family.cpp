@@ -12,13 +12,6 @@
 namespace sherpa::lab {
 namespace {
 
-// The uv set the mesh's normal texture samples (0 without one), as the loader uses it.
-std::uint32_t normal_uv_set(const Scene& scene, const Mesh& mesh) {
-    if (mesh.material_id >= scene.materials.size()) return 0;
-    const TextureSlot& normal = scene.materials[mesh.material_id].normal;
-    return normal.present() && normal.tex_coord <= 1 ? normal.tex_coord : 0;
-}
-
 // Everything one method produced over the scene, corners of all meshes in a row.
 struct Pooled {
     std::vector<glm::vec4> tangents;
@@ -80,7 +73,9 @@ FamilyReport TangentFamily::run(const Scene& scene, const RunControl& control) c
     std::vector<Failure> input_failures;
     TangentWorkspace workspace;
     for (const Mesh* mesh : meshes) {
-        const std::uint32_t set = normal_uv_set(scene, *mesh);
+        // Vertex keeps uv sets 0 and 1: past them the loader makes tangents from uv 0.
+        std::uint32_t set = normal_uv_set(scene, *mesh);
+        if (set > 1) set = 0;
         const VertexAttribute uv_attr =
             set ? VertexAttribute::TexCoord1 : VertexAttribute::TexCoord0;
         if (mesh->provenance_of(uv_attr) == Provenance::Defaulted) {

@@ -151,8 +151,11 @@ void CullingPass::test_cpu(FrameContext& f, PassCull& view, bool caster_view, bo
     st.culled = st.tested - st.visible;
 }
 
-// A moving scene's instance boxes in this frame's pose, for the CPU test.
+// A moving scene's instance boxes in this frame's pose, for the CPU test; rebuilt only
+// when the pose is another than the boxes hold (paused or default pose: no work).
 void CullingPass::use_posed_bounds(FrameContext& f) {
+    if (culling_->boxes_pose == f.slot.pose_key) return;
+    culling_->boxes_pose = f.slot.pose_key;
     const auto& bounds = f.slot.posed_bounds;
     culling_->boxes.assign(bounds);
     std::fill(culling_->invalid.begin(), culling_->invalid.end(), 0);
@@ -160,7 +163,8 @@ void CullingPass::use_posed_bounds(FrameContext& f) {
 }
 
 // The GPU cullers' objects with this frame's posed boxes, in the cullers' order,
-// into the slot's host-visible buffer; returns its address.
+// into the slot's host-visible buffer (rewritten only when the slot's pose or scene
+// changed since); returns its address.
 VkDeviceAddress CullingPass::write_posed_objects(FrameContext& f) {
     FrameSlot& slot = f.slot;
     const GpuCuller& culler = *culling_->gpu.front();
@@ -172,8 +176,14 @@ VkDeviceAddress CullingPass::write_posed_objects(FrameContext& f) {
         slot.cull_objects = resources_.create_buffer(
             {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
              MemoryUsage::Upload, "posed cull objects"});
+        slot.cull_objects_generation = 0; // a new buffer: nothing written yet
     }
     const Buffer& buf = resources_.get(slot.cull_objects);
+    if (slot.cull_objects_generation == slot.pose_generation &&
+        slot.cull_objects_pose == slot.pose_key)
+        return buf.address;
+    slot.cull_objects_generation = slot.pose_generation;
+    slot.cull_objects_pose = slot.pose_key;
     auto* out = static_cast<GPUCullObject*>(buf.mapped);
     for (std::size_t k = 0; k < instances.size(); ++k)
         out[k] = make_cull_object(slot.posed_bounds[instances[k]], culling_->gpu_object_batch[k],

@@ -100,6 +100,8 @@ struct FrameSlot {
     std::uint64_t pose_generation = 0; // 0: nothing written
     BufferHandle cull_objects;         // GPU path while posed: GPUCullObjects of the posed bounds
     VkDeviceSize cull_objects_capacity = 0;
+    // The pose (pose_generation, pose_key) whose bounds cull_objects holds.
+    std::uint64_t cull_objects_generation = 0, cull_objects_pose = 0;
 };
 
 // Culling data of the loaded scene.
@@ -114,6 +116,8 @@ struct SceneCulling {
     std::vector<std::unique_ptr<GpuCuller>> gpu;
     std::vector<std::uint32_t> group_batch;      // draw group -> GPU batch (~0u: blended)
     std::vector<std::uint32_t> gpu_object_batch; // per GPU culler object: its batch
+    // The FrameSlot::pose_key whose posed bounds `boxes` holds; none: the bounds as loaded.
+    std::optional<std::uint64_t> boxes_pose;
 };
 
 // Everything a pass records from. References live for one record_frame() call.
@@ -128,7 +132,7 @@ struct FrameContext {
     ResourceManager& resources;
     const GpuScene* scene;      // null: nothing loaded
     SceneCulling* culling;      // null: nothing loaded
-    const Scene& lighting;      // bounds, lights, cameras (and skins) of the loaded scene
+    const Scene& lighting;      // bounds, lights and cameras of the loaded scene
     std::uint32_t cascades = 0; // shadow cascades re-rendered this frame (0: reused or none)
     bool prepass = false;       // the depth prepass runs this frame
     float aspect() const { return float(target.width) / float(target.height); }

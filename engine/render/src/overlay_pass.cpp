@@ -3,7 +3,6 @@
 // instance world AABBs and the skeleton (CPU-built line lists).
 #include "draw.h"
 #include "passes.h"
-#include "skeleton_lines.h"
 
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/render/gpu_structs.h>
@@ -90,18 +89,14 @@ void OverlayPass::record(FrameContext& f) {
     if (s.overlays & kOverlaySkeleton) draw_skeleton(f);
 }
 
-// Joints inside the skin they move: drawn through every surface, posed as the frame
-// asks (RenderSettings::pose), else as loaded.
+// Joints inside the skin they move: drawn through every surface, posed as the meshes
+// are (PosePass).
 void OverlayPass::draw_skeleton(FrameContext& f) {
-    const Scene& source = f.lighting; // skins, nodes and node_world as loaded
-    if (source.skins.empty()) return;
-    const RenderSettings& s = f.settings;
-    const std::vector<glm::mat4>& world =
-        s.pose && s.pose->world.size() == source.nodes.size() ? s.pose->world : source.node_world;
-    const float size =
-        0.015f * (source.bounds.valid() ? glm::length(source.bounds.extent()) : 1.0f);
+    const Aabb& bounds = f.lighting.bounds;
     std::vector<GPULineVertex> lines;
-    append_skeleton(lines, source.skins, source.nodes, world, s.selected_joint, size);
+    pose_.append_skeleton_lines(lines, f.settings,
+                                0.015f * (bounds.valid() ? glm::length(bounds.extent()) : 1.0f));
+    if (lines.empty()) return;
     vkCmdSetDepthCompareOp(f.cmd, VK_COMPARE_OP_ALWAYS);
     draw_lines(f, lines);
     vkCmdSetDepthCompareOp(f.cmd, VK_COMPARE_OP_GREATER_OR_EQUAL);

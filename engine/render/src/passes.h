@@ -17,6 +17,10 @@ namespace sherpa::gpu {
 // skip it: no buffer, no work (pose_pass.cpp).
 class PosePass {
 public:
+    // The skeleton overlay's lines: the loaded scene's skins posed as the meshes are
+    // (pose_of()); nothing without skins. Built for any scene with skins, moving or not.
+    void append_skeleton_lines(std::vector<GPULineVertex>& out, const RenderSettings& settings,
+                               float joint_size) const;
     PosePass(ResourceManager& resources) : resources_(resources) {}
     void build(const Scene& scene, const GpuScene& gpu); // a scene was loaded
     void reset();                                        // the scene is unloaded
@@ -41,7 +45,8 @@ private:
 
     ResourceManager& resources_;
     bool active_ = false;
-    Scene scene_; // nodes, skins, motions and primitives: what culling_bounds() reads
+    Scene scene_; // nodes, skins, motions and primitives: what culling_bounds() and
+                  // the skeleton read
     Pose default_;
     std::vector<Instance> instances_;        // per GPU instance
     std::vector<std::uint32_t> skin_base_;   // first joint matrix of each skin
@@ -132,11 +137,13 @@ private:
 // bounds, the culling boxes and the skeleton.
 class OverlayPass {
 public:
+    explicit OverlayPass(const PosePass& pose) : pose_(pose) {}
     void record(FrameContext& f);
 
 private:
     void draw_cull_boxes(FrameContext& f);
     void draw_skeleton(FrameContext& f);
+    const PosePass& pose_; // the skins and the frame's pose (the skeleton)
 };
 
 // The selection (RenderSettings::highlight_*), over everything else.

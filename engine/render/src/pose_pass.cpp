@@ -5,6 +5,7 @@
 // push constants: instances -> the first part, pose -> the joint matrices, whose
 // vec4 array continues with the floats (inst.weight_base, highlight_base index them).
 #include "passes.h"
+#include "skeleton_lines.h"
 
 #include <algorithm>
 #include <cmath>
@@ -52,10 +53,14 @@ void PosePass::reset() {
 void PosePass::build(const Scene& scene, const GpuScene& gpu) {
     reset();
     active_ = !scene.motions.empty() || !scene.animations.empty();
-    if (!active_) return;
-    ++generation_;
+    if (!active_ && scene.skins.empty()) return;
     scene_.nodes = scene.nodes;
     scene_.skins = scene.skins;
+    if (!active_) { // a skeleton that moves nothing: the overlay draws it as loaded
+        default_ = evaluate_pose(scene_, -1, 0.0);
+        return;
+    }
+    ++generation_;
     scene_.primitives = scene.primitives;
     // culling_bounds() reads the per-joint boxes and the target count, not the
     // per-vertex arrays (the largest of the scene, already uploaded): no copy of those.
@@ -121,6 +126,13 @@ const Pose& PosePass::pose_of(const RenderSettings& settings) const {
         p->joint_matrices.size() == scene_.skins.size())
         return *p;
     return default_;
+}
+
+void PosePass::append_skeleton_lines(std::vector<GPULineVertex>& out,
+                                     const RenderSettings& settings, float joint_size) const {
+    if (scene_.skins.empty()) return;
+    append_skeleton(out, scene_.skins, scene_.nodes, pose_of(settings).world,
+                    settings.selected_joint, joint_size);
 }
 
 void PosePass::record(FrameSlot& slot, const RenderSettings& settings, bool scene_loaded) {

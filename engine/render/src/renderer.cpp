@@ -145,13 +145,6 @@ void Renderer::Impl::load(const Scene& source, std::unique_ptr<GpuScene> gpu_sce
     lighting_.placed_cameras = source.placed_cameras;
     lighting_.lights = source.lights;
     lighting_.placed_lights = source.placed_lights;
-    // The skeleton overlay: skins, the hierarchy and the world matrices as loaded (only
-    // for scenes that have skins).
-    if (!source.skins.empty()) {
-        lighting_.skins = source.skins;
-        lighting_.nodes = source.nodes;
-        lighting_.node_world = source.node_world;
-    }
     ++scene_generation_;
     shadows_.invalidate();
     // Meshes that skin or morph join the TLAS in the file's default pose, on load.

@@ -109,15 +109,14 @@ private:
     FloorPass floor_;
     DepthPrepass prepass_;
     ForwardPass opaque_{AlphaMode::Opaque}, mask_{AlphaMode::Mask}, blend_{AlphaMode::Blend};
-    OverlayPass overlays_;
+    OverlayPass overlays_{pose_};
     HighlightPass highlight_;
 
     UniqueDescriptorSetLayout frame_layout_;
     UniqueDescriptorPool frame_pool_;
     BufferHandle no_materials_; // bound while no scene is loaded
     std::map<VkFormat, std::unique_ptr<Pipelines>> pipelines_;
-    // Only bounds, lights and cameras (what camera and light resolution needs), and the
-    // skins with the node hierarchy (the skeleton overlay).
+    // Only bounds, lights and cameras (what camera and light resolution needs).
     Scene lighting_;
     std::uint64_t scene_generation_ = 0;
     std::vector<std::unique_ptr<FrameSlot>> slots_;

@@ -78,6 +78,12 @@ std::uint32_t apply_corner_tangents(Mesh& mesh, std::span<const glm::vec4> corne
     return static_cast<std::uint32_t>(source_of.size());
 }
 
+std::uint32_t normal_uv_set(const Scene& scene, const Mesh& mesh) {
+    if (mesh.material_id >= scene.materials.size()) return 0;
+    const TextureSlot& normal = scene.materials[mesh.material_id].normal;
+    return normal.present() ? normal.tex_coord : 0;
+}
+
 MeshTangentInput tangent_input_of(const Mesh& mesh, std::uint32_t tex_coord) {
     MeshTangentInput input;
     input.positions.reserve(mesh.vertices.size());

@@ -3,6 +3,7 @@
 // chart error, Pareto front marked): what `sherpa-cli lab` writes and an editor dock
 // exports, from one definition.
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,11 @@ std::vector<std::size_t> pareto_front(const FamilyReport& report);
 // figure named in any method (empty where a method lacks it), then failures (count
 // of units) and note.
 std::string report_csv(const FamilyReport& report);
+// The error figure columns of report_csv() (and of the editor's table): every figure
+// named in any method, in order of first appearance.
+std::vector<std::string> error_figure_names(const FamilyReport& report);
+// Units of work where `m` failed, over all causes: the CSV's failures column.
+std::uint64_t failure_units(const MethodResult& m);
 
 // A self-contained SVG (width x height px): one point per method that ran, time on x
 // and the chart error on y, each axis logarithmic when its positive values span more

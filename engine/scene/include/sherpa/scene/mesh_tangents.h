@@ -28,6 +28,10 @@ struct MeshTangentInput {
 };
 MeshTangentInput tangent_input_of(const Mesh& mesh, std::uint32_t tex_coord);
 
+// The uv set the mesh's normal texture samples (its texCoord, possibly > 1), 0 without
+// one: the set tangents are made from.
+std::uint32_t normal_uv_set(const Scene& scene, const Mesh& mesh);
+
 struct MeshTangentReport {
     bool generated = false; // tangents were computed and written
     std::string reason;     // why not, or what was done ("regenerated", "normal texture ...")

@@ -6,6 +6,7 @@
 #include "cli_common.h"
 #include "pose_options.h"
 #include "render_report.h"
+#include "shadow_options.h"
 #include "texture_cli.h"
 
 #include <sherpa/core/file_io.h>
@@ -41,9 +42,10 @@ std::string joined(const std::vector<std::string_view>& names);
 
 int usage_error(const std::string& message) {
     // The names come from the engine's view/overlay tables (sherpa/gpu/debug_views.h).
-    std::fprintf(stderr, "error: %s\n%s%s\n%s  --view NAME        %s\n  --overlay NAME     %s\n",
-                 message.c_str(), kUsage, kTextureOptionsSynopsis, kTextureOptionsHelp,
-                 joined(gpu::debug_view_names()).c_str(), joined(gpu::overlay_names()).c_str());
+    std::fprintf(stderr, "error: %s\n%s%s%s\n%s  --view NAME        %s\n  --overlay NAME     %s\n",
+                 message.c_str(), kUsage, kShadowOptionsSynopsis, kTextureOptionsSynopsis,
+                 kTextureOptionsHelp, joined(gpu::debug_view_names()).c_str(),
+                 joined(gpu::overlay_names()).c_str());
     return kExitUsage;
 }
 
@@ -74,6 +76,7 @@ int run_render(Args args) {
     bool ray_tracing = true;
     TextureCliOptions texture_options;
     PoseOptions pose_options;
+    std::uint32_t shadow_resolution = kDefaultShadowResolution;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string_view a = args[i];
         std::string option_error;
@@ -83,6 +86,10 @@ int run_render(Args args) {
         const OptionMatch pm = parse_pose_option(args, i, pose_options, option_error);
         if (pm == OptionMatch::Bad) return usage_error(option_error);
         if (pm == OptionMatch::Taken) continue;
+        const OptionMatch sm =
+            parse_shadow_option(args, i, settings, shadow_resolution, option_error);
+        if (sm == OptionMatch::Bad) return usage_error(option_error);
+        if (sm == OptionMatch::Taken) continue;
         auto value = [&]() -> std::optional<std::string_view> {
             if (i + 1 >= args.size()) return std::nullopt;
             return args[++i];
@@ -198,6 +205,9 @@ int run_render(Args args) {
         return usage_error("--renderer rt does not draw view '" +
                            std::string(gpu::to_string(settings.view)) + "' yet");
     if (ray_traced && settings.overlays != 0) return usage_error("--renderer rt draws no overlays");
+    if (!ray_traced && !gpu::raster_view(settings.view))
+        return usage_error("view '" + std::string(gpu::to_string(settings.view)) +
+                           "' is drawn by rays only (--renderer rt)");
 
     const auto load_start = std::chrono::steady_clock::now();
     LoadResult loaded = load_scene(spec);
@@ -221,6 +231,7 @@ int run_render(Args args) {
         gpu::Context context(options);
         gpu::RendererOptions renderer_options;
         renderer_options.ray_tracing = ray_traced; // acceleration structures built on load
+        renderer_options.shadow_resolution = shadow_resolution;
         gpu::Renderer renderer(context, renderer_options);
         // Textures are prepared (cache lookups, decode, compression) before the upload,
         // as a loader thread would, so the report can time the two apart.

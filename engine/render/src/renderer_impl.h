@@ -17,6 +17,15 @@ namespace sherpa::gpu {
 // empty when none does (renderer_rt.cpp).
 std::string unposed_motion_mesh(const Scene& scene);
 
+// The sun the frame is lit and shadowed by (frame_data.cpp).
+struct MainSun {
+    bool present = false;
+    glm::vec3 direction{0.0f, -1.0f, 0.0f}; // unit, the way light travels
+    glm::vec3 radiance{0.0f};
+    std::int64_t placed_light = -1; // its Scene::placed_lights index; -1: default sun or none
+};
+MainSun main_sun(const Scene& lighting, const RenderSettings& settings);
+
 class Renderer::Impl {
 public:
     static constexpr VkFormat kOffscreenFormat = VK_FORMAT_R8G8B8A8_SRGB;

@@ -72,6 +72,16 @@ FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
     if (settings.pose)
         throw GpuError("the ray tracer draws the scene as loaded (bind pose): posed frames "
                        "(--animation/--time) are raster only");
+    // The shadow-error view compares with the rasterizer's cascades at this camera:
+    // its shadow view is drawn first (cascades and frame constants in that slot).
+    std::uint32_t raster_slot = next_slot_;
+    if (settings.view == DebugView::ShadowError) {
+        RenderSettings raster = settings;
+        raster.renderer = RendererKind::Raster;
+        raster.view = DebugView::Shadow;
+        raster_slot = next_slot_;
+        render(raster, nullptr);
+    }
     // Its descriptor set is rewritten per frame: no earlier frame may be in flight.
     for (auto& s : slots_) wait_slot(*s);
     if (!rt_views_)
@@ -105,6 +115,15 @@ FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
     f.push.view = static_cast<std::uint32_t>(settings.view);
     f.push.texture_lod = settings.texture_lod;
     f.push.clear_color = settings.clear_color;
+    f.frame_data = resources->get(slots_[raster_slot]->frame_data).buffer.get();
+    f.shadow_map = shadows_.descriptor();
+    const MainSun sun = main_sun(lighting_, settings);
+    f.push.sun = glm::vec4(-sun.direction, std::max(settings.sun_angular_radius, 0.0f));
+    // As the rasterizer: no sun or no shadows, and only the facing rule remains.
+    f.push.shadow_rays = sun.present && settings.shadows ? std::max(settings.shadow_rays, 1u) : 0u;
+    f.push.ao_rays = settings.ao_rays;
+    const float diagonal = lighting_.bounds.valid() ? glm::length(lighting_.bounds.extent()) : 1.0f;
+    f.push.ao_radius = settings.ao_radius > 0.0f ? settings.ao_radius : 0.05f * diagonal;
 
     VkCommandBuffer cmd = slot.recorder.begin();
     const bool timed = context.info().timestamps;

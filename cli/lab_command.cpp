@@ -19,8 +19,9 @@ namespace sherpa::cli {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: sherpa-cli lab SCENE --family tangents|textures|culling [--json|--csv]\n"
-    "           [--chart OUT.svg] [--repeat N] [--sample-texels N] [--cameras N] [--no-gpu]\n";
+    "usage: sherpa-cli lab SCENE --family tangents|textures|culling|shadows [--json|--csv]\n"
+    "           [--chart OUT.svg] [--repeat N] [--sample-texels N] [--cameras N] [--no-gpu]\n"
+    "  shadows: --cameras N around the scene, --repeat N timed frames (median)\n";
 
 struct Options {
     std::string spec, family, chart;
@@ -51,6 +52,12 @@ std::unique_ptr<lab::Family> make(const Options& o) {
         if (o.cameras > 0) c.path_length = std::uint32_t(o.cameras);
         c.gpu = o.gpu;
         return lab::make_cull_family(c);
+    }
+    if (o.family == "shadows") {
+        lab::ShadowFamilyOptions sh;
+        if (o.repeat > 0) sh.frames = std::uint32_t(o.repeat);
+        if (o.cameras > 0) sh.cameras = std::uint32_t(std::min(o.cameras, 64LL));
+        return lab::make_shadow_family(sh);
     }
     return nullptr;
 }

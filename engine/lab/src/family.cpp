@@ -18,13 +18,14 @@ LoadOptions lab_load_options() {
 }
 
 std::vector<std::string_view> family_names() {
-    return {"tangents", "textures", "culling"};
+    return {"tangents", "textures", "culling", "shadows"};
 }
 
 std::unique_ptr<Family> make_family(std::string_view name) {
     if (name == "tangents") return make_tangent_family();
     if (name == "textures") return make_texture_family();
     if (name == "culling") return make_cull_family();
+    if (name == "shadows") return make_shadow_family();
     return nullptr;
 }
 

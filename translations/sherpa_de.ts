@@ -173,6 +173,18 @@
         <source>Skeleton</source>
         <translation>Skelett</translation>
     </message>
+    <message>
+        <source>Sun shadow</source>
+        <translation>Sonnenschatten</translation>
+    </message>
+    <message>
+        <source>Ambient occlusion (rays)</source>
+        <translation>Umgebungsverdeckung (Strahlen)</translation>
+    </message>
+    <message>
+        <source>Shadow error (maps vs rays)</source>
+        <translation>Schattenfehler (Maps gegen Strahlen)</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AttributeModel</name>
@@ -434,10 +446,6 @@
         <translation>Das Diagramm wie angezeigt</translation>
     </message>
     <message>
-        <source>Click a point (or double-click a row) to use that method in the viewport: culling methods only. Tangent and texture methods are measured here but the viewport has no switch for them, so clicking them changes nothing.</source>
-        <translation>Einen Punkt anklicken (oder eine Zeile doppelklicken), um diese Methode im Viewport zu verwenden: nur Culling-Methoden. Tangenten- und Texturmethoden werden hier gemessen, aber der Viewport hat keinen Schalter dafür; ein Klick ändert dort nichts.</translation>
-    </message>
-    <message>
         <source>Pick a family and run it on %1.</source>
         <translation>Eine Familie wählen und auf %1 ausführen.</translation>
     </message>
@@ -476,6 +484,10 @@
     <message>
         <source>The line joins the Pareto front; the method in use is ringed.</source>
         <translation>Die Linie verbindet die Pareto-Front; die verwendete Methode ist umringt.</translation>
+    </message>
+    <message>
+        <source>Click a point (or double-click a row) to use that method in the viewport: culling methods, and the cascade count and PCF taps of a shadow setting (the viewport&apos;s shadow maps keep their resolution, fixed when its renderer is made). Tangent and texture methods are measured here but the viewport has no switch for them, so clicking them changes nothing.</source>
+        <translation>Einen Punkt anklicken (oder eine Zeile doppelklicken), um diese Methode im Viewport zu verwenden: Culling-Methoden sowie Kaskadenzahl und PCF-Abtastungen einer Schatteneinstellung (die Schattenmaps des Viewports behalten ihre Auflösung, die beim Erzeugen seines Renderers festgelegt wird). Tangenten- und Texturmethoden werden hier gemessen, aber der Viewport hat keinen Schalter dafür; ein Klick ändert dort nichts.</translation>
     </message>
 </context>
 <context>
@@ -921,6 +933,10 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</source>
         <translation>Mittel der letzten %1 Bilder ohne das erste des Renderers (Pipeline-Erstellung). Während sich die Kamera auf einem langsamen Gerät bewegt, werden Bilder mit geringerer Auflösung und ohne Schatten gezeichnet, um %2 fps zu halten; in Ruhe folgt das volle Bild.</translation>
+    </message>
+    <message>
+        <source>Shadows: %1 cascades, %2 PCF taps; the viewport&apos;s maps stay %3x%3 texels (fixed when its renderer is made), not %4</source>
+        <translation>Schatten: %1 Kaskaden, %2 PCF-Abtastungen; die Maps des Viewports bleiben %3x%3 Texel (beim Erzeugen seines Renderers festgelegt), nicht %4</translation>
     </message>
 </context>
 <context>

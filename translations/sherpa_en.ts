@@ -173,6 +173,18 @@
         <source>Skeleton</source>
         <translation>Skeleton</translation>
     </message>
+    <message>
+        <source>Sun shadow</source>
+        <translation>Sun shadow</translation>
+    </message>
+    <message>
+        <source>Ambient occlusion (rays)</source>
+        <translation>Ambient occlusion (rays)</translation>
+    </message>
+    <message>
+        <source>Shadow error (maps vs rays)</source>
+        <translation>Shadow error (maps vs rays)</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AttributeModel</name>
@@ -434,10 +446,6 @@
         <translation>The chart as shown</translation>
     </message>
     <message>
-        <source>Click a point (or double-click a row) to use that method in the viewport: culling methods only. Tangent and texture methods are measured here but the viewport has no switch for them, so clicking them changes nothing.</source>
-        <translation>Click a point (or double-click a row) to use that method in the viewport: culling methods only. Tangent and texture methods are measured here but the viewport has no switch for them, so clicking them changes nothing.</translation>
-    </message>
-    <message>
         <source>Pick a family and run it on %1.</source>
         <translation>Pick a family and run it on %1.</translation>
     </message>
@@ -476,6 +484,10 @@
     <message>
         <source>The line joins the Pareto front; the method in use is ringed.</source>
         <translation>The line joins the Pareto front; the method in use is ringed.</translation>
+    </message>
+    <message>
+        <source>Click a point (or double-click a row) to use that method in the viewport: culling methods, and the cascade count and PCF taps of a shadow setting (the viewport&apos;s shadow maps keep their resolution, fixed when its renderer is made). Tangent and texture methods are measured here but the viewport has no switch for them, so clicking them changes nothing.</source>
+        <translation>Click a point (or double-click a row) to use that method in the viewport: culling methods, and the cascade count and PCF taps of a shadow setting (the viewport&apos;s shadow maps keep their resolution, fixed when its renderer is made). Tangent and texture methods are measured here but the viewport has no switch for them, so clicking them changes nothing.</translation>
     </message>
 </context>
 <context>
@@ -921,6 +933,10 @@ The current scene is kept.</translation>
     <message>
         <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</source>
         <translation>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</translation>
+    </message>
+    <message>
+        <source>Shadows: %1 cascades, %2 PCF taps; the viewport&apos;s maps stay %3x%3 texels (fixed when its renderer is made), not %4</source>
+        <translation>Shadows: %1 cascades, %2 PCF taps; the viewport&apos;s maps stay %3x%3 texels (fixed when its renderer is made), not %4</translation>
     </message>
 </context>
 <context>

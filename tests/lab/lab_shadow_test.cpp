@@ -31,7 +31,7 @@ lab::ShadowFamilyOptions small(bool ray_tracing) {
     o.resolutions = {256, 4096};
     o.pcf_taps = {1};
     o.cascades = {1};
-    o.cameras = 2; // one on each side of the plane
+    o.cameras = 2; // framed on the front, close up on the back
     o.width = 96;
     o.height = 72;
     o.frames = 1;

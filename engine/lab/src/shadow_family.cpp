@@ -22,8 +22,11 @@ constexpr const char* kReference =
     "ray-traced hard shadows: one shadow ray per pixel from the primary hit toward the sun "
     "(render --renderer rt --view shadow)";
 
-// `count` cameras around the scene at the framing distance, 20 degrees up, looking
-// at its centre (the culling path's outside half, turned off the axes).
+// `count` cameras around the scene, 20 degrees up, looking at its centre: even ones
+// at the framing distance (the culling path's outside half, turned off the axes), odd
+// ones at 40% of it, close up. Framed cameras see the whole scene in every depth slice
+// of the cascade fit, so each cascade is the scene's own sphere (shadow_cascades.cpp:
+// never wider than the scene) and more cascades change nothing; close ones split it.
 std::vector<CameraSpec> orbit(const Aabb& bounds, std::uint32_t count, float aspect) {
     const Aabb box = bounds.valid() ? bounds : Aabb::from_min_max(glm::vec3(-1), glm::vec3(1));
     FramingOptions framing;
@@ -34,7 +37,12 @@ std::vector<CameraSpec> orbit(const Aabb& bounds, std::uint32_t count, float asp
         const float az = 0.6f + 2.0f * glm::pi<float>() * float(i) / float(std::max(count, 1u));
         const glm::vec3 dir(std::cos(elevation) * std::sin(az), std::sin(elevation),
                             std::cos(elevation) * std::cos(az));
-        out.push_back(frame_box_along(box, dir, framing));
+        CameraSpec c = frame_box_along(box, dir, framing);
+        if (i % 2 == 1) {
+            c.eye = c.target + 0.4f * (c.eye - c.target);
+            c.near_plane *= 0.4f;
+        }
+        out.push_back(c);
     }
     return out;
 }
@@ -99,9 +107,10 @@ public:
         const float aspect = float(options_.width) / float(std::max(options_.height, 1u));
         const std::vector<CameraSpec> cameras = orbit(scene.bounds, options_.cameras, aspect);
         report.notes.push_back(
-            std::to_string(cameras.size()) + " cameras at " + std::to_string(options_.width) + "x" +
-            std::to_string(options_.height) + ", time: median of " +
-            std::to_string(options_.frames) + " lit frames (cascades redrawn each frame)");
+            std::to_string(cameras.size()) + " cameras (framed and close up, alternately) at " +
+            std::to_string(options_.width) + "x" + std::to_string(options_.height) +
+            ", time: median of " + std::to_string(options_.frames) +
+            " lit frames (cascades redrawn each frame)");
         detail::Progress progress(control, report.methods.size() * cameras.size());
         if (progress.stop()) return detail::cancelled_report(report.family);
         try {

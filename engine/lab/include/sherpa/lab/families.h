@@ -52,7 +52,8 @@ std::unique_ptr<Family> make_cull_family(const CullFamilyOptions& options = {});
 
 // Shadows: cascaded shadow map settings (map resolution x PCF taps x cascade count)
 // against ray-traced hard shadows (one shadow ray per pixel, the reference). Per
-// camera (`cameras` orbiting the scene at the framing distance) the renderer's
+// camera (`cameras` orbiting the scene, alternately at the framing distance and close
+// up at 40% of it) the renderer's
 // shadow-error view classifies each pixel (gpu::count_shadow_error). Errors: % of the
 // pixels the rays find lit that the maps get wrong either way (the chart error), split
 // into false shadow and false light, summed over the cameras. Time: GPU ms of the
@@ -64,7 +65,7 @@ struct ShadowFamilyOptions {
     std::vector<std::uint32_t> resolutions{1024, 2048, 4096};
     std::vector<std::uint32_t> pcf_taps{1, 4, 16};
     std::vector<std::uint32_t> cascades{1, 2, 3};
-    std::uint32_t cameras = 3;
+    std::uint32_t cameras = 4;
     std::uint32_t width = 160, height = 120;
     std::uint32_t frames = 3;
     bool ray_tracing = true; // false: as on a device without it (tests)

@@ -14,6 +14,7 @@
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/render/gpu_scene.h>
 #include <sherpa/render/renderer.h>
+#include <sherpa/render/shadow_error.h>
 #include <sherpa/scene/scene_loader.h>
 #include <sherpa/texture/image.h>
 
@@ -261,6 +262,15 @@ int run_render(Args args) {
         if (!tex::write_png(std::string(out_path), settings.width, settings.height, rgba, error)) {
             std::fprintf(stderr, "error: %s\n", error.c_str());
             return kExitLoadError;
+        }
+        if (settings.view == gpu::DebugView::ShadowError) {
+            // The view's pixel classes counted back (their colours are the engine's).
+            const gpu::ShadowErrorCounts n = gpu::count_shadow_error(rgba);
+            std::printf("shadow-error: %.3f%% of %llu lit pixels wrong (false shadow %llu, false "
+                        "light %llu; agree lit %llu, agree shadowed %llu)\n",
+                        n.percent_of_lit_wrong(), (unsigned long long)n.lit(),
+                        (unsigned long long)n.false_shadow, (unsigned long long)n.false_light,
+                        (unsigned long long)n.agree_lit, (unsigned long long)n.agree_shadowed);
         }
         // The importer's warnings, as info prints them (skipped objects, repaired data,
         // what the renderer leaves out: animations without --time, unused attributes), then the

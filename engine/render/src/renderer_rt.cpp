@@ -74,12 +74,11 @@ FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
                        "(--animation/--time) are raster only");
     // The shadow-error view compares with the rasterizer's cascades at this camera:
     // its shadow view is drawn first (cascades and frame constants in that slot).
-    std::uint32_t raster_slot = next_slot_;
+    const std::uint32_t raster_slot = next_slot_;
     if (settings.view == DebugView::ShadowError) {
         RenderSettings raster = settings;
         raster.renderer = RendererKind::Raster;
         raster.view = DebugView::Shadow;
-        raster_slot = next_slot_;
         render(raster, nullptr);
     }
     // Its descriptor set is rewritten per frame: no earlier frame may be in flight.

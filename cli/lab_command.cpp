@@ -19,9 +19,10 @@ namespace sherpa::cli {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: sherpa-cli lab SCENE --family tangents|textures|culling|mesh-compression\n"
+    "usage: sherpa-cli lab SCENE --family tangents|textures|culling|mesh-compression|shadows\n"
     "           [--json|--csv] [--chart OUT.svg] [--repeat N] [--sample-texels N]\n"
-    "           [--cameras N] [--no-gpu]\n";
+    "           [--cameras N] [--no-gpu]\n"
+    "  shadows: --cameras N around the scene, --repeat N timed frames (median)\n";
 
 struct Options {
     std::string spec, family, chart;
@@ -56,6 +57,12 @@ std::unique_ptr<lab::Family> make(const Options& o) {
         lab::MeshCompressionFamilyOptions m;
         if (o.repeat > 0) m.repeat = o.repeat;
         return lab::make_mesh_compression_family(m);
+    }
+    if (o.family == "shadows") {
+        lab::ShadowFamilyOptions sh;
+        if (o.repeat > 0) sh.frames = std::uint32_t(o.repeat);
+        if (o.cameras > 0) sh.cameras = std::uint32_t(std::min(o.cameras, 64LL));
+        return lab::make_shadow_family(sh);
     }
     return nullptr;
 }

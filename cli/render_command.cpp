@@ -8,6 +8,7 @@
 #include "compare_options.h"
 #include "pose_options.h"
 #include "render_report.h"
+#include "shadow_options.h"
 #include "texture_cli.h"
 
 #include <sherpa/core/file_io.h>
@@ -15,6 +16,7 @@
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/render/gpu_scene.h>
 #include <sherpa/render/renderer.h>
+#include <sherpa/render/shadow_error.h>
 #include <sherpa/scene/scene_loader.h>
 #include <sherpa/texture/image.h>
 
@@ -45,9 +47,9 @@ std::string joined(const std::vector<std::string_view>& names);
 int usage_error(const std::string& message) {
     // The names come from the engine's view/overlay tables (sherpa/gpu/debug_views.h).
     std::fprintf(stderr,
-                 "error: %s\n%s%s%s%s\n%s%s  --view NAME        %s\n  --overlay NAME     %s\n",
-                 message.c_str(), kUsage, kTextureOptionsSynopsis, kCompareIndent,
-                 kCompareOptionsSynopsis, kTextureOptionsHelp, kCompareOptionsHelp,
+                 "error: %s\n%s%s%s%s%s\n%s%s  --view NAME        %s\n  --overlay NAME     %s\n",
+                 message.c_str(), kUsage, kShadowOptionsSynopsis, kTextureOptionsSynopsis,
+                 kCompareIndent, kCompareOptionsSynopsis, kTextureOptionsHelp, kCompareOptionsHelp,
                  joined(gpu::debug_view_names()).c_str(), joined(gpu::overlay_names()).c_str());
     return kExitUsage;
 }
@@ -80,6 +82,7 @@ int run_render(Args args) {
     TextureCliOptions texture_options;
     PoseOptions pose_options;
     CompareCliOptions compare_options;
+    std::uint32_t shadow_resolution = kDefaultShadowResolution;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string_view a = args[i];
         std::string option_error;
@@ -92,6 +95,10 @@ int run_render(Args args) {
         const OptionMatch cm = parse_compare_option(args, i, compare_options, option_error);
         if (cm == OptionMatch::Bad) return usage_error(option_error);
         if (cm == OptionMatch::Taken) continue;
+        const OptionMatch sm =
+            parse_shadow_option(args, i, settings, shadow_resolution, option_error);
+        if (sm == OptionMatch::Bad) return usage_error(option_error);
+        if (sm == OptionMatch::Taken) continue;
         auto value = [&]() -> std::optional<std::string_view> {
             if (i + 1 >= args.size()) return std::nullopt;
             return args[++i];
@@ -209,6 +216,9 @@ int run_render(Args args) {
         return usage_error("--renderer rt does not draw view '" +
                            std::string(gpu::to_string(settings.view)) + "' yet");
     if (ray_traced && settings.overlays != 0) return usage_error("--renderer rt draws no overlays");
+    if (!ray_traced && !gpu::raster_view(settings.view))
+        return usage_error("view '" + std::string(gpu::to_string(settings.view)) +
+                           "' is drawn by rays only (--renderer rt)");
 
     const auto load_start = std::chrono::steady_clock::now();
     LoadResult loaded = load_scene(spec);
@@ -236,6 +246,7 @@ int run_render(Args args) {
         gpu::Context context(options);
         gpu::RendererOptions renderer_options;
         renderer_options.ray_tracing = ray_traced; // acceleration structures built on load
+        renderer_options.shadow_resolution = shadow_resolution;
         gpu::Renderer renderer(context, renderer_options);
         // Textures are prepared (cache lookups, decode, compression) before the upload,
         // as a loader thread would, so the report can time the two apart.
@@ -265,6 +276,15 @@ int run_render(Args args) {
         if (!tex::write_png(std::string(out_path), settings.width, settings.height, rgba, error)) {
             std::fprintf(stderr, "error: %s\n", error.c_str());
             return kExitLoadError;
+        }
+        if (settings.view == gpu::DebugView::ShadowError) {
+            // The view's pixel classes counted back (their colours are the engine's).
+            const gpu::ShadowErrorCounts n = gpu::count_shadow_error(rgba);
+            std::printf("shadow-error: %.3f%% of %llu lit pixels wrong (false shadow %llu, false "
+                        "light %llu; agree lit %llu, agree shadowed %llu)\n",
+                        n.percent_of_lit_wrong(), (unsigned long long)n.lit(),
+                        (unsigned long long)n.false_shadow, (unsigned long long)n.false_light,
+                        (unsigned long long)n.agree_lit, (unsigned long long)n.agree_shadowed);
         }
         // The importer's warnings, as info prints them (skipped objects, repaired data,
         // what the renderer leaves out: animations without --time, unused attributes), then the

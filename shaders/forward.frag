@@ -101,6 +101,9 @@ void main() {
         break;
     }
     case VIEW_JOINT_INFLUENCE: c = heat_ramp(in_joint_weight); break;
+    case VIEW_SHADOW:
+        c = vec3(sun_visibility(in_world_pos, shadow_normal, -(frame.view * vec4(in_world_pos, 1.0)).z));
+        break;
     default: {
         if (x.unlit != 0u || UNLIT_TOPOLOGY) {
             c = base.rgb;

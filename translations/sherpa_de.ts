@@ -173,6 +173,18 @@
         <source>Skeleton</source>
         <translation>Skelett</translation>
     </message>
+    <message>
+        <source>Sun shadow</source>
+        <translation>Sonnenschatten</translation>
+    </message>
+    <message>
+        <source>Ambient occlusion (rays)</source>
+        <translation>Umgebungsverdeckung (Strahlen)</translation>
+    </message>
+    <message>
+        <source>Shadow error (maps vs rays)</source>
+        <translation>Schattenfehler (Maps gegen Strahlen)</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>
@@ -644,10 +656,6 @@ PSNR %3
         <translation>Das Diagramm wie angezeigt</translation>
     </message>
     <message>
-        <source>Click a point (or double-click a row) to use that method in the viewport: culling methods only. Tangent and texture methods are measured here but the viewport has no switch for them, so clicking them changes nothing.</source>
-        <translation>Einen Punkt anklicken (oder eine Zeile doppelklicken), um diese Methode im Viewport zu verwenden: nur Culling-Methoden. Tangenten- und Texturmethoden werden hier gemessen, aber der Viewport hat keinen Schalter dafür; ein Klick ändert dort nichts.</translation>
-    </message>
-    <message>
         <source>Pick a family and run it on %1.</source>
         <translation>Eine Familie wählen und auf %1 ausführen.</translation>
     </message>
@@ -686,6 +694,10 @@ PSNR %3
     <message>
         <source>The line joins the Pareto front; the method in use is ringed.</source>
         <translation>Die Linie verbindet die Pareto-Front; die verwendete Methode ist umringt.</translation>
+    </message>
+    <message>
+        <source>Click a point (or double-click a row) to use that method in the viewport: culling methods, and the cascade count and PCF taps of a shadow setting (the viewport&apos;s shadow maps keep their resolution, fixed when its renderer is made). Tangent and texture methods are measured here but the viewport has no switch for them, so clicking them changes nothing.</source>
+        <translation>Einen Punkt anklicken (oder eine Zeile doppelklicken), um diese Methode im Viewport zu verwenden: Culling-Methoden sowie Kaskadenzahl und PCF-Abtastungen einer Schatteneinstellung (die Schattenmaps des Viewports behalten ihre Auflösung, die beim Erzeugen seines Renderers festgelegt wird). Tangenten- und Texturmethoden werden hier gemessen, aber der Viewport hat keinen Schalter dafür; ein Klick ändert dort nichts.</translation>
     </message>
 </context>
 <context>
@@ -1175,6 +1187,10 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>%1, source textures</source>
         <translation>%1, Quelltexturen</translation>
+    </message>
+    <message>
+        <source>Shadows: %1 cascades, %2 PCF taps; the viewport&apos;s maps stay %3x%3 texels (fixed when its renderer is made), not %4</source>
+        <translation>Schatten: %1 Kaskaden, %2 PCF-Abtastungen; die Maps des Viewports bleiben %3x%3 Texel (beim Erzeugen seines Renderers festgelegt), nicht %4</translation>
     </message>
 </context>
 <context>

@@ -173,6 +173,18 @@
         <source>Skeleton</source>
         <translation>Skeleton</translation>
     </message>
+    <message>
+        <source>Sun shadow</source>
+        <translation>Sun shadow</translation>
+    </message>
+    <message>
+        <source>Ambient occlusion (rays)</source>
+        <translation>Ambient occlusion (rays)</translation>
+    </message>
+    <message>
+        <source>Shadow error (maps vs rays)</source>
+        <translation>Shadow error (maps vs rays)</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>
@@ -644,10 +656,6 @@ PSNR %3
         <translation>The chart as shown</translation>
     </message>
     <message>
-        <source>Click a point (or double-click a row) to use that method in the viewport: culling methods only. Tangent and texture methods are measured here but the viewport has no switch for them, so clicking them changes nothing.</source>
-        <translation>Click a point (or double-click a row) to use that method in the viewport: culling methods only. Tangent and texture methods are measured here but the viewport has no switch for them, so clicking them changes nothing.</translation>
-    </message>
-    <message>
         <source>Pick a family and run it on %1.</source>
         <translation>Pick a family and run it on %1.</translation>
     </message>
@@ -686,6 +694,10 @@ PSNR %3
     <message>
         <source>The line joins the Pareto front; the method in use is ringed.</source>
         <translation>The line joins the Pareto front; the method in use is ringed.</translation>
+    </message>
+    <message>
+        <source>Click a point (or double-click a row) to use that method in the viewport: culling methods, and the cascade count and PCF taps of a shadow setting (the viewport&apos;s shadow maps keep their resolution, fixed when its renderer is made). Tangent and texture methods are measured here but the viewport has no switch for them, so clicking them changes nothing.</source>
+        <translation>Click a point (or double-click a row) to use that method in the viewport: culling methods, and the cascade count and PCF taps of a shadow setting (the viewport&apos;s shadow maps keep their resolution, fixed when its renderer is made). Tangent and texture methods are measured here but the viewport has no switch for them, so clicking them changes nothing.</translation>
     </message>
 </context>
 <context>
@@ -1175,6 +1187,10 @@ The current scene is kept.</translation>
     <message>
         <source>%1, source textures</source>
         <translation>%1, source textures</translation>
+    </message>
+    <message>
+        <source>Shadows: %1 cascades, %2 PCF taps; the viewport&apos;s maps stay %3x%3 texels (fixed when its renderer is made), not %4</source>
+        <translation>Shadows: %1 cascades, %2 PCF taps; the viewport&apos;s maps stay %3x%3 texels (fixed when its renderer is made), not %4</translation>
     </message>
 </context>
 <context>

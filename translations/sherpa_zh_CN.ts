@@ -173,6 +173,18 @@
         <source>Skeleton</source>
         <translation>骨架</translation>
     </message>
+    <message>
+        <source>Sun shadow</source>
+        <translation>太阳阴影</translation>
+    </message>
+    <message>
+        <source>Ambient occlusion (rays)</source>
+        <translation>环境光遮蔽（光线）</translation>
+    </message>
+    <message>
+        <source>Shadow error (maps vs rays)</source>
+        <translation>阴影误差（贴图对比光线）</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>
@@ -644,10 +656,6 @@ PSNR %3
         <translation>按显示的图表</translation>
     </message>
     <message>
-        <source>Click a point (or double-click a row) to use that method in the viewport: culling methods only. Tangent and texture methods are measured here but the viewport has no switch for them, so clicking them changes nothing.</source>
-        <translation>单击一个点（或双击一行）即在视口中使用该方法：仅限剔除方法。切线和纹理方法在此测量，但视口没有相应开关，单击它们不会改变任何内容。</translation>
-    </message>
-    <message>
         <source>Pick a family and run it on %1.</source>
         <translation>选择一个方法族并在 %1 上运行。</translation>
     </message>
@@ -686,6 +694,10 @@ PSNR %3
     <message>
         <source>The line joins the Pareto front; the method in use is ringed.</source>
         <translation>折线连接帕累托前沿；正在使用的方法带圆圈标记。</translation>
+    </message>
+    <message>
+        <source>Click a point (or double-click a row) to use that method in the viewport: culling methods, and the cascade count and PCF taps of a shadow setting (the viewport&apos;s shadow maps keep their resolution, fixed when its renderer is made). Tangent and texture methods are measured here but the viewport has no switch for them, so clicking them changes nothing.</source>
+        <translation>点击一个点（或双击一行）即在视口中使用该方法：剔除方法，以及阴影设置的级联数和 PCF 采样数（视口的阴影贴图保持其分辨率，该分辨率在创建其渲染器时确定）。切线和纹理方法在此测量，但视口没有对应开关，点击它们不会改变任何内容。</translation>
     </message>
 </context>
 <context>
@@ -1175,6 +1187,10 @@ The current scene is kept.</source>
     <message>
         <source>%1, source textures</source>
         <translation>%1，源纹理</translation>
+    </message>
+    <message>
+        <source>Shadows: %1 cascades, %2 PCF taps; the viewport&apos;s maps stay %3x%3 texels (fixed when its renderer is made), not %4</source>
+        <translation>阴影：%1 个级联，%2 个 PCF 采样；视口的阴影贴图保持 %3x%3 纹素（创建其渲染器时确定），而不是 %4</translation>
     </message>
 </context>
 <context>

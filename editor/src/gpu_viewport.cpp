@@ -196,6 +196,8 @@ gpu::RenderSettings render_settings(const ViewportFrame& frame, float scale, boo
     settings.cull_method = frame.cullMethod;
     settings.pose = frame.pose;
     settings.selected_joint = frame.selectedJoint;
+    settings.cascades = frame.shadowCascades;
+    settings.shadow_pcf_taps = frame.shadowPcfTaps;
     if (frame.frozenCulling) settings.freeze_cull = gpu::explicit_camera(*frame.frozenCulling);
     // A reduced frame means a slow device while the camera moves: the shadow cascades
     // follow the camera and cost the same at any resolution (DamagedHelmet on lavapipe:

@@ -16,6 +16,7 @@
 #include <sherpa/scene/culling.h>
 #include <sherpa/scene/culling_passes.h>
 #include <sherpa/scene/scene.h>
+#include <sherpa/scene/shadow_cascades.h>
 
 #include "material_dock.h"
 #include "scene_session.h"
@@ -46,6 +47,9 @@ struct ViewportFrame {
     std::optional<std::uint32_t> selectedJoint; // a joint node (skeleton, joint influence)
     ViewportComparison compare;                 // raster, ray traced, split or difference
     SharedSession compareSession;               // SideB::OtherFile: the other file
+    // Shadow cascades and PCF taps (0: the device's default), as the Lab's shadows
+    // family applies them; the map resolution is the viewport renderer's, fixed.
+    std::uint32_t shadowCascades = kDefaultShadowCascades, shadowPcfTaps = 0;
 };
 
 // Prepares a scene's textures as `plan` says (the texture pipeline: cache, BC7/BC5,

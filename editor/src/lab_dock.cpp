@@ -173,8 +173,10 @@ void LabDock::retranslate() {
     export_png_->setToolTip(tr("The chart as shown"));
     const QString apply_tip =
         tr("Click a point (or double-click a row) to use that method in the viewport: culling "
-           "methods only. Tangent and texture methods are measured here but the viewport has "
-           "no switch for them, so clicking them changes nothing.");
+           "methods, and the cascade count and PCF taps of a shadow setting (the viewport's "
+           "shadow maps keep their resolution, fixed when its renderer is made). Tangent and "
+           "texture methods are measured here but the viewport has no switch for them, so "
+           "clicking them changes nothing.");
     chart_view_->setToolTip(apply_tip);
     methods_view_->setToolTip(apply_tip);
     if (report_) {

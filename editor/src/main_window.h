@@ -209,6 +209,8 @@ private:
     // enter (menu, settings, command line), never per frame.
     std::uint32_t view_ = 0;     // gpu::DebugView::Lit
     std::uint32_t overlays_ = 0; // gpu::Overlay bits of the Overlays menu
+    // The Lab's shadows family applied (main_window_lab.cpp); 0 taps: the device's default.
+    std::uint32_t shadow_cascades_ = kDefaultShadowCascades, shadow_pcf_taps_ = 0;
     bool first_frame_seen_ = false;
     bool remember_layout_ = true;
     int pass_frames_left_ = 0; // extra frames until the pass table has the first frame

@@ -163,6 +163,8 @@ ViewportFrame MainWindow::currentFrame() const {
     if (a_->box_colouring->isChecked()) frame.overlays |= ViewCatalog::cullBoxesOverlay();
     frame.gpuCulling = a_->gpu_path->isChecked();
     frame.cullMethod = culling_->method();
+    frame.shadowCascades = shadow_cascades_;
+    frame.shadowPcfTaps = shadow_pcf_taps_;
     if (culling_->frozen()) frame.frozenCulling = culling_->cullingCamera();
     frame.compare = compare_->state();
     frame.compareSession = compare_session_;

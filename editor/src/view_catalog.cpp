@@ -12,8 +12,10 @@ QString translated(const char* label) {
 
 std::vector<ViewEntry> ViewCatalog::views() {
     std::vector<ViewEntry> out;
+    // The viewport rasterizes: views only rays draw (ao, shadow-error) are left out.
     for (const gpu::DebugViewInfo& v : gpu::kDebugViews)
-        out.push_back({v.name.data(), translated(v.label), static_cast<std::uint32_t>(v.id)});
+        if (gpu::raster_view(v.id))
+            out.push_back({v.name.data(), translated(v.label), static_cast<std::uint32_t>(v.id)});
     return out;
 }
 
@@ -25,7 +27,8 @@ std::vector<ViewEntry> ViewCatalog::overlays() {
 }
 
 std::optional<std::uint32_t> ViewCatalog::viewId(const QString& name) {
-    if (auto v = gpu::find_debug_view(name.toStdString())) return static_cast<std::uint32_t>(*v);
+    if (auto v = gpu::find_debug_view(name.toStdString()); v && gpu::raster_view(*v))
+        return static_cast<std::uint32_t>(*v);
     return std::nullopt;
 }
 

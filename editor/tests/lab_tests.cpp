@@ -72,6 +72,7 @@ private Q_SLOTS:
     void closingCancelsARun();
     void exportsAreTheEngineWriters();
     void clickingAPointAppliesACullingMethod();
+    void applyingAShadowSettingReachesTheViewport();
 
 private:
     LabDock& dock() { return *window_->labDock(); }
@@ -295,6 +296,25 @@ void LabTests::clickingAPointAppliesACullingMethod() {
         ringed |= s->name().startsWith(QStringLiteral("sphere")) &&
                   s->name().contains(QStringLiteral("in use"));
     QVERIFY(ringed);
+}
+
+// The shadows family's apply action (what a click on its chart emits): the cascade
+// count and PCF taps reach the viewport's frames; a name that is no setting changes
+// nothing.
+void LabTests::applyingAShadowSettingReachesTheViewport() {
+    QVERIFY(test::load(*window_, test::asset(QStringLiteral("Box"))));
+    qsizetype seen = 0;
+    test::fresh_validation_messages(*window_, seen);
+    Q_EMIT dock().applyRequested(QStringLiteral("shadows"), QStringLiteral("4096x1 pcf16"));
+    QTRY_COMPARE(window_->lastFrame().shadowPcfTaps, 16u);
+    QCOMPARE(window_->lastFrame().shadowCascades, 1u);
+    Q_EMIT dock().applyRequested(QStringLiteral("shadows"), QStringLiteral("4096x2"));
+    QCOMPARE(window_->lastFrame().shadowCascades, 1u);
+    Q_EMIT dock().applyRequested(QStringLiteral("shadows"), QStringLiteral("2048x3 pcf4"));
+    QTRY_COMPARE(window_->lastFrame().shadowPcfTaps, 4u);
+    QCOMPARE(window_->lastFrame().shadowCascades, 3u);
+    const QString messages = test::fresh_validation_messages(*window_, seen);
+    QVERIFY2(messages.isEmpty(), qPrintable(messages));
 }
 
 QTEST_MAIN(LabTests)

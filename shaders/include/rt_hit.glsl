@@ -34,7 +34,26 @@ layout(push_constant, scalar) uniform RayPush {
     uint view;                // 72: VIEW_*
     float texture_lod;        // 76: mip level every texture is sampled at (< 0: 0)
     vec4 clear_color;         // 80: linear, what a miss shows
+    vec4 sun;                 // 96: xyz unit direction toward the sun, w angular radius
+    uint shadow_rays;         // 112: per pixel; 0: the sun casts no shadow
+    uint ao_rays;             // 116
+    float ao_radius;          // 120: world units
+    uint reserved;            // 124
 } pc;
+
+// What a ray is for: any-hit culls by it (rt.rahit), raygen traces each kind.
+const uint RAY_PRIMARY = 0u;
+const uint RAY_SHADOW = 1u;
+const uint RAY_AO = 2u;
+
+struct RayPayload {
+    vec4 color;     // rgb; a: 1 linear colour, 0 data (the surface views)
+    vec3 position;  // world hit point
+    uint kind;      // RAY_*, set by the tracer
+    vec3 geometric; // unit face normal on the ray's side
+    uint hit;       // 1 hit, 0 miss (rt.rmiss clears it)
+    vec3 normal;    // interpolated normal of the side seen (flipped on double-sided backs)
+};
 
 // Rays have no derivatives: textures are read at an explicit level, 0 unless
 // render --texture-lod names one.
@@ -51,6 +70,8 @@ struct SurfaceHit {
     vec4 color;
     uint material, flags;
     bool front; // counter-clockwise seen from the ray, in object space (see below)
+    vec3 position;  // world, from the barycentrics (not origin + t * direction)
+    vec3 geometric; // world face normal (counter-clockwise side), not normalised
 };
 
 // The hit with barycentrics (b1, b2). Absent streams read glTF's defaults, as
@@ -69,7 +90,10 @@ SurfaceHit interpolate_hit(vec2 bary) {
     h.flags = g.flags;
     Vec3Ref pos = Vec3Ref(g.stream[0]);
     const vec3 p0 = pos.v[i.x], p1 = pos.v[i.y], p2 = pos.v[i.z];
-    h.front = dot(cross(p1 - p0, p2 - p0), gl_ObjectRayDirectionEXT) < 0.0;
+    const vec3 face = cross(p1 - p0, p2 - p0);
+    h.front = dot(face, gl_ObjectRayDirectionEXT) < 0.0;
+    h.position = gl_ObjectToWorldEXT * vec4(w.x * p0 + w.y * p1 + w.z * p2, 1.0);
+    h.geometric = vec4(face * gl_WorldToObjectEXT).xyz;
     vec3 n = vec3(0.0, 0.0, 1.0);
     if ((g.flags & HAS_NORMAL) != 0u) {
         Vec3Ref s = Vec3Ref(g.stream[1]);

@@ -3,7 +3,9 @@
 // (normal offset against acne included) rather than interpolated: three vec3
 // varyings per cascade set cost more in triangle setup and interpolation on a CPU
 // rasterizer than one selected matrix product per pixel. The comparison sampler
-// filters 2x2 texels per tap; 1 tap on CPU devices, 4 on GPUs (params.w).
+// filters 2x2 texels per tap; params.w taps: 1, 4 (a 2x2 grid half a texel apart)
+// or 16 (4x4), RenderSettings::shadow_pcf_taps (default 1 on CPU devices, 4 on GPUs).
+// Needs `frame` (frame_block.glsl) and `shadow_map` declared by the includer.
 #ifndef SHERPA_SHADOWS_GLSL
 #define SHERPA_SHADOWS_GLSL
 // The map has one mip level: explicit zero gradients keep the lookup free of
@@ -31,12 +33,29 @@ float sun_shadow(vec3 world, vec3 normal, float view_depth) {
     vec2 uv = vec2(0.5 + 0.5 * p.x, 0.5 - 0.5 * p.y);
     if (p.z > 1.0) return 1.0; // beyond the light's far plane; outside x/y the border is lit
     if (frame.params.w < 4u) return shadow_tap(uv, c, p.z);
-    vec2 step_uv = 0.5 / vec2(textureSize(shadow_map, 0).xy);
+    vec2 texel_uv = 1.0 / vec2(textureSize(shadow_map, 0).xy);
+    if (frame.params.w < 16u) {
+        vec2 step_uv = 0.5 * texel_uv;
+        float lit = 0.0;
+        lit += shadow_tap(uv + vec2(-step_uv.x, -step_uv.y), c, p.z);
+        lit += shadow_tap(uv + vec2(step_uv.x, -step_uv.y), c, p.z);
+        lit += shadow_tap(uv + vec2(-step_uv.x, step_uv.y), c, p.z);
+        lit += shadow_tap(uv + vec2(step_uv.x, step_uv.y), c, p.z);
+        return lit * 0.25;
+    }
     float lit = 0.0;
-    lit += shadow_tap(uv + vec2(-step_uv.x, -step_uv.y), c, p.z);
-    lit += shadow_tap(uv + vec2(step_uv.x, -step_uv.y), c, p.z);
-    lit += shadow_tap(uv + vec2(-step_uv.x, step_uv.y), c, p.z);
-    lit += shadow_tap(uv + vec2(step_uv.x, step_uv.y), c, p.z);
-    return lit * 0.25;
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x)
+            lit += shadow_tap(uv + (vec2(x, y) - 1.5) * texel_uv, c, p.z);
+    return lit * (1.0 / 16.0);
+}
+
+// The shadow view's visibility of the sun through the cascades. A surface whose
+// normal (the interpolated one of the side shown) faces away from the sun is in
+// shadow whatever the maps hold: the ray tracer applies the same rule before its
+// shadow rays (rt.rgen), so the two views agree on it.
+float sun_visibility(vec3 world, vec3 normal, float view_depth) {
+    if (dot(normal, frame.sun_direction.xyz) >= 0.0) return 0.0;
+    return sun_shadow(world, normal, view_depth);
 }
 #endif

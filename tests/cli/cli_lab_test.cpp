@@ -96,6 +96,29 @@ TEST(CliLab, MeshCompressionJsonShape) {
     }
 }
 
+// The shadows family's JSON: every cascade setting (3 resolutions x 3 cascade counts x 3
+// PCF tap counts) with the chart error and its false-shadow / false-light split.
+TEST(CliLab, ShadowsJsonShape) {
+    const auto j = lab_json("'" + sherpa::test::gltf_asset("Box") +
+                            "' --family shadows --cameras 1 --repeat 1");
+    EXPECT_EQ(j.at("family"), "shadows");
+    EXPECT_EQ(j.at("chart_error"), "lit_pixels_wrong_percent");
+    EXPECT_EQ(j.at("time_unit"), "ms/frame");
+    EXPECT_NE(j.at("reference").get<std::string>().find("ray-traced"), std::string::npos);
+    ASSERT_EQ(j.at("methods").size(), 27u);
+    EXPECT_EQ(j["methods"][0]["name"], "1024x1 pcf1");
+    for (const auto& m : j["methods"]) {
+        if (!m.at("ran").get<bool>()) {
+            EXPECT_NE(m.at("note").get<std::string>().find("ray trace"), std::string::npos);
+            continue;
+        }
+        for (const char* e : {"lit_pixels_wrong_percent", "false_shadow_percent",
+                              "false_light_percent", "wrong_pixels", "lit_pixels"})
+            EXPECT_TRUE(m.at("errors").contains(e)) << m["name"] << " " << e;
+        EXPECT_GE(m.at("time").get<double>(), 0.0);
+    }
+}
+
 TEST(CliLab, CsvAndChart) {
     const fs::path svg =
         fs::temp_directory_path() / ("sherpa_lab_" + std::to_string(::getpid()) + ".svg");

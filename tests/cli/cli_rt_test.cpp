@@ -230,5 +230,30 @@ TEST(CliRt, PosedMeshesGetPosedStreamsAndBlasOnlyWhereTheyMove) {
     EXPECT_EQ(r.exit_code, 0) << r.out;
 }
 
+// The lighting views and their options: drawn validation-clean by the renderer that
+// can; rays-only views and out-of-range values are usage errors.
+TEST(CliRt, RenderShadowAndAoOptions) {
+    const std::string dir = ::testing::TempDir();
+    const std::string duck = "'" + gltf_asset("Duck") + "' --width 32 --height 24 --validation";
+    for (const std::string ok :
+         {" --view shadow --cascades 1 --shadow-resolution 512 --pcf-taps 16",
+          " --view shadow --renderer rt --shadow-rays 4 --sun-angular-radius 0.05",
+          " --view ao --renderer rt --ao-rays 4 --ao-radius 0.5",
+          " --view shadow-error --renderer rt --cascades 2 --pcf-taps 4"}) {
+        const CliRun r = run_cli("render " + duck + " -o " + dir + "/lighting.png" + ok, "2>&1");
+        EXPECT_EQ(r.exit_code, 0) << ok << "\n" << r.out;
+        if (ok.find("shadow-error") != std::string::npos) {
+            EXPECT_NE(r.out.find("% of "), std::string::npos) << "the pixel classes counted";
+        }
+    }
+    for (const std::string bad :
+         {" --view ao", " --view shadow-error", " --pcf-taps 3", " --cascades 0", " --cascades 4",
+          " --shadow-rays 0", " --sun-angular-radius -1", " --ao-radius nan",
+          " --shadow-resolution 10"}) {
+        const CliRun r = run_cli("render " + duck + " -o " + dir + "/bad.png" + bad, "2>&1");
+        EXPECT_EQ(r.exit_code, 2) << bad << "\n" << r.out;
+    }
+}
+
 } // namespace
 } // namespace sherpa::test

@@ -18,7 +18,7 @@ LoadOptions lab_load_options() {
 }
 
 std::vector<std::string_view> family_names() {
-    return {"tangents", "textures", "culling", "mesh-compression"};
+    return {"tangents", "textures", "culling", "mesh-compression", "shadows"};
 }
 
 std::unique_ptr<Family> make_family(std::string_view name) {
@@ -26,6 +26,7 @@ std::unique_ptr<Family> make_family(std::string_view name) {
     if (name == "textures") return make_texture_family();
     if (name == "culling") return make_cull_family();
     if (name == "mesh-compression") return make_mesh_compression_family();
+    if (name == "shadows") return make_shadow_family();
     return nullptr;
 }
 

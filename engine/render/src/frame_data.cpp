@@ -19,6 +19,29 @@ Aabb Renderer::Impl::shadow_bounds(const FrameContext& frame) const {
     return b;
 }
 
+// The first directional light is the main (shadowed) one; with no scene lights at
+// all a default sun stands in. Shared with the ray tracer's shadow rays.
+MainSun main_sun(const Scene& lighting, const RenderSettings& settings) {
+    MainSun sun;
+    for (std::size_t i = 0; i < lighting.placed_lights.size(); ++i) {
+        const PlacedLight& pl = lighting.placed_lights[i];
+        if (pl.light >= lighting.lights.size()) continue;
+        const Light& l = lighting.lights[pl.light];
+        if (l.type != LightType::Directional) continue;
+        sun.present = true;
+        sun.direction = glm::normalize(pl.direction);
+        sun.radiance = l.color * l.intensity;
+        sun.placed_light = std::int64_t(i);
+        return sun;
+    }
+    if (lighting.placed_lights.empty()) {
+        sun.present = true;
+        sun.direction = glm::normalize(settings.sun_direction);
+        sun.radiance = glm::vec3(settings.sun_intensity);
+    }
+    return sun;
+}
+
 void Renderer::Impl::write_frame_data(FrameContext& frame) {
     FrameSlot& slot = frame.slot;
     const RenderSettings& settings = frame.settings;
@@ -30,20 +53,15 @@ void Renderer::Impl::write_frame_data(FrameContext& frame) {
     f.view_proj = slot.camera.proj * slot.camera.view;
     f.camera_position = glm::vec4(slot.camera.position, 1.0f);
 
-    // The first directional light is the main (shadowed) one; with no scene lights
-    // at all a default sun stands in.
-    bool have_sun = false;
-    glm::vec3 sun_dir(0.0f, -1.0f, 0.0f);
+    const MainSun sun = main_sun(info, settings);
+    const bool have_sun = sun.present;
+    const glm::vec3 sun_dir = sun.direction;
+    f.sun_radiance = glm::vec4(sun.radiance, 0.0f);
     std::uint32_t count = 0;
-    for (const PlacedLight& pl : info.placed_lights) {
-        if (pl.light >= info.lights.size()) continue;
+    for (std::size_t i = 0; i < info.placed_lights.size(); ++i) {
+        const PlacedLight& pl = info.placed_lights[i];
+        if (pl.light >= info.lights.size() || std::int64_t(i) == sun.placed_light) continue;
         const Light& l = info.lights[pl.light];
-        if (l.type == LightType::Directional && !have_sun) {
-            have_sun = true;
-            sun_dir = glm::normalize(pl.direction);
-            f.sun_radiance = glm::vec4(l.color * l.intensity, 0.0f);
-            continue;
-        }
         if (count >= kMaxLights) continue; // beyond the fixed array: not lit (documented limit)
         GPULight& g = f.lights[count++];
         g.position_range = glm::vec4(pl.position, l.range);
@@ -54,11 +72,6 @@ void Renderer::Impl::write_frame_data(FrameContext& frame) {
         g.color_intensity = glm::vec4(l.color, l.intensity);
         g.cone = glm::vec4(std::cos(l.outer_cone), std::cos(l.inner_cone), 0.0f, 0.0f);
     }
-    if (info.placed_lights.empty()) {
-        have_sun = true;
-        sun_dir = glm::normalize(settings.sun_direction);
-        f.sun_radiance = glm::vec4(glm::vec3(settings.sun_intensity), 0.0f);
-    }
     f.sun_direction = glm::vec4(sun_dir, 0.0f);
     f.ambient = glm::vec4(glm::vec3(settings.ambient), 0.0f);
 
@@ -66,7 +79,7 @@ void Renderer::Impl::write_frame_data(FrameContext& frame) {
     frame.cascades = 0;
     slot.cascades = ShadowCascades{};
     if (have_sun && settings.shadows && !settings.floor_only && scene &&
-        settings.view == DebugView::Lit) {
+        (settings.view == DebugView::Lit || settings.view == DebugView::Shadow)) {
         // The one cascade fit (scene layer), shared with `sherpa-cli cull`.
         const ShadowCascades c = fit_shadow_cascades(
             cascade_camera(slot.camera), shadow_bounds(frame), sun_dir,
@@ -82,8 +95,13 @@ void Renderer::Impl::write_frame_data(FrameContext& frame) {
             scene_generation_ ^ (slot.pose_key * 0x9e3779b97f4a7c15ull);
         if (shadows_.needs_render(c, generation, settings.cache_shadows)) frame.cascades = c.count;
     }
-    // Every filtered fetch is expensive on a CPU rasterizer: one 2x2 PCF tap there.
-    const std::uint32_t taps = context.info().is_cpu() ? 1u : 4u;
+    // Every filtered fetch is expensive on a CPU rasterizer: one 2x2 PCF tap there
+    // unless the settings ask for more (shadows.glsl reads 1, 4 or 16).
+    const std::uint32_t taps = settings.shadow_pcf_taps >= 16  ? 16u
+                               : settings.shadow_pcf_taps >= 4 ? 4u
+                               : settings.shadow_pcf_taps >= 1 ? 1u
+                               : context.info().is_cpu()       ? 1u
+                                                               : 4u;
     f.params = glm::uvec4(static_cast<std::uint32_t>(settings.view), count, cascades, taps);
     const float diagonal = info.bounds.valid() ? glm::length(info.bounds.extent()) : 1.0f;
     f.overlay = glm::vec4(settings.glyph_length > 0.0f ? settings.glyph_length : 0.02f * diagonal,

@@ -47,6 +47,9 @@ bool ray_traced_view(DebugView v) {
     case DebugView::Provenance:
     case DebugView::ShadingNormal:
     case DebugView::Specular:
+    case DebugView::Shadow:
+    case DebugView::AmbientOcclusion:
+    case DebugView::ShadowError:
         return true;
     default:
         return false;

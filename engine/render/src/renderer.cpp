@@ -248,6 +248,9 @@ FrameStats Renderer::Impl::render(const RenderSettings& settings, std::vector<st
         throw GpuError("render size " + std::to_string(settings.width) + "x" +
                        std::to_string(settings.height) + " is out of range");
     if (settings.renderer == RendererKind::RayTraced) return render_rt(settings, rgba);
+    if (!raster_view(settings.view))
+        throw GpuError("the rasterizer does not draw view '" +
+                       std::string(to_string(settings.view)) + "' (rays only: --renderer rt)");
     const std::uint32_t index = next_slot_;
     next_slot_ = (next_slot_ + 1) % kFramesInFlight;
     FrameSlot& slot = *slots_[index];

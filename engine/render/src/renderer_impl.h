@@ -13,6 +13,15 @@
 
 namespace sherpa::gpu {
 
+// The sun the frame is lit and shadowed by (frame_data.cpp).
+struct MainSun {
+    bool present = false;
+    glm::vec3 direction{0.0f, -1.0f, 0.0f}; // unit, the way light travels
+    glm::vec3 radiance{0.0f};
+    std::int64_t placed_light = -1; // its Scene::placed_lights index; -1: default sun or none
+};
+MainSun main_sun(const Scene& lighting, const RenderSettings& settings);
+
 class Renderer::Impl {
 public:
     static constexpr VkFormat kOffscreenFormat = VK_FORMAT_R8G8B8A8_SRGB;
@@ -97,7 +106,7 @@ private:
     bool pose_acceleration(FrameSlot& slot, const RenderSettings& settings);
     void check_rt(const RenderSettings& settings) const;
     // The ray tracer's frame of `settings` (the TLAS must exist).
-    RayTracedFrame rt_frame(const RenderSettings& settings) const;
+    RayTracedFrame rt_frame(const RenderSettings& settings, const FrameSlot& data_slot) const;
     SideImage record_rt_side(VkCommandBuffer cmd, FrameSlot& slot, const RenderSettings& settings);
 
     std::unique_ptr<RtViewPass> rt_views_;

@@ -57,7 +57,8 @@ void Renderer::Impl::check_rt(const RenderSettings& settings) const {
         throw GpuError("the ray tracer draws no overlays or highlights (raster only)");
 }
 
-RayTracedFrame Renderer::Impl::rt_frame(const RenderSettings& settings) const {
+RayTracedFrame Renderer::Impl::rt_frame(const RenderSettings& settings,
+                                        const FrameSlot& data_slot) const {
     const CameraView camera =
         resolve_camera(settings.camera, lighting_, float(settings.width) / float(settings.height));
     RayTracedFrame f;
@@ -72,12 +73,30 @@ RayTracedFrame Renderer::Impl::rt_frame(const RenderSettings& settings) const {
     f.push.view = static_cast<std::uint32_t>(settings.view);
     f.push.texture_lod = settings.texture_lod;
     f.push.clear_color = settings.clear_color;
+    f.frame_data = resources->get(data_slot.frame_data).buffer.get();
+    f.shadow_map = shadows_.descriptor();
+    const MainSun sun = main_sun(lighting_, settings);
+    f.push.sun = glm::vec4(-sun.direction, std::max(settings.sun_angular_radius, 0.0f));
+    // As the rasterizer: no sun or no shadows, and only the facing rule remains.
+    f.push.shadow_rays = sun.present && settings.shadows ? std::max(settings.shadow_rays, 1u) : 0u;
+    f.push.ao_rays = settings.ao_rays;
+    const float diagonal = lighting_.bounds.valid() ? glm::length(lighting_.bounds.extent()) : 1.0f;
+    f.push.ao_radius = settings.ao_radius > 0.0f ? settings.ao_radius : 0.05f * diagonal;
     return f;
 }
 
 FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
                                      std::vector<std::uint8_t>* rgba) {
     check_rt(settings);
+    // The shadow-error view compares with the rasterizer's cascades at this camera:
+    // its shadow view is drawn first (cascades and frame constants in that slot).
+    const std::uint32_t raster_slot = next_slot_;
+    if (settings.view == DebugView::ShadowError) {
+        RenderSettings raster = settings;
+        raster.renderer = RendererKind::Raster;
+        raster.view = DebugView::Shadow;
+        render(raster, nullptr);
+    }
     // Its descriptor set is rewritten per frame, and the structures are posed below:
     // no earlier frame may be in flight.
     for (auto& s : slots_) wait_slot(*s);
@@ -106,7 +125,7 @@ FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
         }
         return stats;
     }
-    const RayTracedFrame f = rt_frame(settings);
+    const RayTracedFrame f = rt_frame(settings, *slots_[raster_slot]);
     VkCommandBuffer cmd = slot.recorder.begin();
     const bool timed = context.info().timestamps;
     if (timed) {

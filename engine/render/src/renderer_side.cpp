@@ -9,7 +9,13 @@
 namespace sherpa::gpu {
 
 void Renderer::Impl::check_drawable(const RenderSettings& settings) const {
-    if (settings.renderer == RendererKind::RayTraced) check_rt(settings);
+    if (settings.renderer != RendererKind::RayTraced) return;
+    check_rt(settings);
+    // It draws the rasterizer's shadow frame first and waits for it (render_rt): not
+    // inside a frame another recorder owns.
+    if (settings.view == DebugView::ShadowError)
+        throw GpuError("the shadow-error view is drawn offscreen only (sherpa-cli render, the Lab's "
+                       "shadows family), not in presented or compared frames");
 }
 
 ComparisonPass& Renderer::Impl::comparison() {
@@ -84,7 +90,7 @@ SideImage Renderer::Impl::record_rt_side(VkCommandBuffer cmd, FrameSlot& slot,
     // when they hold another one.
     pose_acceleration(slot, settings);
     begin_rt_side(cmd, slot);
-    rt_views_->record(cmd, rt_frame(settings), false);
+    rt_views_->record(cmd, rt_frame(settings, slot), false);
     end_rt_side(cmd, slot);
     return {rt_views_->view(), VK_IMAGE_LAYOUT_GENERAL};
 }

@@ -34,11 +34,16 @@ RtViewPass::RtViewPass(Context& context, ResourceManager& resources,
         {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_RAYGEN_BIT_KHR, nullptr},
         {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kHitStages, nullptr},
         {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kHitStages, nullptr},
+        // The rasterizer's frame constants and shadow cascades (shadow-error view).
+        {4, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_RAYGEN_BIT_KHR, nullptr},
+        {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_RAYGEN_BIT_KHR, nullptr},
     };
     set_layout_ = create_descriptor_set_layout(device, bindings, "vkCreateDescriptorSetLayout(rt)");
     const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1},
                                           {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
-                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2}};
+                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2},
+                                          {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
+                                          {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
     pool_ = create_descriptor_pool(device, 1, sizes, "vkCreateDescriptorPool(rt)");
     const VkDescriptorSetLayout set_layout = set_layout_.get();
     auto ai = vk_init<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
@@ -158,7 +163,8 @@ void RtViewPass::record(VkCommandBuffer cmd, const RayTracedFrame& f, bool readb
                                            VK_IMAGE_LAYOUT_GENERAL};
     const VkDescriptorBufferInfo buffers[] = {{f.materials, 0, VK_WHOLE_SIZE},
                                               {f.material_extras, 0, VK_WHOLE_SIZE}};
-    std::array<VkWriteDescriptorSet, 4> writes{};
+    const VkDescriptorBufferInfo frame_info{f.frame_data, 0, VK_WHOLE_SIZE};
+    std::array<VkWriteDescriptorSet, 6> writes{};
     for (std::uint32_t i = 0; i < writes.size(); ++i) {
         writes[i] = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
         writes[i].dstSet = set_;
@@ -173,9 +179,19 @@ void RtViewPass::record(VkCommandBuffer cmd, const RayTracedFrame& f, bool readb
         writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
         writes[i].pBufferInfo = &buffers[i - 2];
     }
+    writes[4].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    writes[4].pBufferInfo = &frame_info;
+    writes[5].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    writes[5].pImageInfo = &f.shadow_map;
     vkUpdateDescriptorSets(context_.device(), static_cast<std::uint32_t>(writes.size()),
                            writes.data(), 0, nullptr);
 
+    // The cascades were drawn by an earlier submission (render_rt): their depth
+    // writes made visible to the rays.
+    memory_barrier(cmd, VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                   VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                   VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR,
+                   VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
     ImageTransition t;
     t.image = image.image.get();
     t.to = VK_IMAGE_LAYOUT_GENERAL;

@@ -17,6 +17,10 @@ struct RayTracedFrame {
     VkDescriptorSet bindless = VK_NULL_HANDLE;
     VkAccelerationStructureKHR tlas = VK_NULL_HANDLE;
     VkBuffer materials = VK_NULL_HANDLE, material_extras = VK_NULL_HANDLE;
+    // GPUFrameData of the rasterizer's frame of this camera and its shadow cascades:
+    // read by the shadow-error view, bound (whatever they hold) for every view.
+    VkBuffer frame_data = VK_NULL_HANDLE;
+    VkDescriptorImageInfo shadow_map{};
     std::uint32_t width = 0, height = 0;
     GPURayPushConstants push{};
 };

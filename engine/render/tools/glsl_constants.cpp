@@ -50,6 +50,15 @@ std::string views() {
     const auto& f = gpu::kSpecGlossFlagColor;
     o << "// The metallic view on specular-glossiness materials (no metallic value).\n"
       << "const vec3 SPEC_GLOSS_FLAG = vec3(" << f[0] << ", " << f[1] << ", " << f[2] << ");\n";
+    const std::pair<const char*, const std::array<float, 3>*> classes[] = {
+        {"SHADOW_AGREE_LIT", &gpu::kShadowAgreeLitColor},
+        {"SHADOW_AGREE_SHADOWED", &gpu::kShadowAgreeShadowedColor},
+        {"SHADOW_FALSE_SHADOW", &gpu::kShadowFalseShadowColor},
+        {"SHADOW_FALSE_LIGHT", &gpu::kShadowFalseLightColor}};
+    o << "// The shadow-error view's classes.\n";
+    for (auto [name, c] : classes)
+        o << "const vec3 " << name << " = vec3(" << (*c)[0] << ", " << (*c)[1] << ", " << (*c)[2]
+          << ");\n";
     return o.str();
 }
 

@@ -43,12 +43,28 @@ enum class DebugView : std::uint32_t {
     ShadingNormal = 16,      // normal after normal mapping (world)
     Specular = 17,           // F0: specular-glossiness' specular, else mix(0.04, base, metallic)
     JointInfluence = 18,     // weight of RenderSettings::selected_joint, as a heat map
+    // Visibility of the sun (1 lit, 0 shadowed, greys between): the cascaded shadow maps
+    // in the rasterizer, shadow rays in the ray tracer (docs/raytracing/README.md).
+    Shadow = 19,
+    AmbientOcclusion = 20, // rays only: unoccluded fraction of a cosine-weighted hemisphere
+    // Rays only: where the cascaded shadow maps disagree with shadow rays, in the
+    // kShadowError* colours below.
+    ShadowError = 21,
 };
 
 // The metallic view's colour on specular-glossiness materials (no metallic value
 // there): not a grey, so no metallic value reads as it. GLSL: SPEC_GLOSS_FLAG
 // (generated with the VIEW_* constants). Linear data, stored as the 8-bit value.
 inline constexpr std::array<float, 3> kSpecGlossFlagColor{0.0f, 0.5f, 1.0f};
+
+// The shadow-error view's classes (linear data, stored as 8-bit values; exact in 8
+// bits, so a pixel's class is read back from its bytes: gpu::classify_shadow_error).
+// GLSL: SHADOW_AGREE_LIT etc. (generated with the VIEW_* constants).
+inline constexpr std::array<float, 3> kShadowAgreeLitColor{0.8f, 0.8f, 0.8f};
+inline constexpr std::array<float, 3> kShadowAgreeShadowedColor{0.2f, 0.2f, 0.2f};
+// The maps shadow a point the rays find lit / light a point the rays find shadowed.
+inline constexpr std::array<float, 3> kShadowFalseShadowColor{1.0f, 0.0f, 0.0f};
+inline constexpr std::array<float, 3> kShadowFalseLightColor{0.0f, 0.0f, 1.0f};
 
 enum Overlay : std::uint32_t {
     kOverlayWireframe = 1u << 0,
@@ -96,7 +112,7 @@ struct OverlayEntry {
     const char* label;
 };
 
-inline constexpr std::array<DebugViewInfo, 19> kDebugViews{{
+inline constexpr std::array<DebugViewInfo, 22> kDebugViews{{
     {DebugView::Lit, "lit", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Lit")},
     {DebugView::Normal, "normal", kNormalStream, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Normals")},
     {DebugView::Tangent, "tangent", kTangentStream,
@@ -125,6 +141,12 @@ inline constexpr std::array<DebugViewInfo, 19> kDebugViews{{
     {DebugView::Specular, "specular", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Specular (F0)")},
     {DebugView::JointInfluence, "joint-influence", 0,
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Joint influence")},
+    {DebugView::Shadow, "shadow", kNormalStream,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Sun shadow")},
+    {DebugView::AmbientOcclusion, "ao", 0,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Ambient occlusion (rays)")},
+    {DebugView::ShadowError, "shadow-error", kNormalStream,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Shadow error (maps vs rays)")},
 }};
 
 inline constexpr std::array<OverlayEntry, 7> kOverlays{{
@@ -150,6 +172,12 @@ constexpr bool views_indexed_by_id() {
     return true;
 }
 static_assert(views_indexed_by_id(), "kDebugViews must list the views in id order");
+
+// Whether the rasterizer draws `v`: every view but those only rays can compute (the
+// ray tracer's list is render_settings.h's ray_traced_view).
+constexpr bool raster_view(DebugView v) {
+    return v != DebugView::AmbientOcclusion && v != DebugView::ShadowError;
+}
 
 constexpr std::optional<DebugView> find_debug_view(std::string_view name) {
     for (const DebugViewInfo& v : kDebugViews)

@@ -70,6 +70,34 @@ struct MeshCompressionFamilyOptions {
 };
 std::unique_ptr<Family>
 make_mesh_compression_family(const MeshCompressionFamilyOptions& options = {});
+// Shadows: cascaded shadow map settings (map resolution x PCF taps x cascade count)
+// against ray-traced hard shadows (one shadow ray per pixel, the reference). Per
+// camera (`cameras` orbiting the scene, alternately at the framing distance and close
+// up at 40% of it) the renderer's
+// shadow-error view classifies each pixel (gpu::count_shadow_error). Errors: % of the
+// pixels the rays find lit that the maps get wrong either way (the chart error), split
+// into false shadow and false light, summed over the cameras. Time: GPU ms of the
+// rasterized lit frame with its shadow pass (cascades redrawn every frame), median of
+// `frames` frames, mean over the cameras. Needs a device that ray traces: without,
+// every method has ran false and says why. Failures: cameras with no lit pixel,
+// validation messages, frames the renderer refused.
+struct ShadowFamilyOptions {
+    std::vector<std::uint32_t> resolutions{1024, 2048, 4096};
+    std::vector<std::uint32_t> pcf_taps{1, 4, 16};
+    std::vector<std::uint32_t> cascades{1, 2, 3};
+    std::uint32_t cameras = 4;
+    std::uint32_t width = 160, height = 120;
+    std::uint32_t frames = 3;
+    bool ray_tracing = true; // false: as on a device without it (tests)
+    bool validation = false; // Khronos validation on the family's device (tests)
+};
+std::unique_ptr<Family> make_shadow_family(const ShadowFamilyOptions& options = {});
+// A method's name and its settings, both ways: "2048x3 pcf4" is 2048 texels, 3
+// cascades, 4 PCF taps. Parsing fails (false) on anything else.
+std::string shadow_method_name(std::uint32_t resolution, std::uint32_t cascades,
+                               std::uint32_t taps);
+bool parse_shadow_method(std::string_view name, std::uint32_t& resolution, std::uint32_t& cascades,
+                         std::uint32_t& taps);
 
 // The culling family's default path around `bounds`: half the cameras orbit outside
 // at the framing distance looking at the centre (everything in view), half stand

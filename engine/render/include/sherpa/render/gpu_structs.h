@@ -255,12 +255,22 @@ struct GPURayPushConstants {
     std::uint32_t view;         // DebugView
     float texture_lod;          // mip level of every texture (< 0: level 0)
     glm::vec4 clear_color;      // linear
+    // xyz: unit direction toward the sun; w: its angular radius (radians). The
+    // shadow, ao and shadow-error views only.
+    glm::vec4 sun;
+    std::uint32_t shadow_rays; // 0: the sun casts no shadow (facing only)
+    std::uint32_t ao_rays;
+    float ao_radius; // world units
+    std::uint32_t reserved;
 };
 static_assert(offsetof(GPURayPushConstants, geometries) == 64);
 static_assert(offsetof(GPURayPushConstants, view) == 72);
 static_assert(offsetof(GPURayPushConstants, texture_lod) == 76);
 static_assert(offsetof(GPURayPushConstants, clear_color) == 80);
-static_assert(sizeof(GPURayPushConstants) == 96);
+static_assert(offsetof(GPURayPushConstants, sun) == 96);
+static_assert(offsetof(GPURayPushConstants, shadow_rays) == 112);
+static_assert(offsetof(GPURayPushConstants, ao_radius) == 120);
+static_assert(sizeof(GPURayPushConstants) == 128); // Vulkan's guaranteed minimum
 
 // Push constants of the ray tracer's posing pass (shaders/pose_vertices.comp, scalar):
 // one dispatch per posed geometry (posed_geometry.cpp).

@@ -65,6 +65,18 @@ struct RenderSettings {
     float texture_lod = -1.0f;
     bool shadows = true;
     std::uint32_t cascades = kDefaultShadowCascades;
+    // Hardware 2x2 PCF taps per shadow-map lookup (lit and shadow views): 1, 4 or 16;
+    // 0 keeps the device's default (1 on CPU devices, 4 on GPUs: frame_data.cpp).
+    std::uint32_t shadow_pcf_taps = 0;
+    // Ray-traced sun visibility (shadow and shadow-error views): 1 ray is a hard
+    // shadow; N > 1 rays spread over the sun's disc of this angular radius (radians),
+    // at fixed stratified positions, so an image is reproducible.
+    std::uint32_t shadow_rays = 1;
+    float sun_angular_radius = 0.00465f; // the real sun's, 0.27 degrees
+    // Ray-traced ambient occlusion (ao view): rays per pixel over the cosine-weighted
+    // hemisphere and their length in world units (0: 5% of the scene's bounding diagonal).
+    std::uint32_t ao_rays = 16;
+    float ao_radius = 0.0f;
     // Reuse the shadow cascades while camera, light and scene are unchanged. False
     // re-renders them every frame (to measure their cost).
     bool cache_shadows = true;

@@ -1,0 +1,25 @@
+#pragma once
+// The shadow and ray-traced lighting options of `render`: cascade count, map
+// resolution and PCF taps of the rasterizer's cascaded shadow maps; shadow rays, sun
+// disc and ambient-occlusion rays of the ray tracer (docs/raytracing/README.md).
+#include "cli_common.h"
+#include "texture_cli.h" // OptionMatch
+
+#include <cstdint>
+#include <string>
+
+#include <sherpa/render/render_settings.h>
+
+namespace sherpa::cli {
+
+inline constexpr const char* kShadowOptionsSynopsis =
+    "[--cascades 1-3] [--shadow-resolution N] [--pcf-taps 1|4|16] [--shadow-rays N]\n"
+    "         [--sun-angular-radius RAD] [--ao-rays N] [--ao-radius R] ";
+
+// If args[i] is a shadow option, consumes it and its value (advancing i) into
+// `settings` (--shadow-resolution into `resolution`, a renderer option); Bad sets
+// `error`.
+OptionMatch parse_shadow_option(Args args, std::size_t& i, gpu::RenderSettings& settings,
+                                std::uint32_t& resolution, std::string& error);
+
+} // namespace sherpa::cli

@@ -151,7 +151,7 @@ void SceneAccelerationStructures::build_blas(const Scene& scene, const GpuScene&
         for (std::uint32_t i : batch) sum += align_up(scratch[i], alignment);
         stats_.scratch_buffer_bytes = std::max(stats_.scratch_buffer_bytes, sum);
     }
-    blas_.resize(plans.size()); // empty where not built
+    blas_.resize(plans.size());  // empty where not built
     if (batches.empty()) return; // every mesh is instanced posed only (posed_geometry.cpp)
     ScratchBuffer scratch_buffer(resources_, stats_.scratch_buffer_bytes);
 

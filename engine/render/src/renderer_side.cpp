@@ -14,8 +14,9 @@ void Renderer::Impl::check_drawable(const RenderSettings& settings) const {
     // It draws the rasterizer's shadow frame first and waits for it (render_rt): not
     // inside a frame another recorder owns.
     if (settings.view == DebugView::ShadowError)
-        throw GpuError("the shadow-error view is drawn offscreen only (sherpa-cli render, the Lab's "
-                       "shadows family), not in presented or compared frames");
+        throw GpuError(
+            "the shadow-error view is drawn offscreen only (sherpa-cli render, the Lab's "
+            "shadows family), not in presented or compared frames");
 }
 
 ComparisonPass& Renderer::Impl::comparison() {

@@ -1,5 +1,5 @@
 #!/bin/sh
-# device.sh TARBALL OUT [rt]: on the device machine, unpack pack.sh's bundle and run
+# device.sh TARBALL OUT [rt|rtviews]: on the device machine, unpack pack.sh's bundle and run
 # every asset through the renderer with the validation layer on (any message
 # fails), then the render benchmark at 1280x720. Results land in OUT. With `rt`:
 # `sherpa-cli rt --json --validation` (acceleration structures) of every asset and
@@ -27,6 +27,10 @@ for d in "$s"/gltf/*/; do
     n=$(basename "$d")
     [ -f "$d/glTF/$n.gltf" ] && scenes="$scenes $d/glTF/$n.gltf"
 done
+if [ "$mode" = rtviews ]; then
+    sh "$(dirname "$0")/rt_views.sh" "$s" "$out"
+    exit 0
+fi
 if [ "$mode" = rt ]; then
     for scene in $scenes "builtin:grid?n=100000"; do
         name=$(basename "$scene" .gltf | tr ':?=' '___')

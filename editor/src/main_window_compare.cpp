@@ -1,6 +1,7 @@
 // MainWindow: the viewport's mode switch (raster, ray traced, split, difference),
-// side B of a comparison (another file loaded by its own SceneLoadJob, kept only
-// while comparing with it), the split divider dragged in the viewport and the
+// side B of a comparison (another file, or this one with source textures or with
+// tangents by another method, loaded by its own SceneLoadJob, kept only while
+// comparing with it), the split divider dragged in the viewport and the
 // difference legend's numbers. One path: an action changes CompareControls' state,
 // currentFrame() puts it into the next ViewportFrame, GpuViewport draws it.
 #include "main_window.h"
@@ -27,11 +28,14 @@ void MainWindow::connectCompare() {
     connect(compare_, &CompareControls::sourceTexturesRequested, this, [this] {
         if (context_.scene()) compareWithFile(context_.sceneSpec(), true);
     });
+    connect(compare_, &CompareControls::tangentsRequested, this, [this](TangentMethod method) {
+        if (context_.scene()) compareWithTangents(method);
+    });
     connect(viewport_, &ViewportWindow::dividerMoved, compare_, &CompareControls::setDivider);
     connect(&compare_loader_, &SceneLoadJob::loaded, this, [this](SharedSession session) {
         log_->append(LogDock::Level::Info, tr("Side B: %1 loaded.").arg(session->spec));
         compare_session_ = std::move(session);
-        compare_->setOtherFile(compare_label_);
+        compare_->setOtherFile(compare_label_, compare_tangents_);
         compare_->setSide(SideB::OtherFile);
         if (!compare_->state().comparing()) compare_->setMode(ViewportMode::Split);
     });
@@ -46,11 +50,23 @@ void MainWindow::compareWithFile(const QString& spec, bool source_textures) {
     log_->append(LogDock::Level::Info, tr("Side B: loading %1…").arg(spec));
     TexturePlan plan = texturePlan();
     compare_label_ = QFileInfo(spec).fileName();
+    compare_tangents_.reset();
     if (source_textures) {
         plan.bc_textures = false; // RGBA8 as decoded from the images
         compare_label_ = tr("%1, source textures").arg(compare_label_);
     }
     compare_loader_.start(spec, plan);
+}
+
+void MainWindow::compareWithTangents(TangentMethod method) {
+    const QString spec = context_.sceneSpec();
+    log_->append(LogDock::Level::Info, tr("Side B: loading %1 with tangents by %2…")
+                                           .arg(spec, CompareControls::tangentMethodLabel(method)));
+    compare_label_ =
+        tr("%1, tangents: %2")
+            .arg(QFileInfo(spec).fileName(), CompareControls::tangentMethodName(method));
+    compare_tangents_ = method;
+    compare_loader_.start(spec, texturePlan(), method);
 }
 
 void MainWindow::onCompareChanged() {
@@ -60,6 +76,7 @@ void MainWindow::onCompareChanged() {
     if (!c.comparing() && compare_session_) {
         compare_session_.reset();
         compare_->setOtherFile(QString());
+        compare_tangents_.reset();
         if (c.side == SideB::OtherFile) compare_->setSide(SideB::RayTraced);
     }
     legend_->setScale(c.heat_max, c.threshold);

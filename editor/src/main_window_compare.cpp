@@ -36,8 +36,10 @@ void MainWindow::connectCompare() {
         log_->append(LogDock::Level::Info, tr("Side B: %1 loaded.").arg(session->spec));
         compare_session_ = std::move(session);
         compare_->setOtherFile(compare_label_, compare_tangents_);
-        compare_->setSide(SideB::OtherFile);
+        // Comparing first: outside a comparison a change frees side B (onCompareChanged).
+        // The frame is drawn later (requestUpdate), with both set.
         if (!compare_->state().comparing()) compare_->setMode(ViewportMode::Split);
+        compare_->setSide(SideB::OtherFile);
     });
     connect(&compare_loader_, &SceneLoadJob::failed, this,
             [this](const QString& spec, const QString& error) {
@@ -76,7 +78,6 @@ void MainWindow::onCompareChanged() {
     if (!c.comparing() && compare_session_) {
         compare_session_.reset();
         compare_->setOtherFile(QString());
-        compare_tangents_.reset();
         if (c.side == SideB::OtherFile) compare_->setSide(SideB::RayTraced);
     }
     legend_->setScale(c.heat_max, c.threshold);

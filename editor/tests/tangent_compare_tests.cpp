@@ -77,10 +77,12 @@ private Q_SLOTS:
     void commandLineTakesTangents();
     void methodsDifferWhereTheFamilySaysTheyDo_data();
     void methodsDifferWhereTheFamilySaysTheyDo();
+    void tangentSideFollowsTheFile();
 
 private:
     // Side B loaded with `method`, then the numbers of a frame at the viewport's size.
     DifferenceNumbers differenceWith(TangentMethod method);
+    DifferenceNumbers currentNumbers(); // of a frame drawn after this call
     void checkValidation();
 
     QTemporaryDir dir_;
@@ -135,11 +137,18 @@ DifferenceNumbers TangentCompareTests::differenceWith(TangentMethod method) {
     // The first load (from Raster) switches to Split with side B set.
     if (!before && w.compareControls().state().mode != ViewportMode::Split) return {};
     w.compareControls().setMode(ViewportMode::Difference);
+    return currentNumbers();
+}
+
+DifferenceNumbers TangentCompareTests::currentNumbers() {
+    MainWindow& w = *window_;
     // The numbers are those of the latest completed frame: a few frames later.
     const auto current = [&w] {
         const DifferenceNumbers& d = w.lastReport().difference;
         return d.valid && d.pixels == std::uint64_t(w.lastFrame().width) * w.lastFrame().height;
     };
+    QElapsedTimer t;
+    t.start();
     for (int i = 0; i < 4 || (!current() && t.elapsed() < 60000); ++i) {
         w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
         QCoreApplication::processEvents();
@@ -191,9 +200,29 @@ void TangentCompareTests::methodsDifferWhereTheFamilySaysTheyDo() {
               d.over_threshold_percent, d.max, corners);
         // Nonzero on screen exactly where the family finds differing corners.
         QCOMPARE(pixels > 0.0, corners > 0.0);
+        // The bitangent (cross(N, T) * w) moves with the tangent.
+        QVERIFY(w.setDebugView(QStringLiteral("bitangent"), false));
+        const DifferenceNumbers bitangent = currentNumbers();
+        QVERIFY(w.setDebugView(QStringLiteral("tangent"), false));
+        qInfo("  bitangent view: %.3f%% over 2/255", bitangent.over_threshold_percent);
+        QCOMPARE(bitangent.over_threshold_percent > 0.0, corners > 0.0);
     }
     // Leaving the comparison frees side B.
     c.setMode(ViewportMode::Raster);
+    QVERIFY(!w.compareSession());
+    checkValidation();
+}
+
+void TangentCompareTests::tangentSideFollowsTheFile() {
+    MainWindow& w = *window_;
+    QVERIFY(test::load(w, test::asset(QStringLiteral("NormalTangentTest"))));
+    QVERIFY(differenceWith(TangentMethod::MikkTSpaceWelded).valid);
+    // Another scene opened while comparing: side B is that file with the same method.
+    QVERIFY(test::load(w, duck_));
+    QTRY_VERIFY_WITH_TIMEOUT(w.compareSession() && w.compareSession()->spec == duck_, 30000);
+    QVERIFY(w.compareControls().state().comparing());
+    QCOMPARE(w.compareControls().state().side, SideB::OtherFile);
+    w.compareControls().setMode(ViewportMode::Raster);
     QVERIFY(!w.compareSession());
     checkValidation();
 }

@@ -1216,6 +1216,10 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <source>%1, tangents: %2</source>
         <translation>%1, Tangenten: %2</translation>
     </message>
+    <message>
+        <source>Side A&apos;s tangents: %1 primitive(s) authored, %2 exact MikkTSpace, %3 none (no TANGENT, no normal texture: there B differs from no tangents).</source>
+        <translation>Tangenten von Seite A: %1 Primitiv(e) aus der Datei, %2 exaktes MikkTSpace, %3 keine (kein TANGENT, keine Normal-Textur: dort unterscheidet sich B von fehlenden Tangenten).</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>

@@ -1216,6 +1216,10 @@ The current scene is kept.</translation>
         <source>%1, tangents: %2</source>
         <translation>%1, tangents: %2</translation>
     </message>
+    <message>
+        <source>Side A&apos;s tangents: %1 primitive(s) authored, %2 exact MikkTSpace, %3 none (no TANGENT, no normal texture: there B differs from no tangents).</source>
+        <translation>Side A&apos;s tangents: %1 primitive(s) authored, %2 exact MikkTSpace, %3 none (no TANGENT, no normal texture: there B differs from no tangents).</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>

@@ -1216,6 +1216,10 @@ The current scene is kept.</source>
         <source>%1, tangents: %2</source>
         <translation>%1，切线：%2</translation>
     </message>
+    <message>
+        <source>Side A&apos;s tangents: %1 primitive(s) authored, %2 exact MikkTSpace, %3 none (no TANGENT, no normal texture: there B differs from no tangents).</source>
+        <translation>A 侧切线：%1 个图元来自文件，%2 个为精确 MikkTSpace，%3 个没有（无 TANGENT、无法线纹理：此处 B 与无切线相比）。</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>

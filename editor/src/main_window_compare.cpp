@@ -69,6 +69,21 @@ void MainWindow::compareWithTangents(TangentMethod method) {
             .arg(QFileInfo(spec).fileName(), CompareControls::tangentMethodName(method));
     compare_tangents_ = method;
     compare_loader_.start(spec, texturePlan(), method);
+    // What side A's tangents are, so that the difference is read for what it is.
+    const Scene* scene = context_.scene();
+    if (!scene) return;
+    int authored = 0, generated = 0, none = 0;
+    for (const Mesh& m : scene->meshes) {
+        if (m.topology() != Topology::Triangles) continue;
+        const Provenance p = m.provenance_of(VertexAttribute::Tangent);
+        ++(p == Provenance::Authored ? authored : p == Provenance::Generated ? generated : none);
+    }
+    log_->append(LogDock::Level::Info,
+                 tr("Side A's tangents: %1 primitive(s) authored, %2 exact MikkTSpace, %3 "
+                    "none (no TANGENT, no normal texture: there B differs from no tangents).")
+                     .arg(authored)
+                     .arg(generated)
+                     .arg(none));
 }
 
 void MainWindow::onCompareChanged() {

@@ -16,6 +16,7 @@
 
 #include "command_line.h"
 #include "compare_controls.h"
+#include "log_dock.h"
 #include "main_window.h"
 #include "test_assets.h"
 #include "window_test_support.h"
@@ -180,6 +181,12 @@ void TangentCompareTests::methodsDifferWhereTheFamilySaysTheyDo() {
     const DifferenceNumbers exact = differenceWith(TangentMethod::MikkTSpace);
     QVERIFY(exact.valid);
     QCOMPARE(c.state().side, SideB::OtherFile);
+    // The log says what side A's tangents are (each of these files has one primitive).
+    const QString a = authored ? QStringLiteral("1 primitive(s) authored, 0 exact MikkTSpace")
+                               : QStringLiteral("0 primitive(s) authored, 1 exact MikkTSpace");
+    const QString log = w.logDock()->text();
+    const QString last = log.mid(log.lastIndexOf(QStringLiteral("Side A's tangents")));
+    QVERIFY2(last.startsWith(QStringLiteral("Side A's tangents: ") + a), qPrintable(last));
     qInfo("%s, tangent view, A (%s) vs B exact MikkTSpace: mean %.5f max %.4f, %.3f%% over 2/255",
           qPrintable(model), authored ? "authored" : "exact MikkTSpace", exact.mean, exact.max,
           exact.over_threshold_percent);

@@ -9,6 +9,7 @@
 #include <QImage>
 #include <QTimer>
 #include <cstdio>
+#include <optional>
 
 #include "acceleration_dock.h"
 #include "culling_dock.h"
@@ -35,12 +36,21 @@ const QStringList kDockNames = {
 const QStringList kModeNames = {QStringLiteral("raster"), QStringLiteral("rt"),
                                 QStringLiteral("split"), QStringLiteral("difference")};
 
+// --compare-with tangents:METHOD: the method, when the name is one (to_string's).
+std::optional<TangentMethod> tangent_method(const QString& name) {
+    TangentMethod m{};
+    if (!parse_tangent_method(name.toStdString(), m)) return std::nullopt;
+    return m;
+}
+
 // --mode and --compare-with, once the scene is loaded.
 void apply_viewport_mode(MainWindow& window, const CommandLine& cl) {
     CompareControls& compare = window.compareControls();
     const QString& side = cl.compare_with;
     if (side.startsWith(QLatin1String("view:")))
         compare.setSide(SideB::OtherView, *ViewCatalog::viewId(side.mid(5)));
+    else if (side.startsWith(QLatin1String("tangents:")))
+        window.compareWithTangents(*tangent_method(side.mid(9))); // checked by parse
     else if (!side.isEmpty() && side != QLatin1String("rt"))
         window.compareWithFile(side); // loaded on the thread pool, then side B
     if (!cl.mode.isEmpty()) compare.setMode(static_cast<ViewportMode>(kModeNames.indexOf(cl.mode)));
@@ -143,7 +153,8 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
     const QCommandLineOption compare_with(
         QStringLiteral("compare-with"),
         QStringLiteral("Side B of split/difference: rt (the ray tracer), view:NAME (another "
-                       "debug view) or a glTF file."),
+                       "debug view), tangents:METHOD (this file, every primitive's tangents by "
+                       "mikktspace, mikktspace-welded or lengyel) or a glTF file."),
         QStringLiteral("side"));
     p.addOptions({view, shot, quit, language, select, timing, dock, gpu_culling, overlay, time, rt,
                   mode, compare_with});
@@ -178,6 +189,15 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
     if (out.compare_with.startsWith(QLatin1String("view:")) &&
         !ViewCatalog::isView(out.compare_with.mid(5))) {
         error = QStringLiteral("--compare-with: unknown view '%1'").arg(out.compare_with.mid(5));
+        return false;
+    }
+    if (out.compare_with.startsWith(QLatin1String("tangents:")) &&
+        !tangent_method(out.compare_with.mid(9))) {
+        QStringList names;
+        for (const TangentMethod m : kAllTangentMethods)
+            names << CompareControls::tangentMethodName(m);
+        error = QStringLiteral("--compare-with: unknown tangent method '%1' (one of: %2)")
+                    .arg(out.compare_with.mid(9), names.join(QStringLiteral(", ")));
         return false;
     }
     if (p.isSet(time)) {

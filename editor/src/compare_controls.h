@@ -1,11 +1,15 @@
 #pragma once
 // The viewport's mode switch (View › Viewport Mode and two toolbar buttons): Raster,
 // Ray traced, Split, Difference, and what side B of a comparison draws (the ray
-// tracer, another debug view, another file). Actions in, one plain state out
+// tracer, another debug view, another file, this file with its source textures or
+// with tangents made by another method). Actions in, one plain state out
 // (ViewportComparison, which the main window puts into every ViewportFrame).
 #include <QObject>
 
+#include <optional>
 #include <vector>
+
+#include <sherpa/scene/tangents.h>
 
 #include "viewport_mode.h"
 
@@ -35,7 +39,11 @@ public:
     // The device ray traces: the ray-traced mode and side are offered.
     void setRayTracing(bool available);
     // The other file side B shows (its name in the menu); empty: none chosen.
-    void setOtherFile(const QString& name);
+    // `tangents`: it is this file with every primitive's tangents made by that method.
+    void setOtherFile(const QString& name, std::optional<TangentMethod> tangents = std::nullopt);
+    // The menu's name of a tangent method (translated), and its command-line name.
+    static QString tangentMethodLabel(TangentMethod method);
+    static QString tangentMethodName(TangentMethod method);
     void retranslate();
 
 Q_SIGNALS:
@@ -44,15 +52,19 @@ Q_SIGNALS:
     void otherFileRequested();
     // The user chose this file with its source textures (no BC7/BC5): the window loads it.
     void sourceTexturesRequested();
+    // The user chose this file with tangents by `method`: the window loads it.
+    void tangentsRequested(sherpa::TangentMethod method);
 
 private:
     void sync(); // checks, enabled states and button texts from state_
 
     ViewportComparison state_;
     QString other_file_;
+    std::optional<TangentMethod> other_tangents_;
     QMenu* menu_;
     QMenu* side_menu_;
     QMenu* side_views_;
+    QMenu* side_tangents_;
     QMenu* heat_menu_;
     QMenu* threshold_menu_;
     std::vector<QAction*> heat_actions_, threshold_actions_; // kHeatScales, kThresholds
@@ -62,7 +74,8 @@ private:
     QAction* side_rays_;
     QAction* side_file_;
     QAction* side_source_;
-    std::vector<QAction*> view_actions_; // ViewCatalog::views() order
+    std::vector<QAction*> view_actions_;    // ViewCatalog::views() order
+    std::vector<QAction*> tangent_actions_; // kAllTangentMethods order
     QToolButton* mode_button_ = nullptr;
     QToolButton* side_button_ = nullptr;
 };

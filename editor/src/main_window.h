@@ -111,6 +111,9 @@ public:
     // `source_textures`: its textures uploaded as decoded from their images, not
     // through BC7/BC5 (the compression's error against the source).
     void compareWithFile(const QString& spec, bool source_textures = false);
+    // Loads this file again as side B with every triangle primitive's tangents made by
+    // `method` (authored ones replaced), from the file's unsplit vertices.
+    void compareWithTangents(TangentMethod method);
     // The other file's session while comparing with it (null otherwise).
     const SharedSession& compareSession() const { return compare_session_; }
 
@@ -197,9 +200,10 @@ private:
     LabDock* lab_ = nullptr;
     CompareControls* compare_ = nullptr;
     DifferenceLegend* legend_ = nullptr;
-    SceneLoadJob compare_loader_;   // side B's file
-    SharedSession compare_session_; // loaded by it, kept while comparing with it
-    QString compare_label_;         // what side B shows (the file, its textures)
+    SceneLoadJob compare_loader_;                   // side B's file
+    SharedSession compare_session_;                 // loaded by it, kept while comparing with it
+    QString compare_label_;                         // what side B shows (the file, its textures)
+    std::optional<TangentMethod> compare_tangents_; // side B's tangents, when regenerated
     AccelerationDock* acceleration_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;

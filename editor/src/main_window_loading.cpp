@@ -107,6 +107,8 @@ void MainWindow::onLoaded(SharedSession session) {
     viewport_->setAutoFrame(true);
     onCameraChanged();
     updateStatus();
+    // Side B "this file, tangents by ..." follows the file (another file stays).
+    if (compare_session_ && compare_tangents_) compareWithTangents(*compare_tangents_);
     Q_EMIT sceneLoaded(s.spec, s.timings.total_ms);
 }
 

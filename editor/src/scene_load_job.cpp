@@ -103,7 +103,8 @@ QImage prepared_thumbnail(const tex::PreparedTextureSet* set, std::int32_t t, QS
     return {};
 }
 
-LoadOutcome run_load(const QString& spec, const TexturePlan& plan, SceneLoadJob::State* state);
+LoadOutcome run_load(const QString& spec, const TexturePlan& plan, SceneLoadJob::State* state,
+                     std::optional<TangentMethod> tangents = std::nullopt);
 
 } // namespace
 
@@ -121,7 +122,8 @@ int SceneLoadJob::workersInFlight() {
     return g_in_flight.load();
 }
 
-void SceneLoadJob::start(const QString& spec, const TexturePlan& plan) {
+void SceneLoadJob::start(const QString& spec, const TexturePlan& plan,
+                         std::optional<TangentMethod> tangents) {
     cancel();
     spec_ = spec;
     state_ = std::make_shared<State>();
@@ -141,8 +143,8 @@ void SceneLoadJob::start(const QString& spec, const TexturePlan& plan) {
         });
     };
     ++g_in_flight;
-    watcher_->setFuture(QtConcurrent::run([spec, state, plan] {
-        LoadOutcome out = run_load(spec, plan, state.get());
+    watcher_->setFuture(QtConcurrent::run([spec, state, plan, tangents] {
+        LoadOutcome out = run_load(spec, plan, state.get(), tangents);
         --g_in_flight;
         return out;
     }));
@@ -189,11 +191,18 @@ LoadOutcome SceneLoadJob::loadNow(const QString& spec, const TexturePlan& plan) 
 
 namespace {
 
-LoadOutcome run_load(const QString& spec, const TexturePlan& plan, SceneLoadJob::State* state) {
+LoadOutcome run_load(const QString& spec, const TexturePlan& plan, SceneLoadJob::State* state,
+                     std::optional<TangentMethod> tangents) {
     LoadOutcome out;
     QElapsedTimer clock;
     clock.start();
     LoadOptions options;
+    // From the file's own vertices: regenerating on a loaded scene would see the
+    // vertices exact MikkTSpace already split, where a welded method welds nothing.
+    if (tangents) {
+        options.tangents.method = *tangents;
+        options.tangents.regenerate = true;
+    }
     options.cancel = &state->cancel;
     options.progress = [state](sherpa::LoadStage stage, std::size_t done, std::size_t total) {
         const LoadStep step = stage == sherpa::LoadStage::Parse      ? LoadStep::Parse

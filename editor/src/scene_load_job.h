@@ -10,8 +10,10 @@
 
 #include <atomic>
 #include <memory>
+#include <optional>
 
 #include <sherpa/scene/scene.h>
+#include <sherpa/scene/tangents.h>
 
 #include "scene_session.h"
 
@@ -34,8 +36,12 @@ public:
     ~SceneLoadJob() override; // cancels and waits for a running load
 
     // Starts loading `spec`, its textures prepared on the worker as `plan` says
-    // (progress per texture); a load already running is cancelled first.
-    void start(const QString& spec, const TexturePlan& plan = {});
+    // (progress per texture); a load already running is cancelled first. With
+    // `tangents`, every triangle primitive gets tangents made by that method, authored
+    // ones replaced (a comparison's side B); without, the glTF rule (exact MikkTSpace
+    // where TANGENT is absent and a normal texture needs it).
+    void start(const QString& spec, const TexturePlan& plan = {},
+               std::optional<TangentMethod> tangents = std::nullopt);
     void cancel();
     bool running() const { return state_ != nullptr; }
     const QString& spec() const { return spec_; }

@@ -6,6 +6,7 @@
 #include "gpu_test_support.h"
 
 #include <sherpa/render/renderer.h>
+#include <sherpa/scene/animation.h>
 #include <sherpa/scene/visibility.h>
 
 namespace sherpa::test {
@@ -103,6 +104,15 @@ TEST_F(Visibility, HiddenCasterLeavesNoPixelsNorShadowOnEveryCullPath) {
             }
         }
         EXPECT_EQ(st.culling[0].visible, 1u) << "only the plane";
+        if (path == gpu::CullPath::Gpu) { // check mode: the CPU test leaves them out too
+            gpu::RenderSettings k = s;
+            k.cull_check = true;
+            k.cache_shadows = false;
+            gpu::FrameStats checked;
+            EXPECT_EQ(render(r, k, &checked), hidden);
+            for (const CullStats& c : checked.culling)
+                EXPECT_EQ(c.cpu_gpu_differences, 0) << c.pass;
+        }
         if (hidden_image.empty())
             hidden_image = hidden;
         else
@@ -155,6 +165,60 @@ TEST_F(Visibility, RayTracedImageAndTlasLeaveTheHiddenNodeOut) {
     s.hidden_nodes = nullptr;
     EXPECT_EQ(render(r, s), shown);
     EXPECT_EQ(r.acceleration_stats()->tlas.hidden, 0u);
+}
+
+TEST_F(Visibility, HiddenSkinnedMeshLeavesPosedFramesOnEveryPathAndTheRays) {
+    const auto scene = load(gltf_asset("RiggedSimple"));
+    ASSERT_TRUE(scene);
+    ASSERT_FALSE(scene->animations.empty());
+    auto mask = std::make_shared<std::vector<bool>>(scene->nodes.size(), false);
+    for (std::size_t n = 0; n < scene->nodes.size(); ++n)
+        if (scene->nodes[n].mesh >= 0) (*mask)[n] = true; // every mesh node
+    const auto pose =
+        std::make_shared<const Pose>(evaluate_pose(*scene, 0, 0.37 * scene->animations[0].end));
+    gpu::RenderSettings s;
+    s.width = s.height = kSize;
+    const Aabb b = scene->bounds;
+    const glm::vec3 eye = b.center() + glm::vec3(0.0f, 0.0f, 2.5f * glm::length(b.extent()));
+    std::string error;
+    ASSERT_TRUE(gpu::parse_camera_spec(
+        "eye=" + std::to_string(eye.x) + "," + std::to_string(eye.y) + "," + std::to_string(eye.z) +
+            ":target=" + std::to_string(b.center().x) + "," + std::to_string(b.center().y) + "," +
+            std::to_string(b.center().z),
+        s.camera, error))
+        << error;
+    s.pose = pose;
+    s.view = gpu::DebugView::Shadow; // drawn by both renderers
+    const bool rays = context().info().ray_tracing_enabled;
+    gpu::RendererOptions options;
+    options.ray_tracing = rays;
+    gpu::Renderer r(context(), options);
+    r.load(*scene);
+    auto only_clear = [](const std::vector<std::uint8_t>& rgba) {
+        for (std::size_t p = 4; p < rgba.size(); ++p)
+            if (rgba[p] != rgba[p % 4]) return false;
+        return true;
+    };
+    for (const gpu::CullPath path : {gpu::CullPath::None, gpu::CullPath::Cpu, gpu::CullPath::Gpu}) {
+        SCOPED_TRACE(std::string(gpu::to_string(path)));
+        s.cull = path;
+        s.hidden_nodes = nullptr;
+        const auto shown = render(r, s);
+        EXPECT_FALSE(only_clear(shown)) << "the posed mesh is in view";
+        s.hidden_nodes = mask;
+        EXPECT_TRUE(only_clear(render(r, s)));
+        s.hidden_nodes = nullptr;
+        EXPECT_EQ(render(r, s), shown);
+    }
+    if (!rays) return;
+    s.renderer = gpu::RendererKind::RayTraced;
+    const auto shown = render(r, s);
+    EXPECT_FALSE(only_clear(shown));
+    s.hidden_nodes = mask;
+    EXPECT_TRUE(only_clear(render(r, s))) << "the posed BLAS is out of the TLAS";
+    EXPECT_GE(r.acceleration_stats()->tlas.hidden, 1u);
+    s.hidden_nodes = nullptr;
+    EXPECT_EQ(render(r, s), shown) << "shown again in the same pose";
 }
 
 } // namespace

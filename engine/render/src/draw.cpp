@@ -21,6 +21,8 @@ bool draw_culled(FrameContext& f, std::size_t group, const PassCull& cull, GPUPu
     if (cull.gpu && f.culling->group_batch[group] != ~0u) {
         const std::uint32_t batch = f.culling->group_batch[group];
         const GpuCuller& culler = *cull.gpu;
+        // Every object hidden: the culler holds no buffers and there is nothing to draw.
+        if (culler.object_count() == 0) return false;
         pc.instance_ids = culler.instance_ids();
         push(f.cmd, layout, pc);
         vkCmdDrawIndexedIndirectCount(f.cmd, culler.draws(),

@@ -100,7 +100,9 @@ struct AccelerationSettings {
     // Posed BLAS (meshes that skin or morph) are refitted when the pose changes; false:
     // rebuilt (PREFER_FAST_BUILD, no ALLOW_UPDATE).
     bool refit_posed = true;
-    // Per node: true excludes its instances (empty: every node shown).
+    // Per node: true excludes its instances (empty: every node shown). Through a
+    // Renderer, RenderSettings::hidden_nodes (subtree rule applied) replaces it from the
+    // first ray-traced frame on: the renderer's settings are the one source.
     std::vector<bool> hidden_nodes;
 };
 

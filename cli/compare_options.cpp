@@ -129,6 +129,7 @@ int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
             return kExitLoadError;
         }
         scene_b = other.scene.get();
+        sb.hidden_nodes = nullptr; // --hide-node names side A's nodes: B as loaded
         // One camera for both: 'auto' frames side A's scene, not each its own.
         if (sa.camera.kind == gpu::CameraSpec::Kind::Auto) {
             FramingOptions framing;

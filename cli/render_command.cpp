@@ -2,7 +2,7 @@
 //   [--overlay NAME ...] [--camera auto|gltf:N|eye=x,y,z:target=x,y,z[...]]
 //   [--frames N] [--report FILE.json] [--validation] [--no-shadows] [--prepass|--no-prepass]
 //   [--glyph-length L] [--floor] [--cache-dir DIR] [--cache-cap-mb N] [--quality N]
-//   [--no-cache] [--no-bc] [--animation N --time T | --pose bind]
+//   [--no-cache] [--no-bc] [--animation N --time T | --pose bind] [--hide-node N ...]
 //   [--compare split|difference ... (compare_options.h)]
 #include "cli_common.h"
 #include "compare_options.h"
@@ -39,6 +39,7 @@ constexpr const char* kUsage =
     "sphere|pvertex|exact]\n"
     "         [--cull-check] [--freeze-cull eye=x,y,z:target=x,y,z[:...]] [--rt on|off]\n"
     "         [--renderer raster|rt] [--texture-lod N] [--animation N --time T | --pose bind]\n"
+    "         [--hide-node N (repeatable: node N and its subtree are not drawn)]\n"
     "         ";
 constexpr const char* kCompareIndent = "\n         ";
 
@@ -78,6 +79,7 @@ int run_render(Args args) {
     gpu::RenderSettings settings;
     std::uint32_t frames = 1;
     bool validation = gpu::ContextOptions::default_validation();
+    std::vector<std::uint32_t> hidden_nodes; // --hide-node, in the order given
     bool ray_tracing = true;
     TextureCliOptions texture_options;
     PoseOptions pose_options;
@@ -190,6 +192,12 @@ int run_render(Args args) {
             if (!v || !parse_number(*v, settings.texture_lod) || !(settings.texture_lod >= 0.0f) ||
                 settings.texture_lod > 16.0f)
                 return usage_error("--texture-lod needs a mip level from 0 to 16");
+        } else if (a == "--hide-node") {
+            auto v = value();
+            std::uint32_t n = 0;
+            if (!v || !parse_number(*v, n))
+                return usage_error("--hide-node needs a node index (0 or more)");
+            hidden_nodes.push_back(n);
         } else if (a == "--no-shadows") {
             settings.shadows = false;
         } else if (a == "--prepass") {
@@ -233,6 +241,17 @@ int run_render(Args args) {
         settings.pose = resolve_pose(*loaded.scene, pose_options, error);
         if (!error.empty()) return usage_error(error);
         run.settings.pose = settings.pose;
+    }
+    if (!hidden_nodes.empty()) {
+        auto mask = std::make_shared<std::vector<bool>>(loaded.scene->nodes.size(), false);
+        for (const std::uint32_t n : hidden_nodes) {
+            if (n >= mask->size())
+                return usage_error("--hide-node " + std::to_string(n) + ": " + std::string(spec) +
+                                   " has " + std::to_string(mask->size()) + " nodes");
+            (*mask)[n] = true;
+        }
+        settings.hidden_nodes = mask;
+        run.settings.hidden_nodes = mask;
     }
     if (compare_options.mode)
         return run_comparison({loaded.scene.get(), std::string(spec), settings, texture_options,

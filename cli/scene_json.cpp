@@ -163,6 +163,7 @@ nlohmann::json cull_stats_json(const CullStats& st) {
             {"visible", st.visible},
             {"culled", st.culled},
             {"invalid", st.invalid},
+            {"hidden", st.hidden},
             {"false_positives", st.false_positives},
             {"cpu_gpu_differences", st.cpu_gpu_differences},
             {"draw_calls", st.draw_calls},

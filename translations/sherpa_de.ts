@@ -492,6 +492,10 @@
         <translation>GPU-Culling ms</translation>
     </message>
     <message>
+        <source>Hidden</source>
+        <translation>Ausgeblendet</translation>
+    </message>
+    <message>
         <source>visible</source>
         <translation>sichtbar</translation>
     </message>

@@ -492,6 +492,10 @@
         <translation>GPU cull ms</translation>
     </message>
     <message>
+        <source>Hidden</source>
+        <translation>Hidden</translation>
+    </message>
+    <message>
         <source>visible</source>
         <translation>visible</translation>
     </message>

@@ -492,6 +492,10 @@
         <translation>GPU 剔除 ms</translation>
     </message>
     <message>
+        <source>Hidden</source>
+        <translation>隐藏</translation>
+    </message>
+    <message>
         <source>visible</source>
         <translation>可见</translation>
     </message>

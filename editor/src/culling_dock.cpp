@@ -40,7 +40,7 @@ CullingDock::CullingDock(const CullingMonitor& monitor, QWidget* parent)
     // The renderer's own passes: at most 1 + 4 rows, so a plain table widget.
     passes_title_ = new QLabel(body);
     passes_title_->setWordWrap(true); // a long title must not widen the dock either
-    passes_ = new QTableWidget(0, 8, body);
+    passes_ = new QTableWidget(0, 9, body);
     passes_->verticalHeader()->hide();
     passes_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     passes_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -89,7 +89,7 @@ void CullingDock::retranslate() {
     for (int r = 0; r < RowCount; ++r) names_[r]->setText(names[r]);
     passes_->setHorizontalHeaderLabels({tr("Pass"), tr("Total"), tr("Visible"), tr("Culled"),
                                         tr("Draw calls"), tr("Triangles"), tr("CPU cull ms"),
-                                        tr("GPU cull ms")});
+                                        tr("GPU cull ms"), tr("Hidden")});
     showRendererPasses();
     visible_series_->setName(tr("visible"));
     culled_series_->setName(tr("culled"));
@@ -123,15 +123,18 @@ void CullingDock::showRendererPasses() {
     auto ms = [](double v) { return v < 0 ? QStringLiteral("—") : QString::number(v, 'f', 3); };
     for (int r = 0; r < static_cast<int>(passes.size()); ++r) {
         const CullStats& c = passes[std::size_t(r)];
-        const QString cells[8] = {QString::fromStdString(c.pass),
+        // Hidden: instances of hidden nodes, neither visible nor culled (tested = total -
+        // hidden): the row adds up.
+        const QString cells[9] = {QString::fromStdString(c.pass),
                                   QString::number(c.total),
                                   QString::number(c.visible),
                                   QString::number(c.culled),
                                   QString::number(c.draw_calls),
                                   QString::number(c.triangles),
                                   ms(c.cpu_ms),
-                                  ms(c.gpu_ms)};
-        for (int col = 0; col < 8; ++col) {
+                                  ms(c.gpu_ms),
+                                  QString::number(c.hidden)};
+        for (int col = 0; col < 9; ++col) {
             QTableWidgetItem* item = passes_->item(r, col);
             if (!item) {
                 passes_->setItem(r, col, item = new QTableWidgetItem);

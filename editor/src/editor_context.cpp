@@ -1,28 +1,31 @@
 #include "editor_context.h"
 
+#include <sherpa/scene/visibility.h>
+
+#include <algorithm>
+
 namespace sherpa::editor {
 
 EditorContext::EditorContext(QObject* parent) : QObject(parent) {}
 EditorContext::~EditorContext() = default;
 
 bool EditorContext::nodeVisible(int node) const {
-    return node < 0 || static_cast<std::size_t>(node) >= node_visible_.size() ||
-           node_visible_[static_cast<std::size_t>(node)] != 0;
+    return node < 0 || !hidden_ || static_cast<std::size_t>(node) >= hidden_->size() ||
+           !(*hidden_)[static_cast<std::size_t>(node)];
 }
 
 bool EditorContext::instanceVisible(std::size_t instance) const {
     if (!scene() || instance >= scene()->instances.size()) return false;
     // Hiding a node hides its subtree, as in every DCC tool.
-    for (int n = static_cast<int>(scene()->instances[instance].node_id); n >= 0;
-         n = scene()->nodes[static_cast<std::size_t>(n)].parent)
-        if (!nodeVisible(n)) return false;
-    return true;
+    const std::uint32_t node = scene()->instances[instance].node_id;
+    return node >= hidden_subtrees_.size() || !hidden_subtrees_[node];
 }
 
 void EditorContext::setSession(SharedSession session) {
     session_ = std::move(session);
     selection_ = {};
-    node_visible_.assign(session_ ? session_->scene->nodes.size() : 0, 1);
+    hidden_.reset();
+    hidden_subtrees_.clear();
     Q_EMIT sceneReady();
     Q_EMIT selectionChanged();
 }
@@ -66,10 +69,16 @@ void EditorContext::setSelectionField(int Selection::*field, int value) {
 }
 
 void EditorContext::setNodeVisible(int node, bool visible) {
-    if (node < 0 || static_cast<std::size_t>(node) >= node_visible_.size()) return;
-    char& v = node_visible_[static_cast<std::size_t>(node)];
-    if ((v != 0) == visible) return;
-    v = visible ? 1 : 0;
+    if (!scene() || node < 0 || static_cast<std::size_t>(node) >= scene()->nodes.size()) return;
+    if (nodeVisible(node) == visible) return;
+    auto mask = hidden_ ? std::make_shared<std::vector<bool>>(*hidden_)
+                        : std::make_shared<std::vector<bool>>(scene()->nodes.size(), false);
+    (*mask)[static_cast<std::size_t>(node)] = !visible;
+    hidden_subtrees_ = hidden_subtrees(scene()->nodes, *mask);
+    if (std::find(mask->begin(), mask->end(), true) == mask->end())
+        hidden_.reset(); // every node shown again
+    else
+        hidden_ = std::move(mask);
     Q_EMIT visibilityChanged();
 }
 

@@ -41,8 +41,13 @@ public:
     QString sceneSpec() const { return session_ ? session_->spec : QString(); }
     const Selection& selection() const { return selection_; }
     bool nodeVisible(int node) const;
-    // Instances whose node and every ancestor are visible.
+    // Instances whose node and every ancestor are visible (hidden_subtrees(), the
+    // renderer's rule).
     bool instanceVisible(std::size_t instance) const;
+    // Per node, true where unchecked; null while every node is shown. A new mask per
+    // change (never modified once handed out): what the viewport's frames carry to
+    // the renderer.
+    std::shared_ptr<const std::vector<bool>> hiddenNodes() const { return hidden_; }
 
     // --- mutation, for the main window only (docks see a const context) ---
     // Swaps in a loaded scene in one step (null: none open) and emits sceneReady.
@@ -71,7 +76,8 @@ private:
 
     SharedSession session_;
     Selection selection_;
-    std::vector<char> node_visible_;
+    std::shared_ptr<const std::vector<bool>> hidden_;
+    std::vector<bool> hidden_subtrees_; // hidden_ with the subtree rule applied
 };
 
 } // namespace sherpa::editor

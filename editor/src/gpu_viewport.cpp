@@ -196,6 +196,7 @@ gpu::RenderSettings render_settings(const ViewportFrame& frame, float scale, boo
     settings.cull_method = frame.cullMethod;
     settings.pose = frame.pose;
     settings.selected_joint = frame.selectedJoint;
+    settings.hidden_nodes = frame.hiddenNodes;
     settings.cascades = frame.shadowCascades;
     settings.shadow_pcf_taps = frame.shadowPcfTaps;
     if (frame.frozenCulling) settings.freeze_cull = gpu::explicit_camera(*frame.frozenCulling);

@@ -45,8 +45,10 @@ struct ViewportFrame {
     std::optional<CameraSpec> frozenCulling;    // cull from this camera instead
     std::shared_ptr<const Pose> pose;           // the timeline's; null: the scene as loaded
     std::optional<std::uint32_t> selectedJoint; // a joint node (skeleton, joint influence)
-    ViewportComparison compare;                 // raster, ray traced, split or difference
-    SharedSession compareSession;               // SideB::OtherFile: the other file
+    // Nodes unchecked in the scene tree (EditorContext::hiddenNodes()); null: all shown.
+    std::shared_ptr<const std::vector<bool>> hiddenNodes;
+    ViewportComparison compare;   // raster, ray traced, split or difference
+    SharedSession compareSession; // SideB::OtherFile: the other file
     // Shadow cascades and PCF taps (0: the device's default), as the Lab's shadows
     // family applies them; the map resolution is the viewport renderer's, fixed.
     std::uint32_t shadowCascades = kDefaultShadowCascades, shadowPcfTaps = 0;

@@ -25,8 +25,10 @@ gpu::RenderSettings side_b_settings(const ViewportFrame& frame, const gpu::Rende
         b.view = static_cast<gpu::DebugView>(frame.compare.view);
         break;
     case SideB::OtherFile:
-        // The pose and joint are the first scene's nodes: the other file as loaded.
+        // The pose, joint and hidden nodes are the first scene's nodes: the other file
+        // as loaded.
         b.pose = nullptr;
+        b.hidden_nodes = nullptr;
         b.selected_joint.reset();
         b.freeze_cull.reset();
         break;

@@ -170,6 +170,7 @@ ViewportFrame MainWindow::currentFrame() const {
     frame.compareSession = compare_session_;
     const Selection& sel = context_.selection();
     frame.pose = timeline_->pose();
+    frame.hiddenNodes = context_.hiddenNodes();
     if (const Scene* scene = context_.scene();
         scene && sel.node >= 0 && is_joint(*scene, static_cast<std::uint32_t>(sel.node)))
         frame.selectedJoint = static_cast<std::uint32_t>(sel.node);

@@ -1,5 +1,5 @@
 // The viewport's inspection features end to end under Xvfb: the selection
-// highlight, the GPU culling path with its CPU/GPU agreement, framing for the
+// highlight, node visibility, the GPU culling path with its CPU/GPU agreement, framing for the
 // viewport's aspect, and load progress / cancel.
 #include <QPushButton>
 #include <QSignalSpy>
@@ -18,6 +18,8 @@
 #include "mesh_dock.h"
 #include "orbit_camera.h"
 #include "render_thread.h"
+#include "scene_tree_dock.h"
+#include "scene_tree_model.h"
 #include "test_assets.h"
 #include "texture_dock.h"
 #include "texture_table_model.h"
@@ -66,6 +68,21 @@ int orangePixels(MainWindow& w) {
     return n;
 }
 
+// The viewport's pixels in a screenshot of the window.
+QImage viewportShot(MainWindow& w) {
+    const QImage shot = w.screenshot().convertToFormat(QImage::Format_RGB32);
+    const QWidget* vp = w.findChild<QWidget*>(QStringLiteral("viewport"));
+    return shot.copy(QRect(vp->mapTo(&w, QPoint(0, 0)), vp->size()));
+}
+
+int differingPixels(const QImage& a, const QImage& b) {
+    if (a.size() != b.size()) return -1;
+    int n = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) n += a.pixel(x, y) != b.pixel(x, y);
+    return n;
+}
+
 // The camera has seen the window's current size.
 bool aspectFollows(const ViewportWindow& v) {
     const float aspect =
@@ -102,6 +119,7 @@ private Q_SLOTS:
     void framingFitsEveryAspect();
     void highlightFollowsSelection();
     void gpuCullingAgreesWithCpu();
+    void uncheckedNodeLeavesTheViewport();
     void cullingDockShowsTheRenderersPasses();
     void narrowViewportFramesTheHelmet();
     void framingIsTheEnginesOnLoadFrameAllAndSelection();
@@ -160,6 +178,35 @@ void ViewportTests::highlightFollowsSelection() {
     QCOMPARE(window_->lastFrame().highlightTriangle.value_or(~0u), 7u);
     QCOMPARE(window_->lastFrame().highlightVertex.value_or(~0u), 3u);
     QVERIFY(!window_->logDock()->text().contains(QStringLiteral("Rendering stopped")));
+}
+
+void ViewportTests::uncheckedNodeLeavesTheViewport() {
+    QVERIFY(load(*window_, QStringLiteral("builtin:default")));
+    if (!hasGpu()) QSKIP("no Vulkan device: nothing is rendered");
+    window_->pickAt(QPointF(0.999, 0.999)); // background: no selection highlight
+    QVERIFY(nextFrame(*window_));
+    QVERIFY(!window_->lastFrame().hiddenNodes);
+    const QImage shown = viewportShot(*window_);
+    const Scene& scene = *window_->context().scene();
+    int sphere = -1;
+    for (std::size_t n = 0; n < scene.nodes.size(); ++n)
+        if (scene.nodes[n].name == "sphere") sphere = static_cast<int>(n);
+    QVERIFY(sphere >= 0);
+    // The checkbox, as a user unticks it: model -> context -> frame -> renderer.
+    SceneTreeModel& tree = *window_->sceneTreeDock()->model();
+    QVERIFY(tree.setData(tree.indexOfNode(sphere), Qt::Unchecked, Qt::CheckStateRole));
+    QVERIFY(!window_->context().nodeVisible(sphere));
+    QVERIFY(nextFrame(*window_));
+    const auto mask = window_->lastFrame().hiddenNodes;
+    QVERIFY(mask && static_cast<std::size_t>(sphere) < mask->size() &&
+            (*mask)[static_cast<std::size_t>(sphere)]);
+    const QImage hidden = viewportShot(*window_);
+    const int changed = differingPixels(shown, hidden);
+    QVERIFY2(changed > 500, qPrintable(QStringLiteral("%1 pixels changed").arg(changed)));
+    QVERIFY(tree.setData(tree.indexOfNode(sphere), Qt::Checked, Qt::CheckStateRole));
+    QVERIFY(nextFrame(*window_));
+    QVERIFY(!window_->lastFrame().hiddenNodes);
+    QCOMPARE(differingPixels(shown, viewportShot(*window_)), 0);
 }
 
 void ViewportTests::gpuCullingAgreesWithCpu() {
@@ -223,8 +270,9 @@ void ViewportTests::cullingDockShowsTheRenderersPasses() {
     const std::uint64_t total = dock.passText(0, 1).toULongLong();
     const std::uint64_t visible = dock.passText(0, 2).toULongLong();
     const std::uint64_t culled = dock.passText(0, 3).toULongLong();
+    const std::uint64_t hidden = dock.passText(0, 8).toULongLong(); // unticked nodes
     QVERIFY(total > 0);
-    QCOMPARE(visible + culled, total);
+    QCOMPARE(visible + culled + hidden, total);
     QVERIFY(dock.passText(0, 5).toULongLong() > 0); // triangles submitted
 }
 

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <sstream>
 #include <sys/wait.h>
@@ -119,3 +120,55 @@ TEST(CliRender, NamesWhatItDoesNotDraw) {
 }
 
 } // namespace
+
+// --hide-node: the caster of tests/data/double_sided_shadow.gltf (node 1) hidden, the
+// uv0 view with its wireframe loses the caster's edges and texels (69 of 64 x 64 pixels
+// change on lavapipe; tests/gpu/visibility_test.cpp checks its shadow against the
+// outline), every cull path draws the same image, and the report counts it as hidden.
+TEST(CliRender, HideNodeRemovesItsPixelsOnEveryCullPath) {
+    const std::string scene = std::string(SHERPA_TEST_DATA_DIR) + "/double_sided_shadow.gltf";
+    auto read = [](const std::string& png) {
+        std::uint32_t w = 0, h = 0;
+        std::vector<std::uint8_t> rgba;
+        std::string error;
+        EXPECT_TRUE(sherpa::tex::read_png_rgba8(png, w, h, rgba, error)) << error;
+        return rgba;
+    };
+    auto differing = [](const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
+        std::size_t n = 0;
+        for (std::size_t p = 0; p + 3 < std::min(a.size(), b.size()); p += 4)
+            n += std::memcmp(&a[p], &b[p], 4) != 0;
+        return n;
+    };
+    const std::string common =
+        " --width 64 --height 64 --view uv0 --overlay wireframe --no-cache --validation"
+        " --camera eye=0,0,-3:target=0,0,0:fov=50";
+    std::vector<std::uint8_t> first_hidden;
+    for (const char* cull : {"none", "cpu", "gpu"}) {
+        SCOPED_TRACE(cull);
+        const std::string shown = temp_path("shown.png"), hidden = temp_path("hidden.png"),
+                          report = temp_path("hidden.json");
+        CliRun r = run_cli("render '" + scene + "' -o " + shown + common + " --cull " + cull);
+        ASSERT_EQ(r.exit_code, 0) << r.out;
+        r = run_cli("render '" + scene + "' -o " + hidden + common + " --cull " + cull +
+                    " --hide-node 1 --report " + report);
+        ASSERT_EQ(r.exit_code, 0) << r.out;
+        const auto a = read(shown), b = read(hidden);
+        const std::size_t changed = differing(a, b);
+        EXPECT_GT(changed, 40u) << "the caster's pixels are gone";
+        EXPECT_LT(changed, 400u) << "and little else";
+        if (first_hidden.empty())
+            first_hidden = b;
+        else
+            EXPECT_EQ(b, first_hidden) << "every cull path draws the same";
+        const auto j = sherpa::test::read_json(report);
+        ASSERT_FALSE(j["culling"].empty());
+        EXPECT_EQ(j["culling"][0]["hidden"], 1);
+        EXPECT_EQ(j["culling"][0]["visible"], 1);
+        for (const std::string& f : {shown, hidden, report}) std::filesystem::remove(f);
+    }
+    const CliRun bad = run_cli("render '" + scene + "' -o x.png --no-cache --hide-node 2");
+    EXPECT_EQ(bad.exit_code, 2) << bad.out;
+    EXPECT_NE(bad.out.find("--hide-node 2"), std::string::npos) << bad.out;
+    EXPECT_NE(bad.out.find("has 2 nodes"), std::string::npos) << bad.out;
+}

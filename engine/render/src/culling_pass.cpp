@@ -51,6 +51,7 @@ CullingPass::~CullingPass() {
 void CullingPass::reset() {
     cascade_stats_.clear();
     if (culling_) resources_.destroy(culling_->identity);
+    if (culling_) resources_.destroy(culling_->shown);
     culling_.reset();
 }
 
@@ -82,6 +83,45 @@ void CullingPass::build(const GpuScene& scene) {
     upload.submit_and_wait();
 }
 
+void CullingPass::set_hidden(std::vector<std::uint8_t> hidden, const GpuScene& scene) {
+    if (!culling_) return;
+    SceneCulling& c = *culling_;
+    hidden.resize(c.boxes.size(), 0);
+    c.hidden = std::move(hidden);
+    c.hidden_count = c.hidden_casters = 0;
+    for (std::size_t i = 0; i < c.hidden.size(); ++i) {
+        c.hidden_count += c.hidden[i] != 0;
+        c.hidden_casters += c.hidden[i] != 0 && !c.blended[i];
+    }
+    // The cullers' objects leave hidden instances out: rebuilt on next use.
+    c.gpu.clear();
+    c.group_batch.clear();
+    c.gpu_object_batch.clear();
+    ++c.objects_version;
+    resources_.destroy(c.shown);
+    const auto& groups = scene.groups();
+    c.group_shown.assign(groups.size(), 0);
+    if (c.hidden_count == 0) return;
+    std::vector<std::uint32_t> shown(c.hidden.size(), 0);
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        std::uint32_t* out = shown.data() + groups[g].first_instance;
+        for (std::uint32_t k = 0; k < groups[g].instance_count; ++k)
+            if (!c.hidden[groups[g].first_instance + k]) {
+                *out++ = groups[g].first_instance + k;
+                ++c.group_shown[g];
+            }
+    }
+    const VkDeviceSize bytes = shown.size() * sizeof(std::uint32_t);
+    c.shown = resources_.create_buffer({bytes,
+                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                            VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
+                                            VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                        MemoryUsage::DeviceLocal, "instance ids (shown)"});
+    UploadBatch upload(resources_);
+    upload.upload_buffer(c.shown, 0, shown.data(), bytes);
+    upload.submit_and_wait();
+}
+
 // Objects of the non-blended groups, one batch per group; the same objects for the
 // camera and every cascade (blended instances cast no shadow).
 void CullingPass::build_gpu(const GpuScene& scene) {
@@ -99,6 +139,7 @@ void CullingPass::build_gpu(const GpuScene& scene) {
         draws.push_back({mesh.index_count, 0, mesh.first_index, 0, groups[g].first_instance});
         for (std::uint32_t k = 0; k < groups[g].instance_count; ++k) {
             const std::uint32_t inst = groups[g].first_instance + k;
+            if (culling_->is_hidden(inst)) continue; // drawn by no pass
             objects.push_back(
                 make_cull_object(scene.instance_bounds()[inst], culling_->group_batch[g], inst));
             instances.push_back(inst);
@@ -128,8 +169,9 @@ void CullingPass::test_cpu(FrameContext& f, PassCull& view, bool caster_view, bo
             if (groups[g].alpha != AlphaMode::Blend) continue;
             for (std::uint32_t k = 0; k < groups[g].instance_count; ++k) {
                 const std::uint32_t i = groups[g].first_instance + k;
-                view.visible[i] = culling_->invalid[i] ||
-                                  box_visible(view.frustum, instance_bounds(f)[i], method);
+                view.visible[i] = !culling_->is_hidden(i) &&
+                                  (culling_->invalid[i] ||
+                                   box_visible(view.frustum, instance_bounds(f)[i], method));
                 view.group_visible[g] += view.visible[i];
             }
         }
@@ -139,12 +181,15 @@ void CullingPass::test_cpu(FrameContext& f, PassCull& view, bool caster_view, bo
     cull_boxes(view.frustum, boxes, method, SimdLevel::Avx512, view.visible);
     view.cpu_tested = true;
     CullStats& st = view.stats;
+    if (culling_->hidden_count > 0)
+        for (std::size_t i = 0; i < view.visible.size(); ++i)
+            if (culling_->hidden[i]) view.visible[i] = 0;
     for (std::size_t g = 0; g < groups.size(); ++g) {
         if (caster_view && groups[g].alpha == AlphaMode::Blend) continue; // casts no shadow
         for (std::uint32_t k = 0; k < groups[g].instance_count; ++k) {
             const std::uint32_t i = groups[g].first_instance + k;
             view.group_visible[g] += view.visible[i];
-            st.invalid += culling_->invalid[i];
+            st.invalid += culling_->invalid[i] && !culling_->is_hidden(i);
         }
         st.visible += view.group_visible[g];
     }
@@ -180,10 +225,12 @@ VkDeviceAddress CullingPass::write_posed_objects(FrameContext& f) {
     }
     const Buffer& buf = resources_.get(slot.cull_objects);
     if (slot.cull_objects_generation == slot.pose_generation &&
-        slot.cull_objects_pose == slot.pose_key)
+        slot.cull_objects_pose == slot.pose_key &&
+        slot.cull_objects_version == culling_->objects_version)
         return buf.address;
     slot.cull_objects_generation = slot.pose_generation;
     slot.cull_objects_pose = slot.pose_key;
+    slot.cull_objects_version = culling_->objects_version;
     auto* out = static_cast<GPUCullObject*>(buf.mapped);
     for (std::size_t k = 0; k < instances.size(); ++k)
         out[k] = make_cull_object(slot.posed_bounds[instances[k]], culling_->gpu_object_batch[k],
@@ -258,13 +305,14 @@ void CullingPass::record(FrameContext& f) {
         view.stats.method = settings.cull_method;
         view.stats.simd = std::min(SimdLevel::Avx512, best_simd_level());
         view.stats.total = camera ? n : culling_->casters;
+        view.stats.hidden = camera ? culling_->hidden_count : culling_->hidden_casters;
         view.stats.view_projection = camera ? camera_vp : slot.cascades.cull_view_proj[v - 1];
         view.frustum = frustum_from_view_projection(view.stats.view_projection);
         view.ids_offset = VkDeviceSize{v} * n * sizeof(std::uint32_t);
     }
     if (settings.cull == CullPath::None || n == 0) {
         for (std::uint32_t v = 0; v < fc.count; ++v)
-            fc.views[v].stats.visible = fc.views[v].stats.total;
+            fc.views[v].stats.visible = fc.views[v].stats.total - fc.views[v].stats.hidden;
         return;
     }
     const bool gpu = settings.cull == CullPath::Gpu;
@@ -287,7 +335,7 @@ void CullingPass::record(FrameContext& f) {
         CullStats& st = view.stats;
         const bool camera = v == 0;
         const auto t0 = std::chrono::steady_clock::now();
-        st.tested = st.total;
+        st.tested = st.total - st.hidden;
         if (!gpu || fc.check || (camera && camera_cpu))
             test_cpu(f, view, !camera, false);
         else if (camera)
@@ -297,7 +345,8 @@ void CullingPass::record(FrameContext& f) {
             cull_boxes(view.frustum, culling_->boxes, CullMethod::Exact, SimdLevel::Avx512, exact);
             std::int64_t fp = 0;
             for (std::size_t i = 0; i < exact.size(); ++i)
-                if (camera || !culling_->blended[i]) fp += view.visible[i] && !exact[i];
+                if ((camera || !culling_->blended[i]) && !culling_->is_hidden(i))
+                    fp += view.visible[i] && !exact[i];
             st.false_positives = fp;
         }
         // Compacted ids of the CPU-culled groups (every group on the CPU path, the

@@ -21,6 +21,8 @@ bool draw_culled(FrameContext& f, std::size_t group, const PassCull& cull, GPUPu
     if (cull.gpu && f.culling->group_batch[group] != ~0u) {
         const std::uint32_t batch = f.culling->group_batch[group];
         const GpuCuller& culler = *cull.gpu;
+        // Every object hidden: the culler holds no buffers and there is nothing to draw.
+        if (culler.object_count() == 0) return false;
         pc.instance_ids = culler.instance_ids();
         push(f.cmd, layout, pc);
         vkCmdDrawIndexedIndirectCount(f.cmd, culler.draws(),
@@ -96,6 +98,17 @@ void bind_for_mesh(FrameContext& f, PipelineId id, const GpuMesh& mesh, VkPipeli
     }
 }
 
+std::uint32_t shown_count(const FrameContext& f, std::size_t group) {
+    const DrawGroup& g = f.scene->groups()[group];
+    return f.culling && f.culling->hidden_count > 0 ? f.culling->group_shown[group]
+                                                    : g.instance_count;
+}
+
+VkDeviceAddress shown_ids(const FrameContext& f, VkDeviceAddress all) {
+    return f.culling && f.culling->hidden_count > 0 ? f.resources.get(f.culling->shown).address
+                                                    : all;
+}
+
 void draw_groups(FrameContext& f, DrawPipeline pipeline, AlphaMode alpha, const DrawView& view,
                  CullStats& tally) {
     if (!f.scene) return;
@@ -114,12 +127,15 @@ void draw_groups(FrameContext& f, DrawPipeline pipeline, AlphaMode alpha, const 
             if (draw_culled(f, gi, *view.cull, pc, tally)) ++f.slot.draw_calls;
             continue;
         }
+        // Unculled: every instance, or while nodes are hidden the shown ones.
+        const std::uint32_t count = shown_count(f, gi);
+        if (count == 0) continue;
+        pc.instance_ids = shown_ids(f, f.slot.push_base.instance_ids);
         push(cmd, p.layout(), pc);
-        vkCmdDrawIndexed(cmd, mesh.index_count, g.instance_count, mesh.first_index, 0,
-                         g.first_instance);
+        vkCmdDrawIndexed(cmd, mesh.index_count, count, mesh.first_index, 0, g.first_instance);
         ++f.slot.draw_calls;
         ++tally.draw_calls;
-        tally.triangles += std::uint64_t{g.instance_count} * triangles_of(mesh);
+        tally.triangles += std::uint64_t{count} * triangles_of(mesh);
     }
 }
 
@@ -150,7 +166,8 @@ void draw_blended(FrameContext& f, DrawPipeline pipeline, CullStats& tally) {
     pc.cascade = kNoCascade;
     const PassCull* cull = f.slot.culling.camera();
     for (const Item& it : items) {
-        if (cull && !cull->visible[it.instance]) continue;
+        if (cull ? !cull->visible[it.instance] : f.culling && f.culling->is_hidden(it.instance))
+            continue;
         const DrawGroup& g = groups[it.group];
         const GpuMesh& mesh = f.scene->meshes()[g.mesh];
         if (!set_group_state(f, pipeline, g, mesh, bound, pc)) continue;

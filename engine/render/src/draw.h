@@ -33,6 +33,12 @@ void set_mesh(GPUPushConstants& pc, const GpuMesh& mesh, std::uint32_t material)
 // `bound` already is it.
 void bind_for_mesh(FrameContext& f, PipelineId id, const GpuMesh& mesh, VkPipeline& bound);
 
+// Unculled draws of draw group `group`: its instance count, or while nodes are hidden
+// (SceneCulling::hidden_count) its shown instances, indexed through shown_ids() (else
+// through `all`, the identity).
+std::uint32_t shown_count(const FrameContext& f, std::size_t group);
+VkDeviceAddress shown_ids(const FrameContext& f, VkDeviceAddress all);
+
 // Every draw group of `alpha`, single-sided ones with back faces culled; draws and
 // triangles go to `tally`.
 void draw_groups(FrameContext& f, DrawPipeline pipeline, AlphaMode alpha, const DrawView& view,

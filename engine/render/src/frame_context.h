@@ -102,6 +102,7 @@ struct FrameSlot {
     VkDeviceSize cull_objects_capacity = 0;
     // The pose (pose_generation, pose_key) whose bounds cull_objects holds.
     std::uint64_t cull_objects_generation = 0, cull_objects_pose = 0;
+    std::uint64_t cull_objects_version = 0; // SceneCulling::objects_version written
 };
 
 // Culling data of the loaded scene.
@@ -118,6 +119,18 @@ struct SceneCulling {
     std::vector<std::uint32_t> gpu_object_batch; // per GPU culler object: its batch
     // The FrameSlot::pose_key whose posed bounds `boxes` holds; none: the bounds as loaded.
     std::optional<std::uint64_t> boxes_pose;
+    // Visibility (RenderSettings::hidden_nodes, subtree rule applied), per GPU
+    // instance: hidden instances are drawn by no pass. While any is hidden, `shown`
+    // holds per draw group its shown instances compacted at the group's first
+    // instance (what unculled draws and overlays index) and group_shown their count.
+    std::vector<std::uint8_t> hidden;
+    std::uint32_t hidden_count = 0, hidden_casters = 0; // all; not blended
+    BufferHandle shown;
+    std::vector<std::uint32_t> group_shown;
+    std::uint64_t objects_version = 1; // bumped when the GPU cullers' objects change
+    bool is_hidden(std::uint32_t gpu_instance) const {
+        return hidden_count > 0 && hidden[gpu_instance] != 0;
+    }
 };
 
 // Everything a pass records from. References live for one record_frame() call.

@@ -22,6 +22,7 @@ void HighlightPass::record(FrameContext& f) {
     const auto found = std::find(ids.begin(), ids.end(), *s.highlight_instance);
     if (found == ids.end()) return; // not drawn: nothing to highlight
     const auto gpu_instance = static_cast<std::uint32_t>(found - ids.begin());
+    if (f.culling->is_hidden(gpu_instance)) return; // hidden: no pixels to point at
     const auto group =
         std::find_if(scene->groups().begin(), scene->groups().end(), [&](const DrawGroup& g) {
             return gpu_instance >= g.first_instance &&

@@ -30,12 +30,16 @@ void OverlayPass::record(FrameContext& f) {
     vkCmdSetFrontFace(cmd, VK_FRONT_FACE_COUNTER_CLOCKWISE);
 
     auto for_each_group = [&](auto&& fn) {
-        for (const DrawGroup& g : scene->groups()) {
+        for (std::size_t gi = 0; gi < scene->groups().size(); ++gi) {
+            const DrawGroup& g = scene->groups()[gi];
+            const std::uint32_t count = shown_count(f, gi);
+            if (count == 0) continue; // every instance hidden
             GPUPushConstants pc = slot.push_base;
+            pc.instance_ids = shown_ids(f, pc.instance_ids);
             const GpuMesh& m = scene->meshes()[g.mesh];
             set_mesh(pc, m, g.material);
             pc.cascade = kNoCascade;
-            fn(g, m, pc);
+            fn(g, m, pc, count);
         }
     };
 
@@ -44,15 +48,15 @@ void OverlayPass::record(FrameContext& f) {
         // Reverse-Z: a positive bias pulls the lines towards the camera, off the fill.
         vkCmdSetDepthBiasEnable(cmd, VK_TRUE);
         vkCmdSetDepthBias(cmd, 1.0f, 0.0f, 1.0f);
-        for_each_group([&](const DrawGroup& g, const GpuMesh& m, GPUPushConstants& pc) {
-            if (!is_triangle_mesh(m.flags)) return; // lines and points are their own wireframe
-            bind_for_mesh(f, PipelineId::Wireframe, m, bound);
-            pc.color = glm::vec4(0.25f, 0.85f, 1.0f, 1.0f);
-            vkCmdPushConstants(cmd, layout, stages, 0, sizeof(pc), &pc);
-            vkCmdDrawIndexed(cmd, m.index_count, g.instance_count, m.first_index, 0,
-                             g.first_instance);
-            ++slot.draw_calls;
-        });
+        for_each_group(
+            [&](const DrawGroup& g, const GpuMesh& m, GPUPushConstants& pc, std::uint32_t count) {
+                if (!is_triangle_mesh(m.flags)) return; // lines and points are their own wireframe
+                bind_for_mesh(f, PipelineId::Wireframe, m, bound);
+                pc.color = glm::vec4(0.25f, 0.85f, 1.0f, 1.0f);
+                vkCmdPushConstants(cmd, layout, stages, 0, sizeof(pc), &pc);
+                vkCmdDrawIndexed(cmd, m.index_count, count, m.first_index, 0, g.first_instance);
+                ++slot.draw_calls;
+            });
     }
     vkCmdSetDepthBiasEnable(cmd, VK_FALSE);
 
@@ -64,7 +68,8 @@ void OverlayPass::record(FrameContext& f) {
     for (std::uint32_t kind = 0; kind < 3; ++kind) {
         if (!(s.overlays & glyphs[kind].first)) continue;
         VkPipeline bound = VK_NULL_HANDLE;
-        for_each_group([&](const DrawGroup& g, const GpuMesh& m, GPUPushConstants& pc) {
+        for_each_group([&](const DrawGroup& g, const GpuMesh& m, GPUPushConstants& pc,
+                           std::uint32_t count) {
             bind_for_mesh(f, PipelineId::Glyphs, m, bound);
             pc.mesh_flags |= kind << kGlyphKindShift;
             pc.color = glyphs[kind].second;
@@ -74,15 +79,17 @@ void OverlayPass::record(FrameContext& f) {
                     : 0.02f * (f.lighting.bounds.valid() ? glm::length(f.lighting.bounds.extent())
                                                          : 1.0f);
             vkCmdPushConstants(cmd, layout, stages, 0, sizeof(pc), &pc);
-            vkCmdDraw(cmd, 2 * m.vertex_count, g.instance_count, 0, g.first_instance);
+            vkCmdDraw(cmd, 2 * m.vertex_count, count, 0, g.first_instance);
             ++slot.draw_calls;
         });
     }
 
     if (s.overlays & kOverlayBounds) {
         std::vector<GPULineVertex> lines;
-        for (const Aabb& b : instance_bounds(f))
-            append_box(lines, b, glm::vec4(1.0f, 0.85f, 0.1f, 1.0f));
+        const auto& bounds = instance_bounds(f);
+        for (std::uint32_t i = 0; i < bounds.size(); ++i)
+            if (!f.culling || !f.culling->is_hidden(i))
+                append_box(lines, bounds[i], glm::vec4(1.0f, 0.85f, 0.1f, 1.0f));
         draw_lines(f, lines);
     }
     if (s.overlays & kOverlayCullBoxes) draw_cull_boxes(f);
@@ -113,6 +120,7 @@ void OverlayPass::draw_cull_boxes(FrameContext& f) {
     const auto& bounds = instance_bounds(f);
     for (std::size_t i = 0; i < bounds.size(); ++i) {
         glm::vec4 color(0.9f, 0.15f, 0.1f, 1.0f);
+        if (f.culling && f.culling->is_hidden(i)) continue; // drawn by no pass
         if (camera->visible[i])
             color = exact_visible(camera->frustum, bounds[i]) ? glm::vec4(0.2f, 0.9f, 0.3f, 1.0f)
                                                               : glm::vec4(1.0f, 0.9f, 0.1f, 1.0f);

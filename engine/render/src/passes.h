@@ -65,6 +65,9 @@ public:
     ~CullingPass();
     void build(const GpuScene& scene); // a scene was loaded
     void reset();                      // the scene is unloaded
+    // Per GPU instance of `scene` (the loaded one): 1 hides it from every pass. No
+    // frame may be in flight (the GPU cullers are rebuilt without hidden objects).
+    void set_hidden(std::vector<std::uint8_t> hidden, const GpuScene& scene);
     SceneCulling* scene_culling() { return culling_.get(); }
     void record(FrameContext& f);
     // Statistics of the completed frame in `slot` into `out`; pushes it to history().

@@ -147,6 +147,7 @@ void Renderer::Impl::load(const Scene& source, std::unique_ptr<GpuScene> gpu_sce
     lighting_.placed_lights = source.placed_lights;
     ++scene_generation_;
     shadows_.invalidate();
+    load_visibility(source);
     // Meshes that skin or morph join the TLAS in the file's default pose, on load.
     if (acceleration && acceleration->posed()) {
         FrameSlot& slot = *slots_[next_slot_];
@@ -180,6 +181,10 @@ void Renderer::Impl::unload() {
     scene.reset();
     ++scene_generation_; // frame sets must stop naming the freed material buffers
     lighting_ = Scene{};
+    nodes_.clear();
+    instance_node_.clear();
+    hidden_given_.clear();
+    hidden_nodes_.clear();
     shadows_.invalidate();
     resources->collect_garbage();
 }

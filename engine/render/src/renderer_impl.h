@@ -109,7 +109,20 @@ private:
     RayTracedFrame rt_frame(const RenderSettings& settings, const FrameSlot& data_slot) const;
     SideImage record_rt_side(VkCommandBuffer cmd, FrameSlot& slot, const RenderSettings& settings);
 
+    // RenderSettings::hidden_nodes into the culling (and, with `rt`, the TLAS: every
+    // slot must be idle) when it differs from the mask applied last (renderer.cpp).
+    void apply_visibility(const RenderSettings& settings, bool rt);
+    void load_visibility(const Scene& source); // a scene was loaded
+
     std::unique_ptr<RtViewPass> rt_views_;
+    // Visibility: the loaded scene's nodes (the subtree rule), the node of each GPU
+    // instance, the mask last applied (as given) and its subtree-expanded form, and
+    // whether the TLAS holds that form.
+    std::vector<Node> nodes_;
+    std::vector<std::uint32_t> instance_node_;
+    std::vector<bool> hidden_given_, hidden_nodes_;
+    std::uint64_t visibility_version_ = 0;
+    bool tlas_visibility_ = true;
     // The pose the acceleration structures hold (FrameSlot::pose_key, of this scene load).
     std::uint64_t rt_pose_key_ = 0, rt_pose_generation_ = 0;
 

@@ -100,6 +100,7 @@ FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
     // Its descriptor set is rewritten per frame, and the structures are posed below:
     // no earlier frame may be in flight.
     for (auto& s : slots_) wait_slot(*s);
+    apply_visibility(settings, true);
     if (!rt_views_)
         rt_views_ = std::make_unique<RtViewPass>(context, *resources, bindless->layout());
     const std::uint32_t index = next_slot_;

@@ -43,6 +43,11 @@ void SceneAccelerationStructures::update_instances(const Scene& scene,
     build_tlas({});
 }
 
+void SceneAccelerationStructures::set_hidden_nodes(const std::vector<bool>& hidden_nodes) {
+    hidden_ = hidden_nodes;
+    build_tlas({});
+}
+
 VkDeviceAddress SceneAccelerationStructures::blas_address(std::uint32_t blas) const {
     return blas < blas_.size() ? blas_[blas].address() : posed_->blas_address(blas - blas_.size());
 }

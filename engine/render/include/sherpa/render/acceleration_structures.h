@@ -100,7 +100,9 @@ struct AccelerationSettings {
     // Posed BLAS (meshes that skin or morph) are refitted when the pose changes; false:
     // rebuilt (PREFER_FAST_BUILD, no ALLOW_UPDATE).
     bool refit_posed = true;
-    // Per node: true excludes its instances (empty: every node shown).
+    // Per node: true excludes its instances (empty: every node shown). Through a
+    // Renderer, RenderSettings::hidden_nodes (subtree rule applied) replaces it from the
+    // first ray-traced frame on: the renderer's settings are the one source.
     std::vector<bool> hidden_nodes;
 };
 
@@ -133,6 +135,10 @@ public:
     // is the one the structures were built from, with its instances' world
     // transforms updated. Waits for the build; no frame may be using the TLAS.
     void update_instances(const Scene& scene, const std::vector<bool>& hidden_nodes);
+    // Visibility changed (per node, subtree rule applied): the TLAS is rebuilt over
+    // the same candidates at their loaded transforms (a posed scene is posed again by
+    // the caller). Waits; no frame may be using the TLAS.
+    void set_hidden_nodes(const std::vector<bool>& hidden_nodes);
     // True when some instance skins or morphs (then update_pose() must run before its
     // instances are in the TLAS).
     bool posed() const { return posed_ != nullptr; }

@@ -112,6 +112,13 @@ struct RenderSettings {
     // the scene as loaded (bind pose, default weights). Skinned/morphed primitives are deformed
     // on the GPU; culling and shadows use the pose's conservative bounds.
     std::shared_ptr<const Pose> pose;
+    // Nodes hidden (per node index, true: hidden; null or empty: every node shown). A
+    // hidden node hides its subtree (hidden_subtrees(), sherpa/scene/visibility.h): its
+    // instances are drawn by no pass (camera on every cull path, shadow cascades,
+    // prepass, overlays, highlight) and left out of the ray tracer's TLAS. Renderer
+    // state, not per frame work: the renderer compares it with the last mask and only
+    // a change costs (GPU cullers rebuilt, cached cascades redrawn, TLAS rebuilt).
+    std::shared_ptr<const std::vector<bool>> hidden_nodes;
     // A joint (node index) to highlight: the joint-influence view shows its weight as a heat
     // map, the skeleton overlay draws it in kHighlightDetailColor.
     std::optional<std::uint32_t> selected_joint;

@@ -26,6 +26,9 @@ struct CullStats {
     CullMethod method = CullMethod::PVertex;
     SimdLevel simd = SimdLevel::Scalar;
     std::uint64_t total = 0, tested = 0, visible = 0, culled = 0, invalid = 0;
+    // Instances of `total` whose node (or an ancestor) is hidden: never tested nor
+    // drawn, neither visible nor culled (tested = total - hidden when culling runs).
+    std::uint64_t hidden = 0;
     // Kept by this method although the exact test rejects them (-1: not measured).
     std::int64_t false_positives = -1;
     std::uint64_t draw_calls = 0, triangles = 0;

@@ -31,13 +31,6 @@ using namespace sherpa::editor;
 
 namespace {
 
-// The viewport's part of a fresh screenshot (drawn at full size, waited for).
-QImage viewportShot(MainWindow& w) {
-    const QImage shot = w.screenshot().convertToFormat(QImage::Format_RGB32);
-    const QWidget* vp = w.findChild<QWidget*>(QStringLiteral("viewport"));
-    return shot.copy(QRect(vp->mapTo(&w, QPoint(0, 0)), vp->size()));
-}
-
 // Pixels of columns [x0, x1) where the two images differ by more than 2/255 in a channel.
 int differing(const QImage& a, const QImage& b, int x0, int x1) {
     int n = 0;
@@ -186,7 +179,7 @@ void RtTests::rtOffBuildsNothing() {
     // The ray-traced mode is refused there, never drawn: back to raster.
     off.setDebugView(QStringLiteral("normal"), false);
     off.compareControls().setMode(ViewportMode::RayTraced);
-    viewportShot(off);
+    test::viewport_shot(off);
     QTRY_COMPARE_WITH_TIMEOUT(off.compareControls().state().mode, ViewportMode::Raster, 10000);
     qsizetype seen = 0;
     const QString fresh = test::fresh_validation_messages(off, seen);
@@ -204,9 +197,9 @@ void RtTests::rayTracedModeDrawsRtFrames() {
     QVERIFY(test::load(w, test::asset(QStringLiteral("Suzanne"))));
     w.pickAt(QPointF(-0.99, 0.99)); // nothing selected: no highlight on the raster side
     QVERIFY(w.setDebugView(QStringLiteral("normal"), false));
-    const QImage raster = viewportShot(w);
+    const QImage raster = test::viewport_shot(w);
     w.compareControls().setMode(ViewportMode::RayTraced);
-    const QImage rays = viewportShot(w);
+    const QImage rays = test::viewport_shot(w);
     QCOMPARE(w.lastFrame().compare.mode, ViewportMode::RayTraced);
     QCOMPARE(w.compareControls().state().mode, ViewportMode::RayTraced); // not refused
     QVERIFY(w.lastReport().refused.isEmpty());
@@ -233,7 +226,7 @@ void RtTests::refusedViewGoesBackToRaster() {
     QVERIFY(w.setDebugView(QStringLiteral("lit"), false)); // lights: no ray formula
     const int errors = w.logDock()->errorCount();
     w.compareControls().setMode(ViewportMode::RayTraced);
-    viewportShot(w);
+    test::viewport_shot(w);
     QTRY_COMPARE_WITH_TIMEOUT(w.compareControls().state().mode, ViewportMode::Raster, 10000);
     QVERIFY2(w.logDock()->text().contains(QStringLiteral("The ray tracer cannot draw")),
              qPrintable(w.logDock()->text()));
@@ -250,15 +243,15 @@ void RtTests::splitShowsALeftAndBRight() {
     QVERIFY(test::load(w, QStringLiteral("builtin:default")));
     w.pickAt(QPointF(-0.99, 0.99));
     QVERIFY(w.setDebugView(QStringLiteral("normal"), false));
-    const QImage a = viewportShot(w);
+    const QImage a = test::viewport_shot(w);
     QVERIFY(w.setDebugView(QStringLiteral("uv0"), false));
-    const QImage b = viewportShot(w);
+    const QImage b = test::viewport_shot(w);
     QVERIFY(w.setDebugView(QStringLiteral("normal"), false));
     CompareControls& c = w.compareControls();
     c.setSide(SideB::OtherView, view("uv0"));
     c.setMode(ViewportMode::Split);
     c.setDivider(0.5f);
-    const QImage split = viewportShot(w);
+    const QImage split = test::viewport_shot(w);
     QVERIFY(w.lastReport().refused.isEmpty());
     const int mid = split.width() / 2, band = 4, h = split.height();
     QVERIFY(differing(a, b, 0, split.width()) > split.width() * h / 10); // the views differ
@@ -300,9 +293,9 @@ void RtTests::draggingMovesTheDivider() {
     QVERIFY(std::abs(c.state().divider - 0.8f) < 0.01f);
     QCOMPARE(vp->camera().spec().eye, camera.eye);
     // The frame follows: B (uv0) now starts at 80% of the width.
-    const QImage split = viewportShot(w);
+    const QImage split = test::viewport_shot(w);
     c.setMode(ViewportMode::Raster);
-    const QImage a = viewportShot(w);
+    const QImage a = test::viewport_shot(w);
     const int at = split.width() * 4 / 5;
     QVERIFY(differing(split, a, 0, at - 4) <= at * split.height() / 200);
     // Without a split, a drag orbits again.

@@ -94,4 +94,30 @@ inline std::uint64_t resident_kib() {
     return resident * 4; // 4 KiB pages
 }
 
+// Waits (bounded, never asserted on) until the viewport has drawn a new frame.
+// Waits for a frame to be drawn and for a frame to have been asked for after this
+// call: lastFrame() is the last frame asked for, and a frame already in flight can be
+// drawn before the scheduled one is asked for (gpuCullingAgreesWithCpu then read the
+// state from before setGpuCulling, 2 runs in 3).
+inline bool next_frame(MainWindow& w) {
+    const std::uint64_t before = w.viewport()->framesRendered();
+    const std::uint64_t asked_before = w.lastRequest();
+    w.viewport()->scheduleFrame();
+    QElapsedTimer t;
+    t.start();
+    const auto done = [&] {
+        return w.viewport()->framesRendered() > before && w.lastRequest() > asked_before;
+    };
+    while (!done() && t.elapsed() < kLoadTimeoutMs)
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 20);
+    return done();
+}
+
+// The viewport's pixels in a screenshot of the window.
+inline QImage viewport_shot(MainWindow& w) {
+    const QImage shot = w.screenshot().convertToFormat(QImage::Format_RGB32);
+    const QWidget* vp = w.findChild<QWidget*>(QStringLiteral("viewport"));
+    return shot.copy(QRect(vp->mapTo(&w, QPoint(0, 0)), vp->size()));
+}
+
 } // namespace sherpa::editor::test

@@ -290,19 +290,18 @@ void LabDock::apply(std::size_t method) {
 }
 
 bool LabDock::exportCsv(const QString& path) {
-    const bool ok = report_ && write_text(path, lab::report_csv(*report_));
-    if (!ok) status_->setText(tr("Could not write %1.").arg(path));
-    return ok;
+    return exported(report_ && write_text(path, lab::report_csv(*report_)), path);
 }
 
 bool LabDock::exportSvg(const QString& path) {
-    const bool ok = report_ && write_text(path, lab::report_svg(*report_));
-    if (!ok) status_->setText(tr("Could not write %1.").arg(path));
-    return ok;
+    return exported(report_ && write_text(path, lab::report_svg(*report_)), path);
 }
 
 bool LabDock::exportPng(const QString& path) {
-    const bool ok = report_ && chart_view_->grab().save(path, "PNG");
+    return exported(report_ && chart_view_->grab().save(path, "PNG"), path);
+}
+
+bool LabDock::exported(bool ok, const QString& path) {
     if (!ok) status_->setText(tr("Could not write %1.").arg(path));
     return ok;
 }

@@ -75,6 +75,8 @@ private:
     void setBusy(bool busy);
     void apply(std::size_t method);
     void exportDialog(const QString& filter, bool (LabDock::*write)(const QString&));
+    // An export's answer: a failure (no report, an unwritable path) says so in the status.
+    bool exported(bool ok, const QString& path);
 
     const EditorContext& context_;
     LabRunner* runner_;

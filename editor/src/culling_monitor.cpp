@@ -48,12 +48,10 @@ void CullingMonitor::setPose(std::shared_ptr<const Pose> pose) {
     const Scene* scene = context_.scene();
     if (!scene || pose == pose_) return;
     pose_ = std::move(pose);
-    std::vector<Aabb> boxes;
     if (pose_)
-        boxes = instance_culling_bounds(*scene, *pose_);
+        input_.boxes.assign(instance_culling_bounds(*scene, *pose_));
     else
-        for (const MeshInstance& inst : scene->instances) boxes.push_back(inst.world_bounds);
-    input_.boxes.assign(boxes);
+        input_.boxes = instance_boxes(*scene); // as prepare_cull_input() made them
     // The GPU path's check waits for the render thread: at most a few per second while
     // the timeline plays, not one per tick.
     if (gpu_path_ && gpu_check_) {

@@ -117,13 +117,16 @@ void GpuViewport::upload() {
         impl_->renderer->unload();
         return;
     }
+    load_session(*impl_->renderer, *impl_->session, impl_->all_streams);
+}
+
+void load_session(gpu::Renderer& renderer, const SceneSession& session, bool all_streams) {
     // No textures prepared (cancelled, no plan): an empty set, so that load() does
     // not run the texture pipeline on this thread.
-    PreparedTextures textures = impl_->session->textures;
+    PreparedTextures textures = session.textures;
     if (!textures) textures = std::make_shared<const tex::PreparedTextureSet>();
-    impl_->renderer->load(*impl_->session->scene, std::move(textures),
-                          impl_->all_streams ? gpu::StreamPolicy::AllPresent
-                                             : gpu::StreamPolicy::UsedByMaterials);
+    renderer.load(*session.scene, std::move(textures),
+                  all_streams ? gpu::StreamPolicy::AllPresent : gpu::StreamPolicy::UsedByMaterials);
 }
 
 void GpuViewport::useStreamsFor(const ViewportFrame& frame) {

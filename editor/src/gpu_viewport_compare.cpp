@@ -75,11 +75,7 @@ bool GpuViewport::presentComparison(const ViewportFrame& frame, const gpu::Rende
         options.ray_tracing = rays && impl.context->info().ray_tracing_enabled;
         options.textures = impl.renderer->texture_settings();
         impl.b.renderer = std::make_unique<gpu::Renderer>(*impl.context, options);
-        PreparedTextures textures = session->textures;
-        if (!textures) textures = std::make_shared<const tex::PreparedTextureSet>();
-        impl.b.renderer->load(*session->scene, std::move(textures),
-                              all ? gpu::StreamPolicy::AllPresent
-                                  : gpu::StreamPolicy::UsedByMaterials);
+        load_session(*impl.b.renderer, *session, all);
         impl.b.session = session;
         impl.b.all_streams = all;
         impl.b.ray_tracing = rays;

@@ -35,6 +35,10 @@ struct GpuViewport::Impl {
     QString refusal;              // why the last frame was not drawn (the ray tracer refused)
 };
 
+// Loads `session` into `renderer` (side A's upload and side B's): every stream with
+// `all_streams`, else those its materials use.
+void load_session(gpu::Renderer& renderer, const SceneSession& session, bool all_streams);
+
 // The engine's settings for what the window wants drawn (side A of a comparison).
 gpu::RenderSettings render_settings(const ViewportFrame& frame, float scale, bool reduced_prepass);
 

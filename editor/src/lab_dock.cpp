@@ -179,15 +179,19 @@ void LabDock::retranslate() {
            "clicking them changes nothing.");
     chart_view_->setToolTip(apply_tip);
     methods_view_->setToolTip(apply_tip);
-    if (report_) {
-        fill_methods(*methods_, *report_);
-        fill_failures(*failures_, *report_);
-        refreshMethodInUse();
-    }
-    if (budget_) {
-        fill_budget_categories(*categories_, *budget_);
-        fill_budget_findings(*findings_, *budget_);
-    }
+    if (report_) fillReport();
+    if (budget_) fillBudget();
+}
+
+void LabDock::fillReport() {
+    fill_methods(*methods_, *report_);
+    fill_failures(*failures_, *report_);
+    refreshMethodInUse();
+}
+
+void LabDock::fillBudget() {
+    fill_budget_categories(*categories_, *budget_);
+    fill_budget_findings(*findings_, *budget_);
 }
 
 void LabDock::changeEvent(QEvent* e) {
@@ -251,8 +255,6 @@ void LabDock::cancel() {
 void LabDock::showReport(std::shared_ptr<const lab::FamilyReport> report) {
     setBusy(false);
     report_ = std::move(report);
-    fill_methods(*methods_, *report_);
-    fill_failures(*failures_, *report_);
     QStringList lines{tr("%1 against %2; time in %3")
                           .arg(QString::fromStdString(report_->family),
                                QString::fromStdString(report_->reference),
@@ -260,14 +262,13 @@ void LabDock::showReport(std::shared_ptr<const lab::FamilyReport> report) {
     for (const std::string& n : report_->notes) lines << QString::fromStdString(n);
     lines << tr("The line joins the Pareto front; the method in use is ringed.");
     status_->setText(lines.join(QLatin1Char('\n')));
-    refreshMethodInUse();
+    fillReport();
 }
 
 void LabDock::showBudget(std::shared_ptr<const lab::BudgetReport> report) {
     setBusy(false);
     budget_ = std::move(report);
-    fill_budget_categories(*categories_, *budget_);
-    fill_budget_findings(*findings_, *budget_);
+    fillBudget();
     QStringList lines;
     for (const std::string& n : budget_->notes) lines << QString::fromStdString(n);
     budget_status_->setText(lines.join(QLatin1Char('\n')));
@@ -290,19 +291,18 @@ void LabDock::apply(std::size_t method) {
 }
 
 bool LabDock::exportCsv(const QString& path) {
-    const bool ok = report_ && write_text(path, lab::report_csv(*report_));
-    if (!ok) status_->setText(tr("Could not write %1.").arg(path));
-    return ok;
+    return exported(report_ && write_text(path, lab::report_csv(*report_)), path);
 }
 
 bool LabDock::exportSvg(const QString& path) {
-    const bool ok = report_ && write_text(path, lab::report_svg(*report_));
-    if (!ok) status_->setText(tr("Could not write %1.").arg(path));
-    return ok;
+    return exported(report_ && write_text(path, lab::report_svg(*report_)), path);
 }
 
 bool LabDock::exportPng(const QString& path) {
-    const bool ok = report_ && chart_view_->grab().save(path, "PNG");
+    return exported(report_ && chart_view_->grab().save(path, "PNG"), path);
+}
+
+bool LabDock::exported(bool ok, const QString& path) {
     if (!ok) status_->setText(tr("Could not write %1.").arg(path));
     return ok;
 }

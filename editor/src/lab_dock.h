@@ -72,9 +72,14 @@ private:
     void onSceneChanged();
     void showReport(std::shared_ptr<const lab::FamilyReport> report);
     void showBudget(std::shared_ptr<const lab::BudgetReport> report);
+    // The tables of report_ (and its chart) / budget_, in the current language.
+    void fillReport();
+    void fillBudget();
     void setBusy(bool busy);
     void apply(std::size_t method);
     void exportDialog(const QString& filter, bool (LabDock::*write)(const QString&));
+    // An export's answer: a failure (no report, an unwritable path) says so in the status.
+    bool exported(bool ok, const QString& path);
 
     const EditorContext& context_;
     LabRunner* runner_;

@@ -39,6 +39,11 @@ struct SceneLoadJob::State {
                              (ti > 0 && di * 100 / ti != old_done * 100 / ti);
         if (post && changed) post(s, di, ti);
     }
+    // The whole load, from start() to the answer, into the session's timings.
+    void stamp(const LoadOutcome& out) const {
+        if (out.session)
+            out.session->timings.total_ms = static_cast<double>(clock.nsecsElapsed()) / 1e6;
+    }
 };
 
 namespace {
@@ -166,8 +171,7 @@ void SceneLoadJob::cancel() {
 
 void SceneLoadJob::onFinished() {
     const LoadOutcome outcome = watcher_->result();
-    if (outcome.session)
-        outcome.session->timings.total_ms = static_cast<double>(state_->clock.nsecsElapsed()) / 1e6;
+    state_->stamp(outcome);
     watcher_->deleteLater();
     watcher_ = nullptr;
     state_.reset();
@@ -184,8 +188,7 @@ LoadOutcome SceneLoadJob::loadNow(const QString& spec, const TexturePlan& plan) 
     State state;
     state.clock.start();
     LoadOutcome out = run_load(spec, plan, &state);
-    if (out.session)
-        out.session->timings.total_ms = static_cast<double>(state.clock.nsecsElapsed()) / 1e6;
+    state.stamp(out);
     return out;
 }
 

@@ -150,6 +150,10 @@ int TimelineDock::animation() const {
     return animations_->currentIndex() - 1; // item 0: none
 }
 
+bool TimelineDock::playable() const {
+    return animation() >= 0 && clock_.duration() > 0.0;
+}
+
 void TimelineDock::setAnimation(int animation) {
     animations_->setCurrentIndex(animation + 1);
 }
@@ -186,7 +190,7 @@ void TimelineDock::scrubTo(double seconds) {
 }
 
 void TimelineDock::setPlaying(bool playing) {
-    playing = playing && animation() >= 0 && clock_.duration() > 0.0;
+    playing = playing && playable();
     // Play from the start again after a non-looping run stopped on the last key.
     if (playing && !clock_.playing && !clock_.loop && clock_.time >= clock_.end)
         clock_.time = clock_.start;
@@ -229,7 +233,7 @@ void TimelineDock::advance(double seconds) {
 void TimelineDock::updatePlayButton() {
     const QSignalBlocker block(play_);
     play_->setChecked(clock_.playing);
-    play_->setEnabled(animation() >= 0 && clock_.duration() > 0.0);
+    play_->setEnabled(playable());
     play_->setText(clock_.playing ? tr("Pause") : tr("Play"));
     play_->setIcon(
         style()->standardIcon(clock_.playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
@@ -249,7 +253,7 @@ void TimelineDock::refresh() {
     {
         const QSignalBlocker block(slider_);
         slider_->setValue(static_cast<int>(std::lround(clock_.fraction() * kSliderSteps)));
-        slider_->setEnabled(animation() >= 0 && clock_.duration() > 0.0);
+        slider_->setEnabled(playable());
     }
     time_label_->setText(
         animation() < 0 ? tr("no animation")

@@ -76,6 +76,8 @@ private:
     void onTick();
     void refresh(); // pose (when its inputs changed), slider, readout
     void updatePlayButton();
+    // An animation with a non-empty key range: what play and the slider act on.
+    bool playable() const;
 
     const EditorContext& context_;
     PlaybackClock clock_;

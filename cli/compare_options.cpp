@@ -1,4 +1,5 @@
 #include "compare_options.h"
+#include "gpu_cli.h"
 
 #include <sherpa/gpu/context.h>
 #include <sherpa/render/renderer.h>
@@ -168,11 +169,7 @@ int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
         }
         stats.reduce_ms = median(reduce);
         stats.composite_ms = median(composite);
-        if (run.validation && context.validation().count() > 0) {
-            std::fprintf(stderr, "error: %zu Vulkan validation message(s)\n",
-                         context.validation().count());
-            return kExitLoadError;
-        }
+        if (validation_failed(context, run.validation)) return kExitLoadError;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "error: %s\n", e.what());
         return kExitLoadError;

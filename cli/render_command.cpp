@@ -6,6 +6,7 @@
 //   [--compare split|difference ... (compare_options.h)]
 #include "cli_common.h"
 #include "compare_options.h"
+#include "gpu_cli.h"
 #include "pose_options.h"
 #include "render_report.h"
 #include "shadow_options.h"
@@ -323,11 +324,7 @@ int run_render(Args args) {
                 return kExitLoadError;
             }
         }
-        if (validation && context.validation().count() > 0) {
-            std::fprintf(stderr, "error: %zu Vulkan validation message(s)\n",
-                         context.validation().count());
-            return kExitLoadError;
-        }
+        if (validation_failed(context, validation)) return kExitLoadError;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "error: %s\n", e.what());
         return kExitLoadError;

@@ -7,6 +7,7 @@
 // posed, which the renderer does on load: here they are not yet) and memory totals.
 // Textures are not prepared: acceleration structures do not read them.
 #include "cli_common.h"
+#include "gpu_cli.h"
 
 #include <sherpa/gpu/bindless.h>
 #include <sherpa/gpu/context.h>
@@ -212,11 +213,7 @@ int run_rt(Args args) {
                 print_text(context, structures.stats());
         }
         resources.flush();
-        if (validation && context.validation().count() > 0) {
-            std::fprintf(stderr, "error: %zu Vulkan validation message(s)\n",
-                         context.validation().count());
-            return kExitLoadError;
-        }
+        if (validation_failed(context, validation)) return kExitLoadError;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "error: %.*s: %s\n", int(spec.size()), spec.data(), e.what());
         return kExitLoadError;

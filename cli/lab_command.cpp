@@ -92,14 +92,10 @@ nlohmann::json report_json(const Scene& scene, const lab::FamilyReport& r) {
                            {"failures_by_cause", by_cause},
                            {"pareto", std::find(front.begin(), front.end(), i) != front.end()}});
     }
-    return {{"source", scene.source},
-            {"family", r.family},
-            {"reference", r.reference},
-            {"time_unit", r.time_unit},
-            {"chart_error", r.chart_error},
-            {"notes", r.notes},
-            {"chart_x", r.chart_x.empty() ? "time" : r.chart_x},
-            {"methods", methods}};
+    return {{"source", scene.source},          {"family", r.family},
+            {"reference", r.reference},        {"time_unit", r.time_unit},
+            {"chart_error", r.chart_error},    {"notes", r.notes},
+            {"chart_x", lab::chart_x_name(r)}, {"methods", methods}};
 }
 
 void print_text(const lab::FamilyReport& r) {
@@ -125,8 +121,8 @@ void print_text(const lab::FamilyReport& r) {
             std::printf("    failure: %s at %s (%llu)\n", f.cause.c_str(), f.where.c_str(),
                         (unsigned long long)f.count);
     }
-    std::printf("* on the Pareto front of %s against %s\n",
-                r.chart_x.empty() ? "time" : r.chart_x.c_str(), r.chart_error.c_str());
+    std::printf("* on the Pareto front of %s against %s\n", lab::chart_x_name(r).c_str(),
+                r.chart_error.c_str());
 }
 
 } // namespace

@@ -18,8 +18,9 @@
 namespace sherpa::cli {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: sherpa-cli lab SCENE --family tangents|textures|culling|mesh-compression|shadows\n"
+// After "usage: sherpa-cli lab SCENE --family NAME|...": the names are the engine's
+// (lab::family_names), the one list the editor's dock also reads.
+constexpr const char* kUsageOptions =
     "           [--json|--csv] [--chart OUT.svg] [--repeat N] [--sample-texels N]\n"
     "           [--cameras N] [--no-gpu]\n"
     "  shadows: --cameras N around the scene, --repeat N timed frames (median)\n";
@@ -32,7 +33,10 @@ struct Options {
 };
 
 int usage_error(const std::string& message) {
-    return cli::usage_error(message, kUsage);
+    std::string usage = "usage: sherpa-cli lab SCENE --family ";
+    for (std::string_view name : lab::family_names())
+        usage += (usage.back() == ' ' ? "" : "|") + std::string(name);
+    return cli::usage_error(message, (usage + "\n" + kUsageOptions).c_str());
 }
 
 std::unique_ptr<lab::Family> make(const Options& o) {

@@ -8,7 +8,6 @@
 #include <sherpa/texture/image.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -19,8 +18,7 @@ namespace sherpa::cli {
 namespace {
 
 bool parse_float(std::string_view s, float& out) {
-    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
-    return ec == std::errc{} && end == s.data() + s.size() && std::isfinite(out);
+    return parse_number(s, out) && std::isfinite(out);
 }
 
 double median(std::vector<double> v) {

@@ -21,7 +21,6 @@
 #include <sherpa/scene/scene_loader.h>
 #include <sherpa/texture/image.h>
 
-#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <optional>
@@ -59,11 +58,6 @@ int usage_error(const std::string& message) {
 double ms_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();
-}
-
-template <typename T> bool parse_number(std::string_view s, T& out) {
-    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
-    return ec == std::errc{} && end == s.data() + s.size();
 }
 
 std::string joined(const std::vector<std::string_view>& names) {

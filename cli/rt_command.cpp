@@ -16,7 +16,6 @@
 #include <sherpa/scene/scene_loader.h>
 #include <sherpa/texture/texture_pipeline.h>
 
-#include <charconv>
 #include <cstdio>
 #include <iostream>
 
@@ -164,8 +163,7 @@ int run_rt(Args args) {
         } else if (a == "--scratch-budget") {
             std::uint64_t bytes = 0;
             const std::string_view v = i + 1 < args.size() ? args[++i] : std::string_view();
-            const auto r = std::from_chars(v.data(), v.data() + v.size(), bytes);
-            if (v.empty() || r.ec != std::errc() || r.ptr != v.data() + v.size() || bytes == 0)
+            if (!parse_number(v, bytes) || bytes == 0)
                 return usage_error("--scratch-budget needs a positive number of bytes");
             settings.scratch_budget = bytes;
         } else if (a == "--rt") {

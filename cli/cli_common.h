@@ -22,10 +22,15 @@ inline int usage_error(std::string_view message, const char* usage) {
     return kExitUsage;
 }
 
+// A number, all of `v` (std::from_chars: no sign for unsigned, "nan"/"inf" for floats).
+template <typename T> bool parse_number(std::string_view v, T& out) {
+    const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
+    return ec == std::errc{} && end == v.data() + v.size();
+}
+
 // A non-negative integer, all of `v`.
 inline bool parse_index(std::string_view v, std::int32_t& out) {
-    const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
-    return ec == std::errc{} && end == v.data() + v.size() && out >= 0;
+    return parse_number(v, out) && out >= 0;
 }
 
 int run_info(Args args);

@@ -1,4 +1,5 @@
 #include "compare_options.h"
+#include "gpu_cli.h"
 
 #include <sherpa/gpu/context.h>
 #include <sherpa/render/renderer.h>
@@ -7,7 +8,6 @@
 #include <sherpa/texture/image.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -18,8 +18,7 @@ namespace sherpa::cli {
 namespace {
 
 bool parse_float(std::string_view s, float& out) {
-    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
-    return ec == std::errc{} && end == s.data() + s.size() && std::isfinite(out);
+    return parse_number(s, out) && std::isfinite(out);
 }
 
 double median(std::vector<double> v) {
@@ -168,11 +167,7 @@ int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
         }
         stats.reduce_ms = median(reduce);
         stats.composite_ms = median(composite);
-        if (run.validation && context.validation().count() > 0) {
-            std::fprintf(stderr, "error: %zu Vulkan validation message(s)\n",
-                         context.validation().count());
-            return kExitLoadError;
-        }
+        if (validation_failed(context, run.validation)) return kExitLoadError;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "error: %s\n", e.what());
         return kExitLoadError;

@@ -18,8 +18,9 @@
 namespace sherpa::cli {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: sherpa-cli lab SCENE --family tangents|textures|culling|mesh-compression|shadows\n"
+// After "usage: sherpa-cli lab SCENE --family NAME|...": the names are the engine's
+// (lab::family_names), the one list the editor's dock also reads.
+constexpr const char* kUsageOptions =
     "           [--json|--csv] [--chart OUT.svg] [--repeat N] [--sample-texels N]\n"
     "           [--cameras N] [--no-gpu]\n"
     "  shadows: --cameras N around the scene, --repeat N timed frames (median)\n";
@@ -32,7 +33,10 @@ struct Options {
 };
 
 int usage_error(const std::string& message) {
-    return cli::usage_error(message, kUsage);
+    std::string usage = "usage: sherpa-cli lab SCENE --family ";
+    for (std::string_view name : lab::family_names())
+        usage += (usage.back() == ' ' ? "" : "|") + std::string(name);
+    return cli::usage_error(message, (usage + "\n" + kUsageOptions).c_str());
 }
 
 std::unique_ptr<lab::Family> make(const Options& o) {
@@ -92,14 +96,10 @@ nlohmann::json report_json(const Scene& scene, const lab::FamilyReport& r) {
                            {"failures_by_cause", by_cause},
                            {"pareto", std::find(front.begin(), front.end(), i) != front.end()}});
     }
-    return {{"source", scene.source},
-            {"family", r.family},
-            {"reference", r.reference},
-            {"time_unit", r.time_unit},
-            {"chart_error", r.chart_error},
-            {"notes", r.notes},
-            {"chart_x", r.chart_x.empty() ? "time" : r.chart_x},
-            {"methods", methods}};
+    return {{"source", scene.source},          {"family", r.family},
+            {"reference", r.reference},        {"time_unit", r.time_unit},
+            {"chart_error", r.chart_error},    {"notes", r.notes},
+            {"chart_x", lab::chart_x_name(r)}, {"methods", methods}};
 }
 
 void print_text(const lab::FamilyReport& r) {
@@ -125,8 +125,8 @@ void print_text(const lab::FamilyReport& r) {
             std::printf("    failure: %s at %s (%llu)\n", f.cause.c_str(), f.where.c_str(),
                         (unsigned long long)f.count);
     }
-    std::printf("* on the Pareto front of %s against %s\n",
-                r.chart_x.empty() ? "time" : r.chart_x.c_str(), r.chart_error.c_str());
+    std::printf("* on the Pareto front of %s against %s\n", lab::chart_x_name(r).c_str(),
+                r.chart_error.c_str());
 }
 
 } // namespace

@@ -1,6 +1,5 @@
 #include "pose_options.h"
 
-#include <charconv>
 #include <cmath>
 #include <string>
 
@@ -27,8 +26,7 @@ OptionMatch parse_pose_option(Args args, std::size_t& i, PoseOptions& out, std::
         }
     } else {
         // std::from_chars for double accepts "nan" and "inf": a time must be finite.
-        const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out.time);
-        if (ec != std::errc{} || end != v.data() + v.size() || !std::isfinite(out.time)) {
+        if (!parse_number(v, out.time) || !std::isfinite(out.time)) {
             error = "--time needs a finite number of seconds";
             return OptionMatch::Bad;
         }

@@ -6,6 +6,7 @@
 //   [--compare split|difference ... (compare_options.h)]
 #include "cli_common.h"
 #include "compare_options.h"
+#include "gpu_cli.h"
 #include "pose_options.h"
 #include "render_report.h"
 #include "shadow_options.h"
@@ -20,7 +21,6 @@
 #include <sherpa/scene/scene_loader.h>
 #include <sherpa/texture/image.h>
 
-#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <optional>
@@ -58,11 +58,6 @@ int usage_error(const std::string& message) {
 double ms_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();
-}
-
-template <typename T> bool parse_number(std::string_view s, T& out) {
-    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
-    return ec == std::errc{} && end == s.data() + s.size();
 }
 
 std::string joined(const std::vector<std::string_view>& names) {
@@ -323,11 +318,7 @@ int run_render(Args args) {
                 return kExitLoadError;
             }
         }
-        if (validation && context.validation().count() > 0) {
-            std::fprintf(stderr, "error: %zu Vulkan validation message(s)\n",
-                         context.validation().count());
-            return kExitLoadError;
-        }
+        if (validation_failed(context, validation)) return kExitLoadError;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "error: %s\n", e.what());
         return kExitLoadError;

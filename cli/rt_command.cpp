@@ -7,6 +7,7 @@
 // posed, which the renderer does on load: here they are not yet) and memory totals.
 // Textures are not prepared: acceleration structures do not read them.
 #include "cli_common.h"
+#include "gpu_cli.h"
 
 #include <sherpa/gpu/bindless.h>
 #include <sherpa/gpu/context.h>
@@ -15,7 +16,6 @@
 #include <sherpa/scene/scene_loader.h>
 #include <sherpa/texture/texture_pipeline.h>
 
-#include <charconv>
 #include <cstdio>
 #include <iostream>
 
@@ -163,8 +163,7 @@ int run_rt(Args args) {
         } else if (a == "--scratch-budget") {
             std::uint64_t bytes = 0;
             const std::string_view v = i + 1 < args.size() ? args[++i] : std::string_view();
-            const auto r = std::from_chars(v.data(), v.data() + v.size(), bytes);
-            if (v.empty() || r.ec != std::errc() || r.ptr != v.data() + v.size() || bytes == 0)
+            if (!parse_number(v, bytes) || bytes == 0)
                 return usage_error("--scratch-budget needs a positive number of bytes");
             settings.scratch_budget = bytes;
         } else if (a == "--rt") {
@@ -212,11 +211,7 @@ int run_rt(Args args) {
                 print_text(context, structures.stats());
         }
         resources.flush();
-        if (validation && context.validation().count() > 0) {
-            std::fprintf(stderr, "error: %zu Vulkan validation message(s)\n",
-                         context.validation().count());
-            return kExitLoadError;
-        }
+        if (validation_failed(context, validation)) return kExitLoadError;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "error: %.*s: %s\n", int(spec.size()), spec.data(), e.what());
         return kExitLoadError;

@@ -1,20 +1,10 @@
 #include "shadow_options.h"
 
-#include <charconv>
 #include <cmath>
 
 #include <sherpa/render/gpu_structs.h>
 
 namespace sherpa::cli {
-namespace {
-
-template <typename T> bool parse(std::string_view s, T& out) {
-    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
-    return ec == std::errc{} && end == s.data() + s.size();
-}
-
-} // namespace
-
 OptionMatch parse_shadow_option(Args args, std::size_t& i, gpu::RenderSettings& settings,
                                 std::uint32_t& resolution, std::string& error) {
     const std::string_view a = args[i];
@@ -29,11 +19,11 @@ OptionMatch parse_shadow_option(Args args, std::size_t& i, gpu::RenderSettings& 
     const std::string_view v = args[++i];
     std::uint32_t n = 0;
     float x = 0.0f;
-    if (integer && !parse(v, n)) {
+    if (integer && !parse_number(v, n)) {
         error = std::string(a) + " needs a non-negative integer, not '" + std::string(v) + "'";
         return OptionMatch::Bad;
     }
-    if (real && (!parse(v, x) || !std::isfinite(x) || x < 0.0f)) {
+    if (real && (!parse_number(v, x) || !std::isfinite(x) || x < 0.0f)) {
         error = std::string(a) + " needs a finite number >= 0, not '" + std::string(v) + "'";
         return OptionMatch::Bad;
     }

@@ -210,6 +210,10 @@ void set_texture(const Scene& scene, ImageSizes& sizes, Input& in) {
 std::vector<Input> inputs_of(const Scene& scene, std::vector<Failure>& failures,
                              ImageSizes& sizes) {
     std::vector<Input> out;
+    // Each mesh's first instance, in one pass over the instances (not one per mesh).
+    std::vector<const MeshInstance*> first(scene.meshes.size(), nullptr);
+    for (const MeshInstance& inst : scene.instances)
+        if (inst.mesh_id < first.size() && !first[inst.mesh_id]) first[inst.mesh_id] = &inst;
     for (std::uint32_t id = 0; id < scene.meshes.size(); ++id) {
         const Mesh& m = scene.meshes[id];
         if (m.vertices.empty()) continue;
@@ -223,11 +227,7 @@ std::vector<Input> inputs_of(const Scene& scene, std::vector<Failure>& failures,
             failures.push_back({"non-finite POSITION (left out)", detail::describe_mesh(m), bad});
         Input in;
         in.mesh = &m;
-        for (const MeshInstance& inst : scene.instances)
-            if (inst.mesh_id == id) {
-                in.world = inst.world;
-                break;
-            }
+        if (first[id]) in.world = first[id]->world;
         in.streams = streams_of(m);
         set_texture(scene, sizes, in);
         out.push_back(std::move(in));

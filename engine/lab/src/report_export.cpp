@@ -102,6 +102,10 @@ double chart_x_value(const FamilyReport& report, const MethodResult& m) {
     return e && std::isfinite(e->value) ? e->value : 0.0;
 }
 
+std::string chart_x_name(const FamilyReport& report) {
+    return report.chart_x.empty() ? "time" : report.chart_x;
+}
+
 std::vector<std::size_t> pareto_front(const FamilyReport& report) {
     const double sign = higher_is_better(report) ? -1.0 : 1.0; // compare as lower-is-better
     std::vector<std::size_t> front;
@@ -176,8 +180,8 @@ std::string report_svg(const FamilyReport& report, int width, int height) {
       << "\" viewBox=\"0 0 " << width << " " << height << "\" font-family=\"sans-serif\" "
       << "font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
     s << "<text x=\"" << left << "\" y=\"20\" font-size=\"14\">" << escape(report.family) << ": "
-      << (report.chart_x.empty() ? "time" : escape(report.chart_x)) << " against "
-      << escape(report.chart_error) << " (reference: " << escape(report.reference) << ")</text>\n";
+      << escape(chart_x_name(report)) << " against " << escape(report.chart_error)
+      << " (reference: " << escape(report.reference) << ")</text>\n";
     s << "<path d=\"M" << left << " " << top << " V" << bottom << " H" << right
       << "\" stroke=\"black\" fill=\"none\"/>\n";
     for (double t : ax.ticks())

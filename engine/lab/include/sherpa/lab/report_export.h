@@ -14,6 +14,8 @@ namespace sherpa::lab {
 // A method's x on the chart: its time, or the figure FamilyReport::chart_x names (0
 // when the method lacks it).
 double chart_x_value(const FamilyReport& report, const MethodResult& m);
+// What chart_x_value() measures: "time", or the figure FamilyReport::chart_x names.
+std::string chart_x_name(const FamilyReport& report);
 
 // Indices into report.methods of the methods that ran and that no other method of
 // their group (MethodInfo::group) beats on both chart_x_value (time unless FamilyReport::chart_x)

@@ -117,17 +117,8 @@ ComparisonPass::ComparisonPass(Context& context, ResourceManager& resources, std
 
     const UniqueShaderModule comp =
         create_shader_module(device, spirv_compare_comp, "vkCreateShaderModule(compare.comp)");
-    auto ci = vk_init<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
-    ci.stage = vk_init<VkPipelineShaderStageCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
-    ci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    ci.stage.module = comp.get();
-    ci.stage.pName = "main";
-    ci.layout = layout_.get();
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    vk_check(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline),
-             "vkCreateComputePipelines(compare)");
-    stats_pipeline_ = UniquePipeline(device, pipeline);
+    stats_pipeline_ = create_compute_pipeline(device, layout_.get(), comp.get(),
+                                              "vkCreateComputePipelines(compare)");
     vert_ = create_shader_module(device, spirv_compare_vert, "vkCreateShaderModule(compare.vert)");
     frag_ = create_shader_module(device, spirv_compare_frag, "vkCreateShaderModule(compare.frag)");
 

@@ -54,6 +54,22 @@ UniqueShaderModule create_shader_module(VkDevice device, std::span<const std::ui
     return UniqueShaderModule(device, module);
 }
 
+UniquePipeline create_compute_pipeline(VkDevice device, VkPipelineLayout layout,
+                                       VkShaderModule module, const char* what,
+                                       const VkSpecializationInfo* constants) {
+    auto ci = vk_init<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+    ci.stage = vk_init<VkPipelineShaderStageCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+    ci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    ci.stage.module = module;
+    ci.stage.pName = "main";
+    ci.stage.pSpecializationInfo = constants;
+    ci.layout = layout;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    vk_check(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline), what);
+    return UniquePipeline(device, pipeline);
+}
+
 UniqueQueryPool create_query_pool(VkDevice device, VkQueryType type, std::uint32_t count,
                                   VkQueryPipelineStatisticFlags statistics) {
     auto ci = vk_init<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);

@@ -10,6 +10,7 @@
 #include "compare_comp.h"
 #include "compare_frag.h"
 #include "compare_vert.h"
+#include "pipelines.h"
 
 namespace sherpa::gpu {
 namespace {
@@ -33,66 +34,9 @@ bool encodes_srgb(VkFormat format) {
 // every pixel of the target.
 UniquePipeline make_composite(VkDevice device, VkPipelineLayout layout, VkShaderModule vert,
                               VkShaderModule frag, VkFormat format) {
-    std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
-    for (auto& s : stages) {
-        s = vk_init<VkPipelineShaderStageCreateInfo>(
-            VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
-        s.pName = "main";
-    }
-    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-    stages[0].module = vert;
-    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-    stages[1].module = frag;
-    auto vertex_input = vk_init<VkPipelineVertexInputStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
-    auto assembly = vk_init<VkPipelineInputAssemblyStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
-    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    auto viewport = vk_init<VkPipelineViewportStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
-    viewport.viewportCount = 1;
-    viewport.scissorCount = 1;
-    auto raster = vk_init<VkPipelineRasterizationStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
-    raster.polygonMode = VK_POLYGON_MODE_FILL;
-    raster.cullMode = VK_CULL_MODE_NONE;
-    raster.lineWidth = 1.0f;
-    auto multisample = vk_init<VkPipelineMultisampleStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
-    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-    VkPipelineColorBlendAttachmentState attachment{};
-    attachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
-                                VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-    auto blend = vk_init<VkPipelineColorBlendStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
-    blend.attachmentCount = 1;
-    blend.pAttachments = &attachment;
-    const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    auto dynamic = vk_init<VkPipelineDynamicStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
-    dynamic.dynamicStateCount = 2;
-    dynamic.pDynamicStates = dynamic_states;
-    auto rendering =
-        vk_init<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachmentFormats = &format;
-    auto ci =
-        vk_init<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
-    ci.pNext = &rendering;
-    ci.stageCount = 2;
-    ci.pStages = stages.data();
-    ci.pVertexInputState = &vertex_input;
-    ci.pInputAssemblyState = &assembly;
-    ci.pViewportState = &viewport;
-    ci.pRasterizationState = &raster;
-    ci.pMultisampleState = &multisample;
-    ci.pColorBlendState = &blend;
-    ci.pDynamicState = &dynamic;
-    ci.layout = layout;
-    VkPipeline p = VK_NULL_HANDLE;
-    vk_check(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &p),
-             "vkCreateGraphicsPipelines(compare)");
-    return UniquePipeline(device, p);
+    PipelineDesc d{vert, frag};
+    d.depth = false;
+    return make_graphics_pipeline(device, layout, format, d, "vkCreateGraphicsPipelines(compare)");
 }
 
 } // namespace
@@ -117,17 +61,8 @@ ComparisonPass::ComparisonPass(Context& context, ResourceManager& resources, std
 
     const UniqueShaderModule comp =
         create_shader_module(device, spirv_compare_comp, "vkCreateShaderModule(compare.comp)");
-    auto ci = vk_init<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
-    ci.stage = vk_init<VkPipelineShaderStageCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
-    ci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    ci.stage.module = comp.get();
-    ci.stage.pName = "main";
-    ci.layout = layout_.get();
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    vk_check(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline),
-             "vkCreateComputePipelines(compare)");
-    stats_pipeline_ = UniquePipeline(device, pipeline);
+    stats_pipeline_ = create_compute_pipeline(device, layout_.get(), comp.get(),
+                                              "vkCreateComputePipelines(compare)");
     vert_ = create_shader_module(device, spirv_compare_vert, "vkCreateShaderModule(compare.vert)");
     frag_ = create_shader_module(device, spirv_compare_frag, "vkCreateShaderModule(compare.frag)");
 

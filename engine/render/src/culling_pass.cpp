@@ -19,6 +19,7 @@
 #include <chrono>
 #include <cstring>
 #include <numeric>
+#include <span>
 
 namespace sherpa::gpu {
 
@@ -37,6 +38,21 @@ bool box_visible(const Frustum& f, const Aabb& box, CullMethod m) {
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// A device-local list of GPU instance ids (what push constants' instance_ids point at).
+BufferHandle upload_instance_ids(ResourceManager& resources, std::span<const std::uint32_t> ids,
+                                 const char* name) {
+    const VkDeviceSize bytes = ids.size_bytes();
+    const BufferHandle buffer = resources.create_buffer(
+        {bytes,
+         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
+             VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+         MemoryUsage::DeviceLocal, name});
+    UploadBatch upload(resources);
+    upload.upload_buffer(buffer, 0, ids.data(), bytes);
+    upload.submit_and_wait();
+    return buffer;
 }
 
 } // namespace
@@ -72,15 +88,7 @@ void CullingPass::build(const GpuScene& scene) {
     if (bounds.empty()) return;
     std::vector<std::uint32_t> identity(bounds.size());
     std::iota(identity.begin(), identity.end(), 0u);
-    const VkDeviceSize bytes = identity.size() * sizeof(std::uint32_t);
-    culling_->identity = resources_.create_buffer(
-        {bytes,
-         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
-             VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-         MemoryUsage::DeviceLocal, "instance ids (identity)"});
-    UploadBatch upload(resources_);
-    upload.upload_buffer(culling_->identity, 0, identity.data(), bytes);
-    upload.submit_and_wait();
+    culling_->identity = upload_instance_ids(resources_, identity, "instance ids (identity)");
 }
 
 void CullingPass::set_hidden(std::vector<std::uint8_t> hidden, const GpuScene& scene) {
@@ -111,15 +119,7 @@ void CullingPass::set_hidden(std::vector<std::uint8_t> hidden, const GpuScene& s
                 ++c.group_shown[g];
             }
     }
-    const VkDeviceSize bytes = shown.size() * sizeof(std::uint32_t);
-    c.shown = resources_.create_buffer({bytes,
-                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                            VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
-                                            VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                        MemoryUsage::DeviceLocal, "instance ids (shown)"});
-    UploadBatch upload(resources_);
-    upload.upload_buffer(c.shown, 0, shown.data(), bytes);
-    upload.submit_and_wait();
+    c.shown = upload_instance_ids(resources_, shown, "instance ids (shown)");
 }
 
 // Objects of the non-blended groups, one batch per group; the same objects for the

@@ -52,21 +52,10 @@ GpuCullPipeline::GpuCullPipeline(const Context& context) {
     const VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(CullPush)};
     layout_ = create_pipeline_layout(device, {&set_layout, 1}, {&range, 1},
                                      "vkCreatePipelineLayout(cull)");
-    const VkPipelineLayout layout = layout_.get();
-    const UniqueShaderModule module_owner =
+    const UniqueShaderModule module =
         create_shader_module(device, spirv_cull_comp, "vkCreateShaderModule(cull)");
-    const VkShaderModule module = module_owner.get();
-    auto ci = vk_init<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
-    ci.stage = vk_init<VkPipelineShaderStageCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
-    ci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    ci.stage.module = module;
-    ci.stage.pName = "main";
-    ci.layout = layout;
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    vk_check(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline),
-             "vkCreateComputePipelines");
-    pipeline_ = UniquePipeline(device, pipeline);
+    pipeline_ =
+        create_compute_pipeline(device, layout_.get(), module.get(), "vkCreateComputePipelines");
 }
 
 GpuCuller::GpuCuller(Context& context, ResourceManager& resources, std::uint32_t parameter_blocks,

@@ -1,3 +1,4 @@
+#include "instance_data.h"
 #include "motion_streams.h"
 
 #include <sherpa/gpu/gpu_error.h>
@@ -323,16 +324,7 @@ void GpuScene::upload_instances(const Scene& scene) {
     std::vector<GPUInstanceData> data;
     for (const Keyed& k : order) {
         const MeshInstance& inst = scene.instances[k.instance];
-        GPUInstanceData g{};
-        g.model = inst.world;
-        const glm::mat3 upper(inst.world);
-        // Degenerate (zero-scale) transforms have no inverse; their normals do not matter.
-        const glm::mat3 nm = std::abs(glm::determinant(upper)) > 1e-30f
-                                 ? glm::transpose(glm::inverse(upper))
-                                 : upper;
-        for (int c = 0; c < 3; ++c) g.normal_matrix[c] = glm::vec4(nm[c], 0.0f);
-        g.material = std::get<2>(k.key);
-        g.mesh = inst.mesh_id;
+        const GPUInstanceData g = make_instance_data(inst.world, std::get<2>(k.key), inst.mesh_id);
         if (groups_.empty() ||
             std::make_tuple(groups_.back().mesh, std::uint32_t(groups_.back().alpha),
                             groups_.back().material, groups_.back().double_sided,

@@ -23,8 +23,11 @@ UniqueShaderModule make_module(VkDevice device, std::span<const std::uint32_t> c
     return create_shader_module(device, code, "vkCreateShaderModule");
 }
 
-UniquePipeline make_pipeline(VkDevice device, VkPipelineLayout layout, VkFormat color_format,
-                             const PipelineDesc& d) {
+} // namespace
+
+UniquePipeline make_graphics_pipeline(VkDevice device, VkPipelineLayout layout,
+                                      VkFormat color_format, const PipelineDesc& d,
+                                      const char* what) {
     std::vector<VkPipelineShaderStageCreateInfo> stages;
     auto stage = vk_init<VkPipelineShaderStageCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
@@ -78,6 +81,7 @@ UniquePipeline make_pipeline(VkDevice device, VkPipelineLayout layout, VkFormat 
         VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
     blend.attachmentCount = d.color ? 1 : 0;
     blend.pAttachments = &attachment;
+    // Viewport and scissor first: a pipeline without depth has only those two.
     const VkDynamicState dynamic_states[] = {
         VK_DYNAMIC_STATE_VIEWPORT,          VK_DYNAMIC_STATE_SCISSOR,
         VK_DYNAMIC_STATE_CULL_MODE,         VK_DYNAMIC_STATE_FRONT_FACE,
@@ -86,13 +90,14 @@ UniquePipeline make_pipeline(VkDevice device, VkPipelineLayout layout, VkFormat 
     };
     auto dynamic = vk_init<VkPipelineDynamicStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
-    dynamic.dynamicStateCount = static_cast<std::uint32_t>(std::size(dynamic_states));
+    dynamic.dynamicStateCount =
+        d.depth ? static_cast<std::uint32_t>(std::size(dynamic_states)) : 2u;
     dynamic.pDynamicStates = dynamic_states;
     auto rendering =
         vk_init<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
     rendering.colorAttachmentCount = d.color ? 1 : 0;
     rendering.pColorAttachmentFormats = &color_format;
-    rendering.depthAttachmentFormat = kDepthFormat;
+    rendering.depthAttachmentFormat = d.depth ? kDepthFormat : VK_FORMAT_UNDEFINED;
 
     auto ci =
         vk_init<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
@@ -104,17 +109,14 @@ UniquePipeline make_pipeline(VkDevice device, VkPipelineLayout layout, VkFormat 
     ci.pViewportState = &viewport;
     ci.pRasterizationState = &raster;
     ci.pMultisampleState = &multisample;
-    ci.pDepthStencilState = &depth;
+    ci.pDepthStencilState = d.depth ? &depth : nullptr;
     ci.pColorBlendState = &blend;
     ci.pDynamicState = &dynamic;
     ci.layout = layout;
     VkPipeline p = VK_NULL_HANDLE;
-    vk_check(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &p),
-             "vkCreateGraphicsPipelines");
+    vk_check(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &p), what);
     return UniquePipeline(device, p);
 }
-
-} // namespace
 
 Pipelines::Pipelines(const Context& context, VkDescriptorSetLayout textures_layout,
                      VkDescriptorSetLayout frame_layout, VkFormat color_format)
@@ -143,7 +145,8 @@ Pipelines::Pipelines(const Context& context, VkDescriptorSetLayout textures_layo
 
     auto make = [&](PipelineId id, const PipelineDesc& d) {
         descs_[static_cast<std::size_t>(id)] = d;
-        pipelines_[static_cast<std::size_t>(id)] = make_pipeline(device, layout, color_format, d);
+        pipelines_[static_cast<std::size_t>(id)] =
+            make_graphics_pipeline(device, layout, color_format, d);
     };
     make(PipelineId::PrepassOpaque,
          {depth_vert, VK_NULL_HANDLE, VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, VK_POLYGON_MODE_FILL,
@@ -174,7 +177,7 @@ VkPipeline Pipelines::get(PipelineId id, std::uint32_t mesh_flags) {
         const VkSpecializationInfo constants{1, &entry, sizeof(on), &on};
         PipelineDesc d = descs_[i];
         d.vert_constants = &constants;
-        motion_[i] = make_pipeline(device_, layout_.get(), color_format_, d);
+        motion_[i] = make_graphics_pipeline(device_, layout_.get(), color_format_, d);
     }
     return motion_[i].get();
 }
@@ -202,7 +205,7 @@ VkPipeline Pipelines::forward(std::uint32_t view, bool blend, std::uint32_t stre
                      : (streams & kMeshLinesBit) ? VK_PRIMITIVE_TOPOLOGY_LINE_LIST
                                                  : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
         if (streams & kMeshLinesBit) d.line_width = line_width_;
-        p = make_pipeline(device_, layout_.get(), color_format_, d);
+        p = make_graphics_pipeline(device_, layout_.get(), color_format_, d);
     }
     return p.get();
 }

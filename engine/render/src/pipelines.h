@@ -62,7 +62,18 @@ struct PipelineDesc {
     const VkSpecializationInfo* frag_constants = nullptr;
     const VkSpecializationInfo* vert_constants = nullptr;
     float line_width = 1.0f; // overlays and wireframe stay 1 px
+    // Last, after the fields the pipelines' positional initialisers give: has the
+    // depth attachment and the scene's dynamic rasterizer state (cull mode, winding,
+    // depth compare/write/bias). False: a full-screen colour pass whose only dynamic
+    // state is viewport and scissor.
+    bool depth = true;
 };
+
+// One graphics pipeline of `d`'s stages ("main"), vertex pulling (no vertex input),
+// dynamic rendering to `color_format` (and kDepthFormat where d.depth).
+UniquePipeline make_graphics_pipeline(VkDevice device, VkPipelineLayout layout,
+                                      VkFormat color_format, const PipelineDesc& d,
+                                      const char* what = "vkCreateGraphicsPipelines");
 
 // The pipeline of a run of draws: a fixed one, or forward shading of a view, chosen
 // per mesh for the streams it holds.

@@ -4,6 +4,7 @@
 //   [GPUInstanceData x instances][mat4 x joints][float x (weights + joints)]
 // push constants: instances -> the first part, pose -> the joint matrices, whose
 // vec4 array continues with the floats (inst.weight_base, highlight_base index them).
+#include "instance_data.h"
 #include "passes.h"
 #include "skeleton_lines.h"
 
@@ -18,15 +19,7 @@ namespace {
 constexpr std::uint32_t kNoJoints = 0xffffffffu; // NO_JOINTS in motion.glsl
 
 GPUInstanceData instance_data(const glm::mat4& world, std::uint32_t material, std::uint32_t mesh) {
-    GPUInstanceData g{};
-    g.model = world;
-    const glm::mat3 upper(world);
-    // Degenerate (zero-scale) transforms have no inverse; their normals do not matter.
-    const glm::mat3 nm =
-        std::abs(glm::determinant(upper)) > 1e-30f ? glm::transpose(glm::inverse(upper)) : upper;
-    for (int c = 0; c < 3; ++c) g.normal_matrix[c] = glm::vec4(nm[c], 0.0f);
-    g.material = material;
-    g.mesh = mesh;
+    GPUInstanceData g = make_instance_data(world, material, mesh);
     g.joint_base = kNoJoints;
     return g;
 }

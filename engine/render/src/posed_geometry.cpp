@@ -122,18 +122,8 @@ PosedGeometry::PosedGeometry(ResourceManager& resources, const RayTracingFunctio
     const VkBool32 on = VK_TRUE;
     const VkSpecializationMapEntry entry{1, 0, sizeof(VkBool32)}; // MOTION
     const VkSpecializationInfo constants{1, &entry, sizeof(on), &on};
-    auto ci = vk_init<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
-    ci.stage = vk_init<VkPipelineShaderStageCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
-    ci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    ci.stage.module = module.get();
-    ci.stage.pName = "main";
-    ci.stage.pSpecializationInfo = &constants;
-    ci.layout = layout_.get();
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    vk_check(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline),
-             "vkCreateComputePipelines(pose vertices)");
-    pipeline_ = UniquePipeline(device, pipeline);
+    pipeline_ = create_compute_pipeline(device, layout_.get(), module.get(),
+                                        "vkCreateComputePipelines(pose vertices)", &constants);
 }
 
 PosedGeometry::~PosedGeometry() {

@@ -1,6 +1,7 @@
 #pragma once
 // One call each for the small objects the engine creates by hand again and again:
-// descriptor-set layouts and pools, pipeline layouts, shader modules, query pools.
+// descriptor-set layouts and pools, pipeline layouts, shader modules, compute pipelines,
+// query pools.
 // Each throws GpuError naming `what` when creation fails and returns the RAII handle.
 #include <cstddef>
 #include <cstdint>
@@ -24,6 +25,10 @@ UniquePipelineLayout create_pipeline_layout(VkDevice device,
 // `code`: SPIR-V words.
 UniqueShaderModule create_shader_module(VkDevice device, std::span<const std::uint32_t> code,
                                         const char* what);
+// A compute pipeline of `module`'s "main", specialised by `constants` (may be null).
+UniquePipeline create_compute_pipeline(VkDevice device, VkPipelineLayout layout,
+                                       VkShaderModule module, const char* what,
+                                       const VkSpecializationInfo* constants = nullptr);
 // Pipeline statistics pools name the counters in `statistics`.
 UniqueQueryPool create_query_pool(VkDevice device, VkQueryType type, std::uint32_t count,
                                   VkQueryPipelineStatisticFlags statistics = 0);

@@ -1,6 +1,6 @@
 // Shared declarations: per-frame data and materials (descriptor set 1), instances
 // and vertex streams (buffer device addresses passed in push constants). C++ twins live in
-// engine/gpu/include/sherpa/gpu/gpu_structs.h with static_asserts on every offset.
+// engine/render/include/sherpa/render/gpu_structs.h with static_asserts on every offset.
 #ifndef SHERPA_COMMON_GLSL
 #define SHERPA_COMMON_GLSL
 

@@ -1,5 +1,5 @@
 // GLSL twins of sherpa::gpu::GPUCullObject / GPUCullParams / VkDrawIndexedIndirectCommand
-// (engine/gpu/include/sherpa/gpu/gpu_structs.h pins every offset). Scalar layout.
+// (engine/render/include/sherpa/render/gpu_structs.h pins every offset). Scalar layout.
 #ifndef SHERPA_CULL_STRUCTS_GLSL
 #define SHERPA_CULL_STRUCTS_GLSL
 

@@ -21,7 +21,7 @@ layout(buffer_reference, scalar, buffer_reference_align = 16) readonly buffer In
 
 // Skinning and morphing streams of one moving mesh (GPUMotionMesh; motion.glsl uses it).
 layout(buffer_reference, scalar, buffer_reference_align = 4) readonly buffer JointRef { uvec2 v[]; };
-layout(buffer_reference, scalar, buffer_reference_align = 8) readonly buffer MotionMeshRef {
+struct GPUMotionMesh {
     JointRef joints;         // 0: four 16-bit joint indices per vertex and set
     Vec4Ref weights;         // 8
     Vec3Ref morph_positions; // 16: per target and vertex, target-major
@@ -31,6 +31,10 @@ layout(buffer_reference, scalar, buffer_reference_align = 8) readonly buffer Mot
     uint influence_sets;     // 44
     uint target_count;       // 48
     uint flags;              // 52: MOTION_*
+};
+// The record is read whole (one scalar load of 56 bytes) where a moving vertex is posed.
+layout(buffer_reference, scalar, buffer_reference_align = 8) readonly buffer MotionMeshRef {
+    GPUMotionMesh m;
 };
 
 mat3 normal_matrix(GPUInstanceData inst) {

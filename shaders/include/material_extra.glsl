@@ -1,4 +1,4 @@
-// GLSL twin of sherpa::gpu::GPUMaterialExtra (engine/gpu/include/sherpa/gpu/gpu_structs.h):
+// GLSL twin of GPUMaterialExtra (engine/render/include/sherpa/render/gpu_structs.h):
 // what GPUMaterialData (material.glsl) has no room for. Offsets are pinned by
 // static_asserts on the C++ side; keep the field order identical.
 #ifndef SHERPA_MATERIAL_EXTRA_GLSL

@@ -41,7 +41,7 @@ Deformed deform(uint i, GPUInstanceData inst, bool frame) {
     bool skinned = false;
     mat4 skin = mat4(0.0);
     if (MOTION) {
-        MotionMeshRef m = pc.motion;
+        GPUMotionMesh m = pc.motion.m;
         uint flags = m.flags;
         uint vc = m.vertex_count;
         // Morph targets first, in the mesh's space (glTF: morph, then skin).

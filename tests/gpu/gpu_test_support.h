@@ -17,6 +17,7 @@
 #include <sherpa/render/renderer.h>
 #include <sherpa/scene/scene_loader.h>
 
+#include "rhi_test_support.h"
 #include "test_support.h"
 
 namespace sherpa::test {
@@ -72,11 +73,7 @@ protected:
     gpu::Renderer& renderer() { return *GpuEnvironment::get().renderer; }
 
     void SetUp() override { seen_ = context().validation().count(); }
-    void TearDown() override {
-        const auto messages = context().validation().messages();
-        for (std::size_t i = seen_; i < messages.size(); ++i)
-            ADD_FAILURE() << "validation: [" << messages[i].id_name << "] " << messages[i].text;
-    }
+    void TearDown() override { expect_no_validation_since(context(), seen_); }
 
     // The frame `s` asks for, as RGBA8 rows (top first).
     std::vector<std::uint8_t> draw(const gpu::RenderSettings& s) {

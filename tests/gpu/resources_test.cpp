@@ -1,5 +1,5 @@
 // Resource manager: generation-checked handles, deferred destruction, staging.
-#include "gpu_test_support.h"
+#include "rhi_test_support.h"
 
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/upload.h>
@@ -13,7 +13,7 @@ namespace {
 using gpu::BufferHandle;
 using gpu::MemoryUsage;
 
-class ResourcesTest : public GpuTest {};
+class ResourcesTest : public RhiTest {};
 
 TEST_F(ResourcesTest, StaleHandleIsAReportedErrorNotAReuse) {
     gpu::ResourceManager rm(context());

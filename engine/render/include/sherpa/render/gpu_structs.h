@@ -1,8 +1,9 @@
 #pragma once
-// C++ twins of the GPU-visible structures of the GPU layer, in one place:
+// C++ twins of the GPU-visible structures of the render layer, in one place:
 // shaders/include/{common,material_extra,cull_structs}.glsl (GPUMaterialData, the
 // scene layer's, is in sherpa/scene/material.h). Every offset is pinned here; change
-// both sides together. The constants and enum values the shaders use are not
+// both sides together: tests/gpu/struct_twins_test.cpp compiles the GLSL side and
+// fails on any field whose name or offset differs (add a new struct to its table). The constants and enum values the shaders use are not
 // copied: sherpa_glsl_constants generates them from this header (sherpa_constants.glsl).
 #include <cstddef>
 #include <cstdint>
@@ -204,14 +205,14 @@ static_assert(sizeof(GPULineVertex) == 32);
 
 // Culling (shaders/include/cull_structs.glsl, scalar layout).
 struct GPUCullObject {
-    glm::vec3 min;
+    glm::vec3 bmin;
     std::uint32_t batch;
-    glm::vec3 max;
+    glm::vec3 bmax;
     std::uint32_t instance;
 };
 static_assert(sizeof(GPUCullObject) == 32);
 static_assert(offsetof(GPUCullObject, batch) == 12);
-static_assert(offsetof(GPUCullObject, max) == 16);
+static_assert(offsetof(GPUCullObject, bmax) == 16);
 static_assert(offsetof(GPUCullObject, instance) == 28);
 
 inline constexpr std::uint32_t kCullInvalidBit = 0x80000000u;

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include <sherpa/render/acceleration_structures.h>
+#include <sherpa/render/acceleration_stats.h>
 #include <sherpa/render/load_settings.h>
 #include <sherpa/render/render_settings.h>
 #include <sherpa/scene/culling_passes.h>
@@ -26,8 +26,6 @@ struct PreparedTextureSet;
 } // namespace sherpa
 
 namespace sherpa::gpu {
-
-struct AccelerationStats; // sherpa/render/acceleration_structures.h
 
 class Context;
 class ResourceManager;

@@ -19,6 +19,10 @@ QString Format::number(double v) {
     return QString::number(v, 'g', kReadableDigits);
 }
 
+QString Format::compact(double v) {
+    return QString::number(v, 'g', 4);
+}
+
 QString Format::exact(double v) {
     return QString::number(v, 'g', kFloatDigits);
 }
@@ -53,6 +57,25 @@ QString Format::componentType(std::int32_t t) {
         return QStringLiteral("FLOAT");
     default:
         return tr("unknown (%1)").arg(t);
+    }
+}
+
+QString Format::componentTypeShort(std::int32_t t) {
+    switch (t) {
+    case 5120:
+        return QStringLiteral("i8");
+    case 5121:
+        return QStringLiteral("u8");
+    case 5122:
+        return QStringLiteral("i16");
+    case 5123:
+        return QStringLiteral("u16");
+    case 5125:
+        return QStringLiteral("u32");
+    case 5126:
+        return QStringLiteral("f32");
+    default:
+        return componentType(t);
     }
 }
 

@@ -32,10 +32,10 @@ TextureDock::TextureDock(const EditorContext& context, QWidget* parent)
     view_->setSelectionBehavior(QAbstractItemView::SelectRows);
     view_->setSelectionMode(QAbstractItemView::SingleSelection);
     view_->setWordWrap(false);
-    // What a user looks for first: which texture, whether it is there (State:
-    // "missing"), what it is for and how big; the hashes and timings scroll in.
+    // What a user looks for first: whether it is there (State: "missing"), which
+    // texture, what it is for and how big; the hashes and timings scroll in.
     show_columns_first(view_->horizontalHeader(),
-                       {TextureTableModel::NameColumn, TextureTableModel::CacheStateColumn,
+                       {TextureTableModel::CacheStateColumn, TextureTableModel::NameColumn,
                         TextureTableModel::RoleColumn, TextureTableModel::SizeColumn,
                         TextureTableModel::FormatColumn});
     // Three rows: in one, the buttons need more than a side dock's width.

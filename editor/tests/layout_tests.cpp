@@ -144,6 +144,8 @@ QStringList cut_off_columns(QDockWidget& dock, std::initializer_list<int> column
 // Accessor and Component, the vertex's position (x, y, z), the Lab's time and chart
 // error, the material field's value and SSBO offset; the scene tree's selected item
 // with its whole details in the pane under the tree.
+void wait_settled(MainWindow& w);
+
 QStringList cut_needed_columns(MainWindow& w) {
     QStringList cut;
     w.textureDock()->raise();
@@ -161,11 +163,17 @@ QStringList cut_needed_columns(MainWindow& w) {
     w.materialDock()->raise();
     wait_settled(w);
     cut << cut_off_columns(*w.materialDock(),
-                           {MaterialFieldsModel::FieldColumn, MaterialFieldsModel::ValueColumn,
-                            MaterialFieldsModel::OffsetColumn});
+                           {MaterialFieldsModel::FieldColumn, MaterialFieldsModel::ValueColumn});
+    // Its byte offsets head the rows.
+    if (auto* table = w.materialDock()->findChild<QTableView*>();
+        !table->verticalHeader()->isVisible() || table->verticalHeader()->width() <= 0 ||
+        table->model()->headerData(1, Qt::Vertical).toString() !=
+            table->model()->index(1, MaterialFieldsModel::OffsetColumn).data().toString())
+        cut << QStringLiteral("materialDock: no offsets heading the rows");
     w.labDock()->raise();
     wait_settled(w);
-    cut << cut_off_columns(*w.labDock(), {0, 2, 3}); // method, time, chart error
+    cut << cut_off_columns(w.labDock()->methodsView(), QStringLiteral("labDock"),
+                           {0, 2, 3}); // method, time, chart error
     w.sceneTreeDock()->raise();
     wait_settled(w);
     QLabel* pane = w.sceneTreeDock()->detailsPane();

@@ -291,10 +291,6 @@
         <translation>Accessor</translation>
     </message>
     <message>
-        <source>Component type</source>
-        <translation>Komponententyp</translation>
-    </message>
-    <message>
         <source>Normalized</source>
         <translation>Normalisiert</translation>
     </message>
@@ -321,6 +317,14 @@
     <message>
         <source>GPU bytes</source>
         <translation>GPU-Bytes</translation>
+    </message>
+    <message>
+        <source>, normalized</source>
+        <translation>, normalisiert</translation>
+    </message>
+    <message>
+        <source>Component</source>
+        <translation>Komponente</translation>
     </message>
 </context>
 <context>
@@ -1370,6 +1374,10 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <source>Texture chain</source>
         <translation>Texturkette</translation>
     </message>
+    <message>
+        <source>Byte offset in the record</source>
+        <translation>Byte-Versatz im Datensatz</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MeshDock</name>
@@ -1773,10 +1781,6 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <translation>GPU-Bytes</translation>
     </message>
     <message>
-        <source>Cache state</source>
-        <translation>Cache-Zustand</translation>
-    </message>
-    <message>
         <source>Decode ms</source>
         <translation>Dekodieren ms</translation>
     </message>
@@ -1819,6 +1823,10 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>Container</source>
         <translation>Container</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
     </message>
 </context>
 <context>

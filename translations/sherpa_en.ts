@@ -291,10 +291,6 @@
         <translation>Accessor</translation>
     </message>
     <message>
-        <source>Component type</source>
-        <translation>Component type</translation>
-    </message>
-    <message>
         <source>Normalized</source>
         <translation>Normalized</translation>
     </message>
@@ -321,6 +317,14 @@
     <message>
         <source>GPU bytes</source>
         <translation>GPU bytes</translation>
+    </message>
+    <message>
+        <source>, normalized</source>
+        <translation>, normalized</translation>
+    </message>
+    <message>
+        <source>Component</source>
+        <translation>Component</translation>
     </message>
 </context>
 <context>
@@ -1370,6 +1374,10 @@ The current scene is kept.</translation>
         <source>Texture chain</source>
         <translation>Texture chain</translation>
     </message>
+    <message>
+        <source>Byte offset in the record</source>
+        <translation>Byte offset in the record</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MeshDock</name>
@@ -1773,10 +1781,6 @@ The current scene is kept.</translation>
         <translation>GPU bytes</translation>
     </message>
     <message>
-        <source>Cache state</source>
-        <translation>Cache state</translation>
-    </message>
-    <message>
         <source>Decode ms</source>
         <translation>Decode ms</translation>
     </message>
@@ -1819,6 +1823,10 @@ The current scene is kept.</translation>
     <message>
         <source>Container</source>
         <translation>Container</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>State</translation>
     </message>
 </context>
 <context>

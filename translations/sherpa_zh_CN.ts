@@ -291,10 +291,6 @@
         <translation>访问器</translation>
     </message>
     <message>
-        <source>Component type</source>
-        <translation>分量类型</translation>
-    </message>
-    <message>
         <source>Normalized</source>
         <translation>归一化</translation>
     </message>
@@ -321,6 +317,14 @@
     <message>
         <source>GPU bytes</source>
         <translation>GPU 字节</translation>
+    </message>
+    <message>
+        <source>, normalized</source>
+        <translation>，归一化</translation>
+    </message>
+    <message>
+        <source>Component</source>
+        <translation>分量</translation>
     </message>
 </context>
 <context>
@@ -1370,6 +1374,10 @@ The current scene is kept.</source>
         <source>Texture chain</source>
         <translation>纹理链</translation>
     </message>
+    <message>
+        <source>Byte offset in the record</source>
+        <translation>记录中的字节偏移</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MeshDock</name>
@@ -1773,10 +1781,6 @@ The current scene is kept.</source>
         <translation>GPU 字节</translation>
     </message>
     <message>
-        <source>Cache state</source>
-        <translation>缓存状态</translation>
-    </message>
-    <message>
         <source>Decode ms</source>
         <translation>解码 ms</translation>
     </message>
@@ -1819,6 +1823,10 @@ The current scene is kept.</source>
     <message>
         <source>Container</source>
         <translation>容器</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>状态</translation>
     </message>
 </context>
 <context>

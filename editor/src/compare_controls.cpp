@@ -43,8 +43,7 @@ CompareControls::CompareControls(QWidget* parent) : QObject(parent) {
         QAction* act = sides_->addAction(QString());
         act->setCheckable(true);
         const std::uint32_t id = v.id;
-        connect(act, &QAction::triggered, this,
-                [this, id] { chooseSide(SideB::OtherView, id); });
+        connect(act, &QAction::triggered, this, [this, id] { chooseSide(SideB::OtherView, id); });
         view_actions_.push_back(act);
         side_views_->addAction(act);
     }
@@ -242,8 +241,8 @@ void CompareControls::retranslate() {
                              : (other_file_.isEmpty() ? tr("no file") : other_file_);
     const QString side_text = tr("B: %1").arg(side);
     // A long file name would push the toolbar's last buttons into its overflow menu.
-    side_button_->setText(side_button_->fontMetrics().elidedText(side_text, Qt::ElideMiddle,
-                                                                 kMaxButtonTextWidth));
+    side_button_->setText(
+        side_button_->fontMetrics().elidedText(side_text, Qt::ElideMiddle, kMaxButtonTextWidth));
     const QString side_tip =
         state_.comparing()
             ? tr("What side B of the comparison draws: %1").arg(side)

@@ -3,12 +3,12 @@
 #include <QChart>
 #include <QCoreApplication>
 #include <QCursor>
-#include <QToolTip>
 #include <QGraphicsTextItem>
-#include <QTextDocument>
 #include <QLineSeries>
 #include <QLogValueAxis>
 #include <QScatterSeries>
+#include <QTextDocument>
+#include <QToolTip>
 #include <QValueAxis>
 
 #include <algorithm>

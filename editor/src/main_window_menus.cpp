@@ -285,8 +285,9 @@ void MainWindow::retranslateOverlayButton() {
     for (QAction* act : a_->overlay_actions)
         if (act->isChecked()) on << act->text().remove(QLatin1Char('&'));
     a_->overlay_button->setText(on.isEmpty() ? tr("Overlays") : tr("Overlays (%1)").arg(on.size()));
-    a_->overlay_button->setToolTip(on.isEmpty() ? tr("Overlays: none shown")
-                                                : tr("Overlays: %1").arg(on.join(QStringLiteral(", "))));
+    a_->overlay_button->setToolTip(on.isEmpty()
+                                       ? tr("Overlays: none shown")
+                                       : tr("Overlays: %1").arg(on.join(QStringLiteral(", "))));
 }
 
 void MainWindow::retranslate() {

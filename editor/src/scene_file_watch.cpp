@@ -39,8 +39,10 @@ QStringList scene_files(const QString& path, const Scene& scene) {
     if (!info.exists()) return files; // builtin:..., or gone
     files << info.absoluteFilePath();
     const QDir dir = info.absoluteDir();
-    const QJsonArray buffers =
-        QJsonDocument::fromJson(gltf_json(path)).object().value(QStringLiteral("buffers")).toArray();
+    const QJsonArray buffers = QJsonDocument::fromJson(gltf_json(path))
+                                   .object()
+                                   .value(QStringLiteral("buffers"))
+                                   .toArray();
     for (const QJsonValue& b : buffers) {
         const QString uri = b.toObject().value(QStringLiteral("uri")).toString();
         if (uri.isEmpty() || uri.startsWith(QLatin1String("data:"))) continue;

@@ -34,8 +34,7 @@ SceneTreeDock::SceneTreeDock(const EditorContext& context, QWidget* parent)
     view_->header()->setSectionResizeMode(SceneTreeModel::NameColumn,
                                           QHeaderView::ResizeToContents);
     // Details before Type: what a node holds matters more than the word "node".
-    show_columns_first(view_->header(), {SceneTreeModel::NameColumn,
-                                         SceneTreeModel::DetailColumn});
+    show_columns_first(view_->header(), {SceneTreeModel::NameColumn, SceneTreeModel::DetailColumn});
     details_ = new QLabel(body);
     details_->setObjectName(QStringLiteral("sceneTreeDetails"));
     details_->setWordWrap(true);

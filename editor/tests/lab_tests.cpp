@@ -331,9 +331,8 @@ void LabTests::chartLabelsNeverOverlap() {
     report.time_unit = "ns/object";
     report.chart_error = "false_positives";
     const std::pair<const char*, double> methods[] = {
-        {"exact", 328.0}, {"pvertex", 41.0},   {"gpu test=pvertex", 40.0},
-        {"sphere", 12.0}, {"aabb", 30.0},      {"obb", 55.0},
-        {"gpu test=sphere", 11.5}};
+        {"exact", 328.0}, {"pvertex", 41.0}, {"gpu test=pvertex", 40.0}, {"sphere", 12.0},
+        {"aabb", 30.0},   {"obb", 55.0},     {"gpu test=sphere", 11.5}};
     for (const auto& [name, time] : methods) {
         lab::MethodResult m;
         m.method.name = name;
@@ -378,8 +377,9 @@ void LabTests::chartLabelsNeverOverlap() {
                 const QPointF p = chart->mapToScene(chart->mapToPosition(scatter->at(0), scatter));
                 const double r = scatter->markerSize() / 2.0;
                 if (a.intersects(QRectF(p - QPointF(r, r), QSizeF(2 * r, 2 * r))))
-                    overlaps << QStringLiteral("label %1 and the marker of %2").arg(i).arg(
-                                    scatter->name());
+                    overlaps << QStringLiteral("label %1 and the marker of %2")
+                                    .arg(i)
+                                    .arg(scatter->name());
             }
     }
     QVERIFY2(overlaps.isEmpty(), qPrintable(overlaps.join(QLatin1Char('\n'))));
@@ -390,7 +390,8 @@ void LabTests::chartLabelsNeverOverlap() {
     for (std::size_t i = 0; i < boxes.size(); ++i)
         for (std::size_t j = i + 1; j < boxes.size(); ++j)
             QVERIFY(!boxes[i] || !boxes[j] || !boxes[i]->intersects(*boxes[j]));
-    QVERIFY(std::count_if(boxes.begin(), boxes.end(), [](const auto& b) { return b.has_value(); }) >= 8);
+    QVERIFY(std::count_if(boxes.begin(), boxes.end(),
+                          [](const auto& b) { return b.has_value(); }) >= 8);
 }
 
 QTEST_MAIN(LabTests)

@@ -19,6 +19,7 @@
 #include <QVulkanInstance>
 #include <QtTest>
 
+#include "attribute_model.h"
 #include "command_line.h"
 #include "compare_controls.h"
 #include "culling_dock.h"
@@ -31,14 +32,13 @@
 #include "main_window.h"
 #include "material_dock.h"
 #include "material_fields_model.h"
-#include "attribute_model.h"
 #include "mesh_dock.h"
-#include "scene_tree_model.h"
-#include "texture_table_model.h"
-#include "vertex_table_model.h"
 #include "scene_tree_dock.h"
+#include "scene_tree_model.h"
 #include "test_assets.h"
 #include "texture_dock.h"
+#include "texture_table_model.h"
+#include "vertex_table_model.h"
 #include "viewport_window.h"
 #include "window_test_support.h"
 
@@ -210,8 +210,8 @@ QStringList toolbar_problems(MainWindow& w) {
         if (!bar->isVisible()) continue;
         if (auto* ext = bar->findChild<QToolButton*>(QStringLiteral("qt_toolbar_ext_button"));
             ext && ext->isVisible())
-            problems << QStringLiteral("toolbar overflows into its menu (%1 px wide)")
-                            .arg(bar->width());
+            problems
+                << QStringLiteral("toolbar overflows into its menu (%1 px wide)").arg(bar->width());
         QStringList prefixes;
         for (auto* button : bar->findChildren<QToolButton*>()) {
             if (!button->isVisible() || !button->text().contains(QLatin1Char(':'))) continue;

@@ -203,8 +203,10 @@ void LoadingTests::changedFilesAreOfferedOrReloaded() {
     const QString gltf = dir.filePath(QStringLiteral("BoxTextured.gltf"));
     QVERIFY(load(*window_, gltf));
     const QStringList watched = window_->watchedFiles();
-    const QString bin = QFileInfo(dir.filePath(QStringLiteral("BoxTextured0.bin"))).absoluteFilePath();
-    const QString png = QFileInfo(dir.filePath(QStringLiteral("CesiumLogoFlat.png"))).absoluteFilePath();
+    const QString bin =
+        QFileInfo(dir.filePath(QStringLiteral("BoxTextured0.bin"))).absoluteFilePath();
+    const QString png =
+        QFileInfo(dir.filePath(QStringLiteral("CesiumLogoFlat.png"))).absoluteFilePath();
     QVERIFY2(watched.contains(QFileInfo(gltf).absoluteFilePath()) && watched.contains(bin) &&
                  watched.contains(png),
              qPrintable(watched.join(QLatin1Char(' '))));
@@ -219,13 +221,15 @@ void LoadingTests::changedFilesAreOfferedOrReloaded() {
         const QByteArray bytes = f.readAll();
         f.close();
         QFile out(path);
-        return out.open(QIODevice::WriteOnly | QIODevice::Truncate) && out.write(bytes) == bytes.size();
+        return out.open(QIODevice::WriteOnly | QIODevice::Truncate) &&
+               out.write(bytes) == bytes.size();
     };
     QVERIFY(touch(bin));
     QMessageBox* offer = nullptr;
-    QTRY_VERIFY_WITH_TIMEOUT((offer = window_->findChild<QMessageBox*>(QStringLiteral("reloadOffer"))) &&
-                                 offer->isVisible(),
-                             10000);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        (offer = window_->findChild<QMessageBox*>(QStringLiteral("reloadOffer"))) &&
+            offer->isVisible(),
+        10000);
     QVERIFY(offer->text().contains(QStringLiteral("BoxTextured0.bin")));
     QCOMPARE(loaded.count(), 0); // offered, not done
     QAbstractButton* reload = nullptr;

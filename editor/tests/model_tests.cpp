@@ -61,7 +61,8 @@ void check_vertex_rows(const Mesh& mesh, const VertexTableModel& model) {
             QCOMPARE(display(model, row, VertexTableModel::NrmX + c), Format::compact(x.normal[c]));
         }
         for (int c = 0; c < 4; ++c)
-            QCOMPARE(display(model, row, VertexTableModel::TanX + c), Format::compact(x.tangent[c]));
+            QCOMPARE(display(model, row, VertexTableModel::TanX + c),
+                     Format::compact(x.tangent[c]));
         for (int c = 0; c < 2; ++c) {
             QCOMPARE(display(model, row, VertexTableModel::Uv0U + c), Format::compact(x.uv0[c]));
             QCOMPARE(display(model, row, VertexTableModel::Uv1U + c), Format::compact(x.uv1[c]));

@@ -15,8 +15,8 @@
 #include "render_thread.h"
 #include "resolution_scale.h"
 #include "scene_tree_dock.h"
-#include "timeline_dock.h"
 #include "test_assets.h"
+#include "timeline_dock.h"
 #include "viewport_window.h"
 #include "window_test_support.h"
 
@@ -199,9 +199,8 @@ void RenderThreadTests::playbackIsMotionAndPauseIsExact() {
     // Paused: nobody asks again, and the pose of this time is drawn at full size.
     timeline.setPlaying(false);
     const std::uint64_t paused = w.lastRequest();
-    QVERIFY(waitForReport(w, [&](const FrameReport& r) {
-        return r.scale == 1.0f && r.request >= paused;
-    }));
+    QVERIFY(waitForReport(
+        w, [&](const FrameReport& r) { return r.scale == 1.0f && r.request >= paused; }));
     QCOMPARE(QSize(int(w.lastReport().width), int(w.lastReport().height)),
              w.viewport()->pixelSize());
     w.renderer()->setTargetFrameMs(kTargetFrameMs);

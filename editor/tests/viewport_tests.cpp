@@ -149,7 +149,8 @@ void ViewportTests::highlightFollowsSelection() {
     QCOMPARE(scene.nodes[std::size_t(grid)].mesh, -1);
     std::vector<std::uint32_t> expected;
     for (std::uint32_t i = 0; i < scene.instances.size(); ++i)
-        for (int n = int(scene.instances[i].node_id); n >= 0; n = scene.nodes[std::size_t(n)].parent)
+        for (int n = int(scene.instances[i].node_id); n >= 0;
+             n = scene.nodes[std::size_t(n)].parent)
             if (n == grid) {
                 expected.push_back(i);
                 break;

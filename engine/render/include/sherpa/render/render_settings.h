@@ -129,7 +129,7 @@ struct RenderSettings {
     std::optional<std::uint32_t> selected_joint;
 };
 
-inline const glm::vec4 kHighlightColor{1.0f, 0.45f, 0.0f, 1.0f}; // orange
+inline const glm::vec4 kHighlightColor{1.0f, 0.45f, 0.0f, 1.0f};      // orange
 inline const glm::vec4 kHighlightDetailColor{1.0f, 0.0f, 1.0f, 1.0f}; // magenta
 
 // Does this view/overlay need streams the materials do not use (so the scene must

@@ -48,7 +48,18 @@ int AttributeModel::columnCount(const QModelIndex& parent) const {
 
 QVariant AttributeModel::data(const QModelIndex& index, int role) const {
     const Mesh* m = mesh_.get();
-    if (!index.isValid() || !m || role != Qt::DisplayRole) return {};
+    if (!index.isValid() || !m) return {};
+    if (role == Qt::ToolTipRole && index.column() == ComponentTypeColumn) {
+        const std::optional<AccessorSource>& s =
+            index.row() == kIndexRow ? m->index_source
+                                     : m->sources[static_cast<std::size_t>(index.row())];
+        return s ? QStringLiteral("%1 x%2%3")
+                       .arg(Format::componentType(s->component_type))
+                       .arg(s->components)
+                       .arg(s->normalized ? tr(", normalized") : QString())
+                 : QVariant();
+    }
+    if (role != Qt::DisplayRole) return {};
     const int row = index.row();
     const bool is_index = row == kIndexRow;
     const std::optional<AccessorSource>& src =
@@ -72,8 +83,9 @@ QVariant AttributeModel::data(const QModelIndex& index, int role) const {
     case AccessorColumn:
         return src->accessor;
     case ComponentTypeColumn:
-        return QStringLiteral("%1 x%2")
-            .arg(Format::componentType(src->component_type))
+        // Compact (f32×3): the column must fit a side dock; the glTF name on hover.
+        return QStringLiteral("%1×%2")
+            .arg(Format::componentTypeShort(src->component_type))
             .arg(src->components);
     case NormalizedColumn:
         return Format::yesNo(src->normalized);
@@ -104,7 +116,7 @@ QVariant AttributeModel::headerData(int section, Qt::Orientation o, int role) co
     case AccessorColumn:
         return tr("Accessor");
     case ComponentTypeColumn:
-        return tr("Component type");
+        return tr("Component");
     case NormalizedColumn:
         return tr("Normalized");
     case CountColumn:

@@ -16,6 +16,8 @@ namespace {
 // Of 255 (sRGB bytes); 0: automatic.
 constexpr int kHeatScales[] = {4, 16, 64, 0};
 constexpr int kThresholds[] = {1, 2, 4, 8};
+// The widest a toolbar button's text gets (its full text in the tooltip).
+constexpr int kMaxButtonTextWidth = 220;
 } // namespace
 
 CompareControls::CompareControls(QWidget* parent) : QObject(parent) {
@@ -34,14 +36,14 @@ CompareControls::CompareControls(QWidget* parent) : QObject(parent) {
     sides_ = new QActionGroup(this);
     side_rays_ = sides_->addAction(QString());
     side_rays_->setCheckable(true);
-    connect(side_rays_, &QAction::triggered, this, [this] { setSide(SideB::RayTraced); });
+    connect(side_rays_, &QAction::triggered, this, [this] { chooseSide(SideB::RayTraced); });
     side_menu_->addAction(side_rays_);
     side_views_ = side_menu_->addMenu(QString());
     for (const ViewEntry& v : ViewCatalog::views()) {
         QAction* act = sides_->addAction(QString());
         act->setCheckable(true);
         const std::uint32_t id = v.id;
-        connect(act, &QAction::triggered, this, [this, id] { setSide(SideB::OtherView, id); });
+        connect(act, &QAction::triggered, this, [this, id] { chooseSide(SideB::OtherView, id); });
         view_actions_.push_back(act);
         side_views_->addAction(act);
     }
@@ -114,6 +116,13 @@ void CompareControls::setSide(SideB side, std::uint32_t view) {
     Q_EMIT changed();
 }
 
+void CompareControls::chooseSide(SideB side, std::uint32_t view) {
+    // Choosing what to compare with means comparing: from Raster or Ray traced the
+    // viewport goes to Split (as it does when another file is loaded as side B).
+    if (!state_.comparing()) state_.mode = ViewportMode::Split;
+    setSide(side, view);
+}
+
 void CompareControls::setDivider(float fraction) {
     state_.divider = fraction;
     Q_EMIT changed();
@@ -179,7 +188,6 @@ void CompareControls::sync() {
         heat_actions_[i]->setChecked(std::lround(state_.heat_max * 255.0f) == kHeatScales[i]);
     for (std::size_t i = 0; i < threshold_actions_.size(); ++i)
         threshold_actions_[i]->setChecked(std::lround(state_.threshold * 255.0f) == kThresholds[i]);
-    if (side_button_) side_button_->setEnabled(state_.comparing());
     retranslate();
 }
 
@@ -231,8 +239,18 @@ void CompareControls::retranslate() {
                          : state_.side == SideB::OtherView
                              ? view_label
                              : (other_file_.isEmpty() ? tr("no file") : other_file_);
-    side_button_->setText(tr("B: %1").arg(side));
-    side_button_->setStatusTip(tr("What side B of the comparison draws"));
+    const QString side_text = tr("B: %1").arg(side);
+    // A long file name would push the toolbar's last buttons into its overflow menu.
+    side_button_->setText(
+        side_button_->fontMetrics().elidedText(side_text, Qt::ElideMiddle, kMaxButtonTextWidth));
+    const QString side_tip =
+        state_.comparing()
+            ? tr("What side B of the comparison draws: %1").arg(side)
+            : tr("Side B is shown in the Split and Difference modes (Viewport button); "
+                 "choosing it here switches to Split. Now: %1")
+                  .arg(side);
+    side_button_->setToolTip(side_tip);
+    side_button_->setStatusTip(side_tip);
 }
 
 } // namespace sherpa::editor

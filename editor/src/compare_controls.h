@@ -56,6 +56,8 @@ Q_SIGNALS:
     void tangentsRequested(sherpa::TangentMethod method);
 
 private:
+    // The side chosen in the menu: a comparison starts (Split) if none is shown.
+    void chooseSide(SideB side, std::uint32_t view = 0);
     void sync(); // checks, enabled states and button texts from state_
 
     ViewportComparison state_;

@@ -13,6 +13,7 @@ const QString kCacheDir = QStringLiteral("textures/cacheDirectory");
 const QString kQuality = QStringLiteral("textures/quality");
 const QString kLanguage = QStringLiteral("ui/language");
 const QString kCheckerDensity = QStringLiteral("viewport/checkerDensity");
+const QString kReloadAutomatically = QStringLiteral("files/reloadAutomatically");
 } // namespace
 
 QStringList EditorSettings::recentFiles() const {
@@ -78,6 +79,14 @@ int EditorSettings::checkerDensity() const {
 
 void EditorSettings::setCheckerDensity(int checks) {
     settings_.setValue(kCheckerDensity, checks);
+}
+
+bool EditorSettings::reloadAutomatically() const {
+    return settings_.value(kReloadAutomatically, false).toBool();
+}
+
+void EditorSettings::setReloadAutomatically(bool automatic) {
+    settings_.setValue(kReloadAutomatically, automatic);
 }
 
 QString EditorSettings::language() const {

@@ -31,6 +31,9 @@ public:
     // Checks per UV unit of the uv checker views (View › Checker Density).
     int checkerDensity() const; // default 32: fine enough for texture atlases
     void setCheckerDensity(int checks);
+    // The open file changed on disk: reload it at once (true) or offer to (false).
+    bool reloadAutomatically() const; // default false: ask
+    void setReloadAutomatically(bool automatic);
     QString language() const; // "" = follow the system locale
     void setLanguage(const QString& code);
 

@@ -19,6 +19,10 @@ QString Format::number(double v) {
     return QString::number(v, 'g', kReadableDigits);
 }
 
+QString Format::compact(double v) {
+    return QString::number(v, 'g', 4);
+}
+
 QString Format::exact(double v) {
     return QString::number(v, 'g', kFloatDigits);
 }
@@ -37,23 +41,33 @@ QString Format::bytes(std::uint64_t n) {
     return tr("%1 MiB").arg(static_cast<double>(n) / (1024.0 * 1024.0), 0, 'f', 2);
 }
 
+namespace {
+// glTF componentType codes with their names, and as compact units for narrow columns.
+struct ComponentName {
+    std::int32_t code;
+    const char* gltf;
+    const char* unit;
+};
+constexpr ComponentName kComponentNames[] = {
+    {5120, "BYTE", "i8"},          {5121, "UNSIGNED_BYTE", "u8"},
+    {5122, "SHORT", "i16"},        {5123, "UNSIGNED_SHORT", "u16"},
+    {5125, "UNSIGNED_INT", "u32"}, {5126, "FLOAT", "f32"}};
+
+const ComponentName* component_name(std::int32_t t) {
+    for (const ComponentName& c : kComponentNames)
+        if (c.code == t) return &c;
+    return nullptr;
+}
+} // namespace
+
 QString Format::componentType(std::int32_t t) {
-    switch (t) {
-    case 5120:
-        return QStringLiteral("BYTE");
-    case 5121:
-        return QStringLiteral("UNSIGNED_BYTE");
-    case 5122:
-        return QStringLiteral("SHORT");
-    case 5123:
-        return QStringLiteral("UNSIGNED_SHORT");
-    case 5125:
-        return QStringLiteral("UNSIGNED_INT");
-    case 5126:
-        return QStringLiteral("FLOAT");
-    default:
-        return tr("unknown (%1)").arg(t);
-    }
+    const ComponentName* c = component_name(t);
+    return c ? QString::fromLatin1(c->gltf) : tr("unknown (%1)").arg(t);
+}
+
+QString Format::componentTypeShort(std::int32_t t) {
+    const ComponentName* c = component_name(t);
+    return c ? QString::fromLatin1(c->unit) : componentType(t);
 }
 
 QString Format::provenance(Provenance p) {

@@ -31,6 +31,11 @@ public:
     static QString vec(glm::vec4 v) { return vec(&v.x, 4); }
     static QString bytes(std::uint64_t n);
     static QString componentType(std::int32_t gltf_component_type);
+    // The same as a compact unit for narrow columns: i8, u8, i16, u16, u32, f32.
+    static QString componentTypeShort(std::int32_t gltf_component_type);
+    // A number at four significant digits, for tables whose columns must fit a side
+    // dock (the vertex table's x, y, z); the exact value goes in the tooltip.
+    static QString compact(double v);
     static QString provenance(Provenance p);
     static QString attribute(VertexAttribute a);
     static QString alphaMode(AlphaMode m);

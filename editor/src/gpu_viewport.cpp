@@ -195,6 +195,7 @@ gpu::RenderSettings render_settings(const ViewportFrame& frame, float scale, boo
     settings.highlight_instance = frame.highlightInstance;
     settings.highlight_triangle = frame.highlightTriangle;
     settings.highlight_vertex = frame.highlightVertex;
+    settings.highlight_outline = frame.outlineInstances;
     settings.cull = frame.gpuCulling ? gpu::CullPath::Gpu : gpu::CullPath::Cpu;
     settings.cull_method = frame.cullMethod;
     settings.pose = frame.pose;
@@ -216,6 +217,7 @@ gpu::RenderSettings render_settings(const ViewportFrame& frame, float scale, boo
         settings.highlight_instance.reset();
         settings.highlight_triangle.reset();
         settings.highlight_vertex.reset();
+        settings.highlight_outline.clear();
     }
     if (frame.compare.mode == ViewportMode::RayTraced)
         settings.renderer = gpu::RendererKind::RayTraced;

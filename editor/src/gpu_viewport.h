@@ -40,6 +40,9 @@ struct ViewportFrame {
     float checkerDensity = 32.0f; // uv checker views: checks per UV unit
     // Selection highlight: a scene instance, and a triangle / vertex of its mesh.
     std::optional<std::uint32_t> highlightInstance, highlightTriangle, highlightVertex;
+    // More scene instances outlined: the selected node's own and, for a node without
+    // a mesh, its subtree's (RenderSettings::highlight_outline).
+    std::vector<std::uint32_t> outlineInstances;
     bool gpuCulling = false; // the renderer's GPU-driven culling path
     CullMethod cullMethod = CullMethod::PVertex;
     std::optional<CameraSpec> frozenCulling;    // cull from this camera instead

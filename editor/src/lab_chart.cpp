@@ -2,10 +2,13 @@
 
 #include <QChart>
 #include <QCoreApplication>
+#include <QCursor>
 #include <QGraphicsTextItem>
 #include <QLineSeries>
 #include <QLogValueAxis>
 #include <QScatterSeries>
+#include <QTextDocument>
+#include <QToolTip>
 #include <QValueAxis>
 
 #include <algorithm>
@@ -64,6 +67,43 @@ QAbstractAxis* make_axis(const AxisRange& r, const QString& title) {
 }
 
 } // namespace
+
+std::vector<std::optional<QRectF>> place_labels(const std::vector<QPointF>& anchors,
+                                                const std::vector<QSizeF>& sizes,
+                                                const QRectF& area,
+                                                const std::vector<QRectF>& obstacles) {
+    constexpr double kGap = 10.0; // from the point's centre: past the in-use ring
+    std::vector<std::optional<QRectF>> out(anchors.size());
+    std::vector<QRectF> placed = obstacles;
+    const auto free = [&](const QRectF& box) {
+        if (!area.contains(box)) return false;
+        for (const QRectF& other : placed)
+            if (other.intersects(box)) return false;
+        return true;
+    };
+    for (std::size_t i = 0; i < anchors.size() && i < sizes.size(); ++i) {
+        const QPointF p = anchors[i];
+        const QSizeF size = sizes[i];
+        if (size.height() <= 0.0) continue;
+        const QRectF right(QPointF(p.x() + kGap, p.y() - size.height() / 2), size);
+        const QRectF left(QPointF(p.x() - kGap - size.width(), p.y() - size.height() / 2), size);
+        // Rows of the label's height up and down from the point, nearest first.
+        const int rows = static_cast<int>(area.height() / size.height()) + 1;
+        for (int k = 0; k <= rows && !out[i]; ++k)
+            for (const double dy : {-k * size.height(), k * size.height()}) {
+                if (free(right.translated(0.0, dy))) {
+                    out[i] = right.translated(0.0, dy);
+                    break;
+                }
+                if (free(left.translated(0.0, dy))) {
+                    out[i] = left.translated(0.0, dy);
+                    break;
+                }
+            }
+        if (out[i]) placed.push_back(*out[i]);
+    }
+    return out;
+}
 
 void clear_lab_chart(QChart& chart, LabChartLabels& labels) {
     for (const QPointer<QGraphicsTextItem>& label : labels) delete label.data();
@@ -132,37 +172,45 @@ std::vector<QScatterSeries*> show_lab_report(QChart& chart, const lab::FamilyRep
         s->setName(name);
         s->append(point(i));
         s->setProperty("method", qulonglong(i));
+        // Its name on hover too: the label may have found no room (place_labels).
+        QObject::connect(s, &QScatterSeries::hovered, s, [name](const QPointF&, bool on) {
+            if (on)
+                QToolTip::showText(QCursor::pos(), name);
+            else
+                QToolTip::hideText();
+        });
         chart.addSeries(s);
         s->attachAxis(x_axis);
         s->attachAxis(y_axis);
         series.push_back(s);
         auto* label = new QGraphicsTextItem(name, &chart);
+        label->document()->setDocumentMargin(1.0); // the box is the text, for placing
         label->setZValue(10.0);
         label->setData(0, point(i));
         label->setData(1, QVariant::fromValue<QObject*>(s));
         labels.emplace_back(label);
     }
-    // Each label right of its point (left where it would leave the plot area), moved
-    // up past the labels placed before it (methods whose points coincide).
+    // Each label beside its point, never over another (place_labels); one that finds
+    // no room in the plot area is hidden, its name left in the point's tooltip.
     auto place = [&chart, labels] {
-        std::vector<QRectF> placed;
+        std::vector<QPointF> anchors;
+        std::vector<QSizeF> sizes;
+        std::vector<QRectF> markers;
+        std::vector<QGraphicsTextItem*> items;
         for (const QPointer<QGraphicsTextItem>& label : labels) {
             if (!label) continue;
             auto* s = qobject_cast<QScatterSeries*>(label->data(1).value<QObject*>());
-            const QPointF p = chart.mapToPosition(label->data(0).toPointF(), s);
-            QRectF box = label->boundingRect();
-            const bool left = p.x() + 6.0 + box.width() > chart.plotArea().right();
-            box.moveTo(left ? p.x() - 6.0 - box.width() : p.x() + 6.0, p.y() - box.height() / 2);
-            for (bool moved = true; moved;) {
-                moved = false;
-                for (const QRectF& other : placed)
-                    if (other.intersects(box)) {
-                        box.moveBottom(other.top());
-                        moved = true;
-                    }
-            }
-            label->setPos(box.topLeft());
-            placed.push_back(box);
+            anchors.push_back(chart.mapToPosition(label->data(0).toPointF(), s));
+            const double r = s ? s->markerSize() / 2.0 : 0.0;
+            markers.emplace_back(anchors.back() - QPointF(r, r), QSizeF(2.0 * r, 2.0 * r));
+            sizes.push_back(label->boundingRect().size());
+            items.push_back(label.data());
+        }
+        const std::vector<std::optional<QRectF>> boxes =
+            place_labels(anchors, sizes, chart.plotArea(), markers);
+        for (std::size_t i = 0; i < items.size(); ++i) {
+            items[i]->setVisible(boxes[i].has_value());
+            if (boxes[i]) items[i]->setPos(boxes[i]->topLeft());
         }
     };
     if (!labels.empty()) QObject::connect(&chart, &QChart::plotAreaChanged, labels.front(), place);

@@ -22,6 +22,7 @@
 #include "lab_chart.h"
 #include "lab_runner.h"
 #include "lab_table_model.h"
+#include "view_fitting.h"
 
 namespace sherpa::editor {
 namespace {
@@ -97,6 +98,8 @@ QWidget* LabDock::buildMethodsTab() {
     chart_view_->setMinimumHeight(300);
     tables_ = new QTabWidget(page);
     methods_view_ = make_table(methods_, tables_);
+    // Method, time and the chart's error (the first figure) before the parameters.
+    show_columns_first(methods_view_->horizontalHeader(), {0, 2, 3});
     tables_->addTab(methods_view_, QString());
     tables_->addTab(make_table(failures_, tables_), QString());
     auto* split = new QSplitter(Qt::Vertical, page);

@@ -49,6 +49,7 @@ public:
     const lab::BudgetReport* budget() const { return budget_.get(); }
     LabRunner& runner() const { return *runner_; }
     LabTableModel& methodsModel() const { return *methods_; }
+    QTableView* methodsView() const { return methods_view_; }
     LabTableModel& failuresModel() const { return *failures_; }
     QChart* chart() const { return chart_; }
 

@@ -43,8 +43,10 @@ namespace sherpa::editor {
 
 namespace {
 // Default dock column widths at 1600×1000 and the narrowest a dock may be.
-constexpr int kLeftDockWidth = 330;
-constexpr int kRightDockWidth = 300;
+// The right column's tables (vertex x/y/z, material field/value/offset) need the
+// width more than the scene tree, whose details have their own pane.
+constexpr int kLeftDockWidth = 300;
+constexpr int kRightDockWidth = 330;
 constexpr int kDockMinWidth = 160;
 
 bool is_scene_file(const QString& path) {

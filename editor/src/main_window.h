@@ -14,6 +14,7 @@
 
 class QActionGroup;
 class QLabel;
+class QMessageBox;
 class QMenu;
 class QProgressBar;
 class QPushButton;
@@ -33,6 +34,7 @@ struct FrameReport;
 class LogDock;
 class MaterialDock;
 class MeshDock;
+class SceneFileWatch;
 class SceneTreeDock;
 class TextureDock;
 class TimelineDock;
@@ -67,6 +69,12 @@ public:
     // Starts loading; the current scene stays until the new one is ready.
     void openScene(const QString& spec);
     void reloadScene();
+    // When the open file, its buffers or images change on disk: reload at once
+    // (true) or offer to (false, the default); remembered (Settings menu).
+    void setReloadAutomatically(bool automatic);
+    bool reloadAutomatically() const { return settings_.reloadAutomatically(); }
+    // The files watched for that (main_window_reload.cpp).
+    QStringList watchedFiles() const;
     void closeScene();
     void cancelLoad();
     // Texture dock actions: delete every KTX2 file of the cache directory; delete one
@@ -94,6 +102,10 @@ public:
     // The scene instance the viewport highlights (selected primitive placed by the
     // selected node), or -1.
     int selectedInstance() const;
+    // The scene instances outlined with it: the selected node's, or for a node without
+    // a mesh, every instance of its subtree (its children's meshes) — a group, a
+    // skeleton root or an empty transform shows what it moves.
+    std::vector<std::uint32_t> outlinedInstances() const;
     // The settings of the last frame handed to the renderer.
     const ViewportFrame& lastFrame() const { return last_frame_; }
     // The serial of the last frame request (FrameReport::request of its frame).
@@ -134,6 +146,7 @@ private:
     void createActions();
     void createMenus();
     void retranslate();
+    void retranslateOverlayButton(); // "Overlays (2)" and which in its tooltip
     void rebuildRecentMenu();
     void showAbout();
     void openFileDialog();
@@ -157,6 +170,10 @@ private:
     void updateStreams();
     void connectActions();
     void connectLab(); // main_window_lab.cpp
+    // main_window_reload.cpp
+    void createReloadWatch(QMenu* settings_menu);
+    void retranslateReload();
+    void onSceneFilesChanged(const QStringList& files);
     // main_window_compare.cpp
     void connectCompare();
     void onCompareChanged();
@@ -220,6 +237,11 @@ private:
     int pass_frames_left_ = 0; // extra frames until the pass table has the first frame
     ViewportFrame last_frame_;
     QString last_progress_;
+    SceneFileWatch* file_watch_ = nullptr;
+    QPointer<QMessageBox> reload_offer_;   // the open offer to reload, if any
+    QActionGroup* reload_group_ = nullptr; // Settings › When the File Changes
+    QMenu* reload_menu_ = nullptr;
+    bool keep_camera_ = false; // the next load is this file again: keep the view
 
     struct Actions; // every QAction, built in main_window_menus.cpp
     std::unique_ptr<Actions> a_;

@@ -16,6 +16,7 @@ struct MainWindow::Actions {
         *cull_method, *cull_path, *settings, *language, *quality, *help, *checker_density;
     QToolBar* toolbar;
     QToolButton* view_button;
+    QToolButton* overlay_button = nullptr; // the Overlays menu on the toolbar
     QAction *open, *reload, *close, *quit, *frame_all, *frame_selection, *fly, *reset_layout;
     QAction *freeze, *box_colouring, *missing_checker, *cpu_path, *gpu_path, *cache_dir, *about,
         *about_qt, *clear_recent;

@@ -103,8 +103,11 @@ void MainWindow::onLoaded(SharedSession session) {
                      .arg(s.timings.engine_ms, 0, 'f', 1)
                      .arg(s.timings.thumbnails_ms, 0, 'f', 1)
                      .arg(s.timings.textures_ms, 0, 'f', 1));
-    viewport_->camera().frameAuto(s.scene->bounds);
-    viewport_->setAutoFrame(true);
+    // The same file reloaded after a change keeps the view; any other is framed.
+    if (!std::exchange(keep_camera_, false)) {
+        viewport_->camera().frameAuto(s.scene->bounds);
+        viewport_->setAutoFrame(true);
+    }
     onCameraChanged();
     updateStatus();
     // Side B "this file, tangents by ..." follows the file (another file stays).
@@ -113,6 +116,7 @@ void MainWindow::onLoaded(SharedSession session) {
 }
 
 void MainWindow::onLoadFailed(const QString& spec, const QString& error) {
+    keep_camera_ = false;
     log_->append(LogDock::Level::Error, error);
     // Say what is on screen now: the previous scene, or nothing when there was none.
     const bool kept = context_.scene() != nullptr;

@@ -98,6 +98,7 @@ void MainWindow::createActions() {
         connect(act, &QAction::toggled, this, [this, bit](bool on) {
             overlays_ = on ? overlays_ | bit : overlays_ & ~bit;
             updateStreams(); // an overlay may read streams no material does
+            retranslateOverlayButton();
         });
         a.overlay_actions.push_back(act);
     }
@@ -249,6 +250,7 @@ void MainWindow::createMenus() {
     a.quality = a.settings->addMenu(QString());
     for (QAction* act : a.quality_actions) a.quality->addAction(act);
     a.settings->addAction(a.cache_dir);
+    createReloadWatch(a.settings);
 
     a.help = bar->addMenu(QString());
     a.help->addAction(a.about);
@@ -264,11 +266,28 @@ void MainWindow::createMenus() {
     a.view_button->setPopupMode(QToolButton::InstantPopup);
     a.toolbar->addWidget(a.view_button);
     compare_->addToToolBar(a.toolbar);
-    for (QAction* act : a.overlay_actions) a.toolbar->addAction(act);
+    // One button for the overlays (their menu): six text buttons pushed the toolbar's
+    // last ones into its overflow menu, in German at any width.
+    a.overlay_button = new QToolButton(a.toolbar);
+    a.overlay_button->setObjectName(QStringLiteral("overlaysButton"));
+    a.overlay_button->setMenu(a.overlays);
+    a.overlay_button->setPopupMode(QToolButton::InstantPopup);
+    a.toolbar->addWidget(a.overlay_button);
     a.toolbar->addSeparator();
     a.toolbar->addAction(a.frame_all);
     a.toolbar->addAction(a.fly);
     a.toolbar->addAction(a.freeze);
+}
+
+void MainWindow::retranslateOverlayButton() {
+    if (!a_ || !a_->overlay_button) return;
+    QStringList on;
+    for (QAction* act : a_->overlay_actions)
+        if (act->isChecked()) on << act->text().remove(QLatin1Char('&'));
+    a_->overlay_button->setText(on.isEmpty() ? tr("Overlays") : tr("Overlays (%1)").arg(on.size()));
+    a_->overlay_button->setToolTip(on.isEmpty()
+                                       ? tr("Overlays: none shown")
+                                       : tr("Overlays: %1").arg(on.join(QStringLiteral(", "))));
 }
 
 void MainWindow::retranslate() {
@@ -299,6 +318,7 @@ void MainWindow::retranslate() {
     const std::vector<ViewEntry> overlays = ViewCatalog::overlays();
     for (std::size_t i = 0; i < overlays.size(); ++i)
         a.overlay_actions[i]->setText(overlays[i].label);
+    retranslateOverlayButton();
     a.frame_all->setText(tr("Frame &All (F)"));
     a.frame_selection->setText(tr("Frame &Selection (Shift+F)"));
     a.fly->setText(tr("&Fly Mode (WASD, Q/E)"));
@@ -320,6 +340,7 @@ void MainWindow::retranslate() {
     a.cpu_path->setText(tr("CPU"));
     a.gpu_path->setText(tr("GPU (compute shader, indirect draws)"));
     a.settings->setTitle(tr("&Settings"));
+    retranslateReload();
     a.language->setTitle(tr("&Language"));
     for (QAction* act : a.language_actions)
         act->setChecked(act->data().toString() == translations_.current());

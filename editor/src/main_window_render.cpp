@@ -174,6 +174,7 @@ ViewportFrame MainWindow::currentFrame() const {
     if (const Scene* scene = context_.scene();
         scene && sel.node >= 0 && is_joint(*scene, static_cast<std::uint32_t>(sel.node)))
         frame.selectedJoint = static_cast<std::uint32_t>(sel.node);
+    frame.outlineInstances = outlinedInstances();
     if (const int instance = selectedInstance(); instance >= 0) {
         frame.highlightInstance = static_cast<std::uint32_t>(instance);
         if (sel.triangle >= 0) frame.highlightTriangle = static_cast<std::uint32_t>(sel.triangle);
@@ -214,8 +215,9 @@ void MainWindow::onFrameDone(const FrameReport& report) {
     frame_label_->setText(text);
     frame_label_->setToolTip(
         tr("Mean of the last %1 frames, not counting the renderer's first (pipeline "
-           "creation). While the camera moves on a slow device, frames are drawn at a lower "
-           "resolution and without shadows to keep %2 fps; at rest the full frame follows.")
+           "creation). While the camera moves or an animation plays on a slow device, frames "
+           "are drawn at a lower resolution and without shadows to keep %2 fps; at rest or "
+           "paused the full frame follows.")
             .arg(frame_times_.count())
             .arg(kGoalFps));
     viewport_->frameDrawn(report.ms);

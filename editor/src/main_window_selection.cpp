@@ -51,6 +51,30 @@ int MainWindow::selectedInstance() const {
     return -1;
 }
 
+std::vector<std::uint32_t> MainWindow::outlinedInstances() const {
+    const Scene* scene = context_.scene();
+    const int node = context_.selection().node;
+    std::vector<std::uint32_t> out;
+    if (!scene || node < 0 || static_cast<std::size_t>(node) >= scene->nodes.size()) return out;
+    const bool own_mesh = scene->nodes[static_cast<std::size_t>(node)].mesh >= 0;
+    // Nodes of the subtree (the node alone when it has a mesh of its own).
+    std::vector<bool> in(scene->nodes.size(), false);
+    std::vector<std::uint32_t> stack{static_cast<std::uint32_t>(node)};
+    while (!stack.empty()) {
+        const std::uint32_t n = stack.back();
+        stack.pop_back();
+        if (in[n]) continue; // a malformed file's cycle is walked once
+        in[n] = true;
+        if (own_mesh) continue;
+        for (const std::uint32_t c : scene->nodes[n].children)
+            if (c < in.size()) stack.push_back(c);
+    }
+    for (std::size_t i = 0; i < scene->instances.size(); ++i)
+        if (scene->instances[i].node_id < in.size() && in[scene->instances[i].node_id])
+            out.push_back(static_cast<std::uint32_t>(i));
+    return out;
+}
+
 bool MainWindow::selectNodeNamed(const QString& name_or_index) {
     const Scene* scene = context_.scene();
     if (!scene) return false;

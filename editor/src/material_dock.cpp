@@ -21,7 +21,8 @@ MaterialDock::MaterialDock(const EditorContext& context, QWidget* parent)
     header_->setWordWrap(true);
     view_ = new QTableView(body);
     view_->setModel(model_);
-    view_->verticalHeader()->hide();
+    // The vertical header shows each field's byte offset (MaterialFieldsModel).
+    view_->verticalHeader()->setDefaultAlignment(Qt::AlignRight | Qt::AlignVCenter);
     view_->setWordWrap(false);
     view_->setIconSize(QSize(24, 24));
     view_->horizontalHeader()->setStretchLastSection(true);

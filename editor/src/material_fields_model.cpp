@@ -235,6 +235,11 @@ QVariant MaterialFieldsModel::data(const QModelIndex& index, int role) const {
 }
 
 QVariant MaterialFieldsModel::headerData(int section, Qt::Orientation o, int role) const {
+    // Rows are headed by their byte offset in the record, as a hex dump's lines are:
+    // the Offset column would not fit a side dock beside the field and its value.
+    if (o == Qt::Vertical && role == Qt::DisplayRole && section >= 0 && section < rowCount())
+        return data(index(section, OffsetColumn), Qt::DisplayRole);
+    if (o == Qt::Vertical && role == Qt::ToolTipRole) return tr("Byte offset in the record");
     if (o != Qt::Horizontal || role != Qt::DisplayRole) return {};
     switch (section) {
     case OffsetColumn:

@@ -17,6 +17,7 @@
 #include "format_values.h"
 #include "triangle_table_model.h"
 #include "vertex_table_model.h"
+#include "view_fitting.h"
 
 namespace sherpa::editor {
 
@@ -52,6 +53,10 @@ MeshDock::MeshDock(const EditorContext& context, QWidget* parent)
     attribute_view_->setModel(attributes_);
     attribute_view_->verticalHeader()->hide();
     attribute_view_->setWordWrap(false);
+    // Which accessor and component type hold each attribute before where they came from.
+    show_columns_first(attribute_view_->horizontalHeader(),
+                       {AttributeModel::AttributeColumn, AttributeModel::AccessorColumn,
+                        AttributeModel::ComponentTypeColumn, AttributeModel::CountColumn});
 
     tabs_ = new QTabWidget(body);
     auto* vertex_page = new QWidget(tabs_);

@@ -155,8 +155,11 @@ void RenderThread::run() {
         if (pending_) {
             request = *pending_;
             pending_.reset();
-            // Moving: the camera changed since the last frame drawn.
-            still = !last_ || same_camera(last_->frame.camera, request.frame.camera);
+            // Moving: the camera changed since the last frame drawn, or the pose did
+            // (a playing animation is motion too: the timeline makes a new pose per
+            // step, and the same one while paused).
+            still = !last_ || (same_camera(last_->frame.camera, request.frame.camera) &&
+                               last_->frame.pose == request.frame.pose);
         } else if (rested && last_) {
             request = *last_; // the camera rests: the same frame at full size
         } else {

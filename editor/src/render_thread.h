@@ -52,9 +52,10 @@ public:
     ~RenderThread() override; // finishes the frame in flight; frees the engine there
 
     // The frame to draw next on `surface`; replaces a request not yet started. A
-    // frame whose camera differs from the last one drawn is "moving": drawn at the
-    // interactive resolution scale; once no new request comes for kRestMs, the last
-    // frame is drawn again at full size (the still image is always full size).
+    // frame whose camera or pose differs from the last one drawn is "moving" (orbiting,
+    // a playing animation): drawn at the interactive resolution scale; once no new
+    // request comes for kRestMs (the camera rests, playback pauses), the last frame is
+    // drawn again at full size (the still image is always full size).
     std::uint64_t requestFrame(const ViewportFrame& frame, std::uint64_t surface);
     // Runs `task` on the render thread before the next frame, in order of posting
     // (dropped when the device could not be made).

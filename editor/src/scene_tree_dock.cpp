@@ -1,6 +1,7 @@
 #include "scene_tree_dock.h"
 
 #include <QHeaderView>
+#include <QLabel>
 #include <QLineEdit>
 #include <QSortFilterProxyModel>
 #include <QTreeView>
@@ -8,6 +9,7 @@
 
 #include "editor_context.h"
 #include "scene_tree_model.h"
+#include "view_fitting.h"
 
 namespace sherpa::editor {
 
@@ -31,8 +33,16 @@ SceneTreeDock::SceneTreeDock(const EditorContext& context, QWidget* parent)
     view_->setUniformRowHeights(true);
     view_->header()->setSectionResizeMode(SceneTreeModel::NameColumn,
                                           QHeaderView::ResizeToContents);
+    // Details before Type: what a node holds matters more than the word "node".
+    show_columns_first(view_->header(), {SceneTreeModel::NameColumn, SceneTreeModel::DetailColumn});
+    details_ = new QLabel(body);
+    details_->setObjectName(QStringLiteral("sceneTreeDetails"));
+    details_->setWordWrap(true);
+    details_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    details_->setTextFormat(Qt::PlainText);
     layout->addWidget(filter_);
-    layout->addWidget(view_);
+    layout->addWidget(view_, 1);
+    layout->addWidget(details_);
     setWidget(body);
 
     connect(filter_, &QLineEdit::textChanged, this, [this](const QString& text) {
@@ -40,7 +50,10 @@ SceneTreeDock::SceneTreeDock(const EditorContext& context, QWidget* parent)
         if (!text.isEmpty()) view_->expandAll();
     });
     connect(view_->selectionModel(), &QItemSelectionModel::currentChanged, this,
-            [this](const QModelIndex& current) { onCurrentChanged(current); });
+            [this](const QModelIndex& current) {
+                showDetails(current);
+                onCurrentChanged(current);
+            });
     connect(view_, &QTreeView::doubleClicked, this, [this](const QModelIndex& index) {
         if (index.data(SceneTreeModel::KindRole).toInt() ==
             static_cast<int>(SceneTreeModel::Kind::Camera))
@@ -60,6 +73,20 @@ void SceneTreeDock::retranslate() {
 
 void SceneTreeDock::setFilter(const QString& text) {
     filter_->setText(text);
+}
+
+void SceneTreeDock::showDetails(const QModelIndex& current) {
+    if (!current.isValid()) {
+        details_->clear();
+        return;
+    }
+    const QString name = current.siblingAtColumn(SceneTreeModel::NameColumn).data().toString();
+    const QString type = current.siblingAtColumn(SceneTreeModel::TypeColumn).data().toString();
+    const QModelIndex detail = current.siblingAtColumn(SceneTreeModel::DetailColumn);
+    QString text = detail.data(Qt::ToolTipRole).toString();
+    if (text.isEmpty()) text = detail.data().toString();
+    details_->setText(tr("%1 (%2)").arg(name, type) +
+                      (text.isEmpty() ? QString() : QLatin1Char('\n') + text));
 }
 
 void SceneTreeDock::onCurrentChanged(const QModelIndex& current) {

@@ -3,6 +3,7 @@
 // Context in (scene, selection, visibility); actions out as signals.
 #include <QDockWidget>
 
+class QLabel;
 class QLineEdit;
 class QSortFilterProxyModel;
 class QTreeView;
@@ -20,6 +21,9 @@ public:
     SceneTreeModel* model() const { return model_; }
     QTreeView* view() const { return view_; }
     void setFilter(const QString& text);
+    // The pane under the tree: the current item's type and whole details, wrapped
+    // (the Details column of a side dock shows their start only).
+    QLabel* detailsPane() const { return details_; }
 
 Q_SIGNALS:
     void selectNodeRequested(int node);
@@ -31,12 +35,14 @@ Q_SIGNALS:
 private:
     void onCurrentChanged(const QModelIndex& current);
     void syncFromContext();
+    void showDetails(const QModelIndex& current);
 
     const EditorContext& context_;
     SceneTreeModel* model_;
     QSortFilterProxyModel* proxy_;
     QTreeView* view_;
     QLineEdit* filter_;
+    QLabel* details_;
     bool syncing_ = false;
 };
 

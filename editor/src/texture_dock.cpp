@@ -11,6 +11,7 @@
 #include "format_values.h"
 #include "scene_session.h"
 #include "texture_table_model.h"
+#include "view_fitting.h"
 
 #include <sherpa/texture/texture_pipeline.h>
 
@@ -31,6 +32,12 @@ TextureDock::TextureDock(const EditorContext& context, QWidget* parent)
     view_->setSelectionBehavior(QAbstractItemView::SelectRows);
     view_->setSelectionMode(QAbstractItemView::SingleSelection);
     view_->setWordWrap(false);
+    // What a user looks for first: whether it is there (State: "missing"), which
+    // texture, what it is for and how big; the hashes and timings scroll in.
+    show_columns_first(view_->horizontalHeader(),
+                       {TextureTableModel::CacheStateColumn, TextureTableModel::NameColumn,
+                        TextureTableModel::RoleColumn, TextureTableModel::SizeColumn,
+                        TextureTableModel::FormatColumn});
     // Three rows: in one, the buttons need more than a side dock's width.
     auto* actions = new QGridLayout;
     totals_ = new QLabel(body);

@@ -204,8 +204,8 @@ QVariant TextureTableModel::headerData(int section, Qt::Orientation o, int role)
         return tr("Disk bytes");
     case GpuBytesColumn:
         return tr("GPU bytes");
-    case CacheStateColumn:
-        return tr("Cache state");
+    case CacheStateColumn: // short: the dock's first column, beside the texture
+        return tr("State");
     case DecodeMsColumn:
         return tr("Decode ms");
     case EncodeMsColumn:

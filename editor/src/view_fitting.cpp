@@ -53,6 +53,22 @@ void fit_columns_to_content(QAbstractItemView* view) {
     fit_now(view);
 }
 
+void show_columns_first(QHeaderView* header, std::vector<int> first) {
+    const auto apply = [header, first] {
+        int visual = 0;
+        for (const int logical : first) {
+            if (logical < 0 || logical >= header->count()) continue;
+            header->moveSection(header->visualIndex(logical), visual++);
+        }
+    };
+    apply();
+    if (QAbstractItemModel* model = header->model()) {
+        QObject::connect(model, &QAbstractItemModel::modelReset, header, apply);
+        QObject::connect(model, &QAbstractItemModel::columnsInserted, header, apply);
+        QObject::connect(model, &QAbstractItemModel::headerDataChanged, header, apply);
+    }
+}
+
 void copy_exact_on_ctrl_c(QAbstractItemView* view) {
     // An event filter, not a QAction shortcut: QAbstractItemView takes Ctrl+C itself
     // (a shortcut override) and copies the rounded display text.

@@ -4,6 +4,8 @@
 // new scene stop a run, exports write the engine's CSV/SVG, and a chart point applies
 // a culling method to the viewport.
 #include <QChart>
+#include <QChartView>
+#include <QGraphicsTextItem>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -18,6 +20,7 @@
 #include <sherpa/lab/report_export.h>
 
 #include "culling_monitor.h"
+#include "lab_chart.h"
 #include "lab_dock.h"
 #include "lab_runner.h"
 #include "lab_table_model.h"
@@ -73,6 +76,7 @@ private Q_SLOTS:
     void exportsAreTheEngineWriters();
     void clickingAPointAppliesACullingMethod();
     void applyingAShadowSettingReachesTheViewport();
+    void chartLabelsNeverOverlap();
 
 private:
     LabDock& dock() { return *window_->labDock(); }
@@ -315,6 +319,79 @@ void LabTests::applyingAShadowSettingReachesTheViewport() {
     QCOMPARE(window_->lastFrame().shadowCascades, 3u);
     const QString messages = test::fresh_validation_messages(*window_, seen);
     QVERIFY2(messages.isEmpty(), qPrintable(messages));
+}
+
+// The culling family's chart in a dock's width: the exact methods all sit at y = 0
+// with nearly the same time. No label covers another, a point's marker or an axis
+// label, and none leaves the plot area; a label that finds no room is hidden, never
+// drawn over another.
+void LabTests::chartLabelsNeverOverlap() {
+    lab::FamilyReport report;
+    report.family = "culling";
+    report.time_unit = "ns/object";
+    report.chart_error = "false_positives";
+    const std::pair<const char*, double> methods[] = {
+        {"exact", 328.0}, {"pvertex", 41.0}, {"gpu test=pvertex", 40.0}, {"sphere", 12.0},
+        {"aabb", 30.0},   {"obb", 55.0},     {"gpu test=sphere", 11.5}};
+    for (const auto& [name, time] : methods) {
+        lab::MethodResult m;
+        m.method.name = name;
+        m.ran = true;
+        m.time = time;
+        const bool exact = std::string(name) == "exact" || std::string(name).ends_with("pvertex");
+        m.errors.push_back({"false_positives", exact ? 0.0 : 17.0, false});
+        report.methods.push_back(m);
+    }
+    QChart* chart = new QChart;
+    chart->setMargins(QMargins(2, 2, 2, 2));
+    QChartView view(chart);
+    view.resize(270, 320); // a side dock at 1600×1000
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    LabChartLabels labels;
+    show_lab_report(*chart, report, QStringLiteral("pvertex"), labels);
+    QTest::qWait(100); // the chart's layout, then the labels' placing
+    QCoreApplication::processEvents();
+    QList<QRectF> label_boxes, other_texts;
+    for (const QPointer<QGraphicsTextItem>& label : labels)
+        if (label && label->isVisible()) label_boxes << label->sceneBoundingRect();
+    for (QGraphicsItem* item : view.scene()->items())
+        if (auto* text = dynamic_cast<QGraphicsTextItem*>(item);
+            text && text->isVisible() && !text->toPlainText().isEmpty() &&
+            std::none_of(labels.begin(), labels.end(),
+                         [&](const QPointer<QGraphicsTextItem>& l) { return l.data() == text; }))
+            other_texts << text->sceneBoundingRect();
+    QVERIFY2(label_boxes.size() >= 4, qPrintable(QString::number(label_boxes.size())));
+    QStringList overlaps;
+    for (qsizetype i = 0; i < label_boxes.size(); ++i) {
+        const QRectF a = label_boxes[i];
+        if (!chart->mapRectToScene(chart->plotArea()).contains(a))
+            overlaps << QStringLiteral("label %1 leaves the plot area").arg(i);
+        for (qsizetype j = i + 1; j < label_boxes.size(); ++j)
+            if (a.intersects(label_boxes[j]))
+                overlaps << QStringLiteral("labels %1 and %2").arg(i).arg(j);
+        for (const QRectF& t : other_texts)
+            if (a.intersects(t)) overlaps << QStringLiteral("label %1 and an axis text").arg(i);
+        for (QAbstractSeries* s : chart->series())
+            if (auto* scatter = qobject_cast<QScatterSeries*>(s)) {
+                const QPointF p = chart->mapToScene(chart->mapToPosition(scatter->at(0), scatter));
+                const double r = scatter->markerSize() / 2.0;
+                if (a.intersects(QRectF(p - QPointF(r, r), QSizeF(2 * r, 2 * r))))
+                    overlaps << QStringLiteral("label %1 and the marker of %2")
+                                    .arg(i)
+                                    .arg(scatter->name());
+            }
+    }
+    QVERIFY2(overlaps.isEmpty(), qPrintable(overlaps.join(QLatin1Char('\n'))));
+    // The pure placing: ten labels on one point in a small area, none overlapping.
+    const std::vector<QPointF> same(10, QPointF(100, 95));
+    const std::vector<QSizeF> sizes(10, QSizeF(60, 14));
+    const auto boxes = place_labels(same, sizes, QRectF(0, 0, 200, 100));
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+        for (std::size_t j = i + 1; j < boxes.size(); ++j)
+            QVERIFY(!boxes[i] || !boxes[j] || !boxes[i]->intersects(*boxes[j]));
+    QVERIFY(std::count_if(boxes.begin(), boxes.end(),
+                          [](const auto& b) { return b.has_value(); }) >= 8);
 }
 
 QTEST_MAIN(LabTests)

@@ -8,6 +8,8 @@
 #include <QGraphicsTextItem>
 #include <QHeaderView>
 #include <QLabel>
+#include <QMainWindow>
+#include <QMenu>
 #include <QStyle>
 #include <QTabBar>
 #include <QTableView>
@@ -17,6 +19,7 @@
 #include <QVulkanInstance>
 #include <QtTest>
 
+#include "attribute_model.h"
 #include "command_line.h"
 #include "compare_controls.h"
 #include "culling_dock.h"
@@ -31,8 +34,11 @@
 #include "material_fields_model.h"
 #include "mesh_dock.h"
 #include "scene_tree_dock.h"
+#include "scene_tree_model.h"
 #include "test_assets.h"
 #include "texture_dock.h"
+#include "texture_table_model.h"
+#include "vertex_table_model.h"
 #include "viewport_window.h"
 #include "window_test_support.h"
 
@@ -103,30 +109,83 @@ QStringList cut_texts(QWidget& root) {
     return cut;
 }
 
-// Cells of `columns` in the dock's table that reach past its visible width (so
-// hidden behind the horizontal scroll bar) or are not shown at all, as
-// "dock column C: text".
-QStringList cut_off_columns(QDockWidget& dock, std::initializer_list<int> columns) {
+// Cells of `columns` in `view` (a table of dock `where`) that reach past its
+// visible width (so hidden behind the horizontal scroll bar) or are not shown at all,
+// as "where column C: text".
+QStringList cut_off_columns(QTableView* view, const QString& where,
+                            std::initializer_list<int> columns) {
     QStringList cut;
-    auto* view = dock.findChild<QTableView*>();
-    if (!view || !view->model()) return {QStringLiteral("%1: no table").arg(dock.objectName())};
-    if (view->model()->rowCount() == 0)
-        return {QStringLiteral("%1: empty table").arg(dock.objectName())};
+    if (!view || !view->model()) return {QStringLiteral("%1: no table").arg(where)};
+    if (view->model()->rowCount() == 0) return {QStringLiteral("%1: empty table").arg(where)};
     const QRect area = view->viewport()->rect();
     for (int row = 0; row < view->model()->rowCount(); ++row)
         for (int c : columns) {
             const QModelIndex cell = view->model()->index(row, c);
             const QRect r = view->visualRect(cell);
-            if (r.isEmpty() || r.top() > area.bottom()) continue; // below: rows scroll
-            if (r.left() < area.left() || r.right() > area.right())
+            if (r.top() > area.bottom()) continue; // below: rows scroll
+            if (r.isEmpty() || r.left() < area.left() || r.right() > area.right())
                 cut << QStringLiteral("%1 column %2: %3 (%4..%5 outside 0..%6)")
-                           .arg(dock.objectName())
+                           .arg(where)
                            .arg(c)
                            .arg(cell.data().toString())
                            .arg(r.left())
                            .arg(r.right())
                            .arg(area.right());
         }
+    return cut;
+}
+
+QStringList cut_off_columns(QDockWidget& dock, std::initializer_list<int> columns) {
+    return cut_off_columns(dock.findChild<QTableView*>(), dock.objectName(), columns);
+}
+
+// The columns a user needs of every dock, shown whole without scrolling sideways
+// (each dock raised in turn): the texture's State ("missing"), the attribute's
+// Accessor and Component, the vertex's position (x, y, z), the Lab's time and chart
+// error, the material field's value and SSBO offset; the scene tree's selected item
+// with its whole details in the pane under the tree.
+void wait_settled(MainWindow& w);
+
+QStringList cut_needed_columns(MainWindow& w) {
+    QStringList cut;
+    w.textureDock()->raise();
+    wait_settled(w);
+    cut << cut_off_columns(w.textureDock()->view(), QStringLiteral("textureDock"),
+                           {TextureTableModel::NameColumn, TextureTableModel::CacheStateColumn});
+    w.meshDock()->raise();
+    wait_settled(w);
+    cut << cut_off_columns(w.meshDock()->findChild<QTableView*>(), QStringLiteral("meshDock"),
+                           {AttributeModel::AttributeColumn, AttributeModel::AccessorColumn,
+                            AttributeModel::ComponentTypeColumn});
+    cut << cut_off_columns(w.meshDock()->vertexView(), QStringLiteral("meshDock vertices"),
+                           {VertexTableModel::IndexColumn, VertexTableModel::PosX,
+                            VertexTableModel::PosY, VertexTableModel::PosZ});
+    w.materialDock()->raise();
+    wait_settled(w);
+    cut << cut_off_columns(*w.materialDock(),
+                           {MaterialFieldsModel::FieldColumn, MaterialFieldsModel::ValueColumn});
+    // Its byte offsets head the rows.
+    if (auto* table = w.materialDock()->findChild<QTableView*>();
+        !table->verticalHeader()->isVisible() || table->verticalHeader()->width() <= 0 ||
+        table->model()->headerData(1, Qt::Vertical).toString() !=
+            table->model()->index(1, MaterialFieldsModel::OffsetColumn).data().toString())
+        cut << QStringLiteral("materialDock: no offsets heading the rows");
+    w.labDock()->raise();
+    wait_settled(w);
+    cut << cut_off_columns(w.labDock()->methodsView(), QStringLiteral("labDock"),
+                           {0, 2, 3}); // method, time, chart error
+    w.sceneTreeDock()->raise();
+    wait_settled(w);
+    QLabel* pane = w.sceneTreeDock()->detailsPane();
+    const QModelIndex current = w.sceneTreeDock()->view()->currentIndex();
+    const QString details =
+        current.siblingAtColumn(SceneTreeModel::DetailColumn).data(Qt::ToolTipRole).toString();
+    if (!pane->isVisible() || details.isEmpty() || !pane->text().contains(details) ||
+        pane->heightForWidth(pane->width()) > pane->height())
+        cut << QStringLiteral("sceneTreeDock details: '%1' in '%2' (%3 > %4)")
+                   .arg(details, pane->text())
+                   .arg(pane->heightForWidth(pane->width()))
+                   .arg(pane->height());
     return cut;
 }
 
@@ -143,21 +202,49 @@ QStringList cut_chart_labels(QWidget& root) {
     return cut;
 }
 
+// The toolbar overflowing into its extension menu (a button hidden there, as
+// "Freeze Culling Camera" was), and two buttons that read alike ("Ansicht:" twice).
+QStringList toolbar_problems(MainWindow& w) {
+    QStringList problems;
+    for (auto* bar : w.findChildren<QToolBar*>()) {
+        if (!bar->isVisible()) continue;
+        if (auto* ext = bar->findChild<QToolButton*>(QStringLiteral("qt_toolbar_ext_button"));
+            ext && ext->isVisible())
+            problems
+                << QStringLiteral("toolbar overflows into its menu (%1 px wide)").arg(bar->width());
+        QStringList prefixes;
+        for (auto* button : bar->findChildren<QToolButton*>()) {
+            if (!button->isVisible() || !button->text().contains(QLatin1Char(':'))) continue;
+            const QString prefix = button->text().section(QLatin1Char(':'), 0, 0);
+            if (prefixes.contains(prefix))
+                problems << QStringLiteral("two toolbar buttons read '%1:'").arg(prefix);
+            prefixes << prefix;
+        }
+    }
+    return problems;
+}
+
 void wait_settled(MainWindow& w) {
     bool settled = false;
     when_layout_settles(w, [&settled] { settled = true; });
     QTRY_VERIFY_WITH_TIMEOUT(settled, 20000);
 }
 
-// Each tab of each dock group in front in turn: what is cut off anywhere.
-QStringList cut_in_every_dock(MainWindow& w) {
+// Each tab of each dock group in front in turn: what is cut off anywhere. With
+// SHERPA_SHOTS_DIR set, each is also saved there as DIR/TAG-LANGUAGE-DOCK.png (the
+// screenshots a reviewer looks at; not part of the check).
+QStringList cut_in_every_dock(MainWindow& w, const QString& tag = QStringLiteral("default")) {
     QStringList cut;
+    const QString shots = qEnvironmentVariable("SHERPA_SHOTS_DIR");
     for (QDockWidget* dock : w.findChildren<QDockWidget*>()) {
         if (dock->isHidden()) continue; // the timeline of a scene that does not move
         dock->raise();
         wait_settled(w);
         QTest::qWait(200); // the raised tab's own layout (the viewport does not change)
         cut << cut_texts(w) << cut_chart_labels(w);
+        if (!shots.isEmpty())
+            w.screenshot().save(QStringLiteral("%1/%2-%3-%4.png")
+                                    .arg(shots, tag, w.language(), dock->objectName()));
     }
     cut.removeDuplicates();
     return cut;
@@ -176,6 +263,7 @@ private Q_SLOTS:
     void nothingIsCutOffInAnyLanguage();
     void motionSceneIsNotCutOff();
     void viewportModesAreNotCutOff();
+    void sideBSaysWhenItShowsAndStartsAComparison();
 
 private:
     // A window of 1600×1000 with builtin:default loaded and the sphere selected,
@@ -345,11 +433,9 @@ void LayoutTests::nothingIsCutOffInAnyLanguage() {
         QVERIFY(lab_done.wait(120000));
         // Each tab of each dock group in front in turn.
         QStringList cut = cut_in_every_dock(*w);
-        // The material dock's field names and values show whole without scrolling.
-        w->materialDock()->raise();
-        wait_settled(*w);
-        cut << cut_off_columns(*w->materialDock(), {MaterialFieldsModel::FieldColumn,
-                                                    MaterialFieldsModel::ValueColumn});
+        // The columns a user needs show whole without scrolling.
+        cut << cut_needed_columns(*w);
+        cut << toolbar_problems(*w);
         cut.removeDuplicates();
         QVERIFY2(cut.isEmpty(), qPrintable(language + ": " + cut.join(QStringLiteral("\n"))));
     }
@@ -365,7 +451,7 @@ void LayoutTests::motionSceneIsNotCutOff() {
         QVERIFY(test::load(*w, test::asset(QStringLiteral("RiggedSimple"))));
         QVERIFY(w->selectNodeNamed(QStringLiteral("1")));
         w->sceneTreeDock()->view()->expandAll();
-        const QStringList cut = cut_in_every_dock(*w);
+        const QStringList cut = cut_in_every_dock(*w, QStringLiteral("rigged"));
         QVERIFY2(cut.isEmpty(), qPrintable(language + ": " + cut.join(QStringLiteral("\n"))));
     }
 }
@@ -393,6 +479,7 @@ void LayoutTests::viewportModesAreNotCutOff() {
         // The window's minimum width still fits the screen (the toolbar overflows).
         if (w->minimumSizeHint().width() > kWindow.width())
             cut << QStringLiteral("minimum width %1").arg(w->minimumSizeHint().width());
+        cut << toolbar_problems(*w);
         // Toolbar buttons on the bar are whole (those past its end are in its menu).
         for (auto* bar : w->findChildren<QToolBar*>())
             for (auto* button : bar->findChildren<QToolButton*>())
@@ -410,6 +497,40 @@ void LayoutTests::viewportModesAreNotCutOff() {
         }
         QVERIFY2(cut.isEmpty(), qPrintable(language + ": " + cut.join(QStringLiteral("\n"))));
     }
+}
+
+void LayoutTests::sideBSaysWhenItShowsAndStartsAComparison() {
+    // "B: ray tracer" was greyed out in Raster mode with no word why. It says when
+    // side B shows, and choosing a side B starts a comparison (Split).
+    QMainWindow host;
+    auto* bar = host.addToolBar(QStringLiteral("bar"));
+    CompareControls controls(&host);
+    controls.addToToolBar(bar);
+    controls.setRayTracing(true);
+    host.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&host));
+    auto* side = bar->findChild<QToolButton*>(QStringLiteral("compareSideButton"));
+    QVERIFY(side);
+    QCOMPARE(controls.state().mode, ViewportMode::Raster);
+    QVERIFY(side->isEnabled());
+    QVERIFY2(side->toolTip().contains(QStringLiteral("Split")) &&
+                 side->toolTip().contains(QStringLiteral("Difference")),
+             qPrintable(side->toolTip()));
+    QAction* rays = side->menu()->actions().value(0); // "The Ray Tracer", first
+    QVERIFY(rays && rays->isEnabled());
+    rays->trigger();
+    QCOMPARE(controls.state().mode, ViewportMode::Split);
+    QCOMPARE(controls.state().side, SideB::RayTraced);
+    // Already comparing: the mode stays.
+    controls.setMode(ViewportMode::Difference);
+    rays->trigger();
+    QCOMPARE(controls.state().mode, ViewportMode::Difference);
+    // A long side-B name is shortened on the button, whole in its tooltip.
+    controls.setOtherFile(QStringLiteral("AVeryLongExportedFileNameFromTheExporter_final_v7.gltf"),
+                          TangentMethod::Lengyel);
+    controls.setSide(SideB::OtherFile);
+    QVERIFY(side->fontMetrics().horizontalAdvance(side->text()) <= 230);
+    QVERIFY(side->toolTip().contains(QStringLiteral("final_v7.gltf")));
 }
 
 QTEST_MAIN(LayoutTests)

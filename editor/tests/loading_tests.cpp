@@ -2,6 +2,7 @@
 // load that keeps the previous scene and leaks nothing, the texture cache's actions and
 // a missing texture named in the dock and the log. (The viewport's inspection features
 // are in viewport_tests.cpp.)
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -45,6 +46,7 @@ private Q_SLOTS:
     void cancelDropsTheLoadAndLeaksNothing();
     void textureCacheActions();
     void missingTextureIsNamedInTheDockAndLog();
+    void changedFilesAreOfferedOrReloaded();
 
 private:
     bool hasGpu() const { return window_->renderer() != nullptr; }
@@ -187,6 +189,66 @@ void LoadingTests::missingTextureIsNamedInTheDockAndLog() {
     QVERIFY2(window_->logDock()->text().contains(
                  QStringLiteral("texture missing: " SHERPA_TEST_DATA_DIR "/does_not_exist.png")),
              qPrintable(window_->logDock()->text()));
+}
+
+// Reload on change: a copy of BoxTextured (its .gltf, .bin and PNG) open; a change
+// of its buffer brings the offer to reload, whose Reload button reloads it with the
+// camera kept; with Reload Automatically, a change of its image reloads at once.
+void LoadingTests::changedFilesAreOfferedOrReloaded() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QDir source(QFileInfo(test::asset(QStringLiteral("BoxTextured"))).absolutePath());
+    for (const QString& f : source.entryList(QDir::Files))
+        QVERIFY(QFile::copy(source.filePath(f), dir.filePath(f)));
+    const QString gltf = dir.filePath(QStringLiteral("BoxTextured.gltf"));
+    QVERIFY(load(*window_, gltf));
+    const QStringList watched = window_->watchedFiles();
+    const QString bin =
+        QFileInfo(dir.filePath(QStringLiteral("BoxTextured0.bin"))).absoluteFilePath();
+    const QString png =
+        QFileInfo(dir.filePath(QStringLiteral("CesiumLogoFlat.png"))).absoluteFilePath();
+    QVERIFY2(watched.contains(QFileInfo(gltf).absoluteFilePath()) && watched.contains(bin) &&
+                 watched.contains(png),
+             qPrintable(watched.join(QLatin1Char(' '))));
+
+    window_->setReloadAutomatically(false);
+    window_->viewport()->camera().orbit(30.0f, 10.0f);
+    const glm::vec3 eye = window_->viewport()->camera().eye();
+    QSignalSpy loaded(window_.get(), &MainWindow::sceneLoaded);
+    const auto touch = [](const QString& path) { // rewritten as an exporter does
+        QFile f(path);
+        if (!f.open(QIODevice::ReadOnly)) return false;
+        const QByteArray bytes = f.readAll();
+        f.close();
+        QFile out(path);
+        return out.open(QIODevice::WriteOnly | QIODevice::Truncate) &&
+               out.write(bytes) == bytes.size();
+    };
+    QVERIFY(touch(bin));
+    QMessageBox* offer = nullptr;
+    QTRY_VERIFY_WITH_TIMEOUT(
+        (offer = window_->findChild<QMessageBox*>(QStringLiteral("reloadOffer"))) &&
+            offer->isVisible(),
+        10000);
+    QVERIFY(offer->text().contains(QStringLiteral("BoxTextured0.bin")));
+    QCOMPARE(loaded.count(), 0); // offered, not done
+    QAbstractButton* reload = nullptr;
+    for (QAbstractButton* b : offer->buttons())
+        if (offer->buttonRole(b) == QMessageBox::AcceptRole) reload = b;
+    QVERIFY(reload);
+    reload->click();
+    QTRY_VERIFY_WITH_TIMEOUT(loaded.count() == 1, kLoadTimeoutMs);
+    QCOMPARE(window_->viewport()->camera().eye(), eye); // the view kept
+
+    window_->setReloadAutomatically(true);
+    QVERIFY(EditorSettings().reloadAutomatically()); // remembered
+    QVERIFY(touch(png));
+    QTRY_VERIFY_WITH_TIMEOUT(loaded.count() == 2, kLoadTimeoutMs);
+    QVERIFY(!window_->findChild<QMessageBox*>(QStringLiteral("reloadOffer")) ||
+            !window_->findChild<QMessageBox*>(QStringLiteral("reloadOffer"))->isVisible());
+    window_->setReloadAutomatically(false);
+    QVERIFY(load(*window_, QStringLiteral("builtin:default")));
+    QVERIFY(window_->watchedFiles().isEmpty()); // nothing on disk to watch
 }
 
 QTEST_MAIN(LoadingTests)

@@ -57,17 +57,18 @@ void check_vertex_rows(const Mesh& mesh, const VertexTableModel& model) {
         QCOMPARE(display(model, row, VertexTableModel::IndexColumn), QString::number(v));
         for (int c = 0; c < 3; ++c) {
             QCOMPARE(display(model, row, VertexTableModel::PosX + c),
-                     Format::number(x.position[c]));
-            QCOMPARE(display(model, row, VertexTableModel::NrmX + c), Format::number(x.normal[c]));
+                     Format::compact(x.position[c]));
+            QCOMPARE(display(model, row, VertexTableModel::NrmX + c), Format::compact(x.normal[c]));
         }
         for (int c = 0; c < 4; ++c)
-            QCOMPARE(display(model, row, VertexTableModel::TanX + c), Format::number(x.tangent[c]));
+            QCOMPARE(display(model, row, VertexTableModel::TanX + c),
+                     Format::compact(x.tangent[c]));
         for (int c = 0; c < 2; ++c) {
-            QCOMPARE(display(model, row, VertexTableModel::Uv0U + c), Format::number(x.uv0[c]));
-            QCOMPARE(display(model, row, VertexTableModel::Uv1U + c), Format::number(x.uv1[c]));
+            QCOMPARE(display(model, row, VertexTableModel::Uv0U + c), Format::compact(x.uv0[c]));
+            QCOMPARE(display(model, row, VertexTableModel::Uv1U + c), Format::compact(x.uv1[c]));
         }
         QCOMPARE(display(model, row, VertexTableModel::ColR),
-                 mesh.colors.empty() ? QStringLiteral("—") : Format::number(mesh.colors[v].r));
+                 mesh.colors.empty() ? QStringLiteral("—") : Format::compact(mesh.colors[v].r));
     }
 }
 
@@ -204,13 +205,13 @@ void ModelTests::millionVertexTableSortsByPermutation() {
     VertexTableModel model;
     model.setMesh(MeshRef{scene, 0});
     QCOMPARE(model.rowCount(), 1000000);
-    QCOMPARE(display(model, 999999, VertexTableModel::PosX), Format::number(1.0));
+    QCOMPARE(display(model, 999999, VertexTableModel::PosX), Format::compact(1.0));
     model.sort(VertexTableModel::PosX, Qt::AscendingOrder);
     QCOMPARE(model.vertexOfRow(0), 999999);
     QCOMPARE(model.rowOfVertex(999999), 0);
     QCOMPARE(display(model, 0, VertexTableModel::IndexColumn), QStringLiteral("999999"));
     model.sort(VertexTableModel::PosY, Qt::DescendingOrder);
-    QCOMPARE(display(model, 0, VertexTableModel::PosY), Format::number(999.0));
+    QCOMPARE(display(model, 0, VertexTableModel::PosY), Format::compact(999.0));
     for (int v : {0, 12345, 999999}) QCOMPARE(model.vertexOfRow(model.rowOfVertex(v)), v);
 }
 
@@ -231,7 +232,7 @@ void ModelTests::generatedTangentsAgreeWithRegeneration() {
     model.sort(VertexTableModel::TangentErrorColumn, Qt::DescendingOrder);
     const int worst = model.vertexOfRow(0);
     QCOMPARE(display(model, 0, VertexTableModel::TangentErrorColumn),
-             Format::number(e.degrees[static_cast<std::size_t>(worst)]));
+             Format::compact(e.degrees[static_cast<std::size_t>(worst)]));
 }
 
 void ModelTests::frameKeepsTheBoxInView() {

@@ -16,6 +16,7 @@
 #include "resolution_scale.h"
 #include "scene_tree_dock.h"
 #include "test_assets.h"
+#include "timeline_dock.h"
 #include "viewport_window.h"
 #include "window_test_support.h"
 
@@ -66,6 +67,7 @@ private Q_SLOTS:
     void cleanupTestCase() { window_.reset(); }
     void guiWorksWhileAFrameIsInFlight();
     void stillFrameIsFullResolutionAfterMotion();
+    void playbackIsMotionAndPauseIsExact();
     void gpuTimeIsMeasured();
     void sceneAskedForBeforeTheDeviceWaitsForIt();
 
@@ -172,6 +174,37 @@ void RenderThreadTests::stillFrameIsFullResolutionAfterMotion() {
     QCOMPARE(w.lastReport().scale, 1.0f);
     QVERIFY(maxDifference(viewportOnScreen(w), reference) <= 1);
     w.renderer()->setTargetFrameMs(kTargetFrameMs);
+}
+
+void RenderThreadTests::playbackIsMotionAndPauseIsExact() {
+    // A playing animation moves like an orbiting camera: its frames get the adaptive
+    // resolution; paused, the frame of that time is drawn at full size.
+    if (!window_->renderer()) QSKIP("no Vulkan device: nothing is rendered");
+    MainWindow& w = *window_;
+    QVERIFY(test::load(w, test::asset(QStringLiteral("AnimatedCube"))));
+    TimelineDock& timeline = *w.timelineDock();
+    w.renderer()->setTargetFrameMs(0.01); // every moving frame is "too slow"
+    w.screenshot();                       // a full-size frame at rest
+    QCOMPARE(w.lastReport().scale, 1.0f);
+    // Steps of the play loop, the camera still: the scale drops.
+    timeline.setPlaying(true);
+    for (int i = 0; i < 3; ++i) {
+        timeline.advance(0.05);
+        QTRY_VERIFY(w.lastFrame().pose == timeline.pose()); // asked for
+        const std::uint64_t step = w.lastRequest();
+        QVERIFY(waitForReport(w, [&](const FrameReport& r) { return r.request >= step; }));
+    }
+    QVERIFY2(w.lastReport().scale < 1.0f, qPrintable(QString::number(w.lastReport().scale)));
+    QCOMPARE(w.lastFrame().camera.eye, w.viewport()->camera().spec().eye); // camera still
+    // Paused: nobody asks again, and the pose of this time is drawn at full size.
+    timeline.setPlaying(false);
+    const std::uint64_t paused = w.lastRequest();
+    QVERIFY(waitForReport(
+        w, [&](const FrameReport& r) { return r.scale == 1.0f && r.request >= paused; }));
+    QCOMPARE(QSize(int(w.lastReport().width), int(w.lastReport().height)),
+             w.viewport()->pixelSize());
+    w.renderer()->setTargetFrameMs(kTargetFrameMs);
+    QVERIFY(test::load(w, QStringLiteral("builtin:default")));
 }
 
 void RenderThreadTests::gpuTimeIsMeasured() {

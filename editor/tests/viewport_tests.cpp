@@ -140,6 +140,26 @@ void ViewportTests::highlightFollowsSelection() {
     QCOMPARE(window_->lastFrame().highlightTriangle.value_or(~0u), 7u);
     QCOMPARE(window_->lastFrame().highlightVertex.value_or(~0u), 3u);
     QVERIFY(!window_->logDock()->text().contains(QStringLiteral("Rendering stopped")));
+
+    // A node without a mesh (the instance grid's parent) outlines its subtree: every
+    // instance placed by a descendant, found here by walking the parents.
+    QVERIFY(window_->selectNodeNamed(QStringLiteral("instance grid")));
+    const Scene& scene = *window_->context().scene();
+    const int grid = window_->context().selection().node;
+    QCOMPARE(scene.nodes[std::size_t(grid)].mesh, -1);
+    std::vector<std::uint32_t> expected;
+    for (std::uint32_t i = 0; i < scene.instances.size(); ++i)
+        for (int n = int(scene.instances[i].node_id); n >= 0;
+             n = scene.nodes[std::size_t(n)].parent)
+            if (n == grid) {
+                expected.push_back(i);
+                break;
+            }
+    QVERIFY(expected.size() > 1);
+    QVERIFY(test::next_frame(*window_));
+    QVERIFY(!window_->lastFrame().highlightInstance);
+    QCOMPARE(window_->lastFrame().outlineInstances, expected);
+    QVERIFY2(orangePixels(*window_) > plain + 100, "the subtree's outline is drawn");
 }
 
 void ViewportTests::uncheckedNodeLeavesTheViewport() {

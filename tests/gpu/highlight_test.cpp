@@ -1,8 +1,11 @@
-// The selection highlight draws: the highlighted instance's surface is tinted
-// orange with its shading still showing (every tinted pixel a mix of the plain
-// render and orange, never solid orange) and its box in orange; a highlighted
-// triangle and vertex magenta pixels; an instance that is not drawn changes nothing. The
-// highlighted render is written to highlight_box.png next to the test binary for inspection.
+// The selection highlight is an outline: the highlighted instance keeps every pixel of
+// its interior as the plain render drew it (its material can still be judged, and the
+// missing-texture checker is not turned pink and olive by a tint), while an orange
+// ring appears just outside its silhouette; single-sided (back-face edges) and
+// double-sided (biased edges) meshes alike. A highlighted triangle and vertex draw
+// magenta; more instances can be outlined (a node's subtree); an instance that is not
+// drawn changes nothing. The highlighted render is written to highlight_box.png next
+// to the test binary for inspection.
 #include "gpu_test_support.h"
 
 #include <sherpa/texture/image.h>
@@ -13,50 +16,86 @@
 namespace sherpa::test {
 namespace {
 
-constexpr std::uint32_t kSize = 160;
+constexpr int kSize = 160;
 
 struct Counts {
     std::size_t orange = 0, magenta = 0;
 };
 
+bool is_orange(const std::uint8_t* p) { // sRGB of kHighlightColor: (255, 180, 0)
+    return p[0] > 235 && p[1] > 160 && p[1] < 200 && p[2] < 30;
+}
+
 Counts count_highlight(const std::vector<std::uint8_t>& rgba) {
-    // sRGB encodings of kHighlightColor (255, 180, 0) and kHighlightDetailColor.
     Counts c;
     for (std::size_t i = 0; i < rgba.size(); i += 4) {
         const int r = rgba[i], g = rgba[i + 1], b = rgba[i + 2];
-        if (r > 235 && g > 160 && g < 200 && b < 30) ++c.orange;
+        if (is_orange(&rgba[i])) ++c.orange;
         if (r > 235 && g < 30 && b > 235) ++c.magenta;
     }
     return c;
 }
 
-struct Tint {
-    std::size_t tinted = 0; // changed pixels that lie between the plain pixel and orange
-    std::size_t solid = 0;  // changed pixels that went (almost) solid orange
-    std::size_t other = 0;  // changed any other way
+// The plain render's object mask: pixels unlike the background (the corner's).
+std::vector<bool> object_mask(const std::vector<std::uint8_t>& rgba) {
+    std::vector<bool> mask(kSize * kSize);
+    for (int i = 0; i < kSize * kSize; ++i) {
+        int d = 0;
+        for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(rgba[4 * i + c] - rgba[c]));
+        mask[std::size_t(i)] = d > 3;
+    }
+    return mask;
+}
+
+// Distance (Chebyshev, capped at `cap`) of each pixel to the nearest pixel whose mask
+// differs from its own.
+std::vector<int> edge_distance(const std::vector<bool>& mask, int cap) {
+    std::vector<int> dist(mask.size(), cap);
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const bool self = mask[std::size_t(y * kSize + x)];
+            for (int r = 1; r < cap; ++r) {
+                bool found = false;
+                for (int dy = -r; dy <= r && !found; ++dy)
+                    for (int dx = -r; dx <= r && !found; ++dx) {
+                        const int nx = x + dx, ny = y + dy;
+                        if (nx < 0 || ny < 0 || nx >= kSize || ny >= kSize) continue;
+                        found = mask[std::size_t(ny * kSize + nx)] != self;
+                    }
+                if (found) {
+                    dist[std::size_t(y * kSize + x)] = r;
+                    break;
+                }
+            }
+        }
+    return dist;
+}
+
+struct Outline {
+    std::size_t interior = 0, interior_changed = 0; // object pixels 4+ px inside
+    std::size_t ring = 0, ring_orange = 0;          // background pixels 1-2 px outside
 };
 
-// Compares a highlighted render with the plain one, pixel by pixel.
-Tint classify_tint(const std::vector<std::uint8_t>& plain, const std::vector<std::uint8_t>& lit) {
-    const int orange[3] = {255, 180, 0}; // kHighlightColor, sRGB-encoded
-    Tint t;
-    for (std::size_t i = 0; i < plain.size(); i += 4) {
-        bool changed = false, between = true, near_orange = true;
-        for (int c = 0; c < 3; ++c) {
-            const int p = plain[i + std::size_t(c)], l = lit[i + std::size_t(c)];
-            changed |= std::abs(l - p) > 2;
-            between &= l >= std::min(p, orange[c]) - 3 && l <= std::max(p, orange[c]) + 3;
-            near_orange &= std::abs(l - orange[c]) < 25;
+Outline classify_outline(const std::vector<std::uint8_t>& plain,
+                         const std::vector<std::uint8_t>& lit) {
+    const std::vector<bool> mask = object_mask(plain);
+    const std::vector<int> dist = edge_distance(mask, 5);
+    Outline o;
+    for (std::size_t i = 0; i < mask.size(); ++i) {
+        if (mask[i] && dist[i] >= 4) {
+            ++o.interior;
+            for (std::size_t c = 0; c < 3; ++c)
+                if (std::abs(int(plain[4 * i + c]) - int(lit[4 * i + c])) > 2) {
+                    ++o.interior_changed;
+                    break;
+                }
         }
-        if (!changed) continue;
-        if (near_orange)
-            ++t.solid;
-        else if (between)
-            ++t.tinted;
-        else
-            ++t.other;
+        if (!mask[i] && dist[i] <= 1) {
+            ++o.ring;
+            o.ring_orange += is_orange(&lit[4 * i]) ? 1 : 0;
+        }
     }
-    return t;
+    return o;
 }
 
 class HighlightTest : public GpuTest {
@@ -70,7 +109,7 @@ protected:
     }
 };
 
-TEST_F(HighlightTest, SelectedInstanceTriangleAndVertexAreDrawn) {
+TEST_F(HighlightTest, SelectedInstanceIsOutlinedNotTinted) {
     auto scene = load(gltf_asset("BoxTextured"));
     ASSERT_TRUE(scene);
     ASSERT_EQ(scene->instances.size(), 1u);
@@ -81,16 +120,12 @@ TEST_F(HighlightTest, SelectedInstanceTriangleAndVertexAreDrawn) {
 
     s.highlight_instance = 0;
     const std::vector<std::uint8_t> lit_rgba = draw(s);
-    const Counts instance = count_highlight(lit_rgba);
-    EXPECT_GT(instance.orange, plain.orange + 200) << "the box in orange";
-    EXPECT_EQ(instance.magenta, plain.magenta);
-    // The box covers about a quarter of the 160² image: its surface is tinted, and
-    // the tint keeps the shading (a mix with the plain pixel), apart from the box
-    // edges drawn in solid orange.
-    const Tint tint = classify_tint(plain_rgba, lit_rgba);
-    EXPECT_GT(tint.tinted, kSize * kSize / 8) << "the surface is tinted";
-    EXPECT_LT(tint.solid, tint.tinted / 4) << "solid orange only on the box's edges";
-    EXPECT_LT(tint.other, tint.tinted / 50) << "nothing but a mix towards orange";
+    const Outline o = classify_outline(plain_rgba, lit_rgba);
+    // The box covers about a quarter of the 160² image.
+    EXPECT_GT(o.interior, std::size_t(kSize * kSize / 8));
+    EXPECT_EQ(o.interior_changed, 0u) << "the surface keeps its colours (no tint)";
+    EXPECT_GT(o.ring_orange, o.ring * 3 / 4) << "an orange ring around the silhouette";
+    EXPECT_EQ(count_highlight(lit_rgba).magenta, plain.magenta);
 
     s.highlight_triangle = 0;
     s.highlight_vertex = 0;
@@ -108,8 +143,27 @@ TEST_F(HighlightTest, SelectedInstanceTriangleAndVertexAreDrawn) {
     renderer().unload();
 }
 
-TEST_F(HighlightTest, HighlightAlongsideOtherLineOverlays) {
-    // The box overlay, the cull overlay and the highlight share the frame's line buffer.
+TEST_F(HighlightTest, DoubleSidedPlaneIsOutlinedToo) {
+    // No back faces to draw: every edge, pushed behind the surface by depth bias.
+    auto scene = load(gltf_asset("TwoSidedPlane"));
+    ASSERT_TRUE(scene);
+    ASSERT_FALSE(scene->instances.empty());
+    renderer().load(*scene);
+    gpu::RenderSettings s = settings();
+    std::string error;
+    ASSERT_TRUE(gpu::parse_camera_spec("eye=0.4,2.5,1.2:target=0,0,0", s.camera, error)) << error;
+    const std::vector<std::uint8_t> plain = draw(s);
+    s.highlight_instance = 0;
+    const std::vector<std::uint8_t> lit = draw(s);
+    const Outline o = classify_outline(plain, lit);
+    EXPECT_GT(o.interior, std::size_t(kSize * kSize / 10));
+    EXPECT_EQ(o.interior_changed, 0u) << "the surface keeps its colours";
+    EXPECT_GT(o.ring_orange, o.ring / 2) << "an orange ring around the plane";
+    renderer().unload();
+}
+
+TEST_F(HighlightTest, SubtreeOutlineAlongsideOtherLineOverlays) {
+    // The box overlay, the cull overlay and the outlines share the frame.
     auto scene = load("builtin:default");
     ASSERT_TRUE(scene);
     renderer().load(*scene);
@@ -118,8 +172,13 @@ TEST_F(HighlightTest, HighlightAlongsideOtherLineOverlays) {
     s.overlays = gpu::kOverlayBounds | gpu::kOverlayCullBoxes;
     const Counts plain = count_highlight(draw(s));
     s.highlight_instance = static_cast<std::uint32_t>(scene->instances.size() / 2);
-    const Counts lit = count_highlight(draw(s));
-    EXPECT_GT(lit.orange, plain.orange);
+    const Counts one = count_highlight(draw(s));
+    EXPECT_GT(one.orange, plain.orange);
+    // A node without a mesh: the editor outlines its subtree's instances.
+    s.highlight_instance.reset();
+    for (std::uint32_t i = 0; i < scene->instances.size(); ++i) s.highlight_outline.push_back(i);
+    const Counts all = count_highlight(draw(s));
+    EXPECT_GT(all.orange, one.orange);
     renderer().unload();
 }
 

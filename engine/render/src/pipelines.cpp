@@ -122,7 +122,9 @@ Pipelines::Pipelines(const Context& context, VkDescriptorSetLayout textures_layo
                      VkDescriptorSetLayout frame_layout, VkFormat color_format)
     : color_format_(color_format),
       point_size_(context.info().large_points ? kPointSizePixels : 1.0f),
-      line_width_(context.info().wide_lines ? kLineWidthPixels : 1.0f), device_(context.device()) {
+      line_width_(context.info().wide_lines ? kLineWidthPixels : 1.0f),
+      outline_width_(context.info().wide_lines ? kOutlineWidthPixels : 1.0f),
+      device_(context.device()) {
     VkDevice device = context.device();
     VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                              sizeof(GPUPushConstants)};
@@ -161,6 +163,10 @@ Pipelines::Pipelines(const Context& context, VkDescriptorSetLayout textures_layo
     PipelineDesc tint{depth_vert, floor_frag};
     tint.blend = true;
     make(PipelineId::Tint, tint);
+    PipelineDesc outline{depth_vert, floor_frag, VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST,
+                         VK_POLYGON_MODE_LINE};
+    outline.line_width = outline_width_;
+    make(PipelineId::Outline, outline);
     make(PipelineId::ShadowOpaque, {depth_vert, VK_NULL_HANDLE, VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST,
                                     VK_POLYGON_MODE_FILL, false, false, false});
     make(PipelineId::ShadowMask, {depth_vert, depth_mask_frag, VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST,

@@ -25,6 +25,7 @@ enum class PipelineId : std::uint32_t {
     BoxLines,      // CPU-built world-space lines (instance AABBs)
     Floor,         // benchmark floor: positions and one constant colour
     Tint,          // the Floor's constant colour, alpha-blended over the frame
+    Outline,       // polygon mode LINE at kOutlineWidthPixels, flat colour (selection)
     ShadowOpaque,  // shadow cascades (depth-only rendering, no colour attachment)
     ShadowMask,
     Count,
@@ -109,6 +110,7 @@ private:
     VkFormat color_format_;
     float point_size_ = 1.0f;
     float line_width_ = 1.0f;
+    float outline_width_ = 1.0f;
     UniquePipelineLayout layout_;
     static constexpr std::size_t kFixedCount = static_cast<std::size_t>(PipelineId::Count);
     std::array<UniquePipeline, kFixedCount> pipelines_, motion_;

@@ -53,7 +53,8 @@ void Renderer::Impl::check_rt(const RenderSettings& settings) const {
         throw GpuError("the ray tracer does not draw view '" +
                        std::string(to_string(settings.view)) + "' (it draws " +
                        ray_traced_view_names() + ")");
-    if (settings.overlays != 0 || settings.highlight_instance)
+    if (settings.overlays != 0 || settings.highlight_instance ||
+        !settings.highlight_outline.empty())
         throw GpuError("the ray tracer draws no overlays or highlights (raster only)");
 }
 

@@ -154,6 +154,9 @@ inline constexpr float kPointSizePixels = 4.0f;
 // where the device supports wide lines (wideLines), else 1: a 1-px line is hard to
 // see and to pick on a high-DPI screen.
 inline constexpr float kLineWidthPixels = 2.0f;
+// The selection outline's lines (wideLines devices; else 1): half of the width lies
+// outside the silhouette, so a 3-px line leaves a ring of 1-2 px around it.
+inline constexpr float kOutlineWidthPixels = 3.0f;
 inline constexpr std::uint32_t kTangentProvenanceShift = 8;
 inline constexpr std::uint32_t kNormalProvenanceShift = 10;
 inline constexpr std::uint32_t kGlyphKindShift = 16;

@@ -100,14 +100,19 @@ struct RenderSettings {
     bool cull_check = false;
     // Cull with this camera instead of the view camera (visual debugging of culling).
     std::optional<CameraSpec> freeze_cull;
-    // Selection highlight (an editor's selection), drawn last, over everything:
-    // the instance (scene instance index) tinted with kHighlightTint over its
-    // shading (which stays visible) and its world box in kHighlightColor; one triangle of its mesh
-    // filled, and one vertex as a normal/tangent/bitangent tripod, in kHighlightDetailColor.
-    // Ignored when the instance is not drawn (out of range, empty mesh).
+    // Selection highlight (an editor's selection), drawn last: the instance (scene
+    // instance index) outlined in kHighlightColor around its visible silhouette, its
+    // surface left as shaded (a tint would hide the material the user selected it to
+    // judge); one triangle of its mesh filled, and one vertex as a
+    // normal/tangent/bitangent tripod, in kHighlightDetailColor, never hidden by depth.
+    // Lines and points meshes, which have no silhouette, get their world box.
+    // Ignored when the instance is not drawn (out of range, empty mesh, hidden).
     std::optional<std::uint32_t> highlight_instance;
     std::optional<std::uint32_t> highlight_triangle; // needs highlight_instance
     std::optional<std::uint32_t> highlight_vertex;   // needs highlight_instance
+    // More instances outlined the same way (a selected node without a mesh: the
+    // instances of its subtree). Not drawn ones are skipped.
+    std::vector<std::uint32_t> highlight_outline;
     // The pose to draw (evaluate_pose(), morph weights possibly overridden by the editor); null:
     // the scene as loaded (bind pose, default weights). Skinned/morphed primitives are deformed
     // on the GPU; culling and shadows use the pose's conservative bounds.
@@ -124,9 +129,7 @@ struct RenderSettings {
     std::optional<std::uint32_t> selected_joint;
 };
 
-inline const glm::vec4 kHighlightColor{1.0f, 0.45f, 0.0f, 1.0f}; // orange
-// Orange at 30%: a wireframe of a dense mesh painted it solid and hid its shading.
-inline const glm::vec4 kHighlightTint{1.0f, 0.45f, 0.0f, 0.3f};
+inline const glm::vec4 kHighlightColor{1.0f, 0.45f, 0.0f, 1.0f};      // orange
 inline const glm::vec4 kHighlightDetailColor{1.0f, 0.0f, 1.0f, 1.0f}; // magenta
 
 // Does this view/overlay need streams the materials do not use (so the scene must

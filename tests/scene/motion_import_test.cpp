@@ -229,4 +229,38 @@ TEST(MotionBounds, CullingBoundsContainEveryPosedVertex) {
     }
 }
 
+// A finite pose can still put positions past the float range: an animated scale of
+// 3e38 (STEP key 1, from t = 1) or an inverse bind matrix of 3e38. The skinned node is
+// named and left out; the posed bounds stay finite and are those of the still triangle
+// beside it (x in [3, 4]). Before the fix they were [-inf nan -inf] .. [inf nan inf].
+TEST(MotionBounds, PosesPastTheFloatRangeAreNamedAndLeftOut) {
+    for (const char* file : {"pose_overflow_scale.gltf", "pose_overflow_ibm.gltf"}) {
+        SCOPED_TRACE(file);
+        const auto s = load(data(file));
+        ASSERT_TRUE(s);
+        const sherpa::Pose pose = sherpa::evaluate_pose(*s, 0, 1.3);
+        const sherpa::PosedBounds b = sherpa::posed_scene_bounds(*s, pose);
+        EXPECT_EQ(b.overflow, std::vector<std::uint32_t>{0});
+        ASSERT_TRUE(b.exact.valid() && b.culling.valid());
+        for (const sherpa::Aabb& box : {b.exact, b.culling})
+            EXPECT_TRUE(sherpa::is_finite(box.min) && sherpa::is_finite(box.max));
+        EXPECT_EQ(b.exact.min, glm::vec3(3, 0, 0));
+        EXPECT_EQ(b.exact.max, glm::vec3(4, 1, 0));
+        EXPECT_TRUE(glm::all(glm::lessThanEqual(b.culling.min, b.exact.min)) &&
+                    glm::all(glm::greaterThanEqual(b.culling.max, b.exact.max)));
+        // The cheap per-frame check (the editor's, the CLI's render and cull) agrees.
+        EXPECT_EQ(sherpa::posed_overflow_nodes(*s, pose), std::vector<std::uint32_t>{0});
+        const std::string w = sherpa::posed_overflow_warning(*s, 0);
+        EXPECT_NE(w.find("nodes[0]"), std::string::npos) << w;
+        EXPECT_NE(w.find("overflow the float range"), std::string::npos) << w;
+    }
+    // Before the huge key (t < 1) the scaled rig is in range: nothing to say.
+    const auto s = load(data("pose_overflow_scale.gltf"));
+    const sherpa::Pose early = sherpa::evaluate_pose(*s, 0, 0.5);
+    const sherpa::PosedBounds b = sherpa::posed_scene_bounds(*s, early);
+    EXPECT_TRUE(b.overflow.empty());
+    EXPECT_TRUE(sherpa::posed_overflow_nodes(*s, early).empty());
+    EXPECT_LT(b.exact.min.x, 3.0f) << "the rig is in the bounds again";
+}
+
 } // namespace

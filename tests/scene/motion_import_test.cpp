@@ -122,6 +122,35 @@ TEST(MotionEval, TimesOutsideTheKeysClampAndNaNTimeIsTheFirstKey) {
     }
 }
 
+// A double time just below the last key rounds onto it in float: the key search
+// returned the end and the interval read one key past the values (found by the pose
+// fuzz target under ASan: heap-buffer-overflow in sample_animation). Every
+// interpolation now lands on the last interval, at the last key's value.
+TEST(MotionEval, TimeJustBelowTheLastKeyStaysInsideTheKeys) {
+    for (const auto interpolation : {sherpa::Interpolation::Step, sherpa::Interpolation::Linear,
+                                     sherpa::Interpolation::CubicSpline}) {
+        sherpa::AnimationSampler s;
+        s.interpolation = interpolation;
+        s.width = 3;
+        s.times = {0.0f, 2.0f};
+        const std::size_t per_key = interpolation == sherpa::Interpolation::CubicSpline ? 3 : 1;
+        for (std::size_t k = 0; k < 2 * per_key; ++k)
+            for (float c : {1.0f, 2.0f, 3.0f}) s.values.push_back(c * float(k + 1));
+        const double t = std::nextafter(2.0, 0.0);
+        ASSERT_EQ(static_cast<float>(t), 2.0f);
+        float out[3];
+        sherpa::sample_animation(s, AnimationPath::Translation, t, out);
+        const float* last = &s.values[(per_key == 3 ? 4 : 1) * 3];
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(out[c],
+                        interpolation == sherpa::Interpolation::Step
+                            ? s.values[per_key == 3 ? 3 + c : c]
+                            : last[c],
+                        1e-4f)
+                << c;
+    }
+}
+
 TEST(MotionEval, LinearRotationIsShortestArcSlerp) {
     sherpa::AnimationSampler s;
     s.width = 4;

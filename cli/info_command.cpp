@@ -97,7 +97,7 @@ int run_info(Args args) {
         std::cout << j.dump(2) << "\n";
     } else {
         print_text(scene, problems);
-        if (posed) print_posed_text(pose_report(scene, animation, time));
+        if (posed) print_posed_text(scene, pose_report(scene, animation, time));
     }
     return kExitOk;
 }

@@ -73,9 +73,13 @@ json posed_json(const Scene& scene, const PosedReport& r) {
                                : json(nullptr)},
         {"time", r.time},
         {"culling_contains_posed", contains}};
+    json warnings = json::array();
+    for (std::uint32_t n : r.bounds.overflow) warnings.push_back(posed_overflow_warning(scene, n));
+    pose["warnings"] = warnings;
     return {{"pose", pose},
             {"posed_bounds", aabb_json(r.bounds.exact)},
-            {"culling_bounds", aabb_json(r.bounds.culling)}};
+            {"culling_bounds", aabb_json(r.bounds.culling)},
+            {"posed_bounds_overflow", r.bounds.overflow}};
 }
 
 void print_motion_text(const Scene& scene) {
@@ -97,7 +101,7 @@ void print_motion_text(const Scene& scene) {
                         p.morph_targets);
 }
 
-void print_posed_text(const PosedReport& r) {
+void print_posed_text(const Scene& scene, const PosedReport& r) {
     const Aabb& e = r.bounds.exact;
     const Aabb& c = r.bounds.culling;
     std::printf("  pose: animation %d at t = %g s\n", r.animation, r.time);
@@ -107,6 +111,8 @@ void print_posed_text(const PosedReport& r) {
     if (c.valid())
         std::printf("  culling bounds [%g %g %g] .. [%g %g %g]\n", c.min.x, c.min.y, c.min.z,
                     c.max.x, c.max.y, c.max.z);
+    for (std::uint32_t n : r.bounds.overflow)
+        std::printf("  warning: %s\n", posed_overflow_warning(scene, n).c_str());
 }
 
 } // namespace sherpa::cli

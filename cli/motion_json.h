@@ -18,11 +18,13 @@ struct PosedReport {
     PosedBounds bounds;
 };
 PosedReport pose_report(const Scene& scene, std::int32_t animation, double time);
-// {"pose": {animation, animation_name, time, culling_contains_posed}, "posed_bounds",
-// "culling_bounds"}: merged into the top level of `info --json`.
+// {"pose": {animation, animation_name, time, culling_contains_posed, warnings},
+// "posed_bounds", "culling_bounds", "posed_bounds_overflow" (node ids left out of both
+// bounds because their posed positions leave the float range)}: merged into the top
+// level of `info --json`.
 nlohmann::json posed_json(const Scene& scene, const PosedReport& r);
 
 void print_motion_text(const Scene& scene);
-void print_posed_text(const PosedReport& r);
+void print_posed_text(const Scene& scene, const PosedReport& r);
 
 } // namespace sherpa::cli

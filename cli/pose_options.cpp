@@ -1,6 +1,7 @@
 #include "pose_options.h"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace sherpa::cli {
@@ -61,7 +62,12 @@ std::shared_ptr<const Pose> resolve_pose(const Scene& scene, const PoseOptions& 
     std::int32_t animation = -1;
     if (!pose_animation(scene, options, animation, error) || !(options.bind || options.timed))
         return nullptr;
-    return std::make_shared<const Pose>(evaluate_pose(scene, animation, options.time));
+    auto pose = std::make_shared<const Pose>(evaluate_pose(scene, animation, options.time));
+    // Drawn and culled anyway (an unbounded instance is never culled), but said.
+    for (std::uint32_t node : posed_overflow_nodes(scene, *pose))
+        std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(),
+                     posed_overflow_warning(scene, node).c_str());
+    return pose;
 }
 
 } // namespace sherpa::cli

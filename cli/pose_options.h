@@ -32,7 +32,8 @@ bool pose_animation(const Scene& scene, const PoseOptions& options, std::int32_t
 // The pose the options ask for: null without any (the scene as loaded); the file's
 // default pose for --pose bind; else animation N (default: the first; none: the
 // default weights) at time T, clamped to its keys. Empty `error` unless the options
-// do not fit the scene (then null).
+// do not fit the scene (then null). Nodes whose posed bounds overflow the float range
+// are warned about on stderr.
 std::shared_ptr<const Pose> resolve_pose(const Scene& scene, const PoseOptions& options,
                                          std::string& error);
 

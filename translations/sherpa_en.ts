@@ -825,6 +825,10 @@ PSNR %3
 <context>
     <name>sherpa::editor::MainWindow</name>
     <message>
+        <source>At %1 s: %2</source>
+        <translation>At %1 s: %2</translation>
+    </message>
+    <message>
         <source>Loading %1 cancelled; the result is discarded.</source>
         <translation>Loading %1 cancelled; the result is discarded.</translation>
     </message>

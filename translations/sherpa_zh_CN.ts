@@ -825,6 +825,10 @@ PSNR %3
 <context>
     <name>sherpa::editor::MainWindow</name>
     <message>
+        <source>At %1 s: %2</source>
+        <translation>在 %1 秒：%2</translation>
+    </message>
+    <message>
         <source>Loading %1 cancelled; the result is discarded.</source>
         <translation>已取消加载 %1；结果将被丢弃。</translation>
     </message>

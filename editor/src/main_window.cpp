@@ -191,13 +191,29 @@ void MainWindow::showTimelineForScene() {
     timeline_->setVisible(scene && (!scene->animations.empty() || !scene->motions.empty()));
 }
 
+void MainWindow::logPoseOverflow() {
+    const Scene* scene = context_.scene();
+    const auto pose = timeline_->pose();
+    std::vector<std::uint32_t> nodes;
+    if (scene && pose) nodes = posed_overflow_nodes(*scene, *pose);
+    if (nodes == pose_overflow_logged_) return;
+    pose_overflow_logged_ = nodes;
+    for (std::uint32_t node : nodes)
+        log_->append(LogDock::Level::Warning,
+                     tr("At %1 s: %2")
+                         .arg(timeline_->time(), 0, 'g', 4)
+                         .arg(QString::fromStdString(posed_overflow_warning(*scene, node))));
+}
+
 void MainWindow::connectActions() {
     // Actions out of the docks become context changes here, and only here.
     connect(timeline_, &TimelineDock::poseChanged, this, [this] {
         culling_->setPose(timeline_->pose()); // the culling dock follows the motion
+        logPoseOverflow();
         viewport_->scheduleFrame();
     });
     connect(&context_, &EditorContext::sceneReady, this, &MainWindow::showTimelineForScene);
+    connect(&context_, &EditorContext::sceneReady, this, [this] { pose_overflow_logged_.clear(); });
     connect(scene_tree_, &SceneTreeDock::selectNodeRequested, &context_,
             &EditorContext::selectNode);
     connect(scene_tree_, &SceneTreeDock::selectMeshRequested, &context_,

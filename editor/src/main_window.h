@@ -153,6 +153,9 @@ private:
 
     void createDocks();
     void showTimelineForScene();
+    // Warns in the log about nodes the timeline's pose pushes past the float range
+    // (their bounds are left out; culling keeps them), once per change of that set.
+    void logPoseOverflow();
     void createRenderer();
     // The render thread has made its device or failed to: open the scene asked for.
     void deviceKnown();
@@ -233,6 +236,7 @@ private:
     // The Lab's shadows family applied (main_window_lab.cpp); 0 taps: the device's default.
     std::uint32_t shadow_cascades_ = kDefaultShadowCascades, shadow_pcf_taps_ = 0;
     bool first_frame_seen_ = false;
+    std::vector<std::uint32_t> pose_overflow_logged_; // nodes logPoseOverflow() last named
     bool remember_layout_ = true;
     int pass_frames_left_ = 0; // extra frames until the pass table has the first frame
     ViewportFrame last_frame_;

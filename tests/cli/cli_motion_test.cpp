@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include <sherpa/texture/image.h>
@@ -147,6 +148,52 @@ TEST(CliMotion, BadPoseOptionsAreUsageErrors) {
             EXPECT_NE(r.out.find("error: "), std::string::npos) << args;
         }
     }
+}
+
+// An animated scale or inverse bind matrix of 3e38: `info` printed
+// [-inf -nan -inf] .. [inf -nan inf] (JSON null) without a word. Now the node is named
+// in a warning and left out, and the posed bounds are the still triangle's.
+TEST(CliMotion, PosedBoundsPastTheFloatRangeAreWarnedAndLeftOut) {
+    for (const char* name : {"pose_overflow_scale.gltf", "pose_overflow_ibm.gltf"}) {
+        SCOPED_TRACE(name);
+        const json j = info_json(data(name), "--animation 0 --time 1.3");
+        EXPECT_EQ(j["posed_bounds"], json::parse(R"({"min": [3, 0, 0], "max": [4, 1, 0]})"));
+        EXPECT_FALSE(j["culling_bounds"].is_null());
+        EXPECT_EQ(j["posed_bounds_overflow"], json({0}));
+        ASSERT_EQ(j["pose"]["warnings"].size(), 1u);
+        const std::string w = j["pose"]["warnings"][0];
+        EXPECT_NE(w.find("nodes[0]: posed bounds of its mesh overflow the float range"),
+                  std::string::npos)
+            << w;
+        EXPECT_EQ(j["pose"]["culling_contains_posed"], true);
+        const CliRun text = run_cli("info '" + data(name) + "' --animation 0 --time 1.3");
+        EXPECT_EQ(text.exit_code, 0);
+        EXPECT_NE(text.out.find("posed bounds [3 0 0] .. [4 1 0]"), std::string::npos) << text.out;
+        EXPECT_NE(text.out.find("warning: nodes[0]: posed bounds"), std::string::npos) << text.out;
+        EXPECT_EQ(text.out.find("nan"), std::string::npos) << text.out;
+        EXPECT_EQ(text.out.find("inf"), std::string::npos) << text.out;
+        // render draws what it can (the still triangle, lit: shadows are not NaN) and says why
+        // the rest is missing.
+        const std::string png =
+            (std::filesystem::temp_directory_path() / "sherpa_cli_pose_overflow.png").string();
+        const CliRun render =
+            run_cli("render '" + data(name) + "' -o " + png +
+                    " --width 32 --height 32 --validation --animation 0 " + "--time 1.3");
+        EXPECT_EQ(render.exit_code, 0) << render.out;
+        EXPECT_NE(render.out.find("overflow the float range"), std::string::npos) << render.out;
+        const auto posed = render_rgba(data(name), "--animation 0 --time 1.3 --camera auto");
+        ASSERT_FALSE(posed.empty());
+        std::size_t differ = 0; // pixels unlike the corner's background
+        for (std::size_t i = 0; i < posed.size(); i += 4)
+            differ += !std::equal(posed.begin() + std::ptrdiff_t(i),
+                                  posed.begin() + std::ptrdiff_t(i + 3), posed.begin());
+        EXPECT_GT(differ, 20u) << "the still triangle is drawn";
+    }
+    // Before the huge key: no warning, the whole rig in the bounds.
+    const json early = info_json(data("pose_overflow_scale.gltf"), "--animation 0 --time 0.5");
+    EXPECT_TRUE(early["pose"]["warnings"].empty());
+    EXPECT_TRUE(early["posed_bounds_overflow"].empty());
+    EXPECT_LT(early["posed_bounds"]["min"][0].get<double>(), 3.0);
 }
 
 } // namespace

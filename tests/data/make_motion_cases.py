@@ -58,7 +58,8 @@ def quat_axis(axis, angle):
 
 def rigged(times=(0.0, 1.0, 2.0), rot_keys=None, weights=None, ibm=None, joints=None,
            mesh_weights=(0.25, 0.5), node_weights=None, weight_times=None, weight_values=None,
-           scale_keys=None, joint_type=5121, weight_type=5126, sparse_target=False):
+           scale_keys=None, joint_type=5121, weight_type=5126, sparse_target=False,
+           static_neighbour=False):
     """Two triangles (a strip of 4 vertices) skinned to a 2-joint chain, 2 morph targets,
     an animation rotating the second joint and driving the weights."""
     b = Builder()
@@ -111,9 +112,15 @@ def rigged(times=(0.0, 1.0, 2.0), rot_keys=None, weights=None, ibm=None, joints=
     node0 = {"mesh": 0, "skin": 0}
     if node_weights is not None:
         node0["weights"] = node_weights
-    doc = {"scene": 0, "scenes": [{"nodes": [0, 1]}],
-           "nodes": [node0, {"children": [2]}, {"translation": [0, 1, 0]}],
-           "meshes": [mesh],
+    meshes, nodes, roots = [mesh], [node0, {"children": [2]}, {"translation": [0, 1, 0]}], [0, 1]
+    if static_neighbour:  # a still triangle at x in [3, 4] beside the skinned pair
+        sp = b.add("f", [[3, 0, 0], [4, 0, 0], [3, 1, 0]], "VEC3", minmax=True)
+        meshes.append({"primitives": [{"attributes": {"POSITION": sp}}]})
+        nodes.append({"name": "still", "mesh": 1})
+        roots.append(3)
+    doc = {"scene": 0, "scenes": [{"nodes": roots}],
+           "nodes": nodes,
+           "meshes": meshes,
            "skins": [{"joints": [1, 2], "inverseBindMatrices": ib, "skeleton": 1}],
            "animations": [{"name": "bend", "samplers": samplers, "channels": channels}]}
     return b.finish(doc)
@@ -190,6 +197,13 @@ def main():
     write("sweep_quat_far_from_unit.gltf",
           rigged(rot_keys=[[0, 0, 0, 50], [0, 0, 0.001, 0.002], [0, 0, 0, 0]]))
     write("sweep_huge_times.gltf", rigged(times=(0.0, 1e30, 3e38)))
+    # Finite but huge: posed positions leave the float range (warned, left out of the
+    # posed bounds); the still triangle beside them keeps finite bounds.
+    write("pose_overflow_scale.gltf",
+          rigged(scale_keys=[[1, 1, 1], [3e38, 3e38, 3e38], [1, 1, 1]], static_neighbour=True))
+    write("pose_overflow_ibm.gltf",
+          rigged(ibm=[[3e38, 0, 0, 0, 0, 3e38, 0, 0, 0, 0, 3e38, 0, 3e38, -3e38, 3e38, 1],
+                      [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1]], static_neighbour=True))
 
 
 if __name__ == "__main__":

@@ -38,15 +38,26 @@ constexpr const char* kUsage =
     "usage: sherpa-fuzz [--seed S] [--runs N] [--time-limit SECONDS] [--target a,b,..]\n"
     "                   [--findings DIR] [--work DIR] [--assets DIR] [--data DIR]\n"
     "                   [--max-size BYTES] [--max-seed-size BYTES] [--case-timeout SECONDS]\n"
-    "                   [--jobs J] [--case I]\n"
-    "Runs N cases per target (gltf, glb, tangents, ktx2, cache, basis; default all), case i of\n"
-    "target t made from (S, t, i) alone. --time-limit stops each target after its share.\n"
+    "                   [--max-image-texels N] [--jobs J] [--case I]\n"
+    "Runs N cases per target (default all targets; 1000 cases, or as many as fit\n"
+    "--time-limit when only that is given), case i of target t made from (S, t, i)\n"
+    "alone. --time-limit stops each target after its share. --max-image-texels: the\n"
+    "image target probes, without decoding, images declaring more texels.\n"
     "--jobs J runs J worker processes, each every J-th case (the same cases as one job).\n"
     "--case I runs that one case in this process (to debug a reproducer). Exit 0: no\n"
     "findings, 1: findings (saved under --findings), 2: bad usage or no seeds.\n";
 
+void print_usage(const std::vector<std::unique_ptr<Target>>& targets) {
+    std::fputs(kUsage, stderr);
+    std::fputs("Targets:", stderr);
+    for (const auto& t : targets) std::fprintf(stderr, " %s", t->name().c_str());
+    std::fputs("\n", stderr);
+}
+
 struct Options {
+    // runs: cases per target; without --runs, 1000, or no limit with --time-limit.
     std::uint64_t seed = 1, runs = 1000, jobs = 1;
+    bool runs_given = false;
     double time_limit = 0;
     double case_timeout = 30;
     std::vector<std::string> targets;
@@ -73,7 +84,7 @@ bool parse(int argc, char** argv, Options& o) {
             else if (a == "--seed")
                 o.seed = std::stoull(v);
             else if (a == "--runs")
-                o.runs = std::stoull(v);
+                o.runs = std::stoull(v), o.runs_given = true;
             else if (a == "--time-limit")
                 o.time_limit = std::stod(v);
             else if (a == "--case-timeout")
@@ -88,6 +99,8 @@ bool parse(int argc, char** argv, Options& o) {
                 o.config.data_dir = v;
             else if (a == "--max-size")
                 o.config.max_size = std::stoull(v);
+            else if (a == "--max-image-texels")
+                o.config.max_image_texels = std::stoull(v);
             else if (a == "--max-seed-size")
                 o.config.max_seed_size = std::stoull(v);
             else if (a == "--case")
@@ -191,10 +204,13 @@ int main(int argc, char** argv) {
     Options o;
     o.config.assets_dir = SHERPA_FUZZ_ASSETS_DIR;
     o.config.data_dir = SHERPA_FUZZ_DATA_DIR;
+    auto targets = make_targets();
     if (!parse(argc, argv, o)) {
-        std::fputs(kUsage, stderr);
+        print_usage(targets);
         return 2;
     }
+    // --time-limit alone runs until the time is up, not until the default case count.
+    if (o.time_limit > 0 && !o.runs_given) o.runs = UINT64_MAX;
     const bool own_work = o.work.empty(); // a scratch directory of our own: removed at the end
     if (own_work) {
         // Each case is written as files: on a disk, ext4 flushes a rewritten file on
@@ -204,7 +220,6 @@ int main(int argc, char** argv) {
         const fs::path base = ::access(shm.c_str(), W_OK) == 0 ? shm : fs::temp_directory_path(ec);
         o.work = base / ("sherpa-fuzz-" + std::to_string(::getpid()));
     }
-    auto targets = make_targets();
     std::vector<std::pair<std::uint64_t, Target*>> chosen;
     for (std::uint64_t id = 0; id < targets.size(); ++id)
         if (o.targets.empty() ||
@@ -212,7 +227,7 @@ int main(int argc, char** argv) {
             chosen.emplace_back(id, targets[id].get());
     if (chosen.empty() || (!o.targets.empty() && chosen.size() != o.targets.size())) {
         std::fputs("sherpa-fuzz: unknown target\n", stderr);
-        std::fputs(kUsage, stderr);
+        print_usage(targets);
         return 2;
     }
     if (o.time_limit > 0) o.time_limit /= double(chosen.size());

@@ -31,8 +31,8 @@ void put_u32(std::vector<std::uint8_t>& out, std::uint32_t v) {
     for (int i = 0; i < 4; ++i) out.push_back(std::uint8_t(v >> (8 * i)));
 }
 
-// A GLB container (glTF 2.0 spec, section 4.4): header, JSON chunk padded with
-// spaces, optional BIN chunk padded with zeros.
+} // namespace
+
 std::vector<std::uint8_t> make_glb(const std::string& json, std::span<const std::uint8_t> bin) {
     std::string j = json;
     while (j.size() % 4) j += ' ';
@@ -53,7 +53,26 @@ std::vector<std::uint8_t> make_glb(const std::string& json, std::span<const std:
     return out;
 }
 
-} // namespace
+bool split_glb(std::span<const std::uint8_t> glb, std::string& json,
+               std::vector<std::uint8_t>& bin) {
+    auto u32 = [&](std::size_t at) {
+        std::uint32_t v = 0;
+        for (int i = 0; i < 4; ++i) v |= std::uint32_t(glb[at + i]) << (8 * i);
+        return v;
+    };
+    if (glb.size() < 20 || u32(0) != 0x46546C67 || u32(16) != 0x4E4F534A) return false;
+    const std::size_t json_size = u32(12);
+    if (json_size > glb.size() - 20) return false;
+    json.assign(reinterpret_cast<const char*>(glb.data()) + 20, json_size);
+    bin.clear();
+    const std::size_t at = 20 + json_size;
+    if (glb.size() - at >= 8 && u32(at + 4) == 0x004E4942) {
+        const std::size_t size = std::min<std::size_t>(u32(at), glb.size() - at - 8);
+        bin.assign(glb.begin() + std::ptrdiff_t(at + 8),
+                   glb.begin() + std::ptrdiff_t(at + 8 + size));
+    }
+    return true;
+}
 
 bool GltfTarget::init(const TargetConfig& config, std::string& error) {
     config_ = config;
@@ -156,8 +175,13 @@ std::optional<std::string> GltfTarget::load(const LoadOptions& options) {
             if (index >= mesh.vertices.size())
                 return "mesh " + std::to_string(m) + ": index " + std::to_string(index) +
                        " >= vertex count " + std::to_string(mesh.vertices.size());
-        if (mesh.indices.size() % 3)
-            return "mesh " + std::to_string(m) + ": index count is not a multiple of 3";
+        // Indices are lists of the mesh's topology (strips, loops and fans arrive
+        // converted): 3 per triangle, 2 per line, 1 per point.
+        const std::uint32_t per = indices_per_element(mesh.topology());
+        if (mesh.indices.size() % per)
+            return "mesh " + std::to_string(m) + ": " + std::to_string(mesh.indices.size()) +
+                   " indices are not a multiple of " + std::to_string(per) + " (" +
+                   std::string(to_string(mesh.topology())) + ")";
     }
     return std::nullopt;
 }

@@ -6,6 +6,14 @@
 
 namespace sherpa::fuzz {
 
+// A GLB container (glTF 2.0 spec, section 4.4): header, JSON chunk padded with
+// spaces, optional BIN chunk padded with zeros.
+std::vector<std::uint8_t> make_glb(const std::string& json, std::span<const std::uint8_t> bin);
+// The JSON and BIN chunks of a well-formed GLB (false when the header or JSON chunk
+// is not); a BIN chunk longer than the file is cut at its end.
+bool split_glb(std::span<const std::uint8_t> glb, std::string& json,
+               std::vector<std::uint8_t>& bin);
+
 class GltfTarget : public Target {
 public:
     std::string name() const override { return "gltf"; }

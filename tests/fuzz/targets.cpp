@@ -1,7 +1,10 @@
 #include "targets.h"
 
 #include "basis_target.h"
+#include "compressed_targets.h"
 #include "gltf_targets.h"
+#include "image_target.h"
+#include "pose_target.h"
 #include "texture_targets.h"
 
 #include <fstream>
@@ -36,6 +39,10 @@ std::vector<std::unique_ptr<Target>> make_targets() {
     t.push_back(std::make_unique<Ktx2Target>());
     t.push_back(std::make_unique<CacheTarget>());
     t.push_back(std::make_unique<BasisTarget>());
+    t.push_back(std::make_unique<MeshoptTarget>());
+    t.push_back(std::make_unique<DracoTarget>());
+    t.push_back(std::make_unique<ImageTarget>());
+    t.push_back(std::make_unique<PoseTarget>());
     return t;
 }
 

@@ -21,6 +21,9 @@ struct TargetConfig {
     std::filesystem::path data_dir;   // tests/data: hand-made malformed files
     std::filesystem::path work_dir;   // scratch space of this target (created)
     std::size_t max_size = 4u << 20;  // no case file grows beyond this
+    // image target: images whose header declares more texels are probed, not decoded
+    // (0: every image is decoded). For runs before the decoder caps texels itself.
+    std::uint64_t max_image_texels = 0;
     // Seeds (file plus its buffers) above this are left out: a case's cost grows with
     // its size, and the bugs found so far needed a kilobyte or two.
     std::size_t max_seed_size = 320u << 10;
@@ -62,7 +65,8 @@ private:
 // Replaces `path` (a file left by an earlier case) with `bytes`.
 void write_case_file(const std::filesystem::path& path, std::span<const std::uint8_t> bytes);
 
-// "gltf", "glb", "tangents", "ktx2", "cache", "basis", in that order.
+// Every target, in id order. A target's id (its position) seeds its cases, so new
+// targets go at the end: every existing case then replays unchanged.
 std::vector<std::unique_ptr<Target>> make_targets();
 
 } // namespace sherpa::fuzz

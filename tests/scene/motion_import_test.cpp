@@ -122,6 +122,35 @@ TEST(MotionEval, TimesOutsideTheKeysClampAndNaNTimeIsTheFirstKey) {
     }
 }
 
+// A double time just below the last key rounds onto it in float: the key search
+// returned the end and the interval read one key past the values (found by the pose
+// fuzz target under ASan: heap-buffer-overflow in sample_animation). Every
+// interpolation now lands on the last interval, at the last key's value.
+TEST(MotionEval, TimeJustBelowTheLastKeyStaysInsideTheKeys) {
+    for (const auto interpolation : {sherpa::Interpolation::Step, sherpa::Interpolation::Linear,
+                                     sherpa::Interpolation::CubicSpline}) {
+        sherpa::AnimationSampler s;
+        s.interpolation = interpolation;
+        s.width = 3;
+        s.times = {0.0f, 2.0f};
+        const std::size_t per_key = interpolation == sherpa::Interpolation::CubicSpline ? 3 : 1;
+        for (std::size_t k = 0; k < 2 * per_key; ++k)
+            for (float c : {1.0f, 2.0f, 3.0f}) s.values.push_back(c * float(k + 1));
+        const double t = std::nextafter(2.0, 0.0);
+        ASSERT_EQ(static_cast<float>(t), 2.0f);
+        float out[3];
+        sherpa::sample_animation(s, AnimationPath::Translation, t, out);
+        const float* last = &s.values[(per_key == 3 ? 4 : 1) * 3];
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(out[c],
+                        interpolation == sherpa::Interpolation::Step
+                            ? s.values[per_key == 3 ? 3 + c : c]
+                            : last[c],
+                        1e-4f)
+                << c;
+    }
+}
+
 TEST(MotionEval, LinearRotationIsShortestArcSlerp) {
     sherpa::AnimationSampler s;
     s.width = 4;
@@ -227,6 +256,40 @@ TEST(MotionBounds, CullingBoundsContainEveryPosedVertex) {
         }
         EXPECT_GT(checked, 0u) << file;
     }
+}
+
+// A finite pose can still put positions past the float range: an animated scale of
+// 3e38 (STEP key 1, from t = 1) or an inverse bind matrix of 3e38. The skinned node is
+// named and left out; the posed bounds stay finite and are those of the still triangle
+// beside it (x in [3, 4]). Before the fix they were [-inf nan -inf] .. [inf nan inf].
+TEST(MotionBounds, PosesPastTheFloatRangeAreNamedAndLeftOut) {
+    for (const char* file : {"pose_overflow_scale.gltf", "pose_overflow_ibm.gltf"}) {
+        SCOPED_TRACE(file);
+        const auto s = load(data(file));
+        ASSERT_TRUE(s);
+        const sherpa::Pose pose = sherpa::evaluate_pose(*s, 0, 1.3);
+        const sherpa::PosedBounds b = sherpa::posed_scene_bounds(*s, pose);
+        EXPECT_EQ(b.overflow, std::vector<std::uint32_t>{0});
+        ASSERT_TRUE(b.exact.valid() && b.culling.valid());
+        for (const sherpa::Aabb& box : {b.exact, b.culling})
+            EXPECT_TRUE(sherpa::is_finite(box.min) && sherpa::is_finite(box.max));
+        EXPECT_EQ(b.exact.min, glm::vec3(3, 0, 0));
+        EXPECT_EQ(b.exact.max, glm::vec3(4, 1, 0));
+        EXPECT_TRUE(glm::all(glm::lessThanEqual(b.culling.min, b.exact.min)) &&
+                    glm::all(glm::greaterThanEqual(b.culling.max, b.exact.max)));
+        // The cheap per-frame check (the editor's, the CLI's render and cull) agrees.
+        EXPECT_EQ(sherpa::posed_overflow_nodes(*s, pose), std::vector<std::uint32_t>{0});
+        const std::string w = sherpa::posed_overflow_warning(*s, 0);
+        EXPECT_NE(w.find("nodes[0]"), std::string::npos) << w;
+        EXPECT_NE(w.find("overflow the float range"), std::string::npos) << w;
+    }
+    // Before the huge key (t < 1) the scaled rig is in range: nothing to say.
+    const auto s = load(data("pose_overflow_scale.gltf"));
+    const sherpa::Pose early = sherpa::evaluate_pose(*s, 0, 0.5);
+    const sherpa::PosedBounds b = sherpa::posed_scene_bounds(*s, early);
+    EXPECT_TRUE(b.overflow.empty());
+    EXPECT_TRUE(sherpa::posed_overflow_nodes(*s, early).empty());
+    EXPECT_LT(b.exact.min.x, 3.0f) << "the rig is in the bounds again";
 }
 
 } // namespace

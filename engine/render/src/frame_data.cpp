@@ -3,6 +3,7 @@
 #include "renderer_impl.h"
 
 #include <sherpa/render/gpu_structs.h>
+#include <sherpa/scene/culling.h>
 #include <sherpa/scene/shadow_cascades.h>
 
 #include <algorithm>
@@ -12,10 +13,13 @@ namespace sherpa::gpu {
 
 // The bounds shadow cascades are fitted to: the scene's, grown by where its moving
 // instances are in this frame's pose (an arm raised above the bind pose still casts).
+// A box the pose pushed past the float range is left out: one infinite or NaN corner
+// would make every cascade, and so every shadow lookup, NaN.
 Aabb Renderer::Impl::shadow_bounds(const FrameContext& frame) const {
     Aabb b = lighting_.bounds;
     if (frame.slot.posed)
-        for (const Aabb& box : frame.slot.posed_bounds) b.expand(box);
+        for (const Aabb& box : frame.slot.posed_bounds)
+            if (!box.valid() || !box_is_invalid(box.min, box.max)) b.expand(box);
     return b;
 }
 

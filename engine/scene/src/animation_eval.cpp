@@ -59,9 +59,11 @@ void sample_animation(const AnimationSampler& s, AnimationPath path, double time
         std::copy(v, v + w, out);
         return finish();
     }
-    // Key k with times[k] <= t < times[k + 1].
+    // Key k with times[k] <= t < times[k + 1]. The search is in float: a double time just
+    // below the last key can round onto it (upper_bound then returns end), so k stops at
+    // the last interval (u comes out ~1 there).
     const auto it = std::upper_bound(s.times.begin(), s.times.end(), static_cast<float>(t));
-    const std::size_t k = static_cast<std::size_t>(it - s.times.begin()) - 1;
+    const std::size_t k = std::min(static_cast<std::size_t>(it - s.times.begin()), n - 1) - 1;
     const double t0 = s.times[k], t1 = s.times[k + 1], dt = t1 - t0;
     const float u = static_cast<float>(std::clamp((t - t0) / dt, 0.0, 1.0));
     const float *a = value(k), *b = value(k + 1);

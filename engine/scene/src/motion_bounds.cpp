@@ -3,6 +3,7 @@
 #include "motion_internal.h"
 
 #include <sherpa/scene/animation.h>
+#include <sherpa/scene/culling.h>
 
 #include <algorithm>
 #include <cmath>
@@ -24,6 +25,11 @@ Aabb padded(const Aabb& b) {
     const glm::vec3 mag = glm::max(glm::abs(b.min), glm::abs(b.max));
     const float pad = 1e-5f * std::max({mag.x, mag.y, mag.z, 1e-30f});
     return Aabb::from_min_max(b.min - glm::vec3(pad), b.max + glm::vec3(pad));
+}
+
+// A box the pose pushed past the float range (inf, or NaN from inf - inf).
+bool overflows(const Aabb& b) {
+    return b.valid() && box_is_invalid(b.min, b.max);
 }
 
 } // namespace
@@ -117,13 +123,42 @@ PosedBounds posed_scene_bounds(const Scene& scene, const Pose& pose) {
     for (std::uint32_t n : scene.displayed_nodes) {
         const Node& node = scene.nodes[n];
         if (node.mesh < 0) continue;
+        bool overflow = false;
         for (const PrimitiveInfo& p : scene.primitives) {
             if (p.mesh != static_cast<std::uint32_t>(node.mesh) || p.engine_mesh < 0) continue;
-            for (const glm::vec3& v : posed_positions(scene, pose, n, p)) out.exact.expand(v);
-            out.culling.expand(culling_bounds(scene, pose, n, p));
+            const std::vector<glm::vec3> posed = posed_positions(scene, pose, n, p);
+            const Aabb culling = culling_bounds(scene, pose, n, p);
+            // Both boxes leave out what either cannot bound, so the conservative one
+            // still holds the exact one.
+            if (overflows(culling) || !std::all_of(posed.begin(), posed.end(),
+                                                   [](glm::vec3 v) { return is_finite(v); })) {
+                overflow = true;
+                continue;
+            }
+            for (const glm::vec3& v : posed) out.exact.expand(v);
+            out.culling.expand(culling);
         }
+        if (overflow) out.overflow.push_back(n);
     }
     return out;
+}
+
+std::vector<std::uint32_t> posed_overflow_nodes(const Scene& scene, const Pose& pose) {
+    const std::vector<Aabb> boxes = instance_culling_bounds(scene, pose);
+    std::vector<std::uint32_t> out;
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const std::uint32_t node = scene.instances[i].node_id;
+        if (overflows(boxes[i]) && std::find(out.begin(), out.end(), node) == out.end())
+            out.push_back(node);
+    }
+    return out;
+}
+
+std::string posed_overflow_warning(const Scene& scene, std::uint32_t node) {
+    const std::string& name = node < scene.nodes.size() ? scene.nodes[node].name : std::string();
+    return "nodes[" + std::to_string(node) + "]" + (name.empty() ? "" : " \"" + name + "\"") +
+           ": posed bounds of its mesh overflow the float range (joint matrices, node transforms "
+           "or morph weights x positions); left out of the posed bounds";
 }
 
 namespace detail {

@@ -3,6 +3,7 @@
 // Nothing here changes the Scene except apply_pose_bounds(); the renderer poses on the GPU
 // (RenderSettings::pose).
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -43,6 +44,8 @@ std::vector<glm::vec3> posed_positions(const Scene& scene, const Pose& pose, std
 // Conservative world bounds of the same vertices, from the per-joint boxes computed at
 // load (PrimitiveMotion::boxes) with the morph delta boxes scaled by the current
 // weights: always contains posed_positions, costs O(joints + targets), not O(vertices).
+// Not finite where the pose leaves the float range (posed_overflow_nodes()): culling
+// then keeps the instance (an invalid box is never culled).
 Aabb culling_bounds(const Scene& scene, const Pose& pose, std::uint32_t node,
                     const PrimitiveInfo& prim);
 
@@ -60,10 +63,23 @@ void apply_pose_bounds(Scene& scene, const Pose& pose);
 // renormalised); no skins, morph targets or animations are left. Costs O(vertices).
 Scene freeze_pose(const Scene& scene, const Pose& pose);
 
-// Exact and conservative bounds of the displayed scene's instances in `pose`.
+// Exact and conservative bounds of the displayed scene's instances in `pose`. A finite
+// pose can still put positions past the float range (a joint matrix, scale or morph
+// weight near 3e38 gives inf, and inf - inf NaN): such an instance is left out of both
+// boxes, which stay finite, and its node is listed in `overflow` (once, in displayed
+// order). The static path refuses the same at load (world bounds overflow).
 struct PosedBounds {
     Aabb exact, culling;
+    std::vector<std::uint32_t> overflow; // nodes whose posed bounds leave the float range
 };
 PosedBounds posed_scene_bounds(const Scene& scene, const Pose& pose);
+
+// Nodes of the displayed scene's instances whose conservative posed bounds
+// (instance_culling_bounds()) leave the float range, once each in instance order.
+// O(joints + targets): cheap enough to run on every pose the editor shows.
+std::vector<std::uint32_t> posed_overflow_nodes(const Scene& scene, const Pose& pose);
+
+// The warning for an overflowing node: names it and the cause, says what it costs.
+std::string posed_overflow_warning(const Scene& scene, std::uint32_t node);
 
 } // namespace sherpa

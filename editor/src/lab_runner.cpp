@@ -91,45 +91,61 @@ template <class F> void post(LabRunner* runner, F f) {
 
 void LabRunner::start(const QString& family_name, const QString& spec) {
     std::shared_ptr<Job> job = begin();
-    workers_ << QtConcurrent::run(
-        &pool_, [this, job, family = family_name.toStdString(), path = spec.toStdString()] {
-            lower_worker_priority();
-            std::unique_ptr<lab::Family> family_ptr = lab::make_family(family);
-            auto fail = [this, job](QString error) {
-                post(this, [this, job, error] {
-                    if (job != job_) return;
-                    end(job);
-                    Q_EMIT failed(error);
-                });
-            };
-            if (!family_ptr) return fail(QStringLiteral("unknown family '%1'").arg(family.c_str()));
-            LoadResult loaded = load_scene(path, lab::lab_load_options());
-            if (job->cancel.cancelled()) return;
-            if (!loaded) return fail(QString::fromStdString(loaded.error));
-            lab::RunControl control;
-            control.cancel = &job->cancel;
-            control.progress = [this, job](std::size_t done, std::size_t total) {
-                if (!job->progress_due()) return;
-                post(this, [this, job, done, total] {
-                    if (job == job_) Q_EMIT progress(int(done), int(total));
-                });
-            };
-            auto report =
-                std::make_shared<const lab::FamilyReport>(family_ptr->run(*loaded.scene, control));
-            if (report->cancelled) return;
-            post(this, [this, job, report] {
+    workers_ << QtConcurrent::run(&pool_, [this, job, family = family_name.toStdString(),
+                                           path = spec.toStdString()] {
+        lower_worker_priority();
+        std::unique_ptr<lab::Family> family_ptr = lab::make_family(family);
+        auto fail = [this, job](QString error) {
+            post(this, [this, job, error] {
                 if (job != job_) return;
                 end(job);
-                Q_EMIT finished(report);
+                Q_EMIT failed(error);
             });
+        };
+        if (!family_ptr) return fail(QStringLiteral("unknown family '%1'").arg(family.c_str()));
+        LoadResult loaded = load_scene(path, lab::lab_load_options());
+        if (job->cancel.cancelled()) return;
+        if (!loaded) return fail(QString::fromStdString(loaded.error));
+        lab::RunControl control;
+        control.cancel = &job->cancel;
+        control.progress = [this, job](std::size_t done, std::size_t total) {
+            if (!job->progress_due()) return;
+            post(this, [this, job, done, total] {
+                if (job == job_) Q_EMIT progress(int(done), int(total));
+            });
+        };
+        std::shared_ptr<const lab::FamilyReport> report;
+        try { // nothing may escape a pool thread
+            report =
+                std::make_shared<const lab::FamilyReport>(family_ptr->run(*loaded.scene, control));
+        } catch (const std::exception& e) {
+            return fail(QString::fromUtf8(e.what()));
+        }
+        if (report->cancelled) return;
+        post(this, [this, job, report] {
+            if (job != job_) return;
+            end(job);
+            Q_EMIT finished(report);
         });
+    });
 }
 
 void LabRunner::startBudget(std::shared_ptr<const Scene> scene) {
     std::shared_ptr<Job> job = begin();
     workers_ << QtConcurrent::run(&pool_, [this, job, scene = std::move(scene)] {
         lower_worker_priority();
-        auto report = std::make_shared<const lab::BudgetReport>(lab::build_budget(*scene));
+        std::shared_ptr<const lab::BudgetReport> report;
+        try { // nothing may escape a pool thread
+            report = std::make_shared<const lab::BudgetReport>(lab::build_budget(*scene));
+        } catch (const std::exception& e) {
+            const QString error = QString::fromUtf8(e.what());
+            post(this, [this, job, error] {
+                if (job != job_) return;
+                end(job);
+                Q_EMIT failed(error);
+            });
+            return;
+        }
         if (job->cancel.cancelled()) return;
         post(this, [this, job, report] {
             if (job != job_) return;

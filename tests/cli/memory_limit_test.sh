@@ -61,8 +61,11 @@ run export 1 textures "$bombs" --export-source "$work/export"
 expect_bombs export
 [ -s "$work/export/good_2x2.png" ] || { echo "FAIL export: good_2x2.png not written"; failures=$((failures + 1)); }
 run budget 0 budget "$bombs" --json
+expect_bombs budget
 run compare 0 compare "$bombs" "$bombs" --json
+expect_bombs compare
 run lab 0 lab "$bombs" --family textures --json
+expect_bombs lab
 run render 0 render "$bombs" -o "$work/render.png" --width 32 --height 32 --cache-dir "$work/cache"
 expect_bombs render
 [ -s "$work/render.png" ] || { echo "FAIL render: no image written"; failures=$((failures + 1)); }

@@ -100,7 +100,9 @@ INSTANTIATE_TEST_SUITE_P(
         Edit{"texture_index_missing", kImages, "/materials/0/occlusionTexture",
              json{{"texCoord", 0}},
              "materials[0].occlusionTexture.index: required property is missing"}),
-    [](const ::testing::TestParamInfo<Edit>& info) { return std::string(info.param.name); });
+    [](const ::testing::TestParamInfo<Edit>& param_info) {
+        return std::string(param_info.param.name);
+    });
 
 // The view declares 1.8 GB (its fallback buffer has no bytes); the stream decodes 3
 // positions. Before, the importer filled the declared byteLength (1.84 GB of RSS); the

@@ -76,8 +76,9 @@ TEST(DeclaredImageSize, ReadsPngJpegAndWebpHeaders) {
     EXPECT_EQ(size->width, w);
     EXPECT_EQ(size->height, h);
     // Cut short or not an image: nothing is claimed.
-    EXPECT_FALSE(declared_image_size(std::vector<std::uint8_t>(
-        bytes_of("bomb_30000.png").begin(), bytes_of("bomb_30000.png").begin() + 20)));
+    std::vector<std::uint8_t> cut = bytes_of("bomb_30000.png");
+    cut.resize(20);
+    EXPECT_FALSE(declared_image_size(cut));
     EXPECT_FALSE(declared_image_size(bytes_of("bomb_uastc_zstd.ktx2")));
 }
 

@@ -87,70 +87,77 @@ template <class F> void post(LabRunner* runner, F f) {
     QMetaObject::invokeMethod(runner, std::move(f), Qt::QueuedConnection);
 }
 
+// Nothing may escape a pool thread (the future would hold it unseen and the run
+// would never end): a failure of the family or the budget becomes the run's error.
+template <class F> auto guarded(F f, QString& error) -> decltype(f()) {
+    try {
+        return f();
+    } catch (const std::exception& e) {
+        error = QString::fromUtf8(e.what());
+        return nullptr;
+    }
+}
+
 } // namespace
 
 void LabRunner::start(const QString& family_name, const QString& spec) {
     std::shared_ptr<Job> job = begin();
-    workers_ << QtConcurrent::run(&pool_, [this, job, family = family_name.toStdString(),
-                                           path = spec.toStdString()] {
-        lower_worker_priority();
-        std::unique_ptr<lab::Family> family_ptr = lab::make_family(family);
-        auto fail = [this, job](QString error) {
-            post(this, [this, job, error] {
+    workers_ << QtConcurrent::run(
+        &pool_, [this, job, family = family_name.toStdString(), path = spec.toStdString()] {
+            lower_worker_priority();
+            std::unique_ptr<lab::Family> family_ptr = lab::make_family(family);
+            auto fail = [this, job](QString error) {
+                post(this, [this, job, error] {
+                    if (job != job_) return;
+                    end(job);
+                    Q_EMIT failed(error);
+                });
+            };
+            if (!family_ptr) return fail(QStringLiteral("unknown family '%1'").arg(family.c_str()));
+            LoadResult loaded = load_scene(path, lab::lab_load_options());
+            if (job->cancel.cancelled()) return;
+            if (!loaded) return fail(QString::fromStdString(loaded.error));
+            lab::RunControl control;
+            control.cancel = &job->cancel;
+            control.progress = [this, job](std::size_t done, std::size_t total) {
+                if (!job->progress_due()) return;
+                post(this, [this, job, done, total] {
+                    if (job == job_) Q_EMIT progress(int(done), int(total));
+                });
+            };
+            QString error;
+            auto report = guarded(
+                [&] {
+                    return std::make_shared<const lab::FamilyReport>(
+                        family_ptr->run(*loaded.scene, control));
+                },
+                error);
+            if (!report) return fail(error);
+            if (report->cancelled) return;
+            post(this, [this, job, report] {
                 if (job != job_) return;
                 end(job);
-                Q_EMIT failed(error);
+                Q_EMIT finished(report);
             });
-        };
-        if (!family_ptr) return fail(QStringLiteral("unknown family '%1'").arg(family.c_str()));
-        LoadResult loaded = load_scene(path, lab::lab_load_options());
-        if (job->cancel.cancelled()) return;
-        if (!loaded) return fail(QString::fromStdString(loaded.error));
-        lab::RunControl control;
-        control.cancel = &job->cancel;
-        control.progress = [this, job](std::size_t done, std::size_t total) {
-            if (!job->progress_due()) return;
-            post(this, [this, job, done, total] {
-                if (job == job_) Q_EMIT progress(int(done), int(total));
-            });
-        };
-        std::shared_ptr<const lab::FamilyReport> report;
-        try { // nothing may escape a pool thread
-            report =
-                std::make_shared<const lab::FamilyReport>(family_ptr->run(*loaded.scene, control));
-        } catch (const std::exception& e) {
-            return fail(QString::fromUtf8(e.what()));
-        }
-        if (report->cancelled) return;
-        post(this, [this, job, report] {
-            if (job != job_) return;
-            end(job);
-            Q_EMIT finished(report);
         });
-    });
 }
 
 void LabRunner::startBudget(std::shared_ptr<const Scene> scene) {
     std::shared_ptr<Job> job = begin();
     workers_ << QtConcurrent::run(&pool_, [this, job, scene = std::move(scene)] {
         lower_worker_priority();
-        std::shared_ptr<const lab::BudgetReport> report;
-        try { // nothing may escape a pool thread
-            report = std::make_shared<const lab::BudgetReport>(lab::build_budget(*scene));
-        } catch (const std::exception& e) {
-            const QString error = QString::fromUtf8(e.what());
-            post(this, [this, job, error] {
-                if (job != job_) return;
-                end(job);
-                Q_EMIT failed(error);
-            });
-            return;
-        }
+        QString error;
+        auto report = guarded(
+            [&] { return std::make_shared<const lab::BudgetReport>(lab::build_budget(*scene)); },
+            error);
         if (job->cancel.cancelled()) return;
-        post(this, [this, job, report] {
+        post(this, [this, job, report, error] {
             if (job != job_) return;
             end(job);
-            Q_EMIT budgetFinished(report);
+            if (report)
+                Q_EMIT budgetFinished(report);
+            else
+                Q_EMIT failed(error);
         });
     });
 }

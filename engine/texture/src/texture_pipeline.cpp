@@ -162,7 +162,7 @@ std::vector<ImageProblem> find_image_problems(const Scene& scene) {
                      ? probe_ktx2_basis(img.encoded, p.reason)
                      : probe_encoded_image(img.encoded, image_decoder_hint(img), p.reason)))
                 continue;
-            if (is_ktx2(img.encoded)) p.reason = image_decoder_hint(img) + ": " + p.reason;
+            p.reason = without_hint(img, p.reason); // the location names the file
             p.state = CacheState::Undecodable;
         }
         problems.push_back(std::move(p));

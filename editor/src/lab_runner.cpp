@@ -87,6 +87,17 @@ template <class F> void post(LabRunner* runner, F f) {
     QMetaObject::invokeMethod(runner, std::move(f), Qt::QueuedConnection);
 }
 
+// Nothing may escape a pool thread (the future would hold it unseen and the run
+// would never end): a failure of the family or the budget becomes the run's error.
+template <class F> auto guarded(F f, QString& error) -> decltype(f()) {
+    try {
+        return f();
+    } catch (const std::exception& e) {
+        error = QString::fromUtf8(e.what());
+        return nullptr;
+    }
+}
+
 } // namespace
 
 void LabRunner::start(const QString& family_name, const QString& spec) {
@@ -114,8 +125,14 @@ void LabRunner::start(const QString& family_name, const QString& spec) {
                     if (job == job_) Q_EMIT progress(int(done), int(total));
                 });
             };
-            auto report =
-                std::make_shared<const lab::FamilyReport>(family_ptr->run(*loaded.scene, control));
+            QString error;
+            auto report = guarded(
+                [&] {
+                    return std::make_shared<const lab::FamilyReport>(
+                        family_ptr->run(*loaded.scene, control));
+                },
+                error);
+            if (!report) return fail(error);
             if (report->cancelled) return;
             post(this, [this, job, report] {
                 if (job != job_) return;
@@ -129,12 +146,18 @@ void LabRunner::startBudget(std::shared_ptr<const Scene> scene) {
     std::shared_ptr<Job> job = begin();
     workers_ << QtConcurrent::run(&pool_, [this, job, scene = std::move(scene)] {
         lower_worker_priority();
-        auto report = std::make_shared<const lab::BudgetReport>(lab::build_budget(*scene));
+        QString error;
+        auto report = guarded(
+            [&] { return std::make_shared<const lab::BudgetReport>(lab::build_budget(*scene)); },
+            error);
         if (job->cancel.cancelled()) return;
-        post(this, [this, job, report] {
+        post(this, [this, job, report, error] {
             if (job != job_) return;
             end(job);
-            Q_EMIT budgetFinished(report);
+            if (report)
+                Q_EMIT budgetFinished(report);
+            else
+                Q_EMIT failed(error);
         });
     });
 }

@@ -18,6 +18,7 @@
 #include <sherpa/texture/bc5_normal.h>
 #include <sherpa/texture/block_codecs.h>
 #include <sherpa/texture/prepared_levels.h>
+#include <sherpa/texture/texel_budget.h>
 #include <sherpa/texture/texture_pipeline.h>
 
 namespace sherpa::editor {
@@ -72,6 +73,15 @@ QImage decode_thumbnail(const Scene& scene, const TextureRecord& texture, QSize&
     buffer.open(QIODevice::ReadOnly);
     QImageReader reader(&buffer);
     source_size = reader.size(); // from the header, no decode
+    // A header declaring more than the texel budget is a bomb, named by the texture
+    // pipeline; Qt's own allocation limit may not apply to a scaled JPEG decode.
+    std::string too_large;
+    if (source_size.isValid() &&
+        !tex::check_texel_budget(std::uint64_t(source_size.width()),
+                                 std::uint64_t(source_size.height()), {}, too_large)) {
+        source_size = {};
+        return {};
+    }
     if (source_size.isValid())
         // JPEG decodes straight to a reduced size (DCT scaling): 2048² in a few ms.
         reader.setScaledSize(
@@ -149,7 +159,14 @@ void SceneLoadJob::start(const QString& spec, const TexturePlan& plan,
     };
     ++g_in_flight;
     watcher_->setFuture(QtConcurrent::run([spec, state, plan, tangents] {
-        LoadOutcome out = run_load(spec, plan, state.get(), tangents);
+        LoadOutcome out;
+        // Nothing may escape the worker: the future would rethrow it in the UI thread.
+        try {
+            out = run_load(spec, plan, state.get(), tangents);
+        } catch (const std::exception& e) {
+            out = {};
+            out.error = spec + QStringLiteral(": ") + QString::fromUtf8(e.what());
+        }
         --g_in_flight;
         return out;
     }));

@@ -186,3 +186,43 @@ TEST(CacheRobustness, SecondMakerWaitsForFirstAndReusesItsEntry) {
     fs::remove_all(dir);
     fs::remove_all(made_elsewhere);
 }
+
+// A regular file where the cache directory belongs: every lock failed and the warning
+// blamed "another process"; now the file is named once and the textures are made.
+TEST(CacheRobustness, CacheDirectoryThatIsAFileIsNamedAndBypassed) {
+    const auto dir = test::fresh_temp_dir("cache-is-file");
+    const fs::path not_a_dir = dir / "textures";
+    write_bytes(not_a_dir, 10);
+    const PreparedTextureSet set = prepare_textures(one_texture_scene(), options_for(not_a_dir));
+    ASSERT_EQ(set.textures.size(), 1u);
+    EXPECT_FALSE(set.textures[0].failed);
+    EXPECT_FALSE(set.textures[0].levels.empty());
+    ASSERT_EQ(set.warnings.size(), 1u);
+    EXPECT_EQ(set.warnings[0], "texture cache: " + not_a_dir.string() +
+                                   ": is a regular file, not a directory; textures are made "
+                                   "without the cache");
+    fs::remove_all(dir);
+}
+
+// Lock files are empty and were never removed; one a minute old that nobody holds is.
+TEST(CacheRobustness, StaleUnheldLockFilesAreRemoved) {
+    const auto dir = test::fresh_temp_dir("cache-locks");
+    const TextureCache cache(dir);
+    const Hash128 held_key{1, 2};
+    std::optional<EntryLock> held(cache.lock_entry(held_key, std::chrono::milliseconds(0)));
+    ASSERT_TRUE(held->held());
+    const fs::path held_lock = fs::path(cache.file_for(held_key).string() + ".lock");
+    const fs::path stale = dir / "00000000000000000000000000000003.ktx2.lock";
+    const fs::path fresh = dir / "00000000000000000000000000000004.ktx2.lock";
+    write_bytes(stale, 0);
+    write_bytes(fresh, 0);
+    const auto two_minutes_ago = fs::file_time_type::clock::now() - std::chrono::minutes(2);
+    fs::last_write_time(stale, two_minutes_ago);
+    fs::last_write_time(held_lock, two_minutes_ago);
+    cache.evict();
+    EXPECT_FALSE(fs::exists(stale));
+    EXPECT_TRUE(fs::exists(fresh));     // may be one a maker just opened
+    EXPECT_TRUE(fs::exists(held_lock)); // its holder is making the entry
+    held.reset();
+    fs::remove_all(dir);
+}

@@ -33,6 +33,8 @@ struct Stream {
     std::string mode, filter = "NONE";
 };
 
+// An integer property of the extension object. validate_gltf_bytes checked it in the
+// raw JSON (within int's range: tinygltf wraps larger values; see json_checker.h).
 std::size_t number(const tinygltf::Value& ext, const char* key, const std::string& where,
                    bool required) {
     if (!ext.Has(key)) {
@@ -40,10 +42,10 @@ std::size_t number(const tinygltf::Value& ext, const char* key, const std::strin
         return 0;
     }
     const tinygltf::Value& v = ext.Get(key);
-    if (!v.IsNumber() || v.GetNumberAsDouble() < 0 || v.GetNumberAsDouble() > 9.0e15 ||
-        v.GetNumberAsDouble() != static_cast<double>(v.GetNumberAsInt()))
+    const double d = v.IsNumber() ? v.GetNumberAsDouble() : -1.0;
+    if (!(d >= 0 && d <= 9.0e15) || d != static_cast<double>(static_cast<std::uint64_t>(d)))
         fail(where + "." + key + ": not a non-negative integer");
-    return static_cast<std::size_t>(v.GetNumberAsInt());
+    return static_cast<std::size_t>(d);
 }
 
 std::string text(const tinygltf::Value& ext, const char* key, const std::string& where,
@@ -121,6 +123,16 @@ std::string hex(unsigned byte) {
     return text;
 }
 
+// The most bytes `length` compressed bytes can decode to, from the minimum sizes
+// meshoptimizer's decoders (bitstream version 0, the one check_version lets through)
+// demand before decoding: a vertex block spends at least 2 header bits per 16 bytes of
+// a byte column (64:1), an index buffer 1 byte per triangle plus 17 (3 indices of at
+// most 4 bytes: 12:1), an index sequence 1 byte per index plus 5 (4:1).
+std::uint64_t max_decoded_bytes(const Stream& s, std::uint64_t length) {
+    const std::uint64_t ratio = s.mode == "ATTRIBUTES" ? 64 : s.mode == "TRIANGLES" ? 12 : 4;
+    return length * ratio; // length < 2^53: no wrap
+}
+
 int decode(std::uint8_t* out, const Stream& s, std::span<const std::uint8_t> data) {
     if (s.mode == "ATTRIBUTES")
         return meshopt_decodeVertexBuffer(out, s.count, s.stride, data.data(), data.size());
@@ -160,11 +172,22 @@ std::vector<DecodedView> decode_meshopt_views(tinygltf::Model& model) {
                      std::to_string(view.byteLength));
             const std::span<const std::uint8_t> data(source.data() + s.offset, s.length);
             check_version(data, s, where);
+            // The view's byteLength is only declared (its fallback buffer has no bytes,
+            // and may claim gigabytes): what is allocated is what the stream decodes,
+            // and that is bounded by the stream's own size first.
+            if (*size > max_decoded_bytes(s, s.length))
+                fail(where + ": count " + std::to_string(s.count) + " x byteStride " +
+                     std::to_string(s.stride) + " = " + std::to_string(*size) +
+                     " bytes cannot come from a " + std::to_string(s.length) + "-byte " + s.mode +
+                     " stream (at most " + std::to_string(max_decoded_bytes(s, s.length)) +
+                     "): corrupt");
             const auto t0 = std::chrono::steady_clock::now();
-            // The view keeps its byteLength (accessors were checked against it); the
-            // bytes past count x stride stay zero.
+            // The view shrinks to the decoded bytes: an accessor reading past them is
+            // refused by the accessor reader ("past the end of bufferViews[N]") rather
+            // than shown zeros the file never held.
             tinygltf::Buffer out;
-            out.data.assign(view.byteLength, 0);
+            out.data.assign(*size, 0);
+            view.byteLength = *size;
             if (const int rc = decode(out.data.data(), s, data); rc != 0)
                 fail(where + ": the " + s.mode + " stream does not decode (meshoptimizer error " +
                      std::to_string(rc) + ": truncated or corrupt data)");

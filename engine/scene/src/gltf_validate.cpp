@@ -1,6 +1,7 @@
 #include "gltf_validate.h"
 
 #include "checked_math.h"
+#include "json_checker.h"
 
 #include <sherpa/scene/gltf_extensions.h>
 
@@ -14,7 +15,6 @@
 namespace sherpa::detail {
 namespace {
 
-using nlohmann::json;
 using Bytes = std::span<const std::uint8_t>;
 
 bool starts_with(Bytes b, const char* magic, std::size_t at = 0) {
@@ -79,73 +79,6 @@ std::string check_depth(Bytes b) {
            std::to_string(at) + "); no glTF needs that, and parsing it would overflow the stack";
 }
 
-std::string describe(const json& v) {
-    std::string s = v.dump(-1, ' ', true, json::error_handler_t::replace);
-    return s.size() > 40 ? s.substr(0, 37) + "..." : s;
-}
-
-// Raw JSON property checks: the properties whose values index memory or other
-// arrays, which tinygltf would silently turn into 0 or -1 when mistyped.
-struct Checker {
-    std::string error;
-
-    // JSON value `v` at `path` as an integer in [lo, hi].
-    std::optional<std::uint64_t> value(const json& v, const std::string& path, std::uint64_t lo,
-                                       std::uint64_t hi) {
-        if (!error.empty()) return std::nullopt;
-        if (!v.is_number_unsigned()) { // nlohmann stores every integer >= 0 as unsigned
-            error = path + ": " + describe(v) + " is not a non-negative integer";
-            return std::nullopt;
-        }
-        const std::uint64_t x = v.get<std::uint64_t>();
-        if (x < lo || x > hi) {
-            error = path + ": " + std::to_string(x) + " is out of the range " + std::to_string(lo) +
-                    ".." + std::to_string(hi);
-            return std::nullopt;
-        }
-        return x;
-    }
-    // An optional (or required) integer property in [lo, hi].
-    std::optional<std::uint64_t> uint(const json& obj, const char* key, const std::string& where,
-                                      std::uint64_t lo, std::uint64_t hi, bool required = false) {
-        if (!error.empty() || !obj.is_object()) return std::nullopt;
-        const auto it = obj.find(key);
-        if (it != obj.end()) return value(*it, where + "." + key, lo, hi);
-        if (required) error = where + "." + key + ": required property is missing";
-        return std::nullopt;
-    }
-    std::optional<std::uint64_t> index(const json& obj, const char* key, const std::string& where,
-                                       bool required = false) {
-        return uint(obj, key, where, 0, 0x7FFFFFFF, required);
-    }
-    void index_array(const json& obj, const char* key, const std::string& where) {
-        if (!error.empty() || !obj.is_object() || !obj.contains(key)) return;
-        const json& a = obj[key];
-        if (!a.is_array()) {
-            error = where + "." + key + ": is not an array";
-            return;
-        }
-        for (std::size_t i = 0; i < a.size(); ++i)
-            value(a[i], where + "." + key + "[" + std::to_string(i) + "]", 0, 0x7FFFFFFF);
-    }
-    // Each element of top-level array `key`, with its JSON path.
-    template <typename F> void each(const json& root, const char* key, F&& f) {
-        if (!error.empty() || !root.contains(key)) return;
-        const json& a = root[key];
-        if (!a.is_array()) {
-            error = std::string(key) + ": is not an array";
-            return;
-        }
-        for (std::size_t i = 0; i < a.size() && error.empty(); ++i) {
-            const std::string where = std::string(key) + "[" + std::to_string(i) + "]";
-            if (!a[i].is_object())
-                error = where + ": is not a JSON object";
-            else
-                f(a[i], where);
-        }
-    }
-};
-
 // The problem with a buffer's relative-path URI, or "": tinygltf decodes percent
 // escapes leniently, so "%zz" and "%00" became a truncated or empty path.
 std::string uri_problem(const std::string& uri) {
@@ -160,8 +93,6 @@ std::string uri_problem(const std::string& uri) {
     }
     return {};
 }
-
-constexpr std::uint64_t kMaxSafe = (std::uint64_t{1} << 53) - 1; // JSON's exact integers
 
 // asset.version and asset.minVersion: Sherpa reads glTF 2.0.
 std::string check_asset(const json& root) {
@@ -306,7 +237,8 @@ std::string validate_gltf_bytes(std::span<const std::uint8_t> bytes) {
     if (!root.is_object()) return "the top-level JSON value is not an object: not a glTF file";
     if (std::string e = check_asset(root); !e.empty()) return e;
     if (std::string e = check_required_extensions(root); !e.empty()) return e;
-    return check_properties(root);
+    if (std::string e = check_properties(root); !e.empty()) return e;
+    return check_extension_properties(root);
 }
 
 std::size_t json_depth_exceeded_at(std::span<const std::uint8_t> text, std::size_t limit) {

@@ -28,7 +28,10 @@ fs::path lock_file_for(const fs::path& entry) {
 }
 
 void remove_unused_lock(const fs::path& entry) {
-    const fs::path lock = lock_file_for(entry);
+    remove_lock_if_unused(lock_file_for(entry));
+}
+
+void remove_lock_if_unused(const fs::path& lock) {
     const int fd = ::open(lock.c_str(), O_RDWR | O_CLOEXEC | O_NOFOLLOW);
     if (fd < 0) return;
     if (::flock(fd, LOCK_EX | LOCK_NB) == 0) ::unlink(lock.c_str());

@@ -17,5 +17,7 @@ std::filesystem::path lock_file_for(const std::filesystem::path& entry);
 // Removes the lock file of an evicted entry unless someone holds it (a holder is
 // making the entry again; its lock must stay what others wait on).
 void remove_unused_lock(const std::filesystem::path& entry);
+// The same for a lock file's own path.
+void remove_lock_if_unused(const std::filesystem::path& lock);
 
 } // namespace sherpa::tex

@@ -255,7 +255,7 @@ void write_texels(const std::vector<Endpoint>& endpoints, const std::vector<Sele
 } // namespace
 
 bool decode_etc1s_levels(const Ktx2BasisFile& file, std::vector<RgbaImage>& levels,
-                         std::string& error) {
+                         std::string& error, std::size_t level_count) {
     const auto sgd = file.global_data;
     constexpr std::size_t kHeader = 20, kImageDesc = 20;
     const std::size_t images = file.levels.size();
@@ -282,10 +282,10 @@ bool decode_etc1s_levels(const Ktx2BasisFile& file, std::vector<RgbaImage>& leve
         !read_tables(section(2), books, error))
         return error = "BasisLZ global data: " + error, false;
 
-    levels.resize(images);
+    levels.resize(std::min(images, level_count));
     std::vector<Endpoint> endpoints;
     std::vector<Selector> selectors;
-    for (std::size_t l = 0; l < images; ++l) {
+    for (std::size_t l = 0; l < levels.size(); ++l) {
         const auto desc = sgd.subspan(kHeader + kImageDesc * l, kImageDesc);
         const std::string where = "level " + std::to_string(l) + ": ";
         if (le32(desc, 0) != 0) return error = where + "texture video P-frames unsupported", false;

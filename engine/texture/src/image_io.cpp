@@ -2,11 +2,13 @@
 // writing of rendered frames: the engine's one image I/O module.
 #include <sherpa/core/file_io.h>
 #include <sherpa/texture/image.h>
+#include <sherpa/texture/texel_budget.h>
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <new>
 
 namespace sherpa::tex {
 
@@ -47,6 +49,9 @@ bool read_from(OIIO::ImageInput* in, std::string_view name, RgbaImage& out, std:
         error = std::string(name) + ": image has no pixels";
         return false;
     }
+    // Any format OpenImageIO reads: its header's size, before the pixels are allocated.
+    if (!check_texel_budget(std::uint64_t(spec.width), std::uint64_t(spec.height), name, error))
+        return false;
     const int channels = std::min(spec.nchannels, 4);
     std::vector<std::uint8_t> raw(std::size_t(spec.width) * spec.height * channels);
     if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data())) {
@@ -65,19 +70,32 @@ namespace {
 template <typename Read>
 bool with_encoded_image(std::span<const std::uint8_t> bytes, std::string_view name_hint,
                         std::string& error, Read read) {
-    // The proxy must be attached before open(), which then reads from it.
-    OIIO::Filesystem::IOMemReader reader(const_cast<std::uint8_t*>(bytes.data()), bytes.size());
-    auto in = OIIO::ImageInput::create(std::string(name_hint), false, nullptr, &reader);
-    OIIO::ImageSpec spec;
-    if (!in || !in->supports("ioproxy") || !in->set_ioproxy(&reader) ||
-        !in->open(std::string(name_hint), spec, unassociated_alpha_config())) {
-        error =
-            std::string(name_hint) + ": cannot decode: " + (in ? in->geterror() : OIIO::geterror());
+    // PNG, JPEG and WebP sizes are read from their headers before any decoder sees
+    // them: some decoders allocate the declared size as soon as they are opened.
+    if (const auto declared = declared_image_size(bytes);
+        declared && !check_texel_budget(declared->width, declared->height, name_hint, error))
         return false;
+    try {
+        // The proxy must be attached before open(), which then reads from it.
+        OIIO::Filesystem::IOMemReader reader(const_cast<std::uint8_t*>(bytes.data()), bytes.size());
+        auto in = OIIO::ImageInput::create(std::string(name_hint), false, nullptr, &reader);
+        OIIO::ImageSpec spec;
+        if (!in || !in->supports("ioproxy") || !in->set_ioproxy(&reader) ||
+            !in->open(std::string(name_hint), spec, unassociated_alpha_config())) {
+            error = std::string(name_hint) +
+                    ": cannot decode: " + (in ? in->geterror() : OIIO::geterror());
+            return false;
+        }
+        const bool ok = read(in.get());
+        in->close();
+        return ok;
+    } catch (const std::bad_alloc&) { // within the texel budget, but not in this memory
+        error = std::string(name_hint) + ": out of memory while decoding (" +
+                std::to_string(bytes.size()) + " encoded bytes)";
+    } catch (const std::exception& e) {
+        error = std::string(name_hint) + ": cannot decode: " + e.what();
     }
-    const bool ok = read(in.get());
-    in->close();
-    return ok;
+    return false;
 }
 } // namespace
 
@@ -94,9 +112,12 @@ bool probe_encoded_image(std::span<const std::uint8_t> bytes, std::string_view n
         const OIIO::ImageSpec& spec = in->spec();
         if (width) *width = std::uint32_t(std::max(spec.width, 0));
         if (height) *height = std::uint32_t(std::max(spec.height, 0));
-        if (spec.width > 0 && spec.height > 0 && spec.nchannels > 0) return true;
-        error = std::string(name_hint) + ": image has no pixels";
-        return false;
+        if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
+            error = std::string(name_hint) + ": image has no pixels";
+            return false;
+        }
+        return check_texel_budget(std::uint64_t(spec.width), std::uint64_t(spec.height), name_hint,
+                                  error);
     });
 }
 

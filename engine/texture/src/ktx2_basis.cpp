@@ -11,6 +11,8 @@
 
 #include <zstd.h>
 
+#include <sherpa/texture/texel_budget.h>
+
 #include "uastc.h"
 
 namespace sherpa::tex {
@@ -19,9 +21,6 @@ namespace {
 constexpr std::uint8_t kIdentifier[12] = {0xAB, 'K',  'T',  'X',  ' ',  '2',
                                           '0',  0xBB, '\r', '\n', 0x1A, '\n'};
 constexpr std::size_t kHeaderEnd = 80, kLevelEntry = 24;
-// Largest level-0 side accepted: bounds the RGBA8 output (1 GiB) that a small
-// supercompressed file could otherwise request.
-constexpr std::uint32_t kMaxSide = 16384;
 constexpr std::uint8_t kModelEtc1s = 163, kModelUastc = 166;
 constexpr std::uint8_t kTransferSrgb = 2;
 
@@ -102,9 +101,10 @@ bool parse_ktx2_basis(std::span<const std::uint8_t> in, Ktx2BasisFile& out, std:
     if (le(in, 16, 4) != 1) return error = "typeSize must be 1", false;
     const std::uint64_t width = le(in, 20, 4), height = le(in, 24, 4);
     if (width == 0 || height == 0) return error = "zero width or height (1D textures)", false;
-    if (width > kMaxSide || height > kMaxSide)
-        return error = str(width) + "x" + str(height) + " exceeds " + str(kMaxSide) + " texels",
-               false;
+    // Bounds the RGBA8 output and, through uncompressedByteLength (which must equal
+    // the level's block count x 16), every Zstandard level's inflated size: a small
+    // supercompressed file asks for no more than the texel budget.
+    if (!check_texel_budget(width, height, {}, error)) return false;
     if (le(in, 28, 4) != 0 || le(in, 32, 4) > 1 || le(in, 36, 4) != 1)
         return error = "only 2D textures without layers or faces are supported", false;
     std::uint64_t levels = le(in, 40, 4);
@@ -222,14 +222,17 @@ bool decode_uastc_level(const Ktx2BasisFile& file, std::size_t index, ZstdContex
 }
 } // namespace
 
-bool transcode_ktx2_basis(std::span<const std::uint8_t> ktx2, BasisTexture& out,
-                          std::string& error) {
+bool transcode_ktx2_basis(std::span<const std::uint8_t> ktx2, BasisTexture& out, std::string& error,
+                          bool base_level_only) {
     out = BasisTexture{};
     Ktx2BasisFile file;
     if (!parse_ktx2_basis(ktx2, file, error)) return false;
     out.payload = file.payload, out.supercompression = file.scheme;
     out.srgb = file.srgb, out.has_alpha = file.has_alpha;
-    if (file.payload == BasisPayload::Etc1s) return decode_etc1s_levels(file, out.levels, error);
+    // ETC1S global data describes every level, so the file keeps them all.
+    if (file.payload == BasisPayload::Etc1s)
+        return decode_etc1s_levels(file, out.levels, error, base_level_only ? 1 : SIZE_MAX);
+    if (base_level_only) file.levels.resize(1);
     out.levels.resize(file.levels.size());
     ZstdContext zstd;
     for (std::size_t l = 0; l < file.levels.size(); ++l)
@@ -241,10 +244,15 @@ bool decode_image_or_ktx2(std::span<const std::uint8_t> bytes, std::string_view 
                           RgbaImage& out, std::string& error) {
     if (!is_ktx2(bytes)) return decode_encoded_image(bytes, name_hint, out, error);
     BasisTexture texture;
-    if (!transcode_ktx2_basis(bytes, texture, error))
+    if (!transcode_ktx2_basis(bytes, texture, error, true))
         return error = std::string(name_hint) + ": " + error, false;
     out = std::move(texture.levels.front());
     return true;
+}
+
+bool probe_ktx2_basis(std::span<const std::uint8_t> ktx2, std::string& error) {
+    Ktx2BasisFile file;
+    return parse_ktx2_basis(ktx2, file, error);
 }
 
 bool read_basis_ktx2_file(const std::filesystem::path& path, BasisTexture& out,

@@ -1,6 +1,7 @@
 #pragma once
 // The parts of a Basis Universal KTX2 file the payload decoders need, validated
 // against the file: every span lies inside it.
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -28,8 +29,9 @@ struct Ktx2BasisFile {
 // Parses header, level index and DFD. False with `error` on the first problem.
 bool parse_ktx2_basis(std::span<const std::uint8_t> in, Ktx2BasisFile& out, std::string& error);
 
-// ETC1S/BasisLZ: decodes all levels of `file` (etc1s.cpp).
+// ETC1S/BasisLZ: decodes the first `level_count` levels of `file` (all by default;
+// etc1s.cpp).
 bool decode_etc1s_levels(const Ktx2BasisFile& file, std::vector<RgbaImage>& levels,
-                         std::string& error);
+                         std::string& error, std::size_t level_count = SIZE_MAX);
 
 } // namespace sherpa::tex

@@ -3,26 +3,68 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <set>
 #include <system_error>
 
 #include <sherpa/scene/image_sources.h>
 #include <sherpa/texture/basis.h>
+#include <sherpa/texture/texture_cache.h>
 
 namespace sherpa::tex {
 namespace {
 
-// Keeps what every common file system accepts in a name; the rest becomes '_'.
+// Bidirectional-text controls (U+061C, U+200E/F, U+202A-U+202E, U+2066-U+2069) as
+// UTF-8: the byte length of the one starting at name[at], or 0. "photo\u202Egnp.exe"
+// would show as "photoexe.png".
+std::size_t bidi_control_at(std::string_view name, std::size_t at) {
+    const auto byte = [&](std::size_t i) {
+        return at + i < name.size() ? static_cast<unsigned char>(name[at + i]) : 0u;
+    };
+    if (byte(0) == 0xD8 && byte(1) == 0x9C) return 2;
+    if (byte(0) != 0xE2) return 0;
+    if (byte(1) == 0x80 &&
+        (byte(2) == 0x8E || byte(2) == 0x8F || (byte(2) >= 0xAA && byte(2) <= 0xAE)))
+        return 3;
+    if (byte(1) == 0x81 && byte(2) >= 0xA6 && byte(2) <= 0xA9) return 3;
+    return 0;
+}
+
+// Longest name kept as it is: NAME_MAX is 255 bytes on Linux file systems, and the
+// name still gets "_imageN_K.png" appended when it collides.
+constexpr std::size_t kMaxStemBytes = 160;
+
+// A name over kMaxStemBytes keeps its first 120 bytes (cut at a UTF-8 character
+// boundary) and gets 16 hex digits of the whole name's hash, so long names that
+// share a beginning stay apart.
+std::string shortened(std::string name) {
+    if (name.size() <= kMaxStemBytes) return name;
+    const std::uint64_t hash =
+        hash_bytes({reinterpret_cast<const std::uint8_t*>(name.data()), name.size()}).low;
+    std::size_t cut = 120;
+    while (cut > 0 && (static_cast<unsigned char>(name[cut]) & 0xC0) == 0x80) --cut;
+    char hex[20];
+    std::snprintf(hex, sizeof hex, "_%016llx", static_cast<unsigned long long>(hash));
+    return name.substr(0, cut) + hex;
+}
+
+// Keeps what every common file system accepts in a name; the rest becomes '_', bidi
+// controls are dropped, and a long name is shortened (see above).
 std::string file_safe(std::string_view name) {
     std::string out;
-    for (const char c : name) {
+    for (std::size_t i = 0; i < name.size(); ++i) {
+        if (const std::size_t n = bidi_control_at(name, i)) {
+            i += n - 1;
+            continue;
+        }
+        const char c = name[i];
         const auto u = static_cast<unsigned char>(c);
         const bool bad = u < 0x20 || u == 0x7f ||
                          std::string_view("/\\:*?\"<>|").find(c) != std::string_view::npos;
         out += bad ? '_' : c;
     }
     if (out.empty() || out == "." || out == "..") return {};
-    return out;
+    return shortened(std::move(out));
 }
 
 std::string base_name(const Scene& scene, const ImageRecord& img, std::size_t index) {

@@ -99,6 +99,22 @@ fs::path default_cache_dir_from_environment() {
 TextureCache::TextureCache(fs::path directory, std::uint64_t max_bytes)
     : directory_(std::move(directory)), max_bytes_(max_bytes) {}
 
+std::string TextureCache::directory_problem() const {
+    std::error_code ec;
+    const fs::file_status status = fs::status(directory_, ec);
+    if (fs::is_directory(status)) return {};
+    if (fs::exists(status)) {
+        const char* what = fs::is_regular_file(status) ? "a regular file"
+                           : fs::is_fifo(status)       ? "a FIFO"
+                           : fs::is_socket(status)     ? "a socket"
+                                                       : "a device or other special file";
+        return directory_.string() + ": is " + what + ", not a directory";
+    }
+    fs::create_directories(directory_, ec);
+    if (ec) return directory_.string() + ": cannot create the directory: " + ec.message();
+    return {};
+}
+
 fs::path TextureCache::file_for(const Hash128& key) const {
     return directory_ / (key.hex() + ".ktx2");
 }
@@ -192,6 +208,12 @@ std::size_t TextureCache::evict(const fs::path& keep) const {
                 continue;
             }
             total += bytes; // a live writer's file takes its room under the cap too
+            continue;
+        }
+        if (p.extension() == ".lock") {
+            // Empty lock files outlive their entries' making; one a minute old that
+            // nobody holds is stale (a waiter takes a fresh lock just as well).
+            if (now - used > std::chrono::minutes(1)) remove_lock_if_unused(p);
             continue;
         }
         if (p.extension() != ".ktx2") continue;

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <new>
 #include <thread>
 
 #include <sherpa/scene/image_sources.h>
@@ -153,14 +154,15 @@ std::vector<ImageProblem> find_image_problems(const Scene& scene) {
                        {},
                        image_slot_uses(scene, index)};
         if (!image_is_missing(img)) {
-            // OpenImageIO reads no KTX2: those are transcoded (a bad level index or
-            // bad global data shows only there), the rest probed.
-            RgbaImage ktx2;
+            // Headers only: OpenImageIO reads no KTX2, whose header, level index and
+            // global data ranges are checked here; the rest are probed. Both check the
+            // size against the texel budget, so nothing here inflates or decodes.
             if (img.encoded.empty() ||
                 (is_ktx2(img.encoded)
-                     ? decode_image_or_ktx2(img.encoded, image_decoder_hint(img), ktx2, p.reason)
+                     ? probe_ktx2_basis(img.encoded, p.reason)
                      : probe_encoded_image(img.encoded, image_decoder_hint(img), p.reason)))
                 continue;
+            p.reason = without_hint(img, p.reason); // the location names the file
             p.state = CacheState::Undecodable;
         }
         problems.push_back(std::move(p));
@@ -172,7 +174,15 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
     PreparedTextureSet set;
     const std::vector<TextureUse> uses = collect_texture_uses(scene);
     std::optional<TextureCache> cache;
-    if (opt.cache_dir) cache.emplace(*opt.cache_dir, opt.cache_cap_bytes);
+    if (opt.cache_dir) {
+        cache.emplace(*opt.cache_dir, opt.cache_cap_bytes);
+        // Without this, every entry's lock fails and reads as another process's.
+        if (const std::string problem = cache->directory_problem(); !problem.empty()) {
+            set.warnings.push_back("texture cache: " + problem +
+                                   "; textures are made without the cache");
+            cache.reset();
+        }
+    }
     if (!opt.device_supports_bc && !uses.empty())
         set.warnings.push_back(
             "device cannot sample BC formats: textures fall back to uncompressed RGBA8");
@@ -236,8 +246,18 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
             if (is_cancelled(opt.cancel)) return;
             PreparedTexture& t = set.textures[misses[i]];
             const auto start = std::chrono::steady_clock::now();
-            if (!decode_image_source(scene.images[std::size_t(t.image)], decoded[i], errors[i]))
+            // Nothing may escape a worker thread (std::terminate): a failure is this
+            // image's error, and the other images go on.
+            try {
+                if (!decode_image_source(scene.images[std::size_t(t.image)], decoded[i], errors[i]))
+                    decoded[i] = {};
+            } catch (const std::bad_alloc&) {
                 decoded[i] = {};
+                errors[i] = "out of memory while decoding";
+            } catch (const std::exception& e) {
+                decoded[i] = {};
+                errors[i] = std::string("decoder failed: ") + e.what();
+            }
             t.decode_ms = ms_since(start);
         }
     };
@@ -277,7 +297,19 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
         }
         const TextureUse& use = uses[misses[i]];
         t.width = decoded[i].width, t.height = decoded[i].height;
-        compress(t, use, decoded[i], opt);
+        try {
+            compress(t, use, decoded[i], opt);
+        } catch (const std::bad_alloc&) { // within the texel budget, not within this memory
+            decoded[i] = {};
+            t.levels.clear();
+            t.failed = true;
+            t.state = CacheState::Undecodable;
+            const std::string reason = "out of memory while making the mip chain and blocks of " +
+                                       std::to_string(t.width) + "x" + std::to_string(t.height);
+            t.note = "undecodable: " + reason;
+            add_once(set.warnings, failure_warning(t, reason));
+            continue;
+        }
         decoded[i] = {}; // release the pixels early: scenes can hold many large images
         if (!opt.device_supports_bc) t.state = CacheState::Fallback;
         if (!cache) continue;

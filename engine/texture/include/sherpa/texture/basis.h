@@ -36,9 +36,16 @@ std::string_view supercompression_name(BasisSupercompression scheme);
 // UNDEFINED, DFD color model UASTC or ETC1S) to RGBA8. Every offset and length
 // is checked against the file before use; any inconsistency (bad level index,
 // bad supercompression global data, corrupt Zstandard frame, truncated data,
-// reserved UASTC block mode) returns false with `error` describing it.
-bool transcode_ktx2_basis(std::span<const std::uint8_t> ktx2, BasisTexture& out,
-                          std::string& error);
+// reserved UASTC block mode) returns false with `error` describing it, as does a
+// size over the texel budget (texel_budget.h), checked before anything is inflated.
+// `base_level_only`: transcode level 0 alone (`levels` then holds one image).
+bool transcode_ktx2_basis(std::span<const std::uint8_t> ktx2, BasisTexture& out, std::string& error,
+                          bool base_level_only = false);
+
+// Checks a Basis Universal KTX2 file's header, data format descriptor, level index
+// and global data ranges, and its size against the texel budget, without inflating
+// or transcoding anything: what `info` reports. True when they hold.
+bool probe_ktx2_basis(std::span<const std::uint8_t> ktx2, std::string& error);
 
 // Same for a file; errors start with the file's path.
 bool read_basis_ktx2_file(const std::filesystem::path& path, BasisTexture& out, std::string& error);

@@ -23,12 +23,14 @@ struct RgbaImage {
 // Decodes encoded image bytes (any format OpenImageIO reads; `name_hint` supplies
 // the extension that picks the reader, and names the image in errors). Grey images
 // are replicated to RGB; missing alpha becomes 255; 16-bit and float sources are
-// converted to 8 bits. Returns false with `error` set on failure.
+// converted to 8 bits. Returns false with `error` set on failure, without allocating
+// the pixels when the header declares more than the texel budget (texel_budget.h).
 bool decode_encoded_image(std::span<const std::uint8_t> bytes, std::string_view name_hint,
                           RgbaImage& out, std::string& error);
 // Opens the image and reads its header only: true when a decoder accepts it (the
 // pixels may still be damaged), else false with the decoder's reason in `error`.
-// `width`/`height`, when given, receive the header's size.
+// `width`/`height`, when given, receive the header's size. An image over the texel
+// budget (texel_budget.h) is refused here too, so a probe tells what a decode would.
 bool probe_encoded_image(std::span<const std::uint8_t> bytes, std::string_view name_hint,
                          std::string& error, std::uint32_t* width = nullptr,
                          std::uint32_t* height = nullptr);

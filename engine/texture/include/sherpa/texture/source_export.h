@@ -27,7 +27,10 @@ bool decode_image_source(const ImageRecord& image, RgbaImage& out, std::string& 
 // `WaterBottle_baseColor.png`); embedded images (bufferView, data URI) are named
 // after the image's `name` when it has one, else `imageN_bufferViewV` /
 // `imageN_datauri`; generated ones `imageN_generated`. Characters a file name
-// cannot hold become '_'. A later image whose name is taken gets `_imageN`.
+// cannot hold become '_', bidirectional-text controls (U+202E ...) are dropped, and
+// a name over 160 bytes keeps its first 120 and gets a hash of the whole name
+// (`<start>_<16 hex digits>`), so no name exceeds NAME_MAX. A later image whose
+// name is taken gets `_imageN`.
 std::vector<std::string> source_export_names(const Scene& scene);
 
 struct SourceExport {

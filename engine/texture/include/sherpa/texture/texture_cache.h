@@ -94,6 +94,9 @@ public:
     TextureCache(std::filesystem::path directory, std::uint64_t max_bytes = kDefaultCacheCapBytes);
 
     const std::filesystem::path& directory() const { return directory_; }
+    // Creates the directory if need be; "" when it is a usable directory, else what
+    // is wrong, naming it ("PATH: is a regular file, not a directory").
+    std::string directory_problem() const;
     std::filesystem::path file_for(const Hash128& key) const;
 
     // Loads and verifies the file for `key`. A hit refreshes the file's
@@ -112,9 +115,10 @@ public:
     EntryLock lock_entry(const Hash128& key, std::chrono::milliseconds timeout) const;
 
     // Removes temp files abandoned by dead writers (see write_file_atomic: the name
-    // holds the writer's PID; a minute old and that process gone, or an hour old),
-    // then least recently used files until cache files plus live temp files are
-    // within the cap. Returns the number of cache files removed.
+    // holds the writer's PID; a minute old and that process gone, or an hour old) and
+    // entry lock files nobody holds that are a minute old, then least recently used files until
+    // cache files plus live temp files are within the cap. Returns the number of cache files
+    // removed.
     std::size_t evict(const std::filesystem::path& keep = {}) const;
 
 private:

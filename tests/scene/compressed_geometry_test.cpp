@@ -51,7 +51,13 @@ std::vector<CorpusFile> corpus() {
             {"DamagedHelmet.draco.glb", "DamagedHelmet", "KHR_draco_mesh_compression"},
             {"BoxTextured.draco.glb", "BoxTextured", "KHR_draco_mesh_compression"},
             {"2CylinderEngine.draco.glb", "2CylinderEngine", "KHR_draco_mesh_compression"},
-            {"Duck.draco.gltf", "Duck", "KHR_draco_mesh_compression"}};
+            {"Duck.draco.gltf", "Duck", "KHR_draco_mesh_compression"},
+            {"RiggedSimple.draco.glb", "RiggedSimple", "KHR_draco_mesh_compression"},
+            {"VC.draco.glb", "VC", "KHR_draco_mesh_compression"},
+            {"SimpleMorph.draco.glb", "SimpleMorph", "KHR_draco_mesh_compression"},
+            {"AnimatedMorphSphere.draco.glb", "AnimatedMorphSphere", "KHR_draco_mesh_compression"},
+            {"BoxVertexColors.quantized.draco.glb", "BoxVertexColors",
+             "KHR_draco_mesh_compression"}};
 }
 
 // One drawn vertex: world position, world normal and the UV the base colour

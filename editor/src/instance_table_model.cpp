@@ -35,11 +35,12 @@ QVariant InstanceTableModel::data(const QModelIndex& index, int role) const {
     const InstanceRow& r = g->rows[static_cast<std::size_t>(index.row())];
     const int c = index.column();
     // glTF order for the quaternion: x, y, z, w.
-    const double value = c == RowColumn ? double(r.file_row)
-                         : c <= TZ      ? double(r.translation[c - TX])
-                         : c <= RW      ? double(glm::vec4(r.rotation.x, r.rotation.y, r.rotation.z,
-                                                           r.rotation.w)[c - RX])
-                                        : double(r.scale[c - SX]);
+    const double value =
+        c == RowColumn ? double(r.file_row)
+        : c <= TZ      ? double(r.translation[c - TX])
+        : c <= RW
+            ? double(glm::vec4(r.rotation.x, r.rotation.y, r.rotation.z, r.rotation.w)[c - RX])
+            : double(r.scale[c - SX]);
     if (role == Qt::DisplayRole)
         return c == RowColumn ? QString::number(r.file_row) : Format::number(value);
     if (role == Qt::ToolTipRole && c != RowColumn) return Format::exact(value);

@@ -55,7 +55,8 @@ void DockContentTests::instancedNodeShowsItsRowsInTheTreeAndTheTable() {
             const auto& rows = s.nodes[n].instancing;
             const QModelIndex item = tree.indexOfNode(int(n));
             if (!item.isValid()) continue;
-            const QString detail = item.siblingAtColumn(SceneTreeModel::DetailColumn).data().toString();
+            const QString detail =
+                item.siblingAtColumn(SceneTreeModel::DetailColumn).data().toString();
             if (!rows) {
                 QVERIFY2(!detail.contains(QStringLiteral("GPU instances")), qPrintable(detail));
                 continue;

@@ -55,11 +55,11 @@ std::size_t unmatched_skin(const sherpa::PrimitiveMotion& a, const sherpa::Primi
             if (std::max({d.x, d.y, d.z}) > position_tol) continue;
             bool same = true;
             for (std::uint32_t k = 0; k < n && same; ++k)
-                same = a.weights[i * n + k] == 0.0f && b.weights[j * n + k] == 0.0f
-                           ? std::abs(a.weights[i * n + k] - b.weights[j * n + k]) <= weight_tol
-                           : a.joints[i * n + k] == b.joints[j * n + k] &&
-                                 std::abs(a.weights[i * n + k] - b.weights[j * n + k]) <=
-                                     weight_tol;
+                same =
+                    a.weights[i * n + k] == 0.0f && b.weights[j * n + k] == 0.0f
+                        ? std::abs(a.weights[i * n + k] - b.weights[j * n + k]) <= weight_tol
+                        : a.joints[i * n + k] == b.joints[j * n + k] &&
+                              std::abs(a.weights[i * n + k] - b.weights[j * n + k]) <= weight_tol;
             found = same;
         }
         misses += found ? 0 : 1;
@@ -113,14 +113,15 @@ TEST_P(DracoMorph, PosesLikeTheSourceVertexForVertex) {
         ASSERT_TRUE(p.compression);
         EXPECT_NE(p.compression->modes.find("sequential"), std::string::npos);
         if (p.morph_targets)
-            said = said || p.compression->modes.find("morph targets uncompressed") !=
-                               std::string::npos;
+            said = said ||
+                   p.compression->modes.find("morph targets uncompressed") != std::string::npos;
     }
     EXPECT_TRUE(said) << "info says the targets are not in the Draco stream";
     const float tol = max_extent(b) / float((1 << 14) - 1) * 1.01f;
     for (const double t : {0.0, 0.4, 1.3}) {
         const std::int32_t anim = b.animations.empty() ? -1 : 0;
-        const sherpa::Pose pa = sherpa::evaluate_pose(a, anim, t), pb = sherpa::evaluate_pose(b, anim, t);
+        const sherpa::Pose pa = sherpa::evaluate_pose(a, anim, t),
+                           pb = sherpa::evaluate_pose(b, anim, t);
         for (std::size_t p = 0; p < a.primitives.size(); ++p) {
             std::uint32_t node = 0;
             while (node < a.nodes.size() &&
@@ -166,7 +167,8 @@ TEST(DracoAttributes, NormalizedIntegersStayNormalizedIntegers) {
     // dequantization into the node transform).
     ASSERT_FALSE(m.colors.empty());
     const auto& src = source.scene->meshes.at(0);
-    const glm::mat4 wa = draco.scene->instances.at(0).world, wb = source.scene->instances.at(0).world;
+    const glm::mat4 wa = draco.scene->instances.at(0).world,
+                    wb = source.scene->instances.at(0).world;
     const float tol = max_extent(*source.scene) / float((1 << 14) - 1) * 1.5f;
     std::size_t misses = 0;
     for (std::size_t i = 0; i < m.vertices.size(); ++i) {
@@ -208,9 +210,8 @@ std::uint64_t triangles(const sherpa::Scene& s) {
 TEST(DracoModeAndIndices, AStripModeOverTheStreamsTriangleListIsNamed) {
     const sherpa::LoadResult plain = sherpa::load_scene(corpus("Duck.draco.gltf"));
     ASSERT_TRUE(plain) << plain.error;
-    const std::string path = edited_duck("strip.gltf", [](nlohmann::json& doc) {
-        doc["meshes"][0]["primitives"][0]["mode"] = 5;
-    });
+    const std::string path = edited_duck(
+        "strip.gltf", [](nlohmann::json& doc) { doc["meshes"][0]["primitives"][0]["mode"] = 5; });
     const sherpa::LoadResult r = sherpa::load_scene(path);
     ASSERT_TRUE(r) << r.error;
     EXPECT_NE(all_warnings(*r.scene).find("meshes[0].primitives[0].mode: 5 (TRIANGLE_STRIP) "

@@ -86,8 +86,8 @@ TEST_P(InstancedFile, InfoCountsTheRows) {
     ASSERT_EQ(text.exit_code, 0) << text.out;
     EXPECT_NE(text.out.find("gpu instancing: " + std::to_string(t.nodes) + " node(s), " +
                             std::to_string(t.rows) + " rows drawn of " +
-                            std::to_string(t.file_rows) + " -> " +
-                            std::to_string(t.row_instances) + " instances"),
+                            std::to_string(t.file_rows) + " -> " + std::to_string(t.row_instances) +
+                            " instances"),
               std::string::npos)
         << text.out;
 }
@@ -125,15 +125,16 @@ TEST_P(InstancedFile, TheTlasHoldsEveryRow) {
     const auto tlas = nlohmann::json::parse(r.out).at("tlas");
     const Totals t = totals(*inst.scene);
     EXPECT_GE(tlas.at("node_mesh_pairs").get<std::uint64_t>(), t.rows);
-    EXPECT_EQ(tlas.at("instances").get<std::uint64_t>() + tlas.at("deduplicated").get<std::uint64_t>(),
+    EXPECT_EQ(tlas.at("instances").get<std::uint64_t>() +
+                  tlas.at("deduplicated").get<std::uint64_t>(),
               tlas.at("node_mesh_pairs").get<std::uint64_t>());
 }
 
 INSTANTIATE_TEST_SUITE_P(NpmTools, InstancedFile,
                          ::testing::Values("2CylinderEngine.instanced.glb",
                                            "2CylinderEngine.gt_instance.glb"),
-                         [](const auto& info) {
-                             std::string n = info.param;
+                         [](const auto& param_info) {
+                             std::string n = param_info.param;
                              for (char& c : n)
                                  if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                              return n;

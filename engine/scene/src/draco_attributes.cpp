@@ -27,9 +27,9 @@ template <typename Src, typename Dst>
 bool convert(Src in, bool draco_normalized, bool accessor_normalized, Dst& out) {
     if constexpr (std::is_floating_point_v<Dst>) {
         if constexpr (std::is_integral_v<Src>)
-            out = draco_normalized ? std::max(Dst(in) / Dst(std::numeric_limits<Src>::max()),
-                                              Dst(-1))
-                                   : Dst(in);
+            out = draco_normalized
+                      ? std::max(Dst(in) / Dst(std::numeric_limits<Src>::max()), Dst(-1))
+                      : Dst(in);
         else
             out = Dst(in);
         return true;
@@ -160,8 +160,8 @@ std::size_t append_draco_attribute(const draco::PointAttribute& att, std::size_t
     const std::size_t offset = data.size();
     // The whole attribute at once where Draco already holds the rows as they go out.
     if (att.data_type() == same_type(component_type) && stride == row &&
-        att.is_mapping_identity() && std::size_t(att.byte_stride()) == row && att.size() >= points &&
-        att.byte_offset() >= 0 &&
+        att.is_mapping_identity() && std::size_t(att.byte_stride()) == row &&
+        att.size() >= points && att.byte_offset() >= 0 &&
         std::size_t(att.byte_offset()) + points * row <= att.buffer()->data_size()) {
         const unsigned char* src = att.buffer()->data() + att.byte_offset();
         data.insert(data.end(), src, src + points * row);

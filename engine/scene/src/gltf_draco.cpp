@@ -260,10 +260,9 @@ std::vector<DecodedDracoPrimitive> decode_draco_primitives(tinygltf::Model& mode
             auto& prim = model.meshes[m].primitives[p];
             if (!prim.extensions.count(kCodec)) continue;
             DecodedDracoPrimitive d{std::uint32_t(m), std::uint32_t(p), {}, {}, {}};
-            decode_primitive(model, prim,
-                             "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) +
-                                 "]",
-                             d);
+            decode_primitive(
+                model, prim,
+                "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]", d);
             decoded.push_back(std::move(d));
         }
     return decoded;

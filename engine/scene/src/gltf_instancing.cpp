@@ -22,8 +22,7 @@ struct Semantic {
     const char* name;
     std::uint32_t components;
 };
-constexpr std::array<Semantic, 3> kSemantics{
-    {{"TRANSLATION", 3}, {"ROTATION", 4}, {"SCALE", 3}}};
+constexpr std::array<Semantic, 3> kSemantics{{{"TRANSLATION", 3}, {"ROTATION", 4}, {"SCALE", 3}}};
 
 // Whether the spec allows the accessor's component type for the semantic:
 // TRANSLATION and SCALE float, ROTATION float or normalized byte / short.
@@ -42,8 +41,7 @@ struct Attribute {
 // The attributes of one node's extension; false (with a warning) when the node is
 // drawn once instead.
 bool read_attributes(ImportContext& ctx, const tinygltf::Value& ext, const std::string& where,
-                     NodeInstancing& out, std::array<Attribute, 3>& attrs,
-                     std::uint32_t& rows) {
+                     NodeInstancing& out, std::array<Attribute, 3>& attrs, std::uint32_t& rows) {
     const auto& model = ctx.model;
     if (!ext.IsObject() || !ext.Has("attributes") || !ext.Get("attributes").IsObject()) {
         ctx.warn(where + ".attributes: required object is missing; the node is drawn once");
@@ -85,7 +83,7 @@ bool read_attributes(ImportContext& ctx, const tinygltf::Value& ext, const std::
             at.values = read_accessor_floats(model, index, {semantic->components}, comps, aw);
             at.count = std::uint32_t(at.values.size() / semantic->components);
             counts.emplace_back(name, at.count);
-            (semantic->components == 4 ? out.rotation
+            (semantic->components == 4        ? out.rotation
              : semantic == kSemantics.begin() ? out.translation
                                               : out.scale) = index;
         } catch (const ImportError& e) {

@@ -98,9 +98,9 @@ std::vector<Aabb> instance_culling_bounds(const Scene& scene, const Pose& pose) 
     out.reserve(scene.instances.size());
     for (const MeshInstance& inst : scene.instances) {
         const PrimitiveInfo* p = inst.mesh_id < of_mesh.size() ? of_mesh[inst.mesh_id] : nullptr;
-        out.push_back(p ? culling_bounds(scene, pose, inst.node_id, *p,
-                                         instance_transform(scene, inst))
-                        : inst.world_bounds);
+        out.push_back(
+            p ? culling_bounds(scene, pose, inst.node_id, *p, instance_transform(scene, inst))
+              : inst.world_bounds);
     }
     return out;
 }
@@ -121,7 +121,8 @@ PosedBounds posed_scene_bounds(const Scene& scene, const Pose& pose) {
         if (node.mesh < 0) continue;
         const std::size_t rows = node.instancing ? node.instancing->rows.size() : 1;
         for (std::size_t r = 0; r < rows; ++r) {
-            const glm::mat4 row = node.instancing ? node.instancing->rows[r].matrix() : glm::mat4(1);
+            const glm::mat4 row =
+                node.instancing ? node.instancing->rows[r].matrix() : glm::mat4(1);
             for (const PrimitiveInfo& p : scene.primitives) {
                 if (p.mesh != static_cast<std::uint32_t>(node.mesh) || p.engine_mesh < 0) continue;
                 for (const glm::vec3& v : posed_positions(scene, pose, n, p, row))

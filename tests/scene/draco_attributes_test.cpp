@@ -13,6 +13,7 @@
 #include <sherpa/scene/scene_loader.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -97,11 +98,12 @@ TEST(DracoAttributes, SkinnedFileKeepsItsJointsAsIntegers) {
     }
 }
 
-// Morph targets stay uncompressed; gltf-transform switches to sequential coding,
-// which keeps the vertex order, so vertex i of every pose is the source's vertex i.
+// Morph targets stay uncompressed; gltf-transform switches to sequential coding and
+// writes them in the stream's point order (not necessarily the source's): every posed
+// vertex lies on a posed source vertex, so the deltas follow their points.
 class DracoMorph : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(DracoMorph, PosesLikeTheSourceVertexForVertex) {
+TEST_P(DracoMorph, PosesLikeTheSource) {
     const std::string model = GetParam();
     const sherpa::LoadResult draco = sherpa::load_scene(corpus(model + ".draco.glb"));
     ASSERT_TRUE(draco) << draco.error;
@@ -131,10 +133,12 @@ TEST_P(DracoMorph, PosesLikeTheSourceVertexForVertex) {
             const auto va = sherpa::posed_positions(a, pa, node, a.primitives[p]);
             const auto vb = sherpa::posed_positions(b, pb, node, b.primitives[p]);
             ASSERT_EQ(va.size(), vb.size());
-            float worst = 0.0f;
-            for (std::size_t i = 0; i < va.size(); ++i)
-                worst = std::max(worst, glm::distance(va[i], vb[i]));
-            // Positions and deltas each within a step (deltas are not quantized).
+            float worst = 0.0f; // each vertex to the nearest posed source vertex
+            for (const glm::vec3& v : va) {
+                float nearest = INFINITY;
+                for (const glm::vec3& q : vb) nearest = std::min(nearest, glm::distance(v, q));
+                worst = std::max(worst, nearest);
+            }
             EXPECT_LE(worst, 2.0f * tol) << "time " << t << ", primitive " << p;
         }
     }

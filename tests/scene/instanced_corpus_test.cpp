@@ -99,7 +99,8 @@ TEST_P(InstancedFile, InfoCountsTheRows) {
 }
 
 // The source and the instanced file rendered from the same camera, raster against
-// raster and rays against rays: only quantization noise differs.
+// raster (lit) and rays against rays (normals: the ray tracer does not shade every view):
+// only quantization noise differs.
 TEST_P(InstancedFile, RendersLikeTheSource) {
     const fs::path png =
         fs::temp_directory_path() / ("sherpa_instanced_" + std::to_string(::getpid()) + ".png");

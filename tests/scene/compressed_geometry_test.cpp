@@ -55,7 +55,6 @@ std::vector<CorpusFile> corpus() {
         {"Duck.draco.gltf", "Duck", "KHR_draco_mesh_compression"},
         {"RiggedSimple.draco.glb", "RiggedSimple", "KHR_draco_mesh_compression"},
         {"VC.draco.glb", "VC", "KHR_draco_mesh_compression"},
-        {"SimpleMorph.draco.glb", "SimpleMorph", "KHR_draco_mesh_compression"},
         {"AnimatedMorphSphere.draco.glb", "AnimatedMorphSphere", "KHR_draco_mesh_compression"},
         {"BoxVertexColors.quantized.draco.glb", "BoxVertexColors", "KHR_draco_mesh_compression"}};
 }

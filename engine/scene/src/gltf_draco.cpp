@@ -92,9 +92,14 @@ void check_min_max(const tinygltf::Accessor& a, const unsigned char* values, std
         value_range<4>(values, points, lo, hi);
         break;
     }
+    // Draco quantizes every component on one grid over the largest declared range: the
+    // slack follows that range, not each component's own (VC's flat parts).
+    double range = 1e-6;
+    for (int c = 0; c < comps; ++c)
+        range = std::max(range, a.maxValues[std::size_t(c)] - a.minValues[std::size_t(c)]);
     for (int c = 0; c < comps; ++c) {
         const double dlo = a.minValues[std::size_t(c)], dhi = a.maxValues[std::size_t(c)];
-        const double slack = 1e-3 * std::max(dhi - dlo, 1e-6);
+        const double slack = 1e-3 * range;
         if (lo[c] >= dlo - slack && hi[c] <= dhi + slack) continue;
         fail(where + ": decoded component " + std::to_string(c) + " value " +
              std::to_string(lo[c] < dlo - slack ? lo[c] : hi[c]) +

@@ -133,26 +133,11 @@ draco::DataType same_type(int component_type) {
 
 } // namespace
 
-std::size_t component_bytes(int component_type) {
-    switch (component_type) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-        return 1;
-    case TINYGLTF_COMPONENT_TYPE_SHORT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-        return 2;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-    case TINYGLTF_COMPONENT_TYPE_FLOAT:
-        return 4;
-    default:
-        return 0;
-    }
-}
-
 std::size_t append_draco_attribute(const draco::PointAttribute& att, std::size_t points, int comps,
                                    int component_type, bool normalized,
                                    std::vector<unsigned char>& data, const std::string& where) {
-    const std::size_t size = component_bytes(component_type);
+    const int bytes = tinygltf::GetComponentSizeInBytes(std::uint32_t(component_type));
+    const std::size_t size = bytes > 0 ? std::size_t(bytes) : 0;
     if (size == 0 || comps <= 0 || !att.buffer())
         fail(where + ": componentType " + std::to_string(component_type) +
              " is not a glTF attribute component type");

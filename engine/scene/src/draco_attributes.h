@@ -13,9 +13,6 @@ class PointAttribute;
 
 namespace sherpa::detail {
 
-// Bytes of one glTF component type (5120..5126), 0 for an unknown one.
-std::size_t component_bytes(int component_type);
-
 // Appends each of `points` points' value of `att` (through Draco's point-to-value
 // map) to `data` as `comps` components of `component_type`, each row padded to a
 // multiple of 4 bytes (glTF's vertex attribute alignment). Returns the row stride.

@@ -217,7 +217,9 @@ void decode_primitive(tinygltf::Model& model, tinygltf::Primitive& prim,
             check_min_max(a, buffer.data().data() + offset, points, comps, aw);
             out.range_checked.push_back(used->second);
         }
-        const std::size_t row = std::size_t(comps) * component_bytes(a.componentType);
+        const std::size_t row =
+            std::size_t(comps) *
+            std::size_t(tinygltf::GetComponentSizeInBytes(std::uint32_t(a.componentType)));
         a.bufferView = buffer.end_view(offset, stride == row ? 0 : stride);
         a.byteOffset = 0;
         a.sparse = {};

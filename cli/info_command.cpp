@@ -29,6 +29,11 @@ void print_text(const Scene& s, const std::vector<tex::ImageProblem>& problems) 
         (unsigned long long)c.cameras);
     std::printf("  instances %zu  vertices %llu  triangles %llu\n", s.instances.size(),
                 (unsigned long long)c.vertices, (unsigned long long)c.triangles);
+    if (const nlohmann::json g = gpu_instancing_json(s); !g.at("nodes").empty())
+        std::printf("  gpu instancing: %zu node(s), %llu rows drawn of %llu -> %llu instances\n",
+                    g.at("nodes").size(), g.at("drawn_rows").get<unsigned long long>(),
+                    g.at("file_rows").get<unsigned long long>(),
+                    g.at("instances").get<unsigned long long>());
     if (s.bounds.valid())
         std::printf("  bounds [%g %g %g] .. [%g %g %g]\n", s.bounds.min.x, s.bounds.min.y,
                     s.bounds.min.z, s.bounds.max.x, s.bounds.max.y, s.bounds.max.z);

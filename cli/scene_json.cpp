@@ -82,6 +82,30 @@ json images_json(const Scene& scene) {
     return out;
 }
 
+json gpu_instancing_json(const Scene& scene) {
+    json nodes = json::array();
+    std::uint64_t file_rows = 0, drawn_rows = 0, instances = 0;
+    for (const MeshInstance& inst : scene.instances) instances += inst.row >= 0 ? 1 : 0;
+    for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
+        const auto& g = scene.nodes[n].instancing;
+        if (!g) continue;
+        file_rows += g->file_rows;
+        drawn_rows += g->rows.size();
+        nodes.push_back({{"node", n},
+                         {"name", scene.nodes[n].name},
+                         {"file_rows", g->file_rows},
+                         {"drawn_rows", g->rows.size()},
+                         {"translation", g->translation},
+                         {"rotation", g->rotation},
+                         {"scale", g->scale},
+                         {"custom_attributes", g->custom_attributes}});
+    }
+    return {{"nodes", nodes},
+            {"file_rows", file_rows},
+            {"drawn_rows", drawn_rows},
+            {"instances", instances}};
+}
+
 json scene_info_json(const Scene& scene) {
     const SourceCounts& c = scene.counts;
     json j = {{"source", scene.source},
@@ -129,6 +153,7 @@ json scene_info_json(const Scene& scene) {
     }
     j["primitives_detail"] = std::move(detail);
     j["skins"] = skins_json(scene);
+    j["gpu_instancing"] = gpu_instancing_json(scene);
     j["animations"] = animations_json(scene);
     j["images_detail"] = images_json(scene);
     j["extensions_used"] = extensions_json(scene.extensions_used);

@@ -10,6 +10,9 @@ namespace sherpa::cli {
 
 nlohmann::json aabb_json(const Aabb& box);
 nlohmann::json usage_json(const Scene& scene, const UsageReport& report);
+// EXT_mesh_gpu_instancing: per instanced node its rows (in the file, drawn) and
+// accessors; totals, and the drawn instances (of the displayed scene) they make.
+nlohmann::json gpu_instancing_json(const Scene& scene);
 // The `sherpa-cli info --json` object.
 nlohmann::json scene_info_json(const Scene& scene);
 // A culling pass's statistics and the matrix it culled against

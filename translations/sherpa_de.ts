@@ -598,6 +598,53 @@ PSNR %3
     </message>
 </context>
 <context>
+    <name>sherpa::editor::InstanceTableModel</name>
+    <message>
+        <source>Row</source>
+        <translation>Zeile</translation>
+    </message>
+    <message>
+        <source>T.x</source>
+        <translation>T.x</translation>
+    </message>
+    <message>
+        <source>T.y</source>
+        <translation>T.y</translation>
+    </message>
+    <message>
+        <source>T.z</source>
+        <translation>T.z</translation>
+    </message>
+    <message>
+        <source>R.x</source>
+        <translation>R.x</translation>
+    </message>
+    <message>
+        <source>R.y</source>
+        <translation>R.y</translation>
+    </message>
+    <message>
+        <source>R.z</source>
+        <translation>R.z</translation>
+    </message>
+    <message>
+        <source>R.w</source>
+        <translation>R.w</translation>
+    </message>
+    <message>
+        <source>S.x</source>
+        <translation>S.x</translation>
+    </message>
+    <message>
+        <source>S.y</source>
+        <translation>S.y</translation>
+    </message>
+    <message>
+        <source>S.z</source>
+        <translation>S.z</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::LabDock</name>
     <message>
         <source>The Lab could not run: %1</source>
@@ -1453,6 +1500,14 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <source>; %1 %2: %3 → %4 decoded in %5 ms</source>
         <translation>; %1 %2: %3 → %4 dekodiert in %5 ms</translation>
     </message>
+    <message>
+        <source>Instances (%1)</source>
+        <translation>Instanzen (%1)</translation>
+    </message>
+    <message>
+        <source>Instances</source>
+        <translation>Instanzen</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MorphWeightsPanel</name>
@@ -1689,6 +1744,14 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>%1, %2 to %3 s</source>
         <translation>%1, %2 bis %3 s</translation>
+    </message>
+    <message>
+        <source>×%1 GPU instances</source>
+        <translation>×%1 GPU-Instanzen</translation>
+    </message>
+    <message>
+        <source>×%1 GPU instances (of %2 rows)</source>
+        <translation>×%1 GPU-Instanzen (von %2 Zeilen)</translation>
     </message>
 </context>
 <context>

@@ -15,6 +15,7 @@
 #include "attribute_model.h"
 #include "editor_context.h"
 #include "format_values.h"
+#include "instance_table_model.h"
 #include "triangle_table_model.h"
 #include "vertex_table_model.h"
 #include "view_fitting.h"
@@ -43,6 +44,7 @@ MeshDock::MeshDock(const EditorContext& context, QWidget* parent)
     attributes_ = new AttributeModel(this);
     vertices_ = new VertexTableModel(this);
     triangles_ = new TriangleTableModel(this);
+    instances_ = new InstanceTableModel(this);
 
     auto* body = new QWidget(this);
     auto* layout = new QVBoxLayout(body);
@@ -82,6 +84,8 @@ MeshDock::MeshDock(const EditorContext& context, QWidget* parent)
     triangle_view_ = make_big_table(tabs_, triangles_);
     tabs_->addTab(vertex_page, QString());
     tabs_->addTab(triangle_view_, QString());
+    instance_view_ = make_big_table(tabs_, instances_);
+    tabs_->addTab(instance_view_, QString());
 
     auto* split = new QSplitter(Qt::Vertical, body);
     split->addWidget(attribute_view_);
@@ -132,6 +136,8 @@ void MeshDock::retranslate() {
     tabs_->setTabText(1, topology == Topology::Lines    ? tr("Segments")
                          : topology == Topology::Points ? tr("Points")
                                                         : tr("Triangles"));
+    const NodeInstancing* rows = instances_->instancing();
+    tabs_->setTabText(2, rows ? tr("Instances (%1)").arg(rows->rows.size()) : tr("Instances"));
     jump_button_->setText(tr("Jump to vertex"));
     tangent_button_->setText(tr("Compare tangents"));
     tangent_button_->setToolTip(tr("Regenerate MikkTSpace tangents and show the angle to the "
@@ -140,9 +146,13 @@ void MeshDock::retranslate() {
 }
 
 void MeshDock::showMesh() {
-    const int mesh = context_.selection().mesh;
-    if (mesh == shown_mesh_ && context_.scene() == shown_scene_) return; // vertex/triangle picks
+    const int mesh = context_.selection().mesh, node = context_.selection().node;
+    if (mesh == shown_mesh_ && node == shown_node_ && context_.scene() == shown_scene_)
+        return; // vertex/triangle picks
     shown_mesh_ = mesh;
+    shown_node_ = node;
+    instances_->setNode(node >= 0 ? context_.sharedScene() : nullptr, node);
+    tabs_->setTabEnabled(2, instances_->rowCount() > 0);
     shown_scene_ = context_.scene();
     MeshRef ref{mesh >= 0 ? context_.sharedScene() : nullptr, mesh};
     attributes_->setMesh(ref);

@@ -1,6 +1,7 @@
 #pragma once
 // Dock 2: the selected primitive's attributes (source accessor, provenance, GPU
-// bytes) and virtual tables of its vertices and triangles, with jump-to-vertex and
+// bytes) and virtual tables of its vertices and triangles (and of the selected
+// node's GPU instancing rows), with jump-to-vertex and
 // the per-vertex authored-vs-regenerated tangent error (computed on request, off
 // the UI thread).
 #include <QDockWidget>
@@ -20,6 +21,7 @@ namespace sherpa::editor {
 
 class AttributeModel;
 class EditorContext;
+class InstanceTableModel;
 class TriangleTableModel;
 class VertexTableModel;
 
@@ -32,6 +34,8 @@ public:
     AttributeModel* attributes() const { return attributes_; }
     VertexTableModel* vertices() const { return vertices_; }
     TriangleTableModel* triangles() const { return triangles_; }
+    // The selected node's EXT_mesh_gpu_instancing rows (the Instances tab).
+    InstanceTableModel* instances() const { return instances_; }
     QTableView* vertexView() const { return vertex_view_; }
     // Starts the tangent comparison for the shown mesh; `tangentErrorsReady` follows.
     void computeTangentErrors();
@@ -52,14 +56,17 @@ private:
 
     const EditorContext& context_;
     int shown_mesh_ = -1;
+    int shown_node_ = -1;
     const void* shown_scene_ = nullptr;
     AttributeModel* attributes_;
     VertexTableModel* vertices_;
     TriangleTableModel* triangles_;
+    InstanceTableModel* instances_;
     QLabel* summary_;
     QTableView* attribute_view_;
     QTableView* vertex_view_;
     QTableView* triangle_view_;
+    QTableView* instance_view_;
     QTabWidget* tabs_;
     QSpinBox* jump_;
     QPushButton* jump_button_;

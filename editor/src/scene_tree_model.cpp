@@ -157,6 +157,22 @@ QString SceneTreeModel::name(const Item& it) const {
     return {};
 }
 
+// A node's own transform: what differs from identity, or (full) the whole TRS.
+QString SceneTreeModel::nodeTransform(const Node& n, bool full) const {
+    if (n.has_matrix) return tr("matrix");
+    if (!full) {
+        QStringList parts;
+        if (n.translation != glm::vec3(0.0f)) parts << tr("T %1").arg(Format::vec(n.translation));
+        if (n.rotation != glm::quat(1.0f, 0.0f, 0.0f, 0.0f)) parts << tr("rotated");
+        if (n.scale != glm::vec3(1.0f)) parts << tr("S %1").arg(Format::vec(n.scale));
+        return parts.isEmpty() ? tr("identity") : parts.join(QStringLiteral("  "));
+    }
+    return tr("T %1  R %2  S %3")
+        .arg(Format::vec(n.translation))
+        .arg(Format::vec(glm::vec4(n.rotation.x, n.rotation.y, n.rotation.z, n.rotation.w)))
+        .arg(Format::vec(n.scale));
+}
+
 QString SceneTreeModel::detail(const Item& it, bool full) const {
     const Scene& s = *context_.scene();
     const auto idx = static_cast<std::size_t>(it.index);
@@ -165,19 +181,16 @@ QString SceneTreeModel::detail(const Item& it, bool full) const {
         return it.index == s.displayed_scene ? tr("displayed") : QString();
     case Kind::Node: {
         const Node& n = s.nodes[idx];
-        if (n.has_matrix) return tr("matrix");
-        if (!full) { // what differs from identity; the whole TRS in the tooltip
-            QStringList parts;
-            if (n.translation != glm::vec3(0.0f))
-                parts << tr("T %1").arg(Format::vec(n.translation));
-            if (n.rotation != glm::quat(1.0f, 0.0f, 0.0f, 0.0f)) parts << tr("rotated");
-            if (n.scale != glm::vec3(1.0f)) parts << tr("S %1").arg(Format::vec(n.scale));
-            return parts.isEmpty() ? tr("identity") : parts.join(QStringLiteral("  "));
-        }
-        return tr("T %1  R %2  S %3")
-            .arg(Format::vec(n.translation))
-            .arg(Format::vec(glm::vec4(n.rotation.x, n.rotation.y, n.rotation.z, n.rotation.w)))
-            .arg(Format::vec(n.scale));
+        // EXT_mesh_gpu_instancing: the node's mesh is drawn once per row, not at the node.
+        QString instances;
+        if (n.instancing)
+            instances = n.instancing->rows.size() == n.instancing->file_rows
+                            ? tr("×%1 GPU instances").arg(n.instancing->rows.size())
+                            : tr("×%1 GPU instances (of %2 rows)")
+                                  .arg(n.instancing->rows.size())
+                                  .arg(n.instancing->file_rows);
+        const QString transform = nodeTransform(n, full);
+        return instances.isEmpty() ? transform : instances + QStringLiteral("  ") + transform;
     }
     case Kind::Primitive: {
         const PrimitiveInfo& p = s.primitives[idx];

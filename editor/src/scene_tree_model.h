@@ -64,6 +64,7 @@ private:
     QString name(const Item& item) const;
     // `full`: every value (the tooltip); else short enough for a narrow dock.
     QString detail(const Item& item, bool full = false) const;
+    QString nodeTransform(const Node& node, bool full) const;
     // scene_tree_motion.cpp: skins, joints and animations.
     void addMotion(const Scene& scene);
     QString motionName(const Item& item) const;

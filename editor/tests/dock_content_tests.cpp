@@ -9,9 +9,11 @@
 
 #include "editor_context.h"
 #include "format_values.h"
+#include "instance_table_model.h"
 #include "material_fields_model.h"
 #include "mesh_dock.h"
 #include "scene_load_job.h"
+#include "scene_tree_model.h"
 #include "test_assets.h"
 #include "texture_table_model.h"
 
@@ -30,7 +32,57 @@ class DockContentTests : public QObject {
     Q_OBJECT
 private Q_SLOTS:
     void docksShowCompressionContainerAndSpecGloss();
+    void instancedNodeShowsItsRowsInTheTreeAndTheTable();
 };
+
+// EXT_mesh_gpu_instancing: the scene tree shows an instanced node with its count (of
+// the file's rows, where fewer are drawn), and the mesh dock's Instances tab lists the
+// selected node's rows; gltfpack -mi's 2CylinderEngine and a hand-made file.
+void DockContentTests::instancedNodeShowsItsRowsInTheTreeAndTheTable() {
+    for (const QString& file :
+         {QStringLiteral(SHERPA_TEST_DATA_DIR "/instancing_basic.gltf"),
+          QStringLiteral(SHERPA_TEST_DATA_DIR "/instancing_bad_rows.gltf"),
+          QStringLiteral(SHERPA_GLTF_COMPRESS_CACHE "/corpus/2CylinderEngine.instanced.glb")}) {
+        const LoadOutcome out = SceneLoadJob::loadNow(file);
+        QVERIFY2(out.session, qPrintable(out.error));
+        const Scene& s = *out.session->scene;
+        EditorContext context;
+        SceneTreeModel tree(context);
+        MeshDock dock(context);
+        context.setSession(out.session);
+        int checked = 0;
+        for (std::size_t n = 0; n < s.nodes.size(); ++n) {
+            const auto& rows = s.nodes[n].instancing;
+            const QModelIndex item = tree.indexOfNode(int(n));
+            if (!item.isValid()) continue;
+            const QString detail =
+                item.siblingAtColumn(SceneTreeModel::DetailColumn).data().toString();
+            if (!rows) {
+                QVERIFY2(!detail.contains(QStringLiteral("GPU instances")), qPrintable(detail));
+                continue;
+            }
+            const QString count = QStringLiteral("×%1 GPU instances").arg(rows->rows.size());
+            QVERIFY2(detail.startsWith(count), qPrintable(detail));
+            if (rows->rows.size() != rows->file_rows)
+                QVERIFY2(detail.contains(QStringLiteral("of %1 rows").arg(rows->file_rows)),
+                         qPrintable(detail));
+            context.selectNode(int(n));
+            QCOMPARE(dock.instances()->rowCount(), int(rows->rows.size()));
+            const InstanceRow& last = rows->rows.back();
+            const int r = dock.instances()->rowCount() - 1;
+            QCOMPARE(display(*dock.instances(), r, InstanceTableModel::RowColumn),
+                     QString::number(last.file_row));
+            QCOMPARE(display(*dock.instances(), r, InstanceTableModel::TX),
+                     Format::number(last.translation.x));
+            QCOMPARE(display(*dock.instances(), r, InstanceTableModel::RW),
+                     Format::number(last.rotation.w));
+            QCOMPARE(display(*dock.instances(), r, InstanceTableModel::SZ),
+                     Format::number(last.scale.z));
+            ++checked;
+        }
+        QVERIFY2(checked > 0, qPrintable(file));
+    }
+}
 
 // What issue 15's files show in the docks: a Draco primitive's codec and sizes in the
 // mesh summary (as info --json reports them), a KTX2 image's payload and

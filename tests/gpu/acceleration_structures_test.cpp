@@ -305,5 +305,42 @@ TEST(RtPlan, PosedBlasPerMovingInstanceWorldSpaceOnlyWhenSkinned) {
     EXPECT_EQ(gpu::plan_tlas(candidates, {}).instances[1].world, scene.instances[2].world);
 }
 
+// EXT_mesh_gpu_instancing: one TLAS candidate per (node, row, glTF mesh), placed at
+// the pose's node transform times the row's T * R * S.
+TEST(RtPlan, EveryInstancingRowIsATlasInstanceAtNodeWorldTimesRow) {
+    Scene scene;
+    scene.materials.resize(1);
+    scene.nodes.resize(1);
+    NodeInstancing rows;
+    for (int r = 0; r < 3; ++r) {
+        InstanceRow row;
+        row.translation = glm::vec3(float(r), 0.0f, 0.0f);
+        row.scale = glm::vec3(float(r + 1));
+        rows.rows.push_back(row);
+    }
+    scene.nodes[0].instancing = rows;
+    for (std::uint32_t i = 0; i < 2; ++i) { // glTF mesh 0: two primitives
+        Mesh m;
+        m.group_id = 0;
+        scene.meshes.push_back(m);
+    }
+    for (std::int32_t r = 0; r < 3; ++r)
+        for (std::uint32_t mesh = 0; mesh < 2; ++mesh) {
+            MeshInstance inst;
+            inst.mesh_id = mesh;
+            inst.row = r;
+            inst.world = rows.rows[std::size_t(r)].matrix();
+            scene.instances.push_back(inst);
+        }
+    const auto candidates = gpu::tlas_candidates(scene, std::vector{0});
+    ASSERT_EQ(candidates.size(), 3u) << "one per row, not one per node";
+    const std::vector<glm::mat4> pose(1, glm::translate(glm::mat4(1.0f), glm::vec3(0, 5, 0)));
+    const gpu::TlasPlan tlas = gpu::plan_tlas(candidates, {}, pose);
+    ASSERT_EQ(tlas.instances.size(), 3u);
+    for (std::size_t r = 0; r < 3; ++r)
+        EXPECT_EQ(tlas.instances[r].world, pose[0] * rows.rows[r].matrix()) << r;
+    EXPECT_EQ(gpu::plan_tlas(candidates, {}).instances[2].world, rows.rows[2].matrix());
+}
+
 } // namespace
 } // namespace sherpa::test

@@ -2,7 +2,9 @@
 # Builds the compressed-geometry test corpus with the ecosystem's own tools, from
 # the shared sample models: gltfpack (EXT_meshopt_compression + KHR_mesh_quantization,
 # the KHR_meshopt_compression variant, floating-point positions through the
-# EXPONENTIAL filter) and gltf-transform (KHR_draco_mesh_compression). Installs the tools into the cache first (tools/npm_cache_install.sh), skips
+# EXPONENTIAL filter; EXT_mesh_gpu_instancing with -mi) and gltf-transform
+# (KHR_draco_mesh_compression, also of skinned, morphed and quantized models;
+# EXT_mesh_gpu_instancing). Installs the tools into the cache first (tools/npm_cache_install.sh), skips
 # work already done. Usage: make_corpus.sh CACHE_DIR ASSETS_DIR
 set -euo pipefail
 cache="${1:?usage: make_corpus.sh CACHE_DIR ASSETS_DIR}"
@@ -14,7 +16,7 @@ install="$(dirname "$0")/../npm_cache_install.sh"
 gltfpack="$cache/gltfpack/node_modules/.bin/gltfpack"
 gltf_transform="$cache/gltf-transform/node_modules/.bin/gltf-transform"
 corpus="$cache/corpus"
-version="3" # bump when the list below changes
+version="4" # bump when the list below changes
 source "$(dirname "$0")/../corpus_lib.sh"
 corpus_is_current "$corpus" "$version" compressed-geometry && exit 0
 corpus_start "$corpus" "$version" "file source-model codec: one compressed file per line"
@@ -42,4 +44,24 @@ for model in Duck DamagedHelmet BoxTextured 2CylinderEngine; do
   draco "$model.draco.glb" "$model"
 done
 draco Duck.draco.gltf Duck # .gltf + .bin: the broken variants start here
+# Every attribute kind through Draco: skins (JOINTS_0 as unsigned short, WEIGHTS_0),
+# morph targets (kept uncompressed beside the stream), and gltf-transform quantize's
+# normalized integers (COLOR_0 unsigned byte, UVs unsigned short, positions and
+# normals short) before Draco.
+for model in RiggedSimple VC SimpleMorph AnimatedMorphSphere; do
+  draco "$model.draco.glb" "$model"
+done
+run_logged "$corpus/BoxVertexColors.quantized.glb.log" "gltf-transform quantize on BoxVertexColors" \
+  "$gltf_transform" quantize "$assets/gltf/BoxVertexColors/glTF/BoxVertexColors.gltf" \
+  "$corpus/BoxVertexColors.quantized.glb"
+run_logged "$corpus/BoxVertexColors.quantized.draco.glb.log" "gltf-transform draco on BoxVertexColors.quantized" \
+  "$gltf_transform" draco "$corpus/BoxVertexColors.quantized.glb" "$corpus/BoxVertexColors.quantized.draco.glb"
+corpus_add "$corpus" "BoxVertexColors.quantized.draco.glb BoxVertexColors KHR_draco_mesh_compression"
+# EXT_mesh_gpu_instancing: gltfpack -mi (marked required; quantized rotations) and
+# gltf-transform instance (float rows).
+pack 2CylinderEngine.instanced.glb 2CylinderEngine EXT_mesh_gpu_instancing -mi
+run_logged "$corpus/2CylinderEngine.gt_instance.glb.log" "gltf-transform instance on 2CylinderEngine" \
+  "$gltf_transform" instance "$assets/gltf/2CylinderEngine/glTF/2CylinderEngine.gltf" \
+  "$corpus/2CylinderEngine.gt_instance.glb"
+corpus_add "$corpus" "2CylinderEngine.gt_instance.glb 2CylinderEngine EXT_mesh_gpu_instancing"
 corpus_finish "$corpus" "$version" compressed-geometry

@@ -89,6 +89,7 @@ void PosePass::build(const Scene& scene, const GpuScene& gpu) {
             out.mesh = g.mesh;
             out.material = g.material;
             out.world = mi.world;
+            out.row = instance_transform(scene, mi);
             out.local = scene.meshes[g.mesh].local_bounds;
             out.bounds = gpu.instance_bounds()[i];
             out.primitive = primitive_of_mesh[g.mesh];
@@ -185,7 +186,7 @@ void PosePass::write(FrameSlot& slot, const RenderSettings& settings, const Pose
     std::uint32_t weight_at = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const Instance& in = instances_[i];
-        const glm::mat4& world = pose.world[in.node];
+        const glm::mat4 world = pose.world[in.node] * in.row;
         GPUInstanceData g = instance_data(world, in.material, in.mesh);
         key = fnv(key, &world, sizeof(world));
         if (in.primitive >= 0) {
@@ -196,8 +197,9 @@ void PosePass::write(FrameSlot& slot, const RenderSettings& settings, const Pose
                 values[weight_at + k] = k < w.size() && std::isfinite(w[k]) ? w[k] : 0.0f;
             key = fnv(key, w.data(), w.size() * sizeof(float));
             weight_at += in.targets;
-            slot.posed_bounds[i] = culling_bounds(
-                scene_, pose, in.node, scene_.primitives[static_cast<std::size_t>(in.primitive)]);
+            slot.posed_bounds[i] =
+                culling_bounds(scene_, pose, in.node,
+                               scene_.primitives[static_cast<std::size_t>(in.primitive)], in.row);
         } else {
             slot.posed_bounds[i] = world == in.world ? in.bounds : in.local.transformed(world);
         }

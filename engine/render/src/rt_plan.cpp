@@ -7,6 +7,7 @@
 #include <cstring>
 #include <map>
 #include <set>
+#include <tuple>
 
 namespace sherpa::gpu {
 
@@ -73,17 +74,18 @@ bool finite(const glm::mat4& m) {
 std::vector<TlasCandidate> tlas_candidates(const Scene& scene,
                                            std::span<const std::int32_t> blas_of_group) {
     std::vector<TlasCandidate> out;
-    std::set<std::pair<std::uint32_t, std::uint32_t>> pairs; // (node, group)
+    std::set<std::tuple<std::uint32_t, std::int32_t, std::uint32_t>> seen; // (node, row, group)
     for (const MeshInstance& inst : scene.instances) {
         if (inst.mesh_id >= scene.meshes.size()) continue;
         const std::uint32_t group = scene.meshes[inst.mesh_id].group_id;
         if (group >= blas_of_group.size() || blas_of_group[group] < 0) continue;
-        if (!pairs.insert({inst.node_id, group}).second) continue; // another primitive of it
+        if (!seen.insert({inst.node_id, inst.row, group}).second) continue; // another primitive
         TlasCandidate c;
         c.node = inst.node_id;
         c.group = group;
         c.blas = blas_of_group[group];
         c.world = inst.world;
+        c.row = instance_transform(scene, inst);
         c.node_name = inst.node_id < scene.nodes.size() ? scene.nodes[inst.node_id].name : "";
         out.push_back(std::move(c));
     }
@@ -103,7 +105,7 @@ TlasPlan plan_tlas(std::span<const TlasCandidate> candidates, const std::vector<
             continue;
         }
         const glm::mat4 world = c.world_space                ? glm::mat4(1.0f)
-                                : c.node < node_world.size() ? node_world[c.node]
+                                : c.node < node_world.size() ? node_world[c.node] * c.row
                                                              : c.world;
         if (!finite(world)) {
             ++plan.counts.non_finite;

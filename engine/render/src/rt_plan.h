@@ -45,7 +45,8 @@ std::vector<std::vector<std::uint32_t>> batch_by_scratch(std::span<const std::ui
                                                          std::uint64_t budget,
                                                          std::uint64_t alignment);
 
-// A (node, glTF mesh) pair of the displayed scene with a triangle on the GPU, in
+// A (node, EXT_mesh_gpu_instancing row, glTF mesh) of the displayed scene with a
+// triangle on the GPU, in
 // scene-instance order: what the TLAS may instance. `blas` (into the combined BLAS
 // list: the static ones, then the posed ones) is -1 while it has none.
 struct TlasCandidate {
@@ -53,10 +54,11 @@ struct TlasCandidate {
     std::int32_t blas = -1;
     bool world_space = false; // posed in world space (skinned): the instance is the identity
     glm::mat4 world{1.0f};    // as loaded
+    glm::mat4 row{1.0f};      // the instancing row's T * R * S (world = node world x row)
     std::string node_name;    // for warnings
 };
 
-// One per (node, glTF mesh) pair of `scene.instances` (its first primitive's), with
+// One per (node, row, glTF mesh) of `scene.instances` (its first primitive's), with
 // `blas_of_group[group]` as its BLAS (-1 where the mesh has none).
 std::vector<TlasCandidate> tlas_candidates(const Scene& scene,
                                            std::span<const std::int32_t> blas_of_group);
@@ -74,7 +76,7 @@ struct TlasPlan {
     std::vector<std::string> warnings;
 };
 
-// One instance per candidate with a BLAS, at `node_world[node]` (the frame's pose;
+// One instance per candidate with a BLAS, at `node_world[node]` x row (the frame's pose;
 // empty: the candidate's world as loaded), the identity for world-space ones.
 // Excluded and counted: hidden nodes (`hidden_nodes[node]`), non-finite transforms
 // (with a warning), and pairs with the same BLAS and a bitwise identical world

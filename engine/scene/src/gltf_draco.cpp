@@ -2,9 +2,11 @@
 
 #include "accessor_reader.h"
 #include "checked_math.h"
+#include "draco_attributes.h"
 #include "gltf_prepare.h"
 #include "import_error.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -17,22 +19,6 @@ namespace sherpa::detail {
 namespace {
 
 constexpr const char* kCodec = "KHR_draco_mesh_compression";
-
-// Largest value of a normalized integer component type (glTF's normalization).
-float normalized_max(int component_type) {
-    switch (component_type) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE:
-        return 127.0f;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-        return 255.0f;
-    case TINYGLTF_COMPONENT_TYPE_SHORT:
-        return 32767.0f;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-        return 65535.0f;
-    default:
-        return 1.0f;
-    }
-}
 
 // The decoded data of one primitive goes to one new buffer, written in place (no
 // intermediate copies): views are appended 4-byte aligned. Its bytes are reserved
@@ -49,12 +35,14 @@ public:
         data().resize((data().size() + 3) / 4 * 4);
         return data().size();
     }
-    // Adds a view from `offset` to the end of the data; its index.
-    int end_view(std::size_t offset) {
+    // Adds a view from `offset` to the end of the data (rows `stride` bytes apart,
+    // 0: tightly packed); its index.
+    int end_view(std::size_t offset, std::size_t stride = 0) {
         tinygltf::BufferView view;
         view.buffer = index_;
         view.byteOffset = offset;
         view.byteLength = data().size() - offset;
+        view.byteStride = stride;
         model_.bufferViews.push_back(view);
         return static_cast<int>(model_.bufferViews.size() - 1);
     }
@@ -104,9 +92,14 @@ void check_min_max(const tinygltf::Accessor& a, const unsigned char* values, std
         value_range<4>(values, points, lo, hi);
         break;
     }
+    // Draco quantizes every component on one grid over the largest declared range: the
+    // slack follows that range, not each component's own (VC's flat parts).
+    double range = 1e-6;
+    for (int c = 0; c < comps; ++c)
+        range = std::max(range, a.maxValues[std::size_t(c)] - a.minValues[std::size_t(c)]);
     for (int c = 0; c < comps; ++c) {
         const double dlo = a.minValues[std::size_t(c)], dhi = a.maxValues[std::size_t(c)];
-        const double slack = 1e-3 * std::max(dhi - dlo, 1e-6);
+        const double slack = 1e-3 * range;
         if (lo[c] >= dlo - slack && hi[c] <= dhi + slack) continue;
         fail(where + ": decoded component " + std::to_string(c) + " value " +
              std::to_string(lo[c] < dlo - slack ? lo[c] : hi[c]) +
@@ -115,66 +108,49 @@ void check_min_max(const tinygltf::Accessor& a, const unsigned char* values, std
     }
 }
 
-// Gathers each point's float32 value through Draco's point-to-value map.
-template <int Comps>
-void gather_floats(const draco::PointAttribute& att, std::size_t points, unsigned char* out,
-                   const std::string& where) {
-    constexpr std::size_t row = Comps * sizeof(float);
-    const std::size_t stored = att.buffer()->data_size();
-    for (std::size_t i = 0; i < points; ++i) {
-        const draco::AttributeValueIndex v = att.mapped_index(draco::PointIndex(std::uint32_t(i)));
-        if (v.value() >= att.size() ||
-            std::size_t(att.byte_offset() + std::int64_t(v.value()) * att.byte_stride()) + row >
-                stored)
-            fail(where + ": Draco maps point " + std::to_string(i) + " to value " +
-                 std::to_string(v.value()) + " of " + std::to_string(att.size()));
-        std::memcpy(out + i * row, att.GetAddress(v), row);
+// Draco's mesh decoder gives triangle faces; the primitive must draw them as they
+// are. KHR_draco_mesh_compression allows TRIANGLES and TRIANGLE_STRIP, but a
+// stream's faces are a list: read as a strip (or any other mode) they draw garbage,
+// so another mode is named and the faces are drawn as TRIANGLES. A primitive without
+// `indices` draws its points in order, right only when face f is (3f, 3f+1, 3f+2);
+// otherwise it is named and given an index accessor over Draco's faces.
+void check_mode_and_indices(tinygltf::Model& model, tinygltf::Primitive& prim,
+                            const draco::Mesh& mesh, const std::string& prim_path,
+                            DecodedDracoPrimitive& out) {
+    const std::size_t faces = mesh.num_faces(), points = mesh.num_points();
+    if (faces == 0 && prim.mode == TINYGLTF_MODE_POINTS && prim.indices < 0) return;
+    if (prim.mode != TINYGLTF_MODE_TRIANGLES) {
+        out.warnings.push_back(
+            prim_path + ".mode: " + std::to_string(prim.mode) + " (" +
+            std::string(to_string(static_cast<PrimitiveMode>(std::clamp(prim.mode, 0, 6)))) +
+            ") contradicts the Draco stream, which holds " + std::to_string(faces) +
+            " triangles as a list; drawn as TRIANGLES (4)");
+        prim.mode = TINYGLTF_MODE_TRIANGLES;
     }
+    if (prim.indices >= 0) return;
+    bool in_order = points == faces * 3;
+    for (std::size_t f = 0; f < faces && in_order; ++f) {
+        const draco::Mesh::Face& face = mesh.face(draco::FaceIndex(std::uint32_t(f)));
+        in_order = face[0].value() == 3 * f && face[1].value() == 3 * f + 1 &&
+                   face[2].value() == 3 * f + 2;
+    }
+    if (in_order) return;
+    out.warnings.push_back(prim_path + ".indices: missing, but the Draco stream's " +
+                           std::to_string(faces) + " triangles index its " +
+                           std::to_string(points) +
+                           " points out of order; drawn with the stream's triangles");
+    tinygltf::Accessor a;
+    a.type = TINYGLTF_TYPE_SCALAR;
+    a.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+    a.count = faces * 3;
+    a.name = "Draco faces";
+    model.accessors.push_back(std::move(a));
+    prim.indices = static_cast<int>(model.accessors.size() - 1);
 }
 
-// Appends each point's value of `att` as `comps` floats to `data`. Draco dequantizes
-// positions, normals and UVs to float32 itself: those are copied (the whole
-// attribute at once when points map to values one to one), others converted.
-void append_as_float(const draco::PointAttribute& att, std::size_t points, int comps,
-                     std::vector<unsigned char>& data, const std::string& where) {
-    const std::size_t row = std::size_t(comps) * sizeof(float), offset = data.size();
-    const bool float32 = att.data_type() == draco::DT_FLOAT32 && att.buffer() && comps <= 4;
-    if (float32 && att.is_mapping_identity() && std::size_t(att.byte_stride()) == row &&
-        att.size() >= points &&
-        std::size_t(att.byte_offset()) + points * row <= att.buffer()->data_size()) {
-        const unsigned char* src = att.buffer()->data() + att.byte_offset();
-        data.insert(data.end(), src, src + points * row);
-        return;
-    }
-    data.resize(offset + points * row);
-    unsigned char* out = data.data() + offset;
-    if (float32) {
-        switch (comps) {
-        case 1:
-            gather_floats<1>(att, points, out, where);
-            return;
-        case 2:
-            gather_floats<2>(att, points, out, where);
-            return;
-        case 3:
-            gather_floats<3>(att, points, out, where);
-            return;
-        default:
-            gather_floats<4>(att, points, out, where);
-            return;
-        }
-    }
-    std::vector<float> value(static_cast<std::size_t>(comps));
-    for (std::size_t i = 0; i < points; ++i) {
-        if (!att.ConvertValue<float>(att.mapped_index(draco::PointIndex(std::uint32_t(i))),
-                                     std::int8_t(comps), value.data()))
-            fail(where + ": Draco could not convert point " + std::to_string(i) + " to float");
-        std::memcpy(out + i * row, value.data(), row);
-    }
-}
-
-void decode_primitive(tinygltf::Model& model, tinygltf::Primitive& prim, const std::string& where,
-                      DecodedDracoPrimitive& out) {
+void decode_primitive(tinygltf::Model& model, tinygltf::Primitive& prim,
+                      const std::string& prim_path, DecodedDracoPrimitive& out) {
+    const std::string where = prim_path + "." + kCodec;
     const tinygltf::Value& ext = prim.extensions.at(kCodec);
     if (ext.Has(kDracoIndicesKey)) prim.indices = ext.Get(kDracoIndicesKey).GetNumberAsInt();
     if (!ext.Has("bufferView") || !ext.Get("bufferView").IsNumber())
@@ -233,29 +209,26 @@ void decode_primitive(tinygltf::Model& model, tinygltf::Primitive& prim, const s
             fail(aw + ": accessor has " + std::to_string(comps) + " components but Draco decoded " +
                  std::to_string(int(att->num_components())));
         const std::size_t offset = buffer.begin_view();
-        append_as_float(*att, points, comps, buffer.data(), aw);
-        unsigned char* values = buffer.data().data() + offset;
-        const std::size_t count = points * std::size_t(comps);
-        if (a.normalized && a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT &&
-            att->data_type() != draco::DT_FLOAT32) {
-            const float scale = normalized_max(a.componentType);
-            for (std::size_t i = 0; i < count; ++i) {
-                const float x = std::max(load_float(values + i * 4) / scale, -1.0f);
-                std::memcpy(values + i * 4, &x, sizeof x);
-            }
+        const std::size_t stride = append_draco_attribute(*att, points, comps, a.componentType,
+                                                          a.normalized, buffer.data(), aw);
+        // Dequantized floats get Draco's quantization slack here; integers are exact,
+        // and the importer checks them like any other accessor.
+        if (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+            check_min_max(a, buffer.data().data() + offset, points, comps, aw);
+            out.range_checked.push_back(used->second);
         }
-        check_min_max(a, values, points, comps, aw);
-        out.range_checked.push_back(used->second);
-        a.bufferView = buffer.end_view(offset);
+        const std::size_t row =
+            std::size_t(comps) *
+            std::size_t(tinygltf::GetComponentSizeInBytes(std::uint32_t(a.componentType)));
+        a.bufferView = buffer.end_view(offset, stride == row ? 0 : stride);
         a.byteOffset = 0;
-        a.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-        a.normalized = false;
         a.sparse = {};
-        out.stats.decoded_bytes += count * sizeof(float);
+        out.stats.decoded_bytes += points * stride;
     }
+    const std::size_t faces = mesh->num_faces();
+    check_mode_and_indices(model, prim, *mesh, prim_path, out);
     if (prim.indices >= 0) {
         tinygltf::Accessor& a = model.accessors.at(std::size_t(prim.indices));
-        const std::size_t faces = mesh->num_faces();
         if (a.count != faces * 3)
             fail(where + ": indices accessor count " + std::to_string(a.count) +
                  " but Draco decoded " + std::to_string(faces * 3) + " indices");
@@ -270,10 +243,16 @@ void decode_primitive(tinygltf::Model& model, tinygltf::Primitive& prim, const s
         a.bufferView = buffer.end_view(offset);
         a.byteOffset = 0;
         a.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+        a.sparse = {};
         out.stats.decoded_bytes += faces * 3 * sizeof(std::uint32_t);
     }
     out.stats.codec = kCodec;
     out.stats.modes = edgebreaker ? "edgebreaker" : "sequential";
+    // Draco holds no morph targets: they stay plain accessors in the stream's point
+    // order (which only sequential coding keeps), and info says so.
+    if (!prim.targets.empty())
+        out.stats.modes +=
+            ", " + std::to_string(prim.targets.size()) + " morph targets uncompressed";
     out.stats.encoded_bytes = encoded_bytes;
     out.stats.decode_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -287,11 +266,10 @@ std::vector<DecodedDracoPrimitive> decode_draco_primitives(tinygltf::Model& mode
         for (std::size_t p = 0; p < model.meshes[m].primitives.size(); ++p) {
             auto& prim = model.meshes[m].primitives[p];
             if (!prim.extensions.count(kCodec)) continue;
-            DecodedDracoPrimitive d{std::uint32_t(m), std::uint32_t(p), {}, {}};
-            decode_primitive(model, prim,
-                             "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) +
-                                 "]." + kCodec,
-                             d);
+            DecodedDracoPrimitive d{std::uint32_t(m), std::uint32_t(p), {}, {}, {}};
+            decode_primitive(
+                model, prim,
+                "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]", d);
             decoded.push_back(std::move(d));
         }
     return decoded;

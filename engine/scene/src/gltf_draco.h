@@ -3,9 +3,11 @@
 // importer reads any accessor. Each compressed primitive's attributes (mapped by the
 // extension's unique ids) and indices are decoded, dequantized by Draco, checked
 // against the uncompressed accessors' declared count, type and min/max, and written
-// to a new buffer the accessors are pointed at (as FLOAT / UNSIGNED_INT data).
+// to a new buffer the accessors are pointed at, in the component type each accessor
+// declares (draco_attributes.h); indices as UNSIGNED_INT.
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <sherpa/scene/scene.h>
@@ -22,6 +24,9 @@ struct DecodedDracoPrimitive {
     // Accessors whose min/max decode_draco_primitives checked with Draco's
     // quantization slack (the importer's exact check would flag its rounding).
     std::vector<int> range_checked;
+    // What the file contradicts but can still be drawn (a mode other than TRIANGLES,
+    // missing indices over out-of-order faces): warnings naming the JSON path.
+    std::vector<std::string> warnings;
 };
 
 // Decodes every Draco-compressed primitive of `model` in place. Throws ImportError

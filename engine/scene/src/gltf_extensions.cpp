@@ -6,7 +6,8 @@
 namespace sherpa {
 namespace {
 
-constexpr std::array<std::string_view, 11> kSupported{
+constexpr std::array<std::string_view, 12> kSupported{
+    "EXT_mesh_gpu_instancing",    // one engine instance per row (gltf_instancing.cpp)
     "EXT_meshopt_compression",    // through Debian's meshoptimizer
     "EXT_texture_webp",           // through OpenImageIO
     "KHR_draco_mesh_compression", // through Debian's Draco

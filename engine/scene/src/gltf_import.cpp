@@ -160,8 +160,10 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         const auto decoded_views = detail::decode_meshopt_views(model);
         const auto decoded_draco = detail::decode_draco_primitives(model);
         detail::ImportContext ctx{model, *scene};
-        for (const auto& d : decoded_draco)
+        for (const auto& d : decoded_draco) {
             ctx.range_checked.insert(d.range_checked.begin(), d.range_checked.end());
+            for (const std::string& w : d.warnings) ctx.warn(w);
+        }
         if (!detail::begin_stage(options, LoadStage::Geometry)) return detail::cancelled_result();
         detail::import_samplers_images_textures(ctx);
         detail::import_materials(ctx);
@@ -173,6 +175,7 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         detail::import_lights_cameras(ctx);
         detail::import_nodes_and_scenes(ctx);
         detail::import_skins(ctx);
+        detail::import_gpu_instancing(ctx);
         detail::import_default_weights(ctx);
         detail::import_animations(ctx);
         warn_unsupported_content(ctx);

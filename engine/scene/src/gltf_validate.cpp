@@ -204,6 +204,15 @@ std::string check_properties(const json& root) {
     c.each(root, "nodes", [&](const json& n, const std::string& w) {
         for (const char* key : {"mesh", "camera", "skin"}) c.index(n, key, w);
         c.index_array(n, "children", w);
+        // EXT_mesh_gpu_instancing's accessor ids, which tinygltf reads as int.
+        if (n.contains("extensions") && n["extensions"].is_object() &&
+            n["extensions"].contains("EXT_mesh_gpu_instancing")) {
+            const json& e = n["extensions"]["EXT_mesh_gpu_instancing"];
+            if (e.is_object() && e.contains("attributes") && e["attributes"].is_object())
+                for (const auto& [name, value] : e["attributes"].items())
+                    c.index(e["attributes"], name.c_str(),
+                            w + ".extensions.EXT_mesh_gpu_instancing.attributes");
+        }
     });
     c.each(root, "scenes",
            [&](const json& s, const std::string& w) { c.index_array(s, "nodes", w); });

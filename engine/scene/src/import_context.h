@@ -37,5 +37,7 @@ void import_materials(ImportContext& ctx);
 void import_meshes(ImportContext& ctx);
 void import_lights_cameras(ImportContext& ctx);
 void import_nodes_and_scenes(ImportContext& ctx);
+// EXT_mesh_gpu_instancing rows of each node (after nodes and skins; gltf_instancing.cpp).
+void import_gpu_instancing(ImportContext& ctx);
 
 } // namespace sherpa::detail

@@ -35,10 +35,10 @@ bool overflows(const Aabb& b) {
 } // namespace
 
 std::vector<glm::vec3> posed_positions(const Scene& scene, const Pose& pose, std::uint32_t node,
-                                       const PrimitiveInfo& prim) {
+                                       const PrimitiveInfo& prim, const glm::mat4& instance) {
     std::vector<glm::vec3> out;
     if (prim.engine_mesh < 0) return out;
-    const glm::mat4& world = pose.world[node];
+    const glm::mat4 world = pose.world[node] * instance;
     if (prim.motion < 0) {
         const Mesh& mesh = scene.meshes[static_cast<std::size_t>(prim.engine_mesh)];
         out.reserve(mesh.vertices.size());
@@ -70,9 +70,9 @@ std::vector<glm::vec3> posed_positions(const Scene& scene, const Pose& pose, std
 }
 
 Aabb culling_bounds(const Scene& scene, const Pose& pose, std::uint32_t node,
-                    const PrimitiveInfo& prim) {
+                    const PrimitiveInfo& prim, const glm::mat4& instance) {
     if (prim.engine_mesh < 0) return Aabb::empty();
-    const glm::mat4& world = pose.world[node];
+    const glm::mat4 world = pose.world[node] * instance;
     if (prim.motion < 0)
         return padded(
             scene.meshes[static_cast<std::size_t>(prim.engine_mesh)].local_bounds.transformed(
@@ -104,7 +104,9 @@ std::vector<Aabb> instance_culling_bounds(const Scene& scene, const Pose& pose) 
     out.reserve(scene.instances.size());
     for (const MeshInstance& inst : scene.instances) {
         const PrimitiveInfo* p = inst.mesh_id < of_mesh.size() ? of_mesh[inst.mesh_id] : nullptr;
-        out.push_back(p ? culling_bounds(scene, pose, inst.node_id, *p) : inst.world_bounds);
+        out.push_back(
+            p ? culling_bounds(scene, pose, inst.node_id, *p, instance_transform(scene, inst))
+              : inst.world_bounds);
     }
     return out;
 }
@@ -113,7 +115,7 @@ void apply_pose_bounds(Scene& scene, const Pose& pose) {
     const std::vector<Aabb> bounds = instance_culling_bounds(scene, pose);
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
         MeshInstance& inst = scene.instances[i];
-        inst.world = pose.world[inst.node_id];
+        inst.world = pose.world[inst.node_id] * instance_transform(scene, inst);
         inst.world_bounds = bounds[i];
     }
 }
@@ -124,19 +126,24 @@ PosedBounds posed_scene_bounds(const Scene& scene, const Pose& pose) {
         const Node& node = scene.nodes[n];
         if (node.mesh < 0) continue;
         bool overflow = false;
-        for (const PrimitiveInfo& p : scene.primitives) {
-            if (p.mesh != static_cast<std::uint32_t>(node.mesh) || p.engine_mesh < 0) continue;
-            const std::vector<glm::vec3> posed = posed_positions(scene, pose, n, p);
-            const Aabb culling = culling_bounds(scene, pose, n, p);
-            // Both boxes leave out what either cannot bound, so the conservative one
-            // still holds the exact one.
-            if (overflows(culling) || !std::all_of(posed.begin(), posed.end(),
-                                                   [](glm::vec3 v) { return is_finite(v); })) {
-                overflow = true;
-                continue;
+        const std::size_t rows = node.instancing ? node.instancing->rows.size() : 1;
+        for (std::size_t r = 0; r < rows; ++r) {
+            const glm::mat4 row =
+                node.instancing ? node.instancing->rows[r].matrix() : glm::mat4(1);
+            for (const PrimitiveInfo& p : scene.primitives) {
+                if (p.mesh != static_cast<std::uint32_t>(node.mesh) || p.engine_mesh < 0) continue;
+                const std::vector<glm::vec3> posed = posed_positions(scene, pose, n, p, row);
+                const Aabb culling = culling_bounds(scene, pose, n, p, row);
+                // Both boxes leave out what either cannot bound, so the conservative one
+                // still holds the exact one.
+                if (overflows(culling) || !std::all_of(posed.begin(), posed.end(),
+                                                       [](glm::vec3 v) { return is_finite(v); })) {
+                    overflow = true;
+                    continue;
+                }
+                for (const glm::vec3& v : posed) out.exact.expand(v);
+                out.culling.expand(culling);
             }
-            for (const glm::vec3& v : posed) out.exact.expand(v);
-            out.culling.expand(culling);
         }
         if (overflow) out.overflow.push_back(n);
     }

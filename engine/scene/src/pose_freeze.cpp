@@ -15,8 +15,9 @@ Scene freeze_pose(const Scene& s, const Pose& pose) {
             if (p.engine_mesh == static_cast<std::int32_t>(inst.mesh_id)) prim = &p;
         if (!prim) continue;
         Mesh mesh = s.meshes[inst.mesh_id];
-        const std::vector<glm::vec3> posed = posed_positions(s, pose, inst.node_id, *prim);
-        const glm::mat4& world = pose.world[inst.node_id];
+        const glm::mat4 row = instance_transform(s, inst);
+        const std::vector<glm::vec3> posed = posed_positions(s, pose, inst.node_id, *prim, row);
+        const glm::mat4 world = pose.world[inst.node_id] * row;
         const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(world)));
         const PrimitiveMotion* m =
             prim->motion >= 0 ? &s.motions[static_cast<std::size_t>(prim->motion)] : nullptr;

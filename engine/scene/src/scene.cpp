@@ -12,6 +12,18 @@ glm::mat4 Node::local_transform() const {
            glm::scale(glm::mat4(1.0f), scale);
 }
 
+glm::mat4 InstanceRow::matrix() const {
+    return glm::translate(glm::mat4(1.0f), translation) * glm::mat4_cast(rotation) *
+           glm::scale(glm::mat4(1.0f), scale);
+}
+
+glm::mat4 instance_transform(const Scene& scene, const MeshInstance& instance) {
+    if (instance.row < 0 || instance.node_id >= scene.nodes.size()) return glm::mat4(1.0f);
+    const auto& instancing = scene.nodes[instance.node_id].instancing;
+    if (!instancing || std::size_t(instance.row) >= instancing->rows.size()) return glm::mat4(1.0f);
+    return instancing->rows[std::size_t(instance.row)].matrix();
+}
+
 SamplerDesc Scene::sampler_of(const TextureRecord& t) const {
     if (t.sampler >= 0 && static_cast<std::size_t>(t.sampler) < samplers.size())
         return samplers[static_cast<std::size_t>(t.sampler)];
@@ -38,7 +50,8 @@ std::uint64_t Scene::node_primitive_pairs() const {
     std::uint64_t pairs = 0;
     for (std::uint32_t n : displayed_nodes)
         if (nodes[n].mesh >= 0 && static_cast<std::size_t>(nodes[n].mesh) < mesh_primitives.size())
-            pairs += mesh_primitives[static_cast<std::size_t>(nodes[n].mesh)].size();
+            pairs += mesh_primitives[static_cast<std::size_t>(nodes[n].mesh)].size() *
+                     (nodes[n].instancing ? nodes[n].instancing->file_rows : 1u);
     return pairs;
 }
 
@@ -83,27 +96,38 @@ bool select_scene(Scene& scene, std::int32_t scene_index, std::string& error) {
             return false;
         }
         if (node.mesh >= 0 && static_cast<std::size_t>(node.mesh) < scene.mesh_primitives.size()) {
-            for (std::int32_t mesh_id :
-                 scene.mesh_primitives[static_cast<std::size_t>(node.mesh)]) {
-                if (mesh_id < 0) continue;
-                const Mesh& mesh = scene.meshes[static_cast<std::size_t>(mesh_id)];
-                MeshInstance inst;
-                inst.mesh_id = static_cast<std::uint32_t>(mesh_id);
-                inst.material_id = mesh.material_id;
-                inst.node_id = id;
-                inst.world = inst.prev_world = m;
-                inst.world_bounds = mesh.local_bounds.transformed(m);
-                // Finite matrix x finite positions can still exceed the float range:
-                // infinite bounds would print as null and frame nothing.
-                if (!is_finite(inst.world_bounds.min) || !is_finite(inst.world_bounds.max)) {
-                    error = "nodes[" + std::to_string(id) + "]" +
-                            (node.name.empty() ? "" : " \"" + node.name + "\"") +
-                            ": world bounds of its mesh overflow the float range (node "
-                            "transform x positions)";
-                    return false;
+            // EXT_mesh_gpu_instancing: one instance per row, instead of the node's own.
+            const NodeInstancing* rows = node.instancing ? &*node.instancing : nullptr;
+            const std::size_t row_count = rows ? rows->rows.size() : 1;
+            for (std::size_t r = 0; r < row_count; ++r) {
+                const glm::mat4 w = rows ? m * rows->rows[r].matrix() : m;
+                for (std::int32_t mesh_id :
+                     scene.mesh_primitives[static_cast<std::size_t>(node.mesh)]) {
+                    if (mesh_id < 0) continue;
+                    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(mesh_id)];
+                    MeshInstance inst;
+                    inst.mesh_id = static_cast<std::uint32_t>(mesh_id);
+                    inst.material_id = mesh.material_id;
+                    inst.node_id = id;
+                    inst.row = rows ? static_cast<std::int32_t>(r) : -1;
+                    inst.world = inst.prev_world = w;
+                    inst.world_bounds = mesh.local_bounds.transformed(w);
+                    // Finite matrix x finite positions can still exceed the float range:
+                    // infinite bounds would print as null and frame nothing.
+                    if (!is_finite(inst.world_bounds.min) || !is_finite(inst.world_bounds.max)) {
+                        error = "nodes[" + std::to_string(id) + "]" +
+                                (node.name.empty() ? "" : " \"" + node.name + "\"") +
+                                (rows ? " EXT_mesh_gpu_instancing row " +
+                                            std::to_string(rows->rows[r].file_row)
+                                      : std::string()) +
+                                ": world bounds of its mesh overflow the float range (" +
+                                (rows ? "node transform x instance row" : "node transform") +
+                                " x positions)";
+                        return false;
+                    }
+                    bounds.expand(inst.world_bounds);
+                    instances.push_back(inst);
                 }
-                bounds.expand(inst.world_bounds);
-                instances.push_back(inst);
             }
         }
         if (node.light >= 0) {

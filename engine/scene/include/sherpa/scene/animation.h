@@ -36,10 +36,11 @@ Pose evaluate_pose(const Scene& scene, std::int32_t animation, double time);
 
 // World-space positions of primitive `prim`'s vertices (the file's vertex order) on node
 // `node`, morphed by the node's weights and skinned by its skin when both apply; static
-// primitives are transformed by the node's world matrix. Empty for primitives without an
-// engine mesh.
+// primitives are transformed by the node's world matrix (times `instance`, an
+// EXT_mesh_gpu_instancing row's transform). Empty for primitives without an engine mesh.
 std::vector<glm::vec3> posed_positions(const Scene& scene, const Pose& pose, std::uint32_t node,
-                                       const PrimitiveInfo& prim);
+                                       const PrimitiveInfo& prim,
+                                       const glm::mat4& instance = glm::mat4(1.0f));
 
 // Conservative world bounds of the same vertices, from the per-joint boxes computed at
 // load (PrimitiveMotion::boxes) with the morph delta boxes scaled by the current
@@ -47,10 +48,10 @@ std::vector<glm::vec3> posed_positions(const Scene& scene, const Pose& pose, std
 // Not finite where the pose leaves the float range (posed_overflow_nodes()): culling
 // then keeps the instance (an invalid box is never culled).
 Aabb culling_bounds(const Scene& scene, const Pose& pose, std::uint32_t node,
-                    const PrimitiveInfo& prim);
+                    const PrimitiveInfo& prim, const glm::mat4& instance = glm::mat4(1.0f));
 
 // Conservative world bounds of every instance (Scene::instances order) in `pose`: its
-// primitive's culling_bounds() on its node. What culling uses while things move.
+// primitive's culling_bounds() on its node (and row). What culling uses while things move.
 std::vector<Aabb> instance_culling_bounds(const Scene& scene, const Pose& pose);
 
 // Moves `scene`'s instances to `pose` for culling: world matrices from the pose and

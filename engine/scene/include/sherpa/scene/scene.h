@@ -122,6 +122,28 @@ struct PrimitiveInfo {
     std::uint32_t morph_targets = 0;                 // as the file gives them
 };
 
+// One row of a node's EXT_mesh_gpu_instancing attributes: an instance of the node's
+// mesh at node world x T x R x S.
+struct InstanceRow {
+    glm::vec3 translation{0.0f};
+    glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f}; // unit length (normalised on import)
+    glm::vec3 scale{1.0f};
+    std::uint32_t file_row = 0; // its index in the file's accessors
+    glm::mat4 matrix() const;   // T * R * S
+};
+
+// A node's EXT_mesh_gpu_instancing: the rows that are drawn (non-finite ones and
+// those past kMaxGpuInstanceRows are not), and what the file states.
+struct NodeInstancing {
+    std::vector<InstanceRow> rows;
+    std::uint32_t file_rows = 0; // the count of the attribute accessors (the smallest)
+    std::int32_t translation = -1, rotation = -1, scale = -1; // accessor indices, -1: absent
+    std::vector<std::string> custom_attributes;               // _ID, ...: read, not drawn
+};
+// At most this many instances (rows x drawable primitives) come from
+// EXT_mesh_gpu_instancing per file; rows past it are not drawn, with a warning.
+inline constexpr std::uint64_t kMaxGpuInstanceRows = std::uint64_t{1} << 20;
+
 struct Node {
     std::string name;
     std::int32_t parent = -1;
@@ -133,6 +155,7 @@ struct Node {
     glm::vec3 scale{1.0f};
     std::int32_t mesh = -1, camera = -1, light = -1, skin = -1;
     std::vector<float> weights; // morph weights: the node's, else its mesh's, else zeros
+    std::optional<NodeInstancing> instancing; // EXT_mesh_gpu_instancing: one instance per row
     glm::mat4 local_transform() const;
 };
 
@@ -171,7 +194,8 @@ struct MeshInstance {
     std::uint32_t mesh_id = 0;
     std::uint32_t material_id = 0;
     std::uint32_t node_id = 0;
-    glm::mat4 world{1.0f};
+    std::int32_t row = -1; // its node's EXT_mesh_gpu_instancing row (Node::instancing), -1: none
+    glm::mat4 world{1.0f}; // node world x the row's T * R * S
     glm::mat4 prev_world{1.0f};
     Aabb world_bounds;
 };
@@ -235,7 +259,8 @@ struct Scene {
     double parse_ms = 0.0, process_ms = 0.0;
 
     // node x primitive pairs of the displayed scene, drawable or not (points,
-    // lines and empty primitives included), as the file states them.
+    // lines and empty primitives included), as the file states them (an
+    // EXT_mesh_gpu_instancing node counts once per row of its accessors).
     std::uint64_t node_primitive_pairs() const;
     // Every attribute of a primitive with its provenance: the engine mesh's six
     // streams as they are now (after tangent generation and the like), plus the
@@ -245,6 +270,10 @@ struct Scene {
     // Sampler for a texture, the glTF default when it names none.
     SamplerDesc sampler_of(const TextureRecord& t) const;
 };
+
+// The instance's EXT_mesh_gpu_instancing row transform (T * R * S), the identity for
+// an instance without one: its world is its node's world times this.
+glm::mat4 instance_transform(const Scene& scene, const MeshInstance& instance);
 
 // Rebuilds the flattened data (instances, placed lights/cameras, bounds) for
 // `scene_index`. Returns false with `error` set if the index is out of range or a

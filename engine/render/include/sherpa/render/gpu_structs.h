@@ -3,8 +3,9 @@
 // shaders/include/{common,material_extra,cull_structs}.glsl (GPUMaterialData, the
 // scene layer's, is in sherpa/scene/material.h). Every offset is pinned here; change
 // both sides together: tests/gpu/struct_twins_test.cpp compiles the GLSL side and
-// fails on any field whose name or offset differs (add a new struct to its table). The constants and enum values the shaders use are not
-// copied: sherpa_glsl_constants generates them from this header (sherpa_constants.glsl).
+// fails on any field whose name or offset differs (add a new struct to its table). The constants
+// and enum values the shaders use are not copied: sherpa_glsl_constants generates them from this
+// header (sherpa_constants.glsl).
 #include <cstddef>
 #include <cstdint>
 

@@ -590,6 +590,109 @@ PSNR %3
     </message>
 </context>
 <context>
+    <name>sherpa::editor::EnvironmentMenu</name>
+    <message>
+        <source>&amp;Environment</source>
+        <translation>&amp;Umgebung</translation>
+    </message>
+    <message>
+        <source>&amp;None (Ambient Only)</source>
+        <translation>&amp;Keine (nur Umgebungslicht-Term)</translation>
+    </message>
+    <message>
+        <source>&amp;Room (Built In)</source>
+        <translation>&amp;Raum (eingebaut)</translation>
+    </message>
+    <message>
+        <source>&amp;Open HDR or EXR… (%1)</source>
+        <translation>HDR oder EXR ö&amp;ffnen… (%1)</translation>
+    </message>
+    <message>
+        <source>&amp;Open HDR or EXR…</source>
+        <translation>HDR oder EXR ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <source>&amp;Background</source>
+        <translation>&amp;Hintergrund</translation>
+    </message>
+    <message>
+        <source>&amp;Blurred</source>
+        <translation>&amp;Weichgezeichnet</translation>
+    </message>
+    <message>
+        <source>&amp;Solid Colour</source>
+        <translation>&amp;Einfarbig</translation>
+    </message>
+    <message>
+        <source>Rotate −15° (now %1°)</source>
+        <translation>Um −15° drehen (jetzt %1°)</translation>
+    </message>
+    <message>
+        <source>Rotate +15° (now %1°)</source>
+        <translation>Um +15° drehen (jetzt %1°)</translation>
+    </message>
+    <message>
+        <source>Brighter (intensity %1)</source>
+        <translation>Heller (Intensität %1)</translation>
+    </message>
+    <message>
+        <source>Darker</source>
+        <translation>Dunkler</translation>
+    </message>
+    <message>
+        <source>Reset Rotation and Intensity</source>
+        <translation>Drehung und Intensität zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Default &amp;Sun</source>
+        <translation>Standard-&amp;Sonne</translation>
+    </message>
+    <message>
+        <source>Energy &amp;Compensation (Multiple Scattering)</source>
+        <translation>Energie&amp;kompensation (Mehrfachstreuung)</translation>
+    </message>
+    <message>
+        <source>&amp;Tone Mapping</source>
+        <translation>&amp;Tone-Mapping</translation>
+    </message>
+    <message>
+        <source>Khronos PBR &amp;Neutral</source>
+        <translation>Khronos PBR &amp;Neutral</translation>
+    </message>
+    <message>
+        <source>&amp;ACES Filmic</source>
+        <translation>&amp;ACES Filmic</translation>
+    </message>
+    <message>
+        <source>A&amp;gX</source>
+        <translation>A&amp;gX</translation>
+    </message>
+    <message>
+        <source>&amp;Linear (Clamp)</source>
+        <translation>&amp;Linear (Begrenzen)</translation>
+    </message>
+    <message>
+        <source>Exposure +½ Stop (now %1 EV)</source>
+        <translation>Belichtung +½ Blende (jetzt %1 EV)</translation>
+    </message>
+    <message>
+        <source>Exposure −½ Stop</source>
+        <translation>Belichtung −½ Blende</translation>
+    </message>
+    <message>
+        <source>Exposure 0 EV</source>
+        <translation>Belichtung 0 EV</translation>
+    </message>
+    <message>
+        <source>Open Environment</source>
+        <translation>Umgebung öffnen</translation>
+    </message>
+    <message>
+        <source>HDR images (*.hdr *.exr);;All files (*)</source>
+        <translation>HDR-Bilder (*.hdr *.exr);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::LabDock</name>
     <message>
         <source>The Lab could not run: %1</source>
@@ -816,6 +919,18 @@ PSNR %3
 </context>
 <context>
     <name>sherpa::editor::MainWindow</name>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>the room</source>
+        <translation>den Raum</translation>
+    </message>
+    <message>
+        <source>Environment: %1.</source>
+        <translation>Umgebung: %1.</translation>
+    </message>
     <message>
         <source>Loading %1 cancelled; the result is discarded.</source>
         <translation>Laden von %1 abgebrochen; das Ergebnis wird verworfen.</translation>

@@ -590,6 +590,109 @@ PSNR %3
     </message>
 </context>
 <context>
+    <name>sherpa::editor::EnvironmentMenu</name>
+    <message>
+        <source>&amp;Environment</source>
+        <translation>环境(&amp;E)</translation>
+    </message>
+    <message>
+        <source>&amp;None (Ambient Only)</source>
+        <translation>无（仅环境光项）(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;Room (Built In)</source>
+        <translation>房间（内置）(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Open HDR or EXR… (%1)</source>
+        <translation>打开 HDR 或 EXR…(%1)(&amp;O)</translation>
+    </message>
+    <message>
+        <source>&amp;Open HDR or EXR…</source>
+        <translation>打开 HDR 或 EXR…(&amp;O)</translation>
+    </message>
+    <message>
+        <source>&amp;Background</source>
+        <translation>背景(&amp;B)</translation>
+    </message>
+    <message>
+        <source>&amp;Blurred</source>
+        <translation>模糊(&amp;B)</translation>
+    </message>
+    <message>
+        <source>&amp;Solid Colour</source>
+        <translation>纯色(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Rotate −15° (now %1°)</source>
+        <translation>旋转 −15°（当前 %1°）</translation>
+    </message>
+    <message>
+        <source>Rotate +15° (now %1°)</source>
+        <translation>旋转 +15°（当前 %1°）</translation>
+    </message>
+    <message>
+        <source>Brighter (intensity %1)</source>
+        <translation>更亮（强度 %1）</translation>
+    </message>
+    <message>
+        <source>Darker</source>
+        <translation>更暗</translation>
+    </message>
+    <message>
+        <source>Reset Rotation and Intensity</source>
+        <translation>重置旋转和强度</translation>
+    </message>
+    <message>
+        <source>Default &amp;Sun</source>
+        <translation>默认太阳(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Energy &amp;Compensation (Multiple Scattering)</source>
+        <translation>能量补偿（多次散射）(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Tone Mapping</source>
+        <translation>色调映射(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Khronos PBR &amp;Neutral</source>
+        <translation>Khronos PBR 中性(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;ACES Filmic</source>
+        <translation>ACES 电影(&amp;A)</translation>
+    </message>
+    <message>
+        <source>A&amp;gX</source>
+        <translation>AgX(&amp;G)</translation>
+    </message>
+    <message>
+        <source>&amp;Linear (Clamp)</source>
+        <translation>线性（截断）(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Exposure +½ Stop (now %1 EV)</source>
+        <translation>曝光 +½ 档（当前 %1 EV）</translation>
+    </message>
+    <message>
+        <source>Exposure −½ Stop</source>
+        <translation>曝光 −½ 档</translation>
+    </message>
+    <message>
+        <source>Exposure 0 EV</source>
+        <translation>曝光 0 EV</translation>
+    </message>
+    <message>
+        <source>Open Environment</source>
+        <translation>打开环境</translation>
+    </message>
+    <message>
+        <source>HDR images (*.hdr *.exr);;All files (*)</source>
+        <translation>HDR 图像 (*.hdr *.exr);;所有文件 (*)</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::LabDock</name>
     <message>
         <source>The Lab could not run: %1</source>
@@ -816,6 +919,18 @@ PSNR %3
 </context>
 <context>
     <name>sherpa::editor::MainWindow</name>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>the room</source>
+        <translation>房间</translation>
+    </message>
+    <message>
+        <source>Environment: %1.</source>
+        <translation>环境：%1。</translation>
+    </message>
     <message>
         <source>Loading %1 cancelled; the result is discarded.</source>
         <translation>已取消加载 %1；结果将被丢弃。</translation>

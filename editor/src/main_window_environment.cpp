@@ -9,6 +9,7 @@
 #include "render_thread.h"
 #include "viewport_window.h"
 
+#include <QCoreApplication>
 #include <QMenuBar>
 #include <QPointer>
 

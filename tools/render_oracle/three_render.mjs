@@ -124,8 +124,20 @@ try {
   await tab.setViewport({ width, height });
   const logs = [];
   tab.on('console', (m) => logs.push(m.text()));
+  tab.on('pageerror', (e) => { logs.push(String(e)); console.error(`three_render: page error: ${e}`); });
+  // A file the page cannot get ends the run at once (a missing module never signals).
+  let missing = null;
+  const ours = (url) => /\/(three|model)\/|\/environment\.exr$/.test(new URL(url).pathname);
+  tab.on('requestfailed', (r) => { if (ours(r.url())) missing = r.url(); });
+  tab.on('response', (r) => { if (r.status() >= 400 && ours(r.url())) missing = r.url(); });
   await tab.goto(`http://127.0.0.1:${port}/`);
-  await tab.waitForFunction('window.__sherpaDone || window.__sherpaError', { timeout: timeoutMs, polling: 500 });
+  const drawn = tab.waitForFunction('window.__sherpaDone || window.__sherpaError',
+    { timeout: timeoutMs, polling: 500 });
+  const failed = new Promise((_, no) => {
+    const t = setInterval(() => { if (missing) { clearInterval(t); no(new Error(`cannot load ${missing}`)); } }, 200);
+    drawn.finally(() => clearInterval(t)).catch(() => {});
+  });
+  await Promise.race([drawn, failed]);
   const error = await tab.evaluate(() => window.__sherpaError);
   if (error) throw new Error(`page: ${error}\n${logs.join('\n')}`);
   const data = await tab.evaluate(() => document.querySelector('canvas').toDataURL('image/png'));

@@ -5,6 +5,8 @@
 #include <QMainWindow>
 #include <QPointer>
 
+#include <optional>
+
 #include "editor_context.h"
 #include "editor_settings.h"
 #include "gpu_viewport.h"
@@ -205,6 +207,7 @@ private:
     LabDock* lab_ = nullptr;
     CompareControls* compare_ = nullptr;
     EnvironmentMenu* environment_ = nullptr;
+    std::optional<gpu::EnvironmentChoice> environment_posted_; // last given to the viewport
     DifferenceLegend* legend_ = nullptr;
     SceneLoadJob compare_loader_;                   // side B's file
     SharedSession compare_session_;                 // loaded by it, kept while comparing with it

@@ -28,6 +28,11 @@ void MainWindow::setupEnvironment() {
 void MainWindow::applyEnvironment() {
     if (!render_) return; // given to the device once it is ready
     const gpu::EnvironmentChoice choice = environment_->choice();
+    // The command line's choice and the device becoming ready both ask: build it once.
+    if (environment_posted_ && environment_posted_->kind == choice.kind &&
+        environment_posted_->path == choice.path)
+        return;
+    environment_posted_ = choice;
     const QString name = choice.kind == gpu::EnvironmentChoice::Kind::None ? tr("none")
                          : choice.kind == gpu::EnvironmentChoice::Kind::Room
                              ? tr("the room")

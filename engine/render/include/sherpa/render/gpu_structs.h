@@ -47,7 +47,7 @@ struct GPUFrameData {
     glm::vec4 cascade_texel; // world size of one shadow-map texel, per cascade
     GPULight lights[kMaxLights];
     glm::vec4 environment; // x intensity, y specular levels (0: none), z cos, w sin of rotation
-    glm::vec4 display; // x 2^exposure, y ToneMap, z energy compensation, w background level
+    glm::vec4 display;     // x 2^exposure, y ToneMap, z energy compensation, w background level
 };
 static_assert(offsetof(GPUFrameData, proj) == 64);
 static_assert(offsetof(GPUFrameData, view_proj) == 128);

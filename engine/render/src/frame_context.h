@@ -60,11 +60,11 @@ struct FrameCulling {
 struct FrameSlot {
     explicit FrameSlot(Context& context) : recorder(context) {}
     CommandRecorder recorder;
-    BufferHandle frame_data;              // GPUFrameData, host-visible uniform buffer
-    VkDescriptorSet set = VK_NULL_HANDLE; // set 1: frame data + the scene's materials
-    std::uint64_t set_generation = ~0ull; // scene generation the set's materials belong to
+    BufferHandle frame_data;               // GPUFrameData, host-visible uniform buffer
+    VkDescriptorSet set = VK_NULL_HANDLE;  // set 1: frame data + the scene's materials
+    std::uint64_t set_generation = ~0ull;  // scene generation the set's materials belong to
     std::uint64_t set_environment = ~0ull; // environment generation the set's maps belong to
-    BufferHandle lines;                   // overlay line vertices, host-visible, grown on demand
+    BufferHandle lines;                    // overlay line vertices, host-visible, grown on demand
     VkDeviceSize lines_capacity = 0, lines_used = 0; // lines_used: bytes written this frame
     UniqueQueryPool timestamps, statistics;
     std::uint64_t submission = 0; // timeline value of the last frame recorded here
@@ -146,9 +146,9 @@ struct FrameContext {
     const RenderTarget& target;
     Context& context;
     ResourceManager& resources;
-    const GpuScene* scene;      // null: nothing loaded
-    SceneCulling* culling;      // null: nothing loaded
-    const Scene& lighting;      // bounds, lights and cameras of the loaded scene
+    const GpuScene* scene;                       // null: nothing loaded
+    SceneCulling* culling;                       // null: nothing loaded
+    const Scene& lighting;                       // bounds, lights and cameras of the loaded scene
     const EnvironmentMap* environment = nullptr; // null: no environment loaded
     std::uint32_t cascades = 0; // shadow cascades re-rendered this frame (0: reused or none)
     bool prepass = false;       // the depth prepass runs this frame

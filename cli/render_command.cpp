@@ -6,6 +6,7 @@
 //   [--compare split|difference ... (compare_options.h)]
 #include "cli_common.h"
 #include "compare_options.h"
+#include "environment_options.h"
 #include "gpu_cli.h"
 #include "pose_options.h"
 #include "render_report.h"
@@ -48,10 +49,11 @@ std::string joined(const std::vector<std::string_view>& names);
 int usage_error(const std::string& message) {
     // The names come from the engine's view/overlay tables (sherpa/gpu/debug_views.h).
     std::fprintf(stderr,
-                 "error: %s\n%s%s%s%s%s\n%s%s  --view NAME        %s\n  --overlay NAME     %s\n",
-                 message.c_str(), kUsage, kShadowOptionsSynopsis, kTextureOptionsSynopsis,
-                 kCompareIndent, kCompareOptionsSynopsis, kTextureOptionsHelp, kCompareOptionsHelp,
-                 joined(gpu::debug_view_names()).c_str(), joined(gpu::overlay_names()).c_str());
+                 "error: %s\n%s%s%s%s%s%s\n%s%s  --view NAME        %s\n  --overlay NAME     %s\n",
+                 message.c_str(), kUsage, kShadowOptionsSynopsis, kEnvironmentOptionsSynopsis,
+                 kTextureOptionsSynopsis, kCompareIndent, kCompareOptionsSynopsis,
+                 kTextureOptionsHelp, kCompareOptionsHelp, joined(gpu::debug_view_names()).c_str(),
+                 joined(gpu::overlay_names()).c_str());
     return kExitUsage;
 }
 
@@ -80,6 +82,7 @@ int run_render(Args args) {
     PoseOptions pose_options;
     CompareCliOptions compare_options;
     std::uint32_t shadow_resolution = kDefaultShadowResolution;
+    gpu::EnvironmentChoice environment; // the room unless --environment says otherwise
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string_view a = args[i];
         std::string option_error;
@@ -96,6 +99,10 @@ int run_render(Args args) {
             parse_shadow_option(args, i, settings, shadow_resolution, option_error);
         if (sm == OptionMatch::Bad) return usage_error(option_error);
         if (sm == OptionMatch::Taken) continue;
+        const OptionMatch em =
+            parse_environment_option(args, i, settings, environment, option_error);
+        if (em == OptionMatch::Bad) return usage_error(option_error);
+        if (em == OptionMatch::Taken) continue;
         auto value = [&]() -> std::optional<std::string_view> {
             if (i + 1 >= args.size()) return std::nullopt;
             return args[++i];
@@ -262,6 +269,9 @@ int run_render(Args args) {
         renderer_options.ray_tracing = ray_traced; // acceleration structures built on load
         renderer_options.shadow_resolution = shadow_resolution;
         gpu::Renderer renderer(context, renderer_options);
+        // Only a lit frame is lit by it: other views make no environment (no GPU bytes).
+        if (settings.view == gpu::DebugView::Lit && !settings.floor_only)
+            apply_environment(renderer, environment);
         // Textures are prepared (cache lookups, decode, compression) before the upload,
         // as a loader thread would, so the report can time the two apart.
         const gpu::TextureSettings texture_settings = texture_options.gpu_settings();

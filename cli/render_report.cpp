@@ -83,6 +83,35 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
     j["camera"] = run.camera_text;
     j["frames"] = run.frames.size();
 
+    // The environment lighting the lit view (absent: none, no GPU bytes) and the display
+    // transform.
+    const gpu::EnvironmentStats env = renderer.environment_stats();
+    j["tone_map"] = std::string(gpu::to_string(run.settings.tone_map));
+    j["exposure"] = run.settings.exposure;
+    if (env.present)
+        j["environment"] = {{"name", env.name},
+                            {"source", {env.source_width, env.source_height}},
+                            {"cube_size", env.cube_size},
+                            {"specular_levels", env.specular_levels},
+                            {"irradiance_size", env.irradiance_size},
+                            {"sheen_size", env.sheen_size},
+                            {"sheen_levels", env.sheen_levels},
+                            {"lut_size", env.lut_size},
+                            {"bytes", env.bytes},
+                            {"prefilter_ms", env.prefilter_ms},
+                            {"prefilter_gpu_ms", env.gpu_ms},
+                            {"rotation_degrees", run.settings.environment_rotation},
+                            {"intensity", run.settings.environment_intensity},
+                            {"background", std::string(gpu::to_string(run.settings.background))},
+                            {"energy_compensation", run.settings.energy_compensation}};
+    else
+        j["environment"] = nullptr;
+    if (env.present) {
+        json passes;
+        const char* names[] = {"radiance_cube", "specular", "irradiance", "sheen", "lut"};
+        for (std::size_t i = 0; i < std::size(names); ++i) passes[names[i]] = env.pass_ms[i];
+        j["environment"]["pass_gpu_ms"] = passes;
+    }
     const gpu::GpuScene* scene = renderer.scene();
     if (scene) {
         const gpu::GpuMemoryReport& m = scene->memory();
@@ -94,7 +123,8 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
                                  // Skinning and morph streams: 0 for a static scene.
                                  {"motion", m.motion},
                                  {"total", m.total()},
-                                 {"render_targets", renderer.render_target_bytes()}};
+                                 {"render_targets", renderer.render_target_bytes()},
+                                 {"environment", renderer.environment_stats().bytes}};
         // What the geometry buffers were made for: acceleration-structure build input
         // and index device addresses only with ray tracing enabled (`--rt`).
         j["geometry_buffers"] = {

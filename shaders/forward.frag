@@ -9,6 +9,8 @@
 #include "debug_views.glsl"
 #include "material_sampling.glsl"
 #include "surface_views.glsl"
+#include "ibl.glsl"
+#include "tonemap.glsl"
 
 layout(location = 0) in vec3 in_world_pos;
 layout(location = 1) in vec3 in_normal;
@@ -132,7 +134,8 @@ void main() {
         for (uint i = 0u; i < frame.params.y; ++i) c += punctual_light(s, frame.lights[i], in_world_pos);
         float ao = x.workflow == WORKFLOW_SPECULAR_GLOSSINESS ? occlusion(m, x, uv0, uv1)
                                                               : occlusion(m, x, uv0, uv1, mr_texel);
-        c += ambient_light(s, frame.ambient.rgb) * ao;
+        // The environment replaces the sky/ground ambient term where one is loaded.
+        c += (has_environment() ? environment_light(s) : ambient_light(s, frame.ambient.rgb)) * ao;
         c += emission(m, x, uv0, uv1);
         break;
     }
@@ -140,5 +143,8 @@ void main() {
     }
     // Colour views (lit, base colour, emissive) are linear radiance; the rest are data.
     if (view != VIEW_LIT && view != VIEW_BASE_COLOR && view != VIEW_EMISSIVE) c = display_to_linear(c);
+    // The lit view is radiance: exposure and the tone curve map it to the display (per
+    // fragment, before blending, as three.js does).
+    if (view == VIEW_LIT) c = tone_map(c, uint(frame.display.y), frame.display.x);
     out_color = vec4(c, view == VIEW_LIT && m.alpha_mode == SHERPA_ALPHA_BLEND ? base.a : 1.0);
 }

@@ -326,6 +326,10 @@
         <source>Component</source>
         <translation>Komponente</translation>
     </message>
+    <message>
+        <source>Component type</source>
+        <translation>Komponententyp</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::CommandLine</name>
@@ -459,6 +463,10 @@
     <message>
         <source>Side B is shown in the Split and Difference modes (Viewport button); choosing it here switches to Split. Now: %1</source>
         <translation>Seite B erscheint in den Modi Geteilt und Differenz (Schaltfläche Darstellung); eine Wahl hier schaltet auf Geteilt. Jetzt: %1</translation>
+    </message>
+    <message>
+        <source>What side B of the comparison draws</source>
+        <translation>Was Seite B des Vergleichs zeichnet</translation>
     </message>
 </context>
 <context>
@@ -1343,6 +1351,22 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <source>Settings › When the File Changes › Reload Automatically reloads without asking.</source>
         <translation>Einstellungen › Wenn sich die Datei ändert › Automatisch neu laden lädt ohne Nachfrage neu.</translation>
     </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>the room</source>
+        <translation>den Raum</translation>
+    </message>
+    <message>
+        <source>Environment: %1.</source>
+        <translation>Umgebung: %1.</translation>
+    </message>
+    <message>
+        <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</source>
+        <translation>Mittel der letzten %1 Bilder ohne das erste des Renderers (Pipeline-Erstellung). Während sich die Kamera auf einem langsamen Gerät bewegt, werden Bilder mit geringerer Auflösung und ohne Schatten gezeichnet, um %2 fps zu halten; in Ruhe folgt das volle Bild.</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -1895,6 +1919,10 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <source>State</source>
         <translation>Zustand</translation>
     </message>
+    <message>
+        <source>Cache state</source>
+        <translation>Cache-Zustand</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::TimelineDock</name>
@@ -1971,6 +1999,109 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>tangent error (deg)</source>
         <translation>Tangentenfehler (Grad)</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::EnvironmentMenu</name>
+    <message>
+        <source>&amp;Environment</source>
+        <translation>&amp;Umgebung</translation>
+    </message>
+    <message>
+        <source>&amp;None (Ambient Only)</source>
+        <translation>&amp;Keine (nur Umgebungslicht-Term)</translation>
+    </message>
+    <message>
+        <source>&amp;Room (Built In)</source>
+        <translation>&amp;Raum (eingebaut)</translation>
+    </message>
+    <message>
+        <source>&amp;Open HDR or EXR… (%1)</source>
+        <translation>HDR oder EXR ö&amp;ffnen… (%1)</translation>
+    </message>
+    <message>
+        <source>&amp;Open HDR or EXR…</source>
+        <translation>HDR oder EXR ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <source>&amp;Background</source>
+        <translation>&amp;Hintergrund</translation>
+    </message>
+    <message>
+        <source>&amp;Blurred</source>
+        <translation>&amp;Weichgezeichnet</translation>
+    </message>
+    <message>
+        <source>&amp;Solid Colour</source>
+        <translation>&amp;Einfarbig</translation>
+    </message>
+    <message>
+        <source>Rotate −15° (now %1°)</source>
+        <translation>Um −15° drehen (jetzt %1°)</translation>
+    </message>
+    <message>
+        <source>Rotate +15° (now %1°)</source>
+        <translation>Um +15° drehen (jetzt %1°)</translation>
+    </message>
+    <message>
+        <source>Brighter (intensity %1)</source>
+        <translation>Heller (Intensität %1)</translation>
+    </message>
+    <message>
+        <source>Darker</source>
+        <translation>Dunkler</translation>
+    </message>
+    <message>
+        <source>Reset Rotation and Intensity</source>
+        <translation>Drehung und Intensität zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Default &amp;Sun</source>
+        <translation>Standard-&amp;Sonne</translation>
+    </message>
+    <message>
+        <source>Energy &amp;Compensation (Multiple Scattering)</source>
+        <translation>Energie&amp;kompensation (Mehrfachstreuung)</translation>
+    </message>
+    <message>
+        <source>&amp;Tone Mapping</source>
+        <translation>&amp;Tone-Mapping</translation>
+    </message>
+    <message>
+        <source>Khronos PBR &amp;Neutral</source>
+        <translation>Khronos PBR &amp;Neutral</translation>
+    </message>
+    <message>
+        <source>&amp;ACES Filmic</source>
+        <translation>&amp;ACES Filmic</translation>
+    </message>
+    <message>
+        <source>A&amp;gX</source>
+        <translation>A&amp;gX</translation>
+    </message>
+    <message>
+        <source>&amp;Linear (Clamp)</source>
+        <translation>&amp;Linear (Begrenzen)</translation>
+    </message>
+    <message>
+        <source>Exposure +½ Stop (now %1 EV)</source>
+        <translation>Belichtung +½ Blende (jetzt %1 EV)</translation>
+    </message>
+    <message>
+        <source>Exposure −½ Stop</source>
+        <translation>Belichtung −½ Blende</translation>
+    </message>
+    <message>
+        <source>Exposure 0 EV</source>
+        <translation>Belichtung 0 EV</translation>
+    </message>
+    <message>
+        <source>Open Environment</source>
+        <translation>Umgebung öffnen</translation>
+    </message>
+    <message>
+        <source>HDR images (*.hdr *.exr);;All files (*)</source>
+        <translation>HDR-Bilder (*.hdr *.exr);;Alle Dateien (*)</translation>
     </message>
 </context>
 </TS>

@@ -326,6 +326,10 @@
         <source>Component</source>
         <translation>Component</translation>
     </message>
+    <message>
+        <source>Component type</source>
+        <translation>Component type</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::CommandLine</name>
@@ -459,6 +463,10 @@
     <message>
         <source>Side B is shown in the Split and Difference modes (Viewport button); choosing it here switches to Split. Now: %1</source>
         <translation>Side B is shown in the Split and Difference modes (Viewport button); choosing it here switches to Split. Now: %1</translation>
+    </message>
+    <message>
+        <source>What side B of the comparison draws</source>
+        <translation>What side B of the comparison draws</translation>
     </message>
 </context>
 <context>
@@ -1343,6 +1351,22 @@ The current scene is kept.</translation>
         <source>Settings › When the File Changes › Reload Automatically reloads without asking.</source>
         <translation>Settings › When the File Changes › Reload Automatically reloads without asking.</translation>
     </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>the room</source>
+        <translation>the room</translation>
+    </message>
+    <message>
+        <source>Environment: %1.</source>
+        <translation>Environment: %1.</translation>
+    </message>
+    <message>
+        <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</source>
+        <translation>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -1895,6 +1919,10 @@ The current scene is kept.</translation>
         <source>State</source>
         <translation>State</translation>
     </message>
+    <message>
+        <source>Cache state</source>
+        <translation>Cache state</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::TimelineDock</name>
@@ -1971,6 +1999,109 @@ The current scene is kept.</translation>
     <message>
         <source>tangent error (deg)</source>
         <translation>tangent error (deg)</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::EnvironmentMenu</name>
+    <message>
+        <source>&amp;Environment</source>
+        <translation>&amp;Environment</translation>
+    </message>
+    <message>
+        <source>&amp;None (Ambient Only)</source>
+        <translation>&amp;None (Ambient Only)</translation>
+    </message>
+    <message>
+        <source>&amp;Room (Built In)</source>
+        <translation>&amp;Room (Built In)</translation>
+    </message>
+    <message>
+        <source>&amp;Open HDR or EXR… (%1)</source>
+        <translation>&amp;Open HDR or EXR… (%1)</translation>
+    </message>
+    <message>
+        <source>&amp;Open HDR or EXR…</source>
+        <translation>&amp;Open HDR or EXR…</translation>
+    </message>
+    <message>
+        <source>&amp;Background</source>
+        <translation>&amp;Background</translation>
+    </message>
+    <message>
+        <source>&amp;Blurred</source>
+        <translation>&amp;Blurred</translation>
+    </message>
+    <message>
+        <source>&amp;Solid Colour</source>
+        <translation>&amp;Solid Colour</translation>
+    </message>
+    <message>
+        <source>Rotate −15° (now %1°)</source>
+        <translation>Rotate −15° (now %1°)</translation>
+    </message>
+    <message>
+        <source>Rotate +15° (now %1°)</source>
+        <translation>Rotate +15° (now %1°)</translation>
+    </message>
+    <message>
+        <source>Brighter (intensity %1)</source>
+        <translation>Brighter (intensity %1)</translation>
+    </message>
+    <message>
+        <source>Darker</source>
+        <translation>Darker</translation>
+    </message>
+    <message>
+        <source>Reset Rotation and Intensity</source>
+        <translation>Reset Rotation and Intensity</translation>
+    </message>
+    <message>
+        <source>Default &amp;Sun</source>
+        <translation>Default &amp;Sun</translation>
+    </message>
+    <message>
+        <source>Energy &amp;Compensation (Multiple Scattering)</source>
+        <translation>Energy &amp;Compensation (Multiple Scattering)</translation>
+    </message>
+    <message>
+        <source>&amp;Tone Mapping</source>
+        <translation>&amp;Tone Mapping</translation>
+    </message>
+    <message>
+        <source>Khronos PBR &amp;Neutral</source>
+        <translation>Khronos PBR &amp;Neutral</translation>
+    </message>
+    <message>
+        <source>&amp;ACES Filmic</source>
+        <translation>&amp;ACES Filmic</translation>
+    </message>
+    <message>
+        <source>A&amp;gX</source>
+        <translation>A&amp;gX</translation>
+    </message>
+    <message>
+        <source>&amp;Linear (Clamp)</source>
+        <translation>&amp;Linear (Clamp)</translation>
+    </message>
+    <message>
+        <source>Exposure +½ Stop (now %1 EV)</source>
+        <translation>Exposure +½ Stop (now %1 EV)</translation>
+    </message>
+    <message>
+        <source>Exposure −½ Stop</source>
+        <translation>Exposure −½ Stop</translation>
+    </message>
+    <message>
+        <source>Exposure 0 EV</source>
+        <translation>Exposure 0 EV</translation>
+    </message>
+    <message>
+        <source>Open Environment</source>
+        <translation>Open Environment</translation>
+    </message>
+    <message>
+        <source>HDR images (*.hdr *.exr);;All files (*)</source>
+        <translation>HDR images (*.hdr *.exr);;All files (*)</translation>
     </message>
 </context>
 </TS>

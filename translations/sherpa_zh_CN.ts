@@ -326,6 +326,10 @@
         <source>Component</source>
         <translation>分量</translation>
     </message>
+    <message>
+        <source>Component type</source>
+        <translation>分量类型</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::CommandLine</name>
@@ -459,6 +463,10 @@
     <message>
         <source>Side B is shown in the Split and Difference modes (Viewport button); choosing it here switches to Split. Now: %1</source>
         <translation>B 侧在分屏和差异模式中显示（视口按钮）；在此选择会切换到分屏。当前：%1</translation>
+    </message>
+    <message>
+        <source>What side B of the comparison draws</source>
+        <translation>比较中 B 侧绘制的内容</translation>
     </message>
 </context>
 <context>
@@ -1343,6 +1351,22 @@ The current scene is kept.</source>
         <source>Settings › When the File Changes › Reload Automatically reloads without asking.</source>
         <translation>设置 › 文件更改时 › 自动重新加载：不询问直接重新加载。</translation>
     </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>the room</source>
+        <translation>房间</translation>
+    </message>
+    <message>
+        <source>Environment: %1.</source>
+        <translation>环境：%1。</translation>
+    </message>
+    <message>
+        <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</source>
+        <translation>最近 %1 帧的平均值，不计渲染器的第一帧（创建管线）。在慢速设备上移动相机时，以较低分辨率且不带阴影绘制以保持 %2 fps；静止后显示完整画面。</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -1895,6 +1919,10 @@ The current scene is kept.</source>
         <source>State</source>
         <translation>状态</translation>
     </message>
+    <message>
+        <source>Cache state</source>
+        <translation>缓存状态</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::TimelineDock</name>
@@ -1971,6 +1999,109 @@ The current scene is kept.</source>
     <message>
         <source>tangent error (deg)</source>
         <translation>切线误差（度）</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::EnvironmentMenu</name>
+    <message>
+        <source>&amp;Environment</source>
+        <translation>环境(&amp;E)</translation>
+    </message>
+    <message>
+        <source>&amp;None (Ambient Only)</source>
+        <translation>无（仅环境光项）(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;Room (Built In)</source>
+        <translation>房间（内置）(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Open HDR or EXR… (%1)</source>
+        <translation>打开 HDR 或 EXR…(%1)(&amp;O)</translation>
+    </message>
+    <message>
+        <source>&amp;Open HDR or EXR…</source>
+        <translation>打开 HDR 或 EXR…(&amp;O)</translation>
+    </message>
+    <message>
+        <source>&amp;Background</source>
+        <translation>背景(&amp;B)</translation>
+    </message>
+    <message>
+        <source>&amp;Blurred</source>
+        <translation>模糊(&amp;B)</translation>
+    </message>
+    <message>
+        <source>&amp;Solid Colour</source>
+        <translation>纯色(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Rotate −15° (now %1°)</source>
+        <translation>旋转 −15°（当前 %1°）</translation>
+    </message>
+    <message>
+        <source>Rotate +15° (now %1°)</source>
+        <translation>旋转 +15°（当前 %1°）</translation>
+    </message>
+    <message>
+        <source>Brighter (intensity %1)</source>
+        <translation>更亮（强度 %1）</translation>
+    </message>
+    <message>
+        <source>Darker</source>
+        <translation>更暗</translation>
+    </message>
+    <message>
+        <source>Reset Rotation and Intensity</source>
+        <translation>重置旋转和强度</translation>
+    </message>
+    <message>
+        <source>Default &amp;Sun</source>
+        <translation>默认太阳(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Energy &amp;Compensation (Multiple Scattering)</source>
+        <translation>能量补偿（多次散射）(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Tone Mapping</source>
+        <translation>色调映射(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Khronos PBR &amp;Neutral</source>
+        <translation>Khronos PBR 中性(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;ACES Filmic</source>
+        <translation>ACES 电影(&amp;A)</translation>
+    </message>
+    <message>
+        <source>A&amp;gX</source>
+        <translation>AgX(&amp;G)</translation>
+    </message>
+    <message>
+        <source>&amp;Linear (Clamp)</source>
+        <translation>线性（截断）(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Exposure +½ Stop (now %1 EV)</source>
+        <translation>曝光 +½ 档（当前 %1 EV）</translation>
+    </message>
+    <message>
+        <source>Exposure −½ Stop</source>
+        <translation>曝光 −½ 档</translation>
+    </message>
+    <message>
+        <source>Exposure 0 EV</source>
+        <translation>曝光 0 EV</translation>
+    </message>
+    <message>
+        <source>Open Environment</source>
+        <translation>打开环境</translation>
+    </message>
+    <message>
+        <source>HDR images (*.hdr *.exr);;All files (*)</source>
+        <translation>HDR 图像 (*.hdr *.exr);;所有文件 (*)</translation>
     </message>
 </context>
 </TS>

@@ -1,6 +1,9 @@
 #include "command_line.h"
 
 #include "compare_controls.h"
+#include "environment_menu.h"
+
+#include <cmath>
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -156,8 +159,33 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
                        "debug view), tangents:METHOD (this file, every primitive's tangents by "
                        "mikktspace, mikktspace-welded or lengyel) or a glTF file."),
         QStringLiteral("side"));
+    const QCommandLineOption environment(
+        QStringLiteral("environment"),
+        QStringLiteral("Environment lighting: room (built in, the default), none, or an "
+                       "equirectangular .hdr/.exr file."),
+        QStringLiteral("source"));
+    const QCommandLineOption environment_rotation(
+        QStringLiteral("environment-rotation"),
+        QStringLiteral("Turns the environment about +Y by this many degrees."),
+        QStringLiteral("degrees"));
+    const QCommandLineOption environment_intensity(
+        QStringLiteral("environment-intensity"),
+        QStringLiteral("Scales the environment's radiance."), QStringLiteral("x"));
+    const QCommandLineOption background(
+        QStringLiteral("background"),
+        QStringLiteral("Behind the scene: environment, blurred or R,G,B (linear, 0 to 1)."),
+        QStringLiteral("what"));
+    const QCommandLineOption tone_map(
+        QStringLiteral("tone-map"),
+        QStringLiteral("Tone mapping of the lit view: neutral (Khronos PBR Neutral), aces, agx or "
+                       "linear."),
+        QStringLiteral("curve"));
+    const QCommandLineOption exposure(
+        QStringLiteral("exposure"), QStringLiteral("Exposure in stops (0 leaves radiance as is)."),
+        QStringLiteral("ev"));
     p.addOptions({view, shot, quit, language, select, timing, dock, gpu_culling, overlay, time, rt,
-                  mode, compare_with});
+                  mode, compare_with, environment, environment_rotation, environment_intensity,
+                  background, tone_map, exposure});
     p.process(arguments);
     const QStringList positional = p.positionalArguments();
     if (positional.size() > 1) {
@@ -186,6 +214,54 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
         return false;
     }
     out.compare_with = p.value(compare_with);
+    if (p.isSet(environment)) {
+        if (p.value(environment).isEmpty()) {
+            error = QStringLiteral("--environment needs room, none or a file");
+            return false;
+        }
+        out.environment = gpu::parse_environment_choice(p.value(environment).toStdString());
+    }
+    const auto number = [&](const QCommandLineOption& o, float& into) {
+        if (!p.isSet(o)) return true;
+        bool ok = false;
+        const double v = p.value(o).toDouble(&ok);
+        if (!ok || !std::isfinite(v)) {
+            error =
+                QStringLiteral("--%1 needs a number, not '%2'").arg(o.names().front(), p.value(o));
+            return false;
+        }
+        into = static_cast<float>(v);
+        return true;
+    };
+    if (!number(environment_rotation, out.display.environmentRotation) ||
+        !number(environment_intensity, out.display.environmentIntensity) ||
+        !number(exposure, out.display.exposure))
+        return false;
+    if (out.display.environmentIntensity < 0.0f) {
+        error = QStringLiteral("--environment-intensity needs a number >= 0");
+        return false;
+    }
+    if (p.isSet(background)) {
+        glm::vec3 color{};
+        const auto b = gpu::parse_background(p.value(background).toStdString(), color);
+        if (!b) {
+            error = QStringLiteral("--background needs environment, blurred or R,G,B (0 to 1), "
+                                   "not '%1'")
+                        .arg(p.value(background));
+            return false;
+        }
+        out.display.background = *b;
+        if (*b == gpu::Background::Color) out.display.backgroundColor = color;
+    }
+    if (p.isSet(tone_map)) {
+        const auto t = gpu::parse_tone_map(p.value(tone_map).toStdString());
+        if (!t) {
+            error = QStringLiteral("--tone-map needs neutral, aces, agx or linear, not '%1'")
+                        .arg(p.value(tone_map));
+            return false;
+        }
+        out.display.toneMap = *t;
+    }
     if (out.compare_with.startsWith(QLatin1String("view:")) &&
         !ViewCatalog::isView(out.compare_with.mid(5))) {
         error = QStringLiteral("--compare-with: unknown view '%1'").arg(out.compare_with.mid(5));
@@ -247,6 +323,8 @@ void run_command_line(MainWindow& window, const CommandLine& cl, qint64 started_
     if (!cl.language.isEmpty() && !window.setLanguage(cl.language, false))
         std::fprintf(stderr, "sherpa: no translation for '%s'\n", qPrintable(cl.language));
     if (!cl.view.isEmpty()) window.setDebugView(cl.view, false);
+    window.environmentMenu().setDisplay(cl.display);
+    if (cl.environment) window.environmentMenu().setChoice(*cl.environment);
     if (cl.gpu_culling) window.setGpuCulling(true);
     // The Overlays menu's actions carry the overlay's name.
     for (QAction* act : window.findChildren<QAction*>())

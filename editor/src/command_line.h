@@ -2,10 +2,16 @@
 // sherpa [SCENE] [--view NAME] [--select NODE] [--screenshot OUT.png [--quit]] [--language CODE]
 //        [--timing] [--dock NAME ...] [--gpu-culling] [--rt on|off]
 //        [--mode raster|rt|split|difference] [--compare-with rt|view:NAME|FILE]
+//        [--environment room|none|FILE] [--environment-rotation DEG] [--environment-intensity X]
+//        [--background environment|blurred|R,G,B] [--tone-map neutral|aces|agx|linear]
+//        [--exposure EV]
 #include <QString>
 #include <QStringList>
 
 #include <functional>
+#include <optional>
+
+#include "gpu_viewport.h" // ViewportDisplay
 
 namespace sherpa::editor {
 
@@ -26,6 +32,10 @@ struct CommandLine {
     bool ray_tracing = true; // --rt: ray trace where the device can (MainWindow's argument)
     QString mode;            // the viewport's mode once loaded: raster, rt, split, difference
     QString compare_with;    // side B: rt, view:NAME or a file (empty: the default, rt)
+    // The environment (unset: the menu's default, the room) and the display settings
+    // (the lit view's lighting and tone mapping) once the window is up.
+    std::optional<gpu::EnvironmentChoice> environment;
+    ViewportDisplay display;
 };
 
 // Returns false with `error` set on bad usage (unknown view, --quit without --screenshot...).

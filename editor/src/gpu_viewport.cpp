@@ -129,6 +129,15 @@ void load_session(gpu::Renderer& renderer, const SceneSession& session, bool all
                   all_streams ? gpu::StreamPolicy::AllPresent : gpu::StreamPolicy::UsedByMaterials);
 }
 
+QStringList GpuViewport::setEnvironment(const gpu::EnvironmentChoice& choice) {
+    std::vector<std::string> warnings;
+    const auto image = gpu::make_environment(choice, warnings);
+    impl_->renderer->set_environment(image ? &*image : nullptr);
+    QStringList out;
+    for (const std::string& w : warnings) out << QString::fromStdString(w);
+    return out;
+}
+
 void GpuViewport::useStreamsFor(const ViewportFrame& frame) {
     gpu::RenderSettings settings;
     settings.view = static_cast<gpu::DebugView>(frame.view);
@@ -203,6 +212,16 @@ gpu::RenderSettings render_settings(const ViewportFrame& frame, float scale, boo
     settings.hidden_nodes = frame.hiddenNodes;
     settings.cascades = frame.shadowCascades;
     settings.shadow_pcf_taps = frame.shadowPcfTaps;
+    const ViewportDisplay& d = frame.display;
+    settings.environment_rotation = d.environmentRotation;
+    settings.environment_intensity = d.environmentIntensity;
+    settings.background = d.background;
+    if (d.background == gpu::Background::Color)
+        settings.clear_color = glm::vec4(d.backgroundColor, 1.0f);
+    settings.tone_map = d.toneMap;
+    settings.exposure = d.exposure;
+    settings.sun = d.sun;
+    settings.energy_compensation = d.energyCompensation;
     if (frame.frozenCulling) settings.freeze_cull = gpu::explicit_camera(*frame.frozenCulling);
     // A reduced frame means a slow device while the camera moves: the shadow cascades
     // follow the camera and cost the same at any resolution (DamagedHelmet on lavapipe:

@@ -11,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include <sherpa/render/environment.h>
 #include <sherpa/scene/animation.h>
 #include <sherpa/scene/camera_spec.h>
 #include <sherpa/scene/culling.h>
@@ -30,6 +31,19 @@ struct RenderSettings;
 } // namespace sherpa::gpu
 
 namespace sherpa::editor {
+
+// How the lit view is lit and shown (the Environment menu, View > Tone mapping, the
+// command line); the environment itself is the viewport's (GpuViewport::setEnvironment).
+struct ViewportDisplay {
+    float environmentRotation = 0.0f; // degrees about +Y
+    float environmentIntensity = 1.0f;
+    gpu::Background background = gpu::Background::Environment;
+    glm::vec3 backgroundColor{0.18f, 0.19f, 0.21f}; // linear; Background::Color
+    gpu::ToneMap toneMap = gpu::ToneMap::Neutral;
+    float exposure = 0.0f; // stops
+    bool sun = true;       // the default sun (scenes without lights)
+    bool energyCompensation = true;
+};
 
 // What the window wants drawn; mapped to gpu::RenderSettings inside.
 struct ViewportFrame {
@@ -55,6 +69,7 @@ struct ViewportFrame {
     // Shadow cascades and PCF taps (0: the device's default), as the Lab's shadows
     // family applies them; the map resolution is the viewport renderer's, fixed.
     std::uint32_t shadowCascades = kDefaultShadowCascades, shadowPcfTaps = 0;
+    ViewportDisplay display;
 };
 
 // Prepares a scene's textures as `plan` says (the texture pipeline: cache, BC7/BC5,
@@ -95,6 +110,10 @@ public:
     // material reads uploads the scene again with every stream (when the view changes,
     // never per frame).
     void useStreamsFor(const ViewportFrame& frame);
+    // The environment lighting lit frames: made on the GPU now (prefiltered), replacing
+    // the one before; Kind::None removes it. Returns the warnings (an unreadable file
+    // and the room used instead, NaN texels, ...).
+    QStringList setEnvironment(const gpu::EnvironmentChoice& choice);
     // The scene last uploaded.
     const Scene* scene() const;
     // Whether the renderer ray traces (device support and --rt on).

@@ -97,6 +97,7 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent, bool ray_tracin
     createDocks();
     createActions();
     createMenus();
+    setupEnvironment();
     connectActions();
     // Its device is made on the render thread while the window shows; the first
     // scene starts loading once it is known (its textures are prepared for it).

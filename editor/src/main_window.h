@@ -5,6 +5,8 @@
 #include <QMainWindow>
 #include <QPointer>
 
+#include <optional>
+
 #include "editor_context.h"
 #include "editor_settings.h"
 #include "gpu_viewport.h"
@@ -25,6 +27,7 @@ namespace sherpa::editor {
 
 class AccelerationDock;
 class CompareControls;
+class EnvironmentMenu;
 class CullingDock;
 class DifferenceLegend;
 class CullingMonitor;
@@ -118,6 +121,8 @@ public:
     RenderThread* renderer() const { return render_.get(); }
     // The viewport's mode switch and side B of a comparison (main_window_compare.cpp).
     CompareControls& compareControls() const { return *compare_; }
+    // The Environment menu and View › Tone Mapping (main_window_environment.cpp).
+    EnvironmentMenu& environmentMenu() const { return *environment_; }
     DifferenceLegend* differenceLegend() const { return legend_; }
     // Loads `spec` as side B of the comparison (File dialog of "Another File…");
     // `source_textures`: its textures uploaded as decoded from their images, not
@@ -180,6 +185,8 @@ private:
     // main_window_compare.cpp
     void connectCompare();
     void onCompareChanged();
+    void setupEnvironment();
+    void applyEnvironment(); // the menu's environment to the viewport
     // A frame the ray tracer refused: said in the log and status bar, back to raster.
     void onRefused(const QString& why);
     TexturePlan texturePlan() const; // the device's, with the cache settings of now
@@ -219,6 +226,8 @@ private:
     LogDock* log_ = nullptr;
     LabDock* lab_ = nullptr;
     CompareControls* compare_ = nullptr;
+    EnvironmentMenu* environment_ = nullptr;
+    std::optional<gpu::EnvironmentChoice> environment_posted_; // last given to the viewport
     DifferenceLegend* legend_ = nullptr;
     SceneLoadJob compare_loader_;                   // side B's file
     SharedSession compare_session_;                 // loaded by it, kept while comparing with it

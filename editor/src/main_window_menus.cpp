@@ -1,5 +1,6 @@
 // The menus, toolbar and their texts. Texts are (re)set in retranslate() so a
 // language switch at runtime updates every entry.
+#include "environment_menu.h"
 #include "main_window.h"
 #include "main_window_actions.h"
 
@@ -356,6 +357,7 @@ void MainWindow::retranslate() {
     cancel_->setText(tr("Cancel"));
 
     scene_tree_->retranslate();
+    if (environment_) environment_->retranslate();
     mesh_->retranslate();
     material_->retranslate();
     textures_->retranslate();

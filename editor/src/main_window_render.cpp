@@ -1,6 +1,7 @@
 // MainWindow and its render thread: the device made at start, scene uploads and
 // stream changes posted to the thread, frames asked for and reported back (status
 // bar, culling dock), material readback and the GPU culling check routed there.
+#include "environment_menu.h"
 #include "main_window.h"
 #include "main_window_actions.h"
 
@@ -52,6 +53,7 @@ void MainWindow::createRenderer() {
                 device_plan_ = plan;
                 ray_tracing_ = rt;
                 compare_->setRayTracing(rt);
+                applyEnvironment();
                 deviceKnown();
             });
     connect(render_.get(), &RenderThread::deviceFailed, this, [this](const QString& error) {
@@ -168,6 +170,7 @@ ViewportFrame MainWindow::currentFrame() const {
     if (culling_->frozen()) frame.frozenCulling = culling_->cullingCamera();
     frame.compare = compare_->state();
     frame.compareSession = compare_session_;
+    frame.display = environment_->display();
     const Selection& sel = context_.selection();
     frame.pose = timeline_->pose();
     frame.hiddenNodes = context_.hiddenNodes();

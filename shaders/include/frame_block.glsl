@@ -35,5 +35,11 @@ layout(set = 1, binding = SHERPA_FRAME_BINDING, std140) uniform FrameBlock {
     vec4 overlay;                           // 544: x glyph length, y uv checks per unit, z texture LOD
     vec4 cascade_texel;                     // 560: world size of a shadow texel per cascade
     GPULight lights[MAX_LIGHTS];            // 576
+    // After the lights: x intensity, y specular levels (0: no environment), z, w
+    // cos and sin of its rotation about +Y (ibl.glsl).
+    vec4 environment;
+    // x exposure scale 2^EV, y tone map (TONE_MAP_*), z 1 = energy compensation on,
+    // w the background's specular level (< 0: a solid colour, no background pass).
+    vec4 display;
 } frame;
 #endif

@@ -16,6 +16,7 @@ ImageHandle ImagePool::create(const ImageDesc& desc) {
     VkImageCreateInfo ci = vk_init<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
     ci.imageType = VK_IMAGE_TYPE_2D;
     if (desc.alias_format != VK_FORMAT_UNDEFINED) ci.flags = VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT;
+    if (desc.view_type == VK_IMAGE_VIEW_TYPE_CUBE) ci.flags |= VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT;
     ci.format = desc.format;
     ci.extent = {desc.width, desc.height, 1};
     ci.mipLevels = desc.mip_levels;

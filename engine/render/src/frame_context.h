@@ -16,6 +16,8 @@
 
 namespace sherpa::gpu {
 
+class EnvironmentMap;
+
 // Timestamps written between passes; pass i spans [i, i + 1].
 inline constexpr const char* kPassNames[] = {"shadows",    "depth_prepass", "opaque",
                                              "alpha_mask", "alpha_blend",   "overlays"};
@@ -58,10 +60,11 @@ struct FrameCulling {
 struct FrameSlot {
     explicit FrameSlot(Context& context) : recorder(context) {}
     CommandRecorder recorder;
-    BufferHandle frame_data;              // GPUFrameData, host-visible uniform buffer
-    VkDescriptorSet set = VK_NULL_HANDLE; // set 1: frame data + the scene's materials
-    std::uint64_t set_generation = ~0ull; // scene generation the set's materials belong to
-    BufferHandle lines;                   // overlay line vertices, host-visible, grown on demand
+    BufferHandle frame_data;               // GPUFrameData, host-visible uniform buffer
+    VkDescriptorSet set = VK_NULL_HANDLE;  // set 1: frame data + the scene's materials
+    std::uint64_t set_generation = ~0ull;  // scene generation the set's materials belong to
+    std::uint64_t set_environment = ~0ull; // environment generation the set's maps belong to
+    BufferHandle lines;                    // overlay line vertices, host-visible, grown on demand
     VkDeviceSize lines_capacity = 0, lines_used = 0; // lines_used: bytes written this frame
     UniqueQueryPool timestamps, statistics;
     std::uint64_t submission = 0; // timeline value of the last frame recorded here
@@ -143,9 +146,10 @@ struct FrameContext {
     const RenderTarget& target;
     Context& context;
     ResourceManager& resources;
-    const GpuScene* scene;      // null: nothing loaded
-    SceneCulling* culling;      // null: nothing loaded
-    const Scene& lighting;      // bounds, lights and cameras of the loaded scene
+    const GpuScene* scene;                       // null: nothing loaded
+    SceneCulling* culling;                       // null: nothing loaded
+    const Scene& lighting;                       // bounds, lights and cameras of the loaded scene
+    const EnvironmentMap* environment = nullptr; // null: no environment loaded
     std::uint32_t cascades = 0; // shadow cascades re-rendered this frame (0: reused or none)
     bool prepass = false;       // the depth prepass runs this frame
     float aspect() const { return float(target.width) / float(target.height); }

@@ -7,6 +7,7 @@
 #include <sherpa/scene/shadow_cascades.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 namespace sherpa::gpu {
@@ -38,7 +39,7 @@ MainSun main_sun(const Scene& lighting, const RenderSettings& settings) {
         sun.placed_light = std::int64_t(i);
         return sun;
     }
-    if (lighting.placed_lights.empty()) {
+    if (lighting.placed_lights.empty() && settings.sun) {
         sun.present = true;
         sun.direction = glm::normalize(settings.sun_direction);
         sun.radiance = glm::vec3(settings.sun_intensity);
@@ -78,6 +79,20 @@ void Renderer::Impl::write_frame_data(FrameContext& frame) {
     }
     f.sun_direction = glm::vec4(sun_dir, 0.0f);
     f.ambient = glm::vec4(glm::vec3(settings.ambient), 0.0f);
+    // Environment and display transform (ibl.glsl, tonemap.glsl, background.frag).
+    if (environment) {
+        const EnvironmentStats& env = environment->stats();
+        const float turn = glm::radians(settings.environment_rotation);
+        f.environment = glm::vec4(settings.environment_intensity, float(env.specular_levels),
+                                  std::cos(turn), std::sin(turn));
+    }
+    const float background_level =
+        !environment || settings.background == Background::Color ? -1.0f
+        : settings.background == Background::Blurred
+            ? kBlurredBackgroundRoughness * float(environment->stats().specular_levels - 1)
+            : 0.0f;
+    f.display = glm::vec4(std::exp2(settings.exposure), float(settings.tone_map),
+                          settings.energy_compensation ? 1.0f : 0.0f, background_level);
 
     std::uint32_t cascades = 0;
     frame.cascades = 0;

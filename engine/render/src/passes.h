@@ -4,6 +4,7 @@
 // here (with `void record(FrameContext&)`) and one line in Renderer::Impl::record_passes.
 #include "frame_context.h"
 
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -135,6 +136,20 @@ public:
 
 private:
     AlphaMode alpha_;
+};
+
+// The environment where no surface is (background_pass.cpp): after the opaque and
+// masked surfaces, before the blended ones (which blend over it).
+class BackgroundPass {
+public:
+    BackgroundPass();
+    ~BackgroundPass();
+    void record(FrameContext& f);
+    static bool active(const FrameContext& f);
+
+private:
+    UniqueShaderModule vert_, frag_;
+    std::map<VkFormat, UniquePipeline> pipelines_;
 };
 
 // RenderSettings::overlays: wireframe, normal/tangent/bitangent glyphs, instance

@@ -42,13 +42,31 @@ void Renderer::Impl::create_frame_sets() {
         {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
         {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
         {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+        // The environment's maps (shaders/include/ibl.glsl): partially bound, so a
+        // renderer without an environment binds (and holds) nothing there.
+        {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+        {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+        {6, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+        {7, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
     };
-    frame_layout_ =
-        create_descriptor_set_layout(device, bindings, "vkCreateDescriptorSetLayout(frame)");
+    const VkDescriptorBindingFlags binding_flags[] = {0,
+                                                      0,
+                                                      0,
+                                                      0,
+                                                      VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
+                                                      VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
+                                                      VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
+                                                      VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT};
+    auto flags_info = vk_init<VkDescriptorSetLayoutBindingFlagsCreateInfo>(
+        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_BINDING_FLAGS_CREATE_INFO);
+    flags_info.bindingCount = static_cast<std::uint32_t>(std::size(binding_flags));
+    flags_info.pBindingFlags = binding_flags;
+    frame_layout_ = create_descriptor_set_layout(
+        device, bindings, "vkCreateDescriptorSetLayout(frame)", 0, &flags_info);
     const VkDescriptorPoolSize sizes[] = {
         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFramesInFlight},
         {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * kFramesInFlight},
-        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFramesInFlight}};
+        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 5 * kFramesInFlight}};
     frame_pool_ =
         create_descriptor_pool(device, kFramesInFlight, sizes, "vkCreateDescriptorPool(frame)");
     no_materials_ =
@@ -69,6 +87,12 @@ void Renderer::Impl::create_frame_sets() {
 // Points the slot's set at its frame data and the current scene's materials. The
 // slot's previous frame has completed, so the set is not in use.
 void Renderer::Impl::bind_frame_set(FrameSlot& slot) {
+    if (slot.set_environment != environment_generation_) {
+        // Without an environment the old maps' descriptors stay, never read (ibl.glsl
+        // checks frame.environment.y, 0 then): the bindings are partially bound.
+        if (environment) environment->write_descriptors(context.device(), slot.set);
+        slot.set_environment = environment_generation_;
+    }
     if (slot.set_generation == scene_generation_) return;
     const VkBuffer none = resources->get(no_materials_).buffer.get();
     const VkDescriptorBufferInfo infos[] = {
@@ -100,6 +124,7 @@ void Renderer::Impl::bind_frame_set(FrameSlot& slot) {
 Renderer::Impl::~Impl() {
     context.wait_idle();
     culling.reset();
+    environment.reset();
     rt_views_.reset();
     acceleration.reset();
     scene.reset();

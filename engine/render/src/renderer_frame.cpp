@@ -42,6 +42,7 @@ void Renderer::Impl::record_frame(VkCommandBuffer cmd, std::uint32_t index,
     slot.draw_calls = 0;
     FrameContext f{cmd,     slot,       index,       pipelines_for(target.format), settings, target,
                    context, *resources, scene.get(), culling.scene_culling(),      lighting_};
+    f.environment = environment.get();
     record_passes(f);
 }
 
@@ -61,6 +62,7 @@ void Renderer::Impl::record_passes(FrameContext& f) {
     opaque_.record(f);
     timestamp(f, kAfterOpaque);
     mask_.record(f);
+    background_.record(f); // timed with the masked pass
     timestamp(f, kAfterMask);
     blend_.record(f);
     timestamp(f, kAfterBlend);

@@ -2,6 +2,7 @@
 // The Renderer's inside (private to the render layer): frame resources, targets,
 // pipelines and the passes, in frame order in record_passes() (renderer_frame.cpp).
 #include "comparison_pass.h"
+#include "environment_map.h"
 #include "passes.h"
 #include "rt_view_pass.h"
 
@@ -71,6 +72,8 @@ public:
     // With RendererOptions::ray_tracing: the scene's BLAS/TLAS and the ray-traced views.
     std::unique_ptr<SceneAccelerationStructures> acceleration;
     CullingPass culling;
+    std::unique_ptr<EnvironmentMap> environment; // null: none (set_environment)
+    void set_environment(const EnvironmentImage* image);
 
 private:
     // A frame, pass by pass.
@@ -131,6 +134,7 @@ private:
     FloorPass floor_;
     DepthPrepass prepass_;
     ForwardPass opaque_{AlphaMode::Opaque}, mask_{AlphaMode::Mask}, blend_{AlphaMode::Blend};
+    BackgroundPass background_;
     OverlayPass overlays_{pose_};
     HighlightPass highlight_;
 
@@ -141,6 +145,7 @@ private:
     // Only bounds, lights and cameras (what camera and light resolution needs).
     Scene lighting_;
     std::uint64_t scene_generation_ = 0;
+    std::uint64_t environment_generation_ = 0; // counts set_environment()
     std::vector<std::unique_ptr<FrameSlot>> slots_;
     std::uint32_t next_slot_ = 0;
     std::unique_ptr<ComparisonPass> comparison_;

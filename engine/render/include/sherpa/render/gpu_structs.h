@@ -48,6 +48,8 @@ struct GPUFrameData {
     glm::vec4 overlay; // x glyph length, y uv checks per unit, z texture LOD (< 0: derivatives)
     glm::vec4 cascade_texel; // world size of one shadow-map texel, per cascade
     GPULight lights[kMaxLights];
+    glm::vec4 environment; // x intensity, y specular levels (0: none), z cos, w sin of rotation
+    glm::vec4 display;     // x 2^exposure, y ToneMap, z energy compensation, w background level
 };
 static_assert(offsetof(GPUFrameData, proj) == 64);
 static_assert(offsetof(GPUFrameData, view_proj) == 128);
@@ -61,7 +63,9 @@ static_assert(offsetof(GPUFrameData, params) == 528);
 static_assert(offsetof(GPUFrameData, overlay) == 544);
 static_assert(offsetof(GPUFrameData, cascade_texel) == 560);
 static_assert(offsetof(GPUFrameData, lights) == 576);
-static_assert(sizeof(GPUFrameData) == 576 + 64 * kMaxLights);
+static_assert(offsetof(GPUFrameData, environment) == 576 + 64 * kMaxLights);
+static_assert(offsetof(GPUFrameData, display) == 592 + 64 * kMaxLights);
+static_assert(sizeof(GPUFrameData) == 608 + 64 * kMaxLights);
 
 // 128 bytes: model matrix and the CPU-computed normal matrix
 // transpose(inverse(mat3(model))) as three vec4 columns (layout-independent).

@@ -11,6 +11,7 @@
 
 #include <sherpa/gpu/debug_views.h>
 #include <sherpa/render/camera.h>
+#include <sherpa/render/environment.h>
 #include <sherpa/scene/animation.h>
 #include <sherpa/scene/culling.h>
 #include <sherpa/scene/shadow_cascades.h>
@@ -88,7 +89,26 @@ struct RenderSettings {
     // (and its shadows) is added.
     glm::vec3 sun_direction = kDefaultSunDirection; // direction light travels
     float sun_intensity = 3.0f;
+    // The default sun (and its shadow cascades) on or off; the scene's own lights are
+    // drawn either way.
+    bool sun = true;
+    // The sky/ground ambient term, used only where no environment is loaded
+    // (Renderer::set_environment); an environment replaces it.
     float ambient = 0.25f;
+    // The loaded environment (environment.h): turned about +Y by this many degrees
+    // (what was at direction d shows at R_y(rotation) d), its radiance scaled.
+    float environment_rotation = 0.0f;
+    float environment_intensity = 1.0f;
+    // What shows where no surface is: the environment, it blurred, or clear_color. With no
+    // environment loaded, always clear_color.
+    Background background = Background::Environment;
+    // Multiple-scattering energy compensation of the environment's specular light (rough
+    // metals keep their energy); off shows single scattering alone.
+    bool energy_compensation = true;
+    // Display transform of the lit view: exposure in stops (0: radiance unchanged),
+    // then the tone curve. Other views show data and are not tone-mapped.
+    ToneMap tone_map = ToneMap::Neutral;
+    float exposure = 0.0f;
     // Culls the camera pass and each shadow cascade (against its volume extended
     // toward the light, see sherpa/scene/shadow_cascades.h).
     CullPath cull = CullPath::Cpu;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <sherpa/render/acceleration_stats.h>
+#include <sherpa/render/environment.h>
 #include <sherpa/render/load_settings.h>
 #include <sherpa/render/render_settings.h>
 #include <sherpa/scene/culling_passes.h>
@@ -107,6 +108,14 @@ public:
     // The loaded scene's acceleration structures (BLAS/TLAS statistics); null without
     // RendererOptions::ray_tracing or a scene.
     const AccelerationStats* acceleration_stats() const;
+
+    // The environment that lights lit frames (image-based lighting, environment.h): made
+    // on the GPU from `image` (prefiltered cubes and lookup tables), replacing the one
+    // before; null removes it (no GPU bytes, no passes: lit frames use the ambient term).
+    // Waits for the frames in flight. Throws GpuError for an invalid image.
+    void set_environment(const EnvironmentImage* image);
+    // What is loaded: sizes, GPU bytes, build time (present false: none).
+    EnvironmentStats environment_stats() const;
 
     // Renders one frame offscreen and waits for it. With `rgba` set, reads the
     // image back as tightly packed sRGB-encoded RGBA8 rows, top row first.

@@ -1,0 +1,86 @@
+#include "environment_options.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include <sherpa/render/renderer.h>
+
+namespace sherpa::cli {
+
+OptionMatch parse_environment_option(Args args, std::size_t& i, gpu::RenderSettings& settings,
+                                     gpu::EnvironmentChoice& environment, std::string& error) {
+    const std::string_view a = args[i];
+    if (a != "--environment" && a != "--environment-rotation" && a != "--environment-intensity" &&
+        a != "--background" && a != "--tone-map" && a != "--exposure" && a != "--sun" &&
+        a != "--energy-compensation")
+        return OptionMatch::NotMine;
+    if (i + 1 >= args.size()) {
+        error = std::string(a) + " needs a value";
+        return OptionMatch::Bad;
+    }
+    const std::string_view v = args[++i];
+    const auto on_off = [&](bool& out) {
+        if (v != "on" && v != "off") {
+            error = std::string(a) + " needs on or off, not '" + std::string(v) + "'";
+            return OptionMatch::Bad;
+        }
+        out = v == "on";
+        return OptionMatch::Taken;
+    };
+    float x = 0.0f;
+    if (a == "--environment") {
+        if (v.empty()) {
+            error = "--environment needs room, none or a file";
+            return OptionMatch::Bad;
+        }
+        environment = gpu::parse_environment_choice(v);
+    } else if (a == "--environment-rotation" || a == "--environment-intensity" ||
+               a == "--exposure") {
+        if (!parse_number(v, x) || !std::isfinite(x)) {
+            error = std::string(a) + " needs a finite number, not '" + std::string(v) + "'";
+            return OptionMatch::Bad;
+        }
+        if (a == "--environment-intensity" && x < 0.0f) {
+            error = "--environment-intensity needs a number >= 0";
+            return OptionMatch::Bad;
+        }
+        if (a == "--exposure" && std::abs(x) > 32.0f) {
+            error = "--exposure needs stops from -32 to 32";
+            return OptionMatch::Bad;
+        }
+        (a == "--environment-rotation"    ? settings.environment_rotation
+         : a == "--environment-intensity" ? settings.environment_intensity
+                                          : settings.exposure) = x;
+    } else if (a == "--background") {
+        glm::vec3 color{};
+        const auto b = gpu::parse_background(v, color);
+        if (!b) {
+            error = "--background needs environment, blurred or R,G,B (linear, 0 to 1), not '" +
+                    std::string(v) + "'";
+            return OptionMatch::Bad;
+        }
+        settings.background = *b;
+        if (*b == gpu::Background::Color) settings.clear_color = glm::vec4(color, 1.0f);
+    } else if (a == "--tone-map") {
+        const auto t = gpu::parse_tone_map(v);
+        if (!t) {
+            error = "--tone-map needs neutral, aces, agx or linear, not '" + std::string(v) + "'";
+            return OptionMatch::Bad;
+        }
+        settings.tone_map = *t;
+    } else if (a == "--sun") {
+        return on_off(settings.sun);
+    } else {
+        return on_off(settings.energy_compensation);
+    }
+    return OptionMatch::Taken;
+}
+
+void apply_environment(gpu::Renderer& renderer, const gpu::EnvironmentChoice& environment) {
+    std::vector<std::string> warnings;
+    const auto image = gpu::make_environment(environment, warnings);
+    for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    renderer.set_environment(image ? &*image : nullptr);
+}
+
+} // namespace sherpa::cli

@@ -1,0 +1,35 @@
+#pragma once
+// The environment-lighting and display options of `render` and `lab`: which
+// environment lights the scene, how it is turned and scaled, what shows behind, the
+// default sun, energy compensation, tone mapping and exposure (docs/environment.md).
+#include "cli_common.h"
+#include "texture_cli.h" // OptionMatch
+
+#include <string>
+
+#include <sherpa/render/environment.h>
+#include <sherpa/render/render_settings.h>
+
+namespace sherpa::gpu {
+class Renderer;
+}
+
+namespace sherpa::cli {
+
+inline constexpr const char* kEnvironmentOptionsSynopsis =
+    "[--environment room|none|FILE.hdr|FILE.exr] [--environment-rotation DEG]\n"
+    "         [--environment-intensity X] [--background environment|blurred|R,G,B]\n"
+    "         [--sun on|off] [--energy-compensation on|off] [--tone-map "
+    "neutral|aces|agx|linear]\n"
+    "         [--exposure EV] ";
+
+// If args[i] is one of these options, consumes it and its value (advancing i) into
+// `settings` (--environment into `environment`); Bad sets `error`.
+OptionMatch parse_environment_option(Args args, std::size_t& i, gpu::RenderSettings& settings,
+                                     gpu::EnvironmentChoice& environment, std::string& error);
+
+// Makes the chosen environment and gives it to `renderer`; its warnings (an
+// unreadable file and the fallback used, NaN texels, ...) go to stderr.
+void apply_environment(gpu::Renderer& renderer, const gpu::EnvironmentChoice& environment);
+
+} // namespace sherpa::cli

@@ -1,0 +1,52 @@
+// The window's environment lighting and display settings: the Environment menu and
+// View › Tone Mapping (EnvironmentMenu), the environment given to the viewport when it
+// changes (made on the render thread; its warnings reach the log), and the display
+// settings in every frame.
+#include "environment_menu.h"
+#include "log_dock.h"
+#include "main_window.h"
+#include "main_window_actions.h"
+#include "render_thread.h"
+#include "viewport_window.h"
+
+#include <QCoreApplication>
+#include <QMenuBar>
+#include <QPointer>
+
+namespace sherpa::editor {
+
+void MainWindow::setupEnvironment() {
+    environment_ = new EnvironmentMenu(this);
+    menuBar()->insertMenu(a_->culling->menuAction(), environment_->environmentMenu());
+    a_->view->insertMenu(a_->cameras->menuAction(), environment_->toneMenu());
+    connect(environment_, &EnvironmentMenu::environmentChanged, this,
+            &MainWindow::applyEnvironment);
+    connect(environment_, &EnvironmentMenu::displayChanged, this,
+            [this] { viewport_->scheduleFrame(); });
+}
+
+void MainWindow::applyEnvironment() {
+    if (!render_) return; // given to the device once it is ready
+    const gpu::EnvironmentChoice choice = environment_->choice();
+    // The command line's choice and the device becoming ready both ask: build it once.
+    if (environment_posted_ && environment_posted_->kind == choice.kind &&
+        environment_posted_->path == choice.path)
+        return;
+    environment_posted_ = choice;
+    const QString name = choice.kind == gpu::EnvironmentChoice::Kind::None ? tr("none")
+                         : choice.kind == gpu::EnvironmentChoice::Kind::Room
+                             ? tr("the room")
+                             : QString::fromStdString(choice.path);
+    QPointer<MainWindow> self(this);
+    render_->post([self, choice, name](GpuViewport& gpu) {
+        const QStringList warnings = gpu.setEnvironment(choice);
+        QMetaObject::invokeMethod(qApp, [self, warnings, name] {
+            if (!self) return;
+            for (const QString& w : warnings) self->log_->append(LogDock::Level::Warning, w);
+            self->log_->append(LogDock::Level::Info, tr("Environment: %1.").arg(name));
+            self->viewport_->scheduleFrame();
+        });
+    });
+}
+
+} // namespace sherpa::editor

@@ -1,0 +1,269 @@
+// EnvironmentMap: the build, pass by pass, in one command buffer.
+#include "environment_map.h"
+
+#include "environment_passes.h"
+
+#include <sherpa/gpu/commands.h>
+#include <sherpa/gpu/gpu_error.h>
+#include <sherpa/gpu/upload.h>
+#include <sherpa/gpu/vk_helpers.h>
+
+#include <glm/gtc/packing.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <iterator>
+#include <vector>
+
+namespace sherpa::gpu {
+namespace {
+
+constexpr VkFormat kFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+// Timestamps around the passes: EnvironmentStats::pass_ms.
+constexpr std::uint32_t kStamps = std::size(EnvironmentStats{}.pass_ms) + 1;
+
+std::uint32_t levels_of(std::uint32_t size) {
+    return std::uint32_t(std::bit_width(size));
+}
+
+ImageHandle make_cube(ResourceManager& r, std::uint32_t size, std::uint32_t levels,
+                      const char* name) {
+    ImageDesc d;
+    d.format = kFormat;
+    d.width = d.height = size;
+    d.mip_levels = levels;
+    d.layers = 6;
+    d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
+    d.view_type = VK_IMAGE_VIEW_TYPE_CUBE;
+    d.name = name;
+    return r.images().create(d);
+}
+
+// A storage view of one level (all layers) of `image`.
+UniqueImageView level_view(VkDevice device, VkImage image, std::uint32_t level,
+                           std::uint32_t layers) {
+    auto vi = vk_init<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
+    vi.image = image;
+    vi.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+    vi.format = kFormat;
+    vi.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, layers};
+    VkImageView v = VK_NULL_HANDLE;
+    vk_check(vkCreateImageView(device, &vi, nullptr, &v), "vkCreateImageView(ibl level)");
+    return UniqueImageView(device, v);
+}
+
+std::uint64_t bytes_of(std::uint32_t size, std::uint32_t levels, std::uint32_t layers) {
+    std::uint64_t b = 0;
+    for (std::uint32_t l = 0; l < levels; ++l) {
+        const std::uint64_t s = std::max<std::uint32_t>(size >> l, 1);
+        b += s * s * layers * 8;
+    }
+    return b;
+}
+
+void compute_barrier(VkCommandBuffer cmd) {
+    memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                   VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                   VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+}
+
+} // namespace
+
+EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
+                               const EnvironmentImage& image)
+    : resources_(resources) {
+    if (!image.valid()) throw GpuError("environment image '" + image.name + "' has no texels");
+    const auto start = std::chrono::steady_clock::now();
+    VkDevice device = context.device();
+    ImagePool& images = resources.images();
+
+    // Sizes: the cube face a quarter of the source's width (90 degrees of 360).
+    const std::uint32_t cube = std::clamp<std::uint32_t>(
+        std::bit_floor(std::max<std::uint32_t>(image.width / 4, 1)), kMinCube, kMaxCube);
+    const std::uint32_t radiance_levels = levels_of(cube);
+    const std::uint32_t specular_levels = levels_of(cube / kLowestLevel);
+    const std::uint32_t sheen_levels = levels_of(kSheenSize / kLowestLevel);
+    stats_.present = true;
+    stats_.name = image.name;
+    stats_.source_width = image.width;
+    stats_.source_height = image.height;
+    stats_.cube_size = cube;
+    stats_.specular_levels = specular_levels;
+    stats_.irradiance_size = kIrradianceSize;
+    stats_.sheen_size = kSheenSize;
+    stats_.sheen_levels = sheen_levels;
+    stats_.lut_size = kLutSize;
+
+    // The source in half floats (load_environment() clamped it to their range), with
+    // mips so that a source wider than 4 faces is read without aliasing.
+    ImageDesc src_desc;
+    src_desc.format = kFormat;
+    src_desc.width = image.width;
+    src_desc.height = image.height;
+    src_desc.mip_levels = levels_of(std::max(image.width, image.height));
+    src_desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                     VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    src_desc.name = "environment source";
+    ImageHandle source = images.create(src_desc);
+    {
+        std::vector<std::uint16_t> half(image.rgba.size());
+        for (std::size_t i = 0; i < half.size(); ++i)
+            half[i] = glm::packHalf1x16(std::min(image.rgba[i], 65504.0f));
+        UploadBatch upload(resources);
+        upload.upload_image(source, half.data(), half.size() * sizeof(std::uint16_t));
+        upload.submit_and_wait();
+    }
+    ImageHandle radiance = make_cube(resources, cube, radiance_levels, "environment radiance");
+    specular_ = make_cube(resources, cube, specular_levels, "environment specular");
+    irradiance_ = make_cube(resources, kIrradianceSize, 1, "environment irradiance");
+    sheen_ = make_cube(resources, kSheenSize, sheen_levels, "environment sheen");
+    ImageDesc lut_desc;
+    lut_desc.format = kFormat;
+    lut_desc.width = lut_desc.height = kLutSize;
+    lut_desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
+    lut_desc.name = "environment brdf lut";
+    lut_ = images.create(lut_desc);
+    stats_.bytes = bytes_of(cube, specular_levels, 6) + bytes_of(kIrradianceSize, 1, 6) +
+                   bytes_of(kSheenSize, sheen_levels, 6) + bytes_of(kLutSize, 1, 1);
+
+    auto si = vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+    si.magFilter = si.minFilter = VK_FILTER_LINEAR;
+    si.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
+    si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    si.maxLod = VK_LOD_CLAMP_NONE;
+    sampler_ = images.create_sampler(si);
+    si.addressModeU = VK_SAMPLER_ADDRESS_MODE_REPEAT; // the equirectangular seam at -X
+    SamplerHandle equirect_sampler = images.create_sampler(si);
+
+    IblLayout layout(device, 64);
+    const EquirectToCubePass to_cube(device, layout.layout());
+    const CubeDownsamplePass downsample(device, layout.layout());
+    const PrefilterPass ggx(device, layout.layout(), PrefilterPass::Lobe::Ggx);
+    const PrefilterPass lambert(device, layout.layout(), PrefilterPass::Lobe::Lambert);
+    const PrefilterPass charlie(device, layout.layout(), PrefilterPass::Lobe::Charlie);
+    const BrdfLutPass lut_pass(device, layout.layout());
+
+    const VkImageView radiance_view = images.get(radiance).view.get();
+    std::vector<UniqueImageView> views; // level views, alive until the build completes
+    auto target = [&](ImageHandle h, std::uint32_t level, std::uint32_t layers) {
+        views.push_back(level_view(device, images.get(h).image.get(), level, layers));
+        return views.back().get();
+    };
+    const VkSampler linear = images.get(sampler_);
+
+    UniqueQueryPool timestamps;
+    if (context.info().timestamps)
+        timestamps = create_query_pool(device, VK_QUERY_TYPE_TIMESTAMP, kStamps);
+    CommandRecorder rec(context);
+    VkCommandBuffer cmd = rec.begin();
+    if (timestamps) {
+        vkCmdResetQueryPool(cmd, timestamps.get(), 0, kStamps);
+        vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps.get(), 0);
+    }
+    std::uint32_t stamp = 1;
+    auto mark = [&] {
+        if (timestamps)
+            vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps.get(),
+                                 stamp);
+        ++stamp;
+    };
+    for (ImageHandle h : {radiance, specular_, irradiance_, sheen_, lut_})
+        transition(cmd,
+                   {images.get(h).image.get(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                    VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                    VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
+    // The source was left SHADER_READ_ONLY by the upload; read it in GENERAL as well.
+    transition(cmd, {images.get(source).image.get(), VK_IMAGE_ASPECT_COLOR_BIT,
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+                     VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
+
+    // 1. Radiance cube level 0, then its box-filtered levels.
+    const float equirect_lod = std::max(0.0f, std::log2(float(image.width) / float(4 * cube)));
+    to_cube.record(cmd,
+                   layout.bind(images.get(equirect_sampler), images.get(source).view.get(),
+                               target(radiance, 0, 6)),
+                   cube, equirect_lod);
+    for (std::uint32_t l = 1; l < radiance_levels; ++l) {
+        compute_barrier(cmd);
+        downsample.record(cmd, layout.bind(linear, radiance_view, target(radiance, l, 6)),
+                          std::max(cube >> l, 1u), l - 1);
+    }
+    mark();
+    compute_barrier(cmd);
+    // 2. Every prefilter and the LUT read the finished radiance cube: no barriers between.
+    for (std::uint32_t l = 0; l < specular_levels; ++l) {
+        const float roughness = specular_levels > 1 ? float(l) / float(specular_levels - 1) : 0.0f;
+        ggx.record(cmd, layout.bind(linear, radiance_view, target(specular_, l, 6)), cube >> l,
+                   roughness, l == 1 ? kSpecularSamplesFirst : kSpecularSamples, cube,
+                   radiance_levels);
+    }
+    mark();
+    lambert.record(cmd, layout.bind(linear, radiance_view, target(irradiance_, 0, 6)),
+                   kIrradianceSize, 1.0f, kIrradianceSamples, cube, radiance_levels);
+    mark();
+    for (std::uint32_t l = 0; l < sheen_levels; ++l) {
+        // Charlie at roughness 0 is undefined: its sharpest level uses a small roughness.
+        const float roughness = std::max(float(l) / float(sheen_levels - 1), 0.05f);
+        charlie.record(cmd, layout.bind(linear, radiance_view, target(sheen_, l, 6)),
+                       kSheenSize >> l, roughness, kSheenSamples, cube, radiance_levels);
+    }
+    mark();
+    lut_pass.record(cmd, layout.bind(VK_NULL_HANDLE, VK_NULL_HANDLE, target(lut_, 0, 1)), kLutSize,
+                    kLutSamples);
+    for (ImageHandle h : {specular_, irradiance_, sheen_, lut_})
+        transition(cmd,
+                   {images.get(h).image.get(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
+    mark();
+    resources.timeline().wait_for(rec.submit(resources));
+    if (timestamps) {
+        std::uint64_t ts[kStamps] = {};
+        if (vkGetQueryPoolResults(device, timestamps.get(), 0, kStamps, sizeof(ts), ts,
+                                  sizeof(ts[0]), VK_QUERY_RESULT_64_BIT) == VK_SUCCESS) {
+            const double ms = context.info().timestamp_period_ns * 1e-6;
+            stats_.gpu_ms = double(ts[kStamps - 1] - ts[0]) * ms;
+            for (std::uint32_t i = 0; i + 1 < kStamps; ++i)
+                stats_.pass_ms[i] = double(ts[i + 1] - ts[i]) * ms;
+        }
+    }
+    images.destroy(radiance);
+    images.destroy(source);
+    images.destroy(equirect_sampler);
+    stats_.prefilter_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+EnvironmentMap::~EnvironmentMap() {
+    for (ImageHandle* h : {&specular_, &irradiance_, &sheen_, &lut_})
+        resources_.images().destroy(*h);
+    resources_.images().destroy(sampler_);
+}
+
+void EnvironmentMap::write_descriptors(VkDevice device, VkDescriptorSet set) const {
+    const ImagePool& images = resources_.images();
+    const VkSampler s = images.get(sampler_);
+    const VkDescriptorImageInfo infos[] = {
+        {s, images.get(specular_).view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+        {s, images.get(irradiance_).view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+        {s, images.get(lut_).view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+        {s, images.get(sheen_).view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+    };
+    VkWriteDescriptorSet writes[4];
+    for (std::uint32_t i = 0; i < 4; ++i) {
+        writes[i] = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        writes[i].dstSet = set;
+        writes[i].dstBinding = 4 + i;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+        writes[i].pImageInfo = &infos[i];
+    }
+    vkUpdateDescriptorSets(device, 4, writes, 0, nullptr);
+}
+
+} // namespace sherpa::gpu

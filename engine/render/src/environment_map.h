@@ -1,0 +1,42 @@
+#pragma once
+// An environment on the GPU: made once from an equirectangular image by the compute
+// passes of environment_passes.h, then read by every lit frame (shaders/include/ibl.glsl,
+// set 1 bindings 4-7) and the background pass. Only what shading reads is kept: the
+// GGX-prefiltered specular cube (its level 0 is the sharp environment), the irradiance
+// cube, the Charlie (sheen) cube and the split-sum lookup table; the source image and
+// the radiance cube the prefilters sample are freed after the build.
+#include <sherpa/gpu/resources.h>
+#include <sherpa/render/environment.h>
+
+namespace sherpa::gpu {
+
+class EnvironmentMap {
+public:
+    // Sizes of what is made (the specular cube's face follows the source: a quarter of
+    // its width as a power of two, within these bounds).
+    static constexpr std::uint32_t kMinCube = 16, kMaxCube = 512, kLowestLevel = 8;
+    static constexpr std::uint32_t kIrradianceSize = 32, kSheenSize = 64, kLutSize = 64;
+    // Samples per texel. Filtered importance sampling reads coarser source levels for
+    // wider lobes, so few samples suffice; the sharpest prefiltered level (the largest,
+    // and the narrowest lobe) takes the fewest.
+    static constexpr std::uint32_t kSpecularSamplesFirst = 16, kSpecularSamples = 32,
+                                   kIrradianceSamples = 48, kSheenSamples = 32, kLutSamples = 128;
+
+    // Builds everything on the GPU and waits for it. `image` must be valid().
+    EnvironmentMap(Context& context, ResourceManager& resources, const EnvironmentImage& image);
+    ~EnvironmentMap();
+    EnvironmentMap(const EnvironmentMap&) = delete;
+    EnvironmentMap& operator=(const EnvironmentMap&) = delete;
+
+    // Bindings 4 (specular), 5 (irradiance), 6 (LUT), 7 (sheen) of a frame set.
+    void write_descriptors(VkDevice device, VkDescriptorSet set) const;
+    const EnvironmentStats& stats() const { return stats_; }
+
+private:
+    ResourceManager& resources_;
+    ImageHandle specular_, irradiance_, sheen_, lut_;
+    SamplerHandle sampler_;
+    EnvironmentStats stats_;
+};
+
+} // namespace sherpa::gpu

@@ -1,0 +1,24 @@
+// The Renderer's environment: made on set_environment(), bound into each frame set
+// the next time that slot records (bind_frame_set), freed when replaced or removed.
+#include "renderer_impl.h"
+
+namespace sherpa::gpu {
+
+void Renderer::Impl::set_environment(const EnvironmentImage* image) {
+    // Frames in flight may read the old maps: wait for them before they go.
+    for (auto& slot : slots_) wait_slot(*slot);
+    environment.reset();
+    if (image) environment = std::make_unique<EnvironmentMap>(context, *resources, *image);
+    ++environment_generation_;
+    resources->collect_garbage();
+}
+
+void Renderer::set_environment(const EnvironmentImage* image) {
+    impl_->set_environment(image);
+}
+
+EnvironmentStats Renderer::environment_stats() const {
+    return impl_->environment ? impl_->environment->stats() : EnvironmentStats{};
+}
+
+} // namespace sherpa::gpu

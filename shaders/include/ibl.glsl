@@ -1,0 +1,72 @@
+// Image-based lighting in the raster shaders: the environment's prefiltered cubes and
+// lookup tables (set 1, bindings 4-7, written by EnvironmentMap, environment_map.cpp;
+// partially bound: nothing is bound, and nothing read, without an environment).
+// Split-sum specular (GGX), Lambertian irradiance, and multiple-scattering energy
+// compensation (Fdez-Aguera 2019, as three.js's computeMultiscattering), switchable.
+// Material extensions read the same maps: ibl_sheen() (Charlie) for sheen, ibl_specular()
+// at a roughness for clearcoat and transmission.
+#ifndef SHERPA_IBL_GLSL
+#define SHERPA_IBL_GLSL
+layout(set = 1, binding = 4) uniform samplerCube ibl_specular_cube;
+layout(set = 1, binding = 5) uniform samplerCube ibl_irradiance_cube;
+layout(set = 1, binding = 6) uniform sampler2D ibl_lut; // r, g GGX scale, bias; b Charlie albedo
+layout(set = 1, binding = 7) uniform samplerCube ibl_sheen_cube;
+
+bool has_environment() { return frame.environment.y > 0.0; }
+
+// World direction -> the environment's own (its rotation about +Y undone).
+vec3 env_direction(vec3 d) {
+    float c = frame.environment.z, s = frame.environment.w;
+    return vec3(c * d.x - s * d.z, d.y, s * d.x + c * d.z);
+}
+
+// Radiance arriving along -dir, prefiltered for GGX at perceptual `roughness`.
+vec3 ibl_specular(vec3 dir, float roughness) {
+    float lod = clamp(roughness, 0.0, 1.0) * (frame.environment.y - 1.0);
+    return textureLod(ibl_specular_cube, env_direction(dir), lod).rgb * frame.environment.x;
+}
+
+// Cosine-weighted mean radiance about n (irradiance / pi).
+vec3 ibl_irradiance(vec3 n) {
+    return textureLod(ibl_irradiance_cube, env_direction(n), 0.0).rgb * frame.environment.x;
+}
+
+// (GGX scale, GGX bias, Charlie directional albedo) at n.v and perceptual roughness.
+vec3 ibl_brdf_lut(float n_dot_v, float roughness) {
+    return textureLod(ibl_lut, vec2(n_dot_v, roughness), 0.0).rgb;
+}
+
+// Sheen (KHR_materials_sheen) lit by the environment: Charlie-prefiltered radiance
+// times the Charlie directional albedo; `sheen_levels` are ibl_sheen_cube's levels.
+vec3 ibl_sheen(vec3 n, vec3 v, vec3 sheen_color, float sheen_roughness, float sheen_levels) {
+    float n_dot_v = clamp(dot(n, v), 1e-4, 1.0);
+    float lod = clamp(sheen_roughness, 0.0, 1.0) * (sheen_levels - 1.0);
+    vec3 radiance = textureLod(ibl_sheen_cube, env_direction(n), lod).rgb * frame.environment.x;
+    return sheen_color * ibl_brdf_lut(n_dot_v, sheen_roughness).b * radiance;
+}
+
+// Diffuse and specular light from the environment on a metallic-roughness or
+// specular-glossiness surface (brdf.glsl's Surface), F90 = 1.
+vec3 environment_light(Surface s) {
+    float n_dot_v = clamp(dot(s.n, s.v), 1e-4, 1.0);
+    float roughness = clamp(s.roughness, 0.0, 1.0);
+    vec3 lut = ibl_brdf_lut(n_dot_v, roughness);
+    vec3 fss_ess = s.f0 * lut.r + lut.g; // single-scattering specular albedo
+    vec3 r = reflect(-s.v, s.n);
+    vec3 radiance = ibl_specular(r, roughness);
+    vec3 irradiance = ibl_irradiance(s.n);
+    vec3 multi = vec3(0.0);
+    if (frame.display.z > 0.0) {
+        // The energy GGX loses to single scattering (1 - E_ss) comes back, tinted by the
+        // average Fresnel over its bounces, lit by the irradiance.
+        float ess = lut.r + lut.g;
+        float ems = 1.0 - ess;
+        vec3 f_avg = s.f0 + (1.0 - s.f0) * 0.047619; // 1/21
+        vec3 fms = fss_ess * f_avg / (1.0 - ems * f_avg);
+        multi = fms * ems;
+    }
+    vec3 total = fss_ess + multi;
+    vec3 diffuse = s.diffuse * (1.0 - max(max(total.r, total.g), total.b));
+    return fss_ess * radiance + (multi + diffuse) * irradiance;
+}
+#endif

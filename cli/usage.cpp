@@ -1,0 +1,86 @@
+// Usage texts: placeholders filled from the engine's lists (lab families, debug views,
+// overlays) and the option parsers shared by several commands, so that the help never
+// lists less than the code accepts.
+#include "usage.h"
+
+#include "compare_options.h"
+#include "shadow_options.h"
+#include "texture_cli.h"
+
+#include <sherpa/lab/family.h>
+#include <sherpa/render/render_settings.h>
+
+#include <cstdio>
+#include <utility>
+#include <vector>
+
+namespace sherpa::cli {
+namespace {
+
+constexpr const char* kCameraHelp =
+    "CAMERA (render, cull and --freeze-cull read it with one parser):\n"
+    "  auto               frame what is drawn (posed where --time is given)\n"
+    "  gltf:N             the file's camera N as placed in the scene ('info' lists them)\n"
+    "  eye=x,y,z:target=x,y,z[:up=x,y,z][:fov=DEG][:aspect=A][:near=N][:far=F]\n";
+
+std::string joined(const std::vector<std::string_view>& names, std::string_view separator) {
+    std::string out;
+    for (std::string_view n : names) out += (out.empty() ? "" : std::string(separator)) + std::string(n);
+    return out;
+}
+
+std::string filled(std::string_view text) {
+    const std::pair<std::string_view, std::string> fills[] = {
+        {"{families}", joined(lab::family_names(), "|")},
+        {"{views}", joined(gpu::debug_view_names(), ", ")},
+        {"{overlays}", joined(gpu::overlay_names(), ", ")},
+        {"{texture-options}", kTextureOptionsSynopsis},
+        {"{texture-help}", kTextureOptionsHelp},
+        {"{compare-options}", kCompareOptionsSynopsis},
+        {"{compare-help}", kCompareOptionsHelp},
+        {"{shadow-options}", kShadowOptionsSynopsis},
+        {"{camera-help}", kCameraHelp},
+    };
+    std::string out(text);
+    for (const auto& [key, value] : fills)
+        for (std::size_t at = out.find(key); at != std::string::npos;
+             at = out.find(key, at + value.size()))
+            out.replace(at, key.size(), value);
+    return out;
+}
+
+const Command* find(std::string_view name) {
+    for (const Command& c : commands())
+        if (c.name == name) return &c;
+    return nullptr;
+}
+
+} // namespace
+
+std::string usage_text(std::string_view command) {
+    const Command* c = find(command);
+    return c ? "usage: " + filled(c->usage) : std::string();
+}
+
+std::string overview_text() {
+    std::string out = "usage: sherpa-cli COMMAND ... (sherpa-cli COMMAND --help for details)\n\n";
+    for (const Command& c : commands()) {
+        const std::string text = filled(c.usage);
+        out += text.substr(0, text.find("\n\n") + 1);
+    }
+    out += "\nSCENE is a .gltf/.glb path, builtin:default or builtin:grid?n=N.\n"
+           "Exit status: 0 done, 1 load, GPU or output error, 2 bad usage.\n";
+    return out;
+}
+
+int usage_error(std::string_view message, std::string_view command) {
+    std::fprintf(stderr, "error: %.*s\n", int(message.size()), message.data());
+    if (find(command))
+        std::fprintf(stderr, "run 'sherpa-cli %.*s --help' for usage\n", int(command.size()),
+                     command.data());
+    else
+        std::fprintf(stderr, "%.*s", int(command.size()), command.data());
+    return kExitUsage;
+}
+
+} // namespace sherpa::cli

@@ -1,8 +1,10 @@
-// sherpa-bench-startup [--rounds N] [--cli PATH] [--editor PATH]: wall time of a whole
+// sherpa-bench-startup [--rounds N] [--cli PATH] [--baseline PATH] [--editor PATH]: wall
+// time of a whole
 // process, exec to exit, for `sherpa-cli info Box.gltf` (and other short commands)
 // against /bin/true and a hello-world linked to the same libc, measured in the same
 // run, interleaved round by round so that the machine's load hits all alike. Prints
-// the median and minimum of each and their ratios to both references.
+// the median and minimum of each and their ratios to both references. --baseline adds
+// another sherpa-cli (e.g. an older build) to the same rounds.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -53,18 +55,21 @@ double median(std::vector<double> v) {
 int main(int argc, char** argv) {
     int rounds = 30;
     std::string cli = SHERPA_CLI_PATH, hello = SHERPA_HELLO_PATH;
-    std::string editor;
+    std::string editor, baseline;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--rounds" && i + 1 < argc)
             rounds = std::max(1, std::atoi(argv[++i]));
         else if (a == "--cli" && i + 1 < argc)
             cli = argv[++i];
+        else if (a == "--baseline" && i + 1 < argc)
+            baseline = argv[++i];
         else if (a == "--editor" && i + 1 < argc)
             editor = argv[++i];
         else {
             std::fprintf(stderr,
-                         "usage: sherpa-bench-startup [--rounds N] [--cli PATH] [--editor PATH]\n");
+                         "usage: sherpa-bench-startup [--rounds N] [--cli PATH] [--baseline PATH] "
+                         "[--editor PATH]\n");
             return 2;
         }
     }
@@ -78,6 +83,8 @@ int main(int argc, char** argv) {
          {cli, "info", assets + "/gltf/BoxTextured/glTF/BoxTextured.gltf"},
          {}},
     };
+    if (!baseline.empty())
+        commands.push_back({"baseline: info Box.gltf", {baseline, "info", assets + "/gltf/Box/glTF/Box.gltf"}, {}});
     // The editor's start-up without a display: parse, --help, exit.
     if (!editor.empty()) commands.push_back({"sherpa --help (editor)", {editor, "--help"}, {}});
     for (Command& c : commands) run_once(c.argv); // page cache warm

@@ -25,15 +25,37 @@ constexpr const char* kCameraHelp =
 
 std::string joined(const std::vector<std::string_view>& names, std::string_view separator) {
     std::string out;
-    for (std::string_view n : names) out += (out.empty() ? "" : std::string(separator)) + std::string(n);
+    for (std::string_view n : names)
+        out += (out.empty() ? "" : std::string(separator)) + std::string(n);
+    return out;
+}
+
+// "a, b, c" broken into lines of at most ~90 columns, continued under column 21 (the
+// option help's description column).
+std::string wrapped(const std::vector<std::string_view>& names) {
+    constexpr std::size_t kIndent = 21, kWidth = 90;
+    std::string out;
+    std::size_t column = kIndent;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        const std::string item = std::string(names[i]) + (i + 1 < names.size() ? "," : "");
+        if (i > 0 && column + 1 + item.size() > kWidth) {
+            out += "\n" + std::string(kIndent, ' ');
+            column = kIndent;
+        } else if (i > 0) {
+            out += ' ';
+            ++column;
+        }
+        out += item;
+        column += item.size();
+    }
     return out;
 }
 
 std::string filled(std::string_view text) {
     const std::pair<std::string_view, std::string> fills[] = {
         {"{families}", joined(lab::family_names(), "|")},
-        {"{views}", joined(gpu::debug_view_names(), ", ")},
-        {"{overlays}", joined(gpu::overlay_names(), ", ")},
+        {"{views}", wrapped(gpu::debug_view_names())},
+        {"{overlays}", wrapped(gpu::overlay_names())},
         {"{texture-options}", kTextureOptionsSynopsis},
         {"{texture-help}", kTextureOptionsHelp},
         {"{compare-options}", kCompareOptionsSynopsis},

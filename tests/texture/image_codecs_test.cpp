@@ -31,7 +31,9 @@ tex::RgbaImage oiio_decode(const std::vector<std::uint8_t>& bytes, const std::st
     const tex::oiio::PluginApi* api = tex::oiio::plugin(error);
     EXPECT_NE(api, nullptr) << error;
     tex::RgbaImage img;
-    if (api) EXPECT_TRUE(api->decode(bytes, hint, no_limit, img, error)) << hint << ": " << error;
+    if (api) {
+        EXPECT_TRUE(api->decode(bytes, hint, no_limit, img, error)) << hint << ": " << error;
+    }
     return img;
 }
 

@@ -84,7 +84,9 @@ int main(int argc, char** argv) {
          {}},
     };
     if (!baseline.empty())
-        commands.push_back({"baseline: info Box.gltf", {baseline, "info", assets + "/gltf/Box/glTF/Box.gltf"}, {}});
+        commands.push_back({"baseline: info Box.gltf",
+                            {baseline, "info", assets + "/gltf/Box/glTF/Box.gltf"},
+                            {}});
     // The editor's start-up without a display: parse, --help, exit.
     if (!editor.empty()) commands.push_back({"sherpa --help (editor)", {editor, "--help"}, {}});
     for (Command& c : commands) run_once(c.argv); // page cache warm

@@ -3,6 +3,7 @@
 // The camera pass plus one pass per shadow cascade of the scene's first
 // directional light (or a default sun): the cascades the renderer draws for this
 // camera (sherpa/scene/shadow_cascades.h), casters only.
+#include "cli_camera.h"
 #include "cli_common.h"
 #include "pose_options.h"
 #include "scene_json.h"
@@ -71,8 +72,7 @@ int run_cull(Args args) {
     // The renderer's parser: auto, gltf:N and explicit cameras, as `render` takes them.
     gpu::CameraSpec camera_spec;
     std::string error;
-    if (!gpu::parse_camera_spec(camera_text, camera_spec, error))
-        return usage_error(error, kUsage);
+    if (!gpu::parse_camera_spec(camera_text, camera_spec, error)) return usage_error(error, kUsage);
     CullOptions options;
     options.count_false_positives = true;
     const bool on_gpu = method_text == "gpu";
@@ -87,16 +87,20 @@ int run_cull(Args args) {
         return kExitLoadError;
     }
     // Posed: every instance culled with its conservative bounds in that pose.
-    if (const auto pose = resolve_pose(*r.scene, pose_options, error); pose)
+    const std::shared_ptr<const Pose> pose = resolve_pose(*r.scene, pose_options, error);
+    if (pose)
         apply_pose_bounds(*r.scene, *pose);
     else if (!error.empty())
         return usage_error(error, kUsage);
     const Scene& s = *r.scene;
     if (const std::string w = default_pose_warning(s, pose_options); !w.empty())
         std::fprintf(stderr, "warning: %s\n", w.c_str());
+    if (const std::string hint = file_camera_hint(s, camera_spec); !hint.empty())
+        std::fprintf(stderr, "note: %s\n", hint.c_str());
     gpu::CameraView camera;
     try {
-        camera = gpu::resolve_camera(camera_spec, s, kCullAspect);
+        camera = gpu::resolve_camera(framed_camera(camera_spec, s, pose.get(), kCullAspect), s,
+                                     kCullAspect);
     } catch (const std::invalid_argument& e) {
         std::fprintf(stderr, "error: %.*s: %s\n", int(spec.size()), spec.data(), e.what());
         return kExitLoadError;
@@ -121,8 +125,8 @@ int run_cull(Args args) {
             frusta.emplace_back("cascade" + std::to_string(c),
                                 frustum_from_view_projection(cascades.cull_view_proj[c]));
             matrices.push_back(cascades.cull_view_proj[c]);
-            passes.push_back(
-                cull_pass(input, frusta.back().second, camera.position, shadow, frusta.back().first));
+            passes.push_back(cull_pass(input, frusta.back().second, camera.position, shadow,
+                                       frusta.back().first));
         }
     }
     if (on_gpu) {

@@ -18,7 +18,6 @@
 namespace sherpa::cli {
 namespace {
 
-
 struct Options {
     std::string spec, family, chart;
     bool json = false, csv = false, gpu = true;

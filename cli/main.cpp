@@ -38,7 +38,8 @@ constexpr Command kCommands[] = {
      "  --export-source DIR  write every image of the file as decoded (level 0,\n"
      "                     RGBA8 PNG, unassociated alpha), named after its file\n"},
     {"render", run_render,
-     "sherpa-cli render SCENE -o OUT.png [--width W --height H] [--view NAME] [--overlay NAME ...]\n"
+     "sherpa-cli render SCENE -o OUT.png [--width W --height H] [--view NAME] [--overlay NAME "
+     "...]\n"
      "    [--camera CAMERA] [--frames N] [--report FILE.json] [--validation] [--no-shadows]\n"
      "    [--prepass|--no-prepass] [--glyph-length L] [--floor] [--rt on|off]\n"
      "    [--renderer raster|rt] [--texture-lod N] [--animation N --time T | --pose bind]\n"
@@ -54,7 +55,8 @@ constexpr Command kCommands[] = {
      "  --overlay NAME     {overlays}\n"
      "{texture-help}{compare-help}"},
     {"rt", run_rt,
-     "sherpa-cli rt SCENE [--json] [--validation] [--scratch-budget BYTES] [--no-compact] [--rt on|off]\n"
+     "sherpa-cli rt SCENE [--json] [--validation] [--scratch-budget BYTES] [--no-compact] [--rt "
+     "on|off]\n"
      "\n"
      "Builds the scene's acceleration structures and reports them (BLAS, TLAS, totals).\n"},
     {"lab", run_lab,
@@ -75,7 +77,9 @@ constexpr Command kCommands[] = {
 
 } // namespace
 
-std::span<const Command> commands() { return kCommands; }
+std::span<const Command> commands() {
+    return kCommands;
+}
 
 } // namespace sherpa::cli
 

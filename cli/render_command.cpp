@@ -4,6 +4,7 @@
 //   [--glyph-length L] [--floor] [--cache-dir DIR] [--cache-cap-mb N] [--quality N]
 //   [--no-cache] [--no-bc] [--animation N --time T | --pose bind] [--hide-node N ...]
 //   [--compare split|difference ... (compare_options.h)]
+#include "cli_camera.h"
 #include "cli_common.h"
 #include "compare_options.h"
 #include "gpu_cli.h"
@@ -215,6 +216,11 @@ int run_render(Args args) {
         if (!error.empty()) return usage_error(error);
         run.settings.pose = settings.pose;
     }
+    // Said before auto becomes the camera that frames what is drawn (posed, if asked).
+    const std::string camera_hint = file_camera_hint(*loaded.scene, settings.camera);
+    settings.camera = framed_camera(settings.camera, *loaded.scene, settings.pose.get(),
+                                    float(settings.width) / float(settings.height));
+    run.settings.camera = settings.camera;
     if (!hidden_nodes.empty()) {
         auto mask = std::make_shared<std::vector<bool>>(loaded.scene->nodes.size(), false);
         for (const std::uint32_t n : hidden_nodes) {
@@ -285,6 +291,7 @@ int run_render(Args args) {
             std::fprintf(stderr, "warning: %s\n", w.c_str());
         if (const std::string w = default_pose_warning(*loaded.scene, pose_options); !w.empty())
             std::fprintf(stderr, "warning: %s\n", w.c_str());
+        if (!camera_hint.empty()) std::fprintf(stderr, "note: %s\n", camera_hint.c_str());
         for (const auto& w : renderer.scene()->materials().textures().warnings())
             std::fprintf(stderr, "warning: %s\n", w.c_str());
         if (!report_path.empty()) {

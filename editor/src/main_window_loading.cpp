@@ -11,6 +11,7 @@
 #include <QStatusBar>
 #include <QTimer>
 
+#include <sherpa/scene/framing.h>
 #include <sherpa/texture/quality_levels.h>
 
 #include "culling_dock.h"
@@ -103,7 +104,7 @@ void MainWindow::onLoaded(SharedSession session) {
                      .arg(s.timings.engine_ms, 0, 'f', 1)
                      .arg(s.timings.thumbnails_ms, 0, 'f', 1)
                      .arg(s.timings.textures_ms, 0, 'f', 1));
-    viewport_->camera().frameAuto(s.scene->bounds);
+    viewport_->camera().frameAuto(framing_bounds(*s.scene)); // the ground plane left out
     viewport_->setAutoFrame(true);
     onCameraChanged();
     updateStatus();

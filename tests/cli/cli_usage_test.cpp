@@ -47,8 +47,8 @@ std::size_t count(const std::string& text, const std::string& what) {
 
 TEST(CliUsage, EveryCommandPrintsItsUsageWithHelpAndExitsZero) {
     const std::vector<std::string> names = command_names();
-    for (const char* expected : {"info", "cull", "tangents", "textures", "render", "rt", "lab",
-                                 "compare", "budget"})
+    for (const char* expected :
+         {"info", "cull", "tangents", "textures", "render", "rt", "lab", "compare", "budget"})
         EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected;
     for (const std::string& name : names) {
         for (const char* flag : {"--help", "-h"}) {

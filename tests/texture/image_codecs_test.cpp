@@ -23,7 +23,9 @@ using namespace sherpa;
 
 namespace {
 
-bool no_limit(std::uint32_t, std::uint32_t, std::string_view, std::string&) { return true; }
+bool no_limit(std::uint32_t, std::uint32_t, std::string_view, std::string&) {
+    return true;
+}
 
 // OpenImageIO's texels, through the plugin.
 tex::RgbaImage oiio_decode(const std::vector<std::uint8_t>& bytes, const std::string& hint) {
@@ -118,7 +120,8 @@ std::vector<std::uint8_t> write_grey_jpeg(std::uint32_t w, std::uint32_t h) {
     jpeg_start_compress(&info, TRUE);
     std::vector<std::uint8_t> row(w);
     while (info.next_scanline < h) {
-        for (std::uint32_t x = 0; x < w; ++x) row[x] = std::uint8_t((x * 7 + info.next_scanline * 3) ^ x);
+        for (std::uint32_t x = 0; x < w; ++x)
+            row[x] = std::uint8_t((x * 7 + info.next_scanline * 3) ^ x);
         JSAMPROW p = row.data();
         jpeg_write_scanlines(&info, &p, 1);
     }

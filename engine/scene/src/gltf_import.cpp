@@ -52,9 +52,9 @@ bool keep_encoded_image(tinygltf::Image* image, const int, std::string* err, std
 // every such image once, with its path and the material slots that read it. Images
 // are the only files tinygltf loads as optional, so these lines are about images.
 std::string without_image_file_lines(const std::string& warn) {
-    constexpr std::string_view kImageLines[] = {"File not found : ", "File read error : ",
-                                                "File is empty : ",
-                                                "Failed to load external 'uri' for image["};
+    constexpr std::string_view kImageLines[] = {
+        "File not found : ", "File read error : ", "File is empty : ",
+        "Failed to load external 'uri' for image["};
     std::string out;
     std::size_t begin = 0;
     while (begin < warn.size()) {

@@ -39,8 +39,8 @@ bool encode_png(std::uint32_t width, std::uint32_t height, std::span<const std::
                 std::vector<std::uint8_t>& encoded, std::string& error);
 
 // YCbCr and grey JPEG to RGBA8 (alpha 255); CMYK/YCCK are Unsupported.
-CodecResult decode_jpeg(std::span<const std::uint8_t> bytes, std::string_view name,
-                        RgbaImage& out, std::string& error);
+CodecResult decode_jpeg(std::span<const std::uint8_t> bytes, std::string_view name, RgbaImage& out,
+                        std::string& error);
 CodecResult probe_jpeg(std::span<const std::uint8_t> bytes, std::string_view name,
                        std::uint32_t& width, std::uint32_t& height, std::string& error);
 

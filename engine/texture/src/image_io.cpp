@@ -44,8 +44,8 @@ const oiio::PluginApi* image_plugin(std::string_view name, std::string& error) {
 
 // Decodes in process when a decoder here reads the bytes; `handled` false leaves the
 // image to OpenImageIO.
-bool decode_in_process(std::span<const std::uint8_t> bytes, std::string_view name,
-                       RgbaImage& out, std::string& error, bool& handled) {
+bool decode_in_process(std::span<const std::uint8_t> bytes, std::string_view name, RgbaImage& out,
+                       std::string& error, bool& handled) {
     CodecResult r = CodecResult::Unsupported;
     if (is_png(bytes))
         r = decode_png(bytes, name, out, error);
@@ -99,9 +99,8 @@ bool read_image_file(const std::filesystem::path& path, RgbaImage& out, std::str
 bool write_image_file(const std::filesystem::path& path, const RgbaImage& image,
                       std::string& error) {
     std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) {
-        return static_cast<char>(std::tolower(c));
-    });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (ext == ".png") {
         std::vector<std::uint8_t> encoded;
         if (!encode_png(image.width, image.height, image.pixels, encoded, error)) {

@@ -29,8 +29,7 @@ enum class Step { Done, Failed, Unsupported, Refused };
 
 // Header only when `out` is null; else the whole image into `out` (after the size check).
 Step run_decode(std::span<const std::uint8_t> bytes, std::string_view name, JpegError& err,
-                std::uint32_t& width, std::uint32_t& height, RgbaImage* out,
-                std::string& refused) {
+                std::uint32_t& width, std::uint32_t& height, RgbaImage* out, std::string& refused) {
     jpeg_decompress_struct info{};
     info.err = jpeg_std_error(&err.mgr);
     err.mgr.error_exit = on_error;
@@ -76,10 +75,15 @@ Step run_decode(std::span<const std::uint8_t> bytes, std::string_view name, Jpeg
 CodecResult finish(Step step, std::string_view name, const JpegError& err,
                    const std::string& refused, std::string& error) {
     switch (step) {
-    case Step::Done: return CodecResult::Ok;
-    case Step::Unsupported: return CodecResult::Unsupported;
-    case Step::Refused: error = refused; return CodecResult::Failed;
-    case Step::Failed: break;
+    case Step::Done:
+        return CodecResult::Ok;
+    case Step::Unsupported:
+        return CodecResult::Unsupported;
+    case Step::Refused:
+        error = refused;
+        return CodecResult::Failed;
+    case Step::Failed:
+        break;
     }
     error = std::string(name) + ": cannot decode: JPEG: " + err.message;
     return CodecResult::Failed;
@@ -91,15 +95,14 @@ bool is_jpeg(std::span<const std::uint8_t> bytes) {
     return bytes.size() >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8 && bytes[2] == 0xFF;
 }
 
-CodecResult decode_jpeg(std::span<const std::uint8_t> bytes, std::string_view name,
-                        RgbaImage& out, std::string& error) {
+CodecResult decode_jpeg(std::span<const std::uint8_t> bytes, std::string_view name, RgbaImage& out,
+                        std::string& error) {
     JpegError err;
     std::string refused;
     std::uint32_t width = 0, height = 0;
     RgbaImage image;
-    const CodecResult r =
-        finish(run_decode(bytes, name, err, width, height, &image, refused), name, err, refused,
-               error);
+    const CodecResult r = finish(run_decode(bytes, name, err, width, height, &image, refused), name,
+                                 err, refused, error);
     if (r == CodecResult::Ok) out = std::move(image);
     return r;
 }
@@ -108,8 +111,8 @@ CodecResult probe_jpeg(std::span<const std::uint8_t> bytes, std::string_view nam
                        std::uint32_t& width, std::uint32_t& height, std::string& error) {
     JpegError err;
     std::string refused;
-    return finish(run_decode(bytes, name, err, width, height, nullptr, refused), name, err,
-                  refused, error);
+    return finish(run_decode(bytes, name, err, width, height, nullptr, refused), name, err, refused,
+                  error);
 }
 
 } // namespace sherpa::tex

@@ -46,8 +46,7 @@ void flush_nothing(png_structp) {}
 const char* run_decode(PngContext& ctx, std::string_view name, std::uint32_t& width,
                        std::uint32_t& height, RgbaImage* out, std::vector<png_bytep>& rows,
                        std::string& refused) {
-    png_structp png =
-        png_create_read_struct(PNG_LIBPNG_VER_STRING, &ctx, on_error, on_warning);
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &ctx, on_error, on_warning);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!info) {
         png_destroy_read_struct(&png, nullptr, nullptr);
@@ -96,8 +95,7 @@ const char* run_decode(PngContext& ctx, std::string_view name, std::uint32_t& wi
 
 const char* run_encode(PngContext& ctx, std::uint32_t width, std::uint32_t height,
                        std::vector<png_bytep>& rows) {
-    png_structp png =
-        png_create_write_struct(PNG_LIBPNG_VER_STRING, &ctx, on_error, on_warning);
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &ctx, on_error, on_warning);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!info) {
         png_destroy_write_struct(&png, nullptr);
@@ -131,8 +129,7 @@ CodecResult decode_png(std::span<const std::uint8_t> bytes, std::string_view nam
     std::uint32_t width = 0, height = 0;
     RgbaImage image;
     if (const char* problem = run_decode(ctx, name, width, height, &image, rows, refused)) {
-        error = !refused.empty() ? refused
-                                 : std::string(name) + ": cannot decode: PNG: " + problem;
+        error = !refused.empty() ? refused : std::string(name) + ": cannot decode: PNG: " + problem;
         return CodecResult::Failed;
     }
     out = std::move(image);

@@ -74,6 +74,8 @@ const PluginApi* plugin(std::string& error) {
     return loaded.api;
 }
 
-bool plugin_loaded() { return g_loaded; }
+bool plugin_loaded() {
+    return g_loaded;
+}
 
 } // namespace sherpa::tex::oiio

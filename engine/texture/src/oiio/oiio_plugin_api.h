@@ -28,8 +28,8 @@ using SizeCheck = bool (*)(std::uint32_t width, std::uint32_t height, std::strin
 struct PluginApi {
     std::uint32_t abi = kPluginAbi;
     // As decode_encoded_image(): unassociated alpha, RGBA8.
-    bool (*decode)(std::span<const std::uint8_t> bytes, std::string_view name_hint,
-                   SizeCheck check, RgbaImage& out, std::string& error) = nullptr;
+    bool (*decode)(std::span<const std::uint8_t> bytes, std::string_view name_hint, SizeCheck check,
+                   RgbaImage& out, std::string& error) = nullptr;
     // As probe_encoded_image(); width/height are always written.
     bool (*probe)(std::span<const std::uint8_t> bytes, std::string_view name_hint,
                   std::string& error, std::uint32_t& width, std::uint32_t& height) = nullptr;

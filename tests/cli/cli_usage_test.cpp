@@ -9,6 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -201,4 +204,62 @@ TEST(CliUsage, RtOnASkinnedModelShowsWhatIsBuilt) {
     EXPECT_GE(j["posed"]["blas"].get<int>(), 1);
     EXPECT_EQ(j["tlas"]["instances"], j["posed"]["blas"]) << j.dump(1);
     EXPECT_GE(j["posed"]["updates"].get<int>(), 1);
+}
+
+namespace {
+
+std::string base64(const std::vector<unsigned char>& in) {
+    static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (std::size_t i = 0; i < in.size(); i += 3) {
+        const unsigned v = (in[i] << 16) | ((i + 1 < in.size() ? in[i + 1] : 0) << 8) |
+                           (i + 2 < in.size() ? in[i + 2] : 0);
+        out += k[(v >> 18) & 63];
+        out += k[(v >> 12) & 63];
+        out += i + 1 < in.size() ? k[(v >> 6) & 63] : '=';
+        out += i + 2 < in.size() ? k[v & 63] : '=';
+    }
+    return out;
+}
+
+} // namespace
+
+// Non-unit normals (quantized ones are non-unit by design) make one summary line per
+// file, with the count and the worst length, not a line per primitive.
+TEST(CliUsage, RenormalisedNormalsAreSummarisedOncePerFile) {
+    const float data[18] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0.5f, 0, 0, 2.0f, 0, 0, 0.9f};
+    std::vector<unsigned char> bytes(sizeof data);
+    std::memcpy(bytes.data(), data, sizeof data);
+    const nlohmann::json gltf = {
+        {"asset", {{"version", "2.0"}}},
+        {"buffers",
+         {{{"byteLength", 72}, {"uri", "data:application/octet-stream;base64," + base64(bytes)}}}},
+        {"bufferViews",
+         {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 36}},
+          {{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 36}}}},
+        {"accessors",
+         {{{"bufferView", 0},
+           {"componentType", 5126},
+           {"count", 3},
+           {"type", "VEC3"},
+           {"min", {0, 0, 0}},
+           {"max", {1, 1, 0}}},
+          {{"bufferView", 1}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}}}},
+        {"meshes",
+         {{{"primitives",
+            {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}}},
+             {{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}}}}}}}},
+        {"nodes", {{{"mesh", 0}}}},
+        {"scenes", {{{"nodes", {0}}}}},
+        {"scene", 0}};
+    const std::filesystem::path file =
+        std::filesystem::temp_directory_path() / "sherpa_non_unit_normals.gltf";
+    std::ofstream(file) << gltf.dump();
+    const CliRun r = run_cli("info '" + file.string() + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    EXPECT_EQ(count(r.out, "renormalised"), 1u) << r.out;
+    EXPECT_NE(r.out.find("6 non-unit normals renormalised in 2 primitive(s); worst length 2 ("),
+              std::string::npos)
+        << r.out;
+    std::filesystem::remove(file);
 }

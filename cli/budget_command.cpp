@@ -15,7 +15,7 @@
 namespace sherpa::cli {
 namespace {
 
-constexpr const char* kUsage = "usage: sherpa-cli budget SCENE [--json] [--viewport-height N]\n";
+constexpr std::string_view kUsage = "budget"; // main.cpp's usage text
 
 nlohmann::json budget_json(const lab::BudgetReport& b) {
     nlohmann::json categories = nlohmann::json::array(), oversized = nlohmann::json::array(),
@@ -64,21 +64,15 @@ int run_budget(Args args) {
     for (std::size_t i = 0; i < args.size(); ++i) {
         if (args[i] == "--json")
             json = true;
-        else if (args[i] == "--viewport-height" && i + 1 < args.size())
-            options.viewport_height =
-                std::uint32_t(std::max(1, std::atoi(std::string(args[++i]).c_str())));
-        else if (!args[i].empty() && args[i][0] != '-' && spec.empty())
+        else if (args[i] == "--viewport-height" && i + 1 < args.size()) {
+            if (!parse_number(args[++i], options.viewport_height) || options.viewport_height == 0)
+                return usage_error("--viewport-height needs a positive integer", kUsage);
+        } else if (!args[i].empty() && args[i][0] != '-' && spec.empty())
             spec = std::string(args[i]);
-        else {
-            std::fprintf(stderr, "error: unexpected argument '%.*s'\n%s", int(args[i].size()),
-                         args[i].data(), kUsage);
-            return kExitUsage;
-        }
+        else
+            return usage_error("unexpected argument '" + std::string(args[i]) + "'", kUsage);
     }
-    if (spec.empty()) {
-        std::fprintf(stderr, "error: no SCENE given\n%s", kUsage);
-        return kExitUsage;
-    }
+    if (spec.empty()) return usage_error("no SCENE given", kUsage);
     LoadResult loaded = load_scene(spec);
     if (!loaded) {
         std::fprintf(stderr, "error: %s\n", loaded.error.c_str());

@@ -16,11 +16,9 @@ inline constexpr int kExitUsage = 2;
 
 using Args = std::span<const std::string_view>;
 
-// "error: MESSAGE" and the subcommand's usage on stderr; returns kExitUsage.
-inline int usage_error(std::string_view message, const char* usage) {
-    std::fprintf(stderr, "error: %.*s\n%s", int(message.size()), message.data(), usage);
-    return kExitUsage;
-}
+// "error: MESSAGE" and a pointer to `sherpa-cli COMMAND --help` on stderr; returns
+// kExitUsage. (`command` that names no command is printed as given: a usage text.)
+int usage_error(std::string_view message, std::string_view command);
 
 // A number, all of `v` (std::from_chars: no sign for unsigned, "nan"/"inf" for floats).
 template <typename T> bool parse_number(std::string_view v, T& out) {

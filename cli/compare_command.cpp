@@ -16,7 +16,7 @@
 namespace sherpa::cli {
 namespace {
 
-constexpr const char* kUsage = "usage: sherpa-cli compare A B [--json] [--image OUT.png]\n";
+constexpr std::string_view kUsage = "compare"; // main.cpp's usage text
 
 nlohmann::json optional(const std::optional<double>& v) {
     return v && std::isfinite(*v) ? nlohmann::json(*v) : nlohmann::json(nullptr);
@@ -107,16 +107,10 @@ int run_compare(Args args) {
             image = std::string(args[++i]);
         else if (!args[i].empty() && args[i][0] != '-')
             files.emplace_back(args[i]);
-        else {
-            std::fprintf(stderr, "error: unexpected argument '%.*s'\n%s", int(args[i].size()),
-                         args[i].data(), kUsage);
-            return kExitUsage;
-        }
+        else
+            return usage_error("unexpected argument '" + std::string(args[i]) + "'", kUsage);
     }
-    if (files.size() != 2) {
-        std::fprintf(stderr, "error: give two files\n%s", kUsage);
-        return kExitUsage;
-    }
+    if (files.size() != 2) return usage_error("give two files", kUsage);
     LoadResult a = load_scene(files[0], lab::lab_load_options());
     LoadResult b = a ? load_scene(files[1], lab::lab_load_options()) : LoadResult{};
     if (!a || !b) {

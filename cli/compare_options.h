@@ -18,9 +18,9 @@ namespace sherpa::cli {
 
 inline constexpr const char* kCompareOptionsSynopsis =
     "[--compare split|difference [--compare-with FILE] [--compare-renderer raster|rt]\n"
-    "          [--compare-view NAME] [--compare-texture-lod N|auto] [--compare-no-bc]\n"
-    "          [--compare-quality N] [--divider F] [--threshold T] [--heat-max D|auto] "
-    "[--json]]";
+    "     [--compare-view NAME] [--compare-texture-lod N|auto] [--compare-no-bc] "
+    "[--compare-quality N]\n"
+    "     [--divider F] [--threshold T] [--heat-max D|auto] [--json]]";
 inline constexpr const char* kCompareOptionsHelp =
     "  --compare split|difference\n"
     "                     draw side A (this command's frame) against side B (the same\n"

@@ -1,12 +1,14 @@
-// sherpa-cli cull SCENE --camera SPEC [--method sphere|pvertex|exact|gpu] [--json]
+// sherpa-cli cull SCENE [--camera CAMERA] [--method sphere|pvertex|exact|gpu] [--json]
 //   [--animation N --time T | --pose bind]
 // The camera pass plus one pass per shadow cascade of the scene's first
 // directional light (or a default sun): the cascades the renderer draws for this
 // camera (sherpa/scene/shadow_cascades.h), casters only.
+#include "cli_camera.h"
 #include "cli_common.h"
 #include "pose_options.h"
 #include "scene_json.h"
 
+#include <sherpa/render/camera.h>
 #include <sherpa/render/cull_check.h>
 #include <sherpa/scene/culling_passes.h>
 #include <sherpa/scene/scene_loader.h>
@@ -14,17 +16,17 @@
 
 #include <cstdio>
 #include <iostream>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
 namespace sherpa::cli {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: sherpa-cli cull SCENE --camera "
-    "eye=x,y,z:target=x,y,z[:up=..][:fov=DEG][:aspect=A][:near=N][:far=F]\n"
-    "                          [--method sphere|pvertex|exact|gpu] [--json]\n"
-    "                          [--animation N --time T | --pose bind]\n";
+constexpr std::string_view kUsage = "cull"; // main.cpp's usage text
+// Without a viewport, `auto` and glTF cameras without an aspect use the camera
+// string's default aspect.
+constexpr float kCullAspect = 16.0f / 9.0f;
 
 nlohmann::json pass_json(const Scene& s, const PassResult& p) {
     nlohmann::json visible = nlohmann::json::array();
@@ -47,16 +49,13 @@ nlohmann::json pass_json(const Scene& s, const PassResult& p) {
 } // namespace
 
 int run_cull(Args args) {
-    std::string_view spec, camera_text, method_text = "pvertex";
+    std::string_view spec, camera_text = "auto", method_text = "pvertex";
     bool as_json = false;
     PoseOptions pose_options;
     for (std::size_t i = 0; i < args.size(); ++i) {
         std::string pose_error;
         const OptionMatch pm = parse_pose_option(args, i, pose_options, pose_error);
-        if (pm == OptionMatch::Bad) {
-            std::fprintf(stderr, "error: %s\n%s", pose_error.c_str(), kUsage);
-            return kExitUsage;
-        }
+        if (pm == OptionMatch::Bad) return usage_error(pose_error, kUsage);
         if (pm == OptionMatch::Taken) continue;
         if (args[i] == "--json")
             as_json = true;
@@ -66,31 +65,21 @@ int run_cull(Args args) {
             method_text = args[++i];
         else if (!args[i].empty() && args[i][0] != '-' && spec.empty())
             spec = args[i];
-        else {
-            std::fprintf(stderr, "error: unexpected argument '%.*s'\n%s",
-                         static_cast<int>(args[i].size()), args[i].data(), kUsage);
-            return kExitUsage;
-        }
+        else
+            return usage_error("unexpected argument '" + std::string(args[i]) + "'", kUsage);
     }
-    CameraSpec camera;
+    if (spec.empty()) return usage_error("no SCENE given", kUsage);
+    // The renderer's parser: auto, gltf:N and explicit cameras, as `render` takes them.
+    gpu::CameraSpec camera_spec;
     std::string error;
-    if (spec.empty() || camera_text.empty()) {
-        std::fprintf(stderr, "%s", kUsage);
-        return kExitUsage;
-    }
-    if (!parse_camera_spec(camera_text, camera, error)) {
-        std::fprintf(stderr, "error: %s\n%s", error.c_str(), kUsage);
-        return kExitUsage;
-    }
+    if (!gpu::parse_camera_spec(camera_text, camera_spec, error)) return usage_error(error, kUsage);
     CullOptions options;
     options.count_false_positives = true;
     const bool on_gpu = method_text == "gpu";
     if (on_gpu)
         options.method = CullMethod::PVertex; // the GPU runs the p-vertex test
     else if (!parse_cull_method(method_text, options.method)) {
-        std::fprintf(stderr, "error: unknown method '%.*s'\n%s",
-                     static_cast<int>(method_text.size()), method_text.data(), kUsage);
-        return kExitUsage;
+        return usage_error("unknown method '" + std::string(method_text) + "'", kUsage);
     }
     const LoadResult r = load_scene(spec);
     if (!r) {
@@ -98,25 +87,37 @@ int run_cull(Args args) {
         return kExitLoadError;
     }
     // Posed: every instance culled with its conservative bounds in that pose.
-    if (const auto pose = resolve_pose(*r.scene, pose_options, error); pose)
+    const std::shared_ptr<const Pose> pose = resolve_pose(*r.scene, pose_options, error);
+    if (pose)
         apply_pose_bounds(*r.scene, *pose);
-    else if (!error.empty()) {
-        std::fprintf(stderr, "error: %s\n%s", error.c_str(), kUsage);
-        return kExitUsage;
-    }
+    else if (!error.empty())
+        return usage_error(error, kUsage);
     const Scene& s = *r.scene;
+    if (const std::string w = default_pose_warning(s, pose_options); !w.empty())
+        std::fprintf(stderr, "warning: %s\n", w.c_str());
+    if (const std::string hint = file_camera_hint(s, camera_spec); !hint.empty())
+        std::fprintf(stderr, "note: %s\n", hint.c_str());
+    gpu::CameraView camera;
+    try {
+        camera = gpu::resolve_camera(framed_camera(camera_spec, s, pose.get(), kCullAspect), s,
+                                     kCullAspect);
+    } catch (const std::invalid_argument& e) {
+        std::fprintf(stderr, "error: %.*s: %s\n", int(spec.size()), spec.data(), e.what());
+        return kExitLoadError;
+    }
+    const glm::mat4 view_projection = camera.proj * camera.view;
     const CullInput input = prepare_cull_input(s);
     std::vector<PassResult> passes;
-    passes.push_back(cull_pass(input, frustum_from_view_projection(camera.view_projection()),
-                               camera.eye, options, "camera"));
+    passes.push_back(cull_pass(input, frustum_from_view_projection(view_projection),
+                               camera.position, options, "camera"));
     // The renderer's cascades for this camera (same fit, light, bounds and defaults),
     // each culled against its volume extended toward the light; casters only.
     std::vector<std::pair<std::string, Frustum>> frusta = {
-        {"camera", frustum_from_view_projection(camera.view_projection())}};
-    std::vector<glm::mat4> matrices = {camera.view_projection()};
+        {"camera", frustum_from_view_projection(view_projection)}};
+    std::vector<glm::mat4> matrices = {view_projection};
     if (const auto sun = main_light_direction(s)) {
         const ShadowCascades cascades =
-            fit_shadow_cascades(cascade_camera(camera), drawable_bounds(s), *sun,
+            fit_shadow_cascades(gpu::cascade_camera(camera), drawable_bounds(s), *sun,
                                 kDefaultShadowCascades, kDefaultShadowResolution);
         CullOptions shadow = options;
         shadow.casters_only = true;
@@ -124,8 +125,8 @@ int run_cull(Args args) {
             frusta.emplace_back("cascade" + std::to_string(c),
                                 frustum_from_view_projection(cascades.cull_view_proj[c]));
             matrices.push_back(cascades.cull_view_proj[c]);
-            passes.push_back(
-                cull_pass(input, frusta.back().second, camera.eye, shadow, frusta.back().first));
+            passes.push_back(cull_pass(input, frusta.back().second, camera.position, shadow,
+                                       frusta.back().first));
         }
     }
     if (on_gpu) {

@@ -47,9 +47,7 @@ void print_text(const Scene& s, const std::vector<tex::ImageProblem>& problems) 
     for (const auto& w : s.warnings) std::printf("  warning: %s\n", w.c_str());
 }
 
-constexpr const char* kUsage =
-    "usage: sherpa-cli info SCENE [--json] [--scene N]\n"
-    "                             [--animation N --time T | --pose bind]\n";
+constexpr std::string_view kUsage = "info"; // main.cpp's usage text
 
 } // namespace
 
@@ -68,21 +66,14 @@ int run_info(Args args) {
         else if (args[i] == "--scene" && i + 1 < args.size()) {
             if (!parse_index(args[++i], options.scene_index))
                 return usage_error("--scene needs a non-negative integer", kUsage);
-        } else if (!args[i].empty() && args[i][0] == '-') {
-            std::fprintf(stderr, "error: unknown option '%.*s'\n%s",
-                         static_cast<int>(args[i].size()), args[i].data(), kUsage);
-            return kExitUsage;
-        } else if (spec.empty())
+        } else if (!args[i].empty() && args[i][0] == '-')
+            return usage_error("unknown option '" + std::string(args[i]) + "'", kUsage);
+        else if (spec.empty())
             spec = args[i];
-        else {
-            std::fprintf(stderr, "error: more than one SCENE given\n");
-            return kExitUsage;
-        }
+        else
+            return usage_error("more than one SCENE given", kUsage);
     }
-    if (spec.empty()) {
-        std::fprintf(stderr, "%s", kUsage);
-        return kExitUsage;
-    }
+    if (spec.empty()) return usage_error("no SCENE given", kUsage);
     LoadResult r = load_scene(spec, options);
     if (!r) {
         std::fprintf(stderr, "error: %s\n", r.error.c_str());

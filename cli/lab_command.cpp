@@ -18,13 +18,6 @@
 namespace sherpa::cli {
 namespace {
 
-// After "usage: sherpa-cli lab SCENE --family NAME|...": the names are the engine's
-// (lab::family_names), the one list the editor's dock also reads.
-constexpr const char* kUsageOptions =
-    "           [--json|--csv] [--chart OUT.svg] [--repeat N] [--sample-texels N]\n"
-    "           [--cameras N] [--no-gpu]\n"
-    "  shadows: --cameras N around the scene, --repeat N timed frames (median)\n";
-
 struct Options {
     std::string spec, family, chart;
     bool json = false, csv = false, gpu = true;
@@ -32,11 +25,10 @@ struct Options {
     long long sample_texels = -1, cameras = -1;
 };
 
+// The usage text (main.cpp) lists the engine's families (lab::family_names), the one
+// list the editor's dock also reads.
 int usage_error(const std::string& message) {
-    std::string usage = "usage: sherpa-cli lab SCENE --family ";
-    for (std::string_view name : lab::family_names())
-        usage += (usage.back() == ' ' ? "" : "|") + std::string(name);
-    return cli::usage_error(message, (usage + "\n" + kUsageOptions).c_str());
+    return cli::usage_error(message, "lab");
 }
 
 std::unique_ptr<lab::Family> make(const Options& o) {

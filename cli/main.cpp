@@ -1,72 +1,117 @@
-// sherpa-cli SUBCOMMAND ...: headless access to the engine.
+// sherpa-cli COMMAND ...: headless access to the engine. Every command is one entry
+// of kCommands: its name, its entry point and its one usage text (usage.h).
 #include "cli_common.h"
+#include "usage.h"
 
 #include <sherpa/core/heap_tuning.h>
 
 #include <cstdio>
 #include <vector>
 
+namespace sherpa::cli {
 namespace {
 
-struct Subcommand {
-    std::string_view name;
-    int (*run)(sherpa::cli::Args);
-    std::string_view usage;
+constexpr Command kCommands[] = {
+    {"info", run_info,
+     "sherpa-cli info SCENE [--json] [--scene N] [--animation N --time T | --pose bind]\n"
+     "\n"
+     "Reports on a scene: counts, bounds, vertex streams the materials read, images\n"
+     "that cannot become textures, cameras, motion. --time T adds the pose at T seconds.\n"},
+    {"cull", run_cull,
+     "sherpa-cli cull SCENE [--camera CAMERA] [--method sphere|pvertex|exact|gpu] [--json]\n"
+     "    [--animation N --time T | --pose bind]\n"
+     "\n"
+     "The camera pass and one pass per shadow cascade: visible instances and statistics.\n"
+     "{camera-help}"},
+    {"tangents", run_tangents,
+     "sherpa-cli tangents SCENE --dump FILE.csv [--method NAME] [--regenerate]\n"
+     "sherpa-cli tangents SCENE --compare [--method NAME] [--json]\n"
+     "\n"
+     "Per-corner tangents, or authored against regenerated ones.\n"
+     "methods: mikktspace (default), mikktspace-welded, lengyel\n"},
+    {"textures", run_textures,
+     "sherpa-cli textures SCENE [--json] [--export-source DIR]\n"
+     "    {texture-options}\n"
+     "\n"
+     "The texture pipeline and cache report, per image and role.\n"
+     "{texture-help}"
+     "  --export-source DIR  write every image of the file as decoded (level 0,\n"
+     "                     RGBA8 PNG, unassociated alpha), named after its file\n"},
+    {"render", run_render,
+     "sherpa-cli render SCENE -o OUT.png [--width W --height H] [--view NAME] [--overlay NAME "
+     "...]\n"
+     "    [--camera CAMERA] [--frames N] [--report FILE.json] [--validation] [--no-shadows]\n"
+     "    [--prepass|--no-prepass] [--glyph-length L] [--floor] [--rt on|off]\n"
+     "    [--renderer raster|rt] [--texture-lod N] [--animation N --time T | --pose bind]\n"
+     "    [--hide-node N ...] [--cull none|cpu|gpu] [--cull-method sphere|pvertex|exact]\n"
+     "    [--cull-check] [--freeze-cull CAMERA]\n"
+     "    {texture-options}\n"
+     "    {shadow-options}\n"
+     "    {environment-options}\n"
+     "    {compare-options}\n"
+     "\n"
+     "Renders offscreen (Vulkan) to a PNG; with --compare, side A against side B.\n"
+     "{camera-help}"
+     "  --view NAME        {views}\n"
+     "  --overlay NAME     {overlays}\n"
+     "{texture-help}{compare-help}"},
+    {"rt", run_rt,
+     "sherpa-cli rt SCENE [--json] [--validation] [--scratch-budget BYTES] [--no-compact] [--rt "
+     "on|off]\n"
+     "\n"
+     "Builds the scene's acceleration structures and reports them (BLAS, TLAS, totals).\n"},
+    {"lab", run_lab,
+     "sherpa-cli lab SCENE --family {families} [--json|--csv]\n"
+     "    [--chart OUT.svg] [--repeat N] [--sample-texels N] [--cameras N] [--no-gpu]\n"
+     "\n"
+     "Every method of one family measured on the scene: time against error.\n"
+     "  shadows: --cameras N around the scene, --repeat N timed frames (median)\n"},
+    {"compare", run_compare,
+     "sherpa-cli compare A B [--json] [--image OUT.png]\n"
+     "\n"
+     "Structural diff of two glTF files; --image draws where they differ.\n"},
+    {"budget", run_budget,
+     "sherpa-cli budget SCENE [--json] [--viewport-height N]\n"
+     "\n"
+     "GPU bytes per category against what the scene needs.\n"},
 };
-
-constexpr Subcommand kSubcommands[] = {
-    {"info", sherpa::cli::run_info,
-     "info SCENE [--json] [--scene N] [--animation N --time T | --pose bind]   report on a scene "
-     "(path or builtin:...)"},
-    {"cull", sherpa::cli::run_cull,
-     "cull SCENE --camera eye=x,y,z:target=x,y,z[:...] [--method sphere|pvertex|exact] [--json]"},
-    {"tangents", sherpa::cli::run_tangents,
-     "tangents SCENE --dump FILE.csv [--method NAME] [--regenerate]   per-corner tangents\n"
-     "  tangents SCENE --compare [--method NAME] [--json]   authored vs regenerated"},
-    {"textures", sherpa::cli::run_textures,
-     "textures SCENE [--cache-dir DIR] [--cache-cap-mb N] [--quality N] [--no-cache] [--no-bc]\n"
-     "           [--json]   texture pipeline and cache report"},
-    {"render", sherpa::cli::run_render,
-     "render SCENE -o OUT.png [--width W --height H] [--view NAME] [--overlay NAME ...]\n"
-     "         [--camera auto|gltf:N|eye=x,y,z:target=x,y,z] [--frames N] [--report FILE.json]\n"
-     "         [--cache-dir DIR] [--no-cache] [--quality N] [--no-bc]\n"
-     "         [--compare split|difference [--compare-with FILE] [--compare-renderer raster|rt]\n"
-     "          [--compare-view NAME] [--divider F] [--threshold T] [--json] ...]\n"
-     "                                     render offscreen (Vulkan) to a PNG; with --compare\n"
-     "                                     side A against side B, split or difference"},
-    {"rt", sherpa::cli::run_rt,
-     "rt SCENE [--json] [--validation] [--scratch-budget BYTES] [--no-compact] [--rt on|off]\n"
-     "                                     acceleration structures: BLAS/TLAS statistics"},
-    {"lab", sherpa::cli::run_lab,
-     "lab SCENE --family tangents|textures|culling|mesh-compression\n"
-     "      [--json|--csv] [--chart OUT.svg] [--repeat N] [--sample-texels N] [--cameras N] "
-     "[--no-gpu]   methods: time vs error"},
-    {"compare", sherpa::cli::run_compare,
-     "compare A B [--json] [--image OUT.png]   structural diff of two glTF files"},
-    {"budget", sherpa::cli::run_budget,
-     "budget SCENE [--json] [--viewport-height N]   GPU bytes against what the scene needs"},
-};
-
-int usage(std::FILE* out) {
-    std::fprintf(out, "usage: sherpa-cli SUBCOMMAND ...\n\nsubcommands:\n");
-    for (const auto& s : kSubcommands)
-        std::fprintf(out, "  %.*s\n", static_cast<int>(s.usage.size()), s.usage.data());
-    std::fprintf(out, "\nSCENE is a .gltf/.glb path, builtin:default or builtin:grid?n=N\n");
-    return out == stdout ? sherpa::cli::kExitOk : sherpa::cli::kExitUsage;
-}
 
 } // namespace
 
+std::span<const Command> commands() {
+    return kCommands;
+}
+
+} // namespace sherpa::cli
+
 int main(int argc, char** argv) {
+    using namespace sherpa::cli;
     // A CPU Vulkan device frees and reallocates large blocks every frame: keep them mapped
     // (see heap_tuning.h for the measurements).
     sherpa::keep_freed_memory_mapped();
     std::vector<std::string_view> args(argv + 1, argv + argc);
-    if (args.empty()) return usage(stderr);
-    if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") return usage(stdout);
-    for (const auto& s : kSubcommands)
-        if (s.name == args[0]) return s.run(sherpa::cli::Args(args).subspan(1));
-    std::fprintf(stderr, "error: unknown subcommand '%.*s'\n", static_cast<int>(args[0].size()),
-                 args[0].data());
-    return usage(stderr);
+    if (args.empty()) {
+        std::fprintf(stderr, "error: no command given\nrun 'sherpa-cli --help' for usage\n");
+        return kExitUsage;
+    }
+    if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+        if (args.size() > 1 && !usage_text(args[1]).empty()) {
+            std::fputs(usage_text(args[1]).c_str(), stdout);
+            return kExitOk;
+        }
+        std::fputs(overview_text().c_str(), stdout);
+        return kExitOk;
+    }
+    for (const Command& c : commands()) {
+        if (c.name != args[0]) continue;
+        for (std::size_t i = 1; i < args.size(); ++i)
+            if (args[i] == "--help" || args[i] == "-h") {
+                std::fputs(usage_text(c.name).c_str(), stdout);
+                return kExitOk;
+            }
+        return c.run(Args(args).subspan(1));
+    }
+    std::fprintf(stderr, "error: unknown command '%.*s'\nrun 'sherpa-cli --help' for usage\n",
+                 static_cast<int>(args[0].size()), args[0].data());
+    return kExitUsage;
 }

@@ -70,4 +70,16 @@ std::shared_ptr<const Pose> resolve_pose(const Scene& scene, const PoseOptions& 
     return pose;
 }
 
+std::string default_pose_warning(const Scene& scene, const PoseOptions& options) {
+    if (options.timed || options.bind || scene.animations.empty()) return {};
+    std::string names;
+    for (std::size_t i = 0; i < scene.animations.size() && i < 5; ++i)
+        names += (i ? ", " : "") + (scene.animations[i].name.empty()
+                                        ? "animations[" + std::to_string(i) + "]"
+                                        : "\"" + scene.animations[i].name + "\"");
+    if (scene.animations.size() > 5) names += ", ...";
+    return std::to_string(scene.animations.size()) + " animation(s) (" + names +
+           "): `render` and `cull` draw the default pose unless given `--animation N --time T`";
+}
+
 } // namespace sherpa::cli

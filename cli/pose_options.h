@@ -37,4 +37,9 @@ bool pose_animation(const Scene& scene, const PoseOptions& options, std::int32_t
 std::shared_ptr<const Pose> resolve_pose(const Scene& scene, const PoseOptions& options,
                                          std::string& error);
 
+// The warning `render` and `cull` print when the file has animations and no pose was
+// asked for (they then draw the default pose); empty when a pose was asked for or the
+// file has none. The editor has a timeline and says nothing of the kind.
+std::string default_pose_warning(const Scene& scene, const PoseOptions& options);
+
 } // namespace sherpa::cli

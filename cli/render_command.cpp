@@ -4,6 +4,7 @@
 //   [--glyph-length L] [--floor] [--cache-dir DIR] [--cache-cap-mb N] [--quality N]
 //   [--no-cache] [--no-bc] [--animation N --time T | --pose bind] [--hide-node N ...]
 //   [--compare split|difference ... (compare_options.h)]
+#include "cli_camera.h"
 #include "cli_common.h"
 #include "compare_options.h"
 #include "environment_options.h"
@@ -30,31 +31,8 @@
 namespace sherpa::cli {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: sherpa-cli render SCENE -o OUT.png [--width W --height H] [--view NAME]\n"
-    "         [--overlay NAME ...] [--camera auto|gltf:N|eye=x,y,z:target=x,y,z[:up=..][:fov=DEG]"
-    "[:aspect=A][:near=N][:far=F]]\n"
-    "         [--frames N] [--report FILE.json] [--validation] [--no-shadows] "
-    "[--prepass|--no-prepass]\n"
-    "         [--glyph-length L] [--floor] [--cull none|cpu|gpu] [--cull-method "
-    "sphere|pvertex|exact]\n"
-    "         [--cull-check] [--freeze-cull eye=x,y,z:target=x,y,z[:...]] [--rt on|off]\n"
-    "         [--renderer raster|rt] [--texture-lod N] [--animation N --time T | --pose bind]\n"
-    "         [--hide-node N (repeatable: node N and its subtree are not drawn)]\n"
-    "         ";
-constexpr const char* kCompareIndent = "\n         ";
-
-std::string joined(const std::vector<std::string_view>& names);
-
 int usage_error(const std::string& message) {
-    // The names come from the engine's view/overlay tables (sherpa/gpu/debug_views.h).
-    std::fprintf(stderr,
-                 "error: %s\n%s%s%s%s%s%s\n%s%s  --view NAME        %s\n  --overlay NAME     %s\n",
-                 message.c_str(), kUsage, kShadowOptionsSynopsis, kEnvironmentOptionsSynopsis,
-                 kTextureOptionsSynopsis, kCompareIndent, kCompareOptionsSynopsis,
-                 kTextureOptionsHelp, kCompareOptionsHelp, joined(gpu::debug_view_names()).c_str(),
-                 joined(gpu::overlay_names()).c_str());
-    return kExitUsage;
+    return cli::usage_error(message, "render"); // main.cpp's usage text
 }
 
 double ms_since(std::chrono::steady_clock::time_point start) {
@@ -244,6 +222,11 @@ int run_render(Args args) {
         if (!error.empty()) return usage_error(error);
         run.settings.pose = settings.pose;
     }
+    // Said before auto becomes the camera that frames what is drawn (posed, if asked).
+    const std::string camera_hint = file_camera_hint(*loaded.scene, settings.camera);
+    settings.camera = framed_camera(settings.camera, *loaded.scene, settings.pose.get(),
+                                    float(settings.width) / float(settings.height));
+    run.settings.camera = settings.camera;
     if (!hidden_nodes.empty()) {
         auto mask = std::make_shared<std::vector<bool>>(loaded.scene->nodes.size(), false);
         for (const std::uint32_t n : hidden_nodes) {
@@ -315,6 +298,9 @@ int run_render(Args args) {
         // texture pipeline's: nothing the file holds is dropped without a word.
         for (const auto& w : loaded.scene->warnings)
             std::fprintf(stderr, "warning: %s\n", w.c_str());
+        if (const std::string w = default_pose_warning(*loaded.scene, pose_options); !w.empty())
+            std::fprintf(stderr, "warning: %s\n", w.c_str());
+        if (!camera_hint.empty()) std::fprintf(stderr, "note: %s\n", camera_hint.c_str());
         for (const auto& w : renderer.scene()->materials().textures().warnings())
             std::fprintf(stderr, "warning: %s\n", w.c_str());
         if (!report_path.empty()) {

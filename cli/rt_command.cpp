@@ -3,9 +3,11 @@
 // The scene's ray-tracing data on the device: per BLAS (one per glTF mesh) its
 // geometries, triangles, build time, size before and after compaction and scratch;
 // the TLAS instances (deduplicated, mirrored, hidden, non-finite), the posed copies
-// and BLAS of instances that skin or morph (their bytes; the TLAS counts them once
-// posed, which the renderer does on load: here they are not yet) and memory totals.
-// Textures are not prepared: acceleration structures do not read them.
+// and BLAS of instances that skin or morph, and memory totals. A scene that skins or
+// morphs is loaded into a ray-tracing Renderer, which poses it (the file's default
+// pose) on load as every renderer does: the figures are those of what is drawn, posed
+// instances in the TLAS included. Textures are not prepared: acceleration structures
+// do not read them.
 #include "cli_common.h"
 #include "gpu_cli.h"
 
@@ -13,6 +15,7 @@
 #include <sherpa/gpu/context.h>
 #include <sherpa/render/acceleration_structures.h>
 #include <sherpa/render/gpu_scene.h>
+#include <sherpa/render/renderer.h>
 #include <sherpa/scene/scene_loader.h>
 #include <sherpa/texture/texture_pipeline.h>
 
@@ -24,23 +27,33 @@
 namespace sherpa::cli {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: sherpa-cli rt SCENE [--json] [--validation] [--scratch-budget BYTES] [--no-compact]\n"
-    "                           [--rt on|off]\n";
-
 int usage_error(const std::string& message) {
-    return cli::usage_error(message, kUsage);
+    return cli::usage_error(message, "rt"); // main.cpp's usage text
 }
 
 double ratio(std::uint64_t after, std::uint64_t before) {
     return before ? double(after) / double(before) : 1.0;
 }
 
-// Triangles per second of GPU build time, in millions (0 when unmeasured).
+// Triangles per second of GPU build time, in millions, over the static BLAS built and
+// timed (0 when none was).
 double mtris_per_s(const gpu::AccelerationStats& s) {
     double ms = 0.0;
-    for (const gpu::BlasStats& b : s.blas) ms += b.build_ms > 0.0 ? b.build_ms : 0.0;
-    return ms > 0.0 ? double(s.blas_triangles()) / (ms * 1e3) : 0.0;
+    std::uint64_t triangles = 0;
+    for (const gpu::BlasStats& b : s.blas)
+        if (b.built && b.build_ms > 0.0) ms += b.build_ms, triangles += b.triangles;
+    return ms > 0.0 ? double(triangles) / (ms * 1e3) : 0.0;
+}
+
+// The same for the posed BLAS's last build or refit (0 when untimed).
+double posed_mtris_per_s(const gpu::PosedStats& p) {
+    return p.blas_ms > 0.0 ? double(p.triangles) / (p.blas_ms * 1e3) : 0.0;
+}
+
+std::uint64_t built_blas(const gpu::AccelerationStats& s) {
+    std::uint64_t n = 0;
+    for (const gpu::BlasStats& b : s.blas) n += b.built ? 1 : 0;
+    return n;
 }
 
 nlohmann::json to_json(const gpu::Context& context, const gpu::AccelerationStats& s) {
@@ -85,9 +98,15 @@ nlohmann::json to_json(const gpu::Context& context, const gpu::AccelerationStats
               {"stream_bytes", p.stream_bytes},
               {"blas_bytes", p.blas_bytes},
               {"scratch_bytes", p.scratch_bytes},
-              {"update", p.refit ? "refit" : "rebuild"}}},
+              {"update", p.refit ? "refit" : "rebuild"},
+              {"updates", p.updates},
+              {"pose_ms", p.pose_ms},
+              {"blas_ms", p.blas_ms},
+              {"mtriangles_per_s", posed_mtris_per_s(p)}}},
             {"totals",
              {{"blas", s.blas.size()},
+              {"blas_built", built_blas(s)},
+              {"posed_blas", p.blas},
               {"triangles", s.blas_triangles()},
               {"blas_build_bytes", s.blas_build_bytes()},
               {"blas_compacted_bytes", s.blas_compacted_bytes()},
@@ -106,44 +125,68 @@ nlohmann::json to_json(const gpu::Context& context, const gpu::AccelerationStats
 void print_text(const gpu::Context& context, const gpu::AccelerationStats& s) {
     std::printf("device: %s (ray query %s)\n", context.info().name.c_str(),
                 context.info().ray_query_enabled ? "enabled" : "absent");
-    std::printf("%-5s %-24s %6s %6s %10s %9s %12s %12s %6s %12s %5s\n", "mesh", "name", "geoms",
-                "opaque", "triangles", "build ms", "built B", "compacted B", "ratio", "scratch B",
+    std::printf("%-5s %-24s %6s %8s %10s %9s %12s %12s %6s %12s %5s\n", "mesh", "name", "geoms",
+                "no-AH", "triangles", "build ms", "built B", "compacted B", "ratio", "scratch B",
                 "batch");
-    for (const gpu::BlasStats& b : s.blas)
-        std::printf("%-5u %-24.24s %6u %6u %10llu %9.3f %12llu %12llu %6.3f %12llu %5u\n", b.mesh,
-                    b.name.c_str(), b.geometries, b.opaque_geometries,
-                    (unsigned long long)b.triangles, b.build_ms, (unsigned long long)b.build_bytes,
+    for (const gpu::BlasStats& b : s.blas) {
+        std::printf("%-5u %-24.24s %6u %8u %10llu ", b.mesh, b.name.c_str(), b.geometries,
+                    b.opaque_geometries, (unsigned long long)b.triangles);
+        if (!b.built) {
+            std::printf("not built: every instance skins or morphs (posed BLAS below)\n");
+            continue;
+        }
+        if (b.build_ms >= 0.0)
+            std::printf("%9.3f ", b.build_ms);
+        else
+            std::printf("%9s ", "-");
+        std::printf("%12llu %12llu %6.3f %12llu %5u\n", (unsigned long long)b.build_bytes,
                     (unsigned long long)b.compacted_bytes, ratio(b.compacted_bytes, b.build_bytes),
                     (unsigned long long)b.scratch_bytes, b.batch);
-    const gpu::TlasStats& t = s.tlas;
-    std::printf("TLAS: %llu instances of %llu (node, mesh) pairs: %llu deduplicated, %llu "
-                "mirrored, %llu hidden, %llu non-finite; %llu B, scratch %llu B, instances %llu "
-                "B, build %.3f ms\n",
-                (unsigned long long)t.instances, (unsigned long long)t.node_mesh_pairs,
-                (unsigned long long)t.deduplicated, (unsigned long long)t.mirrored,
-                (unsigned long long)t.hidden, (unsigned long long)t.non_finite,
-                (unsigned long long)t.bytes, (unsigned long long)t.scratch_bytes,
-                (unsigned long long)t.instance_buffer_bytes, t.build_ms);
+    }
+    std::printf("  no-AH: geometries built with VK_GEOMETRY_OPAQUE_BIT, which skip the any-hit "
+                "shader: opaque AND double-sided materials only (single-sided ones run any-hit "
+                "to cull back faces, masked and blended ones for alpha)\n");
     const gpu::PosedStats& p = s.posed;
-    if (p.blas)
-        std::printf("posed (skinned or morphed instances): %llu BLAS (%llu in world space), %llu "
-                    "geometries, %llu vertices, %llu triangles; streams %llu B, BLAS %llu B, "
-                    "scratch %llu B; %s on pose changes\n",
+    if (p.blas) {
+        std::printf("posed BLAS (skinned or morphed instances, default pose): %llu BLAS (%llu in "
+                    "world space), %llu geometries, %llu vertices, %llu triangles; streams %llu "
+                    "B, BLAS %llu B, scratch %llu B; ",
                     (unsigned long long)p.blas, (unsigned long long)p.world_space,
                     (unsigned long long)p.geometries, (unsigned long long)p.vertices,
                     (unsigned long long)p.triangles, (unsigned long long)p.stream_bytes,
-                    (unsigned long long)p.blas_bytes, (unsigned long long)p.scratch_bytes,
-                    p.refit ? "refit" : "rebuilt");
-    std::printf(
-        "totals: %zu BLAS, %llu triangles, BLAS %llu -> %llu B compacted (%.3f), %llu "
-        "geometry records (%llu B), %llu B in all; %u batches under a %llu B scratch "
-        "budget (scratch buffer %llu B); %.2f M triangles/s; %.1f ms wall\n",
-        s.blas.size(), (unsigned long long)s.blas_triangles(),
-        (unsigned long long)s.blas_build_bytes(), (unsigned long long)s.blas_compacted_bytes(),
-        ratio(s.blas_compacted_bytes(), s.blas_build_bytes()),
-        (unsigned long long)s.geometry_records, (unsigned long long)s.geometry_record_bytes,
-        (unsigned long long)s.total_bytes(), s.batches, (unsigned long long)s.scratch_budget,
-        (unsigned long long)s.scratch_buffer_bytes, mtris_per_s(s), s.build_wall_ms);
+                    (unsigned long long)p.blas_bytes, (unsigned long long)p.scratch_bytes);
+        // The GPU time of the BLAS builds; posing's time (pose_ms in --json) includes
+        // the first pose's set-up on load.
+        if (p.blas_ms >= 0.0)
+            std::printf("BLAS build %.3f ms (%.2f M triangles/s); ", p.blas_ms,
+                        posed_mtris_per_s(p));
+        std::printf("%s on pose changes\n", p.refit ? "refit" : "rebuilt");
+    }
+    const gpu::TlasStats& t = s.tlas;
+    std::printf("TLAS: %llu instances of %llu (node, mesh) pairs%s: %llu deduplicated, %llu "
+                "mirrored, %llu hidden, %llu non-finite; %llu B, scratch %llu B, instances %llu "
+                "B, build %.3f ms\n",
+                (unsigned long long)t.instances, (unsigned long long)t.node_mesh_pairs,
+                p.blas ? " (posed instances included)" : "", (unsigned long long)t.deduplicated,
+                (unsigned long long)t.mirrored, (unsigned long long)t.hidden,
+                (unsigned long long)t.non_finite, (unsigned long long)t.bytes,
+                (unsigned long long)t.scratch_bytes, (unsigned long long)t.instance_buffer_bytes,
+                t.build_ms);
+    std::printf("totals: %llu static BLAS built of %zu meshes, %llu posed BLAS, %llu triangles; "
+                "static BLAS %llu -> %llu B compacted (%.3f), %llu geometry records (%llu B), "
+                "%llu B in all; ",
+                (unsigned long long)built_blas(s), s.blas.size(), (unsigned long long)p.blas,
+                (unsigned long long)(s.blas_triangles()), (unsigned long long)s.blas_build_bytes(),
+                (unsigned long long)s.blas_compacted_bytes(),
+                ratio(s.blas_compacted_bytes(), s.blas_build_bytes()),
+                (unsigned long long)s.geometry_records, (unsigned long long)s.geometry_record_bytes,
+                (unsigned long long)s.total_bytes());
+    if (built_blas(s))
+        std::printf("static builds: %u batch(es) under a %llu B scratch budget (scratch buffer "
+                    "%llu B), %.2f M triangles/s; ",
+                    s.batches, (unsigned long long)s.scratch_budget,
+                    (unsigned long long)s.scratch_buffer_bytes, mtris_per_s(s));
+    std::printf("%.1f ms wall\n", s.build_wall_ms);
 }
 
 } // namespace
@@ -195,22 +238,37 @@ int run_rt(Args args) {
                          rt ? "not supported by the device" : "off (--rt off)");
             return kExitLoadError;
         }
-        gpu::ResourceManager resources(context);
-        gpu::BindlessTable table(resources);
-        {
-            // No textures: the structures read positions and indices only.
-            gpu::GpuScene scene(resources, table, *loaded.scene,
-                                std::make_shared<const tex::PreparedTextureSet>(),
-                                gpu::StreamPolicy::UsedByMaterials, gpu::MissingTextures::Neutral);
-            gpu::SceneAccelerationStructures structures(resources, *loaded.scene, scene, settings);
-            for (const auto& w : structures.stats().warnings)
-                std::fprintf(stderr, "warning: %s\n", w.c_str());
+        const auto report = [&](const gpu::AccelerationStats& stats) {
+            for (const auto& w : stats.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
             if (as_json)
-                std::cout << to_json(context, structures.stats()).dump(1) << "\n";
+                std::cout << to_json(context, stats).dump(1) << "\n";
             else
-                print_text(context, structures.stats());
+                print_text(context, stats);
+        };
+        // No textures: the structures read positions and indices only.
+        const auto no_textures = std::make_shared<const tex::PreparedTextureSet>();
+        if (!loaded.scene->motions.empty()) {
+            // Posed instances join the TLAS once posed: the Renderer does that on load.
+            gpu::RendererOptions renderer_options;
+            renderer_options.ray_tracing = true;
+            renderer_options.acceleration = settings;
+            renderer_options.textures.missing = gpu::MissingTextures::Neutral;
+            gpu::Renderer renderer(context, renderer_options);
+            renderer.load(*loaded.scene, no_textures);
+            report(*renderer.acceleration_stats());
+        } else {
+            gpu::ResourceManager resources(context);
+            gpu::BindlessTable table(resources);
+            {
+                gpu::GpuScene scene(resources, table, *loaded.scene, no_textures,
+                                    gpu::StreamPolicy::UsedByMaterials,
+                                    gpu::MissingTextures::Neutral);
+                gpu::SceneAccelerationStructures structures(resources, *loaded.scene, scene,
+                                                            settings);
+                report(structures.stats());
+            }
+            resources.flush();
         }
-        resources.flush();
         if (validation_failed(context, validation)) return kExitLoadError;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "error: %.*s: %s\n", int(spec.size()), spec.data(), e.what());

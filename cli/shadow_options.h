@@ -14,7 +14,7 @@ namespace sherpa::cli {
 
 inline constexpr const char* kShadowOptionsSynopsis =
     "[--cascades 1-3] [--shadow-resolution N] [--pcf-taps 1|4|16] [--shadow-rays N]\n"
-    "         [--sun-angular-radius RAD] [--ao-rays N] [--ao-radius R] ";
+    "    [--sun-angular-radius RAD] [--ao-rays N] [--ao-radius R]";
 
 // If args[i] is a shadow option, consumes it and its value (advancing i) into
 // `settings` (--shadow-resolution into `resolution`, a renderer option); Bad sets

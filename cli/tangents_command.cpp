@@ -20,10 +20,7 @@
 namespace sherpa::cli {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: sherpa-cli tangents SCENE --dump FILE.csv [--method NAME] [--regenerate]\n"
-    "       sherpa-cli tangents SCENE --compare [--method NAME] [--json]\n"
-    "methods: mikktspace (default), mikktspace-welded, lengyel\n";
+constexpr std::string_view kUsage = "tangents"; // main.cpp's usage text
 
 struct Options {
     std::string spec, dump_path;

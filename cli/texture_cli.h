@@ -16,8 +16,8 @@
 namespace sherpa::cli {
 
 inline constexpr const char* kTextureOptionsSynopsis =
-    "[--cache-dir DIR] [--cache-cap-mb N] [--quality N] [--no-cache] [--no-bc]"
-    " [--keep-bc7] [--missing-textures checker|neutral]";
+    "[--cache-dir DIR] [--cache-cap-mb N] [--quality N] [--no-cache] [--no-bc]\n"
+    "    [--keep-bc7] [--missing-textures checker|neutral]";
 inline constexpr const char* kTextureOptionsHelp =
     "  --cache-dir DIR    texture cache (default $XDG_CACHE_HOME/sherpa/textures, else\n"
     "                     ~/.cache/sherpa/textures)\n"

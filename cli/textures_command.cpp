@@ -20,13 +20,7 @@
 namespace sherpa::cli {
 namespace {
 
-void print_usage() {
-    std::fprintf(stderr,
-                 "usage: sherpa-cli textures SCENE %s [--json] [--export-source DIR]\n%s"
-                 "  --export-source DIR  write every image of the file as decoded (level 0,\n"
-                 "                     RGBA8 PNG, unassociated alpha), named after its file\n",
-                 kTextureOptionsSynopsis, kTextureOptionsHelp);
-}
+constexpr std::string_view kUsage = "textures"; // main.cpp's usage text
 
 // Exit 1 when some image could not be exported (each named on stderr).
 int export_source_images(const Scene& scene, const std::filesystem::path& dir, bool as_json) {
@@ -63,34 +57,21 @@ int run_textures(Args args) {
         const std::string_view a = args[i];
         std::string error;
         const OptionMatch m = parse_texture_option(args, i, texture_options, error);
-        if (m == OptionMatch::Bad) {
-            std::fprintf(stderr, "error: %s\n", error.c_str());
-            print_usage();
-            return kExitUsage;
-        }
+        if (m == OptionMatch::Bad) return usage_error(error, kUsage);
         if (m == OptionMatch::Taken) continue;
         if (a == "--json") {
             as_json = true;
         } else if (a == "--export-source") {
-            if (i + 1 >= args.size()) {
-                std::fprintf(stderr, "error: --export-source needs a directory\n");
-                print_usage();
-                return kExitUsage;
-            }
+            if (i + 1 >= args.size())
+                return usage_error("--export-source needs a directory", kUsage);
             export_dir = std::filesystem::path(args[++i]);
         } else if (!a.empty() && a[0] != '-' && spec.empty()) {
             spec = a;
         } else {
-            std::fprintf(stderr, "error: unexpected argument '%.*s'\n", static_cast<int>(a.size()),
-                         a.data());
-            print_usage();
-            return kExitUsage;
+            return usage_error("unexpected argument '" + std::string(a) + "'", kUsage);
         }
     }
-    if (spec.empty()) {
-        print_usage();
-        return kExitUsage;
-    }
+    if (spec.empty()) return usage_error("no SCENE given", kUsage);
     const tex::PipelineOptions options = texture_options.pipeline_options();
     const LoadResult r = load_scene(spec);
     if (!r) {

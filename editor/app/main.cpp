@@ -3,6 +3,7 @@
 #include <QElapsedTimer>
 #include <QVulkanInstance>
 #include <cstdio>
+#include <cstring>
 
 #include "command_line.h"
 #include "gpu_viewport.h"
@@ -10,15 +11,42 @@
 
 #include <sherpa/core/heap_tuning.h>
 
+namespace {
+
+void name_application() {
+    QCoreApplication::setOrganizationName(QStringLiteral("Sherpa"));
+    QCoreApplication::setApplicationName(QStringLiteral("Sherpa"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(SHERPA_VERSION));
+}
+
+// --help and --version print and exit: they need no display, so they are answered
+// before QApplication (which aborts without one) exists.
+bool asks_for_help_or_version(int argc, char** argv) {
+    for (int i = 1; i < argc; ++i)
+        for (const char* flag : {"--help", "-h", "-?", "--help-all", "--version", "-v"})
+            if (std::strcmp(argv[i], flag) == 0) return true;
+    return false;
+}
+
+} // namespace
+
 int main(int argc, char** argv) {
     // A CPU Vulkan device frees and reallocates large blocks every frame: keep them mapped.
     sherpa::keep_freed_memory_mapped();
+    if (asks_for_help_or_version(argc, argv)) {
+        QCoreApplication core(argc, argv);
+        name_application();
+        sherpa::editor::CommandLine cl;
+        QString error;
+        // Prints the help or the version and exits 0.
+        sherpa::editor::parse_command_line(QCoreApplication::arguments(), cl, error);
+        std::fprintf(stderr, "sherpa: %s\n", qPrintable(error));
+        return 2;
+    }
     QElapsedTimer launch;
     launch.start();
     QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("Sherpa"));
-    QApplication::setApplicationName(QStringLiteral("Sherpa"));
-    QApplication::setApplicationVersion(QStringLiteral(SHERPA_VERSION));
+    name_application();
     QApplication::setDesktopFileName(QStringLiteral("sherpa"));
 
     sherpa::editor::CommandLine cl;

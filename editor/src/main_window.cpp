@@ -39,6 +39,8 @@
 #include "view_fitting.h"
 #include "viewport_window.h"
 
+#include <sherpa/scene/framing.h>
+
 namespace sherpa::editor {
 
 namespace {
@@ -252,7 +254,7 @@ void MainWindow::connectActions() {
     connect(viewport_, &ViewportWindow::cameraChanged, this, &MainWindow::onCameraChanged);
     connect(viewport_, &ViewportWindow::clicked, this, [this](QPointF ndc) { pickAt(ndc); });
     connect(viewport_, &ViewportWindow::frameAllRequested, this, [this] {
-        if (context_.scene()) viewport_->camera().frameAuto(context_.scene()->bounds);
+        if (context_.scene()) viewport_->camera().frameAuto(framing_bounds(*context_.scene()));
         onCameraChanged();
     });
     connect(viewport_, &ViewportWindow::frameSelectionRequested, this, &MainWindow::frameSelection);

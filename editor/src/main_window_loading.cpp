@@ -11,6 +11,7 @@
 #include <QStatusBar>
 #include <QTimer>
 
+#include <sherpa/scene/framing.h>
 #include <sherpa/texture/quality_levels.h>
 
 #include "culling_dock.h"
@@ -103,9 +104,10 @@ void MainWindow::onLoaded(SharedSession session) {
                      .arg(s.timings.engine_ms, 0, 'f', 1)
                      .arg(s.timings.thumbnails_ms, 0, 'f', 1)
                      .arg(s.timings.textures_ms, 0, 'f', 1));
-    // The same file reloaded after a change keeps the view; any other is framed.
+    // The same file reloaded after a change keeps the view; any other is framed (the
+    // ground plane left out).
     if (!std::exchange(keep_camera_, false)) {
-        viewport_->camera().frameAuto(s.scene->bounds);
+        viewport_->camera().frameAuto(framing_bounds(*s.scene));
         viewport_->setAutoFrame(true);
     }
     onCameraChanged();

@@ -98,14 +98,20 @@ TEST(DebugViewTable, NamesAndLabelsAreUniqueAndComplete) {
     }
 }
 
-// The CLI's usage text lists every view and overlay of the table, and takes each.
+// The CLI's usage text (render --help) lists every view and overlay of the table, and
+// an unknown view's error names every view.
 TEST(DebugViewTable, CliListsEveryName) {
     const CliRun r = run_cli("render builtin:default -o /dev/null --view nonsense");
     EXPECT_NE(r.exit_code, 0);
-    for (const gpu::DebugViewInfo& v : gpu::kDebugViews)
+    const CliRun help = run_cli("render --help");
+    EXPECT_EQ(help.exit_code, 0);
+    for (const gpu::DebugViewInfo& v : gpu::kDebugViews) {
         EXPECT_NE(r.out.find(std::string(v.name)), std::string::npos) << v.name << "\n" << r.out;
+        EXPECT_NE(help.out.find(std::string(v.name)), std::string::npos) << v.name;
+    }
     for (const gpu::OverlayEntry& o : gpu::kOverlays)
-        EXPECT_NE(r.out.find(std::string(o.name)), std::string::npos) << o.name << "\n" << r.out;
+        EXPECT_NE(help.out.find(std::string(o.name)), std::string::npos) << o.name << "\n"
+                                                                         << help.out;
 }
 
 class DebugViewRenderTest : public GpuTest {};

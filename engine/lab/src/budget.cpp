@@ -103,6 +103,12 @@ ImageMeasure measure_image(const Scene& scene, std::int32_t image,
     ImageMeasure out;
     tex::RgbaImage decoded;
     std::string error;
+    if (image_is_missing(scene.images[std::size_t(image)])) {
+        notes.push_back("image " + std::to_string(image) +
+                        " not measured: missing: " + image_location(scene, image) +
+                        " (the file does not exist or cannot be read)");
+        return out;
+    }
     if (!tex::decode_image_source(scene.images[std::size_t(image)], decoded, error)) {
         notes.push_back("image " + std::to_string(image) + " not measured: " + error);
         return out;

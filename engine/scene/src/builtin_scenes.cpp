@@ -179,7 +179,9 @@ void build_default(SceneBuilder& b) {
     const std::uint32_t root = b.add_node("builtin:default", -1, glm::vec3(0.0f));
     b.s.scenes[0].roots.push_back(root);
     const auto r = static_cast<std::int32_t>(root);
-    b.s.nodes[b.add_node("ground", r, glm::vec3(0.0f))].mesh = ground;
+    const std::uint32_t ground_node = b.add_node("ground", r, glm::vec3(0.0f));
+    b.s.nodes[ground_node].mesh = ground;
+    b.s.backdrop_nodes.push_back(ground_node); // 40 m wide: framing it hides the objects
     b.s.nodes[b.add_node("sphere", r, {-3.0f, 1.0f, 0.0f})].mesh = sphere;
     b.s.nodes[b.add_node("torus", r, {0.0f, 1.0f, 0.0f},
                          glm::angleAxis(glm::radians(60.0f), glm::vec3(1, 0, 0)))]

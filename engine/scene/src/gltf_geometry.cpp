@@ -6,6 +6,7 @@
 #include "motion_internal.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include <tiny_gltf.h>
 
@@ -289,6 +290,7 @@ void import_primitive(ImportContext& ctx, std::uint32_t mesh_index, std::uint32_
                      " degenerate triangles have no face normal; +Z used");
     } else {
         std::uint32_t renormalised = 0, invalid = 0;
+        ImportContext::Renormalised& total = ctx.renormalised;
         for (auto& v : mesh.vertices) {
             const float len = glm::length(v.normal);
             if (!std::isfinite(len) || len == 0.0f)
@@ -296,11 +298,14 @@ void import_primitive(ImportContext& ctx, std::uint32_t mesh_index, std::uint32_
             else if (std::abs(len - 1.0f) > 1e-3f) {
                 v.normal /= len;
                 ++renormalised;
+                if (std::abs(len - 1.0f) > std::abs(total.worst_length - 1.0f)) {
+                    total.worst_length = len;
+                    total.worst_where = where;
+                }
             }
         }
-        if (renormalised)
-            ctx.warn(where + ": " + std::to_string(renormalised) +
-                     " non-unit normals renormalised");
+        total.normals += renormalised;
+        total.primitives += renormalised ? 1 : 0;
         if (invalid) {
             repair_invalid_normals(mesh);
             ctx.warn(where + ": " + std::to_string(invalid) +
@@ -339,6 +344,13 @@ void import_meshes(ImportContext& ctx) {
     for (std::uint32_t m = 0; m < model.meshes.size(); ++m)
         for (std::uint32_t p = 0; p < model.meshes[m].primitives.size(); ++p)
             import_primitive(ctx, m, p);
+    if (const ImportContext::Renormalised& r = ctx.renormalised; r.normals) {
+        char worst[32];
+        std::snprintf(worst, sizeof worst, "%.4g", double(r.worst_length));
+        ctx.warn(std::to_string(r.normals) + " non-unit normals renormalised in " +
+                 std::to_string(r.primitives) + " primitive(s); worst length " + worst + " (" +
+                 r.worst_where + ")");
+    }
 }
 
 } // namespace sherpa::detail

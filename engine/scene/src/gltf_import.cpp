@@ -47,6 +47,28 @@ bool keep_encoded_image(tinygltf::Image* image, const int, std::string* err, std
     return true;
 }
 
+// tinygltf's own lines about image files it could not read ("File not found : x.png",
+// "Failed to load external 'uri' for image[0] name = []"): the texture layer reports
+// every such image once, with its path and the material slots that read it. Images
+// are the only files tinygltf loads as optional, so these lines are about images.
+std::string without_image_file_lines(const std::string& warn) {
+    constexpr std::string_view kImageLines[] = {
+        "File not found : ", "File read error : ", "File is empty : ",
+        "Failed to load external 'uri' for image["};
+    std::string out;
+    std::size_t begin = 0;
+    while (begin < warn.size()) {
+        std::size_t end = warn.find('\n', begin);
+        if (end == std::string::npos) end = warn.size();
+        const std::string_view line(warn.data() + begin, end - begin);
+        bool image_line = false;
+        for (std::string_view prefix : kImageLines) image_line |= line.starts_with(prefix);
+        if (!image_line && !line.empty()) out.append(line).push_back('\n');
+        begin = end + 1;
+    }
+    return out;
+}
+
 double ms_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -68,23 +90,13 @@ std::string clean_message(const std::string& s) {
     return out;
 }
 
-// Animations are imported and evaluated, but a render without a time draws the
-// default pose: they are named in a warning, as are the attributes Sherpa does not
-// draw with (TEXCOORD_2+, ...), so nothing is dropped or frozen without a word.
-// Skins and morph targets are drawn (the renderer skins and morphs on the GPU).
+// The attributes Sherpa does not draw with (TEXCOORD_2+, ...) are named in a warning,
+// so nothing is dropped without a word. Skins, morph targets and animations are drawn
+// (the renderer skins and morphs on the GPU); whether a front end draws the default
+// pose is that front end's to say (sherpa-cli warns when no --time is given; the
+// editor has a timeline).
 void warn_unsupported_content(detail::ImportContext& ctx) {
     const auto& model = ctx.model;
-    if (!model.animations.empty()) {
-        std::string names;
-        for (std::size_t i = 0; i < model.animations.size() && i < 5; ++i)
-            names += (i ? ", " : "") + (model.animations[i].name.empty()
-                                            ? "animations[" + std::to_string(i) + "]"
-                                            : "\"" + model.animations[i].name + "\"");
-        if (model.animations.size() > 5) names += ", ...";
-        ctx.warn(std::to_string(model.animations.size()) + " animation(s) (" + names +
-                 ") imported; `render` and `cull` draw the default pose unless given "
-                 "`--animation N --time T`");
-    }
     std::set<std::string> unused;
     auto drawn = [](const std::string& name) { // JOINTS_n / WEIGHTS_n: GPU skinning
         return std::find(kDrawnAttributes.begin(), kDrawnAttributes.end(), name) !=
@@ -149,7 +161,8 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
     auto scene = std::make_unique<Scene>();
     scene->source = path;
     scene->parse_ms = ms_since(t_parse);
-    if (!warn.empty()) scene->warnings.push_back("tinygltf: " + clean_message(warn));
+    if (const std::string rest = without_image_file_lines(warn); !rest.empty())
+        scene->warnings.push_back("tinygltf: " + clean_message(rest));
     if (!detail::end_stage(options, LoadStage::Parse)) return detail::cancelled_result();
 
     const auto t_process = std::chrono::steady_clock::now();

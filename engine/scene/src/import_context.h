@@ -21,6 +21,15 @@ struct ImportContext {
     // Lights and cameras skipped with a warning (an odd object does not refuse the
     // whole file): their records stay for the indices, nodes do not place them.
     std::vector<std::uint8_t> light_skipped, camera_skipped;
+    // Non-unit normals renormalised, over the whole file: one warning at the end of
+    // import_meshes (quantized normals are non-unit by design; a line per primitive
+    // would flood the log).
+    struct Renormalised {
+        std::uint64_t normals = 0;
+        std::uint32_t primitives = 0;
+        float worst_length = 1.0f; // the length farthest from 1
+        std::string worst_where;
+    } renormalised;
 
     void warn(std::string message) { scene.warnings.push_back(std::move(message)); }
     // Index of Sherpa's default material, appending it the first time it is needed.

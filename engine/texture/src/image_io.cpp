@@ -1,13 +1,17 @@
-// OpenImageIO-backed decoding of encoded sources into RGBA8, and the PNG reading and
-// writing of rendered frames: the engine's one image I/O module.
+// Decoding of encoded sources into RGBA8, and the PNG reading and writing of rendered
+// frames: the engine's one image I/O module. PNG and JPEG are decoded in process
+// (png_codec.cpp, jpeg_decode.cpp); every other format, and the rare JPEG variants
+// those leave aside, through OpenImageIO, loaded as a plugin on first use
+// (oiio/oiio_plugin_api.h says why).
+#include "image_codecs.h"
+#include "oiio/oiio_plugin_api.h"
+
 #include <sherpa/core/file_io.h>
 #include <sherpa/texture/image.h>
 #include <sherpa/texture/texel_budget.h>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
+#include <cctype>
 #include <new>
 
 namespace sherpa::tex {
@@ -18,164 +22,126 @@ bool RgbaImage::has_alpha() const {
     return false;
 }
 
-namespace {
-// glTF stores base colour unassociated ("straight") with alpha beside it; OpenImageIO
-// associates (premultiplies) alpha on read unless told otherwise, which darkens every
-// texel whose alpha is below 1 and, once blended, applies alpha twice.
-OIIO::ImageSpec unassociated_alpha_config() {
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    return config;
-}
-
-// Expands `channels`-channel 8-bit rows to RGBA8 in place of `out`.
-void expand_to_rgba(const std::vector<std::uint8_t>& src, int channels, RgbaImage& out) {
-    const std::size_t texels = std::size_t{out.width} * out.height;
-    out.pixels.resize(texels * 4);
-    for (std::size_t i = 0; i < texels; ++i) {
-        const std::uint8_t* s = src.data() + i * channels;
-        std::uint8_t* d = out.pixels.data() + i * 4;
-        if (channels >= 3)
-            d[0] = s[0], d[1] = s[1], d[2] = s[2];
-        else
-            d[0] = d[1] = d[2] = s[0];
-        d[3] = channels == 4 ? s[3] : channels == 2 ? s[1] : 255;
-    }
-}
-
-bool read_from(OIIO::ImageInput* in, std::string_view name, RgbaImage& out, std::string& error) {
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
+// Every decoder calls this with the header's size before it allocates pixels: no
+// pixels, or more than the texel budget (texel_budget.h), are refused by name.
+bool decoded_size_ok(std::uint32_t width, std::uint32_t height, std::string_view name,
+                     std::string& error) {
+    if (width == 0 || height == 0) {
         error = std::string(name) + ": image has no pixels";
         return false;
     }
-    // Any format OpenImageIO reads: its header's size, before the pixels are allocated.
-    if (!check_texel_budget(std::uint64_t(spec.width), std::uint64_t(spec.height), name, error))
-        return false;
-    const int channels = std::min(spec.nchannels, 4);
-    std::vector<std::uint8_t> raw(std::size_t(spec.width) * spec.height * channels);
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data())) {
-        error = std::string(name) + ": " + in->geterror();
-        return false;
-    }
-    out.width = static_cast<std::uint32_t>(spec.width);
-    out.height = static_cast<std::uint32_t>(spec.height);
-    expand_to_rgba(raw, channels, out);
-    return true;
+    return check_texel_budget(width, height, name, error);
 }
-} // namespace
 
 namespace {
-// Opens `bytes` through an IOProxy (the name only picks the plugin), then runs `read`.
-template <typename Read>
-bool with_encoded_image(std::span<const std::uint8_t> bytes, std::string_view name_hint,
-                        std::string& error, Read read) {
-    // PNG, JPEG and WebP sizes are read from their headers before any decoder sees
-    // them: some decoders allocate the declared size as soon as they are opened.
-    if (const auto declared = declared_image_size(bytes);
-        declared && !check_texel_budget(declared->width, declared->height, name_hint, error))
-        return false;
-    try {
-        // The proxy must be attached before open(), which then reads from it.
-        OIIO::Filesystem::IOMemReader reader(const_cast<std::uint8_t*>(bytes.data()), bytes.size());
-        auto in = OIIO::ImageInput::create(std::string(name_hint), false, nullptr, &reader);
-        OIIO::ImageSpec spec;
-        if (!in || !in->supports("ioproxy") || !in->set_ioproxy(&reader) ||
-            !in->open(std::string(name_hint), spec, unassociated_alpha_config())) {
-            error = std::string(name_hint) +
-                    ": cannot decode: " + (in ? in->geterror() : OIIO::geterror());
-            return false;
-        }
-        const bool ok = read(in.get());
-        in->close();
-        return ok;
-    } catch (const std::bad_alloc&) { // within the texel budget, but not in this memory
-        error = std::string(name_hint) + ": out of memory while decoding (" +
-                std::to_string(bytes.size()) + " encoded bytes)";
-    } catch (const std::exception& e) {
-        error = std::string(name_hint) + ": cannot decode: " + e.what();
-    }
-    return false;
+
+bool size_check(std::uint32_t width, std::uint32_t height, std::string_view name,
+                std::string& error) {
+    return decoded_size_ok(width, height, name, error);
 }
+
+const oiio::PluginApi* image_plugin(std::string_view name, std::string& error) {
+    std::string why;
+    const oiio::PluginApi* api = oiio::plugin(why);
+    if (!api) error = std::string(name) + ": cannot decode: " + why;
+    return api;
+}
+
+// Decodes in process when a decoder here reads the bytes; `handled` false leaves the
+// image to OpenImageIO.
+bool decode_in_process(std::span<const std::uint8_t> bytes, std::string_view name, RgbaImage& out,
+                       std::string& error, bool& handled) {
+    CodecResult r = CodecResult::Unsupported;
+    if (is_png(bytes))
+        r = decode_png(bytes, name, out, error);
+    else if (is_jpeg(bytes))
+        r = decode_jpeg(bytes, name, out, error);
+    handled = r != CodecResult::Unsupported;
+    return r == CodecResult::Ok;
+}
+
+// PNG, JPEG and WebP sizes read from their headers before any decoder sees them: some
+// decoders allocate the declared size as soon as they are opened.
+bool declared_size_ok(std::span<const std::uint8_t> bytes, std::string_view name,
+                      std::string& error) {
+    const auto declared = declared_image_size(bytes);
+    return !declared || check_texel_budget(declared->width, declared->height, name, error);
+}
+
 } // namespace
 
 bool decode_encoded_image(std::span<const std::uint8_t> bytes, std::string_view name_hint,
                           RgbaImage& out, std::string& error) {
-    return with_encoded_image(bytes, name_hint, error, [&](OIIO::ImageInput* in) {
-        return read_from(in, name_hint, out, error);
-    });
+    if (!declared_size_ok(bytes, name_hint, error)) return false;
+    try {
+        bool handled = false;
+        const bool ok = decode_in_process(bytes, name_hint, out, error, handled);
+        if (handled) return ok;
+        const oiio::PluginApi* api = image_plugin(name_hint, error);
+        return api && api->decode(bytes, name_hint, size_check, out, error);
+    } catch (const std::bad_alloc&) { // within the texel budget, but not in this memory
+        error = std::string(name_hint) + ": out of memory while decoding (" +
+                std::to_string(bytes.size()) + " encoded bytes)";
+    }
+    return false;
 }
 
 bool probe_encoded_image(std::span<const std::uint8_t> bytes, std::string_view name_hint,
                          std::string& error, std::uint32_t* width, std::uint32_t* height) {
-    return with_encoded_image(bytes, name_hint, error, [&](OIIO::ImageInput* in) {
-        const OIIO::ImageSpec& spec = in->spec();
-        if (width) *width = std::uint32_t(std::max(spec.width, 0));
-        if (height) *height = std::uint32_t(std::max(spec.height, 0));
-        if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
-            error = std::string(name_hint) + ": image has no pixels";
-            return false;
-        }
-        return check_texel_budget(std::uint64_t(spec.width), std::uint64_t(spec.height), name_hint,
-                                  error);
-    });
+    if (!declared_size_ok(bytes, name_hint, error)) return false;
+    std::uint32_t w = 0, h = 0;
+    CodecResult r = CodecResult::Unsupported;
+    if (is_png(bytes))
+        r = probe_png(bytes, name_hint, w, h, error);
+    else if (is_jpeg(bytes))
+        r = probe_jpeg(bytes, name_hint, w, h, error);
+    bool ok = r == CodecResult::Ok;
+    if (r == CodecResult::Unsupported) {
+        const oiio::PluginApi* api = image_plugin(name_hint, error);
+        ok = api && api->probe(bytes, name_hint, error, w, h);
+    }
+    if (width) *width = w;
+    if (height) *height = h;
+    return ok && decoded_size_ok(w, h, name_hint, error);
 }
 
 bool read_image_file(const std::filesystem::path& path, RgbaImage& out, std::string& error) {
-    const OIIO::ImageSpec config = unassociated_alpha_config();
-    auto in = OIIO::ImageInput::open(path.string(), &config);
-    if (!in) {
-        error = path.string() + ": cannot open: " + OIIO::geterror();
-        return false;
-    }
-    const bool ok = read_from(in.get(), path.string(), out, error);
-    in->close();
-    return ok;
+    std::vector<std::uint8_t> bytes;
+    if (!read_file(path, bytes, error)) return false;
+    bool handled = false;
+    const bool ok = decode_in_process(bytes, path.string(), out, error, handled);
+    if (handled) return ok;
+    // OpenImageIO reads by path (some formats read more than one file), and names
+    // what it cannot open.
+    const oiio::PluginApi* api = image_plugin(path.string(), error);
+    return api && api->read_file(path, size_check, out, error);
 }
 
 bool write_image_file(const std::filesystem::path& path, const RgbaImage& image,
                       std::string& error) {
-    auto outfile = OIIO::ImageOutput::create(path.string());
-    if (!outfile) {
-        error = path.string() + ": no writer: " + OIIO::geterror();
-        return false;
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext == ".png") {
+        std::vector<std::uint8_t> encoded;
+        if (!encode_png(image.width, image.height, image.pixels, encoded, error)) {
+            error = path.string() + ": " + error;
+            return false;
+        }
+        return write_file_atomic(path.string(), encoded, error);
     }
-    OIIO::ImageSpec spec(static_cast<int>(image.width), static_cast<int>(image.height), 4,
-                         OIIO::TypeDesc::UINT8);
-    // The pixels are unassociated: without this the PNG writer would divide by alpha.
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    if (!outfile->open(path.string(), spec) ||
-        !outfile->write_image(OIIO::TypeDesc::UINT8, image.pixels.data())) {
-        error = path.string() + ": " + outfile->geterror();
-        return false;
-    }
-    outfile->close();
-    return true;
+    std::string why;
+    const oiio::PluginApi* api = oiio::plugin(why);
+    if (!api) error = path.string() + ": no writer: " + why;
+    return api && api->write_file(path, image, error);
 }
 
 bool write_png(const std::string& path, std::uint32_t width, std::uint32_t height,
                const std::vector<std::uint8_t>& rgba, std::string& error) {
-    if (rgba.size() != std::size_t(width) * height * 4) {
-        error = path + ": pixel buffer does not match " + std::to_string(width) + "x" +
-                std::to_string(height);
-        return false;
-    }
-    // Encode in memory, then write atomically so readers never see a torn file.
-    std::vector<unsigned char> encoded;
-    OIIO::Filesystem::IOVecOutput writer(encoded);
-    auto out = OIIO::ImageOutput::create("png");
-    if (!out) {
-        error = path + ": no PNG writer: " + OIIO::geterror();
-        return false;
-    }
-    OIIO::ImageSpec spec(int(width), int(height), 4, OIIO::TypeDesc::UINT8);
-    // Rendered pixels are stored as they are; without this the PNG writer treats them
-    // as associated and divides colour by alpha.
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    // The name only selects the format; the proxy receives the bytes.
-    if (!out->set_ioproxy(&writer) || !out->open("out.png", spec) ||
-        !out->write_image(OIIO::TypeDesc::UINT8, rgba.data()) || !out->close()) {
-        error = path + ": cannot encode PNG: " + out->geterror();
+    // Encoded in memory, then written atomically so readers never see a torn file.
+    std::vector<std::uint8_t> encoded;
+    if (!encode_png(width, height, rgba, encoded, error)) {
+        error = path + ": " + error;
         return false;
     }
     return write_file_atomic(path, std::span<const std::uint8_t>(encoded.data(), encoded.size()),

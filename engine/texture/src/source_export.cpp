@@ -97,6 +97,14 @@ std::string image_decoder_hint(const ImageRecord& img) {
 }
 
 bool decode_image_source(const ImageRecord& img, RgbaImage& out, std::string& error) {
+    if (image_is_missing(img)) {
+        error =
+            "missing: " +
+            (!img.uri.empty() ? "'" + img.uri + "' (the file does not exist or cannot be read)"
+             : img.buffer_view >= 0 ? "bufferView " + std::to_string(img.buffer_view) + " is empty"
+                                    : std::string("no bytes to decode"));
+        return false;
+    }
     if (img.encoded.empty()) {
         if (img.pixels.size() != std::size_t{img.width} * img.height * 4 || img.pixels.empty()) {
             error = "image has neither encoded bytes nor RGBA8 pixels";

@@ -2,13 +2,16 @@
 // Framing a box: where a camera looks from so that the whole box is in view. One
 // function for every caller (`--camera auto` in the CLI and tests, the editor on
 // load, "Frame all" and "Frame selection"), so that a scene looks the same in both.
-// Pure math over the box; no scene, no GPU.
+// Math over the box; framing_bounds() says which box: what is drawn.
 #include <sherpa/core/aabb.h>
 #include <sherpa/scene/camera_spec.h>
 
 #include <glm/glm.hpp>
 
 namespace sherpa {
+
+struct Scene;
+struct Pose;
 
 struct FramingOptions {
     float fov_y_degrees = 60.0f; // vertical field of view, in (0, 180)
@@ -42,5 +45,11 @@ CameraSpec frame_box_along(const Aabb& box, glm::vec3 to_eye, const FramingOptio
 // The automatic view: frame_box_along(box, auto_view_direction(box, front_hint), options).
 CameraSpec frame_box(const Aabb& box, const FramingOptions& options,
                      glm::vec3 front_hint = glm::vec3(0.0f));
+
+// The box automatic framing fits: the world bounds of what is drawn, in `pose` when
+// one is given (exact: every posed vertex, as `info --time` reports them) else as
+// loaded; without Scene::backdrop_nodes (the built-in ground plane), unless nothing
+// else is drawn. Invalid when nothing is drawn.
+Aabb framing_bounds(const Scene& scene, const Pose* pose = nullptr);
 
 } // namespace sherpa

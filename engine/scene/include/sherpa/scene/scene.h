@@ -251,6 +251,9 @@ struct Scene {
     std::vector<glm::mat4> node_world;          // identity for nodes outside the displayed scene
     std::vector<std::uint32_t> displayed_nodes; // nodes of the displayed scene, depth-first
     Aabb bounds;
+    // Nodes that are a stage rather than a subject (the built-in scenes' ground plane):
+    // drawn and bounded, but automatic framing leaves them out (framing_bounds()).
+    std::vector<std::uint32_t> backdrop_nodes;
 
     // The file's extensionsUsed / extensionsRequired, as written.
     std::vector<std::string> extensions_used, extensions_required;

@@ -43,6 +43,10 @@ constexpr Subcommand kSubcommands[] = {
      "[--no-gpu]   methods: time vs error"},
     {"compare", sherpa::cli::run_compare,
      "compare A B [--json] [--image OUT.png]   structural diff of two glTF files"},
+    {"validate", sherpa::cli::run_validate,
+     "validate FILE|DIR [--json] [--max-severity error|warning|info|hint] [--jobs N]\n"
+     "                                     Khronos glTF-Validator codes and JSON pointers;\n"
+     "                                     exit 2 on errors, 1 on warnings, 0 otherwise"},
     {"budget", sherpa::cli::run_budget,
      "budget SCENE [--json] [--viewport-height N]   GPU bytes against what the scene needs"},
 };

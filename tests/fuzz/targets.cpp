@@ -3,6 +3,7 @@
 #include "basis_target.h"
 #include "gltf_targets.h"
 #include "texture_targets.h"
+#include "validate_target.h"
 
 #include <fstream>
 
@@ -36,6 +37,7 @@ std::vector<std::unique_ptr<Target>> make_targets() {
     t.push_back(std::make_unique<Ktx2Target>());
     t.push_back(std::make_unique<CacheTarget>());
     t.push_back(std::make_unique<BasisTarget>());
+    t.push_back(std::make_unique<ValidateTarget>());
     return t;
 }
 

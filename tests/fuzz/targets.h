@@ -62,7 +62,7 @@ private:
 // Replaces `path` (a file left by an earlier case) with `bytes`.
 void write_case_file(const std::filesystem::path& path, std::span<const std::uint8_t> bytes);
 
-// "gltf", "glb", "tangents", "ktx2", "cache", "basis", in that order.
+// "gltf", "glb", "tangents", "ktx2", "cache", "basis", "validate", in that order.
 std::vector<std::unique_ptr<Target>> make_targets();
 
 } // namespace sherpa::fuzz

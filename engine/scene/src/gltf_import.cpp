@@ -209,8 +209,12 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
     }
     scene->process_ms = ms_since(t_process);
     // The importer's own warnings, as SHERPA_ messages with the pointer they name.
+    std::set<std::string> said; // skipped parts are messages already
+    for (const auto& m : scene->validation.messages)
+        if (m.code.rfind("SHERPA_", 0) == 0) said.insert(m.message);
     for (const std::string& w : scene->warnings)
-        detail::add_import_message(scene->validation, "SHERPA_IMPORT_WARNING", Severity::Warning, w);
+        if (!said.contains(w))
+            detail::add_import_message(scene->validation, "SHERPA_IMPORT_WARNING", Severity::Warning, w);
     result.scene = std::move(scene);
     return result;
 }

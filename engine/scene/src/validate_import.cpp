@@ -2,6 +2,8 @@
 // warnings and refusals as SHERPA_ messages with JSON pointers.
 #include "validate_internal.h"
 
+#include "import_context.h"
+
 #include <cctype>
 #include <chrono>
 
@@ -58,6 +60,11 @@ void add_import_message(ValidationReport& report, std::string_view code, Severit
         return;
     }
     report.messages.push_back({std::string(code), text, pointer_of_path(text), severity});
+}
+
+void ImportContext::skip(std::string_view code, const std::string& message) {
+    scene.warnings.push_back(message);
+    add_import_message(scene.validation, code, Severity::Error, message);
 }
 
 } // namespace sherpa::detail

@@ -52,11 +52,22 @@ def main():
     ap.add_argument("--check", action="store_true", help="exit 1 when a goal is missed")
     ap.add_argument("--show-misses", action="store_true")
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--oracle-cache", help="JSON file keeping the oracle's reports between runs")
     ap.add_argument("paths", nargs="+")
     a = ap.parse_args()
     files = files_of(a.paths)
     with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
-        oracles = list(pool.map(lambda f: oracle(f, a.node_path), files))
+        cache = {}
+        if a.oracle_cache and os.path.exists(a.oracle_cache):
+            with open(a.oracle_cache) as c:
+                cache = json.load(c)
+        todo = [f for f in files if f not in cache]
+        for f, o in zip(todo, pool.map(lambda f: oracle(f, a.node_path), todo)):
+            cache[f] = o
+        if a.oracle_cache:
+            with open(a.oracle_cache, "w") as c:
+                json.dump(cache, c)
+        oracles = [cache[f] for f in files]
         ours = list(pool.map(lambda f: sherpa(f, a.cli), files))
     tp, fn, fp = collections.Counter(), collections.Counter(), collections.Counter()
     misses, extras, contract = [], [], []

@@ -214,7 +214,7 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         if (m.code.rfind("SHERPA_", 0) == 0) said.insert(m.message);
     for (const std::string& w : scene->warnings)
         if (!said.contains(w))
-            detail::add_import_message(scene->validation, "SHERPA_IMPORT_WARNING", Severity::Warning, w);
+            detail::add_import_message(scene->validation, "SHERPA_IMPORT_NOTE", Severity::Information, w);
     result.scene = std::move(scene);
     return result;
 }

@@ -29,7 +29,10 @@ bool to_integer(json& j) {
     if (!(x == static_cast<double>(static_cast<std::int64_t>(x))) || x < -9007199254740992.0 ||
         x > 9007199254740992.0)
         return false;
-    j = static_cast<std::int64_t>(x);
+    if (x >= 0)
+        j = static_cast<std::uint64_t>(x); // nlohmann keeps integers >= 0 unsigned
+    else
+        j = static_cast<std::int64_t>(x);
     return true;
 }
 

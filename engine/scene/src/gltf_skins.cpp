@@ -189,7 +189,7 @@ void import_skins(ImportContext& ctx) {
             fail(where + ".skeleton: node " + std::to_string(src.skeleton) + " out of range");
         skin.skeleton = src.skeleton;
         skin.inverse_bind.assign(skin.joints.size(), glm::mat4(1.0f));
-        if (src.inverseBindMatrices >= 0) {
+        if (src.inverseBindMatrices >= 0) try {
             const std::string path = where + ".inverseBindMatrices";
             std::uint32_t nc = 0, degenerate = 0;
             const auto v = read_accessor_floats(model, src.inverseBindMatrices, {16}, nc, path);
@@ -208,6 +208,10 @@ void import_skins(ImportContext& ctx) {
             if (degenerate)
                 ctx.warn(path + ": " + std::to_string(degenerate) +
                          " singular matrices (their joints' vertices collapse)");
+        } catch (const ImportError& e) { // drawn with identity matrices, and named
+            skin.inverse_bind.assign(skin.joints.size(), glm::mat4(1.0f));
+            ctx.skip("SHERPA_SKIN_MATRICES_SKIPPED",
+                     std::string(e.what()) + " (identity inverse bind matrices used)");
         }
         scene.skins.push_back(std::move(skin));
     }

@@ -86,6 +86,7 @@ void validate_buffers(Validation& v) {
         view.offset = static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(bv, "byteOffset", 0), 0));
         view.length = static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(bv, "byteLength", 0), 0));
         view.stride = static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(bv, "byteStride", 0), 0));
+        if (view.stride < 4 || view.stride > 252) view.stride = 0; // out of range: ignored, as Khronos does
         view.compressed = bv.is_object() && bv.contains("extensions") && bv["extensions"].is_object() &&
                           (bv["extensions"].contains("EXT_meshopt_compression") ||
                            bv["extensions"].contains("KHR_meshopt_compression"));
@@ -99,7 +100,7 @@ void validate_buffers(Validation& v) {
                           ") byteLength (" + std::to_string(size) + ").");
         }
         if (view.stride) {
-            if (view.stride % 4 && view.stride >= 4 && view.stride <= 252)
+            if (view.stride % 4)
                 v.add("VALUE_MULTIPLE_OF", Severity::Error, ptr(where, "byteStride"),
                       "Value " + std::to_string(view.stride) + " is not a multiple of 4.");
             if (view.stride > view.length && view.length > 0)
@@ -144,7 +145,7 @@ void validate_buffers(Validation& v) {
             out.sparse = true;
             const std::int64_t sc = int_or(a["sparse"], "count", 0);
             if (sc > count && count > 0)
-                v.add("ACCESSOR_SPARSE_COUNT_OUT_OF_RANGE", Severity::Error, ptr(where, "sparse/count"),
+                v.add("ACCESSOR_SPARSE_COUNT_OUT_OF_RANGE", Severity::Error, ptr(ptr(where, "sparse"), "count"),
                       "Sparse accessor overrides more elements (" + std::to_string(sc) +
                           ") than the base accessor contains (" + std::to_string(count) + ").");
         }
@@ -177,7 +178,8 @@ void validate_buffers(Validation& v) {
                       std::to_string(view.length) + ".");
             continue;
         }
-        out.readable = view.fits && !view.compressed && (view.offset + offset) % csize == 0;
+        out.readable = view.fits && !view.compressed && (view.offset + offset) % csize == 0 &&
+                       (!view.stride || (view.stride >= element && view.stride % 4 == 0));
         out.buffer = static_cast<std::size_t>(view.buffer);
         out.offset = view.offset + static_cast<std::uint64_t>(offset);
         out.stride = stride;

@@ -131,7 +131,7 @@ void validate_meshes(Validation& v) {
                 else if (!format_ok(name, comps, component_size(ct) ? ct : 0, norm, quantized))
                     v.add("MESH_PRIMITIVE_ATTRIBUTES_ACCESSOR_INVALID_FORMAT", Severity::Error, ap,
                           "Invalid accessor format '" + format_text(layout, acc) + "' for this attribute semantic.");
-                if (name == "POSITION" && (!acc.contains("min") || !acc.contains("max")))
+                if (name == "POSITION" && (!layout.has_min || !layout.has_max))
                     v.add("MESH_PRIMITIVE_POSITION_ACCESSOR_WITHOUT_BOUNDS", Severity::Error, ap,
                           "accessor.min and accessor.max must be defined for POSITION attribute accessor.");
                 const Json& view = view_of(a);
@@ -152,7 +152,8 @@ void validate_meshes(Validation& v) {
             }
             const std::int64_t vertex_count = position_count >= 0 ? position_count : first_count;
             for (const auto& [name, a] : resolved)
-                if (int_or(accessors[static_cast<std::size_t>(a)], "count", -1) != vertex_count)
+                if (const std::int64_t c = int_or(accessors[static_cast<std::size_t>(a)], "count", -1);
+                    c >= 0 && vertex_count >= 0 && c != vertex_count)
                     v.add("MESH_PRIMITIVE_UNEQUAL_ACCESSOR_COUNT", Severity::Error, ptr(attr_where, name),
                           "All accessors of the same primitive must have the same count.");
             if (attributes.is_object() && !has_position)
@@ -224,6 +225,10 @@ void validate_meshes(Validation& v) {
                             v.add("UNRESOLVED_REFERENCE", Severity::Error, tp, "Unresolved reference.");
                             continue;
                         }
+                        if (name == "POSITION" && (!v.accessors[static_cast<std::size_t>(as_int(value))].has_min ||
+                                                   !v.accessors[static_cast<std::size_t>(as_int(value))].has_max))
+                            v.add("MESH_PRIMITIVE_POSITION_ACCESSOR_WITHOUT_BOUNDS", Severity::Error, tp,
+                                  "accessor.min and accessor.max must be defined for POSITION attribute accessor.");
                         if (!resolved.contains(name))
                             v.add("MESH_PRIMITIVE_MORPH_TARGET_NO_BASE_ACCESSOR", Severity::Error, tp,
                                   "The mesh primitive does not define this attribute semantic.");

@@ -45,20 +45,28 @@ fs::path write_many_nodes(std::size_t n) {
     }
     doc["nodes"] = nodes;
     doc["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", 0}}}}}}}};
-    doc["accessors"] = {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
-                         {"min", {0, 0, 0}}, {"max", {1, 1, 0}}}};
+    doc["accessors"] = {{{"bufferView", 0},
+                         {"componentType", 5126},
+                         {"count", 3},
+                         {"type", "VEC3"},
+                         {"min", {0, 0, 0}},
+                         {"max", {1, 1, 0}}}};
     doc["bufferViews"] = {{{"buffer", 0}, {"byteLength", 36}, {"target", 34962}}};
     // 0,0,0  1,0,0  0,1,0 as little-endian floats
-    doc["buffers"] = {{{"byteLength", 36},
-                       {"uri", "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}}};
-    const fs::path path = fs::temp_directory_path() / ("sherpa_validate_bench_" + std::to_string(n) + ".gltf");
+    doc["buffers"] = {
+        {{"byteLength", 36},
+         {"uri", "data:application/"
+                 "octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}}};
+    const fs::path path =
+        fs::temp_directory_path() / ("sherpa_validate_bench_" + std::to_string(n) + ".gltf");
     std::ofstream(path) << doc.dump();
     return path;
 }
 
 // The Khronos validator's own time on `path`, or a negative number when it failed.
 double khronos_ms(const std::string& node_path, const fs::path& script, const fs::path& path) {
-    const std::string cmd = "NODE_PATH='" + node_path + "' node '" + script.string() + "' '" + path.string() + "'";
+    const std::string cmd =
+        "NODE_PATH='" + node_path + "' node '" + script.string() + "' '" + path.string() + "'";
     FILE* p = popen(cmd.c_str(), "r");
     if (!p) return -1;
     std::string out;
@@ -87,7 +95,8 @@ int main(int argc, char** argv) {
             node_path = argv[++i];
     }
     const fs::path assets = fs::path(SHERPA_ASSETS_DIR) / "gltf";
-    const fs::path script = fs::path(SHERPA_SOURCE_DIR) / "tools/gltf_validator/khronos_validate.js";
+    const fs::path script =
+        fs::path(SHERPA_SOURCE_DIR) / "tools/gltf_validator/khronos_validate.js";
     const std::vector<fs::path> files = {assets / "DamagedHelmet/glTF/DamagedHelmet.gltf",
                                          assets / "2CylinderEngine/glTF/2CylinderEngine.gltf",
                                          write_many_nodes(many)};
@@ -106,13 +115,17 @@ int main(int argc, char** argv) {
             validate.push_back(result.scene->validation.ms);
             // The JSON parse the validator shares with the importer, timed alone.
             std::ifstream in(f, std::ios::binary);
-            const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+            const std::string text{std::istreambuf_iterator<char>(in),
+                                   std::istreambuf_iterator<char>()};
             const auto t0 = std::chrono::steady_clock::now();
             const auto doc = nlohmann::json::parse(text);
-            json_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+            json_ms.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                    .count());
             if (!node_path.empty()) js.push_back(khronos_ms(node_path, script, f));
         }
-        const double p = median(parse), q = median(process), v = median(validate), j = median(json_ms);
+        const double p = median(parse), q = median(process), v = median(validate),
+                     j = median(json_ms);
         const double k = median(js);
         std::printf("%-28s %9.2f %9.2f %9.2f %7.1f%% %10.2f %9.1f %9.1f\n",
                     f.filename().string().substr(0, 28).c_str(), p, q, v, 100.0 * v / (p + q),

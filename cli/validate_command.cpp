@@ -67,7 +67,8 @@ int exit_status(const FileReport& f) {
 nlohmann::json report_json(const FileReport& f) {
     nlohmann::json messages = nlohmann::json::array();
     for (const auto& m : f.messages) {
-        nlohmann::json j = {{"code", m.code}, {"message", m.message}, {"severity", static_cast<int>(m.severity)}};
+        nlohmann::json j = {
+            {"code", m.code}, {"message", m.message}, {"severity", static_cast<int>(m.severity)}};
         if (!m.pointer.empty()) j["pointer"] = m.pointer;
         messages.push_back(std::move(j));
     }
@@ -88,18 +89,22 @@ nlohmann::json report_json(const FileReport& f) {
 
 std::string counts_text(const FileReport& f) {
     char text[160];
-    std::snprintf(text, sizeof(text), "%zu errors, %zu warnings, %zu infos, %zu hints%s", f.counts[0],
-                  f.counts[1], f.counts[2], f.counts[3], f.refused ? " (not loaded)" : "");
+    std::snprintf(text, sizeof(text), "%zu errors, %zu warnings, %zu infos, %zu hints%s",
+                  f.counts[0], f.counts[1], f.counts[2], f.counts[3],
+                  f.refused ? " (not loaded)" : "");
     return text;
 }
 
 std::vector<std::string> gltf_files(const fs::path& dir, std::string& error) {
     std::vector<std::string> files;
     std::error_code ec;
-    for (fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end;
+    for (fs::recursive_directory_iterator
+             it(dir, fs::directory_options::skip_permission_denied, ec),
+         end;
          !ec && it != end; it.increment(ec)) {
         const auto ext = it->path().extension();
-        if ((ext == ".gltf" || ext == ".glb") && it->is_regular_file(ec)) files.push_back(it->path().string());
+        if ((ext == ".gltf" || ext == ".glb") && it->is_regular_file(ec))
+            files.push_back(it->path().string());
     }
     if (ec) error = dir.string() + ": " + ec.message();
     std::sort(files.begin(), files.end());
@@ -142,8 +147,9 @@ int run_validate(Args args) {
         } else {
             std::printf("%s: %s\n", f.path.c_str(), counts_text(f).c_str());
             for (const auto& m : f.messages)
-                std::printf("  %s %s%s%s: %s\n", std::string(to_string(m.severity)).c_str(), m.code.c_str(),
-                            m.pointer.empty() ? "" : " ", m.pointer.c_str(), m.message.c_str());
+                std::printf("  %s %s%s%s: %s\n", std::string(to_string(m.severity)).c_str(),
+                            m.code.c_str(), m.pointer.empty() ? "" : " ", m.pointer.c_str(),
+                            m.message.c_str());
             if (f.truncated) std::printf("  (more messages than the report keeps)\n");
         }
         return exit_status(f);
@@ -157,10 +163,12 @@ int run_validate(Args args) {
     std::vector<FileReport> reports(files.size());
     std::atomic<std::size_t> next{0};
     auto work = [&] {
-        for (std::size_t i; (i = next.fetch_add(1)) < files.size();) reports[i] = validate_file(files[i], max);
+        for (std::size_t i; (i = next.fetch_add(1)) < files.size();)
+            reports[i] = validate_file(files[i], max);
     };
     std::vector<std::thread> pool;
-    for (unsigned t = 1; t < std::min<std::size_t>(jobs, files.size()); ++t) pool.emplace_back(work);
+    for (unsigned t = 1; t < std::min<std::size_t>(jobs, files.size()); ++t)
+        pool.emplace_back(work);
     work();
     for (auto& t : pool) t.join();
     std::size_t with_errors = 0, with_warnings = 0, refused = 0;
@@ -183,10 +191,12 @@ int run_validate(Args args) {
                          .dump(2)
                   << "\n";
     } else {
-        for (const auto& f : reports) std::printf("%s: %s\n", f.path.c_str(), counts_text(f).c_str());
-        std::printf("%zu files: %zu with errors, %zu with warnings only, %zu clean; %zu not loaded\n",
-                    reports.size(), with_errors, with_warnings, reports.size() - with_errors - with_warnings,
-                    refused);
+        for (const auto& f : reports)
+            std::printf("%s: %s\n", f.path.c_str(), counts_text(f).c_str());
+        std::printf(
+            "%zu files: %zu with errors, %zu with warnings only, %zu clean; %zu not loaded\n",
+            reports.size(), with_errors, with_warnings,
+            reports.size() - with_errors - with_warnings, refused);
     }
     return status;
 }

@@ -6,7 +6,7 @@
 // severity out of range, or more messages than the report keeps.
 #include "validate_target.h"
 
-#include "gltf_validate.h"   // engine/scene/src
+#include "gltf_validate.h"     // engine/scene/src
 #include "validate_internal.h" // engine/scene/src
 
 #include <algorithm>
@@ -57,11 +57,13 @@ bool ValidateTarget::init(const TargetConfig& config, std::string& error) {
     for (const fs::path dir : {config.data_dir, config.data_dir / "validation"})
         for (const auto& f : fs::directory_iterator(dir, ec)) files.push_back(f.path());
     for (const auto& model : fs::directory_iterator(config.assets_dir / "gltf", ec))
-        for (const auto& f : fs::recursive_directory_iterator(model.path(), ec)) files.push_back(f.path());
+        for (const auto& f : fs::recursive_directory_iterator(model.path(), ec))
+            files.push_back(f.path());
     std::sort(files.begin(), files.end()); // the same seeds in the same order every run
     for (const fs::path& f : files) {
         const auto ext = f.extension();
-        if ((ext != ".gltf" && ext != ".glb") || fs::file_size(f, ec) > config.max_seed_size) continue;
+        if ((ext != ".gltf" && ext != ".glb") || fs::file_size(f, ec) > config.max_seed_size)
+            continue;
         seeds_.push_back(read_file(f));
     }
     if (seeds_.empty()) error = "no glTF seeds under " + config.data_dir.string();
@@ -77,7 +79,8 @@ std::optional<std::string> ValidateTarget::run() {
     // Buffers as tinygltf would fill them: the BIN chunk, base64 data URIs.
     std::vector<std::vector<std::uint8_t>> owned;
     std::vector<std::span<const std::uint8_t>> buffers;
-    const auto& list = root.contains("buffers") && root["buffers"].is_array() ? root["buffers"] : nlohmann::json();
+    const auto& list =
+        root.contains("buffers") && root["buffers"].is_array() ? root["buffers"] : nlohmann::json();
     for (std::size_t i = 0; i < list.size(); ++i) {
         const nlohmann::json& b = list[i];
         const auto uri = b.is_object() ? b.find("uri") : b.end();
@@ -90,7 +93,8 @@ std::optional<std::string> ValidateTarget::run() {
         } else if (glb && i == 0 && bytes_.size() >= 28) {
             const std::size_t at = 20 + std::size_t{le32(bytes_, 12)};
             if (at + 8 <= bytes_.size()) {
-                const std::size_t n = std::min<std::size_t>(le32(bytes_, at), bytes_.size() - at - 8);
+                const std::size_t n =
+                    std::min<std::size_t>(le32(bytes_, at), bytes_.size() - at - 8);
                 owned.emplace_back(bytes_.begin() + static_cast<std::ptrdiff_t>(at + 8),
                                    bytes_.begin() + static_cast<std::ptrdiff_t>(at + 8 + n));
             } else {
@@ -102,11 +106,14 @@ std::optional<std::string> ValidateTarget::run() {
     }
     for (const auto& o : owned) buffers.emplace_back(o);
     validator.check_data(buffers);
-    if (report.messages.size() > kMaxValidationMessages) return "report keeps more messages than its limit";
+    if (report.messages.size() > kMaxValidationMessages)
+        return "report keeps more messages than its limit";
     for (const ValidationMessage& m : report.messages) {
         if (m.code.empty() || m.message.empty()) return "message without a code or text";
-        if (!m.pointer.empty() && m.pointer[0] != '/') return m.code + ": pointer '" + m.pointer + "' is not a JSON pointer";
-        if (static_cast<int>(m.severity) < 0 || static_cast<int>(m.severity) > 3) return m.code + ": severity out of range";
+        if (!m.pointer.empty() && m.pointer[0] != '/')
+            return m.code + ": pointer '" + m.pointer + "' is not a JSON pointer";
+        if (static_cast<int>(m.severity) < 0 || static_cast<int>(m.severity) > 3)
+            return m.code + ": severity out of range";
     }
     return std::nullopt;
 }

@@ -60,7 +60,8 @@ INSTANTIATE_TEST_SUITE_P(
     Codes, LoadsWithMessage,
     ::testing::Values(
         Expect{"accessor_min_mismatch.gltf", "ACCESSOR_MIN_MISMATCH", "/accessors/0/min/0"},
-        Expect{"accessor_out_of_max.gltf", "ACCESSOR_ELEMENT_OUT_OF_MAX_BOUND", "/accessors/0/max/0"},
+        Expect{"accessor_out_of_max.gltf", "ACCESSOR_ELEMENT_OUT_OF_MAX_BOUND",
+               "/accessors/0/max/0"},
         Expect{"accessor_normal_non_unit.gltf", "ACCESSOR_VECTOR3_NON_UNIT",
                "/meshes/0/primitives/0/attributes/NORMAL"},
         Expect{"anim_input_non_increasing.gltf", "ACCESSOR_ANIMATION_INPUT_NON_INCREASING",
@@ -155,7 +156,8 @@ TEST(LoadAndWarn, RefusalCarriesTheValidatorsMessages) {
 TEST(LoadAndWarn, RefusedFileKeepsTheKhronosCode) {
     const auto r = sherpa::load_scene(case_path("buffer_view_too_long.gltf"));
     ASSERT_FALSE(r);
-    EXPECT_TRUE(has(r.validation, "BUFFER_VIEW_TOO_LONG", "/bufferViews/8/byteLength")) << dump(r.validation);
+    EXPECT_TRUE(has(r.validation, "BUFFER_VIEW_TOO_LONG", "/bufferViews/8/byteLength"))
+        << dump(r.validation);
     EXPECT_TRUE(has(r.validation, "SHERPA_LOAD_REFUSED", "/bufferViews/8")) << dump(r.validation);
 }
 

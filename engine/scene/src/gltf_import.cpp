@@ -2,15 +2,15 @@
 // discards the partial scene and reports "FILE: what is wrong".
 #include "gltf_draco.h"
 #include "gltf_fs.h"
+#include "gltf_lenient.h"
 #include "gltf_meshopt.h"
 #include "gltf_prepare.h"
 #include "gltf_validate.h"
 #include "import_context.h"
 #include "import_error.h"
 #include "load_stages.h"
-#include "gltf_lenient.h"
-#include "validate_internal.h"
 #include "motion_internal.h"
+#include "validate_internal.h"
 
 #include <sherpa/scene/scene_loader.h>
 
@@ -126,7 +126,8 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         result.validation = std::move(report);
         return std::move(result);
     };
-    if (problem = detail::parse_gltf_document(bytes, root); !problem.empty()) return refuse(problem);
+    if (problem = detail::parse_gltf_document(bytes, root); !problem.empty())
+        return refuse(problem);
     const bool is_glb = bytes.size() >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "glTF");
     bool edited = detail::normalize_integers(root); // "count": 3.0 is an integer in glTF
     std::optional<detail::DocumentValidator> validator;
@@ -214,7 +215,8 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         if (m.code.rfind("SHERPA_", 0) == 0) said.insert(m.message);
     for (const std::string& w : scene->warnings)
         if (!said.contains(w))
-            detail::add_import_message(scene->validation, "SHERPA_IMPORT_NOTE", Severity::Information, w);
+            detail::add_import_message(scene->validation, "SHERPA_IMPORT_NOTE",
+                                       Severity::Information, w);
     result.scene = std::move(scene);
     return result;
 }

@@ -9,13 +9,41 @@ namespace {
 using nlohmann::json;
 
 // glTF properties whose values are integers (indices, sizes, enums).
-constexpr std::string_view kIntegerKeys[] = {
-    "byteOffset", "byteLength", "byteStride", "count",     "componentType", "bufferView",
-    "buffer",     "target",     "mode",       "indices",   "material",      "mesh",
-    "skin",       "camera",     "children",   "nodes",     "joints",        "skeleton",
-    "sampler",    "source",     "index",      "texCoord",  "input",         "output",
-    "node",       "scene",      "magFilter",  "minFilter", "wrapS",         "wrapT",
-    "inverseBindMatrices",      "light",      "attributes", "targets",     "variants"};
+constexpr std::string_view kIntegerKeys[] = {"byteOffset",
+                                             "byteLength",
+                                             "byteStride",
+                                             "count",
+                                             "componentType",
+                                             "bufferView",
+                                             "buffer",
+                                             "target",
+                                             "mode",
+                                             "indices",
+                                             "material",
+                                             "mesh",
+                                             "skin",
+                                             "camera",
+                                             "children",
+                                             "nodes",
+                                             "joints",
+                                             "skeleton",
+                                             "sampler",
+                                             "source",
+                                             "index",
+                                             "texCoord",
+                                             "input",
+                                             "output",
+                                             "node",
+                                             "scene",
+                                             "magFilter",
+                                             "minFilter",
+                                             "wrapS",
+                                             "wrapT",
+                                             "inverseBindMatrices",
+                                             "light",
+                                             "attributes",
+                                             "targets",
+                                             "variants"};
 
 bool integer_key(std::string_view key) {
     for (std::string_view k : kIntegerKeys)
@@ -89,7 +117,8 @@ bool is_fallback(const json& buffer) {
     if (!buffer.contains("extensions") || !buffer["extensions"].is_object()) return false;
     for (const char* codec : {"EXT_meshopt_compression", "KHR_meshopt_compression"}) {
         const json& e = buffer["extensions"];
-        if (e.contains(codec) && e[codec].is_object() && e[codec].value("fallback", false)) return true;
+        if (e.contains(codec) && e[codec].is_object() && e[codec].value("fallback", false))
+            return true;
     }
     return false;
 }
@@ -123,7 +152,8 @@ bool replace_unreadable_buffers(json& root, bool glb, bool glb_has_bin, Validati
             if (!glb)
                 why = "has no uri (a placeholder): nothing reads its data";
             else if (i > 0)
-                why = "has no uri and is not the first buffer: a GLB's BIN chunk belongs to buffers[0]";
+                why = "has no uri and is not the first buffer: a GLB's BIN chunk belongs to "
+                      "buffers[0]";
             else if (!glb_has_bin)
                 why = "has no uri and the GLB has no BIN chunk";
         } else if (uri->is_string()) {
@@ -150,22 +180,24 @@ bool replace_unreadable_buffers(json& root, bool glb, bool glb_has_bin, Validati
                     }
                 }
             } else if (has_scheme(u)) {
-                why = "uri \"" + u.substr(0, 60) + "\" is not a relative path; Sherpa does not fetch it";
+                why = "uri \"" + u.substr(0, 60) +
+                      "\" is not a relative path; Sherpa does not fetch it";
             }
         }
         if (why.empty()) continue;
         b["uri"] = "data:application/octet-stream;base64,AA==";
         b["byteLength"] = 1;
         changed = true;
-        report.messages.push_back({"SHERPA_BUFFER_NOT_LOADED",
-                                   "buffers[" + std::to_string(i) + "] " + why +
-                                       "; what reads it is skipped",
-                                   where, Severity::Warning});
+        report.messages.push_back(
+            {"SHERPA_BUFFER_NOT_LOADED",
+             "buffers[" + std::to_string(i) + "] " + why + "; what reads it is skipped", where,
+             Severity::Warning});
     }
     return changed;
 }
 
-std::vector<std::uint8_t> with_json(const json& root, std::span<const std::uint8_t> file, bool glb) {
+std::vector<std::uint8_t> with_json(const json& root, std::span<const std::uint8_t> file,
+                                    bool glb) {
     std::string text = root.dump(-1, ' ', false, json::error_handler_t::replace);
     if (!glb) return {text.begin(), text.end()};
     text.resize((text.size() + 3) / 4 * 4, ' '); // chunks are 4-byte aligned

@@ -35,13 +35,15 @@ void check_uri(Validation& v, const Json& obj, const std::string& where, bool bu
     const std::string p = ptr(where, "uri");
     if (v.glb) v.add("URI_GLB", Severity::Information, p, "URI is used in GLB container.");
     if (is_data_uri(u)) {
-        if (v.glb) v.add("DATA_URI_GLB", Severity::Warning, p, "Data URI is used in GLB container.");
+        if (v.glb)
+            v.add("DATA_URI_GLB", Severity::Warning, p, "Data URI is used in GLB container.");
         if (buffer) {
             const std::string_view media = std::string_view(u).substr(5, u.find_first_of(";,") - 5);
             if (media != "application/octet-stream" && media != "application/gltf-buffer")
                 v.add("BUFFER_DATA_URI_MIME_TYPE_INVALID", Severity::Error, p,
                       "Data URI media type must be 'application/octet-stream' or "
-                      "'application/gltf-buffer'. Found '" + std::string(media) + "' instead.");
+                      "'application/gltf-buffer'. Found '" +
+                          std::string(media) + "' instead.");
         }
     } else if (non_relative(u)) {
         v.add("NON_RELATIVE_URI", Severity::Warning, p, "Non-relative URI found: '" + u + "'.");
@@ -50,7 +52,8 @@ void check_uri(Validation& v, const Json& obj, const std::string& where, bool bu
 
 std::uint32_t le32(std::span<const std::uint8_t> b, std::size_t at) {
     return static_cast<std::uint32_t>(b[at]) | static_cast<std::uint32_t>(b[at + 1]) << 8 |
-           static_cast<std::uint32_t>(b[at + 2]) << 16 | static_cast<std::uint32_t>(b[at + 3]) << 24;
+           static_cast<std::uint32_t>(b[at + 2]) << 16 |
+           static_cast<std::uint32_t>(b[at + 3]) << 24;
 }
 
 } // namespace
@@ -62,7 +65,8 @@ void validate_buffers(Validation& v) {
         const Json& b = buffers[i];
         if (!b.is_object()) continue;
         const std::string where = ptr("/buffers", i);
-        buffer_length[i] = static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(b, "byteLength", 0), 0));
+        buffer_length[i] =
+            static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(b, "byteLength", 0), 0));
         check_uri(v, b, where, true);
         if (v.glb && i == 0 && !b.contains("uri") && !v.glb_has_bin)
             v.add("BUFFER_MISSING_GLB_DATA", Severity::Error, where,
@@ -83,11 +87,16 @@ void validate_buffers(Validation& v) {
         const Json& bv = views_json[i];
         View& view = views[i];
         view.buffer = ref(v, bv, "buffer", "buffers");
-        view.offset = static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(bv, "byteOffset", 0), 0));
-        view.length = static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(bv, "byteLength", 0), 0));
-        view.stride = static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(bv, "byteStride", 0), 0));
-        if (view.stride < 4 || view.stride > 252) view.stride = 0; // out of range: ignored, as Khronos does
-        view.compressed = bv.is_object() && bv.contains("extensions") && bv["extensions"].is_object() &&
+        view.offset =
+            static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(bv, "byteOffset", 0), 0));
+        view.length =
+            static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(bv, "byteLength", 0), 0));
+        view.stride =
+            static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(bv, "byteStride", 0), 0));
+        if (view.stride < 4 || view.stride > 252)
+            view.stride = 0; // out of range: ignored, as Khronos does
+        view.compressed = bv.is_object() && bv.contains("extensions") &&
+                          bv["extensions"].is_object() &&
                           (bv["extensions"].contains("EXT_meshopt_compression") ||
                            bv["extensions"].contains("KHR_meshopt_compression"));
         const std::string where = ptr("/bufferViews", i);
@@ -123,11 +132,12 @@ void validate_buffers(Validation& v) {
         const std::int64_t ct = int_or(a, "componentType", 0);
         const std::uint32_t csize = component_size(ct);
         const auto type = a.find("type");
-        const std::uint32_t comps =
-            type != a.end() && type->is_string() ? components_of(type->get_ref<const std::string&>()) : 0;
+        const std::uint32_t comps = type != a.end() && type->is_string()
+                                        ? components_of(type->get_ref<const std::string&>())
+                                        : 0;
         const std::int64_t count = int_or(a, "count", 0);
-        const bool normalized = a.contains("normalized") && a["normalized"].is_boolean() &&
-                                a["normalized"].get<bool>();
+        const bool normalized =
+            a.contains("normalized") && a["normalized"].is_boolean() && a["normalized"].get<bool>();
         if (normalized && (ct == 5126 || ct == 5125))
             v.add("ACCESSOR_NORMALIZED_INVALID", Severity::Error, ptr(where, "normalized"),
                   "Only (u)byte and (u)short accessors can be normalized.");
@@ -136,8 +146,8 @@ void validate_buffers(Validation& v) {
             if (m == a.end() || !m->is_array() || comps == 0) continue;
             if (m->size() != comps)
                 v.add("ARRAY_LENGTH_NOT_IN_LIST", Severity::Error, ptr(where, key),
-                      "Invalid array length " + std::to_string(m->size()) + ". Valid lengths are: (" +
-                          std::to_string(comps) + ").");
+                      "Invalid array length " + std::to_string(m->size()) +
+                          ". Valid lengths are: (" + std::to_string(comps) + ").");
             else
                 (key[1] == 'i' ? out.has_min : out.has_max) = true;
         }
@@ -145,7 +155,8 @@ void validate_buffers(Validation& v) {
             out.sparse = true;
             const std::int64_t sc = int_or(a["sparse"], "count", 0);
             if (sc > count && count > 0)
-                v.add("ACCESSOR_SPARSE_COUNT_OUT_OF_RANGE", Severity::Error, ptr(ptr(where, "sparse"), "count"),
+                v.add("ACCESSOR_SPARSE_COUNT_OUT_OF_RANGE", Severity::Error,
+                      ptr(ptr(where, "sparse"), "count"),
                       "Sparse accessor overrides more elements (" + std::to_string(sc) +
                           ") than the base accessor contains (" + std::to_string(count) + ").");
         }
@@ -153,8 +164,8 @@ void validate_buffers(Validation& v) {
         const std::int64_t vi = ref(v, a, "bufferView", "bufferViews");
         if (csize && offset % csize)
             v.add("ACCESSOR_OFFSET_ALIGNMENT", Severity::Error, ptr(where, "byteOffset"),
-                  "Offset " + std::to_string(offset) + " is not a multiple of componentType length " +
-                      std::to_string(csize) + ".");
+                  "Offset " + std::to_string(offset) +
+                      " is not a multiple of componentType length " + std::to_string(csize) + ".");
         if (vi < 0 || !csize || !comps || count <= 0) continue;
         const View& view = views[static_cast<std::size_t>(vi)];
         if (csize && (view.offset + static_cast<std::uint64_t>(offset)) % csize)
@@ -169,11 +180,12 @@ void validate_buffers(Validation& v) {
         const std::uint64_t stride = view.stride ? view.stride : element;
         const auto span = checked_mul(stride, static_cast<std::uint64_t>(count - 1));
         const auto end = span ? checked_add(*span, element) : std::nullopt;
-        const auto total = end ? checked_add(*end, static_cast<std::uint64_t>(offset)) : std::nullopt;
+        const auto total =
+            end ? checked_add(*end, static_cast<std::uint64_t>(offset)) : std::nullopt;
         if (!total || *total > view.length) {
             v.add("ACCESSOR_TOO_LONG", Severity::Error, where,
-                  "Accessor (offset: " + std::to_string(offset) + ", length: " +
-                      (end ? std::to_string(*end) : std::string("too large")) +
+                  "Accessor (offset: " + std::to_string(offset) +
+                      ", length: " + (end ? std::to_string(*end) : std::string("too large")) +
                       ") does not fit referenced bufferView [" + std::to_string(vi) + "] length " +
                       std::to_string(view.length) + ".");
             continue;
@@ -228,9 +240,11 @@ void validate_glb(Validation& v, std::span<const std::uint8_t> b) {
             v.glb_has_bin = true;
             bin_length = length;
             if (chunk != 1)
-                v.add("GLB_UNEXPECTED_BIN_CHUNK", Severity::Error, "", "BIN chunk must be the second chunk.");
+                v.add("GLB_UNEXPECTED_BIN_CHUNK", Severity::Error, "",
+                      "BIN chunk must be the second chunk.");
             if (length == 0)
-                v.add("GLB_EMPTY_BIN_CHUNK", Severity::Information, "", "Empty BIN chunk should be omitted.");
+                v.add("GLB_EMPTY_BIN_CHUNK", Severity::Information, "",
+                      "Empty BIN chunk should be omitted.");
         } else {
             json = true;
         }

@@ -22,8 +22,9 @@ public:
         if (!a.readable || a.buffer >= buffers.size()) return;
         const auto& b = buffers[a.buffer];
         const auto last = checked_mul(a.stride, a.count - 1);
-        const auto end = last ? checked_add(*last, std::size_t{component_size(a.component_type)} * a.components)
-                              : std::nullopt;
+        const auto end =
+            last ? checked_add(*last, std::size_t{component_size(a.component_type)} * a.components)
+                 : std::nullopt;
         if (!end || !range_fits(a.offset, *end, b.size())) return;
         base_ = b.data() + a.offset;
         ok_ = true;
@@ -35,12 +36,30 @@ public:
     double raw(std::uint64_t i, std::uint32_t c) const {
         const std::uint8_t* p = base_ + i * a_.stride + c * component_size(a_.component_type);
         switch (a_.component_type) {
-        case 5120: return static_cast<std::int8_t>(*p);
-        case 5121: return *p;
-        case 5122: { std::int16_t x; std::memcpy(&x, p, 2); return x; }
-        case 5123: { std::uint16_t x; std::memcpy(&x, p, 2); return x; }
-        case 5125: { std::uint32_t x; std::memcpy(&x, p, 4); return x; }
-        default: { float x; std::memcpy(&x, p, 4); return x; }
+        case 5120:
+            return static_cast<std::int8_t>(*p);
+        case 5121:
+            return *p;
+        case 5122: {
+            std::int16_t x;
+            std::memcpy(&x, p, 2);
+            return x;
+        }
+        case 5123: {
+            std::uint16_t x;
+            std::memcpy(&x, p, 2);
+            return x;
+        }
+        case 5125: {
+            std::uint32_t x;
+            std::memcpy(&x, p, 4);
+            return x;
+        }
+        default: {
+            float x;
+            std::memcpy(&x, p, 4);
+            return x;
+        }
         }
     }
     // Value as used: normalized integers mapped to [0, 1] or [-1, 1].
@@ -48,11 +67,16 @@ public:
         const double r = raw(i, c);
         if (!a_.normalized) return r;
         switch (a_.component_type) {
-        case 5120: return std::max(r / 127.0, -1.0);
-        case 5121: return r / 255.0;
-        case 5122: return std::max(r / 32767.0, -1.0);
-        case 5123: return r / 65535.0;
-        default: return r;
+        case 5120:
+            return std::max(r / 127.0, -1.0);
+        case 5121:
+            return r / 255.0;
+        case 5122:
+            return std::max(r / 32767.0, -1.0);
+        case 5123:
+            return r / 65535.0;
+        default:
+            return r;
         }
     }
     bool is_float() const { return a_.component_type == 5126; }
@@ -85,7 +109,8 @@ void check_min_max(Validation& v, std::size_t index, const Reader& r) {
             hi[c] = std::max(hi[c], x);
         }
     auto same = [&](double declared, double actual) {
-        return r.is_float() ? static_cast<float>(declared) == static_cast<float>(actual) : declared == actual;
+        return r.is_float() ? static_cast<float>(declared) == static_cast<float>(actual)
+                            : declared == actual;
     };
     for (int side = 0; side < 2; ++side) {
         const bool is_min = side == 0;
@@ -98,8 +123,9 @@ void check_min_max(Validation& v, std::size_t index, const Reader& r) {
             if (!std::isfinite(actual) || same(d, actual)) continue;
             const std::string p = ptr(ptr(where, is_min ? "min" : "max"), c);
             v.add(is_min ? "ACCESSOR_MIN_MISMATCH" : "ACCESSOR_MAX_MISMATCH", Severity::Error, p,
-                  std::string("Declared ") + (is_min ? "minimum" : "maximum") + " value for this component (" +
-                      std::to_string(d) + ") does not match actual " + (is_min ? "minimum" : "maximum") + " (" +
+                  std::string("Declared ") + (is_min ? "minimum" : "maximum") +
+                      " value for this component (" + std::to_string(d) +
+                      ") does not match actual " + (is_min ? "minimum" : "maximum") + " (" +
                       std::to_string(actual) + ").");
             if (is_min ? actual < d && !same(d, actual) : actual > d && !same(d, actual)) {
                 std::uint64_t outside = 0;
@@ -107,11 +133,13 @@ void check_min_max(Validation& v, std::size_t index, const Reader& r) {
                     const double x = r.raw(i, c);
                     outside += is_min ? (x < d && !same(d, x)) : (x > d && !same(d, x));
                 }
-                v.add(is_min ? "ACCESSOR_ELEMENT_OUT_OF_MIN_BOUND" : "ACCESSOR_ELEMENT_OUT_OF_MAX_BOUND",
-                      Severity::Error, p,
-                      "Accessor contains " + std::to_string(outside) + " element(s) " +
-                          (is_min ? "less than declared minimum" : "greater than declared maximum") +
-                          " value " + std::to_string(d) + ".");
+                v.add(
+                    is_min ? "ACCESSOR_ELEMENT_OUT_OF_MIN_BOUND"
+                           : "ACCESSOR_ELEMENT_OUT_OF_MAX_BOUND",
+                    Severity::Error, p,
+                    "Accessor contains " + std::to_string(outside) + " element(s) " +
+                        (is_min ? "less than declared minimum" : "greater than declared maximum") +
+                        " value " + std::to_string(d) + ".");
             }
         }
     }
@@ -132,11 +160,11 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers b
     bool a = false, b = false, c = false;
     switch (u.use) {
     case AccessorUse::Indices: {
-        const double restart = r.components() == 1
-                                   ? (v.accessors[u.accessor].component_type == 5121   ? 255.0
-                                      : v.accessors[u.accessor].component_type == 5123 ? 65535.0
-                                                                                       : 4294967295.0)
-                                   : -1;
+        const double restart =
+            r.components() == 1 ? (v.accessors[u.accessor].component_type == 5121   ? 255.0
+                                   : v.accessors[u.accessor].component_type == 5123 ? 65535.0
+                                                                                    : 4294967295.0)
+                                : -1;
         std::uint64_t degenerate = 0;
         for (std::uint64_t i = 0; i < n; ++i) {
             const double x = r.raw(i, 0);
@@ -148,7 +176,8 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers b
                          std::to_string(u.limit ? u.limit - 1 : 0) + ").");
             if (x == restart)
                 once(b, "ACCESSOR_INDEX_PRIMITIVE_RESTART", Severity::Error,
-                     "Indices accessor contains primitive restart value at index " + std::to_string(i) + ".");
+                     "Indices accessor contains primitive restart value at index " +
+                         std::to_string(i) + ".");
             if (u.mode == 4 && i % 3 == 2) {
                 const double p = r.raw(i - 2, 0), q = r.raw(i - 1, 0);
                 degenerate += p == q || q == x || x == p;
@@ -156,8 +185,8 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers b
         }
         if (degenerate)
             v.add("ACCESSOR_INDEX_TRIANGLE_DEGENERATE", Severity::Information, u.pointer,
-                  "Indices accessor contains " + std::to_string(degenerate) + " degenerate triangles (out of " +
-                      std::to_string(n / 3) + ").");
+                  "Indices accessor contains " + std::to_string(degenerate) +
+                      " degenerate triangles (out of " + std::to_string(n / 3) + ").");
         break;
     }
     case AccessorUse::Normal:
@@ -167,14 +196,15 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers b
             const double len = length3(r, i);
             if (std::isfinite(len) && std::abs(len - 1) > 0.00674)
                 once(a, "ACCESSOR_VECTOR3_NON_UNIT", Severity::Error,
-                     "Vector3 at accessor element " + std::to_string(i) + " is not of unit length: " +
-                         std::to_string(len) + ".");
+                     "Vector3 at accessor element " + std::to_string(i) +
+                         " is not of unit length: " + std::to_string(len) + ".");
             if (u.use == AccessorUse::Tangent && r.components() == 4) {
                 const double w = r.value(i, 3);
                 if (w != 1 && w != -1)
                     once(b, "ACCESSOR_INVALID_SIGN", Severity::Error,
                          "Vector3 with sign at accessor element " + std::to_string(i) +
-                             " has invalid w component: " + std::to_string(w) + ". Must be 1.0 or -1.0.");
+                             " has invalid w component: " + std::to_string(w) +
+                             ". Must be 1.0 or -1.0.");
             }
         }
         break;
@@ -204,9 +234,10 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers b
                 const double j = r.raw(i, k);
                 if (u.limit && j > static_cast<double>(u.limit) - 1) {
                     once(a, "ACCESSOR_JOINTS_INDEX_OOB", Severity::Error,
-                         "Joints accessor element at index " + std::to_string(i * 4 + k) + " has value " +
-                             std::to_string(static_cast<std::uint64_t>(j)) +
-                             " that is greater than the maximum joint index (" + std::to_string(u.limit - 1) + ").");
+                         "Joints accessor element at index " + std::to_string(i * 4 + k) +
+                             " has value " + std::to_string(static_cast<std::uint64_t>(j)) +
+                             " that is greater than the maximum joint index (" +
+                             std::to_string(u.limit - 1) + ").");
                     continue;
                 }
                 if (!w) continue;
@@ -215,8 +246,8 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers b
                     for (std::uint32_t m = 0; m < k; ++m)
                         if (r.raw(i, m) == j && w->value(i, m) != 0)
                             once(b, "ACCESSOR_JOINTS_INDEX_DUPLICATE", Severity::Error,
-                                 "Joints accessor element at index " + std::to_string(i * 4 + k) + " has value " +
-                                     std::to_string(static_cast<std::uint64_t>(j)) +
+                                 "Joints accessor element at index " + std::to_string(i * 4 + k) +
+                                     " has value " + std::to_string(static_cast<std::uint64_t>(j)) +
                                      " that is already in use for the vertex.");
                     if (wk < 0) {
                         if (!neg)
@@ -239,7 +270,8 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers b
                 sum_said = true;
                 v.add("ACCESSOR_WEIGHTS_NON_NORMALIZED", Severity::Error, wp,
                       "Weights accessor elements (at indices " + std::to_string(i * 4) + ".." +
-                          std::to_string(i * 4 + 3) + ") have non-normalized sum: " + std::to_string(sum) + ".");
+                          std::to_string(i * 4 + 3) +
+                          ") have non-normalized sum: " + std::to_string(sum) + ".");
             }
         }
         break;
@@ -249,13 +281,13 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers b
             const double t = r.raw(i, 0);
             if (t < 0)
                 once(a, "ACCESSOR_ANIMATION_INPUT_NEGATIVE", Severity::Error,
-                     "Animation input accessor element at index " + std::to_string(i) + " is negative: " +
-                         std::to_string(t) + ".");
+                     "Animation input accessor element at index " + std::to_string(i) +
+                         " is negative: " + std::to_string(t) + ".");
             else if (i > 0 && t <= r.raw(i - 1, 0))
                 once(b, "ACCESSOR_ANIMATION_INPUT_NON_INCREASING", Severity::Error,
                      "Animation input accessor element at index " + std::to_string(i) +
-                         " is less than or equal to previous: " + std::to_string(t) + " <= " +
-                         std::to_string(r.raw(i - 1, 0)) + ".");
+                         " is less than or equal to previous: " + std::to_string(t) +
+                         " <= " + std::to_string(r.raw(i - 1, 0)) + ".");
         }
         break;
     case AccessorUse::AnimationOutputRotation:
@@ -265,12 +297,14 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers b
             double len2 = 0;
             for (std::uint32_t k = 0; k < 4; ++k) len2 += r.value(i, k) * r.value(i, k);
             if (std::isfinite(len2) && std::abs(std::sqrt(len2) - 1) > 0.00769)
-                once(a, "ACCESSOR_ANIMATION_SAMPLER_OUTPUT_NON_NORMALIZED_QUATERNION", Severity::Error,
+                once(a, "ACCESSOR_ANIMATION_SAMPLER_OUTPUT_NON_NORMALIZED_QUATERNION",
+                     Severity::Error,
                      "Animation sampler output accessor element " + std::to_string(i) +
                          " is not of unit length: " + std::to_string(std::sqrt(len2)) + ".");
         }
         break;
-    default: break;
+    default:
+        break;
     }
 }
 
@@ -280,10 +314,12 @@ void validate_data(Validation& v, Buffers buffers) {
     const Json& buffers_json = v.array("buffers");
     for (std::size_t i = 0; i < buffers_json.size() && i < buffers.size(); ++i) {
         const std::int64_t declared = int_or(buffers_json[i], "byteLength", 0);
-        if (!buffers[i].empty() && declared > 0 && buffers[i].size() < static_cast<std::uint64_t>(declared))
+        if (!buffers[i].empty() && declared > 0 &&
+            buffers[i].size() < static_cast<std::uint64_t>(declared))
             v.add("BUFFER_BYTE_LENGTH_MISMATCH", Severity::Error, ptr("/buffers", i),
                   "Actual data byte length (" + std::to_string(buffers[i].size()) +
-                      ") is less than the declared buffer byte length (" + std::to_string(declared) + ").");
+                      ") is less than the declared buffer byte length (" +
+                      std::to_string(declared) + ").");
     }
     for (std::size_t i = 0; i < v.accessors.size(); ++i) {
         if (v.accessors[i].sparse) continue; // values are the base with overrides: not read here

@@ -34,8 +34,9 @@ void DocumentValidator::check_data(std::span<const std::span<const std::uint8_t>
 
 std::string pointer_of_path(std::string_view text) {
     std::size_t end = 0;
-    while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_' ||
-                                 text[end] == '[' || text[end] == ']' || text[end] == '.'))
+    while (end < text.size() &&
+           (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_' ||
+            text[end] == '[' || text[end] == ']' || text[end] == '.'))
         ++end;
     const std::string_view path = text.substr(0, end);
     if (path.empty() || path.find('[') == std::string_view::npos) return {};

@@ -39,9 +39,9 @@ enum class AccessorUse : std::uint8_t {
 struct AccessorUsage {
     std::size_t accessor = 0;
     AccessorUse use = AccessorUse::Position;
-    std::string pointer;     // where the use is (the Khronos pointer for data messages)
-    std::uint64_t limit = 0; // Indices: vertex count; Joints: joint count
-    int mode = 4;            // Indices: primitive mode
+    std::string pointer;            // where the use is (the Khronos pointer for data messages)
+    std::uint64_t limit = 0;        // Indices: vertex count; Joints: joint count
+    int mode = 4;                   // Indices: primitive mode
     std::size_t partner = SIZE_MAX; // Joints: its WEIGHTS accessor
 };
 
@@ -101,7 +101,7 @@ std::int64_t as_int(const Json& j);
 std::int64_t int_or(const Json& obj, const char* key, std::int64_t fallback);
 // A valid index into root array `target` at obj[key], or -1.
 std::int64_t ref(const Validation& v, const Json& obj, const char* key, const char* target);
-std::uint32_t components_of(std::string_view type); // "VEC3" -> 3, 0 when unknown
+std::uint32_t components_of(std::string_view type);        // "VEC3" -> 3, 0 when unknown
 std::uint32_t component_size(std::int64_t component_type); // 5126 -> 4, 0 when unknown
 
 } // namespace sherpa::detail
@@ -125,7 +125,8 @@ private:
 // with `code` and the JSON pointer its leading path names.
 void add_import_message(ValidationReport& report, std::string_view code, Severity severity,
                         const std::string& text);
-// "meshes[0].primitives[1].attributes.POSITION: ..." -> "/meshes/0/primitives/1/attributes/POSITION"
+// "meshes[0].primitives[1].attributes.POSITION: ..." ->
+// "/meshes/0/primitives/1/attributes/POSITION"
 std::string pointer_of_path(std::string_view text);
 
 } // namespace sherpa::detail

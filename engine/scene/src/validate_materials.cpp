@@ -21,7 +21,8 @@ void textures_of(const Json& j, std::vector<std::uint8_t>& used, int depth) {
     if (depth > 8 || !j.is_object()) return;
     for (const auto& [key, value] : j.items()) {
         if (!value.is_object()) continue;
-        if (key.ends_with("Texture") || key.ends_with("texture")) mark(used, int_or(value, "index", -1));
+        if (key.ends_with("Texture") || key.ends_with("texture"))
+            mark(used, int_or(value, "index", -1));
         textures_of(value, used, depth + 1);
     }
 }
@@ -39,7 +40,8 @@ void validate_materials(Validation& v) {
         if (persp.is_object() && ortho.is_object())
             v.add("ONE_OF_MISMATCH", Severity::Error, where,
                   "Exactly one of ('perspective', 'orthographic') properties must be defined.");
-        else if ((type == "perspective" && !persp.is_object()) || (type == "orthographic" && !ortho.is_object()))
+        else if ((type == "perspective" && !persp.is_object()) ||
+                 (type == "orthographic" && !ortho.is_object()))
             v.add("UNDEFINED_PROPERTY", Severity::Error, where,
                   "Property '" + type.get<std::string>() + "' must be defined.");
         if (persp.is_object()) {
@@ -59,10 +61,11 @@ void validate_materials(Validation& v) {
                 const Json& m = Validation::member(ortho, mag);
                 if (!m.is_number()) continue;
                 if (m.get<double>() == 0)
-                    v.add("CAMERA_XMAG_YMAG_ZERO", Severity::Error, ptr(ptr(where, "orthographic"), mag),
-                          "xmag and ymag must not be zero.");
+                    v.add("CAMERA_XMAG_YMAG_ZERO", Severity::Error,
+                          ptr(ptr(where, "orthographic"), mag), "xmag and ymag must not be zero.");
                 else if (m.get<double>() < 0)
-                    v.add("CAMERA_XMAG_YMAG_NEGATIVE", Severity::Warning, ptr(ptr(where, "orthographic"), mag),
+                    v.add("CAMERA_XMAG_YMAG_NEGATIVE", Severity::Warning,
+                          ptr(ptr(where, "orthographic"), mag),
                           "xmag and ymag should not be negative.");
             }
         }
@@ -73,7 +76,8 @@ void validate_materials(Validation& v) {
         const Json& m = Validation::member(materials, i);
         const std::string where = ptr("/materials", i);
         if (m.contains("alphaCutoff") && Validation::member(m, "alphaMode") != "MASK")
-            v.add("MATERIAL_ALPHA_CUTOFF_INVALID_MODE", Severity::Warning, ptr(where, "alphaCutoff"),
+            v.add("MATERIAL_ALPHA_CUTOFF_INVALID_MODE", Severity::Warning,
+                  ptr(where, "alphaCutoff"),
                   "Alpha cutoff is supported only for 'MASK' alpha mode.");
         const Json& ext = Validation::member(m, "extensions");
         if (ext.is_object() && ext.contains("KHR_materials_emissive_strength")) {
@@ -86,7 +90,8 @@ void validate_materials(Validation& v) {
             if (zero)
                 v.add("KHR_MATERIALS_EMISSIVE_STRENGTH_ZERO_FACTOR", Severity::Warning,
                       ptr(ptr(where, "extensions"), "KHR_materials_emissive_strength"),
-                      "Emissive strength has no effect when the emissive factor is zero or undefined.");
+                      "Emissive strength has no effect when the emissive factor is zero or "
+                      "undefined.");
         }
     }
 
@@ -102,7 +107,8 @@ void validate_materials(Validation& v) {
                   "Dependency failed. 'mimeType' must be defined.");
     }
 
-    const Json& lights = Validation::member(Validation::member(v.root, "extensions"), "KHR_lights_punctual");
+    const Json& lights =
+        Validation::member(Validation::member(v.root, "extensions"), "KHR_lights_punctual");
     const Json& list = Validation::member(lights, "lights");
     for (std::size_t i = 0; i < list.size() && list.is_array(); ++i) {
         const Json& spot = Validation::member(Validation::member(list, i), "spot");
@@ -111,7 +117,8 @@ void validate_materials(Validation& v) {
         const double outer = num_or(spot, "outerConeAngle", 0.7853981633974483);
         if (outer <= inner)
             v.add("KHR_LIGHTS_PUNCTUAL_LIGHT_SPOT_ANGLES", Severity::Error,
-                  ptr(ptr(ptr("/extensions/KHR_lights_punctual/lights", i), "spot"), "outerConeAngle"),
+                  ptr(ptr(ptr("/extensions/KHR_lights_punctual/lights", i), "spot"),
+                      "outerConeAngle"),
                   "outerConeAngle is less than or equal to innerConeAngle.");
     }
 }
@@ -147,8 +154,8 @@ void validate_unused(Validation& v) {
         for (const Json& c : channels) mark(used, int_or(c, "sampler", -1));
         for (std::size_t s = 0; s < used.size(); ++s) {
             if (!used[s]) {
-                v.add("UNUSED_OBJECT", Severity::Information, ptr(ptr(ptr("/animations", a), "samplers"), s),
-                      "This object may be unused.");
+                v.add("UNUSED_OBJECT", Severity::Information,
+                      ptr(ptr(ptr("/animations", a), "samplers"), s), "This object may be unused.");
                 continue;
             }
             mark(accessors, int_or(anim_samplers[s], "input", -1));
@@ -166,7 +173,9 @@ void validate_unused(Validation& v) {
     }
     auto report = [&](const char* key, const std::vector<std::uint8_t>& used) {
         for (std::size_t i = 0; i < used.size(); ++i)
-            if (!used[i]) v.add("UNUSED_OBJECT", Severity::Information, ptr(ptr("", key), i), "This object may be unused.");
+            if (!used[i])
+                v.add("UNUSED_OBJECT", Severity::Information, ptr(ptr("", key), i),
+                      "This object may be unused.");
     };
     report("accessors", accessors);
     report("meshes", meshes);

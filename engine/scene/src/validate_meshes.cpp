@@ -27,8 +27,8 @@ struct Format {
 
 std::string format_text(const AccessorLayout& a, const Json& acc) {
     const auto type = acc.find("type");
-    return "{" + (type != acc.end() && type->is_string() ? type->get<std::string>() : "null") + ", " +
-           (a.component_type ? std::to_string(a.component_type) : "null") +
+    return "{" + (type != acc.end() && type->is_string() ? type->get<std::string>() : "null") +
+           ", " + (a.component_type ? std::to_string(a.component_type) : "null") +
            (a.normalized ? " normalized" : "") + "}";
 }
 
@@ -42,7 +42,8 @@ bool format_ok(std::string_view semantic, std::uint32_t comps, int ct, bool norm
     if (semantic == "POSITION") return comps == 3 && (f || (quantized && small_int));
     if (semantic == "NORMAL") return comps == 3 && (f || (quantized && snorm));
     if (semantic == "TANGENT") return comps == 4 && (f || (quantized && snorm));
-    if (numbered(semantic, "TEXCOORD_", n)) return comps == 2 && (f || unorm || (quantized && small_int));
+    if (numbered(semantic, "TEXCOORD_", n))
+        return comps == 2 && (f || unorm || (quantized && small_int));
     if (numbered(semantic, "COLOR_", n)) return (comps == 3 || comps == 4) && (f || unorm);
     if (numbered(semantic, "JOINTS_", n)) return comps == 4 && (ct == 5121 || ct == 5123) && !norm;
     if (numbered(semantic, "WEIGHTS_", n)) return comps == 4 && (f || unorm);
@@ -74,7 +75,8 @@ void validate_meshes(Validation& v) {
     const Json& accessors = v.array("accessors");
     const Json& views = v.array("bufferViews");
     auto view_of = [&](std::int64_t a) -> const Json& {
-        const std::int64_t vi = ref(v, accessors[static_cast<std::size_t>(a)], "bufferView", "bufferViews");
+        const std::int64_t vi =
+            ref(v, accessors[static_cast<std::size_t>(a)], "bufferView", "bufferViews");
         return vi >= 0 ? views[static_cast<std::size_t>(vi)] : Validation::member(views, "");
     };
     for (std::size_t m = 0; m < meshes.size(); ++m) {
@@ -95,22 +97,32 @@ void validate_meshes(Validation& v) {
             for (const auto& [name, value] : attributes.items()) {
                 const std::string ap = ptr(attr_where, name);
                 int n = 0;
-                if (name == "POSITION") has_position = true;
-                else if (name == "NORMAL") has_normal = true;
-                else if (name == "TANGENT") has_tangent = true;
-                else if (numbered(name, "TEXCOORD_", n)) texcoords.insert(n);
-                else if (numbered(name, "COLOR_", n)) colors.insert(n);
-                else if (numbered(name, "JOINTS_", n)) ++joints, joint_sets.insert(n);
-                else if (numbered(name, "WEIGHTS_", n)) ++weights, weight_sets.insert(n);
+                if (name == "POSITION")
+                    has_position = true;
+                else if (name == "NORMAL")
+                    has_normal = true;
+                else if (name == "TANGENT")
+                    has_tangent = true;
+                else if (numbered(name, "TEXCOORD_", n))
+                    texcoords.insert(n);
+                else if (numbered(name, "COLOR_", n))
+                    colors.insert(n);
+                else if (numbered(name, "JOINTS_", n))
+                    ++joints, joint_sets.insert(n);
+                else if (numbered(name, "WEIGHTS_", n))
+                    ++weights, weight_sets.insert(n);
                 else if (!name.starts_with("_"))
-                    v.add("MESH_PRIMITIVE_INVALID_ATTRIBUTE", Severity::Error, ap, "Invalid attribute name.");
+                    v.add("MESH_PRIMITIVE_INVALID_ATTRIBUTE", Severity::Error, ap,
+                          "Invalid attribute name.");
                 if (!value.is_number() || !is_int(value)) {
-                    v.add("TYPE_MISMATCH", Severity::Error, ap, "Type mismatch. Property value is not a 'integer'.");
+                    v.add("TYPE_MISMATCH", Severity::Error, ap,
+                          "Type mismatch. Property value is not a 'integer'.");
                     continue;
                 }
                 const std::int64_t a = as_int(value);
                 if (a < 0) {
-                    v.add("INVALID_INDEX", Severity::Error, ap, "Index must be a non-negative integer.");
+                    v.add("INVALID_INDEX", Severity::Error, ap,
+                          "Index must be a non-negative integer.");
                     continue;
                 }
                 if (static_cast<std::size_t>(a) >= accessors.size()) {
@@ -122,7 +134,9 @@ void validate_meshes(Validation& v) {
                 const Json& acc = accessors[static_cast<std::size_t>(a)];
                 const AccessorLayout& layout = v.accessors[static_cast<std::size_t>(a)];
                 const std::uint32_t comps =
-                    acc.contains("type") && acc["type"].is_string() ? components_of(acc["type"].get_ref<const std::string&>()) : 0;
+                    acc.contains("type") && acc["type"].is_string()
+                        ? components_of(acc["type"].get_ref<const std::string&>())
+                        : 0;
                 const int ct = static_cast<int>(int_or(acc, "componentType", 0));
                 const bool norm = acc.contains("normalized") && acc["normalized"] == true;
                 if (ct == 5125)
@@ -130,10 +144,12 @@ void validate_meshes(Validation& v) {
                           "Mesh attributes cannot use UNSIGNED_INT component type.");
                 else if (!format_ok(name, comps, component_size(ct) ? ct : 0, norm, quantized))
                     v.add("MESH_PRIMITIVE_ATTRIBUTES_ACCESSOR_INVALID_FORMAT", Severity::Error, ap,
-                          "Invalid accessor format '" + format_text(layout, acc) + "' for this attribute semantic.");
+                          "Invalid accessor format '" + format_text(layout, acc) +
+                              "' for this attribute semantic.");
                 if (name == "POSITION" && (!layout.has_min || !layout.has_max))
                     v.add("MESH_PRIMITIVE_POSITION_ACCESSOR_WITHOUT_BOUNDS", Severity::Error, ap,
-                          "accessor.min and accessor.max must be defined for POSITION attribute accessor.");
+                          "accessor.min and accessor.max must be defined for POSITION attribute "
+                          "accessor.");
                 const Json& view = view_of(a);
                 if (view.is_object() && !view.contains("target"))
                     v.add("BUFFER_VIEW_TARGET_MISSING", Severity::Hint, ap,
@@ -142,33 +158,44 @@ void validate_meshes(Validation& v) {
                 if (name == "POSITION") position_count = count;
                 if (first_count < 0) first_count = count;
                 AccessorUse use = AccessorUse::Position;
-                if (name == "NORMAL") use = AccessorUse::Normal;
-                else if (name == "TANGENT") use = AccessorUse::Tangent;
-                else if (name.starts_with("JOINTS_")) use = AccessorUse::Joints;
-                else if (name.starts_with("WEIGHTS_")) use = AccessorUse::Weights;
-                else if (name.starts_with("COLOR_")) use = AccessorUse::Color;
-                else if (name != "POSITION") continue;
+                if (name == "NORMAL")
+                    use = AccessorUse::Normal;
+                else if (name == "TANGENT")
+                    use = AccessorUse::Tangent;
+                else if (name.starts_with("JOINTS_"))
+                    use = AccessorUse::Joints;
+                else if (name.starts_with("WEIGHTS_"))
+                    use = AccessorUse::Weights;
+                else if (name.starts_with("COLOR_"))
+                    use = AccessorUse::Color;
+                else if (name != "POSITION")
+                    continue;
                 v.usages.push_back({static_cast<std::size_t>(a), use, ap});
             }
             const std::int64_t vertex_count = position_count >= 0 ? position_count : first_count;
             for (const auto& [name, a] : resolved)
-                if (const std::int64_t c = int_or(accessors[static_cast<std::size_t>(a)], "count", -1);
+                if (const std::int64_t c =
+                        int_or(accessors[static_cast<std::size_t>(a)], "count", -1);
                     c >= 0 && vertex_count >= 0 && c != vertex_count)
-                    v.add("MESH_PRIMITIVE_UNEQUAL_ACCESSOR_COUNT", Severity::Error, ptr(attr_where, name),
+                    v.add("MESH_PRIMITIVE_UNEQUAL_ACCESSOR_COUNT", Severity::Error,
+                          ptr(attr_where, name),
                           "All accessors of the same primitive must have the same count.");
             if (attributes.is_object() && !has_position)
-                v.add("MESH_PRIMITIVE_NO_POSITION", Severity::Warning, attr_where, "No POSITION attribute found.");
+                v.add("MESH_PRIMITIVE_NO_POSITION", Severity::Warning, attr_where,
+                      "No POSITION attribute found.");
             if (has_tangent && !has_normal)
-                v.add("MESH_PRIMITIVE_TANGENT_WITHOUT_NORMAL", Severity::Warning, ptr(attr_where, "TANGENT"),
-                      "TANGENT attribute without NORMAL found.");
+                v.add("MESH_PRIMITIVE_TANGENT_WITHOUT_NORMAL", Severity::Warning,
+                      ptr(attr_where, "TANGENT"), "TANGENT attribute without NORMAL found.");
             if (joints != weights)
                 v.add("MESH_PRIMITIVE_JOINTS_WEIGHTS_MISMATCH", Severity::Error, attr_where,
                       "Number of JOINTS attribute semantics (" + std::to_string(joints) +
-                          ") does not match the number of WEIGHTS (" + std::to_string(weights) + ").");
+                          ") does not match the number of WEIGHTS (" + std::to_string(weights) +
+                          ").");
             for (const auto* sets : {&texcoords, &colors, &joint_sets, &weight_sets})
                 if (!sets->empty() && (*sets->rbegin() + 1 != static_cast<int>(sets->size())))
                     v.add("MESH_PRIMITIVE_INDEXED_SEMANTIC_CONTINUITY", Severity::Error, attr_where,
-                          "Indices for indexed attribute semantic must start with 0 and be continuous.");
+                          "Indices for indexed attribute semantic must start with 0 and be "
+                          "continuous.");
             // Pair each JOINTS_n with WEIGHTS_n for the data pass.
             for (auto& u : v.usages)
                 if (u.use == AccessorUse::Joints && u.pointer.starts_with(attr_where + "/")) {
@@ -184,9 +211,11 @@ void validate_meshes(Validation& v) {
                 const Json& acc = accessors[static_cast<std::size_t>(ia)];
                 const std::int64_t ct = int_or(acc, "componentType", 0);
                 if (!(acc.contains("type") && acc["type"] == "SCALAR") ||
-                    !(ct == 5121 || ct == 5123 || ct == 5125) || (acc.contains("normalized") && acc["normalized"] == true))
+                    !(ct == 5121 || ct == 5123 || ct == 5125) ||
+                    (acc.contains("normalized") && acc["normalized"] == true))
                     v.add("MESH_PRIMITIVE_INDICES_ACCESSOR_INVALID_FORMAT", Severity::Error, ip,
-                          "Invalid indices accessor format. Must be one of ('{SCALAR, UNSIGNED_BYTE}', "
+                          "Invalid indices accessor format. Must be one of ('{SCALAR, "
+                          "UNSIGNED_BYTE}', "
                           "'{SCALAR, UNSIGNED_SHORT}', '{SCALAR, UNSIGNED_INT}').");
                 const Json& view = view_of(ia);
                 if (view.is_object() && view.contains("byteStride"))
@@ -210,7 +239,8 @@ void validate_meshes(Validation& v) {
                 if (!ok)
                     v.add("MESH_PRIMITIVE_INCOMPATIBLE_MODE", Severity::Warning, where,
                           "Number of vertices or indices (" + std::to_string(element_count) +
-                              ") is not compatible with used drawing mode (" + std::to_string(mode) + ").");
+                              ") is not compatible with used drawing mode (" +
+                              std::to_string(mode) + ").");
             }
 
             // Morph targets.
@@ -221,23 +251,30 @@ void validate_meshes(Validation& v) {
                 for (std::size_t t = 0; t < ts.size(); ++t)
                     for (const auto& [name, value] : Validation::member(ts, t).items()) {
                         const std::string tp = ptr(ptr(ptr(where, "targets"), t), name);
-                        if (!is_int(value) || as_int(value) < 0 || static_cast<std::size_t>(as_int(value)) >= accessors.size()) {
-                            v.add("UNRESOLVED_REFERENCE", Severity::Error, tp, "Unresolved reference.");
+                        if (!is_int(value) || as_int(value) < 0 ||
+                            static_cast<std::size_t>(as_int(value)) >= accessors.size()) {
+                            v.add("UNRESOLVED_REFERENCE", Severity::Error, tp,
+                                  "Unresolved reference.");
                             continue;
                         }
-                        if (name == "POSITION" && (!v.accessors[static_cast<std::size_t>(as_int(value))].has_min ||
-                                                   !v.accessors[static_cast<std::size_t>(as_int(value))].has_max))
-                            v.add("MESH_PRIMITIVE_POSITION_ACCESSOR_WITHOUT_BOUNDS", Severity::Error, tp,
-                                  "accessor.min and accessor.max must be defined for POSITION attribute accessor.");
+                        if (name == "POSITION" &&
+                            (!v.accessors[static_cast<std::size_t>(as_int(value))].has_min ||
+                             !v.accessors[static_cast<std::size_t>(as_int(value))].has_max))
+                            v.add("MESH_PRIMITIVE_POSITION_ACCESSOR_WITHOUT_BOUNDS",
+                                  Severity::Error, tp,
+                                  "accessor.min and accessor.max must be defined for POSITION "
+                                  "attribute accessor.");
                         if (!resolved.contains(name))
-                            v.add("MESH_PRIMITIVE_MORPH_TARGET_NO_BASE_ACCESSOR", Severity::Error, tp,
+                            v.add("MESH_PRIMITIVE_MORPH_TARGET_NO_BASE_ACCESSOR", Severity::Error,
+                                  tp,
                                   "The mesh primitive does not define this attribute semantic.");
-                        else if (int_or(accessors[static_cast<std::size_t>(as_int(value))], "count", -1) != vertex_count)
-                            v.add("MESH_PRIMITIVE_MORPH_TARGET_INVALID_ATTRIBUTE_COUNT", Severity::Error, tp,
-                                  "Base accessor has different count.");
+                        else if (int_or(accessors[static_cast<std::size_t>(as_int(value))], "count",
+                                        -1) != vertex_count)
+                            v.add("MESH_PRIMITIVE_MORPH_TARGET_INVALID_ATTRIBUTE_COUNT",
+                                  Severity::Error, tp, "Base accessor has different count.");
                     }
             }
-                        if (first_targets == SIZE_MAX)
+            if (first_targets == SIZE_MAX)
                 first_targets = target_count;
             else if (first_targets != target_count)
                 v.add("MESH_PRIMITIVES_UNEQUAL_TARGETS_COUNT", Severity::Error, where,
@@ -253,29 +290,36 @@ void validate_meshes(Validation& v) {
                                  material.contains("normalTexture");
                 for (std::int64_t s : sets)
                     if (!texcoords.contains(static_cast<int>(s))) {
-                        v.add("MESH_PRIMITIVE_TOO_FEW_TEXCOORDS", Severity::Error, ptr(where, "material"),
+                        v.add("MESH_PRIMITIVE_TOO_FEW_TEXCOORDS", Severity::Error,
+                              ptr(where, "material"),
                               "Material is incompatible with mesh primitive: needs 'TEXCOORD_" +
                                   std::to_string(s) + "' attribute.");
                         break;
                     }
                 if (normal_texture && !has_tangent && has_normal)
-                    v.add("MESH_PRIMITIVE_GENERATED_TANGENT_SPACE", Severity::Warning, ptr(where, "material"),
-                          "Material requires a tangent space but the mesh primitive does not provide it. "
-                          "Runtime-generated tangent space may be non-portable across implementations.");
+                    v.add("MESH_PRIMITIVE_GENERATED_TANGENT_SPACE", Severity::Warning,
+                          ptr(where, "material"),
+                          "Material requires a tangent space but the mesh primitive does not "
+                          "provide it. "
+                          "Runtime-generated tangent space may be non-portable across "
+                          "implementations.");
             }
             if (has_tangent && !normal_texture)
                 v.add("UNUSED_MESH_TANGENT", Severity::Information, ptr(attr_where, "TANGENT"),
                       "Tangents are not used because the material has no normal texture.");
             for (int t : texcoords)
                 if (!sets.contains(t))
-                    v.add("UNUSED_OBJECT", Severity::Information, ptr(attr_where, "TEXCOORD_" + std::to_string(t)),
+                    v.add("UNUSED_OBJECT", Severity::Information,
+                          ptr(attr_where, "TEXCOORD_" + std::to_string(t)),
                           "This object may be unused.");
         }
-        if (meshes[m].is_object() && meshes[m].contains("weights") && meshes[m]["weights"].is_array() &&
-            first_targets != SIZE_MAX && meshes[m]["weights"].size() != first_targets)
+        if (meshes[m].is_object() && meshes[m].contains("weights") &&
+            meshes[m]["weights"].is_array() && first_targets != SIZE_MAX &&
+            meshes[m]["weights"].size() != first_targets)
             v.add("MESH_INVALID_WEIGHTS_COUNT", Severity::Error, ptr(ptr("/meshes", m), "weights"),
                   "The length of weights array (" + std::to_string(meshes[m]["weights"].size()) +
-                      ") does not match the number of morph targets (" + std::to_string(first_targets) + ").");
+                      ") does not match the number of morph targets (" +
+                      std::to_string(first_targets) + ").");
     }
 }
 

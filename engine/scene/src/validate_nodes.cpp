@@ -67,17 +67,20 @@ void validate_nodes(Validation& v) {
                     p = static_cast<std::int64_t>(i);
             }
         const Json& matrix = Validation::member(node, "matrix");
-        const bool has_trs = node.contains("translation") || node.contains("rotation") || node.contains("scale");
+        const bool has_trs =
+            node.contains("translation") || node.contains("rotation") || node.contains("scale");
         bool matrix_ok = matrix.is_array() && matrix.size() == 16;
         for (const Json& x : matrix) matrix_ok &= x.is_number();
         if (matrix_ok) {
             if (has_trs)
                 v.add("NODE_MATRIX_TRS", Severity::Error, ptr(where, "matrix"),
-                      "A node can have either a matrix or any combination of translation/rotation/scale "
+                      "A node can have either a matrix or any combination of "
+                      "translation/rotation/scale "
                       "(TRS) properties.");
             bool identity = true;
             for (int k = 0; k < 16; ++k)
-                identity &= matrix[static_cast<std::size_t>(k)].get<double>() == (k % 5 == 0 ? 1.0 : 0.0);
+                identity &=
+                    matrix[static_cast<std::size_t>(k)].get<double>() == (k % 5 == 0 ? 1.0 : 0.0);
             if (identity)
                 v.add("NODE_MATRIX_DEFAULT", Severity::Information, ptr(where, "matrix"),
                       "Do not specify default transform matrix.");
@@ -90,7 +93,8 @@ void validate_nodes(Validation& v) {
             double len2 = 0;
             bool in_range = true;
             for (const Json& x : rotation) {
-                if (!x.is_number()) in_range = false;
+                if (!x.is_number())
+                    in_range = false;
                 else {
                     const double c = x.get<double>();
                     in_range &= c >= -1 && c <= 1;
@@ -124,10 +128,13 @@ void validate_nodes(Validation& v) {
             // Joint indices of the mesh's skinned primitives are checked against this skin.
             if (skin >= 0) {
                 const std::uint64_t joints =
-                    Validation::member(v.array("skins")[static_cast<std::size_t>(skin)], "joints").size();
-                const std::string prefix = ptr(ptr("/meshes", static_cast<std::size_t>(mesh)), "primitives");
+                    Validation::member(v.array("skins")[static_cast<std::size_t>(skin)], "joints")
+                        .size();
+                const std::string prefix =
+                    ptr(ptr("/meshes", static_cast<std::size_t>(mesh)), "primitives");
                 for (auto& u : v.usages)
-                    if (u.use == AccessorUse::Joints && u.pointer.starts_with(prefix) && u.limit == 0)
+                    if (u.use == AccessorUse::Joints && u.pointer.starts_with(prefix) &&
+                        u.limit == 0)
                         u.limit = joints;
             }
         }
@@ -140,29 +147,35 @@ void validate_nodes(Validation& v) {
     for (std::size_t i = 0; i < n; ++i) {
         std::int64_t at = parent[i];
         std::size_t steps = 0;
-        while (at >= 0 && at != static_cast<std::int64_t>(i) && steps++ <= n) at = parent[static_cast<std::size_t>(at)];
+        while (at >= 0 && at != static_cast<std::int64_t>(i) && steps++ <= n)
+            at = parent[static_cast<std::size_t>(at)];
         if (at == static_cast<std::int64_t>(i)) in_loop[i] = 1;
     }
     for (std::size_t i = 0; i < n; ++i)
-        if (in_loop[i]) v.add("NODE_LOOP", Severity::Error, ptr("/nodes", i), "Node is a part of a node loop.");
+        if (in_loop[i])
+            v.add("NODE_LOOP", Severity::Error, ptr("/nodes", i), "Node is a part of a node loop.");
     auto root_of = [&](std::int64_t i) {
         std::size_t steps = 0;
-        while (parent[static_cast<std::size_t>(i)] >= 0 && steps++ <= n) i = parent[static_cast<std::size_t>(i)];
+        while (parent[static_cast<std::size_t>(i)] >= 0 && steps++ <= n)
+            i = parent[static_cast<std::size_t>(i)];
         return i;
     };
     for (std::size_t i = 0; i < n; ++i)
-        if (parent[i] >= 0 && !in_loop[i] && nodes[i].is_object() && ref(v, nodes[i], "skin", "skins") >= 0 &&
-            ref(v, nodes[i], "mesh", "meshes") >= 0)
+        if (parent[i] >= 0 && !in_loop[i] && nodes[i].is_object() &&
+            ref(v, nodes[i], "skin", "skins") >= 0 && ref(v, nodes[i], "mesh", "meshes") >= 0)
             v.add("NODE_SKINNED_MESH_NON_ROOT", Severity::Warning, ptr("/nodes", i),
-                  "Node with a skinned mesh is not root. Parent transforms will not affect a skinned mesh.");
+                  "Node with a skinned mesh is not root. Parent transforms will not affect a "
+                  "skinned mesh.");
 
     const Json& scenes = v.array("scenes");
     for (std::size_t s = 0; s < scenes.size(); ++s) {
         const Json& roots = Validation::member(scenes[s], "nodes");
         for (std::size_t k = 0; k < roots.size() && roots.is_array(); ++k)
-            if (is_int(roots[k]) && as_int(roots[k]) >= 0 && static_cast<std::size_t>(as_int(roots[k])) < n &&
+            if (is_int(roots[k]) && as_int(roots[k]) >= 0 &&
+                static_cast<std::size_t>(as_int(roots[k])) < n &&
                 parent[static_cast<std::size_t>(as_int(roots[k]))] >= 0)
-                v.add("SCENE_NON_ROOT_NODE", Severity::Error, ptr(ptr(ptr("/scenes", s), "nodes"), k),
+                v.add("SCENE_NON_ROOT_NODE", Severity::Error,
+                      ptr(ptr(ptr("/scenes", s), "nodes"), k),
                       "Node " + std::to_string(as_int(roots[k])) + " is not a root node.");
     }
 
@@ -182,17 +195,21 @@ void validate_nodes(Validation& v) {
             }
             if (in_loop[static_cast<std::size_t>(as_int(j))]) continue;
             const std::int64_t r = root_of(as_int(j));
-            if (common == -2) common = r;
-            else if (common != r) common_ok = false;
+            if (common == -2)
+                common = r;
+            else if (common != r)
+                common_ok = false;
         }
         if (joints.is_array() && !joints.empty() && !common_ok)
-            v.add("SKIN_NO_COMMON_ROOT", Severity::Error, ptr(where, "joints"), "Joints do not have a common root.");
+            v.add("SKIN_NO_COMMON_ROOT", Severity::Error, ptr(where, "joints"),
+                  "Joints do not have a common root.");
         if (const std::int64_t sk = ref(v, skin, "skeleton", "nodes"); sk >= 0 && common_ok) {
             bool ancestor = true;
             for (const Json& j : joints) {
                 std::int64_t at = as_int(j);
                 std::size_t steps = 0;
-                while (at >= 0 && at != sk && steps++ <= n) at = parent[static_cast<std::size_t>(at)];
+                while (at >= 0 && at != sk && steps++ <= n)
+                    at = parent[static_cast<std::size_t>(at)];
                 ancestor &= at == sk;
             }
             if (!ancestor)
@@ -202,15 +219,18 @@ void validate_nodes(Validation& v) {
         if (const std::int64_t ibm = ref(v, skin, "inverseBindMatrices", "accessors"); ibm >= 0) {
             const Json& acc = accessors[static_cast<std::size_t>(ibm)];
             const std::string ip = ptr(where, "inverseBindMatrices");
-            if (!(acc.contains("type") && acc["type"] == "MAT4") || int_or(acc, "componentType", 0) != 5126)
+            if (!(acc.contains("type") && acc["type"] == "MAT4") ||
+                int_or(acc, "componentType", 0) != 5126)
                 v.add("SKIN_IBM_INVALID_FORMAT", Severity::Error, ip,
                       "Invalid IBM accessor format. Must be one of ('{MAT4, FLOAT}').");
-            else if (joints.is_array() && int_or(acc, "count", 0) < static_cast<std::int64_t>(joints.size()))
+            else if (joints.is_array() &&
+                     int_or(acc, "count", 0) < static_cast<std::int64_t>(joints.size()))
                 v.add("INVALID_IBM_ACCESSOR_COUNT", Severity::Error, ip,
-                      "IBM accessor must have at least " + std::to_string(joints.size()) + " elements. Found " +
-                          std::to_string(int_or(acc, "count", 0)) + ".");
+                      "IBM accessor must have at least " + std::to_string(joints.size()) +
+                          " elements. Found " + std::to_string(int_or(acc, "count", 0)) + ".");
             else
-                v.usages.push_back({static_cast<std::size_t>(ibm), AccessorUse::InverseBindMatrices, ip});
+                v.usages.push_back(
+                    {static_cast<std::size_t>(ibm), AccessorUse::InverseBindMatrices, ip});
         }
     }
 }

@@ -58,8 +58,7 @@ bool valid_extension_name(std::string_view s) {
     for (std::size_t i = 0; i < s.size(); ++i) {
         const char c = s[i];
         const bool upper_digit = (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
-        if (i < us ? !upper_digit
-                   : !(upper_digit || (c >= 'a' && c <= 'z') || c == '_'))
+        if (i < us ? !upper_digit : !(upper_digit || (c >= 'a' && c <= 'z') || c == '_'))
             return false;
     }
     return true;
@@ -187,7 +186,8 @@ bool is_int(const Json& j) {
 
 std::int64_t as_int(const Json& j) {
     if (j.is_number_unsigned())
-        return static_cast<std::int64_t>(std::min<std::uint64_t>(j.get<std::uint64_t>(), INT64_MAX));
+        return static_cast<std::int64_t>(
+            std::min<std::uint64_t>(j.get<std::uint64_t>(), INT64_MAX));
     if (j.is_number_integer()) return j.get<std::int64_t>();
     return is_int(j) ? static_cast<std::int64_t>(j.get<double>()) : -1;
 }
@@ -216,12 +216,16 @@ std::uint32_t components_of(std::string_view t) {
 std::uint32_t component_size(std::int64_t ct) {
     switch (ct) {
     case 5120:
-    case 5121: return 1;
+    case 5121:
+        return 1;
     case 5122:
-    case 5123: return 2;
+    case 5123:
+        return 2;
     case 5125:
-    case 5126: return 4;
-    default: return 0;
+    case 5126:
+        return 4;
+    default:
+        return 0;
     }
 }
 
@@ -247,7 +251,8 @@ void validate_extensions(Validation& v) {
         }
         const std::string& name = used[i].get_ref<const std::string&>();
         if (std::find(walk.used.begin(), walk.used.end(), name) != walk.used.end()) {
-            v.add("DUPLICATE_ELEMENTS", Severity::Error, ptr("/extensionsUsed", i), "Duplicate element.");
+            v.add("DUPLICATE_ELEMENTS", Severity::Error, ptr("/extensionsUsed", i),
+                  "Duplicate element.");
             continue;
         }
         walk.used.push_back(name);
@@ -256,7 +261,8 @@ void validate_extensions(Validation& v) {
                   "Extension name has invalid format.");
         if (!known(name))
             v.add("UNSUPPORTED_EXTENSION", Severity::Information, ptr("/extensionsUsed", i),
-                  "Cannot validate an extension as it is not supported by the validator: '" + name + "'.");
+                  "Cannot validate an extension as it is not supported by the validator: '" + name +
+                      "'.");
     }
     const Json& required = v.array("extensionsRequired");
     bool quantization_required = false;

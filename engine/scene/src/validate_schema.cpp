@@ -89,10 +89,24 @@ const Kind kKinds[] = {
     {"accessor",
      {{"bufferView", T::Index, false, "bufferViews"},
       {"byteOffset", T::Int, false, nullptr, 0},
-      {"componentType", T::IntEnum, true, nullptr, 0, 0, false, {5120, 5121, 5122, 5123, 5125, 5126}},
+      {"componentType",
+       T::IntEnum,
+       true,
+       nullptr,
+       0,
+       0,
+       false,
+       {5120, 5121, 5122, 5123, 5125, 5126}},
       {"normalized", T::Bool},
       {"count", T::Int, true, nullptr, 1},
-      {"type", T::StrEnum, true, nullptr, 0, 0, false, {},
+      {"type",
+       T::StrEnum,
+       true,
+       nullptr,
+       0,
+       0,
+       false,
+       {},
        {"SCALAR", "VEC2", "VEC3", "VEC4", "MAT2", "MAT3", "MAT4"}},
       {"max", T::NumArray},
       {"min", T::NumArray},
@@ -172,11 +186,26 @@ const Kind kKinds[] = {
     {"channel", {{"sampler", T::Int, true, nullptr, 0}, {"target", T::Obj, true, "target"}}},
     {"target",
      {{"node", T::Index, false, "nodes"},
-      {"path", T::StrEnum, true, nullptr, 0, 0, false, {},
+      {"path",
+       T::StrEnum,
+       true,
+       nullptr,
+       0,
+       0,
+       false,
+       {},
        {"translation", "rotation", "scale", "weights", "pointer"}}}},
     {"animSampler",
      {{"input", T::Index, true, "accessors"},
-      {"interpolation", T::StrEnum, false, nullptr, 0, 0, false, {}, {"LINEAR", "STEP", "CUBICSPLINE"}},
+      {"interpolation",
+       T::StrEnum,
+       false,
+       nullptr,
+       0,
+       0,
+       false,
+       {},
+       {"LINEAR", "STEP", "CUBICSPLINE"}},
       {"output", T::Index, true, "accessors"}}},
 };
 
@@ -219,7 +248,9 @@ struct Schema {
     }
     void property(const Json& j, const std::string& p, const Prop& pr) {
         switch (pr.type) {
-        case T::Index: index(j, p, pr.target); break;
+        case T::Index:
+            index(j, p, pr.target);
+            break;
         case T::IndexArray: {
             if (!j.is_array()) return type_mismatch(j, p, "array");
             if (j.empty()) v.add("EMPTY_ENTITY", Severity::Error, p, "Entity cannot be empty.");
@@ -230,7 +261,8 @@ struct Schema {
                 const std::int64_t x = as_int(j[i]);
                 bool dup = false;
                 for (std::int64_t s : seen) dup |= s == x;
-                if (dup) v.add("DUPLICATE_ELEMENTS", Severity::Error, ptr(p, i), "Duplicate element.");
+                if (dup)
+                    v.add("DUPLICATE_ELEMENTS", Severity::Error, ptr(p, i), "Duplicate element.");
                 if (seen.size() < 4096) seen.push_back(x); // keeps the check linear on big arrays
             }
             break;
@@ -241,7 +273,9 @@ struct Schema {
                 v.add("VALUE_NOT_IN_RANGE", Severity::Error, p,
                       "Value " + short_text(j) + " is out of range.");
             break;
-        case T::Num: number(j, p, pr); break;
+        case T::Num:
+            number(j, p, pr);
+            break;
         case T::NumArray: {
             if (!j.is_array()) return type_mismatch(j, p, "array");
             bool length_ok = pr.lengths.size() == 0;
@@ -255,7 +289,8 @@ struct Schema {
             for (std::size_t i = 0; i < j.size(); ++i) {
                 if (!j[i].is_number()) {
                     v.add("ARRAY_TYPE_MISMATCH", Severity::Error, ptr(p, i),
-                          "Type mismatch. Array element " + short_text(j[i]) + " is not a 'number'.");
+                          "Type mismatch. Array element " + short_text(j[i]) +
+                              " is not a 'number'.");
                     continue;
                 }
                 number(j[i], ptr(p, i), pr);
@@ -301,7 +336,8 @@ struct Schema {
                       "Invalid value " + short_text(j) + ".");
             break;
         }
-        case T::Any: break;
+        case T::Any:
+            break;
         }
     }
     void object(const Json& obj, const std::string& p, const char* kind_name) {
@@ -322,7 +358,8 @@ struct Schema {
             } else if (key == "name" && std::strcmp(kind_name, "root") != 0) {
                 if (!value.is_string()) type_mismatch(value, ptr(p, key), "string");
             } else {
-                v.add("UNEXPECTED_PROPERTY", Severity::Warning, ptr(p, key), "Unexpected property.");
+                v.add("UNEXPECTED_PROPERTY", Severity::Warning, ptr(p, key),
+                      "Unexpected property.");
             }
         }
         for (const Prop& pr : kind->props)
@@ -358,7 +395,8 @@ void check_version(Validation& v) {
     if (version != asset->end() && version->is_string()) {
         if (!parse(*version, major, minor)) {
             v.add("PATTERN_MISMATCH", Severity::Error, "/asset/version",
-                  "Value " + short_text(*version) + " does not match regexp pattern '^([0-9]+)\\.([0-9]+)$'.");
+                  "Value " + short_text(*version) +
+                      " does not match regexp pattern '^([0-9]+)\\.([0-9]+)$'.");
         } else if (major != 2) {
             v.add("UNKNOWN_ASSET_MAJOR_VERSION", Severity::Error, "/asset/version",
                   "Unknown glTF major asset version: " + std::to_string(major) + ".");
@@ -372,7 +410,8 @@ void check_version(Validation& v) {
     if (min_version == asset->end() || !min_version->is_string()) return;
     if (!parse(*min_version, min_major, min_minor)) {
         v.add("PATTERN_MISMATCH", Severity::Error, "/asset/minVersion",
-              "Value " + short_text(*min_version) + " does not match regexp pattern '^([0-9]+)\\.([0-9]+)$'.");
+              "Value " + short_text(*min_version) +
+                  " does not match regexp pattern '^([0-9]+)\\.([0-9]+)$'.");
     } else if (min_major > major || (min_major == major && min_minor > minor)) {
         v.add("ASSET_MIN_VERSION_GREATER_THAN_VERSION", Severity::Error, "/asset/minVersion",
               "Asset minVersion " + short_text(*min_version) + " is greater than version.");

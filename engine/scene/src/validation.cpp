@@ -7,10 +7,14 @@ namespace sherpa {
 
 std::string_view to_string(Severity s) {
     switch (s) {
-    case Severity::Error: return "error";
-    case Severity::Warning: return "warning";
-    case Severity::Information: return "info";
-    case Severity::Hint: return "hint";
+    case Severity::Error:
+        return "error";
+    case Severity::Warning:
+        return "warning";
+    case Severity::Information:
+        return "info";
+    case Severity::Hint:
+        return "hint";
     }
     return "error";
 }
@@ -29,8 +33,9 @@ bool parse_severity(std::string_view text, Severity& out) {
 }
 
 std::size_t ValidationReport::count(Severity s) const {
-    return static_cast<std::size_t>(std::count_if(
-        messages.begin(), messages.end(), [s](const ValidationMessage& m) { return m.severity == s; }));
+    return static_cast<std::size_t>(
+        std::count_if(messages.begin(), messages.end(),
+                      [s](const ValidationMessage& m) { return m.severity == s; }));
 }
 
 } // namespace sherpa

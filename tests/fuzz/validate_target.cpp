@@ -54,7 +54,7 @@ bool ValidateTarget::init(const TargetConfig& config, std::string& error) {
     std::error_code ec;
     fs::create_directories(config.work_dir, ec);
     std::vector<fs::path> files;
-    for (const fs::path dir : {config.data_dir, config.data_dir / "validation"})
+    for (const fs::path& dir : {config.data_dir, config.data_dir / "validation"})
         for (const auto& f : fs::directory_iterator(dir, ec)) files.push_back(f.path());
     for (const auto& model : fs::directory_iterator(config.assets_dir / "gltf", ec))
         for (const auto& f : fs::recursive_directory_iterator(model.path(), ec))

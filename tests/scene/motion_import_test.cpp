@@ -157,9 +157,9 @@ TEST_P(MotionBadFile, FailsWithAClearMessage) {
 
 INSTANTIATE_TEST_SUITE_P(
     Issue16, MotionBadFile,
-    ::testing::Values(
-        test::BadCase{"motion_joint_out_of_range.gltf",
-                      "nodes[0]: meshes[0].primitives[0] uses joint 5 but skins[0] has 2 joints"}),
+    ::testing::Values(test::BadCase{
+        "motion_joint_out_of_range.gltf",
+        "nodes[0]: meshes[0].primitives[0] uses joint 5 but skins[0] has 2 joints"}),
     test::case_name);
 
 // A broken animation channel no longer refuses the file: the channel is skipped and named

@@ -40,5 +40,6 @@ int run_lab(Args args);
 int run_compare(Args args);
 int run_budget(Args args);
 int run_rt(Args args);
+int run_validate(Args args);
 
 } // namespace sherpa::cli

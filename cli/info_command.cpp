@@ -41,7 +41,13 @@ void print_text(const Scene& s, const std::vector<tex::ImageProblem>& problems) 
         std::printf("  bounds: empty (nothing drawable)\n");
     std::printf("  vertex bytes: %llu for used streams vs %llu unified (56 B/vertex)\n",
                 (unsigned long long)usage.used_bytes, (unsigned long long)usage.unified_bytes);
-    std::printf("  timings: parse %.2f ms, process %.2f ms\n", s.parse_ms, s.process_ms);
+    std::printf("  timings: parse %.2f ms, process %.2f ms, validate %.2f ms\n", s.parse_ms,
+                s.process_ms, s.validation.ms);
+    std::printf("  validation: %zu errors, %zu warnings, %zu infos, %zu hints%s"
+                "   (sherpa-cli validate lists them)\n",
+                s.validation.count(Severity::Error), s.validation.count(Severity::Warning),
+                s.validation.count(Severity::Information), s.validation.count(Severity::Hint),
+                s.validation.truncated ? " (truncated)" : "");
     for (const auto& p : problems) std::printf("  warning: texture %s\n", tex::describe(p).c_str());
     print_motion_text(s);
     for (const auto& w : s.warnings) std::printf("  warning: %s\n", w.c_str());

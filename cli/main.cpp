@@ -70,6 +70,11 @@ constexpr Command kCommands[] = {
      "sherpa-cli compare A B [--json] [--image OUT.png]\n"
      "\n"
      "Structural diff of two glTF files; --image draws where they differ.\n"},
+    {"validate", run_validate,
+     "sherpa-cli validate FILE|DIR [--json] [--max-severity error|warning|info|hint] [--jobs N]\n"
+     "\n"
+     "Khronos glTF-Validator codes and JSON pointers, per file or for every glTF in DIR.\n"
+     "Exit status: 2 when a reported message is an error, 1 a warning, 0 otherwise.\n"},
     {"budget", run_budget,
      "sherpa-cli budget SCENE [--json] [--viewport-height N]\n"
      "\n"

@@ -171,7 +171,14 @@ json scene_info_json(const Scene& scene) {
                               {"data_min", v.data_min},
                               {"data_max", v.data_max}});
     j["accessor_range_violations"] = std::move(violations);
-    j["timings_ms"] = {{"parse", scene.parse_ms}, {"process", scene.process_ms}};
+    j["timings_ms"] = {{"parse", scene.parse_ms},
+                       {"process", scene.process_ms},
+                       {"validate", scene.validation.ms}};
+    j["validation"] = {{"numErrors", scene.validation.count(Severity::Error)},
+                       {"numWarnings", scene.validation.count(Severity::Warning)},
+                       {"numInfos", scene.validation.count(Severity::Information)},
+                       {"numHints", scene.validation.count(Severity::Hint)},
+                       {"truncated", scene.validation.truncated}};
     return j;
 }
 

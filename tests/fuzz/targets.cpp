@@ -6,6 +6,7 @@
 #include "image_target.h"
 #include "pose_target.h"
 #include "texture_targets.h"
+#include "validate_target.h"
 
 #include <fstream>
 
@@ -43,6 +44,7 @@ std::vector<std::unique_ptr<Target>> make_targets() {
     t.push_back(std::make_unique<DracoTarget>());
     t.push_back(std::make_unique<ImageTarget>());
     t.push_back(std::make_unique<PoseTarget>());
+    t.push_back(std::make_unique<ValidateTarget>());
     return t;
 }
 

@@ -27,6 +27,18 @@ inline void expect_clear_load_error(const std::string& path, const std::string& 
         EXPECT_TRUE(c >= 0x20 && c < 0x7F) << "no raw bytes in a message: " << r.error;
 }
 
+// A file with a broken part that loads anyway: the part is skipped or defaulted and a
+// validation message (a SHERPA_ code, or the validator's own) contains `fragment`.
+inline void expect_loads_naming(const std::string& path, const std::string& fragment) {
+    const sherpa::LoadResult r = sherpa::load_scene(path);
+    ASSERT_TRUE(r) << r.error;
+    bool named = false;
+    for (const auto& m : r.scene->validation.messages)
+        named |= m.message.find(fragment) != std::string::npos;
+    EXPECT_TRUE(named) << path << " has no message containing: " << fragment;
+    EXPECT_GT(r.scene->validation.count(sherpa::Severity::Error), 0u) << path;
+}
+
 // gtest parameter names from file names ("a.gltf" -> "a_gltf").
 inline std::string case_name(const ::testing::TestParamInfo<BadCase>& info) {
     std::string n = info.param.file;

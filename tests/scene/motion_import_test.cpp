@@ -186,13 +186,26 @@ TEST_P(MotionBadFile, FailsWithAClearMessage) {
 
 INSTANTIATE_TEST_SUITE_P(
     Issue16, MotionBadFile,
+    ::testing::Values(test::BadCase{
+        "motion_joint_out_of_range.gltf",
+        "nodes[0]: meshes[0].primitives[0] uses joint 5 but skins[0] has 2 joints"}),
+    test::case_name);
+
+// A broken animation channel no longer refuses the file: the channel is skipped and named
+// (SHERPA_ANIMATION_CHANNEL_SKIPPED); the scene and the other channels load.
+class MotionBadChannel : public ::testing::TestWithParam<test::BadCase> {};
+
+TEST_P(MotionBadChannel, LoadsAndNamesTheChannel) {
+    test::expect_loads_naming(data(GetParam().file), GetParam().message);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    LoadAndWarn, MotionBadChannel,
     ::testing::Values(
         test::BadCase{"motion_times_not_increasing.gltf",
                       "animations[0].samplers[0].input: key times are not strictly increasing"},
         test::BadCase{"motion_nan_key.gltf", "animations[0].samplers[0].output: value 4 is not "
                                              "finite"},
-        test::BadCase{"motion_joint_out_of_range.gltf",
-                      "nodes[0]: meshes[0].primitives[0] uses joint 5 but skins[0] has 2 joints"},
         test::BadCase{"motion_output_count.gltf",
                       "animations[0].samplers[0].output: has 8 values; 3 keys need 12"}),
     test::case_name);

@@ -77,6 +77,61 @@ void check_rotation_keys(ImportContext& ctx, AnimationSampler& s, const std::str
                  " rotation keys are not unit quaternions; normalised when evaluated");
 }
 
+// One channel of animation `src`: its sampler read (once, with the channel's width)
+// and the channel appended to `anim`. Throws ImportError naming what is wrong.
+void import_channel(ImportContext& ctx, const tinygltf::Animation& src, std::size_t c,
+                    const std::string& cpath, const std::string& where, Animation& anim,
+                    std::vector<int>& sampler_index, std::uint32_t& skipped) {
+    Scene& scene = ctx.scene;
+    const auto& ch = src.channels[c];
+    if (ch.sampler < 0 || static_cast<std::size_t>(ch.sampler) >= src.samplers.size())
+        fail(cpath + ".sampler: index " + std::to_string(ch.sampler) + " out of range");
+    if (ch.target_node < 0) {
+        ++skipped; // glTF allows targets defined by extensions only
+        return;
+    }
+    if (static_cast<std::size_t>(ch.target_node) >= scene.nodes.size())
+        fail(cpath + ".target.node: " + std::to_string(ch.target_node) + " out of range");
+    const Node& node = scene.nodes[static_cast<std::size_t>(ch.target_node)];
+    AnimationChannel out;
+    out.node = static_cast<std::uint32_t>(ch.target_node);
+    std::uint32_t width = 3, components = 3;
+    if (ch.target_path == "translation") {
+        out.path = AnimationPath::Translation;
+    } else if (ch.target_path == "scale") {
+        out.path = AnimationPath::Scale;
+    } else if (ch.target_path == "rotation") {
+        out.path = AnimationPath::Rotation;
+        width = components = 4;
+    } else if (ch.target_path == "weights") {
+        out.path = AnimationPath::Weights;
+        width = static_cast<std::uint32_t>(node.weights.size());
+        components = 1;
+        if (width == 0)
+            fail(cpath + ": animates weights of nodes[" + std::to_string(out.node) +
+                 "], which has no morph targets");
+    } else {
+        ++skipped; // "pointer" and other extension paths
+        return;
+    }
+    if (node.has_matrix && out.path != AnimationPath::Weights)
+        fail(cpath + ": animates nodes[" + std::to_string(out.node) +
+             "], which has a matrix (glTF forbids animating it)");
+    int& si = sampler_index[static_cast<std::size_t>(ch.sampler)];
+    const std::string spath = where + ".samplers[" + std::to_string(ch.sampler) + "]";
+    if (si < 0) {
+        anim.samplers.push_back(read_sampler(
+            ctx, src.samplers[static_cast<std::size_t>(ch.sampler)], width, components, spath));
+        if (out.path == AnimationPath::Rotation)
+            check_rotation_keys(ctx, anim.samplers.back(), spath);
+        si = static_cast<int>(anim.samplers.size() - 1);
+    } else if (anim.samplers[static_cast<std::size_t>(si)].width != width) {
+        fail(cpath + ": shares " + spath + " with a channel of another value size");
+    }
+    out.sampler = static_cast<std::uint32_t>(si);
+    anim.channels.push_back(out);
+}
+
 } // namespace
 
 void import_animations(ImportContext& ctx) {
@@ -91,55 +146,13 @@ void import_animations(ImportContext& ctx) {
         std::vector<int> sampler_index(src.samplers.size(), -1);
         std::uint32_t skipped = 0;
         for (std::size_t c = 0; c < src.channels.size(); ++c) {
-            const auto& ch = src.channels[c];
             const std::string cpath = where + ".channels[" + std::to_string(c) + "]";
-            if (ch.sampler < 0 || static_cast<std::size_t>(ch.sampler) >= src.samplers.size())
-                fail(cpath + ".sampler: index " + std::to_string(ch.sampler) + " out of range");
-            if (ch.target_node < 0) {
-                ++skipped; // glTF allows targets defined by extensions only
-                continue;
+            try { // a channel that cannot be evaluated is skipped and named
+                import_channel(ctx, src, c, cpath, where, anim, sampler_index, skipped);
+            } catch (const ImportError& e) {
+                ctx.skip("SHERPA_ANIMATION_CHANNEL_SKIPPED",
+                         std::string(e.what()) + " (" + cpath + " skipped)");
             }
-            if (static_cast<std::size_t>(ch.target_node) >= scene.nodes.size())
-                fail(cpath + ".target.node: " + std::to_string(ch.target_node) + " out of range");
-            const Node& node = scene.nodes[static_cast<std::size_t>(ch.target_node)];
-            AnimationChannel out;
-            out.node = static_cast<std::uint32_t>(ch.target_node);
-            std::uint32_t width = 3, components = 3;
-            if (ch.target_path == "translation") {
-                out.path = AnimationPath::Translation;
-            } else if (ch.target_path == "scale") {
-                out.path = AnimationPath::Scale;
-            } else if (ch.target_path == "rotation") {
-                out.path = AnimationPath::Rotation;
-                width = components = 4;
-            } else if (ch.target_path == "weights") {
-                out.path = AnimationPath::Weights;
-                width = static_cast<std::uint32_t>(node.weights.size());
-                components = 1;
-                if (width == 0)
-                    fail(cpath + ": animates weights of nodes[" + std::to_string(out.node) +
-                         "], which has no morph targets");
-            } else {
-                ++skipped; // "pointer" and other extension paths
-                continue;
-            }
-            if (node.has_matrix && out.path != AnimationPath::Weights)
-                fail(cpath + ": animates nodes[" + std::to_string(out.node) +
-                     "], which has a matrix (glTF forbids animating it)");
-            int& si = sampler_index[static_cast<std::size_t>(ch.sampler)];
-            const std::string spath = where + ".samplers[" + std::to_string(ch.sampler) + "]";
-            if (si < 0) {
-                anim.samplers.push_back(
-                    read_sampler(ctx, src.samplers[static_cast<std::size_t>(ch.sampler)], width,
-                                 components, spath));
-                if (out.path == AnimationPath::Rotation)
-                    check_rotation_keys(ctx, anim.samplers.back(), spath);
-                si = static_cast<int>(anim.samplers.size() - 1);
-            } else if (anim.samplers[static_cast<std::size_t>(si)].width != width) {
-                fail(cpath + ": shares " + spath + " with a channel of another value size");
-            }
-            out.sampler = static_cast<std::uint32_t>(si);
-            anim.channels.push_back(out);
         }
         if (skipped)
             ctx.warn(where + ": " + std::to_string(skipped) +

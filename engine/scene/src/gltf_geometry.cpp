@@ -341,9 +341,33 @@ void import_meshes(ImportContext& ctx) {
     const auto& model = ctx.model;
     ctx.scene.counts.meshes = model.meshes.size();
     ctx.scene.mesh_primitives.resize(model.meshes.size());
+    Scene& scene = ctx.scene;
     for (std::uint32_t m = 0; m < model.meshes.size(); ++m)
-        for (std::uint32_t p = 0; p < model.meshes[m].primitives.size(); ++p)
-            import_primitive(ctx, m, p);
+        for (std::uint32_t p = 0; p < model.meshes[m].primitives.size(); ++p) {
+            // A primitive that cannot be read is skipped and named; the rest loads.
+            const SourceCounts counts = scene.counts;
+            const std::size_t meshes = scene.meshes.size(), primitives = scene.primitives.size(),
+                              motions = scene.motions.size(),
+                              slots = scene.mesh_primitives[m].size();
+            try {
+                import_primitive(ctx, m, p);
+            } catch (const ImportError& e) {
+                scene.counts = counts;
+                ++scene.counts.primitives;
+                scene.meshes.resize(meshes);
+                scene.primitives.resize(primitives);
+                scene.motions.resize(motions);
+                scene.mesh_primitives[m].resize(slots);
+                PrimitiveInfo info;
+                info.mesh = m;
+                info.primitive = p;
+                info.skipped_reason = e.what();
+                scene.mesh_primitives[m].push_back(-1);
+                scene.primitives.push_back(std::move(info));
+                ctx.skip("SHERPA_PRIMITIVE_SKIPPED",
+                         std::string(e.what()) + " (primitive skipped)");
+            }
+        }
     if (const ImportContext::Renormalised& r = ctx.renormalised; r.normals) {
         char worst[32];
         std::snprintf(worst, sizeof worst, "%.4g", double(r.worst_length));

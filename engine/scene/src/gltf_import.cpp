@@ -2,6 +2,7 @@
 // discards the partial scene and reports "FILE: what is wrong".
 #include "gltf_draco.h"
 #include "gltf_fs.h"
+#include "gltf_lenient.h"
 #include "gltf_meshopt.h"
 #include "gltf_prepare.h"
 #include "gltf_validate.h"
@@ -9,6 +10,7 @@
 #include "import_error.h"
 #include "load_stages.h"
 #include "motion_internal.h"
+#include "validate_internal.h"
 
 #include <sherpa/scene/scene_loader.h>
 
@@ -17,6 +19,7 @@
 #include <cctype>
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <set>
 
 #include <tiny_gltf.h>
@@ -125,11 +128,25 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         result.error = path + ": " + problem;
         return result;
     }
-    // Refuses what tinygltf would crash on or silently misread (see gltf_validate.h).
-    if (problem = detail::validate_gltf_bytes(bytes); !problem.empty()) {
-        result.error = path + ": " + problem;
-        return result;
-    }
+    // Refuses what tinygltf would crash on or silently misread (see gltf_validate.h),
+    // parsing the JSON once for those checks and the validator.
+    nlohmann::json root;
+    ValidationReport report;
+    auto refuse = [&](const std::string& why) {
+        result.error = path + ": " + why;
+        detail::add_import_message(report, "SHERPA_LOAD_REFUSED", Severity::Error, why);
+        result.validation = std::move(report);
+        return std::move(result);
+    };
+    if (problem = detail::parse_gltf_document(bytes, root); !problem.empty())
+        return refuse(problem);
+    const bool is_glb = bytes.size() >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "glTF");
+    bool edited = detail::normalize_integers(root); // "count": 3.0 is an integer in glTF
+    std::optional<detail::DocumentValidator> validator;
+    validator.emplace(root, bytes, is_glb, report);
+    if (problem = detail::check_gltf_properties(root); !problem.empty()) return refuse(problem);
+    edited |= detail::replace_unreadable_buffers(root, is_glb, validator->glb_has_bin(), report);
+    if (edited) bytes = detail::with_json(root, bytes, is_glb);
     // Compressed files hold what tinygltf would refuse (see gltf_prepare.h).
     if (auto rewritten = detail::prepared_for_tinygltf(bytes); !rewritten.empty())
         bytes = std::move(rewritten);
@@ -139,7 +156,6 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
     tinygltf::Model model;
     std::string err, warn;
     const std::string base_dir = std::filesystem::path(path).parent_path().string();
-    const bool is_glb = bytes.size() >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "glTF");
     bool ok = false;
     try { // tinygltf allocates what the file asks for; keep its failures in this boundary
         if (is_glb)
@@ -154,13 +170,15 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
     } catch (const std::exception& e) {
         err = e.what();
     }
-    if (!ok) {
-        result.error = path + ": " + (err.empty() ? "not a valid glTF file" : clean_message(err));
-        return result;
-    }
+    if (!ok) return refuse(err.empty() ? "not a valid glTF file" : clean_message(err));
+    std::vector<std::span<const std::uint8_t>> buffers;
+    for (const auto& b : model.buffers) buffers.emplace_back(b.data.data(), b.data.size());
+    validator->check_data(buffers);
+    validator.reset();
     auto scene = std::make_unique<Scene>();
     scene->source = path;
-    scene->parse_ms = ms_since(t_parse);
+    scene->parse_ms = ms_since(t_parse) - report.ms; // the validator's time is its own
+    scene->validation = std::move(report);
     if (const std::string rest = without_image_file_lines(warn); !rest.empty())
         scene->warnings.push_back("tinygltf: " + clean_message(rest));
     if (!detail::end_stage(options, LoadStage::Parse)) return detail::cancelled_result();
@@ -197,16 +215,24 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         std::string select_error;
         if (!select_scene(*scene, scene_index, select_error)) detail::fail(select_error);
     } catch (const detail::ImportError& e) {
-        result.error = path + ": " + e.what();
-        return result;
+        report = std::move(scene->validation);
+        return refuse(e.what());
     } catch (const std::bad_alloc&) {
-        result.error = path + ": out of memory while importing";
-        return result;
+        report = std::move(scene->validation);
+        return refuse("out of memory while importing");
     } catch (const std::exception& e) { // library failures on odd input
-        result.error = path + ": " + e.what();
-        return result;
+        report = std::move(scene->validation);
+        return refuse(e.what());
     }
     scene->process_ms = ms_since(t_process);
+    // The importer's own warnings, as SHERPA_ messages with the pointer they name.
+    std::set<std::string> said; // skipped parts are messages already
+    for (const auto& m : scene->validation.messages)
+        if (m.code.rfind("SHERPA_", 0) == 0) said.insert(m.message);
+    for (const std::string& w : scene->warnings)
+        if (!said.contains(w))
+            detail::add_import_message(scene->validation, "SHERPA_IMPORT_NOTE",
+                                       Severity::Information, w);
     result.scene = std::move(scene);
     return result;
 }

@@ -254,9 +254,28 @@ void import_samplers_images_textures(ImportContext& ctx) {
     scene.counts.textures = model.textures.size();
 }
 
+void import_material(ImportContext& ctx, std::size_t i);
+
 void import_materials(ImportContext& ctx) {
     const auto& model = ctx.model;
     for (std::size_t i = 0; i < model.materials.size(); ++i) {
+        try {
+            import_material(ctx, i);
+        } catch (const ImportError& e) { // shown with the default material's values
+            MaterialInstance m;
+            m.name = model.materials[i].name;
+            m.gltf_index = static_cast<std::int32_t>(i);
+            ctx.scene.materials.push_back(std::move(m));
+            ctx.skip("SHERPA_MATERIAL_DEFAULTED",
+                     std::string(e.what()) + " (default material values used)");
+        }
+    }
+    ctx.scene.counts.materials = model.materials.size();
+}
+
+void import_material(ImportContext& ctx, std::size_t i) {
+    const auto& model = ctx.model;
+    {
         const auto& src = model.materials[i];
         const std::string where = "materials[" + std::to_string(i) + "]";
         MaterialInstance m;
@@ -301,7 +320,6 @@ void import_materials(ImportContext& ctx) {
             read_specular_glossiness(ctx, it->second, m, where);
         ctx.scene.materials.push_back(std::move(m));
     }
-    ctx.scene.counts.materials = model.materials.size();
 }
 
 } // namespace sherpa::detail

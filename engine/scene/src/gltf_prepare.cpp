@@ -1,5 +1,7 @@
 #include "gltf_prepare.h"
 
+#include "gltf_lenient.h"
+
 #include <algorithm>
 #include <cstring>
 #include <string>
@@ -21,10 +23,6 @@ bool mentions(std::span<const std::uint8_t> bytes, std::string_view key) {
 std::uint32_t le32(std::span<const std::uint8_t> b, std::size_t at) {
     return std::uint32_t(b[at]) | std::uint32_t(b[at + 1]) << 8 | std::uint32_t(b[at + 2]) << 16 |
            std::uint32_t(b[at + 3]) << 24;
-}
-
-void put_le32(std::vector<std::uint8_t>& out, std::uint32_t v) {
-    for (int i = 0; i < 4; ++i) out.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
 }
 
 // Gives each fallback buffer of `root` a 1-byte data URI; false when there is none.
@@ -83,17 +81,7 @@ std::vector<std::uint8_t> prepared_for_tinygltf(std::span<const std::uint8_t> by
     json root = json::parse(json_bytes.begin(), json_bytes.end());
     const bool fallback = replace_fallback_buffers(root);
     if (!stash_draco_indices(root) && !fallback) return {};
-    std::string text = root.dump();
-    if (!glb) return {text.begin(), text.end()};
-    text.resize((text.size() + 3) / 4 * 4, ' ');       // chunks are 4-byte aligned
-    const auto rest = bytes.subspan(20 + json_length); // the BIN chunk, as it was
-    std::vector<std::uint8_t> out(bytes.begin(), bytes.begin() + 8);
-    put_le32(out, static_cast<std::uint32_t>(12 + 8 + text.size() + rest.size()));
-    put_le32(out, static_cast<std::uint32_t>(text.size()));
-    put_le32(out, 0x4E4F534Au); // "JSON"
-    out.insert(out.end(), text.begin(), text.end());
-    out.insert(out.end(), rest.begin(), rest.end());
-    return out;
+    return with_json(root, bytes, glb); // a .glb keeps its BIN chunk
 }
 
 } // namespace sherpa::detail

@@ -189,26 +189,30 @@ void import_skins(ImportContext& ctx) {
             fail(where + ".skeleton: node " + std::to_string(src.skeleton) + " out of range");
         skin.skeleton = src.skeleton;
         skin.inverse_bind.assign(skin.joints.size(), glm::mat4(1.0f));
-        if (src.inverseBindMatrices >= 0) {
-            const std::string path = where + ".inverseBindMatrices";
-            std::uint32_t nc = 0, degenerate = 0;
-            const auto v = read_accessor_floats(model, src.inverseBindMatrices, {16}, nc, path);
-            if (v.size() / 16 < skin.joints.size())
-                fail(path + ": has " + std::to_string(v.size() / 16) + " matrices for " +
-                     std::to_string(skin.joints.size()) + " joints");
-            for (std::size_t j = 0; j < skin.joints.size(); ++j) {
-                for (int k = 0; k < 16; ++k)
-                    glm::value_ptr(skin.inverse_bind[j])[k] = v[16 * j + k];
-                if (!is_finite(skin.inverse_bind[j]))
-                    fail(path + "[" + std::to_string(j) + "] is not finite");
-                if (std::abs(glm::determinant(skin.inverse_bind[j])) < 1e-12f) ++degenerate;
+        if (src.inverseBindMatrices >= 0) try {
+                const std::string path = where + ".inverseBindMatrices";
+                std::uint32_t nc = 0, degenerate = 0;
+                const auto v = read_accessor_floats(model, src.inverseBindMatrices, {16}, nc, path);
+                if (v.size() / 16 < skin.joints.size())
+                    fail(path + ": has " + std::to_string(v.size() / 16) + " matrices for " +
+                         std::to_string(skin.joints.size()) + " joints");
+                for (std::size_t j = 0; j < skin.joints.size(); ++j) {
+                    for (int k = 0; k < 16; ++k)
+                        glm::value_ptr(skin.inverse_bind[j])[k] = v[16 * j + k];
+                    if (!is_finite(skin.inverse_bind[j]))
+                        fail(path + "[" + std::to_string(j) + "] is not finite");
+                    if (std::abs(glm::determinant(skin.inverse_bind[j])) < 1e-12f) ++degenerate;
+                }
+                // A singular inverse bind matrix collapses its vertices (no NaN follows: the
+                // matrix is only multiplied, never inverted); the file is shown as it is.
+                if (degenerate)
+                    ctx.warn(path + ": " + std::to_string(degenerate) +
+                             " singular matrices (their joints' vertices collapse)");
+            } catch (const ImportError& e) { // drawn with identity matrices, and named
+                skin.inverse_bind.assign(skin.joints.size(), glm::mat4(1.0f));
+                ctx.skip("SHERPA_SKIN_MATRICES_SKIPPED",
+                         std::string(e.what()) + " (identity inverse bind matrices used)");
             }
-            // A singular inverse bind matrix collapses its vertices (no NaN follows: the
-            // matrix is only multiplied, never inverted); the file is shown as it is.
-            if (degenerate)
-                ctx.warn(path + ": " + std::to_string(degenerate) +
-                         " singular matrices (their joints' vertices collapse)");
-        }
         scene.skins.push_back(std::move(skin));
     }
     // A skinned node's primitives must index only that skin's joints.

@@ -8,6 +8,8 @@
 #include <span>
 #include <string>
 
+#include <nlohmann/json_fwd.hpp>
+
 namespace sherpa::detail {
 
 // Deepest JSON nesting Sherpa parses. Real glTF files nest about 10 levels (extras
@@ -19,7 +21,14 @@ inline constexpr std::size_t kMaxJsonDepth = 256;
 std::size_t json_depth_exceeded_at(std::span<const std::uint8_t> text, std::size_t limit);
 
 // The problem with a .gltf/.glb file's bytes, or an empty string when they may be
-// handed to tinygltf. Never throws.
+// handed to tinygltf. Never throws. Runs the two steps below.
 std::string validate_gltf_bytes(std::span<const std::uint8_t> bytes);
+
+// Step 1: the container, the JSON (parsed into `root`: the importer's one parse of it,
+// which the validator reads too), asset.version and extensionsRequired.
+std::string parse_gltf_document(std::span<const std::uint8_t> bytes, nlohmann::json& root);
+// Step 2: the properties whose values index memory or other arrays, which tinygltf
+// would silently turn into 0 or -1 when mistyped.
+std::string check_gltf_properties(const nlohmann::json& root);
 
 } // namespace sherpa::detail

@@ -2,6 +2,7 @@
 // Internal: state shared by the importer stages while one glTF file is converted.
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <sherpa/scene/scene.h>
@@ -32,6 +33,9 @@ struct ImportContext {
     } renormalised;
 
     void warn(std::string message) { scene.warnings.push_back(std::move(message)); }
+    // A part of the file that is not shown: a warning line and a `code` error message
+    // in scene.validation with the JSON pointer `message` starts with.
+    void skip(std::string_view code, const std::string& message);
     // Index of Sherpa's default material, appending it the first time it is needed.
     std::uint32_t default_material_id();
     // Compares accessor `index`'s decoded values with its declared min/max once per

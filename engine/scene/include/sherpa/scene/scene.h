@@ -14,6 +14,7 @@
 #include <sherpa/scene/material.h>
 #include <sherpa/scene/motion.h>
 #include <sherpa/scene/texture_records.h>
+#include <sherpa/scene/validation.h>
 #include <sherpa/scene/vertex.h>
 
 namespace sherpa {
@@ -257,7 +258,11 @@ struct Scene {
 
     // The file's extensionsUsed / extensionsRequired, as written.
     std::vector<std::string> extensions_used, extensions_required;
+    // The importer's own warnings as text, one line each; every one is also in
+    // `validation` with a SHERPA_ code and its JSON pointer.
     std::vector<std::string> warnings;
+    // Every problem found, with Khronos glTF-Validator codes and JSON pointers.
+    ValidationReport validation;
     std::vector<AccessorRangeViolation> range_violations;
     double parse_ms = 0.0, process_ms = 0.0;
 

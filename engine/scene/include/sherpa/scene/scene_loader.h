@@ -8,6 +8,7 @@
 #include <sherpa/core/progress.h>
 #include <sherpa/scene/mesh_tangents.h>
 #include <sherpa/scene/scene.h>
+#include <sherpa/scene/validation.h>
 
 namespace sherpa {
 
@@ -34,6 +35,10 @@ struct LoadOptions {
 struct LoadResult {
     std::unique_ptr<Scene> scene;
     std::string error;
+    // When the file is refused: what the validator found before the refusal, ending
+    // with a SHERPA_LOAD_REFUSED error that carries `error`. (A loaded scene carries
+    // its report in Scene::validation.)
+    ValidationReport validation{};
     bool cancelled = false;
     explicit operator bool() const { return scene != nullptr; }
 };

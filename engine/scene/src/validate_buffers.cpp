@@ -1,0 +1,264 @@
+// Buffers, buffer views, accessors and the GLB container: the links that decide
+// which bytes an accessor reads (validate_internal.h).
+#include "validate_internal.h"
+
+#include "checked_math.h"
+
+#include <cstring>
+
+namespace sherpa::detail {
+namespace {
+
+bool is_data_uri(std::string_view uri) {
+    return uri.size() >= 5 && uri.compare(0, 5, "data:") == 0;
+}
+
+// "http://...", "/abs/path", "//host": anything a relative-path resolver would not read.
+bool non_relative(std::string_view uri) {
+    if (uri.empty() || is_data_uri(uri)) return false;
+    if (uri[0] == '/' || uri[0] == '\\') return true;
+    const auto colon = uri.find(':');
+    if (colon == std::string_view::npos || colon == 0) return false;
+    for (std::size_t i = 0; i < colon; ++i) {
+        const char c = uri[i];
+        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+              (i > 0 && ((c >= '0' && c <= '9') || c == '+' || c == '-' || c == '.'))))
+            return false;
+    }
+    return true;
+}
+
+void check_uri(Validation& v, const Json& obj, const std::string& where, bool buffer) {
+    const auto uri = obj.find("uri");
+    if (uri == obj.end() || !uri->is_string()) return;
+    const std::string& u = uri->get_ref<const std::string&>();
+    const std::string p = ptr(where, "uri");
+    if (v.glb) v.add("URI_GLB", Severity::Information, p, "URI is used in GLB container.");
+    if (is_data_uri(u)) {
+        if (v.glb)
+            v.add("DATA_URI_GLB", Severity::Warning, p, "Data URI is used in GLB container.");
+        if (buffer) {
+            const std::string_view media = std::string_view(u).substr(5, u.find_first_of(";,") - 5);
+            if (media != "application/octet-stream" && media != "application/gltf-buffer")
+                v.add("BUFFER_DATA_URI_MIME_TYPE_INVALID", Severity::Error, p,
+                      "Data URI media type must be 'application/octet-stream' or "
+                      "'application/gltf-buffer'. Found '" +
+                          std::string(media) + "' instead.");
+        }
+    } else if (non_relative(u)) {
+        v.add("NON_RELATIVE_URI", Severity::Warning, p, "Non-relative URI found: '" + u + "'.");
+    }
+}
+
+std::uint32_t le32(std::span<const std::uint8_t> b, std::size_t at) {
+    return static_cast<std::uint32_t>(b[at]) | static_cast<std::uint32_t>(b[at + 1]) << 8 |
+           static_cast<std::uint32_t>(b[at + 2]) << 16 |
+           static_cast<std::uint32_t>(b[at + 3]) << 24;
+}
+
+} // namespace
+
+void validate_buffers(Validation& v) {
+    const Json& buffers = v.array("buffers");
+    std::vector<std::uint64_t> buffer_length(buffers.size(), 0);
+    for (std::size_t i = 0; i < buffers.size(); ++i) {
+        const Json& b = buffers[i];
+        if (!b.is_object()) continue;
+        const std::string where = ptr("/buffers", i);
+        buffer_length[i] =
+            static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(b, "byteLength", 0), 0));
+        check_uri(v, b, where, true);
+        if (v.glb && i == 0 && !b.contains("uri") && !v.glb_has_bin)
+            v.add("BUFFER_MISSING_GLB_DATA", Severity::Error, where,
+                  "Buffer refers to an unresolved GLB binary chunk.");
+    }
+    for (std::size_t i = 0; i < v.size("images"); ++i)
+        if (v.array("images")[i].is_object())
+            check_uri(v, v.array("images")[i], ptr("/images", i), false);
+
+    struct View {
+        std::int64_t buffer = -1;
+        std::uint64_t offset = 0, length = 0, stride = 0;
+        bool fits = false, compressed = false;
+    };
+    const Json& views_json = v.array("bufferViews");
+    std::vector<View> views(views_json.size());
+    for (std::size_t i = 0; i < views_json.size(); ++i) {
+        const Json& bv = views_json[i];
+        View& view = views[i];
+        view.buffer = ref(v, bv, "buffer", "buffers");
+        view.offset =
+            static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(bv, "byteOffset", 0), 0));
+        view.length =
+            static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(bv, "byteLength", 0), 0));
+        view.stride =
+            static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(bv, "byteStride", 0), 0));
+        if (view.stride < 4 || view.stride > 252)
+            view.stride = 0; // out of range: ignored, as Khronos does
+        view.compressed = bv.is_object() && bv.contains("extensions") &&
+                          bv["extensions"].is_object() &&
+                          (bv["extensions"].contains("EXT_meshopt_compression") ||
+                           bv["extensions"].contains("KHR_meshopt_compression"));
+        const std::string where = ptr("/bufferViews", i);
+        if (view.buffer >= 0) {
+            const std::uint64_t size = buffer_length[static_cast<std::size_t>(view.buffer)];
+            view.fits = range_fits(view.offset, view.length, size);
+            if (!view.fits)
+                v.add("BUFFER_VIEW_TOO_LONG", Severity::Error, ptr(where, "byteLength"),
+                      "BufferView does not fit buffer (" + std::to_string(view.buffer) +
+                          ") byteLength (" + std::to_string(size) + ").");
+        }
+        if (view.stride) {
+            if (view.stride % 4)
+                v.add("VALUE_MULTIPLE_OF", Severity::Error, ptr(where, "byteStride"),
+                      "Value " + std::to_string(view.stride) + " is not a multiple of 4.");
+            if (view.stride > view.length && view.length > 0)
+                v.add("BUFFER_VIEW_TOO_BIG_BYTE_STRIDE", Severity::Error, ptr(where, "byteStride"),
+                      "Buffer view's byteStride (" + std::to_string(view.stride) +
+                          ") is greater than byteLength (" + std::to_string(view.length) + ").");
+            if (int_or(bv, "target", 0) == 34963)
+                v.add("BUFFER_VIEW_INVALID_BYTE_STRIDE", Severity::Error, ptr(where, "byteStride"),
+                      "Only buffer views with raw vertex data can have byteStride.");
+        }
+    }
+
+    const Json& accessors = v.array("accessors");
+    v.accessors.assign(accessors.size(), {});
+    for (std::size_t i = 0; i < accessors.size(); ++i) {
+        const Json& a = accessors[i];
+        if (!a.is_object()) continue;
+        AccessorLayout& out = v.accessors[i];
+        const std::string where = ptr("/accessors", i);
+        const std::int64_t ct = int_or(a, "componentType", 0);
+        const std::uint32_t csize = component_size(ct);
+        const auto type = a.find("type");
+        const std::uint32_t comps = type != a.end() && type->is_string()
+                                        ? components_of(type->get_ref<const std::string&>())
+                                        : 0;
+        const std::int64_t count = int_or(a, "count", 0);
+        const bool normalized =
+            a.contains("normalized") && a["normalized"].is_boolean() && a["normalized"].get<bool>();
+        if (normalized && (ct == 5126 || ct == 5125))
+            v.add("ACCESSOR_NORMALIZED_INVALID", Severity::Error, ptr(where, "normalized"),
+                  "Only (u)byte and (u)short accessors can be normalized.");
+        for (const char* key : {"min", "max"}) {
+            const auto m = a.find(key);
+            if (m == a.end() || !m->is_array() || comps == 0) continue;
+            if (m->size() != comps)
+                v.add("ARRAY_LENGTH_NOT_IN_LIST", Severity::Error, ptr(where, key),
+                      "Invalid array length " + std::to_string(m->size()) +
+                          ". Valid lengths are: (" + std::to_string(comps) + ").");
+            else
+                (key[1] == 'i' ? out.has_min : out.has_max) = true;
+        }
+        if (a.contains("sparse") && a["sparse"].is_object()) {
+            out.sparse = true;
+            const std::int64_t sc = int_or(a["sparse"], "count", 0);
+            if (sc > count && count > 0)
+                v.add("ACCESSOR_SPARSE_COUNT_OUT_OF_RANGE", Severity::Error,
+                      ptr(ptr(where, "sparse"), "count"),
+                      "Sparse accessor overrides more elements (" + std::to_string(sc) +
+                          ") than the base accessor contains (" + std::to_string(count) + ").");
+        }
+        const std::int64_t offset = std::max<std::int64_t>(int_or(a, "byteOffset", 0), 0);
+        const std::int64_t vi = ref(v, a, "bufferView", "bufferViews");
+        if (csize && offset % csize)
+            v.add("ACCESSOR_OFFSET_ALIGNMENT", Severity::Error, ptr(where, "byteOffset"),
+                  "Offset " + std::to_string(offset) +
+                      " is not a multiple of componentType length " + std::to_string(csize) + ".");
+        if (vi < 0 || !csize || !comps || count <= 0) continue;
+        const View& view = views[static_cast<std::size_t>(vi)];
+        if (csize && (view.offset + static_cast<std::uint64_t>(offset)) % csize)
+            v.add("ACCESSOR_TOTAL_OFFSET_ALIGNMENT", Severity::Error, where,
+                  "Accessor's total byteOffset " + std::to_string(view.offset + offset) +
+                      " isn't a multiple of componentType length " + std::to_string(csize) + ".");
+        const std::uint64_t element = std::uint64_t{csize} * comps;
+        if (view.stride && view.stride < element)
+            v.add("ACCESSOR_SMALL_BYTESTRIDE", Severity::Error, where,
+                  "Referenced bufferView's byteStride value " + std::to_string(view.stride) +
+                      " is less than accessor element's length " + std::to_string(element) + ".");
+        const std::uint64_t stride = view.stride ? view.stride : element;
+        const auto span = checked_mul(stride, static_cast<std::uint64_t>(count - 1));
+        const auto end = span ? checked_add(*span, element) : std::nullopt;
+        const auto total =
+            end ? checked_add(*end, static_cast<std::uint64_t>(offset)) : std::nullopt;
+        if (!total || *total > view.length) {
+            v.add("ACCESSOR_TOO_LONG", Severity::Error, where,
+                  "Accessor (offset: " + std::to_string(offset) +
+                      ", length: " + (end ? std::to_string(*end) : std::string("too large")) +
+                      ") does not fit referenced bufferView [" + std::to_string(vi) + "] length " +
+                      std::to_string(view.length) + ".");
+            continue;
+        }
+        out.readable = view.fits && !view.compressed && (view.offset + offset) % csize == 0 &&
+                       (!view.stride || (view.stride >= element && view.stride % 4 == 0));
+        out.buffer = static_cast<std::size_t>(view.buffer);
+        out.offset = view.offset + static_cast<std::uint64_t>(offset);
+        out.stride = stride;
+        out.component_type = static_cast<int>(ct);
+        out.components = comps;
+        out.count = static_cast<std::uint64_t>(count);
+        out.normalized = normalized;
+    }
+}
+
+void validate_glb(Validation& v, std::span<const std::uint8_t> b) {
+    if (b.size() < 12) return; // refused before (the header alone is 12 bytes)
+    const std::uint64_t declared = le32(b, 8);
+    if (declared < b.size())
+        v.add("GLB_EXTRA_DATA", Severity::Warning, "", "Extra data after the end of GLB stream.");
+    else if (declared > b.size())
+        v.add("GLB_LENGTH_MISMATCH", Severity::Error, "",
+              "Declared length (" + std::to_string(declared) + ") does not match GLB length (" +
+                  std::to_string(b.size()) + ").");
+    const std::size_t end = static_cast<std::size_t>(std::min<std::uint64_t>(declared, b.size()));
+    std::size_t at = 12;
+    bool json = false, bin = false;
+    std::uint64_t bin_length = 0;
+    for (int chunk = 0; at + 8 <= end; ++chunk) {
+        const std::uint32_t length = le32(b, at);
+        const std::uint32_t type = le32(b, at + 4);
+        const char* name = type == 0x4E4F534Au ? "JSON" : type == 0x004E4942u ? "BIN" : nullptr;
+        if (length % 4)
+            v.add("GLB_CHUNK_LENGTH_UNALIGNED", Severity::Error, "",
+                  std::string("Length of ") + (name ? name : "unknown") +
+                      " chunk is not aligned to 4-byte boundaries.");
+        if (!range_fits(at + 8, length, end)) {
+            v.add("GLB_CHUNK_TOO_BIG", Severity::Error, "",
+                  std::string("Chunk (") + (name ? name : "unknown") + ") length (" +
+                      std::to_string(length) + ") does not fit total GLB length.");
+            break;
+        }
+        if (!name) {
+            v.add("GLB_UNKNOWN_CHUNK_TYPE", Severity::Warning, "",
+                  "Unknown GLB chunk type: " + std::to_string(type) + ".");
+        } else if ((name[0] == 'J' && json) || (name[0] == 'B' && bin)) {
+            v.add("GLB_DUPLICATE_CHUNK", Severity::Error, "",
+                  std::string("Chunk of type ") + name + " has already been used.");
+        } else if (name[0] == 'B') {
+            bin = true;
+            v.glb_has_bin = true;
+            bin_length = length;
+            if (chunk != 1)
+                v.add("GLB_UNEXPECTED_BIN_CHUNK", Severity::Error, "",
+                      "BIN chunk must be the second chunk.");
+            if (length == 0)
+                v.add("GLB_EMPTY_BIN_CHUNK", Severity::Information, "",
+                      "Empty BIN chunk should be omitted.");
+        } else {
+            json = true;
+        }
+        at += 8 + length;
+    }
+    const Json& buffers = v.array("buffers");
+    if (bin && !buffers.empty() && buffers[0].is_object() && !buffers[0].contains("uri")) {
+        const std::int64_t declared_length = int_or(buffers[0], "byteLength", 0);
+        if (declared_length >= 0 && bin_length > static_cast<std::uint64_t>(declared_length) + 3)
+            v.add("BUFFER_GLB_CHUNK_TOO_BIG", Severity::Warning, "/buffers/0",
+                  "GLB-stored BIN chunk contains " +
+                      std::to_string(bin_length - static_cast<std::uint64_t>(declared_length)) +
+                      " extra padding byte(s).");
+    }
+}
+
+} // namespace sherpa::detail

@@ -1,0 +1,336 @@
+// The data pass: accessor values against their declared min/max and against what
+// each use requires (unit normals, index bounds, joint and weight sets, increasing key
+// times, unit rotations). Reads the buffers tinygltf loaded; tolerances are the Khronos
+// validator's so both report the same elements.
+#include "validate_internal.h"
+
+#include "checked_math.h"
+
+#include <cmath>
+#include <cstring>
+#include <unordered_map>
+
+namespace sherpa::detail {
+namespace {
+
+using Buffers = std::span<const std::span<const std::uint8_t>>;
+
+// One accessor's values, read element by element (sparse overrides applied).
+class Reader {
+public:
+    Reader(const AccessorLayout& a, Buffers buffers) : a_(a) {
+        if (!a.readable || a.buffer >= buffers.size()) return;
+        const auto& b = buffers[a.buffer];
+        const auto last = checked_mul(a.stride, a.count - 1);
+        const auto end =
+            last ? checked_add(*last, std::size_t{component_size(a.component_type)} * a.components)
+                 : std::nullopt;
+        if (!end || !range_fits(a.offset, *end, b.size())) return;
+        base_ = b.data() + a.offset;
+        ok_ = true;
+    }
+    bool ok() const { return ok_; }
+    std::uint64_t count() const { return a_.count; }
+    std::uint32_t components() const { return a_.components; }
+    // Raw component value (integers as integers).
+    double raw(std::uint64_t i, std::uint32_t c) const {
+        const std::uint8_t* p = base_ + i * a_.stride + c * component_size(a_.component_type);
+        switch (a_.component_type) {
+        case 5120:
+            return static_cast<std::int8_t>(*p);
+        case 5121:
+            return *p;
+        case 5122: {
+            std::int16_t x;
+            std::memcpy(&x, p, 2);
+            return x;
+        }
+        case 5123: {
+            std::uint16_t x;
+            std::memcpy(&x, p, 2);
+            return x;
+        }
+        case 5125: {
+            std::uint32_t x;
+            std::memcpy(&x, p, 4);
+            return x;
+        }
+        default: {
+            float x;
+            std::memcpy(&x, p, 4);
+            return x;
+        }
+        }
+    }
+    // Value as used: normalized integers mapped to [0, 1] or [-1, 1].
+    double value(std::uint64_t i, std::uint32_t c) const {
+        const double r = raw(i, c);
+        if (!a_.normalized) return r;
+        switch (a_.component_type) {
+        case 5120:
+            return std::max(r / 127.0, -1.0);
+        case 5121:
+            return r / 255.0;
+        case 5122:
+            return std::max(r / 32767.0, -1.0);
+        case 5123:
+            return r / 65535.0;
+        default:
+            return r;
+        }
+    }
+    bool is_float() const { return a_.component_type == 5126; }
+
+private:
+    const AccessorLayout& a_;
+    const std::uint8_t* base_ = nullptr;
+    bool ok_ = false;
+};
+
+void check_min_max(Validation& v, std::size_t index, const Reader& r) {
+    const AccessorLayout& a = v.accessors[index];
+    const Json& acc = v.array("accessors")[index];
+    const std::string where = ptr("/accessors", index);
+    const std::uint32_t n = r.components();
+    std::vector<double> lo(n, INFINITY), hi(n, -INFINITY);
+    bool invalid_float = false;
+    for (std::uint64_t i = 0; i < r.count(); ++i)
+        for (std::uint32_t c = 0; c < n; ++c) {
+            const double x = r.raw(i, c);
+            if (!std::isfinite(x)) {
+                if (!invalid_float)
+                    v.add("ACCESSOR_INVALID_FLOAT", Severity::Error, where,
+                          "Accessor element at index " + std::to_string(i * n + c) + " is " +
+                              (std::isnan(x) ? "NaN" : "Infinity") + ".");
+                invalid_float = true;
+                continue;
+            }
+            lo[c] = std::min(lo[c], x);
+            hi[c] = std::max(hi[c], x);
+        }
+    auto same = [&](double declared, double actual) {
+        return r.is_float() ? static_cast<float>(declared) == static_cast<float>(actual)
+                            : declared == actual;
+    };
+    for (int side = 0; side < 2; ++side) {
+        const bool is_min = side == 0;
+        if (!(is_min ? a.has_min : a.has_max)) continue;
+        const Json& declared = acc[is_min ? "min" : "max"];
+        for (std::uint32_t c = 0; c < n; ++c) {
+            if (!declared[c].is_number()) continue;
+            const double d = declared[c].get<double>();
+            const double actual = is_min ? lo[c] : hi[c];
+            if (!std::isfinite(actual) || same(d, actual)) continue;
+            const std::string p = ptr(ptr(where, is_min ? "min" : "max"), c);
+            v.add(is_min ? "ACCESSOR_MIN_MISMATCH" : "ACCESSOR_MAX_MISMATCH", Severity::Error, p,
+                  std::string("Declared ") + (is_min ? "minimum" : "maximum") +
+                      " value for this component (" + std::to_string(d) +
+                      ") does not match actual " + (is_min ? "minimum" : "maximum") + " (" +
+                      std::to_string(actual) + ").");
+            if (is_min ? actual < d && !same(d, actual) : actual > d && !same(d, actual)) {
+                std::uint64_t outside = 0;
+                for (std::uint64_t i = 0; i < r.count(); ++i) {
+                    const double x = r.raw(i, c);
+                    outside += is_min ? (x < d && !same(d, x)) : (x > d && !same(d, x));
+                }
+                v.add(
+                    is_min ? "ACCESSOR_ELEMENT_OUT_OF_MIN_BOUND"
+                           : "ACCESSOR_ELEMENT_OUT_OF_MAX_BOUND",
+                    Severity::Error, p,
+                    "Accessor contains " + std::to_string(outside) + " element(s) " +
+                        (is_min ? "less than declared minimum" : "greater than declared maximum") +
+                        " value " + std::to_string(d) + ".");
+            }
+        }
+    }
+}
+
+double length3(const Reader& r, std::uint64_t i) {
+    const double x = r.value(i, 0), y = r.value(i, 1), z = r.value(i, 2);
+    return std::sqrt(x * x + y * y + z * z);
+}
+
+void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers buffers) {
+    const std::uint64_t n = r.count();
+    auto once = [&](bool& said, std::string_view code, Severity s, std::string message) {
+        if (said) return;
+        said = true;
+        v.add(code, s, u.pointer, std::move(message));
+    };
+    bool a = false, b = false, c = false;
+    switch (u.use) {
+    case AccessorUse::Indices: {
+        const double restart =
+            r.components() == 1 ? (v.accessors[u.accessor].component_type == 5121   ? 255.0
+                                   : v.accessors[u.accessor].component_type == 5123 ? 65535.0
+                                                                                    : 4294967295.0)
+                                : -1;
+        std::uint64_t degenerate = 0;
+        for (std::uint64_t i = 0; i < n; ++i) {
+            const double x = r.raw(i, 0);
+            if (x > static_cast<double>(u.limit) - 1)
+                once(a, "ACCESSOR_INDEX_OOB", Severity::Error,
+                     "Indices accessor element at index " + std::to_string(i) + " has value " +
+                         std::to_string(static_cast<std::uint64_t>(x)) +
+                         " that is greater than the maximum vertex index available (" +
+                         std::to_string(u.limit ? u.limit - 1 : 0) + ").");
+            if (x == restart)
+                once(b, "ACCESSOR_INDEX_PRIMITIVE_RESTART", Severity::Error,
+                     "Indices accessor contains primitive restart value at index " +
+                         std::to_string(i) + ".");
+            if (u.mode == 4 && i % 3 == 2) {
+                const double p = r.raw(i - 2, 0), q = r.raw(i - 1, 0);
+                degenerate += p == q || q == x || x == p;
+            }
+        }
+        if (degenerate)
+            v.add("ACCESSOR_INDEX_TRIANGLE_DEGENERATE", Severity::Information, u.pointer,
+                  "Indices accessor contains " + std::to_string(degenerate) +
+                      " degenerate triangles (out of " + std::to_string(n / 3) + ").");
+        break;
+    }
+    case AccessorUse::Normal:
+    case AccessorUse::Tangent:
+        if (r.components() < 3) break;
+        for (std::uint64_t i = 0; i < n; ++i) {
+            const double len = length3(r, i);
+            if (std::isfinite(len) && std::abs(len - 1) > 0.00674)
+                once(a, "ACCESSOR_VECTOR3_NON_UNIT", Severity::Error,
+                     "Vector3 at accessor element " + std::to_string(i) +
+                         " is not of unit length: " + std::to_string(len) + ".");
+            if (u.use == AccessorUse::Tangent && r.components() == 4) {
+                const double w = r.value(i, 3);
+                if (w != 1 && w != -1)
+                    once(b, "ACCESSOR_INVALID_SIGN", Severity::Error,
+                         "Vector3 with sign at accessor element " + std::to_string(i) +
+                             " has invalid w component: " + std::to_string(w) +
+                             ". Must be 1.0 or -1.0.");
+            }
+        }
+        break;
+    case AccessorUse::Color:
+        if (!r.is_float()) break;
+        for (std::uint64_t i = 0; i < n; ++i)
+            for (std::uint32_t k = 0; k < r.components(); ++k)
+                if (const double x = r.raw(i, k); x < 0 || x > 1)
+                    once(a, "ACCESSOR_NON_CLAMPED", Severity::Error,
+                         "Accessor element at index " + std::to_string(i * r.components() + k) +
+                             " is not clamped to 0..1 range: " + std::to_string(x) + ".");
+        break;
+    case AccessorUse::Joints: {
+        // Weights of the same set decide which joints count.
+        std::optional<Reader> w;
+        if (u.partner < v.accessors.size()) {
+            w.emplace(v.accessors[u.partner], buffers);
+            if (!w->ok() || w->count() != n || w->components() != 4) w.reset();
+        }
+        const std::string wp = u.pointer.substr(0, u.pointer.rfind('/')) + "/WEIGHTS_" +
+                               u.pointer.substr(u.pointer.rfind('_') + 1);
+        bool neg = false, sum_said = false;
+        for (std::uint64_t i = 0; i < n && r.components() == 4; ++i) {
+            float sum = 0;
+            double tolerance = 0;
+            for (std::uint32_t k = 0; k < 4; ++k) {
+                const double j = r.raw(i, k);
+                if (u.limit && j > static_cast<double>(u.limit) - 1) {
+                    once(a, "ACCESSOR_JOINTS_INDEX_OOB", Severity::Error,
+                         "Joints accessor element at index " + std::to_string(i * 4 + k) +
+                             " has value " + std::to_string(static_cast<std::uint64_t>(j)) +
+                             " that is greater than the maximum joint index (" +
+                             std::to_string(u.limit - 1) + ").");
+                    continue;
+                }
+                if (!w) continue;
+                const double wk = w->value(i, k);
+                if (wk != 0) {
+                    for (std::uint32_t m = 0; m < k; ++m)
+                        if (r.raw(i, m) == j && w->value(i, m) != 0)
+                            once(b, "ACCESSOR_JOINTS_INDEX_DUPLICATE", Severity::Error,
+                                 "Joints accessor element at index " + std::to_string(i * 4 + k) +
+                                     " has value " + std::to_string(static_cast<std::uint64_t>(j)) +
+                                     " that is already in use for the vertex.");
+                    if (wk < 0) {
+                        if (!neg)
+                            v.add("ACCESSOR_WEIGHTS_NEGATIVE", Severity::Error, wp,
+                                  "Weights accessor element at index " + std::to_string(i * 4 + k) +
+                                      " has negative value " + std::to_string(wk) + ".");
+                        neg = true;
+                    } else {
+                        sum += static_cast<float>(wk);
+                        tolerance += 2e-7;
+                    }
+                } else if (j != 0) {
+                    once(c, "ACCESSOR_JOINTS_USED_ZERO_WEIGHT", Severity::Warning,
+                         "Joints accessor element at index " + std::to_string(i * 4 + k) +
+                             " is used with zero weight but has non-zero value (" +
+                             std::to_string(static_cast<std::uint64_t>(j)) + ").");
+                }
+            }
+            if (w && std::abs(static_cast<double>(sum) - 1) > tolerance && !sum_said) {
+                sum_said = true;
+                v.add("ACCESSOR_WEIGHTS_NON_NORMALIZED", Severity::Error, wp,
+                      "Weights accessor elements (at indices " + std::to_string(i * 4) + ".." +
+                          std::to_string(i * 4 + 3) +
+                          ") have non-normalized sum: " + std::to_string(sum) + ".");
+            }
+        }
+        break;
+    }
+    case AccessorUse::AnimationInput:
+        for (std::uint64_t i = 0; i < n; ++i) {
+            const double t = r.raw(i, 0);
+            if (t < 0)
+                once(a, "ACCESSOR_ANIMATION_INPUT_NEGATIVE", Severity::Error,
+                     "Animation input accessor element at index " + std::to_string(i) +
+                         " is negative: " + std::to_string(t) + ".");
+            else if (i > 0 && t <= r.raw(i - 1, 0))
+                once(b, "ACCESSOR_ANIMATION_INPUT_NON_INCREASING", Severity::Error,
+                     "Animation input accessor element at index " + std::to_string(i) +
+                         " is less than or equal to previous: " + std::to_string(t) +
+                         " <= " + std::to_string(r.raw(i - 1, 0)) + ".");
+        }
+        break;
+    case AccessorUse::AnimationOutputRotation:
+        if (r.components() != 4) break;
+        for (std::uint64_t i = 0; i < n; ++i) {
+            if (u.mode == 1 && i % 3 != 1) continue; // cubic: in-tangent, value, out-tangent
+            double len2 = 0;
+            for (std::uint32_t k = 0; k < 4; ++k) len2 += r.value(i, k) * r.value(i, k);
+            if (std::isfinite(len2) && std::abs(std::sqrt(len2) - 1) > 0.00769)
+                once(a, "ACCESSOR_ANIMATION_SAMPLER_OUTPUT_NON_NORMALIZED_QUATERNION",
+                     Severity::Error,
+                     "Animation sampler output accessor element " + std::to_string(i) +
+                         " is not of unit length: " + std::to_string(std::sqrt(len2)) + ".");
+        }
+        break;
+    default:
+        break;
+    }
+}
+
+} // namespace
+
+void validate_data(Validation& v, Buffers buffers) {
+    const Json& buffers_json = v.array("buffers");
+    for (std::size_t i = 0; i < buffers_json.size() && i < buffers.size(); ++i) {
+        const std::int64_t declared = int_or(buffers_json[i], "byteLength", 0);
+        if (!buffers[i].empty() && declared > 0 &&
+            buffers[i].size() < static_cast<std::uint64_t>(declared))
+            v.add("BUFFER_BYTE_LENGTH_MISMATCH", Severity::Error, ptr("/buffers", i),
+                  "Actual data byte length (" + std::to_string(buffers[i].size()) +
+                      ") is less than the declared buffer byte length (" +
+                      std::to_string(declared) + ").");
+    }
+    for (std::size_t i = 0; i < v.accessors.size(); ++i) {
+        if (v.accessors[i].sparse) continue; // values are the base with overrides: not read here
+        const Reader r(v.accessors[i], buffers);
+        if (r.ok()) check_min_max(v, i, r);
+    }
+    for (const AccessorUsage& u : v.usages) {
+        if (u.accessor >= v.accessors.size() || v.accessors[u.accessor].sparse) continue;
+        const Reader r(v.accessors[u.accessor], buffers);
+        if (r.ok()) check_use(v, u, r, buffers);
+    }
+}
+
+} // namespace sherpa::detail

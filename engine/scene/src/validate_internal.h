@@ -1,0 +1,132 @@
+#pragma once
+// Internal: the glTF validator's shared state. It runs in two passes over what the
+// importer has parsed anyway: validate_document() over the JSON (schema, references,
+// links; before tinygltf sees the file) and validate_data() over the buffers tinygltf
+// loaded (accessor values). Codes, severities and JSON pointers follow the Khronos
+// glTF-Validator (its ISSUES.md); checks of our own carry SHERPA_ codes.
+#include <sherpa/scene/validation.h>
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace sherpa::detail {
+
+using Json = nlohmann::json;
+
+// A JSON pointer being built: "/meshes/0/primitives/1".
+std::string ptr(std::string_view base, std::string_view key);
+std::string ptr(std::string_view base, std::size_t index);
+
+// Semantic use of an accessor found while validating references; the data pass
+// checks the values each use requires.
+enum class AccessorUse : std::uint8_t {
+    Indices,
+    Position,
+    Normal,
+    Tangent,
+    Joints,
+    Weights,
+    Color,
+    AnimationInput,
+    AnimationOutputRotation,
+    InverseBindMatrices,
+};
+struct AccessorUsage {
+    std::size_t accessor = 0;
+    AccessorUse use = AccessorUse::Position;
+    std::string pointer;            // where the use is (the Khronos pointer for data messages)
+    std::uint64_t limit = 0;        // Indices: vertex count; Joints: joint count
+    int mode = 4;                   // Indices: primitive mode
+    std::size_t partner = SIZE_MAX; // Joints: its WEIGHTS accessor
+};
+
+// What the link checks established about accessors and buffer views, so the data
+// pass reads only what fits.
+struct AccessorLayout {
+    bool readable = false; // resolved and inside its buffer: values can be read
+    std::size_t buffer = 0;
+    std::uint64_t offset = 0, stride = 0; // absolute offset into the buffer; element stride
+    int component_type = 0;
+    std::uint32_t components = 0; // 1..16
+    std::uint64_t count = 0;
+    bool normalized = false;
+    bool has_min = false, has_max = false; // declared with the right length
+    bool sparse = false;                   // values overridden: checked only when readable
+};
+
+struct Validation {
+    ValidationReport& report;
+    const Json& root;
+    bool glb = false;
+    bool glb_has_bin = false;
+    std::vector<AccessorLayout> accessors;
+    std::vector<AccessorUsage> usages;
+
+    void add(std::string_view code, Severity s, std::string pointer, std::string message);
+    // The array `key` of the root (an empty array when absent or not an array).
+    const Json& array(const char* key) const;
+    // Member `key` of `obj`, or null when `obj` is no object or lacks it.
+    static const Json& member(const Json& obj, const char* key);
+    // Element `i` of array `a` when it is an object, or an empty object.
+    static const Json& member(const Json& a, std::size_t i);
+    std::size_t size(const char* key) const { return array(key).size(); }
+};
+
+// Passes, in order. Each only reads the JSON; none throws on bad input.
+void validate_glb(Validation& v, std::span<const std::uint8_t> glb); // chunks; sets glb_has_bin
+void validate_schema(Validation& v);     // types, required, enums, ranges, references
+void validate_extensions(Validation& v); // extensionsUsed/Required, where extensions are
+void validate_buffers(Validation& v);    // buffers, bufferViews, accessors (links, layout)
+void validate_meshes(Validation& v);     // primitives, morph targets, skins on meshes
+void validate_nodes(Validation& v);      // node graph, scenes, skins
+void validate_animations(Validation& v); // channels, samplers
+void validate_materials(Validation& v);  // cameras, materials, textures, images, samplers
+void validate_unused(Validation& v);     // UNUSED_OBJECT
+// Accessor values (min/max, floats, normals, indices, weights, key times, ...), over
+// the buffers' bytes as loaded; `buffers[i]` empty where buffer i could not be read.
+void validate_data(Validation& v, std::span<const std::span<const std::uint8_t>> buffers);
+
+// Every JSON pass above, in order: what the importer calls before tinygltf parses.
+void validate_document(Validation& v);
+
+// JSON helpers shared by the passes.
+bool is_int(const Json& j); // an integer, 1.0 included
+std::int64_t as_int(const Json& j);
+// Integer member `key` of `obj`, or `fallback` when absent or not an integer.
+std::int64_t int_or(const Json& obj, const char* key, std::int64_t fallback);
+// A valid index into root array `target` at obj[key], or -1.
+std::int64_t ref(const Validation& v, const Json& obj, const char* key, const char* target);
+std::uint32_t components_of(std::string_view type);        // "VEC3" -> 3, 0 when unknown
+std::uint32_t component_size(std::int64_t component_type); // 5126 -> 4, 0 when unknown
+
+} // namespace sherpa::detail
+
+namespace sherpa::detail {
+
+// The importer's handle on the validator: the GLB and JSON passes run on construction,
+// the data pass once tinygltf has loaded the buffers; report.ms sums both.
+class DocumentValidator {
+public:
+    DocumentValidator(const Json& root, std::span<const std::uint8_t> file, bool glb,
+                      ValidationReport& report);
+    void check_data(std::span<const std::span<const std::uint8_t>> buffers);
+    bool glb_has_bin() const { return v_.glb_has_bin; }
+
+private:
+    Validation v_;
+};
+
+// Adds `text` (an importer warning such as "meshes[0].primitives[1]: ...") to `report`
+// with `code` and the JSON pointer its leading path names.
+void add_import_message(ValidationReport& report, std::string_view code, Severity severity,
+                        const std::string& text);
+// "meshes[0].primitives[1].attributes.POSITION: ..." ->
+// "/meshes/0/primitives/1/attributes/POSITION"
+std::string pointer_of_path(std::string_view text);
+
+} // namespace sherpa::detail

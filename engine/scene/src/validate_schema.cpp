@@ -1,0 +1,428 @@
+// The schema pass: property types, required properties, enumerations, ranges and
+// references, for the glTF 2.0 core schema. One table per object kind, so each
+// property is checked in one place; semantic checks live in the other passes.
+#include "validate_internal.h"
+
+#include <cmath>
+#include <cstring>
+#include <initializer_list>
+
+namespace sherpa::detail {
+namespace {
+
+enum class T : std::uint8_t {
+    Index,      // integer >= 0 that must resolve into root array `target`
+    IndexArray, // array of such
+    Int,        // integer in [lo, hi]
+    Num,        // number in [lo, hi] (exclusive low when `open`)
+    NumArray,   // numbers in [lo, hi]; length in `lengths` when given
+    Str,
+    Bool,
+    Obj,    // checked with kind `target`
+    ObjArr, // array of objects of kind `target`
+    IntEnum,
+    StrEnum,
+    Any,
+};
+
+struct Prop {
+    const char* name;
+    T type;
+    bool required = false;
+    const char* target = nullptr; // Index*: root array; Obj*: kind
+    double lo = -INFINITY, hi = INFINITY;
+    bool open = false;                    // Num: lo is exclusive
+    std::initializer_list<int> lengths{}; // NumArray lengths; IntEnum values
+    std::initializer_list<const char*> words{};
+};
+
+struct Kind {
+    const char* name;
+    std::initializer_list<Prop> props;
+};
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The glTF 2.0 schema, as far as it decides what is drawn or inspected.
+const Kind kKinds[] = {
+    {"root",
+     {{"asset", T::Obj, true, "asset"},
+      {"scene", T::Index, false, "scenes"},
+      {"scenes", T::ObjArr, false, "scene"},
+      {"nodes", T::ObjArr, false, "node"},
+      {"meshes", T::ObjArr, false, "mesh"},
+      {"materials", T::ObjArr, false, "material"},
+      {"textures", T::ObjArr, false, "texture"},
+      {"images", T::ObjArr, false, "image"},
+      {"samplers", T::ObjArr, false, "sampler"},
+      {"accessors", T::ObjArr, false, "accessor"},
+      {"bufferViews", T::ObjArr, false, "bufferView"},
+      {"buffers", T::ObjArr, false, "buffer"},
+      {"cameras", T::ObjArr, false, "camera"},
+      {"skins", T::ObjArr, false, "skin"},
+      {"animations", T::ObjArr, false, "animation"},
+      {"extensionsUsed", T::Any},
+      {"extensionsRequired", T::Any}}},
+    {"asset",
+     {{"version", T::Str, true},
+      {"minVersion", T::Str},
+      {"generator", T::Str},
+      {"copyright", T::Str}}},
+    {"scene", {{"nodes", T::IndexArray, false, "nodes"}}},
+    {"node",
+     {{"camera", T::Index, false, "cameras"},
+      {"children", T::IndexArray, false, "nodes"},
+      {"skin", T::Index, false, "skins"},
+      {"matrix", T::NumArray, false, nullptr, -INFINITY, INFINITY, false, {16}},
+      {"mesh", T::Index, false, "meshes"},
+      {"rotation", T::NumArray, false, nullptr, -1, 1, false, {4}},
+      {"scale", T::NumArray, false, nullptr, -INFINITY, INFINITY, false, {3}},
+      {"translation", T::NumArray, false, nullptr, -INFINITY, INFINITY, false, {3}},
+      {"weights", T::NumArray}}},
+    {"mesh", {{"primitives", T::ObjArr, true, "primitive"}, {"weights", T::NumArray}}},
+    {"primitive",
+     {{"attributes", T::Any, true},
+      {"indices", T::Index, false, "accessors"},
+      {"material", T::Index, false, "materials"},
+      {"mode", T::Int, false, nullptr, 0, 6},
+      {"targets", T::Any}}},
+    {"accessor",
+     {{"bufferView", T::Index, false, "bufferViews"},
+      {"byteOffset", T::Int, false, nullptr, 0},
+      {"componentType",
+       T::IntEnum,
+       true,
+       nullptr,
+       0,
+       0,
+       false,
+       {5120, 5121, 5122, 5123, 5125, 5126}},
+      {"normalized", T::Bool},
+      {"count", T::Int, true, nullptr, 1},
+      {"type",
+       T::StrEnum,
+       true,
+       nullptr,
+       0,
+       0,
+       false,
+       {},
+       {"SCALAR", "VEC2", "VEC3", "VEC4", "MAT2", "MAT3", "MAT4"}},
+      {"max", T::NumArray},
+      {"min", T::NumArray},
+      {"sparse", T::Obj, false, "sparse"}}},
+    {"sparse",
+     {{"count", T::Int, true, nullptr, 1},
+      {"indices", T::Obj, true, "sparseIndices"},
+      {"values", T::Obj, true, "sparseValues"}}},
+    {"sparseIndices",
+     {{"bufferView", T::Index, true, "bufferViews"},
+      {"byteOffset", T::Int, false, nullptr, 0},
+      {"componentType", T::IntEnum, true, nullptr, 0, 0, false, {5121, 5123, 5125}}}},
+    {"sparseValues",
+     {{"bufferView", T::Index, true, "bufferViews"}, {"byteOffset", T::Int, false, nullptr, 0}}},
+    {"bufferView",
+     {{"buffer", T::Index, true, "buffers"},
+      {"byteOffset", T::Int, false, nullptr, 0},
+      {"byteLength", T::Int, true, nullptr, 1},
+      {"byteStride", T::Int, false, nullptr, 4, 252},
+      {"target", T::IntEnum, false, nullptr, 0, 0, false, {34962, 34963}}}},
+    {"buffer", {{"uri", T::Str}, {"byteLength", T::Int, true, nullptr, 1}}},
+    {"camera",
+     {{"type", T::StrEnum, true, nullptr, 0, 0, false, {}, {"perspective", "orthographic"}},
+      {"perspective", T::Obj, false, "perspective"},
+      {"orthographic", T::Obj, false, "orthographic"}}},
+    {"perspective",
+     {{"aspectRatio", T::Num, false, nullptr, 0, INFINITY, true},
+      {"yfov", T::Num, true, nullptr, 0, INFINITY, true},
+      {"zfar", T::Num, false, nullptr, 0, INFINITY, true},
+      {"znear", T::Num, true, nullptr, 0, INFINITY, true}}},
+    {"orthographic",
+     {{"xmag", T::Num, true},
+      {"ymag", T::Num, true},
+      {"zfar", T::Num, true, nullptr, 0, INFINITY, true},
+      {"znear", T::Num, true, nullptr, 0}}},
+    {"material",
+     {{"pbrMetallicRoughness", T::Obj, false, "pbr"},
+      {"normalTexture", T::Obj, false, "normalTextureInfo"},
+      {"occlusionTexture", T::Obj, false, "occlusionTextureInfo"},
+      {"emissiveTexture", T::Obj, false, "textureInfo"},
+      {"emissiveFactor", T::NumArray, false, nullptr, 0, 1, false, {3}},
+      {"alphaMode", T::StrEnum, false, nullptr, 0, 0, false, {}, {"OPAQUE", "MASK", "BLEND"}},
+      {"alphaCutoff", T::Num, false, nullptr, 0},
+      {"doubleSided", T::Bool}}},
+    {"pbr",
+     {{"baseColorFactor", T::NumArray, false, nullptr, 0, 1, false, {4}},
+      {"baseColorTexture", T::Obj, false, "textureInfo"},
+      {"metallicFactor", T::Num, false, nullptr, 0, 1},
+      {"roughnessFactor", T::Num, false, nullptr, 0, 1},
+      {"metallicRoughnessTexture", T::Obj, false, "textureInfo"}}},
+    {"textureInfo",
+     {{"index", T::Index, true, "textures"}, {"texCoord", T::Int, false, nullptr, 0}}},
+    {"normalTextureInfo",
+     {{"index", T::Index, true, "textures"},
+      {"texCoord", T::Int, false, nullptr, 0},
+      {"scale", T::Num}}},
+    {"occlusionTextureInfo",
+     {{"index", T::Index, true, "textures"},
+      {"texCoord", T::Int, false, nullptr, 0},
+      {"strength", T::Num, false, nullptr, 0, 1}}},
+    {"texture", {{"sampler", T::Index, false, "samplers"}, {"source", T::Index, false, "images"}}},
+    {"sampler",
+     {{"magFilter", T::IntEnum, false, nullptr, 0, 0, false, {9728, 9729}},
+      {"minFilter", T::IntEnum, false, nullptr, 0, 0, false, {9728, 9729, 9984, 9985, 9986, 9987}},
+      {"wrapS", T::IntEnum, false, nullptr, 0, 0, false, {33071, 33648, 10497}},
+      {"wrapT", T::IntEnum, false, nullptr, 0, 0, false, {33071, 33648, 10497}}}},
+    {"image",
+     {{"uri", T::Str},
+      {"mimeType", T::StrEnum, false, nullptr, 0, 0, false, {}, {"image/jpeg", "image/png"}},
+      {"bufferView", T::Index, false, "bufferViews"}}},
+    {"skin",
+     {{"inverseBindMatrices", T::Index, false, "accessors"},
+      {"skeleton", T::Index, false, "nodes"},
+      {"joints", T::IndexArray, true, "nodes"}}},
+    {"animation",
+     {{"channels", T::ObjArr, true, "channel"}, {"samplers", T::ObjArr, true, "animSampler"}}},
+    {"channel", {{"sampler", T::Int, true, nullptr, 0}, {"target", T::Obj, true, "target"}}},
+    {"target",
+     {{"node", T::Index, false, "nodes"},
+      {"path",
+       T::StrEnum,
+       true,
+       nullptr,
+       0,
+       0,
+       false,
+       {},
+       {"translation", "rotation", "scale", "weights", "pointer"}}}},
+    {"animSampler",
+     {{"input", T::Index, true, "accessors"},
+      {"interpolation",
+       T::StrEnum,
+       false,
+       nullptr,
+       0,
+       0,
+       false,
+       {},
+       {"LINEAR", "STEP", "CUBICSPLINE"}},
+      {"output", T::Index, true, "accessors"}}},
+};
+
+const Kind* kind_named(const char* name) {
+    for (const Kind& k : kKinds)
+        if (std::strcmp(k.name, name) == 0) return &k;
+    return nullptr;
+}
+
+std::string short_text(const Json& j) {
+    std::string s = j.dump(-1, ' ', false, Json::error_handler_t::replace);
+    return s.size() > 40 ? s.substr(0, 37) + "..." : s;
+}
+
+struct Schema {
+    Validation& v;
+
+    void type_mismatch(const Json& j, const std::string& p, const char* want) {
+        v.add("TYPE_MISMATCH", Severity::Error, p,
+              "Type mismatch. Property value " + short_text(j) + " is not a '" + want + "'.");
+    }
+    void index(const Json& j, const std::string& p, const char* target) {
+        if (!j.is_number()) return type_mismatch(j, p, "integer");
+        if (!is_int(j)) return type_mismatch(j, p, "integer");
+        const std::int64_t i = as_int(j);
+        if (i < 0) {
+            v.add("INVALID_INDEX", Severity::Error, p, "Index must be a non-negative integer.");
+            return;
+        }
+        if (target && static_cast<std::uint64_t>(i) >= v.size(target))
+            v.add("UNRESOLVED_REFERENCE", Severity::Error, p,
+                  "Unresolved reference: " + std::to_string(i) + ".");
+    }
+    void number(const Json& j, const std::string& p, const Prop& pr) {
+        if (!j.is_number()) return type_mismatch(j, p, "number");
+        const double x = j.get<double>();
+        if (x < pr.lo || x > pr.hi || (pr.open && x == pr.lo))
+            v.add("VALUE_NOT_IN_RANGE", Severity::Error, p,
+                  "Value " + short_text(j) + " is out of range.");
+    }
+    void property(const Json& j, const std::string& p, const Prop& pr) {
+        switch (pr.type) {
+        case T::Index:
+            index(j, p, pr.target);
+            break;
+        case T::IndexArray: {
+            if (!j.is_array()) return type_mismatch(j, p, "array");
+            if (j.empty()) v.add("EMPTY_ENTITY", Severity::Error, p, "Entity cannot be empty.");
+            std::vector<std::int64_t> seen;
+            for (std::size_t i = 0; i < j.size(); ++i) {
+                index(j[i], ptr(p, i), pr.target);
+                if (!is_int(j[i])) continue;
+                const std::int64_t x = as_int(j[i]);
+                bool dup = false;
+                for (std::int64_t s : seen) dup |= s == x;
+                if (dup)
+                    v.add("DUPLICATE_ELEMENTS", Severity::Error, ptr(p, i), "Duplicate element.");
+                if (seen.size() < 4096) seen.push_back(x); // keeps the check linear on big arrays
+            }
+            break;
+        }
+        case T::Int:
+            if (!j.is_number() || !is_int(j)) return type_mismatch(j, p, "integer");
+            if (static_cast<double>(as_int(j)) < pr.lo || static_cast<double>(as_int(j)) > pr.hi)
+                v.add("VALUE_NOT_IN_RANGE", Severity::Error, p,
+                      "Value " + short_text(j) + " is out of range.");
+            break;
+        case T::Num:
+            number(j, p, pr);
+            break;
+        case T::NumArray: {
+            if (!j.is_array()) return type_mismatch(j, p, "array");
+            bool length_ok = pr.lengths.size() == 0;
+            for (int n : pr.lengths) length_ok |= j.size() == static_cast<std::size_t>(n);
+            if (!length_ok) {
+                v.add("ARRAY_LENGTH_NOT_IN_LIST", Severity::Error, p,
+                      "Invalid array length " + std::to_string(j.size()) + ".");
+                return;
+            }
+            if (j.empty()) v.add("EMPTY_ENTITY", Severity::Error, p, "Entity cannot be empty.");
+            for (std::size_t i = 0; i < j.size(); ++i) {
+                if (!j[i].is_number()) {
+                    v.add("ARRAY_TYPE_MISMATCH", Severity::Error, ptr(p, i),
+                          "Type mismatch. Array element " + short_text(j[i]) +
+                              " is not a 'number'.");
+                    continue;
+                }
+                number(j[i], ptr(p, i), pr);
+            }
+            break;
+        }
+        case T::Str:
+            if (!j.is_string()) type_mismatch(j, p, "string");
+            break;
+        case T::Bool:
+            if (!j.is_boolean()) type_mismatch(j, p, "boolean");
+            break;
+        case T::Obj:
+            if (!j.is_object()) return type_mismatch(j, p, "object");
+            object(j, p, pr.target);
+            break;
+        case T::ObjArr: {
+            if (!j.is_array()) return type_mismatch(j, p, "array");
+            if (j.empty()) v.add("EMPTY_ENTITY", Severity::Error, p, "Entity cannot be empty.");
+            for (std::size_t i = 0; i < j.size(); ++i) {
+                if (!j[i].is_object())
+                    type_mismatch(j[i], ptr(p, i), "object");
+                else
+                    object(j[i], ptr(p, i), pr.target);
+            }
+            break;
+        }
+        case T::IntEnum: {
+            if (!j.is_number() || !is_int(j)) return type_mismatch(j, p, "integer");
+            bool ok = false;
+            for (int x : pr.lengths) ok |= as_int(j) == x;
+            if (!ok)
+                v.add("VALUE_NOT_IN_LIST", Severity::Warning, p,
+                      "Invalid value " + short_text(j) + ".");
+            break;
+        }
+        case T::StrEnum: {
+            if (!j.is_string()) return type_mismatch(j, p, "string");
+            bool ok = false;
+            for (const char* w : pr.words) ok |= j.get_ref<const std::string&>() == w;
+            if (!ok)
+                v.add("VALUE_NOT_IN_LIST", Severity::Warning, p,
+                      "Invalid value " + short_text(j) + ".");
+            break;
+        }
+        case T::Any:
+            break;
+        }
+    }
+    void object(const Json& obj, const std::string& p, const char* kind_name) {
+        const Kind* kind = kind_named(kind_name);
+        if (!kind) return;
+        for (const auto& [key, value] : obj.items()) {
+            const Prop* found = nullptr;
+            for (const Prop& pr : kind->props)
+                if (key == pr.name) found = &pr;
+            if (found) {
+                property(value, ptr(p, key), *found);
+            } else if (key == "extensions") {
+                if (!value.is_object()) type_mismatch(value, ptr(p, key), "object");
+            } else if (key == "extras") {
+                if (!value.is_object())
+                    v.add("NON_OBJECT_EXTRAS", Severity::Information, ptr(p, key),
+                          "Prefer JSON Objects for extras.");
+            } else if (key == "name" && std::strcmp(kind_name, "root") != 0) {
+                if (!value.is_string()) type_mismatch(value, ptr(p, key), "string");
+            } else {
+                v.add("UNEXPECTED_PROPERTY", Severity::Warning, ptr(p, key),
+                      "Unexpected property.");
+            }
+        }
+        for (const Prop& pr : kind->props)
+            if (pr.required && !obj.contains(pr.name))
+                v.add("UNDEFINED_PROPERTY", Severity::Error, p,
+                      std::string("Property '") + pr.name + "' must be defined.");
+    }
+};
+
+// asset.version and minVersion: "major.minor", 2.x.
+void check_version(Validation& v) {
+    const auto asset = v.root.find("asset");
+    if (asset == v.root.end() || !asset->is_object()) return;
+    auto parse = [](const Json& j, int& major, int& minor) {
+        if (!j.is_string()) return false;
+        const std::string& s = j.get_ref<const std::string&>();
+        const auto dot = s.find('.');
+        auto digits = [](std::string_view t) {
+            if (t.empty() || t.size() > 9 || (t.size() > 1 && t[0] == '0')) return false;
+            for (char c : t)
+                if (c < '0' || c > '9') return false;
+            return true;
+        };
+        if (dot == std::string::npos || !digits(std::string_view(s).substr(0, dot)) ||
+            !digits(std::string_view(s).substr(dot + 1)))
+            return false;
+        major = std::stoi(s.substr(0, dot));
+        minor = std::stoi(s.substr(dot + 1));
+        return true;
+    };
+    int major = 2, minor = 0;
+    const auto version = asset->find("version");
+    if (version != asset->end() && version->is_string()) {
+        if (!parse(*version, major, minor)) {
+            v.add("PATTERN_MISMATCH", Severity::Error, "/asset/version",
+                  "Value " + short_text(*version) +
+                      " does not match regexp pattern '^([0-9]+)\\.([0-9]+)$'.");
+        } else if (major != 2) {
+            v.add("UNKNOWN_ASSET_MAJOR_VERSION", Severity::Error, "/asset/version",
+                  "Unknown glTF major asset version: " + std::to_string(major) + ".");
+        } else if (minor > 0) {
+            v.add("UNKNOWN_ASSET_MINOR_VERSION", Severity::Warning, "/asset/version",
+                  "Unknown glTF minor asset version: " + std::to_string(minor) + ".");
+        }
+    }
+    const auto min_version = asset->find("minVersion");
+    int min_major = 0, min_minor = 0;
+    if (min_version == asset->end() || !min_version->is_string()) return;
+    if (!parse(*min_version, min_major, min_minor)) {
+        v.add("PATTERN_MISMATCH", Severity::Error, "/asset/minVersion",
+              "Value " + short_text(*min_version) +
+                  " does not match regexp pattern '^([0-9]+)\\.([0-9]+)$'.");
+    } else if (min_major > major || (min_major == major && min_minor > minor)) {
+        v.add("ASSET_MIN_VERSION_GREATER_THAN_VERSION", Severity::Error, "/asset/minVersion",
+              "Asset minVersion " + short_text(*min_version) + " is greater than version.");
+    }
+}
+
+} // namespace
+
+void validate_schema(Validation& v) {
+    Schema{v}.object(v.root, "", "root");
+    check_version(v);
+}
+
+} // namespace sherpa::detail

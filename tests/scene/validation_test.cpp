@@ -1,0 +1,189 @@
+// The glTF validator (Khronos codes, JSON pointers) and load-and-warn: files with
+// problems load and name them. tests/data/validation holds one file per code
+// (tools/gltf_validator/make_cases.py); the Khronos validator's verdict on each is the
+// oracle test (validation_oracle_agreement); these pin the cases that decide loading.
+#include "test_support.h"
+
+#include <sherpa/scene/scene_loader.h>
+
+#include <gtest/gtest.h>
+
+#include "validate_internal.h" // engine/scene/src: pointer_of_path
+
+namespace {
+
+namespace test = sherpa::test;
+using sherpa::Severity;
+using sherpa::ValidationReport;
+
+std::string case_path(const std::string& name) {
+    return (test::data_dir() / "validation" / name).string();
+}
+
+bool has(const ValidationReport& r, const std::string& code, const std::string& pointer) {
+    for (const auto& m : r.messages)
+        if (m.code == code && m.pointer == pointer) return true;
+    return false;
+}
+
+std::string dump(const ValidationReport& r) {
+    std::string s;
+    for (const auto& m : r.messages) s += m.code + " " + m.pointer + ": " + m.message + "\n";
+    return s;
+}
+
+TEST(Validation, ValidFileHasNoErrorsOrWarnings) {
+    const auto r = sherpa::load_scene(case_path("valid.gltf"));
+    ASSERT_TRUE(r) << r.error;
+    EXPECT_EQ(r.scene->validation.count(Severity::Error), 0u) << dump(r.scene->validation);
+    EXPECT_EQ(r.scene->validation.count(Severity::Warning), 0u) << dump(r.scene->validation);
+    EXPECT_GT(r.scene->validation.ms, 0.0);
+}
+
+// Each: file, a code with its pointer that must be reported, and the file must load.
+struct Expect {
+    const char* file;
+    const char* code;
+    const char* pointer;
+};
+
+class LoadsWithMessage : public ::testing::TestWithParam<Expect> {};
+
+TEST_P(LoadsWithMessage, AndNamesIt) {
+    const auto r = sherpa::load_scene(case_path(GetParam().file));
+    ASSERT_TRUE(r) << r.error;
+    EXPECT_TRUE(has(r.scene->validation, GetParam().code, GetParam().pointer))
+        << dump(r.scene->validation);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Codes, LoadsWithMessage,
+    ::testing::Values(
+        Expect{"accessor_min_mismatch.gltf", "ACCESSOR_MIN_MISMATCH", "/accessors/0/min/0"},
+        Expect{"accessor_out_of_max.gltf", "ACCESSOR_ELEMENT_OUT_OF_MAX_BOUND",
+               "/accessors/0/max/0"},
+        Expect{"accessor_normal_non_unit.gltf", "ACCESSOR_VECTOR3_NON_UNIT",
+               "/meshes/0/primitives/0/attributes/NORMAL"},
+        Expect{"anim_input_non_increasing.gltf", "ACCESSOR_ANIMATION_INPUT_NON_INCREASING",
+               "/animations/0/samplers/0/input"},
+        Expect{"anim_input_non_increasing.gltf", "SHERPA_ANIMATION_CHANNEL_SKIPPED",
+               "/animations/0/samplers/0/input"},
+        Expect{"anim_quaternion_non_unit.gltf",
+               "ACCESSOR_ANIMATION_SAMPLER_OUTPUT_NON_NORMALIZED_QUATERNION",
+               "/animations/0/channels/0/sampler"},
+        Expect{"anim_bad_interpolation.gltf", "VALUE_NOT_IN_LIST",
+               "/animations/0/samplers/0/interpolation"},
+        Expect{"bad_alpha_mode.gltf", "VALUE_NOT_IN_LIST", "/materials/0/alphaMode"},
+        Expect{"unresolved_accessor.gltf", "UNRESOLVED_REFERENCE",
+               "/meshes/0/primitives/0/attributes/NORMAL"},
+        Expect{"node_matrix_non_trs.gltf", "NODE_MATRIX_NON_TRS", "/nodes/0/matrix"},
+        Expect{"camera_zfar.gltf", "CAMERA_ZFAR_LEQUAL_ZNEAR", "/cameras/0/perspective"},
+        Expect{"weights_non_normalized.gltf", "ACCESSOR_WEIGHTS_NON_NORMALIZED",
+               "/meshes/1/primitives/0/attributes/WEIGHTS_0"},
+        Expect{"index_oob.gltf", "ACCESSOR_INDEX_OOB", "/meshes/0/primitives/0/indices"},
+        Expect{"min_version_greater.gltf", "ASSET_MIN_VERSION_GREATER_THAN_VERSION",
+               "/asset/minVersion"},
+        Expect{"unexpected_property.gltf", "UNEXPECTED_PROPERTY", "/nodes/0/foo"},
+        Expect{"undeclared_extension.gltf", "UNDECLARED_EXTENSION", "/nodes/0/extensions/KHR_foo"},
+        Expect{"glb_extra_data.glb", "GLB_EXTRA_DATA", ""},
+        Expect{"glb_data_uri.glb", "DATA_URI_GLB", "/buffers/0/uri"}),
+    [](const auto& param_info) {
+        std::string n = std::string(param_info.param.file) + "_" + param_info.param.code;
+        for (char& c : n)
+            if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+        return n;
+    });
+
+// What the specification allows loads without an error, whatever tinygltf thinks.
+TEST(LoadAndWarn, IntegersWrittenAsFloatsLoad) {
+    const auto r = sherpa::load_scene(case_path("integer_as_float.gltf"));
+    ASSERT_TRUE(r) << r.error;
+    EXPECT_EQ(r.scene->validation.count(Severity::Error), 0u) << dump(r.scene->validation);
+    EXPECT_EQ(r.scene->meshes.size(), 2u);
+}
+
+TEST(LoadAndWarn, PlaceholderBufferWithoutUriLoadsAndNamesWhatItSkips) {
+    auto doc = test::read_json(case_path("valid.gltf"));
+    doc["buffers"].push_back({{"byteLength", 1024}}); // a placeholder nothing reads
+    const auto path = std::filesystem::temp_directory_path() / "sherpa_placeholder_buffer.gltf";
+    std::ofstream(path) << doc.dump();
+    const auto r = sherpa::load_scene(path.string());
+    ASSERT_TRUE(r) << r.error;
+    EXPECT_EQ(r.scene->meshes.size(), 2u);
+    EXPECT_TRUE(has(r.scene->validation, "SHERPA_BUFFER_NOT_LOADED", "/buffers/1"))
+        << dump(r.scene->validation);
+    EXPECT_EQ(r.scene->validation.count(Severity::Error), 0u) << dump(r.scene->validation);
+}
+
+TEST(LoadAndWarn, UnfetchableUriIsAWarningAndItsReadersAreSkipped) {
+    auto doc = test::read_json(case_path("valid.gltf"));
+    doc["buffers"][0]["uri"] = "https://example.invalid/data.bin";
+    const auto path = std::filesystem::temp_directory_path() / "sherpa_remote_buffer.gltf";
+    std::ofstream(path) << doc.dump();
+    const auto r = sherpa::load_scene(path.string());
+    ASSERT_TRUE(r) << r.error;
+    EXPECT_TRUE(has(r.scene->validation, "NON_RELATIVE_URI", "/buffers/0/uri"));
+    EXPECT_TRUE(has(r.scene->validation, "SHERPA_BUFFER_NOT_LOADED", "/buffers/0"));
+    EXPECT_TRUE(r.scene->meshes.empty()) << "every primitive read the remote buffer";
+    EXPECT_EQ(r.scene->primitives.size(), 2u) << "skipped primitives stay listed";
+    EXPECT_FALSE(r.scene->primitives[0].skipped_reason.empty());
+}
+
+TEST(LoadAndWarn, DataUriInGlbLoads) {
+    const auto r = sherpa::load_scene(case_path("glb_data_uri.glb"));
+    ASSERT_TRUE(r) << r.error;
+    EXPECT_EQ(r.scene->meshes.size(), 2u);
+}
+
+TEST(LoadAndWarn, RepeatedKeyTimesSkipTheChannelNotTheFile) {
+    const auto r = sherpa::load_scene(case_path("anim_input_non_increasing.gltf"));
+    ASSERT_TRUE(r) << r.error;
+    ASSERT_EQ(r.scene->animations.size(), 1u);
+    EXPECT_TRUE(r.scene->animations[0].channels.empty());
+    EXPECT_EQ(r.scene->meshes.size(), 2u);
+}
+
+TEST(LoadAndWarn, RefusalCarriesTheValidatorsMessages) {
+    const auto r = sherpa::load_scene((test::data_dir() / "version_3.gltf").string());
+    ASSERT_FALSE(r);
+    ASSERT_FALSE(r.validation.messages.empty());
+    EXPECT_EQ(r.validation.messages.back().code, "SHERPA_LOAD_REFUSED");
+    EXPECT_EQ(r.validation.messages.back().severity, Severity::Error);
+}
+
+// A view past its buffer is still refused (the importer's raw checks), but the report
+// carries the validator's message as well as the refusal.
+TEST(LoadAndWarn, RefusedFileKeepsTheKhronosCode) {
+    const auto r = sherpa::load_scene(case_path("buffer_view_too_long.gltf"));
+    ASSERT_FALSE(r);
+    EXPECT_TRUE(has(r.validation, "BUFFER_VIEW_TOO_LONG", "/bufferViews/8/byteLength"))
+        << dump(r.validation);
+    EXPECT_TRUE(has(r.validation, "SHERPA_LOAD_REFUSED", "/bufferViews/8")) << dump(r.validation);
+}
+
+TEST(Validation, ImporterWarningsBecomeMessagesWithPointers) {
+    EXPECT_EQ(sherpa::detail::pointer_of_path("meshes[0].primitives[1].attributes.POSITION: x"),
+              "/meshes/0/primitives/1/attributes/POSITION");
+    EXPECT_EQ(sherpa::detail::pointer_of_path("animations[2]: 3 channel(s)"), "/animations/2");
+    EXPECT_EQ(sherpa::detail::pointer_of_path("attributes TEXCOORD_2 are not used"), "");
+}
+
+// The hostile reproducers: every one either loads or is refused, never crashes; a
+// loaded one carries only well-formed messages.
+TEST(Validation, HostileFilesGiveWellFormedReports) {
+    for (const auto& e : std::filesystem::directory_iterator(test::data_dir())) {
+        const auto ext = e.path().extension();
+        if (ext != ".gltf" && ext != ".glb") continue;
+        const auto r = sherpa::load_scene(e.path().string());
+        const ValidationReport& report = r ? r.scene->validation : r.validation;
+        for (const auto& m : report.messages) {
+            EXPECT_FALSE(m.code.empty()) << e.path();
+            EXPECT_TRUE(m.pointer.empty() || m.pointer[0] == '/') << e.path() << " " << m.pointer;
+        }
+        if (!r) {
+            EXPECT_FALSE(r.error.empty()) << e.path();
+        }
+    }
+}
+
+} // namespace

@@ -19,6 +19,7 @@
 #include <QVulkanInstance>
 
 #include "acceleration_dock.h"
+#include "validation_dock.h"
 #include "compare_controls.h"
 #include "culling_dock.h"
 #include "culling_monitor.h"
@@ -230,7 +231,7 @@ void MainWindow::createMenus() {
           static_cast<QDockWidget*>(material_), static_cast<QDockWidget*>(textures_),
           static_cast<QDockWidget*>(culling_dock_), static_cast<QDockWidget*>(log_),
           static_cast<QDockWidget*>(timeline_), static_cast<QDockWidget*>(lab_),
-          static_cast<QDockWidget*>(acceleration_)})
+          static_cast<QDockWidget*>(acceleration_), static_cast<QDockWidget*>(validation_)})
         a.docks->addAction(d->toggleViewAction());
     a.view->addAction(a.reset_layout);
 
@@ -342,6 +343,7 @@ void MainWindow::retranslate() {
     log_->retranslate();
     timeline_->retranslate();
     acceleration_->retranslate();
+    validation_->retranslate();
     compare_->retranslate();
     legend_->retranslate();
     // Models read tr() in headerData/data: tell the views to ask again. Source models

@@ -139,6 +139,8 @@ void import_animations(ImportContext& ctx) {
                 fail(cpath + ": shares " + spath + " with a channel of another value size");
             }
             out.sampler = static_cast<std::uint32_t>(si);
+            out.source = static_cast<std::uint32_t>(c);
+            out.source_sampler = static_cast<std::uint32_t>(ch.sampler);
             anim.channels.push_back(out);
         }
         if (skipped)

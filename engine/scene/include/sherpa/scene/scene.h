@@ -14,6 +14,7 @@
 #include <sherpa/scene/material.h>
 #include <sherpa/scene/motion.h>
 #include <sherpa/scene/texture_records.h>
+#include <sherpa/scene/validation.h>
 #include <sherpa/scene/vertex.h>
 
 namespace sherpa {
@@ -232,6 +233,7 @@ struct Scene {
     std::vector<std::string> extensions_used, extensions_required;
     std::vector<std::string> warnings;
     std::vector<AccessorRangeViolation> range_violations;
+    ValidationReport validation; // the validator's messages, by JSON pointer
     double parse_ms = 0.0, process_ms = 0.0;
 
     // node x primitive pairs of the displayed scene, drawable or not (points,

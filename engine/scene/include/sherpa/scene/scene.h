@@ -231,9 +231,12 @@ struct Scene {
 
     // The file's extensionsUsed / extensionsRequired, as written.
     std::vector<std::string> extensions_used, extensions_required;
+    // The importer's own warnings as text, one line each; every one is also in
+    // `validation` with a SHERPA_ code and its JSON pointer.
     std::vector<std::string> warnings;
+    // Every problem found, with Khronos glTF-Validator codes and JSON pointers.
+    ValidationReport validation;
     std::vector<AccessorRangeViolation> range_violations;
-    ValidationReport validation; // the validator's messages, by JSON pointer
     double parse_ms = 0.0, process_ms = 0.0;
 
     // node x primitive pairs of the displayed scene, drawable or not (points,

@@ -88,15 +88,15 @@ nlohmann::json json_diff_json(const lab::JsonDiff& d) {
                 {{"pointer", c.pointer}, {"fields", c.fields}, {"field_count", c.field_count}});
     }
     for (const lab::AccessorDrift& a : d.drift)
-        drift.push_back({{"use", a.use},
-                         {"accessor", {a.accessor_a, a.accessor_b}},
-                         {"min", {a.min_a, a.min_b}},
-                         {"max", {a.max_a, a.max_b}},
-                         {"comparable", a.comparable},
-                         {"drift", a.comparable ? nlohmann::json(a.drift) : nlohmann::json(nullptr)},
-                         {"relative",
-                          a.comparable ? nlohmann::json(a.relative) : nlohmann::json(nullptr)},
-                         {"note", a.note}});
+        drift.push_back(
+            {{"use", a.use},
+             {"accessor", {a.accessor_a, a.accessor_b}},
+             {"min", {a.min_a, a.min_b}},
+             {"max", {a.max_a, a.max_b}},
+             {"comparable", a.comparable},
+             {"drift", a.comparable ? nlohmann::json(a.drift) : nlohmann::json(nullptr)},
+             {"relative", a.comparable ? nlohmann::json(a.relative) : nlohmann::json(nullptr)},
+             {"note", a.note}});
     return {{"objects", {{"a", d.objects_a}, {"b", d.objects_b}, {"unchanged", d.unchanged}}},
             {"added", added},
             {"removed", removed},

@@ -1224,6 +1224,42 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <source>Side A&apos;s tangents: %1 primitive(s) authored, %2 exact MikkTSpace, %3 none (no TANGENT, no normal texture: there B differs from no tangents).</source>
         <translation>Tangenten von Seite A: %1 Primitiv(e) aus der Datei, %2 exaktes MikkTSpace, %3 keine (kein TANGENT, keine Normal-Textur: dort unterscheidet sich B von fehlenden Tangenten).</translation>
     </message>
+    <message>
+        <source>node %1</source>
+        <translation>Knoten %1</translation>
+    </message>
+    <message>
+        <source>primitive %1</source>
+        <translation>Primitiv %1</translation>
+    </message>
+    <message>
+        <source>accessor %1: %2 of primitive %3</source>
+        <translation>Accessor %1: %2 von Primitiv %3</translation>
+    </message>
+    <message>
+        <source>triangle %1</source>
+        <translation>Dreieck %1</translation>
+    </message>
+    <message>
+        <source>vertex %1</source>
+        <translation>Vertex %1</translation>
+    </message>
+    <message>
+        <source>material %1</source>
+        <translation>Material %1</translation>
+    </message>
+    <message>
+        <source>texture %1</source>
+        <translation>Textur %1</translation>
+    </message>
+    <message>
+        <source>→ nothing the editor can select (%1).</source>
+        <translation>→ nichts, was der Editor auswählen kann (%1).</translation>
+    </message>
+    <message>
+        <source>→ %1</source>
+        <translation>→ %1</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -1246,6 +1282,18 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>Material %1 %2: the importer&apos;s CPU record (no renderer attached, so texture fields hold glTF texture indices, not bindless slots).</source>
         <translation>Material %1 %2: der CPU-Datensatz des Importers (kein Renderer angebunden, daher enthalten die Texturfelder glTF-Texturindizes, keine Bindless-Slots).</translation>
+    </message>
+    <message>
+        <source>⚠ Not drawn: %1. Sherpa does not implement %2, so this material is shown without %2.</source>
+        <translation>⚠ Nicht gezeichnet: %1. Sherpa implementiert %2 nicht; dieses Material wird ohne %2 angezeigt.</translation>
+    </message>
+    <message>
+        <source>this extension</source>
+        <translation>diese Erweiterung</translation>
+    </message>
+    <message>
+        <source>these extensions</source>
+        <translation>diese Erweiterungen</translation>
     </message>
 </context>
 <context>
@@ -1610,6 +1658,10 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <source>%1, %2 to %3 s</source>
         <translation>%1, %2 bis %3 s</translation>
     </message>
+    <message>
+        <source>Validation messages name this (see the Validation dock).</source>
+        <translation>Validierungsmeldungen nennen dieses Objekt (siehe Validierungs-Dock).</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::TextureDock</name>
@@ -1821,6 +1873,64 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>length</source>
         <translation>Länge</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::ValidationDock</name>
+    <message>
+        <source>Validation</source>
+        <translation>Validierung</translation>
+    </message>
+    <message>
+        <source>Filter by code, pointer or text…</source>
+        <translation>Nach Code, Zeiger oder Text filtern…</translation>
+    </message>
+    <message>
+        <source>No scene.</source>
+        <translation>Keine Szene.</translation>
+    </message>
+    <message>
+        <source>No messages: nothing to report about this file.</source>
+        <translation>Keine Meldungen: zu dieser Datei gibt es nichts zu berichten.</translation>
+    </message>
+    <message>
+        <source>%1 errors, %2 warnings, %3 information, %4 hints. Click a message to select what it names.</source>
+        <translation>%1 Fehler, %2 Warnungen, %3 Informationen, %4 Hinweise. Eine Meldung anklicken wählt aus, was sie nennt.</translation>
+    </message>
+    <message>
+        <source>The list is truncated.</source>
+        <translation>Die Liste ist gekürzt.</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::ValidationModel</name>
+    <message>
+        <source>Errors (%1)</source>
+        <translation>Fehler (%1)</translation>
+    </message>
+    <message>
+        <source>Warnings (%1)</source>
+        <translation>Warnungen (%1)</translation>
+    </message>
+    <message>
+        <source>Information (%1)</source>
+        <translation>Informationen (%1)</translation>
+    </message>
+    <message>
+        <source>Hints (%1)</source>
+        <translation>Hinweise (%1)</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>(the whole file)</source>
+        <translation>(die ganze Datei)</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Meldung</translation>
     </message>
 </context>
 <context>

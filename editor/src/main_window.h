@@ -162,7 +162,7 @@ private:
     // the next frame.
     void updateStreams();
     void connectActions();
-    void connectLab(); // main_window_lab.cpp
+    void connectLab();        // main_window_lab.cpp
     void connectValidation(); // main_window_validation.cpp
     void showValidationForScene();
     // main_window_compare.cpp

@@ -19,7 +19,6 @@
 #include <QVulkanInstance>
 
 #include "acceleration_dock.h"
-#include "validation_dock.h"
 #include "compare_controls.h"
 #include "culling_dock.h"
 #include "culling_monitor.h"
@@ -32,6 +31,7 @@
 #include "scene_tree_dock.h"
 #include "texture_dock.h"
 #include "timeline_dock.h"
+#include "validation_dock.h"
 #include "view_catalog.h"
 #include "viewport_window.h"
 

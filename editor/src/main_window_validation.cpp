@@ -22,15 +22,15 @@ int element_row(const Scene& scene, const AccessorUse& use, std::int64_t element
     if (element < 0 || use.engine_mesh < 0) return -1;
     const Mesh& mesh = scene.meshes[static_cast<std::size_t>(use.engine_mesh)];
     if (use.attribute == "indices") { // index i belongs to triangle i / 3 (lists only)
-        triangle = mesh.topology() == Topology::Triangles &&
-                   mesh.source_mode == PrimitiveMode::Triangles;
+        triangle =
+            mesh.topology() == Topology::Triangles && mesh.source_mode == PrimitiveMode::Triangles;
         const std::int64_t row = triangle ? element / 3 : -1;
         return row < static_cast<std::int64_t>(mesh.triangle_count()) ? static_cast<int>(row) : -1;
     }
     // Source vertex -> engine vertex (unwelding keeps the first copy first).
     if (mesh.source_vertex.empty())
         return element < static_cast<std::int64_t>(mesh.vertices.size()) ? static_cast<int>(element)
-                                                                          : -1;
+                                                                         : -1;
     for (std::size_t v = 0; v < mesh.source_vertex.size(); ++v)
         if (mesh.source_vertex[v] == element) return static_cast<int>(v);
     return -1;
@@ -44,10 +44,9 @@ void MainWindow::showValidationForScene() {
 }
 
 void MainWindow::connectValidation() {
-    connect(validation_, &ValidationDock::messageActivated, this,
-            [this](const QString& pointer, const QString& message) {
-                showPointer(pointer, message);
-            });
+    connect(
+        validation_, &ValidationDock::messageActivated, this,
+        [this](const QString& pointer, const QString& message) { showPointer(pointer, message); });
 }
 
 bool MainWindow::showPointer(const QString& pointer, const QString& message) {
@@ -80,9 +79,9 @@ bool MainWindow::showPointer(const QString& pointer, const QString& message) {
             what = tr("primitive %1").arg(t.engine_mesh);
             if (t.kind == TargetKind::Accessor) {
                 bool triangle = false;
-                const int row = element_row(*scene, t.uses.front(),
-                                            element_index_in_message(message.toStdString()),
-                                            triangle);
+                const int row =
+                    element_row(*scene, t.uses.front(),
+                                element_index_in_message(message.toStdString()), triangle);
                 if (row >= 0 && triangle) context_.selectTriangle(row);
                 if (row >= 0 && !triangle) context_.selectVertex(row);
                 what = tr("accessor %1: %2 of primitive %3")
@@ -121,8 +120,10 @@ bool MainWindow::showPointer(const QString& pointer, const QString& message) {
         break;
     }
     if (!dock) {
-        validation_->setTargetText(tr("→ nothing the editor can select (%1).")
-                                       .arg(QString::fromUtf8(to_string(t.kind).data())));
+        validation_->setTargetText(
+            tr("→ nothing the editor can select (%1).")
+                .arg(QString::fromUtf8(to_string(t.kind).data(),
+                                       qsizetype(to_string(t.kind).size()))));
         return false;
     }
     validation_->setTargetText(tr("→ %1").arg(what));

@@ -67,13 +67,13 @@ void MaterialDock::showMaterial() {
     const std::vector<std::string> missing = unsupported_extensions(m);
     QStringList names;
     for (const std::string& n : missing) names << QString::fromStdString(n);
-    not_drawn_->setText(names.isEmpty()
-                            ? QString()
-                            : tr("⚠ Not drawn: %1. Sherpa does not implement %2, so this "
-                                 "material is shown without %2.")
-                                  .arg(names.join(QStringLiteral(", ")))
-                                  .arg(names.size() == 1 ? tr("this extension")
-                                                         : tr("these extensions")));
+    not_drawn_->setText(
+        names.isEmpty()
+            ? QString()
+            : tr("⚠ Not drawn: %1. Sherpa does not implement %2, so this "
+                 "material is shown without %2.")
+                  .arg(names.join(QStringLiteral(", ")))
+                  .arg(names.size() == 1 ? tr("this extension") : tr("these extensions")));
     not_drawn_->setVisible(!names.isEmpty());
     const QString name = m.name.empty() ? tr("(unnamed)") : QString::fromStdString(m.name);
     model_->setMaterial(context_.sharedSession(), material, to_gpu_material(m),

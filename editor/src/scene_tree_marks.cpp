@@ -32,8 +32,9 @@ int SceneTreeModel::mark(const Item& item) const {
             for (const std::int32_t m : scene->mesh_primitives[static_cast<std::size_t>(mesh)])
                 if (m >= 0) {
                     worse(at(marks_.engine_meshes, m));
-                    worse(at(marks_.materials,
-                             static_cast<int>(scene->meshes[static_cast<std::size_t>(m)].material_id)));
+                    worse(at(
+                        marks_.materials,
+                        static_cast<int>(scene->meshes[static_cast<std::size_t>(m)].material_id)));
                 }
         return worst;
     }

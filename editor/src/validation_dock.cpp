@@ -3,6 +3,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPlainTextEdit>
 #include <QSortFilterProxyModel>
 #include <QTreeView>
 #include <QVBoxLayout>
@@ -38,10 +39,11 @@ ValidationDock::ValidationDock(const EditorContext& context, QWidget* parent)
     // Long codes and pointers scroll sideways rather than being cut.
     view_->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     view_->header()->setStretchLastSection(false);
-    detail_ = new QLabel(body);
+    detail_ = new QPlainTextEdit(body);
     detail_->setObjectName(QStringLiteral("validationDetail"));
-    detail_->setWordWrap(true);
-    detail_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    detail_->setReadOnly(true);
+    detail_->setWordWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
+    detail_->setMaximumHeight(6 * detail_->fontMetrics().lineSpacing());
     layout->addWidget(summary_);
     layout->addWidget(filter_);
     layout->addWidget(view_, 1);
@@ -52,13 +54,12 @@ ValidationDock::ValidationDock(const EditorContext& context, QWidget* parent)
         proxy_->setFilterFixedString(text);
         view_->expandAll();
     });
+    // Moving through the list shows each message in full; a click (or Enter) goes to
+    // its object, again on a second click after the user selected something else.
     connect(view_->selectionModel(), &QItemSelectionModel::currentChanged, this,
-            [this](const QModelIndex& current) { onCurrentChanged(current); });
-    // Clicking the current message again shows its object again (after the user
-    // selected something else meanwhile).
-    connect(view_, &QTreeView::clicked, this, [this](const QModelIndex& index) {
-        if (index == view_->currentIndex()) onCurrentChanged(index);
-    });
+            [this](const QModelIndex& current) { showDetail(current); });
+    connect(view_, &QTreeView::clicked, this, &ValidationDock::activate);
+    connect(view_, &QTreeView::activated, this, &ValidationDock::activate);
     connect(model_, &QAbstractItemModel::modelReset, this, [this] {
         view_->expandAll();
         updateSummary();
@@ -98,20 +99,25 @@ void ValidationDock::updateSummary() {
     summary_->setText(text);
 }
 
-void ValidationDock::onCurrentChanged(const QModelIndex& current) {
-    if (!current.isValid() ||
-        current.data(ValidationModel::LevelRole).toInt() !=
-            static_cast<int>(ValidationModel::Level::Message)) {
+bool ValidationDock::showDetail(const QModelIndex& current) {
+    if (!current.isValid() || current.data(ValidationModel::LevelRole).toInt() !=
+                                  static_cast<int>(ValidationModel::Level::Message)) {
         detail_->clear();
         message_text_.clear();
-        return;
+        return false;
     }
-    const QString pointer = current.data(ValidationModel::PointerRole).toString();
-    const QString message = current.data(ValidationModel::MessageRole).toString();
-    message_text_ = QStringLiteral("%1 %2\n%3").arg(
-        current.data(ValidationModel::CodeRole).toString(), pointer, message);
-    detail_->setText(message_text_);
-    Q_EMIT messageActivated(pointer, message);
+    message_text_ = QStringLiteral("%1 %2\n%3")
+                        .arg(current.data(ValidationModel::CodeRole).toString(),
+                             current.data(ValidationModel::PointerRole).toString(),
+                             current.data(ValidationModel::MessageRole).toString());
+    detail_->setPlainText(message_text_);
+    return true;
+}
+
+void ValidationDock::activate(const QModelIndex& index) {
+    if (!showDetail(index)) return;
+    Q_EMIT messageActivated(index.data(ValidationModel::PointerRole).toString(),
+                            index.data(ValidationModel::MessageRole).toString());
 }
 
 bool ValidationDock::activatePointer(const QString& pointer) {
@@ -122,20 +128,18 @@ bool ValidationDock::activatePointer(const QString& pointer) {
         target = proxy_->mapFromSource(source);
     }
     if (!target.isValid()) return false;
-    if (target == view_->currentIndex())
-        onCurrentChanged(target);
-    else
-        view_->setCurrentIndex(target);
+    view_->setCurrentIndex(target);
     view_->scrollTo(target);
+    activate(target);
     return true;
 }
 
 void ValidationDock::setTargetText(const QString& text) {
-    detail_->setText(message_text_ + QLatin1Char('\n') + text);
+    detail_->setPlainText(message_text_ + QLatin1Char('\n') + text);
 }
 
 QString ValidationDock::detailText() const {
-    return detail_->text();
+    return detail_->toPlainText();
 }
 
 } // namespace sherpa::editor

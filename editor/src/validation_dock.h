@@ -7,6 +7,7 @@
 
 class QLabel;
 class QLineEdit;
+class QPlainTextEdit;
 class QSortFilterProxyModel;
 class QTreeView;
 
@@ -36,7 +37,9 @@ Q_SIGNALS:
     void messageActivated(const QString& pointer, const QString& message);
 
 private:
-    void onCurrentChanged(const QModelIndex& current);
+    // The message of `index` in full under the list; false for a group row.
+    bool showDetail(const QModelIndex& index);
+    void activate(const QModelIndex& index);
     void updateSummary();
 
     const EditorContext& context_;
@@ -45,8 +48,8 @@ private:
     QLabel* summary_;
     QLineEdit* filter_;
     QTreeView* view_;
-    QLabel* detail_;
-    QString message_text_; // the current message's lines, before the target's
+    QPlainTextEdit* detail_; // wraps anywhere: pointers are long words
+    QString message_text_;   // the current message's lines, before the target's
 };
 
 } // namespace sherpa::editor

@@ -96,12 +96,17 @@ QString ValidationModel::display(const Item& it) const {
     switch (it.level) {
     case Level::Severity: {
         std::size_t n = 0;
-        for (const int code : it.children) n += items_[static_cast<std::size_t>(code)].children.size();
+        for (const int code : it.children)
+            n += items_[static_cast<std::size_t>(code)].children.size();
         switch (it.severity) {
-        case 0: return tr("Errors (%1)").arg(n);
-        case 1: return tr("Warnings (%1)").arg(n);
-        case 2: return tr("Information (%1)").arg(n);
-        default: return tr("Hints (%1)").arg(n);
+        case 0:
+            return tr("Errors (%1)").arg(n);
+        case 1:
+            return tr("Warnings (%1)").arg(n);
+        case 2:
+            return tr("Information (%1)").arg(n);
+        default:
+            return tr("Hints (%1)").arg(n);
         }
     }
     case Level::Code:
@@ -117,26 +122,32 @@ QVariant ValidationModel::data(const QModelIndex& index, int role) const {
     const Item& it = items_[index.internalId()];
     const ValidationMessage& m = (*messages())[static_cast<std::size_t>(it.message)];
     switch (role) {
-    case Qt::DisplayRole: return display(it);
-    case Qt::DecorationRole: return it.level == Level::Severity ? severity_icon(it.severity) : QVariant();
+    case Qt::DisplayRole:
+        return display(it);
+    case Qt::DecorationRole:
+        return it.level == Level::Severity ? severity_icon(it.severity) : QVariant();
     case Qt::ToolTipRole:
         if (it.level != Level::Message) return {};
         return QStringLiteral("%1: %2").arg(QString::fromStdString(m.code),
                                             QString::fromStdString(m.message));
-    case LevelRole: return static_cast<int>(it.level);
-    case SeverityRole: return it.severity;
-    case CodeRole: return QString::fromStdString(m.code);
+    case LevelRole:
+        return static_cast<int>(it.level);
+    case SeverityRole:
+        return it.severity;
+    case CodeRole:
+        return QString::fromStdString(m.code);
     case PointerRole:
         return it.level == Level::Message ? QString::fromStdString(m.pointer) : QVariant();
     case MessageRole:
         return it.level == Level::Message ? QString::fromStdString(m.message) : QVariant();
     case FilterRole:
         return it.level == Level::Message
-                   ? QStringLiteral("%1 %2 %3").arg(QString::fromStdString(m.code),
-                                                    QString::fromStdString(m.pointer),
-                                                    QString::fromStdString(m.message))
+                   ? QStringLiteral("%1 %2 %3")
+                         .arg(QString::fromStdString(m.code), QString::fromStdString(m.pointer),
+                              QString::fromStdString(m.message))
                    : display(it);
-    default: return {};
+    default:
+        return {};
     }
 }
 

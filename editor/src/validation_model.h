@@ -25,9 +25,9 @@ public:
         LevelRole = Qt::UserRole + 1,
         SeverityRole, // Severity's value
         CodeRole,
-        PointerRole,  // messages only
-        MessageRole,  // messages only: the text
-        FilterRole,   // what the dock's filter matches: code, pointer and text
+        PointerRole, // messages only
+        MessageRole, // messages only: the text
+        FilterRole,  // what the dock's filter matches: code, pointer and text
     };
 
     explicit ValidationModel(const EditorContext& context, QObject* parent = nullptr);

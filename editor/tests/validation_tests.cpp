@@ -121,8 +121,9 @@ void ValidationTests::filterMatchesCodePointerAndText() {
         return rows.filter(QLatin1Char('/'));
     };
     dock.setFilter(QStringLiteral("clearcoat")); // the text of one, the pointer of another
-    QCOMPARE(leaves(), (QStringList{QStringLiteral("/extensionsUsed/2"),
-                                    QStringLiteral("/materials/0/extensions/KHR_materials_clearcoat")}));
+    QCOMPARE(leaves(),
+             (QStringList{QStringLiteral("/extensionsUsed/2"),
+                          QStringLiteral("/materials/0/extensions/KHR_materials_clearcoat")}));
     dock.setFilter(QStringLiteral("sherpa_material")); // a code: all of its messages
     QCOMPARE(leaves().size(), 2);
     dock.setFilter(QStringLiteral("no such thing"));
@@ -136,7 +137,8 @@ void ValidationTests::unsupportedExtensionSelectsTheMaterial() {
     ValidationDock& dock = *w_->validationDock();
     QVERIFY(dock.isVisible());
     QSignalSpy activated(&dock, &ValidationDock::messageActivated);
-    QVERIFY(dock.activatePointer(QStringLiteral("/materials/0/extensions/KHR_materials_clearcoat")));
+    QVERIFY(
+        dock.activatePointer(QStringLiteral("/materials/0/extensions/KHR_materials_clearcoat")));
     QCOMPARE(activated.count(), 1);
     const Scene& scene = *w_->context().scene();
     QCOMPARE(w_->context().selection().material, 0);
@@ -212,8 +214,7 @@ void ValidationTests::sceneTreeMarksObjectsWithMessages() {
     // Under the Glass node: its primitive, then the material (marked).
     const QModelIndex primitive = tree.index(0, 0, glass);
     const QModelIndex material = tree.index(0, 0, primitive);
-    QCOMPARE(material.data(SceneTreeModel::KindRole).toInt(),
-             int(SceneTreeModel::Kind::Material));
+    QCOMPARE(material.data(SceneTreeModel::KindRole).toInt(), int(SceneTreeModel::Kind::Material));
     QVERIFY(marked(material));
     QVERIFY(!marked(primitive));
     QVERIFY(!marked(tree.index(0, 0, tree.index(0, 0, plain))));

@@ -28,7 +28,8 @@ TEST(PointerTarget, NodesMeshesPrimitivesAndAccessorsOfASkinnedFile) {
     EXPECT_EQ(node.node, 1);
 
     // The file's mesh 0 primitive 0 is placed by node 1.
-    const PointerTarget prim = resolve_pointer(*scene, "/meshes/0/primitives/0/attributes/JOINTS_0");
+    const PointerTarget prim =
+        resolve_pointer(*scene, "/meshes/0/primitives/0/attributes/JOINTS_0");
     EXPECT_EQ(prim.kind, TargetKind::Primitive);
     EXPECT_EQ(prim.index, 0);
     EXPECT_EQ(prim.sub, 0);
@@ -95,6 +96,7 @@ TEST(PointerTarget, LightsAndExtensionNames) {
     const PointerTarget used = resolve_pointer(*glass, "/extensionsUsed/1");
     EXPECT_EQ(used.kind, TargetKind::Extension);
     EXPECT_EQ(used.material, 0) << "KHR_materials_transmission: the Glass material";
+    EXPECT_EQ(sherpa::json_pointer_token("a/b~c"), "a~1b~0c");
     // "~1" is an escaped '/' (RFC 6901): the token is a name, not two tokens.
     EXPECT_EQ(resolve_pointer(*glass, "/materials/0/extensions/A~1B").rest, "/extensions/A~1B");
 }
@@ -103,10 +105,9 @@ TEST(PointerTarget, LightsAndExtensionNames) {
 TEST(PointerTarget, BadPointersResolveToNone) {
     const auto scene = load(sherpa::test::gltf_asset("BoxTextured"));
     ASSERT_TRUE(scene);
-    for (const char* p : {"/nodes/99", "/nodes/-1", "/nodes/01", "/nodes/x", "/nodes",
-                          "nodes/0", "/materials/1", "/~2",
-                          "/skins/0", "/animations/0", "/unknown/0", "/nodes/99999999999999",
-                          "/extensionsUsed/0"})
+    for (const char* p : {"/nodes/99", "/nodes/-1", "/nodes/01", "/nodes/x", "/nodes", "nodes/0",
+                          "/materials/1", "/~2", "/skins/0", "/animations/0", "/unknown/0",
+                          "/nodes/99999999999999", "/extensionsUsed/0"})
         EXPECT_EQ(resolve_pointer(*scene, p).kind, TargetKind::None) << p;
     // A primitive index past the mesh still names the mesh.
     EXPECT_EQ(resolve_pointer(*scene, "/meshes/0/primitives/7").kind, TargetKind::Mesh);

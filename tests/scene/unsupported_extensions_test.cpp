@@ -6,6 +6,10 @@
 #include <sherpa/scene/gltf_extensions.h>
 #include <sherpa/scene/scene_loader.h>
 
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 namespace {
@@ -63,6 +67,30 @@ TEST(UnsupportedExtensions, PerMaterialListAndUses) {
     EXPECT_EQ(uses[0].materials, std::vector<std::uint32_t>{1});
     EXPECT_FALSE(uses[1].supported);
     EXPECT_EQ(uses[1].materials, std::vector<std::uint32_t>{0});
+}
+
+// A material naming an extension that extensionsUsed does not declare (an invalid
+// file) is still drawn without it, and says so.
+TEST(UnsupportedExtensions, UndeclaredMaterialExtensionIsAWarningToo) {
+    nlohmann::json doc = sherpa::test::read_json(
+        (sherpa::test::data_dir() / "unsupported_material_extensions.gltf").string());
+    doc["extensionsUsed"] = {"KHR_materials_emissive_strength", "KHR_materials_transmission"};
+    const auto path = std::filesystem::temp_directory_path() /
+                      ("sherpa_undeclared_" + std::to_string(::getpid()) + ".gltf");
+    std::ofstream(path) << doc.dump();
+    const sherpa::LoadResult r = sherpa::load_scene(path.string());
+    std::filesystem::remove(path);
+    ASSERT_TRUE(r) << r.error;
+    EXPECT_TRUE(contains(r.scene->warnings,
+                         "materials[0] \"Glass\" is drawn without "
+                         "KHR_materials_clearcoat",
+                         "which Sherpa does not implement"));
+    EXPECT_FALSE(contains(r.scene->warnings, "is drawn without KHR_materials_transmission", ""))
+        << "declared: said once, in the extensionsUsed line";
+    std::size_t material_messages = 0;
+    for (const auto& m : r.scene->validation.messages)
+        material_messages += m.code == "SHERPA_MATERIAL_EXTENSION_NOT_DRAWN";
+    EXPECT_EQ(material_messages, 2u);
 }
 
 // A file whose extensions are all drawn says nothing about extensions.

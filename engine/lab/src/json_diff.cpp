@@ -10,17 +10,12 @@
 #include <nlohmann/json.hpp>
 
 #include <sherpa/core/file_io.h>
+#include <sherpa/scene/pointer_target.h>
 
 namespace sherpa::lab {
 namespace {
 
 using nlohmann::json;
-
-std::string token(const std::string& key) {
-    std::string out;
-    for (const char c : key) out += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
-    return out;
-}
 
 std::string short_text(const json& v) {
     std::string s = v.dump(-1, ' ', false, json::error_handler_t::replace);
@@ -44,7 +39,7 @@ void diff_leaves(const json& a, const json& b, const std::string& at, JsonChange
         for (const auto& [k, v] : a.items()) keys.insert(k);
         for (const auto& [k, v] : b.items()) keys.insert(k);
         for (const std::string& k : keys) {
-            const std::string p = at + "/" + token(k);
+            const std::string p = at + "/" + json_pointer_token(k);
             if (!a.contains(k))
                 add(p + ": added " + short_text(b[k]));
             else if (!b.contains(k))
@@ -54,7 +49,8 @@ void diff_leaves(const json& a, const json& b, const std::string& at, JsonChange
         }
         return;
     }
-    if (a.is_array() && b.is_array() && a.size() == b.size() && (is_object_array(a) || a.size() > 4)) {
+    if (a.is_array() && b.is_array() && a.size() == b.size() &&
+        (is_object_array(a) || a.size() > 4)) {
         for (std::size_t i = 0; i < a.size(); ++i)
             if (a[i] != b[i]) diff_leaves(a[i], b[i], at + "/" + std::to_string(i), change);
         return;
@@ -121,16 +117,17 @@ std::map<std::string, std::int64_t> accessor_uses(const json& doc) {
         for (std::size_t p = 0; p < prims.size(); ++p) {
             const json& prim = prims[p];
             if (!prim.is_object()) continue;
-            const std::string at = "/meshes/" + std::to_string(m) + "/primitives/" + std::to_string(p);
+            const std::string at =
+                "/meshes/" + std::to_string(m) + "/primitives/" + std::to_string(p);
             if (prim.contains("attributes") && prim["attributes"].is_object())
                 for (const auto& [k, v] : prim["attributes"].items())
-                    add(at + "/attributes/" + token(k), v);
+                    add(at + "/attributes/" + json_pointer_token(k), v);
             if (prim.contains("indices")) add(at + "/indices", prim["indices"]);
             const json& targets = array(prim, "targets");
             for (std::size_t t = 0; t < targets.size(); ++t)
                 if (targets[t].is_object())
                     for (const auto& [k, v] : targets[t].items())
-                        add(at + "/targets/" + std::to_string(t) + "/" + token(k), v);
+                        add(at + "/targets/" + std::to_string(t) + "/" + json_pointer_token(k), v);
         }
     }
     const json& skins = array(doc, "skins");
@@ -153,24 +150,36 @@ std::map<std::string, std::int64_t> accessor_uses(const json& doc) {
 
 const char* component_name(int type) {
     switch (type) {
-    case 5120: return "BYTE";
-    case 5121: return "UNSIGNED_BYTE";
-    case 5122: return "SHORT";
-    case 5123: return "UNSIGNED_SHORT";
-    case 5125: return "UNSIGNED_INT";
-    case 5126: return "FLOAT";
-    default: return "unknown";
+    case 5120:
+        return "BYTE";
+    case 5121:
+        return "UNSIGNED_BYTE";
+    case 5122:
+        return "SHORT";
+    case 5123:
+        return "UNSIGNED_SHORT";
+    case 5125:
+        return "UNSIGNED_INT";
+    case 5126:
+        return "FLOAT";
+    default:
+        return "unknown";
     }
 }
 
 // glTF's normalization of integer components (specification 3.11).
 double normalized(double v, int type) {
     switch (type) {
-    case 5120: return std::max(v / 127.0, -1.0);
-    case 5121: return v / 255.0;
-    case 5122: return std::max(v / 32767.0, -1.0);
-    case 5123: return v / 65535.0;
-    default: return v;
+    case 5120:
+        return std::max(v / 127.0, -1.0);
+    case 5121:
+        return v / 255.0;
+    case 5122:
+        return std::max(v / 32767.0, -1.0);
+    case 5123:
+        return v / 65535.0;
+    default:
+        return v;
     }
 }
 
@@ -256,9 +265,12 @@ void accessor_drift(const json& a, const json& b, JsonDiff& out) {
 
 std::string_view to_string(JsonChangeKind kind) {
     switch (kind) {
-    case JsonChangeKind::Added: return "added";
-    case JsonChangeKind::Removed: return "removed";
-    case JsonChangeKind::Changed: return "changed";
+    case JsonChangeKind::Added:
+        return "added";
+    case JsonChangeKind::Removed:
+        return "removed";
+    case JsonChangeKind::Changed:
+        return "changed";
     }
     return "changed";
 }
@@ -276,15 +288,15 @@ JsonDiff json_diff(std::string_view json_a, std::string_view json_b) {
     for (const auto& [k, v] : a.items()) keys.insert(k);
     for (const auto& [k, v] : b.items()) keys.insert(k);
     for (const std::string& k : keys) {
-        const std::string at = "/" + token(k);
+        const std::string at = "/" + json_pointer_token(k);
         static const json absent; // null: the property is not there
         const json& va = a.contains(k) ? a[k] : absent;
         const json& vb = b.contains(k) ? b[k] : absent;
         if ((is_object_array(va) || va.is_null() || (va.is_array() && va.empty())) &&
             (is_object_array(vb) || vb.is_null() || (vb.is_array() && vb.empty())) &&
             (is_object_array(va) || is_object_array(vb))) {
-            diff_collection(at, va.is_array() ? va : json::array(), vb.is_array() ? vb : json::array(),
-                            out);
+            diff_collection(at, va.is_array() ? va : json::array(),
+                            vb.is_array() ? vb : json::array(), out);
             continue;
         }
         JsonChange c;

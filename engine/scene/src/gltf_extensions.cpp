@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 
+#include <sherpa/scene/pointer_target.h>
 #include <sherpa/scene/scene.h>
 
 namespace sherpa {
@@ -22,20 +23,6 @@ constexpr std::array<std::string_view, 11> kSupported{
     "KHR_texture_basisu",                  // KTX2 (ETC1S / UASTC), engine/texture's transcoder
     "KHR_texture_transform",
 };
-
-// RFC 6901: '~' and '/' in a reference token are written "~0" and "~1".
-std::string pointer_token(std::string_view name) {
-    std::string out;
-    for (const char c : name) {
-        if (c == '~')
-            out += "~0";
-        else if (c == '/')
-            out += "~1";
-        else
-            out += c;
-    }
-    return out;
-}
 
 std::string material_label(const Scene& scene, std::uint32_t m) {
     const MaterialInstance& mat = scene.materials[m];
@@ -95,11 +82,13 @@ std::vector<ValidationMessage> unsupported_extension_messages(const Scene& scene
     std::vector<ValidationMessage> out;
     for (const ExtensionUse& use : extension_uses(scene)) {
         if (use.supported) continue;
-        std::string message = "Sherpa does not implement '" + use.name + "'; ";
-        message += use.materials.empty()
-                       ? "whatever it adds to the file is not drawn or inspected."
-                       : "drawn without it: " + material_list(scene, use.materials) + ".";
-        out.push_back({std::string(kExtensionNotDrawnCode), std::move(message),
+        std::string text = "extensionsUsed[" + std::to_string(use.used_index) + "] " + use.name +
+                           " is not implemented by Sherpa: ";
+        text += use.materials.empty()
+                    ? "what it adds is not drawn"
+                    : material_list(scene, use.materials) +
+                          (use.materials.size() == 1 ? " is" : " are") + " drawn without it";
+        out.push_back({std::string(kExtensionNotDrawnCode), std::move(text),
                        "/extensionsUsed/" + std::to_string(use.used_index), Severity::Warning});
     }
     for (std::size_t m = 0; m < scene.materials.size(); ++m) {
@@ -107,36 +96,30 @@ std::vector<ValidationMessage> unsupported_extension_messages(const Scene& scene
         if (mat.gltf_index < 0) continue; // Sherpa's default material
         for (const std::string& name : unsupported_extensions(mat))
             out.push_back({std::string(kMaterialExtensionNotDrawnCode),
-                           "Material is drawn without '" + name +
-                               "', which Sherpa does not implement.",
+                           material_label(scene, static_cast<std::uint32_t>(m)) +
+                               " is drawn without " + name + ", which Sherpa does not implement",
                            "/materials/" + std::to_string(mat.gltf_index) + "/extensions/" +
-                               pointer_token(name),
+                               json_pointer_token(name),
                            Severity::Warning});
     }
     return out;
 }
 
 std::vector<std::string> unsupported_extension_warnings(const Scene& scene) {
+    // The same words as the messages (the importer turns warnings without a message
+    // of the same text into messages of their own): one per name of extensionsUsed,
+    // and one per material naming an extension that extensionsUsed does not declare
+    // (an invalid file, still not drawn).
     std::vector<std::string> out;
-    for (const ExtensionUse& use : extension_uses(scene)) {
-        if (use.supported) continue;
-        std::string line = "extensionsUsed[" + std::to_string(use.used_index) + "] " + use.name +
-                           " is not implemented by Sherpa: ";
-        line += use.materials.empty() ? "what it adds is not drawn"
-                                      : material_list(scene, use.materials) +
-                                            (use.materials.size() == 1 ? " is" : " are") +
-                                            " drawn without it";
-        out.push_back(std::move(line));
+    for (ValidationMessage& m : unsupported_extension_messages(scene)) {
+        const bool declared_elsewhere =
+            m.code == kMaterialExtensionNotDrawnCode &&
+            std::any_of(scene.extensions_used.begin(), scene.extensions_used.end(),
+                        [&m](const std::string& name) {
+                            return m.pointer.ends_with("/extensions/" + json_pointer_token(name));
+                        });
+        if (!declared_elsewhere) out.push_back(std::move(m.message));
     }
-    // Named by a material but not declared (an invalid file): still not drawn.
-    for (std::size_t m = 0; m < scene.materials.size(); ++m)
-        for (const std::string& name : unsupported_extensions(scene.materials[m]))
-            if (std::find(scene.extensions_used.begin(), scene.extensions_used.end(), name) ==
-                scene.extensions_used.end())
-                out.push_back(material_label(scene, static_cast<std::uint32_t>(m)) + " names " +
-                              name +
-                              " (not in extensionsUsed), which Sherpa does not implement: drawn "
-                              "without it");
     return out;
 }
 

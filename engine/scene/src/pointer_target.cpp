@@ -76,10 +76,7 @@ template <typename F> void for_each_accessor_use(const Scene& s, F&& f) {
 
 std::string join_rest(const std::vector<std::string>& tokens, std::size_t from) {
     std::string out;
-    for (std::size_t i = from; i < tokens.size(); ++i) {
-        out += '/';
-        for (const char c : tokens[i]) out += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
-    }
+    for (std::size_t i = from; i < tokens.size(); ++i) out += '/' + json_pointer_token(tokens[i]);
     return out;
 }
 
@@ -88,8 +85,8 @@ void resolve_primitive(const Scene& s, PointerTarget& t) {
     const auto& prims = s.mesh_primitives[static_cast<std::size_t>(t.index)];
     t.engine_mesh = prims[static_cast<std::size_t>(t.sub)];
     if (t.engine_mesh >= 0) {
-        t.material =
-            static_cast<std::int32_t>(s.meshes[static_cast<std::size_t>(t.engine_mesh)].material_id);
+        t.material = static_cast<std::int32_t>(
+            s.meshes[static_cast<std::size_t>(t.engine_mesh)].material_id);
         t.node = node_of_mesh(s, t.engine_mesh);
     }
     if (t.node < 0) t.node = node_with(s, &Node::mesh, t.index);
@@ -248,29 +245,63 @@ std::size_t resolve_tokens(const Scene& s, const std::vector<std::string>& tok, 
 
 std::string_view to_string(TargetKind kind) {
     switch (kind) {
-    case TargetKind::None: return "none";
-    case TargetKind::Asset: return "asset";
-    case TargetKind::Scene: return "scene";
-    case TargetKind::Node: return "node";
-    case TargetKind::Mesh: return "mesh";
-    case TargetKind::Primitive: return "primitive";
-    case TargetKind::Material: return "material";
-    case TargetKind::Texture: return "texture";
-    case TargetKind::Image: return "image";
-    case TargetKind::Sampler: return "sampler";
-    case TargetKind::Accessor: return "accessor";
-    case TargetKind::BufferView: return "bufferView";
-    case TargetKind::Buffer: return "buffer";
-    case TargetKind::Animation: return "animation";
-    case TargetKind::AnimationChannel: return "animation channel";
-    case TargetKind::AnimationSampler: return "animation sampler";
-    case TargetKind::Skin: return "skin";
-    case TargetKind::SkinJoint: return "skin joint";
-    case TargetKind::Camera: return "camera";
-    case TargetKind::Light: return "light";
-    case TargetKind::Extension: return "extension";
+    case TargetKind::None:
+        return "none";
+    case TargetKind::Asset:
+        return "asset";
+    case TargetKind::Scene:
+        return "scene";
+    case TargetKind::Node:
+        return "node";
+    case TargetKind::Mesh:
+        return "mesh";
+    case TargetKind::Primitive:
+        return "primitive";
+    case TargetKind::Material:
+        return "material";
+    case TargetKind::Texture:
+        return "texture";
+    case TargetKind::Image:
+        return "image";
+    case TargetKind::Sampler:
+        return "sampler";
+    case TargetKind::Accessor:
+        return "accessor";
+    case TargetKind::BufferView:
+        return "bufferView";
+    case TargetKind::Buffer:
+        return "buffer";
+    case TargetKind::Animation:
+        return "animation";
+    case TargetKind::AnimationChannel:
+        return "animation channel";
+    case TargetKind::AnimationSampler:
+        return "animation sampler";
+    case TargetKind::Skin:
+        return "skin";
+    case TargetKind::SkinJoint:
+        return "skin joint";
+    case TargetKind::Camera:
+        return "camera";
+    case TargetKind::Light:
+        return "light";
+    case TargetKind::Extension:
+        return "extension";
     }
     return "none";
+}
+
+std::string json_pointer_token(std::string_view name) {
+    std::string out;
+    for (const char c : name) {
+        if (c == '~')
+            out += "~0";
+        else if (c == '/')
+            out += "~1";
+        else
+            out += c;
+    }
+    return out;
 }
 
 PointerTarget resolve_pointer(const Scene& scene, std::string_view pointer) {
@@ -318,14 +349,22 @@ ObjectMarks mark_objects(const Scene& scene, const std::vector<ValidationMessage
         case TargetKind::Node:
         case TargetKind::SkinJoint:
         case TargetKind::Camera:
-        case TargetKind::Light: mark(marks.nodes, t.node, msg.severity); break;
-        case TargetKind::Primitive: mark(marks.engine_meshes, t.engine_mesh, msg.severity); break;
+        case TargetKind::Light:
+            mark(marks.nodes, t.node, msg.severity);
+            break;
+        case TargetKind::Primitive:
+            mark(marks.engine_meshes, t.engine_mesh, msg.severity);
+            break;
         case TargetKind::Mesh:
             for (const std::int32_t m : scene.mesh_primitives[static_cast<std::size_t>(t.index)])
                 mark(marks.engine_meshes, m, msg.severity);
             break;
-        case TargetKind::Material: mark(marks.materials, t.material, msg.severity); break;
-        case TargetKind::Texture: mark(marks.textures, t.texture, msg.severity); break;
+        case TargetKind::Material:
+            mark(marks.materials, t.material, msg.severity);
+            break;
+        case TargetKind::Texture:
+            mark(marks.textures, t.texture, msg.severity);
+            break;
         case TargetKind::Image:
             for (std::size_t x = 0; x < scene.textures.size(); ++x)
                 if (scene.textures[x].image == t.image)
@@ -337,8 +376,11 @@ ObjectMarks mark_objects(const Scene& scene, const std::vector<ValidationMessage
             mark(marks.animations, t.index, msg.severity);
             if (t.kind == TargetKind::AnimationChannel) mark(marks.nodes, t.node, msg.severity);
             break;
-        case TargetKind::Skin: mark(marks.skins, t.index, msg.severity); break;
-        default: break;
+        case TargetKind::Skin:
+            mark(marks.skins, t.index, msg.severity);
+            break;
+        default:
+            break;
         }
         if (t.kind == TargetKind::SkinJoint) mark(marks.skins, t.index, msg.severity);
     }

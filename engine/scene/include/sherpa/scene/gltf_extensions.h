@@ -33,9 +33,9 @@ inline constexpr std::string_view kMaterialExtensionNotDrawnCode =
 // One name of the file's extensionsUsed, as Sherpa treats it.
 struct ExtensionUse {
     std::string name;
-    std::uint32_t used_index = 0; // position in extensionsUsed
-    bool required = false;        // also in extensionsRequired
-    bool supported = false;       // is_supported_gltf_extension(name)
+    std::uint32_t used_index = 0;         // position in extensionsUsed
+    bool required = false;                // also in extensionsRequired
+    bool supported = false;               // is_supported_gltf_extension(name)
     std::vector<std::uint32_t> materials; // Scene::materials whose extensions name it
 };
 std::vector<ExtensionUse> extension_uses(const Scene& scene);
@@ -49,7 +49,9 @@ std::vector<std::string> unsupported_extensions(const MaterialInstance& material
 // that order: what the importer adds to Scene::validation.
 std::vector<ValidationMessage> unsupported_extension_messages(const Scene& scene);
 
-// The same, one line each, for Scene::warnings (info, render's stderr, the log).
+// The lines for Scene::warnings (info, render's stderr, the log): the text of each
+// extensionsUsed message, and of each material message whose extension is not
+// declared in extensionsUsed.
 std::vector<std::string> unsupported_extension_warnings(const Scene& scene);
 
 } // namespace sherpa

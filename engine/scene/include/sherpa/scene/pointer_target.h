@@ -48,10 +48,10 @@ struct AccessorUse {
 // -1 where a field does not apply or the scene has no such thing.
 struct PointerTarget {
     TargetKind kind = TargetKind::None;
-    std::int32_t index = -1; // in the file's array of that kind (nodes, materials, ...)
-    std::int32_t sub = -1;   // primitive of a mesh, channel/sampler of an animation, joint
-    std::int32_t node = -1;  // Scene::nodes: the node, joint, channel target, or a node
-                             // that places the mesh, primitive, camera or light
+    std::int32_t index = -1;       // in the file's array of that kind (nodes, materials, ...)
+    std::int32_t sub = -1;         // primitive of a mesh, channel/sampler of an animation, joint
+    std::int32_t node = -1;        // Scene::nodes: the node, joint, channel target, or a node
+                                   // that places the mesh, primitive, camera or light
     std::int32_t engine_mesh = -1; // Scene::meshes: the primitive, or first user
     std::int32_t material = -1;    // Scene::materials
     std::int32_t texture = -1;     // Scene::textures (an image: the first texture of it)
@@ -59,6 +59,10 @@ struct PointerTarget {
     std::vector<AccessorUse> uses; // an accessor's readers among the engine meshes
     std::string rest;              // the pointer below the object ("/min/0")
 };
+
+// One RFC 6901 reference token: '~' written "~0" and '/' written "~1", so that a
+// name ("KHR_materials_clearcoat", an attribute, a JSON key) is one pointer step.
+std::string json_pointer_token(std::string_view name);
 
 // Resolves `pointer` ("/meshes/0/primitives/1/attributes/POSITION"). Never throws;
 // a malformed pointer or an index the scene lacks gives TargetKind::None.
@@ -70,12 +74,12 @@ PointerTarget resolve_pointer(const Scene& scene, std::string_view pointer);
 // material, a texture (an image's message every texture of it), an animation (and
 // a channel's target node), a skin (and a joint's node), a node.
 struct ObjectMarks {
-    std::vector<int> nodes;       // per Scene::nodes
+    std::vector<int> nodes;         // per Scene::nodes
     std::vector<int> engine_meshes; // per Scene::meshes
-    std::vector<int> materials;   // per Scene::materials
-    std::vector<int> textures;    // per Scene::textures
-    std::vector<int> animations;  // per Scene::animations
-    std::vector<int> skins;       // per Scene::skins
+    std::vector<int> materials;     // per Scene::materials
+    std::vector<int> textures;      // per Scene::textures
+    std::vector<int> animations;    // per Scene::animations
+    std::vector<int> skins;         // per Scene::skins
 };
 ObjectMarks mark_objects(const Scene& scene, const std::vector<ValidationMessage>& messages);
 

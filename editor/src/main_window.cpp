@@ -159,6 +159,10 @@ void MainWindow::resetLayout() {
     setTabPosition(Qt::LeftDockWidgetArea, QTabWidget::West);
     setTabPosition(Qt::RightDockWidgetArea, QTabWidget::East);
     addDockWidget(Qt::LeftDockWidgetArea, scene_tree_);
+    // Under the left column's tabs (split before they are tabbed), so that a message
+    // that selects a node (the scene tree in front) leaves the list in view; shown for
+    // files with messages.
+    splitDockWidget(scene_tree_, validation_, Qt::Vertical);
     addDockWidget(Qt::RightDockWidgetArea, mesh_);
     tabifyDockWidget(scene_tree_, culling_dock_);
     tabifyDockWidget(culling_dock_, log_);
@@ -170,9 +174,6 @@ void MainWindow::resetLayout() {
     scene_tree_->raise();
     mesh_->raise();
     resizeDocks({scene_tree_, mesh_}, {kLeftDockWidth, kRightDockWidth}, Qt::Horizontal);
-    // Under the left column's tabs, so that a message that selects a node (the scene
-    // tree in front) leaves the list in view; shown for files with messages.
-    splitDockWidget(scene_tree_, validation_, Qt::Vertical);
     showValidationForScene();
     // The timeline under the viewport only (the side columns keep their height), shown
     // for scenes that move.

@@ -118,7 +118,7 @@ void ValidationTests::filterMatchesCodePointerAndText() {
     auto leaves = [proxy] {
         QStringList rows;
         collect(*proxy, {}, rows);
-        return rows.filter(QLatin1Char('/'));
+        return rows.filter(QStringLiteral("/"));
     };
     dock.setFilter(QStringLiteral("clearcoat")); // the text of one, the pointer of another
     QCOMPARE(leaves(),
@@ -146,7 +146,14 @@ void ValidationTests::unsupportedExtensionSelectsTheMaterial() {
     QCOMPARE(w_->context().selection().mesh, scene.mesh_primitives[0][0]);
     QVERIFY(w_->selectedInstance() >= 0);
     QVERIFY(in_front(w_->materialDock()));
-    QVERIFY2(in_front(&dock), "the list stays in view");
+    QVERIFY2(in_front(&dock),
+             qPrintable(
+                 QStringLiteral("the list stays in view: visible %1 %2x%3 region %4 tabbed with %5")
+                     .arg(dock.isVisible())
+                     .arg(dock.width())
+                     .arg(dock.height())
+                     .arg(dock.visibleRegion().isEmpty())
+                     .arg(w_->tabifiedDockWidgets(&dock).size())));
     const QString warning = w_->materialDock()->notDrawnText();
     QVERIFY2(warning.contains(QStringLiteral("KHR_materials_clearcoat")) &&
                  warning.contains(QStringLiteral("KHR_materials_transmission")),

@@ -1,10 +1,12 @@
 // sherpa-cli compare A B [--json] [--image OUT.png]
-// Structural diff of two glTF files (engine/lab/compare.h) and, with --image, a
+// Structural diff of two glTF files (engine/lab/compare.h), their JSON diffed by
+// pointer (engine/lab/json_diff.h) and, with --image, a
 // rendered difference heat map of both from the same camera (A framed).
 #include "cli_common.h"
 
 #include <sherpa/lab/compare.h>
 #include <sherpa/lab/family.h>
+#include <sherpa/lab/json_diff.h>
 #include <sherpa/scene/scene_loader.h>
 
 #include <cmath>
@@ -59,6 +61,79 @@ nlohmann::json comparison_json(const lab::FileComparison& c) {
               {"total", {c.total_bytes_a, c.total_bytes_b}},
               {"images", {c.image_bytes_a, c.image_bytes_b}}}},
             {"notes", c.notes}};
+}
+
+// Both files' JSON, diffed by pointer; an error (a built-in scene) says why not.
+lab::JsonDiff diff_files(const std::string& a, const std::string& b) {
+    std::string text_a, text_b, error;
+    if (!lab::read_gltf_json(a, text_a, error) || !lab::read_gltf_json(b, text_b, error)) {
+        lab::JsonDiff d;
+        d.error = error;
+        return d;
+    }
+    return lab::json_diff(text_a, text_b);
+}
+
+nlohmann::json json_diff_json(const lab::JsonDiff& d) {
+    if (!d.error.empty()) return {{"error", d.error}};
+    nlohmann::json added = nlohmann::json::array(), removed = nlohmann::json::array(),
+                   changed = nlohmann::json::array(), drift = nlohmann::json::array();
+    for (const lab::JsonChange& c : d.changes) {
+        if (c.kind == lab::JsonChangeKind::Added)
+            added.push_back(c.pointer);
+        else if (c.kind == lab::JsonChangeKind::Removed)
+            removed.push_back(c.pointer);
+        else
+            changed.push_back(
+                {{"pointer", c.pointer}, {"fields", c.fields}, {"field_count", c.field_count}});
+    }
+    for (const lab::AccessorDrift& a : d.drift)
+        drift.push_back(
+            {{"use", a.use},
+             {"accessor", {a.accessor_a, a.accessor_b}},
+             {"min", {a.min_a, a.min_b}},
+             {"max", {a.max_a, a.max_b}},
+             {"comparable", a.comparable},
+             {"drift", a.comparable ? nlohmann::json(a.drift) : nlohmann::json(nullptr)},
+             {"relative", a.comparable ? nlohmann::json(a.relative) : nlohmann::json(nullptr)},
+             {"note", a.note}});
+    return {{"objects", {{"a", d.objects_a}, {"b", d.objects_b}, {"unchanged", d.unchanged}}},
+            {"added", added},
+            {"removed", removed},
+            {"changed", changed},
+            {"accessor_drift", drift}};
+}
+
+void print_json_diff(const lab::JsonDiff& d) {
+    if (!d.error.empty()) {
+        std::printf("json_diff: not available (%s)\n", d.error.c_str());
+        return;
+    }
+    std::size_t counts[3] = {0, 0, 0};
+    for (const lab::JsonChange& c : d.changes) ++counts[static_cast<int>(c.kind)];
+    std::printf("json_diff: %zu added, %zu removed, %zu changed, %llu unchanged (objects %llu -> "
+                "%llu)\n",
+                counts[0], counts[1], counts[2], (unsigned long long)d.unchanged,
+                (unsigned long long)d.objects_a, (unsigned long long)d.objects_b);
+    constexpr std::size_t kShown = 40; // --json lists every one
+    for (std::size_t i = 0; i < d.changes.size() && i < kShown; ++i) {
+        const lab::JsonChange& c = d.changes[i];
+        std::printf("  %-8s %s\n", std::string(lab::to_string(c.kind)).c_str(), c.pointer.c_str());
+        for (const std::string& f : c.fields) std::printf("             %s\n", f.c_str());
+        if (c.field_count > c.fields.size())
+            std::printf("             ... %zu more fields\n", c.field_count - c.fields.size());
+    }
+    if (d.changes.size() > kShown)
+        std::printf("  ... %zu more objects (--json lists them all)\n", d.changes.size() - kShown);
+    for (const lab::AccessorDrift& a : d.drift) {
+        std::printf("  min/max  %s (accessor %lld -> %lld): ", a.use.c_str(),
+                    (long long)a.accessor_a, (long long)a.accessor_b);
+        if (a.comparable)
+            std::printf("drift %.6g (%.3g%% of the extent)", a.drift, 100.0 * a.relative);
+        else
+            std::printf("not comparable");
+        std::printf("%s%s\n", a.note.empty() ? "" : "; ", a.note.c_str());
+    }
 }
 
 void print_text(const lab::FileComparison& c) {
@@ -118,7 +193,9 @@ int run_compare(Args args) {
         return kExitLoadError;
     }
     const lab::FileComparison c = lab::compare_files(*a.scene, *b.scene);
+    const lab::JsonDiff diff = diff_files(files[0], files[1]);
     nlohmann::json out = comparison_json(c);
+    out["json_diff"] = json_diff_json(diff);
     if (!image.empty()) {
         const lab::DifferenceImage d = lab::render_difference(*a.scene, *b.scene, {});
         std::string error = d.error;
@@ -144,8 +221,10 @@ int run_compare(Args args) {
     }
     if (json)
         std::cout << out.dump(2) << "\n";
-    else
+    else {
         print_text(c);
+        print_json_diff(diff);
+    }
     return kExitOk;
 }
 

@@ -5,6 +5,7 @@
 #include "scene_json.h"
 #include "texture_cli.h"
 
+#include <sherpa/scene/gltf_extensions.h>
 #include <sherpa/scene/scene_loader.h>
 
 #include <charconv>
@@ -14,6 +15,18 @@
 
 namespace sherpa::cli {
 namespace {
+
+// "  extensions used: KHR_texture_transform (supported), KHR_materials_clearcoat (NOT
+// supported: not drawn)": the table of gltf_extensions.h, as info --json gives it.
+void print_extensions(const char* which, const std::vector<std::string>& names) {
+    if (names.empty()) return;
+    std::printf("  extensions %s:", which);
+    for (std::size_t i = 0; i < names.size(); ++i)
+        std::printf("%s %s (%s)", i ? "," : "", names[i].c_str(),
+                    is_supported_gltf_extension(names[i]) ? "supported"
+                                                          : "NOT supported: not drawn");
+    std::printf("\n");
+}
 
 void print_text(const Scene& s, const std::vector<tex::ImageProblem>& problems) {
     const SourceCounts& c = s.counts;
@@ -48,6 +61,8 @@ void print_text(const Scene& s, const std::vector<tex::ImageProblem>& problems) 
                 s.validation.count(Severity::Error), s.validation.count(Severity::Warning),
                 s.validation.count(Severity::Information), s.validation.count(Severity::Hint),
                 s.validation.truncated ? " (truncated)" : "");
+    print_extensions("used", s.extensions_used);
+    print_extensions("required", s.extensions_required);
     for (const auto& p : problems) std::printf("  warning: texture %s\n", tex::describe(p).c_str());
     print_motion_text(s);
     for (const auto& w : s.warnings) std::printf("  warning: %s\n", w.c_str());

@@ -1367,6 +1367,42 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</source>
         <translation>Mittel der letzten %1 Bilder ohne das erste des Renderers (Pipeline-Erstellung). Während sich die Kamera auf einem langsamen Gerät bewegt, werden Bilder mit geringerer Auflösung und ohne Schatten gezeichnet, um %2 fps zu halten; in Ruhe folgt das volle Bild.</translation>
     </message>
+    <message>
+        <source>node %1</source>
+        <translation>Knoten %1</translation>
+    </message>
+    <message>
+        <source>primitive %1</source>
+        <translation>Primitiv %1</translation>
+    </message>
+    <message>
+        <source>accessor %1: %2 of primitive %3</source>
+        <translation>Accessor %1: %2 von Primitiv %3</translation>
+    </message>
+    <message>
+        <source>triangle %1</source>
+        <translation>Dreieck %1</translation>
+    </message>
+    <message>
+        <source>vertex %1</source>
+        <translation>Vertex %1</translation>
+    </message>
+    <message>
+        <source>material %1</source>
+        <translation>Material %1</translation>
+    </message>
+    <message>
+        <source>texture %1</source>
+        <translation>Textur %1</translation>
+    </message>
+    <message>
+        <source>→ nothing the editor can select (%1).</source>
+        <translation>→ nichts, was der Editor auswählen kann (%1).</translation>
+    </message>
+    <message>
+        <source>→ %1</source>
+        <translation>→ %1</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -1389,6 +1425,18 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>Material %1 %2: the importer&apos;s CPU record (no renderer attached, so texture fields hold glTF texture indices, not bindless slots).</source>
         <translation>Material %1 %2: der CPU-Datensatz des Importers (kein Renderer angebunden, daher enthalten die Texturfelder glTF-Texturindizes, keine Bindless-Slots).</translation>
+    </message>
+    <message>
+        <source>⚠ Not drawn: %1. Sherpa does not implement %2, so this material is shown without %2.</source>
+        <translation>⚠ Nicht gezeichnet: %1. Sherpa implementiert %2 nicht; dieses Material wird ohne %2 angezeigt.</translation>
+    </message>
+    <message>
+        <source>this extension</source>
+        <translation>diese Erweiterung</translation>
+    </message>
+    <message>
+        <source>these extensions</source>
+        <translation>diese Erweiterungen</translation>
     </message>
 </context>
 <context>
@@ -1777,6 +1825,10 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <source>×%1 GPU instances (of %2 rows)</source>
         <translation>×%1 GPU-Instanzen (von %2 Zeilen)</translation>
     </message>
+    <message>
+        <source>Validation messages name this (see the Validation dock).</source>
+        <translation>Validierungsmeldungen nennen dieses Objekt (siehe Validierungs-Dock).</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::TextureDock</name>
@@ -2102,6 +2154,64 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>HDR images (*.hdr *.exr);;All files (*)</source>
         <translation>HDR-Bilder (*.hdr *.exr);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::ValidationDock</name>
+    <message>
+        <source>Validation</source>
+        <translation>Validierung</translation>
+    </message>
+    <message>
+        <source>Filter by code, pointer or text…</source>
+        <translation>Nach Code, Zeiger oder Text filtern…</translation>
+    </message>
+    <message>
+        <source>No scene.</source>
+        <translation>Keine Szene.</translation>
+    </message>
+    <message>
+        <source>No messages: nothing to report about this file.</source>
+        <translation>Keine Meldungen: zu dieser Datei gibt es nichts zu berichten.</translation>
+    </message>
+    <message>
+        <source>%1 errors, %2 warnings, %3 information, %4 hints. Click a message to select what it names.</source>
+        <translation>%1 Fehler, %2 Warnungen, %3 Informationen, %4 Hinweise. Eine Meldung anklicken wählt aus, was sie nennt.</translation>
+    </message>
+    <message>
+        <source>The list is truncated.</source>
+        <translation>Die Liste ist gekürzt.</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::ValidationModel</name>
+    <message>
+        <source>Errors (%1)</source>
+        <translation>Fehler (%1)</translation>
+    </message>
+    <message>
+        <source>Warnings (%1)</source>
+        <translation>Warnungen (%1)</translation>
+    </message>
+    <message>
+        <source>Information (%1)</source>
+        <translation>Informationen (%1)</translation>
+    </message>
+    <message>
+        <source>Hints (%1)</source>
+        <translation>Hinweise (%1)</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>(the whole file)</source>
+        <translation>(die ganze Datei)</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Meldung</translation>
     </message>
 </context>
 </TS>

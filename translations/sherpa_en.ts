@@ -1367,6 +1367,42 @@ The current scene is kept.</translation>
         <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</source>
         <translation>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</translation>
     </message>
+    <message>
+        <source>node %1</source>
+        <translation>node %1</translation>
+    </message>
+    <message>
+        <source>primitive %1</source>
+        <translation>primitive %1</translation>
+    </message>
+    <message>
+        <source>accessor %1: %2 of primitive %3</source>
+        <translation>accessor %1: %2 of primitive %3</translation>
+    </message>
+    <message>
+        <source>triangle %1</source>
+        <translation>triangle %1</translation>
+    </message>
+    <message>
+        <source>vertex %1</source>
+        <translation>vertex %1</translation>
+    </message>
+    <message>
+        <source>material %1</source>
+        <translation>material %1</translation>
+    </message>
+    <message>
+        <source>texture %1</source>
+        <translation>texture %1</translation>
+    </message>
+    <message>
+        <source>→ nothing the editor can select (%1).</source>
+        <translation>→ nothing the editor can select (%1).</translation>
+    </message>
+    <message>
+        <source>→ %1</source>
+        <translation>→ %1</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -1389,6 +1425,18 @@ The current scene is kept.</translation>
     <message>
         <source>Material %1 %2: the importer&apos;s CPU record (no renderer attached, so texture fields hold glTF texture indices, not bindless slots).</source>
         <translation>Material %1 %2: the importer&apos;s CPU record (no renderer attached, so texture fields hold glTF texture indices, not bindless slots).</translation>
+    </message>
+    <message>
+        <source>⚠ Not drawn: %1. Sherpa does not implement %2, so this material is shown without %2.</source>
+        <translation>⚠ Not drawn: %1. Sherpa does not implement %2, so this material is shown without %2.</translation>
+    </message>
+    <message>
+        <source>this extension</source>
+        <translation>this extension</translation>
+    </message>
+    <message>
+        <source>these extensions</source>
+        <translation>these extensions</translation>
     </message>
 </context>
 <context>
@@ -1777,6 +1825,10 @@ The current scene is kept.</translation>
         <source>×%1 GPU instances (of %2 rows)</source>
         <translation>×%1 GPU instances (of %2 rows)</translation>
     </message>
+    <message>
+        <source>Validation messages name this (see the Validation dock).</source>
+        <translation>Validation messages name this (see the Validation dock).</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::TextureDock</name>
@@ -2102,6 +2154,64 @@ The current scene is kept.</translation>
     <message>
         <source>HDR images (*.hdr *.exr);;All files (*)</source>
         <translation>HDR images (*.hdr *.exr);;All files (*)</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::ValidationDock</name>
+    <message>
+        <source>Validation</source>
+        <translation>Validation</translation>
+    </message>
+    <message>
+        <source>Filter by code, pointer or text…</source>
+        <translation>Filter by code, pointer or text…</translation>
+    </message>
+    <message>
+        <source>No scene.</source>
+        <translation>No scene.</translation>
+    </message>
+    <message>
+        <source>No messages: nothing to report about this file.</source>
+        <translation>No messages: nothing to report about this file.</translation>
+    </message>
+    <message>
+        <source>%1 errors, %2 warnings, %3 information, %4 hints. Click a message to select what it names.</source>
+        <translation>%1 errors, %2 warnings, %3 information, %4 hints. Click a message to select what it names.</translation>
+    </message>
+    <message>
+        <source>The list is truncated.</source>
+        <translation>The list is truncated.</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::ValidationModel</name>
+    <message>
+        <source>Errors (%1)</source>
+        <translation>Errors (%1)</translation>
+    </message>
+    <message>
+        <source>Warnings (%1)</source>
+        <translation>Warnings (%1)</translation>
+    </message>
+    <message>
+        <source>Information (%1)</source>
+        <translation>Information (%1)</translation>
+    </message>
+    <message>
+        <source>Hints (%1)</source>
+        <translation>Hints (%1)</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>(the whole file)</source>
+        <translation>(the whole file)</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Message</translation>
     </message>
 </context>
 </TS>

@@ -1367,6 +1367,42 @@ The current scene is kept.</source>
         <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</source>
         <translation>最近 %1 帧的平均值，不计渲染器的第一帧（创建管线）。在慢速设备上移动相机时，以较低分辨率且不带阴影绘制以保持 %2 fps；静止后显示完整画面。</translation>
     </message>
+    <message>
+        <source>node %1</source>
+        <translation>节点 %1</translation>
+    </message>
+    <message>
+        <source>primitive %1</source>
+        <translation>图元 %1</translation>
+    </message>
+    <message>
+        <source>accessor %1: %2 of primitive %3</source>
+        <translation>访问器 %1：图元 %3 的 %2</translation>
+    </message>
+    <message>
+        <source>triangle %1</source>
+        <translation>三角形 %1</translation>
+    </message>
+    <message>
+        <source>vertex %1</source>
+        <translation>顶点 %1</translation>
+    </message>
+    <message>
+        <source>material %1</source>
+        <translation>材质 %1</translation>
+    </message>
+    <message>
+        <source>texture %1</source>
+        <translation>纹理 %1</translation>
+    </message>
+    <message>
+        <source>→ nothing the editor can select (%1).</source>
+        <translation>→ 编辑器中没有可选择的对象（%1）。</translation>
+    </message>
+    <message>
+        <source>→ %1</source>
+        <translation>→ %1</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -1389,6 +1425,18 @@ The current scene is kept.</source>
     <message>
         <source>Material %1 %2: the importer&apos;s CPU record (no renderer attached, so texture fields hold glTF texture indices, not bindless slots).</source>
         <translation>材质 %1 %2：导入器的 CPU 记录（未连接渲染器，因此纹理字段是 glTF 纹理索引，而非无绑定槽位）。</translation>
+    </message>
+    <message>
+        <source>⚠ Not drawn: %1. Sherpa does not implement %2, so this material is shown without %2.</source>
+        <translation>⚠ 未绘制：%1。Sherpa 未实现%2，因此此材质显示时不含%2。</translation>
+    </message>
+    <message>
+        <source>this extension</source>
+        <translation>该扩展</translation>
+    </message>
+    <message>
+        <source>these extensions</source>
+        <translation>这些扩展</translation>
     </message>
 </context>
 <context>
@@ -1777,6 +1825,10 @@ The current scene is kept.</source>
         <source>×%1 GPU instances (of %2 rows)</source>
         <translation>×%1 个 GPU 实例（共 %2 行）</translation>
     </message>
+    <message>
+        <source>Validation messages name this (see the Validation dock).</source>
+        <translation>有验证消息指向此对象（见“验证”面板）。</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::TextureDock</name>
@@ -2102,6 +2154,64 @@ The current scene is kept.</source>
     <message>
         <source>HDR images (*.hdr *.exr);;All files (*)</source>
         <translation>HDR 图像 (*.hdr *.exr);;所有文件 (*)</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::ValidationDock</name>
+    <message>
+        <source>Validation</source>
+        <translation>验证</translation>
+    </message>
+    <message>
+        <source>Filter by code, pointer or text…</source>
+        <translation>按代码、指针或文本筛选…</translation>
+    </message>
+    <message>
+        <source>No scene.</source>
+        <translation>没有场景。</translation>
+    </message>
+    <message>
+        <source>No messages: nothing to report about this file.</source>
+        <translation>没有消息：此文件没有需要报告的问题。</translation>
+    </message>
+    <message>
+        <source>%1 errors, %2 warnings, %3 information, %4 hints. Click a message to select what it names.</source>
+        <translation>%1 个错误，%2 个警告，%3 条信息，%4 条提示。点击消息可选中它所指的对象。</translation>
+    </message>
+    <message>
+        <source>The list is truncated.</source>
+        <translation>列表已截断。</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::ValidationModel</name>
+    <message>
+        <source>Errors (%1)</source>
+        <translation>错误（%1）</translation>
+    </message>
+    <message>
+        <source>Warnings (%1)</source>
+        <translation>警告（%1）</translation>
+    </message>
+    <message>
+        <source>Information (%1)</source>
+        <translation>信息（%1）</translation>
+    </message>
+    <message>
+        <source>Hints (%1)</source>
+        <translation>提示（%1）</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <source>(the whole file)</source>
+        <translation>（整个文件）</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>消息</translation>
     </message>
 </context>
 </TS>

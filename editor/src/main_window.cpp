@@ -35,6 +35,7 @@
 #include "scene_tree_dock.h"
 #include "texture_dock.h"
 #include "timeline_dock.h"
+#include "validation_dock.h"
 #include "view_catalog.h"
 #include "view_fitting.h"
 #include "viewport_window.h"
@@ -133,6 +134,7 @@ void MainWindow::createDocks() {
     log_ = new LogDock(this);
     lab_ = new LabDock(context_, this);
     acceleration_ = new AccelerationDock(context_, this);
+    validation_ = new ValidationDock(context_, this);
     for (QDockWidget* d : findChildren<QDockWidget*>()) {
         // A dock's width is the user's, never its content's: without this, a long
         // summary line (selecting a primitive) widens the mesh dock and squeezes the
@@ -162,6 +164,10 @@ void MainWindow::resetLayout() {
     setTabPosition(Qt::LeftDockWidgetArea, QTabWidget::West);
     setTabPosition(Qt::RightDockWidgetArea, QTabWidget::East);
     addDockWidget(Qt::LeftDockWidgetArea, scene_tree_);
+    // Under the left column's tabs (split before they are tabbed), so that a message
+    // that selects a node (the scene tree in front) leaves the list in view; shown for
+    // files with messages.
+    splitDockWidget(scene_tree_, validation_, Qt::Vertical);
     addDockWidget(Qt::RightDockWidgetArea, mesh_);
     tabifyDockWidget(scene_tree_, culling_dock_);
     tabifyDockWidget(culling_dock_, log_);
@@ -173,6 +179,7 @@ void MainWindow::resetLayout() {
     scene_tree_->raise();
     mesh_->raise();
     resizeDocks({scene_tree_, mesh_}, {kLeftDockWidth, kRightDockWidth}, Qt::Horizontal);
+    showValidationForScene();
     // The timeline under the viewport only (the side columns keep their height), shown
     // for scenes that move.
     setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
@@ -217,6 +224,8 @@ void MainWindow::connectActions() {
     });
     connect(&context_, &EditorContext::sceneReady, this, &MainWindow::showTimelineForScene);
     connect(&context_, &EditorContext::sceneReady, this, [this] { pose_overflow_logged_.clear(); });
+    connect(&context_, &EditorContext::sceneReady, this, &MainWindow::showValidationForScene);
+    connectValidation();
     connect(scene_tree_, &SceneTreeDock::selectNodeRequested, &context_,
             &EditorContext::selectNode);
     connect(scene_tree_, &SceneTreeDock::selectMeshRequested, &context_,

@@ -41,6 +41,7 @@ class SceneFileWatch;
 class SceneTreeDock;
 class TextureDock;
 class TimelineDock;
+class ValidationDock;
 class ViewportWindow;
 
 class MainWindow : public QMainWindow {
@@ -63,6 +64,7 @@ public:
     LogDock* logDock() const { return log_; }
     LabDock* labDock() const { return lab_; }
     AccelerationDock* accelerationDock() const { return acceleration_; }
+    ValidationDock* validationDock() const { return validation_; }
     // The renderer ray traces (device support and --rt on); false until the device is known.
     bool rayTracing() const { return ray_tracing_; }
     CullingMonitor& cullingMonitor() const { return *culling_; }
@@ -98,6 +100,10 @@ public:
     void resetLayout();
     // The whole window as shown, the viewport's last frame composited in.
     QImage screenshot();
+    // Selects the object a validation message's JSON pointer names (an accessor's
+    // element from `message`, as the Khronos validator words it) and brings the dock
+    // that shows it to the front; false when the scene has nothing to select there.
+    bool showPointer(const QString& pointer, const QString& message = {});
     // Selects a node by name (first match) or index; false if there is none.
     bool selectNodeNamed(const QString& name_or_index);
     // Selects whatever is under a viewport point (NDC); returns the instance or -1.
@@ -177,7 +183,9 @@ private:
     // the next frame.
     void updateStreams();
     void connectActions();
-    void connectLab(); // main_window_lab.cpp
+    void connectLab();        // main_window_lab.cpp
+    void connectValidation(); // main_window_validation.cpp
+    void showValidationForScene();
     // main_window_reload.cpp
     void createReloadWatch(QMenu* settings_menu);
     void retranslateReload();
@@ -234,6 +242,7 @@ private:
     QString compare_label_;                         // what side B shows (the file, its textures)
     std::optional<TangentMethod> compare_tangents_; // side B's tangents, when regenerated
     AccelerationDock* acceleration_ = nullptr;
+    ValidationDock* validation_ = nullptr; // under the left column, for files with messages
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;
     QLabel* frame_label_ = nullptr;

@@ -32,6 +32,7 @@
 #include "scene_tree_dock.h"
 #include "texture_dock.h"
 #include "timeline_dock.h"
+#include "validation_dock.h"
 #include "view_catalog.h"
 #include "viewport_window.h"
 
@@ -232,7 +233,7 @@ void MainWindow::createMenus() {
           static_cast<QDockWidget*>(material_), static_cast<QDockWidget*>(textures_),
           static_cast<QDockWidget*>(culling_dock_), static_cast<QDockWidget*>(log_),
           static_cast<QDockWidget*>(timeline_), static_cast<QDockWidget*>(lab_),
-          static_cast<QDockWidget*>(acceleration_)})
+          static_cast<QDockWidget*>(acceleration_), static_cast<QDockWidget*>(validation_)})
         a.docks->addAction(d->toggleViewAction());
     a.view->addAction(a.reset_layout);
 
@@ -365,6 +366,7 @@ void MainWindow::retranslate() {
     log_->retranslate();
     timeline_->retranslate();
     acceleration_->retranslate();
+    validation_->retranslate();
     compare_->retranslate();
     legend_->retranslate();
     // Models read tr() in headerData/data: tell the views to ask again. Source models

@@ -5,6 +5,8 @@
 #include <QTableView>
 #include <QVBoxLayout>
 
+#include <sherpa/scene/gltf_extensions.h>
+
 #include "editor_context.h"
 #include "material_fields_model.h"
 
@@ -19,6 +21,10 @@ MaterialDock::MaterialDock(const EditorContext& context, QWidget* parent)
     layout->setContentsMargins(2, 2, 2, 2);
     header_ = new QLabel(body);
     header_->setWordWrap(true);
+    not_drawn_ = new QLabel(body);
+    not_drawn_->setObjectName(QStringLiteral("notDrawnLabel"));
+    not_drawn_->setWordWrap(true);
+    not_drawn_->hide();
     view_ = new QTableView(body);
     view_->setModel(model_);
     // The vertical header shows each field's byte offset (MaterialFieldsModel).
@@ -27,6 +33,7 @@ MaterialDock::MaterialDock(const EditorContext& context, QWidget* parent)
     view_->setIconSize(QSize(24, 24));
     view_->horizontalHeader()->setStretchLastSection(true);
     layout->addWidget(header_);
+    layout->addWidget(not_drawn_);
     layout->addWidget(view_);
     setWidget(body);
     connect(view_, &QTableView::doubleClicked, this, [this](const QModelIndex& index) {
@@ -53,9 +60,22 @@ void MaterialDock::showMaterial() {
     if (!scene || material < 0 || static_cast<std::size_t>(material) >= scene->materials.size()) {
         model_->clear();
         header_->setText(tr("No material selected."));
+        not_drawn_->hide();
         return;
     }
     const MaterialInstance& m = scene->materials[static_cast<std::size_t>(material)];
+    // Loud about what is not drawn: a glass material shown opaque must say so.
+    const std::vector<std::string> missing = unsupported_extensions(m);
+    QStringList names;
+    for (const std::string& n : missing) names << QString::fromStdString(n);
+    not_drawn_->setText(
+        names.isEmpty()
+            ? QString()
+            : tr("⚠ Not drawn: %1. Sherpa does not implement %2, so this "
+                 "material is shown without %2.")
+                  .arg(names.join(QStringLiteral(", ")))
+                  .arg(names.size() == 1 ? tr("this extension") : tr("these extensions")));
+    not_drawn_->setVisible(!names.isEmpty());
     const QString name = m.name.empty() ? tr("(unnamed)") : QString::fromStdString(m.name);
     model_->setMaterial(context_.sharedSession(), material, to_gpu_material(m),
                         MaterialFieldsModel::Source::Cpu);
@@ -70,6 +90,10 @@ void MaterialDock::showMaterial() {
             if (context_.scene() == scene && context_.selection().material == material)
                 showReadback(material, std::move(gpu));
         });
+}
+
+QString MaterialDock::notDrawnText() const {
+    return not_drawn_->text();
 }
 
 void MaterialDock::showReadback(int material, std::optional<GpuMaterialReadback> gpu) {

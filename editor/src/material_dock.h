@@ -36,6 +36,8 @@ public:
     void retranslate();
     void setReadback(MaterialReadback readback);
     MaterialFieldsModel* model() const { return model_; }
+    // The warning about extensions the material uses that are not drawn ("" if none).
+    QString notDrawnText() const;
 
 Q_SIGNALS:
     void selectTextureRequested(int texture);
@@ -47,6 +49,7 @@ private:
     const EditorContext& context_;
     MaterialFieldsModel* model_;
     QLabel* header_;
+    QLabel* not_drawn_; // the extensions of the material that Sherpa does not draw
     QTableView* view_;
     MaterialReadback readback_;
 };

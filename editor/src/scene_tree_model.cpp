@@ -5,6 +5,7 @@
 #include <map>
 
 #include "format_values.h"
+#include "validation_model.h"
 
 namespace sherpa::editor {
 
@@ -48,6 +49,7 @@ void SceneTreeModel::rebuild() {
     items_.clear();
     top_.clear();
     node_item_.clear();
+    rebuildMarks();
     const Scene* scene = context_.scene();
     if (!scene) return;
     node_item_.assign(scene->nodes.size(), -1);
@@ -228,7 +230,11 @@ QVariant SceneTreeModel::data(const QModelIndex& index, int role) const {
     const Item& it = items_[index.internalId()];
     switch (role) {
     case Qt::ToolTipRole:
+        if (index.column() == NameColumn && mark(it) >= 0)
+            return tr("Validation messages name this (see the Validation dock).");
         return index.column() == DetailColumn ? detail(it, true) : QVariant();
+    case Qt::DecorationRole:
+        return index.column() == NameColumn && mark(it) >= 0 ? severity_icon(mark(it)) : QVariant();
     case Qt::DisplayRole:
         if (index.column() == NameColumn) return name(it);
         if (index.column() == DetailColumn) return detail(it);

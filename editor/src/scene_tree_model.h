@@ -7,6 +7,8 @@
 
 #include <vector>
 
+#include <sherpa/scene/pointer_target.h>
+
 #include "editor_context.h"
 
 namespace sherpa::editor {
@@ -71,6 +73,11 @@ private:
     QString motionType(const Item& item) const;
     QString motionDetail(const Item& item, bool full) const;
     std::vector<char> joint_; // per node: a joint of some skin
+    // scene_tree_marks.cpp: the worst validation severity per object (-1: none),
+    // shown as a marker on its item.
+    void rebuildMarks();
+    int mark(const Item& item) const;
+    ObjectMarks marks_;
 
     const EditorContext& context_;
     std::vector<Item> items_;

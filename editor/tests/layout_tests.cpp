@@ -40,6 +40,7 @@
 #include "texture_dock.h"
 #include "texture_table_model.h"
 #include "vertex_table_model.h"
+#include "validation_dock.h"
 #include "viewport_window.h"
 #include "window_test_support.h"
 
@@ -65,6 +66,7 @@ private Q_SLOTS:
     void motionSceneIsNotCutOff();
     void viewportModesAreNotCutOff();
     void sideBSaysWhenItShowsAndStartsAComparison();
+    void validationIsNotCutOff();
 
 private:
     // A window of 1600×1000 with builtin:default loaded and the sphere selected,
@@ -332,6 +334,37 @@ void LayoutTests::sideBSaysWhenItShowsAndStartsAComparison() {
     controls.setSide(SideB::OtherFile);
     QVERIFY(side->fontMetrics().horizontalAdvance(side->text()) <= 230);
     QVERIFY(side->toolTip().contains(QStringLiteral("final_v7.gltf")));
+}
+
+void LayoutTests::validationIsNotCutOff() {
+    // A file with validation messages (materials using extensions that are not drawn):
+    // the Validation dock under the left column, its groups and pointers, the selected
+    // message in full, and the material dock's line about what is not drawn.
+    for (const QString& language :
+         {QStringLiteral("en"), QStringLiteral("de"), QStringLiteral("zh_CN")}) {
+        std::unique_ptr<MainWindow> w = launch(language);
+        QVERIFY(w);
+        QVERIFY(test::load(
+            *w, QStringLiteral(SHERPA_TEST_DATA_DIR "/unsupported_material_extensions.gltf")));
+        QVERIFY(w->validationDock()->isVisible());
+        QVERIFY(w->validationDock()->activatePointer(
+            QStringLiteral("/materials/0/extensions/KHR_materials_transmission")));
+        QStringList cut = cut_in_every_dock(*w);
+        w->materialDock()->raise();
+        wait_settled(*w);
+        // Wrapped labels show every line (a label cut in height loses its last words).
+        for (QDockWidget* dock : {static_cast<QDockWidget*>(w->validationDock()),
+                                  static_cast<QDockWidget*>(w->materialDock())})
+            for (QLabel* label : dock->findChildren<QLabel*>())
+                if (label->isVisible() && !label->text().isEmpty() &&
+                    label->heightForWidth(label->width()) > label->height())
+                    cut << QStringLiteral("%1 label: %2 (%3 > %4 px high)")
+                               .arg(dock->objectName(), label->text())
+                               .arg(label->heightForWidth(label->width()))
+                               .arg(label->height());
+        cut.removeDuplicates();
+        QVERIFY2(cut.isEmpty(), qPrintable(language + ": " + cut.join(QStringLiteral("\n"))));
+    }
 }
 
 QTEST_MAIN(LayoutTests)

@@ -129,6 +129,8 @@ void import_channel(ImportContext& ctx, const tinygltf::Animation& src, std::siz
         fail(cpath + ": shares " + spath + " with a channel of another value size");
     }
     out.sampler = static_cast<std::uint32_t>(si);
+    out.source = static_cast<std::uint32_t>(c);
+    out.source_sampler = static_cast<std::uint32_t>(ch.sampler);
     anim.channels.push_back(out);
 }
 

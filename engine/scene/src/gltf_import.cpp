@@ -12,6 +12,7 @@
 #include "motion_internal.h"
 #include "validate_internal.h"
 
+#include <sherpa/scene/gltf_extensions.h>
 #include <sherpa/scene/scene_loader.h>
 
 #include <algorithm>
@@ -210,6 +211,10 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         detail::import_default_weights(ctx);
         detail::import_animations(ctx);
         warn_unsupported_content(ctx);
+        // What is not drawn, said loudly (gltf_extensions.h).
+        for (std::string& w : unsupported_extension_warnings(*scene)) ctx.warn(std::move(w));
+        for (ValidationMessage& m : unsupported_extension_messages(*scene))
+            scene->validation.messages.push_back(std::move(m));
         const std::int32_t scene_index =
             options.scene_index >= 0 ? options.scene_index : std::max(model.defaultScene, 0);
         std::string select_error;

@@ -300,6 +300,7 @@ void import_material(ImportContext& ctx, std::size_t i) {
             it != src.extensions.end())
             m.emissive_strength = number_or(it->second, "emissiveStrength", 1.0f);
         m.unlit = src.extensions.count("KHR_materials_unlit") != 0;
+        for (const auto& entry : src.extensions) m.extensions.push_back(entry.first); // sorted
         m.base_color = read_slot(ctx, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
                                  pbr.baseColorTexture.extensions,
                                  where + ".pbrMetallicRoughness.baseColorTexture", kRoleColor);

@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -62,6 +63,9 @@ struct MaterialInstance {
     // Set when the material uses KHR_materials_pbrSpecularGlossiness (then the
     // metallic-roughness fields are its fallback and are not shaded).
     std::optional<SpecularGlossiness> specular_glossiness;
+    // The names in the material's `extensions` object, as written (sorted): what
+    // marks a material that uses an extension Sherpa does not draw.
+    std::vector<std::string> extensions;
     TextureSlot base_color, metallic_roughness, normal, occlusion, emissive;
 };
 

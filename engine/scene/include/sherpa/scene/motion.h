@@ -69,6 +69,9 @@ struct AnimationSampler {
 struct AnimationChannel {
     std::uint32_t sampler = 0, node = 0;
     AnimationPath path = AnimationPath::Translation;
+    // The file's indices in its animation (channels without a node are skipped, and
+    // samplers are kept only where a channel uses them): what JSON pointers name.
+    std::uint32_t source = 0, source_sampler = 0;
 };
 
 struct Animation {

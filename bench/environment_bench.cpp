@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
         const double c0 = bench::process_cpu_ms();
         renderer.set_environment(&image);
         cpu.push_back(bench::process_cpu_ms() - c0);
-        const gpu::EnvironmentStats st = renderer.environment_stats();
+        const gpu::EnvironmentStats st = renderer.resident().environment;
         wall.push_back(st.prefilter_ms);
         gpu_ms.push_back(st.gpu_ms);
         for (int p = 0; p < 5; ++p) pass[p].push_back(st.pass_ms[p]);
@@ -127,7 +127,7 @@ int main(int argc, char** argv) {
         renderer.set_environment(nullptr);
         without.push_back(frame_ms(renderer, s, frames));
     }
-    const std::uint64_t bytes_after = renderer.environment_stats().bytes;
+    const std::uint64_t bytes_after = renderer.resident().environment.bytes;
     std::printf("%s lit %ux%u, median of %d frames x %d alternating runs:\n", scene_spec.c_str(),
                 s.width, s.height, frames, repeats);
     std::printf("  with the environment %.1f ms, without %.1f ms: %.2fx (goal <= 1.3x)\n",

@@ -85,7 +85,7 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
 
     // The environment lighting the lit view (absent: none, no GPU bytes) and the display
     // transform.
-    const gpu::EnvironmentStats env = renderer.environment_stats();
+    const gpu::EnvironmentStats env = renderer.resident().environment;
     j["tone_map"] = std::string(gpu::to_string(run.settings.tone_map));
     j["exposure"] = run.settings.exposure;
     if (env.present)
@@ -123,8 +123,8 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
                                  // Skinning and morph streams: 0 for a static scene.
                                  {"motion", m.motion},
                                  {"total", m.total()},
-                                 {"render_targets", renderer.render_target_bytes()},
-                                 {"environment", renderer.environment_stats().bytes}};
+                                 {"render_targets", renderer.resident().render_target_bytes},
+                                 {"environment", renderer.resident().environment.bytes}};
         // What the geometry buffers were made for: acceleration-structure build input
         // and index device addresses only with ray tracing enabled (`--rt`).
         j["geometry_buffers"] = {

@@ -255,7 +255,7 @@ int run_rt(Args args) {
             renderer_options.textures.missing = gpu::MissingTextures::Neutral;
             gpu::Renderer renderer(context, renderer_options);
             renderer.load(*loaded.scene, no_textures);
-            report(*renderer.acceleration_stats());
+            report(*renderer.resident().acceleration);
         } else {
             gpu::ResourceManager resources(context);
             gpu::BindlessTable table(resources);

@@ -165,7 +165,7 @@ bool GpuViewport::rayTracing() const {
 }
 
 std::shared_ptr<const gpu::AccelerationStats> GpuViewport::accelerationStats() const {
-    const gpu::AccelerationStats* stats = impl_->renderer->acceleration_stats();
+    const gpu::AccelerationStats* stats = impl_->renderer->resident().acceleration;
     return stats ? std::make_shared<const gpu::AccelerationStats>(*stats) : nullptr;
 }
 

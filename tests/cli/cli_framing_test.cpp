@@ -25,7 +25,8 @@ struct Fill {
     bool touches_border = false;
 };
 
-// Pixels unlike the background (the corner pixel) bound the object on screen.
+// Pixels unlike the background (the corner pixel: a solid magenta, not the
+// environment, which varies over the image) bound the object on screen.
 Fill measure_fill(const test::ReferenceImage& img) {
     const std::uint8_t* bg = img.texel(0, 0);
     std::uint32_t x0 = img.width, y0 = img.height, x1 = 0, y1 = 0;
@@ -48,9 +49,10 @@ Fill render_fill(const std::string& scene, const std::string& options, std::stri
     const std::string png = (std::filesystem::temp_directory_path() /
                              ("sherpa_framing_" + std::to_string(getpid()) + ".png"))
                                 .string();
-    const test::CliRun r = test::run_cli("render '" + scene + "' -o " + png +
-                                         " --width 192 --height 128 --no-shadows --cache-dir '" +
-                                         SHERPA_TEST_TEXTURE_CACHE + "' " + options);
+    const test::CliRun r =
+        test::run_cli("render '" + scene + "' -o " + png +
+                      " --width 192 --height 128 --no-shadows --background 1,0,1 --cache-dir '" +
+                      SHERPA_TEST_TEXTURE_CACHE + "' " + options);
     EXPECT_EQ(r.exit_code, 0) << r.out;
     if (out) *out = r.out;
     test::ReferenceImage img;

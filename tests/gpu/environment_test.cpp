@@ -249,13 +249,13 @@ TEST_F(EnvironmentTest, BackgroundFollowsTheEquirectangularConventionAndRotation
 
 TEST_F(EnvironmentTest, NoEnvironmentHoldsNothing) {
     renderer().set_environment(nullptr);
-    const gpu::EnvironmentStats none = renderer().environment_stats();
+    const gpu::EnvironmentStats none = renderer().resident().environment;
     EXPECT_FALSE(none.present);
     EXPECT_EQ(none.bytes, 0u);
     EnvironmentGuard guard{renderer()};
     const gpu::EnvironmentImage room = gpu::room_environment(512);
     renderer().set_environment(&room);
-    const gpu::EnvironmentStats made = renderer().environment_stats();
+    const gpu::EnvironmentStats made = renderer().resident().environment;
     EXPECT_TRUE(made.present);
     EXPECT_EQ(made.cube_size, 128u); // a quarter of the width
     EXPECT_GT(made.bytes, 0u);
@@ -276,8 +276,8 @@ TEST_F(EnvironmentTest, BlenderStudioLightsLoadAndLight) {
     }
     const gpu::EnvironmentLoad studio = gpu::load_environment(files.front());
     renderer().set_environment(&studio.image);
-    EXPECT_EQ(renderer().environment_stats().cube_size, 256u);
-    EXPECT_EQ(renderer().environment_stats().specular_levels, 6u);
+    EXPECT_EQ(renderer().resident().environment.cube_size, 256u);
+    EXPECT_EQ(renderer().resident().environment.specular_levels, 6u);
 }
 
 TEST_F(EnvironmentTest, BadFilesWarnAndFallBackToTheRoom) {
@@ -326,7 +326,7 @@ TEST_F(EnvironmentTest, NonFiniteTexelsAreCountedAndReadAsBlack) {
     // The GPU build takes it without a validation message.
     EnvironmentGuard guard{renderer()};
     renderer().set_environment(&load.image);
-    EXPECT_TRUE(renderer().environment_stats().present);
+    EXPECT_TRUE(renderer().resident().environment.present);
 }
 
 } // namespace

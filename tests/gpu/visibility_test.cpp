@@ -151,20 +151,20 @@ TEST_F(Visibility, RayTracedImageAndTlasLeaveTheHiddenNodeOut) {
     gpu::RenderSettings s = settings_;
     s.renderer = gpu::RendererKind::RayTraced;
     const auto shown = render(r, s);
-    ASSERT_NE(r.acceleration_stats(), nullptr);
-    EXPECT_EQ(r.acceleration_stats()->tlas.hidden, 0u);
-    EXPECT_EQ(r.acceleration_stats()->tlas.instances, 2u);
+    ASSERT_NE(r.resident().acceleration, nullptr);
+    EXPECT_EQ(r.resident().acceleration->tlas.hidden, 0u);
+    EXPECT_EQ(r.resident().acceleration->tlas.instances, 2u);
     EXPECT_GT(dark_bright(shown).first, 150u);
 
     s.hidden_nodes = hidden_;
     const auto hidden = render(r, s);
-    EXPECT_EQ(r.acceleration_stats()->tlas.hidden, 1u);
-    EXPECT_EQ(r.acceleration_stats()->tlas.instances, 1u);
+    EXPECT_EQ(r.resident().acceleration->tlas.hidden, 1u);
+    EXPECT_EQ(r.resident().acceleration->tlas.instances, 1u);
     EXPECT_EQ(dark_bright(hidden).first, 0u) << "rays do not see the hidden caster";
 
     s.hidden_nodes = nullptr;
     EXPECT_EQ(render(r, s), shown);
-    EXPECT_EQ(r.acceleration_stats()->tlas.hidden, 0u);
+    EXPECT_EQ(r.resident().acceleration->tlas.hidden, 0u);
 }
 
 TEST_F(Visibility, HiddenSkinnedMeshLeavesPosedFramesOnEveryPathAndTheRays) {
@@ -216,7 +216,7 @@ TEST_F(Visibility, HiddenSkinnedMeshLeavesPosedFramesOnEveryPathAndTheRays) {
     EXPECT_FALSE(only_clear(shown));
     s.hidden_nodes = mask;
     EXPECT_TRUE(only_clear(render(r, s))) << "the posed BLAS is out of the TLAS";
-    EXPECT_GE(r.acceleration_stats()->tlas.hidden, 1u);
+    EXPECT_GE(r.resident().acceleration->tlas.hidden, 1u);
     s.hidden_nodes = nullptr;
     EXPECT_EQ(render(r, s), shown) << "shown again in the same pose";
 }

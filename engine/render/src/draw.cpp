@@ -56,6 +56,11 @@ bool set_group_state(FrameContext& f, const DrawPipeline& pipeline, const DrawGr
     vkCmdSetCullMode(f.cmd, g.double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
     vkCmdSetFrontFace(f.cmd,
                       g.mirrored ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE);
+    // The depth prepass draws triangles only: after it, opaque lines and points write
+    // their own depth, or the background (depth EQUAL to the far plane) and blended
+    // surfaces would be drawn over them.
+    if (f.prepass && pipeline.fixed == PipelineId::Count && !pipeline.blend)
+        vkCmdSetDepthWriteEnable(f.cmd, is_triangle_mesh(mesh.flags) ? VK_FALSE : VK_TRUE);
     set_mesh(pc, mesh, g.material);
     return true;
 }

@@ -1,9 +1,9 @@
 // Environment images on the CPU: the built-in room, a uniform environment, HDR/EXR
-// files through OpenImageIO with every failure a warning and a fallback, and the
-// names of the environment settings.
+// files through the texture layer (OpenImageIO, loaded on first use) with every failure a warning
+// and a fallback, and the names of the environment settings.
 #include <sherpa/render/environment.h>
 
-#include <OpenImageIO/imageio.h>
+#include <sherpa/texture/image.h>
 
 #include <algorithm>
 #include <charconv>
@@ -99,40 +99,28 @@ EnvironmentImage uniform_environment(glm::vec3 radiance, std::uint32_t width) {
 }
 
 EnvironmentLoad load_environment(const std::string& path) {
-    OIIO::ImageSpec config;
-    // Radiance maps carry no coverage: an alpha channel must not scale the colour.
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    auto in = OIIO::ImageInput::open(path, &config);
-    if (!in) {
-        const std::string why = OIIO::geterror();
-        return fall_back(path, "cannot read the environment image (" +
-                                   (why.empty() ? std::string("unknown error") : why) + ")");
+    // Radiance maps carry no coverage: an alpha channel must not scale the colour
+    // (read_float_image_file reads unassociated, RGB only).
+    tex::FloatRgbImage file;
+    std::string why;
+    if (!tex::read_float_image_file(path, kMaxEnvironmentSide, file, why)) {
+        if (why.rfind(path + ": ", 0) == 0) why.erase(0, path.size() + 2); // said once
+        return fall_back(path, "cannot read the environment image (" + why + ")");
     }
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
-        return fall_back(path, "the environment image has no texels (" +
-                                   std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-                                   ")");
-    if (spec.width > int(kMaxEnvironmentSide) || spec.height > int(kMaxEnvironmentSide))
-        return fall_back(path, "the environment image is " + std::to_string(spec.width) + "x" +
-                                   std::to_string(spec.height) + ", over the limit of " +
-                                   std::to_string(kMaxEnvironmentSide) + " texels a side");
-    const int channels = std::min(spec.nchannels, 4);
+    constexpr int channels = 3;
+    const std::vector<float>& raw = file.rgb;
     EnvironmentLoad out;
     EnvironmentImage& img = out.image;
-    img.width = std::uint32_t(spec.width);
-    img.height = std::uint32_t(spec.height);
+    img.width = file.width;
+    img.height = file.height;
     img.name = std::filesystem::path(path).filename().string();
-    std::vector<float> raw(std::size_t{img.width} * img.height * channels);
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, raw.data()))
-        return fall_back(path, "cannot decode the environment image (" + in->geterror() + ")");
     img.rgba.resize(std::size_t{img.width} * img.height * 4);
     std::uint64_t nonfinite = 0, clamped = 0;
     for (std::size_t i = 0, n = std::size_t{img.width} * img.height; i < n; ++i) {
         const float* s = &raw[i * channels];
         float* d = &img.rgba[i * 4];
         for (int c = 0; c < 3; ++c) {
-            float v = channels >= 3 ? s[c] : s[0];
+            float v = s[c];
             if (!std::isfinite(v)) {
                 ++nonfinite;
                 v = 0.0f;

@@ -425,12 +425,13 @@ Context& Renderer::context() {
     return impl_->context;
 }
 
-const AccelerationStats* Renderer::acceleration_stats() const {
-    return impl_->acceleration && impl_->scene ? &impl_->acceleration->stats() : nullptr;
-}
-
-std::uint64_t Renderer::render_target_bytes() const {
-    return impl_->render_target_bytes();
+ResidentStats Renderer::resident() const {
+    ResidentStats out;
+    out.acceleration =
+        impl_->acceleration && impl_->scene ? &impl_->acceleration->stats() : nullptr;
+    out.environment = impl_->environment ? impl_->environment->stats() : EnvironmentStats{};
+    out.render_target_bytes = impl_->render_target_bytes();
+    return out;
 }
 
 } // namespace sherpa::gpu

@@ -17,8 +17,4 @@ void Renderer::set_environment(const EnvironmentImage* image) {
     impl_->set_environment(image);
 }
 
-EnvironmentStats Renderer::environment_stats() const {
-    return impl_->environment ? impl_->environment->stats() : EnvironmentStats{};
-}
-
 } // namespace sherpa::gpu

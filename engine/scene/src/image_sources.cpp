@@ -48,6 +48,19 @@ bool image_is_missing(const ImageRecord& image) {
     return image.encoded.empty() && image.pixels.empty();
 }
 
+std::string image_missing_reason(const Scene& scene, const ImageRecord& image) {
+    const std::filesystem::path path = image_file_path(scene, image);
+    if (!image_is_missing(image) || path.empty()) return {};
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (status.type() == std::filesystem::file_type::not_found) return "not found";
+    if (ec) return "cannot be read: " + ec.message();
+    if (std::filesystem::is_directory(status)) return "is a directory, not a file";
+    if (!std::filesystem::is_regular_file(status)) return "is not a regular file";
+    if (std::filesystem::file_size(path, ec) == 0 && !ec) return "is empty";
+    return "cannot be read";
+}
+
 std::vector<std::string> image_slot_uses(const Scene& scene, std::int32_t image) {
     std::vector<std::string> uses;
     for (std::size_t m = 0; m < scene.materials.size(); ++m) {

@@ -205,6 +205,8 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
             t.state = CacheState::Missing;
             t.failed = true;
             t.note = "missing: " + t.location;
+            if (const std::string why = image_missing_reason(scene, img); !why.empty())
+                t.note += " (" + why + ")";
             add_once(set.warnings, failure_warning(t, {}));
             set.textures.push_back(std::move(t));
             continue;

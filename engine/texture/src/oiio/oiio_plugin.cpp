@@ -108,6 +108,42 @@ bool read_file(const std::filesystem::path& path, SizeCheck check, RgbaImage& ou
     return ok;
 }
 
+bool read_float_file(const std::filesystem::path& path, SizeCheck check, FloatRgbImage& out,
+                     std::string& error) {
+    const OIIO::ImageSpec config = unassociated_alpha_config();
+    auto in = OIIO::ImageInput::open(path.string(), &config);
+    if (!in) {
+        error = path.string() + ": cannot open: " + OIIO::geterror();
+        return false;
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
+        error = path.string() + ": the image has no texels (" + std::to_string(spec.width) + "x" +
+                std::to_string(spec.height) + ")";
+        return false;
+    }
+    if (!check(std::uint32_t(spec.width), std::uint32_t(spec.height), path.string(), error))
+        return false;
+    const int channels = std::min(spec.nchannels, 3);
+    const std::size_t texels = std::size_t(spec.width) * std::size_t(spec.height);
+    std::vector<float> raw(texels * std::size_t(channels));
+    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, raw.data())) {
+        error = path.string() + ": cannot decode: " + in->geterror();
+        return false;
+    }
+    in->close();
+    out.width = std::uint32_t(spec.width);
+    out.height = std::uint32_t(spec.height);
+    if (channels == 3) {
+        out.rgb = std::move(raw);
+        return true;
+    }
+    out.rgb.resize(texels * 3);
+    for (std::size_t i = 0; i < texels; ++i)
+        out.rgb[i * 3] = out.rgb[i * 3 + 1] = out.rgb[i * 3 + 2] = raw[i * std::size_t(channels)];
+    return true;
+}
+
 bool write_file(const std::filesystem::path& path, const RgbaImage& image, std::string& error) {
     auto outfile = OIIO::ImageOutput::create(path.string());
     if (!outfile) {
@@ -127,7 +163,7 @@ bool write_file(const std::filesystem::path& path, const RgbaImage& image, std::
     return true;
 }
 
-const PluginApi kApi{kPluginAbi, decode, probe, read_file, write_file};
+const PluginApi kApi{kPluginAbi, decode, probe, read_file, read_float_file, write_file};
 
 } // namespace
 } // namespace sherpa::tex::oiio

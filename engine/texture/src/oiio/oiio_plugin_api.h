@@ -18,7 +18,7 @@
 
 namespace sherpa::tex::oiio {
 
-inline constexpr std::uint32_t kPluginAbi = 1;
+inline constexpr std::uint32_t kPluginAbi = 2;
 
 // Called with the header's size before the pixels are allocated: false (with `error`
 // set) refuses the image. The engine's limit lives on the engine's side.
@@ -35,6 +35,9 @@ struct PluginApi {
                   std::string& error, std::uint32_t& width, std::uint32_t& height) = nullptr;
     bool (*read_file)(const std::filesystem::path& path, SizeCheck check, RgbaImage& out,
                       std::string& error) = nullptr;
+    // As read_float_image_file(): float RGB, `check` before the pixels are allocated.
+    bool (*read_float_file)(const std::filesystem::path& path, SizeCheck check, FloatRgbImage& out,
+                            std::string& error) = nullptr;
     // Format from the extension; pixels stored unassociated.
     bool (*write_file)(const std::filesystem::path& path, const RgbaImage& image,
                        std::string& error) = nullptr;

@@ -36,11 +36,11 @@ EnvironmentImage room_environment(std::uint32_t width = 1024);
 // The same radiance from every direction (the furnace test's environment).
 EnvironmentImage uniform_environment(glm::vec3 radiance, std::uint32_t width = 64);
 
-// An equirectangular .hdr or .exr (anything OpenImageIO reads), alpha not
-// premultiplied. On any problem the warnings name the file and what is wrong:
-// unreadable or corrupt files and 0-size images fall back to the room (`fallback`
-// true); NaN and infinite texels are read as 0 (black) and counted; radiance above
-// the half-float range is clamped to it (the GPU keeps it in half floats).
+// An equirectangular .hdr or .exr (anything OpenImageIO reads, through the texture layer's plugin),
+// alpha not premultiplied. On any problem the warnings name the file and what is wrong: unreadable
+// or corrupt files and 0-size images fall back to the room (`fallback` true); NaN and infinite
+// texels are read as 0 (black) and counted; radiance above the half-float range is clamped to it
+// (the GPU keeps it in half floats).
 struct EnvironmentLoad {
     EnvironmentImage image;
     std::vector<std::string> warnings;

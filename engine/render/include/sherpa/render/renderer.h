@@ -72,6 +72,17 @@ struct CullFrame {
     bool shadows_rendered = false;
 };
 
+// What a renderer holds between frames (Renderer::resident()).
+struct ResidentStats {
+    // The loaded scene's acceleration structures (BLAS/TLAS statistics); null without
+    // RendererOptions::ray_tracing or a scene. Valid until the next load or unload.
+    const AccelerationStats* acceleration = nullptr;
+    // The environment: sizes, GPU bytes, build time (present false: none).
+    EnvironmentStats environment;
+    // Bytes of the renderer's own images (offscreen target, depth, shadow map).
+    std::uint64_t render_target_bytes = 0;
+};
+
 struct RendererOptions {
     std::uint32_t shadow_resolution = kDefaultShadowResolution;
     // How load(scene) prepares textures; default: no disk cache, BC where supported.
@@ -105,17 +116,14 @@ public:
     void set_texture_settings(const TextureSettings& settings);
     void unload();
     const GpuScene* scene() const;
-    // The loaded scene's acceleration structures (BLAS/TLAS statistics); null without
-    // RendererOptions::ray_tracing or a scene.
-    const AccelerationStats* acceleration_stats() const;
+    // What the renderer holds now: acceleration structures, environment, targets.
+    ResidentStats resident() const;
 
     // The environment that lights lit frames (image-based lighting, environment.h): made
     // on the GPU from `image` (prefiltered cubes and lookup tables), replacing the one
     // before; null removes it (no GPU bytes, no passes: lit frames use the ambient term).
     // Waits for the frames in flight. Throws GpuError for an invalid image.
     void set_environment(const EnvironmentImage* image);
-    // What is loaded: sizes, GPU bytes, build time (present false: none).
-    EnvironmentStats environment_stats() const;
 
     // Renders one frame offscreen and waits for it. With `rgba` set, reads the
     // image back as tightly packed sRGB-encoded RGBA8 rows, top row first.
@@ -127,8 +135,6 @@ public:
 
     ResourceManager& resources();
     Context& context();
-    // Bytes of the renderer's own images (offscreen target, depth, shadow map).
-    std::uint64_t render_target_bytes() const;
 
     class Impl; // renderer_impl.h
 

@@ -18,6 +18,11 @@ std::filesystem::path image_file_path(const Scene& scene, const ImageRecord& ima
 // keeps the URI and leaves the bytes empty) or its bufferView was empty.
 bool image_is_missing(const ImageRecord& image);
 
+// Why a missing image's file gave no bytes, in words, as the filesystem says now: "not
+// found", "is a directory, not a file", "is empty", ...; empty when the image is not
+// missing or has no file (a bufferView or data URI).
+std::string image_missing_reason(const Scene& scene, const ImageRecord& image);
+
 // "material 'NAME' baseColorTexture, emissiveTexture" for every material that reads
 // image `image` (through any texture), in material order. Materials without a name
 // are named by index: "material 3".

@@ -36,6 +36,19 @@ bool probe_encoded_image(std::span<const std::uint8_t> bytes, std::string_view n
                          std::uint32_t* height = nullptr);
 bool read_image_file(const std::filesystem::path& path, RgbaImage& out, std::string& error);
 
+// A high-dynamic-range image: linear float RGB, rows top to bottom.
+struct FloatRgbImage {
+    std::uint32_t width = 0, height = 0;
+    std::vector<float> rgb; // width * height * 3 floats
+};
+
+// Reads an HDR/EXR (any format OpenImageIO reads) as float RGB, unassociated (an alpha
+// channel does not scale the colour; grey is replicated). Refuses, before allocating,
+// an image with no texels or over `max_side` texels a side. The file's values are
+// kept as they are (NaN, negative, huge): the caller decides what they mean.
+bool read_float_image_file(const std::filesystem::path& path, std::uint32_t max_side,
+                           FloatRgbImage& out, std::string& error);
+
 // Writes an RGBA8 image with OpenImageIO (format from the extension).
 bool write_image_file(const std::filesystem::path& path, const RgbaImage& image,
                       std::string& error);

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Writes the oversized-input reproducers: images whose headers declare far more
-texels than their bytes hold (decompression bombs), a meshopt file whose fallback
-buffer declares 1.8 GB, and Draco streams whose headers declare millions of triangles
-their bytes do not hold. tests/texture/texel_budget_test.cpp,
+texels than their bytes hold (decompression bombs), a PNG whose text chunks inflate
+to 126 MB, a meshopt file whose fallback buffer declares 1.8 GB, and Draco streams
+whose headers declare millions of triangles their bytes do not hold.
+tests/texture/texel_budget_test.cpp,
 tests/scene/oversized_input_test.cpp and tests/cli/memory_limit_test.sh read them.
 Run from this directory:
     python3 make_oversized.py
@@ -78,6 +79,12 @@ write_bytes("bomb_65500.jpg", jpeg(65500, 65500))
 write_bytes("bomb_16384.webp", webp_lossless(16384, 16384))
 write_bytes("bomb_uastc_zstd.ktx2", ktx2_uastc_zstd(16384))
 write_bytes("good_2x2.png", png(2, 2, (b"\0" + b"\x80\x40\x20\xff" * 2) * 2))
+# A 2x2 PNG carrying 16 zTXt chunks of 7.7 KB, each inflating to 7.9 MB of text (just
+# under libpng's default 8,000,000-byte chunk limit). libpng inflates and keeps every
+# text chunk while it reads the header: 126 MB for 123 KB, unbounded in the count.
+ztxt = png_chunk(b"zTXt", b"bomb\0\0" + zlib.compress(b"a" * 7_900_000, 9))
+good = png(2, 2, (b"\0" + b"\x80\x40\x20\xff" * 2) * 2)
+write_bytes("ztxt_bomb.png", good[:33] + ztxt * 16 + good[33:])
 
 # A quad whose material reads each bomb in one slot, and a good image in another.
 positions = struct.pack("<12f", 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0)

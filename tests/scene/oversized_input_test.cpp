@@ -6,15 +6,12 @@
 // Reproducers: tests/data/make_oversized.py. The same files under a 2 GB address-space
 // limit through sherpa-cli: tests/cli/memory_limit_test.sh.
 #include "load_error_check.h"
+#include "peak_rss.h"
 #include "test_support.h"
 
 #include <sherpa/scene/scene_loader.h>
 
 #include <gtest/gtest.h>
-
-#include <cstring>
-#include <fstream>
-#include <functional>
 
 #include <unistd.h>
 
@@ -138,22 +135,6 @@ TEST(OversizedMeshopt, AccessorPastTheDecodedBytesIsRefused) {
         "past the end of bufferViews[0]");
 }
 
-// The growth of this process's peak resident memory while `run` runs, in KiB: the
-// kernel's high-water mark (VmHWM), reset through /proc/self/clear_refs first.
-// Negative when the mark cannot be reset (no such file).
-long peak_rss_growth_kib(const std::function<void()>& run) {
-    auto status = [](const char* key) {
-        std::ifstream in("/proc/self/status");
-        for (std::string line; std::getline(in, line);)
-            if (line.rfind(key, 0) == 0) return std::stol(line.substr(std::strlen(key)));
-        return -1L;
-    };
-    if (!(std::ofstream("/proc/self/clear_refs") << "5" << std::flush)) return -1;
-    const long before = status("VmRSS:");
-    run();
-    return status("VmHWM:") - before;
-}
-
 #define DRACO_STREAM "meshes[0].primitives[0].KHR_draco_mesh_compression: the Draco stream "
 
 // Box's 130-byte Edgebreaker stream declaring 2^28 triangles and symbols (Draco checks
@@ -172,7 +153,7 @@ TEST(OversizedDraco, TrianglesPastTheIndicesAreRefusedBeforeDecoding) {
 // info) before finding that 136 bytes hold no such traversal; now nothing is decoded.
 TEST(OversizedDraco, TrianglesOverTheLimitAreRefusedWithoutAllocating) {
     const std::string path = (test::data_dir() / "draco_faces_20m.gltf").string();
-    const long growth = peak_rss_growth_kib([&] {
+    const long growth = test::peak_rss_growth_kib([&] {
         test::expect_clear_load_error(path, DRACO_STREAM "(bufferViews[0], 136 bytes) declares "
                                             "20000000 triangles; Sherpa decodes at most "
                                             "16777216 triangles per Draco primitive");

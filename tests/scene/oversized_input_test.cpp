@@ -171,4 +171,20 @@ TEST(OversizedDraco, MoreAttributeConnectivitiesThanAttributesAreRefused) {
                      "attributes");
 }
 
+// Every importer reproducer the fuzzer saved (tests/fuzz/findings, README there: out-of-
+// bounds reads, an exception escaping tinygltf, tinygltf's stack overflow) loads or
+// fails with a message; under the sanitizer build (build-asan) with no report.
+TEST(FuzzFindings, ImporterReproducersLoadOrFailWithAReason) {
+    int replayed = 0;
+    for (const auto& dir : std::filesystem::directory_iterator(test::data_dir() / "../fuzz/findings"))
+        for (const char* name : {"__case.gltf", "__case.glb"}) {
+            const auto file = dir.path() / name;
+            if (!std::filesystem::exists(file)) continue;
+            const sherpa::LoadResult r = sherpa::load_scene(file.string());
+            EXPECT_TRUE(r || !r.error.empty()) << file;
+            ++replayed;
+        }
+    EXPECT_GE(replayed, 6);
+}
+
 } // namespace

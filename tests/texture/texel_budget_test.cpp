@@ -118,6 +118,30 @@ TEST(ImageBombs, PngTextChunksAreSkippedNotInflated) {
     EXPECT_LT(growth, 16 * 1024) << "peak RSS grew by " << growth << " KiB";
 }
 
+// The image target's reproducers (tests/fuzz/findings/image-*: a PNG that made libpng
+// allocate 2.1 GB under OpenImageIO, a JPEG whose damaged IPTC segment OpenImageIO read
+// past) probe and decode, or fail with a reason, through the engine's image path; under
+// the sanitizer build with no report.
+TEST(ImageBombs, FuzzFindingsDecodeOrFailWithAReason) {
+    const auto findings = data("../fuzz/findings");
+    int replayed = 0;
+    for (const auto& dir : std::filesystem::directory_iterator(findings))
+        for (const auto& file : std::filesystem::directory_iterator(dir.path())) {
+            const std::string name = file.path().filename().string();
+            if (dir.path().filename().string().rfind("image-", 0) != 0 || name == "finding.txt")
+                continue;
+            const auto bytes = bytes_of(file.path().string()); // absolute: data() keeps it
+            std::string probe_error, decode_error;
+            const bool probed = probe_encoded_image(bytes, name, probe_error);
+            EXPECT_TRUE(probed || !probe_error.empty()) << file.path();
+            RgbaImage image;
+            const bool decoded = decode_encoded_image(bytes, name, image, decode_error);
+            EXPECT_TRUE(decoded || !decode_error.empty()) << file.path();
+            ++replayed;
+        }
+    EXPECT_GE(replayed, 2);
+}
+
 TEST(ImageBombs, SupercompressedKtx2IsRefusedBeforeInflating) {
     const std::vector<std::uint8_t> ktx2 = bytes_of("bomb_uastc_zstd.ktx2");
     ASSERT_GT(ktx2.size(), 8000u);

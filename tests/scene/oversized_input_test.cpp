@@ -154,9 +154,10 @@ TEST(OversizedDraco, TrianglesPastTheIndicesAreRefusedBeforeDecoding) {
 TEST(OversizedDraco, TrianglesOverTheLimitAreRefusedWithoutAllocating) {
     const std::string path = (test::data_dir() / "draco_faces_20m.gltf").string();
     const long growth = test::peak_rss_growth_kib([&] {
-        test::expect_clear_load_error(path, DRACO_STREAM "(bufferViews[0], 136 bytes) declares "
-                                            "20000000 triangles; Sherpa decodes at most "
-                                            "16777216 triangles per Draco primitive");
+        test::expect_clear_load_error(path,
+                                      DRACO_STREAM "(bufferViews[0], 136 bytes) declares "
+                                                   "20000000 triangles; Sherpa decodes at most "
+                                                   "16777216 triangles per Draco primitive");
     });
     if (growth < 0) GTEST_SKIP() << "no /proc/self/clear_refs: peak RSS not measured";
     EXPECT_LT(growth, 32 * 1024) << "peak RSS grew by " << growth << " KiB";
@@ -176,7 +177,8 @@ TEST(OversizedDraco, MoreAttributeConnectivitiesThanAttributesAreRefused) {
 // fails with a message; under the sanitizer build (build-asan) with no report.
 TEST(FuzzFindings, ImporterReproducersLoadOrFailWithAReason) {
     int replayed = 0;
-    for (const auto& dir : std::filesystem::directory_iterator(test::data_dir() / "../fuzz/findings"))
+    for (const auto& dir :
+         std::filesystem::directory_iterator(test::data_dir() / "../fuzz/findings"))
         for (const char* name : {"__case.gltf", "__case.glb"}) {
             const auto file = dir.path() / name;
             if (!std::filesystem::exists(file)) continue;

@@ -178,8 +178,9 @@ std::size_t largest_attribute_count(const tinygltf::Model& model, const tinygltf
 
 // The stream's declared counts, read before Draco sees the stream and bounded by what
 // the glTF declares for the primitive (its attribute and index accessor counts, its
-// mapped attributes: `ext` has an "attributes" object) and by the documented limits. Draco sizes its tables by these counts before it reads the
-// data behind them; a stream over a bound is refused here, unallocated.
+// mapped attributes: `ext` has an "attributes" object) and by the documented limits.
+// Draco sizes its tables by these counts before it reads the data behind them; a
+// stream over a bound is refused here, unallocated.
 DracoCounts check_declared_counts(const tinygltf::Model& model, const tinygltf::Primitive& prim,
                                   const tinygltf::Value& ext, std::span<const std::uint8_t> stream,
                                   int view, const std::string& where) {

@@ -2,8 +2,9 @@
 # Oversized input under a 2 GB address-space limit (ulimit -v 2000000): images whose
 # headers declare 30000x30000, 65500x65500 and 16384x16384 texels (a 68-byte PNG, a
 # 112-byte JPEG, a 42-byte WebP, an 8 KB UASTC KTX2 whose Zstandard level inflates to
-# 256 MiB) and a meshopt view whose fallback buffer declares 1.8 GB
-# (tests/data/make_oversized.py). Every command that decodes them must finish
+# 256 MiB), a meshopt view whose fallback buffer declares 1.8 GB, and Draco streams of
+# 136-138 bytes whose headers declare 2^28 triangles (for 36 indices) or 20M (for as
+# many indices) (tests/data/make_oversized.py). Every command that decodes them must finish
 # normally (no signal, no std::bad_alloc abort, no "out of memory"), name each bomb
 # with its declared size, and still show what can be shown.
 # usage: memory_limit_test.sh SHERPA_CLI DATA_DIR WORK_DIR
@@ -77,6 +78,14 @@ expect_bombs render
 # 1.84 GB of RSS before: now the 36 bytes the stream decodes.
 run meshopt 0 info "$data/meshopt_fallback_1800mb.gltf" --json
 expect meshopt '"vertices": 3'
+
+# Draco 1.5.5 sized its corner table by these counts (6 GB for 2^28 triangles) and
+# the load failed "out of memory while importing": now each is refused before Draco
+# sees it, naming the primitive and the count.
+run draco_faces 1 info "$data/draco_faces_268m.gltf"
+expect draco_faces "KHR_draco_mesh_compression: the Draco stream (bufferViews[0], 138 bytes) declares 268435456 triangles"
+run draco_limit 1 info "$data/draco_faces_20m.gltf" --json
+expect draco_limit "Sherpa decodes at most 16777216 triangles per Draco primitive"
 
 if [ "$failures" -ne 0 ]; then
     echo "$failures failure(s); outputs in $work"

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Writes the oversized-input reproducers: images whose headers declare far more
-texels than their bytes hold (decompression bombs), and a meshopt file whose fallback
-buffer declares 1.8 GB. tests/texture/texel_budget_test.cpp,
+texels than their bytes hold (decompression bombs), a PNG whose text chunks inflate
+to 126 MB, a meshopt file whose fallback buffer declares 1.8 GB, and Draco streams
+whose headers declare millions of triangles their bytes do not hold.
+tests/texture/texel_budget_test.cpp,
 tests/scene/oversized_input_test.cpp and tests/cli/memory_limit_test.sh read them.
 Run from this directory:
     python3 make_oversized.py
@@ -77,6 +79,12 @@ write_bytes("bomb_65500.jpg", jpeg(65500, 65500))
 write_bytes("bomb_16384.webp", webp_lossless(16384, 16384))
 write_bytes("bomb_uastc_zstd.ktx2", ktx2_uastc_zstd(16384))
 write_bytes("good_2x2.png", png(2, 2, (b"\0" + b"\x80\x40\x20\xff" * 2) * 2))
+# A 2x2 PNG carrying 16 zTXt chunks of 7.7 KB, each inflating to 7.9 MB of text (just
+# under libpng's default 8,000,000-byte chunk limit). libpng inflates and keeps every
+# text chunk while it reads the header: 126 MB for 123 KB, unbounded in the count.
+ztxt = png_chunk(b"zTXt", b"bomb\0\0" + zlib.compress(b"a" * 7_900_000, 9))
+good = png(2, 2, (b"\0" + b"\x80\x40\x20\xff" * 2) * 2)
+write_bytes("ztxt_bomb.png", good[:33] + ztxt * 16 + good[33:])
 
 # A quad whose material reads each bomb in one slot, and a good image in another.
 positions = struct.pack("<12f", 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0)
@@ -132,3 +140,66 @@ write_json("meshopt_fallback_1800mb.gltf", {
     "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
                    "min": [0, 0, 0], "max": [0, 0, 0]}],
 })
+
+# --- Draco streams whose headers declare what their bytes do not hold ---------------
+# Box's Edgebreaker stream (130 bytes, gltf-transform's seed in compressed_seeds/, see
+# tools/gltf_compress) with counts of its connectivity header rewritten. Draco 1.5.5
+# checks them against each other (vertices <= 3 x faces, faces <= 4/3 x symbols,
+# splits <= symbols) but not against the bytes behind the symbols, and sizes its
+# corner table (24 bytes a face, filled) by the faces before it reads one symbol.
+def glb_stream(name):
+    """The first Draco primitive's stream of a GLB."""
+    with open(name, "rb") as f:
+        b = f.read()
+    length = struct.unpack_from("<I", b, 12)[0]
+    doc = json.loads(b[20:20 + length])
+    binary = b[20 + length + 8:]
+    prim = doc["meshes"][0]["primitives"][0]
+    view = doc["bufferViews"][prim["extensions"]["KHR_draco_mesh_compression"]["bufferView"]]
+    start = view.get("byteOffset", 0)
+    return binary[start:start + view["byteLength"]]
+
+def varint(v):
+    out = b""
+    while True:
+        out += bytes([(v & 0x7F) | (0x80 if v > 0x7F else 0)])
+        v >>= 7
+        if not v:
+            return out
+
+def draco_gltf(name, stream, points, indices):
+    """Box's primitive (NORMAL, POSITION, indices) over `stream`, with the accessor counts
+    given."""
+    write_json(name, {
+        "asset": {"version": "2.0", "generator": "sherpa tests/data/make_oversized.py"},
+        "extensionsUsed": ["KHR_draco_mesh_compression"],
+        "extensionsRequired": ["KHR_draco_mesh_compression"],
+        "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{
+            "attributes": {"NORMAL": 0, "POSITION": 1}, "indices": 2, "mode": 4,
+            "extensions": {"KHR_draco_mesh_compression": {
+                "bufferView": 0, "attributes": {"NORMAL": 0, "POSITION": 1}}}}]}],
+        "buffers": [{"uri": data_uri(stream), "byteLength": len(stream)}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": len(stream)}],
+        "accessors": [{"componentType": 5126, "count": points, "type": "VEC3"},
+                      {"componentType": 5126, "count": points, "type": "VEC3",
+                       "min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5]},
+                      {"componentType": 5125, "count": indices, "type": "SCALAR"}],
+    })
+
+# After the 11-byte header: traversal 0, 8 vertices, 12 faces, 1 attribute connectivity,
+# 11 symbols, 0 split symbols (varints), then the traversal.
+box = glb_stream("compressed_seeds/Box.draco.glb")
+assert box[11:17] == b"\x00\x08\x0c\x01\x0b\x00"
+
+def edgebreaker(faces, attribute_data=1):
+    """Box's stream declaring `faces` triangles and as many symbols."""
+    return (box[:12] + varint(8) + varint(faces) + bytes([attribute_data]) + varint(faces) +
+            box[16:])
+
+# 2^28 triangles for an indices accessor of 36: a 6 GB corner table.
+draco_gltf("draco_faces_268m.gltf", edgebreaker(1 << 28), 24, 36)
+# 20M triangles whose accessors agree, over the documented limit of 2^24: 470 MB.
+draco_gltf("draco_faces_20m.gltf", edgebreaker(20_000_000), 24, 60_000_000)
+# 255 attribute connectivities (one corner table each) for a primitive of two attributes.
+draco_gltf("draco_attribute_data_255.gltf", edgebreaker(12, 255), 24, 36)

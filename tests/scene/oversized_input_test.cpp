@@ -2,9 +2,11 @@
 // would wrap: extension properties (meshopt streams, Draco ids, texture image
 // extensions, material textureInfo) are checked in the raw JSON like the core ones,
 // and a meshopt view allocates what its stream decodes, not what its fallback buffer
-// declares. Reproducers: tests/data/make_oversized.py. The same files under a 2 GB
-// address-space limit through sherpa-cli: tests/cli/memory_limit_test.sh.
+// declares, and a Draco stream's counts are bounded before Draco allocates by them.
+// Reproducers: tests/data/make_oversized.py. The same files under a 2 GB address-space
+// limit through sherpa-cli: tests/cli/memory_limit_test.sh.
 #include "load_error_check.h"
+#include "peak_rss.h"
 #include "test_support.h"
 
 #include <sherpa/scene/scene_loader.h>
@@ -137,6 +139,60 @@ TEST(OversizedMeshopt, AccessorPastTheDecodedBytesSkipsItsPrimitiveByName) {
     EXPECT_NE(r.scene->primitives[0].skipped_reason.find("past the end of bufferViews[0]"),
               std::string::npos)
         << r.scene->primitives[0].skipped_reason;
+}
+
+#define DRACO_STREAM "meshes[0].primitives[0].KHR_draco_mesh_compression: the Draco stream "
+
+// Box's 130-byte Edgebreaker stream declaring 2^28 triangles and symbols (Draco checks
+// the counts against each other, not against the bytes behind the symbols): Draco
+// 1.5.5 sized its corner table by them (6 GB) before it read one symbol, and under a
+// memory limit the load failed "out of memory while importing".
+TEST(OversizedDraco, TrianglesPastTheIndicesAreRefusedBeforeDecoding) {
+    test::expect_clear_load_error(
+        (test::data_dir() / "draco_faces_268m.gltf").string(),
+        DRACO_STREAM "(bufferViews[0], 138 bytes) declares 268435456 triangles (805306368 "
+                     "indices), more than the indices accessor's count 36");
+}
+
+// 20M triangles whose indices accessor agrees, over the documented limit. Draco
+// allocated and filled its corner table (470 MB of RSS, 596 MB peak for sherpa-cli
+// info) before finding that 136 bytes hold no such traversal; now nothing is decoded.
+TEST(OversizedDraco, TrianglesOverTheLimitAreRefusedWithoutAllocating) {
+    const std::string path = (test::data_dir() / "draco_faces_20m.gltf").string();
+    const long growth = test::peak_rss_growth_kib([&] {
+        test::expect_clear_load_error(path,
+                                      DRACO_STREAM "(bufferViews[0], 136 bytes) declares "
+                                                   "20000000 triangles; Sherpa decodes at most "
+                                                   "16777216 triangles per Draco primitive");
+    });
+    if (growth < 0) GTEST_SKIP() << "no /proc/self/clear_refs: peak RSS not measured";
+    EXPECT_LT(growth, 32 * 1024) << "peak RSS grew by " << growth << " KiB";
+}
+
+// One attribute connectivity (a corner table each, once the traversal decodes) per
+// attribute at most: 255 for a primitive of two attributes is refused.
+TEST(OversizedDraco, MoreAttributeConnectivitiesThanAttributesAreRefused) {
+    test::expect_clear_load_error(
+        (test::data_dir() / "draco_attribute_data_255.gltf").string(),
+        DRACO_STREAM "(bufferViews[0], 130 bytes) declares 255 attribute connectivities for 2 "
+                     "attributes");
+}
+
+// Every importer reproducer the fuzzer saved (tests/fuzz/findings, README there: out-of-
+// bounds reads, an exception escaping tinygltf, tinygltf's stack overflow) loads or
+// fails with a message; under the sanitizer build (build-asan) with no report.
+TEST(FuzzFindings, ImporterReproducersLoadOrFailWithAReason) {
+    int replayed = 0;
+    for (const auto& dir :
+         std::filesystem::directory_iterator(test::data_dir() / "../fuzz/findings"))
+        for (const char* name : {"__case.gltf", "__case.glb"}) {
+            const auto file = dir.path() / name;
+            if (!std::filesystem::exists(file)) continue;
+            const sherpa::LoadResult r = sherpa::load_scene(file.string());
+            EXPECT_TRUE(r || !r.error.empty()) << file;
+            ++replayed;
+        }
+    EXPECT_GE(replayed, 6);
 }
 
 } // namespace

@@ -4,6 +4,8 @@
 // and the limit; the texture pipeline marks it undecodable and prepares the rest.
 // The same files under a 2 GB address-space limit, through sherpa-cli:
 // tests/cli/memory_limit_test.sh.
+#include "peak_rss.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -98,6 +100,49 @@ TEST(ImageBombs, DecodeAndProbeRefuseThemFromTheHeader) {
 
 // A 8 KB UASTC KTX2 whose Zstandard level inflates to 256 MiB (16384x16384): refused
 // by its header before the level is inflated; probing reads the header only.
+// 123 KB of PNG whose 16 zTXt chunks inflate to 7.9 MB each: libpng inflated and kept
+// every one while it read the header (126 MB of RSS for a 2x2 image; 64 chunks took
+// sherpa-cli info to 635 MB and 26 s). The decoder reads no text: skipped unbuffered.
+TEST(ImageBombs, PngTextChunksAreSkippedNotInflated) {
+    const auto bytes = bytes_of("ztxt_bomb.png");
+    RgbaImage image;
+    std::string error;
+    const long growth = sherpa::test::peak_rss_growth_kib([&] {
+        ASSERT_TRUE(probe_encoded_image(bytes, "ztxt_bomb.png", error)) << error;
+        ASSERT_TRUE(decode_encoded_image(bytes, "ztxt_bomb.png", image, error)) << error;
+    });
+    EXPECT_EQ(image.width, 2u);
+    EXPECT_EQ(image.height, 2u);
+    EXPECT_EQ(image.pixels[0], 0x80);
+    if (growth < 0) GTEST_SKIP() << "no /proc/self/clear_refs: peak RSS not measured";
+    EXPECT_LT(growth, 16 * 1024) << "peak RSS grew by " << growth << " KiB";
+}
+
+// The image target's reproducers (tests/fuzz/findings/image-*: a PNG that made libpng
+// allocate 2.1 GB under OpenImageIO, a JPEG whose damaged IPTC segment OpenImageIO read
+// past) probe and decode, or fail with a reason, through the engine's image path; under
+// the sanitizer build with no report.
+TEST(ImageBombs, FuzzFindingsDecodeOrFailWithAReason) {
+    const auto findings = data("../fuzz/findings");
+    int replayed = 0;
+    for (const auto& dir : std::filesystem::directory_iterator(findings)) {
+        if (dir.path().filename().string().rfind("image-", 0) != 0) continue;
+        for (const auto& file : std::filesystem::directory_iterator(dir.path())) {
+            const std::string name = file.path().filename().string();
+            if (name == "finding.txt") continue;
+            const auto bytes = bytes_of(file.path().string()); // absolute: data() keeps it
+            std::string probe_error, decode_error;
+            const bool probed = probe_encoded_image(bytes, name, probe_error);
+            EXPECT_TRUE(probed || !probe_error.empty()) << file.path();
+            RgbaImage image;
+            const bool decoded = decode_encoded_image(bytes, name, image, decode_error);
+            EXPECT_TRUE(decoded || !decode_error.empty()) << file.path();
+            ++replayed;
+        }
+    }
+    EXPECT_GE(replayed, 2);
+}
+
 TEST(ImageBombs, SupercompressedKtx2IsRefusedBeforeInflating) {
     const std::vector<std::uint8_t> ktx2 = bytes_of("bomb_uastc_zstd.ktx2");
     ASSERT_GT(ktx2.size(), 8000u);

@@ -3,6 +3,7 @@
 #include "accessor_reader.h"
 #include "checked_math.h"
 #include "draco_attributes.h"
+#include "draco_header.h"
 #include "gltf_prepare.h"
 #include "import_error.h"
 
@@ -10,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <new>
 
 #include <draco/compression/decode.h>
 #include <draco/mesh/mesh.h>
@@ -19,6 +21,14 @@ namespace sherpa::detail {
 namespace {
 
 constexpr const char* kCodec = "KHR_draco_mesh_compression";
+
+// What one Draco primitive may declare (docs/robustness.md, "Sizes the file
+// declares"). A Draco stream's counts are not backed by its bytes (a constant
+// attribute entropy-codes to almost nothing), and neither are the counts of the
+// accessors it decodes into, which have no buffer data: these limits bound what
+// Draco allocates for a primitive whose counts agree with its accessors.
+constexpr std::uint64_t kMaxDracoPoints = std::uint64_t{1} << 24;
+constexpr std::uint64_t kMaxDracoTriangles = std::uint64_t{1} << 24;
 
 // The decoded data of one primitive goes to one new buffer, written in place (no
 // intermediate copies): views are appended 4-byte aligned. Its bytes are reserved
@@ -148,6 +158,67 @@ void check_mode_and_indices(tinygltf::Model& model, tinygltf::Primitive& prim,
     prim.indices = static_cast<int>(model.accessors.size() - 1);
 }
 
+std::string declared_text(const DracoCounts& c) {
+    return c.method == DracoMethod::Sequential
+               ? std::to_string(c.points) + " points and " + std::to_string(c.faces) + " triangles"
+               : std::to_string(c.encoded_vertices) + " vertices and " + std::to_string(c.faces) +
+                     " triangles";
+}
+
+// The largest count among the primitive's attribute accessors: what the decoded points
+// must fit (decode_primitive requires each Draco-decoded accessor's count to equal the
+// stream's points).
+std::size_t largest_attribute_count(const tinygltf::Model& model, const tinygltf::Primitive& prim) {
+    std::size_t largest = 0;
+    for (const auto& [name, index] : prim.attributes)
+        if (index >= 0 && std::size_t(index) < model.accessors.size())
+            largest = std::max(largest, model.accessors[std::size_t(index)].count);
+    return largest;
+}
+
+// The stream's declared counts, read before Draco sees the stream and bounded by what
+// the glTF declares for the primitive (its attribute and index accessor counts, its
+// mapped attributes: `ext` has an "attributes" object) and by the documented limits.
+// Draco sizes its tables by these counts before it reads the data behind them; a
+// stream over a bound is refused here, unallocated.
+DracoCounts check_declared_counts(const tinygltf::Model& model, const tinygltf::Primitive& prim,
+                                  const tinygltf::Value& ext, std::span<const std::uint8_t> stream,
+                                  int view, const std::string& where) {
+    const std::string at = where + ": the Draco stream (bufferViews[" + std::to_string(view) +
+                           "], " + std::to_string(stream.size()) + " bytes)";
+    DracoCounts c;
+    std::string error;
+    if (!read_draco_counts(stream, c, error)) fail(at + " does not decode: " + error);
+    const std::size_t points = largest_attribute_count(model, prim);
+    const bool sequential = c.method == DracoMethod::Sequential;
+    const std::uint64_t vertices = sequential ? c.points : c.encoded_vertices;
+    const char* what = sequential ? " points" : " vertices";
+    // What the file contradicts first, then what it may declare.
+    if (vertices > points)
+        fail(at + " declares " + std::to_string(vertices) + what +
+             ", more than the primitive's attribute accessors hold (count " +
+             std::to_string(points) + ")");
+    if (prim.indices >= 0 && std::size_t(prim.indices) < model.accessors.size()) {
+        const std::size_t indices = model.accessors[std::size_t(prim.indices)].count;
+        if (std::uint64_t(c.faces) * 3 > indices)
+            fail(at + " declares " + std::to_string(c.faces) + " triangles (" +
+                 std::to_string(std::uint64_t(c.faces) * 3) +
+                 " indices), more than the indices accessor's count " + std::to_string(indices));
+    }
+    // Position is the connectivity itself: the other attributes have one each at most.
+    const std::size_t attributes = ext.Get("attributes").Keys().size();
+    if (!sequential && c.attribute_data > attributes)
+        fail(at + " declares " + std::to_string(c.attribute_data) +
+             " attribute connectivities for " + std::to_string(attributes) + " attributes");
+    if (vertices > kMaxDracoPoints)
+        fail(at + " declares " + std::to_string(vertices) + what + "; Sherpa decodes at most " +
+             std::to_string(kMaxDracoPoints) + " points per Draco primitive");
+    if (c.faces > kMaxDracoTriangles)
+        fail(at + " declares " + std::to_string(c.faces) + " triangles; Sherpa decodes at most " +
+             std::to_string(kMaxDracoTriangles) + " triangles per Draco primitive");
+    return c;
+}
+
 void decode_primitive(tinygltf::Model& model, tinygltf::Primitive& prim,
                       const std::string& prim_path, DecodedDracoPrimitive& out) {
     const std::string where = prim_path + "." + kCodec;
@@ -163,12 +234,26 @@ void decode_primitive(tinygltf::Model& model, tinygltf::Primitive& prim,
         !range_fits(view.byteOffset, view.byteLength,
                     model.buffers[std::size_t(view.buffer)].data.size()))
         fail(where + ": bufferViews[" + std::to_string(v) + "] lies outside its buffer");
+    if (!ext.Has("attributes") || !ext.Get("attributes").IsObject())
+        fail(where + ".attributes: required object is missing");
     const auto* data = model.buffers[std::size_t(view.buffer)].data.data() + view.byteOffset;
+    const DracoCounts counts =
+        check_declared_counts(model, prim, ext, {data, view.byteLength}, v, where);
     const auto t0 = std::chrono::steady_clock::now();
     draco::DecoderBuffer stream;
     stream.Init(reinterpret_cast<const char*>(data), view.byteLength);
     draco::Decoder decoder;
-    auto decoded = decoder.DecodeMeshFromBuffer(&stream);
+    // What the counts leave unbounded: Draco's per-point attribute tables, whose
+    // component counts (up to 255) come later in the stream.
+    auto decoded = [&] {
+        try {
+            return decoder.DecodeMeshFromBuffer(&stream);
+        } catch (const std::bad_alloc&) {
+            fail(where + ": the Draco stream (bufferViews[" + std::to_string(v) + "], " +
+                 std::to_string(view.byteLength) + " bytes) declares " + declared_text(counts) +
+                 "; Draco ran out of memory decoding it");
+        }
+    }();
     if (!decoded.ok())
         fail(where + ": the Draco stream (bufferViews[" + std::to_string(v) + "], " +
              std::to_string(view.byteLength) +
@@ -180,8 +265,6 @@ void decode_primitive(tinygltf::Model& model, tinygltf::Primitive& prim,
     const bool edgebreaker = encoded_bytes > 8 && data[8] == 1;
     const std::size_t points = mesh->num_points();
 
-    if (!ext.Has("attributes") || !ext.Get("attributes").IsObject())
-        fail(where + ".attributes: required object is missing");
     const tinygltf::Value& ids = ext.Get("attributes");
     // The decoded data goes to one new buffer; the accessors are pointed at it.
     std::size_t reserve =

@@ -2,6 +2,7 @@
 // accessors (validate_internal.h). Key values are checked by the data pass.
 #include "validate_internal.h"
 
+#include <limits>
 #include <map>
 #include <tuple>
 
@@ -114,9 +115,15 @@ void validate_animations(Validation& v) {
             if (input >= 0 && (path != "weights" || morphs > 0)) {
                 const std::int64_t keys =
                     int_or(accessors[static_cast<std::size_t>(input)], "count", 0);
-                const std::int64_t expected =
-                    keys * (cubic ? 3 : 1) *
-                    (path == "weights" ? static_cast<std::int64_t>(morphs) : 1);
+                // Counts come from the JSON (up to 2^63 - 1): a product past int64 expects
+                // what no count can be.
+                std::int64_t expected = 0;
+                if (__builtin_mul_overflow(
+                        keys,
+                        (cubic ? 3 : 1) *
+                            (path == "weights" ? static_cast<std::int64_t>(morphs) : 1),
+                        &expected))
+                    expected = std::numeric_limits<std::int64_t>::max();
                 if (int_or(out, "count", 0) != expected)
                     v.add("ANIMATION_SAMPLER_OUTPUT_ACCESSOR_INVALID_COUNT", Severity::Error, sp,
                           "Animation sampler output accessor of count " + std::to_string(expected) +

@@ -4,6 +4,8 @@
 // went wrong, and the callers build the messages.
 #include "image_codecs.h"
 
+#include <sherpa/texture/texel_budget.h>
+
 #include <png.h>
 
 #include <algorithm>
@@ -42,6 +44,29 @@ void write_bytes(png_structp png, png_bytep data, png_size_t length) {
 
 void flush_nothing(png_structp) {}
 
+// libpng's allocation limits, set here rather than left to how libpng was built (a
+// build may turn them off; Debian's 1.6.39 has 1,000,000 per side, 8,000,000 bytes
+// per chunk and 1000 stored ancillary chunks). Sides: the texel budget's. A chunk's
+// data is buffered whole before it is handled (and a compressed one inflates up to
+// the same limit): 8 MiB, more than a texture's metadata needs.
+constexpr png_alloc_size_t kMaxChunkBytes = png_alloc_size_t{8} << 20;
+constexpr png_uint_32 kMaxStoredChunks = 64;
+// The ancillary chunks the RGBA8 conversion does not read (colour space, text,
+// histogram, palette suggestions, times, offsets, Exif), skipped without being
+// buffered: 5 bytes each, the name and a NUL, as png_set_keep_unknown_chunks reads
+// them. tRNS and PLTE are read.
+constexpr char kSkippedChunks[] = "bKGD\0cHRM\0eXIf\0gAMA\0hIST\0iCCP\0iTXt\0oFFs\0pCAL\0"
+                                  "pHYs\0sBIT\0sCAL\0sPLT\0sRGB\0sTER\0tEXt\0tIME\0zTXt";
+
+void set_limits(png_structp png) {
+    png_set_user_limits(png, png_uint_32(kMaxImageSide), png_uint_32(kMaxImageSide));
+    png_set_chunk_malloc_max(png, kMaxChunkBytes);
+    png_set_chunk_cache_max(png, kMaxStoredChunks);
+    png_set_keep_unknown_chunks(png, PNG_HANDLE_CHUNK_NEVER,
+                                reinterpret_cast<png_const_bytep>(kSkippedChunks),
+                                int(sizeof kSkippedChunks / 5));
+}
+
 // Header only when `out` is null; else the whole image into `out` (after the size check).
 const char* run_decode(PngContext& ctx, std::string_view name, std::uint32_t& width,
                        std::uint32_t& height, RgbaImage* out, std::vector<png_bytep>& rows,
@@ -57,6 +82,7 @@ const char* run_decode(PngContext& ctx, std::string_view name, std::uint32_t& wi
         return ctx.message;
     }
     png_set_read_fn(png, &ctx, read_bytes);
+    set_limits(png);
     png_read_info(png, info);
     width = png_get_image_width(png, info);
     height = png_get_image_height(png, info);

@@ -311,10 +311,10 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers b
 } // namespace
 
 void validate_data(Validation& v, Buffers buffers) {
-    const Json& buffers_json = v.array("buffers");
-    for (std::size_t i = 0; i < buffers_json.size() && i < buffers.size(); ++i) {
-        const std::int64_t declared = int_or(buffers_json[i], "byteLength", 0);
-        if (!buffers[i].empty() && declared > 0 &&
+    // The lengths the file declared (the importer may have rewritten the JSON since).
+    for (std::size_t i = 0; i < v.declared_buffer_length.size() && i < buffers.size(); ++i) {
+        const std::int64_t declared = v.declared_buffer_length[i];
+        if (!buffers[i].empty() && declared > 0 && !v.length_unchecked[i] &&
             buffers[i].size() < static_cast<std::uint64_t>(declared))
             v.add("BUFFER_BYTE_LENGTH_MISMATCH", Severity::Error, ptr("/buffers", i),
                   "Actual data byte length (" + std::to_string(buffers[i].size()) +

@@ -13,7 +13,9 @@ bool has_joints(const Json& mesh) {
     if (!prims.is_array()) return false;
     for (const Json& p : prims) {
         const Json& attrs = Validation::member(p, "attributes");
-        if (attrs.is_object() && attrs.contains("JOINTS_0")) return true;
+        // Khronos counts a primitive as skinned only with both sets.
+        if (attrs.is_object() && attrs.contains("JOINTS_0") && attrs.contains("WEIGHTS_0"))
+            return true;
     }
     return false;
 }
@@ -219,6 +221,7 @@ void validate_nodes(Validation& v) {
         if (const std::int64_t ibm = ref(v, skin, "inverseBindMatrices", "accessors"); ibm >= 0) {
             const Json& acc = accessors[static_cast<std::size_t>(ibm)];
             const std::string ip = ptr(where, "inverseBindMatrices");
+            v.use_accessor(ibm, AccessorRole::IBM, ViewRole::IBM, ip);
             if (!(acc.contains("type") && acc["type"] == "MAT4") ||
                 int_or(acc, "componentType", 0) != 5126)
                 v.add("SKIN_IBM_INVALID_FORMAT", Severity::Error, ip,

@@ -159,6 +159,44 @@ void Validation::add(std::string_view code, Severity s, std::string pointer, std
     report.messages.push_back({std::string(code), std::move(message), std::move(pointer), s});
 }
 
+namespace {
+const char* role_name(AccessorRole r) {
+    constexpr const char* kNames[] = {"",    "VertexAttribute", "PrimitiveIndices",
+                                      "IBM", "AnimationInput",  "AnimationOutput"};
+    return kNames[static_cast<int>(r)];
+}
+const char* role_name(ViewRole r) {
+    constexpr const char* kNames[] = {"", "VertexBuffer", "IndexBuffer", "IBM", "Image", "Other"};
+    return kNames[static_cast<int>(r)];
+}
+} // namespace
+
+void Validation::use_view(std::int64_t view, ViewRole role, const std::string& pointer) {
+    if (view < 0 || static_cast<std::size_t>(view) >= view_roles.size()) return;
+    ViewRole& was = view_roles[static_cast<std::size_t>(view)];
+    if (was == ViewRole::None)
+        was = role;
+    else if (was != role)
+        add("BUFFER_VIEW_TARGET_OVERRIDE", Severity::Error, pointer,
+            std::string("Override of previously set bufferView target or usage. Initial: '") +
+                role_name(was) + "', new: '" + role_name(role) + "'.");
+}
+
+void Validation::use_accessor(std::int64_t a, AccessorRole role, ViewRole view_role,
+                              const std::string& pointer) {
+    if (a < 0 || static_cast<std::size_t>(a) >= accessor_roles.size()) return;
+    AccessorRole& was = accessor_roles[static_cast<std::size_t>(a)];
+    if (was == AccessorRole::None)
+        was = role;
+    else if (was != role)
+        add("ACCESSOR_USAGE_OVERRIDE", Severity::Error, pointer,
+            std::string("Override of previously set accessor usage. Initial: '") +
+                role_name(was) + "', new: '" + role_name(role) + "'.");
+    use_view(ref(*this, member(array("accessors"), static_cast<std::size_t>(a)), "bufferView",
+                 "bufferViews"),
+             view_role, pointer);
+}
+
 const Json& Validation::array(const char* key) const {
     static const Json empty = Json::array();
     const auto it = root.find(key);

@@ -21,6 +21,9 @@ using Json = nlohmann::json;
 // A JSON pointer being built: "/meshes/0/primitives/1".
 std::string ptr(std::string_view base, std::string_view key);
 std::string ptr(std::string_view base, std::size_t index);
+// Appends "/key" (escaped) or "/index" to a pointer being built in place.
+void push_key(std::string& pointer, std::string_view key);
+void push_index(std::string& pointer, std::size_t index);
 
 // Semantic use of an accessor found while validating references; the data pass
 // checks the values each use requires.

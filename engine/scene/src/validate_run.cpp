@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 
 namespace sherpa::detail {
@@ -114,22 +115,18 @@ struct ExtensionWalk {
                 }
                 if (!value.is_structured()) continue;
                 const std::size_t mark = pointer.size();
-                pointer += '/';
-                append_key(pointer, key);
+                push_key(pointer, key);
                 segments.push_back(key);
                 walk(value, depth + 1);
                 segments.pop_back();
                 pointer.resize(mark);
             }
         } else if (j.is_array()) {
-            std::vector<std::string> names; // segment storage for this level
-            names.reserve(j.size());
             for (std::size_t i = 0; i < j.size(); ++i) {
                 if (!j[i].is_structured()) continue;
                 const std::size_t mark = pointer.size();
-                names.push_back(std::to_string(i));
-                pointer += '/' + names.back();
-                segments.push_back(names.back());
+                push_index(pointer, i);
+                segments.push_back("#"); // kind_at looks at keys, never at array indices
                 walk(j[i], depth + 1);
                 segments.pop_back();
                 pointer.resize(mark);
@@ -139,6 +136,18 @@ struct ExtensionWalk {
 };
 
 } // namespace
+
+void push_key(std::string& pointer, std::string_view key) {
+    pointer += '/';
+    append_key(pointer, key);
+}
+
+void push_index(std::string& pointer, std::size_t index) {
+    char digits[24];
+    const auto end = std::to_chars(digits, digits + sizeof digits, index).ptr;
+    pointer += '/';
+    pointer.append(digits, end);
+}
 
 std::string ptr(std::string_view base, std::string_view key) {
     std::string out(base);

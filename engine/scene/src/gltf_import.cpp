@@ -225,8 +225,16 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         for (std::string& w : unsupported_extension_warnings(*scene)) ctx.warn(std::move(w));
         for (ValidationMessage& m : unsupported_extension_messages(*scene))
             scene->validation.messages.push_back(std::move(m));
-        const std::int32_t scene_index =
+        std::int32_t scene_index =
             options.scene_index >= 0 ? options.scene_index : std::max(model.defaultScene, 0);
+        // An unresolved default scene (the validator's UNRESOLVED_REFERENCE at /scene)
+        // shows the first scene rather than nothing; a scene the caller asks for is exact.
+        if (options.scene_index < 0 && !scene->scenes.empty() &&
+            static_cast<std::size_t>(scene_index) >= scene->scenes.size()) {
+            ctx.warn("default scene index " + std::to_string(scene_index) + " out of range (" +
+                     std::to_string(scene->scenes.size()) + " scenes); scene 0 is shown");
+            scene_index = 0;
+        }
         std::string select_error;
         if (!select_scene(*scene, scene_index, select_error)) detail::fail(select_error);
     } catch (const detail::ImportError& e) {

@@ -37,9 +37,9 @@ INSTANTIATE_TEST_SUITE_P(
         // named before the symptom (accessors without bufferView) is looked at
         BadCase{"unknown_required_extension_no_views.gltf",
                 "extensionsRequired: \"EXT_made_up_compression\" not supported"},
-        BadCase{"bad_mode.gltf", "mode: 9"},
-        BadCase{"invalid_json.gltf", "parse error"}, BadCase{"empty.gltf", "empty"},
-        BadCase{"truncated.glb", "binary"}, BadCase{"no_such_file.gltf", "cannot open"}),
+        BadCase{"bad_mode.gltf", "mode: 9"}, BadCase{"invalid_json.gltf", "parse error"},
+        BadCase{"empty.gltf", "empty"}, BadCase{"truncated.glb", "binary"},
+        BadCase{"no_such_file.gltf", "cannot open"}),
     test::case_name);
 
 TEST(AllowedInput, PrimitiveWithoutMaterialUsesTheDefaultWithAWarning) {

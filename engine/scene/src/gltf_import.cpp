@@ -182,7 +182,8 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
     for (const auto& b : model.buffers) buffers.emplace_back(b.data.data(), b.data.size());
     for (const ValidationMessage& m : report.messages) // stand-in bytes are no data
         if (m.code == "SHERPA_BUFFER_NOT_LOADED" && m.pointer.starts_with("/buffers/"))
-            if (const auto i = std::strtoull(m.pointer.c_str() + 9, nullptr, 10); i < buffers.size())
+            if (const auto i = std::strtoull(m.pointer.c_str() + 9, nullptr, 10);
+                i < buffers.size())
                 buffers[i] = {};
     validator->check_data(buffers);
     validator.reset();

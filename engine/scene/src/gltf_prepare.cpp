@@ -26,7 +26,7 @@ std::uint32_t le32(std::span<const std::uint8_t> b, std::size_t at) {
 }
 
 // Gives each fallback buffer of `root` a 1-byte data URI; false when there is none.
-bool replace_length_uncheckeds(json& root) {
+bool replace_fallback_buffers(json& root) {
     bool changed = false;
     if (!root.contains("buffers") || !root["buffers"].is_array()) return false;
     for (json& buffer : root["buffers"]) {
@@ -79,7 +79,7 @@ std::vector<std::uint8_t> prepared_for_tinygltf(std::span<const std::uint8_t> by
     const std::size_t json_length = glb ? le32(bytes, 12) : bytes.size();
     const auto json_bytes = glb ? bytes.subspan(20, json_length) : bytes;
     json root = json::parse(json_bytes.begin(), json_bytes.end());
-    const bool fallback = replace_length_uncheckeds(root);
+    const bool fallback = replace_fallback_buffers(root);
     if (!stash_draco_indices(root) && !fallback) return {};
     return with_json(root, bytes, glb); // a .glb keeps its BIN chunk
 }

@@ -241,7 +241,8 @@ std::string parse_gltf_document(std::span<const std::uint8_t> bytes, nlohmann::j
     Bytes text = bytes;
     if (starts_with(bytes, "glTF")) {
         if (std::string e = glb_json(bytes, text); !e.empty()) {
-            if (khronos_code && bytes.size() >= 20 && !range_fits(20, le32(bytes, 12), bytes.size()))
+            if (khronos_code && bytes.size() >= 20 &&
+                !range_fits(20, le32(bytes, 12), bytes.size()))
                 *khronos_code = "GLB_UNEXPECTED_END_OF_CHUNK_DATA";
             return e;
         }

@@ -59,8 +59,9 @@ void check_file(Validation& v, std::string_view uri, const std::string& p) {
     std::string name;
     std::error_code ec;
     const bool decoded = percent_decode(uri, name);
-    const std::filesystem::path path = std::filesystem::path(v.base_dir.empty() ? "." : v.base_dir) /
-                                       std::filesystem::path(name).relative_path();
+    const std::filesystem::path path =
+        std::filesystem::path(v.base_dir.empty() ? "." : v.base_dir) /
+        std::filesystem::path(name).relative_path();
     if (decoded && !name.empty() && std::filesystem::is_regular_file(path, ec)) return;
     v.add("IO_ERROR", Severity::Error, p,
           decoded ? "Could not read the file '" + std::string(uri) + "'."
@@ -114,7 +115,8 @@ void validate_buffers(Validation& v) {
         v.declared_buffer_length[i] = int_or(b, "byteLength", 0);
         const Json& ext = Validation::member(b, "extensions");
         for (const char* codec : {"EXT_meshopt_compression", "KHR_meshopt_compression"})
-            v.length_unchecked[i] |= Validation::member(Validation::member(ext, codec), "fallback") == true;
+            v.length_unchecked[i] |=
+                Validation::member(Validation::member(ext, codec), "fallback") == true;
         const std::string where = ptr("/buffers", i);
         buffer_length[i] =
             static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(b, "byteLength", 0), 0));

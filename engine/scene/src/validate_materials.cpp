@@ -112,8 +112,8 @@ void validate_materials(Validation& v) {
     for (std::size_t t = 0; t < textures.size(); ++t) {
         const std::int64_t src = ref(v, Validation::member(textures, t), "source", "images");
         if (src < 0) continue;
-        const Json& mime =
-            Validation::member(Validation::member(images, static_cast<std::size_t>(src)), "mimeType");
+        const Json& mime = Validation::member(
+            Validation::member(images, static_cast<std::size_t>(src)), "mimeType");
         if (mime.is_string() && mime != "image/jpeg" && mime != "image/png")
             v.add("TEXTURE_INVALID_IMAGE_MIME_TYPE", Severity::Error,
                   ptr(ptr("/textures", t), "source"),

@@ -172,8 +172,7 @@ void validate_meshes(Validation& v) {
                         std::find(readers.begin(), readers.end(), a) == readers.end()) {
                         readers.push_back(a);
                         if (readers.size() > 1)
-                            v.add("MESH_PRIMITIVE_ACCESSOR_WITHOUT_BYTESTRIDE", Severity::Error,
-                                  ap,
+                            v.add("MESH_PRIMITIVE_ACCESSOR_WITHOUT_BYTESTRIDE", Severity::Error, ap,
                                   "bufferView.byteStride must be defined when two or more "
                                   "accessors use the same buffer view.");
                     }

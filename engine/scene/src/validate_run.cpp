@@ -199,8 +199,8 @@ void Validation::use_accessor(std::int64_t a, AccessorRole role, ViewRole view_r
         was = role;
     else if (was != role)
         add("ACCESSOR_USAGE_OVERRIDE", Severity::Error, pointer,
-            std::string("Override of previously set accessor usage. Initial: '") +
-                role_name(was) + "', new: '" + role_name(role) + "'.");
+            std::string("Override of previously set accessor usage. Initial: '") + role_name(was) +
+                "', new: '" + role_name(role) + "'.");
     use_view(ref(*this, member(array("accessors"), static_cast<std::size_t>(a)), "bufferView",
                  "bufferViews"),
              view_role, pointer);

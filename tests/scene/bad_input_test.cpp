@@ -37,10 +37,9 @@ INSTANTIATE_TEST_SUITE_P(
         // named before the symptom (accessors without bufferView) is looked at
         BadCase{"unknown_required_extension_no_views.gltf",
                 "extensionsRequired: \"EXT_made_up_compression\" not supported"},
-        BadCase{"bad_mode.gltf", "mode: 9"},
-        BadCase{"default_scene_out_of_range.gltf", "scene index 3"},
-        BadCase{"invalid_json.gltf", "parse error"}, BadCase{"empty.gltf", "empty"},
-        BadCase{"truncated.glb", "binary"}, BadCase{"no_such_file.gltf", "cannot open"}),
+        BadCase{"bad_mode.gltf", "mode: 9"}, BadCase{"invalid_json.gltf", "parse error"},
+        BadCase{"empty.gltf", "empty"}, BadCase{"truncated.glb", "binary"},
+        BadCase{"no_such_file.gltf", "cannot open"}),
     test::case_name);
 
 TEST(AllowedInput, PrimitiveWithoutMaterialUsesTheDefaultWithAWarning) {
@@ -51,6 +50,21 @@ TEST(AllowedInput, PrimitiveWithoutMaterialUsesTheDefaultWithAWarning) {
     EXPECT_EQ(mat.gltf_index, -1);
     ASSERT_EQ(r.scene->warnings.size(), 1u);
     EXPECT_NE(r.scene->warnings[0].find("no material"), std::string::npos);
+}
+
+// Load and warn: an unresolved default scene shows scene 0 and says so.
+TEST(AllowedInput, DefaultSceneOutOfRangeShowsTheFirstScene) {
+    const sherpa::LoadResult r =
+        sherpa::load_scene((test::data_dir() / "default_scene_out_of_range.gltf").string());
+    ASSERT_TRUE(r) << r.error;
+    EXPECT_EQ(r.scene->displayed_scene, 0);
+    bool named = false;
+    for (const auto& w : r.scene->warnings) named |= w.find("scene index 3") != std::string::npos;
+    EXPECT_TRUE(named);
+    bool khronos = false;
+    for (const auto& m : r.scene->validation.messages)
+        khronos |= m.code == "UNRESOLVED_REFERENCE" && m.pointer == "/scene";
+    EXPECT_TRUE(khronos);
 }
 
 TEST(AllowedInput, EmptyPrimitiveIsSkippedWithoutInvertedBounds) {

@@ -86,7 +86,20 @@ INSTANTIATE_TEST_SUITE_P(
         Expect{"unexpected_property.gltf", "UNEXPECTED_PROPERTY", "/nodes/0/foo"},
         Expect{"undeclared_extension.gltf", "UNDECLARED_EXTENSION", "/nodes/0/extensions/KHR_foo"},
         Expect{"glb_extra_data.glb", "GLB_EXTRA_DATA", ""},
-        Expect{"glb_data_uri.glb", "DATA_URI_GLB", "/buffers/0/uri"}),
+        Expect{"glb_data_uri.glb", "DATA_URI_GLB", "/buffers/0/uri"},
+        // First use wins; a different later use is the Khronos override error.
+        Expect{"anim_input_format.gltf", "ACCESSOR_USAGE_OVERRIDE",
+               "/animations/0/samplers/0/output"},
+        Expect{"image_mime_missing.gltf", "BUFFER_VIEW_TARGET_OVERRIDE",
+               "/animations/0/samplers/0/input"},
+        Expect{"accessor_offset_alignment.gltf", "MESH_PRIMITIVE_ACCESSOR_UNALIGNED",
+               "/meshes/0/primitives/0/attributes/TEXCOORD_0"},
+        Expect{"tangent_without_normal.gltf", "MESH_PRIMITIVE_ACCESSOR_WITHOUT_BYTESTRIDE",
+               "/meshes/1/primitives/0/attributes/WEIGHTS_0"},
+        Expect{"image_bad_mime.gltf", "TEXTURE_INVALID_IMAGE_MIME_TYPE", "/textures/0/source"},
+        // The declared length, though the importer reads the data URI's real length.
+        Expect{"buffer_byte_length_mismatch.gltf", "BUFFER_BYTE_LENGTH_MISMATCH", "/buffers/0"},
+        Expect{"joints_without_weights.gltf", "NODE_SKIN_WITH_NON_SKINNED_MESH", "/nodes/2"}),
     [](const auto& param_info) {
         std::string n = std::string(param_info.param.file) + "_" + param_info.param.code;
         for (char& c : n)
@@ -159,6 +172,39 @@ TEST(LoadAndWarn, RefusedFileKeepsTheKhronosCode) {
     EXPECT_TRUE(has(r.validation, "BUFFER_VIEW_TOO_LONG", "/bufferViews/8/byteLength"))
         << dump(r.validation);
     EXPECT_TRUE(has(r.validation, "SHERPA_LOAD_REFUSED", "/bufferViews/8")) << dump(r.validation);
+}
+
+// Refusals that happen before or after the validator still carry its Khronos codes.
+TEST(LoadAndWarn, RefusedFilesNameTheKhronosCodes) {
+    const struct {
+        const char* file;
+        const char* code;
+        const char* pointer;
+    } cases[] = {
+        {"version_3.gltf", "UNKNOWN_ASSET_MAJOR_VERSION", "/asset/version"},
+        {"invalid_json.gltf", "INVALID_JSON", ""},
+        {"truncated.glb", "GLB_UNEXPECTED_END_OF_CHUNK_DATA", ""},
+        {"buffer_uri_parent.gltf", "IO_ERROR", "/buffers/0/uri"},
+        {"view_offset_wraps.gltf", "BUFFER_VIEW_TOO_LONG", "/bufferViews/0/byteOffset"},
+        {"fractional_byte_length.gltf", "ACCESSOR_TOO_LONG", "/accessors/0/byteOffset"},
+    };
+    for (const auto& c : cases) {
+        const auto r = sherpa::load_scene((test::data_dir() / c.file).string());
+        const ValidationReport& report = r ? r.scene->validation : r.validation;
+        EXPECT_TRUE(has(report, c.code, c.pointer)) << c.file << "\n" << dump(report);
+    }
+}
+
+// No error the Khronos validator does not report: a meshopt fallback buffer has no
+// data by design, and a data URI of another media type is not read by Khronos.
+TEST(Validation, NoLengthMismatchForBuffersWithoutDataByDesign) {
+    for (const auto& path : {test::data_dir() / "compressed_seeds" / "Box.meshopt.glb",
+                             test::data_dir() / "validation" / "data_uri_mime.gltf"}) {
+        const auto r = sherpa::load_scene(path.string());
+        const ValidationReport& report = r ? r.scene->validation : r.validation;
+        for (const auto& m : report.messages)
+            EXPECT_NE(m.code, "BUFFER_BYTE_LENGTH_MISMATCH") << path << "\n" << dump(report);
+    }
 }
 
 TEST(Validation, ImporterWarningsBecomeMessagesWithPointers) {

@@ -19,6 +19,7 @@
 #include <array>
 #include <cctype>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <set>
@@ -139,12 +140,18 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         result.validation = std::move(report);
         return std::move(result);
     };
-    if (problem = detail::parse_gltf_document(bytes, root); !problem.empty())
+    std::string khronos_code;
+    if (problem = detail::parse_gltf_document(bytes, root, &khronos_code); !problem.empty()) {
+        if (!khronos_code.empty()) // the Khronos validator's name for it, too
+            report.messages.push_back({khronos_code, problem, "", Severity::Error});
         return refuse(problem);
+    }
     const bool is_glb = bytes.size() >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "glTF");
     bool edited = detail::normalize_integers(root); // "count": 3.0 is an integer in glTF
     std::optional<detail::DocumentValidator> validator;
-    validator.emplace(root, bytes, is_glb, report);
+    const std::string base_dir = std::filesystem::path(path).parent_path().string();
+    validator.emplace(root, bytes, is_glb, report, base_dir.empty() ? "." : base_dir);
+    if (problem = detail::check_gltf_document(root); !problem.empty()) return refuse(problem);
     if (problem = detail::check_gltf_properties(root); !problem.empty()) return refuse(problem);
     edited |= detail::replace_unreadable_buffers(root, is_glb, validator->glb_has_bin(), report);
     if (edited) bytes = detail::with_json(root, bytes, is_glb);
@@ -156,7 +163,6 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
     loader.SetFsCallbacks(detail::safe_fs_callbacks());
     tinygltf::Model model;
     std::string err, warn;
-    const std::string base_dir = std::filesystem::path(path).parent_path().string();
     bool ok = false;
     try { // tinygltf allocates what the file asks for; keep its failures in this boundary
         if (is_glb)
@@ -174,6 +180,11 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
     if (!ok) return refuse(err.empty() ? "not a valid glTF file" : clean_message(err));
     std::vector<std::span<const std::uint8_t>> buffers;
     for (const auto& b : model.buffers) buffers.emplace_back(b.data.data(), b.data.size());
+    for (const ValidationMessage& m : report.messages) // stand-in bytes are no data
+        if (m.code == "SHERPA_BUFFER_NOT_LOADED" && m.pointer.starts_with("/buffers/"))
+            if (const auto i = std::strtoull(m.pointer.c_str() + 9, nullptr, 10);
+                i < buffers.size())
+                buffers[i] = {};
     validator->check_data(buffers);
     validator.reset();
     auto scene = std::make_unique<Scene>();
@@ -215,8 +226,16 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         for (std::string& w : unsupported_extension_warnings(*scene)) ctx.warn(std::move(w));
         for (ValidationMessage& m : unsupported_extension_messages(*scene))
             scene->validation.messages.push_back(std::move(m));
-        const std::int32_t scene_index =
+        std::int32_t scene_index =
             options.scene_index >= 0 ? options.scene_index : std::max(model.defaultScene, 0);
+        // An unresolved default scene (the validator's UNRESOLVED_REFERENCE at /scene)
+        // shows the first scene rather than nothing; a scene the caller asks for is exact.
+        if (options.scene_index < 0 && !scene->scenes.empty() &&
+            static_cast<std::size_t>(scene_index) >= scene->scenes.size()) {
+            ctx.warn("default scene index " + std::to_string(scene_index) + " out of range (" +
+                     std::to_string(scene->scenes.size()) + " scenes); scene 0 is shown");
+            scene_index = 0;
+        }
         std::string select_error;
         if (!select_scene(*scene, scene_index, select_error)) detail::fail(select_error);
     } catch (const detail::ImportError& e) {

@@ -221,7 +221,13 @@ std::string check_properties(const json& root) {
 std::string validate_gltf_bytes(std::span<const std::uint8_t> bytes) {
     json root;
     if (std::string e = parse_gltf_document(bytes, root); !e.empty()) return e;
+    if (std::string e = check_gltf_document(root); !e.empty()) return e;
     return check_gltf_properties(root);
+}
+
+std::string check_gltf_document(const nlohmann::json& root) {
+    if (std::string e = check_asset(root); !e.empty()) return e;
+    return check_required_extensions(root);
 }
 
 std::string check_gltf_properties(const nlohmann::json& root) {
@@ -229,11 +235,17 @@ std::string check_gltf_properties(const nlohmann::json& root) {
     return check_extension_properties(root);
 }
 
-std::string parse_gltf_document(std::span<const std::uint8_t> bytes, nlohmann::json& root) {
+std::string parse_gltf_document(std::span<const std::uint8_t> bytes, nlohmann::json& root,
+                                std::string* khronos_code) {
     if (bytes.empty()) return "file is empty";
     Bytes text = bytes;
     if (starts_with(bytes, "glTF")) {
-        if (std::string e = glb_json(bytes, text); !e.empty()) return e;
+        if (std::string e = glb_json(bytes, text); !e.empty()) {
+            if (khronos_code && bytes.size() >= 20 &&
+                !range_fits(20, le32(bytes, 12), bytes.size()))
+                *khronos_code = "GLB_UNEXPECTED_END_OF_CHUNK_DATA";
+            return e;
+        }
     } else {
         std::size_t at = starts_with(bytes, "\xEF\xBB\xBF") ? 3 : 0; // UTF-8 byte order mark
         while (at < bytes.size() && std::strchr(" \t\r\n", bytes[at]) && bytes[at]) ++at;
@@ -244,14 +256,14 @@ std::string parse_gltf_document(std::span<const std::uint8_t> bytes, nlohmann::j
     try {
         root = json::parse(text.begin(), text.end());
     } catch (const json::parse_error& e) {
+        if (khronos_code) *khronos_code = "INVALID_JSON";
         return "not valid JSON: parse error at byte " + std::to_string(e.byte) +
                (e.id == 101 ? " (syntax error or invalid UTF-8)" : "");
     } catch (const std::exception&) {
         return "not valid JSON";
     }
     if (!root.is_object()) return "the top-level JSON value is not an object: not a glTF file";
-    if (std::string e = check_asset(root); !e.empty()) return e;
-    return check_required_extensions(root);
+    return {};
 }
 
 std::size_t json_depth_exceeded_at(std::span<const std::uint8_t> text, std::size_t limit) {

@@ -21,12 +21,17 @@ inline constexpr std::size_t kMaxJsonDepth = 256;
 std::size_t json_depth_exceeded_at(std::span<const std::uint8_t> text, std::size_t limit);
 
 // The problem with a .gltf/.glb file's bytes, or an empty string when they may be
-// handed to tinygltf. Never throws. Runs the two steps below.
+// handed to tinygltf. Never throws. Runs the steps below.
 std::string validate_gltf_bytes(std::span<const std::uint8_t> bytes);
 
-// Step 1: the container, the JSON (parsed into `root`: the importer's one parse of it,
-// which the validator reads too), asset.version and extensionsRequired.
-std::string parse_gltf_document(std::span<const std::uint8_t> bytes, nlohmann::json& root);
+// Step 1: the container and the JSON (parsed into `root`: the importer's one parse of
+// it, which the validator reads too). `khronos_code`, when given, receives the Khronos
+// validator's code for the problem where it has one (INVALID_JSON, ...).
+std::string parse_gltf_document(std::span<const std::uint8_t> bytes, nlohmann::json& root,
+                                std::string* khronos_code = nullptr);
+// Step 1b: asset.version and extensionsRequired (after the validator has run, so a
+// refused file still gets its Khronos messages).
+std::string check_gltf_document(const nlohmann::json& root);
 // Step 2: the properties whose values index memory or other arrays, which tinygltf
 // would silently turn into 0 or -1 when mistyped.
 std::string check_gltf_properties(const nlohmann::json& root);

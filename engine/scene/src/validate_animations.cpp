@@ -33,8 +33,13 @@ void validate_animations(Validation& v) {
             if (input < 0) continue;
             const Json& acc = accessors[static_cast<std::size_t>(input)];
             const std::string ip = ptr(ptr(ptr(where, "samplers"), s), "input");
-            if (type_of(acc) != "SCALAR" || int_or(acc, "componentType", 0) != 5126 ||
-                Validation::member(acc, "normalized") == true)
+            v.use_accessor(input, AccessorRole::AnimationInput, ViewRole::Other, ip);
+            v.use_accessor(ref(v, sampler, "output", "accessors"), AccessorRole::AnimationOutput,
+                           ViewRole::Other, ptr(ptr(ptr(where, "samplers"), s), "output"));
+            const bool format_ok = type_of(acc) == "SCALAR" &&
+                                   int_or(acc, "componentType", 0) == 5126 &&
+                                   Validation::member(acc, "normalized") != true;
+            if (!format_ok)
                 v.add("ANIMATION_SAMPLER_INPUT_ACCESSOR_INVALID_FORMAT", Severity::Error, ip,
                       "Invalid Animation sampler input accessor format. Must be one of ('{SCALAR, "
                       "FLOAT}').");
@@ -42,7 +47,9 @@ void validate_animations(Validation& v) {
                 v.add(
                     "ANIMATION_SAMPLER_INPUT_ACCESSOR_WITHOUT_BOUNDS", Severity::Error, ip,
                     "accessor.min and accessor.max must be defined for animation input accessor.");
-            v.usages.push_back({static_cast<std::size_t>(input), AccessorUse::AnimationInput, ip});
+            if (format_ok) // Khronos reads key times only from a valid input accessor
+                v.usages.push_back(
+                    {static_cast<std::size_t>(input), AccessorUse::AnimationInput, ip});
         }
         std::map<std::tuple<std::int64_t, std::string>, std::size_t> targets;
         for (std::size_t c = 0; c < channels.size() && channels.is_array(); ++c) {

@@ -5,6 +5,7 @@
 #include "checked_math.h"
 
 #include <cstring>
+#include <filesystem>
 
 namespace sherpa::detail {
 namespace {
@@ -28,9 +29,49 @@ bool non_relative(std::string_view uri) {
     return true;
 }
 
-void check_uri(Validation& v, const Json& obj, const std::string& where, bool buffer) {
+// Decodes %XX escapes; false when an escape is malformed or decodes to NUL.
+bool percent_decode(std::string_view in, std::string& out) {
+    auto hex = [](char c) {
+        return c >= '0' && c <= '9'   ? c - '0'
+               : c >= 'a' && c <= 'f' ? c - 'a' + 10
+               : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                      : -1;
+    };
+    out.clear();
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        if (in[i] != '%') {
+            out += in[i];
+            continue;
+        }
+        if (i + 2 >= in.size() || hex(in[i + 1]) < 0 || hex(in[i + 2]) < 0) return false;
+        const char c = static_cast<char>(hex(in[i + 1]) * 16 + hex(in[i + 2]));
+        if (c == '\0') return false;
+        out += c;
+        i += 2;
+    }
+    return true;
+}
+
+// A relative URI that names no readable file next to the glTF (missing, a folder, an
+// undecodable name): the Khronos IO_ERROR. Only looked at, never read here.
+void check_file(Validation& v, std::string_view uri, const std::string& p) {
+    if (v.base_dir.empty() && v.glb) return;
+    std::string name;
+    std::error_code ec;
+    const bool decoded = percent_decode(uri, name);
+    const std::filesystem::path path =
+        std::filesystem::path(v.base_dir.empty() ? "." : v.base_dir) /
+        std::filesystem::path(name).relative_path();
+    if (decoded && !name.empty() && std::filesystem::is_regular_file(path, ec)) return;
+    v.add("IO_ERROR", Severity::Error, p,
+          decoded ? "Could not read the file '" + std::string(uri) + "'."
+                  : "Could not decode the URI '" + std::string(uri) + "'.");
+}
+
+// Returns false when a buffer's data URI has a media type Khronos does not read.
+bool check_uri(Validation& v, const Json& obj, const std::string& where, bool buffer) {
     const auto uri = obj.find("uri");
-    if (uri == obj.end() || !uri->is_string()) return;
+    if (uri == obj.end() || !uri->is_string()) return true;
     const std::string& u = uri->get_ref<const std::string&>();
     const std::string p = ptr(where, "uri");
     if (v.glb) v.add("URI_GLB", Severity::Information, p, "URI is used in GLB container.");
@@ -44,10 +85,15 @@ void check_uri(Validation& v, const Json& obj, const std::string& where, bool bu
                       "Data URI media type must be 'application/octet-stream' or "
                       "'application/gltf-buffer'. Found '" +
                           std::string(media) + "' instead.");
+            return media == "application/octet-stream" || media == "application/gltf-buffer";
         }
-    } else if (non_relative(u)) {
-        v.add("NON_RELATIVE_URI", Severity::Warning, p, "Non-relative URI found: '" + u + "'.");
+    } else {
+        const bool absolute = non_relative(u);
+        if (absolute)
+            v.add("NON_RELATIVE_URI", Severity::Warning, p, "Non-relative URI found: '" + u + "'.");
+        if ((!absolute || u[0] == '/') && !v.base_dir.empty()) check_file(v, u, p);
     }
+    return true;
 }
 
 std::uint32_t le32(std::span<const std::uint8_t> b, std::size_t at) {
@@ -61,20 +107,24 @@ std::uint32_t le32(std::span<const std::uint8_t> b, std::size_t at) {
 void validate_buffers(Validation& v) {
     const Json& buffers = v.array("buffers");
     std::vector<std::uint64_t> buffer_length(buffers.size(), 0);
+    v.declared_buffer_length.assign(buffers.size(), 0);
+    v.length_unchecked.assign(buffers.size(), 0);
     for (std::size_t i = 0; i < buffers.size(); ++i) {
         const Json& b = buffers[i];
         if (!b.is_object()) continue;
+        v.declared_buffer_length[i] = int_or(b, "byteLength", 0);
+        const Json& ext = Validation::member(b, "extensions");
+        for (const char* codec : {"EXT_meshopt_compression", "KHR_meshopt_compression"})
+            v.length_unchecked[i] |=
+                Validation::member(Validation::member(ext, codec), "fallback") == true;
         const std::string where = ptr("/buffers", i);
         buffer_length[i] =
             static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(b, "byteLength", 0), 0));
-        check_uri(v, b, where, true);
+        if (!check_uri(v, b, where, true)) v.length_unchecked[i] = 1;
         if (v.glb && i == 0 && !b.contains("uri") && !v.glb_has_bin)
             v.add("BUFFER_MISSING_GLB_DATA", Severity::Error, where,
                   "Buffer refers to an unresolved GLB binary chunk.");
     }
-    for (std::size_t i = 0; i < v.size("images"); ++i)
-        if (v.array("images")[i].is_object())
-            check_uri(v, v.array("images")[i], ptr("/images", i), false);
 
     struct View {
         std::int64_t buffer = -1;
@@ -83,6 +133,7 @@ void validate_buffers(Validation& v) {
     };
     const Json& views_json = v.array("bufferViews");
     std::vector<View> views(views_json.size());
+    v.view_roles.assign(views_json.size(), ViewRole::None);
     for (std::size_t i = 0; i < views_json.size(); ++i) {
         const Json& bv = views_json[i];
         View& view = views[i];
@@ -99,12 +150,17 @@ void validate_buffers(Validation& v) {
                           bv["extensions"].is_object() &&
                           (bv["extensions"].contains("EXT_meshopt_compression") ||
                            bv["extensions"].contains("KHR_meshopt_compression"));
+        const std::int64_t target = int_or(bv, "target", 0);
+        v.view_roles[i] = target == 34962   ? ViewRole::VertexBuffer
+                          : target == 34963 ? ViewRole::IndexBuffer
+                                            : ViewRole::None;
         const std::string where = ptr("/bufferViews", i);
         if (view.buffer >= 0) {
             const std::uint64_t size = buffer_length[static_cast<std::size_t>(view.buffer)];
             view.fits = range_fits(view.offset, view.length, size);
             if (!view.fits)
-                v.add("BUFFER_VIEW_TOO_LONG", Severity::Error, ptr(where, "byteLength"),
+                v.add("BUFFER_VIEW_TOO_LONG", Severity::Error,
+                      ptr(where, view.offset >= size ? "byteOffset" : "byteLength"),
                       "BufferView does not fit buffer (" + std::to_string(view.buffer) +
                           ") byteLength (" + std::to_string(size) + ").");
         }
@@ -124,6 +180,7 @@ void validate_buffers(Validation& v) {
 
     const Json& accessors = v.array("accessors");
     v.accessors.assign(accessors.size(), {});
+    v.accessor_roles.assign(accessors.size(), AccessorRole::None);
     for (std::size_t i = 0; i < accessors.size(); ++i) {
         const Json& a = accessors[i];
         if (!a.is_object()) continue;
@@ -143,7 +200,8 @@ void validate_buffers(Validation& v) {
                   "Only (u)byte and (u)short accessors can be normalized.");
         for (const char* key : {"min", "max"}) {
             const auto m = a.find(key);
-            if (m == a.end() || !m->is_array() || comps == 0) continue;
+            // Without a valid componentType, Khronos does not read the bounds at all.
+            if (m == a.end() || !m->is_array() || comps == 0 || csize == 0) continue;
             if (m->size() != comps)
                 v.add("ARRAY_LENGTH_NOT_IN_LIST", Severity::Error, ptr(where, key),
                       "Invalid array length " + std::to_string(m->size()) +
@@ -153,6 +211,11 @@ void validate_buffers(Validation& v) {
         }
         if (a.contains("sparse") && a["sparse"].is_object()) {
             out.sparse = true;
+            for (const char* part : {"indices", "values"}) {
+                const Json& sp = Validation::member(a["sparse"], part);
+                v.use_view(ref(v, sp, "bufferView", "bufferViews"), ViewRole::Other,
+                           ptr(ptr(ptr(where, "sparse"), part), "bufferView"));
+            }
             const std::int64_t sc = int_or(a["sparse"], "count", 0);
             if (sc > count && count > 0)
                 v.add("ACCESSOR_SPARSE_COUNT_OUT_OF_RANGE", Severity::Error,
@@ -168,7 +231,8 @@ void validate_buffers(Validation& v) {
                       " is not a multiple of componentType length " + std::to_string(csize) + ".");
         if (vi < 0 || !csize || !comps || count <= 0) continue;
         const View& view = views[static_cast<std::size_t>(vi)];
-        if (csize && (view.offset + static_cast<std::uint64_t>(offset)) % csize)
+        if (csize && view.offset < (std::uint64_t{1} << 53) &&
+            (view.offset + static_cast<std::uint64_t>(offset)) % csize)
             v.add("ACCESSOR_TOTAL_OFFSET_ALIGNMENT", Severity::Error, where,
                   "Accessor's total byteOffset " + std::to_string(view.offset + offset) +
                       " isn't a multiple of componentType length " + std::to_string(csize) + ".");
@@ -183,7 +247,9 @@ void validate_buffers(Validation& v) {
         const auto total =
             end ? checked_add(*end, static_cast<std::uint64_t>(offset)) : std::nullopt;
         if (!total || *total > view.length) {
-            v.add("ACCESSOR_TOO_LONG", Severity::Error, where,
+            v.add("ACCESSOR_TOO_LONG", Severity::Error,
+                  static_cast<std::uint64_t>(offset) >= view.length ? ptr(where, "byteOffset")
+                                                                    : where,
                   "Accessor (offset: " + std::to_string(offset) +
                       ", length: " + (end ? std::to_string(*end) : std::string("too large")) +
                       ") does not fit referenced bufferView [" + std::to_string(vi) + "] length " +
@@ -199,6 +265,15 @@ void validate_buffers(Validation& v) {
         out.components = comps;
         out.count = static_cast<std::uint64_t>(count);
         out.normalized = normalized;
+    }
+    // Images are linked before meshes by the Khronos validator: their views' use first.
+    const Json& images = v.array("images");
+    for (std::size_t i = 0; i < images.size(); ++i) {
+        if (!images[i].is_object()) continue;
+        const std::string where = ptr("/images", i);
+        check_uri(v, images[i], where, false);
+        v.use_view(ref(v, images[i], "bufferView", "bufferViews"), ViewRole::Image,
+                   ptr(where, "bufferView"));
     }
 }
 

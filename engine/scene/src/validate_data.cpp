@@ -8,6 +8,8 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <type_traits>
 #include <unordered_map>
 
 namespace sherpa::detail {
@@ -80,6 +82,9 @@ public:
         }
     }
     bool is_float() const { return a_.component_type == 5126; }
+    const std::uint8_t* base() const { return base_; }
+    std::uint64_t stride() const { return a_.stride; }
+    int component_type() const { return a_.component_type; }
 
 private:
     const AccessorLayout& a_;
@@ -87,27 +92,73 @@ private:
     bool ok_ = false;
 };
 
+// Per-component bounds of the finite values, in the component type itself (one typed
+// pass over the bytes; the data pass's hot loop). Returns the first non-finite
+// component's flat index, or UINT64_MAX.
+template <typename C>
+std::uint64_t scan_bounds(const Reader& r, std::vector<double>& lo, std::vector<double>& hi) {
+    const std::uint32_t n = r.components();
+    C l[16], h[16];
+    for (std::uint32_t c = 0; c < n; ++c) {
+        l[c] = std::numeric_limits<C>::max();
+        h[c] = std::numeric_limits<C>::lowest();
+    }
+    std::uint64_t first_bad = UINT64_MAX;
+    bool seen[16] = {};
+    const std::uint8_t* p = r.base();
+    for (std::uint64_t i = 0; i < r.count(); ++i, p += r.stride())
+        for (std::uint32_t c = 0; c < n; ++c) {
+            C x;
+            std::memcpy(&x, p + c * sizeof(C), sizeof(C));
+            if constexpr (std::is_floating_point_v<C>) {
+                if (!std::isfinite(x)) {
+                    first_bad = std::min(first_bad, i * n + c);
+                    continue;
+                }
+            }
+            seen[c] = true;
+            l[c] = std::min(l[c], x);
+            h[c] = std::max(h[c], x);
+        }
+    for (std::uint32_t c = 0; c < n; ++c)
+        if (seen[c]) lo[c] = static_cast<double>(l[c]), hi[c] = static_cast<double>(h[c]);
+    return first_bad;
+}
+
 void check_min_max(Validation& v, std::size_t index, const Reader& r) {
     const AccessorLayout& a = v.accessors[index];
     const Json& acc = v.array("accessors")[index];
     const std::string where = ptr("/accessors", index);
     const std::uint32_t n = r.components();
+    if (n == 0 || n > 16) return;
     std::vector<double> lo(n, INFINITY), hi(n, -INFINITY);
-    bool invalid_float = false;
-    for (std::uint64_t i = 0; i < r.count(); ++i)
-        for (std::uint32_t c = 0; c < n; ++c) {
-            const double x = r.raw(i, c);
-            if (!std::isfinite(x)) {
-                if (!invalid_float)
-                    v.add("ACCESSOR_INVALID_FLOAT", Severity::Error, where,
-                          "Accessor element at index " + std::to_string(i * n + c) + " is " +
-                              (std::isnan(x) ? "NaN" : "Infinity") + ".");
-                invalid_float = true;
-                continue;
-            }
-            lo[c] = std::min(lo[c], x);
-            hi[c] = std::max(hi[c], x);
-        }
+    std::uint64_t bad = UINT64_MAX;
+    switch (r.component_type()) {
+    case 5120:
+        bad = scan_bounds<std::int8_t>(r, lo, hi);
+        break;
+    case 5121:
+        bad = scan_bounds<std::uint8_t>(r, lo, hi);
+        break;
+    case 5122:
+        bad = scan_bounds<std::int16_t>(r, lo, hi);
+        break;
+    case 5123:
+        bad = scan_bounds<std::uint16_t>(r, lo, hi);
+        break;
+    case 5125:
+        bad = scan_bounds<std::uint32_t>(r, lo, hi);
+        break;
+    default:
+        bad = scan_bounds<float>(r, lo, hi);
+        break;
+    }
+    if (bad != UINT64_MAX) {
+        const double x = r.raw(bad / n, static_cast<std::uint32_t>(bad % n));
+        v.add("ACCESSOR_INVALID_FLOAT", Severity::Error, where,
+              "Accessor element at index " + std::to_string(bad) + " is " +
+                  (std::isnan(x) ? "NaN" : "Infinity") + ".");
+    }
     auto same = [&](double declared, double actual) {
         return r.is_float() ? static_cast<float>(declared) == static_cast<float>(actual)
                             : declared == actual;
@@ -311,10 +362,10 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers b
 } // namespace
 
 void validate_data(Validation& v, Buffers buffers) {
-    const Json& buffers_json = v.array("buffers");
-    for (std::size_t i = 0; i < buffers_json.size() && i < buffers.size(); ++i) {
-        const std::int64_t declared = int_or(buffers_json[i], "byteLength", 0);
-        if (!buffers[i].empty() && declared > 0 &&
+    // The lengths the file declared (the importer may have rewritten the JSON since).
+    for (std::size_t i = 0; i < v.declared_buffer_length.size() && i < buffers.size(); ++i) {
+        const std::int64_t declared = v.declared_buffer_length[i];
+        if (!buffers[i].empty() && declared > 0 && !v.length_unchecked[i] &&
             buffers[i].size() < static_cast<std::uint64_t>(declared))
             v.add("BUFFER_BYTE_LENGTH_MISMATCH", Severity::Error, ptr("/buffers", i),
                   "Actual data byte length (" + std::to_string(buffers[i].size()) +

@@ -17,10 +17,11 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 } // namespace
 
 DocumentValidator::DocumentValidator(const Json& root, std::span<const std::uint8_t> file, bool glb,
-                                     ValidationReport& report)
-    : v_{report, root, false, false, {}, {}} {
+                                     ValidationReport& report, std::string base_dir)
+    : v_{report, root, false, false, {}, {}, {}, {}, {}, {}, {}} {
     const auto t0 = std::chrono::steady_clock::now();
     v_.glb = glb;
+    v_.base_dir = std::move(base_dir);
     if (glb) validate_glb(v_, file);
     validate_document(v_);
     report.ms += ms_since(t0);

@@ -21,6 +21,9 @@ using Json = nlohmann::json;
 // A JSON pointer being built: "/meshes/0/primitives/1".
 std::string ptr(std::string_view base, std::string_view key);
 std::string ptr(std::string_view base, std::size_t index);
+// Appends "/key" (escaped) or "/index" to a pointer being built in place.
+void push_key(std::string& pointer, std::string_view key);
+void push_index(std::string& pointer, std::size_t index);
 
 // Semantic use of an accessor found while validating references; the data pass
 // checks the values each use requires.
@@ -59,6 +62,20 @@ struct AccessorLayout {
     bool sparse = false;                   // values overridden: checked only when readable
 };
 
+// What an accessor or buffer view is first used for; a second, different use is the
+// Khronos ACCESSOR_USAGE_OVERRIDE / BUFFER_VIEW_TARGET_OVERRIDE error. The Khronos
+// validator links images, meshes, skins and animations in that order; the passes
+// record uses in the same order.
+enum class AccessorRole : std::uint8_t {
+    None,
+    VertexAttribute,
+    PrimitiveIndices,
+    IBM,
+    AnimationInput,
+    AnimationOutput
+};
+enum class ViewRole : std::uint8_t { None, VertexBuffer, IndexBuffer, IBM, Image, Other };
+
 struct Validation {
     ValidationReport& report;
     const Json& root;
@@ -66,6 +83,19 @@ struct Validation {
     bool glb_has_bin = false;
     std::vector<AccessorLayout> accessors;
     std::vector<AccessorUsage> usages;
+    // Folder external URIs resolve against; empty: files are not looked at (IO_ERROR).
+    std::string base_dir;
+    // Per buffer, as the file declares them (the importer may rewrite the JSON later).
+    std::vector<std::int64_t> declared_buffer_length;
+    // A meshopt fallback (no data by design) or a data URI of the wrong media type
+    // (Khronos does not read it): its length is not compared with byteLength.
+    std::vector<std::uint8_t> length_unchecked;
+    std::vector<AccessorRole> accessor_roles;
+    std::vector<ViewRole> view_roles;
+    // Records a use of accessor `a` (and of its buffer view) at `pointer`.
+    void use_accessor(std::int64_t a, AccessorRole role, ViewRole view_role,
+                      const std::string& pointer);
+    void use_view(std::int64_t view, ViewRole role, const std::string& pointer);
 
     void add(std::string_view code, Severity s, std::string pointer, std::string message);
     // The array `key` of the root (an empty array when absent or not an array).
@@ -112,8 +142,9 @@ namespace sherpa::detail {
 // the data pass once tinygltf has loaded the buffers; report.ms sums both.
 class DocumentValidator {
 public:
+    // `base_dir`: where external URIs resolve (empty: not checked).
     DocumentValidator(const Json& root, std::span<const std::uint8_t> file, bool glb,
-                      ValidationReport& report);
+                      ValidationReport& report, std::string base_dir = {});
     void check_data(std::span<const std::span<const std::uint8_t>> buffers);
     bool glb_has_bin() const { return v_.glb_has_bin; }
 

@@ -107,11 +107,37 @@ void validate_materials(Validation& v) {
                   "Dependency failed. 'mimeType' must be defined.");
     }
 
+    // A texture's core source must be an image type glTF allows.
+    const Json& textures = v.array("textures");
+    for (std::size_t t = 0; t < textures.size(); ++t) {
+        const std::int64_t src = ref(v, Validation::member(textures, t), "source", "images");
+        if (src < 0) continue;
+        const Json& mime = Validation::member(
+            Validation::member(images, static_cast<std::size_t>(src)), "mimeType");
+        if (mime.is_string() && mime != "image/jpeg" && mime != "image/png")
+            v.add("TEXTURE_INVALID_IMAGE_MIME_TYPE", Severity::Error,
+                  ptr(ptr("/textures", t), "source"),
+                  "Invalid MIME type '" + mime.get<std::string>() +
+                      "' for the texture source. Valid MIME types are ('image/jpeg', "
+                      "'image/png').");
+    }
+
     const Json& lights =
         Validation::member(Validation::member(v.root, "extensions"), "KHR_lights_punctual");
     const Json& list = Validation::member(lights, "lights");
     for (std::size_t i = 0; i < list.size() && list.is_array(); ++i) {
-        const Json& spot = Validation::member(Validation::member(list, i), "spot");
+        const Json& light = Validation::member(list, i);
+        const std::string lp = ptr("/extensions/KHR_lights_punctual/lights", i);
+        const Json& type = Validation::member(light, "type");
+        if (type.is_string() && type != "directional" && type != "point" && type != "spot")
+            v.add("VALUE_NOT_IN_LIST", Severity::Warning, ptr(lp, "type"),
+                  "Invalid value '" + type.get<std::string>() +
+                      "'. Valid values are ('directional', 'point', 'spot').");
+        const Json& intensity = Validation::member(light, "intensity");
+        if (intensity.is_number() && intensity.get<double>() < 0)
+            v.add("VALUE_NOT_IN_RANGE", Severity::Error, ptr(lp, "intensity"),
+                  "Value " + intensity.dump() + " is out of range.");
+        const Json& spot = Validation::member(light, "spot");
         if (!spot.is_object()) continue;
         const double inner = num_or(spot, "innerConeAngle", 0);
         const double outer = num_or(spot, "outerConeAngle", 0.7853981633974483);

@@ -79,6 +79,8 @@ void validate_meshes(Validation& v) {
             ref(v, accessors[static_cast<std::size_t>(a)], "bufferView", "bufferViews");
         return vi >= 0 ? views[static_cast<std::size_t>(vi)] : Validation::member(views, "");
     };
+    // Per buffer view without byteStride: the vertex accessors that read it.
+    std::vector<std::vector<std::int64_t>> view_readers(views.size());
     for (std::size_t m = 0; m < meshes.size(); ++m) {
         const Json& prim_array = Validation::member(meshes[m], "primitives");
         if (!prim_array.is_array()) continue;
@@ -131,6 +133,7 @@ void validate_meshes(Validation& v) {
                     continue;
                 }
                 resolved.emplace(name, a);
+                v.use_accessor(a, AccessorRole::VertexAttribute, ViewRole::VertexBuffer, ap);
                 const Json& acc = accessors[static_cast<std::size_t>(a)];
                 const AccessorLayout& layout = v.accessors[static_cast<std::size_t>(a)];
                 const std::uint32_t comps =
@@ -154,6 +157,26 @@ void validate_meshes(Validation& v) {
                 if (view.is_object() && !view.contains("target"))
                     v.add("BUFFER_VIEW_TARGET_MISSING", Severity::Hint, ap,
                           "bufferView.target should be set for vertex or index data.");
+                const std::int64_t view_offset = int_or(view, "byteOffset", 0);
+                if (view.is_object() && view_offset >= 0 && view_offset < (std::int64_t{1} << 53)) {
+                    // Offsets and, without a stride, the element size: 4-byte multiples.
+                    const std::int64_t offset = int_or(acc, "byteOffset", 0);
+                    if (offset % 4 || (view_offset + offset) % 4 ||
+                        (!view.contains("byteStride") &&
+                         (std::int64_t{component_size(ct)} * comps) % 4))
+                        v.add("MESH_PRIMITIVE_ACCESSOR_UNALIGNED", Severity::Error, ap,
+                              "Vertex attribute data must be aligned to 4-byte boundaries.");
+                    const std::int64_t vi = ref(v, acc, "bufferView", "bufferViews");
+                    auto& readers = view_readers[static_cast<std::size_t>(vi)];
+                    if (!view.contains("byteStride") &&
+                        std::find(readers.begin(), readers.end(), a) == readers.end()) {
+                        readers.push_back(a);
+                        if (readers.size() > 1)
+                            v.add("MESH_PRIMITIVE_ACCESSOR_WITHOUT_BYTESTRIDE", Severity::Error, ap,
+                                  "bufferView.byteStride must be defined when two or more "
+                                  "accessors use the same buffer view.");
+                    }
+                }
                 const std::int64_t count = int_or(acc, "count", -1);
                 if (name == "POSITION") position_count = count;
                 if (first_count < 0) first_count = count;
@@ -208,6 +231,7 @@ void validate_meshes(Validation& v) {
             std::int64_t element_count = vertex_count;
             if (const std::int64_t ia = ref(v, prim, "indices", "accessors"); ia >= 0) {
                 const std::string ip = ptr(where, "indices");
+                v.use_accessor(ia, AccessorRole::PrimitiveIndices, ViewRole::IndexBuffer, ip);
                 const Json& acc = accessors[static_cast<std::size_t>(ia)];
                 const std::int64_t ct = int_or(acc, "componentType", 0);
                 if (!(acc.contains("type") && acc["type"] == "SCALAR") ||

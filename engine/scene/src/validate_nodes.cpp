@@ -13,7 +13,9 @@ bool has_joints(const Json& mesh) {
     if (!prims.is_array()) return false;
     for (const Json& p : prims) {
         const Json& attrs = Validation::member(p, "attributes");
-        if (attrs.is_object() && attrs.contains("JOINTS_0")) return true;
+        // Khronos counts a primitive as skinned only with both sets.
+        if (attrs.is_object() && attrs.contains("JOINTS_0") && attrs.contains("WEIGHTS_0"))
+            return true;
     }
     return false;
 }
@@ -42,6 +44,10 @@ void validate_nodes(Validation& v) {
     const std::size_t n = nodes.size();
     std::vector<std::int64_t> parent(n, -1);
     std::vector<std::uint8_t> is_joint(n, 0);
+    // Per mesh, whether it is skinned (computed once: many nodes share a mesh).
+    const Json& meshes = v.array("meshes");
+    std::vector<std::uint8_t> skinned_mesh(meshes.size());
+    for (std::size_t m = 0; m < meshes.size(); ++m) skinned_mesh[m] = has_joints(meshes[m]);
     for (const Json& skin : v.array("skins")) {
         for (const Json& j : Validation::member(skin, "joints"))
             if (is_int(j) && as_int(j) >= 0 && static_cast<std::size_t>(as_int(j)) < n)
@@ -52,7 +58,8 @@ void validate_nodes(Validation& v) {
     for (std::size_t i = 0; i < n; ++i) {
         const Json& node = nodes[i];
         if (!node.is_object()) continue;
-        const std::string where = ptr("/nodes", i);
+        // Built only for a message: most nodes have none.
+        auto where = [i] { return ptr("/nodes", i); };
         const Json& children = Validation::member(node, "children");
         if (children.is_array())
             for (std::size_t k = 0; k < children.size(); ++k) {
@@ -61,7 +68,7 @@ void validate_nodes(Validation& v) {
                 if (c < 0 || static_cast<std::size_t>(c) >= n) continue;
                 std::int64_t& p = parent[static_cast<std::size_t>(c)];
                 if (p >= 0 && p != static_cast<std::int64_t>(i))
-                    v.add("NODE_PARENT_OVERRIDE", Severity::Error, ptr(ptr(where, "children"), k),
+                    v.add("NODE_PARENT_OVERRIDE", Severity::Error, ptr(ptr(where(), "children"), k),
                           "Value overrides parent of node " + std::to_string(c) + ".");
                 else
                     p = static_cast<std::int64_t>(i);
@@ -73,7 +80,7 @@ void validate_nodes(Validation& v) {
         for (const Json& x : matrix) matrix_ok &= x.is_number();
         if (matrix_ok) {
             if (has_trs)
-                v.add("NODE_MATRIX_TRS", Severity::Error, ptr(where, "matrix"),
+                v.add("NODE_MATRIX_TRS", Severity::Error, ptr(where(), "matrix"),
                       "A node can have either a matrix or any combination of "
                       "translation/rotation/scale "
                       "(TRS) properties.");
@@ -82,10 +89,10 @@ void validate_nodes(Validation& v) {
                 identity &=
                     matrix[static_cast<std::size_t>(k)].get<double>() == (k % 5 == 0 ? 1.0 : 0.0);
             if (identity)
-                v.add("NODE_MATRIX_DEFAULT", Severity::Information, ptr(where, "matrix"),
+                v.add("NODE_MATRIX_DEFAULT", Severity::Information, ptr(where(), "matrix"),
                       "Do not specify default transform matrix.");
             else if (!decomposable(matrix))
-                v.add("NODE_MATRIX_NON_TRS", Severity::Error, ptr(where, "matrix"),
+                v.add("NODE_MATRIX_NON_TRS", Severity::Error, ptr(where(), "matrix"),
                       "Matrix must be decomposable to TRS.");
         }
         const Json& rotation = Validation::member(node, "rotation");
@@ -102,26 +109,26 @@ void validate_nodes(Validation& v) {
                 }
             }
             if (in_range && std::abs(std::sqrt(len2) - 1.0) > 0.000005)
-                v.add("ROTATION_NON_UNIT", Severity::Error, ptr(where, "rotation"),
+                v.add("ROTATION_NON_UNIT", Severity::Error, ptr(where(), "rotation"),
                       "Rotation quaternion must be normalized.");
         }
         const std::int64_t mesh = ref(v, node, "mesh", "meshes");
         const std::int64_t skin = ref(v, node, "skin", "skins");
         if (mesh >= 0) {
-            const Json& m = v.array("meshes")[static_cast<std::size_t>(mesh)];
-            const bool skinned = has_joints(m);
+            const Json& m = meshes[static_cast<std::size_t>(mesh)];
+            const bool skinned = skinned_mesh[static_cast<std::size_t>(mesh)] != 0;
             if (node.contains("skin") && !skinned)
-                v.add("NODE_SKIN_WITH_NON_SKINNED_MESH", Severity::Error, where,
+                v.add("NODE_SKIN_WITH_NON_SKINNED_MESH", Severity::Error, where(),
                       "Node has skin defined, but mesh has no joints data.");
             if (!node.contains("skin") && skinned)
-                v.add("NODE_SKINNED_MESH_WITHOUT_SKIN", Severity::Warning, where,
+                v.add("NODE_SKINNED_MESH_WITHOUT_SKIN", Severity::Warning, where(),
                       "Node uses skinned mesh, but has no skin defined.");
             if (skin >= 0 && skinned && (has_trs || matrix_ok))
-                v.add("NODE_SKINNED_MESH_LOCAL_TRANSFORMS", Severity::Warning, where,
+                v.add("NODE_SKINNED_MESH_LOCAL_TRANSFORMS", Severity::Warning, where(),
                       "Local transforms will not affect a skinned mesh.");
             const Json& weights = Validation::member(node, "weights");
             if (weights.is_array() && weights.size() != target_count(m))
-                v.add("NODE_WEIGHTS_INVALID", Severity::Error, ptr(where, "weights"),
+                v.add("NODE_WEIGHTS_INVALID", Severity::Error, ptr(where(), "weights"),
                       "The length of weights array (" + std::to_string(weights.size()) +
                           ") does not match the number of morph targets (" +
                           std::to_string(target_count(m)) + ").");
@@ -140,7 +147,7 @@ void validate_nodes(Validation& v) {
         }
         const bool empty = !node.contains("camera") && !node.contains("children") && mesh < 0 &&
                            !node.contains("skin") && !node.contains("extensions") && !is_joint[i];
-        if (empty) v.add("NODE_EMPTY", Severity::Information, where, "Empty node encountered.");
+        if (empty) v.add("NODE_EMPTY", Severity::Information, where(), "Empty node encountered.");
     }
     // Loops: walk up from every node; a walk longer than n has met a cycle.
     std::vector<std::uint8_t> in_loop(n, 0);
@@ -219,6 +226,7 @@ void validate_nodes(Validation& v) {
         if (const std::int64_t ibm = ref(v, skin, "inverseBindMatrices", "accessors"); ibm >= 0) {
             const Json& acc = accessors[static_cast<std::size_t>(ibm)];
             const std::string ip = ptr(where, "inverseBindMatrices");
+            v.use_accessor(ibm, AccessorRole::IBM, ViewRole::IBM, ip);
             if (!(acc.contains("type") && acc["type"] == "MAT4") ||
                 int_or(acc, "componentType", 0) != 5126)
                 v.add("SKIN_IBM_INVALID_FORMAT", Severity::Error, ip,

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 
 namespace sherpa::detail {
@@ -114,22 +115,18 @@ struct ExtensionWalk {
                 }
                 if (!value.is_structured()) continue;
                 const std::size_t mark = pointer.size();
-                pointer += '/';
-                append_key(pointer, key);
+                push_key(pointer, key);
                 segments.push_back(key);
                 walk(value, depth + 1);
                 segments.pop_back();
                 pointer.resize(mark);
             }
         } else if (j.is_array()) {
-            std::vector<std::string> names; // segment storage for this level
-            names.reserve(j.size());
             for (std::size_t i = 0; i < j.size(); ++i) {
                 if (!j[i].is_structured()) continue;
                 const std::size_t mark = pointer.size();
-                names.push_back(std::to_string(i));
-                pointer += '/' + names.back();
-                segments.push_back(names.back());
+                push_index(pointer, i);
+                segments.push_back("#"); // kind_at looks at keys, never at array indices
                 walk(j[i], depth + 1);
                 segments.pop_back();
                 pointer.resize(mark);
@@ -139,6 +136,18 @@ struct ExtensionWalk {
 };
 
 } // namespace
+
+void push_key(std::string& pointer, std::string_view key) {
+    pointer += '/';
+    append_key(pointer, key);
+}
+
+void push_index(std::string& pointer, std::size_t index) {
+    char digits[24];
+    const auto end = std::to_chars(digits, digits + sizeof digits, index).ptr;
+    pointer += '/';
+    pointer.append(digits, end);
+}
 
 std::string ptr(std::string_view base, std::string_view key) {
     std::string out(base);
@@ -157,6 +166,44 @@ void Validation::add(std::string_view code, Severity s, std::string pointer, std
         return;
     }
     report.messages.push_back({std::string(code), std::move(message), std::move(pointer), s});
+}
+
+namespace {
+const char* role_name(AccessorRole r) {
+    constexpr const char* kNames[] = {"",    "VertexAttribute", "PrimitiveIndices",
+                                      "IBM", "AnimationInput",  "AnimationOutput"};
+    return kNames[static_cast<int>(r)];
+}
+const char* role_name(ViewRole r) {
+    constexpr const char* kNames[] = {"", "VertexBuffer", "IndexBuffer", "IBM", "Image", "Other"};
+    return kNames[static_cast<int>(r)];
+}
+} // namespace
+
+void Validation::use_view(std::int64_t view, ViewRole role, const std::string& pointer) {
+    if (view < 0 || static_cast<std::size_t>(view) >= view_roles.size()) return;
+    ViewRole& was = view_roles[static_cast<std::size_t>(view)];
+    if (was == ViewRole::None)
+        was = role;
+    else if (was != role)
+        add("BUFFER_VIEW_TARGET_OVERRIDE", Severity::Error, pointer,
+            std::string("Override of previously set bufferView target or usage. Initial: '") +
+                role_name(was) + "', new: '" + role_name(role) + "'.");
+}
+
+void Validation::use_accessor(std::int64_t a, AccessorRole role, ViewRole view_role,
+                              const std::string& pointer) {
+    if (a < 0 || static_cast<std::size_t>(a) >= accessor_roles.size()) return;
+    AccessorRole& was = accessor_roles[static_cast<std::size_t>(a)];
+    if (was == AccessorRole::None)
+        was = role;
+    else if (was != role)
+        add("ACCESSOR_USAGE_OVERRIDE", Severity::Error, pointer,
+            std::string("Override of previously set accessor usage. Initial: '") + role_name(was) +
+                "', new: '" + role_name(role) + "'.");
+    use_view(ref(*this, member(array("accessors"), static_cast<std::size_t>(a)), "bufferView",
+                 "bufferViews"),
+             view_role, pointer);
 }
 
 const Json& Validation::array(const char* key) const {

@@ -220,119 +220,141 @@ std::string short_text(const Json& j) {
     return s.size() > 40 ? s.substr(0, 37) + "..." : s;
 }
 
+// Walks the document with one pointer string that grows and shrinks with the walk:
+// a pointer is copied only when a message needs it, never built per property.
 struct Schema {
     Validation& v;
+    std::string at; // the JSON pointer of the value being checked
 
-    void type_mismatch(const Json& j, const std::string& p, const char* want) {
-        v.add("TYPE_MISMATCH", Severity::Error, p,
+    // Appends "/key" or "/index" to `at` for the lifetime of the scope.
+    struct Scope {
+        std::string& s;
+        std::size_t mark;
+        Scope(std::string& str, std::string_view key) : s(str), mark(str.size()) {
+            push_key(s, key);
+        }
+        Scope(std::string& str, std::size_t index) : s(str), mark(str.size()) {
+            push_index(s, index);
+        }
+        ~Scope() { s.resize(mark); }
+        Scope(const Scope&) = delete;
+        Scope& operator=(const Scope&) = delete;
+    };
+
+    void type_mismatch(const Json& j, const char* want) {
+        v.add("TYPE_MISMATCH", Severity::Error, at,
               "Type mismatch. Property value " + short_text(j) + " is not a '" + want + "'.");
     }
-    void index(const Json& j, const std::string& p, const char* target) {
-        if (!j.is_number()) return type_mismatch(j, p, "integer");
-        if (!is_int(j)) return type_mismatch(j, p, "integer");
+    void index(const Json& j, const char* target) {
+        if (!j.is_number()) return type_mismatch(j, "integer");
+        if (!is_int(j)) return type_mismatch(j, "integer");
         const std::int64_t i = as_int(j);
         if (i < 0) {
-            v.add("INVALID_INDEX", Severity::Error, p, "Index must be a non-negative integer.");
+            v.add("INVALID_INDEX", Severity::Error, at, "Index must be a non-negative integer.");
             return;
         }
         if (target && static_cast<std::uint64_t>(i) >= v.size(target))
-            v.add("UNRESOLVED_REFERENCE", Severity::Error, p,
+            v.add("UNRESOLVED_REFERENCE", Severity::Error, at,
                   "Unresolved reference: " + std::to_string(i) + ".");
     }
-    void number(const Json& j, const std::string& p, const Prop& pr) {
-        if (!j.is_number()) return type_mismatch(j, p, "number");
+    void number(const Json& j, const Prop& pr) {
+        if (!j.is_number()) return type_mismatch(j, "number");
         const double x = j.get<double>();
         if (x < pr.lo || x > pr.hi || (pr.open && x == pr.lo))
-            v.add("VALUE_NOT_IN_RANGE", Severity::Error, p,
+            v.add("VALUE_NOT_IN_RANGE", Severity::Error, at,
                   "Value " + short_text(j) + " is out of range.");
     }
-    void property(const Json& j, const std::string& p, const Prop& pr) {
+    void property(const Json& j, const Prop& pr) {
         switch (pr.type) {
         case T::Index:
-            index(j, p, pr.target);
+            index(j, pr.target);
             break;
         case T::IndexArray: {
-            if (!j.is_array()) return type_mismatch(j, p, "array");
-            if (j.empty()) v.add("EMPTY_ENTITY", Severity::Error, p, "Entity cannot be empty.");
+            if (!j.is_array()) return type_mismatch(j, "array");
+            if (j.empty()) v.add("EMPTY_ENTITY", Severity::Error, at, "Entity cannot be empty.");
             std::vector<std::int64_t> seen;
             for (std::size_t i = 0; i < j.size(); ++i) {
-                index(j[i], ptr(p, i), pr.target);
+                const Scope element(at, i);
+                index(j[i], pr.target);
                 if (!is_int(j[i])) continue;
                 const std::int64_t x = as_int(j[i]);
                 bool dup = false;
                 for (std::int64_t s : seen) dup |= s == x;
-                if (dup)
-                    v.add("DUPLICATE_ELEMENTS", Severity::Error, ptr(p, i), "Duplicate element.");
+                if (dup) v.add("DUPLICATE_ELEMENTS", Severity::Error, at, "Duplicate element.");
                 if (seen.size() < 4096) seen.push_back(x); // keeps the check linear on big arrays
             }
             break;
         }
         case T::Int:
-            if (!j.is_number() || !is_int(j)) return type_mismatch(j, p, "integer");
+            if (!j.is_number() || !is_int(j)) return type_mismatch(j, "integer");
             if (static_cast<double>(as_int(j)) < pr.lo || static_cast<double>(as_int(j)) > pr.hi)
-                v.add("VALUE_NOT_IN_RANGE", Severity::Error, p,
+                v.add("VALUE_NOT_IN_RANGE", Severity::Error, at,
                       "Value " + short_text(j) + " is out of range.");
             break;
         case T::Num:
-            number(j, p, pr);
+            number(j, pr);
             break;
         case T::NumArray: {
-            if (!j.is_array()) return type_mismatch(j, p, "array");
+            if (!j.is_array()) return type_mismatch(j, "array");
             bool length_ok = pr.lengths.size() == 0;
             for (int n : pr.lengths) length_ok |= j.size() == static_cast<std::size_t>(n);
             if (!length_ok) {
-                v.add("ARRAY_LENGTH_NOT_IN_LIST", Severity::Error, p,
+                v.add("ARRAY_LENGTH_NOT_IN_LIST", Severity::Error, at,
                       "Invalid array length " + std::to_string(j.size()) + ".");
                 return;
             }
-            if (j.empty()) v.add("EMPTY_ENTITY", Severity::Error, p, "Entity cannot be empty.");
+            if (j.empty()) v.add("EMPTY_ENTITY", Severity::Error, at, "Entity cannot be empty.");
             for (std::size_t i = 0; i < j.size(); ++i) {
+                if (j[i].is_number() && pr.lo == -INFINITY && pr.hi == INFINITY) continue;
+                const Scope element(at, i);
                 if (!j[i].is_number()) {
-                    v.add("ARRAY_TYPE_MISMATCH", Severity::Error, ptr(p, i),
+                    v.add("ARRAY_TYPE_MISMATCH", Severity::Error, at,
                           "Type mismatch. Array element " + short_text(j[i]) +
                               " is not a 'number'.");
                     continue;
                 }
-                number(j[i], ptr(p, i), pr);
+                number(j[i], pr);
             }
             break;
         }
         case T::Str:
-            if (!j.is_string()) type_mismatch(j, p, "string");
+            if (!j.is_string()) type_mismatch(j, "string");
             break;
         case T::Bool:
-            if (!j.is_boolean()) type_mismatch(j, p, "boolean");
+            if (!j.is_boolean()) type_mismatch(j, "boolean");
             break;
         case T::Obj:
-            if (!j.is_object()) return type_mismatch(j, p, "object");
-            object(j, p, pr.target);
+            if (!j.is_object()) return type_mismatch(j, "object");
+            object(j, pr.target);
             break;
         case T::ObjArr: {
-            if (!j.is_array()) return type_mismatch(j, p, "array");
-            if (j.empty()) v.add("EMPTY_ENTITY", Severity::Error, p, "Entity cannot be empty.");
+            if (!j.is_array()) return type_mismatch(j, "array");
+            if (j.empty()) v.add("EMPTY_ENTITY", Severity::Error, at, "Entity cannot be empty.");
+            const Kind* kind = kind_named(pr.target);
             for (std::size_t i = 0; i < j.size(); ++i) {
+                const Scope element(at, i);
                 if (!j[i].is_object())
-                    type_mismatch(j[i], ptr(p, i), "object");
+                    type_mismatch(j[i], "object");
                 else
-                    object(j[i], ptr(p, i), pr.target);
+                    object(j[i], kind);
             }
             break;
         }
         case T::IntEnum: {
-            if (!j.is_number() || !is_int(j)) return type_mismatch(j, p, "integer");
+            if (!j.is_number() || !is_int(j)) return type_mismatch(j, "integer");
             bool ok = false;
             for (int x : pr.lengths) ok |= as_int(j) == x;
             if (!ok)
-                v.add("VALUE_NOT_IN_LIST", Severity::Warning, p,
+                v.add("VALUE_NOT_IN_LIST", Severity::Warning, at,
                       "Invalid value " + short_text(j) + ".");
             break;
         }
         case T::StrEnum: {
-            if (!j.is_string()) return type_mismatch(j, p, "string");
+            if (!j.is_string()) return type_mismatch(j, "string");
             bool ok = false;
             for (const char* w : pr.words) ok |= j.get_ref<const std::string&>() == w;
             if (!ok)
-                v.add("VALUE_NOT_IN_LIST", Severity::Warning, p,
+                v.add("VALUE_NOT_IN_LIST", Severity::Warning, at,
                       "Invalid value " + short_text(j) + ".");
             break;
         }
@@ -340,31 +362,36 @@ struct Schema {
             break;
         }
     }
-    void object(const Json& obj, const std::string& p, const char* kind_name) {
-        const Kind* kind = kind_named(kind_name);
+    void object(const Json& obj, const char* kind_name) { object(obj, kind_named(kind_name)); }
+    void object(const Json& obj, const Kind* kind) {
         if (!kind) return;
+        const bool root = std::strcmp(kind->name, "root") == 0;
         for (const auto& [key, value] : obj.items()) {
             const Prop* found = nullptr;
             for (const Prop& pr : kind->props)
                 if (key == pr.name) found = &pr;
             if (found) {
-                property(value, ptr(p, key), *found);
+                const Scope member(at, key);
+                property(value, *found);
             } else if (key == "extensions") {
-                if (!value.is_object()) type_mismatch(value, ptr(p, key), "object");
+                const Scope member(at, key);
+                if (!value.is_object()) type_mismatch(value, "object");
             } else if (key == "extras") {
+                const Scope member(at, key);
                 if (!value.is_object())
-                    v.add("NON_OBJECT_EXTRAS", Severity::Information, ptr(p, key),
+                    v.add("NON_OBJECT_EXTRAS", Severity::Information, at,
                           "Prefer JSON Objects for extras.");
-            } else if (key == "name" && std::strcmp(kind_name, "root") != 0) {
-                if (!value.is_string()) type_mismatch(value, ptr(p, key), "string");
+            } else if (key == "name" && !root) {
+                const Scope member(at, key);
+                if (!value.is_string()) type_mismatch(value, "string");
             } else {
-                v.add("UNEXPECTED_PROPERTY", Severity::Warning, ptr(p, key),
-                      "Unexpected property.");
+                const Scope member(at, key);
+                v.add("UNEXPECTED_PROPERTY", Severity::Warning, at, "Unexpected property.");
             }
         }
         for (const Prop& pr : kind->props)
             if (pr.required && !obj.contains(pr.name))
-                v.add("UNDEFINED_PROPERTY", Severity::Error, p,
+                v.add("UNDEFINED_PROPERTY", Severity::Error, at,
                       std::string("Property '") + pr.name + "' must be defined.");
     }
 };
@@ -421,7 +448,7 @@ void check_version(Validation& v) {
 } // namespace
 
 void validate_schema(Validation& v) {
-    Schema{v}.object(v.root, "", "root");
+    Schema{v, {}}.object(v.root, "root");
     check_version(v);
 }
 

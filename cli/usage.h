@@ -1,8 +1,8 @@
 #pragma once
 // One usage text per sherpa-cli command, in main.cpp's command table: printed by
 // `sherpa-cli COMMAND --help` and `sherpa-cli --help`, and checked against the
-// command-line guide docs/cli.md (tests/cli/check_docs_usage.py). A usage error prints one line and a pointer to
-// --help.
+// command-line guide docs/cli.md (tests/cli/check_docs_usage.py). A usage error
+// prints one line and a pointer to --help.
 #include "cli_common.h"
 
 #include <span>
@@ -17,8 +17,8 @@ struct Command {
     // "SYNOPSIS\n[\nDETAILS]": the synopsis lines start with "sherpa-cli NAME" (or
     // continue one with an indent); the details follow one blank line. Placeholders
     // {families}, {views}, {overlays}, {texture-options}, {texture-help},
-    // {compare-options}, {compare-help}, {shadow-options}, {environment-options} and {camera-help} are filled
-    // from the engine's own lists and the shared option parsers.
+    // {compare-options}, {compare-help}, {shadow-options}, {environment-options} and {camera-help}
+    // are filled from the engine's own lists and the shared option parsers.
     std::string_view usage;
 };
 

@@ -97,9 +97,9 @@ public:
     // Uploads `scene`, replacing the current one (freed once frames using it finish).
     // Prepares its textures first, on this thread, with texture_settings().
     void load(const Scene& scene, StreamPolicy policy = StreamPolicy::UsedByMaterials);
-    // The same with textures already prepared for `scene` (tex::prepare_scene_textures()
-    // for texture_target(context().info(), ...), e.g. on a loader thread); only the
-    // upload happens here.
+    // The same with textures already prepared for `scene` (prepare_scene_textures()
+    // of the texture layer, for this device's texture_target(), e.g. on a loader
+    // thread); only the upload happens here.
     void load(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
               StreamPolicy policy = StreamPolicy::UsedByMaterials);
     const TextureSettings& texture_settings() const;

@@ -4,7 +4,7 @@
 #   redraws the charts from the existing docs/textures/sweep.csv)
 # Runs sherpa-texture-sweep single-threaded over the corpus (13 colour maps, the
 # alpha maps, 13 normal maps), then draws ms/MPix against PSNR (BC7) and against
-# mean normal-angle error (BC5) with the issue's anchor points as markers.
+# mean normal-angle error (BC5) with the reference anchor points as markers.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build="${1:-build}"
@@ -34,7 +34,7 @@ set ylabel 'PSNR, dB'
 plot '$series/bc7-rgb.csv' using 5:7 with linespoints pt 7 lw 2 title 'Sherpa BC7 levels 0-4, pooled RGB PSNR', \
      '$series/bc7-rgb.csv' using 5:6 with linespoints pt 6 dt 2 title 'Sherpa BC7, mean of per-texture RGB PSNR', \
      '$series/bc7-rgba.csv' using 5:7 with linespoints pt 9 title 'Sherpa BC7 on alpha maps, pooled RGBA PSNR', \
-     '$series/anchors-bc7.csv' using 3:4:2 with labels point pt 2 ps 1.5 offset 0,-0.9 font ',10' title 'anchors (issue #5)'
+     '$series/anchors-bc7.csv' using 3:4:2 with labels point pt 2 ps 1.5 offset 0,-0.9 font ',10' title 'anchors'
 
 set output 'docs/textures/bc5_speed_quality.$2'
 set title 'BC5 normal maps: speed against mean normal-angle error (13 normal maps)'
@@ -42,7 +42,7 @@ set ylabel 'mean angle error, degrees (lower is better)'
 set yrange [0:1.7]
 plot '$series/bc5.csv' using 5:8 with linespoints pt 7 lw 2 title 'Sherpa BC5 levels 0-1 (reference Z rebuilt from source RG)', \
      '$series/bc5.csv' using 5:9 with linespoints pt 6 dt 2 title 'Sherpa BC5 levels 0-1 (reference: normalised source RGB)', \
-     '$series/anchors-bc5.csv' using 3:5:2 with labels point pt 2 ps 1.5 offset 0,0.9 font ',10' title 'anchors (issue #5)'
+     '$series/anchors-bc5.csv' using 3:5:2 with labels point pt 2 ps 1.5 offset 0,0.9 font ',10' title 'anchors'
 PLOT
 }
 draw svg svg

@@ -260,8 +260,9 @@ int run_render(Args args) {
         const gpu::TextureSettings texture_settings = texture_options.gpu_settings();
         renderer.set_texture_settings(texture_settings); // how missing textures are drawn
         auto start = std::chrono::steady_clock::now();
-        const auto textures =
-            gpu::prepare_scene_textures(*loaded.scene, context.info(), texture_settings);
+        const auto textures = tex::prepare_scene_textures(
+            *loaded.scene, gpu::texture_target(context.info(), texture_settings),
+            gpu::texture_pipeline_options(texture_settings));
         run.timing.texture_prepare_ms = ms_since(start);
         start = std::chrono::steady_clock::now();
         renderer.load(*loaded.scene, textures,

@@ -11,10 +11,8 @@ std::optional<std::filesystem::path> TextureCliOptions::resolved_cache_dir() con
 }
 
 tex::PipelineOptions TextureCliOptions::pipeline_options() const {
-    // The GPU layer's mapping, for a device that samples BC (--no-bc forces RGBA8).
-    gpu::DeviceInfo bc_device;
-    bc_device.bc_textures = true;
-    return gpu::texture_pipeline_options(bc_device, gpu_settings());
+    // The options mapped once (gpu_settings()), then as the renderer maps them.
+    return gpu::texture_pipeline_options(gpu_settings());
 }
 
 gpu::TextureSettings TextureCliOptions::gpu_settings() const {

@@ -43,10 +43,11 @@ struct TextureCliOptions {
 
     // The directory in use: nullopt with --no-cache, else --cache-dir or the default.
     std::optional<std::filesystem::path> resolved_cache_dir() const;
-    // For the texture pipeline run directly (no device: BC unless --no-bc).
-    tex::PipelineOptions pipeline_options() const;
-    // For a renderer, which also asks the device whether it samples BC.
+    // The one mapping of these options: for a renderer (which prepares textures for
+    // its device's gpu::texture_target()) and for the texture pipeline run directly.
     gpu::TextureSettings gpu_settings() const;
+    // gpu_settings() as the texture pipeline's options (BC unless --no-bc).
+    tex::PipelineOptions pipeline_options() const;
 };
 
 enum class OptionMatch { NotMine, Taken, Bad };

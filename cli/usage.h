@@ -1,8 +1,8 @@
 #pragma once
 // One usage text per sherpa-cli command, in main.cpp's command table: printed by
-// `sherpa-cli COMMAND --help` and `sherpa-cli --help`, and checked against the README
-// (tests/cli/check_readme_usage.py). A usage error prints one line and a pointer to
-// --help.
+// `sherpa-cli COMMAND --help` and `sherpa-cli --help`, and checked against the
+// command-line guide docs/cli.md (tests/cli/check_docs_usage.py). A usage error
+// prints one line and a pointer to --help.
 #include "cli_common.h"
 
 #include <span>

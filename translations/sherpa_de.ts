@@ -1446,8 +1446,8 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <translation> → Bild %1 (%2)</translation>
     </message>
     <message>
-        <source> → cache: not available</source>
-        <translation> → Cache: nicht verfügbar</translation>
+        <source> → cache: %1</source>
+        <translation> → Cache: %1</translation>
     </message>
     <message>
         <source>Double-click to show this texture in the texture dock</source>

@@ -1446,8 +1446,8 @@ The current scene is kept.</translation>
         <translation> → image %1 (%2)</translation>
     </message>
     <message>
-        <source> → cache: not available</source>
-        <translation> → cache: not available</translation>
+        <source> → cache: %1</source>
+        <translation> → cache: %1</translation>
     </message>
     <message>
         <source>Double-click to show this texture in the texture dock</source>

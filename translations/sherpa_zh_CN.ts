@@ -1446,8 +1446,8 @@ The current scene is kept.</source>
         <translation> → 图像 %1 (%2)</translation>
     </message>
     <message>
-        <source> → cache: not available</source>
-        <translation> → 缓存：不可用</translation>
+        <source> → cache: %1</source>
+        <translation> → 缓存：%1</translation>
     </message>
     <message>
         <source>Double-click to show this texture in the texture dock</source>

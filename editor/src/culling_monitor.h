@@ -52,7 +52,6 @@ public:
     // newest sample when it comes (one for an older sample is dropped) and emits
     // updated() again. Nothing waits for it.
     void setGpuPath(bool gpu);
-    bool gpuPath() const { return gpu_path_; }
     void setGpuCheck(GpuCullCheck check) { gpu_check_ = std::move(check); }
     bool frozen() const { return frozen_.has_value(); }
     // The camera the culling runs for (the frozen one while frozen).

@@ -69,30 +69,8 @@ QString GpuViewport::deviceName() const {
         .arg(VK_API_VERSION_PATCH(info.api_version));
 }
 
-TexturePlan GpuViewport::texturePlan() const {
-    const gpu::DeviceInfo& info = impl_->context->info();
-    TexturePlan plan;
-    plan.device = true;
-    plan.device_name = info.name;
-    plan.bc_textures = info.bc_textures;
-    plan.cpu_device = info.is_cpu();
-    return plan;
-}
-
-PreparedTextures prepareTextures(const TexturePlan& plan, const Scene& scene,
-                                 const ProgressCallback& progress, const CancelToken* cancel) {
-    if (!plan.device) return nullptr;
-    gpu::DeviceInfo device;
-    device.name = plan.device_name;
-    device.bc_textures = plan.bc_textures;
-    device.type = plan.cpu_device ? VK_PHYSICAL_DEVICE_TYPE_CPU : VK_PHYSICAL_DEVICE_TYPE_OTHER;
-    gpu::TextureSettings settings;
-    if (!plan.cache_dir.empty()) settings.cache_dir = std::filesystem::path(plan.cache_dir);
-    settings.quality = plan.bc7_level;
-    settings.progress = progress;
-    settings.cancel = cancel;
-    PreparedTextures set = gpu::prepare_scene_textures(scene, device, settings);
-    return set && !set->cancelled ? set : nullptr;
+tex::TextureTarget GpuViewport::textureTarget() const {
+    return gpu::texture_target(impl_->context->info(), impl_->renderer->texture_settings());
 }
 
 void GpuViewport::setReducedFramePrepass(bool prepass) {
@@ -148,12 +126,8 @@ void GpuViewport::useStreamsFor(const ViewportFrame& frame) {
     upload();
 }
 
-QStringList GpuViewport::validationMessages() const {
-    QStringList out;
-    for (const gpu::ValidationMessage& m : impl_->context->validation().messages())
-        out << QStringLiteral("[%1] %2").arg(QString::fromStdString(m.id_name),
-                                             QString::fromStdString(m.text));
-    return out;
+gpu::Renderer& GpuViewport::renderer() {
+    return *impl_->renderer;
 }
 
 const Scene* GpuViewport::scene() const {
@@ -299,12 +273,6 @@ std::optional<GpuMaterialReadback> GpuViewport::readMaterial(int material) {
         gpu::read_material(*impl_->renderer, *scene(), material);
     if (!r) return std::nullopt;
     return GpuMaterialReadback{r->record, std::move(r->bindless_to_texture)};
-}
-
-std::int64_t GpuViewport::objectCount() const {
-    // Settle first: objects retired by earlier frames are freed once the GPU is idle.
-    impl_->renderer->resources().flush();
-    return static_cast<std::int64_t>(impl_->renderer->resources().counts().total());
 }
 
 } // namespace sherpa::editor

@@ -27,6 +27,7 @@ class QVulkanInstance;
 
 namespace sherpa::gpu {
 struct AccelerationStats;
+class Renderer;
 struct RenderSettings;
 } // namespace sherpa::gpu
 
@@ -72,12 +73,6 @@ struct ViewportFrame {
     ViewportDisplay display;
 };
 
-// Prepares a scene's textures as `plan` says (the texture pipeline: cache, BC7/BC5,
-// CPU decode for CPU devices); CPU work only, for the loader thread. Null when
-// cancelled or without a device in the plan.
-PreparedTextures prepareTextures(const TexturePlan& plan, const Scene& scene,
-                                 const ProgressCallback& progress, const CancelToken* cancel);
-
 class GpuViewport {
 public:
     // Sets API version, extensions (and validation layer when on) that the engine
@@ -91,9 +86,10 @@ public:
     ~GpuViewport();
 
     QString deviceName() const;
-    // The device's side of the loader's texture plan (its capabilities); the caller
-    // adds the cache settings. Plain data; prepareTextures() runs it on any thread.
-    TexturePlan texturePlan() const;
+    // What the loader prepares textures for on this device (BC or not, BC7 decoded
+    // for a CPU device, its name): plain data for tex::prepare_scene_textures() on
+    // any thread.
+    tex::TextureTarget textureTarget() const;
     // Material slots whose texture is missing or undecodable: a magenta/black checker
     // in colour slots (true), or the glTF defaults (false). Applies at the next setSession().
     void setMissingTexturesChecker(bool checker);
@@ -137,8 +133,6 @@ public:
     void releaseSurface();
     // The material record as stored in the GPU buffer, and bindless slot -> texture.
     std::optional<GpuMaterialReadback> readMaterial(int material);
-    // Buffers, images and samplers alive in the engine (leak checks).
-    std::int64_t objectCount() const;
     // Bytes of the loaded scene's textures on the GPU (0 without a scene).
     std::uint64_t textureBytes() const;
     // GPU time (timestamps, first to last pass) of the latest completed frame; -1
@@ -151,9 +145,6 @@ public:
     // then each cascade); false before any culled frame. `cached_shadows`: the cascades were
     // reused, not drawn.
     bool lastCullPasses(std::vector<CullStats>& passes, bool& cached_shadows) const;
-    // Messages of the Khronos validation layer so far (SHERPA_VALIDATION=1 turns
-    // it on in release builds), one "[id] text" each; tests require none.
-    QStringList validationMessages() const;
     // Runs the renderer's GPU culling shader once for `frustum` over every instance
     // of the scene and compares its visible set with `cpu_visible` (per scene
     // instance). False without a scene.
@@ -165,8 +156,12 @@ public:
     bool checkGpuCulling(const Frustum& frustum, CullMethod method,
                          const std::vector<std::uint8_t>& cpu_visible, GpuCullCheck& out);
     // "NAME (Vulkan X.Y.Z)" of every physical device of `instance` (a VkInstance),
-    // through the engine's enumeration; empty in builds without the engine renderer.
+    // through the engine's enumeration.
     static QStringList deviceNames(void* instance);
+    // The engine renderer behind the viewport, and through Renderer::context() its
+    // device (validation log, resources): for callers on the render thread that use
+    // the engine API directly.
+    gpu::Renderer& renderer();
 
 private:
     struct Impl;

@@ -65,6 +65,12 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent, bool ray_tracin
     setAcceptDrops(true);
     setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
     culling_ = new CullingMonitor(context_, this);
+    // Named children: tests and tools find them with findChild(), not through accessors.
+    culling_->setObjectName(QStringLiteral("cullingMonitor"));
+    loader_.setParent(this); // members: they leave the children before QObject deletes them
+    loader_.setObjectName(QStringLiteral("sceneLoader"));
+    compare_loader_.setParent(this);
+    compare_loader_.setObjectName(QStringLiteral("compareLoader"));
 
     viewport_ = new ViewportWindow(vulkan_);
     viewport_container_ = QWidget::createWindowContainer(viewport_, this);
@@ -84,6 +90,7 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent, bool ray_tracin
     compare_ = new CompareControls(this);
 
     progress_ = new QProgressBar(this);
+    progress_->setObjectName(QStringLiteral("loadProgress"));
     progress_->setMaximumWidth(220);
     progress_->hide();
     cancel_ = new QPushButton(this);

@@ -67,9 +67,7 @@ public:
     ValidationDock* validationDock() const { return validation_; }
     // The renderer ray traces (device support and --rt on); false until the device is known.
     bool rayTracing() const { return ray_tracing_; }
-    CullingMonitor& cullingMonitor() const { return *culling_; }
     ViewportWindow* viewport() const { return viewport_; }
-    SceneLoadJob& loader() { return loader_; }
 
     // Starts loading; the current scene stays until the new one is ready.
     void openScene(const QString& spec);
@@ -117,19 +115,14 @@ public:
     std::vector<std::uint32_t> outlinedInstances() const;
     // The settings of the last frame handed to the renderer.
     const ViewportFrame& lastFrame() const { return last_frame_; }
-    // The serial of the last frame request (FrameReport::request of its frame).
-    std::uint64_t lastRequest() const { return last_request_; }
     // The last frame the render thread drew (size, scale, timings).
     const FrameReport& lastReport() const { return *last_report_; }
-    // The progress bar's text as last shown during a load.
-    const QString& lastProgressText() const { return last_progress_; }
     // The thread that owns the engine and draws; null without a usable Vulkan device.
     RenderThread* renderer() const { return render_.get(); }
     // The viewport's mode switch and side B of a comparison (main_window_compare.cpp).
     CompareControls& compareControls() const { return *compare_; }
     // The Environment menu and View › Tone Mapping (main_window_environment.cpp).
     EnvironmentMenu& environmentMenu() const { return *environment_; }
-    DifferenceLegend* differenceLegend() const { return legend_; }
     // Loads `spec` as side B of the comparison (File dialog of "Another File…");
     // `source_textures`: its textures uploaded as decoded from their images, not
     // through BC7/BC5 (the compression's error against the source).
@@ -137,8 +130,6 @@ public:
     // Loads this file again as side B with every triangle primitive's tangents made by
     // `method` (authored ones replaced), from the file's unsplit vertices.
     void compareWithTangents(TangentMethod method);
-    // The other file's session while comparing with it (null otherwise).
-    const SharedSession& compareSession() const { return compare_session_; }
 
 Q_SIGNALS:
     void sceneLoaded(const QString& spec, double ms);
@@ -197,7 +188,7 @@ private:
     void applyEnvironment(); // the menu's environment to the viewport
     // A frame the ray tracer refused: said in the log and status bar, back to raster.
     void onRefused(const QString& why);
-    TexturePlan texturePlan() const; // the device's, with the cache settings of now
+    tex::PipelineOptions textureOptions() const; // the texture cache settings of now
     void onLoaded(SharedSession session);
     void onLoadFailed(const QString& spec, const QString& error);
     void onProgress(LoadStep step, int done, int total);
@@ -212,16 +203,15 @@ private:
     SceneLoadJob loader_;
     CullingMonitor* culling_ = nullptr;
     QVulkanInstance* vulkan_ = nullptr;
-    std::unique_ptr<RenderThread> render_; // null without a usable Vulkan device
-    TexturePlan device_plan_;              // the device's side of the loader's texture plan
-    bool device_pending_ = false;          // the render thread is still making the device
-    bool ray_tracing_asked_ = true;        // --rt on|off
-    bool ray_tracing_ = false;             // the device's renderer ray traces
-    QString pending_open_;                 // asked for while the device was pending
-    bool gpu_failed_ = false;              // a frame threw: stop drawing, say so once
+    std::unique_ptr<RenderThread> render_;             // null without a usable Vulkan device
+    std::optional<tex::TextureTarget> texture_target_; // the device's, once it is known
+    bool device_pending_ = false;   // the render thread is still making the device
+    bool ray_tracing_asked_ = true; // --rt on|off
+    bool ray_tracing_ = false;      // the device's renderer ray traces
+    QString pending_open_;          // asked for while the device was pending
+    bool gpu_failed_ = false;       // a frame threw: stop drawing, say so once
     std::weak_ptr<const tex::PreparedTextureSet> logged_textures_; // logTextureMessages()
     std::unique_ptr<FrameReport> last_report_;
-    std::uint64_t last_request_ = 0;
     FrameTimes frame_times_;
     ViewportWindow* viewport_ = nullptr;
     QWidget* viewport_container_ = nullptr;
@@ -258,7 +248,6 @@ private:
     bool remember_layout_ = true;
     int pass_frames_left_ = 0; // extra frames until the pass table has the first frame
     ViewportFrame last_frame_;
-    QString last_progress_;
     SceneFileWatch* file_watch_ = nullptr;
     QPointer<QMessageBox> reload_offer_;   // the open offer to reload, if any
     QActionGroup* reload_group_ = nullptr; // Settings › When the File Changes

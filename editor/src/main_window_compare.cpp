@@ -50,14 +50,14 @@ void MainWindow::connectCompare() {
 
 void MainWindow::compareWithFile(const QString& spec, bool source_textures) {
     log_->append(LogDock::Level::Info, tr("Side B: loading %1…").arg(spec));
-    TexturePlan plan = texturePlan();
+    tex::PipelineOptions options = textureOptions();
     compare_label_ = QFileInfo(spec).fileName();
     compare_tangents_.reset();
     if (source_textures) {
-        plan.bc_textures = false; // RGBA8 as decoded from the images
+        options.device_supports_bc = false; // RGBA8 as decoded from the images
         compare_label_ = tr("%1, source textures").arg(compare_label_);
     }
-    compare_loader_.start(spec, plan);
+    compare_loader_.start(spec, texture_target_, options);
 }
 
 void MainWindow::compareWithTangents(TangentMethod method) {
@@ -68,7 +68,7 @@ void MainWindow::compareWithTangents(TangentMethod method) {
         tr("%1, tangents: %2")
             .arg(QFileInfo(spec).fileName(), CompareControls::tangentMethodName(method));
     compare_tangents_ = method;
-    compare_loader_.start(spec, texturePlan(), method);
+    compare_loader_.start(spec, texture_target_, textureOptions(), method);
     // What side A's tangents are, so that the difference is read for what it is.
     const Scene* scene = context_.scene();
     if (!scene) return;

@@ -27,24 +27,24 @@
 namespace sherpa::editor {
 
 void MainWindow::openScene(const QString& spec) {
-    if (device_pending_) { // the texture plan needs the device's capabilities
+    if (device_pending_) { // textures are prepared for the device: wait for it
         pending_open_ = spec;
         return;
     }
     log_->append(LogDock::Level::Info, tr("Loading %1…").arg(spec));
-    loader_.start(spec, texturePlan());
+    loader_.start(spec, texture_target_, textureOptions());
 }
 
-TexturePlan MainWindow::texturePlan() const {
-    // Textures are prepared on the loader thread for this device, with the cache
-    // settings of this moment.
-    TexturePlan plan = device_plan_;
-    plan.cache_dir = settings_.cacheDirectory().toStdString();
+tex::PipelineOptions MainWindow::textureOptions() const {
+    // Textures are prepared on the loader thread with the cache settings of this moment.
+    tex::PipelineOptions options;
+    const QString dir = settings_.cacheDirectory();
+    if (!dir.isEmpty()) options.cache_dir = std::filesystem::path(dir.toStdString());
     const QString quality = settings_.textureQuality();
-    plan.bc7_level = quality == QLatin1String("fast")   ? tex::kBc7MinLevel
-                     : quality == QLatin1String("best") ? tex::kBc7MaxLevel
-                                                        : tex::kBc7DefaultLevel;
-    return plan;
+    options.bc7_level = quality == QLatin1String("fast")   ? tex::kBc7MinLevel
+                        : quality == QLatin1String("best") ? tex::kBc7MaxLevel
+                                                           : tex::kBc7DefaultLevel;
+    return options;
 }
 
 void MainWindow::reloadScene() {
@@ -86,7 +86,6 @@ void MainWindow::onProgress(LoadStep step, int done, int total) {
     case LoadStep::Idle:
         break;
     }
-    last_progress_ = progress_->text();
 }
 
 void MainWindow::onLoaded(SharedSession session) {

@@ -407,7 +407,7 @@ void MainWindow::openFileDialog() {
 void MainWindow::showAbout() {
     QString device = tr("none (Vulkan unavailable)");
     if (render_) {
-        device = QString::fromStdString(device_plan_.device_name);
+        device = texture_target_ ? QString::fromStdString(texture_target_->name) : QString();
     } else if (vulkan_ && vulkan_->isValid()) {
         // Every physical device the instance sees (the engine picks lavapipe first).
         const QStringList names = GpuViewport::deviceNames(vulkan_->vkInstance());

@@ -38,7 +38,7 @@ void MainWindow::createRenderer() {
         return;
     }
     // The device is made on the render thread while the window shows. openScene()
-    // waits for it (the loader's texture plan needs its capabilities): a scene asked
+    // waits for it (the loader prepares textures for its TextureTarget): a scene asked
     // for meanwhile starts loading when it is known, either way.
     device_pending_ = true;
     render_ = std::make_unique<RenderThread>(
@@ -46,11 +46,11 @@ void MainWindow::createRenderer() {
             return GpuViewport::create(*instance, rt, error);
         });
     connect(render_.get(), &RenderThread::deviceReady, this,
-            [this](const TexturePlan& plan, const QString& name, double ms, bool rt) {
+            [this](const tex::TextureTarget& target, const QString& name, double ms, bool rt) {
                 log_->append(
                     LogDock::Level::Info,
                     tr("Rendering on %1 (renderer ready in %2 ms).").arg(name).arg(ms, 0, 'f', 1));
-                device_plan_ = plan;
+                texture_target_ = target;
                 ray_tracing_ = rt;
                 compare_->setRayTracing(rt);
                 applyEnvironment();
@@ -190,7 +190,7 @@ void MainWindow::renderFrame() {
     if (!render_ || gpu_failed_) return;
     last_frame_ = currentFrame();
     // Handed over, not waited for: a newer request replaces it if not started yet.
-    last_request_ = render_->requestFrame(last_frame_, viewport_->vulkanSurface());
+    render_->requestFrame(last_frame_, viewport_->vulkanSurface());
 }
 
 void MainWindow::onFrameDone(const FrameReport& report) {
@@ -223,7 +223,7 @@ void MainWindow::onFrameDone(const FrameReport& report) {
            "paused the full frame follows.")
             .arg(frame_times_.count())
             .arg(kGoalFps));
-    viewport_->frameDrawn(report.ms);
+    viewport_->frameDrawn();
     if (report.cull_passes)
         culling_dock_->setRendererPasses(report.passes, report.cached_shadows);
     else if (context_.scene() && pass_frames_left_ > 0) {

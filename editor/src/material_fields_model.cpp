@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "format_values.h"
+#include "texture_table_model.h"
 
 #include <sherpa/render/gpu_structs.h>
 
@@ -149,8 +150,10 @@ QString MaterialFieldsModel::chain(int texture) const {
                                                      : tr("generated");
         text += tr(" → image %1 (%2)").arg(t.image).arg(where);
     }
-    // The texture cache (issue #5) is not in this build; say so rather than invent a state.
-    text += tr(" → cache: not available");
+    // The texture cache's state of the texture as prepared for the viewport (none
+    // without a device: nothing was prepared, so nothing is said).
+    if (const tex::PreparedTexture* r = TextureTableModel::preparedRecord(*session_, texture))
+        text += tr(" → cache: %1").arg(TextureTableModel::cacheStateText(*r));
     return text;
 }
 

@@ -32,6 +32,11 @@ RenderThread::~RenderThread() {
     if (thread_.joinable()) thread_.join();
 }
 
+std::uint64_t RenderThread::latestRequest() const {
+    std::lock_guard lock(mutex_);
+    return serial_;
+}
+
 std::uint64_t RenderThread::requestFrame(const ViewportFrame& frame, std::uint64_t surface) {
     std::uint64_t serial = 0;
     {
@@ -66,11 +71,6 @@ void RenderThread::setInteractiveScaling(bool on) {
 void RenderThread::setTargetFrameMs(double ms) {
     std::lock_guard lock(mutex_);
     target_ms_ = ms;
-}
-
-float RenderThread::interactiveScale() const {
-    std::lock_guard lock(mutex_);
-    return scaling_ ? scale_ : 1.0f;
 }
 
 bool RenderThread::renderAndWait(const ViewportFrame& frame, std::uint64_t surface) {
@@ -120,8 +120,9 @@ bool RenderThread::makeDevice() {
         return false;
     }
     QMetaObject::invokeMethod(
-        this, [this, plan = gpu_->texturePlan(), name = gpu_->deviceName(), ms = ms_since(start),
-               rt = gpu_->rayTracing()] { Q_EMIT deviceReady(plan, name, ms, rt); });
+        this,
+        [this, target = gpu_->textureTarget(), name = gpu_->deviceName(), ms = ms_since(start),
+         rt = gpu_->rayTracing()] { Q_EMIT deviceReady(target, name, ms, rt); });
     return true;
 }
 

@@ -57,6 +57,9 @@ public:
     // request comes for kRestMs (the camera rests, playback pauses), the last frame is
     // drawn again at full size (the still image is always full size).
     std::uint64_t requestFrame(const ViewportFrame& frame, std::uint64_t surface);
+    // The serial of the latest request (requestFrame(), renderAndWait()); 0 before
+    // any. A FrameReport::request at or above it drew a frame asked for since.
+    std::uint64_t latestRequest() const;
     // Runs `task` on the render thread before the next frame, in order of posting
     // (dropped when the device could not be made).
     void post(Task task);
@@ -73,18 +76,16 @@ public:
     void forgetMotion();
     // Reduced resolution while moving; off draws every frame at full size.
     void setInteractiveScaling(bool on);
-    // The scale the next moving frame gets (1: full size).
-    float interactiveScale() const;
     // The frame time moving frames aim at (kTargetFrameMs: 36 fps, for a 30 fps goal).
     void setTargetFrameMs(double ms);
 
     static constexpr int kRestMs = 80; // no new camera for this long: the camera rests
 
 Q_SIGNALS:
-    // The device exists (GUI thread): what the loader's texture plan needs of it,
-    // its name and how long making it took.
+    // The device exists (GUI thread): what the loader prepares textures for, its
+    // name and how long making it took.
     // `ray_tracing`: the renderer ray traces (acceleration structures built on upload).
-    void deviceReady(const sherpa::editor::TexturePlan& plan, const QString& name, double ms,
+    void deviceReady(const sherpa::tex::TextureTarget& textures, const QString& name, double ms,
                      bool ray_tracing);
     // It could not be made: nothing will be drawn, posted tasks are dropped.
     void deviceFailed(const QString& error);

@@ -118,7 +118,8 @@ QImage prepared_thumbnail(const tex::PreparedTextureSet* set, std::int32_t t, QS
     return {};
 }
 
-LoadOutcome run_load(const QString& spec, const TexturePlan& plan, SceneLoadJob::State* state,
+LoadOutcome run_load(const QString& spec, const std::optional<tex::TextureTarget>& target,
+                     const tex::PipelineOptions& textures, SceneLoadJob::State* state,
                      std::optional<TangentMethod> tangents = std::nullopt);
 
 } // namespace
@@ -137,7 +138,8 @@ int SceneLoadJob::workersInFlight() {
     return g_in_flight.load();
 }
 
-void SceneLoadJob::start(const QString& spec, const TexturePlan& plan,
+void SceneLoadJob::start(const QString& spec, const std::optional<tex::TextureTarget>& target,
+                         const tex::PipelineOptions& textures,
                          std::optional<TangentMethod> tangents) {
     cancel();
     spec_ = spec;
@@ -158,11 +160,11 @@ void SceneLoadJob::start(const QString& spec, const TexturePlan& plan,
         });
     };
     ++g_in_flight;
-    watcher_->setFuture(QtConcurrent::run([spec, state, plan, tangents] {
+    watcher_->setFuture(QtConcurrent::run([spec, state, target, textures, tangents] {
         LoadOutcome out;
         // Nothing may escape the worker: the future would rethrow it in the UI thread.
         try {
-            out = run_load(spec, plan, state.get(), tangents);
+            out = run_load(spec, target, textures, state.get(), tangents);
         } catch (const std::exception& e) {
             out = {};
             out.error = spec + QStringLiteral(": ") + QString::fromUtf8(e.what());
@@ -201,17 +203,18 @@ void SceneLoadJob::onFinished() {
         Q_EMIT failed(spec_, outcome.error);
 }
 
-LoadOutcome SceneLoadJob::loadNow(const QString& spec, const TexturePlan& plan) {
+LoadOutcome SceneLoadJob::loadNow(const QString& spec) {
     State state;
     state.clock.start();
-    LoadOutcome out = run_load(spec, plan, &state);
+    LoadOutcome out = run_load(spec, std::nullopt, {}, &state);
     state.stamp(out);
     return out;
 }
 
 namespace {
 
-LoadOutcome run_load(const QString& spec, const TexturePlan& plan, SceneLoadJob::State* state,
+LoadOutcome run_load(const QString& spec, const std::optional<tex::TextureTarget>& target,
+                     const tex::PipelineOptions& textures, SceneLoadJob::State* state,
                      std::optional<TangentMethod> tangents) {
     LoadOutcome out;
     QElapsedTimer clock;
@@ -243,14 +246,15 @@ LoadOutcome run_load(const QString& spec, const TexturePlan& plan, SceneLoadJob:
     // GPU textures first (texture cache, BC7/BC5), counted per prepared texture: the
     // thumbnails then come from their small mip levels instead of decoding sources.
     clock.restart();
-    if (plan.device && !state->cancel.cancelled()) {
+    if (target && !state->cancel.cancelled()) {
         state->report(LoadStep::Textures, 0, 1);
-        session->textures = prepareTextures(
-            plan, scene,
-            [state](std::size_t done, std::size_t total) {
-                state->report(LoadStep::Textures, done, total);
-            },
-            &state->cancel);
+        tex::PipelineOptions pipeline = textures;
+        pipeline.progress = [state](std::size_t done, std::size_t total) {
+            state->report(LoadStep::Textures, done, total);
+        };
+        pipeline.cancel = &state->cancel;
+        PreparedTextures set = tex::prepare_scene_textures(scene, *target, std::move(pipeline));
+        if (!set->cancelled) session->textures = std::move(set);
         session->timings.textures_ms = static_cast<double>(clock.nsecsElapsed()) / 1e6;
         clock.restart();
         if (state->cancel.cancelled()) {

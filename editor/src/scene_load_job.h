@@ -14,6 +14,7 @@
 
 #include <sherpa/scene/scene.h>
 #include <sherpa/scene/tangents.h>
+#include <sherpa/texture/texture_target.h>
 
 #include "scene_session.h"
 
@@ -35,12 +36,14 @@ public:
     explicit SceneLoadJob(QObject* parent = nullptr);
     ~SceneLoadJob() override; // cancels and waits for a running load
 
-    // Starts loading `spec`, its textures prepared on the worker as `plan` says
-    // (progress per texture); a load already running is cancelled first. With
+    // Starts loading `spec`, its textures prepared on the worker for `target` (the
+    // viewport's device; none: no textures) with the cache and encoder settings of
+    // `textures` (progress per texture); a load already running is cancelled first. With
     // `tangents`, every triangle primitive gets tangents made by that method, authored
     // ones replaced (a comparison's side B); without, the glTF rule (exact MikkTSpace
     // where TANGENT is absent and a normal texture needs it).
-    void start(const QString& spec, const TexturePlan& plan = {},
+    void start(const QString& spec, const std::optional<tex::TextureTarget>& target = {},
+               const tex::PipelineOptions& textures = {},
                std::optional<TangentMethod> tangents = std::nullopt);
     void cancel();
     bool running() const { return state_ != nullptr; }
@@ -48,8 +51,8 @@ public:
     // Loads cancelled whose workers have not finished yet (tests: none may linger).
     static int workersInFlight();
 
-    // Synchronous variant used by the command line's first scene and the tests.
-    static LoadOutcome loadNow(const QString& spec, const TexturePlan& plan = {});
+    // Synchronous variant without textures, for the tests.
+    static LoadOutcome loadNow(const QString& spec);
 
     struct State; // progress and the cancel token, shared with the worker
 

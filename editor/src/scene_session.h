@@ -15,6 +15,7 @@
 
 #include <sherpa/core/progress.h>
 #include <sherpa/scene/scene.h>
+#include <sherpa/texture/texture_target.h>
 
 namespace sherpa::tex {
 struct PreparedTextureSet;
@@ -26,18 +27,6 @@ namespace sherpa::editor {
 // The texture pipeline's result for one scene (levels for the GPU, and per texture
 // its cache state, hash, format, bytes, timings and PSNR).
 using PreparedTextures = std::shared_ptr<const tex::PreparedTextureSet>;
-// How the loader prepares a scene's textures: for which device, with which cache
-// settings (GpuViewport::texturePlan(); run by prepareTextures()). Plain data; a
-// plan without a device prepares nothing (the viewport cannot draw then).
-struct TexturePlan {
-    bool device = false;      // a device exists
-    std::string device_name;  // named in the warning when it cannot sample BC
-    bool bc_textures = false; // the device samples BC7/BC5
-    bool cpu_device = false;  // a CPU device: BC7 is decoded to RGBA8 before upload
-    std::string cache_dir;    // the texture cache; empty: none
-    int bc7_level = 0;        // BC7 encoder quality level
-};
-
 // Where a load's time went (the log says it after each load).
 struct LoadTimings {
     double engine_ms = 0.0;     // engine load_scene (parse, geometry, tangents)
@@ -49,8 +38,8 @@ struct LoadTimings {
 struct SceneSession {
     QString spec;                       // what was opened: a path or a built-in spec
     std::shared_ptr<const Scene> scene; // never null
-    // Prepared on the loader thread for the viewport's device (TexturePlan); null
-    // without a device.
+    // Prepared on the loader thread for the viewport's device (its
+    // tex::TextureTarget); null without a device.
     PreparedTextures textures;
     std::vector<QImage> thumbnails; // per Scene::textures; null when undecodable
     std::vector<QSize> image_sizes; // per Scene::images, pixel size of the source (0x0 unknown)

@@ -62,7 +62,6 @@ private:
     };
     void rebuild();
     int addItem(Kind kind, int index, int node, int parent);
-    void addNode(int node, int parent, int depth);
     QString name(const Item& item) const;
     // `full`: every value (the tooltip); else short enough for a narrow dock.
     QString detail(const Item& item, bool full = false) const;

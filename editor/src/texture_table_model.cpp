@@ -29,20 +29,46 @@ const tex::PreparedTextureSet* TextureTableModel::prepared() const {
     return session_ ? session_->textures.get() : nullptr;
 }
 
-const tex::PreparedTexture* TextureTableModel::preparedRecord(std::size_t row) const {
-    if (!prepared()) return nullptr;
+const tex::PreparedTexture* TextureTableModel::preparedRecord(const SceneSession& session,
+                                                              int texture) {
+    const tex::PreparedTextureSet* set = session.textures.get();
+    if (!set) return nullptr;
     // The first role this texture is prepared in (a texture used as colour and as
     // data has two records; the dock shows one row per glTF texture).
     for (TextureRole role : {kRoleColor, kRoleLinear, kRoleNormal})
-        if (const std::int32_t i = prepared()->find(static_cast<std::int32_t>(row), role); i >= 0)
-            return &prepared()->textures[static_cast<std::size_t>(i)];
+        if (const std::int32_t i = set->find(texture, role); i >= 0)
+            return &set->textures[static_cast<std::size_t>(i)];
     return nullptr;
+}
+
+QString TextureTableModel::cacheStateText(const tex::PreparedTexture& r) {
+    // What failed, not a cache state: "missing: FILE" or "undecodable".
+    if (r.state == tex::CacheState::Missing)
+        return tr("missing: %1").arg(QFileInfo(QString::fromStdString(r.location)).fileName());
+    if (r.state == tex::CacheState::Undecodable) return tr("undecodable");
+    if (r.failed) return tr("failed");
+    switch (r.state) {
+    case tex::CacheState::Hit:
+        return tr("hit");
+    case tex::CacheState::Miss:
+        return tr("miss");
+    case tex::CacheState::Stale:
+        return tr("stale");
+    case tex::CacheState::Recompressed:
+        return tr("recompressed");
+    case tex::CacheState::Fallback:
+        return tr("fallback");
+    case tex::CacheState::Missing:
+    case tex::CacheState::Undecodable:
+        break; // answered above
+    }
+    return QStringLiteral("—");
 }
 
 QVariant TextureTableModel::cacheData(std::size_t row, int column) const {
     const QString none = QStringLiteral("—");
     if (!prepared() || !scene()) return none;
-    const tex::PreparedTexture* r = preparedRecord(row);
+    const tex::PreparedTexture* r = preparedRecord(*session_, static_cast<int>(row));
     if (!r) return none;
     switch (column) {
     case HashColumn: {
@@ -64,29 +90,8 @@ QVariant TextureTableModel::cacheData(std::size_t row, int column) const {
         return r->bytes_on_disk ? Format::bytes(r->bytes_on_disk) : none;
     case GpuBytesColumn:
         return Format::bytes(r->bytes_gpu);
-    case CacheStateColumn: {
-        // What failed, not a cache state: "missing: FILE" or "undecodable".
-        if (r->state == tex::CacheState::Missing)
-            return tr("missing: %1").arg(QFileInfo(QString::fromStdString(r->location)).fileName());
-        if (r->state == tex::CacheState::Undecodable) return tr("undecodable");
-        if (r->failed) return tr("failed");
-        switch (r->state) {
-        case tex::CacheState::Hit:
-            return tr("hit");
-        case tex::CacheState::Miss:
-            return tr("miss");
-        case tex::CacheState::Stale:
-            return tr("stale");
-        case tex::CacheState::Recompressed:
-            return tr("recompressed");
-        case tex::CacheState::Fallback:
-            return tr("fallback");
-        case tex::CacheState::Missing:
-        case tex::CacheState::Undecodable:
-            break; // answered above
-        }
-        return none;
-    }
+    case CacheStateColumn:
+        return cacheStateText(*r);
     case DecodeMsColumn:
         return QString::number(r->decode_ms, 'f', 1);
     case EncodeMsColumn:
@@ -128,13 +133,14 @@ QVariant TextureTableModel::data(const QModelIndex& index, int role) const {
         return session_->thumbnails[row];
     if ((role == Qt::ToolTipRole || role == Format::kExactTextRole) &&
         index.column() == HashColumn) {
-        const tex::PreparedTexture* r = preparedRecord(row);
+        const tex::PreparedTexture* r = preparedRecord(*session_, static_cast<int>(row));
         return r ? QVariant(QString::fromStdString(r->source_hash.hex())) : QVariant();
     }
     // A failed texture's whole story (file, reason, the slots that read it) on hover.
     if (role == Qt::ToolTipRole && img &&
         (index.column() == SizeColumn || index.column() == CacheStateColumn)) {
-        if (const tex::PreparedTexture* r = preparedRecord(row); r && r->failed) {
+        if (const tex::PreparedTexture* r = preparedRecord(*session_, static_cast<int>(row));
+            r && r->failed) {
             QString tip = QString::fromStdString(r->note);
             for (const std::string& use : r->uses)
                 tip += QStringLiteral("\n") + QString::fromStdString(use);

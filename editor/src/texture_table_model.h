@@ -44,10 +44,14 @@ public:
     QVariant data(const QModelIndex& index, int role) const override;
     QVariant headerData(int section, Qt::Orientation o, int role) const override;
 
+    // The pipeline record of glTF texture `texture` in `session` (its first prepared
+    // role), or null (no prepared textures: no device).
+    static const tex::PreparedTexture* preparedRecord(const SceneSession& session, int texture);
+    // The record's cache state as the dock's column says it ("hit", "missing: FILE"...).
+    static QString cacheStateText(const tex::PreparedTexture& r);
+
 private:
     QVariant cacheData(std::size_t row, int column) const; // "—" without a record
-    // The pipeline record of texture `row` (its first prepared role), or null.
-    const tex::PreparedTexture* preparedRecord(std::size_t row) const;
 
     const Scene* scene() const;                      // null without a session
     const tex::PreparedTextureSet* prepared() const; // null without prepared textures

@@ -72,10 +72,8 @@ void ViewportWindow::renderNow() {
     if (isExposed() && frame_) frame_();
 }
 
-void ViewportWindow::frameDrawn(double ms) {
-    last_frame_ms_ = ms;
+void ViewportWindow::frameDrawn() {
     ++frames_;
-    Q_EMIT frameRendered(ms);
 }
 
 void ViewportWindow::setDivider(std::optional<float> fraction) {

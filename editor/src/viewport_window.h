@@ -24,7 +24,6 @@ public:
 
     OrbitCamera& camera() { return camera_; }
     const OrbitCamera& camera() const { return camera_; }
-    bool flyMode() const { return fly_; }
     void setFlyMode(bool fly);
     // The surface for the engine's swapchain; VK_NULL_HANDLE until the window exists.
     quint64 vulkanSurface() const;
@@ -34,9 +33,8 @@ public:
     void setFrameCallback(std::function<void()> callback) { frame_ = std::move(callback); }
     // Something visible changed: render once more (coalesced by Qt to the refresh rate).
     void scheduleFrame();
-    double lastFrameMs() const { return last_frame_ms_; }
-    // A frame asked for has been presented, drawing took `ms`.
-    void frameDrawn(double ms);
+    // A frame asked for has been presented (counted: framesRendered()).
+    void frameDrawn();
     // Until the user moves the camera, a resize re-frames the scene (the first
     // scene is framed before the window has its final size).
     void setAutoFrame(bool on) { auto_frame_ = on; }
@@ -55,7 +53,6 @@ Q_SIGNALS:
     void clicked(QPointF ndc); // normalised device coordinates, y up
     void frameAllRequested();
     void frameSelectionRequested();
-    void frameRendered(double ms);
     void dividerMoved(float fraction); // dragged by the user, 0..1 of the width
     // The native window (and with it the Vulkan surface) is about to go: whoever
     // presents to it must drop its swapchain now.
@@ -88,7 +85,6 @@ private:
     QSet<int> keys_held_;
     QTimer fly_timer_;
     QElapsedTimer fly_clock_;
-    double last_frame_ms_ = 0.0;
     std::uint64_t frames_ = 0;
 };
 

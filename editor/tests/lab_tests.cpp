@@ -291,9 +291,9 @@ void LabTests::clickingAPointAppliesACullingMethod() {
                 "sphere")
             sphere = scatter;
     QVERIFY(sphere);
-    QVERIFY(window_->cullingMonitor().method() != CullMethod::Sphere);
+    QVERIFY(test::culling_monitor(*window_).method() != CullMethod::Sphere);
     Q_EMIT sphere->clicked(sphere->at(0));
-    QCOMPARE(window_->cullingMonitor().method(), CullMethod::Sphere);
+    QCOMPARE(test::culling_monitor(*window_).method(), CullMethod::Sphere);
     // The chart rings the method now in use.
     bool ringed = false;
     for (QAbstractSeries* s : dock().chart()->series())

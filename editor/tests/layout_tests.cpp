@@ -269,7 +269,7 @@ void LayoutTests::viewportModesAreNotCutOff() {
         QVERIFY(w);
         // The longest side-B label: this file with tangents by another method.
         w->compareWithTangents(TangentMethod::MikkTSpaceWelded);
-        QTRY_VERIFY_WITH_TIMEOUT(w->compareSession() != nullptr, 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(test::compare_session(*w) != nullptr, 30000);
         w->compareControls().setMode(ViewportMode::Difference);
         // Numbers of the latest completed frame: a few frames on.
         for (int i = 0; i < 20 && !w->lastReport().difference.valid; ++i) {
@@ -292,7 +292,7 @@ void LayoutTests::viewportModesAreNotCutOff() {
                                .arg(button->width())
                                .arg(button->sizeHint().width());
         // The legend's texts fit its width and height.
-        for (QLabel* label : w->differenceLegend()->findChildren<QLabel*>()) {
+        for (QLabel* label : test::difference_legend(*w).findChildren<QLabel*>()) {
             if (label->pixmap().isNull() &&
                 (label->wordWrap() ? label->heightForWidth(label->width()) > label->height()
                                    : label->sizeHint().width() > label->width()))

@@ -56,7 +56,7 @@ private:
 };
 
 void LoadingTests::progressReportsEveryStage() {
-    QSignalSpy progress(&window_->loader(), &SceneLoadJob::progress);
+    QSignalSpy progress(&test::scene_loader(*window_), &SceneLoadJob::progress);
     QVERIFY(load(*window_, test::asset(QStringLiteral("DamagedHelmet"))));
     QList<LoadStep> steps;
     int last_textures_done = -1, textures_total = -1;
@@ -116,12 +116,12 @@ void LoadingTests::cancelDropsTheLoadAndLeaksNothing() {
     std::uint64_t warm = 0;
     for (int i = 0; i < 12; ++i) {
         // Cancel as soon as the engine reports its first stage: the worker stops there.
-        QMetaObject::Connection c =
-            connect(&window_->loader(), &SceneLoadJob::progress, this, [this](LoadStep step) {
+        QMetaObject::Connection c = connect(
+            &test::scene_loader(*window_), &SceneLoadJob::progress, this, [this](LoadStep step) {
                 if (step == LoadStep::Geometry || step == LoadStep::Tangents) window_->cancelLoad();
             });
         window_->openScene(test::asset(QStringLiteral("DamagedHelmet")));
-        QTRY_VERIFY_WITH_TIMEOUT(!window_->loader().running(), kLoadTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT(!test::scene_loader(*window_).running(), kLoadTimeoutMs);
         disconnect(c);
         QTRY_COMPARE_WITH_TIMEOUT(SceneLoadJob::workersInFlight(), 0, kLoadTimeoutMs);
         QCoreApplication::processEvents();
@@ -130,7 +130,7 @@ void LoadingTests::cancelDropsTheLoadAndLeaksNothing() {
     QCOMPARE(canceled.count(), 12);
     QCOMPARE(loaded.count(), 0);
     QCOMPARE(window_->context().scene(), before); // rolled back: the old scene stays
-    QVERIFY(window_->lastProgressText().contains(QStringLiteral("/4")));
+    QVERIFY(test::progress_text(*window_).contains(QStringLiteral("/4")));
     if (objects >= 0) {
         for (int f = 0; f < 3; ++f) QVERIFY(test::next_frame(*window_));
         QCOMPARE(test::gpu_objects(*window_), objects);

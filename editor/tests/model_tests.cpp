@@ -81,6 +81,7 @@ private Q_SLOTS:
     void everyAssetMatchesTheEngine_data();
     void everyAssetMatchesTheEngine();
     void materialFieldsFollowTheGpuLayout();
+    void materialChainSaysTheCacheState();
     void millionVertexTableSortsByPermutation();
     void generatedTangentsAgreeWithRegeneration();
     void frameKeepsTheBoxInView();
@@ -188,6 +189,33 @@ void ModelTests::materialFieldsFollowTheGpuLayout() {
     table[7] = 3;
     model.setMaterial(out.session, 0, gpu, MaterialFieldsModel::Source::GpuReadback, table);
     QCOMPARE(model.textureOfRow(6), 3);
+}
+
+void ModelTests::materialChainSaysTheCacheState() {
+    const LoadOutcome out = SceneLoadJob::loadNow(test::asset(QStringLiteral("BoxTextured")));
+    QVERIFY(out.session);
+    const Scene& scene = *out.session->scene;
+    const int texture = scene.materials[0].base_color.texture;
+    QVERIFY(texture >= 0);
+    MaterialFieldsModel model;
+    const auto chain = [&](const SharedSession& session) {
+        model.setMaterial(session, 0, to_gpu_material(scene.materials[0]),
+                          MaterialFieldsModel::Source::Cpu);
+        return display(model, 6, MaterialFieldsModel::ChainColumn); // base_color_tex
+    };
+    // Nothing prepared (no device): the chain says nothing of a cache.
+    QVERIFY(!chain(out.session).contains(QStringLiteral("cache")));
+    // Prepared as the loader does for a device: the state the texture dock shows.
+    auto prepared = std::make_shared<SceneSession>(*out.session);
+    tex::PipelineOptions options;
+    options.bc7_level = 0; // no cache directory: a miss
+    prepared->textures = tex::prepare_scene_textures(scene, {true, false, "test device"}, options);
+    TextureTableModel textures;
+    textures.setSession(prepared);
+    const QString state = display(textures, texture, TextureTableModel::CacheStateColumn);
+    QCOMPARE(state, QStringLiteral("miss"));
+    QVERIFY2(chain(prepared).endsWith(QStringLiteral(" → cache: miss")),
+             qPrintable(chain(prepared)));
 }
 
 void ModelTests::millionVertexTableSortsByPermutation() {

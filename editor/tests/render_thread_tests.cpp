@@ -121,7 +121,7 @@ void RenderThreadTests::guiWorksWhileAFrameIsInFlight() {
     // All of it happened while the render thread was still busy.
     QVERIFY2(!busy->gave_up, "the GUI thread waited for the render thread");
     QCOMPARE(w.viewport()->framesRendered(), frames);
-    const std::uint64_t latest = w.lastRequest();
+    const std::uint64_t latest = test::latest_request(w);
     std::vector<std::uint64_t> drawn; // requests in the order they were drawn
     const QMetaObject::Connection c =
         connect(w.renderer(), &RenderThread::frameDone, this,
@@ -156,7 +156,7 @@ void RenderThreadTests::stillFrameIsFullResolutionAfterMotion() {
     w.viewport()->camera() = rest;
     Q_EMIT w.viewport()->cameraChanged();
     QTRY_VERIFY(w.lastFrame().camera.eye == rest.eye()); // asked for
-    const std::uint64_t moving = w.lastRequest();
+    const std::uint64_t moving = test::latest_request(w);
     QVERIFY(waitForReport(w, [&](const FrameReport& r) { return r.request == moving; }));
     QCOMPARE(w.lastReport().scale, kMinResolutionScale);
     // Nobody asks again: the render thread draws the same request at full size.
@@ -191,14 +191,14 @@ void RenderThreadTests::playbackIsMotionAndPauseIsExact() {
     for (int i = 0; i < 3; ++i) {
         timeline.advance(0.05);
         QTRY_VERIFY(w.lastFrame().pose == timeline.pose()); // asked for
-        const std::uint64_t step = w.lastRequest();
+        const std::uint64_t step = test::latest_request(w);
         QVERIFY(waitForReport(w, [&](const FrameReport& r) { return r.request >= step; }));
     }
     QVERIFY2(w.lastReport().scale < 1.0f, qPrintable(QString::number(w.lastReport().scale)));
     QCOMPARE(w.lastFrame().camera.eye, w.viewport()->camera().spec().eye); // camera still
     // Paused: nobody asks again, and the pose of this time is drawn at full size.
     timeline.setPlaying(false);
-    const std::uint64_t paused = w.lastRequest();
+    const std::uint64_t paused = test::latest_request(w);
     QVERIFY(waitForReport(
         w, [&](const FrameReport& r) { return r.scale == 1.0f && r.request >= paused; }));
     QCOMPARE(QSize(int(w.lastReport().width), int(w.lastReport().height)),
@@ -237,7 +237,7 @@ void RenderThreadTests::sceneAskedForBeforeTheDeviceWaitsForIt() {
     connect(w.renderer(), &RenderThread::deviceReady, this, [&ready] { ++ready; });
     QSignalSpy loaded(&w, &MainWindow::sceneLoaded);
     w.openScene(QStringLiteral("builtin:default"));
-    QVERIFY(!w.loader().running()); // waits for the device
+    QVERIFY(!test::scene_loader(w).running()); // waits for the device
     QVERIFY(loaded.wait(test::kLoadTimeoutMs));
     QCOMPARE(ready, 1);
     // Its textures were prepared for the device (a plan without one prepares none).

@@ -317,10 +317,10 @@ void RtTests::differenceOfASceneWithItselfIsZero() {
     c.setMode(ViewportMode::Difference);
     // Side B: the same file, loaded again as another file is.
     w.compareWithFile(file);
-    QTRY_VERIFY_WITH_TIMEOUT(w.compareSession() != nullptr, 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(test::compare_session(w) != nullptr, 30000);
     QCOMPARE(c.state().side, SideB::OtherFile);
-    QVERIFY(w.compareSession() != w.context().sharedSession()); // a second scene
-    DifferenceLegend& legend = *w.differenceLegend();
+    QVERIFY(test::compare_session(w) != w.context().sharedSession()); // a second scene
+    DifferenceLegend& legend = test::difference_legend(w);
     QVERIFY(legend.isVisible());
     // The numbers are those of the latest completed frame: a few frames later (and
     // at the viewport's size with the legend beside it).
@@ -352,9 +352,9 @@ void RtTests::differenceOfASceneWithItselfIsZero() {
     QCOMPARE(bar.pixel(0, 0), qRgb(top[0], top[1], top[2]));
     QCOMPARE(bar.pixel(0, bar.height() - 1), qRgb(bottom[0], bottom[1], bottom[2]));
     // The same file with its source textures (no BC7): the compression's error, small.
-    const SharedSession bc7 = w.compareSession();
+    const SharedSession bc7 = test::compare_session(w);
     w.compareWithFile(file, true);
-    QTRY_VERIFY_WITH_TIMEOUT(w.compareSession() != bc7, 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(test::compare_session(w) != bc7, 30000);
     t.restart();
     double psnr = std::numeric_limits<double>::infinity();
     while (std::isinf(psnr) && t.elapsed() < 30000) {
@@ -391,7 +391,7 @@ void RtTests::differenceOfASceneWithItselfIsZero() {
     c.setHeatScale(16.0f / 255.0f);
     // Leaving the comparison frees the other file.
     c.setMode(ViewportMode::Raster);
-    QVERIFY(!w.compareSession());
+    QVERIFY(!test::compare_session(w));
     QVERIFY(!legend.isVisible());
     checkValidation();
 }

@@ -128,13 +128,16 @@ void TangentCompareTests::commandLineTakesTangents() {
 
 DifferenceNumbers TangentCompareTests::differenceWith(TangentMethod method) {
     MainWindow& w = *window_;
-    const SharedSession before = w.compareSession();
+    const SharedSession before = test::compare_session(w);
     w.compareWithTangents(method);
     QElapsedTimer t;
     t.start();
-    while ((w.compareSession() == before || !w.compareSession()) && t.elapsed() < 60000)
+    SharedSession now = before;
+    while ((now == before || !now) && t.elapsed() < 60000) {
         QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 20);
-    if (w.compareSession() == before) return {};
+        now = test::compare_session(w);
+    }
+    if (now == before) return {};
     // The first load (from Raster) switches to Split with side B set.
     if (!before && w.compareControls().state().mode != ViewportMode::Split) return {};
     w.compareControls().setMode(ViewportMode::Difference);
@@ -216,7 +219,7 @@ void TangentCompareTests::methodsDifferWhereTheFamilySaysTheyDo() {
     }
     // Leaving the comparison frees side B.
     c.setMode(ViewportMode::Raster);
-    QVERIFY(!w.compareSession());
+    QVERIFY(!test::compare_session(w));
     checkValidation();
 }
 
@@ -226,11 +229,12 @@ void TangentCompareTests::tangentSideFollowsTheFile() {
     QVERIFY(differenceWith(TangentMethod::MikkTSpaceWelded).valid);
     // Another scene opened while comparing: side B is that file with the same method.
     QVERIFY(test::load(w, duck_));
-    QTRY_VERIFY_WITH_TIMEOUT(w.compareSession() && w.compareSession()->spec == duck_, 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(test::compare_session(w) && test::compare_session(w)->spec == duck_,
+                             30000);
     QVERIFY(w.compareControls().state().comparing());
     QCOMPARE(w.compareControls().state().side, SideB::OtherFile);
     w.compareControls().setMode(ViewportMode::Raster);
-    QVERIFY(!w.compareSession());
+    QVERIFY(!test::compare_session(w));
     checkValidation();
 }
 

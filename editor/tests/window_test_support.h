@@ -2,6 +2,7 @@
 // Helpers of the window-level QtTest suites (under Xvfb).
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QProgressBar>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -13,6 +14,9 @@
 
 #include <malloc.h>
 
+#include "culling_monitor.h"
+#include "difference_legend.h"
+#include "engine_probe.h"
 #include "main_window.h"
 #include "render_thread.h"
 #include "viewport_window.h"
@@ -20,6 +24,26 @@
 namespace sherpa::editor::test {
 
 inline constexpr int kLoadTimeoutMs = 60000;
+
+// The window's parts, found as a user of the window would (by object name, or through
+// the engine objects on the render thread): MainWindow has no accessors for tests.
+inline CullingMonitor& culling_monitor(const MainWindow& w) {
+    return *w.findChild<CullingMonitor*>(QStringLiteral("cullingMonitor"));
+}
+inline SceneLoadJob& scene_loader(const MainWindow& w) {
+    return *w.findChild<SceneLoadJob*>(QStringLiteral("sceneLoader"));
+}
+inline DifferenceLegend& difference_legend(const MainWindow& w) {
+    return *w.findChild<DifferenceLegend*>(QStringLiteral("differenceLegend"));
+}
+// The load progress bar's text as last shown (it stays when the bar hides).
+inline QString progress_text(const MainWindow& w) {
+    return w.findChild<QProgressBar*>(QStringLiteral("loadProgress"))->text();
+}
+// The serial of the latest frame the window asked the render thread for; 0 without one.
+inline std::uint64_t latest_request(const MainWindow& w) {
+    return w.renderer() ? w.renderer()->latestRequest() : 0;
+}
 
 // Opens `spec` and waits (bounded) for the load to end; true when it loaded.
 inline bool load(MainWindow& w, const QString& spec) {
@@ -49,7 +73,7 @@ inline void isolate_settings() {
 inline QString fresh_validation_messages(const MainWindow& w, qsizetype& seen) {
     if (!w.renderer()) return {};
     const QStringList messages =
-        w.renderer()->call([](GpuViewport& gpu) { return gpu.validationMessages(); });
+        w.renderer()->call([](GpuViewport& gpu) { return validation_messages(gpu); });
     const QStringList fresh = messages.mid(seen);
     seen = messages.size();
     return fresh.join(QLatin1Char('\n'));
@@ -80,7 +104,7 @@ inline std::int64_t gpu_objects(MainWindow& w, int n = 3) {
     if (!w.renderer()) return -1;
     for (int i = 0; i < n; ++i)
         w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
-    return w.renderer()->call([](GpuViewport& gpu) { return gpu.objectCount(); });
+    return w.renderer()->call([](GpuViewport& gpu) { return gpu_object_count(gpu); });
 }
 
 // Resident memory after glibc hands its free pages back (malloc_trim): what stays is
@@ -101,16 +125,23 @@ inline std::uint64_t resident_kib() {
 // state from before setGpuCulling, 2 runs in 3).
 inline bool next_frame(MainWindow& w) {
     const std::uint64_t before = w.viewport()->framesRendered();
-    const std::uint64_t asked_before = w.lastRequest();
+    const std::uint64_t asked_before = latest_request(w);
     w.viewport()->scheduleFrame();
     QElapsedTimer t;
     t.start();
     const auto done = [&] {
-        return w.viewport()->framesRendered() > before && w.lastRequest() > asked_before;
+        return w.viewport()->framesRendered() > before && latest_request(w) > asked_before;
     };
     while (!done() && t.elapsed() < kLoadTimeoutMs)
         QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 20);
     return done();
+}
+
+// Side B's other file as the viewport compares with it now (null when it does not):
+// the session of a frame asked for after this call.
+inline SharedSession compare_session(MainWindow& w) {
+    next_frame(w);
+    return w.lastFrame().compareSession;
 }
 
 // The viewport's pixels in a screenshot of the window.

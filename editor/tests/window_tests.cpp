@@ -82,7 +82,7 @@ void WindowTests::opensEveryAsset() {
         QCOMPARE(window_->sceneTreeDock()->model()->rowCount(),
                  static_cast<int>(s->scenes.size() + s->skins.size() + s->animations.size()));
         QCOMPARE(window_->textureDock()->model()->rowCount(), static_cast<int>(s->textures.size()));
-        QCOMPARE(window_->cullingMonitor().latest()->cpu.total, s->instances.size());
+        QCOMPARE(test::culling_monitor(*window_).latest()->cpu.total, s->instances.size());
     }
 }
 

@@ -15,6 +15,7 @@
 #include <sherpa/gpu/context.h>
 #include <sherpa/render/gpu_scene.h>
 #include <sherpa/render/renderer.h>
+#include <sherpa/render/scene_textures.h>
 #include <sherpa/scene/scene_loader.h>
 
 #include "rhi_test_support.h"
@@ -28,6 +29,14 @@ inline gpu::TextureSettings test_texture_settings() {
     gpu::TextureSettings s;
     s.cache_dir = std::filesystem::path(SHERPA_TEST_TEXTURE_CACHE);
     return s;
+}
+
+// `scene`'s textures prepared for `device` with `settings`, as sherpa-cli render does.
+inline std::shared_ptr<const tex::PreparedTextureSet>
+prepare_for_device(const Scene& scene, const gpu::DeviceInfo& device,
+                   const gpu::TextureSettings& settings) {
+    return tex::prepare_scene_textures(scene, gpu::texture_target(device, settings),
+                                       gpu::texture_pipeline_options(settings));
 }
 
 // RGBA8 pixels where one of the first `channels` channels differs by more than

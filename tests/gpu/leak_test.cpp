@@ -17,8 +17,7 @@ TEST_F(LeakTest, HundredLoadUnloadCyclesOfDamagedHelmetLeaveNothingBehind) {
     // Prepare the textures once (decode, mips, BC7/BC5): the cycles are about GPU
     // objects. Image creation, upload of every level, bindless registration and
     // destruction all still run per cycle.
-    const auto textures =
-        gpu::prepare_scene_textures(*scene, context().info(), test_texture_settings());
+    const auto textures = prepare_for_device(*scene, context().info(), test_texture_settings());
     ASSERT_EQ(textures->textures.size(), 5u);
     gpu::RenderSettings s;
     s.width = 32;

@@ -58,7 +58,7 @@ TEST_F(SceneTexturesTest, PreparedOnAnotherThreadUploadsBlocksWithFullMipChains)
     // Preparation makes no Vulkan calls: run it where the editor's loader runs it.
     std::shared_ptr<const tex::PreparedTextureSet> set;
     std::thread worker(
-        [&] { set = gpu::prepare_scene_textures(*helmet_, context().info(), block_settings()); });
+        [&] { set = prepare_for_device(*helmet_, context().info(), block_settings()); });
     worker.join();
     ASSERT_TRUE(set);
     renderer().load(*helmet_, set);
@@ -116,9 +116,8 @@ TEST_F(SceneTexturesTest, PreparedOnAnotherThreadUploadsBlocksWithFullMipChains)
 TEST_F(SceneTexturesTest, CpuDevicesDecodeBc7AtUploadAndSaySo) {
     if (!context().info().is_cpu() || !context().info().bc_textures)
         GTEST_SKIP() << "BC7 is decoded at upload on CPU devices only";
-    const auto decoded =
-        gpu::prepare_scene_textures(*helmet_, context().info(), test_texture_settings());
-    const auto blocks = gpu::prepare_scene_textures(*helmet_, context().info(), block_settings());
+    const auto decoded = prepare_for_device(*helmet_, context().info(), test_texture_settings());
+    const auto blocks = prepare_for_device(*helmet_, context().info(), block_settings());
     ASSERT_EQ(decoded->textures.size(), blocks->textures.size());
     for (std::size_t i = 0; i < blocks->textures.size(); ++i) {
         const tex::PreparedTexture& b = blocks->textures[i];
@@ -150,8 +149,7 @@ TEST_F(SceneTexturesTest, CpuDevicesDecodeBc7AtUploadAndSaySo) {
 }
 
 TEST_F(SceneTexturesTest, RefusesSetsWithoutLevelsOrForAnotherScene) {
-    const auto good =
-        gpu::prepare_scene_textures(*helmet_, context().info(), test_texture_settings());
+    const auto good = prepare_for_device(*helmet_, context().info(), test_texture_settings());
     auto stripped = std::make_shared<tex::PreparedTextureSet>(*good);
     stripped->textures[2].levels.clear(); // as after GpuScene released them
     EXPECT_THROW(renderer().load(*helmet_, stripped), gpu::GpuError);
@@ -169,7 +167,7 @@ TEST_F(SceneTexturesTest, RefusesSetsWithoutLevelsOrForAnotherScene) {
 TEST_F(SceneTexturesTest, ForcedRgba8FallbackLooksLikeTheBlocksAndCostsFourTimesTheMemory) {
     gpu::TextureSettings rgba8 = test_texture_settings();
     rgba8.force_rgba8 = true;
-    const auto fallback = gpu::prepare_scene_textures(*helmet_, context().info(), rgba8);
+    const auto fallback = prepare_for_device(*helmet_, context().info(), rgba8);
     ASSERT_FALSE(fallback->notices.empty());
     EXPECT_NE(fallback->notices.front().find("RGBA8 forced"), std::string::npos);
     for (const tex::PreparedTexture& t : fallback->textures) {
@@ -181,7 +179,7 @@ TEST_F(SceneTexturesTest, ForcedRgba8FallbackLooksLikeTheBlocksAndCostsFourTimes
     EXPECT_EQ(renderer().scene()->materials().textures().warnings(), fallback->warnings);
 
     if (!context().info().bc_textures) GTEST_SKIP() << "device cannot sample BC";
-    const auto blocks = gpu::prepare_scene_textures(*helmet_, context().info(), block_settings());
+    const auto blocks = prepare_for_device(*helmet_, context().info(), block_settings());
     const std::vector<std::uint8_t> compressed = render_helmet(blocks);
     const std::uint64_t block_bytes = renderer().scene()->memory().textures;
     // 1 byte per texel against 4 (tiny mip levels round up to whole 4x4 blocks).

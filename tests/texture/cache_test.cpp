@@ -16,17 +16,6 @@ using namespace sherpa::tex;
 
 namespace {
 
-// PNG bytes of an image, as a glTF file would carry them.
-std::vector<std::uint8_t> png_bytes(const RgbaImage& img, const std::string& name) {
-    const auto dir = test::fresh_temp_dir("png-" + name);
-    std::string error;
-    EXPECT_TRUE(write_image_file(dir / "img.png", img, error)) << error;
-    std::vector<std::uint8_t> bytes;
-    EXPECT_TRUE(read_file(dir / "img.png", bytes, error)) << error;
-    std::filesystem::remove_all(dir);
-    return bytes;
-}
-
 // A scene with two materials on one instance each: material 0 uses image 0 as
 // base colour (through two textures sharing the image) and image 1 as normal
 // map; material 1 (alpha-masked) uses image 0 again as base colour; material 2
@@ -36,7 +25,7 @@ Scene small_scene() {
     auto add_image = [&](RgbaImage img, const std::string& name) {
         ImageRecord rec;
         rec.name = name, rec.uri = name + ".png", rec.mime_type = "image/png";
-        rec.encoded = png_bytes(img, name);
+        rec.encoded = test::png_bytes(img, name);
         rec.byte_size = rec.encoded.size();
         s.images.push_back(std::move(rec));
     };

@@ -1,5 +1,7 @@
 #include "test_images.h"
 
+#include <sherpa/core/file_io.h>
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -66,6 +68,16 @@ tex::RgbaImage constant_image(std::uint32_t w, std::uint32_t h, std::uint8_t r, 
     for (std::size_t i = 0; i < std::size_t{w} * h; ++i)
         img.pixels.insert(img.pixels.end(), {r, g, b, a});
     return img;
+}
+
+std::vector<std::uint8_t> png_bytes(const tex::RgbaImage& img, const std::string& name) {
+    const auto dir = fresh_temp_dir("png-" + name);
+    std::string error;
+    if (!tex::write_image_file(dir / "img.png", img, error)) throw std::runtime_error(error);
+    std::vector<std::uint8_t> bytes;
+    if (!read_file(dir / "img.png", bytes, error)) throw std::runtime_error(error);
+    std::filesystem::remove_all(dir);
+    return bytes;
 }
 
 std::filesystem::path fresh_temp_dir(const std::string& name) {

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <sherpa/texture/image.h>
 
@@ -23,6 +24,10 @@ tex::RgbaImage synthetic_image(std::uint32_t w, std::uint32_t h, bool with_alpha
 // An image of one colour.
 tex::RgbaImage constant_image(std::uint32_t w, std::uint32_t h, std::uint8_t r, std::uint8_t g,
                               std::uint8_t b, std::uint8_t a);
+
+// PNG bytes of an image, as a glTF file would carry them (written and read back
+// through a fresh temp directory named after `name`).
+std::vector<std::uint8_t> png_bytes(const tex::RgbaImage& img, const std::string& name);
 
 // A fresh empty directory under the system temp directory, named after the test.
 std::filesystem::path fresh_temp_dir(const std::string& name);

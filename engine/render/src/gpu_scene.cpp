@@ -86,8 +86,9 @@ GpuScene::GpuScene(ResourceManager& resources, BindlessTable& table, const Scene
 GpuScene::GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
                    const TextureSettings& texture_settings, StreamPolicy policy)
     : resources_(resources), table_(table), policy_(policy) {
-    auto prepared = std::const_pointer_cast<tex::PreparedTextureSet>(
-        prepare_scene_textures(scene, resources.context().info(), texture_settings));
+    auto prepared = std::const_pointer_cast<tex::PreparedTextureSet>(tex::prepare_scene_textures(
+        scene, texture_target(resources.context().info(), texture_settings),
+        texture_pipeline_options(texture_settings)));
     upload(scene, prepared, texture_settings.missing);
     // Nobody else holds this set: the levels are on the GPU now, keep the records only.
     for (tex::PreparedTexture& t : prepared->textures) decltype(t.levels)().swap(t.levels);

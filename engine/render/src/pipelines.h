@@ -88,9 +88,6 @@ class Pipelines {
 public:
     Pipelines(const Context& context, VkDescriptorSetLayout textures_layout,
               VkDescriptorSetLayout frame_layout, VkFormat color_format);
-    // Point size forward shading gives points: kPointSizePixels, or 1 on a device
-    // without largePoints.
-    float point_size() const { return point_size_; }
     VkPipeline get(PipelineId id) const { return pipelines_[static_cast<std::size_t>(id)].get(); }
     // The same for meshes of `mesh_flags`: moving meshes get the pipeline's MOTION
     // twin (skinning and morphing in the vertex stage), built on first use.
@@ -108,6 +105,8 @@ public:
 
 private:
     VkFormat color_format_;
+    // Point size forward shading gives points: kPointSizePixels, or 1 on a device
+    // without largePoints.
     float point_size_ = 1.0f;
     float line_width_ = 1.0f;
     float outline_width_ = 1.0f;

@@ -6,8 +6,6 @@
 #include <sherpa/texture/block_codecs.h>
 
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
 
 namespace sherpa::gpu {
 
@@ -73,28 +71,6 @@ void check_prepared(const tex::PreparedTexture& t, const Scene& scene, const Dev
     }
 }
 
-// Replaces t's BC7 levels by their RGBA8 decoding (what sampling the blocks returns).
-void decode_bc7_levels(tex::PreparedTexture& t) {
-    const auto t0 = std::chrono::steady_clock::now();
-    const bool srgb = t.format == tex::VkFormat::Bc7SrgbBlock;
-    std::uint64_t bytes = 0;
-    for (std::size_t l = 0; l < t.levels.size(); ++l) {
-        const auto level = static_cast<std::uint32_t>(l);
-        t.levels[l] =
-            tex::decode_image(tex::BlockFormat::Bc7, t.levels[l], tex::mip_extent(t.width, level),
-                              tex::mip_extent(t.height, level));
-        bytes += t.levels[l].size();
-    }
-    t.format = srgb ? tex::VkFormat::R8G8B8A8Srgb : tex::VkFormat::R8G8B8A8Unorm;
-    t.bytes_gpu = bytes;
-    const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    char note[96];
-    std::snprintf(note, sizeof note, "BC7 blocks decoded to RGBA8 for the CPU device (%.1f ms)",
-                  ms);
-    t.note = t.note.empty() ? note : t.note + "; " + note;
-}
-
 } // namespace
 
 std::string_view to_string(MissingTextures m) {
@@ -107,55 +83,19 @@ std::optional<MissingTextures> parse_missing_textures(std::string_view name) {
     return std::nullopt;
 }
 
-tex::PipelineOptions texture_pipeline_options(const DeviceInfo& device,
-                                              const TextureSettings& settings) {
+tex::TextureTarget texture_target(const DeviceInfo& device, const TextureSettings& settings) {
+    return {device.bc_textures, device.is_cpu() && settings.decode_bc7_on_cpu, device.name};
+}
+
+tex::PipelineOptions texture_pipeline_options(const TextureSettings& settings) {
     tex::PipelineOptions o;
     o.cache_dir = settings.cache_dir;
     o.cache_cap_bytes = settings.cache_cap_bytes;
     o.bc7_level = settings.quality;
-    o.device_supports_bc = device.bc_textures && !settings.force_rgba8;
+    o.device_supports_bc = !settings.force_rgba8;
     o.progress = settings.progress;
     o.cancel = settings.cancel;
     return o;
-}
-
-std::shared_ptr<const tex::PreparedTextureSet>
-prepare_scene_textures(const Scene& scene, const DeviceInfo& device,
-                       const TextureSettings& settings) {
-    auto set = std::make_shared<tex::PreparedTextureSet>(
-        tex::prepare_textures(scene, texture_pipeline_options(device, settings)));
-    // Say why there is no BC: the device (a warning: textures cost 4x the memory and
-    // no setting helps), or the settings (a notice: the user asked for it).
-    if (!set->textures.empty() && (!device.bc_textures || settings.force_rgba8)) {
-        std::erase_if(set->warnings, [](const std::string& w) {
-            return w.starts_with("device cannot sample BC formats");
-        });
-        if (!device.bc_textures)
-            set->warnings.insert(set->warnings.begin(),
-                                 device.name +
-                                     " cannot sample BC7/BC5 (textureCompressionBC or format "
-                                     "features missing): textures fall back to uncompressed RGBA8");
-        else
-            set->notices.push_back("RGBA8 forced (--no-bc): textures are uploaded uncompressed "
-                                   "although " +
-                                   device.name + " samples BC7/BC5");
-    }
-    if (device.is_cpu() && settings.decode_bc7_on_cpu) {
-        // One texture at a time: decode_image spreads its block rows over the cores.
-        std::size_t bc7 = 0;
-        for (tex::PreparedTexture& t : set->textures)
-            if (!t.failed && (t.format == tex::VkFormat::Bc7SrgbBlock ||
-                              t.format == tex::VkFormat::Bc7UnormBlock)) {
-                decode_bc7_levels(t);
-                ++bc7;
-            }
-        // Nothing for the user to act on: the pixels are the same. A notice, not a warning.
-        if (bc7 > 0)
-            set->notices.push_back(
-                std::to_string(bc7) + " BC7 texture(s) decoded to RGBA8 at upload: " + device.name +
-                " is a CPU device, where sampling BC7 costs several times RGBA8");
-    }
-    return set;
 }
 
 SceneTextures::SceneTextures(ResourceManager& resources, BindlessTable& table, const Scene& scene,

@@ -29,7 +29,6 @@ std::uint32_t BitReader::vlc(unsigned chunk_bits) {
 
 bool Huffman::build(const std::vector<std::uint8_t>& lengths) {
     std::fill(std::begin(count_), std::end(count_), 0);
-    lengths_ = lengths.size();
     for (std::uint8_t l : lengths) ++count_[l];
     count_[0] = 0;
     // Over-subscription check: at each length, codes left must stay >= 0.

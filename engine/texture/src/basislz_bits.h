@@ -34,12 +34,10 @@ public:
     bool build(const std::vector<std::uint8_t>& lengths);
     // Next symbol, or -1 for a code that no symbol has (or data overrun).
     int decode(BitReader& in) const;
-    std::size_t symbol_count() const { return lengths_; }
 
 private:
     std::uint16_t count_[17] = {};      // codes of each length
     std::vector<std::uint16_t> sorted_; // symbols by (length, value)
-    std::size_t lengths_ = 0;
 };
 
 // Reads one compressed Huffman table (spec section 6.0) into `out`.

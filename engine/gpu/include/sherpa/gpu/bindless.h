@@ -34,7 +34,6 @@ public:
     // The image must be in SHADER_READ_ONLY_OPTIMAL whenever a draw may sample it.
     std::uint32_t add(VkImageView view, VkSampler sampler);
     void remove(std::uint32_t slot);
-    std::uint32_t used_slots() const { return next_ - static_cast<std::uint32_t>(free_.size()); }
 
 private:
     void write(std::uint32_t binding, std::uint32_t slot, VkImageView view, VkSampler sampler,

@@ -162,10 +162,7 @@ inline constexpr std::array<OverlayEntry, 7> kOverlays{{
     {kOverlaySkeleton, "skeleton", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Skeleton")},
 }};
 
-// The row of `v`; the table is indexed by id (checked below).
-constexpr const DebugViewInfo& view_info(DebugView v) {
-    return kDebugViews[static_cast<std::size_t>(v)];
-}
+// The table is indexed by id (checked below).
 constexpr bool views_indexed_by_id() {
     for (std::size_t i = 0; i < kDebugViews.size(); ++i)
         if (static_cast<std::size_t>(kDebugViews[i].id) != i) return false;

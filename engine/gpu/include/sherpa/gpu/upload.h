@@ -24,7 +24,6 @@ public:
     // each level tightly packed). levels.size() must equal the image's mip count.
     // The image ends in SHADER_READ_ONLY_OPTIMAL for fragment shaders.
     void upload_image_levels(ImageHandle dst, std::span<const std::vector<std::uint8_t>> levels);
-    VkDeviceSize staged_bytes() const { return static_cast<VkDeviceSize>(staging_.size()); }
     void submit_and_wait();
 
 private:

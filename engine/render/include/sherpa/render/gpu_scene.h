@@ -85,7 +85,7 @@ private:
 
 class GpuScene {
 public:
-    // Uploads textures the caller prepared (prepare_scene_textures(), possibly on
+    // Uploads textures the caller prepared (tex::prepare_scene_textures(), possibly on
     // another thread) for this scene.
     GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
              std::shared_ptr<const tex::PreparedTextureSet> textures,

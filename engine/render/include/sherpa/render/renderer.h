@@ -109,7 +109,8 @@ public:
     // Prepares its textures first, on this thread, with texture_settings().
     void load(const Scene& scene, StreamPolicy policy = StreamPolicy::UsedByMaterials);
     // The same with textures already prepared for `scene` (prepare_scene_textures()
-    // with context().info(), e.g. on a loader thread); only the upload happens here.
+    // of the texture layer, for this device's texture_target(), e.g. on a loader
+    // thread); only the upload happens here.
     void load(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
               StreamPolicy policy = StreamPolicy::UsedByMaterials);
     const TextureSettings& texture_settings() const;

@@ -4,7 +4,8 @@
 // cannot sample BC) uploaded as they are with their full mip chains through one
 // staging batch, registered in the bindless table, plus the sampler objects the
 // glTF samplers map to. Preparation (decode, mips, compression, cache) is CPU
-// work that may run on any thread before the upload: see prepare_scene_textures().
+// work that may run on any thread before the upload: tex::prepare_scene_textures()
+// for the device's texture_target().
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -21,20 +22,16 @@
 #include <sherpa/render/load_settings.h>
 #include <sherpa/scene/scene.h>
 #include <sherpa/texture/texture_pipeline.h>
+#include <sherpa/texture/texture_target.h>
 
 namespace sherpa::gpu {
 
-// Pipeline options for `device`: block-compressed where the device can sample
-// BC7/BC5 and `settings` does not force RGBA8.
-tex::PipelineOptions texture_pipeline_options(const DeviceInfo& device,
-                                              const TextureSettings& settings);
-
-// Runs the texture pipeline for `scene` on the calling thread (no Vulkan calls:
-// safe on a worker thread). Adds a warning naming the device when it cannot
-// sample BC formats.
-std::shared_ptr<const tex::PreparedTextureSet>
-prepare_scene_textures(const Scene& scene, const DeviceInfo& device,
-                       const TextureSettings& settings);
+// What textures are prepared for on `device`: BC where it samples BC7/BC5, BC7
+// decoded to RGBA8 where it is a CPU device and `settings` does not keep the blocks.
+tex::TextureTarget texture_target(const DeviceInfo& device, const TextureSettings& settings);
+// The texture pipeline's options from `settings` (cache, BC7 level, progress, cancel;
+// force_rgba8 turns BC off whatever the target samples).
+tex::PipelineOptions texture_pipeline_options(const TextureSettings& settings);
 
 // One prepared texture on the GPU.
 struct GpuTexture {

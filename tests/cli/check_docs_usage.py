@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""The README's usage blocks are the CLI's own: for every command that
-`sherpa-cli --help` lists, the synopsis `sherpa-cli COMMAND --help` prints (its lines
-up to the first blank one, without "usage: ") appears, line for line, inside one of
-the README's fenced code blocks. Prints the block to paste where one is missing or
-differs. Usage: check_readme_usage.py SHERPA_CLI README.md"""
+"""The usage blocks of the command-line guide (docs/cli.md) are the CLI's own: for
+every command that `sherpa-cli --help` lists, the synopsis `sherpa-cli COMMAND --help`
+prints (its lines up to the first blank one, without "usage: ") appears, line for
+line, inside one of the page's fenced code blocks. Prints the block to paste where
+one is missing or differs. Usage: check_docs_usage.py SHERPA_CLI PAGE.md"""
 import subprocess
 import sys
 
@@ -35,7 +35,7 @@ def contains(block, lines):
 
 
 def main():
-    cli, readme = sys.argv[1], sys.argv[2]
+    cli, page = sys.argv[1], sys.argv[2]
     commands = []
     for line in run(cli, "--help").splitlines():
         if line.startswith("sherpa-cli "):
@@ -44,7 +44,7 @@ def main():
                 commands.append(name)
     if len(commands) < 5:
         sys.exit(f"only {commands} found in sherpa-cli --help")
-    with open(readme, encoding="utf-8") as f:
+    with open(page, encoding="utf-8") as f:
         blocks = code_blocks(f.read())
     failed = []
     for name in commands:
@@ -54,11 +54,11 @@ def main():
             continue
         synopsis = text[len("usage: "):].split("\n\n")[0].splitlines()
         if not any(contains(b, synopsis) for b in blocks):
-            failed.append(f"{name}: README has no code block with this synopsis:\n" +
+            failed.append(f"{name}: {page} has no code block with this synopsis:\n" +
                           "```\n" + "\n".join(synopsis) + "\n```")
     for f in failed:
         print(f)
-    print(f"{len(commands) - len(failed)} of {len(commands)} commands' usage in the README")
+    print(f"{len(commands) - len(failed)} of {len(commands)} commands' usage in {page}")
     return 1 if failed else 0
 
 

@@ -3,6 +3,7 @@
 // pointer (engine/lab/json_diff.h) and, with --image, a
 // rendered difference heat map of both from the same camera (A framed).
 #include "cli_common.h"
+#include "environment_options.h"
 
 #include <sherpa/lab/compare.h>
 #include <sherpa/lab/family.h>
@@ -175,7 +176,14 @@ int run_compare(Args args) {
     std::vector<std::string> files;
     std::string image;
     bool json = false;
+    gpu::EnvironmentChoice environment; // --image: both lit as render lights its frame
+    gpu::RenderSettings lighting;
     for (std::size_t i = 0; i < args.size(); ++i) {
+        std::string option_error;
+        const OptionMatch em =
+            parse_environment_option(args, i, lighting, environment, option_error);
+        if (em == OptionMatch::Bad) return usage_error(option_error, kUsage);
+        if (em == OptionMatch::Taken) continue;
         if (args[i] == "--json")
             json = true;
         else if (args[i] == "--image" && i + 1 < args.size())
@@ -197,7 +205,9 @@ int run_compare(Args args) {
     nlohmann::json out = comparison_json(c);
     out["json_diff"] = json_diff_json(diff);
     if (!image.empty()) {
-        const lab::DifferenceImage d = lab::render_difference(*a.scene, *b.scene, {});
+        lab::DifferenceOptions options;
+        options.lighting = {make_environment_image(environment), lighting};
+        const lab::DifferenceImage d = lab::render_difference(*a.scene, *b.scene, options);
         std::string error = d.error;
         if (error.empty() &&
             !tex::write_png(image, d.heat.width, d.heat.height, d.heat.pixels, error))

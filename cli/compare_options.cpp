@@ -1,4 +1,5 @@
 #include "compare_options.h"
+#include "environment_options.h"
 #include "gpu_cli.h"
 
 #include <sherpa/gpu/context.h>
@@ -156,6 +157,13 @@ int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
             return gpu::needs_all_streams(s) ? gpu::StreamPolicy::AllPresent
                                              : gpu::StreamPolicy::UsedByMaterials;
         };
+        // Both sides lit by one environment, as the render command's frame is; a side
+        // that draws no lit view makes none (no GPU bytes).
+        if (sa.view == gpu::DebugView::Lit || sb.view == gpu::DebugView::Lit) {
+            const auto environment = make_environment_image(run.environment);
+            if (sa.view == gpu::DebugView::Lit) a.set_environment(environment.get());
+            if (sb.view == gpu::DebugView::Lit) b.set_environment(environment.get());
+        }
         a.load(*run.scene, policy(sa));
         b.load(*scene_b, policy(sb));
         std::vector<double> reduce, composite;

@@ -12,6 +12,7 @@
 #include <string>
 
 #include <sherpa/render/comparison.h>
+#include <sherpa/render/environment.h>
 #include <sherpa/render/render_settings.h>
 
 namespace sherpa::cli {
@@ -65,8 +66,9 @@ struct CompareRun {
     gpu::RenderSettings settings; // side A's
     TextureCliOptions textures;
     bool validation = false, ray_tracing = true;
-    std::string output;       // the PNG
-    std::uint32_t frames = 1; // --frames: comparisons drawn (pass times: their median)
+    std::string output;                 // the PNG
+    std::uint32_t frames = 1;           // --frames: comparisons drawn (pass times: their median)
+    gpu::EnvironmentChoice environment; // both sides' (the lit view's), as render's own
 };
 
 // Renders, writes the PNG and prints the statistics; returns the exit code.

@@ -76,11 +76,17 @@ OptionMatch parse_environment_option(Args args, std::size_t& i, gpu::RenderSetti
     return OptionMatch::Taken;
 }
 
-void apply_environment(gpu::Renderer& renderer, const gpu::EnvironmentChoice& environment) {
+std::shared_ptr<const gpu::EnvironmentImage>
+make_environment_image(const gpu::EnvironmentChoice& environment) {
     std::vector<std::string> warnings;
-    const auto image = gpu::make_environment(environment, warnings);
+    auto image = gpu::make_environment(environment, warnings);
     for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-    renderer.set_environment(image ? &*image : nullptr);
+    if (!image) return nullptr;
+    return std::make_shared<const gpu::EnvironmentImage>(std::move(*image));
+}
+
+void apply_environment(gpu::Renderer& renderer, const gpu::EnvironmentChoice& environment) {
+    renderer.set_environment(make_environment_image(environment).get());
 }
 
 } // namespace sherpa::cli

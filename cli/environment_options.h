@@ -5,6 +5,7 @@
 #include "cli_common.h"
 #include "texture_cli.h" // OptionMatch
 
+#include <memory>
 #include <string>
 
 #include <sherpa/render/environment.h>
@@ -27,8 +28,12 @@ inline constexpr const char* kEnvironmentOptionsSynopsis =
 OptionMatch parse_environment_option(Args args, std::size_t& i, gpu::RenderSettings& settings,
                                      gpu::EnvironmentChoice& environment, std::string& error);
 
-// Makes the chosen environment and gives it to `renderer`; its warnings (an
-// unreadable file and the fallback used, NaN texels, ...) go to stderr.
+// Makes the chosen environment (null: none); its warnings (an unreadable file and the
+// fallback used, NaN texels, ...) go to stderr.
+std::shared_ptr<const gpu::EnvironmentImage>
+make_environment_image(const gpu::EnvironmentChoice& environment);
+
+// Makes the chosen environment and gives it to `renderer` (warnings as above).
 void apply_environment(gpu::Renderer& renderer, const gpu::EnvironmentChoice& environment);
 
 } // namespace sherpa::cli

@@ -2,6 +2,7 @@
 // Runs one Lab family (engine/lab) on the scene and prints per method its time, its
 // error figures against the family's reference and its failures by cause.
 #include "cli_common.h"
+#include "environment_options.h"
 
 #include <sherpa/core/file_io.h>
 #include <sherpa/lab/families.h>
@@ -23,6 +24,10 @@ struct Options {
     bool json = false, csv = false, gpu = true;
     int repeat = 0; // 0: the family's default
     long long sample_texels = -1, cameras = -1;
+    // The lit frames' environment and display settings (the shadows family), parsed by
+    // the options render takes: the room unless --environment says otherwise.
+    gpu::EnvironmentChoice environment;
+    gpu::RenderSettings lighting;
 };
 
 // The usage text (main.cpp) lists the engine's families (lab::family_names), the one
@@ -58,6 +63,7 @@ std::unique_ptr<lab::Family> make(const Options& o) {
         lab::ShadowFamilyOptions sh;
         if (o.repeat > 0) sh.frames = std::uint32_t(o.repeat);
         if (o.cameras > 0) sh.cameras = std::uint32_t(std::min(o.cameras, 64LL));
+        sh.lighting = {make_environment_image(o.environment), o.lighting};
         return lab::make_shadow_family(sh);
     }
     return nullptr;
@@ -128,6 +134,11 @@ int run_lab(Args args) {
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string_view a = args[i];
         const bool has_value = i + 1 < args.size();
+        std::string option_error;
+        const OptionMatch em =
+            parse_environment_option(args, i, o.lighting, o.environment, option_error);
+        if (em == OptionMatch::Bad) return usage_error(option_error);
+        if (em == OptionMatch::Taken) continue;
         if (a == "--family" && has_value)
             o.family = std::string(args[++i]);
         else if (a == "--chart" && has_value)

@@ -63,13 +63,17 @@ constexpr Command kCommands[] = {
     {"lab", run_lab,
      "sherpa-cli lab SCENE --family {families} [--json|--csv]\n"
      "    [--chart OUT.svg] [--repeat N] [--sample-texels N] [--cameras N] [--no-gpu]\n"
+     "    {environment-options}\n"
      "\n"
      "Every method of one family measured on the scene: time against error.\n"
-     "  shadows: --cameras N around the scene, --repeat N timed frames (median)\n"},
+     "  shadows: --cameras N around the scene, --repeat N timed frames (median), lit\n"
+     "           as render lights its frame (the environment options)\n"},
     {"compare", run_compare,
      "sherpa-cli compare A B [--json] [--image OUT.png]\n"
+     "    {environment-options}\n"
      "\n"
-     "Structural diff of two glTF files; --image draws where they differ.\n"},
+     "Structural diff of two glTF files; --image draws where they differ, both lit as\n"
+     "render lights its frame (the environment options).\n"},
     {"validate", run_validate,
      "sherpa-cli validate FILE|DIR [--json] [--max-severity error|warning|info|hint] [--jobs N]\n"
      "\n"

@@ -5,7 +5,8 @@
 // each texel's direction, with n = v = r (split-sum). Filtered importance sampling
 // (Krivanek and Colbert): each sample reads the source level whose texel covers its
 // share of the solid angle, so few samples give a smooth result. The weights are
-// normalised: a uniform environment stays exactly uniform (the furnace test).
+// normalised: a uniform environment stays exactly uniform (the furnace test). GGX at
+// roughness 0 (the sharp level) is a copy of the source, made by EnvironmentMap.
 #include "ibl_sampling.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(constant_id = 0) const uint DISTRIBUTION = IBL_GGX;
@@ -16,10 +17,6 @@ void main() {
     uvec3 id = gl_GlobalInvocationID;
     if (id.x >= push.face_size || id.y >= push.face_size) return;
     vec3 n = cube_direction(id.z, (vec2(id.xy) + 0.5) / float(push.face_size));
-    if (DISTRIBUTION == IBL_GGX && push.roughness <= 0.0) {
-        imageStore(cube, ivec3(id), vec4(textureLod(source, n, 0.0).rgb, 1.0));
-        return;
-    }
     float a = push.roughness * push.roughness;
     mat3 tbn = frame_around(n);
     // Solid angle of one source texel at level 0.

@@ -109,8 +109,12 @@ void load_session(gpu::Renderer& renderer, const SceneSession& session, bool all
 
 QStringList GpuViewport::setEnvironment(const gpu::EnvironmentChoice& choice) {
     std::vector<std::string> warnings;
-    const auto image = gpu::make_environment(choice, warnings);
-    impl_->renderer->set_environment(image ? &*image : nullptr);
+    auto image = gpu::make_environment(choice, warnings);
+    impl_->environment =
+        image ? std::make_shared<const gpu::EnvironmentImage>(std::move(*image)) : nullptr;
+    impl_->renderer->set_environment(impl_->environment.get());
+    // A comparison's side B is lit alike (its renderer keeps its own maps).
+    if (impl_->b.renderer) impl_->b.renderer->set_environment(impl_->environment.get());
     QStringList out;
     for (const std::string& w : warnings) out << QString::fromStdString(w);
     return out;
@@ -167,6 +171,18 @@ void GpuViewport::releaseSurface() {
     impl_->surface = 0;
 }
 
+void apply_display(const ViewportDisplay& d, gpu::RenderSettings& settings) {
+    settings.environment_rotation = d.environmentRotation;
+    settings.environment_intensity = d.environmentIntensity;
+    settings.background = d.background;
+    if (d.background == gpu::Background::Color)
+        settings.clear_color = glm::vec4(d.backgroundColor, 1.0f);
+    settings.tone_map = d.toneMap;
+    settings.exposure = d.exposure;
+    settings.sun = d.sun;
+    settings.energy_compensation = d.energyCompensation;
+}
+
 gpu::RenderSettings render_settings(const ViewportFrame& frame, float scale, bool reduced_prepass) {
     gpu::RenderSettings settings;
     settings.width = frame.width;
@@ -186,16 +202,7 @@ gpu::RenderSettings render_settings(const ViewportFrame& frame, float scale, boo
     settings.hidden_nodes = frame.hiddenNodes;
     settings.cascades = frame.shadowCascades;
     settings.shadow_pcf_taps = frame.shadowPcfTaps;
-    const ViewportDisplay& d = frame.display;
-    settings.environment_rotation = d.environmentRotation;
-    settings.environment_intensity = d.environmentIntensity;
-    settings.background = d.background;
-    if (d.background == gpu::Background::Color)
-        settings.clear_color = glm::vec4(d.backgroundColor, 1.0f);
-    settings.tone_map = d.toneMap;
-    settings.exposure = d.exposure;
-    settings.sun = d.sun;
-    settings.energy_compensation = d.energyCompensation;
+    apply_display(frame.display, settings);
     if (frame.frozenCulling) settings.freeze_cull = gpu::explicit_camera(*frame.frozenCulling);
     // A reduced frame means a slow device while the camera moves: the shadow cascades
     // follow the camera and cost the same at any resolution (DamagedHelmet on lavapipe:

@@ -46,6 +46,10 @@ struct ViewportDisplay {
     bool energyCompensation = true;
 };
 
+// The display's fields of `settings` (gpu::copy_lighting's): what every view of the
+// window lit alike reads (the viewport, a comparison's side B, the Lab).
+void apply_display(const ViewportDisplay& display, gpu::RenderSettings& settings);
+
 // What the window wants drawn; mapped to gpu::RenderSettings inside.
 struct ViewportFrame {
     std::uint32_t width = 0, height = 0; // pixels

@@ -75,6 +75,9 @@ bool GpuViewport::presentComparison(const ViewportFrame& frame, const gpu::Rende
         options.ray_tracing = rays && impl.context->info().ray_tracing_enabled;
         options.textures = impl.renderer->texture_settings();
         impl.b.renderer = std::make_unique<gpu::Renderer>(*impl.context, options);
+        // Lit as side A is: the same environment (render_settings() gives both sides the
+        // same display settings).
+        impl.b.renderer->set_environment(impl.environment.get());
         load_session(*impl.b.renderer, *session, all);
         impl.b.session = session;
         impl.b.all_streams = all;

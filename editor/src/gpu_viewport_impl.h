@@ -23,6 +23,8 @@ struct GpuViewport::Impl {
     bool all_streams = false;
     bool reduced_prepass = false;                // setReducedFramePrepass()
     std::unique_ptr<gpu::GpuCullChecker> culler; // CPU/GPU agreement checks, built per scene
+    // The environment lighting side A (setEnvironment), kept to light side B alike.
+    std::shared_ptr<const gpu::EnvironmentImage> environment;
 
     // Side B of a comparison (gpu_viewport_compare.cpp): a second renderer on the same
     // context, with what it was loaded with; made while comparing, freed after.

@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include <sherpa/core/progress.h>
+#include <sherpa/lab/families.h>
 #include <sherpa/scene/scene_loader.h>
 
 namespace sherpa::editor {
@@ -100,46 +101,61 @@ template <class F> auto guarded(F f, QString& error) -> decltype(f()) {
 
 } // namespace
 
+void LabRunner::setLighting(const gpu::EnvironmentChoice& environment,
+                            const gpu::RenderSettings& settings) {
+    environment_ = environment;
+    lighting_ = settings;
+}
+
 void LabRunner::start(const QString& family_name, const QString& spec) {
     std::shared_ptr<Job> job = begin();
-    workers_ << QtConcurrent::run(
-        &pool_, [this, job, family = family_name.toStdString(), path = spec.toStdString()] {
-            lower_worker_priority();
-            std::unique_ptr<lab::Family> family_ptr = lab::make_family(family);
-            auto fail = [this, job](QString error) {
-                post(this, [this, job, error] {
-                    if (job != job_) return;
-                    end(job);
-                    Q_EMIT failed(error);
-                });
-            };
-            if (!family_ptr) return fail(QStringLiteral("unknown family '%1'").arg(family.c_str()));
-            LoadResult loaded = load_scene(path, lab::lab_load_options());
-            if (job->cancel.cancelled()) return;
-            if (!loaded) return fail(QString::fromStdString(loaded.error));
-            lab::RunControl control;
-            control.cancel = &job->cancel;
-            control.progress = [this, job](std::size_t done, std::size_t total) {
-                if (!job->progress_due()) return;
-                post(this, [this, job, done, total] {
-                    if (job == job_) Q_EMIT progress(int(done), int(total));
-                });
-            };
-            QString error;
-            auto report = guarded(
-                [&] {
-                    return std::make_shared<const lab::FamilyReport>(
-                        family_ptr->run(*loaded.scene, control));
-                },
-                error);
-            if (!report) return fail(error);
-            if (report->cancelled) return;
-            post(this, [this, job, report] {
+    workers_ << QtConcurrent::run(&pool_, [this, job, family = family_name.toStdString(),
+                                           path = spec.toStdString(), environment = environment_,
+                                           settings = lighting_] {
+        lower_worker_priority();
+        // Lit frames lit as the main view is (the file's warnings are the view's).
+        gpu::Lighting lighting{nullptr, settings};
+        if (lab::family_draws_lit_frames(family)) {
+            std::vector<std::string> warnings;
+            if (auto image = gpu::make_environment(environment, warnings))
+                lighting.environment =
+                    std::make_shared<const gpu::EnvironmentImage>(std::move(*image));
+        }
+        std::unique_ptr<lab::Family> family_ptr = lab::make_family(family, lighting);
+        auto fail = [this, job](QString error) {
+            post(this, [this, job, error] {
                 if (job != job_) return;
                 end(job);
-                Q_EMIT finished(report);
+                Q_EMIT failed(error);
             });
+        };
+        if (!family_ptr) return fail(QStringLiteral("unknown family '%1'").arg(family.c_str()));
+        LoadResult loaded = load_scene(path, lab::lab_load_options());
+        if (job->cancel.cancelled()) return;
+        if (!loaded) return fail(QString::fromStdString(loaded.error));
+        lab::RunControl control;
+        control.cancel = &job->cancel;
+        control.progress = [this, job](std::size_t done, std::size_t total) {
+            if (!job->progress_due()) return;
+            post(this, [this, job, done, total] {
+                if (job == job_) Q_EMIT progress(int(done), int(total));
+            });
+        };
+        QString error;
+        auto report = guarded(
+            [&] {
+                return std::make_shared<const lab::FamilyReport>(
+                    family_ptr->run(*loaded.scene, control));
+            },
+            error);
+        if (!report) return fail(error);
+        if (report->cancelled) return;
+        post(this, [this, job, report] {
+            if (job != job_) return;
+            end(job);
+            Q_EMIT finished(report);
         });
+    });
 }
 
 void LabRunner::startBudget(std::shared_ptr<const Scene> scene) {

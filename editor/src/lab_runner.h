@@ -16,6 +16,8 @@
 
 #include <sherpa/lab/budget.h>
 #include <sherpa/lab/family.h>
+#include <sherpa/render/environment.h>
+#include <sherpa/render/render_settings.h>
 
 namespace sherpa::editor {
 
@@ -24,6 +26,12 @@ class LabRunner : public QObject {
 public:
     explicit LabRunner(QObject* parent = nullptr);
     ~LabRunner() override; // cancels and waits for the worker
+
+    // How the families that draw lit frames (shadows) light them: the main view's
+    // environment and display settings. The environment is made by the worker, and only
+    // for such a family.
+    void setLighting(const gpu::EnvironmentChoice& environment,
+                     const gpu::RenderSettings& settings);
 
     // Runs family `family` ("tangents", "textures", "culling") on the scene `spec`.
     void start(const QString& family, const QString& spec);
@@ -48,6 +56,8 @@ private:
     void end(const std::shared_ptr<Job>& job);
 
     std::shared_ptr<Job> job_; // the run in flight; null: none
+    gpu::EnvironmentChoice environment_{gpu::EnvironmentChoice::Kind::None, {}};
+    gpu::RenderSettings lighting_;
     // Its own threads: a family runs for seconds, and in the global pool it would hold
     // the thread the scene loader's thumbnails wait for (measured: Box took 29 s to load
     // while a textures run held the pool of a 2-core machine).

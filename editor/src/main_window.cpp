@@ -140,6 +140,7 @@ void MainWindow::createDocks() {
     culling_dock_ = new CullingDock(*culling_, this);
     log_ = new LogDock(this);
     lab_ = new LabDock(context_, this);
+    updateLabLighting();
     acceleration_ = new AccelerationDock(context_, this);
     validation_ = new ValidationDock(context_, this);
     for (QDockWidget* d : findChildren<QDockWidget*>()) {

@@ -185,7 +185,8 @@ private:
     void connectCompare();
     void onCompareChanged();
     void setupEnvironment();
-    void applyEnvironment(); // the menu's environment to the viewport
+    void applyEnvironment();  // the menu's environment to the viewport
+    void updateLabLighting(); // the Lab's lit frames lit as the viewport is
     // A frame the ray tracer refused: said in the log and status bar, back to raster.
     void onRefused(const QString& why);
     tex::PipelineOptions textureOptions() const; // the texture cache settings of now

@@ -3,6 +3,8 @@
 // changes (made on the render thread; its warnings reach the log), and the display
 // settings in every frame.
 #include "environment_menu.h"
+#include "lab_dock.h"
+#include "lab_runner.h"
 #include "log_dock.h"
 #include "main_window.h"
 #include "main_window_actions.h"
@@ -21,11 +23,22 @@ void MainWindow::setupEnvironment() {
     a_->view->insertMenu(a_->cameras->menuAction(), environment_->toneMenu());
     connect(environment_, &EnvironmentMenu::environmentChanged, this,
             &MainWindow::applyEnvironment);
-    connect(environment_, &EnvironmentMenu::displayChanged, this,
-            [this] { viewport_->scheduleFrame(); });
+    connect(environment_, &EnvironmentMenu::displayChanged, this, [this] {
+        updateLabLighting();
+        viewport_->scheduleFrame();
+    });
+}
+
+// The Lab's lit frames (the shadows family) lit as the viewport is.
+void MainWindow::updateLabLighting() {
+    if (!lab_ || !environment_) return; // both made in the constructor; the Lab after
+    gpu::RenderSettings settings;
+    apply_display(environment_->display(), settings);
+    lab_->runner().setLighting(environment_->choice(), settings);
 }
 
 void MainWindow::applyEnvironment() {
+    updateLabLighting();
     if (!render_) return; // given to the device once it is ready
     const gpu::EnvironmentChoice choice = environment_->choice();
     // The command line's choice and the device becoming ready both ask: build it once.

@@ -119,6 +119,33 @@ TEST(CliLab, ShadowsJsonShape) {
     }
 }
 
+// The shadows family's frames are lit as render lights its frame: the environment
+// options are render's (a bad file is the same warning and fallback), a bad value is a
+// usage error.
+TEST(CliLab, ShadowsTakeTheEnvironmentOptions) {
+    const std::string missing = "/no/such/environment.exr";
+    const auto r = run_cli("lab '" + sherpa::test::gltf_asset("Box") +
+                               "' --family shadows --cameras 1 --repeat 1 --json --environment " +
+                               missing + " --tone-map agx --background 0,0,0",
+                           "2>&1 >/dev/null");
+    EXPECT_EQ(r.exit_code, 0) << r.out;
+    EXPECT_NE(r.out.find("warning: " + missing), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("using the built-in room environment instead"), std::string::npos)
+        << r.out;
+    EXPECT_EQ(run_cli("lab builtin:default --family shadows --tone-map nope").exit_code, 2);
+    // compare --image: both sides lit alike, by the same options.
+    const std::string box = sherpa::test::gltf_asset("Box");
+    const fs::path png =
+        fs::temp_directory_path() / ("sherpa_compare_env_" + std::to_string(::getpid()) + ".png");
+    const auto c = run_cli("compare '" + box + "' '" + box + "' --image '" + png.string() +
+                               "' --environment " + missing,
+                           "2>&1");
+    EXPECT_EQ(c.exit_code, 0) << c.out;
+    EXPECT_NE(c.out.find("warning: " + missing), std::string::npos) << c.out;
+    EXPECT_NE(c.out.find("PSNR inf dB"), std::string::npos) << c.out;
+    fs::remove(png);
+}
+
 TEST(CliLab, CsvAndChart) {
     const fs::path svg =
         fs::temp_directory_path() / ("sherpa_lab_" + std::to_string(::getpid()) + ".svg");

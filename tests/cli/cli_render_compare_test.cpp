@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 namespace sherpa::test {
 namespace {
@@ -82,6 +83,46 @@ TEST_F(CliRenderCompare, SplitShowsTheTwoSingleRendersEitherSideOfTheDivider) {
 
 // Raster against rays (the rasterizer's derivative LOD against the rays' level 0):
 // the printed statistics are the ones computed from the two single renders.
+// Both sides of a lit comparison are lit as the single render is: by the room (the
+// default), by nothing (--environment none), and with the display settings given.
+TEST_F(CliRenderCompare, LitSidesAreLitAsTheSingleRender) {
+    const std::string box = gltf_asset("BoxTextured");
+    for (const std::string lighting :
+         {"", "--environment none", "--environment-rotation 90 --tone-map aces --exposure 1"}) {
+        const Png single =
+            render(box, "single.png", "--camera eye=2,1.5,3:target=0,0,0 " + lighting);
+        const Png split = render(box, "split.png",
+                                 "--camera eye=2,1.5,3:target=0,0,0 " + lighting +
+                                     " --compare split --compare-with '" + box + "'");
+        ASSERT_EQ(split.rgba.size(), single.rgba.size());
+        std::size_t wrong = 0;
+        for (std::uint32_t y = 0; y < kH; ++y)
+            for (std::uint32_t x = 0; x < kW; ++x) {
+                if (x == kW / 2 - 1 || x == kW / 2) continue; // the divider line
+                const std::size_t p = 4 * (std::size_t(y) * kW + x);
+                for (int k = 0; k < 3; ++k) wrong += split.rgba[p + k] != single.rgba[p + k];
+            }
+        EXPECT_EQ(wrong, 0u) << lighting;
+    }
+}
+
+// A file that is no image: render warns naming it, and draws with the room.
+TEST_F(CliRenderCompare, ABadEnvironmentFileIsAWarningAndTheRoom) {
+    const std::string box = gltf_asset("BoxTextured");
+    const fs::path bad = dir / "bad.hdr";
+    std::ofstream(bad) << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 512 +X 1024\nxx";
+    const Png room = render(box, "room.png", "");
+    const CliRun r =
+        run_cli("render '" + box + "' -o '" + (dir / "bad.png").string() + "' --width " +
+                std::to_string(kW) + " --height " + std::to_string(kH) +
+                " --validation --no-cache --no-shadows --environment '" + bad.string() + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    EXPECT_NE(r.out.find("warning: " + bad.string() + ": "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("using the built-in room environment instead"), std::string::npos)
+        << r.out;
+    EXPECT_EQ(read(dir / "bad.png").rgba, room.rgba);
+}
+
 TEST_F(CliRenderCompare, DifferenceStatisticsAreThoseOfTheSingleRenders) {
     const std::string box = gltf_asset("BoxTextured");
     const Png a = render(box, "raster.png", "--view base-color");

@@ -301,6 +301,65 @@ TEST_F(EnvironmentTest, BadFilesWarnAndFallBackToTheRoom) {
     }
 }
 
+// A w x h RGB float image of one value, written by OpenImageIO (.exr or .hdr).
+void write_image(const fs::path& p, int w, int h, float value) {
+    std::vector<float> px(std::size_t(w) * h * 3, value);
+    auto out = OIIO::ImageOutput::create(p.string());
+    ASSERT_TRUE(out) << p;
+    const OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::FLOAT);
+    ASSERT_TRUE(out->open(p.string(), spec)) << out->geterror();
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px.data())) << out->geterror();
+    out->close();
+}
+
+// Every failure names the file and falls back to the room.
+void expect_room_fallback(const gpu::EnvironmentLoad& load, const fs::path& p) {
+    EXPECT_TRUE(load.fallback) << p;
+    ASSERT_FALSE(load.warnings.empty()) << p;
+    EXPECT_NE(load.warnings.front().find(p.string()), std::string::npos) << load.warnings.front();
+    EXPECT_NE(load.warnings.front().find("using the built-in room environment instead"),
+              std::string::npos)
+        << load.warnings.front();
+    EXPECT_EQ(load.image.name, "room");
+    EXPECT_TRUE(load.image.valid());
+}
+
+TEST_F(EnvironmentTest, TruncatedAndUnreadableFilesWarnAndFallBackToTheRoom) {
+    // Real EXR and HDR files cut short: the header reads, the texels do not.
+    for (const char* ext : {".exr", ".hdr"}) {
+        const fs::path whole = fs::temp_directory_path() / (std::string("sherpa_env_whole") + ext);
+        write_image(whole, 256, 128, 0.5f);
+        const auto size = fs::file_size(whole);
+        const fs::path cut = fs::temp_directory_path() / (std::string("sherpa_env_cut") + ext);
+        fs::copy_file(whole, cut, fs::copy_options::overwrite_existing);
+        fs::resize_file(cut, size / 3);
+        const gpu::EnvironmentLoad ok = gpu::load_environment(whole.string());
+        EXPECT_FALSE(ok.fallback) << whole;
+        expect_room_fallback(gpu::load_environment(cut.string()), cut);
+    }
+    // A directory is not an image.
+    const fs::path dir = fs::temp_directory_path() / "sherpa_env_dir.exr";
+    fs::create_directories(dir);
+    expect_room_fallback(gpu::load_environment(dir.string()), dir);
+}
+
+TEST_F(EnvironmentTest, OneTexelImageIsAUniformEnvironmentWithAWarning) {
+    const fs::path p = fs::temp_directory_path() / "sherpa_env_test_1x1.exr";
+    write_image(p, 1, 1, 0.25f);
+    const gpu::EnvironmentLoad load = gpu::load_environment(p.string());
+    EXPECT_FALSE(load.fallback);
+    ASSERT_EQ(load.warnings.size(), 1u);
+    EXPECT_NE(load.warnings.front().find(p.string()), std::string::npos);
+    EXPECT_NE(load.warnings.front().find("1x1 is not 2:1"), std::string::npos)
+        << load.warnings.front();
+    ASSERT_TRUE(load.image.valid());
+    EXPECT_EQ(load.image.rgba[0], 0.25f);
+    // The smallest cube, built without a validation message, lights like a uniform one.
+    EnvironmentGuard guard{renderer()};
+    renderer().set_environment(&load.image);
+    EXPECT_EQ(renderer().resident().environment.cube_size, 16u); // the smallest cube made
+}
+
 TEST_F(EnvironmentTest, NonFiniteTexelsAreCountedAndReadAsBlack) {
     const fs::path p = fs::temp_directory_path() / "sherpa_env_test_nan.exr";
     {

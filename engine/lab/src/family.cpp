@@ -30,6 +30,19 @@ std::unique_ptr<Family> make_family(std::string_view name) {
     return nullptr;
 }
 
+bool family_draws_lit_frames(std::string_view name) {
+    return name == "shadows";
+}
+
+std::unique_ptr<Family> make_family(std::string_view name, const gpu::Lighting& lighting) {
+    if (name == "shadows") {
+        ShadowFamilyOptions options;
+        options.lighting = lighting;
+        return make_shadow_family(options);
+    }
+    return make_family(name);
+}
+
 namespace detail {
 
 std::string describe_mesh(const Mesh& mesh) {

@@ -31,6 +31,9 @@ DifferenceImage render_difference(const Scene& a, const Scene& b,
         gpu::Context context(co);
         gpu::Renderer renderer_a(context), renderer_b(context);
         gpu::RenderSettings settings;
+        gpu::copy_lighting(options.lighting.settings, settings);
+        renderer_a.set_environment(options.lighting.environment.get());
+        renderer_b.set_environment(options.lighting.environment.get());
         settings.width = options.width, settings.height = options.height;
         settings.shadows = false;
         FramingOptions framing;

@@ -155,6 +155,7 @@ private:
         ro.ray_tracing = true;
         ro.shadow_resolution = resolution;
         gpu::Renderer renderer(context, ro);
+        renderer.set_environment(options_.lighting.environment.get());
         renderer.load(scene);
         std::size_t i = first;
         for (std::uint32_t cascades : options_.cascades)
@@ -178,6 +179,7 @@ private:
         const std::size_t seen = context.validation().count();
         const double t0 = detail::process_cpu_ms();
         gpu::RenderSettings s;
+        gpu::copy_lighting(options_.lighting.settings, s);
         s.width = options_.width;
         s.height = options_.height;
         s.camera = gpu::explicit_camera(camera);

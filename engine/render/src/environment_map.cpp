@@ -29,13 +29,13 @@ std::uint32_t levels_of(std::uint32_t size) {
 }
 
 ImageHandle make_cube(ResourceManager& r, std::uint32_t size, std::uint32_t levels,
-                      const char* name) {
+                      const char* name, VkImageUsageFlags extra_usage = 0) {
     ImageDesc d;
     d.format = kFormat;
     d.width = d.height = size;
     d.mip_levels = levels;
     d.layers = 6;
-    d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
+    d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT | extra_usage;
     d.view_type = VK_IMAGE_VIEW_TYPE_CUBE;
     d.name = name;
     return r.images().create(d);
@@ -96,13 +96,15 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
     stats_.sheen_levels = sheen_levels;
     stats_.lut_size = kLutSize;
 
-    // The source in half floats (load_environment() clamped it to their range), with
-    // mips so that a source wider than 4 faces is read without aliasing.
+    // The source in half floats (load_environment() clamped it to their range). Only a
+    // source wider than 4 faces needs mips (read without aliasing at a coarser level);
+    // the others are read at level 0 and make none (a 1024x512 source: 10 blits saved).
+    const float equirect_lod = std::max(0.0f, std::log2(float(image.width) / float(4 * cube)));
     ImageDesc src_desc;
     src_desc.format = kFormat;
     src_desc.width = image.width;
     src_desc.height = image.height;
-    src_desc.mip_levels = levels_of(std::max(image.width, image.height));
+    src_desc.mip_levels = equirect_lod > 0.0f ? levels_of(std::max(image.width, image.height)) : 1;
     src_desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
                      VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     src_desc.name = "environment source";
@@ -115,8 +117,11 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
         upload.upload_image(source, half.data(), half.size() * sizeof(std::uint16_t));
         upload.submit_and_wait();
     }
-    ImageHandle radiance = make_cube(resources, cube, radiance_levels, "environment radiance");
-    specular_ = make_cube(resources, cube, specular_levels, "environment specular");
+    // The specular cube's level 0 is the radiance cube's, copied (no shader pass).
+    ImageHandle radiance = make_cube(resources, cube, radiance_levels, "environment radiance",
+                                     VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+    specular_ = make_cube(resources, cube, specular_levels, "environment specular",
+                          VK_IMAGE_USAGE_TRANSFER_DST_BIT);
     irradiance_ = make_cube(resources, kIrradianceSize, 1, "environment irradiance");
     sheen_ = make_cube(resources, kSheenSize, sheen_levels, "environment sheen");
     ImageDesc lut_desc;
@@ -182,7 +187,6 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
 
     // 1. Radiance cube level 0, then its box-filtered levels.
-    const float equirect_lod = std::max(0.0f, std::log2(float(image.width) / float(4 * cube)));
     to_cube.record(cmd,
                    layout.bind(images.get(equirect_sampler), images.get(source).view.get(),
                                target(radiance, 0, 6)),
@@ -193,9 +197,35 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
                           std::max(cube >> l, 1u), l - 1);
     }
     mark();
-    compute_barrier(cmd);
     // 2. Every prefilter and the LUT read the finished radiance cube: no barriers between.
-    for (std::uint32_t l = 0; l < specular_levels; ++l) {
+    // Specular level 0 (roughness 0) is the sharp environment itself: a copy of the
+    // radiance cube's level 0, in transfer layouts for the copy alone.
+    const VkImage radiance_image = images.get(radiance).image.get();
+    const VkImage specular_image = images.get(specular_).image.get();
+    transition(cmd, {radiance_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                     VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                     VK_ACCESS_2_TRANSFER_READ_BIT, 0, 1});
+    transition(cmd,
+               {specular_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, 0, 1});
+    VkImageCopy sharp{};
+    sharp.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 6};
+    sharp.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 6};
+    sharp.extent = {cube, cube, 1};
+    vkCmdCopyImage(cmd, radiance_image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, specular_image,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &sharp);
+    transition(cmd,
+               {radiance_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
+                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, 0, 1});
+    transition(cmd, {specular_image, VK_IMAGE_ASPECT_COLOR_BIT,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+                     VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE, 0, 1});
+    compute_barrier(cmd); // the radiance cube's other levels
+    for (std::uint32_t l = 1; l < specular_levels; ++l) {
         const float roughness = specular_levels > 1 ? float(l) / float(specular_levels - 1) : 0.0f;
         ggx.record(cmd, layout.bind(linear, radiance_view, target(specular_, l, 6)), cube >> l,
                    roughness, l == 1 ? kSpecularSamplesFirst : kSpecularSamples, cube,

@@ -80,6 +80,17 @@ std::vector<std::string_view> overlay_names() {
     return out;
 }
 
+void copy_lighting(const RenderSettings& from, RenderSettings& to) {
+    to.environment_rotation = from.environment_rotation;
+    to.environment_intensity = from.environment_intensity;
+    to.background = from.background;
+    to.clear_color = from.clear_color;
+    to.sun = from.sun;
+    to.energy_compensation = from.energy_compensation;
+    to.tone_map = from.tone_map;
+    to.exposure = from.exposure;
+}
+
 bool needs_all_streams(const RenderSettings& s) {
     const auto view = static_cast<std::size_t>(s.view);
     std::uint32_t streams = view < kDebugViews.size() ? kDebugViews[view].streams : ~0u;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <sherpa/render/render_settings.h>
 #include <sherpa/scene/camera_spec.h>
 #include <sherpa/scene/scene.h>
 #include <sherpa/texture/image.h>
@@ -82,6 +83,7 @@ struct DifferenceOptions {
     std::optional<CameraSpec> camera; // unset: scene a framed automatically
     std::uint32_t threshold = 8;
     bool validation = false;
+    gpu::Lighting lighting; // both sides lit alike (none by default)
 };
 DifferenceImage render_difference(const Scene& a, const Scene& b, const DifferenceOptions& options);
 

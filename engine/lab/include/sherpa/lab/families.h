@@ -6,6 +6,7 @@
 
 #include <sherpa/core/aabb.h>
 #include <sherpa/lab/family.h>
+#include <sherpa/render/render_settings.h>
 #include <sherpa/scene/camera_spec.h>
 
 namespace sherpa::lab {
@@ -90,8 +91,15 @@ struct ShadowFamilyOptions {
     std::uint32_t frames = 3;
     bool ray_tracing = true; // false: as on a device without it (tests)
     bool validation = false; // Khronos validation on the family's device (tests)
+    // The lit frames' environment and display settings (the main view's): none by default.
+    gpu::Lighting lighting;
 };
 std::unique_ptr<Family> make_shadow_family(const ShadowFamilyOptions& options = {});
+
+// Whether family `name` draws lit frames (and so takes a gpu::Lighting): "shadows".
+bool family_draws_lit_frames(std::string_view name);
+// make_family() with the lit frames lit by `lighting` (the main view's).
+std::unique_ptr<Family> make_family(std::string_view name, const gpu::Lighting& lighting);
 // A method's name and its settings, both ways: "2048x3 pcf4" is 2048 texels, 3
 // cascades, 4 PCF taps. Parsing fails (false) on anything else.
 std::string shadow_method_name(std::uint32_t resolution, std::uint32_t cascades,

@@ -152,6 +152,20 @@ struct RenderSettings {
 inline const glm::vec4 kHighlightColor{1.0f, 0.45f, 0.0f, 1.0f};      // orange
 inline const glm::vec4 kHighlightDetailColor{1.0f, 0.0f, 1.0f, 1.0f}; // magenta
 
+// How the lit view is lit and shown, as the main view sets it: copies the environment
+// rotation and intensity, background (and its clear colour), default sun, energy
+// compensation, tone map and exposure of `from` into `to`, so that every frame of one
+// scene (a comparison's two sides, the Lab's frames) is lit alike. The environment
+// itself is the renderer's (Renderer::set_environment).
+void copy_lighting(const RenderSettings& from, RenderSettings& to);
+
+// The environment image and lighting settings of a view, for work that makes its own
+// renderers (the Lab, `compare --image`): `environment` null is none.
+struct Lighting {
+    std::shared_ptr<const EnvironmentImage> environment;
+    RenderSettings settings; // only copy_lighting()'s fields are read
+};
+
 // Does this view/overlay need streams the materials do not use (so the scene must
 // be uploaded with StreamPolicy::AllPresent)?
 bool needs_all_streams(const RenderSettings& settings);

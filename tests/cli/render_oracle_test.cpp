@@ -11,6 +11,9 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/glm.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -30,6 +33,9 @@ struct OracleCase {
     float exposure;
     double min_psnr;      // dB over covered pixels
     double max_mean_diff; // mean |a - b| / 255 over covered pixels and channels
+    // Sweeps only (0 elsewhere): the largest difference of one sphere's mean colour
+    // (8-bit sRGB / 255, per channel) between the two renderers.
+    double max_sphere_diff = 0.0;
 };
 
 void PrintTo(const OracleCase& c, std::ostream* os) {
@@ -39,6 +45,12 @@ void PrintTo(const OracleCase& c, std::ostream* os) {
 constexpr const char* kHelmetCamera = "eye=1.6,0.5,2.6:target=0,0,0:fov=45:near=0.05:far=100";
 constexpr const char* kSpheresCamera =
     "eye=0.00278,0.00274,0.0125:target=0.00278,0.00274,-0.0015:fov=45:near=0.001:far=1";
+
+// The sweeps: two rows of five spheres (radius 0.4, 1 apart) seen from +Z.
+constexpr const char* kSweepCamera = "eye=0,0,5:target=0,0,0:fov=45:near=0.1:far=100";
+constexpr double kSweepMinPsnr = 0.0;  // measured first; set below
+constexpr double kSweepMaxMean = 1.0;
+constexpr double kSweepMaxSphere = 1.0;
 
 // Tolerances: what this run of the two renderers gives (docs/environment.md), with a
 // margin of about 1.5 dB / 0.01; they catch a wrong convention, camera, tone curve or
@@ -53,9 +65,21 @@ const OracleCase kCases[] = {
      "neutral", 0.0f, 15.0, 0.13},
     {"spheres_courtyard_linear", "MetalRoughSpheresNoTextures", "courtyard.exr", kSpheresCamera,
      "linear", -1.0f, 19.5, 0.07},
+    // Material extension sweeps (tools/material_sweeps/make_sweeps.py; docs/materials.md):
+    // rows of spheres, each sweeping one parameter; three.js draws them with
+    // MeshPhysicalMaterial (GLTFLoader's KHR_materials_* plugins).
+    {"ior_sweep_studio_neutral", "sweep:ior_sweep", "studio.exr", kSweepCamera, "neutral", 0.0f,
+     kSweepMinPsnr, kSweepMaxMean, kSweepMaxSphere},
+    {"specular_sweep_studio_neutral", "sweep:specular_sweep", "studio.exr", kSweepCamera,
+     "neutral", 0.0f, kSweepMinPsnr, kSweepMaxMean, kSweepMaxSphere},
+    {"specular_sweep_city_aces", "sweep:specular_sweep", "city.exr", kSweepCamera, "aces", 0.0f,
+     kSweepMinPsnr, kSweepMaxMean, kSweepMaxSphere},
 };
 
+// A sample model by name, or "sweep:NAME": an authored sweep in tests/data/material_sweeps.
 std::string asset(const std::string& name) {
+    if (name.rfind("sweep:", 0) == 0)
+        return std::string(SHERPA_TEST_DATA_DIR) + "/material_sweeps/" + name.substr(6) + ".gltf";
     return std::string(SHERPA_ASSETS_DIR) + "/gltf/" + name + "/glTF/" + name + ".gltf";
 }
 
@@ -73,6 +97,56 @@ Image read(const fs::path& p) {
     std::string error;
     EXPECT_TRUE(tex::read_png_rgba8(p.string(), img.width, img.height, img.rgba, error)) << error;
     return img;
+}
+
+// Mean 8-bit colour (/255) of a disk about a sweep sphere's centre, as kSweepCamera
+// projects it: two rows (y = +0.5, -0.5) of five (x = -2 .. 2), 320x240, 45 degrees.
+glm::dvec3 sphere_mean(const Image& img, int row, int column) {
+    const double half_height = 5.0 * std::tan(22.5 * 3.14159265358979 / 180.0);
+    const double x = column - 2.0, y = 0.5 - row;
+    const double cx = img.width * 0.5 * (1.0 + x / (half_height * img.width / img.height));
+    const double cy = img.height * 0.5 * (1.0 - y / half_height);
+    const double r = 0.6 * 0.4 / half_height * img.height * 0.5; // inside the silhouette
+    glm::dvec3 sum(0.0);
+    int n = 0;
+    for (int py = int(cy - r); py <= int(cy + r); ++py)
+        for (int px = int(cx - r); px <= int(cx + r); ++px) {
+            if ((px + 0.5 - cx) * (px + 0.5 - cx) + (py + 0.5 - cy) * (py + 0.5 - cy) > r * r)
+                continue;
+            const std::uint8_t* p = &img.rgba[(std::size_t(py) * img.width + std::size_t(px)) * 4];
+            sum += glm::dvec3(p[0], p[1], p[2]) / 255.0;
+            ++n;
+        }
+    return sum / double(std::max(n, 1));
+}
+
+// Each sphere of a sweep agrees between the renderers, and each row changes along
+// its sweep by more than that tolerance in both (so a renderer that ignored the
+// swept parameter fails).
+void check_sweep(const OracleCase& c, const Image& ours, const Image& theirs) {
+    for (int row = 0; row < 2; ++row) {
+        double worst = 0.0, spread_ours = 0.0, spread_theirs = 0.0;
+        std::string line;
+        for (int col = 0; col < 5; ++col) {
+            const glm::dvec3 a = sphere_mean(ours, row, col), b = sphere_mean(theirs, row, col);
+            const glm::dvec3 d = glm::abs(a - b);
+            worst = std::max({worst, d.x, d.y, d.z});
+            const glm::dvec3 a0 = sphere_mean(ours, row, 0), b0 = sphere_mean(theirs, row, 0);
+            const glm::dvec3 da = glm::abs(a - a0), db = glm::abs(b - b0);
+            spread_ours = std::max({spread_ours, da.x, da.y, da.z});
+            spread_theirs = std::max({spread_theirs, db.x, db.y, db.z});
+            char buf[96];
+            std::snprintf(buf, sizeof buf, " (%.3f %.3f %.3f | %.3f %.3f %.3f)", a.x, a.y, a.z, b.x,
+                          b.y, b.z);
+            line += buf;
+        }
+        std::printf("render oracle %s row %d: worst sphere |diff| %.4f, sweep spread %.4f / "
+                    "%.4f (sherpa | three):%s\n",
+                    c.name, row, worst, spread_ours, spread_theirs, line.c_str());
+        EXPECT_LE(worst, c.max_sphere_diff) << c.name << " row " << row;
+        EXPECT_GT(spread_ours, 2.0 * c.max_sphere_diff) << c.name << " row " << row;
+        EXPECT_GT(spread_theirs, 2.0 * c.max_sphere_diff) << c.name << " row " << row;
+    }
 }
 
 class RenderOracleTest : public ::testing::TestWithParam<OracleCase> {};
@@ -140,6 +214,7 @@ TEST_P(RenderOracleTest, SherpaAgreesWithThreeJs) {
     EXPECT_LE(mean, c.max_mean_diff) << ours << " vs " << theirs;
     // The same camera frames the same pixels: the silhouettes agree but for edge pixels.
     EXPECT_LT(silhouette, 0.03);
+    if (c.max_sphere_diff > 0.0) check_sweep(c, a, b);
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, RenderOracleTest, ::testing::ValuesIn(kCases),

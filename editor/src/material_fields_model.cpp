@@ -87,11 +87,10 @@ void MaterialFieldsModel::buildExtensionRows() {
     auto words = [](std::uint32_t w) {
         return w == gpu::kNoExtension ? tr("absent") : QString::number(w);
     };
-    extension_rows_.push_back({int(place.index) * word, QStringLiteral("ext.index"),
-                               QStringLiteral("extra.extensions = %1").arg(place.index),
-                               QStringLiteral("uvec4"),
-                               tr("ior %1, specular %2").arg(words(place.ior), words(place.specular)),
-                               -1});
+    extension_rows_.push_back(
+        {int(place.index) * word, QStringLiteral("ext.index"),
+         QStringLiteral("extra.extensions = %1").arg(place.index), QStringLiteral("uvec4"),
+         tr("ior %1, specular %2").arg(words(place.ior), words(place.specular)), -1});
     if (place.ior != gpu::kNoExtension)
         extension_rows_.push_back({int(place.ior) * word, QStringLiteral("ext.ior"),
                                    QStringLiteral("KHR_materials_ior.ior"), QStringLiteral("float"),
@@ -106,8 +105,8 @@ void MaterialFieldsModel::buildExtensionRows() {
             {base + int(offsetof(gpu::GPUSpecularBlock, color_factor)),
              QStringLiteral("ext.specular.color_factor"),
              QStringLiteral("KHR_materials_specular.specularColorFactor, specularFactor"),
-             QStringLiteral("vec4"), Format::vec(glm::vec4(sp.specular_color_factor, sp.specular_factor)),
-             -1});
+             QStringLiteral("vec4"),
+             Format::vec(glm::vec4(sp.specular_color_factor, sp.specular_factor)), -1});
         extension_rows_.push_back({base + int(offsetof(gpu::GPUSpecularBlock, specular_tex)),
                                    QStringLiteral("ext.specular.specular_tex"),
                                    QStringLiteral("KHR_materials_specular.specularTexture"),

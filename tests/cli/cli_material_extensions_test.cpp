@@ -32,7 +32,9 @@ constexpr const char* kSweepCamera = " --camera eye=0,0,5:target=0,0,0:fov=45";
 struct Png {
     std::uint32_t w = 0, h = 0;
     std::vector<std::uint8_t> rgba;
-    const std::uint8_t* at(std::uint32_t x, std::uint32_t y) const { return &rgba[(y * w + x) * 4]; }
+    const std::uint8_t* at(std::uint32_t x, std::uint32_t y) const {
+        return &rgba[(y * w + x) * 4];
+    }
 };
 
 Png read_png(const std::string& path) {
@@ -71,9 +73,9 @@ TEST(CliMaterialExtensions, OnlyMaterialsThatUseThemPay) {
 
 TEST(CliMaterialExtensions, IorViewShowsEachSpheresIor) {
     const std::string png = temp_path("ior_view.png");
-    const CliRun r = run_cli("render '" + sweep("ior_sweep") + "' -o " + png +
-                             " --width 160 --height 120 --view ior" + kSweepCamera +
-                             " --validation --no-cache");
+    const CliRun r =
+        run_cli("render '" + sweep("ior_sweep") + "' -o " + png +
+                " --width 160 --height 120 --view ior" + kSweepCamera + " --validation --no-cache");
     ASSERT_EQ(r.exit_code, 0) << r.out;
     const Png p = read_png(png);
     const double iors[] = {1.0, 1.2, 1.5, 1.8, 2.33};
@@ -87,7 +89,8 @@ TEST(CliMaterialExtensions, IorViewShowsEachSpheresIor) {
 
 TEST(CliMaterialExtensions, SpecularViewsShowWeightAndColour) {
     const std::string weight = temp_path("weight.png"), colour = temp_path("colour.png");
-    for (const auto& [view, png] : {std::pair{"specular-weight", weight}, {"specular-color", colour}}) {
+    for (const auto& [view, png] :
+         {std::pair{"specular-weight", weight}, {"specular-color", colour}}) {
         const CliRun r = run_cli("render '" + sweep("specular_sweep") + "' -o " + png +
                                  " --width 160 --height 120 --view " + view + kSweepCamera +
                                  " --validation --no-cache");
@@ -109,9 +112,9 @@ TEST(CliMaterialExtensions, SpecularViewsShowWeightAndColour) {
 
 TEST(CliMaterialExtensions, BadValuesAreWarnedOnStderrAndTheFileStillRenders) {
     const std::string png = temp_path("bad.png");
-    const CliRun r = run_cli("render '" +
-                             (sherpa::test::data_dir() / "material_extensions_bad.gltf").string() +
-                             "' -o " + png + " --width 64 --height 48 --validation --no-cache");
+    const CliRun r =
+        run_cli("render '" + (sherpa::test::data_dir() / "material_extensions_bad.gltf").string() +
+                "' -o " + png + " --width 64 --height 48 --validation --no-cache");
     ASSERT_EQ(r.exit_code, 0) << r.out;
     EXPECT_NE(r.out.find("KHR_materials_ior.ior: -1 is not an index of refraction"),
               std::string::npos)

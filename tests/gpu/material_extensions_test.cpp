@@ -34,10 +34,9 @@ const MaterialInstance& material(const Scene& s, const std::string& name) {
 }
 
 gpu::MaterialExtensionBuffer layout(const Scene& s) {
-    return gpu::build_material_extensions(
-        s.materials, [](const TextureSlot& slot, TextureRole) {
-            return slot.present() ? 100u + std::uint32_t(slot.texture) : gpu::kWhiteTexture;
-        });
+    return gpu::build_material_extensions(s.materials, [](const TextureSlot& slot, TextureRole) {
+        return slot.present() ? 100u + std::uint32_t(slot.texture) : gpu::kWhiteTexture;
+    });
 }
 
 TEST(MaterialExtensions, IorAndSpecularAreDrawnNotWarnedAsMissing) {
@@ -59,7 +58,8 @@ TEST(MaterialExtensions, BadValuesAreWarnedWithTheirPointerAndFallBack) {
     const Scene& s = *r.scene;
     // Negative, below 1, infinite (as a float) and non-number ior: warned, 1.5 drawn.
     for (int m : {0, 1, 2, 8}) {
-        const std::string p = "/materials/" + std::to_string(m) + "/extensions/KHR_materials_ior/ior";
+        const std::string p =
+            "/materials/" + std::to_string(m) + "/extensions/KHR_materials_ior/ior";
         EXPECT_NE(message_at(s, p), nullptr) << p;
         EXPECT_FLOAT_EQ(*s.materials[std::size_t(m)].ior, kDefaultIor) << p;
     }

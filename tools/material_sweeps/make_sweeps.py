@@ -77,25 +77,31 @@ def pbr(color, roughness, metallic=0.0):
     return {'baseColorFactor': color + [1.0], 'roughnessFactor': roughness, 'metallicFactor': metallic}
 
 
+# Base colours are black: the spheres show the specular reflection alone, the part these
+# extensions change (the two renderers' diffuse differs by design in its irradiance,
+# docs/environment.md, and would hide it).
+BLACK = [0.0, 0.0, 0.0]
+
+
 def ior_sweep():
     iors = [1.0, 1.2, 1.5, 1.8, 2.33]
     rows = []
     for roughness in (0.15, 0.5):
         rows.append([(f'ior {i} roughness {roughness}',
-                      {'pbrMetallicRoughness': pbr([0.05, 0.05, 0.08], roughness),
+                      {'pbrMetallicRoughness': pbr(BLACK, roughness),
                        'extensions': {'KHR_materials_ior': {'ior': i}}}) for i in iors])
     return document('KHR_materials_ior sweep', rows, ['KHR_materials_ior'])
 
 
 def specular_sweep():
     weights = [0.0, 0.25, 0.5, 0.75, 1.0]
-    row1 = [(f'specular {w}', {'pbrMetallicRoughness': pbr([0.1, 0.1, 0.3], 0.2),
+    row1 = [(f'specular {w}', {'pbrMetallicRoughness': pbr(BLACK, 0.2),
                                'extensions': {'KHR_materials_specular': {'specularFactor': w}}})
             for w in weights]
     # F0 = min(0.04 x colour, 1): 0, 0.1, 0.2, 0.4 and 1 in red.
     reds = [0.0, 2.5, 5.0, 10.0, 25.0]
     row2 = [(f'specular colour {r} 0 0',
-             {'pbrMetallicRoughness': pbr([0.05, 0.05, 0.05], 0.2),
+             {'pbrMetallicRoughness': pbr(BLACK, 0.2),
               'extensions': {'KHR_materials_specular': {'specularColorFactor': [r, 0.0, 0.0]}}})
             for r in reds]
     return document('KHR_materials_specular sweep', [row1, row2], ['KHR_materials_specular'])

@@ -18,7 +18,7 @@ constexpr std::array<std::string_view, 14> kSupported{
     "KHR_meshopt_compression",    // where its bitstream version is one meshoptimizer decodes
     "KHR_lights_punctual",
     "KHR_materials_emissive_strength",
-    "KHR_materials_ior", // F0 from the ior (brdf.glsl's dielectric_f0)
+    "KHR_materials_ior",      // F0 from the ior (brdf.glsl's dielectric_f0)
     "KHR_materials_specular", // F0 colour and F90 weight (brdf.glsl)
     "KHR_materials_unlit",
     "KHR_materials_pbrSpecularGlossiness", // shaded by its own definition (forward.frag)

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <tuple>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -110,6 +111,26 @@ TEST(CliMaterialExtensions, SpecularViewsShowWeightAndColour) {
     std::filesystem::remove(colour);
 }
 
+// specular_textures.gltf: both textures read one 2x1 image (left texel red, alpha 0;
+// right green, alpha 1) through KHR_texture_transform offset (0.5, 0); the sphere's
+// front has u = 0.75, which the offset moves to the red texel. Without the transform
+// (or without the TEXCOORD_0 stream the slots need) it would read green and 1.
+TEST(CliMaterialExtensions, SpecularTexturesAreSampledThroughTheirTransform) {
+    const std::string model = sweep("specular_textures");
+    for (const auto& [view, r, g] :
+         {std::tuple{"specular-color", 255, 0}, std::tuple{"specular-weight", 0, 0}}) {
+        const std::string png = temp_path(std::string(view) + "_tex.png");
+        const CliRun run =
+            run_cli("render '" + model + "' -o " + png + " --width 160 --height 120 --view " +
+                    view + " --camera eye=0,0,1.5:target=0,0,0:fov=45 --validation --no-cache");
+        ASSERT_EQ(run.exit_code, 0) << run.out;
+        const Png p = read_png(png);
+        EXPECT_NEAR(p.at(80, 60)[0], r, 2) << view;
+        EXPECT_NEAR(p.at(80, 60)[1], g, 2) << view;
+        std::filesystem::remove(png);
+    }
+}
+
 TEST(CliMaterialExtensions, BadValuesAreWarnedOnStderrAndTheFileStillRenders) {
     const std::string png = temp_path("bad.png");
     const CliRun r =
@@ -120,7 +141,11 @@ TEST(CliMaterialExtensions, BadValuesAreWarnedOnStderrAndTheFileStillRenders) {
               std::string::npos)
         << r.out;
     EXPECT_NE(r.out.find("specularFactor: 2 is outside 0..1"), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find("missing_specular_color.png"), std::string::npos) << r.out;
+    // The missing image, named with the slot that reads it.
+    EXPECT_NE(r.out.find("missing_specular_color.png (used by material 'missing specular "
+                         "texture' KHR_materials_specular.specularColorTexture)"),
+              std::string::npos)
+        << r.out;
     std::filesystem::remove(png);
 }
 

@@ -107,9 +107,39 @@ def specular_sweep():
     return document('KHR_materials_specular sweep', [row1, row2], ['KHR_materials_specular'])
 
 
+def png_rgba(width, height, pixel):
+    """A small RGBA8 PNG; pixel(x, y) -> (r, g, b, a)."""
+    import zlib
+    rows = b''.join(b'\0' + bytes(c for x in range(width) for c in pixel(x, y)) for y in range(height))
+    def chunk(kind, data):
+        return struct.pack('>I', len(data)) + kind + data + struct.pack('>I', zlib.crc32(kind + data))
+    return (b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', width, height, 8, 6, 0, 0, 0))
+            + chunk(b'IDAT', zlib.compress(rows)) + chunk(b'IEND', b''))
+
+
+def specular_textures():
+    """One row: specularColorTexture (left half red, right half green, sRGB) and
+    specularTexture (alpha 0 in the left half, 1 in the right) through
+    KHR_texture_transform (offset 0.5 in u: the halves swap), nearest filtering."""
+    image = png_rgba(2, 1, lambda x, y: (255, 0, 0, 0) if x == 0 else (0, 255, 0, 255))
+    transform = {'KHR_texture_transform': {'offset': [0.5, 0.0]}}
+    row = [('textured specular', {
+        'pbrMetallicRoughness': pbr(BLACK, 0.2),
+        'extensions': {'KHR_materials_specular': {
+            'specularTexture': {'index': 0, 'extensions': transform},
+            'specularColorTexture': {'index': 0, 'extensions': transform}}}})]
+    doc = document('KHR_materials_specular textures', [row],
+                   ['KHR_materials_specular', 'KHR_texture_transform'])
+    doc['images'] = [{'uri': 'data:image/png;base64,' + base64.b64encode(image).decode()}]
+    doc['samplers'] = [{'magFilter': 9728, 'minFilter': 9728, 'wrapS': 10497, 'wrapT': 10497}]
+    doc['textures'] = [{'source': 0, 'sampler': 0}]
+    return doc
+
+
 def main():
     out = sys.argv[1]
-    for name, doc in (('ior_sweep', ior_sweep()), ('specular_sweep', specular_sweep())):
+    for name, doc in (('ior_sweep', ior_sweep()), ('specular_sweep', specular_sweep()),
+                      ('specular_textures', specular_textures())):
         with open(f'{out}/{name}.gltf', 'w') as f:
             json.dump(doc, f, indent=1)
             f.write('\n')

@@ -79,7 +79,7 @@ void MaterialFieldsModel::buildExtensionRows() {
     if (!sc || material_ < 0 || std::size_t(material_) >= sc->materials.size()) return;
     // The layout the renderer uploads (texture slots do not move blocks).
     const gpu::MaterialExtensionBuffer layout = gpu::build_material_extensions(
-        sc->materials, [](const TextureSlot&, TextureRole) { return gpu::kWhiteTexture; });
+        sc->materials, [](const TextureSlot&, sherpa::TextureRole) { return gpu::kWhiteTexture; });
     const gpu::MaterialExtensionPlace& place = layout.places[std::size_t(material_)];
     if (!place.any()) return;
     const MaterialInstance& m = sc->materials[std::size_t(material_)];

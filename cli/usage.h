@@ -17,8 +17,8 @@ struct Command {
     // "SYNOPSIS\n[\nDETAILS]": the synopsis lines start with "sherpa-cli NAME" (or
     // continue one with an indent); the details follow one blank line. Placeholders
     // {families}, {views}, {overlays}, {texture-options}, {texture-help},
-    // {compare-options}, {compare-help}, {shadow-options}, {environment-options} and {camera-help} are filled
-    // from the engine's own lists and the shared option parsers.
+    // {compare-options}, {compare-help}, {shadow-options}, {environment-options} and {camera-help}
+    // are filled from the engine's own lists and the shared option parsers.
     std::string_view usage;
 };
 

@@ -39,8 +39,8 @@
 #include "test_assets.h"
 #include "texture_dock.h"
 #include "texture_table_model.h"
-#include "vertex_table_model.h"
 #include "validation_dock.h"
+#include "vertex_table_model.h"
 #include "viewport_window.h"
 #include "window_test_support.h"
 

@@ -73,7 +73,8 @@ public:
     VkBuffer extras_buffer() const { return resources_.get(extras_).buffer.get(); }
     // The material extension buffer; VK_NULL_HANDLE where no material uses one.
     VkBuffer extensions_buffer() const {
-        return extension_buffer_.valid() ? resources_.get(extension_buffer_).buffer.get() : VK_NULL_HANDLE;
+        return extension_buffer_.valid() ? resources_.get(extension_buffer_).buffer.get()
+                                         : VK_NULL_HANDLE;
     }
     // Where each material's extension blocks are, and the words uploaded.
     const MaterialExtensionBuffer& extensions() const { return extensions_; }

@@ -178,12 +178,12 @@ static_assert(sizeof(GPUIorBlock) == 16);
 
 // KHR_materials_specular. Textures are bindless slots (white where absent).
 struct GPUSpecularBlock {
-    glm::vec4 color_factor;            // xyz specularColorFactor, w specularFactor
-    std::uint32_t specular_tex;        // A channel, linear
-    std::uint32_t specular_color_tex;  // RGB, sRGB
+    glm::vec4 color_factor;           // xyz specularColorFactor, w specularFactor
+    std::uint32_t specular_tex;       // A channel, linear
+    std::uint32_t specular_color_tex; // RGB, sRGB
     std::uint32_t pad0, pad1;
-    GPUTextureTransform specular_uv;   // KHR_texture_transform of specularTexture
-    GPUTextureTransform color_uv;      // ... of specularColorTexture
+    GPUTextureTransform specular_uv; // KHR_texture_transform of specularTexture
+    GPUTextureTransform color_uv;    // ... of specularColorTexture
 };
 static_assert(offsetof(GPUSpecularBlock, specular_tex) == 16);
 static_assert(offsetof(GPUSpecularBlock, specular_color_tex) == 20);

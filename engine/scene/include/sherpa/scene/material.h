@@ -78,7 +78,7 @@ struct MaterialInstance {
     std::optional<SpecularGlossiness> specular_glossiness;
     // Material extensions, each set only when the material uses it (and then drawn with
     // a block of its own in the GPU extension buffer; absent ones cost nothing).
-    std::optional<float> ior; // KHR_materials_ior: >= 1, or 0 (F0 = 1)
+    std::optional<float> ior;                 // KHR_materials_ior: >= 1, or 0 (F0 = 1)
     std::optional<MaterialSpecular> specular; // KHR_materials_specular
     // The names in the material's `extensions` object, as written (sorted): what
     // marks a material that uses an extension Sherpa does not draw.

@@ -119,6 +119,8 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
                                  {"indices", m.indices},
                                  {"textures", m.textures},
                                  {"materials", m.materials},
+                                 // Blocks of the materials that use an extension (0: none).
+                                 {"material_extensions", m.material_extensions},
                                  {"instances", m.instances},
                                  // Skinning and morph streams: 0 for a static scene.
                                  {"motion", m.motion},

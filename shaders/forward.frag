@@ -10,6 +10,7 @@
 #include "material_sampling.glsl"
 #include "surface_views.glsl"
 #include "ibl.glsl"
+#include "material_ext.glsl"
 #include "tonemap.glsl"
 
 layout(location = 0) in vec3 in_world_pos;
@@ -92,8 +93,20 @@ void main() {
     shading_frame(in_normal, tangent, flip, n, t, b);
     vec3 shadow_normal = flip ? -in_normal : in_normal;
 
+    // Material extension blocks only where the material has some (a uniform branch).
+    const GPUExtensionIndex ext = extension_index(x);
     vec3 c;
-    if (!surface_view_color(view, m, x, base, n, t, b, tangent.w, uv0, uv1, pc.mesh_flags, c)) {
+    // The specular (F0) view with KHR_materials_ior / _specular: their dielectric F0
+    // (the ray tracer's shared formula knows the core one only).
+    const bool ext_f0 = view == VIEW_SPECULAR && x.extensions != NO_EXTENSION &&
+                        x.workflow == WORKFLOW_METALLIC_ROUGHNESS;
+    if (ext_f0) {
+        vec3 f0;
+        float f90;
+        dielectric_fresnel(ext, uv0, uv1, f0, f90);
+        c = mix(f0, base.rgb, metallic_roughness(m, metallic_roughness_texel(m, x, uv0, uv1)).x);
+    }
+    if (!ext_f0 && !surface_view_color(view, m, x, base, n, t, b, tangent.w, uv0, uv1, pc.mesh_flags, c)) {
     switch (view) {
     case VIEW_UV0_CHECKER: c = checker_color(uv0, frame.overlay.y); break;
     case VIEW_UV1_CHECKER: c = checker_color(uv1, frame.overlay.y); break;
@@ -103,6 +116,13 @@ void main() {
         break;
     }
     case VIEW_JOINT_INFLUENCE: c = heat_ramp(in_joint_weight); break;
+    // KHR_materials_ior: grey (ior - 1) / 2 (1 black, 2 mid grey, 3 and above white),
+    // ior 0 (F0 = 1) in the flag colour; materials without the extension show 1.5.
+    case VIEW_IOR: c = ior_view_color(material_ior(ext)); break;
+    // KHR_materials_specular: the weight (factor x texture alpha) and the F0 colour
+    // (factor x texture rgb); 1 and white without the extension.
+    case VIEW_SPECULAR_WEIGHT: c = vec3(material_specular(ext, uv0, uv1).a); break;
+    case VIEW_SPECULAR_COLOR: c = material_specular(ext, uv0, uv1).rgb; break;
     case VIEW_SHADOW:
         c = vec3(sun_visibility(in_world_pos, shadow_normal, -(frame.view * vec4(in_world_pos, 1.0)).z));
         break;
@@ -120,7 +140,14 @@ void main() {
         } else {
             mr_texel = metallic_roughness_texel(m, x, uv0, uv1);
             vec2 mr = metallic_roughness(m, mr_texel);
-            s = metal_rough_surface(base.rgb, mr.x, mr.y, shading_n, v);
+            if (x.extensions == NO_EXTENSION) {
+                s = metal_rough_surface(base.rgb, mr.x, mr.y, shading_n, v);
+            } else { // KHR_materials_ior, KHR_materials_specular
+                vec3 f0;
+                float f90;
+                dielectric_fresnel(ext, uv0, uv1, f0, f90);
+                s = metal_rough_surface(base.rgb, mr.x, mr.y, f0, f90, shading_n, v);
+            }
         }
         // The sun (and its shadow lookup) only where some pixel of the SIMD group
         // faces it: a uniform branch, so a CPU rasterizer skips the work.
@@ -142,7 +169,8 @@ void main() {
     }
     }
     // Colour views (lit, base colour, emissive) are linear radiance; the rest are data.
-    if (view != VIEW_LIT && view != VIEW_BASE_COLOR && view != VIEW_EMISSIVE) c = display_to_linear(c);
+    if (view != VIEW_LIT && view != VIEW_BASE_COLOR && view != VIEW_EMISSIVE && view != VIEW_SPECULAR_COLOR)
+        c = display_to_linear(c);
     // The lit view is radiance: exposure and the tone curve map it to the display (per
     // fragment, before blending, as three.js does).
     if (view == VIEW_LIT) c = tone_map(c, uint(frame.display.y), frame.display.x);

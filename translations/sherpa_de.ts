@@ -185,6 +185,18 @@
         <source>Shadow error (maps vs rays)</source>
         <translation>Schattenfehler (Maps gegen Strahlen)</translation>
     </message>
+    <message>
+        <source>Index of refraction</source>
+        <translation>Brechungsindex</translation>
+    </message>
+    <message>
+        <source>Specular weight</source>
+        <translation>Spiegelnde Stärke</translation>
+    </message>
+    <message>
+        <source>Specular colour</source>
+        <translation>Spiegelnde Farbe</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>
@@ -1429,6 +1441,14 @@ Die aktuelle Szene bleibt erhalten.</translation>
 </context>
 <context>
     <name>sherpa::editor::MaterialFieldsModel</name>
+    <message>
+        <source>absent</source>
+        <translation>fehlt</translation>
+    </message>
+    <message>
+        <source>ior %1, specular %2</source>
+        <translation>ior %1, specular %2</translation>
+    </message>
     <message>
         <source>texture %1</source>
         <translation>Textur %1</translation>

@@ -185,6 +185,18 @@
         <source>Shadow error (maps vs rays)</source>
         <translation>Shadow error (maps vs rays)</translation>
     </message>
+    <message>
+        <source>Index of refraction</source>
+        <translation>Index of refraction</translation>
+    </message>
+    <message>
+        <source>Specular weight</source>
+        <translation>Specular weight</translation>
+    </message>
+    <message>
+        <source>Specular colour</source>
+        <translation>Specular colour</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>
@@ -1429,6 +1441,14 @@ The current scene is kept.</translation>
 </context>
 <context>
     <name>sherpa::editor::MaterialFieldsModel</name>
+    <message>
+        <source>absent</source>
+        <translation>absent</translation>
+    </message>
+    <message>
+        <source>ior %1, specular %2</source>
+        <translation>ior %1, specular %2</translation>
+    </message>
     <message>
         <source>texture %1</source>
         <translation>texture %1</translation>

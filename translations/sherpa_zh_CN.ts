@@ -185,6 +185,18 @@
         <source>Shadow error (maps vs rays)</source>
         <translation>阴影误差（贴图对比光线）</translation>
     </message>
+    <message>
+        <source>Index of refraction</source>
+        <translation>折射率</translation>
+    </message>
+    <message>
+        <source>Specular weight</source>
+        <translation>镜面反射强度</translation>
+    </message>
+    <message>
+        <source>Specular colour</source>
+        <translation>镜面反射颜色</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>
@@ -1429,6 +1441,14 @@ The current scene is kept.</source>
 </context>
 <context>
     <name>sherpa::editor::MaterialFieldsModel</name>
+    <message>
+        <source>absent</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>ior %1, specular %2</source>
+        <translation>ior %1, specular %2</translation>
+    </message>
     <message>
         <source>texture %1</source>
         <translation>纹理 %1</translation>

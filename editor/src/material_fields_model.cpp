@@ -8,6 +8,7 @@
 #include "texture_table_model.h"
 
 #include <sherpa/render/gpu_structs.h>
+#include <sherpa/render/material_extensions.h>
 
 namespace sherpa::editor {
 
@@ -69,13 +70,81 @@ void MaterialFieldsModel::setMaterial(SharedSession session, int material,
     record_ = record;
     source_ = source;
     bindless_to_texture_ = std::move(bindless_to_texture);
+    buildExtensionRows();
     endResetModel();
+}
+
+void MaterialFieldsModel::buildExtensionRows() {
+    extension_rows_.clear();
+    const Scene* sc = scene();
+    if (!sc || material_ < 0 || std::size_t(material_) >= sc->materials.size()) return;
+    // The layout the renderer uploads (texture slots do not move blocks).
+    const gpu::MaterialExtensionBuffer layout = gpu::build_material_extensions(
+        sc->materials, [](const TextureSlot&, sherpa::TextureRole) { return gpu::kWhiteTexture; });
+    const gpu::MaterialExtensionPlace& place = layout.places[std::size_t(material_)];
+    if (!place.any()) return;
+    const MaterialInstance& m = sc->materials[std::size_t(material_)];
+    const int word = int(gpu::kExtensionWordBytes);
+    auto words = [](std::uint32_t w) {
+        return w == gpu::kNoExtension ? tr("absent") : QString::number(w);
+    };
+    extension_rows_.push_back(
+        {int(place.index) * word, QStringLiteral("ext.index"),
+         QStringLiteral("extra.extensions = %1").arg(place.index), QStringLiteral("uvec4"),
+         tr("ior %1, specular %2").arg(words(place.ior), words(place.specular)), -1});
+    if (place.ior != gpu::kNoExtension)
+        extension_rows_.push_back({int(place.ior) * word, QStringLiteral("ext.ior"),
+                                   QStringLiteral("KHR_materials_ior.ior"), QStringLiteral("float"),
+                                   Format::number(*m.ior), -1});
+    if (place.specular != gpu::kNoExtension) {
+        const MaterialSpecular& sp = *m.specular;
+        const int base = int(place.specular) * word;
+        auto texture = [this](const TextureSlot& slot) {
+            return slot.present() ? chain(slot.texture) : tr("default texture");
+        };
+        extension_rows_.push_back(
+            {base + int(offsetof(gpu::GPUSpecularBlock, color_factor)),
+             QStringLiteral("ext.specular.color_factor"),
+             QStringLiteral("KHR_materials_specular.specularColorFactor, specularFactor"),
+             QStringLiteral("vec4"),
+             Format::vec(glm::vec4(sp.specular_color_factor, sp.specular_factor)), -1});
+        extension_rows_.push_back({base + int(offsetof(gpu::GPUSpecularBlock, specular_tex)),
+                                   QStringLiteral("ext.specular.specular_tex"),
+                                   QStringLiteral("KHR_materials_specular.specularTexture"),
+                                   QStringLiteral("uint"), texture(sp.specular),
+                                   sp.specular.present() ? sp.specular.texture : -1});
+        extension_rows_.push_back({base + int(offsetof(gpu::GPUSpecularBlock, specular_color_tex)),
+                                   QStringLiteral("ext.specular.specular_color_tex"),
+                                   QStringLiteral("KHR_materials_specular.specularColorTexture"),
+                                   QStringLiteral("uint"), texture(sp.specular_color),
+                                   sp.specular_color.present() ? sp.specular_color.texture : -1});
+    }
+}
+
+QVariant MaterialFieldsModel::extensionData(const ExtensionRow& r, int column, int role) const {
+    if (role == TextureRole) return r.texture;
+    if (role != Qt::DisplayRole) return {};
+    switch (column) {
+    case OffsetColumn:
+        return r.offset;
+    case FieldColumn:
+        return r.field;
+    case PropertyColumn:
+        return r.property;
+    case TypeColumn:
+        return r.type;
+    case ValueColumn:
+        return r.value;
+    default:
+        return {};
+    }
 }
 
 void MaterialFieldsModel::clear() {
     beginResetModel();
     session_.reset();
     material_ = -1;
+    extension_rows_.clear();
     endResetModel();
 }
 
@@ -158,7 +227,9 @@ QString MaterialFieldsModel::chain(int texture) const {
 }
 
 int MaterialFieldsModel::rowCount(const QModelIndex& parent) const {
-    return parent.isValid() || material_ < 0 ? 0 : kFieldCount + (specGloss() ? 3 : 0);
+    return parent.isValid() || material_ < 0
+               ? 0
+               : kFieldCount + specGlossRows() + int(extension_rows_.size());
 }
 
 int MaterialFieldsModel::columnCount(const QModelIndex& parent) const {
@@ -167,6 +238,10 @@ int MaterialFieldsModel::columnCount(const QModelIndex& parent) const {
 
 QVariant MaterialFieldsModel::data(const QModelIndex& index, int role) const {
     if (!index.isValid() || material_ < 0) return {};
+    if (index.row() >= kFieldCount + specGlossRows())
+        return extensionData(
+            extension_rows_[std::size_t(index.row() - kFieldCount - specGlossRows())],
+            index.column(), role);
     if (index.row() >= kFieldCount) {
         if (role == TextureRole) return textureOfRow(index.row());
         return role == Qt::DisplayRole && specGloss()

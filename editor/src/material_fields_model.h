@@ -60,11 +60,24 @@ private:
 
     const Scene* scene() const { return session_ ? session_->scene.get() : nullptr; }
 
+    // Material extensions (KHR_materials_ior, _specular): one row per field of the
+    // material's blocks in the extension buffer, its offset the byte offset there
+    // (gpu::build_material_extensions' layout), values from the CPU record.
+    struct ExtensionRow {
+        int offset;
+        QString field, property, type, value;
+        int texture; // Scene::textures index, -1 if none
+    };
+    void buildExtensionRows();
+    QVariant extensionData(const ExtensionRow& r, int column, int role) const;
+    int specGlossRows() const { return specGloss() ? 3 : 0; }
+
     SharedSession session_; // the scene and its thumbnails
     int material_ = -1;
     GPUMaterialData record_{};
     Source source_ = Source::Cpu;
     std::vector<int> bindless_to_texture_;
+    std::vector<ExtensionRow> extension_rows_;
 };
 
 } // namespace sherpa::editor

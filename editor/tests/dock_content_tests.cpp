@@ -32,6 +32,7 @@ class DockContentTests : public QObject {
     Q_OBJECT
 private Q_SLOTS:
     void docksShowCompressionContainerAndSpecGloss();
+    void materialDockShowsExtensionBlocksWithOffsets();
     void instancedNodeShowsItsRowsInTheTreeAndTheTable();
 };
 
@@ -157,6 +158,39 @@ void DockContentTests::docksShowCompressionContainerAndSpecGloss() {
         display(fields, 15, MaterialFieldsModel::PropertyColumn),
         QStringLiteral("KHR_materials_pbrSpecularGlossiness.specularFactor, glossinessFactor"));
     QCOMPARE(fields.textureOfRow(16), 0); // specularGlossinessTexture
+}
+
+// KHR_materials_ior / _specular: after the record's 14 fields, the material's extension
+// index and blocks with their byte offsets in the extension buffer (material 1 of the
+// ior sweep: the second material's index is at word 2, after material 0's index + ior).
+void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
+    const LoadOutcome sweep = SceneLoadJob::loadNow(
+        QStringLiteral(SHERPA_TEST_DATA_DIR "/material_sweeps/ior_sweep.gltf"));
+    QVERIFY2(sweep.session, qPrintable(sweep.error));
+    MaterialFieldsModel fields;
+    fields.setMaterial(sweep.session, 1, to_gpu_material(sweep.session->scene->materials.at(1)),
+                       MaterialFieldsModel::Source::Cpu);
+    QCOMPARE(fields.rowCount(), 14 + 2);
+    QCOMPARE(display(fields, 14, MaterialFieldsModel::FieldColumn), QStringLiteral("ext.index"));
+    QCOMPARE(display(fields, 14, MaterialFieldsModel::OffsetColumn), QStringLiteral("32"));
+    QCOMPARE(display(fields, 15, MaterialFieldsModel::FieldColumn), QStringLiteral("ext.ior"));
+    QCOMPARE(display(fields, 15, MaterialFieldsModel::OffsetColumn), QStringLiteral("48"));
+    QCOMPARE(display(fields, 15, MaterialFieldsModel::ValueColumn), Format::number(1.2f));
+    QCOMPARE(display(fields, 15, MaterialFieldsModel::PropertyColumn),
+             QStringLiteral("KHR_materials_ior.ior"));
+
+    const LoadOutcome spec = SceneLoadJob::loadNow(
+        QStringLiteral(SHERPA_TEST_DATA_DIR "/material_sweeps/specular_sweep.gltf"));
+    QVERIFY2(spec.session, qPrintable(spec.error));
+    fields.setMaterial(spec.session, 0, to_gpu_material(spec.session->scene->materials.at(0)),
+                       MaterialFieldsModel::Source::Cpu);
+    QCOMPARE(fields.rowCount(), 14 + 4); // index, colour/factor, two textures
+    QCOMPARE(display(fields, 15, MaterialFieldsModel::FieldColumn),
+             QStringLiteral("ext.specular.color_factor"));
+    QCOMPARE(display(fields, 15, MaterialFieldsModel::OffsetColumn), QStringLiteral("16"));
+    QCOMPARE(display(fields, 15, MaterialFieldsModel::ValueColumn),
+             Format::vec(glm::vec4(1.0f, 1.0f, 1.0f, 0.0f)));
+    QCOMPARE(display(fields, 16, MaterialFieldsModel::OffsetColumn), QStringLiteral("32"));
 }
 
 QTEST_MAIN(DockContentTests)

@@ -10,9 +10,14 @@ layout(set = 1, binding = 3) uniform sampler2DArrayShadow shadow_map;
 
 // frame.overlay.z >= 0: every texture at that mip level (render --texture-lod, so
 // the ray tracer's explicit LOD and ours sample the same texels); else derivatives.
-vec4 sample_slot(GPUMaterialExtra extra, uint slot, uint tex, vec2 uv0, vec2 uv1) {
-    vec2 uv = transform_uv(extra.uv[slot], uv0, uv1);
+// A texture through its KHR_texture_transform (and TEXCOORD set).
+vec4 sample_transformed(GPUTextureTransform t, uint tex, vec2 uv0, vec2 uv1) {
+    vec2 uv = transform_uv(t, uv0, uv1);
     if (frame.overlay.z >= 0.0) return textureLod(textures[tex], uv, frame.overlay.z);
     return texture(textures[tex], uv);
+}
+
+vec4 sample_slot(GPUMaterialExtra extra, uint slot, uint tex, vec2 uv0, vec2 uv1) {
+    return sample_transformed(extra.uv[slot], tex, uv0, uv1);
 }
 #endif

@@ -1,14 +1,28 @@
 // glTF 2.0 metallic-roughness BRDF (spec appendix B): GGX distribution,
 // height-correlated Smith visibility, Schlick Fresnel, Lambert diffuse.
+//
+// Functions over the material-inputs struct `Surface`, shared by the rasterizer and the
+// ray tracers (their names are stable):
+//   Surface metal_rough_surface(albedo, metallic, roughness, n, v)       core glTF
+//   Surface metal_rough_surface(albedo, metallic, roughness, f0, f90, n, v)
+//                                  with a dielectric F0 colour and F90 weight
+//   Surface spec_gloss_surface(diffuse, specular, glossiness, n, v)     KHR_materials_pbrSpecularGlossiness
+//   float ior_f0(ior)                          KHR_materials_ior: F0 of a dielectric against air
+//   vec3 dielectric_f0(ior, specular, specular_color)   KHR_materials_specular's F0
+//   vec3 fresnel_schlick(f0, f90, v_dot_h), fresnel_schlick(f0, v_dot_h) (F90 = 1)
+//   float d_ggx(n_dot_h, alpha), float v_smith_ggx(n_dot_l, n_dot_v, alpha)
+//   vec3 brdf_times_cos(Surface, l)            one light direction, unit radiance
+//   vec3 ambient_light(Surface, radiance)      the sky/ground term without an environment
 #ifndef SHERPA_BRDF_GLSL
 #define SHERPA_BRDF_GLSL
 const float PI = 3.14159265358979;
 
-// BRDF inputs, whichever workflow gave them: the diffuse reflectance, F0 and the
+// BRDF inputs, whichever workflow gave them: the diffuse reflectance, F0, F90 and the
 // perceptual roughness.
 struct Surface {
     vec3 diffuse;
     vec3 f0;
+    float f90; // Fresnel at grazing angles: 1 but for KHR_materials_specular's dielectrics
     float roughness;
     vec3 n; // shading normal, unit, facing the viewer side of the surface
     vec3 v; // unit vector to the eye
@@ -16,14 +30,33 @@ struct Surface {
 
 // glTF metallic-roughness: dielectric F0 0.04, metals reflect their base colour.
 Surface metal_rough_surface(vec3 albedo, float metallic, float roughness, vec3 n, vec3 v) {
-    return Surface(albedo * (1.0 - metallic), mix(vec3(0.04), albedo, metallic), roughness, n, v);
+    return Surface(albedo * (1.0 - metallic), mix(vec3(0.04), albedo, metallic), 1.0, roughness, n, v);
+}
+
+// F0 of a dielectric of index of refraction `ior` against air (KHR_materials_ior):
+// ((ior - 1) / (ior + 1))^2; 1.5 gives the core 0.04, and 0 gives 1.
+float ior_f0(float ior) {
+    float r = (ior - 1.0) / (ior + 1.0);
+    return r * r;
+}
+
+// KHR_materials_specular: the dielectric's F0 is its ior's, tinted by the specular
+// colour (at most 1) and scaled by the specular weight; its F90 is the weight itself.
+vec3 dielectric_f0(float ior, float specular, vec3 specular_color) {
+    return min(vec3(ior_f0(ior)) * specular_color, vec3(1.0)) * specular;
+}
+
+// Metallic-roughness with a dielectric F0 colour and F90 weight (KHR_materials_ior,
+// KHR_materials_specular): metals still reflect their base colour with F90 = 1.
+Surface metal_rough_surface(vec3 albedo, float metallic, float roughness, vec3 f0, float f90, vec3 n, vec3 v) {
+    return Surface(albedo * (1.0 - metallic), mix(f0, albedo, metallic), mix(f90, 1.0, metallic), roughness, n, v);
 }
 
 // KHR_materials_pbrSpecularGlossiness, by its definition: F0 = specular, roughness =
 // 1 - glossiness, and the diffuse reflectance diffuse * (1 - max(specular)).
 Surface spec_gloss_surface(vec3 diffuse, vec3 specular, float glossiness, vec3 n, vec3 v) {
     float max_specular = max(max(specular.r, specular.g), specular.b);
-    return Surface(diffuse * (1.0 - max_specular), specular, 1.0 - glossiness, n, v);
+    return Surface(diffuse * (1.0 - max_specular), specular, 1.0, 1.0 - glossiness, n, v);
 }
 
 // x^5 as products: a CPU rasterizer evaluates pow() as exp2(5 * log2(x)), two
@@ -33,8 +66,12 @@ float pow5(float x) {
     return x2 * x2 * x;
 }
 
+vec3 fresnel_schlick(vec3 f0, float f90, float v_dot_h) {
+    return f0 + (f90 - f0) * pow5(clamp(1.0 - v_dot_h, 0.0, 1.0));
+}
+
 vec3 fresnel_schlick(vec3 f0, float v_dot_h) {
-    return f0 + (1.0 - f0) * pow5(clamp(1.0 - v_dot_h, 0.0, 1.0));
+    return fresnel_schlick(f0, 1.0, v_dot_h);
 }
 
 float d_ggx(float n_dot_h, float a) {
@@ -60,7 +97,10 @@ vec3 brdf_times_cos(Surface s, vec3 l) {
     float n_dot_h = clamp(dot(s.n, h), 0.0, 1.0);
     float v_dot_h = clamp(dot(s.v, h), 0.0, 1.0);
     float a = max(s.roughness * s.roughness, 1e-3);
-    vec3 f = fresnel_schlick(s.f0, v_dot_h);
+    vec3 f = fresnel_schlick(s.f0, s.f90, v_dot_h);
+    // (1 - F) per channel, as the specular-glossiness extension defines it; for
+    // KHR_materials_specular's coloured F0 its spec weights by 1 - max(F) instead
+    // (docs/materials.md).
     vec3 diffuse = (1.0 - f) * s.diffuse / PI;
     vec3 specular = f * d_ggx(n_dot_h, a) * v_smith_ggx(n_dot_l, n_dot_v, a);
     return (diffuse + specular) * n_dot_l;
@@ -75,7 +115,7 @@ vec3 hemisphere(vec3 dir, vec3 radiance) {
 
 vec3 ambient_light(Surface s, vec3 radiance) {
     float n_dot_v = clamp(abs(dot(s.n, s.v)), 1e-4, 1.0);
-    vec3 f = s.f0 + (max(vec3(1.0 - s.roughness), s.f0) - s.f0) * pow5(1.0 - n_dot_v);
+    vec3 f = s.f0 + (max(vec3((1.0 - s.roughness) * s.f90), s.f0) - s.f0) * pow5(1.0 - n_dot_v);
     vec3 diffuse = (1.0 - f) * s.diffuse * hemisphere(s.n, radiance);
     vec3 r = reflect(-s.v, s.n);
     // Rough surfaces see a blurrier sky: blend the reflected towards the normal's.

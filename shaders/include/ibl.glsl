@@ -46,12 +46,13 @@ vec3 ibl_sheen(vec3 n, vec3 v, vec3 sheen_color, float sheen_roughness, float sh
 }
 
 // Diffuse and specular light from the environment on a metallic-roughness or
-// specular-glossiness surface (brdf.glsl's Surface), F90 = 1.
+// specular-glossiness surface (brdf.glsl's Surface): F0 scales the table's first
+// term and F90 its second (KHR_materials_specular's dielectrics have F90 < 1).
 vec3 environment_light(Surface s) {
     float n_dot_v = clamp(dot(s.n, s.v), 1e-4, 1.0);
     float roughness = clamp(s.roughness, 0.0, 1.0);
     vec3 lut = ibl_brdf_lut(n_dot_v, roughness);
-    vec3 fss_ess = s.f0 * lut.r + lut.g; // single-scattering specular albedo
+    vec3 fss_ess = s.f0 * lut.r + s.f90 * lut.g; // single-scattering specular albedo
     vec3 r = reflect(-s.v, s.n);
     vec3 radiance = ibl_specular(r, roughness);
     vec3 irradiance = ibl_irradiance(s.n);

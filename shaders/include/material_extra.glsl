@@ -18,7 +18,7 @@ struct GPUMaterialExtra {
     uint unlit;                         // 192: KHR_materials_unlit
     uint workflow;                      // 196: WORKFLOW_*
     uint specular_glossiness_tex;       // 200: KHR_materials_pbrSpecularGlossiness texture
-    uint pad0;                          // 204
+    uint extensions;                    // 204: GPUExtensionIndex word (material_ext.glsl), or NO_EXTENSION
     vec4 specular_glossiness;           // 208: xyz specularFactor, w glossinessFactor
 };
 

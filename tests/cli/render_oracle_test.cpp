@@ -1,6 +1,6 @@
 // Sherpa's lit image against three.js's (tools/render_oracle/three_render.mjs: GLTFLoader,
-// EXRLoader, PMREM, MeshStandardMaterial in headless Chromium): the same file, EXR
-// environment (Blender's CC0 studio lights), camera and tone mapping. Compared over the
+// EXRLoader, PMREM, MeshStandardMaterial / MeshPhysicalMaterial in headless Chromium): the same
+// file, EXR environment (Blender's CC0 studio lights), camera and tone mapping. Compared over the
 // pixels both cover (the background is a solid colour no surface has): PSNR of the 8-bit
 // sRGB values and their mean absolute difference. Where the renderers differ by design:
 // docs/environment.md. Both images of each case are kept in the build tree
@@ -11,6 +11,9 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/glm.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -30,6 +33,9 @@ struct OracleCase {
     float exposure;
     double min_psnr;      // dB over covered pixels
     double max_mean_diff; // mean |a - b| / 255 over covered pixels and channels
+    // Sweeps only (0 elsewhere): the largest difference of one sphere's mean colour
+    // (8-bit sRGB / 255, per channel) between the two renderers.
+    double max_sphere_diff = 0.0;
 };
 
 void PrintTo(const OracleCase& c, std::ostream* os) {
@@ -39,6 +45,11 @@ void PrintTo(const OracleCase& c, std::ostream* os) {
 constexpr const char* kHelmetCamera = "eye=1.6,0.5,2.6:target=0,0,0:fov=45:near=0.05:far=100";
 constexpr const char* kSpheresCamera =
     "eye=0.00278,0.00274,0.0125:target=0.00278,0.00274,-0.0015:fov=45:near=0.001:far=1";
+
+// The sweeps: two rows of five spheres (radius 0.4, 1 apart, black base colour: the
+// specular reflection alone) seen from +Z. Tolerances as for the models below: the
+// measured agreement (docs/materials.md) with a margin.
+constexpr const char* kSweepCamera = "eye=0,0,5:target=0,0,0:fov=45:near=0.1:far=100";
 
 // Tolerances: what this run of the two renderers gives (docs/environment.md), with a
 // margin of about 1.5 dB / 0.01; they catch a wrong convention, camera, tone curve or
@@ -53,9 +64,21 @@ const OracleCase kCases[] = {
      "neutral", 0.0f, 15.0, 0.13},
     {"spheres_courtyard_linear", "MetalRoughSpheresNoTextures", "courtyard.exr", kSpheresCamera,
      "linear", -1.0f, 19.5, 0.07},
+    // Material extension sweeps (tools/material_sweeps/make_sweeps.py; docs/materials.md):
+    // rows of spheres, each sweeping one parameter; three.js draws them with
+    // MeshPhysicalMaterial (GLTFLoader's KHR_materials_* plugins).
+    {"ior_sweep_studio_neutral", "sweep:ior_sweep", "studio.exr", kSweepCamera, "neutral", 0.0f,
+     22.5, 0.035, 0.06},
+    {"specular_sweep_studio_neutral", "sweep:specular_sweep", "studio.exr", kSweepCamera, "neutral",
+     0.0f, 23.0, 0.03, 0.10},
+    {"specular_sweep_city_aces", "sweep:specular_sweep", "city.exr", kSweepCamera, "aces", 0.0f,
+     24.5, 0.033, 0.045},
 };
 
+// A sample model by name, or "sweep:NAME": an authored sweep in tests/data/material_sweeps.
 std::string asset(const std::string& name) {
+    if (name.rfind("sweep:", 0) == 0)
+        return std::string(SHERPA_TEST_DATA_DIR) + "/material_sweeps/" + name.substr(6) + ".gltf";
     return std::string(SHERPA_ASSETS_DIR) + "/gltf/" + name + "/glTF/" + name + ".gltf";
 }
 
@@ -73,6 +96,64 @@ Image read(const fs::path& p) {
     std::string error;
     EXPECT_TRUE(tex::read_png_rgba8(p.string(), img.width, img.height, img.rgba, error)) << error;
     return img;
+}
+
+// Mean 8-bit colour (/255) of a disk about a sweep sphere's centre, as kSweepCamera
+// projects it: two rows (y = +0.5, -0.5) of five (x = -2 .. 2), 320x240, 45 degrees.
+glm::dvec3 sphere_mean(const Image& img, int row, int column) {
+    const double half_height = 5.0 * std::tan(22.5 * 3.14159265358979 / 180.0);
+    const double x = column - 2.0, y = 0.5 - row;
+    const double cx = img.width * 0.5 * (1.0 + x / (half_height * img.width / img.height));
+    const double cy = img.height * 0.5 * (1.0 - y / half_height);
+    const double r = 0.6 * 0.4 / half_height * img.height * 0.5; // inside the silhouette
+    glm::dvec3 sum(0.0);
+    int n = 0;
+    for (int py = int(cy - r); py <= int(cy + r); ++py)
+        for (int px = int(cx - r); px <= int(cx + r); ++px) {
+            if ((px + 0.5 - cx) * (px + 0.5 - cx) + (py + 0.5 - cy) * (py + 0.5 - cy) > r * r)
+                continue;
+            const std::uint8_t* p = &img.rgba[(std::size_t(py) * img.width + std::size_t(px)) * 4];
+            sum += glm::dvec3(p[0], p[1], p[2]) / 255.0;
+            ++n;
+        }
+    return sum / double(std::max(n, 1));
+}
+
+// Each sphere of a sweep agrees between the renderers; along each row (every sweep
+// raises F0) both renderers brighten monotonically, and by about as much (the ratio
+// of the rows' spreads): a renderer that ignored the swept parameter fails.
+void check_sweep(const OracleCase& c, const Image& ours, const Image& theirs) {
+    auto peak = [](glm::dvec3 v) { return std::max({v.x, v.y, v.z}); };
+    for (int row = 0; row < 2; ++row) {
+        double worst = 0.0;
+        std::string line;
+        glm::dvec3 first_a(0.0), first_b(0.0), last_a(0.0), last_b(0.0);
+        double prev_a = -1.0, prev_b = -1.0;
+        for (int col = 0; col < 5; ++col) {
+            const glm::dvec3 a = sphere_mean(ours, row, col), b = sphere_mean(theirs, row, col);
+            const glm::dvec3 d = glm::abs(a - b);
+            worst = std::max({worst, d.x, d.y, d.z});
+            if (col == 0) first_a = a, first_b = b;
+            last_a = a, last_b = b;
+            // Monotonic within a step of the 8-bit mean's noise.
+            EXPECT_GE(peak(a), prev_a - 0.002) << c.name << " row " << row << " sherpa col " << col;
+            EXPECT_GE(peak(b), prev_b - 0.002) << c.name << " row " << row << " three col " << col;
+            prev_a = peak(a), prev_b = peak(b);
+            char buf[96];
+            std::snprintf(buf, sizeof buf, " (%.3f %.3f %.3f | %.3f %.3f %.3f)", a.x, a.y, a.z, b.x,
+                          b.y, b.z);
+            line += buf;
+        }
+        const double spread_a = peak(last_a) - peak(first_a),
+                     spread_b = peak(last_b) - peak(first_b);
+        std::printf("render oracle %s row %d: worst sphere |diff| %.4f, sweep spread %.4f / "
+                    "%.4f (sherpa | three):%s\n",
+                    c.name, row, worst, spread_a, spread_b, line.c_str());
+        EXPECT_LE(worst, c.max_sphere_diff) << c.name << " row " << row;
+        EXPECT_GT(spread_b, 0.03) << c.name << " row " << row << ": the sweep shows too little";
+        EXPECT_GT(spread_a / spread_b, 0.6) << c.name << " row " << row;
+        EXPECT_LT(spread_a / spread_b, 1.6) << c.name << " row " << row;
+    }
 }
 
 class RenderOracleTest : public ::testing::TestWithParam<OracleCase> {};
@@ -140,6 +221,7 @@ TEST_P(RenderOracleTest, SherpaAgreesWithThreeJs) {
     EXPECT_LE(mean, c.max_mean_diff) << ours << " vs " << theirs;
     // The same camera frames the same pixels: the silhouettes agree but for edge pixels.
     EXPECT_LT(silhouette, 0.03);
+    if (c.max_sphere_diff > 0.0) check_sweep(c, a, b);
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, RenderOracleTest, ::testing::ValuesIn(kCases),

@@ -5,6 +5,7 @@
 #include <sherpa/gpu/upload.h>
 #include <sherpa/render/gpu_scene.h>
 #include <sherpa/render/gpu_structs.h>
+#include <sherpa/render/material_extensions.h>
 #include <sherpa/scene/usage_report.h>
 
 #include <algorithm>
@@ -65,15 +66,6 @@ void append_stream(std::vector<std::uint8_t>& out, const Mesh& mesh, VertexAttri
     }
 }
 
-GPUTextureTransform uv_transform(const TextureSlot& slot) {
-    const glm::mat3 m = slot.transform.present ? slot.transform.matrix() : glm::mat3(1.0f);
-    GPUTextureTransform t;
-    // Rows of the 2x3 affine part; glm is column-major (m[column][row]).
-    t.row0 = glm::vec4(m[0][0], m[1][0], m[2][0], float(slot.tex_coord));
-    t.row1 = glm::vec4(m[0][1], m[1][1], m[2][1], 0.0f);
-    return t;
-}
-
 } // namespace
 
 GpuScene::GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
@@ -101,6 +93,7 @@ void GpuScene::upload(const Scene& scene, std::shared_ptr<const tex::PreparedTex
             std::make_unique<GpuMaterials>(resources_, table_, scene, std::move(textures), missing);
         memory_.textures = materials_->textures().gpu_bytes();
         memory_.materials = materials_->bytes();
+        memory_.material_extensions = materials_->extensions().bytes();
         upload_geometry(scene);
         upload_instances(scene);
     } catch (...) {
@@ -135,6 +128,7 @@ GpuMaterials::GpuMaterials(ResourceManager& resources, BindlessTable& table, con
 GpuMaterials::~GpuMaterials() {
     resources_.destroy(materials_);
     resources_.destroy(extras_);
+    if (extension_buffer_.valid()) resources_.destroy(extension_buffer_);
 }
 
 void GpuScene::upload_geometry(const Scene& scene) {
@@ -265,20 +259,28 @@ void GpuScene::upload_motion(const Scene& scene, const std::vector<bool>& instan
 void GpuMaterials::upload(const Scene& scene) {
     std::vector<GPUMaterialData> data;
     std::vector<GPUMaterialExtra> extras;
+    extensions_ = build_material_extensions(
+        scene.materials, [this](const TextureSlot& slot, TextureRole role) {
+            // A failed texture reads white (the factor alone), not the checker: the
+            // texture pipeline has warned, and a checker would only tint F0.
+            const std::uint32_t tex = textures_->field_slot(slot, role, kWhiteTexture);
+            return tex == kCheckerTexture ? kWhiteTexture : tex;
+        });
     for (const MaterialInstance& m : scene.materials) {
         // Texture fields resolved to bindless slots, absent ones to the defaults.
         data.push_back(textures_->material(m));
         GPUMaterialExtra x{};
-        x.uv[kSlotBaseColor] = uv_transform(m.base_color);
-        x.uv[kSlotMetallicRoughness] = uv_transform(m.metallic_roughness);
-        x.uv[kSlotNormal] = uv_transform(m.normal);
-        x.uv[kSlotOcclusion] = uv_transform(m.occlusion);
-        x.uv[kSlotEmissive] = uv_transform(m.emissive);
+        x.uv[kSlotBaseColor] = texture_transform(m.base_color);
+        x.uv[kSlotMetallicRoughness] = texture_transform(m.metallic_roughness);
+        x.uv[kSlotNormal] = texture_transform(m.normal);
+        x.uv[kSlotOcclusion] = texture_transform(m.occlusion);
+        x.uv[kSlotEmissive] = texture_transform(m.emissive);
         x.unlit = m.unlit ? 1u : 0u;
         x.specular_glossiness_tex = kWhiteTexture;
+        x.extensions = extensions_.places[data.size() - 1].index;
         if (const auto& sg = m.specular_glossiness) {
             x.workflow = kWorkflowSpecularGlossiness;
-            x.uv[kSlotSpecularGlossiness] = uv_transform(sg->specular_glossiness);
+            x.uv[kSlotSpecularGlossiness] = texture_transform(sg->specular_glossiness);
             x.specular_glossiness_tex =
                 textures_->field_slot(sg->specular_glossiness, kRoleColor, kWhiteTexture);
             x.specular_glossiness = glm::vec4(sg->specular_factor, sg->glossiness_factor);
@@ -299,6 +301,12 @@ void GpuMaterials::upload(const Scene& scene) {
     UploadBatch batch(resources_);
     batch.upload_buffer(materials_, 0, data.data(), bytes);
     batch.upload_buffer(extras_, 0, extras.data(), extra_bytes);
+    // Only where some material uses a drawn extension (the binding is partially bound).
+    if (!extensions_.words.empty()) {
+        extension_buffer_ = resources_.create_buffer(
+            {extensions_.bytes(), kStorage, MemoryUsage::DeviceLocal, "material extensions"});
+        batch.upload_buffer(extension_buffer_, 0, extensions_.words.data(), extensions_.bytes());
+    }
     batch.submit_and_wait();
     bytes_ = bytes + extra_bytes;
 }

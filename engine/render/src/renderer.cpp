@@ -48,11 +48,15 @@ void Renderer::Impl::create_frame_sets() {
         {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
         {6, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
         {7, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+        // The material extension blocks (shaders/include/material_ext.glsl): partially
+        // bound, so a scene whose materials use no extension binds (and holds) nothing.
+        {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
     };
     const VkDescriptorBindingFlags binding_flags[] = {0,
                                                       0,
                                                       0,
                                                       0,
+                                                      VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
                                                       VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
                                                       VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
                                                       VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
@@ -65,7 +69,7 @@ void Renderer::Impl::create_frame_sets() {
         device, bindings, "vkCreateDescriptorSetLayout(frame)", 0, &flags_info);
     const VkDescriptorPoolSize sizes[] = {
         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFramesInFlight},
-        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * kFramesInFlight},
+        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3 * kFramesInFlight},
         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 5 * kFramesInFlight}};
     frame_pool_ =
         create_descriptor_pool(device, kFramesInFlight, sizes, "vkCreateDescriptorPool(frame)");
@@ -118,6 +122,18 @@ void Renderer::Impl::bind_frame_set(FrameSlot& slot) {
         writes[i].pBufferInfo = &infos[i];
     }
     vkUpdateDescriptorSets(context.device(), 4, writes, 0, nullptr);
+    // Without extension blocks the old descriptor stays, never read (a material reads
+    // its blocks only where GPUMaterialExtra::extensions names one).
+    if (const VkBuffer ext = scene ? scene->materials().extensions_buffer() : VK_NULL_HANDLE) {
+        const VkDescriptorBufferInfo info{ext, 0, VK_WHOLE_SIZE};
+        auto write = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        write.dstSet = slot.set;
+        write.dstBinding = 8;
+        write.descriptorCount = 1;
+        write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        write.pBufferInfo = &info;
+        vkUpdateDescriptorSets(context.device(), 1, &write, 0, nullptr);
+    }
     slot.set_generation = scene_generation_;
 }
 

@@ -105,6 +105,65 @@ void read_specular_glossiness(ImportContext& ctx, const tinygltf::Value& e, Mate
     m.specular_glossiness = sg;
 }
 
+// KHR_materials_ior: ior >= 1, or exactly 0 (F0 = 1: the specular-glossiness
+// conversion). Anything else (negative, between 0 and 1, NaN, infinite, not a number)
+// is a warning and the extension's default, 1.5, is drawn.
+float read_ior(ImportContext& ctx, const tinygltf::Value& e, const std::string& where) {
+    const std::string w = where + ".extensions.KHR_materials_ior.ior";
+    if (!e.IsObject() || !e.Has("ior")) return kDefaultIor;
+    const tinygltf::Value& v = e.Get("ior");
+    const double ior = v.IsNumber() ? v.GetNumberAsDouble() : std::nan("");
+    // Checked as the float the GPU gets (1e39 is a finite double but an infinite float).
+    const float f = static_cast<float>(ior);
+    if (std::isfinite(f) && (f >= 1.0f || f == 0.0f)) return f;
+    ctx.warn(w + ": " + (v.IsNumber() ? number_text(ior) : std::string("not a number")) +
+             " is not an index of refraction (>= 1, or 0); 1.5 is used");
+    return kDefaultIor;
+}
+
+// KHR_materials_specular. Factors outside their range are warned and clamped (specular
+// to 0..1, each colour component to >= 0); NaN or infinite ones take the default.
+MaterialSpecular read_specular(ImportContext& ctx, const tinygltf::Value& e,
+                               const std::string& where) {
+    const std::string w = where + ".extensions.KHR_materials_specular";
+    MaterialSpecular s;
+    const double nan = std::nan("");
+    const auto number = [&](const char* key, double fallback) {
+        if (!e.IsObject() || !e.Has(key)) return fallback;
+        const tinygltf::Value& v = e.Get(key);
+        return v.IsNumber() ? v.GetNumberAsDouble() : nan;
+    };
+    const double factor = number("specularFactor", 1.0);
+    if (!std::isfinite(static_cast<float>(factor))) {
+        ctx.warn(w + ".specularFactor: not a finite number; the default 1 is used");
+    } else if (factor < 0.0 || factor > 1.0) {
+        s.specular_factor = static_cast<float>(std::clamp(factor, 0.0, 1.0));
+        ctx.warn(w + ".specularFactor: " + number_text(factor) + " is outside 0..1; clamped to " +
+                 number_text(s.specular_factor));
+    } else {
+        s.specular_factor = static_cast<float>(factor);
+    }
+    if (e.IsObject() && e.Has("specularColorFactor")) {
+        const glm::vec4 c = vec_or(e, "specularColorFactor", glm::vec4(nan), 3);
+        if (!is_finite(glm::vec3(c))) {
+            ctx.warn(w + ".specularColorFactor: not three finite numbers; the default [1, 1, 1] "
+                         "is used");
+        } else if (glm::any(glm::lessThan(glm::vec3(c), glm::vec3(0.0f)))) {
+            s.specular_color_factor = glm::max(glm::vec3(c), glm::vec3(0.0f));
+            ctx.warn(w + ".specularColorFactor: negative components are clamped to 0");
+        } else {
+            s.specular_color_factor = glm::vec3(c);
+        }
+    }
+    if (e.IsObject() && e.Has("specularTexture"))
+        s.specular =
+            read_value_slot(ctx, e.Get("specularTexture"), w + ".specularTexture", kRoleLinear);
+    if (e.IsObject() && e.Has("specularColorTexture"))
+        s.specular_color = read_value_slot(ctx, e.Get("specularColorTexture"),
+                                           w + ".specularColorTexture", kRoleColor);
+    return s;
+}
+
 AlphaMode parse_alpha_mode(const std::string& s, const std::string& where) {
     if (s.empty() || s == "OPAQUE") return AlphaMode::Opaque;
     if (s == "MASK") return AlphaMode::Mask;
@@ -319,6 +378,11 @@ void import_material(ImportContext& ctx, std::size_t i) {
         if (const auto it = src.extensions.find("KHR_materials_pbrSpecularGlossiness");
             it != src.extensions.end())
             read_specular_glossiness(ctx, it->second, m, where);
+        if (const auto it = src.extensions.find("KHR_materials_ior"); it != src.extensions.end())
+            m.ior = read_ior(ctx, it->second, where);
+        if (const auto it = src.extensions.find("KHR_materials_specular");
+            it != src.extensions.end())
+            m.specular = read_specular(ctx, it->second, where);
         ctx.scene.materials.push_back(std::move(m));
     }
 }

@@ -12,8 +12,16 @@ std::array<bool, kVertexAttributeCount> attributes_used(const MaterialInstance& 
     set(VertexAttribute::Position);
     // Unlit materials shade without normals; everything else lights with them.
     if (!material.unlit) set(VertexAttribute::Normal);
-    for (const TextureSlot* slot : {&material.base_color, &material.metallic_roughness,
-                                    &material.normal, &material.occlusion, &material.emissive}) {
+    // Extension slots too (KHR_materials_pbrSpecularGlossiness, KHR_materials_specular):
+    // a texture read without its TEXCOORD stream would sample one texel everywhere.
+    const TextureSlot none;
+    const bool specular = material.specular && !material.specular_glossiness;
+    for (const TextureSlot* slot :
+         {&material.base_color, &material.metallic_roughness, &material.normal, &material.occlusion,
+          &material.emissive,
+          material.specular_glossiness ? &material.specular_glossiness->specular_glossiness : &none,
+          specular ? &material.specular->specular : &none,
+          specular ? &material.specular->specular_color : &none}) {
         if (!slot->present()) continue;
         if (material.unlit && slot != &material.base_color)
             continue; // unlit reads base colour only

@@ -50,6 +50,12 @@ enum class DebugView : std::uint32_t {
     // Rays only: where the cascaded shadow maps disagree with shadow rays, in the
     // kShadowError* colours below.
     ShadowError = 21,
+    // KHR_materials_ior: grey (ior - 1) / 2, ior 0 (F0 = 1) in kSpecGlossFlagColor.
+    Ior = 22,
+    // KHR_materials_specular: the specular weight (factor x texture alpha) and the F0
+    // colour (factor x texture rgb, linear radiance like base colour).
+    SpecularWeight = 23,
+    SpecularColor = 24,
 };
 
 // The metallic view's colour on specular-glossiness materials (no metallic value
@@ -112,7 +118,7 @@ struct OverlayEntry {
     const char* label;
 };
 
-inline constexpr std::array<DebugViewInfo, 22> kDebugViews{{
+inline constexpr std::array<DebugViewInfo, 25> kDebugViews{{
     {DebugView::Lit, "lit", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Lit")},
     {DebugView::Normal, "normal", kNormalStream, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Normals")},
     {DebugView::Tangent, "tangent", kTangentStream,
@@ -147,6 +153,11 @@ inline constexpr std::array<DebugViewInfo, 22> kDebugViews{{
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Ambient occlusion (rays)")},
     {DebugView::ShadowError, "shadow-error", kNormalStream,
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Shadow error (maps vs rays)")},
+    {DebugView::Ior, "ior", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Index of refraction")},
+    {DebugView::SpecularWeight, "specular-weight", 0,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Specular weight")},
+    {DebugView::SpecularColor, "specular-color", 0,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Specular colour")},
 }};
 
 inline constexpr std::array<OverlayEntry, 7> kOverlays{{

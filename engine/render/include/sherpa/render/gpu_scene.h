@@ -12,6 +12,7 @@
 #include <sherpa/gpu/bindless.h>
 #include <sherpa/gpu/resources.h>
 #include <sherpa/gpu/upload.h>
+#include <sherpa/render/material_extensions.h>
 #include <sherpa/render/scene_textures.h>
 #include <sherpa/scene/scene.h>
 
@@ -21,6 +22,8 @@ struct GpuMemoryReport {
     std::uint64_t vertex_streams = 0, indices = 0, textures = 0, materials = 0, instances = 0;
     // Skinning and morph streams and their per-mesh records: 0 for static scenes.
     std::uint64_t motion = 0;
+    // The material extension buffer (material_extensions.h): 0 where no material uses one.
+    std::uint64_t material_extensions = 0;
     // The same vertices in the 56-byte unified layout (+16-byte colour stream where present).
     std::uint64_t unified_vertex_bytes = 0;
     // VkBufferUsageFlags of the vertex-stream and index buffers: acceleration-structure
@@ -28,7 +31,8 @@ struct GpuMemoryReport {
     // tracing enabled.
     std::uint32_t geometry_usage = 0;
     std::uint64_t total() const {
-        return vertex_streams + indices + textures + materials + instances + motion;
+        return vertex_streams + indices + textures + materials + material_extensions + instances +
+               motion;
     }
 };
 
@@ -67,6 +71,13 @@ public:
 
     VkBuffer buffer() const { return resources_.get(materials_).buffer.get(); }
     VkBuffer extras_buffer() const { return resources_.get(extras_).buffer.get(); }
+    // The material extension buffer; VK_NULL_HANDLE where no material uses one.
+    VkBuffer extensions_buffer() const {
+        return extension_buffer_.valid() ? resources_.get(extension_buffer_).buffer.get()
+                                         : VK_NULL_HANDLE;
+    }
+    // Where each material's extension blocks are, and the words uploaded.
+    const MaterialExtensionBuffer& extensions() const { return extensions_; }
     // Bytes of both arrays.
     std::uint64_t bytes() const { return bytes_; }
     // For inspection: per prepared texture its pipeline record (state, hash, PSNR,
@@ -79,7 +90,8 @@ private:
 
     ResourceManager& resources_;
     std::unique_ptr<SceneTextures> textures_;
-    BufferHandle materials_, extras_;
+    BufferHandle materials_, extras_, extension_buffer_;
+    MaterialExtensionBuffer extensions_;
     std::uint64_t bytes_ = 0;
 };
 

@@ -46,6 +46,19 @@ struct SpecularGlossiness {
     TextureSlot specular_glossiness; // RGB specular (sRGB), A glossiness (linear)
 };
 
+// KHR_materials_specular: the strength (specularFactor x specularTexture.a) and the F0
+// colour (specularColorFactor x specularColorTexture.rgb, sRGB) of the dielectric's
+// specular reflection; metals are unaffected.
+struct MaterialSpecular {
+    float specular_factor = 1.0f;
+    glm::vec3 specular_color_factor{1.0f};
+    TextureSlot specular;       // A channel, linear
+    TextureSlot specular_color; // RGB, sRGB
+};
+
+// KHR_materials_ior's default, which is also the core glTF dielectric (F0 = 0.04).
+inline constexpr float kDefaultIor = 1.5f;
+
 struct MaterialInstance {
     std::string name;
     std::int32_t gltf_index = -1; // -1: Sherpa's default material
@@ -63,6 +76,10 @@ struct MaterialInstance {
     // Set when the material uses KHR_materials_pbrSpecularGlossiness (then the
     // metallic-roughness fields are its fallback and are not shaded).
     std::optional<SpecularGlossiness> specular_glossiness;
+    // Material extensions, each set only when the material uses it (and then drawn with
+    // a block of its own in the GPU extension buffer; absent ones cost nothing).
+    std::optional<float> ior;                 // KHR_materials_ior: >= 1, or 0 (F0 = 1)
+    std::optional<MaterialSpecular> specular; // KHR_materials_specular
     // The names in the material's `extensions` object, as written (sorted): what
     // marks a material that uses an extension Sherpa does not draw.
     std::vector<std::string> extensions;

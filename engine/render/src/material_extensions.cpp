@@ -1,0 +1,58 @@
+#include <sherpa/render/material_extensions.h>
+
+#include <cstring>
+
+namespace sherpa::gpu {
+
+GPUTextureTransform texture_transform(const TextureSlot& slot) {
+    const glm::mat3 m = slot.transform.present ? slot.transform.matrix() : glm::mat3(1.0f);
+    // Rows of the 2x3 affine part (glm is column-major: m[column][row]); row0.w is the
+    // TEXCOORD set.
+    return {glm::vec4(m[0][0], m[1][0], m[2][0], float(slot.tex_coord)),
+            glm::vec4(m[0][1], m[1][1], m[2][1], 0.0f)};
+}
+
+namespace {
+
+// Appends a block (a whole number of 16-byte words) and returns its first word.
+template <typename Block> std::uint32_t append(std::vector<glm::uvec4>& words, const Block& b) {
+    static_assert(sizeof(Block) % kExtensionWordBytes == 0);
+    const std::size_t first = words.size();
+    words.resize(first + sizeof(Block) / kExtensionWordBytes);
+    std::memcpy(&words[first], &b, sizeof(Block));
+    return static_cast<std::uint32_t>(first);
+}
+
+} // namespace
+
+MaterialExtensionBuffer build_material_extensions(std::span<const MaterialInstance> materials,
+                                                  const ExtensionTextureSlot& texture_slot) {
+    MaterialExtensionBuffer out;
+    out.places.resize(materials.size());
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        const MaterialInstance& m = materials[i];
+        // Specular-glossiness materials have no dielectric F0 to change; unlit ones no BRDF.
+        const bool shaded = !m.unlit && !m.specular_glossiness;
+        const bool ior = shaded && m.ior.has_value();
+        const bool specular = shaded && m.specular.has_value();
+        if (!ior && !specular) continue;
+        MaterialExtensionPlace& place = out.places[i];
+        place.index = append(out.words, GPUExtensionIndex{kNoExtension, kNoExtension, 0, 0});
+        if (ior) place.ior = append(out.words, GPUIorBlock{*m.ior, 0.0f, 0.0f, 0.0f});
+        if (specular) {
+            const MaterialSpecular& s = *m.specular;
+            GPUSpecularBlock b{};
+            b.color_factor = glm::vec4(s.specular_color_factor, s.specular_factor);
+            b.specular_tex = texture_slot(s.specular, kRoleLinear);
+            b.specular_color_tex = texture_slot(s.specular_color, kRoleColor);
+            b.specular_uv = texture_transform(s.specular);
+            b.color_uv = texture_transform(s.specular_color);
+            place.specular = append(out.words, b);
+        }
+        const GPUExtensionIndex index{place.ior, place.specular, 0, 0};
+        std::memcpy(&out.words[place.index], &index, sizeof index);
+    }
+    return out;
+}
+
+} // namespace sherpa::gpu

@@ -223,14 +223,14 @@ void RtTests::rayTracedModeDrawsRtFrames() {
 void RtTests::refusedViewGoesBackToRaster() {
     MainWindow& w = *window_;
     QVERIFY(test::load(w, QStringLiteral("builtin:default")));
-    QVERIFY(w.setDebugView(QStringLiteral("lit"), false)); // lights: no ray formula
+    QVERIFY(w.setDebugView(QStringLiteral("uv0-checker"), false)); // derivatives: no ray formula
     const int errors = w.logDock()->errorCount();
     w.compareControls().setMode(ViewportMode::RayTraced);
     test::viewport_shot(w);
     QTRY_COMPARE_WITH_TIMEOUT(w.compareControls().state().mode, ViewportMode::Raster, 10000);
     QVERIFY2(w.logDock()->text().contains(QStringLiteral("The ray tracer cannot draw")),
              qPrintable(w.logDock()->text()));
-    QVERIFY(w.logDock()->text().contains(QStringLiteral("lit")));
+    QVERIFY(w.logDock()->text().contains(QStringLiteral("uv0-checker")));
     QCOMPARE(w.logDock()->errorCount(), errors); // a warning, and rendering goes on
     const std::uint64_t before = w.viewport()->framesRendered();
     w.viewport()->scheduleFrame();

@@ -92,6 +92,12 @@ SideImage Renderer::Impl::record_rt_side(VkCommandBuffer cmd, FrameSlot& slot,
     // when they hold another one.
     pose_acceleration(slot, settings);
     begin_rt_side(cmd, slot);
+    slot.path_traced = settings.view == DebugView::Lit;
+    if (slot.path_traced) { // path traced, accumulating while nothing changes
+        last_path_ = record_path(cmd, slot, settings, false);
+        end_rt_side(cmd, slot);
+        return {path_->view(), VK_IMAGE_LAYOUT_GENERAL};
+    }
     rt_views_->record(cmd, rt_frame(settings, slot), false);
     end_rt_side(cmd, slot);
     return {rt_views_->view(), VK_IMAGE_LAYOUT_GENERAL};
@@ -122,7 +128,8 @@ FrameStats Renderer::Impl::read_rt_stats(FrameSlot& slot) {
                                    VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
              "vkGetQueryPoolResults(rt timestamps)");
     s.gpu_ms = double(ts[1] - ts[0]) * context.info().timestamp_period_ns * 1e-6;
-    s.passes.push_back({"rays", s.gpu_ms});
+    s.passes.push_back({slot.path_traced ? "path_trace" : "rays", s.gpu_ms});
+    if (slot.path_traced) s.path = last_path_;
     return s;
 }
 

@@ -289,10 +289,15 @@ int run_render(Args args) {
         if (ray_traced && settings.view == gpu::DebugView::Lit) {
             const gpu::PathTraceError e = renderer.path_trace_error();
             const double ms = run.frames.back().gpu_ms;
-            std::printf("path: %u spp in %.1f ms GPU (%.2f ms per sample), estimated error: mean "
-                        "standard error %.5f of mean luminance %.5f (%.3f%%)\n",
-                        e.samples, ms, e.samples ? ms / e.samples : 0.0, e.mean_standard_error,
-                        e.mean_luminance, 100.0 * e.relative_error);
+            std::printf("path: %u spp in %.1f ms GPU (%.2f ms per sample), ", e.samples, ms,
+                        e.samples ? ms / e.samples : 0.0);
+            if (e.samples < 2)
+                std::printf(
+                    "estimated error: none (one sample has no variance; --spp 2 or more)\n");
+            else
+                std::printf("estimated error: mean standard error %.5f of mean luminance %.5f "
+                            "(%.3f%%)\n",
+                            e.mean_standard_error, e.mean_luminance, 100.0 * e.relative_error);
         }
         if (settings.view == gpu::DebugView::ShadowError) {
             // The view's pixel classes counted back (their colours are the engine's).

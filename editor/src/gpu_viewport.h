@@ -129,6 +129,13 @@ public:
     // Why the last present() drew nothing: what the ray tracer refused (a view
     // without a ray formula, a posed frame...); empty when it drew.
     QString lastRefusal() const;
+    // The path-traced lit view (ray-traced mode): samples per pixel accumulated so far
+    // (0: the last frame was not path traced) and the estimated relative error, measured
+    // at 4, 8, 16, ... samples (-1 before the first measurement). Accumulation stops at
+    // kPathSamples; every change starts it over.
+    static constexpr std::uint32_t kPathSamples = 1024;
+    std::uint32_t pathSamples() const;
+    double pathError() const;
     // The difference numbers of the latest completed comparison frame.
     DifferenceNumbers lastDifference() const;
     // Waits until the queue is idle (the presented frame is on screen).
@@ -151,6 +158,11 @@ public:
     // then each cascade); false before any culled frame. `cached_shadows`: the cascades were
     // reused, not drawn.
     bool lastCullPasses(std::vector<CullStats>& passes, bool& cached_shadows) const;
+
+private:
+    void notePathSamples(const gpu::RenderSettings& settings);
+
+public:
     // Messages of the Khronos validation layer so far (SHERPA_VALIDATION=1 turns
     // it on in release builds), one "[id] text" each; tests require none.
     QStringList validationMessages() const;

@@ -69,6 +69,7 @@ private Q_SLOTS:
     void rtOffBuildsNothing();
     void rayTracedModeDrawsRtFrames();
     void refusedViewGoesBackToRaster();
+    void litIsPathTracedAndAccumulatesAtRest();
     void splitShowsALeftAndBRight();
     void draggingMovesTheDivider();
     void differenceOfASceneWithItselfIsZero();
@@ -217,6 +218,24 @@ void RtTests::rayTracedModeDrawsRtFrames() {
     const int diff = differing(raster, rays, 0, rays.width());
     QVERIFY2(diff < covered(rays) / 20,
              qPrintable(QStringLiteral("%1 of %2").arg(diff).arg(covered(rays))));
+    checkValidation();
+}
+
+// Ray-traced mode draws the lit view path traced: at rest the render thread keeps
+// adding samples (no new request needed), the count and then the estimated error
+// reach the report and the frame label, and the error falls as samples grow.
+void RtTests::litIsPathTracedAndAccumulatesAtRest() {
+    MainWindow& w = *window_;
+    QVERIFY(test::load(w, QStringLiteral("builtin:default")));
+    QVERIFY(w.setDebugView(QStringLiteral("lit"), false));
+    w.compareControls().setMode(ViewportMode::RayTraced);
+    test::viewport_shot(w);
+    QCOMPARE(w.compareControls().state().mode, ViewportMode::RayTraced); // not refused
+    QTRY_VERIFY_WITH_TIMEOUT(w.lastReport().path_samples >= 8, 60000);
+    QTRY_VERIFY_WITH_TIMEOUT(w.lastReport().path_error >= 0.0, 60000);
+    const double early = w.lastReport().path_error;
+    QTRY_VERIFY_WITH_TIMEOUT(w.lastReport().path_samples >= 64, 120000);
+    QTRY_VERIFY_WITH_TIMEOUT(w.lastReport().path_error < early, 60000);
     checkValidation();
 }
 

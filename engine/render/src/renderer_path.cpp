@@ -113,4 +113,8 @@ PathTraceError Renderer::path_trace_error() {
     return estimate_error(impl_->path_trace_image());
 }
 
+std::uint32_t Renderer::path_trace_samples() const {
+    return impl_->path_samples();
+}
+
 } // namespace sherpa::gpu

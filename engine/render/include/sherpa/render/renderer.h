@@ -134,6 +134,8 @@ public:
     // first path-traced frame) and its estimated error (path_trace.h).
     PathTraceImage path_trace_image();
     PathTraceError path_trace_error();
+    // Samples per pixel in the accumulation (0: none yet), without reading anything back.
+    std::uint32_t path_trace_samples() const;
 
     // Culling statistics of the last frames whose results were read (render(),
     // presented frames), oldest first: what the editor's culling dock charts.

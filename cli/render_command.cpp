@@ -287,7 +287,7 @@ int run_render(Args args) {
             return kExitLoadError;
         }
         if (ray_traced && settings.view == gpu::DebugView::Lit) {
-            const gpu::PathTraceError e = renderer.path_trace_error();
+            const gpu::PathTraceError e = gpu::path_trace_error(renderer);
             const double ms = run.frames.back().gpu_ms;
             std::printf("path: %u spp in %.1f ms GPU (%.2f ms per sample), ", e.samples, ms,
                         e.samples ? ms / e.samples : 0.0);

@@ -297,17 +297,24 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame, flo
 void GpuViewport::notePathSamples(const gpu::RenderSettings& settings) {
     Impl& i = *impl_;
     if (settings.renderer != gpu::RendererKind::RayTraced || settings.view != gpu::DebugView::Lit) {
+        i.path_traced = false;
         i.path_samples = i.path_error_samples = 0;
         i.path_error = -1.0;
         return;
     }
-    const std::uint32_t n = i.renderer->path_trace_samples();
+    i.path_traced = true;
+    // The completed frame's count (kFramesInFlight behind): no readback for it.
+    const std::uint32_t n = i.completed.path.samples;
     if (n < i.path_samples) i.path_error = -1.0; // started over
     i.path_samples = n;
     if (n >= 4 && (n & (n - 1)) == 0 && n != i.path_error_samples) {
-        i.path_error = i.renderer->path_trace_error().relative_error;
+        i.path_error = gpu::path_trace_error(*i.renderer).relative_error;
         i.path_error_samples = n;
     }
+}
+
+bool GpuViewport::pathTraced() const {
+    return impl_->path_traced;
 }
 
 std::uint32_t GpuViewport::pathSamples() const {

@@ -129,11 +129,12 @@ public:
     // Why the last present() drew nothing: what the ray tracer refused (a view
     // without a ray formula, a posed frame...); empty when it drew.
     QString lastRefusal() const;
-    // The path-traced lit view (ray-traced mode): samples per pixel accumulated so far
-    // (0: the last frame was not path traced) and the estimated relative error, measured
-    // at 4, 8, 16, ... samples (-1 before the first measurement). Accumulation stops at
+    // The path-traced lit view (ray-traced mode): samples per pixel accumulated as of
+    // the latest completed frame (kFramesInFlight behind) and the estimated relative error,
+    // measured at 4, 8, 16, ... samples (-1 before the first measurement). Accumulation stops at
     // kPathSamples; every change starts it over.
     static constexpr std::uint32_t kPathSamples = 1024;
+    bool pathTraced() const; // the last present() drew the path tracer
     std::uint32_t pathSamples() const;
     double pathError() const;
     // The difference numbers of the latest completed comparison frame.

@@ -202,6 +202,7 @@ void RenderThread::draw(GpuViewport& gpu, const Request& request, bool still) {
     report.ms = ms_since(start);
     report.refused = gpu.lastRefusal();
     report.difference = gpu.lastDifference();
+    report.path_traced = gpu.pathTraced();
     report.path_samples = gpu.pathSamples();
     report.path_error = gpu.pathError();
     report.gpu_ms = gpu.lastGpuMs();
@@ -221,7 +222,7 @@ void RenderThread::draw(GpuViewport& gpu, const Request& request, bool still) {
         if (report.shown) scale_ = next_resolution_scale(scale, cost, target_ms_);
         last_ = request;
         // A path-traced still frame goes on accumulating until kPathSamples.
-        accumulating_ = report.shown && scale >= 1.0f && report.path_samples > 0 &&
+        accumulating_ = report.shown && scale >= 1.0f && report.path_traced &&
                         report.path_samples < GpuViewport::kPathSamples;
         refine_ = report.shown && (scale < 1.0f || accumulating_);
     }

@@ -37,8 +37,9 @@ struct FrameReport {
     bool cached_shadows = false;
     QString refused; // not drawn: what the ray tracer refused (GpuViewport::lastRefusal)
     DifferenceNumbers difference; // comparison frames: the latest completed difference
-    // Path traced (ray-traced mode, lit view): samples per pixel so far (0: not path
-    // traced) and the estimated relative error (-1: not measured yet).
+    // Path traced (ray-traced mode, lit view): samples per pixel of the latest completed
+    // frame and the estimated relative error (-1: not measured yet).
+    bool path_traced = false;
     std::uint32_t path_samples = 0;
     double path_error = -1.0;
 };

@@ -175,7 +175,7 @@ protected:
         (*hidden)[index] = false;
         s.hidden_nodes = hidden;
         rt().render(s);
-        return rt().path_trace_image();
+        return gpu::read_path_trace(rt());
     }
 
     // Mean red radiance of each sphere in a raster frame (8-bit sRGB at -1 EV).
@@ -261,10 +261,10 @@ TEST_F(PathTraceTest, DeterministicProgressiveAndErrorFallsAsOneOverRootSpp) {
     s.path.samples = 16;
     std::vector<std::uint8_t> a, b;
     rt().render(s, &a);
-    const gpu::PathTraceImage once = rt().path_trace_image();
+    const gpu::PathTraceImage once = gpu::read_path_trace(rt());
     rt().render(s, &b);
     EXPECT_EQ(a, b);
-    EXPECT_EQ(once.sums, rt().path_trace_image().sums);
+    EXPECT_EQ(once.sums, gpu::read_path_trace(rt()).sums);
     s.path.seed = 7;
     rt().render(s, &b);
     EXPECT_NE(a, b);
@@ -274,20 +274,20 @@ TEST_F(PathTraceTest, DeterministicProgressiveAndErrorFallsAsOneOverRootSpp) {
     s.path.samples = 4;
     gpu::FrameStats f = rt().render(s);
     EXPECT_TRUE(f.path.restarted);
-    const gpu::PathTraceError e4 = rt().path_trace_error();
+    const gpu::PathTraceError e4 = gpu::path_trace_error(rt());
     s.path.restart = false;
     s.path.samples = 12;
     f = rt().render(s);
     EXPECT_FALSE(f.path.restarted);
     EXPECT_EQ(f.path.samples, 16u);
     EXPECT_EQ(f.path.added, 12u);
-    const gpu::PathTraceImage progressive = rt().path_trace_image();
+    const gpu::PathTraceImage progressive = gpu::read_path_trace(rt());
     EXPECT_EQ(progressive.sums, once.sums);
     EXPECT_EQ(progressive.moments, once.moments);
     const gpu::PathTraceError e16 = estimate_error(progressive);
     s.path.samples = 48;
     rt().render(s);
-    const gpu::PathTraceError e64 = rt().path_trace_error();
+    const gpu::PathTraceError e64 = gpu::path_trace_error(rt());
     std::printf("estimated error (relative): 4 spp %.5f, 16 spp %.5f, 64 spp %.5f\n",
                 e4.relative_error, e16.relative_error, e64.relative_error);
     EXPECT_NEAR(e4.mean_standard_error / e16.mean_standard_error, 2.0, 0.4);

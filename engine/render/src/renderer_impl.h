@@ -77,7 +77,6 @@ public:
     void set_environment(const EnvironmentImage* image);
     // The path tracer's accumulation read back (renderer_path.cpp).
     PathTraceImage path_trace_image();
-    std::uint32_t path_samples() const { return path_samples_; }
 
 private:
     // A frame, pass by pass.

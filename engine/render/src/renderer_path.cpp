@@ -105,16 +105,12 @@ PathTraceImage Renderer::Impl::path_trace_image() {
     return image;
 }
 
-PathTraceImage Renderer::path_trace_image() {
-    return impl_->path_trace_image();
+PathTraceImage read_path_trace(Renderer& renderer) {
+    return renderer.impl_->path_trace_image();
 }
 
-PathTraceError Renderer::path_trace_error() {
-    return estimate_error(impl_->path_trace_image());
-}
-
-std::uint32_t Renderer::path_trace_samples() const {
-    return impl_->path_samples();
+PathTraceError path_trace_error(Renderer& renderer) {
+    return estimate_error(read_path_trace(renderer));
 }
 
 } // namespace sherpa::gpu

@@ -106,6 +106,7 @@ SideImage Renderer::Impl::record_rt_side(VkCommandBuffer cmd, FrameSlot& slot,
 // A ray-traced side has two timestamps, no culling, draws or pipeline statistics.
 void Renderer::Impl::begin_rt_side(VkCommandBuffer cmd, FrameSlot& slot) {
     slot.ray_traced = true;
+    slot.path_traced = false;   // record_rt_side says otherwise
     slot.history_pushed = true; // no culling to report
     slot.has_results = false;
     slot.draw_calls = 0;
@@ -121,6 +122,7 @@ void Renderer::Impl::end_rt_side(VkCommandBuffer cmd, FrameSlot& slot) {
 
 FrameStats Renderer::Impl::read_rt_stats(FrameSlot& slot) {
     FrameStats s;
+    if (slot.path_traced) s.path = last_path_;
     if (!slot.has_results || !context.info().timestamps) return s;
     std::uint64_t ts[2] = {};
     vk_check(vkGetQueryPoolResults(context.device(), slot.timestamps.get(), 0, 2, sizeof(ts), ts,
@@ -129,7 +131,6 @@ FrameStats Renderer::Impl::read_rt_stats(FrameSlot& slot) {
              "vkGetQueryPoolResults(rt timestamps)");
     s.gpu_ms = double(ts[1] - ts[0]) * context.info().timestamp_period_ns * 1e-6;
     s.passes.push_back({slot.path_traced ? "path_trace" : "rays", s.gpu_ms});
-    if (slot.path_traced) s.path = last_path_;
     return s;
 }
 

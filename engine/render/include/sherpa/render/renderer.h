@@ -130,13 +130,6 @@ public:
     // image back as tightly packed sRGB-encoded RGBA8 rows, top row first.
     FrameStats render(const RenderSettings& settings, std::vector<std::uint8_t>* rgba = nullptr);
 
-    // The path tracer's accumulation (its per-pixel sums, read back; empty before the
-    // first path-traced frame) and its estimated error (path_trace.h).
-    PathTraceImage path_trace_image();
-    PathTraceError path_trace_error();
-    // Samples per pixel in the accumulation (0: none yet), without reading anything back.
-    std::uint32_t path_trace_samples() const;
-
     // Culling statistics of the last frames whose results were read (render(),
     // presented frames), oldest first: what the editor's culling dock charts.
     const RingHistory<CullFrame>& cull_history() const;
@@ -151,10 +144,17 @@ public:
 private:
     friend class PresentedFrame; // records swapchain frames through Impl
     friend class ComparisonFrame;
+    friend PathTraceImage read_path_trace(Renderer&);
     friend ComparisonStats render_comparison(Renderer&, const RenderSettings&, Renderer&,
                                              const RenderSettings&, const ComparisonSettings&,
                                              std::vector<std::uint8_t>*);
     std::unique_ptr<Impl> impl_;
 };
+
+// The path tracer's accumulation (its per-pixel sums, read back after the frames in
+// flight; empty before the first path-traced frame), and its estimated error
+// (path_trace.h). FrameStats::path counts the samples without a readback.
+PathTraceImage read_path_trace(Renderer& renderer);
+PathTraceError path_trace_error(Renderer& renderer);
 
 } // namespace sherpa::gpu

@@ -54,6 +54,9 @@ constexpr Command kCommands[] = {
      "{camera-help}"
      "  --view NAME        {views}\n"
      "  --overlay NAME     {overlays}\n"
+     "  --renderer rt --view lit  path traced (docs/path_tracer.md): --spp N samples per\n"
+     "                     pixel (default 64), --max-bounces N (default 8), --seed N; the\n"
+     "                     estimated error is printed\n"
      "{texture-help}{compare-help}"},
     {"rt", run_rt,
      "sherpa-cli rt SCENE [--json] [--validation] [--scratch-budget BYTES] [--no-compact] [--rt "

@@ -61,6 +61,8 @@ int run_render(Args args) {
     CompareCliOptions compare_options;
     std::uint32_t shadow_resolution = kDefaultShadowResolution;
     gpu::EnvironmentChoice environment; // the room unless --environment says otherwise
+    settings.path.samples = 64;         // the path tracer's samples per pixel unless --spp says
+    settings.path.restart = true;       // each of --frames is an image of its own
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string_view a = args[i];
         std::string option_error;
@@ -202,7 +204,7 @@ int run_render(Args args) {
     if (ray_traced && !ray_tracing) return usage_error("--renderer rt needs --rt on");
     if (ray_traced && !gpu::ray_traced_view(settings.view))
         return usage_error("--renderer rt does not draw view '" +
-                           std::string(gpu::to_string(settings.view)) + "' yet");
+                           std::string(gpu::to_string(settings.view)) + "'");
     if (ray_traced && settings.overlays != 0) return usage_error("--renderer rt draws no overlays");
     if (!ray_traced && !gpu::raster_view(settings.view))
         return usage_error("view '" + std::string(gpu::to_string(settings.view)) +
@@ -284,6 +286,19 @@ int run_render(Args args) {
         if (!tex::write_png(std::string(out_path), settings.width, settings.height, rgba, error)) {
             std::fprintf(stderr, "error: %s\n", error.c_str());
             return kExitLoadError;
+        }
+        if (ray_traced && settings.view == gpu::DebugView::Lit) {
+            const gpu::PathTraceError e = gpu::path_trace_error(renderer);
+            const double ms = run.frames.back().gpu_ms;
+            std::printf("path: %u spp in %.1f ms GPU (%.2f ms per sample), ", e.samples, ms,
+                        e.samples ? ms / e.samples : 0.0);
+            if (e.samples < 2)
+                std::printf(
+                    "estimated error: none (one sample has no variance; --spp 2 or more)\n");
+            else
+                std::printf("estimated error: mean standard error %.5f of mean luminance %.5f "
+                            "(%.3f%%)\n",
+                            e.mean_standard_error, e.mean_luminance, 100.0 * e.relative_error);
         }
         if (settings.view == gpu::DebugView::ShadowError) {
             // The view's pixel classes counted back (their colours are the engine's).

@@ -9,7 +9,8 @@ OptionMatch parse_shadow_option(Args args, std::size_t& i, gpu::RenderSettings& 
                                 std::uint32_t& resolution, std::string& error) {
     const std::string_view a = args[i];
     const bool integer = a == "--cascades" || a == "--shadow-resolution" || a == "--pcf-taps" ||
-                         a == "--shadow-rays" || a == "--ao-rays";
+                         a == "--shadow-rays" || a == "--ao-rays" || a == "--spp" ||
+                         a == "--max-bounces" || a == "--seed";
     const bool real = a == "--sun-angular-radius" || a == "--ao-radius";
     if (!integer && !real) return OptionMatch::NotMine;
     if (i + 1 >= args.size()) {
@@ -51,6 +52,20 @@ OptionMatch parse_shadow_option(Args args, std::size_t& i, gpu::RenderSettings& 
             return OptionMatch::Bad;
         }
         (a == "--shadow-rays" ? settings.shadow_rays : settings.ao_rays) = n;
+    } else if (a == "--spp") {
+        if (n < 1 || n > 1u << 20) {
+            error = "--spp needs 1 to 1048576 samples per pixel";
+            return OptionMatch::Bad;
+        }
+        settings.path.samples = n;
+    } else if (a == "--max-bounces") {
+        if (n > 64) {
+            error = "--max-bounces needs 0 to 64";
+            return OptionMatch::Bad;
+        }
+        settings.path.max_bounces = n;
+    } else if (a == "--seed") {
+        settings.path.seed = n;
     } else if (a == "--sun-angular-radius") {
         if (x > 0.5f) {
             error = "--sun-angular-radius needs radians from 0 to 0.5";

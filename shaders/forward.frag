@@ -12,6 +12,7 @@
 #include "ibl.glsl"
 #include "material_ext.glsl"
 #include "tonemap.glsl"
+#include "punctual.glsl"
 
 layout(location = 0) in vec3 in_world_pos;
 layout(location = 1) in vec3 in_normal;
@@ -41,25 +42,9 @@ const bool READ_TANGENT = (STREAMS & HAS_TANGENT) != 0u || VIEW == VIEW_TANGENT 
                           VIEW == VIEW_BITANGENT || VIEW == VIEW_TANGENT_W;
 
 vec3 punctual_light(Surface s, GPULight light, vec3 pos) {
-    uint type = uint(light.direction_type.w);
-    vec3 radiance = light.color_intensity.rgb * light.color_intensity.w;
     vec3 l;
-    if (type == 0u) {
-        l = -normalize(light.direction_type.xyz);
-    } else {
-        vec3 d = light.position_range.xyz - pos;
-        float dist2 = max(dot(d, d), 1e-8);
-        l = d * inversesqrt(dist2);
-        float range = light.position_range.w;
-        // KHR_lights_punctual recommended range falloff.
-        float falloff = range > 0.0 ? clamp(1.0 - pow(dist2 / (range * range), 2.0), 0.0, 1.0) : 1.0;
-        radiance *= falloff / dist2;
-        if (type == 2u) {
-            float cd = dot(normalize(light.direction_type.xyz), -l);
-            float t = clamp((cd - light.cone.x) / max(light.cone.y - light.cone.x, 1e-4), 0.0, 1.0);
-            radiance *= t * t;
-        }
-    }
+    float dist;
+    vec3 radiance = punctual_incident(light, pos, l, dist);
     return brdf_times_cos(s, l) * radiance;
 }
 

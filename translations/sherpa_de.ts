@@ -1232,6 +1232,14 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <translation>, Auflösung %1 %</translation>
     </message>
     <message>
+        <source>, path traced %1 spp</source>
+        <translation>, %1 spp pfadverfolgt</translation>
+    </message>
+    <message>
+        <source>, estimated error %1%</source>
+        <translation>, geschätzter Fehler %1 %</translation>
+    </message>
+    <message>
         <source>Ray tracing is off (--rt off): no acceleration structures.</source>
         <translation>Raytracing ist aus (--rt off): keine Beschleunigungsstrukturen.</translation>
     </message>

@@ -1232,6 +1232,14 @@ The current scene is kept.</translation>
         <translation>, resolution %1%</translation>
     </message>
     <message>
+        <source>, path traced %1 spp</source>
+        <translation>, path traced %1 spp</translation>
+    </message>
+    <message>
+        <source>, estimated error %1%</source>
+        <translation>, estimated error %1%</translation>
+    </message>
+    <message>
         <source>Ray tracing is off (--rt off): no acceleration structures.</source>
         <translation>Ray tracing is off (--rt off): no acceleration structures.</translation>
     </message>

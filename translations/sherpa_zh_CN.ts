@@ -1232,6 +1232,14 @@ The current scene is kept.</source>
         <translation>，分辨率 %1%</translation>
     </message>
     <message>
+        <source>, path traced %1 spp</source>
+        <translation>，路径追踪 %1 spp</translation>
+    </message>
+    <message>
+        <source>, estimated error %1%</source>
+        <translation>，估计误差 %1%</translation>
+    </message>
+    <message>
         <source>Ray tracing is off (--rt off): no acceleration structures.</source>
         <translation>光线追踪已关闭（--rt off）：没有加速结构。</translation>
     </message>

@@ -1,5 +1,5 @@
 #!/bin/sh
-# device.sh TARBALL OUT [rt|rtviews]: on the device machine, unpack pack.sh's bundle and run
+# device.sh TARBALL OUT [rt|rtviews|path]: on the device machine, unpack pack.sh's bundle and run
 # every asset through the renderer with the validation layer on (any message
 # fails), then the render benchmark at 1280x720. Results land in OUT. With `rt`:
 # `sherpa-cli rt --json --validation` (acceleration structures) of every asset and
@@ -27,6 +27,16 @@ for d in "$s"/gltf/*/; do
     n=$(basename "$d")
     [ -f "$d/glTF/$n.gltf" ] && scenes="$scenes $d/glTF/$n.gltf"
 done
+if [ "$mode" = path ]; then
+    # The path tracer (docs/path_tracer.md): DamagedHelmet lit at 1280x720, samples per
+    # second and the estimated error at growing sample counts, validation on.
+    for spp in 16 64 256 1024; do
+        "$s/run.sh" sherpa-cli render "$s/gltf/DamagedHelmet/glTF/DamagedHelmet.gltf" \
+            -o "$out/helmet_path_$spp.png" --renderer rt --view lit --width 1280 --height 720 \
+            --spp $spp --validation 2>&1 | tee "$out/helmet_path_$spp.log" | grep -v '^warning'
+    done
+    exit 0
+fi
 if [ "$mode" = rtviews ]; then
     sh "$(dirname "$0")/rt_views.sh" "$s" "$out"
     exit 0

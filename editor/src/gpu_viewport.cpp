@@ -219,8 +219,13 @@ gpu::RenderSettings render_settings(const ViewportFrame& frame, float scale, boo
         settings.highlight_vertex.reset();
         settings.highlight_outline.clear();
     }
-    if (frame.compare.mode == ViewportMode::RayTraced)
+    if (frame.compare.mode == ViewportMode::RayTraced) {
         settings.renderer = gpu::RendererKind::RayTraced;
+        // The lit view is path traced: one sample per frame, accumulated while
+        // nothing changes (the render thread keeps drawing until kPathSamples).
+        settings.path.samples = 1;
+        settings.path.max_samples = GpuViewport::kPathSamples;
+    }
     return settings;
 }
 
@@ -263,7 +268,42 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame, flo
     }
     const bool shown = impl_->presenter->present_frame(*presented);
     impl_->completed = presented->completed_stats(); // garbage: the presenter collects it
+    notePathSamples(settings);
     return shown;
+}
+
+// The accumulation after this frame (the renderer counts it when it records), and its
+// error read back at each power of two from 4 samples (the sums are read back: a cost
+// that halves in frequency as the image converges).
+void GpuViewport::notePathSamples(const gpu::RenderSettings& settings) {
+    Impl& i = *impl_;
+    if (settings.renderer != gpu::RendererKind::RayTraced || settings.view != gpu::DebugView::Lit) {
+        i.path_traced = false;
+        i.path_samples = i.path_error_samples = 0;
+        i.path_error = -1.0;
+        return;
+    }
+    i.path_traced = true;
+    // The completed frame's count (kFramesInFlight behind): no readback for it.
+    const std::uint32_t n = i.completed.path.samples;
+    if (n < i.path_samples) i.path_error = -1.0; // started over
+    i.path_samples = n;
+    if (n >= 4 && (n & (n - 1)) == 0 && n != i.path_error_samples) {
+        i.path_error = gpu::path_trace_error(*i.renderer).relative_error;
+        i.path_error_samples = n;
+    }
+}
+
+bool GpuViewport::pathTraced() const {
+    return impl_->path_traced;
+}
+
+std::uint32_t GpuViewport::pathSamples() const {
+    return impl_->path_samples;
+}
+
+double GpuViewport::pathError() const {
+    return impl_->path_error;
 }
 
 QString GpuViewport::lastRefusal() const {

@@ -129,6 +129,14 @@ public:
     // Why the last present() drew nothing: what the ray tracer refused (a view
     // without a ray formula, a posed frame...); empty when it drew.
     QString lastRefusal() const;
+    // The path-traced lit view (ray-traced mode): samples per pixel accumulated as of
+    // the latest completed frame (kFramesInFlight behind) and the estimated relative error,
+    // measured at 4, 8, 16, ... samples (-1 before the first measurement). Accumulation stops at
+    // kPathSamples; every change starts it over.
+    static constexpr std::uint32_t kPathSamples = 1024;
+    bool pathTraced() const; // the last present() drew the path tracer
+    std::uint32_t pathSamples() const;
+    double pathError() const;
     // The difference numbers of the latest completed comparison frame.
     DifferenceNumbers lastDifference() const;
     // Waits until the queue is idle (the presented frame is on screen).
@@ -149,6 +157,11 @@ public:
     // then each cascade); false before any culled frame. `cached_shadows`: the cascades were
     // reused, not drawn.
     bool lastCullPasses(std::vector<CullStats>& passes, bool& cached_shadows) const;
+
+private:
+    void notePathSamples(const gpu::RenderSettings& settings);
+
+public:
     // Runs the renderer's GPU culling shader once for `frustum` over every instance
     // of the scene and compares its visible set with `cpu_visible` (per scene
     // instance). False without a scene.

@@ -35,6 +35,11 @@ struct GpuViewport::Impl {
     } b;
     DifferenceNumbers difference; // of the latest completed comparison frame
     QString refusal;              // why the last frame was not drawn (the ray tracer refused)
+    // The path tracer's accumulation as of the last present(): samples per pixel, the
+    // estimated relative error when last measured (-1: not yet) and at which count.
+    bool path_traced = false; // the last present() drew the path tracer
+    std::uint32_t path_samples = 0, path_error_samples = 0;
+    double path_error = -1.0;
 };
 
 // Loads `session` into `renderer` (side A's upload and side B's): every stream with

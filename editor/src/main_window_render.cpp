@@ -215,6 +215,11 @@ void MainWindow::onFrameDone(const FrameReport& report) {
                              .arg(frame_times_.meanMs(), 0, 'f', 1);
     if (report.gpu_ms >= 0.0) text += tr(" (GPU %1 ms)").arg(report.gpu_ms, 0, 'f', 1);
     text += tr(", resolution %1%").arg(qRound(report.scale * 100.0f));
+    if (report.path_samples > 0) {
+        text += tr(", path traced %1 spp").arg(report.path_samples);
+        if (report.path_error >= 0.0)
+            text += tr(", estimated error %1%").arg(100.0 * report.path_error, 0, 'f', 2);
+    }
     frame_label_->setText(text);
     frame_label_->setToolTip(
         tr("Mean of the last %1 frames, not counting the renderer's first (pipeline "

@@ -133,8 +133,11 @@ void RenderThread::run() {
     while (true) {
         const auto woken = [this] { return stop_ || !tasks_.empty() || pending_.has_value(); };
         bool rested = false;
+        // Accumulating path-traced samples: the next frame right away unless a request
+        // comes (the camera moves) first.
         if (refine_ && !woken())
-            rested = !wake_.wait_for(lock, std::chrono::milliseconds(kRestMs), woken);
+            rested = !wake_.wait_for(lock, std::chrono::milliseconds(accumulating_ ? 0 : kRestMs),
+                                     woken);
         else
             wake_.wait(lock, woken);
         if (stop_) break;
@@ -200,6 +203,9 @@ void RenderThread::draw(GpuViewport& gpu, const Request& request, bool still) {
     report.ms = ms_since(start);
     report.refused = gpu.lastRefusal();
     report.difference = gpu.lastDifference();
+    report.path_traced = gpu.pathTraced();
+    report.path_samples = gpu.pathSamples();
+    report.path_error = gpu.pathError();
     report.gpu_ms = gpu.lastGpuMs();
     report.cull_passes = gpu.lastCullPasses(report.passes, report.cached_shadows);
     {
@@ -216,7 +222,10 @@ void RenderThread::draw(GpuViewport& gpu, const Request& request, bool still) {
         // what full size costs.
         if (report.shown) scale_ = next_resolution_scale(scale, cost, target_ms_);
         last_ = request;
-        refine_ = report.shown && scale < 1.0f;
+        // A path-traced still frame goes on accumulating until kPathSamples.
+        accumulating_ = report.shown && scale >= 1.0f && report.path_traced &&
+                        report.path_samples < GpuViewport::kPathSamples;
+        refine_ = report.shown && (scale < 1.0f || accumulating_);
     }
     Q_EMIT frameDone(report);
 }

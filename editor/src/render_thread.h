@@ -37,6 +37,11 @@ struct FrameReport {
     bool cached_shadows = false;
     QString refused; // not drawn: what the ray tracer refused (GpuViewport::lastRefusal)
     DifferenceNumbers difference; // comparison frames: the latest completed difference
+    // Path traced (ray-traced mode, lit view): samples per pixel of the latest completed
+    // frame and the estimated relative error (-1: not measured yet).
+    bool path_traced = false;
+    std::uint32_t path_samples = 0;
+    double path_error = -1.0;
 };
 
 class RenderThread : public QObject {
@@ -108,6 +113,7 @@ private:
     std::optional<Request> pending_;
     std::optional<Request> last_; // the last frame drawn (for the refinement at rest)
     bool refine_ = false;         // last_ was drawn reduced: draw it full at rest
+    bool accumulating_ = false;   // last_ is path traced and wants more samples
     bool stop_ = false;
     bool failed_ = false; // no device: tasks are dropped
     bool scaling_ = true;

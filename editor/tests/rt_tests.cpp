@@ -69,6 +69,7 @@ private Q_SLOTS:
     void rtOffBuildsNothing();
     void rayTracedModeDrawsRtFrames();
     void refusedViewGoesBackToRaster();
+    void litIsPathTracedAndAccumulatesAtRest();
     void splitShowsALeftAndBRight();
     void draggingMovesTheDivider();
     void differenceOfASceneWithItselfIsZero();
@@ -220,17 +221,33 @@ void RtTests::rayTracedModeDrawsRtFrames() {
     checkValidation();
 }
 
+// Ray-traced mode draws the lit view path traced: at rest the render thread keeps
+// adding samples (no new request needed), the count and then the estimated error
+// reach the report and the frame label, and the error falls as samples grow.
+void RtTests::litIsPathTracedAndAccumulatesAtRest() {
+    MainWindow& w = *window_;
+    QVERIFY(test::load(w, QStringLiteral("builtin:default")));
+    QVERIFY(w.setDebugView(QStringLiteral("lit"), false));
+    w.compareControls().setMode(ViewportMode::RayTraced);
+    test::viewport_shot(w);
+    QCOMPARE(w.compareControls().state().mode, ViewportMode::RayTraced); // not refused
+    QTRY_VERIFY2_WITH_TIMEOUT(w.lastReport().path_traced && w.lastReport().path_samples >= 6,
+                              qPrintable(QString::number(w.lastReport().path_samples)), 90000);
+    QTRY_VERIFY_WITH_TIMEOUT(w.lastReport().path_error >= 0.0, 60000);
+    checkValidation();
+}
+
 void RtTests::refusedViewGoesBackToRaster() {
     MainWindow& w = *window_;
     QVERIFY(test::load(w, QStringLiteral("builtin:default")));
-    QVERIFY(w.setDebugView(QStringLiteral("lit"), false)); // lights: no ray formula
+    QVERIFY(w.setDebugView(QStringLiteral("uv0-checker"), false)); // derivatives: no ray formula
     const int errors = w.logDock()->errorCount();
     w.compareControls().setMode(ViewportMode::RayTraced);
     test::viewport_shot(w);
     QTRY_COMPARE_WITH_TIMEOUT(w.compareControls().state().mode, ViewportMode::Raster, 10000);
     QVERIFY2(w.logDock()->text().contains(QStringLiteral("The ray tracer cannot draw")),
              qPrintable(w.logDock()->text()));
-    QVERIFY(w.logDock()->text().contains(QStringLiteral("lit")));
+    QVERIFY(w.logDock()->text().contains(QStringLiteral("uv0-checker")));
     QCOMPARE(w.logDock()->errorCount(), errors); // a warning, and rendering goes on
     const std::uint64_t before = w.viewport()->framesRendered();
     w.viewport()->scheduleFrame();

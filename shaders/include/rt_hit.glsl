@@ -28,6 +28,24 @@ layout(set = 1, binding = 3, std430) readonly buffer MaterialExtraBlock {
     GPUMaterialExtra material_extras[];
 };
 
+#ifdef SHERPA_PATH_TRACE
+// The path tracer's (pt.*; C++ twin GPUPathPushConstants): the same offsets for the
+// fields the hit interpolation and texture sampling read.
+layout(push_constant, scalar) uniform PathPush {
+    mat4 inv_view_proj;       // 0: NDC -> world, reverse Z
+    GeometryInfos geometries; // 64
+    uint first_sample;        // 72: index of this launch's first sample in each pixel
+    float texture_lod;        // 76: mip level every texture is sampled at (< 0: 0)
+    vec4 clear_color;         // 80: linear, the background where it is a colour
+    uint samples;             // 96: samples per pixel this launch
+    uint max_bounces;         // 100: surface interactions after the camera ray's hit
+    uint seed;                // 104
+    uint reserved;            // 108
+    uvec2 env_size;           // 112: columns, rows of the environment distribution (0: none)
+    float sun_cos_radius;     // 120: cosine of the sun's angular radius
+    float max_radiance;       // 124: larger sample radiance is counted non-finite (0)
+} pc;
+#else
 layout(push_constant, scalar) uniform RayPush {
     mat4 inv_view_proj;       // 0: NDC -> world, reverse Z
     GeometryInfos geometries; // 64
@@ -40,6 +58,7 @@ layout(push_constant, scalar) uniform RayPush {
     float ao_radius;          // 120: world units
     uint reserved;            // 124
 } pc;
+#endif
 
 // What a ray is for: any-hit culls by it (rt.rahit), raygen traces each kind.
 const uint RAY_PRIMARY = 0u;

@@ -186,8 +186,8 @@ TEST(CliRt, RenderRendererRtDrawsSurfaceViewsAndRefusesTheRest) {
     }
     EXPECT_GE(close, images[0].size() / 4 * 98 / 100); // silhouettes included here
     const std::string out = " -o " + dir + "/refused.png";
-    for (const std::string bad : {" --view lit", " --view uv0-checker", " --overlay aabb",
-                                  " --rt off", " --texture-lod -1"}) {
+    for (const std::string bad : {" --view joint-influence", " --view uv0-checker",
+                                  " --overlay aabb", " --rt off", " --texture-lod -1"}) {
         const CliRun r =
             run_cli("render " + helmet + out + " --renderer rt --width 8 --height 8" + bad, "2>&1");
         EXPECT_EQ(r.exit_code, 2) << bad << "\n" << r.out;

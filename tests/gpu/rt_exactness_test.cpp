@@ -84,9 +84,9 @@ protected:
         int views = 0;
         for (const gpu::DebugViewInfo& v : gpu::kDebugViews) {
             // The lighting views (shadow, ao, shadow-error) trace further rays: compared
-            // in rt_shadow_test.cpp.
+            // in rt_shadow_test.cpp; lit is path traced (path_trace_test.cpp).
             if (!gpu::ray_traced_view(v.id) || !gpu::raster_view(v.id) ||
-                v.id == gpu::DebugView::Shadow)
+                v.id == gpu::DebugView::Shadow || v.id == gpu::DebugView::Lit)
                 continue;
             s.view = v.id;
             std::vector<std::uint8_t> raster, rays;

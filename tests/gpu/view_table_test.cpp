@@ -74,8 +74,9 @@ TEST(DebugViewTable, ForwardShaderHasACaseForEveryViewButLit) {
         // lit: `default:`; ao and shadow-error: rays only.
         if (v.id != gpu::DebugView::Lit && gpu::raster_view(v.id))
             expected.insert(glsl_name(v.name));
-        // The lighting views are traced by rt.rgen, not looked up in surface_views.glsl.
-        const bool lighting = v.id == gpu::DebugView::Shadow ||
+        // The lighting views are traced by rt.rgen (lit: path traced by pt.rgen), not
+        // looked up in surface_views.glsl.
+        const bool lighting = v.id == gpu::DebugView::Lit || v.id == gpu::DebugView::Shadow ||
                               v.id == gpu::DebugView::AmbientOcclusion ||
                               v.id == gpu::DebugView::ShadowError;
         if (gpu::ray_traced_view(v.id) && !lighting) ray_traced.insert(glsl_name(v.name));

@@ -275,6 +275,12 @@ EnvironmentMap::~EnvironmentMap() {
     resources_.images().destroy(sampler_);
 }
 
+VkDescriptorImageInfo EnvironmentMap::specular_descriptor() const {
+    const ImagePool& images = resources_.images();
+    return {images.get(sampler_), images.get(specular_).view.get(),
+            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+}
+
 void EnvironmentMap::write_descriptors(VkDevice device, VkDescriptorSet set) const {
     const ImagePool& images = resources_.images();
     const VkSampler s = images.get(sampler_);

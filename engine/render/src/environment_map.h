@@ -31,6 +31,9 @@ public:
     // Bindings 4 (specular), 5 (irradiance), 6 (LUT), 7 (sheen) of a frame set.
     void write_descriptors(VkDevice device, VkDescriptorSet set) const;
     const EnvironmentStats& stats() const { return stats_; }
+    // The specular cube with its sampler (level 0 is the sharp environment): the path
+    // tracer's radiance.
+    VkDescriptorImageInfo specular_descriptor() const;
 
 private:
     ResourceManager& resources_;

@@ -84,6 +84,7 @@ struct FrameSlot {
     bool history_pushed = false;
     // The frame was ray traced (record_side): two timestamps, no culling or statistics.
     bool ray_traced = false;
+    bool path_traced = false; // a ray-traced side of the path tracer (its PathTraceFrame)
     // Scenes that move (PosePass): this frame's instances, joint matrices, morph
     // weights and joint highlights, host-visible; and each GPU instance's world bounds
     // in the frame's pose, which culling, sorting and overlays use instead of the

@@ -47,20 +47,12 @@ MainSun main_sun(const Scene& lighting, const RenderSettings& settings) {
     return sun;
 }
 
-void Renderer::Impl::write_frame_data(FrameContext& frame) {
-    FrameSlot& slot = frame.slot;
-    const RenderSettings& settings = frame.settings;
+// Lights, sun, ambient, environment and display transform of a lit frame: what the
+// raster's frame constants and the path tracer's share (params.y: the light count).
+GPUFrameData Renderer::Impl::lighting_constants(const RenderSettings& settings) const {
     const Scene& info = lighting_;
-    slot.camera = resolve_camera(settings.camera, info, frame.aspect());
     GPUFrameData f{};
-    f.view = slot.camera.view;
-    f.proj = slot.camera.proj;
-    f.view_proj = slot.camera.proj * slot.camera.view;
-    f.camera_position = glm::vec4(slot.camera.position, 1.0f);
-
     const MainSun sun = main_sun(info, settings);
-    const bool have_sun = sun.present;
-    const glm::vec3 sun_dir = sun.direction;
     f.sun_radiance = glm::vec4(sun.radiance, 0.0f);
     std::uint32_t count = 0;
     for (std::size_t i = 0; i < info.placed_lights.size(); ++i) {
@@ -77,7 +69,8 @@ void Renderer::Impl::write_frame_data(FrameContext& frame) {
         g.color_intensity = glm::vec4(l.color, l.intensity);
         g.cone = glm::vec4(std::cos(l.outer_cone), std::cos(l.inner_cone), 0.0f, 0.0f);
     }
-    f.sun_direction = glm::vec4(sun_dir, 0.0f);
+    f.params.y = count;
+    f.sun_direction = glm::vec4(sun.direction, 0.0f);
     f.ambient = glm::vec4(glm::vec3(settings.ambient), 0.0f);
     // Environment and display transform (ibl.glsl, tonemap.glsl, background.frag).
     if (environment) {
@@ -93,6 +86,23 @@ void Renderer::Impl::write_frame_data(FrameContext& frame) {
             : 0.0f;
     f.display = glm::vec4(std::exp2(settings.exposure), float(settings.tone_map),
                           settings.energy_compensation ? 1.0f : 0.0f, background_level);
+    return f;
+}
+
+void Renderer::Impl::write_frame_data(FrameContext& frame) {
+    FrameSlot& slot = frame.slot;
+    const RenderSettings& settings = frame.settings;
+    const Scene& info = lighting_;
+    slot.camera = resolve_camera(settings.camera, info, frame.aspect());
+    GPUFrameData f = lighting_constants(settings);
+    const std::uint32_t count = f.params.y;
+    f.view = slot.camera.view;
+    f.proj = slot.camera.proj;
+    f.view_proj = slot.camera.proj * slot.camera.view;
+    f.camera_position = glm::vec4(slot.camera.position, 1.0f);
+    const MainSun sun = main_sun(info, settings);
+    const bool have_sun = sun.present;
+    const glm::vec3 sun_dir = sun.direction;
 
     std::uint32_t cascades = 0;
     frame.cascades = 0;

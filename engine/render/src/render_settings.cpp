@@ -50,6 +50,7 @@ bool ray_traced_view(DebugView v) {
     case DebugView::Shadow:
     case DebugView::AmbientOcclusion:
     case DebugView::ShadowError:
+    case DebugView::Lit: // path traced (shaders/pt.rgen)
         return true;
     default:
         return false;

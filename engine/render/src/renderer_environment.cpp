@@ -9,6 +9,11 @@ void Renderer::Impl::set_environment(const EnvironmentImage* image) {
     for (auto& slot : slots_) wait_slot(*slot);
     environment.reset();
     if (image) environment = std::make_unique<EnvironmentMap>(context, *resources, *image);
+    // The path tracer's sampling distribution, made while the image is at hand.
+    environment_distribution_.reset();
+    if (image && options.ray_tracing)
+        environment_distribution_ =
+            std::make_unique<EnvironmentDistribution>(environment_distribution(*image));
     ++environment_generation_;
     resources->collect_garbage();
 }

@@ -4,6 +4,7 @@
 #include "comparison_pass.h"
 #include "environment_map.h"
 #include "passes.h"
+#include "path_trace_pass.h"
 #include "rt_view_pass.h"
 
 #include <sherpa/gpu/bindless.h>
@@ -74,6 +75,8 @@ public:
     CullingPass culling;
     std::unique_ptr<EnvironmentMap> environment; // null: none (set_environment)
     void set_environment(const EnvironmentImage* image);
+    // The path tracer's accumulation read back (renderer_path.cpp).
+    PathTraceImage path_trace_image();
 
 private:
     // A frame, pass by pass.
@@ -86,6 +89,7 @@ private:
     // Camera, lights, cascades and view into the slot's GPUFrameData; sets
     // f.cascades to the cascades that must be drawn this frame (frame_data.cpp).
     void write_frame_data(FrameContext& f);
+    GPUFrameData lighting_constants(const RenderSettings& settings) const;
     Aabb shadow_bounds(const FrameContext& f) const;
     void create_frame_sets();
     void bind_frame_set(FrameSlot& slot);
@@ -111,6 +115,10 @@ private:
     // The ray tracer's frame of `settings` (the TLAS must exist).
     RayTracedFrame rt_frame(const RenderSettings& settings, const FrameSlot& data_slot) const;
     SideImage record_rt_side(VkCommandBuffer cmd, FrameSlot& slot, const RenderSettings& settings);
+    // The path tracer's samples of `settings` (view lit) into `cmd`, its constants into
+    // `slot` (no frame in flight): continues the accumulation or starts it over.
+    PathTraceFrame record_path(VkCommandBuffer cmd, FrameSlot& slot, const RenderSettings& settings,
+                               bool readback);
 
     // RenderSettings::hidden_nodes into the culling (and, with `rt`, the TLAS: every
     // slot must be idle) when it differs from the mask applied last (renderer.cpp).
@@ -118,6 +126,12 @@ private:
     void load_visibility(const Scene& source); // a scene was loaded
 
     std::unique_ptr<RtViewPass> rt_views_;
+    std::unique_ptr<PathTracePass> path_;
+    std::unique_ptr<EnvironmentDistribution> environment_distribution_;
+    std::uint64_t path_environment_ = ~0ull; // environment generation path_ samples
+    std::uint64_t path_key_ = 0;             // what the accumulation is of
+    std::uint32_t path_samples_ = 0;
+    PathTraceFrame last_path_; // of the last presented or compared path-traced side
     // Visibility: the loaded scene's nodes (the subtree rule), the node of each GPU
     // instance, the mask last applied (as given) and its subtree-expanded form, and
     // whether the TLAS holds that form.

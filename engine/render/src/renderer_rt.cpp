@@ -1,7 +1,8 @@
 // The ray-traced frame (RenderSettings::renderer = RayTraced): primary rays through
 // the scene's acceleration structures, built on load, drawing the surface-data
-// debug views with the rasterizer's formulas (rt_view_pass.h). Views and overlays
-// the ray tracer has no formula for are refused, never drawn as something else.
+// debug views with the rasterizer's formulas (rt_view_pass.h), or the path-traced lit
+// view (path_trace_pass.h, renderer_path.cpp). Views and overlays the ray tracer has
+// no formula for are refused, never drawn as something else.
 #include "renderer_impl.h"
 
 #include <sherpa/gpu/gpu_error.h>
@@ -127,14 +128,17 @@ FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
         }
         return stats;
     }
-    const RayTracedFrame f = rt_frame(settings, *slots_[raster_slot]);
+    const bool path = settings.view == DebugView::Lit; // the path tracer (renderer_path.cpp)
     VkCommandBuffer cmd = slot.recorder.begin();
     const bool timed = context.info().timestamps;
     if (timed) {
         vkCmdResetQueryPool(cmd, slot.timestamps.get(), 0, 2);
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_NONE, slot.timestamps.get(), 0);
     }
-    rt_views_->record(cmd, f);
+    if (path)
+        stats.path = record_path(cmd, slot, settings, rgba != nullptr);
+    else
+        rt_views_->record(cmd, rt_frame(settings, *slots_[raster_slot]));
     if (timed)
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, slot.timestamps.get(), 1);
     slot.submission = slot.recorder.submit(*resources);
@@ -147,11 +151,12 @@ FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
                                        VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
                  "vkGetQueryPoolResults(rt timestamps)");
         stats.gpu_ms = double(ts[1] - ts[0]) * context.info().timestamp_period_ns * 1e-6;
-        stats.passes.push_back({"rays", stats.gpu_ms});
+        stats.passes.push_back({path ? "path_trace" : "rays", stats.gpu_ms});
         for (const PassTiming& p : stats.passes)
-            if (p.name != "rays") stats.gpu_ms += p.ms;
+            if (p.name != "rays" && p.name != "path_trace") stats.gpu_ms += p.ms;
     }
-    if (rgba) rt_views_->read(*rgba);
+    if (rgba && path) path_->read(*rgba);
+    if (rgba && !path) rt_views_->read(*rgba);
     resources->collect_garbage();
     return stats;
 }

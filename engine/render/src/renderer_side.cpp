@@ -92,6 +92,12 @@ SideImage Renderer::Impl::record_rt_side(VkCommandBuffer cmd, FrameSlot& slot,
     // when they hold another one.
     pose_acceleration(slot, settings);
     begin_rt_side(cmd, slot);
+    slot.path_traced = settings.view == DebugView::Lit;
+    if (slot.path_traced) { // path traced, accumulating while nothing changes
+        last_path_ = record_path(cmd, slot, settings, false);
+        end_rt_side(cmd, slot);
+        return {path_->view(), VK_IMAGE_LAYOUT_GENERAL};
+    }
     rt_views_->record(cmd, rt_frame(settings, slot), false);
     end_rt_side(cmd, slot);
     return {rt_views_->view(), VK_IMAGE_LAYOUT_GENERAL};
@@ -100,6 +106,7 @@ SideImage Renderer::Impl::record_rt_side(VkCommandBuffer cmd, FrameSlot& slot,
 // A ray-traced side has two timestamps, no culling, draws or pipeline statistics.
 void Renderer::Impl::begin_rt_side(VkCommandBuffer cmd, FrameSlot& slot) {
     slot.ray_traced = true;
+    slot.path_traced = false;   // record_rt_side says otherwise
     slot.history_pushed = true; // no culling to report
     slot.has_results = false;
     slot.draw_calls = 0;
@@ -115,6 +122,7 @@ void Renderer::Impl::end_rt_side(VkCommandBuffer cmd, FrameSlot& slot) {
 
 FrameStats Renderer::Impl::read_rt_stats(FrameSlot& slot) {
     FrameStats s;
+    if (slot.path_traced) s.path = last_path_;
     if (!slot.has_results || !context.info().timestamps) return s;
     std::uint64_t ts[2] = {};
     vk_check(vkGetQueryPoolResults(context.device(), slot.timestamps.get(), 0, 2, sizeof(ts), ts,
@@ -122,7 +130,7 @@ FrameStats Renderer::Impl::read_rt_stats(FrameSlot& slot) {
                                    VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
              "vkGetQueryPoolResults(rt timestamps)");
     s.gpu_ms = double(ts[1] - ts[0]) * context.info().timestamp_period_ns * 1e-6;
-    s.passes.push_back({"rays", s.gpu_ms});
+    s.passes.push_back({slot.path_traced ? "path_trace" : "rays", s.gpu_ms});
     return s;
 }
 

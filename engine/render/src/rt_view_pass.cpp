@@ -1,7 +1,5 @@
 #include "rt_view_pass.h"
 
-#include "as_build.h"
-
 #include <sherpa/gpu/commands.h>
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/vk_helpers.h>
@@ -26,7 +24,7 @@ constexpr VkShaderStageFlags kAllStages =
 
 RtViewPass::RtViewPass(Context& context, ResourceManager& resources,
                        VkDescriptorSetLayout bindless_layout)
-    : context_(context), resources_(resources), fn_(RayTracingFunctions::load(context)) {
+    : context_(context), resources_(resources) {
     VkDevice device = context.device();
     const VkDescriptorSetLayoutBinding bindings[] = {
         {0, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1, VK_SHADER_STAGE_RAYGEN_BIT_KHR,
@@ -56,81 +54,14 @@ RtViewPass::RtViewPass(Context& context, ResourceManager& resources,
     const VkPushConstantRange push{kAllStages, 0, sizeof(GPURayPushConstants)};
     layout_ = create_pipeline_layout(device, sets, {&push, 1}, "vkCreatePipelineLayout(rt)");
 
-    const UniqueShaderModule modules[] = {
-        create_shader_module(device, spirv_rt_rgen, "vkCreateShaderModule(rt.rgen)"),
-        create_shader_module(device, spirv_rt_rmiss, "vkCreateShaderModule(rt.rmiss)"),
-        create_shader_module(device, spirv_rt_rchit, "vkCreateShaderModule(rt.rchit)"),
-        create_shader_module(device, spirv_rt_rahit, "vkCreateShaderModule(rt.rahit)"),
-    };
-    const VkShaderStageFlagBits stage_bits[] = {
-        VK_SHADER_STAGE_RAYGEN_BIT_KHR, VK_SHADER_STAGE_MISS_BIT_KHR,
-        VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR, VK_SHADER_STAGE_ANY_HIT_BIT_KHR};
-    std::array<VkPipelineShaderStageCreateInfo, 4> stages{};
-    for (std::size_t i = 0; i < stages.size(); ++i) {
-        stages[i] = vk_init<VkPipelineShaderStageCreateInfo>(
-            VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
-        stages[i].stage = stage_bits[i];
-        stages[i].module = modules[i].get();
-        stages[i].pName = "main";
-    }
-    std::array<VkRayTracingShaderGroupCreateInfoKHR, 3> groups{};
-    for (auto& g : groups) {
-        g = vk_init<VkRayTracingShaderGroupCreateInfoKHR>(
-            VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR);
-        g.generalShader = g.closestHitShader = g.anyHitShader = g.intersectionShader =
-            VK_SHADER_UNUSED_KHR;
-    }
-    groups[0].type = groups[1].type = VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR;
-    groups[0].generalShader = 0;
-    groups[1].generalShader = 1;
-    groups[2].type = VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR;
-    groups[2].closestHitShader = 2;
-    groups[2].anyHitShader = 3;
-    auto ci = vk_init<VkRayTracingPipelineCreateInfoKHR>(
-        VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR);
-    ci.stageCount = static_cast<std::uint32_t>(stages.size());
-    ci.pStages = stages.data();
-    ci.groupCount = static_cast<std::uint32_t>(groups.size());
-    ci.pGroups = groups.data();
-    ci.maxPipelineRayRecursionDepth = 1;
-    ci.layout = layout_.get();
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    vk_check(
-        fn_.create_pipelines(device, VK_NULL_HANDLE, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline),
-        "vkCreateRayTracingPipelinesKHR");
-    pipeline_ = UniquePipeline(device, pipeline);
-    create_shader_binding_table();
+    pipeline_ = std::make_unique<RayPipeline>(
+        context, resources, layout_.get(),
+        RayShaders{spirv_rt_rgen, spirv_rt_rmiss, spirv_rt_rchit, spirv_rt_rahit});
 }
 
 RtViewPass::~RtViewPass() {
-    resources_.destroy(sbt_);
     resources_.destroy(readback_);
     resources_.images().destroy(target_);
-}
-
-// Raygen, miss and hit group, each in its own region at the base alignment; the
-// buffer is over-allocated so the first region's address can be aligned.
-void RtViewPass::create_shader_binding_table() {
-    const DeviceInfo& info = context_.info();
-    const std::uint32_t handle = info.shader_group_handle_size;
-    const VkDeviceSize stride = align_up(handle, info.shader_group_handle_alignment);
-    const VkDeviceSize region = align_up(stride, info.shader_group_base_alignment);
-    std::vector<std::uint8_t> handles(3 * std::size_t(handle));
-    vk_check(fn_.get_group_handles(context_.device(), pipeline_.get(), 0, 3, handles.size(),
-                                   handles.data()),
-             "vkGetRayTracingShaderGroupHandlesKHR");
-    sbt_ = resources_.create_buffer(
-        {3 * region + info.shader_group_base_alignment,
-         VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-         MemoryUsage::Upload, "shader binding table"});
-    const Buffer& b = resources_.get(sbt_);
-    const VkDeviceAddress base = align_up(b.address, info.shader_group_base_alignment);
-    auto* bytes = static_cast<std::uint8_t*>(b.mapped) + (base - b.address);
-    for (std::uint32_t g = 0; g < 3; ++g)
-        std::memcpy(bytes + g * region, handles.data() + g * handle, handle);
-    raygen_ = {base, stride, stride}; // the raygen region's size must equal its stride
-    miss_ = {base + region, stride, stride};
-    hit_ = {base + 2 * region, stride, stride};
 }
 
 void RtViewPass::ensure_target(std::uint32_t width, std::uint32_t height) {
@@ -198,12 +129,12 @@ void RtViewPass::record(VkCommandBuffer cmd, const RayTracedFrame& f, bool readb
     t.dst_stage = VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR;
     t.dst_access = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
     transition(cmd, t);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline_.get());
+    pipeline_->bind(cmd);
     const VkDescriptorSet sets[] = {f.bindless, set_};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, layout_.get(), 0, 2, sets,
                             0, nullptr);
     vkCmdPushConstants(cmd, layout_.get(), kAllStages, 0, sizeof(f.push), &f.push);
-    fn_.cmd_trace_rays(cmd, &raygen_, &miss_, &hit_, &callable_, f.width, f.height, 1);
+    pipeline_->trace(cmd, f.width, f.height);
     if (!readback) {
         memory_barrier(cmd, VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR,
                        VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,

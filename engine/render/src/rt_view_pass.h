@@ -1,14 +1,17 @@
 #pragma once
 // The ray-traced debug views (render --renderer rt): one ray-tracing pipeline
-// (shaders/rt.rgen, rt.rmiss, and one hit group of rt.rchit + rt.rahit), its shader
-// binding table, its descriptor set and the storage image the rays write, read back
+// (shaders/rt.rgen, rt.rmiss, and one hit group of rt.rchit + rt.rahit, rt_pipeline.h),
+// its descriptor set and the storage image the rays write, read back
 // as the rasterizer's offscreen target is. Private to the render layer; the
 // Renderer drives it (renderer_rt.cpp) with the scene's acceleration structures.
+#include "rt_pipeline.h"
+
 #include <sherpa/gpu/acceleration_structure.h>
 #include <sherpa/gpu/resources.h>
 #include <sherpa/render/gpu_structs.h>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace sherpa::gpu {
@@ -44,18 +47,14 @@ public:
 
 private:
     void ensure_target(std::uint32_t width, std::uint32_t height);
-    void create_shader_binding_table();
 
     Context& context_;
     ResourceManager& resources_;
-    RayTracingFunctions fn_;
     UniqueDescriptorSetLayout set_layout_;
     UniqueDescriptorPool pool_;
     VkDescriptorSet set_ = VK_NULL_HANDLE;
     UniquePipelineLayout layout_;
-    UniquePipeline pipeline_;
-    BufferHandle sbt_;
-    VkStridedDeviceAddressRegionKHR raygen_{}, miss_{}, hit_{}, callable_{};
+    std::unique_ptr<RayPipeline> pipeline_;
     ImageHandle target_;
     BufferHandle readback_;
     std::uint32_t width_ = 0, height_ = 0;

@@ -325,6 +325,31 @@ static_assert(offsetof(GPURayPushConstants, shadow_rays) == 112);
 static_assert(offsetof(GPURayPushConstants, ao_radius) == 120);
 static_assert(sizeof(GPURayPushConstants) == 128); // Vulkan's guaranteed minimum
 
+// Push constants of the path tracer (shaders/pt.*, PathPush in rt_hit.glsl, scalar):
+// the fields the hit shaders share with GPURayPushConstants at the same offsets.
+struct GPUPathPushConstants {
+    glm::mat4 inv_view_proj;    // NDC -> world (reverse Z)
+    VkDeviceAddress geometries; // the GPUGeometryInfo array
+    std::uint32_t first_sample; // index of this launch's first sample in each pixel
+    float texture_lod;          // mip level of every texture (< 0: level 0)
+    glm::vec4 clear_color;      // linear: the background where it is a colour
+    std::uint32_t samples;      // samples per pixel in this launch
+    std::uint32_t max_bounces;  // surface interactions a path may scatter at
+    std::uint32_t seed;         // PathTraceSettings::seed
+    std::uint32_t reserved;
+    glm::uvec2 env_size;  // columns, rows of the environment distribution (0: none)
+    float sun_cos_radius; // cosine of the sun's angular radius
+    float max_radiance;   // a sample's luminance is capped here (overflow guard)
+};
+static_assert(offsetof(GPUPathPushConstants, geometries) == 64);
+static_assert(offsetof(GPUPathPushConstants, first_sample) == 72);
+static_assert(offsetof(GPUPathPushConstants, texture_lod) == 76);
+static_assert(offsetof(GPUPathPushConstants, clear_color) == 80);
+static_assert(offsetof(GPUPathPushConstants, samples) == 96);
+static_assert(offsetof(GPUPathPushConstants, env_size) == 112);
+static_assert(offsetof(GPUPathPushConstants, max_radiance) == 124);
+static_assert(sizeof(GPUPathPushConstants) == 128);
+
 // Push constants of the ray tracer's posing pass (shaders/pose_vertices.comp, scalar):
 // one dispatch per posed geometry (posed_geometry.cpp).
 struct GPUPoseVerticesPush {

@@ -50,6 +50,19 @@ std::vector<std::string_view> overlay_names();
 
 inline constexpr float kDefaultCheckerDensity = 8.0f;
 
+// The path tracer (RendererKind::RayTraced, DebugView::Lit; docs/path_tracer.md): it
+// accumulates samples across frames while nothing that changes the image changes
+// (camera, size, scene, pose, visibility, lights, environment, these settings), and
+// starts over when something does.
+struct PathTraceSettings {
+    std::uint32_t samples = 1;     // samples per pixel each frame adds (render --spp)
+    std::uint32_t max_samples = 0; // the accumulation stops there (0: no limit)
+    // Surface interactions a path scatters at: 0 shows emission only, 1 direct light.
+    std::uint32_t max_bounces = 8;
+    std::uint32_t seed = 0; // the same seed and sample count give the same image
+    bool restart = false;   // start over this frame even if nothing changed
+};
+
 struct RenderSettings {
     std::uint32_t width = 1280, height = 720;
     DebugView view = DebugView::Lit;
@@ -64,6 +77,7 @@ struct RenderSettings {
     // (rays have no derivatives; comparing them needs the same texels). < 0: the
     // rasterizer uses derivatives, rays level 0.
     float texture_lod = -1.0f;
+    PathTraceSettings path;
     bool shadows = true;
     std::uint32_t cascades = kDefaultShadowCascades;
     // Hardware 2x2 PCF taps per shadow-map lookup (lit and shadow views): 1, 4 or 16;

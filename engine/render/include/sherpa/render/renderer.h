@@ -15,6 +15,7 @@
 #include <sherpa/render/acceleration_stats.h>
 #include <sherpa/render/environment.h>
 #include <sherpa/render/load_settings.h>
+#include <sherpa/render/path_trace.h>
 #include <sherpa/render/render_settings.h>
 #include <sherpa/scene/culling_passes.h>
 #include <sherpa/scene/shadow_cascades.h>
@@ -41,6 +42,13 @@ struct PassTiming {
     double ms = 0.0;
 };
 
+// A path-traced frame: samples per pixel accumulated after it, those it added, and
+// whether it started over.
+struct PathTraceFrame {
+    std::uint32_t samples = 0, added = 0;
+    bool restarted = false;
+};
+
 // GPU-side measurements of one frame (timestamps and pipeline statistics of the
 // camera passes; shadow cascades are timed but not in the statistics).
 struct FrameStats {
@@ -57,7 +65,8 @@ struct FrameStats {
     // reused (`shadows_rendered` false). With culling off every instance is visible
     // and nothing is tested.
     std::vector<CullStats> culling;
-    CullStats prepass; // depth prepass: draw_calls and triangles only
+    CullStats prepass;   // depth prepass: draw_calls and triangles only
+    PathTraceFrame path; // a path-traced frame's accumulation
     const CullStats* pass(std::string_view name) const {
         for (const CullStats& c : culling)
             if (c.pass == name) return &c;
@@ -142,10 +151,17 @@ public:
 private:
     friend class PresentedFrame; // records swapchain frames through Impl
     friend class ComparisonFrame;
+    friend PathTraceImage read_path_trace(Renderer&);
     friend ComparisonStats render_comparison(Renderer&, const RenderSettings&, Renderer&,
                                              const RenderSettings&, const ComparisonSettings&,
                                              std::vector<std::uint8_t>*);
     std::unique_ptr<Impl> impl_;
 };
+
+// The path tracer's accumulation (its per-pixel sums, read back after the frames in
+// flight; empty before the first path-traced frame), and its estimated error
+// (path_trace.h). FrameStats::path counts the samples without a readback.
+PathTraceImage read_path_trace(Renderer& renderer);
+PathTraceError path_trace_error(Renderer& renderer);
 
 } // namespace sherpa::gpu

@@ -1,0 +1,116 @@
+// The path-traced lit view (RendererKind::RayTraced, DebugView::Lit): its constants,
+// when its accumulation continues and when it starts over, and its read back sums.
+#include "renderer_impl.h"
+
+#include <sherpa/gpu/gpu_error.h>
+
+#include <cmath>
+#include <cstring>
+
+namespace sherpa::gpu {
+namespace {
+
+// FNV-1a over the bytes of each value: what the accumulation is of.
+struct KeyHash {
+    std::uint64_t h = 1469598103934665603ull;
+    template <typename T> void add(const T& value) {
+        const auto* b = reinterpret_cast<const unsigned char*>(&value);
+        for (std::size_t i = 0; i < sizeof(T); ++i) h = (h ^ b[i]) * 1099511628211ull;
+    }
+};
+
+// A sample's luminance is capped here: far above any real scene's radiance, low enough
+// that sums of millions of samples stay finite in 32-bit floats.
+constexpr float kMaxSampleRadiance = 1e20f;
+
+} // namespace
+
+PathTraceFrame Renderer::Impl::record_path(VkCommandBuffer cmd, FrameSlot& slot,
+                                           const RenderSettings& settings, bool readback) {
+    if (!path_) path_ = std::make_unique<PathTracePass>(context, *resources, bindless->layout());
+    if (path_environment_ != environment_generation_) {
+        path_->set_distribution(environment_distribution_ ? *environment_distribution_
+                                                          : EnvironmentDistribution{});
+        path_environment_ = environment_generation_;
+    }
+    const CameraView camera =
+        resolve_camera(settings.camera, lighting_, float(settings.width) / float(settings.height));
+    GPUFrameData constants = lighting_constants(settings);
+    constants.view = camera.view;
+    constants.proj = camera.proj;
+    constants.view_proj = camera.proj * camera.view;
+    constants.camera_position = glm::vec4(camera.position, 1.0f);
+    std::memcpy(resources->get(slot.frame_data).mapped, &constants, sizeof(constants));
+
+    PathTracedFrame f;
+    f.bindless = bindless->set();
+    f.tlas = acceleration->tlas();
+    f.materials = scene->materials().buffer();
+    f.material_extras = scene->materials().extras_buffer();
+    f.frame_data = resources->get(slot.frame_data).buffer.get();
+    if (environment) f.environment = environment->specular_descriptor();
+    f.width = settings.width;
+    f.height = settings.height;
+    GPUPathPushConstants& p = f.push;
+    p.inv_view_proj = glm::inverse(camera.proj * camera.view);
+    p.geometries = acceleration->geometry_records();
+    p.texture_lod = settings.texture_lod;
+    p.clear_color = settings.clear_color;
+    p.max_bounces = settings.path.max_bounces;
+    p.seed = settings.path.seed;
+    p.sun_cos_radius = std::cos(std::clamp(settings.sun_angular_radius, 0.0f, 1.5f));
+    p.max_radiance = kMaxSampleRadiance;
+
+    KeyHash key;
+    key.add(constants);
+    key.add(p);
+    key.add(f.width);
+    key.add(f.height);
+    key.add(scene_generation_);
+    key.add(environment_generation_);
+    key.add(rt_pose_key_);
+    key.add(visibility_version_);
+    PathTraceFrame out;
+    out.restarted = settings.path.restart || key.h != path_key_ || path_samples_ == 0 ||
+                    path_->width() != f.width || path_->height() != f.height;
+    if (out.restarted) path_samples_ = 0;
+    std::uint32_t add = settings.path.samples;
+    if (settings.path.max_samples > 0)
+        add = path_samples_ >= settings.path.max_samples
+                  ? 0
+                  : std::min(add, settings.path.max_samples - path_samples_);
+    if (path_samples_ == 0) add = std::max(add, 1u); // an image needs a sample
+    f.first_sample = path_samples_;
+    f.samples = add;
+    path_->record(cmd, f, readback);
+    path_samples_ += add;
+    path_key_ = key.h;
+    out.samples = path_samples_;
+    out.added = add;
+    return out;
+}
+
+PathTraceImage Renderer::Impl::path_trace_image() {
+    PathTraceImage image;
+    if (!path_ || path_samples_ == 0) return image;
+    for (auto& s : slots_) wait_slot(*s);
+    FrameSlot& slot = *slots_[next_slot_];
+    VkCommandBuffer cmd = slot.recorder.begin();
+    path_->record_sums_readback(cmd);
+    slot.submission = slot.recorder.submit(*resources);
+    slot.has_results = false;
+    wait_slot(slot);
+    path_->read_sums(image);
+    image.samples = path_samples_;
+    return image;
+}
+
+PathTraceImage read_path_trace(Renderer& renderer) {
+    return renderer.impl_->path_trace_image();
+}
+
+PathTraceError path_trace_error(Renderer& renderer) {
+    return estimate_error(read_path_trace(renderer));
+}
+
+} // namespace sherpa::gpu

@@ -1,0 +1,24 @@
+// The path tracer's ray payload (pt.rgen, pt.rchit, pt.rahit, pt.rmiss): the hit
+// surface's BRDF inputs, made by the closest-hit shader with the raster's material
+// functions (material_sampling.glsl, brdf.glsl's *_surface()).
+#ifndef SHERPA_PATH_PAYLOAD_GLSL
+#define SHERPA_PATH_PAYLOAD_GLSL
+const uint PATH_RAY_CAMERA = 0u;  // the camera ray and bounces (closest hit)
+const uint PATH_RAY_SHADOW = 1u;  // visibility toward a light (any hit ends it)
+const uint PATH_HIT_UNLIT = 1u;   // KHR_materials_unlit (or no surface): emission only
+
+struct PathPayload {
+    vec3 position;  // world hit point
+    uint hit;       // 1 hit, 0 miss
+    vec3 geometric; // unit face normal on the ray's side
+    uint flags;     // PATH_HIT_*
+    vec3 normal;    // shading normal (normal-mapped, of the side seen)
+    float roughness;
+    vec3 diffuse;
+    uint kind;      // PATH_RAY_*, set by the tracer
+    vec3 f0;
+    uint seed;      // set by the tracer: any-hit draws stochastic transparency from it
+    vec3 emission;
+    float pad;
+};
+#endif

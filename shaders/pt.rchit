@@ -1,0 +1,53 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// The path tracer's closest hit: the surface's BRDF inputs from the same functions the
+// raster's lit shading calls (forward.frag): base colour, metallic-roughness or
+// specular-glossiness, the normal map, emission. The occlusion texture is not read:
+// the path tracer traces occlusion.
+#define SHERPA_PATH_TRACE
+#define SHERPA_NO_DERIVATIVES
+#include "rt_hit.glsl"
+#include "sherpa_default_textures.glsl"
+#include "debug_views.glsl"
+#include "material_sampling.glsl"
+#include "surface_views.glsl"
+#include "brdf.glsl"
+#include "path_payload.glsl"
+
+layout(location = 0) rayPayloadInEXT PathPayload payload;
+hitAttributeEXT vec2 bary;
+
+void main() {
+    const SurfaceHit h = interpolate_hit(bary);
+    const GPUMaterialData m = materials[h.material];
+    const GPUMaterialExtra x = material_extras[h.material];
+    const vec4 base = base_color(m, x, h.color, h.uv0, h.uv1);
+    vec3 n, t, b;
+    shading_frame(h.normal, h.tangent, m.double_sided != 0u && !h.front, n, t, b);
+    const vec3 v = -gl_WorldRayDirectionEXT;
+    const vec3 g = dot(h.geometric, h.geometric) > 0.0 ? normalize(h.geometric) : v;
+    payload.position = h.position;
+    payload.hit = 1u;
+    payload.geometric = dot(g, v) < 0.0 ? -g : g;
+    payload.flags = 0u;
+    // Lines and points have no surface: unlit, as the raster draws them.
+    if (x.unlit != 0u || (h.flags & (MESH_LINES | MESH_POINTS)) != 0u) {
+        payload.flags = PATH_HIT_UNLIT;
+        payload.emission = base.rgb;
+        return;
+    }
+    const vec3 sn = mapped_normal(m, x, t, b, n, h.uv0, h.uv1);
+    Surface s;
+    if (x.workflow == WORKFLOW_SPECULAR_GLOSSINESS) {
+        const vec4 sg = specular_glossiness(x, h.uv0, h.uv1);
+        s = spec_gloss_surface(base.rgb, sg.rgb, sg.a, sn, v);
+    } else {
+        const vec2 mr = metallic_roughness(m, metallic_roughness_texel(m, x, h.uv0, h.uv1));
+        s = metal_rough_surface(base.rgb, mr.x, mr.y, sn, v);
+    }
+    payload.normal = s.n;
+    payload.roughness = s.roughness;
+    payload.diffuse = s.diffuse;
+    payload.f0 = s.f0;
+    payload.emission = emission(m, x, h.uv0, h.uv1);
+}

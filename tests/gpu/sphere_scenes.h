@@ -1,0 +1,89 @@
+#pragma once
+// Test scenes made in code: rows of white spheres (the furnace tests of the raster's
+// environment lighting and of the path tracer), written to temporary glTF files.
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace sherpa::test {
+
+inline std::string base64(const std::vector<std::uint8_t>& in) {
+    static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (std::size_t i = 0; i < in.size(); i += 3) {
+        const std::uint32_t n = (std::uint32_t(in[i]) << 16) |
+                                (i + 1 < in.size() ? std::uint32_t(in[i + 1]) << 8 : 0u) |
+                                (i + 2 < in.size() ? std::uint32_t(in[i + 2]) : 0u);
+        out += t[(n >> 18) & 63];
+        out += t[(n >> 12) & 63];
+        out += i + 1 < in.size() ? t[(n >> 6) & 63] : '=';
+        out += i + 2 < in.size() ? t[n & 63] : '=';
+    }
+    return out;
+}
+
+// A glTF of `count` unit UV spheres along +X (2.5 apart), sphere i white with
+// roughness i / (count - 1) and the given metalness; `rings` x 2 `rings` quads each.
+inline std::string sphere_row_gltf(int count, float metallic, int rings = 24) {
+    const int segments = 2 * rings;
+    std::vector<float> pos, nrm;
+    std::vector<std::uint32_t> idx;
+    for (int r = 0; r <= rings; ++r)
+        for (int s = 0; s <= segments; ++s) {
+            const float th = float(M_PI) * float(r) / rings,
+                        ph = 2.0f * float(M_PI) * float(s) / segments;
+            const float x = std::sin(th) * std::cos(ph), y = std::cos(th),
+                        z = std::sin(th) * std::sin(ph);
+            pos.insert(pos.end(), {x, y, z});
+            nrm.insert(nrm.end(), {x, y, z});
+        }
+    for (int r = 0; r < rings; ++r)
+        for (int s = 0; s < segments; ++s) {
+            const std::uint32_t a = r * (segments + 1) + s, b = a + segments + 1;
+            idx.insert(idx.end(), {a, a + 1, b, a + 1, b + 1, b});
+        }
+    std::vector<std::uint8_t> bytes(pos.size() * 8 + idx.size() * 4);
+    std::memcpy(bytes.data(), pos.data(), pos.size() * 4);
+    std::memcpy(bytes.data() + pos.size() * 4, nrm.data(), nrm.size() * 4);
+    std::memcpy(bytes.data() + pos.size() * 8, idx.data(), idx.size() * 4);
+    const std::size_t vbytes = pos.size() * 4, n = pos.size() / 3;
+    std::ostringstream j;
+    j << R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[)";
+    for (int i = 0; i < count; ++i) j << (i ? "," : "") << i;
+    j << "]}],\"nodes\":[";
+    for (int i = 0; i < count; ++i)
+        j << (i ? "," : "") << R"({"mesh":)" << i << R"(,"translation":[)" << 2.5 * i << ",0,0]}";
+    j << "],\"meshes\":[";
+    for (int i = 0; i < count; ++i)
+        j << (i ? "," : "")
+          << R"({"primitives":[{"attributes":{"POSITION":0,"NORMAL":1},"indices":2,"material":)"
+          << i << "}]}";
+    j << "],\"materials\":[";
+    for (int i = 0; i < count; ++i)
+        j << (i ? "," : "")
+          << R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],"metallicFactor":)" << metallic
+          << R"(,"roughnessFactor":)" << float(i) / float(count - 1) << "}}";
+    j << R"(],"accessors":[{"bufferView":0,"componentType":5126,"count":)" << n
+      << R"(,"type":"VEC3","min":[-1,-1,-1],"max":[1,1,1]},{"bufferView":1,"componentType":5126,"count":)"
+      << n << R"(,"type":"VEC3"},{"bufferView":2,"componentType":5125,"count":)" << idx.size()
+      << R"(,"type":"SCALAR"}],"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":)" << vbytes
+      << R"(},{"buffer":0,"byteOffset":)" << vbytes << R"(,"byteLength":)" << vbytes
+      << R"(},{"buffer":0,"byteOffset":)" << 2 * vbytes << R"(,"byteLength":)" << idx.size() * 4
+      << R"(}],"buffers":[{"byteLength":)" << bytes.size()
+      << R"(,"uri":"data:application/octet-stream;base64,)" << base64(bytes) << "\"}]}";
+    return j.str();
+}
+
+inline std::filesystem::path write_temp(const std::string& name, const std::string& text) {
+    const std::filesystem::path p =
+        std::filesystem::temp_directory_path() / ("sherpa_env_test_" + name);
+    std::ofstream(p, std::ios::binary) << text;
+    return p;
+}
+
+} // namespace sherpa::test

@@ -89,6 +89,53 @@ CameraSpec frame_box_along(const Aabb& box_in, glm::vec3 to_eye, const FramingOp
     return s;
 }
 
+CameraSpec frame_points_along(std::span<const glm::vec3> points, glm::vec3 to_eye,
+                              const FramingOptions& o) {
+    Aabb box;
+    for (const glm::vec3& p : points)
+        if (is_finite(p)) box.expand(p);
+    if (!box.valid()) return frame_box_along(box, to_eye, o);
+    const glm::vec3 c = box.center();
+    const float radius = std::max(glm::length(0.5f * box.extent()), 1e-4f);
+    const float m = std::max(o.margin, 0.0f) * radius;
+    const glm::vec3 back =
+        glm::dot(to_eye, to_eye) > 1e-20f ? glm::normalize(to_eye) : glm::vec3(0.0f, 0.0f, 1.0f);
+    const glm::vec3 world_up =
+        std::abs(back.y) > 0.999f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+    const glm::vec3 right = glm::normalize(glm::cross(world_up, back));
+    const glm::vec3 up = glm::cross(back, right);
+    const float fill = std::clamp(o.fill, 0.05f, 1.0f);
+    const float tan_y = std::tan(0.5f * glm::radians(o.fov_y_degrees)) * fill;
+    const float tan_x = tan_y * (o.aspect > 0.0f ? o.aspect : 1.0f);
+
+    // Per axis, a point at (x, z) (across, towards the eye; from c) seen from an eye at
+    // (s, d) is inside when |x - s| <= t (d - z): s >= x + t z - t d and
+    // s <= x - t z + t d. Some s fits every point iff d >= (hi - lo) / 2t with
+    // hi = max(x + t z), lo = min(x - t z); then s = (hi + lo) / 2 centres them.
+    float hi_x = -INFINITY, lo_x = INFINITY, hi_y = -INFINITY, lo_y = INFINITY, z_max = -INFINITY;
+    for (const glm::vec3& p : points) {
+        if (!is_finite(p)) continue;
+        const glm::vec3 rel = p - c;
+        const float x = glm::dot(rel, right), y = glm::dot(rel, up), z = glm::dot(rel, back);
+        hi_x = std::max(hi_x, x + tan_x * z), lo_x = std::min(lo_x, x - tan_x * z);
+        hi_y = std::max(hi_y, y + tan_y * z), lo_y = std::min(lo_y, y - tan_y * z);
+        z_max = std::max(z_max, z);
+    }
+    const float d = std::max(
+        {(hi_x - lo_x) / (2.0f * tan_x), (hi_y - lo_y) / (2.0f * tan_y), z_max + m, 1e-4f});
+    const glm::vec3 target = c + right * (0.5f * (hi_x + lo_x)) + up * (0.5f * (hi_y + lo_y));
+    CameraSpec s;
+    s.eye = target + back * d;
+    s.target = target;
+    s.up = world_up;
+    s.fov_y_degrees = o.fov_y_degrees;
+    s.aspect = o.aspect > 0.0f ? o.aspect : 1.0f;
+    // As frame_box_along: half the nearest point's depth, at most 1% of the distance.
+    s.near_plane = std::max(std::min(0.5f * (d - z_max), 0.01f * d), 1e-5f);
+    s.far_plane = 0.0f;
+    return s;
+}
+
 CameraSpec frame_box(const Aabb& box, const FramingOptions& options, glm::vec3 front_hint) {
     return frame_box_along(box, auto_view_direction(box, front_hint), options);
 }

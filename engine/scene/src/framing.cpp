@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace sherpa {
 
@@ -111,19 +112,41 @@ CameraSpec frame_points_along(std::span<const glm::vec3> points, glm::vec3 to_ey
     // Per axis, a point at (x, z) (across, towards the eye; from c) seen from an eye at
     // (s, d) is inside when |x - s| <= t (d - z): s >= x + t z - t d and
     // s <= x - t z + t d. Some s fits every point iff d >= (hi - lo) / 2t with
-    // hi = max(x + t z), lo = min(x - t z); then s = (hi + lo) / 2 centres them.
+    // hi = max(x + t z), lo = min(x - t z): the tighter axis decides d.
+    std::vector<glm::vec3> local; // (x, y, z) of each finite point
+    local.reserve(points.size());
     float hi_x = -INFINITY, lo_x = INFINITY, hi_y = -INFINITY, lo_y = INFINITY, z_max = -INFINITY;
     for (const glm::vec3& p : points) {
         if (!is_finite(p)) continue;
         const glm::vec3 rel = p - c;
-        const float x = glm::dot(rel, right), y = glm::dot(rel, up), z = glm::dot(rel, back);
-        hi_x = std::max(hi_x, x + tan_x * z), lo_x = std::min(lo_x, x - tan_x * z);
-        hi_y = std::max(hi_y, y + tan_y * z), lo_y = std::min(lo_y, y - tan_y * z);
-        z_max = std::max(z_max, z);
+        const glm::vec3 q{glm::dot(rel, right), glm::dot(rel, up), glm::dot(rel, back)};
+        local.push_back(q);
+        hi_x = std::max(hi_x, q.x + tan_x * q.z), lo_x = std::min(lo_x, q.x - tan_x * q.z);
+        hi_y = std::max(hi_y, q.y + tan_y * q.z), lo_y = std::min(lo_y, q.y - tan_y * q.z);
+        z_max = std::max(z_max, q.z);
     }
     const float d = std::max(
         {(hi_x - lo_x) / (2.0f * tan_x), (hi_y - lo_y) / (2.0f * tan_y), z_max + m, 1e-4f});
-    const glm::vec3 target = c + right * (0.5f * (hi_x + lo_x)) + up * (0.5f * (hi_y + lo_y));
+    // Then, per axis, the offset s that centres the points on screen: the largest and
+    // the smallest (x - s) / (d - z) equal and opposite. Their sum falls as s grows
+    // and changes sign between the points' least and greatest x: bisection. (On the
+    // tighter axis this is (hi + lo) / 2; on the other the perspective makes it differ.)
+    const auto centre = [&](int axis) {
+        float lo = INFINITY, hi = -INFINITY;
+        for (const glm::vec3& q : local) lo = std::min(lo, q[axis]), hi = std::max(hi, q[axis]);
+        for (int i = 0; i < 60 && lo < hi; ++i) {
+            const float mid = 0.5f * (lo + hi);
+            if (mid <= lo || mid >= hi) break; // no float between them
+            float most = -INFINITY, least = INFINITY;
+            for (const glm::vec3& q : local) {
+                const float v = (q[axis] - mid) / (d - q.z);
+                most = std::max(most, v), least = std::min(least, v);
+            }
+            (most + least > 0.0f ? lo : hi) = mid;
+        }
+        return 0.5f * (lo + hi);
+    };
+    const glm::vec3 target = c + right * centre(0) + up * centre(1);
     CameraSpec s;
     s.eye = target + back * d;
     s.target = target;

@@ -57,9 +57,10 @@ CameraSpec frame_box(const Aabb& box, const FramingOptions& options,
 // viewport's width or height, whichever is tighter, centred on the other axis (the
 // target is moved across the view to centre them, not fixed on the box's centre),
 // and every point lies at least options.margin x their bounding radius in front of
-// the eye. Solved in closed form per axis: for fixed orientation, the distance and
-// sideways offset that keep max(x + t z) - t d <= s <= min(x - t z) + t d for all
-// points (x across, z towards the eye, t the half-angle tangent times `fill`).
+// the eye. For fixed orientation the distance is closed-form per axis (the least d
+// with max(x + t z) - t d <= min(x - t z) + t d over the points: x across, z towards
+// the eye, t the half-angle tangent times `fill`); the sideways offsets that centre
+// the points' projection are found by bisection (O(points) per step).
 // No finite points: frame_box_along() of the unit cube.
 CameraSpec frame_points_along(std::span<const glm::vec3> points, glm::vec3 to_eye,
                               const FramingOptions& options);

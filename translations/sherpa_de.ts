@@ -326,10 +326,6 @@
         <source>Component</source>
         <translation>Komponente</translation>
     </message>
-    <message>
-        <source>Component type</source>
-        <translation>Komponententyp</translation>
-    </message>
 </context>
 <context>
     <name>sherpa::editor::CommandLine</name>
@@ -463,10 +459,6 @@
     <message>
         <source>Side B is shown in the Split and Difference modes (Viewport button); choosing it here switches to Split. Now: %1</source>
         <translation>Seite B erscheint in den Modi Geteilt und Differenz (Schaltfläche Darstellung); eine Wahl hier schaltet auf Geteilt. Jetzt: %1</translation>
-    </message>
-    <message>
-        <source>What side B of the comparison draws</source>
-        <translation>Was Seite B des Vergleichs zeichnet</translation>
     </message>
 </context>
 <context>
@@ -1368,10 +1360,6 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <translation>Umgebung: %1.</translation>
     </message>
     <message>
-        <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</source>
-        <translation>Mittel der letzten %1 Bilder ohne das erste des Renderers (Pipeline-Erstellung). Während sich die Kamera auf einem langsamen Gerät bewegt, werden Bilder mit geringerer Auflösung und ohne Schatten gezeichnet, um %2 fps zu halten; in Ruhe folgt das volle Bild.</translation>
-    </message>
-    <message>
         <source>node %1</source>
         <translation>Knoten %1</translation>
     </message>
@@ -1974,10 +1962,6 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>State</source>
         <translation>Zustand</translation>
-    </message>
-    <message>
-        <source>Cache state</source>
-        <translation>Cache-Zustand</translation>
     </message>
 </context>
 <context>

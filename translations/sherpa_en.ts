@@ -326,10 +326,6 @@
         <source>Component</source>
         <translation>Component</translation>
     </message>
-    <message>
-        <source>Component type</source>
-        <translation>Component type</translation>
-    </message>
 </context>
 <context>
     <name>sherpa::editor::CommandLine</name>
@@ -463,10 +459,6 @@
     <message>
         <source>Side B is shown in the Split and Difference modes (Viewport button); choosing it here switches to Split. Now: %1</source>
         <translation>Side B is shown in the Split and Difference modes (Viewport button); choosing it here switches to Split. Now: %1</translation>
-    </message>
-    <message>
-        <source>What side B of the comparison draws</source>
-        <translation>What side B of the comparison draws</translation>
     </message>
 </context>
 <context>
@@ -1368,10 +1360,6 @@ The current scene is kept.</translation>
         <translation>Environment: %1.</translation>
     </message>
     <message>
-        <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</source>
-        <translation>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</translation>
-    </message>
-    <message>
         <source>node %1</source>
         <translation>node %1</translation>
     </message>
@@ -1974,10 +1962,6 @@ The current scene is kept.</translation>
     <message>
         <source>State</source>
         <translation>State</translation>
-    </message>
-    <message>
-        <source>Cache state</source>
-        <translation>Cache state</translation>
     </message>
 </context>
 <context>

@@ -326,10 +326,6 @@
         <source>Component</source>
         <translation>分量</translation>
     </message>
-    <message>
-        <source>Component type</source>
-        <translation>分量类型</translation>
-    </message>
 </context>
 <context>
     <name>sherpa::editor::CommandLine</name>
@@ -463,10 +459,6 @@
     <message>
         <source>Side B is shown in the Split and Difference modes (Viewport button); choosing it here switches to Split. Now: %1</source>
         <translation>B 侧在分屏和差异模式中显示（视口按钮）；在此选择会切换到分屏。当前：%1</translation>
-    </message>
-    <message>
-        <source>What side B of the comparison draws</source>
-        <translation>比较中 B 侧绘制的内容</translation>
     </message>
 </context>
 <context>
@@ -1368,10 +1360,6 @@ The current scene is kept.</source>
         <translation>环境：%1。</translation>
     </message>
     <message>
-        <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest the full frame follows.</source>
-        <translation>最近 %1 帧的平均值，不计渲染器的第一帧（创建管线）。在慢速设备上移动相机时，以较低分辨率且不带阴影绘制以保持 %2 fps；静止后显示完整画面。</translation>
-    </message>
-    <message>
         <source>node %1</source>
         <translation>节点 %1</translation>
     </message>
@@ -1974,10 +1962,6 @@ The current scene is kept.</source>
     <message>
         <source>State</source>
         <translation>状态</translation>
-    </message>
-    <message>
-        <source>Cache state</source>
-        <translation>缓存状态</translation>
     </message>
 </context>
 <context>

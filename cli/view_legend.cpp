@@ -9,13 +9,6 @@
 namespace sherpa::cli {
 namespace {
 
-// Data views store their values as bytes, not sRGB-encoded (render/shadow_error.cpp).
-std::array<std::uint8_t, 3> stored(const std::array<float, 3>& c) {
-    std::array<std::uint8_t, 3> b{};
-    for (int i = 0; i < 3; ++i) b[i] = static_cast<std::uint8_t>(std::lround(c[i] * 255.0f));
-    return b;
-}
-
 const char* colour_word(const std::array<std::uint8_t, 3>& c) {
     if (c[0] > 200 && c[1] > 150 && c[2] < 100) return "yellow";
     if (c[0] > 150 && c[1] < 100 && c[2] < 100) return "red";
@@ -30,13 +23,13 @@ std::vector<LegendEntry> view_legend(gpu::DebugView view) {
     std::vector<LegendEntry> out;
     if (view == gpu::DebugView::Provenance) {
         for (std::size_t i = 0; i < gpu::kProvenanceColors.size(); ++i)
-            out.push_back({stored(gpu::kProvenanceColors[i]),
+            out.push_back({gpu::stored_bytes(gpu::kProvenanceColors[i]),
                            std::string("tangents ") + gpu::kProvenanceNames[i]});
     } else if (view == gpu::DebugView::ShadowError) {
-        out.push_back({stored(gpu::kShadowAgreeLitColor), "both lit"});
-        out.push_back({stored(gpu::kShadowAgreeShadowedColor), "both shadowed"});
-        out.push_back({stored(gpu::kShadowFalseShadowColor), "false shadow (maps)"});
-        out.push_back({stored(gpu::kShadowFalseLightColor), "false light (maps)"});
+        out.push_back({gpu::stored_bytes(gpu::kShadowAgreeLitColor), "both lit"});
+        out.push_back({gpu::stored_bytes(gpu::kShadowAgreeShadowedColor), "both shadowed"});
+        out.push_back({gpu::stored_bytes(gpu::kShadowFalseShadowColor), "false shadow (maps)"});
+        out.push_back({gpu::stored_bytes(gpu::kShadowFalseLightColor), "false light (maps)"});
     }
     return out;
 }

@@ -18,6 +18,22 @@ glm::vec3 corner(const Aabb& b, int i) {
     return {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
 }
 
+// The view's axes looking from `to_eye` (towards the eye; +Z when zero).
+struct ViewAxes {
+    glm::vec3 back, world_up, right, up;
+};
+ViewAxes view_axes(glm::vec3 to_eye) {
+    ViewAxes a;
+    a.back =
+        glm::dot(to_eye, to_eye) > 1e-20f ? glm::normalize(to_eye) : glm::vec3(0.0f, 0.0f, 1.0f);
+    // lookAt needs an up that is not parallel to the view.
+    a.world_up =
+        std::abs(a.back.y) > 0.999f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+    a.right = glm::normalize(glm::cross(a.world_up, a.back));
+    a.up = glm::cross(a.back, a.right);
+    return a;
+}
+
 } // namespace
 
 glm::vec3 auto_view_direction(const Aabb& box_in, glm::vec3 front_hint) {
@@ -44,13 +60,7 @@ CameraSpec frame_box_along(const Aabb& box_in, glm::vec3 to_eye, const FramingOp
     const glm::vec3 c = box.center(), half = 0.5f * box.extent();
     const float radius = std::max(glm::length(half), 1e-4f);
     const float m = std::max(o.margin, 0.0f) * radius;
-    const glm::vec3 back =
-        glm::dot(to_eye, to_eye) > 1e-20f ? glm::normalize(to_eye) : glm::vec3(0.0f, 0.0f, 1.0f);
-    // lookAt needs an up that is not parallel to the view.
-    const glm::vec3 world_up =
-        std::abs(back.y) > 0.999f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
-    const glm::vec3 right = glm::normalize(glm::cross(world_up, back));
-    const glm::vec3 up = glm::cross(back, right);
+    const auto [back, world_up, right, up] = view_axes(to_eye);
     const float border = 1.0f - std::clamp(o.margin, 0.0f, 0.5f);
     const float tan_y = std::tan(0.5f * glm::radians(o.fov_y_degrees)) * border;
     const float tan_x = tan_y * (o.aspect > 0.0f ? o.aspect : 1.0f);
@@ -99,12 +109,7 @@ CameraSpec frame_points_along(std::span<const glm::vec3> points, glm::vec3 to_ey
     const glm::vec3 c = box.center();
     const float radius = std::max(glm::length(0.5f * box.extent()), 1e-4f);
     const float m = std::max(o.margin, 0.0f) * radius;
-    const glm::vec3 back =
-        glm::dot(to_eye, to_eye) > 1e-20f ? glm::normalize(to_eye) : glm::vec3(0.0f, 0.0f, 1.0f);
-    const glm::vec3 world_up =
-        std::abs(back.y) > 0.999f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
-    const glm::vec3 right = glm::normalize(glm::cross(world_up, back));
-    const glm::vec3 up = glm::cross(back, right);
+    const auto [back, world_up, right, up] = view_axes(to_eye);
     const float fill = std::clamp(o.fill, 0.05f, 1.0f);
     const float tan_y = std::tan(0.5f * glm::radians(o.fov_y_degrees)) * fill;
     const float tan_x = tan_y * (o.aspect > 0.0f ? o.aspect : 1.0f);

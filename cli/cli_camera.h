@@ -26,16 +26,16 @@ inline std::string file_camera_hint(const Scene& scene, const gpu::CameraSpec& c
 }
 
 // `camera` when it is not auto; else the camera that frames what is drawn
-// (framing_bounds(): posed in `pose` when given, the built-in ground plane left out)
-// for a viewport of `aspect`, with the renderer's framing options.
+// (frame_scene(): the drawn vertices, posed in `pose` when given, the built-in ground
+// plane left out, seen from the side of the file's first camera) for a viewport of
+// `aspect`, with the renderer's framing options.
 inline gpu::CameraSpec framed_camera(const gpu::CameraSpec& camera, const Scene& scene,
                                      const Pose* pose, float aspect) {
     if (camera.kind != gpu::CameraSpec::Kind::Auto) return camera;
     FramingOptions options;
     options.fov_y_degrees = camera.fov_degrees;
     options.aspect = aspect;
-    const Aabb drawn = framing_bounds(scene, pose);
-    return gpu::explicit_camera(frame_box(drawn.valid() ? drawn : scene.bounds, options));
+    return gpu::explicit_camera(frame_scene(scene, pose, options));
 }
 
 } // namespace sherpa::cli

@@ -1,7 +1,8 @@
 // sherpa-cli compare A B [--json] [--image OUT.png]
 // Structural diff of two glTF files (engine/lab/compare.h), their JSON diffed by
-// pointer (engine/lab/json_diff.h) and, with --image, a
-// rendered difference heat map of both from the same camera (A framed).
+// pointer (engine/lab/json_diff.h) and, with --image, a rendered difference of both
+// from the same camera (A framed): the heat over a dimmed side A, both sides, and
+// the legend with its numbers drawn in.
 #include "cli_common.h"
 #include "environment_options.h"
 
@@ -12,6 +13,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
@@ -170,6 +172,30 @@ void print_text(const lab::FileComparison& c) {
     for (const std::string& n : c.notes) std::printf("note: %s\n", n.c_str());
 }
 
+// The picture's labels: the two files, and under the legend what differs in the
+// materials and images (both sides of each field), as stdout lists them.
+lab::DifferenceOptions difference_options(const lab::FileComparison& c, const std::string& a,
+                                          const std::string& b) {
+    lab::DifferenceOptions o;
+    o.label_a = "A: " + std::filesystem::path(a).filename().string();
+    o.label_b = "B: " + std::filesystem::path(b).filename().string();
+    std::vector<std::string> lines;
+    for (const lab::MaterialDiff& m : c.materials)
+        for (const std::string& f : m.fields)
+            lines.push_back("material " + std::to_string(m.material) + " " + f);
+    for (const lab::TextureDiff& t : c.textures)
+        if (!t.psnr || !std::isinf(*t.psnr)) {
+            char psnr[32] = "";
+            if (t.psnr) std::snprintf(psnr, sizeof psnr, "PSNR %.2f dB", *t.psnr);
+            lines.push_back("image " + std::to_string(t.image) + ": " + (t.psnr ? psnr : t.note));
+        }
+    constexpr std::size_t kShown = 8; // stdout and --json list every one
+    for (std::size_t i = 0; i < lines.size() && i < kShown; ++i) o.captions.push_back(lines[i]);
+    if (lines.size() > kShown)
+        o.captions.push_back("... " + std::to_string(lines.size() - kShown) + " more (see stdout)");
+    return o;
+}
+
 } // namespace
 
 int run_compare(Args args) {
@@ -205,12 +231,12 @@ int run_compare(Args args) {
     nlohmann::json out = comparison_json(c);
     out["json_diff"] = json_diff_json(diff);
     if (!image.empty()) {
-        lab::DifferenceOptions options;
+        lab::DifferenceOptions options = difference_options(c, files[0], files[1]);
         options.lighting = {make_environment_image(environment), lighting};
         const lab::DifferenceImage d = lab::render_difference(*a.scene, *b.scene, options);
         std::string error = d.error;
         if (error.empty() &&
-            !tex::write_png(image, d.heat.width, d.heat.height, d.heat.pixels, error))
+            !tex::write_png(image, d.image.width, d.image.height, d.image.pixels, error))
             error = image + ": " + error;
         if (!error.empty()) {
             std::fprintf(stderr, "error: %s\n", error.c_str());
@@ -222,7 +248,10 @@ int run_compare(Args args) {
             {"max", d.max},
             {"psnr_db", std::isfinite(d.psnr) ? nlohmann::json(d.psnr) : nlohmann::json(nullptr)},
             {"threshold", d.threshold},
-            {"over_threshold_percent", d.over_threshold_percent}};
+            {"over_threshold_percent", d.over_threshold_percent},
+            {"scale", d.scale},
+            {"size", {d.image.width, d.image.height}},
+            {"legend_top", d.legend_top}};
         if (!json)
             std::printf(
                 "image %s: mean %.3g max %.0f (white: %.0f) PSNR %.2f dB, %.2f%% pixels over %u\n",

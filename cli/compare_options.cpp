@@ -134,7 +134,8 @@ int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
         if (sa.camera.kind == gpu::CameraSpec::Kind::Auto) {
             FramingOptions framing;
             framing.aspect = float(sa.width) / float(sa.height);
-            sa.camera = sb.camera = gpu::explicit_camera(frame_box(run.scene->bounds, framing));
+            sa.camera = sb.camera =
+                gpu::explicit_camera(frame_scene(*run.scene, sa.pose.get(), framing));
         }
     }
     const std::string file_b = o.with.empty() ? run.scene_name : o.with;

@@ -13,6 +13,7 @@
 #include "render_report.h"
 #include "shadow_options.h"
 #include "texture_cli.h"
+#include "view_legend.h"
 
 #include <sherpa/core/file_io.h>
 #include <sherpa/gpu/context.h>
@@ -282,11 +283,6 @@ int run_render(Args args) {
         run.timing.load_and_first_frame_ms = run.timing.scene_load_ms +
                                              run.timing.texture_prepare_ms +
                                              run.timing.gpu_upload_ms + run.cpu_frame_ms.front();
-        std::string error;
-        if (!tex::write_png(std::string(out_path), settings.width, settings.height, rgba, error)) {
-            std::fprintf(stderr, "error: %s\n", error.c_str());
-            return kExitLoadError;
-        }
         if (ray_traced && settings.view == gpu::DebugView::Lit) {
             const gpu::PathTraceError e = gpu::path_trace_error(renderer);
             const double ms = run.frames.back().gpu_ms;
@@ -308,6 +304,18 @@ int run_render(Args args) {
                         n.percent_of_lit_wrong(), (unsigned long long)n.lit(),
                         (unsigned long long)n.false_shadow, (unsigned long long)n.false_light,
                         (unsigned long long)n.agree_lit, (unsigned long long)n.agree_shadowed);
+        }
+        // Views whose colours are classes carry their legend in the picture.
+        if (const std::string legend = view_legend_line(settings.view); !legend.empty()) {
+            const bool drawn =
+                draw_view_legend(rgba, settings.width, settings.height, settings.view);
+            std::printf("%s%s\n", legend.c_str(),
+                        drawn ? " (legend drawn bottom left)" : " (image too small for a legend)");
+        }
+        std::string error;
+        if (!tex::write_png(std::string(out_path), settings.width, settings.height, rgba, error)) {
+            std::fprintf(stderr, "error: %s\n", error.c_str());
+            return kExitLoadError;
         }
         // The importer's warnings, as info prints them (skipped objects, repaired data,
         // what the renderer leaves out: animations without --time, unused attributes), then the

@@ -1196,6 +1196,10 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <translation>%1 in %2 ms geladen (Engine %3 ms, Vorschaubilder %4 ms, Texturen %5 ms).</translation>
     </message>
     <message>
+        <source>The file places %1 camera(s): View › glTF Cameras looks through them; the automatic view looks from the side of the first.</source>
+        <translation>Die Datei platziert %1 Kamera(s): Ansicht › glTF-Kameras schaut durch sie; die automatische Ansicht blickt von der Seite der ersten.</translation>
+    </message>
+    <message>
         <source>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</source>
         <translation>Texturcache geleert: %1 Dateien aus %2 gelöscht; das nächste Laden komprimiert erneut.</translation>
     </message>

@@ -1196,6 +1196,10 @@ The current scene is kept.</translation>
         <translation>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</translation>
     </message>
     <message>
+        <source>The file places %1 camera(s): View › glTF Cameras looks through them; the automatic view looks from the side of the first.</source>
+        <translation>The file places %1 camera(s): View › glTF Cameras looks through them; the automatic view looks from the side of the first.</translation>
+    </message>
+    <message>
         <source>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</source>
         <translation>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</translation>
     </message>

@@ -1196,6 +1196,10 @@ The current scene is kept.</source>
         <translation>已加载 %1，用时 %2 毫秒（引擎 %3 毫秒，缩略图 %4 毫秒，纹理 %5 毫秒）。</translation>
     </message>
     <message>
+        <source>The file places %1 camera(s): View › glTF Cameras looks through them; the automatic view looks from the side of the first.</source>
+        <translation>文件放置了 %1 个相机：视图 › glTF 相机 可通过它们观看；自动视图从第一个相机所在的一侧观看。</translation>
+    </message>
+    <message>
         <source>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</source>
         <translation>纹理缓存已清空：已从 %2 删除 %1 个文件；下次加载时将重新压缩。</translation>
     </message>

@@ -271,7 +271,7 @@ void MainWindow::connectActions() {
     connect(viewport_, &ViewportWindow::cameraChanged, this, &MainWindow::onCameraChanged);
     connect(viewport_, &ViewportWindow::clicked, this, [this](QPointF ndc) { pickAt(ndc); });
     connect(viewport_, &ViewportWindow::frameAllRequested, this, [this] {
-        if (context_.scene()) viewport_->camera().frameAuto(framing_bounds(*context_.scene()));
+        if (context_.scene()) viewport_->camera().frameAuto(*context_.scene());
         onCameraChanged();
     });
     connect(viewport_, &ViewportWindow::frameSelectionRequested, this, &MainWindow::frameSelection);

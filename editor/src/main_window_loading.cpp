@@ -103,10 +103,15 @@ void MainWindow::onLoaded(SharedSession session) {
                      .arg(s.timings.engine_ms, 0, 'f', 1)
                      .arg(s.timings.thumbnails_ms, 0, 'f', 1)
                      .arg(s.timings.textures_ms, 0, 'f', 1));
+    if (!s.scene->placed_cameras.empty())
+        log_->append(LogDock::Level::Info,
+                     tr("The file places %1 camera(s): View › glTF Cameras looks through them; "
+                        "the automatic view looks from the side of the first.")
+                         .arg(s.scene->placed_cameras.size()));
     // The same file reloaded after a change keeps the view; any other is framed (the
     // ground plane left out).
     if (!std::exchange(keep_camera_, false)) {
-        viewport_->camera().frameAuto(framing_bounds(*s.scene));
+        viewport_->camera().frameAuto(*s.scene);
         viewport_->setAutoFrame(true);
     }
     onCameraChanged();

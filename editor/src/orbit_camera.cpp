@@ -74,8 +74,8 @@ void OrbitCamera::frame(const Aabb& box) {
     if (box.valid()) take(frame_box_along(box, -forward(), framingOptions()));
 }
 
-void OrbitCamera::frameAuto(const Aabb& box) {
-    if (box.valid()) take(frame_box(box, framingOptions()));
+void OrbitCamera::frameAuto(const Scene& scene) {
+    take(frame_scene(scene, nullptr, framingOptions()));
 }
 
 void OrbitCamera::jumpTo(const Scene& scene, std::size_t index) {

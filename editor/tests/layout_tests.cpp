@@ -158,7 +158,7 @@ void LayoutTests::framingIsTheSameEveryRun() {
         QCOMPARE(QSize(int(run.width), int(run.height)), size);
         OrbitCamera fresh;
         fresh.setAspect(float(size.width()) / float(size.height()));
-        fresh.frameAuto(w->context().scene()->bounds);
+        fresh.frameAuto(*w->context().scene());
         QCOMPARE(run.camera.eye, fresh.spec().eye);
         QCOMPARE(run.camera.aspect, fresh.spec().aspect);
     }

@@ -30,9 +30,9 @@ vec3 checker_color(vec2 uv, float density) {
 }
 #endif
 
-// Authored: green, generated: yellow, defaulted: red.
+// Authored: green, generated: yellow, defaulted: red (gpu::kProvenanceColors).
 vec3 provenance_color(uint p) {
-    return p == 0u ? vec3(0.15, 0.75, 0.2) : p == 1u ? vec3(0.95, 0.8, 0.1) : vec3(0.9, 0.15, 0.1);
+    return PROVENANCE_COLORS[min(p, 2u)];
 }
 
 // Angle between geometric and shading normal: blue (0) -> yellow (45) -> red (90+).

@@ -103,5 +103,64 @@ TEST(AutoFramingTest, FramingAlongAGivenDirectionKeepsItAndFits) {
     EXPECT_GE(distance_to_box(box, s.eye), 0.049f * 0.5f * glm::length(box.extent()));
 }
 
+// Fitting points: for any direction and aspect, every point inside the frustum, the
+// tighter axis spanning exactly `fill` of the view and both axes centred (the
+// extreme points at +-fill or symmetric about the centre), every point in front of
+// the eye by the margin; the direction kept.
+TEST(AutoFramingTest, PointsFillTheTighterSideAndAreCentred) {
+    std::vector<glm::vec3> points;
+    std::uint32_t seed = 12345;
+    const auto next = [&] {
+        seed = seed * 1664525u + 1013904223u;
+        return float(seed >> 8) / float(1u << 24);
+    };
+    for (int i = 0; i < 500; ++i) // a lopsided cloud: a tall stick and a ball beside it
+        points.push_back(i % 2 ? glm::vec3(3.0f + 0.1f * next(), 4.0f * next(), 0.1f * next())
+                               : glm::vec3(next(), next(), next()) - 0.5f);
+    for (const glm::vec3 to_eye :
+         {glm::vec3(0.3f, 0.5f, 1.0f), glm::vec3(-1.0f, 0.2f, -0.3f), glm::vec3(0.0f, 1.0f, 0.0f)})
+        for (float aspect : {0.5f, 1.0f, 16.0f / 9.0f, 3.0f}) {
+            FramingOptions options;
+            options.aspect = aspect;
+            const CameraSpec s = frame_points_along(points, to_eye, options);
+            EXPECT_NEAR(glm::dot(glm::normalize(s.eye - s.target), glm::normalize(to_eye)), 1.0f,
+                        1e-5f);
+            const glm::mat4 vp = s.view_projection();
+            float lo_x = 1e9f, hi_x = -1e9f, lo_y = 1e9f, hi_y = -1e9f, nearest = 1e9f;
+            for (const glm::vec3& p : points) {
+                const glm::vec4 c = vp * glm::vec4(p, 1.0f);
+                ASSERT_GT(c.w, 0.0f);
+                lo_x = std::min(lo_x, c.x / c.w), hi_x = std::max(hi_x, c.x / c.w);
+                lo_y = std::min(lo_y, c.y / c.w), hi_y = std::max(hi_y, c.y / c.w);
+                nearest = std::min(nearest, glm::dot(p - s.eye, glm::normalize(s.target - s.eye)));
+            }
+            const std::string what = "aspect " + std::to_string(aspect);
+            EXPECT_NEAR(lo_x, -hi_x, 1e-4f) << what;
+            EXPECT_NEAR(lo_y, -hi_y, 1e-4f) << what;
+            // Filled, unless the nearest point decides: looking straight down the tall
+            // stick, its top is as close to the eye as the margin allows.
+            Aabb box;
+            for (const glm::vec3& p : points) box.expand(p);
+            const float margin = options.margin * 0.5f * glm::length(box.extent());
+            if (std::abs(nearest - margin) > 1e-3f * margin)
+                EXPECT_NEAR(std::max(hi_x, hi_y), options.fill, 1e-4f) << what;
+            else
+                EXPECT_LT(std::max(hi_x, hi_y), options.fill) << what;
+            EXPECT_LE(std::min(hi_x, hi_y), options.fill + 1e-4f) << what;
+            EXPECT_GT(nearest, s.near_plane) << what;
+        }
+}
+
+// No finite point: the unit cube's framing, never a NaN camera.
+TEST(AutoFramingTest, NoFinitePointsFrameTheUnitCube) {
+    const std::vector<glm::vec3> none{glm::vec3(NAN), glm::vec3(INFINITY, 0.0f, 0.0f)};
+    const CameraSpec s = frame_points_along(none, {0, 0, 1}, FramingOptions{});
+    EXPECT_TRUE(is_finite(s.eye));
+    EXPECT_TRUE(is_finite(s.target));
+    EXPECT_GT(glm::length(s.eye - s.target), 1.0f);
+    const CameraSpec empty = frame_points_along({}, {0, 0, 1}, FramingOptions{});
+    EXPECT_EQ(empty.eye, s.eye);
+}
+
 } // namespace
 } // namespace sherpa::test

@@ -59,6 +59,13 @@ std::string views() {
     for (auto [name, c] : classes)
         o << "const vec3 " << name << " = vec3(" << (*c)[0] << ", " << (*c)[1] << ", " << (*c)[2]
           << ");\n";
+    o << "// The provenance view's colours: authored, generated, defaulted.\n"
+      << "const vec3 PROVENANCE_COLORS[3] = vec3[3](";
+    for (std::size_t i = 0; i < gpu::kProvenanceColors.size(); ++i) {
+        const auto& c = gpu::kProvenanceColors[i];
+        o << (i ? ", " : "") << "vec3(" << c[0] << ", " << c[1] << ", " << c[2] << ")";
+    }
+    o << ");\n";
     return o.str();
 }
 

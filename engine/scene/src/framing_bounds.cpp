@@ -4,6 +4,7 @@
 #include <sherpa/scene/scene.h>
 
 #include <algorithm>
+#include <unordered_map>
 
 namespace sherpa {
 namespace {
@@ -29,7 +30,60 @@ Aabb bounds_of(const Scene& scene, const Pose* pose, bool skip_backdrop) {
     return box;
 }
 
+// Every drawn vertex in world space, posed when asked; the backdrop left out when
+// `skip_backdrop`.
+std::vector<glm::vec3> points_of(const Scene& scene, const Pose* pose, bool skip_backdrop) {
+    std::unordered_map<std::uint32_t, const PrimitiveInfo*> prim_of_mesh;
+    for (const PrimitiveInfo& p : scene.primitives)
+        if (p.engine_mesh >= 0) prim_of_mesh.emplace(static_cast<std::uint32_t>(p.engine_mesh), &p);
+    std::vector<glm::vec3> out;
+    for (const MeshInstance& inst : scene.instances) {
+        if (inst.mesh_id >= scene.meshes.size()) continue;
+        if (skip_backdrop && std::find(scene.backdrop_nodes.begin(), scene.backdrop_nodes.end(),
+                                       inst.node_id) != scene.backdrop_nodes.end())
+            continue;
+        const auto prim = prim_of_mesh.find(inst.mesh_id);
+        if (pose && prim != prim_of_mesh.end() && inst.node_id < pose->world.size()) {
+            for (const glm::vec3& v : posed_positions(scene, *pose, inst.node_id, *prim->second,
+                                                      instance_transform(scene, inst)))
+                if (is_finite(v)) out.push_back(v);
+            continue;
+        }
+        for (const Vertex& v : scene.meshes[inst.mesh_id].vertices) {
+            const glm::vec3 w = glm::vec3(inst.world * glm::vec4(v.position, 1.0f));
+            if (is_finite(w)) out.push_back(w);
+        }
+    }
+    return out;
+}
+
 } // namespace
+
+std::vector<glm::vec3> framing_points(const Scene& scene, const Pose* pose) {
+    std::vector<glm::vec3> subject = points_of(scene, pose, true);
+    return subject.empty() ? points_of(scene, pose, false) : subject;
+}
+
+glm::vec3 framing_front_hint(const Scene& scene, const Aabb& drawn) {
+    if (scene.placed_cameras.empty()) return glm::vec3(0.0f);
+    const glm::mat4& world = scene.placed_cameras.front().world;
+    const glm::vec3 eye = glm::vec3(world[3]);
+    if (drawn.valid() && is_finite(eye)) {
+        const glm::vec3 to_eye = eye - drawn.center();
+        if (to_eye.x * to_eye.x + to_eye.z * to_eye.z > 1e-12f) return {to_eye.x, 0.0f, to_eye.z};
+    }
+    const glm::vec3 back = glm::vec3(world[2]); // the camera looks down its -Z
+    return is_finite(back) ? glm::vec3(back.x, 0.0f, back.z) : glm::vec3(0.0f);
+}
+
+CameraSpec frame_scene(const Scene& scene, const Pose* pose, const FramingOptions& options) {
+    const std::vector<glm::vec3> points = framing_points(scene, pose);
+    Aabb drawn;
+    for (const glm::vec3& p : points) drawn.expand(p);
+    if (!drawn.valid()) return frame_box(scene.bounds, options);
+    return frame_points_along(points, auto_view_direction(drawn, framing_front_hint(scene, drawn)),
+                              options);
+}
 
 Aabb framing_bounds(const Scene& scene, const Pose* pose) {
     const Aabb subject = bounds_of(scene, pose, true);

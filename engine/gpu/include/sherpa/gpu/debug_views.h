@@ -72,6 +72,21 @@ inline constexpr std::array<float, 3> kShadowAgreeShadowedColor{0.2f, 0.2f, 0.2f
 inline constexpr std::array<float, 3> kShadowFalseShadowColor{1.0f, 0.0f, 0.0f};
 inline constexpr std::array<float, 3> kShadowFalseLightColor{0.0f, 0.0f, 1.0f};
 
+// The bytes a data view stores for a class colour (values, not sRGB-encoded): what
+// the shadow-error counts and the CLI's legends compare and draw.
+inline std::array<std::uint8_t, 3> stored_bytes(const std::array<float, 3>& c) {
+    std::array<std::uint8_t, 3> b{};
+    for (int i = 0; i < 3; ++i) b[i] = static_cast<std::uint8_t>(c[i] * 255.0f + 0.5f);
+    return b;
+}
+
+// The provenance view's colours (linear data, stored as 8-bit values), indexed by the
+// two provenance bits the shaders read (render/gpu_scene.cpp provenance_bits()):
+// authored green, generated yellow, defaulted red. GLSL: PROVENANCE_COLORS.
+inline constexpr std::array<std::array<float, 3>, 3> kProvenanceColors{
+    {{0.15f, 0.75f, 0.2f}, {0.95f, 0.8f, 0.1f}, {0.9f, 0.15f, 0.1f}}};
+inline constexpr std::array<const char*, 3> kProvenanceNames{"authored", "generated", "defaulted"};
+
 enum Overlay : std::uint32_t {
     kOverlayWireframe = 1u << 0,
     kOverlayNormals = 1u << 1,

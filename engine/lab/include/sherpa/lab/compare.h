@@ -67,10 +67,15 @@ FileComparison compare_files(const Scene& a, const Scene& b);
 
 // Both scenes rendered (lit, no shadows) from `camera` and differenced per pixel:
 // the largest RGB channel difference d (0..255) as a heat map (black, blue, red,
-// yellow, white from 0 to `scale`, the 99.9th percentile of the differing pixels' d)
-// with a legend strip along the bottom.
+// yellow, white from 0 to `scale`, the 99.9th percentile of the differing pixels' d).
+// The picture, top to bottom: the heat of every pixel that differs drawn over a
+// dimmed grey render of side A (where the difference is, on the model); sides A and
+// B at half size, labelled (both sides of a material or texture difference); the
+// legend strip with its numbers drawn in (0, half and the scale, mean, max, PSNR, the
+// share of pixels over the threshold); then `captions` (one line each).
 struct DifferenceImage {
-    tex::RgbaImage heat;
+    tex::RgbaImage image;
+    std::uint32_t legend_top = 0; // first row of the legend strip
     double mean = 0.0, max = 0.0; // of d
     double scale = 0.0;           // d shown white
     double psnr = 0.0;            // RGB, dB
@@ -79,11 +84,13 @@ struct DifferenceImage {
     std::string error; // set when no image could be rendered
 };
 struct DifferenceOptions {
-    std::uint32_t width = 640, height = 360;
-    std::optional<CameraSpec> camera; // unset: scene a framed automatically
+    std::uint32_t width = 640, height = 360; // of the difference panel
+    std::optional<CameraSpec> camera;        // unset: scene a framed automatically
     std::uint32_t threshold = 8;
     bool validation = false;
     gpu::Lighting lighting; // both sides lit alike (none by default)
+    std::string label_a = "A", label_b = "B"; // drawn over the half-size sides
+    std::vector<std::string> captions;        // drawn under the legend, clipped to the width
 };
 DifferenceImage render_difference(const Scene& a, const Scene& b, const DifferenceOptions& options);
 

@@ -8,6 +8,9 @@
 
 #include <glm/glm.hpp>
 
+#include <span>
+#include <vector>
+
 namespace sherpa {
 
 struct Scene;
@@ -20,6 +23,9 @@ struct FramingOptions {
     // least this far outside the box and every corner at least this far in front of
     // it; and as a fraction of the half field of view, left as a border on screen.
     float margin = 0.05f;
+    // frame_points_along(): the fraction of the viewport's width and height the points
+    // may span; the tighter axis is filled to it exactly, the other centred.
+    float fill = 0.8f;
 };
 
 // Elevation and azimuth of the automatic view: looking down ~25 degrees, ~35 degrees
@@ -46,10 +52,39 @@ CameraSpec frame_box_along(const Aabb& box, glm::vec3 to_eye, const FramingOptio
 CameraSpec frame_box(const Aabb& box, const FramingOptions& options,
                      glm::vec3 front_hint = glm::vec3(0.0f));
 
+// Camera looking from `to_eye` (any length > 0) that fits `points` (non-finite ones
+// ignored) tightly: their perspective projection spans `options.fill` of the
+// viewport's width or height, whichever is tighter, centred on the other axis (the
+// target is moved across the view to centre them, not fixed on the box's centre),
+// and every point lies at least options.margin x their bounding radius in front of
+// the eye. For fixed orientation the distance is closed-form per axis (the least d
+// with max(x + t z) - t d <= min(x - t z) + t d over the points: x across, z towards
+// the eye, t the half-angle tangent times `fill`); the sideways offsets that centre
+// the points' projection are found by bisection (O(points) per step).
+// No finite points: frame_box_along() of the unit cube.
+CameraSpec frame_points_along(std::span<const glm::vec3> points, glm::vec3 to_eye,
+                              const FramingOptions& options);
+
 // The box automatic framing fits: the world bounds of what is drawn, in `pose` when
 // one is given (exact: every posed vertex, as `info --time` reports them) else as
 // loaded; without Scene::backdrop_nodes (the built-in ground plane), unless nothing
 // else is drawn. Invalid when nothing is drawn.
 Aabb framing_bounds(const Scene& scene, const Pose* pose = nullptr);
+
+// The world positions of the same vertices (every instance, instancing rows
+// included), posed in `pose` when given; non-finite ones left out.
+std::vector<glm::vec3> framing_points(const Scene& scene, const Pose* pose = nullptr);
+
+// The front automatic framing looks from: towards the file's first placed camera
+// (its horizontal direction from `drawn`'s centre, else the horizontal part of the
+// direction it looks back along), so that a file that places a camera is seen from
+// the side its author chose; zero (no hint) when the file places none.
+glm::vec3 framing_front_hint(const Scene& scene, const Aabb& drawn);
+
+// The automatic view of a scene (CLI `--camera auto`, the editor on load and on Frame
+// all): frame_points_along(framing_points(), auto_view_direction(framing_bounds(),
+// framing_front_hint()), options). Falls back to frame_box(scene.bounds) when
+// nothing is drawn.
+CameraSpec frame_scene(const Scene& scene, const Pose* pose, const FramingOptions& options);
 
 } // namespace sherpa

@@ -49,5 +49,6 @@ void main() {
     payload.roughness = s.roughness;
     payload.diffuse = s.diffuse;
     payload.f0 = s.f0;
+    payload.f90 = s.f90;
     payload.emission = emission(m, x, h.uv0, h.uv1);
 }

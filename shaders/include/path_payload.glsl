@@ -19,6 +19,6 @@ struct PathPayload {
     vec3 f0;
     uint seed;      // set by the tracer: any-hit draws stochastic transparency from it
     vec3 emission;
-    float pad;
+    float f90; // Surface::f90 (brdf.glsl): 1 but for KHR_materials_specular's dielectrics
 };
 #endif

@@ -18,6 +18,7 @@ from pathlib import Path
 
 # Header -> why it carries Vulkan types today.
 VULKAN_FACING = {
+    "material_extensions.h": "lays out GPU structs of gpu_structs.h (device addresses are VkDeviceAddress)",
     "acceleration_structures.h": "holds the TLAS/BLAS handles and device addresses (SceneAccelerationStructures)",
     "comparison.h": "ComparisonFrame is a gpu::FrameSource (records into a VkCommandBuffer)",
     "presented_frame.h": "PresentedFrame is a gpu::FrameSource (records into a VkCommandBuffer)",

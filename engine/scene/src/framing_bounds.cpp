@@ -4,6 +4,7 @@
 #include <sherpa/scene/scene.h>
 
 #include <algorithm>
+#include <cmath>
 #include <unordered_map>
 
 namespace sherpa {
@@ -30,6 +31,16 @@ Aabb bounds_of(const Scene& scene, const Pose* pose, bool skip_backdrop) {
     return box;
 }
 
+// Coordinates beyond this are left out of the fit, as posed bounds leave out what
+// overflows (PosedBounds::overflow): the fit squares extents and sums them, and a
+// 3e38 vertex would turn the camera into inf/NaN (an empty image).
+constexpr float kMaxFramedCoordinate = 1e18f;
+
+bool frameable(const glm::vec3& v) {
+    return is_finite(v) && std::abs(v.x) <= kMaxFramedCoordinate &&
+           std::abs(v.y) <= kMaxFramedCoordinate && std::abs(v.z) <= kMaxFramedCoordinate;
+}
+
 // Every drawn vertex in world space, posed when asked; the backdrop left out when
 // `skip_backdrop`.
 std::vector<glm::vec3> points_of(const Scene& scene, const Pose* pose, bool skip_backdrop) {
@@ -46,12 +57,12 @@ std::vector<glm::vec3> points_of(const Scene& scene, const Pose* pose, bool skip
         if (pose && prim != prim_of_mesh.end() && inst.node_id < pose->world.size()) {
             for (const glm::vec3& v : posed_positions(scene, *pose, inst.node_id, *prim->second,
                                                       instance_transform(scene, inst)))
-                if (is_finite(v)) out.push_back(v);
+                if (frameable(v)) out.push_back(v);
             continue;
         }
         for (const Vertex& v : scene.meshes[inst.mesh_id].vertices) {
             const glm::vec3 w = glm::vec3(inst.world * glm::vec4(v.position, 1.0f));
-            if (is_finite(w)) out.push_back(w);
+            if (frameable(w)) out.push_back(w);
         }
     }
     return out;

@@ -306,3 +306,15 @@ TEST(MotionBounds, PosesPastTheFloatRangeAreNamedAndLeftOut) {
 }
 
 } // namespace
+
+// The editor logs the importer's warnings and has a timeline: the CLI's sentence about
+// `--animation N --time T` belongs to `render` and `cull` alone, never to the scene.
+TEST(MotionImport, AnimatedFilesCarryNoCliPoseSentence) {
+    for (const char* name : {"RiggedSimple", "SimpleMorph", "AnimatedTriangle"}) {
+        const auto s = load(test::gltf_asset(name));
+        ASSERT_TRUE(s);
+        EXPECT_FALSE(s->animations.empty()) << name;
+        EXPECT_FALSE(warned(*s, "--animation")) << name;
+        EXPECT_FALSE(warned(*s, "default pose")) << name;
+    }
+}

@@ -1,0 +1,45 @@
+#pragma once
+// Internal: the glTF 2.0 core schema as data, one entry per object kind (what
+// validate_schema.cpp walks): each property's type, whether it is required, its range,
+// enumeration or reference target.
+#include <cmath>
+#include <cstdint>
+#include <initializer_list>
+
+namespace sherpa::detail::schema {
+
+enum class T : std::uint8_t {
+    Index,      // integer >= 0 that must resolve into root array `target`
+    IndexArray, // array of such
+    Int,        // integer in [lo, hi]
+    Num,        // number in [lo, hi] (exclusive low when `open`)
+    NumArray,   // numbers in [lo, hi]; length in `lengths` when given
+    Str,
+    Bool,
+    Obj,    // checked with kind `target`
+    ObjArr, // array of objects of kind `target`
+    IntEnum,
+    StrEnum,
+    Any,
+};
+
+struct Prop {
+    const char* name;
+    T type;
+    bool required = false;
+    const char* target = nullptr; // Index*: root array; Obj*: kind
+    double lo = -INFINITY, hi = INFINITY;
+    bool open = false;                    // Num: lo is exclusive
+    std::initializer_list<int> lengths{}; // NumArray lengths; IntEnum values
+    std::initializer_list<const char*> words{};
+};
+
+struct Kind {
+    const char* name;
+    std::initializer_list<Prop> props;
+};
+
+// The kind called `name` ("root", "accessor", ...); null when the table has none.
+const Kind* kind_named(const char* name);
+
+} // namespace sherpa::detail::schema

@@ -17,6 +17,17 @@ UniqueDescriptorSetLayout create_descriptor_set_layout(
     return UniqueDescriptorSetLayout(device, layout);
 }
 
+VkDescriptorSet allocate_descriptor_set(VkDevice device, VkDescriptorPool pool,
+                                        VkDescriptorSetLayout layout, const char* what) {
+    auto ai = vk_init<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
+    ai.descriptorPool = pool;
+    ai.descriptorSetCount = 1;
+    ai.pSetLayouts = &layout;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    vk_check(vkAllocateDescriptorSets(device, &ai, &set), what);
+    return set;
+}
+
 UniqueDescriptorPool create_descriptor_pool(VkDevice device, std::uint32_t max_sets,
                                             std::span<const VkDescriptorPoolSize> sizes,
                                             const char* what, VkDescriptorPoolCreateFlags flags) {

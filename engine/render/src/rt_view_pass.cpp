@@ -43,14 +43,10 @@ RtViewPass::RtViewPass(Context& context, ResourceManager& resources,
                                           {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
                                           {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
     pool_ = create_descriptor_pool(device, 1, sizes, "vkCreateDescriptorPool(rt)");
-    const VkDescriptorSetLayout set_layout = set_layout_.get();
-    auto ai = vk_init<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
-    ai.descriptorPool = pool_.get();
-    ai.descriptorSetCount = 1;
-    ai.pSetLayouts = &set_layout;
-    vk_check(vkAllocateDescriptorSets(device, &ai, &set_), "vkAllocateDescriptorSets(rt)");
+    set_ = allocate_descriptor_set(device, pool_.get(), set_layout_.get(),
+                                   "vkAllocateDescriptorSets(rt)");
 
-    const VkDescriptorSetLayout sets[] = {bindless_layout, set_layout};
+    const VkDescriptorSetLayout sets[] = {bindless_layout, set_layout_.get()};
     const VkPushConstantRange push{kAllStages, 0, sizeof(GPURayPushConstants)};
     layout_ = create_pipeline_layout(device, sets, {&push, 1}, "vkCreatePipelineLayout(rt)");
 

@@ -18,6 +18,9 @@ UniqueDescriptorPool create_descriptor_pool(VkDevice device, std::uint32_t max_s
                                             std::span<const VkDescriptorPoolSize> sizes,
                                             const char* what,
                                             VkDescriptorPoolCreateFlags flags = 0);
+// One set of `layout` from `pool` (freed with the pool); throws GpuError naming `what`.
+VkDescriptorSet allocate_descriptor_set(VkDevice device, VkDescriptorPool pool,
+                                        VkDescriptorSetLayout layout, const char* what);
 UniquePipelineLayout create_pipeline_layout(VkDevice device,
                                             std::span<const VkDescriptorSetLayout> sets,
                                             std::span<const VkPushConstantRange> push_constants,

@@ -48,22 +48,7 @@ FurnaceResult EnvironmentTest::furnace(float metallic, bool compensation, int co
                                  sphere_row_gltf(count, metallic))
                           .string());
     renderer().load(*scene);
-    gpu::RenderSettings s;
-    s.width = 64 * count;
-    s.height = 64;
-    const float mid = 2.5f * float(count - 1) / 2.0f;
-    // Far away with a narrow field of view: every sphere ~50 px across.
-    char cam[160];
-    std::snprintf(cam, sizeof(cam), "eye=%g,0,%g:target=%g,0,0:fov=%g", mid, 60.0, mid,
-                  2.0 * std::atan(1.25 / 60.0) * 180.0 / M_PI);
-    std::string error;
-    EXPECT_TRUE(gpu::parse_camera_spec(cam, s.camera, error)) << error;
-    s.sun = false;
-    s.shadows = false;
-    s.tone_map = gpu::ToneMap::Linear;
-    s.exposure = -1.0f;
-    s.background = gpu::Background::Color;
-    s.clear_color = glm::vec4(0, 0, 0, 1);
+    gpu::RenderSettings s = furnace_view(count, 64); // every sphere ~50 px across
     s.energy_compensation = compensation;
     const auto rgba = draw(s);
     FurnaceResult out;

@@ -133,21 +133,7 @@ protected:
     gpu::RenderSettings sphere_row(int count, float metallic, const char* name) {
         auto scene = load(write_temp(name, sphere_row_gltf(count, metallic, 96)).string());
         rt().load(*scene);
-        gpu::RenderSettings s;
-        s.width = 48 * count;
-        s.height = 48;
-        const float mid = 2.5f * float(count - 1) / 2.0f;
-        char cam[160];
-        std::snprintf(cam, sizeof(cam), "eye=%g,0,%g:target=%g,0,0:fov=%g", mid, 60.0, mid,
-                      2.0 * std::atan(1.25 / 60.0) * 180.0 / kPi);
-        std::string error;
-        EXPECT_TRUE(gpu::parse_camera_spec(cam, s.camera, error)) << error;
-        s.sun = false;
-        s.shadows = false;
-        s.tone_map = gpu::ToneMap::Linear;
-        s.exposure = -1.0f;
-        s.background = gpu::Background::Color;
-        s.clear_color = glm::vec4(0, 0, 0, 1);
+        gpu::RenderSettings s = furnace_view(count, 48);
         s.renderer = gpu::RendererKind::RayTraced;
         s.path.restart = true;
         return s;

@@ -3,12 +3,18 @@
 // environment lighting and of the path tracer), written to temporary glTF files.
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
+
+#include <sherpa/render/camera.h>
+#include <sherpa/render/render_settings.h>
 
 namespace sherpa::test {
 
@@ -84,6 +90,28 @@ inline std::filesystem::path write_temp(const std::string& name, const std::stri
         std::filesystem::temp_directory_path() / ("sherpa_env_test_" + name);
     std::ofstream(p, std::ios::binary) << text;
     return p;
+}
+
+// The furnace view of sphere_row_gltf(count, ...): `px` pixels a sphere, seen from far
+// away with a narrow field of view, no sun or shadows, linear tone mapping at -1 EV (1
+// reads 0.5, clear of the 8-bit ceiling), on a black background.
+inline gpu::RenderSettings furnace_view(int count, std::uint32_t px) {
+    gpu::RenderSettings s;
+    s.width = px * std::uint32_t(count);
+    s.height = px;
+    const float mid = 2.5f * float(count - 1) / 2.0f;
+    char cam[160];
+    std::snprintf(cam, sizeof(cam), "eye=%g,0,%g:target=%g,0,0:fov=%g", mid, 60.0, mid,
+                  2.0 * std::atan(1.25 / 60.0) * 180.0 / 3.14159265358979323846);
+    std::string error;
+    EXPECT_TRUE(gpu::parse_camera_spec(cam, s.camera, error)) << error;
+    s.sun = false;
+    s.shadows = false;
+    s.tone_map = gpu::ToneMap::Linear;
+    s.exposure = -1.0f;
+    s.background = gpu::Background::Color;
+    s.clear_color = glm::vec4(0, 0, 0, 1);
+    return s;
 }
 
 } // namespace sherpa::test

@@ -119,18 +119,9 @@ bool read_image_file(const std::filesystem::path& path, RgbaImage& out, std::str
 
 bool read_float_image_file(const std::filesystem::path& path, std::uint32_t max_side,
                            FloatRgbImage& out, std::string& error) {
-    thread_local std::uint32_t side_limit = 0; // the check is a plain function pointer
-    side_limit = max_side;
-    const oiio::SizeCheck within = [](std::uint32_t w, std::uint32_t h, std::string_view name,
-                                      std::string& why) {
-        if (w <= side_limit && h <= side_limit) return true;
-        why = std::string(name) + ": the image is " + std::to_string(w) + "x" + std::to_string(h) +
-              ", over the limit of " + std::to_string(side_limit) + " texels a side";
-        return false;
-    };
     const oiio::PluginApi* api = image_plugin(path.string(), error);
     try {
-        return api && api->read_float_file(path, within, out, error);
+        return api && api->read_float_file(path, max_side, out, error);
     } catch (const std::bad_alloc&) {
         error = path.string() + ": out of memory while decoding";
     }

@@ -108,7 +108,7 @@ bool read_file(const std::filesystem::path& path, SizeCheck check, RgbaImage& ou
     return ok;
 }
 
-bool read_float_file(const std::filesystem::path& path, SizeCheck check, FloatRgbImage& out,
+bool read_float_file(const std::filesystem::path& path, std::uint32_t max_side, FloatRgbImage& out,
                      std::string& error) {
     const OIIO::ImageSpec config = unassociated_alpha_config();
     auto in = OIIO::ImageInput::open(path.string(), &config);
@@ -122,8 +122,12 @@ bool read_float_file(const std::filesystem::path& path, SizeCheck check, FloatRg
                 std::to_string(spec.height) + ")";
         return false;
     }
-    if (!check(std::uint32_t(spec.width), std::uint32_t(spec.height), path.string(), error))
+    if (std::uint32_t(spec.width) > max_side || std::uint32_t(spec.height) > max_side) {
+        error = path.string() + ": the image is " + std::to_string(spec.width) + "x" +
+                std::to_string(spec.height) + ", over the limit of " + std::to_string(max_side) +
+                " texels a side";
         return false;
+    }
     const int channels = std::min(spec.nchannels, 3);
     const std::size_t texels = std::size_t(spec.width) * std::size_t(spec.height);
     std::vector<float> raw(texels * std::size_t(channels));

@@ -35,9 +35,10 @@ struct PluginApi {
                   std::string& error, std::uint32_t& width, std::uint32_t& height) = nullptr;
     bool (*read_file)(const std::filesystem::path& path, SizeCheck check, RgbaImage& out,
                       std::string& error) = nullptr;
-    // As read_float_image_file(): float RGB, `check` before the pixels are allocated.
-    bool (*read_float_file)(const std::filesystem::path& path, SizeCheck check, FloatRgbImage& out,
-                            std::string& error) = nullptr;
+    // As read_float_image_file(): float RGB; over `max_side` a side is refused before
+    // the pixels are allocated.
+    bool (*read_float_file)(const std::filesystem::path& path, std::uint32_t max_side,
+                            FloatRgbImage& out, std::string& error) = nullptr;
     // Format from the extension; pixels stored unassociated.
     bool (*write_file)(const std::filesystem::path& path, const RgbaImage& image,
                        std::string& error) = nullptr;

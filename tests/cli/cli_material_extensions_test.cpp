@@ -54,9 +54,10 @@ const std::uint8_t* sphere_centre(const Png& p, int row, int column) {
 
 std::uint64_t extension_bytes(const std::string& model, const std::string& name) {
     const std::string png = temp_path(name + ".png"), report = temp_path(name + ".json");
-    const CliRun r = run_cli("render '" + model + "' -o " + png +
-                             " --width 64 --height 48 --frames 1 --environment none --report " +
-                             report + " --validation --no-cache");
+    const CliRun r =
+        run_cli("render '" + model + "' -o " + png +
+                " --width 64 --height 48 --frames 1 --environment none --report " + report +
+                " --validation --cache-dir '" + SHERPA_TEST_TEXTURE_CACHE + "'");
     EXPECT_EQ(r.exit_code, 0) << r.out;
     const auto j = sherpa::test::read_json(report);
     std::filesystem::remove(png);

@@ -2,7 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // The path tracer's closest hit: the surface's BRDF inputs from the same functions the
 // raster's lit shading calls (forward.frag): base colour, metallic-roughness or
-// specular-glossiness, the normal map, emission. The occlusion texture is not read:
+// specular-glossiness, KHR_materials_ior and _specular (the raster's dielectric_fresnel),
+// the normal map, emission. The occlusion texture is not read:
 // the path tracer traces occlusion.
 #define SHERPA_PATH_TRACE
 #define SHERPA_NO_DERIVATIVES
@@ -13,6 +14,12 @@
 #include "surface_views.glsl"
 #include "brdf.glsl"
 #include "path_payload.glsl"
+// The material extension blocks at this pass's binding 9 (the raster's is 8).
+#define SHERPA_MATERIAL_EXT_DECLARED
+layout(set = 1, binding = 9, std430) readonly buffer MaterialExtensionBlock {
+    uvec4 material_ext[];
+};
+#include "material_ext.glsl"
 
 layout(location = 0) rayPayloadInEXT PathPayload payload;
 hitAttributeEXT vec2 bary;
@@ -43,7 +50,14 @@ void main() {
         s = spec_gloss_surface(base.rgb, sg.rgb, sg.a, sn, v);
     } else {
         const vec2 mr = metallic_roughness(m, metallic_roughness_texel(m, x, h.uv0, h.uv1));
-        s = metal_rough_surface(base.rgb, mr.x, mr.y, sn, v);
+        if (x.extensions == NO_EXTENSION) {
+            s = metal_rough_surface(base.rgb, mr.x, mr.y, sn, v);
+        } else { // KHR_materials_ior, KHR_materials_specular
+            vec3 f0;
+            float f90;
+            dielectric_fresnel(extension_index(x), h.uv0, h.uv1, f0, f90);
+            s = metal_rough_surface(base.rgb, mr.x, mr.y, f0, f90, sn, v);
+        }
     }
     payload.normal = s.n;
     payload.roughness = s.roughness;

@@ -37,6 +37,7 @@ void main() {
     payload.hit = 1u;
     payload.geometric = dot(g, v) < 0.0 ? -g : g;
     payload.flags = 0u;
+    payload.light_luminance = 0.0;
     // Lines and points have no surface: unlit, as the raster draws them.
     if (x.unlit != 0u || (h.flags & (MESH_LINES | MESH_POINTS)) != 0u) {
         payload.flags = PATH_HIT_UNLIT;
@@ -65,4 +66,11 @@ void main() {
     payload.f0 = s.f0;
     payload.f90 = s.f90;
     payload.emission = emission(m, x, h.uv0, h.uv1);
+    // The light list's rule (emissive_lights.cpp): static meshes whose material emits,
+    // below the luminance cap; its density for multiple importance sampling.
+    if (pc.light_inv_power > 0.0 && (h.flags & MESH_MOTION) == 0u && m.emissive_tex != TEX_BLACK) {
+        const vec3 e = m.emissive_factor.rgb * m.emissive_factor.w;
+        const float lum = dot(e, vec3(0.2126, 0.7152, 0.0722));
+        payload.light_luminance = lum > 0.0 && lum <= 1e20 ? lum : 0.0;
+    }
 }

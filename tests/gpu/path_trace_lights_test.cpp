@@ -5,6 +5,7 @@
 // samples) and the estimated error at the same sample count is far lower. Hostile
 // emission (infinite factor, 1e30 strength) gives a named warning and a finite image.
 #include "gpu_test_support.h"
+#include "path_trace_renderer.h"
 #include "sphere_scenes.h"
 
 #include <sherpa/render/emissive_lights.h>
@@ -100,15 +101,7 @@ TEST(EmissiveLightsCpu, ListFollowsPowerAndSkipsWhatCannotBeSampled) {
 
 class PathTraceLights : public GpuTest {
 protected:
-    static gpu::Renderer& rt() {
-        static std::unique_ptr<gpu::Renderer> r = [] {
-            gpu::RendererOptions options;
-            options.ray_tracing = true;
-            options.textures = test_texture_settings();
-            return std::make_unique<gpu::Renderer>(*GpuEnvironment::get().context, options);
-        }();
-        return *r;
-    }
+    static gpu::Renderer& rt() { return path_trace_renderer(); }
     static void TearDownTestSuite() { rt().unload(); }
 
     // The floor from above the light (its single-sided back is invisible from there), in

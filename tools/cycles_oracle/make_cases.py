@@ -41,8 +41,8 @@ def ior(value, color, roughness):
 # Tolerances: the difference measured here (docs/path_tracer.md) with a margin; the
 # diffuse spheres differ most, by definition (Principled's diffuse is not glTF's).
 CASES = [
-    ('white diffuse', pbr([0.8, 0.8, 0.8], 1.0), 0.04),
-    ('red plastic', pbr([0.8, 0.1, 0.1], 0.5), 0.025),
+    ('white diffuse', pbr([0.8, 0.8, 0.8], 1.0), 0.045),
+    ('red plastic', pbr([0.8, 0.1, 0.1], 0.5), 0.03),
     ('green glossy', pbr([0.1, 0.6, 0.2], 0.2), 0.012),
     ('mirror', pbr([1.0, 1.0, 1.0], 0.0, 1.0), 0.004),
     ('gold', pbr([1.0, 0.78, 0.34], 0.3, 1.0), 0.004),
@@ -52,6 +52,12 @@ CASES = [
     ('emission strength', emissive([0.2, 0.3, 0.1], 3.0), 0.003),
     ('ior 2', ior(2.0, [0.0, 0.0, 0.0], 0.1), 0.004),
 ]
+
+
+# An emissive panel above the grid, facing down, out of the camera's view: every sphere is
+# also lit by an emissive mesh (the path tracer samples its triangles as lights, Cycles
+# its own way). (centre, half width in x, half depth in z, emissive colour, strength).
+PANEL = ((0.0, 2.6, 1.5), 2.0, 0.5, [1.0, 0.9, 0.8], 2.5)
 
 
 def sphere():
@@ -73,6 +79,17 @@ def sphere():
     return len(pos), len(idx), blob
 
 
+def panel():
+    """PANEL as two triangles whose front (counter-clockwise) faces -Y: positions,
+    normals, 16-bit indices, packed."""
+    (x, y, z), hx, hz = PANEL[0], PANEL[1], PANEL[2]
+    pos = [(x - hx, y, z - hz), (x + hx, y, z - hz), (x + hx, y, z + hz), (x - hx, y, z + hz)]
+    blob = b''.join(struct.pack('<3f', *p) for p in pos)
+    blob += struct.pack('<3f', 0.0, -1.0, 0.0) * 4
+    blob += struct.pack('<6H', 0, 1, 2, 0, 2, 3)
+    return blob, pos
+
+
 def grid():
     """Sphere centres (x, y) 1 apart, row by row from the top left, and the yfov that
     shows them all with a margin."""
@@ -86,6 +103,8 @@ def grid():
 def document():
     count, icount, blob = sphere()
     v = count * 12
+    panel_blob, panel_pos = panel()
+    p0 = len(blob)
     centres, yfov = grid()
     extensions = sorted({e for _, m, _ in CASES for e in m.get('extensions', {})})
     doc = {
@@ -95,21 +114,29 @@ def document():
         'nodes': [], 'meshes': [], 'materials': [],
         'cameras': [{'type': 'perspective',
                      'perspective': {'yfov': yfov, 'aspectRatio': 1.0, 'znear': 0.1, 'zfar': 100.0}}],
-        'buffers': [{'byteLength': len(blob),
-                     'uri': 'data:application/octet-stream;base64,' + base64.b64encode(blob).decode()}],
+        'buffers': [{'byteLength': len(blob) + len(panel_blob),
+                     'uri': 'data:application/octet-stream;base64,' +
+                            base64.b64encode(blob + panel_blob).decode()}],
         'bufferViews': [
-            {'buffer': 0, 'byteOffset': 0, 'byteLength': 2 * v, 'target': 34962},
+            {'buffer': 0, 'byteOffset': 0, 'byteLength': v, 'target': 34962},
+            {'buffer': 0, 'byteOffset': v, 'byteLength': v, 'target': 34962},
             {'buffer': 0, 'byteOffset': 2 * v, 'byteLength': icount * 2, 'target': 34963},
+            {'buffer': 0, 'byteOffset': p0, 'byteLength': 48, 'target': 34962},
+            {'buffer': 0, 'byteOffset': p0 + 48, 'byteLength': 48, 'target': 34962},
+            {'buffer': 0, 'byteOffset': p0 + 96, 'byteLength': 12, 'target': 34963},
         ],
         'accessors': [
-            {'bufferView': 0, 'byteOffset': 0, 'componentType': 5126, 'count': count, 'type': 'VEC3',
+            {'bufferView': 0, 'componentType': 5126, 'count': count, 'type': 'VEC3',
              'min': [-RADIUS] * 3, 'max': [RADIUS] * 3},
-            {'bufferView': 0, 'byteOffset': v, 'componentType': 5126, 'count': count, 'type': 'VEC3'},
-            {'bufferView': 1, 'componentType': 5123, 'count': icount, 'type': 'SCALAR'},
+            {'bufferView': 1, 'componentType': 5126, 'count': count, 'type': 'VEC3'},
+            {'bufferView': 2, 'componentType': 5123, 'count': icount, 'type': 'SCALAR'},
+            {'bufferView': 3, 'componentType': 5126, 'count': 4, 'type': 'VEC3',
+             'min': [min(p[k] for p in panel_pos) for k in range(3)],
+             'max': [max(p[k] for p in panel_pos) for k in range(3)]},
+            {'bufferView': 4, 'componentType': 5126, 'count': 4, 'type': 'VEC3'},
+            {'bufferView': 5, 'componentType': 5123, 'count': 6, 'type': 'SCALAR'},
         ],
     }
-    if extensions:
-        doc['extensionsUsed'] = extensions
     cases = []
     pixels_per_unit = SIZE / 2 / math.tan(yfov / 2)
     for i, ((name, material, tolerance), (x, y)) in enumerate(zip(CASES, centres)):
@@ -124,6 +151,13 @@ def document():
                       'y': SIZE / 2 - y / DISTANCE * pixels_per_unit,
                       'radius': INNER * RADIUS / math.sqrt(DISTANCE ** 2 - RADIUS ** 2) * pixels_per_unit,
                       'max_diff': tolerance})
+    panel_material = emissive(PANEL[3], PANEL[4])
+    doc['materials'].append(dict(name='panel', **panel_material))
+    doc['meshes'].append({'name': 'panel', 'primitives': [
+        {'attributes': {'POSITION': 3, 'NORMAL': 4}, 'indices': 5, 'material': len(doc['materials']) - 1}]})
+    doc['scenes'][0]['nodes'].append(len(doc['nodes']))
+    doc['nodes'].append({'name': 'panel', 'mesh': len(doc['meshes']) - 1})
+    doc['extensionsUsed'] = sorted(set(extensions) | set(panel_material.get('extensions', {})))
     doc['scenes'][0]['nodes'].append(len(doc['nodes']))
     doc['nodes'].append({'name': 'camera', 'camera': 0, 'translation': [0.0, 0.0, DISTANCE]})
     return doc, {'size': SIZE, 'spheres': cases}

@@ -2,7 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // The path tracer's closest hit: the surface's BRDF inputs from the same functions the
 // raster's lit shading calls (forward.frag): base colour, metallic-roughness or
-// specular-glossiness, the normal map, emission. The occlusion texture is not read:
+// specular-glossiness, KHR_materials_ior and _specular (the raster's dielectric_fresnel),
+// the normal map, emission. The occlusion texture is not read:
 // the path tracer traces occlusion.
 #define SHERPA_PATH_TRACE
 #define SHERPA_NO_DERIVATIVES
@@ -13,6 +14,12 @@
 #include "surface_views.glsl"
 #include "brdf.glsl"
 #include "path_payload.glsl"
+// The material extension blocks at this pass's binding 9 (the raster's is 8).
+#define SHERPA_MATERIAL_EXT_DECLARED
+layout(set = 1, binding = 9, std430) readonly buffer MaterialExtensionBlock {
+    uvec4 material_ext[];
+};
+#include "material_ext.glsl"
 
 layout(location = 0) rayPayloadInEXT PathPayload payload;
 hitAttributeEXT vec2 bary;
@@ -30,6 +37,7 @@ void main() {
     payload.hit = 1u;
     payload.geometric = dot(g, v) < 0.0 ? -g : g;
     payload.flags = 0u;
+    payload.light_luminance = 0.0;
     // Lines and points have no surface: unlit, as the raster draws them.
     if (x.unlit != 0u || (h.flags & (MESH_LINES | MESH_POINTS)) != 0u) {
         payload.flags = PATH_HIT_UNLIT;
@@ -43,7 +51,14 @@ void main() {
         s = spec_gloss_surface(base.rgb, sg.rgb, sg.a, sn, v);
     } else {
         const vec2 mr = metallic_roughness(m, metallic_roughness_texel(m, x, h.uv0, h.uv1));
-        s = metal_rough_surface(base.rgb, mr.x, mr.y, sn, v);
+        if (x.extensions == NO_EXTENSION) {
+            s = metal_rough_surface(base.rgb, mr.x, mr.y, sn, v);
+        } else { // KHR_materials_ior, KHR_materials_specular
+            vec3 f0;
+            float f90;
+            dielectric_fresnel(extension_index(x), h.uv0, h.uv1, f0, f90);
+            s = metal_rough_surface(base.rgb, mr.x, mr.y, f0, f90, sn, v);
+        }
     }
     payload.normal = s.n;
     payload.roughness = s.roughness;
@@ -51,4 +66,11 @@ void main() {
     payload.f0 = s.f0;
     payload.f90 = s.f90;
     payload.emission = emission(m, x, h.uv0, h.uv1);
+    // The light list's rule (emissive_lights.cpp): static meshes whose material emits,
+    // below the luminance cap; its density for multiple importance sampling.
+    if (pc.light_inv_power > 0.0 && (h.flags & MESH_MOTION) == 0u && m.emissive_tex != TEX_BLACK) {
+        const vec3 e = m.emissive_factor.rgb * m.emissive_factor.w;
+        const float lum = dot(e, vec3(0.2126, 0.7152, 0.0722));
+        payload.light_luminance = lum > 0.0 && lum <= 1e20 ? lum : 0.0;
+    }
 }

@@ -20,5 +20,6 @@ struct PathPayload {
     uint seed;      // set by the tracer: any-hit draws stochastic transparency from it
     vec3 emission;
     float f90; // Surface::f90 (brdf.glsl): 1 but for KHR_materials_specular's dielectrics
+    float light_luminance; // emitted luminance if the hit triangle is in the light list, else 0
 };
 #endif

@@ -176,6 +176,7 @@ void Renderer::Impl::load(const Scene& source, std::unique_ptr<GpuScene> gpu_sce
                            "(or it was turned off: --rt off)");
         acceleration = std::make_unique<SceneAccelerationStructures>(*resources, source, *scene,
                                                                      options.acceleration);
+        emissive_lights_ = emissive_lights(source);
     }
     culling.build(*scene);
     pose_.build(source, *scene);

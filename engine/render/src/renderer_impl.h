@@ -129,6 +129,8 @@ private:
     std::unique_ptr<PathTracePass> path_;
     std::unique_ptr<EnvironmentDistribution> environment_distribution_;
     std::uint64_t path_environment_ = ~0ull; // environment generation path_ samples
+    EmissiveLights emissive_lights_;         // of the loaded scene (ray tracing only)
+    std::uint64_t path_lights_ = ~0ull;      // scene generation path_'s light list is of
     std::uint64_t path_key_ = 0;             // what the accumulation is of
     std::uint32_t path_samples_ = 0;
     PathTraceFrame last_path_; // of the last presented or compared path-traced side

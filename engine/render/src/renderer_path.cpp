@@ -33,6 +33,10 @@ PathTraceFrame Renderer::Impl::record_path(VkCommandBuffer cmd, FrameSlot& slot,
                                                           : EnvironmentDistribution{});
         path_environment_ = environment_generation_;
     }
+    if (path_lights_ != scene_generation_) {
+        path_->set_lights(emissive_lights_);
+        path_lights_ = scene_generation_;
+    }
     const CameraView camera =
         resolve_camera(settings.camera, lighting_, float(settings.width) / float(settings.height));
     GPUFrameData constants = lighting_constants(settings);
@@ -47,6 +51,7 @@ PathTraceFrame Renderer::Impl::record_path(VkCommandBuffer cmd, FrameSlot& slot,
     f.tlas = acceleration->tlas();
     f.materials = scene->materials().buffer();
     f.material_extras = scene->materials().extras_buffer();
+    f.material_extensions = scene->materials().extensions_buffer();
     f.frame_data = resources->get(slot.frame_data).buffer.get();
     if (environment) f.environment = environment->specular_descriptor();
     f.width = settings.width;
@@ -70,6 +75,7 @@ PathTraceFrame Renderer::Impl::record_path(VkCommandBuffer cmd, FrameSlot& slot,
     key.add(environment_generation_);
     key.add(rt_pose_key_);
     key.add(visibility_version_);
+    key.add(settings.path.light_sampling);
     PathTraceFrame out;
     out.restarted = settings.path.restart || key.h != path_key_ || path_samples_ == 0 ||
                     path_->width() != f.width || path_->height() != f.height;
@@ -80,6 +86,7 @@ PathTraceFrame Renderer::Impl::record_path(VkCommandBuffer cmd, FrameSlot& slot,
                   ? 0
                   : std::min(add, settings.path.max_samples - path_samples_);
     if (path_samples_ == 0) add = std::max(add, 1u); // an image needs a sample
+    f.light_sampling = settings.path.light_sampling;
     f.first_sample = path_samples_;
     f.samples = add;
     path_->record(cmd, f, readback);

@@ -336,10 +336,10 @@ struct GPUPathPushConstants {
     std::uint32_t samples;      // samples per pixel in this launch
     std::uint32_t max_bounces;  // surface interactions a path may scatter at
     std::uint32_t seed;         // PathTraceSettings::seed
-    std::uint32_t reserved;
-    glm::uvec2 env_size;  // columns, rows of the environment distribution (0: none)
-    float sun_cos_radius; // cosine of the sun's angular radius
-    float max_radiance;   // a sample's luminance is capped here (overflow guard)
+    float light_inv_power;      // 1 / the emissive triangles' power; 0: no light list
+    glm::uvec2 env_size;        // columns, rows of the environment distribution (0: none)
+    float sun_cos_radius;       // cosine of the sun's angular radius
+    float max_radiance;         // a sample's luminance is capped here (overflow guard)
 };
 static_assert(offsetof(GPUPathPushConstants, geometries) == 64);
 static_assert(offsetof(GPUPathPushConstants, first_sample) == 72);

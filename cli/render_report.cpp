@@ -126,6 +126,9 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
                                  {"motion", m.motion},
                                  {"total", m.total()},
                                  {"render_targets", renderer.resident().render_target_bytes},
+                                 // KHR_materials_transmission's background (in render_targets):
+                                 // 0 without a transmissive material.
+                                 {"transmission_target", renderer.resident().transmission_target_bytes},
                                  {"environment", renderer.resident().environment.bytes}};
         // What the geometry buffers were made for: acceleration-structure build input
         // and index device addresses only with ray tracing enabled (`--rt`).

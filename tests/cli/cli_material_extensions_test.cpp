@@ -66,10 +66,11 @@ std::uint64_t extension_bytes(const std::string& model, const std::string& name)
 
 TEST(CliMaterialExtensions, OnlyMaterialsThatUseThemPay) {
     EXPECT_EQ(extension_bytes(sherpa::test::gltf_asset("DamagedHelmet"), "helmet"), 0u);
-    // Ten materials with KHR_materials_ior only: an index and one block of 16 bytes each.
-    EXPECT_EQ(extension_bytes(sweep("ior_sweep"), "ior"), 320u);
+    // Ten materials with KHR_materials_ior only: a 32-byte index and one block of 16
+    // bytes each.
+    EXPECT_EQ(extension_bytes(sweep("ior_sweep"), "ior"), 480u);
     // Ten with KHR_materials_specular only: an index and a 96-byte block each.
-    EXPECT_EQ(extension_bytes(sweep("specular_sweep"), "specular"), 1120u);
+    EXPECT_EQ(extension_bytes(sweep("specular_sweep"), "specular"), 1280u);
 }
 
 TEST(CliMaterialExtensions, IorViewShowsEachSpheresIor) {

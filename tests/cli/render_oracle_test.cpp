@@ -73,6 +73,19 @@ const OracleCase kCases[] = {
      0.0f, 23.0, 0.03, 0.10},
     {"specular_sweep_city_aces", "sweep:specular_sweep", "city.exr", kSweepCamera, "aces", 0.0f,
      24.5, 0.033, 0.045},
+    // The transmission family in front of a striped unlit backdrop (make_sweeps.py's
+    // with_backdrop): both renderers refract what they drew of the opaque scene first
+    // (three.js's transmission render target, Sherpa's TransmissionPass, both at the
+    // frame's size). Per-sphere checks where a row changes monotonically; the roughness
+    // and dispersion files are compared as images only.
+    {"transmission_sweep_studio_neutral", "sweep:transmission_sweep", "studio.exr", kSweepCamera,
+     "neutral", 0.0f, 20.0, 0.05, 0.08},
+    {"transmission_roughness_studio_neutral", "sweep:transmission_roughness", "studio.exr",
+     kSweepCamera, "neutral", 0.0f, 20.0, 0.05},
+    {"volume_sweep_studio_neutral", "sweep:volume_sweep", "studio.exr", kSweepCamera, "neutral",
+     0.0f, 20.0, 0.05, 0.08},
+    {"dispersion_sweep_studio_neutral", "sweep:dispersion_sweep", "studio.exr", kSweepCamera,
+     "neutral", 0.0f, 20.0, 0.05},
 };
 
 // A sample model by name, or "sweep:NAME": an authored sweep in tests/data/material_sweeps.

@@ -15,6 +15,7 @@
 #include "refraction.glsl"
 #include "tonemap.glsl"
 #include "punctual.glsl"
+#include "diffuse_transmission.glsl"
 
 layout(location = 0) in vec3 in_world_pos;
 layout(location = 1) in vec3 in_normal;
@@ -131,6 +132,7 @@ void main() {
         vec3 shading_n = mapped_normal(m, x, t, b, n, uv0, uv1);
         Surface s;
         float transmission = 0.0;
+        vec4 diffuse_transmission = vec4(0.0); // rgb colour, a factor
         vec4 mr_texel = vec4(1.0);
         if (x.workflow == WORKFLOW_SPECULAR_GLOSSINESS) {
             vec4 sg = specular_glossiness(x, uv0, uv1);
@@ -146,13 +148,16 @@ void main() {
                 dielectric_fresnel(ext, uv0, uv1, f0, f90);
                 s = metal_rough_surface(base.rgb, mr.x, mr.y, f0, f90, shading_n, v);
                 transmission = material_transmission(ext, uv0, uv1);
+                diffuse_transmission = material_diffuse_transmission(ext, uv0, uv1);
                 if (TRANSMISSION_BACKGROUND && transmission > 0.0) discard;
             }
         }
         // KHR_materials_transmission: that share of the diffuse passes through instead
         // (the raster's refraction below; brdf.glsl's layering).
         const vec3 opaque_diffuse = s.diffuse;
-        s.diffuse *= 1.0 - transmission;
+        // KHR_materials_diffuse_transmission: of what remains, that share scatters to
+        // the other side (diffuse_transmission.glsl).
+        s.diffuse *= (1.0 - transmission) * (1.0 - diffuse_transmission.a);
         // The sun (and its shadow lookup) only where some pixel of the SIMD group
         // faces it: a uniform branch, so a CPU rasterizer skips the work.
         vec3 sun_l = -normalize(frame.sun_direction.xyz);
@@ -161,6 +166,16 @@ void main() {
             float view_depth = -(frame.view * vec4(in_world_pos, 1.0)).z;
             float shadow = sun_shadow(in_world_pos, shadow_normal, view_depth);
             c = brdf_times_cos(s, sun_l) * frame.sun_radiance.rgb * shadow;
+        }
+        if (diffuse_transmission.a > 0.0) {
+            float view_depth = -(frame.view * vec4(in_world_pos, 1.0)).z;
+            // The back is lit where the front is not: the sun's map is looked up from the
+            // back side.
+            float shadow = sun_shadow(in_world_pos, -shadow_normal, view_depth);
+            vec3 albedo = opaque_diffuse * diffuse_transmission.rgb * diffuse_transmission.a *
+                          (1.0 - transmission) *
+                          beer_lambert(material_attenuation(ext), material_thickness(ext, uv0, uv1));
+            c += diffuse_transmission_light(s, albedo, in_world_pos, shadow);
         }
         for (uint i = 0u; i < frame.params.y; ++i) c += punctual_light(s, frame.lights[i], in_world_pos);
         float ao = x.workflow == WORKFLOW_SPECULAR_GLOSSINESS ? occlusion(m, x, uv0, uv1)

@@ -27,7 +27,8 @@ void main() {
     // the transmission family: transmission.glsl).
     const GPUExtensionIndex ext = extension_index(x);
     // A volume's back faces are its boundary whatever doubleSided says (pt.rahit).
-    const bool volume = ext.volume != NO_EXTENSION && ext.transmission != NO_EXTENSION;
+    const bool volume = ext.volume != NO_EXTENSION &&
+                        (ext.transmission != NO_EXTENSION || ext.diffuse_transmission != NO_EXTENSION);
     vec3 n, t, b;
     shading_frame(h.normal, h.tangent, (m.double_sided != 0u || volume) && !h.front, n, t, b);
     const vec3 v = -gl_WorldRayDirectionEXT;
@@ -37,6 +38,7 @@ void main() {
     payload.geometric = dot(g, v) < 0.0 ? -g : g;
     payload.flags = 0u;
     payload.transmission_tint = vec3(0.0);
+    payload.diffuse_transmission_tint = vec3(0.0);
     payload.front = h.front ? 1u : 0u;
     // Lines and points have no surface: unlit, as the raster draws them.
     if (x.unlit != 0u || (h.flags & (MESH_LINES | MESH_POINTS)) != 0u) {
@@ -62,7 +64,10 @@ void main() {
             // The base colour tints the light once, where it enters a volume (or at a
             // thin wall); leaving, the lobe is untinted.
             payload.transmission_tint = transmission * (volume && !h.front ? vec3(1.0 - mr.x) : s.diffuse);
-            s.diffuse *= 1.0 - transmission;
+            // KHR_materials_diffuse_transmission: that share of the rest scatters through.
+            const vec4 dt = material_diffuse_transmission(ext, h.uv0, h.uv1);
+            payload.diffuse_transmission_tint = (1.0 - transmission) * dt.a * dt.rgb * s.diffuse;
+            s.diffuse *= (1.0 - transmission) * (1.0 - dt.a);
             payload.ior = material_ior(ext);
             payload.attenuation = volume ? material_attenuation(ext) : vec4(-1.0);
             payload.dispersion = material_dispersion(ext);

@@ -26,6 +26,8 @@ struct PathPayload {
     // the dispersion, and whether the ray arrived on the front face.
     vec3 transmission_tint;
     float ior;
+    vec3 diffuse_transmission_tint; // KHR_materials_diffuse_transmission's lobe (0: none)
+    float pad0;
     vec4 attenuation;
     float dispersion;
     uint front;

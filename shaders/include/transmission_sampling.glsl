@@ -80,4 +80,22 @@ bool sample_transmission(Surface s, vec3 tint, float ior, bool volume, bool ente
     weight = tint * one_minus_f * (g2 / g1);
     return true;
 }
+
+// KHR_materials_diffuse_transmission's BTDF times the cosine for light arriving from l
+// on the other side (0 on the viewer's side).
+vec3 diffuse_transmission_times_cos(Surface s, vec3 tint, vec3 l) {
+    vec3 f = fresnel_schlick(s.f0, s.f90, clamp(dot(s.n, s.v), 1e-4, 1.0));
+    return (1.0 - f) * tint * max(-dot(s.n, l), 0.0) / PI;
+}
+
+// KHR_materials_diffuse_transmission: a cosine-distributed direction on the other side
+// (about -n), weighted by the lobe's tint and (1 - F) at n.v.
+bool sample_diffuse_transmission(Surface s, vec3 tint, vec3 t, vec3 b, inout uint rng, out vec3 l,
+                                 out vec3 weight) {
+    vec2 u = vec2(next_random(rng), next_random(rng));
+    float r = sqrt(u.x), phi = 2.0 * PI * u.y;
+    l = r * cos(phi) * t + r * sin(phi) * b - sqrt(max(0.0, 1.0 - u.x)) * s.n;
+    weight = tint * (1.0 - fresnel_schlick(s.f0, s.f90, clamp(dot(s.n, s.v), 1e-4, 1.0)));
+    return dot(s.n, l) < 0.0;
+}
 #endif

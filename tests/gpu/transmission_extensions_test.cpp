@@ -39,6 +39,7 @@ TEST(TransmissionExtensions, DrawnOnesAreSupported) {
     EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_transmission"));
     EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_volume"));
     EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_dispersion"));
+    EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_diffuse_transmission"));
     const LoadResult r = load_scene((test::data_dir() / "material_sweeps/volume_sweep.gltf").string());
     ASSERT_TRUE(r) << r.error;
     for (const std::string& w : r.scene->warnings)

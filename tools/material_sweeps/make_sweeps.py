@@ -239,13 +239,36 @@ def dispersion_sweep():
                                    'KHR_materials_dispersion']))
 
 
+def diffuse_transmission_sweep():
+    """diffuseTransmissionFactor 0 .. 1 on a white rough dielectric (row 1), and factor 1
+    with diffuseTransmissionColorFactor from white to red (row 2): light from behind the
+    sphere comes through its diffuse lobe."""
+    def dt(factor, color):
+        return {'pbrMetallicRoughness': pbr(WHITE, 0.5), 'extensions': {
+            'KHR_materials_diffuse_transmission': {'diffuseTransmissionFactor': factor,
+                                                   'diffuseTransmissionColorFactor': color}}}
+    row1 = [(f'diffuse transmission {f}', dt(f, WHITE)) for f in (0.0, 0.25, 0.5, 0.75, 1.0)]
+    row2 = [(f'diffuse transmission colour {g}', dt(1.0, [1.0, g, g]))
+            for g in (1.0, 0.75, 0.5, 0.25, 0.0)]
+    doc = document('KHR_materials_diffuse_transmission sweep', [row1, row2],
+                   ['KHR_materials_diffuse_transmission', 'KHR_lights_punctual'])
+    # A point light behind the rows: what comes through to the front.
+    doc['extensions'] = {'KHR_lights_punctual': {'lights': [
+        {'type': 'point', 'color': [1.0, 1.0, 1.0], 'intensity': 20.0}]}}
+    doc['scenes'][0]['nodes'].append(len(doc['nodes']))
+    doc['nodes'].append({'name': 'back light', 'translation': [0.0, 0.0, -2.0],
+                         'extensions': {'KHR_lights_punctual': {'light': 0}}})
+    return doc
+
+
 def main():
     out = sys.argv[1]
     for name, doc in (('ior_sweep', ior_sweep()), ('specular_sweep', specular_sweep()),
                       ('specular_textures', specular_textures()),
                       ('transmission_sweep', transmission_sweep()),
                       ('transmission_roughness', transmission_roughness()),
-                      ('volume_sweep', volume_sweep()), ('dispersion_sweep', dispersion_sweep())):
+                      ('volume_sweep', volume_sweep()), ('dispersion_sweep', dispersion_sweep()),
+                      ('diffuse_transmission_sweep', diffuse_transmission_sweep())):
         with open(f'{out}/{name}.gltf', 'w') as f:
             json.dump(doc, f, indent=1)
             f.write('\n')

@@ -74,7 +74,8 @@ private:
     };
     void buildExtensionRows();
     // The transmission family's rows (material_fields_transmission.cpp).
-    void appendTransmissionRows(const gpu::MaterialExtensionPlace& place, const MaterialInstance& m);
+    void appendTransmissionRows(const gpu::MaterialExtensionPlace& place,
+                                const MaterialInstance& m);
     QVariant extensionData(const ExtensionRow& r, int column, int role) const;
     int specGlossRows() const { return specGloss() ? 3 : 0; }
 

@@ -45,7 +45,8 @@ void MaterialFieldsModel::appendTransmissionRows(const gpu::MaterialExtensionPla
         const bool infinite = v->attenuation_distance == std::numeric_limits<float>::infinity();
         add(place.volume, offsetof(gpu::GPUVolumeBlock, attenuation), "ext.volume.attenuation",
             "KHR_materials_volume.attenuationColor, attenuationDistance", "vec4",
-            Format::vec(glm::vec4(v->attenuation_color, infinite ? 0.0f : v->attenuation_distance)) +
+            Format::vec(
+                glm::vec4(v->attenuation_color, infinite ? 0.0f : v->attenuation_distance)) +
                 (infinite ? tr(" (distance infinite: none)") : QString()));
         add(place.volume, offsetof(gpu::GPUVolumeBlock, thickness_factor),
             "ext.volume.thickness_factor", "KHR_materials_volume.thicknessFactor", "float",
@@ -53,7 +54,8 @@ void MaterialFieldsModel::appendTransmissionRows(const gpu::MaterialExtensionPla
         add(place.volume, offsetof(gpu::GPUVolumeBlock, thickness_tex), "ext.volume.thickness_tex",
             "KHR_materials_volume.thicknessTexture", "uint", texture(v->thickness), &v->thickness);
     }
-    if (const auto& d = m.diffuse_transmission; d && place.diffuse_transmission != gpu::kNoExtension) {
+    if (const auto& d = m.diffuse_transmission;
+        d && place.diffuse_transmission != gpu::kNoExtension) {
         add(place.diffuse_transmission, offsetof(gpu::GPUDiffuseTransmissionBlock, color_factor),
             "ext.diffuse_transmission.color_factor",
             "KHR_materials_diffuse_transmission.diffuseTransmissionColorFactor, "

@@ -4,6 +4,7 @@
 // sphere's value, the lit view refracts the backdrop, the path tracer draws them, and
 // the bad-input file renders. Runs with --validation (any message fails).
 #include "cli/cli_run.h"
+#include "cli/sweep_images.h"
 #include "test_support.h"
 
 #include <sherpa/texture/image.h>
@@ -27,31 +28,11 @@ std::string temp_path(const std::string& name) {
         .string();
 }
 
-std::string sweep(const std::string& name) {
-    return (sherpa::test::data_dir() / "material_sweeps" / (name + ".gltf")).string();
-}
-
-constexpr const char* kSweepCamera = " --camera eye=0,0,5:target=0,0,0:fov=45";
-
-struct Png {
-    std::uint32_t w = 0, h = 0;
-    std::vector<std::uint8_t> rgba;
-};
-
-Png read_png(const std::string& path) {
-    Png p;
-    std::string error;
-    EXPECT_TRUE(sherpa::tex::read_png_rgba8(path, p.w, p.h, p.rgba, error)) << error;
-    return p;
-}
-
-// The pixel at the centre of sphere (row, column) of a sweep seen by kSweepCamera.
-const std::uint8_t* sphere_centre(const Png& p, int row, int column) {
-    const double half = 5.0 * std::tan(22.5 * 3.14159265358979 / 180.0);
-    const double x = (column - 2.0) / (half * p.w / p.h), y = (0.5 - row) / half;
-    const auto px = std::uint32_t(p.w * 0.5 * (1.0 + x)), py = std::uint32_t(p.h * 0.5 * (1.0 - y));
-    return &p.rgba[(std::size_t(py) * p.w + px) * 4];
-}
+using sherpa::test::kSweepCamera;
+using sherpa::test::Png;
+using sherpa::test::read_png;
+using sherpa::test::sphere_centre;
+using sherpa::test::sweep;
 
 // Mean of channel `ch` over the 9x9 pixels about a sphere's centre (the backdrop's
 // stripes are about 3 pixels a period at 160 pixels wide).
@@ -69,10 +50,10 @@ double centre_mean(const Png& p, int row, int column, int ch) {
 Png render(const std::string& model, const std::string& view, const std::string& extra = "",
            const std::string& report = "") {
     const std::string png = temp_path(view + ".png");
-    const CliRun r = run_cli("render '" + model + "' -o " + png + " --width 160 --height 120 --view " +
-                             view + kSweepCamera + extra +
-                             (report.empty() ? "" : " --report " + report) +
-                             " --validation --no-cache");
+    const CliRun r =
+        run_cli("render '" + model + "' -o " + png + " --width 160 --height 120 --view " + view +
+                kSweepCamera + extra + (report.empty() ? "" : " --report " + report) +
+                " --validation --no-cache");
     EXPECT_EQ(r.exit_code, 0) << r.out;
     Png p = read_png(png);
     std::filesystem::remove(png);
@@ -138,7 +119,8 @@ TEST(CliTransmission, DiffuseTransmissionLetsBackLightThrough) {
         // Factor 0 (row 1, left) against factor 1 (row 2, left: the same place below the
         // light's height): the front of the transmitting one is lit from behind.
         EXPECT_LT(centre_mean(p, 0, 0, 0) + 30, centre_mean(p, 1, 0, 0)) << extra;
-        means.push_back({centre_mean(p, 0, 0, 0), centre_mean(p, 1, 0, 0), centre_mean(p, 1, 4, 0)});
+        means.push_back(
+            {centre_mean(p, 0, 0, 0), centre_mean(p, 1, 0, 0), centre_mean(p, 1, 4, 0)});
     }
     ASSERT_EQ(means.size(), 2u);
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(means[0][i], means[1][i], 12.0) << i;

@@ -80,7 +80,8 @@ TEST_F(PathTraceVolumeTest, SlabTransmittanceFollowsBeerLambert) {
     rt.set_environment(&uniform);
     const std::vector<float> thickness = {0.5f, 1.0f, 2.0f};
     const float colour = 0.5f, distance = 1.0f;
-    auto scene = load(write_temp("pt_slabs.gltf", slab_row_gltf(thickness, colour, distance)).string());
+    auto scene =
+        load(write_temp("pt_slabs.gltf", slab_row_gltf(thickness, colour, distance)).string());
     EXPECT_TRUE(scene->warnings.empty()) << scene->warnings.front();
     rt.load(*scene);
     gpu::RenderSettings s = furnace_view(int(thickness.size()), 48);
@@ -95,7 +96,8 @@ TEST_F(PathTraceVolumeTest, SlabTransmittanceFollowsBeerLambert) {
         double sum = 0.0;
         int n = 0;
         for (std::uint32_t y = 16; y < 32; ++y)
-            for (std::uint32_t x = 48 * std::uint32_t(i) + 16; x < 48 * std::uint32_t(i) + 32; ++x) {
+            for (std::uint32_t x = 48 * std::uint32_t(i) + 16; x < 48 * std::uint32_t(i) + 32;
+                 ++x) {
                 const float* p = &img.sums[(std::size_t(y) * img.width + x) * 4];
                 sum += p[0] / img.samples;
                 ++n;

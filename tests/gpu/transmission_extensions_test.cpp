@@ -40,7 +40,8 @@ TEST(TransmissionExtensions, DrawnOnesAreSupported) {
     EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_volume"));
     EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_dispersion"));
     EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_diffuse_transmission"));
-    const LoadResult r = load_scene((test::data_dir() / "material_sweeps/volume_sweep.gltf").string());
+    const LoadResult r =
+        load_scene((test::data_dir() / "material_sweeps/volume_sweep.gltf").string());
     ASSERT_TRUE(r) << r.error;
     for (const std::string& w : r.scene->warnings)
         EXPECT_EQ(w.find("not implemented"), std::string::npos) << w;
@@ -132,8 +133,8 @@ TEST(TransmissionExtensions, BlocksHoldTheValuesAndOnlyUsersPay) {
     const auto t = block_at<gpu::GPUTransmissionBlock>(b, b.places[8].transmission);
     EXPECT_EQ(t.factor, 0.5f);
     EXPECT_EQ(t.texture, 100u);
-    EXPECT_EQ(t.uv.row0.w, 1.0f); // TEXCOORD_1
-    EXPECT_EQ(t.uv.row0.x, 2.0f); // scale
+    EXPECT_EQ(t.uv.row0.w, 1.0f);  // TEXCOORD_1
+    EXPECT_EQ(t.uv.row0.x, 2.0f);  // scale
     EXPECT_EQ(t.uv.row0.z, 0.25f); // offset
     const auto v = block_at<gpu::GPUVolumeBlock>(b, b.places[8].volume);
     EXPECT_EQ(v.attenuation, glm::vec4(0.5f, 0.25f, 1.0f, 2.0f));
@@ -142,8 +143,7 @@ TEST(TransmissionExtensions, BlocksHoldTheValuesAndOnlyUsersPay) {
 }
 
 TEST(TransmissionExtensions, ASceneWithoutThemPaysNothing) {
-    const LoadResult r =
-        load_scene((test::data_dir() / "material_sweeps/ior_sweep.gltf").string());
+    const LoadResult r = load_scene((test::data_dir() / "material_sweeps/ior_sweep.gltf").string());
     ASSERT_TRUE(r) << r.error;
     const gpu::MaterialExtensionBuffer b = layout(*r.scene);
     EXPECT_EQ(b.transmissive_materials, 0u);

@@ -73,8 +73,9 @@ MaterialExtensionBuffer build_material_extensions(std::span<const MaterialInstan
         if (!ior && !specular && !transmission && !diffuse_transmission && !volume && !dispersion)
             continue;
         MaterialExtensionPlace& place = out.places[i];
-        place.index = append(out.words, GPUExtensionIndex{kNoExtension, kNoExtension, 0, 0, kNoExtension,
-                                                           kNoExtension, kNoExtension, kNoExtension});
+        place.index =
+            append(out.words, GPUExtensionIndex{kNoExtension, kNoExtension, 0, 0, kNoExtension,
+                                                kNoExtension, kNoExtension, kNoExtension});
         if (ior) place.ior = append(out.words, GPUIorBlock{*m.ior, 0.0f, 0.0f, 0.0f});
         if (specular) {
             const MaterialSpecular& s = *m.specular;

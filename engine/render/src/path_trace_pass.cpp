@@ -71,11 +71,16 @@ PathTracePass::PathTracePass(Context& context, ResourceManager& resources,
         // The material extension blocks (shaders/include/pt_material_ext.glsl).
         {9, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kHitStages, nullptr},
     };
-    const VkDescriptorBindingFlags flags[kBindings] = {
-        0, 0, 0,
-        0, 0, VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
-        0, 0, VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
-        VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT};
+    const VkDescriptorBindingFlags flags[kBindings] = {0,
+                                                       0,
+                                                       0,
+                                                       0,
+                                                       0,
+                                                       VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
+                                                       0,
+                                                       0,
+                                                       VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
+                                                       VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT};
     auto flags_info = vk_init<VkDescriptorSetLayoutBindingFlagsCreateInfo>(
         VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_BINDING_FLAGS_CREATE_INFO);
     flags_info.bindingCount = kBindings;

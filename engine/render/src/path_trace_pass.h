@@ -21,7 +21,8 @@ struct PathTracedFrame {
     VkDescriptorSet bindless = VK_NULL_HANDLE;
     VkAccelerationStructureKHR tlas = VK_NULL_HANDLE;
     VkBuffer materials = VK_NULL_HANDLE, material_extras = VK_NULL_HANDLE;
-    VkBuffer material_extensions = VK_NULL_HANDLE; // the extension blocks; null: no material has one
+    VkBuffer material_extensions =
+        VK_NULL_HANDLE;                   // the extension blocks; null: no material has one
     VkBuffer frame_data = VK_NULL_HANDLE; // GPUFrameData: lights, sun, environment, display
     VkDescriptorImageInfo environment{};  // the specular cube; no view: no environment
     std::uint32_t width = 0, height = 0;

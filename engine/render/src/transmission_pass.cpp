@@ -20,7 +20,8 @@ constexpr VkFormat kRadianceFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 TransmissionPass::TransmissionPass(Context& context, ResourceManager& resources,
                                    VkDescriptorSetLayout textures_layout,
                                    VkDescriptorSetLayout frame_layout)
-    : context_(context), resources_(resources), textures_layout_(textures_layout), frame_layout_(frame_layout) {}
+    : context_(context), resources_(resources), textures_layout_(textures_layout),
+      frame_layout_(frame_layout) {}
 
 TransmissionPass::~TransmissionPass() {
     release();
@@ -85,8 +86,7 @@ void TransmissionPass::ensure_target(FrameContext& f) {
         auto si = vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
         si.magFilter = si.minFilter = VK_FILTER_LINEAR;
         si.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
-        si.addressModeU = si.addressModeV = si.addressModeW =
-            VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+        si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
         si.maxLod = VK_LOD_CLAMP_NONE;
         sampler_ = resources_.images().create_sampler(si);
     }
@@ -121,20 +121,20 @@ void TransmissionPass::record(FrameContext& f) {
     const Image& depth = resources_.images().get(depth_);
     VkImage image = color.image.get();
     // Level 0 becomes the attachment (an earlier frame's fragment shaders read it).
-    transition(f.cmd, {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                       VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
-                       VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, 0, 1});
-    transition(f.cmd, {depth.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                       VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                       VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
-                           VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-                       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
-                           VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-                       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
-                           VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT});
+    transition(f.cmd,
+               {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, 0, 1});
+    transition(
+        f.cmd,
+        {depth.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+         VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+         VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+         VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+         VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+         VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+             VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT});
     auto ca = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
     ca.imageView = level0_.get();
     ca.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
@@ -143,7 +143,8 @@ void TransmissionPass::record(FrameContext& f) {
     // Alpha 0 where no surface is: refraction.glsl adds the environment there; with a
     // solid background its colour (as radiance, as three.js clears its target).
     const bool environment_background = f.environment && f.settings.background != Background::Color;
-    const glm::vec3 cc = environment_background ? glm::vec3(0.0f) : glm::vec3(f.settings.clear_color);
+    const glm::vec3 cc =
+        environment_background ? glm::vec3(0.0f) : glm::vec3(f.settings.clear_color);
     ca.clearValue.color = {{cc.r, cc.g, cc.b, 0.0f}};
     auto da = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
     da.imageView = depth.view.get();
@@ -169,8 +170,8 @@ void TransmissionPass::record(FrameContext& f) {
     CullStats tally;
     set_depth(f.cmd, VK_COMPARE_OP_GREATER, true);
     const auto view = static_cast<std::uint32_t>(DebugView::Lit);
-    draw_groups(g, DrawPipeline{PipelineId::Count, view, false}, AlphaMode::Opaque,
-                camera_view(g), tally);
+    draw_groups(g, DrawPipeline{PipelineId::Count, view, false}, AlphaMode::Opaque, camera_view(g),
+                tally);
     draw_groups(g, DrawPipeline{PipelineId::Count, view, false}, AlphaMode::Mask, camera_view(g),
                 tally);
     vkCmdEndRendering(f.cmd);
@@ -184,9 +185,9 @@ void TransmissionPass::record(FrameContext& f) {
     std::int32_t w = static_cast<std::int32_t>(width_), h = static_cast<std::int32_t>(height_);
     for (std::uint32_t level = 1; level < levels_; ++level) {
         transition(f.cmd, {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                           VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_BLIT_BIT,
-                           VK_ACCESS_2_TRANSFER_WRITE_BIT, level, 1});
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
+                           VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, level, 1});
         const std::int32_t nw = std::max(w / 2, 1), nh = std::max(h / 2, 1);
         VkImageBlit blit{};
         blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, 1};
@@ -202,10 +203,11 @@ void TransmissionPass::record(FrameContext& f) {
         w = nw;
         h = nh;
     }
-    transition(f.cmd, {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_BLIT_BIT,
-                       VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_TRANSFER_READ_BIT,
-                       VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
+    transition(f.cmd,
+               {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_BLIT_BIT,
+                VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_TRANSFER_READ_BIT,
+                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
 }
 
 } // namespace sherpa::gpu

@@ -15,8 +15,7 @@ namespace sherpa::gpu {
 class TransmissionPass {
 public:
     TransmissionPass(Context& context, ResourceManager& resources,
-                     VkDescriptorSetLayout textures_layout,
-                     VkDescriptorSetLayout frame_layout);
+                     VkDescriptorSetLayout textures_layout, VkDescriptorSetLayout frame_layout);
     ~TransmissionPass();
     TransmissionPass(const TransmissionPass&) = delete;
     TransmissionPass& operator=(const TransmissionPass&) = delete;

@@ -15,8 +15,8 @@ namespace {
 // One number of an extension object: absent gives `fallback` silently; not a number,
 // NaN or infinite (as a 32-bit float) gives `fallback` with a warning; outside
 // [lo, hi] it is clamped with a warning.
-float checked_number(ImportContext& ctx, const tinygltf::Value& e, const char* key,
-                     float fallback, float lo, float hi, const std::string& where) {
+float checked_number(ImportContext& ctx, const tinygltf::Value& e, const char* key, float fallback,
+                     float lo, float hi, const std::string& where) {
     if (!e.IsObject() || !e.Has(key)) return fallback;
     const tinygltf::Value& v = e.Get(key);
     const double d = v.IsNumber() ? v.GetNumberAsDouble() : std::nan("");
@@ -45,13 +45,12 @@ glm::vec3 checked_color(ImportContext& ctx, const tinygltf::Value& e, const char
     const glm::vec3 c = glm::vec3(vec_or(e, key, glm::vec4(std::nanf("")), 3));
     const std::string w = where + "." + key;
     if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
-        ctx.warn(w + ": not three finite numbers; the default [" + number_text(fallback.x) +
-                 ", " + number_text(fallback.y) + ", " + number_text(fallback.z) + "] is used");
+        ctx.warn(w + ": not three finite numbers; the default [" + number_text(fallback.x) + ", " +
+                 number_text(fallback.y) + ", " + number_text(fallback.z) + "] is used");
         return fallback;
     }
     const glm::vec3 clamped = glm::clamp(c, glm::vec3(0.0f), glm::vec3(hi));
-    if (clamped != c)
-        ctx.warn(w + ": components outside 0.." + number_text(hi) + " are clamped");
+    if (clamped != c) ctx.warn(w + ": components outside 0.." + number_text(hi) + " are clamped");
     return clamped;
 }
 

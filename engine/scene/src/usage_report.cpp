@@ -27,7 +27,8 @@ std::array<bool, kVertexAttributeCount> attributes_used(const MaterialInstance& 
           shaded && material.transmission ? &material.transmission->texture : &none,
           shaded && material.volume ? &material.volume->thickness : &none,
           shaded && material.diffuse_transmission ? &material.diffuse_transmission->texture : &none,
-          shaded && material.diffuse_transmission ? &material.diffuse_transmission->color : &none}) {
+          shaded && material.diffuse_transmission ? &material.diffuse_transmission->color
+                                                  : &none}) {
         if (!slot->present()) continue;
         if (material.unlit && slot != &material.base_color)
             continue; // unlit reads base colour only

@@ -202,10 +202,10 @@ static_assert(sizeof(GPUSpecularBlock) == 96);
 
 // KHR_materials_transmission (shaders/include/transmission_structs.glsl).
 struct GPUTransmissionBlock {
-    float factor;              // transmissionFactor
-    std::uint32_t texture;     // R channel, linear (white where absent)
+    float factor;          // transmissionFactor
+    std::uint32_t texture; // R channel, linear (white where absent)
     std::uint32_t pad0, pad1;
-    GPUTextureTransform uv;    // KHR_texture_transform of transmissionTexture
+    GPUTextureTransform uv; // KHR_texture_transform of transmissionTexture
 };
 static_assert(offsetof(GPUTransmissionBlock, texture) == 4);
 static_assert(offsetof(GPUTransmissionBlock, uv) == 16);
@@ -213,9 +213,9 @@ static_assert(sizeof(GPUTransmissionBlock) == 48);
 
 // KHR_materials_volume.
 struct GPUVolumeBlock {
-    glm::vec4 attenuation;           // xyz attenuationColor, w attenuationDistance (inf: none)
-    float thickness_factor;          // local units of the mesh
-    std::uint32_t thickness_tex;     // G channel, linear
+    glm::vec4 attenuation;       // xyz attenuationColor, w attenuationDistance (inf: none)
+    float thickness_factor;      // local units of the mesh
+    std::uint32_t thickness_tex; // G channel, linear
     std::uint32_t pad0, pad1;
     GPUTextureTransform thickness_uv;
 };
@@ -226,9 +226,9 @@ static_assert(sizeof(GPUVolumeBlock) == 64);
 
 // KHR_materials_diffuse_transmission.
 struct GPUDiffuseTransmissionBlock {
-    glm::vec4 color_factor;     // xyz diffuseTransmissionColorFactor, w diffuseTransmissionFactor
-    std::uint32_t texture;      // A channel, linear
-    std::uint32_t color_tex;    // RGB, sRGB
+    glm::vec4 color_factor;  // xyz diffuseTransmissionColorFactor, w diffuseTransmissionFactor
+    std::uint32_t texture;   // A channel, linear
+    std::uint32_t color_tex; // RGB, sRGB
     std::uint32_t pad0, pad1;
     GPUTextureTransform uv;       // of diffuseTransmissionTexture
     GPUTextureTransform color_uv; // of diffuseTransmissionColorTexture

@@ -105,10 +105,10 @@ struct MaterialInstance {
     std::optional<SpecularGlossiness> specular_glossiness;
     // Material extensions, each set only when the material uses it (and then drawn with
     // a block of its own in the GPU extension buffer; absent ones cost nothing).
-    std::optional<float> ior;                 // KHR_materials_ior: >= 1, or 0 (F0 = 1)
-    std::optional<MaterialSpecular> specular; // KHR_materials_specular
-    std::optional<MaterialTransmission> transmission;                // KHR_materials_transmission
-    std::optional<MaterialVolume> volume;                            // KHR_materials_volume
+    std::optional<float> ior;                         // KHR_materials_ior: >= 1, or 0 (F0 = 1)
+    std::optional<MaterialSpecular> specular;         // KHR_materials_specular
+    std::optional<MaterialTransmission> transmission; // KHR_materials_transmission
+    std::optional<MaterialVolume> volume;             // KHR_materials_volume
     std::optional<MaterialDiffuseTransmission> diffuse_transmission; // ..._diffuse_transmission
     std::optional<float> dispersion; // KHR_materials_dispersion: Abbe-number scale, >= 0
     // The names in the material's `extensions` object, as written (sorted): what

@@ -28,6 +28,9 @@ void MaterialFieldsModel::appendTransmissionRows(const gpu::MaterialExtensionPla
                                    QString::fromLatin1(property), QString::fromLatin1(type), value,
                                    slot && slot->present() ? slot->texture : -1});
     };
+    if (place.transmission == gpu::kNoExtension && place.volume == gpu::kNoExtension &&
+        place.diffuse_transmission == gpu::kNoExtension && place.dispersion == gpu::kNoExtension)
+        return;
     add(place.index, offsetof(gpu::GPUExtensionIndex, transmission), "ext.index.transmission",
         "GPUExtensionIndex word 1", "uvec4",
         tr("transmission %1, volume %2, diffuse transmission %3, dispersion %4")

@@ -36,6 +36,9 @@ struct OracleCase {
     // Sweeps only (0 elsewhere): the largest difference of one sphere's mean colour
     // (8-bit sRGB / 255, per channel) between the two renderers.
     double max_sphere_diff = 0.0;
+    // Rows (bit 0: the first) whose spheres change monotonically along the sweep, checked
+    // for that and for their spread; the others are compared sphere by sphere only.
+    unsigned monotonic_rows = 3;
 };
 
 void PrintTo(const OracleCase& c, std::ostream* os) {
@@ -73,6 +76,22 @@ const OracleCase kCases[] = {
      0.0f, 23.0, 0.03, 0.10},
     {"specular_sweep_city_aces", "sweep:specular_sweep", "city.exr", kSweepCamera, "aces", 0.0f,
      24.5, 0.033, 0.045},
+    // The transmission family in front of a striped unlit backdrop (make_sweeps.py's
+    // with_backdrop): both renderers refract what they drew of the opaque scene first
+    // (three.js's transmission render target, Sherpa's TransmissionPass, both at the
+    // frame's size). Per-sphere checks where a row changes monotonically; the roughness
+    // and dispersion files are compared as images only.
+    // Row 1 of the transmission sweep (transmission 1 .. 0 over a white diffuse) is not
+    // monotonic in either renderer; row 1 of the volume sweep (orange attenuation) keeps
+    // its red channel, the peak, flat. Both are compared sphere by sphere only.
+    {"transmission_sweep_studio_neutral", "sweep:transmission_sweep", "studio.exr", kSweepCamera,
+     "neutral", 0.0f, 21.5, 0.04, 0.17, 2u},
+    {"transmission_roughness_studio_neutral", "sweep:transmission_roughness", "studio.exr",
+     kSweepCamera, "neutral", 0.0f, 26.0, 0.02},
+    {"volume_sweep_studio_neutral", "sweep:volume_sweep", "studio.exr", kSweepCamera, "neutral",
+     0.0f, 24.5, 0.025, 0.06, 2u},
+    {"dispersion_sweep_studio_neutral", "sweep:dispersion_sweep", "studio.exr", kSweepCamera,
+     "neutral", 0.0f, 23.0, 0.03},
 };
 
 // A sample model by name, or "sweep:NAME": an authored sweep in tests/data/material_sweeps.
@@ -136,8 +155,13 @@ void check_sweep(const OracleCase& c, const Image& ours, const Image& theirs) {
             if (col == 0) first_a = a, first_b = b;
             last_a = a, last_b = b;
             // Monotonic within a step of the 8-bit mean's noise.
-            EXPECT_GE(peak(a), prev_a - 0.002) << c.name << " row " << row << " sherpa col " << col;
-            EXPECT_GE(peak(b), prev_b - 0.002) << c.name << " row " << row << " three col " << col;
+            const bool monotonic = (c.monotonic_rows >> row) & 1u;
+            if (monotonic) {
+                EXPECT_GE(peak(a), prev_a - 0.002)
+                    << c.name << " row " << row << " sherpa col " << col;
+                EXPECT_GE(peak(b), prev_b - 0.002)
+                    << c.name << " row " << row << " three col " << col;
+            }
             prev_a = peak(a), prev_b = peak(b);
             char buf[96];
             std::snprintf(buf, sizeof buf, " (%.3f %.3f %.3f | %.3f %.3f %.3f)", a.x, a.y, a.z, b.x,
@@ -150,6 +174,7 @@ void check_sweep(const OracleCase& c, const Image& ours, const Image& theirs) {
                     "%.4f (sherpa | three):%s\n",
                     c.name, row, worst, spread_a, spread_b, line.c_str());
         EXPECT_LE(worst, c.max_sphere_diff) << c.name << " row " << row;
+        if (!((c.monotonic_rows >> row) & 1u)) continue;
         EXPECT_GT(spread_b, 0.03) << c.name << " row " << row << ": the sweep shows too little";
         EXPECT_GT(spread_a / spread_b, 0.6) << c.name << " row " << row;
         EXPECT_LT(spread_a / spread_b, 1.6) << c.name << " row " << row;

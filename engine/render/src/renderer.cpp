@@ -30,6 +30,8 @@ Renderer::Impl::Impl(Context& ctx, const RendererOptions& opts)
         slots_.push_back(std::move(slot));
     }
     create_frame_sets();
+    transmission_ = std::make_unique<TransmissionPass>(context, *resources, bindless->layout(),
+                                                       frame_layout_.get());
 }
 
 void Renderer::Impl::create_frame_sets() {
@@ -49,11 +51,15 @@ void Renderer::Impl::create_frame_sets() {
         // The material extension blocks (shaders/include/material_ext.glsl): partially
         // bound, so a scene whose materials use no extension binds (and holds) nothing.
         {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+        // The transmission background (TransmissionPass, shaders/include/refraction.glsl):
+        // partially bound, written only for scenes with a transmissive material.
+        {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
     };
     const VkDescriptorBindingFlags binding_flags[] = {0,
                                                       0,
                                                       0,
                                                       0,
+                                                      VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
                                                       VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
                                                       VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
                                                       VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
@@ -68,7 +74,7 @@ void Renderer::Impl::create_frame_sets() {
     const VkDescriptorPoolSize sizes[] = {
         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFramesInFlight},
         {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3 * kFramesInFlight},
-        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 5 * kFramesInFlight}};
+        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 6 * kFramesInFlight}};
     frame_pool_ =
         create_descriptor_pool(device, kFramesInFlight, sizes, "vkCreateDescriptorPool(frame)");
     no_materials_ =
@@ -199,6 +205,7 @@ void Renderer::Impl::load(const Scene& source, std::unique_ptr<GpuScene> gpu_sce
 void Renderer::Impl::unload() {
     // Frames in flight may still read the scene's buffers and textures: wait for
     // them, so that the bindless slots the scene gives back can be reused at once.
+    if (transmission_) transmission_->release();
     for (auto& slot : slots_) {
         wait_slot(*slot);
         // Sized for the scene's instances: it goes with the scene.
@@ -363,6 +370,7 @@ ResidentStats Renderer::resident() const {
         impl_->acceleration && impl_->scene ? &impl_->acceleration->stats() : nullptr;
     out.environment = impl_->environment ? impl_->environment->stats() : EnvironmentStats{};
     out.render_target_bytes = impl_->render_target_bytes();
+    out.transmission_target_bytes = impl_->transmission_bytes();
     return out;
 }
 

@@ -14,6 +14,7 @@ namespace {
 enum Timestamp : std::uint32_t {
     kFrameStart,
     kAfterShadows,
+    kAfterTransmission,
     kAfterPrepass,
     kAfterOpaque,
     kAfterMask,
@@ -50,11 +51,14 @@ void Renderer::Impl::record_passes(FrameContext& f) {
     ensure_depth(f.target.width, f.target.height);
     pose_.record(f); // before the frame data: the shadow fit and cache read the pose
     begin_frame(f);
+    transmission_->prepare(f); // writes the slot's set: before it is bound
     culling.record(f);
     bind_frame(f);
     timestamp(f, kFrameStart);
     shadows_.record(f);
     timestamp(f, kAfterShadows);
+    transmission_->record(f); // only scenes with a transmissive material
+    timestamp(f, kAfterTransmission);
     begin_camera_rendering(f);
     floor_.record(f);
     prepass_.record(f);

@@ -6,6 +6,7 @@
 #include "passes.h"
 #include "path_trace_pass.h"
 #include "rt_view_pass.h"
+#include "transmission_pass.h"
 
 #include <sherpa/gpu/bindless.h>
 #include <sherpa/render/acceleration_structures.h>
@@ -42,6 +43,7 @@ public:
     // Results of the last completed frame recorded in `slot` (waits for it).
     FrameStats slot_stats(std::uint32_t slot);
     std::uint64_t render_target_bytes() const;
+    std::uint64_t transmission_bytes() const { return transmission_->bytes(); }
     // The presenter's reduced-resolution image (`format`, width x height, colour
     // attachment and blit source), made or remade when the size changes.
     const Image& scaled_target(VkFormat format, std::uint32_t width, std::uint32_t height);
@@ -151,6 +153,7 @@ private:
     DepthPrepass prepass_;
     ForwardPass opaque_{AlphaMode::Opaque}, mask_{AlphaMode::Mask}, blend_{AlphaMode::Blend};
     BackgroundPass background_;
+    std::unique_ptr<TransmissionPass> transmission_; // made with the frame sets' layout
     OverlayPass overlays_{pose_};
     HighlightPass highlight_;
 

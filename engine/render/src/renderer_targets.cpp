@@ -56,7 +56,7 @@ const Image& Renderer::Impl::scaled_target(VkFormat format, std::uint32_t width,
 }
 
 std::uint64_t Renderer::Impl::render_target_bytes() const {
-    std::uint64_t bytes = shadows_.bytes();
+    std::uint64_t bytes = shadows_.bytes() + transmission_->bytes();
     for (ImageHandle h : {color_, depth_, scaled_, side_})
         if (h.valid()) bytes += resources->images().get(h).allocation_size;
     return bytes;

@@ -1,5 +1,6 @@
 // glTF samplers, images, textures and materials -> engine records.
 #include "accessor_reader.h"
+#include "gltf_material_values.h"
 #include "import_context.h"
 #include "import_error.h"
 
@@ -55,6 +56,8 @@ TextureSlot read_slot(ImportContext& ctx, int index, int tex_coord,
     return slot;
 }
 
+} // namespace
+
 // A textureInfo inside an extension object (tinygltf leaves those as JSON values).
 TextureSlot read_value_slot(ImportContext& ctx, const tinygltf::Value& info,
                             const std::string& where, TextureRole role) {
@@ -83,6 +86,8 @@ glm::vec4 vec_or(const tinygltf::Value& obj, const char* key, glm::vec4 fallback
     }
     return out;
 }
+
+namespace {
 
 // KHR_materials_pbrSpecularGlossiness: its diffuse replaces the base colour; the
 // extension's defaults are those of its schema (all ones).
@@ -394,6 +399,7 @@ void import_material(ImportContext& ctx, std::size_t i) {
         if (const auto it = src.extensions.find("KHR_materials_specular");
             it != src.extensions.end())
             m.specular = read_specular(ctx, it->second, where);
+        read_volume_extensions(ctx, src.extensions, m, where);
         ctx.scene.materials.push_back(std::move(m));
     }
 }

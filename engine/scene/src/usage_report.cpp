@@ -16,12 +16,19 @@ std::array<bool, kVertexAttributeCount> attributes_used(const MaterialInstance& 
     // a texture read without its TEXCOORD stream would sample one texel everywhere.
     const TextureSlot none;
     const bool specular = material.specular && !material.specular_glossiness;
+    const bool shaded = !material.unlit && !material.specular_glossiness;
     for (const TextureSlot* slot :
          {&material.base_color, &material.metallic_roughness, &material.normal, &material.occlusion,
           &material.emissive,
           material.specular_glossiness ? &material.specular_glossiness->specular_glossiness : &none,
           specular ? &material.specular->specular : &none,
-          specular ? &material.specular->specular_color : &none}) {
+          specular ? &material.specular->specular_color : &none,
+          // The transmission family (drawn on the same materials as specular).
+          shaded && material.transmission ? &material.transmission->texture : &none,
+          shaded && material.volume ? &material.volume->thickness : &none,
+          shaded && material.diffuse_transmission ? &material.diffuse_transmission->texture : &none,
+          shaded && material.diffuse_transmission ? &material.diffuse_transmission->color
+                                                  : &none}) {
         if (!slot->present()) continue;
         if (material.unlit && slot != &material.base_color)
             continue; // unlit reads base colour only

@@ -74,6 +74,16 @@ std::vector<TextureUse> collect_texture_uses(const Scene& scene) {
             add(m.specular->specular, kRoleLinear, std::nullopt);
             add(m.specular->specular_color, kRoleColor, std::nullopt);
         }
+        // The transmission family, on the same materials: factors in linear channels,
+        // the diffuse transmission colour in sRGB.
+        if (!m.unlit && !m.specular_glossiness) {
+            if (m.transmission) add(m.transmission->texture, kRoleLinear, std::nullopt);
+            if (m.volume) add(m.volume->thickness, kRoleLinear, std::nullopt);
+            if (m.diffuse_transmission) {
+                add(m.diffuse_transmission->texture, kRoleLinear, std::nullopt);
+                add(m.diffuse_transmission->color, kRoleColor, std::nullopt);
+            }
+        }
     }
     std::vector<TextureUse> out;
     for (auto& [key, use] : uses) {

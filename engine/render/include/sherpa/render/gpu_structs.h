@@ -165,9 +165,18 @@ struct GPUExtensionIndex {
     std::uint32_t specular; // GPUSpecularBlock, or kNoExtension
     std::uint32_t pad0;
     std::uint32_t pad1;
+    // Second word: the transmission family (shaders/include/transmission.glsl).
+    std::uint32_t transmission;         // GPUTransmissionBlock, or kNoExtension
+    std::uint32_t volume;               // GPUVolumeBlock, or kNoExtension
+    std::uint32_t diffuse_transmission; // GPUDiffuseTransmissionBlock, or kNoExtension
+    std::uint32_t dispersion;           // GPUDispersionBlock, or kNoExtension
 };
 static_assert(offsetof(GPUExtensionIndex, specular) == 4);
-static_assert(sizeof(GPUExtensionIndex) == 16);
+static_assert(offsetof(GPUExtensionIndex, transmission) == 16);
+static_assert(offsetof(GPUExtensionIndex, volume) == 20);
+static_assert(offsetof(GPUExtensionIndex, diffuse_transmission) == 24);
+static_assert(offsetof(GPUExtensionIndex, dispersion) == 28);
+static_assert(sizeof(GPUExtensionIndex) == 32);
 
 // KHR_materials_ior.
 struct GPUIorBlock {
@@ -190,6 +199,52 @@ static_assert(offsetof(GPUSpecularBlock, specular_color_tex) == 20);
 static_assert(offsetof(GPUSpecularBlock, specular_uv) == 32);
 static_assert(offsetof(GPUSpecularBlock, color_uv) == 64);
 static_assert(sizeof(GPUSpecularBlock) == 96);
+
+// KHR_materials_transmission (shaders/include/transmission_structs.glsl).
+struct GPUTransmissionBlock {
+    float factor;          // transmissionFactor
+    std::uint32_t texture; // R channel, linear (white where absent)
+    std::uint32_t pad0, pad1;
+    GPUTextureTransform uv; // KHR_texture_transform of transmissionTexture
+};
+static_assert(offsetof(GPUTransmissionBlock, texture) == 4);
+static_assert(offsetof(GPUTransmissionBlock, uv) == 16);
+static_assert(sizeof(GPUTransmissionBlock) == 48);
+
+// KHR_materials_volume.
+struct GPUVolumeBlock {
+    glm::vec4 attenuation;       // xyz attenuationColor, w attenuationDistance (inf: none)
+    float thickness_factor;      // local units of the mesh
+    std::uint32_t thickness_tex; // G channel, linear
+    std::uint32_t pad0, pad1;
+    GPUTextureTransform thickness_uv;
+};
+static_assert(offsetof(GPUVolumeBlock, thickness_factor) == 16);
+static_assert(offsetof(GPUVolumeBlock, thickness_tex) == 20);
+static_assert(offsetof(GPUVolumeBlock, thickness_uv) == 32);
+static_assert(sizeof(GPUVolumeBlock) == 64);
+
+// KHR_materials_diffuse_transmission.
+struct GPUDiffuseTransmissionBlock {
+    glm::vec4 color_factor;  // xyz diffuseTransmissionColorFactor, w diffuseTransmissionFactor
+    std::uint32_t texture;   // A channel, linear
+    std::uint32_t color_tex; // RGB, sRGB
+    std::uint32_t pad0, pad1;
+    GPUTextureTransform uv;       // of diffuseTransmissionTexture
+    GPUTextureTransform color_uv; // of diffuseTransmissionColorTexture
+};
+static_assert(offsetof(GPUDiffuseTransmissionBlock, texture) == 16);
+static_assert(offsetof(GPUDiffuseTransmissionBlock, color_tex) == 20);
+static_assert(offsetof(GPUDiffuseTransmissionBlock, uv) == 32);
+static_assert(offsetof(GPUDiffuseTransmissionBlock, color_uv) == 64);
+static_assert(sizeof(GPUDiffuseTransmissionBlock) == 96);
+
+// KHR_materials_dispersion.
+struct GPUDispersionBlock {
+    float dispersion; // 20 / Abbe number
+    float pad0, pad1, pad2;
+};
+static_assert(sizeof(GPUDispersionBlock) == 16);
 
 // mesh_flags bits (common.glsl). Bits 0-5 are the streams (1 << VertexAttribute);
 // a lines or points mesh sets one topology bit.

@@ -88,8 +88,12 @@ struct ResidentStats {
     const AccelerationStats* acceleration = nullptr;
     // The environment: sizes, GPU bytes, build time (present false: none).
     EnvironmentStats environment;
-    // Bytes of the renderer's own images (offscreen target, depth, shadow map).
+    // Bytes of the renderer's own images (offscreen target, depth, shadow map, and the
+    // transmission background below).
     std::uint64_t render_target_bytes = 0;
+    // KHR_materials_transmission's background target and its depth (TransmissionPass):
+    // 0 unless the scene has a transmissive material and the lit view was drawn.
+    std::uint64_t transmission_target_bytes = 0;
 };
 
 struct RendererOptions {

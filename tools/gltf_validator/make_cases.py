@@ -174,6 +174,11 @@ def case(g, d):
     yield c("invalid_attribute", setp(["meshes", 0, "primitives", 0, "attributes", "normal"], 1))
     yield c("unequal_accessor_count", setp(["accessors", 2, "count"], 2))
     yield c("indices_invalid_format", setp(["accessors", 3, "componentType"], 5122))
+    # POSITION and NORMAL share view 0 without byteStride: the second in document order
+    # (NORMAL; "NORMAL" < "POSITION" by name) is the one named.
+    yield c("attributes_share_view", lambda j: (setp(["bufferViews", 0, "byteLength"], 72)(j),
+                                                 setp(["accessors", 1, "bufferView"], 0)(j),
+                                                 setp(["accessors", 1, "byteOffset"], 36)(j)))
     yield c("tangent_without_normal", lambda j: j["accessors"].append({"bufferView": 8, "componentType": 5126, "count": 3, "type": "VEC4"}) or
             setp(["meshes", 0, "primitives", 0, "attributes"], {"POSITION": 0, "TANGENT": 9, "TEXCOORD_0": 2})(j))
     yield c("incompatible_mode", lambda j: setp(["meshes", 0, "primitives", 0, "mode"], 1)(j))

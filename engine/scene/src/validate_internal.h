@@ -4,6 +4,8 @@
 // links; before tinygltf sees the file) and validate_data() over the buffers tinygltf
 // loaded (accessor values). Codes, severities and JSON pointers follow the Khronos
 // glTF-Validator (its ISSUES.md); checks of our own carry SHERPA_ codes.
+#include "gltf_validate.h"
+
 #include <sherpa/scene/validation.h>
 
 #include <cstdint>
@@ -79,6 +81,8 @@ enum class ViewRole : std::uint8_t { None, VertexBuffer, IndexBuffer, IBM, Image
 struct Validation {
     ValidationReport& report;
     const Json& root;
+    // Key order the parse recorded (null: the JSON's own, sorted, order).
+    const DocumentOrder* order = nullptr;
     bool glb = false;
     bool glb_has_bin = false;
     std::vector<AccessorLayout> accessors;
@@ -144,7 +148,8 @@ class DocumentValidator {
 public:
     // `base_dir`: where external URIs resolve (empty: not checked).
     DocumentValidator(const Json& root, std::span<const std::uint8_t> file, bool glb,
-                      ValidationReport& report, std::string base_dir = {});
+                      ValidationReport& report, std::string base_dir = {},
+                      const DocumentOrder* order = nullptr);
     void check_data(std::span<const std::span<const std::uint8_t>> buffers);
     bool glb_has_bin() const { return v_.glb_has_bin; }
 

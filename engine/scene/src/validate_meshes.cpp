@@ -66,6 +66,29 @@ void material_needs(const Json& j, std::set<std::int64_t>& sets, int depth) {
     }
 }
 
+// A primitive's attributes as the file lists them (the Khronos validator's order, which
+// decides which of two accessors sharing a view is named), from the parse's record;
+// the JSON's sorted order where there is none.
+std::vector<std::pair<std::string_view, const Json*>>
+in_document_order(const Validation& v, const Json& attributes, std::size_t m, std::size_t p) {
+    std::vector<std::pair<std::string_view, const Json*>> out;
+    if (!attributes.is_object()) return out;
+    out.reserve(attributes.size());
+    const std::vector<std::string>* names = v.order ? v.order->attributes_of(m, p) : nullptr;
+    if (!names || names->size() < attributes.size()) {
+        for (const auto& [name, value] : attributes.items()) out.emplace_back(name, &value);
+        return out;
+    }
+    std::set<std::string_view> seen; // a repeated key: its value is the last, its place the first
+    const bool repeats = names->size() != attributes.size();
+    for (const std::string& name : *names) {
+        if (repeats && !seen.insert(name).second) continue;
+        const auto it = attributes.find(name);
+        if (it != attributes.end()) out.emplace_back(it.key(), &*it);
+    }
+    return out;
+}
+
 } // namespace
 
 void validate_meshes(Validation& v) {
@@ -96,7 +119,8 @@ void validate_meshes(Validation& v) {
             int joints = 0, weights = 0;
             std::set<int> texcoords, colors, joint_sets, weight_sets;
             bool has_normal = false, has_tangent = false, has_position = false;
-            for (const auto& [name, value] : attributes.items()) {
+            for (const auto& [name, value_at] : in_document_order(v, attributes, m, p)) {
+                const Json& value = *value_at;
                 const std::string ap = ptr(attr_where, name);
                 int n = 0;
                 if (name == "POSITION")

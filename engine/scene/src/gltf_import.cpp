@@ -206,6 +206,8 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         const auto decoded_draco = detail::decode_draco_primitives(model);
         detail::ImportContext ctx{model, *scene};
         for (const auto& d : decoded_draco) {
+            if (!d.failed.empty())
+                ctx.undecodable.emplace(std::pair{d.mesh, d.primitive}, d.failed);
             ctx.range_checked.insert(d.range_checked.begin(), d.range_checked.end());
             for (const std::string& w : d.warnings) ctx.warn(w);
         }

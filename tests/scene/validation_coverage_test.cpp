@@ -11,6 +11,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+#include <fstream>
+
 #include "gltf_validate.h" // engine/scene/src: parse_gltf_document, DocumentOrder
 
 namespace {
@@ -73,6 +76,89 @@ TEST(DocumentOrder, SharedViewNamesTheSecondAttributeAsWritten) {
     EXPECT_FALSE(has(r.scene->validation, "MESH_PRIMITIVE_ACCESSOR_WITHOUT_BYTESTRIDE",
                      "/meshes/0/primitives/0/attributes/POSITION"))
         << dump(r.scene->validation);
+}
+
+// Material extension values: the Khronos validator's codes where it knows the
+// extension, SHERPA_ codes where it does not (KHR_materials_diffuse_transmission); the
+// files load either way.
+struct Expect {
+    const char* file;
+    const char* code;
+    const char* pointer;
+};
+
+class MaterialExtension : public ::testing::TestWithParam<Expect> {};
+
+TEST_P(MaterialExtension, LoadsAndNamesTheValue) {
+    const auto r = sherpa::load_scene(case_path(GetParam().file));
+    ASSERT_TRUE(r) << r.error;
+    EXPECT_TRUE(has(r.scene->validation, GetParam().code, GetParam().pointer))
+        << dump(r.scene->validation);
+}
+
+#define EXT "/materials/0/extensions/"
+INSTANTIATE_TEST_SUITE_P(
+    Codes, MaterialExtension,
+    ::testing::Values(
+        Expect{"ext_ior_range.gltf", "VALUE_NOT_IN_RANGE", EXT "KHR_materials_ior/ior"},
+        Expect{"ext_ior_type.gltf", "TYPE_MISMATCH", EXT "KHR_materials_ior/ior"},
+        Expect{"ext_specular_range.gltf", "VALUE_NOT_IN_RANGE",
+               EXT "KHR_materials_specular/specularColorFactor/0"},
+        Expect{"ext_specular_texture.gltf", "UNRESOLVED_REFERENCE",
+               EXT "KHR_materials_specular/specularTexture/index"},
+        Expect{"ext_volume_range.gltf", "VALUE_NOT_IN_RANGE",
+               EXT "KHR_materials_volume/attenuationDistance"},
+        Expect{"ext_volume_no_transmission.gltf", "KHR_MATERIALS_VOLUME_NO_TRANSMISSION",
+               EXT "KHR_materials_volume"},
+        Expect{"ext_volume_no_transmission.gltf", "KHR_MATERIALS_VOLUME_DOUBLE_SIDED",
+               EXT "KHR_materials_volume"},
+        Expect{"ext_dispersion_range.gltf", "KHR_MATERIALS_DISPERSION_NO_VOLUME",
+               EXT "KHR_materials_dispersion"},
+        Expect{"ext_clearcoat_texcoord.gltf",
+               "KHR_MATERIALS_CLEARCOAT_CLEARCOAT_NORMAL_TEXTURE_TEXCOORD",
+               EXT "KHR_materials_clearcoat/clearcoatNormalTexture"},
+        Expect{"ext_no_tangent_space.gltf", "MESH_PRIMITIVE_NO_TANGENT_SPACE",
+               "/meshes/0/primitives/0/material"},
+        Expect{"ext_iridescence_texture_unused.gltf",
+               "KHR_MATERIALS_IRIDESCENCE_THICKNESS_TEXTURE_UNUSED",
+               EXT "KHR_materials_iridescence/iridescenceThicknessTexture"},
+        Expect{"ext_unlit_with_others.gltf", "MULTIPLE_EXTENSIONS", EXT "KHR_materials_unlit"},
+        Expect{"ext_unexpected_property.gltf", "UNEXPECTED_PROPERTY",
+               EXT "KHR_materials_volume/thickness"},
+        Expect{"ext_diffuse_transmission_range.gltf", "SHERPA_VALUE_NOT_IN_RANGE",
+               EXT "KHR_materials_diffuse_transmission/diffuseTransmissionFactor"},
+        Expect{"ext_diffuse_transmission_range.gltf", "SHERPA_VALUE_NOT_IN_RANGE",
+               EXT "KHR_materials_diffuse_transmission/diffuseTransmissionColorFactor/1"}),
+    [](const auto& param_info) {
+        std::string n = std::to_string(param_info.index) + "_" + param_info.param.file + "_" +
+                        param_info.param.code;
+        for (char& c : n)
+            if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+        return n;
+    });
+#undef EXT
+
+// An extension object is read only where extensionsUsed declares it (the Khronos
+// validator stops at UNDECLARED_EXTENSION), and 0 is a valid ior (the value in [1, inf)
+// or exactly 0).
+TEST(MaterialExtension, UndeclaredIsNotReadAndIorZeroIsValid) {
+    auto doc = test::read_json(case_path("ext_ior_range.gltf"));
+    doc.erase("extensionsUsed");
+    auto path = std::filesystem::temp_directory_path() / "sherpa_ext_undeclared.gltf";
+    std::ofstream(path) << doc.dump();
+    auto r = sherpa::load_scene(path.string());
+    ASSERT_TRUE(r) << r.error;
+    EXPECT_TRUE(has(r.scene->validation, "UNDECLARED_EXTENSION",
+                    "/materials/0/extensions/KHR_materials_ior"));
+    EXPECT_FALSE(has(r.scene->validation, "VALUE_NOT_IN_RANGE",
+                     "/materials/0/extensions/KHR_materials_ior/ior"));
+    doc = test::read_json(case_path("ext_ior_range.gltf"));
+    doc["materials"][0]["extensions"]["KHR_materials_ior"]["ior"] = 0;
+    path = std::filesystem::temp_directory_path() / "sherpa_ext_ior_zero.gltf";
+    std::ofstream(path) << doc.dump();
+    r = sherpa::load_scene(path.string());
+    ASSERT_TRUE(r) << r.error;
+    EXPECT_EQ(r.scene->validation.count(Severity::Error), 0u) << dump(r.scene->validation);
 }
 
 } // namespace

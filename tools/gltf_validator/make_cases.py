@@ -249,6 +249,42 @@ def case(g, d):
                                           setp(["materials", 0, "extensions"], {"KHR_materials_unlit": {}})(j)))
     yield c("emissive_strength_zero", lambda j: (j.__setitem__("extensionsUsed", ["KHR_materials_emissive_strength"]),
                                                  setp(["materials", 0, "extensions"], {"KHR_materials_emissive_strength": {"emissiveStrength": 2}})(j)))
+    # Material extensions: values out of their ranges, and what they say about each other.
+    def mext(name, exts, **material):
+        def f(j):
+            j["extensionsUsed"] = sorted(exts)
+            j["materials"][0]["extensions"] = exts
+            j["materials"][0].update(material)
+        return c(name, f)
+    yield mext("ext_ior_range", {"KHR_materials_ior": {"ior": 0.5}})
+    yield mext("ext_ior_type", {"KHR_materials_ior": {"ior": "glass"}})
+    yield mext("ext_specular_range", {"KHR_materials_specular": {"specularFactor": 2, "specularColorFactor": [-1, 1, 1]}})
+    yield mext("ext_specular_texture", {"KHR_materials_specular": {"specularTexture": {"index": 4}}})
+    yield mext("ext_clearcoat_range", {"KHR_materials_clearcoat": {"clearcoatFactor": 2, "clearcoatRoughnessFactor": -1}})
+    yield mext("ext_clearcoat_texcoord", {"KHR_materials_clearcoat": {"clearcoatNormalTexture": {"index": 0, "texCoord": 1}}},
+               normalTexture={"index": 0})
+    yield mext("ext_no_tangent_space", {"KHR_materials_clearcoat": {"clearcoatNormalTexture": {"index": 0}}})
+    yield mext("ext_sheen_range", {"KHR_materials_sheen": {"sheenColorFactor": [2, 0, 0], "sheenRoughnessFactor": 1.5}})
+    yield mext("ext_transmission_range", {"KHR_materials_transmission": {"transmissionFactor": 1.5}})
+    yield mext("ext_volume_range", {"KHR_materials_transmission": {},
+               "KHR_materials_volume": {"thicknessFactor": -1, "attenuationDistance": 0, "attenuationColor": [2, 0, 0]}})
+    yield mext("ext_volume_no_transmission", {"KHR_materials_volume": {"thicknessFactor": 1}}, doubleSided=True)
+    yield mext("ext_iridescence_range", {"KHR_materials_iridescence": {"iridescenceFactor": 2, "iridescenceIor": 0.5,
+               "iridescenceThicknessMinimum": -1, "iridescenceThicknessMaximum": -2}})
+    yield mext("ext_iridescence_texture_unused", {"KHR_materials_iridescence": {
+               "iridescenceThicknessTexture": {"index": 0}, "iridescenceThicknessMinimum": 200, "iridescenceThicknessMaximum": 200}})
+    yield mext("ext_iridescence_without_texture", {"KHR_materials_iridescence": {"iridescenceThicknessMinimum": 50}})
+    yield mext("ext_anisotropy_range", {"KHR_materials_anisotropy": {"anisotropyStrength": 2, "anisotropyRotation": 7}})
+    yield mext("ext_anisotropy_texcoord", {"KHR_materials_anisotropy": {"anisotropyTexture": {"index": 0, "texCoord": 1}}},
+               normalTexture={"index": 0})
+    yield mext("ext_dispersion_range", {"KHR_materials_dispersion": {"dispersion": -1}})
+    yield mext("ext_emissive_strength_range", {"KHR_materials_emissive_strength": {"emissiveStrength": -1}}, emissiveFactor=[1, 1, 1])
+    yield mext("ext_spec_gloss_range", {"KHR_materials_pbrSpecularGlossiness": {"diffuseFactor": [2, 0, 0, 1], "glossinessFactor": -1}})
+    yield mext("ext_unlit_with_others", {"KHR_materials_unlit": {}, "KHR_materials_ior": {"ior": 1.4}})
+    yield mext("ext_unexpected_property", {"KHR_materials_volume": {"thickness": 1}, "KHR_materials_transmission": {}})
+    # Not known to the Khronos validator (UNSUPPORTED_EXTENSION): Sherpa's SHERPA_ codes.
+    yield mext("ext_diffuse_transmission_range", {"KHR_materials_diffuse_transmission": {
+               "diffuseTransmissionFactor": 2, "diffuseTransmissionColorFactor": [0, -1, 0]}})
     yield c("lights_spot_angles", lambda j: (j.__setitem__("extensionsUsed", ["KHR_lights_punctual"]),
             j.__setitem__("extensions", {"KHR_lights_punctual": {"lights": [{"type": "spot", "spot": {"innerConeAngle": 0.5, "outerConeAngle": 0.4}}]}}),
             setp(["nodes", 3, "extensions"], {"KHR_lights_punctual": {"light": 0}})(j)))

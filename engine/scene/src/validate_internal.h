@@ -137,6 +137,9 @@ std::int64_t int_or(const Json& obj, const char* key, std::int64_t fallback);
 std::int64_t ref(const Validation& v, const Json& obj, const char* key, const char* target);
 std::uint32_t components_of(std::string_view type);        // "VEC3" -> 3, 0 when unknown
 std::uint32_t component_size(std::int64_t component_type); // 5126 -> 4, 0 when unknown
+// Whether a material needs a tangent space from its primitives: a normal texture, or
+// a declared clearcoat normal or anisotropy texture.
+bool needs_tangent_space(const Validation& v, const Json& material);
 
 } // namespace sherpa::detail
 

@@ -104,6 +104,16 @@ void validate_meshes(Validation& v) {
     };
     // Per buffer view without byteStride: the vertex accessors that read it.
     std::vector<std::vector<std::int64_t>> view_readers(views.size());
+    // A view without `target` is hinted at its first vertex or index use only.
+    std::vector<std::uint8_t> target_hinted(views.size());
+    auto target_missing = [&](std::int64_t a) {
+        const std::int64_t vi =
+            ref(v, accessors[static_cast<std::size_t>(a)], "bufferView", "bufferViews");
+        if (vi < 0 || target_hinted[static_cast<std::size_t>(vi)]) return false;
+        target_hinted[static_cast<std::size_t>(vi)] = 1;
+        const Json& view = views[static_cast<std::size_t>(vi)];
+        return view.is_object() && !view.contains("target");
+    };
     for (std::size_t m = 0; m < meshes.size(); ++m) {
         const Json& prim_array = Validation::member(meshes[m], "primitives");
         if (!prim_array.is_array()) continue;
@@ -178,7 +188,7 @@ void validate_meshes(Validation& v) {
                           "accessor.min and accessor.max must be defined for POSITION attribute "
                           "accessor.");
                 const Json& view = view_of(a);
-                if (view.is_object() && !view.contains("target"))
+                if (target_missing(a))
                     v.add("BUFFER_VIEW_TARGET_MISSING", Severity::Hint, ap,
                           "bufferView.target should be set for vertex or index data.");
                 const std::int64_t view_offset = int_or(view, "byteOffset", 0);
@@ -269,7 +279,7 @@ void validate_meshes(Validation& v) {
                 if (view.is_object() && view.contains("byteStride"))
                     v.add("MESH_PRIMITIVE_INDICES_ACCESSOR_WITH_BYTESTRIDE", Severity::Error, ip,
                           "bufferView.byteStride must not be defined for indices accessor.");
-                if (view.is_object() && !view.contains("target"))
+                if (target_missing(ia))
                     v.add("BUFFER_VIEW_TARGET_MISSING", Severity::Hint, ip,
                           "bufferView.target should be set for vertex or index data.");
                 element_count = int_or(acc, "count", -1);
@@ -305,6 +315,9 @@ void validate_meshes(Validation& v) {
                                   "Unresolved reference.");
                             continue;
                         }
+                        if (target_missing(as_int(value)))
+                            v.add("BUFFER_VIEW_TARGET_MISSING", Severity::Hint, tp,
+                                  "bufferView.target should be set for vertex or index data.");
                         if (name == "POSITION" &&
                             (!v.accessors[static_cast<std::size_t>(as_int(value))].has_min ||
                              !v.accessors[static_cast<std::size_t>(as_int(value))].has_max))
@@ -330,7 +343,7 @@ void validate_meshes(Validation& v) {
 
             // What the material needs: texture coordinate sets and a tangent space.
             std::set<std::int64_t> sets;
-            bool normal_texture = false;
+            bool normal_texture = false, tangent_space = false;
             if (const std::int64_t mi = ref(v, prim, "material", "materials"); mi >= 0) {
                 const Json& material = v.array("materials")[static_cast<std::size_t>(mi)];
                 material_needs(material, sets, 0);
@@ -344,6 +357,7 @@ void validate_meshes(Validation& v) {
                                   std::to_string(s) + "' attribute.");
                         break;
                     }
+                tangent_space = needs_tangent_space(v, material);
                 if (normal_texture && !has_tangent && has_normal)
                     v.add("MESH_PRIMITIVE_GENERATED_TANGENT_SPACE", Severity::Warning,
                           ptr(where, "material"),
@@ -351,8 +365,14 @@ void validate_meshes(Validation& v) {
                           "provide it. "
                           "Runtime-generated tangent space may be non-portable across "
                           "implementations.");
+                else if (tangent_space && !normal_texture && !has_tangent)
+                    v.add("MESH_PRIMITIVE_NO_TANGENT_SPACE", Severity::Error,
+                          ptr(where, "material"),
+                          "Material requires a tangent space but the mesh primitive does not "
+                          "provide it and the material does not contain a normal map to "
+                          "generate it.");
             }
-            if (has_tangent && !normal_texture)
+            if (has_tangent && !tangent_space)
                 v.add("UNUSED_MESH_TANGENT", Severity::Information, ptr(attr_where, "TANGENT"),
                       "Tangents are not used because the material has no normal texture.");
             for (int t : texcoords)

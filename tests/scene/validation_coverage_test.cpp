@@ -138,6 +138,45 @@ INSTANTIATE_TEST_SUITE_P(
     });
 #undef EXT
 
+// Sparse accessors are read with their overrides applied, after their indices are
+// checked; a matrix whose last row is not (0, 0, 0, 1) is named.
+class SparseAndIbm : public ::testing::TestWithParam<Expect> {};
+
+TEST_P(SparseAndIbm, LoadsAndNamesTheData) {
+    const auto r = sherpa::load_scene(case_path(GetParam().file));
+    ASSERT_TRUE(r) << r.error;
+    EXPECT_TRUE(has(r.scene->validation, GetParam().code, GetParam().pointer))
+        << dump(r.scene->validation);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Codes, SparseAndIbm,
+    ::testing::Values(
+        Expect{"sparse_indices_non_increasing.gltf", "ACCESSOR_SPARSE_INDICES_NON_INCREASING",
+               "/accessors/1/sparse"},
+        Expect{"sparse_index_oob.gltf", "ACCESSOR_SPARSE_INDEX_OOB", "/accessors/1/sparse"},
+        Expect{"sparse_value_non_unit.gltf", "ACCESSOR_VECTOR3_NON_UNIT",
+               "/meshes/0/primitives/0/attributes/NORMAL"},
+        Expect{"sparse_max_mismatch.gltf", "ACCESSOR_MAX_MISMATCH", "/accessors/0/max/0"},
+        Expect{"sparse_max_mismatch.gltf", "ACCESSOR_ELEMENT_OUT_OF_MAX_BOUND",
+               "/accessors/0/max/0"},
+        Expect{"sparse_count.gltf", "ACCESSOR_TOO_LONG", "/accessors/2/sparse/indices"},
+        Expect{"ibm_invalid.gltf", "ACCESSOR_INVALID_IBM", "/skins/0/inverseBindMatrices"}),
+    [](const auto& param_info) {
+        std::string n = std::to_string(param_info.index) + "_" + param_info.param.file;
+        for (char& c : n)
+            if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+        return n;
+    });
+
+// A valid sparse accessor (an override inside the declared bounds) gives no error:
+// reading the overrides adds no false message.
+TEST(SparseAndIbm, ValidSparseAccessorHasNoDataErrors) {
+    const auto r = sherpa::load_scene(case_path("sparse_valid.gltf"));
+    ASSERT_TRUE(r) << r.error;
+    EXPECT_EQ(r.scene->validation.count(Severity::Error), 0u) << dump(r.scene->validation);
+}
+
 // An extension object is read only where extensionsUsed declares it (the Khronos
 // validator stops at UNDECLARED_EXTENSION), and 0 is a valid ior (the value in [1, inf)
 // or exactly 0).

@@ -27,6 +27,7 @@ class Data:
         self.ibm = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]
         self.joints = [(0, 0, 0, 0)] * 3
         self.weights = [(1, 0, 0, 0)] * 3
+        self.extra = b""  # appended after the base data (sparse cases), 4-byte aligned
 
     def pack(self):
         b = b"".join(struct.pack("<3f", *p) for p in self.pos)       # 0: 36
@@ -38,7 +39,7 @@ class Data:
         b += struct.pack("<16f", *self.ibm)                          # 144: 64
         b += b"".join(struct.pack("<4B", *j) for j in self.joints)   # 208: 12
         b += b"".join(struct.pack("<4f", *w) for w in self.weights)  # 220: 48
-        return b                                                     # 268
+        return b + self.extra                                        # 268 + extra
 
 
 def base():
@@ -166,6 +167,27 @@ def case(g, d):
     yield c("index_oob", None, lambda x: setattr(x, "idx", [0, 1, 5]))
     yield c("index_restart", None, lambda x: setattr(x, "idx", [0, 1, 65535]))
     yield c("index_degenerate", None, lambda x: setattr(x, "idx", [0, 1, 1]))
+    def sparse(name, accessor, indices, values, fmt):
+        """Accessor `accessor` gets sparse overrides: ushort `indices`, `values` packed
+        with struct format `fmt`, in two new views after the base data."""
+        ib = struct.pack("<%dH" % len(indices), *indices)
+        ib += b"\0" * (-len(ib) % 4)
+        vb = b"".join(struct.pack(fmt, *x) for x in values)
+        def edit_json(j):
+            n = len(j["bufferViews"])
+            j["bufferViews"] += [{"buffer": 0, "byteOffset": 268, "byteLength": 2 * len(indices)},
+                                 {"buffer": 0, "byteOffset": 268 + len(ib), "byteLength": len(vb)}]
+            j["buffers"][0]["byteLength"] = 268 + len(ib) + len(vb)
+            j["accessors"][accessor]["sparse"] = {"count": len(indices),
+                                                  "indices": {"bufferView": n, "componentType": 5123},
+                                                  "values": {"bufferView": n + 1}}
+        return c(name, edit_json, lambda x: setattr(x, "extra", ib + vb))
+    yield sparse("sparse_indices_non_increasing", 1, [2, 1], [(0, 0, 1)] * 2, "<3f")
+    yield sparse("sparse_index_oob", 1, [1, 3], [(0, 0, 1)] * 2, "<3f")
+    yield sparse("sparse_value_non_unit", 1, [0, 2], [(0, 0, 1), (0, 0, 2)], "<3f")
+    yield sparse("sparse_max_mismatch", 0, [1], [(2, 0, 0)], "<3f")
+    yield sparse("sparse_valid", 0, [1], [(1, 0, 0)], "<3f")
+    yield c("ibm_invalid", None, lambda x: setattr(x, "ibm", [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0]))
     yield c("sparse_count", setp(["accessors", 2, "sparse"], {"count": 5, "indices": {"bufferView": 3, "componentType": 5123}, "values": {"bufferView": 2}}))
     # Meshes
     yield c("no_position", delp(["meshes", 0, "primitives", 0, "attributes", "POSITION"]))

@@ -201,7 +201,8 @@ double length3(const Reader& r, std::uint64_t i) {
     return std::sqrt(x * x + y * y + z * z);
 }
 
-void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers buffers) {
+void check_use(Validation& v, const AccessorUsage& u, const Reader& r,
+               const std::vector<AccessorLayout>& layouts, Buffers buffers) {
     const std::uint64_t n = r.count();
     auto once = [&](bool& said, std::string_view code, Severity s, std::string message) {
         if (said) return;
@@ -272,7 +273,7 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers b
         // Weights of the same set decide which joints count.
         std::optional<Reader> w;
         if (u.partner < v.accessors.size()) {
-            w.emplace(v.accessors[u.partner], buffers);
+            w.emplace(layouts[u.partner], buffers);
             if (!w->ok() || w->count() != n || w->components() != 4) w.reset();
         }
         const std::string wp = u.pointer.substr(0, u.pointer.rfind('/')) + "/WEIGHTS_" +
@@ -354,9 +355,92 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers b
                          " is not of unit length: " + std::to_string(std::sqrt(len2)) + ".");
         }
         break;
+    case AccessorUse::InverseBindMatrices:
+        // The last row of each matrix is (0, 0, 0, 1): an affine transform.
+        if (r.components() != 16) break;
+        for (std::uint64_t i = 0; i < n && !a; ++i)
+            for (std::uint32_t k : {3u, 7u, 11u, 15u})
+                if (const double x = r.value(i, k); x != (k == 15 ? 1.0 : 0.0)) {
+                    once(a, "ACCESSOR_INVALID_IBM", Severity::Error,
+                         "Matrix element at index " + std::to_string(i * 16 + k) +
+                             " (component index " + std::to_string(k) +
+                             ") contains invalid value: " + std::to_string(x) + ".");
+                    break;
+                }
+        break;
     default:
         break;
     }
+}
+
+std::uint64_t read_index(const std::uint8_t* p, int type) {
+    if (type == 5121) return *p;
+    if (type == 5123) {
+        std::uint16_t x;
+        std::memcpy(&x, p, 2);
+        return x;
+    }
+    std::uint32_t x;
+    std::memcpy(&x, p, 4);
+    return x;
+}
+
+// A copy of sparse accessor `i`'s values: its base (zeros without a bufferView) with the
+// overrides applied, checked first (ACCESSOR_SPARSE_INDICES_NON_INCREASING,
+// ACCESSOR_SPARSE_INDEX_OOB). Empty when the indices are bad or a part cannot be read;
+// the copy is no larger than the base's bytes, or kMaxZeroBase without a base.
+constexpr std::uint64_t kMaxZeroBase = std::uint64_t{64} << 20;
+std::vector<std::uint8_t> sparse_values(Validation& v, std::size_t i, Buffers buffers) {
+    const AccessorLayout& a = v.accessors[i];
+    const AccessorLayout::Sparse& sd = a.sparse_data;
+    const std::uint64_t element = std::uint64_t{component_size(a.component_type)} * a.components;
+    if (!(a.readable || sd.zero_base) || element == 0 || !sd.indices_readable ||
+        sd.indices_buffer >= buffers.size())
+        return {};
+    const std::uint32_t isize = component_size(sd.index_type);
+    const auto& ib = buffers[sd.indices_buffer];
+    if (!range_fits(sd.indices_offset, sd.overrides * isize, ib.size())) return {};
+    const std::string where = ptr(ptr("/accessors", i), "sparse");
+    bool bad = false;
+    for (std::uint64_t k = 0; k < sd.overrides; ++k) {
+        const std::uint64_t index =
+            read_index(ib.data() + sd.indices_offset + k * isize, sd.index_type);
+        const std::uint64_t previous =
+            k ? read_index(ib.data() + sd.indices_offset + (k - 1) * isize, sd.index_type) : 0;
+        if (k && index <= previous && !bad)
+            v.add("ACCESSOR_SPARSE_INDICES_NON_INCREASING", Severity::Error, where,
+                  "Accessor sparse indices element at index " + std::to_string(k) +
+                      " is less than or equal to previous: " + std::to_string(index) +
+                      " <= " + std::to_string(previous) + ".");
+        else if (index >= a.count && !bad)
+            v.add("ACCESSOR_SPARSE_INDEX_OOB", Severity::Error, where,
+                  "Accessor sparse indices element at index " + std::to_string(k) +
+                      " is greater than or equal to the number of accessor elements: " +
+                      std::to_string(index) + " >= " + std::to_string(a.count) + ".");
+        else
+            continue;
+        bad = true;
+    }
+    if (bad || !sd.values_readable || sd.values_buffer >= buffers.size()) return {};
+    const auto& vb = buffers[sd.values_buffer];
+    if (!range_fits(sd.values_offset, sd.overrides * element, vb.size())) return {};
+    std::vector<std::uint8_t> out;
+    if (a.readable) {
+        const Reader base(a, buffers);
+        if (!base.ok()) return {};
+        out.resize(a.count * element);
+        for (std::uint64_t e = 0; e < a.count; ++e)
+            std::memcpy(out.data() + e * element, base.base() + e * a.stride, element);
+    } else {
+        if (a.count > kMaxZeroBase / element) return {};
+        out.assign(a.count * element, 0);
+    }
+    for (std::uint64_t k = 0; k < sd.overrides; ++k)
+        std::memcpy(out.data() +
+                        read_index(ib.data() + sd.indices_offset + k * isize, sd.index_type) *
+                            element,
+                    vb.data() + sd.values_offset + k * element, element);
+    return out;
 }
 
 } // namespace
@@ -372,15 +456,33 @@ void validate_data(Validation& v, Buffers buffers) {
                       ") is less than the declared buffer byte length (" +
                       std::to_string(declared) + ").");
     }
-    for (std::size_t i = 0; i < v.accessors.size(); ++i) {
-        if (v.accessors[i].sparse) continue; // values are the base with overrides: not read here
-        const Reader r(v.accessors[i], buffers);
+    // Sparse accessors are read from a copy with their overrides applied, as one more
+    // buffer; the others from the file's buffers.
+    std::vector<AccessorLayout> layouts = v.accessors;
+    std::vector<std::span<const std::uint8_t>> spans(buffers.begin(), buffers.end());
+    std::vector<std::vector<std::uint8_t>> copies;
+    for (std::size_t i = 0; i < layouts.size(); ++i) {
+        if (!layouts[i].sparse) continue;
+        std::vector<std::uint8_t> values = sparse_values(v, i, buffers);
+        if (values.empty()) continue;
+        copies.push_back(std::move(values)); // its bytes stay put when `copies` grows
+        spans.emplace_back(copies.back().data(), copies.back().size());
+        AccessorLayout& l = layouts[i];
+        l.sparse = false;
+        l.readable = true;
+        l.buffer = spans.size() - 1;
+        l.offset = 0;
+        l.stride = std::uint64_t{component_size(l.component_type)} * l.components;
+    }
+    for (std::size_t i = 0; i < layouts.size(); ++i) {
+        if (layouts[i].sparse) continue; // overrides that could not be applied: not read
+        const Reader r(layouts[i], spans);
         if (r.ok()) check_min_max(v, i, r);
     }
     for (const AccessorUsage& u : v.usages) {
-        if (u.accessor >= v.accessors.size() || v.accessors[u.accessor].sparse) continue;
-        const Reader r(v.accessors[u.accessor], buffers);
-        if (r.ok()) check_use(v, u, r, buffers);
+        if (u.accessor >= layouts.size() || layouts[u.accessor].sparse) continue;
+        const Reader r(layouts[u.accessor], spans);
+        if (r.ok()) check_use(v, u, r, layouts, spans);
     }
 }
 

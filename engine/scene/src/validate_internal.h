@@ -61,7 +61,18 @@ struct AccessorLayout {
     std::uint64_t count = 0;
     bool normalized = false;
     bool has_min = false, has_max = false; // declared with the right length
-    bool sparse = false;                   // values overridden: checked only when readable
+    bool sparse = false;                   // values overridden: see `overrides`
+    // Sparse storage, when `sparse`: `overrides` elements whose indices (`index_type`)
+    // and values lie in the buffers at these absolute offsets (readable: inside them).
+    // The base is the bufferView's data, or zeros when the accessor has none.
+    struct Sparse {
+        std::uint64_t overrides = 0;
+        bool indices_readable = false, values_readable = false;
+        std::size_t indices_buffer = 0, values_buffer = 0;
+        std::uint64_t indices_offset = 0, values_offset = 0;
+        int index_type = 0;
+        bool zero_base = false; // no bufferView: the base values are zeros
+    } sparse_data;
 };
 
 // What an accessor or buffer view is first used for; a second, different use is the

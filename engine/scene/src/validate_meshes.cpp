@@ -268,9 +268,10 @@ void validate_meshes(Validation& v) {
                 v.use_accessor(ia, AccessorRole::PrimitiveIndices, ViewRole::IndexBuffer, ip);
                 const Json& acc = accessors[static_cast<std::size_t>(ia)];
                 const std::int64_t ct = int_or(acc, "componentType", 0);
-                if (!(acc.contains("type") && acc["type"] == "SCALAR") ||
-                    !(ct == 5121 || ct == 5123 || ct == 5125) ||
-                    (acc.contains("normalized") && acc["normalized"] == true))
+                const bool format_ok = acc.contains("type") && acc["type"] == "SCALAR" &&
+                                       (ct == 5121 || ct == 5123 || ct == 5125) &&
+                                       !(acc.contains("normalized") && acc["normalized"] == true);
+                if (!format_ok)
                     v.add("MESH_PRIMITIVE_INDICES_ACCESSOR_INVALID_FORMAT", Severity::Error, ip,
                           "Invalid indices accessor format. Must be one of ('{SCALAR, "
                           "UNSIGNED_BYTE}', "
@@ -286,7 +287,7 @@ void validate_meshes(Validation& v) {
                 AccessorUsage u{static_cast<std::size_t>(ia), AccessorUse::Indices, ip};
                 u.limit = vertex_count > 0 ? static_cast<std::uint64_t>(vertex_count) : 0;
                 u.mode = mode;
-                if (vertex_count >= 0) v.usages.push_back(u);
+                if (vertex_count >= 0 && format_ok) v.usages.push_back(u); // Khronos reads no other
             }
             if (element_count >= 0 && mode >= 0 && mode <= 6) {
                 const bool ok = mode == 0   ? element_count > 0

@@ -139,10 +139,11 @@ INSTANTIATE_TEST_SUITE_P(
 #undef EXT
 
 // Sparse accessors are read with their overrides applied, after their indices are
-// checked; a matrix whose last row is not (0, 0, 0, 1) is named.
-class SparseAndIbm : public ::testing::TestWithParam<Expect> {};
+// checked; a matrix whose last row is not (0, 0, 0, 1) is named; image bytes are
+// checked by their headers.
+class DataChecks : public ::testing::TestWithParam<Expect> {};
 
-TEST_P(SparseAndIbm, LoadsAndNamesTheData) {
+TEST_P(DataChecks, LoadsAndNamesTheData) {
     const auto r = sherpa::load_scene(case_path(GetParam().file));
     ASSERT_TRUE(r) << r.error;
     EXPECT_TRUE(has(r.scene->validation, GetParam().code, GetParam().pointer))
@@ -150,7 +151,7 @@ TEST_P(SparseAndIbm, LoadsAndNamesTheData) {
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    Codes, SparseAndIbm,
+    Codes, DataChecks,
     ::testing::Values(
         Expect{"sparse_indices_non_increasing.gltf", "ACCESSOR_SPARSE_INDICES_NON_INCREASING",
                "/accessors/1/sparse"},
@@ -161,7 +162,13 @@ INSTANTIATE_TEST_SUITE_P(
         Expect{"sparse_max_mismatch.gltf", "ACCESSOR_ELEMENT_OUT_OF_MAX_BOUND",
                "/accessors/0/max/0"},
         Expect{"sparse_count.gltf", "ACCESSOR_TOO_LONG", "/accessors/2/sparse/indices"},
-        Expect{"ibm_invalid.gltf", "ACCESSOR_INVALID_IBM", "/skins/0/inverseBindMatrices"}),
+        Expect{"ibm_invalid.gltf", "ACCESSOR_INVALID_IBM", "/skins/0/inverseBindMatrices"},
+        // Image headers (no pixel decoded): format, media type, cut streams, size.
+        Expect{"image_unrecognized.gltf", "IMAGE_UNRECOGNIZED_FORMAT", "/images/0"},
+        Expect{"image_mime_mismatch.gltf", "IMAGE_MIME_TYPE_INVALID", "/images/0/bufferView"},
+        Expect{"image_truncated.gltf", "IMAGE_UNEXPECTED_EOS", "/images/0"},
+        Expect{"image_npot.gltf", "IMAGE_NPOT_DIMENSIONS", "/images/0"},
+        Expect{"image_features.gltf", "IMAGE_FEATURES_UNSUPPORTED", "/images/0"}),
     [](const auto& param_info) {
         std::string n = std::to_string(param_info.index) + "_" + param_info.param.file;
         for (char& c : n)
@@ -171,7 +178,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 // A valid sparse accessor (an override inside the declared bounds) gives no error:
 // reading the overrides adds no false message.
-TEST(SparseAndIbm, ValidSparseAccessorHasNoDataErrors) {
+TEST(DataChecks, ValidSparseAccessorHasNoDataErrors) {
     const auto r = sherpa::load_scene(case_path("sparse_valid.gltf"));
     ASSERT_TRUE(r) << r.error;
     EXPECT_EQ(r.scene->validation.count(Severity::Error), 0u) << dump(r.scene->validation);

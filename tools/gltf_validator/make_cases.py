@@ -7,12 +7,16 @@ Usage: make_cases.py OUT_DIR"""
 import base64, copy, json, math, os, struct, sys, zlib
 
 
-def png_1x1():
-    raw = b"\x00\xff\x00\x00\xff"
+def png_1x1(width=1, height=1, extra=b""):
+    raw = (b"\x00" + b"\xff\x00\x00\xff" * width) * height
     def chunk(t, d):
         return struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d) & 0xFFFFFFFF)
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 1, 1, 8, 6, 0, 0, 0))
-            + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0))
+            + (chunk(*extra) if extra else b"") + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+
+
+def data_uri(mime, data):
+    return "data:" + mime + ";base64," + base64.b64encode(data).decode()
 
 
 class Data:
@@ -266,6 +270,20 @@ def case(g, d):
     yield c("image_mime_missing", lambda j: (j["images"][0].pop("uri"), j["images"][0].__setitem__("bufferView", 4)))
     yield c("image_one_of", setp(["images", 0, "bufferView"], 4))
     yield c("image_bad_mime", lambda j: (j["images"][0].pop("uri"), j["images"][0].update({"bufferView": 4, "mimeType": "image/gif"})))
+    # Image data: what the bytes are against what the file says, and their headers.
+    def image_view(name, data, mime):
+        """Image 0 as `data` in a bufferView after the base data, declared `mime`."""
+        padded = data + b"\0" * (-len(data) % 4)
+        def edit_json(j):
+            j["bufferViews"].append({"buffer": 0, "byteOffset": 268, "byteLength": len(data)})
+            j["buffers"][0]["byteLength"] = 268 + len(padded)
+            j["images"][0] = {"bufferView": len(j["bufferViews"]) - 1, "mimeType": mime}
+        return c(name, edit_json, lambda x: setattr(x, "extra", padded))
+    yield image_view("image_unrecognized", b"not an image at all", "image/png")
+    yield image_view("image_mime_mismatch", png_1x1(), "image/jpeg")
+    yield image_view("image_truncated", png_1x1()[:40], "image/png")
+    yield image_view("image_npot", png_1x1(3, 1), "image/png")
+    yield image_view("image_features", png_1x1(extra=(b"iCCP", b"sRGB\0\0" + zlib.compress(b"\0" * 16))), "image/png")
     yield c("texture_unresolved_source", setp(["textures", 0, "source"], 4))
     yield c("unlit_extension", lambda j: (j.__setitem__("extensionsUsed", ["KHR_materials_unlit"]),
                                           setp(["materials", 0, "extensions"], {"KHR_materials_unlit": {}})(j)))

@@ -187,7 +187,10 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
             if (const auto i = std::strtoull(m.pointer.c_str() + 9, nullptr, 10);
                 i < buffers.size())
                 buffers[i] = {};
-    validator->check_data(buffers);
+    std::vector<std::span<const std::uint8_t>> images; // encoded bytes from URIs
+    for (const auto& image : model.images)
+        images.emplace_back(image.image.data(), image.image.size());
+    validator->check_data(buffers, images);
     validator.reset();
     auto scene = std::make_unique<Scene>();
     scene->source = path;

@@ -28,9 +28,11 @@ DocumentValidator::DocumentValidator(const Json& root, std::span<const std::uint
     report.ms += ms_since(t0);
 }
 
-void DocumentValidator::check_data(std::span<const std::span<const std::uint8_t>> buffers) {
+void DocumentValidator::check_data(std::span<const std::span<const std::uint8_t>> buffers,
+                                   std::span<const std::span<const std::uint8_t>> images) {
     const auto t0 = std::chrono::steady_clock::now();
     validate_data(v_, buffers);
+    validate_images(v_, buffers, images);
     v_.report.ms += ms_since(t0);
 }
 

@@ -136,6 +136,12 @@ void validate_unused(Validation& v);     // UNUSED_OBJECT
 // the buffers' bytes as loaded; `buffers[i]` empty where buffer i could not be read.
 void validate_data(Validation& v, std::span<const std::span<const std::uint8_t>> buffers);
 
+// Image headers (format against the declared media type, PNG/JPEG streams cut short,
+// dimensions): `images[i]` the bytes of image i loaded from its URI (empty where it
+// has none or they could not be read); bufferView images are read from `buffers`.
+void validate_images(Validation& v, std::span<const std::span<const std::uint8_t>> buffers,
+                     std::span<const std::span<const std::uint8_t>> images);
+
 // Every JSON pass above, in order: what the importer calls before tinygltf parses.
 void validate_document(Validation& v);
 
@@ -164,7 +170,8 @@ public:
     DocumentValidator(const Json& root, std::span<const std::uint8_t> file, bool glb,
                       ValidationReport& report, std::string base_dir = {},
                       const DocumentOrder* order = nullptr);
-    void check_data(std::span<const std::span<const std::uint8_t>> buffers);
+    void check_data(std::span<const std::span<const std::uint8_t>> buffers,
+                    std::span<const std::span<const std::uint8_t>> images = {});
     bool glb_has_bin() const { return v_.glb_has_bin; }
 
 private:

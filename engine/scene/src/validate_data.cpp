@@ -5,6 +5,7 @@
 #include "validate_internal.h"
 
 #include "checked_math.h"
+#include "validate_kernels.h"
 
 #include <cmath>
 #include <cstring>
@@ -95,9 +96,24 @@ private:
 // Per-component bounds of the finite values, in the component type itself (one typed
 // pass over the bytes; the data pass's hot loop). Returns the first non-finite
 // component's flat index, or UINT64_MAX.
+template <typename C, std::uint32_t N>
+bool scan_fixed(const Reader& r, std::vector<double>& lo, std::vector<double>& hi) {
+    C l[N], h[N];
+    if (!kernels::bounds<C, N>(r.base(), r.count(), r.stride(), l, h)) return false;
+    for (std::uint32_t c = 0; c < N; ++c)
+        lo[c] = static_cast<double>(l[c]), hi[c] = static_cast<double>(h[c]);
+    return true;
+}
+
 template <typename C>
 std::uint64_t scan_bounds(const Reader& r, std::vector<double>& lo, std::vector<double>& hi) {
     const std::uint32_t n = r.components();
+    // The common shapes in one typed pass; non-finite floats and other shapes below.
+    if (r.count() > 0 &&
+        ((n == 1 && scan_fixed<C, 1>(r, lo, hi)) || (n == 2 && scan_fixed<C, 2>(r, lo, hi)) ||
+         (n == 3 && scan_fixed<C, 3>(r, lo, hi)) || (n == 4 && scan_fixed<C, 4>(r, lo, hi)) ||
+         (n == 16 && scan_fixed<C, 16>(r, lo, hi))))
+        return UINT64_MAX;
     C l[16], h[16];
     for (std::uint32_t c = 0; c < n; ++c) {
         l[c] = std::numeric_limits<C>::max();
@@ -212,39 +228,45 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r,
     bool a = false, b = false, c = false;
     switch (u.use) {
     case AccessorUse::Indices: {
-        const double restart =
-            r.components() == 1 ? (v.accessors[u.accessor].component_type == 5121   ? 255.0
-                                   : v.accessors[u.accessor].component_type == 5123 ? 65535.0
-                                                                                    : 4294967295.0)
-                                : -1;
-        std::uint64_t degenerate = 0;
-        for (std::uint64_t i = 0; i < n; ++i) {
-            const double x = r.raw(i, 0);
-            if (x > static_cast<double>(u.limit) - 1)
-                once(a, "ACCESSOR_INDEX_OOB", Severity::Error,
-                     "Indices accessor element at index " + std::to_string(i) + " has value " +
-                         std::to_string(static_cast<std::uint64_t>(x)) +
-                         " that is greater than the maximum vertex index available (" +
-                         std::to_string(u.limit ? u.limit - 1 : 0) + ").");
-            if (x == restart)
-                once(b, "ACCESSOR_INDEX_PRIMITIVE_RESTART", Severity::Error,
-                     "Indices accessor contains primitive restart value at index " +
-                         std::to_string(i) + ".");
-            if (u.mode == 4 && i % 3 == 2) {
-                const double p = r.raw(i - 2, 0), q = r.raw(i - 1, 0);
-                degenerate += p == q || q == x || x == p;
-            }
-        }
-        if (degenerate)
+        const int type = v.accessors[u.accessor].component_type;
+        if (r.components() != 1 || (type != 5121 && type != 5123 && type != 5125)) break;
+        const bool triangles = u.mode == 4;
+        const kernels::IndexScan s =
+            type == 5121
+                ? kernels::indices<std::uint8_t>(r.base(), n, r.stride(), u.limit, triangles)
+            : type == 5123
+                ? kernels::indices<std::uint16_t>(r.base(), n, r.stride(), u.limit, triangles)
+                : kernels::indices<std::uint32_t>(r.base(), n, r.stride(), u.limit, triangles);
+        if (s.first_over != UINT64_MAX)
+            v.add("ACCESSOR_INDEX_OOB", Severity::Error, u.pointer,
+                  "Indices accessor element at index " + std::to_string(s.first_over) +
+                      " has value " +
+                      std::to_string(static_cast<std::uint64_t>(r.raw(s.first_over, 0))) +
+                      " that is greater than the maximum vertex index available (" +
+                      std::to_string(u.limit ? u.limit - 1 : 0) + ").");
+        if (s.first_restart != UINT64_MAX)
+            v.add("ACCESSOR_INDEX_PRIMITIVE_RESTART", Severity::Error, u.pointer,
+                  "Indices accessor contains primitive restart value at index " +
+                      std::to_string(s.first_restart) + ".");
+        if (s.degenerate)
             v.add("ACCESSOR_INDEX_TRIANGLE_DEGENERATE", Severity::Information, u.pointer,
-                  "Indices accessor contains " + std::to_string(degenerate) +
+                  "Indices accessor contains " + std::to_string(s.degenerate) +
                       " degenerate triangles (out of " + std::to_string(n / 3) + ").");
         break;
     }
     case AccessorUse::Normal:
-    case AccessorUse::Tangent:
+    case AccessorUse::Tangent: {
         if (r.components() < 3) break;
-        for (std::uint64_t i = 0; i < n; ++i) {
+        const bool sign = u.use == AccessorUse::Tangent && r.components() == 4;
+        // Float vectors (the common case) in one typed pass, to the first of each problem.
+        std::uint64_t from = 0;
+        if (r.is_float()) {
+            const kernels::UnitScan s =
+                kernels::unit_vectors(r.base(), n, r.stride(), 0.00674, sign);
+            if (s.first_non_unit == UINT64_MAX && s.first_bad_sign == UINT64_MAX) break;
+            from = std::min(s.first_non_unit, s.first_bad_sign);
+        }
+        for (std::uint64_t i = from; i < n; ++i) {
             const double len = length3(r, i);
             if (std::isfinite(len) && std::abs(len - 1) > 0.00674)
                 once(a, "ACCESSOR_VECTOR3_NON_UNIT", Severity::Error,
@@ -260,6 +282,7 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r,
             }
         }
         break;
+    }
     case AccessorUse::Color:
         if (!r.is_float()) break;
         for (std::uint64_t i = 0; i < n; ++i)

@@ -97,6 +97,7 @@ public:
     bool end_object() { return close(), Base::end_object(); }
     bool end_array() { return close(), Base::end_array(); }
     bool key(string_t& k) {
+        if (order_ && k.size() == 10 && k == "extensions") order_->has_extensions = true;
         if (order_ && depth_ < kLevels && on_path_[depth_]) {
             if (depth_ == 6)
                 order_->attributes[count_[2] - 1][count_[4] - 1].push_back(k);

@@ -32,6 +32,8 @@ std::string validate_gltf_bytes(std::span<const std::uint8_t> bytes);
 // attribute names, as written (`attributes[m][p]`; empty where the file has none).
 struct DocumentOrder {
     std::vector<std::vector<std::vector<std::string>>> attributes;
+    // Whether any object has an "extensions" key (else no walk needs to look for one).
+    bool has_extensions = false;
     // The names of /meshes/m/primitives/p/attributes in document order, or null.
     const std::vector<std::string>* attributes_of(std::size_t m, std::size_t p) const {
         return m < attributes.size() && p < attributes[m].size() ? &attributes[m][p] : nullptr;

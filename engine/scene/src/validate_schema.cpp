@@ -200,7 +200,7 @@ struct Schema {
         for (const auto& [key, value] : obj.items()) {
             const Prop* found = nullptr;
             for (const Prop& pr : kind->props)
-                if (key == pr.name) found = &pr;
+                if (pr.name[0] == key[0] && key == pr.name) found = &pr; // first letter: cheap
             if (found) {
                 const Scope member(at, key);
                 property(value, *found);

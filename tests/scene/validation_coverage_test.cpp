@@ -176,6 +176,21 @@ INSTANTIATE_TEST_SUITE_P(
         return n;
     });
 
+// Data the Khronos validator reads that Sherpa used to leave alone: an infinite value
+// is outside the declared bounds as well as not finite, and index data past its view
+// is read where the buffer holds it.
+TEST(DataChecks, InfinityIsOutOfBoundsAndIndicesPastTheirViewAreRead) {
+    auto r = sherpa::load_scene((test::data_dir() / "inf_position.gltf").string());
+    ValidationReport report = r ? r.scene->validation : r.validation;
+    EXPECT_TRUE(has(report, "ACCESSOR_INVALID_FLOAT", "/accessors/0")) << dump(report);
+    EXPECT_TRUE(has(report, "ACCESSOR_ELEMENT_OUT_OF_MAX_BOUND", "/accessors/0/max/1"))
+        << dump(report);
+    r = sherpa::load_scene((test::data_dir() / "accessor_out_of_range.gltf").string());
+    report = r ? r.scene->validation : r.validation;
+    EXPECT_TRUE(has(report, "ACCESSOR_INDEX_OOB", "/meshes/0/primitives/0/indices"))
+        << dump(report);
+}
+
 // A valid sparse accessor (an override inside the declared bounds) gives no error:
 // reading the overrides adds no false message.
 TEST(DataChecks, ValidSparseAccessorHasNoDataErrors) {

@@ -187,26 +187,31 @@ void check_min_max(Validation& v, std::size_t index, const Reader& r) {
             if (!declared[c].is_number()) continue;
             const double d = declared[c].get<double>();
             const double actual = is_min ? lo[c] : hi[c];
-            if (!std::isfinite(actual) || same(d, actual)) continue;
+            const bool mismatch = std::isfinite(actual) && !same(d, actual);
             const std::string p = ptr(ptr(where, is_min ? "min" : "max"), c);
-            v.add(is_min ? "ACCESSOR_MIN_MISMATCH" : "ACCESSOR_MAX_MISMATCH", Severity::Error, p,
-                  std::string("Declared ") + (is_min ? "minimum" : "maximum") +
-                      " value for this component (" + std::to_string(d) +
-                      ") does not match actual " + (is_min ? "minimum" : "maximum") + " (" +
-                      std::to_string(actual) + ").");
-            if (is_min ? actual < d && !same(d, actual) : actual > d && !same(d, actual)) {
+            if (mismatch)
+                v.add(is_min ? "ACCESSOR_MIN_MISMATCH" : "ACCESSOR_MAX_MISMATCH", Severity::Error,
+                      p,
+                      std::string("Declared ") + (is_min ? "minimum" : "maximum") +
+                          " value for this component (" + std::to_string(d) +
+                          ") does not match actual " + (is_min ? "minimum" : "maximum") + " (" +
+                          std::to_string(actual) + ").");
+            // Infinities are outside the bounds too (the finite bounds above leave them
+            // out), as the Khronos validator counts them.
+            if ((mismatch && (is_min ? actual < d : actual > d)) || bad != UINT64_MAX) {
                 std::uint64_t outside = 0;
                 for (std::uint64_t i = 0; i < r.count(); ++i) {
                     const double x = r.raw(i, c);
                     outside += is_min ? (x < d && !same(d, x)) : (x > d && !same(d, x));
                 }
-                v.add(
-                    is_min ? "ACCESSOR_ELEMENT_OUT_OF_MIN_BOUND"
-                           : "ACCESSOR_ELEMENT_OUT_OF_MAX_BOUND",
-                    Severity::Error, p,
-                    "Accessor contains " + std::to_string(outside) + " element(s) " +
-                        (is_min ? "less than declared minimum" : "greater than declared maximum") +
-                        " value " + std::to_string(d) + ".");
+                if (outside)
+                    v.add(is_min ? "ACCESSOR_ELEMENT_OUT_OF_MIN_BOUND"
+                                 : "ACCESSOR_ELEMENT_OUT_OF_MAX_BOUND",
+                          Severity::Error, p,
+                          "Accessor contains " + std::to_string(outside) + " element(s) " +
+                              (is_min ? "less than declared minimum"
+                                      : "greater than declared maximum") +
+                              " value " + std::to_string(d) + ".");
             }
         }
     }

@@ -287,7 +287,10 @@ void validate_meshes(Validation& v) {
                 AccessorUsage u{static_cast<std::size_t>(ia), AccessorUse::Indices, ip};
                 u.limit = vertex_count > 0 ? static_cast<std::uint64_t>(vertex_count) : 0;
                 u.mode = mode;
-                if (vertex_count >= 0 && format_ok) v.usages.push_back(u); // Khronos reads no other
+                // Khronos reads no index data of another format or through a stride; with
+                // no vertex count known (no attribute resolves) every index is past it.
+                if (format_ok && !(view.is_object() && view.contains("byteStride")))
+                    v.usages.push_back(u);
             }
             if (element_count >= 0 && mode >= 0 && mode <= 6) {
                 const bool ok = mode == 0   ? element_count > 0

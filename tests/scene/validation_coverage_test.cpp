@@ -3,7 +3,7 @@
 // primitives the importer skips while the rest of the file loads. The Khronos verdict
 // on each generated case is checked by validation_oracle_agreement; these pin the
 // pointers and what loads.
-#include "test_support.h"
+#include "validation_checks.h"
 
 #include <sherpa/scene/scene_loader.h>
 
@@ -22,21 +22,10 @@ namespace test = sherpa::test;
 using sherpa::Severity;
 using sherpa::ValidationReport;
 
-std::string case_path(const std::string& name) {
-    return (test::data_dir() / "validation" / name).string();
-}
-
-bool has(const ValidationReport& r, const std::string& code, const std::string& pointer) {
-    for (const auto& m : r.messages)
-        if (m.code == code && m.pointer == pointer) return true;
-    return false;
-}
-
-std::string dump(const ValidationReport& r) {
-    std::string s;
-    for (const auto& m : r.messages) s += m.code + " " + m.pointer + ": " + m.message + "\n";
-    return s;
-}
+using test::case_path;
+using test::dump;
+using test::Expect;
+using test::has;
 
 std::span<const std::uint8_t> bytes_of(const std::string& s) {
     return {reinterpret_cast<const std::uint8_t*>(s.data()), s.size()};
@@ -81,15 +70,9 @@ TEST(DocumentOrder, SharedViewNamesTheSecondAttributeAsWritten) {
 // Material extension values: the Khronos validator's codes where it knows the
 // extension, SHERPA_ codes where it does not (KHR_materials_diffuse_transmission); the
 // files load either way.
-struct Expect {
-    const char* file;
-    const char* code;
-    const char* pointer;
-};
+class LoadsAndNames : public ::testing::TestWithParam<Expect> {};
 
-class MaterialExtension : public ::testing::TestWithParam<Expect> {};
-
-TEST_P(MaterialExtension, LoadsAndNamesTheValue) {
+TEST_P(LoadsAndNames, TheCodeAtItsPointer) {
     const auto r = sherpa::load_scene(case_path(GetParam().file));
     ASSERT_TRUE(r) << r.error;
     EXPECT_TRUE(has(r.scene->validation, GetParam().code, GetParam().pointer))
@@ -98,7 +81,7 @@ TEST_P(MaterialExtension, LoadsAndNamesTheValue) {
 
 #define EXT "/materials/0/extensions/"
 INSTANTIATE_TEST_SUITE_P(
-    Codes, MaterialExtension,
+    MaterialExtension, LoadsAndNames,
     ::testing::Values(
         Expect{"ext_ior_range.gltf", "VALUE_NOT_IN_RANGE", EXT "KHR_materials_ior/ior"},
         Expect{"ext_ior_type.gltf", "TYPE_MISMATCH", EXT "KHR_materials_ior/ior"},
@@ -129,29 +112,14 @@ INSTANTIATE_TEST_SUITE_P(
                EXT "KHR_materials_diffuse_transmission/diffuseTransmissionFactor"},
         Expect{"ext_diffuse_transmission_range.gltf", "SHERPA_VALUE_NOT_IN_RANGE",
                EXT "KHR_materials_diffuse_transmission/diffuseTransmissionColorFactor/1"}),
-    [](const auto& param_info) {
-        std::string n = std::to_string(param_info.index) + "_" + param_info.param.file + "_" +
-                        param_info.param.code;
-        for (char& c : n)
-            if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-        return n;
-    });
+    test::expect_name);
 #undef EXT
 
 // Sparse accessors are read with their overrides applied, after their indices are
 // checked; a matrix whose last row is not (0, 0, 0, 1) is named; image bytes are
 // checked by their headers.
-class DataChecks : public ::testing::TestWithParam<Expect> {};
-
-TEST_P(DataChecks, LoadsAndNamesTheData) {
-    const auto r = sherpa::load_scene(case_path(GetParam().file));
-    ASSERT_TRUE(r) << r.error;
-    EXPECT_TRUE(has(r.scene->validation, GetParam().code, GetParam().pointer))
-        << dump(r.scene->validation);
-}
-
 INSTANTIATE_TEST_SUITE_P(
-    Codes, DataChecks,
+    DataChecks, LoadsAndNames,
     ::testing::Values(
         Expect{"sparse_indices_non_increasing.gltf", "ACCESSOR_SPARSE_INDICES_NON_INCREASING",
                "/accessors/1/sparse"},
@@ -169,12 +137,7 @@ INSTANTIATE_TEST_SUITE_P(
         Expect{"image_truncated.gltf", "IMAGE_UNEXPECTED_EOS", "/images/0"},
         Expect{"image_npot.gltf", "IMAGE_NPOT_DIMENSIONS", "/images/0"},
         Expect{"image_features.gltf", "IMAGE_FEATURES_UNSUPPORTED", "/images/0"}),
-    [](const auto& param_info) {
-        std::string n = std::to_string(param_info.index) + "_" + param_info.param.file;
-        for (char& c : n)
-            if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-        return n;
-    });
+    test::expect_name);
 
 // Data the Khronos validator reads that Sherpa used to leave alone: an infinite value
 // is outside the declared bounds as well as not finite, and index data past its view

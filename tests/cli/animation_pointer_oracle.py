@@ -89,7 +89,7 @@ print(f'animated properties: {len(expected_pointers)} pointers at 11 times, wors
 # The refused channels: skipped with a warning naming the channel's JSON pointer.
 r = subprocess.run([cli, 'validate', path, '--json'], capture_output=True, text=True)
 report = json.loads(r.stdout)
-messages = report['files'][0]['issues']['messages']
+messages = (report['files'][0] if 'files' in report else report)['issues']['messages']
 pointers = {m.get('pointer') for m in messages}
 for c in range(16, len(anim['channels'])):
     if f'/animations/0/channels/{c}' not in pointers and \

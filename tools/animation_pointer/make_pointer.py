@@ -11,6 +11,7 @@ import math
 import struct
 import sys
 
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, __file__.rsplit('/', 2)[0] + '/material_sweeps')
 from make_sweeps import sphere, png_rgba  # noqa: E402
 

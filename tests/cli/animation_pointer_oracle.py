@@ -160,7 +160,15 @@ for t, hidden in ((0.5, False), (1.25, True)):
     if (centre == (255, 0, 255)) != hidden:
         failures.append(f'render t={t}: the blinking sphere {"shows" if not hidden else "is hidden"}'
                         f' but centre pixel is {centre}')
-    print(f'render t={t}: unlit sphere {got} (spec {want}), centre {centre}')
+    # The lit sphere moves up (/nodes/1/translation) and its alpha 0.5 meets the
+    # animated alphaCutoff (0.2 -> 0.8 over 2 s): shown at 0.5 s, masked away at 1.25 s.
+    lit_y = sample(anim['samplers'][15], t, 3)[1]
+    cutoff = sample(anim['samplers'][4], t, 1)[0]
+    lit = pixel(png, 80 + dx, round(60 - lit_y / (5 * 0.41421356) * 60))
+    if (lit == (255, 0, 255)) != (0.5 < cutoff):
+        failures.append(f'render t={t}: lit sphere pixel {lit} with alphaCutoff {cutoff:.3f}')
+    print(f'render t={t}: unlit sphere {got} (spec {want}), centre {centre}, lit sphere {lit} '
+          f'(alphaCutoff {cutoff:.3f})')
 
 for f in failures:
     print('FAIL', f)

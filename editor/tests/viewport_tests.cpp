@@ -393,9 +393,9 @@ void ViewportTests::variantMenuSwitchesMaterialsWithoutReloading() {
     const int changed = differingPixels(before, test::viewport_shot(*window_));
     QVERIFY2(changed > 200, qPrintable(QStringLiteral("%1 pixels changed").arg(changed)));
     variants->actions().at(0)->trigger(); // back to the defaults
-    QTRY_VERIFY_WITH_TIMEOUT(window_->logDock()->text().contains(
-                                 QStringLiteral("Material variant: default materials")),
-                             kLoadTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        window_->logDock()->text().contains(QStringLiteral("Material variant: default materials")),
+        kLoadTimeoutMs);
     QVERIFY(test::next_frame(*window_));
     QCOMPARE(differingPixels(before, test::viewport_shot(*window_)), 0);
     QVERIFY(load(*window_, QStringLiteral("builtin:default")));

@@ -4,8 +4,7 @@
 // spheres, so that both renderers draw the factors as they are; each sphere's mean
 // colour must agree between them, and match what the file's mapping names.
 #include "cli/cli_run.h"
-
-#include <sherpa/texture/image.h>
+#include "cli/oracle_image.h"
 
 #include <gtest/gtest.h>
 
@@ -23,18 +22,6 @@ namespace fs = std::filesystem;
 
 constexpr const char* kCamera = "eye=0,0,5:target=0,0,0:fov=45:near=0.1:far=100";
 
-struct Image {
-    std::uint32_t width = 0, height = 0;
-    std::vector<std::uint8_t> rgba;
-};
-
-Image read(const fs::path& p) {
-    Image img;
-    std::string error;
-    EXPECT_TRUE(tex::read_png_rgba8(p.string(), img.width, img.height, img.rgba, error)) << error;
-    return img;
-}
-
 // Mean 8-bit colour (/255) of a disk inside sphere `column` (x = -1, 0, 1; y = 0).
 glm::dvec3 sphere_mean(const Image& img, int column) {
     const double half_height = 5.0 * std::tan(22.5 * 3.14159265358979 / 180.0);
@@ -42,17 +29,7 @@ glm::dvec3 sphere_mean(const Image& img, int column) {
     const double cx = img.width * 0.5 * (1.0 + x / (half_height * img.width / img.height));
     const double cy = img.height * 0.5;
     const double r = 0.6 * 0.4 / half_height * img.height * 0.5;
-    glm::dvec3 sum(0.0);
-    int n = 0;
-    for (int py = int(cy - r); py <= int(cy + r); ++py)
-        for (int px = int(cx - r); px <= int(cx + r); ++px) {
-            if ((px + 0.5 - cx) * (px + 0.5 - cx) + (py + 0.5 - cy) * (py + 0.5 - cy) > r * r)
-                continue;
-            const std::uint8_t* p = &img.rgba[(std::size_t(py) * img.width + std::size_t(px)) * 4];
-            sum += glm::dvec3(p[0], p[1], p[2]) / 255.0;
-            ++n;
-        }
-    return sum / double(std::max(n, 1));
+    return disk_mean(img, cx, cy, r);
 }
 
 std::string quoted(const std::string& s) {

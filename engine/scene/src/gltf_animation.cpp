@@ -78,6 +78,26 @@ void check_rotation_keys(ImportContext& ctx, AnimationSampler& s, const std::str
                  " rotation keys are not unit quaternions; normalised when evaluated");
 }
 
+// The index in `anim.samplers` of the file's sampler `sampler`, read the first time a
+// channel uses it (with that channel's value width); a later channel of another width
+// is refused.
+std::uint32_t channel_sampler(ImportContext& ctx, const tinygltf::Animation& src, int sampler,
+                              std::uint32_t width, std::uint32_t components, bool rotation,
+                              const std::string& cpath, const std::string& where, Animation& anim,
+                              std::vector<int>& sampler_index) {
+    int& si = sampler_index[static_cast<std::size_t>(sampler)];
+    const std::string spath = where + ".samplers[" + std::to_string(sampler) + "]";
+    if (si < 0) {
+        anim.samplers.push_back(read_sampler(ctx, src.samplers[static_cast<std::size_t>(sampler)],
+                                             width, components, spath));
+        if (rotation) check_rotation_keys(ctx, anim.samplers.back(), spath);
+        si = static_cast<int>(anim.samplers.size() - 1);
+    } else if (anim.samplers[static_cast<std::size_t>(si)].width != width) {
+        fail(cpath + ": shares " + spath + " with a channel of another value size");
+    }
+    return static_cast<std::uint32_t>(si);
+}
+
 // The KHR_animation_pointer pointer of a channel whose target.path is "pointer".
 std::string animation_pointer(const tinygltf::AnimationChannel& ch, const std::string& cpath) {
     const auto it = ch.target_extensions.find("KHR_animation_pointer");
@@ -117,16 +137,8 @@ void import_pointer_channel(ImportContext& ctx, const tinygltf::Animation& src, 
         fail(cpath + ".target.extensions.KHR_animation_pointer.pointer: \"" + pointer +
              "\" is not animated: " + why);
     const std::uint32_t width = pointer_width(out.target.property);
-    int& si = sampler_index[static_cast<std::size_t>(ch.sampler)];
-    const std::string spath = where + ".samplers[" + std::to_string(ch.sampler) + "]";
-    if (si < 0) {
-        anim.samplers.push_back(read_sampler(
-            ctx, src.samplers[static_cast<std::size_t>(ch.sampler)], width, width, spath));
-        si = static_cast<int>(anim.samplers.size() - 1);
-    } else if (anim.samplers[static_cast<std::size_t>(si)].width != width) {
-        fail(cpath + ": shares " + spath + " with a channel of another value size");
-    }
-    out.sampler = static_cast<std::uint32_t>(si);
+    out.sampler = channel_sampler(ctx, src, ch.sampler, width, width, false, cpath, where, anim,
+                                  sampler_index);
     out.source = static_cast<std::uint32_t>(c);
     out.source_sampler = static_cast<std::uint32_t>(ch.sampler);
     anim.pointers.push_back(std::move(out));
@@ -182,18 +194,9 @@ void import_channel(ImportContext& ctx, const tinygltf::Animation& src, std::siz
     if (node.has_matrix && out.path != AnimationPath::Weights)
         fail(cpath + ": animates nodes[" + std::to_string(out.node) +
              "], which has a matrix (glTF forbids animating it)");
-    int& si = sampler_index[static_cast<std::size_t>(ch.sampler)];
-    const std::string spath = where + ".samplers[" + std::to_string(ch.sampler) + "]";
-    if (si < 0) {
-        anim.samplers.push_back(read_sampler(
-            ctx, src.samplers[static_cast<std::size_t>(ch.sampler)], width, components, spath));
-        if (out.path == AnimationPath::Rotation)
-            check_rotation_keys(ctx, anim.samplers.back(), spath);
-        si = static_cast<int>(anim.samplers.size() - 1);
-    } else if (anim.samplers[static_cast<std::size_t>(si)].width != width) {
-        fail(cpath + ": shares " + spath + " with a channel of another value size");
-    }
-    out.sampler = static_cast<std::uint32_t>(si);
+    out.sampler =
+        channel_sampler(ctx, src, ch.sampler, width, components,
+                        out.path == AnimationPath::Rotation, cpath, where, anim, sampler_index);
     out.source = static_cast<std::uint32_t>(c);
     out.source_sampler = static_cast<std::uint32_t>(ch.sampler);
     anim.channels.push_back(out);

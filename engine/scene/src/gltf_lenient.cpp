@@ -136,8 +136,8 @@ std::uint32_t le32(std::span<const std::uint8_t> b, std::size_t at) {
 
 std::optional<json> with_channel_nodes(const json& root) {
     auto nodeless = [](const json& channel) {
-        return channel.is_object() && channel.contains("target") &&
-               channel["target"].is_object() && !channel["target"].contains("node");
+        return channel.is_object() && channel.contains("target") && channel["target"].is_object() &&
+               !channel["target"].contains("node");
     };
     bool any = false;
     if (root.contains("animations") && root["animations"].is_array())

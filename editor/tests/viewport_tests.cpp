@@ -369,8 +369,9 @@ void ViewportTests::variantMenuSwitchesMaterialsWithoutReloading() {
                                QStringLiteral("/material_sweeps/variants.gltf")));
     if (!hasGpu()) QSKIP("no Vulkan device: nothing is rendered");
     QMenu* variants = nullptr;
-    for (QMenu* m : window_->menuBar()->findChildren<QMenu*>())
-        if (m->title() == QStringLiteral("Va&riants")) variants = m;
+    for (QAction* top : window_->menuBar()->actions())
+        if (top->menu() && top->menu()->title() == QStringLiteral("Va&riants"))
+            variants = top->menu();
     QVERIFY(variants);
     QVERIFY(variants->isEnabled());
     QStringList names;

@@ -8,6 +8,7 @@
 // A frame without animated values costs one comparison.
 #include "renderer_impl.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace sherpa::gpu {
@@ -26,9 +27,13 @@ bool same(const std::vector<AnimatedProperty>& a, const std::vector<AnimatedProp
 } // namespace
 
 void Renderer::Impl::load_animated(const Scene& source) {
-    base_materials_ = source.materials;
-    base_lights_ = source.lights;
-    base_cameras_ = source.cameras;
+    // Copies only for a file that animates properties: the others keep nothing.
+    const bool animates = std::any_of(source.animations.begin(), source.animations.end(),
+                                      [](const Animation& a) { return !a.pointers.empty(); });
+    base_materials_ = animates ? source.materials : std::vector<MaterialInstance>{};
+    base_lights_ = animates ? source.lights : std::vector<Light>{};
+    base_cameras_ = animates ? source.cameras : std::vector<Camera>{};
+    materials_animated_ = false;
     base_visible_.clear();
     bool hidden = false;
     for (const Node& n : source.nodes) {
@@ -47,7 +52,9 @@ void Renderer::Impl::apply_animated(const RenderSettings& settings) {
     static const std::vector<AnimatedProperty> kNone;
     const std::vector<AnimatedProperty>& values = settings.pose ? settings.pose->properties : kNone;
     animated_bytes_ = 0;
-    if (same(values, animated_)) return;
+    if (same(values, animated_) ||
+        (base_materials_.empty() && base_lights_.empty() && base_cameras_.empty()))
+        return; // the file animates no property
     std::vector<MaterialInstance> materials = base_materials_;
     lighting_.lights = base_lights_;
     lighting_.cameras = base_cameras_;

@@ -2254,4 +2254,31 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <translation>Tangentenfehler (Grad)</translation>
     </message>
 </context>
+<context>
+    <name>sherpa::editor::VariantMenu</name>
+    <message>
+        <source>default materials</source>
+        <translation>Standardmaterialien</translation>
+    </message>
+    <message>
+        <source>Material variant: %1 (%2 primitive(s), %3 draw(s) changed material; %4 GPU bytes uploaded%5; nothing reloaded).</source>
+        <translation>Materialvariante: %1 (%2 Primitive, %3 Draws mit anderem Material; %4 GPU-Bytes hochgeladen%5; nichts neu geladen).</translation>
+    </message>
+    <message>
+        <source>, culling lists rebuilt for a changed alpha mode</source>
+        <translation>, Culling-Listen wegen geänderten Alpha-Modus neu aufgebaut</translation>
+    </message>
+    <message>
+        <source>Va&amp;riants</source>
+        <translation>Va&amp;rianten</translation>
+    </message>
+    <message>
+        <source>&amp;Default Materials</source>
+        <translation>&amp;Standardmaterialien</translation>
+    </message>
+    <message>
+        <source>The file has no material variants</source>
+        <translation>Die Datei hat keine Materialvarianten</translation>
+    </message>
+</context>
 </TS>

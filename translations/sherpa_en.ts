@@ -2254,4 +2254,31 @@ The current scene is kept.</translation>
         <translation>tangent error (deg)</translation>
     </message>
 </context>
+<context>
+    <name>sherpa::editor::VariantMenu</name>
+    <message>
+        <source>default materials</source>
+        <translation>default materials</translation>
+    </message>
+    <message>
+        <source>Material variant: %1 (%2 primitive(s), %3 draw(s) changed material; %4 GPU bytes uploaded%5; nothing reloaded).</source>
+        <translation>Material variant: %1 (%2 primitive(s), %3 draw(s) changed material; %4 GPU bytes uploaded%5; nothing reloaded).</translation>
+    </message>
+    <message>
+        <source>, culling lists rebuilt for a changed alpha mode</source>
+        <translation>, culling lists rebuilt for a changed alpha mode</translation>
+    </message>
+    <message>
+        <source>Va&amp;riants</source>
+        <translation>Va&amp;riants</translation>
+    </message>
+    <message>
+        <source>&amp;Default Materials</source>
+        <translation>&amp;Default Materials</translation>
+    </message>
+    <message>
+        <source>The file has no material variants</source>
+        <translation>The file has no material variants</translation>
+    </message>
+</context>
 </TS>

@@ -2254,4 +2254,31 @@ The current scene is kept.</source>
         <translation>切线误差（度）</translation>
     </message>
 </context>
+<context>
+    <name>sherpa::editor::VariantMenu</name>
+    <message>
+        <source>default materials</source>
+        <translation>默认材质</translation>
+    </message>
+    <message>
+        <source>Material variant: %1 (%2 primitive(s), %3 draw(s) changed material; %4 GPU bytes uploaded%5; nothing reloaded).</source>
+        <translation>材质变体：%1（%2 个图元、%3 次绘制更换了材质；上传 %4 字节 GPU 数据%5；未重新加载）。</translation>
+    </message>
+    <message>
+        <source>, culling lists rebuilt for a changed alpha mode</source>
+        <translation>，因 Alpha 模式改变而重建剔除列表</translation>
+    </message>
+    <message>
+        <source>Va&amp;riants</source>
+        <translation>变体(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Default Materials</source>
+        <translation>默认材质(&amp;D)</translation>
+    </message>
+    <message>
+        <source>The file has no material variants</source>
+        <translation>该文件没有材质变体</translation>
+    </message>
+</context>
 </TS>

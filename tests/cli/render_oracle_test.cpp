@@ -6,6 +6,7 @@
 // docs/environment.md. Both images of each case are kept in the build tree
 // (render_oracle/) to look at.
 #include "cli/cli_run.h"
+#include "cli/oracle_image.h"
 
 #include <sherpa/texture/image.h>
 
@@ -105,18 +106,6 @@ std::string quoted(const std::string& s) {
     return "'" + s + "'";
 }
 
-struct Image {
-    std::uint32_t width = 0, height = 0;
-    std::vector<std::uint8_t> rgba;
-};
-
-Image read(const fs::path& p) {
-    Image img;
-    std::string error;
-    EXPECT_TRUE(tex::read_png_rgba8(p.string(), img.width, img.height, img.rgba, error)) << error;
-    return img;
-}
-
 // Mean 8-bit colour (/255) of a disk about a sweep sphere's centre, as kSweepCamera
 // projects it: two rows (y = +0.5, -0.5) of five (x = -2 .. 2), 320x240, 45 degrees.
 glm::dvec3 sphere_mean(const Image& img, int row, int column) {
@@ -125,17 +114,7 @@ glm::dvec3 sphere_mean(const Image& img, int row, int column) {
     const double cx = img.width * 0.5 * (1.0 + x / (half_height * img.width / img.height));
     const double cy = img.height * 0.5 * (1.0 - y / half_height);
     const double r = 0.6 * 0.4 / half_height * img.height * 0.5; // inside the silhouette
-    glm::dvec3 sum(0.0);
-    int n = 0;
-    for (int py = int(cy - r); py <= int(cy + r); ++py)
-        for (int px = int(cx - r); px <= int(cx + r); ++px) {
-            if ((px + 0.5 - cx) * (px + 0.5 - cx) + (py + 0.5 - cy) * (py + 0.5 - cy) > r * r)
-                continue;
-            const std::uint8_t* p = &img.rgba[(std::size_t(py) * img.width + std::size_t(px)) * 4];
-            sum += glm::dvec3(p[0], p[1], p[2]) / 255.0;
-            ++n;
-        }
-    return sum / double(std::max(n, 1));
+    return disk_mean(img, cx, cy, r);
 }
 
 // Each sphere of a sweep agrees between the renderers; along each row (every sweep

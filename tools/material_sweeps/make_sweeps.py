@@ -258,6 +258,51 @@ def diffuse_transmission_sweep():
     doc['scenes'][0]['nodes'].append(len(doc['nodes']))
     doc['nodes'].append({'name': 'back light', 'translation': [0.0, 0.0, -2.0],
                          'extensions': {'KHR_lights_punctual': {'light': 0}}})
+def unlit(color, alpha=1.0, texture=None, **extra):
+    pbr_part = {'baseColorFactor': color + [alpha]}
+    if texture is not None:
+        pbr_part['baseColorTexture'] = {'index': texture}
+    return dict({'pbrMetallicRoughness': pbr_part,
+                 'extensions': {'KHR_materials_unlit': {}}}, **extra)
+
+
+def variants():
+    """KHR_materials_variants: three unlit spheres (grey, grey, grey) and two variants.
+    "Warm": sphere 0 red, sphere 2 a 2x2 yellow/blue checker texture (a texture no
+    default material reads: it must be on the GPU before the switch). "Cool": sphere 1
+    masked away (alpha 0.25 under the cutoff 0.5: an alpha-mode change), sphere 2 green.
+    Unlit, so that both renderers draw the factors as they are."""
+    grey = [0.5, 0.5, 0.5]
+    doc = document('KHR_materials_variants', [[('grey 0', unlit(grey)), ('grey 1', unlit(grey)),
+                                                ('grey 2', unlit(grey))]],
+                   ['KHR_materials_unlit', 'KHR_materials_variants'])
+    extra = [('red', unlit([1.0, 0.0, 0.0])),
+             ('checker', unlit([1.0, 1.0, 1.0], texture=0)),
+             ('masked', unlit([0.0, 0.0, 1.0], 0.25, alphaMode='MASK')),
+             ('green', unlit([0.0, 1.0, 0.0]))]
+    for label, material in extra:
+        doc['materials'].append(dict(name=label, **material))
+    red, checker, masked, green = 3, 4, 5, 6
+    doc['extensions'] = {'KHR_materials_variants': {'variants': [{'name': 'Warm'}, {'name': 'Cool'}]}}
+    mappings = [[{'material': red, 'variants': [0]}],
+                [{'material': masked, 'variants': [1]}],
+                [{'material': checker, 'variants': [0]}, {'material': green, 'variants': [1]}]]
+    for mesh, m in zip(doc['meshes'], mappings):
+        mesh['primitives'][0]['extensions'] = {'KHR_materials_variants': {'mappings': m}}
+    image = png_rgba(2, 2, lambda x, y: (255, 220, 0, 255) if (x + y) % 2 == 0 else (0, 60, 255, 255))
+    doc['images'] = [{'uri': 'data:image/png;base64,' + base64.b64encode(image).decode()}]
+    doc['samplers'] = [{'magFilter': 9728, 'minFilter': 9728, 'wrapS': 10497, 'wrapT': 10497}]
+    doc['textures'] = [{'source': 0, 'sampler': 0}]
+    return doc
+
+
+def variants_bad():
+    """The variants file with broken mappings: a material index past the end, a variant
+    index past the end, a variant mapped twice, and a mapping without variants."""
+    doc = variants()
+    doc['meshes'][0]['primitives'][0]['extensions']['KHR_materials_variants']['mappings'] = [
+        {'material': 99, 'variants': [0]}, {'material': 3, 'variants': [7, 1]},
+        {'material': 6, 'variants': [1]}, {'material': 3}]
     return doc
 
 
@@ -268,7 +313,8 @@ def main():
                       ('transmission_sweep', transmission_sweep()),
                       ('transmission_roughness', transmission_roughness()),
                       ('volume_sweep', volume_sweep()), ('dispersion_sweep', dispersion_sweep()),
-                      ('diffuse_transmission_sweep', diffuse_transmission_sweep())):
+                      ('diffuse_transmission_sweep', diffuse_transmission_sweep()),
+                      ('variants', variants()), ('variants_bad', variants_bad())):
         with open(f'{out}/{name}.gltf', 'w') as f:
             json.dump(doc, f, indent=1)
             f.write('\n')

@@ -158,7 +158,7 @@ void GpuScene::upload_geometry(const Scene& scene) {
 
         // What shading reads; debug views add every authored or generated stream.
         std::array<bool, kVertexAttributeCount> upload =
-            attributes_used(scene.materials[mesh.material_id], mesh);
+            mesh_attributes_used(scene, static_cast<std::uint32_t>(m));
         if (policy_ == StreamPolicy::AllPresent)
             for (VertexAttribute a : kAllVertexAttributes)
                 if (mesh.provenance_of(a) != Provenance::Defaulted) upload[std::size_t(a)] = true;
@@ -256,19 +256,19 @@ void GpuScene::upload_motion(const Scene& scene, const std::vector<bool>& instan
     memory_.motion = motion.bytes.size() + bytes;
 }
 
-void GpuMaterials::upload(const Scene& scene) {
-    std::vector<GPUMaterialData> data;
-    std::vector<GPUMaterialExtra> extras;
-    extensions_ = build_material_extensions(
-        scene.materials, [this](const TextureSlot& slot, TextureRole role) {
+void GpuMaterials::build(std::span<const MaterialInstance> materials) {
+    data_.clear();
+    extras_data_.clear();
+    extensions_ =
+        build_material_extensions(materials, [this](const TextureSlot& slot, TextureRole role) {
             // A failed texture reads white (the factor alone), not the checker: the
             // texture pipeline has warned, and a checker would only tint F0.
             const std::uint32_t tex = textures_->field_slot(slot, role, kWhiteTexture);
             return tex == kCheckerTexture ? kWhiteTexture : tex;
         });
-    for (const MaterialInstance& m : scene.materials) {
+    for (const MaterialInstance& m : materials) {
         // Texture fields resolved to bindless slots, absent ones to the defaults.
-        data.push_back(textures_->material(m));
+        data_.push_back(textures_->material(m));
         GPUMaterialExtra x{};
         x.uv[kSlotBaseColor] = texture_transform(m.base_color);
         x.uv[kSlotMetallicRoughness] = texture_transform(m.metallic_roughness);
@@ -277,7 +277,7 @@ void GpuMaterials::upload(const Scene& scene) {
         x.uv[kSlotEmissive] = texture_transform(m.emissive);
         x.unlit = m.unlit ? 1u : 0u;
         x.specular_glossiness_tex = kWhiteTexture;
-        x.extensions = extensions_.places[data.size() - 1].index;
+        x.extensions = extensions_.places[data_.size() - 1].index;
         if (const auto& sg = m.specular_glossiness) {
             x.workflow = kWorkflowSpecularGlossiness;
             x.uv[kSlotSpecularGlossiness] = texture_transform(sg->specular_glossiness);
@@ -285,22 +285,26 @@ void GpuMaterials::upload(const Scene& scene) {
                 textures_->field_slot(sg->specular_glossiness, kRoleColor, kWhiteTexture);
             x.specular_glossiness = glm::vec4(sg->specular_factor, sg->glossiness_factor);
         }
-        extras.push_back(x);
+        extras_data_.push_back(x);
     }
-    if (data.empty()) { // keep the addresses valid for scenes without materials
-        data.push_back(to_gpu_material(MaterialInstance{}));
-        extras.push_back(GPUMaterialExtra{});
+    if (data_.empty()) { // keep the addresses valid for scenes without materials
+        data_.push_back(to_gpu_material(MaterialInstance{}));
+        extras_data_.push_back(GPUMaterialExtra{});
     }
-    const VkDeviceSize bytes = data.size() * sizeof(GPUMaterialData);
-    const VkDeviceSize extra_bytes = extras.size() * sizeof(GPUMaterialExtra);
+}
+
+void GpuMaterials::upload(const Scene& scene) {
+    build(scene.materials);
+    const VkDeviceSize bytes = data_.size() * sizeof(GPUMaterialData);
+    const VkDeviceSize extra_bytes = extras_data_.size() * sizeof(GPUMaterialExtra);
     // Copied out too: the editor's material dock reads records back from this buffer.
     materials_ = resources_.create_buffer({bytes, kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                            MemoryUsage::DeviceLocal, "materials"});
     extras_ =
         resources_.create_buffer({extra_bytes, kStorage, MemoryUsage::DeviceLocal, "material uv"});
     UploadBatch batch(resources_);
-    batch.upload_buffer(materials_, 0, data.data(), bytes);
-    batch.upload_buffer(extras_, 0, extras.data(), extra_bytes);
+    batch.upload_buffer(materials_, 0, data_.data(), bytes);
+    batch.upload_buffer(extras_, 0, extras_data_.data(), extra_bytes);
     // Only where some material uses a drawn extension (the binding is partially bound).
     if (!extensions_.words.empty()) {
         extension_buffer_ = resources_.create_buffer(
@@ -311,7 +315,55 @@ void GpuMaterials::upload(const Scene& scene) {
     bytes_ = bytes + extra_bytes;
 }
 
+namespace {
+
+// Uploads the elements of `now` that differ from `before` (same length), runs of
+// neighbours as one copy; returns the bytes.
+template <class T>
+std::uint64_t upload_changed(UploadBatch& batch, BufferHandle buffer, const std::vector<T>& before,
+                             const std::vector<T>& now) {
+    std::uint64_t bytes = 0;
+    for (std::size_t i = 0; i < now.size();) {
+        if (std::memcmp(&before[i], &now[i], sizeof(T)) == 0) {
+            ++i;
+            continue;
+        }
+        std::size_t end = i + 1;
+        while (end < now.size() && std::memcmp(&before[end], &now[end], sizeof(T)) != 0) ++end;
+        batch.upload_buffer(buffer, i * sizeof(T), &now[i], (end - i) * sizeof(T));
+        bytes += (end - i) * sizeof(T);
+        i = end;
+    }
+    return bytes;
+}
+
+} // namespace
+
+std::uint64_t GpuMaterials::update(std::span<const MaterialInstance> materials) {
+    const std::vector<GPUMaterialData> data = data_;
+    const std::vector<GPUMaterialExtra> extras = extras_data_;
+    const std::vector<glm::uvec4> words = extensions_.words;
+    if (materials.empty() || materials.size() != data.size()) return 0;
+    build(materials);
+    // Which materials use an extension does not change with values: same layout.
+    if (extensions_.words.size() != words.size())
+        throw GpuError("material update: the extension layout changed");
+    UploadBatch batch(resources_);
+    std::uint64_t bytes = upload_changed(batch, materials_, data, data_);
+    bytes += upload_changed(batch, extras_, extras, extras_data_);
+    if (extension_buffer_.valid())
+        bytes += upload_changed(batch, extension_buffer_, words, extensions_.words);
+    if (bytes) batch.submit_and_wait();
+    return bytes;
+}
+
+std::uint64_t update_scene_materials(GpuScene& scene, std::span<const MaterialInstance> materials) {
+    return scene.materials_->update(materials);
+}
+
 void GpuScene::upload_instances(const Scene& scene) {
+    for (const MaterialInstance& m : scene.materials)
+        material_modes_.emplace_back(m.alpha_mode, m.double_sided);
     struct Keyed {
         std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, bool, bool>
             key; // mesh, alpha, material, ds, mirror
@@ -361,6 +413,43 @@ void GpuScene::upload_instances(const Scene& scene) {
     batch.upload_buffer(instances_, 0, data.data(), bytes);
     batch.submit_and_wait();
     memory_.instances = bytes;
+}
+
+MaterialSwitch
+switch_mesh_materials(GpuScene& scene,
+                      std::span<const std::pair<std::uint32_t, std::uint32_t>> meshes) {
+    MaterialSwitch out;
+    std::vector<std::uint32_t> material_of(scene.meshes_.size(), ~0u); // ~0: unchanged
+    for (auto [mesh, material] : meshes) {
+        if (mesh >= scene.meshes_.size() || material >= scene.material_modes_.size())
+            throw GpuError("material switch: mesh " + std::to_string(mesh) + " or material " +
+                           std::to_string(material) + " out of range");
+        if (scene.meshes_[mesh].material == material) continue;
+        scene.meshes_[mesh].material = material;
+        material_of[mesh] = material;
+        ++out.meshes;
+    }
+    if (out.meshes == 0) return out;
+    constexpr VkDeviceSize kWord = offsetof(GPUInstanceData, material);
+    UploadBatch batch(scene.resources_);
+    for (DrawGroup& g : scene.groups_) {
+        const std::uint32_t material = material_of[g.mesh];
+        if (material == ~0u || g.material == material) continue;
+        const auto [alpha, double_sided] = scene.material_modes_[material];
+        out.modes_changed |= alpha != g.alpha || double_sided != g.double_sided;
+        g.material = material;
+        g.alpha = alpha;
+        g.double_sided = double_sided;
+        ++out.groups;
+        for (std::uint32_t k = 0; k < g.instance_count; ++k) {
+            const VkDeviceSize at = VkDeviceSize(g.first_instance + k) * sizeof(GPUInstanceData);
+            batch.upload_buffer(scene.instances_, at + kWord, &material, sizeof material);
+            out.gpu_bytes += sizeof material;
+        }
+        out.instances += g.instance_count;
+    }
+    batch.submit_and_wait();
+    return out;
 }
 
 } // namespace sherpa::gpu

@@ -194,6 +194,8 @@ void Renderer::Impl::load(const Scene& source, std::unique_ptr<GpuScene> gpu_sce
     ++scene_generation_;
     shadows_.invalidate();
     load_visibility(source);
+    load_variants(source);
+    load_animated(source);
     // Meshes that skin or morph join the TLAS in the file's default pose, on load.
     if (acceleration && acceleration->posed()) {
         FrameSlot& slot = *slots_[next_slot_];

@@ -27,6 +27,7 @@ static_assert(kAfterOverlays + 1 == kTimestampCount);
 
 void Renderer::Impl::record_frame(VkCommandBuffer cmd, std::uint32_t index,
                                   const RenderTarget& target, const RenderSettings& settings) {
+    apply_animated(settings);
     apply_visibility(settings, false);
     FrameSlot& slot = *slots_.at(index);
     wait_slot(slot);

@@ -79,6 +79,8 @@ public:
     void set_environment(const EnvironmentImage* image);
     // The path tracer's accumulation read back (renderer_path.cpp).
     PathTraceImage path_trace_image();
+    // set_material_variant() (renderer_variants.cpp).
+    VariantSwitch set_variant(std::int32_t variant);
 
 private:
     // A frame, pass by pass.
@@ -126,6 +128,26 @@ private:
     // slot must be idle) when it differs from the mask applied last (renderer.cpp).
     void apply_visibility(const RenderSettings& settings, bool rt);
     void load_visibility(const Scene& source); // a scene was loaded
+    // Per GPU instance: hidden by the mask applied last (for the culling pass).
+    std::vector<std::uint8_t> hidden_instances() const;
+    // KHR_materials_variants (renderer_variants.cpp): the loaded scene's mappings, the
+    // variant it was loaded with (the acceleration structures' materials) and the one
+    // the raster draws now.
+    void load_variants(const Scene& source);
+    MaterialVariants variants_;
+    std::int32_t loaded_variant_ = -1, variant_ = -1;
+    // KHR_animation_pointer (renderer_animated.cpp): the loaded values, the values
+    // applied last, the nodes they hide, and the material bytes the frame uploaded.
+    void load_animated(const Scene& source);
+    void apply_animated(const RenderSettings& settings);
+    std::vector<MaterialInstance> base_materials_;
+    std::vector<Light> base_lights_;
+    std::vector<Camera> base_cameras_;
+    std::vector<bool> base_visible_; // per node (KHR_node_visibility)
+    std::vector<AnimatedProperty> animated_;
+    std::vector<bool> animated_hidden_;
+    bool materials_animated_ = false;
+    std::uint64_t animated_bytes_ = 0, material_generation_ = 0;
 
     std::unique_ptr<RtViewPass> rt_views_;
     std::unique_ptr<PathTracePass> path_;

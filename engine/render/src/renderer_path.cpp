@@ -76,6 +76,7 @@ PathTraceFrame Renderer::Impl::record_path(VkCommandBuffer cmd, FrameSlot& slot,
     key.add(rt_pose_key_);
     key.add(visibility_version_);
     key.add(settings.path.light_sampling);
+    key.add(material_generation_);
     PathTraceFrame out;
     out.restarted = settings.path.restart || key.h != path_key_ || path_samples_ == 0 ||
                     path_->width() != f.width || path_->height() != f.height;

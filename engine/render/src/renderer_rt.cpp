@@ -54,6 +54,10 @@ void Renderer::Impl::check_rt(const RenderSettings& settings) const {
         throw GpuError("the ray tracer does not draw view '" +
                        std::string(to_string(settings.view)) + "' (it draws " +
                        ray_traced_view_names() + ")");
+    if (variant_ != loaded_variant_)
+        throw GpuError("the ray tracer draws the materials the scene was loaded with: a material "
+                       "variant switched after loading reaches the raster only (load the scene "
+                       "with the variant to trace it)");
     if (settings.overlays != 0 || settings.highlight_instance ||
         !settings.highlight_outline.empty())
         throw GpuError("the ray tracer draws no overlays or highlights (raster only)");
@@ -102,6 +106,7 @@ FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
     // Its descriptor set is rewritten per frame, and the structures are posed below:
     // no earlier frame may be in flight.
     for (auto& s : slots_) wait_slot(*s);
+    apply_animated(settings);
     apply_visibility(settings, true);
     if (!rt_views_)
         rt_views_ = std::make_unique<RtViewPass>(context, *resources, bindless->layout());

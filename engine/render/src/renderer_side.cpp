@@ -85,6 +85,7 @@ SideImage Renderer::Impl::record_rt_side(VkCommandBuffer cmd, FrameSlot& slot,
     // frame of this renderer may still be in flight (a presented RT frame waits for
     // the previous one; rays on lavapipe take far longer than that wait).
     for (auto& s : slots_) wait_slot(*s);
+    apply_animated(settings);
     apply_visibility(settings, true);
     if (!rt_views_)
         rt_views_ = std::make_unique<RtViewPass>(context, *resources, bindless->layout());

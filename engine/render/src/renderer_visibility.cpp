@@ -21,10 +21,26 @@ void Renderer::Impl::load_visibility(const Scene& source) {
     tlas_visibility_ = options.acceleration.hidden_nodes.empty();
 }
 
+std::vector<std::uint8_t> Renderer::Impl::hidden_instances() const {
+    std::vector<std::uint8_t> hidden(instance_node_.size(), 0);
+    for (std::size_t i = 0; i < hidden.size(); ++i)
+        hidden[i] = instance_node_[i] < hidden_nodes_.size() && hidden_nodes_[instance_node_[i]];
+    return hidden;
+}
+
 void Renderer::Impl::apply_visibility(const RenderSettings& settings, bool rt) {
     if (!scene) return;
     static const std::vector<bool> kNone;
-    const std::vector<bool>& given = settings.hidden_nodes ? *settings.hidden_nodes : kNone;
+    const std::vector<bool>& asked = settings.hidden_nodes ? *settings.hidden_nodes : kNone;
+    // Nodes an animation hides (KHR_node_visibility through KHR_animation_pointer) join
+    // the ones the settings hide.
+    std::vector<bool> merged;
+    if (!animated_hidden_.empty()) {
+        merged = animated_hidden_;
+        for (std::size_t i = 0; i < asked.size() && i < merged.size(); ++i)
+            merged[i] = merged[i] || asked[i];
+    }
+    const std::vector<bool>& given = animated_hidden_.empty() ? asked : merged;
     if (given != hidden_given_) {
         // Frames in flight index the GPU cullers being replaced: wait for them and
         // keep their statistics in the history now.
@@ -38,11 +54,7 @@ void Renderer::Impl::apply_visibility(const RenderSettings& settings, bool rt) {
         }
         hidden_given_ = given;
         hidden_nodes_ = hidden_subtrees(nodes_, given);
-        std::vector<std::uint8_t> hidden(instance_node_.size(), 0);
-        for (std::size_t i = 0; i < hidden.size(); ++i)
-            hidden[i] =
-                instance_node_[i] < hidden_nodes_.size() && hidden_nodes_[instance_node_[i]];
-        culling.set_hidden(std::move(hidden), *scene);
+        culling.set_hidden(hidden_instances(), *scene);
         shadows_.invalidate(); // the casters changed
         tlas_visibility_ = false;
     }

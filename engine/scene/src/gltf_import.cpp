@@ -157,6 +157,8 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
     if (problem = detail::check_gltf_properties(root); !problem.empty()) return refuse(problem);
     edited |= detail::replace_unreadable_buffers(root, is_glb, validator->glb_has_bin(), report);
     if (edited) bytes = detail::with_json(root, bytes, is_glb);
+    if (const auto marked = detail::with_channel_nodes(root)) // KHR_animation_pointer
+        bytes = detail::with_json(*marked, bytes, is_glb);
     // Compressed files hold what tinygltf would refuse (see gltf_prepare.h).
     if (auto rewritten = detail::prepared_for_tinygltf(bytes); !rewritten.empty())
         bytes = std::move(rewritten);
@@ -218,6 +220,7 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         detail::import_samplers_images_textures(ctx);
         detail::import_materials(ctx);
         detail::import_meshes(ctx);
+        detail::import_material_variants(ctx);
         detail::attach_meshopt_compression(model, decoded_views, *scene);
         detail::attach_draco_compression(decoded_draco, *scene);
         if (!detail::end_stage(options, LoadStage::Geometry)) return detail::cancelled_result();

@@ -52,6 +52,8 @@ struct ImportContext {
 void import_samplers_images_textures(ImportContext& ctx);
 void import_materials(ImportContext& ctx);
 void import_meshes(ImportContext& ctx);
+// KHR_materials_variants: the root's names and each primitive's mappings (gltf_variants.cpp).
+void import_material_variants(ImportContext& ctx);
 void import_lights_cameras(ImportContext& ctx);
 void import_nodes_and_scenes(ImportContext& ctx);
 // EXT_mesh_gpu_instancing rows of each node (after nodes and skins; gltf_instancing.cpp).

@@ -46,6 +46,17 @@ std::array<bool, kVertexAttributeCount> attributes_used(const MaterialInstance& 
     return used;
 }
 
+std::array<bool, kVertexAttributeCount> mesh_attributes_used(const Scene& scene,
+                                                             std::uint32_t mesh) {
+    std::array<bool, kVertexAttributeCount> used{};
+    for (std::uint32_t m : possible_materials(scene, mesh)) {
+        if (m >= scene.materials.size()) continue;
+        const auto one = attributes_used(scene.materials[m], scene.meshes[mesh]);
+        for (std::size_t i = 0; i < used.size(); ++i) used[i] = used[i] || one[i];
+    }
+    return used;
+}
+
 UsageReport build_usage_report(const Scene& scene) {
     UsageReport report;
     std::vector<std::uint32_t> instance_count(scene.meshes.size(), 0);
@@ -59,7 +70,7 @@ UsageReport build_usage_report(const Scene& scene) {
         u.material_id = mesh.material_id;
         u.instances = instance_count[id];
         u.vertex_count = mesh.vertices.size();
-        u.used = attributes_used(scene.materials[mesh.material_id], mesh);
+        u.used = mesh_attributes_used(scene, id);
         for (VertexAttribute a : kAllVertexAttributes) {
             const auto i = static_cast<std::size_t>(a);
             u.present[i] = mesh.provenance_of(a) != Provenance::Defaulted;

@@ -96,6 +96,15 @@ struct ResidentStats {
     std::uint64_t transmission_target_bytes = 0;
 };
 
+// What set_material_variant() did: the variant now drawn and what changed for it.
+struct VariantSwitch {
+    std::int32_t variant = -1;    // -1: the file's default materials
+    std::uint32_t meshes = 0;     // primitives (engine meshes) whose material changed
+    std::uint32_t instances = 0;  // draws of them
+    std::uint64_t gpu_bytes = 0;  // uploaded (the instance records' material words)
+    bool culling_rebuilt = false; // an alpha mode or sidedness changed
+};
+
 struct RendererOptions {
     std::uint32_t shadow_resolution = kDefaultShadowResolution;
     // How load(scene) prepares textures; default: no disk cache, BC where supported.
@@ -156,6 +165,7 @@ private:
     friend class PresentedFrame; // records swapchain frames through Impl
     friend class ComparisonFrame;
     friend PathTraceImage read_path_trace(Renderer&);
+    friend VariantSwitch set_material_variant(Renderer&, std::int32_t);
     friend ComparisonStats render_comparison(Renderer&, const RenderSettings&, Renderer&,
                                              const RenderSettings&, const ComparisonSettings&,
                                              std::vector<std::uint8_t>*);
@@ -166,6 +176,15 @@ private:
 // flight; empty before the first path-traced frame), and its estimated error
 // (path_trace.h). FrameStats::path counts the samples without a readback.
 PathTraceImage read_path_trace(Renderer& renderer);
+
+// Shows KHR_materials_variants variant `variant` (-1: the file's default materials)
+// of the loaded scene without reloading it: only the materials its primitives draw
+// with change (draw groups and the instance records' material word); every texture
+// and vertex stream a variant reads was uploaded at load. Waits for the frames in
+// flight. Throws std::out_of_range for a variant the scene does not have. The ray
+// tracer keeps the materials the scene was loaded with and refuses frames while
+// another variant is shown.
+VariantSwitch set_material_variant(Renderer& renderer, std::int32_t variant);
 PathTraceError path_trace_error(Renderer& renderer);
 
 } // namespace sherpa::gpu

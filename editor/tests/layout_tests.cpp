@@ -362,7 +362,7 @@ void LayoutTests::validationIsNotCutOff() {
         *w, QStringLiteral(SHERPA_TEST_DATA_DIR "/unsupported_material_extensions.gltf")));
     QVERIFY(w->validationDock()->isVisible());
     QVERIFY(w->validationDock()->activatePointer(
-        QStringLiteral("/materials/0/extensions/KHR_materials_transmission")));
+        QStringLiteral("/materials/0/extensions/ADOBE_materials_thin_transparency")));
     for (const QString& language : kLanguages) {
         QVERIFY(switch_language(*w, language));
         QStringList cut = cut_in_every_dock(*w);

@@ -14,10 +14,16 @@ namespace {
 
 constexpr const char* kExtension = "KHR_materials_variants";
 constexpr std::string_view kCode = "SHERPA_MATERIAL_VARIANT_INVALID";
+// The Khronos validator's codes where it has one (all errors there): the message list
+// then agrees with it, and the file still loads.
+constexpr std::string_view kUnresolved = "UNRESOLVED_REFERENCE";
+constexpr std::string_view kUndefined = "UNDEFINED_PROPERTY";
+constexpr std::string_view kNonUnique = "KHR_MATERIALS_VARIANTS_NON_UNIQUE_VARIANT";
 
-void warn(ImportContext& ctx, const std::string& message) {
+void warn(ImportContext& ctx, const std::string& message, std::string_view code = kCode,
+          Severity severity = Severity::Warning) {
     ctx.scene.warnings.push_back(message);
-    add_import_message(ctx.scene.validation, kCode, Severity::Warning, message);
+    add_import_message(ctx.scene.validation, code, severity, message);
 }
 
 // An index value of the JSON, or -1 (and a warning) where it is not a non-negative
@@ -31,8 +37,10 @@ std::int32_t index_in(ImportContext& ctx, const tinygltf::Value& v, std::size_t 
     }
     const int i = v.GetNumberAsInt();
     if (static_cast<std::size_t>(i) >= count) {
-        warn(ctx, where + ": " + what + " " + std::to_string(i) + " out of range (file has " +
-                      std::to_string(count) + "); ignored");
+        warn(ctx,
+             where + ": " + what + " " + std::to_string(i) + " out of range (file has " +
+                 std::to_string(count) + "); ignored",
+             kUnresolved, Severity::Error);
         return -1;
     }
     return i;
@@ -83,7 +91,11 @@ void read_mappings(ImportContext& ctx, const tinygltf::Primitive& prim, std::uin
             index_in(ctx, mapping.Get("material"), materials, at + ".material", "material");
         const tinygltf::Value& names = mapping.Get("variants");
         if (!names.IsArray()) {
-            warn(ctx, at + ".variants: missing or not an array; mapping ignored");
+            if (names.Type() == tinygltf::NULL_TYPE)
+                warn(ctx, at + ": property 'variants' must be defined; mapping ignored", kUndefined,
+                     Severity::Error);
+            else
+                warn(ctx, at + ".variants: not an array; mapping ignored");
             continue;
         }
         if (material < 0) continue; // its variants show the default material
@@ -92,10 +104,13 @@ void read_mappings(ImportContext& ctx, const tinygltf::Primitive& prim, std::uin
             const std::int32_t v = index_in(ctx, names.Get(int(j)), variants, vat, "variant");
             if (v < 0) continue;
             std::int32_t& slot = out.materials[std::size_t(v)];
-            if (slot >= 0 && slot != material)
-                warn(ctx, vat + ": variant " + std::to_string(v) +
-                              " is mapped twice for this primitive; the first mapping (material " +
-                              std::to_string(slot) + ") is kept");
+            if (slot >= 0)
+                warn(ctx,
+                     vat + ": variant " + std::to_string(v) +
+                         " is mapped more than once for this primitive; the first mapping "
+                         "(material " +
+                         std::to_string(slot) + ") is kept",
+                     kNonUnique, Severity::Error);
             else
                 slot = material;
         }

@@ -42,8 +42,10 @@ std::vector<TextureUse> collect_texture_uses(const Scene& scene) {
     std::set<std::uint32_t> used_materials;
     // Every material an instance can show (KHR_materials_variants included): a variant
     // switch then finds its textures on the GPU.
-    for (const MeshInstance& inst : scene.instances)
+    for (const MeshInstance& inst : scene.instances) {
+        used_materials.insert(inst.material_id); // the instance's own, with or without a mesh
         for (std::uint32_t m : possible_materials(scene, inst.mesh_id)) used_materials.insert(m);
+    }
     std::map<std::pair<std::int32_t, int>, TextureUse> uses;
     std::map<std::pair<std::int32_t, int>, std::set<float>> cutoffs; // of masked materials
     auto add = [&](const TextureSlot& slot, TextureRole role, std::optional<float> cutoff) {

@@ -6,6 +6,7 @@
 // are read from the shader that uses them; structs from a probe shader written here, in
 // the layout the renderer's shaders declare them with (glslang's reflection does not
 // descend into buffer_reference blocks, so a record behind one is a struct of its own).
+#include <sherpa/render/gpu_material_ext_structs.h>
 #include <sherpa/render/gpu_structs.h>
 #include <sherpa/scene/material.h>
 
@@ -468,7 +469,8 @@ TEST_P(StructTwins, SameNamesOffsetsAndSize) {
 // not named GPU*.)
 TEST(StructTwinTable, ListsEveryGpuStructOfTheHeaders) {
     const std::regex head(R"(^struct\s+(?:alignas\(\d+\)\s+)?(GPU\w+)\s*\{)");
-    for (const char* header : {SHERPA_GPU_STRUCTS_HEADER, SHERPA_MATERIAL_HEADER}) {
+    for (const char* header :
+         {SHERPA_GPU_STRUCTS_HEADER, SHERPA_GPU_MATERIAL_EXT_HEADER, SHERPA_MATERIAL_HEADER}) {
         std::ifstream in(header);
         ASSERT_TRUE(in) << header;
         for (std::string line; std::getline(in, line);) {

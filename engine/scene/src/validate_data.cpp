@@ -6,6 +6,7 @@
 
 #include "checked_math.h"
 #include "validate_kernels.h"
+#include "validate_reader.h"
 
 #include <cmath>
 #include <cstring>
@@ -15,83 +16,6 @@
 
 namespace sherpa::detail {
 namespace {
-
-using Buffers = std::span<const std::span<const std::uint8_t>>;
-
-// One accessor's values, read element by element (sparse overrides applied).
-class Reader {
-public:
-    Reader(const AccessorLayout& a, Buffers buffers) : a_(a) {
-        if (!a.readable || a.buffer >= buffers.size()) return;
-        const auto& b = buffers[a.buffer];
-        const auto last = checked_mul(a.stride, a.count - 1);
-        const auto end =
-            last ? checked_add(*last, std::size_t{component_size(a.component_type)} * a.components)
-                 : std::nullopt;
-        if (!end || !range_fits(a.offset, *end, b.size())) return;
-        base_ = b.data() + a.offset;
-        ok_ = true;
-    }
-    bool ok() const { return ok_; }
-    std::uint64_t count() const { return a_.count; }
-    std::uint32_t components() const { return a_.components; }
-    // Raw component value (integers as integers).
-    double raw(std::uint64_t i, std::uint32_t c) const {
-        const std::uint8_t* p = base_ + i * a_.stride + c * component_size(a_.component_type);
-        switch (a_.component_type) {
-        case 5120:
-            return static_cast<std::int8_t>(*p);
-        case 5121:
-            return *p;
-        case 5122: {
-            std::int16_t x;
-            std::memcpy(&x, p, 2);
-            return x;
-        }
-        case 5123: {
-            std::uint16_t x;
-            std::memcpy(&x, p, 2);
-            return x;
-        }
-        case 5125: {
-            std::uint32_t x;
-            std::memcpy(&x, p, 4);
-            return x;
-        }
-        default: {
-            float x;
-            std::memcpy(&x, p, 4);
-            return x;
-        }
-        }
-    }
-    // Value as used: normalized integers mapped to [0, 1] or [-1, 1].
-    double value(std::uint64_t i, std::uint32_t c) const {
-        const double r = raw(i, c);
-        if (!a_.normalized) return r;
-        switch (a_.component_type) {
-        case 5120:
-            return std::max(r / 127.0, -1.0);
-        case 5121:
-            return r / 255.0;
-        case 5122:
-            return std::max(r / 32767.0, -1.0);
-        case 5123:
-            return r / 65535.0;
-        default:
-            return r;
-        }
-    }
-    bool is_float() const { return a_.component_type == 5126; }
-    const std::uint8_t* base() const { return base_; }
-    std::uint64_t stride() const { return a_.stride; }
-    int component_type() const { return a_.component_type; }
-
-private:
-    const AccessorLayout& a_;
-    const std::uint8_t* base_ = nullptr;
-    bool ok_ = false;
-};
 
 // Per-component bounds of the finite values, in the component type itself (one typed
 // pass over the bytes; the data pass's hot loop). Returns the first non-finite
@@ -399,76 +323,6 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r,
     default:
         break;
     }
-}
-
-std::uint64_t read_index(const std::uint8_t* p, int type) {
-    if (type == 5121) return *p;
-    if (type == 5123) {
-        std::uint16_t x;
-        std::memcpy(&x, p, 2);
-        return x;
-    }
-    std::uint32_t x;
-    std::memcpy(&x, p, 4);
-    return x;
-}
-
-// A copy of sparse accessor `i`'s values: its base (zeros without a bufferView) with the
-// overrides applied, checked first (ACCESSOR_SPARSE_INDICES_NON_INCREASING,
-// ACCESSOR_SPARSE_INDEX_OOB). Empty when the indices are bad or a part cannot be read;
-// the copy is no larger than the base's bytes, or kMaxZeroBase without a base.
-constexpr std::uint64_t kMaxZeroBase = std::uint64_t{64} << 20;
-std::vector<std::uint8_t> sparse_values(Validation& v, std::size_t i, Buffers buffers) {
-    const AccessorLayout& a = v.accessors[i];
-    const AccessorLayout::Sparse& sd = a.sparse_data;
-    const std::uint64_t element = std::uint64_t{component_size(a.component_type)} * a.components;
-    if (!(a.readable || sd.zero_base) || element == 0 || !sd.indices_readable ||
-        sd.indices_buffer >= buffers.size())
-        return {};
-    const std::uint32_t isize = component_size(sd.index_type);
-    const auto& ib = buffers[sd.indices_buffer];
-    if (!range_fits(sd.indices_offset, sd.overrides * isize, ib.size())) return {};
-    const std::string where = ptr(ptr("/accessors", i), "sparse");
-    bool bad = false;
-    for (std::uint64_t k = 0; k < sd.overrides; ++k) {
-        const std::uint64_t index =
-            read_index(ib.data() + sd.indices_offset + k * isize, sd.index_type);
-        const std::uint64_t previous =
-            k ? read_index(ib.data() + sd.indices_offset + (k - 1) * isize, sd.index_type) : 0;
-        if (k && index <= previous && !bad)
-            v.add("ACCESSOR_SPARSE_INDICES_NON_INCREASING", Severity::Error, where,
-                  "Accessor sparse indices element at index " + std::to_string(k) +
-                      " is less than or equal to previous: " + std::to_string(index) +
-                      " <= " + std::to_string(previous) + ".");
-        else if (index >= a.count && !bad)
-            v.add("ACCESSOR_SPARSE_INDEX_OOB", Severity::Error, where,
-                  "Accessor sparse indices element at index " + std::to_string(k) +
-                      " is greater than or equal to the number of accessor elements: " +
-                      std::to_string(index) + " >= " + std::to_string(a.count) + ".");
-        else
-            continue;
-        bad = true;
-    }
-    if (bad || !sd.values_readable || sd.values_buffer >= buffers.size()) return {};
-    const auto& vb = buffers[sd.values_buffer];
-    if (!range_fits(sd.values_offset, sd.overrides * element, vb.size())) return {};
-    std::vector<std::uint8_t> out;
-    if (a.readable) {
-        const Reader base(a, buffers);
-        if (!base.ok()) return {};
-        out.resize(a.count * element);
-        for (std::uint64_t e = 0; e < a.count; ++e)
-            std::memcpy(out.data() + e * element, base.base() + e * a.stride, element);
-    } else {
-        if (a.count > kMaxZeroBase / element) return {};
-        out.assign(a.count * element, 0);
-    }
-    for (std::uint64_t k = 0; k < sd.overrides; ++k)
-        std::memcpy(out.data() +
-                        read_index(ib.data() + sd.indices_offset + k * isize, sd.index_type) *
-                            element,
-                    vb.data() + sd.values_offset + k * element, element);
-    return out;
 }
 
 } // namespace

@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include <sherpa/render/gpu_material_ext_structs.h>
 #include <sherpa/render/gpu_structs.h>
 #include <sherpa/scene/material.h>
 #include <sherpa/scene/texture_records.h>

@@ -20,9 +20,7 @@ using sherpa::test::CliRun;
 using sherpa::test::run_cli;
 
 std::string temp_path(const std::string& name) {
-    return (std::filesystem::temp_directory_path() /
-            ("sherpa_cli_matext_" + std::to_string(::getpid()) + "_" + name))
-        .string();
+    return sherpa::test::temp_path("sherpa_cli_matext", name);
 }
 
 using sherpa::test::kSweepCamera;

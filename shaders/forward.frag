@@ -11,6 +11,8 @@
 #include "surface_views.glsl"
 #include "ibl.glsl"
 #include "material_ext.glsl"
+#include "clearcoat.glsl"
+#include "sheen.glsl"
 #include "tonemap.glsl"
 #include "punctual.glsl"
 
@@ -41,10 +43,15 @@ const bool UNLIT_TOPOLOGY = (STREAMS & (MESH_LINES | MESH_POINTS)) != 0u;
 const bool READ_TANGENT = (STREAMS & HAS_TANGENT) != 0u || VIEW == VIEW_TANGENT ||
                           VIEW == VIEW_BITANGENT || VIEW == VIEW_TANGENT_W;
 
-vec3 punctual_light(Surface s, GPULight light, vec3 pos) {
+// `coat` and `sheen` gather the light a clearcoat and a sheen reflect (clearcoat.glsl,
+// sheen.glsl; none without them).
+vec3 punctual_light(Surface s, Clearcoat cc, Sheen sh, GPULight light, vec3 pos, inout vec3 coat,
+                    inout vec3 sheen) {
     vec3 l;
     float dist;
     vec3 radiance = punctual_incident(light, pos, l, dist);
+    coat += clearcoat_times_cos(cc, s.v, l) * radiance;
+    sheen += sheen_times_cos(sh, s.n, s.v, l) * radiance;
     return brdf_times_cos(s, l) * radiance;
 }
 
@@ -108,6 +115,14 @@ void main() {
     // (factor x texture rgb); 1 and white without the extension.
     case VIEW_SPECULAR_WEIGHT: c = vec3(material_specular(ext, uv0, uv1).a); break;
     case VIEW_SPECULAR_COLOR: c = material_specular(ext, uv0, uv1).rgb; break;
+    // KHR_materials_clearcoat: the coat's weight and roughness (factor x texture; 0
+    // without the extension) and its normal (the geometry's without its own map).
+    case VIEW_CLEARCOAT: c = vec3(material_clearcoat(ext, t, b, n, uv0, uv1).factor); break;
+    case VIEW_CLEARCOAT_ROUGHNESS: c = vec3(material_clearcoat(ext, t, b, n, uv0, uv1).roughness); break;
+    case VIEW_CLEARCOAT_NORMAL: c = encode_vector(material_clearcoat(ext, t, b, n, uv0, uv1).n); break;
+    // KHR_materials_sheen: the sheen colour (linear, like base colour) and roughness.
+    case VIEW_SHEEN_COLOR: c = material_sheen(ext, uv0, uv1).color; break;
+    case VIEW_SHEEN_ROUGHNESS: c = vec3(material_sheen(ext, uv0, uv1).roughness); break;
     case VIEW_SHADOW:
         c = vec3(sun_visibility(in_world_pos, shadow_normal, -(frame.view * vec4(in_world_pos, 1.0)).z));
         break;
@@ -134,27 +149,46 @@ void main() {
                 s = metal_rough_surface(base.rgb, mr.x, mr.y, f0, f90, shading_n, v);
             }
         }
+        // KHR_materials_clearcoat: factor 0 (nothing to add) without the extension.
+        const Clearcoat cc = material_clearcoat(ext, t, b, n, uv0, uv1);
+        // KHR_materials_sheen: black (nothing to add) without the extension.
+        const Sheen sh = material_sheen(ext, uv0, uv1);
+        vec3 coat = vec3(0.0), sheen = vec3(0.0);
         // The sun (and its shadow lookup) only where some pixel of the SIMD group
         // faces it: a uniform branch, so a CPU rasterizer skips the work.
         vec3 sun_l = -normalize(frame.sun_direction.xyz);
         c = vec3(0.0);
-        if (subgroupAny(dot(s.n, sun_l) > 0.0)) {
+        if (subgroupAny(dot(s.n, sun_l) > 0.0 || (cc.factor > 0.0 && dot(cc.n, sun_l) > 0.0))) {
             float view_depth = -(frame.view * vec4(in_world_pos, 1.0)).z;
-            float shadow = sun_shadow(in_world_pos, shadow_normal, view_depth);
-            c = brdf_times_cos(s, sun_l) * frame.sun_radiance.rgb * shadow;
+            vec3 sun = frame.sun_radiance.rgb * sun_shadow(in_world_pos, shadow_normal, view_depth);
+            c = brdf_times_cos(s, sun_l) * sun;
+            coat += clearcoat_times_cos(cc, v, sun_l) * sun;
+            sheen += sheen_times_cos(sh, s.n, v, sun_l) * sun;
         }
-        for (uint i = 0u; i < frame.params.y; ++i) c += punctual_light(s, frame.lights[i], in_world_pos);
+        for (uint i = 0u; i < frame.params.y; ++i)
+            c += punctual_light(s, cc, sh, frame.lights[i], in_world_pos, coat, sheen);
         float ao = x.workflow == WORKFLOW_SPECULAR_GLOSSINESS ? occlusion(m, x, uv0, uv1)
                                                               : occlusion(m, x, uv0, uv1, mr_texel);
         // The environment replaces the sky/ground ambient term where one is loaded.
         c += (has_environment() ? environment_light(s) : ambient_light(s, frame.ambient.rgb)) * ao;
         c += emission(m, x, uv0, uv1);
+        if (max3(sh.color) > 0.0) {
+            sheen += (has_environment() ? sheen_environment(sh, s.n, v)
+                                        : sh.color * sheen_albedo(sh.roughness, dot(s.n, v)) *
+                                              hemisphere(s.n, frame.ambient.rgb)) * ao;
+            c = sheen_over(sh, s.n, v, c, sheen);
+        }
+        if (cc.factor > 0.0) {
+            coat += (has_environment() ? clearcoat_environment(cc, v) : clearcoat_ambient(cc, v, frame.ambient.rgb)) * ao;
+            c = clearcoat_over(cc, v, c, coat);
+        }
         break;
     }
     }
     }
     // Colour views (lit, base colour, emissive) are linear radiance; the rest are data.
-    if (view != VIEW_LIT && view != VIEW_BASE_COLOR && view != VIEW_EMISSIVE && view != VIEW_SPECULAR_COLOR)
+    if (view != VIEW_LIT && view != VIEW_BASE_COLOR && view != VIEW_EMISSIVE && view != VIEW_SPECULAR_COLOR &&
+        view != VIEW_SHEEN_COLOR)
         c = display_to_linear(c);
     // The lit view is radiance: exposure and the tone curve map it to the display (per
     // fragment, before blending, as three.js does).

@@ -20,5 +20,10 @@ struct PathPayload {
     uint seed;      // set by the tracer: any-hit draws stochastic transparency from it
     vec3 emission;
     float f90; // Surface::f90 (brdf.glsl): 1 but for KHR_materials_specular's dielectrics
+    vec3 clearcoat_normal;    // KHR_materials_clearcoat (clearcoat.glsl's Clearcoat)
+    float clearcoat;          // 0: no coat
+    float clearcoat_roughness;
+    vec3 sheen_color; // KHR_materials_sheen (sheen.glsl's Sheen); black: no sheen
+    float sheen_roughness;
 };
 #endif

@@ -76,9 +76,12 @@ struct RayPayload {
 
 // Rays have no derivatives: textures are read at an explicit level, 0 unless
 // render --texture-lod names one.
+vec4 sample_transformed(GPUTextureTransform t, uint tex, vec2 uv0, vec2 uv1) {
+    return textureLod(textures[nonuniformEXT(tex)], transform_uv(t, uv0, uv1), max(pc.texture_lod, 0.0));
+}
+
 vec4 sample_slot(GPUMaterialExtra extra, uint slot, uint tex, vec2 uv0, vec2 uv1) {
-    return textureLod(textures[nonuniformEXT(tex)], transform_uv(extra.uv[slot], uv0, uv1),
-                      max(pc.texture_lod, 0.0));
+    return sample_transformed(extra.uv[slot], tex, uv0, uv1);
 }
 
 #ifndef SHERPA_RT_RAYGEN

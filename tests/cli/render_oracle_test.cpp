@@ -36,6 +36,10 @@ struct OracleCase {
     // Sweeps only (0 elsewhere): the largest difference of one sphere's mean colour
     // (8-bit sRGB / 255, per channel) between the two renderers.
     double max_sphere_diff = 0.0;
+    // Rows (bit per row) that sweep a roughness: their spheres blur rather than
+    // brighten, so the row is checked by its falling contrast (the spread of the
+    // luminance inside each sphere) instead of a rising mean.
+    unsigned roughness_rows = 0;
 };
 
 void PrintTo(const OracleCase& c, std::ostream* os) {
@@ -73,6 +77,13 @@ const OracleCase kCases[] = {
      0.0f, 23.0, 0.03, 0.10},
     {"specular_sweep_city_aces", "sweep:specular_sweep", "city.exr", kSweepCamera, "aces", 0.0f,
      24.5, 0.033, 0.045},
+    // Row 2 sweeps the coat's roughness: checked by its falling contrast.
+    {"clearcoat_sweep_studio_neutral", "sweep:clearcoat_sweep", "studio.exr", kSweepCamera,
+     "neutral", 0.0f, 20.0, 0.05, 0.1, 0b10},
+    {"clearcoat_sweep_city_aces", "sweep:clearcoat_sweep", "city.exr", kSweepCamera, "aces", 0.0f,
+     20.0, 0.05, 0.1, 0b10},
+    {"sheen_sweep_studio_neutral", "sweep:sheen_sweep", "studio.exr", kSweepCamera, "neutral",
+     0.0f, 20.0, 0.05, 0.1, 0b10},
 };
 
 // A sample model by name, or "sweep:NAME": an authored sweep in tests/data/material_sweeps.
@@ -99,14 +110,16 @@ Image read(const fs::path& p) {
 }
 
 // Mean 8-bit colour (/255) of a disk about a sweep sphere's centre, as kSweepCamera
-// projects it: two rows (y = +0.5, -0.5) of five (x = -2 .. 2), 320x240, 45 degrees.
-glm::dvec3 sphere_mean(const Image& img, int row, int column) {
+// projects it: two rows (y = +0.5, -0.5) of five (x = -2 .. 2), 320x240, 45 degrees;
+// `contrast` (if given) the standard deviation of the disk's mean-of-channels.
+glm::dvec3 sphere_mean(const Image& img, int row, int column, double* contrast = nullptr) {
     const double half_height = 5.0 * std::tan(22.5 * 3.14159265358979 / 180.0);
     const double x = column - 2.0, y = 0.5 - row;
     const double cx = img.width * 0.5 * (1.0 + x / (half_height * img.width / img.height));
     const double cy = img.height * 0.5 * (1.0 - y / half_height);
     const double r = 0.6 * 0.4 / half_height * img.height * 0.5; // inside the silhouette
     glm::dvec3 sum(0.0);
+    double grey = 0.0, grey2 = 0.0;
     int n = 0;
     for (int py = int(cy - r); py <= int(cy + r); ++py)
         for (int px = int(cx - r); px <= int(cx + r); ++px) {
@@ -114,9 +127,14 @@ glm::dvec3 sphere_mean(const Image& img, int row, int column) {
                 continue;
             const std::uint8_t* p = &img.rgba[(std::size_t(py) * img.width + std::size_t(px)) * 4];
             sum += glm::dvec3(p[0], p[1], p[2]) / 255.0;
+            const double g = (p[0] + p[1] + p[2]) / (3.0 * 255.0);
+            grey += g;
+            grey2 += g * g;
             ++n;
         }
-    return sum / double(std::max(n, 1));
+    n = std::max(n, 1);
+    if (contrast) *contrast = std::sqrt(std::max(0.0, grey2 / n - (grey / n) * (grey / n)));
+    return sum / double(n);
 }
 
 // Each sphere of a sweep agrees between the renderers; along each row (every sweep
@@ -129,10 +147,15 @@ void check_sweep(const OracleCase& c, const Image& ours, const Image& theirs) {
         std::string line;
         glm::dvec3 first_a(0.0), first_b(0.0), last_a(0.0), last_b(0.0);
         double prev_a = -1.0, prev_b = -1.0;
+        const bool roughness = (c.roughness_rows >> row) & 1u;
         for (int col = 0; col < 5; ++col) {
-            const glm::dvec3 a = sphere_mean(ours, row, col), b = sphere_mean(theirs, row, col);
+            double contrast_a = 0.0, contrast_b = 0.0;
+            glm::dvec3 a = sphere_mean(ours, row, col, &contrast_a),
+                       b = sphere_mean(theirs, row, col, &contrast_b);
             const glm::dvec3 d = glm::abs(a - b);
             worst = std::max({worst, d.x, d.y, d.z});
+            // A roughness row: its contrast, negated, must rise along the row.
+            if (roughness) a = glm::dvec3(-contrast_a), b = glm::dvec3(-contrast_b);
             if (col == 0) first_a = a, first_b = b;
             last_a = a, last_b = b;
             // Monotonic within a step of the 8-bit mean's noise.
@@ -140,8 +163,11 @@ void check_sweep(const OracleCase& c, const Image& ours, const Image& theirs) {
             EXPECT_GE(peak(b), prev_b - 0.002) << c.name << " row " << row << " three col " << col;
             prev_a = peak(a), prev_b = peak(b);
             char buf[96];
-            std::snprintf(buf, sizeof buf, " (%.3f %.3f %.3f | %.3f %.3f %.3f)", a.x, a.y, a.z, b.x,
-                          b.y, b.z);
+            if (roughness)
+                std::snprintf(buf, sizeof buf, " (contrast %.3f | %.3f)", contrast_a, contrast_b);
+            else
+                std::snprintf(buf, sizeof buf, " (%.3f %.3f %.3f | %.3f %.3f %.3f)", a.x, a.y, a.z,
+                              b.x, b.y, b.z);
             line += buf;
         }
         const double spread_a = peak(last_a) - peak(first_a),
@@ -150,7 +176,8 @@ void check_sweep(const OracleCase& c, const Image& ours, const Image& theirs) {
                     "%.4f (sherpa | three):%s\n",
                     c.name, row, worst, spread_a, spread_b, line.c_str());
         EXPECT_LE(worst, c.max_sphere_diff) << c.name << " row " << row;
-        EXPECT_GT(spread_b, 0.03) << c.name << " row " << row << ": the sweep shows too little";
+        EXPECT_GT(spread_b, roughness ? 0.01 : 0.03)
+            << c.name << " row " << row << ": the sweep shows too little";
         EXPECT_GT(spread_a / spread_b, 0.6) << c.name << " row " << row;
         EXPECT_LT(spread_a / spread_b, 1.6) << c.name << " row " << row;
     }

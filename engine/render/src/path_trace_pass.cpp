@@ -21,7 +21,7 @@ constexpr VkShaderStageFlags kHitStages =
     VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR | VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
 constexpr VkShaderStageFlags kAllStages =
     VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR | kHitStages;
-constexpr std::uint32_t kBindings = 9;
+constexpr std::uint32_t kBindings = 10;
 
 // Copies `image` (GENERAL, written by the launches) into `buffer` at `offset` through
 // TRANSFER_SRC_OPTIMAL, and back to GENERAL for the next launches.
@@ -68,11 +68,19 @@ PathTracePass::PathTracePass(Context& context, ResourceManager& resources,
         {6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, kRaygen, nullptr},  // sums
         {7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, kRaygen, nullptr},  // squared luminance
         {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kRaygen, nullptr}, // distribution
+        // The material extension blocks: partially bound, nothing without extensions.
+        {9, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kHitStages, nullptr},
     };
-    const VkDescriptorBindingFlags flags[kBindings] = {
-        0, 0, 0,
-        0, 0, VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
-        0, 0, VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT};
+    const VkDescriptorBindingFlags flags[kBindings] = {0,
+                                                       0,
+                                                       0,
+                                                       0,
+                                                       0,
+                                                       VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
+                                                       0,
+                                                       0,
+                                                       VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
+                                                       VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT};
     auto flags_info = vk_init<VkDescriptorSetLayoutBindingFlagsCreateInfo>(
         VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_BINDING_FLAGS_CREATE_INFO);
     flags_info.bindingCount = kBindings;
@@ -81,7 +89,7 @@ PathTracePass::PathTracePass(Context& context, ResourceManager& resources,
                                                "vkCreateDescriptorSetLayout(path)", 0, &flags_info);
     const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1},
                                           {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 3},
-                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3},
+                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4},
                                           {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
                                           {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
     pool_ = create_descriptor_pool(device, 1, sizes, "vkCreateDescriptorPool(path)");
@@ -189,6 +197,9 @@ void PathTracePass::write_set(const PathTracedFrame& f) {
         distribution = {resources_.get(distribution_).buffer.get(), 0, VK_WHOLE_SIZE};
         add(8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER).pBufferInfo = &distribution;
     }
+    const VkDescriptorBufferInfo extensions{f.material_extensions, 0, VK_WHOLE_SIZE};
+    if (f.material_extensions != VK_NULL_HANDLE)
+        add(9, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER).pBufferInfo = &extensions;
     vkUpdateDescriptorSets(context_.device(), count, writes.data(), 0, nullptr);
 }
 

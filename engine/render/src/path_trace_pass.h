@@ -22,7 +22,9 @@ struct PathTracedFrame {
     VkAccelerationStructureKHR tlas = VK_NULL_HANDLE;
     VkBuffer materials = VK_NULL_HANDLE, material_extras = VK_NULL_HANDLE;
     VkBuffer frame_data = VK_NULL_HANDLE; // GPUFrameData: lights, sun, environment, display
-    VkDescriptorImageInfo environment{};  // the specular cube; no view: no environment
+    // The material extension blocks (material_extensions.h); none without extensions.
+    VkBuffer material_extensions = VK_NULL_HANDLE;
+    VkDescriptorImageInfo environment{}; // the specular cube; no view: no environment
     std::uint32_t width = 0, height = 0;
     std::uint32_t first_sample = 0, samples = 0; // first_sample 0: the sums start over
     GPUPathPushConstants push{};                 // first_sample, samples, env_size: set here

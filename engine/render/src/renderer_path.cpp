@@ -47,6 +47,7 @@ PathTraceFrame Renderer::Impl::record_path(VkCommandBuffer cmd, FrameSlot& slot,
     f.tlas = acceleration->tlas();
     f.materials = scene->materials().buffer();
     f.material_extras = scene->materials().extras_buffer();
+    f.material_extensions = scene->materials().extensions_buffer();
     f.frame_data = resources->get(slot.frame_data).buffer.get();
     if (environment) f.environment = environment->specular_descriptor();
     f.width = settings.width;

@@ -1,5 +1,6 @@
 // glTF samplers, images, textures and materials -> engine records.
 #include "accessor_reader.h"
+#include "gltf_material_layers.h"
 #include "import_context.h"
 #include "import_error.h"
 
@@ -53,23 +54,6 @@ TextureSlot read_slot(ImportContext& ctx, int index, int tex_coord,
                  "; Sherpa keeps TEXCOORD_0 and TEXCOORD_1 only, so it samples with zero UVs");
     ctx.scene.textures[static_cast<std::size_t>(index)].roles |= role;
     return slot;
-}
-
-// A textureInfo inside an extension object (tinygltf leaves those as JSON values).
-TextureSlot read_value_slot(ImportContext& ctx, const tinygltf::Value& info,
-                            const std::string& where, TextureRole role) {
-    if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsNumber()) {
-        if (info.IsObject()) fail(where + ".index: required number is missing");
-        return {};
-    }
-    tinygltf::ExtensionMap ext;
-    if (info.Has("extensions") && info.Get("extensions").IsObject())
-        for (const auto& key : info.Get("extensions").Keys())
-            ext[key] = info.Get("extensions").Get(key);
-    const int tex_coord = info.Has("texCoord") && info.Get("texCoord").IsNumber()
-                              ? info.Get("texCoord").GetNumberAsInt()
-                              : 0;
-    return read_slot(ctx, info.Get("index").GetNumberAsInt(), tex_coord, ext, where, role);
 }
 
 glm::vec4 vec_or(const tinygltf::Value& obj, const char* key, glm::vec4 fallback, int n) {
@@ -207,6 +191,22 @@ void check_factors(ImportContext& ctx, MaterialInstance& m, const std::string& w
 }
 
 } // namespace
+
+TextureSlot read_value_slot(ImportContext& ctx, const tinygltf::Value& info,
+                            const std::string& where, TextureRole role) {
+    if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsNumber()) {
+        if (info.IsObject()) fail(where + ".index: required number is missing");
+        return {};
+    }
+    tinygltf::ExtensionMap ext;
+    if (info.Has("extensions") && info.Get("extensions").IsObject())
+        for (const auto& key : info.Get("extensions").Keys())
+            ext[key] = info.Get("extensions").Get(key);
+    const int tex_coord = info.Has("texCoord") && info.Get("texCoord").IsNumber()
+                              ? info.Get("texCoord").GetNumberAsInt()
+                              : 0;
+    return read_slot(ctx, info.Get("index").GetNumberAsInt(), tex_coord, ext, where, role);
+}
 
 std::uint32_t ImportContext::default_material_id() {
     if (default_material < 0) {
@@ -383,6 +383,11 @@ void import_material(ImportContext& ctx, std::size_t i) {
         if (const auto it = src.extensions.find("KHR_materials_specular");
             it != src.extensions.end())
             m.specular = read_specular(ctx, it->second, where);
+        if (const auto it = src.extensions.find("KHR_materials_clearcoat");
+            it != src.extensions.end())
+            m.clearcoat = read_clearcoat(ctx, it->second, where);
+        if (const auto it = src.extensions.find("KHR_materials_sheen"); it != src.extensions.end())
+            m.sheen = read_sheen(ctx, it->second, where);
         ctx.scene.materials.push_back(std::move(m));
     }
 }

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include <sherpa/scene/material_extension_slots.h>
 #include <sherpa/scene/mesh_tangents.h>
 
 #include "tangent_internal.h"
@@ -80,8 +81,7 @@ std::uint32_t apply_corner_tangents(Mesh& mesh, std::span<const glm::vec4> corne
 
 std::uint32_t normal_uv_set(const Scene& scene, const Mesh& mesh) {
     if (mesh.material_id >= scene.materials.size()) return 0;
-    const TextureSlot& normal = scene.materials[mesh.material_id].normal;
-    return normal.present() ? normal.tex_coord : 0;
+    return normal_map_uv_set(scene.materials[mesh.material_id]);
 }
 
 MeshTangentInput tangent_input_of(const Mesh& mesh, std::uint32_t tex_coord) {
@@ -142,7 +142,7 @@ SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptio
     std::size_t corners_to_generate = 0, meshes_to_generate = 0;
     for (const Mesh& mesh : scene.meshes) {
         const bool normal_texture = mesh.material_id < scene.materials.size() &&
-                                    scene.materials[mesh.material_id].normal.present();
+                                    reads_normal_map(scene.materials[mesh.material_id]);
         const bool authored = mesh.provenance_of(VertexAttribute::Tangent) == Provenance::Authored;
         if (mesh.topology() == Topology::Triangles &&
             (options.regenerate || (!authored && normal_texture))) {
@@ -177,7 +177,7 @@ SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptio
             const MaterialInstance* material = mesh.material_id < scene.materials.size()
                                                    ? &scene.materials[mesh.material_id]
                                                    : nullptr;
-            const bool normal_texture = material && material->normal.present();
+            const bool normal_texture = material && reads_normal_map(*material);
             if (mesh.topology() != Topology::Triangles) {
                 out.reason = "lines and points have no surface: no tangents";
                 continue;

@@ -56,6 +56,16 @@ enum class DebugView : std::uint32_t {
     // colour (factor x texture rgb, linear radiance like base colour).
     SpecularWeight = 23,
     SpecularColor = 24,
+    // KHR_materials_clearcoat: the coat's weight and roughness (greys; 0 without the
+    // extension) and its normal (encoded as the normal view; the geometry's normal
+    // where the coat has no normal map of its own).
+    Clearcoat = 25,
+    ClearcoatRoughness = 26,
+    ClearcoatNormal = 27,
+    // KHR_materials_sheen: the sheen colour (linear radiance like base colour; black
+    // without the extension) and roughness (grey).
+    SheenColor = 28,
+    SheenRoughness = 29,
 };
 
 // The metallic view's colour on specular-glossiness materials (no metallic value
@@ -133,7 +143,7 @@ struct OverlayEntry {
     const char* label;
 };
 
-inline constexpr std::array<DebugViewInfo, 25> kDebugViews{{
+inline constexpr std::array<DebugViewInfo, 30> kDebugViews{{
     {DebugView::Lit, "lit", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Lit")},
     {DebugView::Normal, "normal", kNormalStream, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Normals")},
     {DebugView::Tangent, "tangent", kTangentStream,
@@ -173,6 +183,14 @@ inline constexpr std::array<DebugViewInfo, 25> kDebugViews{{
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Specular weight")},
     {DebugView::SpecularColor, "specular-color", 0,
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Specular colour")},
+    {DebugView::Clearcoat, "clearcoat", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Clearcoat")},
+    {DebugView::ClearcoatRoughness, "clearcoat-roughness", 0,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Clearcoat roughness")},
+    {DebugView::ClearcoatNormal, "clearcoat-normal", kNormalStream | kTangentStream,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Clearcoat normal")},
+    {DebugView::SheenColor, "sheen-color", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Sheen colour")},
+    {DebugView::SheenRoughness, "sheen-roughness", 0,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Sheen roughness")},
 }};
 
 inline constexpr std::array<OverlayEntry, 7> kOverlays{{

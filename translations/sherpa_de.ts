@@ -197,6 +197,26 @@
         <source>Specular colour</source>
         <translation>Spiegelnde Farbe</translation>
     </message>
+    <message>
+        <source>Clearcoat</source>
+        <translation>Klarlack</translation>
+    </message>
+    <message>
+        <source>Clearcoat roughness</source>
+        <translation>Klarlack-Rauheit</translation>
+    </message>
+    <message>
+        <source>Clearcoat normal</source>
+        <translation>Klarlack-Normale</translation>
+    </message>
+    <message>
+        <source>Sheen colour</source>
+        <translation>Sheen-Farbe</translation>
+    </message>
+    <message>
+        <source>Sheen roughness</source>
+        <translation>Sheen-Rauheit</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>
@@ -1458,8 +1478,8 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <translation>fehlt</translation>
     </message>
     <message>
-        <source>ior %1, specular %2</source>
-        <translation>ior %1, specular %2</translation>
+        <source>ior %1, specular %2, clearcoat %3, sheen %4</source>
+        <translation>ior %1, specular %2, clearcoat %3, sheen %4</translation>
     </message>
     <message>
         <source>texture %1</source>

@@ -197,6 +197,26 @@
         <source>Specular colour</source>
         <translation>Specular colour</translation>
     </message>
+    <message>
+        <source>Clearcoat</source>
+        <translation>Clearcoat</translation>
+    </message>
+    <message>
+        <source>Clearcoat roughness</source>
+        <translation>Clearcoat roughness</translation>
+    </message>
+    <message>
+        <source>Clearcoat normal</source>
+        <translation>Clearcoat normal</translation>
+    </message>
+    <message>
+        <source>Sheen colour</source>
+        <translation>Sheen colour</translation>
+    </message>
+    <message>
+        <source>Sheen roughness</source>
+        <translation>Sheen roughness</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>
@@ -1458,8 +1478,8 @@ The current scene is kept.</translation>
         <translation>absent</translation>
     </message>
     <message>
-        <source>ior %1, specular %2</source>
-        <translation>ior %1, specular %2</translation>
+        <source>ior %1, specular %2, clearcoat %3, sheen %4</source>
+        <translation>ior %1, specular %2, clearcoat %3, sheen %4</translation>
     </message>
     <message>
         <source>texture %1</source>

@@ -197,6 +197,26 @@
         <source>Specular colour</source>
         <translation>镜面反射颜色</translation>
     </message>
+    <message>
+        <source>Clearcoat</source>
+        <translation>清漆</translation>
+    </message>
+    <message>
+        <source>Clearcoat roughness</source>
+        <translation>清漆粗糙度</translation>
+    </message>
+    <message>
+        <source>Clearcoat normal</source>
+        <translation>清漆法线</translation>
+    </message>
+    <message>
+        <source>Sheen colour</source>
+        <translation>光泽层颜色</translation>
+    </message>
+    <message>
+        <source>Sheen roughness</source>
+        <translation>光泽层粗糙度</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>
@@ -1458,8 +1478,8 @@ The current scene is kept.</source>
         <translation>无</translation>
     </message>
     <message>
-        <source>ior %1, specular %2</source>
-        <translation>ior %1, specular %2</translation>
+        <source>ior %1, specular %2, clearcoat %3, sheen %4</source>
+        <translation>ior %1, specular %2, clearcoat %3, sheen %4</translation>
     </message>
     <message>
         <source>texture %1</source>

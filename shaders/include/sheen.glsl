@@ -19,6 +19,7 @@
 #ifndef SHERPA_SHEEN_GLSL
 #define SHERPA_SHEEN_GLSL
 #include "brdf.glsl"
+#include "charlie.glsl" // ibl_d_charlie, ibl_v_charlie
 
 struct Sheen {
     vec3 color;      // sheenColorFactor x sheenColorTexture.rgb; black: no sheen
@@ -46,37 +47,13 @@ Sheen material_sheen(GPUExtensionIndex e, vec2 uv0, vec2 uv1) {
 }
 #endif
 
-float d_charlie(float roughness, float n_dot_h) {
-    float a = max(roughness * roughness, 1e-6);
-    float inv = 1.0 / a;
-    float sin2 = max(1.0 - n_dot_h * n_dot_h, 0.0);
-    return (2.0 + inv) * pow(sin2, inv * 0.5) / (2.0 * PI);
-}
-
-// The specification's fit of the Charlie Smith Lambda (as the Sample Viewer's).
-float sheen_lambda_fit(float x, float a) {
-    float t = (1.0 - a) * (1.0 - a);
-    return mix(21.5473, 25.3245, t) / (1.0 + mix(3.82987, 3.32435, t) * pow(x, mix(0.19823, 0.16801, t))) +
-           mix(-1.97760, -1.27393, t) * x + mix(-4.32054, -4.85967, t);
-}
-
-float sheen_lambda(float cos_theta, float a) {
-    return abs(cos_theta) < 0.5 ? exp(sheen_lambda_fit(cos_theta, a))
-                                : exp(2.0 * sheen_lambda_fit(0.5, a) - sheen_lambda_fit(1.0 - cos_theta, a));
-}
-
-float v_sheen(float n_dot_l, float n_dot_v, float roughness) {
-    float a = max(roughness * roughness, 1e-6);
-    return clamp(1.0 / ((1.0 + sheen_lambda(n_dot_v, a) + sheen_lambda(n_dot_l, a)) * (4.0 * n_dot_v * n_dot_l)), 0.0,
-                 1.0);
-}
-
 vec3 sheen_times_cos(Sheen s, vec3 n, vec3 v, vec3 l) {
     float n_dot_l = dot(n, l);
     if (max3(s.color) <= 0.0 || n_dot_l <= 0.0) return vec3(0.0);
     float n_dot_v = clamp(abs(dot(n, v)), 1e-4, 1.0);
     float n_dot_h = clamp(dot(n, normalize(l + v)), 0.0, 1.0);
-    return s.color * d_charlie(s.roughness, n_dot_h) * v_sheen(n_dot_l, n_dot_v, s.roughness) * n_dot_l;
+    float a = max(s.roughness * s.roughness, 1e-4);
+    return s.color * ibl_d_charlie(n_dot_h, a) * ibl_v_charlie(n_dot_l, n_dot_v, a) * n_dot_l;
 }
 
 // The Charlie sheen's directional albedo at n . v: the fit of three.js's IBLSheenBRDF.

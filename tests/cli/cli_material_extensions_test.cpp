@@ -6,6 +6,7 @@
 
 #include <sherpa/texture/image.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <tuple>
@@ -50,6 +51,20 @@ const std::uint8_t* sphere_centre(const Png& p, int row, int column) {
     const double half = 5.0 * std::tan(22.5 * 3.14159265358979 / 180.0);
     const double x = (column - 2.0) / (half * p.w / p.h), y = (0.5 - row) / half;
     return p.at(std::uint32_t(p.w * 0.5 * (1.0 + x)), std::uint32_t(p.h * 0.5 * (1.0 - y)));
+}
+
+// The colour `view` draws at the front of a one-sphere file (its centre pixel, 160x120,
+// seen from 1.5 in front): the texture-transform checks read it.
+std::array<int, 3> front_pixel(const std::string& model, const std::string& view) {
+    const std::string png = temp_path(view + "_front.png");
+    const CliRun run =
+        run_cli("render '" + model + "' -o " + png + " --width 160 --height 120 --view " + view +
+                " --camera eye=0,0,1.5:target=0,0,0:fov=45 --validation --no-cache");
+    EXPECT_EQ(run.exit_code, 0) << run.out;
+    const Png p = read_png(png);
+    std::filesystem::remove(png);
+    if (p.rgba.empty()) return {-1, -1, -1};
+    return {p.at(80, 60)[0], p.at(80, 60)[1], p.at(80, 60)[2]};
 }
 
 std::uint64_t extension_bytes(const std::string& model, const std::string& name) {
@@ -121,18 +136,11 @@ TEST(CliMaterialExtensions, SpecularViewsShowWeightAndColour) {
 // front has u = 0.75, which the offset moves to the red texel. Without the transform
 // (or without the TEXCOORD_0 stream the slots need) it would read green and 1.
 TEST(CliMaterialExtensions, SpecularTexturesAreSampledThroughTheirTransform) {
-    const std::string model = sweep("specular_textures");
     for (const auto& [view, r, g] :
          {std::tuple{"specular-color", 255, 0}, std::tuple{"specular-weight", 0, 0}}) {
-        const std::string png = temp_path(std::string(view) + "_tex.png");
-        const CliRun run =
-            run_cli("render '" + model + "' -o " + png + " --width 160 --height 120 --view " +
-                    view + " --camera eye=0,0,1.5:target=0,0,0:fov=45 --validation --no-cache");
-        ASSERT_EQ(run.exit_code, 0) << run.out;
-        const Png p = read_png(png);
-        EXPECT_NEAR(p.at(80, 60)[0], r, 2) << view;
-        EXPECT_NEAR(p.at(80, 60)[1], g, 2) << view;
-        std::filesystem::remove(png);
+        const std::array<int, 3> c = front_pixel(sweep("specular_textures"), view);
+        EXPECT_NEAR(c[0], r, 2) << view;
+        EXPECT_NEAR(c[1], g, 2) << view;
     }
 }
 
@@ -163,19 +171,12 @@ TEST(CliMaterialExtensions, ClearcoatViewsShowFactorAndRoughness) {
 // 0 untransformed); the 1x1 clearcoatNormalTexture tilts the coat's normal onto the
 // tangent, away from the geometry's normal (which faces the camera, encoded blue 255).
 TEST(CliMaterialExtensions, ClearcoatTexturesAreSampledThroughTheirTransform) {
-    const std::string model = sweep("clearcoat_textures");
     for (const auto& [view, channel, lo, hi] :
          {std::tuple{"clearcoat", 0, 253, 255}, std::tuple{"clearcoat-roughness", 0, 0, 2},
           std::tuple{"clearcoat-normal", 2, 100, 160}}) {
-        const std::string png = temp_path(std::string(view) + "_cctex.png");
-        const CliRun run =
-            run_cli("render '" + model + "' -o " + png + " --width 160 --height 120 --view " +
-                    view + " --camera eye=0,0,1.5:target=0,0,0:fov=45 --validation --no-cache");
-        ASSERT_EQ(run.exit_code, 0) << run.out;
-        const Png p = read_png(png);
-        EXPECT_GE(p.at(80, 60)[channel], lo) << view;
-        EXPECT_LE(p.at(80, 60)[channel], hi) << view;
-        std::filesystem::remove(png);
+        const std::array<int, 3> c = front_pixel(sweep("clearcoat_textures"), view);
+        EXPECT_GE(c[channel], lo) << view;
+        EXPECT_LE(c[channel], hi) << view;
     }
 }
 
@@ -206,18 +207,11 @@ TEST(CliMaterialExtensions, SheenViewsShowColourAndRoughness) {
 // (left red, alpha 0; right green, alpha 1) through KHR_texture_transform offset
 // (0.5, 0): the front reads red and roughness 0 (green and 1 untransformed).
 TEST(CliMaterialExtensions, SheenTexturesAreSampledThroughTheirTransform) {
-    const std::string model = sweep("sheen_textures");
     for (const auto& [view, r, g] :
          {std::tuple{"sheen-color", 255, 0}, std::tuple{"sheen-roughness", 0, 0}}) {
-        const std::string png = temp_path(std::string(view) + "_sheentex.png");
-        const CliRun run =
-            run_cli("render '" + model + "' -o " + png + " --width 160 --height 120 --view " +
-                    view + " --camera eye=0,0,1.5:target=0,0,0:fov=45 --validation --no-cache");
-        ASSERT_EQ(run.exit_code, 0) << run.out;
-        const Png p = read_png(png);
-        EXPECT_NEAR(p.at(80, 60)[0], r, 2) << view;
-        EXPECT_NEAR(p.at(80, 60)[1], g, 2) << view;
-        std::filesystem::remove(png);
+        const std::array<int, 3> c = front_pixel(sweep("sheen_textures"), view);
+        EXPECT_NEAR(c[0], r, 2) << view;
+        EXPECT_NEAR(c[1], g, 2) << view;
     }
 }
 

@@ -13,6 +13,8 @@
 #include "material_ext.glsl"
 #include "transmission.glsl"
 #include "refraction.glsl"
+#include "clearcoat.glsl"
+#include "sheen.glsl"
 #include "tonemap.glsl"
 #include "punctual.glsl"
 #include "diffuse_transmission.glsl"
@@ -48,10 +50,15 @@ const bool UNLIT_TOPOLOGY = (STREAMS & (MESH_LINES | MESH_POINTS)) != 0u;
 const bool READ_TANGENT = (STREAMS & HAS_TANGENT) != 0u || VIEW == VIEW_TANGENT ||
                           VIEW == VIEW_BITANGENT || VIEW == VIEW_TANGENT_W;
 
-vec3 punctual_light(Surface s, GPULight light, vec3 pos) {
+// `coat` and `sheen` gather the light a clearcoat and a sheen reflect (clearcoat.glsl,
+// sheen.glsl; none without them).
+vec3 punctual_light(Surface s, Clearcoat cc, Sheen sh, GPULight light, vec3 pos, inout vec3 coat,
+                    inout vec3 sheen) {
     vec3 l;
     float dist;
     vec3 radiance = punctual_incident(light, pos, l, dist);
+    coat += clearcoat_times_cos(cc, s.v, l) * radiance;
+    sheen += sheen_times_cos(sh, s.n, s.v, l) * radiance;
     return brdf_times_cos(s, l) * radiance;
 }
 
@@ -121,6 +128,14 @@ void main() {
     case VIEW_THICKNESS: c = vec3(clamp(material_thickness(ext, uv0, uv1), 0.0, 1.0)); break;
     case VIEW_ATTENUATION: c = attenuation_view_color(material_attenuation(ext)); break;
     case VIEW_DIFFUSE_TRANSMISSION: c = vec3(material_diffuse_transmission(ext, uv0, uv1).a); break;
+    // KHR_materials_clearcoat: the coat's weight and roughness (factor x texture; 0
+    // without the extension) and its normal (the geometry's without its own map).
+    case VIEW_CLEARCOAT: c = vec3(material_clearcoat(ext, t, b, n, uv0, uv1).factor); break;
+    case VIEW_CLEARCOAT_ROUGHNESS: c = vec3(material_clearcoat(ext, t, b, n, uv0, uv1).roughness); break;
+    case VIEW_CLEARCOAT_NORMAL: c = encode_vector(material_clearcoat(ext, t, b, n, uv0, uv1).n); break;
+    // KHR_materials_sheen: the sheen colour (linear, like base colour) and roughness.
+    case VIEW_SHEEN_COLOR: c = material_sheen(ext, uv0, uv1).color; break;
+    case VIEW_SHEEN_ROUGHNESS: c = vec3(material_sheen(ext, uv0, uv1).roughness); break;
     case VIEW_SHADOW:
         c = vec3(sun_visibility(in_world_pos, shadow_normal, -(frame.view * vec4(in_world_pos, 1.0)).z));
         break;
@@ -158,14 +173,21 @@ void main() {
         // KHR_materials_diffuse_transmission: of what remains, that share scatters to
         // the other side (diffuse_transmission.glsl).
         s.diffuse *= (1.0 - transmission) * (1.0 - diffuse_transmission.a);
+        // KHR_materials_clearcoat: factor 0 (nothing to add) without the extension.
+        const Clearcoat cc = material_clearcoat(ext, t, b, n, uv0, uv1);
+        // KHR_materials_sheen: black (nothing to add) without the extension.
+        const Sheen sh = material_sheen(ext, uv0, uv1);
+        vec3 coat = vec3(0.0), sheen = vec3(0.0);
         // The sun (and its shadow lookup) only where some pixel of the SIMD group
         // faces it: a uniform branch, so a CPU rasterizer skips the work.
         vec3 sun_l = -normalize(frame.sun_direction.xyz);
         c = vec3(0.0);
-        if (subgroupAny(dot(s.n, sun_l) > 0.0)) {
+        if (subgroupAny(dot(s.n, sun_l) > 0.0 || (cc.factor > 0.0 && dot(cc.n, sun_l) > 0.0))) {
             float view_depth = -(frame.view * vec4(in_world_pos, 1.0)).z;
-            float shadow = sun_shadow(in_world_pos, shadow_normal, view_depth);
-            c = brdf_times_cos(s, sun_l) * frame.sun_radiance.rgb * shadow;
+            vec3 sun = frame.sun_radiance.rgb * sun_shadow(in_world_pos, shadow_normal, view_depth);
+            c = brdf_times_cos(s, sun_l) * sun;
+            coat += clearcoat_times_cos(cc, v, sun_l) * sun;
+            sheen += sheen_times_cos(sh, s.n, v, sun_l) * sun;
         }
         if (diffuse_transmission.a > 0.0) {
             float view_depth = -(frame.view * vec4(in_world_pos, 1.0)).z;
@@ -177,7 +199,8 @@ void main() {
                           beer_lambert(material_attenuation(ext), material_thickness(ext, uv0, uv1));
             c += diffuse_transmission_light(s, albedo, in_world_pos, shadow);
         }
-        for (uint i = 0u; i < frame.params.y; ++i) c += punctual_light(s, frame.lights[i], in_world_pos);
+        for (uint i = 0u; i < frame.params.y; ++i)
+            c += punctual_light(s, cc, sh, frame.lights[i], in_world_pos, coat, sheen);
         float ao = x.workflow == WORKFLOW_SPECULAR_GLOSSINESS ? occlusion(m, x, uv0, uv1)
                                                               : occlusion(m, x, uv0, uv1, mr_texel);
         // The environment replaces the sky/ground ambient term where one is loaded.
@@ -189,12 +212,23 @@ void main() {
                                          material_attenuation(ext), material_dispersion(ext), opaque_diffuse);
             c += transmission * (1.0 - transmission_fresnel(s)) * light;
         }
+        if (max3(sh.color) > 0.0) {
+            sheen += (has_environment() ? sheen_environment(sh, s.n, v)
+                                        : sh.color * sheen_albedo(sh.roughness, dot(s.n, v)) *
+                                              hemisphere(s.n, frame.ambient.rgb)) * ao;
+            c = sheen_over(sh, s.n, v, c, sheen);
+        }
+        if (cc.factor > 0.0) {
+            coat += (has_environment() ? clearcoat_environment(cc, v) : clearcoat_ambient(cc, v, frame.ambient.rgb)) * ao;
+            c = clearcoat_over(cc, v, c, coat);
+        }
         break;
     }
     }
     }
     // Colour views (lit, base colour, emissive) are linear radiance; the rest are data.
-    if (view != VIEW_LIT && view != VIEW_BASE_COLOR && view != VIEW_EMISSIVE && view != VIEW_SPECULAR_COLOR)
+    if (view != VIEW_LIT && view != VIEW_BASE_COLOR && view != VIEW_EMISSIVE && view != VIEW_SPECULAR_COLOR &&
+        view != VIEW_SHEEN_COLOR)
         c = display_to_linear(c);
     // The lit view is radiance: exposure and the tone curve map it to the display (per
     // fragment, before blending, as three.js does).

@@ -2,9 +2,10 @@
 #extension GL_GOOGLE_include_directive : require
 // The path tracer's closest hit: the surface's BRDF inputs from the same functions the
 // raster's lit shading calls (forward.frag): base colour, metallic-roughness or
-// specular-glossiness, KHR_materials_ior and _specular (the raster's dielectric_fresnel),
-// the normal map, emission. The occlusion texture is not read:
-// the path tracer traces occlusion.
+// specular-glossiness, the normal map, emission, and the material extensions' blocks
+// (KHR_materials_ior / _specular's F0 and F90 as the raster's dielectric_fresnel, the
+// transmission family, KHR_materials_clearcoat's coat, KHR_materials_sheen's sheen).
+// The occlusion texture is not read: the path tracer traces occlusion.
 #define SHERPA_PATH_TRACE
 #define SHERPA_NO_DERIVATIVES
 #include "rt_hit.glsl"
@@ -15,6 +16,8 @@
 #include "brdf.glsl"
 #include "path_payload.glsl"
 #include "pt_material_ext.glsl"
+#include "clearcoat.glsl"
+#include "sheen.glsl"
 
 layout(location = 0) rayPayloadInEXT PathPayload payload;
 hitAttributeEXT vec2 bary;
@@ -75,12 +78,23 @@ void main() {
             payload.dispersion = material_dispersion(ext);
         }
     }
+    // KHR_materials_clearcoat (factor 0 without it): the coat, and the emission under it.
+    const Clearcoat cc = material_clearcoat(ext, t, b, n, h.uv0, h.uv1);
+    payload.clearcoat = cc.factor;
+    payload.clearcoat_roughness = cc.roughness;
+    payload.clearcoat_normal = cc.n;
+    // KHR_materials_sheen (black without it).
+    const Sheen sh = material_sheen(ext, h.uv0, h.uv1);
+    payload.sheen_color = sh.color;
+    payload.sheen_roughness = sh.roughness;
     payload.normal = s.n;
     payload.roughness = s.roughness;
     payload.diffuse = s.diffuse;
     payload.f0 = s.f0;
     payload.f90 = s.f90;
-    payload.emission = emission(m, x, h.uv0, h.uv1);
+    // Emission under the sheen and the coat, as the rasterizer layers it (light sampling
+    // reads it through a ray too; only its choice of triangle uses the bare emission).
+    payload.emission = clearcoat_over(cc, v, sheen_over(sh, sn, v, emission(m, x, h.uv0, h.uv1), vec3(0.0)), vec3(0.0));
     // The light list's rule (emissive_lights.cpp): static meshes whose material emits,
     // below the luminance cap; its density for multiple importance sampling.
     if (pc.light_inv_power > 0.0 && (h.flags & MESH_MOTION) == 0u && m.emissive_tex != TEX_BLACK) {

@@ -213,6 +213,26 @@
         <source>Diffuse transmission</source>
         <translation>Diffuse Transmission</translation>
     </message>
+    <message>
+        <source>Clearcoat</source>
+        <translation>Klarlack</translation>
+    </message>
+    <message>
+        <source>Clearcoat roughness</source>
+        <translation>Klarlack-Rauheit</translation>
+    </message>
+    <message>
+        <source>Clearcoat normal</source>
+        <translation>Klarlack-Normale</translation>
+    </message>
+    <message>
+        <source>Sheen colour</source>
+        <translation>Sheen-Farbe</translation>
+    </message>
+    <message>
+        <source>Sheen roughness</source>
+        <translation>Sheen-Rauheit</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>
@@ -1647,6 +1667,10 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source> (distance infinite: none)</source>
         <translation> (Distanz unendlich: keine)</translation>
+    </message>
+    <message>
+        <source>ior %1, specular %2, clearcoat %3, sheen %4</source>
+        <translation>ior %1, specular %2, clearcoat %3, sheen %4</translation>
     </message>
 </context>
 <context>

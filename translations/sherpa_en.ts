@@ -213,6 +213,26 @@
         <source>Diffuse transmission</source>
         <translation>Diffuse transmission</translation>
     </message>
+    <message>
+        <source>Clearcoat</source>
+        <translation>Clearcoat</translation>
+    </message>
+    <message>
+        <source>Clearcoat roughness</source>
+        <translation>Clearcoat roughness</translation>
+    </message>
+    <message>
+        <source>Clearcoat normal</source>
+        <translation>Clearcoat normal</translation>
+    </message>
+    <message>
+        <source>Sheen colour</source>
+        <translation>Sheen colour</translation>
+    </message>
+    <message>
+        <source>Sheen roughness</source>
+        <translation>Sheen roughness</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>
@@ -1647,6 +1667,10 @@ The current scene is kept.</translation>
     <message>
         <source> (distance infinite: none)</source>
         <translation> (distance infinite: none)</translation>
+    </message>
+    <message>
+        <source>ior %1, specular %2, clearcoat %3, sheen %4</source>
+        <translation>ior %1, specular %2, clearcoat %3, sheen %4</translation>
     </message>
 </context>
 <context>

@@ -213,6 +213,26 @@
         <source>Diffuse transmission</source>
         <translation>漫透射</translation>
     </message>
+    <message>
+        <source>Clearcoat</source>
+        <translation>清漆</translation>
+    </message>
+    <message>
+        <source>Clearcoat roughness</source>
+        <translation>清漆粗糙度</translation>
+    </message>
+    <message>
+        <source>Clearcoat normal</source>
+        <translation>清漆法线</translation>
+    </message>
+    <message>
+        <source>Sheen colour</source>
+        <translation>光泽层颜色</translation>
+    </message>
+    <message>
+        <source>Sheen roughness</source>
+        <translation>光泽层粗糙度</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>
@@ -1647,6 +1667,10 @@ The current scene is kept.</source>
     <message>
         <source> (distance infinite: none)</source>
         <translation>（距离无限：无衰减）</translation>
+    </message>
+    <message>
+        <source>ior %1, specular %2, clearcoat %3, sheen %4</source>
+        <translation>ior %1, specular %2, clearcoat %3, sheen %4</translation>
     </message>
 </context>
 <context>

@@ -88,36 +88,74 @@ void MaterialFieldsModel::buildExtensionRows() {
     auto words = [](std::uint32_t w) {
         return w == gpu::kNoExtension ? tr("absent") : QString::number(w);
     };
-    extension_rows_.push_back(
-        {int(place.index) * word, QStringLiteral("ext.index"),
-         QStringLiteral("extra.extensions = %1").arg(place.index), QStringLiteral("uvec4"),
-         tr("ior %1, specular %2").arg(words(place.ior), words(place.specular)), -1});
+    extension_rows_.push_back({int(place.index) * word, QStringLiteral("ext.index"),
+                               QStringLiteral("extra.extensions = %1").arg(place.index),
+                               QStringLiteral("uvec4"),
+                               tr("ior %1, specular %2, clearcoat %3, sheen %4")
+                                   .arg(words(place.ior), words(place.specular),
+                                        words(place.clearcoat), words(place.sheen)),
+                               -1});
     if (place.ior != gpu::kNoExtension)
         extension_rows_.push_back({int(place.ior) * word, QStringLiteral("ext.ior"),
                                    QStringLiteral("KHR_materials_ior.ior"), QStringLiteral("float"),
                                    Format::number(*m.ior), -1});
+    // One row per texture field: its bindless slot's source chain, or the default.
+    auto texture_row = [this](int offset, const char* field, const char* property,
+                              const TextureSlot& slot) {
+        extension_rows_.push_back({offset, QString::fromLatin1(field),
+                                   QString::fromLatin1(property), QStringLiteral("uint"),
+                                   slot.present() ? chain(slot.texture) : tr("default texture"),
+                                   slot.present() ? slot.texture : -1});
+    };
     if (place.specular != gpu::kNoExtension) {
         const MaterialSpecular& sp = *m.specular;
         const int base = int(place.specular) * word;
-        auto texture = [this](const TextureSlot& slot) {
-            return slot.present() ? chain(slot.texture) : tr("default texture");
-        };
         extension_rows_.push_back(
             {base + int(offsetof(gpu::GPUSpecularBlock, color_factor)),
              QStringLiteral("ext.specular.color_factor"),
              QStringLiteral("KHR_materials_specular.specularColorFactor, specularFactor"),
              QStringLiteral("vec4"),
              Format::vec(glm::vec4(sp.specular_color_factor, sp.specular_factor)), -1});
-        extension_rows_.push_back({base + int(offsetof(gpu::GPUSpecularBlock, specular_tex)),
-                                   QStringLiteral("ext.specular.specular_tex"),
-                                   QStringLiteral("KHR_materials_specular.specularTexture"),
-                                   QStringLiteral("uint"), texture(sp.specular),
-                                   sp.specular.present() ? sp.specular.texture : -1});
-        extension_rows_.push_back({base + int(offsetof(gpu::GPUSpecularBlock, specular_color_tex)),
-                                   QStringLiteral("ext.specular.specular_color_tex"),
-                                   QStringLiteral("KHR_materials_specular.specularColorTexture"),
-                                   QStringLiteral("uint"), texture(sp.specular_color),
-                                   sp.specular_color.present() ? sp.specular_color.texture : -1});
+        texture_row(base + int(offsetof(gpu::GPUSpecularBlock, specular_tex)),
+                    "ext.specular.specular_tex", "KHR_materials_specular.specularTexture",
+                    sp.specular);
+        texture_row(base + int(offsetof(gpu::GPUSpecularBlock, specular_color_tex)),
+                    "ext.specular.specular_color_tex",
+                    "KHR_materials_specular.specularColorTexture", sp.specular_color);
+    }
+    if (place.clearcoat != gpu::kNoExtension) {
+        const MaterialClearcoat& cc = *m.clearcoat;
+        const int base = int(place.clearcoat) * word;
+        extension_rows_.push_back(
+            {base + int(offsetof(gpu::GPUClearcoatBlock, factors)),
+             QStringLiteral("ext.clearcoat.factors"),
+             QStringLiteral("KHR_materials_clearcoat.clearcoatFactor, clearcoatRoughnessFactor, "
+                            "clearcoatNormalTexture.scale"),
+             QStringLiteral("vec4"),
+             Format::vec(glm::vec4(cc.factor, cc.roughness_factor, cc.normal_scale, 0.0f)), -1});
+        texture_row(base + int(offsetof(gpu::GPUClearcoatBlock, clearcoat_tex)),
+                    "ext.clearcoat.clearcoat_tex", "KHR_materials_clearcoat.clearcoatTexture",
+                    cc.clearcoat);
+        texture_row(base + int(offsetof(gpu::GPUClearcoatBlock, roughness_tex)),
+                    "ext.clearcoat.roughness_tex",
+                    "KHR_materials_clearcoat.clearcoatRoughnessTexture", cc.roughness);
+        texture_row(base + int(offsetof(gpu::GPUClearcoatBlock, normal_tex)),
+                    "ext.clearcoat.normal_tex", "KHR_materials_clearcoat.clearcoatNormalTexture",
+                    cc.normal);
+    }
+    if (place.sheen != gpu::kNoExtension) {
+        const MaterialSheen& sh = *m.sheen;
+        const int base = int(place.sheen) * word;
+        extension_rows_.push_back(
+            {base + int(offsetof(gpu::GPUSheenBlock, factors)), QStringLiteral("ext.sheen.factors"),
+             QStringLiteral("KHR_materials_sheen.sheenColorFactor, sheenRoughnessFactor"),
+             QStringLiteral("vec4"), Format::vec(glm::vec4(sh.color_factor, sh.roughness_factor)),
+             -1});
+        texture_row(base + int(offsetof(gpu::GPUSheenBlock, color_tex)), "ext.sheen.color_tex",
+                    "KHR_materials_sheen.sheenColorTexture", sh.color);
+        texture_row(base + int(offsetof(gpu::GPUSheenBlock, roughness_tex)),
+                    "ext.sheen.roughness_tex", "KHR_materials_sheen.sheenRoughnessTexture",
+                    sh.roughness);
     }
     appendTransmissionRows(place, m);
 }

@@ -192,6 +192,23 @@ void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
     QCOMPARE(display(fields, 15, MaterialFieldsModel::ValueColumn),
              Format::vec(glm::vec4(1.0f, 1.0f, 1.0f, 0.0f)));
     QCOMPARE(display(fields, 16, MaterialFieldsModel::OffsetColumn), QStringLiteral("48"));
+
+    // KHR_materials_clearcoat: index, factors, three textures (material 0 of the
+    // clearcoat sweep: its block right after its two-word index).
+    const LoadOutcome coat = SceneLoadJob::loadNow(
+        QStringLiteral(SHERPA_TEST_DATA_DIR "/material_sweeps/clearcoat_sweep.gltf"));
+    QVERIFY2(coat.session, qPrintable(coat.error));
+    fields.setMaterial(coat.session, 2, to_gpu_material(coat.session->scene->materials.at(2)),
+                       MaterialFieldsModel::Source::Cpu);
+    QCOMPARE(fields.rowCount(), 14 + 5);
+    QCOMPARE(display(fields, 15, MaterialFieldsModel::FieldColumn),
+             QStringLiteral("ext.clearcoat.factors"));
+    QCOMPARE(display(fields, 15, MaterialFieldsModel::OffsetColumn),
+             QString::number(2 * (32 + 128) + 32));
+    QCOMPARE(display(fields, 15, MaterialFieldsModel::ValueColumn),
+             Format::vec(glm::vec4(0.5f, 0.0f, 1.0f, 0.0f)));
+    QCOMPARE(display(fields, 18, MaterialFieldsModel::FieldColumn),
+             QStringLiteral("ext.clearcoat.normal_tex"));
 }
 
 QTEST_MAIN(DockContentTests)

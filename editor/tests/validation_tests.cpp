@@ -98,7 +98,7 @@ void ValidationTests::messagesAreGroupedBySeverityAndCode() {
         QStringLiteral("/extensionsUsed/2"),
         QStringLiteral("SHERPA_MATERIAL_EXTENSION_NOT_DRAWN (2)"),
         QStringLiteral("/materials/0/extensions/ADOBE_materials_thin_transparency"),
-        QStringLiteral("/materials/0/extensions/KHR_materials_clearcoat"),
+        QStringLiteral("/materials/0/extensions/ADOBE_materials_clearcoat_specular"),
         QStringLiteral("Information (1)"),
         QStringLiteral("UNSUPPORTED_EXTENSION (1)"),
         QStringLiteral("/extensionsUsed/1"),
@@ -125,10 +125,11 @@ void ValidationTests::filterMatchesCodePointerAndText() {
         collect(*proxy, {}, rows);
         return rows.filter(QStringLiteral("/"));
     };
-    dock.setFilter(QStringLiteral("clearcoat")); // the text of one, the pointer of another
-    QCOMPARE(leaves(),
-             (QStringList{QStringLiteral("/extensionsUsed/2"),
-                          QStringLiteral("/materials/0/extensions/KHR_materials_clearcoat")}));
+    dock.setFilter(QStringLiteral("thin_transparency")); // the text of one, the pointer of another
+    QCOMPARE(
+        leaves(),
+        (QStringList{QStringLiteral("/extensionsUsed/2"),
+                     QStringLiteral("/materials/0/extensions/ADOBE_materials_thin_transparency")}));
     dock.setFilter(QStringLiteral("sherpa_material")); // a code: all of its messages
     QCOMPARE(leaves().size(), 2);
     dock.setFilter(QStringLiteral("no such thing"));
@@ -142,8 +143,8 @@ void ValidationTests::unsupportedExtensionSelectsTheMaterial() {
     ValidationDock& dock = *w_->validationDock();
     QVERIFY(dock.isVisible());
     QSignalSpy activated(&dock, &ValidationDock::messageActivated);
-    QVERIFY(
-        dock.activatePointer(QStringLiteral("/materials/0/extensions/KHR_materials_clearcoat")));
+    QVERIFY(dock.activatePointer(
+        QStringLiteral("/materials/0/extensions/ADOBE_materials_thin_transparency")));
     QCOMPARE(activated.count(), 1);
     const Scene& scene = *w_->context().scene();
     QCOMPARE(w_->context().selection().material, 0);
@@ -160,7 +161,7 @@ void ValidationTests::unsupportedExtensionSelectsTheMaterial() {
                      .arg(dock.visibleRegion().isEmpty())
                      .arg(w_->tabifiedDockWidgets(&dock).size())));
     const QString warning = w_->materialDock()->notDrawnText();
-    QVERIFY2(warning.contains(QStringLiteral("KHR_materials_clearcoat")) &&
+    QVERIFY2(warning.contains(QStringLiteral("ADOBE_materials_clearcoat_specular")) &&
                  warning.contains(QStringLiteral("ADOBE_materials_thin_transparency")),
              qPrintable(warning));
     QVERIFY(dock.detailText().contains(QStringLiteral("material 0")));

@@ -63,12 +63,8 @@ float ibl_d_ggx(float n_dot_h, float a) {
     return a2 / (IBL_PI * d * d);
 }
 
-// Charlie sheen distribution (Estevez and Kulla), a = roughness^2.
-float ibl_d_charlie(float n_dot_h, float a) {
-    float inv_r = 1.0 / max(a, 1e-4);
-    float sin2 = max(1.0 - n_dot_h * n_dot_h, 0.0);
-    return (2.0 + inv_r) * pow(sin2, inv_r * 0.5) / (2.0 * IBL_PI);
-}
+#include "charlie.glsl" // ibl_d_charlie, ibl_v_charlie (shared with sheen.glsl)
+
 
 // Tangent-space half vector (GGX, Charlie) or light direction (Lambert) for sample
 // xi, with its solid-angle pdf in w (of the half vector for the microfacet lobes).
@@ -100,18 +96,4 @@ float ibl_v_ggx(float n_dot_l, float n_dot_v, float a) {
     return s > 0.0 ? 0.5 / s : 0.0;
 }
 
-// KHR_materials_sheen's visibility: Charlie's Lambda, fitted (a = roughness^2).
-float sheen_l(float x, float a) {
-    float t = (1.0 - a) * (1.0 - a);
-    float p = mix(21.5473, 25.3245, t), q = mix(3.82987, 3.32435, t), r = mix(0.19823, 0.16801, t);
-    float s = mix(-1.97760, -1.27393, t), u = mix(-4.32054, -4.85967, t);
-    return p / (1.0 + q * pow(x, r)) + s * x + u;
-}
-float sheen_lambda(float cos_t, float a) {
-    return abs(cos_t) < 0.5 ? exp(sheen_l(cos_t, a)) : exp(2.0 * sheen_l(0.5, a) - sheen_l(1.0 - cos_t, a));
-}
-float ibl_v_charlie(float n_dot_l, float n_dot_v, float a) {
-    return clamp(1.0 / ((1.0 + sheen_lambda(n_dot_v, a) + sheen_lambda(n_dot_l, a)) *
-                        (4.0 * n_dot_v * n_dot_l)), 0.0, 1.0);
-}
 #endif

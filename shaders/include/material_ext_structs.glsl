@@ -1,5 +1,6 @@
 // GLSL twins of the material extension records (GPUExtensionIndex, GPUIorBlock,
-// GPUSpecularBlock in engine/render/include/sherpa/render/gpu_structs.h): 16-byte words,
+// GPUSpecularBlock, GPUClearcoatBlock, GPUSheenBlock in
+// engine/render/include/sherpa/render/gpu_material_ext_structs.h): 16-byte words,
 // field order and offsets pinned there and checked by tests/gpu/struct_twins_test.cpp.
 // material_ext.glsl reads them from the extension buffer.
 #ifndef SHERPA_MATERIAL_EXT_STRUCTS_GLSL
@@ -11,8 +12,8 @@
 struct GPUExtensionIndex {
     uint ior;      // GPUIorBlock word, or NO_EXTENSION
     uint specular; // GPUSpecularBlock word, or NO_EXTENSION
-    uint pad0;
-    uint pad1;
+    uint clearcoat; // GPUClearcoatBlock word, or NO_EXTENSION
+    uint sheen;     // GPUSheenBlock word, or NO_EXTENSION
     // Second word: the transmission family (transmission_structs.glsl).
     uint transmission;         // GPUTransmissionBlock word, or NO_EXTENSION
     uint volume;               // GPUVolumeBlock word, or NO_EXTENSION
@@ -35,6 +36,27 @@ struct GPUSpecularBlock {
     uint pad1;                       // 28
     GPUTextureTransform specular_uv; // 32
     GPUTextureTransform color_uv;    // 64
+};
+
+struct GPUClearcoatBlock {
+    vec4 factors;                      // 0: x clearcoatFactor, y roughness factor, z normal scale
+    uint clearcoat_tex;                // 16: R channel
+    uint roughness_tex;                // 20: G channel
+    uint normal_tex;                   // 24: tangent-space normal
+    uint pad0;                         // 28
+    GPUTextureTransform clearcoat_uv;  // 32
+    GPUTextureTransform roughness_uv;  // 64
+    GPUTextureTransform normal_uv;     // 96
+};
+
+struct GPUSheenBlock {
+    vec4 factors;                     // 0: xyz sheenColorFactor, w sheenRoughnessFactor
+    uint color_tex;                   // 16: RGB, sRGB
+    uint roughness_tex;               // 20: A channel
+    uint pad0;                        // 24
+    uint pad1;                        // 28
+    GPUTextureTransform color_uv;     // 32
+    GPUTextureTransform roughness_uv; // 64
 };
 
 #endif

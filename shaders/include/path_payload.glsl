@@ -32,5 +32,10 @@ struct PathPayload {
     vec4 attenuation;
     float dispersion;
     uint front;
+    vec3 clearcoat_normal;    // KHR_materials_clearcoat (clearcoat.glsl's Clearcoat)
+    float clearcoat;          // 0: no coat
+    float clearcoat_roughness;
+    vec3 sheen_color; // KHR_materials_sheen (sheen.glsl's Sheen); black: no sheen
+    float sheen_roughness;
 };
 #endif

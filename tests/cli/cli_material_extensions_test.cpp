@@ -1,4 +1,4 @@
-// sherpa-cli render with material extensions (KHR_materials_ior, _specular): their
+// sherpa-cli render with material extensions (ior, specular, clearcoat, sheen): their
 // bytes in the report (none for a scene without them), their debug views, and the
 // bad-input file rendered without a validation message. Runs with --validation.
 #include "cli/cli_run.h"
@@ -7,6 +7,7 @@
 
 #include <sherpa/texture/image.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <tuple>
@@ -29,6 +30,20 @@ using sherpa::test::read_png;
 using sherpa::test::sphere_centre;
 using sherpa::test::sweep;
 
+// The colour `view` draws at the front of a one-sphere file (its centre pixel, 160x120,
+// seen from 1.5 in front): the texture-transform checks read it.
+std::array<int, 3> front_pixel(const std::string& model, const std::string& view) {
+    const std::string png = temp_path(view + "_front.png");
+    const CliRun run =
+        run_cli("render '" + model + "' -o " + png + " --width 160 --height 120 --view " + view +
+                " --camera eye=0,0,1.5:target=0,0,0:fov=45 --validation --no-cache");
+    EXPECT_EQ(run.exit_code, 0) << run.out;
+    const Png p = read_png(png);
+    std::filesystem::remove(png);
+    if (p.rgba.empty()) return {-1, -1, -1};
+    return {p.at(80, 60)[0], p.at(80, 60)[1], p.at(80, 60)[2]};
+}
+
 std::uint64_t extension_bytes(const std::string& model, const std::string& name) {
     const std::string png = temp_path(name + ".png"), report = temp_path(name + ".json");
     const CliRun r =
@@ -49,6 +64,10 @@ TEST(CliMaterialExtensions, OnlyMaterialsThatUseThemPay) {
     EXPECT_EQ(extension_bytes(sweep("ior_sweep"), "ior"), 480u);
     // Ten with KHR_materials_specular only: an index and a 96-byte block each.
     EXPECT_EQ(extension_bytes(sweep("specular_sweep"), "specular"), 1280u);
+    // Ten with KHR_materials_clearcoat only: an index and a 128-byte block each.
+    EXPECT_EQ(extension_bytes(sweep("clearcoat_sweep"), "clearcoat"), 1600u);
+    // Ten with KHR_materials_sheen only: an index and a 96-byte block each.
+    EXPECT_EQ(extension_bytes(sweep("sheen_sweep"), "sheen"), 1280u);
 }
 
 TEST(CliMaterialExtensions, IorViewShowsEachSpheresIor) {
@@ -95,18 +114,82 @@ TEST(CliMaterialExtensions, SpecularViewsShowWeightAndColour) {
 // front has u = 0.75, which the offset moves to the red texel. Without the transform
 // (or without the TEXCOORD_0 stream the slots need) it would read green and 1.
 TEST(CliMaterialExtensions, SpecularTexturesAreSampledThroughTheirTransform) {
-    const std::string model = sweep("specular_textures");
     for (const auto& [view, r, g] :
          {std::tuple{"specular-color", 255, 0}, std::tuple{"specular-weight", 0, 0}}) {
-        const std::string png = temp_path(std::string(view) + "_tex.png");
-        const CliRun run =
-            run_cli("render '" + model + "' -o " + png + " --width 160 --height 120 --view " +
-                    view + " --camera eye=0,0,1.5:target=0,0,0:fov=45 --validation --no-cache");
-        ASSERT_EQ(run.exit_code, 0) << run.out;
-        const Png p = read_png(png);
-        EXPECT_NEAR(p.at(80, 60)[0], r, 2) << view;
-        EXPECT_NEAR(p.at(80, 60)[1], g, 2) << view;
-        std::filesystem::remove(png);
+        const std::array<int, 3> c = front_pixel(sweep("specular_textures"), view);
+        EXPECT_NEAR(c[0], r, 2) << view;
+        EXPECT_NEAR(c[1], g, 2) << view;
+    }
+}
+
+TEST(CliMaterialExtensions, ClearcoatViewsShowFactorAndRoughness) {
+    const std::string factor = temp_path("cc.png"), rough = temp_path("ccr.png");
+    for (const auto& [view, png] :
+         {std::pair{"clearcoat", factor}, {"clearcoat-roughness", rough}}) {
+        const CliRun r = run_cli("render '" + sweep("clearcoat_sweep") + "' -o " + png +
+                                 " --width 160 --height 120 --view " + view + kSweepCamera +
+                                 " --validation --no-cache");
+        ASSERT_EQ(r.exit_code, 0) << r.out;
+    }
+    const Png f = read_png(factor), r = read_png(rough);
+    const double steps[] = {0.0, 0.25, 0.5, 0.75, 1.0};
+    for (int i = 0; i < 5; ++i) {
+        EXPECT_NEAR(sphere_centre(f, 0, i)[0], steps[i] * 255.0, 1.0) << i;
+        EXPECT_NEAR(sphere_centre(f, 1, i)[0], 255.0, 1.0) << i; // row 2: a full coat
+        EXPECT_NEAR(sphere_centre(r, 0, i)[0], 0.0, 1.0) << i;   // row 1: smooth
+        EXPECT_NEAR(sphere_centre(r, 1, i)[0], steps[i] * 255.0, 1.0) << i;
+    }
+    std::filesystem::remove(factor);
+    std::filesystem::remove(rough);
+}
+
+// clearcoat_textures.gltf: clearcoatTexture (R) and clearcoatRoughnessTexture (G) read
+// a 2x1 image (left R 1 G 0, right R 0 G 1) through KHR_texture_transform offset
+// (0.5, 0): the front (u = 0.75) reads the left texel, coat 1 and roughness 0 (1 and
+// 0 untransformed); the 1x1 clearcoatNormalTexture tilts the coat's normal onto the
+// tangent, away from the geometry's normal (which faces the camera, encoded blue 255).
+TEST(CliMaterialExtensions, ClearcoatTexturesAreSampledThroughTheirTransform) {
+    for (const auto& [view, channel, lo, hi] :
+         {std::tuple{"clearcoat", 0, 253, 255}, std::tuple{"clearcoat-roughness", 0, 0, 2},
+          std::tuple{"clearcoat-normal", 2, 100, 160}}) {
+        const std::array<int, 3> c = front_pixel(sweep("clearcoat_textures"), view);
+        EXPECT_GE(c[channel], lo) << view;
+        EXPECT_LE(c[channel], hi) << view;
+    }
+}
+
+TEST(CliMaterialExtensions, SheenViewsShowColourAndRoughness) {
+    const std::string colour = temp_path("sheen.png"), rough = temp_path("sheenr.png");
+    for (const auto& [view, png] : {std::pair{"sheen-color", colour}, {"sheen-roughness", rough}}) {
+        const CliRun r = run_cli("render '" + sweep("sheen_sweep") + "' -o " + png +
+                                 " --width 160 --height 120 --view " + view + kSweepCamera +
+                                 " --validation --no-cache");
+        ASSERT_EQ(r.exit_code, 0) << r.out;
+    }
+    const Png c = read_png(colour), r = read_png(rough);
+    const double steps[] = {0.0, 0.25, 0.5, 0.75, 1.0};
+    for (int i = 0; i < 5; ++i) {
+        // The colour is linear radiance, written sRGB-encoded like the base colour view.
+        const double srgb =
+            steps[i] <= 0.0031308 ? steps[i] * 12.92 : 1.055 * std::pow(steps[i], 1 / 2.4) - 0.055;
+        EXPECT_NEAR(sphere_centre(c, 0, i)[1], srgb * 255.0, 1.5) << i;
+        EXPECT_NEAR(sphere_centre(c, 1, i)[1], 255.0, 1.0) << i;
+        EXPECT_NEAR(sphere_centre(r, 0, i)[0], 0.5 * 255.0, 1.0) << i;
+        EXPECT_NEAR(sphere_centre(r, 1, i)[0], steps[i] * 255.0, 1.0) << i;
+    }
+    std::filesystem::remove(colour);
+    std::filesystem::remove(rough);
+}
+
+// sheen_textures.gltf: sheenColorTexture and sheenRoughnessTexture read a 2x1 image
+// (left red, alpha 0; right green, alpha 1) through KHR_texture_transform offset
+// (0.5, 0): the front reads red and roughness 0 (green and 1 untransformed).
+TEST(CliMaterialExtensions, SheenTexturesAreSampledThroughTheirTransform) {
+    for (const auto& [view, r, g] :
+         {std::tuple{"sheen-color", 255, 0}, std::tuple{"sheen-roughness", 0, 0}}) {
+        const std::array<int, 3> c = front_pixel(sweep("sheen_textures"), view);
+        EXPECT_NEAR(c[0], r, 2) << view;
+        EXPECT_NEAR(c[1], g, 2) << view;
     }
 }
 
@@ -120,6 +203,8 @@ TEST(CliMaterialExtensions, BadValuesAreWarnedOnStderrAndTheFileStillRenders) {
               std::string::npos)
         << r.out;
     EXPECT_NE(r.out.find("specularFactor: 2 is outside 0..1"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("clearcoatFactor: -0.5 is outside 0..1; clamped to 0"), std::string::npos)
+        << r.out;
     // The missing image, named with the slot that reads it.
     EXPECT_NE(r.out.find("missing_specular_color.png (used by material 'missing specular "
                          "texture' KHR_materials_specular.specularColorTexture)"),

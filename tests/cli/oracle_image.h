@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -27,9 +28,12 @@ inline Image read(const std::filesystem::path& p) {
     return img;
 }
 
-// Mean 8-bit colour (/255) of the pixels whose centres lie within `r` of (cx, cy).
-inline glm::dvec3 disk_mean(const Image& img, double cx, double cy, double r) {
+// Mean 8-bit colour (/255) of the pixels whose centres lie within `r` of (cx, cy);
+// `contrast` (if given) the standard deviation of their mean-of-channels.
+inline glm::dvec3 disk_mean(const Image& img, double cx, double cy, double r,
+                            double* contrast = nullptr) {
     glm::dvec3 sum(0.0);
+    double grey = 0.0, grey2 = 0.0;
     int n = 0;
     for (int py = int(cy - r); py <= int(cy + r); ++py)
         for (int px = int(cx - r); px <= int(cx + r); ++px) {
@@ -37,9 +41,14 @@ inline glm::dvec3 disk_mean(const Image& img, double cx, double cy, double r) {
                 continue;
             const std::uint8_t* p = &img.rgba[(std::size_t(py) * img.width + std::size_t(px)) * 4];
             sum += glm::dvec3(p[0], p[1], p[2]) / 255.0;
+            const double g = (p[0] + p[1] + p[2]) / (3.0 * 255.0);
+            grey += g;
+            grey2 += g * g;
             ++n;
         }
-    return sum / double(std::max(n, 1));
+    n = std::max(n, 1);
+    if (contrast) *contrast = std::sqrt(std::max(0.0, grey2 / n - (grey / n) * (grey / n)));
+    return sum / double(n);
 }
 
 } // namespace sherpa::test

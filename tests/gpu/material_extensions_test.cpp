@@ -1,4 +1,4 @@
-// Material extensions (KHR_materials_ior, KHR_materials_specular): what the importer
+// Material extensions (KHR_materials_ior, _specular, _clearcoat): what the importer
 // reads and warns about (bad values name their JSON pointer and fall back as
 // docs/materials.md says), and the extension buffer's layout: only materials that use
 // an extension get a block, a scene without any gets no bytes.
@@ -6,6 +6,7 @@
 
 #include <sherpa/render/material_extensions.h>
 #include <sherpa/scene/gltf_extensions.h>
+#include <sherpa/scene/material_extension_slots.h>
 #include <sherpa/scene/scene_loader.h>
 
 #include <cstring>
@@ -98,15 +99,22 @@ TEST(MaterialExtensions, OnlyMaterialsThatUseAnExtensionHaveBlocks) {
     for (std::size_t i = 0; i < b.places.size(); ++i) {
         const MaterialInstance& m = r.scene->materials[i];
         const gpu::MaterialExtensionPlace& p = b.places[i];
-        EXPECT_EQ(p.any(), m.ior.has_value() || m.specular.has_value()) << i;
+        EXPECT_EQ(p.any(), m.ior.has_value() || m.specular.has_value() || m.clearcoat.has_value() ||
+                               m.sheen.has_value())
+            << i;
+        EXPECT_EQ(p.sheen != gpu::kNoExtension, m.sheen.has_value()) << i;
         EXPECT_EQ(p.ior != gpu::kNoExtension, m.ior.has_value()) << i;
         EXPECT_EQ(p.specular != gpu::kNoExtension, m.specular.has_value()) << i;
+        EXPECT_EQ(p.clearcoat != gpu::kNoExtension, m.clearcoat.has_value()) << i;
         if (!p.any()) continue;
-        words += 2 + (m.ior ? 1 : 0) + (m.specular ? 6 : 0); // the index is two words
+        words +=
+            2 + (m.ior ? 1 : 0) + (m.specular ? 6 : 0) + (m.clearcoat ? 8 : 0) + (m.sheen ? 6 : 0);
         gpu::GPUExtensionIndex index;
         std::memcpy(&index, &b.words[p.index], sizeof index);
         EXPECT_EQ(index.ior, p.ior);
         EXPECT_EQ(index.specular, p.specular);
+        EXPECT_EQ(index.clearcoat, p.clearcoat);
+        EXPECT_EQ(index.sheen, p.sheen);
         if (m.ior) {
             gpu::GPUIorBlock ior;
             std::memcpy(&ior, &b.words[p.ior], sizeof ior);
@@ -136,6 +144,91 @@ TEST(MaterialExtensions, AnIorOnlyMaterialPaysFortyEightBytes) {
     ASSERT_TRUE(r) << r.error;
     // Its 32-byte index (two words: GPUExtensionIndex) and its 16-byte block.
     EXPECT_EQ(layout(*r.scene).bytes(), 10u * 48u);
+}
+
+TEST(MaterialExtensions, ClearcoatIsReadAndPacked) {
+    EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_clearcoat"));
+    const LoadResult r = load_data("material_sweeps/clearcoat_textures.gltf");
+    ASSERT_TRUE(r) << r.error;
+    for (const std::string& w : r.scene->warnings)
+        EXPECT_EQ(w.find("not implemented"), std::string::npos) << w;
+    const MaterialInstance& m = r.scene->materials.at(0);
+    ASSERT_TRUE(m.clearcoat.has_value());
+    EXPECT_FLOAT_EQ(m.clearcoat->factor, 1.0f);
+    EXPECT_FLOAT_EQ(m.clearcoat->roughness_factor, 1.0f);
+    EXPECT_EQ(m.clearcoat->clearcoat.texture, 0);
+    EXPECT_TRUE(m.clearcoat->clearcoat.transform.present);
+    EXPECT_EQ(m.clearcoat->normal.texture, 1);
+    // The clearcoat normal map alone asks for tangents and the TEXCOORD_0 stream.
+    EXPECT_TRUE(reads_normal_map(m));
+    ASSERT_EQ(extension_texture_slots(m).size(), 3u);
+    const gpu::MaterialExtensionBuffer b = layout(*r.scene);
+    EXPECT_EQ(b.bytes(), 32u + 128u);
+    gpu::GPUClearcoatBlock c;
+    std::memcpy(&c, &b.words[b.places[0].clearcoat], sizeof c);
+    EXPECT_EQ(c.factors, glm::vec4(1.0f, 1.0f, 1.0f, 0.0f));
+    EXPECT_EQ(c.clearcoat_tex, 100u);
+    EXPECT_EQ(c.roughness_tex, 100u);
+    EXPECT_EQ(c.normal_tex, 101u);
+    EXPECT_FLOAT_EQ(c.clearcoat_uv.row0.z, 0.5f); // the offset, in the transform's rows
+}
+
+TEST(MaterialExtensions, BadClearcoatValuesAreWarnedAndFallBack) {
+    const LoadResult r = load_data("material_extensions_bad.gltf");
+    ASSERT_TRUE(r) << r.error;
+    const Scene& s = *r.scene;
+    const std::string cc9 = "/materials/9/extensions/KHR_materials_clearcoat/";
+    const std::string cc10 = "/materials/10/extensions/KHR_materials_clearcoat/";
+    // -0.5 clamps to 0; a string roughness takes the default 0.
+    EXPECT_NE(message_at(s, cc9 + "clearcoatFactor"), nullptr);
+    EXPECT_NE(message_at(s, cc9 + "clearcoatRoughnessFactor"), nullptr);
+    EXPECT_FLOAT_EQ(material(s, "bad clearcoat").clearcoat->factor, 0.0f);
+    EXPECT_FLOAT_EQ(material(s, "bad clearcoat").clearcoat->roughness_factor, 0.0f);
+    // 2 clamps to 1; 1e39 (infinite as a float) roughness and normal scale: defaults.
+    EXPECT_NE(message_at(s, cc10 + "clearcoatFactor"), nullptr);
+    EXPECT_NE(message_at(s, cc10 + "clearcoatRoughnessFactor"), nullptr);
+    EXPECT_NE(message_at(s, cc10 + "clearcoatNormalTexture/scale"), nullptr);
+    const MaterialClearcoat& c = *material(s, "clearcoat out of range").clearcoat;
+    EXPECT_FLOAT_EQ(c.factor, 1.0f);
+    EXPECT_FLOAT_EQ(c.roughness_factor, 0.0f);
+    EXPECT_FLOAT_EQ(c.normal_scale, 1.0f);
+}
+
+} // namespace
+
+namespace {
+
+TEST(MaterialExtensions, SheenIsReadAndPacked) {
+    EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_sheen"));
+    const LoadResult r = load_data("material_sweeps/sheen_textures.gltf");
+    ASSERT_TRUE(r) << r.error;
+    const MaterialInstance& m = r.scene->materials.at(0);
+    ASSERT_TRUE(m.sheen.has_value());
+    EXPECT_EQ(m.sheen->color_factor, glm::vec3(1.0f));
+    EXPECT_FLOAT_EQ(m.sheen->roughness_factor, 1.0f);
+    EXPECT_EQ(m.sheen->color.texture, 0);
+    EXPECT_TRUE(m.sheen->roughness.transform.present);
+    EXPECT_EQ(extension_texture_slots(m).size(), 2u);
+    const gpu::MaterialExtensionBuffer b = layout(*r.scene);
+    EXPECT_EQ(b.bytes(), 32u + 96u);
+    gpu::GPUSheenBlock s;
+    std::memcpy(&s, &b.words[b.places[0].sheen], sizeof s);
+    EXPECT_EQ(s.factors, glm::vec4(1.0f));
+    EXPECT_EQ(s.color_tex, 100u);
+    EXPECT_EQ(s.roughness_tex, 100u);
+    EXPECT_FLOAT_EQ(s.color_uv.row0.z, 0.5f);
+}
+
+TEST(MaterialExtensions, BadSheenValuesAreWarnedAndFallBack) {
+    const LoadResult r = load_data("material_extensions_bad.gltf");
+    ASSERT_TRUE(r) << r.error;
+    const Scene& s = *r.scene;
+    const std::string at = "/materials/11/extensions/KHR_materials_sheen/";
+    EXPECT_NE(message_at(s, at + "sheenColorFactor"), nullptr);
+    EXPECT_NE(message_at(s, at + "sheenRoughnessFactor"), nullptr);
+    const MaterialSheen& sh = *material(s, "bad sheen").sheen;
+    EXPECT_EQ(sh.color_factor, glm::vec3(1.0f, 0.0f, 0.5f));
+    EXPECT_FLOAT_EQ(sh.roughness_factor, 0.0f);
 }
 
 } // namespace

@@ -25,12 +25,12 @@ bool contains(const std::vector<std::string>& lines, const std::string& a, const
     return false;
 }
 
-TEST(UnsupportedExtensions, TransmissionAndClearcoatAreWarnings) {
+TEST(UnsupportedExtensions, TransmissionAndThinTransparencyAreWarnings) {
     const sherpa::LoadResult r = load_glass();
     ASSERT_TRUE(r) << r.error;
     const auto& w = r.scene->warnings;
     EXPECT_TRUE(contains(w, "ADOBE_materials_thin_transparency", "materials[0] \"Glass\""));
-    EXPECT_TRUE(contains(w, "KHR_materials_clearcoat", "materials[0] \"Glass\""));
+    EXPECT_TRUE(contains(w, "ADOBE_materials_clearcoat_specular", "materials[0] \"Glass\""));
     EXPECT_FALSE(contains(w, "KHR_materials_emissive_strength", "")) << "drawn: no warning";
 }
 
@@ -50,7 +50,8 @@ TEST(UnsupportedExtensions, MessagesPointAtTheNameAndTheMaterial) {
         {"SHERPA_EXTENSION_NOT_DRAWN", "/extensionsUsed/2"},
         {"SHERPA_MATERIAL_EXTENSION_NOT_DRAWN",
          "/materials/0/extensions/ADOBE_materials_thin_transparency"},
-        {"SHERPA_MATERIAL_EXTENSION_NOT_DRAWN", "/materials/0/extensions/KHR_materials_clearcoat"},
+        {"SHERPA_MATERIAL_EXTENSION_NOT_DRAWN",
+         "/materials/0/extensions/ADOBE_materials_clearcoat_specular"},
     };
     EXPECT_EQ(got, expected);
     EXPECT_EQ(r.scene->validation.count(sherpa::Severity::Warning), 4u);
@@ -61,9 +62,9 @@ TEST(UnsupportedExtensions, PerMaterialListAndUses) {
     ASSERT_TRUE(r) << r.error;
     const auto& mats = r.scene->materials;
     ASSERT_GE(mats.size(), 2u);
-    EXPECT_EQ(
-        sherpa::unsupported_extensions(mats[0]),
-        (std::vector<std::string>{"ADOBE_materials_thin_transparency", "KHR_materials_clearcoat"}));
+    EXPECT_EQ(sherpa::unsupported_extensions(mats[0]),
+              (std::vector<std::string>{"ADOBE_materials_thin_transparency",
+                                        "ADOBE_materials_clearcoat_specular"}));
     EXPECT_TRUE(sherpa::unsupported_extensions(mats[1]).empty());
     const auto uses = sherpa::extension_uses(*r.scene);
     ASSERT_EQ(uses.size(), 3u);
@@ -88,7 +89,7 @@ TEST(UnsupportedExtensions, UndeclaredMaterialExtensionIsAWarningToo) {
     ASSERT_TRUE(r) << r.error;
     EXPECT_TRUE(contains(r.scene->warnings,
                          "materials[0] \"Glass\" is drawn without "
-                         "KHR_materials_clearcoat",
+                         "ADOBE_materials_thin_transparency",
                          "which Sherpa does not implement"));
     EXPECT_FALSE(
         contains(r.scene->warnings, "is drawn without ADOBE_materials_thin_transparency", ""))

@@ -258,6 +258,9 @@ def diffuse_transmission_sweep():
     doc['scenes'][0]['nodes'].append(len(doc['nodes']))
     doc['nodes'].append({'name': 'back light', 'translation': [0.0, 0.0, -2.0],
                          'extensions': {'KHR_lights_punctual': {'light': 0}}})
+    return doc
+
+
 def unlit(color, alpha=1.0, texture=None, **extra):
     pbr_part = {'baseColorFactor': color + [alpha]}
     if texture is not None:
@@ -296,6 +299,87 @@ def variants():
     return doc
 
 
+# The coated spheres' base: black and rough, so the coat's sharp reflection stands out
+# from the base's blurred one.
+COATED_BASE = 0.6
+
+
+def clearcoat_sweep():
+    """Row 1: clearcoatFactor 0 .. 1 (smooth coat); row 2: a full coat's
+    clearcoatRoughnessFactor 0 .. 1."""
+    steps = [0.0, 0.25, 0.5, 0.75, 1.0]
+    row1 = [(f'clearcoat {f}', {'pbrMetallicRoughness': pbr(BLACK, COATED_BASE),
+                                'extensions': {'KHR_materials_clearcoat': {'clearcoatFactor': f}}})
+            for f in steps]
+    row2 = [(f'clearcoat roughness {r}',
+             {'pbrMetallicRoughness': pbr(BLACK, COATED_BASE),
+              'extensions': {'KHR_materials_clearcoat': {'clearcoatFactor': 1.0,
+                                                         'clearcoatRoughnessFactor': r}}})
+            for r in steps]
+    return document('KHR_materials_clearcoat sweep', [row1, row2], ['KHR_materials_clearcoat'])
+
+
+def clearcoat_textures():
+    """One sphere: clearcoatTexture (R) and clearcoatRoughnessTexture (G) read one 2x1
+    image (left texel R 1 G 0, right R 0 G 1) through KHR_texture_transform (offset 0.5
+    in u: the sphere's front, u = 0.75, reads the left texel), and a 1x1
+    clearcoatNormalTexture that tilts the coat's normal onto the tangent."""
+    factors = png_rgba(2, 1, lambda x, y: (255, 0, 0, 255) if x == 0 else (0, 255, 0, 255))
+    normal = png_rgba(1, 1, lambda x, y: (255, 128, 128, 255))
+    transform = {'KHR_texture_transform': {'offset': [0.5, 0.0]}}
+    row = [('textured clearcoat', {
+        'pbrMetallicRoughness': pbr(BLACK, COATED_BASE),
+        'extensions': {'KHR_materials_clearcoat': {
+            'clearcoatFactor': 1.0, 'clearcoatRoughnessFactor': 1.0,
+            'clearcoatTexture': {'index': 0, 'texCoord': 0, 'extensions': transform},
+            'clearcoatRoughnessTexture': {'index': 0, 'extensions': transform},
+            'clearcoatNormalTexture': {'index': 1, 'scale': 1.0}}}})]
+    doc = document('KHR_materials_clearcoat textures', [row],
+                   ['KHR_materials_clearcoat', 'KHR_texture_transform'])
+    doc['images'] = [{'uri': 'data:image/png;base64,' + base64.b64encode(i).decode()}
+                     for i in (factors, normal)]
+    doc['samplers'] = [{'magFilter': 9728, 'minFilter': 9728, 'wrapS': 10497, 'wrapT': 10497}]
+    doc['textures'] = [{'source': 0, 'sampler': 0}, {'source': 1, 'sampler': 0}]
+    return doc
+
+
+def sheen_sweep():
+    """Row 1: a grey sheenColorFactor 0 .. 1 at sheenRoughnessFactor 0.5; row 2: a white
+    sheen's roughness 0 .. 1 (small roughness is a thin rim at grazing angles)."""
+    steps = [0.0, 0.25, 0.5, 0.75, 1.0]
+    row1 = [(f'sheen {c}', {'pbrMetallicRoughness': pbr(BLACK, COATED_BASE),
+                            'extensions': {'KHR_materials_sheen': {
+                                'sheenColorFactor': [c, c, c], 'sheenRoughnessFactor': 0.5}}})
+            for c in steps]
+    row2 = [(f'sheen roughness {r}',
+             {'pbrMetallicRoughness': pbr(BLACK, COATED_BASE),
+              'extensions': {'KHR_materials_sheen': {'sheenColorFactor': [1.0, 1.0, 1.0],
+                                                     'sheenRoughnessFactor': r}}})
+            for r in steps]
+    return document('KHR_materials_sheen sweep', [row1, row2], ['KHR_materials_sheen'])
+
+
+def sheen_textures():
+    """One sphere: sheenColorTexture (RGB, sRGB) and sheenRoughnessTexture (A) read one
+    2x1 image (left texel red, alpha 0; right green, alpha 1) through
+    KHR_texture_transform offset 0.5 in u (the front reads the left texel) and
+    texCoord 0 named."""
+    image = png_rgba(2, 1, lambda x, y: (255, 0, 0, 0) if x == 0 else (0, 255, 0, 255))
+    transform = {'KHR_texture_transform': {'offset': [0.5, 0.0], 'texCoord': 0}}
+    row = [('textured sheen', {
+        'pbrMetallicRoughness': pbr(BLACK, COATED_BASE),
+        'extensions': {'KHR_materials_sheen': {
+            'sheenColorFactor': [1.0, 1.0, 1.0], 'sheenRoughnessFactor': 1.0,
+            'sheenColorTexture': {'index': 0, 'extensions': transform},
+            'sheenRoughnessTexture': {'index': 0, 'extensions': transform}}}})]
+    doc = document('KHR_materials_sheen textures', [row],
+                   ['KHR_materials_sheen', 'KHR_texture_transform'])
+    doc['images'] = [{'uri': 'data:image/png;base64,' + base64.b64encode(image).decode()}]
+    doc['samplers'] = [{'magFilter': 9728, 'minFilter': 9728, 'wrapS': 10497, 'wrapT': 10497}]
+    doc['textures'] = [{'source': 0, 'sampler': 0}]
+    return doc
+
+
 def variants_bad():
     """The variants file with broken mappings: a material index past the end, a variant
     index past the end, a variant mapped twice, and a mapping without variants."""
@@ -314,6 +398,9 @@ def main():
                       ('transmission_roughness', transmission_roughness()),
                       ('volume_sweep', volume_sweep()), ('dispersion_sweep', dispersion_sweep()),
                       ('diffuse_transmission_sweep', diffuse_transmission_sweep()),
+                      ('clearcoat_sweep', clearcoat_sweep()),
+                      ('clearcoat_textures', clearcoat_textures()),
+                      ('sheen_sweep', sheen_sweep()), ('sheen_textures', sheen_textures()),
                       ('variants', variants()), ('variants_bad', variants_bad())):
         with open(f'{out}/{name}.gltf', 'w') as f:
             json.dump(doc, f, indent=1)

@@ -30,10 +30,12 @@ void GpuMaterials::build(std::span<const MaterialInstance> materials) {
     extras_data_.clear();
     extensions_ =
         build_material_extensions(materials, [this](const TextureSlot& slot, TextureRole role) {
-            // A failed texture reads white (the factor alone), not the checker: the
-            // texture pipeline has warned, and a checker would only tint F0.
-            const std::uint32_t tex = textures_->field_slot(slot, role, kWhiteTexture);
-            return tex == kCheckerTexture ? kWhiteTexture : tex;
+            // A failed texture reads white (the factor alone) or the flat normal, not
+            // the checker: the texture pipeline has warned, and a checker would only
+            // tint the factor.
+            const std::uint32_t fallback = role == kRoleNormal ? kFlatNormalTexture : kWhiteTexture;
+            const std::uint32_t tex = textures_->field_slot(slot, role, fallback);
+            return tex == kCheckerTexture ? fallback : tex;
         });
     for (const MaterialInstance& m : materials) {
         // Texture fields resolved to bindless slots, absent ones to the defaults.

@@ -1,5 +1,7 @@
 #include <sherpa/render/material_extensions.h>
 
+#include <sherpa/scene/material_extension_slots.h>
+
 #include <cstring>
 
 namespace sherpa::gpu {
@@ -63,19 +65,18 @@ MaterialExtensionBuffer build_material_extensions(std::span<const MaterialInstan
     for (std::size_t i = 0; i < materials.size(); ++i) {
         const MaterialInstance& m = materials[i];
         // Specular-glossiness materials have no dielectric F0 to change; unlit ones no BRDF.
-        const bool shaded = !m.unlit && !m.specular_glossiness;
-        const bool ior = shaded && m.ior.has_value();
-        const bool specular = shaded && m.specular.has_value();
-        const bool transmission = shaded && m.transmission.has_value();
-        const bool diffuse_transmission = shaded && m.diffuse_transmission.has_value();
-        const bool volume = shaded && m.volume.has_value();
-        const bool dispersion = shaded && m.dispersion.has_value();
-        if (!ior && !specular && !transmission && !diffuse_transmission && !volume && !dispersion)
+        if (!draws_material_extensions(m)) continue;
+        const bool ior = m.ior.has_value();
+        const bool specular = m.specular.has_value();
+        const bool clearcoat = m.clearcoat.has_value();
+        const bool sheen = m.sheen.has_value();
+        const bool transmission = m.transmission.has_value();
+        if (!ior && !specular && !clearcoat && !sheen && !transmission && !m.volume &&
+            !m.diffuse_transmission && !m.dispersion)
             continue;
         MaterialExtensionPlace& place = out.places[i];
-        place.index =
-            append(out.words, GPUExtensionIndex{kNoExtension, kNoExtension, 0, 0, kNoExtension,
-                                                kNoExtension, kNoExtension, kNoExtension});
+        GPUExtensionIndex index{};
+        place.index = append(out.words, index); // written once the blocks are placed
         if (ior) place.ior = append(out.words, GPUIorBlock{*m.ior, 0.0f, 0.0f, 0.0f});
         if (specular) {
             const MaterialSpecular& s = *m.specular;
@@ -87,16 +88,38 @@ MaterialExtensionBuffer build_material_extensions(std::span<const MaterialInstan
             b.color_uv = texture_transform(s.specular_color);
             place.specular = append(out.words, b);
         }
+        if (clearcoat) {
+            const MaterialClearcoat& c = *m.clearcoat;
+            GPUClearcoatBlock b{};
+            b.factors = glm::vec4(c.factor, c.roughness_factor, c.normal_scale, 0.0f);
+            b.clearcoat_tex = texture_slot(c.clearcoat, kRoleLinear);
+            b.roughness_tex = texture_slot(c.roughness, kRoleLinear);
+            b.normal_tex = texture_slot(c.normal, kRoleNormal);
+            b.clearcoat_uv = texture_transform(c.clearcoat);
+            b.roughness_uv = texture_transform(c.roughness);
+            b.normal_uv = texture_transform(c.normal);
+            place.clearcoat = append(out.words, b);
+        }
+        if (sheen) {
+            const MaterialSheen& sh = *m.sheen;
+            GPUSheenBlock b{};
+            b.factors = glm::vec4(sh.color_factor, sh.roughness_factor);
+            b.color_tex = texture_slot(sh.color, kRoleColor);
+            b.roughness_tex = texture_slot(sh.roughness, kRoleLinear);
+            b.color_uv = texture_transform(sh.color);
+            b.roughness_uv = texture_transform(sh.roughness);
+            place.sheen = append(out.words, b);
+        }
         append_transmission_blocks(out.words, m, place, texture_slot);
         if (transmission && m.transmission->factor > 0.0f) ++out.transmissive_materials;
-        const GPUExtensionIndex index{place.ior,
-                                      place.specular,
-                                      0,
-                                      0,
-                                      place.transmission,
-                                      place.volume,
-                                      place.diffuse_transmission,
-                                      place.dispersion};
+        index = GPUExtensionIndex{place.ior,
+                                  place.specular,
+                                  place.clearcoat,
+                                  place.sheen,
+                                  place.transmission,
+                                  place.volume,
+                                  place.diffuse_transmission,
+                                  place.dispersion};
         std::memcpy(&out.words[place.index], &index, sizeof index);
     }
     return out;

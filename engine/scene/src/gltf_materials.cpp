@@ -1,5 +1,6 @@
 // glTF samplers, images, textures and materials -> engine records.
 #include "accessor_reader.h"
+#include "gltf_material_layers.h"
 #include "gltf_material_values.h"
 #include "import_context.h"
 #include "import_error.h"
@@ -400,6 +401,11 @@ void import_material(ImportContext& ctx, std::size_t i) {
             it != src.extensions.end())
             m.specular = read_specular(ctx, it->second, where);
         read_volume_extensions(ctx, src.extensions, m, where);
+        if (const auto it = src.extensions.find("KHR_materials_clearcoat");
+            it != src.extensions.end())
+            m.clearcoat = read_clearcoat(ctx, it->second, where);
+        if (const auto it = src.extensions.find("KHR_materials_sheen"); it != src.extensions.end())
+            m.sheen = read_sheen(ctx, it->second, where);
         ctx.scene.materials.push_back(std::move(m));
     }
 }

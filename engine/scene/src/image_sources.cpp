@@ -1,4 +1,5 @@
 #include <sherpa/scene/image_sources.h>
+#include <sherpa/scene/material_extension_slots.h>
 
 #include <array>
 #include <utility>
@@ -79,26 +80,9 @@ std::vector<std::string> image_slot_uses(const Scene& scene, std::int32_t image)
         if (mat.specular_glossiness &&
             reads_image(scene, mat.specular_glossiness->specular_glossiness, image))
             names += (names.empty() ? "" : ", ") + std::string("specularGlossinessTexture");
-        if (mat.specular)
-            for (const auto& [slot, name] :
-                 {std::pair{&mat.specular->specular, "KHR_materials_specular.specularTexture"},
-                  std::pair{&mat.specular->specular_color,
-                            "KHR_materials_specular.specularColorTexture"}})
-                if (reads_image(scene, *slot, image))
-                    names += (names.empty() ? "" : ", ") + std::string(name);
-        // The transmission family's slots.
-        const TextureSlot none;
-        for (const auto& [slot, name] :
-             {std::pair{mat.transmission ? &mat.transmission->texture : &none,
-                        "KHR_materials_transmission.transmissionTexture"},
-              std::pair{mat.volume ? &mat.volume->thickness : &none,
-                        "KHR_materials_volume.thicknessTexture"},
-              std::pair{mat.diffuse_transmission ? &mat.diffuse_transmission->texture : &none,
-                        "KHR_materials_diffuse_transmission.diffuseTransmissionTexture"},
-              std::pair{mat.diffuse_transmission ? &mat.diffuse_transmission->color : &none,
-                        "KHR_materials_diffuse_transmission.diffuseTransmissionColorTexture"}})
-            if (slot->present() && reads_image(scene, *slot, image))
-                names += (names.empty() ? "" : ", ") + std::string(name);
+        for (const ExtensionTextureSlot& e : extension_texture_slots(mat))
+            if (reads_image(scene, *e.slot, image))
+                names += (names.empty() ? "" : ", ") + std::string(e.name);
         if (names.empty()) continue;
         const std::string who =
             mat.name.empty() ? "material " + std::to_string(m) : "material '" + mat.name + "'";

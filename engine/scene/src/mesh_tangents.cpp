@@ -4,6 +4,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include <sherpa/scene/material_extension_slots.h>
 #include <sherpa/scene/mesh_tangents.h>
 
 #include "tangent_internal.h"
@@ -28,7 +29,7 @@ const MaterialInstance* normal_mapped_material(const Scene& scene, std::uint32_t
     for (std::uint32_t m : possible_materials(scene, mesh)) {
         if (m >= scene.materials.size()) continue;
         if (!first) first = &scene.materials[m];
-        if (scene.materials[m].normal.present()) return &scene.materials[m];
+        if (reads_normal_map(scene.materials[m])) return &scene.materials[m];
     }
     return first;
 }
@@ -92,8 +93,7 @@ std::uint32_t apply_corner_tangents(Mesh& mesh, std::span<const glm::vec4> corne
 
 std::uint32_t normal_uv_set(const Scene& scene, const Mesh& mesh) {
     if (mesh.material_id >= scene.materials.size()) return 0;
-    const TextureSlot& normal = scene.materials[mesh.material_id].normal;
-    return normal.present() ? normal.tex_coord : 0;
+    return normal_map_uv_set(scene.materials[mesh.material_id]);
 }
 
 MeshTangentInput tangent_input_of(const Mesh& mesh, std::uint32_t tex_coord) {
@@ -155,7 +155,7 @@ SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptio
     for (std::uint32_t id = 0; id < scene.meshes.size(); ++id) {
         const Mesh& mesh = scene.meshes[id];
         const MaterialInstance* material = normal_mapped_material(scene, id);
-        const bool normal_texture = material && material->normal.present();
+        const bool normal_texture = material && reads_normal_map(*material);
         const bool authored = mesh.provenance_of(VertexAttribute::Tangent) == Provenance::Authored;
         if (mesh.topology() == Topology::Triangles &&
             (options.regenerate || (!authored && normal_texture))) {
@@ -189,7 +189,7 @@ SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptio
                 mesh.provenance_of(VertexAttribute::Tangent) == Provenance::Authored;
             const MaterialInstance* material =
                 normal_mapped_material(scene, static_cast<std::uint32_t>(i));
-            const bool normal_texture = material && material->normal.present();
+            const bool normal_texture = material && reads_normal_map(*material);
             if (mesh.topology() != Topology::Triangles) {
                 out.reason = "lines and points have no surface: no tangents";
                 continue;

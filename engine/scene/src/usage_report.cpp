@@ -1,3 +1,4 @@
+#include <sherpa/scene/material_extension_slots.h>
 #include <sherpa/scene/usage_report.h>
 
 namespace sherpa {
@@ -12,23 +13,18 @@ std::array<bool, kVertexAttributeCount> attributes_used(const MaterialInstance& 
     set(VertexAttribute::Position);
     // Unlit materials shade without normals; everything else lights with them.
     if (!material.unlit) set(VertexAttribute::Normal);
-    // Extension slots too (KHR_materials_pbrSpecularGlossiness, KHR_materials_specular):
-    // a texture read without its TEXCOORD stream would sample one texel everywhere.
+    // Extension slots too (KHR_materials_pbrSpecularGlossiness, the drawn extensions'
+    // slots): a texture read without its TEXCOORD stream would sample one texel everywhere.
     const TextureSlot none;
-    const bool specular = material.specular && !material.specular_glossiness;
-    const bool shaded = !material.unlit && !material.specular_glossiness;
-    for (const TextureSlot* slot :
-         {&material.base_color, &material.metallic_roughness, &material.normal, &material.occlusion,
-          &material.emissive,
-          material.specular_glossiness ? &material.specular_glossiness->specular_glossiness : &none,
-          specular ? &material.specular->specular : &none,
-          specular ? &material.specular->specular_color : &none,
-          // The transmission family (drawn on the same materials as specular).
-          shaded && material.transmission ? &material.transmission->texture : &none,
-          shaded && material.volume ? &material.volume->thickness : &none,
-          shaded && material.diffuse_transmission ? &material.diffuse_transmission->texture : &none,
-          shaded && material.diffuse_transmission ? &material.diffuse_transmission->color
-                                                  : &none}) {
+    std::vector<const TextureSlot*> slots{
+        &material.base_color,
+        &material.metallic_roughness,
+        &material.normal,
+        &material.occlusion,
+        &material.emissive,
+        material.specular_glossiness ? &material.specular_glossiness->specular_glossiness : &none};
+    for (const ExtensionTextureSlot& e : extension_texture_slots(material)) slots.push_back(e.slot);
+    for (const TextureSlot* slot : slots) {
         if (!slot->present()) continue;
         if (material.unlit && slot != &material.base_color)
             continue; // unlit reads base colour only
@@ -36,7 +32,7 @@ std::array<bool, kVertexAttributeCount> attributes_used(const MaterialInstance& 
         if (slot->tex_coord == 1) set(VertexAttribute::TexCoord1);
     }
     // Tangents matter only where a normal map perturbs the normal (glTF's rule).
-    if (material.normal.present() && !material.unlit) set(VertexAttribute::Tangent);
+    if (reads_normal_map(material) && !material.unlit) set(VertexAttribute::Tangent);
     // Vertex colours multiply the base colour whenever the primitive has them.
     if (present(VertexAttribute::Color0)) set(VertexAttribute::Color0);
     // A stream the material wants but the mesh lacks is still not stored: shaders

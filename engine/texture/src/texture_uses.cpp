@@ -1,4 +1,5 @@
 // Which images the displayed scene's materials use, and in which roles.
+#include <sherpa/scene/material_extension_slots.h>
 #include <sherpa/texture/texture_pipeline.h>
 
 #include <algorithm>
@@ -72,23 +73,9 @@ std::vector<TextureUse> collect_texture_uses(const Scene& scene) {
         // decodes exactly that.
         if (m.specular_glossiness)
             add(m.specular_glossiness->specular_glossiness, kRoleColor, std::nullopt);
-        // KHR_materials_specular, where it is drawn (as gpu::build_material_extensions
-        // decides: not on unlit or specular-glossiness materials): the weight in a
-        // linear alpha, the colour in sRGB.
-        if (m.specular && !m.unlit && !m.specular_glossiness) {
-            add(m.specular->specular, kRoleLinear, std::nullopt);
-            add(m.specular->specular_color, kRoleColor, std::nullopt);
-        }
-        // The transmission family, on the same materials: factors in linear channels,
-        // the diffuse transmission colour in sRGB.
-        if (!m.unlit && !m.specular_glossiness) {
-            if (m.transmission) add(m.transmission->texture, kRoleLinear, std::nullopt);
-            if (m.volume) add(m.volume->thickness, kRoleLinear, std::nullopt);
-            if (m.diffuse_transmission) {
-                add(m.diffuse_transmission->texture, kRoleLinear, std::nullopt);
-                add(m.diffuse_transmission->color, kRoleColor, std::nullopt);
-            }
-        }
+        // The extensions' slots where they are drawn (material_extension_slots.h).
+        for (const ExtensionTextureSlot& e : extension_texture_slots(m))
+            add(*e.slot, e.role, std::nullopt);
     }
     std::vector<TextureUse> out;
     for (auto& [key, use] : uses) {

@@ -63,6 +63,16 @@ enum class DebugView : std::uint32_t {
     Thickness = 26,
     Attenuation = 27,
     DiffuseTransmission = 28,
+    // KHR_materials_clearcoat: the coat's weight and roughness (greys; 0 without the
+    // extension) and its normal (encoded as the normal view; the geometry's normal
+    // where the coat has no normal map of its own).
+    Clearcoat = 29,
+    ClearcoatRoughness = 30,
+    ClearcoatNormal = 31,
+    // KHR_materials_sheen: the sheen colour (linear radiance like base colour; black
+    // without the extension) and roughness (grey).
+    SheenColor = 32,
+    SheenRoughness = 33,
 };
 
 // The metallic view's colour on specular-glossiness materials (no metallic value
@@ -140,7 +150,7 @@ struct OverlayEntry {
     const char* label;
 };
 
-inline constexpr std::array<DebugViewInfo, 29> kDebugViews{{
+inline constexpr std::array<DebugViewInfo, 34> kDebugViews{{
     {DebugView::Lit, "lit", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Lit")},
     {DebugView::Normal, "normal", kNormalStream, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Normals")},
     {DebugView::Tangent, "tangent", kTangentStream,
@@ -188,6 +198,14 @@ inline constexpr std::array<DebugViewInfo, 29> kDebugViews{{
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Volume attenuation")},
     {DebugView::DiffuseTransmission, "diffuse-transmission", 0,
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Diffuse transmission")},
+    {DebugView::Clearcoat, "clearcoat", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Clearcoat")},
+    {DebugView::ClearcoatRoughness, "clearcoat-roughness", 0,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Clearcoat roughness")},
+    {DebugView::ClearcoatNormal, "clearcoat-normal", kNormalStream | kTangentStream,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Clearcoat normal")},
+    {DebugView::SheenColor, "sheen-color", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Sheen colour")},
+    {DebugView::SheenRoughness, "sheen-roughness", 0,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Sheen roughness")},
 }};
 
 inline constexpr std::array<OverlayEntry, 7> kOverlays{{

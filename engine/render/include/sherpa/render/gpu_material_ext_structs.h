@@ -20,10 +20,10 @@ inline constexpr std::uint32_t kNoExtension = 0xffffffffu;
 inline constexpr std::uint32_t kExtensionWordBytes = 16;
 
 struct GPUExtensionIndex {
-    std::uint32_t ior;      // GPUIorBlock, or kNoExtension
-    std::uint32_t specular; // GPUSpecularBlock, or kNoExtension
-    std::uint32_t pad0;
-    std::uint32_t pad1;
+    std::uint32_t ior;       // GPUIorBlock, or kNoExtension
+    std::uint32_t specular;  // GPUSpecularBlock, or kNoExtension
+    std::uint32_t clearcoat; // GPUClearcoatBlock, or kNoExtension
+    std::uint32_t sheen;     // GPUSheenBlock, or kNoExtension
     // Second word: the transmission family (shaders/include/transmission.glsl).
     std::uint32_t transmission;         // GPUTransmissionBlock, or kNoExtension
     std::uint32_t volume;               // GPUVolumeBlock, or kNoExtension
@@ -31,6 +31,8 @@ struct GPUExtensionIndex {
     std::uint32_t dispersion;           // GPUDispersionBlock, or kNoExtension
 };
 static_assert(offsetof(GPUExtensionIndex, specular) == 4);
+static_assert(offsetof(GPUExtensionIndex, clearcoat) == 8);
+static_assert(offsetof(GPUExtensionIndex, sheen) == 12);
 static_assert(offsetof(GPUExtensionIndex, transmission) == 16);
 static_assert(offsetof(GPUExtensionIndex, volume) == 20);
 static_assert(offsetof(GPUExtensionIndex, diffuse_transmission) == 24);
@@ -58,6 +60,41 @@ static_assert(offsetof(GPUSpecularBlock, specular_color_tex) == 20);
 static_assert(offsetof(GPUSpecularBlock, specular_uv) == 32);
 static_assert(offsetof(GPUSpecularBlock, color_uv) == 64);
 static_assert(sizeof(GPUSpecularBlock) == 96);
+
+// KHR_materials_clearcoat: the coat's weight, roughness and normal map. Textures are
+// bindless slots (white, or the flat normal, where absent).
+struct GPUClearcoatBlock {
+    glm::vec4 factors;           // x clearcoatFactor, y clearcoatRoughnessFactor, z normal scale
+    std::uint32_t clearcoat_tex; // R channel, linear
+    std::uint32_t roughness_tex; // G channel, linear
+    std::uint32_t normal_tex;    // tangent-space normal (kFlatNormalTexture where absent)
+    std::uint32_t pad0;
+    GPUTextureTransform clearcoat_uv; // KHR_texture_transform of clearcoatTexture
+    GPUTextureTransform roughness_uv; // ... of clearcoatRoughnessTexture
+    GPUTextureTransform normal_uv;    // ... of clearcoatNormalTexture
+};
+static_assert(offsetof(GPUClearcoatBlock, clearcoat_tex) == 16);
+static_assert(offsetof(GPUClearcoatBlock, roughness_tex) == 20);
+static_assert(offsetof(GPUClearcoatBlock, normal_tex) == 24);
+static_assert(offsetof(GPUClearcoatBlock, clearcoat_uv) == 32);
+static_assert(offsetof(GPUClearcoatBlock, roughness_uv) == 64);
+static_assert(offsetof(GPUClearcoatBlock, normal_uv) == 96);
+static_assert(sizeof(GPUClearcoatBlock) == 128);
+
+// KHR_materials_sheen. Textures are bindless slots (white where absent).
+struct GPUSheenBlock {
+    glm::vec4 factors;           // xyz sheenColorFactor, w sheenRoughnessFactor
+    std::uint32_t color_tex;     // RGB, sRGB
+    std::uint32_t roughness_tex; // A channel, linear
+    std::uint32_t pad0, pad1;
+    GPUTextureTransform color_uv;     // KHR_texture_transform of sheenColorTexture
+    GPUTextureTransform roughness_uv; // ... of sheenRoughnessTexture
+};
+static_assert(offsetof(GPUSheenBlock, color_tex) == 16);
+static_assert(offsetof(GPUSheenBlock, roughness_tex) == 20);
+static_assert(offsetof(GPUSheenBlock, color_uv) == 32);
+static_assert(offsetof(GPUSheenBlock, roughness_uv) == 64);
+static_assert(sizeof(GPUSheenBlock) == 96);
 
 // KHR_materials_transmission (shaders/include/transmission_structs.glsl).
 struct GPUTransmissionBlock {

@@ -26,6 +26,8 @@ struct MaterialExtensionPlace {
     std::uint32_t index = kNoExtension; // GPUExtensionIndex: GPUMaterialExtra::extensions
     std::uint32_t ior = kNoExtension;
     std::uint32_t specular = kNoExtension;
+    std::uint32_t clearcoat = kNoExtension;
+    std::uint32_t sheen = kNoExtension;
     std::uint32_t transmission = kNoExtension, volume = kNoExtension;
     std::uint32_t diffuse_transmission = kNoExtension, dispersion = kNoExtension;
     bool any() const { return index != kNoExtension; }
@@ -41,7 +43,7 @@ struct MaterialExtensionBuffer {
 };
 
 // The bindless slot of a texture slot in a role (SceneTextures::field_slot), or the
-// white default where it is absent or failed.
+// default where it is absent or failed: white, the flat normal for kRoleNormal.
 using ExtensionTextureSlot = std::function<std::uint32_t(const TextureSlot&, TextureRole)>;
 
 // Pure: the words for `materials`, in material order, each block right after its

@@ -83,6 +83,28 @@ struct MaterialDiffuseTransmission {
     TextureSlot color; // RGB, sRGB
 };
 
+// KHR_materials_clearcoat: a dielectric coat (F0 0.04) over the material, weighted by
+// clearcoatFactor x clearcoatTexture.r, its roughness clearcoatRoughnessFactor x
+// clearcoatRoughnessTexture.g, its own normal map (none: the geometry's normal).
+struct MaterialClearcoat {
+    float factor = 0.0f;
+    float roughness_factor = 0.0f;
+    float normal_scale = 1.0f; // clearcoatNormalTexture.scale
+    TextureSlot clearcoat;     // R channel, linear
+    TextureSlot roughness;     // G channel, linear
+    TextureSlot normal;        // tangent-space normal map
+};
+
+// KHR_materials_sheen: a Charlie sheen over the material, its colour
+// sheenColorFactor x sheenColorTexture.rgb (sRGB; black: no sheen) and its roughness
+// sheenRoughnessFactor x sheenRoughnessTexture.a.
+struct MaterialSheen {
+    glm::vec3 color_factor{0.0f};
+    float roughness_factor = 0.0f;
+    TextureSlot color;     // RGB, sRGB
+    TextureSlot roughness; // A channel, linear
+};
+
 // KHR_materials_ior's default, which is also the core glTF dielectric (F0 = 0.04).
 inline constexpr float kDefaultIor = 1.5f;
 
@@ -107,6 +129,8 @@ struct MaterialInstance {
     // a block of its own in the GPU extension buffer; absent ones cost nothing).
     std::optional<float> ior;                         // KHR_materials_ior: >= 1, or 0 (F0 = 1)
     std::optional<MaterialSpecular> specular;         // KHR_materials_specular
+    std::optional<MaterialClearcoat> clearcoat;       // KHR_materials_clearcoat
+    std::optional<MaterialSheen> sheen;               // KHR_materials_sheen
     std::optional<MaterialTransmission> transmission; // KHR_materials_transmission
     std::optional<MaterialVolume> volume;             // KHR_materials_volume
     std::optional<MaterialDiffuseTransmission> diffuse_transmission; // ..._diffuse_transmission

@@ -6,6 +6,7 @@
 #include "variant_options.h"
 
 #include <sherpa/core/file_io.h>
+#include <sherpa/gpu/context.h>
 #include <sherpa/lab/families.h>
 #include <sherpa/lab/report_export.h>
 #include <sherpa/scene/scene_loader.h>
@@ -79,6 +80,8 @@ std::unique_ptr<lab::Family> make(const Options& o) {
         if (o.height > 0) l.height = o.height;
         if (o.reference_spp > 0) l.reference_spp = o.reference_spp;
         if (o.max_bounces_given) l.max_bounces = o.max_bounces;
+        // SHERPA_VALIDATION=1: every validation message is a failure of its method.
+        l.validation = gpu::ContextOptions::default_validation();
         l.lighting = {make_environment_image(o.environment), o.lighting};
         return lab::make_lighting_family(l);
     }

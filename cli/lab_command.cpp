@@ -12,8 +12,8 @@
 #include <sherpa/scene/scene_loader.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <map>
 
@@ -178,7 +178,9 @@ int run_lab(Args args) {
             char* end = nullptr;
             const long long n = std::strtoll(v.c_str(), &end, 10);
             const long long low = a == "--max-bounces" ? 0 : 1;
-            const long long high = a == "--reference-spp" ? 65536 : a == "--max-bounces" ? 64 : 4096;
+            const long long high = a == "--reference-spp" ? 65536
+                                   : a == "--max-bounces" ? 64
+                                                          : 4096;
             if (v.empty() || *end != '\0' || n < low || n > high)
                 return usage_error(std::string(a) + " needs a whole number from " +
                                    std::to_string(low) + " to " + std::to_string(high) + ", not '" +

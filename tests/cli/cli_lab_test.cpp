@@ -3,11 +3,11 @@
 #include "cli/cli_run.h"
 #include "test_support.h"
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
-#include <cstdlib>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -150,8 +150,8 @@ TEST(CliLab, ShadowsTakeTheEnvironmentOptions) {
 // The lighting family on Box at 32x24 against 8 samples, lit by a small HDR (its
 // prefilters are quick): the JSON's shape, the chart, and what the box cannot show.
 TEST(CliLab, LightingJsonShapeAndChart) {
-    const fs::path svg = fs::temp_directory_path() /
-                         ("sherpa_lab_lighting_" + std::to_string(::getpid()) + ".svg");
+    const fs::path svg =
+        fs::temp_directory_path() / ("sherpa_lab_lighting_" + std::to_string(::getpid()) + ".svg");
     ::setenv("SHERPA_VALIDATION", "1", 1); // each message a failure of its method
     const auto r = run_cli("lab '" + sherpa::test::gltf_asset("Box") +
                                "' --family lighting --width 32 --height 24 --reference-spp 8 "
@@ -189,9 +189,9 @@ TEST(CliLab, LightingJsonShapeAndChart) {
             EXPECT_TRUE(m.at("errors").contains(e)) << m.at("name") << " " << e;
         EXPECT_TRUE(m.at("failures").empty()) << m.at("name");
     }
-    EXPECT_EQ(groups, (std::set<std::string>{"irradiance", "specular prefilter",
-                                             "energy compensation", "shadows", "transmission",
-                                             "path tracer"}));
+    EXPECT_EQ(groups,
+              (std::set<std::string>{"irradiance", "specular prefilter", "energy compensation",
+                                     "shadows", "transmission", "path tracer"}));
     EXPECT_TRUE(j["methods"].back().at("errors").contains("ms_per_sample"));
     std::ifstream in(svg);
     std::stringstream text;
@@ -199,10 +199,9 @@ TEST(CliLab, LightingJsonShapeAndChart) {
     EXPECT_EQ(text.str().rfind("<svg", 0), 0u);
     EXPECT_NE(text.str().find("irradiance sh9"), std::string::npos);
     fs::remove(svg);
-    for (const char* bad : {"--reference-spp 0", "--width abc", "--height 5000",
-                            "--max-bounces -1", "--reference-spp"})
-        EXPECT_EQ(run_cli(std::string("lab builtin:default --family lighting ") + bad).exit_code,
-                  2)
+    for (const char* bad : {"--reference-spp 0", "--width abc", "--height 5000", "--max-bounces -1",
+                            "--reference-spp"})
+        EXPECT_EQ(run_cli(std::string("lab builtin:default --family lighting ") + bad).exit_code, 2)
             << bad;
 }
 

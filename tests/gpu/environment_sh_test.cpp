@@ -1,38 +1,20 @@
 // SH9 irradiance (environment_sh.h) against closed forms: a constant environment's
 // irradiance / pi is the constant, a linear one's (a + b.w) is a + 2/3 b.n; both are
 // exact in bands 0-1, so only the texel quadrature is left.
+#include "sphere_scenes.h"
+
 #include <sherpa/render/environment_sh.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <limits>
 
 namespace sherpa::test {
 namespace {
 
-// An equirectangular image of radiance f(direction) in environment.h's convention.
-gpu::EnvironmentImage environment_of(std::uint32_t width,
-                                     const std::function<glm::vec3(glm::vec3)>& f) {
-    gpu::EnvironmentImage image;
-    image.width = width;
-    image.height = width / 2;
-    image.rgba.resize(std::size_t(image.width) * image.height * 4);
-    const double pi = 3.14159265358979323846;
-    for (std::uint32_t j = 0; j < image.height; ++j)
-        for (std::uint32_t i = 0; i < image.width; ++i) {
-            const double v = 1.0 - (j + 0.5) / image.height, u = (i + 0.5) / image.width;
-            const double lat = (v - 0.5) * pi, phi = (u - 0.5) * 2.0 * pi;
-            const glm::vec3 d(float(std::cos(lat) * std::cos(phi)), float(std::sin(lat)),
-                              float(std::cos(lat) * std::sin(phi)));
-            const glm::vec3 c = f(d);
-            float* t = &image.rgba[4 * (std::size_t(j) * image.width + i)];
-            t[0] = c.r, t[1] = c.g, t[2] = c.b, t[3] = 1.0f;
-        }
-    return image;
-}
+using test::environment_of;
 
 std::vector<glm::vec3> directions() {
     std::vector<glm::vec3> out;
@@ -72,7 +54,8 @@ TEST(EnvironmentSh9, LinearRadianceGivesTwoThirdsOfItsGradient) {
         const glm::vec3 exact =
             a + (2.0f / 3.0f) * glm::vec3(glm::dot(bx, n), glm::dot(by, n), glm::dot(bz, n));
         const glm::vec3 e = gpu::evaluate_sh9(sh, n);
-        for (int k = 0; k < 3; ++k) EXPECT_NEAR(e[k], exact[k], 2e-3f) << n.x << " " << n.y << " " << n.z;
+        for (int k = 0; k < 3; ++k)
+            EXPECT_NEAR(e[k], exact[k], 2e-3f) << n.x << " " << n.y << " " << n.z;
     }
 }
 

@@ -129,16 +129,9 @@ TEST_F(EnvironmentTest, Sh9IrradianceKeepsTheFurnaceAndMakesNoCube) {
 // brighter where b.n < 0 (blue, whose gradient faces the camera: 2.9 steps).
 TEST_F(EnvironmentTest, Sh9AndCubeIrradianceAgreeOnALinearEnvironment) {
     EnvironmentGuard guard{renderer()};
-    gpu::EnvironmentImage linear = gpu::uniform_environment(glm::vec3(1.0f), 256);
-    for (std::uint32_t y = 0; y < linear.height; ++y)
-        for (std::uint32_t x = 0; x < linear.width; ++x) {
-            const float u = (x + 0.5f) / linear.width, v = 1.0f - (y + 0.5f) / linear.height;
-            const float ph = (u - 0.5f) * 2.0f * float(M_PI), th = (v - 0.5f) * float(M_PI);
-            const glm::vec3 d{std::cos(th) * std::cos(ph), std::sin(th),
-                              std::cos(th) * std::sin(ph)};
-            float* t = &linear.rgba[(std::size_t{y} * linear.width + x) * 4];
-            t[0] = 1.0f + 0.8f * d.x, t[1] = 1.0f + 0.6f * d.y, t[2] = 1.0f - 0.7f * d.z;
-        }
+    const gpu::EnvironmentImage linear = environment_of(256, [](glm::vec3 d) {
+        return glm::vec3(1.0f + 0.8f * d.x, 1.0f + 0.6f * d.y, 1.0f - 0.7f * d.z);
+    });
     auto scene = load(write_temp("rough.gltf", sphere_row_gltf(3, 0.0f)).string());
     renderer().load(*scene);
     gpu::RenderSettings s = furnace_view(3, 64);

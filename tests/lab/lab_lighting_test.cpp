@@ -17,9 +17,9 @@ namespace {
 using namespace sherpa;
 
 std::unique_ptr<Scene> sphere_row(float metallic) {
-    const auto path = test::write_temp(metallic > 0 ? "lab_lighting_metal.gltf"
-                                                    : "lab_lighting_dielectric.gltf",
-                                       test::sphere_row_gltf(3, metallic, 16));
+    const auto path =
+        test::write_temp(metallic > 0 ? "lab_lighting_metal.gltf" : "lab_lighting_dielectric.gltf",
+                         test::sphere_row_gltf(3, metallic, 16));
     LoadResult r = load_scene(path.string(), lab::lab_load_options());
     EXPECT_TRUE(r) << r.error;
     return r ? std::move(r.scene) : nullptr;
@@ -27,17 +27,9 @@ std::unique_ptr<Scene> sphere_row(float metallic) {
 
 // Radiance 1 + b.w: smooth, its irradiance known in closed form (environment_sh_test).
 gpu::EnvironmentImage linear_environment() {
-    gpu::EnvironmentImage e = gpu::uniform_environment(glm::vec3(1.0f), 128);
-    for (std::uint32_t y = 0; y < e.height; ++y)
-        for (std::uint32_t x = 0; x < e.width; ++x) {
-            const float u = (x + 0.5f) / e.width, v = 1.0f - (y + 0.5f) / e.height;
-            const float ph = (u - 0.5f) * 2.0f * float(M_PI), th = (v - 0.5f) * float(M_PI);
-            const glm::vec3 d{std::cos(th) * std::cos(ph), std::sin(th),
-                              std::cos(th) * std::sin(ph)};
-            float* t = &e.rgba[(std::size_t{y} * e.width + x) * 4];
-            t[0] = 1.0f + 0.5f * d.y, t[1] = 1.0f + 0.5f * d.x, t[2] = 1.0f - 0.5f * d.z;
-        }
-    return e;
+    return test::environment_of(128, [](glm::vec3 d) {
+        return glm::vec3(1.0f + 0.5f * d.y, 1.0f + 0.5f * d.x, 1.0f - 0.5f * d.z);
+    });
 }
 
 // 48x16 (three spheres), 64 reference samples, one size of prefilter, no shadow maps
@@ -55,12 +47,7 @@ lab::LightingFamilyOptions tiny(std::shared_ptr<const gpu::EnvironmentImage> env
     o.supersample = 2;
     o.validation = true;
     o.lighting.environment = std::move(environment);
-    gpu::RenderSettings& s = o.lighting.settings;
-    s.sun = false;
-    s.tone_map = gpu::ToneMap::Linear;
-    s.exposure = -1.0f;
-    s.background = gpu::Background::Color;
-    s.clear_color = glm::vec4(0, 0, 0, 1);
+    o.lighting.settings = test::furnace_view(3, 16); // only its lighting fields are read
     return o;
 }
 
@@ -100,8 +87,8 @@ void print(const lab::FamilyReport& r) {
 TEST(LabLighting, FurnaceMetalAndThePathTracersConvergence) {
     auto scene = sphere_row(1.0f);
     ASSERT_TRUE(scene);
-    auto uniform = std::make_shared<const gpu::EnvironmentImage>(
-        gpu::uniform_environment(glm::vec3(1.0f)));
+    auto uniform =
+        std::make_shared<const gpu::EnvironmentImage>(gpu::uniform_environment(glm::vec3(1.0f)));
     const lab::FamilyReport r = lab::make_lighting_family(tiny(uniform))->run(*scene, {});
     if (!ran_cleanly(r)) GTEST_SKIP() << r.methods.front().note;
     print(r);
@@ -116,8 +103,8 @@ TEST(LabLighting, FurnaceMetalAndThePathTracersConvergence) {
     const lab::MethodResult& on = method(r, "compensation on");
     const lab::MethodResult& off = method(r, "compensation off");
     ASSERT_TRUE(on.ran && off.ran) << on.note << off.note;
-X
-    // gap at roughness 1, docs/path_tracer.md), 61 on.
+    // Measured: 6.0 8-bit steps off (the split-sum's and the path tracer's 0.015 gap at
+    // roughness 1, docs/path_tracer.md), 61 on.
     EXPECT_LT(figure(off, "material_2_mean_diff"), 9.0);
     EXPECT_GT(figure(on, "material_2_mean_diff"), 3.0 * figure(off, "material_2_mean_diff"));
     EXPECT_LT(figure(off, "mean_diff"), figure(on, "mean_diff"));
@@ -171,12 +158,12 @@ TEST(LabLighting, Sh9AndCubeIrradianceAreBothNearThePathTracerOnASmoothEnvironme
 }
 
 TEST(LabLighting, TransmissionIsNearerThePathTracerThanWithoutIt) {
-    LoadResult loaded = load_scene(std::string(SHERPA_TEST_DATA_DIR) +
-                                       "/material_sweeps/transmission_sweep.gltf",
-                                   lab::lab_load_options());
+    LoadResult loaded =
+        load_scene(std::string(SHERPA_TEST_DATA_DIR) + "/material_sweeps/transmission_sweep.gltf",
+                   lab::lab_load_options());
     ASSERT_TRUE(loaded) << loaded.error;
-    lab::LightingFamilyOptions o = tiny(std::make_shared<const gpu::EnvironmentImage>(
-        gpu::room_environment(256)));
+    lab::LightingFamilyOptions o =
+        tiny(std::make_shared<const gpu::EnvironmentImage>(gpu::room_environment(256)));
     o.lighting.settings = gpu::RenderSettings{};
     o.width = 64;
     o.height = 48;

@@ -14,7 +14,7 @@
 #include <map>
 #include <optional>
 
-#include "lab_support.h"
+#include "lab_gpu.h"
 #include "lighting_images.h"
 #include "lighting_plan.h"
 
@@ -59,8 +59,9 @@ std::string not_applicable(LightingGroup g, const Scene& scene, const LightingFa
     case LightingGroup::Irradiance:
     case LightingGroup::Prefilter:
     case LightingGroup::Compensation:
-        return environment ? "" : "not applicable: no environment (the sky/ground ambient "
-                                  "term lights the scene; nothing to prefilter)";
+        return environment ? ""
+                           : "not applicable: no environment (the sky/ground ambient "
+                             "term lights the scene; nothing to prefilter)";
     case LightingGroup::Shadows:
         return has_shadowing_sun(scene, o.lighting.settings)
                    ? ""
@@ -70,7 +71,8 @@ std::string not_applicable(LightingGroup g, const Scene& scene, const LightingFa
         return has_transmission(scene) ? ""
                                        : "not applicable: no material has "
                                          "KHR_materials_transmission with a factor above 0";
-    case LightingGroup::PathTracer: return "";
+    case LightingGroup::PathTracer:
+        return "";
     }
     return "";
 }
@@ -83,10 +85,12 @@ Scene without_transmission(const Scene& scene) {
 
 // The figures of an image against the reference, per material after the whole image.
 void set_errors(MethodResult& r, const detail::ImageDifference& d) {
-    r.errors = {{"mean_diff", d.mean}, {"psnr_db", std::isfinite(d.psnr_db) ? d.psnr_db : 999.0, true}};
+    r.errors = {{"mean_diff", d.mean},
+                {"psnr_db", std::isfinite(d.psnr_db) ? d.psnr_db : 999.0, true}};
     for (std::size_t m = 0; m < d.material_pixels.size(); ++m)
         if (d.material_pixels[m] > 0)
-            r.errors.push_back({"material_" + std::to_string(m) + "_mean_diff", d.material_mean[m]});
+            r.errors.push_back(
+                {"material_" + std::to_string(m) + "_mean_diff", d.material_mean[m]});
 }
 
 class LightingFamily final : public Family {
@@ -129,9 +133,8 @@ private:
         return s;
     }
 
-    Frame draw(gpu::Context& context, Raster& raster, const Scene& scene,
-               const Scene& stripped, const LightingSetup& setup,
-               const gpu::RenderSettings& view) const;
+    Frame draw(gpu::Context& context, Raster& raster, const Scene& scene, const Scene& stripped,
+               const LightingSetup& setup, const gpu::RenderSettings& view) const;
     void reference(gpu::Context& context, const Scene& scene, const gpu::RenderSettings& view,
                    const std::vector<std::int32_t>& ids, FamilyReport& report,
                    const std::vector<LightingMethod>& plan, detail::Progress& progress,
@@ -198,8 +201,8 @@ LightingFamily::Frame LightingFamily::draw(gpu::Context& context, Raster& raster
 void LightingFamily::reference(gpu::Context& context, const Scene& scene,
                                const gpu::RenderSettings& view,
                                const std::vector<std::int32_t>& ids, FamilyReport& report,
-                               const std::vector<LightingMethod>& plan,
-                               detail::Progress& progress, std::vector<std::uint8_t>& rgba) const {
+                               const std::vector<LightingMethod>& plan, detail::Progress& progress,
+                               std::vector<std::uint8_t>& rgba) const {
     gpu::RendererOptions ro;
     ro.ray_tracing = true;
     gpu::Renderer renderer(context, ro);
@@ -228,11 +231,10 @@ void LightingFamily::reference(gpu::Context& context, const Scene& scene,
                        std::to_string(options_.max_bounces) + " bounces, " +
                        std::to_string(options_.width) + "x" + std::to_string(options_.height) +
                        ", the framed camera";
-    report.notes.push_back("reference: " + std::to_string(spp) + " spp in " +
-                           fixed(ref.back().gpu_ms, 0) + " GPU ms (" +
-                           fixed(ref.back().gpu_ms / spp, 1) +
-                           " ms per sample); its estimated error: " +
-                           fixed(100.0 * e.relative_error, 2) + "% of the mean luminance");
+    report.notes.push_back(
+        "reference: " + std::to_string(spp) + " spp in " + fixed(ref.back().gpu_ms, 0) +
+        " GPU ms (" + fixed(ref.back().gpu_ms / spp, 1) + " ms per sample); its estimated error: " +
+        fixed(100.0 * e.relative_error, 2) + "% of the mean luminance");
     for (std::size_t i = 0, k = 0; i < plan.size(); ++i) {
         if (plan[i].setup.group != LightingGroup::PathTracer) continue;
         const detail::PathImage& p = series[k++];
@@ -279,7 +281,8 @@ FamilyReport LightingFamily::run(const Scene& scene, const RunControl& control) 
     const std::uint32_t spp = std::max(options_.reference_spp, 1u);
     const std::vector<std::uint32_t> checkpoints = lighting_convergence_spp(options_);
     const std::size_t launches =
-        (spp + 15) / 16 + (checkpoints.empty() ? 0 : (checkpoints.back() + 15) / 16 + checkpoints.size());
+        (spp + 15) / 16 +
+        (checkpoints.empty() ? 0 : (checkpoints.back() + 15) / 16 + checkpoints.size());
     detail::Progress progress(control, launches + plan.size());
     if (progress.stop()) return detail::cancelled_report(report.family);
 
@@ -297,17 +300,9 @@ FamilyReport LightingFamily::run(const Scene& scene, const RunControl& control) 
                            "|raster - reference| in 8-bit display steps over the RGB of every "
                            "pixel");
     try {
-        gpu::ContextOptions co;
-        co.validation = options_.validation;
-        co.ray_tracing = options_.ray_tracing;
-        gpu::Context context(co);
-        if (!context.info().ray_tracing_enabled) {
-            for (MethodResult& r : report.methods)
-                r.note = "not run: device '" + context.info().name +
-                         "' does not ray trace: no path-traced reference";
-            progress.finish();
+        gpu::Context context(detail::family_context(options_.validation, options_.ray_tracing));
+        if (!detail::ray_traces(context, report, progress, "no path-traced reference"))
             return report;
-        }
         const std::vector<std::int32_t> ids =
             detail::material_id_image(scene, camera, options_.width, options_.height);
         std::vector<std::uint8_t> truth;
@@ -370,7 +365,8 @@ FamilyReport LightingFamily::run(const Scene& scene, const RunControl& control) 
         }
     } catch (const std::exception& e) {
         for (MethodResult& r : report.methods)
-            if (!r.ran && r.note.empty()) r.note = std::string("not run: no Vulkan device: ") + e.what();
+            if (!r.ran && r.note.empty())
+                r.note = std::string("not run: no Vulkan device: ") + e.what();
     }
     progress.finish();
     return report;

@@ -2,6 +2,8 @@
 // one primary ray per pixel centre) and its image differences.
 #include "lighting_images.h"
 
+#include <sherpa/texture/mips.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -189,27 +191,22 @@ std::vector<std::uint8_t> downsample_srgb(const std::vector<std::uint8_t>& rgba,
     std::vector<std::uint8_t> out(std::size_t(width) * height * 4, 0);
     if (rgba.size() < big_w * height * factor * 4) return out;
     std::array<float, 256> linear;
-    for (int i = 0; i < 256; ++i) {
-        const float c = float(i) / 255.0f;
-        linear[std::size_t(i)] = c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-    }
+    for (int i = 0; i < 256; ++i) linear[std::size_t(i)] = tex::srgb_to_linear(float(i) / 255.0f);
     const float n = float(factor * factor);
     for (std::uint32_t y = 0; y < height; ++y)
         for (std::uint32_t x = 0; x < width; ++x) {
             float sum[4] = {};
             for (std::uint32_t dy = 0; dy < factor; ++dy)
                 for (std::uint32_t dx = 0; dx < factor; ++dx) {
-                    const std::uint8_t* p =
-                        &rgba[4 * ((std::size_t(y) * factor + dy) * big_w + std::size_t(x) * factor + dx)];
+                    const std::uint8_t* p = &rgba[4 * ((std::size_t(y) * factor + dy) * big_w +
+                                                       std::size_t(x) * factor + dx)];
                     for (int c = 0; c < 3; ++c) sum[c] += linear[p[c]];
                     sum[3] += float(p[3]);
                 }
             std::uint8_t* o = &out[4 * (std::size_t(y) * width + x)];
-            for (int c = 0; c < 3; ++c) {
-                const float v = sum[c] / n;
-                const float e = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-                o[c] = std::uint8_t(std::lround(std::clamp(e, 0.0f, 1.0f) * 255.0f));
-            }
+            for (int c = 0; c < 3; ++c)
+                o[c] = std::uint8_t(
+                    std::lround(std::clamp(tex::linear_to_srgb(sum[c] / n), 0.0f, 1.0f) * 255.0f));
             o[3] = std::uint8_t(std::lround(sum[3] / n));
         }
     return out;

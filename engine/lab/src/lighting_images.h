@@ -25,8 +25,8 @@ std::vector<std::uint8_t> downsample_srgb(const std::vector<std::uint8_t>& rgba,
                                           std::uint32_t factor);
 
 struct ImageDifference {
-    double mean = 0.0;     // mean |a - b| over every pixel and RGB channel, 8-bit steps
-    double psnr_db = 0.0;  // 10 log10(255^2 / MSE); infinite where the images are equal
+    double mean = 0.0;    // mean |a - b| over every pixel and RGB channel, 8-bit steps
+    double psnr_db = 0.0; // 10 log10(255^2 / MSE); infinite where the images are equal
     std::uint64_t pixels = 0;
     // Per material (index into Scene::materials): mean |a - b| over its pixels, and
     // how many pixels it covers (0: not seen, mean 0).

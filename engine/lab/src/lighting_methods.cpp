@@ -9,11 +9,10 @@ namespace detail {
 std::string LightingSetup::key() const {
     return std::to_string(int(environment.irradiance)) + "/" +
            std::to_string(environment.specular_size) + "/" +
-           std::to_string(environment.specular_samples) + "/" +
-           std::to_string(shadow_resolution) + "/" + std::to_string(shadows) + "/" +
-           std::to_string(cascades) + "/" + std::to_string(taps) + "/" +
-           std::to_string(compensation) + "/" + std::to_string(transmission) + "/" +
-           std::to_string(spp);
+           std::to_string(environment.specular_samples) + "/" + std::to_string(shadow_resolution) +
+           "/" + std::to_string(shadows) + "/" + std::to_string(cascades) + "/" +
+           std::to_string(taps) + "/" + std::to_string(compensation) + "/" +
+           std::to_string(transmission) + "/" + std::to_string(spp);
 }
 
 std::vector<LightingMethod> lighting_methods(const LightingFamilyOptions& options) {
@@ -21,8 +20,8 @@ std::vector<LightingMethod> lighting_methods(const LightingFamilyOptions& option
     auto add = [&](LightingGroup g, const char* group, std::string name, std::string parameters,
                    std::string description, LightingSetup setup) {
         setup.group = g;
-        out.push_back({{std::move(name), std::move(parameters), std::move(description), group},
-                       setup});
+        out.push_back(
+            {{std::move(name), std::move(parameters), std::move(description), group}, setup});
     };
     LightingSetup setup;
     add(LightingGroup::Irradiance, "irradiance", "irradiance cube", "32x32 faces, 48 samples",

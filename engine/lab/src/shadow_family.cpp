@@ -13,7 +13,7 @@
 #include <cmath>
 #include <exception>
 
-#include "lab_support.h"
+#include "lab_gpu.h"
 
 namespace sherpa::lab {
 namespace {
@@ -114,17 +114,9 @@ public:
         detail::Progress progress(control, report.methods.size() * cameras.size());
         if (progress.stop()) return detail::cancelled_report(report.family);
         try {
-            gpu::ContextOptions co;
-            co.validation = options_.validation;
-            co.ray_tracing = options_.ray_tracing;
-            gpu::Context context(co);
-            if (!context.info().ray_tracing_enabled) {
-                for (MethodResult& r : report.methods)
-                    r.note = "device '" + context.info().name +
-                             "' does not ray trace: no reference to measure against";
-                progress.finish();
+            gpu::Context context(detail::family_context(options_.validation, options_.ray_tracing));
+            if (!detail::ray_traces(context, report, progress, "no reference to measure against"))
                 return report;
-            }
             std::size_t index = 0;
             for (std::uint32_t res : options_.resolutions) {
                 const std::size_t first = index;

@@ -136,7 +136,8 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
     lut_desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
     lut_desc.name = "environment brdf lut";
     lut_ = images.create(lut_desc);
-    stats_.bytes = bytes_of(cube, specular_levels, 6) + (sh9 ? 0 : bytes_of(kIrradianceSize, 1, 6)) +
+    stats_.bytes = bytes_of(cube, specular_levels, 6) +
+                   (sh9 ? 0 : bytes_of(kIrradianceSize, 1, 6)) +
                    bytes_of(kSheenSize, sheen_levels, 6) + bytes_of(kLutSize, 1, 1);
 
     auto si = vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);

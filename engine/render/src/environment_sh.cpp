@@ -55,8 +55,8 @@ Sh9 project_sh9(const EnvironmentImage& image) {
 
 Sh9 irradiance_sh9(const Sh9& radiance) {
     // A_l / pi: 1, 2/3, 1/4.
-    constexpr float band[9] = {1.0f,         2.0f / 3.0f, 2.0f / 3.0f, 2.0f / 3.0f, 0.25f,
-                               0.25f,        0.25f,       0.25f,       0.25f};
+    constexpr float band[9] = {1.0f,  2.0f / 3.0f, 2.0f / 3.0f, 2.0f / 3.0f, 0.25f,
+                               0.25f, 0.25f,       0.25f,       0.25f};
     Sh9 out{};
     for (int k = 0; k < 9; ++k) out[k] = radiance[k] * band[k];
     return out;

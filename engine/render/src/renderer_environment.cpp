@@ -9,7 +9,8 @@ void Renderer::Impl::set_environment(const EnvironmentImage* image,
     // Frames in flight may read the old maps: wait for them before they go.
     for (auto& slot : slots_) wait_slot(*slot);
     environment.reset();
-    if (image) environment = std::make_unique<EnvironmentMap>(context, *resources, *image, env_options);
+    if (image)
+        environment = std::make_unique<EnvironmentMap>(context, *resources, *image, env_options);
     // The path tracer's sampling distribution, made while the image is at hand.
     environment_distribution_.reset();
     if (image && options.ray_tracing)

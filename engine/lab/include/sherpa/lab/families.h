@@ -90,8 +90,8 @@ struct ShadowFamilyOptions {
     std::uint32_t width = 160, height = 120;
     std::uint32_t frames = 3;
     std::uint32_t supersample = 4; // the compared raster image's samples per pixel side
-    bool ray_tracing = true; // false: as on a device without it (tests)
-    bool validation = false; // Khronos validation on the family's device (tests)
+    bool ray_tracing = true;       // false: as on a device without it (tests)
+    bool validation = false;       // Khronos validation on the family's device (tests)
     // The lit frames' environment and display settings (the main view's): none by default.
     gpu::Lighting lighting;
 };
@@ -129,8 +129,8 @@ struct LightingFamilyOptions {
     std::vector<LightingShadowSetting> shadows{{1024, 1, 1}, {2048, 3, 4}, {4096, 3, 16}};
     std::uint32_t frames = 3;
     std::uint32_t supersample = 4; // the compared raster image's samples per pixel side
-    bool ray_tracing = true; // false: as on a device without it (tests)
-    bool validation = false; // Khronos validation on the family's device (tests)
+    bool ray_tracing = true;       // false: as on a device without it (tests)
+    bool validation = false;       // Khronos validation on the family's device (tests)
     // The environment and display settings (the main view's): none by default.
     gpu::Lighting lighting;
 };

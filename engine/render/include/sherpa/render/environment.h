@@ -112,9 +112,9 @@ struct EnvironmentStats {
     std::uint32_t cube_size = 0, specular_levels = 0, irradiance_size = 0, sheen_size = 0,
                   sheen_levels = 0, lut_size = 0;
     IrradianceMode irradiance = IrradianceMode::Cube; // Sh9: irradiance_size is 0
-    std::uint64_t bytes = 0;   // kept on the GPU (cubes and lookup tables)
-    double prefilter_ms = 0.0; // upload and every compute pass, wall clock
-    double gpu_ms = 0.0;       // the compute passes by GPU timestamps
+    std::uint64_t bytes = 0;                          // kept on the GPU (cubes and lookup tables)
+    double prefilter_ms = 0.0;                        // upload and every compute pass, wall clock
+    double gpu_ms = 0.0;                              // the compute passes by GPU timestamps
     // GPU ms of: the radiance cube (and its levels), GGX specular, Lambert irradiance,
     // Charlie sheen, the lookup table.
     double pass_ms[5] = {};

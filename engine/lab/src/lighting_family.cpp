@@ -13,6 +13,7 @@
 #include <exception>
 #include <map>
 #include <optional>
+#include <tuple>
 
 #include "lab_gpu.h"
 #include "lighting_images.h"
@@ -29,12 +30,6 @@ std::string fixed(double v, int digits) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.*f", digits, v);
     return buf;
-}
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
 }
 
 bool has_transmission(const Scene& scene) {
@@ -149,11 +144,7 @@ LightingFamily::Frame LightingFamily::draw(gpu::Context& context, Raster& raster
                                            const gpu::RenderSettings& view) const {
     Frame f;
     const std::size_t seen = context.validation().count();
-    const std::string env_key = setup.environment.irradiance == gpu::IrradianceMode::Sh9
-                                    ? "sh9/" + std::to_string(setup.environment.specular_size) +
-                                          "/" + std::to_string(setup.environment.specular_samples)
-                                    : "cube/" + std::to_string(setup.environment.specular_size) +
-                                          "/" + std::to_string(setup.environment.specular_samples);
+    const std::string env_key = setup.environment_key();
     if (!raster.renderer || raster.shadow_resolution != setup.shadow_resolution) {
         gpu::RendererOptions ro;
         ro.shadow_resolution = setup.shadow_resolution;
@@ -183,7 +174,7 @@ LightingFamily::Frame LightingFamily::draw(gpu::Context& context, Raster& raster
     for (std::uint32_t i = 0; i < std::max(options_.frames, 1u); ++i)
         ms.push_back(r.render(s, nullptr).gpu_ms);
     f.timed = context.info().timestamps;
-    f.ms = median(ms);
+    f.ms = detail::median(ms);
     // The compared image: supersampled, filtered down as the path tracer's box filter.
     const std::uint32_t k = std::max(options_.supersample, 1u);
     gpu::RenderSettings big = s;
@@ -280,9 +271,14 @@ FamilyReport LightingFamily::run(const Scene& scene, const RunControl& control) 
     }
     const std::uint32_t spp = std::max(options_.reference_spp, 1u);
     const std::vector<std::uint32_t> checkpoints = lighting_convergence_spp(options_);
+    // Launches of the path tracer (progress steps): at most kPathLaunch samples each, and
+    // one more at each checkpoint that does not fall on a launch's end.
+    const auto launches_to = [](std::uint32_t n) {
+        return (n + detail::kPathLaunch - 1) / detail::kPathLaunch;
+    };
     const std::size_t launches =
-        (spp + 15) / 16 +
-        (checkpoints.empty() ? 0 : (checkpoints.back() + 15) / 16 + checkpoints.size());
+        launches_to(spp) +
+        (checkpoints.empty() ? 0 : launches_to(checkpoints.back()) + checkpoints.size());
     detail::Progress progress(control, launches + plan.size());
     if (progress.stop()) return detail::cancelled_report(report.family);
 
@@ -318,11 +314,14 @@ FamilyReport LightingFamily::run(const Scene& scene, const RunControl& control) 
         const Scene stripped = has_transmission(scene) ? without_transmission(scene) : Scene{};
         Raster raster;
         std::map<std::string, std::size_t> drawn; // setup key -> method measured with it
-        // Setups of one shadow resolution together: each resolution is one renderer.
+        // Setups of one shadow resolution together (each resolution is one renderer), and
+        // within it of one environment (each is one prefilter) and one scene (one upload).
         std::vector<std::size_t> order(plan.size());
         for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
         std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-            return plan[a].setup.shadow_resolution < plan[b].setup.shadow_resolution;
+            const LightingSetup &x = plan[a].setup, &y = plan[b].setup;
+            return std::tuple(x.shadow_resolution, x.environment_key(), !x.transmission) <
+                   std::tuple(y.shadow_resolution, y.environment_key(), !y.transmission);
         });
         for (std::size_t i : order) {
             if (progress.stop()) return detail::cancelled_report(report.family);

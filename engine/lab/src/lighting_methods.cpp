@@ -6,13 +6,17 @@
 namespace sherpa::lab {
 namespace detail {
 
-std::string LightingSetup::key() const {
-    return std::to_string(int(environment.irradiance)) + "/" +
+std::string LightingSetup::environment_key() const {
+    return std::string(gpu::to_string(environment.irradiance)) + "/" +
            std::to_string(environment.specular_size) + "/" +
-           std::to_string(environment.specular_samples) + "/" + std::to_string(shadow_resolution) +
-           "/" + std::to_string(shadows) + "/" + std::to_string(cascades) + "/" +
-           std::to_string(taps) + "/" + std::to_string(compensation) + "/" +
-           std::to_string(transmission) + "/" + std::to_string(spp);
+           std::to_string(environment.specular_samples);
+}
+
+std::string LightingSetup::key() const {
+    return environment_key() + "/" + std::to_string(shadow_resolution) + "/" +
+           std::to_string(shadows) + "/" + std::to_string(cascades) + "/" + std::to_string(taps) +
+           "/" + std::to_string(compensation) + "/" + std::to_string(transmission) + "/" +
+           std::to_string(spp);
 }
 
 std::vector<LightingMethod> lighting_methods(const LightingFamilyOptions& options) {
@@ -95,8 +99,6 @@ std::vector<LightingMethod> lighting_methods(const LightingFamilyOptions& option
 std::vector<PathImage> path_trace_series(gpu::Renderer& renderer, gpu::RenderSettings base,
                                          std::uint32_t seed, const std::vector<std::uint32_t>& spp,
                                          const std::function<bool()>& step) {
-    // Launches of at most this many samples, so that progress and cancel are polled.
-    constexpr std::uint32_t kLaunch = 16;
     std::vector<PathImage> out;
     base.renderer = gpu::RendererKind::RayTraced;
     base.view = gpu::DebugView::Lit;
@@ -107,7 +109,7 @@ std::vector<PathImage> path_trace_series(gpu::Renderer& renderer, gpu::RenderSet
     for (std::uint32_t target : spp) {
         while (done < target) {
             gpu::RenderSettings s = base;
-            s.path.samples = std::min(kLaunch, target - done);
+            s.path.samples = std::min(kPathLaunch, target - done);
             s.path.restart = first;
             first = false;
             const bool last = done + s.path.samples == target;

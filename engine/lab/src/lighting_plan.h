@@ -26,6 +26,8 @@ struct LightingSetup {
     std::uint32_t spp = 0;    // the path tracer's samples (group PathTracer)
     // Everything that changes the raster frame: equal keys draw the same frame.
     std::string key() const;
+    // What the environment is made with: equal keys share one EnvironmentMap.
+    std::string environment_key() const;
 };
 
 struct LightingMethod {
@@ -44,8 +46,10 @@ struct PathImage {
 };
 
 // Accumulates with `base` (a path-traced lit frame) and `seed` up to each of `spp`
-// (ascending), reading the image at each; `step` is called after every launch and
-// returns false to cancel (the images so far are returned).
+// (ascending), reading the image at each; `step` is called after every launch (at most
+// kPathLaunch samples: about a second of lavapipe for DamagedHelmet at 160x120, so that
+// a cancel is seen soon) and returns false to cancel (the images so far are returned).
+inline constexpr std::uint32_t kPathLaunch = 4;
 std::vector<PathImage> path_trace_series(gpu::Renderer& renderer, gpu::RenderSettings base,
                                          std::uint32_t seed, const std::vector<std::uint32_t>& spp,
                                          const std::function<bool()>& step);

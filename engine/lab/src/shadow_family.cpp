@@ -47,12 +47,6 @@ std::vector<CameraSpec> orbit(const Aabb& bounds, std::uint32_t count, float asp
     return out;
 }
 
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-
 struct Tally {
     gpu::ShadowErrorCounts n;
     double ms = 0.0, total_ms = 0.0;
@@ -183,7 +177,7 @@ private:
         for (std::uint32_t f = 0; f < std::max(options_.frames, 1u); ++f)
             ms.push_back(renderer.render(s, nullptr).gpu_ms);
         if (context.info().timestamps) {
-            tally.ms += median(ms);
+            tally.ms += detail::median(ms);
             ++tally.timed;
         }
         s.renderer = gpu::RendererKind::RayTraced;

@@ -240,4 +240,24 @@ TEST(LabLighting, CancelledBeforeItStartsReturnsNoMethods) {
     EXPECT_TRUE(r.methods.empty());
 }
 
+// A cancel during the reference stops it at the next launch of the path tracer.
+TEST(LabLighting, CancelDuringTheReferenceStopsAtTheNextLaunch) {
+    auto scene = sphere_row(1.0f);
+    ASSERT_TRUE(scene);
+    lab::LightingFamilyOptions o = tiny(nullptr);
+    o.reference_spp = 256; // 64 launches: far more than the few it may take to stop
+    CancelToken cancel;
+    std::size_t calls_after_cancel = 0;
+    lab::RunControl control;
+    control.cancel = &cancel;
+    control.progress = [&](std::size_t done, std::size_t) {
+        if (cancel.cancelled()) ++calls_after_cancel;
+        if (done >= 2) cancel.cancel();
+    };
+    const lab::FamilyReport r = lab::make_lighting_family(o)->run(*scene, control);
+    EXPECT_TRUE(r.cancelled);
+    EXPECT_TRUE(r.methods.empty());
+    EXPECT_LE(calls_after_cancel, 1u);
+}
+
 } // namespace

@@ -244,16 +244,25 @@ void LightingFamily::reference(gpu::Context& context, const Scene& scene,
     }
     // Two independent images at n and N samples differ by sqrt(1/n + 1/N) of one
     // sample's noise: the last checkpoint's difference scaled to the reference's own.
+    // The materials seen, with their pixels and (given a convergence image) their floor.
+    detail::ImageDifference d = detail::image_difference(rgba, rgba, ids, scene.materials.size());
+    double scale = 0.0;
     if (!series.empty()) {
         const detail::PathImage& last = series.back();
-        const double d = detail::image_difference(last.rgba, rgba, ids, 0).mean;
-        const double floor = d * std::sqrt((1.0 / spp) / (1.0 / last.spp + 1.0 / spp));
+        d = detail::image_difference(last.rgba, rgba, ids, scene.materials.size());
+        scale = std::sqrt((1.0 / spp) / (1.0 / last.spp + 1.0 / spp));
         report.notes.push_back(
-            "noise floor: the reference is about " + fixed(floor, 2) +
+            "noise floor: the reference is about " + fixed(d.mean * scale, 2) +
             " 8-bit steps (mean_diff) from its own converged image (the " +
-            std::to_string(last.spp) + " spp image's " + fixed(d, 2) +
+            std::to_string(last.spp) + " spp image's " + fixed(d.mean, 2) +
             " scaled by sqrt(1/N / (1/n + 1/N))): differences below it are noise");
     }
+    for (std::size_t m = 0; m < d.material_pixels.size(); ++m)
+        if (d.material_pixels[m] > 0)
+            report.notes.push_back(
+                "material_" + std::to_string(m) + ": '" + scene.materials[m].name + "', " +
+                std::to_string(d.material_pixels[m]) + " pixels" +
+                (series.empty() ? "" : ", noise floor " + fixed(d.material_mean[m] * scale, 2)));
 }
 
 FamilyReport LightingFamily::run(const Scene& scene, const RunControl& control) const {
@@ -304,13 +313,6 @@ FamilyReport LightingFamily::run(const Scene& scene, const RunControl& control) 
         std::vector<std::uint8_t> truth;
         reference(context, scene, view, ids, report, plan, progress, truth);
         if (progress.stop()) return detail::cancelled_report(report.family);
-        for (std::size_t m = 0; m < scene.materials.size(); ++m) {
-            const auto n = std::count(ids.begin(), ids.end(), std::int32_t(m));
-            if (n > 0)
-                report.notes.push_back("material_" + std::to_string(m) + ": '" +
-                                       scene.materials[m].name + "', " + std::to_string(n) +
-                                       " pixels");
-        }
         const Scene stripped = has_transmission(scene) ? without_transmission(scene) : Scene{};
         Raster raster;
         std::map<std::string, std::size_t> drawn; // setup key -> method measured with it

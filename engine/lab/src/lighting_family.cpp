@@ -271,7 +271,12 @@ FamilyReport LightingFamily::run(const Scene& scene, const RunControl& control) 
     report.reference = "the path tracer's converged image (render --renderer rt --view lit)";
     report.time_unit = "ms/frame";
     report.chart_error = "mean_diff";
-    const std::vector<LightingMethod> plan = detail::lighting_methods(options_);
+    std::vector<LightingMethod> plan = detail::lighting_methods(options_);
+    // The view's compensation made explicit, so that "compensation on" (or off) is
+    // known to draw the same frame as the other groups' default.
+    for (LightingMethod& m : plan)
+        if (m.setup.compensation < 0)
+            m.setup.compensation = options_.lighting.settings.energy_compensation ? 1 : 0;
     for (const LightingMethod& m : plan) {
         MethodResult r;
         r.method = m.info;

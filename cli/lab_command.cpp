@@ -6,12 +6,14 @@
 #include "variant_options.h"
 
 #include <sherpa/core/file_io.h>
+#include <sherpa/gpu/context.h>
 #include <sherpa/lab/families.h>
 #include <sherpa/lab/report_export.h>
 #include <sherpa/scene/scene_loader.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <map>
 
@@ -26,6 +28,9 @@ struct Options {
     bool json = false, csv = false, gpu = true;
     int repeat = 0; // 0: the family's default
     long long sample_texels = -1, cameras = -1;
+    // The lighting family: image size, the reference's samples and bounces (0: default).
+    std::uint32_t width = 0, height = 0, reference_spp = 0, max_bounces = 0;
+    bool max_bounces_given = false;
     // The lit frames' environment and display settings (the shadows family), parsed by
     // the options render takes: the room unless --environment says otherwise.
     gpu::EnvironmentChoice environment;
@@ -67,6 +72,18 @@ std::unique_ptr<lab::Family> make(const Options& o) {
         if (o.cameras > 0) sh.cameras = std::uint32_t(std::min(o.cameras, 64LL));
         sh.lighting = {make_environment_image(o.environment), o.lighting};
         return lab::make_shadow_family(sh);
+    }
+    if (o.family == "lighting") {
+        lab::LightingFamilyOptions l;
+        if (o.repeat > 0) l.frames = std::uint32_t(o.repeat);
+        if (o.width > 0) l.width = o.width;
+        if (o.height > 0) l.height = o.height;
+        if (o.reference_spp > 0) l.reference_spp = o.reference_spp;
+        if (o.max_bounces_given) l.max_bounces = o.max_bounces;
+        // SHERPA_VALIDATION=1: every validation message is a failure of its method.
+        l.validation = gpu::ContextOptions::default_validation();
+        l.lighting = {make_environment_image(o.environment), o.lighting};
+        return lab::make_lighting_family(l);
     }
     return nullptr;
 }
@@ -154,7 +171,26 @@ int run_lab(Args args) {
             o.sample_texels = std::max(0LL, std::atoll(std::string(args[++i]).c_str()));
         else if (a == "--cameras" && has_value)
             o.cameras = std::max(1LL, std::atoll(std::string(args[++i]).c_str()));
-        else if (a == "--json")
+        else if ((a == "--width" || a == "--height" || a == "--reference-spp" ||
+                  a == "--max-bounces") &&
+                 has_value) {
+            const std::string v(args[++i]);
+            char* end = nullptr;
+            const long long n = std::strtoll(v.c_str(), &end, 10);
+            const long long low = a == "--max-bounces" ? 0 : 1;
+            const long long high = a == "--reference-spp" ? 65536
+                                   : a == "--max-bounces" ? 64
+                                                          : 4096;
+            if (v.empty() || *end != '\0' || n < low || n > high)
+                return usage_error(std::string(a) + " needs a whole number from " +
+                                   std::to_string(low) + " to " + std::to_string(high) + ", not '" +
+                                   v + "'");
+            (a == "--width"           ? o.width
+             : a == "--height"        ? o.height
+             : a == "--reference-spp" ? o.reference_spp
+                                      : o.max_bounces) = std::uint32_t(n);
+            if (a == "--max-bounces") o.max_bounces_given = true;
+        } else if (a == "--json")
             o.json = true;
         else if (a == "--csv")
             o.csv = true;

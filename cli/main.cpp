@@ -68,12 +68,16 @@ constexpr Command kCommands[] = {
     {"lab", run_lab,
      "sherpa-cli lab SCENE --family {families} [--json|--csv]\n"
      "    [--chart OUT.svg] [--repeat N] [--sample-texels N] [--cameras N] [--no-gpu]\n"
-     "    [--variant NAME]\n"
+     "    [--variant NAME] [--width N] [--height N] [--reference-spp N] [--max-bounces N]\n"
      "    {environment-options}\n"
      "\n"
      "Every method of one family measured on the scene: time against error.\n"
      "  shadows: --cameras N around the scene, --repeat N timed frames (median), lit\n"
-     "           as render lights its frame (the environment options)\n"},
+     "           as render lights its frame (the environment options)\n"
+     "  lighting: the raster's lighting against the path tracer at --reference-spp N\n"
+     "           (default 256) and --max-bounces N (default 8), --width N x --height N\n"
+     "           (default 160x120), --repeat N timed frames (median), lit as render\n"
+     "           lights its frame\n"},
     {"compare", run_compare,
      "sherpa-cli compare A B [--json] [--image OUT.png]\n"
      "    {environment-options}\n"

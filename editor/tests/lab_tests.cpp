@@ -5,6 +5,7 @@
 // a culling method to the viewport.
 #include <QChart>
 #include <QChartView>
+#include <QComboBox>
 #include <QGraphicsTextItem>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -77,6 +78,7 @@ private Q_SLOTS:
     void clickingAPointAppliesACullingMethod();
     void applyingAShadowSettingReachesTheViewport();
     void chartLabelsNeverOverlap();
+    void lightingFamilyIsListedAndRuns();
 
 private:
     LabDock& dock() { return *window_->labDock(); }
@@ -392,6 +394,36 @@ void LabTests::chartLabelsNeverOverlap() {
             QVERIFY(!boxes[i] || !boxes[j] || !boxes[i]->intersects(*boxes[j]));
     QVERIFY(std::count_if(boxes.begin(), boxes.end(),
                           [](const auto& b) { return b.has_value(); }) >= 8);
+}
+
+// The lighting family comes from the engine's one list into the dock's family box and
+// runs there like the others: a table row per method, a chart point per method that
+// ran, the groups Box cannot show (no transmission) not run, saying why.
+void LabTests::lightingFamilyIsListedAndRuns() {
+    auto* box = dock().findChild<QComboBox*>();
+    QVERIFY(box);
+    QVERIFY(box->findData(QStringLiteral("lighting")) >= 0);
+    QVERIFY(test::load(*window_, test::asset(QStringLiteral("Box"))));
+    const lab::FamilyReport* report = run_family(dock(), QStringLiteral("lighting"));
+    QVERIFY(report);
+    QCOMPARE(QString::fromStdString(report->family), QStringLiteral("lighting"));
+    QCOMPARE(dock().methodsModel().rowCount(), int(report->methods.size()));
+    int ran = 0;
+    for (const lab::MethodResult& r : report->methods) {
+        if (r.method.group == "transmission") {
+            QVERIFY(!r.ran);
+            QVERIFY2(r.note.find("not applicable") != std::string::npos, r.note.c_str());
+        }
+        ran += r.ran && r.error(report->chart_error);
+    }
+    if (report->methods.back().note.find("does not ray trace") != std::string::npos)
+        QSKIP("the editor's device does not ray trace");
+    QVERIFY(report->methods.back().ran); // the path tracer's own convergence
+    QVERIFY(report->reference.find("256 spp") != std::string::npos);
+    int plotted = 0;
+    for (QAbstractSeries* s : dock().chart()->series())
+        plotted += qobject_cast<QScatterSeries*>(s) != nullptr;
+    QCOMPARE(plotted, ran);
 }
 
 QTEST_MAIN(LabTests)

@@ -41,5 +41,8 @@ layout(set = 1, binding = SHERPA_FRAME_BINDING, std140) uniform FrameBlock {
     // x exposure scale 2^EV, y tone map (TONE_MAP_*), z 1 = energy compensation on,
     // w the background's specular level (< 0: a solid colour, no background pass).
     vec4 display;
+    // Irradiance / pi as 9 SH coefficients (rgb), read instead of the irradiance cube
+    // where irradiance_sh[0].w is 1 (ibl.glsl's ibl_irradiance).
+    vec4 irradiance_sh[9];
 } frame;
 #endif

@@ -26,9 +26,27 @@ vec3 ibl_specular(vec3 dir, float roughness) {
     return textureLod(ibl_specular_cube, env_direction(dir), lod).rgb * frame.environment.x;
 }
 
-// Cosine-weighted mean radiance about n (irradiance / pi).
+// Irradiance / pi from 9 SH coefficients (environment_sh.h's basis and order) at the
+// environment's own direction d.
+vec3 sh9_irradiance(vec3 d) {
+    vec3 e = frame.irradiance_sh[0].rgb * 0.282095;
+    e += frame.irradiance_sh[1].rgb * (0.488603 * d.y);
+    e += frame.irradiance_sh[2].rgb * (0.488603 * d.z);
+    e += frame.irradiance_sh[3].rgb * (0.488603 * d.x);
+    e += frame.irradiance_sh[4].rgb * (1.092548 * d.x * d.y);
+    e += frame.irradiance_sh[5].rgb * (1.092548 * d.y * d.z);
+    e += frame.irradiance_sh[6].rgb * (0.315392 * (3.0 * d.z * d.z - 1.0));
+    e += frame.irradiance_sh[7].rgb * (1.092548 * d.x * d.z);
+    e += frame.irradiance_sh[8].rgb * (0.546274 * (d.x * d.x - d.y * d.y));
+    return max(e, vec3(0.0)); // ringing below zero is no light
+}
+
+// Cosine-weighted mean radiance about n (irradiance / pi): the irradiance cube, or the
+// SH9 coefficients where the environment was made with them (IrradianceMode::Sh9).
 vec3 ibl_irradiance(vec3 n) {
-    return textureLod(ibl_irradiance_cube, env_direction(n), 0.0).rgb * frame.environment.x;
+    vec3 d = env_direction(n);
+    if (frame.irradiance_sh[0].w > 0.5) return sh9_irradiance(d) * frame.environment.x;
+    return textureLod(ibl_irradiance_cube, d, 0.0).rgb * frame.environment.x;
 }
 
 // (GGX scale, GGX bias, Charlie directional albedo) at n.v and perceptual roughness.

@@ -3,6 +3,7 @@
 #include "cli/cli_run.h"
 #include "test_support.h"
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -144,6 +145,64 @@ TEST(CliLab, ShadowsTakeTheEnvironmentOptions) {
     EXPECT_NE(c.out.find("warning: " + missing), std::string::npos) << c.out;
     EXPECT_NE(c.out.find("PSNR inf dB"), std::string::npos) << c.out;
     fs::remove(png);
+}
+
+// The lighting family on Box at 32x24 against 8 samples, lit by a small HDR (its
+// prefilters are quick): the JSON's shape, the chart, and what the box cannot show.
+TEST(CliLab, LightingJsonShapeAndChart) {
+    const fs::path svg =
+        fs::temp_directory_path() / ("sherpa_lab_lighting_" + std::to_string(::getpid()) + ".svg");
+    ::setenv("SHERPA_VALIDATION", "1", 1); // each message a failure of its method
+    const auto r = run_cli("lab '" + sherpa::test::gltf_asset("Box") +
+                               "' --family lighting --width 32 --height 24 --reference-spp 8 "
+                               "--repeat 1 --json --chart '" +
+                               svg.string() + "' --environment '" + SHERPA_TEST_DATA_DIR +
+                               "/cycles_oracle/sky.hdr'",
+                           "2>/dev/null");
+    ::unsetenv("SHERPA_VALIDATION");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    const auto j = nlohmann::json::parse(r.out, nullptr, false);
+    ASSERT_FALSE(j.is_discarded()) << r.out;
+    EXPECT_EQ(j.at("family"), "lighting");
+    EXPECT_EQ(j.at("chart_error"), "mean_diff");
+    EXPECT_EQ(j.at("time_unit"), "ms/frame");
+    // 2 irradiance, 13 prefilter, 2 compensation, 4 shadows, 2 transmission and the path
+    // tracer at 1 spp (the series stops at 8 / 4).
+    ASSERT_EQ(j.at("methods").size(), 24u);
+    const bool rt = j["methods"].back().at("ran").get<bool>();
+    if (!rt) GTEST_SKIP() << j["methods"].back().at("note");
+    EXPECT_NE(j.at("reference").get<std::string>().find("8 spp"), std::string::npos);
+    bool estimate = false;
+    for (const auto& n : j.at("notes"))
+        estimate |= n.get<std::string>().find("its estimated error") != std::string::npos;
+    EXPECT_TRUE(estimate) << j.at("notes");
+    std::set<std::string> groups;
+    for (const auto& m : j.at("methods")) {
+        groups.insert(m.at("group").get<std::string>());
+        if (m.at("group") == "transmission") {
+            EXPECT_FALSE(m.at("ran").get<bool>());
+            EXPECT_NE(m.at("note").get<std::string>().find("not applicable"), std::string::npos);
+            continue;
+        }
+        ASSERT_TRUE(m.at("ran").get<bool>()) << m.at("name") << ": " << m.at("note");
+        for (const char* e : {"mean_diff", "psnr_db", "material_0_mean_diff"})
+            EXPECT_TRUE(m.at("errors").contains(e)) << m.at("name") << " " << e;
+        EXPECT_TRUE(m.at("failures").empty()) << m.at("name");
+    }
+    EXPECT_EQ(groups,
+              (std::set<std::string>{"irradiance", "specular prefilter", "energy compensation",
+                                     "shadows", "transmission", "path tracer"}));
+    EXPECT_TRUE(j["methods"].back().at("errors").contains("ms_per_sample"));
+    std::ifstream in(svg);
+    std::stringstream text;
+    text << in.rdbuf();
+    EXPECT_EQ(text.str().rfind("<svg", 0), 0u);
+    EXPECT_NE(text.str().find("irradiance sh9"), std::string::npos);
+    fs::remove(svg);
+    for (const char* bad : {"--reference-spp 0", "--width abc", "--height 5000", "--max-bounces -1",
+                            "--reference-spp"})
+        EXPECT_EQ(run_cli(std::string("lab builtin:default --family lighting ") + bad).exit_code, 2)
+            << bad;
 }
 
 TEST(CliLab, CsvAndChart) {

@@ -92,6 +92,27 @@ inline std::filesystem::path write_temp(const std::string& name, const std::stri
     return p;
 }
 
+// An equirectangular environment (environment.h's convention) of radiance f(direction),
+// width x width / 2 texels.
+template <typename F> gpu::EnvironmentImage environment_of(std::uint32_t width, F f) {
+    gpu::EnvironmentImage image;
+    image.width = width;
+    image.height = width / 2;
+    image.rgba.resize(std::size_t(image.width) * image.height * 4);
+    const double pi = 3.14159265358979323846;
+    for (std::uint32_t j = 0; j < image.height; ++j)
+        for (std::uint32_t i = 0; i < image.width; ++i) {
+            const double v = 1.0 - (j + 0.5) / image.height, u = (i + 0.5) / image.width;
+            const double lat = (v - 0.5) * pi, phi = (u - 0.5) * 2.0 * pi;
+            const glm::vec3 d(float(std::cos(lat) * std::cos(phi)), float(std::sin(lat)),
+                              float(std::cos(lat) * std::sin(phi)));
+            const glm::vec3 c = f(d);
+            float* t = &image.rgba[4 * (std::size_t(j) * image.width + i)];
+            t[0] = c.r, t[1] = c.g, t[2] = c.b, t[3] = 1.0f;
+        }
+    return image;
+}
+
 // The furnace view of sphere_row_gltf(count, ...): `px` pixels a sphere, seen from far
 // away with a narrow field of view, no sun or shadows, linear tone mapping at -1 EV (1
 // reads 0.5, clear of the 8-bit ceiling), on a black background.

@@ -279,7 +279,7 @@ std::vector<Twin> twins() {
           TWIN_FIELD(GPUFrameData, ambient), TWIN_FIELD(GPUFrameData, params),
           TWIN_FIELD(GPUFrameData, overlay), TWIN_FIELD(GPUFrameData, cascade_texel),
           TWIN_FIELD(GPUFrameData, lights), TWIN_FIELD(GPUFrameData, environment),
-          TWIN_FIELD(GPUFrameData, display)}},
+          TWIN_FIELD(GPUFrameData, display), TWIN_FIELD(GPUFrameData, irradiance_sh)}},
         {"GPUPushConstants",
          Source::Shader,
          "mesh.vert",

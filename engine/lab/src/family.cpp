@@ -18,7 +18,7 @@ LoadOptions lab_load_options() {
 }
 
 std::vector<std::string_view> family_names() {
-    return {"tangents", "textures", "culling", "mesh-compression", "shadows"};
+    return {"tangents", "textures", "culling", "mesh-compression", "shadows", "lighting"};
 }
 
 std::unique_ptr<Family> make_family(std::string_view name) {
@@ -27,11 +27,12 @@ std::unique_ptr<Family> make_family(std::string_view name) {
     if (name == "culling") return make_cull_family();
     if (name == "mesh-compression") return make_mesh_compression_family();
     if (name == "shadows") return make_shadow_family();
+    if (name == "lighting") return make_lighting_family();
     return nullptr;
 }
 
 bool family_draws_lit_frames(std::string_view name) {
-    return name == "shadows";
+    return name == "shadows" || name == "lighting";
 }
 
 std::unique_ptr<Family> make_family(std::string_view name, const gpu::Lighting& lighting) {
@@ -39,6 +40,11 @@ std::unique_ptr<Family> make_family(std::string_view name, const gpu::Lighting& 
         ShadowFamilyOptions options;
         options.lighting = lighting;
         return make_shadow_family(options);
+    }
+    if (name == "lighting") {
+        LightingFamilyOptions options;
+        options.lighting = lighting;
+        return make_lighting_family(options);
     }
     return make_family(name);
 }

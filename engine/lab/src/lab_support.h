@@ -1,9 +1,11 @@
 #pragma once
 // Helpers the families share: CPU clocks, names of scene objects in failures, and a
 // counter of work units for RunControl::progress.
+#include <algorithm>
 #include <cstdint>
 #include <ctime>
 #include <string>
+#include <vector>
 
 #include <sherpa/lab/family.h>
 
@@ -21,6 +23,13 @@ inline double process_cpu_ms() {
     timespec t;
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
     return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
+// The median of frame times (the upper middle of an even count); 0 for none.
+inline double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
 }
 
 // "mesh 0 primitive 1 'Helmet'" (the glTF mesh and primitive of an engine mesh).

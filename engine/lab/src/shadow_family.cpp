@@ -13,7 +13,7 @@
 #include <cmath>
 #include <exception>
 
-#include "lab_support.h"
+#include "lab_gpu.h"
 
 namespace sherpa::lab {
 namespace {
@@ -45,12 +45,6 @@ std::vector<CameraSpec> orbit(const Aabb& bounds, std::uint32_t count, float asp
         out.push_back(c);
     }
     return out;
-}
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
 }
 
 struct Tally {
@@ -114,17 +108,9 @@ public:
         detail::Progress progress(control, report.methods.size() * cameras.size());
         if (progress.stop()) return detail::cancelled_report(report.family);
         try {
-            gpu::ContextOptions co;
-            co.validation = options_.validation;
-            co.ray_tracing = options_.ray_tracing;
-            gpu::Context context(co);
-            if (!context.info().ray_tracing_enabled) {
-                for (MethodResult& r : report.methods)
-                    r.note = "device '" + context.info().name +
-                             "' does not ray trace: no reference to measure against";
-                progress.finish();
+            gpu::Context context(detail::family_context(options_.validation, options_.ray_tracing));
+            if (!detail::ray_traces(context, report, progress, "no reference to measure against"))
                 return report;
-            }
             std::size_t index = 0;
             for (std::uint32_t res : options_.resolutions) {
                 const std::size_t first = index;
@@ -191,7 +177,7 @@ private:
         for (std::uint32_t f = 0; f < std::max(options_.frames, 1u); ++f)
             ms.push_back(renderer.render(s, nullptr).gpu_ms);
         if (context.info().timestamps) {
-            tally.ms += median(ms);
+            tally.ms += detail::median(ms);
             ++tally.timed;
         }
         s.renderer = gpu::RendererKind::RayTraced;

@@ -72,7 +72,7 @@ void compute_barrier(VkCommandBuffer cmd) {
 } // namespace
 
 EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
-                               const EnvironmentImage& image)
+                               const EnvironmentImage& image, const EnvironmentOptions& options)
     : resources_(resources) {
     if (!image.valid()) throw GpuError("environment image '" + image.name + "' has no texels");
     const auto start = std::chrono::steady_clock::now();
@@ -81,7 +81,10 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
 
     // Sizes: the cube face a quarter of the source's width (90 degrees of 360).
     const std::uint32_t cube = std::clamp<std::uint32_t>(
-        std::bit_floor(std::max<std::uint32_t>(image.width / 4, 1)), kMinCube, kMaxCube);
+        std::bit_floor(std::max<std::uint32_t>(
+            options.specular_size ? options.specular_size : image.width / 4, 1)),
+        kMinCube, kMaxCube);
+    const bool sh9 = options.irradiance == IrradianceMode::Sh9;
     const std::uint32_t radiance_levels = levels_of(cube);
     const std::uint32_t specular_levels = levels_of(cube / kLowestLevel);
     const std::uint32_t sheen_levels = levels_of(kSheenSize / kLowestLevel);
@@ -91,7 +94,10 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
     stats_.source_height = image.height;
     stats_.cube_size = cube;
     stats_.specular_levels = specular_levels;
-    stats_.irradiance_size = kIrradianceSize;
+    stats_.irradiance = options.irradiance;
+    stats_.irradiance_size = sh9 ? 0 : kIrradianceSize;
+    // SH9: projected on the CPU from the same radiance the cubes are made of.
+    if (sh9) irradiance_sh_ = irradiance_sh9(project_sh9(image));
     stats_.sheen_size = kSheenSize;
     stats_.sheen_levels = sheen_levels;
     stats_.lut_size = kLutSize;
@@ -122,7 +128,7 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
                                      VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
     specular_ = make_cube(resources, cube, specular_levels, "environment specular",
                           VK_IMAGE_USAGE_TRANSFER_DST_BIT);
-    irradiance_ = make_cube(resources, kIrradianceSize, 1, "environment irradiance");
+    if (!sh9) irradiance_ = make_cube(resources, kIrradianceSize, 1, "environment irradiance");
     sheen_ = make_cube(resources, kSheenSize, sheen_levels, "environment sheen");
     ImageDesc lut_desc;
     lut_desc.format = kFormat;
@@ -130,7 +136,8 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
     lut_desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
     lut_desc.name = "environment brdf lut";
     lut_ = images.create(lut_desc);
-    stats_.bytes = bytes_of(cube, specular_levels, 6) + bytes_of(kIrradianceSize, 1, 6) +
+    stats_.bytes = bytes_of(cube, specular_levels, 6) +
+                   (sh9 ? 0 : bytes_of(kIrradianceSize, 1, 6)) +
                    bytes_of(kSheenSize, sheen_levels, 6) + bytes_of(kLutSize, 1, 1);
 
     auto si = vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
@@ -174,7 +181,9 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
                                  stamp);
         ++stamp;
     };
-    for (ImageHandle h : {radiance, specular_, irradiance_, sheen_, lut_})
+    std::vector<ImageHandle> built{radiance, specular_, sheen_, lut_};
+    if (!sh9) built.push_back(irradiance_);
+    for (ImageHandle h : built)
         transition(cmd,
                    {images.get(h).image.get(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                     VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
@@ -227,13 +236,16 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
     compute_barrier(cmd); // the radiance cube's other levels
     for (std::uint32_t l = 1; l < specular_levels; ++l) {
         const float roughness = specular_levels > 1 ? float(l) / float(specular_levels - 1) : 0.0f;
+        const std::uint32_t samples = options.specular_samples ? options.specular_samples
+                                      : l == 1                 ? kSpecularSamplesFirst
+                                                               : kSpecularSamples;
         ggx.record(cmd, layout.bind(linear, radiance_view, target(specular_, l, 6)), cube >> l,
-                   roughness, l == 1 ? kSpecularSamplesFirst : kSpecularSamples, cube,
-                   radiance_levels);
+                   roughness, samples, cube, radiance_levels);
     }
     mark();
-    lambert.record(cmd, layout.bind(linear, radiance_view, target(irradiance_, 0, 6)),
-                   kIrradianceSize, 1.0f, kIrradianceSamples, cube, radiance_levels);
+    if (!sh9)
+        lambert.record(cmd, layout.bind(linear, radiance_view, target(irradiance_, 0, 6)),
+                       kIrradianceSize, 1.0f, kIrradianceSamples, cube, radiance_levels);
     mark();
     for (std::uint32_t l = 0; l < sheen_levels; ++l) {
         // Charlie at roughness 0 is undefined: its sharpest level uses a small roughness.
@@ -244,7 +256,8 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
     mark();
     lut_pass.record(cmd, layout.bind(VK_NULL_HANDLE, VK_NULL_HANDLE, target(lut_, 0, 1)), kLutSize,
                     kLutSamples);
-    for (ImageHandle h : {specular_, irradiance_, sheen_, lut_})
+    built.erase(built.begin()); // the radiance cube is not read after the build
+    for (ImageHandle h : built)
         transition(cmd,
                    {images.get(h).image.get(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
@@ -271,7 +284,7 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
 
 EnvironmentMap::~EnvironmentMap() {
     for (ImageHandle* h : {&specular_, &irradiance_, &sheen_, &lut_})
-        resources_.images().destroy(*h);
+        if (h->valid()) resources_.images().destroy(*h);
     resources_.images().destroy(sampler_);
 }
 
@@ -286,7 +299,8 @@ void EnvironmentMap::write_descriptors(VkDevice device, VkDescriptorSet set) con
     const VkSampler s = images.get(sampler_);
     const VkDescriptorImageInfo infos[] = {
         {s, images.get(specular_).view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
-        {s, images.get(irradiance_).view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+        {s, images.get(irradiance_.valid() ? irradiance_ : specular_).view.get(),
+         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
         {s, images.get(lut_).view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
         {s, images.get(sheen_).view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
     };

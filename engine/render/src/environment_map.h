@@ -5,8 +5,11 @@
 // GGX-prefiltered specular cube (its level 0 is the sharp environment), the irradiance
 // cube, the Charlie (sheen) cube and the split-sum lookup table; the source image and
 // the radiance cube the prefilters sample are freed after the build.
+#include <optional>
+
 #include <sherpa/gpu/resources.h>
 #include <sherpa/render/environment.h>
+#include <sherpa/render/environment_sh.h>
 
 namespace sherpa::gpu {
 
@@ -23,23 +26,28 @@ public:
                                    kIrradianceSamples = 48, kSheenSamples = 32, kLutSamples = 128;
 
     // Builds everything on the GPU and waits for it. `image` must be valid().
-    EnvironmentMap(Context& context, ResourceManager& resources, const EnvironmentImage& image);
+    EnvironmentMap(Context& context, ResourceManager& resources, const EnvironmentImage& image,
+                   const EnvironmentOptions& options = {});
     ~EnvironmentMap();
     EnvironmentMap(const EnvironmentMap&) = delete;
     EnvironmentMap& operator=(const EnvironmentMap&) = delete;
 
-    // Bindings 4 (specular), 5 (irradiance), 6 (LUT), 7 (sheen) of a frame set.
+    // Bindings 4 (specular), 5 (irradiance; the specular cube, never read, where the
+    // irradiance is SH9), 6 (LUT), 7 (sheen) of a frame set.
     void write_descriptors(VkDevice device, VkDescriptorSet set) const;
     const EnvironmentStats& stats() const { return stats_; }
     // The specular cube with its sampler (level 0 is the sharp environment): the path
     // tracer's radiance.
     VkDescriptorImageInfo specular_descriptor() const;
+    // IrradianceMode::Sh9: the coefficients of irradiance / pi (irradiance_sh9()).
+    const std::optional<Sh9>& irradiance_sh() const { return irradiance_sh_; }
 
 private:
     ResourceManager& resources_;
     ImageHandle specular_, irradiance_, sheen_, lut_;
     SamplerHandle sampler_;
     EnvironmentStats stats_;
+    std::optional<Sh9> irradiance_sh_;
 };
 
 } // namespace sherpa::gpu

@@ -78,6 +78,11 @@ GPUFrameData Renderer::Impl::lighting_constants(const RenderSettings& settings) 
         const float turn = glm::radians(settings.environment_rotation);
         f.environment = glm::vec4(settings.environment_intensity, float(env.specular_levels),
                                   std::cos(turn), std::sin(turn));
+        if (const auto& sh = environment->irradiance_sh()) {
+            for (std::size_t k = 0; k < sh->size(); ++k)
+                f.irradiance_sh[k] = glm::vec4((*sh)[k], 0.0f);
+            f.irradiance_sh[0].w = 1.0f;
+        }
     }
     const float background_level =
         !environment || settings.background == Background::Color ? -1.0f

@@ -4,11 +4,13 @@
 
 namespace sherpa::gpu {
 
-void Renderer::Impl::set_environment(const EnvironmentImage* image) {
+void Renderer::Impl::set_environment(const EnvironmentImage* image,
+                                     const EnvironmentOptions& env_options) {
     // Frames in flight may read the old maps: wait for them before they go.
     for (auto& slot : slots_) wait_slot(*slot);
     environment.reset();
-    if (image) environment = std::make_unique<EnvironmentMap>(context, *resources, *image);
+    if (image)
+        environment = std::make_unique<EnvironmentMap>(context, *resources, *image, env_options);
     // The path tracer's sampling distribution, made while the image is at hand.
     environment_distribution_.reset();
     if (image && options.ray_tracing)
@@ -18,8 +20,8 @@ void Renderer::Impl::set_environment(const EnvironmentImage* image) {
     resources->collect_garbage();
 }
 
-void Renderer::set_environment(const EnvironmentImage* image) {
-    impl_->set_environment(image);
+void Renderer::set_environment(const EnvironmentImage* image, const EnvironmentOptions& options) {
+    impl_->set_environment(image, options);
 }
 
 } // namespace sherpa::gpu

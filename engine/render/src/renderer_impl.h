@@ -76,7 +76,7 @@ public:
     std::unique_ptr<SceneAccelerationStructures> acceleration;
     CullingPass culling;
     std::unique_ptr<EnvironmentMap> environment; // null: none (set_environment)
-    void set_environment(const EnvironmentImage* image);
+    void set_environment(const EnvironmentImage* image, const EnvironmentOptions& options);
     // The path tracer's accumulation read back (renderer_path.cpp).
     PathTraceImage path_trace_image();
     // set_material_variant() (renderer_variants.cpp).

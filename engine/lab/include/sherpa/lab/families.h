@@ -89,14 +89,57 @@ struct ShadowFamilyOptions {
     std::uint32_t cameras = 4;
     std::uint32_t width = 160, height = 120;
     std::uint32_t frames = 3;
-    bool ray_tracing = true; // false: as on a device without it (tests)
-    bool validation = false; // Khronos validation on the family's device (tests)
+    std::uint32_t supersample = 4; // the compared raster image's samples per pixel side
+    bool ray_tracing = true;       // false: as on a device without it (tests)
+    bool validation = false;       // Khronos validation on the family's device (tests)
     // The lit frames' environment and display settings (the main view's): none by default.
     gpu::Lighting lighting;
 };
 std::unique_ptr<Family> make_shadow_family(const ShadowFamilyOptions& options = {});
 
-// Whether family `name` draws lit frames (and so takes a gpu::Lighting): "shadows".
+// Lighting: the raster's lighting approximations, each against the converged path-traced
+// image of the scene (same framed camera, environment, sun, tone mapping), at a small
+// size so that the reference is affordable on a CPU device. Groups (one approximation
+// varied at a time from the main view's settings): irradiance cube vs 9 SH coefficients;
+// specular prefilter face size x GGX samples (and the default); energy compensation on
+// vs off; shadow maps (off, and resolution x cascades x PCF taps); transmission on vs
+// off (off: KHR_materials_transmission dropped, what a viewer without it shows); and the
+// path tracer itself at `convergence_spp` samples (another seed) against the reference.
+// Errors: mean |difference| in 8-bit display steps over the image (the chart error) and
+// per material (`material_<i>_mean_diff`, from a material-id image of primary rays),
+// PSNR. The raster image compared is drawn at `supersample` times the size and
+// box-filtered down in linear values, as the path tracer filters its jittered samples
+// (else texture minification and edges, not lighting, dominate the difference). Time:
+// GPU ms of the raster frame at the lab's size (cascades redrawn), median of `frames`;
+// for the path tracer, of its accumulation. A group the scene cannot show (no environment, no
+// transmissive material, no shadow-casting sun) is not run, with the cause in its note;
+// so is everything on a device that does not ray trace. Failures: validation messages,
+// frames the renderer refused.
+struct LightingShadowSetting {
+    std::uint32_t resolution = 2048, cascades = 3, taps = 4;
+};
+struct LightingFamilyOptions {
+    std::uint32_t width = 160, height = 120;
+    std::uint32_t reference_spp = 256; // the path tracer's converged image
+    std::uint32_t max_bounces = 8;
+    // The path tracer's own convergence; empty: 1, 4, 16, ... up to reference_spp / 4.
+    std::vector<std::uint32_t> convergence_spp;
+    std::vector<std::uint32_t> specular_sizes{32, 64, 128, 256};
+    std::vector<std::uint32_t> specular_samples{4, 16, 64};
+    std::vector<LightingShadowSetting> shadows{{1024, 1, 1}, {2048, 3, 4}, {4096, 3, 16}};
+    std::uint32_t frames = 3;
+    std::uint32_t supersample = 4; // the compared raster image's samples per pixel side
+    bool ray_tracing = true;       // false: as on a device without it (tests)
+    bool validation = false;       // Khronos validation on the family's device (tests)
+    // The environment and display settings (the main view's): none by default.
+    gpu::Lighting lighting;
+};
+std::unique_ptr<Family> make_lighting_family(const LightingFamilyOptions& options = {});
+// The convergence checkpoints of `options` (convergence_spp, or the default series).
+std::vector<std::uint32_t> lighting_convergence_spp(const LightingFamilyOptions& options);
+
+// Whether family `name` draws lit frames (and so takes a gpu::Lighting): "shadows",
+// "lighting".
 bool family_draws_lit_frames(std::string_view name);
 // make_family() with the lit frames lit by `lighting` (the main view's).
 std::unique_ptr<Family> make_family(std::string_view name, const gpu::Lighting& lighting);

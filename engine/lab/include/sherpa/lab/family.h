@@ -97,7 +97,7 @@ public:
 // vertex splits would make welded MikkTSpace equal the exact one everywhere).
 LoadOptions lab_load_options();
 
-// "tangents", "textures", "culling", "mesh-compression", "shadows".
+// "tangents", "textures", "culling", "mesh-compression", "shadows", "lighting".
 std::vector<std::string_view> family_names();
 // The family with default options, or nullptr for an unknown name.
 std::unique_ptr<Family> make_family(std::string_view name);

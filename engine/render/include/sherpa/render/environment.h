@@ -85,6 +85,25 @@ std::string_view to_string(ToneMap t);
 std::optional<ToneMap> parse_tone_map(std::string_view name);
 std::vector<std::string_view> tone_map_names();
 
+// How the diffuse light of an environment is kept: the Lambert-prefiltered irradiance
+// cube, or 9 spherical-harmonic coefficients (environment_sh.h) evaluated per pixel,
+// which make no cube and no prefilter pass.
+enum class IrradianceMode : std::uint32_t { Cube, Sh9 };
+std::string_view to_string(IrradianceMode m);
+std::optional<IrradianceMode> parse_irradiance_mode(std::string_view name); // "cube", "sh9"
+
+// How an environment is made (Renderer::set_environment): the defaults are what every
+// view draws; the Lab's lighting family varies them.
+struct EnvironmentOptions {
+    IrradianceMode irradiance = IrradianceMode::Cube;
+    // Face of the specular cube (a power of two, 16 to 512); 0: a quarter of the
+    // source's width within those bounds.
+    std::uint32_t specular_size = 0;
+    // GGX importance samples per texel of every blurred specular level; 0: 16 at the
+    // first blurred level and 32 after (EnvironmentMap::kSpecularSamples*).
+    std::uint32_t specular_samples = 0;
+};
+
 // Sizes of the maps made from an environment (environment_map.cpp).
 struct EnvironmentStats {
     bool present = false;
@@ -92,9 +111,10 @@ struct EnvironmentStats {
     std::uint32_t source_width = 0, source_height = 0;
     std::uint32_t cube_size = 0, specular_levels = 0, irradiance_size = 0, sheen_size = 0,
                   sheen_levels = 0, lut_size = 0;
-    std::uint64_t bytes = 0;   // kept on the GPU (cubes and lookup tables)
-    double prefilter_ms = 0.0; // upload and every compute pass, wall clock
-    double gpu_ms = 0.0;       // the compute passes by GPU timestamps
+    IrradianceMode irradiance = IrradianceMode::Cube; // Sh9: irradiance_size is 0
+    std::uint64_t bytes = 0;                          // kept on the GPU (cubes and lookup tables)
+    double prefilter_ms = 0.0;                        // upload and every compute pass, wall clock
+    double gpu_ms = 0.0;                              // the compute passes by GPU timestamps
     // GPU ms of: the radiance cube (and its levels), GGX specular, Lambert irradiance,
     // Charlie sheen, the lookup table.
     double pass_ms[5] = {};

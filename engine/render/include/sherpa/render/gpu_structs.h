@@ -50,6 +50,9 @@ struct GPUFrameData {
     GPULight lights[kMaxLights];
     glm::vec4 environment; // x intensity, y specular levels (0: none), z cos, w sin of rotation
     glm::vec4 display;     // x 2^exposure, y ToneMap, z energy compensation, w background level
+    // Irradiance / pi as 9 SH coefficients (rgb; environment_sh.h), read instead of the
+    // irradiance cube where irradiance_sh[0].w is 1 (IrradianceMode::Sh9).
+    glm::vec4 irradiance_sh[9];
 };
 static_assert(offsetof(GPUFrameData, proj) == 64);
 static_assert(offsetof(GPUFrameData, view_proj) == 128);
@@ -65,7 +68,8 @@ static_assert(offsetof(GPUFrameData, cascade_texel) == 560);
 static_assert(offsetof(GPUFrameData, lights) == 576);
 static_assert(offsetof(GPUFrameData, environment) == 576 + 64 * kMaxLights);
 static_assert(offsetof(GPUFrameData, display) == 592 + 64 * kMaxLights);
-static_assert(sizeof(GPUFrameData) == 608 + 64 * kMaxLights);
+static_assert(offsetof(GPUFrameData, irradiance_sh) == 608 + 64 * kMaxLights);
+static_assert(sizeof(GPUFrameData) == 752 + 64 * kMaxLights);
 
 // 128 bytes: model matrix and the CPU-computed normal matrix
 // transpose(inverse(mat3(model))) as three vec4 columns (layout-independent).

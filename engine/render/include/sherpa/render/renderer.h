@@ -145,8 +145,9 @@ public:
     // The environment that lights lit frames (image-based lighting, environment.h): made
     // on the GPU from `image` (prefiltered cubes and lookup tables), replacing the one
     // before; null removes it (no GPU bytes, no passes: lit frames use the ambient term).
-    // Waits for the frames in flight. Throws GpuError for an invalid image.
-    void set_environment(const EnvironmentImage* image);
+    // `options`: irradiance cube or SH9, specular cube size and samples (the defaults are
+    // every view's). Waits for the frames in flight. Throws GpuError for an invalid image.
+    void set_environment(const EnvironmentImage* image, const EnvironmentOptions& options = {});
 
     // Renders one frame offscreen and waits for it. With `rgba` set, reads the
     // image back as tightly packed sRGB-encoded RGBA8 rows, top row first.

@@ -108,6 +108,10 @@ struct Validation {
     std::vector<std::uint8_t> length_unchecked;
     std::vector<AccessorRole> accessor_roles;
     std::vector<ViewRole> view_roles;
+    // Set by the data pass, per accessor: its values were all read (no sparse
+    // overrides) and every one is finite and inside its declared min and max. The
+    // importer's declared-range check believes it rather than scanning them again.
+    std::vector<std::uint8_t> bounds_hold;
     // array()'s look-ups so far, by the key's address.
     struct CachedArray {
         const char* key = nullptr;
@@ -185,6 +189,8 @@ public:
     void check_data(std::span<const std::span<const std::uint8_t>> buffers,
                     std::span<const std::span<const std::uint8_t>> images = {});
     bool glb_has_bin() const { return v_.glb_has_bin; }
+    // After check_data: Validation::bounds_hold, per accessor.
+    std::vector<std::uint8_t> take_bounds_hold() { return std::move(v_.bounds_hold); }
 
 private:
     Validation v_;

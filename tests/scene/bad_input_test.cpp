@@ -36,7 +36,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"unknown_required_extension.gltf", "EXT_made_up_required"},
         // named before the symptom (accessors without bufferView) is looked at
         BadCase{"unknown_required_extension_no_views.gltf",
-                "extensionsRequired: \"EXT_made_up_compression\" not supported"},
+                "extensionsRequired[0]: \"EXT_made_up_compression\" not supported"},
         BadCase{"bad_mode.gltf", "mode: 9"}, BadCase{"invalid_json.gltf", "parse error"},
         BadCase{"empty.gltf", "empty"}, BadCase{"truncated.glb", "binary"},
         BadCase{"no_such_file.gltf", "cannot open"}),

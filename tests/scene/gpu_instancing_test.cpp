@@ -120,11 +120,22 @@ TEST(GpuInstancing, AComponentTypeTheExtensionDoesNotAllowIsNamedAndRead) {
         << all_warnings(*r.scene);
 }
 
-TEST(GpuInstancing, AnAccessorIdPast2To31IsRefused) {
-    test::expect_clear_load_error(
-        (test::data_dir() / "instancing_id_2p32.gltf").string(),
-        "nodes[0].extensions.EXT_mesh_gpu_instancing.attributes.TRANSLATION: 4294967296 is out "
-        "of the range");
+// An id tinygltf's int cannot hold (2^32 would read as accessor 0): the attribute is
+// ignored by name and pointer, and the node is drawn once, as without the extension.
+TEST(GpuInstancing, AnAccessorIdPast2To31IsIgnoredAndTheNodeDrawnOnce) {
+    const auto r = load("instancing_id_2p32.gltf");
+    ASSERT_TRUE(r) << r.error;
+    EXPECT_EQ(r.scene->instances.size(), 1u);
+    EXPECT_FALSE(r.scene->nodes[0].instancing.has_value());
+    bool named = false;
+    for (const auto& m : r.scene->validation.messages)
+        named |=
+            m.code == "SHERPA_VALUE_IGNORED" &&
+            m.pointer == "/nodes/0/extensions/EXT_mesh_gpu_instancing/attributes/TRANSLATION" &&
+            m.severity == sherpa::Severity::Warning &&
+            m.message.find("4294967296 is not an accessor index") != std::string::npos;
+    EXPECT_TRUE(named);
+    EXPECT_TRUE(has_warning(*r.scene, "the node is drawn once")) << all_warnings(*r.scene);
 }
 
 TEST(GpuInstancing, ANodeWithoutAMeshIsNamed) {

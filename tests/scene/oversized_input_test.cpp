@@ -124,7 +124,8 @@ TEST(OversizedMeshopt, FallbackBufferDeclaringGigabytesLoadsWhatTheStreamDecodes
 TEST(OversizedMeshopt, CountTheStreamCannotHoldIsRefusedBeforeAllocating) {
     test::expect_clear_load_error(
         edited(kMeshopt, MESHOPT_EXT "count", 100000, "meshopt_count_unbacked"),
-        "bufferViews[0].EXT_meshopt_compression: count 100000 x byteStride 12 = 1200000 bytes "
+        "bufferViews[0].extensions.EXT_meshopt_compression: count 100000 x byteStride 12 = 1200000 "
+        "bytes "
         "cannot come from a 45-byte ATTRIBUTES stream");
 }
 

@@ -94,6 +94,25 @@ TEST(LoadAndWarn, IntegersWrittenAsFloatsLoad) {
     EXPECT_EQ(r.scene->meshes.size(), 2u);
 }
 
+// A sampler value out of its list is the Khronos validator's VALUE_NOT_IN_LIST warning,
+// not a reason to refuse the file: it is read as unspecified (linear or trilinear
+// filtering, repeat wrapping), and the note says which.
+TEST(LoadAndWarn, SamplerValueOutOfItsListIsReadAsUnspecified) {
+    const auto r = sherpa::load_scene(case_path("sampler_bad_filter.gltf"));
+    ASSERT_TRUE(r) << r.error;
+    const ValidationReport& v = r.scene->validation;
+    EXPECT_TRUE(has(v, "VALUE_NOT_IN_LIST", "/samplers/0/magFilter")) << dump(v);
+    bool noted = false;
+    for (const auto& m : v.messages)
+        noted |= m.pointer == "/samplers/0/magFilter" && m.code == "SHERPA_IMPORT_NOTE" &&
+                 m.message.find("linear filtering is used") != std::string::npos;
+    EXPECT_TRUE(noted) << dump(v);
+    ASSERT_EQ(r.scene->samplers.size(), 1u);
+    EXPECT_EQ(r.scene->samplers[0].mag_filter, sherpa::Filter::Linear);
+    EXPECT_EQ(r.scene->samplers[0].min_filter, sherpa::Filter::Linear); // 9987: trilinear
+    EXPECT_EQ(r.scene->samplers[0].mipmap_mode, sherpa::MipmapMode::Linear);
+}
+
 TEST(LoadAndWarn, PlaceholderBufferWithoutUriLoadsAndNamesWhatItSkips) {
     auto doc = test::read_json(case_path("valid.gltf"));
     doc["buffers"].push_back({{"byteLength", 1024}}); // a placeholder nothing reads

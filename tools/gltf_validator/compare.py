@@ -3,7 +3,8 @@
 same files: precision and recall on the set of (code, JSON pointer) pairs, per
 severity, plus the load contract (every file the oracle calls valid loads; every file
 it calls invalid loads with the oracle's error codes, or is refused with a reason that
-names the unusable part). SHERPA_ codes are Sherpa's own and are not compared.
+names the unusable part; a file the oracle cannot read at all, which it answers with
+no report, is refused). SHERPA_ codes are Sherpa's own and are not compared.
 
 Usage: compare.py --cli SHERPA_CLI --node-path CACHE/node_modules [--markdown OUT.md]
                   [--check] [--show-misses] PATH...   (files or directories)"""
@@ -99,13 +100,23 @@ def main():
         ours = list(pool.map(lambda f: sherpa(f, a.cli), files))
     tp, fn, fp = collections.Counter(), collections.Counter(), collections.Counter()
     misses, extras, contract = [], [], []
-    valid = invalid = skipped = 0
+    valid = invalid = skipped = unreadable = 0
     for f, o, s in zip(files, oracles, ours):
         if o is None:
             skipped += 1
             continue
         if s.get("crashed"):
             contract.append(f"{f}: sherpa-cli validate crashed (status {s['status']}): {s['stderr']}")
+            continue
+        if o.get("error"):
+            # The oracle gives no report at all ("could not detect glTF format": an empty
+            # file, a PNG named .gltf): neither valid nor invalid, and no code to claim.
+            # The contract: refused, with a reason.
+            unreadable += 1
+            if s["loaded"]:
+                contract.append(f"{f}: the oracle cannot read it ({o['error']}) but it loaded")
+            elif not any(m["code"] == "SHERPA_LOAD_REFUSED" for m in s["issues"]["messages"]):
+                contract.append(f"{f}: refused without a reason")
             continue
         want = {(m["code"], m["pointer"]): m["severity"] for m in o["messages"]}
         got = {(m["code"], m.get("pointer", "")): SEVERITIES[m["severity"]]
@@ -143,7 +154,8 @@ def main():
         recall = t / (t + n) if t + n else 1.0
         precision = t / (t + p) if t + p else 1.0
         rows.append((sev, t, n, p, precision, recall))
-    lines = [f"{len(files)} files ({valid} valid and {invalid} invalid for the oracle, {skipped} the oracle could not read)", "",
+    lines = [f"{len(files)} files ({valid} valid and {invalid} invalid for the oracle, {unreadable} it "
+             f"cannot read as glTF, {skipped} it crashes on)", "",
              "| severity | matched | missed | extra | precision | recall |", "|---|---:|---:|---:|---:|---:|"]
     lines += [f"| {r[0]} | {r[1]} | {r[2]} | {r[3]} | {r[4]:.1%} | {r[5]:.1%} |" for r in rows]
     lines += ["", f"load contract violations: {len(contract)}"] + [f"- {c}" for c in contract]

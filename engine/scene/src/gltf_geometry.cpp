@@ -331,6 +331,9 @@ void import_primitive(ImportContext& ctx, std::uint32_t mesh_index, std::uint32_
 void ImportContext::check_declared_range(int index, const std::vector<float>& values,
                                          std::uint32_t components, const std::string& where) {
     if (!range_checked.insert(index).second) return;
+    if (index >= 0 && static_cast<std::size_t>(index) < bounds_hold.size() &&
+        bounds_hold[static_cast<std::size_t>(index)])
+        return; // the validator's data pass read these values and found them inside
     if (auto v = detail::check_declared_range(model, index, values, components, where)) {
         warn(describe_range_violation(*v));
         scene.range_violations.push_back(std::move(*v));

@@ -156,6 +156,7 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
     if (problem = detail::check_gltf_document(root); !problem.empty()) return refuse(problem);
     if (problem = detail::check_gltf_properties(root); !problem.empty()) return refuse(problem);
     edited |= detail::replace_unreadable_buffers(root, is_glb, validator->glb_has_bin(), report);
+    edited |= detail::drop_unreadable_instancing_ids(root, report);
     if (edited) bytes = detail::with_json(root, bytes, is_glb);
     if (const auto marked = detail::with_channel_nodes(root)) // KHR_animation_pointer
         bytes = detail::with_json(*marked, bytes, is_glb);
@@ -193,6 +194,7 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
     for (const auto& image : model.images)
         images.emplace_back(image.image.data(), image.image.size());
     validator->check_data(buffers, images);
+    std::vector<std::uint8_t> bounds_hold = validator->take_bounds_hold();
     validator.reset();
     auto scene = std::make_unique<Scene>();
     scene->source = path;
@@ -210,6 +212,11 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         const auto decoded_views = detail::decode_meshopt_views(model);
         const auto decoded_draco = detail::decode_draco_primitives(model);
         detail::ImportContext ctx{model, *scene};
+        // The validator read the file's bytes; a decoded meshopt view holds others.
+        for (std::size_t a = 0; a < model.accessors.size() && a < bounds_hold.size(); ++a)
+            for (const auto& d : decoded_views)
+                if (model.accessors[a].bufferView == d.view) bounds_hold[a] = 0;
+        ctx.bounds_hold = std::move(bounds_hold);
         for (const auto& d : decoded_draco) {
             if (!d.failed.empty())
                 ctx.undecodable.emplace(std::pair{d.mesh, d.primitive}, d.failed);

@@ -215,6 +215,41 @@ bool replace_unreadable_buffers(json& root, bool glb, bool glb_has_bin, Validati
     return changed;
 }
 
+bool drop_unreadable_instancing_ids(json& root, ValidationReport& report) {
+    const auto nodes = root.find("nodes");
+    if (nodes == root.end() || !nodes->is_array()) return false;
+    bool changed = false;
+    for (std::size_t n = 0; n < nodes->size(); ++n) {
+        json& node = (*nodes)[n];
+        if (!node.is_object() || !node.contains("extensions")) continue;
+        json& extensions = node["extensions"];
+        if (!extensions.is_object() || !extensions.contains("EXT_mesh_gpu_instancing")) continue;
+        json& ext = extensions["EXT_mesh_gpu_instancing"];
+        if (!ext.is_object() || !ext.contains("attributes") || !ext["attributes"].is_object())
+            continue;
+        json& attributes = ext["attributes"];
+        for (auto it = attributes.begin(); it != attributes.end();) {
+            if (it->is_number_unsigned() && it->get<std::uint64_t>() <= 0x7FFFFFFF) {
+                ++it;
+                continue;
+            }
+            const std::string path = "nodes[" + std::to_string(n) +
+                                     "].extensions.EXT_mesh_gpu_instancing.attributes." + it.key();
+            report.messages.push_back(
+                {"SHERPA_VALUE_IGNORED",
+                 path + ": " + it->dump(-1, ' ', false, json::error_handler_t::replace) +
+                     " is not an accessor index Sherpa can read (0..2147483647); the attribute "
+                     "is ignored",
+                 "/nodes/" + std::to_string(n) + "/extensions/EXT_mesh_gpu_instancing/attributes/" +
+                     it.key(),
+                 Severity::Warning});
+            it = attributes.erase(it);
+            changed = true;
+        }
+    }
+    return changed;
+}
+
 std::vector<std::uint8_t> with_json(const json& root, std::span<const std::uint8_t> file,
                                     bool glb) {
     std::string text = root.dump(-1, ' ', false, json::error_handler_t::replace);

@@ -26,6 +26,12 @@ bool normalize_integers(nlohmann::json& root);
 bool replace_unreadable_buffers(nlohmann::json& root, bool glb, bool glb_has_bin,
                                 ValidationReport& report);
 
+// EXT_mesh_gpu_instancing attribute ids that are not accessor indices tinygltf can hold
+// (2^32 reads as 0 through its int, 1.5 as 1): each is removed with a
+// SHERPA_VALUE_IGNORED warning at its pointer, so the importer draws the node once (the
+// extension's fallback) instead of reading another accessor. True when any was removed.
+bool drop_unreadable_instancing_ids(nlohmann::json& root, ValidationReport& report);
+
 // tinygltf drops an animation channel whose target has no "node" (glTF allows it:
 // KHR_animation_pointer and other extensions define the target), which would also shift
 // the indices of the channels after it. A copy of `root` where such targets carry

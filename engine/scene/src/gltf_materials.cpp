@@ -267,11 +267,23 @@ void import_samplers_images_textures(ImportContext& ctx) {
     Scene& scene = ctx.scene;
     for (std::size_t i = 0; i < model.samplers.size(); ++i) {
         const auto& s = model.samplers[i];
-        try {
-            scene.samplers.push_back(sampler_from_gltf(s.magFilter, s.minFilter, s.wrapS, s.wrapT));
-        } catch (const std::invalid_argument& e) {
-            fail("samplers[" + std::to_string(i) + "]: " + e.what());
-        }
+        // A value out of its list (the validator's VALUE_NOT_IN_LIST warning) is read as
+        // unspecified: the sampler and its textures are still shown, and the note says so.
+        auto listed = [&](int value, std::initializer_list<int> allowed, const char* field,
+                          const char* instead) {
+            if (value == -1) return 0; // tinygltf's "absent": unspecified
+            for (int a : allowed)
+                if (value == a) return value;
+            ctx.warn("samplers[" + std::to_string(i) + "]." + field + ": " + std::to_string(value) +
+                     " is not a " + field + " value; " + instead + " is used");
+            return 0;
+        };
+        scene.samplers.push_back(
+            sampler_from_gltf(listed(s.magFilter, {9728, 9729}, "magFilter", "linear filtering"),
+                              listed(s.minFilter, {9728, 9729, 9984, 9985, 9986, 9987}, "minFilter",
+                                     "trilinear filtering"),
+                              listed(s.wrapS, {33071, 33648, 10497}, "wrapS", "repeat"),
+                              listed(s.wrapT, {33071, 33648, 10497}, "wrapT", "repeat")));
     }
     for (std::size_t i = 0; i < model.images.size(); ++i) {
         const auto& img = model.images[i];

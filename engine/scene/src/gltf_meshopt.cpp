@@ -155,7 +155,7 @@ std::vector<DecodedView> decode_meshopt_views(tinygltf::Model& model) {
         for (const char* codec : kCodecs) {
             const auto ext = model.bufferViews[v].extensions.find(codec);
             if (ext == model.bufferViews[v].extensions.end()) continue;
-            const std::string where = "bufferViews[" + std::to_string(v) + "]." + codec;
+            const std::string where = "bufferViews[" + std::to_string(v) + "].extensions." + codec;
             const Stream s = read_stream(ext->second, where);
             if (s.buffer >= model.buffers.size())
                 fail(where + ".buffer: buffer index " + std::to_string(s.buffer) + " out of range");

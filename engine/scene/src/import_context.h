@@ -20,6 +20,9 @@ struct ImportContext {
     Scene& scene;
     std::int32_t default_material = -1; // created on first use
     std::set<int> range_checked;        // accessors whose declared min/max were checked
+    // Per accessor, whether the validator's data pass found every value inside its
+    // declared min/max (Validation::bounds_hold): those are not scanned again.
+    std::vector<std::uint8_t> bounds_hold;
     // Primitives a decoder could not read, (mesh, primitive) -> why: import_meshes skips
     // them by name.
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::string> undecodable;

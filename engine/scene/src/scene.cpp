@@ -1,10 +1,26 @@
 #include <sherpa/scene/scene.h>
 
+#include "validate_internal.h" // add_import_message
+
 #include <algorithm>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace sherpa {
+
+namespace {
+
+// An instance select_scene leaves out: a SHERPA_INSTANCE_SKIPPED warning at the node's
+// pointer and the text in Scene::warnings, once however often the scene is selected.
+void left_out(Scene& scene, const std::string& text) {
+    if (std::find(scene.warnings.begin(), scene.warnings.end(), text) != scene.warnings.end())
+        return;
+    scene.warnings.push_back(text);
+    detail::add_import_message(scene.validation, "SHERPA_INSTANCE_SKIPPED", Severity::Warning,
+                               text);
+}
+
+} // namespace
 
 glm::mat4 Node::local_transform() const {
     if (has_matrix) return matrix;
@@ -113,17 +129,20 @@ bool select_scene(Scene& scene, std::int32_t scene_index, std::string& error) {
                     inst.world = inst.prev_world = w;
                     inst.world_bounds = mesh.local_bounds.transformed(w);
                     // Finite matrix x finite positions can still exceed the float range:
-                    // infinite bounds would print as null and frame nothing.
+                    // infinite bounds would print as null and frame nothing, and the
+                    // vertices would reach the rasterizer as infinities. The instance is
+                    // left out, by name; the rest of the scene is shown.
                     if (!is_finite(inst.world_bounds.min) || !is_finite(inst.world_bounds.max)) {
-                        error = "nodes[" + std::to_string(id) + "]" +
-                                (node.name.empty() ? "" : " \"" + node.name + "\"") +
-                                (rows ? " EXT_mesh_gpu_instancing row " +
-                                            std::to_string(rows->rows[r].file_row)
-                                      : std::string()) +
-                                ": world bounds of its mesh overflow the float range (" +
-                                (rows ? "node transform x instance row" : "node transform") +
-                                " x positions)";
-                        return false;
+                        left_out(scene,
+                                 "nodes[" + std::to_string(id) + "]" +
+                                     (node.name.empty() ? "" : " \"" + node.name + "\"") +
+                                     (rows ? " EXT_mesh_gpu_instancing row " +
+                                                 std::to_string(rows->rows[r].file_row)
+                                           : std::string()) +
+                                     ": world bounds of its mesh overflow the float range (" +
+                                     (rows ? "node transform x instance row" : "node transform") +
+                                     " x positions); the instance is not drawn");
+                        continue;
                     }
                     bounds.expand(inst.world_bounds);
                     instances.push_back(inst);

@@ -103,6 +103,17 @@ void check_min_max(Validation& v, std::size_t index, const Reader& r) {
         return r.is_float() ? static_cast<float>(declared) == static_cast<float>(actual)
                             : declared == actual;
     };
+    // Every value finite and inside both declared bounds: what the importer's range
+    // check would find too (its values are these, normalized by a monotonic map).
+    bool hold = bad == UINT64_MAX && a.has_min && a.has_max && !a.sparse;
+    for (std::uint32_t c = 0; c < n && hold; ++c) {
+        const Json& dmin = acc["min"][c];
+        const Json& dmax = acc["max"][c];
+        hold = dmin.is_number() && dmax.is_number() &&
+               (lo[c] >= dmin.get<double>() || same(dmin.get<double>(), lo[c])) &&
+               (hi[c] <= dmax.get<double>() || same(dmax.get<double>(), hi[c]));
+    }
+    if (hold && index < v.bounds_hold.size()) v.bounds_hold[index] = 1;
     for (int side = 0; side < 2; ++side) {
         const bool is_min = side == 0;
         if (!(is_min ? a.has_min : a.has_max)) continue;
@@ -328,6 +339,7 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r,
 } // namespace
 
 void validate_data(Validation& v, Buffers buffers) {
+    v.bounds_hold.assign(v.accessors.size(), 0);
     // The lengths the file declared (the importer may have rewritten the JSON since).
     for (std::size_t i = 0; i < v.declared_buffer_length.size() && i < buffers.size(); ++i) {
         const std::int64_t declared = v.declared_buffer_length[i];

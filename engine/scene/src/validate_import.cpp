@@ -19,7 +19,7 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 DocumentValidator::DocumentValidator(const Json& root, std::span<const std::uint8_t> file, bool glb,
                                      ValidationReport& report, std::string base_dir,
                                      const DocumentOrder* order)
-    : v_{report, root, order, false, false, {}, {}, {}, {}, {}, {}, {}} {
+    : v_{report, root, order, false, false, {}, {}, {}, {}, {}, {}, {}, {}} {
     const auto t0 = std::chrono::steady_clock::now();
     v_.glb = glb;
     v_.base_dir = std::move(base_dir);

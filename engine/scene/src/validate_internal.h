@@ -8,6 +8,7 @@
 
 #include <sherpa/scene/validation.h>
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -107,13 +108,28 @@ struct Validation {
     std::vector<std::uint8_t> length_unchecked;
     std::vector<AccessorRole> accessor_roles;
     std::vector<ViewRole> view_roles;
+    // Set by the data pass, per accessor: its values were all read (no sparse
+    // overrides) and every one is finite and inside its declared min and max. The
+    // importer's declared-range check believes it rather than scanning them again.
+    std::vector<std::uint8_t> bounds_hold;
+    // array()'s look-ups so far, by the key's address.
+    struct CachedArray {
+        const char* key = nullptr;
+        const Json* array = nullptr;
+    };
+    mutable std::array<CachedArray, 48> arrays{};
+    mutable std::size_t cached_arrays = 0;
     // Records a use of accessor `a` (and of its buffer view) at `pointer`.
     void use_accessor(std::int64_t a, AccessorRole role, ViewRole view_role,
                       const std::string& pointer);
     void use_view(std::int64_t view, ViewRole role, const std::string& pointer);
 
     void add(std::string_view code, Severity s, std::string pointer, std::string message);
-    // The array `key` of the root (an empty array when absent or not an array).
+    // Whether the report still takes messages (kMaxValidationMessages): hot loops ask
+    // before they build a message that add() would drop.
+    bool accepting() const { return report.messages.size() < kMaxValidationMessages; }
+    // The array `key` of the root (an empty array when absent or not an array). Keys
+    // are string literals: each is looked up in the root once and kept by address.
     const Json& array(const char* key) const;
     // Member `key` of `obj`, or null when `obj` is no object or lacks it.
     static const Json& member(const Json& obj, const char* key);
@@ -173,6 +189,8 @@ public:
     void check_data(std::span<const std::span<const std::uint8_t>> buffers,
                     std::span<const std::span<const std::uint8_t>> images = {});
     bool glb_has_bin() const { return v_.glb_has_bin; }
+    // After check_data: Validation::bounds_hold, per accessor.
+    std::vector<std::uint8_t> take_bounds_hold() { return std::move(v_.bounds_hold); }
 
 private:
     Validation v_;

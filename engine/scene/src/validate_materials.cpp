@@ -248,9 +248,15 @@ void validate_unused(Validation& v) {
         skins(v.size("skins")), textures(v.size("textures")), images(v.size("images")),
         materials(v.size("materials")), samplers(v.size("samplers")), cameras(v.size("cameras"));
     for (const Json& n : v.array("nodes")) {
-        mark(meshes, int_or(n, "mesh", -1));
-        mark(skins, int_or(n, "skin", -1));
-        mark(cameras, int_or(n, "camera", -1));
+        if (!n.is_object()) continue;
+        for (auto it = n.begin(); it != n.end(); ++it) { // one walk over the keys
+            const std::string& key = it.key();
+            std::vector<std::uint8_t>* used = key == "mesh"     ? &meshes
+                                              : key == "skin"   ? &skins
+                                              : key == "camera" ? &cameras
+                                                                : nullptr;
+            if (used && is_int(*it)) mark(*used, as_int(*it));
+        }
     }
     for (const Json& m : v.array("meshes"))
         for (const Json& p : Validation::member(m, "primitives")) {

@@ -44,6 +44,7 @@ void validate_nodes(Validation& v) {
     const std::size_t n = nodes.size();
     std::vector<std::int64_t> parent(n, -1);
     std::vector<std::uint8_t> is_joint(n, 0);
+    std::vector<std::uint8_t> skinned_node(n, 0); // a mesh and a skin, both resolved
     // Per mesh, whether it is skinned (computed once: many nodes share a mesh).
     const Json& meshes = v.array("meshes");
     std::vector<std::uint8_t> skinned_mesh(meshes.size());
@@ -55,12 +56,39 @@ void validate_nodes(Validation& v) {
         if (const std::int64_t s = ref(v, skin, "skeleton", "nodes"); s >= 0)
             is_joint[static_cast<std::size_t>(s)] = 1;
     }
+    static const Json null;
     for (std::size_t i = 0; i < n; ++i) {
         const Json& node = nodes[i];
         if (!node.is_object()) continue;
         // Built only for a message: most nodes have none.
         auto where = [i] { return ptr("/nodes", i); };
-        const Json& children = Validation::member(node, "children");
+        // The members this pass reads, in one walk over the node's keys (a look-up per
+        // member cost more than the checks on a file of many small nodes).
+        const Json *children_p = &null, *matrix_p = &null, *rotation_p = &null, *weights_p = &null,
+                   *mesh_p = &null, *skin_p = &null;
+        bool has_trs = false, has_skin = false, has_camera = false, has_extensions = false;
+        for (auto it = node.begin(); it != node.end(); ++it) {
+            const std::string& key = it.key();
+            if (key == "children")
+                children_p = &*it;
+            else if (key == "matrix")
+                matrix_p = &*it;
+            else if (key == "rotation")
+                rotation_p = &*it, has_trs = true;
+            else if (key == "weights")
+                weights_p = &*it;
+            else if (key == "translation" || key == "scale")
+                has_trs = true;
+            else if (key == "mesh")
+                mesh_p = &*it;
+            else if (key == "skin")
+                skin_p = &*it, has_skin = true;
+            else if (key == "camera")
+                has_camera = true;
+            else if (key == "extensions")
+                has_extensions = true;
+        }
+        const Json& children = *children_p;
         if (children.is_array())
             for (std::size_t k = 0; k < children.size(); ++k) {
                 if (!is_int(children[k])) continue;
@@ -73,9 +101,7 @@ void validate_nodes(Validation& v) {
                 else
                     p = static_cast<std::int64_t>(i);
             }
-        const Json& matrix = Validation::member(node, "matrix");
-        const bool has_trs =
-            node.contains("translation") || node.contains("rotation") || node.contains("scale");
+        const Json& matrix = *matrix_p;
         bool matrix_ok = matrix.is_array() && matrix.size() == 16;
         for (const Json& x : matrix) matrix_ok &= x.is_number();
         if (matrix_ok) {
@@ -95,7 +121,7 @@ void validate_nodes(Validation& v) {
                 v.add("NODE_MATRIX_NON_TRS", Severity::Error, ptr(where(), "matrix"),
                       "Matrix must be decomposable to TRS.");
         }
-        const Json& rotation = Validation::member(node, "rotation");
+        const Json& rotation = *rotation_p;
         if (rotation.is_array() && rotation.size() == 4) {
             double len2 = 0;
             bool in_range = true;
@@ -112,21 +138,26 @@ void validate_nodes(Validation& v) {
                 v.add("ROTATION_NON_UNIT", Severity::Error, ptr(where(), "rotation"),
                       "Rotation quaternion must be normalized.");
         }
-        const std::int64_t mesh = ref(v, node, "mesh", "meshes");
-        const std::int64_t skin = ref(v, node, "skin", "skins");
+        auto index_into = [](const Json& j, std::size_t size) -> std::int64_t {
+            const std::int64_t k = is_int(j) ? as_int(j) : -1;
+            return k >= 0 && static_cast<std::uint64_t>(k) < size ? k : -1;
+        };
+        const std::int64_t mesh = index_into(*mesh_p, meshes.size());
+        const std::int64_t skin = index_into(*skin_p, v.size("skins"));
+        skinned_node[i] = mesh >= 0 && skin >= 0;
         if (mesh >= 0) {
             const Json& m = meshes[static_cast<std::size_t>(mesh)];
             const bool skinned = skinned_mesh[static_cast<std::size_t>(mesh)] != 0;
-            if (node.contains("skin") && !skinned)
+            if (has_skin && !skinned)
                 v.add("NODE_SKIN_WITH_NON_SKINNED_MESH", Severity::Error, where(),
                       "Node has skin defined, but mesh has no joints data.");
-            if (!node.contains("skin") && skinned)
+            if (!has_skin && skinned)
                 v.add("NODE_SKINNED_MESH_WITHOUT_SKIN", Severity::Warning, where(),
                       "Node uses skinned mesh, but has no skin defined.");
             if (skin >= 0 && skinned && (has_trs || matrix_ok))
                 v.add("NODE_SKINNED_MESH_LOCAL_TRANSFORMS", Severity::Warning, where(),
                       "Local transforms will not affect a skinned mesh.");
-            const Json& weights = Validation::member(node, "weights");
+            const Json& weights = *weights_p;
             if (weights.is_array() && weights.size() != target_count(m))
                 v.add("NODE_WEIGHTS_INVALID", Severity::Error, ptr(where(), "weights"),
                       "The length of weights array (" + std::to_string(weights.size()) +
@@ -145,9 +176,10 @@ void validate_nodes(Validation& v) {
                         u.limit = joints;
             }
         }
-        const bool empty = !node.contains("camera") && !node.contains("children") && mesh < 0 &&
-                           !node.contains("skin") && !node.contains("extensions") && !is_joint[i];
-        if (empty) v.add("NODE_EMPTY", Severity::Information, where(), "Empty node encountered.");
+        const bool empty = !has_camera && children_p == &null && mesh < 0 && !has_skin &&
+                           !has_extensions && !is_joint[i];
+        if (empty && v.accepting())
+            v.add("NODE_EMPTY", Severity::Information, where(), "Empty node encountered.");
     }
     // Loops: walk up from every node; a walk longer than n has met a cycle.
     std::vector<std::uint8_t> in_loop(n, 0);
@@ -168,8 +200,7 @@ void validate_nodes(Validation& v) {
         return i;
     };
     for (std::size_t i = 0; i < n; ++i)
-        if (parent[i] >= 0 && !in_loop[i] && nodes[i].is_object() &&
-            ref(v, nodes[i], "skin", "skins") >= 0 && ref(v, nodes[i], "mesh", "meshes") >= 0)
+        if (parent[i] >= 0 && !in_loop[i] && skinned_node[i])
             v.add("NODE_SKINNED_MESH_NON_ROOT", Severity::Warning, ptr("/nodes", i),
                   "Node with a skinned mesh is not root. Parent transforms will not affect a "
                   "skinned mesh.");

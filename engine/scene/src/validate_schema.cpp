@@ -4,6 +4,7 @@
 #include "validate_internal.h"
 #include "validate_schema_table.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <initializer_list>
@@ -15,6 +16,20 @@ using schema::Kind;
 using schema::kind_named;
 using schema::Prop;
 using schema::T;
+
+// Per element of `a`, whether an earlier element holds the same integer (sorted, so
+// an array of 100k indices costs n log n, not n^2).
+std::vector<std::uint8_t> duplicates(const Json& a) {
+    std::vector<std::pair<std::int64_t, std::size_t>> values;
+    values.reserve(a.size());
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (is_int(a[i])) values.emplace_back(as_int(a[i]), i);
+    std::sort(values.begin(), values.end());
+    std::vector<std::uint8_t> dup(a.size(), 0);
+    for (std::size_t k = 1; k < values.size(); ++k)
+        if (values[k].first == values[k - 1].first) dup[values[k].second] = 1;
+    return dup;
+}
 
 std::string short_text(const Json& j) {
     std::string s = j.dump(-1, ' ', false, Json::error_handler_t::replace);
@@ -104,16 +119,15 @@ struct Schema {
         case T::IndexArray: {
             if (!j.is_array()) return type_mismatch(j, "array");
             if (j.empty()) add("EMPTY_ENTITY", Severity::Error, at, "Entity cannot be empty.");
-            std::vector<std::int64_t> seen;
+            const std::vector<std::uint8_t> dup = duplicates(j);
+            const std::size_t size = pr.target ? v.size(pr.target) : SIZE_MAX;
             for (std::size_t i = 0; i < j.size(); ++i) {
+                // The usual element, a resolved index seen once, needs no pointer.
+                if (!dup[i] && j[i].is_number_unsigned() && j[i].get<std::uint64_t>() < size)
+                    continue;
                 const Scope element(at, i);
                 index(j[i], pr.target);
-                if (!is_int(j[i])) continue;
-                const std::int64_t x = as_int(j[i]);
-                bool dup = false;
-                for (std::int64_t s : seen) dup |= s == x;
-                if (dup) add("DUPLICATE_ELEMENTS", Severity::Error, at, "Duplicate element.");
-                if (seen.size() < 4096) seen.push_back(x); // keeps the check linear on big arrays
+                if (dup[i]) add("DUPLICATE_ELEMENTS", Severity::Error, at, "Duplicate element.");
             }
             break;
         }

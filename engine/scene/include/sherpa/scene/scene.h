@@ -290,7 +290,9 @@ glm::mat4 instance_transform(const Scene& scene, const MeshInstance& instance);
 
 // Rebuilds the flattened data (instances, placed lights/cameras, bounds) for
 // `scene_index`. Returns false with `error` set if the index is out of range or a
-// transform is not finite; the scene is unchanged then.
+// transform is not finite; the scene is unchanged then. An instance whose world bounds
+// overflow the float range (finite transforms times finite positions) is left out, with
+// a SHERPA_INSTANCE_SKIPPED warning in `scene.validation` and its text in `warnings`.
 bool select_scene(Scene& scene, std::int32_t scene_index, std::string& error);
 
 } // namespace sherpa

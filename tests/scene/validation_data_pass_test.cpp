@@ -1,0 +1,194 @@
+// The validator's data pass: its typed kernels against plain per-value loops (every
+// stride, count and non-finite value they can meet), and what it hands the importer
+// (Validation::bounds_hold, which spares the importer a second scan of the same bytes).
+#include <sherpa/scene/scene_loader.h>
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "validate_internal.h" // engine/scene/src: DocumentValidator
+#include "validate_kernels.h"
+
+namespace {
+
+namespace kernels = sherpa::detail::kernels;
+
+// `count` elements of N components of C, `stride` bytes apart, from `values` (flat).
+template <typename C>
+std::vector<std::uint8_t> strided(const std::vector<C>& values, std::uint32_t n,
+                                  std::uint64_t stride) {
+    const std::uint64_t count = values.size() / n;
+    std::vector<std::uint8_t> bytes(count ? (count - 1) * stride + n * sizeof(C) : 0, 0xAB);
+    for (std::uint64_t i = 0; i < count; ++i)
+        std::memcpy(bytes.data() + i * stride, &values[i * n], n * sizeof(C));
+    return bytes;
+}
+
+template <typename C, std::uint32_t N> void check_bounds(std::mt19937& rng, bool non_finite) {
+    for (std::uint64_t count : {0u, 1u, 15u, 16u, 17u, 33u, 100u}) {
+        for (std::uint64_t pad : {0u, 4u}) {
+            std::vector<C> values(count * N);
+            std::uniform_real_distribution<double> d(-1000, 1000);
+            for (C& x : values) x = static_cast<C>(d(rng));
+            if (non_finite && count) {
+                const double special[] = {NAN, INFINITY, -INFINITY};
+                values[rng() % values.size()] = static_cast<C>(special[rng() % 3]);
+            }
+            const std::uint64_t stride = N * sizeof(C) + pad;
+            const auto bytes = strided(values, N, stride);
+            C lo[N], hi[N];
+            const bool finite = kernels::bounds<C, N>(bytes.data(), count, stride, lo, hi);
+            bool want_finite = true;
+            for (C x : values) want_finite &= std::isfinite(static_cast<double>(x));
+            EXPECT_EQ(finite, want_finite) << "count " << count << " stride " << stride;
+            if (!want_finite) continue; // the caller takes the exact path
+            for (std::uint32_t c = 0; c < N && count; ++c) {
+                C l = values[c], h = values[c];
+                for (std::uint64_t i = 0; i < count; ++i) {
+                    l = std::min(l, values[i * N + c]);
+                    h = std::max(h, values[i * N + c]);
+                }
+                EXPECT_EQ(lo[c], l) << "component " << c << " count " << count;
+                EXPECT_EQ(hi[c], h) << "component " << c << " count " << count;
+            }
+        }
+    }
+}
+
+TEST(DataPassKernels, BoundsMatchAPlainLoop) {
+    std::mt19937 rng(7);
+    for (bool non_finite : {false, true}) {
+        check_bounds<float, 1>(rng, non_finite);
+        check_bounds<float, 2>(rng, non_finite);
+        check_bounds<float, 3>(rng, non_finite);
+        check_bounds<float, 4>(rng, non_finite);
+        check_bounds<float, 16>(rng, non_finite);
+    }
+    check_bounds<std::int8_t, 3>(rng, false);
+    check_bounds<std::uint16_t, 1>(rng, false);
+    check_bounds<std::int16_t, 4>(rng, false);
+    check_bounds<std::uint32_t, 1>(rng, false);
+}
+
+template <typename I> void check_indices(std::mt19937& rng) {
+    const I restart = std::numeric_limits<I>::max();
+    for (std::uint64_t count : {0u, 1u, 2u, 3u, 4u, 9u, 10u, 300u}) {
+        for (std::uint64_t vertices : {0u, 1u, 5u, 200u}) {
+            for (int variant = 0; variant < 3; ++variant) {
+                std::vector<I> values(count);
+                for (I& x : values)
+                    x = static_cast<I>(vertices ? rng() % (vertices + 1) : rng() % 3);
+                if (variant == 1 && count) values[rng() % count] = restart;
+                if (variant == 2 && count) values[count / 2] = static_cast<I>(vertices);
+                for (bool triangles : {false, true}) {
+                    const auto bytes = strided(values, 1, sizeof(I));
+                    const auto s =
+                        kernels::indices<I>(bytes.data(), count, sizeof(I), vertices, triangles);
+                    kernels::IndexScan want;
+                    for (std::uint64_t i = 0; i < count; ++i) {
+                        if (values[i] >= vertices && want.first_over == UINT64_MAX)
+                            want.first_over = i;
+                        if (values[i] == restart && want.first_restart == UINT64_MAX)
+                            want.first_restart = i;
+                        if (triangles && i % 3 == 2)
+                            want.degenerate += values[i - 2] == values[i - 1] ||
+                                               values[i - 1] == values[i] ||
+                                               values[i] == values[i - 2];
+                    }
+                    EXPECT_EQ(s.first_over, want.first_over) << count << " " << vertices;
+                    EXPECT_EQ(s.first_restart, want.first_restart) << count << " " << vertices;
+                    EXPECT_EQ(s.degenerate, want.degenerate) << count << " " << vertices;
+                }
+            }
+        }
+    }
+}
+
+TEST(DataPassKernels, IndicesMatchAPlainLoop) {
+    std::mt19937 rng(11);
+    check_indices<std::uint8_t>(rng);
+    check_indices<std::uint16_t>(rng);
+    check_indices<std::uint32_t>(rng);
+}
+
+// Unit vectors: lengths on both sides of the tolerance, by a hair, and non-finite ones
+// (not reported: the Khronos validator skips them), with and without a sign.
+TEST(DataPassKernels, UnitVectorsMatchAPlainLoop) {
+    const double tol = 0.00674;
+    const double lengths[] = {
+        1.0, 1 + tol * 0.999, 1 + tol * 1.001, 1 - tol * 0.999, 1 - tol * 1.001, 0.5,
+        NAN, INFINITY};
+    for (double bad : lengths)
+        for (float w : {1.0f, -1.0f, 0.5f})
+            for (std::size_t at : {0u, 5u, 19u})
+                for (bool sign : {false, true}) {
+                    std::vector<float> values;
+                    for (std::size_t i = 0; i < 20; ++i) {
+                        const double len = i == at ? bad : 1.0;
+                        const float x = static_cast<float>(len * 0.6), y = 0,
+                                    z = static_cast<float>(len * 0.8);
+                        values.insert(values.end(), {x, y, z, i == at ? w : 1.0f});
+                    }
+                    const auto bytes = strided(values, 4, 16);
+                    const auto s = kernels::unit_vectors(bytes.data(), 20, 16, tol, sign);
+                    kernels::UnitScan want;
+                    for (std::size_t i = 0; i < 20; ++i) {
+                        const double x = values[i * 4], y = values[i * 4 + 1],
+                                     z = values[i * 4 + 2];
+                        const double len = std::sqrt(x * x + y * y + z * z);
+                        if (std::isfinite(len) && std::abs(len - 1) > tol &&
+                            want.first_non_unit == UINT64_MAX)
+                            want.first_non_unit = i;
+                        const float wi = values[i * 4 + 3];
+                        if (sign && wi != 1 && wi != -1 && want.first_bad_sign == UINT64_MAX)
+                            want.first_bad_sign = i;
+                    }
+                    EXPECT_EQ(s.first_non_unit, want.first_non_unit) << bad << " at " << at;
+                    EXPECT_EQ(s.first_bad_sign, want.first_bad_sign) << w << " at " << at;
+                }
+}
+
+// The data pass tells the importer which accessors' values it found finite and inside
+// their declared bounds; the importer skips its own scan of exactly those.
+TEST(DataPass, BoundsHoldOnlyForValuesReadInFullAndInside) {
+    // Accessor 0: inside; 1: a value above max; 2: a NaN; 3: sparse; 4: no min/max;
+    // 5: declared min a float rounding away from the data (the Khronos comparison is
+    // in single precision: still inside).
+    const float data[] = {0, 1, 2, 3, 4, 5, NAN, 1, 0.1f, 0.2f};
+    nlohmann::json root = nlohmann::json::parse(R"({
+        "asset": {"version": "2.0"},
+        "buffers": [{"byteLength": 40}],
+        "bufferViews": [{"buffer": 0, "byteLength": 40}],
+        "accessors": [
+            {"bufferView": 0, "byteOffset": 0, "componentType": 5126, "count": 2,
+             "type": "SCALAR", "min": [0], "max": [1]},
+            {"bufferView": 0, "byteOffset": 8, "componentType": 5126, "count": 2,
+             "type": "SCALAR", "min": [2], "max": [2.5]},
+            {"bufferView": 0, "byteOffset": 24, "componentType": 5126, "count": 2,
+             "type": "SCALAR", "min": [1], "max": [1]},
+            {"bufferView": 0, "componentType": 5126, "count": 2, "type": "SCALAR",
+             "min": [0], "max": [5], "sparse": {"count": 1,
+               "indices": {"bufferView": 0, "componentType": 5125},
+               "values": {"bufferView": 0, "byteOffset": 20}}},
+            {"bufferView": 0, "componentType": 5126, "count": 2, "type": "SCALAR"},
+            {"bufferView": 0, "byteOffset": 32, "componentType": 5126, "count": 2,
+             "type": "SCALAR", "min": [0.1], "max": [0.2]}
+        ]})");
+    sherpa::ValidationReport report;
+    sherpa::detail::DocumentValidator validator(root, {}, false, report);
+    const std::span<const std::uint8_t> buffer(reinterpret_cast<const std::uint8_t*>(data),
+                                               sizeof data);
+    validator.check_data(std::span(&buffer, 1));
+    const std::vector<std::uint8_t> hold = validator.take_bounds_hold();
+    ASSERT_EQ(hold.size(), 6u);
+    EXPECT_EQ(hold, (std::vector<std::uint8_t>{1, 0, 0, 0, 0, 1}));
+}
+
+} // namespace

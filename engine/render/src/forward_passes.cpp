@@ -28,7 +28,11 @@ void ForwardPass::record(FrameContext& f) {
     const auto view = static_cast<std::uint32_t>(f.settings.view);
     CullStats& tally = f.slot.culling.camera_stats();
     if (alpha_ == AlphaMode::Blend) {
-        set_depth(f.cmd, VK_COMPARE_OP_GREATER, false);
+        // One rule for blended surfaces in both renderers (docs/raytracing/README.md): the
+        // lit view blends them over what is behind, back to front; every data view shows
+        // the nearest surface as the ray tracer's primary rays do, so blended surfaces
+        // write depth there and each pixel keeps the nearest one's values.
+        set_depth(f.cmd, VK_COMPARE_OP_GREATER, f.settings.view != DebugView::Lit);
         draw_blended(f, DrawPipeline{PipelineId::Count, view, true}, tally);
         return;
     }

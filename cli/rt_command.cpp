@@ -252,9 +252,9 @@ int run_rt(Args args) {
             gpu::RendererOptions renderer_options;
             renderer_options.ray_tracing = true;
             renderer_options.acceleration = settings;
-            renderer_options.textures.missing = gpu::MissingTextures::Neutral;
             gpu::Renderer renderer(context, renderer_options);
-            renderer.load(*loaded.scene, no_textures);
+            renderer.load(*loaded.scene, no_textures,
+                          {.missing_textures = gpu::MissingTextures::Neutral});
             report(*renderer.resident().acceleration);
         } else {
             gpu::ResourceManager resources(context);

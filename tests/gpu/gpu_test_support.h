@@ -63,8 +63,9 @@ struct GpuEnvironment {
         gpu::ContextOptions options;
         options.validation = true; // every GPU test runs under the Khronos layer
         context = std::make_unique<gpu::Context>(options);
-        renderer = std::make_unique<gpu::Renderer>(*context);
-        renderer->set_texture_settings(test_texture_settings());
+        gpu::RendererOptions renderer_options;
+        renderer_options.textures = test_texture_settings();
+        renderer = std::make_unique<gpu::Renderer>(*context, renderer_options);
     }
     static GpuEnvironment& get() {
         static GpuEnvironment env;
@@ -85,7 +86,7 @@ protected:
     void TearDown() override { expect_no_validation_since(context(), seen_); }
 
     // The frame `s` asks for, as RGBA8 rows (top first).
-    std::vector<std::uint8_t> draw(const gpu::RenderSettings& s) {
+    std::vector<std::uint8_t> draw(const gpu::FrameRequest& s) {
         std::vector<std::uint8_t> rgba;
         renderer().render(s, &rgba);
         return rgba;

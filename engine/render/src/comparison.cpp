@@ -99,8 +99,8 @@ double ComparisonStats::percentile_999() const {
     return 1.0;
 }
 
-ComparisonFrame::ComparisonFrame(Renderer& a, const RenderSettings& a_settings, Renderer& b,
-                                 const RenderSettings& b_settings,
+ComparisonFrame::ComparisonFrame(Renderer& a, const FrameRequest& a_settings, Renderer& b,
+                                 const FrameRequest& b_settings,
                                  const ComparisonSettings& compare, float resolution_scale)
     : a_(a), b_(b), a_settings_(a_settings), b_settings_(b_settings), compare_(compare),
       resolution_scale_(resolution_scale) {
@@ -123,8 +123,8 @@ void ComparisonFrame::wait_for_slot(std::uint32_t slot) {
 
 // Both sides at the (scaled) target size into their renderers' side images.
 static CompositeInputs record_sides(VkCommandBuffer cmd, std::uint32_t slot, Renderer::Impl& a,
-                                    RenderSettings& a_settings, Renderer::Impl& b,
-                                    RenderSettings& b_settings, std::uint32_t width,
+                                    FrameRequest& a_settings, Renderer::Impl& b,
+                                    FrameRequest& b_settings, std::uint32_t width,
                                     std::uint32_t height) {
     a_settings.width = b_settings.width = width;
     a_settings.height = b_settings.height = height;
@@ -163,8 +163,8 @@ void ComparisonFrame::submitted(std::uint32_t slot, std::uint64_t submission) {
     b_.resources().collect_garbage(); // the presenter collects a's
 }
 
-ComparisonStats render_comparison(Renderer& a, const RenderSettings& a_settings, Renderer& b,
-                                  const RenderSettings& b_settings,
+ComparisonStats render_comparison(Renderer& a, const FrameRequest& a_settings, Renderer& b,
+                                  const FrameRequest& b_settings,
                                   const ComparisonSettings& compare,
                                   std::vector<std::uint8_t>* rgba) {
     const std::uint32_t width = a_settings.width, height = a_settings.height;

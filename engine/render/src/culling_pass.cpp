@@ -8,7 +8,7 @@
 // vkCmdDrawIndexedIndirectCount, and does no per-object CPU work: its statistics
 // come from the indirect commands read back after the frame. Blended instances
 // (drawn one by one in sorted order, never in shadows) use the CPU test in both.
-// Check mode (RenderSettings::cull_check) also runs the CPU test on the GPU path,
+// Check mode (FrameRequest::cull_check) also runs the CPU test on the GPU path,
 // reads back the GPU's visible flags and counts the differences.
 #include "passes.h"
 
@@ -276,7 +276,7 @@ void CullingPass::prepare_buffers(FrameContext& f, std::uint32_t instances) {
 void CullingPass::record(FrameContext& f) {
     FrameSlot& slot = f.slot;
     FrameCulling& fc = slot.culling;
-    const RenderSettings& settings = f.settings;
+    const FrameRequest& settings = f.settings;
     fc.path = CullPath::None;
     fc.check = false;
     fc.count = 0;

@@ -123,7 +123,7 @@ struct SceneCulling {
     std::vector<std::uint32_t> gpu_object_batch; // per GPU culler object: its batch
     // The FrameSlot::pose_key whose posed bounds `boxes` holds; none: the bounds as loaded.
     std::optional<std::uint64_t> boxes_pose;
-    // Visibility (RenderSettings::hidden_nodes, subtree rule applied), per GPU
+    // Visibility (SceneSetup::hidden_nodes, subtree rule applied), per GPU
     // instance: hidden instances are drawn by no pass. While any is hidden, `shown`
     // holds per draw group its shown instances compacted at the group's first
     // instance (what unculled draws and overlays index) and group_shown their count.
@@ -143,7 +143,7 @@ struct FrameContext {
     FrameSlot& slot;
     std::uint32_t slot_index; // which frame in flight: the GPU cullers' block
     Pipelines& pipelines;
-    const RenderSettings& settings;
+    const FrameRequest& settings;
     const RenderTarget& target;
     Context& context;
     ResourceManager& resources;

@@ -26,7 +26,7 @@ Aabb Renderer::Impl::shadow_bounds(const FrameContext& frame) const {
 
 // The first directional light is the main (shadowed) one; with no scene lights at
 // all a default sun stands in. Shared with the ray tracer's shadow rays.
-MainSun main_sun(const Scene& lighting, const RenderSettings& settings) {
+MainSun main_sun(const Scene& lighting, const FrameRequest& settings) {
     MainSun sun;
     for (std::size_t i = 0; i < lighting.placed_lights.size(); ++i) {
         const PlacedLight& pl = lighting.placed_lights[i];
@@ -49,7 +49,7 @@ MainSun main_sun(const Scene& lighting, const RenderSettings& settings) {
 
 // Lights, sun, ambient, environment and display transform of a lit frame: what the
 // raster's frame constants and the path tracer's share (params.y: the light count).
-GPUFrameData Renderer::Impl::lighting_constants(const RenderSettings& settings) const {
+GPUFrameData Renderer::Impl::lighting_constants(const FrameRequest& settings) const {
     const Scene& info = lighting_;
     GPUFrameData f{};
     const MainSun sun = main_sun(info, settings);
@@ -91,7 +91,7 @@ GPUFrameData Renderer::Impl::lighting_constants(const RenderSettings& settings) 
 
 void Renderer::Impl::write_frame_data(FrameContext& frame) {
     FrameSlot& slot = frame.slot;
-    const RenderSettings& settings = frame.settings;
+    const FrameRequest& settings = frame.settings;
     const Scene& info = lighting_;
     slot.camera = resolve_camera(settings.camera, info, frame.aspect());
     GPUFrameData f = lighting_constants(settings);

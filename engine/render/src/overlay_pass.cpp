@@ -15,7 +15,7 @@ namespace sherpa::gpu {
 void OverlayPass::record(FrameContext& f) {
     if (!f.scene) return;
     f.slot.lines_used = 0;
-    const RenderSettings& s = f.settings;
+    const FrameRequest& s = f.settings;
     if (s.overlays == 0) return;
     VkCommandBuffer cmd = f.cmd;
     Pipelines& p = f.pipelines;

@@ -32,7 +32,7 @@ void blit_to_target(VkCommandBuffer cmd, VkImage from, VkExtent2D from_size,
 
 } // namespace
 
-PresentedFrame::PresentedFrame(Renderer& renderer, const RenderSettings& settings,
+PresentedFrame::PresentedFrame(Renderer& renderer, const FrameRequest& settings,
                                float resolution_scale)
     : renderer_(renderer), settings_(settings), resolution_scale_(resolution_scale) {
     renderer_.impl_->check_drawable(settings_);

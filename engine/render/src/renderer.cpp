@@ -168,7 +168,9 @@ Pipelines& Renderer::Impl::pipelines_for(VkFormat format) {
     return *p;
 }
 
-void Renderer::Impl::load(const Scene& source, std::unique_ptr<GpuScene> gpu_scene) {
+void Renderer::Impl::load(const Scene& source, std::unique_ptr<GpuScene> gpu_scene,
+                          const SceneSetup& scene_setup) {
+    setup = scene_setup;
     scene = std::move(gpu_scene);
     if (options.ray_tracing) {
         if (!context.info().ray_tracing_enabled)
@@ -191,7 +193,7 @@ void Renderer::Impl::load(const Scene& source, std::unique_ptr<GpuScene> gpu_sce
     if (acceleration && acceleration->posed()) {
         FrameSlot& slot = *slots_[next_slot_];
         wait_slot(slot);
-        pose_acceleration(slot, RenderSettings{});
+        pose_acceleration(slot, FrameRequest{});
     }
 }
 
@@ -232,7 +234,7 @@ void Renderer::Impl::wait_slot(FrameSlot& slot) {
     if (slot.submission) resources->timeline().wait_for(slot.submission);
 }
 
-FrameStats Renderer::Impl::render(const RenderSettings& settings, std::vector<std::uint8_t>* rgba) {
+FrameStats Renderer::Impl::render(const FrameRequest& settings, std::vector<std::uint8_t>* rgba) {
     if (settings.width == 0 || settings.height == 0 || settings.width > 16384 ||
         settings.height > 16384)
         throw GpuError("render size " + std::to_string(settings.width) + "x" +
@@ -309,27 +311,31 @@ Renderer::Renderer(Context& context, const RendererOptions& options)
 
 Renderer::~Renderer() = default;
 
-void Renderer::load(const Scene& scene, StreamPolicy policy) {
+void Renderer::load(const Scene& scene, const SceneSetup& setup) {
     unload();
     Impl& r = *impl_;
-    r.load(scene, std::make_unique<GpuScene>(*r.resources, *r.bindless, scene, r.options.textures,
-                                             policy));
+    r.load(scene,
+           std::make_unique<GpuScene>(*r.resources, *r.bindless, scene, r.options.textures,
+                                      setup.streams, setup.missing_textures),
+           setup);
 }
 
 void Renderer::load(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
-                    StreamPolicy policy) {
+                    const SceneSetup& setup) {
     unload();
     Impl& r = *impl_;
-    r.load(scene, std::make_unique<GpuScene>(*r.resources, *r.bindless, scene, std::move(textures),
-                                             policy, r.options.textures.missing));
+    r.load(scene,
+           std::make_unique<GpuScene>(*r.resources, *r.bindless, scene, std::move(textures),
+                                      setup.streams, setup.missing_textures),
+           setup);
 }
 
-const TextureSettings& Renderer::texture_settings() const {
-    return impl_->options.textures;
+const SceneSetup& Renderer::setup() const {
+    return impl_->setup;
 }
 
-void Renderer::set_texture_settings(const TextureSettings& settings) {
-    impl_->options.textures = settings;
+void Renderer::set_hidden_nodes(std::shared_ptr<const std::vector<bool>> hidden) {
+    impl_->setup.hidden_nodes = std::move(hidden);
 }
 
 void Renderer::unload() {
@@ -340,7 +346,7 @@ const GpuScene* Renderer::scene() const {
     return impl_->scene.get();
 }
 
-FrameStats Renderer::render(const RenderSettings& settings, std::vector<std::uint8_t>* rgba) {
+FrameStats Renderer::render(const FrameRequest& settings, std::vector<std::uint8_t>* rgba) {
     return impl_->render(settings, rgba);
 }
 

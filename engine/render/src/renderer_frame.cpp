@@ -25,8 +25,8 @@ static_assert(kAfterOverlays + 1 == kTimestampCount);
 } // namespace
 
 void Renderer::Impl::record_frame(VkCommandBuffer cmd, std::uint32_t index,
-                                  const RenderTarget& target, const RenderSettings& settings) {
-    apply_visibility(settings, false);
+                                  const RenderTarget& target, const FrameRequest& settings) {
+    apply_visibility(false);
     FrameSlot& slot = *slots_.at(index);
     wait_slot(slot);
     // Frames nobody read the results of (the swapchain path) still reach the

@@ -22,7 +22,7 @@ struct MainSun {
     glm::vec3 radiance{0.0f};
     std::int64_t placed_light = -1; // its Scene::placed_lights index; -1: default sun or none
 };
-MainSun main_sun(const Scene& lighting, const RenderSettings& settings);
+MainSun main_sun(const Scene& lighting, const FrameRequest& settings);
 
 class Renderer::Impl {
 public:
@@ -30,14 +30,14 @@ public:
     Impl(Context& context, const RendererOptions& options);
     ~Impl();
 
-    void load(const Scene& scene, std::unique_ptr<GpuScene> gpu_scene);
+    void load(const Scene& scene, std::unique_ptr<GpuScene> gpu_scene, const SceneSetup& setup);
     void unload();
-    FrameStats render(const RenderSettings& settings, std::vector<std::uint8_t>* rgba);
+    FrameStats render(const FrameRequest& settings, std::vector<std::uint8_t>* rgba);
     // Swapchain path: waits until frame slot `slot` is free, records the frame into
     // `cmd` (already begun) drawing into `target`. The caller submits `cmd` with the
     // value from `resources().begin_submission()` and passes it to finish_frame().
     void record_frame(VkCommandBuffer cmd, std::uint32_t slot, const RenderTarget& target,
-                      const RenderSettings& settings);
+                      const FrameRequest& settings);
     void finish_frame(std::uint32_t slot, std::uint64_t submission);
     // Results of the last completed frame recorded in `slot` (waits for it).
     FrameStats slot_stats(std::uint32_t slot);
@@ -50,10 +50,10 @@ public:
     // `settings` (its width x height) with frame slot `slot` into an image of this
     // renderer that shaders can read, returned with its layout. The caller submits
     // and calls finish_frame() as for record_frame().
-    SideImage record_side(VkCommandBuffer cmd, std::uint32_t slot, const RenderSettings& settings);
+    SideImage record_side(VkCommandBuffer cmd, std::uint32_t slot, const FrameRequest& settings);
     // Throws GpuError for settings this renderer refuses to draw (the ray tracer's
     // views, overlays, poses), before anything is recorded.
-    void check_drawable(const RenderSettings& settings) const;
+    void check_drawable(const FrameRequest& settings) const;
     // The compositing pass (comparison_pass.h), made on first use.
     ComparisonPass& comparison();
     // Offscreen comparisons (comparison.cpp): frame slot `slot`'s command recorder,
@@ -67,6 +67,7 @@ public:
 
     Context& context;
     RendererOptions options;
+    SceneSetup setup; // of the scene loaded (or to be loaded)
     std::unique_ptr<ResourceManager> resources;
     std::unique_ptr<BindlessTable> bindless;
     std::unique_ptr<GpuScene> scene;
@@ -89,7 +90,7 @@ private:
     // Camera, lights, cascades and view into the slot's GPUFrameData; sets
     // f.cascades to the cascades that must be drawn this frame (frame_data.cpp).
     void write_frame_data(FrameContext& f);
-    GPUFrameData lighting_constants(const RenderSettings& settings) const;
+    GPUFrameData lighting_constants(const FrameRequest& settings) const;
     Aabb shadow_bounds(const FrameContext& f) const;
     void create_frame_sets();
     void bind_frame_set(FrameSlot& slot);
@@ -106,23 +107,24 @@ private:
     void begin_rt_side(VkCommandBuffer cmd, FrameSlot& slot);
     void end_rt_side(VkCommandBuffer cmd, FrameSlot& slot);
     FrameStats read_rt_stats(FrameSlot& slot);
-    // RenderSettings::renderer = RayTraced (renderer_rt.cpp).
-    FrameStats render_rt(const RenderSettings& settings, std::vector<std::uint8_t>* rgba);
+    // FrameRequest::renderer = RayTraced (renderer_rt.cpp).
+    FrameStats render_rt(const FrameRequest& settings, std::vector<std::uint8_t>* rgba);
     // Writes the pose of `settings` into `slot` (not in flight) and, when the
     // acceleration structures hold another pose, poses them; true when it did.
-    bool pose_acceleration(FrameSlot& slot, const RenderSettings& settings);
-    void check_rt(const RenderSettings& settings) const;
+    bool pose_acceleration(FrameSlot& slot, const FrameRequest& settings);
+    void check_rt(const FrameRequest& settings) const;
     // The ray tracer's frame of `settings` (the TLAS must exist).
-    RayTracedFrame rt_frame(const RenderSettings& settings, const FrameSlot& data_slot) const;
-    SideImage record_rt_side(VkCommandBuffer cmd, FrameSlot& slot, const RenderSettings& settings);
+    RayTracedFrame rt_frame(const FrameRequest& settings, const FrameSlot& data_slot) const;
+    SideImage record_rt_side(VkCommandBuffer cmd, FrameSlot& slot, const FrameRequest& settings);
     // The path tracer's samples of `settings` (view lit) into `cmd`, its constants into
     // `slot` (no frame in flight): continues the accumulation or starts it over.
-    PathTraceFrame record_path(VkCommandBuffer cmd, FrameSlot& slot, const RenderSettings& settings,
+    PathTraceFrame record_path(VkCommandBuffer cmd, FrameSlot& slot, const FrameRequest& settings,
                                bool readback);
 
-    // RenderSettings::hidden_nodes into the culling (and, with `rt`, the TLAS: every
-    // slot must be idle) when it differs from the mask applied last (renderer.cpp).
-    void apply_visibility(const RenderSettings& settings, bool rt);
+    // SceneSetup::hidden_nodes into the culling (and, with `rt`, the TLAS: every
+    // slot must be idle) when it differs from the mask applied last
+    // (renderer_visibility.cpp).
+    void apply_visibility(bool rt);
     void load_visibility(const Scene& source); // a scene was loaded
 
     std::unique_ptr<RtViewPass> rt_views_;

@@ -26,7 +26,7 @@ constexpr float kMaxSampleRadiance = 1e20f;
 } // namespace
 
 PathTraceFrame Renderer::Impl::record_path(VkCommandBuffer cmd, FrameSlot& slot,
-                                           const RenderSettings& settings, bool readback) {
+                                           const FrameRequest& settings, bool readback) {
     if (!path_) path_ = std::make_unique<PathTracePass>(context, *resources, bindless->layout());
     if (path_environment_ != environment_generation_) {
         path_->set_distribution(environment_distribution_ ? *environment_distribution_

@@ -1,4 +1,4 @@
-// The ray-traced frame (RenderSettings::renderer = RayTraced): primary rays through
+// The ray-traced frame (FrameRequest::renderer = RayTraced): primary rays through
 // the scene's acceleration structures, built on load, drawing the surface-data
 // debug views with the rasterizer's formulas (rt_view_pass.h), or the path-traced lit
 // view (path_trace_pass.h, renderer_path.cpp). Views and overlays the ray tracer has
@@ -29,7 +29,7 @@ std::string ray_traced_view_names() {
 
 } // namespace
 
-bool Renderer::Impl::pose_acceleration(FrameSlot& slot, const RenderSettings& settings) {
+bool Renderer::Impl::pose_acceleration(FrameSlot& slot, const FrameRequest& settings) {
     if (!acceleration || !pose_.active()) return false;
     pose_.record(slot, settings, scene != nullptr);
     // The structures hold this pose already (a paused timeline, the default pose).
@@ -46,7 +46,7 @@ bool Renderer::Impl::pose_acceleration(FrameSlot& slot, const RenderSettings& se
     return true;
 }
 
-void Renderer::Impl::check_rt(const RenderSettings& settings) const {
+void Renderer::Impl::check_rt(const FrameRequest& settings) const {
     if (!acceleration)
         throw GpuError("the ray tracer needs the scene's acceleration structures: create the "
                        "renderer with RendererOptions::ray_tracing on a device that ray traces");
@@ -59,7 +59,7 @@ void Renderer::Impl::check_rt(const RenderSettings& settings) const {
         throw GpuError("the ray tracer draws no overlays or highlights (raster only)");
 }
 
-RayTracedFrame Renderer::Impl::rt_frame(const RenderSettings& settings,
+RayTracedFrame Renderer::Impl::rt_frame(const FrameRequest& settings,
                                         const FrameSlot& data_slot) const {
     const CameraView camera =
         resolve_camera(settings.camera, lighting_, float(settings.width) / float(settings.height));
@@ -87,14 +87,14 @@ RayTracedFrame Renderer::Impl::rt_frame(const RenderSettings& settings,
     return f;
 }
 
-FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
+FrameStats Renderer::Impl::render_rt(const FrameRequest& settings,
                                      std::vector<std::uint8_t>* rgba) {
     check_rt(settings);
     // The shadow-error view compares with the rasterizer's cascades at this camera:
     // its shadow view is drawn first (cascades and frame constants in that slot).
     const std::uint32_t raster_slot = next_slot_;
     if (settings.view == DebugView::ShadowError) {
-        RenderSettings raster = settings;
+        FrameRequest raster = settings;
         raster.renderer = RendererKind::Raster;
         raster.view = DebugView::Shadow;
         render(raster, nullptr);
@@ -102,14 +102,14 @@ FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
     // Its descriptor set is rewritten per frame, and the structures are posed below:
     // no earlier frame may be in flight.
     for (auto& s : slots_) wait_slot(*s);
-    apply_visibility(settings, true);
+    apply_visibility(true);
     if (!rt_views_)
         rt_views_ = std::make_unique<RtViewPass>(context, *resources, bindless->layout());
     const std::uint32_t index = next_slot_;
     next_slot_ = (next_slot_ + 1) % kFramesInFlight;
     FrameSlot& slot = *slots_[index];
     FrameStats stats;
-    // Moving meshes and node transforms of this frame's pose (RenderSettings::pose,
+    // Moving meshes and node transforms of this frame's pose (FrameRequest::pose,
     // else the file's default pose) into the structures, when it is not the pose they hold.
     if (pose_acceleration(slot, settings)) {
         const AccelerationStats& a = acceleration->stats();

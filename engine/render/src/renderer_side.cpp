@@ -8,7 +8,7 @@
 
 namespace sherpa::gpu {
 
-void Renderer::Impl::check_drawable(const RenderSettings& settings) const {
+void Renderer::Impl::check_drawable(const FrameRequest& settings) const {
     if (settings.renderer != RendererKind::RayTraced) return;
     check_rt(settings);
     // It draws the rasterizer's shadow frame first and waits for it (render_rt): not
@@ -26,7 +26,7 @@ ComparisonPass& Renderer::Impl::comparison() {
 }
 
 SideImage Renderer::Impl::record_side(VkCommandBuffer cmd, std::uint32_t index,
-                                      const RenderSettings& settings) {
+                                      const FrameRequest& settings) {
     FrameSlot& slot = *slots_.at(index);
     if (settings.renderer == RendererKind::RayTraced && acceleration &&
         acceleration->tlas() != VK_NULL_HANDLE)
@@ -79,13 +79,13 @@ SideImage Renderer::Impl::record_side(VkCommandBuffer cmd, std::uint32_t index,
 }
 
 SideImage Renderer::Impl::record_rt_side(VkCommandBuffer cmd, FrameSlot& slot,
-                                         const RenderSettings& settings) {
+                                         const FrameRequest& settings) {
     check_rt(settings);
     // The ray tracer's descriptor set and image are rewritten per frame: no earlier
     // frame of this renderer may still be in flight (a presented RT frame waits for
     // the previous one; rays on lavapipe take far longer than that wait).
     for (auto& s : slots_) wait_slot(*s);
-    apply_visibility(settings, true);
+    apply_visibility(true);
     if (!rt_views_)
         rt_views_ = std::make_unique<RtViewPass>(context, *resources, bindless->layout());
     // This frame's pose into the structures (submitted and waited for on its own),

@@ -1,4 +1,4 @@
-// Node visibility inside the renderer (RenderSettings::hidden_nodes): a changed mask
+// Node visibility inside the renderer (SceneSetup::hidden_nodes): a changed mask
 // is expanded to subtrees once (hidden_subtrees(), the editor's rule too), mapped to
 // GPU instances for the culling pass (whose GPU cullers, shown-id lists and
 // statistics leave hidden instances out), redraws the cached shadow cascades, and
@@ -21,10 +21,10 @@ void Renderer::Impl::load_visibility(const Scene& source) {
     tlas_visibility_ = options.acceleration.hidden_nodes.empty();
 }
 
-void Renderer::Impl::apply_visibility(const RenderSettings& settings, bool rt) {
+void Renderer::Impl::apply_visibility(bool rt) {
     if (!scene) return;
     static const std::vector<bool> kNone;
-    const std::vector<bool>& given = settings.hidden_nodes ? *settings.hidden_nodes : kNone;
+    const std::vector<bool>& given = setup.hidden_nodes ? *setup.hidden_nodes : kNone;
     if (given != hidden_given_) {
         // Frames in flight index the GPU cullers being replaced: wait for them and
         // keep their statistics in the history now.

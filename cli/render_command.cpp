@@ -247,8 +247,8 @@ int run_render(Args args) {
     }
     if (compare_options.mode)
         return run_comparison({loaded.scene.get(), std::string(spec), settings, setup,
-                               texture_options,
-                               validation, ray_tracing, std::string(out_path), frames, environment},
+                               texture_options, validation, ray_tracing, std::string(out_path),
+                               frames, environment},
                               compare_options);
     try {
         gpu::ContextOptions options;

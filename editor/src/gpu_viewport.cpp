@@ -185,7 +185,7 @@ void apply_display(const ViewportDisplay& d, gpu::FrameRequest& settings) {
     settings.energy_compensation = d.energyCompensation;
 }
 
-gpu::FrameRequest render_settings(const ViewportFrame& frame, float scale, bool reduced_prepass) {
+gpu::FrameRequest frame_request(const ViewportFrame& frame, float scale, bool reduced_prepass) {
     gpu::FrameRequest settings;
     settings.width = frame.width;
     settings.height = frame.height;
@@ -254,7 +254,7 @@ void GpuViewport::preparePresenter(std::uint64_t surface, const ViewportFrame& f
 bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame, float scale) {
     impl_->refusal.clear();
     if (!surface || frame.width == 0 || frame.height == 0) return false;
-    const gpu::FrameRequest settings = render_settings(frame, scale, impl_->reduced_prepass);
+    const gpu::FrameRequest settings = frame_request(frame, scale, impl_->reduced_prepass);
     preparePresenter(surface, frame);
     impl_->renderer->set_hidden_nodes(frame.hiddenNodes); // unchanged: one comparison
     if (frame.compare.comparing()) return presentComparison(frame, settings, scale);

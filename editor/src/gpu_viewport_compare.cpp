@@ -73,7 +73,7 @@ bool GpuViewport::presentComparison(const ViewportFrame& frame, const gpu::Frame
         gpu::RendererOptions options;
         options.ray_tracing = rays && impl.context->info().ray_tracing_enabled;
         impl.b.renderer = std::make_unique<gpu::Renderer>(*impl.context, options);
-        // Lit as side A is: the same environment (render_settings() gives both sides the
+        // Lit as side A is: the same environment (frame_request() gives both sides the
         // same display settings).
         impl.b.renderer->set_environment(impl.environment.get());
         load_session(*impl.b.renderer, *session, all, impl.missing);

@@ -22,7 +22,7 @@ struct GpuViewport::Impl {
     SharedSession session; // on the GPU: its scene and prepared textures
     bool all_streams = false;
     gpu::MissingTextures missing = gpu::MissingTextures::Checker; // setMissingTexturesChecker()
-    bool reduced_prepass = false;                // setReducedFramePrepass()
+    bool reduced_prepass = false;                                 // setReducedFramePrepass()
     std::unique_ptr<gpu::GpuCullChecker> culler; // CPU/GPU agreement checks, built per scene
     // The environment lighting side A (setEnvironment), kept to light side B alike.
     std::shared_ptr<const gpu::EnvironmentImage> environment;
@@ -49,6 +49,6 @@ void load_session(gpu::Renderer& renderer, const SceneSession& session, bool all
                   gpu::MissingTextures missing);
 
 // The engine's settings for what the window wants drawn (side A of a comparison).
-gpu::FrameRequest render_settings(const ViewportFrame& frame, float scale, bool reduced_prepass);
+gpu::FrameRequest frame_request(const ViewportFrame& frame, float scale, bool reduced_prepass);
 
 } // namespace sherpa::editor

@@ -30,8 +30,7 @@ public:
     // How the families that draw lit frames (shadows) light them: the main view's
     // environment and display settings. The environment is made by the worker, and only
     // for such a family.
-    void setLighting(const gpu::EnvironmentChoice& environment,
-                     const gpu::FrameRequest& settings);
+    void setLighting(const gpu::EnvironmentChoice& environment, const gpu::FrameRequest& settings);
 
     // Runs family `family` ("tangents", "textures", "culling") on the scene `spec`.
     void start(const QString& family, const QString& spec);

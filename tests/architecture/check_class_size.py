@@ -24,7 +24,8 @@ from pathlib import Path
 # grow): name -> (public, all, why). Remove a row once its class is within the limits.
 EXEMPT: dict[str, tuple[int, int, str]] = {
     "MainWindow": (46, 90, "the window: controllers (load, view, compare, motion) not yet split out"),
-    "Renderer::Impl": (17, 45, "the renderer's inside: scene state and frame recorder not yet split"),
+    "FrameRecorder": (15, 39, "frame slots and the ray-traced frames (renderer_rt, renderer_path, "
+                      "renderer_side) are its next seams"),
     "GpuViewport": (28, 32, "the engine behind the viewport: not yet reduced to Qt glue"),
     "ViewportWindow": (19, 30, "the viewport window: input, divider and frame pacing in one class"),
     "LabDock": (16, 29, "the Lab dock: runner wiring and table/chart in one class"),

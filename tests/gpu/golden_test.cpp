@@ -66,9 +66,9 @@ TEST_P(GoldenTest, MatchesCommittedImage) {
     s.glyph_length = c.glyph_length;
     std::string error;
     ASSERT_TRUE(gpu::parse_camera_spec(c.camera, s.camera, error)) << error;
-    renderer().load(*scene, {.streams = gpu::needs_all_streams(s)
-                                            ? gpu::StreamPolicy::AllPresent
-                                            : gpu::StreamPolicy::UsedByMaterials});
+    renderer().load(*scene,
+                    {.streams = gpu::needs_all_streams(s) ? gpu::StreamPolicy::AllPresent
+                                                          : gpu::StreamPolicy::UsedByMaterials});
     std::vector<std::uint8_t> actual;
     renderer().render(s, &actual);
     renderer().unload();

@@ -59,7 +59,7 @@ TEST_F(LeakTest, CpuDeviceFramesDoNotFaultTheirWorkingMemoryInAgain) {
     auto scene = load(gltf_asset("2CylinderEngine"));
     ASSERT_TRUE(scene);
     renderer().load(*scene); // textures prepared with the renderer's test_texture_settings()
-    gpu::FrameRequest s;   // 1280x720, lit
+    gpu::FrameRequest s;     // 1280x720, lit
     for (int i = 0; i < 3; ++i) renderer().render(s); // pipelines, shadow map, first frames
     const long before = minor_page_faults();
     constexpr int kFrames = 10;

@@ -11,6 +11,7 @@
 // Check mode (FrameRequest::cull_check) also runs the CPU test on the GPU path,
 // reads back the GPU's visible flags and counts the differences.
 #include "passes.h"
+#include "scene_state.h"
 
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/upload.h>
@@ -292,7 +293,8 @@ void CullingPass::record(FrameContext& f) {
     if (fc.views.size() < fc.count) fc.views.resize(fc.count);
     glm::mat4 camera_vp = slot.camera.proj * slot.camera.view;
     if (settings.freeze_cull) {
-        const CameraView frozen = resolve_camera(*settings.freeze_cull, f.lighting, f.aspect());
+        const CameraView frozen =
+            resolve_camera(*settings.freeze_cull, f.lighting.cameras, f.aspect());
         camera_vp = frozen.proj * frozen.view;
     }
     for (std::uint32_t v = 0; v < fc.count; ++v) {

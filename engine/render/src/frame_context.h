@@ -2,7 +2,7 @@
 // What one frame's passes share (private to the render layer): the per-frame-in-
 // flight resources (FrameSlot), the per-scene culling data (SceneCulling), and the
 // FrameContext every pass records from. A pass is a class with
-// `void record(FrameContext&)`; the Renderer orders them (renderer_impl.h).
+// `void record(FrameContext&)`; the Renderer orders them (frame_recorder.h).
 #include "pipelines.h"
 
 #include <sherpa/gpu/commands.h>
@@ -17,6 +17,7 @@
 namespace sherpa::gpu {
 
 class EnvironmentMap;
+struct SceneLights;
 
 // Timestamps written between passes; pass i spans [i, i + 1].
 inline constexpr const char* kPassNames[] = {"shadows",    "depth_prepass", "opaque",
@@ -149,7 +150,7 @@ struct FrameContext {
     ResourceManager& resources;
     const GpuScene* scene;                       // null: nothing loaded
     SceneCulling* culling;                       // null: nothing loaded
-    const Scene& lighting;                       // bounds, lights and cameras of the loaded scene
+    const SceneLights& lighting;                 // bounds, lights and cameras of the loaded scene
     const EnvironmentMap* environment = nullptr; // null: no environment loaded
     std::uint32_t cascades = 0; // shadow cascades re-rendered this frame (0: reused or none)
     bool prepass = false;       // the depth prepass runs this frame

@@ -1,7 +1,7 @@
 #pragma once
 // One class per pass of a frame. Each records into FrameContext::cmd; the Renderer
-// (renderer_impl.h) owns them and calls them in frame order. A new pass is a class
-// here (with `void record(FrameContext&)`) and one line in Renderer::Impl::record_passes.
+// (frame_recorder.h) owns them and calls them in frame order. A new pass is a class
+// here (with `void record(FrameContext&)`) and one line in FrameRecorder::record_passes.
 #include "frame_context.h"
 
 #include <map>

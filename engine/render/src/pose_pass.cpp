@@ -122,8 +122,8 @@ const Pose& PosePass::pose_of(const FrameRequest& settings) const {
     return default_;
 }
 
-void PosePass::append_skeleton_lines(std::vector<GPULineVertex>& out,
-                                     const FrameRequest& settings, float joint_size) const {
+void PosePass::append_skeleton_lines(std::vector<GPULineVertex>& out, const FrameRequest& settings,
+                                     float joint_size) const {
     if (scene_.skins.empty()) return;
     append_skeleton(out, scene_.skins, scene_.nodes, pose_of(settings).world,
                     settings.selected_joint, joint_size);

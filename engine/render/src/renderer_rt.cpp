@@ -3,7 +3,7 @@
 // debug views with the rasterizer's formulas (rt_view_pass.h), or the path-traced lit
 // view (path_trace_pass.h, renderer_path.cpp). Views and overlays the ray tracer has
 // no formula for are refused, never drawn as something else.
-#include "renderer_impl.h"
+#include "frame_recorder.h"
 
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/vk_helpers.h>
@@ -29,11 +29,12 @@ std::string ray_traced_view_names() {
 
 } // namespace
 
-bool Renderer::Impl::pose_acceleration(FrameSlot& slot, const FrameRequest& settings) {
+bool FrameRecorder::pose_acceleration(FrameSlot& slot, const FrameRequest& settings) {
     if (!acceleration || !pose_.active()) return false;
     pose_.record(slot, settings, scene != nullptr);
     // The structures hold this pose already (a paused timeline, the default pose).
-    if (!slot.posed || (rt_pose_key_ == slot.pose_key && rt_pose_generation_ == scene_generation_))
+    if (!slot.posed ||
+        (state.rt_pose_key == slot.pose_key && state.rt_pose_generation == state.generation))
         return false;
     PoseFrame frame;
     frame.instances = slot.posed_instances;
@@ -41,12 +42,12 @@ bool Renderer::Impl::pose_acceleration(FrameSlot& slot, const FrameRequest& sett
     frame.highlight_base = slot.highlight_base;
     frame.node_world = pose_.pose_of(settings).world;
     acceleration->update_pose(frame);
-    rt_pose_key_ = slot.pose_key;
-    rt_pose_generation_ = scene_generation_;
+    state.rt_pose_key = slot.pose_key;
+    state.rt_pose_generation = state.generation;
     return true;
 }
 
-void Renderer::Impl::check_rt(const FrameRequest& settings) const {
+void FrameRecorder::check_rt(const FrameRequest& settings) const {
     if (!acceleration)
         throw GpuError("the ray tracer needs the scene's acceleration structures: create the "
                        "renderer with RendererOptions::ray_tracing on a device that ray traces");
@@ -59,10 +60,10 @@ void Renderer::Impl::check_rt(const FrameRequest& settings) const {
         throw GpuError("the ray tracer draws no overlays or highlights (raster only)");
 }
 
-RayTracedFrame Renderer::Impl::rt_frame(const FrameRequest& settings,
-                                        const FrameSlot& data_slot) const {
-    const CameraView camera =
-        resolve_camera(settings.camera, lighting_, float(settings.width) / float(settings.height));
+RayTracedFrame FrameRecorder::rt_frame(const FrameRequest& settings,
+                                       const FrameSlot& data_slot) const {
+    const CameraView camera = resolve_camera(settings.camera, state.lights.cameras,
+                                             float(settings.width) / float(settings.height));
     RayTracedFrame f;
     f.bindless = bindless->set();
     f.tlas = acceleration->tlas();
@@ -77,18 +78,18 @@ RayTracedFrame Renderer::Impl::rt_frame(const FrameRequest& settings,
     f.push.clear_color = settings.clear_color;
     f.frame_data = resources->get(data_slot.frame_data).buffer.get();
     f.shadow_map = shadows_.descriptor();
-    const MainSun sun = main_sun(lighting_, settings);
+    const MainSun sun = main_sun(state.lights, settings);
     f.push.sun = glm::vec4(-sun.direction, std::max(settings.sun_angular_radius, 0.0f));
     // As the rasterizer: no sun or no shadows, and only the facing rule remains.
     f.push.shadow_rays = sun.present && settings.shadows ? std::max(settings.shadow_rays, 1u) : 0u;
     f.push.ao_rays = settings.ao_rays;
-    const float diagonal = lighting_.bounds.valid() ? glm::length(lighting_.bounds.extent()) : 1.0f;
+    const Aabb& bounds = state.lights.cameras.bounds;
+    const float diagonal = bounds.valid() ? glm::length(bounds.extent()) : 1.0f;
     f.push.ao_radius = settings.ao_radius > 0.0f ? settings.ao_radius : 0.05f * diagonal;
     return f;
 }
 
-FrameStats Renderer::Impl::render_rt(const FrameRequest& settings,
-                                     std::vector<std::uint8_t>* rgba) {
+FrameStats FrameRecorder::render_rt(const FrameRequest& settings, std::vector<std::uint8_t>* rgba) {
     check_rt(settings);
     // The shadow-error view compares with the rasterizer's cascades at this camera:
     // its shadow view is drawn first (cascades and frame constants in that slot).

@@ -99,8 +99,7 @@ private:
 // The same offscreen, waited for: the composited image as RGBA8 rows (top first,
 // a_settings' width x height; b_settings' size is replaced by it), and the stats.
 ComparisonStats render_comparison(Renderer& a, const FrameRequest& a_settings, Renderer& b,
-                                  const FrameRequest& b_settings,
-                                  const ComparisonSettings& compare,
+                                  const FrameRequest& b_settings, const ComparisonSettings& compare,
                                   std::vector<std::uint8_t>* rgba = nullptr);
 
 } // namespace sherpa::gpu

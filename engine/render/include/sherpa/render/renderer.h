@@ -5,8 +5,9 @@
 // either into its own offscreen target (render()) or into a swapchain image through
 // the RHI's Presenter (PresentedFrame, presented_frame.h, is the frame source). Set up
 // once per scene (load() with a SceneSetup), then request frames (FrameRequest);
-// statistics out; pipelines, handle pools and frame resources stay inside
-// (Renderer::Impl). No Vulkan header here.
+// statistics out. What a load fixes is the renderer's SceneState, how frames are
+// recorded its FrameRecorder (both private to the render layer, engine/render/src). No
+// Vulkan header here.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -15,9 +16,9 @@
 
 #include <sherpa/render/acceleration_stats.h>
 #include <sherpa/render/environment.h>
+#include <sherpa/render/frame_request.h>
 #include <sherpa/render/load_settings.h>
 #include <sherpa/render/path_trace.h>
-#include <sherpa/render/frame_request.h>
 #include <sherpa/render/scene_setup.h>
 #include <sherpa/scene/culling_passes.h>
 #include <sherpa/scene/shadow_cascades.h>
@@ -34,10 +35,8 @@ namespace sherpa::gpu {
 class Context;
 class ResourceManager;
 class GpuScene;
-class PresentedFrame;
-class ComparisonFrame;
-struct ComparisonSettings;
-struct ComparisonStats;
+class SceneState;
+class FrameRecorder;
 
 struct PassTiming {
     std::string name;
@@ -127,8 +126,6 @@ public:
     // thread); only the upload happens here.
     void load(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
               const SceneSetup& setup = {});
-    // What the loaded scene was set up with (hidden nodes as set_hidden_nodes() left them).
-    const SceneSetup& setup() const;
     // The loaded scene's hidden nodes from now on (SceneSetup::hidden_nodes): applied
     // before the next frame; the same mask again costs one comparison.
     void set_hidden_nodes(std::shared_ptr<const std::vector<bool>> hidden);
@@ -153,17 +150,16 @@ public:
 
     ResourceManager& resources();
     Context& context();
-
-    class Impl; // renderer_impl.h
+    // The frame sources' narrow interface (PresentedFrame, ComparisonFrame,
+    // render_comparison, read_path_trace): frame slots, targets and passes. Private to
+    // the render layer (src/frame_recorder.h); an incomplete type elsewhere.
+    FrameRecorder& frames();
 
 private:
-    friend class PresentedFrame; // records swapchain frames through Impl
-    friend class ComparisonFrame;
-    friend PathTraceImage read_path_trace(Renderer&);
-    friend ComparisonStats render_comparison(Renderer&, const FrameRequest&, Renderer&,
-                                             const FrameRequest&, const ComparisonSettings&,
-                                             std::vector<std::uint8_t>*);
-    std::unique_ptr<Impl> impl_;
+    Context& context_;
+    std::unique_ptr<ResourceManager> resources_;
+    std::unique_ptr<SceneState> scene_;     // what a load fixes
+    std::unique_ptr<FrameRecorder> frames_; // what a frame records
 };
 
 // The path tracer's accumulation (its per-pixel sums, read back after the frames in

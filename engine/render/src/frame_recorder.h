@@ -1,15 +1,15 @@
 #pragma once
-// The Renderer's inside (private to the render layer): frame resources, targets,
-// pipelines and the passes, in frame order in record_passes() (renderer_frame.cpp).
+// How a Renderer records frames (private to the render layer): frame slots, targets,
+// pipelines and the passes, in frame order in record_passes() (renderer_frame.cpp),
+// over the loaded scene's SceneState (scene_state.h), which it reads. The frame sources
+// (PresentedFrame, ComparisonFrame, render_comparison, the path tracer's readback)
+// reach it through Renderer::frames(); outside the render layer it is an incomplete type.
 #include "comparison_pass.h"
-#include "environment_map.h"
 #include "passes.h"
 #include "path_trace_pass.h"
+#include "render_targets.h"
 #include "rt_view_pass.h"
-
-#include <sherpa/gpu/bindless.h>
-#include <sherpa/render/acceleration_structures.h>
-#include <sherpa/render/gpu_scene.h>
+#include "scene_state.h"
 
 #include <map>
 
@@ -22,16 +22,24 @@ struct MainSun {
     glm::vec3 radiance{0.0f};
     std::int64_t placed_light = -1; // its Scene::placed_lights index; -1: default sun or none
 };
-MainSun main_sun(const Scene& lighting, const FrameRequest& settings);
+MainSun main_sun(const SceneLights& lights, const FrameRequest& settings);
 
-class Renderer::Impl {
+class FrameRecorder {
 public:
-    static constexpr VkFormat kOffscreenFormat = VK_FORMAT_R8G8B8A8_SRGB;
-    Impl(Context& context, const RendererOptions& options);
-    ~Impl();
+    static constexpr VkFormat kOffscreenFormat = RenderTargets::kOffscreenFormat;
+    static constexpr std::uint32_t kFramesInFlight = Renderer::kFramesInFlight;
+    explicit FrameRecorder(SceneState& state);
+    ~FrameRecorder();
+    FrameRecorder(const FrameRecorder&) = delete;
+    FrameRecorder& operator=(const FrameRecorder&) = delete;
 
-    void load(const Scene& scene, std::unique_ptr<GpuScene> gpu_scene, const SceneSetup& setup);
-    void unload();
+    // The state's scene was loaded from `source` (culling, pose, default pose of the
+    // acceleration structures), or is about to be unloaded (every frame waited for,
+    // the slots' per-scene buffers freed).
+    void scene_loaded(const Scene& source);
+    void scene_unloading();
+    // Waits for every frame in flight (before the environment changes).
+    void wait_all();
     FrameStats render(const FrameRequest& settings, std::vector<std::uint8_t>* rgba);
     // Swapchain path: waits until frame slot `slot` is free, records the frame into
     // `cmd` (already begun) drawing into `target`. The caller submits `cmd` with the
@@ -41,10 +49,10 @@ public:
     void finish_frame(std::uint32_t slot, std::uint64_t submission);
     // Results of the last completed frame recorded in `slot` (waits for it).
     FrameStats slot_stats(std::uint32_t slot);
+    // Bytes of the recorder's images (targets, shadow map).
     std::uint64_t render_target_bytes() const;
-    // The presenter's reduced-resolution image (`format`, width x height, colour
-    // attachment and blit source), made or remade when the size changes.
-    const Image& scaled_target(VkFormat format, std::uint32_t width, std::uint32_t height);
+    // Its images: offscreen target and readback, the presenter's reduced-resolution image.
+    RenderTargets& targets() { return targets_; }
 
     // A comparison side or a presented ray-traced frame (renderer_side.cpp): records
     // `settings` (its width x height) with frame slot `slot` into an image of this
@@ -56,30 +64,25 @@ public:
     void check_drawable(const FrameRequest& settings) const;
     // The compositing pass (comparison_pass.h), made on first use.
     ComparisonPass& comparison();
-    // Offscreen comparisons (comparison.cpp): frame slot `slot`'s command recorder,
-    // the offscreen target of that size (left in TRANSFER_SRC layout by the frame),
-    // its copy into the readback buffer, and the rows read back once complete.
+    // Frame slot `slot`'s command recorder (offscreen comparisons, comparison.cpp).
     CommandRecorder& recorder(std::uint32_t slot) { return slots_.at(slot)->recorder; }
-    RenderTarget offscreen_target(std::uint32_t width, std::uint32_t height);
-    void record_readback(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height);
-    void read_offscreen(std::vector<std::uint8_t>& rgba, std::uint32_t width,
-                        std::uint32_t height) const;
-
-    Context& context;
-    RendererOptions options;
-    SceneSetup setup; // of the scene loaded (or to be loaded)
-    std::unique_ptr<ResourceManager> resources;
-    std::unique_ptr<BindlessTable> bindless;
-    std::unique_ptr<GpuScene> scene;
-    // With RendererOptions::ray_tracing: the scene's BLAS/TLAS and the ray-traced views.
-    std::unique_ptr<SceneAccelerationStructures> acceleration;
-    CullingPass culling;
-    std::unique_ptr<EnvironmentMap> environment; // null: none (set_environment)
-    void set_environment(const EnvironmentImage* image);
     // The path tracer's accumulation read back (renderer_path.cpp).
     PathTraceImage path_trace_image();
+    // Culling statistics of the frames read (Renderer::cull_history()).
+    const RingHistory<CullFrame>& cull_history() const { return culling.history(); }
 
 private:
+    SceneState& state;
+    Context& context;
+    ResourceManager* const resources;
+    BindlessTable* const bindless;
+    const RendererOptions& options;
+    // The loaded scene's, as the state holds them (null: none).
+    const std::unique_ptr<GpuScene>& scene;
+    const std::unique_ptr<SceneAccelerationStructures>& acceleration;
+    const std::unique_ptr<EnvironmentMap>& environment;
+    CullingPass culling;
+
     // A frame, pass by pass.
     void record_passes(FrameContext& f);
     void begin_frame(FrameContext& f);
@@ -95,12 +98,6 @@ private:
     void create_frame_sets();
     void bind_frame_set(FrameSlot& slot);
     void wait_slot(FrameSlot& slot);
-    // Keeps `image` a colour attachment and transfer source of this format and size;
-    // true when it was (re)made.
-    bool ensure_color_target(ImageHandle& image, VkFormat format, std::uint32_t width,
-                             std::uint32_t height, const char* name);
-    void ensure_offscreen(std::uint32_t width, std::uint32_t height);
-    void ensure_depth(std::uint32_t width, std::uint32_t height);
     Pipelines& pipelines_for(VkFormat format);
     FrameStats read_stats(FrameSlot& slot);
     // A ray-traced side (renderer_side.cpp): its timestamps and statistics.
@@ -125,25 +122,13 @@ private:
     // slot must be idle) when it differs from the mask applied last
     // (renderer_visibility.cpp).
     void apply_visibility(bool rt);
-    void load_visibility(const Scene& source); // a scene was loaded
 
     std::unique_ptr<RtViewPass> rt_views_;
     std::unique_ptr<PathTracePass> path_;
-    std::unique_ptr<EnvironmentDistribution> environment_distribution_;
     std::uint64_t path_environment_ = ~0ull; // environment generation path_ samples
     std::uint64_t path_key_ = 0;             // what the accumulation is of
     std::uint32_t path_samples_ = 0;
     PathTraceFrame last_path_; // of the last presented or compared path-traced side
-    // Visibility: the loaded scene's nodes (the subtree rule), the node of each GPU
-    // instance, the mask last applied (as given) and its subtree-expanded form, and
-    // whether the TLAS holds that form.
-    std::vector<Node> nodes_;
-    std::vector<std::uint32_t> instance_node_;
-    std::vector<bool> hidden_given_, hidden_nodes_;
-    std::uint64_t visibility_version_ = 0;
-    bool tlas_visibility_ = true;
-    // The pose the acceleration structures hold (FrameSlot::pose_key, of this scene load).
-    std::uint64_t rt_pose_key_ = 0, rt_pose_generation_ = 0;
 
     PosePass pose_;
     ShadowPass shadows_;
@@ -158,16 +143,10 @@ private:
     UniqueDescriptorPool frame_pool_;
     BufferHandle no_materials_; // bound while no scene is loaded
     std::map<VkFormat, std::unique_ptr<Pipelines>> pipelines_;
-    // Only bounds, lights and cameras (what camera and light resolution needs).
-    Scene lighting_;
-    std::uint64_t scene_generation_ = 0;
-    std::uint64_t environment_generation_ = 0; // counts set_environment()
     std::vector<std::unique_ptr<FrameSlot>> slots_;
     std::uint32_t next_slot_ = 0;
     std::unique_ptr<ComparisonPass> comparison_;
-    ImageHandle color_, depth_, scaled_;
-    ImageHandle side_; // record_side's raster image (sampled by the comparison pass)
-    BufferHandle readback_;
+    RenderTargets targets_;
 };
 
 } // namespace sherpa::gpu

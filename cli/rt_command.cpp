@@ -253,8 +253,9 @@ int run_rt(Args args) {
             renderer_options.ray_tracing = true;
             renderer_options.acceleration = settings;
             gpu::Renderer renderer(context, renderer_options);
-            renderer.load(*loaded.scene, no_textures,
-                          {.missing_textures = gpu::MissingTextures::Neutral});
+            gpu::SceneSetup setup;
+            setup.missing_textures = gpu::MissingTextures::Neutral;
+            renderer.load(*loaded.scene, no_textures, setup);
             report(*renderer.resident().acceleration);
         } else {
             gpu::ResourceManager resources(context);

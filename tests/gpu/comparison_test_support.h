@@ -159,7 +159,7 @@ protected:
         options.ray_tracing = rt;
         options.textures = test_texture_settings();
         auto r = std::make_unique<gpu::Renderer>(context(), options);
-        r->load(scene, {.streams = gpu::StreamPolicy::AllPresent});
+        r->load(scene, streams_setup(gpu::StreamPolicy::AllPresent));
         return r;
     }
 };

@@ -67,8 +67,8 @@ TEST_P(GoldenTest, MatchesCommittedImage) {
     std::string error;
     ASSERT_TRUE(gpu::parse_camera_spec(c.camera, s.camera, error)) << error;
     renderer().load(*scene,
-                    {.streams = gpu::needs_all_streams(s) ? gpu::StreamPolicy::AllPresent
-                                                          : gpu::StreamPolicy::UsedByMaterials});
+                    streams_setup(gpu::needs_all_streams(s) ? gpu::StreamPolicy::AllPresent
+                                                            : gpu::StreamPolicy::UsedByMaterials));
     std::vector<std::uint8_t> actual;
     renderer().render(s, &actual);
     renderer().unload();

@@ -31,6 +31,13 @@ inline gpu::TextureSettings test_texture_settings() {
     return s;
 }
 
+// A scene setup with `streams` uploaded, the rest as by default.
+inline gpu::SceneSetup streams_setup(gpu::StreamPolicy streams) {
+    gpu::SceneSetup setup;
+    setup.streams = streams;
+    return setup;
+}
+
 // `scene`'s textures prepared for `device` with `settings`, as sherpa-cli render does.
 inline std::shared_ptr<const tex::PreparedTextureSet>
 prepare_for_device(const Scene& scene, const gpu::DeviceInfo& device,

@@ -52,13 +52,13 @@ TEST_F(MotionRenderTest, GpuSkinningAndMorphingMatchTheCpuPosedStaticMesh) {
         s.camera = camera_on(posed_scene_bounds(*scene, *pose).exact);
         for (gpu::DebugView view : {gpu::DebugView::BaseColor, gpu::DebugView::Normal}) {
             s.view = view;
-            renderer().load(*scene, {.streams = gpu::StreamPolicy::AllPresent});
+            renderer().load(*scene, streams_setup(gpu::StreamPolicy::AllPresent));
             ASSERT_GT(renderer().scene()->memory().motion, 0u) << "moving meshes hold streams";
             s.pose = pose;
             const auto gpu_posed = draw(s);
             s.pose = nullptr; // the scene as loaded: default pose and weights
             const auto gpu_bind = draw(s);
-            renderer().load(cpu, {.streams = gpu::StreamPolicy::AllPresent});
+            renderer().load(cpu, streams_setup(gpu::StreamPolicy::AllPresent));
             EXPECT_EQ(renderer().scene()->memory().motion, 0u) << "the CPU-posed copy is static";
             const auto cpu_posed = draw(s);
             const std::size_t pixels = std::size_t{s.width} * s.height;

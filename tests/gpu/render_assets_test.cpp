@@ -68,7 +68,7 @@ TEST_F(DebugViewTest, EveryViewAndOverlayIsValidationClean) {
     for (const std::string name : {"MultiUVTest", "AlphaBlendModeTest", "BoxVertexColors"}) {
         auto scene = load(gltf_asset(name));
         ASSERT_TRUE(scene);
-        renderer().load(*scene, {.streams = gpu::StreamPolicy::AllPresent});
+        renderer().load(*scene, streams_setup(gpu::StreamPolicy::AllPresent));
         gpu::FrameRequest s;
         s.width = 64;
         s.height = 48;
@@ -107,7 +107,7 @@ TEST_F(DebugViewTest, GpuHoldsOnlyTheStreamsTheUsageReportAsksFor) {
         const UsageReport usage = build_usage_report(*scene);
         for (gpu::StreamPolicy policy :
              {gpu::StreamPolicy::UsedByMaterials, gpu::StreamPolicy::AllPresent}) {
-            renderer().load(*scene, {.streams = policy});
+            renderer().load(*scene, streams_setup(policy));
             const gpu::GpuScene& g = *renderer().scene();
             for (const PrimitiveUsage& u : usage.primitives) {
                 if (u.instances == 0 || scene->meshes[u.mesh_id].indices.empty()) continue;

@@ -33,7 +33,7 @@ protected:
         s.width = 128;
         s.height = 96;
         s.depth_prepass = prepass;
-        renderer().load(scene, {.streams = policy});
+        renderer().load(scene, streams_setup(policy));
         std::vector<std::uint8_t> rgba;
         renderer().render(s, &rgba);
         renderer().unload();

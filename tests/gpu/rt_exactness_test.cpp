@@ -74,7 +74,7 @@ protected:
         options.ray_tracing = true;
         options.textures = test_texture_settings();
         gpu::Renderer renderer(context(), options);
-        renderer.load(scene, {.streams = gpu::StreamPolicy::AllPresent});
+        renderer.load(scene, streams_setup(gpu::StreamPolicy::AllPresent));
         gpu::FrameRequest s;
         s.width = 96; // lavapipe traces on the CPU: small images keep CI short
         s.height = 72;
@@ -154,7 +154,7 @@ TEST_F(RtExactness, PosedRaysDifferFromTheBindPoseAndMatchRaster) {
     options.ray_tracing = true;
     options.textures = test_texture_settings();
     gpu::Renderer renderer(context(), options);
-    renderer.load(*scene, {.streams = gpu::StreamPolicy::AllPresent});
+    renderer.load(*scene, streams_setup(gpu::StreamPolicy::AllPresent));
     gpu::FrameRequest s;
     s.width = 96;
     s.height = 72;

@@ -122,7 +122,7 @@ class DebugViewRenderTest : public GpuTest {};
 TEST_F(DebugViewRenderTest, EveryViewRendersAndDiffersFromLit) {
     auto scene = load(gltf_asset("NormalTangentMirrorTest"));
     ASSERT_TRUE(scene);
-    renderer().load(*scene, {.streams = gpu::StreamPolicy::AllPresent});
+    renderer().load(*scene, streams_setup(gpu::StreamPolicy::AllPresent));
     gpu::FrameRequest s;
     s.width = 64;
     s.height = 64;

@@ -1,9 +1,11 @@
 // sherpa-cli info SCENE [--json] [--scene N] [--animation N --time T | --pose bind]
+//                      [--variant NAME]
 #include "cli_common.h"
 #include "motion_json.h"
 #include "pose_options.h"
 #include "scene_json.h"
 #include "texture_cli.h"
+#include "variant_options.h"
 
 #include <sherpa/scene/gltf_extensions.h>
 #include <sherpa/scene/scene_loader.h>
@@ -65,6 +67,7 @@ void print_text(const Scene& s, const std::vector<tex::ImageProblem>& problems) 
     print_extensions("required", s.extensions_required);
     for (const auto& p : problems) std::printf("  warning: texture %s\n", tex::describe(p).c_str());
     print_motion_text(s);
+    print_variants_text(s);
     for (const auto& w : s.warnings) std::printf("  warning: %s\n", w.c_str());
 }
 
@@ -77,11 +80,14 @@ int run_info(Args args) {
     bool as_json = false;
     LoadOptions options;
     PoseOptions pose;
-    std::string error;
+    std::string error, variant;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const OptionMatch m = parse_pose_option(args, i, pose, error);
         if (m == OptionMatch::Bad) return usage_error(error, kUsage);
         if (m == OptionMatch::Taken) continue;
+        const OptionMatch vm = parse_variant_option(args, i, variant, error);
+        if (vm == OptionMatch::Bad) return usage_error(error, kUsage);
+        if (vm == OptionMatch::Taken) continue;
         if (args[i] == "--json")
             as_json = true;
         else if (args[i] == "--scene" && i + 1 < args.size()) {
@@ -100,6 +106,7 @@ int run_info(Args args) {
         std::fprintf(stderr, "error: %s\n", r.error.c_str());
         return kExitLoadError;
     }
+    if (!apply_variant_option(*r.scene, variant, error)) return usage_error(error, kUsage);
     const Scene& scene = *r.scene;
     std::int32_t animation = -1;
     if (!pose_animation(scene, pose, animation, error)) return usage_error(error, kUsage);
@@ -108,6 +115,7 @@ int run_info(Args args) {
     const std::vector<tex::ImageProblem> problems = tex::find_image_problems(scene);
     if (as_json) {
         nlohmann::json j = scene_info_json(scene);
+        j["material_variants"] = variants_json(scene);
         j["image_problems"] = nlohmann::json::array();
         for (const auto& p : problems) j["image_problems"].push_back(image_problem_json(p));
         if (posed) j.update(posed_json(scene, pose_report(scene, animation, time)));

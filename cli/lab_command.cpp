@@ -3,6 +3,7 @@
 // error figures against the family's reference and its failures by cause.
 #include "cli_common.h"
 #include "environment_options.h"
+#include "variant_options.h"
 
 #include <sherpa/core/file_io.h>
 #include <sherpa/lab/families.h>
@@ -21,6 +22,7 @@ namespace {
 
 struct Options {
     std::string spec, family, chart;
+    std::string variant; // --variant NAME: KHR_materials_variants
     bool json = false, csv = false, gpu = true;
     int repeat = 0; // 0: the family's default
     long long sample_texels = -1, cameras = -1;
@@ -139,6 +141,9 @@ int run_lab(Args args) {
             parse_environment_option(args, i, o.lighting, o.environment, option_error);
         if (em == OptionMatch::Bad) return usage_error(option_error);
         if (em == OptionMatch::Taken) continue;
+        const OptionMatch vm = parse_variant_option(args, i, o.variant, option_error);
+        if (vm == OptionMatch::Bad) return usage_error(option_error);
+        if (vm == OptionMatch::Taken) continue;
         if (a == "--family" && has_value)
             o.family = std::string(args[++i]);
         else if (a == "--chart" && has_value)
@@ -171,6 +176,8 @@ int run_lab(Args args) {
         std::fprintf(stderr, "error: %s\n", loaded.error.c_str());
         return kExitLoadError;
     }
+    if (std::string error; !apply_variant_option(*loaded.scene, o.variant, error))
+        return usage_error(error);
     const lab::FamilyReport report = family->run(*loaded.scene, {});
     if (!o.chart.empty()) {
         const std::string svg = lab::report_svg(report);

@@ -14,9 +14,11 @@ namespace {
 constexpr Command kCommands[] = {
     {"info", run_info,
      "sherpa-cli info SCENE [--json] [--scene N] [--animation N --time T | --pose bind]\n"
+     "    [--variant NAME]\n"
      "\n"
      "Reports on a scene: counts, bounds, vertex streams the materials read, images\n"
-     "that cannot become textures, cameras, motion. --time T adds the pose at T seconds.\n"},
+     "that cannot become textures, cameras, motion, material variants. --time T adds\n"
+     "the pose at T seconds; --variant NAME shows that KHR_materials_variants variant.\n"},
     {"cull", run_cull,
      "sherpa-cli cull SCENE [--camera CAMERA] [--method sphere|pvertex|exact|gpu] [--json]\n"
      "    [--animation N --time T | --pose bind]\n"
@@ -44,7 +46,7 @@ constexpr Command kCommands[] = {
      "    [--prepass|--no-prepass] [--glyph-length L] [--floor] [--rt on|off]\n"
      "    [--renderer raster|rt] [--texture-lod N] [--animation N --time T | --pose bind]\n"
      "    [--hide-node N ...] [--cull none|cpu|gpu] [--cull-method sphere|pvertex|exact]\n"
-     "    [--cull-check] [--freeze-cull CAMERA]\n"
+     "    [--cull-check] [--freeze-cull CAMERA] [--variant NAME]\n"
      "    {texture-options}\n"
      "    {shadow-options}\n"
      "    {environment-options}\n"
@@ -66,6 +68,7 @@ constexpr Command kCommands[] = {
     {"lab", run_lab,
      "sherpa-cli lab SCENE --family {families} [--json|--csv]\n"
      "    [--chart OUT.svg] [--repeat N] [--sample-texels N] [--cameras N] [--no-gpu]\n"
+     "    [--variant NAME]\n"
      "    {environment-options}\n"
      "\n"
      "Every method of one family measured on the scene: time against error.\n"

@@ -30,7 +30,10 @@ json animations_json(const Scene& scene) {
             ++interpolations[std::string(to_string(s.interpolation))];
             keyframes += s.times.size();
         }
+        json pointers = json::array();
+        for (const PointerChannel& p : a.pointers) pointers.push_back(p.pointer);
         out.push_back({{"name", a.name},
+                       {"pointer_channels", pointers},
                        {"start", a.start},
                        {"duration", a.end},
                        {"channels", a.channels.size()},
@@ -57,6 +60,7 @@ PosedReport pose_report(const Scene& scene, std::int32_t animation, double time)
     r.time = time;
     const Pose pose = evaluate_pose(scene, animation, time);
     r.bounds = posed_scene_bounds(scene, pose);
+    r.properties = pose.properties;
     return r;
 }
 
@@ -76,7 +80,14 @@ json posed_json(const Scene& scene, const PosedReport& r) {
     json warnings = json::array();
     for (std::uint32_t n : r.bounds.overflow) warnings.push_back(posed_overflow_warning(scene, n));
     pose["warnings"] = warnings;
+    json properties = json::array();
+    for (const AnimatedProperty& p : r.properties)
+        properties.push_back(
+            {{"pointer", pointer_of(p.target)},
+             {"property", to_string(p.target.property)},
+             {"value", std::vector<float>(p.value, p.value + pointer_width(p.target.property))}});
     return {{"pose", pose},
+            {"animated_properties", properties},
             {"posed_bounds", aabb_json(r.bounds.exact)},
             {"culling_bounds", aabb_json(r.bounds.culling)},
             {"posed_bounds_overflow", r.bounds.overflow}};
@@ -113,6 +124,12 @@ void print_posed_text(const Scene& scene, const PosedReport& r) {
                     c.max.x, c.max.y, c.max.z);
     for (std::uint32_t n : r.bounds.overflow)
         std::printf("  warning: %s\n", posed_overflow_warning(scene, n).c_str());
+    for (const AnimatedProperty& p : r.properties) {
+        std::printf("  animated %s =", pointer_of(p.target).c_str());
+        for (std::uint32_t k = 0; k < pointer_width(p.target.property); ++k)
+            std::printf(" %g", p.value[k]);
+        std::printf("\n");
+    }
 }
 
 } // namespace sherpa::cli

@@ -16,6 +16,7 @@ struct PosedReport {
     std::int32_t animation = -1; // -1: no animation, the default weights
     double time = 0.0;
     PosedBounds bounds;
+    std::vector<AnimatedProperty> properties; // KHR_animation_pointer values at `time`
 };
 PosedReport pose_report(const Scene& scene, std::int32_t animation, double time);
 // {"pose": {animation, animation_name, time, culling_contains_posed, warnings},

@@ -13,6 +13,7 @@
 #include "render_report.h"
 #include "shadow_options.h"
 #include "texture_cli.h"
+#include "variant_options.h"
 #include "view_legend.h"
 
 #include <sherpa/core/file_io.h>
@@ -59,6 +60,7 @@ int run_render(Args args) {
     bool ray_tracing = true;
     TextureCliOptions texture_options;
     PoseOptions pose_options;
+    std::string variant; // --variant NAME
     CompareCliOptions compare_options;
     std::uint32_t shadow_resolution = kDefaultShadowResolution;
     gpu::EnvironmentChoice environment; // the room unless --environment says otherwise
@@ -73,6 +75,9 @@ int run_render(Args args) {
         const OptionMatch pm = parse_pose_option(args, i, pose_options, option_error);
         if (pm == OptionMatch::Bad) return usage_error(option_error);
         if (pm == OptionMatch::Taken) continue;
+        const OptionMatch vm = parse_variant_option(args, i, variant, option_error);
+        if (vm == OptionMatch::Bad) return usage_error(option_error);
+        if (vm == OptionMatch::Taken) continue;
         const OptionMatch cm = parse_compare_option(args, i, compare_options, option_error);
         if (cm == OptionMatch::Bad) return usage_error(option_error);
         if (cm == OptionMatch::Taken) continue;
@@ -221,6 +226,7 @@ int run_render(Args args) {
     }
     {
         std::string error;
+        if (!apply_variant_option(*loaded.scene, variant, error)) return usage_error(error);
         settings.pose = resolve_pose(*loaded.scene, pose_options, error);
         if (!error.empty()) return usage_error(error);
         run.settings.pose = settings.pose;

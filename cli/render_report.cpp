@@ -115,18 +115,22 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
     const gpu::GpuScene* scene = renderer.scene();
     if (scene) {
         const gpu::GpuMemoryReport& m = scene->memory();
-        j["gpu_memory_bytes"] = {{"vertex_streams", m.vertex_streams},
-                                 {"indices", m.indices},
-                                 {"textures", m.textures},
-                                 {"materials", m.materials},
-                                 // Blocks of the materials that use an extension (0: none).
-                                 {"material_extensions", m.material_extensions},
-                                 {"instances", m.instances},
-                                 // Skinning and morph streams: 0 for a static scene.
-                                 {"motion", m.motion},
-                                 {"total", m.total()},
-                                 {"render_targets", renderer.resident().render_target_bytes},
-                                 {"environment", renderer.resident().environment.bytes}};
+        j["gpu_memory_bytes"] = {
+            {"vertex_streams", m.vertex_streams},
+            {"indices", m.indices},
+            {"textures", m.textures},
+            {"materials", m.materials},
+            // Blocks of the materials that use an extension (0: none).
+            {"material_extensions", m.material_extensions},
+            {"instances", m.instances},
+            // Skinning and morph streams: 0 for a static scene.
+            {"motion", m.motion},
+            {"total", m.total()},
+            {"render_targets", renderer.resident().render_target_bytes},
+            // KHR_materials_transmission's background (in render_targets):
+            // 0 without a transmissive material.
+            {"transmission_target", renderer.resident().transmission_target_bytes},
+            {"environment", renderer.resident().environment.bytes}};
         // What the geometry buffers were made for: acceleration-structure build input
         // and index device addresses only with ray tracing enabled (`--rt`).
         j["geometry_buffers"] = {

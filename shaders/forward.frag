@@ -11,8 +11,11 @@
 #include "surface_views.glsl"
 #include "ibl.glsl"
 #include "material_ext.glsl"
+#include "transmission.glsl"
+#include "refraction.glsl"
 #include "tonemap.glsl"
 #include "punctual.glsl"
+#include "diffuse_transmission.glsl"
 
 layout(location = 0) in vec3 in_world_pos;
 layout(location = 1) in vec3 in_normal;
@@ -21,6 +24,7 @@ layout(location = 3) in vec2 in_uv0;
 layout(location = 4) in vec2 in_uv1;
 layout(location = 5) in vec4 in_color;
 layout(location = 6) in float in_joint_weight; // read only by the joint-influence view
+layout(location = 7) flat in vec3 in_model_scale; // read only where a volume refracts
 
 layout(location = 0) out vec4 out_color;
 
@@ -37,6 +41,9 @@ layout(constant_id = 0) const uint VIEW = VIEW_LIT;
 layout(constant_id = 1) const uint STREAMS = HAS_TANGENT | HAS_UV0 | HAS_UV1 | HAS_COLOR;
 // Lines and points (MESH_LINES / MESH_POINTS in STREAMS) have no surface: they are
 // shaded unlit, base colour times vertex colour, like KHR_materials_unlit.
+// TransmissionPass's pipelines: linear radiance (no tone curve) with coverage in alpha,
+// transmissive materials left out (what they refract is what lies behind them).
+layout(constant_id = 2) const bool TRANSMISSION_BACKGROUND = false;
 const bool UNLIT_TOPOLOGY = (STREAMS & (MESH_LINES | MESH_POINTS)) != 0u;
 const bool READ_TANGENT = (STREAMS & HAS_TANGENT) != 0u || VIEW == VIEW_TANGENT ||
                           VIEW == VIEW_BITANGENT || VIEW == VIEW_TANGENT_W;
@@ -108,6 +115,12 @@ void main() {
     // (factor x texture rgb); 1 and white without the extension.
     case VIEW_SPECULAR_WEIGHT: c = vec3(material_specular(ext, uv0, uv1).a); break;
     case VIEW_SPECULAR_COLOR: c = material_specular(ext, uv0, uv1).rgb; break;
+    // The transmission family (transmission.glsl): grey factor x texture; thickness in
+    // local units, clipped at 1; the attenuation colour (white: none); 0 / black absent.
+    case VIEW_TRANSMISSION: c = vec3(material_transmission(ext, uv0, uv1)); break;
+    case VIEW_THICKNESS: c = vec3(clamp(material_thickness(ext, uv0, uv1), 0.0, 1.0)); break;
+    case VIEW_ATTENUATION: c = attenuation_view_color(material_attenuation(ext)); break;
+    case VIEW_DIFFUSE_TRANSMISSION: c = vec3(material_diffuse_transmission(ext, uv0, uv1).a); break;
     case VIEW_SHADOW:
         c = vec3(sun_visibility(in_world_pos, shadow_normal, -(frame.view * vec4(in_world_pos, 1.0)).z));
         break;
@@ -118,6 +131,8 @@ void main() {
         }
         vec3 shading_n = mapped_normal(m, x, t, b, n, uv0, uv1);
         Surface s;
+        float transmission = 0.0;
+        vec4 diffuse_transmission = vec4(0.0); // rgb colour, a factor
         vec4 mr_texel = vec4(1.0);
         if (x.workflow == WORKFLOW_SPECULAR_GLOSSINESS) {
             vec4 sg = specular_glossiness(x, uv0, uv1);
@@ -132,8 +147,17 @@ void main() {
                 float f90;
                 dielectric_fresnel(ext, uv0, uv1, f0, f90);
                 s = metal_rough_surface(base.rgb, mr.x, mr.y, f0, f90, shading_n, v);
+                transmission = material_transmission(ext, uv0, uv1);
+                diffuse_transmission = material_diffuse_transmission(ext, uv0, uv1);
+                if (TRANSMISSION_BACKGROUND && transmission > 0.0) discard;
             }
         }
+        // KHR_materials_transmission: that share of the diffuse passes through instead
+        // (the raster's refraction below; brdf.glsl's layering).
+        const vec3 opaque_diffuse = s.diffuse;
+        // KHR_materials_diffuse_transmission: of what remains, that share scatters to
+        // the other side (diffuse_transmission.glsl).
+        s.diffuse *= (1.0 - transmission) * (1.0 - diffuse_transmission.a);
         // The sun (and its shadow lookup) only where some pixel of the SIMD group
         // faces it: a uniform branch, so a CPU rasterizer skips the work.
         vec3 sun_l = -normalize(frame.sun_direction.xyz);
@@ -143,12 +167,28 @@ void main() {
             float shadow = sun_shadow(in_world_pos, shadow_normal, view_depth);
             c = brdf_times_cos(s, sun_l) * frame.sun_radiance.rgb * shadow;
         }
+        if (diffuse_transmission.a > 0.0) {
+            float view_depth = -(frame.view * vec4(in_world_pos, 1.0)).z;
+            // The back is lit where the front is not: the sun's map is looked up from the
+            // back side.
+            float shadow = sun_shadow(in_world_pos, -shadow_normal, view_depth);
+            vec3 albedo = opaque_diffuse * diffuse_transmission.rgb * diffuse_transmission.a *
+                          (1.0 - transmission) *
+                          beer_lambert(material_attenuation(ext), material_thickness(ext, uv0, uv1));
+            c += diffuse_transmission_light(s, albedo, in_world_pos, shadow);
+        }
         for (uint i = 0u; i < frame.params.y; ++i) c += punctual_light(s, frame.lights[i], in_world_pos);
         float ao = x.workflow == WORKFLOW_SPECULAR_GLOSSINESS ? occlusion(m, x, uv0, uv1)
                                                               : occlusion(m, x, uv0, uv1, mr_texel);
         // The environment replaces the sky/ground ambient term where one is loaded.
         c += (has_environment() ? environment_light(s) : ambient_light(s, frame.ambient.rgb)) * ao;
         c += emission(m, x, uv0, uv1);
+        if (transmission > 0.0) {
+            vec3 light = refracted_light(in_world_pos, s.n, v, s.roughness, material_ior(ext),
+                                         material_thickness(ext, uv0, uv1), in_model_scale,
+                                         material_attenuation(ext), material_dispersion(ext), opaque_diffuse);
+            c += transmission * (1.0 - transmission_fresnel(s)) * light;
+        }
         break;
     }
     }
@@ -158,6 +198,6 @@ void main() {
         c = display_to_linear(c);
     // The lit view is radiance: exposure and the tone curve map it to the display (per
     // fragment, before blending, as three.js does).
-    if (view == VIEW_LIT) c = tone_map(c, uint(frame.display.y), frame.display.x);
-    out_color = vec4(c, view == VIEW_LIT && m.alpha_mode == SHERPA_ALPHA_BLEND ? base.a : 1.0);
+    if (view == VIEW_LIT && !TRANSMISSION_BACKGROUND) c = tone_map(c, uint(frame.display.y), frame.display.x);
+    out_color = vec4(c, view == VIEW_LIT && m.alpha_mode == SHERPA_ALPHA_BLEND && !TRANSMISSION_BACKGROUND ? base.a : 1.0);
 }

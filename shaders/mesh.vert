@@ -12,6 +12,7 @@ layout(location = 3) out vec2 out_uv0;
 layout(location = 4) out vec2 out_uv1;
 layout(location = 5) out vec4 out_color;
 layout(location = 6) out float out_joint_weight; // the joint-influence view
+layout(location = 7) flat out vec3 out_model_scale; // refraction through a volume
 // Outputs the fragment shader does not read (absent streams are constants there,
 // see forward.frag) are removed when the pipeline links the two stages.
 
@@ -33,6 +34,7 @@ void main() {
     out_uv1 = fetch_uv1(i);
     out_color = fetch_color(i);
     out_joint_weight = d.highlight;
+    out_model_scale = vec3(length(inst.model[0].xyz), length(inst.model[1].xyz), length(inst.model[2].xyz));
     gl_Position = frame.view_proj * vec4(d.position, 1.0);
     gl_PointSize = POINT_SIZE; // read only by point-list pipelines
 }

@@ -197,6 +197,22 @@
         <source>Specular colour</source>
         <translation>Spiegelnde Farbe</translation>
     </message>
+    <message>
+        <source>Transmission</source>
+        <translation>Transmission</translation>
+    </message>
+    <message>
+        <source>Volume thickness</source>
+        <translation>Volumendicke</translation>
+    </message>
+    <message>
+        <source>Volume attenuation</source>
+        <translation>Volumendämpfung</translation>
+    </message>
+    <message>
+        <source>Diffuse transmission</source>
+        <translation>Diffuse Transmission</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>
@@ -607,6 +623,109 @@ PSNR %3
     <message>
         <source>auto</source>
         <translation>automatisch</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::EnvironmentMenu</name>
+    <message>
+        <source>&amp;Environment</source>
+        <translation>&amp;Umgebung</translation>
+    </message>
+    <message>
+        <source>&amp;None (Ambient Only)</source>
+        <translation>&amp;Keine (nur Umgebungslicht-Term)</translation>
+    </message>
+    <message>
+        <source>&amp;Room (Built In)</source>
+        <translation>&amp;Raum (eingebaut)</translation>
+    </message>
+    <message>
+        <source>&amp;Open HDR or EXR… (%1)</source>
+        <translation>HDR oder EXR ö&amp;ffnen… (%1)</translation>
+    </message>
+    <message>
+        <source>&amp;Open HDR or EXR…</source>
+        <translation>HDR oder EXR ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <source>&amp;Background</source>
+        <translation>&amp;Hintergrund</translation>
+    </message>
+    <message>
+        <source>&amp;Blurred</source>
+        <translation>&amp;Weichgezeichnet</translation>
+    </message>
+    <message>
+        <source>&amp;Solid Colour</source>
+        <translation>&amp;Einfarbig</translation>
+    </message>
+    <message>
+        <source>Rotate −15° (now %1°)</source>
+        <translation>Um −15° drehen (jetzt %1°)</translation>
+    </message>
+    <message>
+        <source>Rotate +15° (now %1°)</source>
+        <translation>Um +15° drehen (jetzt %1°)</translation>
+    </message>
+    <message>
+        <source>Brighter (intensity %1)</source>
+        <translation>Heller (Intensität %1)</translation>
+    </message>
+    <message>
+        <source>Darker</source>
+        <translation>Dunkler</translation>
+    </message>
+    <message>
+        <source>Reset Rotation and Intensity</source>
+        <translation>Drehung und Intensität zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Default &amp;Sun</source>
+        <translation>Standard-&amp;Sonne</translation>
+    </message>
+    <message>
+        <source>Energy &amp;Compensation (Multiple Scattering)</source>
+        <translation>Energie&amp;kompensation (Mehrfachstreuung)</translation>
+    </message>
+    <message>
+        <source>&amp;Tone Mapping</source>
+        <translation>&amp;Tone-Mapping</translation>
+    </message>
+    <message>
+        <source>Khronos PBR &amp;Neutral</source>
+        <translation>Khronos PBR &amp;Neutral</translation>
+    </message>
+    <message>
+        <source>&amp;ACES Filmic</source>
+        <translation>&amp;ACES Filmic</translation>
+    </message>
+    <message>
+        <source>A&amp;gX</source>
+        <translation>A&amp;gX</translation>
+    </message>
+    <message>
+        <source>&amp;Linear (Clamp)</source>
+        <translation>&amp;Linear (Begrenzen)</translation>
+    </message>
+    <message>
+        <source>Exposure +½ Stop (now %1 EV)</source>
+        <translation>Belichtung +½ Blende (jetzt %1 EV)</translation>
+    </message>
+    <message>
+        <source>Exposure −½ Stop</source>
+        <translation>Belichtung −½ Blende</translation>
+    </message>
+    <message>
+        <source>Exposure 0 EV</source>
+        <translation>Belichtung 0 EV</translation>
+    </message>
+    <message>
+        <source>Open Environment</source>
+        <translation>Umgebung öffnen</translation>
+    </message>
+    <message>
+        <source>HDR images (*.hdr *.exr);;All files (*)</source>
+        <translation>HDR-Bilder (*.hdr *.exr);;Alle Dateien (*)</translation>
     </message>
 </context>
 <context>
@@ -1521,6 +1640,14 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <source>Byte offset in the record</source>
         <translation>Byte-Versatz im Datensatz</translation>
     </message>
+    <message>
+        <source>transmission %1, volume %2, diffuse transmission %3, dispersion %4</source>
+        <translation>Transmission %1, Volumen %2, diffuse Transmission %3, Dispersion %4</translation>
+    </message>
+    <message>
+        <source> (distance infinite: none)</source>
+        <translation> (Distanz unendlich: keine)</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MeshDock</name>
@@ -2063,116 +2190,6 @@ Die aktuelle Szene bleibt erhalten.</translation>
     </message>
 </context>
 <context>
-    <name>sherpa::editor::VertexTableModel</name>
-    <message>
-        <source>tangent error (deg)</source>
-        <translation>Tangentenfehler (Grad)</translation>
-    </message>
-</context>
-<context>
-    <name>sherpa::editor::EnvironmentMenu</name>
-    <message>
-        <source>&amp;Environment</source>
-        <translation>&amp;Umgebung</translation>
-    </message>
-    <message>
-        <source>&amp;None (Ambient Only)</source>
-        <translation>&amp;Keine (nur Umgebungslicht-Term)</translation>
-    </message>
-    <message>
-        <source>&amp;Room (Built In)</source>
-        <translation>&amp;Raum (eingebaut)</translation>
-    </message>
-    <message>
-        <source>&amp;Open HDR or EXR… (%1)</source>
-        <translation>HDR oder EXR ö&amp;ffnen… (%1)</translation>
-    </message>
-    <message>
-        <source>&amp;Open HDR or EXR…</source>
-        <translation>HDR oder EXR ö&amp;ffnen…</translation>
-    </message>
-    <message>
-        <source>&amp;Background</source>
-        <translation>&amp;Hintergrund</translation>
-    </message>
-    <message>
-        <source>&amp;Blurred</source>
-        <translation>&amp;Weichgezeichnet</translation>
-    </message>
-    <message>
-        <source>&amp;Solid Colour</source>
-        <translation>&amp;Einfarbig</translation>
-    </message>
-    <message>
-        <source>Rotate −15° (now %1°)</source>
-        <translation>Um −15° drehen (jetzt %1°)</translation>
-    </message>
-    <message>
-        <source>Rotate +15° (now %1°)</source>
-        <translation>Um +15° drehen (jetzt %1°)</translation>
-    </message>
-    <message>
-        <source>Brighter (intensity %1)</source>
-        <translation>Heller (Intensität %1)</translation>
-    </message>
-    <message>
-        <source>Darker</source>
-        <translation>Dunkler</translation>
-    </message>
-    <message>
-        <source>Reset Rotation and Intensity</source>
-        <translation>Drehung und Intensität zurücksetzen</translation>
-    </message>
-    <message>
-        <source>Default &amp;Sun</source>
-        <translation>Standard-&amp;Sonne</translation>
-    </message>
-    <message>
-        <source>Energy &amp;Compensation (Multiple Scattering)</source>
-        <translation>Energie&amp;kompensation (Mehrfachstreuung)</translation>
-    </message>
-    <message>
-        <source>&amp;Tone Mapping</source>
-        <translation>&amp;Tone-Mapping</translation>
-    </message>
-    <message>
-        <source>Khronos PBR &amp;Neutral</source>
-        <translation>Khronos PBR &amp;Neutral</translation>
-    </message>
-    <message>
-        <source>&amp;ACES Filmic</source>
-        <translation>&amp;ACES Filmic</translation>
-    </message>
-    <message>
-        <source>A&amp;gX</source>
-        <translation>A&amp;gX</translation>
-    </message>
-    <message>
-        <source>&amp;Linear (Clamp)</source>
-        <translation>&amp;Linear (Begrenzen)</translation>
-    </message>
-    <message>
-        <source>Exposure +½ Stop (now %1 EV)</source>
-        <translation>Belichtung +½ Blende (jetzt %1 EV)</translation>
-    </message>
-    <message>
-        <source>Exposure −½ Stop</source>
-        <translation>Belichtung −½ Blende</translation>
-    </message>
-    <message>
-        <source>Exposure 0 EV</source>
-        <translation>Belichtung 0 EV</translation>
-    </message>
-    <message>
-        <source>Open Environment</source>
-        <translation>Umgebung öffnen</translation>
-    </message>
-    <message>
-        <source>HDR images (*.hdr *.exr);;All files (*)</source>
-        <translation>HDR-Bilder (*.hdr *.exr);;Alle Dateien (*)</translation>
-    </message>
-</context>
-<context>
     <name>sherpa::editor::ValidationDock</name>
     <message>
         <source>Validation</source>
@@ -2228,6 +2245,40 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>Message</source>
         <translation>Meldung</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::VertexTableModel</name>
+    <message>
+        <source>tangent error (deg)</source>
+        <translation>Tangentenfehler (Grad)</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::VariantMenu</name>
+    <message>
+        <source>default materials</source>
+        <translation>Standardmaterialien</translation>
+    </message>
+    <message>
+        <source>Material variant: %1 (%2 primitive(s), %3 draw(s) changed material; %4 GPU bytes uploaded%5; nothing reloaded).</source>
+        <translation>Materialvariante: %1 (%2 Primitive, %3 Draws mit anderem Material; %4 GPU-Bytes hochgeladen%5; nichts neu geladen).</translation>
+    </message>
+    <message>
+        <source>, culling lists rebuilt for a changed alpha mode</source>
+        <translation>, Culling-Listen wegen geänderten Alpha-Modus neu aufgebaut</translation>
+    </message>
+    <message>
+        <source>Va&amp;riants</source>
+        <translation>Va&amp;rianten</translation>
+    </message>
+    <message>
+        <source>&amp;Default Materials</source>
+        <translation>&amp;Standardmaterialien</translation>
+    </message>
+    <message>
+        <source>The file has no material variants</source>
+        <translation>Die Datei hat keine Materialvarianten</translation>
     </message>
 </context>
 </TS>

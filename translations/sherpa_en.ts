@@ -197,6 +197,22 @@
         <source>Specular colour</source>
         <translation>Specular colour</translation>
     </message>
+    <message>
+        <source>Transmission</source>
+        <translation>Transmission</translation>
+    </message>
+    <message>
+        <source>Volume thickness</source>
+        <translation>Volume thickness</translation>
+    </message>
+    <message>
+        <source>Volume attenuation</source>
+        <translation>Volume attenuation</translation>
+    </message>
+    <message>
+        <source>Diffuse transmission</source>
+        <translation>Diffuse transmission</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>
@@ -607,6 +623,109 @@ PSNR %3
     <message>
         <source>auto</source>
         <translation>auto</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::EnvironmentMenu</name>
+    <message>
+        <source>&amp;Environment</source>
+        <translation>&amp;Environment</translation>
+    </message>
+    <message>
+        <source>&amp;None (Ambient Only)</source>
+        <translation>&amp;None (Ambient Only)</translation>
+    </message>
+    <message>
+        <source>&amp;Room (Built In)</source>
+        <translation>&amp;Room (Built In)</translation>
+    </message>
+    <message>
+        <source>&amp;Open HDR or EXR… (%1)</source>
+        <translation>&amp;Open HDR or EXR… (%1)</translation>
+    </message>
+    <message>
+        <source>&amp;Open HDR or EXR…</source>
+        <translation>&amp;Open HDR or EXR…</translation>
+    </message>
+    <message>
+        <source>&amp;Background</source>
+        <translation>&amp;Background</translation>
+    </message>
+    <message>
+        <source>&amp;Blurred</source>
+        <translation>&amp;Blurred</translation>
+    </message>
+    <message>
+        <source>&amp;Solid Colour</source>
+        <translation>&amp;Solid Colour</translation>
+    </message>
+    <message>
+        <source>Rotate −15° (now %1°)</source>
+        <translation>Rotate −15° (now %1°)</translation>
+    </message>
+    <message>
+        <source>Rotate +15° (now %1°)</source>
+        <translation>Rotate +15° (now %1°)</translation>
+    </message>
+    <message>
+        <source>Brighter (intensity %1)</source>
+        <translation>Brighter (intensity %1)</translation>
+    </message>
+    <message>
+        <source>Darker</source>
+        <translation>Darker</translation>
+    </message>
+    <message>
+        <source>Reset Rotation and Intensity</source>
+        <translation>Reset Rotation and Intensity</translation>
+    </message>
+    <message>
+        <source>Default &amp;Sun</source>
+        <translation>Default &amp;Sun</translation>
+    </message>
+    <message>
+        <source>Energy &amp;Compensation (Multiple Scattering)</source>
+        <translation>Energy &amp;Compensation (Multiple Scattering)</translation>
+    </message>
+    <message>
+        <source>&amp;Tone Mapping</source>
+        <translation>&amp;Tone Mapping</translation>
+    </message>
+    <message>
+        <source>Khronos PBR &amp;Neutral</source>
+        <translation>Khronos PBR &amp;Neutral</translation>
+    </message>
+    <message>
+        <source>&amp;ACES Filmic</source>
+        <translation>&amp;ACES Filmic</translation>
+    </message>
+    <message>
+        <source>A&amp;gX</source>
+        <translation>A&amp;gX</translation>
+    </message>
+    <message>
+        <source>&amp;Linear (Clamp)</source>
+        <translation>&amp;Linear (Clamp)</translation>
+    </message>
+    <message>
+        <source>Exposure +½ Stop (now %1 EV)</source>
+        <translation>Exposure +½ Stop (now %1 EV)</translation>
+    </message>
+    <message>
+        <source>Exposure −½ Stop</source>
+        <translation>Exposure −½ Stop</translation>
+    </message>
+    <message>
+        <source>Exposure 0 EV</source>
+        <translation>Exposure 0 EV</translation>
+    </message>
+    <message>
+        <source>Open Environment</source>
+        <translation>Open Environment</translation>
+    </message>
+    <message>
+        <source>HDR images (*.hdr *.exr);;All files (*)</source>
+        <translation>HDR images (*.hdr *.exr);;All files (*)</translation>
     </message>
 </context>
 <context>
@@ -1521,6 +1640,14 @@ The current scene is kept.</translation>
         <source>Byte offset in the record</source>
         <translation>Byte offset in the record</translation>
     </message>
+    <message>
+        <source>transmission %1, volume %2, diffuse transmission %3, dispersion %4</source>
+        <translation>transmission %1, volume %2, diffuse transmission %3, dispersion %4</translation>
+    </message>
+    <message>
+        <source> (distance infinite: none)</source>
+        <translation> (distance infinite: none)</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MeshDock</name>
@@ -2063,116 +2190,6 @@ The current scene is kept.</translation>
     </message>
 </context>
 <context>
-    <name>sherpa::editor::VertexTableModel</name>
-    <message>
-        <source>tangent error (deg)</source>
-        <translation>tangent error (deg)</translation>
-    </message>
-</context>
-<context>
-    <name>sherpa::editor::EnvironmentMenu</name>
-    <message>
-        <source>&amp;Environment</source>
-        <translation>&amp;Environment</translation>
-    </message>
-    <message>
-        <source>&amp;None (Ambient Only)</source>
-        <translation>&amp;None (Ambient Only)</translation>
-    </message>
-    <message>
-        <source>&amp;Room (Built In)</source>
-        <translation>&amp;Room (Built In)</translation>
-    </message>
-    <message>
-        <source>&amp;Open HDR or EXR… (%1)</source>
-        <translation>&amp;Open HDR or EXR… (%1)</translation>
-    </message>
-    <message>
-        <source>&amp;Open HDR or EXR…</source>
-        <translation>&amp;Open HDR or EXR…</translation>
-    </message>
-    <message>
-        <source>&amp;Background</source>
-        <translation>&amp;Background</translation>
-    </message>
-    <message>
-        <source>&amp;Blurred</source>
-        <translation>&amp;Blurred</translation>
-    </message>
-    <message>
-        <source>&amp;Solid Colour</source>
-        <translation>&amp;Solid Colour</translation>
-    </message>
-    <message>
-        <source>Rotate −15° (now %1°)</source>
-        <translation>Rotate −15° (now %1°)</translation>
-    </message>
-    <message>
-        <source>Rotate +15° (now %1°)</source>
-        <translation>Rotate +15° (now %1°)</translation>
-    </message>
-    <message>
-        <source>Brighter (intensity %1)</source>
-        <translation>Brighter (intensity %1)</translation>
-    </message>
-    <message>
-        <source>Darker</source>
-        <translation>Darker</translation>
-    </message>
-    <message>
-        <source>Reset Rotation and Intensity</source>
-        <translation>Reset Rotation and Intensity</translation>
-    </message>
-    <message>
-        <source>Default &amp;Sun</source>
-        <translation>Default &amp;Sun</translation>
-    </message>
-    <message>
-        <source>Energy &amp;Compensation (Multiple Scattering)</source>
-        <translation>Energy &amp;Compensation (Multiple Scattering)</translation>
-    </message>
-    <message>
-        <source>&amp;Tone Mapping</source>
-        <translation>&amp;Tone Mapping</translation>
-    </message>
-    <message>
-        <source>Khronos PBR &amp;Neutral</source>
-        <translation>Khronos PBR &amp;Neutral</translation>
-    </message>
-    <message>
-        <source>&amp;ACES Filmic</source>
-        <translation>&amp;ACES Filmic</translation>
-    </message>
-    <message>
-        <source>A&amp;gX</source>
-        <translation>A&amp;gX</translation>
-    </message>
-    <message>
-        <source>&amp;Linear (Clamp)</source>
-        <translation>&amp;Linear (Clamp)</translation>
-    </message>
-    <message>
-        <source>Exposure +½ Stop (now %1 EV)</source>
-        <translation>Exposure +½ Stop (now %1 EV)</translation>
-    </message>
-    <message>
-        <source>Exposure −½ Stop</source>
-        <translation>Exposure −½ Stop</translation>
-    </message>
-    <message>
-        <source>Exposure 0 EV</source>
-        <translation>Exposure 0 EV</translation>
-    </message>
-    <message>
-        <source>Open Environment</source>
-        <translation>Open Environment</translation>
-    </message>
-    <message>
-        <source>HDR images (*.hdr *.exr);;All files (*)</source>
-        <translation>HDR images (*.hdr *.exr);;All files (*)</translation>
-    </message>
-</context>
-<context>
     <name>sherpa::editor::ValidationDock</name>
     <message>
         <source>Validation</source>
@@ -2228,6 +2245,40 @@ The current scene is kept.</translation>
     <message>
         <source>Message</source>
         <translation>Message</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::VertexTableModel</name>
+    <message>
+        <source>tangent error (deg)</source>
+        <translation>tangent error (deg)</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::VariantMenu</name>
+    <message>
+        <source>default materials</source>
+        <translation>default materials</translation>
+    </message>
+    <message>
+        <source>Material variant: %1 (%2 primitive(s), %3 draw(s) changed material; %4 GPU bytes uploaded%5; nothing reloaded).</source>
+        <translation>Material variant: %1 (%2 primitive(s), %3 draw(s) changed material; %4 GPU bytes uploaded%5; nothing reloaded).</translation>
+    </message>
+    <message>
+        <source>, culling lists rebuilt for a changed alpha mode</source>
+        <translation>, culling lists rebuilt for a changed alpha mode</translation>
+    </message>
+    <message>
+        <source>Va&amp;riants</source>
+        <translation>Va&amp;riants</translation>
+    </message>
+    <message>
+        <source>&amp;Default Materials</source>
+        <translation>&amp;Default Materials</translation>
+    </message>
+    <message>
+        <source>The file has no material variants</source>
+        <translation>The file has no material variants</translation>
     </message>
 </context>
 </TS>

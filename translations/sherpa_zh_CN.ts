@@ -197,6 +197,22 @@
         <source>Specular colour</source>
         <translation>镜面反射颜色</translation>
     </message>
+    <message>
+        <source>Transmission</source>
+        <translation>透射</translation>
+    </message>
+    <message>
+        <source>Volume thickness</source>
+        <translation>体积厚度</translation>
+    </message>
+    <message>
+        <source>Volume attenuation</source>
+        <translation>体积衰减</translation>
+    </message>
+    <message>
+        <source>Diffuse transmission</source>
+        <translation>漫透射</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>
@@ -607,6 +623,109 @@ PSNR %3
     <message>
         <source>auto</source>
         <translation>自动</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::EnvironmentMenu</name>
+    <message>
+        <source>&amp;Environment</source>
+        <translation>环境(&amp;E)</translation>
+    </message>
+    <message>
+        <source>&amp;None (Ambient Only)</source>
+        <translation>无（仅环境光项）(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;Room (Built In)</source>
+        <translation>房间（内置）(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Open HDR or EXR… (%1)</source>
+        <translation>打开 HDR 或 EXR…(%1)(&amp;O)</translation>
+    </message>
+    <message>
+        <source>&amp;Open HDR or EXR…</source>
+        <translation>打开 HDR 或 EXR…(&amp;O)</translation>
+    </message>
+    <message>
+        <source>&amp;Background</source>
+        <translation>背景(&amp;B)</translation>
+    </message>
+    <message>
+        <source>&amp;Blurred</source>
+        <translation>模糊(&amp;B)</translation>
+    </message>
+    <message>
+        <source>&amp;Solid Colour</source>
+        <translation>纯色(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Rotate −15° (now %1°)</source>
+        <translation>旋转 −15°（当前 %1°）</translation>
+    </message>
+    <message>
+        <source>Rotate +15° (now %1°)</source>
+        <translation>旋转 +15°（当前 %1°）</translation>
+    </message>
+    <message>
+        <source>Brighter (intensity %1)</source>
+        <translation>更亮（强度 %1）</translation>
+    </message>
+    <message>
+        <source>Darker</source>
+        <translation>更暗</translation>
+    </message>
+    <message>
+        <source>Reset Rotation and Intensity</source>
+        <translation>重置旋转和强度</translation>
+    </message>
+    <message>
+        <source>Default &amp;Sun</source>
+        <translation>默认太阳(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Energy &amp;Compensation (Multiple Scattering)</source>
+        <translation>能量补偿（多次散射）(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Tone Mapping</source>
+        <translation>色调映射(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Khronos PBR &amp;Neutral</source>
+        <translation>Khronos PBR 中性(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;ACES Filmic</source>
+        <translation>ACES 电影(&amp;A)</translation>
+    </message>
+    <message>
+        <source>A&amp;gX</source>
+        <translation>AgX(&amp;G)</translation>
+    </message>
+    <message>
+        <source>&amp;Linear (Clamp)</source>
+        <translation>线性（截断）(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Exposure +½ Stop (now %1 EV)</source>
+        <translation>曝光 +½ 档（当前 %1 EV）</translation>
+    </message>
+    <message>
+        <source>Exposure −½ Stop</source>
+        <translation>曝光 −½ 档</translation>
+    </message>
+    <message>
+        <source>Exposure 0 EV</source>
+        <translation>曝光 0 EV</translation>
+    </message>
+    <message>
+        <source>Open Environment</source>
+        <translation>打开环境</translation>
+    </message>
+    <message>
+        <source>HDR images (*.hdr *.exr);;All files (*)</source>
+        <translation>HDR 图像 (*.hdr *.exr);;所有文件 (*)</translation>
     </message>
 </context>
 <context>
@@ -1521,6 +1640,14 @@ The current scene is kept.</source>
         <source>Byte offset in the record</source>
         <translation>记录中的字节偏移</translation>
     </message>
+    <message>
+        <source>transmission %1, volume %2, diffuse transmission %3, dispersion %4</source>
+        <translation>透射 %1，体积 %2，漫透射 %3，色散 %4</translation>
+    </message>
+    <message>
+        <source> (distance infinite: none)</source>
+        <translation>（距离无限：无衰减）</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MeshDock</name>
@@ -2063,116 +2190,6 @@ The current scene is kept.</source>
     </message>
 </context>
 <context>
-    <name>sherpa::editor::VertexTableModel</name>
-    <message>
-        <source>tangent error (deg)</source>
-        <translation>切线误差（度）</translation>
-    </message>
-</context>
-<context>
-    <name>sherpa::editor::EnvironmentMenu</name>
-    <message>
-        <source>&amp;Environment</source>
-        <translation>环境(&amp;E)</translation>
-    </message>
-    <message>
-        <source>&amp;None (Ambient Only)</source>
-        <translation>无（仅环境光项）(&amp;N)</translation>
-    </message>
-    <message>
-        <source>&amp;Room (Built In)</source>
-        <translation>房间（内置）(&amp;R)</translation>
-    </message>
-    <message>
-        <source>&amp;Open HDR or EXR… (%1)</source>
-        <translation>打开 HDR 或 EXR…(%1)(&amp;O)</translation>
-    </message>
-    <message>
-        <source>&amp;Open HDR or EXR…</source>
-        <translation>打开 HDR 或 EXR…(&amp;O)</translation>
-    </message>
-    <message>
-        <source>&amp;Background</source>
-        <translation>背景(&amp;B)</translation>
-    </message>
-    <message>
-        <source>&amp;Blurred</source>
-        <translation>模糊(&amp;B)</translation>
-    </message>
-    <message>
-        <source>&amp;Solid Colour</source>
-        <translation>纯色(&amp;S)</translation>
-    </message>
-    <message>
-        <source>Rotate −15° (now %1°)</source>
-        <translation>旋转 −15°（当前 %1°）</translation>
-    </message>
-    <message>
-        <source>Rotate +15° (now %1°)</source>
-        <translation>旋转 +15°（当前 %1°）</translation>
-    </message>
-    <message>
-        <source>Brighter (intensity %1)</source>
-        <translation>更亮（强度 %1）</translation>
-    </message>
-    <message>
-        <source>Darker</source>
-        <translation>更暗</translation>
-    </message>
-    <message>
-        <source>Reset Rotation and Intensity</source>
-        <translation>重置旋转和强度</translation>
-    </message>
-    <message>
-        <source>Default &amp;Sun</source>
-        <translation>默认太阳(&amp;S)</translation>
-    </message>
-    <message>
-        <source>Energy &amp;Compensation (Multiple Scattering)</source>
-        <translation>能量补偿（多次散射）(&amp;C)</translation>
-    </message>
-    <message>
-        <source>&amp;Tone Mapping</source>
-        <translation>色调映射(&amp;T)</translation>
-    </message>
-    <message>
-        <source>Khronos PBR &amp;Neutral</source>
-        <translation>Khronos PBR 中性(&amp;N)</translation>
-    </message>
-    <message>
-        <source>&amp;ACES Filmic</source>
-        <translation>ACES 电影(&amp;A)</translation>
-    </message>
-    <message>
-        <source>A&amp;gX</source>
-        <translation>AgX(&amp;G)</translation>
-    </message>
-    <message>
-        <source>&amp;Linear (Clamp)</source>
-        <translation>线性（截断）(&amp;L)</translation>
-    </message>
-    <message>
-        <source>Exposure +½ Stop (now %1 EV)</source>
-        <translation>曝光 +½ 档（当前 %1 EV）</translation>
-    </message>
-    <message>
-        <source>Exposure −½ Stop</source>
-        <translation>曝光 −½ 档</translation>
-    </message>
-    <message>
-        <source>Exposure 0 EV</source>
-        <translation>曝光 0 EV</translation>
-    </message>
-    <message>
-        <source>Open Environment</source>
-        <translation>打开环境</translation>
-    </message>
-    <message>
-        <source>HDR images (*.hdr *.exr);;All files (*)</source>
-        <translation>HDR 图像 (*.hdr *.exr);;所有文件 (*)</translation>
-    </message>
-</context>
-<context>
     <name>sherpa::editor::ValidationDock</name>
     <message>
         <source>Validation</source>
@@ -2228,6 +2245,40 @@ The current scene is kept.</source>
     <message>
         <source>Message</source>
         <translation>消息</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::VertexTableModel</name>
+    <message>
+        <source>tangent error (deg)</source>
+        <translation>切线误差（度）</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::VariantMenu</name>
+    <message>
+        <source>default materials</source>
+        <translation>默认材质</translation>
+    </message>
+    <message>
+        <source>Material variant: %1 (%2 primitive(s), %3 draw(s) changed material; %4 GPU bytes uploaded%5; nothing reloaded).</source>
+        <translation>材质变体：%1（%2 个图元、%3 次绘制更换了材质；上传 %4 字节 GPU 数据%5；未重新加载）。</translation>
+    </message>
+    <message>
+        <source>, culling lists rebuilt for a changed alpha mode</source>
+        <translation>，因 Alpha 模式改变而重建剔除列表</translation>
+    </message>
+    <message>
+        <source>Va&amp;riants</source>
+        <translation>变体(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Default Materials</source>
+        <translation>默认材质(&amp;D)</translation>
+    </message>
+    <message>
+        <source>The file has no material variants</source>
+        <translation>该文件没有材质变体</translation>
     </message>
 </context>
 </TS>

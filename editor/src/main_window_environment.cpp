@@ -9,6 +9,7 @@
 #include "main_window.h"
 #include "main_window_actions.h"
 #include "render_thread.h"
+#include "variant_menu.h"
 #include "viewport_window.h"
 
 #include <QCoreApplication>
@@ -25,6 +26,18 @@ void MainWindow::setupEnvironment() {
             &MainWindow::applyEnvironment);
     connect(environment_, &EnvironmentMenu::displayChanged, this, [this] {
         updateLabLighting();
+        viewport_->scheduleFrame();
+    });
+    // KHR_materials_variants: switched on the render thread, said in the log.
+    auto* variants = new VariantMenu(
+        context_,
+        [this](VariantMenu::Task t) {
+            if (render_) render_->post(std::move(t));
+        },
+        this);
+    menuBar()->insertMenu(a_->culling->menuAction(), variants);
+    connect(variants, &VariantMenu::switched, this, [this](const QString& message) {
+        log_->append(LogDock::Level::Info, message);
         viewport_->scheduleFrame();
     });
 }

@@ -119,6 +119,7 @@ void MaterialFieldsModel::buildExtensionRows() {
                                    QStringLiteral("uint"), texture(sp.specular_color),
                                    sp.specular_color.present() ? sp.specular_color.texture : -1});
     }
+    appendTransmissionRows(place, m);
 }
 
 QVariant MaterialFieldsModel::extensionData(const ExtensionRow& r, int column, int role) const {

@@ -13,6 +13,10 @@
 
 #include "scene_session.h"
 
+namespace sherpa::gpu {
+struct MaterialExtensionPlace;
+}
+
 namespace sherpa::editor {
 
 class MaterialFieldsModel : public QAbstractTableModel {
@@ -69,6 +73,9 @@ private:
         int texture; // Scene::textures index, -1 if none
     };
     void buildExtensionRows();
+    // The transmission family's rows (material_fields_transmission.cpp).
+    void appendTransmissionRows(const gpu::MaterialExtensionPlace& place,
+                                const MaterialInstance& m);
     QVariant extensionData(const ExtensionRow& r, int column, int role) const;
     int specGlossRows() const { return specGloss() ? 3 : 0; }
 

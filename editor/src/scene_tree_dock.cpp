@@ -69,6 +69,8 @@ SceneTreeDock::SceneTreeDock(const EditorContext& context, QWidget* parent)
 void SceneTreeDock::retranslate() {
     setWindowTitle(tr("Scene Tree"));
     filter_->setPlaceholderText(tr("Filter by name…"));
+    // The pane's text is composed from the model's translated cells: compose it again.
+    showDetails(view_->currentIndex());
 }
 
 void SceneTreeDock::setFilter(const QString& text) {

@@ -162,7 +162,8 @@ void DockContentTests::docksShowCompressionContainerAndSpecGloss() {
 
 // KHR_materials_ior / _specular: after the record's 14 fields, the material's extension
 // index and blocks with their byte offsets in the extension buffer (material 1 of the
-// ior sweep: the second material's index is at word 2, after material 0's index + ior).
+// ior sweep: the second material's index is at word 3, after material 0's two-word
+// index + ior).
 void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
     const LoadOutcome sweep = SceneLoadJob::loadNow(
         QStringLiteral(SHERPA_TEST_DATA_DIR "/material_sweeps/ior_sweep.gltf"));
@@ -172,9 +173,9 @@ void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
                        MaterialFieldsModel::Source::Cpu);
     QCOMPARE(fields.rowCount(), 14 + 2);
     QCOMPARE(display(fields, 14, MaterialFieldsModel::FieldColumn), QStringLiteral("ext.index"));
-    QCOMPARE(display(fields, 14, MaterialFieldsModel::OffsetColumn), QStringLiteral("32"));
+    QCOMPARE(display(fields, 14, MaterialFieldsModel::OffsetColumn), QStringLiteral("48"));
     QCOMPARE(display(fields, 15, MaterialFieldsModel::FieldColumn), QStringLiteral("ext.ior"));
-    QCOMPARE(display(fields, 15, MaterialFieldsModel::OffsetColumn), QStringLiteral("48"));
+    QCOMPARE(display(fields, 15, MaterialFieldsModel::OffsetColumn), QStringLiteral("80"));
     QCOMPARE(display(fields, 15, MaterialFieldsModel::ValueColumn), Format::number(1.2f));
     QCOMPARE(display(fields, 15, MaterialFieldsModel::PropertyColumn),
              QStringLiteral("KHR_materials_ior.ior"));
@@ -187,10 +188,10 @@ void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
     QCOMPARE(fields.rowCount(), 14 + 4); // index, colour/factor, two textures
     QCOMPARE(display(fields, 15, MaterialFieldsModel::FieldColumn),
              QStringLiteral("ext.specular.color_factor"));
-    QCOMPARE(display(fields, 15, MaterialFieldsModel::OffsetColumn), QStringLiteral("16"));
+    QCOMPARE(display(fields, 15, MaterialFieldsModel::OffsetColumn), QStringLiteral("32"));
     QCOMPARE(display(fields, 15, MaterialFieldsModel::ValueColumn),
              Format::vec(glm::vec4(1.0f, 1.0f, 1.0f, 0.0f)));
-    QCOMPARE(display(fields, 16, MaterialFieldsModel::OffsetColumn), QStringLiteral("32"));
+    QCOMPARE(display(fields, 16, MaterialFieldsModel::OffsetColumn), QStringLiteral("48"));
 }
 
 QTEST_MAIN(DockContentTests)

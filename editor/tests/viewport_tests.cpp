@@ -103,6 +103,7 @@ private Q_SLOTS:
     void narrowViewportFramesTheHelmet();
     void framingIsTheEnginesOnLoadFrameAllAndSelection();
     void fileCamerasAreOfferedAndSetTheFront();
+    void variantMenuSwitchesMaterialsWithoutReloading();
 
 private:
     bool hasGpu() const { return window_->renderer() != nullptr; }
@@ -358,6 +359,48 @@ void ViewportTests::fileCamerasAreOfferedAndSetTheFront() {
     QVERIFY(glm::length(window_->viewport()->camera().eye() - file_eye) <
             1e-3f * glm::length(scene.bounds.extent()));
     QVERIFY(load(*window_, QStringLiteral("builtin:default")));
+}
+
+void ViewportTests::variantMenuSwitchesMaterialsWithoutReloading() {
+    // KHR_materials_variants: the Variants menu lists the file's variants; choosing one
+    // switches the materials on the render thread (the log says what changed, GPU bytes
+    // included), the scene is not reloaded, and the image changes; the defaults restore it.
+    QVERIFY(load(*window_, QString::fromUtf8(SHERPA_TEST_DATA_DIR) +
+                               QStringLiteral("/material_sweeps/variants.gltf")));
+    if (!hasGpu()) QSKIP("no Vulkan device: nothing is rendered");
+    QMenu* variants = nullptr;
+    for (QAction* top : window_->menuBar()->actions())
+        if (top->menu() && top->menu()->title() == QStringLiteral("Va&riants"))
+            variants = top->menu();
+    QVERIFY(variants);
+    QVERIFY(variants->isEnabled());
+    QStringList names;
+    for (QAction* a : variants->actions())
+        if (!a->isSeparator()) names << a->text();
+    QCOMPARE(names, (QStringList{QStringLiteral("&Default Materials"), QStringLiteral("Warm"),
+                                 QStringLiteral("Cool")}));
+    window_->pickAt(QPointF(0.999, 0.999)); // no selection highlight
+    QVERIFY(test::next_frame(*window_));
+    const QImage before = test::viewport_shot(*window_);
+    const auto* session = window_->context().session();
+    variants->actions().at(2)->trigger(); // Warm (after the separator)
+    QTRY_VERIFY_WITH_TIMEOUT(
+        window_->logDock()->text().contains(QStringLiteral(
+            "Material variant: Warm (2 primitive(s), 2 draw(s) changed material; 8 GPU bytes "
+            "uploaded; nothing reloaded).")),
+        kLoadTimeoutMs);
+    QCOMPARE(window_->context().session(), session); // not reloaded
+    QVERIFY(test::next_frame(*window_));
+    const int changed = differingPixels(before, test::viewport_shot(*window_));
+    QVERIFY2(changed > 200, qPrintable(QStringLiteral("%1 pixels changed").arg(changed)));
+    variants->actions().at(0)->trigger(); // back to the defaults
+    QTRY_VERIFY_WITH_TIMEOUT(
+        window_->logDock()->text().contains(QStringLiteral("Material variant: default materials")),
+        kLoadTimeoutMs);
+    QVERIFY(test::next_frame(*window_));
+    QCOMPARE(differingPixels(before, test::viewport_shot(*window_)), 0);
+    QVERIFY(load(*window_, QStringLiteral("builtin:default")));
+    QVERIFY(!variants->isEnabled()); // no variants in that scene
 }
 
 QTEST_MAIN(ViewportTests)

@@ -27,10 +27,12 @@ layout(set = 1, binding = 8, std430) readonly buffer MaterialExtensionBlock {
 #endif
 
 GPUExtensionIndex extension_index(GPUMaterialExtra x) {
-    if (x.extensions == NO_EXTENSION)
-        return GPUExtensionIndex(NO_EXTENSION, NO_EXTENSION, NO_EXTENSION, NO_EXTENSION);
-    uvec4 w = material_ext[x.extensions];
-    return GPUExtensionIndex(w.x, w.y, w.z, w.w);
+    uvec4 w = uvec4(NO_EXTENSION), w1 = uvec4(NO_EXTENSION);
+    if (x.extensions != NO_EXTENSION) {
+        w = material_ext[x.extensions];
+        w1 = material_ext[x.extensions + 1u];
+    }
+    return GPUExtensionIndex(w.x, w.y, w.z, w.w, w1.x, w1.y, w1.z, w1.w);
 }
 
 GPUIorBlock ior_block(uint word) {

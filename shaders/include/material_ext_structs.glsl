@@ -6,12 +6,18 @@
 #define SHERPA_MATERIAL_EXT_STRUCTS_GLSL
 #include "material_extra.glsl"      // GPUTextureTransform
 #include "sherpa_material_ext.glsl" // NO_EXTENSION (generated from gpu_structs.h)
+#include "transmission_structs.glsl" // the transmission family's blocks
 
 struct GPUExtensionIndex {
     uint ior;      // GPUIorBlock word, or NO_EXTENSION
     uint specular; // GPUSpecularBlock word, or NO_EXTENSION
     uint pad0;
     uint pad1;
+    // Second word: the transmission family (transmission_structs.glsl).
+    uint transmission;         // GPUTransmissionBlock word, or NO_EXTENSION
+    uint volume;               // GPUVolumeBlock word, or NO_EXTENSION
+    uint diffuse_transmission; // GPUDiffuseTransmissionBlock word, or NO_EXTENSION
+    uint dispersion;           // GPUDispersionBlock word, or NO_EXTENSION
 };
 
 struct GPUIorBlock {

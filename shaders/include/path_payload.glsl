@@ -20,5 +20,17 @@ struct PathPayload {
     uint seed;      // set by the tracer: any-hit draws stochastic transparency from it
     vec3 emission;
     float f90; // Surface::f90 (brdf.glsl): 1 but for KHR_materials_specular's dielectrics
+    float light_luminance; // emitted luminance if the hit triangle is in the light list, else 0
+    // The transmission family (transmission_sampling.glsl): the transmission lobe's
+    // tint (transmission x base colour x (1 - metallic); 0: opaque), the ior, the
+    // volume's attenuation (rgb colour, a distance; a < 0: thin-walled, no volume),
+    // the dispersion, and whether the ray arrived on the front face.
+    vec3 transmission_tint;
+    float ior;
+    vec3 diffuse_transmission_tint; // KHR_materials_diffuse_transmission's lobe (0: none)
+    float pad0;
+    vec4 attenuation;
+    float dispersion;
+    uint front;
 };
 #endif

@@ -40,7 +40,7 @@ layout(push_constant, scalar) uniform PathPush {
     uint samples;             // 96: samples per pixel this launch
     uint max_bounces;         // 100: surface interactions after the camera ray's hit
     uint seed;                // 104
-    uint reserved;            // 108
+    float light_inv_power;    // 108: 1 / the emissive triangles' power (0: no light list)
     uvec2 env_size;           // 112: columns, rows of the environment distribution (0: none)
     float sun_cos_radius;     // 120: cosine of the sun's angular radius
     float max_radiance;       // 124: larger sample radiance is counted non-finite (0)
@@ -76,9 +76,12 @@ struct RayPayload {
 
 // Rays have no derivatives: textures are read at an explicit level, 0 unless
 // render --texture-lod names one.
+vec4 sample_transformed(GPUTextureTransform t, uint tex, vec2 uv0, vec2 uv1) {
+    return textureLod(textures[nonuniformEXT(tex)], transform_uv(t, uv0, uv1), max(pc.texture_lod, 0.0));
+}
+
 vec4 sample_slot(GPUMaterialExtra extra, uint slot, uint tex, vec2 uv0, vec2 uv1) {
-    return textureLod(textures[nonuniformEXT(tex)], transform_uv(extra.uv[slot], uv0, uv1),
-                      max(pc.texture_lod, 0.0));
+    return sample_transformed(extra.uv[slot], tex, uv0, uv1);
 }
 
 #ifndef SHERPA_RT_RAYGEN

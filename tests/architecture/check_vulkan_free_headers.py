@@ -24,6 +24,7 @@ VULKAN_FACING = {
     "presented_frame.h": "PresentedFrame is a gpu::FrameSource (records into a VkCommandBuffer)",
     "gpu_culling.h": "GpuCuller records compute dispatches and owns buffers",
     "gpu_scene.h": "GpuScene hands buffer device addresses to the passes",
+    "gpu_material_ext_structs.h": "extends gpu_structs.h (GPUTextureTransform)",
     "gpu_structs.h": "the GPU-visible structs hold VkDeviceAddress and VkDrawIndexedIndirectCommand",
     "scene_textures.h": "SceneTextures owns images, views and samplers",
 }

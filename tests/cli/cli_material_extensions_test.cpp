@@ -2,6 +2,7 @@
 // bytes in the report (none for a scene without them), their debug views, and the
 // bad-input file rendered without a validation message. Runs with --validation.
 #include "cli/cli_run.h"
+#include "cli/sweep_images.h"
 #include "test_support.h"
 
 #include <sherpa/texture/image.h>
@@ -19,44 +20,21 @@ using sherpa::test::CliRun;
 using sherpa::test::run_cli;
 
 std::string temp_path(const std::string& name) {
-    return (std::filesystem::temp_directory_path() /
-            ("sherpa_cli_matext_" + std::to_string(::getpid()) + "_" + name))
-        .string();
+    return sherpa::test::temp_path("sherpa_cli_matext", name);
 }
 
-std::string sweep(const std::string& name) {
-    return (sherpa::test::data_dir() / "material_sweeps" / (name + ".gltf")).string();
-}
-
-constexpr const char* kSweepCamera = " --camera eye=0,0,5:target=0,0,0:fov=45";
-
-struct Png {
-    std::uint32_t w = 0, h = 0;
-    std::vector<std::uint8_t> rgba;
-    const std::uint8_t* at(std::uint32_t x, std::uint32_t y) const {
-        return &rgba[(y * w + x) * 4];
-    }
-};
-
-Png read_png(const std::string& path) {
-    Png p;
-    std::string error;
-    EXPECT_TRUE(sherpa::tex::read_png_rgba8(path, p.w, p.h, p.rgba, error)) << error;
-    return p;
-}
-
-// The pixel at the centre of sphere (row, column) of a sweep, 160x120, kSweepCamera.
-const std::uint8_t* sphere_centre(const Png& p, int row, int column) {
-    const double half = 5.0 * std::tan(22.5 * 3.14159265358979 / 180.0);
-    const double x = (column - 2.0) / (half * p.w / p.h), y = (0.5 - row) / half;
-    return p.at(std::uint32_t(p.w * 0.5 * (1.0 + x)), std::uint32_t(p.h * 0.5 * (1.0 - y)));
-}
+using sherpa::test::kSweepCamera;
+using sherpa::test::Png;
+using sherpa::test::read_png;
+using sherpa::test::sphere_centre;
+using sherpa::test::sweep;
 
 std::uint64_t extension_bytes(const std::string& model, const std::string& name) {
     const std::string png = temp_path(name + ".png"), report = temp_path(name + ".json");
-    const CliRun r = run_cli("render '" + model + "' -o " + png +
-                             " --width 64 --height 48 --frames 1 --environment none --report " +
-                             report + " --validation --no-cache");
+    const CliRun r =
+        run_cli("render '" + model + "' -o " + png +
+                " --width 64 --height 48 --frames 1 --environment none --report " + report +
+                " --validation --cache-dir '" + SHERPA_TEST_TEXTURE_CACHE + "'");
     EXPECT_EQ(r.exit_code, 0) << r.out;
     const auto j = sherpa::test::read_json(report);
     std::filesystem::remove(png);
@@ -66,10 +44,11 @@ std::uint64_t extension_bytes(const std::string& model, const std::string& name)
 
 TEST(CliMaterialExtensions, OnlyMaterialsThatUseThemPay) {
     EXPECT_EQ(extension_bytes(sherpa::test::gltf_asset("DamagedHelmet"), "helmet"), 0u);
-    // Ten materials with KHR_materials_ior only: an index and one block of 16 bytes each.
-    EXPECT_EQ(extension_bytes(sweep("ior_sweep"), "ior"), 320u);
+    // Ten materials with KHR_materials_ior only: a 32-byte index and one block of 16
+    // bytes each.
+    EXPECT_EQ(extension_bytes(sweep("ior_sweep"), "ior"), 480u);
     // Ten with KHR_materials_specular only: an index and a 96-byte block each.
-    EXPECT_EQ(extension_bytes(sweep("specular_sweep"), "specular"), 1120u);
+    EXPECT_EQ(extension_bytes(sweep("specular_sweep"), "specular"), 1280u);
 }
 
 TEST(CliMaterialExtensions, IorViewShowsEachSpheresIor) {

@@ -50,7 +50,8 @@ protected:
         const fs::path png = dir / name;
         const CliRun r = run_cli("render '" + scene + "' -o '" + png.string() + "' --width " +
                                      std::to_string(kW) + " --height " + std::to_string(kH) +
-                                     " --validation --no-cache --no-shadows " + extra,
+                                     " --validation --no-shadows --cache-dir '" +
+                                     SHERPA_TEST_TEXTURE_CACHE + "' " + extra,
                                  out ? "2>/dev/null" : "2>&1");
         EXPECT_EQ(r.exit_code, 0) << r.out;
         if (out && r.exit_code == 0) *out = json::parse(r.out);

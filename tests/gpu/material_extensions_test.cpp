@@ -102,7 +102,7 @@ TEST(MaterialExtensions, OnlyMaterialsThatUseAnExtensionHaveBlocks) {
         EXPECT_EQ(p.ior != gpu::kNoExtension, m.ior.has_value()) << i;
         EXPECT_EQ(p.specular != gpu::kNoExtension, m.specular.has_value()) << i;
         if (!p.any()) continue;
-        words += 1 + (m.ior ? 1 : 0) + (m.specular ? 6 : 0);
+        words += 2 + (m.ior ? 1 : 0) + (m.specular ? 6 : 0); // the index is two words
         gpu::GPUExtensionIndex index;
         std::memcpy(&index, &b.words[p.index], sizeof index);
         EXPECT_EQ(index.ior, p.ior);
@@ -131,10 +131,11 @@ TEST(MaterialExtensions, ASceneWithoutExtensionsHasNoBytes) {
     for (const gpu::MaterialExtensionPlace& p : b.places) EXPECT_FALSE(p.any());
 }
 
-TEST(MaterialExtensions, AnIorOnlyMaterialPaysThirtyTwoBytes) {
+TEST(MaterialExtensions, AnIorOnlyMaterialPaysFortyEightBytes) {
     const LoadResult r = load_data("material_sweeps/ior_sweep.gltf");
     ASSERT_TRUE(r) << r.error;
-    EXPECT_EQ(layout(*r.scene).bytes(), 10u * 32u);
+    // Its 32-byte index (two words: GPUExtensionIndex) and its 16-byte block.
+    EXPECT_EQ(layout(*r.scene).bytes(), 10u * 48u);
 }
 
 } // namespace

@@ -5,6 +5,7 @@
 // determinism, progressive accumulation equal to one-shot, and error falling as
 // 1/sqrt(spp). Small images: lavapipe traces on the CPU.
 #include "gpu_test_support.h"
+#include "path_trace_renderer.h"
 #include "sphere_scenes.h"
 
 #include <sherpa/render/path_trace.h>
@@ -117,15 +118,7 @@ double metal_sphere_albedo(double roughness) {
 // One ray-tracing renderer for the GPU tests of this binary.
 class PathTraceTest : public GpuTest {
 protected:
-    static gpu::Renderer& rt() {
-        static std::unique_ptr<gpu::Renderer> r = [] {
-            gpu::RendererOptions options;
-            options.ray_tracing = true;
-            options.textures = test_texture_settings();
-            return std::make_unique<gpu::Renderer>(*GpuEnvironment::get().context, options);
-        }();
-        return *r;
-    }
+    static gpu::Renderer& rt() { return path_trace_renderer(); }
     static void TearDownTestSuite() { rt().unload(); }
 
     // A row of `count` white unit spheres (roughness i / (count - 1)), 48 px apart,

@@ -6,6 +6,7 @@
 // are read from the shader that uses them; structs from a probe shader written here, in
 // the layout the renderer's shaders declare them with (glslang's reflection does not
 // descend into buffer_reference blocks, so a record behind one is a struct of its own).
+#include <sherpa/render/gpu_material_ext_structs.h>
 #include <sherpa/render/gpu_structs.h>
 #include <sherpa/scene/material.h>
 
@@ -107,7 +108,10 @@ std::vector<Twin> twins() {
          "material_ext_structs.glsl",
          sizeof(GPUExtensionIndex),
          {TWIN_FIELD(GPUExtensionIndex, ior), TWIN_FIELD(GPUExtensionIndex, specular),
-          TWIN_FIELD(GPUExtensionIndex, pad0), TWIN_FIELD(GPUExtensionIndex, pad1)}},
+          TWIN_FIELD(GPUExtensionIndex, pad0), TWIN_FIELD(GPUExtensionIndex, pad1),
+          TWIN_FIELD(GPUExtensionIndex, transmission), TWIN_FIELD(GPUExtensionIndex, volume),
+          TWIN_FIELD(GPUExtensionIndex, diffuse_transmission),
+          TWIN_FIELD(GPUExtensionIndex, dispersion)}},
         {"GPUIorBlock",
          Source::StructProbe,
          "GPUIorBlock",
@@ -128,6 +132,49 @@ std::vector<Twin> twins() {
           TWIN_FIELD(GPUSpecularBlock, specular_color_tex), TWIN_FIELD(GPUSpecularBlock, pad0),
           TWIN_FIELD(GPUSpecularBlock, pad1), TWIN_FIELD(GPUSpecularBlock, specular_uv),
           TWIN_FIELD(GPUSpecularBlock, color_uv)}},
+        {"GPUTransmissionBlock",
+         Source::StructProbe,
+         "GPUTransmissionBlock",
+         "",
+         "std430",
+         "material_ext_structs.glsl",
+         sizeof(GPUTransmissionBlock),
+         {TWIN_FIELD(GPUTransmissionBlock, factor), TWIN_FIELD(GPUTransmissionBlock, texture),
+          TWIN_FIELD(GPUTransmissionBlock, pad0), TWIN_FIELD(GPUTransmissionBlock, pad1),
+          TWIN_FIELD(GPUTransmissionBlock, uv)}},
+        {"GPUVolumeBlock",
+         Source::StructProbe,
+         "GPUVolumeBlock",
+         "",
+         "std430",
+         "material_ext_structs.glsl",
+         sizeof(GPUVolumeBlock),
+         {TWIN_FIELD(GPUVolumeBlock, attenuation), TWIN_FIELD(GPUVolumeBlock, thickness_factor),
+          TWIN_FIELD(GPUVolumeBlock, thickness_tex), TWIN_FIELD(GPUVolumeBlock, pad0),
+          TWIN_FIELD(GPUVolumeBlock, pad1), TWIN_FIELD(GPUVolumeBlock, thickness_uv)}},
+        {"GPUDiffuseTransmissionBlock",
+         Source::StructProbe,
+         "GPUDiffuseTransmissionBlock",
+         "",
+         "std430",
+         "material_ext_structs.glsl",
+         sizeof(GPUDiffuseTransmissionBlock),
+         {TWIN_FIELD(GPUDiffuseTransmissionBlock, color_factor),
+          TWIN_FIELD(GPUDiffuseTransmissionBlock, texture),
+          TWIN_FIELD(GPUDiffuseTransmissionBlock, color_tex),
+          TWIN_FIELD(GPUDiffuseTransmissionBlock, pad0),
+          TWIN_FIELD(GPUDiffuseTransmissionBlock, pad1),
+          TWIN_FIELD(GPUDiffuseTransmissionBlock, uv),
+          TWIN_FIELD(GPUDiffuseTransmissionBlock, color_uv)}},
+        {"GPUDispersionBlock",
+         Source::StructProbe,
+         "GPUDispersionBlock",
+         "",
+         "std430",
+         "material_ext_structs.glsl",
+         sizeof(GPUDispersionBlock),
+         {TWIN_FIELD(GPUDispersionBlock, dispersion), TWIN_FIELD(GPUDispersionBlock, pad0),
+          TWIN_FIELD(GPUDispersionBlock, pad1), TWIN_FIELD(GPUDispersionBlock, pad2)}},
         {"GPULight",
          Source::StructProbe,
          "GPULight",
@@ -253,7 +300,8 @@ std::vector<Twin> twins() {
           TWIN_FIELD(GPUPathPushConstants, texture_lod),
           TWIN_FIELD(GPUPathPushConstants, clear_color), TWIN_FIELD(GPUPathPushConstants, samples),
           TWIN_FIELD(GPUPathPushConstants, max_bounces), TWIN_FIELD(GPUPathPushConstants, seed),
-          TWIN_FIELD(GPUPathPushConstants, reserved), TWIN_FIELD(GPUPathPushConstants, env_size),
+          TWIN_FIELD(GPUPathPushConstants, light_inv_power),
+          TWIN_FIELD(GPUPathPushConstants, env_size),
           TWIN_FIELD(GPUPathPushConstants, sun_cos_radius),
           TWIN_FIELD(GPUPathPushConstants, max_radiance)}},
         {"GPUPoseVerticesPush",
@@ -421,7 +469,8 @@ TEST_P(StructTwins, SameNamesOffsetsAndSize) {
 // not named GPU*.)
 TEST(StructTwinTable, ListsEveryGpuStructOfTheHeaders) {
     const std::regex head(R"(^struct\s+(?:alignas\(\d+\)\s+)?(GPU\w+)\s*\{)");
-    for (const char* header : {SHERPA_GPU_STRUCTS_HEADER, SHERPA_MATERIAL_HEADER}) {
+    for (const char* header :
+         {SHERPA_GPU_STRUCTS_HEADER, SHERPA_GPU_MATERIAL_EXT_HEADER, SHERPA_MATERIAL_HEADER}) {
         std::ifstream in(header);
         ASSERT_TRUE(in) << header;
         for (std::string line; std::getline(in, line);) {

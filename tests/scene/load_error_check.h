@@ -2,6 +2,7 @@
 // Shared checks of the malformed-input suites (bad_input_test, hostile_input_test).
 #include <sherpa/scene/scene_loader.h>
 
+#include <cstdint>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -37,6 +38,28 @@ inline void expect_loads_naming(const std::string& path, const std::string& frag
         named |= m.message.find(fragment) != std::string::npos;
     EXPECT_TRUE(named) << path << " has no message containing: " << fragment;
     EXPECT_GT(r.scene->validation.count(sherpa::Severity::Error), 0u) << path;
+}
+
+// A file whose primitive `mesh`/`primitive` cannot be read: the file loads, the
+// primitive is listed as skipped with a reason containing `fragment`, and the report
+// has a SHERPA_PRIMITIVE_SKIPPED error at `pointer` or below it.
+inline void expect_primitive_skipped(const std::string& path, std::uint32_t mesh,
+                                     std::uint32_t primitive, const std::string& pointer,
+                                     const std::string& fragment) {
+    const sherpa::LoadResult r = sherpa::load_scene(path);
+    ASSERT_TRUE(r) << r.error;
+    bool listed = false;
+    for (const auto& p : r.scene->primitives)
+        if (p.mesh == mesh && p.primitive == primitive) {
+            listed = true;
+            EXPECT_NE(p.skipped_reason.find(fragment), std::string::npos) << p.skipped_reason;
+        }
+    EXPECT_TRUE(listed) << path << ": primitive not listed";
+    bool named = false;
+    for (const auto& m : r.scene->validation.messages)
+        named |= m.code == "SHERPA_PRIMITIVE_SKIPPED" && m.pointer.rfind(pointer, 0) == 0 &&
+                 m.severity == sherpa::Severity::Error;
+    EXPECT_TRUE(named) << path << ": no SHERPA_PRIMITIVE_SKIPPED at " << pointer;
 }
 
 // gtest parameter names from file names ("a.gltf" -> "a_gltf").

@@ -141,15 +141,19 @@ TEST(OversizedMeshopt, AccessorPastTheDecodedBytesSkipsItsPrimitiveByName) {
         << r.scene->primitives[0].skipped_reason;
 }
 
-#define DRACO_STREAM "meshes[0].primitives[0].KHR_draco_mesh_compression: the Draco stream "
+#define DRACO_STREAM                                                                               \
+    "meshes[0].primitives[0].extensions.KHR_draco_mesh_compression: the Draco stream "
+constexpr const char* kDracoPointer =
+    "/meshes/0/primitives/0/extensions/KHR_draco_mesh_compression";
 
 // Box's 130-byte Edgebreaker stream declaring 2^28 triangles and symbols (Draco checks
 // the counts against each other, not against the bytes behind the symbols): Draco
 // 1.5.5 sized its corner table by them (6 GB) before it read one symbol, and under a
-// memory limit the load failed "out of memory while importing".
-TEST(OversizedDraco, TrianglesPastTheIndicesAreRefusedBeforeDecoding) {
-    test::expect_clear_load_error(
-        (test::data_dir() / "draco_faces_268m.gltf").string(),
+// memory limit the load failed "out of memory while importing". Now the primitive is
+// skipped by name before decoding, and the rest of the file loads.
+TEST(OversizedDraco, TrianglesPastTheIndicesSkipThePrimitiveBeforeDecoding) {
+    test::expect_primitive_skipped(
+        (test::data_dir() / "draco_faces_268m.gltf").string(), 0, 0, kDracoPointer,
         DRACO_STREAM "(bufferViews[0], 138 bytes) declares 268435456 triangles (805306368 "
                      "indices), more than the indices accessor's count 36");
 }
@@ -157,23 +161,23 @@ TEST(OversizedDraco, TrianglesPastTheIndicesAreRefusedBeforeDecoding) {
 // 20M triangles whose indices accessor agrees, over the documented limit. Draco
 // allocated and filled its corner table (470 MB of RSS, 596 MB peak for sherpa-cli
 // info) before finding that 136 bytes hold no such traversal; now nothing is decoded.
-TEST(OversizedDraco, TrianglesOverTheLimitAreRefusedWithoutAllocating) {
+TEST(OversizedDraco, TrianglesOverTheLimitSkipThePrimitiveWithoutAllocating) {
     const std::string path = (test::data_dir() / "draco_faces_20m.gltf").string();
     const long growth = test::peak_rss_growth_kib([&] {
-        test::expect_clear_load_error(path,
-                                      DRACO_STREAM "(bufferViews[0], 136 bytes) declares "
-                                                   "20000000 triangles; Sherpa decodes at most "
-                                                   "16777216 triangles per Draco primitive");
+        test::expect_primitive_skipped(path, 0, 0, kDracoPointer,
+                                       DRACO_STREAM "(bufferViews[0], 136 bytes) declares "
+                                                    "20000000 triangles; Sherpa decodes at most "
+                                                    "16777216 triangles per Draco primitive");
     });
     if (growth < 0) GTEST_SKIP() << "no /proc/self/clear_refs: peak RSS not measured";
     EXPECT_LT(growth, 32 * 1024) << "peak RSS grew by " << growth << " KiB";
 }
 
 // One attribute connectivity (a corner table each, once the traversal decodes) per
-// attribute at most: 255 for a primitive of two attributes is refused.
-TEST(OversizedDraco, MoreAttributeConnectivitiesThanAttributesAreRefused) {
-    test::expect_clear_load_error(
-        (test::data_dir() / "draco_attribute_data_255.gltf").string(),
+// attribute at most: 255 for a primitive of two attributes skips it.
+TEST(OversizedDraco, MoreAttributeConnectivitiesThanAttributesSkipThePrimitive) {
+    test::expect_primitive_skipped(
+        (test::data_dir() / "draco_attribute_data_255.gltf").string(), 0, 0, kDracoPointer,
         DRACO_STREAM "(bufferViews[0], 130 bytes) declares 255 attribute connectivities for 2 "
                      "attributes");
 }

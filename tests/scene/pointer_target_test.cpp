@@ -95,7 +95,7 @@ TEST(PointerTarget, LightsAndExtensionNames) {
     ASSERT_TRUE(glass);
     const PointerTarget used = resolve_pointer(*glass, "/extensionsUsed/1");
     EXPECT_EQ(used.kind, TargetKind::Extension);
-    EXPECT_EQ(used.material, 0) << "KHR_materials_transmission: the Glass material";
+    EXPECT_EQ(used.material, 0) << "ADOBE_materials_thin_transparency: the Glass material";
     EXPECT_EQ(sherpa::json_pointer_token("a/b~c"), "a~1b~0c");
     // "~1" is an escaped '/' (RFC 6901): the token is a name, not two tokens.
     EXPECT_EQ(resolve_pointer(*glass, "/materials/0/extensions/A~1B").rest, "/extensions/A~1B");

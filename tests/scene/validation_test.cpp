@@ -2,7 +2,7 @@
 // problems load and name them. tests/data/validation holds one file per code
 // (tools/gltf_validator/make_cases.py); the Khronos validator's verdict on each is the
 // oracle test (validation_oracle_agreement); these pin the cases that decide loading.
-#include "test_support.h"
+#include "validation_checks.h"
 
 #include <sherpa/scene/scene_loader.h>
 
@@ -16,21 +16,10 @@ namespace test = sherpa::test;
 using sherpa::Severity;
 using sherpa::ValidationReport;
 
-std::string case_path(const std::string& name) {
-    return (test::data_dir() / "validation" / name).string();
-}
-
-bool has(const ValidationReport& r, const std::string& code, const std::string& pointer) {
-    for (const auto& m : r.messages)
-        if (m.code == code && m.pointer == pointer) return true;
-    return false;
-}
-
-std::string dump(const ValidationReport& r) {
-    std::string s;
-    for (const auto& m : r.messages) s += m.code + " " + m.pointer + ": " + m.message + "\n";
-    return s;
-}
+using test::case_path;
+using test::dump;
+using test::Expect;
+using test::has;
 
 TEST(Validation, ValidFileHasNoErrorsOrWarnings) {
     const auto r = sherpa::load_scene(case_path("valid.gltf"));
@@ -41,11 +30,6 @@ TEST(Validation, ValidFileHasNoErrorsOrWarnings) {
 }
 
 // Each: file, a code with its pointer that must be reported, and the file must load.
-struct Expect {
-    const char* file;
-    const char* code;
-    const char* pointer;
-};
 
 class LoadsWithMessage : public ::testing::TestWithParam<Expect> {};
 
@@ -100,12 +84,7 @@ INSTANTIATE_TEST_SUITE_P(
         // The declared length, though the importer reads the data URI's real length.
         Expect{"buffer_byte_length_mismatch.gltf", "BUFFER_BYTE_LENGTH_MISMATCH", "/buffers/0"},
         Expect{"joints_without_weights.gltf", "NODE_SKIN_WITH_NON_SKINNED_MESH", "/nodes/2"}),
-    [](const auto& param_info) {
-        std::string n = std::string(param_info.param.file) + "_" + param_info.param.code;
-        for (char& c : n)
-            if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-        return n;
-    });
+    test::expect_name);
 
 // What the specification allows loads without an error, whatever tinygltf thinks.
 TEST(LoadAndWarn, IntegersWrittenAsFloatsLoad) {

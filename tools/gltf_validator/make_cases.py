@@ -7,12 +7,16 @@ Usage: make_cases.py OUT_DIR"""
 import base64, copy, json, math, os, struct, sys, zlib
 
 
-def png_1x1():
-    raw = b"\x00\xff\x00\x00\xff"
+def png_1x1(width=1, height=1, extra=b""):
+    raw = (b"\x00" + b"\xff\x00\x00\xff" * width) * height
     def chunk(t, d):
         return struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d) & 0xFFFFFFFF)
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 1, 1, 8, 6, 0, 0, 0))
-            + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0))
+            + (chunk(*extra) if extra else b"") + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+
+
+def data_uri(mime, data):
+    return "data:" + mime + ";base64," + base64.b64encode(data).decode()
 
 
 class Data:
@@ -27,6 +31,7 @@ class Data:
         self.ibm = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]
         self.joints = [(0, 0, 0, 0)] * 3
         self.weights = [(1, 0, 0, 0)] * 3
+        self.extra = b""  # appended after the base data (sparse cases), 4-byte aligned
 
     def pack(self):
         b = b"".join(struct.pack("<3f", *p) for p in self.pos)       # 0: 36
@@ -38,7 +43,7 @@ class Data:
         b += struct.pack("<16f", *self.ibm)                          # 144: 64
         b += b"".join(struct.pack("<4B", *j) for j in self.joints)   # 208: 12
         b += b"".join(struct.pack("<4f", *w) for w in self.weights)  # 220: 48
-        return b                                                     # 268
+        return b + self.extra                                        # 268 + extra
 
 
 def base():
@@ -166,6 +171,27 @@ def case(g, d):
     yield c("index_oob", None, lambda x: setattr(x, "idx", [0, 1, 5]))
     yield c("index_restart", None, lambda x: setattr(x, "idx", [0, 1, 65535]))
     yield c("index_degenerate", None, lambda x: setattr(x, "idx", [0, 1, 1]))
+    def sparse(name, accessor, indices, values, fmt):
+        """Accessor `accessor` gets sparse overrides: ushort `indices`, `values` packed
+        with struct format `fmt`, in two new views after the base data."""
+        ib = struct.pack("<%dH" % len(indices), *indices)
+        ib += b"\0" * (-len(ib) % 4)
+        vb = b"".join(struct.pack(fmt, *x) for x in values)
+        def edit_json(j):
+            n = len(j["bufferViews"])
+            j["bufferViews"] += [{"buffer": 0, "byteOffset": 268, "byteLength": 2 * len(indices)},
+                                 {"buffer": 0, "byteOffset": 268 + len(ib), "byteLength": len(vb)}]
+            j["buffers"][0]["byteLength"] = 268 + len(ib) + len(vb)
+            j["accessors"][accessor]["sparse"] = {"count": len(indices),
+                                                  "indices": {"bufferView": n, "componentType": 5123},
+                                                  "values": {"bufferView": n + 1}}
+        return c(name, edit_json, lambda x: setattr(x, "extra", ib + vb))
+    yield sparse("sparse_indices_non_increasing", 1, [2, 1], [(0, 0, 1)] * 2, "<3f")
+    yield sparse("sparse_index_oob", 1, [1, 3], [(0, 0, 1)] * 2, "<3f")
+    yield sparse("sparse_value_non_unit", 1, [0, 2], [(0, 0, 1), (0, 0, 2)], "<3f")
+    yield sparse("sparse_max_mismatch", 0, [1], [(2, 0, 0)], "<3f")
+    yield sparse("sparse_valid", 0, [1], [(1, 0, 0)], "<3f")
+    yield c("ibm_invalid", None, lambda x: setattr(x, "ibm", [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0]))
     yield c("sparse_count", setp(["accessors", 2, "sparse"], {"count": 5, "indices": {"bufferView": 3, "componentType": 5123}, "values": {"bufferView": 2}}))
     # Meshes
     yield c("no_position", delp(["meshes", 0, "primitives", 0, "attributes", "POSITION"]))
@@ -174,6 +200,11 @@ def case(g, d):
     yield c("invalid_attribute", setp(["meshes", 0, "primitives", 0, "attributes", "normal"], 1))
     yield c("unequal_accessor_count", setp(["accessors", 2, "count"], 2))
     yield c("indices_invalid_format", setp(["accessors", 3, "componentType"], 5122))
+    # POSITION and NORMAL share view 0 without byteStride: the second in document order
+    # (NORMAL; "NORMAL" < "POSITION" by name) is the one named.
+    yield c("attributes_share_view", lambda j: (setp(["bufferViews", 0, "byteLength"], 72)(j),
+                                                 setp(["accessors", 1, "bufferView"], 0)(j),
+                                                 setp(["accessors", 1, "byteOffset"], 36)(j)))
     yield c("tangent_without_normal", lambda j: j["accessors"].append({"bufferView": 8, "componentType": 5126, "count": 3, "type": "VEC4"}) or
             setp(["meshes", 0, "primitives", 0, "attributes"], {"POSITION": 0, "TANGENT": 9, "TEXCOORD_0": 2})(j))
     yield c("incompatible_mode", lambda j: setp(["meshes", 0, "primitives", 0, "mode"], 1)(j))
@@ -239,11 +270,61 @@ def case(g, d):
     yield c("image_mime_missing", lambda j: (j["images"][0].pop("uri"), j["images"][0].__setitem__("bufferView", 4)))
     yield c("image_one_of", setp(["images", 0, "bufferView"], 4))
     yield c("image_bad_mime", lambda j: (j["images"][0].pop("uri"), j["images"][0].update({"bufferView": 4, "mimeType": "image/gif"})))
+    # Image data: what the bytes are against what the file says, and their headers.
+    def image_view(name, data, mime):
+        """Image 0 as `data` in a bufferView after the base data, declared `mime`."""
+        padded = data + b"\0" * (-len(data) % 4)
+        def edit_json(j):
+            j["bufferViews"].append({"buffer": 0, "byteOffset": 268, "byteLength": len(data)})
+            j["buffers"][0]["byteLength"] = 268 + len(padded)
+            j["images"][0] = {"bufferView": len(j["bufferViews"]) - 1, "mimeType": mime}
+        return c(name, edit_json, lambda x: setattr(x, "extra", padded))
+    yield image_view("image_unrecognized", b"not an image at all", "image/png")
+    yield image_view("image_mime_mismatch", png_1x1(), "image/jpeg")
+    yield image_view("image_truncated", png_1x1()[:40], "image/png")
+    yield image_view("image_npot", png_1x1(3, 1), "image/png")
+    yield image_view("image_features", png_1x1(extra=(b"iCCP", b"sRGB\0\0" + zlib.compress(b"\0" * 16))), "image/png")
     yield c("texture_unresolved_source", setp(["textures", 0, "source"], 4))
     yield c("unlit_extension", lambda j: (j.__setitem__("extensionsUsed", ["KHR_materials_unlit"]),
                                           setp(["materials", 0, "extensions"], {"KHR_materials_unlit": {}})(j)))
     yield c("emissive_strength_zero", lambda j: (j.__setitem__("extensionsUsed", ["KHR_materials_emissive_strength"]),
                                                  setp(["materials", 0, "extensions"], {"KHR_materials_emissive_strength": {"emissiveStrength": 2}})(j)))
+    # Material extensions: values out of their ranges, and what they say about each other.
+    def mext(name, exts, **material):
+        def f(j):
+            j["extensionsUsed"] = sorted(exts)
+            j["materials"][0]["extensions"] = exts
+            j["materials"][0].update(material)
+        return c(name, f)
+    yield mext("ext_ior_range", {"KHR_materials_ior": {"ior": 0.5}})
+    yield mext("ext_ior_type", {"KHR_materials_ior": {"ior": "glass"}})
+    yield mext("ext_specular_range", {"KHR_materials_specular": {"specularFactor": 2, "specularColorFactor": [-1, 1, 1]}})
+    yield mext("ext_specular_texture", {"KHR_materials_specular": {"specularTexture": {"index": 4}}})
+    yield mext("ext_clearcoat_range", {"KHR_materials_clearcoat": {"clearcoatFactor": 2, "clearcoatRoughnessFactor": -1}})
+    yield mext("ext_clearcoat_texcoord", {"KHR_materials_clearcoat": {"clearcoatNormalTexture": {"index": 0, "texCoord": 1}}},
+               normalTexture={"index": 0})
+    yield mext("ext_no_tangent_space", {"KHR_materials_clearcoat": {"clearcoatNormalTexture": {"index": 0}}})
+    yield mext("ext_sheen_range", {"KHR_materials_sheen": {"sheenColorFactor": [2, 0, 0], "sheenRoughnessFactor": 1.5}})
+    yield mext("ext_transmission_range", {"KHR_materials_transmission": {"transmissionFactor": 1.5}})
+    yield mext("ext_volume_range", {"KHR_materials_transmission": {},
+               "KHR_materials_volume": {"thicknessFactor": -1, "attenuationDistance": 0, "attenuationColor": [2, 0, 0]}})
+    yield mext("ext_volume_no_transmission", {"KHR_materials_volume": {"thicknessFactor": 1}}, doubleSided=True)
+    yield mext("ext_iridescence_range", {"KHR_materials_iridescence": {"iridescenceFactor": 2, "iridescenceIor": 0.5,
+               "iridescenceThicknessMinimum": -1, "iridescenceThicknessMaximum": -2}})
+    yield mext("ext_iridescence_texture_unused", {"KHR_materials_iridescence": {
+               "iridescenceThicknessTexture": {"index": 0}, "iridescenceThicknessMinimum": 200, "iridescenceThicknessMaximum": 200}})
+    yield mext("ext_iridescence_without_texture", {"KHR_materials_iridescence": {"iridescenceThicknessMinimum": 50}})
+    yield mext("ext_anisotropy_range", {"KHR_materials_anisotropy": {"anisotropyStrength": 2, "anisotropyRotation": 7}})
+    yield mext("ext_anisotropy_texcoord", {"KHR_materials_anisotropy": {"anisotropyTexture": {"index": 0, "texCoord": 1}}},
+               normalTexture={"index": 0})
+    yield mext("ext_dispersion_range", {"KHR_materials_dispersion": {"dispersion": -1}})
+    yield mext("ext_emissive_strength_range", {"KHR_materials_emissive_strength": {"emissiveStrength": -1}}, emissiveFactor=[1, 1, 1])
+    yield mext("ext_spec_gloss_range", {"KHR_materials_pbrSpecularGlossiness": {"diffuseFactor": [2, 0, 0, 1], "glossinessFactor": -1}})
+    yield mext("ext_unlit_with_others", {"KHR_materials_unlit": {}, "KHR_materials_ior": {"ior": 1.4}})
+    yield mext("ext_unexpected_property", {"KHR_materials_volume": {"thickness": 1}, "KHR_materials_transmission": {}})
+    # Not known to the Khronos validator (UNSUPPORTED_EXTENSION): Sherpa's SHERPA_ codes.
+    yield mext("ext_diffuse_transmission_range", {"KHR_materials_diffuse_transmission": {
+               "diffuseTransmissionFactor": 2, "diffuseTransmissionColorFactor": [0, -1, 0]}})
     yield c("lights_spot_angles", lambda j: (j.__setitem__("extensionsUsed", ["KHR_lights_punctual"]),
             j.__setitem__("extensions", {"KHR_lights_punctual": {"lights": [{"type": "spot", "spot": {"innerConeAngle": 0.5, "outerConeAngle": 0.4}}]}}),
             setp(["nodes", 3, "extensions"], {"KHR_lights_punctual": {"light": 0}})(j)))

@@ -136,10 +136,185 @@ def specular_textures():
     return doc
 
 
+def with_backdrop(doc):
+    """Adds an unlit backdrop 1.5 behind the spheres (z = -1.5, 9 x 7, filling the sweep
+    camera's view) with vertical stripes 0.1 wide (dark 0.05, light 0.6, nearest
+    filtering): what transmissive spheres refract. Stripes this fine average to the same
+    mean behind every sphere, and show a blur or a shift in the image."""
+    image = png_rgba(2, 1, lambda x, y: (63, 63, 63, 255) if x == 0 else (203, 203, 203, 255))
+    w, h, z = 4.5, 3.5, -1.5
+    quad = struct.pack('<12f', -w, -h, z, w, -h, z, w, h, z, -w, h, z)
+    quad += struct.pack('<12f', *([0.0, 0.0, 1.0] * 4))
+    stripes = 2 * w / 0.2  # periods of two texels
+    quad += struct.pack('<8f', 0.0, 0.0, stripes, 0.0, stripes, 1.0, 0.0, 1.0)
+    quad += struct.pack('<6H', 0, 1, 2, 0, 2, 3)
+    buffer = base64.b64decode(doc['buffers'][0]['uri'].split(',', 1)[1])
+    base = len(buffer)
+    buffer += quad
+    doc['buffers'][0] = {'byteLength': len(buffer),
+                         'uri': 'data:application/octet-stream;base64,' + base64.b64encode(buffer).decode()}
+    views = doc['bufferViews']
+    first_view = len(views)
+    views += [{'buffer': 0, 'byteOffset': base, 'byteLength': 96, 'target': 34962},
+              {'buffer': 0, 'byteOffset': base + 96, 'byteLength': 32, 'target': 34962},
+              {'buffer': 0, 'byteOffset': base + 128, 'byteLength': 12, 'target': 34963}]
+    acc = doc['accessors']
+    first = len(acc)
+    acc += [{'bufferView': first_view, 'byteOffset': 0, 'componentType': 5126, 'count': 4, 'type': 'VEC3',
+             'min': [-w, -h, z], 'max': [w, h, z]},
+            {'bufferView': first_view, 'byteOffset': 48, 'componentType': 5126, 'count': 4, 'type': 'VEC3'},
+            {'bufferView': first_view + 1, 'componentType': 5126, 'count': 4, 'type': 'VEC2'},
+            {'bufferView': first_view + 2, 'componentType': 5123, 'count': 6, 'type': 'SCALAR'}]
+    doc['images'] = [{'uri': 'data:image/png;base64,' + base64.b64encode(image).decode()}]
+    doc['samplers'] = [{'magFilter': 9728, 'minFilter': 9728, 'wrapS': 10497, 'wrapT': 10497}]
+    doc['textures'] = [{'source': 0, 'sampler': 0}]
+    m = len(doc['materials'])
+    doc['materials'].append({'name': 'backdrop', 'pbrMetallicRoughness': {
+        'baseColorTexture': {'index': 0}}, 'extensions': {'KHR_materials_unlit': {}}})
+    doc['meshes'].append({'name': 'backdrop', 'primitives': [
+        {'attributes': {'POSITION': first, 'NORMAL': first + 1, 'TEXCOORD_0': first + 2},
+         'indices': first + 3, 'material': m}]})
+    doc['scenes'][0]['nodes'].append(len(doc['nodes']))
+    doc['nodes'].append({'name': 'backdrop', 'mesh': len(doc['meshes']) - 1})
+    doc['extensionsUsed'].append('KHR_materials_unlit')
+    return doc
+
+
+WHITE = [1.0, 1.0, 1.0]
+
+
+def transmissive(color, roughness, transmission=1.0, **extensions):
+    e = {'KHR_materials_transmission': {'transmissionFactor': transmission}}
+    e.update(extensions)
+    return {'pbrMetallicRoughness': pbr(color, roughness), 'extensions': e}
+
+
+def transmission_sweep():
+    """Row 1: transmissionFactor 1 .. 0 on a white smooth dielectric (the striped
+    backdrop gives way to the white diffuse); row 2: transmission 1 with base colour
+    (the transmission tint) 0.1 .. 1."""
+    row1 = [(f'transmission {t}', transmissive(WHITE, 0.0, t)) for t in (1.0, 0.75, 0.5, 0.25, 0.0)]
+    row2 = [(f'tint {c}', transmissive([c, c, c], 0.0)) for c in (0.1, 0.3, 0.5, 0.75, 1.0)]
+    return with_backdrop(document('KHR_materials_transmission sweep', [row1, row2],
+                                  ['KHR_materials_transmission']))
+
+
+def transmission_roughness():
+    """Roughness 0 .. 0.8 (row 1) and ior 1.0 .. 2.0 at roughness 0.4 (row 2): the
+    refracted backdrop blurs (three.js's and the Sample Viewer's roughness x
+    clamp(2 ior - 2, 0, 1) mip level)."""
+    row1 = [(f'roughness {r}', transmissive(WHITE, r)) for r in (0.0, 0.2, 0.4, 0.6, 0.8)]
+    row2 = [(f'ior {i}', transmissive(WHITE, 0.4, KHR_materials_ior={'ior': i}))
+            for i in (1.0, 1.1, 1.25, 1.5, 2.0)]
+    return with_backdrop(document('KHR_materials_transmission roughness', [row1, row2],
+                                  ['KHR_materials_transmission', 'KHR_materials_ior']))
+
+
+def volume_sweep():
+    """Spheres as volumes (thickness 0.8, their diameter): attenuationDistance 0.1 .. inf
+    of an orange attenuationColor (row 1), grey attenuationColor 0.1 .. 0.9 at
+    attenuationDistance 0.4 (row 2)."""
+    def volume(**v):
+        return transmissive(WHITE, 0.0, KHR_materials_volume=dict(thicknessFactor=0.8, **v))
+    row1 = [(f'distance {d}', volume(attenuationDistance=d, attenuationColor=[1.0, 0.5, 0.1]))
+            for d in (0.1, 0.3, 1.0, 3.0)]
+    row1.append(('distance infinite', volume(attenuationColor=[1.0, 0.5, 0.1])))
+    row2 = [(f'colour {c}', volume(attenuationDistance=0.4, attenuationColor=[c, c, c]))
+            for c in (0.1, 0.3, 0.5, 0.7, 0.9)]
+    return with_backdrop(document('KHR_materials_volume sweep', [row1, row2],
+                                  ['KHR_materials_transmission', 'KHR_materials_volume']))
+
+
+def dispersion_sweep():
+    """dispersion 0 .. 10 through a volume of ior 1.5 and thickness 0.8, smooth (row 1)
+    and at roughness 0.2 (row 2): the refracted stripes split into colours."""
+    rows = []
+    for roughness in (0.0, 0.2):
+        rows.append([(f'dispersion {d} roughness {roughness}',
+                      transmissive(WHITE, roughness, KHR_materials_volume={'thicknessFactor': 0.8},
+                                   KHR_materials_dispersion={'dispersion': d}))
+                     for d in (0.0, 1.0, 3.0, 6.0, 10.0)])
+    return with_backdrop(document('KHR_materials_dispersion sweep', rows,
+                                  ['KHR_materials_transmission', 'KHR_materials_volume',
+                                   'KHR_materials_dispersion']))
+
+
+def diffuse_transmission_sweep():
+    """diffuseTransmissionFactor 0 .. 1 on a white rough dielectric (row 1), and factor 1
+    with diffuseTransmissionColorFactor from white to red (row 2): light from behind the
+    sphere comes through its diffuse lobe."""
+    def dt(factor, color):
+        return {'pbrMetallicRoughness': pbr(WHITE, 0.5), 'extensions': {
+            'KHR_materials_diffuse_transmission': {'diffuseTransmissionFactor': factor,
+                                                   'diffuseTransmissionColorFactor': color}}}
+    row1 = [(f'diffuse transmission {f}', dt(f, WHITE)) for f in (0.0, 0.25, 0.5, 0.75, 1.0)]
+    row2 = [(f'diffuse transmission colour {g}', dt(1.0, [1.0, g, g]))
+            for g in (1.0, 0.75, 0.5, 0.25, 0.0)]
+    doc = document('KHR_materials_diffuse_transmission sweep', [row1, row2],
+                   ['KHR_materials_diffuse_transmission', 'KHR_lights_punctual'])
+    # A point light behind the rows: what comes through to the front.
+    doc['extensions'] = {'KHR_lights_punctual': {'lights': [
+        {'type': 'point', 'color': [1.0, 1.0, 1.0], 'intensity': 20.0}]}}
+    doc['scenes'][0]['nodes'].append(len(doc['nodes']))
+    doc['nodes'].append({'name': 'back light', 'translation': [0.0, 0.0, -2.0],
+                         'extensions': {'KHR_lights_punctual': {'light': 0}}})
+def unlit(color, alpha=1.0, texture=None, **extra):
+    pbr_part = {'baseColorFactor': color + [alpha]}
+    if texture is not None:
+        pbr_part['baseColorTexture'] = {'index': texture}
+    return dict({'pbrMetallicRoughness': pbr_part,
+                 'extensions': {'KHR_materials_unlit': {}}}, **extra)
+
+
+def variants():
+    """KHR_materials_variants: three unlit spheres (grey, grey, grey) and two variants.
+    "Warm": sphere 0 red, sphere 2 a 2x2 yellow/blue checker texture (a texture no
+    default material reads: it must be on the GPU before the switch). "Cool": sphere 1
+    masked away (alpha 0.25 under the cutoff 0.5: an alpha-mode change), sphere 2 green.
+    Unlit, so that both renderers draw the factors as they are."""
+    grey = [0.5, 0.5, 0.5]
+    doc = document('KHR_materials_variants', [[('grey 0', unlit(grey)), ('grey 1', unlit(grey)),
+                                                ('grey 2', unlit(grey))]],
+                   ['KHR_materials_unlit', 'KHR_materials_variants'])
+    extra = [('red', unlit([1.0, 0.0, 0.0])),
+             ('checker', unlit([1.0, 1.0, 1.0], texture=0)),
+             ('masked', unlit([0.0, 0.0, 1.0], 0.25, alphaMode='MASK')),
+             ('green', unlit([0.0, 1.0, 0.0]))]
+    for label, material in extra:
+        doc['materials'].append(dict(name=label, **material))
+    red, checker, masked, green = 3, 4, 5, 6
+    doc['extensions'] = {'KHR_materials_variants': {'variants': [{'name': 'Warm'}, {'name': 'Cool'}]}}
+    mappings = [[{'material': red, 'variants': [0]}],
+                [{'material': masked, 'variants': [1]}],
+                [{'material': checker, 'variants': [0]}, {'material': green, 'variants': [1]}]]
+    for mesh, m in zip(doc['meshes'], mappings):
+        mesh['primitives'][0]['extensions'] = {'KHR_materials_variants': {'mappings': m}}
+    image = png_rgba(2, 2, lambda x, y: (255, 220, 0, 255) if (x + y) % 2 == 0 else (0, 60, 255, 255))
+    doc['images'] = [{'uri': 'data:image/png;base64,' + base64.b64encode(image).decode()}]
+    doc['samplers'] = [{'magFilter': 9728, 'minFilter': 9728, 'wrapS': 10497, 'wrapT': 10497}]
+    doc['textures'] = [{'source': 0, 'sampler': 0}]
+    return doc
+
+
+def variants_bad():
+    """The variants file with broken mappings: a material index past the end, a variant
+    index past the end, a variant mapped twice, and a mapping without variants."""
+    doc = variants()
+    doc['meshes'][0]['primitives'][0]['extensions']['KHR_materials_variants']['mappings'] = [
+        {'material': 99, 'variants': [0]}, {'material': 3, 'variants': [7, 1]},
+        {'material': 6, 'variants': [1]}, {'material': 3}]
+    return doc
+
+
 def main():
     out = sys.argv[1]
     for name, doc in (('ior_sweep', ior_sweep()), ('specular_sweep', specular_sweep()),
-                      ('specular_textures', specular_textures())):
+                      ('specular_textures', specular_textures()),
+                      ('transmission_sweep', transmission_sweep()),
+                      ('transmission_roughness', transmission_roughness()),
+                      ('volume_sweep', volume_sweep()), ('dispersion_sweep', dispersion_sweep()),
+                      ('diffuse_transmission_sweep', diffuse_transmission_sweep()),
+                      ('variants', variants()), ('variants_bad', variants_bad())):
         with open(f'{out}/{name}.gltf', 'w') as f:
             json.dump(doc, f, indent=1)
             f.write('\n')

@@ -5,6 +5,11 @@
 //        [--camera eye=x,y,z:target=x,y,z[:up=x,y,z][:fov=DEG][:near=N][:far=F]]
 //        [--width W] [--height H] [--tone-map neutral|aces|agx|linear] [--exposure EV]
 //        [--background R,G,B|environment] [--environment-rotation DEG] [--timeout SECONDS]
+//        [--variant NAME]
+// --variant shows a KHR_materials_variants variant as three.js's own example
+// (webgl_loader_gltf_variants) does: GLTFLoader keeps the extension it does not know in
+// userData.gltfExtensions (root: the names; each primitive's mesh: its mappings), and
+// the mapped material replaces the mesh's (parser.getDependency('material', i)).
 // Files are served to the page from 127.0.0.1 by a server in this process; Chromium is
 // started asynchronously so that the server keeps answering; the page sets
 // window.__sherpaDone (or window.__sherpaError) once it has drawn.
@@ -53,6 +58,7 @@ import { EXRLoader } from 'three/addons/loaders/EXRLoader.js';
 const cfg = ${JSON.stringify({ width, height, camera, toneMap: args['tone-map'] ?? 'neutral',
     exposure: Number(args.exposure ?? 0), background: args.background ?? 'environment',
     rotation: Number(args['environment-rotation'] ?? 0), environment: !!environment,
+    variant: args.variant ?? null,
     model: '/model/' + encodeURIComponent(path.basename(gltf)) })};
 try {
   const renderer = new THREE.WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
@@ -77,6 +83,18 @@ try {
     scene.background = new THREE.Color().setRGB(r, g, b, THREE.LinearSRGBColorSpace);
   }
   const gltf = await new GLTFLoader().loadAsync(cfg.model);
+  if (cfg.variant !== null) {
+    const names = (gltf.userData.gltfExtensions?.KHR_materials_variants?.variants ?? []).map((v) => v.name);
+    const index = names.indexOf(cfg.variant);
+    if (index < 0) throw new Error('no variant ' + cfg.variant + ' (file has ' + names.join(', ') + ')');
+    const meshes = [];
+    gltf.scene.traverse((o) => { if (o.isMesh && o.userData.gltfExtensions?.KHR_materials_variants) meshes.push(o); });
+    for (const o of meshes) {
+      const mapping = o.userData.gltfExtensions.KHR_materials_variants.mappings
+        .find((m) => m.variants.includes(index));
+      if (mapping) o.material = await gltf.parser.getDependency('material', mapping.material);
+    }
+  }
   scene.add(gltf.scene);
   const c = cfg.camera;
   const cam = new THREE.PerspectiveCamera(c.fov, cfg.width / cfg.height, c.near, c.far);

@@ -20,8 +20,8 @@ class EnvironmentMap;
 struct SceneLights;
 
 // Timestamps written between passes; pass i spans [i, i + 1].
-inline constexpr const char* kPassNames[] = {"shadows",    "depth_prepass", "opaque",
-                                             "alpha_mask", "alpha_blend",   "overlays"};
+inline constexpr const char* kPassNames[] = {
+    "shadows", "transmission", "depth_prepass", "opaque", "alpha_mask", "alpha_blend", "overlays"};
 inline constexpr std::uint32_t kTimestampCount = std::size(kPassNames) + 1;
 
 // Culled views a frame can have: the camera and each shadow cascade in use.

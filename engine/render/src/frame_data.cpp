@@ -11,18 +11,21 @@
 #include <cstring>
 
 namespace sherpa::gpu {
+namespace {
 
 // The bounds shadow cascades are fitted to: the scene's, grown by where its moving
 // instances are in this frame's pose (an arm raised above the bind pose still casts).
 // A box the pose pushed past the float range is left out: one infinite or NaN corner
 // would make every cascade, and so every shadow lookup, NaN.
-Aabb FrameRecorder::shadow_bounds(const FrameContext& frame) const {
-    Aabb b = state.lights.cameras.bounds;
+Aabb shadow_bounds(const SceneLights& lights, const FrameContext& frame) {
+    Aabb b = lights.cameras.bounds;
     if (frame.slot.posed)
         for (const Aabb& box : frame.slot.posed_bounds)
             if (!box.valid() || !box_is_invalid(box.min, box.max)) b.expand(box);
     return b;
 }
+
+} // namespace
 
 // The first directional light is the main (shadowed) one; with no scene lights at
 // all a default sun stands in. Shared with the ray tracer's shadow rays.
@@ -49,8 +52,8 @@ MainSun main_sun(const SceneLights& lighting, const FrameRequest& settings) {
 
 // Lights, sun, ambient, environment and display transform of a lit frame: what the
 // raster's frame constants and the path tracer's share (params.y: the light count).
-GPUFrameData FrameRecorder::lighting_constants(const FrameRequest& settings) const {
-    const SceneLights& info = state.lights;
+GPUFrameData lighting_constants(const SceneLights& info, const EnvironmentMap* environment,
+                                const FrameRequest& settings) {
     GPUFrameData f{};
     const MainSun sun = main_sun(info, settings);
     f.sun_radiance = glm::vec4(sun.radiance, 0.0f);
@@ -94,7 +97,7 @@ void FrameRecorder::write_frame_data(FrameContext& frame) {
     const FrameRequest& settings = frame.settings;
     const SceneLights& info = state.lights;
     slot.camera = resolve_camera(settings.camera, info.cameras, frame.aspect());
-    GPUFrameData f = lighting_constants(settings);
+    GPUFrameData f = lighting_constants(info, environment.get(), settings);
     const std::uint32_t count = f.params.y;
     f.view = slot.camera.view;
     f.proj = slot.camera.proj;
@@ -111,7 +114,7 @@ void FrameRecorder::write_frame_data(FrameContext& frame) {
         (settings.view == DebugView::Lit || settings.view == DebugView::Shadow)) {
         // The one cascade fit (scene layer), shared with `sherpa-cli cull`.
         const ShadowCascades c = fit_shadow_cascades(
-            cascade_camera(slot.camera), shadow_bounds(frame), sun_dir,
+            cascade_camera(slot.camera), shadow_bounds(info, frame), sun_dir,
             std::min(settings.cascades, kShadowCascades), options.shadow_resolution);
         slot.cascades = c;
         cascades = c.count;

@@ -2,14 +2,16 @@
 // How a Renderer records frames (private to the render layer): frame slots, targets,
 // pipelines and the passes, in frame order in record_passes() (renderer_frame.cpp),
 // over the loaded scene's SceneState (scene_state.h), which it reads. The frame sources
-// (PresentedFrame, ComparisonFrame, render_comparison, the path tracer's readback)
-// reach it through Renderer::frames(); outside the render layer it is an incomplete type.
+// (PresentedFrame, ComparisonFrame, render_comparison, the path tracer's readback, the
+// material variant switch) reach it through Renderer::frames(); outside the render
+// layer it is an incomplete type.
 #include "comparison_pass.h"
 #include "passes.h"
 #include "path_trace_pass.h"
 #include "render_targets.h"
 #include "rt_view_pass.h"
 #include "scene_state.h"
+#include "transmission_pass.h"
 
 #include <map>
 
@@ -23,6 +25,11 @@ struct MainSun {
     std::int64_t placed_light = -1; // its Scene::placed_lights index; -1: default sun or none
 };
 MainSun main_sun(const SceneLights& lights, const FrameRequest& settings);
+// Lights, sun, ambient, environment (null: none) and display transform of a lit frame:
+// what the raster's frame constants and the path tracer's share (params.y: the light
+// count; frame_data.cpp).
+GPUFrameData lighting_constants(const SceneLights& lights, const EnvironmentMap* environment,
+                                const FrameRequest& settings);
 
 class FrameRecorder {
 public:
@@ -49,8 +56,9 @@ public:
     void finish_frame(std::uint32_t slot, std::uint64_t submission);
     // Results of the last completed frame recorded in `slot` (waits for it).
     FrameStats slot_stats(std::uint32_t slot);
-    // Bytes of the recorder's images (targets, shadow map).
-    std::uint64_t render_target_bytes() const;
+    // Bytes of the recorder's images into `out`: render_target_bytes (targets, shadow
+    // map, transmission background) and transmission_target_bytes.
+    void count_target_bytes(ResidentStats& out) const;
     // Its images: offscreen target and readback, the presenter's reduced-resolution image.
     RenderTargets& targets() { return targets_; }
 
@@ -70,6 +78,8 @@ public:
     PathTraceImage path_trace_image();
     // Culling statistics of the frames read (Renderer::cull_history()).
     const RingHistory<CullFrame>& cull_history() const { return culling.history(); }
+    // set_material_variant() (renderer_variants.cpp): waits for the frames in flight.
+    VariantSwitch set_variant(std::int32_t variant);
 
 private:
     SceneState& state;
@@ -93,8 +103,6 @@ private:
     // Camera, lights, cascades and view into the slot's GPUFrameData; sets
     // f.cascades to the cascades that must be drawn this frame (frame_data.cpp).
     void write_frame_data(FrameContext& f);
-    GPUFrameData lighting_constants(const FrameRequest& settings) const;
-    Aabb shadow_bounds(const FrameContext& f) const;
     void create_frame_sets();
     void bind_frame_set(FrameSlot& slot);
     void wait_slot(FrameSlot& slot);
@@ -118,14 +126,20 @@ private:
     PathTraceFrame record_path(VkCommandBuffer cmd, FrameSlot& slot, const FrameRequest& settings,
                                bool readback);
 
-    // SceneSetup::hidden_nodes into the culling (and, with `rt`, the TLAS: every
-    // slot must be idle) when it differs from the mask applied last
-    // (renderer_visibility.cpp).
-    void apply_visibility(bool rt);
+    // Before a frame (renderer_visibility.cpp): the frame's animated properties
+    // (KHR_animation_pointer) into the scene state, the materials they change uploaded
+    // (after the frames in flight); then the visibility (SceneSetup::hidden_nodes and
+    // the nodes the animation hides) into the culling and, with `rt`, the TLAS (every
+    // slot must be idle), when it differs from the mask applied last.
+    void apply_scene_changes(const FrameRequest& settings, bool rt);
+    // Frames in flight index GPU cullers and draw groups about to be replaced: waits
+    // for them, their unread statistics kept in the history now.
+    void retire_culling();
 
     std::unique_ptr<RtViewPass> rt_views_;
     std::unique_ptr<PathTracePass> path_;
     std::uint64_t path_environment_ = ~0ull; // environment generation path_ samples
+    std::uint64_t path_lights_ = ~0ull;      // scene generation path_'s light list is of
     std::uint64_t path_key_ = 0;             // what the accumulation is of
     std::uint32_t path_samples_ = 0;
     PathTraceFrame last_path_; // of the last presented or compared path-traced side
@@ -136,6 +150,7 @@ private:
     DepthPrepass prepass_;
     ForwardPass opaque_{AlphaMode::Opaque}, mask_{AlphaMode::Mask}, blend_{AlphaMode::Blend};
     BackgroundPass background_;
+    std::unique_ptr<TransmissionPass> transmission_; // made with the frame sets' layout
     OverlayPass overlays_{pose_};
     HighlightPass highlight_;
 

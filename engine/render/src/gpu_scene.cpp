@@ -126,12 +126,6 @@ GpuMaterials::GpuMaterials(ResourceManager& resources, BindlessTable& table, con
     }
 }
 
-GpuMaterials::~GpuMaterials() {
-    resources_.destroy(materials_);
-    resources_.destroy(extras_);
-    if (extension_buffer_.valid()) resources_.destroy(extension_buffer_);
-}
-
 void GpuScene::upload_geometry(const Scene& scene) {
     std::vector<bool> instanced(scene.meshes.size(), false);
     for (const MeshInstance& inst : scene.instances)
@@ -159,7 +153,7 @@ void GpuScene::upload_geometry(const Scene& scene) {
 
         // What shading reads; debug views add every authored or generated stream.
         std::array<bool, kVertexAttributeCount> upload =
-            attributes_used(scene.materials[mesh.material_id], mesh);
+            mesh_attributes_used(scene, static_cast<std::uint32_t>(m));
         if (policy_ == StreamPolicy::AllPresent)
             for (VertexAttribute a : kAllVertexAttributes)
                 if (mesh.provenance_of(a) != Provenance::Defaulted) upload[std::size_t(a)] = true;
@@ -257,62 +251,13 @@ void GpuScene::upload_motion(const Scene& scene, const std::vector<bool>& instan
     memory_.motion = motion.bytes.size() + bytes;
 }
 
-void GpuMaterials::upload(const Scene& scene) {
-    std::vector<GPUMaterialData> data;
-    std::vector<GPUMaterialExtra> extras;
-    extensions_ = build_material_extensions(
-        scene.materials, [this](const TextureSlot& slot, TextureRole role) {
-            // A failed texture reads white (the factor alone), not the checker: the
-            // texture pipeline has warned, and a checker would only tint F0.
-            const std::uint32_t tex = textures_->field_slot(slot, role, kWhiteTexture);
-            return tex == kCheckerTexture ? kWhiteTexture : tex;
-        });
-    for (const MaterialInstance& m : scene.materials) {
-        // Texture fields resolved to bindless slots, absent ones to the defaults.
-        data.push_back(textures_->material(m));
-        GPUMaterialExtra x{};
-        x.uv[kSlotBaseColor] = texture_transform(m.base_color);
-        x.uv[kSlotMetallicRoughness] = texture_transform(m.metallic_roughness);
-        x.uv[kSlotNormal] = texture_transform(m.normal);
-        x.uv[kSlotOcclusion] = texture_transform(m.occlusion);
-        x.uv[kSlotEmissive] = texture_transform(m.emissive);
-        x.unlit = m.unlit ? 1u : 0u;
-        x.specular_glossiness_tex = kWhiteTexture;
-        x.extensions = extensions_.places[data.size() - 1].index;
-        if (const auto& sg = m.specular_glossiness) {
-            x.workflow = kWorkflowSpecularGlossiness;
-            x.uv[kSlotSpecularGlossiness] = texture_transform(sg->specular_glossiness);
-            x.specular_glossiness_tex =
-                textures_->field_slot(sg->specular_glossiness, kRoleColor, kWhiteTexture);
-            x.specular_glossiness = glm::vec4(sg->specular_factor, sg->glossiness_factor);
-        }
-        extras.push_back(x);
-    }
-    if (data.empty()) { // keep the addresses valid for scenes without materials
-        data.push_back(to_gpu_material(MaterialInstance{}));
-        extras.push_back(GPUMaterialExtra{});
-    }
-    const VkDeviceSize bytes = data.size() * sizeof(GPUMaterialData);
-    const VkDeviceSize extra_bytes = extras.size() * sizeof(GPUMaterialExtra);
-    // Copied out too: the editor's material dock reads records back from this buffer.
-    materials_ = resources_.create_buffer({bytes, kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                           MemoryUsage::DeviceLocal, "materials"});
-    extras_ =
-        resources_.create_buffer({extra_bytes, kStorage, MemoryUsage::DeviceLocal, "material uv"});
-    UploadBatch batch(resources_);
-    batch.upload_buffer(materials_, 0, data.data(), bytes);
-    batch.upload_buffer(extras_, 0, extras.data(), extra_bytes);
-    // Only where some material uses a drawn extension (the binding is partially bound).
-    if (!extensions_.words.empty()) {
-        extension_buffer_ = resources_.create_buffer(
-            {extensions_.bytes(), kStorage, MemoryUsage::DeviceLocal, "material extensions"});
-        batch.upload_buffer(extension_buffer_, 0, extensions_.words.data(), extensions_.bytes());
-    }
-    batch.submit_and_wait();
-    bytes_ = bytes + extra_bytes;
+std::uint64_t update_scene_materials(GpuScene& scene, std::span<const MaterialInstance> materials) {
+    return scene.materials_->update(materials);
 }
 
 void GpuScene::upload_instances(const Scene& scene) {
+    for (const MaterialInstance& m : scene.materials)
+        material_modes_.emplace_back(m.alpha_mode, m.double_sided);
     struct Keyed {
         std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, bool, bool>
             key; // mesh, alpha, material, ds, mirror
@@ -362,6 +307,43 @@ void GpuScene::upload_instances(const Scene& scene) {
     batch.upload_buffer(instances_, 0, data.data(), bytes);
     batch.submit_and_wait();
     memory_.instances = bytes;
+}
+
+MaterialSwitch
+switch_mesh_materials(GpuScene& scene,
+                      std::span<const std::pair<std::uint32_t, std::uint32_t>> meshes) {
+    MaterialSwitch out;
+    std::vector<std::uint32_t> material_of(scene.meshes_.size(), ~0u); // ~0: unchanged
+    for (auto [mesh, material] : meshes) {
+        if (mesh >= scene.meshes_.size() || material >= scene.material_modes_.size())
+            throw GpuError("material switch: mesh " + std::to_string(mesh) + " or material " +
+                           std::to_string(material) + " out of range");
+        if (scene.meshes_[mesh].material == material) continue;
+        scene.meshes_[mesh].material = material;
+        material_of[mesh] = material;
+        ++out.meshes;
+    }
+    if (out.meshes == 0) return out;
+    constexpr VkDeviceSize kWord = offsetof(GPUInstanceData, material);
+    UploadBatch batch(scene.resources_);
+    for (DrawGroup& g : scene.groups_) {
+        const std::uint32_t material = material_of[g.mesh];
+        if (material == ~0u || g.material == material) continue;
+        const auto [alpha, double_sided] = scene.material_modes_[material];
+        out.modes_changed |= alpha != g.alpha || double_sided != g.double_sided;
+        g.material = material;
+        g.alpha = alpha;
+        g.double_sided = double_sided;
+        ++out.groups;
+        for (std::uint32_t k = 0; k < g.instance_count; ++k) {
+            const VkDeviceSize at = VkDeviceSize(g.first_instance + k) * sizeof(GPUInstanceData);
+            batch.upload_buffer(scene.instances_, at + kWord, &material, sizeof material);
+            out.gpu_bytes += sizeof material;
+        }
+        out.instances += g.instance_count;
+    }
+    batch.submit_and_wait();
+    return out;
 }
 
 } // namespace sherpa::gpu

@@ -23,6 +23,37 @@ template <typename Block> std::uint32_t append(std::vector<glm::uvec4>& words, c
     return static_cast<std::uint32_t>(first);
 }
 
+// The transmission family's blocks of a shaded material (each only where it uses it).
+void append_transmission_blocks(std::vector<glm::uvec4>& words, const MaterialInstance& m,
+                                MaterialExtensionPlace& place,
+                                const ExtensionTextureSlot& texture_slot) {
+    if (const auto& t = m.transmission) {
+        GPUTransmissionBlock b{};
+        b.factor = t->factor;
+        b.texture = texture_slot(t->texture, kRoleLinear);
+        b.uv = texture_transform(t->texture);
+        place.transmission = append(words, b);
+    }
+    if (const auto& v = m.volume) {
+        GPUVolumeBlock b{};
+        b.attenuation = glm::vec4(v->attenuation_color, v->attenuation_distance);
+        b.thickness_factor = v->thickness_factor;
+        b.thickness_tex = texture_slot(v->thickness, kRoleLinear);
+        b.thickness_uv = texture_transform(v->thickness);
+        place.volume = append(words, b);
+    }
+    if (const auto& d = m.diffuse_transmission) {
+        GPUDiffuseTransmissionBlock b{};
+        b.color_factor = glm::vec4(d->color_factor, d->factor);
+        b.texture = texture_slot(d->texture, kRoleLinear);
+        b.color_tex = texture_slot(d->color, kRoleColor);
+        b.uv = texture_transform(d->texture);
+        b.color_uv = texture_transform(d->color);
+        place.diffuse_transmission = append(words, b);
+    }
+    if (m.dispersion) place.dispersion = append(words, GPUDispersionBlock{*m.dispersion, 0, 0, 0});
+}
+
 } // namespace
 
 MaterialExtensionBuffer build_material_extensions(std::span<const MaterialInstance> materials,
@@ -35,9 +66,16 @@ MaterialExtensionBuffer build_material_extensions(std::span<const MaterialInstan
         const bool shaded = !m.unlit && !m.specular_glossiness;
         const bool ior = shaded && m.ior.has_value();
         const bool specular = shaded && m.specular.has_value();
-        if (!ior && !specular) continue;
+        const bool transmission = shaded && m.transmission.has_value();
+        const bool diffuse_transmission = shaded && m.diffuse_transmission.has_value();
+        const bool volume = shaded && m.volume.has_value();
+        const bool dispersion = shaded && m.dispersion.has_value();
+        if (!ior && !specular && !transmission && !diffuse_transmission && !volume && !dispersion)
+            continue;
         MaterialExtensionPlace& place = out.places[i];
-        place.index = append(out.words, GPUExtensionIndex{kNoExtension, kNoExtension, 0, 0});
+        place.index =
+            append(out.words, GPUExtensionIndex{kNoExtension, kNoExtension, 0, 0, kNoExtension,
+                                                kNoExtension, kNoExtension, kNoExtension});
         if (ior) place.ior = append(out.words, GPUIorBlock{*m.ior, 0.0f, 0.0f, 0.0f});
         if (specular) {
             const MaterialSpecular& s = *m.specular;
@@ -49,7 +87,16 @@ MaterialExtensionBuffer build_material_extensions(std::span<const MaterialInstan
             b.color_uv = texture_transform(s.specular_color);
             place.specular = append(out.words, b);
         }
-        const GPUExtensionIndex index{place.ior, place.specular, 0, 0};
+        append_transmission_blocks(out.words, m, place, texture_slot);
+        if (transmission && m.transmission->factor > 0.0f) ++out.transmissive_materials;
+        const GPUExtensionIndex index{place.ior,
+                                      place.specular,
+                                      0,
+                                      0,
+                                      place.transmission,
+                                      place.volume,
+                                      place.diffuse_transmission,
+                                      place.dispersion};
         std::memcpy(&out.words[place.index], &index, sizeof index);
     }
     return out;

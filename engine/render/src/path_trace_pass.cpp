@@ -21,7 +21,7 @@ constexpr VkShaderStageFlags kHitStages =
     VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR | VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
 constexpr VkShaderStageFlags kAllStages =
     VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR | kHitStages;
-constexpr std::uint32_t kBindings = 9;
+constexpr std::uint32_t kBindings = 11;
 
 // Copies `image` (GENERAL, written by the launches) into `buffer` at `offset` through
 // TRANSFER_SRC_OPTIMAL, and back to GENERAL for the next launches.
@@ -68,11 +68,15 @@ PathTracePass::PathTracePass(Context& context, ResourceManager& resources,
         {6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, kRaygen, nullptr},  // sums
         {7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, kRaygen, nullptr},  // squared luminance
         {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kRaygen, nullptr}, // distribution
+        // The material extension blocks (material_ext.glsl): partially bound, nothing
+        // there where no material uses an extension.
+        {9, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kHitStages, nullptr},
+        // The emissive triangles' light list: partially bound, nothing without one.
+        {10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kRaygen, nullptr},
     };
-    const VkDescriptorBindingFlags flags[kBindings] = {
-        0, 0, 0,
-        0, 0, VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
-        0, 0, VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT};
+    constexpr VkDescriptorBindingFlags kPartial = VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT;
+    const VkDescriptorBindingFlags flags[kBindings] = {0, 0, 0,        0,        0,       kPartial,
+                                                       0, 0, kPartial, kPartial, kPartial};
     auto flags_info = vk_init<VkDescriptorSetLayoutBindingFlagsCreateInfo>(
         VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_BINDING_FLAGS_CREATE_INFO);
     flags_info.bindingCount = kBindings;
@@ -81,7 +85,7 @@ PathTracePass::PathTracePass(Context& context, ResourceManager& resources,
                                                "vkCreateDescriptorSetLayout(path)", 0, &flags_info);
     const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1},
                                           {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 3},
-                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3},
+                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
                                           {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
                                           {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
     pool_ = create_descriptor_pool(device, 1, sizes, "vkCreateDescriptorPool(path)");
@@ -98,6 +102,7 @@ PathTracePass::PathTracePass(Context& context, ResourceManager& resources,
 PathTracePass::~PathTracePass() {
     destroy_targets();
     resources_.destroy(distribution_);
+    resources_.destroy(lights_);
 }
 
 void PathTracePass::destroy_targets() {
@@ -117,6 +122,17 @@ void PathTracePass::set_distribution(const EnvironmentDistribution& d) {
                                               MemoryUsage::Upload, "environment distribution"});
     std::memcpy(resources_.get(distribution_).mapped, d.cdf.data(), bytes);
     distribution_size_ = glm::uvec2(d.width, d.height);
+}
+
+void PathTracePass::set_lights(const EmissiveLights& lights) {
+    resources_.destroy(lights_);
+    light_inv_power_ = 0.0f;
+    if (lights.triangles.empty()) return;
+    const VkDeviceSize bytes = lights.triangles.size() * sizeof(EmissiveTriangle);
+    lights_ = resources_.create_buffer(
+        {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUsage::Upload, "emissive triangles"});
+    std::memcpy(resources_.get(lights_).mapped, lights.triangles.data(), bytes);
+    light_inv_power_ = lights.inv_power;
 }
 
 // The images are made (and their sums start over) when the size changes; they stay in
@@ -189,6 +205,14 @@ void PathTracePass::write_set(const PathTracedFrame& f) {
         distribution = {resources_.get(distribution_).buffer.get(), 0, VK_WHOLE_SIZE};
         add(8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER).pBufferInfo = &distribution;
     }
+    const VkDescriptorBufferInfo extensions{f.material_extensions, 0, VK_WHOLE_SIZE};
+    if (f.material_extensions != VK_NULL_HANDLE)
+        add(9, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER).pBufferInfo = &extensions;
+    VkDescriptorBufferInfo lights{};
+    if (lights_.valid()) {
+        lights = {resources_.get(lights_).buffer.get(), 0, VK_WHOLE_SIZE};
+        add(10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER).pBufferInfo = &lights;
+    }
     vkUpdateDescriptorSets(context_.device(), count, writes.data(), 0, nullptr);
 }
 
@@ -205,6 +229,7 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTracedFrame& f, bool r
                             0, nullptr);
     GPUPathPushConstants push = f.push;
     push.env_size = f.environment.imageView != VK_NULL_HANDLE ? distribution_size_ : glm::uvec2(0u);
+    push.light_inv_power = f.light_sampling ? light_inv_power_ : 0.0f;
     // At least one launch, so that the image is resolved even when no sample is added.
     std::uint32_t done = 0;
     do {

@@ -8,6 +8,7 @@
 #include "rt_pipeline.h"
 
 #include <sherpa/gpu/resources.h>
+#include <sherpa/render/emissive_lights.h>
 #include <sherpa/render/gpu_structs.h>
 #include <sherpa/render/path_trace.h>
 
@@ -21,11 +22,13 @@ struct PathTracedFrame {
     VkDescriptorSet bindless = VK_NULL_HANDLE;
     VkAccelerationStructureKHR tlas = VK_NULL_HANDLE;
     VkBuffer materials = VK_NULL_HANDLE, material_extras = VK_NULL_HANDLE;
+    VkBuffer material_extensions = VK_NULL_HANDLE; // none where no material uses one
     VkBuffer frame_data = VK_NULL_HANDLE; // GPUFrameData: lights, sun, environment, display
     VkDescriptorImageInfo environment{};  // the specular cube; no view: no environment
     std::uint32_t width = 0, height = 0;
     std::uint32_t first_sample = 0, samples = 0; // first_sample 0: the sums start over
     GPUPathPushConstants push{};                 // first_sample, samples, env_size: set here
+    bool light_sampling = true;                  // the emissive triangles' light list
 };
 
 class PathTracePass {
@@ -42,6 +45,8 @@ public:
 
     // The environment's sampling distribution (empty: BRDF sampling only), uploaded.
     void set_distribution(const EnvironmentDistribution& distribution);
+    // The emissive triangles' light list (empty: none), uploaded.
+    void set_lights(const EmissiveLights& lights);
     // Records the launches and, with `readback`, the copy of the shown image. The
     // previous frame of this pass must have completed (its set is rewritten). Without
     // `readback` the image stays in GENERAL layout for sampled reads.
@@ -68,7 +73,8 @@ private:
     UniquePipelineLayout layout_;
     std::unique_ptr<RayPipeline> pipeline_;
     ImageHandle shown_, sums_, moments_;
-    BufferHandle readback_, sums_readback_, distribution_;
+    BufferHandle readback_, sums_readback_, distribution_, lights_;
+    float light_inv_power_ = 0.0f;
     glm::uvec2 distribution_size_{0u, 0u};
     std::uint32_t width_ = 0, height_ = 0;
 };

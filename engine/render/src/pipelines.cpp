@@ -119,8 +119,10 @@ UniquePipeline make_graphics_pipeline(VkDevice device, VkPipelineLayout layout,
 }
 
 Pipelines::Pipelines(const Context& context, VkDescriptorSetLayout textures_layout,
-                     VkDescriptorSetLayout frame_layout, VkFormat color_format)
+                     VkDescriptorSetLayout frame_layout, VkFormat color_format,
+                     bool transmission_background)
     : color_format_(color_format),
+      transmission_background_(transmission_background ? VK_TRUE : VK_FALSE),
       point_size_(context.info().large_points ? kPointSizePixels : 1.0f),
       line_width_(context.info().wide_lines ? kLineWidthPixels : 1.0f),
       outline_width_(context.info().wide_lines ? kOutlineWidthPixels : 1.0f),
@@ -192,9 +194,11 @@ VkPipeline Pipelines::forward(std::uint32_t view, bool blend, std::uint32_t stre
     auto& p = forward_[{view, blend, streams}];
     if (!p) {
         const VkSpecializationMapEntry entries[] = {
-            {0, 0, sizeof(std::uint32_t)}, {1, sizeof(std::uint32_t), sizeof(std::uint32_t)}};
-        const std::uint32_t values[] = {view, streams & ~kMeshMotionBit};
-        VkSpecializationInfo constants{2, entries, sizeof(values), values};
+            {0, 0, sizeof(std::uint32_t)},
+            {1, sizeof(std::uint32_t), sizeof(std::uint32_t)},
+            {2, 2 * sizeof(std::uint32_t), sizeof(VkBool32)}};
+        const std::uint32_t values[] = {view, streams & ~kMeshMotionBit, transmission_background_};
+        VkSpecializationInfo constants{3, entries, sizeof(values), values};
         // POINT_SIZE (constant_id 0) and MOTION (constant_id 1) of mesh.vert.
         struct {
             float point_size;

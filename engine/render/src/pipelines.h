@@ -86,8 +86,11 @@ struct DrawPipeline {
 
 class Pipelines {
 public:
+    // `transmission_background`: forward shading writes linear radiance and leaves
+    // transmissive materials out (TransmissionPass's target; forward.frag constant 2).
     Pipelines(const Context& context, VkDescriptorSetLayout textures_layout,
-              VkDescriptorSetLayout frame_layout, VkFormat color_format);
+              VkDescriptorSetLayout frame_layout, VkFormat color_format,
+              bool transmission_background = false);
     VkPipeline get(PipelineId id) const { return pipelines_[static_cast<std::size_t>(id)].get(); }
     // The same for meshes of `mesh_flags`: moving meshes get the pipeline's MOTION
     // twin (skinning and morphing in the vertex stage), built on first use.
@@ -105,6 +108,7 @@ public:
 
 private:
     VkFormat color_format_;
+    VkBool32 transmission_background_ = VK_FALSE;
     // Point size forward shading gives points: kPointSizePixels, or 1 on a device
     // without largePoints.
     float point_size_ = 1.0f;

@@ -1,6 +1,6 @@
 // The Renderer over its SceneState and FrameRecorder: construction, scene load/unload,
 // and the recorder's frame resources and statistics of completed frames (the targets
-// and readback: renderer_targets.cpp).
+// and readback: render_targets.cpp).
 #include "frame_recorder.h"
 
 #include <sherpa/gpu/gpu_error.h>
@@ -33,6 +33,8 @@ FrameRecorder::FrameRecorder(SceneState& scene_state)
         slots_.push_back(std::move(slot));
     }
     create_frame_sets();
+    transmission_ = std::make_unique<TransmissionPass>(context, *resources, bindless->layout(),
+                                                       frame_layout_.get());
 }
 
 void FrameRecorder::create_frame_sets() {
@@ -52,11 +54,15 @@ void FrameRecorder::create_frame_sets() {
         // The material extension blocks (shaders/include/material_ext.glsl): partially
         // bound, so a scene whose materials use no extension binds (and holds) nothing.
         {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+        // The transmission background (TransmissionPass, shaders/include/refraction.glsl):
+        // partially bound, written only for scenes with a transmissive material.
+        {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
     };
     const VkDescriptorBindingFlags binding_flags[] = {0,
                                                       0,
                                                       0,
                                                       0,
+                                                      VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
                                                       VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
                                                       VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
                                                       VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
@@ -71,7 +77,7 @@ void FrameRecorder::create_frame_sets() {
     const VkDescriptorPoolSize sizes[] = {
         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFramesInFlight},
         {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3 * kFramesInFlight},
-        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 5 * kFramesInFlight}};
+        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 6 * kFramesInFlight}};
     frame_pool_ =
         create_descriptor_pool(device, kFramesInFlight, sizes, "vkCreateDescriptorPool(frame)");
     no_materials_ =
@@ -178,6 +184,7 @@ void FrameRecorder::scene_loaded(const Scene& source) {
 void FrameRecorder::scene_unloading() {
     // Frames in flight may still read the scene's buffers and textures: wait for
     // them, so that the bindless slots the scene gives back can be reused at once.
+    if (transmission_) transmission_->release();
     for (auto& slot : slots_) {
         wait_slot(*slot);
         // Sized for the scene's instances: it goes with the scene.
@@ -199,8 +206,9 @@ void FrameRecorder::scene_unloading() {
     shadows_.invalidate();
 }
 
-std::uint64_t FrameRecorder::render_target_bytes() const {
-    return shadows_.bytes() + targets_.bytes();
+void FrameRecorder::count_target_bytes(ResidentStats& out) const {
+    out.transmission_target_bytes = transmission_->bytes();
+    out.render_target_bytes = shadows_.bytes() + targets_.bytes() + out.transmission_target_bytes;
 }
 
 void FrameRecorder::wait_all() {
@@ -355,7 +363,7 @@ ResidentStats Renderer::resident() const {
     out.acceleration =
         scene_->acceleration && scene_->gpu ? &scene_->acceleration->stats() : nullptr;
     out.environment = scene_->environment ? scene_->environment->stats() : EnvironmentStats{};
-    out.render_target_bytes = frames_->render_target_bytes();
+    frames_->count_target_bytes(out);
     return out;
 }
 

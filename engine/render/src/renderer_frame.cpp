@@ -14,6 +14,7 @@ namespace {
 enum Timestamp : std::uint32_t {
     kFrameStart,
     kAfterShadows,
+    kAfterTransmission,
     kAfterPrepass,
     kAfterOpaque,
     kAfterMask,
@@ -26,7 +27,7 @@ static_assert(kAfterOverlays + 1 == kTimestampCount);
 
 void FrameRecorder::record_frame(VkCommandBuffer cmd, std::uint32_t index,
                                  const RenderTarget& target, const FrameRequest& settings) {
-    apply_visibility(false);
+    apply_scene_changes(settings, false);
     FrameSlot& slot = *slots_.at(index);
     wait_slot(slot);
     // Frames nobody read the results of (the swapchain path) still reach the
@@ -50,11 +51,14 @@ void FrameRecorder::record_frame(VkCommandBuffer cmd, std::uint32_t index,
 void FrameRecorder::record_passes(FrameContext& f) {
     pose_.record(f); // before the frame data: the shadow fit and cache read the pose
     begin_frame(f);
+    transmission_->prepare(f); // writes the slot's set: before it is bound
     culling.record(f);
     bind_frame(f);
     timestamp(f, kFrameStart);
     shadows_.record(f);
     timestamp(f, kAfterShadows);
+    transmission_->record(f); // only scenes with a transmissive material
+    timestamp(f, kAfterTransmission);
     begin_camera_rendering(f);
     floor_.record(f);
     prepass_.record(f);

@@ -33,9 +33,13 @@ PathTraceFrame FrameRecorder::record_path(VkCommandBuffer cmd, FrameSlot& slot,
                                                            : EnvironmentDistribution{});
         path_environment_ = state.environment_generation;
     }
+    if (path_lights_ != state.generation) {
+        path_->set_lights(state.emissive);
+        path_lights_ = state.generation;
+    }
     const CameraView camera = resolve_camera(settings.camera, state.lights.cameras,
                                              float(settings.width) / float(settings.height));
-    GPUFrameData constants = lighting_constants(settings);
+    GPUFrameData constants = lighting_constants(state.lights, environment.get(), settings);
     constants.view = camera.view;
     constants.proj = camera.proj;
     constants.view_proj = camera.proj * camera.view;
@@ -47,6 +51,7 @@ PathTraceFrame FrameRecorder::record_path(VkCommandBuffer cmd, FrameSlot& slot,
     f.tlas = acceleration->tlas();
     f.materials = scene->materials().buffer();
     f.material_extras = scene->materials().extras_buffer();
+    f.material_extensions = scene->materials().extensions_buffer();
     f.frame_data = resources->get(slot.frame_data).buffer.get();
     if (environment) f.environment = environment->specular_descriptor();
     f.width = settings.width;
@@ -70,6 +75,8 @@ PathTraceFrame FrameRecorder::record_path(VkCommandBuffer cmd, FrameSlot& slot,
     key.add(state.environment_generation);
     key.add(state.rt_pose_key);
     key.add(state.visibility_version);
+    key.add(settings.path.light_sampling);
+    key.add(state.material_generation);
     PathTraceFrame out;
     out.restarted = settings.path.restart || key.h != path_key_ || path_samples_ == 0 ||
                     path_->width() != f.width || path_->height() != f.height;
@@ -80,6 +87,7 @@ PathTraceFrame FrameRecorder::record_path(VkCommandBuffer cmd, FrameSlot& slot,
                   ? 0
                   : std::min(add, settings.path.max_samples - path_samples_);
     if (path_samples_ == 0) add = std::max(add, 1u); // an image needs a sample
+    f.light_sampling = settings.path.light_sampling;
     f.first_sample = path_samples_;
     f.samples = add;
     path_->record(cmd, f, readback);

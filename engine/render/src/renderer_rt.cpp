@@ -55,6 +55,10 @@ void FrameRecorder::check_rt(const FrameRequest& settings) const {
         throw GpuError("the ray tracer does not draw view '" +
                        std::string(to_string(settings.view)) + "' (it draws " +
                        ray_traced_view_names() + ")");
+    if (state.variant != state.loaded_variant)
+        throw GpuError("the ray tracer draws the materials the scene was loaded with: a material "
+                       "variant switched after loading reaches the raster only (load the scene "
+                       "with the variant to trace it)");
     if (settings.overlays != 0 || settings.highlight_instance ||
         !settings.highlight_outline.empty())
         throw GpuError("the ray tracer draws no overlays or highlights (raster only)");
@@ -103,7 +107,7 @@ FrameStats FrameRecorder::render_rt(const FrameRequest& settings, std::vector<st
     // Its descriptor set is rewritten per frame, and the structures are posed below:
     // no earlier frame may be in flight.
     for (auto& s : slots_) wait_slot(*s);
-    apply_visibility(true);
+    apply_scene_changes(settings, true);
     if (!rt_views_)
         rt_views_ = std::make_unique<RtViewPass>(context, *resources, bindless->layout());
     const std::uint32_t index = next_slot_;

@@ -1,25 +1,27 @@
-// Node visibility in the frames (SceneSetup::hidden_nodes): the scene state maps a
-// changed mask to GPU instances once (scene_state.cpp); here the culling takes it
-// (after the frames in flight that index the GPU cullers being replaced), the cached
-// shadow cascades are redrawn, and the TLAS follows before the next ray-traced frame.
-// An unchanged mask costs one comparison.
+// What changes in the loaded scene between frames, applied before a frame: the frame's
+// animated properties (KHR_animation_pointer, renderer_animated.cpp) and the node
+// visibility (SceneSetup::hidden_nodes and the nodes KHR_node_visibility hides). The
+// scene state maps a changed mask to GPU instances once (scene_state.cpp); here the
+// animated materials are uploaded (after the frames in flight, which read the same
+// buffers), the culling takes the mask (after the frames in flight that index the GPU
+// cullers being replaced), the cached shadow cascades are redrawn, and the TLAS follows
+// before the next ray-traced frame. An unchanged frame costs two comparisons.
 #include "frame_recorder.h"
 
 namespace sherpa::gpu {
 
-void FrameRecorder::apply_visibility(bool rt) {
+void FrameRecorder::apply_scene_changes(const FrameRequest& settings, bool rt) {
     if (!scene) return;
-    if (auto hidden = state.take_visibility_change()) {
-        // Frames in flight index the GPU cullers being replaced: wait for them and
-        // keep their statistics in the history now.
-        for (auto& s : slots_) {
-            wait_slot(*s);
-            if (s->has_results && !s->history_pushed) {
-                FrameStats unused;
-                culling.read_stats(*s, scene.get(), unused);
-            }
-            s->culling.count = 0;
+    static const std::vector<AnimatedProperty> kNone;
+    if (auto materials = state.animate(settings.pose ? settings.pose->properties : kNone)) {
+        for (auto& s : slots_) wait_slot(*s);
+        if (update_scene_materials(*state.gpu, *materials)) {
+            ++state.material_generation;
+            shadows_.invalidate(); // masked casters read alpha and cutoff
         }
+    }
+    if (auto hidden = state.take_visibility_change()) {
+        retire_culling();
         culling.set_hidden(std::move(*hidden), *scene);
         shadows_.invalidate(); // the casters changed
     }
@@ -29,6 +31,17 @@ void FrameRecorder::apply_visibility(bool rt) {
         // The rebuilt TLAS holds the loaded transforms: the frame's pose goes in again.
         state.rt_pose_generation = 0;
         state.tlas_visibility = true;
+    }
+}
+
+void FrameRecorder::retire_culling() {
+    for (auto& s : slots_) {
+        wait_slot(*s);
+        if (s->has_results && !s->history_pushed) {
+            FrameStats unused;
+            culling.read_stats(*s, scene.get(), unused);
+        }
+        s->culling.count = 0;
     }
 }
 

@@ -1,9 +1,10 @@
 // The loaded scene's state between frames: load and unload, the environment, and node
-// visibility. A changed mask is expanded to subtrees once (hidden_subtrees(), the
-// editor's rule too) and mapped to GPU instances for the culling pass (whose GPU
-// cullers, shown-id lists and statistics leave hidden instances out); the recorder
-// redraws the cached shadow cascades and brings the TLAS up to date before the next
-// ray-traced frame. An unchanged mask costs one comparison.
+// visibility (the setup's mask joined by KHR_node_visibility's). A changed mask is
+// expanded to subtrees once (hidden_subtrees(), the editor's rule too) and mapped to GPU
+// instances for the culling pass (whose GPU cullers, shown-id lists and statistics leave
+// hidden instances out); the recorder redraws the cached shadow cascades and brings the
+// TLAS up to date before the next ray-traced frame. An unchanged mask costs one
+// comparison. Animated properties: renderer_animated.cpp.
 #include "scene_state.h"
 
 #include <sherpa/gpu/gpu_error.h>
@@ -30,6 +31,7 @@ void SceneState::load(const Scene& source, std::unique_ptr<GpuScene> gpu_scene,
                            "(or it was turned off: --rt off)");
         acceleration = std::make_unique<SceneAccelerationStructures>(resources, source, *gpu,
                                                                      options.acceleration);
+        emissive = emissive_lights(source);
     }
     lights.cameras.bounds = gpu->bounds().valid() ? gpu->bounds() : source.bounds;
     lights.cameras.cameras = source.cameras;
@@ -45,6 +47,9 @@ void SceneState::load(const Scene& source, std::unique_ptr<GpuScene> gpu_scene,
     hidden_nodes_.clear();
     // The TLAS was built with RendererOptions::acceleration's mask; ours replaces it.
     tlas_visibility = options.acceleration.hidden_nodes.empty();
+    variants = source.variants;
+    loaded_variant = variant = source.variants.active;
+    load_animated(source);
 }
 
 void SceneState::unload() {
@@ -52,6 +57,7 @@ void SceneState::unload() {
     gpu.reset();
     ++generation; // frame sets must stop naming the freed material buffers
     lights = SceneLights{};
+    emissive = EmissiveLights{};
     nodes_.clear();
     instance_node_.clear();
     hidden_given_.clear();
@@ -72,15 +78,28 @@ void SceneState::set_environment(const EnvironmentImage* image) {
 std::optional<std::vector<std::uint8_t>> SceneState::take_visibility_change() {
     if (!gpu) return std::nullopt;
     static const std::vector<bool> kNone;
-    const std::vector<bool>& given = setup.hidden_nodes ? *setup.hidden_nodes : kNone;
+    const std::vector<bool>& asked = setup.hidden_nodes ? *setup.hidden_nodes : kNone;
+    // Nodes KHR_node_visibility hides (as loaded, or animated through
+    // KHR_animation_pointer) join the ones the setup hides.
+    std::vector<bool> merged;
+    if (!animated_hidden_.empty()) {
+        merged = animated_hidden_;
+        for (std::size_t i = 0; i < asked.size() && i < merged.size(); ++i)
+            merged[i] = merged[i] || asked[i];
+    }
+    const std::vector<bool>& given = animated_hidden_.empty() ? asked : merged;
     if (given == hidden_given_) return std::nullopt;
     hidden_given_ = given;
     hidden_nodes_ = hidden_subtrees(nodes_, given);
+    tlas_visibility = false;
+    ++visibility_version; // the path tracer's accumulation starts over
+    return hidden_instances();
+}
+
+std::vector<std::uint8_t> SceneState::hidden_instances() const {
     std::vector<std::uint8_t> hidden(instance_node_.size(), 0);
     for (std::size_t i = 0; i < hidden.size(); ++i)
         hidden[i] = instance_node_[i] < hidden_nodes_.size() && hidden_nodes_[instance_node_[i]];
-    tlas_visibility = false;
-    ++visibility_version; // the path tracer's accumulation starts over
     return hidden;
 }
 

@@ -5,6 +5,7 @@
 // Each constant keeps the form (const uint or #define, literal spelling) its
 // hand-written copy had, so the compiled SPIR-V does not change.
 #include <sherpa/gpu/debug_views.h>
+#include <sherpa/render/gpu_material_ext_structs.h>
 #include <sherpa/render/gpu_structs.h>
 #include <sherpa/scene/culling.h>
 #include <sherpa/scene/material.h>
@@ -150,7 +151,7 @@ std::vector<Section> sections() {
         {"sherpa_texture_slots.glsl",
          "texture slots of GPUMaterialExtra.uv, in this order, and its workflows", texture_slots()},
         {"sherpa_material_ext.glsl",
-         "sherpa::gpu::kNoExtension: material extension blocks (gpu_structs.h)",
+         "sherpa::gpu::kNoExtension: material extension blocks (gpu_material_ext_structs.h)",
          "const uint NO_EXTENSION = " + hex(gpu::kNoExtension) + ";\n"},
         {"sherpa_default_textures.glsl", "default bindless textures, sherpa::gpu::kWhiteTexture...",
          textures.str()},

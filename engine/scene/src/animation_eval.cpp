@@ -161,6 +161,7 @@ Pose evaluate_pose(const Scene& scene, std::int32_t animation, double time) {
         for (std::size_t j = 0; j < skin.joints.size(); ++j)
             out[j] = pose.world[skin.joints[j]] * skin.inverse_bind[j];
     }
+    pose.properties = evaluate_pointer_channels(scene, animation, time);
     return pose;
 }
 

@@ -7,6 +7,7 @@
 #include "motion_internal.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 
 #include <tiny_gltf.h>
@@ -77,6 +78,72 @@ void check_rotation_keys(ImportContext& ctx, AnimationSampler& s, const std::str
                  " rotation keys are not unit quaternions; normalised when evaluated");
 }
 
+// The index in `anim.samplers` of the file's sampler `sampler`, read the first time a
+// channel uses it (with that channel's value width); a later channel of another width
+// is refused.
+std::uint32_t channel_sampler(ImportContext& ctx, const tinygltf::Animation& src, int sampler,
+                              std::uint32_t width, std::uint32_t components, bool rotation,
+                              const std::string& cpath, const std::string& where, Animation& anim,
+                              std::vector<int>& sampler_index) {
+    int& si = sampler_index[static_cast<std::size_t>(sampler)];
+    const std::string spath = where + ".samplers[" + std::to_string(sampler) + "]";
+    if (si < 0) {
+        anim.samplers.push_back(read_sampler(ctx, src.samplers[static_cast<std::size_t>(sampler)],
+                                             width, components, spath));
+        if (rotation) check_rotation_keys(ctx, anim.samplers.back(), spath);
+        si = static_cast<int>(anim.samplers.size() - 1);
+    } else if (anim.samplers[static_cast<std::size_t>(si)].width != width) {
+        fail(cpath + ": shares " + spath + " with a channel of another value size");
+    }
+    return static_cast<std::uint32_t>(si);
+}
+
+// The KHR_animation_pointer pointer of a channel whose target.path is "pointer".
+std::string animation_pointer(const tinygltf::AnimationChannel& ch, const std::string& cpath) {
+    const auto it = ch.target_extensions.find("KHR_animation_pointer");
+    if (it == ch.target_extensions.end() || !it->second.Get("pointer").IsString())
+        fail(cpath + ".target.extensions.KHR_animation_pointer.pointer: missing or not a string");
+    return it->second.Get("pointer").Get<std::string>();
+}
+
+// "/nodes/N/translation" (rotation, scale, weights) -> node N and that path.
+bool node_pointer(const std::string& pointer, int& node, std::string& path) {
+    constexpr std::string_view kNodes = "/nodes/";
+    if (pointer.rfind(kNodes, 0) != 0) return false;
+    const std::size_t slash = pointer.find('/', kNodes.size());
+    if (slash == std::string::npos || slash == kNodes.size()) return false;
+    const std::string rest = pointer.substr(slash + 1);
+    if (rest != "translation" && rest != "rotation" && rest != "scale" && rest != "weights")
+        return false;
+    std::uint32_t n = 0;
+    const char* first = pointer.data() + kNodes.size();
+    const auto [end, ec] = std::from_chars(first, pointer.data() + slash, n);
+    if (ec != std::errc() || end != pointer.data() + slash || n > 0x7fffffffu) return false;
+    node = static_cast<int>(n);
+    path = rest;
+    return true;
+}
+
+// A KHR_animation_pointer channel on a material, light, camera or node visibility.
+void import_pointer_channel(ImportContext& ctx, const tinygltf::Animation& src, std::size_t c,
+                            const std::string& cpath, const std::string& where,
+                            const std::string& pointer, Animation& anim,
+                            std::vector<int>& sampler_index) {
+    const auto& ch = src.channels[c];
+    PointerChannel out;
+    out.pointer = pointer;
+    if (const std::string why = resolve_animation_pointer(ctx.scene, pointer, out.target);
+        !why.empty())
+        fail(cpath + ".target.extensions.KHR_animation_pointer.pointer: \"" + pointer +
+             "\" is not animated: " + why);
+    const std::uint32_t width = pointer_width(out.target.property);
+    out.sampler = channel_sampler(ctx, src, ch.sampler, width, width, false, cpath, where, anim,
+                                  sampler_index);
+    out.source = static_cast<std::uint32_t>(c);
+    out.source_sampler = static_cast<std::uint32_t>(ch.sampler);
+    anim.pointers.push_back(std::move(out));
+}
+
 // One channel of animation `src`: its sampler read (once, with the channel's width)
 // and the channel appended to `anim`. Throws ImportError naming what is wrong.
 void import_channel(ImportContext& ctx, const tinygltf::Animation& src, std::size_t c,
@@ -86,24 +153,34 @@ void import_channel(ImportContext& ctx, const tinygltf::Animation& src, std::siz
     const auto& ch = src.channels[c];
     if (ch.sampler < 0 || static_cast<std::size_t>(ch.sampler) >= src.samplers.size())
         fail(cpath + ".sampler: index " + std::to_string(ch.sampler) + " out of range");
-    if (ch.target_node < 0) {
+    int target_node = ch.target_node;
+    std::string target_path = ch.target_path;
+    if (target_path == "pointer") {
+        const std::string pointer = animation_pointer(ch, cpath);
+        // The pointer form of node TRS and weights is a node channel.
+        if (!node_pointer(pointer, target_node, target_path)) {
+            import_pointer_channel(ctx, src, c, cpath, where, pointer, anim, sampler_index);
+            return;
+        }
+    }
+    if (target_node < 0) {
         ++skipped; // glTF allows targets defined by extensions only
         return;
     }
-    if (static_cast<std::size_t>(ch.target_node) >= scene.nodes.size())
-        fail(cpath + ".target.node: " + std::to_string(ch.target_node) + " out of range");
-    const Node& node = scene.nodes[static_cast<std::size_t>(ch.target_node)];
+    if (static_cast<std::size_t>(target_node) >= scene.nodes.size())
+        fail(cpath + ".target.node: " + std::to_string(target_node) + " out of range");
+    const Node& node = scene.nodes[static_cast<std::size_t>(target_node)];
     AnimationChannel out;
-    out.node = static_cast<std::uint32_t>(ch.target_node);
+    out.node = static_cast<std::uint32_t>(target_node);
     std::uint32_t width = 3, components = 3;
-    if (ch.target_path == "translation") {
+    if (target_path == "translation") {
         out.path = AnimationPath::Translation;
-    } else if (ch.target_path == "scale") {
+    } else if (target_path == "scale") {
         out.path = AnimationPath::Scale;
-    } else if (ch.target_path == "rotation") {
+    } else if (target_path == "rotation") {
         out.path = AnimationPath::Rotation;
         width = components = 4;
-    } else if (ch.target_path == "weights") {
+    } else if (target_path == "weights") {
         out.path = AnimationPath::Weights;
         width = static_cast<std::uint32_t>(node.weights.size());
         components = 1;
@@ -117,18 +194,9 @@ void import_channel(ImportContext& ctx, const tinygltf::Animation& src, std::siz
     if (node.has_matrix && out.path != AnimationPath::Weights)
         fail(cpath + ": animates nodes[" + std::to_string(out.node) +
              "], which has a matrix (glTF forbids animating it)");
-    int& si = sampler_index[static_cast<std::size_t>(ch.sampler)];
-    const std::string spath = where + ".samplers[" + std::to_string(ch.sampler) + "]";
-    if (si < 0) {
-        anim.samplers.push_back(read_sampler(
-            ctx, src.samplers[static_cast<std::size_t>(ch.sampler)], width, components, spath));
-        if (out.path == AnimationPath::Rotation)
-            check_rotation_keys(ctx, anim.samplers.back(), spath);
-        si = static_cast<int>(anim.samplers.size() - 1);
-    } else if (anim.samplers[static_cast<std::size_t>(si)].width != width) {
-        fail(cpath + ": shares " + spath + " with a channel of another value size");
-    }
-    out.sampler = static_cast<std::uint32_t>(si);
+    out.sampler =
+        channel_sampler(ctx, src, ch.sampler, width, components,
+                        out.path == AnimationPath::Rotation, cpath, where, anim, sampler_index);
     out.source = static_cast<std::uint32_t>(c);
     out.source_sampler = static_cast<std::uint32_t>(ch.sampler);
     anim.channels.push_back(out);

@@ -221,7 +221,7 @@ DracoCounts check_declared_counts(const tinygltf::Model& model, const tinygltf::
 
 void decode_primitive(tinygltf::Model& model, tinygltf::Primitive& prim,
                       const std::string& prim_path, DecodedDracoPrimitive& out) {
-    const std::string where = prim_path + "." + kCodec;
+    const std::string where = prim_path + ".extensions." + kCodec;
     const tinygltf::Value& ext = prim.extensions.at(kCodec);
     if (ext.Has(kDracoIndicesKey)) prim.indices = ext.Get(kDracoIndicesKey).GetNumberAsInt();
     if (!ext.Has("bufferView") || !ext.Get("bufferView").IsNumber())
@@ -349,10 +349,18 @@ std::vector<DecodedDracoPrimitive> decode_draco_primitives(tinygltf::Model& mode
         for (std::size_t p = 0; p < model.meshes[m].primitives.size(); ++p) {
             auto& prim = model.meshes[m].primitives[p];
             if (!prim.extensions.count(kCodec)) continue;
-            DecodedDracoPrimitive d{std::uint32_t(m), std::uint32_t(p), {}, {}, {}};
-            decode_primitive(
-                model, prim,
-                "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]", d);
+            DecodedDracoPrimitive d{std::uint32_t(m), std::uint32_t(p), {}, {}, {}, {}};
+            try {
+                decode_primitive(
+                    model, prim,
+                    "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]", d);
+            } catch (const ImportError& e) {
+                // The primitive is skipped by name; the file's other primitives load.
+                // Its accessors keep no data (they were never pointed at decoded bytes,
+                // or only some were): nothing reads them once the primitive is gone.
+                d.failed = e.what();
+                d.range_checked.clear();
+            }
             decoded.push_back(std::move(d));
         }
     return decoded;
@@ -361,7 +369,8 @@ std::vector<DecodedDracoPrimitive> decode_draco_primitives(tinygltf::Model& mode
 void attach_draco_compression(std::span<const DecodedDracoPrimitive> decoded, Scene& scene) {
     for (const auto& d : decoded)
         for (PrimitiveInfo& info : scene.primitives)
-            if (info.mesh == d.mesh && info.primitive == d.primitive) info.compression = d.stats;
+            if (d.failed.empty() && info.mesh == d.mesh && info.primitive == d.primitive)
+                info.compression = d.stats;
 }
 
 } // namespace sherpa::detail

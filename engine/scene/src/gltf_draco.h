@@ -27,12 +27,16 @@ struct DecodedDracoPrimitive {
     // What the file contradicts but can still be drawn (a mode other than TRIANGLES,
     // missing indices over out-of-order faces): warnings naming the JSON path.
     std::vector<std::string> warnings;
+    // Why the primitive could not be decoded (it is skipped), or empty.
+    std::string failed;
 };
 
-// Decodes every Draco-compressed primitive of `model` in place. Throws ImportError
-// naming the primitive: a stream that does not decode (truncated, corrupt), an
-// attribute id the stream lacks, or an accessor whose count, type or min/max
-// disagrees with what Draco produced.
+// Decodes every Draco-compressed primitive of `model` in place. A primitive that
+// cannot be decoded has `failed` set, naming the primitive's extension path and the
+// problem: a stream that does not decode (truncated, corrupt) or declares more than
+// its accessors or the documented limits allow, an attribute id the stream lacks, or
+// an accessor whose count, type or min/max disagrees with what Draco produced. The
+// importer skips it and loads the rest.
 std::vector<DecodedDracoPrimitive> decode_draco_primitives(tinygltf::Model& model);
 
 // Sets PrimitiveInfo::compression of each decoded primitive.

@@ -10,18 +10,25 @@ namespace sherpa {
 namespace {
 
 // The one table: flipping an extension to supported is one line here.
-constexpr std::array<std::string_view, 14> kSupported{
+constexpr std::array<std::string_view, 21> kSupported{
     "EXT_mesh_gpu_instancing",    // one engine instance per row (gltf_instancing.cpp)
     "EXT_meshopt_compression",    // through Debian's meshoptimizer
     "EXT_texture_webp",           // through OpenImageIO
     "KHR_draco_mesh_compression", // through Debian's Draco
     "KHR_meshopt_compression",    // where its bitstream version is one meshoptimizer decodes
+    "KHR_animation_pointer", // material, texture transform, light, camera and visibility channels
     "KHR_lights_punctual",
     "KHR_materials_emissive_strength",
-    "KHR_materials_ior",      // F0 from the ior (brdf.glsl's dielectric_f0)
-    "KHR_materials_specular", // F0 colour and F90 weight (brdf.glsl)
+    "KHR_materials_ior",                  // F0 from the ior (brdf.glsl's dielectric_f0)
+    "KHR_materials_specular",             // F0 colour and F90 weight (brdf.glsl)
+    "KHR_materials_transmission",         // refraction (TransmissionPass; the path tracer's BTDF)
+    "KHR_materials_volume",               // thickness, Beer-Lambert attenuation (transmission.glsl)
+    "KHR_materials_dispersion",           // per-channel ior (refraction.glsl; the path tracer)
+    "KHR_materials_diffuse_transmission", // lit from behind (diffuse_transmission.glsl)
     "KHR_materials_unlit",
+    "KHR_materials_variants", // a switch of the primitives' materials (material_variants.h)
     "KHR_materials_pbrSpecularGlossiness", // shaded by its own definition (forward.frag)
+    "KHR_node_visibility",                 // the renderer's node visibility (animatable)
     "KHR_mesh_quantization",               // every accessor component type is decoded
     "KHR_texture_basisu",                  // KTX2 (ETC1S / UASTC), engine/texture's transcoder
     "KHR_texture_transform",

@@ -350,6 +350,8 @@ void import_meshes(ImportContext& ctx) {
                               motions = scene.motions.size(),
                               slots = scene.mesh_primitives[m].size();
             try {
+                if (const auto it = ctx.undecodable.find({m, p}); it != ctx.undecodable.end())
+                    fail(it->second);
                 import_primitive(ctx, m, p);
             } catch (const ImportError& e) {
                 scene.counts = counts;

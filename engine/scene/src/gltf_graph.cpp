@@ -141,6 +141,15 @@ void import_nodes_and_scenes(ImportContext& ctx) {
                           ? -1
                           : src.camera;
         node.skin = src.skin;
+        if (const auto it = src.extensions.find("KHR_node_visibility");
+            it != src.extensions.end() && it->second.Has("visible")) {
+            const tinygltf::Value& v = it->second.Get("visible");
+            if (v.IsBool())
+                node.visible = v.Get<bool>();
+            else
+                ctx.warn(where + ".extensions.KHR_node_visibility.visible: not a boolean; the "
+                                 "node is shown");
+        }
         if (const auto it = src.extensions.find("KHR_lights_punctual");
             it != src.extensions.end()) {
             const auto& v = it->second;

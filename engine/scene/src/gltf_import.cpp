@@ -141,7 +141,9 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         return std::move(result);
     };
     std::string khronos_code;
-    if (problem = detail::parse_gltf_document(bytes, root, &khronos_code); !problem.empty()) {
+    detail::DocumentOrder order;
+    if (problem = detail::parse_gltf_document(bytes, root, &khronos_code, &order);
+        !problem.empty()) {
         if (!khronos_code.empty()) // the Khronos validator's name for it, too
             report.messages.push_back({khronos_code, problem, "", Severity::Error});
         return refuse(problem);
@@ -150,11 +152,13 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
     bool edited = detail::normalize_integers(root); // "count": 3.0 is an integer in glTF
     std::optional<detail::DocumentValidator> validator;
     const std::string base_dir = std::filesystem::path(path).parent_path().string();
-    validator.emplace(root, bytes, is_glb, report, base_dir.empty() ? "." : base_dir);
+    validator.emplace(root, bytes, is_glb, report, base_dir.empty() ? "." : base_dir, &order);
     if (problem = detail::check_gltf_document(root); !problem.empty()) return refuse(problem);
     if (problem = detail::check_gltf_properties(root); !problem.empty()) return refuse(problem);
     edited |= detail::replace_unreadable_buffers(root, is_glb, validator->glb_has_bin(), report);
     if (edited) bytes = detail::with_json(root, bytes, is_glb);
+    if (const auto marked = detail::with_channel_nodes(root)) // KHR_animation_pointer
+        bytes = detail::with_json(*marked, bytes, is_glb);
     // Compressed files hold what tinygltf would refuse (see gltf_prepare.h).
     if (auto rewritten = detail::prepared_for_tinygltf(bytes); !rewritten.empty())
         bytes = std::move(rewritten);
@@ -185,7 +189,10 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
             if (const auto i = std::strtoull(m.pointer.c_str() + 9, nullptr, 10);
                 i < buffers.size())
                 buffers[i] = {};
-    validator->check_data(buffers);
+    std::vector<std::span<const std::uint8_t>> images; // encoded bytes from URIs
+    for (const auto& image : model.images)
+        images.emplace_back(image.image.data(), image.image.size());
+    validator->check_data(buffers, images);
     validator.reset();
     auto scene = std::make_unique<Scene>();
     scene->source = path;
@@ -204,6 +211,8 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         const auto decoded_draco = detail::decode_draco_primitives(model);
         detail::ImportContext ctx{model, *scene};
         for (const auto& d : decoded_draco) {
+            if (!d.failed.empty())
+                ctx.undecodable.emplace(std::pair{d.mesh, d.primitive}, d.failed);
             ctx.range_checked.insert(d.range_checked.begin(), d.range_checked.end());
             for (const std::string& w : d.warnings) ctx.warn(w);
         }
@@ -211,6 +220,7 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         detail::import_samplers_images_textures(ctx);
         detail::import_materials(ctx);
         detail::import_meshes(ctx);
+        detail::import_material_variants(ctx);
         detail::attach_meshopt_compression(model, decoded_views, *scene);
         detail::attach_draco_compression(decoded_draco, *scene);
         if (!detail::end_stage(options, LoadStage::Geometry)) return detail::cancelled_result();

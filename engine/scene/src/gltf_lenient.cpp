@@ -134,6 +134,25 @@ std::uint32_t le32(std::span<const std::uint8_t> b, std::size_t at) {
 
 } // namespace
 
+std::optional<json> with_channel_nodes(const json& root) {
+    auto nodeless = [](const json& channel) {
+        return channel.is_object() && channel.contains("target") && channel["target"].is_object() &&
+               !channel["target"].contains("node");
+    };
+    bool any = false;
+    if (root.contains("animations") && root["animations"].is_array())
+        for (const json& a : root["animations"])
+            if (a.is_object() && a.contains("channels") && a["channels"].is_array())
+                for (const json& c : a["channels"]) any = any || nodeless(c);
+    if (!any) return std::nullopt;
+    json out = root;
+    for (json& a : out["animations"])
+        if (a.is_object() && a.contains("channels") && a["channels"].is_array())
+            for (json& c : a["channels"])
+                if (nodeless(c)) c["target"]["node"] = -1;
+    return out;
+}
+
 bool normalize_integers(json& root) {
     return walk(root, 0);
 }

@@ -8,6 +8,7 @@
 //   is not byteLength) becomes an empty placeholder: whatever reads it is skipped,
 //   the rest of the file loads.
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -24,6 +25,13 @@ bool normalize_integers(nlohmann::json& root);
 // message per buffer to `report`; true when any was replaced.
 bool replace_unreadable_buffers(nlohmann::json& root, bool glb, bool glb_has_bin,
                                 ValidationReport& report);
+
+// tinygltf drops an animation channel whose target has no "node" (glTF allows it:
+// KHR_animation_pointer and other extensions define the target), which would also shift
+// the indices of the channels after it. A copy of `root` where such targets carry
+// "node": -1 (which tinygltf reads, and the importer treats as no node), or nothing
+// when the file has none. Not a change of meaning, so no message.
+std::optional<nlohmann::json> with_channel_nodes(const nlohmann::json& root);
 
 // The file's bytes with `root` as its JSON (a .glb keeps its BIN chunk).
 std::vector<std::uint8_t> with_json(const nlohmann::json& root, std::span<const std::uint8_t> file,

@@ -1,5 +1,6 @@
 // glTF samplers, images, textures and materials -> engine records.
 #include "accessor_reader.h"
+#include "gltf_material_values.h"
 #include "import_context.h"
 #include "import_error.h"
 
@@ -55,6 +56,8 @@ TextureSlot read_slot(ImportContext& ctx, int index, int tex_coord,
     return slot;
 }
 
+} // namespace
+
 // A textureInfo inside an extension object (tinygltf leaves those as JSON values).
 TextureSlot read_value_slot(ImportContext& ctx, const tinygltf::Value& info,
                             const std::string& where, TextureRole role) {
@@ -83,6 +86,8 @@ glm::vec4 vec_or(const tinygltf::Value& obj, const char* key, glm::vec4 fallback
     }
     return out;
 }
+
+namespace {
 
 // KHR_materials_pbrSpecularGlossiness: its diffuse replaces the base colour; the
 // extension's defaults are those of its schema (all ones).
@@ -174,6 +179,8 @@ AlphaMode parse_alpha_mode(const std::string& s, const std::string& where) {
 // normalTexture.scale multiplies the sampled normal's XY before normalisation: past
 // about 1000 the result no longer changes, while 1e30 overflows to a black surface.
 constexpr float kMaxNormalScale = 1000.0f;
+// Emitted radiance beyond this is warned about (the path tracer's sample cap).
+constexpr float kMaxEmissiveRadiance = 1e20f;
 
 // Factors JSON can state but shading cannot use (1e39 reads as infinity, a huge
 // normal scale overflows): reset or clamped, with a warning naming the property.
@@ -196,6 +203,15 @@ void check_factors(ImportContext& ctx, MaterialInstance& m, const std::string& w
           "occlusionTexture.strength");
     reset(!std::isfinite(m.emissive_strength), m.emissive_strength, defaults.emissive_strength,
           "extensions.KHR_materials_emissive_strength.emissiveStrength");
+    // Kept as written, but said: no renderer can sum radiance this large (the path
+    // tracer caps a sample's luminance at kMaxEmissiveRadiance and samples no light
+    // beyond it).
+    const float peak = std::max({m.emissive_factor.r, m.emissive_factor.g, m.emissive_factor.b});
+    if (peak > 0.0f && !(peak * m.emissive_strength <= kMaxEmissiveRadiance))
+        ctx.warn(where + ".extensions.KHR_materials_emissive_strength.emissiveStrength: " +
+                 number_text(m.emissive_strength) + " makes emission beyond " +
+                 number_text(kMaxEmissiveRadiance) +
+                 ", more than a renderer can sum; the path tracer caps it there");
     if (!std::isfinite(m.normal_scale) || std::abs(m.normal_scale) > kMaxNormalScale) {
         const float clamped = std::isnan(m.normal_scale)
                                   ? 1.0f
@@ -353,11 +369,11 @@ void import_material(ImportContext& ctx, std::size_t i) {
         m.occlusion_strength = static_cast<float>(src.occlusionTexture.strength);
         m.alpha_cutoff = static_cast<float>(src.alphaCutoff);
         m.alpha_mode = parse_alpha_mode(src.alphaMode, where);
-        check_factors(ctx, m, where);
         m.double_sided = src.doubleSided;
         if (const auto it = src.extensions.find("KHR_materials_emissive_strength");
             it != src.extensions.end())
             m.emissive_strength = number_or(it->second, "emissiveStrength", 1.0f);
+        check_factors(ctx, m, where); // after every factor it checks is read
         m.unlit = src.extensions.count("KHR_materials_unlit") != 0;
         for (const auto& entry : src.extensions) m.extensions.push_back(entry.first); // sorted
         m.base_color = read_slot(ctx, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
@@ -383,6 +399,7 @@ void import_material(ImportContext& ctx, std::size_t i) {
         if (const auto it = src.extensions.find("KHR_materials_specular");
             it != src.extensions.end())
             m.specular = read_specular(ctx, it->second, where);
+        read_volume_extensions(ctx, src.extensions, m, where);
         ctx.scene.materials.push_back(std::move(m));
     }
 }

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <optional>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -71,6 +72,80 @@ std::string glb_json(Bytes b, Bytes& json_bytes) {
     json_bytes = b.subspan(20, length);
     return {};
 }
+
+// nlohmann's own DOM builder (what json::parse runs), which also notes the document
+// order of the keys DocumentOrder keeps: one parse gives both. It follows the path
+// /meshes/m/primitives/p/attributes through the first levels only (a flag and a
+// counter per level), so the cost per token is a few compares.
+class OrderRecordingParser : public nlohmann::detail::json_sax_dom_parser<json> {
+    using Base = nlohmann::detail::json_sax_dom_parser<json>;
+
+public:
+    OrderRecordingParser(json& out, DocumentOrder* order) : Base(out), order_(order) {}
+
+    bool null() { return element(), Base::null(); }
+    bool boolean(bool x) { return element(), Base::boolean(x); }
+    bool number_integer(number_integer_t x) { return element(), Base::number_integer(x); }
+    bool number_unsigned(number_unsigned_t x) { return element(), Base::number_unsigned(x); }
+    bool number_float(number_float_t x, const string_t& s) {
+        return element(), Base::number_float(x, s);
+    }
+    bool string(string_t& x) { return element(), Base::string(x); }
+    bool binary(binary_t& x) { return element(), Base::binary(x); }
+    bool start_object(std::size_t n) { return open(false), Base::start_object(n); }
+    bool start_array(std::size_t n) { return open(true), Base::start_array(n); }
+    bool end_object() { return close(), Base::end_object(); }
+    bool end_array() { return close(), Base::end_array(); }
+    bool key(string_t& k) {
+        if (order_ && k.size() == 10 && k == "extensions") order_->has_extensions = true;
+        if (order_ && depth_ < kLevels && on_path_[depth_]) {
+            if (depth_ == 6)
+                order_->attributes[count_[2] - 1][count_[4] - 1].push_back(k);
+            else
+                matched_[depth_] = k == kPath[depth_];
+        }
+        return Base::key(k);
+    }
+
+private:
+    // Depth (open containers) -> the key its object must have for the path to go on:
+    // the root's "meshes", a mesh's "primitives", a primitive's "attributes".
+    static constexpr std::size_t kLevels = 7;
+    static constexpr std::string_view kPath[kLevels] = {"", "meshes",     "", "primitives",
+                                                        "", "attributes", ""};
+    void element() {
+        if (depth_ < kLevels) ++count_[depth_]; // counts array elements (objects ignore it)
+    }
+    void open(bool array) {
+        element();
+        ++depth_;
+        if (!order_ || depth_ >= kLevels) return;
+        const std::size_t d = depth_;
+        // Levels 2 and 4 are arrays (meshes, primitives), the others objects; levels
+        // 2, 4 and 6 are the values of the keys kPath names one level up.
+        const bool want_array = d == 2 || d == 4;
+        const bool keyed = d % 2 == 0;
+        on_path_[d] =
+            array == want_array && (d == 1 || (on_path_[d - 1] && (!keyed || matched_[d - 1])));
+        matched_[d] = false;
+        count_[d] = 0;
+        if (d == 6 && on_path_[d]) {
+            auto& meshes = order_->attributes;
+            if (meshes.size() < count_[2]) meshes.resize(count_[2]);
+            auto& prims = meshes[count_[2] - 1];
+            if (prims.size() < count_[4]) prims.resize(count_[4]);
+        }
+    }
+    void close() {
+        if (depth_ < kLevels) on_path_[depth_] = false;
+        --depth_;
+    }
+
+    DocumentOrder* order_;
+    std::size_t depth_ = 0;
+    bool on_path_[kLevels] = {}, matched_[kLevels] = {};
+    std::size_t count_[kLevels] = {};
+};
 
 std::string check_depth(Bytes b) {
     const std::size_t at = json_depth_exceeded_at(b, kMaxJsonDepth);
@@ -236,7 +311,7 @@ std::string check_gltf_properties(const nlohmann::json& root) {
 }
 
 std::string parse_gltf_document(std::span<const std::uint8_t> bytes, nlohmann::json& root,
-                                std::string* khronos_code) {
+                                std::string* khronos_code, DocumentOrder* order) {
     if (bytes.empty()) return "file is empty";
     Bytes text = bytes;
     if (starts_with(bytes, "glTF")) {
@@ -254,7 +329,8 @@ std::string parse_gltf_document(std::span<const std::uint8_t> bytes, nlohmann::j
     }
     if (std::string e = check_depth(text); !e.empty()) return e;
     try {
-        root = json::parse(text.begin(), text.end());
+        OrderRecordingParser sax(root, order);
+        json::sax_parse(text.begin(), text.end(), &sax);
     } catch (const json::parse_error& e) {
         if (khronos_code) *khronos_code = "INVALID_JSON";
         return "not valid JSON: parse error at byte " + std::to_string(e.byte) +

@@ -86,6 +86,19 @@ std::vector<std::string> image_slot_uses(const Scene& scene, std::int32_t image)
                             "KHR_materials_specular.specularColorTexture"}})
                 if (reads_image(scene, *slot, image))
                     names += (names.empty() ? "" : ", ") + std::string(name);
+        // The transmission family's slots.
+        const TextureSlot none;
+        for (const auto& [slot, name] :
+             {std::pair{mat.transmission ? &mat.transmission->texture : &none,
+                        "KHR_materials_transmission.transmissionTexture"},
+              std::pair{mat.volume ? &mat.volume->thickness : &none,
+                        "KHR_materials_volume.thicknessTexture"},
+              std::pair{mat.diffuse_transmission ? &mat.diffuse_transmission->texture : &none,
+                        "KHR_materials_diffuse_transmission.diffuseTransmissionTexture"},
+              std::pair{mat.diffuse_transmission ? &mat.diffuse_transmission->color : &none,
+                        "KHR_materials_diffuse_transmission.diffuseTransmissionColorTexture"}})
+            if (slot->present() && reads_image(scene, *slot, image))
+                names += (names.empty() ? "" : ", ") + std::string(name);
         if (names.empty()) continue;
         const std::string who =
             mat.name.empty() ? "material " + std::to_string(m) : "material '" + mat.name + "'";

@@ -1,5 +1,6 @@
 #pragma once
 // Internal: state shared by the importer stages while one glTF file is converted.
+#include <map>
 #include <set>
 #include <string>
 #include <string_view>
@@ -19,6 +20,9 @@ struct ImportContext {
     Scene& scene;
     std::int32_t default_material = -1; // created on first use
     std::set<int> range_checked;        // accessors whose declared min/max were checked
+    // Primitives a decoder could not read, (mesh, primitive) -> why: import_meshes skips
+    // them by name.
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::string> undecodable;
     // Lights and cameras skipped with a warning (an odd object does not refuse the
     // whole file): their records stay for the indices, nodes do not place them.
     std::vector<std::uint8_t> light_skipped, camera_skipped;
@@ -48,6 +52,8 @@ struct ImportContext {
 void import_samplers_images_textures(ImportContext& ctx);
 void import_materials(ImportContext& ctx);
 void import_meshes(ImportContext& ctx);
+// KHR_materials_variants: the root's names and each primitive's mappings (gltf_variants.cpp).
+void import_material_variants(ImportContext& ctx);
 void import_lights_cameras(ImportContext& ctx);
 void import_nodes_and_scenes(ImportContext& ctx);
 // EXT_mesh_gpu_instancing rows of each node (after nodes and skins; gltf_instancing.cpp).

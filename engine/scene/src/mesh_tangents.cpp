@@ -21,6 +21,18 @@ std::size_t attribute_slot(VertexAttribute a) {
     return static_cast<std::size_t>(a);
 }
 
+// The material whose normal texture decides the mesh's tangents: its own, else the
+// first KHR_materials_variants material with one (a switch must find tangents).
+const MaterialInstance* normal_mapped_material(const Scene& scene, std::uint32_t mesh) {
+    const MaterialInstance* first = nullptr;
+    for (std::uint32_t m : possible_materials(scene, mesh)) {
+        if (m >= scene.materials.size()) continue;
+        if (!first) first = &scene.materials[m];
+        if (scene.materials[m].normal.present()) return &scene.materials[m];
+    }
+    return first;
+}
+
 } // namespace
 
 std::uint32_t apply_corner_tangents(Mesh& mesh, std::span<const glm::vec4> corner_tangents) {
@@ -140,9 +152,10 @@ SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptio
     // scene without normal textures (most files) ~30-90 ms of wall time on a loaded
     // machine (its threads wait to be scheduled), for nothing to do.
     std::size_t corners_to_generate = 0, meshes_to_generate = 0;
-    for (const Mesh& mesh : scene.meshes) {
-        const bool normal_texture = mesh.material_id < scene.materials.size() &&
-                                    scene.materials[mesh.material_id].normal.present();
+    for (std::uint32_t id = 0; id < scene.meshes.size(); ++id) {
+        const Mesh& mesh = scene.meshes[id];
+        const MaterialInstance* material = normal_mapped_material(scene, id);
+        const bool normal_texture = material && material->normal.present();
         const bool authored = mesh.provenance_of(VertexAttribute::Tangent) == Provenance::Authored;
         if (mesh.topology() == Topology::Triangles &&
             (options.regenerate || (!authored && normal_texture))) {
@@ -174,9 +187,8 @@ SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptio
             } done{options, meshes_done, static_cast<std::size_t>(mesh_count)};
             const bool authored =
                 mesh.provenance_of(VertexAttribute::Tangent) == Provenance::Authored;
-            const MaterialInstance* material = mesh.material_id < scene.materials.size()
-                                                   ? &scene.materials[mesh.material_id]
-                                                   : nullptr;
+            const MaterialInstance* material =
+                normal_mapped_material(scene, static_cast<std::uint32_t>(i));
             const bool normal_texture = material && material->normal.present();
             if (mesh.topology() != Topology::Triangles) {
                 out.reason = "lines and points have no surface: no tangents";

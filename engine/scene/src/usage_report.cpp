@@ -16,12 +16,19 @@ std::array<bool, kVertexAttributeCount> attributes_used(const MaterialInstance& 
     // a texture read without its TEXCOORD stream would sample one texel everywhere.
     const TextureSlot none;
     const bool specular = material.specular && !material.specular_glossiness;
+    const bool shaded = !material.unlit && !material.specular_glossiness;
     for (const TextureSlot* slot :
          {&material.base_color, &material.metallic_roughness, &material.normal, &material.occlusion,
           &material.emissive,
           material.specular_glossiness ? &material.specular_glossiness->specular_glossiness : &none,
           specular ? &material.specular->specular : &none,
-          specular ? &material.specular->specular_color : &none}) {
+          specular ? &material.specular->specular_color : &none,
+          // The transmission family (drawn on the same materials as specular).
+          shaded && material.transmission ? &material.transmission->texture : &none,
+          shaded && material.volume ? &material.volume->thickness : &none,
+          shaded && material.diffuse_transmission ? &material.diffuse_transmission->texture : &none,
+          shaded && material.diffuse_transmission ? &material.diffuse_transmission->color
+                                                  : &none}) {
         if (!slot->present()) continue;
         if (material.unlit && slot != &material.base_color)
             continue; // unlit reads base colour only
@@ -39,6 +46,17 @@ std::array<bool, kVertexAttributeCount> attributes_used(const MaterialInstance& 
     return used;
 }
 
+std::array<bool, kVertexAttributeCount> mesh_attributes_used(const Scene& scene,
+                                                             std::uint32_t mesh) {
+    std::array<bool, kVertexAttributeCount> used{};
+    for (std::uint32_t m : possible_materials(scene, mesh)) {
+        if (m >= scene.materials.size()) continue;
+        const auto one = attributes_used(scene.materials[m], scene.meshes[mesh]);
+        for (std::size_t i = 0; i < used.size(); ++i) used[i] = used[i] || one[i];
+    }
+    return used;
+}
+
 UsageReport build_usage_report(const Scene& scene) {
     UsageReport report;
     std::vector<std::uint32_t> instance_count(scene.meshes.size(), 0);
@@ -52,7 +70,7 @@ UsageReport build_usage_report(const Scene& scene) {
         u.material_id = mesh.material_id;
         u.instances = instance_count[id];
         u.vertex_count = mesh.vertices.size();
-        u.used = attributes_used(scene.materials[mesh.material_id], mesh);
+        u.used = mesh_attributes_used(scene, id);
         for (VertexAttribute a : kAllVertexAttributes) {
             const auto i = static_cast<std::size_t>(a);
             u.present[i] = mesh.provenance_of(a) != Provenance::Defaulted;

@@ -104,6 +104,55 @@ std::uint32_t le32(std::span<const std::uint8_t> b, std::size_t at) {
 
 } // namespace
 
+namespace {
+
+struct View {
+    std::int64_t buffer = -1;
+    std::uint64_t offset = 0, length = 0, stride = 0;
+    bool fits = false, compressed = false;
+};
+
+// Where a sparse accessor's indices and values lie (`element`: one value's bytes), and
+// ACCESSOR_TOO_LONG for either that does not fit its view.
+void sparse_layout(Validation& v, const Json& sparse, const std::vector<View>& views,
+                   const std::string& where, std::uint64_t element, AccessorLayout& out) {
+    const std::int64_t count = int_or(sparse, "count", 0);
+    if (count <= 0) return;
+    AccessorLayout::Sparse& sd = out.sparse_data;
+    sd.overrides = static_cast<std::uint64_t>(count);
+    for (const char* part : {"indices", "values"}) {
+        const bool indices = part[0] == 'i';
+        const Json& pj = Validation::member(sparse, part);
+        const std::int64_t vi = ref(v, pj, "bufferView", "bufferViews");
+        const std::int64_t ct = int_or(pj, "componentType", 0);
+        const std::uint64_t size =
+            indices ? (ct == 5121 || ct == 5123 || ct == 5125 ? component_size(ct) : 0) : element;
+        if (vi < 0 || size == 0) continue;
+        const View& view = views[static_cast<std::size_t>(vi)];
+        const std::uint64_t offset =
+            static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(pj, "byteOffset", 0), 0));
+        const auto length = checked_mul(size, sd.overrides);
+        const auto end = length ? checked_add(*length, offset) : std::nullopt;
+        if (!end || *end > view.length) {
+            v.add("ACCESSOR_TOO_LONG", Severity::Error, ptr(ptr(where, "sparse"), part),
+                  "Accessor (offset: " + std::to_string(offset) +
+                      ", length: " + (length ? std::to_string(*length) : std::string("too large")) +
+                      ") does not fit referenced bufferView [" + std::to_string(vi) + "] length " +
+                      std::to_string(view.length) + ".");
+            if (!length) continue;
+        }
+        // Read where the buffer holds the bytes, past the view too (as the Khronos
+        // validator does): the data pass checks the range against the loaded buffer.
+        if (view.compressed || view.buffer < 0) continue;
+        (indices ? sd.indices_readable : sd.values_readable) = true;
+        (indices ? sd.indices_buffer : sd.values_buffer) = static_cast<std::size_t>(view.buffer);
+        (indices ? sd.indices_offset : sd.values_offset) = view.offset + offset;
+        if (indices) sd.index_type = static_cast<int>(ct);
+    }
+}
+
+} // namespace
+
 void validate_buffers(Validation& v) {
     const Json& buffers = v.array("buffers");
     std::vector<std::uint64_t> buffer_length(buffers.size(), 0);
@@ -126,11 +175,6 @@ void validate_buffers(Validation& v) {
                   "Buffer refers to an unresolved GLB binary chunk.");
     }
 
-    struct View {
-        std::int64_t buffer = -1;
-        std::uint64_t offset = 0, length = 0, stride = 0;
-        bool fits = false, compressed = false;
-    };
     const Json& views_json = v.array("bufferViews");
     std::vector<View> views(views_json.size());
     v.view_roles.assign(views_json.size(), ViewRole::None);
@@ -229,7 +273,19 @@ void validate_buffers(Validation& v) {
             v.add("ACCESSOR_OFFSET_ALIGNMENT", Severity::Error, ptr(where, "byteOffset"),
                   "Offset " + std::to_string(offset) +
                       " is not a multiple of componentType length " + std::to_string(csize) + ".");
-        if (vi < 0 || !csize || !comps || count <= 0) continue;
+        if (out.sparse && csize && comps && count > 0)
+            sparse_layout(v, a["sparse"], views, where, std::uint64_t{csize} * comps, out);
+        if (vi < 0 || !csize || !comps || count <= 0) {
+            if (out.sparse && vi < 0 && csize && comps && count > 0) {
+                out.sparse_data.zero_base = true;
+                out.component_type = static_cast<int>(ct);
+                out.components = comps;
+                out.count = static_cast<std::uint64_t>(count);
+                out.normalized = normalized;
+                out.stride = std::uint64_t{csize} * comps;
+            }
+            continue;
+        }
         const View& view = views[static_cast<std::size_t>(vi)];
         if (csize && view.offset < (std::uint64_t{1} << 53) &&
             (view.offset + static_cast<std::uint64_t>(offset)) % csize)
@@ -254,9 +310,12 @@ void validate_buffers(Validation& v) {
                       ", length: " + (end ? std::to_string(*end) : std::string("too large")) +
                       ") does not fit referenced bufferView [" + std::to_string(vi) + "] length " +
                       std::to_string(view.length) + ".");
-            continue;
+            // Its values are still read where the buffer holds them (the Khronos
+            // validator reads them too); the data pass checks the range.
+            if (!total) continue;
         }
-        out.readable = view.fits && !view.compressed && (view.offset + offset) % csize == 0 &&
+        out.readable = view.buffer >= 0 && !view.compressed &&
+                       (view.offset + offset) % csize == 0 &&
                        (!view.stride || (view.stride >= element && view.stride % 4 == 0));
         out.buffer = static_cast<std::size_t>(view.buffer);
         out.offset = view.offset + static_cast<std::uint64_t>(offset);

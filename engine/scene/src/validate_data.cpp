@@ -5,6 +5,8 @@
 #include "validate_internal.h"
 
 #include "checked_math.h"
+#include "validate_kernels.h"
+#include "validate_reader.h"
 
 #include <cmath>
 #include <cstring>
@@ -15,89 +17,27 @@
 namespace sherpa::detail {
 namespace {
 
-using Buffers = std::span<const std::span<const std::uint8_t>>;
-
-// One accessor's values, read element by element (sparse overrides applied).
-class Reader {
-public:
-    Reader(const AccessorLayout& a, Buffers buffers) : a_(a) {
-        if (!a.readable || a.buffer >= buffers.size()) return;
-        const auto& b = buffers[a.buffer];
-        const auto last = checked_mul(a.stride, a.count - 1);
-        const auto end =
-            last ? checked_add(*last, std::size_t{component_size(a.component_type)} * a.components)
-                 : std::nullopt;
-        if (!end || !range_fits(a.offset, *end, b.size())) return;
-        base_ = b.data() + a.offset;
-        ok_ = true;
-    }
-    bool ok() const { return ok_; }
-    std::uint64_t count() const { return a_.count; }
-    std::uint32_t components() const { return a_.components; }
-    // Raw component value (integers as integers).
-    double raw(std::uint64_t i, std::uint32_t c) const {
-        const std::uint8_t* p = base_ + i * a_.stride + c * component_size(a_.component_type);
-        switch (a_.component_type) {
-        case 5120:
-            return static_cast<std::int8_t>(*p);
-        case 5121:
-            return *p;
-        case 5122: {
-            std::int16_t x;
-            std::memcpy(&x, p, 2);
-            return x;
-        }
-        case 5123: {
-            std::uint16_t x;
-            std::memcpy(&x, p, 2);
-            return x;
-        }
-        case 5125: {
-            std::uint32_t x;
-            std::memcpy(&x, p, 4);
-            return x;
-        }
-        default: {
-            float x;
-            std::memcpy(&x, p, 4);
-            return x;
-        }
-        }
-    }
-    // Value as used: normalized integers mapped to [0, 1] or [-1, 1].
-    double value(std::uint64_t i, std::uint32_t c) const {
-        const double r = raw(i, c);
-        if (!a_.normalized) return r;
-        switch (a_.component_type) {
-        case 5120:
-            return std::max(r / 127.0, -1.0);
-        case 5121:
-            return r / 255.0;
-        case 5122:
-            return std::max(r / 32767.0, -1.0);
-        case 5123:
-            return r / 65535.0;
-        default:
-            return r;
-        }
-    }
-    bool is_float() const { return a_.component_type == 5126; }
-    const std::uint8_t* base() const { return base_; }
-    std::uint64_t stride() const { return a_.stride; }
-    int component_type() const { return a_.component_type; }
-
-private:
-    const AccessorLayout& a_;
-    const std::uint8_t* base_ = nullptr;
-    bool ok_ = false;
-};
-
 // Per-component bounds of the finite values, in the component type itself (one typed
 // pass over the bytes; the data pass's hot loop). Returns the first non-finite
 // component's flat index, or UINT64_MAX.
+template <typename C, std::uint32_t N>
+bool scan_fixed(const Reader& r, std::vector<double>& lo, std::vector<double>& hi) {
+    C l[N], h[N];
+    if (!kernels::bounds<C, N>(r.base(), r.count(), r.stride(), l, h)) return false;
+    for (std::uint32_t c = 0; c < N; ++c)
+        lo[c] = static_cast<double>(l[c]), hi[c] = static_cast<double>(h[c]);
+    return true;
+}
+
 template <typename C>
 std::uint64_t scan_bounds(const Reader& r, std::vector<double>& lo, std::vector<double>& hi) {
     const std::uint32_t n = r.components();
+    // The common shapes in one typed pass; non-finite floats and other shapes below.
+    if (r.count() > 0 &&
+        ((n == 1 && scan_fixed<C, 1>(r, lo, hi)) || (n == 2 && scan_fixed<C, 2>(r, lo, hi)) ||
+         (n == 3 && scan_fixed<C, 3>(r, lo, hi)) || (n == 4 && scan_fixed<C, 4>(r, lo, hi)) ||
+         (n == 16 && scan_fixed<C, 16>(r, lo, hi))))
+        return UINT64_MAX;
     C l[16], h[16];
     for (std::uint32_t c = 0; c < n; ++c) {
         l[c] = std::numeric_limits<C>::max();
@@ -171,26 +111,31 @@ void check_min_max(Validation& v, std::size_t index, const Reader& r) {
             if (!declared[c].is_number()) continue;
             const double d = declared[c].get<double>();
             const double actual = is_min ? lo[c] : hi[c];
-            if (!std::isfinite(actual) || same(d, actual)) continue;
+            const bool mismatch = std::isfinite(actual) && !same(d, actual);
             const std::string p = ptr(ptr(where, is_min ? "min" : "max"), c);
-            v.add(is_min ? "ACCESSOR_MIN_MISMATCH" : "ACCESSOR_MAX_MISMATCH", Severity::Error, p,
-                  std::string("Declared ") + (is_min ? "minimum" : "maximum") +
-                      " value for this component (" + std::to_string(d) +
-                      ") does not match actual " + (is_min ? "minimum" : "maximum") + " (" +
-                      std::to_string(actual) + ").");
-            if (is_min ? actual < d && !same(d, actual) : actual > d && !same(d, actual)) {
+            if (mismatch)
+                v.add(is_min ? "ACCESSOR_MIN_MISMATCH" : "ACCESSOR_MAX_MISMATCH", Severity::Error,
+                      p,
+                      std::string("Declared ") + (is_min ? "minimum" : "maximum") +
+                          " value for this component (" + std::to_string(d) +
+                          ") does not match actual " + (is_min ? "minimum" : "maximum") + " (" +
+                          std::to_string(actual) + ").");
+            // Infinities are outside the bounds too (the finite bounds above leave them
+            // out), as the Khronos validator counts them.
+            if ((mismatch && (is_min ? actual < d : actual > d)) || bad != UINT64_MAX) {
                 std::uint64_t outside = 0;
                 for (std::uint64_t i = 0; i < r.count(); ++i) {
                     const double x = r.raw(i, c);
                     outside += is_min ? (x < d && !same(d, x)) : (x > d && !same(d, x));
                 }
-                v.add(
-                    is_min ? "ACCESSOR_ELEMENT_OUT_OF_MIN_BOUND"
-                           : "ACCESSOR_ELEMENT_OUT_OF_MAX_BOUND",
-                    Severity::Error, p,
-                    "Accessor contains " + std::to_string(outside) + " element(s) " +
-                        (is_min ? "less than declared minimum" : "greater than declared maximum") +
-                        " value " + std::to_string(d) + ".");
+                if (outside)
+                    v.add(is_min ? "ACCESSOR_ELEMENT_OUT_OF_MIN_BOUND"
+                                 : "ACCESSOR_ELEMENT_OUT_OF_MAX_BOUND",
+                          Severity::Error, p,
+                          "Accessor contains " + std::to_string(outside) + " element(s) " +
+                              (is_min ? "less than declared minimum"
+                                      : "greater than declared maximum") +
+                              " value " + std::to_string(d) + ".");
             }
         }
     }
@@ -201,7 +146,8 @@ double length3(const Reader& r, std::uint64_t i) {
     return std::sqrt(x * x + y * y + z * z);
 }
 
-void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers buffers) {
+void check_use(Validation& v, const AccessorUsage& u, const Reader& r,
+               const std::vector<AccessorLayout>& layouts, Buffers buffers) {
     const std::uint64_t n = r.count();
     auto once = [&](bool& said, std::string_view code, Severity s, std::string message) {
         if (said) return;
@@ -211,39 +157,45 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers b
     bool a = false, b = false, c = false;
     switch (u.use) {
     case AccessorUse::Indices: {
-        const double restart =
-            r.components() == 1 ? (v.accessors[u.accessor].component_type == 5121   ? 255.0
-                                   : v.accessors[u.accessor].component_type == 5123 ? 65535.0
-                                                                                    : 4294967295.0)
-                                : -1;
-        std::uint64_t degenerate = 0;
-        for (std::uint64_t i = 0; i < n; ++i) {
-            const double x = r.raw(i, 0);
-            if (x > static_cast<double>(u.limit) - 1)
-                once(a, "ACCESSOR_INDEX_OOB", Severity::Error,
-                     "Indices accessor element at index " + std::to_string(i) + " has value " +
-                         std::to_string(static_cast<std::uint64_t>(x)) +
-                         " that is greater than the maximum vertex index available (" +
-                         std::to_string(u.limit ? u.limit - 1 : 0) + ").");
-            if (x == restart)
-                once(b, "ACCESSOR_INDEX_PRIMITIVE_RESTART", Severity::Error,
-                     "Indices accessor contains primitive restart value at index " +
-                         std::to_string(i) + ".");
-            if (u.mode == 4 && i % 3 == 2) {
-                const double p = r.raw(i - 2, 0), q = r.raw(i - 1, 0);
-                degenerate += p == q || q == x || x == p;
-            }
-        }
-        if (degenerate)
+        const int type = v.accessors[u.accessor].component_type;
+        if (r.components() != 1 || (type != 5121 && type != 5123 && type != 5125)) break;
+        const bool triangles = u.mode == 4;
+        const kernels::IndexScan s =
+            type == 5121
+                ? kernels::indices<std::uint8_t>(r.base(), n, r.stride(), u.limit, triangles)
+            : type == 5123
+                ? kernels::indices<std::uint16_t>(r.base(), n, r.stride(), u.limit, triangles)
+                : kernels::indices<std::uint32_t>(r.base(), n, r.stride(), u.limit, triangles);
+        if (s.first_over != UINT64_MAX)
+            v.add("ACCESSOR_INDEX_OOB", Severity::Error, u.pointer,
+                  "Indices accessor element at index " + std::to_string(s.first_over) +
+                      " has value " +
+                      std::to_string(static_cast<std::uint64_t>(r.raw(s.first_over, 0))) +
+                      " that is greater than the maximum vertex index available (" +
+                      std::to_string(u.limit ? u.limit - 1 : 0) + ").");
+        if (s.first_restart != UINT64_MAX)
+            v.add("ACCESSOR_INDEX_PRIMITIVE_RESTART", Severity::Error, u.pointer,
+                  "Indices accessor contains primitive restart value at index " +
+                      std::to_string(s.first_restart) + ".");
+        if (s.degenerate)
             v.add("ACCESSOR_INDEX_TRIANGLE_DEGENERATE", Severity::Information, u.pointer,
-                  "Indices accessor contains " + std::to_string(degenerate) +
+                  "Indices accessor contains " + std::to_string(s.degenerate) +
                       " degenerate triangles (out of " + std::to_string(n / 3) + ").");
         break;
     }
     case AccessorUse::Normal:
-    case AccessorUse::Tangent:
+    case AccessorUse::Tangent: {
         if (r.components() < 3) break;
-        for (std::uint64_t i = 0; i < n; ++i) {
+        const bool sign = u.use == AccessorUse::Tangent && r.components() == 4;
+        // Float vectors (the common case) in one typed pass, to the first of each problem.
+        std::uint64_t from = 0;
+        if (r.is_float()) {
+            const kernels::UnitScan s =
+                kernels::unit_vectors(r.base(), n, r.stride(), 0.00674, sign);
+            if (s.first_non_unit == UINT64_MAX && s.first_bad_sign == UINT64_MAX) break;
+            from = std::min(s.first_non_unit, s.first_bad_sign);
+        }
+        for (std::uint64_t i = from; i < n; ++i) {
             const double len = length3(r, i);
             if (std::isfinite(len) && std::abs(len - 1) > 0.00674)
                 once(a, "ACCESSOR_VECTOR3_NON_UNIT", Severity::Error,
@@ -259,6 +211,7 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers b
             }
         }
         break;
+    }
     case AccessorUse::Color:
         if (!r.is_float()) break;
         for (std::uint64_t i = 0; i < n; ++i)
@@ -272,7 +225,7 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers b
         // Weights of the same set decide which joints count.
         std::optional<Reader> w;
         if (u.partner < v.accessors.size()) {
-            w.emplace(v.accessors[u.partner], buffers);
+            w.emplace(layouts[u.partner], buffers);
             if (!w->ok() || w->count() != n || w->components() != 4) w.reset();
         }
         const std::string wp = u.pointer.substr(0, u.pointer.rfind('/')) + "/WEIGHTS_" +
@@ -354,6 +307,19 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r, Buffers b
                          " is not of unit length: " + std::to_string(std::sqrt(len2)) + ".");
         }
         break;
+    case AccessorUse::InverseBindMatrices:
+        // The last row of each matrix is (0, 0, 0, 1): an affine transform.
+        if (r.components() != 16) break;
+        for (std::uint64_t i = 0; i < n && !a; ++i)
+            for (std::uint32_t k : {3u, 7u, 11u, 15u})
+                if (const double x = r.value(i, k); x != (k == 15 ? 1.0 : 0.0)) {
+                    once(a, "ACCESSOR_INVALID_IBM", Severity::Error,
+                         "Matrix element at index " + std::to_string(i * 16 + k) +
+                             " (component index " + std::to_string(k) +
+                             ") contains invalid value: " + std::to_string(x) + ".");
+                    break;
+                }
+        break;
     default:
         break;
     }
@@ -372,15 +338,33 @@ void validate_data(Validation& v, Buffers buffers) {
                       ") is less than the declared buffer byte length (" +
                       std::to_string(declared) + ").");
     }
-    for (std::size_t i = 0; i < v.accessors.size(); ++i) {
-        if (v.accessors[i].sparse) continue; // values are the base with overrides: not read here
-        const Reader r(v.accessors[i], buffers);
+    // Sparse accessors are read from a copy with their overrides applied, as one more
+    // buffer; the others from the file's buffers.
+    std::vector<AccessorLayout> layouts = v.accessors;
+    std::vector<std::span<const std::uint8_t>> spans(buffers.begin(), buffers.end());
+    std::vector<std::vector<std::uint8_t>> copies;
+    for (std::size_t i = 0; i < layouts.size(); ++i) {
+        if (!layouts[i].sparse) continue;
+        std::vector<std::uint8_t> values = sparse_values(v, i, buffers);
+        if (values.empty()) continue;
+        copies.push_back(std::move(values)); // its bytes stay put when `copies` grows
+        spans.emplace_back(copies.back().data(), copies.back().size());
+        AccessorLayout& l = layouts[i];
+        l.sparse = false;
+        l.readable = true;
+        l.buffer = spans.size() - 1;
+        l.offset = 0;
+        l.stride = std::uint64_t{component_size(l.component_type)} * l.components;
+    }
+    for (std::size_t i = 0; i < layouts.size(); ++i) {
+        if (layouts[i].sparse) continue; // overrides that could not be applied: not read
+        const Reader r(layouts[i], spans);
         if (r.ok()) check_min_max(v, i, r);
     }
     for (const AccessorUsage& u : v.usages) {
-        if (u.accessor >= v.accessors.size() || v.accessors[u.accessor].sparse) continue;
-        const Reader r(v.accessors[u.accessor], buffers);
-        if (r.ok()) check_use(v, u, r, buffers);
+        if (u.accessor >= layouts.size() || layouts[u.accessor].sparse) continue;
+        const Reader r(layouts[u.accessor], spans);
+        if (r.ok()) check_use(v, u, r, layouts, spans);
     }
 }
 

@@ -17,8 +17,9 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 } // namespace
 
 DocumentValidator::DocumentValidator(const Json& root, std::span<const std::uint8_t> file, bool glb,
-                                     ValidationReport& report, std::string base_dir)
-    : v_{report, root, false, false, {}, {}, {}, {}, {}, {}, {}} {
+                                     ValidationReport& report, std::string base_dir,
+                                     const DocumentOrder* order)
+    : v_{report, root, order, false, false, {}, {}, {}, {}, {}, {}, {}} {
     const auto t0 = std::chrono::steady_clock::now();
     v_.glb = glb;
     v_.base_dir = std::move(base_dir);
@@ -27,9 +28,11 @@ DocumentValidator::DocumentValidator(const Json& root, std::span<const std::uint
     report.ms += ms_since(t0);
 }
 
-void DocumentValidator::check_data(std::span<const std::span<const std::uint8_t>> buffers) {
+void DocumentValidator::check_data(std::span<const std::span<const std::uint8_t>> buffers,
+                                   std::span<const std::span<const std::uint8_t>> images) {
     const auto t0 = std::chrono::steady_clock::now();
     validate_data(v_, buffers);
+    validate_images(v_, buffers, images);
     v_.report.ms += ms_since(t0);
 }
 

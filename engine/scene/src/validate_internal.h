@@ -4,6 +4,8 @@
 // links; before tinygltf sees the file) and validate_data() over the buffers tinygltf
 // loaded (accessor values). Codes, severities and JSON pointers follow the Khronos
 // glTF-Validator (its ISSUES.md); checks of our own carry SHERPA_ codes.
+#include "gltf_validate.h"
+
 #include <sherpa/scene/validation.h>
 
 #include <cstdint>
@@ -59,7 +61,18 @@ struct AccessorLayout {
     std::uint64_t count = 0;
     bool normalized = false;
     bool has_min = false, has_max = false; // declared with the right length
-    bool sparse = false;                   // values overridden: checked only when readable
+    bool sparse = false;                   // values overridden: see `overrides`
+    // Sparse storage, when `sparse`: `overrides` elements whose indices (`index_type`)
+    // and values lie in the buffers at these absolute offsets (readable: inside them).
+    // The base is the bufferView's data, or zeros when the accessor has none.
+    struct Sparse {
+        std::uint64_t overrides = 0;
+        bool indices_readable = false, values_readable = false;
+        std::size_t indices_buffer = 0, values_buffer = 0;
+        std::uint64_t indices_offset = 0, values_offset = 0;
+        int index_type = 0;
+        bool zero_base = false; // no bufferView: the base values are zeros
+    } sparse_data;
 };
 
 // What an accessor or buffer view is first used for; a second, different use is the
@@ -79,6 +92,8 @@ enum class ViewRole : std::uint8_t { None, VertexBuffer, IndexBuffer, IBM, Image
 struct Validation {
     ValidationReport& report;
     const Json& root;
+    // Key order the parse recorded (null: the JSON's own, sorted, order).
+    const DocumentOrder* order = nullptr;
     bool glb = false;
     bool glb_has_bin = false;
     std::vector<AccessorLayout> accessors;
@@ -121,6 +136,12 @@ void validate_unused(Validation& v);     // UNUSED_OBJECT
 // the buffers' bytes as loaded; `buffers[i]` empty where buffer i could not be read.
 void validate_data(Validation& v, std::span<const std::span<const std::uint8_t>> buffers);
 
+// Image headers (format against the declared media type, PNG/JPEG streams cut short,
+// dimensions): `images[i]` the bytes of image i loaded from its URI (empty where it
+// has none or they could not be read); bufferView images are read from `buffers`.
+void validate_images(Validation& v, std::span<const std::span<const std::uint8_t>> buffers,
+                     std::span<const std::span<const std::uint8_t>> images);
+
 // Every JSON pass above, in order: what the importer calls before tinygltf parses.
 void validate_document(Validation& v);
 
@@ -133,6 +154,9 @@ std::int64_t int_or(const Json& obj, const char* key, std::int64_t fallback);
 std::int64_t ref(const Validation& v, const Json& obj, const char* key, const char* target);
 std::uint32_t components_of(std::string_view type);        // "VEC3" -> 3, 0 when unknown
 std::uint32_t component_size(std::int64_t component_type); // 5126 -> 4, 0 when unknown
+// Whether a material needs a tangent space from its primitives: a normal texture, or
+// a declared clearcoat normal or anisotropy texture.
+bool needs_tangent_space(const Validation& v, const Json& material);
 
 } // namespace sherpa::detail
 
@@ -144,8 +168,10 @@ class DocumentValidator {
 public:
     // `base_dir`: where external URIs resolve (empty: not checked).
     DocumentValidator(const Json& root, std::span<const std::uint8_t> file, bool glb,
-                      ValidationReport& report, std::string base_dir = {});
-    void check_data(std::span<const std::span<const std::uint8_t>> buffers);
+                      ValidationReport& report, std::string base_dir = {},
+                      const DocumentOrder* order = nullptr);
+    void check_data(std::span<const std::span<const std::uint8_t>> buffers,
+                    std::span<const std::span<const std::uint8_t>> images = {});
     bool glb_has_bin() const { return v_.glb_has_bin; }
 
 private:

@@ -27,7 +27,97 @@ void textures_of(const Json& j, std::vector<std::uint8_t>& used, int depth) {
     }
 }
 
+bool declared(const Validation& v, std::string_view extension) {
+    for (const Json& e : v.array("extensionsUsed"))
+        if (e.is_string() && e.get_ref<const std::string&>() == extension) return true;
+    return false;
+}
+
+// A number at obj[key] when it is in [lo, inf), else `fallback` (what the Khronos
+// validator reads for an absent or out-of-range value).
+double valid_or(const Json& obj, const char* key, double lo, double fallback) {
+    const Json& j = Validation::member(obj, key);
+    return j.is_number() && j.get<double>() >= lo ? j.get<double>() : fallback;
+}
+
+// What the material extensions say about each other and about the material, as the
+// Khronos validator reports it (their values are the schema pass's).
+void check_material_extensions(Validation& v, const Json& m, const std::string& where) {
+    const Json& ext = Validation::member(m, "extensions");
+    if (!ext.is_object()) return;
+    const std::string base = ptr(where, "extensions");
+    auto has = [&](const char* name) {
+        return Validation::member(ext, name).is_object() && declared(v, name);
+    };
+    const Json& normal = Validation::member(m, "normalTexture");
+    auto same_texcoord = [&](const Json& ext_object, const char* texture, const char* code,
+                             const char* message, const char* name) {
+        const Json& t = Validation::member(ext_object, texture);
+        if (t.is_object() && normal.is_object() &&
+            int_or(t, "texCoord", 0) != int_or(normal, "texCoord", 0))
+            v.add(code, Severity::Warning, ptr(ptr(base, name), texture), message);
+    };
+    for (const char* exclusive : {"KHR_materials_pbrSpecularGlossiness", "KHR_materials_unlit"})
+        if (has(exclusive) && ext.size() > 1)
+            v.add("MULTIPLE_EXTENSIONS", Severity::Warning, ptr(base, exclusive),
+                  "This extension may be incompatible with other extensions for the object.");
+    if (has("KHR_materials_volume")) {
+        const Json& volume = ext["KHR_materials_volume"];
+        const std::string p = ptr(base, "KHR_materials_volume");
+        if (!ext.contains("KHR_materials_transmission") &&
+            !ext.contains("KHR_materials_diffuse_transmission"))
+            v.add("KHR_MATERIALS_VOLUME_NO_TRANSMISSION", Severity::Warning, p,
+                  "The volume extension needs to be combined with an extension that allows "
+                  "light to transmit through the surface.");
+        if (Validation::member(m, "doubleSided") == true &&
+            valid_or(volume, "thicknessFactor", 0, 0) > 0)
+            v.add("KHR_MATERIALS_VOLUME_DOUBLE_SIDED", Severity::Warning, p,
+                  "The volume extension should not be used with double-sided materials.");
+    }
+    if (has("KHR_materials_dispersion") && !ext.contains("KHR_materials_volume"))
+        v.add("KHR_MATERIALS_DISPERSION_NO_VOLUME", Severity::Warning,
+              ptr(base, "KHR_materials_dispersion"),
+              "The dispersion extension needs to be combined with the volume extension.");
+    if (has("KHR_materials_anisotropy"))
+        same_texcoord(ext["KHR_materials_anisotropy"], "anisotropyTexture",
+                      "KHR_MATERIALS_ANISOTROPY_ANISOTROPY_TEXTURE_TEXCOORD",
+                      "Normal and anisotropy textures should use the same texture coords.",
+                      "KHR_materials_anisotropy");
+    if (has("KHR_materials_clearcoat"))
+        same_texcoord(ext["KHR_materials_clearcoat"], "clearcoatNormalTexture",
+                      "KHR_MATERIALS_CLEARCOAT_CLEARCOAT_NORMAL_TEXTURE_TEXCOORD",
+                      "Normal and clearcoat normal textures should use the same texture coords.",
+                      "KHR_materials_clearcoat");
+    if (has("KHR_materials_iridescence")) {
+        const Json& ir = ext["KHR_materials_iridescence"];
+        const std::string p = ptr(base, "KHR_materials_iridescence");
+        if (Validation::member(ir, "iridescenceThicknessTexture").is_object()) {
+            if (valid_or(ir, "iridescenceThicknessMinimum", 0, 100) ==
+                valid_or(ir, "iridescenceThicknessMaximum", 0, 400))
+                v.add("KHR_MATERIALS_IRIDESCENCE_THICKNESS_TEXTURE_UNUSED", Severity::Information,
+                      ptr(p, "iridescenceThicknessTexture"),
+                      "Thickness texture has no effect when the thickness minimum is equal to "
+                      "the thickness maximum.");
+        } else if (valid_or(ir, "iridescenceThicknessMinimum", 0, -1) >= 0) {
+            v.add("KHR_MATERIALS_IRIDESCENCE_THICKNESS_RANGE_WITHOUT_TEXTURE",
+                  Severity::Information, ptr(p, "iridescenceThicknessMinimum"),
+                  "Thickness minimum has no effect when a thickness texture is not defined.");
+        }
+    }
+}
+
 } // namespace
+
+bool needs_tangent_space(const Validation& v, const Json& material) {
+    if (Validation::member(material, "normalTexture").is_object()) return true;
+    const Json& ext = Validation::member(material, "extensions");
+    const Json& clearcoat = Validation::member(ext, "KHR_materials_clearcoat");
+    const Json& anisotropy = Validation::member(ext, "KHR_materials_anisotropy");
+    return (Validation::member(clearcoat, "clearcoatNormalTexture").is_object() &&
+            declared(v, "KHR_materials_clearcoat")) ||
+           (Validation::member(anisotropy, "anisotropyTexture").is_object() &&
+            declared(v, "KHR_materials_anisotropy"));
+}
 
 void validate_materials(Validation& v) {
     const Json& cameras = v.array("cameras");
@@ -79,8 +169,12 @@ void validate_materials(Validation& v) {
             v.add("MATERIAL_ALPHA_CUTOFF_INVALID_MODE", Severity::Warning,
                   ptr(where, "alphaCutoff"),
                   "Alpha cutoff is supported only for 'MASK' alpha mode.");
+        check_material_extensions(v, m, where);
         const Json& ext = Validation::member(m, "extensions");
-        if (ext.is_object() && ext.contains("KHR_materials_emissive_strength")) {
+        // Only a strength other than the default 1 (as given, and valid) has an effect
+        // to lose.
+        if (ext.is_object() && ext.contains("KHR_materials_emissive_strength") &&
+            valid_or(ext["KHR_materials_emissive_strength"], "emissiveStrength", 0, 1) != 1) {
             const Json& f = Validation::member(m, "emissiveFactor");
             bool zero = !f.is_array();
             if (f.is_array()) {
@@ -164,6 +258,12 @@ void validate_unused(Validation& v) {
                 if (is_int(a)) mark(accessors, as_int(a));
             mark(accessors, int_or(p, "indices", -1));
             mark(materials, int_or(p, "material", -1));
+            const Json& variants =
+                Validation::member(Validation::member(p, "extensions"), "KHR_materials_variants");
+            const Json& mappings = Validation::member(variants, "mappings");
+            if (mappings.is_array())
+                for (const Json& mapping : mappings)
+                    mark(materials, int_or(mapping, "material", -1));
             const Json& targets = Validation::member(p, "targets");
             if (targets.is_array())
                 for (const Json& t : targets)
@@ -208,6 +308,7 @@ void validate_unused(Validation& v) {
     report("skins", skins);
     report("textures", textures);
     report("images", images);
+    report("materials", materials);
 }
 
 } // namespace sherpa::detail

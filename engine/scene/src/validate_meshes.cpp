@@ -66,6 +66,29 @@ void material_needs(const Json& j, std::set<std::int64_t>& sets, int depth) {
     }
 }
 
+// A primitive's attributes as the file lists them (the Khronos validator's order, which
+// decides which of two accessors sharing a view is named), from the parse's record;
+// the JSON's sorted order where there is none.
+std::vector<std::pair<std::string_view, const Json*>>
+in_document_order(const Validation& v, const Json& attributes, std::size_t m, std::size_t p) {
+    std::vector<std::pair<std::string_view, const Json*>> out;
+    if (!attributes.is_object()) return out;
+    out.reserve(attributes.size());
+    const std::vector<std::string>* names = v.order ? v.order->attributes_of(m, p) : nullptr;
+    if (!names || names->size() < attributes.size()) {
+        for (const auto& [name, value] : attributes.items()) out.emplace_back(name, &value);
+        return out;
+    }
+    std::set<std::string_view> seen; // a repeated key: its value is the last, its place the first
+    const bool repeats = names->size() != attributes.size();
+    for (const std::string& name : *names) {
+        if (repeats && !seen.insert(name).second) continue;
+        const auto it = attributes.find(name);
+        if (it != attributes.end()) out.emplace_back(it.key(), &*it);
+    }
+    return out;
+}
+
 } // namespace
 
 void validate_meshes(Validation& v) {
@@ -81,6 +104,16 @@ void validate_meshes(Validation& v) {
     };
     // Per buffer view without byteStride: the vertex accessors that read it.
     std::vector<std::vector<std::int64_t>> view_readers(views.size());
+    // A view without `target` is hinted at its first vertex or index use only.
+    std::vector<std::uint8_t> target_hinted(views.size());
+    auto target_missing = [&](std::int64_t a) {
+        const std::int64_t vi =
+            ref(v, accessors[static_cast<std::size_t>(a)], "bufferView", "bufferViews");
+        if (vi < 0 || target_hinted[static_cast<std::size_t>(vi)]) return false;
+        target_hinted[static_cast<std::size_t>(vi)] = 1;
+        const Json& view = views[static_cast<std::size_t>(vi)];
+        return view.is_object() && !view.contains("target");
+    };
     for (std::size_t m = 0; m < meshes.size(); ++m) {
         const Json& prim_array = Validation::member(meshes[m], "primitives");
         if (!prim_array.is_array()) continue;
@@ -96,7 +129,8 @@ void validate_meshes(Validation& v) {
             int joints = 0, weights = 0;
             std::set<int> texcoords, colors, joint_sets, weight_sets;
             bool has_normal = false, has_tangent = false, has_position = false;
-            for (const auto& [name, value] : attributes.items()) {
+            for (const auto& [name, value_at] : in_document_order(v, attributes, m, p)) {
+                const Json& value = *value_at;
                 const std::string ap = ptr(attr_where, name);
                 int n = 0;
                 if (name == "POSITION")
@@ -154,7 +188,7 @@ void validate_meshes(Validation& v) {
                           "accessor.min and accessor.max must be defined for POSITION attribute "
                           "accessor.");
                 const Json& view = view_of(a);
-                if (view.is_object() && !view.contains("target"))
+                if (target_missing(a))
                     v.add("BUFFER_VIEW_TARGET_MISSING", Severity::Hint, ap,
                           "bufferView.target should be set for vertex or index data.");
                 const std::int64_t view_offset = int_or(view, "byteOffset", 0);
@@ -234,9 +268,10 @@ void validate_meshes(Validation& v) {
                 v.use_accessor(ia, AccessorRole::PrimitiveIndices, ViewRole::IndexBuffer, ip);
                 const Json& acc = accessors[static_cast<std::size_t>(ia)];
                 const std::int64_t ct = int_or(acc, "componentType", 0);
-                if (!(acc.contains("type") && acc["type"] == "SCALAR") ||
-                    !(ct == 5121 || ct == 5123 || ct == 5125) ||
-                    (acc.contains("normalized") && acc["normalized"] == true))
+                const bool format_ok = acc.contains("type") && acc["type"] == "SCALAR" &&
+                                       (ct == 5121 || ct == 5123 || ct == 5125) &&
+                                       !(acc.contains("normalized") && acc["normalized"] == true);
+                if (!format_ok)
                     v.add("MESH_PRIMITIVE_INDICES_ACCESSOR_INVALID_FORMAT", Severity::Error, ip,
                           "Invalid indices accessor format. Must be one of ('{SCALAR, "
                           "UNSIGNED_BYTE}', "
@@ -245,14 +280,17 @@ void validate_meshes(Validation& v) {
                 if (view.is_object() && view.contains("byteStride"))
                     v.add("MESH_PRIMITIVE_INDICES_ACCESSOR_WITH_BYTESTRIDE", Severity::Error, ip,
                           "bufferView.byteStride must not be defined for indices accessor.");
-                if (view.is_object() && !view.contains("target"))
+                if (target_missing(ia))
                     v.add("BUFFER_VIEW_TARGET_MISSING", Severity::Hint, ip,
                           "bufferView.target should be set for vertex or index data.");
                 element_count = int_or(acc, "count", -1);
                 AccessorUsage u{static_cast<std::size_t>(ia), AccessorUse::Indices, ip};
                 u.limit = vertex_count > 0 ? static_cast<std::uint64_t>(vertex_count) : 0;
                 u.mode = mode;
-                if (vertex_count >= 0) v.usages.push_back(u);
+                // Khronos reads no index data of another format or through a stride; with
+                // no vertex count known (no attribute resolves) every index is past it.
+                if (format_ok && !(view.is_object() && view.contains("byteStride")))
+                    v.usages.push_back(u);
             }
             if (element_count >= 0 && mode >= 0 && mode <= 6) {
                 const bool ok = mode == 0   ? element_count > 0
@@ -281,6 +319,9 @@ void validate_meshes(Validation& v) {
                                   "Unresolved reference.");
                             continue;
                         }
+                        if (target_missing(as_int(value)))
+                            v.add("BUFFER_VIEW_TARGET_MISSING", Severity::Hint, tp,
+                                  "bufferView.target should be set for vertex or index data.");
                         if (name == "POSITION" &&
                             (!v.accessors[static_cast<std::size_t>(as_int(value))].has_min ||
                              !v.accessors[static_cast<std::size_t>(as_int(value))].has_max))
@@ -306,7 +347,7 @@ void validate_meshes(Validation& v) {
 
             // What the material needs: texture coordinate sets and a tangent space.
             std::set<std::int64_t> sets;
-            bool normal_texture = false;
+            bool normal_texture = false, tangent_space = false;
             if (const std::int64_t mi = ref(v, prim, "material", "materials"); mi >= 0) {
                 const Json& material = v.array("materials")[static_cast<std::size_t>(mi)];
                 material_needs(material, sets, 0);
@@ -320,6 +361,7 @@ void validate_meshes(Validation& v) {
                                   std::to_string(s) + "' attribute.");
                         break;
                     }
+                tangent_space = needs_tangent_space(v, material);
                 if (normal_texture && !has_tangent && has_normal)
                     v.add("MESH_PRIMITIVE_GENERATED_TANGENT_SPACE", Severity::Warning,
                           ptr(where, "material"),
@@ -327,8 +369,14 @@ void validate_meshes(Validation& v) {
                           "provide it. "
                           "Runtime-generated tangent space may be non-portable across "
                           "implementations.");
+                else if (tangent_space && !normal_texture && !has_tangent)
+                    v.add("MESH_PRIMITIVE_NO_TANGENT_SPACE", Severity::Error,
+                          ptr(where, "material"),
+                          "Material requires a tangent space but the mesh primitive does not "
+                          "provide it and the material does not contain a normal map to "
+                          "generate it.");
             }
-            if (has_tangent && !normal_texture)
+            if (has_tangent && !tangent_space)
                 v.add("UNUSED_MESH_TANGENT", Severity::Information, ptr(attr_where, "TANGENT"),
                       "Tangents are not used because the material has no normal texture.");
             for (int t : texcoords)

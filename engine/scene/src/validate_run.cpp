@@ -12,6 +12,10 @@ namespace {
 
 // Escapes a key for a JSON pointer (RFC 6901: "~" -> "~0", "/" -> "~1").
 void append_key(std::string& out, std::string_view key) {
+    if (key.find_first_of("~/") == std::string_view::npos) {
+        out.append(key); // the usual key: one copy
+        return;
+    }
     for (char c : key) {
         if (c == '~')
             out += "~0";
@@ -289,6 +293,8 @@ void validate_document(Validation& v) {
 
 void validate_extensions(Validation& v) {
     ExtensionWalk walk{v, {}, {}, {}};
+    // The walk over every object is skipped where the parse saw no "extensions" key.
+    const bool walk_document = !v.order || v.order->has_extensions;
     const Json& used = v.array("extensionsUsed");
     for (std::size_t i = 0; i < used.size(); ++i) {
         if (!used[i].is_string()) {
@@ -325,7 +331,7 @@ void validate_extensions(Validation& v) {
         if (walk.used[i] == "KHR_mesh_quantization" && !quantization_required)
             v.add("NON_REQUIRED_EXTENSION", Severity::Error, ptr("/extensionsUsed", i),
                   "Extension 'KHR_mesh_quantization' cannot be optional.");
-    walk.walk(v.root, 0);
+    if (walk_document) walk.walk(v.root, 0);
 }
 
 } // namespace sherpa::detail

@@ -26,6 +26,36 @@ std::string short_text(const Json& j) {
 struct Schema {
     Validation& v;
     std::string at; // the JSON pointer of the value being checked
+    // "SHERPA_" inside an extension the Khronos validator does not know (its codes
+    // would claim what it never reports), "" elsewhere.
+    const char* prefix = "";
+
+    void add(const char* code, Severity s, const std::string& where, std::string message) {
+        v.add(*prefix ? std::string(prefix) + code : std::string(code), s, where,
+              std::move(message));
+    }
+    bool declared(std::string_view extension) const {
+        for (const Json& e : v.array("extensionsUsed"))
+            if (e.is_string() && e.get_ref<const std::string&>() == extension) return true;
+        return false;
+    }
+    // A material's declared extensions with a schema (undeclared ones are the
+    // extension pass's UNDECLARED_EXTENSION, and the Khronos validator reads no further).
+    void material_extensions(const Json& extensions) {
+        for (const auto& [name, value] : extensions.items()) {
+            const Kind* kind = schema::material_extension_kind(name);
+            if (!kind || !declared(name)) continue;
+            const Scope member(at, name);
+            if (!value.is_object()) {
+                type_mismatch(value, "object");
+                continue;
+            }
+            const char* outer = prefix;
+            if (kind->sherpa_codes) prefix = "SHERPA_";
+            object(value, kind);
+            prefix = outer;
+        }
+    }
 
     // Appends "/key" or "/index" to `at` for the lifetime of the scope.
     struct Scope {
@@ -43,27 +73,28 @@ struct Schema {
     };
 
     void type_mismatch(const Json& j, const char* want) {
-        v.add("TYPE_MISMATCH", Severity::Error, at,
-              "Type mismatch. Property value " + short_text(j) + " is not a '" + want + "'.");
+        add("TYPE_MISMATCH", Severity::Error, at,
+            "Type mismatch. Property value " + short_text(j) + " is not a '" + want + "'.");
     }
     void index(const Json& j, const char* target) {
         if (!j.is_number()) return type_mismatch(j, "integer");
         if (!is_int(j)) return type_mismatch(j, "integer");
         const std::int64_t i = as_int(j);
         if (i < 0) {
-            v.add("INVALID_INDEX", Severity::Error, at, "Index must be a non-negative integer.");
+            add("INVALID_INDEX", Severity::Error, at, "Index must be a non-negative integer.");
             return;
         }
         if (target && static_cast<std::uint64_t>(i) >= v.size(target))
-            v.add("UNRESOLVED_REFERENCE", Severity::Error, at,
-                  "Unresolved reference: " + std::to_string(i) + ".");
+            add("UNRESOLVED_REFERENCE", Severity::Error, at,
+                "Unresolved reference: " + std::to_string(i) + ".");
     }
     void number(const Json& j, const Prop& pr) {
         if (!j.is_number()) return type_mismatch(j, "number");
         const double x = j.get<double>();
+        if (pr.zero_ok && x == 0) return;
         if (x < pr.lo || x > pr.hi || (pr.open && x == pr.lo))
-            v.add("VALUE_NOT_IN_RANGE", Severity::Error, at,
-                  "Value " + short_text(j) + " is out of range.");
+            add("VALUE_NOT_IN_RANGE", Severity::Error, at,
+                "Value " + short_text(j) + " is out of range.");
     }
     void property(const Json& j, const Prop& pr) {
         switch (pr.type) {
@@ -72,7 +103,7 @@ struct Schema {
             break;
         case T::IndexArray: {
             if (!j.is_array()) return type_mismatch(j, "array");
-            if (j.empty()) v.add("EMPTY_ENTITY", Severity::Error, at, "Entity cannot be empty.");
+            if (j.empty()) add("EMPTY_ENTITY", Severity::Error, at, "Entity cannot be empty.");
             std::vector<std::int64_t> seen;
             for (std::size_t i = 0; i < j.size(); ++i) {
                 const Scope element(at, i);
@@ -81,7 +112,7 @@ struct Schema {
                 const std::int64_t x = as_int(j[i]);
                 bool dup = false;
                 for (std::int64_t s : seen) dup |= s == x;
-                if (dup) v.add("DUPLICATE_ELEMENTS", Severity::Error, at, "Duplicate element.");
+                if (dup) add("DUPLICATE_ELEMENTS", Severity::Error, at, "Duplicate element.");
                 if (seen.size() < 4096) seen.push_back(x); // keeps the check linear on big arrays
             }
             break;
@@ -89,8 +120,8 @@ struct Schema {
         case T::Int:
             if (!j.is_number() || !is_int(j)) return type_mismatch(j, "integer");
             if (static_cast<double>(as_int(j)) < pr.lo || static_cast<double>(as_int(j)) > pr.hi)
-                v.add("VALUE_NOT_IN_RANGE", Severity::Error, at,
-                      "Value " + short_text(j) + " is out of range.");
+                add("VALUE_NOT_IN_RANGE", Severity::Error, at,
+                    "Value " + short_text(j) + " is out of range.");
             break;
         case T::Num:
             number(j, pr);
@@ -100,18 +131,17 @@ struct Schema {
             bool length_ok = pr.lengths.size() == 0;
             for (int n : pr.lengths) length_ok |= j.size() == static_cast<std::size_t>(n);
             if (!length_ok) {
-                v.add("ARRAY_LENGTH_NOT_IN_LIST", Severity::Error, at,
-                      "Invalid array length " + std::to_string(j.size()) + ".");
+                add("ARRAY_LENGTH_NOT_IN_LIST", Severity::Error, at,
+                    "Invalid array length " + std::to_string(j.size()) + ".");
                 return;
             }
-            if (j.empty()) v.add("EMPTY_ENTITY", Severity::Error, at, "Entity cannot be empty.");
+            if (j.empty()) add("EMPTY_ENTITY", Severity::Error, at, "Entity cannot be empty.");
             for (std::size_t i = 0; i < j.size(); ++i) {
                 if (j[i].is_number() && pr.lo == -INFINITY && pr.hi == INFINITY) continue;
                 const Scope element(at, i);
                 if (!j[i].is_number()) {
-                    v.add("ARRAY_TYPE_MISMATCH", Severity::Error, at,
-                          "Type mismatch. Array element " + short_text(j[i]) +
-                              " is not a 'number'.");
+                    add("ARRAY_TYPE_MISMATCH", Severity::Error, at,
+                        "Type mismatch. Array element " + short_text(j[i]) + " is not a 'number'.");
                     continue;
                 }
                 number(j[i], pr);
@@ -130,7 +160,7 @@ struct Schema {
             break;
         case T::ObjArr: {
             if (!j.is_array()) return type_mismatch(j, "array");
-            if (j.empty()) v.add("EMPTY_ENTITY", Severity::Error, at, "Entity cannot be empty.");
+            if (j.empty()) add("EMPTY_ENTITY", Severity::Error, at, "Entity cannot be empty.");
             const Kind* kind = kind_named(pr.target);
             for (std::size_t i = 0; i < j.size(); ++i) {
                 const Scope element(at, i);
@@ -146,8 +176,8 @@ struct Schema {
             bool ok = false;
             for (int x : pr.lengths) ok |= as_int(j) == x;
             if (!ok)
-                v.add("VALUE_NOT_IN_LIST", Severity::Warning, at,
-                      "Invalid value " + short_text(j) + ".");
+                add("VALUE_NOT_IN_LIST", Severity::Warning, at,
+                    "Invalid value " + short_text(j) + ".");
             break;
         }
         case T::StrEnum: {
@@ -155,8 +185,8 @@ struct Schema {
             bool ok = false;
             for (const char* w : pr.words) ok |= j.get_ref<const std::string&>() == w;
             if (!ok)
-                v.add("VALUE_NOT_IN_LIST", Severity::Warning, at,
-                      "Invalid value " + short_text(j) + ".");
+                add("VALUE_NOT_IN_LIST", Severity::Warning, at,
+                    "Invalid value " + short_text(j) + ".");
             break;
         }
         case T::Any:
@@ -170,30 +200,33 @@ struct Schema {
         for (const auto& [key, value] : obj.items()) {
             const Prop* found = nullptr;
             for (const Prop& pr : kind->props)
-                if (key == pr.name) found = &pr;
+                if (pr.name[0] == key[0] && key == pr.name) found = &pr; // first letter: cheap
             if (found) {
                 const Scope member(at, key);
                 property(value, *found);
             } else if (key == "extensions") {
                 const Scope member(at, key);
-                if (!value.is_object()) type_mismatch(value, "object");
+                if (!value.is_object())
+                    type_mismatch(value, "object");
+                else if (std::strcmp(kind->name, "material") == 0)
+                    material_extensions(value);
             } else if (key == "extras") {
                 const Scope member(at, key);
                 if (!value.is_object())
-                    v.add("NON_OBJECT_EXTRAS", Severity::Information, at,
-                          "Prefer JSON Objects for extras.");
+                    add("NON_OBJECT_EXTRAS", Severity::Information, at,
+                        "Prefer JSON Objects for extras.");
             } else if (key == "name" && !root) {
                 const Scope member(at, key);
                 if (!value.is_string()) type_mismatch(value, "string");
             } else {
                 const Scope member(at, key);
-                v.add("UNEXPECTED_PROPERTY", Severity::Warning, at, "Unexpected property.");
+                add("UNEXPECTED_PROPERTY", Severity::Warning, at, "Unexpected property.");
             }
         }
         for (const Prop& pr : kind->props)
             if (pr.required && !obj.contains(pr.name))
-                v.add("UNDEFINED_PROPERTY", Severity::Error, at,
-                      std::string("Property '") + pr.name + "' must be defined.");
+                add("UNDEFINED_PROPERTY", Severity::Error, at,
+                    std::string("Property '") + pr.name + "' must be defined.");
     }
 };
 

@@ -173,7 +173,70 @@ const Kind kKinds[] = {
       {"output", T::Index, true, "accessors"}}},
 };
 
+// Material extensions (the Khronos validator's schemas; KHR_materials_diffuse_
+// transmission, which it does not know, from its specification).
+constexpr double kInf = INFINITY;
+const Kind kMaterialExtensions[] = {
+    {"KHR_materials_ior", {{"ior", T::Num, false, nullptr, 1, kInf, false, {}, {}, true}}},
+    {"KHR_materials_specular",
+     {{"specularFactor", T::Num, false, nullptr, 0, 1},
+      {"specularTexture", T::Obj, false, "textureInfo"},
+      {"specularColorFactor", T::NumArray, false, nullptr, 0, kInf, false, {3}},
+      {"specularColorTexture", T::Obj, false, "textureInfo"}}},
+    {"KHR_materials_clearcoat",
+     {{"clearcoatFactor", T::Num, false, nullptr, 0, 1},
+      {"clearcoatTexture", T::Obj, false, "textureInfo"},
+      {"clearcoatRoughnessFactor", T::Num, false, nullptr, 0, 1},
+      {"clearcoatRoughnessTexture", T::Obj, false, "textureInfo"},
+      {"clearcoatNormalTexture", T::Obj, false, "normalTextureInfo"}}},
+    {"KHR_materials_sheen",
+     {{"sheenColorFactor", T::NumArray, false, nullptr, 0, 1, false, {3}},
+      {"sheenColorTexture", T::Obj, false, "textureInfo"},
+      {"sheenRoughnessFactor", T::Num, false, nullptr, 0, 1},
+      {"sheenRoughnessTexture", T::Obj, false, "textureInfo"}}},
+    {"KHR_materials_transmission",
+     {{"transmissionFactor", T::Num, false, nullptr, 0, 1},
+      {"transmissionTexture", T::Obj, false, "textureInfo"}}},
+    {"KHR_materials_volume",
+     {{"thicknessFactor", T::Num, false, nullptr, 0},
+      {"thicknessTexture", T::Obj, false, "textureInfo"},
+      {"attenuationDistance", T::Num, false, nullptr, 0, kInf, true},
+      {"attenuationColor", T::NumArray, false, nullptr, 0, 1, false, {3}}}},
+    {"KHR_materials_iridescence",
+     {{"iridescenceFactor", T::Num, false, nullptr, 0, 1},
+      {"iridescenceTexture", T::Obj, false, "textureInfo"},
+      {"iridescenceIor", T::Num, false, nullptr, 1},
+      {"iridescenceThicknessMinimum", T::Num, false, nullptr, 0},
+      {"iridescenceThicknessMaximum", T::Num, false, nullptr, 0},
+      {"iridescenceThicknessTexture", T::Obj, false, "textureInfo"}}},
+    {"KHR_materials_anisotropy",
+     {{"anisotropyStrength", T::Num, false, nullptr, 0, 1},
+      {"anisotropyRotation", T::Num},
+      {"anisotropyTexture", T::Obj, false, "textureInfo"}}},
+    {"KHR_materials_dispersion", {{"dispersion", T::Num, false, nullptr, 0}}},
+    {"KHR_materials_emissive_strength", {{"emissiveStrength", T::Num, false, nullptr, 0}}},
+    {"KHR_materials_pbrSpecularGlossiness",
+     {{"diffuseFactor", T::NumArray, false, nullptr, 0, 1, false, {4}},
+      {"diffuseTexture", T::Obj, false, "textureInfo"},
+      {"specularFactor", T::NumArray, false, nullptr, 0, 1, false, {3}},
+      {"glossinessFactor", T::Num, false, nullptr, 0, 1},
+      {"specularGlossinessTexture", T::Obj, false, "textureInfo"}}},
+    {"KHR_materials_unlit", {}},
+    {"KHR_materials_diffuse_transmission",
+     {{"diffuseTransmissionFactor", T::Num, false, nullptr, 0, 1},
+      {"diffuseTransmissionTexture", T::Obj, false, "textureInfo"},
+      {"diffuseTransmissionColorFactor", T::NumArray, false, nullptr, 0, 1, false, {3}},
+      {"diffuseTransmissionColorTexture", T::Obj, false, "textureInfo"}},
+     true},
+};
+
 } // namespace
+
+const Kind* material_extension_kind(std::string_view name) {
+    for (const Kind& k : kMaterialExtensions)
+        if (name == k.name) return &k;
+    return nullptr;
+}
 
 const Kind* kind_named(const char* name) {
     for (const Kind& k : kKinds)

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
+#include <string_view>
 
 namespace sherpa::detail::schema {
 
@@ -32,14 +33,21 @@ struct Prop {
     bool open = false;                    // Num: lo is exclusive
     std::initializer_list<int> lengths{}; // NumArray lengths; IntEnum values
     std::initializer_list<const char*> words{};
+    bool zero_ok = false; // Num: 0 is allowed outside [lo, hi] (KHR_materials_ior's ior)
 };
 
 struct Kind {
     const char* name;
     std::initializer_list<Prop> props;
+    // A material extension the Khronos validator does not know: its problems carry
+    // SHERPA_ codes (SHERPA_VALUE_NOT_IN_RANGE, ...), since it reports none for them.
+    bool sherpa_codes = false;
 };
 
 // The kind called `name` ("root", "accessor", ...); null when the table has none.
 const Kind* kind_named(const char* name);
+// The schema of material extension `name` (its object, under material.extensions),
+// or null when Sherpa has none.
+const Kind* material_extension_kind(std::string_view name);
 
 } // namespace sherpa::detail::schema

@@ -40,7 +40,12 @@ std::string_view to_string(CacheState state) {
 
 std::vector<TextureUse> collect_texture_uses(const Scene& scene) {
     std::set<std::uint32_t> used_materials;
-    for (const MeshInstance& inst : scene.instances) used_materials.insert(inst.material_id);
+    // Every material an instance can show (KHR_materials_variants included): a variant
+    // switch then finds its textures on the GPU.
+    for (const MeshInstance& inst : scene.instances) {
+        used_materials.insert(inst.material_id); // the instance's own, with or without a mesh
+        for (std::uint32_t m : possible_materials(scene, inst.mesh_id)) used_materials.insert(m);
+    }
     std::map<std::pair<std::int32_t, int>, TextureUse> uses;
     std::map<std::pair<std::int32_t, int>, std::set<float>> cutoffs; // of masked materials
     auto add = [&](const TextureSlot& slot, TextureRole role, std::optional<float> cutoff) {
@@ -73,6 +78,16 @@ std::vector<TextureUse> collect_texture_uses(const Scene& scene) {
         if (m.specular && !m.unlit && !m.specular_glossiness) {
             add(m.specular->specular, kRoleLinear, std::nullopt);
             add(m.specular->specular_color, kRoleColor, std::nullopt);
+        }
+        // The transmission family, on the same materials: factors in linear channels,
+        // the diffuse transmission colour in sRGB.
+        if (!m.unlit && !m.specular_glossiness) {
+            if (m.transmission) add(m.transmission->texture, kRoleLinear, std::nullopt);
+            if (m.volume) add(m.volume->thickness, kRoleLinear, std::nullopt);
+            if (m.diffuse_transmission) {
+                add(m.diffuse_transmission->texture, kRoleLinear, std::nullopt);
+                add(m.diffuse_transmission->color, kRoleColor, std::nullopt);
+            }
         }
     }
     std::vector<TextureUse> out;

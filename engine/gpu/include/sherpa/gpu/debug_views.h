@@ -56,6 +56,13 @@ enum class DebugView : std::uint32_t {
     // colour (factor x texture rgb, linear radiance like base colour).
     SpecularWeight = 23,
     SpecularColor = 24,
+    // The transmission family: KHR_materials_transmission's factor (grey), the volume's
+    // thickness (grey, local units, clipped at 1), its attenuation colour (white: none),
+    // KHR_materials_diffuse_transmission's factor (grey).
+    Transmission = 25,
+    Thickness = 26,
+    Attenuation = 27,
+    DiffuseTransmission = 28,
 };
 
 // The metallic view's colour on specular-glossiness materials (no metallic value
@@ -133,7 +140,7 @@ struct OverlayEntry {
     const char* label;
 };
 
-inline constexpr std::array<DebugViewInfo, 25> kDebugViews{{
+inline constexpr std::array<DebugViewInfo, 29> kDebugViews{{
     {DebugView::Lit, "lit", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Lit")},
     {DebugView::Normal, "normal", kNormalStream, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Normals")},
     {DebugView::Tangent, "tangent", kTangentStream,
@@ -173,6 +180,14 @@ inline constexpr std::array<DebugViewInfo, 25> kDebugViews{{
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Specular weight")},
     {DebugView::SpecularColor, "specular-color", 0,
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Specular colour")},
+    {DebugView::Transmission, "transmission", 0,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Transmission")},
+    {DebugView::Thickness, "thickness", 0,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Volume thickness")},
+    {DebugView::Attenuation, "attenuation", 0,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Volume attenuation")},
+    {DebugView::DiffuseTransmission, "diffuse-transmission", 0,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Diffuse transmission")},
 }};
 
 inline constexpr std::array<OverlayEntry, 7> kOverlays{{

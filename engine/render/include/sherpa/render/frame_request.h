@@ -64,6 +64,9 @@ struct PathTraceSettings {
     std::uint32_t max_bounces = 8;
     std::uint32_t seed = 0; // the same seed and sample count give the same image
     bool restart = false;   // start over this frame even if nothing changed
+    // Next-event estimation of emissive triangles (off: BSDF sampling alone finds them,
+    // the reference the light sampling is tested against).
+    bool light_sampling = true;
 };
 
 struct FrameRequest {

@@ -6,12 +6,15 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <span>
+#include <utility>
 #include <vector>
 
 #include <sherpa/core/aabb.h>
 #include <sherpa/gpu/bindless.h>
 #include <sherpa/gpu/resources.h>
 #include <sherpa/gpu/upload.h>
+#include <sherpa/render/gpu_structs.h>
 #include <sherpa/render/material_extensions.h>
 #include <sherpa/render/scene_textures.h>
 #include <sherpa/scene/scene.h>
@@ -84,16 +87,43 @@ public:
     // timings, bytes), warnings and bindless slot; the editor maps material slots
     // back to them.
     const SceneTextures& textures() const { return *textures_; }
+    // New values of the same materials (KHR_animation_pointer: factors, texture
+    // transforms; the extensions and textures each uses stay): the records are rebuilt
+    // on the CPU and only the 16-byte-aligned records that differ are uploaded. Returns
+    // the bytes uploaded. The caller waits for the frames in flight first.
+    std::uint64_t update(std::span<const MaterialInstance> materials);
 
 private:
     void upload(const Scene& scene);
+    void build(std::span<const MaterialInstance> materials); // data_, extras_data_, extensions_
 
     ResourceManager& resources_;
     std::unique_ptr<SceneTextures> textures_;
     BufferHandle materials_, extras_, extension_buffer_;
     MaterialExtensionBuffer extensions_;
+    std::vector<GPUMaterialData> data_; // what the buffers hold
+    std::vector<GPUMaterialExtra> extras_data_;
     std::uint64_t bytes_ = 0;
 };
+
+// What giving meshes other materials changed (KHR_materials_variants).
+struct MaterialSwitch {
+    std::uint32_t meshes = 0, groups = 0, instances = 0; // that changed material
+    std::uint64_t gpu_bytes = 0; // uploaded: the changed instance records' material words
+    bool modes_changed = false;  // a group's alpha mode or sidedness changed (culling rebuilds)
+};
+
+class GpuScene;
+// Gives each (engine mesh, material) of `meshes` that material: its draw groups take
+// the material's index, alpha mode and sidedness (pipelines and passes follow them
+// from the next frame) and the instance records' material word is rewritten where it
+// changed; no other byte moves. The caller waits for the frames in flight first.
+MaterialSwitch
+switch_mesh_materials(GpuScene& scene,
+                      std::span<const std::pair<std::uint32_t, std::uint32_t>> meshes);
+
+// GpuMaterials::update() of `scene`'s materials.
+std::uint64_t update_scene_materials(GpuScene& scene, std::span<const MaterialInstance> materials);
 
 class GpuScene {
 public:
@@ -136,6 +166,9 @@ public:
     const GpuMaterials& materials() const { return *materials_; }
 
 private:
+    friend std::uint64_t update_scene_materials(GpuScene&, std::span<const MaterialInstance>);
+    friend MaterialSwitch
+    switch_mesh_materials(GpuScene&, std::span<const std::pair<std::uint32_t, std::uint32_t>>);
     void upload(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
                 MissingTextures missing);
     void upload_geometry(const Scene& scene);
@@ -150,6 +183,7 @@ private:
     BufferHandle vertices_, indices_, instances_, motion_streams_, motion_meshes_;
     std::vector<GpuMesh> meshes_;
     std::vector<DrawGroup> groups_;
+    std::vector<std::pair<AlphaMode, bool>> material_modes_; // per material: alpha, double-sided
     std::vector<Aabb> instance_bounds_;
     std::vector<std::uint32_t> scene_instances_;
     Aabb bounds_;

@@ -150,46 +150,8 @@ static_assert(offsetof(GPUMaterialExtra, extensions) == 204);
 static_assert(offsetof(GPUMaterialExtra, specular_glossiness) == 208);
 static_assert(sizeof(GPUMaterialExtra) == 224);
 
-// Material extensions (shaders/include/material_ext.glsl): one storage buffer of
-// 16-byte words (set 1, binding 8) that holds, for each material using at least one
-// drawn extension, a GPUExtensionIndex and then one block per extension it uses. A
-// scene where no material uses one has no buffer at all; a material that uses only
-// KHR_materials_ior pays 32 bytes. Offsets are in 16-byte words from the buffer's
-// start; every block is a whole number of words, read by the shader word by word in
-// field order (the GLSL twins are checked by tests/gpu/struct_twins_test.cpp).
-inline constexpr std::uint32_t kNoExtension = 0xffffffffu;
-inline constexpr std::uint32_t kExtensionWordBytes = 16;
-
-struct GPUExtensionIndex {
-    std::uint32_t ior;      // GPUIorBlock, or kNoExtension
-    std::uint32_t specular; // GPUSpecularBlock, or kNoExtension
-    std::uint32_t pad0;
-    std::uint32_t pad1;
-};
-static_assert(offsetof(GPUExtensionIndex, specular) == 4);
-static_assert(sizeof(GPUExtensionIndex) == 16);
-
-// KHR_materials_ior.
-struct GPUIorBlock {
-    float ior;
-    float pad0, pad1, pad2;
-};
-static_assert(sizeof(GPUIorBlock) == 16);
-
-// KHR_materials_specular. Textures are bindless slots (white where absent).
-struct GPUSpecularBlock {
-    glm::vec4 color_factor;           // xyz specularColorFactor, w specularFactor
-    std::uint32_t specular_tex;       // A channel, linear
-    std::uint32_t specular_color_tex; // RGB, sRGB
-    std::uint32_t pad0, pad1;
-    GPUTextureTransform specular_uv; // KHR_texture_transform of specularTexture
-    GPUTextureTransform color_uv;    // ... of specularColorTexture
-};
-static_assert(offsetof(GPUSpecularBlock, specular_tex) == 16);
-static_assert(offsetof(GPUSpecularBlock, specular_color_tex) == 20);
-static_assert(offsetof(GPUSpecularBlock, specular_uv) == 32);
-static_assert(offsetof(GPUSpecularBlock, color_uv) == 64);
-static_assert(sizeof(GPUSpecularBlock) == 96);
+// The material extension blocks (GPUExtensionIndex, GPU*Block) are in
+// gpu_material_ext_structs.h, next to their GLSL twins' file.
 
 // mesh_flags bits (common.glsl). Bits 0-5 are the streams (1 << VertexAttribute);
 // a lines or points mesh sets one topology bit.
@@ -336,10 +298,10 @@ struct GPUPathPushConstants {
     std::uint32_t samples;      // samples per pixel in this launch
     std::uint32_t max_bounces;  // surface interactions a path may scatter at
     std::uint32_t seed;         // PathTraceSettings::seed
-    std::uint32_t reserved;
-    glm::uvec2 env_size;  // columns, rows of the environment distribution (0: none)
-    float sun_cos_radius; // cosine of the sun's angular radius
-    float max_radiance;   // a sample's luminance is capped here (overflow guard)
+    float light_inv_power;      // 1 / the emissive triangles' power; 0: no light list
+    glm::uvec2 env_size;        // columns, rows of the environment distribution (0: none)
+    float sun_cos_radius;       // cosine of the sun's angular radius
+    float max_radiance;         // a sample's luminance is capped here (overflow guard)
 };
 static_assert(offsetof(GPUPathPushConstants, geometries) == 64);
 static_assert(offsetof(GPUPathPushConstants, first_sample) == 72);

@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include <sherpa/render/gpu_material_ext_structs.h>
 #include <sherpa/render/gpu_structs.h>
 #include <sherpa/scene/material.h>
 #include <sherpa/scene/texture_records.h>
@@ -25,12 +26,17 @@ struct MaterialExtensionPlace {
     std::uint32_t index = kNoExtension; // GPUExtensionIndex: GPUMaterialExtra::extensions
     std::uint32_t ior = kNoExtension;
     std::uint32_t specular = kNoExtension;
+    std::uint32_t transmission = kNoExtension, volume = kNoExtension;
+    std::uint32_t diffuse_transmission = kNoExtension, dispersion = kNoExtension;
     bool any() const { return index != kNoExtension; }
 };
 
 struct MaterialExtensionBuffer {
     std::vector<glm::uvec4> words;              // the buffer's contents
     std::vector<MaterialExtensionPlace> places; // one per material
+    // Materials whose transmission can be non-zero: what makes the renderer draw the
+    // transmission background (TransmissionPass); 0 costs no target and no pass.
+    std::uint32_t transmissive_materials = 0;
     std::uint64_t bytes() const { return words.size() * sizeof(glm::uvec4); }
 };
 

@@ -89,8 +89,21 @@ struct ResidentStats {
     const AccelerationStats* acceleration = nullptr;
     // The environment: sizes, GPU bytes, build time (present false: none).
     EnvironmentStats environment;
-    // Bytes of the renderer's own images (offscreen target, depth, shadow map).
+    // Bytes of the renderer's own images (offscreen target, depth, shadow map, and the
+    // transmission background below).
     std::uint64_t render_target_bytes = 0;
+    // KHR_materials_transmission's background target and its depth (TransmissionPass):
+    // 0 unless the scene has a transmissive material and the lit view was drawn.
+    std::uint64_t transmission_target_bytes = 0;
+};
+
+// What set_material_variant() did: the variant now drawn and what changed for it.
+struct VariantSwitch {
+    std::int32_t variant = -1;    // -1: the file's default materials
+    std::uint32_t meshes = 0;     // primitives (engine meshes) whose material changed
+    std::uint32_t instances = 0;  // draws of them
+    std::uint64_t gpu_bytes = 0;  // uploaded (the instance records' material words)
+    bool culling_rebuilt = false; // an alpha mode or sidedness changed
 };
 
 struct RendererOptions {
@@ -151,8 +164,9 @@ public:
     ResourceManager& resources();
     Context& context();
     // The frame sources' narrow interface (PresentedFrame, ComparisonFrame,
-    // render_comparison, read_path_trace): frame slots, targets and passes. Private to
-    // the render layer (src/frame_recorder.h); an incomplete type elsewhere.
+    // render_comparison, read_path_trace, set_material_variant): frame slots, targets
+    // and passes. Private to the render layer (src/frame_recorder.h); an incomplete
+    // type elsewhere.
     FrameRecorder& frames();
 
 private:
@@ -166,6 +180,15 @@ private:
 // flight; empty before the first path-traced frame), and its estimated error
 // (path_trace.h). FrameStats::path counts the samples without a readback.
 PathTraceImage read_path_trace(Renderer& renderer);
+
+// Shows KHR_materials_variants variant `variant` (-1: the file's default materials)
+// of the loaded scene without reloading it: only the materials its primitives draw
+// with change (draw groups and the instance records' material word); every texture
+// and vertex stream a variant reads was uploaded at load. Waits for the frames in
+// flight. Throws std::out_of_range for a variant the scene does not have. The ray
+// tracer keeps the materials the scene was loaded with and refuses frames while
+// another variant is shown.
+VariantSwitch set_material_variant(Renderer& renderer, std::int32_t variant);
 PathTraceError path_trace_error(Renderer& renderer);
 
 } // namespace sherpa::gpu

@@ -21,6 +21,9 @@ struct Pose {
     std::vector<glm::mat4> local, world;     // per node, every node (not only the displayed scene)
     std::vector<std::vector<float>> weights; // per node: morph weights (empty without targets)
     std::vector<std::vector<glm::mat4>> joint_matrices; // per skin: world(joint) x inverseBind
+    // KHR_animation_pointer values at this time (material, light, camera properties,
+    // node visibility): apply_animated_properties() writes them where they belong.
+    std::vector<AnimatedProperty> properties;
 };
 
 // Samples `s` at `time` into `out` (s.width floats). Times outside the keys clamp to

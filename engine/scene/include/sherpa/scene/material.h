@@ -56,6 +56,33 @@ struct MaterialSpecular {
     TextureSlot specular_color; // RGB, sRGB
 };
 
+// KHR_materials_transmission: the fraction of the dielectric's non-reflected light that
+// passes through the surface (transmissionFactor x transmissionTexture.r) instead of
+// being scattered diffusely. Thin-walled (no refraction) unless KHR_materials_volume.
+struct MaterialTransmission {
+    float factor = 0.0f;
+    TextureSlot texture; // R channel, linear
+};
+
+// KHR_materials_volume: the volume under the surface. Thickness (thicknessFactor x
+// thicknessTexture.g, in the mesh's local units) is what the raster offsets the
+// refracted ray by; attenuation is Beer-Lambert: colour^(distance / attenuationDistance).
+struct MaterialVolume {
+    float thickness_factor = 0.0f;
+    TextureSlot thickness; // G channel, linear
+    float attenuation_distance = std::numeric_limits<float>::infinity();
+    glm::vec3 attenuation_color{1.0f};
+};
+
+// KHR_materials_diffuse_transmission: the fraction of the diffuse lobe that scatters to
+// the other side (factor x texture.a), tinted by colour (factor x texture.rgb, sRGB).
+struct MaterialDiffuseTransmission {
+    float factor = 0.0f;
+    TextureSlot texture; // A channel, linear
+    glm::vec3 color_factor{1.0f};
+    TextureSlot color; // RGB, sRGB
+};
+
 // KHR_materials_ior's default, which is also the core glTF dielectric (F0 = 0.04).
 inline constexpr float kDefaultIor = 1.5f;
 
@@ -78,8 +105,12 @@ struct MaterialInstance {
     std::optional<SpecularGlossiness> specular_glossiness;
     // Material extensions, each set only when the material uses it (and then drawn with
     // a block of its own in the GPU extension buffer; absent ones cost nothing).
-    std::optional<float> ior;                 // KHR_materials_ior: >= 1, or 0 (F0 = 1)
-    std::optional<MaterialSpecular> specular; // KHR_materials_specular
+    std::optional<float> ior;                         // KHR_materials_ior: >= 1, or 0 (F0 = 1)
+    std::optional<MaterialSpecular> specular;         // KHR_materials_specular
+    std::optional<MaterialTransmission> transmission; // KHR_materials_transmission
+    std::optional<MaterialVolume> volume;             // KHR_materials_volume
+    std::optional<MaterialDiffuseTransmission> diffuse_transmission; // ..._diffuse_transmission
+    std::optional<float> dispersion; // KHR_materials_dispersion: Abbe-number scale, >= 0
     // The names in the material's `extensions` object, as written (sorted): what
     // marks a material that uses an extension Sherpa does not draw.
     std::vector<std::string> extensions;

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include <sherpa/core/aabb.h>
+#include <sherpa/scene/animation_pointer.h>
 
 namespace sherpa {
 
@@ -78,6 +79,9 @@ struct Animation {
     std::string name;
     std::vector<AnimationSampler> samplers;
     std::vector<AnimationChannel> channels;
+    // KHR_animation_pointer channels other than node TRS/weights (those become
+    // `channels`): material, light, camera and visibility properties.
+    std::vector<PointerChannel> pointers;
     float start = 0.0f, end = 0.0f; // first and last key time over all samplers
 };
 

@@ -12,6 +12,7 @@
 
 #include <sherpa/core/aabb.h>
 #include <sherpa/scene/material.h>
+#include <sherpa/scene/material_variants.h>
 #include <sherpa/scene/motion.h>
 #include <sherpa/scene/texture_records.h>
 #include <sherpa/scene/validation.h>
@@ -155,6 +156,9 @@ struct Node {
     glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
     glm::vec3 scale{1.0f};
     std::int32_t mesh = -1, camera = -1, light = -1, skin = -1;
+    // KHR_node_visibility: false hides the node and its subtree (the renderer's
+    // visibility; KHR_animation_pointer may animate it).
+    bool visible = true;
     std::vector<float> weights; // morph weights: the node's, else its mesh's, else zeros
     std::optional<NodeInstancing> instancing; // EXT_mesh_gpu_instancing: one instance per row
     glm::mat4 local_transform() const;
@@ -235,6 +239,7 @@ struct Scene {
     // Per glTF mesh: engine mesh id per primitive (-1 where skipped).
     std::vector<std::vector<std::int32_t>> mesh_primitives;
     std::vector<MaterialInstance> materials; // glTF materials, then the default if needed
+    MaterialVariants variants;               // KHR_materials_variants (material_variants.h)
     std::vector<TextureRecord> textures;
     std::vector<ImageRecord> images;
     std::vector<SamplerDesc> samplers;

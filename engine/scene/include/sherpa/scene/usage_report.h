@@ -31,6 +31,11 @@ struct UsageReport {
 // Which attributes `material` reads for shading, given what the mesh has.
 std::array<bool, kVertexAttributeCount> attributes_used(const MaterialInstance& material,
                                                         const Mesh& mesh);
+// The same for engine mesh `mesh` over every material it can show (its own and each
+// KHR_materials_variants mapping's): what is uploaded, so a variant switch finds the
+// streams its material reads.
+std::array<bool, kVertexAttributeCount> mesh_attributes_used(const Scene& scene,
+                                                             std::uint32_t mesh);
 UsageReport build_usage_report(const Scene& scene);
 
 } // namespace sherpa

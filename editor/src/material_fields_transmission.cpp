@@ -1,0 +1,82 @@
+// The material dock's rows of the transmission family (KHR_materials_transmission,
+// _volume, _diffuse_transmission, _dispersion): each field of the material's blocks
+// with its byte offset in the extension buffer, values from the CPU record.
+#include "material_fields_model.h"
+
+#include <cstddef>
+#include <limits>
+
+#include "format_values.h"
+
+#include <sherpa/render/gpu_structs.h>
+#include <sherpa/render/material_extensions.h>
+
+namespace sherpa::editor {
+
+void MaterialFieldsModel::appendTransmissionRows(const gpu::MaterialExtensionPlace& place,
+                                                 const MaterialInstance& m) {
+    const int word = int(gpu::kExtensionWordBytes);
+    auto words = [](std::uint32_t w) {
+        return w == gpu::kNoExtension ? tr("absent") : QString::number(w);
+    };
+    auto texture = [this](const TextureSlot& slot) {
+        return slot.present() ? chain(slot.texture) : tr("default texture");
+    };
+    auto add = [&](std::uint32_t block, std::size_t offset, const char* field, const char* property,
+                   const char* type, const QString& value, const TextureSlot* slot = nullptr) {
+        extension_rows_.push_back({int(block) * word + int(offset), QString::fromLatin1(field),
+                                   QString::fromLatin1(property), QString::fromLatin1(type), value,
+                                   slot && slot->present() ? slot->texture : -1});
+    };
+    if (place.transmission == gpu::kNoExtension && place.volume == gpu::kNoExtension &&
+        place.diffuse_transmission == gpu::kNoExtension && place.dispersion == gpu::kNoExtension)
+        return;
+    add(place.index, offsetof(gpu::GPUExtensionIndex, transmission), "ext.index.transmission",
+        "GPUExtensionIndex word 1", "uvec4",
+        tr("transmission %1, volume %2, diffuse transmission %3, dispersion %4")
+            .arg(words(place.transmission), words(place.volume), words(place.diffuse_transmission),
+                 words(place.dispersion)));
+    if (const auto& t = m.transmission; t && place.transmission != gpu::kNoExtension) {
+        add(place.transmission, offsetof(gpu::GPUTransmissionBlock, factor),
+            "ext.transmission.factor", "KHR_materials_transmission.transmissionFactor", "float",
+            Format::number(t->factor));
+        add(place.transmission, offsetof(gpu::GPUTransmissionBlock, texture),
+            "ext.transmission.texture", "KHR_materials_transmission.transmissionTexture", "uint",
+            texture(t->texture), &t->texture);
+    }
+    if (const auto& v = m.volume; v && place.volume != gpu::kNoExtension) {
+        const bool infinite = v->attenuation_distance == std::numeric_limits<float>::infinity();
+        add(place.volume, offsetof(gpu::GPUVolumeBlock, attenuation), "ext.volume.attenuation",
+            "KHR_materials_volume.attenuationColor, attenuationDistance", "vec4",
+            Format::vec(
+                glm::vec4(v->attenuation_color, infinite ? 0.0f : v->attenuation_distance)) +
+                (infinite ? tr(" (distance infinite: none)") : QString()));
+        add(place.volume, offsetof(gpu::GPUVolumeBlock, thickness_factor),
+            "ext.volume.thickness_factor", "KHR_materials_volume.thicknessFactor", "float",
+            Format::number(v->thickness_factor));
+        add(place.volume, offsetof(gpu::GPUVolumeBlock, thickness_tex), "ext.volume.thickness_tex",
+            "KHR_materials_volume.thicknessTexture", "uint", texture(v->thickness), &v->thickness);
+    }
+    if (const auto& d = m.diffuse_transmission;
+        d && place.diffuse_transmission != gpu::kNoExtension) {
+        add(place.diffuse_transmission, offsetof(gpu::GPUDiffuseTransmissionBlock, color_factor),
+            "ext.diffuse_transmission.color_factor",
+            "KHR_materials_diffuse_transmission.diffuseTransmissionColorFactor, "
+            "diffuseTransmissionFactor",
+            "vec4", Format::vec(glm::vec4(d->color_factor, d->factor)));
+        add(place.diffuse_transmission, offsetof(gpu::GPUDiffuseTransmissionBlock, texture),
+            "ext.diffuse_transmission.texture",
+            "KHR_materials_diffuse_transmission.diffuseTransmissionTexture", "uint",
+            texture(d->texture), &d->texture);
+        add(place.diffuse_transmission, offsetof(gpu::GPUDiffuseTransmissionBlock, color_tex),
+            "ext.diffuse_transmission.color_tex",
+            "KHR_materials_diffuse_transmission.diffuseTransmissionColorTexture", "uint",
+            texture(d->color), &d->color);
+    }
+    if (m.dispersion && place.dispersion != gpu::kNoExtension)
+        add(place.dispersion, offsetof(gpu::GPUDispersionBlock, dispersion),
+            "ext.dispersion.dispersion", "KHR_materials_dispersion.dispersion", "float",
+            Format::number(*m.dispersion));
+}
+
+} // namespace sherpa::editor

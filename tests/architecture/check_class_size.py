@@ -23,7 +23,7 @@ from pathlib import Path
 # Classes not yet split, each held at the size it has (a ratchet: it may shrink, never
 # grow): name -> (public, all, why). Remove a row once its class is within the limits.
 EXEMPT: dict[str, tuple[int, int, str]] = {
-    "MainWindow": (46, 90, "the window: controllers (load, view, compare, motion) not yet split out"),
+    "MainWindow": (44, 85, "the window: controllers (load, view, compare, motion) not yet split out"),
     "FrameRecorder": (16, 39, "frame slots and the ray-traced frames (renderer_rt, renderer_path, "
                       "renderer_side) are its next seams; set_variant() is the material "
                       "variant switch's way in, as path_trace_image() is the path tracer's"),

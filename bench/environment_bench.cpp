@@ -46,7 +46,7 @@ struct FrameTime {
     double wall = 0.0, cpu = 0.0;
 };
 
-FrameTime frame_ms(gpu::Renderer& r, const gpu::RenderSettings& s, int frames) {
+FrameTime frame_ms(gpu::Renderer& r, const gpu::FrameRequest& s, int frames) {
     r.render(s); // warm: pipelines, shadow cascades
     std::vector<double> wall, cpu;
     for (int i = 0; i < frames; ++i) {
@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
     keep_freed_memory_mapped();
     int frames = 5, repeats = 5;
     bool prefilter_only = false;
-    gpu::RenderSettings s;
+    gpu::FrameRequest s;
     std::string scene_spec =
         std::string(SHERPA_ASSETS_DIR) + "/gltf/DamagedHelmet/glTF/DamagedHelmet.gltf";
     for (int i = 1; i < argc; ++i) {
@@ -137,7 +137,7 @@ int main(int argc, char** argv) {
     const FrameTime before = frame_ms(renderer, s, frames);
     const gpu::EnvironmentImage room = gpu::room_environment();
     Runs with, with_solid, without;
-    gpu::RenderSettings solid = s;
+    gpu::FrameRequest solid = s;
     solid.background = gpu::Background::Color;
     for (int i = 0; i < repeats; ++i) {
         renderer.set_environment(&room);

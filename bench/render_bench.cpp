@@ -40,7 +40,7 @@ struct FrameTimes {
     double cpu_ms = 0.0;  // mean CPU time per frame, all threads (less sensitive to a busy machine)
 };
 
-FrameTimes measure(gpu::Renderer& renderer, const gpu::RenderSettings& s, int frames) {
+FrameTimes measure(gpu::Renderer& renderer, const gpu::FrameRequest& s, int frames) {
     std::vector<double> ms;
     double cpu0 = 0.0;
     for (int f = 0; f < frames + 2; ++f) {
@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
     sherpa::keep_freed_memory_mapped();
     int frames = 20;
     bool csv = false, quick = false, lit_only = false, no_bc = false;
-    gpu::RenderSettings lit;
+    gpu::FrameRequest lit;
     std::vector<std::string> scenes;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--frames") && i + 1 < argc)
@@ -112,11 +112,10 @@ int main(int argc, char** argv) {
     gpu::ContextOptions options;
     options.validation = false; // the layer's CPU cost would distort frame times
     gpu::Context context(options);
-    gpu::Renderer renderer(context);
-    gpu::TextureSettings textures; // as sherpa-cli render: the user's texture cache
-    textures.cache_dir = tex::default_cache_dir_from_environment();
-    textures.force_rgba8 = no_bc;
-    renderer.set_texture_settings(textures);
+    gpu::RendererOptions renderer_options; // as sherpa-cli render: the user's texture cache
+    renderer_options.textures.cache_dir = tex::default_cache_dir_from_environment();
+    renderer_options.textures.force_rgba8 = no_bc;
+    gpu::Renderer renderer(context, renderer_options);
     std::printf("device: %s, %ux%u, median of %d frames\n", context.info().name.c_str(), lit.width,
                 lit.height, frames);
     if (csv)
@@ -132,9 +131,9 @@ int main(int argc, char** argv) {
             continue;
         }
         renderer.load(*r.scene);
-        gpu::RenderSettings floor = lit;
+        gpu::FrameRequest floor = lit;
         floor.floor_only = true;
-        gpu::RenderSettings uncached = lit;
+        gpu::FrameRequest uncached = lit;
         uncached.cache_shadows = false;
         const FrameTimes floor_t = lit_only ? FrameTimes{} : measure(renderer, floor, frames);
         const FrameTimes lit_t = measure(renderer, lit, frames);

@@ -1,6 +1,6 @@
 // sherpa-bench-skin [--frames N] [--width W --height H] [--rounds R] [--rt]
 // GPU skinning and morphing cost (issue #16): the lit frame of a moving model posed on
-// the GPU (RenderSettings::pose: the MOTION pipelines skin and morph in the vertex
+// the GPU (FrameRequest::pose: the MOTION pipelines skin and morph in the vertex
 // stage) against the same model frozen in that pose on the CPU (freeze_pose(): a
 // static scene, no motion streams), in the same run, alternating R rounds. Models: a
 // generated skinned tube (100k vertices, 64 joints, two influences per vertex, bent)
@@ -37,7 +37,7 @@ struct Times {
     std::vector<double> wall, cpu; // per round: median wall ms, mean CPU ms per frame
 };
 
-void measure(gpu::Renderer& r, const gpu::RenderSettings& s, int frames, Times& out) {
+void measure(gpu::Renderer& r, const gpu::FrameRequest& s, int frames, Times& out) {
     std::vector<double> ms;
     r.render(s); // warm: pipelines, shadows
     const double cpu0 = bench::process_cpu_ms();
@@ -166,7 +166,7 @@ void measure_rt(gpu::Context& context, const std::string& name, const Scene& s,
         options.acceleration.refit_posed = refit;
         gpu::Renderer renderer(context, options);
         renderer.load(s);
-        gpu::RenderSettings settings;
+        gpu::FrameRequest settings;
         settings.width = width;
         settings.height = height;
         settings.shadows = false;
@@ -258,7 +258,7 @@ int main(int argc, char** argv) {
         const auto pose =
             std::make_shared<const Pose>(evaluate_pose(s, s.animations.empty() ? -1 : 0, t));
         const Scene frozen = freeze_pose(s, *pose);
-        gpu::RenderSettings settings;
+        gpu::FrameRequest settings;
         settings.width = width;
         settings.height = height;
         settings.pose = pose;

@@ -203,7 +203,7 @@ int run_compare(Args args) {
     std::string image;
     bool json = false;
     gpu::EnvironmentChoice environment; // --image: both lit as render lights its frame
-    gpu::RenderSettings lighting;
+    gpu::FrameRequest lighting;
     for (std::size_t i = 0; i < args.size(); ++i) {
         std::string option_error;
         const OptionMatch em =

@@ -27,14 +27,14 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-nlohmann::json side_json(const std::string& file, const gpu::RenderSettings& s) {
+nlohmann::json side_json(const std::string& file, const gpu::FrameRequest& s) {
     return {{"file", file},
             {"renderer", gpu::to_string(s.renderer)},
             {"view", gpu::to_string(s.view)},
             {"texture_lod", s.texture_lod}};
 }
 
-std::string side_text(const std::string& file, const gpu::RenderSettings& s) {
+std::string side_text(const std::string& file, const gpu::FrameRequest& s) {
     std::string out = file + " (" + std::string(gpu::to_string(s.renderer)) + ", " +
                       std::string(gpu::to_string(s.view));
     if (s.texture_lod >= 0.0f) out += ", texture lod " + std::to_string(s.texture_lod);
@@ -110,7 +110,8 @@ OptionMatch parse_compare_option(Args args, std::size_t& i, CompareCliOptions& o
 }
 
 int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
-    gpu::RenderSettings sa = run.settings, sb = run.settings;
+    gpu::FrameRequest sa = run.settings, sb = run.settings;
+    gpu::SceneSetup setup_a = run.setup, setup_b = run.setup;
     if (o.renderer) sb.renderer = *o.renderer;
     if (o.view) sb.view = *o.view;
     if (o.texture_lod) sb.texture_lod = *o.texture_lod;
@@ -129,7 +130,7 @@ int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
             return kExitLoadError;
         }
         scene_b = other.scene.get();
-        sb.hidden_nodes = nullptr; // --hide-node names side A's nodes: B as loaded
+        setup_b.hidden_nodes = nullptr; // --hide-node names side A's nodes: B as loaded
         // One camera for both: 'auto' frames side A's scene, not each its own.
         if (sa.camera.kind == gpu::CameraSpec::Kind::Auto) {
             FramingOptions framing;
@@ -154,10 +155,10 @@ int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
         if (o.no_bc) rb_options.textures.force_rgba8 = true;
         if (o.quality) rb_options.textures.quality = *o.quality;
         gpu::Renderer a(context, ra_options), b(context, rb_options);
-        const auto policy = [](const gpu::RenderSettings& s) {
-            return gpu::needs_all_streams(s) ? gpu::StreamPolicy::AllPresent
-                                             : gpu::StreamPolicy::UsedByMaterials;
-        };
+        setup_a.streams = gpu::needs_all_streams(sa) ? gpu::StreamPolicy::AllPresent
+                                                     : gpu::StreamPolicy::UsedByMaterials;
+        setup_b.streams = gpu::needs_all_streams(sb) ? gpu::StreamPolicy::AllPresent
+                                                     : gpu::StreamPolicy::UsedByMaterials;
         // Both sides lit by one environment, as the render command's frame is; a side
         // that draws no lit view makes none (no GPU bytes).
         if (sa.view == gpu::DebugView::Lit || sb.view == gpu::DebugView::Lit) {
@@ -165,8 +166,8 @@ int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
             if (sa.view == gpu::DebugView::Lit) a.set_environment(environment.get());
             if (sb.view == gpu::DebugView::Lit) b.set_environment(environment.get());
         }
-        a.load(*run.scene, policy(sa));
-        b.load(*scene_b, policy(sb));
+        a.load(*run.scene, setup_a);
+        b.load(*scene_b, setup_b);
         std::vector<double> reduce, composite;
         for (std::uint32_t f = 0; f < run.frames; ++f) {
             stats = gpu::render_comparison(a, sa, b, sb, o.compare,

@@ -13,7 +13,8 @@
 
 #include <sherpa/render/comparison.h>
 #include <sherpa/render/environment.h>
-#include <sherpa/render/render_settings.h>
+#include <sherpa/render/frame_request.h>
+#include <sherpa/render/scene_setup.h>
 
 namespace sherpa::cli {
 
@@ -63,7 +64,8 @@ OptionMatch parse_compare_option(Args args, std::size_t& i, CompareCliOptions& o
 struct CompareRun {
     const Scene* scene = nullptr; // side A's, loaded
     std::string scene_name;
-    gpu::RenderSettings settings; // side A's
+    gpu::FrameRequest settings; // side A's
+    gpu::SceneSetup setup;      // side A's (streams: each side's own)
     TextureCliOptions textures;
     bool validation = false, ray_tracing = true;
     std::string output;                 // the PNG

@@ -7,7 +7,7 @@
 
 namespace sherpa::cli {
 
-OptionMatch parse_environment_option(Args args, std::size_t& i, gpu::RenderSettings& settings,
+OptionMatch parse_environment_option(Args args, std::size_t& i, gpu::FrameRequest& settings,
                                      gpu::EnvironmentChoice& environment, std::string& error) {
     const std::string_view a = args[i];
     if (a != "--environment" && a != "--environment-rotation" && a != "--environment-intensity" &&

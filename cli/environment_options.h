@@ -9,7 +9,7 @@
 #include <string>
 
 #include <sherpa/render/environment.h>
-#include <sherpa/render/render_settings.h>
+#include <sherpa/render/frame_request.h>
 
 namespace sherpa::gpu {
 class Renderer;
@@ -25,7 +25,7 @@ inline constexpr const char* kEnvironmentOptionsSynopsis =
 
 // If args[i] is one of these options, consumes it and its value (advancing i) into
 // `settings` (--environment into `environment`); Bad sets `error`.
-OptionMatch parse_environment_option(Args args, std::size_t& i, gpu::RenderSettings& settings,
+OptionMatch parse_environment_option(Args args, std::size_t& i, gpu::FrameRequest& settings,
                                      gpu::EnvironmentChoice& environment, std::string& error);
 
 // Makes the chosen environment (null: none); its warnings (an unreadable file and the

@@ -34,7 +34,7 @@ struct Options {
     // The lit frames' environment and display settings (the shadows family), parsed by
     // the options render takes: the room unless --environment says otherwise.
     gpu::EnvironmentChoice environment;
-    gpu::RenderSettings lighting;
+    gpu::FrameRequest lighting;
 };
 
 // The usage text (main.cpp) lists the engine's families (lab::family_names), the one

@@ -53,7 +53,7 @@ std::string joined(const std::vector<std::string_view>& names) {
 int run_render(Args args) {
     std::string_view spec, out_path, report_path;
     std::string camera_text = "auto";
-    gpu::RenderSettings settings;
+    gpu::FrameRequest settings;
     std::uint32_t frames = 1;
     bool validation = gpu::ContextOptions::default_validation();
     std::vector<std::uint32_t> hidden_nodes; // --hide-node, in the order given
@@ -236,6 +236,11 @@ int run_render(Args args) {
     settings.camera = framed_camera(settings.camera, *loaded.scene, settings.pose.get(),
                                     float(settings.width) / float(settings.height));
     run.settings.camera = settings.camera;
+    // What the load fixes: the streams the view reads, missing textures, hidden nodes.
+    gpu::SceneSetup setup;
+    setup.streams = gpu::needs_all_streams(settings) ? gpu::StreamPolicy::AllPresent
+                                                     : gpu::StreamPolicy::UsedByMaterials;
+    setup.missing_textures = texture_options.missing;
     if (!hidden_nodes.empty()) {
         auto mask = std::make_shared<std::vector<bool>>(loaded.scene->nodes.size(), false);
         for (const std::uint32_t n : hidden_nodes) {
@@ -244,12 +249,12 @@ int run_render(Args args) {
                                    " has " + std::to_string(mask->size()) + " nodes");
             (*mask)[n] = true;
         }
-        settings.hidden_nodes = mask;
-        run.settings.hidden_nodes = mask;
+        setup.hidden_nodes = mask;
     }
     if (compare_options.mode)
-        return run_comparison({loaded.scene.get(), std::string(spec), settings, texture_options,
-                               validation, ray_tracing, std::string(out_path), frames, environment},
+        return run_comparison({loaded.scene.get(), std::string(spec), settings, setup,
+                               texture_options, validation, ray_tracing, std::string(out_path),
+                               frames, environment},
                               compare_options);
     try {
         gpu::ContextOptions options;
@@ -267,16 +272,13 @@ int run_render(Args args) {
         // Textures are prepared (cache lookups, decode, compression) before the upload,
         // as a loader thread would, so the report can time the two apart.
         const gpu::TextureSettings texture_settings = texture_options.gpu_settings();
-        renderer.set_texture_settings(texture_settings); // how missing textures are drawn
         auto start = std::chrono::steady_clock::now();
         const auto textures = tex::prepare_scene_textures(
             *loaded.scene, gpu::texture_target(context.info(), texture_settings),
             gpu::texture_pipeline_options(texture_settings));
         run.timing.texture_prepare_ms = ms_since(start);
         start = std::chrono::steady_clock::now();
-        renderer.load(*loaded.scene, textures,
-                      gpu::needs_all_streams(settings) ? gpu::StreamPolicy::AllPresent
-                                                       : gpu::StreamPolicy::UsedByMaterials);
+        renderer.load(*loaded.scene, textures, setup);
         run.timing.gpu_upload_ms = ms_since(start);
         run.cache_dir = texture_options.resolved_cache_dir();
         std::vector<std::uint8_t> rgba;

@@ -22,7 +22,7 @@ struct LoadTiming {
 
 struct RenderRun {
     std::string scene;
-    gpu::RenderSettings settings;
+    gpu::FrameRequest settings;
     std::string camera_text;
     std::vector<gpu::FrameStats> frames; // every rendered frame, in order
     std::vector<double> cpu_frame_ms;    // wall time of each frame (submit to completion)

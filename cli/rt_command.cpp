@@ -252,9 +252,10 @@ int run_rt(Args args) {
             gpu::RendererOptions renderer_options;
             renderer_options.ray_tracing = true;
             renderer_options.acceleration = settings;
-            renderer_options.textures.missing = gpu::MissingTextures::Neutral;
             gpu::Renderer renderer(context, renderer_options);
-            renderer.load(*loaded.scene, no_textures);
+            gpu::SceneSetup setup;
+            setup.missing_textures = gpu::MissingTextures::Neutral;
+            renderer.load(*loaded.scene, no_textures, setup);
             report(*renderer.resident().acceleration);
         } else {
             gpu::ResourceManager resources(context);

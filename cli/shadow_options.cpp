@@ -5,7 +5,7 @@
 #include <sherpa/render/gpu_structs.h>
 
 namespace sherpa::cli {
-OptionMatch parse_shadow_option(Args args, std::size_t& i, gpu::RenderSettings& settings,
+OptionMatch parse_shadow_option(Args args, std::size_t& i, gpu::FrameRequest& settings,
                                 std::uint32_t& resolution, std::string& error) {
     const std::string_view a = args[i];
     const bool integer = a == "--cascades" || a == "--shadow-resolution" || a == "--pcf-taps" ||

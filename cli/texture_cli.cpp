@@ -22,7 +22,6 @@ gpu::TextureSettings TextureCliOptions::gpu_settings() const {
     s.quality = quality;
     s.force_rgba8 = no_bc;
     s.decode_bc7_on_cpu = !keep_bc7;
-    s.missing = missing;
     return s;
 }
 

@@ -9,7 +9,7 @@
 #include "texture_cli.h"
 
 #include <sherpa/lab/family.h>
-#include <sherpa/render/render_settings.h>
+#include <sherpa/render/frame_request.h>
 
 #include <cstdio>
 #include <utility>

@@ -1,6 +1,6 @@
 #include "view_legend.h"
 
-#include <sherpa/render/render_settings.h>
+#include <sherpa/render/frame_request.h>
 #include <sherpa/texture/image_text.h>
 
 #include <algorithm>

@@ -70,7 +70,7 @@ QString GpuViewport::deviceName() const {
 }
 
 tex::TextureTarget GpuViewport::textureTarget() const {
-    return gpu::texture_target(impl_->context->info(), impl_->renderer->texture_settings());
+    return gpu::texture_target(impl_->context->info(), gpu::TextureSettings{});
 }
 
 void GpuViewport::setReducedFramePrepass(bool prepass) {
@@ -78,9 +78,7 @@ void GpuViewport::setReducedFramePrepass(bool prepass) {
 }
 
 void GpuViewport::setMissingTexturesChecker(bool checker) {
-    gpu::TextureSettings t = impl_->renderer->texture_settings();
-    t.missing = checker ? gpu::MissingTextures::Checker : gpu::MissingTextures::Neutral;
-    impl_->renderer->set_texture_settings(t);
+    impl_->missing = checker ? gpu::MissingTextures::Checker : gpu::MissingTextures::Neutral;
 }
 
 void GpuViewport::setSession(SharedSession session) {
@@ -95,16 +93,20 @@ void GpuViewport::upload() {
         impl_->renderer->unload();
         return;
     }
-    load_session(*impl_->renderer, *impl_->session, impl_->all_streams);
+    load_session(*impl_->renderer, *impl_->session, impl_->all_streams, impl_->missing);
 }
 
-void load_session(gpu::Renderer& renderer, const SceneSession& session, bool all_streams) {
+void load_session(gpu::Renderer& renderer, const SceneSession& session, bool all_streams,
+                  gpu::MissingTextures missing) {
     // No textures prepared (cancelled, no plan): an empty set, so that load() does
     // not run the texture pipeline on this thread.
     PreparedTextures textures = session.textures;
     if (!textures) textures = std::make_shared<const tex::PreparedTextureSet>();
-    renderer.load(*session.scene, std::move(textures),
-                  all_streams ? gpu::StreamPolicy::AllPresent : gpu::StreamPolicy::UsedByMaterials);
+    gpu::SceneSetup setup;
+    setup.streams =
+        all_streams ? gpu::StreamPolicy::AllPresent : gpu::StreamPolicy::UsedByMaterials;
+    setup.missing_textures = missing;
+    renderer.load(*session.scene, std::move(textures), setup); // hidden nodes: per present()
 }
 
 QStringList GpuViewport::setEnvironment(const gpu::EnvironmentChoice& choice) {
@@ -121,7 +123,7 @@ QStringList GpuViewport::setEnvironment(const gpu::EnvironmentChoice& choice) {
 }
 
 void GpuViewport::useStreamsFor(const ViewportFrame& frame) {
-    gpu::RenderSettings settings;
+    gpu::FrameRequest settings;
     settings.view = static_cast<gpu::DebugView>(frame.view);
     settings.overlays = frame.overlays;
     const bool all = gpu::needs_all_streams(settings);
@@ -171,7 +173,7 @@ void GpuViewport::releaseSurface() {
     impl_->surface = 0;
 }
 
-void apply_display(const ViewportDisplay& d, gpu::RenderSettings& settings) {
+void apply_display(const ViewportDisplay& d, gpu::FrameRequest& settings) {
     settings.environment_rotation = d.environmentRotation;
     settings.environment_intensity = d.environmentIntensity;
     settings.background = d.background;
@@ -183,8 +185,8 @@ void apply_display(const ViewportDisplay& d, gpu::RenderSettings& settings) {
     settings.energy_compensation = d.energyCompensation;
 }
 
-gpu::RenderSettings render_settings(const ViewportFrame& frame, float scale, bool reduced_prepass) {
-    gpu::RenderSettings settings;
+gpu::FrameRequest frame_request(const ViewportFrame& frame, float scale, bool reduced_prepass) {
+    gpu::FrameRequest settings;
     settings.width = frame.width;
     settings.height = frame.height;
     settings.view = static_cast<gpu::DebugView>(frame.view);
@@ -199,7 +201,6 @@ gpu::RenderSettings render_settings(const ViewportFrame& frame, float scale, boo
     settings.cull_method = frame.cullMethod;
     settings.pose = frame.pose;
     settings.selected_joint = frame.selectedJoint;
-    settings.hidden_nodes = frame.hiddenNodes;
     settings.cascades = frame.shadowCascades;
     settings.shadow_pcf_taps = frame.shadowPcfTaps;
     apply_display(frame.display, settings);
@@ -253,8 +254,9 @@ void GpuViewport::preparePresenter(std::uint64_t surface, const ViewportFrame& f
 bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame, float scale) {
     impl_->refusal.clear();
     if (!surface || frame.width == 0 || frame.height == 0) return false;
-    const gpu::RenderSettings settings = render_settings(frame, scale, impl_->reduced_prepass);
+    const gpu::FrameRequest settings = frame_request(frame, scale, impl_->reduced_prepass);
     preparePresenter(surface, frame);
+    impl_->renderer->set_hidden_nodes(frame.hiddenNodes); // unchanged: one comparison
     if (frame.compare.comparing()) return presentComparison(frame, settings, scale);
     impl_->b = {}; // side B lives only while comparing
     impl_->difference = {};
@@ -275,7 +277,7 @@ bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame, flo
 // The accumulation after this frame (the renderer counts it when it records), and its
 // error read back at each power of two from 4 samples (the sums are read back: a cost
 // that halves in frequency as the image converges).
-void GpuViewport::notePathSamples(const gpu::RenderSettings& settings) {
+void GpuViewport::notePathSamples(const gpu::FrameRequest& settings) {
     Impl& i = *impl_;
     if (settings.renderer != gpu::RendererKind::RayTraced || settings.view != gpu::DebugView::Lit) {
         i.path_traced = false;

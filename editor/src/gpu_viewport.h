@@ -28,7 +28,7 @@ class QVulkanInstance;
 namespace sherpa::gpu {
 struct AccelerationStats;
 class Renderer;
-struct RenderSettings;
+struct FrameRequest;
 } // namespace sherpa::gpu
 
 namespace sherpa::editor {
@@ -48,9 +48,9 @@ struct ViewportDisplay {
 
 // The display's fields of `settings` (gpu::copy_lighting's): what every view of the
 // window lit alike reads (the viewport, a comparison's side B, the Lab).
-void apply_display(const ViewportDisplay& display, gpu::RenderSettings& settings);
+void apply_display(const ViewportDisplay& display, gpu::FrameRequest& settings);
 
-// What the window wants drawn; mapped to gpu::RenderSettings inside.
+// What the window wants drawn; mapped to gpu::FrameRequest inside.
 struct ViewportFrame {
     std::uint32_t width = 0, height = 0; // pixels
     CameraSpec camera;
@@ -60,7 +60,7 @@ struct ViewportFrame {
     // Selection highlight: a scene instance, and a triangle / vertex of its mesh.
     std::optional<std::uint32_t> highlightInstance, highlightTriangle, highlightVertex;
     // More scene instances outlined: the selected node's own and, for a node without
-    // a mesh, its subtree's (RenderSettings::highlight_outline).
+    // a mesh, its subtree's (FrameRequest::highlight_outline).
     std::vector<std::uint32_t> outlineInstances;
     bool gpuCulling = false; // the renderer's GPU-driven culling path
     CullMethod cullMethod = CullMethod::PVertex;
@@ -159,7 +159,7 @@ public:
     bool lastCullPasses(std::vector<CullStats>& passes, bool& cached_shadows) const;
 
 private:
-    void notePathSamples(const gpu::RenderSettings& settings);
+    void notePathSamples(const gpu::FrameRequest& settings);
 
 public:
     // Runs the renderer's GPU culling shader once for `frustum` over every instance
@@ -186,7 +186,7 @@ private:
     void upload();
     void preparePresenter(std::uint64_t surface, const ViewportFrame& frame);
     // gpu_viewport_compare.cpp: side B loaded as `frame` asks, both drawn and composited.
-    bool presentComparison(const ViewportFrame& frame, const gpu::RenderSettings& a, float scale);
+    bool presentComparison(const ViewportFrame& frame, const gpu::FrameRequest& a, float scale);
     std::unique_ptr<Impl> impl_;
 };
 

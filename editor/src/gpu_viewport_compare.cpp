@@ -15,8 +15,8 @@ namespace sherpa::editor {
 
 namespace {
 
-gpu::RenderSettings side_b_settings(const ViewportFrame& frame, const gpu::RenderSettings& a) {
-    gpu::RenderSettings b = a;
+gpu::FrameRequest side_b_settings(const ViewportFrame& frame, const gpu::FrameRequest& a) {
+    gpu::FrameRequest b = a;
     switch (frame.compare.side) {
     case SideB::RayTraced:
         b.renderer = gpu::RendererKind::RayTraced;
@@ -26,9 +26,8 @@ gpu::RenderSettings side_b_settings(const ViewportFrame& frame, const gpu::Rende
         break;
     case SideB::OtherFile:
         // The pose, joint and hidden nodes are the first scene's nodes: the other file
-        // as loaded.
+        // as loaded (its hidden nodes: presentComparison()).
         b.pose = nullptr;
-        b.hidden_nodes = nullptr;
         b.selected_joint.reset();
         b.freeze_cull.reset();
         break;
@@ -50,15 +49,15 @@ DifferenceNumbers numbers(const gpu::ComparisonStats& s, float heat_max) {
 
 } // namespace
 
-bool GpuViewport::presentComparison(const ViewportFrame& frame, const gpu::RenderSettings& a_in,
+bool GpuViewport::presentComparison(const ViewportFrame& frame, const gpu::FrameRequest& a_in,
                                     float scale) {
     Impl& impl = *impl_;
     const ViewportComparison& c = frame.compare;
-    gpu::RenderSettings a = a_in;
+    gpu::FrameRequest a = a_in;
     // Rays have no derivatives: against the ray tracer both sides sample mip 0, so the
     // difference shows the data paths, not two LOD choices (the engine's exactness check).
     if (c.side == SideB::RayTraced) a.texture_lod = 0.0f;
-    const gpu::RenderSettings b = side_b_settings(frame, a);
+    const gpu::FrameRequest b = side_b_settings(frame, a);
     const SharedSession session = c.side == SideB::OtherFile ? frame.compareSession : impl.session;
     if (!session) {
         impl.refusal = QStringLiteral("side B has no scene (choose the other file first)");
@@ -73,16 +72,16 @@ bool GpuViewport::presentComparison(const ViewportFrame& frame, const gpu::Rende
         impl.b = {};
         gpu::RendererOptions options;
         options.ray_tracing = rays && impl.context->info().ray_tracing_enabled;
-        options.textures = impl.renderer->texture_settings();
         impl.b.renderer = std::make_unique<gpu::Renderer>(*impl.context, options);
-        // Lit as side A is: the same environment (render_settings() gives both sides the
+        // Lit as side A is: the same environment (frame_request() gives both sides the
         // same display settings).
         impl.b.renderer->set_environment(impl.environment.get());
-        load_session(*impl.b.renderer, *session, all);
+        load_session(*impl.b.renderer, *session, all, impl.missing);
         impl.b.session = session;
         impl.b.all_streams = all;
         impl.b.ray_tracing = rays;
     }
+    impl.b.renderer->set_hidden_nodes(c.side == SideB::OtherFile ? nullptr : frame.hiddenNodes);
     gpu::ComparisonSettings compare;
     compare.mode =
         c.mode == ViewportMode::Split ? gpu::CompareMode::Split : gpu::CompareMode::Difference;

@@ -21,7 +21,8 @@ struct GpuViewport::Impl {
     std::uint32_t width = 0, height = 0;
     SharedSession session; // on the GPU: its scene and prepared textures
     bool all_streams = false;
-    bool reduced_prepass = false;                // setReducedFramePrepass()
+    gpu::MissingTextures missing = gpu::MissingTextures::Checker; // setMissingTexturesChecker()
+    bool reduced_prepass = false;                                 // setReducedFramePrepass()
     std::unique_ptr<gpu::GpuCullChecker> culler; // CPU/GPU agreement checks, built per scene
     // The environment lighting side A (setEnvironment), kept to light side B alike.
     std::shared_ptr<const gpu::EnvironmentImage> environment;
@@ -43,10 +44,11 @@ struct GpuViewport::Impl {
 };
 
 // Loads `session` into `renderer` (side A's upload and side B's): every stream with
-// `all_streams`, else those its materials use.
-void load_session(gpu::Renderer& renderer, const SceneSession& session, bool all_streams);
+// `all_streams`, else those its materials use; missing textures drawn as `missing`.
+void load_session(gpu::Renderer& renderer, const SceneSession& session, bool all_streams,
+                  gpu::MissingTextures missing);
 
 // The engine's settings for what the window wants drawn (side A of a comparison).
-gpu::RenderSettings render_settings(const ViewportFrame& frame, float scale, bool reduced_prepass);
+gpu::FrameRequest frame_request(const ViewportFrame& frame, float scale, bool reduced_prepass);
 
 } // namespace sherpa::editor

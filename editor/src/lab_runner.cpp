@@ -102,7 +102,7 @@ template <class F> auto guarded(F f, QString& error) -> decltype(f()) {
 } // namespace
 
 void LabRunner::setLighting(const gpu::EnvironmentChoice& environment,
-                            const gpu::RenderSettings& settings) {
+                            const gpu::FrameRequest& settings) {
     environment_ = environment;
     lighting_ = settings;
 }

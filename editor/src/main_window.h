@@ -3,7 +3,6 @@
 // and the log around it, menus and toolbar, scene loading off the UI thread.
 // It owns the one mutable EditorContext and turns the docks' actions into changes.
 #include <QMainWindow>
-#include <QPointer>
 
 #include <optional>
 
@@ -16,7 +15,6 @@
 
 class QActionGroup;
 class QLabel;
-class QMessageBox;
 class QMenu;
 class QProgressBar;
 class QPushButton;
@@ -32,12 +30,12 @@ class CullingDock;
 class DifferenceLegend;
 class CullingMonitor;
 class LabDock;
+class ReloadController;
 class RenderThread;
 struct FrameReport;
 class LogDock;
 class MaterialDock;
 class MeshDock;
-class SceneFileWatch;
 class SceneTreeDock;
 class TextureDock;
 class TimelineDock;
@@ -72,12 +70,8 @@ public:
     // Starts loading; the current scene stays until the new one is ready.
     void openScene(const QString& spec);
     void reloadScene();
-    // When the open file, its buffers or images change on disk: reload at once
-    // (true) or offer to (false, the default); remembered (Settings menu).
-    void setReloadAutomatically(bool automatic);
-    bool reloadAutomatically() const { return settings_.reloadAutomatically(); }
-    // The files watched for that (main_window_reload.cpp).
-    QStringList watchedFiles() const;
+    // Reload on change: the watched files and the Settings menu's choice.
+    ReloadController& reloadController() const { return *reload_; }
     void closeScene();
     void cancelLoad();
     // Texture dock actions: delete every KTX2 file of the cache directory; delete one
@@ -177,10 +171,6 @@ private:
     void connectLab();        // main_window_lab.cpp
     void connectValidation(); // main_window_validation.cpp
     void showValidationForScene();
-    // main_window_reload.cpp
-    void createReloadWatch(QMenu* settings_menu);
-    void retranslateReload();
-    void onSceneFilesChanged(const QStringList& files);
     // main_window_compare.cpp
     void connectCompare();
     void onCompareChanged();
@@ -249,11 +239,8 @@ private:
     bool remember_layout_ = true;
     int pass_frames_left_ = 0; // extra frames until the pass table has the first frame
     ViewportFrame last_frame_;
-    SceneFileWatch* file_watch_ = nullptr;
-    QPointer<QMessageBox> reload_offer_;   // the open offer to reload, if any
-    QActionGroup* reload_group_ = nullptr; // Settings › When the File Changes
-    QMenu* reload_menu_ = nullptr;
-    bool keep_camera_ = false; // the next load is this file again: keep the view
+    ReloadController* reload_ = nullptr; // made with the Settings menu
+    bool keep_camera_ = false;           // the next load is this file again: keep the view
 
     struct Actions; // every QAction, built in main_window_menus.cpp
     std::unique_ptr<Actions> a_;

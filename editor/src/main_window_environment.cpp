@@ -45,7 +45,7 @@ void MainWindow::setupEnvironment() {
 // The Lab's lit frames (the shadows family) lit as the viewport is.
 void MainWindow::updateLabLighting() {
     if (!lab_ || !environment_) return; // both made in the constructor; the Lab after
-    gpu::RenderSettings settings;
+    gpu::FrameRequest settings;
     apply_display(environment_->display(), settings);
     lab_->runner().setLighting(environment_->choice(), settings);
 }

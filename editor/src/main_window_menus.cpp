@@ -29,6 +29,7 @@
 #include "log_dock.h"
 #include "material_dock.h"
 #include "mesh_dock.h"
+#include "reload_controller.h"
 #include "scene_tree_dock.h"
 #include "texture_dock.h"
 #include "timeline_dock.h"
@@ -252,7 +253,13 @@ void MainWindow::createMenus() {
     a.quality = a.settings->addMenu(QString());
     for (QAction* act : a.quality_actions) a.quality->addAction(act);
     a.settings->addAction(a.cache_dir);
-    createReloadWatch(a.settings);
+    reload_ = new ReloadController(
+        context_, settings_, *log_, *a.settings,
+        [this] {
+            keep_camera_ = true; // the same file again: the user looks at one spot
+            reloadScene();
+        },
+        this);
 
     a.help = bar->addMenu(QString());
     a.help->addAction(a.about);
@@ -342,7 +349,7 @@ void MainWindow::retranslate() {
     a.cpu_path->setText(tr("CPU"));
     a.gpu_path->setText(tr("GPU (compute shader, indirect draws)"));
     a.settings->setTitle(tr("&Settings"));
-    retranslateReload();
+    if (reload_) reload_->retranslate();
     a.language->setTitle(tr("&Language"));
     for (QAction* act : a.language_actions)
         act->setChecked(act->data().toString() == translations_.current());

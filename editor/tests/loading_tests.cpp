@@ -13,6 +13,7 @@
 #include "format_values.h"
 #include "log_dock.h"
 #include "main_window.h"
+#include "reload_controller.h"
 #include "render_thread.h"
 #include "scene_load_job.h"
 #include "test_assets.h"
@@ -202,7 +203,7 @@ void LoadingTests::changedFilesAreOfferedOrReloaded() {
         QVERIFY(QFile::copy(source.filePath(f), dir.filePath(f)));
     const QString gltf = dir.filePath(QStringLiteral("BoxTextured.gltf"));
     QVERIFY(load(*window_, gltf));
-    const QStringList watched = window_->watchedFiles();
+    const QStringList watched = window_->reloadController().watchedFiles();
     const QString bin =
         QFileInfo(dir.filePath(QStringLiteral("BoxTextured0.bin"))).absoluteFilePath();
     const QString png =
@@ -211,7 +212,7 @@ void LoadingTests::changedFilesAreOfferedOrReloaded() {
                  watched.contains(png),
              qPrintable(watched.join(QLatin1Char(' '))));
 
-    window_->setReloadAutomatically(false);
+    window_->reloadController().setReloadAutomatically(false);
     window_->viewport()->camera().orbit(30.0f, 10.0f);
     const glm::vec3 eye = window_->viewport()->camera().eye();
     QSignalSpy loaded(window_.get(), &MainWindow::sceneLoaded);
@@ -240,15 +241,15 @@ void LoadingTests::changedFilesAreOfferedOrReloaded() {
     QTRY_VERIFY_WITH_TIMEOUT(loaded.count() == 1, kLoadTimeoutMs);
     QCOMPARE(window_->viewport()->camera().eye(), eye); // the view kept
 
-    window_->setReloadAutomatically(true);
+    window_->reloadController().setReloadAutomatically(true);
     QVERIFY(EditorSettings().reloadAutomatically()); // remembered
     QVERIFY(touch(png));
     QTRY_VERIFY_WITH_TIMEOUT(loaded.count() == 2, kLoadTimeoutMs);
     QVERIFY(!window_->findChild<QMessageBox*>(QStringLiteral("reloadOffer")) ||
             !window_->findChild<QMessageBox*>(QStringLiteral("reloadOffer"))->isVisible());
-    window_->setReloadAutomatically(false);
+    window_->reloadController().setReloadAutomatically(false);
     QVERIFY(load(*window_, QStringLiteral("builtin:default")));
-    QVERIFY(window_->watchedFiles().isEmpty()); // nothing on disk to watch
+    QVERIFY(window_->reloadController().watchedFiles().isEmpty()); // nothing on disk to watch
 }
 
 QTEST_MAIN(LoadingTests)

@@ -5,7 +5,7 @@
 // The pose buffer (pc.pose, written per frame by the PosePass) is one vec4 array:
 // joint matrices (world(joint) x inverseBind, 4 vec4 each) from index 0, then
 // floats (4 per vec4): each instance's morph weights from inst.weight_base, and per
-// joint matrix its joint-influence highlight (1 for RenderSettings::selected_joint)
+// joint matrix its joint-influence highlight (1 for FrameRequest::selected_joint)
 // from pc.highlight_base.
 #ifndef SHERPA_MOTION_GLSL
 #define SHERPA_MOTION_GLSL

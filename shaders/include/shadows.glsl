@@ -4,7 +4,7 @@
 // varyings per cascade set cost more in triangle setup and interpolation on a CPU
 // rasterizer than one selected matrix product per pixel. The comparison sampler
 // filters 2x2 texels per tap; params.w taps: 1, 4 (a 2x2 grid half a texel apart)
-// or 16 (4x4), RenderSettings::shadow_pcf_taps (default 1 on CPU devices, 4 on GPUs).
+// or 16 (4x4), FrameRequest::shadow_pcf_taps (default 1 on CPU devices, 4 on GPUs).
 // Needs `frame` (frame_block.glsl) and `shadow_map` declared by the includer.
 #ifndef SHERPA_SHADOWS_GLSL
 #define SHERPA_SHADOWS_GLSL

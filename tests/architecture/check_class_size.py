@@ -1,27 +1,48 @@
 #!/usr/bin/env python3
-"""Fails when a class in a layer's public headers has more than --limit public member functions.
+"""Fails when a class has more than --limit public or --total-limit member functions in all.
 
-Issue #13: "no class with more than ~12 public member functions outside plain data
-structs". Scans engine/*/include/**/*.h under --root. Every `class` and `struct`
-definition is checked (a struct's members are public until an access label says
-otherwise, so a plain data struct with a helper or two passes on its own); nested
-classes are checked on their own. Counted: each public member function declaration,
-overloads one by one, static and virtual ones included. Not counted: constructors,
-destructors, assignment operators, `= delete`d functions, friends, data members,
-type aliases. EXEMPT names a class that may exceed the limit, with the reason.
-Exit 0 when every class is within the limit, 1 otherwise (one line per class).
+"No god objects": scans the layers' public headers (engine/*/include/**/*.h), their
+private headers (engine/*/src/**/*.h: the classes behind a pimpl, `class Renderer::Impl`
+included) and the editor's (editor/src/**/*.h: MainWindow and its controllers). Every
+`class` and `struct` definition is checked (a struct's members are public until an
+access label says otherwise, so a plain data struct with a helper or two passes on its
+own); nested classes are checked on their own. Counted: each member function
+declaration, overloads one by one, static and virtual ones included; public ones (Qt's
+`signals:` and `public slots:` among them) against --limit, all of them (private,
+protected, private slots) against --total-limit. Not counted: constructors,
+destructors, assignment operators, `= delete`d functions, friends, data members, type
+aliases, Qt's Q_OBJECT-style macros. EXEMPT holds each class not yet split at its
+present size (it may shrink, never grow), with the reason. Exit 0 when every class is
+within its limits, 1 otherwise (one line per class).
 """
 import argparse
 import re
 import sys
 from pathlib import Path
 
-# "Name": "why it may have more public member functions" (none today).
-EXEMPT: dict[str, str] = {}
+# Classes not yet split, each held at the size it has (a ratchet: it may shrink, never
+# grow): name -> (public, all, why). Remove a row once its class is within the limits.
+EXEMPT: dict[str, tuple[int, int, str]] = {
+    "MainWindow": (44, 85, "the window: controllers (load, view, compare, motion) not yet split out"),
+    "FrameRecorder": (16, 39, "frame slots and the ray-traced frames (renderer_rt, renderer_path, "
+                      "renderer_side) are its next seams; set_variant() is the material "
+                      "variant switch's way in, as path_trace_image() is the path tracer's"),
+    "GpuViewport": (28, 32, "the engine behind the viewport: not yet reduced to Qt glue"),
+    "ViewportWindow": (19, 30, "the viewport window: input, divider and frame pacing in one class"),
+    "LabDock": (16, 29, "the Lab dock: runner wiring and table/chart in one class"),
+    "EditorContext": (22, 23, "the editor's shared state: selection, visibility and session in one"),
+    "TimelineDock": (16, 21, "the timeline: playback state and widgets in one class"),
+    "Format": (19, 19, "a static number-formatting table (a namespace in a class, for tr())"),
+    "CullingMonitor": (18, 19, "the culling dock's model: history, chart data and check state"),
+    "OrbitCamera": (17, 19, "the orbit camera: input mapping and camera state"),
+    "CompareControls": (17, 19, "the comparison controls: actions and their state"),
+    "EditorSettings": (18, 18, "typed QSettings accessors, one pair per setting"),
+    "RenderThread": (13, 16, "the render thread: tasks, frames and readbacks"),
+}
 
-ACCESS = re.compile(r"^\s*(public|private|protected)\s*:(?!:)")
+ACCESS = re.compile(r"^\s*(public|private|protected|signals|Q_SIGNALS)\s*(?:slots\s*|Q_SLOTS\s*)?:(?!:)")
 CLASS_HEAD = re.compile(
-    r"^(?:template\s*<.*>\s*)?(class|struct)\s+(?:\[\[[^\]]*\]\]\s*)?(\w+)\s*(?:final\s*)?(?::[^{]*)?$",
+    r"^(?:template\s*<.*>\s*)?(class|struct)\s+(?:\[\[[^\]]*\]\]\s*)?(?:[A-Z_]+_EXPORT\s+)?((?:\w+::)*\w+)\s*(?:final\s*)?(?::(?!:)[^{]*)?$",
     re.S)
 SKIP_WORDS = ("friend", "using", "typedef", "static_assert", "enum", "class", "struct", "union")
 
@@ -30,6 +51,8 @@ def strip_code(text):
     """Source without comments, string/char literals and preprocessor lines."""
     text = re.sub(r"//[^\n]*|/\*.*?\*/", " ", text, flags=re.S)
     text = re.sub(r'"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'', '""', text)
+    # Qt's class macros (Q_OBJECT, Q_DISABLE_COPY(X), ...) end without a semicolon.
+    text = re.sub(r"\bQ_(?!SIGNALS\b|SLOTS\b)[A-Z_]+\b(?:\([^()]*\))?", " ", text)
     return re.sub(r"^[ \t]*#[^\n]*(?:\\\n[^\n]*)*", " ", text, flags=re.M)
 
 
@@ -56,10 +79,11 @@ def function_name(decl):
 
 
 def scan(text):
-    """[(class name, line, public member functions)] for every class defined in `text`."""
+    """[(class name, line, public, all member functions)] for every class defined in `text`."""
     text = strip_code(text)
     classes = []
-    # Scope stack: ("class", record) or ("other", None); record = [name, line, count, access]
+    # Scope stack: ("class", record) or ("other", None);
+    # record = [name, line, public count, access, total count]
     stack = [("other", None)]
     buf, line = "", 1
 
@@ -69,20 +93,23 @@ def scan(text):
             m = ACCESS.match(stmt)
             if not m:
                 break
-            rec[3] = m.group(1)
+            rec[3] = "public" if m.group(1) in ("signals", "Q_SIGNALS") else m.group(1)
             stmt = stmt[m.end():]
         return stmt.strip()
 
     def member(stmt):
         kind, rec = stack[-1]
-        if kind != "class" or rec[3] != "public":
+        if kind != "class":
             return
         name = function_name(stmt)
-        if name is None or name in (rec[0], "~" + rec[0]) or name.startswith("~"):
+        own = rec[0].rsplit("::", 1)[-1]
+        if name is None or name in (own, "~" + own) or name.startswith("~"):
             return
         if name == "operator=" or re.search(r"=\s*delete\s*$", stmt):
             return
-        rec[2] += 1
+        rec[4] += 1
+        if rec[3] == "public":
+            rec[2] += 1
 
     for ch in text:
         if ch == "\n":
@@ -93,7 +120,7 @@ def scan(text):
             buf = ""
             m = CLASS_HEAD.match(head)
             if m and not head.startswith("enum"):
-                rec = [m.group(2), head_line, 0, "public" if m.group(1) == "struct" else "private"]
+                rec = [m.group(2), head_line, 0, "public" if m.group(1) == "struct" else "private", 0]
                 classes.append(rec)
                 stack.append(("class", rec))
             elif re.match(r"^(namespace\b|extern\s*\"\"|$)", head) and stack[-1][0] != "block":
@@ -111,30 +138,45 @@ def scan(text):
             buf = ""
         elif stack[-1][0] != "block":
             buf += ch
-    return [(name, at, count) for name, at, count, _ in classes]
+    return [(name, at, count, total) for name, at, count, _, total in classes]
+
+
+HEADER_GLOBS = ("engine/*/include/**/*.h", "engine/*/src/**/*.h", "editor/src/**/*.h")
 
 
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--root", required=True, type=Path)
-    ap.add_argument("--limit", type=int, default=12)
-    ap.add_argument("--list", action="store_true", help="print every class with its count")
+    ap.add_argument("--limit", type=int, default=12, help="public member functions")
+    ap.add_argument("--total-limit", type=int, default=25, help="member functions in all")
+    ap.add_argument("--list", action="store_true", help="print every class with its counts")
     args = ap.parse_args(argv)
-    headers = sorted(args.root.glob("engine/*/include/**/*.h"))
+    headers = sorted({h for g in HEADER_GLOBS for h in args.root.glob(g)})
     if not headers:
-        print(f"no public headers under {args.root}/engine/*/include")
+        print(f"no headers under {args.root}/engine/*/include, engine/*/src or editor/src")
         return 1
     over = 0
     for path in headers:
         rel = path.relative_to(args.root)
-        for name, at, count in scan(path.read_text(encoding="utf-8", errors="replace")):
+        for name, at, count, total in scan(path.read_text(encoding="utf-8", errors="replace")):
             if args.list:
-                print(f"{count:3d} {name} ({rel}:{at})")
-            if count > args.limit and name not in EXEMPT:
+                print(f"{count:3d} {total:3d} {name} ({rel}:{at})")
+            if count <= args.limit and total <= args.total_limit:
+                continue
+            if name in EXEMPT:
+                held_public, held_total, _ = EXEMPT[name]
+                if count <= held_public and total <= held_total:
+                    continue
                 over += 1
-                print(f"{rel}:{at}: class {name} has {count} public member functions "
-                      f"(limit {args.limit}): split it along its seams")
-    print(f"{len(headers)} header(s), {over} class(es) over {args.limit} public member functions")
+                print(f"{rel}:{at}: class {name} grew to {count} public, {total} in all "
+                      f"(held at {held_public}, {held_total} until it is split)")
+                continue
+            over += 1
+            print(f"{rel}:{at}: class {name} has {count} public member functions (limit "
+                  f"{args.limit}), {total} in all (limit {args.total_limit}): split it along "
+                  f"its seams")
+    print(f"{len(headers)} header(s), {over} class(es) over {args.limit} public or "
+          f"{args.total_limit} member functions")
     return 1 if over else 0
 
 

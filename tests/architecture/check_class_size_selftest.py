@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
 """Shows that check_class_size.py counts what it must, on made-up headers in a temporary folder.
 
-Runs the checker as CTest does on a tree whose one header holds classes at and over
-the limit, written with what real headers contain (constructors, deleted copies,
-inline bodies, overloads, statics, operators, data members with parentheses,
-comments, nested types, private and protected sections). Exit 0 when every case
+Runs the checker as CTest does on trees whose headers hold classes at and over the
+limits (public, and all member functions; public, private and editor headers),
+written with what real headers contain (constructors, deleted copies, inline bodies,
+overloads, statics, operators, data members with parentheses, comments, nested
+types, private and protected sections, Qt's macros, signals and slots, a private
+Impl, a class held at its size). Exit 0 when every case
 behaves, 1 otherwise.
 """
 import sys
@@ -86,10 +88,46 @@ public:
 }
 """
 
+QT = """#pragma once
+namespace sherpa::editor {
+class Window : public QMainWindow {
+    Q_OBJECT
+    Q_DISABLE_COPY(Window)
+public:
+    explicit Window(QWidget* parent = nullptr);
+    void p1(); void p2(); void p3(); void p4(); void p5(); void p6(); void p7();
+    void p8(); void p9(); void p10();
+signals:
+    void changed(int);
+    void done();
+public slots:
+    void go();
+private slots:
+    void s1(); void s2(); void s3(); void s4(); void s5(); void s6(); void s7();
+private:
+    void q1(); void q2(); void q3(); void q4(); void q5(); void q6(); void q7();
+};
+}
+"""
+
+IMPL = """#pragma once
+namespace sherpa::gpu {
+class Widget::Impl {
+public:
+    void a1(); void a2(); void a3();
+private:
+    void b1(); void b2(); void b3(); void b4(); void b5(); void b6(); void b7(); void b8();
+    void b9(); void b10(); void b11(); void b12(); void b13(); void b14(); void b15();
+    void b16(); void b17(); void b18(); void b19(); void b20(); void b21(); void b22();
+    void b23();
+};
+}
+"""
+
 # (name, headers {path: text}, extra args, expected exit code, fragments the output must contain)
 CASES = [
     ("twelve public functions pass", {"engine/gpu/include/sherpa/gpu/a.h": AT_LIMIT}, ["--list"],
-     0, [" 12 AtLimit (engine/gpu/include/sherpa/gpu/a.h:7)", "  3 Nested",
+     0, [" 12  17 AtLimit (engine/gpu/include/sherpa/gpu/a.h:7)", "  3   3 Nested",
          "0 class(es) over 12"]),
     ("thirteen fail, nested classes on their own",
      {"engine/gpu/include/sherpa/gpu/a.h": AT_LIMIT, "engine/render/include/sherpa/render/b.h": OVER},
@@ -99,11 +137,27 @@ CASES = [
     ("a lower limit catches the class at twelve",
      {"engine/gpu/include/sherpa/gpu/a.h": AT_LIMIT}, ["--limit", "11"], 1,
      ["class AtLimit has 12 public member functions (limit 11)"]),
-    ("private headers are not checked", {"engine/gpu/include/sherpa/gpu/a.h": AT_LIMIT,
-                                         "engine/render/src/b.h": OVER}, [], 0,
-     ["1 header(s), 0 class(es)"]),
+    ("private headers are checked", {"engine/gpu/include/sherpa/gpu/a.h": AT_LIMIT,
+                                     "engine/render/src/b.h": OVER}, [], 1,
+     ["engine/render/src/b.h:3: class Over has 13 public", "2 header(s), 2 class(es)"]),
+    ("a private Impl counts every member function, named with its outer class",
+     {"engine/render/src/renderer_impl.h": IMPL}, ["--list"], 1,
+     ["  3  26 Widget::Impl", "class Widget::Impl has 3 public member functions (limit 12), "
+      "26 in all (limit 25)"]),
+    ("a class not yet split is held at its size: within passes, grown fails",
+     {"editor/src/main_window.h": QT.replace("Window", "MainWindow")}, [], 0,
+     ["0 class(es) over"]),
+    ("a class not yet split may not grow",
+     {"editor/src/main_window.h": QT.replace("Window", "MainWindow").replace(
+         "void p1();", "void p1();" + "".join(f" void g{i}();" for i in range(80)))}, [], 1,
+     ["class MainWindow grew to 93 public, 107 in all (held at "]),
+    ("Qt: signals and public slots are public, private slots count in all, macros are not",
+     {"editor/src/window.h": QT}, ["--list"], 1,
+     [" 13  27 Window (editor/src/window.h:3)", "class Window has 13 public"]),
+    ("a lower total limit catches a class by its private functions",
+     {"engine/gpu/include/sherpa/gpu/a.h": AT_LIMIT}, ["--total-limit", "16"], 1,
+     ["class AtLimit has 12 public member functions (limit 12), 17 in all (limit 16)"]),
 ]
-
 
 def main():
     return run_cases("check_class_size", CHECKER, CASES)

@@ -18,7 +18,7 @@ constexpr const char* kGrazing = "eye=0,0.6,9:target=0,0,-20:fov=60";
 class CheckerTest : public GpuTest {
 protected:
     std::vector<std::uint8_t> render(std::uint32_t size, float density) {
-        gpu::RenderSettings s;
+        gpu::FrameRequest s;
         s.width = s.height = size;
         s.view = gpu::DebugView::Uv0Checker;
         s.uv_checker_density = density;

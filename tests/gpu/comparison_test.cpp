@@ -29,8 +29,8 @@ TEST_F(ComparisonTest, SplitShowsSideALeftAndSideBRight) {
     auto scene = load(gltf_asset("BoxTextured"));
     ASSERT_TRUE(scene);
     auto a = make_renderer(*scene), b = make_renderer(*scene);
-    const gpu::RenderSettings sa = small_settings(*scene, gpu::DebugView::Lit);
-    const gpu::RenderSettings sb = small_settings(*scene, gpu::DebugView::Normal);
+    const gpu::FrameRequest sa = small_settings(*scene, gpu::DebugView::Lit);
+    const gpu::FrameRequest sb = small_settings(*scene, gpu::DebugView::Normal);
     std::vector<std::uint8_t> alone_a, alone_b, split;
     a->render(sa, &alone_a);
     b->render(sb, &alone_b);
@@ -64,7 +64,7 @@ TEST_F(ComparisonTest, DifferenceOfASceneWithItselfIsBlack) {
     auto scene = load(gltf_asset("BoxTextured"));
     ASSERT_TRUE(scene);
     auto a = make_renderer(*scene), b = make_renderer(*scene);
-    const gpu::RenderSettings s = small_settings(*scene, gpu::DebugView::Lit);
+    const gpu::FrameRequest s = small_settings(*scene, gpu::DebugView::Lit);
     gpu::ComparisonSettings c;
     c.mode = gpu::CompareMode::Difference;
     c.heat_max = 0.0f; // automatic: statistics first, composite in a second submission
@@ -122,11 +122,11 @@ TEST_F(ComparisonTest, RasterAgainstRaysMatchesCpuStatisticsAndHeatColours) {
 TEST_F(ComparisonTest, ShaderHeatAgreesWithHeatColour) {
     Scene empty;
     auto a = make_renderer(empty), b = make_renderer(empty);
-    gpu::RenderSettings sa;
+    gpu::FrameRequest sa;
     sa.width = 8;
     sa.height = 4;
     sa.shadows = false;
-    gpu::RenderSettings sb = sa;
+    gpu::FrameRequest sb = sa;
     sa.clear_color = {0.0f, 0.0f, 0.0f, 1.0f};
     std::vector<std::uint8_t> alone;
     for (float red : {0.002f, 0.01f, 0.05f, 0.2f, 1.0f}) {
@@ -157,7 +157,7 @@ TEST_F(ComparisonTest, DegenerateSizesDividersAndSidesNeitherCrashNorLie) {
     Scene empty;
     auto a = make_renderer(*scene), b = make_renderer(empty);
     for (auto [w, h] : {std::pair{1u, 1u}, std::pair{3u, 1u}, std::pair{17u, 5u}}) {
-        gpu::RenderSettings sa = small_settings(*scene, gpu::DebugView::Normal);
+        gpu::FrameRequest sa = small_settings(*scene, gpu::DebugView::Normal);
         sa.width = w;
         sa.height = h;
         std::vector<std::uint8_t> alone_a, alone_b, image;
@@ -181,8 +181,8 @@ TEST_F(ComparisonTest, DegenerateSizesDividersAndSidesNeitherCrashNorLie) {
     ASSERT_TRUE(morph);
     if (!context().info().ray_tracing_enabled) return;
     auto raster = make_renderer(*morph), rays = make_renderer(*morph, true);
-    const gpu::RenderSettings sm = small_settings(*morph, gpu::DebugView::Normal);
-    gpu::RenderSettings sr = sm;
+    const gpu::FrameRequest sm = small_settings(*morph, gpu::DebugView::Normal);
+    gpu::FrameRequest sr = sm;
     sr.renderer = gpu::RendererKind::RayTraced;
     gpu::ComparisonSettings c;
     c.mode = gpu::CompareMode::Difference;

@@ -48,8 +48,8 @@ inline CpuStats cpu_stats(const std::vector<std::uint8_t>& a, const std::vector<
     return s;
 }
 
-inline gpu::RenderSettings small_settings(const Scene& scene, gpu::DebugView view) {
-    gpu::RenderSettings s;
+inline gpu::FrameRequest small_settings(const Scene& scene, gpu::DebugView view) {
+    gpu::FrameRequest s;
     s.width = kW;
     s.height = kH;
     s.shadows = false;
@@ -135,7 +135,7 @@ inline std::size_t heat_mismatches(const std::vector<std::uint8_t>& heat, const 
 // each side's image rendered alone.
 struct RasterAndRays {
     std::unique_ptr<gpu::Renderer> a, b;
-    gpu::RenderSettings sa, sb;
+    gpu::FrameRequest sa, sb;
     std::vector<std::uint8_t> alone_a, alone_b;
 };
 
@@ -159,7 +159,7 @@ protected:
         options.ray_tracing = rt;
         options.textures = test_texture_settings();
         auto r = std::make_unique<gpu::Renderer>(context(), options);
-        r->load(scene, gpu::StreamPolicy::AllPresent);
+        r->load(scene, streams_setup(gpu::StreamPolicy::AllPresent));
         return r;
     }
 };

@@ -48,7 +48,7 @@ FurnaceResult EnvironmentTest::furnace(float metallic, bool compensation, int co
                                  sphere_row_gltf(count, metallic))
                           .string());
     renderer().load(*scene);
-    gpu::RenderSettings s = furnace_view(count, 64); // every sphere ~50 px across
+    gpu::FrameRequest s = furnace_view(count, 64); // every sphere ~50 px across
     s.energy_compensation = compensation;
     const auto rgba = draw(s);
     FurnaceResult out;
@@ -134,7 +134,7 @@ TEST_F(EnvironmentTest, Sh9AndCubeIrradianceAgreeOnALinearEnvironment) {
     });
     auto scene = load(write_temp("rough.gltf", sphere_row_gltf(3, 0.0f)).string());
     renderer().load(*scene);
-    gpu::RenderSettings s = furnace_view(3, 64);
+    gpu::FrameRequest s = furnace_view(3, 64);
     renderer().set_environment(&linear);
     const auto cube = draw(s);
     gpu::EnvironmentOptions options;
@@ -212,7 +212,7 @@ TEST_F(EnvironmentTest, BackgroundFollowsTheEquirectangularConventionAndRotation
         {"eye=0,0,0:target=1,0,0", 90.0f, {0, 0, 255}},
     };
     for (const Case& c : cases) {
-        gpu::RenderSettings s;
+        gpu::FrameRequest s;
         s.width = s.height = 32;
         std::string error;
         ASSERT_TRUE(gpu::parse_camera_spec(c.camera, s.camera, error)) << error;

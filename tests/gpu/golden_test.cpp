@@ -58,7 +58,7 @@ TEST_P(GoldenTest, MatchesCommittedImage) {
     const GoldenCase& c = GetParam();
     auto scene = load(scene_spec(c.scene));
     ASSERT_TRUE(scene);
-    gpu::RenderSettings s;
+    gpu::FrameRequest s;
     s.width = c.width;
     s.height = c.height;
     s.view = *gpu::parse_debug_view(c.view);
@@ -66,8 +66,9 @@ TEST_P(GoldenTest, MatchesCommittedImage) {
     s.glyph_length = c.glyph_length;
     std::string error;
     ASSERT_TRUE(gpu::parse_camera_spec(c.camera, s.camera, error)) << error;
-    renderer().load(*scene, gpu::needs_all_streams(s) ? gpu::StreamPolicy::AllPresent
-                                                      : gpu::StreamPolicy::UsedByMaterials);
+    renderer().load(*scene,
+                    streams_setup(gpu::needs_all_streams(s) ? gpu::StreamPolicy::AllPresent
+                                                            : gpu::StreamPolicy::UsedByMaterials));
     std::vector<std::uint8_t> actual;
     renderer().render(s, &actual);
     renderer().unload();

@@ -31,6 +31,13 @@ inline gpu::TextureSettings test_texture_settings() {
     return s;
 }
 
+// A scene setup with `streams` uploaded, the rest as by default.
+inline gpu::SceneSetup streams_setup(gpu::StreamPolicy streams) {
+    gpu::SceneSetup setup;
+    setup.streams = streams;
+    return setup;
+}
+
 // `scene`'s textures prepared for `device` with `settings`, as sherpa-cli render does.
 inline std::shared_ptr<const tex::PreparedTextureSet>
 prepare_for_device(const Scene& scene, const gpu::DeviceInfo& device,
@@ -63,8 +70,9 @@ struct GpuEnvironment {
         gpu::ContextOptions options;
         options.validation = true; // every GPU test runs under the Khronos layer
         context = std::make_unique<gpu::Context>(options);
-        renderer = std::make_unique<gpu::Renderer>(*context);
-        renderer->set_texture_settings(test_texture_settings());
+        gpu::RendererOptions renderer_options;
+        renderer_options.textures = test_texture_settings();
+        renderer = std::make_unique<gpu::Renderer>(*context, renderer_options);
     }
     static GpuEnvironment& get() {
         static GpuEnvironment env;
@@ -85,7 +93,7 @@ protected:
     void TearDown() override { expect_no_validation_since(context(), seen_); }
 
     // The frame `s` asks for, as RGBA8 rows (top first).
-    std::vector<std::uint8_t> draw(const gpu::RenderSettings& s) {
+    std::vector<std::uint8_t> draw(const gpu::FrameRequest& s) {
         std::vector<std::uint8_t> rgba;
         renderer().render(s, &rgba);
         return rgba;

@@ -100,8 +100,8 @@ Outline classify_outline(const std::vector<std::uint8_t>& plain,
 
 class HighlightTest : public GpuTest {
 protected:
-    gpu::RenderSettings settings() {
-        gpu::RenderSettings s;
+    gpu::FrameRequest settings() {
+        gpu::FrameRequest s;
         s.width = s.height = kSize;
         std::string error;
         EXPECT_TRUE(gpu::parse_camera_spec("eye=1.5,1.2,2:target=0,0,0", s.camera, error)) << error;
@@ -114,7 +114,7 @@ TEST_F(HighlightTest, SelectedInstanceIsOutlinedNotTinted) {
     ASSERT_TRUE(scene);
     ASSERT_EQ(scene->instances.size(), 1u);
     renderer().load(*scene);
-    gpu::RenderSettings s = settings();
+    gpu::FrameRequest s = settings();
     const std::vector<std::uint8_t> plain_rgba = draw(s);
     const Counts plain = count_highlight(plain_rgba);
 
@@ -149,7 +149,7 @@ TEST_F(HighlightTest, DoubleSidedPlaneIsOutlinedToo) {
     ASSERT_TRUE(scene);
     ASSERT_FALSE(scene->instances.empty());
     renderer().load(*scene);
-    gpu::RenderSettings s = settings();
+    gpu::FrameRequest s = settings();
     std::string error;
     ASSERT_TRUE(gpu::parse_camera_spec("eye=0.4,2.5,1.2:target=0,0,0", s.camera, error)) << error;
     const std::vector<std::uint8_t> plain = draw(s);
@@ -167,7 +167,7 @@ TEST_F(HighlightTest, SubtreeOutlineAlongsideOtherLineOverlays) {
     auto scene = load("builtin:default");
     ASSERT_TRUE(scene);
     renderer().load(*scene);
-    gpu::RenderSettings s = settings();
+    gpu::FrameRequest s = settings();
     s.camera = {};
     s.overlays = gpu::kOverlayBounds | gpu::kOverlayCullBoxes;
     const Counts plain = count_highlight(draw(s));

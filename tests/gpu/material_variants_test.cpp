@@ -96,7 +96,7 @@ TEST(MaterialVariants, BadMappingsAreWarnedWithTheirPointerAndKeepTheDefault) {
 class VariantSwitch : public GpuTest {
 protected:
     std::vector<std::uint8_t> frame(gpu::Renderer& r, gpu::CullPath cull) {
-        gpu::RenderSettings s;
+        gpu::FrameRequest s;
         s.width = 160;
         s.height = 120;
         std::string error;

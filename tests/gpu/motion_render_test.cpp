@@ -45,20 +45,20 @@ TEST_F(MotionRenderTest, GpuSkinningAndMorphingMatchTheCpuPosedStaticMesh) {
         const auto pose =
             std::make_shared<const Pose>(evaluate_pose(*scene, 0, mid_time(*scene, 0)));
         const Scene cpu = freeze_pose(*scene, *pose);
-        gpu::RenderSettings s;
+        gpu::FrameRequest s;
         s.width = 160;
         s.height = 120;
         s.shadows = false;
         s.camera = camera_on(posed_scene_bounds(*scene, *pose).exact);
         for (gpu::DebugView view : {gpu::DebugView::BaseColor, gpu::DebugView::Normal}) {
             s.view = view;
-            renderer().load(*scene, gpu::StreamPolicy::AllPresent);
+            renderer().load(*scene, streams_setup(gpu::StreamPolicy::AllPresent));
             ASSERT_GT(renderer().scene()->memory().motion, 0u) << "moving meshes hold streams";
             s.pose = pose;
             const auto gpu_posed = draw(s);
             s.pose = nullptr; // the scene as loaded: default pose and weights
             const auto gpu_bind = draw(s);
-            renderer().load(cpu, gpu::StreamPolicy::AllPresent);
+            renderer().load(cpu, streams_setup(gpu::StreamPolicy::AllPresent));
             EXPECT_EQ(renderer().scene()->memory().motion, 0u) << "the CPU-posed copy is static";
             const auto cpu_posed = draw(s);
             const std::size_t pixels = std::size_t{s.width} * s.height;
@@ -93,7 +93,7 @@ TEST_F(MotionRenderTest, CullingNeverRemovesAMovingInstanceFromTheImage) {
                 const double t = anim.start + (anim.end - anim.start) * k / 5.0;
                 SCOPED_TRACE("animation " + std::to_string(a) + " at " + std::to_string(t));
                 auto pose = std::make_shared<const Pose>(evaluate_pose(*scene, int(a), t));
-                gpu::RenderSettings s;
+                gpu::FrameRequest s;
                 s.width = 96;
                 s.height = 72;
                 s.pose = pose;
@@ -144,7 +144,7 @@ TEST_F(MotionRenderTest, JointInfluenceShowsTheSelectedJointsWeight) {
     ASSERT_FALSE(scene->skins.empty());
     ASSERT_GE(scene->skins[0].joints.size(), 2u);
     renderer().load(*scene);
-    gpu::RenderSettings s;
+    gpu::FrameRequest s;
     s.width = 96;
     s.height = 96;
     s.view = gpu::DebugView::JointInfluence;

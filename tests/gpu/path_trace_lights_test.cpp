@@ -106,8 +106,8 @@ protected:
 
     // The floor from above the light (its single-sided back is invisible from there), in
     // a black environment, no sun.
-    static gpu::RenderSettings view() {
-        gpu::RenderSettings s;
+    static gpu::FrameRequest view() {
+        gpu::FrameRequest s;
         s.width = s.height = 64;
         std::string error;
         EXPECT_TRUE(gpu::parse_camera_spec("eye=0,4,2.5:target=0,0,0:fov=60", s.camera, error));
@@ -142,7 +142,7 @@ TEST_F(PathTraceLights, LightSamplingAgreesWithBsdfSamplingAndLowersTheError) {
     BlackEnvironment black(rt());
     auto scene = load(write_temp("pt_lights.gltf", lit_floor_gltf("[1,1,1]", "10")).string());
     rt().load(*scene);
-    gpu::RenderSettings s = view();
+    gpu::FrameRequest s = view();
     s.path.samples = 64;
     s.path.restart = true;
     rt().render(s);
@@ -175,7 +175,7 @@ TEST_F(PathTraceLights, AbsurdEmissionGivesAFiniteImage) {
         auto scene =
             load(write_temp("pt_lights_huge.gltf", lit_floor_gltf("[1,1,1]", strength)).string());
         rt().load(*scene);
-        gpu::RenderSettings s = view();
+        gpu::FrameRequest s = view();
         s.path.samples = 8;
         s.path.restart = true;
         std::vector<std::uint8_t> rgba;

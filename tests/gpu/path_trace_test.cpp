@@ -123,10 +123,10 @@ protected:
 
     // A row of `count` white unit spheres (roughness i / (count - 1)), 48 px apart,
     // seen from far away; linear tone mapping at -1 EV on a black background.
-    gpu::RenderSettings sphere_row(int count, float metallic, const char* name) {
+    gpu::FrameRequest sphere_row(int count, float metallic, const char* name) {
         auto scene = load(write_temp(name, sphere_row_gltf(count, metallic, 96)).string());
         rt().load(*scene);
-        gpu::RenderSettings s = furnace_view(count, 48);
+        gpu::FrameRequest s = furnace_view(count, 48);
         s.renderer = gpu::RendererKind::RayTraced;
         s.path.restart = true;
         return s;
@@ -149,12 +149,14 @@ protected:
 
     // Sums of the frame of `s` with every sphere but `index` hidden (a sphere in the
     // furnace must not see its neighbours).
-    gpu::PathTraceImage alone(gpu::RenderSettings s, std::uint32_t index, std::uint32_t count) {
+    gpu::PathTraceImage alone(gpu::FrameRequest s, std::uint32_t index, std::uint32_t count) {
         auto hidden = std::make_shared<std::vector<bool>>(count, true);
         (*hidden)[index] = false;
-        s.hidden_nodes = hidden;
+        rt().set_hidden_nodes(hidden);
         rt().render(s);
-        return gpu::read_path_trace(rt());
+        gpu::PathTraceImage image = gpu::read_path_trace(rt());
+        rt().set_hidden_nodes(nullptr); // the next frame shows every sphere again
+        return image;
     }
 
     // Mean red radiance of each sphere in a raster frame (8-bit sRGB at -1 EV).
@@ -189,7 +191,7 @@ TEST_F(PathTraceTest, FurnaceMatchesOneForAMirrorAndTheAlbedoOfRoughMetal) {
     rt().set_environment(&uniform);
     constexpr std::uint32_t kCount = 3; // roughness 0, 0.5, 1
     for (const float metallic : {1.0f, 0.0f}) {
-        gpu::RenderSettings s =
+        gpu::FrameRequest s =
             sphere_row(kCount, metallic, metallic > 0 ? "pt_metal.gltf" : "pt_dielectric.gltf");
         s.path.samples = 64;
         std::vector<double> pt;
@@ -232,7 +234,7 @@ TEST_F(PathTraceTest, DeterministicProgressiveAndErrorFallsAsOneOverRootSpp) {
     RemoveEnvironment guard{rt()};
     const gpu::EnvironmentImage room = gpu::room_environment(256);
     rt().set_environment(&room);
-    gpu::RenderSettings s = sphere_row(3, 0.0f, "pt_room.gltf");
+    gpu::FrameRequest s = sphere_row(3, 0.0f, "pt_room.gltf");
     s.tone_map = gpu::ToneMap::Neutral;
     s.exposure = 0.0f;
     s.sun = true; // a sun with its angular radius, traced shadows

@@ -84,7 +84,7 @@ TEST_F(PathTraceVolumeTest, SlabTransmittanceFollowsBeerLambert) {
         load(write_temp("pt_slabs.gltf", slab_row_gltf(thickness, colour, distance)).string());
     EXPECT_TRUE(scene->warnings.empty()) << scene->warnings.front();
     rt.load(*scene);
-    gpu::RenderSettings s = furnace_view(int(thickness.size()), 48);
+    gpu::FrameRequest s = furnace_view(int(thickness.size()), 48);
     s.renderer = gpu::RendererKind::RayTraced;
     s.path.restart = true;
     s.path.samples = 16;

@@ -15,7 +15,7 @@ TEST_F(ComparisonTest, PresentedRayTracedFrameIsTheOffscreenImage) {
     auto scene = load(gltf_asset("BoxTextured"));
     ASSERT_TRUE(scene);
     auto r = make_renderer(*scene, true);
-    gpu::RenderSettings s = small_settings(*scene, gpu::DebugView::Normal);
+    gpu::FrameRequest s = small_settings(*scene, gpu::DebugView::Normal);
     s.renderer = gpu::RendererKind::RayTraced;
     std::vector<std::uint8_t> offscreen;
     r->render(s, &offscreen);
@@ -34,7 +34,7 @@ TEST_F(ComparisonTest, PresentedRayTracedFrameIsTheOffscreenImage) {
     // Half resolution: every pixel is one of the reduced image's, scaled up nearest.
     gpu::PresentedFrame half(*r, s, 0.5f);
     const auto shown = present_offscreen(context(), r->resources(), half, VK_FORMAT_R8G8B8A8_SRGB);
-    gpu::RenderSettings small = s;
+    gpu::FrameRequest small = s;
     small.width = kW / 2;
     small.height = kH / 2;
     std::vector<std::uint8_t> reduced;

@@ -2,7 +2,7 @@
 // in the lit view and in every debug view with every overlay.
 #include "gpu_test_support.h"
 
-#include <sherpa/render/render_settings.h>
+#include <sherpa/render/frame_request.h>
 #include <sherpa/scene/usage_report.h>
 
 namespace sherpa::test {
@@ -31,7 +31,7 @@ class RenderAssetTest : public GpuTest, public ::testing::WithParamInterface<std
 TEST_P(RenderAssetTest, RendersValidationCleanAndDrawsSomething) {
     auto scene = load(GetParam());
     ASSERT_TRUE(scene);
-    gpu::RenderSettings s;
+    gpu::FrameRequest s;
     s.width = 96;
     s.height = 64;
     renderer().load(*scene);
@@ -68,8 +68,8 @@ TEST_F(DebugViewTest, EveryViewAndOverlayIsValidationClean) {
     for (const std::string name : {"MultiUVTest", "AlphaBlendModeTest", "BoxVertexColors"}) {
         auto scene = load(gltf_asset(name));
         ASSERT_TRUE(scene);
-        renderer().load(*scene, gpu::StreamPolicy::AllPresent);
-        gpu::RenderSettings s;
+        renderer().load(*scene, streams_setup(gpu::StreamPolicy::AllPresent));
+        gpu::FrameRequest s;
         s.width = 64;
         s.height = 48;
         s.overlays = gpu::kOverlayWireframe | gpu::kOverlayNormals | gpu::kOverlayTangents |
@@ -107,7 +107,7 @@ TEST_F(DebugViewTest, GpuHoldsOnlyTheStreamsTheUsageReportAsksFor) {
         const UsageReport usage = build_usage_report(*scene);
         for (gpu::StreamPolicy policy :
              {gpu::StreamPolicy::UsedByMaterials, gpu::StreamPolicy::AllPresent}) {
-            renderer().load(*scene, policy);
+            renderer().load(*scene, streams_setup(policy));
             const gpu::GpuScene& g = *renderer().scene();
             for (const PrimitiveUsage& u : usage.primitives) {
                 if (u.instances == 0 || scene->meshes[u.mesh_id].indices.empty()) continue;

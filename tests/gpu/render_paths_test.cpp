@@ -3,7 +3,7 @@
 // for the vertex streams a mesh holds give the same pixels as the general paths.
 #include "gpu_test_support.h"
 
-#include <sherpa/render/render_settings.h>
+#include <sherpa/render/frame_request.h>
 
 #include <cstdlib>
 
@@ -29,11 +29,11 @@ class RenderPathTest : public GpuTest, public ::testing::WithParamInterface<cons
 protected:
     std::vector<std::uint8_t> render(const Scene& scene, gpu::StreamPolicy policy,
                                      gpu::PrepassMode prepass) {
-        gpu::RenderSettings s;
+        gpu::FrameRequest s;
         s.width = 128;
         s.height = 96;
         s.depth_prepass = prepass;
-        renderer().load(scene, policy);
+        renderer().load(scene, streams_setup(policy));
         std::vector<std::uint8_t> rgba;
         renderer().render(s, &rgba);
         renderer().unload();

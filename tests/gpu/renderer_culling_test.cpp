@@ -12,8 +12,8 @@ namespace {
 
 class RendererCullingTest : public GpuTest {
 protected:
-    static gpu::RenderSettings settings(gpu::CullPath path, bool check = false) {
-        gpu::RenderSettings s;
+    static gpu::FrameRequest settings(gpu::CullPath path, bool check = false) {
+        gpu::FrameRequest s;
         s.width = 320;
         s.height = 180;
         std::string error;

@@ -3,12 +3,12 @@
 // (shaders/include/surface_views.glsl) over two independent data paths (vertex
 // pulling + hardware interpolation vs. GPUGeometryInfo records + hit barycentrics,
 // winding/cull state vs. object-space facing in any-hit). Both sample textures at
-// mip 0 (RenderSettings::texture_lod), so the images must agree on >= 99.5% of the
+// mip 0 (FrameRequest::texture_lod), so the images must agree on >= 99.5% of the
 // covered pixels within 2/255 per channel, a one-pixel band at silhouettes aside.
 // A disagreement is a bug in one of the paths: do not loosen the tolerance.
 #include "gpu_test_support.h"
 
-#include <sherpa/render/render_settings.h>
+#include <sherpa/render/frame_request.h>
 
 #include <cstdio>
 
@@ -74,8 +74,8 @@ protected:
         options.ray_tracing = true;
         options.textures = test_texture_settings();
         gpu::Renderer renderer(context(), options);
-        renderer.load(scene, gpu::StreamPolicy::AllPresent);
-        gpu::RenderSettings s;
+        renderer.load(scene, streams_setup(gpu::StreamPolicy::AllPresent));
+        gpu::FrameRequest s;
         s.width = 96; // lavapipe traces on the CPU: small images keep CI short
         s.height = 72;
         s.shadows = false;
@@ -154,8 +154,8 @@ TEST_F(RtExactness, PosedRaysDifferFromTheBindPoseAndMatchRaster) {
     options.ray_tracing = true;
     options.textures = test_texture_settings();
     gpu::Renderer renderer(context(), options);
-    renderer.load(*scene, gpu::StreamPolicy::AllPresent);
-    gpu::RenderSettings s;
+    renderer.load(*scene, streams_setup(gpu::StreamPolicy::AllPresent));
+    gpu::FrameRequest s;
     s.width = 96;
     s.height = 72;
     s.shadows = false;
@@ -211,7 +211,7 @@ TEST_F(GpuTest, RayTracerRefusesViewsAndOverlaysItDoesNotDraw) {
     options.ray_tracing = true;
     gpu::Renderer renderer(context(), options);
     renderer.load(*scene);
-    gpu::RenderSettings s;
+    gpu::FrameRequest s;
     s.width = 8;
     s.height = 8;
     s.renderer = gpu::RendererKind::RayTraced;

@@ -6,7 +6,7 @@
 #include "gpu_test_support.h"
 
 #include <sherpa/gpu/gpu_error.h>
-#include <sherpa/render/render_settings.h>
+#include <sherpa/render/frame_request.h>
 #include <sherpa/render/shadow_error.h>
 
 namespace sherpa::test {
@@ -76,7 +76,7 @@ protected:
         return true;
     }
 
-    std::vector<std::uint8_t> render(gpu::Renderer& r, const gpu::RenderSettings& s) {
+    std::vector<std::uint8_t> render(gpu::Renderer& r, const gpu::FrameRequest& s) {
         std::vector<std::uint8_t> rgba;
         r.render(s, &rgba);
         EXPECT_EQ(rgba.size(), std::size_t{kSize} * kSize * 4);
@@ -92,7 +92,7 @@ protected:
     }
 
     std::unique_ptr<Scene> scene_;
-    gpu::RenderSettings settings_;
+    gpu::FrameRequest settings_;
     CameraSpec spec_; // the scene layer's, for its view-projection
 };
 
@@ -117,7 +117,7 @@ TEST_F(RtShadow, HardShadowMatchesTheProjectedOutline) {
 TEST_F(RtShadow, SoftShadowPenumbraWidensWithTheSunsRadius) {
     auto r = make_renderer();
     const auto hard = render(*r, settings_);
-    gpu::RenderSettings s = settings_;
+    gpu::FrameRequest s = settings_;
     s.shadow_rays = 16;
     s.sun_angular_radius = 0.0f;
     EXPECT_EQ(render(*r, s), hard) << "a point sun with 16 rays is the hard shadow";
@@ -134,7 +134,7 @@ TEST_F(RtShadow, SoftShadowPenumbraWidensWithTheSunsRadius) {
 
 TEST_F(RtShadow, AmbientOcclusionIsOneInTheOpenAndLessUnderTheCaster) {
     auto r = make_renderer();
-    gpu::RenderSettings s = settings_;
+    gpu::FrameRequest s = settings_;
     s.view = gpu::DebugView::AmbientOcclusion;
     s.ao_rays = 32;
     s.ao_radius = 2.0f;
@@ -166,7 +166,7 @@ TEST_F(RtShadow, AmbientOcclusionIsOneInTheOpenAndLessUnderTheCaster) {
 TEST_F(RtShadow, CascadesAgreeWithRaysAndTheErrorViewCountsTheDifference) {
     for (std::uint32_t resolution : {4096u, 128u}) {
         auto r = make_renderer(resolution);
-        gpu::RenderSettings s = settings_;
+        gpu::FrameRequest s = settings_;
         s.shadow_pcf_taps = 1;
         const auto rays = render(*r, s);
         s.renderer = gpu::RendererKind::Raster;
@@ -200,7 +200,7 @@ TEST_F(RtShadow, CascadesAgreeWithRaysAndTheErrorViewCountsTheDifference) {
 
 TEST_F(RtShadow, RasterRefusesRaysOnlyViews) {
     auto r = make_renderer();
-    gpu::RenderSettings s = settings_;
+    gpu::FrameRequest s = settings_;
     s.renderer = gpu::RendererKind::Raster;
     for (gpu::DebugView v : {gpu::DebugView::AmbientOcclusion, gpu::DebugView::ShadowError}) {
         s.view = v;

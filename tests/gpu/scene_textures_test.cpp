@@ -19,7 +19,7 @@ namespace {
 class SceneTexturesTest : public GpuTest {
 protected:
     std::vector<std::uint8_t> render_helmet(std::shared_ptr<const tex::PreparedTextureSet> set) {
-        gpu::RenderSettings s;
+        gpu::FrameRequest s;
         s.width = 128;
         s.height = 128;
         std::string error;

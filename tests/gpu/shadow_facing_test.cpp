@@ -5,7 +5,7 @@
 // scene (tests/data/make_shadow_scene.py), not against our own earlier output.
 #include "gpu_test_support.h"
 
-#include <sherpa/render/render_settings.h>
+#include <sherpa/render/frame_request.h>
 #include <sherpa/texture/image.h>
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -30,7 +30,7 @@ class ShadowFacingTest : public GpuTest {
 protected:
     // Renders the scene with and without shadows (writes both next to the test binary
     // when asked, to be looked at).
-    void render_pair(const Scene& scene, gpu::RenderSettings s, const std::string& name) {
+    void render_pair(const Scene& scene, gpu::FrameRequest s, const std::string& name) {
         renderer().load(scene);
         s.shadows = true;
         renderer().render(s, &lit_);
@@ -62,7 +62,7 @@ TEST_F(ShadowFacingTest, DoubleSidedBackFaceLitFromItsSideShadowsOnlyWhereTheCas
     auto scene = load(std::string(SHERPA_TEST_DATA_DIR) + "/double_sided_shadow.gltf");
     ASSERT_TRUE(scene);
     constexpr std::uint32_t kSize = 200;
-    gpu::RenderSettings s;
+    gpu::FrameRequest s;
     s.width = s.height = kSize;
     // Behind the plane (its normal is +Z), with the sun on the camera's side at 45 degrees.
     // The caster, white and lit like the plane, does not stand out; its shadow does.
@@ -119,7 +119,7 @@ TEST_F(ShadowFacingTest, DoubleSidedBackFaceLitFromItsSideShadowsOnlyWhereTheCas
 TEST_F(ShadowFacingTest, TextureSettingsTestCellsAreNotShadowed) {
     auto scene = load(gltf_asset("TextureSettingsTest"));
     ASSERT_TRUE(scene);
-    gpu::RenderSettings s;
+    gpu::FrameRequest s;
     s.width = 400;
     s.height = 300;
     std::string error;

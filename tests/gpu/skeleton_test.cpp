@@ -1,6 +1,6 @@
 // The skeleton overlay (issue 16): every joint of RiggedSimple is drawn where it
 // projects (a cyan cross there, none in the plain render), in the bind pose and in a
-// posed frame (RenderSettings::pose) whose last joint has moved; the selected joint is magenta;
+// posed frame (FrameRequest::pose) whose last joint has moved; the selected joint is magenta;
 // scenes without skins draw nothing more. The line builder is checked on the CPU: one
 // bone per joint with a joint parent, three cross arms per joint. Validation-clean
 // (GpuTest fails on any message). The posed render goes to skeleton_pose.png.
@@ -48,8 +48,8 @@ int near_projection(const Pixels& rgba, const glm::mat4& view_proj, glm::vec3 wo
 
 class SkeletonTest : public GpuTest {
 protected:
-    static gpu::RenderSettings settings(const Scene& scene) {
-        gpu::RenderSettings s;
+    static gpu::FrameRequest settings(const Scene& scene) {
+        gpu::FrameRequest s;
         s.width = s.height = kSize;
         std::string error;
         const glm::vec3 c = scene.bounds.center();
@@ -63,7 +63,7 @@ protected:
             << error;
         return s;
     }
-    static glm::mat4 view_proj(const gpu::RenderSettings& s, const Scene& scene) {
+    static glm::mat4 view_proj(const gpu::FrameRequest& s, const Scene& scene) {
         const gpu::CameraView v = gpu::resolve_camera(s.camera, scene, 1.0f);
         return v.proj * v.view;
     }
@@ -75,7 +75,7 @@ TEST_F(SkeletonTest, JointsDrawnWhereTheyProjectInBindPoseAndPosed) {
     ASSERT_EQ(scene->skins.size(), 1u);
     ASSERT_FALSE(scene->animations.empty());
     renderer().load(*scene);
-    gpu::RenderSettings s = settings(*scene);
+    gpu::FrameRequest s = settings(*scene);
     const glm::mat4 vp = view_proj(s, *scene);
     const Pixels plain = draw(s);
     s.overlays = gpu::kOverlaySkeleton;
@@ -127,7 +127,7 @@ TEST_F(SkeletonTest, SceneWithoutSkinsDrawsNothingMore) {
     auto scene = load(gltf_asset("BoxAnimated"));
     ASSERT_TRUE(scene);
     renderer().load(*scene);
-    gpu::RenderSettings s = settings(*scene);
+    gpu::FrameRequest s = settings(*scene);
     const Pixels plain = draw(s);
     s.overlays = gpu::kOverlaySkeleton;
     EXPECT_EQ(draw(s), plain);

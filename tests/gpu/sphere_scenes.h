@@ -14,7 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <sherpa/render/camera.h>
-#include <sherpa/render/render_settings.h>
+#include <sherpa/render/frame_request.h>
 
 namespace sherpa::test {
 
@@ -116,8 +116,8 @@ template <typename F> gpu::EnvironmentImage environment_of(std::uint32_t width, 
 // The furnace view of sphere_row_gltf(count, ...): `px` pixels a sphere, seen from far
 // away with a narrow field of view, no sun or shadows, linear tone mapping at -1 EV (1
 // reads 0.5, clear of the 8-bit ceiling), on a black background.
-inline gpu::RenderSettings furnace_view(int count, std::uint32_t px) {
-    gpu::RenderSettings s;
+inline gpu::FrameRequest furnace_view(int count, std::uint32_t px) {
+    gpu::FrameRequest s;
     s.width = px * std::uint32_t(count);
     s.height = px;
     const float mid = 2.5f * float(count - 1) / 2.0f;

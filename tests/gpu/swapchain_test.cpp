@@ -117,7 +117,7 @@ TEST_F(SwapchainTest, PresentsFramesAndSurvivesResizeWithoutValidationMessages) 
                                  window.height);
         EXPECT_EQ(presenter.extent().width, 160u);
         EXPECT_GE(presenter.image_count(), 2u);
-        gpu::RenderSettings settings;
+        gpu::FrameRequest settings;
         settings.overlays = gpu::kOverlayBounds;
         int shown = 0;
         gpu::PresentedFrame frame(renderer, settings);
@@ -160,9 +160,9 @@ TEST_F(SwapchainTest, PresentsRayTracedAndComparisonFrames) {
         raster.load(*scene.scene);
         rays.load(*scene.scene);
         gpu::Presenter presenter(context, rays.resources(), surface, window.width, window.height);
-        gpu::RenderSettings settings;
+        gpu::FrameRequest settings;
         settings.view = gpu::DebugView::Normal;
-        gpu::RenderSettings rt = settings;
+        gpu::FrameRequest rt = settings;
         rt.renderer = gpu::RendererKind::RayTraced;
         for (float scale : {1.0f, 0.5f}) {
             gpu::PresentedFrame frame(rays, rt, scale);

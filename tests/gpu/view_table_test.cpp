@@ -7,7 +7,7 @@
 #include "gpu_test_support.h"
 
 #include <sherpa/gpu/debug_views.h>
-#include <sherpa/render/render_settings.h>
+#include <sherpa/render/frame_request.h>
 
 #include <fstream>
 #include <map>
@@ -122,8 +122,8 @@ class DebugViewRenderTest : public GpuTest {};
 TEST_F(DebugViewRenderTest, EveryViewRendersAndDiffersFromLit) {
     auto scene = load(gltf_asset("NormalTangentMirrorTest"));
     ASSERT_TRUE(scene);
-    renderer().load(*scene, gpu::StreamPolicy::AllPresent);
-    gpu::RenderSettings s;
+    renderer().load(*scene, streams_setup(gpu::StreamPolicy::AllPresent));
+    gpu::FrameRequest s;
     s.width = 64;
     s.height = 64;
     // Only the lit view draws shadows: compare shading, not shadows.

@@ -1,4 +1,4 @@
-// Node visibility (RenderSettings::hidden_nodes, issue 17 item 4): a hidden node's
+// Node visibility (SceneSetup::hidden_nodes, Renderer::set_hidden_nodes): a hidden node's
 // instances are drawn by no pass on every cull path, cast no shadow (cached cascades
 // are redrawn), are left out of the ray tracer's TLAS, and are counted as hidden; showing
 // them again restores the identical image. Scene: tests/data/double_sided_shadow.gltf
@@ -33,7 +33,7 @@ protected:
         (*hidden_)[kCaster] = true;
     }
 
-    std::vector<std::uint8_t> render(gpu::Renderer& r, const gpu::RenderSettings& s,
+    std::vector<std::uint8_t> render(gpu::Renderer& r, const gpu::FrameRequest& s,
                                      gpu::FrameStats* stats = nullptr) {
         std::vector<std::uint8_t> rgba;
         const gpu::FrameStats st = r.render(s, &rgba);
@@ -54,7 +54,7 @@ protected:
     }
 
     std::unique_ptr<Scene> scene_;
-    gpu::RenderSettings settings_;
+    gpu::FrameRequest settings_;
     std::shared_ptr<std::vector<bool>> hidden_;
 };
 
@@ -77,13 +77,13 @@ TEST_F(Visibility, HiddenCasterLeavesNoPixelsNorShadowOnEveryCullPath) {
     std::vector<std::uint8_t> hidden_image;
     for (const gpu::CullPath path : {gpu::CullPath::None, gpu::CullPath::Cpu, gpu::CullPath::Gpu}) {
         SCOPED_TRACE(std::string(gpu::to_string(path)));
-        gpu::RenderSettings s = settings_;
+        gpu::FrameRequest s = settings_;
         s.cull = path;
         const auto shown = render(r, s); // cascades cached from here on
         const auto [shown_dark, shown_bright] = dark_bright(shown);
         EXPECT_GT(shown_dark, 150u) << "the caster's shadow on the plane";
 
-        s.hidden_nodes = hidden_;
+        r.set_hidden_nodes(hidden_);
         gpu::FrameStats st;
         const auto hidden = render(r, s, &st);
         EXPECT_TRUE(st.shadows_rendered) << "cached cascades redrawn when visibility changes";
@@ -105,7 +105,7 @@ TEST_F(Visibility, HiddenCasterLeavesNoPixelsNorShadowOnEveryCullPath) {
         }
         EXPECT_EQ(st.culling[0].visible, 1u) << "only the plane";
         if (path == gpu::CullPath::Gpu) { // check mode: the CPU test leaves them out too
-            gpu::RenderSettings k = s;
+            gpu::FrameRequest k = s;
             k.cull_check = true;
             k.cache_shadows = false;
             gpu::FrameStats checked;
@@ -118,7 +118,7 @@ TEST_F(Visibility, HiddenCasterLeavesNoPixelsNorShadowOnEveryCullPath) {
         else
             EXPECT_EQ(hidden, hidden_image) << "every cull path draws the same";
 
-        s.hidden_nodes = nullptr;
+        r.set_hidden_nodes(nullptr);
         EXPECT_EQ(render(r, s), shown) << "shown again: the identical image";
     }
 }
@@ -129,11 +129,10 @@ TEST_F(Visibility, HidingTheRootOfASubtreeHidesItsDescendantsInTheRenderer) {
     scene.nodes[kCaster].parent = 0;
     scene.nodes[0].children = {kCaster};
     gpu::Renderer r(context());
-    r.load(scene);
-    gpu::RenderSettings s = settings_;
-    s.view = gpu::DebugView::Lit;
     auto root = std::make_shared<std::vector<bool>>(std::vector<bool>{true});
-    s.hidden_nodes = root;
+    r.load(scene, {.hidden_nodes = root}); // hidden from the load on
+    gpu::FrameRequest s = settings_;
+    s.view = gpu::DebugView::Lit;
     gpu::FrameStats st;
     const auto image = render(r, s, &st);
     EXPECT_EQ(st.culling[0].hidden, 2u);
@@ -148,7 +147,7 @@ TEST_F(Visibility, RayTracedImageAndTlasLeaveTheHiddenNodeOut) {
     options.ray_tracing = true;
     gpu::Renderer r(context(), options);
     r.load(*scene_);
-    gpu::RenderSettings s = settings_;
+    gpu::FrameRequest s = settings_;
     s.renderer = gpu::RendererKind::RayTraced;
     const auto shown = render(r, s);
     ASSERT_NE(r.resident().acceleration, nullptr);
@@ -156,13 +155,13 @@ TEST_F(Visibility, RayTracedImageAndTlasLeaveTheHiddenNodeOut) {
     EXPECT_EQ(r.resident().acceleration->tlas.instances, 2u);
     EXPECT_GT(dark_bright(shown).first, 150u);
 
-    s.hidden_nodes = hidden_;
+    r.set_hidden_nodes(hidden_);
     const auto hidden = render(r, s);
     EXPECT_EQ(r.resident().acceleration->tlas.hidden, 1u);
     EXPECT_EQ(r.resident().acceleration->tlas.instances, 1u);
     EXPECT_EQ(dark_bright(hidden).first, 0u) << "rays do not see the hidden caster";
 
-    s.hidden_nodes = nullptr;
+    r.set_hidden_nodes(nullptr);
     EXPECT_EQ(render(r, s), shown);
     EXPECT_EQ(r.resident().acceleration->tlas.hidden, 0u);
 }
@@ -176,7 +175,7 @@ TEST_F(Visibility, HiddenSkinnedMeshLeavesPosedFramesOnEveryPathAndTheRays) {
         if (scene->nodes[n].mesh >= 0) (*mask)[n] = true; // every mesh node
     const auto pose =
         std::make_shared<const Pose>(evaluate_pose(*scene, 0, 0.37 * scene->animations[0].end));
-    gpu::RenderSettings s;
+    gpu::FrameRequest s;
     s.width = s.height = kSize;
     const Aabb b = scene->bounds;
     const glm::vec3 eye = b.center() + glm::vec3(0.0f, 0.0f, 2.5f * glm::length(b.extent()));
@@ -202,22 +201,22 @@ TEST_F(Visibility, HiddenSkinnedMeshLeavesPosedFramesOnEveryPathAndTheRays) {
     for (const gpu::CullPath path : {gpu::CullPath::None, gpu::CullPath::Cpu, gpu::CullPath::Gpu}) {
         SCOPED_TRACE(std::string(gpu::to_string(path)));
         s.cull = path;
-        s.hidden_nodes = nullptr;
+        r.set_hidden_nodes(nullptr);
         const auto shown = render(r, s);
         EXPECT_FALSE(only_clear(shown)) << "the posed mesh is in view";
-        s.hidden_nodes = mask;
+        r.set_hidden_nodes(mask);
         EXPECT_TRUE(only_clear(render(r, s)));
-        s.hidden_nodes = nullptr;
+        r.set_hidden_nodes(nullptr);
         EXPECT_EQ(render(r, s), shown);
     }
     if (!rays) return;
     s.renderer = gpu::RendererKind::RayTraced;
     const auto shown = render(r, s);
     EXPECT_FALSE(only_clear(shown));
-    s.hidden_nodes = mask;
+    r.set_hidden_nodes(mask);
     EXPECT_TRUE(only_clear(render(r, s))) << "the posed BLAS is out of the TLAS";
     EXPECT_GE(r.resident().acceleration->tlas.hidden, 1u);
-    s.hidden_nodes = nullptr;
+    r.set_hidden_nodes(nullptr);
     EXPECT_EQ(render(r, s), shown) << "shown again in the same pose";
 }
 

@@ -164,7 +164,7 @@ TEST(LabLighting, TransmissionIsNearerThePathTracerThanWithoutIt) {
     ASSERT_TRUE(loaded) << loaded.error;
     lab::LightingFamilyOptions o =
         tiny(std::make_shared<const gpu::EnvironmentImage>(gpu::room_environment(256)));
-    o.lighting.settings = gpu::RenderSettings{};
+    o.lighting.settings = gpu::FrameRequest{};
     o.width = 64;
     o.height = 48;
     o.reference_spp = 32;

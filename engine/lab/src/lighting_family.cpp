@@ -3,7 +3,7 @@
 #include <sherpa/gpu/context.h>
 #include <sherpa/lab/families.h>
 #include <sherpa/render/camera.h>
-#include <sherpa/render/render_settings.h>
+#include <sherpa/render/frame_request.h>
 #include <sherpa/render/renderer.h>
 #include <sherpa/scene/framing.h>
 
@@ -40,7 +40,7 @@ bool has_transmission(const Scene& scene) {
 
 // The sun whose cascades the raster draws: the scene's first directional light, else
 // the default sun where the scene has no lights and it is on (frame_data.cpp's rule).
-bool has_shadowing_sun(const Scene& scene, const gpu::RenderSettings& view) {
+bool has_shadowing_sun(const Scene& scene, const gpu::FrameRequest& view) {
     for (const PlacedLight& pl : scene.placed_lights)
         if (pl.light < scene.lights.size() && scene.lights[pl.light].type == LightType::Directional)
             return true;
@@ -118,8 +118,8 @@ private:
         int transmission = -1;
     };
 
-    gpu::RenderSettings view_settings(const CameraSpec& camera) const {
-        gpu::RenderSettings s;
+    gpu::FrameRequest view_settings(const CameraSpec& camera) const {
+        gpu::FrameRequest s;
         gpu::copy_lighting(options_.lighting.settings, s);
         s.width = options_.width;
         s.height = options_.height;
@@ -129,8 +129,8 @@ private:
     }
 
     Frame draw(gpu::Context& context, Raster& raster, const Scene& scene, const Scene& stripped,
-               const LightingSetup& setup, const gpu::RenderSettings& view) const;
-    void reference(gpu::Context& context, const Scene& scene, const gpu::RenderSettings& view,
+               const LightingSetup& setup, const gpu::FrameRequest& view) const;
+    void reference(gpu::Context& context, const Scene& scene, const gpu::FrameRequest& view,
                    const std::vector<std::int32_t>& ids, FamilyReport& report,
                    const std::vector<LightingMethod>& plan, detail::Progress& progress,
                    std::vector<std::uint8_t>& rgba) const;
@@ -141,7 +141,7 @@ private:
 LightingFamily::Frame LightingFamily::draw(gpu::Context& context, Raster& raster,
                                            const Scene& scene, const Scene& stripped,
                                            const LightingSetup& setup,
-                                           const gpu::RenderSettings& view) const {
+                                           const gpu::FrameRequest& view) const {
     Frame f;
     const std::size_t seen = context.validation().count();
     const std::string env_key = setup.environment_key();
@@ -163,7 +163,7 @@ LightingFamily::Frame LightingFamily::draw(gpu::Context& context, Raster& raster
         r.load(setup.transmission ? scene : stripped);
         raster.transmission = int(setup.transmission);
     }
-    gpu::RenderSettings s = view;
+    gpu::FrameRequest s = view;
     s.shadows = setup.shadows;
     s.cascades = setup.cascades;
     s.shadow_pcf_taps = setup.taps;
@@ -177,7 +177,7 @@ LightingFamily::Frame LightingFamily::draw(gpu::Context& context, Raster& raster
     f.ms = detail::median(ms);
     // The compared image: supersampled, filtered down as the path tracer's box filter.
     const std::uint32_t k = std::max(options_.supersample, 1u);
-    gpu::RenderSettings big = s;
+    gpu::FrameRequest big = s;
     big.width *= k, big.height *= k;
     std::vector<std::uint8_t> rgba;
     r.render(big, &rgba);
@@ -190,7 +190,7 @@ LightingFamily::Frame LightingFamily::draw(gpu::Context& context, Raster& raster
 }
 
 void LightingFamily::reference(gpu::Context& context, const Scene& scene,
-                               const gpu::RenderSettings& view,
+                               const gpu::FrameRequest& view,
                                const std::vector<std::int32_t>& ids, FamilyReport& report,
                                const std::vector<LightingMethod>& plan, detail::Progress& progress,
                                std::vector<std::uint8_t>& rgba) const {
@@ -300,7 +300,7 @@ FamilyReport LightingFamily::run(const Scene& scene, const RunControl& control) 
     framing.aspect = float(options_.width) / float(std::max(options_.height, 1u));
     CameraSpec camera = frame_scene(scene, nullptr, framing);
     camera.aspect = framing.aspect;
-    const gpu::RenderSettings view = view_settings(camera);
+    const gpu::FrameRequest view = view_settings(camera);
     report.notes.push_back(std::to_string(options_.width) + "x" + std::to_string(options_.height) +
                            ", the framed camera; time: GPU ms of the raster frame, median of " +
                            std::to_string(options_.frames) +

@@ -96,7 +96,7 @@ std::vector<LightingMethod> lighting_methods(const LightingFamilyOptions& option
     return out;
 }
 
-std::vector<PathImage> path_trace_series(gpu::Renderer& renderer, gpu::RenderSettings base,
+std::vector<PathImage> path_trace_series(gpu::Renderer& renderer, gpu::FrameRequest base,
                                          std::uint32_t seed, const std::vector<std::uint32_t>& spp,
                                          const std::function<bool()>& step) {
     std::vector<PathImage> out;
@@ -108,7 +108,7 @@ std::vector<PathImage> path_trace_series(gpu::Renderer& renderer, gpu::RenderSet
     bool first = true;
     for (std::uint32_t target : spp) {
         while (done < target) {
-            gpu::RenderSettings s = base;
+            gpu::FrameRequest s = base;
             s.path.samples = std::min(kPathLaunch, target - done);
             s.path.restart = first;
             first = false;

@@ -50,7 +50,7 @@ struct PathImage {
 // kPathLaunch samples: about a second of lavapipe for DamagedHelmet at 160x120, so that
 // a cancel is seen soon) and returns false to cancel (the images so far are returned).
 inline constexpr std::uint32_t kPathLaunch = 4;
-std::vector<PathImage> path_trace_series(gpu::Renderer& renderer, gpu::RenderSettings base,
+std::vector<PathImage> path_trace_series(gpu::Renderer& renderer, gpu::FrameRequest base,
                                          std::uint32_t seed, const std::vector<std::uint32_t>& spp,
                                          const std::function<bool()>& step);
 

@@ -7,7 +7,7 @@
 #include <sherpa/lab/compare.h>
 #include <sherpa/render/camera.h>
 #include <sherpa/render/comparison.h>
-#include <sherpa/render/render_settings.h>
+#include <sherpa/render/frame_request.h>
 #include <sherpa/render/renderer.h>
 #include <sherpa/scene/framing.h>
 #include <sherpa/texture/image_text.h>
@@ -114,7 +114,7 @@ DifferenceImage render_difference(const Scene& a, const Scene& b,
         co.validation = options.validation;
         gpu::Context context(co);
         gpu::Renderer renderer_a(context), renderer_b(context);
-        gpu::RenderSettings settings;
+        gpu::FrameRequest settings;
         gpu::copy_lighting(options.lighting.settings, settings);
         renderer_a.set_environment(options.lighting.environment.get());
         renderer_b.set_environment(options.lighting.environment.get());

@@ -3,7 +3,7 @@
 #include <sherpa/gpu/context.h>
 #include <sherpa/lab/families.h>
 #include <sherpa/render/camera.h>
-#include <sherpa/render/render_settings.h>
+#include <sherpa/render/frame_request.h>
 #include <sherpa/render/renderer.h>
 #include <sherpa/render/shadow_error.h>
 #include <sherpa/scene/framing.h>
@@ -164,7 +164,7 @@ private:
                  Tally& tally) const {
         const std::size_t seen = context.validation().count();
         const double t0 = detail::process_cpu_ms();
-        gpu::RenderSettings s;
+        gpu::FrameRequest s;
         gpu::copy_lighting(options_.lighting.settings, s);
         s.width = options_.width;
         s.height = options_.height;

@@ -1,4 +1,4 @@
-// The environment behind the scene (RenderSettings::background environment or
+// The environment behind the scene (FrameRequest::background environment or
 // blurred): one full-screen triangle at the far plane, depth-tested EQUAL against the
 // cleared far depth, so only pixels no surface covers are shaded. Nothing is drawn
 // (and nothing built) for a solid-colour background or without an environment.

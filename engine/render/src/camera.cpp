@@ -71,7 +71,10 @@ CascadeCamera cascade_camera(const CameraView& v) {
     return c;
 }
 
-CameraView resolve_camera(const CameraSpec& spec, const Scene& scene, float viewport_aspect) {
+namespace {
+
+CameraView resolve(const CameraSpec& spec, const Aabb& bounds, const std::vector<Camera>& cameras,
+                   const std::vector<PlacedCamera>& placed_cameras, float viewport_aspect) {
     CameraView v;
     v.aspect = spec.aspect > 0.0f ? spec.aspect : viewport_aspect;
     switch (spec.kind) {
@@ -84,12 +87,12 @@ CameraView resolve_camera(const CameraSpec& spec, const Scene& scene, float view
         break;
     }
     case CameraSpec::Kind::Gltf: {
-        if (spec.gltf_index >= scene.placed_cameras.size())
+        if (spec.gltf_index >= placed_cameras.size())
             throw std::invalid_argument("camera gltf:" + std::to_string(spec.gltf_index) +
                                         ": the scene places " +
-                                        std::to_string(scene.placed_cameras.size()) + " camera(s)");
-        const PlacedCamera& pc = scene.placed_cameras[spec.gltf_index];
-        const Camera& cam = scene.cameras.at(pc.camera);
+                                        std::to_string(placed_cameras.size()) + " camera(s)");
+        const PlacedCamera& pc = placed_cameras[spec.gltf_index];
+        const Camera& cam = cameras.at(pc.camera);
         // The node transform may scale; the view keeps only rotation and position.
         glm::mat4 world = pc.world;
         for (int c = 0; c < 3; ++c) world[c] = glm::vec4(glm::normalize(glm::vec3(world[c])), 0.0f);
@@ -113,7 +116,7 @@ CameraView resolve_camera(const CameraSpec& spec, const Scene& scene, float view
         FramingOptions options;
         options.fov_y_degrees = spec.fov_degrees;
         options.aspect = v.aspect;
-        const sherpa::CameraSpec framed = frame_box(scene.bounds, options);
+        const sherpa::CameraSpec framed = frame_box(bounds, options);
         v.position = framed.eye;
         v.view = framed.view();
         v.fov_y = glm::radians(framed.fov_y_degrees);
@@ -126,6 +129,17 @@ CameraView resolve_camera(const CameraSpec& spec, const Scene& scene, float view
                                                      v.near_plane, v.far_plane)
                             : reverse_z_perspective(v.fov_y, v.aspect, v.near_plane, v.far_plane);
     return v;
+}
+
+} // namespace
+
+CameraView resolve_camera(const CameraSpec& spec, const Scene& scene, float viewport_aspect) {
+    return resolve(spec, scene.bounds, scene.cameras, scene.placed_cameras, viewport_aspect);
+}
+
+CameraView resolve_camera(const CameraSpec& spec, const SceneCameras& scene,
+                          float viewport_aspect) {
+    return resolve(spec, scene.bounds, scene.cameras, scene.placed_cameras, viewport_aspect);
 }
 
 } // namespace sherpa::gpu

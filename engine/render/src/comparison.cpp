@@ -1,7 +1,7 @@
 // Two renderers' frames compared (sherpa/render/comparison.h): each side recorded
 // into its renderer's side image (renderer_side.cpp), then side A's renderer's
 // ComparisonPass reduces the statistics and composites the target.
-#include "renderer_impl.h"
+#include "frame_recorder.h"
 
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/render/comparison.h>
@@ -99,20 +99,20 @@ double ComparisonStats::percentile_999() const {
     return 1.0;
 }
 
-ComparisonFrame::ComparisonFrame(Renderer& a, const RenderSettings& a_settings, Renderer& b,
-                                 const RenderSettings& b_settings,
-                                 const ComparisonSettings& compare, float resolution_scale)
+ComparisonFrame::ComparisonFrame(Renderer& a, const FrameRequest& a_settings, Renderer& b,
+                                 const FrameRequest& b_settings, const ComparisonSettings& compare,
+                                 float resolution_scale)
     : a_(a), b_(b), a_settings_(a_settings), b_settings_(b_settings), compare_(compare),
       resolution_scale_(resolution_scale) {
     check_sides(a, b);
-    a_.impl_->check_drawable(a_settings_);
-    b_.impl_->check_drawable(b_settings_);
+    a_.frames().check_drawable(a_settings_);
+    b_.frames().check_drawable(b_settings_);
 }
 
 void ComparisonFrame::wait_for_slot(std::uint32_t slot) {
-    completed_a_ = a_.impl_->slot_stats(slot);
-    completed_b_ = b_.impl_->slot_stats(slot);
-    const ReducedStats r = a_.impl_->comparison().take_stats(slot);
+    completed_a_ = a_.frames().slot_stats(slot);
+    completed_b_ = b_.frames().slot_stats(slot);
+    const ReducedStats r = a_.frames().comparison().take_stats(slot);
     if (r.raw) {
         completed_ = to_stats(*r.raw, r.pixels, compare_.threshold);
         completed_.reduce_ms = r.reduce_ms;
@@ -122,9 +122,9 @@ void ComparisonFrame::wait_for_slot(std::uint32_t slot) {
 }
 
 // Both sides at the (scaled) target size into their renderers' side images.
-static CompositeInputs record_sides(VkCommandBuffer cmd, std::uint32_t slot, Renderer::Impl& a,
-                                    RenderSettings& a_settings, Renderer::Impl& b,
-                                    RenderSettings& b_settings, std::uint32_t width,
+static CompositeInputs record_sides(VkCommandBuffer cmd, std::uint32_t slot, FrameRecorder& a,
+                                    FrameRequest& a_settings, FrameRecorder& b,
+                                    FrameRequest& b_settings, std::uint32_t width,
                                     std::uint32_t height) {
     a_settings.width = b_settings.width = width;
     a_settings.height = b_settings.height = height;
@@ -138,8 +138,8 @@ static CompositeInputs record_sides(VkCommandBuffer cmd, std::uint32_t slot, Ren
 }
 
 void ComparisonFrame::record(VkCommandBuffer cmd, std::uint32_t slot, const RenderTarget& target) {
-    Renderer::Impl& a = *a_.impl_;
-    const CompositeInputs in = record_sides(cmd, slot, a, a_settings_, *b_.impl_, b_settings_,
+    FrameRecorder& a = a_.frames();
+    const CompositeInputs in = record_sides(cmd, slot, a, a_settings_, b_.frames(), b_settings_,
                                             scaled(target.width, resolution_scale_),
                                             scaled(target.height, resolution_scale_));
     a.comparison().record_stats(cmd, slot, in);
@@ -158,30 +158,29 @@ std::span<const VkSemaphoreSubmitInfo> ComparisonFrame::signals(std::uint32_t) c
 }
 
 void ComparisonFrame::submitted(std::uint32_t slot, std::uint64_t submission) {
-    a_.impl_->finish_frame(slot, submission);
-    b_.impl_->finish_frame(slot, b_signal_.value);
+    a_.frames().finish_frame(slot, submission);
+    b_.frames().finish_frame(slot, b_signal_.value);
     b_.resources().collect_garbage(); // the presenter collects a's
 }
 
-ComparisonStats render_comparison(Renderer& a, const RenderSettings& a_settings, Renderer& b,
-                                  const RenderSettings& b_settings,
-                                  const ComparisonSettings& compare,
+ComparisonStats render_comparison(Renderer& a, const FrameRequest& a_settings, Renderer& b,
+                                  const FrameRequest& b_settings, const ComparisonSettings& compare,
                                   std::vector<std::uint8_t>* rgba) {
     const std::uint32_t width = a_settings.width, height = a_settings.height;
     if (width == 0 || height == 0 || width > 16384 || height > 16384)
         throw GpuError("comparison size " + std::to_string(width) + "x" + std::to_string(height) +
                        " is out of range");
     ComparisonFrame frame(a, a_settings, b, b_settings, compare);
-    Renderer::Impl& ai = *a.impl_;
+    FrameRecorder& ai = a.frames();
     constexpr std::uint32_t slot = 0;
     frame.wait_for_slot(slot);
-    const RenderTarget target = ai.offscreen_target(width, height);
+    const RenderTarget target = ai.targets().offscreen(width, height);
     CommandRecorder& recorder = ai.recorder(slot);
     // Sides and statistics first; an automatic heat scale needs them before the
     // composite, which then goes in a second submission.
     VkCommandBuffer cmd = recorder.begin();
-    const CompositeInputs in =
-        record_sides(cmd, slot, ai, frame.a_settings_, *b.impl_, frame.b_settings_, width, height);
+    const CompositeInputs in = record_sides(cmd, slot, ai, frame.a_settings_, b.frames(),
+                                            frame.b_settings_, width, height);
     ai.comparison().record_stats(cmd, slot, in);
     const bool auto_heat = compare.mode == CompareMode::Difference && compare.heat_max <= 0.0f;
     const auto submit = [&] {
@@ -190,9 +189,9 @@ ComparisonStats render_comparison(Renderer& a, const RenderSettings& a_settings,
         signal.semaphore = timeline.semaphore();
         signal.value = timeline.begin_submission();
         signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-        const std::uint64_t value = recorder.submit(*ai.resources, nullptr, 0, &signal, 1);
+        const std::uint64_t value = recorder.submit(a.resources(), nullptr, 0, &signal, 1);
         ai.finish_frame(slot, value);
-        b.impl_->finish_frame(slot, signal.value);
+        b.frames().finish_frame(slot, signal.value);
     };
     if (auto_heat) {
         submit();
@@ -202,11 +201,11 @@ ComparisonStats render_comparison(Renderer& a, const RenderSettings& a_settings,
     }
     ai.comparison().record_composite(cmd, slot, in, target, composite_mode(compare.mode),
                                      compare.divider, heat_max_of(compare, frame.completed_));
-    if (rgba) ai.record_readback(cmd, width, height);
+    if (rgba) ai.targets().record_readback(cmd, width, height);
     submit();
     frame.wait_for_slot(slot); // with an automatic heat scale the stats came before
-    if (rgba) ai.read_offscreen(*rgba, width, height);
-    ai.resources->collect_garbage();
+    if (rgba) ai.targets().read_offscreen(*rgba, width, height);
+    a.resources().collect_garbage();
     b.resources().collect_garbage();
     return frame.completed_;
 }

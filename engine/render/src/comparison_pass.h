@@ -4,7 +4,7 @@
 // which reduces the per-pixel differences into the slot's statistics buffer;
 // record_composite() draws one fullscreen triangle (compare.vert/.frag) writing side
 // A alone (a presented ray-traced frame), Split or Difference into the target.
-// Private to the render layer; a Renderer owns one (renderer_impl.h), made on first
+// Private to the render layer; a Renderer owns one (frame_recorder.h), made on first
 // use, with a descriptor set and statistics buffer per frame slot.
 #include <sherpa/gpu/frame_source.h>
 #include <sherpa/gpu/resources.h>

@@ -8,9 +8,10 @@
 // vkCmdDrawIndexedIndirectCount, and does no per-object CPU work: its statistics
 // come from the indirect commands read back after the frame. Blended instances
 // (drawn one by one in sorted order, never in shadows) use the CPU test in both.
-// Check mode (RenderSettings::cull_check) also runs the CPU test on the GPU path,
+// Check mode (FrameRequest::cull_check) also runs the CPU test on the GPU path,
 // reads back the GPU's visible flags and counts the differences.
 #include "passes.h"
+#include "scene_state.h"
 
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/upload.h>
@@ -276,7 +277,7 @@ void CullingPass::prepare_buffers(FrameContext& f, std::uint32_t instances) {
 void CullingPass::record(FrameContext& f) {
     FrameSlot& slot = f.slot;
     FrameCulling& fc = slot.culling;
-    const RenderSettings& settings = f.settings;
+    const FrameRequest& settings = f.settings;
     fc.path = CullPath::None;
     fc.check = false;
     fc.count = 0;
@@ -292,7 +293,8 @@ void CullingPass::record(FrameContext& f) {
     if (fc.views.size() < fc.count) fc.views.resize(fc.count);
     glm::mat4 camera_vp = slot.camera.proj * slot.camera.view;
     if (settings.freeze_cull) {
-        const CameraView frozen = resolve_camera(*settings.freeze_cull, f.lighting, f.aspect());
+        const CameraView frozen =
+            resolve_camera(*settings.freeze_cull, f.lighting.cameras, f.aspect());
         camera_vp = frozen.proj * frozen.view;
     }
     for (std::uint32_t v = 0; v < fc.count; ++v) {

@@ -2,7 +2,7 @@
 // What one frame's passes share (private to the render layer): the per-frame-in-
 // flight resources (FrameSlot), the per-scene culling data (SceneCulling), and the
 // FrameContext every pass records from. A pass is a class with
-// `void record(FrameContext&)`; the Renderer orders them (renderer_impl.h).
+// `void record(FrameContext&)`; the Renderer orders them (frame_recorder.h).
 #include "pipelines.h"
 
 #include <sherpa/gpu/commands.h>
@@ -17,6 +17,7 @@
 namespace sherpa::gpu {
 
 class EnvironmentMap;
+struct SceneLights;
 
 // Timestamps written between passes; pass i spans [i, i + 1].
 inline constexpr const char* kPassNames[] = {
@@ -123,7 +124,7 @@ struct SceneCulling {
     std::vector<std::uint32_t> gpu_object_batch; // per GPU culler object: its batch
     // The FrameSlot::pose_key whose posed bounds `boxes` holds; none: the bounds as loaded.
     std::optional<std::uint64_t> boxes_pose;
-    // Visibility (RenderSettings::hidden_nodes, subtree rule applied), per GPU
+    // Visibility (SceneSetup::hidden_nodes, subtree rule applied), per GPU
     // instance: hidden instances are drawn by no pass. While any is hidden, `shown`
     // holds per draw group its shown instances compacted at the group's first
     // instance (what unculled draws and overlays index) and group_shown their count.
@@ -143,13 +144,13 @@ struct FrameContext {
     FrameSlot& slot;
     std::uint32_t slot_index; // which frame in flight: the GPU cullers' block
     Pipelines& pipelines;
-    const RenderSettings& settings;
+    const FrameRequest& settings;
     const RenderTarget& target;
     Context& context;
     ResourceManager& resources;
     const GpuScene* scene;                       // null: nothing loaded
     SceneCulling* culling;                       // null: nothing loaded
-    const Scene& lighting;                       // bounds, lights and cameras of the loaded scene
+    const SceneLights& lighting;                 // bounds, lights and cameras of the loaded scene
     const EnvironmentMap* environment = nullptr; // null: no environment loaded
     std::uint32_t cascades = 0; // shadow cascades re-rendered this frame (0: reused or none)
     bool prepass = false;       // the depth prepass runs this frame

@@ -1,6 +1,6 @@
 // Per-frame constants: camera, lights (scene lights or the default sun), shadow
 // cascades, debug view. Decides whether the cached shadow cascades are still valid.
-#include "renderer_impl.h"
+#include "frame_recorder.h"
 
 #include <sherpa/render/gpu_structs.h>
 #include <sherpa/scene/culling.h>
@@ -11,22 +11,25 @@
 #include <cstring>
 
 namespace sherpa::gpu {
+namespace {
 
 // The bounds shadow cascades are fitted to: the scene's, grown by where its moving
 // instances are in this frame's pose (an arm raised above the bind pose still casts).
 // A box the pose pushed past the float range is left out: one infinite or NaN corner
 // would make every cascade, and so every shadow lookup, NaN.
-Aabb Renderer::Impl::shadow_bounds(const FrameContext& frame) const {
-    Aabb b = lighting_.bounds;
+Aabb shadow_bounds(const SceneLights& lights, const FrameContext& frame) {
+    Aabb b = lights.cameras.bounds;
     if (frame.slot.posed)
         for (const Aabb& box : frame.slot.posed_bounds)
             if (!box.valid() || !box_is_invalid(box.min, box.max)) b.expand(box);
     return b;
 }
 
+} // namespace
+
 // The first directional light is the main (shadowed) one; with no scene lights at
 // all a default sun stands in. Shared with the ray tracer's shadow rays.
-MainSun main_sun(const Scene& lighting, const RenderSettings& settings) {
+MainSun main_sun(const SceneLights& lighting, const FrameRequest& settings) {
     MainSun sun;
     for (std::size_t i = 0; i < lighting.placed_lights.size(); ++i) {
         const PlacedLight& pl = lighting.placed_lights[i];
@@ -49,8 +52,8 @@ MainSun main_sun(const Scene& lighting, const RenderSettings& settings) {
 
 // Lights, sun, ambient, environment and display transform of a lit frame: what the
 // raster's frame constants and the path tracer's share (params.y: the light count).
-GPUFrameData Renderer::Impl::lighting_constants(const RenderSettings& settings) const {
-    const Scene& info = lighting_;
+GPUFrameData lighting_constants(const SceneLights& info, const EnvironmentMap* environment,
+                                const FrameRequest& settings) {
     GPUFrameData f{};
     const MainSun sun = main_sun(info, settings);
     f.sun_radiance = glm::vec4(sun.radiance, 0.0f);
@@ -94,12 +97,12 @@ GPUFrameData Renderer::Impl::lighting_constants(const RenderSettings& settings) 
     return f;
 }
 
-void Renderer::Impl::write_frame_data(FrameContext& frame) {
+void FrameRecorder::write_frame_data(FrameContext& frame) {
     FrameSlot& slot = frame.slot;
-    const RenderSettings& settings = frame.settings;
-    const Scene& info = lighting_;
-    slot.camera = resolve_camera(settings.camera, info, frame.aspect());
-    GPUFrameData f = lighting_constants(settings);
+    const FrameRequest& settings = frame.settings;
+    const SceneLights& info = state.lights;
+    slot.camera = resolve_camera(settings.camera, info.cameras, frame.aspect());
+    GPUFrameData f = lighting_constants(info, environment.get(), settings);
     const std::uint32_t count = f.params.y;
     f.view = slot.camera.view;
     f.proj = slot.camera.proj;
@@ -116,7 +119,7 @@ void Renderer::Impl::write_frame_data(FrameContext& frame) {
         (settings.view == DebugView::Lit || settings.view == DebugView::Shadow)) {
         // The one cascade fit (scene layer), shared with `sherpa-cli cull`.
         const ShadowCascades c = fit_shadow_cascades(
-            cascade_camera(slot.camera), shadow_bounds(frame), sun_dir,
+            cascade_camera(slot.camera), shadow_bounds(info, frame), sun_dir,
             std::min(settings.cascades, kShadowCascades), options.shadow_resolution);
         slot.cascades = c;
         cascades = c.count;
@@ -125,8 +128,7 @@ void Renderer::Impl::write_frame_data(FrameContext& frame) {
         f.cascade_texel = c.texel;
         f.sun_direction.w = c.count > 0 ? 1.0f : 0.0f;
         // A new pose moves the casters: the cached cascades are redrawn.
-        const std::uint64_t generation =
-            scene_generation_ ^ (slot.pose_key * 0x9e3779b97f4a7c15ull);
+        const std::uint64_t generation = state.generation ^ (slot.pose_key * 0x9e3779b97f4a7c15ull);
         if (shadows_.needs_render(c, generation, settings.cache_shadows)) frame.cascades = c.count;
     }
     // Every filtered fetch is expensive on a CPU rasterizer: one 2x2 PCF tap there
@@ -137,7 +139,8 @@ void Renderer::Impl::write_frame_data(FrameContext& frame) {
                                : context.info().is_cpu()       ? 1u
                                                                : 4u;
     f.params = glm::uvec4(static_cast<std::uint32_t>(settings.view), count, cascades, taps);
-    const float diagonal = info.bounds.valid() ? glm::length(info.bounds.extent()) : 1.0f;
+    const Aabb& bounds = info.cameras.bounds;
+    const float diagonal = bounds.valid() ? glm::length(bounds.extent()) : 1.0f;
     f.overlay = glm::vec4(settings.glyph_length > 0.0f ? settings.glyph_length : 0.02f * diagonal,
                           settings.uv_checker_density,
                           settings.texture_lod >= 0.0f ? settings.texture_lod : -1.0f, 0.0f);

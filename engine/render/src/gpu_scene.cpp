@@ -76,12 +76,13 @@ GpuScene::GpuScene(ResourceManager& resources, BindlessTable& table, const Scene
 }
 
 GpuScene::GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
-                   const TextureSettings& texture_settings, StreamPolicy policy)
+                   const TextureSettings& texture_settings, StreamPolicy policy,
+                   MissingTextures missing)
     : resources_(resources), table_(table), policy_(policy) {
     auto prepared = std::const_pointer_cast<tex::PreparedTextureSet>(tex::prepare_scene_textures(
         scene, texture_target(resources.context().info(), texture_settings),
         texture_pipeline_options(texture_settings)));
-    upload(scene, prepared, texture_settings.missing);
+    upload(scene, prepared, missing);
     // Nobody else holds this set: the levels are on the GPU now, keep the records only.
     for (tex::PreparedTexture& t : prepared->textures) decltype(t.levels)().swap(t.levels);
 }

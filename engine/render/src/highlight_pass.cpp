@@ -1,4 +1,4 @@
-// The selection highlight (RenderSettings::highlight_*), drawn after every other
+// The selection highlight (FrameRequest::highlight_*), drawn after every other
 // overlay. A selected instance is outlined, not tinted: a tint (even a light one)
 // changes the colours the user selected the object to judge, and over the
 // missing-texture checker it turned magenta pink and black olive. The outline is
@@ -71,7 +71,7 @@ void draw_outline(FrameContext& f, const DrawnInstance& d, GPUPushConstants pc) 
 } // namespace
 
 void HighlightPass::record(FrameContext& f) {
-    const RenderSettings& s = f.settings;
+    const FrameRequest& s = f.settings;
     const GpuScene* scene = f.scene;
     if (!scene || !f.culling || !f.culling->identity.valid()) return;
     if (!s.highlight_instance && s.highlight_outline.empty()) return;

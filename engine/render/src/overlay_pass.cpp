@@ -3,6 +3,7 @@
 // instance world AABBs and the skeleton (CPU-built line lists).
 #include "draw.h"
 #include "passes.h"
+#include "scene_state.h"
 
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/render/gpu_structs.h>
@@ -15,7 +16,7 @@ namespace sherpa::gpu {
 void OverlayPass::record(FrameContext& f) {
     if (!f.scene) return;
     f.slot.lines_used = 0;
-    const RenderSettings& s = f.settings;
+    const FrameRequest& s = f.settings;
     if (s.overlays == 0) return;
     VkCommandBuffer cmd = f.cmd;
     Pipelines& p = f.pipelines;
@@ -73,11 +74,11 @@ void OverlayPass::record(FrameContext& f) {
             bind_for_mesh(f, PipelineId::Glyphs, m, bound);
             pc.mesh_flags |= kind << kGlyphKindShift;
             pc.color = glyphs[kind].second;
-            pc.glyph_length =
-                s.glyph_length > 0.0f
-                    ? s.glyph_length
-                    : 0.02f * (f.lighting.bounds.valid() ? glm::length(f.lighting.bounds.extent())
-                                                         : 1.0f);
+            pc.glyph_length = s.glyph_length > 0.0f
+                                  ? s.glyph_length
+                                  : 0.02f * (f.lighting.cameras.bounds.valid()
+                                                 ? glm::length(f.lighting.cameras.bounds.extent())
+                                                 : 1.0f);
             vkCmdPushConstants(cmd, layout, stages, 0, sizeof(pc), &pc);
             vkCmdDraw(cmd, 2 * m.vertex_count, count, 0, g.first_instance);
             ++slot.draw_calls;
@@ -99,7 +100,7 @@ void OverlayPass::record(FrameContext& f) {
 // Joints inside the skin they move: drawn through every surface, posed as the meshes
 // are (PosePass).
 void OverlayPass::draw_skeleton(FrameContext& f) {
-    const Aabb& bounds = f.lighting.bounds;
+    const Aabb& bounds = f.lighting.cameras.bounds;
     std::vector<GPULineVertex> lines;
     pose_.append_skeleton_lines(lines, f.settings,
                                 0.015f * (bounds.valid() ? glm::length(bounds.extent()) : 1.0f));

@@ -1,7 +1,7 @@
 #pragma once
 // One class per pass of a frame. Each records into FrameContext::cmd; the Renderer
-// (renderer_impl.h) owns them and calls them in frame order. A new pass is a class
-// here (with `void record(FrameContext&)`) and one line in Renderer::Impl::record_passes.
+// (frame_recorder.h) owns them and calls them in frame order. A new pass is a class
+// here (with `void record(FrameContext&)`) and one line in FrameRecorder::record_passes.
 #include "frame_context.h"
 
 #include <map>
@@ -11,7 +11,7 @@
 namespace sherpa::gpu {
 
 // Scenes that move (skins, morph targets, animations): each frame, the pose
-// (RenderSettings::pose, else the scene's default pose) into the frame's pose buffer
+// (FrameRequest::pose, else the scene's default pose) into the frame's pose buffer
 // (posed instances, joint matrices, morph weights, joint-influence highlights) and
 // each instance's conservative world bounds (culling_bounds()) into
 // FrameSlot::posed_bounds, which culling, sorting and overlays use. Static scenes
@@ -20,18 +20,18 @@ class PosePass {
 public:
     // The skeleton overlay's lines: the loaded scene's skins posed as the meshes are
     // (pose_of()); nothing without skins. Built for any scene with skins, moving or not.
-    void append_skeleton_lines(std::vector<GPULineVertex>& out, const RenderSettings& settings,
+    void append_skeleton_lines(std::vector<GPULineVertex>& out, const FrameRequest& settings,
                                float joint_size) const;
     PosePass(ResourceManager& resources) : resources_(resources) {}
     void build(const Scene& scene, const GpuScene& gpu); // a scene was loaded
     void reset();                                        // the scene is unloaded
     void record(FrameContext& f) { record(f.slot, f.settings, f.scene != nullptr); }
     // The same for a frame without a FrameContext (the ray tracer's).
-    void record(FrameSlot& slot, const RenderSettings& settings, bool scene_loaded);
+    void record(FrameSlot& slot, const FrameRequest& settings, bool scene_loaded);
     // The scene skins, morphs or animates: slots get a pose buffer.
     bool active() const { return active_; }
     // settings.pose where it fits the scene, else the scene's default pose.
-    const Pose& pose_of(const RenderSettings& settings) const;
+    const Pose& pose_of(const FrameRequest& settings) const;
 
 private:
     struct Instance {
@@ -43,7 +43,7 @@ private:
         glm::mat4 row{1.0f};         // EXT_mesh_gpu_instancing row transform (T * R * S)
         Aabb local, bounds;          // mesh bounds; world bounds as loaded
     };
-    void write(FrameSlot& slot, const RenderSettings& settings, const Pose& pose);
+    void write(FrameSlot& slot, const FrameRequest& settings, const Pose& pose);
 
     ResourceManager& resources_;
     bool active_ = false;
@@ -114,7 +114,7 @@ private:
     std::vector<std::uint8_t> key_; // inputs of the cached cascades
 };
 
-// RenderSettings::floor_only: every triangle in one constant colour (what the
+// FrameRequest::floor_only: every triangle in one constant colour (what the
 // rasterizer costs by itself), instead of the prepass and shading.
 class FloorPass {
 public:
@@ -152,7 +152,7 @@ private:
     std::map<VkFormat, UniquePipeline> pipelines_;
 };
 
-// RenderSettings::overlays: wireframe, normal/tangent/bitangent glyphs, instance
+// FrameRequest::overlays: wireframe, normal/tangent/bitangent glyphs, instance
 // bounds, the culling boxes and the skeleton.
 class OverlayPass {
 public:
@@ -165,7 +165,7 @@ private:
     const PosePass& pose_; // the skins and the frame's pose (the skeleton)
 };
 
-// The selection (RenderSettings::highlight_*), over everything else.
+// The selection (FrameRequest::highlight_*), over everything else.
 class HighlightPass {
 public:
     void record(FrameContext& f);

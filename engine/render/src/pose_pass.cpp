@@ -112,7 +112,7 @@ void PosePass::build(const Scene& scene, const GpuScene& gpu) {
     }
 }
 
-const Pose& PosePass::pose_of(const RenderSettings& settings) const {
+const Pose& PosePass::pose_of(const FrameRequest& settings) const {
     // A pose of another scene (node or skin counts differ) is not applied.
     const Pose* p = settings.pose.get();
     const std::size_t nodes = scene_.nodes.size();
@@ -122,14 +122,14 @@ const Pose& PosePass::pose_of(const RenderSettings& settings) const {
     return default_;
 }
 
-void PosePass::append_skeleton_lines(std::vector<GPULineVertex>& out,
-                                     const RenderSettings& settings, float joint_size) const {
+void PosePass::append_skeleton_lines(std::vector<GPULineVertex>& out, const FrameRequest& settings,
+                                     float joint_size) const {
     if (scene_.skins.empty()) return;
     append_skeleton(out, scene_.skins, scene_.nodes, pose_of(settings).world,
                     settings.selected_joint, joint_size);
 }
 
-void PosePass::record(FrameSlot& slot, const RenderSettings& settings, bool scene_loaded) {
+void PosePass::record(FrameSlot& slot, const FrameRequest& settings, bool scene_loaded) {
     if (!active_ || !scene_loaded) {
         slot.posed = false;
         slot.pose_key = 0;
@@ -147,7 +147,7 @@ void PosePass::record(FrameSlot& slot, const RenderSettings& settings, bool scen
     slot.pose_generation = generation_;
 }
 
-void PosePass::write(FrameSlot& slot, const RenderSettings& settings, const Pose& pose) {
+void PosePass::write(FrameSlot& slot, const FrameRequest& settings, const Pose& pose) {
     const std::size_t n = instances_.size();
     const VkDeviceSize instance_bytes = std::max<std::size_t>(n, 1) * sizeof(GPUInstanceData);
     const std::uint32_t floats = (weights_ + joints_ + 3) & ~3u;

@@ -1,4 +1,4 @@
-#include "renderer_impl.h"
+#include "frame_recorder.h"
 
 #include <algorithm>
 
@@ -32,17 +32,17 @@ void blit_to_target(VkCommandBuffer cmd, VkImage from, VkExtent2D from_size,
 
 } // namespace
 
-PresentedFrame::PresentedFrame(Renderer& renderer, const RenderSettings& settings,
+PresentedFrame::PresentedFrame(Renderer& renderer, const FrameRequest& settings,
                                float resolution_scale)
     : renderer_(renderer), settings_(settings), resolution_scale_(resolution_scale) {
-    renderer_.impl_->check_drawable(settings_);
+    renderer_.frames().check_drawable(settings_);
 }
 
 void PresentedFrame::wait_for_slot(std::uint32_t slot) {
     // The slot's previous frame is done: its timestamps and culling counts are final.
-    completed_ = renderer_.impl_->slot_stats(slot);
+    completed_ = renderer_.frames().slot_stats(slot);
     if (settings_.renderer == RendererKind::RayTraced) { // the rays' image into the target
-        const double ms = renderer_.impl_->comparison().take_stats(slot).composite_ms;
+        const double ms = renderer_.frames().comparison().take_stats(slot).composite_ms;
         if (ms > 0.0) {
             completed_.passes.push_back({"composite", ms});
             completed_.gpu_ms += ms;
@@ -59,7 +59,7 @@ void PresentedFrame::record(VkCommandBuffer cmd, std::uint32_t slot, const Rende
             resolution_scale_ > 0.0f && resolution_scale_ < 1.0f ? resolution_scale_ : 1.0f;
         settings_.width = std::max(1u, static_cast<std::uint32_t>(float(target.width) * scale));
         settings_.height = std::max(1u, static_cast<std::uint32_t>(float(target.height) * scale));
-        Renderer::Impl& r = *renderer_.impl_;
+        FrameRecorder& r = renderer_.frames();
         CompositeInputs in;
         in.width = settings_.width;
         in.height = settings_.height;
@@ -72,7 +72,7 @@ void PresentedFrame::record(VkCommandBuffer cmd, std::uint32_t slot, const Rende
     if (!reduced) {
         settings_.width = target.width;
         settings_.height = target.height;
-        renderer_.impl_->record_frame(cmd, slot, target, settings_);
+        renderer_.frames().record_frame(cmd, slot, target, settings_);
         return;
     }
     const auto scaled = [&](std::uint32_t side) {
@@ -82,16 +82,17 @@ void PresentedFrame::record(VkCommandBuffer cmd, std::uint32_t slot, const Rende
     const VkExtent2D size{scaled(target.width), scaled(target.height)};
     settings_.width = size.width;
     settings_.height = size.height;
-    const Image& image = renderer_.impl_->scaled_target(target.format, size.width, size.height);
+    const Image& image =
+        renderer_.frames().targets().scaled(target.format, size.width, size.height);
     RenderTarget reduced_target{image.image.get(), image.view.get(),
                                 target.format,     size.width,
                                 size.height,       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
-    renderer_.impl_->record_frame(cmd, slot, reduced_target, settings_);
+    renderer_.frames().record_frame(cmd, slot, reduced_target, settings_);
     blit_to_target(cmd, image.image.get(), size, target);
 }
 
 void PresentedFrame::submitted(std::uint32_t slot, std::uint64_t submission) {
-    renderer_.impl_->finish_frame(slot, submission);
+    renderer_.frames().finish_frame(slot, submission);
 }
 
 } // namespace sherpa::gpu

@@ -1,6 +1,7 @@
-// The Renderer and its frame resources: construction, scene load/unload, statistics of
-// completed frames (the targets and readback: renderer_targets.cpp).
-#include "renderer_impl.h"
+// The Renderer over its SceneState and FrameRecorder: construction, scene load/unload,
+// and the recorder's frame resources and statistics of completed frames (the targets
+// and readback: render_targets.cpp).
+#include "frame_recorder.h"
 
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/vk_helpers.h>
@@ -8,10 +9,12 @@
 
 namespace sherpa::gpu {
 
-Renderer::Impl::Impl(Context& ctx, const RendererOptions& opts)
-    : context(ctx), options(opts), resources(std::make_unique<ResourceManager>(ctx)),
-      bindless(std::make_unique<BindlessTable>(*resources)), culling(ctx, *resources),
-      pose_(*resources), shadows_(ctx, *resources, opts.shadow_resolution) {
+FrameRecorder::FrameRecorder(SceneState& scene_state)
+    : state(scene_state), context(scene_state.context), resources(&scene_state.resources),
+      bindless(&scene_state.bindless), options(scene_state.options), scene(scene_state.gpu),
+      acceleration(scene_state.acceleration), environment(scene_state.environment),
+      culling(context, *resources), pose_(*resources),
+      shadows_(context, *resources, options.shadow_resolution), targets_(*resources) {
     for (std::uint32_t i = 0; i < kFramesInFlight; ++i) {
         auto slot = std::make_unique<FrameSlot>(context);
         slot->frame_data =
@@ -34,7 +37,7 @@ Renderer::Impl::Impl(Context& ctx, const RendererOptions& opts)
                                                        frame_layout_.get());
 }
 
-void Renderer::Impl::create_frame_sets() {
+void FrameRecorder::create_frame_sets() {
     VkDevice device = context.device();
     const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     const VkDescriptorSetLayoutBinding bindings[] = {
@@ -94,14 +97,14 @@ void Renderer::Impl::create_frame_sets() {
 
 // Points the slot's set at its frame data and the current scene's materials. The
 // slot's previous frame has completed, so the set is not in use.
-void Renderer::Impl::bind_frame_set(FrameSlot& slot) {
-    if (slot.set_environment != environment_generation_) {
+void FrameRecorder::bind_frame_set(FrameSlot& slot) {
+    if (slot.set_environment != state.environment_generation) {
         // Without an environment the old maps' descriptors stay, never read (ibl.glsl
         // checks frame.environment.y, 0 then): the bindings are partially bound.
         if (environment) environment->write_descriptors(context.device(), slot.set);
-        slot.set_environment = environment_generation_;
+        slot.set_environment = state.environment_generation;
     }
-    if (slot.set_generation == scene_generation_) return;
+    if (slot.set_generation == state.generation) return;
     const VkBuffer none = resources->get(no_materials_).buffer.get();
     const VkDescriptorBufferInfo infos[] = {
         {resources->get(slot.frame_data).buffer.get(), 0, sizeof(GPUFrameData)},
@@ -138,16 +141,13 @@ void Renderer::Impl::bind_frame_set(FrameSlot& slot) {
         write.pBufferInfo = &info;
         vkUpdateDescriptorSets(context.device(), 1, &write, 0, nullptr);
     }
-    slot.set_generation = scene_generation_;
+    slot.set_generation = state.generation;
 }
 
-Renderer::Impl::~Impl() {
+FrameRecorder::~FrameRecorder() {
     context.wait_idle();
     culling.reset();
-    environment.reset();
     rt_views_.reset();
-    acceleration.reset();
-    scene.reset();
     for (auto& slot : slots_) {
         resources->destroy(slot->frame_data);
         resources->destroy(slot->lines);
@@ -157,54 +157,31 @@ Renderer::Impl::~Impl() {
         resources->destroy(slot->cull_objects);
     }
     slots_.clear();
-    resources->images().destroy(color_);
-    resources->images().destroy(depth_);
-    resources->images().destroy(scaled_);
-    resources->images().destroy(side_);
     comparison_.reset();
-    resources->destroy(readback_);
     resources->destroy(no_materials_);
     pipelines_.clear();
 }
 
-Pipelines& Renderer::Impl::pipelines_for(VkFormat format) {
+Pipelines& FrameRecorder::pipelines_for(VkFormat format) {
     auto& p = pipelines_[format];
     if (!p)
         p = std::make_unique<Pipelines>(context, bindless->layout(), frame_layout_.get(), format);
     return *p;
 }
 
-void Renderer::Impl::load(const Scene& source, std::unique_ptr<GpuScene> gpu_scene) {
-    scene = std::move(gpu_scene);
-    if (options.ray_tracing) {
-        if (!context.info().ray_tracing_enabled)
-            throw GpuError("ray tracing was asked for but the device does not ray trace "
-                           "(or it was turned off: --rt off)");
-        acceleration = std::make_unique<SceneAccelerationStructures>(*resources, source, *scene,
-                                                                     options.acceleration);
-        emissive_lights_ = emissive_lights(source);
-    }
+void FrameRecorder::scene_loaded(const Scene& source) {
     culling.build(*scene);
     pose_.build(source, *scene);
-    lighting_.bounds = scene->bounds().valid() ? scene->bounds() : source.bounds;
-    lighting_.cameras = source.cameras;
-    lighting_.placed_cameras = source.placed_cameras;
-    lighting_.lights = source.lights;
-    lighting_.placed_lights = source.placed_lights;
-    ++scene_generation_;
     shadows_.invalidate();
-    load_visibility(source);
-    load_variants(source);
-    load_animated(source);
     // Meshes that skin or morph join the TLAS in the file's default pose, on load.
     if (acceleration && acceleration->posed()) {
         FrameSlot& slot = *slots_[next_slot_];
         wait_slot(slot);
-        pose_acceleration(slot, RenderSettings{});
+        pose_acceleration(slot, FrameRequest{});
     }
 }
 
-void Renderer::Impl::unload() {
+void FrameRecorder::scene_unloading() {
     // Frames in flight may still read the scene's buffers and textures: wait for
     // them, so that the bindless slots the scene gives back can be reused at once.
     if (transmission_) transmission_->release();
@@ -226,23 +203,23 @@ void Renderer::Impl::unload() {
     }
     culling.reset();
     pose_.reset();
-    acceleration.reset();
-    scene.reset();
-    ++scene_generation_; // frame sets must stop naming the freed material buffers
-    lighting_ = Scene{};
-    nodes_.clear();
-    instance_node_.clear();
-    hidden_given_.clear();
-    hidden_nodes_.clear();
     shadows_.invalidate();
-    resources->collect_garbage();
 }
 
-void Renderer::Impl::wait_slot(FrameSlot& slot) {
+void FrameRecorder::count_target_bytes(ResidentStats& out) const {
+    out.transmission_target_bytes = transmission_->bytes();
+    out.render_target_bytes = shadows_.bytes() + targets_.bytes() + out.transmission_target_bytes;
+}
+
+void FrameRecorder::wait_all() {
+    for (auto& slot : slots_) wait_slot(*slot);
+}
+
+void FrameRecorder::wait_slot(FrameSlot& slot) {
     if (slot.submission) resources->timeline().wait_for(slot.submission);
 }
 
-FrameStats Renderer::Impl::render(const RenderSettings& settings, std::vector<std::uint8_t>* rgba) {
+FrameStats FrameRecorder::render(const FrameRequest& settings, std::vector<std::uint8_t>* rgba) {
     if (settings.width == 0 || settings.height == 0 || settings.width > 16384 ||
         settings.height > 16384)
         throw GpuError("render size " + std::to_string(settings.width) + "x" +
@@ -255,30 +232,30 @@ FrameStats Renderer::Impl::render(const RenderSettings& settings, std::vector<st
     next_slot_ = (next_slot_ + 1) % kFramesInFlight;
     FrameSlot& slot = *slots_[index];
     wait_slot(slot);
-    const RenderTarget target = offscreen_target(settings.width, settings.height);
+    const RenderTarget target = targets_.offscreen(settings.width, settings.height);
     VkCommandBuffer cmd = slot.recorder.begin();
     record_frame(cmd, index, target, settings);
-    if (rgba) record_readback(cmd, settings.width, settings.height);
+    if (rgba) targets_.record_readback(cmd, settings.width, settings.height);
     const std::uint64_t value = slot.recorder.submit(*resources);
     finish_frame(index, value);
     FrameStats stats = slot_stats(index);
-    if (rgba) read_offscreen(*rgba, settings.width, settings.height);
+    if (rgba) targets_.read_offscreen(*rgba, settings.width, settings.height);
     resources->collect_garbage();
     return stats;
 }
 
-void Renderer::Impl::finish_frame(std::uint32_t slot, std::uint64_t submission) {
+void FrameRecorder::finish_frame(std::uint32_t slot, std::uint64_t submission) {
     slots_.at(slot)->submission = submission;
     slots_.at(slot)->has_results = true;
 }
 
-FrameStats Renderer::Impl::slot_stats(std::uint32_t index) {
+FrameStats FrameRecorder::slot_stats(std::uint32_t index) {
     FrameSlot& slot = *slots_.at(index);
     wait_slot(slot);
     return read_stats(slot);
 }
 
-FrameStats Renderer::Impl::read_stats(FrameSlot& slot) {
+FrameStats FrameRecorder::read_stats(FrameSlot& slot) {
     FrameStats s;
     if (!slot.has_results) return s;
     if (slot.ray_traced) return read_rt_stats(slot);
@@ -312,67 +289,81 @@ FrameStats Renderer::Impl::read_stats(FrameSlot& slot) {
     return s;
 }
 
-// The public face: forwards to Impl.
+// The public face: a load goes to the scene state, then the recorder; frames to the recorder.
 
 Renderer::Renderer(Context& context, const RendererOptions& options)
-    : impl_(std::make_unique<Impl>(context, options)) {}
+    : context_(context), resources_(std::make_unique<ResourceManager>(context)),
+      scene_(std::make_unique<SceneState>(context, *resources_, options)),
+      frames_(std::make_unique<FrameRecorder>(*scene_)) {}
 
-Renderer::~Renderer() = default;
+Renderer::~Renderer() {
+    frames_.reset(); // waits for the device; before the scene its frames read
+    scene_.reset();
+}
 
-void Renderer::load(const Scene& scene, StreamPolicy policy) {
+void Renderer::load(const Scene& scene, const SceneSetup& setup) {
     unload();
-    Impl& r = *impl_;
-    r.load(scene, std::make_unique<GpuScene>(*r.resources, *r.bindless, scene, r.options.textures,
-                                             policy));
+    SceneState& s = *scene_;
+    s.load(scene,
+           std::make_unique<GpuScene>(*resources_, s.bindless, scene, s.options.textures,
+                                      setup.streams, setup.missing_textures),
+           setup);
+    frames_->scene_loaded(scene);
 }
 
 void Renderer::load(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
-                    StreamPolicy policy) {
+                    const SceneSetup& setup) {
     unload();
-    Impl& r = *impl_;
-    r.load(scene, std::make_unique<GpuScene>(*r.resources, *r.bindless, scene, std::move(textures),
-                                             policy, r.options.textures.missing));
+    SceneState& s = *scene_;
+    s.load(scene,
+           std::make_unique<GpuScene>(*resources_, s.bindless, scene, std::move(textures),
+                                      setup.streams, setup.missing_textures),
+           setup);
+    frames_->scene_loaded(scene);
 }
 
-const TextureSettings& Renderer::texture_settings() const {
-    return impl_->options.textures;
-}
-
-void Renderer::set_texture_settings(const TextureSettings& settings) {
-    impl_->options.textures = settings;
+void Renderer::set_hidden_nodes(std::shared_ptr<const std::vector<bool>> hidden) {
+    scene_->setup.hidden_nodes = std::move(hidden);
 }
 
 void Renderer::unload() {
-    impl_->unload();
+    // Frames in flight may still read the scene's buffers and textures: the recorder
+    // waits for them, so that the bindless slots the scene gives back can be reused at once.
+    frames_->scene_unloading();
+    scene_->unload();
+    resources_->collect_garbage();
 }
 
 const GpuScene* Renderer::scene() const {
-    return impl_->scene.get();
+    return scene_->gpu.get();
 }
 
-FrameStats Renderer::render(const RenderSettings& settings, std::vector<std::uint8_t>* rgba) {
-    return impl_->render(settings, rgba);
+FrameStats Renderer::render(const FrameRequest& settings, std::vector<std::uint8_t>* rgba) {
+    return frames_->render(settings, rgba);
 }
 
 const RingHistory<CullFrame>& Renderer::cull_history() const {
-    return impl_->culling.history();
+    return frames_->cull_history();
 }
 
 ResourceManager& Renderer::resources() {
-    return *impl_->resources;
+    return *resources_;
 }
 
 Context& Renderer::context() {
-    return impl_->context;
+    return context_;
+}
+
+FrameRecorder& Renderer::frames() {
+    return *frames_;
 }
 
 ResidentStats Renderer::resident() const {
     ResidentStats out;
     out.acceleration =
-        impl_->acceleration && impl_->scene ? &impl_->acceleration->stats() : nullptr;
-    out.environment = impl_->environment ? impl_->environment->stats() : EnvironmentStats{};
-    out.render_target_bytes = impl_->render_target_bytes();
-    out.transmission_target_bytes = impl_->transmission_bytes();
+        scene_->acceleration && scene_->gpu ? &scene_->acceleration->stats() : nullptr;
+    out.environment = scene_->environment ? scene_->environment->stats() : EnvironmentStats{};
+    frames_->count_target_bytes(out);
     return out;
 }
 

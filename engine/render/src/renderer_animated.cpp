@@ -1,12 +1,13 @@
 // KHR_animation_pointer inside the renderer: the frame's pose carries the animated
 // property values (Pose::properties). When they differ from the last applied ones,
 // copies of the loaded materials, lights and cameras take them
-// (apply_animated_properties()); the lights and cameras go to the frame constants
-// (lighting_), node visibility joins RenderSettings::hidden_nodes, and the materials
-// reach the GPU through the one narrow path GpuMaterials::update(), which uploads only
-// the records that changed (after the frames in flight, which read the same buffers).
-// A frame without animated values costs one comparison.
-#include "renderer_impl.h"
+// (apply_animated_properties()); the lights and cameras go to the scene state's
+// SceneLights (the frame constants), node visibility joins SceneSetup::hidden_nodes, and
+// the materials reach the GPU through the one narrow path GpuMaterials::update(), which
+// uploads only the records that changed (after the frames in flight, which read the same
+// buffers: FrameRecorder::apply_scene_changes()). A frame without animated values costs
+// one comparison.
+#include "scene_state.h"
 
 #include <algorithm>
 #include <cstring>
@@ -26,7 +27,7 @@ bool same(const std::vector<AnimatedProperty>& a, const std::vector<AnimatedProp
 
 } // namespace
 
-void Renderer::Impl::load_animated(const Scene& source) {
+void SceneState::load_animated(const Scene& source) {
     // Copies only for a file that animates properties: the others keep nothing.
     const bool animates = std::any_of(source.animations.begin(), source.animations.end(),
                                       [](const Animation& a) { return !a.pointers.empty(); });
@@ -44,23 +45,20 @@ void Renderer::Impl::load_animated(const Scene& source) {
     animated_hidden_.clear();
     if (hidden) // KHR_node_visibility's own values, before any animation
         for (bool v : base_visible_) animated_hidden_.push_back(!v);
-    animated_bytes_ = 0;
 }
 
-void Renderer::Impl::apply_animated(const RenderSettings& settings) {
-    if (!scene) return;
-    static const std::vector<AnimatedProperty> kNone;
-    const std::vector<AnimatedProperty>& values = settings.pose ? settings.pose->properties : kNone;
-    animated_bytes_ = 0;
+std::optional<std::vector<MaterialInstance>>
+SceneState::animate(const std::vector<AnimatedProperty>& values) {
+    if (!gpu) return std::nullopt;
     if (same(values, animated_) ||
         (base_materials_.empty() && base_lights_.empty() && base_cameras_.empty()))
-        return; // the file animates no property
+        return std::nullopt; // the file animates no property
     std::vector<MaterialInstance> materials = base_materials_;
-    lighting_.lights = base_lights_;
-    lighting_.cameras = base_cameras_;
+    lights.lights = base_lights_;
+    lights.cameras.cameras = base_cameras_;
     std::vector<bool> visible = base_visible_;
-    const std::vector<std::uint32_t> touched =
-        apply_animated_properties(values, materials, lighting_.lights, lighting_.cameras, &visible);
+    const std::vector<std::uint32_t> touched = apply_animated_properties(
+        values, materials, lights.lights, lights.cameras.cameras, &visible);
     std::vector<bool> hidden(visible.size());
     bool any_hidden = false;
     for (std::size_t i = 0; i < visible.size(); ++i) any_hidden |= hidden[i] = !visible[i];
@@ -70,13 +68,8 @@ void Renderer::Impl::apply_animated(const RenderSettings& settings) {
     const bool materials_animated = !touched.empty() || materials_animated_;
     materials_animated_ = !touched.empty();
     animated_ = values;
-    if (!materials_animated) return;
-    for (auto& s : slots_) wait_slot(*s);
-    animated_bytes_ = update_scene_materials(*scene, materials);
-    if (animated_bytes_) {
-        ++material_generation_;
-        shadows_.invalidate(); // masked casters read alpha and cutoff
-    }
+    if (!materials_animated) return std::nullopt;
+    return materials;
 }
 
 } // namespace sherpa::gpu

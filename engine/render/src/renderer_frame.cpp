@@ -2,7 +2,7 @@
 // (record_passes), with a timestamp after each timed pass and the pipeline
 // statistics around the camera's passes.
 #include "draw.h"
-#include "renderer_impl.h"
+#include "frame_recorder.h"
 
 #include <sherpa/render/gpu_structs.h>
 
@@ -25,10 +25,9 @@ static_assert(kAfterOverlays + 1 == kTimestampCount);
 
 } // namespace
 
-void Renderer::Impl::record_frame(VkCommandBuffer cmd, std::uint32_t index,
-                                  const RenderTarget& target, const RenderSettings& settings) {
-    apply_animated(settings);
-    apply_visibility(settings, false);
+void FrameRecorder::record_frame(VkCommandBuffer cmd, std::uint32_t index,
+                                 const RenderTarget& target, const FrameRequest& settings) {
+    apply_scene_changes(settings, false);
     FrameSlot& slot = *slots_.at(index);
     wait_slot(slot);
     // Frames nobody read the results of (the swapchain path) still reach the
@@ -42,14 +41,14 @@ void Renderer::Impl::record_frame(VkCommandBuffer cmd, std::uint32_t index,
     slot.has_results = false;
     slot.ray_traced = false;
     slot.draw_calls = 0;
-    FrameContext f{cmd,     slot,       index,       pipelines_for(target.format), settings, target,
-                   context, *resources, scene.get(), culling.scene_culling(),      lighting_};
+    FrameContext f{
+        cmd,     slot,       index,       pipelines_for(target.format), settings,    target,
+        context, *resources, scene.get(), culling.scene_culling(),      state.lights};
     f.environment = environment.get();
     record_passes(f);
 }
 
-void Renderer::Impl::record_passes(FrameContext& f) {
-    ensure_depth(f.target.width, f.target.height);
+void FrameRecorder::record_passes(FrameContext& f) {
     pose_.record(f); // before the frame data: the shadow fit and cache read the pose
     begin_frame(f);
     transmission_->prepare(f); // writes the slot's set: before it is bound
@@ -77,13 +76,13 @@ void Renderer::Impl::record_passes(FrameContext& f) {
     end_camera_rendering(f);
 }
 
-void Renderer::Impl::timestamp(FrameContext& f, std::uint32_t index) {
+void FrameRecorder::timestamp(FrameContext& f, std::uint32_t index) {
     vkCmdWriteTimestamp2(f.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, f.slot.timestamps.get(),
                          index);
 }
 
 // Frame constants, the slot's descriptor set, and whether the depth prepass runs.
-void Renderer::Impl::begin_frame(FrameContext& f) {
+void FrameRecorder::begin_frame(FrameContext& f) {
     FrameSlot& slot = f.slot;
     write_frame_data(f);
     slot.shadows_rendered = f.cascades > 0;
@@ -103,7 +102,7 @@ void Renderer::Impl::begin_frame(FrameContext& f) {
 }
 
 // Descriptor sets and index buffer of every draw of the frame.
-void Renderer::Impl::bind_frame(FrameContext& f) {
+void FrameRecorder::bind_frame(FrameContext& f) {
     const VkDescriptorSet sets[] = {bindless->set(), f.slot.set};
     vkCmdBindDescriptorSets(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, f.pipelines.layout(), 0, 2,
                             sets, 0, nullptr);
@@ -113,8 +112,8 @@ void Renderer::Impl::bind_frame(FrameContext& f) {
 
 // The target and depth in attachment layouts (both cleared: their previous
 // contents do not matter), dynamic rendering begun, statistics started.
-void Renderer::Impl::begin_camera_rendering(FrameContext& f) {
-    const Image& depth_image = resources->images().get(depth_);
+void FrameRecorder::begin_camera_rendering(FrameContext& f) {
+    const Image& depth_image = targets_.depth(f.target.width, f.target.height);
     transition(f.cmd,
                {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                 VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
@@ -159,7 +158,7 @@ void Renderer::Impl::begin_camera_rendering(FrameContext& f) {
     if (f.slot.statistics) vkCmdBeginQuery(f.cmd, f.slot.statistics.get(), 0, 0);
 }
 
-void Renderer::Impl::end_camera_rendering(FrameContext& f) {
+void FrameRecorder::end_camera_rendering(FrameContext& f) {
     if (f.slot.statistics) vkCmdEndQuery(f.cmd, f.slot.statistics.get(), 0);
     vkCmdEndRendering(f.cmd);
     // What reads the target next: a copy (readback, blit), shaders (a comparison

@@ -1,6 +1,6 @@
 // The path-traced lit view (RendererKind::RayTraced, DebugView::Lit): its constants,
 // when its accumulation continues and when it starts over, and its read back sums.
-#include "renderer_impl.h"
+#include "frame_recorder.h"
 
 #include <sherpa/gpu/gpu_error.h>
 
@@ -25,21 +25,21 @@ constexpr float kMaxSampleRadiance = 1e20f;
 
 } // namespace
 
-PathTraceFrame Renderer::Impl::record_path(VkCommandBuffer cmd, FrameSlot& slot,
-                                           const RenderSettings& settings, bool readback) {
+PathTraceFrame FrameRecorder::record_path(VkCommandBuffer cmd, FrameSlot& slot,
+                                          const FrameRequest& settings, bool readback) {
     if (!path_) path_ = std::make_unique<PathTracePass>(context, *resources, bindless->layout());
-    if (path_environment_ != environment_generation_) {
-        path_->set_distribution(environment_distribution_ ? *environment_distribution_
-                                                          : EnvironmentDistribution{});
-        path_environment_ = environment_generation_;
+    if (path_environment_ != state.environment_generation) {
+        path_->set_distribution(state.environment_sampling ? *state.environment_sampling
+                                                           : EnvironmentDistribution{});
+        path_environment_ = state.environment_generation;
     }
-    if (path_lights_ != scene_generation_) {
-        path_->set_lights(emissive_lights_);
-        path_lights_ = scene_generation_;
+    if (path_lights_ != state.generation) {
+        path_->set_lights(state.emissive);
+        path_lights_ = state.generation;
     }
-    const CameraView camera =
-        resolve_camera(settings.camera, lighting_, float(settings.width) / float(settings.height));
-    GPUFrameData constants = lighting_constants(settings);
+    const CameraView camera = resolve_camera(settings.camera, state.lights.cameras,
+                                             float(settings.width) / float(settings.height));
+    GPUFrameData constants = lighting_constants(state.lights, environment.get(), settings);
     constants.view = camera.view;
     constants.proj = camera.proj;
     constants.view_proj = camera.proj * camera.view;
@@ -71,12 +71,12 @@ PathTraceFrame Renderer::Impl::record_path(VkCommandBuffer cmd, FrameSlot& slot,
     key.add(p);
     key.add(f.width);
     key.add(f.height);
-    key.add(scene_generation_);
-    key.add(environment_generation_);
-    key.add(rt_pose_key_);
-    key.add(visibility_version_);
+    key.add(state.generation);
+    key.add(state.environment_generation);
+    key.add(state.rt_pose_key);
+    key.add(state.visibility_version);
     key.add(settings.path.light_sampling);
-    key.add(material_generation_);
+    key.add(state.material_generation);
     PathTraceFrame out;
     out.restarted = settings.path.restart || key.h != path_key_ || path_samples_ == 0 ||
                     path_->width() != f.width || path_->height() != f.height;
@@ -98,7 +98,7 @@ PathTraceFrame Renderer::Impl::record_path(VkCommandBuffer cmd, FrameSlot& slot,
     return out;
 }
 
-PathTraceImage Renderer::Impl::path_trace_image() {
+PathTraceImage FrameRecorder::path_trace_image() {
     PathTraceImage image;
     if (!path_ || path_samples_ == 0) return image;
     for (auto& s : slots_) wait_slot(*s);
@@ -114,7 +114,7 @@ PathTraceImage Renderer::Impl::path_trace_image() {
 }
 
 PathTraceImage read_path_trace(Renderer& renderer) {
-    return renderer.impl_->path_trace_image();
+    return renderer.frames().path_trace_image();
 }
 
 PathTraceError path_trace_error(Renderer& renderer) {

@@ -1,9 +1,9 @@
-// The ray-traced frame (RenderSettings::renderer = RayTraced): primary rays through
+// The ray-traced frame (FrameRequest::renderer = RayTraced): primary rays through
 // the scene's acceleration structures, built on load, drawing the surface-data
 // debug views with the rasterizer's formulas (rt_view_pass.h), or the path-traced lit
 // view (path_trace_pass.h, renderer_path.cpp). Views and overlays the ray tracer has
 // no formula for are refused, never drawn as something else.
-#include "renderer_impl.h"
+#include "frame_recorder.h"
 
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/vk_helpers.h>
@@ -29,11 +29,12 @@ std::string ray_traced_view_names() {
 
 } // namespace
 
-bool Renderer::Impl::pose_acceleration(FrameSlot& slot, const RenderSettings& settings) {
+bool FrameRecorder::pose_acceleration(FrameSlot& slot, const FrameRequest& settings) {
     if (!acceleration || !pose_.active()) return false;
     pose_.record(slot, settings, scene != nullptr);
     // The structures hold this pose already (a paused timeline, the default pose).
-    if (!slot.posed || (rt_pose_key_ == slot.pose_key && rt_pose_generation_ == scene_generation_))
+    if (!slot.posed ||
+        (state.rt_pose_key == slot.pose_key && state.rt_pose_generation == state.generation))
         return false;
     PoseFrame frame;
     frame.instances = slot.posed_instances;
@@ -41,12 +42,12 @@ bool Renderer::Impl::pose_acceleration(FrameSlot& slot, const RenderSettings& se
     frame.highlight_base = slot.highlight_base;
     frame.node_world = pose_.pose_of(settings).world;
     acceleration->update_pose(frame);
-    rt_pose_key_ = slot.pose_key;
-    rt_pose_generation_ = scene_generation_;
+    state.rt_pose_key = slot.pose_key;
+    state.rt_pose_generation = state.generation;
     return true;
 }
 
-void Renderer::Impl::check_rt(const RenderSettings& settings) const {
+void FrameRecorder::check_rt(const FrameRequest& settings) const {
     if (!acceleration)
         throw GpuError("the ray tracer needs the scene's acceleration structures: create the "
                        "renderer with RendererOptions::ray_tracing on a device that ray traces");
@@ -54,7 +55,7 @@ void Renderer::Impl::check_rt(const RenderSettings& settings) const {
         throw GpuError("the ray tracer does not draw view '" +
                        std::string(to_string(settings.view)) + "' (it draws " +
                        ray_traced_view_names() + ")");
-    if (variant_ != loaded_variant_)
+    if (state.variant != state.loaded_variant)
         throw GpuError("the ray tracer draws the materials the scene was loaded with: a material "
                        "variant switched after loading reaches the raster only (load the scene "
                        "with the variant to trace it)");
@@ -63,10 +64,10 @@ void Renderer::Impl::check_rt(const RenderSettings& settings) const {
         throw GpuError("the ray tracer draws no overlays or highlights (raster only)");
 }
 
-RayTracedFrame Renderer::Impl::rt_frame(const RenderSettings& settings,
-                                        const FrameSlot& data_slot) const {
-    const CameraView camera =
-        resolve_camera(settings.camera, lighting_, float(settings.width) / float(settings.height));
+RayTracedFrame FrameRecorder::rt_frame(const FrameRequest& settings,
+                                       const FrameSlot& data_slot) const {
+    const CameraView camera = resolve_camera(settings.camera, state.lights.cameras,
+                                             float(settings.width) / float(settings.height));
     RayTracedFrame f;
     f.bindless = bindless->set();
     f.tlas = acceleration->tlas();
@@ -81,24 +82,24 @@ RayTracedFrame Renderer::Impl::rt_frame(const RenderSettings& settings,
     f.push.clear_color = settings.clear_color;
     f.frame_data = resources->get(data_slot.frame_data).buffer.get();
     f.shadow_map = shadows_.descriptor();
-    const MainSun sun = main_sun(lighting_, settings);
+    const MainSun sun = main_sun(state.lights, settings);
     f.push.sun = glm::vec4(-sun.direction, std::max(settings.sun_angular_radius, 0.0f));
     // As the rasterizer: no sun or no shadows, and only the facing rule remains.
     f.push.shadow_rays = sun.present && settings.shadows ? std::max(settings.shadow_rays, 1u) : 0u;
     f.push.ao_rays = settings.ao_rays;
-    const float diagonal = lighting_.bounds.valid() ? glm::length(lighting_.bounds.extent()) : 1.0f;
+    const Aabb& bounds = state.lights.cameras.bounds;
+    const float diagonal = bounds.valid() ? glm::length(bounds.extent()) : 1.0f;
     f.push.ao_radius = settings.ao_radius > 0.0f ? settings.ao_radius : 0.05f * diagonal;
     return f;
 }
 
-FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
-                                     std::vector<std::uint8_t>* rgba) {
+FrameStats FrameRecorder::render_rt(const FrameRequest& settings, std::vector<std::uint8_t>* rgba) {
     check_rt(settings);
     // The shadow-error view compares with the rasterizer's cascades at this camera:
     // its shadow view is drawn first (cascades and frame constants in that slot).
     const std::uint32_t raster_slot = next_slot_;
     if (settings.view == DebugView::ShadowError) {
-        RenderSettings raster = settings;
+        FrameRequest raster = settings;
         raster.renderer = RendererKind::Raster;
         raster.view = DebugView::Shadow;
         render(raster, nullptr);
@@ -106,15 +107,14 @@ FrameStats Renderer::Impl::render_rt(const RenderSettings& settings,
     // Its descriptor set is rewritten per frame, and the structures are posed below:
     // no earlier frame may be in flight.
     for (auto& s : slots_) wait_slot(*s);
-    apply_animated(settings);
-    apply_visibility(settings, true);
+    apply_scene_changes(settings, true);
     if (!rt_views_)
         rt_views_ = std::make_unique<RtViewPass>(context, *resources, bindless->layout());
     const std::uint32_t index = next_slot_;
     next_slot_ = (next_slot_ + 1) % kFramesInFlight;
     FrameSlot& slot = *slots_[index];
     FrameStats stats;
-    // Moving meshes and node transforms of this frame's pose (RenderSettings::pose,
+    // Moving meshes and node transforms of this frame's pose (FrameRequest::pose,
     // else the file's default pose) into the structures, when it is not the pose they hold.
     if (pose_acceleration(slot, settings)) {
         const AccelerationStats& a = acceleration->stats();

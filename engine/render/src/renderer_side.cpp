@@ -1,14 +1,14 @@
 // The renderer as one side of a comparison, or a presented ray-traced frame: the
 // frame recorded into an image of the renderer that the comparison pass samples
 // (comparison_pass.h), raster or ray traced, with the presenter's frame slots.
-#include "renderer_impl.h"
+#include "frame_recorder.h"
 
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/vk_helpers.h>
 
 namespace sherpa::gpu {
 
-void Renderer::Impl::check_drawable(const RenderSettings& settings) const {
+void FrameRecorder::check_drawable(const FrameRequest& settings) const {
     if (settings.renderer != RendererKind::RayTraced) return;
     check_rt(settings);
     // It draws the rasterizer's shadow frame first and waits for it (render_rt): not
@@ -19,34 +19,20 @@ void Renderer::Impl::check_drawable(const RenderSettings& settings) const {
             "shadows family), not in presented or compared frames");
 }
 
-ComparisonPass& Renderer::Impl::comparison() {
+ComparisonPass& FrameRecorder::comparison() {
     if (!comparison_)
         comparison_ = std::make_unique<ComparisonPass>(context, *resources, kFramesInFlight);
     return *comparison_;
 }
 
-SideImage Renderer::Impl::record_side(VkCommandBuffer cmd, std::uint32_t index,
-                                      const RenderSettings& settings) {
+SideImage FrameRecorder::record_side(VkCommandBuffer cmd, std::uint32_t index,
+                                     const FrameRequest& settings) {
     FrameSlot& slot = *slots_.at(index);
     if (settings.renderer == RendererKind::RayTraced && acceleration &&
         acceleration->tlas() != VK_NULL_HANDLE)
         return record_rt_side(cmd, slot, settings);
     check_drawable(settings);
-    ImageDesc d;
-    d.format = kOffscreenFormat;
-    d.width = settings.width;
-    d.height = settings.height;
-    d.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-              VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    // The comparison reads the stored sRGB bytes as they are, through an UNORM view.
-    d.alias_format = VK_FORMAT_R8G8B8A8_UNORM;
-    d.name = "comparison side";
-    if (!side_.valid() || resources->images().get(side_).desc.width != d.width ||
-        resources->images().get(side_).desc.height != d.height) {
-        resources->images().destroy(side_); // freed once the frames reading it are done
-        side_ = resources->images().create(d);
-    }
-    const Image& image = resources->images().get(side_);
+    const Image& image = targets_.side(settings.width, settings.height);
     if (settings.renderer == RendererKind::RayTraced) {
         // Nothing with triangles to trace: every ray misses, the clear colour.
         for (auto& s : slots_) wait_slot(*s);
@@ -78,15 +64,14 @@ SideImage Renderer::Impl::record_side(VkCommandBuffer cmd, std::uint32_t index,
     return {image.alias_view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
 }
 
-SideImage Renderer::Impl::record_rt_side(VkCommandBuffer cmd, FrameSlot& slot,
-                                         const RenderSettings& settings) {
+SideImage FrameRecorder::record_rt_side(VkCommandBuffer cmd, FrameSlot& slot,
+                                        const FrameRequest& settings) {
     check_rt(settings);
     // The ray tracer's descriptor set and image are rewritten per frame: no earlier
     // frame of this renderer may still be in flight (a presented RT frame waits for
     // the previous one; rays on lavapipe take far longer than that wait).
     for (auto& s : slots_) wait_slot(*s);
-    apply_animated(settings);
-    apply_visibility(settings, true);
+    apply_scene_changes(settings, true);
     if (!rt_views_)
         rt_views_ = std::make_unique<RtViewPass>(context, *resources, bindless->layout());
     // This frame's pose into the structures (submitted and waited for on its own),
@@ -105,7 +90,7 @@ SideImage Renderer::Impl::record_rt_side(VkCommandBuffer cmd, FrameSlot& slot,
 }
 
 // A ray-traced side has two timestamps, no culling, draws or pipeline statistics.
-void Renderer::Impl::begin_rt_side(VkCommandBuffer cmd, FrameSlot& slot) {
+void FrameRecorder::begin_rt_side(VkCommandBuffer cmd, FrameSlot& slot) {
     slot.ray_traced = true;
     slot.path_traced = false;   // record_rt_side says otherwise
     slot.history_pushed = true; // no culling to report
@@ -116,12 +101,12 @@ void Renderer::Impl::begin_rt_side(VkCommandBuffer cmd, FrameSlot& slot) {
     vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_NONE, slot.timestamps.get(), 0);
 }
 
-void Renderer::Impl::end_rt_side(VkCommandBuffer cmd, FrameSlot& slot) {
+void FrameRecorder::end_rt_side(VkCommandBuffer cmd, FrameSlot& slot) {
     if (context.info().timestamps)
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, slot.timestamps.get(), 1);
 }
 
-FrameStats Renderer::Impl::read_rt_stats(FrameSlot& slot) {
+FrameStats FrameRecorder::read_rt_stats(FrameSlot& slot) {
     FrameStats s;
     if (slot.path_traced) s.path = last_path_;
     if (!slot.has_results || !context.info().timestamps) return s;

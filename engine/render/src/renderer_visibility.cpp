@@ -1,69 +1,47 @@
-// Node visibility inside the renderer (RenderSettings::hidden_nodes): a changed mask
-// is expanded to subtrees once (hidden_subtrees(), the editor's rule too), mapped to
-// GPU instances for the culling pass (whose GPU cullers, shown-id lists and
-// statistics leave hidden instances out), redraws the cached shadow cascades, and
-// reaches the TLAS before the next ray-traced frame. An unchanged mask costs one
-// comparison.
-#include "renderer_impl.h"
-
-#include <sherpa/scene/visibility.h>
+// What changes in the loaded scene between frames, applied before a frame: the frame's
+// animated properties (KHR_animation_pointer, renderer_animated.cpp) and the node
+// visibility (SceneSetup::hidden_nodes and the nodes KHR_node_visibility hides). The
+// scene state maps a changed mask to GPU instances once (scene_state.cpp); here the
+// animated materials are uploaded (after the frames in flight, which read the same
+// buffers), the culling takes the mask (after the frames in flight that index the GPU
+// cullers being replaced), the cached shadow cascades are redrawn, and the TLAS follows
+// before the next ray-traced frame. An unchanged frame costs two comparisons.
+#include "frame_recorder.h"
 
 namespace sherpa::gpu {
 
-void Renderer::Impl::load_visibility(const Scene& source) {
-    nodes_ = source.nodes;
-    instance_node_.clear();
-    for (const std::uint32_t si : scene->scene_instances())
-        instance_node_.push_back(si < source.instances.size() ? source.instances[si].node_id : ~0u);
-    hidden_given_.clear();
-    hidden_nodes_.clear();
-    // The TLAS was built with RendererOptions::acceleration's mask; ours replaces it.
-    tlas_visibility_ = options.acceleration.hidden_nodes.empty();
-}
-
-std::vector<std::uint8_t> Renderer::Impl::hidden_instances() const {
-    std::vector<std::uint8_t> hidden(instance_node_.size(), 0);
-    for (std::size_t i = 0; i < hidden.size(); ++i)
-        hidden[i] = instance_node_[i] < hidden_nodes_.size() && hidden_nodes_[instance_node_[i]];
-    return hidden;
-}
-
-void Renderer::Impl::apply_visibility(const RenderSettings& settings, bool rt) {
+void FrameRecorder::apply_scene_changes(const FrameRequest& settings, bool rt) {
     if (!scene) return;
-    static const std::vector<bool> kNone;
-    const std::vector<bool>& asked = settings.hidden_nodes ? *settings.hidden_nodes : kNone;
-    // Nodes an animation hides (KHR_node_visibility through KHR_animation_pointer) join
-    // the ones the settings hide.
-    std::vector<bool> merged;
-    if (!animated_hidden_.empty()) {
-        merged = animated_hidden_;
-        for (std::size_t i = 0; i < asked.size() && i < merged.size(); ++i)
-            merged[i] = merged[i] || asked[i];
-    }
-    const std::vector<bool>& given = animated_hidden_.empty() ? asked : merged;
-    if (given != hidden_given_) {
-        // Frames in flight index the GPU cullers being replaced: wait for them and
-        // keep their statistics in the history now.
-        for (auto& s : slots_) {
-            wait_slot(*s);
-            if (s->has_results && !s->history_pushed) {
-                FrameStats unused;
-                culling.read_stats(*s, scene.get(), unused);
-            }
-            s->culling.count = 0;
-        }
-        hidden_given_ = given;
-        hidden_nodes_ = hidden_subtrees(nodes_, given);
-        culling.set_hidden(hidden_instances(), *scene);
-        shadows_.invalidate(); // the casters changed
-        tlas_visibility_ = false;
-    }
-    if (rt && acceleration && !tlas_visibility_) {
+    static const std::vector<AnimatedProperty> kNone;
+    if (auto materials = state.animate(settings.pose ? settings.pose->properties : kNone)) {
         for (auto& s : slots_) wait_slot(*s);
-        acceleration->set_hidden_nodes(hidden_nodes_);
+        if (update_scene_materials(*state.gpu, *materials)) {
+            ++state.material_generation;
+            shadows_.invalidate(); // masked casters read alpha and cutoff
+        }
+    }
+    if (auto hidden = state.take_visibility_change()) {
+        retire_culling();
+        culling.set_hidden(std::move(*hidden), *scene);
+        shadows_.invalidate(); // the casters changed
+    }
+    if (rt && acceleration && !state.tlas_visibility) {
+        for (auto& s : slots_) wait_slot(*s);
+        acceleration->set_hidden_nodes(state.hidden_nodes());
         // The rebuilt TLAS holds the loaded transforms: the frame's pose goes in again.
-        rt_pose_generation_ = 0;
-        tlas_visibility_ = true;
+        state.rt_pose_generation = 0;
+        state.tlas_visibility = true;
+    }
+}
+
+void FrameRecorder::retire_culling() {
+    for (auto& s : slots_) {
+        wait_slot(*s);
+        if (s->has_results && !s->history_pushed) {
+            FrameStats unused;
+            culling.read_stats(*s, scene.get(), unused);
+        }
+        s->culling.count = 0;
     }
 }
 

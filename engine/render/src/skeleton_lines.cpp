@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <sherpa/render/render_settings.h>
+#include <sherpa/render/frame_request.h>
 
 namespace sherpa::gpu {
 

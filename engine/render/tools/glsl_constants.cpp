@@ -146,7 +146,7 @@ std::vector<Section> sections() {
          mesh_flags()},
         {"sherpa_views.glsl", "debug views, sherpa::gpu::kDebugViews (debug_views.h)", views()},
         {"sherpa_overlays.glsl",
-         "overlay bits of RenderSettings::overlays, sherpa::gpu::kOverlays (debug_views.h)",
+         "overlay bits of FrameRequest::overlays, sherpa::gpu::kOverlays (debug_views.h)",
          overlays()},
         {"sherpa_texture_slots.glsl",
          "texture slots of GPUMaterialExtra.uv, in this order, and its workflows", texture_slots()},

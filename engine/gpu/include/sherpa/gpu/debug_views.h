@@ -42,7 +42,7 @@ enum class DebugView : std::uint32_t {
     Provenance = 15,         // tangent provenance: green authored, yellow generated, red defaulted
     ShadingNormal = 16,      // normal after normal mapping (world)
     Specular = 17,           // F0: specular-glossiness' specular, else mix(0.04, base, metallic)
-    JointInfluence = 18,     // weight of RenderSettings::selected_joint, as a heat map
+    JointInfluence = 18,     // weight of FrameRequest::selected_joint, as a heat map
     // Visibility of the sun (1 lit, 0 shadowed, greys between): the cascaded shadow maps
     // in the rasterizer, shadow rays in the ray tracer (docs/raytracing/README.md).
     Shadow = 19,
@@ -115,7 +115,7 @@ enum Overlay : std::uint32_t {
     // frozen culling camera its frustum is drawn too.
     kOverlayCullBoxes = 1u << 5,
     // Joints and bones of every skin as lines (world positions from the frame's pose, else
-    // the scene as loaded), the selected joint (RenderSettings::selected_joint) highlighted.
+    // the scene as loaded), the selected joint (FrameRequest::selected_joint) highlighted.
     kOverlaySkeleton = 1u << 6,
 };
 
@@ -230,7 +230,7 @@ constexpr bool views_indexed_by_id() {
 static_assert(views_indexed_by_id(), "kDebugViews must list the views in id order");
 
 // Whether the rasterizer draws `v`: every view but those only rays can compute (the
-// ray tracer's list is render_settings.h's ray_traced_view).
+// ray tracer's list is frame_request.h's ray_traced_view).
 constexpr bool raster_view(DebugView v) {
     return v != DebugView::AmbientOcclusion && v != DebugView::ShadowError;
 }

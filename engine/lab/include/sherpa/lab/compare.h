@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include <sherpa/render/render_settings.h>
+#include <sherpa/render/frame_request.h>
 #include <sherpa/scene/camera_spec.h>
 #include <sherpa/scene/scene.h>
 #include <sherpa/texture/image.h>

@@ -6,7 +6,7 @@
 
 #include <sherpa/core/aabb.h>
 #include <sherpa/lab/family.h>
-#include <sherpa/render/render_settings.h>
+#include <sherpa/render/frame_request.h>
 #include <sherpa/scene/camera_spec.h>
 
 namespace sherpa::lab {

@@ -86,7 +86,7 @@ struct AccelerationSettings {
     // rebuilt (PREFER_FAST_BUILD, no ALLOW_UPDATE).
     bool refit_posed = true;
     // Per node: true excludes its instances (empty: every node shown). Through a
-    // Renderer, RenderSettings::hidden_nodes (subtree rule applied) replaces it from the
+    // Renderer, FrameRequest::hidden_nodes (subtree rule applied) replaces it from the
     // first ray-traced frame on: the renderer's settings are the one source.
     std::vector<bool> hidden_nodes;
 };

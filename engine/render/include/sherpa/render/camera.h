@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -50,9 +51,18 @@ struct CameraView {
 // What the shadow-cascade fit needs of a resolved camera.
 CascadeCamera cascade_camera(const CameraView& view);
 
+// What resolving a camera reads of a scene: its bounds (auto framing) and its cameras
+// (gltf:N), kept by a renderer between frames without the rest of the Scene.
+struct SceneCameras {
+    Aabb bounds;
+    std::vector<Camera> cameras;
+    std::vector<PlacedCamera> placed_cameras;
+};
+
 // Resolves a spec against a scene for a viewport aspect (width / height). Throws
 // std::invalid_argument for a glTF camera index the scene lacks.
 CameraView resolve_camera(const CameraSpec& spec, const Scene& scene, float viewport_aspect);
+CameraView resolve_camera(const CameraSpec& spec, const SceneCameras& scene, float viewport_aspect);
 
 // Reverse-Z projections (see the convention above); far 0 = infinite.
 glm::mat4 reverse_z_perspective(float fov_y, float aspect, float near_plane, float far_plane);

@@ -57,7 +57,7 @@ std::array<std::uint8_t, 3> heat_colour(double t);
 
 // A presented frame comparing two sides: each side is a Renderer with its own scene
 // (the same scene loaded twice, another file, other load/texture settings) and its own
-// RenderSettings (raster or RendererKind::RayTraced, any view). Both are drawn at the
+// FrameRequest (raster or RendererKind::RayTraced, any view). Both are drawn at the
 // target's size (times `resolution_scale`) with one camera (the caller passes the same
 // CameraSpec to both), then composited into the target. Made per presented frame,
 // like PresentedFrame; the compositing resources and statistics buffers live in `a`,
@@ -68,8 +68,8 @@ class ComparisonFrame final : public FrameSource {
 public:
     // Throws GpuError for what either side cannot draw (e.g. a view the ray tracer
     // refuses), before anything is recorded.
-    ComparisonFrame(Renderer& a, const RenderSettings& a_settings, Renderer& b,
-                    const RenderSettings& b_settings, const ComparisonSettings& compare,
+    ComparisonFrame(Renderer& a, const FrameRequest& a_settings, Renderer& b,
+                    const FrameRequest& b_settings, const ComparisonSettings& compare,
                     float resolution_scale = 1.0f);
 
     std::uint32_t frames_in_flight() const override { return Renderer::kFramesInFlight; }
@@ -83,12 +83,12 @@ public:
     const FrameStats& completed_stats_b() const { return completed_b_; }
 
 private:
-    friend ComparisonStats render_comparison(Renderer&, const RenderSettings&, Renderer&,
-                                             const RenderSettings&, const ComparisonSettings&,
+    friend ComparisonStats render_comparison(Renderer&, const FrameRequest&, Renderer&,
+                                             const FrameRequest&, const ComparisonSettings&,
                                              std::vector<std::uint8_t>*);
     Renderer& a_;
     Renderer& b_;
-    RenderSettings a_settings_, b_settings_;
+    FrameRequest a_settings_, b_settings_;
     ComparisonSettings compare_;
     float resolution_scale_;
     ComparisonStats completed_;
@@ -98,9 +98,8 @@ private:
 
 // The same offscreen, waited for: the composited image as RGBA8 rows (top first,
 // a_settings' width x height; b_settings' size is replaced by it), and the stats.
-ComparisonStats render_comparison(Renderer& a, const RenderSettings& a_settings, Renderer& b,
-                                  const RenderSettings& b_settings,
-                                  const ComparisonSettings& compare,
+ComparisonStats render_comparison(Renderer& a, const FrameRequest& a_settings, Renderer& b,
+                                  const FrameRequest& b_settings, const ComparisonSettings& compare,
                                   std::vector<std::uint8_t>* rgba = nullptr);
 
 } // namespace sherpa::gpu

@@ -67,7 +67,7 @@ inline constexpr const char* kStudioLightsDir = "/usr/share/blender/datafiles/st
 enum class Background : std::uint32_t {
     Environment, // the environment itself
     Blurred,     // the environment prefiltered at roughness kBlurredBackgroundRoughness
-    Color,       // RenderSettings::clear_color
+    Color,       // FrameRequest::clear_color
 };
 inline constexpr float kBlurredBackgroundRoughness = 0.5f;
 std::string_view to_string(Background b);

@@ -137,7 +137,8 @@ public:
     // the texture levels are released after the upload.
     GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
              const TextureSettings& texture_settings,
-             StreamPolicy policy = StreamPolicy::UsedByMaterials);
+             StreamPolicy policy = StreamPolicy::UsedByMaterials,
+             MissingTextures missing = MissingTextures::Checker);
     ~GpuScene();
     GpuScene(const GpuScene&) = delete;
     GpuScene& operator=(const GpuScene&) = delete;

@@ -1,6 +1,7 @@
 #pragma once
-// How Renderer::load() brings a scene to the GPU: texture preparation and the
-// vertex streams it uploads. No Vulkan types: what the CLI and editor configure.
+// How Renderer::load() brings a scene to the GPU: the vertex streams it uploads, how
+// missing textures are drawn (both chosen per load: SceneSetup, scene_setup.h) and how
+// a renderer prepares textures itself (TextureSettings). No Vulkan types.
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -28,7 +29,8 @@ enum class MissingTextures : std::uint8_t {
 std::string_view to_string(MissingTextures m); // "checker", "neutral"
 std::optional<MissingTextures> parse_missing_textures(std::string_view name);
 
-// How a renderer prepares textures when it is handed a bare Scene.
+// How textures are prepared for a device (texture_target(), texture_pipeline_options()
+// of scene_textures.h), and how a renderer prepares them when it is handed a bare Scene.
 struct TextureSettings {
     std::optional<std::filesystem::path> cache_dir; // nullopt: no disk cache
     std::uint64_t cache_cap_bytes = tex::kDefaultCacheCapBytes;
@@ -41,7 +43,6 @@ struct TextureSettings {
     // blocks, 4x the memory); false keeps the blocks. BC5 costs the same either way
     // and stays compressed.
     bool decode_bc7_on_cpu = true;
-    MissingTextures missing = MissingTextures::Checker;
     // Handed to the texture pipeline (tex::PipelineOptions): textures ready of
     // textures, and a token that stops the preparation (the set comes back
     // `cancelled` and empty).

@@ -20,8 +20,7 @@ public:
     // nearest); what the ray tracer refuses throws GpuError here, before recording.
     // The ray tracer rewrites its descriptor set per frame, so a ray-traced frame
     // waits for the renderer's frame in flight before it records.
-    PresentedFrame(Renderer& renderer, const RenderSettings& settings,
-                   float resolution_scale = 1.0f);
+    PresentedFrame(Renderer& renderer, const FrameRequest& settings, float resolution_scale = 1.0f);
 
     std::uint32_t frames_in_flight() const override { return Renderer::kFramesInFlight; }
     void wait_for_slot(std::uint32_t slot) override;
@@ -35,7 +34,7 @@ public:
 
 private:
     Renderer& renderer_;
-    RenderSettings settings_;
+    FrameRequest settings_;
     float resolution_scale_;
     FrameStats completed_;
 };

@@ -3,8 +3,10 @@
 // the GPU and records frames as an ordered list of passes (engine/render/src:
 // culling, shadow cascades, depth prepass, forward shading, overlays, highlight),
 // either into its own offscreen target (render()) or into a swapchain image through
-// the RHI's Presenter (PresentedFrame, presented_frame.h, is the frame source). Settings in,
-// statistics out; pipelines, handle pools and frame resources stay inside (Renderer::Impl). No
+// the RHI's Presenter (PresentedFrame, presented_frame.h, is the frame source). Set up
+// once per scene (load() with a SceneSetup), then request frames (FrameRequest);
+// statistics out. What a load fixes is the renderer's SceneState, how frames are
+// recorded its FrameRecorder (both private to the render layer, engine/render/src). No
 // Vulkan header here.
 #include <cstdint>
 #include <memory>
@@ -14,9 +16,10 @@
 
 #include <sherpa/render/acceleration_stats.h>
 #include <sherpa/render/environment.h>
+#include <sherpa/render/frame_request.h>
 #include <sherpa/render/load_settings.h>
 #include <sherpa/render/path_trace.h>
-#include <sherpa/render/render_settings.h>
+#include <sherpa/render/scene_setup.h>
 #include <sherpa/scene/culling_passes.h>
 #include <sherpa/scene/shadow_cascades.h>
 
@@ -32,10 +35,8 @@ namespace sherpa::gpu {
 class Context;
 class ResourceManager;
 class GpuScene;
-class PresentedFrame;
-class ComparisonFrame;
-struct ComparisonSettings;
-struct ComparisonStats;
+class SceneState;
+class FrameRecorder;
 
 struct PassTiming {
     std::string name;
@@ -107,11 +108,13 @@ struct VariantSwitch {
 
 struct RendererOptions {
     std::uint32_t shadow_resolution = kDefaultShadowResolution;
-    // How load(scene) prepares textures; default: no disk cache, BC where supported.
+    // How load(scene) without prepared textures prepares them; default: no disk
+    // cache, BC where supported.
     TextureSettings textures;
-    // Build the scene's acceleration structures on load (off the frame path) so that
-    // RenderSettings::renderer = RayTraced can draw; needs a Context with
-    // DeviceInfo::ray_tracing_enabled (else load() throws). Off: nothing RT is made.
+    // Build each scene's acceleration structures on load (off the frame path) so that
+    // FrameRequest::renderer = RayTraced can draw; needs a Context with
+    // DeviceInfo::ray_tracing_enabled (else load() throws). Off: nothing RT is made (the
+    // environment's sampling distribution included). The renderer's, not a load's.
     bool ray_tracing = false;
     // How they are built (scratch budget, compaction, posed BLAS refit or rebuild).
     AccelerationSettings acceleration;
@@ -127,16 +130,18 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    // Uploads `scene`, replacing the current one (freed once frames using it finish).
-    // Prepares its textures first, on this thread, with texture_settings().
-    void load(const Scene& scene, StreamPolicy policy = StreamPolicy::UsedByMaterials);
+    // Uploads `scene` as `setup` says, replacing the current one (freed once frames
+    // using it finish). Prepares its textures first, on this thread, with
+    // RendererOptions::textures.
+    void load(const Scene& scene, const SceneSetup& setup = {});
     // The same with textures already prepared for `scene` (prepare_scene_textures()
     // of the texture layer, for this device's texture_target(), e.g. on a loader
     // thread); only the upload happens here.
     void load(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
-              StreamPolicy policy = StreamPolicy::UsedByMaterials);
-    const TextureSettings& texture_settings() const;
-    void set_texture_settings(const TextureSettings& settings);
+              const SceneSetup& setup = {});
+    // The loaded scene's hidden nodes from now on (SceneSetup::hidden_nodes): applied
+    // before the next frame; the same mask again costs one comparison.
+    void set_hidden_nodes(std::shared_ptr<const std::vector<bool>> hidden);
     void unload();
     const GpuScene* scene() const;
     // What the renderer holds now: acceleration structures, environment, targets.
@@ -151,7 +156,7 @@ public:
 
     // Renders one frame offscreen and waits for it. With `rgba` set, reads the
     // image back as tightly packed sRGB-encoded RGBA8 rows, top row first.
-    FrameStats render(const RenderSettings& settings, std::vector<std::uint8_t>* rgba = nullptr);
+    FrameStats render(const FrameRequest& settings, std::vector<std::uint8_t>* rgba = nullptr);
 
     // Culling statistics of the last frames whose results were read (render(),
     // presented frames), oldest first: what the editor's culling dock charts.
@@ -159,18 +164,17 @@ public:
 
     ResourceManager& resources();
     Context& context();
-
-    class Impl; // renderer_impl.h
+    // The frame sources' narrow interface (PresentedFrame, ComparisonFrame,
+    // render_comparison, read_path_trace, set_material_variant): frame slots, targets
+    // and passes. Private to the render layer (src/frame_recorder.h); an incomplete
+    // type elsewhere.
+    FrameRecorder& frames();
 
 private:
-    friend class PresentedFrame; // records swapchain frames through Impl
-    friend class ComparisonFrame;
-    friend PathTraceImage read_path_trace(Renderer&);
-    friend VariantSwitch set_material_variant(Renderer&, std::int32_t);
-    friend ComparisonStats render_comparison(Renderer&, const RenderSettings&, Renderer&,
-                                             const RenderSettings&, const ComparisonSettings&,
-                                             std::vector<std::uint8_t>*);
-    std::unique_ptr<Impl> impl_;
+    Context& context_;
+    std::unique_ptr<ResourceManager> resources_;
+    std::unique_ptr<SceneState> scene_;     // what a load fixes
+    std::unique_ptr<FrameRecorder> frames_; // what a frame records
 };
 
 // The path tracer's accumulation (its per-pixel sums, read back after the frames in

@@ -1,7 +1,7 @@
 #pragma once
 // Animation evaluation and CPU posing: pure functions of (scene, animation, time).
 // Nothing here changes the Scene except apply_pose_bounds(); the renderer poses on the GPU
-// (RenderSettings::pose).
+// (FrameRequest::pose).
 #include <cstdint>
 #include <string>
 #include <vector>

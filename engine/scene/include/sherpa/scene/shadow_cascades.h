@@ -27,7 +27,7 @@ namespace sherpa {
 struct Scene;
 
 inline constexpr std::uint32_t kMaxShadowCascades = 4;
-// What the renderer uses unless told otherwise (RenderSettings, RendererOptions);
+// What the renderer uses unless told otherwise (FrameRequest, RendererOptions);
 // `sherpa-cli cull` uses the same so its cascades are the ones the renderer draws.
 inline constexpr std::uint32_t kDefaultShadowCascades = 3;
 inline constexpr std::uint32_t kDefaultShadowResolution = 2048;

@@ -1,5 +1,8 @@
 #pragma once
-// What one rendered frame shows: size, debug view, overlays, camera, passes.
+// What one frame asks of the renderer (Renderer::render, PresentedFrame,
+// ComparisonFrame): size, camera, debug view, overlays, pose, highlight, lighting and
+// passes. What a scene load fixes (streams, missing textures, hidden nodes) is the
+// renderer's SceneSetup (scene_setup.h).
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -66,7 +69,7 @@ struct PathTraceSettings {
     bool light_sampling = true;
 };
 
-struct RenderSettings {
+struct FrameRequest {
     std::uint32_t width = 1280, height = 720;
     DebugView view = DebugView::Lit;
     std::uint32_t overlays = 0; // Overlay bits
@@ -154,13 +157,6 @@ struct RenderSettings {
     // the scene as loaded (bind pose, default weights). Skinned/morphed primitives are deformed
     // on the GPU; culling and shadows use the pose's conservative bounds.
     std::shared_ptr<const Pose> pose;
-    // Nodes hidden (per node index, true: hidden; null or empty: every node shown). A
-    // hidden node hides its subtree (hidden_subtrees(), sherpa/scene/visibility.h): its
-    // instances are drawn by no pass (camera on every cull path, shadow cascades,
-    // prepass, overlays, highlight) and left out of the ray tracer's TLAS. Renderer
-    // state, not per frame work: the renderer compares it with the last mask and only
-    // a change costs (GPU cullers rebuilt, cached cascades redrawn, TLAS rebuilt).
-    std::shared_ptr<const std::vector<bool>> hidden_nodes;
     // A joint (node index) to highlight: the joint-influence view shows its weight as a heat
     // map, the skeleton overlay draws it in kHighlightDetailColor.
     std::optional<std::uint32_t> selected_joint;
@@ -174,22 +170,22 @@ inline const glm::vec4 kHighlightDetailColor{1.0f, 0.0f, 1.0f, 1.0f}; // magenta
 // compensation, tone map and exposure of `from` into `to`, so that every frame of one
 // scene (a comparison's two sides, the Lab's frames) is lit alike. The environment
 // itself is the renderer's (Renderer::set_environment).
-void copy_lighting(const RenderSettings& from, RenderSettings& to);
+void copy_lighting(const FrameRequest& from, FrameRequest& to);
 
 // The environment image and lighting settings of a view, for work that makes its own
 // renderers (the Lab, `compare --image`): `environment` null is none.
 struct Lighting {
     std::shared_ptr<const EnvironmentImage> environment;
-    RenderSettings settings; // only copy_lighting()'s fields are read
+    FrameRequest settings; // only copy_lighting()'s fields are read
 };
 
 // Does this view/overlay need streams the materials do not use (so the scene must
 // be uploaded with StreamPolicy::AllPresent)?
-bool needs_all_streams(const RenderSettings& settings);
+bool needs_all_streams(const FrameRequest& settings);
 
 // Whether a frame of `triangles` at `pixels` draws the depth prepass: Auto draws it
 // on GPUs, and on CPU devices unless the scene has more than one triangle per four
-// pixels (see render_settings.cpp).
+// pixels (see frame_request.cpp).
 bool prepass_enabled(PrepassMode mode, bool cpu_device, std::uint64_t triangles,
                      std::uint64_t pixels);
 

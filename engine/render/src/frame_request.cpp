@@ -1,4 +1,4 @@
-#include <sherpa/render/render_settings.h>
+#include <sherpa/render/frame_request.h>
 
 namespace sherpa::gpu {
 
@@ -81,7 +81,7 @@ std::vector<std::string_view> overlay_names() {
     return out;
 }
 
-void copy_lighting(const RenderSettings& from, RenderSettings& to) {
+void copy_lighting(const FrameRequest& from, FrameRequest& to) {
     to.environment_rotation = from.environment_rotation;
     to.environment_intensity = from.environment_intensity;
     to.background = from.background;
@@ -92,7 +92,7 @@ void copy_lighting(const RenderSettings& from, RenderSettings& to) {
     to.exposure = from.exposure;
 }
 
-bool needs_all_streams(const RenderSettings& s) {
+bool needs_all_streams(const FrameRequest& s) {
     const auto view = static_cast<std::size_t>(s.view);
     std::uint32_t streams = view < kDebugViews.size() ? kDebugViews[view].streams : ~0u;
     for (const OverlayEntry& o : kOverlays)

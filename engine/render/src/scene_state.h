@@ -1,0 +1,112 @@
+#pragma once
+// What a load fixes and the frames only read (private to the render layer): the scene on
+// the GPU (GpuScene: streams, instances, materials and textures in the bindless table),
+// its acceleration structures and the pose they hold, the node visibility, the lights
+// and cameras frames are resolved against, the emissive triangles the path tracer
+// samples, the material variants and the animated properties' loaded values, and the
+// environment. Frame slots, targets and passes are the FrameRecorder's
+// (frame_recorder.h), which reads this state.
+#include "environment_map.h"
+
+#include <sherpa/gpu/bindless.h>
+#include <sherpa/render/acceleration_structures.h>
+#include <sherpa/render/camera.h>
+#include <sherpa/render/emissive_lights.h>
+#include <sherpa/render/gpu_scene.h>
+#include <sherpa/render/path_trace.h>
+#include <sherpa/render/renderer.h>
+#include <sherpa/scene/animation_pointer.h>
+#include <sherpa/scene/material_variants.h>
+
+#include <optional>
+
+namespace sherpa::gpu {
+
+// What lighting and camera resolution read of the loaded scene (no whole Scene kept).
+struct SceneLights {
+    SceneCameras cameras; // bounds (the GPU scene's when valid) and the file's cameras
+    std::vector<Light> lights;
+    std::vector<PlacedLight> placed_lights;
+};
+
+class SceneState {
+public:
+    SceneState(Context& context, ResourceManager& resources, const RendererOptions& options);
+    ~SceneState();
+    SceneState(const SceneState&) = delete;
+    SceneState& operator=(const SceneState&) = delete;
+
+    // `gpu_scene` (made from `source`) becomes the loaded scene, set up as `setup` says;
+    // with RendererOptions::ray_tracing its acceleration structures are built here.
+    void load(const Scene& source, std::unique_ptr<GpuScene> gpu_scene, const SceneSetup& setup);
+    // The scene leaves (frames using it must be complete).
+    void unload();
+    // The environment (frames using the old one must be complete); null: none.
+    void set_environment(const EnvironmentImage* image, const EnvironmentOptions& env_options);
+    // When SceneSetup::hidden_nodes, joined by the nodes KHR_node_visibility hides (as
+    // loaded or animated), differs from the mask applied last: that mask applied
+    // (subtree rule) as a flag per GPU instance; nullopt when unchanged or no scene.
+    std::optional<std::vector<std::uint8_t>> take_visibility_change();
+    // The applied mask, subtree-expanded, per node (what the TLAS leaves out), and per
+    // GPU instance (for the culling pass).
+    const std::vector<bool>& hidden_nodes() const { return hidden_nodes_; }
+    std::vector<std::uint8_t> hidden_instances() const;
+    // KHR_animation_pointer (renderer_animated.cpp): a frame's animated property values
+    // into the lights, cameras and node visibility; when they differ from the values
+    // applied last and change materials now or did before, the materials to upload
+    // (GpuMaterials::update() through update_scene_materials()); nullopt otherwise. A
+    // file that animates no property keeps no copies and costs one comparison.
+    std::optional<std::vector<MaterialInstance>>
+    animate(const std::vector<AnimatedProperty>& values);
+
+    Context& context;
+    ResourceManager& resources;
+    const RendererOptions options;
+    SceneSetup setup; // of the scene loaded (hidden nodes as set_hidden_nodes() left them)
+    BindlessTable bindless;
+    std::unique_ptr<GpuScene> gpu; // null: nothing loaded
+    // With RendererOptions::ray_tracing: the scene's BLAS/TLAS.
+    std::unique_ptr<SceneAccelerationStructures> acceleration;
+    // The pose the acceleration structures hold (FrameSlot::pose_key, of this load), and
+    // whether their TLAS holds the applied visibility.
+    std::uint64_t rt_pose_key = 0, rt_pose_generation = 0;
+    bool tlas_visibility = true;
+    SceneLights lights;
+    // The emissive triangles the path tracer samples as lights (ray tracing only).
+    EmissiveLights emissive;
+    std::uint64_t generation = 0; // counts loads and unloads
+    std::uint64_t visibility_version = 0;
+    // Counts material uploads after the load (animated materials): the path tracer's
+    // accumulation starts over.
+    std::uint64_t material_generation = 0;
+    // KHR_materials_variants: the loaded scene's mappings, the variant it was loaded with
+    // (the acceleration structures' materials) and the one the raster draws now
+    // (FrameRecorder::set_variant()).
+    MaterialVariants variants;
+    std::int32_t loaded_variant = -1, variant = -1;
+    std::unique_ptr<EnvironmentMap> environment; // null: none (set_environment)
+    // The path tracer's sampling of the environment (ray tracing only).
+    std::unique_ptr<EnvironmentDistribution> environment_sampling;
+    std::uint64_t environment_generation = 0; // counts set_environment()
+
+private:
+    void load_animated(const Scene& source);
+
+    // KHR_animation_pointer: the loaded values (copies only for a file that animates
+    // properties), the values applied last, the nodes they hide (KHR_node_visibility's
+    // loaded values before any animation), whether the last values changed materials.
+    std::vector<MaterialInstance> base_materials_;
+    std::vector<Light> base_lights_;
+    std::vector<Camera> base_cameras_;
+    std::vector<bool> base_visible_; // per node
+    std::vector<AnimatedProperty> animated_;
+    std::vector<bool> animated_hidden_;
+    bool materials_animated_ = false;
+    // Visibility: the loaded scene's nodes (the subtree rule), the node of each GPU
+    // instance, the mask last applied (as given) and its subtree-expanded form.
+    std::vector<Node> nodes_;
+    std::vector<std::uint32_t> instance_node_;
+    std::vector<bool> hidden_given_, hidden_nodes_;
+};
+
+} // namespace sherpa::gpu

@@ -233,6 +233,14 @@
         <source>Sheen roughness</source>
         <translation>Sheen-Rauheit</translation>
     </message>
+    <message>
+        <source>Anisotropy strength</source>
+        <translation>Anisotropie-Stärke</translation>
+    </message>
+    <message>
+        <source>Anisotropy direction</source>
+        <translation>Anisotropie-Richtung</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>
@@ -1597,10 +1605,6 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <translation>fehlt</translation>
     </message>
     <message>
-        <source>ior %1, specular %2</source>
-        <translation>ior %1, specular %2</translation>
-    </message>
-    <message>
         <source>texture %1</source>
         <translation>Textur %1</translation>
     </message>
@@ -1671,6 +1675,10 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>ior %1, specular %2, clearcoat %3, sheen %4</source>
         <translation>ior %1, specular %2, clearcoat %3, sheen %4</translation>
+    </message>
+    <message>
+        <source>anisotropy %1, iridescence %2</source>
+        <translation>Anisotropie %1, Irisieren %2</translation>
     </message>
 </context>
 <context>
@@ -2272,13 +2280,6 @@ Die aktuelle Szene bleibt erhalten.</translation>
     </message>
 </context>
 <context>
-    <name>sherpa::editor::VertexTableModel</name>
-    <message>
-        <source>tangent error (deg)</source>
-        <translation>Tangentenfehler (Grad)</translation>
-    </message>
-</context>
-<context>
     <name>sherpa::editor::VariantMenu</name>
     <message>
         <source>default materials</source>
@@ -2303,6 +2304,13 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>The file has no material variants</source>
         <translation>Die Datei hat keine Materialvarianten</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::VertexTableModel</name>
+    <message>
+        <source>tangent error (deg)</source>
+        <translation>Tangentenfehler (Grad)</translation>
     </message>
 </context>
 </TS>

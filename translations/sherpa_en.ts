@@ -233,6 +233,14 @@
         <source>Sheen roughness</source>
         <translation>Sheen roughness</translation>
     </message>
+    <message>
+        <source>Anisotropy strength</source>
+        <translation>Anisotropy strength</translation>
+    </message>
+    <message>
+        <source>Anisotropy direction</source>
+        <translation>Anisotropy direction</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>
@@ -1597,10 +1605,6 @@ The current scene is kept.</translation>
         <translation>absent</translation>
     </message>
     <message>
-        <source>ior %1, specular %2</source>
-        <translation>ior %1, specular %2</translation>
-    </message>
-    <message>
         <source>texture %1</source>
         <translation>texture %1</translation>
     </message>
@@ -1671,6 +1675,10 @@ The current scene is kept.</translation>
     <message>
         <source>ior %1, specular %2, clearcoat %3, sheen %4</source>
         <translation>ior %1, specular %2, clearcoat %3, sheen %4</translation>
+    </message>
+    <message>
+        <source>anisotropy %1, iridescence %2</source>
+        <translation>anisotropy %1, iridescence %2</translation>
     </message>
 </context>
 <context>
@@ -2272,13 +2280,6 @@ The current scene is kept.</translation>
     </message>
 </context>
 <context>
-    <name>sherpa::editor::VertexTableModel</name>
-    <message>
-        <source>tangent error (deg)</source>
-        <translation>tangent error (deg)</translation>
-    </message>
-</context>
-<context>
     <name>sherpa::editor::VariantMenu</name>
     <message>
         <source>default materials</source>
@@ -2303,6 +2304,13 @@ The current scene is kept.</translation>
     <message>
         <source>The file has no material variants</source>
         <translation>The file has no material variants</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::VertexTableModel</name>
+    <message>
+        <source>tangent error (deg)</source>
+        <translation>tangent error (deg)</translation>
     </message>
 </context>
 </TS>

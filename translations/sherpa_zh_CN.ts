@@ -233,6 +233,14 @@
         <source>Sheen roughness</source>
         <translation>光泽层粗糙度</translation>
     </message>
+    <message>
+        <source>Anisotropy strength</source>
+        <translation>各向异性强度</translation>
+    </message>
+    <message>
+        <source>Anisotropy direction</source>
+        <translation>各向异性方向</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>
@@ -1597,10 +1605,6 @@ The current scene is kept.</source>
         <translation>无</translation>
     </message>
     <message>
-        <source>ior %1, specular %2</source>
-        <translation>ior %1, specular %2</translation>
-    </message>
-    <message>
         <source>texture %1</source>
         <translation>纹理 %1</translation>
     </message>
@@ -1671,6 +1675,10 @@ The current scene is kept.</source>
     <message>
         <source>ior %1, specular %2, clearcoat %3, sheen %4</source>
         <translation>ior %1, specular %2, clearcoat %3, sheen %4</translation>
+    </message>
+    <message>
+        <source>anisotropy %1, iridescence %2</source>
+        <translation>各向异性 %1，虹彩 %2</translation>
     </message>
 </context>
 <context>
@@ -2272,13 +2280,6 @@ The current scene is kept.</source>
     </message>
 </context>
 <context>
-    <name>sherpa::editor::VertexTableModel</name>
-    <message>
-        <source>tangent error (deg)</source>
-        <translation>切线误差（度）</translation>
-    </message>
-</context>
-<context>
     <name>sherpa::editor::VariantMenu</name>
     <message>
         <source>default materials</source>
@@ -2303,6 +2304,13 @@ The current scene is kept.</source>
     <message>
         <source>The file has no material variants</source>
         <translation>该文件没有材质变体</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::VertexTableModel</name>
+    <message>
+        <source>tangent error (deg)</source>
+        <translation>切线误差（度）</translation>
     </message>
 </context>
 </TS>

@@ -15,6 +15,7 @@
 #include "refraction.glsl"
 #include "clearcoat.glsl"
 #include "sheen.glsl"
+#include "anisotropy.glsl"
 #include "tonemap.glsl"
 #include "punctual.glsl"
 #include "diffuse_transmission.glsl"
@@ -136,6 +137,14 @@ void main() {
     // KHR_materials_sheen: the sheen colour (linear, like base colour) and roughness.
     case VIEW_SHEEN_COLOR: c = material_sheen(ext, uv0, uv1).color; break;
     case VIEW_SHEEN_ROUGHNESS: c = vec3(material_sheen(ext, uv0, uv1).roughness); break;
+    // KHR_materials_anisotropy: the strength (grey) and the direction in the world
+    // (encoded as the normal view, along the normal-mapped frame); black without it.
+    case VIEW_ANISOTROPY_STRENGTH: c = vec3(material_anisotropy_tangent(ext, uv0, uv1).z * float(ext.anisotropy != NO_EXTENSION)); break;
+    case VIEW_ANISOTROPY_DIRECTION: {
+        vec4 a = material_anisotropy(ext, t, b, mapped_normal(m, x, t, b, n, uv0, uv1), uv0, uv1);
+        c = ext.anisotropy == NO_EXTENSION ? vec3(0.0) : encode_vector(a.w > 0.0 || dot(a.xyz, a.xyz) > 0.0 ? a.xyz : t);
+        break;
+    }
     case VIEW_SHADOW:
         c = vec3(sun_visibility(in_world_pos, shadow_normal, -(frame.view * vec4(in_world_pos, 1.0)).z));
         break;
@@ -162,6 +171,8 @@ void main() {
                 float f90;
                 dielectric_fresnel(ext, uv0, uv1, f0, f90);
                 s = metal_rough_surface(base.rgb, mr.x, mr.y, f0, f90, shading_n, v);
+                // KHR_materials_anisotropy (strength 0, isotropic, without it).
+                s.anisotropy = material_anisotropy(ext, t, b, shading_n, uv0, uv1);
                 transmission = material_transmission(ext, uv0, uv1);
                 diffuse_transmission = material_diffuse_transmission(ext, uv0, uv1);
                 if (TRANSMISSION_BACKGROUND && transmission > 0.0) discard;

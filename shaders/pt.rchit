@@ -18,6 +18,7 @@
 #include "pt_material_ext.glsl"
 #include "clearcoat.glsl"
 #include "sheen.glsl"
+#include "anisotropy.glsl"
 
 layout(location = 0) rayPayloadInEXT PathPayload payload;
 hitAttributeEXT vec2 bary;
@@ -65,6 +66,7 @@ void main() {
             float f90;
             dielectric_fresnel(ext, h.uv0, h.uv1, f0, f90);
             s = metal_rough_surface(base.rgb, mr.x, mr.y, f0, f90, sn, v);
+            s.anisotropy = material_anisotropy(ext, t, b, sn, h.uv0, h.uv1);
             const float transmission = material_transmission(ext, h.uv0, h.uv1);
             // The base colour tints the light once, where it enters a volume (or at a
             // thin wall); leaving, the lobe is untinted.
@@ -92,6 +94,7 @@ void main() {
     payload.diffuse = s.diffuse;
     payload.f0 = s.f0;
     payload.f90 = s.f90;
+    payload.anisotropy = s.anisotropy;
     // Emission under the sheen and the coat, as the rasterizer layers it (light sampling
     // reads it through a ray too; only its choice of triangle uses the bare emission).
     payload.emission = clearcoat_over(cc, v, sheen_over(sh, sn, v, emission(m, x, h.uv0, h.uv1), vec3(0.0)), vec3(0.0));

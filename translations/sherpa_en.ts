@@ -233,6 +233,14 @@
         <source>Sheen roughness</source>
         <translation>Sheen roughness</translation>
     </message>
+    <message>
+        <source>Anisotropy strength</source>
+        <translation>Anisotropy strength</translation>
+    </message>
+    <message>
+        <source>Anisotropy direction</source>
+        <translation>Anisotropy direction</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>
@@ -1510,6 +1518,50 @@ The current scene is kept.</translation>
         <source>→ %1</source>
         <translation>→ %1</translation>
     </message>
+    <message>
+        <source>When the File &amp;Changes</source>
+        <translation>When the File &amp;Changes</translation>
+    </message>
+    <message>
+        <source>&amp;Offer to Reload</source>
+        <translation>&amp;Offer to Reload</translation>
+    </message>
+    <message>
+        <source>&amp;Reload Automatically</source>
+        <translation>&amp;Reload Automatically</translation>
+    </message>
+    <message>
+        <source>The open file, its buffers and its images are watched on disk</source>
+        <translation>The open file, its buffers and its images are watched on disk</translation>
+    </message>
+    <message>
+        <source>%1 changed on disk: reloading.</source>
+        <translation>%1 changed on disk: reloading.</translation>
+    </message>
+    <message>
+        <source>%1 changed on disk.</source>
+        <translation>%1 changed on disk.</translation>
+    </message>
+    <message>
+        <source>%1 changed on disk. Reload the scene?</source>
+        <translation>%1 changed on disk. Reload the scene?</translation>
+    </message>
+    <message>
+        <source>File changed</source>
+        <translation>File changed</translation>
+    </message>
+    <message>
+        <source>&amp;Reload</source>
+        <translation>&amp;Reload</translation>
+    </message>
+    <message>
+        <source>&amp;Keep the Loaded Scene</source>
+        <translation>&amp;Keep the Loaded Scene</translation>
+    </message>
+    <message>
+        <source>Settings › When the File Changes › Reload Automatically reloads without asking.</source>
+        <translation>Settings › When the File Changes › Reload Automatically reloads without asking.</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -1627,6 +1679,10 @@ The current scene is kept.</translation>
     <message>
         <source>ior %1, specular %2, clearcoat %3, sheen %4</source>
         <translation>ior %1, specular %2, clearcoat %3, sheen %4</translation>
+    </message>
+    <message>
+        <source>anisotropy %1, iridescence %2</source>
+        <translation>anisotropy %1, iridescence %2</translation>
     </message>
 </context>
 <context>

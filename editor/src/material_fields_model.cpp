@@ -158,6 +158,7 @@ void MaterialFieldsModel::buildExtensionRows() {
                     sh.roughness);
     }
     appendTransmissionRows(place, m);
+    appendMicrofacetRows(place, m);
 }
 
 QVariant MaterialFieldsModel::extensionData(const ExtensionRow& r, int column, int role) const {

@@ -7,6 +7,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <cmath>
+
 #include "editor_context.h"
 #include "format_values.h"
 #include "instance_table_model.h"
@@ -162,7 +164,7 @@ void DockContentTests::docksShowCompressionContainerAndSpecGloss() {
 
 // KHR_materials_ior / _specular: after the record's 14 fields, the material's extension
 // index and blocks with their byte offsets in the extension buffer (material 1 of the
-// ior sweep: the second material's index is at word 3, after material 0's two-word
+// ior sweep: the second material's index is at word 4, after material 0's three-word
 // index + ior).
 void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
     const LoadOutcome sweep = SceneLoadJob::loadNow(
@@ -173,9 +175,9 @@ void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
                        MaterialFieldsModel::Source::Cpu);
     QCOMPARE(fields.rowCount(), 14 + 2);
     QCOMPARE(display(fields, 14, MaterialFieldsModel::FieldColumn), QStringLiteral("ext.index"));
-    QCOMPARE(display(fields, 14, MaterialFieldsModel::OffsetColumn), QStringLiteral("48"));
+    QCOMPARE(display(fields, 14, MaterialFieldsModel::OffsetColumn), QStringLiteral("64"));
     QCOMPARE(display(fields, 15, MaterialFieldsModel::FieldColumn), QStringLiteral("ext.ior"));
-    QCOMPARE(display(fields, 15, MaterialFieldsModel::OffsetColumn), QStringLiteral("80"));
+    QCOMPARE(display(fields, 15, MaterialFieldsModel::OffsetColumn), QStringLiteral("112"));
     QCOMPARE(display(fields, 15, MaterialFieldsModel::ValueColumn), Format::number(1.2f));
     QCOMPARE(display(fields, 15, MaterialFieldsModel::PropertyColumn),
              QStringLiteral("KHR_materials_ior.ior"));
@@ -188,13 +190,13 @@ void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
     QCOMPARE(fields.rowCount(), 14 + 4); // index, colour/factor, two textures
     QCOMPARE(display(fields, 15, MaterialFieldsModel::FieldColumn),
              QStringLiteral("ext.specular.color_factor"));
-    QCOMPARE(display(fields, 15, MaterialFieldsModel::OffsetColumn), QStringLiteral("32"));
+    QCOMPARE(display(fields, 15, MaterialFieldsModel::OffsetColumn), QStringLiteral("48"));
     QCOMPARE(display(fields, 15, MaterialFieldsModel::ValueColumn),
              Format::vec(glm::vec4(1.0f, 1.0f, 1.0f, 0.0f)));
-    QCOMPARE(display(fields, 16, MaterialFieldsModel::OffsetColumn), QStringLiteral("48"));
+    QCOMPARE(display(fields, 16, MaterialFieldsModel::OffsetColumn), QStringLiteral("64"));
 
     // KHR_materials_clearcoat: index, factors, three textures (material 0 of the
-    // clearcoat sweep: its block right after its two-word index).
+    // clearcoat sweep: its block right after its three-word index).
     const LoadOutcome coat = SceneLoadJob::loadNow(
         QStringLiteral(SHERPA_TEST_DATA_DIR "/material_sweeps/clearcoat_sweep.gltf"));
     QVERIFY2(coat.session, qPrintable(coat.error));
@@ -204,11 +206,30 @@ void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
     QCOMPARE(display(fields, 15, MaterialFieldsModel::FieldColumn),
              QStringLiteral("ext.clearcoat.factors"));
     QCOMPARE(display(fields, 15, MaterialFieldsModel::OffsetColumn),
-             QString::number(2 * (32 + 128) + 32));
+             QString::number(2 * (48 + 128) + 48));
     QCOMPARE(display(fields, 15, MaterialFieldsModel::ValueColumn),
              Format::vec(glm::vec4(0.5f, 0.0f, 1.0f, 0.0f)));
     QCOMPARE(display(fields, 18, MaterialFieldsModel::FieldColumn),
              QStringLiteral("ext.clearcoat.normal_tex"));
+
+    // KHR_materials_anisotropy: index, its third word, factors, texture (material 7 of
+    // the anisotropy sweep, 60 degrees: after seven 48-byte indices and 64-byte blocks).
+    const LoadOutcome aniso = SceneLoadJob::loadNow(
+        QStringLiteral(SHERPA_TEST_DATA_DIR "/material_sweeps/anisotropy_sweep.gltf"));
+    QVERIFY2(aniso.session, qPrintable(aniso.error));
+    fields.setMaterial(aniso.session, 7, to_gpu_material(aniso.session->scene->materials.at(7)),
+                       MaterialFieldsModel::Source::Cpu);
+    QCOMPARE(fields.rowCount(), 14 + 4);
+    const int first = 7 * (48 + 64);
+    QCOMPARE(display(fields, 15, MaterialFieldsModel::FieldColumn),
+             QStringLiteral("ext.index.anisotropy"));
+    QCOMPARE(display(fields, 15, MaterialFieldsModel::OffsetColumn), QString::number(first + 32));
+    QCOMPARE(display(fields, 16, MaterialFieldsModel::FieldColumn),
+             QStringLiteral("ext.anisotropy.factors"));
+    QCOMPARE(display(fields, 16, MaterialFieldsModel::OffsetColumn), QString::number(first + 48));
+    QCOMPARE(display(fields, 16, MaterialFieldsModel::ValueColumn),
+             Format::vec(glm::vec4(0.8f, std::cos(1.04719755f), std::sin(1.04719755f), 0.0f)));
+    QCOMPARE(display(fields, 17, MaterialFieldsModel::OffsetColumn), QString::number(first + 64));
 }
 
 QTEST_MAIN(DockContentTests)

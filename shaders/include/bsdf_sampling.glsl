@@ -48,17 +48,27 @@ float bsdf_pdf(Surface s, vec3 l) {
     float n_dot_l = dot(s.n, l);
     if (n_dot_l <= 0.0) return 0.0;
     float n_dot_v = clamp(abs(dot(s.n, s.v)), 1e-4, 1.0);
-    float a = bsdf_alpha(s);
     vec3 h = normalize(l + s.v);
     float n_dot_h = clamp(dot(s.n, h), 0.0, 1.0);
     float p_spec = specular_probability(s);
-    float spec = d_ggx(n_dot_h, a) * smith_g1(n_dot_v, a) / (4.0 * n_dot_v);
+    float spec;
+    if (s.anisotropy.w > 0.0) { // KHR_materials_anisotropy: D(h) G1(v) / (4 n.v) as well
+        vec3 t = anisotropy_direction(s), b = cross(s.n, t);
+        vec2 a = anisotropic_alpha(s.roughness, s.anisotropy.w);
+        float lambda_v = length(vec3(a.x * dot(t, s.v), a.y * dot(b, s.v), n_dot_v));
+        float g1 = 2.0 * n_dot_v / (n_dot_v + lambda_v);
+        spec = d_ggx_anisotropic(vec3(dot(t, h), dot(b, h), n_dot_h), a) * g1 / (4.0 * n_dot_v);
+    } else {
+        float a = bsdf_alpha(s);
+        spec = d_ggx(n_dot_h, a) * smith_g1(n_dot_v, a) / (4.0 * n_dot_v);
+    }
     return p_spec * spec + (1.0 - p_spec) * n_dot_l / PI;
 }
 
-// A visible normal in the local frame (z the normal) for local view ve.
-vec3 sample_ggx_vndf(vec3 ve, float a, vec2 u) {
-    vec3 vh = normalize(vec3(a * ve.x, a * ve.y, ve.z));
+// A visible normal in the local frame (z the normal) for local view ve, with alpha
+// a.x along x and a.y along y (Heitz 2018; anisotropic where they differ).
+vec3 sample_ggx_vndf(vec3 ve, vec2 a, vec2 u) {
+    vec3 vh = normalize(vec3(a.x * ve.x, a.y * ve.y, ve.z));
     float len2 = vh.x * vh.x + vh.y * vh.y;
     vec3 t1 = len2 > 0.0 ? vec3(-vh.y, vh.x, 0.0) * inversesqrt(len2) : vec3(1.0, 0.0, 0.0);
     vec3 t2 = cross(vh, t1);
@@ -67,7 +77,11 @@ vec3 sample_ggx_vndf(vec3 ve, float a, vec2 u) {
     float blend = 0.5 * (1.0 + vh.z);
     p2 = (1.0 - blend) * sqrt(max(0.0, 1.0 - p1 * p1)) + blend * p2;
     vec3 nh = p1 * t1 + p2 * t2 + sqrt(max(0.0, 1.0 - p1 * p1 - p2 * p2)) * vh;
-    return normalize(vec3(a * nh.x, a * nh.y, max(0.0, nh.z)));
+    return normalize(vec3(a.x * nh.x, a.y * nh.y, max(0.0, nh.z)));
+}
+
+vec3 sample_ggx_vndf(vec3 ve, float a, vec2 u) {
+    return sample_ggx_vndf(ve, vec2(a), u);
 }
 
 // Draws a direction from s (false: none, e.g. a reflection below the surface).
@@ -75,8 +89,14 @@ bool sample_bsdf(Surface s, vec3 t, vec3 b, inout uint rng, out vec3 l) {
     float choose = next_random(rng);
     vec2 u = vec2(next_random(rng), next_random(rng));
     if (choose < specular_probability(s)) {
+        vec2 a = vec2(bsdf_alpha(s));
+        if (s.anisotropy.w > 0.0) { // the anisotropy's own frame and alphas
+            t = anisotropy_direction(s);
+            b = cross(s.n, t);
+            a = anisotropic_alpha(s.roughness, s.anisotropy.w);
+        }
         vec3 ve = vec3(dot(s.v, t), dot(s.v, b), dot(s.v, s.n));
-        vec3 m = sample_ggx_vndf(ve, bsdf_alpha(s), u);
+        vec3 m = sample_ggx_vndf(ve, a, u);
         vec3 h = m.x * t + m.y * b + m.z * s.n;
         l = reflect(-s.v, h);
     } else {

@@ -71,8 +71,7 @@ vec3 environment_light(Surface s) {
     float roughness = clamp(s.roughness, 0.0, 1.0);
     vec3 lut = ibl_brdf_lut(n_dot_v, roughness);
     vec3 fss_ess = s.f0 * lut.r + s.f90 * lut.g; // single-scattering specular albedo
-    vec3 r = reflect(-s.v, s.n);
-    vec3 radiance = ibl_specular(r, roughness);
+    vec3 radiance = ibl_specular(specular_direction(s), roughness);
     vec3 irradiance = ibl_irradiance(s.n);
     vec3 multi = vec3(0.0);
     if (frame.display.z > 0.0) {

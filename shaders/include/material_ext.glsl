@@ -27,12 +27,13 @@ layout(set = 1, binding = 8, std430) readonly buffer MaterialExtensionBlock {
 #endif
 
 GPUExtensionIndex extension_index(GPUMaterialExtra x) {
-    uvec4 w = uvec4(NO_EXTENSION), w1 = uvec4(NO_EXTENSION);
+    uvec4 w = uvec4(NO_EXTENSION), w1 = uvec4(NO_EXTENSION), w2 = uvec4(NO_EXTENSION);
     if (x.extensions != NO_EXTENSION) {
         w = material_ext[x.extensions];
         w1 = material_ext[x.extensions + 1u];
+        w2 = material_ext[x.extensions + 2u];
     }
-    return GPUExtensionIndex(w.x, w.y, w.z, w.w, w1.x, w1.y, w1.z, w1.w);
+    return GPUExtensionIndex(w.x, w.y, w.z, w.w, w1.x, w1.y, w1.z, w1.w, w2.x, w2.y, w2.z, w2.w);
 }
 
 GPUIorBlock ior_block(uint word) {

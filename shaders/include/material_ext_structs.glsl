@@ -1,5 +1,5 @@
 // GLSL twins of the material extension records (GPUExtensionIndex, GPUIorBlock,
-// GPUSpecularBlock, GPUClearcoatBlock, GPUSheenBlock in
+// GPUSpecularBlock, GPUClearcoatBlock, GPUSheenBlock, GPUAnisotropyBlock, GPUIridescenceBlock in
 // engine/render/include/sherpa/render/gpu_material_ext_structs.h): 16-byte words,
 // field order and offsets pinned there and checked by tests/gpu/struct_twins_test.cpp.
 // material_ext.glsl reads them from the extension buffer.
@@ -19,6 +19,11 @@ struct GPUExtensionIndex {
     uint volume;               // GPUVolumeBlock word, or NO_EXTENSION
     uint diffuse_transmission; // GPUDiffuseTransmissionBlock word, or NO_EXTENSION
     uint dispersion;           // GPUDispersionBlock word, or NO_EXTENSION
+    // Third word: the microfacet's own shape and film.
+    uint anisotropy;  // GPUAnisotropyBlock word, or NO_EXTENSION
+    uint iridescence; // GPUIridescenceBlock word, or NO_EXTENSION
+    uint pad0;
+    uint pad1;
 };
 
 struct GPUIorBlock {
@@ -57,6 +62,25 @@ struct GPUSheenBlock {
     uint pad1;                        // 28
     GPUTextureTransform color_uv;     // 32
     GPUTextureTransform roughness_uv; // 64
+};
+
+struct GPUIridescenceBlock {
+    vec4 factors;                     // 0: x iridescenceFactor, y iridescenceIor, z thickness min, w max (nm)
+    uint texture;                     // 16: R channel
+    uint thickness_tex;               // 20: G channel
+    uint pad0;                        // 24
+    uint pad1;                        // 28
+    GPUTextureTransform uv;           // 32
+    GPUTextureTransform thickness_uv; // 64
+};
+
+struct GPUAnisotropyBlock {
+    vec4 factors;           // 0: x anisotropyStrength, y cos(anisotropyRotation), z sin(...)
+    uint texture;           // 16: RG direction, B strength
+    uint pad0;              // 20
+    uint pad1;              // 24
+    uint pad2;              // 28
+    GPUTextureTransform uv; // 32
 };
 
 #endif

@@ -37,5 +37,6 @@ struct PathPayload {
     float clearcoat_roughness;
     vec3 sheen_color; // KHR_materials_sheen (sheen.glsl's Sheen); black: no sheen
     float sheen_roughness;
+    vec4 anisotropy; // KHR_materials_anisotropy: Surface::anisotropy (w 0: isotropic)
 };
 #endif

@@ -10,9 +10,12 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <tuple>
 #include <unistd.h>
+#include <vector>
 
+#include <glm/glm.hpp>
 #include <gtest/gtest.h>
 
 namespace {
@@ -59,15 +62,17 @@ std::uint64_t extension_bytes(const std::string& model, const std::string& name)
 
 TEST(CliMaterialExtensions, OnlyMaterialsThatUseThemPay) {
     EXPECT_EQ(extension_bytes(sherpa::test::gltf_asset("DamagedHelmet"), "helmet"), 0u);
-    // Ten materials with KHR_materials_ior only: a 32-byte index and one block of 16
+    // Ten materials with KHR_materials_ior only: a 48-byte index and one block of 16
     // bytes each.
-    EXPECT_EQ(extension_bytes(sweep("ior_sweep"), "ior"), 480u);
+    EXPECT_EQ(extension_bytes(sweep("ior_sweep"), "ior"), 640u);
     // Ten with KHR_materials_specular only: an index and a 96-byte block each.
-    EXPECT_EQ(extension_bytes(sweep("specular_sweep"), "specular"), 1280u);
+    EXPECT_EQ(extension_bytes(sweep("specular_sweep"), "specular"), 1440u);
     // Ten with KHR_materials_clearcoat only: an index and a 128-byte block each.
-    EXPECT_EQ(extension_bytes(sweep("clearcoat_sweep"), "clearcoat"), 1600u);
+    EXPECT_EQ(extension_bytes(sweep("clearcoat_sweep"), "clearcoat"), 1760u);
     // Ten with KHR_materials_sheen only: an index and a 96-byte block each.
-    EXPECT_EQ(extension_bytes(sweep("sheen_sweep"), "sheen"), 1280u);
+    EXPECT_EQ(extension_bytes(sweep("sheen_sweep"), "sheen"), 1440u);
+    // Ten with KHR_materials_anisotropy only: an index and a 64-byte block each.
+    EXPECT_EQ(extension_bytes(sweep("anisotropy_sweep"), "anisotropy"), 1120u);
 }
 
 TEST(CliMaterialExtensions, IorViewShowsEachSpheresIor) {
@@ -193,6 +198,134 @@ TEST(CliMaterialExtensions, SheenTexturesAreSampledThroughTheirTransform) {
     }
 }
 
+// The direction view's expected colour at a sweep sphere's centre pixel: the point
+// that faces the eye (0, 0, 5), its authored tangent (along u, around the sphere) and
+// bitangent cross(n, t) (up at the front), the tangent rotated toward the bitangent
+// by `degrees`, encoded as the normal view.
+glm::dvec3 expected_direction(int row, int column, double degrees) {
+    const glm::dvec3 centre(column - 2.0, 0.5 - row, 0.0);
+    const glm::dvec3 n = glm::normalize(glm::dvec3(0.0, 0.0, 5.0) - centre);
+    const double phi = std::atan2(-n.z, n.x); // n = (sin t cos phi, cos t, -sin t sin phi)
+    const glm::dvec3 t(-std::sin(phi), 0.0, -std::cos(phi));
+    const glm::dvec3 b = glm::cross(n, t);
+    const double a = degrees * 3.14159265358979 / 180.0;
+    glm::dvec3 d = std::cos(a) * t + std::sin(a) * b;
+    d = glm::normalize(d - n * glm::dot(n, d));
+    return (d * 0.5 + 0.5) * 255.0;
+}
+
+// anisotropy_sweep.gltf: the strength view shows each sphere's strength (row 1 0 .. 1,
+// row 2 0.8); the direction view, at each sphere's centre, the tangent (row 1) rotated
+// counter-clockwise toward the bitangent by row 2's angles.
+TEST(CliMaterialExtensions, AnisotropyViewsShowStrengthAndDirection) {
+    const std::string strength = temp_path("as.png"), direction = temp_path("ad.png");
+    for (const auto& [view, png] :
+         {std::pair{"anisotropy-strength", strength}, {"anisotropy-direction", direction}}) {
+        const CliRun r = run_cli("render '" + sweep("anisotropy_sweep") + "' -o " + png +
+                                 " --width 160 --height 120 --view " + view + kSweepCamera +
+                                 " --validation --no-cache");
+        ASSERT_EQ(r.exit_code, 0) << r.out;
+    }
+    const Png s = read_png(strength), d = read_png(direction);
+    const double steps[] = {0.0, 0.25, 0.5, 0.75, 1.0};
+    const double degrees[] = {0.0, 30.0, 60.0, 90.0, 135.0};
+    for (int i = 0; i < 5; ++i) {
+        EXPECT_NEAR(sphere_centre(s, 0, i)[0], steps[i] * 255.0, 1.0) << i;
+        EXPECT_NEAR(sphere_centre(s, 1, i)[0], 0.8 * 255.0, 1.0) << i;
+        for (int row = 0; row < 2; ++row) {
+            const glm::dvec3 want = expected_direction(row, i, row == 0 ? 0.0 : degrees[i]);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(sphere_centre(d, row, i)[c], want[c], 8.0)
+                    << row << " " << i << " " << c;
+        }
+    }
+    std::filesystem::remove(strength);
+    std::filesystem::remove(direction);
+}
+
+// The directional albedo of anisotropic GGX (the specification's D and height-
+// correlated V, Schlick's F of `f0` at v . h) seen along the normal: the integral over
+// half vectors h of F D(h) V (n . l) 4 (v . h), by the midpoint rule (an independent
+// evaluation of the BRDF the path tracer samples).
+double anisotropic_albedo_at_normal(double alpha_t, double alpha_b, double f0) {
+    const double pi = 3.14159265358979;
+    const int thetas = 3000, phis = 720;
+    double sum = 0.0;
+    for (int i = 0; i < thetas; ++i) {
+        const double theta = (i + 0.5) * (pi / 4.0) / thetas; // n . l > 0 needs theta < 45 deg
+        const double ct = std::cos(theta), st = std::sin(theta);
+        const double n_dot_l = 2.0 * ct * ct - 1.0;
+        for (int j = 0; j < phis; ++j) {
+            const double phi = (j + 0.5) * 2.0 * pi / phis;
+            const glm::dvec3 h(st * std::cos(phi), st * std::sin(phi), ct);
+            const glm::dvec3 l = 2.0 * ct * h - glm::dvec3(0.0, 0.0, 1.0);
+            const glm::dvec3 f(h.x / alpha_t, h.y / alpha_b, h.z);
+            const double d = 1.0 / (pi * alpha_t * alpha_b * glm::dot(f, f) * glm::dot(f, f));
+            const double gv = n_dot_l;
+            const double gl = glm::length(glm::dvec3(alpha_t * l.x, alpha_b * l.y, l.z));
+            const double v = 0.5 / (gv + gl);
+            const double fresnel = f0 + (1.0 - f0) * std::pow(1.0 - ct, 5.0);
+            sum += fresnel * d * v * n_dot_l * 4.0 * ct * st * ((pi / 4.0) / thetas) *
+                   (2.0 * pi / phis);
+        }
+    }
+    return sum;
+}
+
+// The path tracer draws anisotropic GGX by its visible normals: in a uniform environment
+// of radiance 1, the smooth white metal of anisotropy_textures.gltf (strength 1 at its
+// front: alpha_t 1, alpha_b 0.09) reflects there the albedo the integral above gives.
+// The rasterizer's split-sum table is isotropic (by the roughness): it keeps the
+// isotropic albedo, by design (docs/materials.md).
+TEST(CliMaterialExtensions, PathTracedAnisotropyReflectsItsAlbedoInAFurnace) {
+    // A 1x1 Radiance HDR of radiance 1: (128, 128, 128, exponent 129).
+    const std::string hdr = temp_path("furnace.hdr");
+    {
+        std::ofstream out(hdr, std::ios::binary);
+        out << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 1\n";
+        out.write("\x80\x80\x80\x81", 4);
+    }
+    const std::string png = temp_path("furnace.png");
+    const CliRun r = run_cli("render '" + sweep("anisotropy_textures") + "' -o " + png +
+                             " --width 48 --height 36 --view lit --renderer rt --spp 256"
+                             " --camera eye=0,0,1.5:target=0,0,0:fov=45 --environment '" +
+                             hdr +
+                             "' --sun off --tone-map linear --exposure 0 --validation "
+                             "--no-cache");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    const Png p = read_png(png);
+    std::filesystem::remove(png);
+    std::filesystem::remove(hdr);
+    double sum = 0.0;
+    // 5x5 pixels about the centre (n . v above 0.97), 6400 paths: the estimate's noise
+    // (half the paths leave below the horizon) is about 0.006.
+    for (int y = -2; y <= 2; ++y)
+        for (int x = -2; x <= 2; ++x) {
+            const double c = p.at(24 + x, 18 + y)[0] / 255.0; // sRGB-encoded
+            sum += c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+        }
+    const double traced = sum / 25.0;
+    const double f0 = 0.9; // the metal's base colour
+    const double albedo = anisotropic_albedo_at_normal(1.0, 0.09, f0);
+    const double isotropic = anisotropic_albedo_at_normal(0.09, 0.09, f0);
+    std::printf("furnace: path traced %.4f, anisotropic albedo %.4f (isotropic %.4f)\n", traced,
+                albedo, isotropic);
+    EXPECT_NEAR(traced, albedo, 0.02);
+    EXPECT_LT(albedo, isotropic - 0.02); // the stretched lobe loses energy: measurable here
+}
+
+// anisotropy_textures.gltf: anisotropyTexture reads a 2x1 image (left: direction +y,
+// strength 1; right: +x, strength 0) through KHR_texture_transform offset (0.5, 0):
+// the front reads strength 1 along the bitangent (+Y there, green 255); untransformed
+// it would read strength 0 along +X.
+TEST(CliMaterialExtensions, AnisotropyTextureIsSampledThroughItsTransform) {
+    const std::array<int, 3> s = front_pixel(sweep("anisotropy_textures"), "anisotropy-strength");
+    EXPECT_NEAR(s[0], 255, 2);
+    const std::array<int, 3> d = front_pixel(sweep("anisotropy_textures"), "anisotropy-direction");
+    EXPECT_NEAR(d[0], 128, 4);
+    EXPECT_NEAR(d[1], 255, 4);
+}
+
 TEST(CliMaterialExtensions, BadValuesAreWarnedOnStderrAndTheFileStillRenders) {
     const std::string png = temp_path("bad.png");
     const CliRun r =
@@ -205,9 +338,16 @@ TEST(CliMaterialExtensions, BadValuesAreWarnedOnStderrAndTheFileStillRenders) {
     EXPECT_NE(r.out.find("specularFactor: 2 is outside 0..1"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("clearcoatFactor: -0.5 is outside 0..1; clamped to 0"), std::string::npos)
         << r.out;
+    EXPECT_NE(r.out.find("anisotropyStrength: 1.5 is outside 0..1; clamped to 1"),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("anisotropyRotation: not a finite number; the default 0 is used"),
+              std::string::npos)
+        << r.out;
     // The missing image, named with the slot that reads it.
     EXPECT_NE(r.out.find("missing_specular_color.png (used by material 'missing specular "
-                         "texture' KHR_materials_specular.specularColorTexture)"),
+                         "texture' KHR_materials_specular.specularColorTexture; material "
+                         "'anisotropy not finite' KHR_materials_anisotropy.anisotropyTexture)"),
               std::string::npos)
         << r.out;
     std::filesystem::remove(png);

@@ -1,5 +1,5 @@
-// Material extensions (KHR_materials_ior, _specular, _clearcoat): what the importer
-// reads and warns about (bad values name their JSON pointer and fall back as
+// Material extensions (KHR_materials_ior, _specular, _clearcoat, _sheen, _anisotropy): what the
+// importer reads and warns about (bad values name their JSON pointer and fall back as
 // docs/materials.md says), and the extension buffer's layout: only materials that use
 // an extension get a block, a scene without any gets no bytes.
 #include "test_support.h"
@@ -10,6 +10,10 @@
 #include <sherpa/scene/scene_loader.h>
 
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
 
@@ -100,21 +104,24 @@ TEST(MaterialExtensions, OnlyMaterialsThatUseAnExtensionHaveBlocks) {
         const MaterialInstance& m = r.scene->materials[i];
         const gpu::MaterialExtensionPlace& p = b.places[i];
         EXPECT_EQ(p.any(), m.ior.has_value() || m.specular.has_value() || m.clearcoat.has_value() ||
-                               m.sheen.has_value())
+                               m.sheen.has_value() || m.anisotropy.has_value())
             << i;
+        EXPECT_EQ(p.anisotropy != gpu::kNoExtension, m.anisotropy.has_value()) << i;
         EXPECT_EQ(p.sheen != gpu::kNoExtension, m.sheen.has_value()) << i;
         EXPECT_EQ(p.ior != gpu::kNoExtension, m.ior.has_value()) << i;
         EXPECT_EQ(p.specular != gpu::kNoExtension, m.specular.has_value()) << i;
         EXPECT_EQ(p.clearcoat != gpu::kNoExtension, m.clearcoat.has_value()) << i;
         if (!p.any()) continue;
-        words +=
-            2 + (m.ior ? 1 : 0) + (m.specular ? 6 : 0) + (m.clearcoat ? 8 : 0) + (m.sheen ? 6 : 0);
+        words += 3 + (m.ior ? 1 : 0) + (m.specular ? 6 : 0) + (m.clearcoat ? 8 : 0) +
+                 (m.sheen ? 6 : 0) + (m.anisotropy ? 4 : 0);
         gpu::GPUExtensionIndex index;
         std::memcpy(&index, &b.words[p.index], sizeof index);
         EXPECT_EQ(index.ior, p.ior);
         EXPECT_EQ(index.specular, p.specular);
         EXPECT_EQ(index.clearcoat, p.clearcoat);
         EXPECT_EQ(index.sheen, p.sheen);
+        EXPECT_EQ(index.anisotropy, p.anisotropy);
+        EXPECT_EQ(index.iridescence, gpu::kNoExtension);
         if (m.ior) {
             gpu::GPUIorBlock ior;
             std::memcpy(&ior, &b.words[p.ior], sizeof ior);
@@ -139,11 +146,11 @@ TEST(MaterialExtensions, ASceneWithoutExtensionsHasNoBytes) {
     for (const gpu::MaterialExtensionPlace& p : b.places) EXPECT_FALSE(p.any());
 }
 
-TEST(MaterialExtensions, AnIorOnlyMaterialPaysFortyEightBytes) {
+TEST(MaterialExtensions, AnIorOnlyMaterialPaysSixtyFourBytes) {
     const LoadResult r = load_data("material_sweeps/ior_sweep.gltf");
     ASSERT_TRUE(r) << r.error;
-    // Its 32-byte index (two words: GPUExtensionIndex) and its 16-byte block.
-    EXPECT_EQ(layout(*r.scene).bytes(), 10u * 48u);
+    // Its 48-byte index (three words: GPUExtensionIndex) and its 16-byte block.
+    EXPECT_EQ(layout(*r.scene).bytes(), 10u * 64u);
 }
 
 TEST(MaterialExtensions, ClearcoatIsReadAndPacked) {
@@ -163,7 +170,7 @@ TEST(MaterialExtensions, ClearcoatIsReadAndPacked) {
     EXPECT_TRUE(reads_normal_map(m));
     ASSERT_EQ(extension_texture_slots(m).size(), 3u);
     const gpu::MaterialExtensionBuffer b = layout(*r.scene);
-    EXPECT_EQ(b.bytes(), 32u + 128u);
+    EXPECT_EQ(b.bytes(), 48u + 128u);
     gpu::GPUClearcoatBlock c;
     std::memcpy(&c, &b.words[b.places[0].clearcoat], sizeof c);
     EXPECT_EQ(c.factors, glm::vec4(1.0f, 1.0f, 1.0f, 0.0f));
@@ -210,7 +217,7 @@ TEST(MaterialExtensions, SheenIsReadAndPacked) {
     EXPECT_TRUE(m.sheen->roughness.transform.present);
     EXPECT_EQ(extension_texture_slots(m).size(), 2u);
     const gpu::MaterialExtensionBuffer b = layout(*r.scene);
-    EXPECT_EQ(b.bytes(), 32u + 96u);
+    EXPECT_EQ(b.bytes(), 48u + 96u);
     gpu::GPUSheenBlock s;
     std::memcpy(&s, &b.words[b.places[0].sheen], sizeof s);
     EXPECT_EQ(s.factors, glm::vec4(1.0f));
@@ -229,6 +236,89 @@ TEST(MaterialExtensions, BadSheenValuesAreWarnedAndFallBack) {
     const MaterialSheen& sh = *material(s, "bad sheen").sheen;
     EXPECT_EQ(sh.color_factor, glm::vec3(1.0f, 0.0f, 0.5f));
     EXPECT_FLOAT_EQ(sh.roughness_factor, 0.0f);
+}
+
+TEST(MaterialExtensions, AnisotropyIsReadAndPackedAndAsksForTangents) {
+    EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_anisotropy"));
+    const LoadResult r = load_data("material_sweeps/anisotropy_textures.gltf");
+    ASSERT_TRUE(r) << r.error;
+    for (const std::string& w : r.scene->warnings)
+        EXPECT_EQ(w.find("not implemented"), std::string::npos) << w;
+    const MaterialInstance& m = r.scene->materials.at(0);
+    ASSERT_TRUE(m.anisotropy.has_value());
+    EXPECT_FLOAT_EQ(m.anisotropy->strength, 1.0f);
+    EXPECT_FLOAT_EQ(m.anisotropy->rotation, 0.0f);
+    EXPECT_EQ(m.anisotropy->texture.texture, 0);
+    EXPECT_TRUE(m.anisotropy->texture.transform.present);
+    // No normal map, yet the anisotropy's direction lies in the tangent frame: the
+    // sphere keeps its authored TANGENT.
+    EXPECT_FALSE(reads_normal_map(m));
+    EXPECT_TRUE(needs_tangents(m));
+    EXPECT_EQ(tangent_uv_set(m), 0u);
+    EXPECT_EQ(r.scene->meshes.at(0).provenance_of(VertexAttribute::Tangent), Provenance::Authored);
+    ASSERT_EQ(extension_texture_slots(m).size(), 1u);
+    EXPECT_EQ(extension_texture_slots(m)[0].role, kRoleLinear);
+    const gpu::MaterialExtensionBuffer b = layout(*r.scene);
+    EXPECT_EQ(b.bytes(), 48u + 64u);
+    gpu::GPUAnisotropyBlock a;
+    std::memcpy(&a, &b.words[b.places[0].anisotropy], sizeof a);
+    EXPECT_EQ(a.factors, glm::vec4(1.0f, 1.0f, 0.0f, 0.0f));
+    EXPECT_EQ(a.texture, 100u);
+    EXPECT_FLOAT_EQ(a.uv.row0.z, 0.5f);
+}
+
+// The same sphere without its TANGENT: generated for the anisotropy, as for a normal map.
+TEST(MaterialExtensions, AnisotropyWithoutAuthoredTangentsGeneratesThem) {
+    std::ifstream in(test::data_dir() / "material_sweeps/anisotropy_textures.gltf");
+    nlohmann::json doc = nlohmann::json::parse(in);
+    doc["meshes"][0]["primitives"][0]["attributes"].erase("TANGENT");
+    const std::filesystem::path path =
+        std::filesystem::temp_directory_path() / "sherpa_anisotropy_no_tangents.gltf";
+    std::ofstream(path) << doc.dump();
+    const LoadResult r = load_scene(path.string());
+    std::filesystem::remove(path);
+    ASSERT_TRUE(r) << r.error;
+    EXPECT_EQ(r.scene->meshes.at(0).provenance_of(VertexAttribute::Tangent), Provenance::Generated);
+}
+
+TEST(MaterialExtensions, AnisotropyRotationIsStoredAsItsCosineAndSine) {
+    const LoadResult r = load_data("material_sweeps/anisotropy_sweep.gltf");
+    ASSERT_TRUE(r) << r.error;
+    ASSERT_EQ(r.scene->materials.size(), 10u);
+    const gpu::MaterialExtensionBuffer b = layout(*r.scene);
+    EXPECT_EQ(b.bytes(), 10u * (48u + 64u));
+    // Row 2: strength 0.8 at 0, 30, 60, 90 and 135 degrees.
+    const float degrees[] = {0.0f, 30.0f, 60.0f, 90.0f, 135.0f};
+    for (int i = 0; i < 5; ++i) {
+        gpu::GPUAnisotropyBlock a;
+        std::memcpy(&a, &b.words[b.places[std::size_t(5 + i)].anisotropy], sizeof a);
+        const float rad = degrees[i] * 3.14159265f / 180.0f;
+        EXPECT_FLOAT_EQ(a.factors.x, 0.8f) << i;
+        EXPECT_NEAR(a.factors.y, std::cos(rad), 1e-6f) << i;
+        EXPECT_NEAR(a.factors.z, std::sin(rad), 1e-6f) << i;
+        EXPECT_EQ(a.texture, gpu::kWhiteTexture) << i;
+    }
+}
+
+TEST(MaterialExtensions, BadAnisotropyValuesAreWarnedAndFallBack) {
+    const LoadResult r = load_data("material_extensions_bad.gltf");
+    ASSERT_TRUE(r) << r.error;
+    const Scene& s = *r.scene;
+    const std::string a12 = "/materials/12/extensions/KHR_materials_anisotropy/";
+    const std::string a13 = "/materials/13/extensions/KHR_materials_anisotropy/";
+    // 1.5 clamps to 1; a string rotation takes the default 0.
+    EXPECT_NE(message_at(s, a12 + "anisotropyStrength"), nullptr);
+    EXPECT_NE(message_at(s, a12 + "anisotropyRotation"), nullptr);
+    EXPECT_FLOAT_EQ(material(s, "bad anisotropy").anisotropy->strength, 1.0f);
+    EXPECT_FLOAT_EQ(material(s, "bad anisotropy").anisotropy->rotation, 0.0f);
+    // -0.5 clamps to 0; 1e39 (infinite as a float) rotation: 0. Its texture's image is
+    // missing: the texture pipeline's warning, the slot reads white.
+    EXPECT_NE(message_at(s, a13 + "anisotropyStrength"), nullptr);
+    EXPECT_NE(message_at(s, a13 + "anisotropyRotation"), nullptr);
+    const MaterialAnisotropy& a = *material(s, "anisotropy not finite").anisotropy;
+    EXPECT_FLOAT_EQ(a.strength, 0.0f);
+    EXPECT_FLOAT_EQ(a.rotation, 0.0f);
+    EXPECT_EQ(a.texture.texture, 0);
 }
 
 } // namespace

@@ -118,7 +118,7 @@ TEST(TransmissionExtensions, BlocksHoldTheValuesAndOnlyUsersPay) {
             << i;
         EXPECT_EQ(p.dispersion != gpu::kNoExtension, m.dispersion.has_value()) << i;
         if (!p.any()) continue;
-        words += 2 + (m.transmission ? 3 : 0) + (m.volume ? 4 : 0) +
+        words += 3 + (m.transmission ? 3 : 0) + (m.volume ? 4 : 0) +
                  (m.diffuse_transmission ? 6 : 0) + (m.dispersion ? 1 : 0);
         const auto index = block_at<gpu::GPUExtensionIndex>(b, p.index);
         EXPECT_EQ(index.transmission, p.transmission);

@@ -35,9 +35,25 @@ def sphere():
     return len(pos), len(idx), blob
 
 
-def document(name, rows, extensions):
-    """rows: lists of (material name, material JSON), one sphere each, 1 apart."""
+def sphere_tangents():
+    """The sphere's TANGENT stream: along increasing u (around the sphere), w = 1, so
+    the bitangent cross(normal, tangent) points toward decreasing v (up), glTF's
+    convention; defined at the poles too."""
+    out = []
+    for r in range(RINGS + 1):
+        for s in range(SEGMENTS + 1):
+            phi = 2 * math.pi * s / SEGMENTS
+            out.append((-math.sin(phi), 0.0, -math.cos(phi), 1.0))
+    return b''.join(struct.pack('<4f', *t) for t in out)
+
+
+def document(name, rows, extensions, tangents=False):
+    """rows: lists of (material name, material JSON), one sphere each, 1 apart; with
+    `tangents`, the spheres carry authored TANGENT (sphere_tangents)."""
     count, icount, blob = sphere()
+    tangent_offset = len(blob) + (-len(blob)) % 4
+    if tangents:
+        blob += b'\0' * (tangent_offset - len(blob)) + sphere_tangents()
     v = count * 12
     doc = {
         'asset': {'version': '2.0', 'generator': 'Sherpa tools/material_sweeps/make_sweeps.py'},
@@ -60,13 +76,19 @@ def document(name, rows, extensions):
             {'bufferView': 2, 'componentType': 5123, 'count': icount, 'type': 'SCALAR'},
         ],
     }
+    attributes = {'POSITION': 0, 'NORMAL': 1, 'TEXCOORD_0': 2}
+    if tangents:
+        doc['bufferViews'].append({'buffer': 0, 'byteOffset': tangent_offset,
+                                   'byteLength': count * 16, 'target': 34962})
+        doc['accessors'].append({'bufferView': 3, 'componentType': 5126, 'count': count,
+                                 'type': 'VEC4'})
+        attributes['TANGENT'] = 4
     for r, row in enumerate(rows):
         for c, (label, material) in enumerate(row):
             m = len(doc['materials'])
             doc['materials'].append(dict(name=label, **material))
             doc['meshes'].append({'name': label, 'primitives': [
-                {'attributes': {'POSITION': 0, 'NORMAL': 1, 'TEXCOORD_0': 2}, 'indices': 3,
-                 'material': m}]})
+                {'attributes': dict(attributes), 'indices': 3, 'material': m}]})
             doc['scenes'][0]['nodes'].append(len(doc['nodes']))
             doc['nodes'].append({'name': label, 'mesh': m,
                                  'translation': [c - (len(row) - 1) / 2, (len(rows) - 1) / 2 - r, 0]})
@@ -380,6 +402,54 @@ def sheen_textures():
     return doc
 
 
+# The anisotropic spheres: a bright smooth metal, whose sharp reflections of the studio's
+# lights are what the anisotropy stretches along the tangent (around the sphere, along
+# u). They carry authored tangents: three.js's frame from screen derivatives points its
+# bitangent toward increasing v, against glTF's convention (it flips normal maps' y to
+# compensate, not the anisotropy's direction), so only authored tangents give both
+# renderers the same frame.
+ANISOTROPIC_BASE = [0.9, 0.9, 0.9]
+
+
+def anisotropy_sweep():
+    """Row 1: anisotropyStrength 0 .. 1 along the tangent; row 2: strength 0.8 rotated
+    by anisotropyRotation 0, 30, 60, 90 and 135 degrees (counter-clockwise from the
+    tangent)."""
+    steps = [0.0, 0.25, 0.5, 0.75, 1.0]
+    angles = [0, 30, 60, 90, 135]
+    row1 = [(f'anisotropy {a}', {'pbrMetallicRoughness': pbr(ANISOTROPIC_BASE, 0.3, 1.0),
+                                 'extensions': {'KHR_materials_anisotropy': {
+                                     'anisotropyStrength': a}}})
+            for a in steps]
+    row2 = [(f'anisotropy rotation {d}',
+             {'pbrMetallicRoughness': pbr(ANISOTROPIC_BASE, 0.3, 1.0),
+              'extensions': {'KHR_materials_anisotropy': {
+                  'anisotropyStrength': 0.8, 'anisotropyRotation': math.radians(d)}}})
+            for d in angles]
+    return document('KHR_materials_anisotropy sweep', [row1, row2], ['KHR_materials_anisotropy'],
+                    tangents=True)
+
+
+def anisotropy_textures():
+    """One sphere: anisotropyTexture reads a 2x1 image (left texel: direction +y of the
+    tangent frame, strength 1; right: +x, strength 0) through KHR_texture_transform
+    offset 0.5 in u (the front reads the left texel), under anisotropyStrength 1 and
+    no rotation."""
+    image = png_rgba(2, 1, lambda x, y: (128, 255, 255, 255) if x == 0 else (255, 128, 0, 255))
+    transform = {'KHR_texture_transform': {'offset': [0.5, 0.0]}}
+    row = [('textured anisotropy', {
+        'pbrMetallicRoughness': pbr(ANISOTROPIC_BASE, 0.3, 1.0),
+        'extensions': {'KHR_materials_anisotropy': {
+            'anisotropyStrength': 1.0,
+            'anisotropyTexture': {'index': 0, 'extensions': transform}}}})]
+    doc = document('KHR_materials_anisotropy textures', [row],
+                   ['KHR_materials_anisotropy', 'KHR_texture_transform'], tangents=True)
+    doc['images'] = [{'uri': 'data:image/png;base64,' + base64.b64encode(image).decode()}]
+    doc['samplers'] = [{'magFilter': 9728, 'minFilter': 9728, 'wrapS': 10497, 'wrapT': 10497}]
+    doc['textures'] = [{'source': 0, 'sampler': 0}]
+    return doc
+
+
 def variants_bad():
     """The variants file with broken mappings: a material index past the end, a variant
     index past the end, a variant mapped twice, and a mapping without variants."""
@@ -401,6 +471,8 @@ def main():
                       ('clearcoat_sweep', clearcoat_sweep()),
                       ('clearcoat_textures', clearcoat_textures()),
                       ('sheen_sweep', sheen_sweep()), ('sheen_textures', sheen_textures()),
+                      ('anisotropy_sweep', anisotropy_sweep()),
+                      ('anisotropy_textures', anisotropy_textures()),
                       ('variants', variants()), ('variants_bad', variants_bad())):
         with open(f'{out}/{name}.gltf', 'w') as f:
             json.dump(doc, f, indent=1)

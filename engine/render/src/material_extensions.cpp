@@ -2,6 +2,7 @@
 
 #include <sherpa/scene/material_extension_slots.h>
 
+#include <cmath>
 #include <cstring>
 
 namespace sherpa::gpu {
@@ -72,7 +73,7 @@ MaterialExtensionBuffer build_material_extensions(std::span<const MaterialInstan
         const bool sheen = m.sheen.has_value();
         const bool transmission = m.transmission.has_value();
         if (!ior && !specular && !clearcoat && !sheen && !transmission && !m.volume &&
-            !m.diffuse_transmission && !m.dispersion)
+            !m.diffuse_transmission && !m.dispersion && !m.anisotropy)
             continue;
         MaterialExtensionPlace& place = out.places[i];
         GPUExtensionIndex index{};
@@ -111,6 +112,13 @@ MaterialExtensionBuffer build_material_extensions(std::span<const MaterialInstan
             place.sheen = append(out.words, b);
         }
         append_transmission_blocks(out.words, m, place, texture_slot);
+        if (const auto& a = m.anisotropy) {
+            GPUAnisotropyBlock b{};
+            b.factors = glm::vec4(a->strength, std::cos(a->rotation), std::sin(a->rotation), 0.0f);
+            b.texture = texture_slot(a->texture, kRoleLinear);
+            b.uv = texture_transform(a->texture);
+            place.anisotropy = append(out.words, b);
+        }
         if (transmission && m.transmission->factor > 0.0f) ++out.transmissive_materials;
         index = GPUExtensionIndex{place.ior,
                                   place.specular,
@@ -119,7 +127,11 @@ MaterialExtensionBuffer build_material_extensions(std::span<const MaterialInstan
                                   place.transmission,
                                   place.volume,
                                   place.diffuse_transmission,
-                                  place.dispersion};
+                                  place.dispersion,
+                                  place.anisotropy,
+                                  place.iridescence,
+                                  0,
+                                  0};
         std::memcpy(&out.words[place.index], &index, sizeof index);
     }
     return out;

@@ -95,4 +95,18 @@ MaterialSheen read_sheen(ImportContext& ctx, const tinygltf::Value& e, const std
     return s;
 }
 
+// anisotropyRotation is any finite angle (radians); it is kept as written within a
+// bound where a float still resolves a fraction of a turn.
+constexpr double kMaxRotation = 1.0e6;
+
+MaterialAnisotropy read_anisotropy(ImportContext& ctx, const tinygltf::Value& e,
+                                   const std::string& where) {
+    const std::string w = where + ".extensions.KHR_materials_anisotropy";
+    MaterialAnisotropy a;
+    a.strength = ranged(ctx, e, "anisotropyStrength", 0.0, 0.0, 1.0, w);
+    a.rotation = ranged(ctx, e, "anisotropyRotation", 0.0, -kMaxRotation, kMaxRotation, w);
+    a.texture = slot(ctx, e, "anisotropyTexture", w, kRoleLinear);
+    return a;
+}
+
 } // namespace sherpa::detail

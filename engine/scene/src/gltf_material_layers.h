@@ -14,4 +14,7 @@ MaterialClearcoat read_clearcoat(ImportContext& ctx, const tinygltf::Value& e,
 
 MaterialSheen read_sheen(ImportContext& ctx, const tinygltf::Value& e, const std::string& where);
 
+MaterialAnisotropy read_anisotropy(ImportContext& ctx, const tinygltf::Value& e,
+                                   const std::string& where);
+
 } // namespace sherpa::detail

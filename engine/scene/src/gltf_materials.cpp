@@ -418,6 +418,9 @@ void import_material(ImportContext& ctx, std::size_t i) {
             m.clearcoat = read_clearcoat(ctx, it->second, where);
         if (const auto it = src.extensions.find("KHR_materials_sheen"); it != src.extensions.end())
             m.sheen = read_sheen(ctx, it->second, where);
+        if (const auto it = src.extensions.find("KHR_materials_anisotropy");
+            it != src.extensions.end())
+            m.anisotropy = read_anisotropy(ctx, it->second, where);
         ctx.scene.materials.push_back(std::move(m));
     }
 }

@@ -37,6 +37,8 @@ std::vector<ExtensionTextureSlot> extension_texture_slots(const MaterialInstance
         add(d->color, kRoleColor,
             "KHR_materials_diffuse_transmission.diffuseTransmissionColorTexture");
     }
+    if (const auto& a = m.anisotropy)
+        add(a->texture, kRoleLinear, "KHR_materials_anisotropy.anisotropyTexture");
     return out;
 }
 
@@ -45,10 +47,20 @@ bool reads_normal_map(const MaterialInstance& m) {
            (draws_material_extensions(m) && m.clearcoat && m.clearcoat->normal.present());
 }
 
-std::uint32_t normal_map_uv_set(const MaterialInstance& m) {
+bool draws_anisotropy(const MaterialInstance& m) {
+    return draws_material_extensions(m) && m.anisotropy.has_value();
+}
+
+bool needs_tangents(const MaterialInstance& m) {
+    return reads_normal_map(m) || draws_anisotropy(m);
+}
+
+std::uint32_t tangent_uv_set(const MaterialInstance& m) {
     if (m.normal.present()) return m.normal.tex_coord;
     if (draws_material_extensions(m) && m.clearcoat && m.clearcoat->normal.present())
         return m.clearcoat->normal.tex_coord;
+    if (draws_anisotropy(m) && m.anisotropy->texture.present())
+        return m.anisotropy->texture.tex_coord;
     return 0;
 }
 

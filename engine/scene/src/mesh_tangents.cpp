@@ -29,7 +29,7 @@ const MaterialInstance* normal_mapped_material(const Scene& scene, std::uint32_t
     for (std::uint32_t m : possible_materials(scene, mesh)) {
         if (m >= scene.materials.size()) continue;
         if (!first) first = &scene.materials[m];
-        if (reads_normal_map(scene.materials[m])) return &scene.materials[m];
+        if (needs_tangents(scene.materials[m])) return &scene.materials[m];
     }
     return first;
 }
@@ -93,7 +93,7 @@ std::uint32_t apply_corner_tangents(Mesh& mesh, std::span<const glm::vec4> corne
 
 std::uint32_t normal_uv_set(const Scene& scene, const Mesh& mesh) {
     if (mesh.material_id >= scene.materials.size()) return 0;
-    return normal_map_uv_set(scene.materials[mesh.material_id]);
+    return tangent_uv_set(scene.materials[mesh.material_id]);
 }
 
 MeshTangentInput tangent_input_of(const Mesh& mesh, std::uint32_t tex_coord) {
@@ -155,7 +155,7 @@ SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptio
     for (std::uint32_t id = 0; id < scene.meshes.size(); ++id) {
         const Mesh& mesh = scene.meshes[id];
         const MaterialInstance* material = normal_mapped_material(scene, id);
-        const bool normal_texture = material && reads_normal_map(*material);
+        const bool normal_texture = material && needs_tangents(*material);
         const bool authored = mesh.provenance_of(VertexAttribute::Tangent) == Provenance::Authored;
         if (mesh.topology() == Topology::Triangles &&
             (options.regenerate || (!authored && normal_texture))) {
@@ -189,7 +189,7 @@ SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptio
                 mesh.provenance_of(VertexAttribute::Tangent) == Provenance::Authored;
             const MaterialInstance* material =
                 normal_mapped_material(scene, static_cast<std::uint32_t>(i));
-            const bool normal_texture = material && reads_normal_map(*material);
+            const bool normal_texture = material && needs_tangents(*material);
             if (mesh.topology() != Topology::Triangles) {
                 out.reason = "lines and points have no surface: no tangents";
                 continue;
@@ -199,10 +199,10 @@ SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptio
                 continue;
             }
             if (!options.regenerate && !normal_texture) {
-                out.reason = "no normal texture: tangents not needed";
+                out.reason = "no normal texture or anisotropy: tangents not needed";
                 continue;
             }
-            const std::uint32_t set = normal_texture ? material->normal.tex_coord : 0;
+            const std::uint32_t set = normal_texture ? tangent_uv_set(*material) : 0;
             try {
                 out = generate_mesh_tangents(mesh, set, options.method, &workspace);
                 if (out.reason.empty()) out.reason = authored ? "regenerated" : "generated";

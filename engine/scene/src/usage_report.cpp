@@ -31,8 +31,9 @@ std::array<bool, kVertexAttributeCount> attributes_used(const MaterialInstance& 
         if (slot->tex_coord == 0) set(VertexAttribute::TexCoord0);
         if (slot->tex_coord == 1) set(VertexAttribute::TexCoord1);
     }
-    // Tangents matter only where a normal map perturbs the normal (glTF's rule).
-    if (reads_normal_map(material) && !material.unlit) set(VertexAttribute::Tangent);
+    // Tangents matter only where a normal map perturbs the normal (glTF's rule) or an
+    // anisotropy direction lies in the tangent frame.
+    if (needs_tangents(material) && !material.unlit) set(VertexAttribute::Tangent);
     // Vertex colours multiply the base colour whenever the primitive has them.
     if (present(VertexAttribute::Color0)) set(VertexAttribute::Color0);
     // A stream the material wants but the mesh lacks is still not stored: shaders

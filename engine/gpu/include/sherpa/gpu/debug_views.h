@@ -73,6 +73,11 @@ enum class DebugView : std::uint32_t {
     // without the extension) and roughness (grey).
     SheenColor = 32,
     SheenRoughness = 33,
+    // KHR_materials_anisotropy: the strength (grey; 0 without the extension) and the
+    // direction in the world, along the normal-mapped tangent frame (encoded as the
+    // normal view; black without the extension).
+    AnisotropyStrength = 34,
+    AnisotropyDirection = 35,
 };
 
 // The metallic view's colour on specular-glossiness materials (no metallic value
@@ -150,7 +155,7 @@ struct OverlayEntry {
     const char* label;
 };
 
-inline constexpr std::array<DebugViewInfo, 34> kDebugViews{{
+inline constexpr std::array<DebugViewInfo, 36> kDebugViews{{
     {DebugView::Lit, "lit", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Lit")},
     {DebugView::Normal, "normal", kNormalStream, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Normals")},
     {DebugView::Tangent, "tangent", kTangentStream,
@@ -206,6 +211,10 @@ inline constexpr std::array<DebugViewInfo, 34> kDebugViews{{
     {DebugView::SheenColor, "sheen-color", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Sheen colour")},
     {DebugView::SheenRoughness, "sheen-roughness", 0,
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Sheen roughness")},
+    {DebugView::AnisotropyStrength, "anisotropy-strength", 0,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Anisotropy strength")},
+    {DebugView::AnisotropyDirection, "anisotropy-direction", kNormalStream | kTangentStream,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Anisotropy direction")},
 }};
 
 inline constexpr std::array<OverlayEntry, 7> kOverlays{{

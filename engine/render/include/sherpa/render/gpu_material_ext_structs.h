@@ -13,9 +13,9 @@ namespace sherpa::gpu {
 // 16-byte words (set 1, binding 8) that holds, for each material using at least one
 // drawn extension, a GPUExtensionIndex and then one block per extension it uses. A
 // scene where no material uses one has no buffer at all; a material that uses only
-// KHR_materials_ior pays 32 bytes. Offsets are in 16-byte words from the buffer's
-// start; every block is a whole number of words, read by the shader word by word in
-// field order (the GLSL twins are checked by tests/gpu/struct_twins_test.cpp).
+// KHR_materials_ior pays 64 bytes (the 48-byte index and its block). Offsets are in 16-byte words
+// from the buffer's start; every block is a whole number of words, read by the shader word by word
+// in field order (the GLSL twins are checked by tests/gpu/struct_twins_test.cpp).
 inline constexpr std::uint32_t kNoExtension = 0xffffffffu;
 inline constexpr std::uint32_t kExtensionWordBytes = 16;
 
@@ -29,6 +29,10 @@ struct GPUExtensionIndex {
     std::uint32_t volume;               // GPUVolumeBlock, or kNoExtension
     std::uint32_t diffuse_transmission; // GPUDiffuseTransmissionBlock, or kNoExtension
     std::uint32_t dispersion;           // GPUDispersionBlock, or kNoExtension
+    // Third word: the microfacet's own shape and film.
+    std::uint32_t anisotropy;  // GPUAnisotropyBlock, or kNoExtension
+    std::uint32_t iridescence; // GPUIridescenceBlock, or kNoExtension
+    std::uint32_t pad0, pad1;
 };
 static_assert(offsetof(GPUExtensionIndex, specular) == 4);
 static_assert(offsetof(GPUExtensionIndex, clearcoat) == 8);
@@ -37,7 +41,9 @@ static_assert(offsetof(GPUExtensionIndex, transmission) == 16);
 static_assert(offsetof(GPUExtensionIndex, volume) == 20);
 static_assert(offsetof(GPUExtensionIndex, diffuse_transmission) == 24);
 static_assert(offsetof(GPUExtensionIndex, dispersion) == 28);
-static_assert(sizeof(GPUExtensionIndex) == 32);
+static_assert(offsetof(GPUExtensionIndex, anisotropy) == 32);
+static_assert(offsetof(GPUExtensionIndex, iridescence) == 36);
+static_assert(sizeof(GPUExtensionIndex) == 48);
 
 // KHR_materials_ior.
 struct GPUIorBlock {
@@ -141,5 +147,32 @@ struct GPUDispersionBlock {
     float pad0, pad1, pad2;
 };
 static_assert(sizeof(GPUDispersionBlock) == 16);
+
+// KHR_materials_anisotropy (shaders/include/anisotropy.glsl). The rotation is stored as
+// its cosine and sine (the direction's rotation matrix).
+struct GPUAnisotropyBlock {
+    glm::vec4 factors;     // x anisotropyStrength, y cos(anisotropyRotation), z sin(...)
+    std::uint32_t texture; // RG direction, B strength, linear (white where absent)
+    std::uint32_t pad0, pad1, pad2;
+    GPUTextureTransform uv; // KHR_texture_transform of anisotropyTexture
+};
+static_assert(offsetof(GPUAnisotropyBlock, texture) == 16);
+static_assert(offsetof(GPUAnisotropyBlock, uv) == 32);
+static_assert(sizeof(GPUAnisotropyBlock) == 64);
+
+// KHR_materials_iridescence (shaders/include/iridescence.glsl).
+struct GPUIridescenceBlock {
+    glm::vec4 factors; // x iridescenceFactor, y iridescenceIor, z thickness minimum, w maximum (nm)
+    std::uint32_t texture;       // R channel, linear (white where absent)
+    std::uint32_t thickness_tex; // G channel, linear (white where absent)
+    std::uint32_t pad0, pad1;
+    GPUTextureTransform uv;           // KHR_texture_transform of iridescenceTexture
+    GPUTextureTransform thickness_uv; // ... of iridescenceThicknessTexture
+};
+static_assert(offsetof(GPUIridescenceBlock, texture) == 16);
+static_assert(offsetof(GPUIridescenceBlock, thickness_tex) == 20);
+static_assert(offsetof(GPUIridescenceBlock, uv) == 32);
+static_assert(offsetof(GPUIridescenceBlock, thickness_uv) == 64);
+static_assert(sizeof(GPUIridescenceBlock) == 96);
 
 } // namespace sherpa::gpu

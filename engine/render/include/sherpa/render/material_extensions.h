@@ -30,6 +30,7 @@ struct MaterialExtensionPlace {
     std::uint32_t sheen = kNoExtension;
     std::uint32_t transmission = kNoExtension, volume = kNoExtension;
     std::uint32_t diffuse_transmission = kNoExtension, dispersion = kNoExtension;
+    std::uint32_t anisotropy = kNoExtension, iridescence = kNoExtension;
     bool any() const { return index != kNoExtension; }
 };
 

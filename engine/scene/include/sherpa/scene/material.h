@@ -105,6 +105,31 @@ struct MaterialSheen {
     TextureSlot roughness; // A channel, linear
 };
 
+// KHR_materials_anisotropy: anisotropic GGX whose roughness along the anisotropy
+// direction is mix(alpha, 1, strength^2) (alpha across it). The strength is
+// anisotropyStrength x anisotropyTexture.b; the direction is anisotropyTexture.rg
+// (2 x rg - 1 in the tangent frame; +x without a texture) rotated counter-clockwise by
+// anisotropyRotation (radians). Drawn with tangents (generated where the mesh has none).
+struct MaterialAnisotropy {
+    float strength = 0.0f;
+    float rotation = 0.0f; // radians
+    TextureSlot texture;   // RG direction, B strength, linear
+};
+
+// KHR_materials_iridescence: a thin dielectric film over the base whose interference
+// colours the specular reflection (the Fresnel term), weighted by iridescenceFactor x
+// iridescenceTexture.r. The film's index is iridescenceIor and its thickness in
+// nanometres mix(thicknessMinimum, thicknessMaximum, iridescenceThicknessTexture.g)
+// (thicknessMaximum without the texture).
+struct MaterialIridescence {
+    float factor = 0.0f;
+    float ior = 1.3f;
+    float thickness_minimum = 100.0f; // nm
+    float thickness_maximum = 400.0f; // nm
+    TextureSlot texture;              // R channel, linear
+    TextureSlot thickness;            // G channel, linear
+};
+
 // KHR_materials_ior's default, which is also the core glTF dielectric (F0 = 0.04).
 inline constexpr float kDefaultIor = 1.5f;
 
@@ -135,6 +160,8 @@ struct MaterialInstance {
     std::optional<MaterialVolume> volume;             // KHR_materials_volume
     std::optional<MaterialDiffuseTransmission> diffuse_transmission; // ..._diffuse_transmission
     std::optional<float> dispersion; // KHR_materials_dispersion: Abbe-number scale, >= 0
+    std::optional<MaterialAnisotropy> anisotropy;   // KHR_materials_anisotropy
+    std::optional<MaterialIridescence> iridescence; // KHR_materials_iridescence
     // The names in the material's `extensions` object, as written (sorted): what
     // marks a material that uses an extension Sherpa does not draw.
     std::vector<std::string> extensions;

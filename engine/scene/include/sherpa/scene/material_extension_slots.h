@@ -25,10 +25,14 @@ struct ExtensionTextureSlot {
 // The drawn extension texture slots of `m` that name a texture.
 std::vector<ExtensionTextureSlot> extension_texture_slots(const MaterialInstance& m);
 
-// The normal maps `m` shades with (its own and a clearcoat's): where one is present
-// the mesh needs tangents. `uv_set` is the TEXCOORD set tangents are made for (the
-// core normal map's first).
+// The normal maps `m` shades with (its own and a clearcoat's).
 bool reads_normal_map(const MaterialInstance& m);
-std::uint32_t normal_map_uv_set(const MaterialInstance& m);
+// Whether `m` draws KHR_materials_anisotropy (its direction lies in the tangent frame).
+bool draws_anisotropy(const MaterialInstance& m);
+// Where a normal map is read or anisotropy drawn, the mesh needs tangents.
+bool needs_tangents(const MaterialInstance& m);
+// The TEXCOORD set tangents are made for: the core normal map's, else the clearcoat
+// normal map's, else the anisotropy texture's; 0 without any.
+std::uint32_t tangent_uv_set(const MaterialInstance& m);
 
 } // namespace sherpa

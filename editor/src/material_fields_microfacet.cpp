@@ -1,0 +1,43 @@
+// The material dock's rows of the extensions that shape the base's microfacets
+// (KHR_materials_anisotropy): each field of the material's block with its byte offset
+// in the extension buffer, values from the CPU record.
+#include "material_fields_model.h"
+
+#include <cmath>
+#include <cstddef>
+
+#include "format_values.h"
+
+#include <sherpa/render/gpu_structs.h>
+#include <sherpa/render/material_extensions.h>
+
+namespace sherpa::editor {
+
+void MaterialFieldsModel::appendMicrofacetRows(const gpu::MaterialExtensionPlace& place,
+                                               const MaterialInstance& m) {
+    if (place.anisotropy == gpu::kNoExtension && place.iridescence == gpu::kNoExtension) return;
+    const int word = int(gpu::kExtensionWordBytes);
+    auto words = [](std::uint32_t w) {
+        return w == gpu::kNoExtension ? tr("absent") : QString::number(w);
+    };
+    auto add = [&](std::uint32_t block, std::size_t offset, const char* field, const char* property,
+                   const char* type, const QString& value, const TextureSlot* slot = nullptr) {
+        extension_rows_.push_back({int(block) * word + int(offset), QString::fromLatin1(field),
+                                   QString::fromLatin1(property), QString::fromLatin1(type), value,
+                                   slot && slot->present() ? slot->texture : -1});
+    };
+    add(place.index, offsetof(gpu::GPUExtensionIndex, anisotropy), "ext.index.anisotropy",
+        "GPUExtensionIndex word 2", "uvec4",
+        tr("anisotropy %1, iridescence %2").arg(words(place.anisotropy), words(place.iridescence)));
+    if (const auto& a = m.anisotropy; a && place.anisotropy != gpu::kNoExtension) {
+        add(place.anisotropy, offsetof(gpu::GPUAnisotropyBlock, factors), "ext.anisotropy.factors",
+            "KHR_materials_anisotropy.anisotropyStrength, cos, sin (anisotropyRotation)", "vec4",
+            Format::vec(
+                glm::vec4(a->strength, std::cos(a->rotation), std::sin(a->rotation), 0.0f)));
+        add(place.anisotropy, offsetof(gpu::GPUAnisotropyBlock, texture), "ext.anisotropy.texture",
+            "KHR_materials_anisotropy.anisotropyTexture", "uint",
+            a->texture.present() ? chain(a->texture.texture) : tr("default texture"), &a->texture);
+    }
+}
+
+} // namespace sherpa::editor

@@ -16,6 +16,7 @@
 #include "clearcoat.glsl"
 #include "sheen.glsl"
 #include "anisotropy.glsl"
+#include "iridescence.glsl"
 #include "tonemap.glsl"
 #include "punctual.glsl"
 #include "diffuse_transmission.glsl"
@@ -140,6 +141,10 @@ void main() {
     // KHR_materials_anisotropy: the strength (grey) and the direction in the world
     // (encoded as the normal view, along the normal-mapped frame); black without it.
     case VIEW_ANISOTROPY_STRENGTH: c = vec3(material_anisotropy_tangent(ext, uv0, uv1).z * float(ext.anisotropy != NO_EXTENSION)); break;
+    // KHR_materials_iridescence: the factor (grey) and the film's thickness in
+    // micrometres (grey, clipped at 1); 0 without the extension.
+    case VIEW_IRIDESCENCE: c = vec3(material_iridescence(ext, uv0, uv1).x); break;
+    case VIEW_IRIDESCENCE_THICKNESS: c = vec3(clamp(material_iridescence(ext, uv0, uv1).z / 1000.0, 0.0, 1.0)); break;
     case VIEW_ANISOTROPY_DIRECTION: {
         vec4 a = material_anisotropy(ext, t, b, mapped_normal(m, x, t, b, n, uv0, uv1), uv0, uv1);
         c = ext.anisotropy == NO_EXTENSION ? vec3(0.0) : encode_vector(a.w > 0.0 || dot(a.xyz, a.xyz) > 0.0 ? a.xyz : t);
@@ -173,6 +178,8 @@ void main() {
                 s = metal_rough_surface(base.rgb, mr.x, mr.y, f0, f90, shading_n, v);
                 // KHR_materials_anisotropy (strength 0, isotropic, without it).
                 s.anisotropy = material_anisotropy(ext, t, b, shading_n, uv0, uv1);
+                // KHR_materials_iridescence (factor 0, Schlick alone, without it).
+                s.iridescence = surface_iridescence(ext, uv0, uv1, s.f0, dot(shading_n, v));
                 transmission = material_transmission(ext, uv0, uv1);
                 diffuse_transmission = material_diffuse_transmission(ext, uv0, uv1);
                 if (TRANSMISSION_BACKGROUND && transmission > 0.0) discard;

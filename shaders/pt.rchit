@@ -19,6 +19,7 @@
 #include "clearcoat.glsl"
 #include "sheen.glsl"
 #include "anisotropy.glsl"
+#include "iridescence.glsl"
 
 layout(location = 0) rayPayloadInEXT PathPayload payload;
 hitAttributeEXT vec2 bary;
@@ -67,6 +68,7 @@ void main() {
             dielectric_fresnel(ext, h.uv0, h.uv1, f0, f90);
             s = metal_rough_surface(base.rgb, mr.x, mr.y, f0, f90, sn, v);
             s.anisotropy = material_anisotropy(ext, t, b, sn, h.uv0, h.uv1);
+            s.iridescence = surface_iridescence(ext, h.uv0, h.uv1, s.f0, dot(sn, v));
             const float transmission = material_transmission(ext, h.uv0, h.uv1);
             // The base colour tints the light once, where it enters a volume (or at a
             // thin wall); leaving, the lobe is untinted.
@@ -95,6 +97,7 @@ void main() {
     payload.f0 = s.f0;
     payload.f90 = s.f90;
     payload.anisotropy = s.anisotropy;
+    payload.iridescence = s.iridescence;
     // Emission under the sheen and the coat, as the rasterizer layers it (light sampling
     // reads it through a ray too; only its choice of triangle uses the bare emission).
     payload.emission = clearcoat_over(cc, v, sheen_over(sh, sn, v, emission(m, x, h.uv0, h.uv1), vec3(0.0)), vec3(0.0));

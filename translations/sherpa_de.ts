@@ -241,6 +241,14 @@
         <source>Anisotropy direction</source>
         <translation>Anisotropie-Richtung</translation>
     </message>
+    <message>
+        <source>Iridescence</source>
+        <translation>Irisieren</translation>
+    </message>
+    <message>
+        <source>Iridescence thickness</source>
+        <translation>Irisieren-Schichtdicke</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>

@@ -241,6 +241,14 @@
         <source>Anisotropy direction</source>
         <translation>Anisotropy direction</translation>
     </message>
+    <message>
+        <source>Iridescence</source>
+        <translation>Iridescence</translation>
+    </message>
+    <message>
+        <source>Iridescence thickness</source>
+        <translation>Iridescence thickness</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>

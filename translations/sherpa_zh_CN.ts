@@ -241,6 +241,14 @@
         <source>Anisotropy direction</source>
         <translation>各向异性方向</translation>
     </message>
+    <message>
+        <source>Iridescence</source>
+        <translation>虹彩</translation>
+    </message>
+    <message>
+        <source>Iridescence thickness</source>
+        <translation>虹彩膜厚</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::AccelerationDock</name>

@@ -1,6 +1,6 @@
 // The material dock's rows of the extensions that shape the base's microfacets
-// (KHR_materials_anisotropy): each field of the material's block with its byte offset
-// in the extension buffer, values from the CPU record.
+// (KHR_materials_anisotropy, KHR_materials_iridescence): each field of the material's block with
+// its byte offset in the extension buffer, values from the CPU record.
 #include "material_fields_model.h"
 
 #include <cmath>
@@ -37,6 +37,22 @@ void MaterialFieldsModel::appendMicrofacetRows(const gpu::MaterialExtensionPlace
         add(place.anisotropy, offsetof(gpu::GPUAnisotropyBlock, texture), "ext.anisotropy.texture",
             "KHR_materials_anisotropy.anisotropyTexture", "uint",
             a->texture.present() ? chain(a->texture.texture) : tr("default texture"), &a->texture);
+    }
+    if (const auto& i = m.iridescence; i && place.iridescence != gpu::kNoExtension) {
+        add(place.iridescence, offsetof(gpu::GPUIridescenceBlock, factors),
+            "ext.iridescence.factors",
+            "KHR_materials_iridescence.iridescenceFactor, iridescenceIor, "
+            "iridescenceThicknessMinimum, iridescenceThicknessMaximum",
+            "vec4",
+            Format::vec(glm::vec4(i->factor, i->ior, i->thickness_minimum, i->thickness_maximum)));
+        add(place.iridescence, offsetof(gpu::GPUIridescenceBlock, texture),
+            "ext.iridescence.texture", "KHR_materials_iridescence.iridescenceTexture", "uint",
+            i->texture.present() ? chain(i->texture.texture) : tr("default texture"), &i->texture);
+        add(place.iridescence, offsetof(gpu::GPUIridescenceBlock, thickness_tex),
+            "ext.iridescence.thickness_tex",
+            "KHR_materials_iridescence.iridescenceThicknessTexture", "uint",
+            i->thickness.present() ? chain(i->thickness.texture) : tr("default texture"),
+            &i->thickness);
     }
 }
 

@@ -76,7 +76,7 @@ private:
     // The transmission family's rows (material_fields_transmission.cpp).
     void appendTransmissionRows(const gpu::MaterialExtensionPlace& place,
                                 const MaterialInstance& m);
-    // KHR_materials_anisotropy's rows (material_fields_microfacet.cpp).
+    // KHR_materials_anisotropy's and _iridescence's rows (material_fields_microfacet.cpp).
     void appendMicrofacetRows(const gpu::MaterialExtensionPlace& place, const MaterialInstance& m);
     QVariant extensionData(const ExtensionRow& r, int column, int role) const;
     int specGlossRows() const { return specGloss() ? 3 : 0; }

@@ -230,6 +230,21 @@ void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
     QCOMPARE(display(fields, 16, MaterialFieldsModel::ValueColumn),
              Format::vec(glm::vec4(0.8f, std::cos(1.04719755f), std::sin(1.04719755f), 0.0f)));
     QCOMPARE(display(fields, 17, MaterialFieldsModel::OffsetColumn), QString::number(first + 64));
+
+    // KHR_materials_iridescence: index, its third word, factors, two textures (material
+    // 9 of the iridescence sweep, 700 nm: after nine 48-byte indices and 96-byte blocks).
+    const LoadOutcome film = SceneLoadJob::loadNow(
+        QStringLiteral(SHERPA_TEST_DATA_DIR "/material_sweeps/iridescence_sweep.gltf"));
+    QVERIFY2(film.session, qPrintable(film.error));
+    fields.setMaterial(film.session, 9, to_gpu_material(film.session->scene->materials.at(9)),
+                       MaterialFieldsModel::Source::Cpu);
+    QCOMPARE(fields.rowCount(), 14 + 5);
+    QCOMPARE(display(fields, 16, MaterialFieldsModel::FieldColumn),
+             QStringLiteral("ext.iridescence.factors"));
+    QCOMPARE(display(fields, 16, MaterialFieldsModel::OffsetColumn),
+             QString::number(9 * (48 + 96) + 48));
+    QCOMPARE(display(fields, 16, MaterialFieldsModel::ValueColumn),
+             Format::vec(glm::vec4(1.0f, 1.3f, 100.0f, 700.0f)));
 }
 
 QTEST_MAIN(DockContentTests)

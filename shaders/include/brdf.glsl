@@ -32,12 +32,15 @@ struct Surface {
     // KHR_materials_anisotropy: xyz the anisotropy direction (unit, in the tangent
     // plane), w the strength; w 0: isotropic GGX (every surface without the extension).
     vec4 anisotropy;
+    // KHR_materials_iridescence: rgb the thin film's Fresnel at n . v, a its factor; a 0:
+    // Schlick's Fresnel alone (every surface without the extension).
+    vec4 iridescence;
 };
 
 // glTF metallic-roughness: dielectric F0 0.04, metals reflect their base colour.
 Surface metal_rough_surface(vec3 albedo, float metallic, float roughness, vec3 n, vec3 v) {
     return Surface(albedo * (1.0 - metallic), mix(vec3(0.04), albedo, metallic), 1.0, roughness, n, v,
-                   vec4(0.0));
+                   vec4(0.0), vec4(0.0));
 }
 
 // F0 of a dielectric of index of refraction `ior` against air (KHR_materials_ior):
@@ -57,14 +60,14 @@ vec3 dielectric_f0(float ior, float specular, vec3 specular_color) {
 // KHR_materials_specular): metals still reflect their base colour with F90 = 1.
 Surface metal_rough_surface(vec3 albedo, float metallic, float roughness, vec3 f0, float f90, vec3 n, vec3 v) {
     return Surface(albedo * (1.0 - metallic), mix(f0, albedo, metallic), mix(f90, 1.0, metallic), roughness, n, v,
-                   vec4(0.0));
+                   vec4(0.0), vec4(0.0));
 }
 
 // KHR_materials_pbrSpecularGlossiness, by its definition: F0 = specular, roughness =
 // 1 - glossiness, and the diffuse reflectance diffuse * (1 - max(specular)).
 Surface spec_gloss_surface(vec3 diffuse, vec3 specular, float glossiness, vec3 n, vec3 v) {
     float max_specular = max(max(specular.r, specular.g), specular.b);
-    return Surface(diffuse * (1.0 - max_specular), specular, 1.0, 1.0 - glossiness, n, v, vec4(0.0));
+    return Surface(diffuse * (1.0 - max_specular), specular, 1.0, 1.0 - glossiness, n, v, vec4(0.0), vec4(0.0));
 }
 
 // x^5 as products: a CPU rasterizer evaluates pow() as exp2(5 * log2(x)), two
@@ -149,12 +152,23 @@ vec3 brdf_times_cos(Surface s, vec3 l) {
     float n_dot_h = clamp(dot(s.n, h), 0.0, 1.0);
     float v_dot_h = clamp(dot(s.v, h), 0.0, 1.0);
     vec3 f = fresnel_schlick(s.f0, s.f90, v_dot_h);
+    // KHR_materials_iridescence: the film's Fresnel in proportion to its factor.
+    if (s.iridescence.a > 0.0) f = mix(f, s.iridescence.rgb, s.iridescence.a);
     // (1 - F) per channel, as the specular-glossiness extension defines it; for
     // KHR_materials_specular's coloured F0 its spec weights by 1 - max(F) instead
     // (docs/materials.md).
     vec3 diffuse = (1.0 - f) * s.diffuse / PI;
     vec3 specular = f * ggx_dv(s, l, h, n_dot_l, n_dot_v, n_dot_h);
     return (diffuse + specular) * n_dot_l;
+}
+
+// KHR_materials_iridescence in the split-sum: the F0 whose Schlick Fresnel at n . v is
+// the film's Fresnel there (three.js's Schlick_to_F0), mixed in by the factor.
+vec3 iridescent_f0(Surface s, float n_dot_v) {
+    if (s.iridescence.a <= 0.0) return s.f0;
+    float x5 = min(pow5(clamp(1.0 - n_dot_v, 0.0, 1.0)), 0.9999);
+    vec3 f0 = clamp((s.iridescence.rgb - x5) / (1.0 - x5), 0.0, 1.0);
+    return mix(s.f0, f0, s.iridescence.a);
 }
 
 // The direction the environment's specular is read along: the reflection about n, or,
@@ -181,6 +195,7 @@ vec3 hemisphere(vec3 dir, vec3 radiance) {
 vec3 ambient_light(Surface s, vec3 radiance) {
     float n_dot_v = clamp(abs(dot(s.n, s.v)), 1e-4, 1.0);
     vec3 f = s.f0 + (max(vec3((1.0 - s.roughness) * s.f90), s.f0) - s.f0) * pow5(1.0 - n_dot_v);
+    if (s.iridescence.a > 0.0) f = mix(f, s.iridescence.rgb, s.iridescence.a);
     vec3 diffuse = (1.0 - f) * s.diffuse * hemisphere(s.n, radiance);
     vec3 r = specular_direction(s);
     // Rough surfaces see a blurrier sky: blend the reflected towards the normal's.

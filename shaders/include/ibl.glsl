@@ -70,7 +70,9 @@ vec3 environment_light(Surface s) {
     float n_dot_v = clamp(dot(s.n, s.v), 1e-4, 1.0);
     float roughness = clamp(s.roughness, 0.0, 1.0);
     vec3 lut = ibl_brdf_lut(n_dot_v, roughness);
-    vec3 fss_ess = s.f0 * lut.r + s.f90 * lut.g; // single-scattering specular albedo
+    // KHR_materials_iridescence: the film's equivalent F0 (s.f0 without it).
+    vec3 f0 = iridescent_f0(s, n_dot_v);
+    vec3 fss_ess = f0 * lut.r + s.f90 * lut.g; // single-scattering specular albedo
     vec3 radiance = ibl_specular(specular_direction(s), roughness);
     vec3 irradiance = ibl_irradiance(s.n);
     vec3 multi = vec3(0.0);
@@ -79,7 +81,7 @@ vec3 environment_light(Surface s) {
         // average Fresnel over its bounces, lit by the irradiance.
         float ess = lut.r + lut.g;
         float ems = 1.0 - ess;
-        vec3 f_avg = s.f0 + (1.0 - s.f0) * 0.047619; // 1/21
+        vec3 f_avg = f0 + (1.0 - f0) * 0.047619; // 1/21
         vec3 fms = fss_ess * f_avg / (1.0 - ems * f_avg);
         multi = fms * ems;
     }

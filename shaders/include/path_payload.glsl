@@ -38,5 +38,6 @@ struct PathPayload {
     vec3 sheen_color; // KHR_materials_sheen (sheen.glsl's Sheen); black: no sheen
     float sheen_roughness;
     vec4 anisotropy; // KHR_materials_anisotropy: Surface::anisotropy (w 0: isotropic)
+    vec4 iridescence; // KHR_materials_iridescence: Surface::iridescence (a 0: none)
 };
 #endif

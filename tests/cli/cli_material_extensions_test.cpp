@@ -73,6 +73,8 @@ TEST(CliMaterialExtensions, OnlyMaterialsThatUseThemPay) {
     EXPECT_EQ(extension_bytes(sweep("sheen_sweep"), "sheen"), 1440u);
     // Ten with KHR_materials_anisotropy only: an index and a 64-byte block each.
     EXPECT_EQ(extension_bytes(sweep("anisotropy_sweep"), "anisotropy"), 1120u);
+    // Ten with KHR_materials_iridescence only: an index and a 96-byte block each.
+    EXPECT_EQ(extension_bytes(sweep("iridescence_sweep"), "iridescence"), 1440u);
 }
 
 TEST(CliMaterialExtensions, IorViewShowsEachSpheresIor) {
@@ -277,34 +279,39 @@ double anisotropic_albedo_at_normal(double alpha_t, double alpha_b, double f0) {
 // front: alpha_t 1, alpha_b 0.09) reflects there the albedo the integral above gives.
 // The rasterizer's split-sum table is isotropic (by the roughness): it keeps the
 // isotropic albedo, by design (docs/materials.md).
-TEST(CliMaterialExtensions, PathTracedAnisotropyReflectsItsAlbedoInAFurnace) {
-    // A 1x1 Radiance HDR of radiance 1: (128, 128, 128, exponent 129).
-    const std::string hdr = temp_path("furnace.hdr");
+// The linear radiance (per channel) at the front of a one-sphere sweep file, 48x36 seen
+// from 1.5 in front, in a uniform environment of radiance 1 (a 1x1 Radiance HDR),
+// tone curve linear: the mean of 5x5 pixels about the centre (n . v above 0.97).
+glm::dvec3 furnace_front(const std::string& model, const std::string& renderer) {
+    const std::string hdr = temp_path("furnace.hdr"), png = temp_path("furnace.png");
     {
         std::ofstream out(hdr, std::ios::binary);
         out << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 1\n";
-        out.write("\x80\x80\x80\x81", 4);
+        out.write("\x80\x80\x80\x81", 4); // (128, 128, 128, exponent 129): 1
     }
-    const std::string png = temp_path("furnace.png");
-    const CliRun r = run_cli("render '" + sweep("anisotropy_textures") + "' -o " + png +
-                             " --width 48 --height 36 --view lit --renderer rt --spp 256"
-                             " --camera eye=0,0,1.5:target=0,0,0:fov=45 --environment '" +
-                             hdr +
-                             "' --sun off --tone-map linear --exposure 0 --validation "
-                             "--no-cache");
-    ASSERT_EQ(r.exit_code, 0) << r.out;
+    const CliRun r =
+        run_cli("render '" + model + "' -o " + png + " --width 48 --height 36" + " --view lit" +
+                renderer + " --camera eye=0,0,1.5:target=0,0,0:fov=45 --environment '" + hdr +
+                "' --sun off --tone-map linear --exposure 0 --validation --no-cache");
+    EXPECT_EQ(r.exit_code, 0) << r.out;
     const Png p = read_png(png);
     std::filesystem::remove(png);
     std::filesystem::remove(hdr);
-    double sum = 0.0;
-    // 5x5 pixels about the centre (n . v above 0.97), 6400 paths: the estimate's noise
-    // (half the paths leave below the horizon) is about 0.006.
+    glm::dvec3 sum(0.0);
+    if (p.rgba.empty()) return sum;
     for (int y = -2; y <= 2; ++y)
-        for (int x = -2; x <= 2; ++x) {
-            const double c = p.at(24 + x, 18 + y)[0] / 255.0; // sRGB-encoded
-            sum += c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-        }
-    const double traced = sum / 25.0;
+        for (int x = -2; x <= 2; ++x)
+            for (int ch = 0; ch < 3; ++ch) {
+                const double c = p.at(24 + x, 18 + y)[ch] / 255.0; // sRGB-encoded
+                sum[ch] += c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+            }
+    return sum / 25.0;
+}
+
+TEST(CliMaterialExtensions, PathTracedAnisotropyReflectsItsAlbedoInAFurnace) {
+    // 25 pixels, 6400 paths: the estimate's noise (half the paths leave below the
+    // horizon) is about 0.006.
+    const double traced = furnace_front(sweep("anisotropy_textures"), " --renderer rt --spp 256").r;
     const double f0 = 0.9; // the metal's base colour
     const double albedo = anisotropic_albedo_at_normal(1.0, 0.09, f0);
     const double isotropic = anisotropic_albedo_at_normal(0.09, 0.09, f0);
@@ -312,6 +319,21 @@ TEST(CliMaterialExtensions, PathTracedAnisotropyReflectsItsAlbedoInAFurnace) {
                 albedo, isotropic);
     EXPECT_NEAR(traced, albedo, 0.02);
     EXPECT_LT(albedo, isotropic - 0.02); // the stretched lobe loses energy: measurable here
+}
+
+// The film's Fresnel is one function for both renderers: in a uniform environment, the
+// front of iridescence_textures.gltf (factor 1, 400 nm on a black dielectric, roughness
+// 0.2) reflects the same coloured light rasterized (the split-sum with the film's F0)
+// and path traced (the film's Fresnel at n . v in the BRDF), per channel.
+TEST(CliMaterialExtensions, IridescenceRasterAndPathTracerAgreeInAFurnace) {
+    const glm::dvec3 raster = furnace_front(sweep("iridescence_textures"), "");
+    const glm::dvec3 traced =
+        furnace_front(sweep("iridescence_textures"), " --renderer rt --spp 64");
+    std::printf("iridescence furnace: raster %.4f %.4f %.4f, path traced %.4f %.4f %.4f\n",
+                raster.r, raster.g, raster.b, traced.r, traced.g, traced.b);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(raster[c], traced[c], 0.004) << c;
+    // Coloured: the film at 400 nm reflects green and blue over red (a grey F0 would not).
+    EXPECT_GT(raster.g, raster.r + 0.02);
 }
 
 // anisotropy_textures.gltf: anisotropyTexture reads a 2x1 image (left: direction +y,
@@ -324,6 +346,40 @@ TEST(CliMaterialExtensions, AnisotropyTextureIsSampledThroughItsTransform) {
     const std::array<int, 3> d = front_pixel(sweep("anisotropy_textures"), "anisotropy-direction");
     EXPECT_NEAR(d[0], 128, 4);
     EXPECT_NEAR(d[1], 255, 4);
+}
+
+// iridescence_sweep.gltf: the factor view shows row 1's factor 0 .. 1 and row 2's full
+// films; the thickness view 0.4 um (the default 400 nm) along row 1 and 0.1 .. 0.7 um
+// along row 2.
+TEST(CliMaterialExtensions, IridescenceViewsShowFactorAndThickness) {
+    const std::string factor = temp_path("ir.png"), thickness = temp_path("irt.png");
+    for (const auto& [view, png] :
+         {std::pair{"iridescence", factor}, {"iridescence-thickness", thickness}}) {
+        const CliRun r = run_cli("render '" + sweep("iridescence_sweep") + "' -o " + png +
+                                 " --width 160 --height 120 --view " + view + kSweepCamera +
+                                 " --validation --no-cache");
+        ASSERT_EQ(r.exit_code, 0) << r.out;
+    }
+    const Png f = read_png(factor), t = read_png(thickness);
+    const double steps[] = {0.0, 0.25, 0.5, 0.75, 1.0};
+    const double nm[] = {100.0, 250.0, 400.0, 550.0, 700.0};
+    for (int i = 0; i < 5; ++i) {
+        EXPECT_NEAR(sphere_centre(f, 0, i)[0], steps[i] * 255.0, 1.0) << i;
+        EXPECT_NEAR(sphere_centre(f, 1, i)[0], 255.0, 1.0) << i;
+        EXPECT_NEAR(sphere_centre(t, 0, i)[0], 0.4 * 255.0, 1.0) << i;
+        EXPECT_NEAR(sphere_centre(t, 1, i)[0], nm[i] / 1000.0 * 255.0, 1.0) << i;
+    }
+    std::filesystem::remove(factor);
+    std::filesystem::remove(thickness);
+}
+
+// iridescence_textures.gltf: iridescenceTexture (R) and iridescenceThicknessTexture (G)
+// read a 2x1 image (left R 1 G 0.5, right R 0 G 1) through KHR_texture_transform offset
+// (0.5, 0): the front reads factor 1 and mix(200, 600, 0.5) = 400 nm (factor 0 and
+// 600 nm untransformed).
+TEST(CliMaterialExtensions, IridescenceTexturesAreSampledThroughTheirTransform) {
+    EXPECT_NEAR(front_pixel(sweep("iridescence_textures"), "iridescence")[0], 255, 2);
+    EXPECT_NEAR(front_pixel(sweep("iridescence_textures"), "iridescence-thickness")[0], 102, 2);
 }
 
 TEST(CliMaterialExtensions, BadValuesAreWarnedOnStderrAndTheFileStillRenders) {
@@ -342,6 +398,9 @@ TEST(CliMaterialExtensions, BadValuesAreWarnedOnStderrAndTheFileStillRenders) {
               std::string::npos)
         << r.out;
     EXPECT_NE(r.out.find("anisotropyRotation: not a finite number; the default 0 is used"),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("iridescenceIor: 0.5 is below 1; the default 1.3 is used"),
               std::string::npos)
         << r.out;
     // The missing image, named with the slot that reads it.

@@ -127,6 +127,12 @@ const OracleCase kCases[] = {
      "neutral", 0.0f, 16.0, 0.11, 0.145, 1u, 0b01, 0.03},
     // Under the city's even sky the stretch hardly changes a sphere's mean or contrast
     // (three.js's row 1 spreads 0.004): both rows are compared sphere by sphere.
+    // Iridescence on a black smooth dielectric: the film colours the reflection. Neither
+    // row is monotonic in its mean (the colours cycle with the thickness; the factor
+    // mixes toward them): both are compared sphere by sphere, per channel, tightly
+    // enough that a film of another thickness (or none) fails.
+    {"iridescence_sweep_studio_neutral", "sweep:iridescence_sweep", "studio.exr", kSweepCamera,
+     "neutral", 0.0f, 22.0, 0.03, 0.012, 0u},
     {"anisotropy_sweep_city_aces", "sweep:anisotropy_sweep", "city.exr", kSweepCamera, "aces", 0.0f,
      25.5, 0.04, 0.045, 0u},
 };

@@ -1,4 +1,5 @@
-// Material extensions (KHR_materials_ior, _specular, _clearcoat, _sheen, _anisotropy): what the
+// Material extensions (KHR_materials_ior, _specular, _clearcoat, _sheen, _anisotropy,
+// _iridescence): what the
 // importer reads and warns about (bad values name their JSON pointer and fall back as
 // docs/materials.md says), and the extension buffer's layout: only materials that use
 // an extension get a block, a scene without any gets no bytes.
@@ -104,16 +105,18 @@ TEST(MaterialExtensions, OnlyMaterialsThatUseAnExtensionHaveBlocks) {
         const MaterialInstance& m = r.scene->materials[i];
         const gpu::MaterialExtensionPlace& p = b.places[i];
         EXPECT_EQ(p.any(), m.ior.has_value() || m.specular.has_value() || m.clearcoat.has_value() ||
-                               m.sheen.has_value() || m.anisotropy.has_value())
+                               m.sheen.has_value() || m.anisotropy.has_value() ||
+                               m.iridescence.has_value())
             << i;
         EXPECT_EQ(p.anisotropy != gpu::kNoExtension, m.anisotropy.has_value()) << i;
+        EXPECT_EQ(p.iridescence != gpu::kNoExtension, m.iridescence.has_value()) << i;
         EXPECT_EQ(p.sheen != gpu::kNoExtension, m.sheen.has_value()) << i;
         EXPECT_EQ(p.ior != gpu::kNoExtension, m.ior.has_value()) << i;
         EXPECT_EQ(p.specular != gpu::kNoExtension, m.specular.has_value()) << i;
         EXPECT_EQ(p.clearcoat != gpu::kNoExtension, m.clearcoat.has_value()) << i;
         if (!p.any()) continue;
         words += 3 + (m.ior ? 1 : 0) + (m.specular ? 6 : 0) + (m.clearcoat ? 8 : 0) +
-                 (m.sheen ? 6 : 0) + (m.anisotropy ? 4 : 0);
+                 (m.sheen ? 6 : 0) + (m.anisotropy ? 4 : 0) + (m.iridescence ? 6 : 0);
         gpu::GPUExtensionIndex index;
         std::memcpy(&index, &b.words[p.index], sizeof index);
         EXPECT_EQ(index.ior, p.ior);
@@ -121,7 +124,7 @@ TEST(MaterialExtensions, OnlyMaterialsThatUseAnExtensionHaveBlocks) {
         EXPECT_EQ(index.clearcoat, p.clearcoat);
         EXPECT_EQ(index.sheen, p.sheen);
         EXPECT_EQ(index.anisotropy, p.anisotropy);
-        EXPECT_EQ(index.iridescence, gpu::kNoExtension);
+        EXPECT_EQ(index.iridescence, p.iridescence);
         if (m.ior) {
             gpu::GPUIorBlock ior;
             std::memcpy(&ior, &b.words[p.ior], sizeof ior);
@@ -319,6 +322,55 @@ TEST(MaterialExtensions, BadAnisotropyValuesAreWarnedAndFallBack) {
     EXPECT_FLOAT_EQ(a.strength, 0.0f);
     EXPECT_FLOAT_EQ(a.rotation, 0.0f);
     EXPECT_EQ(a.texture.texture, 0);
+}
+
+TEST(MaterialExtensions, IridescenceIsReadAndPacked) {
+    EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_iridescence"));
+    const LoadResult r = load_data("material_sweeps/iridescence_textures.gltf");
+    ASSERT_TRUE(r) << r.error;
+    for (const std::string& w : r.scene->warnings)
+        EXPECT_EQ(w.find("not implemented"), std::string::npos) << w;
+    const MaterialInstance& m = r.scene->materials.at(0);
+    ASSERT_TRUE(m.iridescence.has_value());
+    EXPECT_FLOAT_EQ(m.iridescence->factor, 1.0f);
+    EXPECT_FLOAT_EQ(m.iridescence->ior, 1.3f); // the default
+    EXPECT_FLOAT_EQ(m.iridescence->thickness_minimum, 200.0f);
+    EXPECT_FLOAT_EQ(m.iridescence->thickness_maximum, 600.0f);
+    EXPECT_TRUE(m.iridescence->thickness.transform.present);
+    EXPECT_FALSE(needs_tangents(m));
+    ASSERT_EQ(extension_texture_slots(m).size(), 2u);
+    const gpu::MaterialExtensionBuffer b = layout(*r.scene);
+    EXPECT_EQ(b.bytes(), 48u + 96u);
+    gpu::GPUIridescenceBlock i;
+    std::memcpy(&i, &b.words[b.places[0].iridescence], sizeof i);
+    EXPECT_EQ(i.factors, glm::vec4(1.0f, 1.3f, 200.0f, 600.0f));
+    EXPECT_EQ(i.texture, 100u);
+    EXPECT_EQ(i.thickness_tex, 100u);
+    EXPECT_FLOAT_EQ(i.thickness_uv.row0.z, 0.5f);
+}
+
+TEST(MaterialExtensions, BadIridescenceValuesAreWarnedAndFallBack) {
+    const LoadResult r = load_data("material_extensions_bad.gltf");
+    ASSERT_TRUE(r) << r.error;
+    const Scene& s = *r.scene;
+    const std::string i14 = "/materials/14/extensions/KHR_materials_iridescence/";
+    const std::string i15 = "/materials/15/extensions/KHR_materials_iridescence/";
+    // 1.5 clamps to 1; an ior below 1 takes the default 1.3; -10 nm clamps to 0.
+    EXPECT_NE(message_at(s, i14 + "iridescenceFactor"), nullptr);
+    EXPECT_NE(message_at(s, i14 + "iridescenceIor"), nullptr);
+    EXPECT_NE(message_at(s, i14 + "iridescenceThicknessMinimum"), nullptr);
+    const MaterialIridescence& a = *material(s, "bad iridescence").iridescence;
+    EXPECT_FLOAT_EQ(a.factor, 1.0f);
+    EXPECT_FLOAT_EQ(a.ior, 1.3f);
+    EXPECT_FLOAT_EQ(a.thickness_minimum, 0.0f);
+    // A string factor: 0; 1e39 (infinite as a float) ior and maximum: their defaults.
+    EXPECT_NE(message_at(s, i15 + "iridescenceFactor"), nullptr);
+    EXPECT_NE(message_at(s, i15 + "iridescenceIor"), nullptr);
+    EXPECT_NE(message_at(s, i15 + "iridescenceThicknessMaximum"), nullptr);
+    const MaterialIridescence& b = *material(s, "iridescence not finite").iridescence;
+    EXPECT_FLOAT_EQ(b.factor, 0.0f);
+    EXPECT_FLOAT_EQ(b.ior, 1.3f);
+    EXPECT_FLOAT_EQ(b.thickness_maximum, 400.0f);
 }
 
 } // namespace

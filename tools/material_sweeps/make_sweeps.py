@@ -450,6 +450,51 @@ def anisotropy_textures():
     return doc
 
 
+# The iridescent spheres' base: a black, fairly smooth dielectric, so the film's
+# coloured reflection of the environment is what they show.
+IRIDESCENT_ROUGHNESS = 0.2
+
+
+def iridescence_sweep():
+    """Row 1: iridescenceFactor 0 .. 1 on the default film (ior 1.3, 400 nm without a
+    thickness texture); row 2: a full film of thickness 100 .. 700 nm
+    (iridescenceThicknessMaximum)."""
+    steps = [0.0, 0.25, 0.5, 0.75, 1.0]
+    thicknesses = [100, 250, 400, 550, 700]
+    row1 = [(f'iridescence {f}', {'pbrMetallicRoughness': pbr(BLACK, IRIDESCENT_ROUGHNESS),
+                                  'extensions': {'KHR_materials_iridescence': {
+                                      'iridescenceFactor': f}}})
+            for f in steps]
+    row2 = [(f'iridescence thickness {t}',
+             {'pbrMetallicRoughness': pbr(BLACK, IRIDESCENT_ROUGHNESS),
+              'extensions': {'KHR_materials_iridescence': {
+                  'iridescenceFactor': 1.0, 'iridescenceThicknessMaximum': t}}})
+            for t in thicknesses]
+    return document('KHR_materials_iridescence sweep', [row1, row2],
+                    ['KHR_materials_iridescence'])
+
+
+def iridescence_textures():
+    """One sphere: iridescenceTexture (R) and iridescenceThicknessTexture (G) read a 2x1
+    image (left R 1 G 0.5; right R 0 G 1) through KHR_texture_transform offset 0.5 in u
+    (the front reads the left texel: factor 1, thickness mix(200, 600, 0.5) = 400 nm)."""
+    image = png_rgba(2, 1, lambda x, y: (255, 128, 0, 255) if x == 0 else (0, 255, 0, 255))
+    transform = {'KHR_texture_transform': {'offset': [0.5, 0.0]}}
+    row = [('textured iridescence', {
+        'pbrMetallicRoughness': pbr(BLACK, IRIDESCENT_ROUGHNESS),
+        'extensions': {'KHR_materials_iridescence': {
+            'iridescenceFactor': 1.0, 'iridescenceThicknessMinimum': 200,
+            'iridescenceThicknessMaximum': 600,
+            'iridescenceTexture': {'index': 0, 'extensions': transform},
+            'iridescenceThicknessTexture': {'index': 0, 'extensions': transform}}}})]
+    doc = document('KHR_materials_iridescence textures', [row],
+                   ['KHR_materials_iridescence', 'KHR_texture_transform'])
+    doc['images'] = [{'uri': 'data:image/png;base64,' + base64.b64encode(image).decode()}]
+    doc['samplers'] = [{'magFilter': 9728, 'minFilter': 9728, 'wrapS': 10497, 'wrapT': 10497}]
+    doc['textures'] = [{'source': 0, 'sampler': 0}]
+    return doc
+
+
 def variants_bad():
     """The variants file with broken mappings: a material index past the end, a variant
     index past the end, a variant mapped twice, and a mapping without variants."""
@@ -473,6 +518,8 @@ def main():
                       ('sheen_sweep', sheen_sweep()), ('sheen_textures', sheen_textures()),
                       ('anisotropy_sweep', anisotropy_sweep()),
                       ('anisotropy_textures', anisotropy_textures()),
+                      ('iridescence_sweep', iridescence_sweep()),
+                      ('iridescence_textures', iridescence_textures()),
                       ('variants', variants()), ('variants_bad', variants_bad())):
         with open(f'{out}/{name}.gltf', 'w') as f:
             json.dump(doc, f, indent=1)

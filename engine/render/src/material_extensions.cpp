@@ -73,7 +73,7 @@ MaterialExtensionBuffer build_material_extensions(std::span<const MaterialInstan
         const bool sheen = m.sheen.has_value();
         const bool transmission = m.transmission.has_value();
         if (!ior && !specular && !clearcoat && !sheen && !transmission && !m.volume &&
-            !m.diffuse_transmission && !m.dispersion && !m.anisotropy)
+            !m.diffuse_transmission && !m.dispersion && !m.anisotropy && !m.iridescence)
             continue;
         MaterialExtensionPlace& place = out.places[i];
         GPUExtensionIndex index{};
@@ -118,6 +118,16 @@ MaterialExtensionBuffer build_material_extensions(std::span<const MaterialInstan
             b.texture = texture_slot(a->texture, kRoleLinear);
             b.uv = texture_transform(a->texture);
             place.anisotropy = append(out.words, b);
+        }
+        if (const auto& ir = m.iridescence) {
+            GPUIridescenceBlock b{};
+            b.factors =
+                glm::vec4(ir->factor, ir->ior, ir->thickness_minimum, ir->thickness_maximum);
+            b.texture = texture_slot(ir->texture, kRoleLinear);
+            b.thickness_tex = texture_slot(ir->thickness, kRoleLinear);
+            b.uv = texture_transform(ir->texture);
+            b.thickness_uv = texture_transform(ir->thickness);
+            place.iridescence = append(out.words, b);
         }
         if (transmission && m.transmission->factor > 0.0f) ++out.transmissive_materials;
         index = GPUExtensionIndex{place.ior,

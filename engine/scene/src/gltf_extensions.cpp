@@ -10,7 +10,7 @@ namespace sherpa {
 namespace {
 
 // The one table: flipping an extension to supported is one line here.
-constexpr std::array<std::string_view, 24> kSupported{
+constexpr std::array<std::string_view, 25> kSupported{
     "EXT_mesh_gpu_instancing",    // one engine instance per row (gltf_instancing.cpp)
     "EXT_meshopt_compression",    // through Debian's meshoptimizer
     "EXT_texture_webp",           // through OpenImageIO
@@ -21,6 +21,7 @@ constexpr std::array<std::string_view, 24> kSupported{
     "KHR_materials_anisotropy", // anisotropic GGX (shaders/include/anisotropy.glsl)
     "KHR_materials_clearcoat",  // a coat over the material (shaders/include/clearcoat.glsl)
     "KHR_materials_emissive_strength",
+    "KHR_materials_iridescence",          // thin-film Fresnel (shaders/include/iridescence.glsl)
     "KHR_materials_ior",                  // F0 from the ior (brdf.glsl's dielectric_f0)
     "KHR_materials_specular",             // F0 colour and F90 weight (brdf.glsl)
     "KHR_materials_transmission",         // refraction (TransmissionPass; the path tracer's BTDF)

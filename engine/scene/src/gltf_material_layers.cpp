@@ -109,4 +109,35 @@ MaterialAnisotropy read_anisotropy(ImportContext& ctx, const tinygltf::Value& e,
     return a;
 }
 
+// The film's thickness bounds, in nanometres: any non-negative value up to 10^6 nm
+// (a millimetre; far beyond visible interference, where the film's colours average
+// out).
+constexpr double kMaxFilmThickness = 1.0e6;
+
+MaterialIridescence read_iridescence(ImportContext& ctx, const tinygltf::Value& e,
+                                     const std::string& where) {
+    const std::string w = where + ".extensions.KHR_materials_iridescence";
+    MaterialIridescence i;
+    i.factor = ranged(ctx, e, "iridescenceFactor", 0.0, 0.0, 1.0, w);
+    // The film's index: at least 1 (the schema's minimum); below it, or not a number,
+    // the default 1.3.
+    const double ior = number(e, "iridescenceIor", 1.3);
+    if (!std::isfinite(static_cast<float>(ior)) || ior < 1.0) {
+        ctx.warn(w + ".iridescenceIor: " +
+                 (std::isfinite(static_cast<float>(ior)) ? number_text(ior) + " is below 1"
+                                                         : std::string("not a finite number")) +
+                 "; the default 1.3 is used");
+        i.ior = 1.3f;
+    } else {
+        i.ior = static_cast<float>(ior);
+    }
+    i.thickness_minimum =
+        ranged(ctx, e, "iridescenceThicknessMinimum", 100.0, 0.0, kMaxFilmThickness, w);
+    i.thickness_maximum =
+        ranged(ctx, e, "iridescenceThicknessMaximum", 400.0, 0.0, kMaxFilmThickness, w);
+    i.texture = slot(ctx, e, "iridescenceTexture", w, kRoleLinear);
+    i.thickness = slot(ctx, e, "iridescenceThicknessTexture", w, kRoleLinear);
+    return i;
+}
+
 } // namespace sherpa::detail

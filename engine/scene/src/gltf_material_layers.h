@@ -17,4 +17,7 @@ MaterialSheen read_sheen(ImportContext& ctx, const tinygltf::Value& e, const std
 MaterialAnisotropy read_anisotropy(ImportContext& ctx, const tinygltf::Value& e,
                                    const std::string& where);
 
+MaterialIridescence read_iridescence(ImportContext& ctx, const tinygltf::Value& e,
+                                     const std::string& where);
+
 } // namespace sherpa::detail

@@ -421,6 +421,9 @@ void import_material(ImportContext& ctx, std::size_t i) {
         if (const auto it = src.extensions.find("KHR_materials_anisotropy");
             it != src.extensions.end())
             m.anisotropy = read_anisotropy(ctx, it->second, where);
+        if (const auto it = src.extensions.find("KHR_materials_iridescence");
+            it != src.extensions.end())
+            m.iridescence = read_iridescence(ctx, it->second, where);
         ctx.scene.materials.push_back(std::move(m));
     }
 }

@@ -39,6 +39,10 @@ std::vector<ExtensionTextureSlot> extension_texture_slots(const MaterialInstance
     }
     if (const auto& a = m.anisotropy)
         add(a->texture, kRoleLinear, "KHR_materials_anisotropy.anisotropyTexture");
+    if (const auto& i = m.iridescence) {
+        add(i->texture, kRoleLinear, "KHR_materials_iridescence.iridescenceTexture");
+        add(i->thickness, kRoleLinear, "KHR_materials_iridescence.iridescenceThicknessTexture");
+    }
     return out;
 }
 

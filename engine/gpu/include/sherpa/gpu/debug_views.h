@@ -78,6 +78,10 @@ enum class DebugView : std::uint32_t {
     // normal view; black without the extension).
     AnisotropyStrength = 34,
     AnisotropyDirection = 35,
+    // KHR_materials_iridescence: the factor (grey) and the film's thickness in
+    // micrometres (grey, clipped at 1); 0 without the extension.
+    IridescenceFactor = 36,
+    IridescenceThickness = 37,
 };
 
 // The metallic view's colour on specular-glossiness materials (no metallic value
@@ -155,7 +159,7 @@ struct OverlayEntry {
     const char* label;
 };
 
-inline constexpr std::array<DebugViewInfo, 36> kDebugViews{{
+inline constexpr std::array<DebugViewInfo, 38> kDebugViews{{
     {DebugView::Lit, "lit", 0, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Lit")},
     {DebugView::Normal, "normal", kNormalStream, SHERPA_TRANSLATE_NOOP("ViewCatalog", "Normals")},
     {DebugView::Tangent, "tangent", kTangentStream,
@@ -215,6 +219,10 @@ inline constexpr std::array<DebugViewInfo, 36> kDebugViews{{
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Anisotropy strength")},
     {DebugView::AnisotropyDirection, "anisotropy-direction", kNormalStream | kTangentStream,
      SHERPA_TRANSLATE_NOOP("ViewCatalog", "Anisotropy direction")},
+    {DebugView::IridescenceFactor, "iridescence", 0,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Iridescence")},
+    {DebugView::IridescenceThickness, "iridescence-thickness", 0,
+     SHERPA_TRANSLATE_NOOP("ViewCatalog", "Iridescence thickness")},
 }};
 
 inline constexpr std::array<OverlayEntry, 7> kOverlays{{

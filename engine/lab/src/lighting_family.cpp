@@ -190,10 +190,9 @@ LightingFamily::Frame LightingFamily::draw(gpu::Context& context, Raster& raster
 }
 
 void LightingFamily::reference(gpu::Context& context, const Scene& scene,
-                               const gpu::FrameRequest& view,
-                               const std::vector<std::int32_t>& ids, FamilyReport& report,
-                               const std::vector<LightingMethod>& plan, detail::Progress& progress,
-                               std::vector<std::uint8_t>& rgba) const {
+                               const gpu::FrameRequest& view, const std::vector<std::int32_t>& ids,
+                               FamilyReport& report, const std::vector<LightingMethod>& plan,
+                               detail::Progress& progress, std::vector<std::uint8_t>& rgba) const {
     gpu::RendererOptions ro;
     ro.ray_tracing = true;
     gpu::Renderer renderer(context, ro);

@@ -24,7 +24,7 @@ struct PathTracedFrame {
     VkBuffer materials = VK_NULL_HANDLE, material_extras = VK_NULL_HANDLE;
     VkBuffer material_extensions = VK_NULL_HANDLE; // none where no material uses one
     VkBuffer frame_data = VK_NULL_HANDLE; // GPUFrameData: lights, sun, environment, display
-    VkDescriptorImageInfo environment{}; // the specular cube; no view: no environment
+    VkDescriptorImageInfo environment{};  // the specular cube; no view: no environment
     std::uint32_t width = 0, height = 0;
     std::uint32_t first_sample = 0, samples = 0; // first_sample 0: the sums start over
     GPUPathPushConstants push{};                 // first_sample, samples, env_size: set here

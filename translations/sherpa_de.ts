@@ -1526,50 +1526,6 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <source>→ %1</source>
         <translation>→ %1</translation>
     </message>
-    <message>
-        <source>When the File &amp;Changes</source>
-        <translation>Wenn sich die Datei &amp;ändert</translation>
-    </message>
-    <message>
-        <source>&amp;Offer to Reload</source>
-        <translation>Neu laden &amp;anbieten</translation>
-    </message>
-    <message>
-        <source>&amp;Reload Automatically</source>
-        <translation>Automatisch &amp;neu laden</translation>
-    </message>
-    <message>
-        <source>The open file, its buffers and its images are watched on disk</source>
-        <translation>Die geöffnete Datei, ihre Puffer und Bilder werden auf dem Datenträger überwacht</translation>
-    </message>
-    <message>
-        <source>%1 changed on disk: reloading.</source>
-        <translation>%1 wurde auf dem Datenträger geändert: wird neu geladen.</translation>
-    </message>
-    <message>
-        <source>%1 changed on disk.</source>
-        <translation>%1 wurde auf dem Datenträger geändert.</translation>
-    </message>
-    <message>
-        <source>%1 changed on disk. Reload the scene?</source>
-        <translation>%1 wurde auf dem Datenträger geändert. Szene neu laden?</translation>
-    </message>
-    <message>
-        <source>File changed</source>
-        <translation>Datei geändert</translation>
-    </message>
-    <message>
-        <source>&amp;Reload</source>
-        <translation>&amp;Neu laden</translation>
-    </message>
-    <message>
-        <source>&amp;Keep the Loaded Scene</source>
-        <translation>Geladene Szene &amp;behalten</translation>
-    </message>
-    <message>
-        <source>Settings › When the File Changes › Reload Automatically reloads without asking.</source>
-        <translation>Einstellungen › Wenn sich die Datei ändert › Automatisch neu laden lädt ohne Nachfrage neu.</translation>
-    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -1611,10 +1567,6 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>absent</source>
         <translation>fehlt</translation>
-    </message>
-    <message>
-        <source>ior %1, specular %2</source>
-        <translation>ior %1, specular %2</translation>
     </message>
     <message>
         <source>texture %1</source>

@@ -1526,50 +1526,6 @@ The current scene is kept.</translation>
         <source>→ %1</source>
         <translation>→ %1</translation>
     </message>
-    <message>
-        <source>When the File &amp;Changes</source>
-        <translation>When the File &amp;Changes</translation>
-    </message>
-    <message>
-        <source>&amp;Offer to Reload</source>
-        <translation>&amp;Offer to Reload</translation>
-    </message>
-    <message>
-        <source>&amp;Reload Automatically</source>
-        <translation>&amp;Reload Automatically</translation>
-    </message>
-    <message>
-        <source>The open file, its buffers and its images are watched on disk</source>
-        <translation>The open file, its buffers and its images are watched on disk</translation>
-    </message>
-    <message>
-        <source>%1 changed on disk: reloading.</source>
-        <translation>%1 changed on disk: reloading.</translation>
-    </message>
-    <message>
-        <source>%1 changed on disk.</source>
-        <translation>%1 changed on disk.</translation>
-    </message>
-    <message>
-        <source>%1 changed on disk. Reload the scene?</source>
-        <translation>%1 changed on disk. Reload the scene?</translation>
-    </message>
-    <message>
-        <source>File changed</source>
-        <translation>File changed</translation>
-    </message>
-    <message>
-        <source>&amp;Reload</source>
-        <translation>&amp;Reload</translation>
-    </message>
-    <message>
-        <source>&amp;Keep the Loaded Scene</source>
-        <translation>&amp;Keep the Loaded Scene</translation>
-    </message>
-    <message>
-        <source>Settings › When the File Changes › Reload Automatically reloads without asking.</source>
-        <translation>Settings › When the File Changes › Reload Automatically reloads without asking.</translation>
-    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -1611,10 +1567,6 @@ The current scene is kept.</translation>
     <message>
         <source>absent</source>
         <translation>absent</translation>
-    </message>
-    <message>
-        <source>ior %1, specular %2</source>
-        <translation>ior %1, specular %2</translation>
     </message>
     <message>
         <source>texture %1</source>

@@ -1526,50 +1526,6 @@ The current scene is kept.</source>
         <source>→ %1</source>
         <translation>→ %1</translation>
     </message>
-    <message>
-        <source>When the File &amp;Changes</source>
-        <translation>文件更改时(&amp;C)</translation>
-    </message>
-    <message>
-        <source>&amp;Offer to Reload</source>
-        <translation>提示重新加载(&amp;O)</translation>
-    </message>
-    <message>
-        <source>&amp;Reload Automatically</source>
-        <translation>自动重新加载(&amp;R)</translation>
-    </message>
-    <message>
-        <source>The open file, its buffers and its images are watched on disk</source>
-        <translation>监视磁盘上打开的文件及其缓冲区和图像</translation>
-    </message>
-    <message>
-        <source>%1 changed on disk: reloading.</source>
-        <translation>%1 已在磁盘上更改：正在重新加载。</translation>
-    </message>
-    <message>
-        <source>%1 changed on disk.</source>
-        <translation>%1 已在磁盘上更改。</translation>
-    </message>
-    <message>
-        <source>%1 changed on disk. Reload the scene?</source>
-        <translation>%1 已在磁盘上更改。重新加载场景？</translation>
-    </message>
-    <message>
-        <source>File changed</source>
-        <translation>文件已更改</translation>
-    </message>
-    <message>
-        <source>&amp;Reload</source>
-        <translation>重新加载(&amp;R)</translation>
-    </message>
-    <message>
-        <source>&amp;Keep the Loaded Scene</source>
-        <translation>保留已加载的场景(&amp;K)</translation>
-    </message>
-    <message>
-        <source>Settings › When the File Changes › Reload Automatically reloads without asking.</source>
-        <translation>设置 › 文件更改时 › 自动重新加载：不询问直接重新加载。</translation>
-    </message>
 </context>
 <context>
     <name>sherpa::editor::MaterialDock</name>
@@ -1611,10 +1567,6 @@ The current scene is kept.</source>
     <message>
         <source>absent</source>
         <translation>无</translation>
-    </message>
-    <message>
-        <source>ior %1, specular %2</source>
-        <translation>ior %1, specular %2</translation>
     </message>
     <message>
         <source>texture %1</source>

@@ -13,8 +13,7 @@
 #include "material_ext.glsl"
 #include "transmission.glsl"
 #include "refraction.glsl"
-#include "clearcoat.glsl"
-#include "sheen.glsl"
+#include "material_layers.glsl"
 #include "anisotropy.glsl"
 #include "iridescence.glsl"
 #include "tonemap.glsl"
@@ -200,15 +199,14 @@ void main() {
         // faces it: a uniform branch, so a CPU rasterizer skips the work.
         vec3 sun_l = -normalize(frame.sun_direction.xyz);
         c = vec3(0.0);
+        const float view_depth = -(frame.view * vec4(in_world_pos, 1.0)).z; // for the shadow maps
         if (subgroupAny(dot(s.n, sun_l) > 0.0 || (cc.factor > 0.0 && dot(cc.n, sun_l) > 0.0))) {
-            float view_depth = -(frame.view * vec4(in_world_pos, 1.0)).z;
             vec3 sun = frame.sun_radiance.rgb * sun_shadow(in_world_pos, shadow_normal, view_depth);
             c = brdf_times_cos(s, sun_l) * sun;
             coat += clearcoat_times_cos(cc, v, sun_l) * sun;
             sheen += sheen_times_cos(sh, s.n, v, sun_l) * sun;
         }
         if (diffuse_transmission.a > 0.0) {
-            float view_depth = -(frame.view * vec4(in_world_pos, 1.0)).z;
             // The back is lit where the front is not: the sun's map is looked up from the
             // back side.
             float shadow = sun_shadow(in_world_pos, -shadow_normal, view_depth);
@@ -230,16 +228,13 @@ void main() {
                                          material_attenuation(ext), material_dispersion(ext), opaque_diffuse);
             c += transmission * (1.0 - transmission_fresnel(s)) * light;
         }
-        if (max3(sh.color) > 0.0) {
+        if (max3(sh.color) > 0.0)
             sheen += (has_environment() ? sheen_environment(sh, s.n, v)
                                         : sh.color * sheen_albedo(sh.roughness, dot(s.n, v)) *
                                               hemisphere(s.n, frame.ambient.rgb)) * ao;
-            c = sheen_over(sh, s.n, v, c, sheen);
-        }
-        if (cc.factor > 0.0) {
+        if (cc.factor > 0.0)
             coat += (has_environment() ? clearcoat_environment(cc, v) : clearcoat_ambient(cc, v, frame.ambient.rgb)) * ao;
-            c = clearcoat_over(cc, v, c, coat);
-        }
+        c = layers_over(cc, sh, s.n, v, c, sheen, coat);
         break;
     }
     }

@@ -16,8 +16,7 @@
 #include "brdf.glsl"
 #include "path_payload.glsl"
 #include "pt_material_ext.glsl"
-#include "clearcoat.glsl"
-#include "sheen.glsl"
+#include "material_layers.glsl"
 #include "anisotropy.glsl"
 #include "iridescence.glsl"
 
@@ -100,7 +99,7 @@ void main() {
     payload.iridescence = s.iridescence;
     // Emission under the sheen and the coat, as the rasterizer layers it (light sampling
     // reads it through a ray too; only its choice of triangle uses the bare emission).
-    payload.emission = clearcoat_over(cc, v, sheen_over(sh, sn, v, emission(m, x, h.uv0, h.uv1), vec3(0.0)), vec3(0.0));
+    payload.emission = layers_over(cc, sh, sn, v, emission(m, x, h.uv0, h.uv1), vec3(0.0), vec3(0.0));
     // The light list's rule (emissive_lights.cpp): static meshes whose material emits,
     // below the luminance cap; its density for multiple importance sampling.
     if (pc.light_inv_power > 0.0 && (h.flags & MESH_MOTION) == 0u && m.emissive_tex != TEX_BLACK) {

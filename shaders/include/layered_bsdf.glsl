@@ -6,9 +6,10 @@
 // is broad), else the base's lobes; the mixture's density is the sum, for MIS.
 // Without layers (coat factor 0, sheen black) every function is the base's alone and
 // draws the same random numbers.
-// Needs bsdf_sampling.glsl, clearcoat.glsl, sheen.glsl.
+// Needs bsdf_sampling.glsl, material_layers.glsl.
 #ifndef SHERPA_LAYERED_BSDF_GLSL
 #define SHERPA_LAYERED_BSDF_GLSL
+#include "material_layers.glsl"
 
 struct Layers {
     Clearcoat coat;
@@ -19,13 +20,13 @@ struct Layers {
 // the viewer (their albedos at v), as forward.frag layers the base's radiance: the
 // weight of the base's transmission lobes under the layers.
 vec3 under_layers(Surface s, Layers y, vec3 under) {
-    return clearcoat_over(y.coat, s.v, sheen_over(y.sheen, s.n, s.v, under, vec3(0.0)), vec3(0.0));
+    return layers_over(y.coat, y.sheen, s.n, s.v, under, vec3(0.0), vec3(0.0));
 }
 
 vec3 layered_brdf_times_cos(Surface s, Layers y, vec3 l) {
     vec3 f = brdf_times_cos(s, l);
-    f = sheen_over(y.sheen, s.n, s.v, f, sheen_times_cos(y.sheen, s.n, s.v, l));
-    return clearcoat_over(y.coat, s.v, f, vec3(clearcoat_times_cos(y.coat, s.v, l)));
+    return layers_over(y.coat, y.sheen, s.n, s.v, f, sheen_times_cos(y.sheen, s.n, s.v, l),
+                       vec3(clearcoat_times_cos(y.coat, s.v, l)));
 }
 
 // Probability of drawing the coat's lobe: its Fresnel-weighted share, at least a

@@ -37,6 +37,31 @@ def ior(value, color, roughness):
     return m
 
 
+def glass(attenuation, distance, ior=None, roughness=0.0):
+    """KHR_materials_transmission through a KHR_materials_volume as thick as the sphere
+    (thicknessFactor 2 x RADIUS: Blender's importer makes a volume only where the
+    thickness is not 0; both path tracers then measure the path inside the mesh), a white
+    base colour (the two tint transmitted light by it differently: the colour is in the
+    attenuation), and KHR_materials_ior where given."""
+    m = pbr([1.0, 1.0, 1.0], roughness)
+    m['extensions'] = {'KHR_materials_transmission': {'transmissionFactor': 1.0},
+                       'KHR_materials_volume': {'thicknessFactor': 2 * RADIUS,
+                                                'attenuationColor': attenuation,
+                                                'attenuationDistance': distance}}
+    if ior is not None:
+        m['extensions']['KHR_materials_ior'] = {'ior': ior}
+    return m
+
+
+def clearcoat(color, roughness, coat, coat_roughness, metallic=0.0):
+    """A smooth coat (KHR_materials_clearcoat) over a rough base: the coat's reflection
+    sharp over the base's blur."""
+    m = pbr(color, roughness, metallic)
+    m['extensions'] = {'KHR_materials_clearcoat': {'clearcoatFactor': coat,
+                                                   'clearcoatRoughnessFactor': coat_roughness}}
+    return m
+
+
 # (name, material, largest difference of the sphere's mean linear colour per channel).
 # Tolerances: the difference measured here (docs/path_tracer.md) with a margin; the
 # diffuse spheres differ most, by definition (Principled's diffuse is not glTF's).
@@ -51,6 +76,10 @@ CASES = [
     ('emission', emissive([0.9, 0.5, 0.2]), 0.003),
     ('emission strength', emissive([0.2, 0.3, 0.1], 3.0), 0.003),
     ('ior 2', ior(2.0, [0.0, 0.0, 0.0], 0.1), 0.004),
+    ('glass volume', glass([0.9, 0.6, 0.4], 0.8), 0.012),
+    ('glass ior 1.33', glass([0.95, 0.95, 0.8], 1.0, 1.33), 0.016),
+    ('clearcoat on black', clearcoat([0.0, 0.0, 0.0], 1.0, 1.0, 0.0), 0.004),
+    ('clearcoat on metal', clearcoat([0.9, 0.6, 0.3], 0.6, 1.0, 0.0, 1.0), 0.006),
 ]
 
 

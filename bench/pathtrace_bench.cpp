@@ -16,6 +16,7 @@
 #include <sherpa/render/environment.h>
 #include <sherpa/render/gpu_scene.h>
 #include <sherpa/render/renderer.h>
+#include <sherpa/scene/framing.h>
 #include <sherpa/scene/scene_loader.h>
 
 #include <algorithm>
@@ -102,6 +103,11 @@ int main(int argc, char** argv) {
         return 1;
     }
     renderer.load(*r.scene);
+    // The camera sherpa-cli render's `--camera auto` makes: the scene framed at this aspect.
+    FramingOptions framing;
+    framing.fov_y_degrees = base.camera.fov_degrees;
+    framing.aspect = float(base.width) / float(base.height);
+    base.camera = gpu::explicit_camera(frame_scene(*r.scene, nullptr, framing));
 
     Column raster{"raster lit", base};
     Column path{"path traced", base};

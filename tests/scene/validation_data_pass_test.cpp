@@ -32,7 +32,8 @@ std::vector<std::uint8_t> strided(const std::vector<C>& values, std::uint32_t n,
 }
 
 template <typename C, std::uint32_t N> void check_bounds(std::mt19937& rng, bool non_finite) {
-    for (std::uint64_t count : {0u, 1u, 15u, 16u, 17u, 33u, 100u}) {
+    // Around the SIMD blocks' sizes (4 to 64 elements) and their remainders.
+    for (std::uint64_t count : {0u, 1u, 15u, 16u, 17u, 31u, 32u, 33u, 64u, 65u, 100u, 1000u}) {
         for (std::uint64_t pad : {0u, 4u}) {
             std::vector<C> values(count * N);
             std::uniform_real_distribution<double> d(-1000, 1000);
@@ -79,7 +80,10 @@ TEST(DataPassKernels, BoundsMatchAPlainLoop) {
 
 template <typename I> void check_indices(std::mt19937& rng) {
     const I restart = std::numeric_limits<I>::max();
-    for (std::uint64_t count : {0u, 1u, 2u, 3u, 4u, 9u, 10u, 300u}) {
+    // Around the triangle blocks (3 vectors and the 2 values their last loads read
+    // past them: 14, 26 or 50 values) and past 64 blocks, where lane counts are summed.
+    for (std::uint64_t count :
+         {0u, 1u, 2u, 3u, 4u, 9u, 10u, 14u, 15u, 26u, 27u, 50u, 51u, 52u, 300u, 3500u}) {
         for (std::uint64_t vertices : {0u, 1u, 5u, 200u}) {
             for (int variant = 0; variant < 3; ++variant) {
                 std::vector<I> values(count);
@@ -127,26 +131,31 @@ TEST(DataPassKernels, UnitVectorsMatchAPlainLoop) {
         NAN, INFINITY};
     for (double bad : lengths)
         for (float w : {1.0f, -1.0f, 0.5f})
-            for (std::size_t at : {0u, 5u, 19u})
-                for (bool sign : {false, true}) {
+            for (std::size_t at : {0u, 5u, 19u, 21u}) // 21: past the SIMD blocks
+                for (int layout = 0; layout < 3; ++layout) {
+                    // 3 floats packed (the SIMD path), 4 floats without and with a sign.
+                    const bool sign = layout == 2;
+                    const std::uint32_t n = layout == 0 ? 3 : 4;
                     std::vector<float> values;
-                    for (std::size_t i = 0; i < 20; ++i) {
+                    for (std::size_t i = 0; i < 22; ++i) {
                         const double len = i == at ? bad : 1.0;
                         const float x = static_cast<float>(len * 0.6), y = 0,
                                     z = static_cast<float>(len * 0.8);
-                        values.insert(values.end(), {x, y, z, i == at ? w : 1.0f});
+                        values.insert(values.end(), {x, y, z});
+                        if (n == 4) values.push_back(i == at ? w : 1.0f);
                     }
-                    const auto bytes = strided(values, 4, 16);
-                    const auto s = kernels::unit_vectors(bytes.data(), 20, 16, tol, sign);
+                    const auto bytes = strided(values, n, n * sizeof(float));
+                    const auto s =
+                        kernels::unit_vectors(bytes.data(), 22, n * sizeof(float), tol, sign);
                     kernels::UnitScan want;
-                    for (std::size_t i = 0; i < 20; ++i) {
-                        const double x = values[i * 4], y = values[i * 4 + 1],
-                                     z = values[i * 4 + 2];
+                    for (std::size_t i = 0; i < 22; ++i) {
+                        const double x = values[i * n], y = values[i * n + 1],
+                                     z = values[i * n + 2];
                         const double len = std::sqrt(x * x + y * y + z * z);
                         if (std::isfinite(len) && std::abs(len - 1) > tol &&
                             want.first_non_unit == UINT64_MAX)
                             want.first_non_unit = i;
-                        const float wi = values[i * 4 + 3];
+                        const float wi = n == 4 ? values[i * n + 3] : 1.0f;
                         if (sign && wi != 1 && wi != -1 && want.first_bad_sign == UINT64_MAX)
                             want.first_bad_sign = i;
                     }

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -106,6 +107,16 @@ template <typename I> void check_indices(std::mt19937& rng) {
                                                values[i - 1] == values[i] ||
                                                values[i] == values[i - 2];
                     }
+                    // The summary's bounds, which the min/max check takes from it.
+                    const auto sum =
+                        kernels::summarize_indices<I>(bytes.data(), count, sizeof(I), triangles);
+                    EXPECT_EQ(sum.degenerate, want.degenerate) << count << " " << vertices;
+                    if (count) {
+                        EXPECT_EQ(sum.low, *std::min_element(values.begin(), values.end()));
+                        EXPECT_EQ(sum.high, *std::max_element(values.begin(), values.end()));
+                    } else {
+                        EXPECT_GT(sum.low, sum.high);
+                    }
                     EXPECT_EQ(s.first_over, want.first_over) << count << " " << vertices;
                     EXPECT_EQ(s.first_restart, want.first_restart) << count << " " << vertices;
                     EXPECT_EQ(s.degenerate, want.degenerate) << count << " " << vertices;
@@ -162,6 +173,47 @@ TEST(DataPassKernels, UnitVectorsMatchAPlainLoop) {
                     EXPECT_EQ(s.first_non_unit, want.first_non_unit) << bad << " at " << at;
                     EXPECT_EQ(s.first_bad_sign, want.first_bad_sign) << w << " at " << at;
                 }
+}
+
+// Normals' bounds and first unit test in one pass: the same as bounds<float, 3> and
+// the unit test apart, on every remainder of its blocks of 4 and with non-finite values.
+TEST(DataPassKernels, UnitBoundsMatchBoundsAndUnitVectors) {
+    const double tol = 0.00674;
+    std::mt19937 rng(5);
+    std::normal_distribution<float> d;
+    for (std::uint64_t count : {0u, 1u, 3u, 4u, 5u, 8u, 11u, 64u, 67u}) {
+        for (int variant = 0; variant < 4; ++variant) {
+            std::vector<float> values;
+            for (std::uint64_t i = 0; i < count; ++i) {
+                float x = d(rng), y = d(rng), z = d(rng);
+                const float len = std::sqrt(x * x + y * y + z * z);
+                values.insert(values.end(), {x / len, y / len, z / len});
+            }
+            if (count && variant == 1) values[rng() % values.size()] *= 1.5f; // not unit
+            if (count && variant == 2) values[rng() % values.size()] = NAN;
+            if (count && variant == 3) values[values.size() - 1] = -INFINITY; // in the rest
+            const auto bytes = strided(values, 3, 12);
+            float lo[3], hi[3], want_lo[3], want_hi[3];
+            bool doubtful = false;
+            const bool finite = kernels::unit_bounds(bytes.data(), count, kernels::unit_band(tol),
+                                                     lo, hi, doubtful);
+            const bool want_finite =
+                kernels::bounds<float, 3>(bytes.data(), count, 12, want_lo, want_hi);
+            EXPECT_EQ(finite, want_finite) << count << " variant " << variant;
+            const bool want_doubtful =
+                kernels::unit_vectors(bytes.data(), count, 12, tol, false).first_non_unit !=
+                    UINT64_MAX ||
+                variant >= 2;
+            if (count) {
+                EXPECT_EQ(doubtful, want_doubtful) << count << " variant " << variant;
+            }
+            if (!want_finite) continue; // the caller takes the exact path
+            for (int c = 0; c < 3; ++c) {
+                EXPECT_EQ(lo[c], want_lo[c]) << count;
+                EXPECT_EQ(hi[c], want_hi[c]) << count;
+            }
+        }
+    }
 }
 
 // The data pass tells the importer which accessors' values it found finite and inside

@@ -65,7 +65,43 @@ std::uint64_t scan_bounds(const Reader& r, std::vector<double>& lo, std::vector<
     return first_bad;
 }
 
-void check_min_max(Validation& v, std::size_t index, const Reader& r) {
+// What a use's own pass over an accessor (triangle indices, normals) finds that the
+// min/max check needs too: those bytes are read once, for both.
+struct Summary {
+    enum class Kind : std::uint8_t { None, Indices, Normals } kind = Kind::None;
+    bool triangles = false; // Indices: summarized as a triangle list
+    kernels::IndexSummary indices;
+    bool finite = false, doubtful = false; // Normals: kernels::unit_bounds
+    float lo[3] = {}, hi[3] = {};
+};
+
+constexpr double kUnitTolerance = 0.00674;
+
+void summarize(const AccessorUsage& u, const Reader& r, int component_type, Summary& out) {
+    if (u.use == AccessorUse::Indices && r.components() == 1) {
+        const bool triangles = u.mode == 4;
+        if (component_type == 5121)
+            out.indices = kernels::summarize_indices<std::uint8_t>(r.base(), r.count(), r.stride(),
+                                                                   triangles);
+        else if (component_type == 5123)
+            out.indices = kernels::summarize_indices<std::uint16_t>(r.base(), r.count(), r.stride(),
+                                                                    triangles);
+        else if (component_type == 5125)
+            out.indices = kernels::summarize_indices<std::uint32_t>(r.base(), r.count(), r.stride(),
+                                                                    triangles);
+        else
+            return;
+        out.kind = Summary::Kind::Indices;
+        out.triangles = triangles;
+    } else if (u.use == AccessorUse::Normal && r.is_float() && r.components() == 3 &&
+               r.stride() == 3 * sizeof(float)) {
+        out.finite = kernels::unit_bounds(r.base(), r.count(), kernels::unit_band(kUnitTolerance),
+                                          out.lo, out.hi, out.doubtful);
+        out.kind = Summary::Kind::Normals;
+    }
+}
+
+void check_min_max(Validation& v, std::size_t index, const Reader& r, const Summary& known) {
     const AccessorLayout& a = v.accessors[index];
     const Json& acc = v.array("accessors")[index];
     const std::string where = ptr("/accessors", index);
@@ -73,25 +109,32 @@ void check_min_max(Validation& v, std::size_t index, const Reader& r) {
     if (n == 0 || n > 16) return;
     std::vector<double> lo(n, INFINITY), hi(n, -INFINITY);
     std::uint64_t bad = UINT64_MAX;
-    switch (r.component_type()) {
-    case 5120:
-        bad = scan_bounds<std::int8_t>(r, lo, hi);
-        break;
-    case 5121:
-        bad = scan_bounds<std::uint8_t>(r, lo, hi);
-        break;
-    case 5122:
-        bad = scan_bounds<std::int16_t>(r, lo, hi);
-        break;
-    case 5123:
-        bad = scan_bounds<std::uint16_t>(r, lo, hi);
-        break;
-    case 5125:
-        bad = scan_bounds<std::uint32_t>(r, lo, hi);
-        break;
-    default:
-        bad = scan_bounds<float>(r, lo, hi);
-        break;
+    if (known.kind == Summary::Kind::Indices) {
+        lo[0] = static_cast<double>(known.indices.low);
+        hi[0] = static_cast<double>(known.indices.high);
+    } else if (known.kind == Summary::Kind::Normals && known.finite) {
+        for (std::uint32_t c = 0; c < 3; ++c) lo[c] = known.lo[c], hi[c] = known.hi[c];
+    } else {
+        switch (r.component_type()) {
+        case 5120:
+            bad = scan_bounds<std::int8_t>(r, lo, hi);
+            break;
+        case 5121:
+            bad = scan_bounds<std::uint8_t>(r, lo, hi);
+            break;
+        case 5122:
+            bad = scan_bounds<std::int16_t>(r, lo, hi);
+            break;
+        case 5123:
+            bad = scan_bounds<std::uint16_t>(r, lo, hi);
+            break;
+        case 5125:
+            bad = scan_bounds<std::uint32_t>(r, lo, hi);
+            break;
+        default:
+            bad = scan_bounds<float>(r, lo, hi);
+            break;
+        }
     }
     if (bad != UINT64_MAX) {
         const double x = r.raw(bad / n, static_cast<std::uint32_t>(bad % n));
@@ -123,6 +166,7 @@ void check_min_max(Validation& v, std::size_t index, const Reader& r) {
             const double d = declared[c].get<double>();
             const double actual = is_min ? lo[c] : hi[c];
             const bool mismatch = std::isfinite(actual) && !same(d, actual);
+            if (!mismatch && bad == UINT64_MAX) continue; // no message: no pointer to build
             const std::string p = ptr(ptr(where, is_min ? "min" : "max"), c);
             if (mismatch)
                 v.add(is_min ? "ACCESSOR_MIN_MISMATCH" : "ACCESSOR_MAX_MISMATCH", Severity::Error,
@@ -157,7 +201,7 @@ double length3(const Reader& r, std::uint64_t i) {
     return std::sqrt(x * x + y * y + z * z);
 }
 
-void check_use(Validation& v, const AccessorUsage& u, const Reader& r,
+void check_use(Validation& v, const AccessorUsage& u, const Reader& r, const Summary& known,
                const std::vector<AccessorLayout>& layouts, Buffers buffers) {
     const std::uint64_t n = r.count();
     auto once = [&](bool& said, std::string_view code, Severity s, std::string message) {
@@ -171,12 +215,19 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r,
         const int type = v.accessors[u.accessor].component_type;
         if (r.components() != 1 || (type != 5121 && type != 5123 && type != 5125)) break;
         const bool triangles = u.mode == 4;
-        const kernels::IndexScan s =
-            type == 5121
-                ? kernels::indices<std::uint8_t>(r.base(), n, r.stride(), u.limit, triangles)
+        // The summary the min/max check used, where it was made for this mode.
+        const kernels::IndexSummary summary =
+            known.kind == Summary::Kind::Indices && known.triangles == triangles ? known.indices
+            : type == 5121
+                ? kernels::summarize_indices<std::uint8_t>(r.base(), n, r.stride(), triangles)
             : type == 5123
-                ? kernels::indices<std::uint16_t>(r.base(), n, r.stride(), u.limit, triangles)
-                : kernels::indices<std::uint32_t>(r.base(), n, r.stride(), u.limit, triangles);
+                ? kernels::summarize_indices<std::uint16_t>(r.base(), n, r.stride(), triangles)
+                : kernels::summarize_indices<std::uint32_t>(r.base(), n, r.stride(), triangles);
+        const kernels::IndexScan s =
+            type == 5121 ? kernels::indices<std::uint8_t>(r.base(), n, r.stride(), u.limit, summary)
+            : type == 5123
+                ? kernels::indices<std::uint16_t>(r.base(), n, r.stride(), u.limit, summary)
+                : kernels::indices<std::uint32_t>(r.base(), n, r.stride(), u.limit, summary);
         if (s.first_over != UINT64_MAX)
             v.add("ACCESSOR_INDEX_OOB", Severity::Error, u.pointer,
                   "Indices accessor element at index " + std::to_string(s.first_over) +
@@ -201,14 +252,18 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r,
         // Float vectors (the common case) in one typed pass, to the first of each problem.
         std::uint64_t from = 0;
         if (r.is_float()) {
+            // The first test ran with the min/max check's pass where it was summarized.
+            if (known.kind == Summary::Kind::Normals && !sign && !known.doubtful) break;
             const kernels::UnitScan s =
-                kernels::unit_vectors(r.base(), n, r.stride(), 0.00674, sign);
+                known.kind == Summary::Kind::Normals && !sign
+                    ? kernels::unit_vectors_exact(r.base(), n, r.stride(), kUnitTolerance, sign)
+                    : kernels::unit_vectors(r.base(), n, r.stride(), kUnitTolerance, sign);
             if (s.first_non_unit == UINT64_MAX && s.first_bad_sign == UINT64_MAX) break;
             from = std::min(s.first_non_unit, s.first_bad_sign);
         }
         for (std::uint64_t i = from; i < n; ++i) {
             const double len = length3(r, i);
-            if (std::isfinite(len) && std::abs(len - 1) > 0.00674)
+            if (std::isfinite(len) && std::abs(len - 1) > kUnitTolerance)
                 once(a, "ACCESSOR_VECTOR3_NON_UNIT", Severity::Error,
                      "Vector3 at accessor element " + std::to_string(i) +
                          " is not of unit length: " + std::to_string(len) + ".");
@@ -368,15 +423,25 @@ void validate_data(Validation& v, Buffers buffers) {
         l.offset = 0;
         l.stride = std::uint64_t{component_size(l.component_type)} * l.components;
     }
+    // The first use of an accessor that reads all of it anyway summarizes it first.
+    std::vector<Summary> summaries(layouts.size());
+    for (const AccessorUsage& u : v.usages) {
+        if (u.accessor >= layouts.size() || layouts[u.accessor].sparse ||
+            summaries[u.accessor].kind != Summary::Kind::None)
+            continue;
+        const Reader r(layouts[u.accessor], spans);
+        if (r.ok() && r.count() > 0)
+            summarize(u, r, layouts[u.accessor].component_type, summaries[u.accessor]);
+    }
     for (std::size_t i = 0; i < layouts.size(); ++i) {
         if (layouts[i].sparse) continue; // overrides that could not be applied: not read
         const Reader r(layouts[i], spans);
-        if (r.ok()) check_min_max(v, i, r);
+        if (r.ok()) check_min_max(v, i, r, summaries[i]);
     }
     for (const AccessorUsage& u : v.usages) {
         if (u.accessor >= layouts.size() || layouts[u.accessor].sparse) continue;
         const Reader r(layouts[u.accessor], spans);
-        if (r.ok()) check_use(v, u, r, layouts, spans);
+        if (r.ok()) check_use(v, u, r, summaries[u.accessor], layouts, spans);
     }
 }
 

@@ -89,28 +89,23 @@ bool bounds(const std::uint8_t* p, std::uint64_t count, std::uint64_t stride, C*
     return finite;
 }
 
-struct IndexScan {
-    std::uint64_t first_over = UINT64_MAX;    // first index > max_index (or any when none)
-    std::uint64_t first_restart = UINT64_MAX; // first primitive-restart value
-    std::uint64_t degenerate = 0;             // triangles with a repeated index
+// One pass over `count` index values of type I, `stride` bytes apart: their bounds and,
+// for triangle lists, how many triangles repeat an index. The min/max check and the
+// index checks both read these from one summary (low > high when `count` is 0).
+struct IndexSummary {
+    std::uint64_t low = UINT64_MAX, high = 0;
+    std::uint64_t degenerate = 0; // triangles with a repeated index
 };
-
-// Index values of type I: against the highest vertex index (`vertices` - 1; every value
-// is over when `vertices` is 0), the restart value (all bits set), and, for triangle
-// lists, triangles that repeat an index.
 template <typename I>
-IndexScan indices(const std::uint8_t* p, std::uint64_t count, std::uint64_t stride,
-                  std::uint64_t vertices, bool triangles) {
-    IndexScan s;
-    const I restart = std::numeric_limits<I>::max();
+IndexSummary summarize_indices(const std::uint8_t* p, std::uint64_t count, std::uint64_t stride,
+                               bool triangles) {
+    IndexSummary s;
     auto at = [&](std::uint64_t i) {
         I x;
         std::memcpy(&x, p + i * stride, sizeof x);
         return x;
     };
-    // One pass for the largest value and the degenerate triangles; the restart value is
-    // the type's largest, so the maximum also says whether any index is a restart.
-    I high = 0;
+    I low = std::numeric_limits<I>::max(), high = 0;
     std::uint64_t i = 0;
     if (triangles && stride == sizeof(I)) {
         // Tightly packed (as indices must be) in blocks of 3 vectors, kLanes triangles:
@@ -125,7 +120,7 @@ IndexScan indices(const std::uint8_t* p, std::uint64_t count, std::uint64_t stri
         for (std::uint32_t k = 0; k < 3; ++k)
             for (std::uint32_t j = 0; j < kLanes; ++j)
                 first[k][j] = (k * kLanes + j) % 3 == 0 ? -1 : 0;
-        V vhigh{};
+        V vlow = V{} + low, vhigh{};
         while (i + 3 * kLanes + 2 <= count) {
             M counts{};
             for (int b = 0; b < 64 && i + 3 * kLanes + 2 <= count; ++b, i += 3 * kLanes) {
@@ -135,89 +130,176 @@ IndexScan indices(const std::uint8_t* p, std::uint64_t count, std::uint64_t stri
                     const V a = load16<I>(q), b1 = load16<I>(q + sizeof(I)),
                             c = load16<I>(q + 2 * sizeof(I));
                     counts += ((a == b1) | (b1 == c) | (c == a)) & first[k];
+                    vlow = a < vlow ? a : vlow;
                     vhigh = a > vhigh ? a : vhigh;
                 }
             }
             for (std::uint32_t j = 0; j < kLanes; ++j)
                 s.degenerate += static_cast<std::uint64_t>(-counts[j]);
         }
-        for (std::uint32_t j = 0; j < kLanes; ++j) high = vhigh[j] > high ? vhigh[j] : high;
+        for (std::uint32_t j = 0; j < kLanes; ++j) {
+            low = vlow[j] < low ? vlow[j] : low;
+            high = vhigh[j] > high ? vhigh[j] : high;
+        }
     }
     if (triangles)
         for (; i + 3 <= count; i += 3) {
             const I a = at(i), b = at(i + 1), c = at(i + 2);
             s.degenerate += (a == b) | (b == c) | (c == a);
-            const I ab = a > b ? a : b;
-            const I abc = ab > c ? ab : c;
+            const I ab = a > b ? a : b, abc = ab > c ? ab : c;
+            const I ab_ = a < b ? a : b, abc_ = ab_ < c ? ab_ : c;
             high = abc > high ? abc : high;
+            low = abc_ < low ? abc_ : low;
         }
     if (i < count) {
         I lo_rest, hi_rest;
         bounds<I, 1>(p + i * stride, count - i, stride, &lo_rest, &hi_rest);
         high = hi_rest > high ? hi_rest : high;
+        low = lo_rest < low ? lo_rest : low;
     }
-    if (count == 0 || (high < vertices && high != restart)) return s;
-    for (i = 0; i < count; ++i) { // where first, only for data that breaks a rule
-        const I x = at(i);
+    if (count > 0) s.low = low, s.high = high;
+    return s;
+}
+
+struct IndexScan {
+    std::uint64_t first_over = UINT64_MAX;    // first index > max_index (or any when none)
+    std::uint64_t first_restart = UINT64_MAX; // first primitive-restart value
+    std::uint64_t degenerate = 0;             // triangles with a repeated index
+};
+
+// Index values of type I against the highest vertex index (`vertices` - 1; every value
+// is over when `vertices` is 0) and the restart value (all bits set), given their
+// summary: the restart value is the type's largest, so the summary's maximum says
+// whether any index breaks a rule, and only then are they read again, for where first.
+template <typename I>
+IndexScan indices(const std::uint8_t* p, std::uint64_t count, std::uint64_t stride,
+                  std::uint64_t vertices, const IndexSummary& summary) {
+    IndexScan s;
+    s.degenerate = summary.degenerate;
+    const I restart = std::numeric_limits<I>::max();
+    if (count == 0 || (summary.high < vertices && summary.high != restart)) return s;
+    for (std::uint64_t i = 0; i < count; ++i) {
+        I x;
+        std::memcpy(&x, p + i * stride, sizeof x);
         if (x >= vertices && s.first_over == UINT64_MAX) s.first_over = i;
         if (x == restart && s.first_restart == UINT64_MAX) s.first_restart = i;
     }
     return s;
 }
+// The same, with triangles counted when `triangles` (one pass more).
+template <typename I>
+IndexScan indices(const std::uint8_t* p, std::uint64_t count, std::uint64_t stride,
+                  std::uint64_t vertices, bool triangles) {
+    return indices<I>(p, count, stride, vertices,
+                      summarize_indices<I>(p, count, stride, triangles));
+}
 
-// The first of `count` float vectors (3 components, `stride` apart) whose length is
-// finite and differs from 1 by more than `tolerance`, and, with `sign`, the first whose
-// fourth component is not +-1; UINT64_MAX where there is none.
+// The squared lengths a unit vector's first test lets pass: well inside
+// (1 +- tolerance)^2 (a margin far above float rounding). Any other vector, NaN
+// included, sends the whole accessor to the exact test (unit_vectors_exact).
+struct UnitBand {
+    float lo, hi;
+};
+inline UnitBand unit_band(double tolerance) {
+    return {static_cast<float>((1 - tolerance) * (1 - tolerance) + 1e-4),
+            static_cast<float>((1 + tolerance) * (1 + tolerance) - 1e-4)};
+}
+
+// Tightly packed 3-vectors, four per 3 SIMD vectors: a = x0 y0 z0 x1, b = y1 z1 x2 y2,
+// c = z2 x3 y3 z3, squared and gathered into x, y and z of all four, whose sums are the
+// four squared lengths; the lanes where they lie inside `band`.
+inline auto inside_band(Vec16<float> a, Vec16<float> b, Vec16<float> c, UnitBand band) {
+    using V = Vec16<float>;
+    const V a2 = a * a, b2 = b * b, c2 = c * c;
+    const V x =
+        __builtin_shufflevector(__builtin_shufflevector(a2, b2, 0, 3, 6, 0), c2, 0, 1, 2, 5);
+    const V y =
+        __builtin_shufflevector(__builtin_shufflevector(a2, b2, 1, 4, 7, 0), c2, 0, 1, 2, 6);
+    const V z =
+        __builtin_shufflevector(__builtin_shufflevector(a2, b2, 2, 5, 0, 0), c2, 0, 1, 4, 7);
+    const V len2 = x + y + z;
+    return (len2 >= band.lo) & (len2 <= band.hi);
+}
+
 // Nonzero when any of `count` vectors (3 floats, and with Sign a fourth, `stride` bytes
-// apart) has a squared length outside [lo, hi] (NaN included) or a sign not +-1. The
-// copy's size is a constant (a size chosen per vector was a call to memcpy each).
+// apart) has a squared length outside `band` or a sign not +-1. The copy's size is a
+// constant (a size chosen per vector was a call to memcpy each).
 template <bool Sign>
 unsigned doubtful_vectors(const std::uint8_t* q, std::uint64_t count, std::uint64_t stride,
-                          float lo, float hi) {
+                          UnitBand band) {
     unsigned doubtful = 0;
     if (!Sign && stride == 3 * sizeof(float)) {
-        // Tightly packed 3-vectors (normals), four per 3 SIMD vectors:
-        // a = x0 y0 z0 x1, b = y1 z1 x2 y2, c = z2 x3 y3 z3, squared and gathered into
-        // x, y and z of all four, whose sums are the four squared lengths.
         using V = Vec16<float>;
         decltype(V{} < V{}) inside = V{} == V{};
-        for (; count >= 4; count -= 4, q += 12 * sizeof(float)) {
-            const V a = load16<float>(q), b = load16<float>(q + 16), c = load16<float>(q + 32);
-            const V a2 = a * a, b2 = b * b, c2 = c * c;
-            const V x = __builtin_shufflevector(__builtin_shufflevector(a2, b2, 0, 3, 6, 0), c2, 0,
-                                                1, 2, 5);
-            const V y = __builtin_shufflevector(__builtin_shufflevector(a2, b2, 1, 4, 7, 0), c2, 0,
-                                                1, 2, 6);
-            const V z = __builtin_shufflevector(__builtin_shufflevector(a2, b2, 2, 5, 0, 0), c2, 0,
-                                                1, 4, 7);
-            const V len2 = x + y + z;
-            inside &= (len2 >= lo) & (len2 <= hi);
-        }
+        for (; count >= 4; count -= 4, q += 12 * sizeof(float))
+            inside &=
+                inside_band(load16<float>(q), load16<float>(q + 16), load16<float>(q + 32), band);
         for (std::uint32_t j = 0; j < 4; ++j) doubtful |= inside[j] == 0;
     }
     for (std::uint64_t i = 0; i < count; ++i, q += stride) {
         float v[4] = {0, 0, 0, 1};
         std::memcpy(v, q, (Sign ? 4 : 3) * sizeof(float));
         const float len2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-        doubtful |= !(len2 >= lo && len2 <= hi) | (v[3] != 1 && v[3] != -1);
+        doubtful |= !(len2 >= band.lo && len2 <= band.hi) | (v[3] != 1 && v[3] != -1);
     }
     return doubtful;
 }
 
+// bounds<float, 3> and doubtful_vectors<false> in one pass over `count` tightly packed
+// 3-vectors (a normal accessor: its min/max check and its unit-length check read the
+// same bytes once). Returns what bounds returns; `doubtful` as doubtful_vectors.
+inline bool unit_bounds(const std::uint8_t* p, std::uint64_t count, UnitBand band, float* lo,
+                        float* hi, bool& doubtful) {
+    using V = Vec16<float>;
+    V vl[3], vh[3];
+    for (std::uint32_t k = 0; k < 3; ++k) {
+        vl[k] = V{} + std::numeric_limits<float>::max();
+        vh[k] = V{} + std::numeric_limits<float>::lowest();
+    }
+    decltype(V{} < V{}) vnan{}, inside = V{} == V{};
+    const std::uint64_t blocks = count / 4;
+    for (std::uint64_t b = 0; b < blocks; ++b, p += 3 * sizeof(V)) {
+        V x[3];
+#pragma GCC unroll 3
+        for (std::uint32_t k = 0; k < 3; ++k) {
+            x[k] = load16<float>(p + sizeof(V) * k);
+            vl[k] = x[k] < vl[k] ? x[k] : vl[k];
+            vh[k] = x[k] > vh[k] ? x[k] : vh[k];
+            vnan |= x[k] != x[k];
+        }
+        inside &= inside_band(x[0], x[1], x[2], band);
+    }
+    // The rest (fewer than 4) by the two kernels, merged.
+    float l[3], h[3];
+    bool finite = bounds<float, 3>(p, count - blocks * 4, 3 * sizeof(float), l, h);
+    doubtful = doubtful_vectors<false>(p, count - blocks * 4, 3 * sizeof(float), band) != 0;
+    for (std::uint32_t k = 0; k < 3; ++k)
+        for (std::uint32_t j = 0; j < 4; ++j) {
+            const std::uint32_t c = (k * 4 + j) % 3;
+            l[c] = vl[k][j] < l[c] ? vl[k][j] : l[c];
+            h[c] = vh[k][j] > h[c] ? vh[k][j] : h[c];
+        }
+    for (std::uint32_t j = 0; j < 4; ++j) {
+        finite &= vnan[j] == 0;
+        doubtful |= inside[j] == 0;
+    }
+    for (std::uint32_t c = 0; c < 3; ++c) {
+        lo[c] = l[c], hi[c] = h[c];
+        finite &= std::isfinite(l[c]) && std::isfinite(h[c]);
+    }
+    return finite;
+}
+
+// The first of `count` float vectors (3 components, `stride` apart) whose length is
+// finite and differs from 1 by more than `tolerance`, and, with `sign`, the first whose
+// fourth component is not +-1; UINT64_MAX where there is none.
 struct UnitScan {
     std::uint64_t first_non_unit = UINT64_MAX, first_bad_sign = UINT64_MAX;
 };
-inline UnitScan unit_vectors(const std::uint8_t* p, std::uint64_t count, std::uint64_t stride,
-                             double tolerance, bool sign) {
+// Vector by vector, in double precision: for accessors the first test doubts.
+inline UnitScan unit_vectors_exact(const std::uint8_t* p, std::uint64_t count, std::uint64_t stride,
+                                   double tolerance, bool sign) {
     UnitScan s;
-    // A first pass without square roots or branches: squared lengths well inside
-    // (1 +- tolerance)^2 (a margin far above float rounding) and signs of +-1 pass; any
-    // other vector, NaN included, sends the whole accessor to the exact pass below.
-    const float inner_lo = static_cast<float>((1 - tolerance) * (1 - tolerance) + 1e-4);
-    const float inner_hi = static_cast<float>((1 + tolerance) * (1 + tolerance) - 1e-4);
-    const unsigned doubtful = sign ? doubtful_vectors<true>(p, count, stride, inner_lo, inner_hi)
-                                   : doubtful_vectors<false>(p, count, stride, inner_lo, inner_hi);
-    if (!doubtful) return s;
     for (std::uint64_t i = 0; i < count; ++i, p += stride) {
         float v[4] = {};
         std::memcpy(v, p, (sign ? 4 : 3) * sizeof(float));
@@ -228,6 +310,14 @@ inline UnitScan unit_vectors(const std::uint8_t* p, std::uint64_t count, std::ui
         if (sign && v[3] != 1 && v[3] != -1 && s.first_bad_sign == UINT64_MAX) s.first_bad_sign = i;
     }
     return s;
+}
+// A first pass without square roots or branches, then the exact one where it doubts.
+inline UnitScan unit_vectors(const std::uint8_t* p, std::uint64_t count, std::uint64_t stride,
+                             double tolerance, bool sign) {
+    const UnitBand band = unit_band(tolerance);
+    const unsigned doubtful = sign ? doubtful_vectors<true>(p, count, stride, band)
+                                   : doubtful_vectors<false>(p, count, stride, band);
+    return doubtful ? unit_vectors_exact(p, count, stride, tolerance, sign) : UnitScan{};
 }
 
 } // namespace sherpa::detail::kernels

@@ -253,3 +253,66 @@ TEST(DataPass, BoundsHoldOnlyForValuesReadInFullAndInside) {
 }
 
 } // namespace
+
+namespace {
+
+bool has(const sherpa::ValidationReport& r, std::string_view code, std::string_view pointer,
+         std::string_view text) {
+    for (const auto& m : r.messages)
+        if (m.code == code && m.pointer == pointer && m.message.find(text) != std::string::npos)
+            return true;
+    return false;
+}
+
+// Triangle indices and normals long enough for the SIMD blocks, read once for both the
+// min/max check and their use's checks: every message of both still fires, at the
+// element the plain loops name.
+TEST(DataPass, SummarizedAccessorsKeepEveryMessage) {
+    constexpr std::size_t kVertices = 100, kIndices = 300;
+    std::vector<std::uint8_t> bytes(kVertices * 24 + kIndices * 2);
+    std::vector<float> positions, normals;
+    for (std::size_t i = 0; i < kVertices; ++i) {
+        positions.insert(positions.end(), {float(i % 10), float(i / 10), 0});
+        normals.insert(normals.end(), {0, 0, i == 77 ? 1.5f : 1.0f}); // 77: not unit
+    }
+    std::vector<std::uint16_t> indices;
+    for (std::size_t i = 0; i < kIndices; ++i) indices.push_back(std::uint16_t(i % kVertices));
+    indices[250] = 140;        // past the 100 vertices
+    indices[31] = indices[30]; // triangle 10 repeats an index
+    std::memcpy(bytes.data(), positions.data(), kVertices * 12);
+    std::memcpy(bytes.data() + kVertices * 12, normals.data(), kVertices * 12);
+    std::memcpy(bytes.data() + kVertices * 24, indices.data(), kIndices * 2);
+    nlohmann::json root = nlohmann::json::parse(R"({
+        "asset": {"version": "2.0"},
+        "buffers": [{"byteLength": 3000}],
+        "bufferViews": [{"buffer": 0, "byteLength": 2400, "byteStride": 12, "target": 34962},
+                        {"buffer": 0, "byteOffset": 2400, "byteLength": 600, "target": 34963}],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": 100, "type": "VEC3",
+             "min": [0, 0, 0], "max": [9, 9, 0]},
+            {"bufferView": 0, "byteOffset": 1200, "componentType": 5126, "count": 100,
+             "type": "VEC3", "min": [0, 0, 1], "max": [0, 0, 1]},
+            {"bufferView": 1, "componentType": 5123, "count": 300, "type": "SCALAR",
+             "min": [0], "max": [99]}
+        ],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1},
+                                    "indices": 2}]}]})");
+    sherpa::ValidationReport report;
+    sherpa::detail::DocumentValidator validator(root, {}, false, report);
+    const std::span<const std::uint8_t> buffer(bytes);
+    validator.check_data(std::span(&buffer, 1));
+    EXPECT_TRUE(has(report, "ACCESSOR_MAX_MISMATCH", "/accessors/1/max/2", "(1.500000)"));
+    EXPECT_TRUE(
+        has(report, "ACCESSOR_ELEMENT_OUT_OF_MAX_BOUND", "/accessors/1/max/2", "1 element(s)"));
+    EXPECT_TRUE(has(report, "ACCESSOR_VECTOR3_NON_UNIT", "/meshes/0/primitives/0/attributes/NORMAL",
+                    "element 77 "));
+    EXPECT_TRUE(has(report, "ACCESSOR_MAX_MISMATCH", "/accessors/2/max/0", "(140.000000)"));
+    EXPECT_TRUE(has(report, "ACCESSOR_INDEX_OOB", "/meshes/0/primitives/0/indices",
+                    "index 250 has value 140"));
+    EXPECT_TRUE(has(report, "ACCESSOR_INDEX_TRIANGLE_DEGENERATE", "/meshes/0/primitives/0/indices",
+                    "contains 1 degenerate"));
+    const std::vector<std::uint8_t> hold = validator.take_bounds_hold();
+    EXPECT_EQ(hold, (std::vector<std::uint8_t>{1, 0, 0}));
+}
+
+} // namespace

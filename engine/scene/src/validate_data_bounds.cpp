@@ -6,6 +6,7 @@
 #include "validate_kernels.h"
 #include "validate_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -17,8 +18,7 @@ namespace {
 // Per-component bounds of the finite values, in the component type itself (one typed
 // pass over the bytes; the data pass's hot loop). Returns the first non-finite
 // component's flat index, or UINT64_MAX.
-template <typename C, std::uint32_t N>
-bool scan_fixed(const Reader& r, std::vector<double>& lo, std::vector<double>& hi) {
+template <typename C, std::uint32_t N> bool scan_fixed(const Reader& r, double* lo, double* hi) {
     C l[N], h[N];
     if (!kernels::bounds<C, N>(r.base(), r.count(), r.stride(), l, h)) return false;
     for (std::uint32_t c = 0; c < N; ++c)
@@ -26,8 +26,7 @@ bool scan_fixed(const Reader& r, std::vector<double>& lo, std::vector<double>& h
     return true;
 }
 
-template <typename C>
-std::uint64_t scan_bounds(const Reader& r, std::vector<double>& lo, std::vector<double>& hi) {
+template <typename C> std::uint64_t scan_bounds(const Reader& r, double* lo, double* hi) {
     const std::uint32_t n = r.components();
     // The common shapes in one typed pass; non-finite floats and other shapes below.
     if (r.count() > 0 &&
@@ -91,10 +90,13 @@ void summarize(const AccessorUsage& u, const Reader& r, int component_type, Summ
 void check_min_max(Validation& v, std::size_t index, const Reader& r, const Summary& known) {
     const AccessorLayout& a = v.accessors[index];
     const Json& acc = v.array("accessors")[index];
-    const std::string where = ptr("/accessors", index);
+    // Built only for a message (per accessor, allocations were a share of this check).
+    auto where = [&] { return ptr("/accessors", index); };
     const std::uint32_t n = r.components();
     if (n == 0 || n > 16) return;
-    std::vector<double> lo(n, INFINITY), hi(n, -INFINITY);
+    double lo[16], hi[16];
+    std::fill_n(lo, n, INFINITY);
+    std::fill_n(hi, n, -INFINITY);
     std::uint64_t bad = UINT64_MAX;
     if (known.kind == Summary::Kind::Indices) {
         lo[0] = static_cast<double>(known.indices.low);
@@ -125,7 +127,7 @@ void check_min_max(Validation& v, std::size_t index, const Reader& r, const Summ
     }
     if (bad != UINT64_MAX) {
         const double x = r.raw(bad / n, static_cast<std::uint32_t>(bad % n));
-        v.add("ACCESSOR_INVALID_FLOAT", Severity::Error, where,
+        v.add("ACCESSOR_INVALID_FLOAT", Severity::Error, where(),
               "Accessor element at index " + std::to_string(bad) + " is " +
                   (std::isnan(x) ? "NaN" : "Infinity") + ".");
     }
@@ -135,10 +137,13 @@ void check_min_max(Validation& v, std::size_t index, const Reader& r, const Summ
     };
     // Every value finite and inside both declared bounds: what the importer's range
     // check would find too (its values are these, normalized by a monotonic map).
-    bool hold = bad == UINT64_MAX && a.has_min && a.has_max && !a.sparse;
+    // The declared arrays, looked up once (has_min/has_max: present with n numbers).
+    const Json* declared_min = a.has_min ? &acc["min"] : nullptr;
+    const Json* declared_max = a.has_max ? &acc["max"] : nullptr;
+    bool hold = bad == UINT64_MAX && declared_min && declared_max && !a.sparse;
     for (std::uint32_t c = 0; c < n && hold; ++c) {
-        const Json& dmin = acc["min"][c];
-        const Json& dmax = acc["max"][c];
+        const Json& dmin = (*declared_min)[c];
+        const Json& dmax = (*declared_max)[c];
         hold = dmin.is_number() && dmax.is_number() &&
                (lo[c] >= dmin.get<double>() || same(dmin.get<double>(), lo[c])) &&
                (hi[c] <= dmax.get<double>() || same(dmax.get<double>(), hi[c]));
@@ -146,15 +151,15 @@ void check_min_max(Validation& v, std::size_t index, const Reader& r, const Summ
     if (hold && index < v.bounds_hold.size()) v.bounds_hold[index] = 1;
     for (int side = 0; side < 2; ++side) {
         const bool is_min = side == 0;
-        if (!(is_min ? a.has_min : a.has_max)) continue;
-        const Json& declared = acc[is_min ? "min" : "max"];
+        if (!(is_min ? declared_min : declared_max)) continue;
+        const Json& declared = *(is_min ? declared_min : declared_max);
         for (std::uint32_t c = 0; c < n; ++c) {
             if (!declared[c].is_number()) continue;
             const double d = declared[c].get<double>();
             const double actual = is_min ? lo[c] : hi[c];
             const bool mismatch = std::isfinite(actual) && !same(d, actual);
             if (!mismatch && bad == UINT64_MAX) continue; // no message: no pointer to build
-            const std::string p = ptr(ptr(where, is_min ? "min" : "max"), c);
+            const std::string p = ptr(ptr(where(), is_min ? "min" : "max"), c);
             if (mismatch)
                 v.add(is_min ? "ACCESSOR_MIN_MISMATCH" : "ACCESSOR_MAX_MISMATCH", Severity::Error,
                       p,

@@ -1,4 +1,4 @@
-// sherpa-bench-validate --node-path CACHE/node_modules [--repeat N] [--nodes N]
+// sherpa-bench-validate --node-path CACHE/node_modules [--repeat N] [--nodes N] [--passes]
 // The validator's cost against the importer's (goal: validation adds <= 10% to parse +
 // process) and against the Khronos glTF-Validator (npm gltf-validator, goal >= 20x
 // faster), all in one run: DamagedHelmet, 2CylinderEngine and a generated file of N
@@ -6,7 +6,10 @@
 // shared machine the fastest run is the one least disturbed; a median still moved by
 // several times between runs). The JavaScript time is the
 // validator's own (validateBytes, JSON parse included, Node start-up excluded); Sherpa's
-// is shown alone and with the JSON parse the importer shares with it.
+// is shown alone and with the JSON parse the importer shares with it. --passes adds the
+// validator's passes one by one per file (validate_passes.cpp).
+#include "validate_passes.h"
+
 #include <sherpa/scene/scene_loader.h>
 
 #include <algorithm>
@@ -87,6 +90,7 @@ int main(int argc, char** argv) {
     int repeat = 5;
     std::size_t many = 100000;
     std::string node_path;
+    bool passes = false;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--repeat") && i + 1 < argc)
             repeat = std::max(1, std::atoi(argv[++i]));
@@ -94,6 +98,8 @@ int main(int argc, char** argv) {
             many = static_cast<std::size_t>(std::max(1, std::atoi(argv[++i])));
         else if (!std::strcmp(argv[i], "--node-path") && i + 1 < argc)
             node_path = argv[++i];
+        else if (!std::strcmp(argv[i], "--passes"))
+            passes = true;
     }
     const fs::path assets = fs::path(SHERPA_ASSETS_DIR) / "gltf";
     const fs::path script =
@@ -135,5 +141,8 @@ int main(int argc, char** argv) {
     std::printf("fastest of %d runs per column; share: validate / (parse + process), goal <= "
                 "10%%; x faster: Khronos (JS) time / Sherpa's, goal >= 20x\n",
                 repeat);
+    if (passes)
+        for (const fs::path& f : files)
+            if (!sherpa::bench::print_passes(f, std::max(repeat, 20))) return 1;
     return 0;
 }

@@ -178,12 +178,17 @@ void validate_buffers(Validation& v) {
     const Json& views_json = v.array("bufferViews");
     std::vector<View> views(views_json.size());
     v.view_roles.assign(views_json.size(), ViewRole::None);
+    v.declared_views.assign(views_json.size(), {});
     for (std::size_t i = 0; i < views_json.size(); ++i) {
         const Json& bv = views_json[i];
         View& view = views[i];
+        Validation::DeclaredView& declared = v.declared_views[i];
+        declared.object = bv.is_object();
+        declared.has_stride = declared.object && bv.contains("byteStride");
+        declared.has_target = declared.object && bv.contains("target");
+        declared.byte_offset = int_or(bv, "byteOffset", 0);
         view.buffer = ref(v, bv, "buffer", "buffers");
-        view.offset =
-            static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(bv, "byteOffset", 0), 0));
+        view.offset = static_cast<std::uint64_t>(std::max<std::int64_t>(declared.byte_offset, 0));
         view.length =
             static_cast<std::uint64_t>(std::max<std::int64_t>(int_or(bv, "byteLength", 0), 0));
         view.stride =
@@ -225,6 +230,7 @@ void validate_buffers(Validation& v) {
     const Json& accessors = v.array("accessors");
     v.accessors.assign(accessors.size(), {});
     v.accessor_roles.assign(accessors.size(), AccessorRole::None);
+    v.declared_accessors.assign(accessors.size(), {});
     for (std::size_t i = 0; i < accessors.size(); ++i) {
         const Json& a = accessors[i];
         if (!a.is_object()) continue;
@@ -236,9 +242,10 @@ void validate_buffers(Validation& v) {
         const std::uint32_t comps = type != a.end() && type->is_string()
                                         ? components_of(type->get_ref<const std::string&>())
                                         : 0;
-        const std::int64_t count = int_or(a, "count", 0);
-        const bool normalized =
-            a.contains("normalized") && a["normalized"].is_boolean() && a["normalized"].get<bool>();
+        const std::int64_t declared_count = int_or(a, "count", -1);
+        const std::int64_t count = std::max<std::int64_t>(declared_count, 0);
+        const auto norm_it = a.find("normalized");
+        const bool normalized = norm_it != a.end() && norm_it->is_boolean() && norm_it->get<bool>();
         if (normalized && (ct == 5126 || ct == 5125))
             v.add("ACCESSOR_NORMALIZED_INVALID", Severity::Error, ptr(where, "normalized"),
                   "Only (u)byte and (u)short accessors can be normalized.");
@@ -267,8 +274,10 @@ void validate_buffers(Validation& v) {
                       "Sparse accessor overrides more elements (" + std::to_string(sc) +
                           ") than the base accessor contains (" + std::to_string(count) + ").");
         }
-        const std::int64_t offset = std::max<std::int64_t>(int_or(a, "byteOffset", 0), 0);
+        const std::int64_t declared_offset = int_or(a, "byteOffset", 0);
+        const std::int64_t offset = std::max<std::int64_t>(declared_offset, 0);
         const std::int64_t vi = ref(v, a, "bufferView", "bufferViews");
+        v.declared_accessors[i] = {vi, declared_count, declared_offset, ct, comps, normalized};
         if (csize && offset % csize)
             v.add("ACCESSOR_OFFSET_ALIGNMENT", Severity::Error, ptr(where, "byteOffset"),
                   "Offset " + std::to_string(offset) +

@@ -17,147 +17,12 @@
 namespace sherpa::detail {
 namespace {
 
-// Per-component bounds of the finite values, in the component type itself (one typed
-// pass over the bytes; the data pass's hot loop). Returns the first non-finite
-// component's flat index, or UINT64_MAX.
-template <typename C, std::uint32_t N>
-bool scan_fixed(const Reader& r, std::vector<double>& lo, std::vector<double>& hi) {
-    C l[N], h[N];
-    if (!kernels::bounds<C, N>(r.base(), r.count(), r.stride(), l, h)) return false;
-    for (std::uint32_t c = 0; c < N; ++c)
-        lo[c] = static_cast<double>(l[c]), hi[c] = static_cast<double>(h[c]);
-    return true;
-}
-
-template <typename C>
-std::uint64_t scan_bounds(const Reader& r, std::vector<double>& lo, std::vector<double>& hi) {
-    const std::uint32_t n = r.components();
-    // The common shapes in one typed pass; non-finite floats and other shapes below.
-    if (r.count() > 0 &&
-        ((n == 1 && scan_fixed<C, 1>(r, lo, hi)) || (n == 2 && scan_fixed<C, 2>(r, lo, hi)) ||
-         (n == 3 && scan_fixed<C, 3>(r, lo, hi)) || (n == 4 && scan_fixed<C, 4>(r, lo, hi)) ||
-         (n == 16 && scan_fixed<C, 16>(r, lo, hi))))
-        return UINT64_MAX;
-    C l[16], h[16];
-    for (std::uint32_t c = 0; c < n; ++c) {
-        l[c] = std::numeric_limits<C>::max();
-        h[c] = std::numeric_limits<C>::lowest();
-    }
-    std::uint64_t first_bad = UINT64_MAX;
-    bool seen[16] = {};
-    const std::uint8_t* p = r.base();
-    for (std::uint64_t i = 0; i < r.count(); ++i, p += r.stride())
-        for (std::uint32_t c = 0; c < n; ++c) {
-            C x;
-            std::memcpy(&x, p + c * sizeof(C), sizeof(C));
-            if constexpr (std::is_floating_point_v<C>) {
-                if (!std::isfinite(x)) {
-                    first_bad = std::min(first_bad, i * n + c);
-                    continue;
-                }
-            }
-            seen[c] = true;
-            l[c] = std::min(l[c], x);
-            h[c] = std::max(h[c], x);
-        }
-    for (std::uint32_t c = 0; c < n; ++c)
-        if (seen[c]) lo[c] = static_cast<double>(l[c]), hi[c] = static_cast<double>(h[c]);
-    return first_bad;
-}
-
-void check_min_max(Validation& v, std::size_t index, const Reader& r) {
-    const AccessorLayout& a = v.accessors[index];
-    const Json& acc = v.array("accessors")[index];
-    const std::string where = ptr("/accessors", index);
-    const std::uint32_t n = r.components();
-    if (n == 0 || n > 16) return;
-    std::vector<double> lo(n, INFINITY), hi(n, -INFINITY);
-    std::uint64_t bad = UINT64_MAX;
-    switch (r.component_type()) {
-    case 5120:
-        bad = scan_bounds<std::int8_t>(r, lo, hi);
-        break;
-    case 5121:
-        bad = scan_bounds<std::uint8_t>(r, lo, hi);
-        break;
-    case 5122:
-        bad = scan_bounds<std::int16_t>(r, lo, hi);
-        break;
-    case 5123:
-        bad = scan_bounds<std::uint16_t>(r, lo, hi);
-        break;
-    case 5125:
-        bad = scan_bounds<std::uint32_t>(r, lo, hi);
-        break;
-    default:
-        bad = scan_bounds<float>(r, lo, hi);
-        break;
-    }
-    if (bad != UINT64_MAX) {
-        const double x = r.raw(bad / n, static_cast<std::uint32_t>(bad % n));
-        v.add("ACCESSOR_INVALID_FLOAT", Severity::Error, where,
-              "Accessor element at index " + std::to_string(bad) + " is " +
-                  (std::isnan(x) ? "NaN" : "Infinity") + ".");
-    }
-    auto same = [&](double declared, double actual) {
-        return r.is_float() ? static_cast<float>(declared) == static_cast<float>(actual)
-                            : declared == actual;
-    };
-    // Every value finite and inside both declared bounds: what the importer's range
-    // check would find too (its values are these, normalized by a monotonic map).
-    bool hold = bad == UINT64_MAX && a.has_min && a.has_max && !a.sparse;
-    for (std::uint32_t c = 0; c < n && hold; ++c) {
-        const Json& dmin = acc["min"][c];
-        const Json& dmax = acc["max"][c];
-        hold = dmin.is_number() && dmax.is_number() &&
-               (lo[c] >= dmin.get<double>() || same(dmin.get<double>(), lo[c])) &&
-               (hi[c] <= dmax.get<double>() || same(dmax.get<double>(), hi[c]));
-    }
-    if (hold && index < v.bounds_hold.size()) v.bounds_hold[index] = 1;
-    for (int side = 0; side < 2; ++side) {
-        const bool is_min = side == 0;
-        if (!(is_min ? a.has_min : a.has_max)) continue;
-        const Json& declared = acc[is_min ? "min" : "max"];
-        for (std::uint32_t c = 0; c < n; ++c) {
-            if (!declared[c].is_number()) continue;
-            const double d = declared[c].get<double>();
-            const double actual = is_min ? lo[c] : hi[c];
-            const bool mismatch = std::isfinite(actual) && !same(d, actual);
-            const std::string p = ptr(ptr(where, is_min ? "min" : "max"), c);
-            if (mismatch)
-                v.add(is_min ? "ACCESSOR_MIN_MISMATCH" : "ACCESSOR_MAX_MISMATCH", Severity::Error,
-                      p,
-                      std::string("Declared ") + (is_min ? "minimum" : "maximum") +
-                          " value for this component (" + std::to_string(d) +
-                          ") does not match actual " + (is_min ? "minimum" : "maximum") + " (" +
-                          std::to_string(actual) + ").");
-            // Infinities are outside the bounds too (the finite bounds above leave them
-            // out), as the Khronos validator counts them.
-            if ((mismatch && (is_min ? actual < d : actual > d)) || bad != UINT64_MAX) {
-                std::uint64_t outside = 0;
-                for (std::uint64_t i = 0; i < r.count(); ++i) {
-                    const double x = r.raw(i, c);
-                    outside += is_min ? (x < d && !same(d, x)) : (x > d && !same(d, x));
-                }
-                if (outside)
-                    v.add(is_min ? "ACCESSOR_ELEMENT_OUT_OF_MIN_BOUND"
-                                 : "ACCESSOR_ELEMENT_OUT_OF_MAX_BOUND",
-                          Severity::Error, p,
-                          "Accessor contains " + std::to_string(outside) + " element(s) " +
-                              (is_min ? "less than declared minimum"
-                                      : "greater than declared maximum") +
-                              " value " + std::to_string(d) + ".");
-            }
-        }
-    }
-}
-
 double length3(const Reader& r, std::uint64_t i) {
     const double x = r.value(i, 0), y = r.value(i, 1), z = r.value(i, 2);
     return std::sqrt(x * x + y * y + z * z);
 }
 
-void check_use(Validation& v, const AccessorUsage& u, const Reader& r,
+void check_use(Validation& v, const AccessorUsage& u, const Reader& r, const Summary& known,
                const std::vector<AccessorLayout>& layouts, Buffers buffers) {
     const std::uint64_t n = r.count();
     auto once = [&](bool& said, std::string_view code, Severity s, std::string message) {
@@ -171,12 +36,19 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r,
         const int type = v.accessors[u.accessor].component_type;
         if (r.components() != 1 || (type != 5121 && type != 5123 && type != 5125)) break;
         const bool triangles = u.mode == 4;
-        const kernels::IndexScan s =
-            type == 5121
-                ? kernels::indices<std::uint8_t>(r.base(), n, r.stride(), u.limit, triangles)
+        // The summary the min/max check used, where it was made for this mode.
+        const kernels::IndexSummary summary =
+            known.kind == Summary::Kind::Indices && known.triangles == triangles ? known.indices
+            : type == 5121
+                ? kernels::summarize_indices<std::uint8_t>(r.base(), n, r.stride(), triangles)
             : type == 5123
-                ? kernels::indices<std::uint16_t>(r.base(), n, r.stride(), u.limit, triangles)
-                : kernels::indices<std::uint32_t>(r.base(), n, r.stride(), u.limit, triangles);
+                ? kernels::summarize_indices<std::uint16_t>(r.base(), n, r.stride(), triangles)
+                : kernels::summarize_indices<std::uint32_t>(r.base(), n, r.stride(), triangles);
+        const kernels::IndexScan s =
+            type == 5121 ? kernels::indices<std::uint8_t>(r.base(), n, r.stride(), u.limit, summary)
+            : type == 5123
+                ? kernels::indices<std::uint16_t>(r.base(), n, r.stride(), u.limit, summary)
+                : kernels::indices<std::uint32_t>(r.base(), n, r.stride(), u.limit, summary);
         if (s.first_over != UINT64_MAX)
             v.add("ACCESSOR_INDEX_OOB", Severity::Error, u.pointer,
                   "Indices accessor element at index " + std::to_string(s.first_over) +
@@ -201,14 +73,18 @@ void check_use(Validation& v, const AccessorUsage& u, const Reader& r,
         // Float vectors (the common case) in one typed pass, to the first of each problem.
         std::uint64_t from = 0;
         if (r.is_float()) {
+            // The first test ran with the min/max check's pass where it was summarized.
+            if (known.kind == Summary::Kind::Normals && !sign && !known.doubtful) break;
             const kernels::UnitScan s =
-                kernels::unit_vectors(r.base(), n, r.stride(), 0.00674, sign);
+                known.kind == Summary::Kind::Normals && !sign
+                    ? kernels::unit_vectors_exact(r.base(), n, r.stride(), kUnitTolerance, sign)
+                    : kernels::unit_vectors(r.base(), n, r.stride(), kUnitTolerance, sign);
             if (s.first_non_unit == UINT64_MAX && s.first_bad_sign == UINT64_MAX) break;
             from = std::min(s.first_non_unit, s.first_bad_sign);
         }
         for (std::uint64_t i = from; i < n; ++i) {
             const double len = length3(r, i);
-            if (std::isfinite(len) && std::abs(len - 1) > 0.00674)
+            if (std::isfinite(len) && std::abs(len - 1) > kUnitTolerance)
                 once(a, "ACCESSOR_VECTOR3_NON_UNIT", Severity::Error,
                      "Vector3 at accessor element " + std::to_string(i) +
                          " is not of unit length: " + std::to_string(len) + ".");
@@ -368,15 +244,25 @@ void validate_data(Validation& v, Buffers buffers) {
         l.offset = 0;
         l.stride = std::uint64_t{component_size(l.component_type)} * l.components;
     }
+    // The first use of an accessor that reads all of it anyway summarizes it first.
+    std::vector<Summary> summaries(layouts.size());
+    for (const AccessorUsage& u : v.usages) {
+        if (u.accessor >= layouts.size() || layouts[u.accessor].sparse ||
+            summaries[u.accessor].kind != Summary::Kind::None)
+            continue;
+        const Reader r(layouts[u.accessor], spans);
+        if (r.ok() && r.count() > 0)
+            summarize(u, r, layouts[u.accessor].component_type, summaries[u.accessor]);
+    }
     for (std::size_t i = 0; i < layouts.size(); ++i) {
         if (layouts[i].sparse) continue; // overrides that could not be applied: not read
         const Reader r(layouts[i], spans);
-        if (r.ok()) check_min_max(v, i, r);
+        if (r.ok()) check_min_max(v, i, r, summaries[i]);
     }
     for (const AccessorUsage& u : v.usages) {
         if (u.accessor >= layouts.size() || layouts[u.accessor].sparse) continue;
         const Reader r(layouts[u.accessor], spans);
-        if (r.ok()) check_use(v, u, r, layouts, spans);
+        if (r.ok()) check_use(v, u, r, summaries[u.accessor], layouts, spans);
     }
 }
 

@@ -112,6 +112,26 @@ struct Validation {
     // overrides) and every one is finite and inside its declared min and max. The
     // importer's declared-range check believes it rather than scanning them again.
     std::vector<std::uint8_t> bounds_hold;
+    // Per accessor and buffer view, the properties the buffer pass reads once for the
+    // passes after it (the meshes pass asked the JSON for them again per attribute: a
+    // map look-up each, most of that pass's time). Defaults where a value is absent, of
+    // another type, or the element is no object.
+    struct DeclaredAccessor {
+        std::int64_t view = -1;          // the bufferView, resolved, or -1
+        std::int64_t count = -1;         // integer `count`, or -1
+        std::int64_t byte_offset = 0;    // integer `byteOffset` as written (may be < 0)
+        std::int64_t component_type = 0; // integer `componentType`, or 0
+        std::uint32_t components = 0;    // of a string `type` (1 only for "SCALAR")
+        bool normalized = false;         // `normalized` is true
+    };
+    struct DeclaredView {
+        bool object = false;          // the element is an object
+        bool has_stride = false;      // it has a byteStride (of any value)
+        bool has_target = false;      // it has a target (of any value)
+        std::int64_t byte_offset = 0; // integer `byteOffset`, or 0
+    };
+    std::vector<DeclaredAccessor> declared_accessors{}; // filled by validate_buffers
+    std::vector<DeclaredView> declared_views{};
     // array()'s look-ups so far, by the key's address.
     struct CachedArray {
         const char* key = nullptr;

@@ -97,22 +97,23 @@ void validate_meshes(Validation& v) {
     const Json& meshes = v.array("meshes");
     const Json& accessors = v.array("accessors");
     const Json& views = v.array("bufferViews");
-    auto view_of = [&](std::int64_t a) -> const Json& {
-        const std::int64_t vi =
-            ref(v, accessors[static_cast<std::size_t>(a)], "bufferView", "bufferViews");
-        return vi >= 0 ? views[static_cast<std::size_t>(vi)] : Validation::member(views, "");
+    // The buffer pass's reading of each accessor and view (validate_internal.h).
+    const auto& declared = v.declared_accessors;
+    auto view_of = [&](std::int64_t a) {
+        const std::int64_t vi = declared[static_cast<std::size_t>(a)].view;
+        return vi >= 0 ? v.declared_views[static_cast<std::size_t>(vi)]
+                       : Validation::DeclaredView{};
     };
     // Per buffer view without byteStride: the vertex accessors that read it.
     std::vector<std::vector<std::int64_t>> view_readers(views.size());
     // A view without `target` is hinted at its first vertex or index use only.
     std::vector<std::uint8_t> target_hinted(views.size());
     auto target_missing = [&](std::int64_t a) {
-        const std::int64_t vi =
-            ref(v, accessors[static_cast<std::size_t>(a)], "bufferView", "bufferViews");
+        const std::int64_t vi = declared[static_cast<std::size_t>(a)].view;
         if (vi < 0 || target_hinted[static_cast<std::size_t>(vi)]) return false;
         target_hinted[static_cast<std::size_t>(vi)] = 1;
-        const Json& view = views[static_cast<std::size_t>(vi)];
-        return view.is_object() && !view.contains("target");
+        const Validation::DeclaredView& view = v.declared_views[static_cast<std::size_t>(vi)];
+        return view.object && !view.has_target;
     };
     for (std::size_t m = 0; m < meshes.size(); ++m) {
         const Json& prim_array = Validation::member(meshes[m], "primitives");
@@ -170,12 +171,10 @@ void validate_meshes(Validation& v) {
                 v.use_accessor(a, AccessorRole::VertexAttribute, ViewRole::VertexBuffer, ap);
                 const Json& acc = accessors[static_cast<std::size_t>(a)];
                 const AccessorLayout& layout = v.accessors[static_cast<std::size_t>(a)];
-                const std::uint32_t comps =
-                    acc.contains("type") && acc["type"].is_string()
-                        ? components_of(acc["type"].get_ref<const std::string&>())
-                        : 0;
-                const int ct = static_cast<int>(int_or(acc, "componentType", 0));
-                const bool norm = acc.contains("normalized") && acc["normalized"] == true;
+                const Validation::DeclaredAccessor& d = declared[static_cast<std::size_t>(a)];
+                const std::uint32_t comps = d.components;
+                const int ct = static_cast<int>(d.component_type);
+                const bool norm = d.normalized;
                 if (ct == 5125)
                     v.add("MESH_PRIMITIVE_ATTRIBUTES_ACCESSOR_UNSIGNED_INT", Severity::Error, ap,
                           "Mesh attributes cannot use UNSIGNED_INT component type.");
@@ -187,22 +186,21 @@ void validate_meshes(Validation& v) {
                     v.add("MESH_PRIMITIVE_POSITION_ACCESSOR_WITHOUT_BOUNDS", Severity::Error, ap,
                           "accessor.min and accessor.max must be defined for POSITION attribute "
                           "accessor.");
-                const Json& view = view_of(a);
+                const Validation::DeclaredView view = view_of(a);
                 if (target_missing(a))
                     v.add("BUFFER_VIEW_TARGET_MISSING", Severity::Hint, ap,
                           "bufferView.target should be set for vertex or index data.");
-                const std::int64_t view_offset = int_or(view, "byteOffset", 0);
-                if (view.is_object() && view_offset >= 0 && view_offset < (std::int64_t{1} << 53)) {
+                const std::int64_t view_offset = view.byte_offset;
+                if (view.object && view_offset >= 0 && view_offset < (std::int64_t{1} << 53)) {
                     // Offsets and, without a stride, the element size: 4-byte multiples.
-                    const std::int64_t offset = int_or(acc, "byteOffset", 0);
+                    const std::int64_t offset = d.byte_offset;
                     if (offset % 4 || (view_offset + offset) % 4 ||
-                        (!view.contains("byteStride") &&
-                         (std::int64_t{component_size(ct)} * comps) % 4))
+                        (!view.has_stride && (std::int64_t{component_size(ct)} * comps) % 4))
                         v.add("MESH_PRIMITIVE_ACCESSOR_UNALIGNED", Severity::Error, ap,
                               "Vertex attribute data must be aligned to 4-byte boundaries.");
-                    const std::int64_t vi = ref(v, acc, "bufferView", "bufferViews");
+                    const std::int64_t vi = d.view;
                     auto& readers = view_readers[static_cast<std::size_t>(vi)];
-                    if (!view.contains("byteStride") &&
+                    if (!view.has_stride &&
                         std::find(readers.begin(), readers.end(), a) == readers.end()) {
                         readers.push_back(a);
                         if (readers.size() > 1)
@@ -211,7 +209,7 @@ void validate_meshes(Validation& v) {
                                   "accessors use the same buffer view.");
                     }
                 }
-                const std::int64_t count = int_or(acc, "count", -1);
+                const std::int64_t count = d.count;
                 if (name == "POSITION") position_count = count;
                 if (first_count < 0) first_count = count;
                 AccessorUse use = AccessorUse::Position;
@@ -231,8 +229,7 @@ void validate_meshes(Validation& v) {
             }
             const std::int64_t vertex_count = position_count >= 0 ? position_count : first_count;
             for (const auto& [name, a] : resolved)
-                if (const std::int64_t c =
-                        int_or(accessors[static_cast<std::size_t>(a)], "count", -1);
+                if (const std::int64_t c = declared[static_cast<std::size_t>(a)].count;
                     c >= 0 && vertex_count >= 0 && c != vertex_count)
                     v.add("MESH_PRIMITIVE_UNEQUAL_ACCESSOR_COUNT", Severity::Error,
                           ptr(attr_where, name),
@@ -266,31 +263,29 @@ void validate_meshes(Validation& v) {
             if (const std::int64_t ia = ref(v, prim, "indices", "accessors"); ia >= 0) {
                 const std::string ip = ptr(where, "indices");
                 v.use_accessor(ia, AccessorRole::PrimitiveIndices, ViewRole::IndexBuffer, ip);
-                const Json& acc = accessors[static_cast<std::size_t>(ia)];
-                const std::int64_t ct = int_or(acc, "componentType", 0);
-                const bool format_ok = acc.contains("type") && acc["type"] == "SCALAR" &&
-                                       (ct == 5121 || ct == 5123 || ct == 5125) &&
-                                       !(acc.contains("normalized") && acc["normalized"] == true);
+                const Validation::DeclaredAccessor& d = declared[static_cast<std::size_t>(ia)];
+                const std::int64_t ct = d.component_type;
+                const bool format_ok = d.components == 1 && // "SCALAR"
+                                       (ct == 5121 || ct == 5123 || ct == 5125) && !d.normalized;
                 if (!format_ok)
                     v.add("MESH_PRIMITIVE_INDICES_ACCESSOR_INVALID_FORMAT", Severity::Error, ip,
                           "Invalid indices accessor format. Must be one of ('{SCALAR, "
                           "UNSIGNED_BYTE}', "
                           "'{SCALAR, UNSIGNED_SHORT}', '{SCALAR, UNSIGNED_INT}').");
-                const Json& view = view_of(ia);
-                if (view.is_object() && view.contains("byteStride"))
+                const Validation::DeclaredView view = view_of(ia);
+                if (view.object && view.has_stride)
                     v.add("MESH_PRIMITIVE_INDICES_ACCESSOR_WITH_BYTESTRIDE", Severity::Error, ip,
                           "bufferView.byteStride must not be defined for indices accessor.");
                 if (target_missing(ia))
                     v.add("BUFFER_VIEW_TARGET_MISSING", Severity::Hint, ip,
                           "bufferView.target should be set for vertex or index data.");
-                element_count = int_or(acc, "count", -1);
+                element_count = d.count;
                 AccessorUsage u{static_cast<std::size_t>(ia), AccessorUse::Indices, ip};
                 u.limit = vertex_count > 0 ? static_cast<std::uint64_t>(vertex_count) : 0;
                 u.mode = mode;
                 // Khronos reads no index data of another format or through a stride; with
                 // no vertex count known (no attribute resolves) every index is past it.
-                if (format_ok && !(view.is_object() && view.contains("byteStride")))
-                    v.usages.push_back(u);
+                if (format_ok && !(view.object && view.has_stride)) v.usages.push_back(u);
             }
             if (element_count >= 0 && mode >= 0 && mode <= 6) {
                 const bool ok = mode == 0   ? element_count > 0
@@ -333,8 +328,8 @@ void validate_meshes(Validation& v) {
                             v.add("MESH_PRIMITIVE_MORPH_TARGET_NO_BASE_ACCESSOR", Severity::Error,
                                   tp,
                                   "The mesh primitive does not define this attribute semantic.");
-                        else if (int_or(accessors[static_cast<std::size_t>(as_int(value))], "count",
-                                        -1) != vertex_count)
+                        else if (declared[static_cast<std::size_t>(as_int(value))].count !=
+                                 vertex_count)
                             v.add("MESH_PRIMITIVE_MORPH_TARGET_INVALID_ATTRIBUTE_COUNT",
                                   Severity::Error, tp, "Base accessor has different count.");
                     }

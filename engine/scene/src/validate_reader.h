@@ -4,6 +4,7 @@
 #include "validate_internal.h"
 
 #include "checked_math.h"
+#include "validate_kernels.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -95,5 +96,25 @@ private:
 // ACCESSOR_SPARSE_INDEX_OOB). Empty when the indices are bad or a part cannot be read;
 // the copy is no larger than the base's bytes, or 64 MiB without a base.
 std::vector<std::uint8_t> sparse_values(Validation& v, std::size_t i, Buffers buffers);
+
+// What a use's own pass over an accessor (triangle indices, normals) finds that the
+// min/max check needs too: those bytes are read once, for both.
+struct Summary {
+    enum class Kind : std::uint8_t { None, Indices, Normals } kind = Kind::None;
+    bool triangles = false; // Indices: summarized as a triangle list
+    kernels::IndexSummary indices;
+    bool finite = false, doubtful = false; // Normals: kernels::unit_bounds
+    float lo[3] = {}, hi[3] = {};
+};
+
+constexpr double kUnitTolerance = 0.00674;
+
+// The summary of accessor `u.accessor`, read by `r`, where its use reads all of it
+// anyway (indices of a supported type; packed float normals); `out` untouched else.
+void summarize(const AccessorUsage& u, const Reader& r, int component_type, Summary& out);
+// ACCESSOR_INVALID_FLOAT, ACCESSOR_MIN/MAX_MISMATCH and ACCESSOR_ELEMENT_OUT_OF_MIN/MAX_BOUND
+// of accessor `index`, and Validation::bounds_hold; the bounds from `known` where it
+// has them.
+void check_min_max(Validation& v, std::size_t index, const Reader& r, const Summary& known);
 
 } // namespace sherpa::detail

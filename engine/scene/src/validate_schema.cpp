@@ -5,6 +5,7 @@
 #include "validate_schema_table.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <initializer_list>
@@ -175,7 +176,7 @@ struct Schema {
         case T::ObjArr: {
             if (!j.is_array()) return type_mismatch(j, "array");
             if (j.empty()) add("EMPTY_ENTITY", Severity::Error, at, "Entity cannot be empty.");
-            const Kind* kind = kind_named(pr.target);
+            const Kind* kind = kind_of(pr.target);
             for (std::size_t i = 0; i < j.size(); ++i) {
                 const Scope element(at, i);
                 if (!j[i].is_object())
@@ -207,15 +208,33 @@ struct Schema {
             break;
         }
     }
-    void object(const Json& obj, const char* kind_name) { object(obj, kind_named(kind_name)); }
+    // kind_named's answers so far, by the name's address (the table's literals): a
+    // nested object's kind was a string search over the table per object.
+    struct CachedKind {
+        const char* name = nullptr;
+        const Kind* kind = nullptr;
+    };
+    std::array<CachedKind, 16> kinds{};
+    std::size_t cached_kinds = 0;
+    const Kind* kind_of(const char* name) {
+        for (std::size_t i = 0; i < cached_kinds; ++i)
+            if (kinds[i].name == name) return kinds[i].kind;
+        const Kind* kind = kind_named(name);
+        if (cached_kinds < kinds.size()) kinds[cached_kinds++] = {name, kind};
+        return kind;
+    }
+
+    void object(const Json& obj, const char* kind_name) { object(obj, kind_of(kind_name)); }
     void object(const Json& obj, const Kind* kind) {
         if (!kind) return;
         const bool root = std::strcmp(kind->name, "root") == 0;
+        std::size_t required_seen = 0; // each required property is some key's at most once
         for (const auto& [key, value] : obj.items()) {
             const Prop* found = nullptr;
             for (const Prop& pr : kind->props)
-                if (pr.name[0] == key[0] && key == pr.name) found = &pr; // first letter: cheap
+                if (key == pr.name) found = &pr; // lengths first, then the bytes
             if (found) {
+                required_seen += found->required;
                 const Scope member(at, key);
                 property(value, *found);
             } else if (key == "extensions") {
@@ -237,10 +256,13 @@ struct Schema {
                 add("UNEXPECTED_PROPERTY", Severity::Warning, at, "Unexpected property.");
             }
         }
+        std::size_t required = 0;
+        for (const Prop& pr : kind->props) required += pr.required;
+        if (required_seen == required) return; // no look-up per required property
         for (const Prop& pr : kind->props)
             if (pr.required && !obj.contains(pr.name))
                 add("UNDEFINED_PROPERTY", Severity::Error, at,
-                    std::string("Property '") + pr.name + "' must be defined.");
+                    "Property '" + std::string(pr.name) + "' must be defined.");
     }
 };
 

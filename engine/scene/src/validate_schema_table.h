@@ -25,7 +25,7 @@ enum class T : std::uint8_t {
 };
 
 struct Prop {
-    const char* name;
+    std::string_view name; // with its length: compared with each key of a checked object
     T type;
     bool required = false;
     const char* target = nullptr; // Index*: root array; Obj*: kind

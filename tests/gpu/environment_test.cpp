@@ -103,11 +103,13 @@ TEST_F(EnvironmentTest, FurnaceWhiteSpheresReflectOneAtEveryRoughness) {
 TEST_F(EnvironmentTest, Sh9IrradianceKeepsTheFurnaceAndMakesNoCube) {
     EnvironmentGuard guard{renderer()};
     const gpu::EnvironmentImage uniform = gpu::uniform_environment(glm::vec3(1.0f));
-    renderer().set_environment(&uniform);
-    const gpu::EnvironmentStats cube = renderer().resident().environment;
     gpu::EnvironmentOptions options;
-    options.irradiance = gpu::IrradianceMode::Sh9;
+    options.irradiance = gpu::IrradianceMode::Cube;
     renderer().set_environment(&uniform, options);
+    const gpu::EnvironmentStats cube = renderer().resident().environment;
+    EXPECT_EQ(cube.irradiance_size, 32u);
+    // SH9 is the default.
+    renderer().set_environment(&uniform);
     const gpu::EnvironmentStats sh = renderer().resident().environment;
     EXPECT_EQ(sh.irradiance, gpu::IrradianceMode::Sh9);
     EXPECT_EQ(sh.irradiance_size, 0u);
@@ -135,9 +137,10 @@ TEST_F(EnvironmentTest, Sh9AndCubeIrradianceAgreeOnALinearEnvironment) {
     auto scene = load(write_temp("rough.gltf", sphere_row_gltf(3, 0.0f)).string());
     renderer().load(*scene);
     gpu::FrameRequest s = furnace_view(3, 64);
-    renderer().set_environment(&linear);
-    const auto cube = draw(s);
     gpu::EnvironmentOptions options;
+    options.irradiance = gpu::IrradianceMode::Cube;
+    renderer().set_environment(&linear, options);
+    const auto cube = draw(s);
     options.irradiance = gpu::IrradianceMode::Sh9;
     renderer().set_environment(&linear, options);
     const auto sh = draw(s);
@@ -237,6 +240,40 @@ TEST_F(EnvironmentTest, NoEnvironmentHoldsNothing) {
     EXPECT_TRUE(made.present);
     EXPECT_EQ(made.cube_size, 128u); // a quarter of the width
     EXPECT_GT(made.bytes, 0u);
+}
+
+// The split-sum lookup table is the BRDF's: made with the first environment, reused by
+// the next (no LUT pass: its GPU time is 0), freed with the last and made again after.
+// A frame lit through the reused table is the frame lit through a fresh one.
+TEST_F(EnvironmentTest, LookupTableIsMadeOnceWhileEnvironmentsFollowEachOther) {
+    renderer().set_environment(nullptr);
+    EnvironmentGuard guard{renderer()};
+    auto scene = load(write_temp("lut.gltf", sphere_row_gltf(3, 1.0f)).string());
+    renderer().load(*scene);
+    const gpu::FrameRequest s = furnace_view(3, 48);
+    const gpu::EnvironmentImage room = gpu::room_environment(256);
+    const gpu::EnvironmentImage linear = environment_of(64, [](glm::vec3 d) {
+        return glm::vec3(1.0f + 0.5f * d.x, 1.0f, 1.0f - 0.5f * d.z);
+    });
+    renderer().set_environment(&room);
+    const gpu::EnvironmentStats first = renderer().resident().environment;
+    renderer().set_environment(&linear);
+    renderer().set_environment(&room);
+    const gpu::EnvironmentStats reused = renderer().resident().environment;
+    const auto lit_reused = draw(s);
+    renderer().set_environment(nullptr);
+    EXPECT_EQ(renderer().resident().environment.bytes, 0u);
+    renderer().set_environment(&room);
+    const gpu::EnvironmentStats fresh = renderer().resident().environment;
+    const auto lit_fresh = draw(s);
+    EXPECT_EQ(first.bytes, reused.bytes); // the table's bytes are counted while it is kept
+    EXPECT_EQ(reused.pass_ms[4], 0.0);
+    if (first.gpu_ms > 0.0) { // timestamps on this device
+        EXPECT_GT(first.pass_ms[4], 0.0);
+        EXPECT_GT(fresh.pass_ms[4], 0.0);
+    }
+    EXPECT_EQ(lit_reused, lit_fresh);
+    renderer().unload();
 }
 
 TEST_F(EnvironmentTest, BlenderStudioLightsLoadAndLight) {

@@ -21,6 +21,7 @@ namespace sherpa::gpu {
 namespace {
 
 constexpr VkFormat kFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+constexpr VkFormat kSourceFormat = VK_FORMAT_R32G32B32A32_SFLOAT; // where filtered (else kFormat)
 // Timestamps around the passes: EnvironmentStats::pass_ms but the lookup table's (the
 // BrdfLut's own build).
 constexpr std::uint32_t kStamps = std::size(EnvironmentStats{}.pass_ms);
@@ -104,12 +105,20 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
     stats_.sheen_levels = sheen_levels;
     stats_.lut_size = BrdfLut::kSize;
 
-    // The source in half floats (load_environment() clamped it to their range). Only a
-    // source wider than 4 faces needs mips (read without aliasing at a coarser level);
-    // the others are read at level 0 and make none (a 1024x512 source: 10 blits saved).
+    // The source as it is, in 32-bit floats, where the device filters them linearly (and
+    // blits them, for the mips below): no conversion on the CPU. Else in half floats
+    // (load_environment() clamped it to their range). Only a source wider than 4 faces
+    // needs mips (read without aliasing at a coarser level); the others are read at
+    // level 0 and make none (a 1024x512 source: 10 blits saved).
     const float equirect_lod = std::max(0.0f, std::log2(float(image.width) / float(4 * cube)));
+    VkFormatProperties fp{};
+    vkGetPhysicalDeviceFormatProperties(context.physical_device(), kSourceFormat, &fp);
+    constexpr VkFormatFeatureFlags kSourceFeatures = VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT |
+                                                     VK_FORMAT_FEATURE_BLIT_SRC_BIT |
+                                                     VK_FORMAT_FEATURE_BLIT_DST_BIT;
+    const bool float_source = (fp.optimalTilingFeatures & kSourceFeatures) == kSourceFeatures;
     ImageDesc src_desc;
-    src_desc.format = kFormat;
+    src_desc.format = float_source ? kSourceFormat : kFormat;
     src_desc.width = image.width;
     src_desc.height = image.height;
     src_desc.mip_levels = equirect_lod > 0.0f ? levels_of(std::max(image.width, image.height)) : 1;
@@ -118,11 +127,15 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
     src_desc.name = "environment source";
     ImageHandle source = images.create(src_desc);
     {
-        std::vector<std::uint16_t> half(image.rgba.size());
-        for (std::size_t i = 0; i < half.size(); ++i)
-            half[i] = glm::packHalf1x16(std::min(image.rgba[i], 65504.0f));
         UploadBatch upload(resources);
-        upload.upload_image(source, half.data(), half.size() * sizeof(std::uint16_t));
+        if (float_source) {
+            upload.upload_image(source, image.rgba.data(), image.rgba.size() * sizeof(float));
+        } else {
+            std::vector<std::uint16_t> half(image.rgba.size());
+            for (std::size_t i = 0; i < half.size(); ++i)
+                half[i] = glm::packHalf1x16(std::min(image.rgba[i], 65504.0f));
+            upload.upload_image(source, half.data(), half.size() * sizeof(std::uint16_t));
+        }
         upload.submit_and_wait();
     }
     // The specular cube's level 0 is the radiance cube's, copied (no shader pass).

@@ -45,17 +45,23 @@ Sh9 project_sh9(const EnvironmentImage& image) {
         // The texel's exact solid angle: dphi * (sin(top) - sin(bottom)).
         const double solid_angle = (2.0 * pi / w) * (std::sin(lat_top) - std::sin(lat_bottom));
         const double c = std::cos(lat), s = std::sin(lat);
-        float m[5][3] = {}; // radiance times 1, cos, sin, cos^2, cos sin
+        // Radiance times 1, cos, sin, cos^2, cos sin, per channel: fifteen independent
+        // sums, kept in registers.
+        float r0 = 0, rc = 0, rs = 0, rcc = 0, rcs = 0, g0 = 0, gc = 0, gs = 0, gcc = 0, gcs = 0,
+              b0 = 0, bc = 0, bs = 0, bcc = 0, bcs = 0;
         const float* row = &image.rgba[4 * std::size_t(j) * w];
         for (std::uint32_t i = 0; i < w; ++i) {
-            const float cp = cos_phi[i], sp = sin_phi[i];
-            const float basis[5] = {1.0f, cp, sp, cp * cp, cp * sp};
-            for (int k = 0; k < 3; ++k) {
-                const float t = row[4 * i + k];
-                const float radiance = std::isfinite(t) ? t : 0.0f;
-                for (int b = 0; b < 5; ++b) m[b][k] += radiance * basis[b];
-            }
+            const float cp = cos_phi[i], sp = sin_phi[i], cc = cp * cp, cs = cp * sp;
+            const float* t = row + 4 * i;
+            const float r = std::isfinite(t[0]) ? t[0] : 0.0f;
+            const float g = std::isfinite(t[1]) ? t[1] : 0.0f;
+            const float b = std::isfinite(t[2]) ? t[2] : 0.0f;
+            r0 += r, rc += r * cp, rs += r * sp, rcc += r * cc, rcs += r * cs;
+            g0 += g, gc += g * cp, gs += g * sp, gcc += g * cc, gcs += g * cs;
+            b0 += b, bc += b * cp, bs += b * sp, bcc += b * cc, bcs += b * cs;
         }
+        const float m[5][3] = {{r0, g0, b0}, {rc, gc, bc}, {rs, gs, bs}, {rcc, gcc, bcc},
+                               {rcs, gcs, bcs}};
         for (int k = 0; k < 3; ++k) {
             const double m0 = m[0][k], mc = m[1][k], ms = m[2][k], mcc = m[3][k], mcs = m[4][k];
             const double mss = m0 - mcc;

@@ -89,8 +89,10 @@ int main(int argc, char** argv) {
         else if (!a.empty() && a[0] != '-')
             scene_spec = a;
         else {
-            std::fprintf(stderr, "usage: sherpa-bench-environment [--frames N] [--repeats N] "
-                                 "[--width W --height H] [--irradiance cube|sh9] [--prefilter-only] [SCENE]\n");
+            std::fprintf(
+                stderr,
+                "usage: sherpa-bench-environment [--frames N] [--repeats N] "
+                "[--width W --height H] [--irradiance cube|sh9] [--prefilter-only] [SCENE]\n");
             return 2;
         }
     }
@@ -134,7 +136,8 @@ int main(int argc, char** argv) {
     renderer.set_environment(nullptr);
     first.print("first (with the lookup table)");
     next.print("next (another environment)");
-    std::printf("  goal < 300 ms: %s (wall, first)\n", median(first.wall) < 300.0 ? "met" : "NOT met");
+    std::printf("  goal < 300 ms: %s (wall, first)\n",
+                median(first.wall) < 300.0 ? "met" : "NOT met");
 
     if (prefilter_only) return 0;
 

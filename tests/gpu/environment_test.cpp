@@ -252,9 +252,8 @@ TEST_F(EnvironmentTest, LookupTableIsMadeOnceWhileEnvironmentsFollowEachOther) {
     renderer().load(*scene);
     const gpu::FrameRequest s = furnace_view(3, 48);
     const gpu::EnvironmentImage room = gpu::room_environment(256);
-    const gpu::EnvironmentImage linear = environment_of(64, [](glm::vec3 d) {
-        return glm::vec3(1.0f + 0.5f * d.x, 1.0f, 1.0f - 0.5f * d.z);
-    });
+    const gpu::EnvironmentImage linear = environment_of(
+        64, [](glm::vec3 d) { return glm::vec3(1.0f + 0.5f * d.x, 1.0f, 1.0f - 0.5f * d.z); });
     renderer().set_environment(&room);
     const gpu::EnvironmentStats first = renderer().resident().environment;
     renderer().set_environment(&linear);

@@ -63,8 +63,12 @@ BrdfLut::BrdfLut(Context& context, ResourceManager& resources) : resources_(reso
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-BrdfLut::~BrdfLut() { resources_.images().destroy(image_); }
+BrdfLut::~BrdfLut() {
+    resources_.images().destroy(image_);
+}
 
-VkImageView BrdfLut::view() const { return resources_.images().get(image_).view.get(); }
+VkImageView BrdfLut::view() const {
+    return resources_.images().get(image_).view.get();
+}
 
 } // namespace sherpa::gpu

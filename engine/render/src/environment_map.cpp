@@ -113,9 +113,9 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
     const float equirect_lod = std::max(0.0f, std::log2(float(image.width) / float(4 * cube)));
     VkFormatProperties fp{};
     vkGetPhysicalDeviceFormatProperties(context.physical_device(), kSourceFormat, &fp);
-    constexpr VkFormatFeatureFlags kSourceFeatures = VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT |
-                                                     VK_FORMAT_FEATURE_BLIT_SRC_BIT |
-                                                     VK_FORMAT_FEATURE_BLIT_DST_BIT;
+    constexpr VkFormatFeatureFlags kSourceFeatures =
+        VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT | VK_FORMAT_FEATURE_BLIT_SRC_BIT |
+        VK_FORMAT_FEATURE_BLIT_DST_BIT;
     const bool float_source = (fp.optimalTilingFeatures & kSourceFeatures) == kSourceFeatures;
     ImageDesc src_desc;
     src_desc.format = float_source ? kSourceFormat : kFormat;

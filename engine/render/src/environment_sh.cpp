@@ -60,8 +60,8 @@ Sh9 project_sh9(const EnvironmentImage& image) {
             g0 += g, gc += g * cp, gs += g * sp, gcc += g * cc, gcs += g * cs;
             b0 += b, bc += b * cp, bs += b * sp, bcc += b * cc, bcs += b * cs;
         }
-        const float m[5][3] = {{r0, g0, b0}, {rc, gc, bc}, {rs, gs, bs}, {rcc, gcc, bcc},
-                               {rcs, gcs, bcs}};
+        const float m[5][3] = {
+            {r0, g0, b0}, {rc, gc, bc}, {rs, gs, bs}, {rcc, gcc, bcc}, {rcs, gcs, bcs}};
         for (int k = 0; k < 3; ++k) {
             const double m0 = m[0][k], mc = m[1][k], ms = m[2][k], mcc = m[3][k], mcs = m[4][k];
             const double mss = m0 - mcc;

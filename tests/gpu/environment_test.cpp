@@ -228,6 +228,34 @@ TEST_F(EnvironmentTest, BackgroundFollowsTheEquirectangularConventionAndRotation
     }
 }
 
+// A source read at level 0 (at most four cube faces wide) is uploaded in 32-bit floats
+// where the device filters them; a wider one in half floats, with mips. Both read the
+// same axis colours behind the camera.
+TEST_F(EnvironmentTest, NarrowAndWideSourcesShowTheSameEnvironment) {
+    EnvironmentGuard guard{renderer()};
+    const gpu::EnvironmentImage axes = axis_environment();
+    renderer().unload();
+    gpu::FrameRequest s;
+    s.width = s.height = 32;
+    std::string error;
+    ASSERT_TRUE(gpu::parse_camera_spec("eye=0,0,0:target=0,0,1", s.camera, error)) << error;
+    s.tone_map = gpu::ToneMap::Linear;
+    std::vector<std::vector<std::uint8_t>> frames;
+    for (std::uint32_t face : {axes.width / 4, 16u}) { // level 0; the source's level 2+
+        gpu::EnvironmentOptions options;
+        options.specular_size = face;
+        renderer().set_environment(&axes, options);
+        EXPECT_EQ(renderer().resident().environment.cube_size, face);
+        frames.push_back(draw(s));
+    }
+    const std::uint8_t* narrow = &frames[0][(16 * 32 + 16) * 4];
+    const std::uint8_t* wide = &frames[1][(16 * 32 + 16) * 4];
+    for (int ch = 0; ch < 3; ++ch) {
+        EXPECT_NEAR(narrow[ch], (glm::u8vec3{0, 0, 255})[ch], 8); // +Z blue
+        EXPECT_NEAR(wide[ch], narrow[ch], 8);
+    }
+}
+
 TEST_F(EnvironmentTest, NoEnvironmentHoldsNothing) {
     renderer().set_environment(nullptr);
     const gpu::EnvironmentStats none = renderer().resident().environment;

@@ -105,18 +105,18 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
     stats_.sheen_levels = sheen_levels;
     stats_.lut_size = BrdfLut::kSize;
 
-    // The source as it is, in 32-bit floats, where the device filters them linearly (and
-    // blits them, for the mips below): no conversion on the CPU. Else in half floats
-    // (load_environment() clamped it to their range). Only a source wider than 4 faces
-    // needs mips (read without aliasing at a coarser level); the others are read at
-    // level 0 and make none (a 1024x512 source: 10 blits saved).
+    // Only a source wider than 4 faces needs mips (read without aliasing at a coarser
+    // level); the others are read at level 0 and make none (a 1024x512 source: 10 blits
+    // saved). Those are uploaded as they are, in 32-bit floats, where the device filters
+    // them linearly: no conversion on the CPU. Wider ones (and every source elsewhere) go
+    // in half floats (load_environment() clamped them to their range), which halves the
+    // largest transient image (a 16384-wide source and its mips: 1.4 GiB, not 2.9).
     const float equirect_lod = std::max(0.0f, std::log2(float(image.width) / float(4 * cube)));
     VkFormatProperties fp{};
     vkGetPhysicalDeviceFormatProperties(context.physical_device(), kSourceFormat, &fp);
-    constexpr VkFormatFeatureFlags kSourceFeatures =
-        VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT | VK_FORMAT_FEATURE_BLIT_SRC_BIT |
-        VK_FORMAT_FEATURE_BLIT_DST_BIT;
-    const bool float_source = (fp.optimalTilingFeatures & kSourceFeatures) == kSourceFeatures;
+    const bool float_source =
+        equirect_lod == 0.0f &&
+        (fp.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0;
     ImageDesc src_desc;
     src_desc.format = float_source ? kSourceFormat : kFormat;
     src_desc.width = image.width;

@@ -93,6 +93,7 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
                             {"source", {env.source_width, env.source_height}},
                             {"cube_size", env.cube_size},
                             {"specular_levels", env.specular_levels},
+                            {"irradiance", std::string(gpu::to_string(env.irradiance))},
                             {"irradiance_size", env.irradiance_size},
                             {"sheen_size", env.sheen_size},
                             {"sheen_levels", env.sheen_levels},

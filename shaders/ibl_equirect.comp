@@ -10,6 +10,7 @@ void main() {
     uvec3 id = gl_GlobalInvocationID;
     if (id.x >= push.face_size || id.y >= push.face_size) return;
     vec3 d = cube_direction(id.z, (vec2(id.xy) + 0.5) / float(push.face_size));
-    vec3 c = textureLod(equirect, equirect_uv(d), push.equirect_lod).rgb;
+    // Clamped to the cube's half-float range (a 32-bit source is uploaded as it is).
+    vec3 c = min(textureLod(equirect, equirect_uv(d), push.equirect_lod).rgb, vec3(65504.0));
     imageStore(cube, ivec3(id), vec4(c, 1.0));
 }

@@ -124,6 +124,30 @@ TEST_F(CliRenderCompare, ABadEnvironmentFileIsAWarningAndTheRoom) {
     EXPECT_EQ(read(dir / "bad.png").rgba, room.rgba);
 }
 
+// The report says how the environment is made: SH9 irradiance by default (no irradiance
+// cube, no Lambert pass), its GPU bytes, and the build's passes (the lookup table made
+// with this first environment).
+TEST_F(CliRenderCompare, TheReportShowsTheEnvironmentsIrradianceBytesAndPasses) {
+    const std::string box = gltf_asset("BoxTextured");
+    const fs::path report = dir / "report.json";
+    const CliRun r =
+        run_cli("render '" + box + "' -o '" + (dir / "lit.png").string() + "' --width " +
+                std::to_string(kW) + " --height " + std::to_string(kH) +
+                " --validation --no-cache --frames 1 --report '" + report.string() + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    const json j = read_json(report.string());
+    ASSERT_TRUE(j["environment"].is_object()) << j.dump();
+    const json& env = j["environment"];
+    EXPECT_EQ(env["name"], "room");
+    EXPECT_EQ(env["irradiance"], "sh9");
+    EXPECT_EQ(env["irradiance_size"], 0);
+    EXPECT_EQ(env["lut_size"], 64);
+    // The room (1024x512): specular 256 faces x 6 levels, sheen 64 x 4, the 64x64 table.
+    EXPECT_EQ(env["bytes"], 4487168);
+    for (const char* pass : {"radiance_cube", "specular", "irradiance", "sheen", "lut"})
+        EXPECT_TRUE(env["pass_gpu_ms"][pass].is_number()) << pass;
+}
+
 TEST_F(CliRenderCompare, DifferenceStatisticsAreThoseOfTheSingleRenders) {
     const std::string box = gltf_asset("BoxTextured");
     const Png a = render(box, "raster.png", "--view base-color");

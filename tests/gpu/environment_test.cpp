@@ -103,11 +103,13 @@ TEST_F(EnvironmentTest, FurnaceWhiteSpheresReflectOneAtEveryRoughness) {
 TEST_F(EnvironmentTest, Sh9IrradianceKeepsTheFurnaceAndMakesNoCube) {
     EnvironmentGuard guard{renderer()};
     const gpu::EnvironmentImage uniform = gpu::uniform_environment(glm::vec3(1.0f));
-    renderer().set_environment(&uniform);
-    const gpu::EnvironmentStats cube = renderer().resident().environment;
     gpu::EnvironmentOptions options;
-    options.irradiance = gpu::IrradianceMode::Sh9;
+    options.irradiance = gpu::IrradianceMode::Cube;
     renderer().set_environment(&uniform, options);
+    const gpu::EnvironmentStats cube = renderer().resident().environment;
+    EXPECT_EQ(cube.irradiance_size, 32u);
+    // SH9 is the default.
+    renderer().set_environment(&uniform);
     const gpu::EnvironmentStats sh = renderer().resident().environment;
     EXPECT_EQ(sh.irradiance, gpu::IrradianceMode::Sh9);
     EXPECT_EQ(sh.irradiance_size, 0u);
@@ -135,9 +137,10 @@ TEST_F(EnvironmentTest, Sh9AndCubeIrradianceAgreeOnALinearEnvironment) {
     auto scene = load(write_temp("rough.gltf", sphere_row_gltf(3, 0.0f)).string());
     renderer().load(*scene);
     gpu::FrameRequest s = furnace_view(3, 64);
-    renderer().set_environment(&linear);
-    const auto cube = draw(s);
     gpu::EnvironmentOptions options;
+    options.irradiance = gpu::IrradianceMode::Cube;
+    renderer().set_environment(&linear, options);
+    const auto cube = draw(s);
     options.irradiance = gpu::IrradianceMode::Sh9;
     renderer().set_environment(&linear, options);
     const auto sh = draw(s);
@@ -225,6 +228,34 @@ TEST_F(EnvironmentTest, BackgroundFollowsTheEquirectangularConventionAndRotation
     }
 }
 
+// A source read at level 0 (at most four cube faces wide) is uploaded in 32-bit floats
+// where the device filters them; a wider one in half floats, with mips. Both read the
+// same axis colours behind the camera.
+TEST_F(EnvironmentTest, NarrowAndWideSourcesShowTheSameEnvironment) {
+    EnvironmentGuard guard{renderer()};
+    const gpu::EnvironmentImage axes = axis_environment();
+    renderer().unload();
+    gpu::FrameRequest s;
+    s.width = s.height = 32;
+    std::string error;
+    ASSERT_TRUE(gpu::parse_camera_spec("eye=0,0,0:target=0,0,1", s.camera, error)) << error;
+    s.tone_map = gpu::ToneMap::Linear;
+    std::vector<std::vector<std::uint8_t>> frames;
+    for (std::uint32_t face : {axes.width / 4, 16u}) { // level 0; the source's level 2+
+        gpu::EnvironmentOptions options;
+        options.specular_size = face;
+        renderer().set_environment(&axes, options);
+        EXPECT_EQ(renderer().resident().environment.cube_size, face);
+        frames.push_back(draw(s));
+    }
+    const std::uint8_t* narrow = &frames[0][(16 * 32 + 16) * 4];
+    const std::uint8_t* wide = &frames[1][(16 * 32 + 16) * 4];
+    for (int ch = 0; ch < 3; ++ch) {
+        EXPECT_NEAR(narrow[ch], (glm::u8vec3{0, 0, 255})[ch], 8); // +Z blue
+        EXPECT_NEAR(wide[ch], narrow[ch], 8);
+    }
+}
+
 TEST_F(EnvironmentTest, NoEnvironmentHoldsNothing) {
     renderer().set_environment(nullptr);
     const gpu::EnvironmentStats none = renderer().resident().environment;
@@ -237,6 +268,39 @@ TEST_F(EnvironmentTest, NoEnvironmentHoldsNothing) {
     EXPECT_TRUE(made.present);
     EXPECT_EQ(made.cube_size, 128u); // a quarter of the width
     EXPECT_GT(made.bytes, 0u);
+}
+
+// The split-sum lookup table is the BRDF's: made with the first environment, reused by
+// the next (no LUT pass: its GPU time is 0), freed with the last and made again after.
+// A frame lit through the reused table is the frame lit through a fresh one.
+TEST_F(EnvironmentTest, LookupTableIsMadeOnceWhileEnvironmentsFollowEachOther) {
+    renderer().set_environment(nullptr);
+    EnvironmentGuard guard{renderer()};
+    auto scene = load(write_temp("lut.gltf", sphere_row_gltf(3, 1.0f)).string());
+    renderer().load(*scene);
+    const gpu::FrameRequest s = furnace_view(3, 48);
+    const gpu::EnvironmentImage room = gpu::room_environment(256);
+    const gpu::EnvironmentImage linear = environment_of(
+        64, [](glm::vec3 d) { return glm::vec3(1.0f + 0.5f * d.x, 1.0f, 1.0f - 0.5f * d.z); });
+    renderer().set_environment(&room);
+    const gpu::EnvironmentStats first = renderer().resident().environment;
+    renderer().set_environment(&linear);
+    renderer().set_environment(&room);
+    const gpu::EnvironmentStats reused = renderer().resident().environment;
+    const auto lit_reused = draw(s);
+    renderer().set_environment(nullptr);
+    EXPECT_EQ(renderer().resident().environment.bytes, 0u);
+    renderer().set_environment(&room);
+    const gpu::EnvironmentStats fresh = renderer().resident().environment;
+    const auto lit_fresh = draw(s);
+    EXPECT_EQ(first.bytes, reused.bytes); // the table's bytes are counted while it is kept
+    EXPECT_EQ(reused.pass_ms[4], 0.0);
+    if (first.gpu_ms > 0.0) { // timestamps on this device
+        EXPECT_GT(first.pass_ms[4], 0.0);
+        EXPECT_GT(fresh.pass_ms[4], 0.0);
+    }
+    EXPECT_EQ(lit_reused, lit_fresh);
+    renderer().unload();
 }
 
 TEST_F(EnvironmentTest, BlenderStudioLightsLoadAndLight) {

@@ -28,6 +28,7 @@ std::vector<LightingMethod> lighting_methods(const LightingFamilyOptions& option
             {{std::move(name), std::move(parameters), std::move(description), group}, setup});
     };
     LightingSetup setup;
+    setup.environment.irradiance = gpu::IrradianceMode::Cube;
     add(LightingGroup::Irradiance, "irradiance", "irradiance cube", "32x32 faces, 48 samples",
         "diffuse environment light from the Lambert-prefiltered irradiance cube", setup);
     setup.environment.irradiance = gpu::IrradianceMode::Sh9;

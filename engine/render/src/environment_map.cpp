@@ -21,8 +21,10 @@ namespace sherpa::gpu {
 namespace {
 
 constexpr VkFormat kFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
-// Timestamps around the passes: EnvironmentStats::pass_ms.
-constexpr std::uint32_t kStamps = std::size(EnvironmentStats{}.pass_ms) + 1;
+constexpr VkFormat kSourceFormat = VK_FORMAT_R32G32B32A32_SFLOAT; // where filtered (else kFormat)
+// Timestamps around the passes: EnvironmentStats::pass_ms but the lookup table's (the
+// BrdfLut's own build).
+constexpr std::uint32_t kStamps = std::size(EnvironmentStats{}.pass_ms);
 
 std::uint32_t levels_of(std::uint32_t size) {
     return std::uint32_t(std::bit_width(size));
@@ -72,8 +74,9 @@ void compute_barrier(VkCommandBuffer cmd) {
 } // namespace
 
 EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
-                               const EnvironmentImage& image, const EnvironmentOptions& options)
-    : resources_(resources) {
+                               const EnvironmentImage& image, const EnvironmentOptions& options,
+                               const BrdfLut& lut, bool lut_built)
+    : resources_(resources), lut_(lut) {
     if (!image.valid()) throw GpuError("environment image '" + image.name + "' has no texels");
     const auto start = std::chrono::steady_clock::now();
     VkDevice device = context.device();
@@ -100,14 +103,22 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
     if (sh9) irradiance_sh_ = irradiance_sh9(project_sh9(image));
     stats_.sheen_size = kSheenSize;
     stats_.sheen_levels = sheen_levels;
-    stats_.lut_size = kLutSize;
+    stats_.lut_size = BrdfLut::kSize;
 
-    // The source in half floats (load_environment() clamped it to their range). Only a
-    // source wider than 4 faces needs mips (read without aliasing at a coarser level);
-    // the others are read at level 0 and make none (a 1024x512 source: 10 blits saved).
+    // Only a source wider than 4 faces needs mips (read without aliasing at a coarser
+    // level); the others are read at level 0 and make none (a 1024x512 source: 10 blits
+    // saved). Those are uploaded as they are, in 32-bit floats, where the device filters
+    // them linearly: no conversion on the CPU. Wider ones (and every source elsewhere) go
+    // in half floats (load_environment() clamped them to their range), which halves the
+    // largest transient image (a 16384-wide source and its mips: 1.4 GiB, not 2.9).
     const float equirect_lod = std::max(0.0f, std::log2(float(image.width) / float(4 * cube)));
+    VkFormatProperties fp{};
+    vkGetPhysicalDeviceFormatProperties(context.physical_device(), kSourceFormat, &fp);
+    const bool float_source =
+        equirect_lod == 0.0f &&
+        (fp.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0;
     ImageDesc src_desc;
-    src_desc.format = kFormat;
+    src_desc.format = float_source ? kSourceFormat : kFormat;
     src_desc.width = image.width;
     src_desc.height = image.height;
     src_desc.mip_levels = equirect_lod > 0.0f ? levels_of(std::max(image.width, image.height)) : 1;
@@ -116,11 +127,15 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
     src_desc.name = "environment source";
     ImageHandle source = images.create(src_desc);
     {
-        std::vector<std::uint16_t> half(image.rgba.size());
-        for (std::size_t i = 0; i < half.size(); ++i)
-            half[i] = glm::packHalf1x16(std::min(image.rgba[i], 65504.0f));
         UploadBatch upload(resources);
-        upload.upload_image(source, half.data(), half.size() * sizeof(std::uint16_t));
+        if (float_source) {
+            upload.upload_image(source, image.rgba.data(), image.rgba.size() * sizeof(float));
+        } else {
+            std::vector<std::uint16_t> half(image.rgba.size());
+            for (std::size_t i = 0; i < half.size(); ++i)
+                half[i] = glm::packHalf1x16(std::min(image.rgba[i], 65504.0f));
+            upload.upload_image(source, half.data(), half.size() * sizeof(std::uint16_t));
+        }
         upload.submit_and_wait();
     }
     // The specular cube's level 0 is the radiance cube's, copied (no shader pass).
@@ -130,15 +145,9 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
                           VK_IMAGE_USAGE_TRANSFER_DST_BIT);
     if (!sh9) irradiance_ = make_cube(resources, kIrradianceSize, 1, "environment irradiance");
     sheen_ = make_cube(resources, kSheenSize, sheen_levels, "environment sheen");
-    ImageDesc lut_desc;
-    lut_desc.format = kFormat;
-    lut_desc.width = lut_desc.height = kLutSize;
-    lut_desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
-    lut_desc.name = "environment brdf lut";
-    lut_ = images.create(lut_desc);
     stats_.bytes = bytes_of(cube, specular_levels, 6) +
                    (sh9 ? 0 : bytes_of(kIrradianceSize, 1, 6)) +
-                   bytes_of(kSheenSize, sheen_levels, 6) + bytes_of(kLutSize, 1, 1);
+                   bytes_of(kSheenSize, sheen_levels, 6) + lut.bytes();
 
     auto si = vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
     si.magFilter = si.minFilter = VK_FILTER_LINEAR;
@@ -155,7 +164,6 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
     const PrefilterPass ggx(device, layout.layout(), PrefilterPass::Lobe::Ggx);
     const PrefilterPass lambert(device, layout.layout(), PrefilterPass::Lobe::Lambert);
     const PrefilterPass charlie(device, layout.layout(), PrefilterPass::Lobe::Charlie);
-    const BrdfLutPass lut_pass(device, layout.layout());
 
     const VkImageView radiance_view = images.get(radiance).view.get();
     std::vector<UniqueImageView> views; // level views, alive until the build completes
@@ -181,7 +189,7 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
                                  stamp);
         ++stamp;
     };
-    std::vector<ImageHandle> built{radiance, specular_, sheen_, lut_};
+    std::vector<ImageHandle> built{radiance, specular_, sheen_};
     if (!sh9) built.push_back(irradiance_);
     for (ImageHandle h : built)
         transition(cmd,
@@ -206,7 +214,7 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
                           std::max(cube >> l, 1u), l - 1);
     }
     mark();
-    // 2. Every prefilter and the LUT read the finished radiance cube: no barriers between.
+    // 2. Every prefilter reads the finished radiance cube: no barriers between.
     // Specular level 0 (roughness 0) is the sharp environment itself: a copy of the
     // radiance cube's level 0, in transfer layouts for the copy alone.
     const VkImage radiance_image = images.get(radiance).image.get();
@@ -253,9 +261,6 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
         charlie.record(cmd, layout.bind(linear, radiance_view, target(sheen_, l, 6)),
                        kSheenSize >> l, roughness, kSheenSamples, cube, radiance_levels);
     }
-    mark();
-    lut_pass.record(cmd, layout.bind(VK_NULL_HANDLE, VK_NULL_HANDLE, target(lut_, 0, 1)), kLutSize,
-                    kLutSamples);
     built.erase(built.begin()); // the radiance cube is not read after the build
     for (ImageHandle h : built)
         transition(cmd,
@@ -280,10 +285,15 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
     images.destroy(equirect_sampler);
     stats_.prefilter_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (lut_built) { // made for this environment, before it (SceneState::set_environment)
+        stats_.pass_ms[kStamps - 1] = lut.build_gpu_ms();
+        stats_.gpu_ms += lut.build_gpu_ms();
+        stats_.prefilter_ms += lut.build_ms();
+    }
 }
 
 EnvironmentMap::~EnvironmentMap() {
-    for (ImageHandle* h : {&specular_, &irradiance_, &sheen_, &lut_})
+    for (ImageHandle* h : {&specular_, &irradiance_, &sheen_})
         if (h->valid()) resources_.images().destroy(*h);
     resources_.images().destroy(sampler_);
 }
@@ -301,7 +311,7 @@ void EnvironmentMap::write_descriptors(VkDevice device, VkDescriptorSet set) con
         {s, images.get(specular_).view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
         {s, images.get(irradiance_.valid() ? irradiance_ : specular_).view.get(),
          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
-        {s, images.get(lut_).view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+        {s, lut_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
         {s, images.get(sheen_).view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
     };
     VkWriteDescriptorSet writes[4];

@@ -17,6 +17,7 @@ SceneState::SceneState(Context& ctx, ResourceManager& res, const RendererOptions
 
 SceneState::~SceneState() {
     environment.reset();
+    brdf_lut.reset();
     acceleration.reset();
     gpu.reset();
 }
@@ -67,8 +68,15 @@ void SceneState::unload() {
 void SceneState::set_environment(const EnvironmentImage* image,
                                  const EnvironmentOptions& env_options) {
     environment.reset();
-    if (image)
-        environment = std::make_unique<EnvironmentMap>(context, resources, *image, env_options);
+    // The lookup table is the BRDF's: made with the first environment, kept while one
+    // follows another, freed with the last (no environment, no GPU bytes).
+    if (!image) brdf_lut.reset();
+    if (image) {
+        const bool lut_built = !brdf_lut;
+        if (lut_built) brdf_lut = std::make_unique<BrdfLut>(context, resources);
+        environment = std::make_unique<EnvironmentMap>(context, resources, *image, env_options,
+                                                       *brdf_lut, lut_built);
+    }
     // The path tracer's sampling distribution, made while the image is at hand.
     environment_sampling.reset();
     if (image && options.ray_tracing)

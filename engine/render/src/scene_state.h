@@ -84,6 +84,9 @@ public:
     // (FrameRecorder::set_variant()).
     MaterialVariants variants;
     std::int32_t loaded_variant = -1, variant = -1;
+    // The split-sum table every environment reads (made with the first, freed with the
+    // last); before `environment`, which reads it.
+    std::unique_ptr<BrdfLut> brdf_lut;
     std::unique_ptr<EnvironmentMap> environment; // null: none (set_environment)
     // The path tracer's sampling of the environment (ray tracing only).
     std::unique_ptr<EnvironmentDistribution> environment_sampling;

@@ -93,9 +93,11 @@ std::string_view to_string(IrradianceMode m);
 std::optional<IrradianceMode> parse_irradiance_mode(std::string_view name); // "cube", "sh9"
 
 // How an environment is made (Renderer::set_environment): the defaults are what every
-// view draws; the Lab's lighting family varies them.
+// view draws; the Lab's lighting family varies them. SH9 is the default irradiance: as
+// close to the path tracer as the cube (docs/lab/README.md), without the cube's pass
+// and its texture fetch per pixel (docs/environment.md "Speed").
 struct EnvironmentOptions {
-    IrradianceMode irradiance = IrradianceMode::Cube;
+    IrradianceMode irradiance = IrradianceMode::Sh9;
     // Face of the specular cube (a power of two, 16 to 512); 0: a quarter of the
     // source's width within those bounds.
     std::uint32_t specular_size = 0;

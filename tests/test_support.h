@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 
 namespace sherpa::test {
@@ -15,6 +17,14 @@ inline std::filesystem::path assets_dir() {
 }
 inline std::filesystem::path data_dir() {
     return SHERPA_TEST_DATA_DIR;
+}
+
+// A file name in the temporary directory of this process alone (ctest -j runs suites
+// side by side): PREFIX_PID_NAME.
+inline std::string temp_path(const std::string& prefix, const std::string& name) {
+    return (std::filesystem::temp_directory_path() /
+            (prefix + "_" + std::to_string(::getpid()) + "_" + name))
+        .string();
 }
 
 inline std::string gltf_asset(const std::string& name) {

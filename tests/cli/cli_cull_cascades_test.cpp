@@ -14,16 +14,11 @@ namespace {
 using sherpa::test::CliRun;
 using sherpa::test::run_cli;
 
-std::string temp_path(const std::string& name) {
-    return (std::filesystem::temp_directory_path() /
-            ("sherpa_cli_cascades_" + std::to_string(::getpid()) + "_" + name))
-        .string();
-}
-
 void expect_same_passes(const std::string& scene, const std::string& camera,
                         const std::string& path) {
     SCOPED_TRACE(scene + " --cull " + path);
-    const std::string png = temp_path("r.png"), report = temp_path("r.json");
+    const std::string png = sherpa::test::temp_path("sherpa_cli_cascades", "r.png"),
+                      report = sherpa::test::temp_path("sherpa_cli_cascades", "r.json");
     // 16:9, the camera string's default aspect, as `cull` assumes.
     const CliRun r =
         run_cli("render '" + scene + "' -o " + png + " --width 320 --height 180 --camera " +

@@ -73,7 +73,7 @@ std::string write_gltf(const std::string& name, int mode, const std::vector<floa
     return out.string();
 }
 
-struct Image {
+struct RenderedImage {
     std::uint32_t w = 0, h = 0;
     std::vector<std::uint8_t> rgba;
     bool red(int x, int y) const {
@@ -82,14 +82,14 @@ struct Image {
     }
 };
 
-Image render(const std::string& scene, const std::string& extra = "") {
+RenderedImage render_rgba(const std::string& scene, const std::string& extra = "") {
     const std::string png = scene + ".png";
     const test::CliRun r = test::run_cli("render '" + scene + "' -o '" + png +
                                          "' --width 64 --height 64 --validation --no-shadows"
                                          " --camera eye=0,0,5:target=0,0,0:fov=60 " +
                                          extra);
     EXPECT_EQ(r.exit_code, 0) << r.out;
-    Image img;
+    RenderedImage img;
     std::string error;
     EXPECT_TRUE(sherpa::tex::read_png_rgba8(png, img.w, img.h, img.rgba, error)) << error;
     return img;
@@ -157,8 +157,9 @@ TEST(PointsAndLines, PointsAreDrawnAtTheirProjectedPixelsWithAVisibleSize) {
     std::vector<float> positions;
     for (glm::vec2 p : points) positions.insert(positions.end(), {p.x, p.y, 0.0f});
     for (const char* cull : {"none", "cpu", "gpu"}) {
-        const Image img = render(write_gltf(std::string("points_") + cull + ".gltf", 0, positions),
-                                 std::string("--cull ") + cull);
+        const RenderedImage img =
+            render_rgba(write_gltf(std::string("points_") + cull + ".gltf", 0, positions),
+                        std::string("--cull ") + cull);
         ASSERT_EQ(img.w, 64u);
         int red = 0;
         for (int y = 0; y < 64; ++y)
@@ -182,7 +183,7 @@ TEST(PointsAndLines, LineOnlyFileRendersItsLinesValidationClean) {
     // A LINE_LOOP square: its four sides cross the pixel rows and columns they project
     // to, kLineWidthPixels (2) wide on a device with wideLines (lavapipe has them).
     const std::string path = write_gltf("loop.gltf", 2, {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0});
-    const Image img = render(path);
+    const RenderedImage img = render_rgba(path);
     ASSERT_EQ(img.w, 64u);
     const glm::vec2 lo = pixel_of({-1, -1}), hi = pixel_of({1, 1});
     int red = 0;

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/sweep_images.h"
 #include "cli_run.h"
 #include "test_support.h"
 
@@ -23,16 +24,10 @@ namespace fs = std::filesystem;
 
 constexpr std::uint32_t kW = 64, kH = 48;
 
-struct Png {
-    std::uint32_t width = 0, height = 0;
-    std::vector<std::uint8_t> rgba;
-};
+using sherpa::test::Png;
 
-Png read(const fs::path& path) {
-    Png p;
-    std::string error;
-    EXPECT_TRUE(tex::read_png_rgba8(path.string(), p.width, p.height, p.rgba, error)) << error;
-    return p;
+Png read_png_file(const fs::path& path) {
+    return sherpa::test::read_png(path.string());
 }
 
 class CliRenderCompare : public ::testing::Test {
@@ -55,7 +50,7 @@ protected:
                                  out ? "2>/dev/null" : "2>&1");
         EXPECT_EQ(r.exit_code, 0) << r.out;
         if (out && r.exit_code == 0) *out = json::parse(r.out);
-        return read(png);
+        return read_png_file(png);
     }
 };
 
@@ -121,7 +116,7 @@ TEST_F(CliRenderCompare, ABadEnvironmentFileIsAWarningAndTheRoom) {
     EXPECT_NE(r.out.find("warning: " + bad.string() + ": "), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("using the built-in room environment instead"), std::string::npos)
         << r.out;
-    EXPECT_EQ(read(dir / "bad.png").rgba, room.rgba);
+    EXPECT_EQ(read_png_file(dir / "bad.png").rgba, room.rgba);
 }
 
 // The report says how the environment is made: SH9 irradiance by default (no irradiance

@@ -7,6 +7,11 @@
 
 namespace sherpa::test {
 
+// `s` in single quotes, for a path in a shell command line.
+inline std::string quoted(const std::string& s) {
+    return "'" + s + "'";
+}
+
 struct CliRun {
     int exit_code;
     std::string out;

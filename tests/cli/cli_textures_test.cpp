@@ -16,7 +16,7 @@
 namespace {
 
 // stderr carries warnings; the JSON on stdout must parse on its own.
-sherpa::test::CliRun run_cli(const std::string& args) {
+sherpa::test::CliRun run_quiet(const std::string& args) {
     return sherpa::test::run_cli(args, "2>/dev/null");
 }
 using sherpa::test::CliRun;
@@ -31,7 +31,7 @@ TEST(CliTextures, HelmetMissThenHitWithEveryField) {
     const auto dir = sherpa::test::fresh_temp_dir("cli-textures");
     const std::string args =
         "textures '" + helmet() + "' --cache-dir '" + dir.string() + "' --quality 0 --json";
-    const CliRun first = run_cli(args);
+    const CliRun first = run_quiet(args);
     ASSERT_EQ(first.exit_code, 0) << first.out;
     const auto j = nlohmann::json::parse(first.out);
     const auto& list = j.at("textures");
@@ -61,7 +61,7 @@ TEST(CliTextures, HelmetMissThenHitWithEveryField) {
     EXPECT_EQ(roles["linear"], 2);
     EXPECT_EQ(roles["normal"], 1);
 
-    const CliRun second = run_cli(args);
+    const CliRun second = run_quiet(args);
     ASSERT_EQ(second.exit_code, 0) << second.out;
     for (const auto& t : nlohmann::json::parse(second.out)["textures"]) {
         EXPECT_EQ(t["state"], "hit");
@@ -73,15 +73,15 @@ TEST(CliTextures, HelmetMissThenHitWithEveryField) {
 TEST(CliTextures, NoCacheAndUsageErrors) {
     const std::string box =
         (sherpa::test::assets_dir() / "gltf/BoxTextured/glTF/BoxTextured.gltf").string();
-    const CliRun r = run_cli("textures '" + box + "' --no-cache --json");
+    const CliRun r = run_quiet("textures '" + box + "' --no-cache --json");
     ASSERT_EQ(r.exit_code, 0) << r.out;
     const auto j = nlohmann::json::parse(r.out);
     ASSERT_EQ(j["textures"].size(), 1u);
     EXPECT_EQ(j["textures"][0]["state"], "miss");
     EXPECT_TRUE(j["textures"][0]["cache_file"].is_null());
-    EXPECT_EQ(run_cli("textures").exit_code, 2);
-    EXPECT_EQ(run_cli("textures '" + box + "' --quality 9").exit_code, 2);
-    EXPECT_EQ(run_cli("textures /nonexistent.gltf --no-cache").exit_code, 1);
+    EXPECT_EQ(run_quiet("textures").exit_code, 2);
+    EXPECT_EQ(run_quiet("textures '" + box + "' --quality 9").exit_code, 2);
+    EXPECT_EQ(run_quiet("textures /nonexistent.gltf --no-cache").exit_code, 1);
 }
 
 TEST(CliTextures, TwoProcessesWritingTheSameCacheAtOnce) {
@@ -102,7 +102,7 @@ TEST(CliTextures, TwoProcessesWritingTheSameCacheAtOnce) {
         EXPECT_TRUE(state == "miss" || state == "hit") << name << ": " << state;
     }
     const CliRun after =
-        run_cli("textures '" + box + "' --cache-dir '" + dir.string() + "' --json");
+        run_quiet("textures '" + box + "' --cache-dir '" + dir.string() + "' --json");
     ASSERT_EQ(after.exit_code, 0);
     EXPECT_EQ(nlohmann::json::parse(after.out)["textures"][0]["state"], "hit");
     std::size_t leftovers = 0;

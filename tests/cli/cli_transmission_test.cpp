@@ -22,10 +22,6 @@ namespace {
 using sherpa::test::CliRun;
 using sherpa::test::run_cli;
 
-std::string temp_path(const std::string& name) {
-    return sherpa::test::temp_path("sherpa_cli_transmission", name);
-}
-
 using sherpa::test::kSweepCamera;
 using sherpa::test::Png;
 using sherpa::test::read_png;
@@ -47,7 +43,7 @@ double centre_mean(const Png& p, int row, int column, int ch) {
 // receives the JSON report when not empty.
 Png render(const std::string& model, const std::string& view, const std::string& extra = "",
            const std::string& report = "") {
-    const std::string png = temp_path(view + ".png");
+    const std::string png = sherpa::test::temp_path("sherpa_cli_transmission", view + ".png");
     const CliRun r =
         run_cli("render '" + model + "' -o " + png + " --width 160 --height 120 --view " + view +
                 kSweepCamera + extra + (report.empty() ? "" : " --report " + report) +
@@ -61,7 +57,8 @@ Png render(const std::string& model, const std::string& view, const std::string&
 TEST(CliTransmission, OnlyScenesWithTransmissionHaveTheTargetAndThePass) {
     for (const auto& [model, transmissive] :
          {std::pair{sweep("ior_sweep"), false}, std::pair{sweep("transmission_sweep"), true}}) {
-        const std::string report = temp_path("report.json");
+        const std::string report =
+            sherpa::test::temp_path("sherpa_cli_transmission", "report.json");
         render(model, "lit", " --environment none --frames 2", report);
         const auto j = sherpa::test::read_json(report);
         const auto bytes = j["gpu_memory_bytes"]["transmission_target"].get<std::uint64_t>();
@@ -139,7 +136,7 @@ TEST(CliTransmission, LitSpheresLetTheBackdropThrough) {
 }
 
 TEST(CliTransmission, BadValuesAreWarnedAndTheFileStillRenders) {
-    const std::string png = temp_path("bad.png");
+    const std::string png = sherpa::test::temp_path("sherpa_cli_transmission", "bad.png");
     const CliRun r =
         run_cli("render '" + (sherpa::test::data_dir() / "transmission_bad.gltf").string() +
                 "' -o " + png + " --width 64 --height 48 --validation --no-cache");

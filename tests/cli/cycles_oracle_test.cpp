@@ -60,10 +60,6 @@ glm::dvec3 linear_rgb(const std::uint8_t* p) {
     return {linear(p[0]), linear(p[1]), linear(p[2])};
 }
 
-std::string quoted(const std::string& s) {
-    return "'" + s + "'";
-}
-
 std::string run(const std::string& command, int& status) {
     FILE* p = popen((command + " 2>&1").c_str(), "r");
     std::string log;

@@ -144,10 +144,6 @@ std::string asset(const std::string& name) {
     return std::string(SHERPA_ASSETS_DIR) + "/gltf/" + name + "/glTF/" + name + ".gltf";
 }
 
-std::string quoted(const std::string& s) {
-    return "'" + s + "'";
-}
-
 // Mean 8-bit colour (/255) of a disk about a sweep sphere's centre, as kSweepCamera
 // projects it: two rows (y = +0.5, -0.5) of five (x = -2 .. 2), 320x240, 45 degrees;
 // `contrast` (if given) the standard deviation of the disk's mean-of-channels.

@@ -18,14 +18,6 @@
 
 namespace sherpa::test {
 
-// A file name in the temporary directory of this process alone (ctest -j runs suites
-// side by side): PREFIX_PID_NAME.
-inline std::string temp_path(const std::string& prefix, const std::string& name) {
-    return (std::filesystem::temp_directory_path() /
-            (prefix + "_" + std::to_string(::getpid()) + "_" + name))
-        .string();
-}
-
 inline std::string sweep(const std::string& name) {
     return (data_dir() / "material_sweeps" / (name + ".gltf")).string();
 }

@@ -32,10 +32,6 @@ glm::dvec3 sphere_mean(const Image& img, int column) {
     return disk_mean(img, cx, cy, r);
 }
 
-std::string quoted(const std::string& s) {
-    return "'" + s + "'";
-}
-
 // Both renderers' images of the file with `variant` ("" for the defaults).
 std::pair<Image, Image> render_both(const std::string& variant) {
     const std::string file = std::string(SHERPA_TEST_DATA_DIR) + "/material_sweeps/variants.gltf";

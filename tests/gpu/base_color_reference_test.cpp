@@ -221,9 +221,9 @@ struct Tally {
     int worst = 0;
 };
 
-} // namespace
-
 class BaseColorAgainstSourceImages : public ::testing::TestWithParam<Model> {};
+
+} // namespace
 
 TEST_P(BaseColorAgainstSourceImages, RenderedTexelsEqualTheFilesUnassociatedColour) {
     const std::string model = GetParam().name;

@@ -4,7 +4,7 @@
 #include <sherpa/render/camera.h>
 
 namespace sherpa::test {
-namespace {
+namespace camera_test {
 
 using gpu::CameraSpec;
 
@@ -81,5 +81,5 @@ TEST(GltfCameraTest, UnknownIndexIsAnError) {
     EXPECT_THROW(gpu::resolve_camera(s, scene, 1.0f), std::invalid_argument);
 }
 
-} // namespace
+} // namespace camera_test
 } // namespace sherpa::test

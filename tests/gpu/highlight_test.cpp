@@ -16,7 +16,7 @@
 namespace sherpa::test {
 namespace {
 
-constexpr int kSize = 160;
+constexpr int kHighlightImageSize = 160;
 
 struct Counts {
     std::size_t orange = 0, magenta = 0;
@@ -38,8 +38,8 @@ Counts count_highlight(const std::vector<std::uint8_t>& rgba) {
 
 // The plain render's object mask: pixels unlike the background (the corner's).
 std::vector<bool> object_mask(const std::vector<std::uint8_t>& rgba) {
-    std::vector<bool> mask(kSize * kSize);
-    for (int i = 0; i < kSize * kSize; ++i) {
+    std::vector<bool> mask(kHighlightImageSize * kHighlightImageSize);
+    for (int i = 0; i < kHighlightImageSize * kHighlightImageSize; ++i) {
         int d = 0;
         for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(rgba[4 * i + c] - rgba[c]));
         mask[std::size_t(i)] = d > 3;
@@ -51,19 +51,21 @@ std::vector<bool> object_mask(const std::vector<std::uint8_t>& rgba) {
 // differs from its own.
 std::vector<int> edge_distance(const std::vector<bool>& mask, int cap) {
     std::vector<int> dist(mask.size(), cap);
-    for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) {
-            const bool self = mask[std::size_t(y * kSize + x)];
+    for (int y = 0; y < kHighlightImageSize; ++y)
+        for (int x = 0; x < kHighlightImageSize; ++x) {
+            const bool self = mask[std::size_t(y * kHighlightImageSize + x)];
             for (int r = 1; r < cap; ++r) {
                 bool found = false;
                 for (int dy = -r; dy <= r && !found; ++dy)
                     for (int dx = -r; dx <= r && !found; ++dx) {
                         const int nx = x + dx, ny = y + dy;
-                        if (nx < 0 || ny < 0 || nx >= kSize || ny >= kSize) continue;
-                        found = mask[std::size_t(ny * kSize + nx)] != self;
+                        if (nx < 0 || ny < 0 || nx >= kHighlightImageSize ||
+                            ny >= kHighlightImageSize)
+                            continue;
+                        found = mask[std::size_t(ny * kHighlightImageSize + nx)] != self;
                     }
                 if (found) {
-                    dist[std::size_t(y * kSize + x)] = r;
+                    dist[std::size_t(y * kHighlightImageSize + x)] = r;
                     break;
                 }
             }
@@ -102,7 +104,7 @@ class HighlightTest : public GpuTest {
 protected:
     gpu::FrameRequest settings() {
         gpu::FrameRequest s;
-        s.width = s.height = kSize;
+        s.width = s.height = kHighlightImageSize;
         std::string error;
         EXPECT_TRUE(gpu::parse_camera_spec("eye=1.5,1.2,2:target=0,0,0", s.camera, error)) << error;
         return s;
@@ -122,7 +124,7 @@ TEST_F(HighlightTest, SelectedInstanceIsOutlinedNotTinted) {
     const std::vector<std::uint8_t> lit_rgba = draw(s);
     const Outline o = classify_outline(plain_rgba, lit_rgba);
     // The box covers about a quarter of the 160² image.
-    EXPECT_GT(o.interior, std::size_t(kSize * kSize / 8));
+    EXPECT_GT(o.interior, std::size_t(kHighlightImageSize * kHighlightImageSize / 8));
     EXPECT_EQ(o.interior_changed, 0u) << "the surface keeps its colours (no tint)";
     EXPECT_GT(o.ring_orange, o.ring * 3 / 4) << "an orange ring around the silhouette";
     EXPECT_EQ(count_highlight(lit_rgba).magenta, plain.magenta);
@@ -133,7 +135,9 @@ TEST_F(HighlightTest, SelectedInstanceIsOutlinedNotTinted) {
     const Counts detail = count_highlight(detailed);
     EXPECT_GT(detail.magenta, plain.magenta + 100) << "filled triangle and vertex tripod";
     std::string error;
-    EXPECT_TRUE(tex::write_png("highlight_box.png", kSize, kSize, detailed, error)) << error;
+    EXPECT_TRUE(tex::write_png("highlight_box.png", kHighlightImageSize, kHighlightImageSize,
+                               detailed, error))
+        << error;
 
     // Out of range: no instance, so nothing is highlighted (and nothing breaks).
     s.highlight_instance = 7;
@@ -156,7 +160,7 @@ TEST_F(HighlightTest, DoubleSidedPlaneIsOutlinedToo) {
     s.highlight_instance = 0;
     const std::vector<std::uint8_t> lit = draw(s);
     const Outline o = classify_outline(plain, lit);
-    EXPECT_GT(o.interior, std::size_t(kSize * kSize / 10));
+    EXPECT_GT(o.interior, std::size_t(kHighlightImageSize * kHighlightImageSize / 10));
     EXPECT_EQ(o.interior_changed, 0u) << "the surface keeps its colours";
     EXPECT_GT(o.ring_orange, o.ring / 2) << "an orange ring around the plane";
     renderer().unload();

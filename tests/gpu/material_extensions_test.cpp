@@ -3,6 +3,7 @@
 // importer reads and warns about (bad values name their JSON pointer and fall back as
 // docs/materials.md says), and the extension buffer's layout: only materials that use
 // an extension get a block, a scene without any gets no bytes.
+#include "gpu/material_extension_support.h"
 #include "test_support.h"
 
 #include <sherpa/render/material_extensions.h>
@@ -26,23 +27,11 @@ LoadResult load_data(const std::string& name) {
     return load_scene((test::data_dir() / name).string());
 }
 
-const ValidationMessage* message_at(const Scene& s, const std::string& pointer) {
-    for (const ValidationMessage& m : s.validation.messages)
-        if (m.pointer == pointer) return &m;
-    return nullptr;
-}
-
 const MaterialInstance& material(const Scene& s, const std::string& name) {
     for (const MaterialInstance& m : s.materials)
         if (m.name == name) return m;
     ADD_FAILURE() << "no material " << name;
     return s.materials.front();
-}
-
-gpu::MaterialExtensionBuffer layout(const Scene& s) {
-    return gpu::build_material_extensions(s.materials, [](const TextureSlot& slot, TextureRole) {
-        return slot.present() ? 100u + std::uint32_t(slot.texture) : gpu::kWhiteTexture;
-    });
 }
 
 TEST(MaterialExtensions, IorAndSpecularAreDrawnNotWarnedAsMissing) {
@@ -66,24 +55,25 @@ TEST(MaterialExtensions, BadValuesAreWarnedWithTheirPointerAndFallBack) {
     for (int m : {0, 1, 2, 8}) {
         const std::string p =
             "/materials/" + std::to_string(m) + "/extensions/KHR_materials_ior/ior";
-        EXPECT_NE(message_at(s, p), nullptr) << p;
+        EXPECT_NE(test::message_at(s, p), nullptr) << p;
         EXPECT_FLOAT_EQ(*s.materials[std::size_t(m)].ior, kDefaultIor) << p;
     }
     // ior 0 is valid (F0 = 1): no message.
-    EXPECT_EQ(message_at(s, "/materials/5/extensions/KHR_materials_ior/ior"), nullptr);
+    EXPECT_EQ(test::message_at(s, "/materials/5/extensions/KHR_materials_ior/ior"), nullptr);
     EXPECT_FLOAT_EQ(*material(s, "ior zero").ior, 0.0f);
     // specularFactor 2 clamps to 1, -0.5 to 0; a non-finite colour takes [1, 1, 1], a
     // negative component clamps to 0.
     const std::string spec3 = "/materials/3/extensions/KHR_materials_specular/";
-    EXPECT_NE(message_at(s, spec3 + "specularFactor"), nullptr);
-    EXPECT_NE(message_at(s, spec3 + "specularColorFactor"), nullptr);
+    EXPECT_NE(test::message_at(s, spec3 + "specularFactor"), nullptr);
+    EXPECT_NE(test::message_at(s, spec3 + "specularColorFactor"), nullptr);
     EXPECT_FLOAT_EQ(material(s, "bad specular").specular->specular_factor, 1.0f);
     EXPECT_EQ(material(s, "bad specular").specular->specular_color_factor, glm::vec3(1.0f));
     EXPECT_FLOAT_EQ(material(s, "negative colour").specular->specular_factor, 0.0f);
     EXPECT_EQ(material(s, "negative colour").specular->specular_color_factor,
               glm::vec3(0.0f, 0.5f, 0.25f));
-    EXPECT_NE(message_at(s, "/materials/4/extensions/KHR_materials_specular/specularColorFactor"),
-              nullptr);
+    EXPECT_NE(
+        test::message_at(s, "/materials/4/extensions/KHR_materials_specular/specularColorFactor"),
+        nullptr);
     // A texture index out of range: the material is drawn with default values, said.
     bool defaulted = false;
     for (const ValidationMessage& m : s.validation.messages)
@@ -98,7 +88,7 @@ TEST(MaterialExtensions, BadValuesAreWarnedWithTheirPointerAndFallBack) {
 TEST(MaterialExtensions, OnlyMaterialsThatUseAnExtensionHaveBlocks) {
     const LoadResult r = load_data("material_extensions_bad.gltf");
     ASSERT_TRUE(r) << r.error;
-    const gpu::MaterialExtensionBuffer b = layout(*r.scene);
+    const gpu::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     ASSERT_EQ(b.places.size(), r.scene->materials.size());
     std::size_t words = 0;
     for (std::size_t i = 0; i < b.places.size(); ++i) {
@@ -144,7 +134,7 @@ TEST(MaterialExtensions, OnlyMaterialsThatUseAnExtensionHaveBlocks) {
 TEST(MaterialExtensions, ASceneWithoutExtensionsHasNoBytes) {
     const LoadResult r = load_scene(test::gltf_asset("DamagedHelmet"));
     ASSERT_TRUE(r) << r.error;
-    const gpu::MaterialExtensionBuffer b = layout(*r.scene);
+    const gpu::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.bytes(), 0u);
     for (const gpu::MaterialExtensionPlace& p : b.places) EXPECT_FALSE(p.any());
 }
@@ -153,7 +143,7 @@ TEST(MaterialExtensions, AnIorOnlyMaterialPaysSixtyFourBytes) {
     const LoadResult r = load_data("material_sweeps/ior_sweep.gltf");
     ASSERT_TRUE(r) << r.error;
     // Its 48-byte index (three words: GPUExtensionIndex) and its 16-byte block.
-    EXPECT_EQ(layout(*r.scene).bytes(), 10u * 64u);
+    EXPECT_EQ(test::extension_layout(*r.scene).bytes(), 10u * 64u);
 }
 
 TEST(MaterialExtensions, ClearcoatIsReadAndPacked) {
@@ -172,7 +162,7 @@ TEST(MaterialExtensions, ClearcoatIsReadAndPacked) {
     // The clearcoat normal map alone asks for tangents and the TEXCOORD_0 stream.
     EXPECT_TRUE(reads_normal_map(m));
     ASSERT_EQ(extension_texture_slots(m).size(), 3u);
-    const gpu::MaterialExtensionBuffer b = layout(*r.scene);
+    const gpu::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.bytes(), 48u + 128u);
     gpu::GPUClearcoatBlock c;
     std::memcpy(&c, &b.words[b.places[0].clearcoat], sizeof c);
@@ -190,14 +180,14 @@ TEST(MaterialExtensions, BadClearcoatValuesAreWarnedAndFallBack) {
     const std::string cc9 = "/materials/9/extensions/KHR_materials_clearcoat/";
     const std::string cc10 = "/materials/10/extensions/KHR_materials_clearcoat/";
     // -0.5 clamps to 0; a string roughness takes the default 0.
-    EXPECT_NE(message_at(s, cc9 + "clearcoatFactor"), nullptr);
-    EXPECT_NE(message_at(s, cc9 + "clearcoatRoughnessFactor"), nullptr);
+    EXPECT_NE(test::message_at(s, cc9 + "clearcoatFactor"), nullptr);
+    EXPECT_NE(test::message_at(s, cc9 + "clearcoatRoughnessFactor"), nullptr);
     EXPECT_FLOAT_EQ(material(s, "bad clearcoat").clearcoat->factor, 0.0f);
     EXPECT_FLOAT_EQ(material(s, "bad clearcoat").clearcoat->roughness_factor, 0.0f);
     // 2 clamps to 1; 1e39 (infinite as a float) roughness and normal scale: defaults.
-    EXPECT_NE(message_at(s, cc10 + "clearcoatFactor"), nullptr);
-    EXPECT_NE(message_at(s, cc10 + "clearcoatRoughnessFactor"), nullptr);
-    EXPECT_NE(message_at(s, cc10 + "clearcoatNormalTexture/scale"), nullptr);
+    EXPECT_NE(test::message_at(s, cc10 + "clearcoatFactor"), nullptr);
+    EXPECT_NE(test::message_at(s, cc10 + "clearcoatRoughnessFactor"), nullptr);
+    EXPECT_NE(test::message_at(s, cc10 + "clearcoatNormalTexture/scale"), nullptr);
     const MaterialClearcoat& c = *material(s, "clearcoat out of range").clearcoat;
     EXPECT_FLOAT_EQ(c.factor, 1.0f);
     EXPECT_FLOAT_EQ(c.roughness_factor, 0.0f);
@@ -219,7 +209,7 @@ TEST(MaterialExtensions, SheenIsReadAndPacked) {
     EXPECT_EQ(m.sheen->color.texture, 0);
     EXPECT_TRUE(m.sheen->roughness.transform.present);
     EXPECT_EQ(extension_texture_slots(m).size(), 2u);
-    const gpu::MaterialExtensionBuffer b = layout(*r.scene);
+    const gpu::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.bytes(), 48u + 96u);
     gpu::GPUSheenBlock s;
     std::memcpy(&s, &b.words[b.places[0].sheen], sizeof s);
@@ -234,8 +224,8 @@ TEST(MaterialExtensions, BadSheenValuesAreWarnedAndFallBack) {
     ASSERT_TRUE(r) << r.error;
     const Scene& s = *r.scene;
     const std::string at = "/materials/11/extensions/KHR_materials_sheen/";
-    EXPECT_NE(message_at(s, at + "sheenColorFactor"), nullptr);
-    EXPECT_NE(message_at(s, at + "sheenRoughnessFactor"), nullptr);
+    EXPECT_NE(test::message_at(s, at + "sheenColorFactor"), nullptr);
+    EXPECT_NE(test::message_at(s, at + "sheenRoughnessFactor"), nullptr);
     const MaterialSheen& sh = *material(s, "bad sheen").sheen;
     EXPECT_EQ(sh.color_factor, glm::vec3(1.0f, 0.0f, 0.5f));
     EXPECT_FLOAT_EQ(sh.roughness_factor, 0.0f);
@@ -261,7 +251,7 @@ TEST(MaterialExtensions, AnisotropyIsReadAndPackedAndAsksForTangents) {
     EXPECT_EQ(r.scene->meshes.at(0).provenance_of(VertexAttribute::Tangent), Provenance::Authored);
     ASSERT_EQ(extension_texture_slots(m).size(), 1u);
     EXPECT_EQ(extension_texture_slots(m)[0].role, kRoleLinear);
-    const gpu::MaterialExtensionBuffer b = layout(*r.scene);
+    const gpu::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.bytes(), 48u + 64u);
     gpu::GPUAnisotropyBlock a;
     std::memcpy(&a, &b.words[b.places[0].anisotropy], sizeof a);
@@ -288,7 +278,7 @@ TEST(MaterialExtensions, AnisotropyRotationIsStoredAsItsCosineAndSine) {
     const LoadResult r = load_data("material_sweeps/anisotropy_sweep.gltf");
     ASSERT_TRUE(r) << r.error;
     ASSERT_EQ(r.scene->materials.size(), 10u);
-    const gpu::MaterialExtensionBuffer b = layout(*r.scene);
+    const gpu::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.bytes(), 10u * (48u + 64u));
     // Row 2: strength 0.8 at 0, 30, 60, 90 and 135 degrees.
     const float degrees[] = {0.0f, 30.0f, 60.0f, 90.0f, 135.0f};
@@ -310,14 +300,14 @@ TEST(MaterialExtensions, BadAnisotropyValuesAreWarnedAndFallBack) {
     const std::string a12 = "/materials/12/extensions/KHR_materials_anisotropy/";
     const std::string a13 = "/materials/13/extensions/KHR_materials_anisotropy/";
     // 1.5 clamps to 1; a string rotation takes the default 0.
-    EXPECT_NE(message_at(s, a12 + "anisotropyStrength"), nullptr);
-    EXPECT_NE(message_at(s, a12 + "anisotropyRotation"), nullptr);
+    EXPECT_NE(test::message_at(s, a12 + "anisotropyStrength"), nullptr);
+    EXPECT_NE(test::message_at(s, a12 + "anisotropyRotation"), nullptr);
     EXPECT_FLOAT_EQ(material(s, "bad anisotropy").anisotropy->strength, 1.0f);
     EXPECT_FLOAT_EQ(material(s, "bad anisotropy").anisotropy->rotation, 0.0f);
     // -0.5 clamps to 0; 1e39 (infinite as a float) rotation: 0. Its texture's image is
     // missing: the texture pipeline's warning, the slot reads white.
-    EXPECT_NE(message_at(s, a13 + "anisotropyStrength"), nullptr);
-    EXPECT_NE(message_at(s, a13 + "anisotropyRotation"), nullptr);
+    EXPECT_NE(test::message_at(s, a13 + "anisotropyStrength"), nullptr);
+    EXPECT_NE(test::message_at(s, a13 + "anisotropyRotation"), nullptr);
     const MaterialAnisotropy& a = *material(s, "anisotropy not finite").anisotropy;
     EXPECT_FLOAT_EQ(a.strength, 0.0f);
     EXPECT_FLOAT_EQ(a.rotation, 0.0f);
@@ -339,7 +329,7 @@ TEST(MaterialExtensions, IridescenceIsReadAndPacked) {
     EXPECT_TRUE(m.iridescence->thickness.transform.present);
     EXPECT_FALSE(needs_tangents(m));
     ASSERT_EQ(extension_texture_slots(m).size(), 2u);
-    const gpu::MaterialExtensionBuffer b = layout(*r.scene);
+    const gpu::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.bytes(), 48u + 96u);
     gpu::GPUIridescenceBlock i;
     std::memcpy(&i, &b.words[b.places[0].iridescence], sizeof i);
@@ -356,17 +346,17 @@ TEST(MaterialExtensions, BadIridescenceValuesAreWarnedAndFallBack) {
     const std::string i14 = "/materials/14/extensions/KHR_materials_iridescence/";
     const std::string i15 = "/materials/15/extensions/KHR_materials_iridescence/";
     // 1.5 clamps to 1; an ior below 1 takes the default 1.3; -10 nm clamps to 0.
-    EXPECT_NE(message_at(s, i14 + "iridescenceFactor"), nullptr);
-    EXPECT_NE(message_at(s, i14 + "iridescenceIor"), nullptr);
-    EXPECT_NE(message_at(s, i14 + "iridescenceThicknessMinimum"), nullptr);
+    EXPECT_NE(test::message_at(s, i14 + "iridescenceFactor"), nullptr);
+    EXPECT_NE(test::message_at(s, i14 + "iridescenceIor"), nullptr);
+    EXPECT_NE(test::message_at(s, i14 + "iridescenceThicknessMinimum"), nullptr);
     const MaterialIridescence& a = *material(s, "bad iridescence").iridescence;
     EXPECT_FLOAT_EQ(a.factor, 1.0f);
     EXPECT_FLOAT_EQ(a.ior, 1.3f);
     EXPECT_FLOAT_EQ(a.thickness_minimum, 0.0f);
     // A string factor: 0; 1e39 (infinite as a float) ior and maximum: their defaults.
-    EXPECT_NE(message_at(s, i15 + "iridescenceFactor"), nullptr);
-    EXPECT_NE(message_at(s, i15 + "iridescenceIor"), nullptr);
-    EXPECT_NE(message_at(s, i15 + "iridescenceThicknessMaximum"), nullptr);
+    EXPECT_NE(test::message_at(s, i15 + "iridescenceFactor"), nullptr);
+    EXPECT_NE(test::message_at(s, i15 + "iridescenceIor"), nullptr);
+    EXPECT_NE(test::message_at(s, i15 + "iridescenceThicknessMaximum"), nullptr);
     const MaterialIridescence& b = *material(s, "iridescence not finite").iridescence;
     EXPECT_FLOAT_EQ(b.factor, 0.0f);
     EXPECT_FLOAT_EQ(b.ior, 1.3f);

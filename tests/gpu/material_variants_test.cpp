@@ -5,6 +5,7 @@
 // only the instance records' material words. tests/data/material_sweeps/variants.gltf
 // (tools/material_sweeps/make_sweeps.py): three unlit spheres, variants "Warm" (sphere 0
 // red, sphere 2 a checker texture) and "Cool" (sphere 1 masked away, sphere 2 green).
+#include "gpu/material_extension_support.h"
 #include "gpu_test_support.h"
 
 #include <sherpa/render/renderer.h>
@@ -22,12 +23,6 @@ constexpr std::uint32_t kRed = 3, kChecker = 4, kMasked = 5, kGreen = 6;
 
 std::string file(const char* name) {
     return (data_dir() / "material_sweeps" / name).string();
-}
-
-const ValidationMessage* message_at(const Scene& s, const std::string& pointer) {
-    for (const ValidationMessage& m : s.validation.messages)
-        if (m.pointer == pointer) return &m;
-    return nullptr;
 }
 
 TEST(MaterialVariants, ImportReadsNamesAndMappings) {
@@ -83,7 +78,7 @@ TEST(MaterialVariants, BadMappingsAreWarnedWithTheirPointerAndKeepTheDefault) {
         {base + "2/variants/0", "KHR_MATERIALS_VARIANTS_NON_UNIQUE_VARIANT"},
         {base + "3", "UNDEFINED_PROPERTY"}};
     for (const auto& [p, code] : expected) {
-        const ValidationMessage* m = message_at(s, p);
+        const ValidationMessage* m = test::message_at(s, p);
         ASSERT_NE(m, nullptr) << p;
         EXPECT_EQ(m->code, code) << p;
         EXPECT_EQ(m->severity, Severity::Error) << p;

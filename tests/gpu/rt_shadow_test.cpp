@@ -12,7 +12,7 @@
 namespace sherpa::test {
 namespace {
 
-constexpr std::uint32_t kSize = 96;
+constexpr std::uint32_t kShadowImageSize = 96;
 // Behind the plane, the sun on the camera's side travelling along (0, -1, 1): the
 // caster's shadow on the plane is x [-0.3, 0.3], y [-0.1, 0.3].
 constexpr const char* kCamera = "eye=0,0,-3:target=0,0,0:fov=50:aspect=1";
@@ -27,7 +27,7 @@ protected:
         std::string error;
         ASSERT_TRUE(gpu::parse_camera_spec(kCamera, settings_.camera, error)) << error;
         ASSERT_TRUE(parse_camera_spec(kCamera, spec_, error)) << error;
-        settings_.width = settings_.height = kSize;
+        settings_.width = settings_.height = kShadowImageSize;
         settings_.sun_direction = glm::normalize(glm::vec3(0.0f, -1.0f, 1.0f));
         settings_.view = gpu::DebugView::Shadow;
         settings_.renderer = gpu::RendererKind::RayTraced;
@@ -45,8 +45,8 @@ protected:
     // Where the ray through pixel (px, py) meets plane z = `z`.
     glm::vec3 hit(std::uint32_t px, std::uint32_t py, float z) const {
         const glm::mat4 inverse = glm::inverse(spec_.view_projection());
-        const float x = (float(px) + 0.5f) / kSize * 2.0f - 1.0f;
-        const float y = 1.0f - (float(py) + 0.5f) / kSize * 2.0f;
+        const float x = (float(px) + 0.5f) / kShadowImageSize * 2.0f - 1.0f;
+        const float y = 1.0f - (float(py) + 0.5f) / kShadowImageSize * 2.0f;
         auto unproject = [&](float depth) {
             const glm::vec4 p = inverse * glm::vec4(x, y, depth, 1.0f);
             return glm::vec3(p) / p.w;
@@ -70,7 +70,8 @@ protected:
         for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx) {
                 const int x = int(px) + dx, y = int(py) + dy;
-                if (x < 0 || y < 0 || x >= int(kSize) || y >= int(kSize)) return false;
+                if (x < 0 || y < 0 || x >= int(kShadowImageSize) || y >= int(kShadowImageSize))
+                    return false;
                 if (expected(std::uint32_t(x), std::uint32_t(y)) != e) return false;
             }
         return true;
@@ -79,7 +80,7 @@ protected:
     std::vector<std::uint8_t> render(gpu::Renderer& r, const gpu::FrameRequest& s) {
         std::vector<std::uint8_t> rgba;
         r.render(s, &rgba);
-        EXPECT_EQ(rgba.size(), std::size_t{kSize} * kSize * 4);
+        EXPECT_EQ(rgba.size(), std::size_t{kShadowImageSize} * kShadowImageSize * 4);
         return rgba;
     }
 
@@ -100,11 +101,11 @@ TEST_F(RtShadow, HardShadowMatchesTheProjectedOutline) {
     auto r = make_renderer();
     const auto rgba = render(*r, settings_);
     std::size_t judged = 0, shadowed = 0, wrong = 0;
-    for (std::uint32_t y = 0; y < kSize; ++y)
-        for (std::uint32_t x = 0; x < kSize; ++x) {
+    for (std::uint32_t y = 0; y < kShadowImageSize; ++y)
+        for (std::uint32_t x = 0; x < kShadowImageSize; ++x) {
             const int e = expected(x, y);
             if (e < 0 || !inside_band(x, y)) continue;
-            const std::uint8_t v = rgba[(std::size_t(y) * kSize + x) * 4];
+            const std::uint8_t v = rgba[(std::size_t(y) * kShadowImageSize + x) * 4];
             ++judged;
             shadowed += e == 0;
             wrong += v != (e ? 255 : 0);
@@ -152,10 +153,13 @@ TEST_F(RtShadow, AmbientOcclusionIsOneInTheOpenAndLessUnderTheCaster) {
     // Its back: the caster 0.5 away fills part of the hemisphere of the points beside it.
     s.camera = settings_.camera;
     const auto back = render(*r, s);
-    const std::size_t below = (std::size_t(kSize / 2 - 6) * kSize + kSize / 2) * 4; // y ~ 0.2
+    const std::size_t below =
+        (std::size_t(kShadowImageSize / 2 - 6) * kShadowImageSize + kShadowImageSize / 2) *
+        4; // y ~ 0.2
     EXPECT_LT(back[below], 245) << "AO under the caster";
     EXPECT_GT(back[below], 20);
-    const std::size_t corner = (std::size_t(kSize - 24) * kSize + 24) * 4; // (+-0.7, -0.7)
+    const std::size_t corner =
+        (std::size_t(kShadowImageSize - 24) * kShadowImageSize + 24) * 4; // (+-0.7, -0.7)
     EXPECT_EQ(back[corner], back[corner + 2]) << "the plane, not the clear colour";
     EXPECT_GT(back[corner], back[below]) << "farther from the caster, less occluded";
 }

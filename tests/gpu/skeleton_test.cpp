@@ -15,7 +15,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace sherpa::test {
-namespace {
+namespace skeleton_test {
 
 constexpr std::uint32_t kSize = 200;
 
@@ -165,5 +165,5 @@ TEST(SkeletonLines, BonesToParentJointsAndACrossPerJoint) {
     EXPECT_EQ(lines.size(), 2u * 3); // only joint 3's cross: its bone ends at a NaN
 }
 
-} // namespace
+} // namespace skeleton_test
 } // namespace sherpa::test

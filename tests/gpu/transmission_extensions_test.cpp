@@ -2,6 +2,7 @@
 // _dispersion): what the importer reads and warns about (each bad value named by its
 // JSON pointer, with the fallback docs/materials.md gives), and their blocks in the
 // extension buffer: only materials that use one get it.
+#include "gpu/material_extension_support.h"
 #include "test_support.h"
 
 #include <sherpa/render/material_extensions.h>
@@ -16,18 +17,6 @@
 namespace {
 
 using namespace sherpa;
-
-const ValidationMessage* message_at(const Scene& s, const std::string& pointer) {
-    for (const ValidationMessage& m : s.validation.messages)
-        if (m.pointer == pointer) return &m;
-    return nullptr;
-}
-
-gpu::MaterialExtensionBuffer layout(const Scene& s) {
-    return gpu::build_material_extensions(s.materials, [](const TextureSlot& slot, TextureRole) {
-        return slot.present() ? 100u + std::uint32_t(slot.texture) : gpu::kWhiteTexture;
-    });
-}
 
 template <typename Block> Block block_at(const gpu::MaterialExtensionBuffer& b, std::uint32_t w) {
     Block out;
@@ -61,33 +50,33 @@ TEST(TransmissionExtensions, BadValuesAreWarnedWithTheirPointerAndFallBack) {
     // -0.5 clamps to 0; a string and 1e39 (infinite as a float) take the default 0.
     for (int m : {0, 1, 4}) {
         const std::string p = "/materials/" + std::to_string(m) + t;
-        EXPECT_NE(message_at(s, p), nullptr) << p;
+        EXPECT_NE(test::message_at(s, p), nullptr) << p;
         ASSERT_TRUE(s.materials[std::size_t(m)].transmission) << p;
         EXPECT_EQ(s.materials[std::size_t(m)].transmission->factor, 0.0f) << p;
     }
     // A volume without transmission: warned, not drawn.
-    EXPECT_NE(message_at(s, "/materials/2/extensions/KHR_materials_volume"), nullptr);
+    EXPECT_NE(test::message_at(s, "/materials/2/extensions/KHR_materials_volume"), nullptr);
     EXPECT_FALSE(s.materials[2].volume.has_value());
     // A negative thickness clamps to 0, a zero distance means none (infinity), colour
     // components clamp to 0..1.
     const std::string v = "/materials/3/extensions/KHR_materials_volume/";
-    EXPECT_NE(message_at(s, v + "thicknessFactor"), nullptr);
-    EXPECT_NE(message_at(s, v + "attenuationDistance"), nullptr);
-    EXPECT_NE(message_at(s, v + "attenuationColor"), nullptr);
+    EXPECT_NE(test::message_at(s, v + "thicknessFactor"), nullptr);
+    EXPECT_NE(test::message_at(s, v + "attenuationDistance"), nullptr);
+    EXPECT_NE(test::message_at(s, v + "attenuationColor"), nullptr);
     ASSERT_TRUE(s.materials[3].volume);
     EXPECT_EQ(s.materials[3].volume->thickness_factor, 0.0f);
     EXPECT_TRUE(std::isinf(s.materials[3].volume->attenuation_distance));
     EXPECT_EQ(s.materials[3].volume->attenuation_color, glm::vec3(1.0f, 0.0f, 0.5f));
     // Dispersion needs a volume; a negative one clamps to 0.
-    EXPECT_NE(message_at(s, "/materials/5/extensions/KHR_materials_dispersion"), nullptr);
+    EXPECT_NE(test::message_at(s, "/materials/5/extensions/KHR_materials_dispersion"), nullptr);
     EXPECT_FALSE(s.materials[5].dispersion.has_value());
-    EXPECT_NE(message_at(s, "/materials/6/extensions/KHR_materials_dispersion/dispersion"),
+    EXPECT_NE(test::message_at(s, "/materials/6/extensions/KHR_materials_dispersion/dispersion"),
               nullptr);
     EXPECT_EQ(*s.materials[6].dispersion, 0.0f);
     // Diffuse transmission: 1.5 clamps to 1, a non-number colour takes [1, 1, 1].
     const std::string d = "/materials/7/extensions/KHR_materials_diffuse_transmission/";
-    EXPECT_NE(message_at(s, d + "diffuseTransmissionFactor"), nullptr);
-    EXPECT_NE(message_at(s, d + "diffuseTransmissionColorFactor"), nullptr);
+    EXPECT_NE(test::message_at(s, d + "diffuseTransmissionFactor"), nullptr);
+    EXPECT_NE(test::message_at(s, d + "diffuseTransmissionColorFactor"), nullptr);
     ASSERT_TRUE(s.materials[7].diffuse_transmission);
     EXPECT_EQ(s.materials[7].diffuse_transmission->factor, 1.0f);
     EXPECT_EQ(s.materials[7].diffuse_transmission->color_factor, glm::vec3(1.0f));
@@ -99,15 +88,15 @@ TEST(TransmissionExtensions, BadValuesAreWarnedWithTheirPointerAndFallBack) {
     EXPECT_TRUE(good.transmission->texture.transform.present);
     EXPECT_EQ(good.transmission->texture.transform.scale, glm::vec2(2.0f));
     EXPECT_TRUE(good.volume->thickness.present());
-    EXPECT_EQ(message_at(s, "/materials/8/extensions/KHR_materials_transmission/"
-                            "transmissionFactor"),
+    EXPECT_EQ(test::message_at(s, "/materials/8/extensions/KHR_materials_transmission/"
+                                  "transmissionFactor"),
               nullptr);
 }
 
 TEST(TransmissionExtensions, BlocksHoldTheValuesAndOnlyUsersPay) {
     const LoadResult r = load_scene((test::data_dir() / "transmission_bad.gltf").string());
     ASSERT_TRUE(r) << r.error;
-    const gpu::MaterialExtensionBuffer b = layout(*r.scene);
+    const gpu::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     std::size_t words = 0;
     for (std::size_t i = 0; i < b.places.size(); ++i) {
         const MaterialInstance& m = r.scene->materials[i];
@@ -145,7 +134,7 @@ TEST(TransmissionExtensions, BlocksHoldTheValuesAndOnlyUsersPay) {
 TEST(TransmissionExtensions, ASceneWithoutThemPaysNothing) {
     const LoadResult r = load_scene((test::data_dir() / "material_sweeps/ior_sweep.gltf").string());
     ASSERT_TRUE(r) << r.error;
-    const gpu::MaterialExtensionBuffer b = layout(*r.scene);
+    const gpu::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.transmissive_materials, 0u);
     for (const gpu::MaterialExtensionPlace& p : b.places) {
         EXPECT_EQ(p.transmission, gpu::kNoExtension);

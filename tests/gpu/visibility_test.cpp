@@ -10,7 +10,7 @@
 #include <sherpa/scene/visibility.h>
 
 namespace sherpa::test {
-namespace {
+namespace visibility_test {
 
 constexpr std::uint32_t kSize = 96;
 constexpr const char* kCamera = "eye=0,0,-3:target=0,0,0:fov=50:aspect=1";
@@ -220,5 +220,5 @@ TEST_F(Visibility, HiddenSkinnedMeshLeavesPosedFramesOnEveryPathAndTheRays) {
     EXPECT_EQ(render(r, s), shown) << "shown again in the same pose";
 }
 
-} // namespace
+} // namespace visibility_test
 } // namespace sherpa::test

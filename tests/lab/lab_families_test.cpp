@@ -5,23 +5,14 @@
 #include <sherpa/texture/block_codecs.h>
 #include <sherpa/texture/quality.h>
 
+#include "lab/lab_figures.h"
 #include <gtest/gtest.h>
 
 namespace {
 
 using namespace sherpa;
-
-double figure(const lab::MethodResult& m, const char* name) {
-    const lab::ErrorFigure* e = m.error(name);
-    EXPECT_NE(e, nullptr) << m.method.name << " has no " << name;
-    return e ? e->value : -1.0;
-}
-
-std::uint64_t failures(const lab::MethodResult& m, const std::string& cause) {
-    std::uint64_t n = 0;
-    for (const lab::Failure& f : m.failures) n += f.cause == cause ? f.count : 0;
-    return n;
-}
+using sherpa::test::failures;
+using sherpa::test::figure;
 
 TEST(LabTangents, WeldedDiffersFromExactInTheKnownCorners) {
     Scene scene = test::scene_of({test::mirrored_strip()});

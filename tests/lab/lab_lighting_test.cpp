@@ -9,12 +9,14 @@
 
 #include <gtest/gtest.h>
 
+#include "lab/lab_figures.h"
 #include <cmath>
 #include <cstdio>
 
 namespace {
 
 using namespace sherpa;
+using sherpa::test::figure;
 
 std::unique_ptr<Scene> sphere_row(float metallic) {
     const auto path =
@@ -56,12 +58,6 @@ const lab::MethodResult& method(const lab::FamilyReport& r, const std::string& n
         if (m.method.name == name) return m;
     ADD_FAILURE() << "no method " << name;
     return r.methods.front();
-}
-
-double figure(const lab::MethodResult& m, const std::string& name) {
-    const lab::ErrorFigure* e = m.error(name);
-    EXPECT_NE(e, nullptr) << m.method.name << " has no " << name;
-    return e ? e->value : -1.0;
 }
 
 // Skips where the device does not ray trace; fails on validation messages.

@@ -8,24 +8,15 @@
 #include <cmath>
 #include <limits>
 
+#include "lab/lab_figures.h"
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 namespace {
 
 using namespace sherpa;
-
-double figure(const lab::MethodResult& m, const char* name) {
-    const lab::ErrorFigure* e = m.error(name);
-    EXPECT_NE(e, nullptr) << m.method.name << " " << m.method.parameters << " has no " << name;
-    return e ? e->value : -1.0;
-}
-
-std::uint64_t failures(const lab::MethodResult& m, const std::string& cause) {
-    std::uint64_t n = 0;
-    for (const lab::Failure& f : m.failures) n += f.cause == cause ? f.count : 0;
-    return n;
-}
+using sherpa::test::failures;
+using sherpa::test::figure;
 
 // Bits of a method's parameters "vp=14 vn=8 vt=12" (0 for the float reference).
 int bits_of(const lab::MethodResult& m, const char* key) {

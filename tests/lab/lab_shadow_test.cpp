@@ -4,11 +4,13 @@
 #include <sherpa/lab/families.h>
 #include <sherpa/scene/scene_loader.h>
 
+#include "lab/lab_figures.h"
 #include <gtest/gtest.h>
 
 namespace {
 
 using namespace sherpa;
+using sherpa::test::figure;
 
 std::unique_ptr<Scene> sunlit_scene() {
     LoadResult r = load_scene(std::string(SHERPA_TEST_DATA_DIR) + "/double_sided_shadow.gltf",
@@ -38,12 +40,6 @@ lab::ShadowFamilyOptions small(bool ray_tracing) {
     o.ray_tracing = ray_tracing;
     o.validation = true;
     return o;
-}
-
-double figure(const lab::MethodResult& m, const char* name) {
-    const lab::ErrorFigure* e = m.error(name);
-    EXPECT_NE(e, nullptr) << m.method.name << " has no " << name;
-    return e ? e->value : -1.0;
 }
 
 TEST(LabShadows, FinerMapsGetFewerPixelsWrongAndTheUnlitSideIsAFailure) {

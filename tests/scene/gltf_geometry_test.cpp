@@ -1,5 +1,6 @@
 // Geometry decoding checked against independent reads of the real .bin files,
 // plus materials, samplers, lights, cameras and scene selection.
+#include "load_error_check.h"
 #include "test_support.h"
 
 #include <sherpa/scene/scene_loader.h>
@@ -14,12 +15,6 @@ namespace {
 using sherpa::VertexAttribute;
 namespace test = sherpa::test;
 
-std::unique_ptr<sherpa::Scene> load(const std::string& path) {
-    sherpa::LoadResult r = sherpa::load_scene(path);
-    EXPECT_TRUE(r) << r.error;
-    return std::move(r.scene);
-}
-
 glm::vec3 vec3_at(const std::vector<unsigned char>& bin, std::size_t offset) {
     glm::vec3 v;
     std::memcpy(&v, bin.data() + offset, 12);
@@ -27,7 +22,7 @@ glm::vec3 vec3_at(const std::vector<unsigned char>& bin, std::size_t offset) {
 }
 
 TEST(FlatNormals, TriangleWithoutIndicesGetsPerpendicularFaceNormals) {
-    auto scene = load(test::gltf_asset("TriangleWithoutIndices"));
+    auto scene = sherpa::test::load_scene_or_fail(test::gltf_asset("TriangleWithoutIndices"));
     ASSERT_TRUE(scene);
     const sherpa::Mesh& m = scene->meshes.at(0);
     EXPECT_TRUE(m.unwelded);
@@ -52,7 +47,7 @@ TEST(FlatNormals, TriangleWithoutIndicesGetsPerpendicularFaceNormals) {
 
 TEST(FlatNormals, SharedVerticesAreUnweldedPerFace) {
     // SimpleMeshes has indexed triangles and no normals.
-    auto scene = load(test::gltf_asset("SimpleMeshes"));
+    auto scene = sherpa::test::load_scene_or_fail(test::gltf_asset("SimpleMeshes"));
     ASSERT_TRUE(scene);
     const sherpa::Mesh& m = scene->meshes.at(0);
     EXPECT_EQ(m.vertices.size(), m.indices.size());
@@ -68,7 +63,7 @@ std::vector<glm::vec3> corner_positions(const sherpa::Mesh& m) {
 
 TEST(SparseAccessor, SubstitutesValuesFromTheBin) {
     const auto dir = test::assets_dir() / "gltf/SimpleSparseAccessor/glTF";
-    auto scene = load((dir / "SimpleSparseAccessor.gltf").string());
+    auto scene = sherpa::test::load_scene_or_fail((dir / "SimpleSparseAccessor.gltf").string());
     ASSERT_TRUE(scene);
     const auto bin = test::read_bytes(dir / "SimpleSparseAccessor.bin");
     ASSERT_GE(bin.size(), 284u);
@@ -97,7 +92,7 @@ TEST(SparseAccessor, SubstitutesValuesFromTheBin) {
 
 TEST(Interleaved, StridedAttributesMatchTheBin) {
     const auto dir = test::assets_dir() / "gltf/BoxInterleaved/glTF";
-    auto scene = load((dir / "BoxInterleaved.gltf").string());
+    auto scene = sherpa::test::load_scene_or_fail((dir / "BoxInterleaved.gltf").string());
     ASSERT_TRUE(scene);
     const auto bin = test::read_bytes(dir / "BoxInterleaved.bin");
     const sherpa::Mesh& m = scene->meshes.at(0);
@@ -112,7 +107,7 @@ TEST(Interleaved, StridedAttributesMatchTheBin) {
     }
     EXPECT_EQ(m.sources[static_cast<int>(VertexAttribute::Position)]->byte_stride, 24u);
     // Same box as the non-interleaved sample: identical vertex set.
-    auto plain = load(test::gltf_asset("Box"));
+    auto plain = sherpa::test::load_scene_or_fail(test::gltf_asset("Box"));
     ASSERT_TRUE(plain);
     auto key = [](const sherpa::Vertex& x) {
         return std::array<float, 6>{x.position.x, x.position.y, x.position.z,
@@ -125,13 +120,13 @@ TEST(Interleaved, StridedAttributesMatchTheBin) {
 }
 
 TEST(Topology, StripsAndFansBecomeListsWithGltfWinding) {
-    auto strip = load((test::data_dir() / "strip.gltf").string());
+    auto strip = sherpa::test::load_scene_or_fail((test::data_dir() / "strip.gltf").string());
     ASSERT_TRUE(strip);
     // Strip vertices (0,0) (1,0) (0,1) (1,1): triangles {0,1,2} and {1,3,2}.
     EXPECT_EQ(
         corner_positions(strip->meshes.at(0)),
         (std::vector<glm::vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}));
-    auto fan = load((test::data_dir() / "fan.gltf").string());
+    auto fan = sherpa::test::load_scene_or_fail((test::data_dir() / "fan.gltf").string());
     ASSERT_TRUE(fan);
     // Fan vertices (0,0) (1,0) (1,1) (0,1): triangles {1,2,0} and {2,3,0}.
     EXPECT_EQ(
@@ -141,7 +136,7 @@ TEST(Topology, StripsAndFansBecomeListsWithGltfWinding) {
 }
 
 TEST(VertexColors, Color0IsKeptAsItsOwnStream) {
-    auto scene = load(test::gltf_asset("BoxVertexColors"));
+    auto scene = sherpa::test::load_scene_or_fail(test::gltf_asset("BoxVertexColors"));
     ASSERT_TRUE(scene);
     const sherpa::Mesh& m = scene->meshes.at(0);
     EXPECT_EQ(m.provenance_of(VertexAttribute::Color0), sherpa::Provenance::Authored);
@@ -153,7 +148,7 @@ TEST(VertexColors, Color0IsKeptAsItsOwnStream) {
 }
 
 TEST(Materials, AlphaModesAndGpuLayout) {
-    auto scene = load(test::gltf_asset("AlphaBlendModeTest"));
+    auto scene = sherpa::test::load_scene_or_fail(test::gltf_asset("AlphaBlendModeTest"));
     ASSERT_TRUE(scene);
     std::set<sherpa::AlphaMode> modes;
     for (const auto& m : scene->materials) modes.insert(m.alpha_mode);
@@ -175,7 +170,8 @@ TEST(Materials, AlphaModesAndGpuLayout) {
 }
 
 TEST(Materials, ExtensionsAndTexCoordSets) {
-    auto scene = load((test::data_dir() / "lights_and_extensions.gltf").string());
+    auto scene = sherpa::test::load_scene_or_fail(
+        (test::data_dir() / "lights_and_extensions.gltf").string());
     ASSERT_TRUE(scene);
     const auto& m = scene->materials.at(0);
     EXPECT_FLOAT_EQ(m.emissive_strength, 4.0f);
@@ -188,7 +184,7 @@ TEST(Materials, ExtensionsAndTexCoordSets) {
         << "KHR_texture_transform.texCoord overrides the slot's set";
     EXPECT_EQ(scene->images.at(0).mime_type, "image/png");
     EXPECT_GT(scene->images.at(0).byte_size, 0u) << "data-URI image bytes are kept encoded";
-    auto multi = load(test::gltf_asset("MultiUVTest"));
+    auto multi = sherpa::test::load_scene_or_fail(test::gltf_asset("MultiUVTest"));
     ASSERT_TRUE(multi);
     bool uses_set1 = false;
     for (const auto& mat : multi->materials)
@@ -199,7 +195,7 @@ TEST(Materials, ExtensionsAndTexCoordSets) {
 }
 
 TEST(Samplers, AllFiltersAndWrapModes) {
-    auto scene = load(test::gltf_asset("TextureSettingsTest"));
+    auto scene = sherpa::test::load_scene_or_fail(test::gltf_asset("TextureSettingsTest"));
     ASSERT_TRUE(scene);
     EXPECT_EQ(scene->samplers.size(), 5u);
     using sherpa::sampler_from_gltf;
@@ -218,7 +214,8 @@ TEST(Samplers, AllFiltersAndWrapModes) {
 }
 
 TEST(LightsAndCameras, WorldPlacement) {
-    auto scene = load((test::data_dir() / "lights_and_extensions.gltf").string());
+    auto scene = sherpa::test::load_scene_or_fail(
+        (test::data_dir() / "lights_and_extensions.gltf").string());
     ASSERT_TRUE(scene);
     ASSERT_EQ(scene->placed_lights.size(), 2u);
     const auto& sun = scene->placed_lights[0];
@@ -228,7 +225,7 @@ TEST(LightsAndCameras, WorldPlacement) {
     EXPECT_EQ(scene->lights[spot.light].type, sherpa::LightType::Spot);
     EXPECT_EQ(spot.position, glm::vec3(1, 2, 3));
     EXPECT_FLOAT_EQ(scene->lights[spot.light].outer_cone, 0.5f);
-    auto cams = load(test::gltf_asset("Cameras"));
+    auto cams = sherpa::test::load_scene_or_fail(test::gltf_asset("Cameras"));
     ASSERT_TRUE(cams);
     ASSERT_EQ(cams->cameras.size(), 2u);
     EXPECT_EQ(cams->cameras[0].type, sherpa::CameraType::Perspective);
@@ -238,7 +235,7 @@ TEST(LightsAndCameras, WorldPlacement) {
 
 TEST(Scenes, MultipleScenesAreSelectable) {
     const std::string path = (test::data_dir() / "two_scenes.gltf").string();
-    auto scene = load(path);
+    auto scene = sherpa::test::load_scene_or_fail(path);
     ASSERT_TRUE(scene);
     EXPECT_EQ(scene->scenes.size(), 2u);
     EXPECT_FLOAT_EQ(scene->bounds.min.x, 0.0f);

@@ -1,13 +1,22 @@
 #pragma once
-// Shared checks of the malformed-input suites (bad_input_test, hostile_input_test).
+// Shared load checks of the scene suites: a file that must load, and the malformed-input
+// suites' (bad_input_test, hostile_input_test) files that must fail or warn.
 #include <sherpa/scene/scene_loader.h>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include <gtest/gtest.h>
 
 namespace sherpa::test {
+
+// The scene of a file that must load; a test failure with the error and null where not.
+inline std::unique_ptr<Scene> load_scene_or_fail(const std::string& path) {
+    LoadResult r = load_scene(path);
+    EXPECT_TRUE(r) << r.error;
+    return std::move(r.scene);
+}
 
 // A file that must fail to load, and a fragment its error must contain.
 struct BadCase {

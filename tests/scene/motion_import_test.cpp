@@ -17,12 +17,6 @@ namespace {
 namespace test = sherpa::test;
 using sherpa::AnimationPath;
 
-std::unique_ptr<sherpa::Scene> load(const std::string& path) {
-    auto r = sherpa::load_scene(path);
-    EXPECT_TRUE(r) << r.error;
-    return std::move(r.scene);
-}
-
 std::string data(const char* name) {
     return (test::data_dir() / name).string();
 }
@@ -34,7 +28,7 @@ bool warned(const sherpa::Scene& s, const std::string& fragment) {
 }
 
 TEST(MotionImport, RiggedSimpleHasItsSkinWeightsAndAnimation) {
-    const auto s = load(test::gltf_asset("RiggedSimple"));
+    const auto s = sherpa::test::load_scene_or_fail(test::gltf_asset("RiggedSimple"));
     ASSERT_EQ(s->skins.size(), 1u);
     EXPECT_EQ(s->skins[0].joints.size(), 2u);
     EXPECT_EQ(s->skins[0].skeleton, 2);
@@ -56,20 +50,20 @@ TEST(MotionImport, RiggedSimpleHasItsSkinWeightsAndAnimation) {
 
 TEST(MotionImport, StaticScenesCarryNoMotionData) {
     for (const char* name : {"Box", "DamagedHelmet", "BoxTextured"}) {
-        const auto s = load(test::gltf_asset(name));
+        const auto s = sherpa::test::load_scene_or_fail(test::gltf_asset(name));
         EXPECT_TRUE(s->motions.empty()) << name;
         EXPECT_TRUE(s->skins.empty() && s->animations.empty()) << name;
     }
 }
 
 TEST(MotionImport, MorphTargetsAndDefaultWeights) {
-    const auto s = load(test::gltf_asset("SimpleMorph"));
+    const auto s = sherpa::test::load_scene_or_fail(test::gltf_asset("SimpleMorph"));
     ASSERT_EQ(s->motions.size(), 1u);
     EXPECT_EQ(s->motions[0].targets.size(), 2u);
     EXPECT_EQ(s->primitives[0].morph_targets, 2u);
     EXPECT_EQ(s->mesh_weights[0], (std::vector<float>{0.5f, 0.5f}));
     EXPECT_EQ(s->nodes[0].weights, (std::vector<float>{0.5f, 0.5f}));
-    const auto sphere = load(test::gltf_asset("AnimatedMorphSphere"));
+    const auto sphere = sherpa::test::load_scene_or_fail(test::gltf_asset("AnimatedMorphSphere"));
     ASSERT_EQ(sphere->motions.size(), 1u);
     const auto& attrs = sphere->motions[0].target_attributes;
     EXPECT_NE(std::find(attrs.begin(), attrs.end(), "NORMAL"), attrs.end());
@@ -82,7 +76,7 @@ TEST(MotionImport, MorphTargetsAndDefaultWeights) {
 // t = 1: the rotation key is 1 rad about z on node 2, weights (1, 0) from the weights
 // sampler; mesh default weights are (0.25, 0.5).
 TEST(MotionEval, HandComputedPoseOfTheGeneratedRig) {
-    const auto s = load(data("motion_valid.gltf"));
+    const auto s = sherpa::test::load_scene_or_fail(data("motion_valid.gltf"));
     const sherpa::Pose bind = sherpa::evaluate_pose(*s, -1, 0.0);
     EXPECT_EQ(bind.weights[0], (std::vector<float>{0.25f, 0.5f}));
     const sherpa::Pose pose = sherpa::evaluate_pose(*s, 0, 1.0);
@@ -106,7 +100,7 @@ TEST(MotionEval, HandComputedPoseOfTheGeneratedRig) {
 }
 
 TEST(MotionEval, TimesOutsideTheKeysClampAndNaNTimeIsTheFirstKey) {
-    const auto s = load(data("motion_valid.gltf"));
+    const auto s = sherpa::test::load_scene_or_fail(data("motion_valid.gltf"));
     const auto& a = s->animations[0];
     float before[4], first[4], after[4], last[4], nan_t[4];
     const auto& rot = a.samplers[a.channels[0].sampler];
@@ -216,7 +210,7 @@ TEST(MotionImport, RepairedInputIsWarnedAndNeverNaN) {
         {"motion_unnormalized_weights.gltf", "4 vertices' skin weights do not sum to 1"},
         {"motion_zero_weights.gltf", "1 vertices have all skin weights 0"}};
     for (const auto& [file, fragment] : cases) {
-        const auto s = load(data(file));
+        const auto s = sherpa::test::load_scene_or_fail(data(file));
         EXPECT_TRUE(warned(*s, fragment)) << file;
         for (double t : {0.0, 0.7, 1.5, 2.0, 99.0}) {
             const auto pose = sherpa::evaluate_pose(*s, 0, t);
@@ -225,8 +219,8 @@ TEST(MotionImport, RepairedInputIsWarnedAndNeverNaN) {
         }
     }
     // Unnormalised weights become exactly the valid file's.
-    const auto a = load(data("motion_unnormalized_weights.gltf"));
-    const auto b = load(data("motion_valid.gltf"));
+    const auto a = sherpa::test::load_scene_or_fail(data("motion_unnormalized_weights.gltf"));
+    const auto b = sherpa::test::load_scene_or_fail(data("motion_valid.gltf"));
     EXPECT_EQ(a->motions[0].weights, b->motions[0].weights);
 }
 
@@ -246,7 +240,7 @@ TEST(MotionBounds, CullingBoundsContainEveryPosedVertex) {
                           "sweep_quat_far_from_unit.gltf", "sweep_scale_zero.gltf"})
         files.push_back(data(f));
     for (const auto& file : files) {
-        const auto s = load(file);
+        const auto s = sherpa::test::load_scene_or_fail(file);
         std::size_t checked = 0;
         for (int a = -1; a < static_cast<int>(s->animations.size()); ++a) {
             const double d = a >= 0 ? s->animations[static_cast<std::size_t>(a)].end : 0.0;
@@ -278,7 +272,7 @@ TEST(MotionBounds, CullingBoundsContainEveryPosedVertex) {
 TEST(MotionBounds, PosesPastTheFloatRangeAreNamedAndLeftOut) {
     for (const char* file : {"pose_overflow_scale.gltf", "pose_overflow_ibm.gltf"}) {
         SCOPED_TRACE(file);
-        const auto s = load(data(file));
+        const auto s = sherpa::test::load_scene_or_fail(data(file));
         ASSERT_TRUE(s);
         const sherpa::Pose pose = sherpa::evaluate_pose(*s, 0, 1.3);
         const sherpa::PosedBounds b = sherpa::posed_scene_bounds(*s, pose);
@@ -297,7 +291,7 @@ TEST(MotionBounds, PosesPastTheFloatRangeAreNamedAndLeftOut) {
         EXPECT_NE(w.find("overflow the float range"), std::string::npos) << w;
     }
     // Before the huge key (t < 1) the scaled rig is in range: nothing to say.
-    const auto s = load(data("pose_overflow_scale.gltf"));
+    const auto s = sherpa::test::load_scene_or_fail(data("pose_overflow_scale.gltf"));
     const sherpa::Pose early = sherpa::evaluate_pose(*s, 0, 0.5);
     const sherpa::PosedBounds b = sherpa::posed_scene_bounds(*s, early);
     EXPECT_TRUE(b.overflow.empty());
@@ -311,7 +305,7 @@ TEST(MotionBounds, PosesPastTheFloatRangeAreNamedAndLeftOut) {
 // `--animation N --time T` belongs to `render` and `cull` alone, never to the scene.
 TEST(MotionImport, AnimatedFilesCarryNoCliPoseSentence) {
     for (const char* name : {"RiggedSimple", "SimpleMorph", "AnimatedTriangle"}) {
-        const auto s = load(test::gltf_asset(name));
+        const auto s = sherpa::test::load_scene_or_fail(test::gltf_asset(name));
         ASSERT_TRUE(s);
         EXPECT_FALSE(s->animations.empty()) << name;
         EXPECT_FALSE(warned(*s, "--animation")) << name;

@@ -1,5 +1,6 @@
 // resolve_pointer() and mark_objects() on real assets: every kind of object a
 // validation message can name lands on the Scene object the editor selects.
+#include "load_error_check.h"
 #include "test_support.h"
 
 #include <sherpa/scene/pointer_target.h>
@@ -14,14 +15,8 @@ using sherpa::resolve_pointer;
 using sherpa::Severity;
 using sherpa::TargetKind;
 
-std::unique_ptr<sherpa::Scene> load(const std::string& path) {
-    sherpa::LoadResult r = sherpa::load_scene(path);
-    EXPECT_TRUE(r) << r.error;
-    return std::move(r.scene);
-}
-
 TEST(PointerTarget, NodesMeshesPrimitivesAndAccessorsOfASkinnedFile) {
-    const auto scene = load(sherpa::test::gltf_asset("RiggedSimple"));
+    const auto scene = sherpa::test::load_scene_or_fail(sherpa::test::gltf_asset("RiggedSimple"));
     ASSERT_TRUE(scene);
     const PointerTarget node = resolve_pointer(*scene, "/nodes/1");
     EXPECT_EQ(node.kind, TargetKind::Node);
@@ -64,7 +59,7 @@ TEST(PointerTarget, NodesMeshesPrimitivesAndAccessorsOfASkinnedFile) {
 }
 
 TEST(PointerTarget, MaterialsTexturesImagesAndCameras) {
-    const auto box = load(sherpa::test::gltf_asset("BoxTextured"));
+    const auto box = sherpa::test::load_scene_or_fail(sherpa::test::gltf_asset("BoxTextured"));
     ASSERT_TRUE(box);
     const PointerTarget material =
         resolve_pointer(*box, "/materials/0/pbrMetallicRoughness/baseColorTexture");
@@ -77,7 +72,7 @@ TEST(PointerTarget, MaterialsTexturesImagesAndCameras) {
     EXPECT_EQ(image.texture, 0);
     EXPECT_EQ(resolve_pointer(*box, "/textures/0").image, 0);
 
-    const auto cameras = load(sherpa::test::gltf_asset("Cameras"));
+    const auto cameras = sherpa::test::load_scene_or_fail(sherpa::test::gltf_asset("Cameras"));
     ASSERT_TRUE(cameras);
     const PointerTarget camera = resolve_pointer(*cameras, "/cameras/1/perspective/yfov");
     EXPECT_EQ(camera.kind, TargetKind::Camera);
@@ -85,13 +80,14 @@ TEST(PointerTarget, MaterialsTexturesImagesAndCameras) {
 }
 
 TEST(PointerTarget, LightsAndExtensionNames) {
-    const auto scene = load((sherpa::test::data_dir() / "lights_and_extensions.gltf").string());
+    const auto scene = sherpa::test::load_scene_or_fail(
+        (sherpa::test::data_dir() / "lights_and_extensions.gltf").string());
     ASSERT_TRUE(scene);
     const PointerTarget light = resolve_pointer(*scene, "/extensions/KHR_lights_punctual/lights/1");
     EXPECT_EQ(light.kind, TargetKind::Light);
     EXPECT_EQ(light.node, 2);
-    const auto glass =
-        load((sherpa::test::data_dir() / "unsupported_material_extensions.gltf").string());
+    const auto glass = sherpa::test::load_scene_or_fail(
+        (sherpa::test::data_dir() / "unsupported_material_extensions.gltf").string());
     ASSERT_TRUE(glass);
     const PointerTarget used = resolve_pointer(*glass, "/extensionsUsed/1");
     EXPECT_EQ(used.kind, TargetKind::Extension);
@@ -103,7 +99,7 @@ TEST(PointerTarget, LightsAndExtensionNames) {
 
 // Malformed pointers and indices the scene lacks name nothing; nothing throws.
 TEST(PointerTarget, BadPointersResolveToNone) {
-    const auto scene = load(sherpa::test::gltf_asset("BoxTextured"));
+    const auto scene = sherpa::test::load_scene_or_fail(sherpa::test::gltf_asset("BoxTextured"));
     ASSERT_TRUE(scene);
     for (const char* p : {"/nodes/99", "/nodes/-1", "/nodes/01", "/nodes/x", "/nodes", "nodes/0",
                           "/materials/1", "/~2", "/skins/0", "/animations/0", "/unknown/0",
@@ -115,7 +111,7 @@ TEST(PointerTarget, BadPointersResolveToNone) {
 }
 
 TEST(PointerTarget, MarksCarryTheWorstSeverityPerObject) {
-    const auto scene = load(sherpa::test::gltf_asset("RiggedSimple"));
+    const auto scene = sherpa::test::load_scene_or_fail(sherpa::test::gltf_asset("RiggedSimple"));
     ASSERT_TRUE(scene);
     const std::vector<sherpa::ValidationMessage> messages = {
         {"ACCESSOR_MAX_MISMATCH", "", "/accessors/3/max/0", Severity::Error},

@@ -38,13 +38,6 @@ Scene one_texture_scene() {
     return s;
 }
 
-PipelineOptions options_for(const fs::path& dir) {
-    PipelineOptions o;
-    o.cache_dir = dir;
-    o.bc7_level = 0;
-    return o;
-}
-
 void write_bytes(const fs::path& path, std::size_t n) {
     std::ofstream(path, std::ios::binary) << std::string(n, 'x');
 }
@@ -58,7 +51,8 @@ bool any_warning_has(const PreparedTextureSet& set, const std::string& a, const 
 // The path of the scene's one cache entry in `dir`, made and then removed, so the
 // test can put something else there.
 fs::path vacated_entry(const Scene& scene, const fs::path& dir) {
-    const fs::path entry = prepare_textures(scene, options_for(dir)).textures[0].cache_file;
+    const fs::path entry =
+        prepare_textures(scene, test::cache_test_options(dir)).textures[0].cache_file;
     fs::remove(entry);
     return entry;
 }
@@ -76,7 +70,7 @@ pid_t dead_pid() {
 TEST(CacheRobustness, EditedPsnrIsNotServedAsHit) {
     const auto dir = test::fresh_temp_dir("cache-psnr");
     const Scene scene = one_texture_scene();
-    const auto first = prepare_textures(scene, options_for(dir));
+    const auto first = prepare_textures(scene, test::cache_test_options(dir));
     ASSERT_EQ(first.textures.size(), 1u);
     ASSERT_TRUE(first.textures[0].psnr.has_value());
     // Change the first digit of the stored PSNR in place (same length, valid KTX2).
@@ -90,7 +84,7 @@ TEST(CacheRobustness, EditedPsnrIsNotServedAsHit) {
     *digit = *digit == '9' ? '1' : '9';
     ASSERT_TRUE(write_file_atomic(first.textures[0].cache_file, bytes, error)) << error;
 
-    const auto second = prepare_textures(scene, options_for(dir));
+    const auto second = prepare_textures(scene, test::cache_test_options(dir));
     EXPECT_EQ(second.textures[0].state, CacheState::Recompressed);
     EXPECT_NEAR(*second.textures[0].psnr, *first.textures[0].psnr, 1e-3);
     fs::remove_all(dir);
@@ -101,7 +95,7 @@ TEST(CacheRobustness, DirectoryAtEntryPathIsReportedNotSized) {
     const Scene scene = one_texture_scene();
     const fs::path entry = vacated_entry(scene, dir);
     fs::create_directory(entry);
-    const auto set = prepare_textures(scene, options_for(dir));
+    const auto set = prepare_textures(scene, test::cache_test_options(dir));
     const PreparedTexture& t = set.textures[0];
     EXPECT_EQ(t.state, CacheState::Recompressed);
     EXPECT_FALSE(t.levels.empty()); // the texture is still made
@@ -120,7 +114,7 @@ TEST(CacheRobustness, FifoAtEntryPathIsRefusedWithoutBlocking) {
     auto done = std::make_shared<std::promise<PreparedTextureSet>>();
     auto result = done->get_future();
     std::thread([done, scene, dir] {
-        done->set_value(prepare_textures(scene, options_for(dir)));
+        done->set_value(prepare_textures(scene, test::cache_test_options(dir)));
     }).detach();
     ASSERT_EQ(result.wait_for(std::chrono::seconds(60)), std::future_status::ready)
         << "prepare_textures blocked on the FIFO at " << entry;
@@ -160,7 +154,7 @@ TEST(CacheRobustness, SecondMakerWaitsForFirstAndReusesItsEntry) {
     const Scene scene = one_texture_scene();
     // The entry as another process would leave it.
     const fs::path other_file =
-        prepare_textures(scene, options_for(made_elsewhere)).textures[0].cache_file;
+        prepare_textures(scene, test::cache_test_options(made_elsewhere)).textures[0].cache_file;
     const fs::path entry = dir / other_file.filename();
     const Hash128 key{std::stoull(entry.stem().string().substr(0, 16), nullptr, 16),
                       std::stoull(entry.stem().string().substr(16), nullptr, 16)};
@@ -170,7 +164,7 @@ TEST(CacheRobustness, SecondMakerWaitsForFirstAndReusesItsEntry) {
     std::optional<EntryLock> held(cache.lock_entry(key, std::chrono::milliseconds(0)));
     ASSERT_TRUE(held->held());
     std::promise<void> looked_up;
-    PipelineOptions options = options_for(dir);
+    PipelineOptions options = test::cache_test_options(dir);
     options.cache_lock_timeout = std::chrono::minutes(10);
     bool first_report = true;
     options.progress = [&](std::size_t, std::size_t) {
@@ -193,7 +187,8 @@ TEST(CacheRobustness, CacheDirectoryThatIsAFileIsNamedAndBypassed) {
     const auto dir = test::fresh_temp_dir("cache-is-file");
     const fs::path not_a_dir = dir / "textures";
     write_bytes(not_a_dir, 10);
-    const PreparedTextureSet set = prepare_textures(one_texture_scene(), options_for(not_a_dir));
+    const PreparedTextureSet set =
+        prepare_textures(one_texture_scene(), test::cache_test_options(not_a_dir));
     ASSERT_EQ(set.textures.size(), 1u);
     EXPECT_FALSE(set.textures[0].failed);
     EXPECT_FALSE(set.textures[0].levels.empty());

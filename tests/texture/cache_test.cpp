@@ -50,13 +50,6 @@ Scene small_scene() {
     return s;
 }
 
-PipelineOptions options_for(const std::filesystem::path& dir) {
-    PipelineOptions o;
-    o.cache_dir = dir;
-    o.bc7_level = 0; // fast: these tests are about caching, not quality
-    return o;
-}
-
 } // namespace
 
 TEST(TextureUses, DedupeByImageAndSkipUnusedMaterials) {
@@ -87,7 +80,7 @@ TEST(TextureUses, DifferentCutoffsOnOneImageGetPlainMips) {
 TEST(TexturePipeline, MissThenHitWithSameLevels) {
     const auto dir = test::fresh_temp_dir("cache-hit");
     const Scene scene = small_scene();
-    const auto first = prepare_textures(scene, options_for(dir));
+    const auto first = prepare_textures(scene, test::cache_test_options(dir));
     ASSERT_EQ(first.textures.size(), 2u);
     for (const auto& t : first.textures) {
         EXPECT_EQ(t.state, CacheState::Miss);
@@ -103,7 +96,7 @@ TEST(TexturePipeline, MissThenHitWithSameLevels) {
     EXPECT_EQ(first.find(2, kRoleNormal), 1);
     EXPECT_EQ(first.find(3, kRoleColor), -1);
 
-    const auto second = prepare_textures(scene, options_for(dir));
+    const auto second = prepare_textures(scene, test::cache_test_options(dir));
     for (std::size_t i = 0; i < 2; ++i) {
         EXPECT_EQ(second.textures[i].state, CacheState::Hit);
         EXPECT_EQ(second.textures[i].levels, first.textures[i].levels);
@@ -120,7 +113,7 @@ TEST(TexturePipeline, MissThenHitWithSameLevels) {
 TEST(TexturePipeline, DamagedFilesAreReportedAndReplaced) {
     const auto dir = test::fresh_temp_dir("cache-corrupt");
     const Scene scene = small_scene();
-    const auto first = prepare_textures(scene, options_for(dir));
+    const auto first = prepare_textures(scene, test::cache_test_options(dir));
     const auto file = first.textures[0].cache_file;
     std::vector<std::uint8_t> bytes;
     std::string error;
@@ -141,12 +134,13 @@ TEST(TexturePipeline, DamagedFilesAreReportedAndReplaced) {
     };
     for (const auto& damaged : damage) {
         ASSERT_TRUE(write_file_atomic(file, damaged, error));
-        const auto again = prepare_textures(scene, options_for(dir));
+        const auto again = prepare_textures(scene, test::cache_test_options(dir));
         EXPECT_EQ(again.textures[0].state, CacheState::Recompressed);
         EXPECT_FALSE(again.textures[0].note.empty());
         EXPECT_FALSE(again.warnings.empty());
         EXPECT_EQ(again.textures[0].levels, first.textures[0].levels);
-        EXPECT_EQ(prepare_textures(scene, options_for(dir)).textures[0].state, CacheState::Hit);
+        EXPECT_EQ(prepare_textures(scene, test::cache_test_options(dir)).textures[0].state,
+                  CacheState::Hit);
     }
     std::filesystem::remove_all(dir);
 }
@@ -169,11 +163,11 @@ TEST(TexturePipeline, ResolvesMaterialTexturesToBindlessSlots) {
 TEST(TexturePipeline, FileForAnotherRecipeIsStale) {
     const auto dir = test::fresh_temp_dir("cache-stale");
     const Scene scene = small_scene();
-    const auto first = prepare_textures(scene, options_for(dir));
+    const auto first = prepare_textures(scene, test::cache_test_options(dir));
     // Put texture 1's valid file where texture 0's key points.
     std::filesystem::copy_file(first.textures[1].cache_file, first.textures[0].cache_file,
                                std::filesystem::copy_options::overwrite_existing);
-    const auto again = prepare_textures(scene, options_for(dir));
+    const auto again = prepare_textures(scene, test::cache_test_options(dir));
     EXPECT_EQ(again.textures[0].state, CacheState::Stale);
     EXPECT_EQ(again.textures[0].levels, first.textures[0].levels);
     std::filesystem::remove_all(dir);
@@ -185,13 +179,13 @@ TEST(TexturePipeline, ConcurrentWritersLeaveOneValidFile) {
     std::vector<PreparedTextureSet> results(4);
     std::vector<std::thread> writers;
     for (auto& r : results)
-        writers.emplace_back([&] { r = prepare_textures(scene, options_for(dir)); });
+        writers.emplace_back([&] { r = prepare_textures(scene, test::cache_test_options(dir)); });
     for (auto& w : writers) w.join();
     for (const auto& r : results) {
         EXPECT_TRUE(r.warnings.empty());
         EXPECT_EQ(r.textures[0].levels, results[0].textures[0].levels);
     }
-    const auto after = prepare_textures(scene, options_for(dir));
+    const auto after = prepare_textures(scene, test::cache_test_options(dir));
     EXPECT_EQ(after.textures[0].state, CacheState::Hit);
     EXPECT_EQ(after.textures[1].state, CacheState::Hit);
     // Each entry was compressed once: the others waited on its lock and reused it.
@@ -259,7 +253,7 @@ TEST(TextureCache, EvictsLeastRecentlyUsedBeyondCap) {
 
 TEST(TexturePipeline, FallsBackToRgba8WithoutBcSupport) {
     const auto dir = test::fresh_temp_dir("cache-fallback");
-    PipelineOptions o = options_for(dir);
+    PipelineOptions o = test::cache_test_options(dir);
     o.device_supports_bc = false;
     const auto set = prepare_textures(small_scene(), o);
     EXPECT_FALSE(set.warnings.empty());
@@ -299,7 +293,7 @@ TEST(TexturePipeline, ProgressCountsEveryTexture) {
     const auto dir = test::fresh_temp_dir("cache-progress");
     const Scene scene = small_scene();
     std::vector<std::pair<std::size_t, std::size_t>> reports;
-    PipelineOptions options = options_for(dir);
+    PipelineOptions options = test::cache_test_options(dir);
     options.progress = [&](std::size_t done, std::size_t total) {
         reports.emplace_back(done, total);
     };
@@ -319,7 +313,7 @@ TEST(TexturePipeline, CancelStopsAndReturnsNothing) {
     const auto dir = test::fresh_temp_dir("cache-cancel");
     const Scene scene = small_scene();
     CancelToken token;
-    PipelineOptions options = options_for(dir);
+    PipelineOptions options = test::cache_test_options(dir);
     options.cancel = &token;
     // Cancelled after the first texture is made: the second is never compressed.
     options.progress = [&](std::size_t done, std::size_t) {

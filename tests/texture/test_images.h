@@ -6,11 +6,19 @@
 #include <vector>
 
 #include <sherpa/texture/image.h>
+#include <sherpa/texture/texture_pipeline.h>
+
+#include "test_support.h"
 
 namespace sherpa::test {
 
-inline std::filesystem::path assets_dir() {
-    return SHERPA_TEST_ASSETS_DIR;
+// Pipeline options of the cache suites: the cache in `dir`, BC7 at its fastest level
+// (these tests are about caching, not quality).
+inline tex::PipelineOptions cache_test_options(const std::filesystem::path& dir) {
+    tex::PipelineOptions o;
+    o.cache_dir = dir;
+    o.bc7_level = 0;
+    return o;
 }
 
 // A w x h crop at (x, y) of a corpus image; fails the calling test via exception.

@@ -65,7 +65,7 @@ TEST(DeclaredImageSize, ReadsPngJpegAndWebpHeaders) {
     }
     // A real JPEG (EXIF and other segments before its frame) agrees with its decoder.
     const std::filesystem::path jpg =
-        std::filesystem::path(SHERPA_TEST_ASSETS_DIR) / "gltf/VC/glTF/s_04.jpg";
+        std::filesystem::path(SHERPA_ASSETS_DIR) / "gltf/VC/glTF/s_04.jpg";
     std::ifstream f(jpg, std::ios::binary);
     const std::vector<std::uint8_t> real{std::istreambuf_iterator<char>(f),
                                          std::istreambuf_iterator<char>()};

@@ -1,0 +1,25 @@
+#pragma once
+// Shared look-ups of the material extension suites: a validation message by JSON
+// pointer, and the extension buffer of a scene's materials with recognisable texture
+// indices (100 + the glTF texture index; white where a slot is empty).
+#include <sherpa/render/material_extensions.h>
+#include <sherpa/scene/scene.h>
+
+#include <cstdint>
+#include <string>
+
+namespace sherpa::test {
+
+inline const ValidationMessage* message_at(const Scene& s, const std::string& pointer) {
+    for (const ValidationMessage& m : s.validation.messages)
+        if (m.pointer == pointer) return &m;
+    return nullptr;
+}
+
+inline gpu::MaterialExtensionBuffer extension_layout(const Scene& s) {
+    return gpu::build_material_extensions(s.materials, [](const TextureSlot& slot, TextureRole) {
+        return slot.present() ? 100u + std::uint32_t(slot.texture) : gpu::kWhiteTexture;
+    });
+}
+
+} // namespace sherpa::test

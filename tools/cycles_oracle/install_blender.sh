@@ -10,6 +10,9 @@
 # Usage: install_blender.sh CACHE_DIR
 set -euo pipefail
 cache="${1:?usage: install_blender.sh CACHE_DIR}"
+# Absolute: the wrapper names paths under the cache and runs from any directory.
+mkdir -p "$cache"
+cache=$(cd "$cache" && pwd)
 wrapper="$cache/blender"
 skip() { echo "Cycles oracle: $* -- skipped (install Debian's blender, or let apt reach its mirror)" >&2; exit 77; }
 # Blender runs and its own Python imports numpy (the importer needs it).

@@ -26,10 +26,6 @@ constexpr std::uint32_t kW = 64, kH = 48;
 
 using sherpa::test::Png;
 
-Png read_png_file(const fs::path& path) {
-    return sherpa::test::read_png(path.string());
-}
-
 class CliRenderCompare : public ::testing::Test {
 protected:
     fs::path dir =
@@ -50,7 +46,7 @@ protected:
                                  out ? "2>/dev/null" : "2>&1");
         EXPECT_EQ(r.exit_code, 0) << r.out;
         if (out && r.exit_code == 0) *out = json::parse(r.out);
-        return read_png_file(png);
+        return sherpa::test::read_png(png.string());
     }
 };
 
@@ -116,7 +112,7 @@ TEST_F(CliRenderCompare, ABadEnvironmentFileIsAWarningAndTheRoom) {
     EXPECT_NE(r.out.find("warning: " + bad.string() + ": "), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("using the built-in room environment instead"), std::string::npos)
         << r.out;
-    EXPECT_EQ(read_png_file(dir / "bad.png").rgba, room.rgba);
+    EXPECT_EQ(sherpa::test::read_png((dir / "bad.png").string()).rgba, room.rgba);
 }
 
 // The report says how the environment is made: SH9 irradiance by default (no irradiance

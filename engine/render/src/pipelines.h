@@ -8,10 +8,12 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <string>
 #include <tuple>
 #include <utility>
 
 #include <sherpa/gpu/context.h>
+#include <sherpa/gpu/resources.h>
 #include <sherpa/gpu/unique_handle.h>
 #include <sherpa/render/gpu_structs.h>
 
@@ -32,6 +34,20 @@ enum class PipelineId : std::uint32_t {
 };
 
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+// A depth attachment of the frame's format (the main target's, the transmission
+// background's): drawn into, never sampled.
+inline ImageDesc depth_attachment_desc(std::uint32_t width, std::uint32_t height,
+                                       std::string name) {
+    ImageDesc d;
+    d.format = kDepthFormat;
+    d.width = width;
+    d.height = height;
+    d.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+    d.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
+    d.name = std::move(name);
+    return d;
+}
 
 // The optional vertex streams forward shading is specialised for (bits of
 // GpuMesh::flags, HAS_TANGENT | HAS_UV0 | HAS_UV1 | HAS_COLOR in common.glsl).

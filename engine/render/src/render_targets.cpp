@@ -22,14 +22,7 @@ const Image& RenderTargets::depth(std::uint32_t width, std::uint32_t height) {
         if (d.width == width && d.height == height) return resources_.images().get(depth_);
         resources_.images().destroy(depth_);
     }
-    ImageDesc d;
-    d.format = kDepthFormat;
-    d.width = width;
-    d.height = height;
-    d.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
-    d.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
-    d.name = "depth";
-    depth_ = resources_.images().create(d);
+    depth_ = resources_.images().create(depth_attachment_desc(width, height, "depth"));
     return resources_.images().get(depth_);
 }
 

@@ -65,14 +65,8 @@ void TransmissionPass::ensure_target(FrameContext& f) {
               VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     c.name = "transmission background";
     color_ = resources_.images().create(c);
-    ImageDesc d;
-    d.format = kDepthFormat;
-    d.width = width_;
-    d.height = height_;
-    d.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
-    d.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
-    d.name = "transmission background depth";
-    depth_ = resources_.images().create(d);
+    depth_ = resources_.images().create(
+        depth_attachment_desc(width_, height_, "transmission background depth"));
     auto vi = vk_init<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
     vi.image = resources_.images().get(color_).image.get();
     vi.viewType = VK_IMAGE_VIEW_TYPE_2D;

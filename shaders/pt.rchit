@@ -27,20 +27,10 @@ void main() {
     const SurfaceHit h = interpolate_hit(bary);
     const GPUMaterialData m = materials[h.material];
     const GPUMaterialExtra x = material_extras[h.material];
+    const vec4 base = base_color(m, x, h.color, h.uv0, h.uv1);
     // Extension blocks only where the material has some (KHR_materials_ior, _specular,
     // the transmission family: transmission.glsl).
     const GPUExtensionIndex ext = extension_index(x);
-    // A ray toward a light sample reads where it stopped and what is emitted there:
-    // the emission alone, where no sheen or coat lies over it (their weights need the
-    // shading normals) and the surface is lit (unlit emits its base colour).
-    if (payload.kind == PATH_RAY_LIGHT && x.unlit == 0u && (h.flags & (MESH_LINES | MESH_POINTS)) == 0u &&
-        ext.clearcoat == NO_EXTENSION && ext.sheen == NO_EXTENSION) {
-        payload.position = h.position;
-        payload.hit = 1u;
-        payload.emission = emission(m, x, h.uv0, h.uv1);
-        return;
-    }
-    const vec4 base = base_color(m, x, h.color, h.uv0, h.uv1);
     // A volume's back faces are its boundary whatever doubleSided says (pt.rahit).
     const bool volume = ext.volume != NO_EXTENSION &&
                         (ext.transmission != NO_EXTENSION || ext.diffuse_transmission != NO_EXTENSION);

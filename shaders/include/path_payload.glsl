@@ -5,7 +5,6 @@
 #define SHERPA_PATH_PAYLOAD_GLSL
 const uint PATH_RAY_CAMERA = 0u;  // the camera ray and bounces (closest hit)
 const uint PATH_RAY_SHADOW = 1u;  // visibility toward a light (any hit ends it)
-const uint PATH_RAY_LIGHT = 2u;   // toward an emissive triangle: the hit's position and emission
 const uint PATH_HIT_UNLIT = 1u;   // KHR_materials_unlit (or no surface): emission only
 
 struct PathPayload {

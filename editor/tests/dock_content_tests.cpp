@@ -28,6 +28,19 @@ QString display(const QAbstractItemModel& m, int row, int column) {
     return m.data(m.index(row, column), Qt::DisplayRole).toString();
 }
 
+// Loads material sweep `name` (tests/data/material_sweeps) and shows its material
+// `index` in `fields` as the CPU builds the record; the outcome says whether it loaded.
+LoadOutcome show_sweep_material(MaterialFieldsModel& fields, const char* name, int index) {
+    LoadOutcome out =
+        SceneLoadJob::loadNow(QStringLiteral(SHERPA_TEST_DATA_DIR "/material_sweeps/") +
+                              QLatin1String(name) + QStringLiteral(".gltf"));
+    if (out.session)
+        fields.setMaterial(out.session, index,
+                           to_gpu_material(out.session->scene->materials.at(index)),
+                           MaterialFieldsModel::Source::Cpu);
+    return out;
+}
+
 } // namespace
 
 class DockContentTests : public QObject {
@@ -167,12 +180,9 @@ void DockContentTests::docksShowCompressionContainerAndSpecGloss() {
 // ior sweep: the second material's index is at word 4, after material 0's three-word
 // index + ior).
 void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
-    const LoadOutcome sweep = SceneLoadJob::loadNow(
-        QStringLiteral(SHERPA_TEST_DATA_DIR "/material_sweeps/ior_sweep.gltf"));
-    QVERIFY2(sweep.session, qPrintable(sweep.error));
     MaterialFieldsModel fields;
-    fields.setMaterial(sweep.session, 1, to_gpu_material(sweep.session->scene->materials.at(1)),
-                       MaterialFieldsModel::Source::Cpu);
+    const LoadOutcome sweep = show_sweep_material(fields, "ior_sweep", 1);
+    QVERIFY2(sweep.session, qPrintable(sweep.error));
     QCOMPARE(fields.rowCount(), 14 + 2);
     QCOMPARE(display(fields, 14, MaterialFieldsModel::FieldColumn), QStringLiteral("ext.index"));
     QCOMPARE(display(fields, 14, MaterialFieldsModel::OffsetColumn), QStringLiteral("64"));
@@ -182,11 +192,8 @@ void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
     QCOMPARE(display(fields, 15, MaterialFieldsModel::PropertyColumn),
              QStringLiteral("KHR_materials_ior.ior"));
 
-    const LoadOutcome spec = SceneLoadJob::loadNow(
-        QStringLiteral(SHERPA_TEST_DATA_DIR "/material_sweeps/specular_sweep.gltf"));
+    const LoadOutcome spec = show_sweep_material(fields, "specular_sweep", 0);
     QVERIFY2(spec.session, qPrintable(spec.error));
-    fields.setMaterial(spec.session, 0, to_gpu_material(spec.session->scene->materials.at(0)),
-                       MaterialFieldsModel::Source::Cpu);
     QCOMPARE(fields.rowCount(), 14 + 4); // index, colour/factor, two textures
     QCOMPARE(display(fields, 15, MaterialFieldsModel::FieldColumn),
              QStringLiteral("ext.specular.color_factor"));
@@ -197,11 +204,8 @@ void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
 
     // KHR_materials_clearcoat: index, factors, three textures (material 0 of the
     // clearcoat sweep: its block right after its three-word index).
-    const LoadOutcome coat = SceneLoadJob::loadNow(
-        QStringLiteral(SHERPA_TEST_DATA_DIR "/material_sweeps/clearcoat_sweep.gltf"));
+    const LoadOutcome coat = show_sweep_material(fields, "clearcoat_sweep", 2);
     QVERIFY2(coat.session, qPrintable(coat.error));
-    fields.setMaterial(coat.session, 2, to_gpu_material(coat.session->scene->materials.at(2)),
-                       MaterialFieldsModel::Source::Cpu);
     QCOMPARE(fields.rowCount(), 14 + 5);
     QCOMPARE(display(fields, 15, MaterialFieldsModel::FieldColumn),
              QStringLiteral("ext.clearcoat.factors"));
@@ -214,11 +218,8 @@ void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
 
     // KHR_materials_anisotropy: index, its third word, factors, texture (material 7 of
     // the anisotropy sweep, 60 degrees: after seven 48-byte indices and 64-byte blocks).
-    const LoadOutcome aniso = SceneLoadJob::loadNow(
-        QStringLiteral(SHERPA_TEST_DATA_DIR "/material_sweeps/anisotropy_sweep.gltf"));
+    const LoadOutcome aniso = show_sweep_material(fields, "anisotropy_sweep", 7);
     QVERIFY2(aniso.session, qPrintable(aniso.error));
-    fields.setMaterial(aniso.session, 7, to_gpu_material(aniso.session->scene->materials.at(7)),
-                       MaterialFieldsModel::Source::Cpu);
     QCOMPARE(fields.rowCount(), 14 + 4);
     const int first = 7 * (48 + 64);
     QCOMPARE(display(fields, 15, MaterialFieldsModel::FieldColumn),
@@ -233,11 +234,8 @@ void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
 
     // KHR_materials_iridescence: index, its third word, factors, two textures (material
     // 9 of the iridescence sweep, 700 nm: after nine 48-byte indices and 96-byte blocks).
-    const LoadOutcome film = SceneLoadJob::loadNow(
-        QStringLiteral(SHERPA_TEST_DATA_DIR "/material_sweeps/iridescence_sweep.gltf"));
+    const LoadOutcome film = show_sweep_material(fields, "iridescence_sweep", 9);
     QVERIFY2(film.session, qPrintable(film.error));
-    fields.setMaterial(film.session, 9, to_gpu_material(film.session->scene->materials.at(9)),
-                       MaterialFieldsModel::Source::Cpu);
     QCOMPARE(fields.rowCount(), 14 + 5);
     QCOMPARE(display(fields, 16, MaterialFieldsModel::FieldColumn),
              QStringLiteral("ext.iridescence.factors"));

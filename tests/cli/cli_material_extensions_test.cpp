@@ -20,6 +20,11 @@
 
 namespace {
 
+// A file of this suite in the process's temporary files (test_support.h).
+std::string matext_temp(const std::string& name) {
+    return sherpa::test::temp_path("sherpa_cli_matext", name);
+}
+
 using sherpa::test::CliRun;
 using sherpa::test::run_cli;
 
@@ -32,7 +37,7 @@ using sherpa::test::sweep;
 // The colour `view` draws at the front of a one-sphere file (its centre pixel, 160x120,
 // seen from 1.5 in front): the texture-transform checks read it.
 std::array<int, 3> front_pixel(const std::string& model, const std::string& view) {
-    const std::string png = sherpa::test::temp_path("sherpa_cli_matext", view + "_front.png");
+    const std::string png = matext_temp(view + "_front.png");
     const CliRun run =
         run_cli("render '" + model + "' -o " + png + " --width 160 --height 120 --view " + view +
                 " --camera eye=0,0,1.5:target=0,0,0:fov=45 --validation --no-cache");
@@ -44,8 +49,7 @@ std::array<int, 3> front_pixel(const std::string& model, const std::string& view
 }
 
 std::uint64_t extension_bytes(const std::string& model, const std::string& name) {
-    const std::string png = sherpa::test::temp_path("sherpa_cli_matext", name + ".png"),
-                      report = sherpa::test::temp_path("sherpa_cli_matext", name + ".json");
+    const std::string png = matext_temp(name + ".png"), report = matext_temp(name + ".json");
     const CliRun r =
         run_cli("render '" + model + "' -o " + png +
                 " --width 64 --height 48 --frames 1 --environment none --report " + report +
@@ -75,7 +79,7 @@ TEST(CliMaterialExtensions, OnlyMaterialsThatUseThemPay) {
 }
 
 TEST(CliMaterialExtensions, IorViewShowsEachSpheresIor) {
-    const std::string png = sherpa::test::temp_path("sherpa_cli_matext", "ior_view.png");
+    const std::string png = matext_temp("ior_view.png");
     const CliRun r =
         run_cli("render '" + sweep("ior_sweep") + "' -o " + png +
                 " --width 160 --height 120 --view ior" + kSweepCamera + " --validation --no-cache");
@@ -91,8 +95,7 @@ TEST(CliMaterialExtensions, IorViewShowsEachSpheresIor) {
 }
 
 TEST(CliMaterialExtensions, SpecularViewsShowWeightAndColour) {
-    const std::string weight = sherpa::test::temp_path("sherpa_cli_matext", "weight.png"),
-                      colour = sherpa::test::temp_path("sherpa_cli_matext", "colour.png");
+    const std::string weight = matext_temp("weight.png"), colour = matext_temp("colour.png");
     for (const auto& [view, png] :
          {std::pair{"specular-weight", weight}, {"specular-color", colour}}) {
         const CliRun r = run_cli("render '" + sweep("specular_sweep") + "' -o " + png +
@@ -128,8 +131,7 @@ TEST(CliMaterialExtensions, SpecularTexturesAreSampledThroughTheirTransform) {
 }
 
 TEST(CliMaterialExtensions, ClearcoatViewsShowFactorAndRoughness) {
-    const std::string factor = sherpa::test::temp_path("sherpa_cli_matext", "cc.png"),
-                      rough = sherpa::test::temp_path("sherpa_cli_matext", "ccr.png");
+    const std::string factor = matext_temp("cc.png"), rough = matext_temp("ccr.png");
     for (const auto& [view, png] :
          {std::pair{"clearcoat", factor}, {"clearcoat-roughness", rough}}) {
         const CliRun r = run_cli("render '" + sweep("clearcoat_sweep") + "' -o " + png +
@@ -165,8 +167,7 @@ TEST(CliMaterialExtensions, ClearcoatTexturesAreSampledThroughTheirTransform) {
 }
 
 TEST(CliMaterialExtensions, SheenViewsShowColourAndRoughness) {
-    const std::string colour = sherpa::test::temp_path("sherpa_cli_matext", "sheen.png"),
-                      rough = sherpa::test::temp_path("sherpa_cli_matext", "sheenr.png");
+    const std::string colour = matext_temp("sheen.png"), rough = matext_temp("sheenr.png");
     for (const auto& [view, png] : {std::pair{"sheen-color", colour}, {"sheen-roughness", rough}}) {
         const CliRun r = run_cli("render '" + sweep("sheen_sweep") + "' -o " + png +
                                  " --width 160 --height 120 --view " + view + kSweepCamera +
@@ -220,8 +221,7 @@ glm::dvec3 expected_direction(int row, int column, double degrees) {
 // row 2 0.8); the direction view, at each sphere's centre, the tangent (row 1) rotated
 // counter-clockwise toward the bitangent by row 2's angles.
 TEST(CliMaterialExtensions, AnisotropyViewsShowStrengthAndDirection) {
-    const std::string strength = sherpa::test::temp_path("sherpa_cli_matext", "as.png"),
-                      direction = sherpa::test::temp_path("sherpa_cli_matext", "ad.png");
+    const std::string strength = matext_temp("as.png"), direction = matext_temp("ad.png");
     for (const auto& [view, png] :
          {std::pair{"anisotropy-strength", strength}, {"anisotropy-direction", direction}}) {
         const CliRun r = run_cli("render '" + sweep("anisotropy_sweep") + "' -o " + png +
@@ -284,8 +284,7 @@ double anisotropic_albedo_at_normal(double alpha_t, double alpha_b, double f0) {
 // from 1.5 in front, in a uniform environment of radiance 1 (a 1x1 Radiance HDR),
 // tone curve linear: the mean of 5x5 pixels about the centre (n . v above 0.97).
 glm::dvec3 furnace_front(const std::string& model, const std::string& renderer) {
-    const std::string hdr = sherpa::test::temp_path("sherpa_cli_matext", "furnace.hdr"),
-                      png = sherpa::test::temp_path("sherpa_cli_matext", "furnace.png");
+    const std::string hdr = matext_temp("furnace.hdr"), png = matext_temp("furnace.png");
     {
         std::ofstream out(hdr, std::ios::binary);
         out << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 1\n";
@@ -354,8 +353,7 @@ TEST(CliMaterialExtensions, AnisotropyTextureIsSampledThroughItsTransform) {
 // films; the thickness view 0.4 um (the default 400 nm) along row 1 and 0.1 .. 0.7 um
 // along row 2.
 TEST(CliMaterialExtensions, IridescenceViewsShowFactorAndThickness) {
-    const std::string factor = sherpa::test::temp_path("sherpa_cli_matext", "ir.png"),
-                      thickness = sherpa::test::temp_path("sherpa_cli_matext", "irt.png");
+    const std::string factor = matext_temp("ir.png"), thickness = matext_temp("irt.png");
     for (const auto& [view, png] :
          {std::pair{"iridescence", factor}, {"iridescence-thickness", thickness}}) {
         const CliRun r = run_cli("render '" + sweep("iridescence_sweep") + "' -o " + png +
@@ -386,7 +384,7 @@ TEST(CliMaterialExtensions, IridescenceTexturesAreSampledThroughTheirTransform) 
 }
 
 TEST(CliMaterialExtensions, BadValuesAreWarnedOnStderrAndTheFileStillRenders) {
-    const std::string png = sherpa::test::temp_path("sherpa_cli_matext", "bad.png");
+    const std::string png = matext_temp("bad.png");
     const CliRun r =
         run_cli("render '" + (sherpa::test::data_dir() / "material_extensions_bad.gltf").string() +
                 "' -o " + png + " --width 64 --height 48 --validation --no-cache");

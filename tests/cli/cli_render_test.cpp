@@ -16,12 +16,16 @@
 
 namespace {
 
+// A file of this suite in the process's temporary files (test_support.h).
+std::string render_temp(const std::string& name) {
+    return sherpa::test::temp_path("sherpa_cli_render", name);
+}
+
 using sherpa::test::CliRun;
 using sherpa::test::run_cli;
 
 TEST(CliRender, WritesPngAndReportWithEveryCategory) {
-    const std::string png = sherpa::test::temp_path("sherpa_cli_render", "helmet.png"),
-                      report = sherpa::test::temp_path("sherpa_cli_render", "helmet.json");
+    const std::string png = render_temp("helmet.png"), report = render_temp("helmet.json");
     const CliRun r =
         run_cli("render '" + sherpa::test::gltf_asset("DamagedHelmet") + "' -o " + png +
                 " --width 96 --height 64 --frames 3 --view lit --overlay wireframe aabb"
@@ -58,7 +62,7 @@ TEST(CliRender, WritesPngAndReportWithEveryCategory) {
 }
 
 TEST(CliRender, GltfCameraAndDebugViewsWork) {
-    const std::string png = sherpa::test::temp_path("sherpa_cli_render", "cameras.png");
+    const std::string png = render_temp("cameras.png");
     const CliRun r = run_cli(
         "render '" + sherpa::test::gltf_asset("Cameras") + "' -o " + png +
         " --width 32 --height 32 --camera gltf:0 --view uv0-checker --validation --no-cache");
@@ -67,7 +71,7 @@ TEST(CliRender, GltfCameraAndDebugViewsWork) {
 }
 
 TEST(CliRender, ErrorsExitOneWithErrorPrefix) {
-    const std::string png = sherpa::test::temp_path("sherpa_cli_render", "bad.png");
+    const std::string png = render_temp("bad.png");
     const std::vector<std::string> failing{
         "render /nonexistent.gltf --no-cache -o " + png,
         "render builtin:default --no-cache -o " + png + " --camera gltf:7",
@@ -103,7 +107,7 @@ TEST(CliRender, NamesWhatItDoesNotDraw) {
         {"RiggedSimple", {"animation(s)", "draw the default pose unless given `--animation N"}},
         {"AnimatedMorphSphere", {"animation(s) (\"Globe\")", "`--animation N --time T`"}}};
     for (const auto& [model, fragments] : cases) {
-        const std::string png = sherpa::test::temp_path("sherpa_cli_render", model + ".png");
+        const std::string png = render_temp(model + ".png");
         const CliRun r = run_cli("render '" + sherpa::test::gltf_asset(model) + "' -o " + png +
                                  " --width 32 --height 32 --validation --cache-dir '" +
                                  SHERPA_TEST_TEXTURE_CACHE + "'");
@@ -141,9 +145,8 @@ TEST(CliRender, HideNodeRemovesItsPixelsOnEveryCullPath) {
     std::vector<std::uint8_t> first_hidden;
     for (const char* cull : {"none", "cpu", "gpu"}) {
         SCOPED_TRACE(cull);
-        const std::string shown = sherpa::test::temp_path("sherpa_cli_render", "shown.png"),
-                          hidden = sherpa::test::temp_path("sherpa_cli_render", "hidden.png"),
-                          report = sherpa::test::temp_path("sherpa_cli_render", "hidden.json");
+        const std::string shown = render_temp("shown.png"), hidden = render_temp("hidden.png"),
+                          report = render_temp("hidden.json");
         CliRun r = run_cli("render '" + scene + "' -o " + shown + common + " --cull " + cull);
         ASSERT_EQ(r.exit_code, 0) << r.out;
         r = run_cli("render '" + scene + "' -o " + hidden + common + " --cull " + cull +

@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <iterator>
+#include <optional>
 #include <vector>
 
 namespace sherpa::gpu {
@@ -41,19 +42,6 @@ ImageHandle make_cube(ResourceManager& r, std::uint32_t size, std::uint32_t leve
     d.view_type = VK_IMAGE_VIEW_TYPE_CUBE;
     d.name = name;
     return r.images().create(d);
-}
-
-// A storage view of one level (all layers) of `image`.
-UniqueImageView level_view(VkDevice device, VkImage image, std::uint32_t level,
-                           std::uint32_t layers) {
-    auto vi = vk_init<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
-    vi.image = image;
-    vi.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
-    vi.format = kFormat;
-    vi.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, layers};
-    VkImageView v = VK_NULL_HANDLE;
-    vk_check(vkCreateImageView(device, &vi, nullptr, &v), "vkCreateImageView(ibl level)");
-    return UniqueImageView(device, v);
 }
 
 std::uint64_t bytes_of(std::uint32_t size, std::uint32_t levels, std::uint32_t layers) {
@@ -162,7 +150,9 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
     const EquirectToCubePass to_cube(device, layout.layout());
     const CubeDownsamplePass downsample(device, layout.layout());
     const PrefilterPass ggx(device, layout.layout(), PrefilterPass::Lobe::Ggx);
-    const PrefilterPass lambert(device, layout.layout(), PrefilterPass::Lobe::Lambert);
+    // The irradiance cube's pass only where the irradiance is a cube (SH9 has none).
+    std::optional<PrefilterPass> lambert;
+    if (!sh9) lambert.emplace(device, layout.layout(), PrefilterPass::Lobe::Lambert);
     const PrefilterPass charlie(device, layout.layout(), PrefilterPass::Lobe::Charlie);
 
     const VkImageView radiance_view = images.get(radiance).view.get();
@@ -251,9 +241,9 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
                    roughness, samples, cube, radiance_levels);
     }
     mark();
-    if (!sh9)
-        lambert.record(cmd, layout.bind(linear, radiance_view, target(irradiance_, 0, 6)),
-                       kIrradianceSize, 1.0f, kIrradianceSamples, cube, radiance_levels);
+    if (lambert)
+        lambert->record(cmd, layout.bind(linear, radiance_view, target(irradiance_, 0, 6)),
+                        kIrradianceSize, 1.0f, kIrradianceSamples, cube, radiance_levels);
     mark();
     for (std::uint32_t l = 0; l < sheen_levels; ++l) {
         // Charlie at roughness 0 is undefined: its sharpest level uses a small roughness.

@@ -23,14 +23,7 @@ BrdfLut::BrdfLut(Context& context, ResourceManager& resources) : resources_(reso
 
     IblLayout layout(device, 1);
     const BrdfLutPass pass(device, layout.layout());
-    auto vi = vk_init<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
-    vi.image = images.get(image_).image.get();
-    vi.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY; // the pass writes an image2DArray
-    vi.format = d.format;
-    vi.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    VkImageView v = VK_NULL_HANDLE;
-    vk_check(vkCreateImageView(device, &vi, nullptr, &v), "vkCreateImageView(brdf lut)");
-    const UniqueImageView target(device, v);
+    const UniqueImageView target = level_view(device, images.get(image_).image.get(), 0, 1);
 
     UniqueQueryPool timestamps;
     if (context.info().timestamps)

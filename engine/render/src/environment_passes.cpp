@@ -135,4 +135,16 @@ void BrdfLutPass::record(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t
     dispatch(cmd, set, p, 1);
 }
 
+UniqueImageView level_view(VkDevice device, VkImage image, std::uint32_t level,
+                           std::uint32_t layers) {
+    auto vi = vk_init<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
+    vi.image = image;
+    vi.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+    vi.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+    vi.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, layers};
+    VkImageView v = VK_NULL_HANDLE;
+    vk_check(vkCreateImageView(device, &vi, nullptr, &v), "vkCreateImageView(ibl level)");
+    return UniqueImageView(device, v);
+}
+
 } // namespace sherpa::gpu

@@ -90,4 +90,9 @@ public:
                 std::uint32_t samples) const;
 };
 
+// A storage view of one level (layers 0 .. layers - 1) of an RGBA16F `image`, as the
+// passes write it (image2DArray).
+UniqueImageView level_view(VkDevice device, VkImage image, std::uint32_t level,
+                           std::uint32_t layers);
+
 } // namespace sherpa::gpu

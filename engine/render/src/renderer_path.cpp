@@ -101,7 +101,7 @@ PathTraceFrame FrameRecorder::record_path(VkCommandBuffer cmd, FrameSlot& slot,
 PathTraceImage FrameRecorder::path_trace_image() {
     PathTraceImage image;
     if (!path_ || path_samples_ == 0) return image;
-    for (auto& s : slots_) wait_slot(*s);
+    wait_all();
     FrameSlot& slot = *slots_[next_slot_];
     VkCommandBuffer cmd = slot.recorder.begin();
     path_->record_sums_readback(cmd);

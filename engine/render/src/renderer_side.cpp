@@ -35,7 +35,7 @@ SideImage FrameRecorder::record_side(VkCommandBuffer cmd, std::uint32_t index,
     const Image& image = targets_.side(settings.width, settings.height);
     if (settings.renderer == RendererKind::RayTraced) {
         // Nothing with triangles to trace: every ray misses, the clear colour.
-        for (auto& s : slots_) wait_slot(*s);
+        wait_all();
         begin_rt_side(cmd, slot);
         transition(
             cmd, {image.image.get(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
@@ -70,7 +70,7 @@ SideImage FrameRecorder::record_rt_side(VkCommandBuffer cmd, FrameSlot& slot,
     // The ray tracer's descriptor set and image are rewritten per frame: no earlier
     // frame of this renderer may still be in flight (a presented RT frame waits for
     // the previous one; rays on lavapipe take far longer than that wait).
-    for (auto& s : slots_) wait_slot(*s);
+    wait_all();
     apply_scene_changes(settings, true);
     if (!rt_views_)
         rt_views_ = std::make_unique<RtViewPass>(context, *resources, bindless->layout());

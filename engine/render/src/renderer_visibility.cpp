@@ -14,7 +14,7 @@ void FrameRecorder::apply_scene_changes(const FrameRequest& settings, bool rt) {
     if (!scene) return;
     static const std::vector<AnimatedProperty> kNone;
     if (auto materials = state.animate(settings.pose ? settings.pose->properties : kNone)) {
-        for (auto& s : slots_) wait_slot(*s);
+        wait_all();
         if (update_scene_materials(*state.gpu, *materials)) {
             ++state.material_generation;
             shadows_.invalidate(); // masked casters read alpha and cutoff
@@ -26,7 +26,7 @@ void FrameRecorder::apply_scene_changes(const FrameRequest& settings, bool rt) {
         shadows_.invalidate(); // the casters changed
     }
     if (rt && acceleration && !state.tlas_visibility) {
-        for (auto& s : slots_) wait_slot(*s);
+        wait_all();
         acceleration->set_hidden_nodes(state.hidden_nodes());
         // The rebuilt TLAS holds the loaded transforms: the frame's pose goes in again.
         state.rt_pose_generation = 0;

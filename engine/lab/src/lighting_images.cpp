@@ -3,6 +3,7 @@
 #include "lighting_images.h"
 
 #include <sherpa/texture/mips.h>
+#include <sherpa/texture/quality.h>
 
 #include <algorithm>
 #include <array>
@@ -235,9 +236,7 @@ ImageDifference image_difference(const std::vector<std::uint8_t>& a,
     }
     out.pixels = pixels;
     out.mean = pixels ? sum / (3.0 * double(pixels)) : 0.0;
-    const double mse = pixels ? squares / (3.0 * double(pixels)) : 0.0;
-    out.psnr_db = mse > 0.0 ? 10.0 * std::log10(255.0 * 255.0 / mse)
-                            : std::numeric_limits<double>::infinity();
+    out.psnr_db = tex::SquaredError{squares, 3 * std::uint64_t(pixels)}.psnr();
     for (std::size_t m = 0; m < materials; ++m)
         if (out.material_pixels[m]) out.material_mean[m] /= double(out.material_pixels[m]);
     return out;

@@ -244,11 +244,12 @@ void LightingFamily::reference(gpu::Context& context, const Scene& scene,
     // Two independent images at n and N samples differ by sqrt(1/n + 1/N) of one
     // sample's noise: the last checkpoint's difference scaled to the reference's own.
     // The materials seen, with their pixels and (given a convergence image) their floor.
-    detail::ImageDifference d = detail::image_difference(rgba, rgba, ids, scene.materials.size());
+    // Without a convergence image the reference against itself: the materials' pixels.
+    const detail::ImageDifference d = detail::image_difference(
+        series.empty() ? rgba : series.back().rgba, rgba, ids, scene.materials.size());
     double scale = 0.0;
     if (!series.empty()) {
         const detail::PathImage& last = series.back();
-        d = detail::image_difference(last.rgba, rgba, ids, scene.materials.size());
         scale = std::sqrt((1.0 / spp) / (1.0 / last.spp + 1.0 / spp));
         report.notes.push_back(
             "noise floor: the reference is about " + fixed(d.mean * scale, 2) +

@@ -1,6 +1,6 @@
 #pragma once
-// The lighting family's methods (lighting_methods.cpp) and its path-traced reference
-// and convergence series (lighting_reference.cpp); lighting_family.cpp runs them.
+// The lighting family's methods and its path-traced reference and convergence series
+// (lighting_methods.cpp); lighting_family.cpp runs them.
 #include <cstdint>
 #include <functional>
 #include <string>

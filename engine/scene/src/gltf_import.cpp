@@ -213,9 +213,15 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         const auto decoded_draco = detail::decode_draco_primitives(model);
         detail::ImportContext ctx{model, *scene};
         // The validator read the file's bytes; a decoded meshopt view holds others.
-        for (std::size_t a = 0; a < model.accessors.size() && a < bounds_hold.size(); ++a)
-            for (const auto& d : decoded_views)
-                if (model.accessors[a].bufferView == d.view) bounds_hold[a] = 0;
+        std::vector<bool> decoded(model.bufferViews.size(), false);
+        for (const auto& d : decoded_views)
+            if (d.view >= 0 && std::size_t(d.view) < decoded.size())
+                decoded[std::size_t(d.view)] = true;
+        for (std::size_t a = 0; a < model.accessors.size() && a < bounds_hold.size(); ++a) {
+            const int view = model.accessors[a].bufferView;
+            if (view >= 0 && std::size_t(view) < decoded.size() && decoded[std::size_t(view)])
+                bounds_hold[a] = 0;
+        }
         ctx.bounds_hold = std::move(bounds_hold);
         for (const auto& d : decoded_draco) {
             if (!d.failed.empty())

@@ -207,11 +207,8 @@ void Validation::use_accessor(std::int64_t a, AccessorRole role, ViewRole view_r
         add("ACCESSOR_USAGE_OVERRIDE", Severity::Error, pointer,
             std::string("Override of previously set accessor usage. Initial: '") + role_name(was) +
                 "', new: '" + role_name(role) + "'.");
-    const std::size_t i = static_cast<std::size_t>(a);
-    use_view(i < declared_accessors.size()
-                 ? declared_accessors[i].view
-                 : ref(*this, member(array("accessors"), i), "bufferView", "bufferViews"),
-             view_role, pointer);
+    // declared_accessors is sized with accessor_roles (validate_buffers.cpp).
+    use_view(declared_accessors[static_cast<std::size_t>(a)].view, view_role, pointer);
 }
 
 const Json& Validation::array(const char* key) const {

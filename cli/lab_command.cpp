@@ -175,13 +175,12 @@ int run_lab(Args args) {
                   a == "--max-bounces") &&
                  has_value) {
             const std::string v(args[++i]);
-            char* end = nullptr;
-            const long long n = std::strtoll(v.c_str(), &end, 10);
+            long long n = 0;
             const long long low = a == "--max-bounces" ? 0 : 1;
             const long long high = a == "--reference-spp" ? 65536
                                    : a == "--max-bounces" ? 64
                                                           : 4096;
-            if (v.empty() || *end != '\0' || n < low || n > high)
+            if (!parse_number(v, n) || n < low || n > high)
                 return usage_error(std::string(a) + " needs a whole number from " +
                                    std::to_string(low) + " to " + std::to_string(high) + ", not '" +
                                    v + "'");

@@ -155,10 +155,8 @@ int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
         if (o.no_bc) rb_options.textures.force_rgba8 = true;
         if (o.quality) rb_options.textures.quality = *o.quality;
         gpu::Renderer a(context, ra_options), b(context, rb_options);
-        setup_a.streams = gpu::needs_all_streams(sa) ? gpu::StreamPolicy::AllPresent
-                                                     : gpu::StreamPolicy::UsedByMaterials;
-        setup_b.streams = gpu::needs_all_streams(sb) ? gpu::StreamPolicy::AllPresent
-                                                     : gpu::StreamPolicy::UsedByMaterials;
+        setup_a.streams = gpu::stream_policy(sa);
+        setup_b.streams = gpu::stream_policy(sb);
         // Both sides lit by one environment, as the render command's frame is; a side
         // that draws no lit view makes none (no GPU bytes).
         if (sa.view == gpu::DebugView::Lit || sb.view == gpu::DebugView::Lit) {

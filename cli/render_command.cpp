@@ -238,8 +238,7 @@ int run_render(Args args) {
     run.settings.camera = settings.camera;
     // What the load fixes: the streams the view reads, missing textures, hidden nodes.
     gpu::SceneSetup setup;
-    setup.streams = gpu::needs_all_streams(settings) ? gpu::StreamPolicy::AllPresent
-                                                     : gpu::StreamPolicy::UsedByMaterials;
+    setup.streams = gpu::stream_policy(settings);
     setup.missing_textures = texture_options.missing;
     if (!hidden_nodes.empty()) {
         auto mask = std::make_shared<std::vector<bool>>(loaded.scene->nodes.size(), false);

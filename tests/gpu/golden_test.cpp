@@ -66,9 +66,7 @@ TEST_P(GoldenTest, MatchesCommittedImage) {
     s.glyph_length = c.glyph_length;
     std::string error;
     ASSERT_TRUE(gpu::parse_camera_spec(c.camera, s.camera, error)) << error;
-    renderer().load(*scene,
-                    streams_setup(gpu::needs_all_streams(s) ? gpu::StreamPolicy::AllPresent
-                                                            : gpu::StreamPolicy::UsedByMaterials));
+    renderer().load(*scene, streams_setup(gpu::stream_policy(s)));
     std::vector<std::uint8_t> actual;
     renderer().render(s, &actual);
     renderer().unload();

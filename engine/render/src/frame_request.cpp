@@ -100,6 +100,10 @@ bool needs_all_streams(const FrameRequest& s) {
     return streams != 0;
 }
 
+StreamPolicy stream_policy(const FrameRequest& s) {
+    return needs_all_streams(s) ? StreamPolicy::AllPresent : StreamPolicy::UsedByMaterials;
+}
+
 bool prepass_enabled(PrepassMode mode, bool cpu_device, std::uint64_t triangles,
                      std::uint64_t pixels) {
     switch (mode) {

@@ -15,6 +15,7 @@
 #include <sherpa/gpu/debug_views.h>
 #include <sherpa/render/camera.h>
 #include <sherpa/render/environment.h>
+#include <sherpa/render/load_settings.h>
 #include <sherpa/scene/animation.h>
 #include <sherpa/scene/culling.h>
 #include <sherpa/scene/shadow_cascades.h>
@@ -182,6 +183,9 @@ struct Lighting {
 // Does this view/overlay need streams the materials do not use (so the scene must
 // be uploaded with StreamPolicy::AllPresent)?
 bool needs_all_streams(const FrameRequest& settings);
+// The stream policy a scene shown in `settings` is loaded with: AllPresent where
+// needs_all_streams(), else UsedByMaterials.
+StreamPolicy stream_policy(const FrameRequest& settings);
 
 // Whether a frame of `triangles` at `pixels` draws the depth prepass: Auto draws it
 // on GPUs, and on CPU devices unless the scene has more than one triangle per four

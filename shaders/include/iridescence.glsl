@@ -9,7 +9,7 @@
 // evaluated at n . v for every light and for the environment (as the specification's
 // sample implementation, three.js and the Khronos Sample Viewer do); the environment's
 // split-sum uses the F0 that gives that Fresnel at n . v (Surface::iridescence,
-// brdf.glsl's iridescent_f0).
+// brdf.glsl's iridescent_f0). Needs brdf.glsl (PI, pow5) included first.
 //
 // Stable functions:
 //   vec3 iridescence_fresnel(float outside_ior, float film_ior, float cos_theta,
@@ -61,7 +61,6 @@ vec3 iridescence_sensitivity(float opd, vec3 shift) {
 }
 
 vec3 iridescence_fresnel(float outside_ior, float film_ior, float cos_theta, float thickness_nm, vec3 base_f0) {
-    const float PI_ = 3.14159265358979;
     // A vanishing film fades to no film (its index to the outside's), so thickness 0
     // is the base's own Fresnel.
     float film = mix(outside_ior, film_ior, smoothstep(0.0, 0.03, thickness_nm));
@@ -72,17 +71,17 @@ vec3 iridescence_fresnel(float outside_ior, float film_ior, float cos_theta, flo
     // Outside -> film: Schlick's reflectance, its transmittance, and the phase change
     // on reflection (pi where the film is the denser side, seen from inside).
     float r12 = interface_f0(film, outside_ior);
-    r12 = r12 + (1.0 - r12) * pow(clamp(1.0 - cos_theta, 0.0, 1.0), 5.0);
+    r12 = r12 + (1.0 - r12) * pow5(clamp(1.0 - cos_theta, 0.0, 1.0));
     float t121 = 1.0 - r12;
-    float phi12 = film < outside_ior ? PI_ : 0.0;
-    float phi21 = PI_ - phi12;
+    float phi12 = film < outside_ior ? PI : 0.0;
+    float phi21 = PI - phi12;
 
     // Film -> base: the base's index from its F0 (per channel), Schlick at the film's
     // angle, and its phase change.
     vec3 base_ior = f0_to_ior(base_f0);
     vec3 r1 = interface_f0(base_ior, film);
-    vec3 r23 = r1 + (1.0 - r1) * pow(clamp(1.0 - cos_film, 0.0, 1.0), 5.0);
-    vec3 phi23 = vec3(base_ior.x < film ? PI_ : 0.0, base_ior.y < film ? PI_ : 0.0, base_ior.z < film ? PI_ : 0.0);
+    vec3 r23 = r1 + (1.0 - r1) * pow5(clamp(1.0 - cos_film, 0.0, 1.0));
+    vec3 phi23 = vec3(base_ior.x < film ? PI : 0.0, base_ior.y < film ? PI : 0.0, base_ior.z < film ? PI : 0.0);
 
     // The Airy sum: the direct reflection, then the terms of the first two round trips
     // through the film, each a cosine of its optical path in the spectral sensitivity.

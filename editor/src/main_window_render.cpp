@@ -121,20 +121,23 @@ void MainWindow::uploadScene() {
     pass_frames_left_ = kPassReadbackFrames;
     if (!render_) return;
     const ViewportFrame streams = currentFrame();
-    render_->post([this, session = context_.sharedSession(), streams,
-                   checker = a_->missing_checker->isChecked()](GpuViewport& gpu) {
-        gpu.setSession(nullptr); // so that the stream policy costs no upload
-        gpu.setMissingTexturesChecker(checker);
-        gpu.useStreamsFor(streams);
-        gpu.setSession(session);
-        const auto bytes = static_cast<std::int64_t>(gpu.textureBytes());
-        // Built on upload (ray tracing on): handed over as data, for this session only.
-        QMetaObject::invokeMethod(this, [this, bytes, session, stats = gpu.accelerationStats()] {
-            textures_->setGpuBytes(bytes);
-            if (session == context_.sharedSession())
-                acceleration_->setStats(stats, noAccelerationReason());
-        });
-    });
+    render_->post(
+        [this, session = context_.sharedSession(), streams,
+         checker = a_->missing_checker->isChecked()](GpuViewport& gpu) {
+            gpu.setSession(nullptr); // so that the stream policy costs no upload
+            gpu.setMissingTexturesChecker(checker);
+            gpu.useStreamsFor(streams);
+            gpu.setSession(session);
+            const auto bytes = static_cast<std::int64_t>(gpu.textureBytes());
+            // Built on upload (ray tracing on): handed over as data, for this session only.
+            QMetaObject::invokeMethod(
+                this, [this, bytes, session, stats = gpu.accelerationStats()] {
+                    textures_->setGpuBytes(bytes);
+                    if (session == context_.sharedSession())
+                        acceleration_->setStats(stats, noAccelerationReason());
+                });
+        },
+        RenderThread::TaskKind::SceneUpload);
     render_->forgetMotion(); // the new scene's first frame at full size
     viewport_->scheduleFrame();
 }

@@ -48,11 +48,18 @@ std::uint64_t RenderThread::requestFrame(const ViewportFrame& frame, std::uint64
     return serial;
 }
 
-void RenderThread::post(Task task) {
+void RenderThread::post(Task task, TaskKind kind) {
+    std::deque<Queued> superseded; // destroyed outside the lock: they may hold a scene
     {
         std::lock_guard lock(mutex_);
         if (failed_) return; // a call() waiting on it throws (broken promise)
-        tasks_.push_back(std::move(task));
+        if (kind == TaskKind::SceneUpload) {
+            const auto upload = [](const Queued& q) { return q.kind == TaskKind::SceneUpload; };
+            for (Queued& q : tasks_)
+                if (upload(q)) superseded.push_back(std::move(q));
+            std::erase_if(tasks_, upload);
+        }
+        tasks_.push_back({std::move(task), kind});
     }
     wake_.notify_all();
 }
@@ -142,7 +149,7 @@ void RenderThread::run() {
             wake_.wait(lock, woken);
         if (stop_) break;
         if (!tasks_.empty()) { // before frames: a frame may depend on them (uploads)
-            Task task = std::move(tasks_.front());
+            Task task = std::move(tasks_.front().task);
             tasks_.pop_front();
             lock.unlock();
             try {

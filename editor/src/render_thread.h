@@ -65,9 +65,14 @@ public:
     // The serial of the latest request (requestFrame(), renderAndWait()); 0 before
     // any. A FrameReport::request at or above it drew a frame asked for since.
     std::uint64_t latestRequest() const;
+    // What a posted task is: a scene upload replaces one not yet started, which goes
+    // with the whole scene it holds. Switching scenes faster than the device draws
+    // (lavapipe compiling shaders for a new scene takes seconds) then keeps one scene
+    // waiting, not every scene switched through.
+    enum class TaskKind { Once, SceneUpload };
     // Runs `task` on the render thread before the next frame, in order of posting
     // (dropped when the device could not be made).
-    void post(Task task);
+    void post(Task task, TaskKind kind = TaskKind::Once);
     // Runs `task` there and waits for its result (so for the frame in flight too);
     // throws std::future_error when the device could not be made.
     template <class F> auto call(F task) -> decltype(task(std::declval<GpuViewport&>()));
@@ -109,7 +114,11 @@ private:
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;
-    std::deque<Task> tasks_;
+    struct Queued {
+        Task task;
+        TaskKind kind = TaskKind::Once;
+    };
+    std::deque<Queued> tasks_;
     std::optional<Request> pending_;
     std::optional<Request> last_; // the last frame drawn (for the refinement at rest)
     bool refine_ = false;         // last_ was drawn reduced: draw it full at rest

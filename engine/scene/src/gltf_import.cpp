@@ -209,7 +209,7 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         // validate_gltf_bytes refused unsupported required extensions already.
         scene->extensions_used = model.extensionsUsed;
         scene->extensions_required = model.extensionsRequired;
-        const auto decoded_views = detail::decode_meshopt_views(model);
+        const auto decoded_views = detail::decode_meshopt_views(model, buffers);
         const auto decoded_draco = detail::decode_draco_primitives(model);
         detail::ImportContext ctx{model, *scene};
         // The validator read the file's bytes; a decoded meshopt view holds others.
@@ -223,6 +223,9 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
                 bounds_hold[a] = 0;
         }
         ctx.bounds_hold = std::move(bounds_hold);
+        for (const auto& d : decoded_views)
+            if (d.fell_back) ctx.warn(d.failed);
+        ctx.undecodable = detail::undecodable_primitives(model, decoded_views);
         for (const auto& d : decoded_draco) {
             if (!d.failed.empty())
                 ctx.undecodable.emplace(std::pair{d.mesh, d.primitive}, d.failed);

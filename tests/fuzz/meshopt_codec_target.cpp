@@ -63,12 +63,13 @@ bool MeshoptCodecTarget::init(const TargetConfig& config, std::string& error) {
     std::vector<fs::path> files;
     std::error_code ec;
     for (const auto& f : fs::directory_iterator(dir, ec))
-        if (f.path().filename().string().find("meshopt") != std::string::npos) files.push_back(f.path());
+        if (f.path().filename().string().find("meshopt") != std::string::npos)
+            files.push_back(f.path());
     std::sort(files.begin(), files.end()); // the same seed numbering on every machine
     for (const fs::path& file : files) {
         std::vector<std::uint8_t> glb, bin;
         std::string text;
-        if (!read_file(file, glb, error)) return false;
+        if (!::sherpa::read_file(file, glb, error)) return false;
         if (!split_glb(glb, text, bin)) continue;
         const json doc = json::parse(text, nullptr, false);
         if (!doc.is_object()) continue;
@@ -76,13 +77,16 @@ bool MeshoptCodecTarget::init(const TargetConfig& config, std::string& error) {
             for (const char* codec : {"EXT_meshopt_compression", "KHR_meshopt_compression"}) {
                 if (!view.contains("extensions") || !view["extensions"].contains(codec)) continue;
                 const json& e = view["extensions"][codec];
-                const std::size_t offset = e.value("byteOffset", 0u), length = e.value("byteLength", 0u);
+                const std::size_t offset = e.value("byteOffset", 0u),
+                                  length = e.value("byteLength", 0u);
                 if (length == 0 || offset > bin.size() || length > bin.size() - offset) continue;
                 const std::string mode = e.value("mode", ""), filter = e.value("filter", "NONE");
                 const std::size_t stride = e.value("byteStride", 4u);
                 const auto count = std::uint32_t(e.value("count", 0u));
                 std::vector<std::uint8_t> seed = {
-                    std::uint8_t(mode == "ATTRIBUTES" ? 0 : mode == "TRIANGLES" ? 1 : 2),
+                    std::uint8_t(mode == "ATTRIBUTES"  ? 0
+                                 : mode == "TRIANGLES" ? 1
+                                                       : 2),
                     std::uint8_t(mode == "ATTRIBUTES" ? stride / 4 - 1 : stride == 4),
                     std::uint8_t(filter == "OCTAHEDRAL"    ? 1
                                  : filter == "QUATERNION"  ? 2

@@ -324,9 +324,8 @@ TEST(BrokenMeshopt, TruncatedStreamSkipsItsPrimitiveByName) {
 // A stream declared one byte longer (the next stream's first byte): its tail, read from
 // the end, is not the tail, and the blocks do not end where it begins.
 TEST(BrokenMeshopt, StreamOneByteLongSkipsItsPrimitive) {
-    const std::string path = broken_copy("long.gltf", [](nlohmann::json& e) {
-        e["byteLength"] = e["byteLength"].get<int>() + 1;
-    });
+    const std::string path = broken_copy(
+        "long.gltf", [](nlohmann::json& e) { e["byteLength"] = e["byteLength"].get<int>() + 1; });
     test::expect_primitive_skipped(path, 0, 0, kFirstViewPointer,
                                    "EXT_meshopt_compression: the ATTRIBUTES stream (version 0) "
                                    "does not decode");
@@ -335,7 +334,8 @@ TEST(BrokenMeshopt, StreamOneByteLongSkipsItsPrimitive) {
 // Where the file has the view's uncompressed bytes (gltfpack -cf), a stream that does
 // not decode shows those instead, and says so.
 TEST(BrokenMeshopt, UndecodableStreamShowsTheFallbackBytes) {
-    const fs::path dir = fs::temp_directory_path() / ("sherpa_meshopt_cf_" + std::to_string(::getpid()));
+    const fs::path dir =
+        fs::temp_directory_path() / ("sherpa_meshopt_cf_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     nlohmann::json doc = test::read_json((corpus_dir() / "Duck.meshopt_fallback.gltf").string());
     for (const auto& b : doc["buffers"])
@@ -357,7 +357,8 @@ TEST(BrokenMeshopt, UndecodableStreamShowsTheFallbackBytes) {
     ASSERT_TRUE(whole) << whole.error;
     ASSERT_TRUE(cut) << cut.error;
     ASSERT_EQ(cut.scene->primitives.size(), whole.scene->primitives.size());
-    for (const auto& p : cut.scene->primitives) EXPECT_TRUE(p.skipped_reason.empty()) << p.skipped_reason;
+    for (const auto& p : cut.scene->primitives)
+        EXPECT_TRUE(p.skipped_reason.empty()) << p.skipped_reason;
     bool said = false;
     for (const auto& w : cut.scene->warnings)
         said |= w.find("bufferViews[" + std::to_string(broken) +

@@ -43,7 +43,6 @@ Bytes vertex_data(std::size_t count, std::size_t stride, int kind, std::mt19937&
     return d;
 }
 
-
 TEST(MeshoptVertexV0, EveryStrideAndCountMatchesTheLibrary) {
     std::mt19937 rng(7);
     for (std::size_t stride = 4; stride <= 256; stride += 4)
@@ -52,13 +51,16 @@ TEST(MeshoptVertexV0, EveryStrideAndCountMatchesTheLibrary) {
                 const Bytes data = vertex_data(count, stride, kind, rng);
                 const Bytes enc = encode_vertices(data, count, stride);
                 Bytes ref(count * stride + 1), ours(count * stride + 1);
-                ASSERT_EQ(meshopt_decodeVertexBuffer(ref.data(), count, stride, enc.data(), enc.size()), 0);
+                ASSERT_EQ(
+                    meshopt_decodeVertexBuffer(ref.data(), count, stride, enc.data(), enc.size()),
+                    0);
                 const mo::Result r = mo::decode_vertex_buffer(ours, count, stride, enc);
                 ASSERT_TRUE(r) << "stride " << stride << " count " << count << " kind " << kind
                                << ": " << mo::describe(r.status) << " at " << r.offset;
                 ASSERT_EQ(ours, ref) << "stride " << stride << " count " << count;
                 ASSERT_TRUE(std::equal(data.begin(), data.end(), ours.begin()));
-                EXPECT_LE(mo::minimum_stream_size(mo::Mode::Attributes, 0, count, stride), enc.size());
+                EXPECT_LE(mo::minimum_stream_size(mo::Mode::Attributes, 0, count, stride),
+                          enc.size());
             }
 }
 
@@ -83,7 +85,8 @@ TEST(MeshoptVertexV0, RealMeshesMatchTheLibrary) {
             for (const int version : {0, 1}) {
                 meshopt_encodeIndexVersion(version);
                 Bytes ienc(meshopt_encodeIndexBufferBound(n, count));
-                ienc.resize(meshopt_encodeIndexBuffer(ienc.data(), ienc.size(), mesh.indices.data(), n));
+                ienc.resize(
+                    meshopt_encodeIndexBuffer(ienc.data(), ienc.size(), mesh.indices.data(), n));
                 std::vector<std::uint32_t> ref(n), got(n);
                 ASSERT_EQ(meshopt_decodeIndexBuffer(ref.data(), n, 4, ienc.data(), ienc.size()), 0);
                 std::span<std::uint8_t> dst(reinterpret_cast<std::uint8_t*>(got.data()), n * 4);
@@ -130,7 +133,9 @@ TEST(MeshoptIndexBuffer, BothVersionsAndIndexSizesMatchTheLibrary) {
                 enc.resize(meshopt_encodeIndexBuffer(enc.data(), enc.size(), ib.data(), ib.size()));
                 ASSERT_EQ(enc[0], 0xE0 | version);
                 Bytes ref(ib.size() * size), ours(ib.size() * size);
-                ASSERT_EQ(meshopt_decodeIndexBuffer(ref.data(), ib.size(), size, enc.data(), enc.size()), 0);
+                ASSERT_EQ(
+                    meshopt_decodeIndexBuffer(ref.data(), ib.size(), size, enc.data(), enc.size()),
+                    0);
                 const mo::Result r = mo::decode_index_buffer(ours, ib.size(), size, enc);
                 ASSERT_TRUE(r) << mo::describe(r.status) << " at " << r.offset;
                 EXPECT_EQ(ours, ref) << "kind " << kind << " v" << version << " size " << size;
@@ -151,7 +156,9 @@ TEST(MeshoptIndexSequence, SequencesMatchTheLibrary) {
             Bytes enc(meshopt_encodeIndexSequenceBound(seq.size(), ~0u));
             enc.resize(meshopt_encodeIndexSequence(enc.data(), enc.size(), seq.data(), seq.size()));
             Bytes ref(seq.size() * size), ours(seq.size() * size);
-            ASSERT_EQ(meshopt_decodeIndexSequence(ref.data(), seq.size(), size, enc.data(), enc.size()), 0);
+            ASSERT_EQ(
+                meshopt_decodeIndexSequence(ref.data(), seq.size(), size, enc.data(), enc.size()),
+                0);
             ASSERT_TRUE(mo::decode_index_sequence(ours, seq.size(), size, enc));
             EXPECT_EQ(ours, ref) << "kind " << kind << " size " << size;
         }
@@ -159,8 +166,8 @@ TEST(MeshoptIndexSequence, SequencesMatchTheLibrary) {
 
 // Filters on the library's own filter encodings. The specification allows one unit in
 // the last place for octahedral and quaternion outputs, none for exponential.
-void expect_filter_matches(mo::Filter filter, Bytes encoded, std::size_t count,
-                           std::size_t stride, int ulp, int component_bytes) {
+void expect_filter_matches(mo::Filter filter, Bytes encoded, std::size_t count, std::size_t stride,
+                           int ulp, int component_bytes) {
     Bytes ref = encoded, ours = encoded;
     if (filter == mo::Filter::Octahedral) meshopt_decodeFilterOct(ref.data(), count, stride);
     if (filter == mo::Filter::Quaternion) meshopt_decodeFilterQuat(ref.data(), count, stride);
@@ -222,7 +229,8 @@ TEST(MeshoptFilters, MatchTheLibraryWithinTheSpecificationsTolerance) {
 TEST(MeshoptEdgeCases, StrideAndIndexSizeLimits) {
     Bytes out(4096), enc = encode_vertices(Bytes(64, 1), 16, 4);
     for (const std::size_t stride : {0, 2, 3, 5, 258, 260, 512})
-        EXPECT_EQ(mo::decode_vertex_buffer(out, 1, stride, enc).status, mo::Status::BadArgument) << stride;
+        EXPECT_EQ(mo::decode_vertex_buffer(out, 1, stride, enc).status, mo::Status::BadArgument)
+            << stride;
     for (const std::size_t size : {0, 1, 3, 8})
         EXPECT_EQ(mo::decode_index_buffer(out, 3, size, enc).status, mo::Status::BadArgument);
     EXPECT_EQ(mo::decode_index_buffer(out, 4, 4, enc).status, mo::Status::BadArgument); // not 3n
@@ -241,10 +249,12 @@ TEST(MeshoptEdgeCases, CountZeroStreamsDecode) {
     for (std::size_t stride = 4; stride <= 256; stride += 4)
         EXPECT_TRUE(mo::decode_vertex_buffer(none, 0, stride, encode_vertices({}, 0, stride)));
     Bytes ienc(64);
-    ienc.resize(meshopt_encodeIndexBuffer(ienc.data(), ienc.size(), static_cast<unsigned*>(nullptr), 0));
+    ienc.resize(
+        meshopt_encodeIndexBuffer(ienc.data(), ienc.size(), static_cast<unsigned*>(nullptr), 0));
     EXPECT_TRUE(mo::decode_index_buffer(none, 0, 2, ienc));
     Bytes senc(64);
-    senc.resize(meshopt_encodeIndexSequence(senc.data(), senc.size(), static_cast<unsigned*>(nullptr), 0));
+    senc.resize(
+        meshopt_encodeIndexSequence(senc.data(), senc.size(), static_cast<unsigned*>(nullptr), 0));
     EXPECT_TRUE(mo::decode_index_sequence(none, 0, 4, senc));
 }
 
@@ -256,7 +266,7 @@ struct Stream {
 
 mo::Result decode(const Stream& s, Bytes& out, std::span<const std::uint8_t> src) {
     out.assign(s.count * s.stride, 0);
-    return s.mode == mo::Mode::Attributes ? mo::decode_vertex_buffer(out, s.count, s.stride, src)
+    return s.mode == mo::Mode::Attributes  ? mo::decode_vertex_buffer(out, s.count, s.stride, src)
            : s.mode == mo::Mode::Triangles ? mo::decode_index_buffer(out, s.count, s.stride, src)
                                            : mo::decode_index_sequence(out, s.count, s.stride, src);
 }
@@ -299,7 +309,8 @@ TEST(MeshoptEdgeCases, TruncatedAtEveryByte) {
             const Bytes cut(s.bytes.begin(), s.bytes.begin() + std::ptrdiff_t(n));
             const mo::Result r = decode(s, ours, cut);
             if (!r) continue;
-            ASSERT_EQ(decode_library(s, ref, cut), 0) << "accepted what the library refuses, n " << n;
+            ASSERT_EQ(decode_library(s, ref, cut), 0)
+                << "accepted what the library refuses, n " << n;
             EXPECT_EQ(ours, ref);
         }
         // And every stream with a byte inserted before its tail (trailing bytes).

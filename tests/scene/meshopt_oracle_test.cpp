@@ -39,7 +39,8 @@ std::vector<OracleStream> read_streams(const std::string& path) {
     };
     const auto bytes = [&](std::uint32_t n) {
         Bytes b;
-        if (at + n <= all.size()) b.assign(all.begin() + std::ptrdiff_t(at), all.begin() + std::ptrdiff_t(at + n));
+        if (at + n <= all.size())
+            b.assign(all.begin() + std::ptrdiff_t(at), all.begin() + std::ptrdiff_t(at + n));
         at += n;
         return b;
     };
@@ -62,10 +63,15 @@ long largest_difference(const OracleStream& s, const Bytes& ours) {
     long worst = 0;
     for (std::size_t i = 0; i + width <= ours.size(); i += width) {
         long a = 0, b = 0;
-        if (width == 1 && (s.filter == 1)) a = std::int8_t(ours[i]), b = std::int8_t(s.decoded[i]);
-        else if (width == 1) a = ours[i], b = s.decoded[i];
-        else if (s.filter == 4) a = ours[i] | ours[i + 1] << 8, b = s.decoded[i] | s.decoded[i + 1] << 8;
-        else a = std::int16_t(ours[i] | ours[i + 1] << 8), b = std::int16_t(s.decoded[i] | s.decoded[i + 1] << 8);
+        if (width == 1 && (s.filter == 1))
+            a = std::int8_t(ours[i]), b = std::int8_t(s.decoded[i]);
+        else if (width == 1)
+            a = ours[i], b = s.decoded[i];
+        else if (s.filter == 4)
+            a = ours[i] | ours[i + 1] << 8, b = s.decoded[i] | s.decoded[i + 1] << 8;
+        else
+            a = std::int16_t(ours[i] | ours[i + 1] << 8),
+            b = std::int16_t(s.decoded[i] | s.decoded[i + 1] << 8);
         worst = std::max(worst, std::abs(a - b));
     }
     return worst;

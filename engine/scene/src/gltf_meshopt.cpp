@@ -120,7 +120,9 @@ std::string decode_stream(std::vector<unsigned char>& out, const Stream& s, std:
                           std::span<const std::uint8_t> data) {
     if (data.empty()) return "the compressed stream is empty";
     const unsigned kind = data[0] & 0xF0u, version = data[0] & 0x0Fu;
-    const unsigned expected = s.mode == "ATTRIBUTES" ? 0xA0u : s.mode == "TRIANGLES" ? 0xE0u : 0xD0u;
+    const unsigned expected = s.mode == "ATTRIBUTES"  ? 0xA0u
+                              : s.mode == "TRIANGLES" ? 0xE0u
+                                                      : 0xD0u;
     if (kind != expected)
         return "the " + s.mode + " stream's header byte " + hex(data[0]) + " is not a meshopt " +
                s.mode + " stream (corrupt)";
@@ -135,11 +137,10 @@ std::string decode_stream(std::vector<unsigned char>& out, const Stream& s, std:
                std::to_string(version) + " needs at least " + std::to_string(least) + ")";
     out.assign(size, 0);
     const std::span<std::uint8_t> dst(out.data(), out.size());
-    const meshopt::Result r = s.mode == "ATTRIBUTES"
-                                  ? meshopt::decode_vertex_buffer(dst, s.count, s.stride, data)
-                              : s.mode == "TRIANGLES"
-                                  ? meshopt::decode_index_buffer(dst, s.count, s.stride, data)
-                                  : meshopt::decode_index_sequence(dst, s.count, s.stride, data);
+    const meshopt::Result r =
+        s.mode == "ATTRIBUTES"  ? meshopt::decode_vertex_buffer(dst, s.count, s.stride, data)
+        : s.mode == "TRIANGLES" ? meshopt::decode_index_buffer(dst, s.count, s.stride, data)
+                                : meshopt::decode_index_sequence(dst, s.count, s.stride, data);
     if (!r)
         return "the " + s.mode + " stream (version " + std::to_string(version) +
                ") does not decode: " + meshopt::describe(r.status) + " at byte " +

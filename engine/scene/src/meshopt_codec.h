@@ -48,8 +48,8 @@ Result decode_index_buffer(std::span<std::uint8_t> dst, std::size_t count, std::
                            std::span<const std::uint8_t> src);
 
 // Mode INDICES (index sequence codec): `count` indices of `index_size` 2 or 4 bytes.
-Result decode_index_sequence(std::span<std::uint8_t> dst, std::size_t count,
-                             std::size_t index_size, std::span<const std::uint8_t> src);
+Result decode_index_sequence(std::span<std::uint8_t> dst, std::size_t count, std::size_t index_size,
+                             std::span<const std::uint8_t> src);
 
 enum class Mode : std::uint8_t { Attributes, Triangles, Indices };
 

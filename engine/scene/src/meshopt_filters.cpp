@@ -11,15 +11,13 @@
 namespace sherpa::meshopt {
 namespace {
 
-template <typename T>
-T load(const std::uint8_t* p) {
+template <typename T> T load(const std::uint8_t* p) {
     T v;
     std::memcpy(&v, p, sizeof v);
     return v;
 }
 
-template <typename T>
-void store(std::uint8_t* p, T v) {
+template <typename T> void store(std::uint8_t* p, T v) {
     std::memcpy(p, &v, sizeof v);
 }
 
@@ -31,8 +29,7 @@ int rounded(float v, int lo, int hi) {
     return r <= float(lo) ? lo : r >= float(hi) ? hi : int(r);
 }
 
-template <typename T>
-void octahedral(std::uint8_t* data, std::size_t count) {
+template <typename T> void octahedral(std::uint8_t* data, std::size_t count) {
     constexpr int kMax = (1 << (8 * sizeof(T) - 1)) - 1;
     for (std::size_t i = 0; i < count; ++i) {
         std::uint8_t* e = data + i * 4 * sizeof(T);
@@ -73,14 +70,13 @@ void quaternion(std::uint8_t* data, std::size_t count) {
 void exponential(std::uint8_t* data, std::size_t values) {
     for (std::size_t i = 0; i < values; ++i) {
         const auto v = load<std::int32_t>(data + 4 * i);
-        const int exponent = v >> 24;                                    // signed high 8 bits
+        const int exponent = v >> 24;                                   // signed high 8 bits
         const auto mantissa = std::int32_t(std::uint32_t(v) << 8) >> 8; // signed low 24 bits
         store<float>(data + 4 * i, std::ldexp(float(mantissa), exponent));
     }
 }
 
-template <typename T>
-void color(std::uint8_t* data, std::size_t count) {
+template <typename T> void color(std::uint8_t* data, std::size_t count) {
     using Signed = std::conditional_t<sizeof(T) == 1, std::int8_t, std::int16_t>;
     constexpr int kMax = (1 << (8 * sizeof(T))) - 1;
     for (std::size_t i = 0; i < count; ++i) {
@@ -107,7 +103,8 @@ Result apply_filter(Filter filter, std::span<std::uint8_t> data, std::size_t cou
                     std::size_t stride) {
     const bool fits = stride != 0 && data.size() / stride >= count;
     switch (filter) {
-    case Filter::None: return fits ? Result{} : Result{Status::BadArgument, 0};
+    case Filter::None:
+        return fits ? Result{} : Result{Status::BadArgument, 0};
     case Filter::Octahedral:
     case Filter::Color:
         if (!fits || (stride != 4 && stride != 8)) return {Status::BadArgument, 0};

@@ -34,8 +34,7 @@ void write_index(std::uint8_t* dst, std::size_t i, std::size_t index_size, std::
 
 // A FIFO of the 16 most recent entries that knows how many were ever written, so a read
 // of an entry never written is caught (the specification calls such streams invalid).
-template <typename T>
-struct Fifo {
+template <typename T> struct Fifo {
     T items[16]{};
     std::size_t written = 0;
     void push(const T& v) { items[written++ & 15] = v; }
@@ -78,8 +77,7 @@ struct TriangleState {
 
 Result decode_index_buffer(std::span<std::uint8_t> dst, std::size_t count, std::size_t index_size,
                            std::span<const std::uint8_t> src) {
-    if ((index_size != 2 && index_size != 4) || count % 3 != 0 ||
-        dst.size() / index_size < count)
+    if ((index_size != 2 && index_size != 4) || count % 3 != 0 || dst.size() / index_size < count)
         return {Status::BadArgument, 0};
     if (src.empty()) return {Status::Truncated, 0};
     if ((src[0] & 0xF0) != 0xE0) return {Status::BadHeader, 0};
@@ -160,8 +158,8 @@ Result decode_index_buffer(std::span<std::uint8_t> dst, std::size_t count, std::
     return {Status::Ok, src.size(), v8};
 }
 
-Result decode_index_sequence(std::span<std::uint8_t> dst, std::size_t count,
-                             std::size_t index_size, std::span<const std::uint8_t> src) {
+Result decode_index_sequence(std::span<std::uint8_t> dst, std::size_t count, std::size_t index_size,
+                             std::span<const std::uint8_t> src) {
     if ((index_size != 2 && index_size != 4) || dst.size() / index_size < count)
         return {Status::BadArgument, 0};
     if (src.empty()) return {Status::Truncated, 0};
@@ -176,7 +174,8 @@ Result decode_index_sequence(std::span<std::uint8_t> dst, std::size_t count,
     for (std::size_t i = 0; i < count; ++i) {
         std::uint32_t v = 0;
         const std::size_t at = in.pos;
-        if (!read_varint(in, v)) return {in.has(1) ? Status::InvalidData : Status::Truncated, at, v8};
+        if (!read_varint(in, v))
+            return {in.has(1) ? Status::InvalidData : Status::Truncated, at, v8};
         std::uint32_t& base = last[v & 1];
         base += (v & 2) ? ~(v >> 2) : (v >> 2);
         write_index(dst.data(), i, index_size, base);

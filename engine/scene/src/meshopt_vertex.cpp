@@ -19,8 +19,8 @@
 namespace sherpa::meshopt {
 namespace {
 
-constexpr std::size_t kGroup = 16;      // elements per delta group
-constexpr std::size_t kMaxBlock = 256;  // elements per block, at most
+constexpr std::size_t kGroup = 16;     // elements per delta group
+constexpr std::size_t kMaxBlock = 256; // elements per block, at most
 constexpr std::size_t kBlockBytes = 8192;
 
 std::size_t block_elements(std::size_t stride) {
@@ -29,7 +29,8 @@ std::size_t block_elements(std::size_t stride) {
 
 // Bit widths of the four group encodings: version 0, then version 1 control modes 0 and 1.
 // 0 is "all deltas zero", 8 "16 bytes stored as they are".
-constexpr std::array<std::array<std::uint8_t, 4>, 3> kWidths = {{{0, 2, 4, 8}, {0, 1, 2, 4}, {1, 2, 4, 8}}};
+constexpr std::array<std::array<std::uint8_t, 4>, 3> kWidths = {
+    {{0, 2, 4, 8}, {0, 1, 2, 4}, {1, 2, 4, 8}}};
 
 // One group of 16 deltas of `width` bits (1, 2 or 4) with sentinels: a value of all ones
 // means the delta is the next byte after the packed bits. 1-bit deltas are packed from
@@ -118,10 +119,9 @@ void apply_deltas(const std::uint8_t (*columns)[kMaxBlock], std::size_t n, std::
         std::uint32_t p = std::uint32_t(last[0]) | std::uint32_t(last[1]) << 8 |
                           std::uint32_t(last[2]) << 16 | std::uint32_t(last[3]) << 24;
         for (std::size_t i = 0; i < n; ++i) {
-            const std::uint32_t d = std::uint32_t(columns[0][i]) |
-                                    std::uint32_t(columns[1][i]) << 8 |
-                                    std::uint32_t(columns[2][i]) << 16 |
-                                    std::uint32_t(columns[3][i]) << 24;
+            const std::uint32_t d =
+                std::uint32_t(columns[0][i]) | std::uint32_t(columns[1][i]) << 8 |
+                std::uint32_t(columns[2][i]) << 16 | std::uint32_t(columns[3][i]) << 24;
             p ^= rotate_right(d, r);
             for (std::size_t j = 0; j < 4; ++j) out[i * stride + j] = std::uint8_t(p >> (8 * j));
         }
@@ -204,19 +204,27 @@ std::size_t minimum_stream_size(Mode mode, unsigned version, std::size_t count,
     };
     const std::size_t block = block_elements(stride);
     const std::size_t tail = stride + (version == 1 ? stride / 4 : 0);
-    return 1 + count / block * block_bytes(block) + (count % block ? block_bytes(count % block) : 0) +
+    return 1 + count / block * block_bytes(block) +
+           (count % block ? block_bytes(count % block) : 0) +
            std::max<std::size_t>(tail, version == 1 ? 24 : 32);
 }
 
 const char* describe(Status status) {
     switch (status) {
-    case Status::Ok: return "decoded";
-    case Status::BadArgument: return "count or stride not allowed for the mode";
-    case Status::BadHeader: return "the header byte names another mode";
-    case Status::BadVersion: return "unknown bitstream version";
-    case Status::Truncated: return "truncated (the stream ends before its data)";
-    case Status::TrailingBytes: return "trailing bytes before the stream's tail";
-    case Status::InvalidData: return "invalid data";
+    case Status::Ok:
+        return "decoded";
+    case Status::BadArgument:
+        return "count or stride not allowed for the mode";
+    case Status::BadHeader:
+        return "the header byte names another mode";
+    case Status::BadVersion:
+        return "unknown bitstream version";
+    case Status::Truncated:
+        return "truncated (the stream ends before its data)";
+    case Status::TrailingBytes:
+        return "trailing bytes before the stream's tail";
+    case Status::InvalidData:
+        return "invalid data";
     }
     return "unknown";
 }

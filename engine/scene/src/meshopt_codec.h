@@ -68,6 +68,16 @@ enum class Filter : std::uint8_t { None, Octahedral, Quaternion, Exponential, Co
 Result apply_filter(Filter filter, std::span<std::uint8_t> data, std::size_t count,
                     std::size_t stride);
 
+// The header byte every stream starts with: its high nibble names the mode (`kind`
+// 0xA0, 0xE0 or 0xD0), its low one the bitstream version (0 or 1). Ok with the version,
+// else why not.
+inline Result read_header(std::span<const std::uint8_t> src, unsigned kind) {
+    if (src.empty()) return {Status::Truncated, 0};
+    if ((src[0] & 0xF0u) != kind) return {Status::BadHeader, 0};
+    const auto version = std::uint8_t(src[0] & 0x0Fu);
+    return {version > 1 ? Status::BadVersion : Status::Ok, 0, version};
+}
+
 // The byte reader every decoder uses: all reads checked against `end`.
 struct StreamReader {
     std::span<const std::uint8_t> bytes;

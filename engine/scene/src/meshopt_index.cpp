@@ -79,11 +79,10 @@ Result decode_index_buffer(std::span<std::uint8_t> dst, std::size_t count, std::
                            std::span<const std::uint8_t> src) {
     if ((index_size != 2 && index_size != 4) || count % 3 != 0 || dst.size() / index_size < count)
         return {Status::BadArgument, 0};
-    if (src.empty()) return {Status::Truncated, 0};
-    if ((src[0] & 0xF0) != 0xE0) return {Status::BadHeader, 0};
-    const unsigned version = src[0] & 0x0F;
-    const auto v8 = std::uint8_t(version);
-    if (version > 1) return {Status::BadVersion, 0, v8};
+    const Result header = read_header(src, 0xE0);
+    if (!header) return header;
+    const unsigned version = header.version;
+    const auto v8 = header.version;
     const std::size_t triangles = count / 3;
     if (src.size() - 1 < 16 || src.size() - 1 - 16 < triangles)
         return {Status::Truncated, src.size(), v8};
@@ -162,11 +161,9 @@ Result decode_index_sequence(std::span<std::uint8_t> dst, std::size_t count, std
                              std::span<const std::uint8_t> src) {
     if ((index_size != 2 && index_size != 4) || dst.size() / index_size < count)
         return {Status::BadArgument, 0};
-    if (src.empty()) return {Status::Truncated, 0};
-    if ((src[0] & 0xF0) != 0xD0) return {Status::BadHeader, 0};
-    const unsigned version = src[0] & 0x0F;
-    const auto v8 = std::uint8_t(version);
-    if (version > 1) return {Status::BadVersion, 0, v8};
+    const Result header = read_header(src, 0xD0);
+    if (!header) return header;
+    const auto v8 = header.version;
     if (src.size() - 1 < 4 || src.size() - 1 - 4 < count)
         return {Status::Truncated, src.size(), v8};
     StreamReader in{src, 1, src.size() - 4};

@@ -32,26 +32,36 @@ std::size_t block_elements(std::size_t stride) {
 constexpr std::array<std::array<std::uint8_t, 4>, 3> kWidths = {
     {{0, 2, 4, 8}, {0, 1, 2, 4}, {1, 2, 4, 8}}};
 
-// One group of 16 deltas of `width` bits (1, 2 or 4) with sentinels: a value of all ones
+// One group of 16 deltas of W bits (1, 2 or 4) with sentinels: a value of all ones
 // means the delta is the next byte after the packed bits. 1-bit deltas are packed from
-// the least significant bit, 2- and 4-bit ones from the most significant.
-bool decode_group(StreamReader& in, std::uint8_t* out, unsigned width) {
-    const std::uint8_t* packed = in.take(2 * width); // 16 * width bits
-    if (!packed) return false;
-    const unsigned sentinel = (1u << width) - 1;
-    const unsigned per_byte = 8 / width;
-    for (std::size_t i = 0; i < kGroup; ++i) {
-        const unsigned slot = unsigned(i % per_byte);
-        const unsigned shift = width == 1 ? slot : 8 - width * (slot + 1);
-        const unsigned delta = (packed[i / per_byte] >> shift) & sentinel;
-        if (delta != sentinel) {
-            out[i] = std::uint8_t(delta);
-        } else {
-            const std::uint8_t* extra = in.take(1);
-            if (!extra) return false;
-            out[i] = *extra;
-        }
+// the least significant bit, 2- and 4-bit ones from the most significant. W is a
+// template argument so that the bit positions are constants (the loop unrolls), and the
+// sentinel is resolved without a branch.
+template <unsigned W, bool kChecked>
+std::size_t unpack_group(const std::uint8_t* packed, std::size_t available, std::uint8_t* out) {
+    constexpr unsigned kSentinel = (1u << W) - 1, kPerByte = 8 / W, kTop = 8 - W;
+    const std::uint8_t* extra = packed + 2 * W;
+    std::size_t used = 0;
+    for (unsigned i = 0; i < kGroup; ++i) {
+        const unsigned shift = W == 1 ? i % 8 : kTop - W * (i % kPerByte);
+        const unsigned delta = (packed[i / kPerByte] >> shift) & kSentinel;
+        const bool escaped = delta == kSentinel;
+        const std::uint8_t byte = !kChecked || used < available ? extra[used] : 0;
+        out[i] = escaped ? byte : std::uint8_t(delta);
+        used += escaped;
     }
+    return used;
+}
+
+template <unsigned W> bool decode_group(StreamReader& in, std::uint8_t* out) {
+    if (!in.has(2 * W)) return false; // 16 * W bits
+    const std::uint8_t* packed = in.bytes.data() + in.pos;
+    const std::size_t available = in.end - in.pos - 2 * W;
+    // With 16 bytes left after the bits, no escape can run past the stream: unchecked.
+    const std::size_t used = available >= kGroup ? unpack_group<W, false>(packed, available, out)
+                                                 : unpack_group<W, true>(packed, available, out);
+    if (used > available) return false;
+    in.pos += 2 * W + used;
     return true;
 }
 
@@ -70,19 +80,22 @@ bool decode_column(StreamReader& in, std::uint8_t* out, std::size_t groups,
             const std::uint8_t* raw = in.take(kGroup);
             if (!raw) return false;
             std::memcpy(dst, raw, kGroup);
-        } else if (!decode_group(in, dst, width)) {
+        } else if (!(width == 1   ? decode_group<1>(in, dst)
+                     : width == 2 ? decode_group<2>(in, dst)
+                                  : decode_group<4>(in, dst))) {
             return false;
         }
     }
     return true;
 }
 
+// (v & 1) ? ~(v >> 1) : (v >> 1), without a branch.
 std::uint8_t unzigzag8(std::uint8_t v) {
-    return std::uint8_t((v & 1) ? ~(v >> 1) : (v >> 1));
+    return std::uint8_t((v >> 1) ^ -(v & 1));
 }
 
 std::uint16_t unzigzag16(std::uint16_t v) {
-    return std::uint16_t((v & 1) ? ~(v >> 1) : (v >> 1));
+    return std::uint16_t((v >> 1) ^ -(v & 1));
 }
 
 std::uint32_t rotate_right(std::uint32_t v, unsigned r) {
@@ -94,15 +107,17 @@ std::uint32_t rotate_right(std::uint32_t v, unsigned r) {
 void apply_deltas(const std::uint8_t (*columns)[kMaxBlock], std::size_t n, std::uint8_t* out,
                   std::size_t stride, std::uint8_t* last, std::uint8_t channel) {
     const unsigned mode = channel & 15;
-    if (mode == 0) {
-        for (std::size_t j = 0; j < 4; ++j) {
-            std::uint8_t p = last[j];
-            for (std::size_t i = 0; i < n; ++i) {
-                p = std::uint8_t(p + unzigzag8(columns[j][i]));
-                out[i * stride + j] = p;
-            }
-            last[j] = p;
+    if (mode == 0) { // the 4 bytes side by side: 4 independent sums per element
+        std::uint8_t p0 = last[0], p1 = last[1], p2 = last[2], p3 = last[3];
+        for (std::size_t i = 0; i < n; ++i) {
+            p0 = std::uint8_t(p0 + unzigzag8(columns[0][i]));
+            p1 = std::uint8_t(p1 + unzigzag8(columns[1][i]));
+            p2 = std::uint8_t(p2 + unzigzag8(columns[2][i]));
+            p3 = std::uint8_t(p3 + unzigzag8(columns[3][i]));
+            const std::uint8_t value[4] = {p0, p1, p2, p3};
+            std::memcpy(out + i * stride, value, 4);
         }
+        last[0] = p0, last[1] = p1, last[2] = p2, last[3] = p3;
     } else if (mode == 1) {
         for (std::size_t h = 0; h < 4; h += 2) {
             std::uint16_t p = std::uint16_t(last[h] | last[h + 1] << 8);
@@ -164,10 +179,9 @@ Result decode_vertex_buffer(std::span<std::uint8_t> dst, std::size_t count, std:
                             std::span<const std::uint8_t> src) {
     if (stride == 0 || stride % 4 != 0 || stride > 256 || dst.size() / stride < count)
         return {Status::BadArgument, 0};
-    if (src.empty()) return {Status::Truncated, 0};
-    if ((src[0] & 0xF0) != 0xA0) return {Status::BadHeader, 0};
-    const unsigned version = src[0] & 0x0F;
-    if (version > 1) return {Status::BadVersion, 0, std::uint8_t(version)};
+    const Result header = read_header(src, 0xA0);
+    if (!header) return header;
+    const unsigned version = header.version;
     const std::size_t tail = stride + (version == 1 ? stride / 4 : 0);
     const std::size_t padded_tail = std::max<std::size_t>(tail, version == 1 ? 24 : 32);
     if (src.size() - 1 < padded_tail) return {Status::Truncated, src.size(), std::uint8_t(version)};

@@ -24,9 +24,9 @@ template <typename T> void store(std::uint8_t* p, T v) {
 // round(v), halves away from zero, clamped to [lo, hi]; NaN gives 0. Garbage input
 // (unspecified by the filters) never reaches an undefined float-to-int conversion.
 int rounded(float v, int lo, int hi) {
-    if (!(v == v)) return 0;
-    const float r = std::round(v);
-    return r <= float(lo) ? lo : r >= float(hi) ? hi : int(r);
+    if (!(v > float(lo))) return v == v ? lo : 0; // below the range, or NaN
+    if (!(v < float(hi))) return hi;
+    return int(v + (v >= 0.0f ? 0.5f : -0.5f)); // truncation of v +- 0.5: halves away from 0
 }
 
 template <typename T> void octahedral(std::uint8_t* data, std::size_t count) {
@@ -67,12 +67,25 @@ void quaternion(std::uint8_t* data, std::size_t count) {
     }
 }
 
+// 2^e * m, exact (as the specification demands) for the exponents it allows: a float
+// of the value 2^e built from its bits, times m (at most 24 bits, so the product is
+// exact wherever it is a normal float). Exponents below -126 (unspecified) go through
+// ldexp.
 void exponential(std::uint8_t* data, std::size_t values) {
     for (std::size_t i = 0; i < values; ++i) {
         const auto v = load<std::int32_t>(data + 4 * i);
         const int exponent = v >> 24;                                   // signed high 8 bits
         const auto mantissa = std::int32_t(std::uint32_t(v) << 8) >> 8; // signed low 24 bits
-        store<float>(data + 4 * i, std::ldexp(float(mantissa), exponent));
+        float result;
+        if (exponent >= -126) {
+            float scale;
+            const auto bits = std::uint32_t(exponent + 127) << 23;
+            std::memcpy(&scale, &bits, 4);
+            result = float(mantissa) * scale;
+        } else {
+            result = std::ldexp(float(mantissa), exponent);
+        }
+        store<float>(data + 4 * i, result);
     }
 }
 

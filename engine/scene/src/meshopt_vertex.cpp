@@ -37,18 +37,50 @@ constexpr std::array<std::array<std::uint8_t, 4>, 3> kWidths = {
 // the least significant bit, 2- and 4-bit ones from the most significant. W is a
 // template argument so that the bit positions are constants (the loop unrolls), and the
 // sentinel is resolved without a branch.
+// Per packed byte of W-bit deltas (W = 2 or 4): its 8 / W deltas as bytes, in stream
+// order, and a mask of those that are sentinels. Most bytes hold no sentinel: their
+// deltas are copied from the table whole.
+template <unsigned W> struct ByteTable {
+    std::uint32_t deltas[256]{};
+    std::uint8_t escapes[256]{};
+    constexpr ByteTable() {
+        constexpr unsigned kSentinel = (1u << W) - 1, kPerByte = 8 / W;
+        for (unsigned b = 0; b < 256; ++b)
+            for (unsigned k = 0; k < kPerByte; ++k) {
+                const unsigned d = (b >> (8 - W * (k + 1))) & kSentinel;
+                deltas[b] |= std::uint32_t(d) << (8 * k);
+                escapes[b] |= std::uint8_t((d == kSentinel ? 1u : 0u) << k);
+            }
+    }
+};
+
 template <unsigned W, bool kChecked>
 std::size_t unpack_group(const std::uint8_t* packed, std::size_t available, std::uint8_t* out) {
-    constexpr unsigned kSentinel = (1u << W) - 1, kPerByte = 8 / W, kTop = 8 - W;
+    constexpr unsigned kSentinel = (1u << W) - 1, kPerByte = 8 / W;
     const std::uint8_t* extra = packed + 2 * W;
     std::size_t used = 0;
-    for (unsigned i = 0; i < kGroup; ++i) {
-        const unsigned shift = W == 1 ? i % 8 : kTop - W * (i % kPerByte);
-        const unsigned delta = (packed[i / kPerByte] >> shift) & kSentinel;
-        const bool escaped = delta == kSentinel;
-        const std::uint8_t byte = !kChecked || used < available ? extra[used] : 0;
-        out[i] = escaped ? byte : std::uint8_t(delta);
-        used += escaped;
+    for (unsigned p = 0; p < 2 * W; ++p, out += kPerByte) {
+        const unsigned byte = packed[p];
+        unsigned escapes = byte; // W = 1: a 1 bit is the sentinel (least significant first)
+        if constexpr (W != 1) {
+            static constexpr ByteTable<W> kTable;
+            escapes = kTable.escapes[byte];
+            if (escapes == 0) {
+                std::memcpy(out, &kTable.deltas[byte], kPerByte);
+                continue;
+            }
+        } else if (escapes == 0) {
+            std::memset(out, 0, kPerByte);
+            continue;
+        }
+        for (unsigned k = 0; k < kPerByte; ++k) {
+            const unsigned shift = W == 1 ? k : 8 - W * (k + 1);
+            const unsigned delta = (byte >> shift) & kSentinel;
+            const bool escaped = (escapes >> k) & 1;
+            const std::uint8_t value = !kChecked || used < available ? extra[used] : 0;
+            out[k] = escaped ? value : std::uint8_t(delta);
+            used += escaped;
+        }
     }
     return used;
 }

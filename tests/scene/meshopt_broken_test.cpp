@@ -7,6 +7,7 @@
 
 #include <sherpa/scene/scene_loader.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -130,6 +131,58 @@ TEST(BrokenMeshopt, CountBeyondTheViewIsNamed) {
     const std::string path =
         broken_copy("big_count.gltf", [](nlohmann::json& e) { e["count"] = 1u << 30; });
     test::expect_clear_load_error(path, "exceeds the view's byteLength");
+}
+
+// A view that only animation data reads (gltfpack's QUATERNION-filtered rotations):
+// its stream, cut short, is named in a warning, the channel reading it is skipped,
+// and the rest of the file loads.
+TEST(BrokenMeshopt, AnimationStreamThatDoesNotDecodeIsNamed) {
+    const std::vector<unsigned char> glb =
+        test::read_bytes(meshopt_corpus() / "BoxAnimated.meshopt.glb");
+    ASSERT_GT(glb.size(), 20u);
+    std::uint32_t json_length = 0;
+    std::memcpy(&json_length, glb.data() + 12, 4);
+    nlohmann::json doc = nlohmann::json::parse(glb.begin() + 20, glb.begin() + 20 + json_length);
+    int broken = -1;
+    for (std::size_t v = 0; v < doc["bufferViews"].size() && broken < 0; ++v) {
+        auto& view = doc["bufferViews"][v];
+        if (view.contains("extensions") &&
+            view["extensions"]["EXT_meshopt_compression"].value("filter", "") == "QUATERNION") {
+            auto& e = view["extensions"]["EXT_meshopt_compression"];
+            e["byteLength"] = e["byteLength"].get<int>() / 2;
+            broken = int(v);
+        }
+    }
+    ASSERT_GE(broken, 0) << "gltfpack no longer filters rotations";
+    std::string text = doc.dump();
+    text.resize((text.size() + 3) / 4 * 4, ' ');
+    std::vector<unsigned char> out(glb.begin(), glb.begin() + 12);
+    const auto put32 = [&](std::uint32_t v) {
+        for (int b = 0; b < 4; ++b) out.push_back(static_cast<unsigned char>(v >> (8 * b)));
+    };
+    put32(std::uint32_t(text.size()));
+    put32(0x4E4F534A); // "JSON"
+    out.insert(out.end(), text.begin(), text.end());
+    out.insert(out.end(), glb.begin() + 20 + json_length, glb.end());
+    const std::uint32_t total = std::uint32_t(out.size());
+    std::memcpy(out.data() + 8, &total, 4);
+    const fs::path path =
+        fs::temp_directory_path() / ("sherpa_meshopt_anim_" + std::to_string(::getpid()) + ".glb");
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(out.data()), std::streamsize(out.size()));
+    const sherpa::LoadResult r = sherpa::load_scene(path.string());
+    fs::remove(path);
+    ASSERT_TRUE(r) << r.error;
+    bool named = false, skipped = false;
+    for (const std::string& w : r.scene->warnings) {
+        named |= w.rfind("bufferViews[" + std::to_string(broken) +
+                             "].extensions.EXT_meshopt_compression: the ATTRIBUTES stream",
+                         0) == 0;
+        skipped |= w.find("channels[0] skipped") != std::string::npos;
+    }
+    EXPECT_TRUE(named) << "no warning names the view's stream";
+    EXPECT_TRUE(skipped) << "the channel reading the view is not skipped by name";
+    for (const auto& p : r.scene->primitives) EXPECT_TRUE(p.skipped_reason.empty());
 }
 
 } // namespace

@@ -223,9 +223,15 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
                 bounds_hold[a] = 0;
         }
         ctx.bounds_hold = std::move(bounds_hold);
-        for (const auto& d : decoded_views)
-            if (d.fell_back) ctx.warn(d.failed);
         ctx.undecodable = detail::undecodable_primitives(model, decoded_views);
+        // A view shown from its fallback bytes, or read by no primitive (animation
+        // data: the channels reading it are skipped by the accessor reader), is said
+        // here; a primitive's skip message carries the reason otherwise.
+        std::set<std::string> skipping;
+        for (const auto& [key, why] : ctx.undecodable) skipping.insert(why);
+        for (const auto& d : decoded_views)
+            if (!d.failed.empty() && (d.fell_back || !skipping.contains(d.failed)))
+                ctx.warn(d.failed);
         for (const auto& d : decoded_draco) {
             if (!d.failed.empty())
                 ctx.undecodable.emplace(std::pair{d.mesh, d.primitive}, d.failed);

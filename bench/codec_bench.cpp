@@ -8,6 +8,9 @@
 //    count/min-max checks, new buffers) against draco::Decoder::DecodeMeshFromBuffer
 //    on each primitive's stream, and Debian's draco_decoder tool on the same stream
 //    (its own "ms to decode", whole milliseconds; it also writes a PLY).
+//  - The meshopt decoders alone: Sherpa's (meshopt_codec.h) against Debian's
+//    libmeshoptimizer on the same version 0 streams into preallocated outputs, vertex
+//    (ATTRIBUTES) and index (TRIANGLES, INDICES) streams apart, filters left out.
 //  - Load time (load_scene, tangents off) of each compressed file next to its
 //    uncompressed source.
 // Times are the minimum over --runs repetitions (default 30) of one full pass, ours
@@ -16,6 +19,7 @@
 #include "gltf_draco.h"
 #include "gltf_meshopt.h"
 #include "gltf_prepare.h"
+#include "meshopt_codec.h"
 
 #include <sherpa/scene/scene_loader.h>
 
@@ -26,6 +30,7 @@
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <span>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -144,7 +149,7 @@ Row bench_meshopt(const fs::path& file, int runs) {
     // fresh model copy): freeing them would let the next run reuse touched pages.
     std::vector<std::vector<std::uint8_t>> kept;
     kept.reserve(views.size() * std::size_t(runs));
-    const auto ours = [&] { sherpa::detail::decode_meshopt_views(copies[next++]); };
+    const auto ours = [&] { sherpa::detail::decode_meshopt_views(copies[next++], {}); };
     std::tie(row.ours_ms, row.reference_ms) = best_ms_alternating(runs, ours, [&] {
         for (const View& v : views) {
             std::vector<std::uint8_t>& out = kept.emplace_back(v.bytes, 0);
@@ -165,6 +170,69 @@ Row bench_meshopt(const fs::path& file, int runs) {
 }
 
 // draco_decoder's own decode time: "... (N ms to decode)".
+// The decoders alone on the file's streams of one kind (vertex: ATTRIBUTES; index:
+// TRIANGLES and INDICES), ours and the library's runs alternating, outputs allocated
+// once; the decoded bytes of the streams are `row.decoded`.
+Row bench_meshopt_decoders(const fs::path& file, int runs, bool vertex) {
+    const tinygltf::Model model = load_model(file);
+    Row row{file.filename().string() + (vertex ? " vertex" : " index")};
+    struct Stream {
+        std::span<const std::uint8_t> data;
+        std::size_t count, stride;
+        std::string mode;
+        std::vector<std::uint8_t> out;
+    };
+    std::vector<Stream> streams;
+    for (const auto& v : model.bufferViews) {
+        const auto it = v.extensions.find("EXT_meshopt_compression");
+        if (it == v.extensions.end()) continue;
+        const tinygltf::Value& e = it->second;
+        const std::string mode = text(e, "mode", "ATTRIBUTES");
+        if ((mode == "ATTRIBUTES") != vertex) continue;
+        const auto& buffer = model.buffers.at(std::size_t(number(e, "buffer", 0))).data;
+        Stream st{
+            {buffer.data() + number(e, "byteOffset", 0), std::size_t(number(e, "byteLength", 0))},
+            std::size_t(number(e, "count", 0)),
+            std::size_t(number(e, "byteStride", 0)),
+            mode,
+            {}};
+        st.out.resize(st.count * st.stride);
+        row.encoded += st.data.size();
+        row.decoded += st.out.size();
+        streams.push_back(std::move(st));
+    }
+    namespace mo = sherpa::meshopt;
+    std::tie(row.ours_ms, row.reference_ms) = best_ms_alternating(
+        runs,
+        [&] {
+            for (Stream& st : streams) {
+                const std::span<std::uint8_t> out(st.out);
+                const mo::Result r =
+                    st.mode == "ATTRIBUTES"
+                        ? mo::decode_vertex_buffer(out, st.count, st.stride, st.data)
+                    : st.mode == "TRIANGLES"
+                        ? mo::decode_index_buffer(out, st.count, st.stride, st.data)
+                        : mo::decode_index_sequence(out, st.count, st.stride, st.data);
+                if (!r) throw std::runtime_error("our meshopt decode failed");
+            }
+        },
+        [&] {
+            for (Stream& st : streams) {
+                std::uint8_t* out = st.out.data();
+                const int rc = st.mode == "ATTRIBUTES"
+                                   ? meshopt_decodeVertexBuffer(out, st.count, st.stride,
+                                                                st.data.data(), st.data.size())
+                               : st.mode == "TRIANGLES"
+                                   ? meshopt_decodeIndexBuffer(out, st.count, st.stride,
+                                                               st.data.data(), st.data.size())
+                                   : meshopt_decodeIndexSequence(out, st.count, st.stride,
+                                                                 st.data.data(), st.data.size());
+                if (rc != 0) throw std::runtime_error("meshopt reference decode failed");
+            }
+        });
+    return row;
+}
+
 double draco_tool_ms(const fs::path& drc) {
     const fs::path out = drc.string() + ".ply";
     const std::string cmd =
@@ -266,6 +334,13 @@ int main(int argc, char** argv) {
             print(bench_meshopt(corpus / (std::string(m) + ".meshopt.glb"), runs));
         for (const char* m : models)
             print(bench_draco(corpus / (std::string(m) + ".draco.glb"), runs, scratch));
+        std::printf("\nmeshopt decoders alone (ours: meshopt_codec.h; ref: Debian's "
+                    "libmeshoptimizer %d.%d), version 0 streams, best of %d\n",
+                    MESHOPTIMIZER_VERSION / 1000, MESHOPTIMIZER_VERSION % 1000 / 10, runs);
+        for (const bool vertex : {true, false})
+            for (const char* m : models)
+                print(bench_meshopt_decoders(corpus / (std::string(m) + ".meshopt.glb"), runs,
+                                             vertex));
         std::printf("\nload_scene (tangents off), best of %d, ms\n%-18s %10s %10s %10s\n", runs,
                     "model", "original", "meshopt", "draco");
         for (const char* m : models) {

@@ -4,6 +4,7 @@
 #include "compressed_targets.h"
 #include "gltf_targets.h"
 #include "image_target.h"
+#include "meshopt_codec_target.h"
 #include "pose_target.h"
 #include "texture_targets.h"
 #include "validate_target.h"
@@ -45,6 +46,7 @@ std::vector<std::unique_ptr<Target>> make_targets() {
     t.push_back(std::make_unique<ImageTarget>());
     t.push_back(std::make_unique<PoseTarget>());
     t.push_back(std::make_unique<ValidateTarget>());
+    t.push_back(std::make_unique<MeshoptCodecTarget>());
     return t;
 }
 

@@ -16,7 +16,7 @@ install="$(dirname "$0")/../npm_cache_install.sh"
 gltfpack="$cache/gltfpack/node_modules/.bin/gltfpack"
 gltf_transform="$cache/gltf-transform/node_modules/.bin/gltf-transform"
 corpus="$cache/corpus"
-version="4" # bump when the list below changes
+version="5" # bump when the list below changes
 source "$(dirname "$0")/../corpus_lib.sh"
 corpus_is_current "$corpus" "$version" compressed-geometry && exit 0
 corpus_start "$corpus" "$version" "file source-model codec: one compressed file per line"
@@ -32,6 +32,9 @@ done
 pack Duck.meshopt_vpf.glb Duck EXT_meshopt_compression -cc -vpf
 pack Duck.meshopt.gltf Duck EXT_meshopt_compression -cc # .gltf + .bin: the broken variants start here
 pack Duck.khr_meshopt.glb Duck KHR_meshopt_compression -cc -ce khr
+# -cf: an uncompressed fallback buffer with the file's bytes (the importer shows those
+# where a stream does not decode).
+pack Duck.meshopt_fallback.gltf Duck EXT_meshopt_compression -c -cf
 # Animation data: gltfpack stores rotations through the QUATERNION filter.
 pack BoxAnimated.meshopt.glb BoxAnimated EXT_meshopt_compression -cc
 draco() { # output, model

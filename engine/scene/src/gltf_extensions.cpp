@@ -12,10 +12,10 @@ namespace {
 // The one table: flipping an extension to supported is one line here.
 constexpr std::array<std::string_view, 25> kSupported{
     "EXT_mesh_gpu_instancing",    // one engine instance per row (gltf_instancing.cpp)
-    "EXT_meshopt_compression",    // through Debian's meshoptimizer
+    "EXT_meshopt_compression",    // our decoder (meshopt_codec.h)
     "EXT_texture_webp",           // through OpenImageIO
     "KHR_draco_mesh_compression", // through Debian's Draco
-    "KHR_meshopt_compression",    // where its bitstream version is one meshoptimizer decodes
+    "KHR_meshopt_compression",    // vertex bitstream versions 0 and 1
     "KHR_animation_pointer", // material, texture transform, light, camera and visibility channels
     "KHR_lights_punctual",
     "KHR_materials_anisotropy", // anisotropic GGX (shaders/include/anisotropy.glsl)

@@ -209,7 +209,7 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
         // validate_gltf_bytes refused unsupported required extensions already.
         scene->extensions_used = model.extensionsUsed;
         scene->extensions_required = model.extensionsRequired;
-        const auto decoded_views = detail::decode_meshopt_views(model);
+        const auto decoded_views = detail::decode_meshopt_views(model, buffers);
         const auto decoded_draco = detail::decode_draco_primitives(model);
         detail::ImportContext ctx{model, *scene};
         // The validator read the file's bytes; a decoded meshopt view holds others.
@@ -223,6 +223,15 @@ LoadResult import_gltf_unguarded(const std::string& path, const LoadOptions& opt
                 bounds_hold[a] = 0;
         }
         ctx.bounds_hold = std::move(bounds_hold);
+        ctx.undecodable = detail::undecodable_primitives(model, decoded_views);
+        // A view shown from its fallback bytes, or read by no primitive (animation
+        // data: the channels reading it are skipped by the accessor reader), is said
+        // here; a primitive's skip message carries the reason otherwise.
+        std::set<std::string> skipping;
+        for (const auto& [key, why] : ctx.undecodable) skipping.insert(why);
+        for (const auto& d : decoded_views)
+            if (!d.failed.empty() && (d.fell_back || !skipping.contains(d.failed)))
+                ctx.warn(d.failed);
         for (const auto& d : decoded_draco) {
             if (!d.failed.empty())
                 ctx.undecodable.emplace(std::pair{d.mesh, d.primitive}, d.failed);

@@ -2,15 +2,16 @@
 
 #include "checked_math.h"
 #include "import_error.h"
+#include "meshopt_codec.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <set>
 
-#include <meshoptimizer.h>
 #include <tiny_gltf.h>
 
 namespace sherpa::detail {
@@ -18,14 +19,17 @@ namespace {
 
 constexpr const char* kCodecs[] = {"EXT_meshopt_compression", "KHR_meshopt_compression"};
 
-// "0.18" for MESHOPTIMIZER_VERSION 180.
-std::string library_version() {
-    return std::to_string(MESHOPTIMIZER_VERSION / 1000) + "." +
-           std::to_string(MESHOPTIMIZER_VERSION % 1000 / 10);
-}
-
 double ms_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::optional<meshopt::Filter> filter_of(const std::string& name) {
+    if (name == "NONE") return meshopt::Filter::None;
+    if (name == "OCTAHEDRAL") return meshopt::Filter::Octahedral;
+    if (name == "QUATERNION") return meshopt::Filter::Quaternion;
+    if (name == "EXPONENTIAL") return meshopt::Filter::Exponential;
+    if (name == "COLOR") return meshopt::Filter::Color;
+    return std::nullopt;
 }
 
 struct Stream {
@@ -88,33 +92,12 @@ Stream read_stream(const tinygltf::Value& ext, const std::string& where) {
         fail(at + "OCTAHEDRAL filter needs byteStride 4 or 8, not " + std::to_string(s.stride));
     if (s.filter == "QUATERNION" && s.stride != 8)
         fail(at + "QUATERNION filter needs byteStride 8, not " + std::to_string(s.stride));
-    if (s.filter != "NONE" && s.filter != "OCTAHEDRAL" && s.filter != "QUATERNION" &&
-        s.filter != "EXPONENTIAL")
-        fail(at + "filter \"" + s.filter + "\" is not decoded by Debian's meshoptimizer " +
-             library_version() + " (it knows NONE, OCTAHEDRAL, QUATERNION, EXPONENTIAL)");
+    if (s.filter == "COLOR" && s.stride != 4 && s.stride != 8)
+        fail(at + "COLOR filter needs byteStride 4 or 8, not " + std::to_string(s.stride));
+    if (!filter_of(s.filter))
+        fail(at + "filter \"" + s.filter +
+             "\" is not NONE, OCTAHEDRAL, QUATERNION, EXPONENTIAL or COLOR");
     return s;
-}
-
-std::string hex(unsigned byte);
-
-// The bitstream version the stream's header byte names, checked against what this
-// meshoptimizer decodes: vertex streams 0xA0|v (v 0 here; version 1 came with
-// meshoptimizer 0.23 and KHR_meshopt_compression), index streams 0xE0|v / 0xD0|v.
-void check_version(std::span<const std::uint8_t> data, const Stream& s, const std::string& where) {
-    if (data.empty()) fail(where + ": the compressed stream is empty");
-    const unsigned kind = data[0] & 0xF0u, version = data[0] & 0x0Fu;
-    const unsigned expected = s.mode == "ATTRIBUTES"  ? 0xA0u
-                              : s.mode == "TRIANGLES" ? 0xE0u
-                                                      : 0xD0u;
-    const unsigned newest = s.mode == "ATTRIBUTES" ? 0u : 1u;
-    if (kind != expected)
-        fail(where + ": the " + s.mode + " stream's header byte " + hex(data[0]) +
-             " is not a meshopt " + s.mode + " stream (corrupt)");
-    if (version > newest)
-        fail(where + ": " + s.mode + " bitstream version " + std::to_string(version) +
-             " is not supported by Debian's meshoptimizer " + library_version() +
-             " (it decodes version " + std::to_string(newest) + (newest ? " and older" : " only") +
-             ")");
 }
 
 std::string hex(unsigned byte) {
@@ -123,33 +106,63 @@ std::string hex(unsigned byte) {
     return text;
 }
 
-// The most bytes `length` compressed bytes can decode to, from the minimum sizes
-// meshoptimizer's decoders (bitstream version 0, the one check_version lets through)
-// demand before decoding: a vertex block spends at least 2 header bits per 16 bytes of
-// a byte column (64:1), an index buffer 1 byte per triangle plus 17 (3 indices of at
-// most 4 bytes: 12:1), an index sequence 1 byte per index plus 5 (4:1).
-std::uint64_t max_decoded_bytes(const Stream& s, std::uint64_t length) {
-    const std::uint64_t ratio = s.mode == "ATTRIBUTES" ? 64 : s.mode == "TRIANGLES" ? 12 : 4;
-    return length * ratio; // length < 2^53: no wrap
+meshopt::Mode mode_of(const Stream& s) {
+    return s.mode == "ATTRIBUTES"  ? meshopt::Mode::Attributes
+           : s.mode == "TRIANGLES" ? meshopt::Mode::Triangles
+                                   : meshopt::Mode::Indices;
 }
 
-int decode(std::uint8_t* out, const Stream& s, std::span<const std::uint8_t> data) {
-    if (s.mode == "ATTRIBUTES")
-        return meshopt_decodeVertexBuffer(out, s.count, s.stride, data.data(), data.size());
-    if (s.mode == "TRIANGLES")
-        return meshopt_decodeIndexBuffer(out, s.count, s.stride, data.data(), data.size());
-    return meshopt_decodeIndexSequence(out, s.count, s.stride, data.data(), data.size());
+// Why the stream cannot be decoded, or empty once `out` holds its decoded (and
+// filtered) bytes. `out` is allocated only for a stream long enough to hold
+// `count` elements at its version (meshopt::minimum_stream_size): the view's declared
+// byteLength may claim gigabytes that its fallback buffer does not have.
+std::string decode_stream(std::vector<unsigned char>& out, const Stream& s, std::size_t size,
+                          std::span<const std::uint8_t> data) {
+    if (data.empty()) return "the compressed stream is empty";
+    const unsigned kind = data[0] & 0xF0u, version = data[0] & 0x0Fu;
+    const unsigned expected = s.mode == "ATTRIBUTES"  ? 0xA0u
+                              : s.mode == "TRIANGLES" ? 0xE0u
+                                                      : 0xD0u;
+    if (kind != expected)
+        return "the " + s.mode + " stream's header byte " + hex(data[0]) + " is not a meshopt " +
+               s.mode + " stream (corrupt)";
+    if (version > 1)
+        return s.mode + " bitstream version " + std::to_string(version) +
+               " is not one the specification defines (0 or 1)";
+    const std::size_t least = meshopt::minimum_stream_size(mode_of(s), version, s.count, s.stride);
+    if (data.size() < least)
+        return "count " + std::to_string(s.count) + " x byteStride " + std::to_string(s.stride) +
+               " = " + std::to_string(size) + " bytes cannot come from a " +
+               std::to_string(data.size()) + "-byte " + s.mode + " stream (version " +
+               std::to_string(version) + " needs at least " + std::to_string(least) + ")";
+    out.assign(size, 0);
+    const std::span<std::uint8_t> dst(out.data(), out.size());
+    const meshopt::Result r =
+        s.mode == "ATTRIBUTES"  ? meshopt::decode_vertex_buffer(dst, s.count, s.stride, data)
+        : s.mode == "TRIANGLES" ? meshopt::decode_index_buffer(dst, s.count, s.stride, data)
+                                : meshopt::decode_index_sequence(dst, s.count, s.stride, data);
+    if (!r)
+        return "the " + s.mode + " stream (version " + std::to_string(version) +
+               ") does not decode: " + meshopt::describe(r.status) + " at byte " +
+               std::to_string(r.offset) + " of " + std::to_string(data.size());
+    meshopt::apply_filter(*filter_of(s.filter), dst, s.count, s.stride); // stride checked
+    return {};
 }
 
-void apply_filter(std::uint8_t* out, const Stream& s) {
-    if (s.filter == "OCTAHEDRAL") meshopt_decodeFilterOct(out, s.count, s.stride);
-    if (s.filter == "QUATERNION") meshopt_decodeFilterQuat(out, s.count, s.stride);
-    if (s.filter == "EXPONENTIAL") meshopt_decodeFilterExp(out, s.count, s.stride);
+// Whether `view`'s own (uncompressed fallback) range holds bytes of the file: its
+// buffer was read (`readable`: empty for a buffer that was not, and a fallback buffer
+// without a URI is a 1-byte stand-in) and is long enough.
+bool has_fallback_bytes(const tinygltf::BufferView& view,
+                        std::span<const std::span<const std::uint8_t>> readable) {
+    return view.buffer >= 0 && std::size_t(view.buffer) < readable.size() && view.byteLength > 0 &&
+           range_fits(view.byteOffset, view.byteLength, readable[std::size_t(view.buffer)].size());
 }
 
 } // namespace
 
-std::vector<DecodedView> decode_meshopt_views(tinygltf::Model& model) {
+std::vector<DecodedView>
+decode_meshopt_views(tinygltf::Model& model,
+                     std::span<const std::span<const std::uint8_t>> readable) {
     std::vector<DecodedView> decoded;
     for (std::size_t v = 0; v < model.bufferViews.size(); ++v) {
         for (const char* codec : kCodecs) {
@@ -171,37 +184,68 @@ std::vector<DecodedView> decode_meshopt_views(tinygltf::Model& model) {
                      std::to_string(s.stride) + " exceeds the view's byteLength " +
                      std::to_string(view.byteLength));
             const std::span<const std::uint8_t> data(source.data() + s.offset, s.length);
-            check_version(data, s, where);
-            // The view's byteLength is only declared (its fallback buffer has no bytes,
-            // and may claim gigabytes): what is allocated is what the stream decodes,
-            // and that is bounded by the stream's own size first.
-            if (*size > max_decoded_bytes(s, s.length))
-                fail(where + ": count " + std::to_string(s.count) + " x byteStride " +
-                     std::to_string(s.stride) + " = " + std::to_string(*size) +
-                     " bytes cannot come from a " + std::to_string(s.length) + "-byte " + s.mode +
-                     " stream (at most " + std::to_string(max_decoded_bytes(s, s.length)) +
-                     "): corrupt");
+            DecodedView d;
+            d.view = static_cast<std::int32_t>(v);
+            d.codec = codec;
+            d.mode = s.mode + (s.filter == "NONE" ? "" : "/" + s.filter);
+            d.encoded_bytes = s.length;
+            d.decoded_bytes = *size;
             const auto t0 = std::chrono::steady_clock::now();
+            tinygltf::Buffer out;
+            std::string problem = decode_stream(out.data, s, *size, data);
+            d.decode_ms = ms_since(t0);
+            if (!problem.empty()) {
+                // The view's uncompressed bytes where the file has them, else nothing:
+                // the primitives reading it are skipped by name (undecodable_primitives).
+                d.failed = where + ": " + problem;
+                if (has_fallback_bytes(view, readable)) {
+                    d.fell_back = true;
+                    d.failed += "; the view's uncompressed fallback bytes (buffers[" +
+                                std::to_string(view.buffer) + "]) are shown instead";
+                } else {
+                    view.byteLength = 0; // nothing decoded: every read of it is refused
+                    view.buffer = static_cast<int>(model.buffers.size());
+                    model.buffers.emplace_back();
+                    view.byteOffset = 0;
+                }
+                decoded.push_back(std::move(d));
+                continue;
+            }
             // The view shrinks to the decoded bytes: an accessor reading past them is
             // refused by the accessor reader ("past the end of bufferViews[N]") rather
             // than shown zeros the file never held.
-            tinygltf::Buffer out;
-            out.data.assign(*size, 0);
             view.byteLength = *size;
-            if (const int rc = decode(out.data.data(), s, data); rc != 0)
-                fail(where + ": the " + s.mode + " stream does not decode (meshoptimizer error " +
-                     std::to_string(rc) + ": truncated or corrupt data)");
-            apply_filter(out.data.data(), s);
-            const double ms = ms_since(t0);
             model.buffers.push_back(std::move(out));
             view.buffer = static_cast<int>(model.buffers.size() - 1);
             view.byteOffset = 0;
-            decoded.push_back({static_cast<std::int32_t>(v), codec,
-                               s.mode + (s.filter == "NONE" ? "" : "/" + s.filter), s.length, *size,
-                               ms});
+            decoded.push_back(std::move(d));
         }
     }
     return decoded;
+}
+
+std::map<std::pair<std::uint32_t, std::uint32_t>, std::string>
+undecodable_primitives(const tinygltf::Model& model, std::span<const DecodedView> views) {
+    std::map<int, const DecodedView*> failed;
+    for (const auto& d : views)
+        if (!d.failed.empty() && !d.fell_back) failed[d.view] = &d;
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::string> out;
+    if (failed.empty()) return out;
+    const auto reason = [&](int accessor) -> const DecodedView* {
+        if (accessor < 0 || std::size_t(accessor) >= model.accessors.size()) return nullptr;
+        const auto it = failed.find(model.accessors[std::size_t(accessor)].bufferView);
+        return it == failed.end() ? nullptr : it->second;
+    };
+    for (std::size_t m = 0; m < model.meshes.size(); ++m)
+        for (std::size_t p = 0; p < model.meshes[m].primitives.size(); ++p) {
+            const auto& prim = model.meshes[m].primitives[p];
+            const DecodedView* d = reason(prim.indices);
+            for (const auto& [name, a] : prim.attributes) d = d ? d : reason(a);
+            for (const auto& target : prim.targets)
+                for (const auto& [name, a] : target) d = d ? d : reason(a);
+            if (d) out.emplace(std::pair{std::uint32_t(m), std::uint32_t(p)}, d->failed);
+        }
+    return out;
 }
 
 void attach_meshopt_compression(const tinygltf::Model& model, std::span<const DecodedView> views,
@@ -220,7 +264,9 @@ void attach_meshopt_compression(const tinygltf::Model& model, std::span<const De
         for (const int a : accessors) {
             if (a < 0 || std::size_t(a) >= model.accessors.size()) continue;
             const auto it = by_view.find(model.accessors[std::size_t(a)].bufferView);
-            if (it == by_view.end() || !seen.insert(it->first).second) continue;
+            if (it == by_view.end() || !it->second->failed.empty() ||
+                !seen.insert(it->first).second)
+                continue;
             c.codec = it->second->codec;
             if (modes.insert(it->second->mode).second)
                 c.modes += (c.modes.empty() ? "" : ", ") + it->second->mode;

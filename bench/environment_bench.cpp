@@ -16,9 +16,12 @@
 
 #include <sherpa/core/heap_tuning.h>
 #include <sherpa/gpu/context.h>
+#include <sherpa/render/camera.h>
 #include <sherpa/render/environment.h>
 #include <sherpa/render/renderer.h>
 #include <sherpa/scene/scene_loader.h>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -178,6 +181,35 @@ int main(int argc, char** argv) {
     std::printf("  with the environment but a solid background (lighting alone) %.1f: %.2fx; "
                 "CPU %.1f: %.2fx\n",
                 with_solid.w(), median(ratio_solid), with_solid.c(), median(ratio_solid_cpu));
+    // 2b. A moving view: the camera orbits 2 degrees a frame about the framed model, so
+    // no two frames of the environment's renderer share a view (the background is
+    // drawn each frame, never kept).
+    {
+        const gpu::CameraView framed =
+            gpu::resolve_camera(s.camera, *loaded.scene, float(s.width) / float(s.height));
+        const glm::mat4 to_world = glm::inverse(framed.view);
+        const glm::vec3 forward = -glm::vec3(to_world[2]);
+        const glm::vec3 centre = framed.position + forward * glm::length(framed.position);
+        Runs moving, moving_plain;
+        std::vector<double> ratio_moving, ratio_moving_cpu;
+        for (int i = 0; i < rounds; ++i) {
+            const float yaw = glm::radians(2.0f * float(i + 1));
+            gpu::FrameRequest m = s;
+            m.camera.kind = gpu::CameraSpec::Kind::Explicit;
+            m.camera.eye = centre + glm::vec3(glm::rotate(glm::mat4(1.0f), yaw, {0, 1, 0}) *
+                                              glm::vec4(framed.position - centre, 0.0f));
+            m.camera.target = centre;
+            m.camera.fov_degrees = glm::degrees(framed.fov_y);
+            const FrameTime a = frame_ms(renderer, m);
+            const FrameTime c = frame_ms(plain, m);
+            moving.add(a), moving_plain.add(c);
+            ratio_moving.push_back(a.wall / c.wall), ratio_moving_cpu.push_back(a.cpu / c.cpu);
+        }
+        std::printf("  a moving view (2 degrees a frame), with the environment %.1f, without "
+                    "%.1f: %.2fx; CPU %.1f / %.1f: %.2fx\n",
+                    moving.w(), moving_plain.w(), median(ratio_moving), moving.c(),
+                    moving_plain.c(), median(ratio_moving_cpu));
+    }
     // 3. The environment removed: the frame against the renderer that never had one.
     renderer.set_environment(nullptr);
     renderer.render(s);

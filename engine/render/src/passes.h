@@ -139,19 +139,17 @@ private:
     AlphaMode alpha_;
 };
 
-// The environment where no surface is (background_pass.cpp): after the opaque and
-// masked surfaces, before the blended ones (which blend over it). While the view holds
-// still it is kept in an image of the target's size and copied into the target before
-// the surfaces are drawn over it (prepare()).
+// The environment behind the surfaces (background_pass.cpp), drawn before them in its
+// own rendering over every pixel; while the view holds still it is kept in an image of
+// the target's size and copied into the target instead.
 class BackgroundPass {
 public:
     BackgroundPass();
     ~BackgroundPass();
     // Before the camera's rendering: true when the target now holds the background
-    // (copied from the kept image, left in COLOR_ATTACHMENT_OPTIMAL layout), which the
-    // camera's rendering then loads instead of clearing, and record() draws nothing.
+    // (left in COLOR_ATTACHMENT_OPTIMAL layout), which the camera's rendering then
+    // loads instead of clearing.
     bool prepare(FrameContext& f);
-    void record(FrameContext& f);
     static bool active(const FrameContext& f);
     // Bytes of the kept image (0 when none).
     std::uint64_t bytes() const;
@@ -169,16 +167,16 @@ public:
     };
 
 private:
-    VkPipeline pipeline(FrameContext& f, bool depth);
+    VkPipeline pipeline(FrameContext& f);
+    void draw_whole(FrameContext& f, VkImageView view);
     void build_kept(FrameContext& f);
     void copy_kept(FrameContext& f);
     UniqueShaderModule vert_, frag_;
-    std::map<VkFormat, UniquePipeline> pipelines_, kept_pipelines_;
+    std::map<VkFormat, UniquePipeline> pipelines_;
     ResourceManager* resources_ = nullptr;
     ImageHandle kept_;            // the background of `kept_key_`, TRANSFER_SRC layout
     std::optional<Key> kept_key_; // what kept_ holds
-    std::optional<Key> last_key_; // the last frame's with a background
-    bool copied_ = false;         // this frame's target holds the background
+    std::optional<Key> last_key_; // the last frame's with a background, into a blit target
 };
 
 // FrameRequest::overlays: wireframe, normal/tangent/bitangent glyphs, instance

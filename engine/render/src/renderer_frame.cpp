@@ -59,6 +59,7 @@ void FrameRecorder::record_passes(FrameContext& f) {
     timestamp(f, kAfterShadows);
     transmission_->record(f); // only scenes with a transmissive material
     timestamp(f, kAfterTransmission);
+    // The environment behind the surfaces, drawn or copied into the target first.
     begin_camera_rendering(f, background_.prepare(f));
     floor_.record(f);
     prepass_.record(f);
@@ -66,7 +67,6 @@ void FrameRecorder::record_passes(FrameContext& f) {
     opaque_.record(f);
     timestamp(f, kAfterOpaque);
     mask_.record(f);
-    background_.record(f); // timed with the masked pass (a kept one: with the prepass)
     timestamp(f, kAfterMask);
     blend_.record(f);
     timestamp(f, kAfterBlend);

@@ -1,6 +1,7 @@
 // Swapchain path: an X11 window made with xcb in this test only (window-system
 // types stay out of the engine), a VkSurfaceKHR from it, frames presented under
-// the validation layer, a resize, and the pixels read back from the X server.
+// the validation layer, a resize, the environment's background, and the pixels read
+// back from the X server.
 // Run under `xvfb-run -a`; without a display the tests are skipped.
 #define VK_USE_PLATFORM_XCB_KHR
 #include <vulkan/vulkan.h>
@@ -135,46 +136,19 @@ TEST_F(SwapchainTest, PresentsFramesAndSurvivesResizeWithoutValidationMessages) 
         EXPECT_EQ(presenter.extent().height, 100u);
         for (int i = 0; i < 4; ++i) presenter.present_frame(frame);
         EXPECT_GE(presenter.frames_presented(), 8u);
-    }
-    vkDestroySurfaceKHR(context.instance(), surface, nullptr);
-    for (const auto& m : context.validation().messages())
-        ADD_FAILURE() << m.id_name << ": " << m.text;
-}
 
-// The environment behind the scene through a real swapchain: while the view holds
-// still it is kept and copied into the swapchain images (transfer writes), remade at a
-// resize, drawn into the reduced-resolution image at half scale; all without a
-// validation message.
-TEST_F(SwapchainTest, PresentsTheEnvironmentBackgroundKeptAndDrawn) {
-    XcbWindow window(160, 120);
-    ASSERT_TRUE(window.ok());
-    gpu::Context context(presenting_options());
-    VkSurfaceKHR surface = make_surface(context, window);
-    {
-        gpu::Renderer renderer(context);
-        LoadResult scene = load_scene("builtin:default");
-        ASSERT_TRUE(scene) << scene.error;
-        renderer.load(*scene.scene);
+        // The environment behind the scene: drawn into the swapchain image for a first
+        // view, then kept while the view holds still and copied into the swapchain
+        // images (lavapipe's take transfer writes); drawn into the reduced-resolution
+        // image at half scale.
         const gpu::EnvironmentImage room = gpu::room_environment(256);
         renderer.set_environment(&room);
-        gpu::Presenter presenter(context, renderer.resources(), surface, window.width,
-                                 window.height);
-        gpu::FrameRequest settings;
-        gpu::PresentedFrame frame(renderer, settings);
-        presenter.present_frame(frame); // a first view: drawn into the swapchain image
+        presenter.present_frame(frame);
         const std::uint64_t drawn = renderer.resident().render_target_bytes;
-        for (int i = 0; i < 5; ++i) presenter.present_frame(frame);
-        // The same view again: kept (lavapipe's swapchain images take transfer writes).
-        EXPECT_GE(renderer.resident().render_target_bytes, drawn + 160u * 120u * 4u);
-        context.wait_idle();
-        vkQueueWaitIdle(context.queue());
-        EXPECT_GT(window.distinct_pixels(), 4u);
-        window.resize(200, 100);
-        presenter.resize(200, 100);
         for (int i = 0; i < 4; ++i) presenter.present_frame(frame);
+        EXPECT_GE(renderer.resident().render_target_bytes, drawn + 200u * 100u * 4u);
         gpu::PresentedFrame half(renderer, settings, 0.5f);
         for (int i = 0; i < 3; ++i) presenter.present_frame(half);
-        EXPECT_GE(presenter.frames_presented(), 12u);
         context.wait_idle();
         renderer.set_environment(nullptr);
     }

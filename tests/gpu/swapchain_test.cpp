@@ -1,6 +1,7 @@
 // Swapchain path: an X11 window made with xcb in this test only (window-system
 // types stay out of the engine), a VkSurfaceKHR from it, frames presented under
-// the validation layer, a resize, and the pixels read back from the X server.
+// the validation layer, a resize, the environment's background, and the pixels read
+// back from the X server.
 // Run under `xvfb-run -a`; without a display the tests are skipped.
 #define VK_USE_PLATFORM_XCB_KHR
 #include <vulkan/vulkan.h>
@@ -14,6 +15,7 @@
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/presenter.h>
 #include <sherpa/render/comparison.h>
+#include <sherpa/render/environment.h>
 #include <sherpa/render/presented_frame.h>
 #include <sherpa/render/renderer.h>
 #include <sherpa/scene/scene_loader.h>
@@ -134,6 +136,21 @@ TEST_F(SwapchainTest, PresentsFramesAndSurvivesResizeWithoutValidationMessages) 
         EXPECT_EQ(presenter.extent().height, 100u);
         for (int i = 0; i < 4; ++i) presenter.present_frame(frame);
         EXPECT_GE(presenter.frames_presented(), 8u);
+
+        // The environment behind the scene: drawn into the swapchain image for a first
+        // view, then kept while the view holds still and copied into the swapchain
+        // images (lavapipe's take transfer writes); drawn into the reduced-resolution
+        // image at half scale.
+        const gpu::EnvironmentImage room = gpu::room_environment(256);
+        renderer.set_environment(&room);
+        presenter.present_frame(frame);
+        const std::uint64_t drawn = renderer.resident().render_target_bytes;
+        for (int i = 0; i < 4; ++i) presenter.present_frame(frame);
+        EXPECT_GE(renderer.resident().render_target_bytes, drawn + 200u * 100u * 4u);
+        gpu::PresentedFrame half(renderer, settings, 0.5f);
+        for (int i = 0; i < 3; ++i) presenter.present_frame(half);
+        context.wait_idle();
+        renderer.set_environment(nullptr);
     }
     vkDestroySurfaceKHR(context.instance(), surface, nullptr);
     for (const auto& m : context.validation().messages())

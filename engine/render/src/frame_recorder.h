@@ -47,6 +47,8 @@ public:
     void scene_unloading();
     // Waits for every frame in flight (before the environment changes).
     void wait_all();
+    // The environment was replaced or removed: the background kept for it goes.
+    void environment_changed() { background_.release(); }
     FrameStats render(const FrameRequest& settings, std::vector<std::uint8_t>* rgba);
     // Swapchain path: waits until frame slot `slot` is free, records the frame into
     // `cmd` (already begun) drawing into `target`. The caller submits `cmd` with the
@@ -97,7 +99,7 @@ private:
     void record_passes(FrameContext& f);
     void begin_frame(FrameContext& f);
     void bind_frame(FrameContext& f);
-    void begin_camera_rendering(FrameContext& f);
+    void begin_camera_rendering(FrameContext& f, bool background);
     void end_camera_rendering(FrameContext& f);
     void timestamp(FrameContext& f, std::uint32_t index);
     // Camera, lights, cascades and view into the slot's GPUFrameData; sets

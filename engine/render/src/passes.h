@@ -6,6 +6,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace sherpa::gpu {
@@ -138,18 +139,44 @@ private:
     AlphaMode alpha_;
 };
 
-// The environment where no surface is (background_pass.cpp): after the opaque and
-// masked surfaces, before the blended ones (which blend over it).
+// The environment behind the surfaces (background_pass.cpp), drawn before them in its
+// own rendering over every pixel; while the view holds still it is kept in an image of
+// the target's size and copied into the target instead.
 class BackgroundPass {
 public:
     BackgroundPass();
     ~BackgroundPass();
-    void record(FrameContext& f);
+    // Before the camera's rendering: true when the target now holds the background
+    // (left in COLOR_ATTACHMENT_OPTIMAL layout), which the camera's rendering then
+    // loads instead of clearing.
+    bool prepare(FrameContext& f);
     static bool active(const FrameContext& f);
+    // Bytes of the kept image (0 when none).
+    std::uint64_t bytes() const;
+    // Frees the kept image (once the frames using it are done).
+    void release();
+
+    // Everything the background's pixels depend on.
+    struct Key {
+        glm::mat4 view_proj{0.0f};
+        glm::vec4 camera_position{0.0f}, environment{0.0f}, display{0.0f};
+        std::uint64_t environment_generation = ~0ull;
+        VkFormat format = VK_FORMAT_UNDEFINED;
+        std::uint32_t width = 0, height = 0;
+        bool operator==(const Key&) const = default;
+    };
 
 private:
+    VkPipeline pipeline(FrameContext& f);
+    void draw_whole(FrameContext& f, VkImageView view);
+    void build_kept(FrameContext& f);
+    void copy_kept(FrameContext& f);
     UniqueShaderModule vert_, frag_;
     std::map<VkFormat, UniquePipeline> pipelines_;
+    ResourceManager* resources_ = nullptr;
+    ImageHandle kept_;            // the background of `kept_key_`, TRANSFER_SRC layout
+    std::optional<Key> kept_key_; // what kept_ holds
+    std::optional<Key> last_key_; // the last frame's with a background, into a blit target
 };
 
 // FrameRequest::overlays: wireframe, normal/tangent/bitangent glyphs, instance

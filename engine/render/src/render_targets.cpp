@@ -37,7 +37,9 @@ bool RenderTargets::ensure_color(ImageHandle& image, VkFormat format, std::uint3
     d.format = format;
     d.width = width;
     d.height = height;
-    d.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    // Transfer writes: a kept background is copied in (BackgroundPass).
+    d.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+              VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     d.name = name;
     image = resources_.images().create(d);
     return true;
@@ -56,7 +58,8 @@ RenderTarget RenderTargets::offscreen(std::uint32_t width, std::uint32_t height)
             kOffscreenFormat,
             width,
             height,
-            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+            true};
 }
 
 const Image& RenderTargets::scaled(VkFormat format, std::uint32_t width, std::uint32_t height) {

@@ -208,7 +208,8 @@ void FrameRecorder::scene_unloading() {
 
 void FrameRecorder::count_target_bytes(ResidentStats& out) const {
     out.transmission_target_bytes = transmission_->bytes();
-    out.render_target_bytes = shadows_.bytes() + targets_.bytes() + out.transmission_target_bytes;
+    out.render_target_bytes =
+        shadows_.bytes() + targets_.bytes() + background_.bytes() + out.transmission_target_bytes;
 }
 
 void FrameRecorder::wait_all() {

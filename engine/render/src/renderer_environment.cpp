@@ -9,6 +9,7 @@ void Renderer::set_environment(const EnvironmentImage* image, const EnvironmentO
     // Frames in flight may read the old maps: wait for them before they go.
     frames_->wait_all();
     scene_->set_environment(image, options);
+    frames_->environment_changed();
     resources_->collect_garbage();
 }
 

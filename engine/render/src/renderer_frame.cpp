@@ -59,14 +59,14 @@ void FrameRecorder::record_passes(FrameContext& f) {
     timestamp(f, kAfterShadows);
     transmission_->record(f); // only scenes with a transmissive material
     timestamp(f, kAfterTransmission);
-    begin_camera_rendering(f);
+    // The environment behind the surfaces, drawn or copied into the target first.
+    begin_camera_rendering(f, background_.prepare(f));
     floor_.record(f);
     prepass_.record(f);
     timestamp(f, kAfterPrepass);
     opaque_.record(f);
     timestamp(f, kAfterOpaque);
     mask_.record(f);
-    background_.record(f); // timed with the masked pass
     timestamp(f, kAfterMask);
     blend_.record(f);
     timestamp(f, kAfterBlend);
@@ -111,19 +111,22 @@ void FrameRecorder::bind_frame(FrameContext& f) {
 }
 
 // The target and depth in attachment layouts (both cleared: their previous
-// contents do not matter), dynamic rendering begun, statistics started.
-void FrameRecorder::begin_camera_rendering(FrameContext& f) {
+// contents do not matter; with `background`, the target holds the background already
+// and is loaded), dynamic rendering begun, statistics started.
+void FrameRecorder::begin_camera_rendering(FrameContext& f, bool background) {
     const Image& depth_image = targets_.depth(f.target.width, f.target.height);
-    transition(f.cmd,
-               {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                // Source stages include transfers: after an earlier frame's readback copy;
-                // and shader reads: an earlier comparison read this side image.
-                VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT |
-                    VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
-                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT});
+    if (!background)
+        transition(
+            f.cmd,
+            {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+             VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+             // Source stages include transfers: after an earlier frame's readback copy;
+             // and shader reads: an earlier comparison read this side image.
+             VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT |
+                 VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
+                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+             VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+             VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT});
     transition(
         f.cmd,
         {depth_image.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
@@ -137,7 +140,7 @@ void FrameRecorder::begin_camera_rendering(FrameContext& f) {
     auto color = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
     color.imageView = f.target.view;
     color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    color.loadOp = background ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
     color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     const glm::vec4 cc = f.settings.clear_color;
     color.clearValue.color = {{cc.r, cc.g, cc.b, cc.a}};

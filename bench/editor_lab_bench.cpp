@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "could not load %s\n", qPrintable(helmet));
         return 1;
     }
-    LabDock& dock = *w.labDock();
+    LabDock& dock = *w.docks().lab;
     dock.show();
     dock.raise();
     std::printf("DamagedHelmet, window 1600x1000, Lab dock shown; events posted every 10 ms\n");

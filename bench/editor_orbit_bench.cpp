@@ -77,12 +77,12 @@ struct OrbitResult {
 OrbitResult orbit(MainWindow& w, double seconds, float dx, bool blocking, int min_steps = 1) {
     OrbitResult r;
     double scales = 0.0;
-    const auto c =
-        QObject::connect(w.renderer(), &RenderThread::frameDone, &w, [&](const FrameReport& f) {
-            ++r.frames;
-            scales += f.scale;
-            r.frame_ms.push_back(f.ms);
-        });
+    const auto c = QObject::connect(w.frames().renderer(), &RenderThread::frameDone, &w,
+                                    [&](const FrameReport& f) {
+                                        ++r.frames;
+                                        scales += f.scale;
+                                        r.frame_ms.push_back(f.ms);
+                                    });
     QElapsedTimer t;
     t.start();
     for (int i = 0; i < min_steps || t.elapsed() < qint64(seconds * 1000.0); ++i) {
@@ -90,7 +90,7 @@ OrbitResult orbit(MainWindow& w, double seconds, float dx, bool blocking, int mi
         Q_EMIT w.viewport()->cameraChanged();
         if (blocking) {
             w.viewport()->renderNow();
-            w.renderer()->call([](GpuViewport& gpu) { gpu.finish(); });
+            w.frames().renderer()->call([](GpuViewport& gpu) { gpu.finish(); });
         }
         // Input arrives every kStepMs whatever the frames do. The GUI thread sleeps
         // in between, as the editor's does between mouse events (a processEvents()
@@ -123,7 +123,10 @@ void print_latency(const char* what, const std::vector<double>& d) {
 }
 
 QString pass_times(MainWindow& w) {
-    return w.renderer()->call([](GpuViewport& gpu) { return gpu.lastPassTimes(); }).join(", ");
+    return w.frames()
+        .renderer()
+        ->call([](GpuViewport& gpu) { return gpu.lastPassTimes(); })
+        .join(", ");
 }
 
 } // namespace
@@ -140,7 +143,7 @@ int main(int argc, char** argv) {
     w.setLayoutRemembered(false);
     w.resize(1600, 1000);
     w.show();
-    if (!w.renderer()) {
+    if (!w.frames().renderer()) {
         std::fprintf(stderr, "no Vulkan device\n");
         return 1;
     }
@@ -155,12 +158,12 @@ int main(int argc, char** argv) {
     std::printf("window 1600x1000, viewport %dx%d px, orbit steps every %d ms for %.0f s\n",
                 px.width(), px.height(), kStepMs, seconds);
     std::printf("DamagedHelmet covering %.0f%% of the viewport:\n", 100.0 * coverage(w));
-    w.renderer()->setInteractiveScaling(false);
+    w.frames().renderer()->setInteractiveScaling(false);
     const OrbitResult full = orbit(w, seconds, 6.0f, false);
     std::printf("  last full-size frame passes: %s\n", qPrintable(pass_times(w)));
     settle(w);
     print_orbit("full resolution only", full);
-    w.renderer()->setInteractiveScaling(true);
+    w.frames().renderer()->setInteractiveScaling(true);
     // Moving frames as the editor drew them before (the depth prepass the renderer
     // picks for their size, aiming at 30 fps exactly), without the prepass, and as
     // the editor draws them now (no prepass, aiming above 30 fps so that the slow
@@ -178,16 +181,17 @@ int main(int argc, char** argv) {
     const auto fps = [](const OrbitResult& r) { return r.frames / r.seconds; };
     for (int round = 0; round < 2; ++round)
         for (Variant& v : variants) {
-            w.renderer()->call([&v](GpuViewport& gpu) { gpu.setReducedFramePrepass(v.prepass); });
-            w.renderer()->setTargetFrameMs(v.target_ms);
+            w.frames().renderer()->call(
+                [&v](GpuViewport& gpu) { gpu.setReducedFramePrepass(v.prepass); });
+            w.frames().renderer()->setTargetFrameMs(v.target_ms);
             const OrbitResult r = orbit(w, seconds, 6.0f, false);
             std::printf("  last moving frame passes: %s\n", qPrintable(pass_times(w)));
             settle(w);
             print_orbit(v.name, r);
             v.fps += fps(r) / 2.0;
         }
-    w.renderer()->call([](GpuViewport& gpu) { gpu.setReducedFramePrepass(false); });
-    w.renderer()->setTargetFrameMs(kTargetFrameMs);
+    w.frames().renderer()->call([](GpuViewport& gpu) { gpu.setReducedFramePrepass(false); });
+    w.frames().renderer()->setTargetFrameMs(kTargetFrameMs);
     std::printf("  means of both rounds: before %.1f fps, no prepass %.1f fps, editor default "
                 "%.1f fps (goal >= 30 fps);\n  editor default %.2fx before, %.2fx full size\n",
                 variants[0].fps, variants[1].fps, variants[2].fps,

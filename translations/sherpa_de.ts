@@ -399,6 +399,53 @@
     </message>
 </context>
 <context>
+    <name>sherpa::editor::CompareController</name>
+    <message>
+        <source>Compare with glTF scene</source>
+        <translation>Mit glTF-Szene vergleichen</translation>
+    </message>
+    <message>
+        <source>glTF scenes (*.gltf *.glb);;All files (*)</source>
+        <translation>glTF-Szenen (*.gltf *.glb);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Side B: %1 could not be loaded: %2</source>
+        <translation>Seite B: %1 konnte nicht geladen werden: %2</translation>
+    </message>
+    <message>
+        <source>Side B: %1 loaded.</source>
+        <translation>Seite B: %1 geladen.</translation>
+    </message>
+    <message>
+        <source>Side B: loading %1…</source>
+        <translation>Seite B: %1 wird geladen…</translation>
+    </message>
+    <message>
+        <source>%1, source textures</source>
+        <translation>%1, Quelltexturen</translation>
+    </message>
+    <message>
+        <source>Side B: loading %1 with tangents by %2…</source>
+        <translation>Seite B: %1 wird mit Tangenten nach %2 geladen…</translation>
+    </message>
+    <message>
+        <source>%1, tangents: %2</source>
+        <translation>%1, Tangenten: %2</translation>
+    </message>
+    <message>
+        <source>Side A&apos;s tangents: %1 primitive(s) authored, %2 exact MikkTSpace, %3 none (no TANGENT, no normal texture: there B differs from no tangents).</source>
+        <translation>Tangenten von Seite A: %1 Primitiv(e) aus der Datei, %2 exaktes MikkTSpace, %3 keine (kein TANGENT, keine Normal-Textur: dort unterscheidet sich B von fehlenden Tangenten).</translation>
+    </message>
+    <message>
+        <source>Overlays and the selection highlight are drawn in the Raster mode only.</source>
+        <translation>Overlays und die Auswahlhervorhebung werden nur im Rastermodus gezeichnet.</translation>
+    </message>
+    <message>
+        <source>The ray tracer cannot draw this frame: %1. Back to Raster.</source>
+        <translation>Der Raytracer kann dieses Bild nicht zeichnen: %1. Zurück zur Rasterisierung.</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::CompareControls</name>
     <message>
         <source>Raster</source>
@@ -1018,6 +1065,97 @@ PSNR %3
     </message>
 </context>
 <context>
+    <name>sherpa::editor::LoadController</name>
+    <message>
+        <source>Loading %1 cancelled; the result is discarded.</source>
+        <translation>Laden von %1 abgebrochen; das Ergebnis wird verworfen.</translation>
+    </message>
+    <message>
+        <source>Texture cache directory</source>
+        <translation>Verzeichnis des Textur-Caches</translation>
+    </message>
+    <message>
+        <source>Loading %1…</source>
+        <translation>Lade %1 …</translation>
+    </message>
+    <message>
+        <source>1/4 parsing…</source>
+        <translation>1/4 Einlesen…</translation>
+    </message>
+    <message>
+        <source>2/4 geometry…</source>
+        <translation>2/4 Geometrie…</translation>
+    </message>
+    <message>
+        <source>3/4 tangents: mesh %1 of %2</source>
+        <translation>3/4 Tangenten: Mesh %1 von %2</translation>
+    </message>
+    <message>
+        <source>4/4 textures: %1 of %2</source>
+        <translation>4/4 Texturen: %1 von %2</translation>
+    </message>
+    <message>
+        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</source>
+        <translation>%1 in %2 ms geladen (Engine %3 ms, Vorschaubilder %4 ms, Texturen %5 ms).</translation>
+    </message>
+    <message>
+        <source>The file places %1 camera(s): View › glTF Cameras looks through them; the automatic view looks from the side of the first.</source>
+        <translation>Die Datei platziert %1 Kamera(s): Ansicht › glTF-Kameras schaut durch sie; die automatische Ansicht blickt von der Seite der ersten.</translation>
+    </message>
+    <message>
+        <source>Could not load %1; the current scene is kept.</source>
+        <translation>%1 konnte nicht geladen werden; die aktuelle Szene bleibt.</translation>
+    </message>
+    <message>
+        <source>Could not load %1; no scene is open.</source>
+        <translation>%1 konnte nicht geladen werden; es ist keine Szene geöffnet.</translation>
+    </message>
+    <message>
+        <source>Load failed</source>
+        <translation>Laden fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Could not load %1:
+%2
+
+The current scene is kept.</source>
+        <translation>%1 konnte nicht geladen werden:
+%2
+
+Die aktuelle Szene bleibt erhalten.</translation>
+    </message>
+    <message>
+        <source>Could not load %1:
+%2
+
+No scene is open.</source>
+        <translation>%1 konnte nicht geladen werden:
+%2
+
+Es ist keine Szene geöffnet.</translation>
+    </message>
+    <message>
+        <source>(no recent files)</source>
+        <translation>(keine zuletzt geöffneten Dateien)</translation>
+    </message>
+    <message>
+        <source>Open glTF scene</source>
+        <translation>glTF-Szene öffnen</translation>
+    </message>
+    <message>
+        <source>glTF scenes (*.gltf *.glb);;All files (*)</source>
+        <translation>glTF-Szenen (*.gltf *.glb);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</source>
+        <translation>Texturcache geleert: %1 Dateien aus %2 gelöscht; das nächste Laden komprimiert erneut.</translation>
+    </message>
+    <message>
+        <source>Texture %1: %2 cache files deleted; reloading to compress it again.</source>
+        <translation>Textur %1: %2 Cache-Dateien gelöscht; die Szene wird neu geladen und die Textur neu komprimiert.</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::LogDock</name>
     <message>
         <source>Log</source>
@@ -1039,50 +1177,6 @@ PSNR %3
 <context>
     <name>sherpa::editor::MainWindow</name>
     <message>
-        <source>At %1 s: %2</source>
-        <translation>Bei %1 s: %2</translation>
-    </message>
-    <message>
-        <source>Loading %1 cancelled; the result is discarded.</source>
-        <translation>Laden von %1 abgebrochen; das Ergebnis wird verworfen.</translation>
-    </message>
-    <message>
-        <source>Loading %1…</source>
-        <translation>Lade %1 …</translation>
-    </message>
-    <message>
-        <source>Could not load %1; the current scene is kept.</source>
-        <translation>%1 konnte nicht geladen werden; die aktuelle Szene bleibt.</translation>
-    </message>
-    <message>
-        <source>Could not load %1; no scene is open.</source>
-        <translation>%1 konnte nicht geladen werden; es ist keine Szene geöffnet.</translation>
-    </message>
-    <message>
-        <source>Could not load %1:
-%2
-
-No scene is open.</source>
-        <translation>%1 konnte nicht geladen werden:
-%2
-
-Es ist keine Szene geöffnet.</translation>
-    </message>
-    <message>
-        <source>Load failed</source>
-        <translation>Laden fehlgeschlagen</translation>
-    </message>
-    <message>
-        <source>Could not load %1:
-%2
-
-The current scene is kept.</source>
-        <translation>%1 konnte nicht geladen werden:
-%2
-
-Die aktuelle Szene bleibt erhalten.</translation>
-    </message>
-    <message>
         <source>No scene. Open a glTF file or a built-in scene from the File menu.</source>
         <translation>Keine Szene. Öffnen Sie eine glTF-Datei oder eine eingebaute Szene über das Menü „Datei“.</translation>
     </message>
@@ -1097,18 +1191,6 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>%1 — Sherpa</source>
         <translation>%1 — Sherpa</translation>
-    </message>
-    <message>
-        <source>Texture cache directory</source>
-        <translation>Verzeichnis des Textur-Caches</translation>
-    </message>
-    <message>
-        <source>(the scene has no cameras)</source>
-        <translation>(die Szene hat keine Kameras)</translation>
-    </message>
-    <message>
-        <source>Camera %1</source>
-        <translation>Kamera %1</translation>
     </message>
     <message>
         <source>&amp;File</source>
@@ -1165,10 +1247,6 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>&amp;Debug View</source>
         <translation>&amp;Debug-Ansicht</translation>
-    </message>
-    <message>
-        <source>View: %1</source>
-        <translation>Ansicht: %1</translation>
     </message>
     <message>
         <source>&amp;Overlays</source>
@@ -1283,18 +1361,6 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <source>(no recent files)</source>
-        <translation>(keine zuletzt geöffneten Dateien)</translation>
-    </message>
-    <message>
-        <source>Open glTF scene</source>
-        <translation>glTF-Szene öffnen</translation>
-    </message>
-    <message>
-        <source>glTF scenes (*.gltf *.glb);;All files (*)</source>
-        <translation>glTF-Szenen (*.gltf *.glb);;Alle Dateien (*)</translation>
-    </message>
-    <message>
         <source>none (Vulkan unavailable)</source>
         <translation>keines (Vulkan nicht verfügbar)</translation>
     </message>
@@ -1307,60 +1373,8 @@ Die aktuelle Szene bleibt erhalten.</translation>
         <translation>&lt;h3&gt;Sherpa %1&lt;/h3&gt;&lt;p&gt;Ein Editor zur Untersuchung von glTF-2.0-Szenen.&lt;/p&gt;&lt;p&gt;Qt %2 (gebaut mit %3)&lt;br&gt;Vulkan-Geräte: %4&lt;/p&gt;</translation>
     </message>
     <message>
-        <source>No Vulkan instance: the viewport cannot render.</source>
-        <translation>Keine Vulkan-Instanz: der Viewport kann nicht rendern.</translation>
-    </message>
-    <message>
-        <source>The renderer could not start: %1</source>
-        <translation>Der Renderer konnte nicht starten: %1</translation>
-    </message>
-    <message>
-        <source>Rendering on %1 (renderer ready in %2 ms).</source>
-        <translation>Rendern auf %1 (Renderer nach %2 ms bereit).</translation>
-    </message>
-    <message>
-        <source>Rendering stopped: %1</source>
-        <translation>Rendern angehalten: %1</translation>
-    </message>
-    <message>
-        <source>GPU culling failed: %1</source>
-        <translation>GPU-Culling fehlgeschlagen: %1</translation>
-    </message>
-    <message>
-        <source>1/4 parsing…</source>
-        <translation>1/4 Einlesen…</translation>
-    </message>
-    <message>
-        <source>2/4 geometry…</source>
-        <translation>2/4 Geometrie…</translation>
-    </message>
-    <message>
-        <source>3/4 tangents: mesh %1 of %2</source>
-        <translation>3/4 Tangenten: Mesh %1 von %2</translation>
-    </message>
-    <message>
-        <source>4/4 textures: %1 of %2</source>
-        <translation>4/4 Texturen: %1 von %2</translation>
-    </message>
-    <message>
         <source>GPU (compute shader, indirect draws)</source>
         <translation>GPU (Compute-Shader, indirekte Draws)</translation>
-    </message>
-    <message>
-        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</source>
-        <translation>%1 in %2 ms geladen (Engine %3 ms, Vorschaubilder %4 ms, Texturen %5 ms).</translation>
-    </message>
-    <message>
-        <source>The file places %1 camera(s): View › glTF Cameras looks through them; the automatic view looks from the side of the first.</source>
-        <translation>Die Datei platziert %1 Kamera(s): Ansicht › glTF-Kameras schaut durch sie; die automatische Ansicht blickt von der Seite der ersten.</translation>
-    </message>
-    <message>
-        <source>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</source>
-        <translation>Texturcache geleert: %1 Dateien aus %2 gelöscht; das nächste Laden komprimiert erneut.</translation>
-    </message>
-    <message>
-        <source>Texture %1: %2 cache files deleted; reloading to compress it again.</source>
-        <translation>Textur %1: %2 Cache-Dateien gelöscht; die Szene wird neu geladen und die Textur neu komprimiert.</translation>
     </message>
     <message>
         <source>&amp;Missing Textures as Checker</source>
@@ -1373,158 +1387,6 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>&amp;UV Checker Density (checks per UV unit)</source>
         <translation>&amp;UV-Schachbrettdichte (Felder pro UV-Einheit)</translation>
-    </message>
-    <message>
-        <source>first frame %1 ms (makes the pipelines)</source>
-        <translation>erstes Bild %1 ms (erstellt die Pipelines)</translation>
-    </message>
-    <message>
-        <source>%1 fps, %2 ms per frame</source>
-        <translation>%1 fps, %2 ms pro Bild</translation>
-    </message>
-    <message>
-        <source> (GPU %1 ms)</source>
-        <translation> (GPU %1 ms)</translation>
-    </message>
-    <message>
-        <source>, resolution %1%</source>
-        <translation>, Auflösung %1 %</translation>
-    </message>
-    <message>
-        <source>, path traced %1 spp</source>
-        <translation>, %1 spp pfadverfolgt</translation>
-    </message>
-    <message>
-        <source>, estimated error %1%</source>
-        <translation>, geschätzter Fehler %1 %</translation>
-    </message>
-    <message>
-        <source>Ray tracing is off (--rt off): no acceleration structures.</source>
-        <translation>Raytracing ist aus (--rt off): keine Beschleunigungsstrukturen.</translation>
-    </message>
-    <message>
-        <source>The device does not ray trace: no acceleration structures.</source>
-        <translation>Das Gerät beherrscht kein Raytracing: keine Beschleunigungsstrukturen.</translation>
-    </message>
-    <message>
-        <source>No scene.</source>
-        <translation>Keine Szene.</translation>
-    </message>
-    <message>
-        <source>The scene has no triangles: no acceleration structures.</source>
-        <translation>Die Szene hat keine Dreiecke: keine Beschleunigungsstrukturen.</translation>
-    </message>
-    <message>
-        <source>Compare with glTF scene</source>
-        <translation>Mit glTF-Szene vergleichen</translation>
-    </message>
-    <message>
-        <source>Side B: %1 loaded.</source>
-        <translation>Seite B: %1 geladen.</translation>
-    </message>
-    <message>
-        <source>Side B: %1 could not be loaded: %2</source>
-        <translation>Seite B: %1 konnte nicht geladen werden: %2</translation>
-    </message>
-    <message>
-        <source>Side B: loading %1…</source>
-        <translation>Seite B: %1 wird geladen…</translation>
-    </message>
-    <message>
-        <source>Overlays and the selection highlight are drawn in the Raster mode only.</source>
-        <translation>Overlays und die Auswahlhervorhebung werden nur im Rastermodus gezeichnet.</translation>
-    </message>
-    <message>
-        <source>The ray tracer cannot draw this frame: %1. Back to Raster.</source>
-        <translation>Der Raytracer kann dieses Bild nicht zeichnen: %1. Zurück zur Rasterisierung.</translation>
-    </message>
-    <message>
-        <source>%1, source textures</source>
-        <translation>%1, Quelltexturen</translation>
-    </message>
-    <message>
-        <source>Shadows: %1 cascades, %2 PCF taps; the viewport&apos;s maps stay %3x%3 texels (fixed when its renderer is made), not %4</source>
-        <translation>Schatten: %1 Kaskaden, %2 PCF-Abtastungen; die Maps des Viewports bleiben %3x%3 Texel (beim Erzeugen seines Renderers festgelegt), nicht %4</translation>
-    </message>
-    <message>
-        <source>Side B: loading %1 with tangents by %2…</source>
-        <translation>Seite B: %1 wird mit Tangenten nach %2 geladen…</translation>
-    </message>
-    <message>
-        <source>%1, tangents: %2</source>
-        <translation>%1, Tangenten: %2</translation>
-    </message>
-    <message>
-        <source>Side A&apos;s tangents: %1 primitive(s) authored, %2 exact MikkTSpace, %3 none (no TANGENT, no normal texture: there B differs from no tangents).</source>
-        <translation>Tangenten von Seite A: %1 Primitiv(e) aus der Datei, %2 exaktes MikkTSpace, %3 keine (kein TANGENT, keine Normal-Textur: dort unterscheidet sich B von fehlenden Tangenten).</translation>
-    </message>
-    <message>
-        <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves or an animation plays on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest or paused the full frame follows.</source>
-        <translation>Mittel der letzten %1 Bilder ohne das erste des Renderers (Pipeline-Erstellung). Während sich die Kamera bewegt oder eine Animation läuft, werden Bilder auf einem langsamen Gerät mit geringerer Auflösung und ohne Schatten gezeichnet, um %2 fps zu halten; in Ruhe oder angehalten folgt das volle Bild.</translation>
-    </message>
-    <message>
-        <source>Overlays</source>
-        <translation>Überlagerungen</translation>
-    </message>
-    <message>
-        <source>Overlays (%1)</source>
-        <translation>Überlagerungen (%1)</translation>
-    </message>
-    <message>
-        <source>Overlays: none shown</source>
-        <translation>Überlagerungen: keine angezeigt</translation>
-    </message>
-    <message>
-        <source>Overlays: %1</source>
-        <translation>Überlagerungen: %1</translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation>keine</translation>
-    </message>
-    <message>
-        <source>the room</source>
-        <translation>den Raum</translation>
-    </message>
-    <message>
-        <source>Environment: %1.</source>
-        <translation>Umgebung: %1.</translation>
-    </message>
-    <message>
-        <source>node %1</source>
-        <translation>Knoten %1</translation>
-    </message>
-    <message>
-        <source>primitive %1</source>
-        <translation>Primitiv %1</translation>
-    </message>
-    <message>
-        <source>accessor %1: %2 of primitive %3</source>
-        <translation>Accessor %1: %2 von Primitiv %3</translation>
-    </message>
-    <message>
-        <source>triangle %1</source>
-        <translation>Dreieck %1</translation>
-    </message>
-    <message>
-        <source>vertex %1</source>
-        <translation>Vertex %1</translation>
-    </message>
-    <message>
-        <source>material %1</source>
-        <translation>Material %1</translation>
-    </message>
-    <message>
-        <source>texture %1</source>
-        <translation>Textur %1</translation>
-    </message>
-    <message>
-        <source>→ nothing the editor can select (%1).</source>
-        <translation>→ nichts, was der Editor auswählen kann (%1).</translation>
-    </message>
-    <message>
-        <source>→ %1</source>
-        <translation>→ %1</translation>
     </message>
 </context>
 <context>
@@ -1741,6 +1603,127 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>target %1</source>
         <translation>Ziel %1</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::MotionController</name>
+    <message>
+        <source>At %1 s: %2</source>
+        <translation>Bei %1 s: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::ReloadController</name>
+    <message>
+        <source>When the File &amp;Changes</source>
+        <translation>Wenn sich die Datei &amp;ändert</translation>
+    </message>
+    <message>
+        <source>&amp;Offer to Reload</source>
+        <translation>Neu laden &amp;anbieten</translation>
+    </message>
+    <message>
+        <source>&amp;Reload Automatically</source>
+        <translation>Automatisch &amp;neu laden</translation>
+    </message>
+    <message>
+        <source>The open file, its buffers and its images are watched on disk</source>
+        <translation>Die geöffnete Datei, ihre Puffer und Bilder werden auf dem Datenträger überwacht</translation>
+    </message>
+    <message>
+        <source>%1 changed on disk: reloading.</source>
+        <translation>%1 wurde auf dem Datenträger geändert: wird neu geladen.</translation>
+    </message>
+    <message>
+        <source>%1 changed on disk.</source>
+        <translation>%1 wurde auf dem Datenträger geändert.</translation>
+    </message>
+    <message>
+        <source>%1 changed on disk. Reload the scene?</source>
+        <translation>%1 wurde auf dem Datenträger geändert. Szene neu laden?</translation>
+    </message>
+    <message>
+        <source>File changed</source>
+        <translation>Datei geändert</translation>
+    </message>
+    <message>
+        <source>&amp;Reload</source>
+        <translation>&amp;Neu laden</translation>
+    </message>
+    <message>
+        <source>&amp;Keep the Loaded Scene</source>
+        <translation>Geladene Szene &amp;behalten</translation>
+    </message>
+    <message>
+        <source>Settings › When the File Changes › Reload Automatically reloads without asking.</source>
+        <translation>Einstellungen › Wenn sich die Datei ändert › Automatisch neu laden lädt ohne Nachfrage neu.</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::RenderController</name>
+    <message>
+        <source>No Vulkan instance: the viewport cannot render.</source>
+        <translation>Keine Vulkan-Instanz: der Viewport kann nicht rendern.</translation>
+    </message>
+    <message>
+        <source>Rendering on %1 (renderer ready in %2 ms).</source>
+        <translation>Rendern auf %1 (Renderer nach %2 ms bereit).</translation>
+    </message>
+    <message>
+        <source>The renderer could not start: %1</source>
+        <translation>Der Renderer konnte nicht starten: %1</translation>
+    </message>
+    <message>
+        <source>Rendering stopped: %1</source>
+        <translation>Rendern angehalten: %1</translation>
+    </message>
+    <message>
+        <source>GPU culling failed: %1</source>
+        <translation>GPU-Culling fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Ray tracing is off (--rt off): no acceleration structures.</source>
+        <translation>Raytracing ist aus (--rt off): keine Beschleunigungsstrukturen.</translation>
+    </message>
+    <message>
+        <source>The device does not ray trace: no acceleration structures.</source>
+        <translation>Das Gerät beherrscht kein Raytracing: keine Beschleunigungsstrukturen.</translation>
+    </message>
+    <message>
+        <source>No scene.</source>
+        <translation>Keine Szene.</translation>
+    </message>
+    <message>
+        <source>The scene has no triangles: no acceleration structures.</source>
+        <translation>Die Szene hat keine Dreiecke: keine Beschleunigungsstrukturen.</translation>
+    </message>
+    <message>
+        <source>first frame %1 ms (makes the pipelines)</source>
+        <translation>erstes Bild %1 ms (erstellt die Pipelines)</translation>
+    </message>
+    <message>
+        <source>%1 fps, %2 ms per frame</source>
+        <translation>%1 fps, %2 ms pro Bild</translation>
+    </message>
+    <message>
+        <source> (GPU %1 ms)</source>
+        <translation> (GPU %1 ms)</translation>
+    </message>
+    <message>
+        <source>, resolution %1%</source>
+        <translation>, Auflösung %1 %</translation>
+    </message>
+    <message>
+        <source>, path traced %1 spp</source>
+        <translation>, %1 spp pfadverfolgt</translation>
+    </message>
+    <message>
+        <source>, estimated error %1%</source>
+        <translation>, geschätzter Fehler %1 %</translation>
+    </message>
+    <message>
+        <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves or an animation plays on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest or paused the full frame follows.</source>
+        <translation>Mittel der letzten %1 Bilder ohne das erste des Renderers (Pipeline-Erstellung). Während sich die Kamera bewegt oder eine Animation läuft, werden Bilder auf einem langsamen Gerät mit geringerer Auflösung und ohne Schatten gezeichnet, um %2 fps zu halten; in Ruhe oder angehalten folgt das volle Bild.</translation>
     </message>
 </context>
 <context>
@@ -1971,6 +1954,45 @@ Die aktuelle Szene bleibt erhalten.</translation>
     <message>
         <source>Validation messages name this (see the Validation dock).</source>
         <translation>Validierungsmeldungen nennen dieses Objekt (siehe Validierungs-Dock).</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::SelectionController</name>
+    <message>
+        <source>node %1</source>
+        <translation>Knoten %1</translation>
+    </message>
+    <message>
+        <source>primitive %1</source>
+        <translation>Primitiv %1</translation>
+    </message>
+    <message>
+        <source>accessor %1: %2 of primitive %3</source>
+        <translation>Accessor %1: %2 von Primitiv %3</translation>
+    </message>
+    <message>
+        <source>triangle %1</source>
+        <translation>Dreieck %1</translation>
+    </message>
+    <message>
+        <source>vertex %1</source>
+        <translation>Vertex %1</translation>
+    </message>
+    <message>
+        <source>material %1</source>
+        <translation>Material %1</translation>
+    </message>
+    <message>
+        <source>texture %1</source>
+        <translation>Textur %1</translation>
+    </message>
+    <message>
+        <source>→ nothing the editor can select (%1).</source>
+        <translation>→ nichts, was der Editor auswählen kann (%1).</translation>
+    </message>
+    <message>
+        <source>→ %1</source>
+        <translation>→ %1</translation>
     </message>
 </context>
 <context>
@@ -2244,13 +2266,6 @@ Die aktuelle Szene bleibt erhalten.</translation>
     </message>
 </context>
 <context>
-    <name>sherpa::editor::VertexTableModel</name>
-    <message>
-        <source>tangent error (deg)</source>
-        <translation>Tangentenfehler (Grad)</translation>
-    </message>
-</context>
-<context>
     <name>sherpa::editor::VariantMenu</name>
     <message>
         <source>default materials</source>
@@ -2278,50 +2293,57 @@ Die aktuelle Szene bleibt erhalten.</translation>
     </message>
 </context>
 <context>
-    <name>sherpa::editor::ReloadController</name>
+    <name>sherpa::editor::VertexTableModel</name>
     <message>
-        <source>When the File &amp;Changes</source>
-        <translation>Wenn sich die Datei &amp;ändert</translation>
+        <source>tangent error (deg)</source>
+        <translation>Tangentenfehler (Grad)</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::ViewController</name>
+    <message>
+        <source>View: %1</source>
+        <translation>Ansicht: %1</translation>
     </message>
     <message>
-        <source>&amp;Offer to Reload</source>
-        <translation>Neu laden &amp;anbieten</translation>
+        <source>Overlays</source>
+        <translation>Überlagerungen</translation>
     </message>
     <message>
-        <source>&amp;Reload Automatically</source>
-        <translation>Automatisch &amp;neu laden</translation>
+        <source>Overlays (%1)</source>
+        <translation>Überlagerungen (%1)</translation>
     </message>
     <message>
-        <source>The open file, its buffers and its images are watched on disk</source>
-        <translation>Die geöffnete Datei, ihre Puffer und Bilder werden auf dem Datenträger überwacht</translation>
+        <source>Overlays: none shown</source>
+        <translation>Überlagerungen: keine angezeigt</translation>
     </message>
     <message>
-        <source>%1 changed on disk: reloading.</source>
-        <translation>%1 wurde auf dem Datenträger geändert: wird neu geladen.</translation>
+        <source>Overlays: %1</source>
+        <translation>Überlagerungen: %1</translation>
     </message>
     <message>
-        <source>%1 changed on disk.</source>
-        <translation>%1 wurde auf dem Datenträger geändert.</translation>
+        <source>none</source>
+        <translation>keine</translation>
     </message>
     <message>
-        <source>%1 changed on disk. Reload the scene?</source>
-        <translation>%1 wurde auf dem Datenträger geändert. Szene neu laden?</translation>
+        <source>the room</source>
+        <translation>den Raum</translation>
     </message>
     <message>
-        <source>File changed</source>
-        <translation>Datei geändert</translation>
+        <source>Environment: %1.</source>
+        <translation>Umgebung: %1.</translation>
     </message>
     <message>
-        <source>&amp;Reload</source>
-        <translation>&amp;Neu laden</translation>
+        <source>Shadows: %1 cascades, %2 PCF taps; the viewport&apos;s maps stay %3x%3 texels (fixed when its renderer is made), not %4</source>
+        <translation>Schatten: %1 Kaskaden, %2 PCF-Abtastungen; die Maps des Viewports bleiben %3x%3 Texel (beim Erzeugen seines Renderers festgelegt), nicht %4</translation>
     </message>
     <message>
-        <source>&amp;Keep the Loaded Scene</source>
-        <translation>Geladene Szene &amp;behalten</translation>
+        <source>(the scene has no cameras)</source>
+        <translation>(die Szene hat keine Kameras)</translation>
     </message>
     <message>
-        <source>Settings › When the File Changes › Reload Automatically reloads without asking.</source>
-        <translation>Einstellungen › Wenn sich die Datei ändert › Automatisch neu laden lädt ohne Nachfrage neu.</translation>
+        <source>Camera %1</source>
+        <translation>Kamera %1</translation>
     </message>
 </context>
 </TS>

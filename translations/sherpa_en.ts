@@ -399,6 +399,53 @@
     </message>
 </context>
 <context>
+    <name>sherpa::editor::CompareController</name>
+    <message>
+        <source>Compare with glTF scene</source>
+        <translation>Compare with glTF scene</translation>
+    </message>
+    <message>
+        <source>glTF scenes (*.gltf *.glb);;All files (*)</source>
+        <translation>glTF scenes (*.gltf *.glb);;All files (*)</translation>
+    </message>
+    <message>
+        <source>Side B: %1 could not be loaded: %2</source>
+        <translation>Side B: %1 could not be loaded: %2</translation>
+    </message>
+    <message>
+        <source>Side B: %1 loaded.</source>
+        <translation>Side B: %1 loaded.</translation>
+    </message>
+    <message>
+        <source>Side B: loading %1…</source>
+        <translation>Side B: loading %1…</translation>
+    </message>
+    <message>
+        <source>%1, source textures</source>
+        <translation>%1, source textures</translation>
+    </message>
+    <message>
+        <source>Side B: loading %1 with tangents by %2…</source>
+        <translation>Side B: loading %1 with tangents by %2…</translation>
+    </message>
+    <message>
+        <source>%1, tangents: %2</source>
+        <translation>%1, tangents: %2</translation>
+    </message>
+    <message>
+        <source>Side A&apos;s tangents: %1 primitive(s) authored, %2 exact MikkTSpace, %3 none (no TANGENT, no normal texture: there B differs from no tangents).</source>
+        <translation>Side A&apos;s tangents: %1 primitive(s) authored, %2 exact MikkTSpace, %3 none (no TANGENT, no normal texture: there B differs from no tangents).</translation>
+    </message>
+    <message>
+        <source>Overlays and the selection highlight are drawn in the Raster mode only.</source>
+        <translation>Overlays and the selection highlight are drawn in the Raster mode only.</translation>
+    </message>
+    <message>
+        <source>The ray tracer cannot draw this frame: %1. Back to Raster.</source>
+        <translation>The ray tracer cannot draw this frame: %1. Back to Raster.</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::CompareControls</name>
     <message>
         <source>Raster</source>
@@ -1018,6 +1065,97 @@ PSNR %3
     </message>
 </context>
 <context>
+    <name>sherpa::editor::LoadController</name>
+    <message>
+        <source>Loading %1 cancelled; the result is discarded.</source>
+        <translation>Loading %1 cancelled; the result is discarded.</translation>
+    </message>
+    <message>
+        <source>Texture cache directory</source>
+        <translation>Texture cache directory</translation>
+    </message>
+    <message>
+        <source>Loading %1…</source>
+        <translation>Loading %1…</translation>
+    </message>
+    <message>
+        <source>1/4 parsing…</source>
+        <translation>1/4 parsing…</translation>
+    </message>
+    <message>
+        <source>2/4 geometry…</source>
+        <translation>2/4 geometry…</translation>
+    </message>
+    <message>
+        <source>3/4 tangents: mesh %1 of %2</source>
+        <translation>3/4 tangents: mesh %1 of %2</translation>
+    </message>
+    <message>
+        <source>4/4 textures: %1 of %2</source>
+        <translation>4/4 textures: %1 of %2</translation>
+    </message>
+    <message>
+        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</source>
+        <translation>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</translation>
+    </message>
+    <message>
+        <source>The file places %1 camera(s): View › glTF Cameras looks through them; the automatic view looks from the side of the first.</source>
+        <translation>The file places %1 camera(s): View › glTF Cameras looks through them; the automatic view looks from the side of the first.</translation>
+    </message>
+    <message>
+        <source>Could not load %1; the current scene is kept.</source>
+        <translation>Could not load %1; the current scene is kept.</translation>
+    </message>
+    <message>
+        <source>Could not load %1; no scene is open.</source>
+        <translation>Could not load %1; no scene is open.</translation>
+    </message>
+    <message>
+        <source>Load failed</source>
+        <translation>Load failed</translation>
+    </message>
+    <message>
+        <source>Could not load %1:
+%2
+
+The current scene is kept.</source>
+        <translation>Could not load %1:
+%2
+
+The current scene is kept.</translation>
+    </message>
+    <message>
+        <source>Could not load %1:
+%2
+
+No scene is open.</source>
+        <translation>Could not load %1:
+%2
+
+No scene is open.</translation>
+    </message>
+    <message>
+        <source>(no recent files)</source>
+        <translation>(no recent files)</translation>
+    </message>
+    <message>
+        <source>Open glTF scene</source>
+        <translation>Open glTF scene</translation>
+    </message>
+    <message>
+        <source>glTF scenes (*.gltf *.glb);;All files (*)</source>
+        <translation>glTF scenes (*.gltf *.glb);;All files (*)</translation>
+    </message>
+    <message>
+        <source>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</source>
+        <translation>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</translation>
+    </message>
+    <message>
+        <source>Texture %1: %2 cache files deleted; reloading to compress it again.</source>
+        <translation>Texture %1: %2 cache files deleted; reloading to compress it again.</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::LogDock</name>
     <message>
         <source>Log</source>
@@ -1039,50 +1177,6 @@ PSNR %3
 <context>
     <name>sherpa::editor::MainWindow</name>
     <message>
-        <source>At %1 s: %2</source>
-        <translation>At %1 s: %2</translation>
-    </message>
-    <message>
-        <source>Loading %1 cancelled; the result is discarded.</source>
-        <translation>Loading %1 cancelled; the result is discarded.</translation>
-    </message>
-    <message>
-        <source>Loading %1…</source>
-        <translation>Loading %1…</translation>
-    </message>
-    <message>
-        <source>Could not load %1; the current scene is kept.</source>
-        <translation>Could not load %1; the current scene is kept.</translation>
-    </message>
-    <message>
-        <source>Could not load %1; no scene is open.</source>
-        <translation>Could not load %1; no scene is open.</translation>
-    </message>
-    <message>
-        <source>Could not load %1:
-%2
-
-No scene is open.</source>
-        <translation>Could not load %1:
-%2
-
-No scene is open.</translation>
-    </message>
-    <message>
-        <source>Load failed</source>
-        <translation>Load failed</translation>
-    </message>
-    <message>
-        <source>Could not load %1:
-%2
-
-The current scene is kept.</source>
-        <translation>Could not load %1:
-%2
-
-The current scene is kept.</translation>
-    </message>
-    <message>
         <source>No scene. Open a glTF file or a built-in scene from the File menu.</source>
         <translation>No scene. Open a glTF file or a built-in scene from the File menu.</translation>
     </message>
@@ -1097,18 +1191,6 @@ The current scene is kept.</translation>
     <message>
         <source>%1 — Sherpa</source>
         <translation>%1 — Sherpa</translation>
-    </message>
-    <message>
-        <source>Texture cache directory</source>
-        <translation>Texture cache directory</translation>
-    </message>
-    <message>
-        <source>(the scene has no cameras)</source>
-        <translation>(the scene has no cameras)</translation>
-    </message>
-    <message>
-        <source>Camera %1</source>
-        <translation>Camera %1</translation>
     </message>
     <message>
         <source>&amp;File</source>
@@ -1165,10 +1247,6 @@ The current scene is kept.</translation>
     <message>
         <source>&amp;Debug View</source>
         <translation>&amp;Debug View</translation>
-    </message>
-    <message>
-        <source>View: %1</source>
-        <translation>View: %1</translation>
     </message>
     <message>
         <source>&amp;Overlays</source>
@@ -1283,18 +1361,6 @@ The current scene is kept.</translation>
         <translation>Cancel</translation>
     </message>
     <message>
-        <source>(no recent files)</source>
-        <translation>(no recent files)</translation>
-    </message>
-    <message>
-        <source>Open glTF scene</source>
-        <translation>Open glTF scene</translation>
-    </message>
-    <message>
-        <source>glTF scenes (*.gltf *.glb);;All files (*)</source>
-        <translation>glTF scenes (*.gltf *.glb);;All files (*)</translation>
-    </message>
-    <message>
         <source>none (Vulkan unavailable)</source>
         <translation>none (Vulkan unavailable)</translation>
     </message>
@@ -1307,60 +1373,8 @@ The current scene is kept.</translation>
         <translation>&lt;h3&gt;Sherpa %1&lt;/h3&gt;&lt;p&gt;A glTF 2.0 scene inspection editor.&lt;/p&gt;&lt;p&gt;Qt %2 (built with %3)&lt;br&gt;Vulkan devices: %4&lt;/p&gt;</translation>
     </message>
     <message>
-        <source>No Vulkan instance: the viewport cannot render.</source>
-        <translation>No Vulkan instance: the viewport cannot render.</translation>
-    </message>
-    <message>
-        <source>The renderer could not start: %1</source>
-        <translation>The renderer could not start: %1</translation>
-    </message>
-    <message>
-        <source>Rendering on %1 (renderer ready in %2 ms).</source>
-        <translation>Rendering on %1 (renderer ready in %2 ms).</translation>
-    </message>
-    <message>
-        <source>Rendering stopped: %1</source>
-        <translation>Rendering stopped: %1</translation>
-    </message>
-    <message>
-        <source>GPU culling failed: %1</source>
-        <translation>GPU culling failed: %1</translation>
-    </message>
-    <message>
-        <source>1/4 parsing…</source>
-        <translation>1/4 parsing…</translation>
-    </message>
-    <message>
-        <source>2/4 geometry…</source>
-        <translation>2/4 geometry…</translation>
-    </message>
-    <message>
-        <source>3/4 tangents: mesh %1 of %2</source>
-        <translation>3/4 tangents: mesh %1 of %2</translation>
-    </message>
-    <message>
-        <source>4/4 textures: %1 of %2</source>
-        <translation>4/4 textures: %1 of %2</translation>
-    </message>
-    <message>
         <source>GPU (compute shader, indirect draws)</source>
         <translation>GPU (compute shader, indirect draws)</translation>
-    </message>
-    <message>
-        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</source>
-        <translation>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</translation>
-    </message>
-    <message>
-        <source>The file places %1 camera(s): View › glTF Cameras looks through them; the automatic view looks from the side of the first.</source>
-        <translation>The file places %1 camera(s): View › glTF Cameras looks through them; the automatic view looks from the side of the first.</translation>
-    </message>
-    <message>
-        <source>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</source>
-        <translation>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</translation>
-    </message>
-    <message>
-        <source>Texture %1: %2 cache files deleted; reloading to compress it again.</source>
-        <translation>Texture %1: %2 cache files deleted; reloading to compress it again.</translation>
     </message>
     <message>
         <source>&amp;Missing Textures as Checker</source>
@@ -1373,158 +1387,6 @@ The current scene is kept.</translation>
     <message>
         <source>&amp;UV Checker Density (checks per UV unit)</source>
         <translation>&amp;UV Checker Density (checks per UV unit)</translation>
-    </message>
-    <message>
-        <source>first frame %1 ms (makes the pipelines)</source>
-        <translation>first frame %1 ms (makes the pipelines)</translation>
-    </message>
-    <message>
-        <source>%1 fps, %2 ms per frame</source>
-        <translation>%1 fps, %2 ms per frame</translation>
-    </message>
-    <message>
-        <source> (GPU %1 ms)</source>
-        <translation> (GPU %1 ms)</translation>
-    </message>
-    <message>
-        <source>, resolution %1%</source>
-        <translation>, resolution %1%</translation>
-    </message>
-    <message>
-        <source>, path traced %1 spp</source>
-        <translation>, path traced %1 spp</translation>
-    </message>
-    <message>
-        <source>, estimated error %1%</source>
-        <translation>, estimated error %1%</translation>
-    </message>
-    <message>
-        <source>Ray tracing is off (--rt off): no acceleration structures.</source>
-        <translation>Ray tracing is off (--rt off): no acceleration structures.</translation>
-    </message>
-    <message>
-        <source>The device does not ray trace: no acceleration structures.</source>
-        <translation>The device does not ray trace: no acceleration structures.</translation>
-    </message>
-    <message>
-        <source>No scene.</source>
-        <translation>No scene.</translation>
-    </message>
-    <message>
-        <source>The scene has no triangles: no acceleration structures.</source>
-        <translation>The scene has no triangles: no acceleration structures.</translation>
-    </message>
-    <message>
-        <source>Compare with glTF scene</source>
-        <translation>Compare with glTF scene</translation>
-    </message>
-    <message>
-        <source>Side B: %1 loaded.</source>
-        <translation>Side B: %1 loaded.</translation>
-    </message>
-    <message>
-        <source>Side B: %1 could not be loaded: %2</source>
-        <translation>Side B: %1 could not be loaded: %2</translation>
-    </message>
-    <message>
-        <source>Side B: loading %1…</source>
-        <translation>Side B: loading %1…</translation>
-    </message>
-    <message>
-        <source>Overlays and the selection highlight are drawn in the Raster mode only.</source>
-        <translation>Overlays and the selection highlight are drawn in the Raster mode only.</translation>
-    </message>
-    <message>
-        <source>The ray tracer cannot draw this frame: %1. Back to Raster.</source>
-        <translation>The ray tracer cannot draw this frame: %1. Back to Raster.</translation>
-    </message>
-    <message>
-        <source>%1, source textures</source>
-        <translation>%1, source textures</translation>
-    </message>
-    <message>
-        <source>Shadows: %1 cascades, %2 PCF taps; the viewport&apos;s maps stay %3x%3 texels (fixed when its renderer is made), not %4</source>
-        <translation>Shadows: %1 cascades, %2 PCF taps; the viewport&apos;s maps stay %3x%3 texels (fixed when its renderer is made), not %4</translation>
-    </message>
-    <message>
-        <source>Side B: loading %1 with tangents by %2…</source>
-        <translation>Side B: loading %1 with tangents by %2…</translation>
-    </message>
-    <message>
-        <source>%1, tangents: %2</source>
-        <translation>%1, tangents: %2</translation>
-    </message>
-    <message>
-        <source>Side A&apos;s tangents: %1 primitive(s) authored, %2 exact MikkTSpace, %3 none (no TANGENT, no normal texture: there B differs from no tangents).</source>
-        <translation>Side A&apos;s tangents: %1 primitive(s) authored, %2 exact MikkTSpace, %3 none (no TANGENT, no normal texture: there B differs from no tangents).</translation>
-    </message>
-    <message>
-        <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves or an animation plays on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest or paused the full frame follows.</source>
-        <translation>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves or an animation plays on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest or paused the full frame follows.</translation>
-    </message>
-    <message>
-        <source>Overlays</source>
-        <translation>Overlays</translation>
-    </message>
-    <message>
-        <source>Overlays (%1)</source>
-        <translation>Overlays (%1)</translation>
-    </message>
-    <message>
-        <source>Overlays: none shown</source>
-        <translation>Overlays: none shown</translation>
-    </message>
-    <message>
-        <source>Overlays: %1</source>
-        <translation>Overlays: %1</translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation>none</translation>
-    </message>
-    <message>
-        <source>the room</source>
-        <translation>the room</translation>
-    </message>
-    <message>
-        <source>Environment: %1.</source>
-        <translation>Environment: %1.</translation>
-    </message>
-    <message>
-        <source>node %1</source>
-        <translation>node %1</translation>
-    </message>
-    <message>
-        <source>primitive %1</source>
-        <translation>primitive %1</translation>
-    </message>
-    <message>
-        <source>accessor %1: %2 of primitive %3</source>
-        <translation>accessor %1: %2 of primitive %3</translation>
-    </message>
-    <message>
-        <source>triangle %1</source>
-        <translation>triangle %1</translation>
-    </message>
-    <message>
-        <source>vertex %1</source>
-        <translation>vertex %1</translation>
-    </message>
-    <message>
-        <source>material %1</source>
-        <translation>material %1</translation>
-    </message>
-    <message>
-        <source>texture %1</source>
-        <translation>texture %1</translation>
-    </message>
-    <message>
-        <source>→ nothing the editor can select (%1).</source>
-        <translation>→ nothing the editor can select (%1).</translation>
-    </message>
-    <message>
-        <source>→ %1</source>
-        <translation>→ %1</translation>
     </message>
 </context>
 <context>
@@ -1741,6 +1603,127 @@ The current scene is kept.</translation>
     <message>
         <source>target %1</source>
         <translation>target %1</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::MotionController</name>
+    <message>
+        <source>At %1 s: %2</source>
+        <translation>At %1 s: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::ReloadController</name>
+    <message>
+        <source>When the File &amp;Changes</source>
+        <translation>When the File &amp;Changes</translation>
+    </message>
+    <message>
+        <source>&amp;Offer to Reload</source>
+        <translation>&amp;Offer to Reload</translation>
+    </message>
+    <message>
+        <source>&amp;Reload Automatically</source>
+        <translation>&amp;Reload Automatically</translation>
+    </message>
+    <message>
+        <source>The open file, its buffers and its images are watched on disk</source>
+        <translation>The open file, its buffers and its images are watched on disk</translation>
+    </message>
+    <message>
+        <source>%1 changed on disk: reloading.</source>
+        <translation>%1 changed on disk: reloading.</translation>
+    </message>
+    <message>
+        <source>%1 changed on disk.</source>
+        <translation>%1 changed on disk.</translation>
+    </message>
+    <message>
+        <source>%1 changed on disk. Reload the scene?</source>
+        <translation>%1 changed on disk. Reload the scene?</translation>
+    </message>
+    <message>
+        <source>File changed</source>
+        <translation>File changed</translation>
+    </message>
+    <message>
+        <source>&amp;Reload</source>
+        <translation>&amp;Reload</translation>
+    </message>
+    <message>
+        <source>&amp;Keep the Loaded Scene</source>
+        <translation>&amp;Keep the Loaded Scene</translation>
+    </message>
+    <message>
+        <source>Settings › When the File Changes › Reload Automatically reloads without asking.</source>
+        <translation>Settings › When the File Changes › Reload Automatically reloads without asking.</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::RenderController</name>
+    <message>
+        <source>No Vulkan instance: the viewport cannot render.</source>
+        <translation>No Vulkan instance: the viewport cannot render.</translation>
+    </message>
+    <message>
+        <source>Rendering on %1 (renderer ready in %2 ms).</source>
+        <translation>Rendering on %1 (renderer ready in %2 ms).</translation>
+    </message>
+    <message>
+        <source>The renderer could not start: %1</source>
+        <translation>The renderer could not start: %1</translation>
+    </message>
+    <message>
+        <source>Rendering stopped: %1</source>
+        <translation>Rendering stopped: %1</translation>
+    </message>
+    <message>
+        <source>GPU culling failed: %1</source>
+        <translation>GPU culling failed: %1</translation>
+    </message>
+    <message>
+        <source>Ray tracing is off (--rt off): no acceleration structures.</source>
+        <translation>Ray tracing is off (--rt off): no acceleration structures.</translation>
+    </message>
+    <message>
+        <source>The device does not ray trace: no acceleration structures.</source>
+        <translation>The device does not ray trace: no acceleration structures.</translation>
+    </message>
+    <message>
+        <source>No scene.</source>
+        <translation>No scene.</translation>
+    </message>
+    <message>
+        <source>The scene has no triangles: no acceleration structures.</source>
+        <translation>The scene has no triangles: no acceleration structures.</translation>
+    </message>
+    <message>
+        <source>first frame %1 ms (makes the pipelines)</source>
+        <translation>first frame %1 ms (makes the pipelines)</translation>
+    </message>
+    <message>
+        <source>%1 fps, %2 ms per frame</source>
+        <translation>%1 fps, %2 ms per frame</translation>
+    </message>
+    <message>
+        <source> (GPU %1 ms)</source>
+        <translation> (GPU %1 ms)</translation>
+    </message>
+    <message>
+        <source>, resolution %1%</source>
+        <translation>, resolution %1%</translation>
+    </message>
+    <message>
+        <source>, path traced %1 spp</source>
+        <translation>, path traced %1 spp</translation>
+    </message>
+    <message>
+        <source>, estimated error %1%</source>
+        <translation>, estimated error %1%</translation>
+    </message>
+    <message>
+        <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves or an animation plays on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest or paused the full frame follows.</source>
+        <translation>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves or an animation plays on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest or paused the full frame follows.</translation>
     </message>
 </context>
 <context>
@@ -1971,6 +1954,45 @@ The current scene is kept.</translation>
     <message>
         <source>Validation messages name this (see the Validation dock).</source>
         <translation>Validation messages name this (see the Validation dock).</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::SelectionController</name>
+    <message>
+        <source>node %1</source>
+        <translation>node %1</translation>
+    </message>
+    <message>
+        <source>primitive %1</source>
+        <translation>primitive %1</translation>
+    </message>
+    <message>
+        <source>accessor %1: %2 of primitive %3</source>
+        <translation>accessor %1: %2 of primitive %3</translation>
+    </message>
+    <message>
+        <source>triangle %1</source>
+        <translation>triangle %1</translation>
+    </message>
+    <message>
+        <source>vertex %1</source>
+        <translation>vertex %1</translation>
+    </message>
+    <message>
+        <source>material %1</source>
+        <translation>material %1</translation>
+    </message>
+    <message>
+        <source>texture %1</source>
+        <translation>texture %1</translation>
+    </message>
+    <message>
+        <source>→ nothing the editor can select (%1).</source>
+        <translation>→ nothing the editor can select (%1).</translation>
+    </message>
+    <message>
+        <source>→ %1</source>
+        <translation>→ %1</translation>
     </message>
 </context>
 <context>
@@ -2244,13 +2266,6 @@ The current scene is kept.</translation>
     </message>
 </context>
 <context>
-    <name>sherpa::editor::VertexTableModel</name>
-    <message>
-        <source>tangent error (deg)</source>
-        <translation>tangent error (deg)</translation>
-    </message>
-</context>
-<context>
     <name>sherpa::editor::VariantMenu</name>
     <message>
         <source>default materials</source>
@@ -2278,50 +2293,57 @@ The current scene is kept.</translation>
     </message>
 </context>
 <context>
-    <name>sherpa::editor::ReloadController</name>
+    <name>sherpa::editor::VertexTableModel</name>
     <message>
-        <source>When the File &amp;Changes</source>
-        <translation>When the File &amp;Changes</translation>
+        <source>tangent error (deg)</source>
+        <translation>tangent error (deg)</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::ViewController</name>
+    <message>
+        <source>View: %1</source>
+        <translation>View: %1</translation>
     </message>
     <message>
-        <source>&amp;Offer to Reload</source>
-        <translation>&amp;Offer to Reload</translation>
+        <source>Overlays</source>
+        <translation>Overlays</translation>
     </message>
     <message>
-        <source>&amp;Reload Automatically</source>
-        <translation>&amp;Reload Automatically</translation>
+        <source>Overlays (%1)</source>
+        <translation>Overlays (%1)</translation>
     </message>
     <message>
-        <source>The open file, its buffers and its images are watched on disk</source>
-        <translation>The open file, its buffers and its images are watched on disk</translation>
+        <source>Overlays: none shown</source>
+        <translation>Overlays: none shown</translation>
     </message>
     <message>
-        <source>%1 changed on disk: reloading.</source>
-        <translation>%1 changed on disk: reloading.</translation>
+        <source>Overlays: %1</source>
+        <translation>Overlays: %1</translation>
     </message>
     <message>
-        <source>%1 changed on disk.</source>
-        <translation>%1 changed on disk.</translation>
+        <source>none</source>
+        <translation>none</translation>
     </message>
     <message>
-        <source>%1 changed on disk. Reload the scene?</source>
-        <translation>%1 changed on disk. Reload the scene?</translation>
+        <source>the room</source>
+        <translation>the room</translation>
     </message>
     <message>
-        <source>File changed</source>
-        <translation>File changed</translation>
+        <source>Environment: %1.</source>
+        <translation>Environment: %1.</translation>
     </message>
     <message>
-        <source>&amp;Reload</source>
-        <translation>&amp;Reload</translation>
+        <source>Shadows: %1 cascades, %2 PCF taps; the viewport&apos;s maps stay %3x%3 texels (fixed when its renderer is made), not %4</source>
+        <translation>Shadows: %1 cascades, %2 PCF taps; the viewport&apos;s maps stay %3x%3 texels (fixed when its renderer is made), not %4</translation>
     </message>
     <message>
-        <source>&amp;Keep the Loaded Scene</source>
-        <translation>&amp;Keep the Loaded Scene</translation>
+        <source>(the scene has no cameras)</source>
+        <translation>(the scene has no cameras)</translation>
     </message>
     <message>
-        <source>Settings › When the File Changes › Reload Automatically reloads without asking.</source>
-        <translation>Settings › When the File Changes › Reload Automatically reloads without asking.</translation>
+        <source>Camera %1</source>
+        <translation>Camera %1</translation>
     </message>
 </context>
 </TS>

@@ -399,6 +399,53 @@
     </message>
 </context>
 <context>
+    <name>sherpa::editor::CompareController</name>
+    <message>
+        <source>Compare with glTF scene</source>
+        <translation>与 glTF 场景比较</translation>
+    </message>
+    <message>
+        <source>glTF scenes (*.gltf *.glb);;All files (*)</source>
+        <translation>glTF 场景 (*.gltf *.glb);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Side B: %1 could not be loaded: %2</source>
+        <translation>B 侧：无法加载 %1：%2</translation>
+    </message>
+    <message>
+        <source>Side B: %1 loaded.</source>
+        <translation>B 侧：已加载 %1。</translation>
+    </message>
+    <message>
+        <source>Side B: loading %1…</source>
+        <translation>B 侧：正在加载 %1…</translation>
+    </message>
+    <message>
+        <source>%1, source textures</source>
+        <translation>%1，源纹理</translation>
+    </message>
+    <message>
+        <source>Side B: loading %1 with tangents by %2…</source>
+        <translation>B 侧：正在以 %2 切线加载 %1…</translation>
+    </message>
+    <message>
+        <source>%1, tangents: %2</source>
+        <translation>%1，切线：%2</translation>
+    </message>
+    <message>
+        <source>Side A&apos;s tangents: %1 primitive(s) authored, %2 exact MikkTSpace, %3 none (no TANGENT, no normal texture: there B differs from no tangents).</source>
+        <translation>A 侧切线：%1 个图元来自文件，%2 个为精确 MikkTSpace，%3 个没有（无 TANGENT、无法线纹理：此处 B 与无切线相比）。</translation>
+    </message>
+    <message>
+        <source>Overlays and the selection highlight are drawn in the Raster mode only.</source>
+        <translation>叠加层和选择高亮仅在光栅化模式下绘制。</translation>
+    </message>
+    <message>
+        <source>The ray tracer cannot draw this frame: %1. Back to Raster.</source>
+        <translation>光线追踪器无法绘制此画面：%1。已切回光栅化。</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::CompareControls</name>
     <message>
         <source>Raster</source>
@@ -1018,6 +1065,97 @@ PSNR %3
     </message>
 </context>
 <context>
+    <name>sherpa::editor::LoadController</name>
+    <message>
+        <source>Loading %1 cancelled; the result is discarded.</source>
+        <translation>已取消加载 %1；结果将被丢弃。</translation>
+    </message>
+    <message>
+        <source>Texture cache directory</source>
+        <translation>纹理缓存目录</translation>
+    </message>
+    <message>
+        <source>Loading %1…</source>
+        <translation>正在加载 %1…</translation>
+    </message>
+    <message>
+        <source>1/4 parsing…</source>
+        <translation>1/4 解析…</translation>
+    </message>
+    <message>
+        <source>2/4 geometry…</source>
+        <translation>2/4 几何…</translation>
+    </message>
+    <message>
+        <source>3/4 tangents: mesh %1 of %2</source>
+        <translation>3/4 切线：网格 %1 / %2</translation>
+    </message>
+    <message>
+        <source>4/4 textures: %1 of %2</source>
+        <translation>4/4 纹理：%1 / %2</translation>
+    </message>
+    <message>
+        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</source>
+        <translation>已加载 %1，用时 %2 毫秒（引擎 %3 毫秒，缩略图 %4 毫秒，纹理 %5 毫秒）。</translation>
+    </message>
+    <message>
+        <source>The file places %1 camera(s): View › glTF Cameras looks through them; the automatic view looks from the side of the first.</source>
+        <translation>文件放置了 %1 个相机：视图 › glTF 相机 可通过它们观看；自动视图从第一个相机所在的一侧观看。</translation>
+    </message>
+    <message>
+        <source>Could not load %1; the current scene is kept.</source>
+        <translation>无法加载 %1；保留当前场景。</translation>
+    </message>
+    <message>
+        <source>Could not load %1; no scene is open.</source>
+        <translation>无法加载 %1；当前没有打开的场景。</translation>
+    </message>
+    <message>
+        <source>Load failed</source>
+        <translation>加载失败</translation>
+    </message>
+    <message>
+        <source>Could not load %1:
+%2
+
+The current scene is kept.</source>
+        <translation>无法加载 %1：
+%2
+
+保留当前场景。</translation>
+    </message>
+    <message>
+        <source>Could not load %1:
+%2
+
+No scene is open.</source>
+        <translation>无法加载 %1：
+%2
+
+当前没有打开的场景。</translation>
+    </message>
+    <message>
+        <source>(no recent files)</source>
+        <translation>（没有最近文件）</translation>
+    </message>
+    <message>
+        <source>Open glTF scene</source>
+        <translation>打开 glTF 场景</translation>
+    </message>
+    <message>
+        <source>glTF scenes (*.gltf *.glb);;All files (*)</source>
+        <translation>glTF 场景 (*.gltf *.glb);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</source>
+        <translation>纹理缓存已清空：已从 %2 删除 %1 个文件；下次加载时将重新压缩。</translation>
+    </message>
+    <message>
+        <source>Texture %1: %2 cache files deleted; reloading to compress it again.</source>
+        <translation>纹理 %1：已删除 %2 个缓存文件；正在重新加载以重新压缩。</translation>
+    </message>
+</context>
+<context>
     <name>sherpa::editor::LogDock</name>
     <message>
         <source>Log</source>
@@ -1039,50 +1177,6 @@ PSNR %3
 <context>
     <name>sherpa::editor::MainWindow</name>
     <message>
-        <source>At %1 s: %2</source>
-        <translation>在 %1 秒：%2</translation>
-    </message>
-    <message>
-        <source>Loading %1 cancelled; the result is discarded.</source>
-        <translation>已取消加载 %1；结果将被丢弃。</translation>
-    </message>
-    <message>
-        <source>Loading %1…</source>
-        <translation>正在加载 %1…</translation>
-    </message>
-    <message>
-        <source>Could not load %1; the current scene is kept.</source>
-        <translation>无法加载 %1；保留当前场景。</translation>
-    </message>
-    <message>
-        <source>Could not load %1; no scene is open.</source>
-        <translation>无法加载 %1；当前没有打开的场景。</translation>
-    </message>
-    <message>
-        <source>Could not load %1:
-%2
-
-No scene is open.</source>
-        <translation>无法加载 %1：
-%2
-
-当前没有打开的场景。</translation>
-    </message>
-    <message>
-        <source>Load failed</source>
-        <translation>加载失败</translation>
-    </message>
-    <message>
-        <source>Could not load %1:
-%2
-
-The current scene is kept.</source>
-        <translation>无法加载 %1：
-%2
-
-保留当前场景。</translation>
-    </message>
-    <message>
         <source>No scene. Open a glTF file or a built-in scene from the File menu.</source>
         <translation>没有场景。请通过“文件”菜单打开 glTF 文件或内置场景。</translation>
     </message>
@@ -1097,18 +1191,6 @@ The current scene is kept.</source>
     <message>
         <source>%1 — Sherpa</source>
         <translation>%1 — Sherpa</translation>
-    </message>
-    <message>
-        <source>Texture cache directory</source>
-        <translation>纹理缓存目录</translation>
-    </message>
-    <message>
-        <source>(the scene has no cameras)</source>
-        <translation>（场景中没有相机）</translation>
-    </message>
-    <message>
-        <source>Camera %1</source>
-        <translation>相机 %1</translation>
     </message>
     <message>
         <source>&amp;File</source>
@@ -1165,10 +1247,6 @@ The current scene is kept.</source>
     <message>
         <source>&amp;Debug View</source>
         <translation>调试视图(&amp;D)</translation>
-    </message>
-    <message>
-        <source>View: %1</source>
-        <translation>视图：%1</translation>
     </message>
     <message>
         <source>&amp;Overlays</source>
@@ -1283,18 +1361,6 @@ The current scene is kept.</source>
         <translation>取消</translation>
     </message>
     <message>
-        <source>(no recent files)</source>
-        <translation>（没有最近文件）</translation>
-    </message>
-    <message>
-        <source>Open glTF scene</source>
-        <translation>打开 glTF 场景</translation>
-    </message>
-    <message>
-        <source>glTF scenes (*.gltf *.glb);;All files (*)</source>
-        <translation>glTF 场景 (*.gltf *.glb);;所有文件 (*)</translation>
-    </message>
-    <message>
         <source>none (Vulkan unavailable)</source>
         <translation>无（Vulkan 不可用）</translation>
     </message>
@@ -1307,60 +1373,8 @@ The current scene is kept.</source>
         <translation>&lt;h3&gt;Sherpa %1&lt;/h3&gt;&lt;p&gt;glTF 2.0 场景检查编辑器。&lt;/p&gt;&lt;p&gt;Qt %2（构建时为 %3）&lt;br&gt;Vulkan 设备：%4&lt;/p&gt;</translation>
     </message>
     <message>
-        <source>No Vulkan instance: the viewport cannot render.</source>
-        <translation>没有 Vulkan 实例：视口无法渲染。</translation>
-    </message>
-    <message>
-        <source>The renderer could not start: %1</source>
-        <translation>渲染器无法启动：%1</translation>
-    </message>
-    <message>
-        <source>Rendering on %1 (renderer ready in %2 ms).</source>
-        <translation>在 %1 上渲染（渲染器 %2 ms 后就绪）。</translation>
-    </message>
-    <message>
-        <source>Rendering stopped: %1</source>
-        <translation>渲染已停止：%1</translation>
-    </message>
-    <message>
-        <source>GPU culling failed: %1</source>
-        <translation>GPU 剔除失败：%1</translation>
-    </message>
-    <message>
-        <source>1/4 parsing…</source>
-        <translation>1/4 解析…</translation>
-    </message>
-    <message>
-        <source>2/4 geometry…</source>
-        <translation>2/4 几何…</translation>
-    </message>
-    <message>
-        <source>3/4 tangents: mesh %1 of %2</source>
-        <translation>3/4 切线：网格 %1 / %2</translation>
-    </message>
-    <message>
-        <source>4/4 textures: %1 of %2</source>
-        <translation>4/4 纹理：%1 / %2</translation>
-    </message>
-    <message>
         <source>GPU (compute shader, indirect draws)</source>
         <translation>GPU（计算着色器，间接绘制）</translation>
-    </message>
-    <message>
-        <source>Loaded %1 in %2 ms (engine %3 ms, thumbnails %4 ms, textures %5 ms).</source>
-        <translation>已加载 %1，用时 %2 毫秒（引擎 %3 毫秒，缩略图 %4 毫秒，纹理 %5 毫秒）。</translation>
-    </message>
-    <message>
-        <source>The file places %1 camera(s): View › glTF Cameras looks through them; the automatic view looks from the side of the first.</source>
-        <translation>文件放置了 %1 个相机：视图 › glTF 相机 可通过它们观看；自动视图从第一个相机所在的一侧观看。</translation>
-    </message>
-    <message>
-        <source>Texture cache cleared: %1 files deleted from %2; the next load compresses again.</source>
-        <translation>纹理缓存已清空：已从 %2 删除 %1 个文件；下次加载时将重新压缩。</translation>
-    </message>
-    <message>
-        <source>Texture %1: %2 cache files deleted; reloading to compress it again.</source>
-        <translation>纹理 %1：已删除 %2 个缓存文件；正在重新加载以重新压缩。</translation>
     </message>
     <message>
         <source>&amp;Missing Textures as Checker</source>
@@ -1373,158 +1387,6 @@ The current scene is kept.</source>
     <message>
         <source>&amp;UV Checker Density (checks per UV unit)</source>
         <translation>UV 棋盘格密度（每 UV 单位格数）(&amp;U)</translation>
-    </message>
-    <message>
-        <source>first frame %1 ms (makes the pipelines)</source>
-        <translation>首帧 %1 毫秒（创建管线）</translation>
-    </message>
-    <message>
-        <source>%1 fps, %2 ms per frame</source>
-        <translation>%1 fps，每帧 %2 毫秒</translation>
-    </message>
-    <message>
-        <source> (GPU %1 ms)</source>
-        <translation>（GPU %1 毫秒）</translation>
-    </message>
-    <message>
-        <source>, resolution %1%</source>
-        <translation>，分辨率 %1%</translation>
-    </message>
-    <message>
-        <source>, path traced %1 spp</source>
-        <translation>，路径追踪 %1 spp</translation>
-    </message>
-    <message>
-        <source>, estimated error %1%</source>
-        <translation>，估计误差 %1%</translation>
-    </message>
-    <message>
-        <source>Ray tracing is off (--rt off): no acceleration structures.</source>
-        <translation>光线追踪已关闭（--rt off）：没有加速结构。</translation>
-    </message>
-    <message>
-        <source>The device does not ray trace: no acceleration structures.</source>
-        <translation>该设备不支持光线追踪：没有加速结构。</translation>
-    </message>
-    <message>
-        <source>No scene.</source>
-        <translation>没有场景。</translation>
-    </message>
-    <message>
-        <source>The scene has no triangles: no acceleration structures.</source>
-        <translation>场景没有三角形：没有加速结构。</translation>
-    </message>
-    <message>
-        <source>Compare with glTF scene</source>
-        <translation>与 glTF 场景比较</translation>
-    </message>
-    <message>
-        <source>Side B: %1 loaded.</source>
-        <translation>B 侧：已加载 %1。</translation>
-    </message>
-    <message>
-        <source>Side B: %1 could not be loaded: %2</source>
-        <translation>B 侧：无法加载 %1：%2</translation>
-    </message>
-    <message>
-        <source>Side B: loading %1…</source>
-        <translation>B 侧：正在加载 %1…</translation>
-    </message>
-    <message>
-        <source>Overlays and the selection highlight are drawn in the Raster mode only.</source>
-        <translation>叠加层和选择高亮仅在光栅化模式下绘制。</translation>
-    </message>
-    <message>
-        <source>The ray tracer cannot draw this frame: %1. Back to Raster.</source>
-        <translation>光线追踪器无法绘制此画面：%1。已切回光栅化。</translation>
-    </message>
-    <message>
-        <source>%1, source textures</source>
-        <translation>%1，源纹理</translation>
-    </message>
-    <message>
-        <source>Shadows: %1 cascades, %2 PCF taps; the viewport&apos;s maps stay %3x%3 texels (fixed when its renderer is made), not %4</source>
-        <translation>阴影：%1 个级联，%2 个 PCF 采样；视口的阴影贴图保持 %3x%3 纹素（创建其渲染器时确定），而不是 %4</translation>
-    </message>
-    <message>
-        <source>Side B: loading %1 with tangents by %2…</source>
-        <translation>B 侧：正在以 %2 切线加载 %1…</translation>
-    </message>
-    <message>
-        <source>%1, tangents: %2</source>
-        <translation>%1，切线：%2</translation>
-    </message>
-    <message>
-        <source>Side A&apos;s tangents: %1 primitive(s) authored, %2 exact MikkTSpace, %3 none (no TANGENT, no normal texture: there B differs from no tangents).</source>
-        <translation>A 侧切线：%1 个图元来自文件，%2 个为精确 MikkTSpace，%3 个没有（无 TANGENT、无法线纹理：此处 B 与无切线相比）。</translation>
-    </message>
-    <message>
-        <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves or an animation plays on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest or paused the full frame follows.</source>
-        <translation>最近 %1 帧的平均值，不计渲染器的第一帧（创建管线）。在慢速设备上移动相机或播放动画时，以较低分辨率且不带阴影绘制以保持 %2 fps；静止或暂停后显示完整画面。</translation>
-    </message>
-    <message>
-        <source>Overlays</source>
-        <translation>叠加层</translation>
-    </message>
-    <message>
-        <source>Overlays (%1)</source>
-        <translation>叠加层（%1）</translation>
-    </message>
-    <message>
-        <source>Overlays: none shown</source>
-        <translation>叠加层：未显示</translation>
-    </message>
-    <message>
-        <source>Overlays: %1</source>
-        <translation>叠加层：%1</translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation>无</translation>
-    </message>
-    <message>
-        <source>the room</source>
-        <translation>房间</translation>
-    </message>
-    <message>
-        <source>Environment: %1.</source>
-        <translation>环境：%1。</translation>
-    </message>
-    <message>
-        <source>node %1</source>
-        <translation>节点 %1</translation>
-    </message>
-    <message>
-        <source>primitive %1</source>
-        <translation>图元 %1</translation>
-    </message>
-    <message>
-        <source>accessor %1: %2 of primitive %3</source>
-        <translation>访问器 %1：图元 %3 的 %2</translation>
-    </message>
-    <message>
-        <source>triangle %1</source>
-        <translation>三角形 %1</translation>
-    </message>
-    <message>
-        <source>vertex %1</source>
-        <translation>顶点 %1</translation>
-    </message>
-    <message>
-        <source>material %1</source>
-        <translation>材质 %1</translation>
-    </message>
-    <message>
-        <source>texture %1</source>
-        <translation>纹理 %1</translation>
-    </message>
-    <message>
-        <source>→ nothing the editor can select (%1).</source>
-        <translation>→ 编辑器中没有可选择的对象（%1）。</translation>
-    </message>
-    <message>
-        <source>→ %1</source>
-        <translation>→ %1</translation>
     </message>
 </context>
 <context>
@@ -1741,6 +1603,127 @@ The current scene is kept.</source>
     <message>
         <source>target %1</source>
         <translation>目标 %1</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::MotionController</name>
+    <message>
+        <source>At %1 s: %2</source>
+        <translation>在 %1 秒：%2</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::ReloadController</name>
+    <message>
+        <source>When the File &amp;Changes</source>
+        <translation>文件更改时(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Offer to Reload</source>
+        <translation>提示重新加载(&amp;O)</translation>
+    </message>
+    <message>
+        <source>&amp;Reload Automatically</source>
+        <translation>自动重新加载(&amp;R)</translation>
+    </message>
+    <message>
+        <source>The open file, its buffers and its images are watched on disk</source>
+        <translation>监视磁盘上打开的文件及其缓冲区和图像</translation>
+    </message>
+    <message>
+        <source>%1 changed on disk: reloading.</source>
+        <translation>%1 已在磁盘上更改：正在重新加载。</translation>
+    </message>
+    <message>
+        <source>%1 changed on disk.</source>
+        <translation>%1 已在磁盘上更改。</translation>
+    </message>
+    <message>
+        <source>%1 changed on disk. Reload the scene?</source>
+        <translation>%1 已在磁盘上更改。重新加载场景？</translation>
+    </message>
+    <message>
+        <source>File changed</source>
+        <translation>文件已更改</translation>
+    </message>
+    <message>
+        <source>&amp;Reload</source>
+        <translation>重新加载(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Keep the Loaded Scene</source>
+        <translation>保留已加载的场景(&amp;K)</translation>
+    </message>
+    <message>
+        <source>Settings › When the File Changes › Reload Automatically reloads without asking.</source>
+        <translation>设置 › 文件更改时 › 自动重新加载：不询问直接重新加载。</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::RenderController</name>
+    <message>
+        <source>No Vulkan instance: the viewport cannot render.</source>
+        <translation>没有 Vulkan 实例：视口无法渲染。</translation>
+    </message>
+    <message>
+        <source>Rendering on %1 (renderer ready in %2 ms).</source>
+        <translation>在 %1 上渲染（渲染器 %2 ms 后就绪）。</translation>
+    </message>
+    <message>
+        <source>The renderer could not start: %1</source>
+        <translation>渲染器无法启动：%1</translation>
+    </message>
+    <message>
+        <source>Rendering stopped: %1</source>
+        <translation>渲染已停止：%1</translation>
+    </message>
+    <message>
+        <source>GPU culling failed: %1</source>
+        <translation>GPU 剔除失败：%1</translation>
+    </message>
+    <message>
+        <source>Ray tracing is off (--rt off): no acceleration structures.</source>
+        <translation>光线追踪已关闭（--rt off）：没有加速结构。</translation>
+    </message>
+    <message>
+        <source>The device does not ray trace: no acceleration structures.</source>
+        <translation>该设备不支持光线追踪：没有加速结构。</translation>
+    </message>
+    <message>
+        <source>No scene.</source>
+        <translation>没有场景。</translation>
+    </message>
+    <message>
+        <source>The scene has no triangles: no acceleration structures.</source>
+        <translation>场景没有三角形：没有加速结构。</translation>
+    </message>
+    <message>
+        <source>first frame %1 ms (makes the pipelines)</source>
+        <translation>首帧 %1 毫秒（创建管线）</translation>
+    </message>
+    <message>
+        <source>%1 fps, %2 ms per frame</source>
+        <translation>%1 fps，每帧 %2 毫秒</translation>
+    </message>
+    <message>
+        <source> (GPU %1 ms)</source>
+        <translation>（GPU %1 毫秒）</translation>
+    </message>
+    <message>
+        <source>, resolution %1%</source>
+        <translation>，分辨率 %1%</translation>
+    </message>
+    <message>
+        <source>, path traced %1 spp</source>
+        <translation>，路径追踪 %1 spp</translation>
+    </message>
+    <message>
+        <source>, estimated error %1%</source>
+        <translation>，估计误差 %1%</translation>
+    </message>
+    <message>
+        <source>Mean of the last %1 frames, not counting the renderer&apos;s first (pipeline creation). While the camera moves or an animation plays on a slow device, frames are drawn at a lower resolution and without shadows to keep %2 fps; at rest or paused the full frame follows.</source>
+        <translation>最近 %1 帧的平均值，不计渲染器的第一帧（创建管线）。在慢速设备上移动相机或播放动画时，以较低分辨率且不带阴影绘制以保持 %2 fps；静止或暂停后显示完整画面。</translation>
     </message>
 </context>
 <context>
@@ -1971,6 +1954,45 @@ The current scene is kept.</source>
     <message>
         <source>Validation messages name this (see the Validation dock).</source>
         <translation>有验证消息指向此对象（见“验证”面板）。</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::SelectionController</name>
+    <message>
+        <source>node %1</source>
+        <translation>节点 %1</translation>
+    </message>
+    <message>
+        <source>primitive %1</source>
+        <translation>图元 %1</translation>
+    </message>
+    <message>
+        <source>accessor %1: %2 of primitive %3</source>
+        <translation>访问器 %1：图元 %3 的 %2</translation>
+    </message>
+    <message>
+        <source>triangle %1</source>
+        <translation>三角形 %1</translation>
+    </message>
+    <message>
+        <source>vertex %1</source>
+        <translation>顶点 %1</translation>
+    </message>
+    <message>
+        <source>material %1</source>
+        <translation>材质 %1</translation>
+    </message>
+    <message>
+        <source>texture %1</source>
+        <translation>纹理 %1</translation>
+    </message>
+    <message>
+        <source>→ nothing the editor can select (%1).</source>
+        <translation>→ 编辑器中没有可选择的对象（%1）。</translation>
+    </message>
+    <message>
+        <source>→ %1</source>
+        <translation>→ %1</translation>
     </message>
 </context>
 <context>
@@ -2244,13 +2266,6 @@ The current scene is kept.</source>
     </message>
 </context>
 <context>
-    <name>sherpa::editor::VertexTableModel</name>
-    <message>
-        <source>tangent error (deg)</source>
-        <translation>切线误差（度）</translation>
-    </message>
-</context>
-<context>
     <name>sherpa::editor::VariantMenu</name>
     <message>
         <source>default materials</source>
@@ -2278,50 +2293,57 @@ The current scene is kept.</source>
     </message>
 </context>
 <context>
-    <name>sherpa::editor::ReloadController</name>
+    <name>sherpa::editor::VertexTableModel</name>
     <message>
-        <source>When the File &amp;Changes</source>
-        <translation>文件更改时(&amp;C)</translation>
+        <source>tangent error (deg)</source>
+        <translation>切线误差（度）</translation>
+    </message>
+</context>
+<context>
+    <name>sherpa::editor::ViewController</name>
+    <message>
+        <source>View: %1</source>
+        <translation>视图：%1</translation>
     </message>
     <message>
-        <source>&amp;Offer to Reload</source>
-        <translation>提示重新加载(&amp;O)</translation>
+        <source>Overlays</source>
+        <translation>叠加层</translation>
     </message>
     <message>
-        <source>&amp;Reload Automatically</source>
-        <translation>自动重新加载(&amp;R)</translation>
+        <source>Overlays (%1)</source>
+        <translation>叠加层（%1）</translation>
     </message>
     <message>
-        <source>The open file, its buffers and its images are watched on disk</source>
-        <translation>监视磁盘上打开的文件及其缓冲区和图像</translation>
+        <source>Overlays: none shown</source>
+        <translation>叠加层：未显示</translation>
     </message>
     <message>
-        <source>%1 changed on disk: reloading.</source>
-        <translation>%1 已在磁盘上更改：正在重新加载。</translation>
+        <source>Overlays: %1</source>
+        <translation>叠加层：%1</translation>
     </message>
     <message>
-        <source>%1 changed on disk.</source>
-        <translation>%1 已在磁盘上更改。</translation>
+        <source>none</source>
+        <translation>无</translation>
     </message>
     <message>
-        <source>%1 changed on disk. Reload the scene?</source>
-        <translation>%1 已在磁盘上更改。重新加载场景？</translation>
+        <source>the room</source>
+        <translation>房间</translation>
     </message>
     <message>
-        <source>File changed</source>
-        <translation>文件已更改</translation>
+        <source>Environment: %1.</source>
+        <translation>环境：%1。</translation>
     </message>
     <message>
-        <source>&amp;Reload</source>
-        <translation>重新加载(&amp;R)</translation>
+        <source>Shadows: %1 cascades, %2 PCF taps; the viewport&apos;s maps stay %3x%3 texels (fixed when its renderer is made), not %4</source>
+        <translation>阴影：%1 个级联，%2 个 PCF 采样；视口的阴影贴图保持 %3x%3 纹素（创建其渲染器时确定），而不是 %4</translation>
     </message>
     <message>
-        <source>&amp;Keep the Loaded Scene</source>
-        <translation>保留已加载的场景(&amp;K)</translation>
+        <source>(the scene has no cameras)</source>
+        <translation>（场景中没有相机）</translation>
     </message>
     <message>
-        <source>Settings › When the File Changes › Reload Automatically reloads without asking.</source>
-        <translation>设置 › 文件更改时 › 自动重新加载：不询问直接重新加载。</translation>
+        <source>Camera %1</source>
+        <translation>相机 %1</translation>
     </message>
 </context>
 </TS>

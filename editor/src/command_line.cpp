@@ -15,16 +15,21 @@
 #include <optional>
 
 #include "acceleration_dock.h"
+#include "compare_controller.h"
 #include "culling_dock.h"
 #include "lab_dock.h"
+#include "load_controller.h"
 #include "log_dock.h"
 #include "main_window.h"
 #include "material_dock.h"
 #include "mesh_dock.h"
+#include "render_controller.h"
 #include "scene_tree_dock.h"
+#include "selection_controller.h"
 #include "texture_dock.h"
 #include "timeline_dock.h"
 #include "view_catalog.h"
+#include "view_controller.h"
 #include "viewport_window.h"
 
 namespace sherpa::editor {
@@ -48,21 +53,21 @@ std::optional<TangentMethod> tangent_method(const QString& name) {
 
 // --mode and --compare-with, once the scene is loaded.
 void apply_viewport_mode(MainWindow& window, const CommandLine& cl) {
-    CompareControls& compare = window.compareControls();
+    CompareControls& compare = window.comparison().controls();
     const QString& side = cl.compare_with;
     if (side.startsWith(QLatin1String("view:")))
         compare.setSide(SideB::OtherView, *ViewCatalog::viewId(side.mid(5)));
     else if (side.startsWith(QLatin1String("tangents:")))
-        window.compareWithTangents(*tangent_method(side.mid(9))); // checked by parse
+        window.comparison().compareWithTangents(*tangent_method(side.mid(9))); // checked by parse
     else if (!side.isEmpty() && side != QLatin1String("rt"))
-        window.compareWithFile(side); // loaded on the thread pool, then side B
+        window.comparison().compareWithFile(side); // loaded on the thread pool, then side B
     if (!cl.mode.isEmpty()) compare.setMode(static_cast<ViewportMode>(kModeNames.indexOf(cl.mode)));
 }
 
 QDockWidget* dock_named(MainWindow& w, const QString& name) {
-    QDockWidget* docks[] = {w.sceneTreeDock(), w.meshDock(),    w.materialDock(),
-                            w.textureDock(),   w.cullingDock(), w.logDock(),
-                            w.timelineDock(),  w.labDock(),     w.accelerationDock()};
+    QDockWidget* docks[] = {w.docks().sceneTree, w.docks().mesh,    w.docks().material,
+                            w.docks().textures,  w.docks().culling, w.docks().log,
+                            w.docks().timeline,  w.docks().lab,     w.docks().acceleration};
     const auto i = kDockNames.indexOf(name);
     return i >= 0 ? docks[i] : nullptr;
 }
@@ -84,13 +89,13 @@ void when_layout_settles(MainWindow& window, std::function<void()> then) {
         const QSize size = window.viewport()->pixelSize();
         state->stable = size == state->last ? state->stable + 1 : 0;
         state->last = size;
-        const ViewportFrame& f = window.lastFrame();
+        const gpu::FrameRequest& f = window.frames().lastFrame().request;
         // Drawn at the final size, and the renderer's culling passes read back (the
         // culling dock's pass table), so that a screenshot shows them.
-        const bool drawn = !window.viewport()->isExposed() || !window.renderer() ||
+        const bool drawn = !window.viewport()->isExposed() || !window.frames().renderer() ||
                            (static_cast<int>(f.width) == size.width() &&
                             static_cast<int>(f.height) == size.height() &&
-                            (!window.context().scene() || window.cullingDock()->passRows() > 0));
+                            (!window.context().scene() || window.docks().culling->passRows() > 0));
         if (!drawn) window.viewport()->scheduleFrame();
         if ((state->stable >= kStablePolls && drawn) || ++state->polls >= kMaxPolls) {
             timer->stop();
@@ -322,10 +327,10 @@ void run_command_line(MainWindow& window, const CommandLine& cl, qint64 started_
     // One-shot: neither flag becomes the setting of later plain launches.
     if (!cl.language.isEmpty() && !window.setLanguage(cl.language, false))
         std::fprintf(stderr, "sherpa: no translation for '%s'\n", qPrintable(cl.language));
-    if (!cl.view.isEmpty()) window.setDebugView(cl.view, false);
-    window.environmentMenu().setDisplay(cl.display);
-    if (cl.environment) window.environmentMenu().setChoice(*cl.environment);
-    if (cl.gpu_culling) window.setGpuCulling(true);
+    if (!cl.view.isEmpty()) window.views().setDebugView(cl.view, false);
+    window.views().environmentMenu().setDisplay(cl.display);
+    if (cl.environment) window.views().environmentMenu().setChoice(*cl.environment);
+    if (cl.gpu_culling) window.views().setGpuCulling(true);
     // The Overlays menu's actions carry the overlay's name.
     for (QAction* act : window.findChildren<QAction*>())
         if (act->isCheckable() && cl.overlays.contains(act->data().toString()))
@@ -344,37 +349,38 @@ void run_command_line(MainWindow& window, const CommandLine& cl, qint64 started_
             }
     });
     // Always in the log dock; on stdout with --timing.
-    QObject::connect(&window, &MainWindow::firstFrame, &window, [&window, since_launch] {
-        window.logDock()->append(
-            LogDock::Level::Info,
-            QCoreApplication::translate("sherpa::editor::CommandLine",
-                                        "First frame of the scene %1 ms after launch.")
-                .arg(since_launch(), 0, 'f', 1));
-    });
+    QObject::connect(
+        &window.frames(), &RenderController::firstFrame, &window, [&window, since_launch] {
+            window.docks().log->append(
+                LogDock::Level::Info,
+                QCoreApplication::translate("sherpa::editor::CommandLine",
+                                            "First frame of the scene %1 ms after launch.")
+                    .arg(since_launch(), 0, 'f', 1));
+        });
     if (cl.timing) {
-        QObject::connect(&window, &MainWindow::sceneLoaded, &window,
+        QObject::connect(&window.loads(), &LoadController::sceneLoaded, &window,
                          [since_launch](const QString& spec, double ms) {
                              std::printf("sherpa: %s loaded in %.1f ms (%.1f ms after launch)\n",
                                          qPrintable(spec), ms, since_launch());
                              std::fflush(stdout);
                          });
-        QObject::connect(&window, &MainWindow::firstFrame, &window, [since_launch] {
+        QObject::connect(&window.frames(), &RenderController::firstFrame, &window, [since_launch] {
             std::printf("sherpa: first frame of the scene %.1f ms after launch\n", since_launch());
             std::fflush(stdout);
         });
     }
     if (!cl.select.isEmpty())
-        QObject::connect(&window, &MainWindow::sceneLoaded, &window, [&window, cl] {
-            if (!window.selectNodeNamed(cl.select))
+        QObject::connect(&window.loads(), &LoadController::sceneLoaded, &window, [&window, cl] {
+            if (!window.selection().selectNodeNamed(cl.select))
                 std::fprintf(stderr, "sherpa: no node '%s'\n", qPrintable(cl.select));
         });
     if (!cl.mode.isEmpty() || !cl.compare_with.isEmpty())
         QObject::connect(
-            &window, &MainWindow::sceneLoaded, &window,
+            &window.loads(), &LoadController::sceneLoaded, &window,
             [&window, cl] { apply_viewport_mode(window, cl); }, Qt::SingleShotConnection);
     if (cl.time >= 0.0)
-        QObject::connect(&window, &MainWindow::sceneLoaded, &window,
-                         [&window, t = cl.time] { window.timelineDock()->scrubTo(t); });
+        QObject::connect(&window.loads(), &LoadController::sceneLoaded, &window,
+                         [&window, t = cl.time] { window.docks().timeline->scrubTo(t); });
     if (!cl.screenshot.isEmpty()) {
         auto failed = std::make_shared<bool>(false);
         const auto shoot = [&window, cl, failed] {
@@ -389,17 +395,17 @@ void run_command_line(MainWindow& window, const CommandLine& cl, qint64 started_
                 if (cl.quit) QCoreApplication::exit(!saved ? 3 : *failed ? 1 : 0);
             });
         };
-        QObject::connect(&window, &MainWindow::sceneLoaded, &window, shoot,
+        QObject::connect(&window.loads(), &LoadController::sceneLoaded, &window, shoot,
                          Qt::SingleShotConnection);
         QObject::connect(
-            &window, &MainWindow::loadFailed, &window,
+            &window.loads(), &LoadController::loadFailed, &window,
             [shoot, failed] {
                 *failed = true;
                 shoot();
             },
             Qt::SingleShotConnection);
     }
-    window.openScene(cl.scene.isEmpty() ? QStringLiteral("builtin:default") : cl.scene);
+    window.loads().openScene(cl.scene.isEmpty() ? QStringLiteral("builtin:default") : cl.scene);
 }
 
 } // namespace sherpa::editor

@@ -3,7 +3,7 @@
 // Ray traced, Split, Difference, and what side B of a comparison draws (the ray
 // tracer, another debug view, another file, this file with its source textures or
 // with tangents made by another method). Actions in, one plain state out
-// (ViewportComparison, which the main window puts into every ViewportFrame).
+// (ViewportComparison, which CompareController puts into every ViewportRequest).
 #include <QObject>
 
 #include <optional>

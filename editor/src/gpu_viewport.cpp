@@ -77,14 +77,24 @@ void GpuViewport::setReducedFramePrepass(bool prepass) {
     impl_->reduced_prepass = prepass;
 }
 
-void GpuViewport::setMissingTexturesChecker(bool checker) {
-    impl_->missing = checker ? gpu::MissingTextures::Checker : gpu::MissingTextures::Neutral;
-}
-
-void GpuViewport::setSession(SharedSession session) {
-    if (session != impl_->session) impl_->culler.reset();
+GpuViewport::Uploaded GpuViewport::load(SharedSession session, const ViewportRequest& frame,
+                                        bool missing_checker) {
+    // The old scene leaves first (its memory is free for the new one), and the stream
+    // policy and missing-texture mode are set before the one upload.
+    impl_->culler.reset();
+    impl_->session.reset();
+    impl_->renderer->unload();
+    impl_->missing =
+        missing_checker ? gpu::MissingTextures::Checker : gpu::MissingTextures::Neutral;
+    impl_->all_streams = gpu::needs_all_streams(frame.request);
     impl_->session = std::move(session);
     upload();
+    Uploaded out;
+    if (const gpu::GpuScene* scene = impl_->renderer->scene())
+        out.textureBytes = scene->materials().textures().gpu_bytes();
+    if (const gpu::AccelerationStats* stats = impl_->renderer->resident().acceleration)
+        out.acceleration = std::make_shared<const gpu::AccelerationStats>(*stats);
+    return out;
 }
 
 // The current scene to the GPU with the current stream policy.
@@ -122,11 +132,8 @@ QStringList GpuViewport::setEnvironment(const gpu::EnvironmentChoice& choice) {
     return out;
 }
 
-void GpuViewport::useStreamsFor(const ViewportFrame& frame) {
-    gpu::FrameRequest settings;
-    settings.view = static_cast<gpu::DebugView>(frame.view);
-    settings.overlays = frame.overlays;
-    const bool all = gpu::needs_all_streams(settings);
+void GpuViewport::useStreamsFor(const ViewportRequest& frame) {
+    const bool all = gpu::needs_all_streams(frame.request);
     if (all == impl_->all_streams) return;
     impl_->all_streams = all;
     upload();
@@ -144,11 +151,6 @@ bool GpuViewport::rayTracing() const {
     return impl_->context->info().ray_tracing_enabled;
 }
 
-std::shared_ptr<const gpu::AccelerationStats> GpuViewport::accelerationStats() const {
-    const gpu::AccelerationStats* stats = impl_->renderer->resident().acceleration;
-    return stats ? std::make_shared<const gpu::AccelerationStats>(*stats) : nullptr;
-}
-
 QStringList GpuViewport::lastPassTimes() const {
     QStringList out;
     if (!impl_->presenter) return out;
@@ -159,12 +161,6 @@ QStringList GpuViewport::lastPassTimes() const {
 
 void GpuViewport::finish() {
     impl_->context->wait_idle();
-}
-
-double GpuViewport::lastGpuMs() const {
-    if (!impl_->presenter) return -1.0;
-    const gpu::FrameStats& s = impl_->completed;
-    return s.passes.empty() ? -1.0 : s.gpu_ms;
 }
 
 void GpuViewport::releaseSurface() {
@@ -185,26 +181,8 @@ void apply_display(const ViewportDisplay& d, gpu::FrameRequest& settings) {
     settings.energy_compensation = d.energyCompensation;
 }
 
-gpu::FrameRequest frame_request(const ViewportFrame& frame, float scale, bool reduced_prepass) {
-    gpu::FrameRequest settings;
-    settings.width = frame.width;
-    settings.height = frame.height;
-    settings.view = static_cast<gpu::DebugView>(frame.view);
-    settings.overlays = frame.overlays;
-    settings.camera = gpu::explicit_camera(frame.camera);
-    settings.uv_checker_density = frame.checkerDensity;
-    settings.highlight_instance = frame.highlightInstance;
-    settings.highlight_triangle = frame.highlightTriangle;
-    settings.highlight_vertex = frame.highlightVertex;
-    settings.highlight_outline = frame.outlineInstances;
-    settings.cull = frame.gpuCulling ? gpu::CullPath::Gpu : gpu::CullPath::Cpu;
-    settings.cull_method = frame.cullMethod;
-    settings.pose = frame.pose;
-    settings.selected_joint = frame.selectedJoint;
-    settings.cascades = frame.shadowCascades;
-    settings.shadow_pcf_taps = frame.shadowPcfTaps;
-    apply_display(frame.display, settings);
-    if (frame.frozenCulling) settings.freeze_cull = gpu::explicit_camera(*frame.frozenCulling);
+gpu::FrameRequest drawn_request(const ViewportRequest& frame, float scale, bool reduced_prepass) {
+    gpu::FrameRequest settings = frame.request;
     // A reduced frame means a slow device while the camera moves: the shadow cascades
     // follow the camera and cost the same at any resolution (DamagedHelmet on lavapipe:
     // 165 of 245 ms), so moving frames go without them; the still frame has them.
@@ -230,7 +208,7 @@ gpu::FrameRequest frame_request(const ViewportFrame& frame, float scale, bool re
     return settings;
 }
 
-void GpuViewport::preparePresenter(std::uint64_t surface, const ViewportFrame& frame) {
+void GpuViewport::preparePresenter(std::uint64_t surface, const gpu::FrameRequest& frame) {
     if (!impl_->presenter || impl_->surface != surface) {
         impl_->presenter.reset();
         // Not FIFO: the render thread must not block on the display's refresh, and
@@ -251,11 +229,37 @@ void GpuViewport::preparePresenter(std::uint64_t surface, const ViewportFrame& f
     }
 }
 
-bool GpuViewport::present(std::uint64_t surface, const ViewportFrame& frame, float scale) {
+PresentOutcome GpuViewport::present(std::uint64_t surface, const ViewportRequest& frame,
+                                    float scale) {
+    return outcome(draw(surface, frame, scale));
+}
+
+PresentOutcome GpuViewport::outcome(bool shown) const {
+    const Impl& i = *impl_;
+    PresentOutcome out;
+    out.shown = shown;
+    out.refused = i.refusal;
+    out.difference = i.difference;
+    out.path_traced = i.path_traced;
+    out.path_samples = i.path_samples;
+    out.path_error = i.path_error;
+    // GPU time (timestamps, first to last pass) of the latest completed frame.
+    if (i.presenter && !i.completed.passes.empty()) out.gpu_ms = i.completed.gpu_ms;
+    const auto& h = i.renderer->cull_history();
+    if (h.size() > 0) {
+        const gpu::CullFrame& f = h[h.size() - 1];
+        out.cull_passes = true;
+        out.passes = f.passes;
+        out.cached_shadows = !f.shadows_rendered;
+    }
+    return out;
+}
+
+bool GpuViewport::draw(std::uint64_t surface, const ViewportRequest& frame, float scale) {
     impl_->refusal.clear();
-    if (!surface || frame.width == 0 || frame.height == 0) return false;
-    const gpu::FrameRequest settings = frame_request(frame, scale, impl_->reduced_prepass);
-    preparePresenter(surface, frame);
+    if (!surface || frame.request.width == 0 || frame.request.height == 0) return false;
+    const gpu::FrameRequest settings = drawn_request(frame, scale, impl_->reduced_prepass);
+    preparePresenter(surface, frame.request);
     impl_->renderer->set_hidden_nodes(frame.hiddenNodes); // unchanged: one comparison
     if (frame.compare.comparing()) return presentComparison(frame, settings, scale);
     impl_->b = {}; // side B lives only while comparing
@@ -296,26 +300,6 @@ void GpuViewport::notePathSamples(const gpu::FrameRequest& settings) {
     }
 }
 
-bool GpuViewport::pathTraced() const {
-    return impl_->path_traced;
-}
-
-std::uint32_t GpuViewport::pathSamples() const {
-    return impl_->path_samples;
-}
-
-double GpuViewport::pathError() const {
-    return impl_->path_error;
-}
-
-QString GpuViewport::lastRefusal() const {
-    return impl_->refusal;
-}
-
-DifferenceNumbers GpuViewport::lastDifference() const {
-    return impl_->difference;
-}
-
 std::optional<GpuMaterialReadback> GpuViewport::readMaterial(int material) {
     if (!scene()) return std::nullopt;
     std::optional<gpu::MaterialReadback> r =
@@ -326,23 +310,7 @@ std::optional<GpuMaterialReadback> GpuViewport::readMaterial(int material) {
 
 } // namespace sherpa::editor
 
-namespace sherpa::editor {
-
-std::uint64_t GpuViewport::textureBytes() const {
-    const gpu::GpuScene* scene = impl_->renderer->scene();
-    return scene ? scene->materials().textures().gpu_bytes() : 0;
-}
-
-bool GpuViewport::lastCullPasses(std::vector<CullStats>& passes, bool& cached_shadows) const {
-    const auto& h = impl_->renderer->cull_history();
-    if (h.size() == 0) return false;
-    const gpu::CullFrame& f = h[h.size() - 1];
-    passes = f.passes;
-    cached_shadows = !f.shadows_rendered;
-    return true;
-}
-
-} // namespace sherpa::editor
+namespace sherpa::editor {} // namespace sherpa::editor
 
 namespace sherpa::editor {
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <sherpa/render/environment.h>
+#include <sherpa/render/frame_request.h>
 #include <sherpa/scene/animation.h>
 #include <sherpa/scene/camera_spec.h>
 #include <sherpa/scene/culling.h>
@@ -28,7 +29,6 @@ class QVulkanInstance;
 namespace sherpa::gpu {
 struct AccelerationStats;
 class Renderer;
-struct FrameRequest;
 } // namespace sherpa::gpu
 
 namespace sherpa::editor {
@@ -50,31 +50,37 @@ struct ViewportDisplay {
 // window lit alike reads (the viewport, a comparison's side B, the Lab).
 void apply_display(const ViewportDisplay& display, gpu::FrameRequest& settings);
 
-// What the window wants drawn; mapped to gpu::FrameRequest inside.
-struct ViewportFrame {
-    std::uint32_t width = 0, height = 0; // pixels
-    CameraSpec camera;
-    std::uint32_t view = 0;       // gpu::DebugView (ViewCatalog ids), Lit
-    std::uint32_t overlays = 0;   // gpu::Overlay bits
-    float checkerDensity = 32.0f; // uv checker views: checks per UV unit
-    // Selection highlight: a scene instance, and a triangle / vertex of its mesh.
-    std::optional<std::uint32_t> highlightInstance, highlightTriangle, highlightVertex;
-    // More scene instances outlined: the selected node's own and, for a node without
-    // a mesh, its subtree's (FrameRequest::highlight_outline).
-    std::vector<std::uint32_t> outlineInstances;
-    bool gpuCulling = false; // the renderer's GPU-driven culling path
-    CullMethod cullMethod = CullMethod::PVertex;
-    std::optional<CameraSpec> frozenCulling;    // cull from this camera instead
-    std::shared_ptr<const Pose> pose;           // the timeline's; null: the scene as loaded
-    std::optional<std::uint32_t> selectedJoint; // a joint node (skeleton, joint influence)
-    // Nodes unchecked in the scene tree (EditorContext::hiddenNodes()); null: all shown.
+// What the window wants drawn: the engine's FrameRequest as the window's controllers
+// fill it (full size; GpuViewport::present() drops shadows from reduced frames, and
+// overlays and highlight where rays draw), and what the viewport draws around it.
+struct ViewportRequest {
+    gpu::FrameRequest request;
+    // Nodes unchecked in the scene tree (EditorContext::hiddenNodes()), given to the
+    // renderer; null: all shown.
     std::shared_ptr<const std::vector<bool>> hiddenNodes;
     ViewportComparison compare;   // raster, ray traced, split or difference
     SharedSession compareSession; // SideB::OtherFile: the other file
-    // Shadow cascades and PCF taps (0: the device's default), as the Lab's shadows
-    // family applies them; the map resolution is the viewport renderer's, fixed.
-    std::uint32_t shadowCascades = kDefaultShadowCascades, shadowPcfTaps = 0;
-    ViewportDisplay display;
+};
+
+// What one present() did, and what the renderer measured by then.
+struct PresentOutcome {
+    bool shown = false;       // false: skipped (swapchain recreated) or refused
+    double gpu_ms = -1.0;     // timestamps of the latest completed frame
+    bool cull_passes = false; // the renderer's culling passes are known
+    // The last presented frame's culling passes from the renderer's history (camera,
+    // then each cascade); `cached_shadows`: the cascades were reused, not drawn.
+    std::vector<CullStats> passes;
+    bool cached_shadows = false;
+    // Not drawn: what the ray tracer refused (a view without a ray formula, a posed
+    // frame...); empty when it drew.
+    QString refused;
+    DifferenceNumbers difference; // comparison frames: the latest completed difference
+    // Path traced (ray-traced mode, lit view): samples per pixel accumulated as of the
+    // latest completed frame (kFramesInFlight behind) and the estimated relative error,
+    // measured at 4, 8, 16, ... samples (-1 before the first measurement).
+    bool path_traced = false;
+    std::uint32_t path_samples = 0;
+    double path_error = -1.0;
 };
 
 class GpuViewport {
@@ -94,22 +100,28 @@ public:
     // for a CPU device, its name): plain data for tex::prepare_scene_textures() on
     // any thread.
     tex::TextureTarget textureTarget() const;
-    // Material slots whose texture is missing or undecodable: a magenta/black checker
-    // in colour slots (true), or the glTF defaults (false). Applies at the next setSession().
-    void setMissingTexturesChecker(bool checker);
     // Whether frames drawn reduced (scale < 1, moving on a slow device) keep the
     // depth prepass the renderer would choose. Off by default: at a third of each
     // side DamagedHelmet's prepass saves about as much shading as it costs on
     // lavapipe (sherpa-bench-orbit: 1.00-1.22x the frame rate without it, four runs).
     void setReducedFramePrepass(bool prepass);
-    // Uploads the session's scene (replacing the previous one; null unloads) with the
-    // textures the loader prepared for it (none: uploaded without textures). The
-    // viewport keeps the session alive while its scene is on the GPU.
-    void setSession(SharedSession session);
+    // What an upload put on the GPU, for the docks.
+    struct Uploaded {
+        std::uint64_t textureBytes = 0; // the scene's textures
+        // A copy of the scene's BLAS/TLAS statistics; null without ray tracing or a scene.
+        std::shared_ptr<const gpu::AccelerationStats> acceleration;
+    };
+    // Uploads the session's scene with the textures the loader prepared for it (none:
+    // uploaded without textures), the previous scene unloaded first; null unloads. The
+    // streams are those the view and overlays of `frame` read (useStreamsFor()); slots
+    // whose texture is missing or undecodable show a magenta/black checker in colour
+    // slots (`missing_checker`) or the glTF defaults. The viewport keeps the session
+    // alive while its scene is on the GPU.
+    Uploaded load(SharedSession session, const ViewportRequest& frame, bool missing_checker);
     // The streams the view and overlays of `frame` read: a debug view of streams no
     // material reads uploads the scene again with every stream (when the view changes,
     // never per frame).
-    void useStreamsFor(const ViewportFrame& frame);
+    void useStreamsFor(const ViewportRequest& frame);
     // The environment lighting lit frames: made on the GPU now (prefiltered), replacing
     // the one before; Kind::None removes it. Returns the warnings (an unreadable file
     // and the room used instead, NaN texels, ...).
@@ -118,50 +130,23 @@ public:
     const Scene* scene() const;
     // Whether the renderer ray traces (device support and --rt on).
     bool rayTracing() const;
-    // A copy of the uploaded scene's BLAS/TLAS statistics; null without ray tracing
-    // or a scene.
-    std::shared_ptr<const gpu::AccelerationStats> accelerationStats() const;
     // Presents one frame on `surface` (the swapchain is created on first use and
     // recreated when the size changes), each side drawn at `scale` of the frame's
-    // size and scaled up, without shadows (interaction on slow devices). False when
-    // it was skipped.
-    bool present(std::uint64_t surface, const ViewportFrame& frame, float scale = 1.0f);
-    // Why the last present() drew nothing: what the ray tracer refused (a view
-    // without a ray formula, a posed frame...); empty when it drew.
-    QString lastRefusal() const;
-    // The path-traced lit view (ray-traced mode): samples per pixel accumulated as of
-    // the latest completed frame (kFramesInFlight behind) and the estimated relative error,
-    // measured at 4, 8, 16, ... samples (-1 before the first measurement). Accumulation stops at
-    // kPathSamples; every change starts it over.
+    // size and scaled up, without shadows (interaction on slow devices).
+    PresentOutcome present(std::uint64_t surface, const ViewportRequest& frame, float scale = 1.0f);
+    // Accumulation of the path-traced lit view (ray-traced mode) stops at this many
+    // samples per pixel; every change starts it over.
     static constexpr std::uint32_t kPathSamples = 1024;
-    bool pathTraced() const; // the last present() drew the path tracer
-    std::uint32_t pathSamples() const;
-    double pathError() const;
-    // The difference numbers of the latest completed comparison frame.
-    DifferenceNumbers lastDifference() const;
     // Waits until the queue is idle (the presented frame is on screen).
     void finish();
     // Drops the swapchain (before the window's surface goes away).
     void releaseSurface();
     // The material record as stored in the GPU buffer, and bindless slot -> texture.
     std::optional<GpuMaterialReadback> readMaterial(int material);
-    // Bytes of the loaded scene's textures on the GPU (0 without a scene).
-    std::uint64_t textureBytes() const;
-    // GPU time (timestamps, first to last pass) of the latest completed frame; -1
-    // before one completed or without timestamps.
-    double lastGpuMs() const;
-    // The same frame pass by pass: "NAME MS ms" each, in frame order.
+    // The latest completed frame pass by pass (GPU timestamps): "NAME MS ms" each, in
+    // frame order.
     QStringList lastPassTimes() const;
     static constexpr std::size_t kFramesInFlight = 2; // gpu::Renderer::kFramesInFlight
-    // The last presented frame's culling passes from the renderer's history (camera,
-    // then each cascade); false before any culled frame. `cached_shadows`: the cascades were
-    // reused, not drawn.
-    bool lastCullPasses(std::vector<CullStats>& passes, bool& cached_shadows) const;
-
-private:
-    void notePathSamples(const gpu::FrameRequest& settings);
-
-public:
     // Runs the renderer's GPU culling shader once for `frustum` over every instance
     // of the scene and compares its visible set with `cpu_visible` (per scene
     // instance). False without a scene.
@@ -184,9 +169,14 @@ private:
     struct Impl;
     explicit GpuViewport(std::unique_ptr<Impl> impl);
     void upload();
-    void preparePresenter(std::uint64_t surface, const ViewportFrame& frame);
+    // present()'s frame; false when it was skipped or refused.
+    bool draw(std::uint64_t surface, const ViewportRequest& frame, float scale);
+    // What the renderer measured as of the frame just presented.
+    PresentOutcome outcome(bool shown) const;
+    void notePathSamples(const gpu::FrameRequest& settings);
+    void preparePresenter(std::uint64_t surface, const gpu::FrameRequest& frame);
     // gpu_viewport_compare.cpp: side B loaded as `frame` asks, both drawn and composited.
-    bool presentComparison(const ViewportFrame& frame, const gpu::FrameRequest& a, float scale);
+    bool presentComparison(const ViewportRequest& frame, const gpu::FrameRequest& a, float scale);
     std::unique_ptr<Impl> impl_;
 };
 

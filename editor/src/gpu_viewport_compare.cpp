@@ -15,7 +15,7 @@ namespace sherpa::editor {
 
 namespace {
 
-gpu::FrameRequest side_b_settings(const ViewportFrame& frame, const gpu::FrameRequest& a) {
+gpu::FrameRequest side_b_settings(const ViewportRequest& frame, const gpu::FrameRequest& a) {
     gpu::FrameRequest b = a;
     switch (frame.compare.side) {
     case SideB::RayTraced:
@@ -49,7 +49,7 @@ DifferenceNumbers numbers(const gpu::ComparisonStats& s, float heat_max) {
 
 } // namespace
 
-bool GpuViewport::presentComparison(const ViewportFrame& frame, const gpu::FrameRequest& a_in,
+bool GpuViewport::presentComparison(const ViewportRequest& frame, const gpu::FrameRequest& a_in,
                                     float scale) {
     Impl& impl = *impl_;
     const ViewportComparison& c = frame.compare;

@@ -21,7 +21,7 @@ struct GpuViewport::Impl {
     std::uint32_t width = 0, height = 0;
     SharedSession session; // on the GPU: its scene and prepared textures
     bool all_streams = false;
-    gpu::MissingTextures missing = gpu::MissingTextures::Checker; // setMissingTexturesChecker()
+    gpu::MissingTextures missing = gpu::MissingTextures::Checker; // load()
     bool reduced_prepass = false;                                 // setReducedFramePrepass()
     std::unique_ptr<gpu::GpuCullChecker> culler; // CPU/GPU agreement checks, built per scene
     // The environment lighting side A (setEnvironment), kept to light side B alike.
@@ -48,7 +48,9 @@ struct GpuViewport::Impl {
 void load_session(gpu::Renderer& renderer, const SceneSession& session, bool all_streams,
                   gpu::MissingTextures missing);
 
-// The engine's settings for what the window wants drawn (side A of a comparison).
-gpu::FrameRequest frame_request(const ViewportFrame& frame, float scale, bool reduced_prepass);
+// The request of side A as drawn at `scale`: without shadows (and the prepass unless
+// `reduced_prepass`) when reduced, without overlays and highlight where rays draw or
+// two sides are compared, through the path tracer in the ray-traced mode.
+gpu::FrameRequest drawn_request(const ViewportRequest& frame, float scale, bool reduced_prepass);
 
 } // namespace sherpa::editor

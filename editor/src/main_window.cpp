@@ -5,11 +5,9 @@
 #include <QCloseEvent>
 #include <QDragEnterEvent>
 #include <QDropEvent>
-#include <QElapsedTimer>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QMessageBox>
 #include <QMimeData>
 #include <QPainter>
 #include <QProgressBar>
@@ -21,26 +19,26 @@
 #include <QVulkanInstance>
 
 #include "acceleration_dock.h"
+#include "compare_controller.h"
 #include "compare_controls.h"
 #include "culling_dock.h"
 #include "culling_monitor.h"
 #include "difference_legend.h"
-#include "gpu_viewport.h"
 #include "lab_dock.h"
+#include "load_controller.h"
 #include "log_dock.h"
 #include "material_dock.h"
 #include "mesh_dock.h"
-#include "picking.h"
-#include "render_thread.h"
+#include "motion_controller.h"
+#include "render_controller.h"
 #include "scene_tree_dock.h"
+#include "selection_controller.h"
 #include "texture_dock.h"
 #include "timeline_dock.h"
 #include "validation_dock.h"
-#include "view_catalog.h"
+#include "view_controller.h"
 #include "view_fitting.h"
 #include "viewport_window.h"
-
-#include <sherpa/scene/framing.h>
 
 namespace sherpa::editor {
 
@@ -67,10 +65,6 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent, bool ray_tracin
     culling_ = new CullingMonitor(context_, this);
     // Named children: tests and tools find them with findChild(), not through accessors.
     culling_->setObjectName(QStringLiteral("cullingMonitor"));
-    loader_.setParent(this); // members: they leave the children before QObject deletes them
-    loader_.setObjectName(QStringLiteral("sceneLoader"));
-    compare_loader_.setParent(this);
-    compare_loader_.setObjectName(QStringLiteral("compareLoader"));
 
     viewport_ = new ViewportWindow(vulkan_);
     viewport_container_ = QWidget::createWindowContainer(viewport_, this);
@@ -83,11 +77,12 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent, bool ray_tracin
     centre_layout->setContentsMargins(0, 0, 0, 0);
     centre_layout->setSpacing(0);
     legend_ = new DifferenceLegend(centre);
+    legend_->setObjectName(QStringLiteral("differenceLegend"));
     legend_->hide();
     centre_layout->addWidget(viewport_container_, 1);
     centre_layout->addWidget(legend_);
     setCentralWidget(centre);
-    compare_ = new CompareControls(this);
+    compare_controls_ = new CompareControls(this);
 
     progress_ = new QProgressBar(this);
     progress_->setObjectName(QStringLiteral("loadProgress"));
@@ -103,20 +98,18 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent, bool ray_tracin
     statusBar()->addPermanentWidget(cancel_);
     statusBar()->addPermanentWidget(frame_label_);
 
-    last_report_ = std::make_unique<FrameReport>();
     createDocks();
     createActions();
     createMenus();
-    setupEnvironment();
-    connectActions();
+    createControllers();
     // Its device is made on the render thread while the window shows; the first
     // scene starts loading once it is known (its textures are prepared for it).
-    createRenderer();
+    frames_->start(vulkan_, ray_tracing_asked_);
 
     resize(1600, 1000);
     restoreGeometry(settings_.geometry());
     restoreState(settings_.windowState());
-    setDebugView(settings_.lastView(), false);
+    views_->setDebugView(settings_.lastView(), false);
     QString language = settings_.language();
     // The system default is not a choice: leave the setting empty so it follows the system.
     if (language.isEmpty()) language = Translations::systemDefault();
@@ -127,22 +120,65 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent, bool ray_tracin
 
 MainWindow::~MainWindow() {
     // The swapchain must go before the window's surface does; the viewport's signals
-    // would reach this half-destroyed window while QWidget closes it.
+    // and frame callback would reach this half-destroyed window while QWidget closes it.
     viewport_->disconnect(this);
-    render_.reset(); // finishes the frame in flight, frees the engine on its thread
+    viewport_->setFrameCallback({});
+    delete frames_; // finishes the frame in flight, frees the engine on its thread
+    frames_ = nullptr;
+}
+
+// The controllers, each given what it reads and the parts it acts on; their order is
+// that of their dependencies (and of EditorContext::sceneReady's receivers).
+void MainWindow::createControllers() {
+    const bool device_pending = vulkan_ != nullptr;
+    motion_ =
+        new MotionController(context_, *docks_.timeline, *culling_, *docks_.log, *viewport_, this);
+    selection_ = new SelectionController(context_, docks_, *viewport_, this);
+    frames_ = new RenderController(context_, *culling_, docks_, *viewport_, *frame_label_,
+                                   *a_->missing_checker, this);
+    loads_ = new LoadController(context_, settings_, *docks_.log, *viewport_, *docks_.textures, *a_,
+                                *progress_, *cancel_, *this, device_pending);
+    views_ = new ViewController(context_, settings_, *culling_, docks_, *viewport_, *a_, *frames_,
+                                *this);
+    compare_ = new CompareController(context_, *compare_controls_, *legend_, *docks_.log,
+                                     *viewport_, *loads_, *frames_, *this);
+    frames_->setFrameSource([this] {
+        ViewportRequest frame;
+        const QSize pixels = viewport_->pixelSize();
+        frame.request.width = static_cast<std::uint32_t>(pixels.width());
+        frame.request.height = static_cast<std::uint32_t>(pixels.height());
+        frame.request.camera = gpu::explicit_camera(viewport_->camera().spec());
+        views_->fill(frame.request);
+        selection_->fill(frame);
+        motion_->fill(frame.request);
+        compare_->fill(frame);
+        return frame;
+    });
+    // The device made: the comparison's ray-traced modes (CompareController), the
+    // environment built, then the scene asked for meanwhile loaded.
+    connect(frames_, &RenderController::deviceKnown, views_,
+            [this](const std::optional<tex::TextureTarget>& target) {
+                if (target) views_->applyEnvironment();
+                loads_->deviceKnown(target);
+            });
+    connect(loads_, &LoadController::sceneLoaded, views_, &ViewController::cameraChanged);
+    connect(loads_, &LoadController::sceneLoaded, this, &MainWindow::updateStatus);
+    connect(&context_, &EditorContext::sceneReady, this, &MainWindow::updateStatus);
+    connect(docks_.sceneTree, &SceneTreeDock::jumpToCameraRequested, views_,
+            &ViewController::jumpToCamera);
+    connect(a_->reset_layout, &QAction::triggered, this, &MainWindow::resetLayout);
 }
 
 void MainWindow::createDocks() {
-    scene_tree_ = new SceneTreeDock(context_, this);
-    mesh_ = new MeshDock(context_, this);
-    material_ = new MaterialDock(context_, this);
-    textures_ = new TextureDock(context_, this);
-    culling_dock_ = new CullingDock(*culling_, this);
-    log_ = new LogDock(this);
-    lab_ = new LabDock(context_, this);
-    updateLabLighting();
-    acceleration_ = new AccelerationDock(context_, this);
-    validation_ = new ValidationDock(context_, this);
+    docks_.sceneTree = new SceneTreeDock(context_, this);
+    docks_.mesh = new MeshDock(context_, this);
+    docks_.material = new MaterialDock(context_, this);
+    docks_.textures = new TextureDock(context_, this);
+    docks_.culling = new CullingDock(*culling_, this);
+    docks_.log = new LogDock(this);
+    docks_.lab = new LabDock(context_, this);
+    docks_.acceleration = new AccelerationDock(context_, this);
+    docks_.validation = new ValidationDock(context_, this);
     for (QDockWidget* d : findChildren<QDockWidget*>()) {
         // A dock's width is the user's, never its content's: without this, a long
         // summary line (selecting a primitive) widens the mesh dock and squeezes the
@@ -155,45 +191,53 @@ void MainWindow::createDocks() {
         }
     }
     // Content hashes: when a column must cut one, keep both ends.
-    if (auto* view = textures_->findChild<QAbstractItemView*>())
+    if (auto* view = docks_.textures->findChild<QAbstractItemView*>())
         view->setTextElideMode(Qt::ElideMiddle);
-    timeline_ = new TimelineDock(context_, this);
+    docks_.timeline = new TimelineDock(context_, this);
     resetLayout();
 }
 
 void MainWindow::resetLayout() {
+    const WindowDocks& d = docks_;
     // Two columns of tabs around the viewport, the primary dock of each in front:
     // the viewport keeps most of the window (≥ 55% at 1600×1000).
-    for (QDockWidget* d : findChildren<QDockWidget*>()) {
-        d->setFloating(false);
-        removeDockWidget(d);
+    for (QDockWidget* dock : findChildren<QDockWidget*>()) {
+        dock->setFloating(false);
+        removeDockWidget(dock);
     }
     // Vertical tabs: every dock title fits along the column's height, in any language.
     setTabPosition(Qt::LeftDockWidgetArea, QTabWidget::West);
     setTabPosition(Qt::RightDockWidgetArea, QTabWidget::East);
-    addDockWidget(Qt::LeftDockWidgetArea, scene_tree_);
+    addDockWidget(Qt::LeftDockWidgetArea, d.sceneTree);
     // Under the left column's tabs (split before they are tabbed), so that a message
     // that selects a node (the scene tree in front) leaves the list in view; shown for
     // files with messages.
-    splitDockWidget(scene_tree_, validation_, Qt::Vertical);
-    addDockWidget(Qt::RightDockWidgetArea, mesh_);
-    tabifyDockWidget(scene_tree_, culling_dock_);
-    tabifyDockWidget(culling_dock_, log_);
-    tabifyDockWidget(log_, acceleration_);
-    tabifyDockWidget(mesh_, material_);
-    tabifyDockWidget(material_, textures_);
-    tabifyDockWidget(textures_, lab_);
-    for (QDockWidget* d : findChildren<QDockWidget*>()) d->show();
-    scene_tree_->raise();
-    mesh_->raise();
-    resizeDocks({scene_tree_, mesh_}, {kLeftDockWidth, kRightDockWidth}, Qt::Horizontal);
-    showValidationForScene();
+    splitDockWidget(d.sceneTree, d.validation, Qt::Vertical);
+    addDockWidget(Qt::RightDockWidgetArea, d.mesh);
+    tabifyDockWidget(d.sceneTree, d.culling);
+    tabifyDockWidget(d.culling, d.log);
+    tabifyDockWidget(d.log, d.acceleration);
+    tabifyDockWidget(d.mesh, d.material);
+    tabifyDockWidget(d.material, d.textures);
+    tabifyDockWidget(d.textures, d.lab);
+    for (QDockWidget* dock : findChildren<QDockWidget*>()) dock->show();
+    d.sceneTree->raise();
+    d.mesh->raise();
+    resizeDocks({d.sceneTree, d.mesh}, {kLeftDockWidth, kRightDockWidth}, Qt::Horizontal);
+    // Shown for files with messages (none while the window is made).
+    if (selection_)
+        selection_->showValidationForScene();
+    else
+        d.validation->hide();
     // The timeline under the viewport only (the side columns keep their height), shown
     // for scenes that move.
     setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
-    addDockWidget(Qt::BottomDockWidgetArea, timeline_);
-    showTimelineForScene();
+    addDockWidget(Qt::BottomDockWidgetArea, d.timeline);
+    if (motion_)
+        motion_->showTimelineForScene();
+    else
+        d.timeline->hide();
     // The tab bars exist once the layout has run: dock titles scroll, never elide
     // ("Szenenba…", "Proto…" in German).
     QTimer::singleShot(0, this, [this] {
@@ -202,96 +246,6 @@ void MainWindow::resetLayout() {
             bar->setUsesScrollButtons(true);
         }
     });
-}
-
-void MainWindow::showTimelineForScene() {
-    const Scene* scene = context_.scene();
-    timeline_->setVisible(scene && (!scene->animations.empty() || !scene->motions.empty()));
-}
-
-void MainWindow::logPoseOverflow() {
-    const Scene* scene = context_.scene();
-    const auto pose = timeline_->pose();
-    std::vector<std::uint32_t> nodes;
-    if (scene && pose) nodes = posed_overflow_nodes(*scene, *pose);
-    if (nodes == pose_overflow_logged_) return;
-    pose_overflow_logged_ = nodes;
-    for (std::uint32_t node : nodes)
-        log_->append(LogDock::Level::Warning,
-                     tr("At %1 s: %2")
-                         .arg(timeline_->time(), 0, 'g', 4)
-                         .arg(QString::fromStdString(posed_overflow_warning(*scene, node))));
-}
-
-void MainWindow::connectActions() {
-    // Actions out of the docks become context changes here, and only here.
-    connect(timeline_, &TimelineDock::poseChanged, this, [this] {
-        culling_->setPose(timeline_->pose()); // the culling dock follows the motion
-        logPoseOverflow();
-        viewport_->scheduleFrame();
-    });
-    connect(&context_, &EditorContext::sceneReady, this, &MainWindow::showTimelineForScene);
-    connect(&context_, &EditorContext::sceneReady, this, [this] { pose_overflow_logged_.clear(); });
-    connect(&context_, &EditorContext::sceneReady, this, &MainWindow::showValidationForScene);
-    connectValidation();
-    connect(scene_tree_, &SceneTreeDock::selectNodeRequested, &context_,
-            &EditorContext::selectNode);
-    connect(scene_tree_, &SceneTreeDock::selectMeshRequested, &context_,
-            &EditorContext::selectMesh);
-    connect(scene_tree_, &SceneTreeDock::selectMaterialRequested, &context_,
-            &EditorContext::selectMaterial);
-    connect(scene_tree_, &SceneTreeDock::visibilityRequested, &context_,
-            &EditorContext::setNodeVisible);
-    connect(scene_tree_, &SceneTreeDock::jumpToCameraRequested, this, &MainWindow::jumpToCamera);
-    connect(acceleration_, &AccelerationDock::selectMeshRequested, &context_,
-            &EditorContext::selectMesh);
-    connect(mesh_, &MeshDock::selectVertexRequested, &context_, &EditorContext::selectVertex);
-    connect(mesh_, &MeshDock::selectTriangleRequested, &context_, &EditorContext::selectTriangle);
-    connect(material_, &MaterialDock::selectTextureRequested, this, [this](int texture) {
-        context_.selectTexture(texture);
-        textures_->show();
-        textures_->raise();
-    });
-    connect(textures_, &TextureDock::selectTextureRequested, &context_,
-            &EditorContext::selectTexture);
-
-    connectLab();
-    connectCompare();
-    connect(&loader_, &SceneLoadJob::loaded, this, &MainWindow::onLoaded);
-    connect(&loader_, &SceneLoadJob::failed, this, &MainWindow::onLoadFailed);
-    connect(&loader_, &SceneLoadJob::progress, this, &MainWindow::onProgress);
-    connect(&loader_, &SceneLoadJob::canceled, this, [this](const QString& spec) {
-        log_->append(LogDock::Level::Info,
-                     tr("Loading %1 cancelled; the result is discarded.").arg(spec));
-        onProgress(LoadStep::Idle, 0, 0);
-        Q_EMIT loadCanceled(spec);
-    });
-    connect(cancel_, &QPushButton::clicked, this, &MainWindow::cancelLoad);
-
-    connect(viewport_, &ViewportWindow::cameraChanged, this, &MainWindow::onCameraChanged);
-    connect(viewport_, &ViewportWindow::clicked, this, [this](QPointF ndc) { pickAt(ndc); });
-    connect(viewport_, &ViewportWindow::frameAllRequested, this, [this] {
-        if (context_.scene()) viewport_->camera().frameAuto(*context_.scene());
-        onCameraChanged();
-    });
-    connect(viewport_, &ViewportWindow::frameSelectionRequested, this, &MainWindow::frameSelection);
-    connect(&context_, &EditorContext::selectionChanged, viewport_, &ViewportWindow::scheduleFrame);
-    connect(&context_, &EditorContext::visibilityChanged, viewport_,
-            &ViewportWindow::scheduleFrame);
-}
-
-QString MainWindow::debugView() const {
-    return ViewCatalog::viewName(view_);
-}
-
-bool MainWindow::setDebugView(const QString& name, bool remember) {
-    const std::optional<std::uint32_t> id = ViewCatalog::viewId(name);
-    if (!id) return false;
-    view_ = *id;
-    if (remember) settings_.setLastView(name);
-    retranslate(); // checks the matching menu entry
-    updateStreams();
-    return true;
 }
 
 bool MainWindow::setLanguage(const QString& code, bool remember) {
@@ -324,16 +278,7 @@ void MainWindow::updateStatus() {
 QImage MainWindow::screenshot() {
     // Widgets paint into the pixmap; the native viewport does not, so its frame is
     // composited from the renderer's readback when there is one.
-    const bool drawn = render_ && !gpu_failed_ && viewport_->isExposed();
-    if (drawn) {
-        // Drawn now at full size (not a reduced or earlier frame), and on screen.
-        last_frame_ = currentFrame();
-        render_->renderAndWait(last_frame_, viewport_->vulkanSurface());
-        // What the render thread posted back (texture bytes, frame times, passes) shows
-        // too, and the columns refitted for it (a zero-time timer each: a few rounds).
-        for (int round = 0; round < 3; ++round)
-            QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
-    }
+    const bool drawn = frames_->renderNow(); // drawn now at full size, and on screen
     QImage image = grab().toImage();
     if (drawn) {
         // The X server holds the presented frame: read it back like any window.
@@ -346,7 +291,7 @@ QImage MainWindow::screenshot() {
 
 void MainWindow::closeEvent(QCloseEvent* e) {
     if (remember_layout_) settings_.saveLayout(saveGeometry(), saveState());
-    loader_.cancel();
+    loads_->cancelLoad();
     QMainWindow::closeEvent(e);
 }
 
@@ -366,7 +311,7 @@ void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
 void MainWindow::dropEvent(QDropEvent* e) {
     for (const QUrl& url : e->mimeData()->urls())
         if (url.isLocalFile() && is_scene_file(url.toLocalFile())) {
-            openScene(url.toLocalFile());
+            loads_->openScene(url.toLocalFile());
             e->acceptProposedAction();
             return;
         }

@@ -26,15 +26,18 @@
 #include "difference_legend.h"
 #include "gpu_viewport.h"
 #include "lab_dock.h"
+#include "load_controller.h"
 #include "log_dock.h"
 #include "material_dock.h"
 #include "mesh_dock.h"
 #include "reload_controller.h"
+#include "render_controller.h"
 #include "scene_tree_dock.h"
 #include "texture_dock.h"
 #include "timeline_dock.h"
 #include "validation_dock.h"
 #include "view_catalog.h"
+#include "view_controller.h"
 #include "viewport_window.h"
 
 namespace sherpa::editor {
@@ -48,8 +51,8 @@ constexpr int kCheckerDensities[] = {4, 8, 16, 32, 64, 128};
 } // namespace
 
 void MainWindow::createActions() {
-    a_ = std::make_unique<Actions>();
-    Actions& a = *a_;
+    a_ = std::make_unique<WindowActions>();
+    WindowActions& a = *a_;
     a.open = new QAction(this);
     a.open->setShortcut(QKeySequence::Open);
     a.reload = new QAction(this);
@@ -65,6 +68,7 @@ void MainWindow::createActions() {
     a.fly->setCheckable(true);
     a.fly->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_G));
     a.reset_layout = new QAction(this);
+    a.reset_layout->setObjectName(QStringLiteral("resetLayoutAction"));
     a.freeze = new QAction(this);
     a.freeze->setCheckable(true);
     a.box_colouring = new QAction(this);
@@ -89,20 +93,12 @@ void MainWindow::createActions() {
         QAction* act = a.view_group->addAction(QString());
         act->setCheckable(true);
         act->setData(QString::fromLatin1(v.name));
-        connect(act, &QAction::triggered, this,
-                [this, act] { setDebugView(act->data().toString()); });
         a.view_actions.push_back(act);
     }
     for (const ViewEntry& o : ViewCatalog::overlays()) {
         auto* act = new QAction(this);
         act->setCheckable(true);
         act->setData(QString::fromLatin1(o.name));
-        const std::uint32_t bit = o.id;
-        connect(act, &QAction::toggled, this, [this, bit](bool on) {
-            overlays_ = on ? overlays_ | bit : overlays_ & ~bit;
-            updateStreams(); // an overlay may read streams no material does
-            retranslateOverlayButton();
-        });
         a.overlay_actions.push_back(act);
     }
     a.method_group = new QActionGroup(this);
@@ -110,7 +106,6 @@ void MainWindow::createActions() {
         QAction* act = a.method_group->addAction(QString());
         act->setCheckable(true);
         act->setChecked(m == culling_->method());
-        connect(act, &QAction::triggered, this, [this, m] { culling_->setMethod(m); });
         a.method_actions.push_back(act);
     }
     a.language_group = new QActionGroup(this);
@@ -125,9 +120,8 @@ void MainWindow::createActions() {
     for (const char* q : kQualities) {
         QAction* act = a.quality_group->addAction(QString());
         act->setCheckable(true);
+        act->setData(QString::fromLatin1(q));
         act->setChecked(settings_.textureQuality() == QLatin1String(q));
-        connect(act, &QAction::triggered, this,
-                [this, q] { settings_.setTextureQuality(QString::fromLatin1(q)); });
         a.quality_actions.push_back(act);
     }
     a.density_group = new QActionGroup(this);
@@ -136,58 +130,26 @@ void MainWindow::createActions() {
         act->setCheckable(true);
         act->setData(checks);
         act->setChecked(settings_.checkerDensity() == checks);
-        connect(act, &QAction::triggered, this, [this, checks] {
-            settings_.setCheckerDensity(checks);
-            viewport_->scheduleFrame();
-        });
         a.density_actions.push_back(act);
     }
     for (const char* spec : kBuiltins) {
         auto* act = new QAction(this);
-        connect(act, &QAction::triggered, this,
-                [this, spec] { openScene(QString::fromLatin1(spec)); });
+        act->setData(QString::fromLatin1(spec));
         a.builtin_actions.push_back(act);
     }
 
-    connect(a.open, &QAction::triggered, this, &MainWindow::openFileDialog);
-    connect(a.reload, &QAction::triggered, this, &MainWindow::reloadScene);
-    connect(a.close, &QAction::triggered, this, &MainWindow::closeScene);
+    // The controllers connect the rest (createControllers()).
     connect(a.quit, &QAction::triggered, this, &QWidget::close);
-    connect(a.clear_recent, &QAction::triggered, this, [this] { settings_.clearRecentFiles(); });
-    connect(a.frame_all, &QAction::triggered, viewport_, &ViewportWindow::frameAllRequested);
-    connect(a.frame_selection, &QAction::triggered, this, &MainWindow::frameSelection);
-    connect(a.fly, &QAction::toggled, viewport_, &ViewportWindow::setFlyMode);
-    connect(a.freeze, &QAction::toggled, culling_, &CullingMonitor::setFrozen);
-    connect(a.box_colouring, &QAction::toggled, this, &MainWindow::updateStreams);
-    // Materials resolve failed textures at upload: upload again (uploadScene reads it).
-    connect(a.missing_checker, &QAction::toggled, this, [this] {
-        if (render_) uploadScene();
-    });
-    connect(a.gpu_path, &QAction::toggled, culling_, &CullingMonitor::setGpuPath);
-    connect(culling_, &CullingMonitor::updated, viewport_, &ViewportWindow::scheduleFrame);
-    connect(a.reset_layout, &QAction::triggered, this, &MainWindow::resetLayout);
-    connect(a.cache_dir, &QAction::triggered, this, [this] {
-        const QString dir = QFileDialog::getExistingDirectory(this, tr("Texture cache directory"),
-                                                              settings_.cacheDirectory());
-        if (!dir.isEmpty()) settings_.setCacheDirectory(dir);
-    });
-    connect(textures_, &TextureDock::clearCacheRequested, this, &MainWindow::clearTextureCache);
-    connect(textures_, &TextureDock::recompressRequested, this, &MainWindow::recompressTexture);
-    connect(textures_, &TextureDock::openCacheFolderRequested, this, [this] {
-        QDir().mkpath(settings_.cacheDirectory());
-        QDesktopServices::openUrl(QUrl::fromLocalFile(settings_.cacheDirectory()));
-    });
     connect(a.about, &QAction::triggered, this, &MainWindow::showAbout);
     connect(a.about_qt, &QAction::triggered, qApp, &QApplication::aboutQt);
 }
 
 void MainWindow::createMenus() {
-    Actions& a = *a_;
+    WindowActions& a = *a_;
     QMenuBar* bar = menuBar();
     a.file = bar->addMenu(QString());
     a.file->addAction(a.open);
     a.recent = a.file->addMenu(QString());
-    connect(a.recent, &QMenu::aboutToShow, this, &MainWindow::rebuildRecentMenu);
     a.builtin = a.file->addMenu(QString());
     for (QAction* act : a.builtin_actions) a.builtin->addAction(act);
     a.file->addSeparator();
@@ -208,33 +170,17 @@ void MainWindow::createMenus() {
     a.view->addAction(a.frame_selection);
     a.view->addAction(a.fly);
     a.view->addAction(a.missing_checker);
-    a.view->addMenu(compare_->menu());
+    a.view->addMenu(compare_controls_->menu());
     a.cameras = a.view->addMenu(QString());
-    connect(a.cameras, &QMenu::aboutToShow, this, [this] {
-        Actions& acts = *a_;
-        acts.cameras->clear();
-        const Scene* s = context_.scene();
-        if (!s || s->placed_cameras.empty()) {
-            acts.cameras->addAction(tr("(the scene has no cameras)"))->setEnabled(false);
-            return;
-        }
-        for (std::size_t i = 0; i < s->placed_cameras.size(); ++i) {
-            const Camera& c = s->cameras[s->placed_cameras[i].camera];
-            const QString name =
-                c.name.empty() ? tr("Camera %1").arg(i) : QString::fromStdString(c.name);
-            const int node = static_cast<int>(s->placed_cameras[i].node);
-            connect(acts.cameras->addAction(name), &QAction::triggered, this,
-                    [this, node] { jumpToCamera(node); });
-        }
-    });
     a.view->addSeparator();
     a.docks = a.view->addMenu(QString());
     for (QDockWidget* d :
-         {static_cast<QDockWidget*>(scene_tree_), static_cast<QDockWidget*>(mesh_),
-          static_cast<QDockWidget*>(material_), static_cast<QDockWidget*>(textures_),
-          static_cast<QDockWidget*>(culling_dock_), static_cast<QDockWidget*>(log_),
-          static_cast<QDockWidget*>(timeline_), static_cast<QDockWidget*>(lab_),
-          static_cast<QDockWidget*>(acceleration_), static_cast<QDockWidget*>(validation_)})
+         {static_cast<QDockWidget*>(docks_.sceneTree), static_cast<QDockWidget*>(docks_.mesh),
+          static_cast<QDockWidget*>(docks_.material), static_cast<QDockWidget*>(docks_.textures),
+          static_cast<QDockWidget*>(docks_.culling), static_cast<QDockWidget*>(docks_.log),
+          static_cast<QDockWidget*>(docks_.timeline), static_cast<QDockWidget*>(docks_.lab),
+          static_cast<QDockWidget*>(docks_.acceleration),
+          static_cast<QDockWidget*>(docks_.validation)})
         a.docks->addAction(d->toggleViewAction());
     a.view->addAction(a.reset_layout);
 
@@ -254,11 +200,8 @@ void MainWindow::createMenus() {
     for (QAction* act : a.quality_actions) a.quality->addAction(act);
     a.settings->addAction(a.cache_dir);
     reload_ = new ReloadController(
-        context_, settings_, *log_, *a.settings,
-        [this] {
-            keep_camera_ = true; // the same file again: the user looks at one spot
-            reloadScene();
-        },
+        context_, settings_, *docks_.log, *a.settings,
+        [this] { loads_->reloadScene(true); }, // the user looks at one spot: keep it
         this);
 
     a.help = bar->addMenu(QString());
@@ -274,7 +217,7 @@ void MainWindow::createMenus() {
     a.view_button->setMenu(a.debug_views);
     a.view_button->setPopupMode(QToolButton::InstantPopup);
     a.toolbar->addWidget(a.view_button);
-    compare_->addToToolBar(a.toolbar);
+    compare_controls_->addToToolBar(a.toolbar);
     // One button for the overlays (their menu): six text buttons pushed the toolbar's
     // last ones into its overflow menu, in German at any width.
     a.overlay_button = new QToolButton(a.toolbar);
@@ -288,20 +231,9 @@ void MainWindow::createMenus() {
     a.toolbar->addAction(a.freeze);
 }
 
-void MainWindow::retranslateOverlayButton() {
-    if (!a_ || !a_->overlay_button) return;
-    QStringList on;
-    for (QAction* act : a_->overlay_actions)
-        if (act->isChecked()) on << act->text().remove(QLatin1Char('&'));
-    a_->overlay_button->setText(on.isEmpty() ? tr("Overlays") : tr("Overlays (%1)").arg(on.size()));
-    a_->overlay_button->setToolTip(on.isEmpty()
-                                       ? tr("Overlays: none shown")
-                                       : tr("Overlays: %1").arg(on.join(QStringLiteral(", "))));
-}
-
 void MainWindow::retranslate() {
     if (!a_) return;
-    Actions& a = *a_;
+    WindowActions& a = *a_;
     a.file->setTitle(tr("&File"));
     a.open->setText(tr("&Open…"));
     a.recent->setTitle(tr("Open &Recent"));
@@ -316,18 +248,9 @@ void MainWindow::retranslate() {
     a.clear_recent->setText(tr("Clear list"));
     a.view->setTitle(tr("&View"));
     a.debug_views->setTitle(tr("&Debug View"));
-    const std::vector<ViewEntry> views = ViewCatalog::views();
-    for (std::size_t i = 0; i < views.size(); ++i) {
-        a.view_actions[i]->setText(views[i].label);
-        a.view_actions[i]->setChecked(view_ == views[i].id);
-        if (view_ == views[i].id) a.view_button->setText(tr("View: %1").arg(views[i].label));
-    }
     a.overlays->setTitle(tr("&Overlays"));
     a.checker_density->setTitle(tr("&UV Checker Density (checks per UV unit)"));
-    const std::vector<ViewEntry> overlays = ViewCatalog::overlays();
-    for (std::size_t i = 0; i < overlays.size(); ++i)
-        a.overlay_actions[i]->setText(overlays[i].label);
-    retranslateOverlayButton();
+    if (views_) views_->retranslate(); // the views' and overlays' names, the Environment menu
     a.frame_all->setText(tr("Frame &All (F)"));
     a.frame_selection->setText(tr("Frame &Selection (Shift+F)"));
     a.fly->setText(tr("&Fly Mode (WASD, Q/E)"));
@@ -364,17 +287,16 @@ void MainWindow::retranslate() {
     a.toolbar->setWindowTitle(tr("Main Toolbar"));
     cancel_->setText(tr("Cancel"));
 
-    scene_tree_->retranslate();
-    if (environment_) environment_->retranslate();
-    mesh_->retranslate();
-    material_->retranslate();
-    textures_->retranslate();
-    culling_dock_->retranslate();
-    log_->retranslate();
-    timeline_->retranslate();
-    acceleration_->retranslate();
-    validation_->retranslate();
-    compare_->retranslate();
+    docks_.sceneTree->retranslate();
+    docks_.mesh->retranslate();
+    docks_.material->retranslate();
+    docks_.textures->retranslate();
+    docks_.culling->retranslate();
+    docks_.log->retranslate();
+    docks_.timeline->retranslate();
+    docks_.acceleration->retranslate();
+    docks_.validation->retranslate();
+    compare_controls_->retranslate();
     legend_->retranslate();
     // Models read tr() in headerData/data: tell the views to ask again. Source models
     // only, each change announced first: a proxy forwards its source's signals, and a
@@ -390,31 +312,11 @@ void MainWindow::retranslate() {
     updateStatus();
 }
 
-void MainWindow::setGpuCulling(bool gpu) {
-    (gpu ? a_->gpu_path : a_->cpu_path)->setChecked(true);
-}
-
-void MainWindow::rebuildRecentMenu() {
-    Actions& a = *a_;
-    a.recent->clear();
-    const QStringList files = settings_.recentFiles();
-    if (files.isEmpty()) a.recent->addAction(tr("(no recent files)"))->setEnabled(false);
-    for (const QString& f : files)
-        connect(a.recent->addAction(f), &QAction::triggered, this, [this, f] { openScene(f); });
-    a.recent->addSeparator();
-    a.recent->addAction(a.clear_recent);
-}
-
-void MainWindow::openFileDialog() {
-    const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open glTF scene"), QString(), tr("glTF scenes (*.gltf *.glb);;All files (*)"));
-    if (!path.isEmpty()) openScene(path);
-}
-
 void MainWindow::showAbout() {
     QString device = tr("none (Vulkan unavailable)");
-    if (render_) {
-        device = texture_target_ ? QString::fromStdString(texture_target_->name) : QString();
+    if (frames_->renderer()) {
+        const std::optional<tex::TextureTarget>& target = loads_->textureTarget();
+        device = target ? QString::fromStdString(target->name) : QString();
     } else if (vulkan_ && vulkan_->isValid()) {
         // Every physical device the instance sees (the engine picks lavapipe first).
         const QStringList names = GpuViewport::deviceNames(vulkan_->vkInstance());

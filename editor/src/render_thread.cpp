@@ -6,9 +6,12 @@ namespace sherpa::editor {
 
 namespace {
 
-bool same_camera(const CameraSpec& a, const CameraSpec& b) {
-    return a.eye == b.eye && a.target == b.target && a.up == b.up &&
-           a.fov_y_degrees == b.fov_y_degrees && a.aspect == b.aspect;
+// The camera and the frame's size (the orbit camera's aspect follows the size; the
+// request leaves the aspect to the viewport).
+bool same_camera(const gpu::FrameRequest& a, const gpu::FrameRequest& b) {
+    return a.camera.eye == b.camera.eye && a.camera.target == b.camera.target &&
+           a.camera.up == b.camera.up && a.camera.fov_degrees == b.camera.fov_degrees &&
+           a.camera.aspect == b.camera.aspect && a.width == b.width && a.height == b.height;
 }
 
 double ms_since(std::chrono::steady_clock::time_point start) {
@@ -37,7 +40,7 @@ std::uint64_t RenderThread::latestRequest() const {
     return serial_;
 }
 
-std::uint64_t RenderThread::requestFrame(const ViewportFrame& frame, std::uint64_t surface) {
+std::uint64_t RenderThread::requestFrame(const ViewportRequest& frame, std::uint64_t surface) {
     std::uint64_t serial = 0;
     {
         std::lock_guard lock(mutex_);
@@ -80,7 +83,7 @@ void RenderThread::setTargetFrameMs(double ms) {
     target_ms_ = ms;
 }
 
-bool RenderThread::renderAndWait(const ViewportFrame& frame, std::uint64_t surface) {
+bool RenderThread::renderAndWait(const ViewportRequest& frame, std::uint64_t surface) {
     std::uint64_t serial = 0;
     {
         std::lock_guard lock(mutex_);
@@ -169,8 +172,8 @@ void RenderThread::run() {
             // Moving: the camera changed since the last frame drawn, or the pose did
             // (a playing animation is motion too: the timeline makes a new pose per
             // step, and the same one while paused).
-            still = !last_ || (same_camera(last_->frame.camera, request.frame.camera) &&
-                               last_->frame.pose == request.frame.pose);
+            still = !last_ || (same_camera(last_->frame.request, request.frame.request) &&
+                               last_->frame.request.pose == request.frame.request.pose);
         } else if (rested && last_) {
             request = *last_; // the camera rests: the same frame at full size
         } else {
@@ -195,11 +198,11 @@ void RenderThread::draw(GpuViewport& gpu, const Request& request, bool still) {
     FrameReport report;
     report.request = request.serial;
     report.scale = scale;
-    report.width = request.frame.width;
-    report.height = request.frame.height;
+    report.width = request.frame.request.width;
+    report.height = request.frame.request.height;
     const auto start = std::chrono::steady_clock::now();
     try {
-        report.shown = gpu.present(request.surface, request.frame, scale);
+        static_cast<PresentOutcome&>(report) = gpu.present(request.surface, request.frame, scale);
     } catch (const std::exception& e) {
         Q_EMIT renderError(QString::fromUtf8(e.what()));
         std::lock_guard lock(mutex_);
@@ -208,13 +211,6 @@ void RenderThread::draw(GpuViewport& gpu, const Request& request, bool still) {
         return;
     }
     report.ms = ms_since(start);
-    report.refused = gpu.lastRefusal();
-    report.difference = gpu.lastDifference();
-    report.path_traced = gpu.pathTraced();
-    report.path_samples = gpu.pathSamples();
-    report.path_error = gpu.pathError();
-    report.gpu_ms = gpu.lastGpuMs();
-    report.cull_passes = gpu.lastCullPasses(report.passes, report.cached_shadows);
     {
         std::lock_guard lock(mutex_);
         // The completed frame's GPU time belongs to the present kFramesInFlight back.

@@ -24,24 +24,13 @@
 
 namespace sherpa::editor {
 
-// One frame as the render thread drew it.
-struct FrameReport {
+// One frame as the render thread drew it: what GpuViewport::present() said, and the
+// request it drew.
+struct FrameReport : PresentOutcome {
     std::uint64_t request = 0;           // the requestFrame() it drew (1, 2, ...)
-    bool shown = false;                  // false: skipped (swapchain recreated)
     double ms = 0.0;                     // present() on the render thread, wall clock
-    double gpu_ms = -1.0;                // timestamps of the latest completed frame
     float scale = 1.0f;                  // each side drawn at this fraction
     std::uint32_t width = 0, height = 0; // the full (viewport) size in pixels
-    bool cull_passes = false;            // the renderer's culling passes are known
-    std::vector<CullStats> passes;
-    bool cached_shadows = false;
-    QString refused; // not drawn: what the ray tracer refused (GpuViewport::lastRefusal)
-    DifferenceNumbers difference; // comparison frames: the latest completed difference
-    // Path traced (ray-traced mode, lit view): samples per pixel of the latest completed
-    // frame and the estimated relative error (-1: not measured yet).
-    bool path_traced = false;
-    std::uint32_t path_samples = 0;
-    double path_error = -1.0;
 };
 
 class RenderThread : public QObject {
@@ -61,7 +50,7 @@ public:
     // a playing animation): drawn at the interactive resolution scale; once no new
     // request comes for kRestMs (the camera rests, playback pauses), the last frame is
     // drawn again at full size (the still image is always full size).
-    std::uint64_t requestFrame(const ViewportFrame& frame, std::uint64_t surface);
+    std::uint64_t requestFrame(const ViewportRequest& frame, std::uint64_t surface);
     // The serial of the latest request (requestFrame(), renderAndWait()); 0 before
     // any. A FrameReport::request at or above it drew a frame asked for since.
     std::uint64_t latestRequest() const;
@@ -78,7 +67,7 @@ public:
     template <class F> auto call(F task) -> decltype(task(std::declval<GpuViewport&>()));
     // Draws `frame` at full size now and waits until it is presented and the queue
     // is idle (screenshots read the window right after).
-    bool renderAndWait(const ViewportFrame& frame, std::uint64_t surface);
+    bool renderAndWait(const ViewportRequest& frame, std::uint64_t surface);
     // Drops the swapchain and any request for it, and waits (the surface is going).
     void releaseSurface();
     // The next frame is still (full size) whatever its camera: a new scene's framing
@@ -104,7 +93,7 @@ Q_SIGNALS:
 
 private:
     struct Request {
-        ViewportFrame frame;
+        ViewportRequest frame;
         std::uint64_t surface = 0;
         std::uint64_t serial = 0;
     };

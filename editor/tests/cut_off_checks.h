@@ -130,36 +130,36 @@ inline void wait_settled(MainWindow& w);
 
 inline QStringList cut_needed_columns(MainWindow& w) {
     QStringList cut;
-    w.textureDock()->raise();
+    w.docks().textures->raise();
     wait_settled(w);
-    cut << cut_off_columns(w.textureDock()->view(), QStringLiteral("textureDock"),
+    cut << cut_off_columns(w.docks().textures->view(), QStringLiteral("textureDock"),
                            {TextureTableModel::NameColumn, TextureTableModel::CacheStateColumn});
-    w.meshDock()->raise();
+    w.docks().mesh->raise();
     wait_settled(w);
-    cut << cut_off_columns(w.meshDock()->findChild<QTableView*>(), QStringLiteral("meshDock"),
+    cut << cut_off_columns(w.docks().mesh->findChild<QTableView*>(), QStringLiteral("meshDock"),
                            {AttributeModel::AttributeColumn, AttributeModel::AccessorColumn,
                             AttributeModel::ComponentTypeColumn});
-    cut << cut_off_columns(w.meshDock()->vertexView(), QStringLiteral("meshDock vertices"),
+    cut << cut_off_columns(w.docks().mesh->vertexView(), QStringLiteral("meshDock vertices"),
                            {VertexTableModel::IndexColumn, VertexTableModel::PosX,
                             VertexTableModel::PosY, VertexTableModel::PosZ});
-    w.materialDock()->raise();
+    w.docks().material->raise();
     wait_settled(w);
-    cut << cut_off_columns(*w.materialDock(),
+    cut << cut_off_columns(*w.docks().material,
                            {MaterialFieldsModel::FieldColumn, MaterialFieldsModel::ValueColumn});
     // Its byte offsets head the rows.
-    if (auto* table = w.materialDock()->findChild<QTableView*>();
+    if (auto* table = w.docks().material->findChild<QTableView*>();
         !table->verticalHeader()->isVisible() || table->verticalHeader()->width() <= 0 ||
         table->model()->headerData(1, Qt::Vertical).toString() !=
             table->model()->index(1, MaterialFieldsModel::OffsetColumn).data().toString())
         cut << QStringLiteral("materialDock: no offsets heading the rows");
-    w.labDock()->raise();
+    w.docks().lab->raise();
     wait_settled(w);
-    cut << cut_off_columns(w.labDock()->methodsView(), QStringLiteral("labDock"),
+    cut << cut_off_columns(w.docks().lab->methodsView(), QStringLiteral("labDock"),
                            {0, 2, 3}); // method, time, chart error
-    w.sceneTreeDock()->raise();
+    w.docks().sceneTree->raise();
     wait_settled(w);
-    QLabel* pane = w.sceneTreeDock()->detailsPane();
-    const QModelIndex current = w.sceneTreeDock()->view()->currentIndex();
+    QLabel* pane = w.docks().sceneTree->detailsPane();
+    const QModelIndex current = w.docks().sceneTree->view()->currentIndex();
     const QString details =
         current.siblingAtColumn(SceneTreeModel::DetailColumn).data(Qt::ToolTipRole).toString();
     if (!pane->isVisible() || details.isEmpty() || !pane->text().contains(details) ||

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "gpu_viewport.h"
+#include "load_controller.h"
 #include "main_window.h"
 #include "vertex_table_model.h"
 
@@ -24,10 +25,10 @@ using namespace sherpa::editor;
 namespace {
 
 double switch_ms(MainWindow& w, const QString& spec) {
-    QSignalSpy loaded(&w, &MainWindow::sceneLoaded);
+    QSignalSpy loaded(&w.loads(), &LoadController::sceneLoaded);
     QElapsedTimer t;
     t.start();
-    w.openScene(spec);
+    w.loads().openScene(spec);
     while (loaded.isEmpty()) QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
     return static_cast<double>(t.nsecsElapsed()) / 1e6;
 }

@@ -81,7 +81,7 @@ private Q_SLOTS:
     void lightingFamilyIsListedAndRuns();
 
 private:
-    LabDock& dock() { return *window_->labDock(); }
+    LabDock& dock() { return *window_->docks().lab; }
     QVulkanInstance vulkan_;
     std::unique_ptr<MainWindow> window_;
     qsizetype seen_validation_ = 0;
@@ -90,7 +90,7 @@ private:
 void LabTests::initTestCase() {
     window_ = test::open_validated_window(vulkan_);
     QVERIFY(window_);
-    QVERIFY(window_->labDock());
+    QVERIFY(window_->docks().lab);
 }
 
 void LabTests::dockAgreesWithTheCli_data() {
@@ -312,13 +312,13 @@ void LabTests::applyingAShadowSettingReachesTheViewport() {
     qsizetype seen = 0;
     test::fresh_validation_messages(*window_, seen);
     Q_EMIT dock().applyRequested(QStringLiteral("shadows"), QStringLiteral("4096x1 pcf16"));
-    QTRY_COMPARE(window_->lastFrame().shadowPcfTaps, 16u);
-    QCOMPARE(window_->lastFrame().shadowCascades, 1u);
+    QTRY_COMPARE(window_->frames().lastFrame().request.shadow_pcf_taps, 16u);
+    QCOMPARE(window_->frames().lastFrame().request.cascades, 1u);
     Q_EMIT dock().applyRequested(QStringLiteral("shadows"), QStringLiteral("4096x2"));
-    QCOMPARE(window_->lastFrame().shadowCascades, 1u);
+    QCOMPARE(window_->frames().lastFrame().request.cascades, 1u);
     Q_EMIT dock().applyRequested(QStringLiteral("shadows"), QStringLiteral("2048x3 pcf4"));
-    QTRY_COMPARE(window_->lastFrame().shadowPcfTaps, 4u);
-    QCOMPARE(window_->lastFrame().shadowCascades, 3u);
+    QTRY_COMPARE(window_->frames().lastFrame().request.shadow_pcf_taps, 4u);
+    QCOMPARE(window_->frames().lastFrame().request.cascades, 3u);
     const QString messages = test::fresh_validation_messages(*window_, seen);
     QVERIFY2(messages.isEmpty(), qPrintable(messages));
 }

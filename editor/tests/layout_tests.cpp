@@ -94,7 +94,7 @@ std::unique_ptr<MainWindow> LayoutTests::launch(const QString& language) {
     w->show();
     if (!QTest::qWaitForWindowExposed(w.get())) return nullptr;
     if (!test::load(*w, QStringLiteral("builtin:default"))) return nullptr;
-    if (!w->selectNodeNamed(QStringLiteral("sphere"))) return nullptr;
+    if (!w->selection().selectNodeNamed(QStringLiteral("sphere"))) return nullptr;
     bool settled = false;
     when_layout_settles(*w, [&settled] { settled = true; });
     QElapsedTimer t;
@@ -140,9 +140,9 @@ void LayoutTests::oneShotFlagsDoNotPersist() {
                                     QStringLiteral("de"), QStringLiteral("--dock"),
                                     QStringLiteral("log")},
                                    cl, error));
-        QSignalSpy loaded(&w, &MainWindow::sceneLoaded);
+        QSignalSpy loaded(&w.loads(), &LoadController::sceneLoaded);
         run_command_line(w, cl, 0);
-        QCOMPARE(w.debugView(), QStringLiteral("uv0-checker"));
+        QCOMPARE(w.views().debugView(), QStringLiteral("uv0-checker"));
         QCOMPARE(w.language(), QStringLiteral("de"));
         QVERIFY(loaded.wait(test::kLoadTimeoutMs));
         w.close();
@@ -152,30 +152,31 @@ void LayoutTests::oneShotFlagsDoNotPersist() {
     QCOMPARE(s.lastView(), QStringLiteral("lit"));
     QCOMPARE(s.language(), QStringLiteral("en"));
     MainWindow next(nullptr);
-    QCOMPARE(next.debugView(), QStringLiteral("lit"));
+    QCOMPARE(next.views().debugView(), QStringLiteral("lit"));
     QCOMPARE(next.language(), QStringLiteral("en"));
     // A menu choice is a choice: it is remembered.
-    QVERIFY(next.setDebugView(QStringLiteral("normal")));
+    QVERIFY(next.views().setDebugView(QStringLiteral("normal")));
     QCOMPARE(EditorSettings().lastView(), QStringLiteral("normal"));
-    next.setDebugView(QStringLiteral("lit"));
+    next.views().setDebugView(QStringLiteral("lit"));
 }
 
 void LayoutTests::framingIsTheSameEveryRun() {
     if (!vulkan_.isValid()) QSKIP("no Vulkan");
-    ViewportFrame runs[2];
-    for (ViewportFrame& run : runs) {
+    gpu::FrameRequest runs[2];
+    for (gpu::FrameRequest& run : runs) {
         std::unique_ptr<MainWindow> w = launch();
         QVERIFY(w);
         w->viewport()->renderNow(); // what screenshot() draws before grabbing
-        run = w->lastFrame();
+        run = w->frames().lastFrame().request;
         // Framed for the viewport as finally laid out, not an earlier size.
         const QSize size = w->viewport()->pixelSize();
         QCOMPARE(QSize(int(run.width), int(run.height)), size);
         OrbitCamera fresh;
         fresh.setAspect(float(size.width()) / float(size.height()));
         fresh.frameAuto(*w->context().scene());
+        // The request leaves the aspect to the viewport, which is that size.
         QCOMPARE(run.camera.eye, fresh.spec().eye);
-        QCOMPARE(run.camera.aspect, fresh.spec().aspect);
+        QCOMPARE(run.camera.aspect, 0.0f);
     }
     QCOMPARE(runs[0].width, runs[1].width);
     QCOMPARE(runs[0].height, runs[1].height);
@@ -194,27 +195,27 @@ void LayoutTests::viewportKeepsMostOfTheWindow() {
     QVERIFY2(share >= 0.55, qPrintable(QString::number(share)));
     // Content does not widen a dock: a primitive with a long summary, all mesh tabs.
     const int width = viewport->width();
-    w->selectNodeNamed(QStringLiteral("instance grid"));
-    w->selectNodeNamed(QStringLiteral("torus"));
+    w->selection().selectNodeNamed(QStringLiteral("instance grid"));
+    w->selection().selectNodeNamed(QStringLiteral("torus"));
     wait_settled(*w);
     QCOMPARE(viewport->width(), width);
-    w->textureDock()->raise(); // a secondary tab in front does not resize the column
+    w->docks().textures->raise(); // a secondary tab in front does not resize the column
     wait_settled(*w);
     QCOMPARE(viewport->width(), width);
     // Secondary docks are tabs behind the primary ones.
     const auto tabbed = [&w](QDockWidget* front, QDockWidget* behind) {
         return w->tabifiedDockWidgets(front).contains(behind);
     };
-    QVERIFY(tabbed(w->meshDock(), w->materialDock()));
-    QVERIFY(tabbed(w->meshDock(), w->textureDock()));
-    QVERIFY(tabbed(w->sceneTreeDock(), w->cullingDock()));
-    QVERIFY(tabbed(w->sceneTreeDock(), w->logDock()));
+    QVERIFY(tabbed(w->docks().mesh, w->docks().material));
+    QVERIFY(tabbed(w->docks().mesh, w->docks().textures));
+    QVERIFY(tabbed(w->docks().sceneTree, w->docks().culling));
+    QVERIFY(tabbed(w->docks().sceneTree, w->docks().log));
     // View › Reset Layout brings a floating, hidden arrangement back.
-    w->cullingDock()->setFloating(true);
-    w->meshDock()->hide();
-    w->resetLayout();
-    QVERIFY(!w->cullingDock()->isFloating());
-    QVERIFY(w->meshDock()->isVisibleTo(w.get()));
+    w->docks().culling->setFloating(true);
+    w->docks().mesh->hide();
+    test::reset_layout(*w);
+    QVERIFY(!w->docks().culling->isFloating());
+    QVERIFY(w->docks().mesh->isVisibleTo(w.get()));
     wait_settled(*w);
     QCOMPARE(viewport->width(), width);
 }
@@ -224,7 +225,7 @@ void LayoutTests::passTableFilledByTheFirstFrame() {
     std::unique_ptr<MainWindow> w = launch();
     QVERIFY(w);
     // No camera move: the frames drawn for the load alone fill it.
-    QTRY_VERIFY_WITH_TIMEOUT(w->cullingDock()->passRows() > 0, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(w->docks().culling->passRows() > 0, 10000);
 }
 
 void LayoutTests::nothingIsCutOffInAnyLanguage() {
@@ -233,8 +234,8 @@ void LayoutTests::nothingIsCutOffInAnyLanguage() {
     std::unique_ptr<MainWindow> w = launch();
     QVERIFY(w);
     // The Lab dock with a report: its chart and tables count too.
-    QSignalSpy lab_done(&w->labDock()->runner(), &LabRunner::finished);
-    w->labDock()->run(QStringLiteral("culling"));
+    QSignalSpy lab_done(&w->docks().lab->runner(), &LabRunner::finished);
+    w->docks().lab->run(QStringLiteral("culling"));
     QVERIFY(lab_done.wait(120000));
     for (const QString& language : kLanguages) {
         QVERIFY(switch_language(*w, language));
@@ -267,8 +268,8 @@ void LayoutTests::motionSceneIsNotCutOff() {
     std::unique_ptr<MainWindow> w = launch();
     QVERIFY(w);
     QVERIFY(test::load(*w, test::asset(QStringLiteral("RiggedSimple"))));
-    QVERIFY(w->selectNodeNamed(QStringLiteral("1")));
-    w->sceneTreeDock()->view()->expandAll();
+    QVERIFY(w->selection().selectNodeNamed(QStringLiteral("1")));
+    w->docks().sceneTree->view()->expandAll();
     for (const QString& language : kLanguages) {
         QVERIFY(switch_language(*w, language));
         const QStringList cut = cut_in_every_dock(*w, QStringLiteral("rigged"));
@@ -283,15 +284,16 @@ void LayoutTests::viewportModesAreNotCutOff() {
     std::unique_ptr<MainWindow> w = launch();
     QVERIFY(w);
     // The longest side-B label: this file with tangents by another method.
-    w->compareWithTangents(TangentMethod::MikkTSpaceWelded);
+    w->comparison().compareWithTangents(TangentMethod::MikkTSpaceWelded);
     QTRY_VERIFY_WITH_TIMEOUT(test::compare_session(*w) != nullptr, 30000);
-    w->compareControls().setMode(ViewportMode::Difference);
+    w->comparison().controls().setMode(ViewportMode::Difference);
     // Numbers of the latest completed frame: a few frames on.
-    for (int i = 0; i < 20 && !w->lastReport().difference.valid; ++i) {
-        w->renderer()->renderAndWait(w->lastFrame(), w->viewport()->vulkanSurface());
+    for (int i = 0; i < 20 && !w->frames().lastReport().difference.valid; ++i) {
+        w->frames().renderer()->renderAndWait(w->frames().lastFrame(),
+                                              w->viewport()->vulkanSurface());
         QCoreApplication::processEvents();
     }
-    QVERIFY(w->lastReport().difference.valid);
+    QVERIFY(w->frames().lastReport().difference.valid);
     for (const QString& language : kLanguages) {
         QVERIFY(switch_language(*w, language));
         QStringList cut;
@@ -360,17 +362,17 @@ void LayoutTests::validationIsNotCutOff() {
     QVERIFY(w);
     QVERIFY(test::load(
         *w, QStringLiteral(SHERPA_TEST_DATA_DIR "/unsupported_material_extensions.gltf")));
-    QVERIFY(w->validationDock()->isVisible());
-    QVERIFY(w->validationDock()->activatePointer(
+    QVERIFY(w->docks().validation->isVisible());
+    QVERIFY(w->docks().validation->activatePointer(
         QStringLiteral("/materials/0/extensions/ADOBE_materials_thin_transparency")));
     for (const QString& language : kLanguages) {
         QVERIFY(switch_language(*w, language));
         QStringList cut = cut_in_every_dock(*w);
-        w->materialDock()->raise();
+        w->docks().material->raise();
         wait_settled(*w);
         // Wrapped labels show every line (a label cut in height loses its last words).
-        for (QDockWidget* dock : {static_cast<QDockWidget*>(w->validationDock()),
-                                  static_cast<QDockWidget*>(w->materialDock())})
+        for (QDockWidget* dock : {static_cast<QDockWidget*>(w->docks().validation),
+                                  static_cast<QDockWidget*>(w->docks().material)})
             for (QLabel* label : dock->findChildren<QLabel*>())
                 if (label->isVisible() && !label->text().isEmpty() &&
                     label->heightForWidth(label->width()) > label->height())

@@ -49,7 +49,7 @@ private Q_SLOTS:
     void changedFilesAreOfferedOrReloaded();
 
 private:
-    bool hasGpu() const { return window_->renderer() != nullptr; }
+    bool hasGpu() const { return window_->frames().renderer() != nullptr; }
     QVulkanInstance vulkan_;
     std::unique_ptr<MainWindow> window_;
     qsizetype seen_validation_ = 0;
@@ -79,7 +79,7 @@ void LoadingTests::progressReportsEveryStage() {
     const SceneSession* session = window_->context().session();
     QVERIFY(session && session->textures);
     QCOMPARE(textures_total, 5); // DamagedHelmet: five images in five roles
-    const TextureTableModel* m = window_->textureDock()->model();
+    const TextureTableModel* m = window_->docks().textures->model();
     const auto cell = [m](int row, int column) { return m->index(row, column).data().toString(); };
     const QStringList states = {QStringLiteral("hit"), QStringLiteral("miss")};
     for (int row = 0; row < m->rowCount(); ++row) {
@@ -111,16 +111,17 @@ void LoadingTests::cancelDropsTheLoadAndLeaksNothing() {
     // in flight: draw a few frames first.
     for (int f = 0; hasGpu() && f < 3; ++f) QVERIFY(test::next_frame(*window_));
     const std::int64_t objects = hasGpu() ? test::gpu_objects(*window_) : -1;
-    QSignalSpy loaded(window_.get(), &MainWindow::sceneLoaded);
-    QSignalSpy canceled(window_.get(), &MainWindow::loadCanceled);
+    QSignalSpy loaded(&window_->loads(), &LoadController::sceneLoaded);
+    QSignalSpy canceled(&window_->loads(), &LoadController::loadCanceled);
     std::vector<std::uint64_t> heap;
     for (int i = 0; i < 12; ++i) {
         // Cancel as soon as the engine reports its first stage: the worker stops there.
         QMetaObject::Connection c = connect(
             &test::scene_loader(*window_), &SceneLoadJob::progress, this, [this](LoadStep step) {
-                if (step == LoadStep::Geometry || step == LoadStep::Tangents) window_->cancelLoad();
+                if (step == LoadStep::Geometry || step == LoadStep::Tangents)
+                    window_->loads().cancelLoad();
             });
-        window_->openScene(test::asset(QStringLiteral("DamagedHelmet")));
+        window_->loads().openScene(test::asset(QStringLiteral("DamagedHelmet")));
         QTRY_VERIFY_WITH_TIMEOUT(!test::scene_loader(*window_).running(), kLoadTimeoutMs);
         disconnect(c);
         QTRY_COMPARE_WITH_TIMEOUT(SceneLoadJob::workersInFlight(), 0, kLoadTimeoutMs);
@@ -147,28 +148,28 @@ void LoadingTests::textureCacheActions() {
     QTemporaryDir dir; // a cache of this test alone
     const QString before = EditorSettings().cacheDirectory();
     EditorSettings().setCacheDirectory(dir.path());
-    const TextureTableModel* m = window_->textureDock()->model();
+    const TextureTableModel* m = window_->docks().textures->model();
     const auto state = [m](int row) {
         return m->index(row, TextureTableModel::CacheStateColumn).data().toString();
     };
     QVERIFY(load(*window_, QStringLiteral("builtin:default")));
     QCOMPARE(m->rowCount(), 3);
     for (int row = 0; row < 3; ++row) QCOMPARE(state(row), QStringLiteral("miss"));
-    QVERIFY(window_->textureDock()->recompressButton()->isEnabled());
-    QVERIFY(window_->textureDock()->clearCacheButton()->isEnabled());
+    QVERIFY(window_->docks().textures->recompressButton()->isEnabled());
+    QVERIFY(window_->docks().textures->clearCacheButton()->isEnabled());
     QVERIFY(load(*window_, QStringLiteral("builtin:default")));
     for (int row = 0; row < 3; ++row) QCOMPARE(state(row), QStringLiteral("hit"));
 
     // Recompress texture 0: its file goes, the reload compresses only it again.
-    QSignalSpy loaded(window_.get(), &MainWindow::sceneLoaded);
-    window_->recompressTexture(0);
+    QSignalSpy loaded(&window_->loads(), &LoadController::sceneLoaded);
+    window_->loads().recompressTexture(0);
     QVERIFY(loaded.wait(kLoadTimeoutMs));
     QCOMPARE(state(0), QStringLiteral("miss"));
     QCOMPARE(state(1), QStringLiteral("hit"));
     QCOMPARE(state(2), QStringLiteral("hit"));
 
     // Clear: every KTX2 file of the directory is gone.
-    QCOMPARE(window_->clearTextureCache(), 3);
+    QCOMPARE(window_->loads().clearTextureCache(), 3);
     QVERIFY(QDir(dir.path()).entryList({QStringLiteral("*.ktx2")}, QDir::Files).isEmpty());
     EditorSettings().setCacheDirectory(before);
 }
@@ -179,7 +180,7 @@ void LoadingTests::missingTextureIsNamedInTheDockAndLog() {
     if (!hasGpu()) QSKIP("no Vulkan device: textures are prepared for the GPU");
     QVERIFY(load(*window_, QStringLiteral(SHERPA_TEST_DATA_DIR "/missing_texture.gltf")));
     QVERIFY(test::next_frame(*window_));
-    const TextureTableModel* m = window_->textureDock()->model();
+    const TextureTableModel* m = window_->docks().textures->model();
     QCOMPARE(m->rowCount(), 1);
     QCOMPARE(m->index(0, TextureTableModel::CacheStateColumn).data().toString(),
              QStringLiteral("missing: does_not_exist.png"));
@@ -189,9 +190,9 @@ void LoadingTests::missingTextureIsNamedInTheDockAndLog() {
         m->index(0, TextureTableModel::CacheStateColumn).data(Qt::ToolTipRole).toString();
     QVERIFY2(tip.contains(QStringLiteral("material 'Quad' baseColorTexture, occlusionTexture")),
              qPrintable(tip));
-    QVERIFY2(window_->logDock()->text().contains(
+    QVERIFY2(window_->docks().log->text().contains(
                  QStringLiteral("texture missing: " SHERPA_TEST_DATA_DIR "/does_not_exist.png")),
-             qPrintable(window_->logDock()->text()));
+             qPrintable(window_->docks().log->text()));
 }
 
 // Reload on change: a copy of BoxTextured (its .gltf, .bin and PNG) open; a change
@@ -205,7 +206,7 @@ void LoadingTests::changedFilesAreOfferedOrReloaded() {
         QVERIFY(QFile::copy(source.filePath(f), dir.filePath(f)));
     const QString gltf = dir.filePath(QStringLiteral("BoxTextured.gltf"));
     QVERIFY(load(*window_, gltf));
-    const QStringList watched = window_->reloadController().watchedFiles();
+    const QStringList watched = test::reload_controller(*window_).watchedFiles();
     const QString bin =
         QFileInfo(dir.filePath(QStringLiteral("BoxTextured0.bin"))).absoluteFilePath();
     const QString png =
@@ -214,10 +215,10 @@ void LoadingTests::changedFilesAreOfferedOrReloaded() {
                  watched.contains(png),
              qPrintable(watched.join(QLatin1Char(' '))));
 
-    window_->reloadController().setReloadAutomatically(false);
+    test::reload_controller(*window_).setReloadAutomatically(false);
     window_->viewport()->camera().orbit(30.0f, 10.0f);
     const glm::vec3 eye = window_->viewport()->camera().eye();
-    QSignalSpy loaded(window_.get(), &MainWindow::sceneLoaded);
+    QSignalSpy loaded(&window_->loads(), &LoadController::sceneLoaded);
     const auto touch = [](const QString& path) { // rewritten as an exporter does
         QFile f(path);
         if (!f.open(QIODevice::ReadOnly)) return false;
@@ -243,15 +244,15 @@ void LoadingTests::changedFilesAreOfferedOrReloaded() {
     QTRY_VERIFY_WITH_TIMEOUT(loaded.count() == 1, kLoadTimeoutMs);
     QCOMPARE(window_->viewport()->camera().eye(), eye); // the view kept
 
-    window_->reloadController().setReloadAutomatically(true);
+    test::reload_controller(*window_).setReloadAutomatically(true);
     QVERIFY(EditorSettings().reloadAutomatically()); // remembered
     QVERIFY(touch(png));
     QTRY_VERIFY_WITH_TIMEOUT(loaded.count() == 2, kLoadTimeoutMs);
     QVERIFY(!window_->findChild<QMessageBox*>(QStringLiteral("reloadOffer")) ||
             !window_->findChild<QMessageBox*>(QStringLiteral("reloadOffer"))->isVisible());
-    window_->reloadController().setReloadAutomatically(false);
+    test::reload_controller(*window_).setReloadAutomatically(false);
     QVERIFY(load(*window_, QStringLiteral("builtin:default")));
-    QVERIFY(window_->reloadController().watchedFiles().isEmpty()); // nothing on disk to watch
+    QVERIFY(test::reload_controller(*window_).watchedFiles().isEmpty()); // nothing on disk to watch
 }
 
 QTEST_MAIN(LoadingTests)

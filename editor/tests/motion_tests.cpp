@@ -320,18 +320,19 @@ void MotionTests::windowPostsThePoseAndSelectedJoint() {
     QVulkanInstance vulkan;
     std::unique_ptr<MainWindow> w = test::open_validated_window(vulkan);
     QVERIFY(w);
-    if (!w->renderer()) QSKIP("no Vulkan device: no frames are asked for");
-    QVERIFY(!w->timelineDock()->isVisible()); // builtin:default does not move
-    QVERIFY(!w->lastFrame().pose);
+    if (!w->frames().renderer()) QSKIP("no Vulkan device: no frames are asked for");
+    QVERIFY(!w->docks().timeline->isVisible()); // builtin:default does not move
+    QVERIFY(!w->frames().lastFrame().request.pose);
     QVERIFY(test::load(*w, test::asset(QStringLiteral("BoxAnimated"))));
-    QVERIFY(w->timelineDock()->isVisible());
+    QVERIFY(w->docks().timeline->isVisible());
     const Scene& scene = *w->context().scene();
     const Animation& anim = scene.animations[0];
     const std::uint32_t node = anim.channels[0].node;
     for (const double t : {anim.start + 0.3 * (anim.end - anim.start), double(anim.end)}) {
-        w->timelineDock()->scrubTo(t);
+        w->docks().timeline->scrubTo(t);
         const glm::mat4 expected = evaluate_pose(scene, 0, t).world[node];
-        QTRY_VERIFY(w->lastFrame().pose && same_matrix(w->lastFrame().pose->world[node], expected));
+        QTRY_VERIFY(w->frames().lastFrame().request.pose &&
+                    same_matrix(w->frames().lastFrame().request.pose->world[node], expected));
         // The culling dock culls the instances where the pose puts them.
         const Pose pose = evaluate_pose(scene, 0, t);
         test::culling_monitor(*w).flush();
@@ -351,10 +352,10 @@ void MotionTests::windowPostsThePoseAndSelectedJoint() {
     // Selecting a joint puts it in the frame; other nodes do not.
     QVERIFY(test::load(*w, test::asset(QStringLiteral("RiggedSimple"))));
     const std::uint32_t joint = w->context().scene()->skins[0].joints[1];
-    QVERIFY(w->selectNodeNamed(QString::number(joint)));
-    QTRY_COMPARE(w->lastFrame().selectedJoint.value_or(~0u), joint);
-    QVERIFY(w->selectNodeNamed(QStringLiteral("0")));
-    QTRY_VERIFY(!w->lastFrame().selectedJoint);
+    QVERIFY(w->selection().selectNodeNamed(QString::number(joint)));
+    QTRY_COMPARE(w->frames().lastFrame().request.selected_joint.value_or(~0u), joint);
+    QVERIFY(w->selection().selectNodeNamed(QStringLiteral("0")));
+    QTRY_VERIFY(!w->frames().lastFrame().request.selected_joint);
     qsizetype seen = 0;
     QCOMPARE(test::fresh_validation_messages(*w, seen), QString());
 }

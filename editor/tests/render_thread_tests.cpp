@@ -29,14 +29,14 @@ namespace {
 template <class Pred> bool waitForReport(MainWindow& w, Pred done) {
     QElapsedTimer t;
     t.start();
-    while (!done(w.lastReport()) && t.elapsed() < test::kLoadTimeoutMs)
+    while (!done(w.frames().lastReport()) && t.elapsed() < test::kLoadTimeoutMs)
         QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 10);
-    return done(w.lastReport());
+    return done(w.frames().lastReport());
 }
 
 // The viewport as the X server shows it, after the queue has drained.
 QImage viewportOnScreen(MainWindow& w) {
-    w.renderer()->call([](GpuViewport& gpu) { gpu.finish(); });
+    w.frames().renderer()->call([](GpuViewport& gpu) { gpu.finish(); });
     ViewportWindow* vp = w.viewport();
     return vp->screen()->grabWindow(vp->winId()).toImage().convertToFormat(QImage::Format_RGB32);
 }
@@ -83,7 +83,7 @@ void RenderThreadTests::initTestCase() {
 }
 
 void RenderThreadTests::guiWorksWhileAFrameIsInFlight() {
-    if (!window_->renderer()) QSKIP("no Vulkan device: nothing is rendered");
+    if (!window_->frames().renderer()) QSKIP("no Vulkan device: nothing is rendered");
     MainWindow& w = *window_;
     QVERIFY(waitForReport(w, [](const FrameReport& r) { return r.request > 0; }));
     // The render thread is busy for as long as the test wants (a frame that does not
@@ -95,7 +95,7 @@ void RenderThreadTests::guiWorksWhileAFrameIsInFlight() {
         std::atomic<bool> gave_up{false};
     };
     auto busy = std::make_shared<Busy>();
-    w.renderer()->post([busy](GpuViewport&) {
+    w.frames().renderer()->post([busy](GpuViewport&) {
         busy->gave_up =
             busy->released.wait_for(std::chrono::seconds(20)) == std::future_status::timeout;
     });
@@ -112,19 +112,20 @@ void RenderThreadTests::guiWorksWhileAFrameIsInFlight() {
         w.viewport()->renderNow();
         QCoreApplication::processEvents();
     }
-    QVERIFY(w.selectNodeNamed(QStringLiteral("sphere")));
-    QVERIFY(w.setDebugView(QStringLiteral("normal"), false));
+    QVERIFY(w.selection().selectNodeNamed(QStringLiteral("sphere")));
+    QVERIFY(w.views().setDebugView(QStringLiteral("normal"), false));
     w.resize(w.width() - 40, w.height() - 20);
-    QTRY_COMPARE(QSize(int(w.lastFrame().width), int(w.lastFrame().height)),
+    QTRY_COMPARE(QSize(int(w.frames().lastFrame().request.width),
+                       int(w.frames().lastFrame().request.height)),
                  w.viewport()->pixelSize());
-    QVERIFY(w.meshDock()->isVisible());
+    QVERIFY(w.docks().mesh->isVisible());
     // All of it happened while the render thread was still busy.
     QVERIFY2(!busy->gave_up, "the GUI thread waited for the render thread");
     QCOMPARE(w.viewport()->framesRendered(), frames);
     const std::uint64_t latest = test::latest_request(w);
     std::vector<std::uint64_t> drawn; // requests in the order they were drawn
     const QMetaObject::Connection c =
-        connect(w.renderer(), &RenderThread::frameDone, this,
+        connect(w.frames().renderer(), &RenderThread::frameDone, this,
                 [&](const FrameReport& r) { drawn.push_back(r.request); });
     busy->release.set_value();
     // Then the latest request is drawn first: the fifty camera steps coalesced.
@@ -135,16 +136,16 @@ void RenderThreadTests::guiWorksWhileAFrameIsInFlight() {
     QVERIFY2(w.viewport()->framesRendered() - frames <= 6,
              qPrintable(QString::number(w.viewport()->framesRendered() - frames)));
     QVERIFY(!busy->gave_up);
-    w.setDebugView(QStringLiteral("lit"), false);
+    w.views().setDebugView(QStringLiteral("lit"), false);
 }
 
 void RenderThreadTests::stillFrameIsFullResolutionAfterMotion() {
-    if (!window_->renderer()) QSKIP("no Vulkan device: nothing is rendered");
+    if (!window_->frames().renderer()) QSKIP("no Vulkan device: nothing is rendered");
     MainWindow& w = *window_;
     QVERIFY(test::load(w, test::asset(QStringLiteral("DamagedHelmet"))));
     const QSize pixels = w.viewport()->pixelSize();
     // Every moving frame is "too slow": drawn at the smallest scale.
-    w.renderer()->setTargetFrameMs(0.01);
+    w.frames().renderer()->setTargetFrameMs(0.01);
     w.screenshot(); // a full-size frame at rest
     const QImage reference = viewportOnScreen(w);
     const OrbitCamera rest = w.viewport()->camera();
@@ -155,14 +156,15 @@ void RenderThreadTests::stillFrameIsFullResolutionAfterMotion() {
     // Back to where it was, one moving frame, then nothing: the camera rests.
     w.viewport()->camera() = rest;
     Q_EMIT w.viewport()->cameraChanged();
-    QTRY_VERIFY(w.lastFrame().camera.eye == rest.eye()); // asked for
+    QTRY_VERIFY(w.frames().lastFrame().request.camera.eye == rest.eye()); // asked for
     const std::uint64_t moving = test::latest_request(w);
     QVERIFY(waitForReport(w, [&](const FrameReport& r) { return r.request == moving; }));
-    QCOMPARE(w.lastReport().scale, kMinResolutionScale);
+    QCOMPARE(w.frames().lastReport().scale, kMinResolutionScale);
     // Nobody asks again: the render thread draws the same request at full size.
     QVERIFY(waitForReport(w, [](const FrameReport& r) { return r.scale == 1.0f; }));
-    QVERIFY(w.lastReport().request >= moving);
-    QCOMPARE(QSize(int(w.lastReport().width), int(w.lastReport().height)), pixels);
+    QVERIFY(w.frames().lastReport().request >= moving);
+    QCOMPARE(QSize(int(w.frames().lastReport().width), int(w.frames().lastReport().height)),
+             pixels);
     const QImage still = viewportOnScreen(w);
     QVERIFY2(maxDifference(still, reference) <= 1,
              qPrintable(QString::number(maxDifference(still, reference))));
@@ -171,44 +173,46 @@ void RenderThreadTests::stillFrameIsFullResolutionAfterMotion() {
     Q_EMIT w.viewport()->cameraChanged();
     w.viewport()->camera() = rest;
     w.screenshot();
-    QCOMPARE(w.lastReport().scale, 1.0f);
+    QCOMPARE(w.frames().lastReport().scale, 1.0f);
     QVERIFY(maxDifference(viewportOnScreen(w), reference) <= 1);
-    w.renderer()->setTargetFrameMs(kTargetFrameMs);
+    w.frames().renderer()->setTargetFrameMs(kTargetFrameMs);
 }
 
 void RenderThreadTests::playbackIsMotionAndPauseIsExact() {
     // A playing animation moves like an orbiting camera: its frames get the adaptive
     // resolution; paused, the frame of that time is drawn at full size.
-    if (!window_->renderer()) QSKIP("no Vulkan device: nothing is rendered");
+    if (!window_->frames().renderer()) QSKIP("no Vulkan device: nothing is rendered");
     MainWindow& w = *window_;
     QVERIFY(test::load(w, test::asset(QStringLiteral("AnimatedCube"))));
-    TimelineDock& timeline = *w.timelineDock();
-    w.renderer()->setTargetFrameMs(0.01); // every moving frame is "too slow"
-    w.screenshot();                       // a full-size frame at rest
-    QCOMPARE(w.lastReport().scale, 1.0f);
+    TimelineDock& timeline = *w.docks().timeline;
+    w.frames().renderer()->setTargetFrameMs(0.01); // every moving frame is "too slow"
+    w.screenshot();                                // a full-size frame at rest
+    QCOMPARE(w.frames().lastReport().scale, 1.0f);
     // Steps of the play loop, the camera still: the scale drops.
     timeline.setPlaying(true);
     for (int i = 0; i < 3; ++i) {
         timeline.advance(0.05);
-        QTRY_VERIFY(w.lastFrame().pose == timeline.pose()); // asked for
+        QTRY_VERIFY(w.frames().lastFrame().request.pose == timeline.pose()); // asked for
         const std::uint64_t step = test::latest_request(w);
         QVERIFY(waitForReport(w, [&](const FrameReport& r) { return r.request >= step; }));
     }
-    QVERIFY2(w.lastReport().scale < 1.0f, qPrintable(QString::number(w.lastReport().scale)));
-    QCOMPARE(w.lastFrame().camera.eye, w.viewport()->camera().spec().eye); // camera still
+    QVERIFY2(w.frames().lastReport().scale < 1.0f,
+             qPrintable(QString::number(w.frames().lastReport().scale)));
+    QCOMPARE(w.frames().lastFrame().request.camera.eye,
+             w.viewport()->camera().spec().eye); // camera still
     // Paused: nobody asks again, and the pose of this time is drawn at full size.
     timeline.setPlaying(false);
     const std::uint64_t paused = test::latest_request(w);
     QVERIFY(waitForReport(
         w, [&](const FrameReport& r) { return r.scale == 1.0f && r.request >= paused; }));
-    QCOMPARE(QSize(int(w.lastReport().width), int(w.lastReport().height)),
+    QCOMPARE(QSize(int(w.frames().lastReport().width), int(w.frames().lastReport().height)),
              w.viewport()->pixelSize());
-    w.renderer()->setTargetFrameMs(kTargetFrameMs);
+    w.frames().renderer()->setTargetFrameMs(kTargetFrameMs);
     QVERIFY(test::load(w, QStringLiteral("builtin:default")));
 }
 
 void RenderThreadTests::gpuTimeIsMeasured() {
-    if (!window_->renderer()) QSKIP("no Vulkan device: nothing is rendered");
+    if (!window_->frames().renderer()) QSKIP("no Vulkan device: nothing is rendered");
     MainWindow& w = *window_;
     // The GPU time of a frame is read when its frame slot comes round again.
     for (int i = 0; i < 4; ++i) {
@@ -217,7 +221,7 @@ void RenderThreadTests::gpuTimeIsMeasured() {
         const std::uint64_t before = w.viewport()->framesRendered();
         QTRY_VERIFY_WITH_TIMEOUT(w.viewport()->framesRendered() > before, test::kLoadTimeoutMs);
     }
-    QVERIFY(w.lastReport().gpu_ms > 0.0);
+    QVERIFY(w.frames().lastReport().gpu_ms > 0.0);
     const auto* label = w.statusBar()->findChild<QLabel*>(QStringLiteral("frameLabel"));
     QVERIFY(label);
     QVERIFY2(label->text().contains(QStringLiteral("GPU")), qPrintable(label->text()));
@@ -228,15 +232,15 @@ void RenderThreadTests::gpuTimeIsMeasured() {
 // before it is known (as the command line's is) starts loading once it is, with the
 // device's texture plan; never without it (the race of the old zero-delay timer).
 void RenderThreadTests::sceneAskedForBeforeTheDeviceWaitsForIt() {
-    if (!window_->renderer()) QSKIP("no Vulkan device");
+    if (!window_->frames().renderer()) QSKIP("no Vulkan device");
     MainWindow w(&vulkan_);
     w.setLanguage(QStringLiteral("en"), false);
-    QVERIFY(w.renderer());
+    QVERIFY(w.frames().renderer());
     // deviceReady reaches the GUI thread as a queued call: not before the event loop runs.
     int ready = 0;
-    connect(w.renderer(), &RenderThread::deviceReady, this, [&ready] { ++ready; });
-    QSignalSpy loaded(&w, &MainWindow::sceneLoaded);
-    w.openScene(QStringLiteral("builtin:default"));
+    connect(w.frames().renderer(), &RenderThread::deviceReady, this, [&ready] { ++ready; });
+    QSignalSpy loaded(&w.loads(), &LoadController::sceneLoaded);
+    w.loads().openScene(QStringLiteral("builtin:default"));
     QVERIFY(!test::scene_loader(w).running()); // waits for the device
     QVERIFY(loaded.wait(test::kLoadTimeoutMs));
     QCOMPARE(ready, 1);

@@ -86,8 +86,8 @@ private:
 void RtTests::initTestCase() {
     window_ = test::open_validated_window(vulkan_);
     QVERIFY(window_);
-    if (!window_->renderer()) QSKIP("no Vulkan device");
-    QTRY_VERIFY_WITH_TIMEOUT(window_->rayTracing(), 10000);
+    if (!window_->frames().renderer()) QSKIP("no Vulkan device");
+    QTRY_VERIFY_WITH_TIMEOUT(window_->frames().rayTracing(), 10000);
 }
 
 void RtTests::cleanupTestCase() {
@@ -126,7 +126,7 @@ void RtTests::commandLineTakesRt() {
 void RtTests::accelerationDockListsBlasAndSelectsMesh() {
     MainWindow& w = *window_;
     QVERIFY(test::load(w, test::asset(QStringLiteral("2CylinderEngine"))));
-    AccelerationDock& dock = *w.accelerationDock();
+    AccelerationDock& dock = *w.docks().acceleration;
     AccelerationModel& model = *dock.model();
     // Handed over from the render thread after the upload: one BLAS per glTF mesh.
     const Scene& scene = *w.context().scene();
@@ -151,14 +151,14 @@ void RtTests::accelerationDockListsBlasAndSelectsMesh() {
     QCOMPARE(static_cast<int>(scene.meshes[static_cast<std::size_t>(sel.mesh)].group_id),
              gltf_mesh);
     QVERIFY(sel.node >= 0);
-    QVERIFY(w.selectedInstance() >= 0); // the viewport highlights it
+    QVERIFY(w.selection().selectedInstance() >= 0); // the viewport highlights it
     // And back: a primitive selected elsewhere moves the dock's current row.
     const int other = (row + 1) % model.rowCount();
     const int other_mesh = model.index(other, 0).data(AccelerationModel::MeshRole).toInt();
     for (std::size_t m = 0; m < scene.meshes.size(); ++m)
         if (static_cast<int>(scene.meshes[m].group_id) == other_mesh) {
             QSignalSpy none(&dock, &AccelerationDock::selectMeshRequested);
-            Q_EMIT w.sceneTreeDock()->selectMeshRequested(static_cast<int>(m), -1);
+            Q_EMIT w.docks().sceneTree->selectMeshRequested(static_cast<int>(m), -1);
             QCOMPARE(dock.view()->currentIndex().row(), other);
             QCOMPARE(none.count(), 0); // no echo
             break;
@@ -172,16 +172,17 @@ void RtTests::rtOffBuildsNothing() {
     off.show();
     QVERIFY(QTest::qWaitForWindowExposed(&off));
     QVERIFY(test::load(off, test::asset(QStringLiteral("Box"))));
-    QVERIFY(!off.rayTracing());
+    QVERIFY(!off.frames().rayTracing());
     QTRY_VERIFY_WITH_TIMEOUT(
-        off.accelerationDock()->summaryText().contains(QStringLiteral("--rt off")), 10000);
-    QCOMPARE(off.accelerationDock()->model()->rowCount(), 0);
-    QVERIFY(!off.accelerationDock()->model()->stats());
+        off.docks().acceleration->summaryText().contains(QStringLiteral("--rt off")), 10000);
+    QCOMPARE(off.docks().acceleration->model()->rowCount(), 0);
+    QVERIFY(!off.docks().acceleration->model()->stats());
     // The ray-traced mode is refused there, never drawn: back to raster.
-    off.setDebugView(QStringLiteral("normal"), false);
-    off.compareControls().setMode(ViewportMode::RayTraced);
+    off.views().setDebugView(QStringLiteral("normal"), false);
+    off.comparison().controls().setMode(ViewportMode::RayTraced);
     test::viewport_shot(off);
-    QTRY_COMPARE_WITH_TIMEOUT(off.compareControls().state().mode, ViewportMode::Raster, 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(off.comparison().controls().state().mode, ViewportMode::Raster,
+                              10000);
     qsizetype seen = 0;
     const QString fresh = test::fresh_validation_messages(off, seen);
     QVERIFY2(fresh.isEmpty(), qPrintable(fresh));
@@ -189,26 +190,26 @@ void RtTests::rtOffBuildsNothing() {
 
 void RtTests::cleanup() {
     if (!window_) return;
-    window_->compareControls().setMode(ViewportMode::Raster);
-    window_->setDebugView(QStringLiteral("lit"), false);
+    window_->comparison().controls().setMode(ViewportMode::Raster);
+    window_->views().setDebugView(QStringLiteral("lit"), false);
 }
 
 void RtTests::rayTracedModeDrawsRtFrames() {
     MainWindow& w = *window_;
     QVERIFY(test::load(w, test::asset(QStringLiteral("Suzanne"))));
-    w.pickAt(QPointF(-0.99, 0.99)); // nothing selected: no highlight on the raster side
-    QVERIFY(w.setDebugView(QStringLiteral("normal"), false));
+    w.selection().pickAt(QPointF(-0.99, 0.99)); // nothing selected: no highlight on the raster side
+    QVERIFY(w.views().setDebugView(QStringLiteral("normal"), false));
     const QImage raster = test::viewport_shot(w);
-    w.compareControls().setMode(ViewportMode::RayTraced);
+    w.comparison().controls().setMode(ViewportMode::RayTraced);
     const QImage rays = test::viewport_shot(w);
-    QCOMPARE(w.lastFrame().compare.mode, ViewportMode::RayTraced);
-    QCOMPARE(w.compareControls().state().mode, ViewportMode::RayTraced); // not refused
-    QVERIFY(w.lastReport().refused.isEmpty());
+    QCOMPARE(w.frames().lastFrame().compare.mode, ViewportMode::RayTraced);
+    QCOMPARE(w.comparison().controls().state().mode, ViewportMode::RayTraced); // not refused
+    QVERIFY(w.frames().lastReport().refused.isEmpty());
     // The ray tracer's pass drew it: its timings name it.
     QStringList passes;
     for (int i = 0; i < 4 && !passes.join(' ').contains(QStringLiteral("ray")); ++i) {
-        w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
-        passes = w.renderer()->call([](GpuViewport& gpu) { return gpu.lastPassTimes(); });
+        w.frames().renderer()->renderAndWait(w.frames().lastFrame(), w.viewport()->vulkanSurface());
+        passes = w.frames().renderer()->call([](GpuViewport& gpu) { return gpu.lastPassTimes(); });
     }
     QVERIFY2(passes.join(' ').contains(QStringLiteral("ray"), Qt::CaseInsensitive),
              qPrintable(passes.join(QStringLiteral(", "))));
@@ -227,28 +228,30 @@ void RtTests::rayTracedModeDrawsRtFrames() {
 void RtTests::litIsPathTracedAndAccumulatesAtRest() {
     MainWindow& w = *window_;
     QVERIFY(test::load(w, QStringLiteral("builtin:default")));
-    QVERIFY(w.setDebugView(QStringLiteral("lit"), false));
-    w.compareControls().setMode(ViewportMode::RayTraced);
+    QVERIFY(w.views().setDebugView(QStringLiteral("lit"), false));
+    w.comparison().controls().setMode(ViewportMode::RayTraced);
     test::viewport_shot(w);
-    QCOMPARE(w.compareControls().state().mode, ViewportMode::RayTraced); // not refused
-    QTRY_VERIFY2_WITH_TIMEOUT(w.lastReport().path_traced && w.lastReport().path_samples >= 6,
-                              qPrintable(QString::number(w.lastReport().path_samples)), 90000);
-    QTRY_VERIFY_WITH_TIMEOUT(w.lastReport().path_error >= 0.0, 60000);
+    QCOMPARE(w.comparison().controls().state().mode, ViewportMode::RayTraced); // not refused
+    QTRY_VERIFY2_WITH_TIMEOUT(
+        w.frames().lastReport().path_traced && w.frames().lastReport().path_samples >= 6,
+        qPrintable(QString::number(w.frames().lastReport().path_samples)), 90000);
+    QTRY_VERIFY_WITH_TIMEOUT(w.frames().lastReport().path_error >= 0.0, 60000);
     checkValidation();
 }
 
 void RtTests::refusedViewGoesBackToRaster() {
     MainWindow& w = *window_;
     QVERIFY(test::load(w, QStringLiteral("builtin:default")));
-    QVERIFY(w.setDebugView(QStringLiteral("uv0-checker"), false)); // derivatives: no ray formula
-    const int errors = w.logDock()->errorCount();
-    w.compareControls().setMode(ViewportMode::RayTraced);
+    QVERIFY(w.views().setDebugView(QStringLiteral("uv0-checker"),
+                                   false)); // derivatives: no ray formula
+    const int errors = w.docks().log->errorCount();
+    w.comparison().controls().setMode(ViewportMode::RayTraced);
     test::viewport_shot(w);
-    QTRY_COMPARE_WITH_TIMEOUT(w.compareControls().state().mode, ViewportMode::Raster, 10000);
-    QVERIFY2(w.logDock()->text().contains(QStringLiteral("The ray tracer cannot draw")),
-             qPrintable(w.logDock()->text()));
-    QVERIFY(w.logDock()->text().contains(QStringLiteral("uv0-checker")));
-    QCOMPARE(w.logDock()->errorCount(), errors); // a warning, and rendering goes on
+    QTRY_COMPARE_WITH_TIMEOUT(w.comparison().controls().state().mode, ViewportMode::Raster, 10000);
+    QVERIFY2(w.docks().log->text().contains(QStringLiteral("The ray tracer cannot draw")),
+             qPrintable(w.docks().log->text()));
+    QVERIFY(w.docks().log->text().contains(QStringLiteral("uv0-checker")));
+    QCOMPARE(w.docks().log->errorCount(), errors); // a warning, and rendering goes on
     const std::uint64_t before = w.viewport()->framesRendered();
     w.viewport()->scheduleFrame();
     QTRY_VERIFY_WITH_TIMEOUT(w.viewport()->framesRendered() > before, 10000);
@@ -258,18 +261,18 @@ void RtTests::refusedViewGoesBackToRaster() {
 void RtTests::splitShowsALeftAndBRight() {
     MainWindow& w = *window_;
     QVERIFY(test::load(w, QStringLiteral("builtin:default")));
-    w.pickAt(QPointF(-0.99, 0.99));
-    QVERIFY(w.setDebugView(QStringLiteral("normal"), false));
+    w.selection().pickAt(QPointF(-0.99, 0.99));
+    QVERIFY(w.views().setDebugView(QStringLiteral("normal"), false));
     const QImage a = test::viewport_shot(w);
-    QVERIFY(w.setDebugView(QStringLiteral("uv0"), false));
+    QVERIFY(w.views().setDebugView(QStringLiteral("uv0"), false));
     const QImage b = test::viewport_shot(w);
-    QVERIFY(w.setDebugView(QStringLiteral("normal"), false));
-    CompareControls& c = w.compareControls();
+    QVERIFY(w.views().setDebugView(QStringLiteral("normal"), false));
+    CompareControls& c = w.comparison().controls();
     c.setSide(SideB::OtherView, view("uv0"));
     c.setMode(ViewportMode::Split);
     c.setDivider(0.5f);
     const QImage split = test::viewport_shot(w);
-    QVERIFY(w.lastReport().refused.isEmpty());
+    QVERIFY(w.frames().lastReport().refused.isEmpty());
     const int mid = split.width() / 2, band = 4, h = split.height();
     QVERIFY(differing(a, b, 0, split.width()) > split.width() * h / 10); // the views differ
     // A left of the divider, B right of it (a thin band around the line aside).
@@ -286,8 +289,8 @@ void RtTests::splitShowsALeftAndBRight() {
 
 void RtTests::draggingMovesTheDivider() {
     MainWindow& w = *window_;
-    QVERIFY(w.setDebugView(QStringLiteral("normal"), false));
-    CompareControls& c = w.compareControls();
+    QVERIFY(w.views().setDebugView(QStringLiteral("normal"), false));
+    CompareControls& c = w.comparison().controls();
     c.setSide(SideB::OtherView, view("uv0"));
     c.setMode(ViewportMode::Split);
     c.setDivider(0.5f);
@@ -329,11 +332,11 @@ void RtTests::differenceOfASceneWithItselfIsZero() {
     MainWindow& w = *window_;
     const QString file = test::asset(QStringLiteral("BoxTextured"));
     QVERIFY(test::load(w, file));
-    QVERIFY(w.setDebugView(QStringLiteral("base-color"), false));
-    CompareControls& c = w.compareControls();
+    QVERIFY(w.views().setDebugView(QStringLiteral("base-color"), false));
+    CompareControls& c = w.comparison().controls();
     c.setMode(ViewportMode::Difference);
     // Side B: the same file, loaded again as another file is.
-    w.compareWithFile(file);
+    w.comparison().compareWithFile(file);
     QTRY_VERIFY_WITH_TIMEOUT(test::compare_session(w) != nullptr, 30000);
     QCOMPARE(c.state().side, SideB::OtherFile);
     QVERIFY(test::compare_session(w) != w.context().sharedSession()); // a second scene
@@ -342,18 +345,20 @@ void RtTests::differenceOfASceneWithItselfIsZero() {
     // The numbers are those of the latest completed frame: a few frames later (and
     // at the viewport's size with the legend beside it).
     const auto current = [&w] {
-        const DifferenceNumbers& d = w.lastReport().difference;
-        return d.valid && d.pixels == std::uint64_t(w.lastFrame().width) * w.lastFrame().height;
+        const DifferenceNumbers& d = w.frames().lastReport().difference;
+        return d.valid && d.pixels == std::uint64_t(w.frames().lastFrame().request.width) *
+                                          w.frames().lastFrame().request.height;
     };
     QElapsedTimer t;
     t.start();
     while (!current() && t.elapsed() < 30000) {
-        w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
+        w.frames().renderer()->renderAndWait(w.frames().lastFrame(), w.viewport()->vulkanSurface());
         QCoreApplication::processEvents();
     }
-    const DifferenceNumbers& n = w.lastReport().difference;
+    const DifferenceNumbers& n = w.frames().lastReport().difference;
     QVERIFY(n.valid);
-    QCOMPARE(n.pixels, std::uint64_t(w.lastFrame().width) * w.lastFrame().height);
+    QCOMPARE(n.pixels, std::uint64_t(w.frames().lastFrame().request.width) *
+                           w.frames().lastFrame().request.height);
     QCOMPARE(n.mean, 0.0);
     QCOMPARE(n.max, 0.0);
     QCOMPARE(n.over_threshold_percent, 0.0);
@@ -370,27 +375,27 @@ void RtTests::differenceOfASceneWithItselfIsZero() {
     QCOMPARE(bar.pixel(0, bar.height() - 1), qRgb(bottom[0], bottom[1], bottom[2]));
     // The same file with its source textures (no BC7): the compression's error, small.
     const SharedSession bc7 = test::compare_session(w);
-    w.compareWithFile(file, true);
+    w.comparison().compareWithFile(file, true);
     QTRY_VERIFY_WITH_TIMEOUT(test::compare_session(w) != bc7, 30000);
     t.restart();
     double psnr = std::numeric_limits<double>::infinity();
     while (std::isinf(psnr) && t.elapsed() < 30000) {
-        w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
+        w.frames().renderer()->renderAndWait(w.frames().lastFrame(), w.viewport()->vulkanSurface());
         QCoreApplication::processEvents();
-        if (current()) psnr = w.lastReport().difference.psnr_db;
+        if (current()) psnr = w.frames().lastReport().difference.psnr_db;
     }
     qInfo("BoxTextured base colour, BC7 against source textures: PSNR %.2f dB, max %.1f/255", psnr,
-          w.lastReport().difference.max * 255.0);
+          w.frames().lastReport().difference.max * 255.0);
     QVERIFY2(psnr > 30.0 && psnr < 80.0, qPrintable(QString::number(psnr)));
-    QVERIFY(w.lastReport().difference.max > 0.0);
+    QVERIFY(w.frames().lastReport().difference.max > 0.0);
     // Against another view instead: not identical, and the numbers say so.
     c.setSide(SideB::OtherView, view("normal"));
     t.restart();
     double max = 0.0;
     while (max == 0.0 && t.elapsed() < 30000) {
-        w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
+        w.frames().renderer()->renderAndWait(w.frames().lastFrame(), w.viewport()->vulkanSurface());
         QCoreApplication::processEvents();
-        max = w.lastReport().difference.max;
+        max = w.frames().lastReport().difference.max;
     }
     QVERIFY(max > 0.0);
     QVERIFY(!legend.numbersText().contains(QStringLiteral("∞")));
@@ -399,12 +404,12 @@ void RtTests::differenceOfASceneWithItselfIsZero() {
     c.setHeatScale(0.0f);
     QCOMPARE(legend.scaleText(), QStringLiteral("auto"));
     for (int i = 0; i < 10 && !legend.scaleText().contains(QStringLiteral("(auto)")); ++i) {
-        w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
+        w.frames().renderer()->renderAndWait(w.frames().lastFrame(), w.viewport()->vulkanSurface());
         QCoreApplication::processEvents();
     }
     QVERIFY2(legend.scaleText().contains(QStringLiteral("(auto)")), qPrintable(legend.scaleText()));
-    QVERIFY(w.lastReport().difference.heat_max > 0.0);
-    QVERIFY(w.lastReport().difference.heat_max <= w.lastReport().difference.max);
+    QVERIFY(w.frames().lastReport().difference.heat_max > 0.0);
+    QVERIFY(w.frames().lastReport().difference.heat_max <= w.frames().lastReport().difference.max);
     c.setHeatScale(16.0f / 255.0f);
     // Leaving the comparison frees the other file.
     c.setMode(ViewportMode::Raster);

@@ -53,9 +53,9 @@ private:
 void SwitchTests::switchingFiftyTimesDoesNotGrow() {
     // The reduced-resolution image of moving frames comes and goes with measured frame
     // times: full-size frames only, so that the object count depends on scenes alone.
-    if (window_->renderer()) window_->renderer()->setInteractiveScaling(false);
+    if (window_->frames().renderer()) window_->frames().renderer()->setInteractiveScaling(false);
     const auto restore = qScopeGuard([this] {
-        if (window_->renderer()) window_->renderer()->setInteractiveScaling(true);
+        if (window_->frames().renderer()) window_->frames().renderer()->setInteractiveScaling(true);
     });
     const QStringList specs = {
         test::asset(QStringLiteral("Duck")), QStringLiteral("builtin:default"),
@@ -70,16 +70,16 @@ void SwitchTests::switchingFiftyTimesDoesNotGrow() {
         QCoreApplication::processEvents();
         // Drawn before the next switch: every sample sees a scene on screen, not a
         // backlog of uploads (the next test covers that).
-        if (window_->renderer())
-            window_->renderer()->renderAndWait(window_->lastFrame(),
-                                               window_->viewport()->vulkanSurface());
+        if (window_->frames().renderer())
+            window_->frames().renderer()->renderAndWait(window_->frames().lastFrame(),
+                                                        window_->viewport()->vulkanSurface());
         sessions.push_back(window_->context().sharedSession());
         heap.push_back(test::heap_in_use_kib());
         // After three full rounds pools are warm and every dock has made what it makes
         // on first use (the environment's widgets: 5 QObjects, once); 50 - 15 is a
         // multiple of 5, so the last switch shows the same scene as this one.
         if (i == specs.size() * 3 - 1) {
-            if (window_->renderer()) gpu_objects = test::gpu_objects(*window_);
+            if (window_->frames().renderer()) gpu_objects = test::gpu_objects(*window_);
             qt_objects = live_qt_objects(); // after frames: a frame's report makes widgets
         }
     }
@@ -106,12 +106,12 @@ void SwitchTests::switchingFiftyTimesDoesNotGrow() {
 }
 
 void SwitchTests::uploadsOfScenesSwitchedThroughAreDropped() {
-    if (!window_->renderer()) QSKIP("no Vulkan device");
+    if (!window_->frames().renderer()) QSKIP("no Vulkan device");
     // The render thread is held in a task of its own while ten loads end: a device that
     // takes seconds per new scene, made deterministic.
     std::promise<void> release;
     std::shared_future<void> released = release.get_future().share();
-    window_->renderer()->post([released](GpuViewport&) { released.wait(); });
+    window_->frames().renderer()->post([released](GpuViewport&) { released.wait(); });
     const auto open = qScopeGuard([&release] { release.set_value(); });
     std::vector<std::weak_ptr<const SceneSession>> sessions;
     const Scene* on_gpu = window_->context().scene();

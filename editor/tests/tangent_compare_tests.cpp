@@ -96,7 +96,7 @@ private:
 void TangentCompareTests::initTestCase() {
     window_ = test::open_validated_window(vulkan_);
     QVERIFY(window_);
-    if (!window_->renderer()) QSKIP("no Vulkan device");
+    if (!window_->frames().renderer()) QSKIP("no Vulkan device");
     duck_ = normal_mapped_duck(dir_);
     QVERIFY(!duck_.isEmpty());
 }
@@ -129,7 +129,7 @@ void TangentCompareTests::commandLineTakesTangents() {
 DifferenceNumbers TangentCompareTests::differenceWith(TangentMethod method) {
     MainWindow& w = *window_;
     const SharedSession before = test::compare_session(w);
-    w.compareWithTangents(method);
+    w.comparison().compareWithTangents(method);
     QElapsedTimer t;
     t.start();
     SharedSession now = before;
@@ -139,8 +139,8 @@ DifferenceNumbers TangentCompareTests::differenceWith(TangentMethod method) {
     }
     if (now == before) return {};
     // The first load (from Raster) switches to Split with side B set.
-    if (!before && w.compareControls().state().mode != ViewportMode::Split) return {};
-    w.compareControls().setMode(ViewportMode::Difference);
+    if (!before && w.comparison().controls().state().mode != ViewportMode::Split) return {};
+    w.comparison().controls().setMode(ViewportMode::Difference);
     return currentNumbers();
 }
 
@@ -148,16 +148,17 @@ DifferenceNumbers TangentCompareTests::currentNumbers() {
     MainWindow& w = *window_;
     // The numbers are those of the latest completed frame: a few frames later.
     const auto current = [&w] {
-        const DifferenceNumbers& d = w.lastReport().difference;
-        return d.valid && d.pixels == std::uint64_t(w.lastFrame().width) * w.lastFrame().height;
+        const DifferenceNumbers& d = w.frames().lastReport().difference;
+        return d.valid && d.pixels == std::uint64_t(w.frames().lastFrame().request.width) *
+                                          w.frames().lastFrame().request.height;
     };
     QElapsedTimer t;
     t.start();
     for (int i = 0; i < 4 || (!current() && t.elapsed() < 60000); ++i) {
-        w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
+        w.frames().renderer()->renderAndWait(w.frames().lastFrame(), w.viewport()->vulkanSurface());
         QCoreApplication::processEvents();
     }
-    return w.lastReport().difference;
+    return w.frames().lastReport().difference;
 }
 
 void TangentCompareTests::methodsDifferWhereTheFamilySaysTheyDo_data() {
@@ -175,8 +176,8 @@ void TangentCompareTests::methodsDifferWhereTheFamilySaysTheyDo() {
     MainWindow& w = *window_;
     const QString model = QFileInfo(file).baseName();
     QVERIFY(test::load(w, file));
-    QVERIFY(w.setDebugView(QStringLiteral("tangent"), false));
-    CompareControls& c = w.compareControls();
+    QVERIFY(w.views().setDebugView(QStringLiteral("tangent"), false));
+    CompareControls& c = w.comparison().controls();
     QCOMPARE(c.state().mode, ViewportMode::Raster); // side B chosen outside a comparison
     // Exact MikkTSpace on side B. Without TANGENT in the file side A is exact
     // MikkTSpace too (the glTF rule): identical. With it, A is the file's tangents,
@@ -187,7 +188,7 @@ void TangentCompareTests::methodsDifferWhereTheFamilySaysTheyDo() {
     // The log says what side A's tangents are (each of these files has one primitive).
     const QString a = authored ? QStringLiteral("1 primitive(s) authored, 0 exact MikkTSpace")
                                : QStringLiteral("0 primitive(s) authored, 1 exact MikkTSpace");
-    const QString log = w.logDock()->text();
+    const QString log = w.docks().log->text();
     const QString last = log.mid(log.lastIndexOf(QStringLiteral("Side A's tangents")));
     QVERIFY2(last.startsWith(QStringLiteral("Side A's tangents: ") + a), qPrintable(last));
     qInfo("%s, tangent view, A (%s) vs B exact MikkTSpace: mean %.5f max %.4f, %.3f%% over 2/255",
@@ -211,9 +212,9 @@ void TangentCompareTests::methodsDifferWhereTheFamilySaysTheyDo() {
         // Nonzero on screen exactly where the family finds differing corners.
         QCOMPARE(pixels > 0.0, corners > 0.0);
         // The bitangent (cross(N, T) * w) moves with the tangent.
-        QVERIFY(w.setDebugView(QStringLiteral("bitangent"), false));
+        QVERIFY(w.views().setDebugView(QStringLiteral("bitangent"), false));
         const DifferenceNumbers bitangent = currentNumbers();
-        QVERIFY(w.setDebugView(QStringLiteral("tangent"), false));
+        QVERIFY(w.views().setDebugView(QStringLiteral("tangent"), false));
         qInfo("  bitangent view: %.3f%% over 2/255", bitangent.over_threshold_percent);
         QCOMPARE(bitangent.over_threshold_percent > 0.0, corners > 0.0);
     }
@@ -231,9 +232,9 @@ void TangentCompareTests::tangentSideFollowsTheFile() {
     QVERIFY(test::load(w, duck_));
     QTRY_VERIFY_WITH_TIMEOUT(test::compare_session(w) && test::compare_session(w)->spec == duck_,
                              30000);
-    QVERIFY(w.compareControls().state().comparing());
-    QCOMPARE(w.compareControls().state().side, SideB::OtherFile);
-    w.compareControls().setMode(ViewportMode::Raster);
+    QVERIFY(w.comparison().controls().state().comparing());
+    QCOMPARE(w.comparison().controls().state().side, SideB::OtherFile);
+    w.comparison().controls().setMode(ViewportMode::Raster);
     QVERIFY(!test::compare_session(w));
     checkValidation();
 }

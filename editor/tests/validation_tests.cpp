@@ -85,7 +85,7 @@ void ValidationTests::cleanup() {
 
 void ValidationTests::messagesAreGroupedBySeverityAndCode() {
     QVERIFY(test::load(*w_, kGlass));
-    const ValidationModel& m = *w_->validationDock()->model();
+    const ValidationModel& m = *w_->docks().validation->model();
     QCOMPARE(m.messageCount(), std::size_t(6));
     QStringList rows;
     collect(m, {}, rows);
@@ -112,13 +112,13 @@ void ValidationTests::messagesAreGroupedBySeverityAndCode() {
     // The severity group carries the severity's marker.
     QVERIFY(!m.index(0, 0).data(Qt::DecorationRole).value<QIcon>().isNull());
     // The editor's log has the same warnings as info and render.
-    QVERIFY(w_->logDock()->text().contains(
+    QVERIFY(w_->docks().log->text().contains(
         QStringLiteral("ADOBE_materials_thin_transparency is not implemented by Sherpa")));
 }
 
 void ValidationTests::filterMatchesCodePointerAndText() {
     QVERIFY(test::load(*w_, kGlass));
-    ValidationDock& dock = *w_->validationDock();
+    ValidationDock& dock = *w_->docks().validation;
     auto* proxy = qobject_cast<QAbstractItemModel*>(dock.view()->model());
     QVERIFY(proxy);
     auto leaves = [proxy] {
@@ -143,7 +143,7 @@ void ValidationTests::filterMatchesCodePointerAndText() {
 
 void ValidationTests::unsupportedExtensionSelectsTheMaterial() {
     QVERIFY(test::load(*w_, kGlass));
-    ValidationDock& dock = *w_->validationDock();
+    ValidationDock& dock = *w_->docks().validation;
     QVERIFY(dock.isVisible());
     QSignalSpy activated(&dock, &ValidationDock::messageActivated);
     QVERIFY(dock.activatePointer(
@@ -153,8 +153,8 @@ void ValidationTests::unsupportedExtensionSelectsTheMaterial() {
     QCOMPARE(w_->context().selection().material, 0);
     // The primitive drawn with it is selected: the viewport highlights its instance.
     QCOMPARE(w_->context().selection().mesh, scene.mesh_primitives[0][0]);
-    QVERIFY(w_->selectedInstance() >= 0);
-    QVERIFY(in_front(w_->materialDock()));
+    QVERIFY(w_->selection().selectedInstance() >= 0);
+    QVERIFY(in_front(w_->docks().material));
     QVERIFY2(in_front(&dock),
              qPrintable(
                  QStringLiteral("the list stays in view: visible %1 %2x%3 region %4 tabbed with %5")
@@ -163,60 +163,62 @@ void ValidationTests::unsupportedExtensionSelectsTheMaterial() {
                      .arg(dock.height())
                      .arg(dock.visibleRegion().isEmpty())
                      .arg(w_->tabifiedDockWidgets(&dock).size())));
-    const QString warning = w_->materialDock()->notDrawnText();
+    const QString warning = w_->docks().material->notDrawnText();
     QVERIFY2(warning.contains(QStringLiteral("ADOBE_materials_clearcoat_specular")) &&
                  warning.contains(QStringLiteral("ADOBE_materials_thin_transparency")),
              qPrintable(warning));
     QVERIFY(dock.detailText().contains(QStringLiteral("material 0")));
     // The extension's name in extensionsUsed leads to a material that uses it too.
-    QVERIFY(w_->showPointer(QStringLiteral("/extensionsUsed/1")));
+    QVERIFY(w_->selection().showPointer(QStringLiteral("/extensionsUsed/1")));
     QCOMPARE(w_->context().selection().material, 0);
     // The plain material (emissive strength, drawn) says nothing.
-    QVERIFY(w_->showPointer(QStringLiteral("/materials/1")));
+    QVERIFY(w_->selection().showPointer(QStringLiteral("/materials/1")));
     QCOMPARE(w_->context().selection().material, 1);
-    QVERIFY(w_->materialDock()->notDrawnText().isEmpty());
+    QVERIFY(w_->docks().material->notDrawnText().isEmpty());
 }
 
 void ValidationTests::pointersSelectNodesPrimitivesVerticesAndTextures() {
     QVERIFY(test::load(*w_, test::asset(QStringLiteral("RiggedSimple"))));
     // A skin joint: its node, with the scene tree in front.
-    QVERIFY(w_->showPointer(QStringLiteral("/skins/0/joints/1")));
+    QVERIFY(w_->selection().showPointer(QStringLiteral("/skins/0/joints/1")));
     QCOMPARE(w_->context().selection().node, 3);
-    QVERIFY(in_front(w_->sceneTreeDock()));
+    QVERIFY(in_front(w_->docks().sceneTree));
     // An animation channel: its target node.
-    QVERIFY(w_->showPointer(QStringLiteral("/animations/0/channels/1/target")));
+    QVERIFY(w_->selection().showPointer(QStringLiteral("/animations/0/channels/1/target")));
     QCOMPARE(w_->context().selection().node, 2);
     // An accessor with an element named in the text (as the Khronos validator words
     // data errors): the primitive that reads it, that vertex's row, the mesh dock.
-    QVERIFY(w_->showPointer(QStringLiteral("/accessors/3"),
-                            QStringLiteral("Accessor element at index 7 is NaN or Infinity.")));
+    QVERIFY(w_->selection().showPointer(
+        QStringLiteral("/accessors/3"),
+        QStringLiteral("Accessor element at index 7 is NaN or Infinity.")));
     const Scene& rigged = *w_->context().scene();
     QCOMPARE(w_->context().selection().mesh, rigged.mesh_primitives[0][0]);
     QCOMPARE(w_->context().selection().node, 1);
     QCOMPARE(w_->context().selection().vertex, 7);
-    QVERIFY(in_front(w_->meshDock()));
-    QVERIFY(w_->selectedInstance() >= 0);
+    QVERIFY(in_front(w_->docks().mesh));
+    QVERIFY(w_->selection().selectedInstance() >= 0);
     // Indices: element 7 is in triangle 2.
-    QVERIFY(w_->showPointer(QStringLiteral("/accessors/0"),
-                            QStringLiteral("Indices accessor element at index 7 has vertex index "
-                                           "99 that exceeds number of available vertices 3.")));
+    QVERIFY(w_->selection().showPointer(
+        QStringLiteral("/accessors/0"),
+        QStringLiteral("Indices accessor element at index 7 has vertex index "
+                       "99 that exceeds number of available vertices 3.")));
     QCOMPARE(w_->context().selection().triangle, 2);
     // What the scene lacks selects nothing and says so.
-    QVERIFY(!w_->showPointer(QStringLiteral("/nodes/99")));
-    QVERIFY(!w_->showPointer(QStringLiteral("not a pointer")));
+    QVERIFY(!w_->selection().showPointer(QStringLiteral("/nodes/99")));
+    QVERIFY(!w_->selection().showPointer(QStringLiteral("not a pointer")));
 
     QVERIFY(test::load(*w_, test::asset(QStringLiteral("BoxTextured"))));
-    QVERIFY(w_->showPointer(QStringLiteral("/images/0")));
+    QVERIFY(w_->selection().showPointer(QStringLiteral("/images/0")));
     QCOMPARE(w_->context().selection().texture, 0);
-    QVERIFY(in_front(w_->textureDock()));
-    QVERIFY(w_->showPointer(QStringLiteral("/meshes/0/primitives/0/indices")));
+    QVERIFY(in_front(w_->docks().textures));
+    QVERIFY(w_->selection().showPointer(QStringLiteral("/meshes/0/primitives/0/indices")));
     QCOMPARE(w_->context().selection().mesh, w_->context().scene()->mesh_primitives[0][0]);
-    QVERIFY(in_front(w_->meshDock()));
+    QVERIFY(in_front(w_->docks().mesh));
 }
 
 void ValidationTests::sceneTreeMarksObjectsWithMessages() {
     QVERIFY(test::load(*w_, kGlass));
-    SceneTreeModel& tree = *w_->sceneTreeDock()->model();
+    SceneTreeModel& tree = *w_->docks().sceneTree->model();
     auto marked = [&tree](const QModelIndex& i) {
         return !i.siblingAtColumn(SceneTreeModel::NameColumn)
                     .data(Qt::DecorationRole)
@@ -238,10 +240,10 @@ void ValidationTests::sceneTreeMarksObjectsWithMessages() {
 
 void ValidationTests::dockHidesForFilesWithoutMessages() {
     QVERIFY(test::load(*w_, kGlass));
-    QVERIFY(w_->validationDock()->isVisible());
+    QVERIFY(w_->docks().validation->isVisible());
     QVERIFY(test::load(*w_, test::asset(QStringLiteral("Box"))));
-    QVERIFY(!w_->validationDock()->isVisible());
-    QCOMPARE(w_->validationDock()->model()->rowCount(), 0);
+    QVERIFY(!w_->docks().validation->isVisible());
+    QCOMPARE(w_->docks().validation->model()->rowCount(), 0);
 }
 
 QTEST_MAIN(ValidationTests)

@@ -106,7 +106,7 @@ private Q_SLOTS:
     void variantMenuSwitchesMaterialsWithoutReloading();
 
 private:
-    bool hasGpu() const { return window_->renderer() != nullptr; }
+    bool hasGpu() const { return window_->frames().renderer() != nullptr; }
     QVulkanInstance vulkan_;
     std::unique_ptr<MainWindow> window_;
     qsizetype seen_validation_ = 0;
@@ -135,30 +135,30 @@ void ViewportTests::framingFitsEveryAspect() {
 void ViewportTests::highlightFollowsSelection() {
     QVERIFY(load(*window_, QStringLiteral("builtin:default")));
     if (!hasGpu()) QSKIP("no Vulkan device: nothing is rendered");
-    window_->pickAt(QPointF(0.999, 0.999)); // background: clears the selection
+    window_->selection().pickAt(QPointF(0.999, 0.999)); // background: clears the selection
     QVERIFY(test::next_frame(*window_));
-    QVERIFY(!window_->lastFrame().highlightInstance);
+    QVERIFY(!window_->frames().lastFrame().request.highlight_instance);
     const int plain = orangePixels(*window_);
 
-    QVERIFY(window_->selectNodeNamed(QStringLiteral("sphere")));
-    const int instance = window_->selectedInstance();
+    QVERIFY(window_->selection().selectNodeNamed(QStringLiteral("sphere")));
+    const int instance = window_->selection().selectedInstance();
     QVERIFY(instance >= 0);
     QVERIFY(test::next_frame(*window_));
-    QCOMPARE(window_->lastFrame().highlightInstance.value_or(~0u),
+    QCOMPARE(window_->frames().lastFrame().request.highlight_instance.value_or(~0u),
              static_cast<std::uint32_t>(instance));
     QVERIFY2(orangePixels(*window_) > plain + 100, "the highlight is drawn");
 
     // The mesh dock's vertex and triangle ride along.
-    Q_EMIT window_->meshDock()->selectTriangleRequested(7);
-    Q_EMIT window_->meshDock()->selectVertexRequested(3);
+    Q_EMIT window_->docks().mesh->selectTriangleRequested(7);
+    Q_EMIT window_->docks().mesh->selectVertexRequested(3);
     QVERIFY(test::next_frame(*window_));
-    QCOMPARE(window_->lastFrame().highlightTriangle.value_or(~0u), 7u);
-    QCOMPARE(window_->lastFrame().highlightVertex.value_or(~0u), 3u);
-    QVERIFY(!window_->logDock()->text().contains(QStringLiteral("Rendering stopped")));
+    QCOMPARE(window_->frames().lastFrame().request.highlight_triangle.value_or(~0u), 7u);
+    QCOMPARE(window_->frames().lastFrame().request.highlight_vertex.value_or(~0u), 3u);
+    QVERIFY(!window_->docks().log->text().contains(QStringLiteral("Rendering stopped")));
 
     // A node without a mesh (the instance grid's parent) outlines its subtree: every
     // instance placed by a descendant, found here by walking the parents.
-    QVERIFY(window_->selectNodeNamed(QStringLiteral("instance grid")));
+    QVERIFY(window_->selection().selectNodeNamed(QStringLiteral("instance grid")));
     const Scene& scene = *window_->context().scene();
     const int grid = window_->context().selection().node;
     QCOMPARE(scene.nodes[std::size_t(grid)].mesh, -1);
@@ -172,17 +172,17 @@ void ViewportTests::highlightFollowsSelection() {
             }
     QVERIFY(expected.size() > 1);
     QVERIFY(test::next_frame(*window_));
-    QVERIFY(!window_->lastFrame().highlightInstance);
-    QCOMPARE(window_->lastFrame().outlineInstances, expected);
+    QVERIFY(!window_->frames().lastFrame().request.highlight_instance);
+    QCOMPARE(window_->frames().lastFrame().request.highlight_outline, expected);
     QVERIFY2(orangePixels(*window_) > plain + 100, "the subtree's outline is drawn");
 }
 
 void ViewportTests::uncheckedNodeLeavesTheViewport() {
     QVERIFY(load(*window_, QStringLiteral("builtin:default")));
     if (!hasGpu()) QSKIP("no Vulkan device: nothing is rendered");
-    window_->pickAt(QPointF(0.999, 0.999)); // background: no selection highlight
+    window_->selection().pickAt(QPointF(0.999, 0.999)); // background: no selection highlight
     QVERIFY(test::next_frame(*window_));
-    QVERIFY(!window_->lastFrame().hiddenNodes);
+    QVERIFY(!window_->frames().lastFrame().hiddenNodes);
     const QImage shown = test::viewport_shot(*window_);
     const Scene& scene = *window_->context().scene();
     int sphere = -1;
@@ -190,11 +190,11 @@ void ViewportTests::uncheckedNodeLeavesTheViewport() {
         if (scene.nodes[n].name == "sphere") sphere = static_cast<int>(n);
     QVERIFY(sphere >= 0);
     // The checkbox, as a user unticks it: model -> context -> frame -> renderer.
-    SceneTreeModel& tree = *window_->sceneTreeDock()->model();
+    SceneTreeModel& tree = *window_->docks().sceneTree->model();
     QVERIFY(tree.setData(tree.indexOfNode(sphere), Qt::Unchecked, Qt::CheckStateRole));
     QVERIFY(!window_->context().nodeVisible(sphere));
     QVERIFY(test::next_frame(*window_));
-    const auto mask = window_->lastFrame().hiddenNodes;
+    const auto mask = window_->frames().lastFrame().hiddenNodes;
     QVERIFY(mask && static_cast<std::size_t>(sphere) < mask->size() &&
             (*mask)[static_cast<std::size_t>(sphere)]);
     const QImage hidden = test::viewport_shot(*window_);
@@ -202,15 +202,15 @@ void ViewportTests::uncheckedNodeLeavesTheViewport() {
     QVERIFY2(changed > 500, qPrintable(QStringLiteral("%1 pixels changed").arg(changed)));
     QVERIFY(tree.setData(tree.indexOfNode(sphere), Qt::Checked, Qt::CheckStateRole));
     QVERIFY(test::next_frame(*window_));
-    QVERIFY(!window_->lastFrame().hiddenNodes);
+    QVERIFY(!window_->frames().lastFrame().hiddenNodes);
     QCOMPARE(differingPixels(shown, test::viewport_shot(*window_)), 0);
 }
 
 void ViewportTests::gpuCullingAgreesWithCpu() {
     QVERIFY(load(*window_, QStringLiteral("builtin:grid?n=20")));
     if (!hasGpu()) QSKIP("no Vulkan device: no GPU culling");
-    const int errors = window_->logDock()->errorCount();
-    window_->setGpuCulling(true);
+    const int errors = window_->docks().log->errorCount();
+    window_->views().setGpuCulling(true);
     for (int step = 0; step < 3; ++step) {
         window_->viewport()->camera().orbit(120.0f, 20.0f); // new frustum each step
         Q_EMIT window_->viewport()->cameraChanged();
@@ -221,10 +221,10 @@ void ViewportTests::gpuCullingAgreesWithCpu() {
         const CullSample* s = test::culling_monitor(*window_).latest();
         QCOMPARE(s->cpu_gpu_differences, 0);
         QCOMPARE(static_cast<std::uint64_t>(s->gpu_visible), s->cpu.visible);
-        QVERIFY(window_->cullingDock()->agreementText().contains(QStringLiteral("✔")));
-        QVERIFY(window_->cullingDock()->valueText(CullingDock::GpuMs) != QStringLiteral("—"));
+        QVERIFY(window_->docks().culling->agreementText().contains(QStringLiteral("✔")));
+        QVERIFY(window_->docks().culling->valueText(CullingDock::GpuMs) != QStringLiteral("—"));
         QVERIFY(test::next_frame(*window_));
-        QVERIFY(window_->lastFrame().gpuCulling);
+        QVERIFY(window_->frames().lastFrame().request.cull == gpu::CullPath::Gpu);
     }
     // Scene switches with the GPU path on: each new scene is checked against its own culler.
     for (const QString& spec :
@@ -236,12 +236,12 @@ void ViewportTests::gpuCullingAgreesWithCpu() {
         const CullSample* s = test::culling_monitor(*window_).latest();
         QCOMPARE(s->cpu_gpu_differences, 0);
     }
-    window_->setGpuCulling(false);
+    window_->views().setGpuCulling(false);
     QCOMPARE(test::culling_monitor(*window_).latest()->gpu_visible, -1);
-    QVERIFY(window_->cullingDock()->agreementText().contains(QStringLiteral("off")));
+    QVERIFY(window_->docks().culling->agreementText().contains(QStringLiteral("off")));
     QVERIFY(test::next_frame(*window_));
-    QVERIFY(!window_->lastFrame().gpuCulling);
-    QCOMPARE(window_->logDock()->errorCount(), errors);
+    QVERIFY(window_->frames().lastFrame().request.cull == gpu::CullPath::Cpu);
+    QCOMPARE(window_->docks().log->errorCount(), errors);
 }
 
 void ViewportTests::cullingDockShowsTheRenderersPasses() {
@@ -249,12 +249,13 @@ void ViewportTests::cullingDockShowsTheRenderersPasses() {
     QVERIFY(load(*window_, QStringLiteral("builtin:default")));
     if (!hasGpu()) QSKIP("no Vulkan device: nothing is rendered");
     // Full-size frames: moving frames drawn reduced on a slow device have no shadows.
-    window_->renderer()->setInteractiveScaling(false);
-    const auto restore = qScopeGuard([this] { window_->renderer()->setInteractiveScaling(true); });
+    window_->frames().renderer()->setInteractiveScaling(false);
+    const auto restore =
+        qScopeGuard([this] { window_->frames().renderer()->setInteractiveScaling(true); });
     window_->viewport()->camera().orbit(30.0f, 0.0f); // the shadow cascades are redrawn
     Q_EMIT window_->viewport()->cameraChanged();
     // A frame's statistics are read when its frame slot comes round again.
-    const CullingDock& dock = *window_->cullingDock();
+    const CullingDock& dock = *window_->docks().culling;
     for (int frame = 0; frame < 6 && dock.passRows() < 2; ++frame) {
         window_->viewport()->camera().orbit(5.0f, 0.0f);
         Q_EMIT window_->viewport()->cameraChanged();
@@ -325,7 +326,7 @@ void ViewportTests::framingIsTheEnginesOnLoadFrameAllAndSelection() {
     vp.camera().dolly(3.0f);
     QTest::keyClick(&vp, Qt::Key_F);
     expectAuto("frame all");
-    QVERIFY(window_->selectNodeNamed(QStringLiteral("0")));
+    QVERIFY(window_->selection().selectNodeNamed(QStringLiteral("0")));
     vp.camera().orbit(-150.0f, 40.0f);
     const glm::vec3 direction = vp.camera().forward();
     QTest::keyClick(&vp, Qt::Key_F, Qt::ShiftModifier);
@@ -339,9 +340,9 @@ void ViewportTests::fileCamerasAreOfferedAndSetTheFront() {
     // where the file's cameras are, the automatic view looks from that camera's side, and
     // View › glTF Cameras looks through it.
     QVERIFY(load(*window_, test::asset(QStringLiteral("Duck"))));
-    QVERIFY2(window_->logDock()->text().contains(
+    QVERIFY2(window_->docks().log->text().contains(
                  QStringLiteral("The file places 1 camera(s): View › glTF Cameras")),
-             qPrintable(window_->logDock()->text()));
+             qPrintable(window_->docks().log->text()));
     const Scene& scene = *window_->context().scene();
     const glm::vec3 file_eye = glm::vec3(scene.placed_cameras.at(0).world[3]);
     const OrbitCamera& cam = window_->viewport()->camera();
@@ -379,13 +380,13 @@ void ViewportTests::variantMenuSwitchesMaterialsWithoutReloading() {
         if (!a->isSeparator()) names << a->text();
     QCOMPARE(names, (QStringList{QStringLiteral("&Default Materials"), QStringLiteral("Warm"),
                                  QStringLiteral("Cool")}));
-    window_->pickAt(QPointF(0.999, 0.999)); // no selection highlight
+    window_->selection().pickAt(QPointF(0.999, 0.999)); // no selection highlight
     QVERIFY(test::next_frame(*window_));
     const QImage before = test::viewport_shot(*window_);
     const auto* session = window_->context().session();
     variants->actions().at(2)->trigger(); // Warm (after the separator)
     QTRY_VERIFY_WITH_TIMEOUT(
-        window_->logDock()->text().contains(QStringLiteral(
+        window_->docks().log->text().contains(QStringLiteral(
             "Material variant: Warm (2 primitive(s), 2 draw(s) changed material; 8 GPU bytes "
             "uploaded; nothing reloaded).")),
         kLoadTimeoutMs);
@@ -394,9 +395,9 @@ void ViewportTests::variantMenuSwitchesMaterialsWithoutReloading() {
     const int changed = differingPixels(before, test::viewport_shot(*window_));
     QVERIFY2(changed > 200, qPrintable(QStringLiteral("%1 pixels changed").arg(changed)));
     variants->actions().at(0)->trigger(); // back to the defaults
-    QTRY_VERIFY_WITH_TIMEOUT(
-        window_->logDock()->text().contains(QStringLiteral("Material variant: default materials")),
-        kLoadTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->docks().log->text().contains(
+                                 QStringLiteral("Material variant: default materials")),
+                             kLoadTimeoutMs);
     QVERIFY(test::next_frame(*window_));
     QCOMPARE(differingPixels(before, test::viewport_shot(*window_)), 0);
     QVERIFY(load(*window_, QStringLiteral("builtin:default")));

@@ -16,11 +16,28 @@
 
 #include <malloc.h>
 
+#include "compare_controller.h"
+#include "compare_controls.h"
+#include "culling_dock.h"
 #include "culling_monitor.h"
 #include "difference_legend.h"
 #include "engine_probe.h"
+#include "environment_menu.h"
+#include "lab_dock.h"
+#include "load_controller.h"
+#include "log_dock.h"
 #include "main_window.h"
+#include "material_dock.h"
+#include "mesh_dock.h"
+#include "reload_controller.h"
+#include "render_controller.h"
 #include "render_thread.h"
+#include "scene_tree_dock.h"
+#include "selection_controller.h"
+#include "texture_dock.h"
+#include "timeline_dock.h"
+#include "validation_dock.h"
+#include "view_controller.h"
 #include "viewport_window.h"
 
 namespace sherpa::editor::test {
@@ -38,20 +55,28 @@ inline SceneLoadJob& scene_loader(const MainWindow& w) {
 inline DifferenceLegend& difference_legend(const MainWindow& w) {
     return *w.findChild<DifferenceLegend*>(QStringLiteral("differenceLegend"));
 }
+// Reload on change (the watched files, the Settings menu's choice).
+inline ReloadController& reload_controller(const MainWindow& w) {
+    return *w.findChild<ReloadController*>();
+}
+// View › Reset Layout, as the menu triggers it.
+inline void reset_layout(const MainWindow& w) {
+    w.findChild<QAction*>(QStringLiteral("resetLayoutAction"))->trigger();
+}
 // The load progress bar's text as last shown (it stays when the bar hides).
 inline QString progress_text(const MainWindow& w) {
     return w.findChild<QProgressBar*>(QStringLiteral("loadProgress"))->text();
 }
 // The serial of the latest frame the window asked the render thread for; 0 without one.
 inline std::uint64_t latest_request(const MainWindow& w) {
-    return w.renderer() ? w.renderer()->latestRequest() : 0;
+    return w.frames().renderer() ? w.frames().renderer()->latestRequest() : 0;
 }
 
 // Opens `spec` and waits (bounded) for the load to end; true when it loaded.
 inline bool load(MainWindow& w, const QString& spec) {
-    QSignalSpy loaded(&w, &MainWindow::sceneLoaded);
-    QSignalSpy failed(&w, &MainWindow::loadFailed);
-    w.openScene(spec);
+    QSignalSpy loaded(&w.loads(), &LoadController::sceneLoaded);
+    QSignalSpy failed(&w.loads(), &LoadController::loadFailed);
+    w.loads().openScene(spec);
     QElapsedTimer t;
     t.start();
     while (loaded.isEmpty() && failed.isEmpty() && t.elapsed() < kLoadTimeoutMs)
@@ -73,9 +98,9 @@ inline void isolate_settings() {
 // The validation layer's messages since the last call ("" when none); suites set
 // SHERPA_VALIDATION=1 before creating the Vulkan instance and fail on any.
 inline QString fresh_validation_messages(const MainWindow& w, qsizetype& seen) {
-    if (!w.renderer()) return {};
+    if (!w.frames().renderer()) return {};
     const QStringList messages =
-        w.renderer()->call([](GpuViewport& gpu) { return validation_messages(gpu); });
+        w.frames().renderer()->call([](GpuViewport& gpu) { return validation_messages(gpu); });
     const QStringList fresh = messages.mid(seen);
     seen = messages.size();
     return fresh.join(QLatin1Char('\n'));
@@ -103,10 +128,10 @@ inline std::unique_ptr<MainWindow> open_validated_window(QVulkanInstance& vulkan
 // are drawn on another thread: `n` full-size frames are drawn first, so that every
 // frame slot holds its per-scene buffers whatever was drawn before.
 inline std::int64_t gpu_objects(MainWindow& w, int n = 3) {
-    if (!w.renderer()) return -1;
+    if (!w.frames().renderer()) return -1;
     for (int i = 0; i < n; ++i)
-        w.renderer()->renderAndWait(w.lastFrame(), w.viewport()->vulkanSurface());
-    return w.renderer()->call([](GpuViewport& gpu) { return gpu_object_count(gpu); });
+        w.frames().renderer()->renderAndWait(w.frames().lastFrame(), w.viewport()->vulkanSurface());
+    return w.frames().renderer()->call([](GpuViewport& gpu) { return gpu_object_count(gpu); });
 }
 
 // Bytes malloc has handed out and not yet been given back, in every arena (mmapped
@@ -151,7 +176,7 @@ inline bool next_frame(MainWindow& w) {
 // the session of a frame asked for after this call.
 inline SharedSession compare_session(MainWindow& w) {
     next_frame(w);
-    return w.lastFrame().compareSession;
+    return w.frames().lastFrame().compareSession;
 }
 
 // The viewport's pixels in a screenshot of the window.

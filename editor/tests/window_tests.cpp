@@ -77,9 +77,10 @@ void WindowTests::opensEveryAsset() {
         const Scene* s = window_->context().scene();
         QCOMPARE(window_->context().sceneSpec(), test::asset(name));
         // Scenes, then skins and animations.
-        QCOMPARE(window_->sceneTreeDock()->model()->rowCount(),
+        QCOMPARE(window_->docks().sceneTree->model()->rowCount(),
                  static_cast<int>(s->scenes.size() + s->skins.size() + s->animations.size()));
-        QCOMPARE(window_->textureDock()->model()->rowCount(), static_cast<int>(s->textures.size()));
+        QCOMPARE(window_->docks().textures->model()->rowCount(),
+                 static_cast<int>(s->textures.size()));
         QCOMPARE(test::culling_monitor(*window_).latest()->cpu.total, s->instances.size());
     }
 }
@@ -88,32 +89,33 @@ void WindowTests::selectionReachesEveryDock() {
     QVERIFY(load(*window_, test::asset(QStringLiteral("DamagedHelmet"))));
     const Scene& s = *window_->context().scene();
     // Select through the tree view as a user would: the node's primitive row.
-    QTreeView* tree = window_->sceneTreeDock()->view();
+    QTreeView* tree = window_->docks().sceneTree->view();
     const QModelIndex node = tree->model()->index(0, 0, tree->model()->index(0, 0));
     QVERIFY(node.isValid());
     tree->setCurrentIndex(node);
     QCOMPARE(window_->context().selection().node, 0);
     const int mesh = window_->context().selection().mesh;
     QVERIFY(mesh >= 0);
-    QCOMPARE(window_->meshDock()->vertices()->rowCount(),
+    QCOMPARE(window_->docks().mesh->vertices()->rowCount(),
              static_cast<int>(s.meshes[static_cast<std::size_t>(mesh)].vertices.size()));
-    QCOMPARE(window_->materialDock()->model()->rowCount(), 14);
-    QCOMPARE(window_->materialDock()->model()->textureOfRow(6), s.materials[0].base_color.texture);
+    QCOMPARE(window_->docks().material->model()->rowCount(), 14);
+    QCOMPARE(window_->docks().material->model()->textureOfRow(6),
+             s.materials[0].base_color.texture);
     // Jump to a vertex: the table scrolls there and the selection says so.
-    window_->meshDock()->jumpToVertex(12345);
+    window_->docks().mesh->jumpToVertex(12345);
     QCOMPARE(window_->context().selection().vertex, 12345);
     // Tangent comparison runs off the UI thread and fills the sortable column.
-    QSignalSpy ready(window_->meshDock(), &MeshDock::tangentErrorsReady);
-    window_->meshDock()->computeTangentErrors();
+    QSignalSpy ready(window_->docks().mesh, &MeshDock::tangentErrorsReady);
+    window_->docks().mesh->computeTangentErrors();
     QVERIFY(ready.wait(kLoadTimeoutMs));
-    QVERIFY(
-        window_->meshDock()
-            ->vertices()
-            ->data(window_->meshDock()->vertices()->index(0, VertexTableModel::TangentErrorColumn),
-                   Qt::DisplayRole)
-            .toString() != QStringLiteral("—"));
+    QVERIFY(window_->docks()
+                .mesh->vertices()
+                ->data(window_->docks().mesh->vertices()->index(
+                           0, VertexTableModel::TangentErrorColumn),
+                       Qt::DisplayRole)
+                .toString() != QStringLiteral("—"));
     // Numbers show six significant digits; Ctrl+C copies all nine of the float.
-    QTableView* vertices = window_->meshDock()->vertexView();
+    QTableView* vertices = window_->docks().mesh->vertexView();
     const QAbstractItemModel* vm = vertices->model();
     QModelIndex rounded;
     for (int row = 0; row < 64 && !rounded.isValid(); ++row)
@@ -135,43 +137,45 @@ void WindowTests::selectionReachesEveryDock() {
     QCOMPARE(QApplication::clipboard()->text().toFloat(),
              rounded.data(Format::kExactTextRole).toString().toFloat());
     // Filter the tree: only matching names (and their ancestors) stay.
-    window_->sceneTreeDock()->setFilter(QStringLiteral("no such node"));
+    window_->docks().sceneTree->setFilter(QStringLiteral("no such node"));
     QCOMPARE(tree->model()->rowCount(), 0);
-    window_->sceneTreeDock()->setFilter(QString());
+    window_->docks().sceneTree->setFilter(QString());
     QCOMPARE(tree->model()->rowCount(), static_cast<int>(s.scenes.size()));
 }
 
 void WindowTests::pickingSelectsInTheTree() {
     QVERIFY(load(*window_, test::asset(QStringLiteral("Duck"))));
-    const int instance = window_->pickAt(QPointF(0.0, 0.0)); // framed: the duck is in the middle
+    const int instance =
+        window_->selection().pickAt(QPointF(0.0, 0.0)); // framed: the duck is in the middle
     QVERIFY(instance >= 0);
     const int node = static_cast<int>(
         window_->context().scene()->instances[static_cast<std::size_t>(instance)].node_id);
     QCOMPARE(window_->context().selection().node, node);
     QVERIFY(window_->context().selection().triangle >= 0);
-    const QModelIndex current = window_->sceneTreeDock()->view()->currentIndex();
+    const QModelIndex current = window_->docks().sceneTree->view()->currentIndex();
     QCOMPARE(current.data(SceneTreeModel::NodeRole).toInt(), node);
-    QCOMPARE(window_->pickAt(QPointF(0.99, 0.99)), -1); // a corner shows only background
+    QCOMPARE(window_->selection().pickAt(QPointF(0.99, 0.99)),
+             -1); // a corner shows only background
     QCOMPARE(window_->context().selection().node, -1);
 }
 
 void WindowTests::failedLoadKeepsTheScene() {
     QVERIFY(load(*window_, test::asset(QStringLiteral("Box"))));
     const Scene* before = window_->context().scene();
-    const int errors = window_->logDock()->errorCount();
+    const int errors = window_->docks().log->errorCount();
     for (const char* broken : {"invalid_json.gltf", "truncated.glb", "missing_buffer.gltf"}) {
         const QString path = QStringLiteral(SHERPA_TEST_DATA_DIR "/") + QLatin1String(broken);
         QVERIFY(!load(*window_, path));
         QCOMPARE(window_->context().scene(), before);
         QCOMPARE(window_->context().sceneSpec(), test::asset(QStringLiteral("Box")));
     }
-    QCOMPARE(window_->logDock()->errorCount(), errors + 3);
+    QCOMPARE(window_->docks().log->errorCount(), errors + 3);
     QVERIFY(!load(*window_, QStringLiteral("/no/such/file.gltf")));
     QCOMPARE(window_->context().scene(), before);
     QVERIFY(window_->statusBar()->currentMessage().contains(
         QLatin1String("the current scene is kept")));
     // With nothing open, the failure must not claim that a scene is kept.
-    window_->closeScene();
+    window_->loads().closeScene();
     QVERIFY(!load(*window_, QStringLiteral(SHERPA_TEST_DATA_DIR "/png_renamed.gltf")));
     QVERIFY(window_->statusBar()->currentMessage().contains(QLatin1String("no scene is open")));
     bool dialog_says_so = false;
@@ -185,12 +189,12 @@ void WindowTests::failedLoadKeepsTheScene() {
 void WindowTests::cancelKeepsTheScene() {
     QVERIFY(load(*window_, test::asset(QStringLiteral("Box"))));
     const Scene* before = window_->context().scene();
-    QSignalSpy loaded(window_.get(), &MainWindow::sceneLoaded);
-    QSignalSpy canceled(window_.get(), &MainWindow::loadCanceled);
-    window_->openScene(test::asset(QStringLiteral("DamagedHelmet")));
-    window_->cancelLoad();
+    QSignalSpy loaded(&window_->loads(), &LoadController::sceneLoaded);
+    QSignalSpy canceled(&window_->loads(), &LoadController::loadCanceled);
+    window_->loads().openScene(test::asset(QStringLiteral("DamagedHelmet")));
+    window_->loads().cancelLoad();
     QCOMPARE(canceled.count(), 1);
-    QVERIFY(window_->logDock()->text().contains(QStringLiteral("cancelled")));
+    QVERIFY(window_->docks().log->text().contains(QStringLiteral("cancelled")));
     QTest::qWait(1500); // the worker finishes in the background; its result must be dropped
     QCOMPARE(loaded.count(), 0);
     QCOMPARE(window_->context().scene(), before);
@@ -202,20 +206,22 @@ void WindowTests::languagesSwitchAtRuntime() {
     const auto file_menu = [this] { return window_->menuBar()->actions().at(0)->text(); };
     QVERIFY(window_->setLanguage(QStringLiteral("de")));
     QCOMPARE(file_menu(), QStringLiteral("&Datei"));
-    QCOMPARE(window_->sceneTreeDock()->windowTitle(), QStringLiteral("Szenenbaum"));
+    QCOMPARE(window_->docks().sceneTree->windowTitle(), QStringLiteral("Szenenbaum"));
     // The scene tree's root item ("Scene 0") is translated too.
     const auto root = [this] {
-        const QAbstractItemModel* m = window_->sceneTreeDock()->model();
+        const QAbstractItemModel* m = window_->docks().sceneTree->model();
         return m->index(0, 0).data().toString();
     };
     QVERIFY2(root().startsWith(QStringLiteral("Szene ")), qPrintable(root()));
     QVERIFY(window_->setLanguage(QStringLiteral("zh_CN")));
     QCOMPARE(file_menu(), QStringLiteral("文件(&F)"));
-    QCOMPARE(window_->cullingDock()->windowTitle(), QStringLiteral("剔除统计"));
+    QCOMPARE(window_->docks().culling->windowTitle(), QStringLiteral("剔除统计"));
     QVERIFY2(root().startsWith(QStringLiteral("场景 ")), qPrintable(root()));
-    QCOMPARE(
-        window_->textureDock()->model()->headerData(0, Qt::Horizontal, Qt::DisplayRole).toString(),
-        QStringLiteral("纹理"));
+    QCOMPARE(window_->docks()
+                 .textures->model()
+                 ->headerData(0, Qt::Horizontal, Qt::DisplayRole)
+                 .toString(),
+             QStringLiteral("纹理"));
     QVERIFY(!window_->setLanguage(QStringLiteral("xx")));
     QVERIFY(window_->setLanguage(QStringLiteral("en")));
     QCOMPARE(file_menu(), QStringLiteral("&File"));
@@ -248,10 +254,10 @@ void WindowTests::viewMenuIsTheEngineTable() {
     QVERIFY(window_->setLanguage(QStringLiteral("en")));
     for (std::size_t i = 0; i < raster_views; ++i) {
         view_actions.at(qsizetype(i))->trigger();
-        QCOMPARE(window_->debugView(), QString::fromLatin1(raster[i]->name.data()));
+        QCOMPARE(window_->views().debugView(), QString::fromLatin1(raster[i]->name.data()));
         QVERIFY(view_actions.at(qsizetype(i))->isChecked());
     }
-    QVERIFY(window_->setDebugView(QStringLiteral("lit"), false));
+    QVERIFY(window_->views().setDebugView(QStringLiteral("lit"), false));
     QMenu* overlays = submenu(QStringLiteral("&Overlays"));
     QVERIFY(overlays);
     QStringList expected;
@@ -263,17 +269,17 @@ void WindowTests::viewMenuIsTheEngineTable() {
 }
 
 void WindowTests::layoutIsSavedAndRestored() {
-    window_->cullingDock()->setFloating(true);
-    window_->logDock()->hide();
+    window_->docks().culling->setFloating(true);
+    window_->docks().log->hide();
     window_->close(); // saves geometry and dock state
     MainWindow second(nullptr);
-    QVERIFY(second.cullingDock()->isFloating());
-    QVERIFY(second.logDock()->isHidden());
+    QVERIFY(second.docks().culling->isFloating());
+    QVERIFY(second.docks().log->isHidden());
     QVERIFY(!EditorSettings().recentFiles().isEmpty());
     // The last file loaded (built-in scenes are not files, a cancelled load is not one).
     QCOMPARE(EditorSettings().recentFiles().value(0), test::asset(QStringLiteral("Box")));
-    second.cullingDock()->setFloating(false);
-    second.logDock()->show();
+    second.docks().culling->setFloating(false);
+    second.docks().log->show();
     second.close();
 }
 

@@ -23,11 +23,11 @@ from pathlib import Path
 # Classes not yet split, each held at the size it has (a ratchet: it may shrink, never
 # grow): name -> (public, all, why). Remove a row once its class is within the limits.
 EXEMPT: dict[str, tuple[int, int, str]] = {
-    "MainWindow": (44, 85, "the window: controllers (load, view, compare, motion) not yet split out"),
     "FrameRecorder": (16, 39, "frame slots and the ray-traced frames (renderer_rt, renderer_path, "
                       "renderer_side) are its next seams; set_variant() is the material "
                       "variant switch's way in, as path_trace_image() is the path tracer's"),
-    "GpuViewport": (28, 32, "the engine behind the viewport: not yet reduced to Qt glue"),
+    "GpuViewport": (18, 24, "the engine behind the viewport: device, upload, environment, present and "
+                    "the readbacks (material, GPU culling check) in one class"),
     "ViewportWindow": (19, 30, "the viewport window: input, divider and frame pacing in one class"),
     "LabDock": (16, 29, "the Lab dock: runner wiring and table/chart in one class"),
     "EditorContext": (22, 23, "the editor's shared state: selection, visibility and session in one"),

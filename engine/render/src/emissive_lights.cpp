@@ -1,5 +1,6 @@
 #include <sherpa/render/emissive_lights.h>
 
+#include <bit>
 #include <cmath>
 
 namespace sherpa::gpu {
@@ -61,7 +62,8 @@ EmissiveLights emissive_lights(const Scene& scene, std::size_t max_triangles) {
                 return EmissiveLights{{}, 0.0f, 0.0, std::move(out.warnings)};
             }
             out.triangles.push_back(
-                {glm::vec4(p[0], 0.0f), glm::vec4(e1, lum), glm::vec4(e2, 0.0f)});
+                {glm::vec4(p[0], 0.0f), glm::vec4(e1, lum),
+                 glm::vec4(e2, std::bit_cast<float>(inst.material_id))});
             power.push_back(double(lum) * area);
         }
     }

@@ -8,7 +8,7 @@
 struct GPUEmissiveTriangle {
     vec4 p0_cdf;     // xyz first corner (world), w CDF up to and including this triangle
     vec4 e1_density; // xyz p1 - p0, w density per area (its luminance / total power)
-    vec4 e2;         // xyz p2 - p0, w the material's index (uint bits)
+    vec4 e2;         // xyz p2 - p0
 };
 
 layout(set = 1, binding = 10, std430) readonly buffer EmissiveTriangleBlock {
@@ -20,9 +20,8 @@ bool has_emissive_lights() {
 }
 
 // A point `y` on an emissive triangle drawn by power, its unit face normal and its
-// density per area (the probability of its triangle over the triangle's area), and the
-// triangle's material.
-void sample_emissive(inout uint rng, out vec3 y, out vec3 normal, out float density, out uint material) {
+// density per area (the probability of its triangle over the triangle's area).
+void sample_emissive(inout uint rng, out vec3 y, out vec3 normal, out float density) {
     const float u = next_random(rng);
     uint lo = 0u, hi = uint(emissive_triangles.length()) - 1u;
     while (lo < hi) {
@@ -35,7 +34,6 @@ void sample_emissive(inout uint rng, out vec3 y, out vec3 normal, out float dens
     y = t.p0_cdf.xyz + (1.0 - v) * su * t.e1_density.xyz + v * su * t.e2.xyz;
     normal = normalize(cross(t.e1_density.xyz, t.e2.xyz));
     density = t.e1_density.w;
-    material = floatBitsToUint(t.e2.w);
 }
 
 // The density per solid angle of reaching a point of emitted luminance `lum` through

@@ -9,11 +9,9 @@ namespace sherpa::gpu {
 
 BindlessTable::BindlessTable(ResourceManager& resources) : resources_(resources) {
     VkDevice device = resources.context().device();
-    // Hit shaders sample materials too where the device ray traces, and the path
-    // tracer's ray generation (an emissive texture's mean, to weigh its light choice).
+    // Hit shaders sample materials too where the device ray traces.
     const VkShaderStageFlags stages = resources.context().info().ray_tracing_enabled
                                           ? VK_SHADER_STAGE_FRAGMENT_BIT |
-                                                VK_SHADER_STAGE_RAYGEN_BIT_KHR |
                                                 VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR |
                                                 VK_SHADER_STAGE_ANY_HIT_BIT_KHR
                                           : VkShaderStageFlags(VK_SHADER_STAGE_FRAGMENT_BIT);

@@ -1,6 +1,5 @@
 #include <sherpa/render/emissive_lights.h>
 
-#include <bit>
 #include <cmath>
 
 namespace sherpa::gpu {
@@ -62,8 +61,7 @@ EmissiveLights emissive_lights(const Scene& scene, std::size_t max_triangles) {
                 return EmissiveLights{{}, 0.0f, 0.0, std::move(out.warnings)};
             }
             out.triangles.push_back(
-                {glm::vec4(p[0], 0.0f), glm::vec4(e1, lum),
-                 glm::vec4(e2, std::bit_cast<float>(inst.material_id))});
+                {glm::vec4(p[0], 0.0f), glm::vec4(e1, lum), glm::vec4(e2, 0.0f)});
             power.push_back(double(lum) * area);
         }
     }

@@ -60,7 +60,7 @@ PathTracePass::PathTracePass(Context& context, ResourceManager& resources,
     const VkDescriptorSetLayoutBinding bindings[kBindings] = {
         {0, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1, kRaygen, nullptr},
         {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, kRaygen, nullptr}, // the shown image
-        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kHitStages | kRaygen, nullptr}, // materials
+        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kHitStages, nullptr},
         {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kHitStages, nullptr},
         {4, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kRaygen, nullptr},
         // The environment: partially bound, nothing there (and nothing read) without one.

@@ -18,7 +18,7 @@ namespace sherpa::gpu {
 struct EmissiveTriangle {
     glm::vec4 p0_cdf;     // xyz first corner (world), w: the CDF up to and including it
     glm::vec4 e1_density; // xyz p1 - p0, w: density per area (luminance / total power)
-    glm::vec4 e2;         // xyz p2 - p0, w: the material's index (std::uint32_t bits)
+    glm::vec4 e2;         // xyz p2 - p0
 };
 static_assert(sizeof(EmissiveTriangle) == 48);
 

@@ -34,11 +34,12 @@ std::string lit_floor_gltf(const std::string& emissive, const std::string& stren
     std::memcpy(bytes.data() + sizeof(pos) + sizeof(nrm), idx, sizeof(idx));
     std::ostringstream j;
     j << R"({"asset":{"version":"2.0"},"extensionsUsed":["KHR_materials_emissive_strength")"
-      << (point_light ? R"(,"KHR_lights_punctual"],"extensions":{"KHR_lights_punctual":{"lights":)"
-                        R"([{"type":"point","color":[1,0.8,0.6],"intensity":3}]}},)"
-                        R"("scene":0,"scenes":[{"nodes":[0,1,2]}],"nodes":[{"mesh":0},{"mesh":1},)"
-                        R"({"translation":[1,0.6,1],"extensions":{"KHR_lights_punctual":{"light":0}}}],)"
-                      : R"(],"scene":0,"scenes":[{"nodes":[0,1]}],"nodes":[{"mesh":0},{"mesh":1}],)")
+      << (point_light
+              ? R"(,"KHR_lights_punctual"],"extensions":{"KHR_lights_punctual":{"lights":)"
+                R"([{"type":"point","color":[1,0.8,0.6],"intensity":3}]}},)"
+                R"("scene":0,"scenes":[{"nodes":[0,1,2]}],"nodes":[{"mesh":0},{"mesh":1},)"
+                R"({"translation":[1,0.6,1],"extensions":{"KHR_lights_punctual":{"light":0}}}],)"
+              : R"(],"scene":0,"scenes":[{"nodes":[0,1]}],"nodes":[{"mesh":0},{"mesh":1}],)")
       << R"("meshes":[{"primitives":[{"attributes":{"POSITION":0,"NORMAL":1},"indices":2,"material":0}]},)"
       << R"({"primitives":[{"attributes":{"POSITION":3,"NORMAL":4},"indices":5,"material":1}]}],)"
       << R"("materials":[{"pbrMetallicRoughness":{"baseColorFactor":[0.8,0.8,0.8,1],"metallicFactor":0},"doubleSided":true},)"
@@ -230,7 +231,8 @@ BlockMeans block_means(const gpu::PathTraceImage& img, std::uint32_t block) {
 TEST_F(PathTraceLights, OneLightRayConvergesToOneRayPerLight) {
     const gpu::EnvironmentImage room = gpu::room_environment(256);
     rt().set_environment(&room);
-    auto scene = load(write_temp("pt_choice.gltf", lit_floor_gltf("[1,0.9,0.8]", "4", true)).string());
+    auto scene =
+        load(write_temp("pt_choice.gltf", lit_floor_gltf("[1,0.9,0.8]", "4", true)).string());
     rt().load(*scene);
     gpu::FrameRequest s = view();
     s.sun = true;
@@ -261,8 +263,8 @@ TEST_F(PathTraceLights, OneLightRayConvergesToOneRayPerLight) {
     std::printf("sun, point light, room, emissive quad, 64x64, 256 spp: mean luminance %.5f one "
                 "light ray, %.5f one ray per light (largest block difference %.2f standard "
                 "errors); relative error %.4f vs %.4f\n",
-                one_error.mean_luminance, all_error.mean_luminance, worst,
-                one_error.relative_error, all_error.relative_error);
+                one_error.mean_luminance, all_error.mean_luminance, worst, one_error.relative_error,
+                all_error.relative_error);
     EXPECT_NEAR(one_error.mean_luminance / all_error.mean_luminance, 1.0, 0.01);
 }
 

@@ -234,8 +234,8 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTracedFrame& f, bool r
     std::uint32_t done = 0;
     do {
         push.first_sample = f.first_sample + done;
-        push.samples = std::min(kSamplesPerLaunch, f.samples - done) |
-                       (f.one_light_ray ? 0u : kPathAllLights);
+        push.samples =
+            std::min(kSamplesPerLaunch, f.samples - done) | (f.one_light_ray ? 0u : kPathAllLights);
         vkCmdPushConstants(cmd, layout_.get(), kAllStages, 0, sizeof(push), &push);
         pipeline_->trace(cmd, f.width, f.height);
         done += push.samples & kPathSampleCount;

@@ -37,7 +37,7 @@ layout(push_constant, scalar) uniform PathPush {
     uint first_sample;        // 72: index of this launch's first sample in each pixel
     float texture_lod;        // 76: mip level every texture is sampled at (< 0: 0)
     vec4 clear_color;         // 80: linear, the background where it is a colour
-    uint samples;             // 96: samples per pixel this launch
+    uint samples;             // 96: samples per pixel this launch (PATH_SAMPLE_COUNT), flags
     uint max_bounces;         // 100: surface interactions after the camera ray's hit
     uint seed;                // 104
     float light_inv_power;    // 108: 1 / the emissive triangles' power (0: no light list)
@@ -45,6 +45,8 @@ layout(push_constant, scalar) uniform PathPush {
     float sun_cos_radius;     // 120: cosine of the sun's angular radius
     float max_radiance;       // 124: larger sample radiance is counted non-finite (0)
 } pc;
+const uint PATH_SAMPLE_COUNT = 0xffffu;    // pc.samples: the count
+const uint PATH_ALL_LIGHTS = 0x10000u;     // pc.samples: one shadow ray per light (reference)
 #else
 layout(push_constant, scalar) uniform RayPush {
     mat4 inv_view_proj;       // 0: NDC -> world, reverse Z

@@ -19,8 +19,10 @@ namespace sherpa::test {
 namespace {
 
 // A white double-sided floor 4 x 4 at y = 0 and, 1 above it, a 0.5 x 0.5 quad facing
-// down (single-sided, black) that emits `emissive` x `strength`.
-std::string lit_floor_gltf(const std::string& emissive, const std::string& strength) {
+// down (single-sided, black) that emits `emissive` x `strength`; with `point_light` also
+// a KHR_lights_punctual point light 0.6 above the floor's corner quadrant.
+std::string lit_floor_gltf(const std::string& emissive, const std::string& strength,
+                           bool point_light = false) {
     const float pos[] = {-2,     0, -2,     2,     0, -2,     2,     0, 2,     -2,     0, 2,
                          -0.25f, 1, -0.25f, 0.25f, 1, -0.25f, 0.25f, 1, 0.25f, -0.25f, 1, 0.25f};
     const float nrm[] = {0, 1,  0, 0, 1,  0, 0, 1,  0, 0, 1,  0,
@@ -31,8 +33,13 @@ std::string lit_floor_gltf(const std::string& emissive, const std::string& stren
     std::memcpy(bytes.data() + sizeof(pos), nrm, sizeof(nrm));
     std::memcpy(bytes.data() + sizeof(pos) + sizeof(nrm), idx, sizeof(idx));
     std::ostringstream j;
-    j << R"({"asset":{"version":"2.0"},"extensionsUsed":["KHR_materials_emissive_strength"],)"
-      << R"("scene":0,"scenes":[{"nodes":[0,1]}],"nodes":[{"mesh":0},{"mesh":1}],)"
+    j << R"({"asset":{"version":"2.0"},"extensionsUsed":["KHR_materials_emissive_strength")"
+      << (point_light
+              ? R"(,"KHR_lights_punctual"],"extensions":{"KHR_lights_punctual":{"lights":)"
+                R"([{"type":"point","color":[1,0.8,0.6],"intensity":3}]}},)"
+                R"("scene":0,"scenes":[{"nodes":[0,1,2]}],"nodes":[{"mesh":0},{"mesh":1},)"
+                R"({"translation":[1,0.6,1],"extensions":{"KHR_lights_punctual":{"light":0}}}],)"
+              : R"(],"scene":0,"scenes":[{"nodes":[0,1]}],"nodes":[{"mesh":0},{"mesh":1}],)")
       << R"("meshes":[{"primitives":[{"attributes":{"POSITION":0,"NORMAL":1},"indices":2,"material":0}]},)"
       << R"({"primitives":[{"attributes":{"POSITION":3,"NORMAL":4},"indices":5,"material":1}]}],)"
       << R"("materials":[{"pbrMetallicRoughness":{"baseColorFactor":[0.8,0.8,0.8,1],"metallicFactor":0},"doubleSided":true},)"
@@ -190,6 +197,75 @@ TEST_F(PathTraceLights, AbsurdEmissionGivesAFiniteImage) {
         EXPECT_GT(lit, 0u) << strength << ": the floor is lit";
         EXPECT_EQ(rgba.size(), std::size_t(64 * 64 * 4));
     }
+}
+
+// Per block of 16 x 16 pixels: the mean luminance and the variance of that mean (the
+// pixels' sample variances over n, summed, over the block's pixel count squared).
+struct BlockMeans {
+    std::vector<double> mean, variance;
+};
+
+BlockMeans block_means(const gpu::PathTraceImage& img, std::uint32_t block) {
+    const std::uint32_t bx = img.width / block, by = img.height / block;
+    BlockMeans out{std::vector<double>(std::size_t(bx) * by, 0.0),
+                   std::vector<double>(std::size_t(bx) * by, 0.0)};
+    const double n = img.samples, pixels = double(block) * block;
+    for (std::uint32_t y = 0; y < by * block; ++y)
+        for (std::uint32_t x = 0; x < bx * block; ++x) {
+            const std::size_t i = std::size_t(y) * img.width + x, b = (y / block) * bx + x / block;
+            const double lum = 0.2126 * img.sums[4 * i] + 0.7152 * img.sums[4 * i + 1] +
+                               0.0722 * img.sums[4 * i + 2];
+            const double m = lum / n, var = std::max(0.0, double(img.moments[i]) / n - m * m);
+            out.mean[b] += m / pixels;
+            out.variance[b] += var / n / (pixels * pixels);
+        }
+    return out;
+}
+
+// Direct light from one shadow ray per surface, its light chosen in proportion to what
+// each would bring, converges to one ray per light (the reference): the sun (which the
+// quad shadows), a point light, the room environment and the emissive quad, two
+// bounces; every 16 x 16 block's mean luminance within 4.5 standard errors of the
+// difference. A choice that dropped a light, or weighted it wrongly, fails in the
+// blocks where that light matters.
+TEST_F(PathTraceLights, OneLightRayConvergesToOneRayPerLight) {
+    const gpu::EnvironmentImage room = gpu::room_environment(256);
+    rt().set_environment(&room);
+    auto scene =
+        load(write_temp("pt_choice.gltf", lit_floor_gltf("[1,0.9,0.8]", "4", true)).string());
+    rt().load(*scene);
+    gpu::FrameRequest s = view();
+    s.sun = true;
+    s.sun_direction = glm::normalize(glm::vec3(0.4f, -1.0f, 0.3f));
+    s.path.samples = 256;
+    s.path.restart = true;
+    rt().render(s);
+    const gpu::PathTraceImage one = gpu::read_path_trace(rt());
+    const gpu::PathTraceError one_error = gpu::estimate_error(one);
+    s.path.one_light_ray = false;
+    rt().render(s);
+    const gpu::PathTraceImage all = gpu::read_path_trace(rt());
+    const gpu::PathTraceError all_error = gpu::estimate_error(all);
+    rt().set_environment(nullptr);
+    ASSERT_EQ(one.samples, 256u);
+    ASSERT_EQ(all.samples, 256u);
+
+    const BlockMeans a = block_means(one, 16), b = block_means(all, 16);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < a.mean.size(); ++i) {
+        const double sigma = std::sqrt(a.variance[i] + b.variance[i]);
+        ASSERT_GT(b.mean[i], 0.0);
+        const double z = std::abs(a.mean[i] - b.mean[i]) / sigma;
+        worst = std::max(worst, z);
+        EXPECT_LT(z, 4.5) << "block " << i << ": " << a.mean[i] << " one ray, " << b.mean[i]
+                          << " one per light";
+    }
+    std::printf("sun, point light, room, emissive quad, 64x64, 256 spp: mean luminance %.5f one "
+                "light ray, %.5f one ray per light (largest block difference %.2f standard "
+                "errors); relative error %.4f vs %.4f\n",
+                one_error.mean_luminance, all_error.mean_luminance, worst, one_error.relative_error,
+                all_error.relative_error);
+    EXPECT_NEAR(one_error.mean_luminance / all_error.mean_luminance, 1.0, 0.01);
 }
 
 } // namespace

@@ -76,8 +76,8 @@ CASES = [
     ('emission', emissive([0.9, 0.5, 0.2]), 0.003),
     ('emission strength', emissive([0.2, 0.3, 0.1], 3.0), 0.003),
     ('ior 2', ior(2.0, [0.0, 0.0, 0.0], 0.1), 0.004),
-    ('glass volume', glass([0.9, 0.6, 0.4], 0.8), 0.012),
-    ('glass ior 1.33', glass([0.95, 0.95, 0.8], 1.0, 1.33), 0.016),
+    ('glass volume', glass([0.9, 0.6, 0.4], 0.8), 0.005),
+    ('glass ior 1.33', glass([0.95, 0.95, 0.8], 1.0, 1.33), 0.005),
     ('clearcoat on black', clearcoat([0.0, 0.0, 0.0], 1.0, 1.0, 0.0), 0.004),
     ('clearcoat on metal', clearcoat([0.9, 0.6, 0.3], 0.6, 1.0, 0.0, 1.0), 0.006),
 ]

@@ -234,10 +234,11 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTracedFrame& f, bool r
     std::uint32_t done = 0;
     do {
         push.first_sample = f.first_sample + done;
-        push.samples = std::min(kSamplesPerLaunch, f.samples - done);
+        push.samples =
+            std::min(kSamplesPerLaunch, f.samples - done) | (f.one_light_ray ? 0u : kPathAllLights);
         vkCmdPushConstants(cmd, layout_.get(), kAllStages, 0, sizeof(push), &push);
         pipeline_->trace(cmd, f.width, f.height);
-        done += push.samples;
+        done += push.samples & kPathSampleCount;
         memory_barrier(cmd, VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR,
                        VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                        VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR |

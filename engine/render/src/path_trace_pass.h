@@ -29,6 +29,7 @@ struct PathTracedFrame {
     std::uint32_t first_sample = 0, samples = 0; // first_sample 0: the sums start over
     GPUPathPushConstants push{};                 // first_sample, samples, env_size: set here
     bool light_sampling = true;                  // the emissive triangles' light list
+    bool one_light_ray = true;                   // PathTraceSettings::one_light_ray
 };
 
 class PathTracePass {

@@ -76,6 +76,7 @@ PathTraceFrame FrameRecorder::record_path(VkCommandBuffer cmd, FrameSlot& slot,
     key.add(state.rt_pose_key);
     key.add(state.visibility_version);
     key.add(settings.path.light_sampling);
+    key.add(settings.path.one_light_ray);
     key.add(state.material_generation);
     PathTraceFrame out;
     out.restarted = settings.path.restart || key.h != path_key_ || path_samples_ == 0 ||
@@ -88,6 +89,7 @@ PathTraceFrame FrameRecorder::record_path(VkCommandBuffer cmd, FrameSlot& slot,
                   : std::min(add, settings.path.max_samples - path_samples_);
     if (path_samples_ == 0) add = std::max(add, 1u); // an image needs a sample
     f.light_sampling = settings.path.light_sampling;
+    f.one_light_ray = settings.path.one_light_ray;
     f.first_sample = path_samples_;
     f.samples = add;
     path_->record(cmd, f, readback);

@@ -68,6 +68,9 @@ struct PathTraceSettings {
     // Next-event estimation of emissive triangles (off: BSDF sampling alone finds them,
     // the reference the light sampling is tested against).
     bool light_sampling = true;
+    // Direct light from one shadow ray per surface, its light chosen in proportion to
+    // what each would bring (off: one ray per light, the reference it is tested against).
+    bool one_light_ray = true;
 };
 
 struct FrameRequest {

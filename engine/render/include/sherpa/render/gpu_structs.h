@@ -299,7 +299,7 @@ struct GPUPathPushConstants {
     std::uint32_t first_sample; // index of this launch's first sample in each pixel
     float texture_lod;          // mip level of every texture (< 0: level 0)
     glm::vec4 clear_color;      // linear: the background where it is a colour
-    std::uint32_t samples;      // samples per pixel in this launch
+    std::uint32_t samples;      // samples per pixel in this launch (kPathSampleCount), flags
     std::uint32_t max_bounces;  // surface interactions a path may scatter at
     std::uint32_t seed;         // PathTraceSettings::seed
     float light_inv_power;      // 1 / the emissive triangles' power; 0: no light list
@@ -315,6 +315,10 @@ static_assert(offsetof(GPUPathPushConstants, samples) == 96);
 static_assert(offsetof(GPUPathPushConstants, env_size) == 112);
 static_assert(offsetof(GPUPathPushConstants, max_radiance) == 124);
 static_assert(sizeof(GPUPathPushConstants) == 128);
+// GPUPathPushConstants::samples: the count in the low bits and a flag (PATH_* in
+// rt_hit.glsl): one shadow ray per light at each surface instead of one in all.
+inline constexpr std::uint32_t kPathSampleCount = 0xffffu;
+inline constexpr std::uint32_t kPathAllLights = 0x10000u;
 
 // Push constants of the ray tracer's posing pass (shaders/pose_vertices.comp, scalar):
 // one dispatch per posed geometry (posed_geometry.cpp).

@@ -45,10 +45,9 @@ public:
     // the slots' per-scene buffers freed).
     void scene_loaded(const Scene& source);
     void scene_unloading();
-    // Waits for every frame in flight (before the environment changes).
-    void wait_all();
-    // The environment was replaced or removed: the background kept for it goes.
-    void environment_changed() { background_.release(); }
+    // Waits for every frame in flight. Before the environment is replaced or removed,
+    // `environment_goes` also frees the background kept for it.
+    void wait_all(bool environment_goes = false);
     FrameStats render(const FrameRequest& settings, std::vector<std::uint8_t>* rgba);
     // Swapchain path: waits until frame slot `slot` is free, records the frame into
     // `cmd` (already begun) drawing into `target`. The caller submits `cmd` with the

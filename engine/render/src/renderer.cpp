@@ -212,8 +212,9 @@ void FrameRecorder::count_target_bytes(ResidentStats& out) const {
         shadows_.bytes() + targets_.bytes() + background_.bytes() + out.transmission_target_bytes;
 }
 
-void FrameRecorder::wait_all() {
+void FrameRecorder::wait_all(bool environment_goes) {
     for (auto& slot : slots_) wait_slot(*slot);
+    if (environment_goes) background_.release();
 }
 
 void FrameRecorder::wait_slot(FrameSlot& slot) {

@@ -6,10 +6,10 @@
 namespace sherpa::gpu {
 
 void Renderer::set_environment(const EnvironmentImage* image, const EnvironmentOptions& options) {
-    // Frames in flight may read the old maps: wait for them before they go.
-    frames_->wait_all();
+    // Frames in flight may read the old maps (and the background drawn from them):
+    // wait for them before they go.
+    frames_->wait_all(true);
     scene_->set_environment(image, options);
-    frames_->environment_changed();
     resources_->collect_garbage();
 }
 

@@ -179,7 +179,7 @@ Row bench_meshopt_decoders(const fs::path& file, int runs, bool vertex) {
     struct Stream {
         std::span<const std::uint8_t> data;
         std::size_t count, stride;
-        std::string mode;
+        sherpa::meshopt::Mode mode;
         std::vector<std::uint8_t> out;
     };
     std::vector<Stream> streams;
@@ -194,7 +194,9 @@ Row bench_meshopt_decoders(const fs::path& file, int runs, bool vertex) {
             {buffer.data() + number(e, "byteOffset", 0), std::size_t(number(e, "byteLength", 0))},
             std::size_t(number(e, "count", 0)),
             std::size_t(number(e, "byteStride", 0)),
-            mode,
+            mode == "ATTRIBUTES"  ? sherpa::meshopt::Mode::Attributes
+            : mode == "TRIANGLES" ? sherpa::meshopt::Mode::Triangles
+                                  : sherpa::meshopt::Mode::Indices,
             {}};
         st.out.resize(st.count * st.stride);
         row.encoded += st.data.size();
@@ -207,22 +209,17 @@ Row bench_meshopt_decoders(const fs::path& file, int runs, bool vertex) {
         [&] {
             for (Stream& st : streams) {
                 const std::span<std::uint8_t> out(st.out);
-                const mo::Result r =
-                    st.mode == "ATTRIBUTES"
-                        ? mo::decode_vertex_buffer(out, st.count, st.stride, st.data)
-                    : st.mode == "TRIANGLES"
-                        ? mo::decode_index_buffer(out, st.count, st.stride, st.data)
-                        : mo::decode_index_sequence(out, st.count, st.stride, st.data);
+                const mo::Result r = mo::decode(st.mode, out, st.count, st.stride, st.data);
                 if (!r) throw std::runtime_error("our meshopt decode failed");
             }
         },
         [&] {
             for (Stream& st : streams) {
                 std::uint8_t* out = st.out.data();
-                const int rc = st.mode == "ATTRIBUTES"
+                const int rc = st.mode == mo::Mode::Attributes
                                    ? meshopt_decodeVertexBuffer(out, st.count, st.stride,
                                                                 st.data.data(), st.data.size())
-                               : st.mode == "TRIANGLES"
+                               : st.mode == mo::Mode::Triangles
                                    ? meshopt_decodeIndexBuffer(out, st.count, st.stride,
                                                                st.data.data(), st.data.size())
                                    : meshopt_decodeIndexSequence(out, st.count, st.stride,

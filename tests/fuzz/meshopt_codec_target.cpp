@@ -48,11 +48,7 @@ Case parse(std::span<const std::uint8_t> bytes) {
 
 mo::Result decode(const Case& c, std::vector<std::uint8_t>& out) {
     out.assign(c.count * c.stride, 0xA5);
-    return c.mode == mo::Mode::Attributes
-               ? mo::decode_vertex_buffer(out, c.count, c.stride, c.stream)
-           : c.mode == mo::Mode::Triangles
-               ? mo::decode_index_buffer(out, c.count, c.stride, c.stream)
-               : mo::decode_index_sequence(out, c.count, c.stride, c.stream);
+    return mo::decode(c.mode, out, c.count, c.stride, c.stream);
 }
 
 } // namespace

@@ -26,16 +26,6 @@
 
 namespace sherpa::gpu {
 
-namespace {
-
-// What may still read the target from earlier frames (the stages begin_camera_rendering
-// waits on): a readback copy or blit, a comparison's shaders, an earlier frame's drawing.
-constexpr VkPipelineStageFlags2 kTargetReaders =
-    VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT |
-    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-
-} // namespace
-
 BackgroundPass::BackgroundPass() = default;
 BackgroundPass::~BackgroundPass() {
     release();
@@ -94,8 +84,8 @@ bool BackgroundPass::prepare(FrameContext& f) {
     }
     // A moving view (or a target that takes no copies): drawn into the target.
     transition(f.cmd, {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, kTargetReaders, VK_ACCESS_2_NONE,
-                       VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, kColorTargetReaders,
+                       VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
     draw_whole(f, f.target.view);
     transition(
@@ -166,7 +156,7 @@ void BackgroundPass::copy_kept(FrameContext& f) {
     // The target's previous contents do not matter; earlier frames may still read it
     // (a readback copy, a comparison's shaders: the stages begin_camera_rendering waits on).
     transition(f.cmd, {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kTargetReaders, VK_ACCESS_2_NONE,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kColorTargetReaders, VK_ACCESS_2_NONE,
                        VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
     VkImageCopy region{};
     region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};

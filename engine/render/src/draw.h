@@ -20,6 +20,13 @@ inline DrawView cascade_view(FrameContext& f, std::uint32_t c) {
     return {c, f.slot.culling.cascade(c)};
 }
 
+// What may still read a frame's colour target from earlier frames, which its first
+// write this frame waits on: a readback copy or blit, a comparison's shaders that read
+// this side image, an earlier frame's drawing.
+inline constexpr VkPipelineStageFlags2 kColorTargetReaders =
+    VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT |
+    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+
 void set_viewport(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height);
 void set_depth(VkCommandBuffer cmd, VkCompareOp op, bool write, float bias_constant = 0.0f,
                float bias_slope = 0.0f);

@@ -116,17 +116,11 @@ void FrameRecorder::bind_frame(FrameContext& f) {
 void FrameRecorder::begin_camera_rendering(FrameContext& f, bool background) {
     const Image& depth_image = targets_.depth(f.target.width, f.target.height);
     if (!background)
-        transition(
-            f.cmd,
-            {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-             VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-             // Source stages include transfers: after an earlier frame's readback copy;
-             // and shader reads: an earlier comparison read this side image.
-             VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT |
-                 VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
-                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-             VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-             VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT});
+        transition(f.cmd, {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                           VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, kColorTargetReaders,
+                           VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                           VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
+                               VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT});
     transition(
         f.cmd,
         {depth_image.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,

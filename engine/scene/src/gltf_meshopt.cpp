@@ -118,18 +118,17 @@ meshopt::Mode mode_of(const Stream& s) {
 // byteLength may claim gigabytes that its fallback buffer does not have.
 std::string decode_stream(std::vector<unsigned char>& out, const Stream& s, std::size_t size,
                           std::span<const std::uint8_t> data) {
-    if (data.empty()) return "the compressed stream is empty";
-    const unsigned kind = data[0] & 0xF0u, version = data[0] & 0x0Fu;
-    const unsigned expected = s.mode == "ATTRIBUTES"  ? 0xA0u
-                              : s.mode == "TRIANGLES" ? 0xE0u
-                                                      : 0xD0u;
-    if (kind != expected)
+    const meshopt::Mode mode = mode_of(s);
+    const meshopt::Result header = meshopt::read_header(data, meshopt::header_kind(mode));
+    if (header.status == meshopt::Status::Truncated) return "the compressed stream is empty";
+    if (header.status == meshopt::Status::BadHeader)
         return "the " + s.mode + " stream's header byte " + hex(data[0]) + " is not a meshopt " +
                s.mode + " stream (corrupt)";
-    if (version > 1)
+    const unsigned version = data[0] & 0x0Fu;
+    if (header.status == meshopt::Status::BadVersion)
         return s.mode + " bitstream version " + std::to_string(version) +
                " is not one the specification defines (0 or 1)";
-    const std::size_t least = meshopt::minimum_stream_size(mode_of(s), version, s.count, s.stride);
+    const std::size_t least = meshopt::minimum_stream_size(mode, version, s.count, s.stride);
     if (data.size() < least)
         return "count " + std::to_string(s.count) + " x byteStride " + std::to_string(s.stride) +
                " = " + std::to_string(size) + " bytes cannot come from a " +
@@ -137,10 +136,7 @@ std::string decode_stream(std::vector<unsigned char>& out, const Stream& s, std:
                std::to_string(version) + " needs at least " + std::to_string(least) + ")";
     out.assign(size, 0);
     const std::span<std::uint8_t> dst(out.data(), out.size());
-    const meshopt::Result r =
-        s.mode == "ATTRIBUTES"  ? meshopt::decode_vertex_buffer(dst, s.count, s.stride, data)
-        : s.mode == "TRIANGLES" ? meshopt::decode_index_buffer(dst, s.count, s.stride, data)
-                                : meshopt::decode_index_sequence(dst, s.count, s.stride, data);
+    const meshopt::Result r = meshopt::decode(mode, dst, s.count, s.stride, data);
     if (!r)
         return "the " + s.mode + " stream (version " + std::to_string(version) +
                ") does not decode: " + meshopt::describe(r.status) + " at byte " +

@@ -53,6 +53,15 @@ Result decode_index_sequence(std::span<std::uint8_t> dst, std::size_t count, std
 
 enum class Mode : std::uint8_t { Attributes, Triangles, Indices };
 
+// The high nibble of `mode`'s header byte (its low nibble is the bitstream version).
+constexpr unsigned header_kind(Mode mode) {
+    return mode == Mode::Attributes ? 0xA0u : mode == Mode::Triangles ? 0xE0u : 0xD0u;
+}
+
+// The decoder of `mode` above: `stride` is the vertex stride or the index size.
+Result decode(Mode mode, std::span<std::uint8_t> dst, std::size_t count, std::size_t stride,
+              std::span<const std::uint8_t> src);
+
 // The fewest bytes a well-formed stream of `count` elements of `stride` bytes takes in
 // `mode` at bitstream `version` (header, the least each block, table or index needs, and
 // the tail). A shorter stream cannot decode: its output need never be allocated.

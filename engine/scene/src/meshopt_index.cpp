@@ -79,7 +79,7 @@ Result decode_index_buffer(std::span<std::uint8_t> dst, std::size_t count, std::
                            std::span<const std::uint8_t> src) {
     if ((index_size != 2 && index_size != 4) || count % 3 != 0 || dst.size() / index_size < count)
         return {Status::BadArgument, 0};
-    const Result header = read_header(src, 0xE0);
+    const Result header = read_header(src, header_kind(Mode::Triangles));
     if (!header) return header;
     const unsigned version = header.version;
     const auto v8 = header.version;
@@ -161,7 +161,7 @@ Result decode_index_sequence(std::span<std::uint8_t> dst, std::size_t count, std
                              std::span<const std::uint8_t> src) {
     if ((index_size != 2 && index_size != 4) || dst.size() / index_size < count)
         return {Status::BadArgument, 0};
-    const Result header = read_header(src, 0xD0);
+    const Result header = read_header(src, header_kind(Mode::Indices));
     if (!header) return header;
     const auto v8 = header.version;
     if (src.size() - 1 < 4 || src.size() - 1 - 4 < count)
@@ -179,6 +179,19 @@ Result decode_index_sequence(std::span<std::uint8_t> dst, std::size_t count, std
     }
     if (in.pos != in.end) return {Status::TrailingBytes, in.pos, v8};
     return {Status::Ok, src.size(), v8};
+}
+
+Result decode(Mode mode, std::span<std::uint8_t> dst, std::size_t count, std::size_t stride,
+              std::span<const std::uint8_t> src) {
+    switch (mode) {
+    case Mode::Attributes:
+        return decode_vertex_buffer(dst, count, stride, src);
+    case Mode::Triangles:
+        return decode_index_buffer(dst, count, stride, src);
+    case Mode::Indices:
+        return decode_index_sequence(dst, count, stride, src);
+    }
+    return {Status::BadArgument, 0};
 }
 
 } // namespace sherpa::meshopt

@@ -211,7 +211,7 @@ Result decode_vertex_buffer(std::span<std::uint8_t> dst, std::size_t count, std:
                             std::span<const std::uint8_t> src) {
     if (stride == 0 || stride % 4 != 0 || stride > 256 || dst.size() / stride < count)
         return {Status::BadArgument, 0};
-    const Result header = read_header(src, 0xA0);
+    const Result header = read_header(src, header_kind(Mode::Attributes));
     if (!header) return header;
     const unsigned version = header.version;
     const std::size_t tail = stride + (version == 1 ? stride / 4 : 0);

@@ -158,8 +158,8 @@ std::span<const VkSemaphoreSubmitInfo> ComparisonFrame::signals(std::uint32_t) c
 }
 
 void ComparisonFrame::submitted(std::uint32_t slot, std::uint64_t submission) {
-    a_.frames().finish_frame(slot, submission);
-    b_.frames().finish_frame(slot, b_signal_.value);
+    a_.frames().slots().finish(slot, submission);
+    b_.frames().slots().finish(slot, b_signal_.value);
     b_.resources().collect_garbage(); // the presenter collects a's
 }
 
@@ -175,7 +175,7 @@ ComparisonStats render_comparison(Renderer& a, const FrameRequest& a_settings, R
     constexpr std::uint32_t slot = 0;
     frame.wait_for_slot(slot);
     const RenderTarget target = ai.targets().offscreen(width, height);
-    CommandRecorder& recorder = ai.recorder(slot);
+    CommandRecorder& recorder = ai.slots().recorder(slot);
     // Sides and statistics first; an automatic heat scale needs them before the
     // composite, which then goes in a second submission.
     VkCommandBuffer cmd = recorder.begin();
@@ -190,8 +190,8 @@ ComparisonStats render_comparison(Renderer& a, const FrameRequest& a_settings, R
         signal.value = timeline.begin_submission();
         signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
         const std::uint64_t value = recorder.submit(a.resources(), nullptr, 0, &signal, 1);
-        ai.finish_frame(slot, value);
-        b.frames().finish_frame(slot, signal.value);
+        ai.slots().finish(slot, value);
+        b.frames().slots().finish(slot, signal.value);
     };
     if (auto_heat) {
         submit();

@@ -6,6 +6,7 @@
 // material variant switch) reach it through Renderer::frames(); outside the render
 // layer it is an incomplete type.
 #include "comparison_pass.h"
+#include "frame_slots.h"
 #include "passes.h"
 #include "path_trace_pass.h"
 #include "render_targets.h"
@@ -34,7 +35,7 @@ GPUFrameData lighting_constants(const SceneLights& lights, const EnvironmentMap*
 class FrameRecorder {
 public:
     static constexpr VkFormat kOffscreenFormat = RenderTargets::kOffscreenFormat;
-    static constexpr std::uint32_t kFramesInFlight = Renderer::kFramesInFlight;
+    static constexpr std::uint32_t kFramesInFlight = FrameSlots::kFramesInFlight;
     explicit FrameRecorder(SceneState& state);
     ~FrameRecorder();
     FrameRecorder(const FrameRecorder&) = delete;
@@ -51,10 +52,11 @@ public:
     FrameStats render(const FrameRequest& settings, std::vector<std::uint8_t>* rgba);
     // Swapchain path: waits until frame slot `slot` is free, records the frame into
     // `cmd` (already begun) drawing into `target`. The caller submits `cmd` with the
-    // value from `resources().begin_submission()` and passes it to finish_frame().
+    // value from `resources().begin_submission()` and passes it to slots().finish().
     void record_frame(VkCommandBuffer cmd, std::uint32_t slot, const RenderTarget& target,
                       const FrameRequest& settings);
-    void finish_frame(std::uint32_t slot, std::uint64_t submission);
+    // The frames in flight: waiting, submission, command recorders.
+    FrameSlots& slots() { return slots_; }
     // Results of the last completed frame recorded in `slot` (waits for it).
     FrameStats slot_stats(std::uint32_t slot);
     // Bytes of the recorder's images into `out`: render_target_bytes (targets, shadow
@@ -66,15 +68,13 @@ public:
     // A comparison side or a presented ray-traced frame (renderer_side.cpp): records
     // `settings` (its width x height) with frame slot `slot` into an image of this
     // renderer that shaders can read, returned with its layout. The caller submits
-    // and calls finish_frame() as for record_frame().
+    // and calls slots().finish() as for record_frame().
     SideImage record_side(VkCommandBuffer cmd, std::uint32_t slot, const FrameRequest& settings);
     // Throws GpuError for settings this renderer refuses to draw (the ray tracer's
     // views, overlays, poses), before anything is recorded.
     void check_drawable(const FrameRequest& settings) const;
     // The compositing pass (comparison_pass.h), made on first use.
     ComparisonPass& comparison();
-    // Frame slot `slot`'s command recorder (offscreen comparisons, comparison.cpp).
-    CommandRecorder& recorder(std::uint32_t slot) { return slots_.at(slot)->recorder; }
     // The path tracer's accumulation read back (renderer_path.cpp).
     PathTraceImage path_trace_image();
     // Culling statistics of the frames read (Renderer::cull_history()).
@@ -104,9 +104,6 @@ private:
     // Camera, lights, cascades and view into the slot's GPUFrameData; sets
     // f.cascades to the cascades that must be drawn this frame (frame_data.cpp).
     void write_frame_data(FrameContext& f);
-    void create_frame_sets();
-    void bind_frame_set(FrameSlot& slot);
-    void wait_slot(FrameSlot& slot);
     Pipelines& pipelines_for(VkFormat format);
     FrameStats read_stats(FrameSlot& slot);
     // A ray-traced side (renderer_side.cpp): its timestamps and statistics.
@@ -151,16 +148,12 @@ private:
     DepthPrepass prepass_;
     ForwardPass opaque_{AlphaMode::Opaque}, mask_{AlphaMode::Mask}, blend_{AlphaMode::Blend};
     BackgroundPass background_;
-    std::unique_ptr<TransmissionPass> transmission_; // made with the frame sets' layout
+    std::unique_ptr<TransmissionPass> transmission_; // made with the frame slots' set layout
     OverlayPass overlays_{pose_};
     HighlightPass highlight_;
 
-    UniqueDescriptorSetLayout frame_layout_;
-    UniqueDescriptorPool frame_pool_;
-    BufferHandle no_materials_; // bound while no scene is loaded
+    FrameSlots slots_; // after the passes: their resources are made first
     std::map<VkFormat, std::unique_ptr<Pipelines>> pipelines_;
-    std::vector<std::unique_ptr<FrameSlot>> slots_;
-    std::uint32_t next_slot_ = 0;
     std::unique_ptr<ComparisonPass> comparison_;
     RenderTargets targets_;
 };

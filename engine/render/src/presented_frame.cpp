@@ -92,7 +92,7 @@ void PresentedFrame::record(VkCommandBuffer cmd, std::uint32_t slot, const Rende
 }
 
 void PresentedFrame::submitted(std::uint32_t slot, std::uint64_t submission) {
-    renderer_.frames().finish_frame(slot, submission);
+    renderer_.frames().slots().finish(slot, submission);
 }
 
 } // namespace sherpa::gpu

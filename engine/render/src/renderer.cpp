@@ -1,6 +1,6 @@
 // The Renderer over its SceneState and FrameRecorder: construction, scene load/unload,
-// and the recorder's frame resources and statistics of completed frames (the targets
-// and readback: render_targets.cpp).
+// the frame slots (FrameSlots: per-slot resources, set 1, waiting), and the recorder's
+// statistics of completed frames (the targets and readback: render_targets.cpp).
 #include "frame_recorder.h"
 
 #include <sherpa/gpu/gpu_error.h>
@@ -9,12 +9,9 @@
 
 namespace sherpa::gpu {
 
-FrameRecorder::FrameRecorder(SceneState& scene_state)
+FrameSlots::FrameSlots(SceneState& scene_state)
     : state(scene_state), context(scene_state.context), resources(&scene_state.resources),
-      bindless(&scene_state.bindless), options(scene_state.options), scene(scene_state.gpu),
-      acceleration(scene_state.acceleration), environment(scene_state.environment),
-      culling(context, *resources), pose_(*resources),
-      shadows_(context, *resources, options.shadow_resolution), targets_(*resources) {
+      scene(scene_state.gpu), environment(scene_state.environment) {
     for (std::uint32_t i = 0; i < kFramesInFlight; ++i) {
         auto slot = std::make_unique<FrameSlot>(context);
         slot->frame_data =
@@ -33,11 +30,28 @@ FrameRecorder::FrameRecorder(SceneState& scene_state)
         slots_.push_back(std::move(slot));
     }
     create_frame_sets();
-    transmission_ = std::make_unique<TransmissionPass>(context, *resources, bindless->layout(),
-                                                       frame_layout_.get());
 }
 
-void FrameRecorder::create_frame_sets() {
+FrameSlots::~FrameSlots() {
+    for (auto& slot : slots_) {
+        resources->destroy(slot->frame_data);
+        resources->destroy(slot->lines);
+        resources->destroy(slot->cull_ids);
+        resources->destroy(slot->cull_readback);
+        resources->destroy(slot->pose);
+        resources->destroy(slot->cull_objects);
+    }
+    slots_.clear();
+    resources->destroy(no_materials_);
+}
+
+std::uint32_t FrameSlots::take() {
+    const std::uint32_t index = next_slot_;
+    next_slot_ = (next_slot_ + 1) % kFramesInFlight;
+    return index;
+}
+
+void FrameSlots::create_frame_sets() {
     VkDevice device = context.device();
     const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     const VkDescriptorSetLayoutBinding bindings[] = {
@@ -97,7 +111,7 @@ void FrameRecorder::create_frame_sets() {
 
 // Points the slot's set at its frame data and the current scene's materials. The
 // slot's previous frame has completed, so the set is not in use.
-void FrameRecorder::bind_frame_set(FrameSlot& slot) {
+void FrameSlots::bind_frame_set(FrameSlot& slot, const VkDescriptorImageInfo& shadow) {
     if (slot.set_environment != state.environment_generation) {
         // Without an environment the old maps' descriptors stay, never read (ibl.glsl
         // checks frame.environment.y, 0 then): the bindings are partially bound.
@@ -111,7 +125,6 @@ void FrameRecorder::bind_frame_set(FrameSlot& slot) {
         {scene ? scene->materials().buffer() : none, 0, VK_WHOLE_SIZE},
         {scene ? scene->materials().extras_buffer() : none, 0, VK_WHOLE_SIZE},
     };
-    const VkDescriptorImageInfo shadow = shadows_.descriptor();
     VkWriteDescriptorSet writes[4];
     writes[3] = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
     writes[3].dstSet = slot.set;
@@ -144,28 +157,28 @@ void FrameRecorder::bind_frame_set(FrameSlot& slot) {
     slot.set_generation = state.generation;
 }
 
+FrameRecorder::FrameRecorder(SceneState& scene_state)
+    : state(scene_state), context(scene_state.context), resources(&scene_state.resources),
+      bindless(&scene_state.bindless), options(scene_state.options), scene(scene_state.gpu),
+      acceleration(scene_state.acceleration), environment(scene_state.environment),
+      culling(context, *resources), pose_(*resources),
+      shadows_(context, *resources, options.shadow_resolution), slots_(scene_state),
+      targets_(*resources) {
+    transmission_ = std::make_unique<TransmissionPass>(context, *resources, bindless->layout(),
+                                                       slots_.layout());
+}
+
 FrameRecorder::~FrameRecorder() {
     context.wait_idle();
     culling.reset();
     rt_views_.reset();
-    for (auto& slot : slots_) {
-        resources->destroy(slot->frame_data);
-        resources->destroy(slot->lines);
-        resources->destroy(slot->cull_ids);
-        resources->destroy(slot->cull_readback);
-        resources->destroy(slot->pose);
-        resources->destroy(slot->cull_objects);
-    }
-    slots_.clear();
     comparison_.reset();
-    resources->destroy(no_materials_);
     pipelines_.clear();
 }
 
 Pipelines& FrameRecorder::pipelines_for(VkFormat format) {
     auto& p = pipelines_[format];
-    if (!p)
-        p = std::make_unique<Pipelines>(context, bindless->layout(), frame_layout_.get(), format);
+    if (!p) p = std::make_unique<Pipelines>(context, bindless->layout(), slots_.layout(), format);
     return *p;
 }
 
@@ -175,8 +188,8 @@ void FrameRecorder::scene_loaded(const Scene& source) {
     shadows_.invalidate();
     // Meshes that skin or morph join the TLAS in the file's default pose, on load.
     if (acceleration && acceleration->posed()) {
-        FrameSlot& slot = *slots_[next_slot_];
-        wait_slot(slot);
+        FrameSlot& slot = slots_[slots_.next()];
+        slots_.wait(slot);
         pose_acceleration(slot, FrameRequest{});
     }
 }
@@ -186,7 +199,7 @@ void FrameRecorder::scene_unloading() {
     // them, so that the bindless slots the scene gives back can be reused at once.
     if (transmission_) transmission_->release();
     for (auto& slot : slots_) {
-        wait_slot(*slot);
+        slots_.wait(*slot);
         // Sized for the scene's instances: it goes with the scene.
         resources->destroy(slot->cull_ids);
         slot->cull_ids_capacity = 0;
@@ -213,11 +226,15 @@ void FrameRecorder::count_target_bytes(ResidentStats& out) const {
 }
 
 void FrameRecorder::wait_all(bool environment_goes) {
-    for (auto& slot : slots_) wait_slot(*slot);
+    slots_.wait_all();
     if (environment_goes) background_.release();
 }
 
-void FrameRecorder::wait_slot(FrameSlot& slot) {
+void FrameSlots::wait_all() {
+    for (auto& slot : slots_) wait(*slot);
+}
+
+void FrameSlots::wait(FrameSlot& slot) {
     if (slot.submission) resources->timeline().wait_for(slot.submission);
 }
 
@@ -230,30 +247,29 @@ FrameStats FrameRecorder::render(const FrameRequest& settings, std::vector<std::
     if (!raster_view(settings.view))
         throw GpuError("the rasterizer does not draw view '" +
                        std::string(to_string(settings.view)) + "' (rays only: --renderer rt)");
-    const std::uint32_t index = next_slot_;
-    next_slot_ = (next_slot_ + 1) % kFramesInFlight;
-    FrameSlot& slot = *slots_[index];
-    wait_slot(slot);
+    const std::uint32_t index = slots_.take();
+    FrameSlot& slot = slots_[index];
+    slots_.wait(slot);
     const RenderTarget target = targets_.offscreen(settings.width, settings.height);
     VkCommandBuffer cmd = slot.recorder.begin();
     record_frame(cmd, index, target, settings);
     if (rgba) targets_.record_readback(cmd, settings.width, settings.height);
     const std::uint64_t value = slot.recorder.submit(*resources);
-    finish_frame(index, value);
+    slots_.finish(index, value);
     FrameStats stats = slot_stats(index);
     if (rgba) targets_.read_offscreen(*rgba, settings.width, settings.height);
     resources->collect_garbage();
     return stats;
 }
 
-void FrameRecorder::finish_frame(std::uint32_t slot, std::uint64_t submission) {
+void FrameSlots::finish(std::uint32_t slot, std::uint64_t submission) {
     slots_.at(slot)->submission = submission;
     slots_.at(slot)->has_results = true;
 }
 
 FrameStats FrameRecorder::slot_stats(std::uint32_t index) {
-    FrameSlot& slot = *slots_.at(index);
-    wait_slot(slot);
+    FrameSlot& slot = slots_[index];
+    slots_.wait(slot);
     return read_stats(slot);
 }
 

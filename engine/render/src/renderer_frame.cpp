@@ -28,8 +28,8 @@ static_assert(kAfterOverlays + 1 == kTimestampCount);
 void FrameRecorder::record_frame(VkCommandBuffer cmd, std::uint32_t index,
                                  const RenderTarget& target, const FrameRequest& settings) {
     apply_scene_changes(settings, false);
-    FrameSlot& slot = *slots_.at(index);
-    wait_slot(slot);
+    FrameSlot& slot = slots_[index];
+    slots_.wait(slot);
     // Frames nobody read the results of (the swapchain path) still reach the
     // culling history, before this slot's queries are reset.
     if (slot.has_results && !slot.history_pushed) {
@@ -93,7 +93,7 @@ void FrameRecorder::begin_frame(FrameContext& f) {
         slot.push_base.pose = slot.pose_address;
         slot.push_base.highlight_base = slot.highlight_base;
     }
-    bind_frame_set(slot);
+    slots_.bind_frame_set(slot, shadows_.descriptor());
     slot.push_base.cascade = kNoCascade;
     f.prepass =
         !f.settings.floor_only && prepass_enabled(f.settings.depth_prepass, context.info().is_cpu(),

@@ -104,12 +104,12 @@ PathTraceImage FrameRecorder::path_trace_image() {
     PathTraceImage image;
     if (!path_ || path_samples_ == 0) return image;
     wait_all();
-    FrameSlot& slot = *slots_[next_slot_];
+    FrameSlot& slot = slots_[slots_.next()];
     VkCommandBuffer cmd = slot.recorder.begin();
     path_->record_sums_readback(cmd);
     slot.submission = slot.recorder.submit(*resources);
     slot.has_results = false;
-    wait_slot(slot);
+    slots_.wait(slot);
     path_->read_sums(image);
     image.samples = path_samples_;
     return image;

@@ -97,7 +97,7 @@ FrameStats FrameRecorder::render_rt(const FrameRequest& settings, std::vector<st
     check_rt(settings);
     // The shadow-error view compares with the rasterizer's cascades at this camera:
     // its shadow view is drawn first (cascades and frame constants in that slot).
-    const std::uint32_t raster_slot = next_slot_;
+    const std::uint32_t raster_slot = slots_.next();
     if (settings.view == DebugView::ShadowError) {
         FrameRequest raster = settings;
         raster.renderer = RendererKind::Raster;
@@ -110,9 +110,8 @@ FrameStats FrameRecorder::render_rt(const FrameRequest& settings, std::vector<st
     apply_scene_changes(settings, true);
     if (!rt_views_)
         rt_views_ = std::make_unique<RtViewPass>(context, *resources, bindless->layout());
-    const std::uint32_t index = next_slot_;
-    next_slot_ = (next_slot_ + 1) % kFramesInFlight;
-    FrameSlot& slot = *slots_[index];
+    const std::uint32_t index = slots_.take();
+    FrameSlot& slot = slots_[index];
     FrameStats stats;
     // Moving meshes and node transforms of this frame's pose (FrameRequest::pose,
     // else the file's default pose) into the structures, when it is not the pose they hold.
@@ -143,12 +142,12 @@ FrameStats FrameRecorder::render_rt(const FrameRequest& settings, std::vector<st
     if (path)
         stats.path = record_path(cmd, slot, settings, rgba != nullptr);
     else
-        rt_views_->record(cmd, rt_frame(settings, *slots_[raster_slot]));
+        rt_views_->record(cmd, rt_frame(settings, slots_[raster_slot]));
     if (timed)
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, slot.timestamps.get(), 1);
     slot.submission = slot.recorder.submit(*resources);
     slot.has_results = false; // its queries hold this frame's two timestamps only
-    wait_slot(slot);
+    slots_.wait(slot);
     if (timed) {
         std::uint64_t ts[2] = {};
         vk_check(vkGetQueryPoolResults(context.device(), slot.timestamps.get(), 0, 2, sizeof(ts),

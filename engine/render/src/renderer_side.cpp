@@ -27,7 +27,7 @@ ComparisonPass& FrameRecorder::comparison() {
 
 SideImage FrameRecorder::record_side(VkCommandBuffer cmd, std::uint32_t index,
                                      const FrameRequest& settings) {
-    FrameSlot& slot = *slots_.at(index);
+    FrameSlot& slot = slots_[index];
     if (settings.renderer == RendererKind::RayTraced && acceleration &&
         acceleration->tlas() != VK_NULL_HANDLE)
         return record_rt_side(cmd, slot, settings);

@@ -36,7 +36,7 @@ void FrameRecorder::apply_scene_changes(const FrameRequest& settings, bool rt) {
 
 void FrameRecorder::retire_culling() {
     for (auto& s : slots_) {
-        wait_slot(*s);
+        slots_.wait(*s);
         if (s->has_results && !s->history_pushed) {
             FrameStats unused;
             culling.read_stats(*s, scene.get(), unused);

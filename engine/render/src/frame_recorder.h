@@ -11,6 +11,7 @@
 #include "path_trace_pass.h"
 #include "render_targets.h"
 #include "rt_view_pass.h"
+#include "scene_changes.h"
 #include "scene_state.h"
 #include "transmission_pass.h"
 
@@ -79,8 +80,8 @@ public:
     PathTraceImage path_trace_image();
     // Culling statistics of the frames read (Renderer::cull_history()).
     const RingHistory<CullFrame>& cull_history() const { return culling.history(); }
-    // set_material_variant() (renderer_variants.cpp): waits for the frames in flight.
-    VariantSwitch set_variant(std::int32_t variant);
+    // Between frames: animated properties, visibility, the material variant switch.
+    SceneChanges& changes() { return changes_; }
 
 private:
     SceneState& state;
@@ -124,15 +125,6 @@ private:
     PathTraceFrame record_path(VkCommandBuffer cmd, FrameSlot& slot, const FrameRequest& settings,
                                bool readback);
 
-    // Before a frame (renderer_visibility.cpp): the frame's animated properties
-    // (KHR_animation_pointer) into the scene state, the materials they change uploaded
-    // (after the frames in flight); then the visibility (SceneSetup::hidden_nodes and
-    // the nodes the animation hides) into the culling and, with `rt`, the TLAS (every
-    // slot must be idle), when it differs from the mask applied last.
-    void apply_scene_changes(const FrameRequest& settings, bool rt);
-    // Frames in flight index GPU cullers and draw groups about to be replaced: waits
-    // for them, their unread statistics kept in the history now.
-    void retire_culling();
 
     std::unique_ptr<RtViewPass> rt_views_;
     std::unique_ptr<PathTracePass> path_;
@@ -153,6 +145,7 @@ private:
     HighlightPass highlight_;
 
     FrameSlots slots_; // after the passes: their resources are made first
+    SceneChanges changes_{state, slots_, culling, shadows_};
     std::map<VkFormat, std::unique_ptr<Pipelines>> pipelines_;
     std::unique_ptr<ComparisonPass> comparison_;
     RenderTargets targets_;

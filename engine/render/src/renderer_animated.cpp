@@ -5,7 +5,7 @@
 // SceneLights (the frame constants), node visibility joins SceneSetup::hidden_nodes, and
 // the materials reach the GPU through the one narrow path GpuMaterials::update(), which
 // uploads only the records that changed (after the frames in flight, which read the same
-// buffers: FrameRecorder::apply_scene_changes()). A frame without animated values costs
+// buffers: SceneChanges::apply_scene_changes()). A frame without animated values costs
 // one comparison.
 #include "scene_state.h"
 

@@ -27,7 +27,7 @@ static_assert(kAfterOverlays + 1 == kTimestampCount);
 
 void FrameRecorder::record_frame(VkCommandBuffer cmd, std::uint32_t index,
                                  const RenderTarget& target, const FrameRequest& settings) {
-    apply_scene_changes(settings, false);
+    changes_.apply_scene_changes(settings, false);
     FrameSlot& slot = slots_[index];
     slots_.wait(slot);
     // Frames nobody read the results of (the swapchain path) still reach the

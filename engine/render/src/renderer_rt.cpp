@@ -107,7 +107,7 @@ FrameStats FrameRecorder::render_rt(const FrameRequest& settings, std::vector<st
     // Its descriptor set is rewritten per frame, and the structures are posed below:
     // no earlier frame may be in flight.
     wait_all();
-    apply_scene_changes(settings, true);
+    changes_.apply_scene_changes(settings, true);
     if (!rt_views_)
         rt_views_ = std::make_unique<RtViewPass>(context, *resources, bindless->layout());
     const std::uint32_t index = slots_.take();

@@ -71,7 +71,7 @@ SideImage FrameRecorder::record_rt_side(VkCommandBuffer cmd, FrameSlot& slot,
     // frame of this renderer may still be in flight (a presented RT frame waits for
     // the previous one; rays on lavapipe take far longer than that wait).
     wait_all();
-    apply_scene_changes(settings, true);
+    changes_.apply_scene_changes(settings, true);
     if (!rt_views_)
         rt_views_ = std::make_unique<RtViewPass>(context, *resources, bindless->layout());
     // This frame's pose into the structures (submitted and waited for on its own),

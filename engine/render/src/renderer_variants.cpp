@@ -3,16 +3,17 @@
 // words); an alpha-mode or sidedness change rebuilds the culling's per-group lists,
 // and shadows are redrawn (masked casters read the material). Nothing is reloaded.
 #include "frame_recorder.h"
+#include "scene_changes.h"
 
 #include <stdexcept>
 
 namespace sherpa::gpu {
 
 VariantSwitch set_material_variant(Renderer& renderer, std::int32_t variant) {
-    return renderer.frames().set_variant(variant);
+    return renderer.frames().changes().set_variant(variant);
 }
 
-VariantSwitch FrameRecorder::set_variant(std::int32_t variant) {
+VariantSwitch SceneChanges::set_variant(std::int32_t variant) {
     if (variant < -1 || (variant >= 0 && std::size_t(variant) >= state.variants.names.size()))
         throw std::out_of_range("material variant " + std::to_string(variant) + " of " +
                                 std::to_string(state.variants.names.size()));

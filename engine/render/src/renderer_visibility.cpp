@@ -6,15 +6,20 @@
 // buffers), the culling takes the mask (after the frames in flight that index the GPU
 // cullers being replaced), the cached shadow cascades are redrawn, and the TLAS follows
 // before the next ray-traced frame. An unchanged frame costs two comparisons.
-#include "frame_recorder.h"
+#include "scene_changes.h"
 
 namespace sherpa::gpu {
 
-void FrameRecorder::apply_scene_changes(const FrameRequest& settings, bool rt) {
+SceneChanges::SceneChanges(SceneState& scene_state, FrameSlots& slots, CullingPass& culling_pass,
+                           ShadowPass& shadows)
+    : state(scene_state), scene(scene_state.gpu), acceleration(scene_state.acceleration),
+      slots_(slots), culling(culling_pass), shadows_(shadows) {}
+
+void SceneChanges::apply_scene_changes(const FrameRequest& settings, bool rt) {
     if (!scene) return;
     static const std::vector<AnimatedProperty> kNone;
     if (auto materials = state.animate(settings.pose ? settings.pose->properties : kNone)) {
-        wait_all();
+        slots_.wait_all();
         if (update_scene_materials(*state.gpu, *materials)) {
             ++state.material_generation;
             shadows_.invalidate(); // masked casters read alpha and cutoff
@@ -26,7 +31,7 @@ void FrameRecorder::apply_scene_changes(const FrameRequest& settings, bool rt) {
         shadows_.invalidate(); // the casters changed
     }
     if (rt && acceleration && !state.tlas_visibility) {
-        wait_all();
+        slots_.wait_all();
         acceleration->set_hidden_nodes(state.hidden_nodes());
         // The rebuilt TLAS holds the loaded transforms: the frame's pose goes in again.
         state.rt_pose_generation = 0;
@@ -34,7 +39,7 @@ void FrameRecorder::apply_scene_changes(const FrameRequest& settings, bool rt) {
     }
 }
 
-void FrameRecorder::retire_culling() {
+void SceneChanges::retire_culling() {
     for (auto& s : slots_) {
         slots_.wait(*s);
         if (s->has_results && !s->history_pushed) {

@@ -81,7 +81,7 @@ public:
     std::uint64_t material_generation = 0;
     // KHR_materials_variants: the loaded scene's mappings, the variant it was loaded with
     // (the acceleration structures' materials) and the one the raster draws now
-    // (FrameRecorder::set_variant()).
+    // (SceneChanges::set_variant()).
     MaterialVariants variants;
     std::int32_t loaded_variant = -1, variant = -1;
     // The split-sum table every environment reads (made with the first, freed with the

@@ -105,8 +105,8 @@ ComparisonFrame::ComparisonFrame(Renderer& a, const FrameRequest& a_settings, Re
     : a_(a), b_(b), a_settings_(a_settings), b_settings_(b_settings), compare_(compare),
       resolution_scale_(resolution_scale) {
     check_sides(a, b);
-    a_.frames().check_drawable(a_settings_);
-    b_.frames().check_drawable(b_settings_);
+    a_.frames().rays().check_drawable(a_settings_);
+    b_.frames().rays().check_drawable(b_settings_);
 }
 
 void ComparisonFrame::wait_for_slot(std::uint32_t slot) {
@@ -131,8 +131,8 @@ static CompositeInputs record_sides(VkCommandBuffer cmd, std::uint32_t slot, Fra
     CompositeInputs in;
     in.width = width;
     in.height = height;
-    in.a = a.record_side(cmd, slot, a_settings);
-    in.b = b.record_side(cmd, slot, b_settings);
+    in.a = record_side(a, cmd, slot, a_settings);
+    in.b = record_side(b, cmd, slot, b_settings);
     a.comparison().bind(slot, in);
     return in;
 }

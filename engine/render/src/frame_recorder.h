@@ -1,16 +1,19 @@
 #pragma once
-// How a Renderer records frames (private to the render layer): frame slots, targets,
-// pipelines and the passes, in frame order in record_passes() (renderer_frame.cpp),
-// over the loaded scene's SceneState (scene_state.h), which it reads. The frame sources
-// (PresentedFrame, ComparisonFrame, render_comparison, the path tracer's readback, the
-// material variant switch) reach it through Renderer::frames(); outside the render
-// layer it is an incomplete type.
+// How a Renderer records frames (private to the render layer): the raster frame's
+// pipelines and passes, in frame order in record_passes() (renderer_frame.cpp), over
+// the loaded scene's SceneState (scene_state.h), which it reads; and the parts it
+// owns, each reached on its own: the frames in flight (FrameSlots, frame_slots.h),
+// the recorder's images (RenderTargets), what changes in the scene between frames
+// (SceneChanges, scene_changes.h), the ray-traced frames (RayTracedFrames,
+// ray_traced_frames.h, with the path tracer) and the comparison pass. The frame
+// sources (render_offscreen, PresentedFrame, ComparisonFrame, render_comparison, the
+// path tracer's readback, the material variant switch) reach it through
+// Renderer::frames(); outside the render layer it is an incomplete type.
 #include "comparison_pass.h"
 #include "frame_slots.h"
 #include "passes.h"
-#include "path_trace_pass.h"
+#include "ray_traced_frames.h"
 #include "render_targets.h"
-#include "rt_view_pass.h"
 #include "scene_changes.h"
 #include "scene_state.h"
 #include "transmission_pass.h"
@@ -50,7 +53,6 @@ public:
     // Waits for every frame in flight. Before the environment is replaced or removed,
     // `environment_goes` also frees the background kept for it.
     void wait_all(bool environment_goes = false);
-    FrameStats render(const FrameRequest& settings, std::vector<std::uint8_t>* rgba);
     // Swapchain path: waits until frame slot `slot` is free, records the frame into
     // `cmd` (already begun) drawing into `target`. The caller submits `cmd` with the
     // value from `resources().begin_submission()` and passes it to slots().finish().
@@ -66,18 +68,11 @@ public:
     // Its images: offscreen target and readback, the presenter's reduced-resolution image.
     RenderTargets& targets() { return targets_; }
 
-    // A comparison side or a presented ray-traced frame (renderer_side.cpp): records
-    // `settings` (its width x height) with frame slot `slot` into an image of this
-    // renderer that shaders can read, returned with its layout. The caller submits
-    // and calls slots().finish() as for record_frame().
-    SideImage record_side(VkCommandBuffer cmd, std::uint32_t slot, const FrameRequest& settings);
-    // Throws GpuError for settings this renderer refuses to draw (the ray tracer's
-    // views, overlays, poses), before anything is recorded.
-    void check_drawable(const FrameRequest& settings) const;
     // The compositing pass (comparison_pass.h), made on first use.
     ComparisonPass& comparison();
-    // The path tracer's accumulation read back (renderer_path.cpp).
-    PathTraceImage path_trace_image();
+    // The ray-traced frames (FrameRequest::renderer = RayTraced) and the path tracer;
+    // rays().check_drawable() refuses what neither renderer draws.
+    RayTracedFrames& rays() { return rays_; }
     // Culling statistics of the frames read (Renderer::cull_history()).
     const RingHistory<CullFrame>& cull_history() const { return culling.history(); }
     // Between frames: animated properties, visibility, the material variant switch.
@@ -106,33 +101,8 @@ private:
     // f.cascades to the cascades that must be drawn this frame (frame_data.cpp).
     void write_frame_data(FrameContext& f);
     Pipelines& pipelines_for(VkFormat format);
+    // Results of the completed raster frame in `slot` (a ray-traced one: the rays').
     FrameStats read_stats(FrameSlot& slot);
-    // A ray-traced side (renderer_side.cpp): its timestamps and statistics.
-    void begin_rt_side(VkCommandBuffer cmd, FrameSlot& slot);
-    void end_rt_side(VkCommandBuffer cmd, FrameSlot& slot);
-    FrameStats read_rt_stats(FrameSlot& slot);
-    // FrameRequest::renderer = RayTraced (renderer_rt.cpp).
-    FrameStats render_rt(const FrameRequest& settings, std::vector<std::uint8_t>* rgba);
-    // Writes the pose of `settings` into `slot` (not in flight) and, when the
-    // acceleration structures hold another pose, poses them; true when it did.
-    bool pose_acceleration(FrameSlot& slot, const FrameRequest& settings);
-    void check_rt(const FrameRequest& settings) const;
-    // The ray tracer's frame of `settings` (the TLAS must exist).
-    RayTracedFrame rt_frame(const FrameRequest& settings, const FrameSlot& data_slot) const;
-    SideImage record_rt_side(VkCommandBuffer cmd, FrameSlot& slot, const FrameRequest& settings);
-    // The path tracer's samples of `settings` (view lit) into `cmd`, its constants into
-    // `slot` (no frame in flight): continues the accumulation or starts it over.
-    PathTraceFrame record_path(VkCommandBuffer cmd, FrameSlot& slot, const FrameRequest& settings,
-                               bool readback);
-
-
-    std::unique_ptr<RtViewPass> rt_views_;
-    std::unique_ptr<PathTracePass> path_;
-    std::uint64_t path_environment_ = ~0ull; // environment generation path_ samples
-    std::uint64_t path_lights_ = ~0ull;      // scene generation path_'s light list is of
-    std::uint64_t path_key_ = 0;             // what the accumulation is of
-    std::uint32_t path_samples_ = 0;
-    PathTraceFrame last_path_; // of the last presented or compared path-traced side
 
     PosePass pose_;
     ShadowPass shadows_;
@@ -146,9 +116,23 @@ private:
 
     FrameSlots slots_; // after the passes: their resources are made first
     SceneChanges changes_{state, slots_, culling, shadows_};
+    RayTracedFrames rays_{state, slots_, changes_, pose_, shadows_};
     std::map<VkFormat, std::unique_ptr<Pipelines>> pipelines_;
     std::unique_ptr<ComparisonPass> comparison_;
     RenderTargets targets_;
 };
+
+// An offscreen frame of `settings` (FrameRequest::renderer picks the raster or the ray
+// tracer) into the recorder's offscreen target, submitted and waited for; with `rgba`,
+// read back as tightly packed sRGB-encoded RGBA8 rows, top row first (Renderer::render()).
+FrameStats render_offscreen(FrameRecorder& frames, ResourceManager& resources,
+                            const FrameRequest& settings, std::vector<std::uint8_t>* rgba);
+
+// A comparison side or a presented ray-traced frame (renderer_side.cpp): records
+// `settings` (its width x height) with frame slot `slot` into an image of `frames`'
+// renderer that shaders can read, returned with its layout. The caller submits and
+// calls slots().finish() as for FrameRecorder::record_frame().
+SideImage record_side(FrameRecorder& frames, VkCommandBuffer cmd, std::uint32_t slot,
+                      const FrameRequest& settings);
 
 } // namespace sherpa::gpu

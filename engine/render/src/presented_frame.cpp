@@ -35,7 +35,7 @@ void blit_to_target(VkCommandBuffer cmd, VkImage from, VkExtent2D from_size,
 PresentedFrame::PresentedFrame(Renderer& renderer, const FrameRequest& settings,
                                float resolution_scale)
     : renderer_(renderer), settings_(settings), resolution_scale_(resolution_scale) {
-    renderer_.frames().check_drawable(settings_);
+    renderer_.frames().rays().check_drawable(settings_);
 }
 
 void PresentedFrame::wait_for_slot(std::uint32_t slot) {
@@ -63,7 +63,7 @@ void PresentedFrame::record(VkCommandBuffer cmd, std::uint32_t slot, const Rende
         CompositeInputs in;
         in.width = settings_.width;
         in.height = settings_.height;
-        in.a = in.b = r.record_side(cmd, slot, settings_);
+        in.a = in.b = record_side(r, cmd, slot, settings_);
         r.comparison().bind(slot, in);
         r.comparison().record_composite(cmd, slot, in, target, CompositeMode::SideA, 0.0f, 1.0f);
         return;

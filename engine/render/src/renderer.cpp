@@ -171,7 +171,6 @@ FrameRecorder::FrameRecorder(SceneState& scene_state)
 FrameRecorder::~FrameRecorder() {
     context.wait_idle();
     culling.reset();
-    rt_views_.reset();
     comparison_.reset();
     pipelines_.clear();
 }
@@ -190,7 +189,7 @@ void FrameRecorder::scene_loaded(const Scene& source) {
     if (acceleration && acceleration->posed()) {
         FrameSlot& slot = slots_[slots_.next()];
         slots_.wait(slot);
-        pose_acceleration(slot, FrameRequest{});
+        rays_.pose_acceleration(slot, FrameRequest{});
     }
 }
 
@@ -238,27 +237,42 @@ void FrameSlots::wait(FrameSlot& slot) {
     if (slot.submission) resources->timeline().wait_for(slot.submission);
 }
 
-FrameStats FrameRecorder::render(const FrameRequest& settings, std::vector<std::uint8_t>* rgba) {
+FrameStats render_offscreen(FrameRecorder& frames, ResourceManager& resources,
+                            const FrameRequest& settings, std::vector<std::uint8_t>* rgba) {
     if (settings.width == 0 || settings.height == 0 || settings.width > 16384 ||
         settings.height > 16384)
         throw GpuError("render size " + std::to_string(settings.width) + "x" +
                        std::to_string(settings.height) + " is out of range");
-    if (settings.renderer == RendererKind::RayTraced) return render_rt(settings, rgba);
+    if (settings.renderer == RendererKind::RayTraced) {
+        // The shadow-error view compares with the rasterizer's cascades at this camera:
+        // its shadow view is drawn first (cascades and frame constants in that slot).
+        const std::uint32_t raster_slot = frames.slots().next();
+        if (settings.view == DebugView::ShadowError) {
+            frames.rays().check_rt(settings); // refused before the raster frame
+            FrameRequest raster = settings;
+            raster.renderer = RendererKind::Raster;
+            raster.view = DebugView::Shadow;
+            render_offscreen(frames, resources, raster, nullptr);
+        }
+        return frames.rays().render_rt(settings, rgba, raster_slot);
+    }
     if (!raster_view(settings.view))
         throw GpuError("the rasterizer does not draw view '" +
                        std::string(to_string(settings.view)) + "' (rays only: --renderer rt)");
-    const std::uint32_t index = slots_.take();
-    FrameSlot& slot = slots_[index];
-    slots_.wait(slot);
-    const RenderTarget target = targets_.offscreen(settings.width, settings.height);
+    FrameSlots& slots = frames.slots();
+    RenderTargets& targets = frames.targets();
+    const std::uint32_t index = slots.take();
+    FrameSlot& slot = slots[index];
+    slots.wait(slot);
+    const RenderTarget target = targets.offscreen(settings.width, settings.height);
     VkCommandBuffer cmd = slot.recorder.begin();
-    record_frame(cmd, index, target, settings);
-    if (rgba) targets_.record_readback(cmd, settings.width, settings.height);
-    const std::uint64_t value = slot.recorder.submit(*resources);
-    slots_.finish(index, value);
-    FrameStats stats = slot_stats(index);
-    if (rgba) targets_.read_offscreen(*rgba, settings.width, settings.height);
-    resources->collect_garbage();
+    frames.record_frame(cmd, index, target, settings);
+    if (rgba) targets.record_readback(cmd, settings.width, settings.height);
+    const std::uint64_t value = slot.recorder.submit(resources);
+    slots.finish(index, value);
+    FrameStats stats = frames.slot_stats(index);
+    if (rgba) targets.read_offscreen(*rgba, settings.width, settings.height);
+    resources.collect_garbage();
     return stats;
 }
 
@@ -276,7 +290,7 @@ FrameStats FrameRecorder::slot_stats(std::uint32_t index) {
 FrameStats FrameRecorder::read_stats(FrameSlot& slot) {
     FrameStats s;
     if (!slot.has_results) return s;
-    if (slot.ray_traced) return read_rt_stats(slot);
+    if (slot.ray_traced) return rays_.read_rt_stats(slot);
     s.shadows_rendered = slot.shadows_rendered;
     s.draw_calls = slot.draw_calls;
     culling.read_stats(slot, scene.get(), s);
@@ -357,7 +371,7 @@ const GpuScene* Renderer::scene() const {
 }
 
 FrameStats Renderer::render(const FrameRequest& settings, std::vector<std::uint8_t>* rgba) {
-    return frames_->render(settings, rgba);
+    return render_offscreen(*frames_, *resources_, settings, rgba);
 }
 
 const RingHistory<CullFrame>& Renderer::cull_history() const {

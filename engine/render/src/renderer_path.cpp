@@ -25,8 +25,13 @@ constexpr float kMaxSampleRadiance = 1e20f;
 
 } // namespace
 
-PathTraceFrame FrameRecorder::record_path(VkCommandBuffer cmd, FrameSlot& slot,
-                                          const FrameRequest& settings, bool readback) {
+PathTracer::PathTracer(SceneState& scene_state, FrameSlots& slots)
+    : state(scene_state), context(scene_state.context), resources(&scene_state.resources),
+      bindless(&scene_state.bindless), scene(scene_state.gpu),
+      acceleration(scene_state.acceleration), environment(scene_state.environment), slots_(slots) {}
+
+PathTraceFrame PathTracer::record(VkCommandBuffer cmd, FrameSlot& slot,
+                                  const FrameRequest& settings, bool readback) {
     if (!path_) path_ = std::make_unique<PathTracePass>(context, *resources, bindless->layout());
     if (path_environment_ != state.environment_generation) {
         path_->set_distribution(state.environment_sampling ? *state.environment_sampling
@@ -100,10 +105,10 @@ PathTraceFrame FrameRecorder::record_path(VkCommandBuffer cmd, FrameSlot& slot,
     return out;
 }
 
-PathTraceImage FrameRecorder::path_trace_image() {
+PathTraceImage PathTracer::image() {
     PathTraceImage image;
     if (!path_ || path_samples_ == 0) return image;
-    wait_all();
+    slots_.wait_all();
     FrameSlot& slot = slots_[slots_.next()];
     VkCommandBuffer cmd = slot.recorder.begin();
     path_->record_sums_readback(cmd);
@@ -116,7 +121,7 @@ PathTraceImage FrameRecorder::path_trace_image() {
 }
 
 PathTraceImage read_path_trace(Renderer& renderer) {
-    return renderer.frames().path_trace_image();
+    return renderer.frames().rays().path().image();
 }
 
 PathTraceError path_trace_error(Renderer& renderer) {

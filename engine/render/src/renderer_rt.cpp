@@ -29,7 +29,18 @@ std::string ray_traced_view_names() {
 
 } // namespace
 
-bool FrameRecorder::pose_acceleration(FrameSlot& slot, const FrameRequest& settings) {
+RayTracedFrames::RayTracedFrames(SceneState& scene_state, FrameSlots& slots, SceneChanges& changes,
+                                 PosePass& pose, const ShadowPass& shadows)
+    : state(scene_state), context(scene_state.context), resources(&scene_state.resources),
+      bindless(&scene_state.bindless), scene(scene_state.gpu),
+      acceleration(scene_state.acceleration), slots_(slots), changes_(changes), pose_(pose),
+      shadows_(shadows), path_(scene_state, slots) {}
+
+bool RayTracedFrames::traces() const {
+    return acceleration && acceleration->tlas() != VK_NULL_HANDLE;
+}
+
+bool RayTracedFrames::pose_acceleration(FrameSlot& slot, const FrameRequest& settings) {
     if (!acceleration || !pose_.active()) return false;
     pose_.record(slot, settings, scene != nullptr);
     // The structures hold this pose already (a paused timeline, the default pose).
@@ -47,7 +58,7 @@ bool FrameRecorder::pose_acceleration(FrameSlot& slot, const FrameRequest& setti
     return true;
 }
 
-void FrameRecorder::check_rt(const FrameRequest& settings) const {
+void RayTracedFrames::check_rt(const FrameRequest& settings) const {
     if (!acceleration)
         throw GpuError("the ray tracer needs the scene's acceleration structures: create the "
                        "renderer with RendererOptions::ray_tracing on a device that ray traces");
@@ -64,8 +75,8 @@ void FrameRecorder::check_rt(const FrameRequest& settings) const {
         throw GpuError("the ray tracer draws no overlays or highlights (raster only)");
 }
 
-RayTracedFrame FrameRecorder::rt_frame(const FrameRequest& settings,
-                                       const FrameSlot& data_slot) const {
+RayTracedFrame RayTracedFrames::rt_frame(const FrameRequest& settings,
+                                         const FrameSlot& data_slot) const {
     const CameraView camera = resolve_camera(settings.camera, state.lights.cameras,
                                              float(settings.width) / float(settings.height));
     RayTracedFrame f;
@@ -93,20 +104,12 @@ RayTracedFrame FrameRecorder::rt_frame(const FrameRequest& settings,
     return f;
 }
 
-FrameStats FrameRecorder::render_rt(const FrameRequest& settings, std::vector<std::uint8_t>* rgba) {
+FrameStats RayTracedFrames::render_rt(const FrameRequest& settings, std::vector<std::uint8_t>* rgba,
+                                      std::uint32_t raster_slot) {
     check_rt(settings);
-    // The shadow-error view compares with the rasterizer's cascades at this camera:
-    // its shadow view is drawn first (cascades and frame constants in that slot).
-    const std::uint32_t raster_slot = slots_.next();
-    if (settings.view == DebugView::ShadowError) {
-        FrameRequest raster = settings;
-        raster.renderer = RendererKind::Raster;
-        raster.view = DebugView::Shadow;
-        render(raster, nullptr);
-    }
     // Its descriptor set is rewritten per frame, and the structures are posed below:
     // no earlier frame may be in flight.
-    wait_all();
+    slots_.wait_all();
     changes_.apply_scene_changes(settings, true);
     if (!rt_views_)
         rt_views_ = std::make_unique<RtViewPass>(context, *resources, bindless->layout());
@@ -140,7 +143,7 @@ FrameStats FrameRecorder::render_rt(const FrameRequest& settings, std::vector<st
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_NONE, slot.timestamps.get(), 0);
     }
     if (path)
-        stats.path = record_path(cmd, slot, settings, rgba != nullptr);
+        stats.path = path_.record(cmd, slot, settings, rgba != nullptr);
     else
         rt_views_->record(cmd, rt_frame(settings, slots_[raster_slot]));
     if (timed)
@@ -159,7 +162,7 @@ FrameStats FrameRecorder::render_rt(const FrameRequest& settings, std::vector<st
         for (const PassTiming& p : stats.passes)
             if (p.name != "rays" && p.name != "path_trace") stats.gpu_ms += p.ms;
     }
-    if (rgba && path) path_->read(*rgba);
+    if (rgba && path) path_.read(*rgba);
     if (rgba && !path) rt_views_->read(*rgba);
     resources->collect_garbage();
     return stats;

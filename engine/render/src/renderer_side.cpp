@@ -8,7 +8,7 @@
 
 namespace sherpa::gpu {
 
-void FrameRecorder::check_drawable(const FrameRequest& settings) const {
+void RayTracedFrames::check_drawable(const FrameRequest& settings) const {
     if (settings.renderer != RendererKind::RayTraced) return;
     check_rt(settings);
     // It draws the rasterizer's shadow frame first and waits for it (render_rt): not
@@ -25,18 +25,18 @@ ComparisonPass& FrameRecorder::comparison() {
     return *comparison_;
 }
 
-SideImage FrameRecorder::record_side(VkCommandBuffer cmd, std::uint32_t index,
-                                     const FrameRequest& settings) {
-    FrameSlot& slot = slots_[index];
-    if (settings.renderer == RendererKind::RayTraced && acceleration &&
-        acceleration->tlas() != VK_NULL_HANDLE)
-        return record_rt_side(cmd, slot, settings);
-    check_drawable(settings);
-    const Image& image = targets_.side(settings.width, settings.height);
+SideImage record_side(FrameRecorder& frames, VkCommandBuffer cmd, std::uint32_t index,
+                      const FrameRequest& settings) {
+    FrameSlot& slot = frames.slots()[index];
+    RayTracedFrames& rays = frames.rays();
+    if (settings.renderer == RendererKind::RayTraced && rays.traces())
+        return rays.record_rt_side(cmd, slot, settings);
+    rays.check_drawable(settings);
+    const Image& image = frames.targets().side(settings.width, settings.height);
     if (settings.renderer == RendererKind::RayTraced) {
         // Nothing with triangles to trace: every ray misses, the clear colour.
-        wait_all();
-        begin_rt_side(cmd, slot);
+        frames.slots().wait_all();
+        rays.begin_rt_side(cmd, slot);
         transition(
             cmd, {image.image.get(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
@@ -53,24 +53,24 @@ SideImage FrameRecorder::record_side(VkCommandBuffer cmd, std::uint32_t index,
                   VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                   VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
-        end_rt_side(cmd, slot);
+        rays.end_rt_side(cmd, slot);
         return {image.alias_view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     }
     slot.ray_traced = false;
-    const RenderTarget target{image.image.get(), image.view.get(),
-                              kOffscreenFormat,  settings.width,
-                              settings.height,   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    record_frame(cmd, index, target, settings);
+    const RenderTarget target{
+        image.image.get(), image.view.get(), FrameRecorder::kOffscreenFormat,
+        settings.width,    settings.height,  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    frames.record_frame(cmd, index, target, settings);
     return {image.alias_view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
 }
 
-SideImage FrameRecorder::record_rt_side(VkCommandBuffer cmd, FrameSlot& slot,
-                                        const FrameRequest& settings) {
+SideImage RayTracedFrames::record_rt_side(VkCommandBuffer cmd, FrameSlot& slot,
+                                          const FrameRequest& settings) {
     check_rt(settings);
     // The ray tracer's descriptor set and image are rewritten per frame: no earlier
     // frame of this renderer may still be in flight (a presented RT frame waits for
     // the previous one; rays on lavapipe take far longer than that wait).
-    wait_all();
+    slots_.wait_all();
     changes_.apply_scene_changes(settings, true);
     if (!rt_views_)
         rt_views_ = std::make_unique<RtViewPass>(context, *resources, bindless->layout());
@@ -80,9 +80,9 @@ SideImage FrameRecorder::record_rt_side(VkCommandBuffer cmd, FrameSlot& slot,
     begin_rt_side(cmd, slot);
     slot.path_traced = settings.view == DebugView::Lit;
     if (slot.path_traced) { // path traced, accumulating while nothing changes
-        last_path_ = record_path(cmd, slot, settings, false);
+        last_path_ = path_.record(cmd, slot, settings, false);
         end_rt_side(cmd, slot);
-        return {path_->view(), VK_IMAGE_LAYOUT_GENERAL};
+        return {path_.view(), VK_IMAGE_LAYOUT_GENERAL};
     }
     rt_views_->record(cmd, rt_frame(settings, slot), false);
     end_rt_side(cmd, slot);
@@ -90,7 +90,7 @@ SideImage FrameRecorder::record_rt_side(VkCommandBuffer cmd, FrameSlot& slot,
 }
 
 // A ray-traced side has two timestamps, no culling, draws or pipeline statistics.
-void FrameRecorder::begin_rt_side(VkCommandBuffer cmd, FrameSlot& slot) {
+void RayTracedFrames::begin_rt_side(VkCommandBuffer cmd, FrameSlot& slot) {
     slot.ray_traced = true;
     slot.path_traced = false;   // record_rt_side says otherwise
     slot.history_pushed = true; // no culling to report
@@ -101,12 +101,12 @@ void FrameRecorder::begin_rt_side(VkCommandBuffer cmd, FrameSlot& slot) {
     vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_NONE, slot.timestamps.get(), 0);
 }
 
-void FrameRecorder::end_rt_side(VkCommandBuffer cmd, FrameSlot& slot) {
+void RayTracedFrames::end_rt_side(VkCommandBuffer cmd, FrameSlot& slot) {
     if (context.info().timestamps)
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, slot.timestamps.get(), 1);
 }
 
-FrameStats FrameRecorder::read_rt_stats(FrameSlot& slot) {
+FrameStats RayTracedFrames::read_rt_stats(FrameSlot& slot) {
     FrameStats s;
     if (slot.path_traced) s.path = last_path_;
     if (!slot.has_results || !context.info().timestamps) return s;

@@ -36,7 +36,7 @@ MainSun main_sun(const SceneLights& lights, const FrameRequest& settings);
 GPUFrameData lighting_constants(const SceneLights& lights, const EnvironmentMap* environment,
                                 const FrameRequest& settings);
 
-class FrameRecorder {
+class FrameRecorder : private SceneStateRefs {
 public:
     static constexpr VkFormat kOffscreenFormat = RenderTargets::kOffscreenFormat;
     static constexpr std::uint32_t kFramesInFlight = FrameSlots::kFramesInFlight;
@@ -71,7 +71,8 @@ public:
     // The compositing pass (comparison_pass.h), made on first use.
     ComparisonPass& comparison();
     // The ray-traced frames (FrameRequest::renderer = RayTraced) and the path tracer;
-    // rays().check_drawable() refuses what neither renderer draws.
+    // rays().check_drawable() refuses, before anything is recorded, what a presented or
+    // compared frame cannot draw.
     RayTracedFrames& rays() { return rays_; }
     // Culling statistics of the frames read (Renderer::cull_history()).
     const RingHistory<CullFrame>& cull_history() const { return culling.history(); }
@@ -79,15 +80,7 @@ public:
     SceneChanges& changes() { return changes_; }
 
 private:
-    SceneState& state;
-    Context& context;
-    ResourceManager* const resources;
-    BindlessTable* const bindless;
     const RendererOptions& options;
-    // The loaded scene's, as the state holds them (null: none).
-    const std::unique_ptr<GpuScene>& scene;
-    const std::unique_ptr<SceneAccelerationStructures>& acceleration;
-    const std::unique_ptr<EnvironmentMap>& environment;
     CullingPass culling;
 
     // A frame, pass by pass.

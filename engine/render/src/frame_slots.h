@@ -16,7 +16,7 @@
 
 namespace sherpa::gpu {
 
-class FrameSlots {
+class FrameSlots : private SceneStateRefs {
 public:
     static constexpr std::uint32_t kFramesInFlight = Renderer::kFramesInFlight;
     explicit FrameSlots(SceneState& state);
@@ -47,13 +47,6 @@ public:
 
 private:
     void create_frame_sets();
-
-    SceneState& state;
-    Context& context;
-    ResourceManager* const resources;
-    // The loaded scene's and environment, as the state holds them (null: none).
-    const std::unique_ptr<GpuScene>& scene;
-    const std::unique_ptr<EnvironmentMap>& environment;
 
     UniqueDescriptorSetLayout frame_layout_;
     UniqueDescriptorPool frame_pool_;

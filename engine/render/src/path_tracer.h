@@ -8,7 +8,7 @@
 
 namespace sherpa::gpu {
 
-class PathTracer {
+class PathTracer : private SceneStateRefs {
 public:
     PathTracer(SceneState& state, FrameSlots& slots);
     PathTracer(const PathTracer&) = delete;
@@ -27,14 +27,6 @@ public:
     VkImageView view() const { return path_->view(); }
 
 private:
-    SceneState& state;
-    Context& context;
-    ResourceManager* const resources;
-    BindlessTable* const bindless;
-    // The loaded scene's, as the state holds them (null: none).
-    const std::unique_ptr<GpuScene>& scene;
-    const std::unique_ptr<SceneAccelerationStructures>& acceleration;
-    const std::unique_ptr<EnvironmentMap>& environment;
     FrameSlots& slots_;
 
     std::unique_ptr<PathTracePass> path_;

@@ -13,7 +13,7 @@
 
 namespace sherpa::gpu {
 
-class RayTracedFrames {
+class RayTracedFrames : private SceneStateRefs {
 public:
     RayTracedFrames(SceneState& state, FrameSlots& slots, SceneChanges& changes, PosePass& pose,
                     const ShadowPass& shadows);
@@ -52,13 +52,6 @@ private:
     // The ray tracer's frame of `settings` (the TLAS must exist).
     RayTracedFrame rt_frame(const FrameRequest& settings, const FrameSlot& data_slot) const;
 
-    SceneState& state;
-    Context& context;
-    ResourceManager* const resources;
-    BindlessTable* const bindless;
-    // The loaded scene's, as the state holds them (null: none).
-    const std::unique_ptr<GpuScene>& scene;
-    const std::unique_ptr<SceneAccelerationStructures>& acceleration;
     FrameSlots& slots_;
     SceneChanges& changes_;
     PosePass& pose_;

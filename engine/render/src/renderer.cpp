@@ -9,9 +9,7 @@
 
 namespace sherpa::gpu {
 
-FrameSlots::FrameSlots(SceneState& scene_state)
-    : state(scene_state), context(scene_state.context), resources(&scene_state.resources),
-      scene(scene_state.gpu), environment(scene_state.environment) {
+FrameSlots::FrameSlots(SceneState& scene_state) : SceneStateRefs(scene_state) {
     for (std::uint32_t i = 0; i < kFramesInFlight; ++i) {
         auto slot = std::make_unique<FrameSlot>(context);
         slot->frame_data =
@@ -158,12 +156,9 @@ void FrameSlots::bind_frame_set(FrameSlot& slot, const VkDescriptorImageInfo& sh
 }
 
 FrameRecorder::FrameRecorder(SceneState& scene_state)
-    : state(scene_state), context(scene_state.context), resources(&scene_state.resources),
-      bindless(&scene_state.bindless), options(scene_state.options), scene(scene_state.gpu),
-      acceleration(scene_state.acceleration), environment(scene_state.environment),
-      culling(context, *resources), pose_(*resources),
-      shadows_(context, *resources, options.shadow_resolution), slots_(scene_state),
-      targets_(*resources) {
+    : SceneStateRefs(scene_state), options(scene_state.options), culling(context, *resources),
+      pose_(*resources), shadows_(context, *resources, options.shadow_resolution),
+      slots_(scene_state), targets_(*resources) {
     transmission_ = std::make_unique<TransmissionPass>(context, *resources, bindless->layout(),
                                                        slots_.layout());
 }

@@ -26,9 +26,7 @@ constexpr float kMaxSampleRadiance = 1e20f;
 } // namespace
 
 PathTracer::PathTracer(SceneState& scene_state, FrameSlots& slots)
-    : state(scene_state), context(scene_state.context), resources(&scene_state.resources),
-      bindless(&scene_state.bindless), scene(scene_state.gpu),
-      acceleration(scene_state.acceleration), environment(scene_state.environment), slots_(slots) {}
+    : SceneStateRefs(scene_state), slots_(slots) {}
 
 PathTraceFrame PathTracer::record(VkCommandBuffer cmd, FrameSlot& slot,
                                   const FrameRequest& settings, bool readback) {

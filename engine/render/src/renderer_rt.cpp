@@ -31,10 +31,8 @@ std::string ray_traced_view_names() {
 
 RayTracedFrames::RayTracedFrames(SceneState& scene_state, FrameSlots& slots, SceneChanges& changes,
                                  PosePass& pose, const ShadowPass& shadows)
-    : state(scene_state), context(scene_state.context), resources(&scene_state.resources),
-      bindless(&scene_state.bindless), scene(scene_state.gpu),
-      acceleration(scene_state.acceleration), slots_(slots), changes_(changes), pose_(pose),
-      shadows_(shadows), path_(scene_state, slots) {}
+    : SceneStateRefs(scene_state), slots_(slots), changes_(changes), pose_(pose), shadows_(shadows),
+      path_(scene_state, slots) {}
 
 bool RayTracedFrames::traces() const {
     return acceleration && acceleration->tlas() != VK_NULL_HANDLE;

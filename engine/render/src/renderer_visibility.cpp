@@ -12,8 +12,7 @@ namespace sherpa::gpu {
 
 SceneChanges::SceneChanges(SceneState& scene_state, FrameSlots& slots, CullingPass& culling_pass,
                            ShadowPass& shadows)
-    : state(scene_state), scene(scene_state.gpu), acceleration(scene_state.acceleration),
-      slots_(slots), culling(culling_pass), shadows_(shadows) {}
+    : SceneStateRefs(scene_state), slots_(slots), culling(culling_pass), shadows_(shadows) {}
 
 void SceneChanges::apply_scene_changes(const FrameRequest& settings, bool rt) {
     if (!scene) return;

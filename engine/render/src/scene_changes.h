@@ -10,7 +10,7 @@
 
 namespace sherpa::gpu {
 
-class SceneChanges {
+class SceneChanges : private SceneStateRefs {
 public:
     SceneChanges(SceneState& state, FrameSlots& slots, CullingPass& culling, ShadowPass& shadows);
     SceneChanges(const SceneChanges&) = delete;
@@ -30,10 +30,6 @@ private:
     // for them, their unread statistics kept in the history now.
     void retire_culling();
 
-    SceneState& state;
-    // The loaded scene's, as the state holds them (null: none).
-    const std::unique_ptr<GpuScene>& scene;
-    const std::unique_ptr<SceneAccelerationStructures>& acceleration;
     FrameSlots& slots_;
     CullingPass& culling;
     ShadowPass& shadows_;

@@ -112,4 +112,20 @@ private:
     std::vector<bool> hidden_given_, hidden_nodes_;
 };
 
+// How the classes that record frames (FrameRecorder and its FrameSlots, SceneChanges,
+// RayTracedFrames, PathTracer) read the SceneState: the state, its device, resources and bindless
+// table, and the loaded scene's parts as the state holds them (null: none loaded).
+struct SceneStateRefs {
+    explicit SceneStateRefs(SceneState& s)
+        : state(s), context(s.context), resources(&s.resources), bindless(&s.bindless),
+          scene(s.gpu), acceleration(s.acceleration), environment(s.environment) {}
+    SceneState& state;
+    Context& context;
+    ResourceManager* const resources;
+    BindlessTable* const bindless;
+    const std::unique_ptr<GpuScene>& scene;
+    const std::unique_ptr<SceneAccelerationStructures>& acceleration;
+    const std::unique_ptr<EnvironmentMap>& environment;
+};
+
 } // namespace sherpa::gpu

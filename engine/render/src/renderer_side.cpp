@@ -11,7 +11,7 @@ namespace sherpa::gpu {
 void RayTracedFrames::check_drawable(const FrameRequest& settings) const {
     if (settings.renderer != RendererKind::RayTraced) return;
     check_rt(settings);
-    // It draws the rasterizer's shadow frame first and waits for it (render_rt): not
+    // It draws the rasterizer's shadow frame first and waits for it (render_offscreen): not
     // inside a frame another recorder owns.
     if (settings.view == DebugView::ShadowError)
         throw GpuError(

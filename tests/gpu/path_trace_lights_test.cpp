@@ -12,6 +12,7 @@
 #include <sherpa/render/path_trace.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -104,6 +105,66 @@ TEST(EmissiveLightsCpu, ListFollowsPowerAndSkipsWhatCannotBeSampled) {
     ASSERT_TRUE(inf);
     EXPECT_TRUE(mentions(inf->warnings, "emissiveFactor: not finite"));
     EXPECT_TRUE(gpu::emissive_lights(*inf).triangles.empty());
+}
+
+// The emissive texture's mean over a triangle (at load, on the CPU): a 4 x 2 image, white
+// in its left half (u < 0.5) and black in its right, in linear luminance from sRGB.
+TEST(EmissiveLightsCpu, TextureMeanOverATriangle) {
+    std::vector<std::uint8_t> rgba(4 * 2 * 4, 255);
+    for (int y = 0; y < 2; ++y)
+        for (int x = 2; x < 4; ++x)
+            for (int c = 0; c < 3; ++c) rgba[std::size_t((y * 4 + x) * 4 + c)] = 0;
+    gpu::LuminanceGrid g = gpu::luminance_grid(4, 2, rgba);
+    ASSERT_EQ(g.width, 4u);
+    EXPECT_NEAR(g.mean, 0.5, 1e-6);
+    const glm::vec2 left[3] = {{0.0f, 0.0f}, {0.45f, 0.0f}, {0.0f, 1.0f}};
+    const glm::vec2 right[3] = {{0.55f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}};
+    EXPECT_NEAR(gpu::mean_over_triangle(g, left), 1.0, 1e-6);
+    EXPECT_NEAR(gpu::mean_over_triangle(g, right), 0.0, 1e-6);
+    // Repeat wraps a whole period away onto the same texels; clamp holds the edge.
+    const glm::vec2 shifted[3] = {{2.0f, -3.0f}, {2.45f, -3.0f}, {2.0f, -2.0f}};
+    EXPECT_NEAR(gpu::mean_over_triangle(g, shifted), 1.0, 1e-6);
+    g.wrap_u = AddressMode::ClampToEdge;
+    const glm::vec2 beyond[3] = {{1.5f, 0.0f}, {2.0f, 0.0f}, {2.0f, 1.0f}};
+    EXPECT_NEAR(gpu::mean_over_triangle(g, beyond), 0.0, 1e-6);
+    // The grid is box-filtered down to kEmissiveGridSize a side, keeping the mean.
+    std::vector<std::uint8_t> big(std::size_t(1024) * 4 * 4, 255);
+    for (std::size_t i = 0; i < big.size(); i += 8) big[i] = big[i + 1] = big[i + 2] = 0;
+    const gpu::LuminanceGrid small = gpu::luminance_grid(1024, 4, big);
+    EXPECT_EQ(small.width, gpu::kEmissiveGridSize);
+    EXPECT_NEAR(small.mean, 0.5, 1e-6);
+    EXPECT_NEAR(small.texels[0], 0.5f, 1e-6f);
+}
+
+// DamagedHelmet emits through a mostly black texture with emissive factor 1 on every
+// triangle: the list weighs each triangle by the texture's mean over it, with a floor
+// that keeps every probability above 0; the densities per area integrate to 1.
+TEST(EmissiveLightsCpu, DamagedHelmetWeighsTrianglesByItsEmissiveTexture) {
+    auto scene = load_file(gltf_asset("DamagedHelmet"));
+    ASSERT_TRUE(scene);
+    const auto start = std::chrono::steady_clock::now();
+    const gpu::EmissiveLights lights = gpu::emissive_lights(*scene);
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_FALSE(lights.triangles.empty());
+    EXPECT_EQ(lights.textures_read, 1u);
+    EXPECT_LT(lights.sampled_power, 0.5 * lights.power) << "the texture is mostly black";
+    double integral = 0.0;
+    float least = 1e30f, most = 0.0f;
+    for (const gpu::EmissiveTriangle& t : lights.triangles) {
+        const double area = 0.5 * glm::length(glm::cross(glm::vec3(t.e1_density), glm::vec3(t.e2)));
+        integral += double(t.e1_density.w) * area;
+        least = std::min(least, t.emission.y);
+        most = std::max(most, t.emission.y);
+        EXPECT_EQ(t.emission.x, 1.0f); // the material's luminance (MIS weights)
+    }
+    EXPECT_NEAR(integral, 1.0, 1e-3);
+    EXPECT_GT(least, 0.0f);
+    EXPECT_GT(most, 100.0f * least) << "glowing triangles outweigh black ones";
+    std::printf(
+        "DamagedHelmet: %zu emissive triangles, sampled power %.4f of material power "
+        "%.4f, estimated luminance %.3g to %.3g; made in %.1f ms (its 2048x2048 texture decoded)\n",
+        lights.triangles.size(), lights.sampled_power, lights.power, least, most, ms);
 }
 
 class PathTraceLights : public GpuTest {

@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace sherpa::test {
 namespace {
@@ -114,7 +115,7 @@ TEST(EmissiveLightsCpu, TextureMeanOverATriangle) {
     for (int y = 0; y < 2; ++y)
         for (int x = 2; x < 4; ++x)
             for (int c = 0; c < 3; ++c) rgba[std::size_t((y * 4 + x) * 4 + c)] = 0;
-    gpu::LuminanceGrid g = gpu::luminance_grid(4, 2, rgba);
+    const gpu::LuminanceGrid g = gpu::luminance_grid(4, 2, rgba);
     ASSERT_EQ(g.width, 4u);
     EXPECT_NEAR(g.mean, 0.5, 1e-6);
     const glm::vec2 left[3] = {{0.0f, 0.0f}, {0.45f, 0.0f}, {0.0f, 1.0f}};
@@ -124,9 +125,15 @@ TEST(EmissiveLightsCpu, TextureMeanOverATriangle) {
     // Repeat wraps a whole period away onto the same texels; clamp holds the edge.
     const glm::vec2 shifted[3] = {{2.0f, -3.0f}, {2.45f, -3.0f}, {2.0f, -2.0f}};
     EXPECT_NEAR(gpu::mean_over_triangle(g, shifted), 1.0, 1e-6);
-    g.wrap_u = AddressMode::ClampToEdge;
     const glm::vec2 beyond[3] = {{1.5f, 0.0f}, {2.0f, 0.0f}, {2.0f, 1.0f}};
-    EXPECT_NEAR(gpu::mean_over_triangle(g, beyond), 0.0, 1e-6);
+    EXPECT_NEAR(gpu::mean_over_triangle(g, beyond, AddressMode::ClampToEdge), 0.0, 1e-6);
+    // Mirrored repeat: u in [1, 2) reads the image reversed (white at its right end).
+    const glm::vec2 mirrored[3] = {{1.55f, 0.0f}, {2.0f, 0.0f}, {2.0f, 1.0f}};
+    EXPECT_NEAR(gpu::mean_over_triangle(g, mirrored, AddressMode::MirroredRepeat), 1.0, 1e-6);
+    // Non-finite coordinates read a texel, never out of bounds.
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const glm::vec2 broken[3] = {{nan, 0.0f}, {1e30f, -1e30f}, {0.0f, nan}};
+    EXPECT_TRUE(std::isfinite(gpu::mean_over_triangle(g, broken)));
     // The grid is box-filtered down to kEmissiveGridSize a side, keeping the mean.
     std::vector<std::uint8_t> big(std::size_t(1024) * 4 * 4, 255);
     for (std::size_t i = 0; i < big.size(); i += 8) big[i] = big[i + 1] = big[i + 2] = 0;

@@ -60,8 +60,8 @@ float wrap(float u, AddressMode mode) {
     return u - std::floor(u);
 }
 
-float nearest(const LuminanceGrid& g, glm::vec2 uv) {
-    const float u = wrap(uv.x, g.wrap_u), v = wrap(uv.y, g.wrap_v);
+float nearest(const LuminanceGrid& g, glm::vec2 uv, AddressMode wrap_u, AddressMode wrap_v) {
+    const float u = wrap(uv.x, wrap_u), v = wrap(uv.y, wrap_v);
     const std::uint32_t x = std::min(std::uint32_t(u * float(g.width)), g.width - 1);
     const std::uint32_t y = std::min(std::uint32_t(v * float(g.height)), g.height - 1);
     return g.texels[std::size_t(y) * g.width + x];
@@ -69,18 +69,23 @@ float nearest(const LuminanceGrid& g, glm::vec2 uv) {
 
 } // namespace
 
-double mean_over_triangle(const LuminanceGrid& grid, const glm::vec2 uv[3]) {
+double mean_over_triangle(const LuminanceGrid& grid, const glm::vec2 uv[3], AddressMode wrap_u,
+                          AddressMode wrap_v) {
     if (grid.texels.empty()) return 0.0;
     constexpr int n = 8; // 64 sub-triangles of equal area, each sampled at its centroid
     const glm::vec2 d1 = uv[1] - uv[0], d2 = uv[2] - uv[0];
     double sum = 0.0;
     for (int i = 0; i < n; ++i)
         for (int j = 0; i + j < n; ++j) {
-            sum += nearest(grid, uv[0] + ((float(i) + 1.0f / 3.0f) / n) * d1 +
-                                     ((float(j) + 1.0f / 3.0f) / n) * d2);
+            sum += nearest(grid,
+                           uv[0] + ((float(i) + 1.0f / 3.0f) / n) * d1 +
+                               ((float(j) + 1.0f / 3.0f) / n) * d2,
+                           wrap_u, wrap_v);
             if (i + j < n - 1)
-                sum += nearest(grid, uv[0] + ((float(i) + 2.0f / 3.0f) / n) * d1 +
-                                         ((float(j) + 2.0f / 3.0f) / n) * d2);
+                sum += nearest(grid,
+                               uv[0] + ((float(i) + 2.0f / 3.0f) / n) * d1 +
+                                   ((float(j) + 2.0f / 3.0f) / n) * d2,
+                               wrap_u, wrap_v);
         }
     return sum / double(n * n);
 }
@@ -115,9 +120,13 @@ EmissiveLights emissive_lights(const Scene& scene, std::size_t max_triangles) {
                                "BSDF sampling only (no light list)");
         return out;
     }
-    // Per emitting material with an emissive texture: the texture's luminance grid
-    // (decoded once per image and sampler), for the triangles' means.
-    std::vector<std::optional<LuminanceGrid>> grids(scene.materials.size());
+    // Per emitting material with an emissive texture: its image's luminance grid (decoded
+    // once per image, shared by the materials that use it) and its sampler's wrap modes.
+    struct EmissiveTexture {
+        const LuminanceGrid* grid = nullptr;
+        AddressMode wrap_u = AddressMode::Repeat, wrap_v = AddressMode::Repeat;
+    };
+    std::vector<EmissiveTexture> grids(scene.materials.size());
     std::vector<std::optional<LuminanceGrid>> image_grids(scene.images.size());
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         const TextureSlot& slot = scene.materials[i].emissive;
@@ -141,10 +150,8 @@ EmissiveLights emissive_lights(const Scene& scene, std::size_t max_triangles) {
             }
         }
         if (image_grid->texels.empty()) continue;
-        grids[i] = *image_grid;
         const SamplerDesc sampler = scene.sampler_of(texture);
-        grids[i]->wrap_u = sampler.wrap_u;
-        grids[i]->wrap_v = sampler.wrap_v;
+        grids[i] = {&*image_grid, sampler.wrap_u, sampler.wrap_v};
     }
     std::vector<double> power, sampled;
     for (const MeshInstance& inst : scene.instances) {
@@ -156,7 +163,7 @@ EmissiveLights emissive_lights(const Scene& scene, std::size_t max_triangles) {
             glm::vec3 p[3];
             glm::vec2 uv[3];
             bool valid = true;
-            const std::optional<LuminanceGrid>& grid = grids[inst.material_id];
+            const EmissiveTexture& grid = grids[inst.material_id];
             const TextureSlot& slot = scene.materials[inst.material_id].emissive;
             for (int k = 0; k < 3; ++k) {
                 const std::uint32_t v = mesh.indices[t + std::size_t(k)];
@@ -181,8 +188,10 @@ EmissiveLights emissive_lights(const Scene& scene, std::size_t max_triangles) {
             }
             // The texture's mean over the triangle, with a floor (kEmissiveTextureFloor);
             // 1 without a texture. A black texture emits nothing anywhere.
-            const double mean =
-                grid ? mean_over_triangle(*grid, uv) + kEmissiveTextureFloor * grid->mean : 1.0;
+            const double mean = grid.grid
+                                    ? mean_over_triangle(*grid.grid, uv, grid.wrap_u, grid.wrap_v) +
+                                          kEmissiveTextureFloor * grid.grid->mean
+                                    : 1.0;
             if (!(mean > 0.0)) continue;
             out.triangles.push_back({glm::vec4(p[0], 0.0f), glm::vec4(e1, 0.0f),
                                      glm::vec4(e2, 0.0f),

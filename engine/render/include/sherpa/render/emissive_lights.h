@@ -65,7 +65,6 @@ struct LuminanceGrid {
     std::uint32_t width = 0, height = 0;
     std::vector<float> texels; // rows top to bottom (uv (0, 0) is the first texel)
     double mean = 0.0;
-    AddressMode wrap_u = AddressMode::Repeat, wrap_v = AddressMode::Repeat;
 };
 LuminanceGrid luminance_grid(std::uint32_t width, std::uint32_t height,
                              std::span<const std::uint8_t> rgba8_srgb);
@@ -73,7 +72,9 @@ LuminanceGrid luminance_grid(std::uint32_t width, std::uint32_t height,
 // The grid's mean over the triangle with texture coordinates `uv` (after the texture
 // transform): nearest texels at the centroids of 64 equal sub-triangles, wrapped as
 // the sampler wraps.
-double mean_over_triangle(const LuminanceGrid& grid, const glm::vec2 uv[3]);
+double mean_over_triangle(const LuminanceGrid& grid, const glm::vec2 uv[3],
+                          AddressMode wrap_u = AddressMode::Repeat,
+                          AddressMode wrap_v = AddressMode::Repeat);
 
 // The light list of `scene` as its instances are placed (the default pose). A scene
 // that animates (node animation, skins, morphs) gets none: its triangles move, and a

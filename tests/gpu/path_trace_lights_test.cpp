@@ -195,13 +195,6 @@ protected:
         s.path.max_bounces = 2;
         return s;
     }
-
-    static double mean_radiance(const gpu::PathTraceImage& img) {
-        double sum = 0.0;
-        for (std::size_t i = 0; i < img.sums.size(); i += 4)
-            sum += (img.sums[i] + img.sums[i + 1] + img.sums[i + 2]) / 3.0;
-        return sum / double(img.samples) / double(img.width * img.height);
-    }
 };
 
 struct BlackEnvironment {
@@ -213,34 +206,54 @@ struct BlackEnvironment {
     ~BlackEnvironment() { r.set_environment(nullptr); }
 };
 
+// The mean over the pixels of a path-traced image's mean radiance (rgb averaged).
+double mean_radiance(const gpu::PathTraceImage& img) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < img.sums.size(); i += 4)
+        sum += (img.sums[i] + img.sums[i + 1] + img.sums[i + 2]) / 3.0;
+    return sum / double(img.samples) / double(img.width * img.height);
+}
+
+// The loaded scene at 64 spp with light sampling, then with BSDF sampling alone at 64
+// spp (its error) continued to 256 (the unbiased reference's mean).
+struct LightAgainstBsdf {
+    double light_mean = 0.0, bsdf_mean = 0.0;
+    double light_error = 0.0, bsdf_error = 0.0; // relative, at 64 spp each
+};
+
+LightAgainstBsdf light_against_bsdf_sampling(gpu::Renderer& r, gpu::FrameRequest s,
+                                             const char* what) {
+    s.path.samples = 64;
+    s.path.restart = true;
+    r.render(s);
+    const gpu::PathTraceImage light = gpu::read_path_trace(r);
+    LightAgainstBsdf out;
+    out.light_error = gpu::estimate_error(light).relative_error;
+    s.path.light_sampling = false;
+    r.render(s);
+    out.bsdf_error = gpu::path_trace_error(r).relative_error;
+    s.path.restart = false;
+    s.path.samples = 192;
+    r.render(s);
+    const gpu::PathTraceImage bsdf = gpu::read_path_trace(r);
+    EXPECT_EQ(bsdf.samples, 256u);
+    out.light_mean = mean_radiance(light);
+    out.bsdf_mean = mean_radiance(bsdf);
+    std::printf("%s, 64x64: mean radiance %.5f with light sampling (64 spp), %.5f BSDF "
+                "sampling alone (256 spp); relative error at 64 spp %.4f vs %.4f\n",
+                what, out.light_mean, out.bsdf_mean, out.light_error, out.bsdf_error);
+    return out;
+}
+
 TEST_F(PathTraceLights, LightSamplingAgreesWithBsdfSamplingAndLowersTheError) {
     BlackEnvironment black(rt());
     auto scene = load(write_temp("pt_lights.gltf", lit_floor_gltf("[1,1,1]", "10")).string());
     rt().load(*scene);
-    gpu::FrameRequest s = view();
-    s.path.samples = 64;
-    s.path.restart = true;
-    rt().render(s);
-    const gpu::PathTraceImage nee = gpu::read_path_trace(rt());
-    const gpu::PathTraceError nee_error = gpu::estimate_error(nee);
-
-    s.path.light_sampling = false;
-    rt().render(s);
-    const gpu::PathTraceError bsdf_error = gpu::path_trace_error(rt());
-    s.path.restart = false;
-    s.path.samples = 192; // the reference: BSDF sampling alone, 256 samples
-    rt().render(s);
-    const gpu::PathTraceImage bsdf = gpu::read_path_trace(rt());
-    ASSERT_EQ(bsdf.samples, 256u);
-
-    const double a = mean_radiance(nee), b = mean_radiance(bsdf);
-    std::printf("emissive quad over a floor, 64x64: mean radiance %.5f with light sampling (64 "
-                "spp), %.5f BSDF sampling alone (256 spp); relative error at 64 spp %.4f vs "
-                "%.4f\n",
-                a, b, nee_error.relative_error, bsdf_error.relative_error);
-    EXPECT_GT(b, 0.01);
-    EXPECT_NEAR(a / b, 1.0, 0.03);
-    EXPECT_LT(nee_error.relative_error, 0.5 * bsdf_error.relative_error);
+    const LightAgainstBsdf r =
+        light_against_bsdf_sampling(rt(), view(), "emissive quad over a floor");
+    EXPECT_GT(r.bsdf_mean, 0.01);
+    EXPECT_NEAR(r.light_mean / r.bsdf_mean, 1.0, 0.03);
+    EXPECT_LT(r.light_error, 0.5 * r.bsdf_error);
 }
 
 // An emitter lit through its texture (tests/data/textured_emitter.gltf: a 1 x 1 quad
@@ -255,24 +268,11 @@ TEST_F(PathTraceLights, TextureWeightedEmitterAgreesWithBsdfSampling) {
     ASSERT_TRUE(scene);
     EXPECT_EQ(gpu::emissive_lights(*scene).textures_read, 1u);
     rt().load(*scene);
-    gpu::FrameRequest s = view();
-    s.path.samples = 64;
-    s.path.restart = true;
-    rt().render(s);
-    const gpu::PathTraceImage nee = gpu::read_path_trace(rt());
-    const gpu::PathTraceError nee_error = gpu::estimate_error(nee);
-    s.path.light_sampling = false;
-    s.path.samples = 256;
-    rt().render(s);
-    const gpu::PathTraceImage bsdf = gpu::read_path_trace(rt());
-    const gpu::PathTraceError bsdf_error = gpu::estimate_error(bsdf);
-    const double a = mean_radiance(nee), b = mean_radiance(bsdf);
-    std::printf("textured emitter over a floor, 64x64: mean radiance %.5f with light sampling "
-                "(64 spp), %.5f BSDF sampling alone (256 spp); relative error %.4f vs %.4f\n",
-                a, b, nee_error.relative_error, bsdf_error.relative_error);
-    EXPECT_GT(b, 0.005);
-    EXPECT_NEAR(a / b, 1.0, 0.03);
-    EXPECT_LT(nee_error.relative_error, bsdf_error.relative_error);
+    const LightAgainstBsdf r =
+        light_against_bsdf_sampling(rt(), view(), "textured emitter over a floor");
+    EXPECT_GT(r.bsdf_mean, 0.005);
+    EXPECT_NEAR(r.light_mean / r.bsdf_mean, 1.0, 0.03);
+    EXPECT_LT(r.light_error, r.bsdf_error);
 }
 
 // 1e30 strength: a finite image (samples capped), no validation message.

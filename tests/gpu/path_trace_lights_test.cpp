@@ -12,8 +12,10 @@
 #include <sherpa/render/path_trace.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace sherpa::test {
 namespace {
@@ -106,6 +108,72 @@ TEST(EmissiveLightsCpu, ListFollowsPowerAndSkipsWhatCannotBeSampled) {
     EXPECT_TRUE(gpu::emissive_lights(*inf).triangles.empty());
 }
 
+// The emissive texture's mean over a triangle (at load, on the CPU): a 4 x 2 image, white
+// in its left half (u < 0.5) and black in its right, in linear luminance from sRGB.
+TEST(EmissiveLightsCpu, TextureMeanOverATriangle) {
+    std::vector<std::uint8_t> rgba(4 * 2 * 4, 255);
+    for (int y = 0; y < 2; ++y)
+        for (int x = 2; x < 4; ++x)
+            for (int c = 0; c < 3; ++c) rgba[std::size_t((y * 4 + x) * 4 + c)] = 0;
+    const gpu::LuminanceGrid g = gpu::luminance_grid(4, 2, rgba);
+    ASSERT_EQ(g.width, 4u);
+    EXPECT_NEAR(g.mean, 0.5, 1e-6);
+    const glm::vec2 left[3] = {{0.0f, 0.0f}, {0.45f, 0.0f}, {0.0f, 1.0f}};
+    const glm::vec2 right[3] = {{0.55f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}};
+    EXPECT_NEAR(gpu::mean_over_triangle(g, left), 1.0, 1e-6);
+    EXPECT_NEAR(gpu::mean_over_triangle(g, right), 0.0, 1e-6);
+    // Repeat wraps a whole period away onto the same texels; clamp holds the edge.
+    const glm::vec2 shifted[3] = {{2.0f, -3.0f}, {2.45f, -3.0f}, {2.0f, -2.0f}};
+    EXPECT_NEAR(gpu::mean_over_triangle(g, shifted), 1.0, 1e-6);
+    const glm::vec2 beyond[3] = {{1.5f, 0.0f}, {2.0f, 0.0f}, {2.0f, 1.0f}};
+    EXPECT_NEAR(gpu::mean_over_triangle(g, beyond, AddressMode::ClampToEdge), 0.0, 1e-6);
+    // Mirrored repeat: u in [1, 2) reads the image reversed (white at its right end).
+    const glm::vec2 mirrored[3] = {{1.55f, 0.0f}, {2.0f, 0.0f}, {2.0f, 1.0f}};
+    EXPECT_NEAR(gpu::mean_over_triangle(g, mirrored, AddressMode::MirroredRepeat), 1.0, 1e-6);
+    // Non-finite coordinates read a texel, never out of bounds.
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const glm::vec2 broken[3] = {{nan, 0.0f}, {1e30f, -1e30f}, {0.0f, nan}};
+    EXPECT_TRUE(std::isfinite(gpu::mean_over_triangle(g, broken)));
+    // The grid is box-filtered down to kEmissiveGridSize a side, keeping the mean.
+    std::vector<std::uint8_t> big(std::size_t(1024) * 4 * 4, 255);
+    for (std::size_t i = 0; i < big.size(); i += 8) big[i] = big[i + 1] = big[i + 2] = 0;
+    const gpu::LuminanceGrid small = gpu::luminance_grid(1024, 4, big);
+    EXPECT_EQ(small.width, gpu::kEmissiveGridSize);
+    EXPECT_NEAR(small.mean, 0.5, 1e-6);
+    EXPECT_NEAR(small.texels[0], 0.5f, 1e-6f);
+}
+
+// DamagedHelmet emits through a mostly black texture with emissive factor 1 on every
+// triangle: the list weighs each triangle by the texture's mean over it, with a floor
+// that keeps every probability above 0; the densities per area integrate to 1.
+TEST(EmissiveLightsCpu, DamagedHelmetWeighsTrianglesByItsEmissiveTexture) {
+    auto scene = load_file(gltf_asset("DamagedHelmet"));
+    ASSERT_TRUE(scene);
+    const auto start = std::chrono::steady_clock::now();
+    const gpu::EmissiveLights lights = gpu::emissive_lights(*scene);
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_FALSE(lights.triangles.empty());
+    EXPECT_EQ(lights.textures_read, 1u);
+    EXPECT_LT(lights.sampled_power, 0.5 * lights.power) << "the texture is mostly black";
+    double integral = 0.0;
+    float least = 1e30f, most = 0.0f;
+    for (const gpu::EmissiveTriangle& t : lights.triangles) {
+        const double area = 0.5 * glm::length(glm::cross(glm::vec3(t.e1_density), glm::vec3(t.e2)));
+        integral += double(t.e1_density.w) * area;
+        least = std::min(least, t.emission.y);
+        most = std::max(most, t.emission.y);
+        EXPECT_EQ(t.emission.x, 1.0f); // the material's luminance (MIS weights)
+    }
+    EXPECT_NEAR(integral, 1.0, 1e-3);
+    EXPECT_GT(least, 0.0f);
+    EXPECT_GT(most, 100.0f * least) << "glowing triangles outweigh black ones";
+    std::printf(
+        "DamagedHelmet: %zu emissive triangles, sampled power %.4f of material power "
+        "%.4f, estimated luminance %.3g to %.3g; made in %.1f ms (its 2048x2048 texture decoded)\n",
+        lights.triangles.size(), lights.sampled_power, lights.power, least, most, ms);
+}
+
 class PathTraceLights : public GpuTest {
 protected:
     static gpu::Renderer& rt() { return path_trace_renderer(); }
@@ -127,13 +195,6 @@ protected:
         s.path.max_bounces = 2;
         return s;
     }
-
-    static double mean_radiance(const gpu::PathTraceImage& img) {
-        double sum = 0.0;
-        for (std::size_t i = 0; i < img.sums.size(); i += 4)
-            sum += (img.sums[i] + img.sums[i + 1] + img.sums[i + 2]) / 3.0;
-        return sum / double(img.samples) / double(img.width * img.height);
-    }
 };
 
 struct BlackEnvironment {
@@ -145,34 +206,73 @@ struct BlackEnvironment {
     ~BlackEnvironment() { r.set_environment(nullptr); }
 };
 
+// The mean over the pixels of a path-traced image's mean radiance (rgb averaged).
+double mean_radiance(const gpu::PathTraceImage& img) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < img.sums.size(); i += 4)
+        sum += (img.sums[i] + img.sums[i + 1] + img.sums[i + 2]) / 3.0;
+    return sum / double(img.samples) / double(img.width * img.height);
+}
+
+// The loaded scene at 64 spp with light sampling, then with BSDF sampling alone at 64
+// spp (its error) continued to 256 (the unbiased reference's mean).
+struct LightAgainstBsdf {
+    double light_mean = 0.0, bsdf_mean = 0.0;
+    double light_error = 0.0, bsdf_error = 0.0; // relative, at 64 spp each
+};
+
+LightAgainstBsdf light_against_bsdf_sampling(gpu::Renderer& r, gpu::FrameRequest s,
+                                             const char* what) {
+    s.path.samples = 64;
+    s.path.restart = true;
+    r.render(s);
+    const gpu::PathTraceImage light = gpu::read_path_trace(r);
+    LightAgainstBsdf out;
+    out.light_error = gpu::estimate_error(light).relative_error;
+    s.path.light_sampling = false;
+    r.render(s);
+    out.bsdf_error = gpu::path_trace_error(r).relative_error;
+    s.path.restart = false;
+    s.path.samples = 192;
+    r.render(s);
+    const gpu::PathTraceImage bsdf = gpu::read_path_trace(r);
+    EXPECT_EQ(bsdf.samples, 256u);
+    out.light_mean = mean_radiance(light);
+    out.bsdf_mean = mean_radiance(bsdf);
+    std::printf("%s, 64x64: mean radiance %.5f with light sampling (64 spp), %.5f BSDF "
+                "sampling alone (256 spp); relative error at 64 spp %.4f vs %.4f\n",
+                what, out.light_mean, out.bsdf_mean, out.light_error, out.bsdf_error);
+    return out;
+}
+
 TEST_F(PathTraceLights, LightSamplingAgreesWithBsdfSamplingAndLowersTheError) {
     BlackEnvironment black(rt());
     auto scene = load(write_temp("pt_lights.gltf", lit_floor_gltf("[1,1,1]", "10")).string());
     rt().load(*scene);
-    gpu::FrameRequest s = view();
-    s.path.samples = 64;
-    s.path.restart = true;
-    rt().render(s);
-    const gpu::PathTraceImage nee = gpu::read_path_trace(rt());
-    const gpu::PathTraceError nee_error = gpu::estimate_error(nee);
+    const LightAgainstBsdf r =
+        light_against_bsdf_sampling(rt(), view(), "emissive quad over a floor");
+    EXPECT_GT(r.bsdf_mean, 0.01);
+    EXPECT_NEAR(r.light_mean / r.bsdf_mean, 1.0, 0.03);
+    EXPECT_LT(r.light_error, 0.5 * r.bsdf_error);
+}
 
-    s.path.light_sampling = false;
-    rt().render(s);
-    const gpu::PathTraceError bsdf_error = gpu::path_trace_error(rt());
-    s.path.restart = false;
-    s.path.samples = 192; // the reference: BSDF sampling alone, 256 samples
-    rt().render(s);
-    const gpu::PathTraceImage bsdf = gpu::read_path_trace(rt());
-    ASSERT_EQ(bsdf.samples, 256u);
-
-    const double a = mean_radiance(nee), b = mean_radiance(bsdf);
-    std::printf("emissive quad over a floor, 64x64: mean radiance %.5f with light sampling (64 "
-                "spp), %.5f BSDF sampling alone (256 spp); relative error at 64 spp %.4f vs "
-                "%.4f\n",
-                a, b, nee_error.relative_error, bsdf_error.relative_error);
-    EXPECT_GT(b, 0.01);
-    EXPECT_NEAR(a / b, 1.0, 0.03);
-    EXPECT_LT(nee_error.relative_error, 0.5 * bsdf_error.relative_error);
+// An emitter lit through its texture (tests/data/textured_emitter.gltf: a 1 x 1 quad
+// facing down 1 above a grey floor, emissive strength 20 through an 8 x 8 texture whose
+// first column is white and the rest black, nearest filtering): its triangles are drawn
+// by the texture's mean over them, while the multiple-importance weights keep the
+// material's density. The two weights still sum to 1, so the mean agrees with BSDF
+// sampling alone (the unbiased reference, 256 spp).
+TEST_F(PathTraceLights, TextureWeightedEmitterAgreesWithBsdfSampling) {
+    BlackEnvironment black(rt());
+    auto scene = load(std::string(SHERPA_TEST_DATA_DIR) + "/textured_emitter.gltf");
+    ASSERT_TRUE(scene);
+    EXPECT_EQ(gpu::emissive_lights(*scene).textures_read, 1u);
+    rt().load(*scene);
+    const LightAgainstBsdf r =
+        light_against_bsdf_sampling(rt(), view(), "textured emitter over a floor");
+    EXPECT_GT(r.bsdf_mean, 0.005);
+    EXPECT_NEAR(r.light_mean / r.bsdf_mean, 1.0, 0.03);
+    EXPECT_LT(r.light_error, r.bsdf_error);
 }
 
 // 1e30 strength: a finite image (samples capped), no validation message.

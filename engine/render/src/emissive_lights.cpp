@@ -1,8 +1,94 @@
 #include <sherpa/render/emissive_lights.h>
 
+#include <sherpa/texture/mips.h>
+#include <sherpa/texture/source_export.h>
+
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 
 namespace sherpa::gpu {
+
+LuminanceGrid luminance_grid(std::uint32_t width, std::uint32_t height,
+                             std::span<const std::uint8_t> rgba8_srgb) {
+    LuminanceGrid g;
+    if (width == 0 || height == 0 || rgba8_srgb.size() < std::size_t(width) * height * 4) return g;
+    std::array<float, 256> linear;
+    for (int i = 0; i < 256; ++i) linear[std::size_t(i)] = tex::srgb_to_linear(float(i) / 255.0f);
+    g.width = std::min(width, kEmissiveGridSize);
+    g.height = std::min(height, kEmissiveGridSize);
+    g.texels.assign(std::size_t(g.width) * g.height, 0.0f);
+    // Each grid texel the mean of the source texels [x w / gw, (x + 1) w / gw).
+    for (std::uint32_t gy = 0; gy < g.height; ++gy) {
+        const std::uint32_t y0 = std::uint32_t(std::uint64_t(gy) * height / g.height);
+        const std::uint32_t y1 = std::uint32_t(std::uint64_t(gy + 1) * height / g.height);
+        for (std::uint32_t gx = 0; gx < g.width; ++gx) {
+            const std::uint32_t x0 = std::uint32_t(std::uint64_t(gx) * width / g.width);
+            const std::uint32_t x1 = std::uint32_t(std::uint64_t(gx + 1) * width / g.width);
+            double sum = 0.0;
+            for (std::uint32_t y = y0; y < y1; ++y)
+                for (std::uint32_t x = x0; x < x1; ++x) {
+                    const std::uint8_t* t = &rgba8_srgb[(std::size_t(y) * width + x) * 4];
+                    sum += 0.2126 * linear[t[0]] + 0.7152 * linear[t[1]] + 0.0722 * linear[t[2]];
+                }
+            const double texel =
+                sum / double(std::max<std::uint64_t>(1, std::uint64_t(y1 - y0) * (x1 - x0)));
+            g.texels[std::size_t(gy) * g.width + gx] = float(texel);
+            g.mean += texel;
+        }
+    }
+    g.mean /= double(g.texels.size());
+    return g;
+}
+
+namespace {
+
+// A texture coordinate wrapped into [0, 1] as the sampler's address mode does.
+float wrap(float u, AddressMode mode) {
+    if (!std::isfinite(u)) return 0.0f;
+    switch (mode) {
+    case AddressMode::ClampToEdge:
+        return std::clamp(u, 0.0f, 1.0f);
+    case AddressMode::MirroredRepeat: {
+        const float m = u - 2.0f * std::floor(0.5f * u); // [0, 2)
+        return m > 1.0f ? 2.0f - m : m;
+    }
+    case AddressMode::Repeat:
+        break;
+    }
+    return u - std::floor(u);
+}
+
+float nearest(const LuminanceGrid& g, glm::vec2 uv, AddressMode wrap_u, AddressMode wrap_v) {
+    const float u = wrap(uv.x, wrap_u), v = wrap(uv.y, wrap_v);
+    const std::uint32_t x = std::min(std::uint32_t(u * float(g.width)), g.width - 1);
+    const std::uint32_t y = std::min(std::uint32_t(v * float(g.height)), g.height - 1);
+    return g.texels[std::size_t(y) * g.width + x];
+}
+
+} // namespace
+
+double mean_over_triangle(const LuminanceGrid& grid, const glm::vec2 uv[3], AddressMode wrap_u,
+                          AddressMode wrap_v) {
+    if (grid.texels.empty()) return 0.0;
+    constexpr int n = 8; // 64 sub-triangles of equal area, each sampled at its centroid
+    const glm::vec2 d1 = uv[1] - uv[0], d2 = uv[2] - uv[0];
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; i + j < n; ++j) {
+            sum += nearest(grid,
+                           uv[0] + ((float(i) + 1.0f / 3.0f) / n) * d1 +
+                               ((float(j) + 1.0f / 3.0f) / n) * d2,
+                           wrap_u, wrap_v);
+            if (i + j < n - 1)
+                sum += nearest(grid,
+                               uv[0] + ((float(i) + 2.0f / 3.0f) / n) * d1 +
+                                   ((float(j) + 2.0f / 3.0f) / n) * d2,
+                               wrap_u, wrap_v);
+        }
+    return sum / double(n * n);
+}
 
 float emitted_luminance(const MaterialInstance& m) {
     if (m.unlit) return 0.0f;
@@ -34,7 +120,40 @@ EmissiveLights emissive_lights(const Scene& scene, std::size_t max_triangles) {
                                "BSDF sampling only (no light list)");
         return out;
     }
-    std::vector<double> power;
+    // Per emitting material with an emissive texture: its image's luminance grid (decoded
+    // once per image, shared by the materials that use it) and its sampler's wrap modes.
+    struct EmissiveTexture {
+        const LuminanceGrid* grid = nullptr;
+        AddressMode wrap_u = AddressMode::Repeat, wrap_v = AddressMode::Repeat;
+    };
+    std::vector<EmissiveTexture> grids(scene.materials.size());
+    std::vector<std::optional<LuminanceGrid>> image_grids(scene.images.size());
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        const TextureSlot& slot = scene.materials[i].emissive;
+        if (!(luminance[i] > 0.0f) || !slot.present() || slot.tex_coord > 1 ||
+            std::size_t(slot.texture) >= scene.textures.size())
+            continue;
+        const TextureRecord& texture = scene.textures[std::size_t(slot.texture)];
+        if (texture.image < 0 || std::size_t(texture.image) >= scene.images.size()) continue;
+        std::optional<LuminanceGrid>& image_grid = image_grids[std::size_t(texture.image)];
+        if (!image_grid) {
+            tex::RgbaImage decoded;
+            std::string error;
+            if (tex::decode_image_source(scene.images[std::size_t(texture.image)], decoded,
+                                         error)) {
+                image_grid = luminance_grid(decoded.width, decoded.height, decoded.pixels);
+                ++out.textures_read;
+            } else { // sampled as if white: unbiased, only less apt
+                image_grid = LuminanceGrid{};
+                out.warnings.push_back("image " + std::to_string(texture.image) + ": " + error +
+                                       "; its emissive triangles are weighted as if it were white");
+            }
+        }
+        if (image_grid->texels.empty()) continue;
+        const SamplerDesc sampler = scene.sampler_of(texture);
+        grids[i] = {&*image_grid, sampler.wrap_u, sampler.wrap_v};
+    }
+    std::vector<double> power, sampled;
     for (const MeshInstance& inst : scene.instances) {
         if (inst.mesh_id >= scene.meshes.size() || inst.material_id >= luminance.size()) continue;
         const float lum = luminance[inst.material_id];
@@ -42,14 +161,21 @@ EmissiveLights emissive_lights(const Scene& scene, std::size_t max_triangles) {
         if (!(lum > 0.0f) || mesh.topology() != Topology::Triangles) continue;
         for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
             glm::vec3 p[3];
+            glm::vec2 uv[3];
             bool valid = true;
+            const EmissiveTexture& grid = grids[inst.material_id];
+            const TextureSlot& slot = scene.materials[inst.material_id].emissive;
             for (int k = 0; k < 3; ++k) {
                 const std::uint32_t v = mesh.indices[t + std::size_t(k)];
                 if (v >= mesh.vertices.size()) {
                     valid = false;
                     break;
                 }
-                p[k] = glm::vec3(inst.world * glm::vec4(mesh.vertices[v].position, 1.0f));
+                const Vertex& vertex = mesh.vertices[v];
+                p[k] = glm::vec3(inst.world * glm::vec4(vertex.position, 1.0f));
+                uv[k] = slot.tex_coord == 1 ? vertex.uv1 : vertex.uv0;
+                if (slot.transform.present)
+                    uv[k] = glm::vec2(slot.transform.matrix() * glm::vec3(uv[k], 1.0f));
             }
             if (!valid || !is_finite(p[0]) || !is_finite(p[1]) || !is_finite(p[2])) continue;
             const glm::vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
@@ -58,30 +184,45 @@ EmissiveLights emissive_lights(const Scene& scene, std::size_t max_triangles) {
             if (out.triangles.size() == max_triangles) {
                 out.warnings.push_back("more than " + std::to_string(max_triangles) +
                                        " emissive triangles: none sampled as lights");
-                return EmissiveLights{{}, 0.0f, 0.0, std::move(out.warnings)};
+                return EmissiveLights{{}, 0.0f, 0.0, 0.0, 0, std::move(out.warnings)};
             }
-            out.triangles.push_back(
-                {glm::vec4(p[0], 0.0f), glm::vec4(e1, lum), glm::vec4(e2, 0.0f)});
+            // The texture's mean over the triangle, with a floor (kEmissiveTextureFloor);
+            // 1 without a texture. A black texture emits nothing anywhere.
+            const double mean = grid.grid
+                                    ? mean_over_triangle(*grid.grid, uv, grid.wrap_u, grid.wrap_v) +
+                                          kEmissiveTextureFloor * grid.grid->mean
+                                    : 1.0;
+            if (!(mean > 0.0)) continue;
+            out.triangles.push_back({glm::vec4(p[0], 0.0f), glm::vec4(e1, 0.0f),
+                                     glm::vec4(e2, 0.0f),
+                                     glm::vec4(lum, float(double(lum) * mean), 0.0f, 0.0f)});
             power.push_back(double(lum) * area);
+            sampled.push_back(double(lum) * mean * area);
         }
     }
-    double total = 0.0;
+    double total = 0.0, sampled_total = 0.0;
     for (double w : power) total += w;
-    if (out.triangles.empty() || !(total > 0.0) || !std::isfinite(total) ||
-        !std::isfinite(float(1.0 / total)) || float(1.0 / total) == 0.0f) {
+    for (double w : sampled) sampled_total += w;
+    const auto representable = [](double w) {
+        return w > 0.0 && std::isfinite(w) && std::isfinite(float(1.0 / w)) &&
+               float(1.0 / w) != 0.0f;
+    };
+    if (out.triangles.empty() || !representable(total) || !representable(sampled_total)) {
         if (!out.triangles.empty())
             out.warnings.push_back("the emissive triangles' total power is not representable; "
                                    "none sampled as lights");
-        return EmissiveLights{{}, 0.0f, 0.0, std::move(out.warnings)};
+        return EmissiveLights{{}, 0.0f, 0.0, 0.0, 0, std::move(out.warnings)};
     }
     double running = 0.0;
     for (std::size_t i = 0; i < out.triangles.size(); ++i) {
-        running += power[i];
+        running += sampled[i];
         EmissiveTriangle& tri = out.triangles[i];
-        tri.p0_cdf.w = i + 1 == out.triangles.size() ? 1.0f : float(running / total);
-        tri.e1_density.w = float(double(tri.e1_density.w) / total);
+        tri.p0_cdf.w = i + 1 == out.triangles.size() ? 1.0f : float(running / sampled_total);
+        // The share of the triangle over its area: the triangle's share / its area.
+        tri.e1_density.w = float(double(tri.emission.y) / sampled_total);
     }
     out.power = total;
+    out.sampled_power = sampled_total;
     out.inv_power = float(1.0 / total);
     return out;
 }

@@ -1,28 +1,41 @@
 #pragma once
 // Emissive triangles as lights for the path tracer (docs/path_tracer.md, next-event
 // estimation): every triangle of a static mesh whose material emits, in world space,
-// drawn in proportion to its power (emitted luminance x area) through a CDF. Pure
-// functions over the Scene, tested without a device; shaders/include/emissive_lights.glsl
-// reads the records.
+// drawn in proportion to its power (emitted luminance x area x its emissive texture's
+// mean over the triangle) through a CDF. Pure functions over the Scene, tested without
+// a device; shaders/include/emissive_lights.glsl reads the records.
 #include <sherpa/scene/scene.h>
 
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
 namespace sherpa::gpu {
 
-// std430, 48 bytes: GPUEmissiveTriangle in emissive_lights.glsl.
+// std430, 64 bytes: GPUEmissiveTriangle in emissive_lights.glsl.
 struct EmissiveTriangle {
     glm::vec4 p0_cdf;     // xyz first corner (world), w: the CDF up to and including it
-    glm::vec4 e1_density; // xyz p1 - p0, w: density per area (luminance / total power)
+    glm::vec4 e1_density; // xyz p1 - p0, w: density per area of drawing a point on it
     glm::vec4 e2;         // xyz p2 - p0
+    // x: the material's emitted luminance (factor x strength; the density per area the
+    // multiple-importance weights use is x / the list's material power, as the closest
+    // hit computes it), y: the estimated emitted luminance over the triangle (x times
+    // the texture's mean there: what a light sample's choice is weighted by), zw: 0.
+    glm::vec4 emission;
 };
-static_assert(sizeof(EmissiveTriangle) == 48);
+static_assert(sizeof(EmissiveTriangle) == 64);
 
-// What the light list holds at most (48 bytes each: 12 MiB). A scene with more emissive
+// A triangle's share of a light sample is its material's luminance x its area x the
+// mean luminance of its emissive texture over it (1 without a texture), plus this
+// fraction of the texture's mean over the whole image: every triangle whose material
+// emits keeps a probability above 0 (an estimate of the mean over a triangle that
+// missed a bright texel near its edge would otherwise make the estimator biased).
+inline constexpr float kEmissiveTextureFloor = 0.01f;
+
+// What the light list holds at most (64 bytes each: 16 MiB). A scene with more emissive
 // triangles has no light list (BSDF sampling finds them, as before) and says so.
 inline constexpr std::size_t kMaxEmissiveTriangles = std::size_t(1) << 18;
 // Emitted luminance (factor x strength) above this is not sampled as a light: the path
@@ -32,14 +45,36 @@ inline constexpr float kMaxEmissiveLuminance = 1e20f;
 
 struct EmissiveLights {
     std::vector<EmissiveTriangle> triangles; // empty: no light sampling
-    float inv_power = 0.0f;            // 1 / (sum of luminance x area); the shader's density scale
-    double power = 0.0;                // sum of luminance x area
+    // 1 / (sum of material luminance x area): the density scale of the multiple-importance
+    // weights (the closest hit knows the material, not the triangle's texture mean).
+    float inv_power = 0.0f;
+    double power = 0.0;                // sum of material luminance x area
+    double sampled_power = 0.0;        // sum of the triangles' shares (texture means included)
+    std::uint32_t textures_read = 0;   // emissive images decoded for the triangles' means
     std::vector<std::string> warnings; // why some or all emitters are not sampled
 };
 
 // The luminance a material emits where its emissive texture is white (the weights of
 // the shaders' luminance()). 0 for materials that do not emit or are unlit.
 float emitted_luminance(const MaterialInstance& m);
+
+// A texture's luminance (linear, from its sRGB texels), box-filtered down to at most
+// kEmissiveGridSize texels a side, for the triangles' means.
+inline constexpr std::uint32_t kEmissiveGridSize = 256;
+struct LuminanceGrid {
+    std::uint32_t width = 0, height = 0;
+    std::vector<float> texels; // rows top to bottom (uv (0, 0) is the first texel)
+    double mean = 0.0;
+};
+LuminanceGrid luminance_grid(std::uint32_t width, std::uint32_t height,
+                             std::span<const std::uint8_t> rgba8_srgb);
+
+// The grid's mean over the triangle with texture coordinates `uv` (after the texture
+// transform): nearest texels at the centroids of 64 equal sub-triangles, wrapped as
+// the sampler wraps.
+double mean_over_triangle(const LuminanceGrid& grid, const glm::vec2 uv[3],
+                          AddressMode wrap_u = AddressMode::Repeat,
+                          AddressMode wrap_v = AddressMode::Repeat);
 
 // The light list of `scene` as its instances are placed (the default pose). A scene
 // that animates (node animation, skins, morphs) gets none: its triangles move, and a

@@ -16,6 +16,7 @@
 #include <sherpa/texture/texture_pipeline.h>
 
 #include <algorithm>
+#include <cstdio>
 
 namespace sherpa::test {
 namespace {
@@ -203,6 +204,9 @@ TEST_F(VariantSwitch, RaysFollowTheSwitchedVariant) {
             const auto raster = image(*switched, info.id, gpu::RendererKind::Raster);
             const auto rays = image(*switched, info.id, gpu::RendererKind::RayTraced);
             const Agreement a = compare(raster, rays, s.width, s.height, 2);
+            std::printf("variant %2d %-15s agree %7.3f%% of %5zu (max diff %3d)\n", step.variant,
+                        std::string(info.name).c_str(), 100.0 * a.fraction(), a.compared,
+                        a.max_difference);
             EXPECT_GT(a.compared, 100u) << info.name;
             EXPECT_GE(a.fraction(), 0.995) << info.name << " max diff " << a.max_difference;
             EXPECT_EQ(a.holes_a, 0u) << info.name << ": holes in the raster";

@@ -1,6 +1,9 @@
 // The viewport's inspection features end to end under Xvfb: the selection
 // highlight, node visibility, the GPU culling path with its CPU/GPU agreement, and framing
 // for the viewport's aspect. (Loading, cancel and texture cache actions: loading_tests.cpp.)
+// The engine's headers first: Qt's QVulkanInstance defines VK_NO_PROTOTYPES.
+#include <sherpa/render/renderer.h>
+
 #include <QMenu>
 #include <QMenuBar>
 #include <QSignalSpy>

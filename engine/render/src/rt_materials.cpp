@@ -21,6 +21,10 @@ SceneAccelerationStructures::follow_materials(const GpuScene& gpu) {
         const std::uint32_t plan = b < blas_.size() ? b : posed_->plan(b - blas_.size()).plan;
         ranges.emplace_back(first_geometry(b), stats_.blas[plan].geometries);
     }
+    // Each mesh's alpha mode and sidedness now, from its draw groups (which a switch
+    // updated); a mesh without one is in no TLAS instance.
+    std::vector<std::pair<AlphaMode, bool>> mode(gpu.meshes().size(), {AlphaMode::Opaque, true});
+    for (const DrawGroup& g : gpu.groups()) mode[g.mesh] = {g.alpha, g.double_sided};
     UploadBatch batch(resources_);
     constexpr VkDeviceSize kWord = offsetof(GPUGeometryInfo, material);
     for (std::uint32_t r = 0; r < record_mesh_.size(); ++r) {
@@ -38,7 +42,7 @@ SceneAccelerationStructures::follow_materials(const GpuScene& gpu) {
         for (std::uint32_t r = first; r < first + count && r < record_mesh_.size(); ++r) {
             // Built opaque, any-hit never runs: right only for opaque double-sided
             // materials (rt_plan.cpp's rule).
-            const auto [alpha, double_sided] = gpu.material_mode(record_material_[r]);
+            const auto [alpha, double_sided] = mode[record_mesh_[r]];
             if (record_opaque_[r] && (alpha != AlphaMode::Opaque || !double_sided)) force[b] = true;
         }
         out.forced_blas += force[b] ? 1 : 0;

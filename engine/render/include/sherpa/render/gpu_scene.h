@@ -164,11 +164,6 @@ public:
     const GpuMemoryReport& memory() const { return memory_; }
     std::uint64_t triangle_count() const { return triangles_; }
     const GpuMaterials& materials() const { return *materials_; }
-    // Material `m`'s alpha mode and sidedness (what draw groups and opaque flags follow).
-    std::pair<AlphaMode, bool> material_mode(std::uint32_t m) const {
-        return m < material_modes_.size() ? material_modes_[m]
-                                          : std::pair{AlphaMode::Opaque, false};
-    }
 
 private:
     friend std::uint64_t update_scene_materials(GpuScene&, std::span<const MaterialInstance>);

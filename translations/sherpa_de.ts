@@ -2291,6 +2291,14 @@ Es ist keine Szene geöffnet.</translation>
         <source>The file has no material variants</source>
         <translation>Die Datei hat keine Materialvarianten</translation>
     </message>
+    <message>
+        <source>; ray tracer: %1 geometry record(s), %2 bytes</source>
+        <translation>; Raytracer: %1 Geometrie-Einträge, %2 Bytes</translation>
+    </message>
+    <message>
+        <source>, TLAS rebuilt: any-hit forced on %1 BLAS built opaque</source>
+        <translation>, TLAS neu aufgebaut: Any-Hit erzwungen für %1 opak gebaute BLAS</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::VertexTableModel</name>

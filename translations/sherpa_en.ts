@@ -2291,6 +2291,14 @@ No scene is open.</translation>
         <source>The file has no material variants</source>
         <translation>The file has no material variants</translation>
     </message>
+    <message>
+        <source>; ray tracer: %1 geometry record(s), %2 bytes</source>
+        <translation>; ray tracer: %1 geometry record(s), %2 bytes</translation>
+    </message>
+    <message>
+        <source>, TLAS rebuilt: any-hit forced on %1 BLAS built opaque</source>
+        <translation>, TLAS rebuilt: any-hit forced on %1 BLAS built opaque</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::VertexTableModel</name>

@@ -2291,6 +2291,14 @@ No scene is open.</source>
         <source>The file has no material variants</source>
         <translation>该文件没有材质变体</translation>
     </message>
+    <message>
+        <source>; ray tracer: %1 geometry record(s), %2 bytes</source>
+        <translation>；光线追踪器：%1 条几何记录，%2 字节</translation>
+    </message>
+    <message>
+        <source>, TLAS rebuilt: any-hit forced on %1 BLAS built opaque</source>
+        <translation>，TLAS 已重建：对 %1 个按不透明构建的 BLAS 强制执行 any-hit</translation>
+    </message>
 </context>
 <context>
     <name>sherpa::editor::VertexTableModel</name>

@@ -61,14 +61,23 @@ void VariantMenu::choose(int variant) {
 }
 
 QString VariantMenu::describe(const gpu::VariantSwitch& s, const QString& name) {
+    // With ray tracing: the geometry records that followed, and any TLAS rebuild.
+    QString rays;
+    if (s.rt_records > 0)
+        rays = tr("; ray tracer: %1 geometry record(s), %2 bytes")
+                   .arg(s.rt_records)
+                   .arg(qulonglong(s.rt_gpu_bytes));
+    if (s.tlas_rebuilt)
+        rays += tr(", TLAS rebuilt: any-hit forced on %1 BLAS built opaque").arg(s.rt_forced_blas);
     return tr("Material variant: %1 (%2 primitive(s), %3 draw(s) changed material; %4 GPU bytes "
               "uploaded%5; nothing reloaded).")
         .arg(name)
         .arg(s.meshes)
         .arg(s.instances)
         .arg(qulonglong(s.gpu_bytes))
-        .arg(s.culling_rebuilt ? tr(", culling lists rebuilt for a changed alpha mode")
-                               : QString());
+        .arg((s.culling_rebuilt ? tr(", culling lists rebuilt for a changed alpha mode")
+                                : QString()) +
+             rays);
 }
 
 void VariantMenu::retranslate() {

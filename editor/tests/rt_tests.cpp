@@ -6,6 +6,7 @@
 #include <sherpa/render/comparison.h>
 
 #include <QHeaderView>
+#include <QMenuBar>
 #include <QSignalSpy>
 #include <QTableView>
 #include <QVulkanInstance>
@@ -70,6 +71,7 @@ private Q_SLOTS:
     void rayTracedModeDrawsRtFrames();
     void refusedViewGoesBackToRaster();
     void litIsPathTracedAndAccumulatesAtRest();
+    void variantMenuSwitchesTheRayTracedFrame();
     void splitShowsALeftAndBRight();
     void draggingMovesTheDivider();
     void differenceOfASceneWithItselfIsZero();
@@ -236,6 +238,46 @@ void RtTests::litIsPathTracedAndAccumulatesAtRest() {
         w.frames().lastReport().path_traced && w.frames().lastReport().path_samples >= 6,
         qPrintable(QString::number(w.frames().lastReport().path_samples)), 90000);
     QTRY_VERIFY_WITH_TIMEOUT(w.frames().lastReport().path_error >= 0.0, 60000);
+    checkValidation();
+}
+
+// KHR_materials_variants in ray-traced mode: the Variants menu switches what the rays
+// draw (not refused, not reloaded), the switched rays show what the raster shows, and
+// the defaults bring the first image back.
+void RtTests::variantMenuSwitchesTheRayTracedFrame() {
+    MainWindow& w = *window_;
+    QVERIFY(test::load(w, QString::fromUtf8(SHERPA_TEST_DATA_DIR) +
+                              QStringLiteral("/material_sweeps/variants.gltf")));
+    w.selection().pickAt(QPointF(0.999, 0.999)); // no selection highlight on the raster side
+    QVERIFY(w.views().setDebugView(QStringLiteral("base-color"), false));
+    w.comparison().controls().setMode(ViewportMode::RayTraced);
+    const QImage before = test::viewport_shot(w);
+    QMenu* variants = nullptr;
+    for (QAction* top : w.menuBar()->actions())
+        if (top->menu() && top->menu()->title() == QStringLiteral("Va&riants"))
+            variants = top->menu();
+    QVERIFY(variants);
+    const auto* session = w.context().session();
+    variants->actions().at(2)->trigger(); // Warm (after the separator)
+    QTRY_VERIFY_WITH_TIMEOUT(
+        w.docks().log->text().contains(QStringLiteral("Material variant: Warm")), 30000);
+    QCOMPARE(w.context().session(), session); // not reloaded
+    const QImage warm = test::viewport_shot(w);
+    QCOMPARE(w.comparison().controls().state().mode, ViewportMode::RayTraced); // not refused
+    QVERIFY(w.frames().lastReport().refused.isEmpty());
+    const int changed = differing(before, warm, 0, warm.width());
+    QVERIFY2(changed > 200, qPrintable(QStringLiteral("%1 pixels changed").arg(changed)));
+    w.comparison().controls().setMode(ViewportMode::Raster);
+    const QImage raster = test::viewport_shot(w);
+    const int diff = differing(raster, warm, 0, warm.width());
+    QVERIFY2(diff < covered(warm) / 20,
+             qPrintable(QStringLiteral("%1 of %2").arg(diff).arg(covered(warm))));
+    w.comparison().controls().setMode(ViewportMode::RayTraced);
+    variants->actions().at(0)->trigger(); // back to the defaults
+    QTRY_VERIFY_WITH_TIMEOUT(
+        w.docks().log->text().contains(QStringLiteral("Material variant: default materials")),
+        30000);
+    QCOMPARE(differing(before, test::viewport_shot(w), 0, before.width()), 0);
     checkValidation();
 }
 

@@ -4,7 +4,11 @@
 pointer.gltf (tools/animation_pointer/make_pointer.py) at chosen times, every animated
 property `sherpa-cli info --time T --json` reports must equal the spec's value; the
 refused channels must be warnings naming their channel's JSON pointer; a render at two
-times must show the animated base colour and the node visibility.
+times must show the animated base colour and the node visibility. The same for
+extensions.gltf (the ratified material extensions' pointers; its animation's
+extras.valid_channels says how many channels come before the refused ones), whose frames
+at two times must equal those of the file with the spec's values baked in as static
+properties (the GPU records themselves: animation_pointer_tests).
 Usage: animation_pointer_oracle.py SHERPA_CLI FILE OUT_DIR"""
 import base64
 import json
@@ -53,11 +57,12 @@ def sample(s, t, width, step=False):
 
 
 anim = doc['animations'][0]
+VALID = anim.get('extras', {}).get('valid_channels', 16)
 expected_pointers = {}
 failures = []
 for c, ch in enumerate(anim['channels']):
     p = ch['target'].get('extensions', {}).get('KHR_animation_pointer', {}).get('pointer')
-    if c < 16 and not p.endswith('/translation'):
+    if c < VALID and not p.endswith('/translation'):
         expected_pointers[p] = c
 
 
@@ -91,28 +96,16 @@ r = subprocess.run([cli, 'validate', path, '--json'], capture_output=True, text=
 report = json.loads(r.stdout)
 messages = (report['files'][0] if 'files' in report else report)['issues']['messages']
 pointers = {m.get('pointer') for m in messages}
-for c in range(16, len(anim['channels'])):
+for c in range(VALID, len(anim['channels'])):
     if f'/animations/0/channels/{c}' not in pointers and \
        not any(str(p).startswith(f'/animations/0/channels/{c}/') for p in pointers):
         failures.append(f'channel {c} ({anim["channels"][c]["target"]}) was not warned about')
-for c in range(16):
+for c in range(VALID):
     if any(str(p) == f'/animations/0/channels/{c}' for p in pointers):
         failures.append(f'valid channel {c} was warned about')
 
-# The frame: the unlit sphere (x = -1.1) shows the animated base colour, the sphere at
-# the origin blinks (hidden between 1 and 1.5 s).
-def render(t):
-    png = os.path.join(out_dir, f'pointer_t{t}.png')
-    r = subprocess.run([cli, 'render', path, '-o', png, '--time', str(t), '--width', '160',
-                        '--height', '120', '--camera', 'eye=0,0,5:target=0,0,0:fov=45',
-                        '--environment', 'none', '--sun', 'off', '--background', '1,0,1',
-                        '--tone-map', 'linear', '--validation'], capture_output=True, text=True)
-    if r.returncode != 0:
-        sys.exit(f'render --time {t} failed: {r.stderr}')
-    return png
-
-
-def pixel(png, x, y):
+def decode(png):
+    """The PNG's rows of bytes and bytes per pixel (8-bit RGB or RGBA)."""
     import zlib
     data = open(png, 'rb').read()
     w, h, depth, ctype = struct.unpack('>IIBB', data[16:26])
@@ -139,7 +132,79 @@ def pixel(png, x, y):
                 line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
         rows.append(line)
         prev = line
+    return rows, bpp
+
+
+def pixel(png, x, y):
+    rows, bpp = decode(png)
     return tuple(rows[y][x * bpp:x * bpp + 3])
+
+
+
+def render_file(gltf, png, *args):
+    r = subprocess.run([cli, 'render', gltf, '-o', png, '--width', '160', '--height', '120',
+                        '--camera', 'eye=0,0,4:target=0,0,0:fov=45', '--validation', *args],
+                       capture_output=True, text=True)
+    if r.returncode != 0:
+        sys.exit(f'render {gltf} {args} failed: {r.stderr}')
+    return png
+
+
+def set_pointer(target, pointer, value):
+    """Writes `value` at JSON pointer `pointer` of `target` (scalars unwrapped)."""
+    keys = [int(k) if k.isdigit() else k for k in pointer.strip('/').split('/')]
+    for k in keys[:-1]:
+        target = target[k]
+    target[keys[-1]] = value[0] if len(value) == 1 else value
+
+
+if 'valid_channels' in anim.get('extras', {}):
+    # The animated frame against the same file with the spec's values at that time
+    # written in as static properties (no animation): the importer's static path, not
+    # the animation's, puts them on the GPU. Same lit image within one 8-bit step.
+    import copy
+    for t in (0.5, 1.5):
+        baked = copy.deepcopy(doc)
+        for pointer, c in expected_pointers.items():
+            s_ = anim['samplers'][anim['channels'][c]['sampler']]
+            set_pointer(baked, pointer, sample(s_, t, WIDTH[doc['accessors'][s_['output']]['type']]))
+        del baked['animations']
+        baked['extensionsUsed'].remove('KHR_animation_pointer')
+        baked_path = os.path.join(out_dir, f'extensions_baked_t{t}.gltf')
+        json.dump(baked, open(baked_path, 'w'))
+        animated = render_file(path, os.path.join(out_dir, f'extensions_t{t}.png'), '--time', str(t))
+        static = render_file(baked_path, os.path.join(out_dir, f'extensions_baked_t{t}.png'))
+        (ra, bpp), (rb, _) = decode(animated), decode(static)
+        worst = max(abs(x - y) for la, lb in zip(ra, rb) for x, y in zip(la, lb))
+        differ = sum(1 for la, lb in zip(ra, rb) for i in range(0, len(la), bpp)
+                     if la[i:i + 3] != lb[i:i + 3])
+        print(f'render t={t}: animated vs baked: {differ} pixels differ, largest step {worst}')
+        if worst > 1:
+            failures.append(f'render t={t}: animated and baked frames differ by {worst} steps')
+    # The animated frames must differ from each other: the values reach the image.
+    a05, a15 = (decode(os.path.join(out_dir, f'extensions_t{t}.png'))[0] for t in (0.5, 1.5))
+    moved = sum(1 for la, lb in zip(a05, a15) for x, y in zip(la, lb) if abs(x - y) > 8)
+    print(f'frames at 0.5 s and 1.5 s: {moved} channel values differ by more than 8 steps')
+    if moved < 100:
+        failures.append('the frames at 0.5 s and 1.5 s barely differ')
+
+if 'valid_channels' in anim.get('extras', {}):  # extensions.gltf: done
+    for f in failures:
+        print('FAIL', f)
+    sys.exit(1 if failures else 0)
+
+
+# The frame: the unlit sphere (x = -1.1) shows the animated base colour, the sphere at
+# the origin blinks (hidden between 1 and 1.5 s).
+def render(t):
+    png = os.path.join(out_dir, f'pointer_t{t}.png')
+    r = subprocess.run([cli, 'render', path, '-o', png, '--time', str(t), '--width', '160',
+                        '--height', '120', '--camera', 'eye=0,0,5:target=0,0,0:fov=45',
+                        '--environment', 'none', '--sun', 'off', '--background', '1,0,1',
+                        '--tone-map', 'linear', '--validation'], capture_output=True, text=True)
+    if r.returncode != 0:
+        sys.exit(f'render --time {t} failed: {r.stderr}')
+    return png
 
 
 def srgb(c):

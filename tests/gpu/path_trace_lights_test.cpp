@@ -174,6 +174,33 @@ TEST(EmissiveLightsCpu, DamagedHelmetWeighsTrianglesByItsEmissiveTexture) {
         lights.triangles.size(), lights.sampled_power, lights.power, least, most, ms);
 }
 
+// Material variants that change what emits: no list (one made for the loaded variant
+// would bias the others after a switch); variants that keep every emitter's luminance
+// keep it.
+TEST(EmissiveLightsCpu, VariantsThatChangeEmissionGetNoList) {
+    auto scene = load_file(write_temp("pt_lights_variants.gltf", lit_floor_gltf("[1,1,1]", "10")));
+    ASSERT_TRUE(scene);
+    const auto emitter =
+        std::find_if(scene->instances.begin(), scene->instances.end(), [&](const MeshInstance& i) {
+            return gpu::emitted_luminance(scene->materials[i.material_id]) > 0.0f;
+        });
+    ASSERT_NE(emitter, scene->instances.end());
+    MaterialInstance same = scene->materials[emitter->material_id];
+    MaterialInstance dark = same;
+    dark.emissive_factor = glm::vec3(0.0f);
+    scene->materials.push_back(same);
+    scene->materials.push_back(dark);
+    const auto n = static_cast<std::int32_t>(scene->materials.size());
+    scene->variants.names = {"same", "dark"};
+    scene->variants.meshes = {
+        VariantMeshMapping{emitter->mesh_id, emitter->material_id, {n - 2, -1}}};
+    EXPECT_EQ(gpu::emissive_lights(*scene).triangles.size(), 2u);
+    scene->variants.meshes[0].materials[1] = n - 1;
+    const gpu::EmissiveLights none = gpu::emissive_lights(*scene);
+    EXPECT_TRUE(none.triangles.empty());
+    EXPECT_TRUE(mentions(none.warnings, "a material variant changes which surfaces emit"));
+}
+
 class PathTraceLights : public GpuTest {
 protected:
     static gpu::Renderer& rt() { return path_trace_renderer(); }

@@ -83,6 +83,9 @@ void SceneAccelerationStructures::build_blas(const Scene& scene, const GpuScene&
             r.material = mesh.material;
             r.flags = mesh.flags;
             records.push_back(r);
+            record_mesh_.push_back(g.mesh);
+            record_material_.push_back(mesh.material);
+            record_opaque_.push_back(g.opaque);
             s.opaque_geometries += g.opaque ? 1 : 0;
         }
         stats_.blas.push_back(std::move(s));
@@ -103,6 +106,18 @@ void SceneAccelerationStructures::build_blas(const Scene& scene, const GpuScene&
         std::vector<std::uint32_t> first_static;
         for (const BlasStats& s : stats_.blas) first_static.push_back(s.first_geometry);
         posed_->append_records(records, first_static);
+        // The posed copies keep their static record's mesh, material and opacity.
+        for (std::uint32_t j = 0; j < posed_->size(); ++j) {
+            const std::uint32_t from = first_static[posed_->plan(j).plan];
+            const std::uint32_t count = stats_.blas[posed_->plan(j).plan].geometries;
+            for (std::uint32_t k = 0; k < count; ++k) {
+                record_mesh_.push_back(record_mesh_[from + k]);
+                record_material_.push_back(record_material_[from + k]);
+                record_opaque_.push_back(record_opaque_[from + k]);
+            }
+        }
+        if (record_mesh_.size() != records.size())
+            throw GpuError("ray tracing: posed geometry records do not copy their BLAS's");
         stats_.posed = posed_->stats();
     }
     const VkDeviceSize record_bytes = records.size() * sizeof(GPUGeometryInfo);

@@ -120,6 +120,18 @@ EmissiveLights emissive_lights(const Scene& scene, std::size_t max_triangles) {
                                "BSDF sampling only (no light list)");
         return out;
     }
+    // A material variant switched after loading may change what emits: a list of the
+    // loaded variant would bias the others, so BSDF sampling alone finds them.
+    for (const VariantMeshMapping& v : scene.variants.meshes)
+        for (std::int32_t m : v.materials)
+            if (m >= 0 && std::size_t(m) < luminance.size() &&
+                v.default_material < luminance.size() &&
+                luminance[std::size_t(m)] != luminance[v.default_material]) {
+                out.warnings.push_back("a material variant changes which surfaces emit: its "
+                                       "emissive triangles are found by BSDF sampling only (no "
+                                       "light list)");
+                return out;
+            }
     // Per emitting material with an emissive texture: its image's luminance grid (decoded
     // once per image, shared by the materials that use it) and its sampler's wrap modes.
     struct EmissiveTexture {

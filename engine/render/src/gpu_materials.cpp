@@ -78,8 +78,10 @@ void GpuMaterials::upload(const Scene& scene) {
     batch.upload_buffer(extras_, 0, extras_data_.data(), extra_bytes);
     // Only where some material uses a drawn extension (the binding is partially bound).
     if (!extensions_.words.empty()) {
+        // Copied out too: the material readback reads a material's blocks.
         extension_buffer_ = resources_.create_buffer(
-            {extensions_.bytes(), kStorage, MemoryUsage::DeviceLocal, "material extensions"});
+            {extensions_.bytes(), kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+             MemoryUsage::DeviceLocal, "material extensions"});
         batch.upload_buffer(extension_buffer_, 0, extensions_.words.data(), extensions_.bytes());
     }
     batch.submit_and_wait();

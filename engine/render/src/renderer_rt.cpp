@@ -64,10 +64,6 @@ void RayTracedFrames::check_rt(const FrameRequest& settings) const {
         throw GpuError("the ray tracer does not draw view '" +
                        std::string(to_string(settings.view)) + "' (it draws " +
                        ray_traced_view_names() + ")");
-    if (state.variant != state.loaded_variant)
-        throw GpuError("the ray tracer draws the materials the scene was loaded with: a material "
-                       "variant switched after loading reaches the raster only (load the scene "
-                       "with the variant to trace it)");
     if (settings.overlays != 0 || settings.highlight_instance ||
         !settings.highlight_outline.empty())
         throw GpuError("the ray tracer draws no overlays or highlights (raster only)");

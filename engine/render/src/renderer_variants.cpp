@@ -1,7 +1,9 @@
 // KHR_materials_variants inside the renderer: a switch gives the mapped meshes their
 // variant's material through switch_mesh_materials() (draw groups, instance material
-// words); an alpha-mode or sidedness change rebuilds the culling's per-group lists,
-// and shadows are redrawn (masked casters read the material). Nothing is reloaded.
+// words, the ray tracer's geometry records); an alpha-mode or sidedness change rebuilds
+// the culling's per-group lists (and, where a geometry built opaque now needs any-hit,
+// the TLAS with that instance flag), and shadows are redrawn (masked casters read the
+// material). Nothing is reloaded and no BLAS is rebuilt.
 #include "frame_recorder.h"
 #include "scene_changes.h"
 
@@ -34,6 +36,18 @@ VariantSwitch SceneChanges::set_variant(std::int32_t variant) {
         culling.set_hidden(state.hidden_instances(), *scene);
     }
     shadows_.invalidate();
+    if (acceleration) {
+        // The ray tracer's geometry records follow (retire_culling() waited for the
+        // frames in flight, so no ray-traced frame reads them).
+        const auto rt = acceleration->follow_materials(*state.gpu);
+        out.rt_records = rt.records;
+        out.rt_gpu_bytes = rt.gpu_bytes;
+        out.rt_forced_blas = rt.forced_blas;
+        out.tlas_rebuilt = rt.tlas_rebuilt;
+        // The rebuilt TLAS holds the loaded transforms: the frame's pose goes in again.
+        if (rt.tlas_rebuilt) state.rt_pose_generation = 0;
+    }
+    ++state.material_generation; // the path tracer's accumulation starts over
     state.variant = variant;
     out.meshes = changed.meshes;
     out.instances = changed.instances;

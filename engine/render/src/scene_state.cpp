@@ -49,7 +49,7 @@ void SceneState::load(const Scene& source, std::unique_ptr<GpuScene> gpu_scene,
     // The TLAS was built with RendererOptions::acceleration's mask; ours replaces it.
     tlas_visibility = options.acceleration.hidden_nodes.empty();
     variants = source.variants;
-    loaded_variant = variant = source.variants.active;
+    variant = source.variants.active;
     load_animated(source);
 }
 

@@ -79,11 +79,10 @@ public:
     // Counts material uploads after the load (animated materials): the path tracer's
     // accumulation starts over.
     std::uint64_t material_generation = 0;
-    // KHR_materials_variants: the loaded scene's mappings, the variant it was loaded with
-    // (the acceleration structures' materials) and the one the raster draws now
-    // (SceneChanges::set_variant()).
+    // KHR_materials_variants: the loaded scene's mappings and the variant both renderers
+    // draw now (SceneChanges::set_variant()).
     MaterialVariants variants;
-    std::int32_t loaded_variant = -1, variant = -1;
+    std::int32_t variant = -1;
     // The split-sum table every environment reads (made with the first, freed with the
     // last); before `environment`, which reads it.
     std::unique_ptr<BrdfLut> brdf_lut;

@@ -110,6 +110,9 @@ void SceneAccelerationStructures::build_tlas(std::span<const glm::mat4> node_wor
         // Facing is decided in the hit shaders from the object-space winding (culling
         // is per material, in rt.rahit, as the rasterizer's), so the hardware culls nothing.
         inst.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
+        // A material switch made a geometry built opaque need any-hit (follow_materials()).
+        if (p.blas < force_no_opaque_.size() && force_no_opaque_[p.blas])
+            inst.flags |= VK_GEOMETRY_INSTANCE_FORCE_NO_OPAQUE_BIT_KHR;
         inst.accelerationStructureReference = blas_address(p.blas);
         std::memcpy(out + i, &inst, sizeof(inst));
     }

@@ -1,6 +1,8 @@
 // KHR_animation_pointer targets: JSON pointers resolved against the scene once at
 // import, values sampled like node channels and written into copies of the scene's
 // materials, lights, cameras and node visibility.
+#include "animation_pointer_material.h"
+
 #include <sherpa/scene/animation.h>
 #include <sherpa/scene/animation_pointer.h>
 #include <sherpa/scene/scene.h>
@@ -16,37 +18,6 @@ struct Named {
     std::string_view path; // after the object index
     PointerProperty property;
     const char* extension; // the extension the object must use, or null
-};
-
-constexpr Named kMaterial[] = {
-    {"pbrMetallicRoughness/baseColorFactor", PointerProperty::BaseColorFactor, nullptr},
-    {"pbrMetallicRoughness/metallicFactor", PointerProperty::MetallicFactor, nullptr},
-    {"pbrMetallicRoughness/roughnessFactor", PointerProperty::RoughnessFactor, nullptr},
-    {"emissiveFactor", PointerProperty::EmissiveFactor, nullptr},
-    {"alphaCutoff", PointerProperty::AlphaCutoff, nullptr},
-    {"normalTexture/scale", PointerProperty::NormalScale, nullptr},
-    {"occlusionTexture/strength", PointerProperty::OcclusionStrength, nullptr},
-    {"extensions/KHR_materials_emissive_strength/emissiveStrength",
-     PointerProperty::EmissiveStrength, "KHR_materials_emissive_strength"},
-    {"extensions/KHR_materials_ior/ior", PointerProperty::Ior, "KHR_materials_ior"},
-    {"extensions/KHR_materials_specular/specularFactor", PointerProperty::SpecularFactor,
-     "KHR_materials_specular"},
-    {"extensions/KHR_materials_specular/specularColorFactor", PointerProperty::SpecularColorFactor,
-     "KHR_materials_specular"},
-};
-
-constexpr std::pair<std::string_view, PointerTextureSlot> kSlots[] = {
-    {"pbrMetallicRoughness/baseColorTexture", PointerTextureSlot::BaseColor},
-    {"pbrMetallicRoughness/metallicRoughnessTexture", PointerTextureSlot::MetallicRoughness},
-    {"normalTexture", PointerTextureSlot::Normal},
-    {"occlusionTexture", PointerTextureSlot::Occlusion},
-    {"emissiveTexture", PointerTextureSlot::Emissive},
-};
-
-constexpr std::pair<std::string_view, PointerProperty> kTransform[] = {
-    {"offset", PointerProperty::TextureOffset},
-    {"rotation", PointerProperty::TextureRotation},
-    {"scale", PointerProperty::TextureScale},
 };
 
 constexpr Named kLight[] = {
@@ -81,72 +52,54 @@ bool split_index(std::string_view pointer, std::string_view prefix, std::uint32_
     return true;
 }
 
-TextureSlot* slot_of(MaterialInstance& m, PointerTextureSlot s) {
-    switch (s) {
-    case PointerTextureSlot::BaseColor:
-        return &m.base_color;
-    case PointerTextureSlot::MetallicRoughness:
-        return &m.metallic_roughness;
-    case PointerTextureSlot::Normal:
-        return &m.normal;
-    case PointerTextureSlot::Occlusion:
-        return &m.occlusion;
-    case PointerTextureSlot::Emissive:
-        return &m.emissive;
-    }
-    return &m.base_color;
-}
-
-const TextureSlot* slot_of(const MaterialInstance& m, PointerTextureSlot s) {
-    return slot_of(const_cast<MaterialInstance&>(m), s);
-}
-
-std::string resolve_material(const Scene& scene, std::uint32_t index, std::string_view rest,
-                             AnimatedTarget& out) {
-    const auto it = std::find_if(
-        scene.materials.begin(), scene.materials.end(),
-        [&](const MaterialInstance& m) { return m.gltf_index == std::int32_t(index); });
-    if (it == scene.materials.end()) return "material " + std::to_string(index) + " does not exist";
-    out.object = index;
-    for (const Named& n : kMaterial)
-        if (rest == n.path) {
-            if (n.extension && std::find(it->extensions.begin(), it->extensions.end(),
-                                         n.extension) == it->extensions.end())
-                return "materials[" + std::to_string(index) + "] does not use " + n.extension;
-            out.property = n.property;
-            return {};
-        }
-    for (const auto& [path, slot] : kSlots) {
-        constexpr std::string_view kExt = "/extensions/KHR_texture_transform/";
-        if (rest.substr(0, path.size()) != path || rest.substr(path.size(), kExt.size()) != kExt)
-            continue;
-        const std::string_view field = rest.substr(path.size() + kExt.size());
-        for (const auto& [name, property] : kTransform)
-            if (field == name) {
-                if (!slot_of(*it, slot)->present())
-                    return "materials[" + std::to_string(index) + "] has no " + std::string(path);
-                out.property = property;
-                out.slot = slot;
-                return {};
-            }
-    }
-    return "not an animatable material property (supported: the core factors, alphaCutoff, "
-           "emissive_strength, ior, specular and KHR_texture_transform)";
-}
-
 } // namespace
 
 std::string_view to_string(PointerProperty p) {
-    static constexpr std::array<std::string_view, 26> kNames{
-        "baseColorFactor",   "emissiveFactor",      "metallicFactor",
-        "roughnessFactor",   "alphaCutoff",         "normalScale",
-        "occlusionStrength", "emissiveStrength",    "ior",
-        "specularFactor",    "specularColorFactor", "textureOffset",
-        "textureRotation",   "textureScale",        "lightColor",
-        "lightIntensity",    "lightRange",          "spotInnerCone",
-        "spotOuterCone",     "cameraYfov",          "cameraAspect",
-        "cameraZnear",       "cameraZfar",          "cameraXmag",
-        "cameraYmag",        "nodeVisible"};
+    static constexpr std::string_view kNames[] = {"baseColorFactor",
+                                                  "emissiveFactor",
+                                                  "metallicFactor",
+                                                  "roughnessFactor",
+                                                  "alphaCutoff",
+                                                  "normalScale",
+                                                  "occlusionStrength",
+                                                  "emissiveStrength",
+                                                  "ior",
+                                                  "specularFactor",
+                                                  "specularColorFactor",
+                                                  "clearcoatFactor",
+                                                  "clearcoatRoughnessFactor",
+                                                  "clearcoatNormalScale",
+                                                  "transmissionFactor",
+                                                  "thicknessFactor",
+                                                  "attenuationDistance",
+                                                  "attenuationColor",
+                                                  "sheenColorFactor",
+                                                  "sheenRoughnessFactor",
+                                                  "iridescenceFactor",
+                                                  "iridescenceIor",
+                                                  "iridescenceThicknessMinimum",
+                                                  "iridescenceThicknessMaximum",
+                                                  "anisotropyStrength",
+                                                  "anisotropyRotation",
+                                                  "dispersion",
+                                                  "diffuseTransmissionFactor",
+                                                  "diffuseTransmissionColorFactor",
+                                                  "textureOffset",
+                                                  "textureRotation",
+                                                  "textureScale",
+                                                  "lightColor",
+                                                  "lightIntensity",
+                                                  "lightRange",
+                                                  "spotInnerCone",
+                                                  "spotOuterCone",
+                                                  "cameraYfov",
+                                                  "cameraAspect",
+                                                  "cameraZnear",
+                                                  "cameraZfar",
+                                                  "cameraXmag",
+                                                  "cameraYmag",
+                                                  "nodeVisible"};
+    static_assert(std::size(kNames) == std::size_t(PointerProperty::NodeVisible) + 1);
     return kNames[static_cast<std::size_t>(p)];
 }
 
@@ -156,6 +109,9 @@ std::uint32_t pointer_width(PointerProperty p) {
         return 4;
     case PointerProperty::EmissiveFactor:
     case PointerProperty::SpecularColorFactor:
+    case PointerProperty::AttenuationColor:
+    case PointerProperty::SheenColorFactor:
+    case PointerProperty::DiffuseTransmissionColorFactor:
     case PointerProperty::LightColor:
         return 3;
     case PointerProperty::TextureOffset:
@@ -171,8 +127,14 @@ std::string resolve_animation_pointer(const Scene& scene, std::string_view point
     std::uint32_t index = 0;
     std::string_view rest;
     out = {};
-    if (split_index(pointer, "/materials/", index, rest))
-        return resolve_material(scene, index, rest, out);
+    if (split_index(pointer, "/materials/", index, rest)) {
+        const auto it = std::find_if(
+            scene.materials.begin(), scene.materials.end(),
+            [&](const MaterialInstance& m) { return m.gltf_index == std::int32_t(index); });
+        if (it == scene.materials.end())
+            return "material " + std::to_string(index) + " does not exist";
+        return resolve_material_pointer(*it, index, rest, out);
+    }
     if (split_index(pointer, "/extensions/KHR_lights_punctual/lights/", index, rest)) {
         if (index >= scene.lights.size())
             return "light " + std::to_string(index) + " does not exist";
@@ -217,16 +179,8 @@ std::string resolve_animation_pointer(const Scene& scene, std::string_view point
 
 std::string pointer_of(const AnimatedTarget& t) {
     const std::string i = std::to_string(t.object);
-    if (t.property >= PointerProperty::TextureOffset &&
-        t.property <= PointerProperty::TextureScale) {
-        const std::string_view field = t.property == PointerProperty::TextureOffset     ? "offset"
-                                       : t.property == PointerProperty::TextureRotation ? "rotation"
-                                                                                        : "scale";
-        return "/materials/" + i + "/" + std::string(kSlots[std::size_t(t.slot)].first) +
-               "/extensions/KHR_texture_transform/" + std::string(field);
-    }
-    for (const Named& n : kMaterial)
-        if (n.property == t.property) return "/materials/" + i + "/" + std::string(n.path);
+    if (const std::string path = material_pointer_path(t); !path.empty())
+        return "/materials/" + i + "/" + path;
     for (const Named& n : kLight)
         if (n.property == t.property)
             return "/extensions/KHR_lights_punctual/lights/" + i + "/" + std::string(n.path);
@@ -313,57 +267,7 @@ std::vector<std::uint32_t> apply_animated_properties(std::span<const AnimatedPro
         default:
             break;
         }
-        if (o >= materials.size()) continue;
-        MaterialInstance& m = materials[o];
-        switch (p.target.property) {
-        case PointerProperty::BaseColorFactor:
-            m.base_color_factor = {v[0], v[1], v[2], v[3]};
-            break;
-        case PointerProperty::EmissiveFactor:
-            m.emissive_factor = {v[0], v[1], v[2]};
-            break;
-        case PointerProperty::MetallicFactor:
-            m.metallic_factor = v[0];
-            break;
-        case PointerProperty::RoughnessFactor:
-            m.roughness_factor = v[0];
-            break;
-        case PointerProperty::AlphaCutoff:
-            m.alpha_cutoff = v[0];
-            break;
-        case PointerProperty::NormalScale:
-            m.normal_scale = v[0];
-            break;
-        case PointerProperty::OcclusionStrength:
-            m.occlusion_strength = v[0];
-            break;
-        case PointerProperty::EmissiveStrength:
-            m.emissive_strength = v[0];
-            break;
-        case PointerProperty::Ior:
-            if (m.ior) m.ior = v[0];
-            break;
-        case PointerProperty::SpecularFactor:
-            if (m.specular) m.specular->specular_factor = v[0];
-            break;
-        case PointerProperty::SpecularColorFactor:
-            if (m.specular) m.specular->specular_color_factor = {v[0], v[1], v[2]};
-            break;
-        case PointerProperty::TextureOffset:
-            slot_of(m, p.target.slot)->transform.offset = {v[0], v[1]};
-            slot_of(m, p.target.slot)->transform.present = true;
-            break;
-        case PointerProperty::TextureRotation:
-            slot_of(m, p.target.slot)->transform.rotation = v[0];
-            slot_of(m, p.target.slot)->transform.present = true;
-            break;
-        case PointerProperty::TextureScale:
-            slot_of(m, p.target.slot)->transform.scale = {v[0], v[1]};
-            slot_of(m, p.target.slot)->transform.present = true;
-            break;
-        default:
-            continue;
-        }
+        if (o >= materials.size() || !apply_material_property(p, materials[o])) continue;
         changed.push_back(o);
     }
     std::sort(changed.begin(), changed.end());

@@ -66,6 +66,23 @@ public:
     // nodes as last given). Waits; no frame may be using the structures.
     void update_pose(const PoseFrame& frame);
 
+    // What follow_materials() changed.
+    struct MaterialFollow {
+        std::uint32_t records = 0;     // geometry records whose material word was rewritten
+        std::uint64_t gpu_bytes = 0;   // uploaded: those material words
+        std::uint32_t forced_blas = 0; // BLAS built opaque that now need any-hit
+        bool tlas_rebuilt = false;     // at the loaded transforms: the caller poses it again
+    };
+    // After meshes took other materials (KHR_materials_variants): each geometry
+    // record's material word follows its mesh's in `gpu`, so hit shaders shade the new
+    // material; no BLAS is rebuilt. A geometry built with VK_GEOMETRY_OPAQUE_BIT whose
+    // new material is masked, blended or single-sided needs any-hit: the TLAS instances
+    // of its BLAS get VK_GEOMETRY_INSTANCE_FORCE_NO_OPAQUE_BIT_KHR (the other
+    // geometries of those instances then run an any-hit that accepts them) and the TLAS
+    // is rebuilt; the flag goes when no geometry needs it. Waits; no frame may be using
+    // the structures.
+    MaterialFollow follow_materials(const GpuScene& gpu);
+
 private:
     void build_blas(const Scene& scene, const GpuScene& gpu, const AccelerationSettings& s);
     // The TLAS over candidates_ (hidden_ excluded) at `node_world` (empty: as loaded).
@@ -82,6 +99,10 @@ private:
     std::vector<bool> hidden_;
     AccelerationStructure tlas_;
     std::vector<std::uint32_t> tlas_blas_; // BLAS per TLAS instance, as last built
+    // Per geometry record: its engine mesh, whether it was built opaque, its material now.
+    std::vector<std::uint32_t> record_mesh_, record_material_;
+    std::vector<bool> record_opaque_;
+    std::vector<bool> force_no_opaque_; // per BLAS (static, then posed): follow_materials()
     BufferHandle records_, instances_;
     AccelerationStats stats_;
 };

@@ -5,6 +5,8 @@
 #include <optional>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include <sherpa/scene/material.h>
 
 namespace sherpa {
@@ -18,6 +20,11 @@ class Renderer;
 struct MaterialReadback {
     GPUMaterialData record{};
     std::vector<int> bindless_to_texture; // bindless slot -> scene texture, -1: none
+    // The material's words of the extension buffer as the GPU holds them: its
+    // GPUExtensionIndex, then its blocks (word offsets in the index are from the
+    // buffer's start: subtract extension_first). Empty where it has none.
+    std::vector<glm::uvec4> extension_words;
+    std::uint32_t extension_first = 0;
 };
 
 // Material `material` of `scene`, the scene the renderer has loaded; nullopt when

@@ -104,6 +104,14 @@ struct VariantSwitch {
     std::uint32_t instances = 0;  // draws of them
     std::uint64_t gpu_bytes = 0;  // uploaded (the instance records' material words)
     bool culling_rebuilt = false; // an alpha mode or sidedness changed
+    // With ray tracing: the geometry records whose material word followed (and their
+    // bytes), the BLAS built opaque whose instances now force any-hit (a geometry whose
+    // new material is masked, blended or single-sided), and whether the TLAS was rebuilt
+    // for that. No BLAS is rebuilt.
+    std::uint32_t rt_records = 0;
+    std::uint64_t rt_gpu_bytes = 0;
+    std::uint32_t rt_forced_blas = 0;
+    bool tlas_rebuilt = false;
 };
 
 struct RendererOptions {

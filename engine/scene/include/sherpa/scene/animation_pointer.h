@@ -34,9 +34,27 @@ enum class PointerProperty : std::uint8_t {
     Ior,                 // KHR_materials_ior
     SpecularFactor,      // KHR_materials_specular
     SpecularColorFactor, // KHR_materials_specular, vec3
-    TextureOffset,       // KHR_texture_transform of texture slot `slot`, vec2
-    TextureRotation,     // float
-    TextureScale,        // vec2
+    ClearcoatFactor,     // KHR_materials_clearcoat
+    ClearcoatRoughnessFactor,
+    ClearcoatNormalScale,           // clearcoatNormalTexture/scale
+    TransmissionFactor,             // KHR_materials_transmission
+    ThicknessFactor,                // KHR_materials_volume
+    AttenuationDistance,            //
+    AttenuationColor,               // vec3
+    SheenColorFactor,               // KHR_materials_sheen, vec3
+    SheenRoughnessFactor,           //
+    IridescenceFactor,              // KHR_materials_iridescence
+    IridescenceIor,                 //
+    IridescenceThicknessMinimum,    // nm
+    IridescenceThicknessMaximum,    // nm
+    AnisotropyStrength,             // KHR_materials_anisotropy
+    AnisotropyRotation,             // radians
+    Dispersion,                     // KHR_materials_dispersion
+    DiffuseTransmissionFactor,      // KHR_materials_diffuse_transmission
+    DiffuseTransmissionColorFactor, // vec3
+    TextureOffset,                  // KHR_texture_transform of texture slot `slot`, vec2
+    TextureRotation,                // float
+    TextureScale,                   // vec2
     // extensions.KHR_lights_punctual.lights[object]
     LightColor,     // vec3
     LightIntensity, // float
@@ -55,13 +73,28 @@ enum class PointerProperty : std::uint8_t {
 };
 std::string_view to_string(PointerProperty p);
 
-// Texture slots a KHR_texture_transform pointer can name.
+// Texture slots a KHR_texture_transform pointer can name: the core ones, then the
+// ratified material extensions' (each only where the material draws that extension).
 enum class PointerTextureSlot : std::uint8_t {
     BaseColor,
     MetallicRoughness,
     Normal,
     Occlusion,
-    Emissive
+    Emissive,
+    Specular,
+    SpecularColor,
+    Clearcoat,
+    ClearcoatRoughness,
+    ClearcoatNormal,
+    SheenColor,
+    SheenRoughness,
+    Transmission,
+    Thickness,
+    DiffuseTransmission,
+    DiffuseTransmissionColor,
+    Anisotropy,
+    Iridescence,
+    IridescenceThickness,
 };
 
 // Floats one value of `p` has (1..4).

@@ -90,7 +90,7 @@ void LoadingTests::progressReportsEveryStage() {
         // The hash elided in the middle; all 32 digits on hover and on copy.
         const QString hash = cell(row, TextureTableModel::HashColumn);
         const QString full =
-            m->index(row, TextureTableModel::HashColumn).data(Format::kExactTextRole).toString();
+            m->index(row, TextureTableModel::HashColumn).data(format::kExactTextRole).toString();
         QCOMPARE(full.size(), 32);
         QCOMPARE(hash, full.left(8) + QChar(0x2026) + full.right(8));
         QCOMPARE(m->index(row, TextureTableModel::HashColumn).data(Qt::ToolTipRole).toString(),

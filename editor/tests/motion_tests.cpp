@@ -151,7 +151,7 @@ void MotionTests::vertexTableHasJointsWeightsAndMorphDeltas() {
         QStringList joints, weights;
         for (std::uint32_t k = 0; k < motion.influences; ++k) {
             joints << QString::number(motion.joints[std::size_t(f) * motion.influences + k]);
-            weights << Format::number(motion.weights[std::size_t(f) * motion.influences + k]);
+            weights << format::number(motion.weights[std::size_t(f) * motion.influences + k]);
         }
         QCOMPARE(table.index(row, VertexTableModel::ColumnCount).data().toString(),
                  joints.join(QLatin1Char(' ')));
@@ -180,7 +180,7 @@ void MotionTests::vertexTableHasJointsWeightsAndMorphDeltas() {
     const auto v = static_cast<std::size_t>(table.vertexOfRow(2));
     const auto f = static_cast<std::size_t>(table.motionColumns().sourceVertex(v));
     QCOMPARE(table.index(2, VertexTableModel::ColumnCount + 1).data().toString(),
-             Format::vec(m.targets[1].position[f]));
+             format::vec(m.targets[1].position[f]));
     // A static mesh has none.
     auto box = load_into(context, QStringLiteral("Box"));
     table.setMesh({box, 0});

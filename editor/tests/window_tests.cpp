@@ -121,21 +121,21 @@ void WindowTests::selectionReachesEveryDock() {
     for (int row = 0; row < 64 && !rounded.isValid(); ++row)
         for (int c = VertexTableModel::PosX; c <= VertexTableModel::PosZ; ++c) {
             const QModelIndex i = vm->index(row, c);
-            if (i.data(Format::kExactTextRole).toString() != i.data().toString()) {
+            if (i.data(format::kExactTextRole).toString() != i.data().toString()) {
                 rounded = i;
                 break;
             }
         }
     QVERIFY2(rounded.isValid(), "a DamagedHelmet position needs more than six digits");
     QVERIFY(rounded.data().toString().size() <
-            rounded.data(Format::kExactTextRole).toString().size());
+            rounded.data(format::kExactTextRole).toString().size());
     vertices->setCurrentIndex(rounded);
     vertices->setFocus();
     QApplication::clipboard()->clear();
     QTest::keyClick(vertices, Qt::Key_C, Qt::ControlModifier);
-    QCOMPARE(QApplication::clipboard()->text(), rounded.data(Format::kExactTextRole).toString());
+    QCOMPARE(QApplication::clipboard()->text(), rounded.data(format::kExactTextRole).toString());
     QCOMPARE(QApplication::clipboard()->text().toFloat(),
-             rounded.data(Format::kExactTextRole).toString().toFloat());
+             rounded.data(format::kExactTextRole).toString().toFloat());
     // Filter the tree: only matching names (and their ancestors) stay.
     window_->docks().sceneTree->setFilter(QStringLiteral("no such node"));
     QCOMPARE(tree->model()->rowCount(), 0);

@@ -32,7 +32,6 @@ EXEMPT: dict[str, tuple[int, int, str]] = {
     "LabDock": (16, 29, "the Lab dock: runner wiring and table/chart in one class"),
     "EditorContext": (22, 23, "the editor's shared state: selection, visibility and session in one"),
     "TimelineDock": (16, 21, "the timeline: playback state and widgets in one class"),
-    "Format": (19, 19, "a static number-formatting table (a namespace in a class, for tr())"),
     "CullingMonitor": (18, 19, "the culling dock's model: history, chart data and check state"),
     "OrbitCamera": (17, 19, "the orbit camera: input mapping and camera state"),
     "CompareControls": (17, 19, "the comparison controls: actions and their state"),

@@ -107,10 +107,10 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent, bool ray_tracin
     frames_->start(vulkan_, ray_tracing_asked_);
 
     resize(1600, 1000);
-    restoreGeometry(settings_.geometry());
-    restoreState(settings_.windowState());
-    views_->setDebugView(settings_.lastView(), false);
-    QString language = settings_.language();
+    restoreGeometry(settings_.get(setting::kGeometry));
+    restoreState(settings_.get(setting::kWindowState));
+    views_->setDebugView(settings_.get(setting::kLastView), false);
+    QString language = settings_.get(setting::kLanguage);
     // The system default is not a choice: leave the setting empty so it follows the system.
     if (language.isEmpty()) language = Translations::systemDefault();
     setLanguage(language, false);
@@ -250,7 +250,7 @@ void MainWindow::resetLayout() {
 
 bool MainWindow::setLanguage(const QString& code, bool remember) {
     if (!translations_.install(code)) return false;
-    if (remember) settings_.setLanguage(code);
+    if (remember) settings_.set(setting::kLanguage, code);
     // Qt posts LanguageChange (changeEvent retranslates again then); doing it now makes
     // the switch visible in the same event-loop turn.
     retranslate();
@@ -290,7 +290,10 @@ QImage MainWindow::screenshot() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
-    if (remember_layout_) settings_.saveLayout(saveGeometry(), saveState());
+    if (remember_layout_) {
+        settings_.set(setting::kGeometry, saveGeometry());
+        settings_.set(setting::kWindowState, saveState());
+    }
     loads_->cancelLoad();
     QMainWindow::closeEvent(e);
 }

@@ -119,17 +119,19 @@ void LayoutTests::oneTextureCacheWithTheCli() {
     // The XDG base directory rule, written out here rather than asked of the engine.
     const QByteArray xdg = qgetenv("XDG_CACHE_HOME");
     QVERIFY(!xdg.isEmpty());
-    QCOMPARE(EditorSettings().cacheDirectory(), QString::fromUtf8(xdg) + "/sherpa/textures");
+    QCOMPARE(EditorSettings().get(setting::kCacheDirectory),
+             QString::fromUtf8(xdg) + "/sherpa/textures");
     qputenv("XDG_CACHE_HOME", "");
-    QCOMPARE(EditorSettings().cacheDirectory(), QDir::homePath() + "/.cache/sherpa/textures");
+    QCOMPARE(EditorSettings().get(setting::kCacheDirectory),
+             QDir::homePath() + "/.cache/sherpa/textures");
     qputenv("XDG_CACHE_HOME", xdg);
 }
 
 void LayoutTests::oneShotFlagsDoNotPersist() {
     {
         EditorSettings s;
-        s.setLastView(QStringLiteral("lit"));
-        s.setLanguage(QStringLiteral("en"));
+        s.set(setting::kLastView, QStringLiteral("lit"));
+        s.set(setting::kLanguage, QStringLiteral("en"));
     }
     {
         MainWindow w(vulkan_.isValid() ? &vulkan_ : nullptr);
@@ -149,14 +151,14 @@ void LayoutTests::oneShotFlagsDoNotPersist() {
     }
     // The next plain launch opens as the settings say, not as the last flags did.
     EditorSettings s;
-    QCOMPARE(s.lastView(), QStringLiteral("lit"));
-    QCOMPARE(s.language(), QStringLiteral("en"));
+    QCOMPARE(s.get(setting::kLastView), QStringLiteral("lit"));
+    QCOMPARE(s.get(setting::kLanguage), QStringLiteral("en"));
     MainWindow next(nullptr);
     QCOMPARE(next.views().debugView(), QStringLiteral("lit"));
     QCOMPARE(next.language(), QStringLiteral("en"));
     // A menu choice is a choice: it is remembered.
     QVERIFY(next.views().setDebugView(QStringLiteral("normal")));
-    QCOMPARE(EditorSettings().lastView(), QStringLiteral("normal"));
+    QCOMPARE(EditorSettings().get(setting::kLastView), QStringLiteral("normal"));
     next.views().setDebugView(QStringLiteral("lit"));
 }
 

@@ -146,8 +146,8 @@ void LoadingTests::cancelDropsTheLoadAndLeaksNothing() {
 void LoadingTests::textureCacheActions() {
     if (!hasGpu()) QSKIP("no Vulkan device: no texture upload");
     QTemporaryDir dir; // a cache of this test alone
-    const QString before = EditorSettings().cacheDirectory();
-    EditorSettings().setCacheDirectory(dir.path());
+    const QString before = EditorSettings().get(setting::kCacheDirectory);
+    EditorSettings().set(setting::kCacheDirectory, dir.path());
     const TextureTableModel* m = window_->docks().textures->model();
     const auto state = [m](int row) {
         return m->index(row, TextureTableModel::CacheStateColumn).data().toString();
@@ -171,7 +171,7 @@ void LoadingTests::textureCacheActions() {
     // Clear: every KTX2 file of the directory is gone.
     QCOMPARE(window_->loads().clearTextureCache(), 3);
     QVERIFY(QDir(dir.path()).entryList({QStringLiteral("*.ktx2")}, QDir::Files).isEmpty());
-    EditorSettings().setCacheDirectory(before);
+    EditorSettings().set(setting::kCacheDirectory, before);
 }
 
 // A base-colour image that does not exist: the dock says "missing: FILE" (not a
@@ -245,7 +245,7 @@ void LoadingTests::changedFilesAreOfferedOrReloaded() {
     QCOMPARE(window_->viewport()->camera().eye(), eye); // the view kept
 
     test::reload_controller(*window_).setReloadAutomatically(true);
-    QVERIFY(EditorSettings().reloadAutomatically()); // remembered
+    QVERIFY(EditorSettings().get(setting::kReloadAutomatically)); // remembered
     QVERIFY(touch(png));
     QTRY_VERIFY_WITH_TIMEOUT(loaded.count() == 2, kLoadTimeoutMs);
     QVERIFY(!window_->findChild<QMessageBox*>(QStringLiteral("reloadOffer")) ||

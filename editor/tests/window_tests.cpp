@@ -275,9 +275,10 @@ void WindowTests::layoutIsSavedAndRestored() {
     MainWindow second(nullptr);
     QVERIFY(second.docks().culling->isFloating());
     QVERIFY(second.docks().log->isHidden());
-    QVERIFY(!EditorSettings().recentFiles().isEmpty());
+    QVERIFY(!EditorSettings().get(setting::kRecentFiles).isEmpty());
     // The last file loaded (built-in scenes are not files, a cancelled load is not one).
-    QCOMPARE(EditorSettings().recentFiles().value(0), test::asset(QStringLiteral("Box")));
+    QCOMPARE(EditorSettings().get(setting::kRecentFiles).value(0),
+             test::asset(QStringLiteral("Box")));
     second.docks().culling->setFloating(false);
     second.docks().log->show();
     second.close();

@@ -35,7 +35,6 @@ EXEMPT: dict[str, tuple[int, int, str]] = {
     "CullingMonitor": (18, 19, "the culling dock's model: history, chart data and check state"),
     "OrbitCamera": (17, 19, "the orbit camera: input mapping and camera state"),
     "CompareControls": (17, 19, "the comparison controls: actions and their state"),
-    "EditorSettings": (18, 18, "typed QSettings accessors, one pair per setting"),
     "RenderThread": (13, 16, "the render thread: tasks, frames and readbacks"),
 }
 

@@ -238,7 +238,7 @@ void ViewController::connectLab() {
 }
 
 void ViewController::cameraChanged() {
-    culling_.update(viewport_.camera().spec());
+    culling_.update(viewport_.camera().pose().spec());
     viewport_.scheduleFrame();
 }
 

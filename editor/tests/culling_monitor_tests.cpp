@@ -25,13 +25,13 @@ void CullingMonitorTests::cullingMonitorFreezes() {
     context.setSession(out.session);
     OrbitCamera cam;
     cam.frame(out.session->scene->bounds);
-    monitor.update(cam.spec());
+    monitor.update(cam.pose().spec());
     const std::uint64_t total = out.session->scene->instances.size();
     QCOMPARE(monitor.latest()->cpu.total, total);
     QCOMPARE(monitor.latest()->cpu.visible, total); // framed: everything in view
     monitor.setFrozen(true);
-    CameraSpec away = cam.spec();
-    away.target = away.eye + (away.eye - cam.target()); // look away from the scene
+    CameraSpec away = cam.pose().spec();
+    away.target = away.eye + (away.eye - cam.pose().target); // look away from the scene
     monitor.update(away);
     QCOMPARE(monitor.latest()->cpu.visible, total); // still culling with the frozen camera
     monitor.setFrozen(false);
@@ -55,7 +55,7 @@ void CullingMonitorTests::cullingMonitorCoalescesExpensivePasses() {
     std::size_t samples = monitor.history().size();
     for (int i = 0; i < 5; ++i) {
         cam.orbit(10.0f, 0.0f);
-        monitor.update(cam.spec());
+        monitor.update(cam.pose().spec());
     }
     QCOMPARE(monitor.history().size(), samples + 5);
     QCOMPARE(updated.count(), 5);
@@ -65,12 +65,12 @@ void CullingMonitorTests::cullingMonitorCoalescesExpensivePasses() {
     monitor.setCoalesceAboveMs(0.0);
     samples = monitor.history().size();
     updated.clear();
-    CameraSpec away = cam.spec();
+    CameraSpec away = cam.pose().spec();
     for (int i = 0; i < 20; ++i) {
         cam.orbit(10.0f, 0.0f);
-        monitor.update(cam.spec());
+        monitor.update(cam.pose().spec());
     }
-    away.target = away.eye + (away.eye - cam.target()); // the last step looks away
+    away.target = away.eye + (away.eye - cam.pose().target); // the last step looks away
     monitor.update(away);
     QVERIFY(monitor.deferred());
     QCOMPARE(monitor.history().size(), samples);
@@ -83,7 +83,7 @@ void CullingMonitorTests::cullingMonitorCoalescesExpensivePasses() {
     // flush() runs a waiting pass at once.
     OrbitCamera framed;
     framed.frame(out.session->scene->bounds);
-    monitor.update(framed.spec());
+    monitor.update(framed.pose().spec());
     QVERIFY(monitor.deferred());
     monitor.flush();
     QVERIFY(!monitor.deferred());

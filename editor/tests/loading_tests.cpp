@@ -217,7 +217,7 @@ void LoadingTests::changedFilesAreOfferedOrReloaded() {
 
     test::reload_controller(*window_).setReloadAutomatically(false);
     window_->viewport()->camera().orbit(30.0f, 10.0f);
-    const glm::vec3 eye = window_->viewport()->camera().eye();
+    const glm::vec3 eye = window_->viewport()->camera().pose().eye();
     QSignalSpy loaded(&window_->loads(), &LoadController::sceneLoaded);
     const auto touch = [](const QString& path) { // rewritten as an exporter does
         QFile f(path);
@@ -242,7 +242,7 @@ void LoadingTests::changedFilesAreOfferedOrReloaded() {
     QVERIFY(reload);
     reload->click();
     QTRY_VERIFY_WITH_TIMEOUT(loaded.count() == 1, kLoadTimeoutMs);
-    QCOMPARE(window_->viewport()->camera().eye(), eye); // the view kept
+    QCOMPARE(window_->viewport()->camera().pose().eye(), eye); // the view kept
 
     test::reload_controller(*window_).setReloadAutomatically(true);
     QVERIFY(EditorSettings().get(setting::kReloadAutomatically)); // remembered

@@ -269,7 +269,7 @@ void ModelTests::frameKeepsTheBoxInView() {
     const Aabb box = Aabb::from_min_max({-3, -1, -2}, {5, 4, 1});
     cam.orbit(40, -25);
     cam.frame(box);
-    const glm::mat4 vp = cam.spec().view_projection();
+    const glm::mat4 vp = cam.pose().spec().view_projection();
     for (int c = 0; c < 8; ++c) {
         const glm::vec3 p((c & 1) ? box.max.x : box.min.x, (c & 2) ? box.max.y : box.min.y,
                           (c & 4) ? box.max.z : box.min.z);
@@ -280,7 +280,7 @@ void ModelTests::frameKeepsTheBoxInView() {
     }
     CameraSpec spec;
     std::string error;
-    QVERIFY2(parse_camera_spec(cam.toString(), spec, error), error.c_str());
+    QVERIFY2(parse_camera_spec(cam.pose().toString(), spec, error), error.c_str());
 }
 
 void ModelTests::pickHitsTheInstanceUnderTheRay() {
@@ -293,16 +293,17 @@ void ModelTests::pickHitsTheInstanceUnderTheRay() {
     // front of it) must be hit, and the hit must lie on the ray inside that instance's box.
     for (std::size_t i = 0; i < s.instances.size(); i += 7) {
         const Aabb& box = s.instances[i].world_bounds;
-        const glm::vec3 dir = glm::normalize(box.center() - cam.eye());
-        const PickHit hit = pick(s, cam.eye(), dir, [](std::size_t) { return true; });
+        const glm::vec3 dir = glm::normalize(box.center() - cam.pose().eye());
+        const PickHit hit = pick(s, cam.pose().eye(), dir, [](std::size_t) { return true; });
         QVERIFY(hit);
-        const glm::vec3 p = cam.eye() + dir * hit.distance;
+        const glm::vec3 p = cam.pose().eye() + dir * hit.distance;
         const Aabb& hit_box = s.instances[static_cast<std::size_t>(hit.instance)].world_bounds;
         QVERIFY(glm::all(glm::greaterThanEqual(p, hit_box.min - 1e-3f)) &&
                 glm::all(glm::lessThanEqual(p, hit_box.max + 1e-3f)));
     }
     // Hidden instances are not pickable.
-    const PickHit none = pick(s, cam.eye(), cam.forward(), [](std::size_t) { return false; });
+    const PickHit none =
+        pick(s, cam.pose().eye(), cam.pose().forward(), [](std::size_t) { return false; });
     QVERIFY(!none);
 }
 

@@ -297,21 +297,21 @@ void RtTests::draggingMovesTheDivider() {
     ViewportWindow* vp = w.viewport();
     QCOMPARE(vp->divider().value_or(-1.0f), 0.5f);
     const int y = vp->height() / 2, width = vp->width();
-    const CameraSpec camera = vp->camera().spec();
+    const CameraSpec camera = vp->camera().pose().spec();
     // Grabbed at the line (within the grab zone), dropped at a quarter of the width.
     QTest::mousePress(vp, Qt::LeftButton, Qt::NoModifier, QPoint(width / 2 + 3, y));
     QTest::mouseMove(vp, QPoint(width / 3, y));
     QTest::mouseMove(vp, QPoint(width / 4, y));
     QTest::mouseRelease(vp, Qt::LeftButton, Qt::NoModifier, QPoint(width / 4, y));
     QVERIFY(std::abs(c.state().divider - 0.25f) < 0.01f);
-    QCOMPARE(vp->camera().spec().eye, camera.eye); // the camera did not orbit
+    QCOMPARE(vp->camera().pose().spec().eye, camera.eye); // the camera did not orbit
     // Ctrl+drag from anywhere.
     QTest::mousePress(vp, Qt::LeftButton, Qt::ControlModifier, QPoint(width * 3 / 4, y));
     QTest::mouseMove(vp, QPoint(width * 7 / 10, y));
     QTest::mouseMove(vp, QPoint(width * 4 / 5, y));
     QTest::mouseRelease(vp, Qt::LeftButton, Qt::ControlModifier, QPoint(width * 4 / 5, y));
     QVERIFY(std::abs(c.state().divider - 0.8f) < 0.01f);
-    QCOMPARE(vp->camera().spec().eye, camera.eye);
+    QCOMPARE(vp->camera().pose().spec().eye, camera.eye);
     // The frame follows: B (uv0) now starts at 80% of the width.
     const QImage split = test::viewport_shot(w);
     c.setMode(ViewportMode::Raster);
@@ -324,7 +324,7 @@ void RtTests::draggingMovesTheDivider() {
     QTest::mouseMove(vp, QPoint(width / 2 + 40, y));
     QTest::mouseMove(vp, QPoint(width / 2 + 80, y));
     QTest::mouseRelease(vp, Qt::LeftButton, Qt::NoModifier, QPoint(width / 2 + 80, y));
-    QVERIFY(vp->camera().spec().eye != camera.eye);
+    QVERIFY(vp->camera().pose().spec().eye != camera.eye);
     checkValidation();
 }
 

@@ -33,7 +33,6 @@ EXEMPT: dict[str, tuple[int, int, str]] = {
     "EditorContext": (22, 23, "the editor's shared state: selection, visibility and session in one"),
     "TimelineDock": (16, 21, "the timeline: playback state and widgets in one class"),
     "CullingMonitor": (18, 19, "the culling dock's model: history, chart data and check state"),
-    "OrbitCamera": (17, 19, "the orbit camera: input mapping and camera state"),
     "CompareControls": (17, 19, "the comparison controls: actions and their state"),
     "RenderThread": (13, 16, "the render thread: tasks, frames and readbacks"),
 }

@@ -192,7 +192,7 @@ void RenderThreadTests::playbackIsMotionAndPauseIsExact() {
     timeline.setPlaying(true);
     for (int i = 0; i < 3; ++i) {
         timeline.advance(0.05);
-        QTRY_VERIFY(w.frames().lastFrame().request.pose == timeline.pose()); // asked for
+        QTRY_VERIFY(w.frames().lastFrame().request.pose == timeline.playback().pose()); // asked for
         const std::uint64_t step = test::latest_request(w);
         QVERIFY(waitForReport(w, [&](const FrameReport& r) { return r.request >= step; }));
     }

@@ -115,7 +115,8 @@ void ViewController::fill(gpu::FrameRequest& request) const {
     request.cull_method = culling_.method();
     request.cascades = shadow_cascades_;
     request.shadow_pcf_taps = shadow_pcf_taps_;
-    if (culling_.frozen()) request.freeze_cull = gpu::explicit_camera(culling_.cullingCamera());
+    if (const auto& frozen = culling_.frozenCamera())
+        request.freeze_cull = gpu::explicit_camera(*frozen);
     apply_display(environment_->display(), request);
 }
 

@@ -339,14 +339,14 @@ void MotionTests::windowPostsThePoseAndSelectedJoint() {
                     same_matrix(w->frames().lastFrame().request.pose->world[node], expected));
         // The culling dock culls the instances where the pose puts them.
         const Pose pose = evaluate_pose(scene, 0, t);
-        test::culling_monitor(*w).flush();
+        test::culling_monitor(*w).pacing().flush();
         for (std::size_t i = 0; i < scene.instances.size(); ++i) {
             const MeshInstance& inst = scene.instances[i];
             const auto prim = std::find_if(
                 scene.primitives.begin(), scene.primitives.end(),
                 [&](const PrimitiveInfo& p) { return p.engine_mesh == int(inst.mesh_id); });
             const Aabb expected_box = culling_bounds(scene, pose, inst.node_id, *prim);
-            const Aabb box = test::culling_monitor(*w).box(i);
+            const Aabb box = test::culling_monitor(*w).input().boxes.box(i);
             QVERIFY(
                 glm::all(glm::lessThan(glm::abs(box.min - expected_box.min), glm::vec3(1e-5f))));
             QVERIFY(

@@ -215,10 +215,10 @@ void ViewportTests::gpuCullingAgreesWithCpu() {
         window_->viewport()->camera().orbit(120.0f, 20.0f); // new frustum each step
         Q_EMIT window_->viewport()->cameraChanged();
         // The CPU pass is there at once; the GPU's answer comes from the render thread.
-        QVERIFY(test::culling_monitor(*window_).latest());
-        QTRY_VERIFY_WITH_TIMEOUT(test::culling_monitor(*window_).latest()->gpu_visible >= 0,
-                                 kLoadTimeoutMs);
-        const CullSample* s = test::culling_monitor(*window_).latest();
+        QVERIFY(test::culling_monitor(*window_).history().latest());
+        QTRY_VERIFY_WITH_TIMEOUT(
+            test::culling_monitor(*window_).history().latest()->gpu_visible >= 0, kLoadTimeoutMs);
+        const CullSample* s = test::culling_monitor(*window_).history().latest();
         QCOMPARE(s->cpu_gpu_differences, 0);
         QCOMPARE(static_cast<std::uint64_t>(s->gpu_visible), s->cpu.visible);
         QVERIFY(window_->docks().culling->agreementText().contains(QStringLiteral("✔")));
@@ -231,13 +231,13 @@ void ViewportTests::gpuCullingAgreesWithCpu() {
          {QStringLiteral("builtin:default"), QStringLiteral("builtin:grid?n=10"),
           test::asset(QStringLiteral("DamagedHelmet"))}) {
         QVERIFY(load(*window_, spec));
-        QTRY_VERIFY_WITH_TIMEOUT(test::culling_monitor(*window_).latest()->gpu_visible >= 0,
-                                 kLoadTimeoutMs);
-        const CullSample* s = test::culling_monitor(*window_).latest();
+        QTRY_VERIFY_WITH_TIMEOUT(
+            test::culling_monitor(*window_).history().latest()->gpu_visible >= 0, kLoadTimeoutMs);
+        const CullSample* s = test::culling_monitor(*window_).history().latest();
         QCOMPARE(s->cpu_gpu_differences, 0);
     }
     window_->views().setGpuCulling(false);
-    QCOMPARE(test::culling_monitor(*window_).latest()->gpu_visible, -1);
+    QCOMPARE(test::culling_monitor(*window_).history().latest()->gpu_visible, -1);
     QVERIFY(window_->docks().culling->agreementText().contains(QStringLiteral("off")));
     QVERIFY(test::next_frame(*window_));
     QVERIFY(window_->frames().lastFrame().request.cull == gpu::CullPath::Cpu);

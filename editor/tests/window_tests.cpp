@@ -81,7 +81,8 @@ void WindowTests::opensEveryAsset() {
                  static_cast<int>(s->scenes.size() + s->skins.size() + s->animations.size()));
         QCOMPARE(window_->docks().textures->model()->rowCount(),
                  static_cast<int>(s->textures.size()));
-        QCOMPARE(test::culling_monitor(*window_).latest()->cpu.total, s->instances.size());
+        QCOMPARE(test::culling_monitor(*window_).history().latest()->cpu.total,
+                 s->instances.size());
     }
 }
 

@@ -21,6 +21,7 @@
 #include "acceleration_dock.h"
 #include "compare_controller.h"
 #include "compare_controls.h"
+#include "compare_state.h"
 #include "culling_dock.h"
 #include "culling_monitor.h"
 #include "difference_legend.h"
@@ -82,7 +83,8 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent, bool ray_tracin
     centre_layout->addWidget(viewport_container_, 1);
     centre_layout->addWidget(legend_);
     setCentralWidget(centre);
-    compare_controls_ = new CompareControls(this);
+    compare_state_ = new CompareState(this);
+    compare_controls_ = new CompareControls(*compare_state_, this);
 
     progress_ = new QProgressBar(this);
     progress_->setObjectName(QStringLiteral("loadProgress"));
@@ -140,8 +142,8 @@ void MainWindow::createControllers() {
                                 *progress_, *cancel_, *this, device_pending);
     views_ = new ViewController(context_, settings_, *culling_, docks_, *viewport_, *a_, *frames_,
                                 *this);
-    compare_ = new CompareController(context_, *compare_controls_, *legend_, *docks_.log,
-                                     *viewport_, *loads_, *frames_, *this);
+    compare_ = new CompareController(context_, *compare_state_, *compare_controls_, *legend_,
+                                     *docks_.log, *viewport_, *loads_, *frames_, *this);
     frames_->setFrameSource([this] {
         ViewportRequest frame;
         const QSize pixels = viewport_->pixelSize();

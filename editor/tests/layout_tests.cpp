@@ -288,7 +288,7 @@ void LayoutTests::viewportModesAreNotCutOff() {
     // The longest side-B label: this file with tangents by another method.
     w->comparison().compareWithTangents(TangentMethod::MikkTSpaceWelded);
     QTRY_VERIFY_WITH_TIMEOUT(test::compare_session(*w) != nullptr, 30000);
-    w->comparison().controls().setMode(ViewportMode::Difference);
+    w->comparison().state().setMode(ViewportMode::Difference);
     // Numbers of the latest completed frame: a few frames on.
     for (int i = 0; i < 20 && !w->frames().lastReport().difference.valid; ++i) {
         w->frames().renderer()->renderAndWait(w->frames().lastFrame(),
@@ -327,14 +327,15 @@ void LayoutTests::sideBSaysWhenItShowsAndStartsAComparison() {
     // side B shows, and choosing a side B starts a comparison (Split).
     QMainWindow host;
     auto* bar = host.addToolBar(QStringLiteral("bar"));
-    CompareControls controls(&host);
+    CompareState state;
+    CompareControls controls(state, &host);
     controls.addToToolBar(bar);
-    controls.setRayTracing(true);
+    state.setRayTracing(true);
     host.show();
     QVERIFY(QTest::qWaitForWindowExposed(&host));
     auto* side = bar->findChild<QToolButton*>(QStringLiteral("compareSideButton"));
     QVERIFY(side);
-    QCOMPARE(controls.state().mode, ViewportMode::Raster);
+    QCOMPARE(state.comparison().mode, ViewportMode::Raster);
     QVERIFY(side->isEnabled());
     QVERIFY2(side->toolTip().contains(QStringLiteral("Split")) &&
                  side->toolTip().contains(QStringLiteral("Difference")),
@@ -342,16 +343,16 @@ void LayoutTests::sideBSaysWhenItShowsAndStartsAComparison() {
     QAction* rays = side->menu()->actions().value(0); // "The Ray Tracer", first
     QVERIFY(rays && rays->isEnabled());
     rays->trigger();
-    QCOMPARE(controls.state().mode, ViewportMode::Split);
-    QCOMPARE(controls.state().side, SideB::RayTraced);
+    QCOMPARE(state.comparison().mode, ViewportMode::Split);
+    QCOMPARE(state.comparison().side, SideB::RayTraced);
     // Already comparing: the mode stays.
-    controls.setMode(ViewportMode::Difference);
+    state.setMode(ViewportMode::Difference);
     rays->trigger();
-    QCOMPARE(controls.state().mode, ViewportMode::Difference);
+    QCOMPARE(state.comparison().mode, ViewportMode::Difference);
     // A long side-B name is shortened on the button, whole in its tooltip.
-    controls.setOtherFile(QStringLiteral("AVeryLongExportedFileNameFromTheExporter_final_v7.gltf"),
-                          TangentMethod::Lengyel);
-    controls.setSide(SideB::OtherFile);
+    state.setOtherFile(QStringLiteral("AVeryLongExportedFileNameFromTheExporter_final_v7.gltf"),
+                       TangentMethod::Lengyel);
+    state.setSide(SideB::OtherFile);
     QVERIFY(side->fontMetrics().horizontalAdvance(side->text()) <= 230);
     QVERIFY(side->toolTip().contains(QStringLiteral("final_v7.gltf")));
 }

@@ -31,7 +31,6 @@ EXEMPT: dict[str, tuple[int, int, str]] = {
     "ViewportWindow": (19, 30, "the viewport window: input, divider and frame pacing in one class"),
     "LabDock": (16, 29, "the Lab dock: runner wiring and table/chart in one class"),
     "EditorContext": (22, 23, "the editor's shared state: selection, visibility and session in one"),
-    "CompareControls": (17, 19, "the comparison controls: actions and their state"),
     "RenderThread": (13, 16, "the render thread: tasks, frames and readbacks"),
 }
 

@@ -29,7 +29,6 @@ EXEMPT: dict[str, tuple[int, int, str]] = {
     "GpuViewport": (18, 24, "the engine behind the viewport: device, upload, environment, present and "
                     "the readbacks (material, GPU culling check) in one class"),
     "ViewportWindow": (19, 30, "the viewport window: input, divider and frame pacing in one class"),
-    "LabDock": (16, 29, "the Lab dock: runner wiring and table/chart in one class"),
     "EditorContext": (22, 23, "the editor's shared state: selection, visibility and session in one"),
     "RenderThread": (13, 16, "the render thread: tasks, frames and readbacks"),
 }

@@ -98,8 +98,8 @@ void AccelerationDock::updateSummary() {
         tr("%1 BLAS, %2 triangles, %3 built, %4 compacted (%5%), %6 batches, built in %7 ms")
             .arg(s->blas.size())
             .arg(s->blas_triangles())
-            .arg(Format::bytes(s->blas_build_bytes()))
-            .arg(Format::bytes(s->blas_compacted_bytes()))
+            .arg(format::bytes(s->blas_build_bytes()))
+            .arg(format::bytes(s->blas_compacted_bytes()))
             .arg(qRound(ratio * 100.0))
             .arg(s->batches)
             .arg(s->build_wall_ms, 0, 'f', 1);
@@ -112,10 +112,10 @@ void AccelerationDock::updateSummary() {
                 .arg(t.mirrored)
                 .arg(t.hidden)
                 .arg(t.non_finite)
-                .arg(Format::bytes(t.bytes));
+                .arg(format::bytes(t.bytes));
     text += QLatin1Char('\n') + tr("Total on the GPU: %1 (scratch buffer %2)")
-                                    .arg(Format::bytes(s->total_bytes()))
-                                    .arg(Format::bytes(s->scratch_buffer_bytes));
+                                    .arg(format::bytes(s->total_bytes()))
+                                    .arg(format::bytes(s->scratch_buffer_bytes));
     summary_->setText(text);
 }
 

@@ -50,11 +50,11 @@ QVariant AccelerationModel::data(const QModelIndex& index, int role) const {
     case BuildMsColumn:
         return b.build_ms < 0.0 ? QStringLiteral("—") : QString::number(b.build_ms, 'f', 2);
     case BuiltBytesColumn:
-        return Format::bytes(b.build_bytes);
+        return format::bytes(b.build_bytes);
     case CompactedBytesColumn:
-        return Format::bytes(b.compacted_bytes);
+        return format::bytes(b.compacted_bytes);
     case ScratchBytesColumn:
-        return Format::bytes(b.scratch_bytes);
+        return format::bytes(b.scratch_bytes);
     }
     return {};
 }

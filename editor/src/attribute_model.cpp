@@ -12,7 +12,7 @@ namespace {
 QString list(const std::vector<double>& values) {
     if (values.empty()) return QStringLiteral("—");
     QStringList parts;
-    for (double v : values) parts << Format::number(v);
+    for (double v : values) parts << format::number(v);
     return QStringLiteral("[") + parts.join(QStringLiteral(", ")) + QStringLiteral("]");
 }
 } // namespace
@@ -54,7 +54,7 @@ QVariant AttributeModel::data(const QModelIndex& index, int role) const {
             index.row() == kIndexRow ? m->index_source
                                      : m->sources[static_cast<std::size_t>(index.row())];
         return s ? QStringLiteral("%1 x%2%3")
-                       .arg(Format::componentType(s->component_type))
+                       .arg(format::componentType(s->component_type))
                        .arg(s->components)
                        .arg(s->normalized ? tr(", normalized") : QString())
                  : QVariant();
@@ -67,13 +67,13 @@ QVariant AttributeModel::data(const QModelIndex& index, int role) const {
     switch (index.column()) {
     case AttributeColumn:
         return is_index ? tr("indices")
-                        : Format::attribute(kAllVertexAttributes[static_cast<std::size_t>(row)]);
+                        : format::attribute(kAllVertexAttributes[static_cast<std::size_t>(row)]);
     case ProvenanceColumn:
         if (is_index) return src ? tr("authored") : tr("generated");
-        return Format::provenance(m->provenance[static_cast<std::size_t>(row)]);
+        return format::provenance(m->provenance[static_cast<std::size_t>(row)]);
     case GpuBytesColumn: {
         const std::uint64_t b = gpuBytes(row);
-        return b ? Format::bytes(b) : tr("not uploaded");
+        return b ? format::bytes(b) : tr("not uploaded");
     }
     default:
         break;
@@ -85,10 +85,10 @@ QVariant AttributeModel::data(const QModelIndex& index, int role) const {
     case ComponentTypeColumn:
         // Compact (f32×3): the column must fit a side dock; the glTF name on hover.
         return QStringLiteral("%1×%2")
-            .arg(Format::componentTypeShort(src->component_type))
+            .arg(format::componentTypeShort(src->component_type))
             .arg(src->components);
     case NormalizedColumn:
-        return Format::yesNo(src->normalized);
+        return format::yesNo(src->normalized);
     case CountColumn:
         return src->count;
     case MinColumn:
@@ -96,7 +96,7 @@ QVariant AttributeModel::data(const QModelIndex& index, int role) const {
     case MaxColumn:
         return list(src->max);
     case SparseColumn:
-        return src->sparse ? tr("yes (%1 values)").arg(src->sparse_count) : Format::yesNo(false);
+        return src->sparse ? tr("yes (%1 values)").arg(src->sparse_count) : format::yesNo(false);
     case BufferViewColumn:
         return src->buffer_view < 0
                    ? tr("none")

@@ -53,7 +53,7 @@ std::optional<TangentMethod> tangent_method(const QString& name) {
 
 // --mode and --compare-with, once the scene is loaded.
 void apply_viewport_mode(MainWindow& window, const CommandLine& cl) {
-    CompareControls& compare = window.comparison().controls();
+    CompareState& compare = window.comparison().state();
     const QString& side = cl.compare_with;
     if (side.startsWith(QLatin1String("view:")))
         compare.setSide(SideB::OtherView, *ViewCatalog::viewId(side.mid(5)));

@@ -17,19 +17,19 @@
 
 namespace sherpa::editor {
 
-CompareController::CompareController(EditorContext& context, CompareControls& controls,
-                                     DifferenceLegend& legend, LogDock& log,
-                                     ViewportWindow& viewport, LoadController& loads,
+CompareController::CompareController(EditorContext& context, CompareState& state,
+                                     CompareControls& controls, DifferenceLegend& legend,
+                                     LogDock& log, ViewportWindow& viewport, LoadController& loads,
                                      RenderController& frames, QMainWindow& window)
-    : QObject(&window), context_(context), controls_(controls), legend_(legend), log_(log),
-      viewport_(viewport), loads_(loads), window_(window) {
+    : QObject(&window), context_(context), state_(state), controls_(controls), legend_(legend),
+      log_(log), viewport_(viewport), loads_(loads), window_(window) {
     loader_.setParent(this); // a member: it leaves the children before QObject deletes them
     loader_.setObjectName(QStringLiteral("compareLoader"));
     connectControls();
     connect(&frames, &RenderController::frameReported, this, &CompareController::onFrameReported);
     connect(&frames, &RenderController::deviceKnown, this,
             [this](const std::optional<tex::TextureTarget>& target, bool rays) {
-                if (target) controls_.setRayTracing(rays);
+                if (target) state_.setRayTracing(rays);
             });
     // Side B "this file, tangents by ..." follows the file (another file stays).
     connect(&loads, &LoadController::sceneLoaded, this, [this] {
@@ -38,7 +38,7 @@ CompareController::CompareController(EditorContext& context, CompareControls& co
 }
 
 void CompareController::connectControls() {
-    connect(&controls_, &CompareControls::changed, this, &CompareController::onChanged);
+    connect(&state_, &CompareState::changed, this, &CompareController::onChanged);
     connect(&controls_, &CompareControls::otherFileRequested, this, [this] {
         const QString path = QFileDialog::getOpenFileName(
             &window_, tr("Compare with glTF scene"), QFileInfo(context_.sceneSpec()).path(),
@@ -51,7 +51,7 @@ void CompareController::connectControls() {
     connect(&controls_, &CompareControls::tangentsRequested, this, [this](TangentMethod method) {
         if (context_.scene()) compareWithTangents(method);
     });
-    connect(&viewport_, &ViewportWindow::dividerMoved, &controls_, &CompareControls::setDivider);
+    connect(&viewport_, &ViewportWindow::dividerMoved, &state_, &CompareState::setDivider);
     connect(&loader_, &SceneLoadJob::loaded, this, &CompareController::onOtherLoaded);
     connect(&loader_, &SceneLoadJob::failed, this,
             [this](const QString& spec, const QString& error) {
@@ -63,11 +63,11 @@ void CompareController::connectControls() {
 void CompareController::onOtherLoaded(SharedSession session) {
     log_.append(LogDock::Level::Info, tr("Side B: %1 loaded.").arg(session->spec));
     session_ = std::move(session);
-    controls_.setOtherFile(label_, tangents_);
+    state_.setOtherFile(label_, tangents_);
     // Comparing first: outside a comparison a change frees side B (onChanged).
     // The frame is drawn later (requestUpdate), with both set.
-    if (!controls_.state().comparing()) controls_.setMode(ViewportMode::Split);
-    controls_.setSide(SideB::OtherFile);
+    if (!state_.comparison().comparing()) state_.setMode(ViewportMode::Split);
+    state_.setSide(SideB::OtherFile);
 }
 
 void CompareController::compareWithFile(const QString& spec, bool source_textures) {
@@ -108,18 +108,18 @@ void CompareController::compareWithTangents(TangentMethod method) {
 }
 
 void CompareController::fill(ViewportRequest& frame) const {
-    frame.compare = controls_.state();
+    frame.compare = state_.comparison();
     frame.compareSession = session_;
 }
 
 void CompareController::onChanged() {
-    const ViewportComparison& c = controls_.state();
+    const ViewportComparison& c = state_.comparison();
     // The other file is loaded only while comparing: leaving frees it (the render
     // thread drops side B's renderer with the next frame that does not compare).
     if (!c.comparing() && session_) {
         session_.reset();
-        controls_.setOtherFile(QString());
-        if (c.side == SideB::OtherFile) controls_.setSide(SideB::RayTraced);
+        state_.setOtherFile(QString());
+        if (c.side == SideB::OtherFile) state_.setSide(SideB::RayTraced);
     }
     legend_.setScale(c.heat_max, c.threshold);
     legend_.setNumbers({});
@@ -138,7 +138,7 @@ void CompareController::onFrameReported(const FrameReport& report) {
             tr("The ray tracer cannot draw this frame: %1. Back to Raster.").arg(report.refused);
         log_.append(LogDock::Level::Warning, text);
         window_.statusBar()->showMessage(text, 15000);
-        controls_.setMode(ViewportMode::Raster);
+        state_.setMode(ViewportMode::Raster);
         return;
     }
     if (report.difference.valid) legend_.setNumbers(report.difference);

@@ -4,8 +4,8 @@
 // source textures or with tangents by another method, loaded by its own SceneLoadJob
 // and kept only while comparing with it), the split divider dragged in the viewport,
 // the difference legend's numbers and what the ray tracer refuses. One path: an
-// action changes CompareControls' state, fill() puts it into the next frame,
-// GpuViewport draws it.
+// action changes the CompareState, fill() puts it into the next frame, GpuViewport
+// draws it.
 #include <QObject>
 #include <QString>
 
@@ -21,6 +21,7 @@ class QMainWindow;
 namespace sherpa::editor {
 
 class CompareControls;
+class CompareState;
 class DifferenceLegend;
 class EditorContext;
 class LoadController;
@@ -32,13 +33,14 @@ struct FrameReport;
 class CompareController : public QObject {
     Q_OBJECT
 public:
-    // `controls` and `legend` are placed by the window (toolbar, View menu, beside
-    // the viewport); side B's files load with `loads`' texture settings.
-    CompareController(EditorContext& context, CompareControls& controls, DifferenceLegend& legend,
-                      LogDock& log, ViewportWindow& viewport, LoadController& loads,
-                      RenderController& frames, QMainWindow& window);
+    // `controls` (the menus over `state`) and `legend` are placed by the window
+    // (toolbar, View menu, beside the viewport); side B's files load with `loads`'
+    // texture settings.
+    CompareController(EditorContext& context, CompareState& state, CompareControls& controls,
+                      DifferenceLegend& legend, LogDock& log, ViewportWindow& viewport,
+                      LoadController& loads, RenderController& frames, QMainWindow& window);
 
-    CompareControls& controls() const { return controls_; }
+    CompareState& state() const { return state_; }
     // Loads `spec` as side B of the comparison (File dialog of "Another File…");
     // `source_textures`: its textures uploaded as decoded from their images, not
     // through BC7/BC5 (the compression's error against the source).
@@ -58,6 +60,7 @@ private:
     void onFrameReported(const FrameReport& report);
 
     EditorContext& context_;
+    CompareState& state_;
     CompareControls& controls_;
     DifferenceLegend& legend_;
     LogDock& log_;

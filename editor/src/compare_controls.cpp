@@ -20,14 +20,15 @@ constexpr int kThresholds[] = {1, 2, 4, 8};
 constexpr int kMaxButtonTextWidth = 220;
 } // namespace
 
-CompareControls::CompareControls(QWidget* parent) : QObject(parent) {
+CompareControls::CompareControls(CompareState& state, QWidget* parent)
+    : QObject(parent), state_(state) {
     menu_ = new QMenu(parent);
     modes_ = new QActionGroup(this);
     for (ViewportMode m : {ViewportMode::Raster, ViewportMode::RayTraced, ViewportMode::Split,
                            ViewportMode::Difference}) {
         QAction* act = modes_->addAction(QString());
         act->setCheckable(true);
-        connect(act, &QAction::triggered, this, [this, m] { setMode(m); });
+        connect(act, &QAction::triggered, &state_, [this, m] { state_.setMode(m); });
         mode_actions_.push_back(act);
         menu_->addAction(act);
     }
@@ -36,14 +37,16 @@ CompareControls::CompareControls(QWidget* parent) : QObject(parent) {
     sides_ = new QActionGroup(this);
     side_rays_ = sides_->addAction(QString());
     side_rays_->setCheckable(true);
-    connect(side_rays_, &QAction::triggered, this, [this] { chooseSide(SideB::RayTraced); });
+    connect(side_rays_, &QAction::triggered, &state_,
+            [this] { state_.chooseSide(SideB::RayTraced); });
     side_menu_->addAction(side_rays_);
     side_views_ = side_menu_->addMenu(QString());
     for (const ViewEntry& v : ViewCatalog::views()) {
         QAction* act = sides_->addAction(QString());
         act->setCheckable(true);
         const std::uint32_t id = v.id;
-        connect(act, &QAction::triggered, this, [this, id] { chooseSide(SideB::OtherView, id); });
+        connect(act, &QAction::triggered, &state_,
+                [this, id] { state_.chooseSide(SideB::OtherView, id); });
         view_actions_.push_back(act);
         side_views_->addAction(act);
     }
@@ -61,7 +64,8 @@ CompareControls::CompareControls(QWidget* parent) : QObject(parent) {
     for (const int h : kHeatScales) {
         QAction* act = heats->addAction(QString());
         act->setCheckable(true);
-        connect(act, &QAction::triggered, this, [this, h] { setHeatScale(float(h) / 255.0f); });
+        connect(act, &QAction::triggered, &state_,
+                [this, h] { state_.setHeatScale(float(h) / 255.0f); });
         heat_actions_.push_back(act);
         heat_menu_->addAction(act);
     }
@@ -69,7 +73,8 @@ CompareControls::CompareControls(QWidget* parent) : QObject(parent) {
     for (const int t : kThresholds) {
         QAction* act = thresholds->addAction(QString());
         act->setCheckable(true);
-        connect(act, &QAction::triggered, this, [this, t] { setThreshold(float(t) / 255.0f); });
+        connect(act, &QAction::triggered, &state_,
+                [this, t] { state_.setThreshold(float(t) / 255.0f); });
         threshold_actions_.push_back(act);
         threshold_menu_->addAction(act);
     }
@@ -86,6 +91,8 @@ CompareControls::CompareControls(QWidget* parent) : QObject(parent) {
         tangent_actions_.push_back(act);
         side_tangents_->addAction(act);
     }
+    connect(&state_, &CompareState::changed, this, &CompareControls::sync);
+    connect(&state_, &CompareState::offerChanged, this, &CompareControls::sync);
     sync();
 }
 
@@ -101,61 +108,6 @@ void CompareControls::addToToolBar(QToolBar* bar) {
     bar->addWidget(mode_button_);
     bar->addWidget(side_button_);
     retranslate();
-}
-
-void CompareControls::setMode(ViewportMode mode) {
-    state_.mode = mode;
-    sync();
-    Q_EMIT changed();
-}
-
-void CompareControls::setSide(SideB side, std::uint32_t view) {
-    state_.side = side;
-    state_.view = view;
-    sync();
-    Q_EMIT changed();
-}
-
-void CompareControls::chooseSide(SideB side, std::uint32_t view) {
-    // Choosing what to compare with means comparing: from Raster or Ray traced the
-    // viewport goes to Split (as it does when another file is loaded as side B).
-    if (!state_.comparing()) state_.mode = ViewportMode::Split;
-    setSide(side, view);
-}
-
-void CompareControls::setDivider(float fraction) {
-    state_.divider = fraction;
-    Q_EMIT changed();
-}
-
-void CompareControls::setHeatScale(float heat_max) {
-    state_.heat_max = heat_max;
-    sync();
-    Q_EMIT changed();
-}
-
-void CompareControls::setThreshold(float threshold) {
-    state_.threshold = threshold;
-    sync();
-    Q_EMIT changed();
-}
-
-void CompareControls::setRayTracing(bool available) {
-    mode_actions_[static_cast<std::size_t>(ViewportMode::RayTraced)]->setEnabled(available);
-    side_rays_->setEnabled(available);
-    // Without rays, a comparison starts against the normal view.
-    if (!available && state_.side == SideB::RayTraced) {
-        state_.side = SideB::OtherView;
-        if (const auto normal = ViewCatalog::viewId(QStringLiteral("normal")))
-            state_.view = *normal;
-    }
-    sync();
-}
-
-void CompareControls::setOtherFile(const QString& name, std::optional<TangentMethod> tangents) {
-    other_file_ = name;
-    other_tangents_ = name.isEmpty() ? std::nullopt : tangents;
-    sync();
 }
 
 QString CompareControls::tangentMethodLabel(TangentMethod method) {
@@ -175,23 +127,29 @@ QString CompareControls::tangentMethodName(TangentMethod method) {
 }
 
 void CompareControls::sync() {
-    mode_actions_[static_cast<std::size_t>(state_.mode)]->setChecked(true);
-    side_rays_->setChecked(state_.side == SideB::RayTraced);
-    const bool file = state_.side == SideB::OtherFile;
-    side_file_->setChecked(file && !other_tangents_);
+    const ViewportComparison& c = state_.comparison();
+    const SideBOffer& offer = state_.offer();
+    mode_actions_[static_cast<std::size_t>(ViewportMode::RayTraced)]->setEnabled(offer.ray_tracing);
+    side_rays_->setEnabled(offer.ray_tracing);
+    mode_actions_[static_cast<std::size_t>(c.mode)]->setChecked(true);
+    side_rays_->setChecked(c.side == SideB::RayTraced);
+    const bool file = c.side == SideB::OtherFile;
+    side_file_->setChecked(file && !offer.tangents);
     for (std::size_t i = 0; i < tangent_actions_.size(); ++i)
-        tangent_actions_[i]->setChecked(file && other_tangents_ == kAllTangentMethods[i]);
+        tangent_actions_[i]->setChecked(file && offer.tangents == kAllTangentMethods[i]);
     const std::vector<ViewEntry> views = ViewCatalog::views();
     for (std::size_t i = 0; i < views.size(); ++i)
-        view_actions_[i]->setChecked(state_.side == SideB::OtherView && views[i].id == state_.view);
+        view_actions_[i]->setChecked(c.side == SideB::OtherView && views[i].id == c.view);
     for (std::size_t i = 0; i < heat_actions_.size(); ++i)
-        heat_actions_[i]->setChecked(std::lround(state_.heat_max * 255.0f) == kHeatScales[i]);
+        heat_actions_[i]->setChecked(std::lround(c.heat_max * 255.0f) == kHeatScales[i]);
     for (std::size_t i = 0; i < threshold_actions_.size(); ++i)
-        threshold_actions_[i]->setChecked(std::lround(state_.threshold * 255.0f) == kThresholds[i]);
+        threshold_actions_[i]->setChecked(std::lround(c.threshold * 255.0f) == kThresholds[i]);
     retranslate();
 }
 
 void CompareControls::retranslate() {
+    const ViewportComparison& c = state_.comparison();
+    const QString& other_file = state_.offer().file;
     const QString modes[] = {tr("Raster"), tr("Ray traced"), tr("Split (A | B)"),
                              tr("Difference (heat map)")};
     for (std::size_t i = 0; i < mode_actions_.size(); ++i) mode_actions_[i]->setText(modes[i]);
@@ -222,33 +180,32 @@ void CompareControls::retranslate() {
     side_tangents_->setTitle(tr("This File, Tangents Regenerated By"));
     for (std::size_t i = 0; i < tangent_actions_.size(); ++i)
         tangent_actions_[i]->setText(tangentMethodLabel(kAllTangentMethods[i]));
-    side_file_->setText(other_file_.isEmpty() ? tr("Another File…")
-                                              : tr("Another File… (%1)").arg(other_file_));
+    side_file_->setText(other_file.isEmpty() ? tr("Another File…")
+                                             : tr("Another File… (%1)").arg(other_file));
     const std::vector<ViewEntry> views = ViewCatalog::views();
     QString view_label;
     for (std::size_t i = 0; i < views.size(); ++i) {
         view_actions_[i]->setText(views[i].label);
-        if (views[i].id == state_.view) view_label = views[i].label;
+        if (views[i].id == c.view) view_label = views[i].label;
     }
     if (!mode_button_) return;
-    mode_button_->setText(tr("Viewport: %1").arg(modes[static_cast<std::size_t>(state_.mode)]));
+    mode_button_->setText(tr("Viewport: %1").arg(modes[static_cast<std::size_t>(c.mode)]));
     mode_button_->setStatusTip(
         tr("Raster or ray traced frame, or side A (this view, rasterized) against side B with "
            "one camera. Split: drag the divider line (or Ctrl+drag anywhere) to move it."));
-    const QString side = state_.side == SideB::RayTraced ? tr("ray tracer")
-                         : state_.side == SideB::OtherView
+    const QString side = c.side == SideB::RayTraced ? tr("ray tracer")
+                         : c.side == SideB::OtherView
                              ? view_label
-                             : (other_file_.isEmpty() ? tr("no file") : other_file_);
+                             : (other_file.isEmpty() ? tr("no file") : other_file);
     const QString side_text = tr("B: %1").arg(side);
     // A long file name would push the toolbar's last buttons into its overflow menu.
     side_button_->setText(
         side_button_->fontMetrics().elidedText(side_text, Qt::ElideMiddle, kMaxButtonTextWidth));
     const QString side_tip =
-        state_.comparing()
-            ? tr("What side B of the comparison draws: %1").arg(side)
-            : tr("Side B is shown in the Split and Difference modes (Viewport button); "
-                 "choosing it here switches to Split. Now: %1")
-                  .arg(side);
+        c.comparing() ? tr("What side B of the comparison draws: %1").arg(side)
+                      : tr("Side B is shown in the Split and Difference modes (Viewport button); "
+                           "choosing it here switches to Split. Now: %1")
+                            .arg(side);
     side_button_->setToolTip(side_tip);
     side_button_->setStatusTip(side_tip);
 }

@@ -156,7 +156,7 @@ int CullingDock::passRows() const {
 }
 
 void CullingDock::refresh() {
-    const CullSample* s = monitor_.latest();
+    const CullSample* s = monitor_.history().latest();
     if (!s) {
         for (QLabel* v : values_) v->setText(QStringLiteral("—"));
         method_->clear();
@@ -181,7 +181,7 @@ void CullingDock::refresh() {
                          .arg(QString::fromStdString(c.pass))
                          .arg(QString::fromUtf8(m.data(), static_cast<qsizetype>(m.size())))
                          .arg(QString::fromUtf8(simd.data(), static_cast<qsizetype>(simd.size())))
-                         .arg(monitor_.frozen() ? tr(", culling camera frozen") : QString()));
+                         .arg(s->frozen ? tr(", culling camera frozen") : QString()));
     if (s->gpu_visible < 0 || s->cpu_gpu_differences < 0)
         agreement_->setText(tr("CPU/GPU agreement: GPU path off (Culling › Path › GPU)"));
     else if (s->cpu_gpu_differences == 0)
@@ -193,19 +193,12 @@ void CullingDock::refresh() {
                                 .arg(c.visible)
                                 .arg(s->gpu_visible));
 
-    // Rebuild the series from the ring: at most kHistory points, cheap.
-    const auto& h = monitor_.history();
-    QList<QPointF> visible, culled;
-    double top = 1.0;
-    for (std::size_t i = 0; i < h.size(); ++i) {
-        visible << QPointF(static_cast<double>(i), static_cast<double>(h[i].cpu.visible));
-        culled << QPointF(static_cast<double>(i), static_cast<double>(h[i].cpu.culled));
-        top = std::max(top, static_cast<double>(h[i].cpu.total));
-    }
-    visible_series_->replace(visible);
-    culled_series_->replace(culled);
-    x_axis_->setRange(0, static_cast<double>(CullingMonitor::kHistory));
-    y_axis_->setRange(0, top);
+    // Rebuild the series from the ring: at most CullHistory::kCapacity points, cheap.
+    const CullChartSeries series = cull_chart_series(monitor_.history());
+    visible_series_->replace(series.visible);
+    culled_series_->replace(series.culled);
+    x_axis_->setRange(0, static_cast<double>(CullHistory::kCapacity));
+    y_axis_->setRange(0, series.top);
     y_axis_->applyNiceNumbers(); // whole, readable ticks whatever the instance count
 }
 

@@ -1,8 +1,9 @@
 #include "format_values.h"
 
+#include <QCoreApplication>
 #include <QStringList>
 
-namespace sherpa::editor {
+namespace sherpa::editor::format {
 
 namespace {
 constexpr int kReadableDigits = 6;
@@ -15,30 +16,33 @@ QString join_vec(const float* v, int n, int digits) {
 }
 } // namespace
 
-QString Format::number(double v) {
+QString number(double v) {
     return QString::number(v, 'g', kReadableDigits);
 }
 
-QString Format::compact(double v) {
+QString compact(double v) {
     return QString::number(v, 'g', 4);
 }
 
-QString Format::exact(double v) {
+QString exact(double v) {
     return QString::number(v, 'g', kFloatDigits);
 }
 
-QString Format::vec(const float* v, int n) {
+QString vec(const float* v, int n) {
     return join_vec(v, n, kReadableDigits);
 }
 
-QString Format::vecExact(const float* v, int n) {
+QString vecExact(const float* v, int n) {
     return join_vec(v, n, kFloatDigits);
 }
 
-QString Format::bytes(std::uint64_t n) {
-    if (n < 1024) return tr("%1 B").arg(n);
-    if (n < 1024 * 1024) return tr("%1 KiB").arg(static_cast<double>(n) / 1024.0, 0, 'f', 1);
-    return tr("%1 MiB").arg(static_cast<double>(n) / (1024.0 * 1024.0), 0, 'f', 2);
+QString bytes(std::uint64_t n) {
+    if (n < 1024) return QCoreApplication::translate("Format", "%1 B").arg(n);
+    if (n < 1024 * 1024)
+        return QCoreApplication::translate("Format", "%1 KiB")
+            .arg(static_cast<double>(n) / 1024.0, 0, 'f', 1);
+    return QCoreApplication::translate("Format", "%1 MiB")
+        .arg(static_cast<double>(n) / (1024.0 * 1024.0), 0, 'f', 2);
 }
 
 namespace {
@@ -60,34 +64,35 @@ const ComponentName* component_name(std::int32_t t) {
 }
 } // namespace
 
-QString Format::componentType(std::int32_t t) {
+QString componentType(std::int32_t t) {
     const ComponentName* c = component_name(t);
-    return c ? QString::fromLatin1(c->gltf) : tr("unknown (%1)").arg(t);
+    return c ? QString::fromLatin1(c->gltf)
+             : QCoreApplication::translate("Format", "unknown (%1)").arg(t);
 }
 
-QString Format::componentTypeShort(std::int32_t t) {
+QString componentTypeShort(std::int32_t t) {
     const ComponentName* c = component_name(t);
     return c ? QString::fromLatin1(c->unit) : componentType(t);
 }
 
-QString Format::provenance(Provenance p) {
+QString provenance(Provenance p) {
     switch (p) {
     case Provenance::Authored:
-        return tr("authored");
+        return QCoreApplication::translate("Format", "authored");
     case Provenance::Generated:
-        return tr("generated");
+        return QCoreApplication::translate("Format", "generated");
     case Provenance::Defaulted:
-        return tr("defaulted");
+        return QCoreApplication::translate("Format", "defaulted");
     }
     return {};
 }
 
-QString Format::attribute(VertexAttribute a) {
+QString attribute(VertexAttribute a) {
     const std::string_view n = gltf_name(a); // glTF semantics are names, not prose
     return QString::fromUtf8(n.data(), static_cast<qsizetype>(n.size()));
 }
 
-QString Format::alphaMode(AlphaMode m) {
+QString alphaMode(AlphaMode m) {
     switch (m) {
     case AlphaMode::Opaque:
         return QStringLiteral("OPAQUE");
@@ -99,21 +104,23 @@ QString Format::alphaMode(AlphaMode m) {
     return {};
 }
 
-QString Format::roles(std::uint8_t r) {
+QString roles(std::uint8_t r) {
     QStringList parts;
-    if (r & kRoleColor) parts << tr("colour (sRGB)");
-    if (r & kRoleLinear) parts << tr("linear data");
-    if (r & kRoleNormal) parts << tr("normal map");
-    return parts.isEmpty() ? tr("unused") : parts.join(QStringLiteral(", "));
+    if (r & kRoleColor) parts << QCoreApplication::translate("Format", "colour (sRGB)");
+    if (r & kRoleLinear) parts << QCoreApplication::translate("Format", "linear data");
+    if (r & kRoleNormal) parts << QCoreApplication::translate("Format", "normal map");
+    return parts.isEmpty() ? QCoreApplication::translate("Format", "unused")
+                           : parts.join(QStringLiteral(", "));
 }
 
-QString Format::primitiveMode(PrimitiveMode m) {
+QString primitiveMode(PrimitiveMode m) {
     const std::string_view n = to_string(m);
     return QString::fromUtf8(n.data(), static_cast<qsizetype>(n.size()));
 }
 
-QString Format::yesNo(bool b) {
-    return b ? tr("yes") : tr("no");
+QString yesNo(bool b) {
+    return b ? QCoreApplication::translate("Format", "yes")
+             : QCoreApplication::translate("Format", "no");
 }
 
-} // namespace sherpa::editor
+} // namespace sherpa::editor::format

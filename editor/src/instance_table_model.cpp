@@ -42,8 +42,8 @@ QVariant InstanceTableModel::data(const QModelIndex& index, int role) const {
             ? double(glm::vec4(r.rotation.x, r.rotation.y, r.rotation.z, r.rotation.w)[c - RX])
             : double(r.scale[c - SX]);
     if (role == Qt::DisplayRole)
-        return c == RowColumn ? QString::number(r.file_row) : Format::number(value);
-    if (role == Qt::ToolTipRole && c != RowColumn) return Format::exact(value);
+        return c == RowColumn ? QString::number(r.file_row) : format::number(value);
+    if (role == Qt::ToolTipRole && c != RowColumn) return format::exact(value);
     if (role == Qt::TextAlignmentRole) return int(Qt::AlignRight | Qt::AlignVCenter);
     return {};
 }

@@ -5,7 +5,6 @@
 #include <QChartView>
 #include <QComboBox>
 #include <QEvent>
-#include <QFile>
 #include <QFileDialog>
 #include <QHeaderView>
 #include <QLabel>
@@ -16,11 +15,10 @@
 #include <QTabWidget>
 #include <QTableView>
 
-#include <sherpa/lab/report_export.h>
-
 #include "editor_context.h"
 #include "lab_chart.h"
 #include "lab_runner.h"
+#include "lab_session.h"
 #include "lab_table_model.h"
 #include "view_fitting.h"
 
@@ -37,19 +35,15 @@ QTableView* make_table(LabTableModel* model, QWidget* parent) {
     return view;
 }
 
-bool write_text(const QString& path, const std::string& text) {
-    QFile f(path);
-    return f.open(QIODevice::WriteOnly | QIODevice::Truncate) &&
-           f.write(text.data(), qint64(text.size())) == qint64(text.size());
-}
-
 } // namespace
 
 LabDock::LabDock(const EditorContext& context, QWidget* parent)
-    : QDockWidget(parent), context_(context), runner_(new LabRunner(this)) {
+    : QDockWidget(parent), context_(context), session_(new LabSession(context, this)) {
     setObjectName(QStringLiteral("labDock"));
     methods_ = new LabTableModel(this);
+    methods_->setObjectName(QStringLiteral("labMethods"));
     failures_ = new LabTableModel(this);
+    failures_->setObjectName(QStringLiteral("labFailures"));
     categories_ = new LabTableModel(this);
     findings_ = new LabTableModel(this);
     tabs_ = new QTabWidget(this);
@@ -57,18 +51,19 @@ LabDock::LabDock(const EditorContext& context, QWidget* parent)
     tabs_->addTab(buildBudgetTab(), QString());
     setWidget(tabs_);
 
-    connect(runner_, &LabRunner::progress, this, [this](int done, int total) {
+    LabRunner* runner = &session_->runner();
+    connect(runner, &LabRunner::progress, this, [this](int done, int total) {
         progress_->setRange(0, std::max(total, 1));
         progress_->setValue(done);
     });
-    connect(runner_, &LabRunner::finished, this, &LabDock::showReport);
-    connect(runner_, &LabRunner::budgetFinished, this, &LabDock::showBudget);
-    connect(runner_, &LabRunner::failed, this, [this](const QString& error) {
+    connect(session_, &LabSession::reportChanged, this, &LabDock::showReport);
+    connect(session_, &LabSession::budgetChanged, this, &LabDock::showBudget);
+    connect(runner, &LabRunner::failed, this, [this](const QString& error) {
         setBusy(false);
         status_->setText(tr("The Lab could not run: %1").arg(error));
         budget_status_->setText(status_->text());
     });
-    connect(runner_, &LabRunner::cancelled, this, [this] {
+    connect(runner, &LabRunner::cancelled, this, [this] {
         setBusy(false);
         status_->setText(tr("Cancelled."));
     });
@@ -77,7 +72,11 @@ LabDock::LabDock(const EditorContext& context, QWidget* parent)
     onSceneChanged();
 }
 
-LabDock::~LabDock() = default; // the runner cancels and waits for its worker
+LabDock::~LabDock() = default; // the session's runner cancels and waits for its worker
+
+LabRunner& LabDock::runner() const {
+    return session_->runner();
+}
 
 QWidget* LabDock::buildMethodsTab() {
     auto* page = new QWidget(this);
@@ -98,6 +97,7 @@ QWidget* LabDock::buildMethodsTab() {
     chart_view_->setMinimumHeight(300);
     tables_ = new QTabWidget(page);
     methods_view_ = make_table(methods_, tables_);
+    methods_view_->setObjectName(QStringLiteral("labMethodsView"));
     // Method, time and the chart's error (the first figure) before the parameters.
     show_columns_first(methods_view_->horizontalHeader(), {0, 2, 3});
     tables_->addTab(methods_view_, QString());
@@ -128,15 +128,22 @@ QWidget* LabDock::buildMethodsTab() {
     layout->addLayout(exports);
 
     connect(run_, &QPushButton::clicked, this, [this] { run(family_->currentData().toString()); });
-    connect(cancel_, &QPushButton::clicked, this, &LabDock::cancel);
+    connect(cancel_, &QPushButton::clicked, session_, &LabSession::cancel);
     connect(methods_view_, &QTableView::doubleClicked, this,
             [this](const QModelIndex& index) { apply(std::size_t(index.row())); });
-    connect(export_csv_, &QPushButton::clicked, this,
-            [this] { exportDialog(tr("CSV (*.csv)"), &LabDock::exportCsv); });
-    connect(export_svg_, &QPushButton::clicked, this,
-            [this] { exportDialog(tr("SVG (*.svg)"), &LabDock::exportSvg); });
-    connect(export_png_, &QPushButton::clicked, this,
-            [this] { exportDialog(tr("PNG (*.png)"), &LabDock::exportPng); });
+    connect(export_csv_, &QPushButton::clicked, this, [this] {
+        exportDialog(tr("CSV (*.csv)"), [this](const QString& path) {
+            return exported(session_->exportCsv(path), path);
+        });
+    });
+    connect(export_svg_, &QPushButton::clicked, this, [this] {
+        exportDialog(tr("SVG (*.svg)"), [this](const QString& path) {
+            return exported(session_->exportSvg(path), path);
+        });
+    });
+    connect(export_png_, &QPushButton::clicked, this, [this] {
+        exportDialog(tr("PNG (*.png)"), [this](const QString& path) { return exportPng(path); });
+    });
     return page;
 }
 
@@ -182,19 +189,19 @@ void LabDock::retranslate() {
            "clicking them changes nothing.");
     chart_view_->setToolTip(apply_tip);
     methods_view_->setToolTip(apply_tip);
-    if (report_) fillReport();
-    if (budget_) fillBudget();
+    if (session_->report()) fillReport();
+    if (session_->budget()) fillBudget();
 }
 
 void LabDock::fillReport() {
-    fill_methods(*methods_, *report_);
-    fill_failures(*failures_, *report_);
+    fill_methods(*methods_, *session_->report());
+    fill_failures(*failures_, *session_->report());
     refreshMethodInUse();
 }
 
 void LabDock::fillBudget() {
-    fill_budget_categories(*categories_, *budget_);
-    fill_budget_findings(*findings_, *budget_);
+    fill_budget_categories(*categories_, *session_->budget());
+    fill_budget_findings(*findings_, *session_->budget());
 }
 
 void LabDock::changeEvent(QEvent* e) {
@@ -215,16 +222,7 @@ void LabDock::setBusy(bool busy) {
 }
 
 void LabDock::onSceneChanged() {
-    // Numbers of another scene would lie about this one.
-    cancel();
-    report_.reset();
-    budget_.reset();
-    methods_->clear();
-    failures_->clear();
-    categories_->clear();
-    findings_->clear();
-    clear_lab_chart(*chart_, labels_);
-    chart_->setTitle(QString());
+    // The session dropped the reports (showReport(), showBudget() cleared the tables).
     const bool scene = context_.scene() != nullptr;
     status_->setText(scene ? tr("Pick a family and run it on %1.").arg(context_.sceneSpec())
                            : tr("Open a scene to measure its methods."));
@@ -240,7 +238,7 @@ void LabDock::run(const QString& family) {
     status_->setText(tr("Running %1 on %2…").arg(family, context_.sceneSpec()));
     progress_->setRange(0, 0);
     setBusy(true);
-    runner_->start(family, context_.sceneSpec());
+    session_->run(family);
 }
 
 void LabDock::runBudget() {
@@ -248,61 +246,63 @@ void LabDock::runBudget() {
     budget_status_->setText(tr("Computing the budget of %1…").arg(context_.sceneSpec()));
     setBusy(true);
     progress_->setRange(0, 0);
-    runner_->startBudget(context_.sharedScene());
+    session_->runBudget();
 }
 
-void LabDock::cancel() {
-    runner_->cancel();
-}
-
-void LabDock::showReport(std::shared_ptr<const lab::FamilyReport> report) {
+void LabDock::showReport() {
     setBusy(false);
-    report_ = std::move(report);
+    const lab::FamilyReport* report = session_->report();
+    if (!report) {
+        methods_->clear();
+        failures_->clear();
+        clear_lab_chart(*chart_, labels_);
+        chart_->setTitle(QString());
+        return;
+    }
     QStringList lines{tr("%1 against %2; time in %3")
-                          .arg(QString::fromStdString(report_->family),
-                               QString::fromStdString(report_->reference),
-                               QString::fromStdString(report_->time_unit))};
-    for (const std::string& n : report_->notes) lines << QString::fromStdString(n);
+                          .arg(QString::fromStdString(report->family),
+                               QString::fromStdString(report->reference),
+                               QString::fromStdString(report->time_unit))};
+    for (const std::string& n : report->notes) lines << QString::fromStdString(n);
     lines << tr("The line joins the Pareto front; the method in use is ringed.");
     status_->setText(lines.join(QLatin1Char('\n')));
     fillReport();
 }
 
-void LabDock::showBudget(std::shared_ptr<const lab::BudgetReport> report) {
+void LabDock::showBudget() {
     setBusy(false);
-    budget_ = std::move(report);
+    const lab::BudgetReport* budget = session_->budget();
+    if (!budget) {
+        categories_->clear();
+        findings_->clear();
+        return;
+    }
     fillBudget();
     QStringList lines;
-    for (const std::string& n : budget_->notes) lines << QString::fromStdString(n);
+    for (const std::string& n : budget->notes) lines << QString::fromStdString(n);
     budget_status_->setText(lines.join(QLatin1Char('\n')));
 }
 
 void LabDock::refreshMethodInUse() {
-    if (!report_) return;
-    const QString family = QString::fromStdString(report_->family);
+    const lab::FamilyReport* report = session_->report();
+    if (!report) return;
+    const QString family = QString::fromStdString(report->family);
     const QString in_use = in_use_ ? in_use_(family) : QString();
-    for (QScatterSeries* s : show_lab_report(*chart_, *report_, in_use, labels_))
+    for (QScatterSeries* s : show_lab_report(*chart_, *report, in_use, labels_))
         connect(s, &QScatterSeries::clicked, this,
                 [this, s] { apply(std::size_t(s->property("method").toULongLong())); });
 }
 
 void LabDock::apply(std::size_t method) {
-    if (!report_ || method >= report_->methods.size()) return;
-    Q_EMIT applyRequested(QString::fromStdString(report_->family),
-                          QString::fromStdString(report_->methods[method].method.name));
+    const lab::FamilyReport* report = session_->report();
+    if (!report || method >= report->methods.size()) return;
+    Q_EMIT applyRequested(QString::fromStdString(report->family),
+                          QString::fromStdString(report->methods[method].method.name));
     refreshMethodInUse();
 }
 
-bool LabDock::exportCsv(const QString& path) {
-    return exported(report_ && write_text(path, lab::report_csv(*report_)), path);
-}
-
-bool LabDock::exportSvg(const QString& path) {
-    return exported(report_ && write_text(path, lab::report_svg(*report_)), path);
-}
-
 bool LabDock::exportPng(const QString& path) {
-    return exported(report_ && chart_view_->grab().save(path, "PNG"), path);
+    return exported(session_->report() && chart_view_->grab().save(path, "PNG"), path);
 }
 
 bool LabDock::exported(bool ok, const QString& path) {
@@ -310,10 +310,11 @@ bool LabDock::exported(bool ok, const QString& path) {
     return ok;
 }
 
-void LabDock::exportDialog(const QString& filter, bool (LabDock::*write)(const QString&)) {
+void LabDock::exportDialog(const QString& filter,
+                           const std::function<bool(const QString&)>& write) {
     const QString path =
         QFileDialog::getSaveFileName(this, tr("Export the Lab report"), {}, filter);
-    if (!path.isEmpty()) (this->*write)(path);
+    if (!path.isEmpty()) write(path);
 }
 
 } // namespace sherpa::editor

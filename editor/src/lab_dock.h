@@ -1,17 +1,14 @@
 #pragma once
-// The Lab dock: runs a method family of engine/lab on the loaded scene off the UI
-// thread (LabRunner) and shows time against error (chart, Pareto front, the method in
-// use ringed), the numbers and where each method failed; a Budget tab shows what
-// `sherpa-cli budget` prints. Exports CSV and SVG from the engine's writers (the same
-// bytes as `sherpa-cli lab --csv` / `--chart`) and the chart as shown in PNG.
-// Context in (the scene, the method in use), actions out (applyRequested).
+// The Lab dock: the widgets over a LabSession, which runs a method family of engine/lab
+// on the loaded scene off the UI thread (LabRunner). It shows time against error (chart, Pareto
+// front, the method in use ringed), the numbers and where each method failed; a Budget tab shows
+// what `sherpa-cli budget` prints. Exports CSV and SVG from the engine's writers (the same bytes as
+// `sherpa-cli lab --csv` / `--chart`) and the chart as shown in PNG. Context in (the scene, the
+// method in use), actions out (applyRequested). The tests find the tables' models and the chart as
+// children (objectName, findChild).
 #include <QDockWidget>
 
 #include <functional>
-#include <memory>
-
-#include <sherpa/lab/budget.h>
-#include <sherpa/lab/family.h>
 
 #include "lab_chart.h"
 
@@ -28,6 +25,7 @@ namespace sherpa::editor {
 
 class EditorContext;
 class LabRunner;
+class LabSession;
 class LabTableModel;
 
 class LabDock : public QDockWidget {
@@ -39,24 +37,16 @@ public:
     // The viewport's method of `family` now ("pvertex"; empty where the editor has
     // no switch for that family), asked whenever the chart is drawn.
     void setMethodInUse(std::function<QString(const QString& family)> in_use);
-    // Runs `family` on the scene in the context (cancels a run in flight).
+    void refreshMethodInUse();
+    // Runs `family` on the scene in the context (cancels a run in flight), as the
+    // Run button does.
     void run(const QString& family);
     void runBudget();
-    void cancel();
-    void refreshMethodInUse();
-
-    const lab::FamilyReport* report() const { return report_.get(); }
-    const lab::BudgetReport* budget() const { return budget_.get(); }
-    LabRunner& runner() const { return *runner_; }
-    LabTableModel& methodsModel() const { return *methods_; }
-    QTableView* methodsView() const { return methods_view_; }
-    LabTableModel& failuresModel() const { return *failures_; }
-    QChart* chart() const { return chart_; }
-
-    // The engine's CSV / SVG of the report shown; the chart as shown. False (and a
-    // message in the status line) when there is no report or the file can't be written.
-    bool exportCsv(const QString& path);
-    bool exportSvg(const QString& path);
+    // The runs and their reports (the tables and the chart show them).
+    LabSession& session() const { return *session_; }
+    LabRunner& runner() const;
+    // The chart as shown. False (and a message in the status line) when there is no
+    // report or the file can't be written.
     bool exportPng(const QString& path);
 
 Q_SIGNALS:
@@ -71,22 +61,21 @@ private:
     QWidget* buildBudgetTab();
     void retranslate();
     void onSceneChanged();
-    void showReport(std::shared_ptr<const lab::FamilyReport> report);
-    void showBudget(std::shared_ptr<const lab::BudgetReport> report);
-    // The tables of report_ (and its chart) / budget_, in the current language.
+    void showReport(); // the session's report (none: cleared)
+    void showBudget();
+    // The tables of the report (and its chart) / budget, in the current language.
     void fillReport();
     void fillBudget();
     void setBusy(bool busy);
     void apply(std::size_t method);
-    void exportDialog(const QString& filter, bool (LabDock::*write)(const QString&));
+    // Asks for a path (File dialog) and writes it with `write`.
+    void exportDialog(const QString& filter, const std::function<bool(const QString&)>& write);
     // An export's answer: a failure (no report, an unwritable path) says so in the status.
     bool exported(bool ok, const QString& path);
 
     const EditorContext& context_;
-    LabRunner* runner_;
+    LabSession* session_;
     std::function<QString(const QString&)> in_use_;
-    std::shared_ptr<const lab::FamilyReport> report_;
-    std::shared_ptr<const lab::BudgetReport> budget_;
     QTabWidget* tabs_ = nullptr;
     QComboBox* family_ = nullptr;
     QPushButton* run_ = nullptr;

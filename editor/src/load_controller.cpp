@@ -59,22 +59,23 @@ void LoadController::connectActions(const WindowActions& a, TextureDock& texture
     connect(a.recent, &QMenu::aboutToShow, this, [this, recent = a.recent, clear = a.clear_recent] {
         rebuildRecentMenu(*recent, *clear);
     });
-    connect(a.clear_recent, &QAction::triggered, this, [this] { settings_.clearRecentFiles(); });
+    connect(a.clear_recent, &QAction::triggered, this,
+            [this] { settings_.reset(setting::kRecentFiles); });
     for (QAction* act : a.builtin_actions)
         connect(act, &QAction::triggered, this, [this, act] { openScene(act->data().toString()); });
     for (QAction* act : a.quality_actions)
         connect(act, &QAction::triggered, this,
-                [this, act] { settings_.setTextureQuality(act->data().toString()); });
+                [this, act] { settings_.set(setting::kTextureQuality, act->data().toString()); });
     connect(a.cache_dir, &QAction::triggered, this, [this] {
         const QString dir = QFileDialog::getExistingDirectory(
-            &window_, tr("Texture cache directory"), settings_.cacheDirectory());
-        if (!dir.isEmpty()) settings_.setCacheDirectory(dir);
+            &window_, tr("Texture cache directory"), settings_.get(setting::kCacheDirectory));
+        if (!dir.isEmpty()) settings_.set(setting::kCacheDirectory, dir);
     });
     connect(&textures, &TextureDock::clearCacheRequested, this, &LoadController::clearTextureCache);
     connect(&textures, &TextureDock::recompressRequested, this, &LoadController::recompressTexture);
     connect(&textures, &TextureDock::openCacheFolderRequested, this, [this] {
-        QDir().mkpath(settings_.cacheDirectory());
-        QDesktopServices::openUrl(QUrl::fromLocalFile(settings_.cacheDirectory()));
+        QDir().mkpath(settings_.get(setting::kCacheDirectory));
+        QDesktopServices::openUrl(QUrl::fromLocalFile(settings_.get(setting::kCacheDirectory)));
     });
 }
 
@@ -96,9 +97,9 @@ void LoadController::deviceKnown(const std::optional<tex::TextureTarget>& target
 tex::PipelineOptions LoadController::textureOptions() const {
     // Textures are prepared on the loader thread with the cache settings of this moment.
     tex::PipelineOptions options;
-    const QString dir = settings_.cacheDirectory();
+    const QString dir = settings_.get(setting::kCacheDirectory);
     if (!dir.isEmpty()) options.cache_dir = std::filesystem::path(dir.toStdString());
-    const QString quality = settings_.textureQuality();
+    const QString quality = settings_.get(setting::kTextureQuality);
     options.bc7_level = quality == QLatin1String("fast")   ? tex::kBc7MinLevel
                         : quality == QLatin1String("best") ? tex::kBc7MaxLevel
                                                            : tex::kBc7DefaultLevel;
@@ -197,7 +198,7 @@ void LoadController::onLoadFailed(const QString& spec, const QString& error) {
 
 void LoadController::rebuildRecentMenu(QMenu& menu, QAction& clear) {
     menu.clear();
-    const QStringList files = settings_.recentFiles();
+    const QStringList files = settings_.get(setting::kRecentFiles);
     if (files.isEmpty()) menu.addAction(tr("(no recent files)"))->setEnabled(false);
     for (const QString& f : files)
         connect(menu.addAction(f), &QAction::triggered, this, [this, f] { openScene(f); });
@@ -213,7 +214,7 @@ void LoadController::openFileDialog() {
 }
 
 int LoadController::clearTextureCache() {
-    QDir dir(settings_.cacheDirectory());
+    QDir dir(settings_.get(setting::kCacheDirectory));
     int removed = 0;
     for (const QString& name : dir.entryList({QStringLiteral("*.ktx2")}, QDir::Files))
         removed += dir.remove(name) ? 1 : 0;

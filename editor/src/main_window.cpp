@@ -21,6 +21,7 @@
 #include "acceleration_dock.h"
 #include "compare_controller.h"
 #include "compare_controls.h"
+#include "compare_state.h"
 #include "culling_dock.h"
 #include "culling_monitor.h"
 #include "difference_legend.h"
@@ -82,7 +83,8 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent, bool ray_tracin
     centre_layout->addWidget(viewport_container_, 1);
     centre_layout->addWidget(legend_);
     setCentralWidget(centre);
-    compare_controls_ = new CompareControls(this);
+    compare_state_ = new CompareState(this);
+    compare_controls_ = new CompareControls(*compare_state_, this);
 
     progress_ = new QProgressBar(this);
     progress_->setObjectName(QStringLiteral("loadProgress"));
@@ -107,10 +109,10 @@ MainWindow::MainWindow(QVulkanInstance* vulkan, QWidget* parent, bool ray_tracin
     frames_->start(vulkan_, ray_tracing_asked_);
 
     resize(1600, 1000);
-    restoreGeometry(settings_.geometry());
-    restoreState(settings_.windowState());
-    views_->setDebugView(settings_.lastView(), false);
-    QString language = settings_.language();
+    restoreGeometry(settings_.get(setting::kGeometry));
+    restoreState(settings_.get(setting::kWindowState));
+    views_->setDebugView(settings_.get(setting::kLastView), false);
+    QString language = settings_.get(setting::kLanguage);
     // The system default is not a choice: leave the setting empty so it follows the system.
     if (language.isEmpty()) language = Translations::systemDefault();
     setLanguage(language, false);
@@ -140,14 +142,14 @@ void MainWindow::createControllers() {
                                 *progress_, *cancel_, *this, device_pending);
     views_ = new ViewController(context_, settings_, *culling_, docks_, *viewport_, *a_, *frames_,
                                 *this);
-    compare_ = new CompareController(context_, *compare_controls_, *legend_, *docks_.log,
-                                     *viewport_, *loads_, *frames_, *this);
+    compare_ = new CompareController(context_, *compare_state_, *compare_controls_, *legend_,
+                                     *docks_.log, *viewport_, *loads_, *frames_, *this);
     frames_->setFrameSource([this] {
         ViewportRequest frame;
         const QSize pixels = viewport_->pixelSize();
         frame.request.width = static_cast<std::uint32_t>(pixels.width());
         frame.request.height = static_cast<std::uint32_t>(pixels.height());
-        frame.request.camera = gpu::explicit_camera(viewport_->camera().spec());
+        frame.request.camera = gpu::explicit_camera(viewport_->camera().pose().spec());
         views_->fill(frame.request);
         selection_->fill(frame);
         motion_->fill(frame.request);
@@ -250,7 +252,7 @@ void MainWindow::resetLayout() {
 
 bool MainWindow::setLanguage(const QString& code, bool remember) {
     if (!translations_.install(code)) return false;
-    if (remember) settings_.setLanguage(code);
+    if (remember) settings_.set(setting::kLanguage, code);
     // Qt posts LanguageChange (changeEvent retranslates again then); doing it now makes
     // the switch visible in the same event-loop turn.
     retranslate();
@@ -290,7 +292,10 @@ QImage MainWindow::screenshot() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
-    if (remember_layout_) settings_.saveLayout(saveGeometry(), saveState());
+    if (remember_layout_) {
+        settings_.set(setting::kGeometry, saveGeometry());
+        settings_.set(setting::kWindowState, saveState());
+    }
     loads_->cancelLoad();
     QMainWindow::closeEvent(e);
 }

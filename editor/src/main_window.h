@@ -24,6 +24,7 @@ class QVulkanInstance;
 namespace sherpa::editor {
 
 class CompareControls;
+class CompareState;
 class CompareController;
 class DifferenceLegend;
 class CullingMonitor;
@@ -93,6 +94,7 @@ private:
     QLabel* scene_label_ = nullptr;
     QProgressBar* progress_ = nullptr; // the load's, with its Cancel button
     QPushButton* cancel_ = nullptr;
+    CompareState* compare_state_ = nullptr;       // the comparison the controls change
     CompareControls* compare_controls_ = nullptr; // on the toolbar and in the View menu
     DifferenceLegend* legend_ = nullptr;          // beside the viewport, in Difference mode
     std::unique_ptr<WindowActions> a_;            // every QAction, built in main_window_menus.cpp

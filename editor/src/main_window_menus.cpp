@@ -121,7 +121,7 @@ void MainWindow::createActions() {
         QAction* act = a.quality_group->addAction(QString());
         act->setCheckable(true);
         act->setData(QString::fromLatin1(q));
-        act->setChecked(settings_.textureQuality() == QLatin1String(q));
+        act->setChecked(settings_.get(setting::kTextureQuality) == QLatin1String(q));
         a.quality_actions.push_back(act);
     }
     a.density_group = new QActionGroup(this);
@@ -129,7 +129,7 @@ void MainWindow::createActions() {
         QAction* act = a.density_group->addAction(QString::number(checks));
         act->setCheckable(true);
         act->setData(checks);
-        act->setChecked(settings_.checkerDensity() == checks);
+        act->setChecked(settings_.get(setting::kCheckerDensity) == checks);
         a.density_actions.push_back(act);
     }
     for (const char* spec : kBuiltins) {

@@ -32,7 +32,7 @@ void MaterialFieldsModel::appendMicrofacetRows(const gpu::MaterialExtensionPlace
     if (const auto& a = m.anisotropy; a && place.anisotropy != gpu::kNoExtension) {
         add(place.anisotropy, offsetof(gpu::GPUAnisotropyBlock, factors), "ext.anisotropy.factors",
             "KHR_materials_anisotropy.anisotropyStrength, cos, sin (anisotropyRotation)", "vec4",
-            Format::vec(
+            format::vec(
                 glm::vec4(a->strength, std::cos(a->rotation), std::sin(a->rotation), 0.0f)));
         add(place.anisotropy, offsetof(gpu::GPUAnisotropyBlock, texture), "ext.anisotropy.texture",
             "KHR_materials_anisotropy.anisotropyTexture", "uint",
@@ -44,7 +44,7 @@ void MaterialFieldsModel::appendMicrofacetRows(const gpu::MaterialExtensionPlace
             "KHR_materials_iridescence.iridescenceFactor, iridescenceIor, "
             "iridescenceThicknessMinimum, iridescenceThicknessMaximum",
             "vec4",
-            Format::vec(glm::vec4(i->factor, i->ior, i->thickness_minimum, i->thickness_maximum)));
+            format::vec(glm::vec4(i->factor, i->ior, i->thickness_minimum, i->thickness_maximum)));
         add(place.iridescence, offsetof(gpu::GPUIridescenceBlock, texture),
             "ext.iridescence.texture", "KHR_materials_iridescence.iridescenceTexture", "uint",
             i->texture.present() ? chain(i->texture.texture) : tr("default texture"), &i->texture);

@@ -98,7 +98,7 @@ void MaterialFieldsModel::buildExtensionRows() {
     if (place.ior != gpu::kNoExtension)
         extension_rows_.push_back({int(place.ior) * word, QStringLiteral("ext.ior"),
                                    QStringLiteral("KHR_materials_ior.ior"), QStringLiteral("float"),
-                                   Format::number(*m.ior), -1});
+                                   format::number(*m.ior), -1});
     // One row per texture field: its bindless slot's source chain, or the default.
     auto texture_row = [this](int offset, const char* field, const char* property,
                               const TextureSlot& slot) {
@@ -115,7 +115,7 @@ void MaterialFieldsModel::buildExtensionRows() {
              QStringLiteral("ext.specular.color_factor"),
              QStringLiteral("KHR_materials_specular.specularColorFactor, specularFactor"),
              QStringLiteral("vec4"),
-             Format::vec(glm::vec4(sp.specular_color_factor, sp.specular_factor)), -1});
+             format::vec(glm::vec4(sp.specular_color_factor, sp.specular_factor)), -1});
         texture_row(base + int(offsetof(gpu::GPUSpecularBlock, specular_tex)),
                     "ext.specular.specular_tex", "KHR_materials_specular.specularTexture",
                     sp.specular);
@@ -132,7 +132,7 @@ void MaterialFieldsModel::buildExtensionRows() {
              QStringLiteral("KHR_materials_clearcoat.clearcoatFactor, clearcoatRoughnessFactor, "
                             "clearcoatNormalTexture.scale"),
              QStringLiteral("vec4"),
-             Format::vec(glm::vec4(cc.factor, cc.roughness_factor, cc.normal_scale, 0.0f)), -1});
+             format::vec(glm::vec4(cc.factor, cc.roughness_factor, cc.normal_scale, 0.0f)), -1});
         texture_row(base + int(offsetof(gpu::GPUClearcoatBlock, clearcoat_tex)),
                     "ext.clearcoat.clearcoat_tex", "KHR_materials_clearcoat.clearcoatTexture",
                     cc.clearcoat);
@@ -149,7 +149,7 @@ void MaterialFieldsModel::buildExtensionRows() {
         extension_rows_.push_back(
             {base + int(offsetof(gpu::GPUSheenBlock, factors)), QStringLiteral("ext.sheen.factors"),
              QStringLiteral("KHR_materials_sheen.sheenColorFactor, sheenRoughnessFactor"),
-             QStringLiteral("vec4"), Format::vec(glm::vec4(sh.color_factor, sh.roughness_factor)),
+             QStringLiteral("vec4"), format::vec(glm::vec4(sh.color_factor, sh.roughness_factor)),
              -1});
         texture_row(base + int(offsetof(gpu::GPUSheenBlock, color_tex)), "ext.sheen.color_tex",
                     "KHR_materials_sheen.sheenColorTexture", sh.color);
@@ -221,7 +221,7 @@ QVariant MaterialFieldsModel::specGlossData(int row, int column) const {
     case ValueColumn:
         if (row == 0)
             return QStringLiteral("%1 (specular-glossiness)").arg(gpu::kWorkflowSpecularGlossiness);
-        if (row == 1) return Format::vec(glm::vec4(sg.specular_factor, sg.glossiness_factor));
+        if (row == 1) return format::vec(glm::vec4(sg.specular_factor, sg.glossiness_factor));
         return sg.specular_glossiness.present() ? QString::number(sg.specular_glossiness.texture)
                                                 : tr("default texture");
     case ChainColumn:
@@ -297,10 +297,10 @@ QVariant MaterialFieldsModel::data(const QModelIndex& index, int role) const {
             24, 24, Qt::KeepAspectRatio, Qt::SmoothTransformation);
     if (role == Qt::ToolTipRole && index.column() == ChainColumn && texture >= 0)
         return tr("Double-click to show this texture in the texture dock");
-    if ((role == Qt::ToolTipRole || role == Format::kExactTextRole) &&
+    if ((role == Qt::ToolTipRole || role == format::kExactTextRole) &&
         index.column() == ValueColumn) { // the value the GPU holds, every digit
-        if (f.type == FieldType::Vec4) return Format::vecExact(read<glm::vec4>(record_, f.offset));
-        if (f.type == FieldType::Float) return Format::exact(read<float>(record_, f.offset));
+        if (f.type == FieldType::Vec4) return format::vecExact(read<glm::vec4>(record_, f.offset));
+        if (f.type == FieldType::Float) return format::exact(read<float>(record_, f.offset));
     }
     if (role != Qt::DisplayRole) return {};
     switch (index.column()) {
@@ -327,9 +327,9 @@ QVariant MaterialFieldsModel::data(const QModelIndex& index, int role) const {
     case ValueColumn:
         switch (f.type) {
         case FieldType::Vec4:
-            return Format::vec(read<glm::vec4>(record_, f.offset));
+            return format::vec(read<glm::vec4>(record_, f.offset));
         case FieldType::Float:
-            return Format::number(read<float>(record_, f.offset));
+            return format::number(read<float>(record_, f.offset));
         case FieldType::TextureIndex: {
             const auto v = read<std::uint32_t>(record_, f.offset);
             return v == kTextureSentinel ? tr("none (0x%1)").arg(v, 8, 16, QLatin1Char('0'))
@@ -338,7 +338,7 @@ QVariant MaterialFieldsModel::data(const QModelIndex& index, int role) const {
         case FieldType::AlphaMode: {
             const auto v = read<std::uint32_t>(record_, f.offset);
             return QStringLiteral("%1 (%2)").arg(v).arg(
-                v <= 2 ? Format::alphaMode(static_cast<AlphaMode>(v)) : QStringLiteral("?"));
+                v <= 2 ? format::alphaMode(static_cast<AlphaMode>(v)) : QStringLiteral("?"));
         }
         case FieldType::Bool:
             return read<std::uint32_t>(record_, f.offset);

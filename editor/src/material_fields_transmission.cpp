@@ -39,7 +39,7 @@ void MaterialFieldsModel::appendTransmissionRows(const gpu::MaterialExtensionPla
     if (const auto& t = m.transmission; t && place.transmission != gpu::kNoExtension) {
         add(place.transmission, offsetof(gpu::GPUTransmissionBlock, factor),
             "ext.transmission.factor", "KHR_materials_transmission.transmissionFactor", "float",
-            Format::number(t->factor));
+            format::number(t->factor));
         add(place.transmission, offsetof(gpu::GPUTransmissionBlock, texture),
             "ext.transmission.texture", "KHR_materials_transmission.transmissionTexture", "uint",
             texture(t->texture), &t->texture);
@@ -48,12 +48,12 @@ void MaterialFieldsModel::appendTransmissionRows(const gpu::MaterialExtensionPla
         const bool infinite = v->attenuation_distance == std::numeric_limits<float>::infinity();
         add(place.volume, offsetof(gpu::GPUVolumeBlock, attenuation), "ext.volume.attenuation",
             "KHR_materials_volume.attenuationColor, attenuationDistance", "vec4",
-            Format::vec(
+            format::vec(
                 glm::vec4(v->attenuation_color, infinite ? 0.0f : v->attenuation_distance)) +
                 (infinite ? tr(" (distance infinite: none)") : QString()));
         add(place.volume, offsetof(gpu::GPUVolumeBlock, thickness_factor),
             "ext.volume.thickness_factor", "KHR_materials_volume.thicknessFactor", "float",
-            Format::number(v->thickness_factor));
+            format::number(v->thickness_factor));
         add(place.volume, offsetof(gpu::GPUVolumeBlock, thickness_tex), "ext.volume.thickness_tex",
             "KHR_materials_volume.thicknessTexture", "uint", texture(v->thickness), &v->thickness);
     }
@@ -63,7 +63,7 @@ void MaterialFieldsModel::appendTransmissionRows(const gpu::MaterialExtensionPla
             "ext.diffuse_transmission.color_factor",
             "KHR_materials_diffuse_transmission.diffuseTransmissionColorFactor, "
             "diffuseTransmissionFactor",
-            "vec4", Format::vec(glm::vec4(d->color_factor, d->factor)));
+            "vec4", format::vec(glm::vec4(d->color_factor, d->factor)));
         add(place.diffuse_transmission, offsetof(gpu::GPUDiffuseTransmissionBlock, texture),
             "ext.diffuse_transmission.texture",
             "KHR_materials_diffuse_transmission.diffuseTransmissionTexture", "uint",
@@ -76,7 +76,7 @@ void MaterialFieldsModel::appendTransmissionRows(const gpu::MaterialExtensionPla
     if (m.dispersion && place.dispersion != gpu::kNoExtension)
         add(place.dispersion, offsetof(gpu::GPUDispersionBlock, dispersion),
             "ext.dispersion.dispersion", "KHR_materials_dispersion.dispersion", "float",
-            Format::number(*m.dispersion));
+            format::number(*m.dispersion));
 }
 
 } // namespace sherpa::editor

@@ -190,7 +190,7 @@ void MeshDock::updateSummary() {
                           .arg(m->source_vertex_count)
                           .arg(elements)
                           .arg(m->material_id)
-                          .arg(Format::bytes(gpu))
+                          .arg(format::bytes(gpu))
                           .arg(m->unwelded ? tr(" (unwelded for flat normals)") : QString()) +
                       compressionText(*context_.sharedScene(), shown_mesh_));
 }
@@ -203,7 +203,7 @@ QString MeshDock::compressionText(const Scene& scene, int mesh) {
         const PrimitiveCompression& c = *p.compression;
         return tr("; %1 %2: %3 → %4 decoded in %5 ms")
             .arg(QString::fromStdString(c.codec), QString::fromStdString(c.modes),
-                 Format::bytes(c.encoded_bytes), Format::bytes(c.decoded_bytes))
+                 format::bytes(c.encoded_bytes), format::bytes(c.decoded_bytes))
             .arg(c.decode_ms, 0, 'f', 2);
     }
     return {};

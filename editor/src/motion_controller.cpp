@@ -15,7 +15,7 @@ MotionController::MotionController(EditorContext& context, TimelineDock& timelin
                                    QObject* parent)
     : QObject(parent), context_(context), timeline_(timeline), culling_(culling), log_(log) {
     connect(&timeline_, &TimelineDock::poseChanged, this, [this, &viewport] {
-        culling_.setPose(timeline_.pose()); // the culling dock follows the motion
+        culling_.setPose(timeline_.playback().pose()); // the culling dock follows the motion
         logPoseOverflow();
         viewport.scheduleFrame();
     });
@@ -31,12 +31,12 @@ void MotionController::showTimelineForScene() {
 }
 
 void MotionController::fill(gpu::FrameRequest& request) const {
-    request.pose = timeline_.pose();
+    request.pose = timeline_.playback().pose();
 }
 
 void MotionController::logPoseOverflow() {
     const Scene* scene = context_.scene();
-    const auto pose = timeline_.pose();
+    const auto pose = timeline_.playback().pose();
     std::vector<std::uint32_t> nodes;
     if (scene && pose) nodes = posed_overflow_nodes(*scene, *pose);
     if (nodes == pose_overflow_logged_) return;
@@ -44,7 +44,7 @@ void MotionController::logPoseOverflow() {
     for (std::uint32_t node : nodes)
         log_.append(LogDock::Level::Warning,
                     tr("At %1 s: %2")
-                        .arg(timeline_.time(), 0, 'g', 4)
+                        .arg(timeline_.playback().clock().time, 0, 'g', 4)
                         .arg(QString::fromStdString(posed_overflow_warning(*scene, node))));
 }
 

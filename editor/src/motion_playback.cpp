@@ -33,6 +33,51 @@ double PlaybackClock::fraction() const {
     return duration() > 0.0 ? (time - start) / duration() : 0.0;
 }
 
+void PlaybackClock::scrub(double seconds) {
+    if (std::isfinite(seconds)) time = std::clamp(seconds, start, end);
+}
+
+void PlaybackClock::play(bool play) {
+    if (play && !playing && !loop && time >= end) time = start;
+    playing = play;
+}
+
+void Playback::setScene(std::shared_ptr<const Scene> scene) {
+    scene_ = std::move(scene);
+    animation_ = -1;
+    clock_.reset(0.0, 0.0);
+    pose_inputs_.reset();
+}
+
+void Playback::selectAnimation(int animation) {
+    animation_ = scene_ && animation >= 0 && animation < static_cast<int>(scene_->animations.size())
+                     ? animation
+                     : -1;
+    if (animation_ >= 0) {
+        const Animation& anim = scene_->animations[static_cast<std::size_t>(animation_)];
+        clock_.reset(anim.start, anim.end);
+    } else {
+        clock_.reset(0.0, 0.0);
+    }
+}
+
+std::vector<double> Playback::keyFractions() const {
+    std::vector<double> out;
+    if (animation_ < 0) return out;
+    const Animation& anim = scene_->animations[static_cast<std::size_t>(animation_)];
+    for (const double t : key_times(anim))
+        out.push_back(anim.end > anim.start ? (t - anim.start) / (anim.end - anim.start) : 0.0);
+    return out;
+}
+
+bool Playback::updatePose(const MorphOverrides& overrides) {
+    PoseInputs inputs{animation_, clock_.time, overrides};
+    if (inputs == pose_inputs_) return false;
+    pose_ = scene_ ? make_pose(*scene_, inputs.animation, inputs.time, inputs.overrides) : nullptr;
+    pose_inputs_ = std::move(inputs);
+    return true;
+}
+
 std::vector<double> key_times(const Animation& animation) {
     std::vector<double> out;
     for (const AnimationSampler& s : animation.samplers)

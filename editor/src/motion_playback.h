@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <sherpa/scene/animation.h>
@@ -27,6 +28,11 @@ struct PlaybackClock {
     bool advance(double seconds);
     // Time as a fraction of the range (0 for an empty range).
     double fraction() const;
+    // Puts the time at `seconds`, clamped to the range; a non-finite time is ignored.
+    void scrub(double seconds);
+    // Plays or pauses; playing again after a non-looping run stopped on the last key
+    // starts from the first.
+    void play(bool play);
 };
 
 // Every key time of every sampler of `animation`, sorted, without repeats.
@@ -41,6 +47,44 @@ using MorphOverrides = std::map<std::uint32_t, std::vector<float>>;
 // so the renderer draws the scene as loaded.
 std::shared_ptr<const Pose> make_pose(const Scene& scene, std::int32_t animation, double time,
                                       const MorphOverrides& overrides);
+
+// One animation of a scene on a clock and the Pose it makes with the morph weight
+// overrides: the timeline's state, its widgets aside. The pose is made again only
+// when what it is made from changed (a new one has the viewport rewrite and redraw it).
+class Playback {
+public:
+    // Another scene (null: none): no animation, no pose made yet. Held while played.
+    void setScene(std::shared_ptr<const Scene> scene);
+    // -1: none. Puts the clock on the animation's key range, at its start, paused.
+    void selectAnimation(int animation);
+    int animation() const { return animation_; }
+    // An animation with a non-empty key range: what play and the slider act on.
+    bool playable() const { return animation_ >= 0 && clock_.duration() > 0.0; }
+    PlaybackClock& clock() { return clock_; }
+    const PlaybackClock& clock() const { return clock_; }
+    // The animation's key times as fractions of its range (the slider's ticks).
+    std::vector<double> keyFractions() const;
+    // Makes the pose of the animation at the clock's time with `overrides`, unless it
+    // was made from these already. Returns whether it made one.
+    bool updatePose(const MorphOverrides& overrides);
+    // The pose to draw now; null: the scene as loaded (no animation, no override).
+    std::shared_ptr<const Pose> pose() const { return pose_; }
+
+private:
+    // What pose_ was made from.
+    struct PoseInputs {
+        int animation = -1;
+        double time = 0.0;
+        MorphOverrides overrides;
+        bool operator==(const PoseInputs&) const = default;
+    };
+
+    std::shared_ptr<const Scene> scene_;
+    int animation_ = -1;
+    PlaybackClock clock_;
+    std::shared_ptr<const Pose> pose_;
+    std::optional<PoseInputs> pose_inputs_; // none: make it
+};
 
 // Whether `node` is a joint of any skin of `scene`.
 bool is_joint(const Scene& scene, std::uint32_t node);

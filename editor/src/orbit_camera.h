@@ -1,13 +1,15 @@
 #pragma once
-// The viewport camera: orbit/pan/dolly around a target, or fly (first person).
-// Plain math, no Qt, so the tests can drive it directly. Produces the engine's
-// camera string convention (sherpa::CameraSpec, reverse-Z, looking down -Z).
+// The viewport camera's input mapping: mouse, wheel and fly keys turned into moves
+// of its OrbitPose (orbit/pan/dolly around a target, or fly first person), and the
+// placements the editor asks for (frame a box, the engine's automatic view, a glTF
+// camera). No Qt, so the tests can drive it directly.
 #include <glm/glm.hpp>
 
 #include <sherpa/core/aabb.h>
-#include <sherpa/scene/camera_spec.h>
 #include <sherpa/scene/framing.h>
 #include <sherpa/scene/scene.h>
+
+#include "orbit_pose.h"
 
 namespace sherpa::editor {
 
@@ -34,29 +36,13 @@ public:
     // Takes a glTF camera's pose and field of view.
     void jumpTo(const Scene& scene, std::size_t placed_camera);
 
-    void setAspect(float aspect) { aspect_ = aspect > 0.0f ? aspect : 1.0f; }
-    glm::vec3 eye() const;
-    glm::vec3 forward() const; // unit, eye -> target
-    glm::vec3 target() const { return target_; }
-    float distance() const { return distance_; }
-    float fovDegrees() const { return fov_degrees_; }
-    CameraSpec spec() const;
-    // World-space ray through a point in normalised device coordinates (x right, y up).
-    void ray(glm::vec2 ndc, glm::vec3& origin, glm::vec3& direction) const;
-    // The camera string (camera_spec.h) for --camera and settings.
-    std::string toString() const;
+    void setAspect(float aspect) { pose_.aspect = aspect > 0.0f ? aspect : 1.0f; }
+    const OrbitPose& pose() const { return pose_; }
 
 private:
     FramingOptions framingOptions() const;
-    // Orbits about the framed target, from the framed eye.
-    void take(const CameraSpec& framed);
 
-    glm::vec3 target_{0.0f};
-    float distance_ = 5.0f;
-    float yaw_ = 0.6f, pitch_ = 0.35f; // radians; yaw about +Y, pitch above the horizon
-    float fov_degrees_ = 60.0f;
-    float aspect_ = 16.0f / 9.0f;
-    float near_ = 0.05f;
+    OrbitPose pose_;
 };
 
 } // namespace sherpa::editor

@@ -30,7 +30,7 @@ ReloadController::ReloadController(EditorContext& context, EditorSettings& setti
     for (const bool automatic : {false, true}) {
         QAction* act = group_->addAction(QString());
         act->setCheckable(true);
-        act->setChecked(settings_.reloadAutomatically() == automatic);
+        act->setChecked(settings_.get(setting::kReloadAutomatically) == automatic);
         act->setData(automatic);
         connect(act, &QAction::triggered, this,
                 [this, automatic] { setReloadAutomatically(automatic); });
@@ -48,12 +48,12 @@ void ReloadController::retranslate() {
 }
 
 void ReloadController::setReloadAutomatically(bool automatic) {
-    settings_.setReloadAutomatically(automatic);
+    settings_.set(setting::kReloadAutomatically, automatic);
     for (QAction* act : group_->actions()) act->setChecked(act->data().toBool() == automatic);
 }
 
 bool ReloadController::reloadAutomatically() const {
-    return settings_.reloadAutomatically();
+    return settings_.get(setting::kReloadAutomatically);
 }
 
 QStringList ReloadController::watchedFiles() const {
@@ -65,7 +65,7 @@ void ReloadController::onFilesChanged(const QStringList& files) {
     QStringList names;
     for (const QString& f : files) names << QFileInfo(f).fileName();
     const QString what = names.join(QStringLiteral(", "));
-    if (settings_.reloadAutomatically()) {
+    if (settings_.get(setting::kReloadAutomatically)) {
         log_.append(LogDock::Level::Info, tr("%1 changed on disk: reloading.").arg(what));
         reload_();
         return;

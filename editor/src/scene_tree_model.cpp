@@ -164,15 +164,15 @@ QString SceneTreeModel::nodeTransform(const Node& n, bool full) const {
     if (n.has_matrix) return tr("matrix");
     if (!full) {
         QStringList parts;
-        if (n.translation != glm::vec3(0.0f)) parts << tr("T %1").arg(Format::vec(n.translation));
+        if (n.translation != glm::vec3(0.0f)) parts << tr("T %1").arg(format::vec(n.translation));
         if (n.rotation != glm::quat(1.0f, 0.0f, 0.0f, 0.0f)) parts << tr("rotated");
-        if (n.scale != glm::vec3(1.0f)) parts << tr("S %1").arg(Format::vec(n.scale));
+        if (n.scale != glm::vec3(1.0f)) parts << tr("S %1").arg(format::vec(n.scale));
         return parts.isEmpty() ? tr("identity") : parts.join(QStringLiteral("  "));
     }
     return tr("T %1  R %2  S %3")
-        .arg(Format::vec(n.translation))
-        .arg(Format::vec(glm::vec4(n.rotation.x, n.rotation.y, n.rotation.z, n.rotation.w)))
-        .arg(Format::vec(n.scale));
+        .arg(format::vec(n.translation))
+        .arg(format::vec(glm::vec4(n.rotation.x, n.rotation.y, n.rotation.z, n.rotation.w)))
+        .arg(format::vec(n.scale));
 }
 
 QString SceneTreeModel::detail(const Item& it, bool full) const {
@@ -200,12 +200,12 @@ QString SceneTreeModel::detail(const Item& it, bool full) const {
         if (!full && p.mode == PrimitiveMode::Triangles)
             return tr("%1 vertices, %2 triangles").arg(p.vertices).arg(p.triangles);
         return tr("%1, %2 vertices, %3 triangles")
-            .arg(Format::primitiveMode(p.mode))
+            .arg(format::primitiveMode(p.mode))
             .arg(p.vertices)
             .arg(p.triangles);
     }
     case Kind::Material:
-        return Format::alphaMode(s.materials[idx].alpha_mode);
+        return format::alphaMode(s.materials[idx].alpha_mode);
     case Kind::Light: {
         const Light& l = s.lights[idx];
         return l.type == LightType::Directional ? tr("directional")

@@ -105,8 +105,8 @@ int SelectionController::pickAt(QPointF ndc) {
     const Scene* scene = context_.scene();
     if (!scene) return -1;
     glm::vec3 origin, direction;
-    viewport_.camera().ray({static_cast<float>(ndc.x()), static_cast<float>(ndc.y())}, origin,
-                           direction);
+    viewport_.camera().pose().ray({static_cast<float>(ndc.x()), static_cast<float>(ndc.y())},
+                                  origin, direction);
     const PickHit hit = pick(*scene, origin, direction,
                              [this](std::size_t i) { return context_.instanceVisible(i); });
     if (!hit) {

@@ -112,11 +112,11 @@ void TextureDock::setGpuBytes(std::int64_t bytes) {
 void TextureDock::updateTotals() {
     const SceneSession* session = context_.session();
     const QString gpu =
-        gpu_bytes_ < 0 ? tr("no renderer") : Format::bytes(static_cast<std::uint64_t>(gpu_bytes_));
+        gpu_bytes_ < 0 ? tr("no renderer") : format::bytes(static_cast<std::uint64_t>(gpu_bytes_));
     totals_->setText(
         tr("%1 textures, %2 encoded on disk, %3 on the GPU, thumbnails decoded in %4 ms")
             .arg(model_->rowCount())
-            .arg(Format::bytes(model_->totalDiskBytes()))
+            .arg(format::bytes(model_->totalDiskBytes()))
             .arg(gpu)
             .arg(session ? session->timings.thumbnails_ms : 0.0, 0, 'f', 1));
 }

@@ -87,9 +87,9 @@ QVariant TextureTableModel::cacheData(std::size_t row, int column) const {
         return r->width ? static_cast<int>(std::bit_width(std::max(r->width, r->height))) : 0;
     }
     case DiskBytesColumn:
-        return r->bytes_on_disk ? Format::bytes(r->bytes_on_disk) : none;
+        return r->bytes_on_disk ? format::bytes(r->bytes_on_disk) : none;
     case GpuBytesColumn:
-        return Format::bytes(r->bytes_gpu);
+        return format::bytes(r->bytes_gpu);
     case CacheStateColumn:
         return cacheStateText(*r);
     case DecodeMsColumn:
@@ -131,7 +131,7 @@ QVariant TextureTableModel::data(const QModelIndex& index, int role) const {
     if (role == Qt::DecorationRole && index.column() == NameColumn && session_ &&
         row < session_->thumbnails.size() && !session_->thumbnails[row].isNull())
         return session_->thumbnails[row];
-    if ((role == Qt::ToolTipRole || role == Format::kExactTextRole) &&
+    if ((role == Qt::ToolTipRole || role == format::kExactTextRole) &&
         index.column() == HashColumn) {
         const tex::PreparedTexture* r = preparedRecord(*session_, static_cast<int>(row));
         return r ? QVariant(QString::fromStdString(r->source_hash.hex())) : QVariant();
@@ -158,7 +158,7 @@ QVariant TextureTableModel::data(const QModelIndex& index, int role) const {
         if (img->buffer_view >= 0) return tr("bufferView %1").arg(img->buffer_view);
         return tr("generated");
     case RoleColumn:
-        return Format::roles(t.roles);
+        return format::roles(t.roles);
     case SizeColumn: {
         if (!img || !session_ || static_cast<std::size_t>(t.image) >= session_->image_sizes.size())
             return QStringLiteral("—");
@@ -183,7 +183,7 @@ QVariant TextureTableModel::data(const QModelIndex& index, int role) const {
     case DiskBytesColumn:
         // The cache's KTX2 file once there is one, else the encoded source.
         if (QVariant v = cacheData(row, DiskBytesColumn); v != QStringLiteral("—")) return v;
-        return img ? Format::bytes(img->byte_size) : QString();
+        return img ? format::bytes(img->byte_size) : QString();
     default:
         return cacheData(row, index.column());
     }

@@ -69,6 +69,7 @@ TimelineDock::TimelineDock(const EditorContext& context, QWidget* parent)
     play_->setCheckable(true);
     slider_ = new TimelineSlider(body);
     time_label_ = new QLabel(body);
+    time_label_->setObjectName(QStringLiteral("timelineTime"));
     time_label_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     top->addWidget(animations_);
     top->addWidget(play_);
@@ -105,28 +106,12 @@ TimelineDock::TimelineDock(const EditorContext& context, QWidget* parent)
 
     timer_.setInterval(kTickMs);
     connect(&timer_, &QTimer::timeout, this, &TimelineDock::onTick);
-    connect(animations_, &QComboBox::currentIndexChanged, this, [this] {
-        const int a = animation();
-        const Scene* scene = context_.scene();
-        if (scene && a >= 0) {
-            const Animation& anim = scene->animations[static_cast<std::size_t>(a)];
-            clock_.reset(anim.start, anim.end);
-            std::vector<double> ticks;
-            for (const double t : key_times(anim))
-                ticks.push_back(anim.end > anim.start ? (t - anim.start) / (anim.end - anim.start)
-                                                      : 0.0);
-            slider_->setTicks(std::move(ticks));
-        } else {
-            clock_.reset(0.0, 0.0);
-            slider_->setTicks({});
-        }
-        timer_.stop();
-        updatePlayButton();
-        refresh();
-    });
+    connect(animations_, &QComboBox::currentIndexChanged, this, &TimelineDock::onAnimationSelected);
     connect(play_, &QToolButton::toggled, this, &TimelineDock::setPlaying);
-    connect(slider_, &QSlider::valueChanged, this,
-            [this](int v) { scrubTo(clock_.start + clock_.duration() * v / kSliderSteps); });
+    connect(slider_, &QSlider::valueChanged, this, [this](int v) {
+        const PlaybackClock& clock = playback_.clock();
+        scrubTo(clock.start + clock.duration() * v / kSliderSteps);
+    });
     connect(speed_, &QDoubleSpinBox::valueChanged, this, &TimelineDock::setSpeed);
     connect(loop_, &QCheckBox::toggled, this, &TimelineDock::setLoop);
     connect(morph_, &MorphWeightsPanel::overridesChanged, this, &TimelineDock::refresh);
@@ -146,21 +131,23 @@ void TimelineDock::retranslate() {
     refresh();
 }
 
-int TimelineDock::animation() const {
-    return animations_->currentIndex() - 1; // item 0: none
-}
-
-bool TimelineDock::playable() const {
-    return animation() >= 0 && clock_.duration() > 0.0;
-}
-
 void TimelineDock::setAnimation(int animation) {
-    animations_->setCurrentIndex(animation + 1);
+    animations_->setCurrentIndex(animation + 1); // item 0: none
+}
+
+void TimelineDock::onAnimationSelected() {
+    playback_.selectAnimation(animations_->currentIndex() - 1);
+    slider_->setTicks(playback_.keyFractions());
+    timer_.stop();
+    updatePlayButton();
+    refresh();
 }
 
 void TimelineDock::onSceneChanged() {
     const Scene* scene = context_.scene();
-    pose_inputs_.reset();
+    playback_.setScene(context_.sharedScene());
+    // The first animation, paused at its start: what the file shows first.
+    const int first = scene && !scene->animations.empty() ? 0 : -1;
     {
         const QSignalBlocker block(animations_);
         animations_->clear();
@@ -172,30 +159,21 @@ void TimelineDock::onSceneChanged() {
                                                     : tr("%1: %2").arg(a).arg(name));
             }
         animations_->setEnabled(scene && !scene->animations.empty());
+        animations_->setCurrentIndex(first + 1);
     }
     morph_->setScene(scene);
     morph_area_->setVisible(!morph_->empty());
-    // The first animation, paused at its start: what the file shows first.
-    const int first = scene && !scene->animations.empty() ? 0 : -1;
-    if (animation() == first) // the signal would not come
-        Q_EMIT animations_->currentIndexChanged(animations_->currentIndex());
-    else
-        setAnimation(first);
+    onAnimationSelected();
 }
 
 void TimelineDock::scrubTo(double seconds) {
-    if (!std::isfinite(seconds)) return;
-    clock_.time = std::clamp(seconds, clock_.start, clock_.end);
+    playback_.clock().scrub(seconds);
     refresh();
 }
 
 void TimelineDock::setPlaying(bool playing) {
-    playing = playing && playable();
-    // Play from the start again after a non-looping run stopped on the last key.
-    if (playing && !clock_.playing && !clock_.loop && clock_.time >= clock_.end)
-        clock_.time = clock_.start;
-    clock_.playing = playing;
-    if (playing) {
+    playback_.clock().play(playing && playback_.playable());
+    if (playback_.clock().playing) {
         elapsed_.start();
         timer_.start();
     } else {
@@ -206,12 +184,12 @@ void TimelineDock::setPlaying(bool playing) {
 }
 
 void TimelineDock::setSpeed(double speed) {
-    clock_.speed = speed;
+    playback_.clock().speed = speed;
     if (std::abs(speed_->value() - speed) > 1e-9) speed_->setValue(speed);
 }
 
 void TimelineDock::setLoop(bool loop) {
-    clock_.loop = loop;
+    playback_.clock().loop = loop;
     if (loop_->isChecked() != loop) loop_->setChecked(loop);
 }
 
@@ -222,9 +200,10 @@ void TimelineDock::onTick() {
 }
 
 void TimelineDock::advance(double seconds) {
-    const bool was_playing = clock_.playing;
-    if (clock_.advance(seconds)) refresh();
-    if (was_playing && !clock_.playing) { // a non-looping run reached its end
+    PlaybackClock& clock = playback_.clock();
+    const bool was_playing = clock.playing;
+    if (clock.advance(seconds)) refresh();
+    if (was_playing && !clock.playing) { // a non-looping run reached its end
         timer_.stop();
         updatePlayButton();
     }
@@ -232,32 +211,27 @@ void TimelineDock::advance(double seconds) {
 
 void TimelineDock::updatePlayButton() {
     const QSignalBlocker block(play_);
-    play_->setChecked(clock_.playing);
-    play_->setEnabled(playable());
-    play_->setText(clock_.playing ? tr("Pause") : tr("Play"));
-    play_->setIcon(
-        style()->standardIcon(clock_.playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    const bool playing = playback_.clock().playing;
+    play_->setChecked(playing);
+    play_->setEnabled(playback_.playable());
+    play_->setText(playing ? tr("Pause") : tr("Play"));
+    play_->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
     play_->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
 }
 
 void TimelineDock::refresh() {
-    const Scene* scene = context_.scene();
-    PoseInputs inputs{animation(), clock_.time, morph_->overrides()};
-    const bool changed = inputs != pose_inputs_;
-    if (changed) {
-        pose_ =
-            scene ? make_pose(*scene, inputs.animation, inputs.time, inputs.overrides) : nullptr;
-        pose_inputs_ = std::move(inputs);
-        morph_->showPose(pose_.get());
-    }
+    const bool changed = playback_.updatePose(morph_->overrides());
+    if (changed) morph_->showPose(playback_.pose().get());
+    const PlaybackClock& clock = playback_.clock();
     {
         const QSignalBlocker block(slider_);
-        slider_->setValue(static_cast<int>(std::lround(clock_.fraction() * kSliderSteps)));
-        slider_->setEnabled(playable());
+        slider_->setValue(static_cast<int>(std::lround(clock.fraction() * kSliderSteps)));
+        slider_->setEnabled(playback_.playable());
     }
     time_label_->setText(
-        animation() < 0 ? tr("no animation")
-                        : tr("%1 / %2 s").arg(clock_.time, 0, 'f', 3).arg(clock_.end, 0, 'f', 3));
+        playback_.animation() < 0
+            ? tr("no animation")
+            : tr("%1 / %2 s").arg(clock.time, 0, 'f', 3).arg(clock.end, 0, 'f', 3));
     if (changed) Q_EMIT poseChanged();
 }
 

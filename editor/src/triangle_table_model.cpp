@@ -25,7 +25,7 @@ QVariant TriangleTableModel::data(const QModelIndex& index, int role) const {
     const Mesh* m = mesh_.get();
     if (!index.isValid() || !m) return {};
     if (role == Qt::TextAlignmentRole) return int(Qt::AlignRight | Qt::AlignVCenter);
-    const bool exact = role == Qt::ToolTipRole || role == Format::kExactTextRole;
+    const bool exact = role == Qt::ToolTipRole || role == format::kExactTextRole;
     if (role != Qt::DisplayRole && !(exact && index.column() == AreaColumn)) return {};
     const std::size_t per = indices_per_element(m->topology());
     const std::size_t t = static_cast<std::size_t>(index.row()) * per;
@@ -42,14 +42,14 @@ QVariant TriangleTableModel::data(const QModelIndex& index, int role) const {
         if (m->topology() == Topology::Lines) {
             const double length = static_cast<double>(glm::length(
                 m->vertices[m->indices[t + 1]].position - m->vertices[m->indices[t]].position));
-            return exact ? Format::exact(length) : Format::number(length);
+            return exact ? format::exact(length) : format::number(length);
         }
         // Degenerate (zero-area) triangles are what breaks tangent generation: show them.
         const glm::vec3 a = m->vertices[m->indices[t]].position;
         const glm::vec3 b = m->vertices[m->indices[t + 1]].position;
         const glm::vec3 c = m->vertices[m->indices[t + 2]].position;
         const double area = 0.5 * static_cast<double>(glm::length(glm::cross(b - a, c - a)));
-        return exact ? Format::exact(area) : Format::number(area);
+        return exact ? format::exact(area) : format::number(area);
     }
     default:
         return {};

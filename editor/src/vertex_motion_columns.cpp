@@ -106,11 +106,11 @@ QString VertexMotionColumns::text(std::size_t vertex, int column) const {
         for (std::size_t k = 0; k < n; ++k)
             parts << (c.what == What::Joints
                           ? QString::number(motion_->joints[src * n + k])
-                          : Format::number(static_cast<double>(motion_->weights[src * n + k])));
+                          : format::number(static_cast<double>(motion_->weights[src * n + k])));
         return parts.join(QLatin1Char(' '));
     }
     const std::vector<glm::vec3>& d = *delta(c);
-    return src < d.size() ? Format::vec(d[src]) : QStringLiteral("—");
+    return src < d.size() ? format::vec(d[src]) : QStringLiteral("—");
 }
 
 double VertexMotionColumns::key(std::size_t vertex, int column) const {

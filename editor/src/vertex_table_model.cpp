@@ -93,12 +93,12 @@ QVariant VertexTableModel::data(const QModelIndex& index, int role) const {
     // Views ask for a dozen roles per cell; only these need the value. Shown at four
     // significant digits so that #, x, y and z fit a side dock; the float's exact
     // text on hover and copy.
-    if (role == Qt::DisplayRole || role == Qt::ToolTipRole || role == Format::kExactTextRole) {
+    if (role == Qt::DisplayRole || role == Qt::ToolTipRole || role == format::kExactTextRole) {
         if (index.column() == IndexColumn) return static_cast<qulonglong>(v);
         if (index.column() >= ColumnCount) return motion_.text(v, index.column() - ColumnCount);
         const double x = value(v, index.column());
         if (std::isnan(x)) return QStringLiteral("—");
-        return role == Qt::DisplayRole ? Format::compact(x) : Format::exact(x);
+        return role == Qt::DisplayRole ? format::compact(x) : format::exact(x);
     }
     if (role == Qt::ForegroundRole && index.column() == TangentErrorColumn &&
         value(v, index.column()) > 5.0)

@@ -68,7 +68,7 @@ void ViewController::connectActions() {
                 [this, m = kMenuMethods[i]] { culling_.setMethod(m); });
     for (QAction* act : a_.density_actions)
         connect(act, &QAction::triggered, this, [this, act] {
-            settings_.setCheckerDensity(act->data().toInt());
+            settings_.set(setting::kCheckerDensity, act->data().toInt());
             viewport_.scheduleFrame();
         });
     connect(a_.frame_all, &QAction::triggered, &viewport_, &ViewportWindow::frameAllRequested);
@@ -96,7 +96,7 @@ bool ViewController::setDebugView(const QString& name, bool remember) {
     const std::optional<std::uint32_t> id = ViewCatalog::viewId(name);
     if (!id) return false;
     view_ = *id;
-    if (remember) settings_.setLastView(name);
+    if (remember) settings_.set(setting::kLastView, name);
     retranslate(); // checks the matching menu entry
     frames_.updateStreams();
     return true;
@@ -109,13 +109,14 @@ void ViewController::setGpuCulling(bool gpu) {
 void ViewController::fill(gpu::FrameRequest& request) const {
     request.view = static_cast<gpu::DebugView>(view_);
     request.overlays = overlays_;
-    request.uv_checker_density = static_cast<float>(settings_.checkerDensity());
+    request.uv_checker_density = static_cast<float>(settings_.get(setting::kCheckerDensity));
     if (a_.box_colouring->isChecked()) request.overlays |= ViewCatalog::cullBoxesOverlay();
     request.cull = a_.gpu_path->isChecked() ? gpu::CullPath::Gpu : gpu::CullPath::Cpu;
     request.cull_method = culling_.method();
     request.cascades = shadow_cascades_;
     request.shadow_pcf_taps = shadow_pcf_taps_;
-    if (culling_.frozen()) request.freeze_cull = gpu::explicit_camera(culling_.cullingCamera());
+    if (const auto& frozen = culling_.frozenCamera())
+        request.freeze_cull = gpu::explicit_camera(*frozen);
     apply_display(environment_->display(), request);
 }
 
@@ -238,7 +239,7 @@ void ViewController::connectLab() {
 }
 
 void ViewController::cameraChanged() {
-    culling_.update(viewport_.camera().spec());
+    culling_.update(viewport_.camera().pose().spec());
     viewport_.scheduleFrame();
 }
 

@@ -80,7 +80,7 @@ void copy_exact_on_ctrl_c(QAbstractItemView* view) {
                 return false;
             const QModelIndex index = static_cast<QAbstractItemView*>(watched)->currentIndex();
             if (!index.isValid()) return false;
-            QVariant text = index.data(Format::kExactTextRole);
+            QVariant text = index.data(format::kExactTextRole);
             if (!text.isValid()) text = index.data(Qt::DisplayRole);
             QApplication::clipboard()->setText(text.toString());
             return true;

@@ -20,7 +20,7 @@ void fit_columns_to_content(QAbstractItemView* view);
 // needs without scrolling, the rest scroll in. Columns the model lacks are skipped.
 void show_columns_first(QHeaderView* header, std::vector<int> first);
 
-// Ctrl+C on `view` copies the current cell's Format::kExactTextRole (a number at
+// Ctrl+C on `view` copies the current cell's format::kExactTextRole (a number at
 // full float precision) when the model has one, else its displayed text.
 void copy_exact_on_ctrl_c(QAbstractItemView* view);
 

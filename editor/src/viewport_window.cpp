@@ -172,7 +172,7 @@ void ViewportWindow::keyReleaseEvent(QKeyEvent* e) {
 void ViewportWindow::flyStep() {
     // WASD + Q/E, speed proportional to the orbit distance so every scale feels the same.
     const float dt = static_cast<float>(fly_clock_.restart()) / 1000.0f;
-    const float speed = std::max(camera_.distance(), 0.1f) * dt;
+    const float speed = std::max(camera_.pose().distance, 0.1f) * dt;
     glm::vec3 move(0.0f);
     if (keys_held_.contains(Qt::Key_W)) move.z += speed;
     if (keys_held_.contains(Qt::Key_S)) move.z -= speed;

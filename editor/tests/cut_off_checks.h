@@ -154,8 +154,8 @@ inline QStringList cut_needed_columns(MainWindow& w) {
         cut << QStringLiteral("materialDock: no offsets heading the rows");
     w.docks().lab->raise();
     wait_settled(w);
-    cut << cut_off_columns(w.docks().lab->methodsView(), QStringLiteral("labDock"),
-                           {0, 2, 3}); // method, time, chart error
+    cut << cut_off_columns(w.docks().lab->findChild<QTableView*>(QStringLiteral("labMethodsView")),
+                           QStringLiteral("labDock"), {0, 2, 3}); // method, time, chart error
     w.docks().sceneTree->raise();
     wait_settled(w);
     QLabel* pane = w.docks().sceneTree->detailsPane();

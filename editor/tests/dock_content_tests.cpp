@@ -89,11 +89,11 @@ void DockContentTests::instancedNodeShowsItsRowsInTheTreeAndTheTable() {
             QCOMPARE(display(*dock.instances(), r, InstanceTableModel::RowColumn),
                      QString::number(last.file_row));
             QCOMPARE(display(*dock.instances(), r, InstanceTableModel::TX),
-                     Format::number(last.translation.x));
+                     format::number(last.translation.x));
             QCOMPARE(display(*dock.instances(), r, InstanceTableModel::RW),
-                     Format::number(last.rotation.w));
+                     format::number(last.rotation.w));
             QCOMPARE(display(*dock.instances(), r, InstanceTableModel::SZ),
-                     Format::number(last.scale.z));
+                     format::number(last.scale.z));
             ++checked;
         }
         QVERIFY2(checked > 0, qPrintable(file));
@@ -113,8 +113,8 @@ void DockContentTests::docksShowCompressionContainerAndSpecGloss() {
     QVERIFY2(text.contains(QStringLiteral("KHR_draco_mesh_compression ") +
                            QString::fromStdString(p.compression->modes)),
              qPrintable(text));
-    QVERIFY2(text.contains(Format::bytes(p.compression->encoded_bytes)) &&
-                 text.contains(Format::bytes(p.compression->decoded_bytes)),
+    QVERIFY2(text.contains(format::bytes(p.compression->encoded_bytes)) &&
+                 text.contains(format::bytes(p.compression->decoded_bytes)),
              qPrintable(text));
     const LoadOutcome plain = SceneLoadJob::loadNow(test::asset(QStringLiteral("DamagedHelmet")));
     QVERIFY(plain.session);
@@ -166,9 +166,9 @@ void DockContentTests::docksShowCompressionContainerAndSpecGloss() {
     QCOMPARE(display(fields, 0, MaterialFieldsModel::PropertyColumn),
              QStringLiteral("KHR_materials_pbrSpecularGlossiness.diffuseFactor"));
     QCOMPARE(display(fields, 0, MaterialFieldsModel::ValueColumn),
-             Format::vec(glm::vec4(0.2f, 0.4f, 0.6f, 1.0f)));
+             format::vec(glm::vec4(0.2f, 0.4f, 0.6f, 1.0f)));
     QCOMPARE(display(fields, 15, MaterialFieldsModel::ValueColumn),
-             Format::vec(glm::vec4(0.1f, 0.2f, 0.3f, 0.7f)));
+             format::vec(glm::vec4(0.1f, 0.2f, 0.3f, 0.7f)));
     QCOMPARE(
         display(fields, 15, MaterialFieldsModel::PropertyColumn),
         QStringLiteral("KHR_materials_pbrSpecularGlossiness.specularFactor, glossinessFactor"));
@@ -188,7 +188,7 @@ void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
     QCOMPARE(display(fields, 14, MaterialFieldsModel::OffsetColumn), QStringLiteral("64"));
     QCOMPARE(display(fields, 15, MaterialFieldsModel::FieldColumn), QStringLiteral("ext.ior"));
     QCOMPARE(display(fields, 15, MaterialFieldsModel::OffsetColumn), QStringLiteral("112"));
-    QCOMPARE(display(fields, 15, MaterialFieldsModel::ValueColumn), Format::number(1.2f));
+    QCOMPARE(display(fields, 15, MaterialFieldsModel::ValueColumn), format::number(1.2f));
     QCOMPARE(display(fields, 15, MaterialFieldsModel::PropertyColumn),
              QStringLiteral("KHR_materials_ior.ior"));
 
@@ -199,7 +199,7 @@ void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
              QStringLiteral("ext.specular.color_factor"));
     QCOMPARE(display(fields, 15, MaterialFieldsModel::OffsetColumn), QStringLiteral("48"));
     QCOMPARE(display(fields, 15, MaterialFieldsModel::ValueColumn),
-             Format::vec(glm::vec4(1.0f, 1.0f, 1.0f, 0.0f)));
+             format::vec(glm::vec4(1.0f, 1.0f, 1.0f, 0.0f)));
     QCOMPARE(display(fields, 16, MaterialFieldsModel::OffsetColumn), QStringLiteral("64"));
 
     // KHR_materials_clearcoat: index, factors, three textures (material 0 of the
@@ -212,7 +212,7 @@ void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
     QCOMPARE(display(fields, 15, MaterialFieldsModel::OffsetColumn),
              QString::number(2 * (48 + 128) + 48));
     QCOMPARE(display(fields, 15, MaterialFieldsModel::ValueColumn),
-             Format::vec(glm::vec4(0.5f, 0.0f, 1.0f, 0.0f)));
+             format::vec(glm::vec4(0.5f, 0.0f, 1.0f, 0.0f)));
     QCOMPARE(display(fields, 18, MaterialFieldsModel::FieldColumn),
              QStringLiteral("ext.clearcoat.normal_tex"));
 
@@ -229,7 +229,7 @@ void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
              QStringLiteral("ext.anisotropy.factors"));
     QCOMPARE(display(fields, 16, MaterialFieldsModel::OffsetColumn), QString::number(first + 48));
     QCOMPARE(display(fields, 16, MaterialFieldsModel::ValueColumn),
-             Format::vec(glm::vec4(0.8f, std::cos(1.04719755f), std::sin(1.04719755f), 0.0f)));
+             format::vec(glm::vec4(0.8f, std::cos(1.04719755f), std::sin(1.04719755f), 0.0f)));
     QCOMPARE(display(fields, 17, MaterialFieldsModel::OffsetColumn), QString::number(first + 64));
 
     // KHR_materials_iridescence: index, its third word, factors, two textures (material
@@ -242,7 +242,7 @@ void DockContentTests::materialDockShowsExtensionBlocksWithOffsets() {
     QCOMPARE(display(fields, 16, MaterialFieldsModel::OffsetColumn),
              QString::number(9 * (48 + 96) + 48));
     QCOMPARE(display(fields, 16, MaterialFieldsModel::ValueColumn),
-             Format::vec(glm::vec4(1.0f, 1.3f, 100.0f, 700.0f)));
+             format::vec(glm::vec4(1.0f, 1.3f, 100.0f, 700.0f)));
 }
 
 QTEST_MAIN(DockContentTests)

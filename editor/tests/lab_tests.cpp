@@ -24,6 +24,7 @@
 #include "lab_chart.h"
 #include "lab_dock.h"
 #include "lab_runner.h"
+#include "lab_session.h"
 #include "lab_table_model.h"
 #include "main_window.h"
 #include "test_assets.h"
@@ -44,12 +45,23 @@ QJsonObject cli_json(const QStringList& args) {
     return QJsonDocument::fromJson(p.readAllStandardOutput()).object();
 }
 
+// The dock's tables and chart, found as its children.
+const LabTableModel& methods_model(const LabDock& dock) {
+    return *dock.findChild<LabTableModel*>(QStringLiteral("labMethods"));
+}
+const LabTableModel& failures_model(const LabDock& dock) {
+    return *dock.findChild<LabTableModel*>(QStringLiteral("labFailures"));
+}
+QChart* lab_chart(const LabDock& dock) {
+    return dock.findChild<QChartView*>()->chart();
+}
+
 // Runs `family` in the dock and waits for its report; null if none came.
 const lab::FamilyReport* run_family(LabDock& dock, const QString& family) {
     QSignalSpy done(&dock.runner(), &LabRunner::finished);
     dock.run(family);
     if (!done.wait(300000)) return nullptr;
-    return dock.report();
+    return dock.session().report();
 }
 
 bool close(double a, double b) {
@@ -118,14 +130,14 @@ void LabTests::dockAgreesWithTheCli() {
     const QJsonArray methods = cli[QStringLiteral("methods")].toArray();
     QCOMPARE(cli[QStringLiteral("family")].toString(), QString::fromStdString(report->family));
     QCOMPARE(qsizetype(methods.size()), qsizetype(report->methods.size()));
-    QCOMPARE(dock().methodsModel().rowCount(), int(report->methods.size()));
+    QCOMPARE(methods_model(dock()).rowCount(), int(report->methods.size()));
     for (qsizetype i = 0; i < methods.size(); ++i) {
         const QJsonObject m = methods[i].toObject();
         const lab::MethodResult& r = report->methods[std::size_t(i)];
         QCOMPARE(m[QStringLiteral("name")].toString(), QString::fromStdString(r.method.name));
         QCOMPARE(m[QStringLiteral("ran")].toBool(), r.ran);
         // The table shows the method in the same row.
-        QCOMPARE(dock().methodsModel().index(int(i), 0).data().toString(),
+        QCOMPARE(methods_model(dock()).index(int(i), 0).data().toString(),
                  QString::fromStdString(r.method.name));
         const QJsonObject errors = m[QStringLiteral("errors")].toObject();
         QCOMPARE(qsizetype(errors.size()), qsizetype(r.errors.size()));
@@ -149,16 +161,16 @@ void LabTests::dockAgreesWithTheCli() {
     }
     std::size_t failure_rows = 0;
     for (const lab::MethodResult& r : report->methods) failure_rows += r.failures.size();
-    QCOMPARE(dock().failuresModel().rowCount(), int(failure_rows));
+    QCOMPARE(failures_model(dock()).rowCount(), int(failure_rows));
     // The chart plots every method that ran with the chart error.
     int plotted = 0;
-    for (QAbstractSeries* s : dock().chart()->series())
+    for (QAbstractSeries* s : lab_chart(dock())->series())
         plotted += qobject_cast<QScatterSeries*>(s) != nullptr;
     int ran = 0;
     for (const lab::MethodResult& r : report->methods) ran += r.ran && r.error(report->chart_error);
     QCOMPARE(plotted, ran);
     // The x axis: time, or the figure the family charts instead (mesh compression: bytes).
-    const QList<QAbstractAxis*> x_axes = dock().chart()->axes(Qt::Horizontal);
+    const QList<QAbstractAxis*> x_axes = lab_chart(dock())->axes(Qt::Horizontal);
     QCOMPARE(x_axes.size(), 1);
     if (!report->chart_x.empty())
         QCOMPARE(x_axes.front()->titleText(), QString::fromStdString(report->chart_x));
@@ -172,7 +184,7 @@ void LabTests::budgetAgreesWithTheCli() {
     QSignalSpy done(&dock().runner(), &LabRunner::budgetFinished);
     dock().runBudget();
     QVERIFY(done.wait(300000));
-    const lab::BudgetReport* budget = dock().budget();
+    const lab::BudgetReport* budget = dock().session().budget();
     QVERIFY(budget);
     const QJsonObject cli = cli_json({QStringLiteral("budget"), spec, QStringLiteral("--json")});
     const QJsonArray categories = cli[QStringLiteral("categories")].toArray();
@@ -209,7 +221,7 @@ void LabTests::runningKeepsTheUiResponsive() {
     // ...while the UI thread's event loop kept turning: timers fired, progress arrived.
     QVERIFY2(ticks_while_running > 0, qPrintable(QString::number(ticks)));
     QVERIFY(progress.count() > 0);
-    QVERIFY(dock().report());
+    QVERIFY(dock().session().report());
 }
 
 void LabTests::cancelAndNewSceneStopARun() {
@@ -218,13 +230,13 @@ void LabTests::cancelAndNewSceneStopARun() {
     QSignalSpy cancelled(&dock().runner(), &LabRunner::cancelled);
     dock().run(QStringLiteral("textures"));
     QVERIFY(dock().runner().running());
-    dock().cancel();
+    dock().session().cancel();
     QCOMPARE(cancelled.count(), 1);
     QVERIFY(!dock().runner().running());
     dock().runner().wait(); // the worker returns at its next unit of work
     QTest::qWait(50);       // anything it might still post arrives (and is dropped)
     QCOMPARE(finished.count(), 0);
-    QVERIFY(!dock().report());
+    QVERIFY(!dock().session().report());
 
     // A new scene cancels the run of the old one.
     dock().run(QStringLiteral("textures"));
@@ -234,7 +246,7 @@ void LabTests::cancelAndNewSceneStopARun() {
     dock().runner().wait();
     QTest::qWait(50);
     QCOMPARE(finished.count(), 0);
-    QVERIFY(!dock().report());
+    QVERIFY(!dock().session().report());
 }
 
 void LabTests::closingCancelsARun() {
@@ -259,8 +271,8 @@ void LabTests::exportsAreTheEngineWriters() {
     const QString csv = dir.filePath(QStringLiteral("lab.csv")),
                   svg = dir.filePath(QStringLiteral("lab.svg")),
                   png = dir.filePath(QStringLiteral("lab.png"));
-    QVERIFY(dock().exportCsv(csv));
-    QVERIFY(dock().exportSvg(svg));
+    QVERIFY(dock().session().exportCsv(csv));
+    QVERIFY(dock().session().exportSvg(svg));
     QVERIFY(dock().exportPng(png));
     auto read = [](const QString& path) {
         QFile f(path);
@@ -286,7 +298,7 @@ void LabTests::clickingAPointAppliesACullingMethod() {
     const lab::FamilyReport* report = run_family(dock(), QStringLiteral("culling"));
     QVERIFY(report);
     QScatterSeries* sphere = nullptr;
-    for (QAbstractSeries* s : dock().chart()->series())
+    for (QAbstractSeries* s : lab_chart(dock())->series())
         if (auto* scatter = qobject_cast<QScatterSeries*>(s);
             scatter &&
             report->methods[std::size_t(scatter->property("method").toULongLong())].method.name ==
@@ -298,7 +310,7 @@ void LabTests::clickingAPointAppliesACullingMethod() {
     QCOMPARE(test::culling_monitor(*window_).method(), CullMethod::Sphere);
     // The chart rings the method now in use.
     bool ringed = false;
-    for (QAbstractSeries* s : dock().chart()->series())
+    for (QAbstractSeries* s : lab_chart(dock())->series())
         ringed |= s->name().startsWith(QStringLiteral("sphere")) &&
                   s->name().contains(QStringLiteral("in use"));
     QVERIFY(ringed);
@@ -407,7 +419,7 @@ void LabTests::lightingFamilyIsListedAndRuns() {
     const lab::FamilyReport* report = run_family(dock(), QStringLiteral("lighting"));
     QVERIFY(report);
     QCOMPARE(QString::fromStdString(report->family), QStringLiteral("lighting"));
-    QCOMPARE(dock().methodsModel().rowCount(), int(report->methods.size()));
+    QCOMPARE(methods_model(dock()).rowCount(), int(report->methods.size()));
     int ran = 0;
     for (const lab::MethodResult& r : report->methods) {
         if (r.method.group == "transmission") {
@@ -421,7 +433,7 @@ void LabTests::lightingFamilyIsListedAndRuns() {
     QVERIFY(report->methods.back().ran); // the path tracer's own convergence
     QVERIFY(report->reference.find("256 spp") != std::string::npos);
     int plotted = 0;
-    for (QAbstractSeries* s : dock().chart()->series())
+    for (QAbstractSeries* s : lab_chart(dock())->series())
         plotted += qobject_cast<QScatterSeries*>(s) != nullptr;
     QCOMPARE(plotted, ran);
 }

@@ -119,17 +119,19 @@ void LayoutTests::oneTextureCacheWithTheCli() {
     // The XDG base directory rule, written out here rather than asked of the engine.
     const QByteArray xdg = qgetenv("XDG_CACHE_HOME");
     QVERIFY(!xdg.isEmpty());
-    QCOMPARE(EditorSettings().cacheDirectory(), QString::fromUtf8(xdg) + "/sherpa/textures");
+    QCOMPARE(EditorSettings().get(setting::kCacheDirectory),
+             QString::fromUtf8(xdg) + "/sherpa/textures");
     qputenv("XDG_CACHE_HOME", "");
-    QCOMPARE(EditorSettings().cacheDirectory(), QDir::homePath() + "/.cache/sherpa/textures");
+    QCOMPARE(EditorSettings().get(setting::kCacheDirectory),
+             QDir::homePath() + "/.cache/sherpa/textures");
     qputenv("XDG_CACHE_HOME", xdg);
 }
 
 void LayoutTests::oneShotFlagsDoNotPersist() {
     {
         EditorSettings s;
-        s.setLastView(QStringLiteral("lit"));
-        s.setLanguage(QStringLiteral("en"));
+        s.set(setting::kLastView, QStringLiteral("lit"));
+        s.set(setting::kLanguage, QStringLiteral("en"));
     }
     {
         MainWindow w(vulkan_.isValid() ? &vulkan_ : nullptr);
@@ -149,14 +151,14 @@ void LayoutTests::oneShotFlagsDoNotPersist() {
     }
     // The next plain launch opens as the settings say, not as the last flags did.
     EditorSettings s;
-    QCOMPARE(s.lastView(), QStringLiteral("lit"));
-    QCOMPARE(s.language(), QStringLiteral("en"));
+    QCOMPARE(s.get(setting::kLastView), QStringLiteral("lit"));
+    QCOMPARE(s.get(setting::kLanguage), QStringLiteral("en"));
     MainWindow next(nullptr);
     QCOMPARE(next.views().debugView(), QStringLiteral("lit"));
     QCOMPARE(next.language(), QStringLiteral("en"));
     // A menu choice is a choice: it is remembered.
     QVERIFY(next.views().setDebugView(QStringLiteral("normal")));
-    QCOMPARE(EditorSettings().lastView(), QStringLiteral("normal"));
+    QCOMPARE(EditorSettings().get(setting::kLastView), QStringLiteral("normal"));
     next.views().setDebugView(QStringLiteral("lit"));
 }
 
@@ -175,7 +177,7 @@ void LayoutTests::framingIsTheSameEveryRun() {
         fresh.setAspect(float(size.width()) / float(size.height()));
         fresh.frameAuto(*w->context().scene());
         // The request leaves the aspect to the viewport, which is that size.
-        QCOMPARE(run.camera.eye, fresh.spec().eye);
+        QCOMPARE(run.camera.eye, fresh.pose().spec().eye);
         QCOMPARE(run.camera.aspect, 0.0f);
     }
     QCOMPARE(runs[0].width, runs[1].width);
@@ -286,7 +288,7 @@ void LayoutTests::viewportModesAreNotCutOff() {
     // The longest side-B label: this file with tangents by another method.
     w->comparison().compareWithTangents(TangentMethod::MikkTSpaceWelded);
     QTRY_VERIFY_WITH_TIMEOUT(test::compare_session(*w) != nullptr, 30000);
-    w->comparison().controls().setMode(ViewportMode::Difference);
+    w->comparison().state().setMode(ViewportMode::Difference);
     // Numbers of the latest completed frame: a few frames on.
     for (int i = 0; i < 20 && !w->frames().lastReport().difference.valid; ++i) {
         w->frames().renderer()->renderAndWait(w->frames().lastFrame(),
@@ -325,14 +327,15 @@ void LayoutTests::sideBSaysWhenItShowsAndStartsAComparison() {
     // side B shows, and choosing a side B starts a comparison (Split).
     QMainWindow host;
     auto* bar = host.addToolBar(QStringLiteral("bar"));
-    CompareControls controls(&host);
+    CompareState state;
+    CompareControls controls(state, &host);
     controls.addToToolBar(bar);
-    controls.setRayTracing(true);
+    state.setRayTracing(true);
     host.show();
     QVERIFY(QTest::qWaitForWindowExposed(&host));
     auto* side = bar->findChild<QToolButton*>(QStringLiteral("compareSideButton"));
     QVERIFY(side);
-    QCOMPARE(controls.state().mode, ViewportMode::Raster);
+    QCOMPARE(state.comparison().mode, ViewportMode::Raster);
     QVERIFY(side->isEnabled());
     QVERIFY2(side->toolTip().contains(QStringLiteral("Split")) &&
                  side->toolTip().contains(QStringLiteral("Difference")),
@@ -340,16 +343,16 @@ void LayoutTests::sideBSaysWhenItShowsAndStartsAComparison() {
     QAction* rays = side->menu()->actions().value(0); // "The Ray Tracer", first
     QVERIFY(rays && rays->isEnabled());
     rays->trigger();
-    QCOMPARE(controls.state().mode, ViewportMode::Split);
-    QCOMPARE(controls.state().side, SideB::RayTraced);
+    QCOMPARE(state.comparison().mode, ViewportMode::Split);
+    QCOMPARE(state.comparison().side, SideB::RayTraced);
     // Already comparing: the mode stays.
-    controls.setMode(ViewportMode::Difference);
+    state.setMode(ViewportMode::Difference);
     rays->trigger();
-    QCOMPARE(controls.state().mode, ViewportMode::Difference);
+    QCOMPARE(state.comparison().mode, ViewportMode::Difference);
     // A long side-B name is shortened on the button, whole in its tooltip.
-    controls.setOtherFile(QStringLiteral("AVeryLongExportedFileNameFromTheExporter_final_v7.gltf"),
-                          TangentMethod::Lengyel);
-    controls.setSide(SideB::OtherFile);
+    state.setOtherFile(QStringLiteral("AVeryLongExportedFileNameFromTheExporter_final_v7.gltf"),
+                       TangentMethod::Lengyel);
+    state.setSide(SideB::OtherFile);
     QVERIFY(side->fontMetrics().horizontalAdvance(side->text()) <= 230);
     QVERIFY(side->toolTip().contains(QStringLiteral("final_v7.gltf")));
 }

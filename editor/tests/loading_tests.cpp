@@ -90,7 +90,7 @@ void LoadingTests::progressReportsEveryStage() {
         // The hash elided in the middle; all 32 digits on hover and on copy.
         const QString hash = cell(row, TextureTableModel::HashColumn);
         const QString full =
-            m->index(row, TextureTableModel::HashColumn).data(Format::kExactTextRole).toString();
+            m->index(row, TextureTableModel::HashColumn).data(format::kExactTextRole).toString();
         QCOMPARE(full.size(), 32);
         QCOMPARE(hash, full.left(8) + QChar(0x2026) + full.right(8));
         QCOMPARE(m->index(row, TextureTableModel::HashColumn).data(Qt::ToolTipRole).toString(),
@@ -146,8 +146,8 @@ void LoadingTests::cancelDropsTheLoadAndLeaksNothing() {
 void LoadingTests::textureCacheActions() {
     if (!hasGpu()) QSKIP("no Vulkan device: no texture upload");
     QTemporaryDir dir; // a cache of this test alone
-    const QString before = EditorSettings().cacheDirectory();
-    EditorSettings().setCacheDirectory(dir.path());
+    const QString before = EditorSettings().get(setting::kCacheDirectory);
+    EditorSettings().set(setting::kCacheDirectory, dir.path());
     const TextureTableModel* m = window_->docks().textures->model();
     const auto state = [m](int row) {
         return m->index(row, TextureTableModel::CacheStateColumn).data().toString();
@@ -171,7 +171,7 @@ void LoadingTests::textureCacheActions() {
     // Clear: every KTX2 file of the directory is gone.
     QCOMPARE(window_->loads().clearTextureCache(), 3);
     QVERIFY(QDir(dir.path()).entryList({QStringLiteral("*.ktx2")}, QDir::Files).isEmpty());
-    EditorSettings().setCacheDirectory(before);
+    EditorSettings().set(setting::kCacheDirectory, before);
 }
 
 // A base-colour image that does not exist: the dock says "missing: FILE" (not a
@@ -217,7 +217,7 @@ void LoadingTests::changedFilesAreOfferedOrReloaded() {
 
     test::reload_controller(*window_).setReloadAutomatically(false);
     window_->viewport()->camera().orbit(30.0f, 10.0f);
-    const glm::vec3 eye = window_->viewport()->camera().eye();
+    const glm::vec3 eye = window_->viewport()->camera().pose().eye();
     QSignalSpy loaded(&window_->loads(), &LoadController::sceneLoaded);
     const auto touch = [](const QString& path) { // rewritten as an exporter does
         QFile f(path);
@@ -242,10 +242,10 @@ void LoadingTests::changedFilesAreOfferedOrReloaded() {
     QVERIFY(reload);
     reload->click();
     QTRY_VERIFY_WITH_TIMEOUT(loaded.count() == 1, kLoadTimeoutMs);
-    QCOMPARE(window_->viewport()->camera().eye(), eye); // the view kept
+    QCOMPARE(window_->viewport()->camera().pose().eye(), eye); // the view kept
 
     test::reload_controller(*window_).setReloadAutomatically(true);
-    QVERIFY(EditorSettings().reloadAutomatically()); // remembered
+    QVERIFY(EditorSettings().get(setting::kReloadAutomatically)); // remembered
     QVERIFY(touch(png));
     QTRY_VERIFY_WITH_TIMEOUT(loaded.count() == 2, kLoadTimeoutMs);
     QVERIFY(!window_->findChild<QMessageBox*>(QStringLiteral("reloadOffer")) ||

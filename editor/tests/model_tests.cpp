@@ -57,18 +57,18 @@ void check_vertex_rows(const Mesh& mesh, const VertexTableModel& model) {
         QCOMPARE(display(model, row, VertexTableModel::IndexColumn), QString::number(v));
         for (int c = 0; c < 3; ++c) {
             QCOMPARE(display(model, row, VertexTableModel::PosX + c),
-                     Format::compact(x.position[c]));
-            QCOMPARE(display(model, row, VertexTableModel::NrmX + c), Format::compact(x.normal[c]));
+                     format::compact(x.position[c]));
+            QCOMPARE(display(model, row, VertexTableModel::NrmX + c), format::compact(x.normal[c]));
         }
         for (int c = 0; c < 4; ++c)
             QCOMPARE(display(model, row, VertexTableModel::TanX + c),
-                     Format::compact(x.tangent[c]));
+                     format::compact(x.tangent[c]));
         for (int c = 0; c < 2; ++c) {
-            QCOMPARE(display(model, row, VertexTableModel::Uv0U + c), Format::compact(x.uv0[c]));
-            QCOMPARE(display(model, row, VertexTableModel::Uv1U + c), Format::compact(x.uv1[c]));
+            QCOMPARE(display(model, row, VertexTableModel::Uv0U + c), format::compact(x.uv0[c]));
+            QCOMPARE(display(model, row, VertexTableModel::Uv1U + c), format::compact(x.uv1[c]));
         }
         QCOMPARE(display(model, row, VertexTableModel::ColR),
-                 mesh.colors.empty() ? QStringLiteral("—") : Format::compact(mesh.colors[v].r));
+                 mesh.colors.empty() ? QStringLiteral("—") : format::compact(mesh.colors[v].r));
     }
 }
 
@@ -126,7 +126,7 @@ void ModelTests::everyAssetMatchesTheEngine() {
         for (std::size_t a = 0; a < kVertexAttributeCount; ++a) {
             const int row = static_cast<int>(a);
             QCOMPARE(display(attributes, row, AttributeModel::ProvenanceColumn),
-                     Format::provenance(mesh.provenance[a]));
+                     format::provenance(mesh.provenance[a]));
             if (mesh.sources[a])
                 QCOMPARE(display(attributes, row, AttributeModel::CountColumn),
                          QString::number(mesh.sources[a]->count));
@@ -151,7 +151,7 @@ void ModelTests::everyAssetMatchesTheEngine() {
     QCOMPARE(textures.rowCount(), static_cast<int>(s.textures.size()));
     for (std::size_t t = 0; t < s.textures.size(); ++t) {
         QCOMPARE(display(textures, static_cast<int>(t), TextureTableModel::RoleColumn),
-                 Format::roles(s.textures[t].roles));
+                 format::roles(s.textures[t].roles));
         const std::int32_t image = s.textures[t].image;
         if (image >= 0 && !s.images[static_cast<std::size_t>(image)].encoded.empty())
             QVERIFY2(!out.session->thumbnails[t].isNull(),
@@ -175,7 +175,7 @@ void ModelTests::materialFieldsFollowTheGpuLayout() {
         last = offset;
     }
     QCOMPARE(last, 76);
-    QCOMPARE(display(model, 0, MaterialFieldsModel::ValueColumn), Format::vec(m.base_color_factor));
+    QCOMPARE(display(model, 0, MaterialFieldsModel::ValueColumn), format::vec(m.base_color_factor));
     QCOMPARE(display(model, 0, MaterialFieldsModel::FieldColumn),
              QStringLiteral("base_color_factor"));
     QCOMPARE(model.textureOfRow(6), m.base_color.texture); // base_color_tex
@@ -233,13 +233,13 @@ void ModelTests::millionVertexTableSortsByPermutation() {
     VertexTableModel model;
     model.setMesh(MeshRef{scene, 0});
     QCOMPARE(model.rowCount(), 1000000);
-    QCOMPARE(display(model, 999999, VertexTableModel::PosX), Format::compact(1.0));
+    QCOMPARE(display(model, 999999, VertexTableModel::PosX), format::compact(1.0));
     model.sort(VertexTableModel::PosX, Qt::AscendingOrder);
     QCOMPARE(model.vertexOfRow(0), 999999);
     QCOMPARE(model.rowOfVertex(999999), 0);
     QCOMPARE(display(model, 0, VertexTableModel::IndexColumn), QStringLiteral("999999"));
     model.sort(VertexTableModel::PosY, Qt::DescendingOrder);
-    QCOMPARE(display(model, 0, VertexTableModel::PosY), Format::compact(999.0));
+    QCOMPARE(display(model, 0, VertexTableModel::PosY), format::compact(999.0));
     for (int v : {0, 12345, 999999}) QCOMPARE(model.vertexOfRow(model.rowOfVertex(v)), v);
 }
 
@@ -260,7 +260,7 @@ void ModelTests::generatedTangentsAgreeWithRegeneration() {
     model.sort(VertexTableModel::TangentErrorColumn, Qt::DescendingOrder);
     const int worst = model.vertexOfRow(0);
     QCOMPARE(display(model, 0, VertexTableModel::TangentErrorColumn),
-             Format::compact(e.degrees[static_cast<std::size_t>(worst)]));
+             format::compact(e.degrees[static_cast<std::size_t>(worst)]));
 }
 
 void ModelTests::frameKeepsTheBoxInView() {
@@ -269,7 +269,7 @@ void ModelTests::frameKeepsTheBoxInView() {
     const Aabb box = Aabb::from_min_max({-3, -1, -2}, {5, 4, 1});
     cam.orbit(40, -25);
     cam.frame(box);
-    const glm::mat4 vp = cam.spec().view_projection();
+    const glm::mat4 vp = cam.pose().spec().view_projection();
     for (int c = 0; c < 8; ++c) {
         const glm::vec3 p((c & 1) ? box.max.x : box.min.x, (c & 2) ? box.max.y : box.min.y,
                           (c & 4) ? box.max.z : box.min.z);
@@ -280,7 +280,7 @@ void ModelTests::frameKeepsTheBoxInView() {
     }
     CameraSpec spec;
     std::string error;
-    QVERIFY2(parse_camera_spec(cam.toString(), spec, error), error.c_str());
+    QVERIFY2(parse_camera_spec(cam.pose().toString(), spec, error), error.c_str());
 }
 
 void ModelTests::pickHitsTheInstanceUnderTheRay() {
@@ -293,16 +293,17 @@ void ModelTests::pickHitsTheInstanceUnderTheRay() {
     // front of it) must be hit, and the hit must lie on the ray inside that instance's box.
     for (std::size_t i = 0; i < s.instances.size(); i += 7) {
         const Aabb& box = s.instances[i].world_bounds;
-        const glm::vec3 dir = glm::normalize(box.center() - cam.eye());
-        const PickHit hit = pick(s, cam.eye(), dir, [](std::size_t) { return true; });
+        const glm::vec3 dir = glm::normalize(box.center() - cam.pose().eye());
+        const PickHit hit = pick(s, cam.pose().eye(), dir, [](std::size_t) { return true; });
         QVERIFY(hit);
-        const glm::vec3 p = cam.eye() + dir * hit.distance;
+        const glm::vec3 p = cam.pose().eye() + dir * hit.distance;
         const Aabb& hit_box = s.instances[static_cast<std::size_t>(hit.instance)].world_bounds;
         QVERIFY(glm::all(glm::greaterThanEqual(p, hit_box.min - 1e-3f)) &&
                 glm::all(glm::lessThanEqual(p, hit_box.max + 1e-3f)));
     }
     // Hidden instances are not pickable.
-    const PickHit none = pick(s, cam.eye(), cam.forward(), [](std::size_t) { return false; });
+    const PickHit none =
+        pick(s, cam.pose().eye(), cam.pose().forward(), [](std::size_t) { return false; });
     QVERIFY(!none);
 }
 
@@ -348,7 +349,7 @@ void ModelTests::pickHitsLinesAndPointsWithinACone() {
     QCOMPARE(display(elements, 1, TriangleTableModel::V0), QStringLiteral("1"));
     QCOMPARE(display(elements, 1, TriangleTableModel::V1), QStringLiteral("2"));
     QVERIFY(display(elements, 1, TriangleTableModel::V2).isEmpty());
-    QCOMPARE(display(elements, 1, TriangleTableModel::AreaColumn), Format::number(1.0));
+    QCOMPARE(display(elements, 1, TriangleTableModel::AreaColumn), format::number(1.0));
     elements.setMesh(MeshRef{shared, 1});
     QCOMPARE(elements.rowCount(), 1);
     QVERIFY(display(elements, 0, TriangleTableModel::V1).isEmpty());

@@ -151,7 +151,7 @@ void MotionTests::vertexTableHasJointsWeightsAndMorphDeltas() {
         QStringList joints, weights;
         for (std::uint32_t k = 0; k < motion.influences; ++k) {
             joints << QString::number(motion.joints[std::size_t(f) * motion.influences + k]);
-            weights << Format::number(motion.weights[std::size_t(f) * motion.influences + k]);
+            weights << format::number(motion.weights[std::size_t(f) * motion.influences + k]);
         }
         QCOMPARE(table.index(row, VertexTableModel::ColumnCount).data().toString(),
                  joints.join(QLatin1Char(' ')));
@@ -180,7 +180,7 @@ void MotionTests::vertexTableHasJointsWeightsAndMorphDeltas() {
     const auto v = static_cast<std::size_t>(table.vertexOfRow(2));
     const auto f = static_cast<std::size_t>(table.motionColumns().sourceVertex(v));
     QCOMPARE(table.index(2, VertexTableModel::ColumnCount + 1).data().toString(),
-             Format::vec(m.targets[1].position[f]));
+             format::vec(m.targets[1].position[f]));
     // A static mesh has none.
     auto box = load_into(context, QStringLiteral("Box"));
     table.setMesh({box, 0});
@@ -190,31 +190,31 @@ void MotionTests::vertexTableHasJointsWeightsAndMorphDeltas() {
 void MotionTests::timelineListsTheFilesAnimations() {
     EditorContext context;
     TimelineDock dock(context);
-    QCOMPARE(dock.animationBox()->count(), 1); // "No animation"
-    QVERIFY(!dock.pose());
+    QCOMPARE(dock.findChild<QComboBox*>()->count(), 1); // "No animation"
+    QVERIFY(!dock.playback().pose());
     auto scene = load_into(context, QStringLiteral("BoxAnimated"));
     QVERIFY(scene);
-    QCOMPARE(dock.animationBox()->count(), static_cast<int>(scene->animations.size()) + 1);
-    QCOMPARE(dock.animation(), 0); // the first, paused at its start
-    QCOMPARE(dock.time(), static_cast<double>(scene->animations[0].start));
-    QVERIFY(dock.pose());
+    QCOMPARE(dock.findChild<QComboBox*>()->count(), static_cast<int>(scene->animations.size()) + 1);
+    QCOMPARE(dock.playback().animation(), 0); // the first, paused at its start
+    QCOMPARE(dock.playback().clock().time, static_cast<double>(scene->animations[0].start));
+    QVERIFY(dock.playback().pose());
     // Ticks: every key time of the animation's samplers, once.
     std::vector<double> keys;
     for (const AnimationSampler& s : scene->animations[0].samplers)
         keys.insert(keys.end(), s.times.begin(), s.times.end());
     std::sort(keys.begin(), keys.end());
     keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-    QCOMPARE(dock.slider()->ticks().size(), keys.size());
-    QCOMPARE(dock.slider()->ticks().front(), 0.0);
-    QCOMPARE(dock.slider()->ticks().back(), 1.0);
+    QCOMPARE(dock.findChild<TimelineSlider*>()->ticks().size(), keys.size());
+    QCOMPARE(dock.findChild<TimelineSlider*>()->ticks().front(), 0.0);
+    QCOMPARE(dock.findChild<TimelineSlider*>()->ticks().back(), 1.0);
     // No animation selected, nothing overridden: no pose (the scene as loaded).
     dock.setAnimation(-1);
-    QVERIFY(!dock.pose());
-    QVERIFY(!dock.slider()->isEnabled());
+    QVERIFY(!dock.playback().pose());
+    QVERIFY(!dock.findChild<TimelineSlider*>()->isEnabled());
     // A file without animations lists none.
     load_into(context, QStringLiteral("Box"));
-    QCOMPARE(dock.animationBox()->count(), 1);
-    QVERIFY(!dock.pose());
+    QCOMPARE(dock.findChild<QComboBox*>()->count(), 1);
+    QVERIFY(!dock.playback().pose());
 }
 
 void MotionTests::scrubbingChangesThePose() {
@@ -229,30 +229,33 @@ void MotionTests::scrubbingChangesThePose() {
     const double t2 = anim.start + 0.6 * (anim.end - anim.start);
     dock.scrubTo(t1);
     QVERIFY(!changed.isEmpty());
-    const glm::mat4 at1 = dock.pose()->world[node];
+    const glm::mat4 at1 = dock.playback().pose()->world[node];
     // The same pose is not made and announced again: retranslating, play then pause
     // before a tick, scrubbing to the same time.
     const qsizetype announced = changed.count();
-    const std::shared_ptr<const Pose> same = dock.pose();
+    const std::shared_ptr<const Pose> same = dock.playback().pose();
     dock.retranslate();
     dock.setPlaying(true);
     dock.setPlaying(false);
     dock.scrubTo(t1);
     QCOMPARE(changed.count(), announced);
-    QCOMPARE(dock.pose(), same);
+    QCOMPARE(dock.playback().pose(), same);
     QVERIFY(same_matrix(at1, evaluate_pose(*scene, 0, t1).world[node]));
     dock.scrubTo(t2);
-    QVERIFY(same_matrix(dock.pose()->world[node], evaluate_pose(*scene, 0, t2).world[node]));
-    QVERIFY(!same_matrix(dock.pose()->world[node], at1));
-    QVERIFY(dock.timeLabel()->text().contains(QString::number(t2, 'f', 3)));
-    // The slider scrubs too (its range is the animation's).
-    dock.slider()->setValue(TimelineDock::kSliderSteps / 2);
-    QCOMPARE(dock.time(), 0.5 * (anim.start + anim.end));
     QVERIFY(
-        same_matrix(dock.pose()->world[node], evaluate_pose(*scene, 0, dock.time()).world[node]));
+        same_matrix(dock.playback().pose()->world[node], evaluate_pose(*scene, 0, t2).world[node]));
+    QVERIFY(!same_matrix(dock.playback().pose()->world[node], at1));
+    QVERIFY(dock.findChild<QLabel*>(QStringLiteral("timelineTime"))
+                ->text()
+                .contains(QString::number(t2, 'f', 3)));
+    // The slider scrubs too (its range is the animation's).
+    dock.findChild<TimelineSlider*>()->setValue(TimelineDock::kSliderSteps / 2);
+    QCOMPARE(dock.playback().clock().time, 0.5 * (anim.start + anim.end));
+    QVERIFY(same_matrix(dock.playback().pose()->world[node],
+                        evaluate_pose(*scene, 0, dock.playback().clock().time).world[node]));
     // Beyond the range: clamped to the last key.
     dock.scrubTo(anim.end + 100.0);
-    QCOMPARE(dock.time(), static_cast<double>(anim.end));
+    QCOMPARE(dock.playback().clock().time, static_cast<double>(anim.end));
 }
 
 void MotionTests::playLoopAdvancesAndWraps() {
@@ -264,29 +267,30 @@ void MotionTests::playLoopAdvancesAndWraps() {
     const double duration = anim.end - anim.start;
     QVERIFY(duration > 0.0);
     dock.advance(0.1); // paused: nothing moves
-    QCOMPARE(dock.time(), static_cast<double>(anim.start));
+    QCOMPARE(dock.playback().clock().time, static_cast<double>(anim.start));
     dock.setPlaying(true);
     dock.advance(0.25 * duration);
-    QCOMPARE(dock.time(), anim.start + 0.25 * duration);
+    QCOMPARE(dock.playback().clock().time, anim.start + 0.25 * duration);
     dock.setSpeed(2.0);
     dock.advance(0.25 * duration); // twice as fast: at three quarters
-    QVERIFY(std::abs(dock.time() - (anim.start + 0.75 * duration)) < 1e-9);
+    QVERIFY(std::abs(dock.playback().clock().time - (anim.start + 0.75 * duration)) < 1e-9);
     dock.advance(0.25 * duration); // past the end: wraps to a quarter
-    QVERIFY(std::abs(dock.time() - (anim.start + 0.25 * duration)) < 1e-6);
-    QVERIFY(dock.clock().playing);
-    QVERIFY(same_matrix(dock.pose()->world[anim.channels[0].node],
-                        evaluate_pose(*scene, 0, dock.time()).world[anim.channels[0].node]));
+    QVERIFY(std::abs(dock.playback().clock().time - (anim.start + 0.25 * duration)) < 1e-6);
+    QVERIFY(dock.playback().clock().playing);
+    QVERIFY(same_matrix(
+        dock.playback().pose()->world[anim.channels[0].node],
+        evaluate_pose(*scene, 0, dock.playback().clock().time).world[anim.channels[0].node]));
     // Without loop the run stops on the last key.
     dock.setLoop(false);
     dock.advance(10.0 * duration);
-    QCOMPARE(dock.time(), static_cast<double>(anim.end));
-    QVERIFY(!dock.clock().playing);
+    QCOMPARE(dock.playback().clock().time, static_cast<double>(anim.end));
+    QVERIFY(!dock.playback().clock().playing);
     // The timer drives it while playing (wall clock; not asserted on how far).
     dock.setLoop(true);
     dock.setSpeed(1.0);
     dock.setPlaying(true);
-    const double before = dock.time();
-    QTRY_VERIFY(dock.time() != before);
+    const double before = dock.playback().clock().time;
+    QTRY_VERIFY(dock.playback().clock().time != before);
     dock.setPlaying(false);
 }
 
@@ -302,18 +306,18 @@ void MotionTests::morphSlidersOverrideThePoseWeights() {
     const auto mesh = scene->nodes[std::size_t(node)].mesh;
     dock.scrubTo(1.0);
     const std::vector<float> animated = evaluate_pose(*scene, 0, 1.0).weights[std::size_t(node)];
-    QCOMPARE(dock.pose()->weights[std::size_t(node)], animated);
-    QVERIFY(!dock.morphWeights()->setOverride(mesh, 7, 0.5f)); // no such target
-    QVERIFY(dock.morphWeights()->setOverride(mesh, 1, 0.75f));
-    QCOMPARE(dock.pose()->weights[std::size_t(node)][1], 0.75f);
+    QCOMPARE(dock.playback().pose()->weights[std::size_t(node)], animated);
+    QVERIFY(!dock.findChild<MorphWeightsPanel*>()->setOverride(mesh, 7, 0.5f)); // no such target
+    QVERIFY(dock.findChild<MorphWeightsPanel*>()->setOverride(mesh, 1, 0.75f));
+    QCOMPARE(dock.playback().pose()->weights[std::size_t(node)][1], 0.75f);
     // The other target keeps the slider's value (which followed the animation).
-    QVERIFY(std::abs(dock.pose()->weights[std::size_t(node)][0] - animated[0]) < 1e-3f);
+    QVERIFY(std::abs(dock.playback().pose()->weights[std::size_t(node)][0] - animated[0]) < 1e-3f);
     // Overrides hold while the time changes, and without an animation.
     dock.scrubTo(3.0);
-    QCOMPARE(dock.pose()->weights[std::size_t(node)][1], 0.75f);
+    QCOMPARE(dock.playback().pose()->weights[std::size_t(node)][1], 0.75f);
     dock.setAnimation(-1);
-    QVERIFY(dock.pose());
-    QCOMPARE(dock.pose()->weights[std::size_t(node)][1], 0.75f);
+    QVERIFY(dock.playback().pose());
+    QCOMPARE(dock.playback().pose()->weights[std::size_t(node)][1], 0.75f);
 }
 
 void MotionTests::windowPostsThePoseAndSelectedJoint() {
@@ -335,14 +339,14 @@ void MotionTests::windowPostsThePoseAndSelectedJoint() {
                     same_matrix(w->frames().lastFrame().request.pose->world[node], expected));
         // The culling dock culls the instances where the pose puts them.
         const Pose pose = evaluate_pose(scene, 0, t);
-        test::culling_monitor(*w).flush();
+        test::culling_monitor(*w).pacing().flush();
         for (std::size_t i = 0; i < scene.instances.size(); ++i) {
             const MeshInstance& inst = scene.instances[i];
             const auto prim = std::find_if(
                 scene.primitives.begin(), scene.primitives.end(),
                 [&](const PrimitiveInfo& p) { return p.engine_mesh == int(inst.mesh_id); });
             const Aabb expected_box = culling_bounds(scene, pose, inst.node_id, *prim);
-            const Aabb box = test::culling_monitor(*w).box(i);
+            const Aabb box = test::culling_monitor(*w).input().boxes.box(i);
             QVERIFY(
                 glm::all(glm::lessThan(glm::abs(box.min - expected_box.min), glm::vec3(1e-5f))));
             QVERIFY(

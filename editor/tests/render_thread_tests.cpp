@@ -156,7 +156,7 @@ void RenderThreadTests::stillFrameIsFullResolutionAfterMotion() {
     // Back to where it was, one moving frame, then nothing: the camera rests.
     w.viewport()->camera() = rest;
     Q_EMIT w.viewport()->cameraChanged();
-    QTRY_VERIFY(w.frames().lastFrame().request.camera.eye == rest.eye()); // asked for
+    QTRY_VERIFY(w.frames().lastFrame().request.camera.eye == rest.pose().eye()); // asked for
     const std::uint64_t moving = test::latest_request(w);
     QVERIFY(waitForReport(w, [&](const FrameReport& r) { return r.request == moving; }));
     QCOMPARE(w.frames().lastReport().scale, kMinResolutionScale);
@@ -192,14 +192,14 @@ void RenderThreadTests::playbackIsMotionAndPauseIsExact() {
     timeline.setPlaying(true);
     for (int i = 0; i < 3; ++i) {
         timeline.advance(0.05);
-        QTRY_VERIFY(w.frames().lastFrame().request.pose == timeline.pose()); // asked for
+        QTRY_VERIFY(w.frames().lastFrame().request.pose == timeline.playback().pose()); // asked for
         const std::uint64_t step = test::latest_request(w);
         QVERIFY(waitForReport(w, [&](const FrameReport& r) { return r.request >= step; }));
     }
     QVERIFY2(w.frames().lastReport().scale < 1.0f,
              qPrintable(QString::number(w.frames().lastReport().scale)));
     QCOMPARE(w.frames().lastFrame().request.camera.eye,
-             w.viewport()->camera().spec().eye); // camera still
+             w.viewport()->camera().pose().spec().eye); // camera still
     // Paused: nobody asks again, and the pose of this time is drawn at full size.
     timeline.setPlaying(false);
     const std::uint64_t paused = test::latest_request(w);

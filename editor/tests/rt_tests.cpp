@@ -181,9 +181,9 @@ void RtTests::rtOffBuildsNothing() {
     QVERIFY(!off.docks().acceleration->model()->stats());
     // The ray-traced mode is refused there, never drawn: back to raster.
     off.views().setDebugView(QStringLiteral("normal"), false);
-    off.comparison().controls().setMode(ViewportMode::RayTraced);
+    off.comparison().state().setMode(ViewportMode::RayTraced);
     test::viewport_shot(off);
-    QTRY_COMPARE_WITH_TIMEOUT(off.comparison().controls().state().mode, ViewportMode::Raster,
+    QTRY_COMPARE_WITH_TIMEOUT(off.comparison().state().comparison().mode, ViewportMode::Raster,
                               10000);
     qsizetype seen = 0;
     const QString fresh = test::fresh_validation_messages(off, seen);
@@ -192,7 +192,7 @@ void RtTests::rtOffBuildsNothing() {
 
 void RtTests::cleanup() {
     if (!window_) return;
-    window_->comparison().controls().setMode(ViewportMode::Raster);
+    window_->comparison().state().setMode(ViewportMode::Raster);
     window_->views().setDebugView(QStringLiteral("lit"), false);
 }
 
@@ -202,10 +202,10 @@ void RtTests::rayTracedModeDrawsRtFrames() {
     w.selection().pickAt(QPointF(-0.99, 0.99)); // nothing selected: no highlight on the raster side
     QVERIFY(w.views().setDebugView(QStringLiteral("normal"), false));
     const QImage raster = test::viewport_shot(w);
-    w.comparison().controls().setMode(ViewportMode::RayTraced);
+    w.comparison().state().setMode(ViewportMode::RayTraced);
     const QImage rays = test::viewport_shot(w);
     QCOMPARE(w.frames().lastFrame().compare.mode, ViewportMode::RayTraced);
-    QCOMPARE(w.comparison().controls().state().mode, ViewportMode::RayTraced); // not refused
+    QCOMPARE(w.comparison().state().comparison().mode, ViewportMode::RayTraced); // not refused
     QVERIFY(w.frames().lastReport().refused.isEmpty());
     // The ray tracer's pass drew it: its timings name it.
     QStringList passes;
@@ -231,9 +231,9 @@ void RtTests::litIsPathTracedAndAccumulatesAtRest() {
     MainWindow& w = *window_;
     QVERIFY(test::load(w, QStringLiteral("builtin:default")));
     QVERIFY(w.views().setDebugView(QStringLiteral("lit"), false));
-    w.comparison().controls().setMode(ViewportMode::RayTraced);
+    w.comparison().state().setMode(ViewportMode::RayTraced);
     test::viewport_shot(w);
-    QCOMPARE(w.comparison().controls().state().mode, ViewportMode::RayTraced); // not refused
+    QCOMPARE(w.comparison().state().comparison().mode, ViewportMode::RayTraced); // not refused
     QTRY_VERIFY2_WITH_TIMEOUT(
         w.frames().lastReport().path_traced && w.frames().lastReport().path_samples >= 6,
         qPrintable(QString::number(w.frames().lastReport().path_samples)), 90000);
@@ -287,9 +287,10 @@ void RtTests::refusedViewGoesBackToRaster() {
     QVERIFY(w.views().setDebugView(QStringLiteral("uv0-checker"),
                                    false)); // derivatives: no ray formula
     const int errors = w.docks().log->errorCount();
-    w.comparison().controls().setMode(ViewportMode::RayTraced);
+    w.comparison().state().setMode(ViewportMode::RayTraced);
     test::viewport_shot(w);
-    QTRY_COMPARE_WITH_TIMEOUT(w.comparison().controls().state().mode, ViewportMode::Raster, 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(w.comparison().state().comparison().mode, ViewportMode::Raster,
+                              10000);
     QVERIFY2(w.docks().log->text().contains(QStringLiteral("The ray tracer cannot draw")),
              qPrintable(w.docks().log->text()));
     QVERIFY(w.docks().log->text().contains(QStringLiteral("uv0-checker")));
@@ -309,7 +310,7 @@ void RtTests::splitShowsALeftAndBRight() {
     QVERIFY(w.views().setDebugView(QStringLiteral("uv0"), false));
     const QImage b = test::viewport_shot(w);
     QVERIFY(w.views().setDebugView(QStringLiteral("normal"), false));
-    CompareControls& c = w.comparison().controls();
+    CompareState& c = w.comparison().state();
     c.setSide(SideB::OtherView, view("uv0"));
     c.setMode(ViewportMode::Split);
     c.setDivider(0.5f);
@@ -332,28 +333,28 @@ void RtTests::splitShowsALeftAndBRight() {
 void RtTests::draggingMovesTheDivider() {
     MainWindow& w = *window_;
     QVERIFY(w.views().setDebugView(QStringLiteral("normal"), false));
-    CompareControls& c = w.comparison().controls();
+    CompareState& c = w.comparison().state();
     c.setSide(SideB::OtherView, view("uv0"));
     c.setMode(ViewportMode::Split);
     c.setDivider(0.5f);
     ViewportWindow* vp = w.viewport();
     QCOMPARE(vp->divider().value_or(-1.0f), 0.5f);
     const int y = vp->height() / 2, width = vp->width();
-    const CameraSpec camera = vp->camera().spec();
+    const CameraSpec camera = vp->camera().pose().spec();
     // Grabbed at the line (within the grab zone), dropped at a quarter of the width.
     QTest::mousePress(vp, Qt::LeftButton, Qt::NoModifier, QPoint(width / 2 + 3, y));
     QTest::mouseMove(vp, QPoint(width / 3, y));
     QTest::mouseMove(vp, QPoint(width / 4, y));
     QTest::mouseRelease(vp, Qt::LeftButton, Qt::NoModifier, QPoint(width / 4, y));
-    QVERIFY(std::abs(c.state().divider - 0.25f) < 0.01f);
-    QCOMPARE(vp->camera().spec().eye, camera.eye); // the camera did not orbit
+    QVERIFY(std::abs(c.comparison().divider - 0.25f) < 0.01f);
+    QCOMPARE(vp->camera().pose().spec().eye, camera.eye); // the camera did not orbit
     // Ctrl+drag from anywhere.
     QTest::mousePress(vp, Qt::LeftButton, Qt::ControlModifier, QPoint(width * 3 / 4, y));
     QTest::mouseMove(vp, QPoint(width * 7 / 10, y));
     QTest::mouseMove(vp, QPoint(width * 4 / 5, y));
     QTest::mouseRelease(vp, Qt::LeftButton, Qt::ControlModifier, QPoint(width * 4 / 5, y));
-    QVERIFY(std::abs(c.state().divider - 0.8f) < 0.01f);
-    QCOMPARE(vp->camera().spec().eye, camera.eye);
+    QVERIFY(std::abs(c.comparison().divider - 0.8f) < 0.01f);
+    QCOMPARE(vp->camera().pose().spec().eye, camera.eye);
     // The frame follows: B (uv0) now starts at 80% of the width.
     const QImage split = test::viewport_shot(w);
     c.setMode(ViewportMode::Raster);
@@ -366,7 +367,7 @@ void RtTests::draggingMovesTheDivider() {
     QTest::mouseMove(vp, QPoint(width / 2 + 40, y));
     QTest::mouseMove(vp, QPoint(width / 2 + 80, y));
     QTest::mouseRelease(vp, Qt::LeftButton, Qt::NoModifier, QPoint(width / 2 + 80, y));
-    QVERIFY(vp->camera().spec().eye != camera.eye);
+    QVERIFY(vp->camera().pose().spec().eye != camera.eye);
     checkValidation();
 }
 
@@ -375,12 +376,12 @@ void RtTests::differenceOfASceneWithItselfIsZero() {
     const QString file = test::asset(QStringLiteral("BoxTextured"));
     QVERIFY(test::load(w, file));
     QVERIFY(w.views().setDebugView(QStringLiteral("base-color"), false));
-    CompareControls& c = w.comparison().controls();
+    CompareState& c = w.comparison().state();
     c.setMode(ViewportMode::Difference);
     // Side B: the same file, loaded again as another file is.
     w.comparison().compareWithFile(file);
     QTRY_VERIFY_WITH_TIMEOUT(test::compare_session(w) != nullptr, 30000);
-    QCOMPARE(c.state().side, SideB::OtherFile);
+    QCOMPARE(c.comparison().side, SideB::OtherFile);
     QVERIFY(test::compare_session(w) != w.context().sharedSession()); // a second scene
     DifferenceLegend& legend = test::difference_legend(w);
     QVERIFY(legend.isVisible());

@@ -139,8 +139,8 @@ DifferenceNumbers TangentCompareTests::differenceWith(TangentMethod method) {
     }
     if (now == before) return {};
     // The first load (from Raster) switches to Split with side B set.
-    if (!before && w.comparison().controls().state().mode != ViewportMode::Split) return {};
-    w.comparison().controls().setMode(ViewportMode::Difference);
+    if (!before && w.comparison().state().comparison().mode != ViewportMode::Split) return {};
+    w.comparison().state().setMode(ViewportMode::Difference);
     return currentNumbers();
 }
 
@@ -177,14 +177,14 @@ void TangentCompareTests::methodsDifferWhereTheFamilySaysTheyDo() {
     const QString model = QFileInfo(file).baseName();
     QVERIFY(test::load(w, file));
     QVERIFY(w.views().setDebugView(QStringLiteral("tangent"), false));
-    CompareControls& c = w.comparison().controls();
-    QCOMPARE(c.state().mode, ViewportMode::Raster); // side B chosen outside a comparison
+    CompareState& c = w.comparison().state();
+    QCOMPARE(c.comparison().mode, ViewportMode::Raster); // side B chosen outside a comparison
     // Exact MikkTSpace on side B. Without TANGENT in the file side A is exact
     // MikkTSpace too (the glTF rule): identical. With it, A is the file's tangents,
     // which MikkTSpace reproduces to a small fraction of a degree: under a 1/255 step.
     const DifferenceNumbers exact = differenceWith(TangentMethod::MikkTSpace);
     QVERIFY(exact.valid);
-    QCOMPARE(c.state().side, SideB::OtherFile);
+    QCOMPARE(c.comparison().side, SideB::OtherFile);
     // The log says what side A's tangents are (each of these files has one primitive).
     const QString a = authored ? QStringLiteral("1 primitive(s) authored, 0 exact MikkTSpace")
                                : QStringLiteral("0 primitive(s) authored, 1 exact MikkTSpace");
@@ -232,9 +232,9 @@ void TangentCompareTests::tangentSideFollowsTheFile() {
     QVERIFY(test::load(w, duck_));
     QTRY_VERIFY_WITH_TIMEOUT(test::compare_session(w) && test::compare_session(w)->spec == duck_,
                              30000);
-    QVERIFY(w.comparison().controls().state().comparing());
-    QCOMPARE(w.comparison().controls().state().side, SideB::OtherFile);
-    w.comparison().controls().setMode(ViewportMode::Raster);
+    QVERIFY(w.comparison().state().comparison().comparing());
+    QCOMPARE(w.comparison().state().comparison().side, SideB::OtherFile);
+    w.comparison().state().setMode(ViewportMode::Raster);
     QVERIFY(!test::compare_session(w));
     checkValidation();
 }

@@ -58,7 +58,7 @@ int differingPixels(const QImage& a, const QImage& b) {
 bool aspectFollows(const ViewportWindow& v) {
     const float aspect =
         static_cast<float>(v.width()) / static_cast<float>(std::max(v.height(), 1));
-    return std::abs(v.camera().spec().aspect - aspect) < 1e-3f;
+    return std::abs(v.camera().pose().spec().aspect - aspect) < 1e-3f;
 }
 
 // The largest |x| and |y| in NDC of the box's corners seen by `camera`.
@@ -128,7 +128,7 @@ void ViewportTests::framingFitsEveryAspect() {
         OrbitCamera cam;
         cam.setAspect(aspect);
         cam.frame(box);
-        const QPointF e = ndcExtent(cam.spec(), box);
+        const QPointF e = ndcExtent(cam.pose().spec(), box);
         QVERIFY2(e.x() <= 1.0 && e.y() <= 1.0,
                  qPrintable(QStringLiteral("aspect %1: %2 %3").arg(aspect).arg(e.x()).arg(e.y())));
         QVERIFY2(std::max(e.x(), e.y()) > 0.9, qPrintable(QString::number(aspect)));
@@ -218,10 +218,10 @@ void ViewportTests::gpuCullingAgreesWithCpu() {
         window_->viewport()->camera().orbit(120.0f, 20.0f); // new frustum each step
         Q_EMIT window_->viewport()->cameraChanged();
         // The CPU pass is there at once; the GPU's answer comes from the render thread.
-        QVERIFY(test::culling_monitor(*window_).latest());
-        QTRY_VERIFY_WITH_TIMEOUT(test::culling_monitor(*window_).latest()->gpu_visible >= 0,
-                                 kLoadTimeoutMs);
-        const CullSample* s = test::culling_monitor(*window_).latest();
+        QVERIFY(test::culling_monitor(*window_).history().latest());
+        QTRY_VERIFY_WITH_TIMEOUT(
+            test::culling_monitor(*window_).history().latest()->gpu_visible >= 0, kLoadTimeoutMs);
+        const CullSample* s = test::culling_monitor(*window_).history().latest();
         QCOMPARE(s->cpu_gpu_differences, 0);
         QCOMPARE(static_cast<std::uint64_t>(s->gpu_visible), s->cpu.visible);
         QVERIFY(window_->docks().culling->agreementText().contains(QStringLiteral("✔")));
@@ -234,13 +234,13 @@ void ViewportTests::gpuCullingAgreesWithCpu() {
          {QStringLiteral("builtin:default"), QStringLiteral("builtin:grid?n=10"),
           test::asset(QStringLiteral("DamagedHelmet"))}) {
         QVERIFY(load(*window_, spec));
-        QTRY_VERIFY_WITH_TIMEOUT(test::culling_monitor(*window_).latest()->gpu_visible >= 0,
-                                 kLoadTimeoutMs);
-        const CullSample* s = test::culling_monitor(*window_).latest();
+        QTRY_VERIFY_WITH_TIMEOUT(
+            test::culling_monitor(*window_).history().latest()->gpu_visible >= 0, kLoadTimeoutMs);
+        const CullSample* s = test::culling_monitor(*window_).history().latest();
         QCOMPARE(s->cpu_gpu_differences, 0);
     }
     window_->views().setGpuCulling(false);
-    QCOMPARE(test::culling_monitor(*window_).latest()->gpu_visible, -1);
+    QCOMPARE(test::culling_monitor(*window_).history().latest()->gpu_visible, -1);
     QVERIFY(window_->docks().culling->agreementText().contains(QStringLiteral("off")));
     QVERIFY(test::next_frame(*window_));
     QVERIFY(window_->frames().lastFrame().request.cull == gpu::CullPath::Cpu);
@@ -291,16 +291,16 @@ void ViewportTests::narrowViewportFramesTheHelmet() {
     QTRY_COMPARE(window_->viewport()->width(), vp->width()); // the native window follows
     QTRY_VERIFY(aspectFollows(*window_->viewport()));        // and its resize event has come
     QVERIFY(window_->viewport()->height() > window_->viewport()->width());
-    QPointF e = ndcExtent(window_->viewport()->camera().spec(), bounds);
+    QPointF e = ndcExtent(window_->viewport()->camera().pose().spec(), bounds);
     QVERIFY2(e.x() <= 1.0 && e.y() <= 1.0, "re-framed for the narrow viewport");
     QVERIFY(std::max(e.x(), e.y()) > 0.79 && std::max(e.x(), e.y()) < 0.81); // tight
     // Once the user has moved the camera it stays; F frames for the aspect again.
     window_->viewport()->setAutoFrame(false);
     window_->viewport()->camera().dolly(6.0f);
-    e = ndcExtent(window_->viewport()->camera().spec(), bounds);
+    e = ndcExtent(window_->viewport()->camera().pose().spec(), bounds);
     QVERIFY(e.x() > 1.0); // dollied in: clipped, as the user asked
     QTest::keyClick(window_->viewport(), Qt::Key_F);
-    e = ndcExtent(window_->viewport()->camera().spec(), bounds);
+    e = ndcExtent(window_->viewport()->camera().pose().spec(), bounds);
     QVERIFY2(e.x() <= 1.0 && e.y() <= 1.0, "frame all (F)");
     QVERIFY(std::max(e.x(), e.y()) > 0.79 && std::max(e.x(), e.y()) < 0.81);
     vp->setMaximumWidth(QWIDGETSIZE_MAX);
@@ -316,13 +316,13 @@ void ViewportTests::framingIsTheEnginesOnLoadFrameAllAndSelection() {
     const Aabb bounds = window_->context().scene()->bounds;
     auto expectAuto = [&](const char* when) {
         FramingOptions options;
-        options.aspect = vp.camera().spec().aspect;
-        options.fov_y_degrees = vp.camera().fovDegrees();
+        options.aspect = vp.camera().pose().spec().aspect;
+        options.fov_y_degrees = vp.camera().pose().fov_degrees;
         const CameraSpec engine = frame_scene(*window_->context().scene(), nullptr, options);
         const float scale = glm::length(bounds.extent());
-        QVERIFY2(glm::length(vp.camera().eye() - engine.eye) < 1e-4f * scale, when);
-        QVERIFY2(glm::length(vp.camera().target() - engine.target) < 1e-4f * scale, when);
-        QVERIFY2(vp.camera().forward().y < -0.3f, when);
+        QVERIFY2(glm::length(vp.camera().pose().eye() - engine.eye) < 1e-4f * scale, when);
+        QVERIFY2(glm::length(vp.camera().pose().target - engine.target) < 1e-4f * scale, when);
+        QVERIFY2(vp.camera().pose().forward().y < -0.3f, when);
     };
     expectAuto("on load");
     vp.camera().orbit(200.0f, -90.0f);
@@ -331,10 +331,10 @@ void ViewportTests::framingIsTheEnginesOnLoadFrameAllAndSelection() {
     expectAuto("frame all");
     QVERIFY(window_->selection().selectNodeNamed(QStringLiteral("0")));
     vp.camera().orbit(-150.0f, 40.0f);
-    const glm::vec3 direction = vp.camera().forward();
+    const glm::vec3 direction = vp.camera().pose().forward();
     QTest::keyClick(&vp, Qt::Key_F, Qt::ShiftModifier);
-    QVERIFY(glm::dot(vp.camera().forward(), direction) > 0.9999f);
-    QVERIFY(ndcExtent(vp.camera().spec(), bounds).x() > 0.0); // still a usable camera
+    QVERIFY(glm::dot(vp.camera().pose().forward(), direction) > 0.9999f);
+    QVERIFY(ndcExtent(vp.camera().pose().spec(), bounds).x() > 0.0); // still a usable camera
     QVERIFY(load(*window_, QStringLiteral("builtin:default")));
 }
 
@@ -350,7 +350,7 @@ void ViewportTests::fileCamerasAreOfferedAndSetTheFront() {
     const glm::vec3 file_eye = glm::vec3(scene.placed_cameras.at(0).world[3]);
     const OrbitCamera& cam = window_->viewport()->camera();
     const auto horizontal = [](glm::vec3 v) { return glm::normalize(glm::vec2(v.x, v.z)); };
-    QVERIFY(glm::dot(horizontal(cam.eye() - cam.target()),
+    QVERIFY(glm::dot(horizontal(cam.pose().eye() - cam.pose().target),
                      horizontal(file_eye - scene.bounds.center())) > 0.8f);
     QMenu* cameras = nullptr;
     for (QMenu* m : window_->menuBar()->findChildren<QMenu*>())
@@ -360,7 +360,7 @@ void ViewportTests::fileCamerasAreOfferedAndSetTheFront() {
     QCOMPARE(cameras->actions().size(), 1);
     QVERIFY(cameras->actions().front()->isEnabled());
     cameras->actions().front()->trigger();
-    QVERIFY(glm::length(window_->viewport()->camera().eye() - file_eye) <
+    QVERIFY(glm::length(window_->viewport()->camera().pose().eye() - file_eye) <
             1e-3f * glm::length(scene.bounds.extent()));
     QVERIFY(load(*window_, QStringLiteral("builtin:default")));
 }

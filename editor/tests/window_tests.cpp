@@ -81,7 +81,8 @@ void WindowTests::opensEveryAsset() {
                  static_cast<int>(s->scenes.size() + s->skins.size() + s->animations.size()));
         QCOMPARE(window_->docks().textures->model()->rowCount(),
                  static_cast<int>(s->textures.size()));
-        QCOMPARE(test::culling_monitor(*window_).latest()->cpu.total, s->instances.size());
+        QCOMPARE(test::culling_monitor(*window_).history().latest()->cpu.total,
+                 s->instances.size());
     }
 }
 
@@ -121,21 +122,21 @@ void WindowTests::selectionReachesEveryDock() {
     for (int row = 0; row < 64 && !rounded.isValid(); ++row)
         for (int c = VertexTableModel::PosX; c <= VertexTableModel::PosZ; ++c) {
             const QModelIndex i = vm->index(row, c);
-            if (i.data(Format::kExactTextRole).toString() != i.data().toString()) {
+            if (i.data(format::kExactTextRole).toString() != i.data().toString()) {
                 rounded = i;
                 break;
             }
         }
     QVERIFY2(rounded.isValid(), "a DamagedHelmet position needs more than six digits");
     QVERIFY(rounded.data().toString().size() <
-            rounded.data(Format::kExactTextRole).toString().size());
+            rounded.data(format::kExactTextRole).toString().size());
     vertices->setCurrentIndex(rounded);
     vertices->setFocus();
     QApplication::clipboard()->clear();
     QTest::keyClick(vertices, Qt::Key_C, Qt::ControlModifier);
-    QCOMPARE(QApplication::clipboard()->text(), rounded.data(Format::kExactTextRole).toString());
+    QCOMPARE(QApplication::clipboard()->text(), rounded.data(format::kExactTextRole).toString());
     QCOMPARE(QApplication::clipboard()->text().toFloat(),
-             rounded.data(Format::kExactTextRole).toString().toFloat());
+             rounded.data(format::kExactTextRole).toString().toFloat());
     // Filter the tree: only matching names (and their ancestors) stay.
     window_->docks().sceneTree->setFilter(QStringLiteral("no such node"));
     QCOMPARE(tree->model()->rowCount(), 0);
@@ -275,9 +276,10 @@ void WindowTests::layoutIsSavedAndRestored() {
     MainWindow second(nullptr);
     QVERIFY(second.docks().culling->isFloating());
     QVERIFY(second.docks().log->isHidden());
-    QVERIFY(!EditorSettings().recentFiles().isEmpty());
+    QVERIFY(!EditorSettings().get(setting::kRecentFiles).isEmpty());
     // The last file loaded (built-in scenes are not files, a cancelled load is not one).
-    QCOMPARE(EditorSettings().recentFiles().value(0), test::asset(QStringLiteral("Box")));
+    QCOMPARE(EditorSettings().get(setting::kRecentFiles).value(0),
+             test::asset(QStringLiteral("Box")));
     second.docks().culling->setFloating(false);
     second.docks().log->show();
     second.close();

@@ -26,14 +26,7 @@ EXEMPT: dict[str, tuple[int, int, str]] = {
     "GpuViewport": (18, 24, "the engine behind the viewport: device, upload, environment, present and "
                     "the readbacks (material, GPU culling check) in one class"),
     "ViewportWindow": (19, 30, "the viewport window: input, divider and frame pacing in one class"),
-    "LabDock": (16, 29, "the Lab dock: runner wiring and table/chart in one class"),
     "EditorContext": (22, 23, "the editor's shared state: selection, visibility and session in one"),
-    "TimelineDock": (16, 21, "the timeline: playback state and widgets in one class"),
-    "Format": (19, 19, "a static number-formatting table (a namespace in a class, for tr())"),
-    "CullingMonitor": (18, 19, "the culling dock's model: history, chart data and check state"),
-    "OrbitCamera": (17, 19, "the orbit camera: input mapping and camera state"),
-    "CompareControls": (17, 19, "the comparison controls: actions and their state"),
-    "EditorSettings": (18, 18, "typed QSettings accessors, one pair per setting"),
     "RenderThread": (13, 16, "the render thread: tasks, frames and readbacks"),
 }
 

@@ -125,7 +125,7 @@ void print_latency(const char* what, const std::vector<double>& d) {
 QString pass_times(MainWindow& w) {
     return w.frames()
         .renderer()
-        ->call([](GpuViewport& gpu) { return gpu.lastPassTimes(); })
+        ->call([](GpuViewport& gpu) { return test::last_pass_times(gpu); })
         .join(", ");
 }
 
@@ -182,7 +182,7 @@ int main(int argc, char** argv) {
     for (int round = 0; round < 2; ++round)
         for (Variant& v : variants) {
             w.frames().renderer()->call(
-                [&v](GpuViewport& gpu) { gpu.setReducedFramePrepass(v.prepass); });
+                [&v](GpuViewport& gpu) { gpu.presenter().setReducedFramePrepass(v.prepass); });
             w.frames().renderer()->setTargetFrameMs(v.target_ms);
             const OrbitResult r = orbit(w, seconds, 6.0f, false);
             std::printf("  last moving frame passes: %s\n", qPrintable(pass_times(w)));
@@ -190,7 +190,8 @@ int main(int argc, char** argv) {
             print_orbit(v.name, r);
             v.fps += fps(r) / 2.0;
         }
-    w.frames().renderer()->call([](GpuViewport& gpu) { gpu.setReducedFramePrepass(false); });
+    w.frames().renderer()->call(
+        [](GpuViewport& gpu) { gpu.presenter().setReducedFramePrepass(false); });
     w.frames().renderer()->setTargetFrameMs(kTargetFrameMs);
     std::printf("  means of both rounds: before %.1f fps, no prepass %.1f fps, editor default "
                 "%.1f fps (goal >= 30 fps);\n  editor default %.2fx before, %.2fx full size\n",

@@ -5,7 +5,7 @@
 // and kept only while comparing with it), the split divider dragged in the viewport,
 // the difference legend's numbers and what the ray tracer refuses. One path: an
 // action changes CompareControls' state, fill() puts it into the next frame,
-// GpuViewport draws it.
+// ViewportPresenter draws it.
 #include <QObject>
 #include <QString>
 

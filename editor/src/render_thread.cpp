@@ -108,7 +108,7 @@ void RenderThread::releaseSurface() {
         refine_ = false;
         if (failed_) return; // no swapchain was ever made
     }
-    call([](GpuViewport& gpu) { gpu.releaseSurface(); });
+    call([](GpuViewport& gpu) { gpu.presenter().releaseSurface(); });
 }
 
 bool RenderThread::makeDevice() {
@@ -202,7 +202,8 @@ void RenderThread::draw(GpuViewport& gpu, const Request& request, bool still) {
     report.height = request.frame.request.height;
     const auto start = std::chrono::steady_clock::now();
     try {
-        static_cast<PresentOutcome&>(report) = gpu.present(request.surface, request.frame, scale);
+        static_cast<PresentOutcome&>(report) =
+            gpu.presenter().present(request.surface, request.frame, scale);
     } catch (const std::exception& e) {
         Q_EMIT renderError(QString::fromUtf8(e.what()));
         std::lock_guard lock(mutex_);
@@ -215,9 +216,10 @@ void RenderThread::draw(GpuViewport& gpu, const Request& request, bool still) {
         std::lock_guard lock(mutex_);
         // The completed frame's GPU time belongs to the present kFramesInFlight back.
         drawn_scales_.push_back(scale);
-        while (drawn_scales_.size() > GpuViewport::kFramesInFlight + 1) drawn_scales_.pop_front();
+        while (drawn_scales_.size() > ViewportPresenter::kFramesInFlight + 1)
+            drawn_scales_.pop_front();
         double cost = report.ms;
-        if (report.gpu_ms > 0.0 && drawn_scales_.size() > GpuViewport::kFramesInFlight) {
+        if (report.gpu_ms > 0.0 && drawn_scales_.size() > ViewportPresenter::kFramesInFlight) {
             const float then = drawn_scales_.front();
             cost = std::max(cost, report.gpu_ms * double(scale * scale) / double(then * then));
         }
@@ -227,7 +229,7 @@ void RenderThread::draw(GpuViewport& gpu, const Request& request, bool still) {
         last_ = request;
         // A path-traced still frame goes on accumulating until kPathSamples.
         accumulating_ = report.shown && scale >= 1.0f && report.path_traced &&
-                        report.path_samples < GpuViewport::kPathSamples;
+                        report.path_samples < ViewportPresenter::kPathSamples;
         refine_ = report.shown && (scale < 1.0f || accumulating_);
     }
     Q_EMIT frameDone(report);

@@ -24,7 +24,7 @@
 
 namespace sherpa::editor {
 
-// One frame as the render thread drew it: what GpuViewport::present() said, and the
+// One frame as the render thread drew it: what ViewportPresenter::present() said, and the
 // request it drew.
 struct FrameReport : PresentOutcome {
     std::uint64_t request = 0;           // the requestFrame() it drew (1, 2, ...)

@@ -186,7 +186,7 @@ void ViewController::applyEnvironment() {
                              : QString::fromStdString(choice.path);
     QPointer<ViewController> self(this);
     frames_.post([self, choice, name](GpuViewport& gpu) {
-        const QStringList warnings = gpu.setEnvironment(choice);
+        const QStringList warnings = gpu.scene().setEnvironment(choice);
         QMetaObject::invokeMethod(qApp, [self, warnings, name] {
             if (!self) return;
             for (const QString& w : warnings) self->docks_.log->append(LogDock::Level::Warning, w);

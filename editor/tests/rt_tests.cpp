@@ -209,7 +209,8 @@ void RtTests::rayTracedModeDrawsRtFrames() {
     QStringList passes;
     for (int i = 0; i < 4 && !passes.join(' ').contains(QStringLiteral("ray")); ++i) {
         w.frames().renderer()->renderAndWait(w.frames().lastFrame(), w.viewport()->vulkanSurface());
-        passes = w.frames().renderer()->call([](GpuViewport& gpu) { return gpu.lastPassTimes(); });
+        passes = w.frames().renderer()->call(
+            [](GpuViewport& gpu) { return test::last_pass_times(gpu); });
     }
     QVERIFY2(passes.join(' ').contains(QStringLiteral("ray"), Qt::CaseInsensitive),
              qPrintable(passes.join(QStringLiteral(", "))));

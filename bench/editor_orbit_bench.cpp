@@ -158,12 +158,12 @@ int main(int argc, char** argv) {
     std::printf("window 1600x1000, viewport %dx%d px, orbit steps every %d ms for %.0f s\n",
                 px.width(), px.height(), kStepMs, seconds);
     std::printf("DamagedHelmet covering %.0f%% of the viewport:\n", 100.0 * coverage(w));
-    w.frames().renderer()->setInteractiveScaling(false);
+    w.frames().renderer()->setPacing({.interactiveScaling = false});
     const OrbitResult full = orbit(w, seconds, 6.0f, false);
     std::printf("  last full-size frame passes: %s\n", qPrintable(pass_times(w)));
     settle(w);
     print_orbit("full resolution only", full);
-    w.frames().renderer()->setInteractiveScaling(true);
+    w.frames().renderer()->setPacing({.interactiveScaling = true});
     // Moving frames as the editor drew them before (the depth prepass the renderer
     // picks for their size, aiming at 30 fps exactly), without the prepass, and as
     // the editor draws them now (no prepass, aiming above 30 fps so that the slow
@@ -183,7 +183,7 @@ int main(int argc, char** argv) {
         for (Variant& v : variants) {
             w.frames().renderer()->call(
                 [&v](GpuViewport& gpu) { gpu.presenter().setReducedFramePrepass(v.prepass); });
-            w.frames().renderer()->setTargetFrameMs(v.target_ms);
+            w.frames().renderer()->setPacing({.targetFrameMs = v.target_ms});
             const OrbitResult r = orbit(w, seconds, 6.0f, false);
             std::printf("  last moving frame passes: %s\n", qPrintable(pass_times(w)));
             settle(w);
@@ -192,7 +192,7 @@ int main(int argc, char** argv) {
         }
     w.frames().renderer()->call(
         [](GpuViewport& gpu) { gpu.presenter().setReducedFramePrepass(false); });
-    w.frames().renderer()->setTargetFrameMs(kTargetFrameMs);
+    w.frames().renderer()->setPacing({.targetFrameMs = kTargetFrameMs});
     std::printf("  means of both rounds: before %.1f fps, no prepass %.1f fps, editor default "
                 "%.1f fps (goal >= 30 fps);\n  editor default %.2fx before, %.2fx full size\n",
                 variants[0].fps, variants[1].fps, variants[2].fps,

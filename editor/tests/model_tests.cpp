@@ -3,12 +3,14 @@
 #include <QSignalSpy>
 #include <QtTest>
 
+#include <sherpa/scene/animation.h>
 #include <sherpa/scene/culling_passes.h>
 
 #include "attribute_model.h"
 #include "command_line.h"
 #include "editor_context.h"
 #include "format_values.h"
+#include "frame_pacing.h"
 #include "material_fields_model.h"
 #include "orbit_camera.h"
 #include "picking.h"
@@ -20,6 +22,7 @@
 #include "texture_table_model.h"
 #include "triangle_table_model.h"
 #include "vertex_table_model.h"
+#include "viewport_presenter.h"
 
 using namespace sherpa;
 using namespace sherpa::editor;
@@ -88,6 +91,7 @@ private Q_SLOTS:
     void pickHitsTheInstanceUnderTheRay();
     void pickHitsLinesAndPointsWithinACone();
     void selectionFollowsActions();
+    void framePacingReducesMovingFramesOnly();
     void commandLineDocksAndCulling();
     void resolutionScaleHoldsTheTargetRate();
 };
@@ -384,6 +388,55 @@ void ModelTests::selectionFollowsActions() {
     for (std::size_t i = 0; i < out.session->scene->instances.size(); ++i)
         if (static_cast<int>(out.session->scene->instances[i].node_id) == mesh_node)
             QVERIFY(!context.instanceVisible(i));
+}
+
+// The render thread's pacing: a frame whose camera or pose moved is drawn reduced once
+// a frame was too slow, the same camera is still (full size), a reduced frame is
+// refined after kRestMs, and a path-traced still frame is drawn again at once until
+// it has kPathSamples.
+void ModelTests::framePacingReducesMovingFramesOnly() {
+    FramePacing pacing;
+    FrameOrder a;
+    a.frame.request.width = 800;
+    a.frame.request.height = 600;
+    a.frame.request.camera.eye = {0.0f, 0.0f, 5.0f};
+    QVERIFY(pacing.still(a)); // nothing drawn yet
+    QVERIFY(!pacing.restWait());
+    PresentOutcome shown;
+    shown.shown = true;
+    pacing.drawn(a, pacing.scale(true), shown, 4.0 * kTargetFrameMs); // full size, slow
+    QVERIFY(!pacing.restWait());                                      // nothing to refine
+    FrameOrder b = a;
+    b.frame.request.camera.eye = {1.0f, 0.0f, 5.0f};
+    QVERIFY(pacing.still(a));
+    QVERIFY(!pacing.still(b));
+    QCOMPARE(pacing.scale(true), 1.0f);
+    QCOMPARE(pacing.scale(false), 0.5f); // 4x the target: half of each side
+    pacing.drawn(b, 0.5f, shown, kTargetFrameMs);
+    QCOMPARE(pacing.restWait().value_or(std::chrono::milliseconds(-1)),
+             std::chrono::milliseconds(FramePacing::kRestMs));
+    QCOMPARE(pacing.again()->frame.request.camera.eye, b.frame.request.camera.eye);
+    // A new pose is motion too.
+    FrameOrder posed = b;
+    posed.frame.request.pose = std::make_shared<const Pose>();
+    QVERIFY(!pacing.still(posed));
+    // Scaling off: every frame full size.
+    pacing.setOptions({.interactiveScaling = false});
+    QCOMPARE(pacing.scale(false), 1.0f);
+    // Path traced at full size and not done: drawn again at once.
+    PresentOutcome traced = shown;
+    traced.path_traced = true;
+    traced.path_samples = 10;
+    pacing.drawn(b, 1.0f, traced, kTargetFrameMs);
+    QCOMPARE(pacing.restWait().value_or(std::chrono::milliseconds(-1)),
+             std::chrono::milliseconds(0));
+    traced.path_samples = ViewportPresenter::kPathSamples;
+    pacing.drawn(b, 1.0f, traced, kTargetFrameMs);
+    QVERIFY(!pacing.restWait());
+    // Forgotten (a new scene): the next frame is still whatever its camera.
+    pacing.forget();
+    QVERIFY(pacing.still(posed));
+    QVERIFY(!pacing.again());
 }
 
 void ModelTests::commandLineDocksAndCulling() {

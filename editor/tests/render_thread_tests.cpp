@@ -132,7 +132,7 @@ void RenderThreadTests::guiWorksWhileAFrameIsInFlight() {
     QTRY_VERIFY_WITH_TIMEOUT(!drawn.empty(), test::kLoadTimeoutMs);
     disconnect(c);
     QVERIFY2(drawn.front() >= latest, "an older request was drawn");
-    QTest::qWait(2 * RenderThread::kRestMs);
+    QTest::qWait(2 * FramePacing::kRestMs);
     QVERIFY2(w.viewport()->framesRendered() - frames <= 6,
              qPrintable(QString::number(w.viewport()->framesRendered() - frames)));
     QVERIFY(!busy->gave_up);
@@ -145,7 +145,7 @@ void RenderThreadTests::stillFrameIsFullResolutionAfterMotion() {
     QVERIFY(test::load(w, test::asset(QStringLiteral("DamagedHelmet"))));
     const QSize pixels = w.viewport()->pixelSize();
     // Every moving frame is "too slow": drawn at the smallest scale.
-    w.frames().renderer()->setTargetFrameMs(0.01);
+    w.frames().renderer()->setPacing({.targetFrameMs = 0.01});
     w.screenshot(); // a full-size frame at rest
     const QImage reference = viewportOnScreen(w);
     const OrbitCamera rest = w.viewport()->camera();
@@ -175,7 +175,7 @@ void RenderThreadTests::stillFrameIsFullResolutionAfterMotion() {
     w.screenshot();
     QCOMPARE(w.frames().lastReport().scale, 1.0f);
     QVERIFY(maxDifference(viewportOnScreen(w), reference) <= 1);
-    w.frames().renderer()->setTargetFrameMs(kTargetFrameMs);
+    w.frames().renderer()->setPacing({.targetFrameMs = kTargetFrameMs});
 }
 
 void RenderThreadTests::playbackIsMotionAndPauseIsExact() {
@@ -185,8 +185,8 @@ void RenderThreadTests::playbackIsMotionAndPauseIsExact() {
     MainWindow& w = *window_;
     QVERIFY(test::load(w, test::asset(QStringLiteral("AnimatedCube"))));
     TimelineDock& timeline = *w.docks().timeline;
-    w.frames().renderer()->setTargetFrameMs(0.01); // every moving frame is "too slow"
-    w.screenshot();                                // a full-size frame at rest
+    w.frames().renderer()->setPacing({.targetFrameMs = 0.01}); // every moving frame is "too slow"
+    w.screenshot();                                            // a full-size frame at rest
     QCOMPARE(w.frames().lastReport().scale, 1.0f);
     // Steps of the play loop, the camera still: the scale drops.
     timeline.setPlaying(true);
@@ -207,7 +207,7 @@ void RenderThreadTests::playbackIsMotionAndPauseIsExact() {
         w, [&](const FrameReport& r) { return r.scale == 1.0f && r.request >= paused; }));
     QCOMPARE(QSize(int(w.frames().lastReport().width), int(w.frames().lastReport().height)),
              w.viewport()->pixelSize());
-    w.frames().renderer()->setTargetFrameMs(kTargetFrameMs);
+    w.frames().renderer()->setPacing({.targetFrameMs = kTargetFrameMs});
     QVERIFY(test::load(w, QStringLiteral("builtin:default")));
 }
 

@@ -249,9 +249,9 @@ void ViewportTests::cullingDockShowsTheRenderersPasses() {
     QVERIFY(load(*window_, QStringLiteral("builtin:default")));
     if (!hasGpu()) QSKIP("no Vulkan device: nothing is rendered");
     // Full-size frames: moving frames drawn reduced on a slow device have no shadows.
-    window_->frames().renderer()->setInteractiveScaling(false);
-    const auto restore =
-        qScopeGuard([this] { window_->frames().renderer()->setInteractiveScaling(true); });
+    window_->frames().renderer()->setPacing({.interactiveScaling = false});
+    const auto restore = qScopeGuard(
+        [this] { window_->frames().renderer()->setPacing({.interactiveScaling = true}); });
     window_->viewport()->camera().orbit(30.0f, 0.0f); // the shadow cascades are redrawn
     Q_EMIT window_->viewport()->cameraChanged();
     // A frame's statistics are read when its frame slot comes round again.

@@ -35,7 +35,6 @@ EXEMPT: dict[str, tuple[int, int, str]] = {
     "OrbitCamera": (17, 19, "the orbit camera: input mapping and camera state"),
     "CompareControls": (17, 19, "the comparison controls: actions and their state"),
     "EditorSettings": (18, 18, "typed QSettings accessors, one pair per setting"),
-    "RenderThread": (13, 16, "the render thread: tasks, frames and readbacks"),
 }
 
 ACCESS = re.compile(r"^\s*(public|private|protected|signals|Q_SIGNALS)\s*(?:slots\s*|Q_SLOTS\s*)?:(?!:)")

@@ -87,7 +87,7 @@ OrbitResult orbit(MainWindow& w, double seconds, float dx, bool blocking, int mi
     t.start();
     for (int i = 0; i < min_steps || t.elapsed() < qint64(seconds * 1000.0); ++i) {
         w.viewport()->camera().orbit(dx, 0.0f);
-        Q_EMIT w.viewport()->cameraChanged();
+        Q_EMIT w.viewport()->input().cameraChanged();
         if (blocking) {
             w.viewport()->renderNow();
             w.frames().renderer()->call([](GpuViewport& gpu) { gpu.finish(); });
@@ -151,7 +151,7 @@ int main(int argc, char** argv) {
         QStringLiteral(SHERPA_ASSETS_DIR "/gltf/DamagedHelmet/glTF/DamagedHelmet.gltf");
     load(w, helmet);
     load(w, helmet); // textures from the cache, pipelines made
-    w.viewport()->setAutoFrame(false);
+    w.viewport()->input().setAutoFrame(false);
     w.viewport()->camera().frame(w.context().scene()->bounds);
     w.viewport()->camera().dolly(3.0f); // closer: the helmet fills the viewport
     const QSize px = w.viewport()->pixelSize();

@@ -171,7 +171,7 @@ void LoadController::onLoaded(SharedSession session) {
     // ground plane left out).
     if (!std::exchange(keep_camera_, false)) {
         viewport_.camera().frameAuto(*s.scene);
-        viewport_.setAutoFrame(true);
+        viewport_.input().setAutoFrame(true);
     }
     Q_EMIT sceneLoaded(s.spec, s.timings.total_ms);
 }

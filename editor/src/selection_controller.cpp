@@ -78,7 +78,8 @@ void SelectionController::connectDocks() {
         [this](const QString& pointer, const QString& message) { showPointer(pointer, message); });
     connect(&context_, &EditorContext::sceneReady, this,
             &SelectionController::showValidationForScene);
-    connect(&viewport_, &ViewportWindow::clicked, this, [this](QPointF ndc) { pickAt(ndc); });
+    connect(&viewport_.input(), &ViewportInput::clicked, this,
+            [this](QPointF ndc) { pickAt(ndc); });
     connect(&context_, &EditorContext::selectionChanged, &viewport_,
             &ViewportWindow::scheduleFrame);
     connect(&context_, &EditorContext::visibilityChanged, &viewport_,

@@ -108,7 +108,7 @@ void RenderThreadTests::guiWorksWhileAFrameIsInFlight() {
     // Fifty camera steps, a selection (docks fill), a view change and a resize.
     for (int i = 0; i < 50; ++i) {
         w.viewport()->camera().orbit(3.0f, 0.5f);
-        Q_EMIT w.viewport()->cameraChanged();
+        Q_EMIT w.viewport()->input().cameraChanged();
         w.viewport()->renderNow();
         QCoreApplication::processEvents();
     }
@@ -151,11 +151,11 @@ void RenderThreadTests::stillFrameIsFullResolutionAfterMotion() {
     const OrbitCamera rest = w.viewport()->camera();
 
     w.viewport()->camera().orbit(40.0f, 10.0f);
-    Q_EMIT w.viewport()->cameraChanged();
+    Q_EMIT w.viewport()->input().cameraChanged();
     QVERIFY(waitForReport(w, [](const FrameReport& r) { return r.scale < 1.0f; }));
     // Back to where it was, one moving frame, then nothing: the camera rests.
     w.viewport()->camera() = rest;
-    Q_EMIT w.viewport()->cameraChanged();
+    Q_EMIT w.viewport()->input().cameraChanged();
     QTRY_VERIFY(w.frames().lastFrame().request.camera.eye == rest.eye()); // asked for
     const std::uint64_t moving = test::latest_request(w);
     QVERIFY(waitForReport(w, [&](const FrameReport& r) { return r.request == moving; }));
@@ -170,7 +170,7 @@ void RenderThreadTests::stillFrameIsFullResolutionAfterMotion() {
              qPrintable(QString::number(maxDifference(still, reference))));
     // A screenshot is full size whatever the camera did just before.
     w.viewport()->camera().orbit(-40.0f, 0.0f);
-    Q_EMIT w.viewport()->cameraChanged();
+    Q_EMIT w.viewport()->input().cameraChanged();
     w.viewport()->camera() = rest;
     w.screenshot();
     QCOMPARE(w.frames().lastReport().scale, 1.0f);
@@ -217,7 +217,7 @@ void RenderThreadTests::gpuTimeIsMeasured() {
     // The GPU time of a frame is read when its frame slot comes round again.
     for (int i = 0; i < 4; ++i) {
         w.viewport()->camera().orbit(5.0f, 0.0f);
-        Q_EMIT w.viewport()->cameraChanged();
+        Q_EMIT w.viewport()->input().cameraChanged();
         const std::uint64_t before = w.viewport()->framesRendered();
         QTRY_VERIFY_WITH_TIMEOUT(w.viewport()->framesRendered() > before, test::kLoadTimeoutMs);
     }

@@ -296,7 +296,7 @@ void RtTests::draggingMovesTheDivider() {
     c.setMode(ViewportMode::Split);
     c.setDivider(0.5f);
     ViewportWindow* vp = w.viewport();
-    QCOMPARE(vp->divider().value_or(-1.0f), 0.5f);
+    QCOMPARE(vp->divider().fraction().value_or(-1.0f), 0.5f);
     const int y = vp->height() / 2, width = vp->width();
     const CameraSpec camera = vp->camera().spec();
     // Grabbed at the line (within the grab zone), dropped at a quarter of the width.
@@ -320,7 +320,7 @@ void RtTests::draggingMovesTheDivider() {
     const int at = split.width() * 4 / 5;
     QVERIFY(differing(split, a, 0, at - 4) <= at * split.height() / 200);
     // Without a split, a drag orbits again.
-    QVERIFY(!vp->divider());
+    QVERIFY(!vp->divider().fraction());
     QTest::mousePress(vp, Qt::LeftButton, Qt::NoModifier, QPoint(width / 2, y));
     QTest::mouseMove(vp, QPoint(width / 2 + 40, y));
     QTest::mouseMove(vp, QPoint(width / 2 + 80, y));

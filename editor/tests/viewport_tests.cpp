@@ -213,7 +213,7 @@ void ViewportTests::gpuCullingAgreesWithCpu() {
     window_->views().setGpuCulling(true);
     for (int step = 0; step < 3; ++step) {
         window_->viewport()->camera().orbit(120.0f, 20.0f); // new frustum each step
-        Q_EMIT window_->viewport()->cameraChanged();
+        Q_EMIT window_->viewport()->input().cameraChanged();
         // The CPU pass is there at once; the GPU's answer comes from the render thread.
         QVERIFY(test::culling_monitor(*window_).latest());
         QTRY_VERIFY_WITH_TIMEOUT(test::culling_monitor(*window_).latest()->gpu_visible >= 0,
@@ -253,12 +253,12 @@ void ViewportTests::cullingDockShowsTheRenderersPasses() {
     const auto restore = qScopeGuard(
         [this] { window_->frames().renderer()->setPacing({.interactiveScaling = true}); });
     window_->viewport()->camera().orbit(30.0f, 0.0f); // the shadow cascades are redrawn
-    Q_EMIT window_->viewport()->cameraChanged();
+    Q_EMIT window_->viewport()->input().cameraChanged();
     // A frame's statistics are read when its frame slot comes round again.
     const CullingDock& dock = *window_->docks().culling;
     for (int frame = 0; frame < 6 && dock.passRows() < 2; ++frame) {
         window_->viewport()->camera().orbit(5.0f, 0.0f);
-        Q_EMIT window_->viewport()->cameraChanged();
+        Q_EMIT window_->viewport()->input().cameraChanged();
         QVERIFY(test::next_frame(*window_));
     }
     QVERIFY(dock.passRows() >= 2);
@@ -292,7 +292,7 @@ void ViewportTests::narrowViewportFramesTheHelmet() {
     QVERIFY2(e.x() <= 1.0 && e.y() <= 1.0, "re-framed for the narrow viewport");
     QVERIFY(std::max(e.x(), e.y()) > 0.79 && std::max(e.x(), e.y()) < 0.81); // tight
     // Once the user has moved the camera it stays; F frames for the aspect again.
-    window_->viewport()->setAutoFrame(false);
+    window_->viewport()->input().setAutoFrame(false);
     window_->viewport()->camera().dolly(6.0f);
     e = ndcExtent(window_->viewport()->camera().spec(), bounds);
     QVERIFY(e.x() > 1.0); // dollied in: clipped, as the user asked

@@ -26,7 +26,6 @@ EXEMPT: dict[str, tuple[int, int, str]] = {
     "FrameRecorder": (16, 39, "frame slots and the ray-traced frames (renderer_rt, renderer_path, "
                       "renderer_side) are its next seams; set_variant() is the material "
                       "variant switch's way in, as path_trace_image() is the path tracer's"),
-    "ViewportWindow": (19, 30, "the viewport window: input, divider and frame pacing in one class"),
     "LabDock": (16, 29, "the Lab dock: runner wiring and table/chart in one class"),
     "EditorContext": (22, 23, "the editor's shared state: selection, visibility and session in one"),
     "TimelineDock": (16, 21, "the timeline: playback state and widgets in one class"),

@@ -114,7 +114,7 @@ void LoadController::reloadScene(bool keep_camera) {
 void LoadController::closeScene() {
     pending_open_.clear();
     loader_.cancel();
-    context_.clearScene();
+    context_.setSession(nullptr);
     viewport_.scheduleFrame();
 }
 

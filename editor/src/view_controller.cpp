@@ -246,7 +246,7 @@ void ViewController::frameAll() {
 
 void ViewController::frameSelection() {
     const Scene* scene = context_.scene();
-    const int node = context_.selection().node;
+    const int node = context_.selection().current().node;
     if (!scene || node < 0) return;
     Aabb box;
     for (const MeshInstance& inst : scene->instances)

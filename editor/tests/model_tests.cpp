@@ -91,6 +91,7 @@ private Q_SLOTS:
     void pickHitsTheInstanceUnderTheRay();
     void pickHitsLinesAndPointsWithinACone();
     void selectionFollowsActions();
+    void newSceneClearsSelectionBeforeSayingSo();
     void framePacingReducesMovingFramesOnly();
     void commandLineDocksAndCulling();
     void resolutionScaleHoldsTheTargetRate();
@@ -364,30 +365,60 @@ void ModelTests::selectionFollowsActions() {
     EditorContext context;
     SceneTreeModel tree(context);
     context.setSession(out.session);
-    QSignalSpy selection(&context, &EditorContext::selectionChanged);
+    QSignalSpy selection(&context.selection(), &SceneSelection::changed);
     int mesh_node = -1;
     for (std::size_t n = 0; n < out.session->scene->nodes.size(); ++n)
         if (out.session->scene->nodes[n].mesh >= 0) mesh_node = static_cast<int>(n);
     QVERIFY(mesh_node >= 0);
-    context.selectNode(mesh_node);
+    context.selection().selectNode(mesh_node);
     QCOMPARE(selection.count(), 1);
-    QCOMPARE(context.selection().node, mesh_node);
-    QVERIFY(context.selection().mesh >= 0);
-    QCOMPARE(context.selection().material,
-             static_cast<int>(
-                 out.session->scene->meshes[static_cast<std::size_t>(context.selection().mesh)]
-                     .material_id));
+    QCOMPARE(context.selection().current().node, mesh_node);
+    QVERIFY(context.selection().current().mesh >= 0);
+    QCOMPARE(
+        context.selection().current().material,
+        static_cast<int>(
+            out.session->scene->meshes[static_cast<std::size_t>(context.selection().current().mesh)]
+                .material_id));
     // Unticking a node is an action out of the model, applied by the owner of the context.
     QSignalSpy requested(&tree, &SceneTreeModel::visibilityRequested);
     QVERIFY(tree.setData(tree.indexOfNode(mesh_node), Qt::Unchecked, Qt::CheckStateRole));
     QCOMPARE(requested.count(), 1);
-    QVERIFY(context.nodeVisible(mesh_node));
-    context.setNodeVisible(mesh_node, false);
+    QVERIFY(context.visibility().nodeVisible(mesh_node));
+    context.visibility().setNodeVisible(mesh_node, false);
     QCOMPARE(tree.indexOfNode(mesh_node).data(Qt::CheckStateRole).toInt(),
              static_cast<int>(Qt::Unchecked));
     for (std::size_t i = 0; i < out.session->scene->instances.size(); ++i)
         if (static_cast<int>(out.session->scene->instances[i].node_id) == mesh_node)
-            QVERIFY(!context.instanceVisible(i));
+            QVERIFY(!context.visibility().instanceVisible(i));
+}
+
+// A new scene: while the docks hear sceneReady nothing of the old scene is selected or
+// hidden, and the selection's changed() comes after it, once.
+void ModelTests::newSceneClearsSelectionBeforeSayingSo() {
+    const LoadOutcome duck = SceneLoadJob::loadNow(test::asset(QStringLiteral("Duck")));
+    EditorContext context;
+    context.setSession(duck.session);
+    context.selection().selectNode(0);
+    context.visibility().setNodeVisible(0, false);
+    QVERIFY(context.visibility().hidden());
+    QStringList heard;
+    connect(&context, &EditorContext::sceneReady, &context, [&] {
+        heard << QStringLiteral("scene");
+        QVERIFY(context.selection().current() == Selection{});
+        QVERIFY(!context.visibility().hidden());
+        QVERIFY(context.visibility().nodeVisible(0));
+    });
+    connect(&context.selection(), &SceneSelection::changed, &context,
+            [&] { heard << QStringLiteral("selection"); });
+    QSignalSpy visibility(&context.visibility(), &NodeVisibility::changed);
+    context.setSession(nullptr);
+    QCOMPARE(heard, QStringList({QStringLiteral("scene"), QStringLiteral("selection")}));
+    QCOMPARE(visibility.count(), 0); // the new scene says it
+    // Without a scene, selecting a node selects nothing and hiding hides nothing.
+    context.selection().selectNode(0);
+    QVERIFY(context.selection().current() == Selection{});
+    context.visibility().setNodeVisible(0, false);
+    QVERIFY(!context.visibility().hidden());
 }
 
 // The render thread's pacing: a frame whose camera or pose moved is drawn reduced once

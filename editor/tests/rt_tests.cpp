@@ -146,7 +146,7 @@ void RtTests::accelerationDockListsBlasAndSelectsMesh() {
     const int row = model.rowCount() / 2;
     const int gltf_mesh = model.index(row, 0).data(AccelerationModel::MeshRole).toInt();
     dock.view()->setCurrentIndex(model.index(row, 0));
-    const Selection& sel = w.context().selection();
+    const Selection& sel = w.context().selection().current();
     QVERIFY(sel.mesh >= 0);
     QCOMPARE(static_cast<int>(scene.meshes[static_cast<std::size_t>(sel.mesh)].group_id),
              gltf_mesh);

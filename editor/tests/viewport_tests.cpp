@@ -160,7 +160,7 @@ void ViewportTests::highlightFollowsSelection() {
     // instance placed by a descendant, found here by walking the parents.
     QVERIFY(window_->selection().selectNodeNamed(QStringLiteral("instance grid")));
     const Scene& scene = *window_->context().scene();
-    const int grid = window_->context().selection().node;
+    const int grid = window_->context().selection().current().node;
     QCOMPARE(scene.nodes[std::size_t(grid)].mesh, -1);
     std::vector<std::uint32_t> expected;
     for (std::uint32_t i = 0; i < scene.instances.size(); ++i)
@@ -192,7 +192,7 @@ void ViewportTests::uncheckedNodeLeavesTheViewport() {
     // The checkbox, as a user unticks it: model -> context -> frame -> renderer.
     SceneTreeModel& tree = *window_->docks().sceneTree->model();
     QVERIFY(tree.setData(tree.indexOfNode(sphere), Qt::Unchecked, Qt::CheckStateRole));
-    QVERIFY(!window_->context().nodeVisible(sphere));
+    QVERIFY(!window_->context().visibility().nodeVisible(sphere));
     QVERIFY(test::next_frame(*window_));
     const auto mask = window_->frames().lastFrame().hiddenNodes;
     QVERIFY(mask && static_cast<std::size_t>(sphere) < mask->size() &&

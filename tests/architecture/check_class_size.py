@@ -27,7 +27,6 @@ EXEMPT: dict[str, tuple[int, int, str]] = {
                       "renderer_side) are its next seams; set_variant() is the material "
                       "variant switch's way in, as path_trace_image() is the path tracer's"),
     "LabDock": (16, 29, "the Lab dock: runner wiring and table/chart in one class"),
-    "EditorContext": (22, 23, "the editor's shared state: selection, visibility and session in one"),
     "TimelineDock": (16, 21, "the timeline: playback state and widgets in one class"),
     "Format": (19, 19, "a static number-formatting table (a namespace in a class, for tr())"),
     "CullingMonitor": (18, 19, "the culling dock's model: history, chart data and check state"),

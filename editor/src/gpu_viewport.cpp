@@ -24,11 +24,12 @@ GpuViewport::GpuViewport(std::unique_ptr<gpu::Context> context, bool ray_tracing
 }
 
 GpuViewport::~GpuViewport() {
-    // What uses the renderer goes before it, the renderer before its device.
+    // What uses the renderer goes before it, the renderer before the session and
+    // environment it was given (ViewportScene) and before its device.
     readbacks_.reset();
     presenter_.reset();
-    scene_.reset();
     renderer_.reset();
+    scene_.reset();
     context_.reset();
 }
 

@@ -17,6 +17,13 @@ ViewportWindow::ViewportWindow(QVulkanInstance* instance)
     connect(divider_, &SplitDivider::moved, this, &ViewportWindow::scheduleFrame);
 }
 
+ViewportWindow::~ViewportWindow() {
+    // The filters go first: the input moves camera_, which would otherwise be gone
+    // before QObject deletes its children, while QWindow's destructor still sends events.
+    delete divider_;
+    delete input_;
+}
+
 quint64 ViewportWindow::vulkanSurface() const {
     QVulkanInstance* inst = vulkanInstance();
     if (!inst || !handle()) return 0;

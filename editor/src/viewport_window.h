@@ -21,6 +21,7 @@ class ViewportWindow : public QWindow {
     Q_OBJECT
 public:
     explicit ViewportWindow(QVulkanInstance* instance);
+    ~ViewportWindow() override;
 
     OrbitCamera& camera() { return camera_; }
     const OrbitCamera& camera() const { return camera_; }

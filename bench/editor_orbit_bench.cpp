@@ -87,7 +87,7 @@ OrbitResult orbit(MainWindow& w, double seconds, float dx, bool blocking, int mi
     t.start();
     for (int i = 0; i < min_steps || t.elapsed() < qint64(seconds * 1000.0); ++i) {
         w.viewport()->camera().orbit(dx, 0.0f);
-        Q_EMIT w.viewport()->cameraChanged();
+        Q_EMIT w.viewport()->input().cameraChanged();
         if (blocking) {
             w.viewport()->renderNow();
             w.frames().renderer()->call([](GpuViewport& gpu) { gpu.finish(); });
@@ -125,7 +125,7 @@ void print_latency(const char* what, const std::vector<double>& d) {
 QString pass_times(MainWindow& w) {
     return w.frames()
         .renderer()
-        ->call([](GpuViewport& gpu) { return gpu.lastPassTimes(); })
+        ->call([](GpuViewport& gpu) { return test::last_pass_times(gpu); })
         .join(", ");
 }
 
@@ -151,19 +151,19 @@ int main(int argc, char** argv) {
         QStringLiteral(SHERPA_ASSETS_DIR "/gltf/DamagedHelmet/glTF/DamagedHelmet.gltf");
     load(w, helmet);
     load(w, helmet); // textures from the cache, pipelines made
-    w.viewport()->setAutoFrame(false);
+    w.viewport()->input().setAutoFrame(false);
     w.viewport()->camera().frame(w.context().scene()->bounds);
     w.viewport()->camera().dolly(3.0f); // closer: the helmet fills the viewport
     const QSize px = w.viewport()->pixelSize();
     std::printf("window 1600x1000, viewport %dx%d px, orbit steps every %d ms for %.0f s\n",
                 px.width(), px.height(), kStepMs, seconds);
     std::printf("DamagedHelmet covering %.0f%% of the viewport:\n", 100.0 * coverage(w));
-    w.frames().renderer()->setInteractiveScaling(false);
+    w.frames().renderer()->setPacing({.interactiveScaling = false});
     const OrbitResult full = orbit(w, seconds, 6.0f, false);
     std::printf("  last full-size frame passes: %s\n", qPrintable(pass_times(w)));
     settle(w);
     print_orbit("full resolution only", full);
-    w.frames().renderer()->setInteractiveScaling(true);
+    w.frames().renderer()->setPacing({.interactiveScaling = true});
     // Moving frames as the editor drew them before (the depth prepass the renderer
     // picks for their size, aiming at 30 fps exactly), without the prepass, and as
     // the editor draws them now (no prepass, aiming above 30 fps so that the slow
@@ -182,16 +182,17 @@ int main(int argc, char** argv) {
     for (int round = 0; round < 2; ++round)
         for (Variant& v : variants) {
             w.frames().renderer()->call(
-                [&v](GpuViewport& gpu) { gpu.setReducedFramePrepass(v.prepass); });
-            w.frames().renderer()->setTargetFrameMs(v.target_ms);
+                [&v](GpuViewport& gpu) { gpu.presenter().setReducedFramePrepass(v.prepass); });
+            w.frames().renderer()->setPacing({.targetFrameMs = v.target_ms});
             const OrbitResult r = orbit(w, seconds, 6.0f, false);
             std::printf("  last moving frame passes: %s\n", qPrintable(pass_times(w)));
             settle(w);
             print_orbit(v.name, r);
             v.fps += fps(r) / 2.0;
         }
-    w.frames().renderer()->call([](GpuViewport& gpu) { gpu.setReducedFramePrepass(false); });
-    w.frames().renderer()->setTargetFrameMs(kTargetFrameMs);
+    w.frames().renderer()->call(
+        [](GpuViewport& gpu) { gpu.presenter().setReducedFramePrepass(false); });
+    w.frames().renderer()->setPacing({.targetFrameMs = kTargetFrameMs});
     std::printf("  means of both rounds: before %.1f fps, no prepass %.1f fps, editor default "
                 "%.1f fps (goal >= 30 fps);\n  editor default %.2fx before, %.2fx full size\n",
                 variants[0].fps, variants[1].fps, variants[2].fps,

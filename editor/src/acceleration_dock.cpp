@@ -35,7 +35,8 @@ AccelerationDock::AccelerationDock(const EditorContext& context, QWidget* parent
             [this](const QModelIndex& current) {
                 if (current.isValid()) onRowChanged(current.row());
             });
-    connect(&context_, &EditorContext::selectionChanged, this, &AccelerationDock::syncSelection);
+    connect(&context_.selection(), &SceneSelection::changed, this,
+            &AccelerationDock::syncSelection);
     retranslate();
 }
 
@@ -72,7 +73,7 @@ void AccelerationDock::onRowChanged(int row) {
 
 void AccelerationDock::syncSelection() {
     const Scene* scene = context_.scene();
-    const int mesh = context_.selection().mesh;
+    const int mesh = context_.selection().current().mesh;
     if (!scene || mesh < 0 || static_cast<std::size_t>(mesh) >= scene->meshes.size()) return;
     const int row =
         model_->rowOfMesh(static_cast<int>(scene->meshes[static_cast<std::size_t>(mesh)].group_id));

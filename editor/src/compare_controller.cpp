@@ -51,7 +51,7 @@ void CompareController::connectControls() {
     connect(&controls_, &CompareControls::tangentsRequested, this, [this](TangentMethod method) {
         if (context_.scene()) compareWithTangents(method);
     });
-    connect(&viewport_, &ViewportWindow::dividerMoved, &state_, &CompareState::setDivider);
+    connect(&viewport_.divider(), &SplitDivider::moved, &state_, &CompareState::setDivider);
     connect(&loader_, &SceneLoadJob::loaded, this, &CompareController::onOtherLoaded);
     connect(&loader_, &SceneLoadJob::failed, this,
             [this](const QString& spec, const QString& error) {
@@ -124,8 +124,8 @@ void CompareController::onChanged() {
     legend_.setScale(c.heat_max, c.threshold);
     legend_.setNumbers({});
     legend_.setVisible(c.mode == ViewportMode::Difference);
-    viewport_.setDivider(c.mode == ViewportMode::Split ? std::optional<float>(c.divider)
-                                                       : std::nullopt);
+    viewport_.divider().setFraction(c.mode == ViewportMode::Split ? std::optional<float>(c.divider)
+                                                                  : std::nullopt);
     if (c.rays() || c.comparing())
         window_.statusBar()->showMessage(
             tr("Overlays and the selection highlight are drawn in the Raster mode only."), 5000);

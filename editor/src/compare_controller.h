@@ -4,8 +4,8 @@
 // source textures or with tangents by another method, loaded by its own SceneLoadJob
 // and kept only while comparing with it), the split divider dragged in the viewport,
 // the difference legend's numbers and what the ray tracer refuses. One path: an
-// action changes the CompareState, fill() puts it into the next frame, GpuViewport
-// draws it.
+// action changes the CompareState, fill() puts it into the next frame,
+// ViewportPresenter draws it.
 #include <QObject>
 #include <QString>
 

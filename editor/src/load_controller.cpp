@@ -115,7 +115,7 @@ void LoadController::reloadScene(bool keep_camera) {
 void LoadController::closeScene() {
     pending_open_.clear();
     loader_.cancel();
-    context_.clearScene();
+    context_.setSession(nullptr);
     viewport_.scheduleFrame();
 }
 
@@ -172,7 +172,7 @@ void LoadController::onLoaded(SharedSession session) {
     // ground plane left out).
     if (!std::exchange(keep_camera_, false)) {
         viewport_.camera().frameAuto(*s.scene);
-        viewport_.setAutoFrame(true);
+        viewport_.input().setAutoFrame(true);
     }
     Q_EMIT sceneLoaded(s.spec, s.timings.total_ms);
 }

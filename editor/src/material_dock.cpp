@@ -40,7 +40,7 @@ MaterialDock::MaterialDock(const EditorContext& context, QWidget* parent)
         const int texture = index.data(MaterialFieldsModel::TextureRole).toInt();
         if (texture >= 0) Q_EMIT selectTextureRequested(texture);
     });
-    connect(&context_, &EditorContext::selectionChanged, this, &MaterialDock::showMaterial);
+    connect(&context_.selection(), &SceneSelection::changed, this, &MaterialDock::showMaterial);
     retranslate();
 }
 
@@ -56,7 +56,7 @@ void MaterialDock::retranslate() {
 
 void MaterialDock::showMaterial() {
     const Scene* scene = context_.scene();
-    const int material = context_.selection().material;
+    const int material = context_.selection().current().material;
     if (!scene || material < 0 || static_cast<std::size_t>(material) >= scene->materials.size()) {
         model_->clear();
         header_->setText(tr("No material selected."));
@@ -87,7 +87,7 @@ void MaterialDock::showMaterial() {
     if (readback_)
         readback_(material, [this, material,
                              scene = context_.scene()](std::optional<GpuMaterialReadback> gpu) {
-            if (context_.scene() == scene && context_.selection().material == material)
+            if (context_.scene() == scene && context_.selection().current().material == material)
                 showReadback(material, std::move(gpu));
         });
 }

@@ -119,7 +119,7 @@ MeshDock::MeshDock(const EditorContext& context, QWidget* parent)
                                               .arg(errors->flips));
                 Q_EMIT tangentErrorsReady();
             });
-    connect(&context_, &EditorContext::selectionChanged, this, &MeshDock::showMesh);
+    connect(&context_.selection(), &SceneSelection::changed, this, &MeshDock::showMesh);
     connect(&context_, &EditorContext::sceneReady, this, &MeshDock::showMesh);
     retranslate();
 }
@@ -146,7 +146,8 @@ void MeshDock::retranslate() {
 }
 
 void MeshDock::showMesh() {
-    const int mesh = context_.selection().mesh, node = context_.selection().node;
+    const int mesh = context_.selection().current().mesh,
+              node = context_.selection().current().node;
     if (mesh == shown_mesh_ && node == shown_node_ && context_.scene() == shown_scene_)
         return; // vertex/triangle picks
     shown_mesh_ = mesh;

@@ -93,7 +93,7 @@ void RenderController::connectReadbacks() {
     docks_.material->setReadback([this](int material, MaterialReadbackDone done) {
         if (render_)
             render_->post([this, material, done = std::move(done)](GpuViewport& gpu) {
-                std::optional<GpuMaterialReadback> r = gpu.readMaterial(material);
+                std::optional<GpuMaterialReadback> r = gpu.readbacks().readMaterial(material);
                 QMetaObject::invokeMethod(this, [done, r] { done(r); });
             });
     });
@@ -108,12 +108,8 @@ void RenderController::connectReadbacks() {
                 std::optional<GpuCullResult> result;
                 QString failure;
                 try {
-                    GpuViewport::GpuCullCheck check;
-                    if (gpu.scene() == scene.get() &&
-                        gpu.checkGpuCulling(frustum, method, cpu_visible, check))
-                        result =
-                            GpuCullResult{check.gpu_ms, static_cast<std::int64_t>(check.visible),
-                                          static_cast<std::int64_t>(check.differences)};
+                    if (gpu.scene().scene() == scene.get())
+                        result = gpu.readbacks().checkGpuCulling(frustum, method, cpu_visible);
                 } catch (const std::exception& e) {
                     failure = QString::fromUtf8(e.what());
                 }
@@ -139,7 +135,7 @@ void RenderController::uploadScene() {
     render_->post(
         [this, session = context_.sharedSession(), streams,
          checker = missing_checker_.isChecked()](GpuViewport& gpu) {
-            const GpuViewport::Uploaded up = gpu.load(session, streams, checker);
+            const UploadedScene up = gpu.load(session, streams, checker);
             // Built on upload (ray tracing on): handed over as data, for this session only.
             QMetaObject::invokeMethod(this, [this, up, session] {
                 docks_.textures->setGpuBytes(static_cast<std::int64_t>(up.textureBytes));
@@ -173,7 +169,8 @@ void RenderController::logTextureMessages() {
 }
 
 void RenderController::updateStreams() {
-    if (render_) render_->post([frame = source_()](GpuViewport& gpu) { gpu.useStreamsFor(frame); });
+    if (render_)
+        render_->post([frame = source_()](GpuViewport& gpu) { gpu.scene().useStreamsFor(frame); });
     viewport_.scheduleFrame();
 }
 

@@ -6,14 +6,6 @@ namespace sherpa::editor {
 
 namespace {
 
-// The camera and the frame's size (the orbit camera's aspect follows the size; the
-// request leaves the aspect to the viewport).
-bool same_camera(const gpu::FrameRequest& a, const gpu::FrameRequest& b) {
-    return a.camera.eye == b.camera.eye && a.camera.target == b.camera.target &&
-           a.camera.up == b.camera.up && a.camera.fov_degrees == b.camera.fov_degrees &&
-           a.camera.aspect == b.camera.aspect && a.width == b.width && a.height == b.height;
-}
-
 double ms_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();
@@ -45,7 +37,7 @@ std::uint64_t RenderThread::requestFrame(const ViewportRequest& frame, std::uint
     {
         std::lock_guard lock(mutex_);
         serial = ++serial_;
-        pending_ = Request{frame, surface, serial}; // an older request not yet started goes
+        pending_ = FrameOrder{frame, surface, serial}; // an older request not yet started goes
     }
     wake_.notify_all();
     return serial;
@@ -69,18 +61,12 @@ void RenderThread::post(Task task, TaskKind kind) {
 
 void RenderThread::forgetMotion() {
     std::lock_guard lock(mutex_);
-    last_.reset(); // no camera to compare with: still
-    refine_ = false;
+    pacing_.forget(); // no camera to compare with: still
 }
 
-void RenderThread::setInteractiveScaling(bool on) {
+void RenderThread::setPacing(const PacingOptions& options) {
     std::lock_guard lock(mutex_);
-    scaling_ = on;
-}
-
-void RenderThread::setTargetFrameMs(double ms) {
-    std::lock_guard lock(mutex_);
-    target_ms_ = ms;
+    pacing_.setOptions(options);
 }
 
 bool RenderThread::renderAndWait(const ViewportRequest& frame, std::uint64_t surface) {
@@ -90,11 +76,11 @@ bool RenderThread::renderAndWait(const ViewportRequest& frame, std::uint64_t sur
         if (failed_) return false;
         serial = ++serial_;
         pending_.reset(); // this one is newer
-        refine_ = false;
+        pacing_.stopRefining();
     }
-    const Request request{frame, surface, serial};
-    return call([this, request](GpuViewport& gpu) {
-        draw(gpu, request, true);
+    const FrameOrder order{frame, surface, serial};
+    return call([this, order](GpuViewport& gpu) {
+        draw(gpu, order, true);
         gpu.finish();
         return true;
     });
@@ -104,11 +90,10 @@ void RenderThread::releaseSurface() {
     {
         std::lock_guard lock(mutex_);
         pending_.reset();
-        last_.reset();
-        refine_ = false;
+        pacing_.forget();
         if (failed_) return; // no swapchain was ever made
     }
-    call([](GpuViewport& gpu) { gpu.releaseSurface(); });
+    call([](GpuViewport& gpu) { gpu.presenter().releaseSurface(); });
 }
 
 bool RenderThread::makeDevice() {
@@ -143,11 +128,9 @@ void RenderThread::run() {
     while (true) {
         const auto woken = [this] { return stop_ || !tasks_.empty() || pending_.has_value(); };
         bool rested = false;
-        // Accumulating path-traced samples: the next frame right away unless a request
-        // comes (the camera moves) first.
-        if (refine_ && !woken())
-            rested = !wake_.wait_for(lock, std::chrono::milliseconds(accumulating_ ? 0 : kRestMs),
-                                     woken);
+        // A frame to refine: drawn again unless a request comes (the camera moves) first.
+        if (const auto rest = pacing_.restWait(); rest && !woken())
+            rested = !wake_.wait_for(lock, *rest, woken);
         else
             wake_.wait(lock, woken);
         if (stop_) break;
@@ -164,24 +147,20 @@ void RenderThread::run() {
             lock.lock();
             continue;
         }
-        Request request;
+        FrameOrder order;
         bool still = true;
         if (pending_) {
-            request = *pending_;
+            order = std::move(*pending_);
             pending_.reset();
-            // Moving: the camera changed since the last frame drawn, or the pose did
-            // (a playing animation is motion too: the timeline makes a new pose per
-            // step, and the same one while paused).
-            still = !last_ || (same_camera(last_->frame.request, request.frame.request) &&
-                               last_->frame.request.pose == request.frame.request.pose);
-        } else if (rested && last_) {
-            request = *last_; // the camera rests: the same frame at full size
+            still = pacing_.still(order);
+        } else if (rested && pacing_.again()) {
+            order = *pacing_.again(); // the camera rests: the same frame at full size
         } else {
-            refine_ = false;
+            pacing_.stopRefining();
             continue;
         }
         lock.unlock();
-        draw(gpu, request, still);
+        draw(gpu, order, still);
         lock.lock();
     }
     lock.unlock();
@@ -189,46 +168,31 @@ void RenderThread::run() {
 }
 
 // Draws on the render thread; `still`: at full size whatever the interactive scale.
-void RenderThread::draw(GpuViewport& gpu, const Request& request, bool still) {
+void RenderThread::draw(GpuViewport& gpu, const FrameOrder& order, bool still) {
     float scale = 1.0f;
     {
         std::lock_guard lock(mutex_);
-        if (!still && scaling_) scale = scale_;
+        scale = pacing_.scale(still);
     }
     FrameReport report;
-    report.request = request.serial;
+    report.request = order.serial;
     report.scale = scale;
-    report.width = request.frame.request.width;
-    report.height = request.frame.request.height;
+    report.width = order.frame.request.width;
+    report.height = order.frame.request.height;
     const auto start = std::chrono::steady_clock::now();
     try {
-        static_cast<PresentOutcome&>(report) = gpu.present(request.surface, request.frame, scale);
+        static_cast<PresentOutcome&>(report) =
+            gpu.presenter().present(order.surface, order.frame, scale);
     } catch (const std::exception& e) {
         Q_EMIT renderError(QString::fromUtf8(e.what()));
         std::lock_guard lock(mutex_);
-        last_.reset();
-        refine_ = false;
+        pacing_.forget();
         return;
     }
     report.ms = ms_since(start);
     {
         std::lock_guard lock(mutex_);
-        // The completed frame's GPU time belongs to the present kFramesInFlight back.
-        drawn_scales_.push_back(scale);
-        while (drawn_scales_.size() > GpuViewport::kFramesInFlight + 1) drawn_scales_.pop_front();
-        double cost = report.ms;
-        if (report.gpu_ms > 0.0 && drawn_scales_.size() > GpuViewport::kFramesInFlight) {
-            const float then = drawn_scales_.front();
-            cost = std::max(cost, report.gpu_ms * double(scale * scale) / double(then * then));
-        }
-        // Every frame informs the next moving frame's scale: a still frame too says
-        // what full size costs.
-        if (report.shown) scale_ = next_resolution_scale(scale, cost, target_ms_);
-        last_ = request;
-        // A path-traced still frame goes on accumulating until kPathSamples.
-        accumulating_ = report.shown && scale >= 1.0f && report.path_traced &&
-                        report.path_samples < GpuViewport::kPathSamples;
-        refine_ = report.shown && (scale < 1.0f || accumulating_);
+        pacing_.drawn(order, scale, report, report.ms);
     }
     Q_EMIT frameDone(report);
 }

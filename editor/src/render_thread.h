@@ -19,12 +19,12 @@
 #include <optional>
 #include <thread>
 
+#include "frame_pacing.h"
 #include "gpu_viewport.h"
-#include "resolution_scale.h"
 
 namespace sherpa::editor {
 
-// One frame as the render thread drew it: what GpuViewport::present() said, and the
+// One frame as the render thread drew it: what ViewportPresenter::present() said, and the
 // request it drew.
 struct FrameReport : PresentOutcome {
     std::uint64_t request = 0;           // the requestFrame() it drew (1, 2, ...)
@@ -48,8 +48,8 @@ public:
     // The frame to draw next on `surface`; replaces a request not yet started. A
     // frame whose camera or pose differs from the last one drawn is "moving" (orbiting,
     // a playing animation): drawn at the interactive resolution scale; once no new
-    // request comes for kRestMs (the camera rests, playback pauses), the last frame is
-    // drawn again at full size (the still image is always full size).
+    // request comes for FramePacing::kRestMs (the camera rests, playback pauses), the
+    // last frame is drawn again at full size (the still image is always full size).
     std::uint64_t requestFrame(const ViewportRequest& frame, std::uint64_t surface);
     // The serial of the latest request (requestFrame(), renderAndWait()); 0 before
     // any. A FrameReport::request at or above it drew a frame asked for since.
@@ -73,12 +73,10 @@ public:
     // The next frame is still (full size) whatever its camera: a new scene's framing
     // is a jump, not motion.
     void forgetMotion();
-    // Reduced resolution while moving; off draws every frame at full size.
-    void setInteractiveScaling(bool on);
-    // The frame time moving frames aim at (kTargetFrameMs: 36 fps, for a 30 fps goal).
-    void setTargetFrameMs(double ms);
-
-    static constexpr int kRestMs = 80; // no new camera for this long: the camera rests
+    // How moving frames are paced: reduced resolution or not (off draws every frame at
+    // full size), and the frame time they aim at (kTargetFrameMs: 36 fps, for a 30 fps
+    // goal).
+    void setPacing(const PacingOptions& options);
 
 Q_SIGNALS:
     // The device exists (GUI thread): what the loader prepares textures for, its
@@ -92,14 +90,9 @@ Q_SIGNALS:
     void renderError(const QString& error);
 
 private:
-    struct Request {
-        ViewportRequest frame;
-        std::uint64_t surface = 0;
-        std::uint64_t serial = 0;
-    };
     bool makeDevice(); // on thread_, first
     void run();
-    void draw(GpuViewport& gpu, const Request& request, bool still);
+    void draw(GpuViewport& gpu, const FrameOrder& order, bool still);
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;
@@ -108,16 +101,10 @@ private:
         TaskKind kind = TaskKind::Once;
     };
     std::deque<Queued> tasks_;
-    std::optional<Request> pending_;
-    std::optional<Request> last_; // the last frame drawn (for the refinement at rest)
-    bool refine_ = false;         // last_ was drawn reduced: draw it full at rest
-    bool accumulating_ = false;   // last_ is path traced and wants more samples
+    std::optional<FrameOrder> pending_;
+    FramePacing pacing_; // which frame next, at what size
     bool stop_ = false;
     bool failed_ = false; // no device: tasks are dropped
-    bool scaling_ = true;
-    double target_ms_ = kTargetFrameMs;
-    float scale_ = 1.0f;             // for the next moving frame
-    std::deque<float> drawn_scales_; // of the last presents (to match GPU timings)
     std::uint64_t serial_ = 0;
     DeviceFactory make_;
     std::unique_ptr<GpuViewport> gpu_; // made and used on thread_ only

@@ -62,7 +62,7 @@ SceneTreeDock::SceneTreeDock(const EditorContext& context, QWidget* parent)
     connect(model_, &SceneTreeModel::visibilityRequested, this,
             &SceneTreeDock::visibilityRequested);
     connect(model_, &QAbstractItemModel::modelReset, this, [this] { view_->expandToDepth(1); });
-    connect(&context_, &EditorContext::selectionChanged, this, &SceneTreeDock::syncFromContext);
+    connect(&context_.selection(), &SceneSelection::changed, this, &SceneTreeDock::syncFromContext);
     retranslate();
 }
 
@@ -124,7 +124,7 @@ void SceneTreeDock::onCurrentChanged(const QModelIndex& current) {
 }
 
 void SceneTreeDock::syncFromContext() {
-    const Selection& s = context_.selection();
+    const Selection& s = context_.selection().current();
     // Already on an item of the selected node (its material, light...): stay there.
     const QModelIndex current = view_->currentIndex();
     if (current.isValid() && s.node >= 0 &&

@@ -25,7 +25,7 @@ SceneTreeModel::SceneTreeModel(const EditorContext& context, QObject* parent)
         rebuild();
         endResetModel();
     });
-    connect(&context_, &EditorContext::visibilityChanged, this, [this] {
+    connect(&context_.visibility(), &NodeVisibility::changed, this, [this] {
         // Checkboxes of every node row may change (a hidden parent greys its subtree).
         for (int n = 0; n < static_cast<int>(node_item_.size()); ++n) {
             const QModelIndex i = indexOfNode(n);
@@ -264,10 +264,10 @@ QVariant SceneTreeModel::data(const QModelIndex& index, int role) const {
         return {};
     case Qt::CheckStateRole:
         if (index.column() == NameColumn && it.kind == Kind::Node)
-            return context_.nodeVisible(it.index) ? Qt::Checked : Qt::Unchecked;
+            return context_.visibility().nodeVisible(it.index) ? Qt::Checked : Qt::Unchecked;
         return {};
     case Qt::FontRole:
-        if (it.kind == Kind::Node && context_.selection().node == it.index) {
+        if (it.kind == Kind::Node && context_.selection().current().node == it.index) {
             QFont f;
             f.setBold(true);
             return f;

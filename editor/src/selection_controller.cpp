@@ -53,41 +53,43 @@ SelectionController::SelectionController(EditorContext& context, const WindowDoc
 
 void SelectionController::connectDocks() {
     // Actions out of the docks become context changes here, and only here.
-    connect(docks_.sceneTree, &SceneTreeDock::selectNodeRequested, &context_,
-            &EditorContext::selectNode);
-    connect(docks_.sceneTree, &SceneTreeDock::selectMeshRequested, &context_,
-            &EditorContext::selectMesh);
-    connect(docks_.sceneTree, &SceneTreeDock::selectMaterialRequested, &context_,
-            &EditorContext::selectMaterial);
-    connect(docks_.sceneTree, &SceneTreeDock::visibilityRequested, &context_,
-            &EditorContext::setNodeVisible);
-    connect(docks_.acceleration, &AccelerationDock::selectMeshRequested, &context_,
-            &EditorContext::selectMesh);
-    connect(docks_.mesh, &MeshDock::selectVertexRequested, &context_, &EditorContext::selectVertex);
-    connect(docks_.mesh, &MeshDock::selectTriangleRequested, &context_,
-            &EditorContext::selectTriangle);
+    connect(docks_.sceneTree, &SceneTreeDock::selectNodeRequested, &context_.selection(),
+            &SceneSelection::selectNode);
+    connect(docks_.sceneTree, &SceneTreeDock::selectMeshRequested, &context_.selection(),
+            &SceneSelection::selectMesh);
+    connect(docks_.sceneTree, &SceneTreeDock::selectMaterialRequested, &context_.selection(),
+            &SceneSelection::selectMaterial);
+    connect(docks_.sceneTree, &SceneTreeDock::visibilityRequested, &context_.visibility(),
+            &NodeVisibility::setNodeVisible);
+    connect(docks_.acceleration, &AccelerationDock::selectMeshRequested, &context_.selection(),
+            &SceneSelection::selectMesh);
+    connect(docks_.mesh, &MeshDock::selectVertexRequested, &context_.selection(),
+            &SceneSelection::selectVertex);
+    connect(docks_.mesh, &MeshDock::selectTriangleRequested, &context_.selection(),
+            &SceneSelection::selectTriangle);
     connect(docks_.material, &MaterialDock::selectTextureRequested, this, [this](int texture) {
-        context_.selectTexture(texture);
+        context_.selection().selectTexture(texture);
         docks_.textures->show();
         docks_.textures->raise();
     });
-    connect(docks_.textures, &TextureDock::selectTextureRequested, &context_,
-            &EditorContext::selectTexture);
+    connect(docks_.textures, &TextureDock::selectTextureRequested, &context_.selection(),
+            &SceneSelection::selectTexture);
     connect(
         docks_.validation, &ValidationDock::messageActivated, this,
         [this](const QString& pointer, const QString& message) { showPointer(pointer, message); });
     connect(&context_, &EditorContext::sceneReady, this,
             &SelectionController::showValidationForScene);
-    connect(&viewport_, &ViewportWindow::clicked, this, [this](QPointF ndc) { pickAt(ndc); });
-    connect(&context_, &EditorContext::selectionChanged, &viewport_,
+    connect(&viewport_.input(), &ViewportInput::clicked, this,
+            [this](QPointF ndc) { pickAt(ndc); });
+    connect(&context_.selection(), &SceneSelection::changed, &viewport_,
             &ViewportWindow::scheduleFrame);
-    connect(&context_, &EditorContext::visibilityChanged, &viewport_,
+    connect(&context_.visibility(), &NodeVisibility::changed, &viewport_,
             &ViewportWindow::scheduleFrame);
 }
 
 void SelectionController::fill(ViewportRequest& frame) const {
-    const Selection& sel = context_.selection();
-    frame.hiddenNodes = context_.hiddenNodes();
+    const Selection& sel = context_.selection().current();
+    frame.hiddenNodes = context_.visibility().hidden();
     gpu::FrameRequest& request = frame.request;
     if (const Scene* scene = context_.scene();
         scene && sel.node >= 0 && is_joint(*scene, static_cast<std::uint32_t>(sel.node)))
@@ -105,23 +107,24 @@ int SelectionController::pickAt(QPointF ndc) {
     const Scene* scene = context_.scene();
     if (!scene) return -1;
     glm::vec3 origin, direction;
-    viewport_.camera().pose().ray({static_cast<float>(ndc.x()), static_cast<float>(ndc.y())},
-                                  origin, direction);
-    const PickHit hit = pick(*scene, origin, direction,
-                             [this](std::size_t i) { return context_.instanceVisible(i); });
+    viewport_.camera().pose().ray({static_cast<float>(ndc.x()), static_cast<float>(ndc.y())}, origin,
+                           direction);
+    const PickHit hit = pick(*scene, origin, direction, [this](std::size_t i) {
+        return context_.visibility().instanceVisible(i);
+    });
     if (!hit) {
-        context_.setSelection({});
+        context_.selection().set({});
         return -1;
     }
     const MeshInstance& inst = scene->instances[static_cast<std::size_t>(hit.instance)];
-    context_.selectMesh(static_cast<int>(inst.mesh_id), static_cast<int>(inst.node_id));
-    context_.selectTriangle(static_cast<int>(hit.triangle));
+    context_.selection().selectMesh(static_cast<int>(inst.mesh_id), static_cast<int>(inst.node_id));
+    context_.selection().selectTriangle(static_cast<int>(hit.triangle));
     return static_cast<int>(hit.instance);
 }
 
 int SelectionController::selectedInstance() const {
     const Scene* scene = context_.scene();
-    const Selection& sel = context_.selection();
+    const Selection& sel = context_.selection().current();
     if (!scene || sel.mesh < 0) return -1;
     // The selected primitive as placed by the selected node (any node when none is).
     for (std::size_t i = 0; i < scene->instances.size(); ++i) {
@@ -135,7 +138,7 @@ int SelectionController::selectedInstance() const {
 
 std::vector<std::uint32_t> SelectionController::outlinedInstances() const {
     const Scene* scene = context_.scene();
-    const int node = context_.selection().node;
+    const int node = context_.selection().current().node;
     std::vector<std::uint32_t> out;
     if (!scene || node < 0 || static_cast<std::size_t>(node) >= scene->nodes.size()) return out;
     const bool own_mesh = scene->nodes[static_cast<std::size_t>(node)].mesh >= 0;
@@ -165,7 +168,7 @@ bool SelectionController::selectNodeNamed(const QString& name_or_index) {
     for (std::size_t n = 0; n < scene->nodes.size(); ++n)
         if (is_index ? static_cast<int>(n) == index
                      : QString::fromStdString(scene->nodes[n].name) == name_or_index) {
-            context_.selectNode(static_cast<int>(n));
+            context_.selection().selectNode(static_cast<int>(n));
             return true;
         }
     return false;
@@ -183,7 +186,7 @@ bool SelectionController::showPointer(const QString& pointer, const QString& mes
     QDockWidget* dock = nullptr;
     QString what;
     const auto selectNode = [&] { // the node itself, in the scene tree
-        context_.selectNode(t.node);
+        context_.selection().selectNode(t.node);
         dock = docks_.sceneTree;
         what = tr("node %1").arg(t.node);
     };
@@ -204,7 +207,7 @@ bool SelectionController::showPointer(const QString& pointer, const QString& mes
     case TargetKind::Primitive:
     case TargetKind::Accessor:
         if (t.engine_mesh >= 0) {
-            context_.selectMesh(t.engine_mesh, t.node);
+            context_.selection().selectMesh(t.engine_mesh, t.node);
             dock = docks_.mesh;
             what = tr("primitive %1").arg(t.engine_mesh);
             if (t.kind == TargetKind::Accessor) {
@@ -212,8 +215,8 @@ bool SelectionController::showPointer(const QString& pointer, const QString& mes
                 const int row =
                     element_row(*scene, t.uses.front(),
                                 element_index_in_message(message.toStdString()), triangle);
-                if (row >= 0 && triangle) context_.selectTriangle(row);
-                if (row >= 0 && !triangle) context_.selectVertex(row);
+                if (row >= 0 && triangle) context_.selection().selectTriangle(row);
+                if (row >= 0 && !triangle) context_.selection().selectVertex(row);
                 what = tr("accessor %1: %2 of primitive %3")
                            .arg(t.index)
                            .arg(QString::fromStdString(t.uses.front().attribute))
@@ -230,8 +233,8 @@ bool SelectionController::showPointer(const QString& pointer, const QString& mes
     case TargetKind::Extension:
         if (t.material >= 0) {
             // A primitive drawn with it is highlighted; the material dock shows it.
-            if (t.engine_mesh >= 0) context_.selectMesh(t.engine_mesh, t.node);
-            context_.selectMaterial(t.material);
+            if (t.engine_mesh >= 0) context_.selection().selectMesh(t.engine_mesh, t.node);
+            context_.selection().selectMaterial(t.material);
             dock = docks_.material;
             what = tr("material %1").arg(t.material);
         }
@@ -239,7 +242,7 @@ bool SelectionController::showPointer(const QString& pointer, const QString& mes
     case TargetKind::Texture:
     case TargetKind::Image:
         if (t.texture >= 0) {
-            context_.selectTexture(t.texture);
+            context_.selection().selectTexture(t.texture);
             dock = docks_.textures;
             what = tr("texture %1").arg(t.texture);
         }

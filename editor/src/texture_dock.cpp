@@ -57,16 +57,16 @@ TextureDock::TextureDock(const EditorContext& context, QWidget* parent)
     connect(open_folder_, &QPushButton::clicked, this, &TextureDock::openCacheFolderRequested);
     connect(clear_, &QPushButton::clicked, this, &TextureDock::clearCacheRequested);
     connect(recompress_, &QPushButton::clicked, this, [this] {
-        if (context_.selection().texture >= 0)
-            Q_EMIT recompressRequested(context_.selection().texture);
+        if (context_.selection().current().texture >= 0)
+            Q_EMIT recompressRequested(context_.selection().current().texture);
     });
     connect(view_->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
             [this](const QModelIndex& current) {
-                if (current.isValid() && current.row() != context_.selection().texture)
+                if (current.isValid() && current.row() != context_.selection().current().texture)
                     Q_EMIT selectTextureRequested(current.row());
             });
     connect(&context_, &EditorContext::sceneReady, this, &TextureDock::showScene);
-    connect(&context_, &EditorContext::selectionChanged, this, &TextureDock::syncSelection);
+    connect(&context_.selection(), &SceneSelection::changed, this, &TextureDock::syncSelection);
     retranslate();
 }
 
@@ -97,7 +97,7 @@ void TextureDock::showScene() {
 }
 
 void TextureDock::syncSelection() {
-    const int t = context_.selection().texture;
+    const int t = context_.selection().current().texture;
     if (t >= 0 && t < model_->rowCount() && view_->currentIndex().row() != t) {
         view_->setCurrentIndex(model_->index(t, 0));
         view_->scrollTo(model_->index(t, 0));

@@ -71,21 +71,18 @@ void ViewController::connectActions() {
             settings_.set(setting::kCheckerDensity, act->data().toInt());
             viewport_.scheduleFrame();
         });
-    connect(a_.frame_all, &QAction::triggered, &viewport_, &ViewportWindow::frameAllRequested);
+    connect(a_.frame_all, &QAction::triggered, this, &ViewController::frameAll);
     connect(a_.frame_selection, &QAction::triggered, this, &ViewController::frameSelection);
-    connect(a_.fly, &QAction::toggled, &viewport_, &ViewportWindow::setFlyMode);
+    connect(a_.fly, &QAction::toggled, &viewport_.input(), &ViewportInput::setFlyMode);
     connect(a_.freeze, &QAction::toggled, &culling_, &CullingMonitor::setFrozen);
     connect(a_.box_colouring, &QAction::toggled, &frames_, &RenderController::updateStreams);
     connect(a_.gpu_path, &QAction::toggled, &culling_, &CullingMonitor::setGpuPath);
     connect(&culling_, &CullingMonitor::updated, &viewport_, &ViewportWindow::scheduleFrame);
     connect(a_.cameras, &QMenu::aboutToShow, this, [this] { fillCamerasMenu(*a_.cameras); });
-    connect(&viewport_, &ViewportWindow::cameraChanged, this, &ViewController::cameraChanged);
-    connect(&viewport_, &ViewportWindow::frameAllRequested, this, [this] {
-        if (context_.scene()) viewport_.camera().frameAuto(*context_.scene());
-        cameraChanged();
-    });
-    connect(&viewport_, &ViewportWindow::frameSelectionRequested, this,
-            &ViewController::frameSelection);
+    const ViewportInput& input = viewport_.input();
+    connect(&input, &ViewportInput::cameraChanged, this, &ViewController::cameraChanged);
+    connect(&input, &ViewportInput::frameAllRequested, this, &ViewController::frameAll);
+    connect(&input, &ViewportInput::frameSelectionRequested, this, &ViewController::frameSelection);
 }
 
 QString ViewController::debugView() const {
@@ -187,7 +184,7 @@ void ViewController::applyEnvironment() {
                              : QString::fromStdString(choice.path);
     QPointer<ViewController> self(this);
     frames_.post([self, choice, name](GpuViewport& gpu) {
-        const QStringList warnings = gpu.setEnvironment(choice);
+        const QStringList warnings = gpu.scene().setEnvironment(choice);
         QMetaObject::invokeMethod(qApp, [self, warnings, name] {
             if (!self) return;
             for (const QString& w : warnings) self->docks_.log->append(LogDock::Level::Warning, w);
@@ -243,9 +240,14 @@ void ViewController::cameraChanged() {
     viewport_.scheduleFrame();
 }
 
+void ViewController::frameAll() {
+    if (context_.scene()) viewport_.camera().frameAuto(*context_.scene());
+    cameraChanged();
+}
+
 void ViewController::frameSelection() {
     const Scene* scene = context_.scene();
-    const int node = context_.selection().node;
+    const int node = context_.selection().current().node;
     if (!scene || node < 0) return;
     Aabb box;
     for (const MeshInstance& inst : scene->instances)
@@ -258,7 +260,7 @@ void ViewController::frameSelection() {
 void ViewController::jumpToCamera(int node) {
     const Scene* scene = context_.scene();
     if (!scene) return;
-    viewport_.setAutoFrame(false);
+    viewport_.input().setAutoFrame(false);
     for (std::size_t i = 0; i < scene->placed_cameras.size(); ++i)
         if (static_cast<int>(scene->placed_cameras[i].node) == node) {
             viewport_.camera().jumpTo(*scene, i);

@@ -64,6 +64,7 @@ private:
     void setupEnvironment();
     void connectLab();
     void updateLabLighting(); // the Lab's lit frames lit as the viewport is
+    void frameAll();          // View › Frame All and F: the camera framed on the scene
     void frameSelection();
     void fillCamerasMenu(QMenu& menu);
     void retranslateOverlayButton(); // "Overlays (2)" and which in its tooltip

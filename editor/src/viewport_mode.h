@@ -3,7 +3,7 @@
 // tracer, or an A/B comparison of two sides drawn with one camera (locked by
 // construction: both sides get the same CameraSpec) and composited by the engine's
 // ComparisonFrame, side by side with a divider (Split) or as a heat map of |A - B|
-// (Difference). Plain data, mapped to the engine's settings in gpu_viewport.cpp.
+// (Difference). Plain data, mapped to the engine's settings in viewport_presenter*.cpp.
 #include <cstdint>
 
 namespace sherpa::editor {

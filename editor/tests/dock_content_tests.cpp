@@ -82,7 +82,7 @@ void DockContentTests::instancedNodeShowsItsRowsInTheTreeAndTheTable() {
             if (rows->rows.size() != rows->file_rows)
                 QVERIFY2(detail.contains(QStringLiteral("of %1 rows").arg(rows->file_rows)),
                          qPrintable(detail));
-            context.selectNode(int(n));
+            context.selection().selectNode(int(n));
             QCOMPARE(dock.instances()->rowCount(), int(rows->rows.size()));
             const InstanceRow& last = rows->rows.back();
             const int r = dock.instances()->rowCount() - 1;

@@ -23,4 +23,11 @@ std::int64_t gpu_object_count(GpuViewport& gpu) {
     return static_cast<std::int64_t>(gpu.renderer().resources().counts().total());
 }
 
+QStringList last_pass_times(GpuViewport& gpu) {
+    QStringList out;
+    for (const gpu::PassTiming& p : gpu.presenter().completed().passes)
+        out << QStringLiteral("%1 %2 ms").arg(QString::fromStdString(p.name)).arg(p.ms, 0, 'f', 1);
+    return out;
+}
+
 } // namespace sherpa::editor::test

@@ -18,5 +18,8 @@ QStringList validation_messages(GpuViewport& gpu);
 // Buffers, images and samplers alive in the engine, once those retired by earlier
 // frames are freed (leak checks).
 std::int64_t gpu_object_count(GpuViewport& gpu);
+// The latest completed frame pass by pass (GPU timestamps): "NAME MS ms" each, in
+// frame order; empty before a frame is presented.
+QStringList last_pass_times(GpuViewport& gpu);
 
 } // namespace sherpa::editor::test

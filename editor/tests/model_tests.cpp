@@ -3,12 +3,14 @@
 #include <QSignalSpy>
 #include <QtTest>
 
+#include <sherpa/scene/animation.h>
 #include <sherpa/scene/culling_passes.h>
 
 #include "attribute_model.h"
 #include "command_line.h"
 #include "editor_context.h"
 #include "format_values.h"
+#include "frame_pacing.h"
 #include "material_fields_model.h"
 #include "orbit_camera.h"
 #include "picking.h"
@@ -20,6 +22,7 @@
 #include "texture_table_model.h"
 #include "triangle_table_model.h"
 #include "vertex_table_model.h"
+#include "viewport_presenter.h"
 
 using namespace sherpa;
 using namespace sherpa::editor;
@@ -88,6 +91,8 @@ private Q_SLOTS:
     void pickHitsTheInstanceUnderTheRay();
     void pickHitsLinesAndPointsWithinACone();
     void selectionFollowsActions();
+    void newSceneClearsSelectionBeforeSayingSo();
+    void framePacingReducesMovingFramesOnly();
     void commandLineDocksAndCulling();
     void resolutionScaleHoldsTheTargetRate();
 };
@@ -361,30 +366,109 @@ void ModelTests::selectionFollowsActions() {
     EditorContext context;
     SceneTreeModel tree(context);
     context.setSession(out.session);
-    QSignalSpy selection(&context, &EditorContext::selectionChanged);
+    QSignalSpy selection(&context.selection(), &SceneSelection::changed);
     int mesh_node = -1;
     for (std::size_t n = 0; n < out.session->scene->nodes.size(); ++n)
         if (out.session->scene->nodes[n].mesh >= 0) mesh_node = static_cast<int>(n);
     QVERIFY(mesh_node >= 0);
-    context.selectNode(mesh_node);
+    context.selection().selectNode(mesh_node);
     QCOMPARE(selection.count(), 1);
-    QCOMPARE(context.selection().node, mesh_node);
-    QVERIFY(context.selection().mesh >= 0);
-    QCOMPARE(context.selection().material,
-             static_cast<int>(
-                 out.session->scene->meshes[static_cast<std::size_t>(context.selection().mesh)]
-                     .material_id));
+    QCOMPARE(context.selection().current().node, mesh_node);
+    QVERIFY(context.selection().current().mesh >= 0);
+    QCOMPARE(
+        context.selection().current().material,
+        static_cast<int>(
+            out.session->scene->meshes[static_cast<std::size_t>(context.selection().current().mesh)]
+                .material_id));
     // Unticking a node is an action out of the model, applied by the owner of the context.
     QSignalSpy requested(&tree, &SceneTreeModel::visibilityRequested);
     QVERIFY(tree.setData(tree.indexOfNode(mesh_node), Qt::Unchecked, Qt::CheckStateRole));
     QCOMPARE(requested.count(), 1);
-    QVERIFY(context.nodeVisible(mesh_node));
-    context.setNodeVisible(mesh_node, false);
+    QVERIFY(context.visibility().nodeVisible(mesh_node));
+    context.visibility().setNodeVisible(mesh_node, false);
     QCOMPARE(tree.indexOfNode(mesh_node).data(Qt::CheckStateRole).toInt(),
              static_cast<int>(Qt::Unchecked));
     for (std::size_t i = 0; i < out.session->scene->instances.size(); ++i)
         if (static_cast<int>(out.session->scene->instances[i].node_id) == mesh_node)
-            QVERIFY(!context.instanceVisible(i));
+            QVERIFY(!context.visibility().instanceVisible(i));
+}
+
+// A new scene: while the docks hear sceneReady nothing of the old scene is selected or
+// hidden, and the selection's changed() comes after it, once.
+void ModelTests::newSceneClearsSelectionBeforeSayingSo() {
+    const LoadOutcome duck = SceneLoadJob::loadNow(test::asset(QStringLiteral("Duck")));
+    EditorContext context;
+    context.setSession(duck.session);
+    context.selection().selectNode(0);
+    context.visibility().setNodeVisible(0, false);
+    QVERIFY(context.visibility().hidden());
+    QStringList heard;
+    connect(&context, &EditorContext::sceneReady, &context, [&] {
+        heard << QStringLiteral("scene");
+        QVERIFY(context.selection().current() == Selection{});
+        QVERIFY(!context.visibility().hidden());
+        QVERIFY(context.visibility().nodeVisible(0));
+    });
+    connect(&context.selection(), &SceneSelection::changed, &context,
+            [&] { heard << QStringLiteral("selection"); });
+    QSignalSpy visibility(&context.visibility(), &NodeVisibility::changed);
+    context.setSession(nullptr);
+    QCOMPARE(heard, QStringList({QStringLiteral("scene"), QStringLiteral("selection")}));
+    QCOMPARE(visibility.count(), 0); // the new scene says it
+    // Without a scene, selecting a node selects nothing and hiding hides nothing.
+    context.selection().selectNode(0);
+    QVERIFY(context.selection().current() == Selection{});
+    context.visibility().setNodeVisible(0, false);
+    QVERIFY(!context.visibility().hidden());
+}
+
+// The render thread's pacing: a frame whose camera or pose moved is drawn reduced once
+// a frame was too slow, the same camera is still (full size), a reduced frame is
+// refined after kRestMs, and a path-traced still frame is drawn again at once until
+// it has kPathSamples.
+void ModelTests::framePacingReducesMovingFramesOnly() {
+    FramePacing pacing;
+    FrameOrder a;
+    a.frame.request.width = 800;
+    a.frame.request.height = 600;
+    a.frame.request.camera.eye = {0.0f, 0.0f, 5.0f};
+    QVERIFY(pacing.still(a)); // nothing drawn yet
+    QVERIFY(!pacing.restWait());
+    PresentOutcome shown;
+    shown.shown = true;
+    pacing.drawn(a, pacing.scale(true), shown, 4.0 * kTargetFrameMs); // full size, slow
+    QVERIFY(!pacing.restWait());                                      // nothing to refine
+    FrameOrder b = a;
+    b.frame.request.camera.eye = {1.0f, 0.0f, 5.0f};
+    QVERIFY(pacing.still(a));
+    QVERIFY(!pacing.still(b));
+    QCOMPARE(pacing.scale(true), 1.0f);
+    QCOMPARE(pacing.scale(false), 0.5f); // 4x the target: half of each side
+    pacing.drawn(b, 0.5f, shown, kTargetFrameMs);
+    QCOMPARE(pacing.restWait().value_or(std::chrono::milliseconds(-1)),
+             std::chrono::milliseconds(FramePacing::kRestMs));
+    QCOMPARE(pacing.again()->frame.request.camera.eye, b.frame.request.camera.eye);
+    // A new pose is motion too.
+    FrameOrder posed = b;
+    posed.frame.request.pose = std::make_shared<const Pose>();
+    QVERIFY(!pacing.still(posed));
+    // Scaling off: every frame full size.
+    pacing.setOptions({.interactiveScaling = false});
+    QCOMPARE(pacing.scale(false), 1.0f);
+    // Path traced at full size and not done: drawn again at once.
+    PresentOutcome traced = shown;
+    traced.path_traced = true;
+    traced.path_samples = 10;
+    pacing.drawn(b, 1.0f, traced, kTargetFrameMs);
+    QCOMPARE(pacing.restWait().value_or(std::chrono::milliseconds(-1)),
+             std::chrono::milliseconds(0));
+    traced.path_samples = ViewportPresenter::kPathSamples;
+    pacing.drawn(b, 1.0f, traced, kTargetFrameMs);
+    QVERIFY(!pacing.restWait());
+    // Forgotten (a new scene): the next frame is still whatever its camera.
+    pacing.forget();
+    QVERIFY(pacing.still(posed));
+    QVERIFY(!pacing.again());
 }
 
 void ModelTests::commandLineDocksAndCulling() {

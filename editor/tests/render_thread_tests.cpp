@@ -108,7 +108,7 @@ void RenderThreadTests::guiWorksWhileAFrameIsInFlight() {
     // Fifty camera steps, a selection (docks fill), a view change and a resize.
     for (int i = 0; i < 50; ++i) {
         w.viewport()->camera().orbit(3.0f, 0.5f);
-        Q_EMIT w.viewport()->cameraChanged();
+        Q_EMIT w.viewport()->input().cameraChanged();
         w.viewport()->renderNow();
         QCoreApplication::processEvents();
     }
@@ -132,7 +132,7 @@ void RenderThreadTests::guiWorksWhileAFrameIsInFlight() {
     QTRY_VERIFY_WITH_TIMEOUT(!drawn.empty(), test::kLoadTimeoutMs);
     disconnect(c);
     QVERIFY2(drawn.front() >= latest, "an older request was drawn");
-    QTest::qWait(2 * RenderThread::kRestMs);
+    QTest::qWait(2 * FramePacing::kRestMs);
     QVERIFY2(w.viewport()->framesRendered() - frames <= 6,
              qPrintable(QString::number(w.viewport()->framesRendered() - frames)));
     QVERIFY(!busy->gave_up);
@@ -145,17 +145,17 @@ void RenderThreadTests::stillFrameIsFullResolutionAfterMotion() {
     QVERIFY(test::load(w, test::asset(QStringLiteral("DamagedHelmet"))));
     const QSize pixels = w.viewport()->pixelSize();
     // Every moving frame is "too slow": drawn at the smallest scale.
-    w.frames().renderer()->setTargetFrameMs(0.01);
+    w.frames().renderer()->setPacing({.targetFrameMs = 0.01});
     w.screenshot(); // a full-size frame at rest
     const QImage reference = viewportOnScreen(w);
     const OrbitCamera rest = w.viewport()->camera();
 
     w.viewport()->camera().orbit(40.0f, 10.0f);
-    Q_EMIT w.viewport()->cameraChanged();
+    Q_EMIT w.viewport()->input().cameraChanged();
     QVERIFY(waitForReport(w, [](const FrameReport& r) { return r.scale < 1.0f; }));
     // Back to where it was, one moving frame, then nothing: the camera rests.
     w.viewport()->camera() = rest;
-    Q_EMIT w.viewport()->cameraChanged();
+    Q_EMIT w.viewport()->input().cameraChanged();
     QTRY_VERIFY(w.frames().lastFrame().request.camera.eye == rest.pose().eye()); // asked for
     const std::uint64_t moving = test::latest_request(w);
     QVERIFY(waitForReport(w, [&](const FrameReport& r) { return r.request == moving; }));
@@ -170,12 +170,12 @@ void RenderThreadTests::stillFrameIsFullResolutionAfterMotion() {
              qPrintable(QString::number(maxDifference(still, reference))));
     // A screenshot is full size whatever the camera did just before.
     w.viewport()->camera().orbit(-40.0f, 0.0f);
-    Q_EMIT w.viewport()->cameraChanged();
+    Q_EMIT w.viewport()->input().cameraChanged();
     w.viewport()->camera() = rest;
     w.screenshot();
     QCOMPARE(w.frames().lastReport().scale, 1.0f);
     QVERIFY(maxDifference(viewportOnScreen(w), reference) <= 1);
-    w.frames().renderer()->setTargetFrameMs(kTargetFrameMs);
+    w.frames().renderer()->setPacing({.targetFrameMs = kTargetFrameMs});
 }
 
 void RenderThreadTests::playbackIsMotionAndPauseIsExact() {
@@ -185,8 +185,8 @@ void RenderThreadTests::playbackIsMotionAndPauseIsExact() {
     MainWindow& w = *window_;
     QVERIFY(test::load(w, test::asset(QStringLiteral("AnimatedCube"))));
     TimelineDock& timeline = *w.docks().timeline;
-    w.frames().renderer()->setTargetFrameMs(0.01); // every moving frame is "too slow"
-    w.screenshot();                                // a full-size frame at rest
+    w.frames().renderer()->setPacing({.targetFrameMs = 0.01}); // every moving frame is "too slow"
+    w.screenshot();                                            // a full-size frame at rest
     QCOMPARE(w.frames().lastReport().scale, 1.0f);
     // Steps of the play loop, the camera still: the scale drops.
     timeline.setPlaying(true);
@@ -207,7 +207,7 @@ void RenderThreadTests::playbackIsMotionAndPauseIsExact() {
         w, [&](const FrameReport& r) { return r.scale == 1.0f && r.request >= paused; }));
     QCOMPARE(QSize(int(w.frames().lastReport().width), int(w.frames().lastReport().height)),
              w.viewport()->pixelSize());
-    w.frames().renderer()->setTargetFrameMs(kTargetFrameMs);
+    w.frames().renderer()->setPacing({.targetFrameMs = kTargetFrameMs});
     QVERIFY(test::load(w, QStringLiteral("builtin:default")));
 }
 
@@ -217,7 +217,7 @@ void RenderThreadTests::gpuTimeIsMeasured() {
     // The GPU time of a frame is read when its frame slot comes round again.
     for (int i = 0; i < 4; ++i) {
         w.viewport()->camera().orbit(5.0f, 0.0f);
-        Q_EMIT w.viewport()->cameraChanged();
+        Q_EMIT w.viewport()->input().cameraChanged();
         const std::uint64_t before = w.viewport()->framesRendered();
         QTRY_VERIFY_WITH_TIMEOUT(w.viewport()->framesRendered() > before, test::kLoadTimeoutMs);
     }

@@ -148,7 +148,7 @@ void RtTests::accelerationDockListsBlasAndSelectsMesh() {
     const int row = model.rowCount() / 2;
     const int gltf_mesh = model.index(row, 0).data(AccelerationModel::MeshRole).toInt();
     dock.view()->setCurrentIndex(model.index(row, 0));
-    const Selection& sel = w.context().selection();
+    const Selection& sel = w.context().selection().current();
     QVERIFY(sel.mesh >= 0);
     QCOMPARE(static_cast<int>(scene.meshes[static_cast<std::size_t>(sel.mesh)].group_id),
              gltf_mesh);
@@ -211,7 +211,8 @@ void RtTests::rayTracedModeDrawsRtFrames() {
     QStringList passes;
     for (int i = 0; i < 4 && !passes.join(' ').contains(QStringLiteral("ray")); ++i) {
         w.frames().renderer()->renderAndWait(w.frames().lastFrame(), w.viewport()->vulkanSurface());
-        passes = w.frames().renderer()->call([](GpuViewport& gpu) { return gpu.lastPassTimes(); });
+        passes = w.frames().renderer()->call(
+            [](GpuViewport& gpu) { return test::last_pass_times(gpu); });
     }
     QVERIFY2(passes.join(' ').contains(QStringLiteral("ray"), Qt::CaseInsensitive),
              qPrintable(passes.join(QStringLiteral(", "))));
@@ -338,7 +339,7 @@ void RtTests::draggingMovesTheDivider() {
     c.setMode(ViewportMode::Split);
     c.setDivider(0.5f);
     ViewportWindow* vp = w.viewport();
-    QCOMPARE(vp->divider().value_or(-1.0f), 0.5f);
+    QCOMPARE(vp->divider().fraction().value_or(-1.0f), 0.5f);
     const int y = vp->height() / 2, width = vp->width();
     const CameraSpec camera = vp->camera().pose().spec();
     // Grabbed at the line (within the grab zone), dropped at a quarter of the width.
@@ -362,7 +363,7 @@ void RtTests::draggingMovesTheDivider() {
     const int at = split.width() * 4 / 5;
     QVERIFY(differing(split, a, 0, at - 4) <= at * split.height() / 200);
     // Without a split, a drag orbits again.
-    QVERIFY(!vp->divider());
+    QVERIFY(!vp->divider().fraction());
     QTest::mousePress(vp, Qt::LeftButton, Qt::NoModifier, QPoint(width / 2, y));
     QTest::mouseMove(vp, QPoint(width / 2 + 40, y));
     QTest::mouseMove(vp, QPoint(width / 2 + 80, y));

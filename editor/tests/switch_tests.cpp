@@ -53,9 +53,11 @@ private:
 void SwitchTests::switchingFiftyTimesDoesNotGrow() {
     // The reduced-resolution image of moving frames comes and goes with measured frame
     // times: full-size frames only, so that the object count depends on scenes alone.
-    if (window_->frames().renderer()) window_->frames().renderer()->setInteractiveScaling(false);
+    if (window_->frames().renderer())
+        window_->frames().renderer()->setPacing({.interactiveScaling = false});
     const auto restore = qScopeGuard([this] {
-        if (window_->frames().renderer()) window_->frames().renderer()->setInteractiveScaling(true);
+        if (window_->frames().renderer())
+            window_->frames().renderer()->setPacing({.interactiveScaling = true});
     });
     const QStringList specs = {
         test::asset(QStringLiteral("Duck")), QStringLiteral("builtin:default"),

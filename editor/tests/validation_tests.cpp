@@ -150,9 +150,9 @@ void ValidationTests::unsupportedExtensionSelectsTheMaterial() {
         QStringLiteral("/materials/0/extensions/ADOBE_materials_thin_transparency")));
     QCOMPARE(activated.count(), 1);
     const Scene& scene = *w_->context().scene();
-    QCOMPARE(w_->context().selection().material, 0);
+    QCOMPARE(w_->context().selection().current().material, 0);
     // The primitive drawn with it is selected: the viewport highlights its instance.
-    QCOMPARE(w_->context().selection().mesh, scene.mesh_primitives[0][0]);
+    QCOMPARE(w_->context().selection().current().mesh, scene.mesh_primitives[0][0]);
     QVERIFY(w_->selection().selectedInstance() >= 0);
     QVERIFY(in_front(w_->docks().material));
     QVERIFY2(in_front(&dock),
@@ -170,10 +170,10 @@ void ValidationTests::unsupportedExtensionSelectsTheMaterial() {
     QVERIFY(dock.detailText().contains(QStringLiteral("material 0")));
     // The extension's name in extensionsUsed leads to a material that uses it too.
     QVERIFY(w_->selection().showPointer(QStringLiteral("/extensionsUsed/1")));
-    QCOMPARE(w_->context().selection().material, 0);
+    QCOMPARE(w_->context().selection().current().material, 0);
     // The plain material (emissive strength, drawn) says nothing.
     QVERIFY(w_->selection().showPointer(QStringLiteral("/materials/1")));
-    QCOMPARE(w_->context().selection().material, 1);
+    QCOMPARE(w_->context().selection().current().material, 1);
     QVERIFY(w_->docks().material->notDrawnText().isEmpty());
 }
 
@@ -181,20 +181,20 @@ void ValidationTests::pointersSelectNodesPrimitivesVerticesAndTextures() {
     QVERIFY(test::load(*w_, test::asset(QStringLiteral("RiggedSimple"))));
     // A skin joint: its node, with the scene tree in front.
     QVERIFY(w_->selection().showPointer(QStringLiteral("/skins/0/joints/1")));
-    QCOMPARE(w_->context().selection().node, 3);
+    QCOMPARE(w_->context().selection().current().node, 3);
     QVERIFY(in_front(w_->docks().sceneTree));
     // An animation channel: its target node.
     QVERIFY(w_->selection().showPointer(QStringLiteral("/animations/0/channels/1/target")));
-    QCOMPARE(w_->context().selection().node, 2);
+    QCOMPARE(w_->context().selection().current().node, 2);
     // An accessor with an element named in the text (as the Khronos validator words
     // data errors): the primitive that reads it, that vertex's row, the mesh dock.
     QVERIFY(w_->selection().showPointer(
         QStringLiteral("/accessors/3"),
         QStringLiteral("Accessor element at index 7 is NaN or Infinity.")));
     const Scene& rigged = *w_->context().scene();
-    QCOMPARE(w_->context().selection().mesh, rigged.mesh_primitives[0][0]);
-    QCOMPARE(w_->context().selection().node, 1);
-    QCOMPARE(w_->context().selection().vertex, 7);
+    QCOMPARE(w_->context().selection().current().mesh, rigged.mesh_primitives[0][0]);
+    QCOMPARE(w_->context().selection().current().node, 1);
+    QCOMPARE(w_->context().selection().current().vertex, 7);
     QVERIFY(in_front(w_->docks().mesh));
     QVERIFY(w_->selection().selectedInstance() >= 0);
     // Indices: element 7 is in triangle 2.
@@ -202,17 +202,18 @@ void ValidationTests::pointersSelectNodesPrimitivesVerticesAndTextures() {
         QStringLiteral("/accessors/0"),
         QStringLiteral("Indices accessor element at index 7 has vertex index "
                        "99 that exceeds number of available vertices 3.")));
-    QCOMPARE(w_->context().selection().triangle, 2);
+    QCOMPARE(w_->context().selection().current().triangle, 2);
     // What the scene lacks selects nothing and says so.
     QVERIFY(!w_->selection().showPointer(QStringLiteral("/nodes/99")));
     QVERIFY(!w_->selection().showPointer(QStringLiteral("not a pointer")));
 
     QVERIFY(test::load(*w_, test::asset(QStringLiteral("BoxTextured"))));
     QVERIFY(w_->selection().showPointer(QStringLiteral("/images/0")));
-    QCOMPARE(w_->context().selection().texture, 0);
+    QCOMPARE(w_->context().selection().current().texture, 0);
     QVERIFY(in_front(w_->docks().textures));
     QVERIFY(w_->selection().showPointer(QStringLiteral("/meshes/0/primitives/0/indices")));
-    QCOMPARE(w_->context().selection().mesh, w_->context().scene()->mesh_primitives[0][0]);
+    QCOMPARE(w_->context().selection().current().mesh,
+             w_->context().scene()->mesh_primitives[0][0]);
     QVERIFY(in_front(w_->docks().mesh));
 }
 

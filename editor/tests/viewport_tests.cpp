@@ -163,7 +163,7 @@ void ViewportTests::highlightFollowsSelection() {
     // instance placed by a descendant, found here by walking the parents.
     QVERIFY(window_->selection().selectNodeNamed(QStringLiteral("instance grid")));
     const Scene& scene = *window_->context().scene();
-    const int grid = window_->context().selection().node;
+    const int grid = window_->context().selection().current().node;
     QCOMPARE(scene.nodes[std::size_t(grid)].mesh, -1);
     std::vector<std::uint32_t> expected;
     for (std::uint32_t i = 0; i < scene.instances.size(); ++i)
@@ -195,7 +195,7 @@ void ViewportTests::uncheckedNodeLeavesTheViewport() {
     // The checkbox, as a user unticks it: model -> context -> frame -> renderer.
     SceneTreeModel& tree = *window_->docks().sceneTree->model();
     QVERIFY(tree.setData(tree.indexOfNode(sphere), Qt::Unchecked, Qt::CheckStateRole));
-    QVERIFY(!window_->context().nodeVisible(sphere));
+    QVERIFY(!window_->context().visibility().nodeVisible(sphere));
     QVERIFY(test::next_frame(*window_));
     const auto mask = window_->frames().lastFrame().hiddenNodes;
     QVERIFY(mask && static_cast<std::size_t>(sphere) < mask->size() &&
@@ -216,7 +216,7 @@ void ViewportTests::gpuCullingAgreesWithCpu() {
     window_->views().setGpuCulling(true);
     for (int step = 0; step < 3; ++step) {
         window_->viewport()->camera().orbit(120.0f, 20.0f); // new frustum each step
-        Q_EMIT window_->viewport()->cameraChanged();
+        Q_EMIT window_->viewport()->input().cameraChanged();
         // The CPU pass is there at once; the GPU's answer comes from the render thread.
         QVERIFY(test::culling_monitor(*window_).history().latest());
         QTRY_VERIFY_WITH_TIMEOUT(
@@ -252,16 +252,16 @@ void ViewportTests::cullingDockShowsTheRenderersPasses() {
     QVERIFY(load(*window_, QStringLiteral("builtin:default")));
     if (!hasGpu()) QSKIP("no Vulkan device: nothing is rendered");
     // Full-size frames: moving frames drawn reduced on a slow device have no shadows.
-    window_->frames().renderer()->setInteractiveScaling(false);
-    const auto restore =
-        qScopeGuard([this] { window_->frames().renderer()->setInteractiveScaling(true); });
+    window_->frames().renderer()->setPacing({.interactiveScaling = false});
+    const auto restore = qScopeGuard(
+        [this] { window_->frames().renderer()->setPacing({.interactiveScaling = true}); });
     window_->viewport()->camera().orbit(30.0f, 0.0f); // the shadow cascades are redrawn
-    Q_EMIT window_->viewport()->cameraChanged();
+    Q_EMIT window_->viewport()->input().cameraChanged();
     // A frame's statistics are read when its frame slot comes round again.
     const CullingDock& dock = *window_->docks().culling;
     for (int frame = 0; frame < 6 && dock.passRows() < 2; ++frame) {
         window_->viewport()->camera().orbit(5.0f, 0.0f);
-        Q_EMIT window_->viewport()->cameraChanged();
+        Q_EMIT window_->viewport()->input().cameraChanged();
         QVERIFY(test::next_frame(*window_));
     }
     QVERIFY(dock.passRows() >= 2);
@@ -295,7 +295,7 @@ void ViewportTests::narrowViewportFramesTheHelmet() {
     QVERIFY2(e.x() <= 1.0 && e.y() <= 1.0, "re-framed for the narrow viewport");
     QVERIFY(std::max(e.x(), e.y()) > 0.79 && std::max(e.x(), e.y()) < 0.81); // tight
     // Once the user has moved the camera it stays; F frames for the aspect again.
-    window_->viewport()->setAutoFrame(false);
+    window_->viewport()->input().setAutoFrame(false);
     window_->viewport()->camera().dolly(6.0f);
     e = ndcExtent(window_->viewport()->camera().pose().spec(), bounds);
     QVERIFY(e.x() > 1.0); // dollied in: clipped, as the user asked

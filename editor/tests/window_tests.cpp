@@ -94,8 +94,8 @@ void WindowTests::selectionReachesEveryDock() {
     const QModelIndex node = tree->model()->index(0, 0, tree->model()->index(0, 0));
     QVERIFY(node.isValid());
     tree->setCurrentIndex(node);
-    QCOMPARE(window_->context().selection().node, 0);
-    const int mesh = window_->context().selection().mesh;
+    QCOMPARE(window_->context().selection().current().node, 0);
+    const int mesh = window_->context().selection().current().mesh;
     QVERIFY(mesh >= 0);
     QCOMPARE(window_->docks().mesh->vertices()->rowCount(),
              static_cast<int>(s.meshes[static_cast<std::size_t>(mesh)].vertices.size()));
@@ -104,7 +104,7 @@ void WindowTests::selectionReachesEveryDock() {
              s.materials[0].base_color.texture);
     // Jump to a vertex: the table scrolls there and the selection says so.
     window_->docks().mesh->jumpToVertex(12345);
-    QCOMPARE(window_->context().selection().vertex, 12345);
+    QCOMPARE(window_->context().selection().current().vertex, 12345);
     // Tangent comparison runs off the UI thread and fills the sortable column.
     QSignalSpy ready(window_->docks().mesh, &MeshDock::tangentErrorsReady);
     window_->docks().mesh->computeTangentErrors();
@@ -151,13 +151,13 @@ void WindowTests::pickingSelectsInTheTree() {
     QVERIFY(instance >= 0);
     const int node = static_cast<int>(
         window_->context().scene()->instances[static_cast<std::size_t>(instance)].node_id);
-    QCOMPARE(window_->context().selection().node, node);
-    QVERIFY(window_->context().selection().triangle >= 0);
+    QCOMPARE(window_->context().selection().current().node, node);
+    QVERIFY(window_->context().selection().current().triangle >= 0);
     const QModelIndex current = window_->docks().sceneTree->view()->currentIndex();
     QCOMPARE(current.data(SceneTreeModel::NodeRole).toInt(), node);
     QCOMPARE(window_->selection().pickAt(QPointF(0.99, 0.99)),
              -1); // a corner shows only background
-    QCOMPARE(window_->context().selection().node, -1);
+    QCOMPARE(window_->context().selection().current().node, -1);
 }
 
 void WindowTests::failedLoadKeepsTheScene() {

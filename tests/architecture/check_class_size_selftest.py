@@ -12,6 +12,7 @@ behaves, 1 otherwise.
 import sys
 from pathlib import Path
 
+from check_class_size import EXEMPT
 from selftest_tree import run_cases
 
 CHECKER = Path(__file__).with_name("check_class_size.py")
@@ -144,13 +145,6 @@ CASES = [
      {"engine/render/src/renderer_impl.h": IMPL}, ["--list"], 1,
      ["  3  26 Widget::Impl", "class Widget::Impl has 3 public member functions (limit 12), "
       "26 in all (limit 25)"]),
-    ("a class not yet split is held at its size: within passes, grown fails",
-     {"editor/src/viewport_window.h": QT.replace("Window", "ViewportWindow")}, [], 0,
-     ["0 class(es) over"]),
-    ("a class not yet split may not grow",
-     {"editor/src/viewport_window.h": QT.replace("Window", "ViewportWindow").replace(
-         "void p1();", "void p1();" + "".join(f" void g{i}();" for i in range(80)))}, [], 1,
-     ["class ViewportWindow grew to 93 public, 107 in all (held at "]),
     ("Qt: signals and public slots are public, private slots count in all, macros are not",
      {"editor/src/window.h": QT}, ["--list"], 1,
      [" 13  27 Window (editor/src/window.h:3)", "class Window has 13 public"]),
@@ -159,7 +153,24 @@ CASES = [
      ["class AtLimit has 12 public member functions (limit 12), 17 in all (limit 16)"]),
 ]
 
+# The ratchet, on a class the live EXEMPT table holds at no less than QT's 13 public and
+# 27 member functions (exemption goes by name): none left once every class is split.
+HELD = next((name for name, (public, total, _) in EXEMPT.items() if public >= 13 and total >= 27),
+            None)
+if HELD:
+    CASES += [
+        ("a class not yet split is held at its size: within passes, grown fails",
+         {"editor/src/held.h": QT.replace("Window", HELD)}, [], 0, ["0 class(es) over"]),
+        ("a class not yet split may not grow",
+         {"editor/src/held.h": QT.replace("Window", HELD).replace(
+             "void p1();", "void p1();" + "".join(f" void g{i}();" for i in range(80)))}, [], 1,
+         [f"class {HELD} grew to 93 public, 107 in all (held at "]),
+    ]
+
+
 def main():
+    if not HELD:
+        print("no class held in EXEMPT: the ratchet cases have nothing to hold")
     return run_cases("check_class_size", CHECKER, CASES)
 
 

@@ -1,13 +1,17 @@
 // The viewport's A/B comparison (issue 18 item 3): side A is the viewport's own
 // raster frame, side B the same camera with one thing changed (the ray tracer,
 // another debug view, another file), drawn by a second Renderer on the same
-// context that exists only while comparing (GpuViewport::present frees it after).
+// context that exists only while comparing (ViewportPresenter::present frees it after).
 // The engine's ComparisonFrame draws both and composites them into the swapchain.
+#include <sherpa/gpu/context.h>
 #include <sherpa/gpu/gpu_error.h>
+#include <sherpa/gpu/presenter.h>
 #include <sherpa/render/comparison.h>
 #include <sherpa/render/presented_frame.h>
+#include <sherpa/render/renderer.h>
 
-#include "gpu_viewport_impl.h"
+#include "viewport_presenter.h"
+#include "viewport_scene.h"
 
 #include <cmath>
 
@@ -49,39 +53,44 @@ DifferenceNumbers numbers(const gpu::ComparisonStats& s, float heat_max) {
 
 } // namespace
 
-bool GpuViewport::presentComparison(const ViewportRequest& frame, const gpu::FrameRequest& a_in,
-                                    float scale) {
-    Impl& impl = *impl_;
+bool ViewportPresenter::presentComparison(const ViewportRequest& frame,
+                                          const gpu::FrameRequest& a_in, float scale) {
     const ViewportComparison& c = frame.compare;
     gpu::FrameRequest a = a_in;
     // Rays have no derivatives: against the ray tracer both sides sample mip 0, so the
     // difference shows the data paths, not two LOD choices (the engine's exactness check).
     if (c.side == SideB::RayTraced) a.texture_lod = 0.0f;
     const gpu::FrameRequest b = side_b_settings(frame, a);
-    const SharedSession session = c.side == SideB::OtherFile ? frame.compareSession : impl.session;
+    const SharedSession session =
+        c.side == SideB::OtherFile ? frame.compareSession : scene_.session();
     if (!session) {
-        impl.refusal = QStringLiteral("side B has no scene (choose the other file first)");
+        refusal_ = QStringLiteral("side B has no scene (choose the other file first)");
         return false;
     }
     // Side B's renderer, loaded as this frame needs it (another scene, more streams,
     // acceleration structures for rays); reloaded only when one of those changes.
-    const bool all = impl.all_streams || gpu::needs_all_streams(b);
+    const bool all = scene_.allStreams() || gpu::needs_all_streams(b);
     const bool rays = b.renderer == gpu::RendererKind::RayTraced;
-    if (!impl.b.renderer || impl.b.session != session || impl.b.all_streams != all ||
-        impl.b.ray_tracing != rays) {
-        impl.b = {};
+    if (!b_.renderer || b_.session != session || b_.all_streams != all || b_.ray_tracing != rays) {
+        b_ = {};
         gpu::RendererOptions options;
-        options.ray_tracing = rays && impl.context->info().ray_tracing_enabled;
-        impl.b.renderer = std::make_unique<gpu::Renderer>(*impl.context, options);
+        options.ray_tracing = rays && context_.info().ray_tracing_enabled;
+        b_.renderer = std::make_unique<gpu::Renderer>(context_, options);
         // Lit as side A is: the same environment (frame_request() gives both sides the
         // same display settings).
-        impl.b.renderer->set_environment(impl.environment.get());
-        load_session(*impl.b.renderer, *session, all, impl.missing);
-        impl.b.session = session;
-        impl.b.all_streams = all;
-        impl.b.ray_tracing = rays;
+        b_.environment = scene_.environment();
+        b_.renderer->set_environment(b_.environment.get());
+        load_session(*b_.renderer, *session, all, scene_.missingTextures());
+        b_.session = session;
+        b_.all_streams = all;
+        b_.ray_tracing = rays;
     }
-    impl.b.renderer->set_hidden_nodes(c.side == SideB::OtherFile ? nullptr : frame.hiddenNodes);
+    // Side A's environment changed while comparing: side B's is made again from it.
+    if (b_.environment != scene_.environment()) {
+        b_.environment = scene_.environment();
+        b_.renderer->set_environment(b_.environment.get());
+    }
+    b_.renderer->set_hidden_nodes(c.side == SideB::OtherFile ? nullptr : frame.hiddenNodes);
     gpu::ComparisonSettings compare;
     compare.mode =
         c.mode == ViewportMode::Split ? gpu::CompareMode::Split : gpu::CompareMode::Difference;
@@ -90,14 +99,14 @@ bool GpuViewport::presentComparison(const ViewportRequest& frame, const gpu::Fra
     compare.heat_max = c.heat_max;
     std::optional<gpu::ComparisonFrame> pair;
     try {
-        pair.emplace(*impl.renderer, a, *impl.b.renderer, b, compare, scale);
+        pair.emplace(renderer_, a, *b_.renderer, b, compare, scale);
     } catch (const gpu::GpuError& e) { // refused before anything was recorded
-        impl.refusal = QString::fromUtf8(e.what());
+        refusal_ = QString::fromUtf8(e.what());
         return false;
     }
-    const bool shown = impl.presenter->present_frame(*pair);
-    impl.completed = pair->completed_stats_a();
-    impl.difference = numbers(pair->completed_comparison(), compare.heat_max);
+    const bool shown = presenter_->present_frame(*pair);
+    completed_ = pair->completed_stats_a();
+    difference_ = numbers(pair->completed_comparison(), compare.heat_max);
     return shown;
 }
 

@@ -2,7 +2,7 @@
 // The legends of render's views whose colours are classes (provenance, shadow-error):
 // drawn into the image's bottom-left corner with the engine's colours and the built-in
 // font, and printed, so that a picture passed on still says what its colours mean.
-#include <sherpa/gpu/debug_views.h>
+#include <sherpa/render/debug_views.h>
 
 #include <array>
 #include <cstdint>

@@ -1,6 +1,6 @@
 #include "view_catalog.h"
 
-#include <sherpa/gpu/debug_views.h>
+#include <sherpa/render/debug_views.h>
 
 namespace sherpa::editor {
 

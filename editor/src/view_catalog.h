@@ -1,6 +1,6 @@
 #pragma once
 // The debug views and overlays the renderer offers, read from the engine's one table
-// (sherpa/gpu/debug_views.h): names (settings, command line), ids the renderer
+// (sherpa/render/debug_views.h): names (settings, command line), ids the renderer
 // takes, and labels translated here in the table's context.
 #include <QCoreApplication>
 #include <QString>

@@ -75,13 +75,14 @@ void TranslationTests::initTestCase() {
     QProcess lupdate;
     // The View menu's labels live in the engine's view table, marked without Qt (the
     // same alias editor/CMakeLists.txt gives lupdate).
-    lupdate.start(QStringLiteral(SHERPA_LUPDATE),
-                  {QStringLiteral("-silent"), QStringLiteral("-locations"), QStringLiteral("none"),
-                   QStringLiteral("-tr-function-alias"),
-                   QStringLiteral("QT_TRANSLATE_NOOP+=SHERPA_TRANSLATE_NOOP"),
-                   QStringLiteral(SHERPA_SOURCE_DIR "/editor/src"),
-                   QStringLiteral(SHERPA_SOURCE_DIR "/engine/gpu/include/sherpa/gpu/debug_views.h"),
-                   QStringLiteral("-ts"), ts});
+    lupdate.start(
+        QStringLiteral(SHERPA_LUPDATE),
+        {QStringLiteral("-silent"), QStringLiteral("-locations"), QStringLiteral("none"),
+         QStringLiteral("-tr-function-alias"),
+         QStringLiteral("QT_TRANSLATE_NOOP+=SHERPA_TRANSLATE_NOOP"),
+         QStringLiteral(SHERPA_SOURCE_DIR "/editor/src"),
+         QStringLiteral(SHERPA_SOURCE_DIR "/engine/render/include/sherpa/render/debug_views.h"),
+         QStringLiteral("-ts"), ts});
     QVERIFY(lupdate.waitForFinished(120000));
     QCOMPARE(lupdate.exitCode(), 0);
     for (const Entry& e : read_ts(ts)) expected_.insert(e.context + QChar(0x1f) + e.source);

@@ -32,7 +32,7 @@
 #include "viewport_window.h"
 #include "window_test_support.h"
 
-#include <sherpa/gpu/debug_views.h>
+#include <sherpa/render/debug_views.h>
 
 using namespace sherpa;
 using namespace sherpa::editor;

@@ -12,7 +12,7 @@
 #include "cli/cli_run.h"
 #include "test_support.h"
 
-#include <sherpa/gpu/debug_views.h>
+#include <sherpa/render/debug_views.h>
 #include <sherpa/scene/scene_loader.h>
 #include <sherpa/texture/image.h>
 

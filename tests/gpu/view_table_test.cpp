@@ -1,4 +1,4 @@
-// The debug-view/overlay table (sherpa/gpu/debug_views.h) is the one source of the
+// The debug-view/overlay table (sherpa/render/debug_views.h) is the one source of the
 // views: the generated GLSL header must agree with it, the forward shader must
 // handle every view in it (a view added to the table but not to the shader's switch
 // falls through to lit shading: ForwardShaderHasACaseForEveryViewButLit fails), and
@@ -6,7 +6,7 @@
 #include "cli/cli_run.h"
 #include "gpu_test_support.h"
 
-#include <sherpa/gpu/debug_views.h>
+#include <sherpa/render/debug_views.h>
 #include <sherpa/render/frame_request.h>
 
 #include <fstream>

@@ -1,4 +1,4 @@
-#include <sherpa/gpu/debug_views.h>
+#include <sherpa/render/debug_views.h>
 #include <sherpa/render/shadow_error.h>
 
 #include <array>

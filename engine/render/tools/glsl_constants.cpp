@@ -4,7 +4,7 @@
 //
 // Each constant keeps the form (const uint or #define, literal spelling) its
 // hand-written copy had, so the compiled SPIR-V does not change.
-#include <sherpa/gpu/debug_views.h>
+#include <sherpa/render/debug_views.h>
 #include <sherpa/render/gpu_material_ext_structs.h>
 #include <sherpa/render/gpu_structs.h>
 #include <sherpa/scene/culling.h>

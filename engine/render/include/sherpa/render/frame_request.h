@@ -12,8 +12,8 @@
 
 #include <glm/glm.hpp>
 
-#include <sherpa/gpu/debug_views.h>
 #include <sherpa/render/camera.h>
+#include <sherpa/render/debug_views.h>
 #include <sherpa/render/environment.h>
 #include <sherpa/render/load_settings.h>
 #include <sherpa/scene/animation.h>

@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    const SimdLevel best = best_simd_level();
+    const core::SimdLevel best = core::best_simd_level();
     // The GPU path on whatever device the engine picks (lavapipe by default,
     // SHERPA_DEVICE=NVIDIA for a discrete GPU).
     std::unique_ptr<gpu::Context> gpu_context;
@@ -140,13 +140,14 @@ int main(int argc, char** argv) {
         struct Variant {
             const char* name;
             CullMethod method;
-            SimdLevel simd;
+            core::SimdLevel simd;
         };
-        const Variant variants[] = {{"sphere", CullMethod::Sphere, SimdLevel::Scalar},
-                                    {"pvertex scalar", CullMethod::PVertex, SimdLevel::Scalar},
-                                    {"pvertex avx2", CullMethod::PVertex, SimdLevel::Avx2},
-                                    {"pvertex avx512", CullMethod::PVertex, SimdLevel::Avx512},
-                                    {"exact", CullMethod::Exact, best}};
+        const Variant variants[] = {
+            {"sphere", CullMethod::Sphere, core::SimdLevel::Scalar},
+            {"pvertex scalar", CullMethod::PVertex, core::SimdLevel::Scalar},
+            {"pvertex avx2", CullMethod::PVertex, core::SimdLevel::Avx2},
+            {"pvertex avx512", CullMethod::PVertex, core::SimdLevel::Avx512},
+            {"exact", CullMethod::Exact, best}};
         for (const Variant& v : variants) {
             if (v.simd > best) continue;
             const double ns = median_ns_per_object(
@@ -169,9 +170,9 @@ int main(int argc, char** argv) {
                 repeat, n, [&] { cull_boxes(all, input.boxes, CullMethod::PVertex, best, out); });
             std::uint64_t visible = 0;
             for (std::uint8_t x : out) visible += x;
-            row(best == SimdLevel::Avx512 ? "pvertex avx512 all"
-                : best == SimdLevel::Avx2 ? "pvertex avx2 all"
-                                          : "pvertex scalar all",
+            row(best == core::SimdLevel::Avx512 ? "pvertex avx512 all"
+                : best == core::SimdLevel::Avx2 ? "pvertex avx2 all"
+                                                : "pvertex scalar all",
                 ns, -1, visible);
         }
         if (gpu_culler) {

@@ -81,7 +81,7 @@ struct Pairs {
 } // namespace
 
 int main(int argc, char** argv) {
-    keep_freed_memory_mapped();
+    core::keep_freed_memory_mapped();
     int frames = 5, repeats = 5;
     bool prefilter_only = false;
     gpu::EnvironmentOptions options;

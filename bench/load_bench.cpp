@@ -28,7 +28,8 @@ double read_all_ms(const fs::path& dir, std::uint64_t& bytes) {
     std::vector<std::uint8_t> buf;
     std::string error;
     for (const auto& e : fs::directory_iterator(dir))
-        if (e.is_regular_file() && sherpa::read_file(e.path(), buf, error)) bytes += buf.size();
+        if (e.is_regular_file() && sherpa::core::read_file(e.path(), buf, error))
+            bytes += buf.size();
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 

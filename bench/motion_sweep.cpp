@@ -20,11 +20,11 @@ namespace {
 
 struct Outcome {
     std::size_t frames = 0, non_finite = 0, outside = 0;
-    Aabb posed;
+    core::Aabb posed;
 };
 
 bool finite(const glm::mat4& m) {
-    return is_finite(m);
+    return core::is_finite(m);
 }
 
 Outcome sweep(const Scene& s) {
@@ -46,10 +46,11 @@ Outcome sweep(const Scene& s) {
                 if (s.nodes[n].mesh < 0) continue;
                 for (const auto& prim : s.primitives) {
                     if (prim.mesh != static_cast<std::uint32_t>(s.nodes[n].mesh)) continue;
-                    const Aabb box = culling_bounds(s, p, n, prim);
-                    if (box.valid()) o.non_finite += !is_finite(box.min) || !is_finite(box.max);
+                    const core::Aabb box = culling_bounds(s, p, n, prim);
+                    if (box.valid())
+                        o.non_finite += !core::is_finite(box.min) || !core::is_finite(box.max);
                     for (const glm::vec3& v : posed_positions(s, p, n, prim)) {
-                        if (!is_finite(v)) {
+                        if (!core::is_finite(v)) {
                             ++o.non_finite;
                             continue;
                         }

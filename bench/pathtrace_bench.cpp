@@ -57,7 +57,7 @@ void run(gpu::Renderer& renderer, Column& c, int frames) {
 } // namespace
 
 int main(int argc, char** argv) {
-    sherpa::keep_freed_memory_mapped(); // as sherpa-cli: lavapipe's blocks stay mapped
+    sherpa::core::keep_freed_memory_mapped(); // as sherpa-cli: lavapipe's blocks stay mapped
     int rounds = 4, frames = 4;
     std::uint32_t bounces = 8;
     bool no_bc = false;

@@ -71,7 +71,7 @@ std::vector<std::string> default_scenes() {
 
 int main(int argc, char** argv) {
     // What sherpa-cli and the editor do: lavapipe's per-frame blocks stay mapped.
-    sherpa::keep_freed_memory_mapped();
+    sherpa::core::keep_freed_memory_mapped();
     int frames = 20;
     bool csv = false, quick = false, lit_only = false, no_bc = false;
     gpu::FrameRequest lit;

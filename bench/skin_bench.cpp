@@ -190,7 +190,7 @@ void measure_rt(gpu::Context& context, const std::string& name, const Scene& s,
 } // namespace
 
 int main(int argc, char** argv) {
-    keep_freed_memory_mapped();
+    core::keep_freed_memory_mapped();
     int frames = 20, rounds = 3;
     std::uint32_t width = 1280, height = 720;
     bool rt = false;
@@ -264,7 +264,7 @@ int main(int argc, char** argv) {
         settings.pose = pose;
         // One camera for both, on the posed geometry (auto framing would frame each
         // scene's bounds as loaded: the moving one's are the bind pose's).
-        const Aabb posed = posed_scene_bounds(s, *pose).exact;
+        const core::Aabb posed = posed_scene_bounds(s, *pose).exact;
         const glm::vec3 c = posed.center();
         const float r = std::max(0.5f * glm::length(posed.extent()), 1e-3f);
         const glm::vec3 eye = c + glm::normalize(glm::vec3(0.35f, 0.3f, 1.0f)) * (2.2f * r);

@@ -217,7 +217,7 @@ int run_lab(Args args) {
     if (!o.chart.empty()) {
         const std::string svg = lab::report_svg(report);
         std::string error;
-        if (!write_file_atomic(
+        if (!core::write_file_atomic(
                 o.chart, std::span(reinterpret_cast<const std::uint8_t*>(svg.data()), svg.size()),
                 error)) {
             std::fprintf(stderr, "error: %s\n", error.c_str());

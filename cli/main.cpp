@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
     using namespace sherpa::cli;
     // A CPU Vulkan device frees and reallocates large blocks every frame: keep them mapped
     // (see heap_tuning.h for the measurements).
-    sherpa::keep_freed_memory_mapped();
+    sherpa::core::keep_freed_memory_mapped();
     std::vector<std::string_view> args(argv + 1, argv + argc);
     if (args.empty()) {
         std::fprintf(stderr, "error: no command given\nrun 'sherpa-cli --help' for usage\n");

@@ -113,8 +113,8 @@ void print_motion_text(const Scene& scene) {
 }
 
 void print_posed_text(const Scene& scene, const PosedReport& r) {
-    const Aabb& e = r.bounds.exact;
-    const Aabb& c = r.bounds.culling;
+    const core::Aabb& e = r.bounds.exact;
+    const core::Aabb& c = r.bounds.culling;
     std::printf("  pose: animation %d at t = %g s\n", r.animation, r.time);
     if (e.valid())
         std::printf("  posed bounds [%g %g %g] .. [%g %g %g]\n", e.min.x, e.min.y, e.min.z, e.max.x,

@@ -336,7 +336,7 @@ int run_render(Args args) {
             std::fprintf(stderr, "warning: %s\n", w.c_str());
         if (!report_path.empty()) {
             const std::string text = render_report_json(renderer, run).dump(2) + "\n";
-            if (!write_file_atomic(
+            if (!core::write_file_atomic(
                     std::string(report_path),
                     std::span<const std::uint8_t>(
                         reinterpret_cast<const std::uint8_t*>(text.data()), text.size()),

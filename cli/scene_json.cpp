@@ -12,7 +12,7 @@ namespace sherpa::cli {
 
 using nlohmann::json;
 
-json aabb_json(const Aabb& box) {
+json aabb_json(const core::Aabb& box) {
     if (!box.valid()) return json{{"min", nullptr}, {"max", nullptr}, {"empty", true}};
     return json{{"min", {box.min.x, box.min.y, box.min.z}},
                 {"max", {box.max.x, box.max.y, box.max.z}}};

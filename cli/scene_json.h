@@ -8,7 +8,7 @@
 
 namespace sherpa::cli {
 
-nlohmann::json aabb_json(const Aabb& box);
+nlohmann::json aabb_json(const core::Aabb& box);
 nlohmann::json usage_json(const Scene& scene, const UsageReport& report);
 // EXT_mesh_gpu_instancing: per instanced node its rows (in the file, drawn) and
 // accessors; totals, and the drawn instances (of the displayed scene) they make.

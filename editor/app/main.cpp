@@ -32,7 +32,7 @@ bool asks_for_help_or_version(int argc, char** argv) {
 
 int main(int argc, char** argv) {
     // A CPU Vulkan device frees and reallocates large blocks every frame: keep them mapped.
-    sherpa::keep_freed_memory_mapped();
+    sherpa::core::keep_freed_memory_mapped();
     if (asks_for_help_or_version(argc, argv)) {
         QCoreApplication core(argc, argv);
         name_application();

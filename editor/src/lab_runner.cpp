@@ -23,7 +23,7 @@ namespace sherpa::editor {
 // The UI hears at most kProgressHz updates a second, enough for a bar to move smoothly.
 struct LabRunner::Job {
     static constexpr int kProgressHz = 20;
-    CancelToken cancel;
+    core::CancelToken cancel;
     std::atomic<std::int64_t> next_progress_ns{0};
 
     // True when progress may be posted now (the first time, then every 1/kProgressHz s).

@@ -47,7 +47,7 @@ FramingOptions OrbitCamera::framingOptions() const {
     return options;
 }
 
-void OrbitCamera::frame(const Aabb& box) {
+void OrbitCamera::frame(const core::Aabb& box) {
     if (box.valid())
         pose_ = orbit_pose_from(frame_box_along(box, -pose_.forward(), framingOptions()), pose_);
 }

@@ -28,7 +28,7 @@ public:
 
     // Frames a box so it fills the view, keeping the viewing direction (Frame
     // selection): the engine's framing (sherpa/scene/framing.h) along it.
-    void frame(const Aabb& box);
+    void frame(const core::Aabb& box);
     // The engine's automatic view of the scene (on load and Frame all: frame_scene(),
     // its drawn vertices seen from the side of its first camera), exactly what
     // `sherpa-cli render --camera auto` shows at the same aspect and field of view.

@@ -9,7 +9,7 @@ namespace sherpa::editor {
 namespace {
 
 // Slab test; returns the entry distance or +inf when the ray misses the box.
-float ray_box(glm::vec3 o, glm::vec3 inv_d, const Aabb& box) {
+float ray_box(glm::vec3 o, glm::vec3 inv_d, const core::Aabb& box) {
     const glm::vec3 t0 = (box.min - o) * inv_d;
     const glm::vec3 t1 = (box.max - o) * inv_d;
     const glm::vec3 lo = glm::min(t0, t1), hi = glm::max(t0, t1);
@@ -69,7 +69,7 @@ PickHit pick(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
         const MeshInstance& inst = scene.instances[i];
         if (!inst.world_bounds.valid() || !visible(i)) continue;
         const Mesh& mesh = scene.meshes[inst.mesh_id];
-        Aabb box = inst.world_bounds;
+        core::Aabb box = inst.world_bounds;
         if (mesh.topology() != Topology::Triangles) {
             // Grown by the pick cone's radius there: a flat line's box has no thickness.
             const float r =

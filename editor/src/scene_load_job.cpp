@@ -24,7 +24,7 @@
 namespace sherpa::editor {
 
 struct SceneLoadJob::State {
-    CancelToken cancel;
+    core::CancelToken cancel;
     QElapsedTimer clock;
     // Where the worker is; report() posts a progress signal when it changes enough.
     std::atomic<int> step{static_cast<int>(LoadStep::Parse)}, done{0}, total{0};

@@ -249,7 +249,7 @@ void ViewController::frameSelection() {
     const Scene* scene = context_.scene();
     const int node = context_.selection().current().node;
     if (!scene || node < 0) return;
-    Aabb box;
+    core::Aabb box;
     for (const MeshInstance& inst : scene->instances)
         if (static_cast<int>(inst.node_id) == node) box.expand(inst.world_bounds);
     if (!box.valid()) box.expand(glm::vec3(scene->node_world[static_cast<std::size_t>(node)][3]));

@@ -271,7 +271,7 @@ void ModelTests::generatedTangentsAgreeWithRegeneration() {
 void ModelTests::frameKeepsTheBoxInView() {
     OrbitCamera cam;
     cam.setAspect(1.5f);
-    const Aabb box = Aabb::from_min_max({-3, -1, -2}, {5, 4, 1});
+    const core::Aabb box = core::Aabb::from_min_max({-3, -1, -2}, {5, 4, 1});
     cam.orbit(40, -25);
     cam.frame(box);
     const glm::mat4 vp = cam.pose().spec().view_projection();
@@ -297,12 +297,13 @@ void ModelTests::pickHitsTheInstanceUnderTheRay() {
     // Aim at the centre of a solid instance from outside the scene: it (or something in
     // front of it) must be hit, and the hit must lie on the ray inside that instance's box.
     for (std::size_t i = 0; i < s.instances.size(); i += 7) {
-        const Aabb& box = s.instances[i].world_bounds;
+        const core::Aabb& box = s.instances[i].world_bounds;
         const glm::vec3 dir = glm::normalize(box.center() - cam.pose().eye());
         const PickHit hit = pick(s, cam.pose().eye(), dir, [](std::size_t) { return true; });
         QVERIFY(hit);
         const glm::vec3 p = cam.pose().eye() + dir * hit.distance;
-        const Aabb& hit_box = s.instances[static_cast<std::size_t>(hit.instance)].world_bounds;
+        const core::Aabb& hit_box =
+            s.instances[static_cast<std::size_t>(hit.instance)].world_bounds;
         QVERIFY(glm::all(glm::greaterThanEqual(p, hit_box.min - 1e-3f)) &&
                 glm::all(glm::lessThanEqual(p, hit_box.max + 1e-3f)));
     }

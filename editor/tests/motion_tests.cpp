@@ -345,8 +345,8 @@ void MotionTests::windowPostsThePoseAndSelectedJoint() {
             const auto prim = std::find_if(
                 scene.primitives.begin(), scene.primitives.end(),
                 [&](const PrimitiveInfo& p) { return p.engine_mesh == int(inst.mesh_id); });
-            const Aabb expected_box = culling_bounds(scene, pose, inst.node_id, *prim);
-            const Aabb box = test::culling_monitor(*w).input().boxes.box(i);
+            const core::Aabb expected_box = culling_bounds(scene, pose, inst.node_id, *prim);
+            const core::Aabb box = test::culling_monitor(*w).input().boxes.box(i);
             QVERIFY(
                 glm::all(glm::lessThan(glm::abs(box.min - expected_box.min), glm::vec3(1e-5f))));
             QVERIFY(

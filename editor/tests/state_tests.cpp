@@ -230,7 +230,7 @@ void StateTests::poseTakesAGltfCamera() {
     placed.world = glm::translate(glm::mat4(1.0f), glm::vec3(0, 1, 10)) *
                    glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(0, 1, 0));
     scene.placed_cameras.push_back(placed);
-    scene.bounds = Aabb::from_min_max({-1, -1, -1}, {1, 1, 1});
+    scene.bounds = core::Aabb::from_min_max({-1, -1, -1}, {1, 1, 1});
     const OrbitPose before;
     QVERIFY(orbit_pose_at_camera(scene, 1, before).toString() == before.toString()); // no such
     const OrbitPose pose = orbit_pose_at_camera(scene, 0, before);

@@ -62,7 +62,7 @@ bool aspectFollows(const ViewportWindow& v) {
 }
 
 // The largest |x| and |y| in NDC of the box's corners seen by `camera`.
-QPointF ndcExtent(const CameraSpec& camera, const Aabb& box) {
+QPointF ndcExtent(const CameraSpec& camera, const core::Aabb& box) {
     QPointF out(0, 0);
     for (int i = 0; i < 8; ++i) {
         const glm::vec4 c((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
@@ -123,7 +123,7 @@ void ViewportTests::initTestCase() {
 
 void ViewportTests::framingFitsEveryAspect() {
     // Plain camera math: whatever the aspect, all 8 corners inside, and tight on one axis.
-    const Aabb box = Aabb::from_min_max({-0.94f, -0.9f, -0.82f}, {0.94f, 0.9f, 0.82f});
+    const core::Aabb box = core::Aabb::from_min_max({-0.94f, -0.9f, -0.82f}, {0.94f, 0.9f, 0.82f});
     for (float aspect : {0.2f, 0.5f, 1.0f, 1.78f, 4.0f}) {
         OrbitCamera cam;
         cam.setAspect(aspect);
@@ -313,7 +313,7 @@ void ViewportTests::framingIsTheEnginesOnLoadFrameAllAndSelection() {
     QVERIFY(load(*window_, test::asset(QStringLiteral("OrientationTest"))));
     ViewportWindow& vp = *window_->viewport();
     QTRY_VERIFY(aspectFollows(vp));
-    const Aabb bounds = window_->context().scene()->bounds;
+    const core::Aabb bounds = window_->context().scene()->bounds;
     auto expectAuto = [&](const char* when) {
         FramingOptions options;
         options.aspect = vp.camera().pose().spec().aspect;

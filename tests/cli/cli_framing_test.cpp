@@ -99,11 +99,11 @@ TEST(CliFraming, AutoFramesThePoseDrawn) {
     const sherpa::LoadResult r = sherpa::load_scene(rigged);
     ASSERT_TRUE(r) << r.error;
     const sherpa::Pose pose = sherpa::evaluate_pose(*r.scene, 0, 2.0);
-    const sherpa::Aabb posed = sherpa::framing_bounds(*r.scene, &pose);
-    const sherpa::Aabb exact = sherpa::posed_scene_bounds(*r.scene, pose).exact;
+    const sherpa::core::Aabb posed = sherpa::framing_bounds(*r.scene, &pose);
+    const sherpa::core::Aabb exact = sherpa::posed_scene_bounds(*r.scene, pose).exact;
     EXPECT_EQ(posed.min, exact.min);
     EXPECT_EQ(posed.max, exact.max);
-    sherpa::Aabb points;
+    sherpa::core::Aabb points;
     for (const glm::vec3& v : sherpa::framing_points(*r.scene, &pose)) points.expand(v);
     EXPECT_EQ(points.min, exact.min);
     EXPECT_EQ(points.max, exact.max);
@@ -115,7 +115,7 @@ TEST(CliFraming, AutoLooksFromTheSideOfTheFilesCamera) {
     const sherpa::LoadResult r = sherpa::load_scene(test::gltf_asset("Duck"));
     ASSERT_TRUE(r) << r.error;
     ASSERT_FALSE(r.scene->placed_cameras.empty());
-    const sherpa::Aabb drawn = sherpa::framing_bounds(*r.scene);
+    const sherpa::core::Aabb drawn = sherpa::framing_bounds(*r.scene);
     const glm::vec3 file_eye = glm::vec3(r.scene->placed_cameras[0].world[3]);
     sherpa::FramingOptions options;
     const sherpa::CameraSpec framed = sherpa::frame_scene(*r.scene, nullptr, options);
@@ -131,14 +131,14 @@ TEST(CliFraming, AutoLooksFromTheSideOfTheFilesCamera) {
 TEST(CliFraming, GroundPlaneDoesNotCount) {
     const sherpa::LoadResult r = sherpa::load_scene("builtin:default");
     ASSERT_TRUE(r) << r.error;
-    const sherpa::Aabb framed = sherpa::framing_bounds(*r.scene);
+    const sherpa::core::Aabb framed = sherpa::framing_bounds(*r.scene);
     ASSERT_TRUE(framed.valid());
     EXPECT_GT(r.scene->bounds.extent().x, 39.0f);
     // The objects and the instance grid behind them: about 9.5 x 15 m.
     EXPECT_LT(framed.extent().x, 12.0f);
     EXPECT_LT(framed.extent().z, 20.0f);
     EXPECT_GT(framed.extent().x, 8.0f);
-    sherpa::Aabb points;
+    sherpa::core::Aabb points;
     for (const glm::vec3& v : sherpa::framing_points(*r.scene)) points.expand(v);
     EXPECT_LT(points.extent().x, 12.0f);
     EXPECT_GT(points.extent().x, 8.0f);

@@ -24,7 +24,7 @@ bool BasisTarget::init(const TargetConfig& config, std::string& error) {
     std::sort(files.begin(), files.end()); // the same seed numbering on every machine
     for (const fs::path& file : files) {
         std::vector<std::uint8_t> bytes;
-        if (!read_file(file, bytes, error)) return false;
+        if (!core::read_file(file, bytes, error)) return false;
         // A seed the transcoder refuses would make every case a refusal: say so.
         tex::BasisTexture texture;
         if (!tex::transcode_ktx2_basis(bytes, texture, error)) {

@@ -35,7 +35,7 @@ bool CompressedTarget::init(const TargetConfig& config, std::string& error) {
     for (const fs::path& file : files) {
         Seed seed;
         seed.source = file;
-        if (!read_file(file, seed.text, error)) return false;
+        if (!core::read_file(file, seed.text, error)) return false;
         std::string text;
         std::vector<std::uint8_t> bin;
         if (!split_glb(seed.text, text, bin)) {

@@ -19,7 +19,7 @@ namespace {
 std::vector<std::uint8_t> read_all(const fs::path& path) {
     std::vector<std::uint8_t> bytes;
     std::string error;
-    if (!read_file(path, bytes, error)) bytes.clear();
+    if (!core::read_file(path, bytes, error)) bytes.clear();
     return bytes;
 }
 

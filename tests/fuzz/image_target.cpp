@@ -28,7 +28,7 @@ bool ImageTarget::init(const TargetConfig& config, std::string& error) {
     // threads in the parent would leave the children a pool without threads.
     for (const fs::path& file : files) {
         Seed seed{file.extension().string(), {}};
-        if (!read_file(file, seed.bytes, error)) return false;
+        if (!core::read_file(file, seed.bytes, error)) return false;
         seeds_.push_back(std::move(seed));
     }
     if (seeds_.empty()) {

@@ -65,7 +65,7 @@ bool MeshoptCodecTarget::init(const TargetConfig& config, std::string& error) {
     for (const fs::path& file : files) {
         std::vector<std::uint8_t> glb, bin;
         std::string text;
-        if (!::sherpa::read_file(file, glb, error)) return false;
+        if (!::sherpa::core::read_file(file, glb, error)) return false;
         if (!split_glb(glb, text, bin)) continue;
         const json doc = json::parse(text, nullptr, false);
         if (!doc.is_object()) continue;

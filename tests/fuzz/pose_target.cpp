@@ -56,7 +56,7 @@ float value(Rng& rng, bool& tame) {
     }
 }
 
-bool overflows(const Aabb& b) {
+bool overflows(const core::Aabb& b) {
     return b.valid() && box_is_invalid(b.min, b.max);
 }
 
@@ -249,7 +249,7 @@ std::optional<std::string> PoseTarget::run() {
     if (overflows(b.exact) || overflows(b.culling))
         return "posed_scene_bounds returned bounds that are not finite";
     const std::vector<std::uint32_t> overflow = posed_overflow_nodes(s, pose);
-    const std::vector<Aabb> boxes = instance_culling_bounds(s, pose);
+    const std::vector<core::Aabb> boxes = instance_culling_bounds(s, pose);
     for (std::size_t i = 0; i < boxes.size(); ++i)
         if (overflows(boxes[i]) &&
             std::find(overflow.begin(), overflow.end(), s.instances[i].node_id) == overflow.end())

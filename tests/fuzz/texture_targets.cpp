@@ -93,7 +93,7 @@ bool CacheTarget::init(const TargetConfig& config, std::string& error) {
         }
         e.texture = stored.texture;
         std::string read_error;
-        if (!read_file(cache_->file_for(e.key), e.bytes, read_error)) {
+        if (!core::read_file(cache_->file_for(e.key), e.bytes, read_error)) {
             error = read_error;
             return false;
         }

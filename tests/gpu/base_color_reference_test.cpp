@@ -42,7 +42,7 @@ struct Camera {
 };
 
 // Looks at the bounds' centre from the front-right-above, far enough to see it all.
-Camera fixed_camera(const sherpa::Aabb& bounds) {
+Camera fixed_camera(const sherpa::core::Aabb& bounds) {
     const glm::vec3 centre = 0.5f * (bounds.min + bounds.max);
     const float radius = 0.5f * glm::length(bounds.max - bounds.min);
     Camera c;

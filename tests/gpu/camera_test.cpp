@@ -61,7 +61,7 @@ TEST(ReverseZTest, NearMapsToOneAndInfinityToZero) {
 
 TEST(AutoFrameTest, EveryBoundsCornerIsInsideTheFrustum) {
     Scene scene;
-    scene.bounds = Aabb::from_min_max(glm::vec3(-3, 0, -1), glm::vec3(5, 2, 1));
+    scene.bounds = core::Aabb::from_min_max(glm::vec3(-3, 0, -1), glm::vec3(5, 2, 1));
     const gpu::CameraView v = gpu::resolve_camera(CameraSpec{}, scene, 16.0f / 9.0f);
     for (int i = 0; i < 8; ++i) {
         const glm::vec3 p{(i & 1) ? 5.0f : -3.0f, (i & 2) ? 2.0f : 0.0f, (i & 4) ? 1.0f : -1.0f};

@@ -13,16 +13,16 @@
 namespace sherpa::test {
 namespace {
 
-glm::vec3 corner(const Aabb& b, int i) {
+glm::vec3 corner(const core::Aabb& b, int i) {
     return {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
 }
 
 // Distance from p to the box (0 inside).
-float distance_to_box(const Aabb& b, glm::vec3 p) {
+float distance_to_box(const core::Aabb& b, glm::vec3 p) {
     return glm::length(glm::max(glm::max(b.min - p, p - b.max), glm::vec3(0.0f)));
 }
 
-void expect_framed(const Aabb& b, const gpu::CameraView& v, const std::string& what) {
+void expect_framed(const core::Aabb& b, const gpu::CameraView& v, const std::string& what) {
     const glm::mat4 vp = v.proj * v.view;
     float widest = 0.0f; // the largest |x| or |y| of a corner in NDC
     for (int i = 0; i < 8; ++i) {
@@ -59,10 +59,12 @@ TEST(AutoFramingTest, EverySampleModelIsInViewFromOutsideAndAbove) {
 
 TEST(AutoFramingTest, LooksAtTheThinnerSideAsTheFrontFromThreeQuartersAbove) {
     // Wide across X (shoulders), thin along Z: the front is +Z.
-    const glm::vec3 z_front = auto_view_direction(Aabb::from_min_max({-1, 0, -0.2f}, {1, 2, 0.2f}));
+    const glm::vec3 z_front =
+        auto_view_direction(core::Aabb::from_min_max({-1, 0, -0.2f}, {1, 2, 0.2f}));
     EXPECT_GT(z_front.z, std::abs(z_front.x));
     // Thin along X: the model faces +X and is not seen in profile.
-    const glm::vec3 x_front = auto_view_direction(Aabb::from_min_max({-0.2f, 0, -1}, {0.2f, 2, 1}));
+    const glm::vec3 x_front =
+        auto_view_direction(core::Aabb::from_min_max({-0.2f, 0, -1}, {0.2f, 2, 1}));
     EXPECT_GT(x_front.x, std::abs(x_front.z));
     for (glm::vec3 d : {z_front, x_front}) {
         // Raised (elevation 20..35 degrees) and off the axis (a 3/4 view: both horizontal
@@ -74,13 +76,13 @@ TEST(AutoFramingTest, LooksAtTheThinnerSideAsTheFrontFromThreeQuartersAbove) {
     }
     // A hint wins over the extents.
     const glm::vec3 hinted =
-        auto_view_direction(Aabb::from_min_max({-1, 0, -0.2f}, {1, 2, 0.2f}), {-1, 0, 0});
+        auto_view_direction(core::Aabb::from_min_max({-1, 0, -0.2f}, {1, 2, 0.2f}), {-1, 0, 0});
     EXPECT_LT(hinted.x, -std::abs(hinted.z));
 }
 
 TEST(AutoFramingTest, FramingAlongAGivenDirectionKeepsItAndFits) {
     // What the editor's Frame selection does: keep the viewing direction.
-    const Aabb box = Aabb::from_min_max({-3, -1, -2}, {5, 4, 1});
+    const core::Aabb box = core::Aabb::from_min_max({-3, -1, -2}, {5, 4, 1});
     const glm::vec3 to_eye = glm::normalize(glm::vec3(-1.0f, -0.8f, 2.0f));
     FramingOptions options;
     options.aspect = 1.5f;
@@ -139,7 +141,7 @@ TEST(AutoFramingTest, PointsFillTheTighterSideAndAreCentred) {
             EXPECT_NEAR(lo_y, -hi_y, 1e-4f) << what;
             // Filled, unless the nearest point decides: looking straight down the tall
             // stick, its top is as close to the eye as the margin allows.
-            Aabb box;
+            core::Aabb box;
             for (const glm::vec3& p : points) box.expand(p);
             const float margin = options.margin * 0.5f * glm::length(box.extent());
             if (std::abs(nearest - margin) > 1e-3f * margin)
@@ -155,8 +157,8 @@ TEST(AutoFramingTest, PointsFillTheTighterSideAndAreCentred) {
 TEST(AutoFramingTest, NoFinitePointsFrameTheUnitCube) {
     const std::vector<glm::vec3> none{glm::vec3(NAN), glm::vec3(INFINITY, 0.0f, 0.0f)};
     const CameraSpec s = frame_points_along(none, {0, 0, 1}, FramingOptions{});
-    EXPECT_TRUE(is_finite(s.eye));
-    EXPECT_TRUE(is_finite(s.target));
+    EXPECT_TRUE(core::is_finite(s.eye));
+    EXPECT_TRUE(core::is_finite(s.target));
     EXPECT_GT(glm::length(s.eye - s.target), 1.0f);
     const CameraSpec empty = frame_points_along({}, {0, 0, 1}, FramingOptions{});
     EXPECT_EQ(empty.eye, s.eye);

@@ -25,8 +25,8 @@ protected:
         }
         return out;
     }
-    static std::vector<Aabb> bounds(const Scene& s) {
-        std::vector<Aabb> b;
+    static std::vector<core::Aabb> bounds(const Scene& s) {
+        std::vector<core::Aabb> b;
         for (const auto& i : s.instances) b.push_back(i.world_bounds);
         return b;
     }
@@ -75,7 +75,7 @@ TEST_F(GpuCullingTest, AgreesWithTheCpuPathForEveryMethod) {
         const Frustum f = frustum_from_view_projection(c.view_projection());
         for (CullMethod m : {CullMethod::Sphere, CullMethod::PVertex, CullMethod::Exact}) {
             std::vector<std::uint8_t> cpu(input.boxes.size());
-            const CullCounts counts = cull_boxes(f, input.boxes, m, SimdLevel::Avx512, cpu);
+            const CullCounts counts = cull_boxes(f, input.boxes, m, core::SimdLevel::Avx512, cpu);
             const gpu::GpuCullReadback gpu_result = culler.run(f, m);
             std::size_t differences = 0, gpu_visible = 0;
             for (std::size_t k = 0; k < gpu_result.visible.size(); ++k) {
@@ -140,8 +140,8 @@ TEST_F(GpuCullingTest, InvalidBoxesAreKeptLikeOnTheCpu) {
     ASSERT_TRUE(scene);
     ScenePasses passes = build_mesh_passes(*scene);
     auto b = bounds(*scene);
-    b[0] = Aabb::from_min_max({NAN, 0, 0}, {1, 1, 1});
-    b[1] = Aabb::from_min_max({5, 5, 5}, {-5, -5, -5});
+    b[0] = core::Aabb::from_min_max({NAN, 0, 0}, {1, 1, 1});
+    b[1] = core::Aabb::from_min_max({5, 5, 5}, {-5, -5, -5});
     gpu::GpuCuller culler(context(), renderer().resources());
     culler.build(passes.forward, b, identity(b.size()), mesh_ranges(*scene));
     CameraSpec c;

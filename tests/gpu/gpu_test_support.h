@@ -66,7 +66,7 @@ struct GpuEnvironment {
     std::unique_ptr<gpu::Context> context;
     std::unique_ptr<gpu::Renderer> renderer;
     GpuEnvironment() {
-        keep_freed_memory_mapped(); // as every application does, before any device exists
+        core::keep_freed_memory_mapped(); // as every application does, before any device exists
         gpu::ContextOptions options;
         options.validation = true; // every GPU test runs under the Khronos layer
         context = std::make_unique<gpu::Context>(options);

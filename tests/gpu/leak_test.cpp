@@ -52,7 +52,7 @@ long minor_page_faults() {
 }
 
 // On a CPU device the rasterizer's per-frame memory comes from this process's heap;
-// the applications keep it mapped (sherpa::keep_freed_memory_mapped(), called first
+// the applications keep it mapped (sherpa::core::keep_freed_memory_mapped(), called first
 // thing in sherpa-cli, the editor and sherpa-bench-render, and by GpuEnvironment
 // before it makes the device: called after that it does not help) instead of
 // letting every frame fault it in again. Without that, 2CylinderEngine (many draws)

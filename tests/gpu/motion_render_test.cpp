@@ -17,7 +17,7 @@ namespace sherpa::test {
 namespace {
 
 // A camera looking at `box` from the front, a little above, the box filling the view.
-gpu::CameraSpec camera_on(const Aabb& box) {
+gpu::CameraSpec camera_on(const core::Aabb& box) {
     const glm::vec3 c = box.center();
     const float r = std::max(0.5f * glm::length(box.extent()), 1e-3f);
     const glm::vec3 eye = c + glm::normalize(glm::vec3(0.35f, 0.3f, 1.0f)) * (2.2f * r);
@@ -100,10 +100,10 @@ TEST_F(MotionRenderTest, CullingNeverRemovesAMovingInstanceFromTheImage) {
                 s.cache_shadows = false;
                 // Where things are now: all of the posed bounds, and the top tenth of
                 // them alone (e.g. BoxAnimated's box risen far above its bounds as loaded).
-                const Aabb posed = posed_scene_bounds(*scene, *pose).exact;
-                Aabb top = posed;
+                const core::Aabb posed = posed_scene_bounds(*scene, *pose).exact;
+                core::Aabb top = posed;
                 top.min.y = posed.max.y - 0.1f * (posed.max.y - posed.min.y);
-                for (const Aabb& look : {posed, top}) {
+                for (const core::Aabb& look : {posed, top}) {
                     s.camera = camera_on(look);
                     s.cull = gpu::CullPath::None;
                     s.cull_check = false;

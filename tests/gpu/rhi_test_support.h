@@ -20,7 +20,7 @@ inline void expect_no_validation_since(const gpu::Context& context, std::size_t 
 
 inline gpu::Context& rhi_context() {
     static const std::unique_ptr<gpu::Context> context = [] {
-        keep_freed_memory_mapped(); // as every application does, before any device exists
+        core::keep_freed_memory_mapped(); // as every application does, before any device exists
         gpu::ContextOptions options;
         options.validation = true; // every GPU test runs under the Khronos layer
         return std::make_unique<gpu::Context>(options);

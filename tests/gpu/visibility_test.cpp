@@ -177,7 +177,7 @@ TEST_F(Visibility, HiddenSkinnedMeshLeavesPosedFramesOnEveryPathAndTheRays) {
         std::make_shared<const Pose>(evaluate_pose(*scene, 0, 0.37 * scene->animations[0].end));
     gpu::FrameRequest s;
     s.width = s.height = kSize;
-    const Aabb b = scene->bounds;
+    const core::Aabb b = scene->bounds;
     const glm::vec3 eye = b.center() + glm::vec3(0.0f, 0.0f, 2.5f * glm::length(b.extent()));
     std::string error;
     ASSERT_TRUE(gpu::parse_camera_spec(

@@ -63,7 +63,7 @@ TEST(LabTangents, FailuresNameThePrimitiveAndTheCause) {
 
 TEST(LabFamilies, CancelStopsWithNoMethodsAndProgressReachesTheEnd) {
     const Scene scene = test::scene_of({test::mirrored_strip(), test::mirrored_strip()});
-    CancelToken token;
+    core::CancelToken token;
     token.cancel();
     lab::RunControl cancelled;
     cancelled.cancel = &token;
@@ -92,17 +92,17 @@ TEST(LabFamilies, CancelStopsWithNoMethodsAndProgressReachesTheEnd) {
 // means |x| <= -z, |y| <= -z, -10 <= z <= -1.
 Scene cull_scene() {
     Scene s = test::scene_of({test::mirrored_strip()});
-    const Aabb boxes[] = {
-        Aabb::from_min_max({-0.5f, -0.5f, -5.5f}, {0.5f, 0.5f, -4.5f}), // in view
-        Aabb::from_min_max({-0.5f, -0.5f, 4.5f}, {0.5f, 0.5f, 5.5f}),   // behind
+    const core::Aabb boxes[] = {
+        core::Aabb::from_min_max({-0.5f, -0.5f, -5.5f}, {0.5f, 0.5f, -4.5f}), // in view
+        core::Aabb::from_min_max({-0.5f, -0.5f, 4.5f}, {0.5f, 0.5f, 5.5f}),   // behind
         // Outside the right plane by 0.1 at its nearest corner; its bounding sphere
         // (radius 1.5, centre 1.13 outside) reaches in: a sphere false positive only.
-        Aabb::from_min_max({10.6f, -1.0f, -10.5f}, {12.6f, 1.0f, -9.5f}),
+        core::Aabb::from_min_max({10.6f, -1.0f, -10.5f}, {12.6f, 1.0f, -9.5f}),
         // Beyond the right plane wherever it is in front of the far plane, but not wholly
         // outside either plane: kept by sphere and p-vertex, culled by the exact test.
-        Aabb::from_min_max({10.5f, -1.0f, -12.0f}, {20.0f, 1.0f, -9.0f})};
+        core::Aabb::from_min_max({10.5f, -1.0f, -12.0f}, {20.0f, 1.0f, -9.0f})};
     s.instances.clear();
-    for (const Aabb& b : boxes) {
+    for (const core::Aabb& b : boxes) {
         MeshInstance inst;
         inst.world_bounds = b;
         s.instances.push_back(inst);
@@ -147,7 +147,7 @@ TEST(LabCulling, GpuAgreesWithPVertexUnderValidation) {
 }
 
 TEST(LabCulling, DefaultPathSeesEverythingFromOutsideAndHalfFromInside) {
-    const Aabb box = Aabb::from_min_max(glm::vec3(-1), glm::vec3(1));
+    const core::Aabb box = core::Aabb::from_min_max(glm::vec3(-1), glm::vec3(1));
     const std::vector<CameraSpec> path = lab::camera_path(box, 8);
     ASSERT_EQ(path.size(), 8u);
     for (std::size_t i = 0; i < 4; ++i) EXPECT_GT(glm::length(path[i].eye), std::sqrt(3.0f));

@@ -227,7 +227,7 @@ TEST(LabLighting, MethodListAndConvergenceSeries) {
 TEST(LabLighting, CancelledBeforeItStartsReturnsNoMethods) {
     auto scene = sphere_row(1.0f);
     ASSERT_TRUE(scene);
-    CancelToken cancel;
+    core::CancelToken cancel;
     cancel.cancel();
     lab::RunControl control;
     control.cancel = &cancel;
@@ -242,7 +242,7 @@ TEST(LabLighting, CancelDuringTheReferenceStopsAtTheNextLaunch) {
     ASSERT_TRUE(scene);
     lab::LightingFamilyOptions o = tiny(nullptr);
     o.reference_spp = 256; // 64 launches: far more than the few it may take to stop
-    CancelToken cancel;
+    core::CancelToken cancel;
     std::size_t calls_after_cancel = 0;
     lab::RunControl control;
     control.cancel = &cancel;

@@ -24,7 +24,7 @@ struct Half {
 
 // Feasibility of box ∩ frustum with every constraint shifted by `slack`
 // (positive slack loosens, negative tightens).
-bool reference_feasible(const glm::mat4& vp, const Aabb& box, double slack) {
+bool reference_feasible(const glm::mat4& vp, const core::Aabb& box, double slack) {
     std::vector<Half> hs;
     auto row = [&](int r) { return glm::dvec4(vp[0][r], vp[1][r], vp[2][r], vp[3][r]); };
     const glm::dvec4 raw[6] = {row(3) + row(0), row(3) - row(0), row(3) + row(1),
@@ -83,7 +83,7 @@ RandomCase random_camera(std::mt19937& rng) {
     return {c.view_projection(), c.eye};
 }
 
-Aabb random_box(std::mt19937& rng, glm::vec3 eye) {
+core::Aabb random_box(std::mt19937& rng, glm::vec3 eye) {
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     const int kind = static_cast<int>(rng() % 10);
     glm::vec3 c = glm::vec3(u(rng), u(rng), u(rng)) * 40.0f;
@@ -94,7 +94,7 @@ Aabb random_box(std::mt19937& rng, glm::vec3 eye) {
     glm::vec3 half =
         glm::vec3(0.5f + 0.5f * u(rng), 0.5f + 0.5f * u(rng), 0.5f + 0.5f * u(rng)) * size;
     if (kind == 3) half[rng() % 3] = 0.0f; // flat
-    return Aabb::from_min_max(c - half, c + half);
+    return core::Aabb::from_min_max(c - half, c + half);
 }
 
 TEST(Culling, EveryMethodAgreesWithTheBruteForceReference) {
@@ -104,7 +104,7 @@ TEST(Culling, EveryMethodAgreesWithTheBruteForceReference) {
     for (int cam = 0; cam < 60; ++cam) {
         const RandomCase rc = random_camera(rng);
         const Frustum f = frustum_from_view_projection(rc.vp);
-        std::vector<Aabb> boxes;
+        std::vector<core::Aabb> boxes;
         for (int b = 0; b < 150; ++b) boxes.push_back(random_box(rng, rc.eye));
         BoxesSoA soa;
         soa.assign(boxes);
@@ -112,7 +112,7 @@ TEST(Culling, EveryMethodAgreesWithTheBruteForceReference) {
         for (CullMethod m : {CullMethod::Sphere, CullMethod::PVertex, CullMethod::Exact}) {
             auto& out = results[static_cast<int>(m)];
             out.resize(boxes.size());
-            cull_boxes(f, soa, m, SimdLevel::Avx512, out);
+            cull_boxes(f, soa, m, core::SimdLevel::Avx512, out);
         }
         for (std::size_t i = 0; i < boxes.size(); ++i) {
             const double scale = 1e-5 * std::max({1.0, double(glm::length(boxes[i].max)),
@@ -153,7 +153,8 @@ TEST(Culling, PVertexKeepsBoxesOutsideAFrustumCornerButExactDropsThem) {
     int found = 0;
     for (int i = 0; i < 20000 && found < 20; ++i) {
         const glm::vec3 centre = glm::vec3(u(rng), u(rng), u(rng)) * 30.0f;
-        const Aabb box = Aabb::from_min_max(centre - glm::vec3(1.5f), centre + glm::vec3(1.5f));
+        const core::Aabb box =
+            core::Aabb::from_min_max(centre - glm::vec3(1.5f), centre + glm::vec3(1.5f));
         if (!pvertex_visible(f, box) || reference_feasible(c.view_projection(), box, 1e-3))
             continue;
         ++found;
@@ -169,15 +170,17 @@ TEST(Culling, InvalidBoxesAreReportedAndKept) {
     c.eye = {0, 0, 10};
     c.target = {0, 0, 0};
     const Frustum f = frustum_from_view_projection(c.view_projection());
-    std::vector<Aabb> boxes = {Aabb::from_min_max({1000, 0, 0}, {1001, 1, 1}),  // culled
-                               Aabb::from_min_max({NAN, 0, 0}, {1, 1, 1}),      // NaN
-                               Aabb::from_min_max({0, 0, 0}, {INFINITY, 1, 1}), // Inf
-                               Aabb::from_min_max({5000, 1, 1}, {4000, 0, 0}),  // inverted
-                               Aabb::empty()};                                  // never set
+    std::vector<core::Aabb> boxes = {
+        core::Aabb::from_min_max({1000, 0, 0}, {1001, 1, 1}),  // culled
+        core::Aabb::from_min_max({NAN, 0, 0}, {1, 1, 1}),      // NaN
+        core::Aabb::from_min_max({0, 0, 0}, {INFINITY, 1, 1}), // Inf
+        core::Aabb::from_min_max({5000, 1, 1}, {4000, 0, 0}),  // inverted
+        core::Aabb::empty()};                                  // never set
     BoxesSoA soa;
     soa.assign(boxes);
     for (CullMethod m : {CullMethod::Sphere, CullMethod::PVertex, CullMethod::Exact})
-        for (SimdLevel s : {SimdLevel::Scalar, SimdLevel::Avx2, SimdLevel::Avx512}) {
+        for (core::SimdLevel s :
+             {core::SimdLevel::Scalar, core::SimdLevel::Avx2, core::SimdLevel::Avx512}) {
             std::vector<std::uint8_t> vis(boxes.size());
             const CullCounts counts = cull_boxes(f, soa, m, s, vis);
             EXPECT_EQ(counts.invalid, 4u);
@@ -191,13 +194,13 @@ TEST(Culling, FrustumPlanesForInfiniteAndFiniteReverseZ) {
     c.target = {0, 0, -1};
     Frustum inf = frustum_from_view_projection(c.view_projection());
     EXPECT_EQ(inf.plane_count, 5u);
-    EXPECT_TRUE(pvertex_visible(inf, Aabb::from_min_max({-1, -1, -1e6f}, {1, 1, -1e6f + 1})));
-    EXPECT_FALSE(pvertex_visible(inf, Aabb::from_min_max({-1, -1, 1}, {1, 1, 2})))
+    EXPECT_TRUE(pvertex_visible(inf, core::Aabb::from_min_max({-1, -1, -1e6f}, {1, 1, -1e6f + 1})));
+    EXPECT_FALSE(pvertex_visible(inf, core::Aabb::from_min_max({-1, -1, 1}, {1, 1, 2})))
         << "behind the eye";
     c.far_plane = 100.0f;
     Frustum fin = frustum_from_view_projection(c.view_projection());
     EXPECT_EQ(fin.plane_count, 6u);
-    EXPECT_FALSE(pvertex_visible(fin, Aabb::from_min_max({-1, -1, -300}, {1, 1, -200})));
+    EXPECT_FALSE(pvertex_visible(fin, core::Aabb::from_min_max({-1, -1, -300}, {1, 1, -200})));
     for (std::uint32_t i = 0; i < fin.plane_count; ++i)
         EXPECT_NEAR(glm::length(fin.planes[i].normal), 1.0f, 1e-5f);
     EXPECT_TRUE(frustum_from_view_projection(glm::mat4(NAN)).empty);
@@ -212,8 +215,8 @@ TEST(Culling, SimdPathsMatchScalarOnTheGrid) {
     ASSERT_TRUE(parse_camera_spec("eye=20,15,40:target=0,0,0:fov=50", c, error)) << error;
     const Frustum f = frustum_from_view_projection(c.view_projection());
     std::vector<std::uint8_t> scalar(boxes.size()), simd(boxes.size());
-    cull_boxes(f, boxes, CullMethod::PVertex, SimdLevel::Scalar, scalar);
-    for (SimdLevel s : {SimdLevel::Avx2, SimdLevel::Avx512})
+    cull_boxes(f, boxes, CullMethod::PVertex, core::SimdLevel::Scalar, scalar);
+    for (core::SimdLevel s : {core::SimdLevel::Avx2, core::SimdLevel::Avx512})
         for (int threads : {1, 2}) {
             cull_boxes(f, boxes, CullMethod::PVertex, s, simd, threads);
             EXPECT_EQ(scalar, simd) << to_string(s) << " threads " << threads;
@@ -226,27 +229,27 @@ TEST(Culling, SimdPathsMatchScalarOnTheGrid) {
 // blocks), boxes straddling planes, invalid ones, sizes that end in a partial block,
 // one thread and two.
 TEST(Culling, BlockDecisionsEqualBoxByBoxResults) {
-    if (best_simd_level() < SimdLevel::Avx512) GTEST_SKIP() << "no AVX-512 here";
+    if (core::best_simd_level() < core::SimdLevel::Avx512) GTEST_SKIP() << "no AVX-512 here";
     std::mt19937 rng(777);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     std::uint64_t whole_in = 0, whole_out = 0, mixed = 0;
     for (int cam = 0; cam < 40; ++cam) {
         const RandomCase rc = random_camera(rng);
         const Frustum f = frustum_from_view_projection(rc.vp);
-        std::vector<Aabb> boxes;
+        std::vector<core::Aabb> boxes;
         const std::size_t count = 8192 + rng() % 700;
         while (boxes.size() < count) {
-            const Aabb seed = random_box(rng, rc.eye);
+            const core::Aabb seed = random_box(rng, rc.eye);
             const glm::vec3 c = seed.center();
             const float spread = (rng() % 4 == 0) ? 30.0f : 0.05f * (1.0f + glm::length(c));
             for (int k = 0; k < 16 && boxes.size() < count; ++k) {
                 const glm::vec3 p = c + glm::vec3(u(rng), u(rng), u(rng)) * spread;
                 const glm::vec3 h = glm::vec3(0.5f + 0.5f * u(rng)) * 0.02f * spread;
-                boxes.push_back(Aabb::from_min_max(p - h, p + h));
+                boxes.push_back(core::Aabb::from_min_max(p - h, p + h));
             }
         }
-        boxes[rng() % count] = Aabb::from_min_max({NAN, 0, 0}, {1, 1, 1});
-        boxes[rng() % count] = Aabb::from_min_max({3, 3, 3}, {-3, -3, -3});
+        boxes[rng() % count] = core::Aabb::from_min_max({NAN, 0, 0}, {1, 1, 1});
+        boxes[rng() % count] = core::Aabb::from_min_max({3, 3, 3}, {-3, -3, -3});
         BoxesSoA with_blocks;
         with_blocks.assign(boxes);
         BoxesSoA box_by_box = with_blocks;
@@ -254,9 +257,9 @@ TEST(Culling, BlockDecisionsEqualBoxByBoxResults) {
                         &box_by_box.block_max_x, &box_by_box.block_max_y, &box_by_box.block_max_z})
             v->clear();
         std::vector<std::uint8_t> want(count), got(count);
-        cull_boxes(f, box_by_box, CullMethod::PVertex, SimdLevel::Avx512, want);
+        cull_boxes(f, box_by_box, CullMethod::PVertex, core::SimdLevel::Avx512, want);
         for (int threads : {1, 2}) {
-            cull_boxes(f, with_blocks, CullMethod::PVertex, SimdLevel::Avx512, got, threads);
+            cull_boxes(f, with_blocks, CullMethod::PVertex, core::SimdLevel::Avx512, got, threads);
             ASSERT_EQ(want, got) << "camera " << cam << ", threads " << threads;
         }
         for (std::size_t b = 0; b + 16 <= count; b += 16) {
@@ -300,14 +303,15 @@ TEST(Cascades, CullVolumeKeepsOffscreenAndLargeCastersAndDropsOnesBehindTheSlice
     // A caster high above the view, between the light and the first slice: the light
     // travels along (0, -1, -0.2), so from y = 30 it lands about 5.9 units toward -z,
     // on the first slice (z about 4.4 .. 5.95 in front of the eye).
-    const Aabb caster = Aabb::from_min_max({-0.5f, 30.0f, 10.5f}, {0.5f, 31.0f, 11.5f});
+    const core::Aabb caster = core::Aabb::from_min_max({-0.5f, 30.0f, 10.5f}, {0.5f, 31.0f, 11.5f});
     // A slab larger than any cascade, above everything: it shadows every slice.
-    const Aabb slab = Aabb::from_min_max({-100.0f, 20.0f, -100.0f}, {100.0f, 20.5f, 100.0f});
+    const core::Aabb slab =
+        core::Aabb::from_min_max({-100.0f, 20.0f, -100.0f}, {100.0f, 20.5f, 100.0f});
     // Under the first slice along the light: farther from the light than every
     // receiver of the slice, so it cannot shadow them.
-    const Aabb deep = Aabb::from_min_max({-0.5f, -30.5f, -1.6f}, {0.5f, -29.5f, -0.6f});
-    Aabb bounds = r.scene->bounds;
-    for (const Aabb& b : {caster, slab, deep}) bounds.expand(b);
+    const core::Aabb deep = core::Aabb::from_min_max({-0.5f, -30.5f, -1.6f}, {0.5f, -29.5f, -0.6f});
+    core::Aabb bounds = r.scene->bounds;
+    for (const core::Aabb& b : {caster, slab, deep}) bounds.expand(b);
     const ShadowCascades s = fit_shadow_cascades(cascade_camera(c), bounds, light_dir, 3, 2048);
     ASSERT_EQ(s.count, 3u);
     const Frustum cull0 = frustum_from_view_projection(s.cull_view_proj[0]);
@@ -334,7 +338,7 @@ TEST(Cascades, MainLightAndBoundsFollowTheRenderer) {
             EXPECT_NEAR(glm::length(*sun - glm::normalize(pl.direction)), 0.0f, 1e-6f);
             break;
         }
-    const Aabb b = drawable_bounds(*r.scene);
+    const core::Aabb b = drawable_bounds(*r.scene);
     EXPECT_EQ(b.min, r.scene->bounds.min);
     EXPECT_EQ(b.max, r.scene->bounds.max);
     Scene no_lights;

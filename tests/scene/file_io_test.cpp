@@ -15,10 +15,10 @@ TEST(FileIo, AtomicWriteReplacesTheFileWithUmaskPermissions) {
     const auto path = dir / "out.bin";
     std::string error;
     const std::vector<std::uint8_t> a(1000, 1), b(10, 2);
-    ASSERT_TRUE(sherpa::write_file_atomic(path, a, error)) << error;
-    ASSERT_TRUE(sherpa::write_file_atomic(path, b, error)) << error;
+    ASSERT_TRUE(sherpa::core::write_file_atomic(path, a, error)) << error;
+    ASSERT_TRUE(sherpa::core::write_file_atomic(path, b, error)) << error;
     std::vector<std::uint8_t> back;
-    ASSERT_TRUE(sherpa::read_file(path, back, error)) << error;
+    ASSERT_TRUE(sherpa::core::read_file(path, back, error)) << error;
     EXPECT_EQ(back, b);
     EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1)
         << "no temp files left";
@@ -27,7 +27,7 @@ TEST(FileIo, AtomicWriteReplacesTheFileWithUmaskPermissions) {
     const mode_t mask = ::umask(0);
     ::umask(mask);
     EXPECT_EQ(st.st_mode & 0777, 0666 & ~mask);
-    EXPECT_FALSE(sherpa::write_file_atomic(dir / "missing_dir" / "x", a, error));
+    EXPECT_FALSE(sherpa::core::write_file_atomic(dir / "missing_dir" / "x", a, error));
     EXPECT_NE(error.find("missing_dir"), std::string::npos) << error;
     std::filesystem::remove_all(dir);
 }

@@ -100,7 +100,8 @@ TEST_P(EveryAsset, CountsMatchTheJson) {
     EXPECT_EQ(r.scene->node_primitive_pairs(), want.instances);
     EXPECT_EQ(r.scene->instances.size(), want.drawable_instances);
     ASSERT_TRUE(r.scene->bounds.valid());
-    EXPECT_TRUE(sherpa::is_finite(r.scene->bounds.min) && sherpa::is_finite(r.scene->bounds.max));
+    EXPECT_TRUE(sherpa::core::is_finite(r.scene->bounds.min) &&
+                sherpa::core::is_finite(r.scene->bounds.max));
     EXPECT_EQ(r.scene->primitives.size(), want.primitives);
 }
 

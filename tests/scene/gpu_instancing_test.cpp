@@ -32,7 +32,7 @@ std::string all_warnings(const sherpa::Scene& s) {
     return out;
 }
 
-bool inside(const sherpa::Aabb& b, glm::vec3 p) {
+bool inside(const sherpa::core::Aabb& b, glm::vec3 p) {
     const glm::vec3 pad(1e-5f);
     return b.valid() && glm::all(glm::greaterThanEqual(p, b.min - pad)) &&
            glm::all(glm::lessThanEqual(p, b.max + pad));
@@ -96,7 +96,8 @@ TEST(GpuInstancing, NonFiniteAndZeroRotationRowsAreLeftOutWithAWarning) {
                                       "have a non-finite translation, rotation or scale, or a "
                                       "zero rotation (first: row 1)"))
         << all_warnings(*r.scene);
-    EXPECT_TRUE(sherpa::is_finite(r.scene->bounds.min) && sherpa::is_finite(r.scene->bounds.max));
+    EXPECT_TRUE(sherpa::core::is_finite(r.scene->bounds.min) &&
+                sherpa::core::is_finite(r.scene->bounds.max));
 }
 
 TEST(GpuInstancing, ACountItsBytesDoNotBackDrawsTheNodeOnce) {

@@ -64,7 +64,7 @@ TEST(LoadProgress, BuiltinReportsGeometryTangents) {
 
 TEST(LoadProgress, CancelAtEachStageReturnsNoScene) {
     for (LoadStage stop_at : {LoadStage::Parse, LoadStage::Geometry, LoadStage::Tangents}) {
-        CancelToken token;
+        core::CancelToken token;
         LoadOptions options;
         options.cancel = &token;
         std::atomic<int> later{0}; // reports of stages after the cancelled one
@@ -79,7 +79,7 @@ TEST(LoadProgress, CancelAtEachStageReturnsNoScene) {
         // The stage that saw the cancel may finish reporting; no later stage starts.
         EXPECT_EQ(later.load(), 0) << to_string(stop_at);
     }
-    CancelToken before;
+    core::CancelToken before;
     before.cancel();
     LoadOptions options;
     options.cancel = &before;

@@ -30,7 +30,7 @@ TEST(MotionCulling, BoundsHoldEveryPosedVertexAtEveryKeyTime) {
                 times.insert(sampler.times.begin(), sampler.times.end());
             for (float t : times) {
                 const Pose pose = evaluate_pose(s, static_cast<std::int32_t>(a), t);
-                const std::vector<Aabb> bounds = instance_culling_bounds(s, pose);
+                const std::vector<core::Aabb> bounds = instance_culling_bounds(s, pose);
                 ASSERT_EQ(bounds.size(), s.instances.size());
                 for (std::size_t i = 0; i < s.instances.size(); ++i) {
                     const MeshInstance& inst = s.instances[i];
@@ -38,7 +38,7 @@ TEST(MotionCulling, BoundsHoldEveryPosedVertexAtEveryKeyTime) {
                         if (p.engine_mesh != static_cast<std::int32_t>(inst.mesh_id)) continue;
                         for (const glm::vec3& v : posed_positions(s, pose, inst.node_id, p)) {
                             ++checked;
-                            const Aabb& b = bounds[i];
+                            const core::Aabb& b = bounds[i];
                             ASSERT_TRUE(b.valid() && glm::all(glm::lessThanEqual(b.min, v)) &&
                                         glm::all(glm::lessThanEqual(v, b.max)))
                                 << "animation " << a << " t=" << t << " instance " << i;

@@ -215,7 +215,7 @@ TEST(MotionImport, RepairedInputIsWarnedAndNeverNaN) {
         for (double t : {0.0, 0.7, 1.5, 2.0, 99.0}) {
             const auto pose = sherpa::evaluate_pose(*s, 0, t);
             const auto p = sherpa::posed_positions(*s, pose, 0, s->primitives[0]);
-            for (const auto& v : p) EXPECT_TRUE(sherpa::is_finite(v)) << file << " t " << t;
+            for (const auto& v : p) EXPECT_TRUE(sherpa::core::is_finite(v)) << file << " t " << t;
         }
     }
     // Unnormalised weights become exactly the valid file's.
@@ -250,7 +250,7 @@ TEST(MotionBounds, CullingBoundsContainEveryPosedVertex) {
                     if (s->nodes[n].mesh < 0) continue;
                     for (const auto& p : s->primitives) {
                         if (p.mesh != static_cast<std::uint32_t>(s->nodes[n].mesh)) continue;
-                        const sherpa::Aabb box = sherpa::culling_bounds(*s, pose, n, p);
+                        const sherpa::core::Aabb box = sherpa::culling_bounds(*s, pose, n, p);
                         for (const glm::vec3& v : sherpa::posed_positions(*s, pose, n, p)) {
                             ASSERT_TRUE(glm::all(glm::lessThanEqual(box.min, v)) &&
                                         glm::all(glm::lessThanEqual(v, box.max)))
@@ -278,8 +278,8 @@ TEST(MotionBounds, PosesPastTheFloatRangeAreNamedAndLeftOut) {
         const sherpa::PosedBounds b = sherpa::posed_scene_bounds(*s, pose);
         EXPECT_EQ(b.overflow, std::vector<std::uint32_t>{0});
         ASSERT_TRUE(b.exact.valid() && b.culling.valid());
-        for (const sherpa::Aabb& box : {b.exact, b.culling})
-            EXPECT_TRUE(sherpa::is_finite(box.min) && sherpa::is_finite(box.max));
+        for (const sherpa::core::Aabb& box : {b.exact, b.culling})
+            EXPECT_TRUE(sherpa::core::is_finite(box.min) && sherpa::core::is_finite(box.max));
         EXPECT_EQ(b.exact.min, glm::vec3(3, 0, 0));
         EXPECT_EQ(b.exact.max, glm::vec3(4, 1, 0));
         EXPECT_TRUE(glm::all(glm::lessThanEqual(b.culling.min, b.exact.min)) &&

@@ -74,7 +74,7 @@ TEST(Bc7FastDecode, MatchesReferenceOnEncodedCorpusBlocks) {
     for (const auto& img : images)
         for (int level = kBc7MinLevel; level <= kBc7MaxLevel; ++level) {
             const auto blocks = encode_image(BlockFormat::Bc7, img.pixels, img.width, img.height,
-                                             {level, best_simd_level()}, 1);
+                                             {level, core::best_simd_level()}, 1);
             for (std::size_t b = 0; b < blocks.size(); b += kBlockBytes)
                 modes |= blocks[b] ? 1 << __builtin_ctz(blocks[b]) : 0;
             all.insert(all.end(), blocks.begin(), blocks.end());

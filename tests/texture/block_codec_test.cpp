@@ -25,7 +25,7 @@ RgbaImage decode_with_oiio(BlockFormat format, std::uint32_t w, std::uint32_t h,
     const auto path = dir / "blocks.dds";
     std::string error;
     const auto dds = wrap_in_dds(format, w, h, blocks);
-    EXPECT_TRUE(write_file_atomic(path, dds, error)) << error;
+    EXPECT_TRUE(core::write_file_atomic(path, dds, error)) << error;
     RgbaImage out;
     EXPECT_TRUE(read_image_file(path, out, error)) << error;
     std::filesystem::remove_all(dir);
@@ -65,7 +65,7 @@ TEST(Bc7, OurDecoderAgreesWithOpenImageIoOnEveryLevel) {
         for (int level = kBc7MinLevel; level <= kBc7MaxLevel; ++level) {
             SCOPED_TRACE(std::string(c.name) + " level " + std::to_string(level));
             const auto blocks = encode_image(BlockFormat::Bc7, c.image.pixels, c.image.width,
-                                             c.image.height, {level, best_simd_level()}, 1);
+                                             c.image.height, {level, core::best_simd_level()}, 1);
             for (std::size_t b = 0; b < blocks.size(); b += 16)
                 modes_seen.insert(bc7_mode_of(&blocks[b]));
             const auto ours = decode_image(BlockFormat::Bc7, blocks, c.image.width, c.image.height);
@@ -84,8 +84,8 @@ TEST(Bc5, OurDecoderAgreesWithOpenImageIo) {
     const RgbaImage normal = test::load_crop(
         test::assets_dir() / "gltf/DamagedHelmet/glTF/Default_normal.jpg", 1000, 1000, 64, 64);
     for (int level = kBc5MinLevel; level <= kBc5MaxLevel; ++level) {
-        const auto blocks =
-            encode_image(BlockFormat::Bc5, normal.pixels, 64, 64, {level, best_simd_level()}, 1);
+        const auto blocks = encode_image(BlockFormat::Bc5, normal.pixels, 64, 64,
+                                         {level, core::best_simd_level()}, 1);
         const auto ours = decode_image(BlockFormat::Bc5, blocks, 64, 64);
         const auto theirs = decode_with_oiio(BlockFormat::Bc5, 64, 64, blocks, "bc5oiio");
         ASSERT_EQ(theirs.pixels.size(), ours.size());

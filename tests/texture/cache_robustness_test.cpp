@@ -76,13 +76,13 @@ TEST(CacheRobustness, EditedPsnrIsNotServedAsHit) {
     // Change the first digit of the stored PSNR in place (same length, valid KTX2).
     std::vector<std::uint8_t> bytes;
     std::string error;
-    ASSERT_TRUE(read_file(first.textures[0].cache_file, bytes, error)) << error;
+    ASSERT_TRUE(core::read_file(first.textures[0].cache_file, bytes, error)) << error;
     const std::string key(kKeyPsnr);
     const auto at = std::search(bytes.begin(), bytes.end(), key.begin(), key.end());
     ASSERT_NE(at, bytes.end());
     auto digit = at + std::ptrdiff_t(key.size()) + 1; // past the key's NUL
     *digit = *digit == '9' ? '1' : '9';
-    ASSERT_TRUE(write_file_atomic(first.textures[0].cache_file, bytes, error)) << error;
+    ASSERT_TRUE(core::write_file_atomic(first.textures[0].cache_file, bytes, error)) << error;
 
     const auto second = prepare_textures(scene, test::cache_test_options(dir));
     EXPECT_EQ(second.textures[0].state, CacheState::Recompressed);

@@ -117,7 +117,7 @@ TEST(TexturePipeline, DamagedFilesAreReportedAndReplaced) {
     const auto file = first.textures[0].cache_file;
     std::vector<std::uint8_t> bytes;
     std::string error;
-    ASSERT_TRUE(read_file(file, bytes, error));
+    ASSERT_TRUE(core::read_file(file, bytes, error));
     const std::vector<std::vector<std::uint8_t>> damage = {
         std::vector<std::uint8_t>(bytes.begin(),
                                   bytes.begin() + std::ptrdiff_t(bytes.size() / 2)), // truncated
@@ -133,7 +133,7 @@ TEST(TexturePipeline, DamagedFilesAreReportedAndReplaced) {
         }(), // header
     };
     for (const auto& damaged : damage) {
-        ASSERT_TRUE(write_file_atomic(file, damaged, error));
+        ASSERT_TRUE(core::write_file_atomic(file, damaged, error));
         const auto again = prepare_textures(scene, test::cache_test_options(dir));
         EXPECT_EQ(again.textures[0].state, CacheState::Recompressed);
         EXPECT_FALSE(again.textures[0].note.empty());
@@ -312,7 +312,7 @@ TEST(TexturePipeline, ProgressCountsEveryTexture) {
 TEST(TexturePipeline, CancelStopsAndReturnsNothing) {
     const auto dir = test::fresh_temp_dir("cache-cancel");
     const Scene scene = small_scene();
-    CancelToken token;
+    core::CancelToken token;
     PipelineOptions options = test::cache_test_options(dir);
     options.cancel = &token;
     // Cancelled after the first texture is made: the second is never compressed.

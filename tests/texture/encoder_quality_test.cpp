@@ -30,7 +30,7 @@ std::vector<Sample> bc7_samples() {
 }
 
 SquaredError encode_error(BlockFormat format, const RgbaImage& img, int level, unsigned channels,
-                          SimdLevel simd = best_simd_level()) {
+                          core::SimdLevel simd = core::best_simd_level()) {
     const auto blocks = encode_image(format, img.pixels, img.width, img.height, {level, simd});
     return squared_error(img.pixels, decode_image(format, blocks, img.width, img.height), channels);
 }
@@ -74,7 +74,7 @@ TEST(EncoderQuality, Bc5PsnrAndAngleFloors) {
         AngleError angle;
         for (const RgbaImage& n : normals) {
             const auto blocks = encode_image(BlockFormat::Bc5, n.pixels, n.width, n.height,
-                                             {level, best_simd_level()});
+                                             {level, core::best_simd_level()});
             const auto decoded = decode_image(BlockFormat::Bc5, blocks, n.width, n.height);
             pooled += squared_error(n.pixels, decoded, kChannelsRg);
             const AngleError a = normal_angle_error(n.pixels, decoded);
@@ -90,7 +90,8 @@ TEST(EncoderQuality, EveryKernelMeetsTheFloorOfLevelOne) {
     // The scalar, AVX2 and AVX-512 builds of the kernels must all be real encoders
     // (a level the CPU lacks falls back to the best it has).
     const auto samples = bc7_samples();
-    for (SimdLevel simd : {SimdLevel::Scalar, SimdLevel::Avx2, SimdLevel::Avx512}) {
+    for (core::SimdLevel simd :
+         {core::SimdLevel::Scalar, core::SimdLevel::Avx2, core::SimdLevel::Avx512}) {
         SquaredError pooled;
         for (const Sample& s : samples)
             pooled += encode_error(BlockFormat::Bc7, s.image, 1, s.channels, simd);
@@ -106,7 +107,7 @@ TEST(EncoderEdgeCases, TinyAndOddSizesDecodeToTheirOwnSize) {
                 img.pixels.insert(img.pixels.end(),
                                   {std::uint8_t(x * 255 / w), std::uint8_t(y * 255 / h), 128, 200});
         for (BlockFormat f : {BlockFormat::Bc7, BlockFormat::Bc5}) {
-            const auto blocks = encode_image(f, img.pixels, w, h, {1, best_simd_level()});
+            const auto blocks = encode_image(f, img.pixels, w, h, {1, core::best_simd_level()});
             ASSERT_EQ(blocks.size(), compressed_size(w, h));
             const auto decoded = decode_image(f, blocks, w, h);
             ASSERT_EQ(decoded.size(), img.pixels.size());
@@ -119,7 +120,7 @@ TEST(EncoderEdgeCases, TinyAndOddSizesDecodeToTheirOwnSize) {
                     std::copy_n(&img.pixels[(std::min(y, h - 1) * w + std::min(x, w - 1)) * 4], 4,
                                 &padded.pixels[(y * pw + x) * 4]);
             const auto padded_decoded = decode_image(
-                f, encode_image(f, padded.pixels, pw, ph, {1, best_simd_level()}), pw, ph);
+                f, encode_image(f, padded.pixels, pw, ph, {1, core::best_simd_level()}), pw, ph);
             for (std::uint32_t y = 0; y < h; ++y)
                 for (std::uint32_t x = 0; x < w; ++x)
                     for (int c = 0; c < 4; ++c)
@@ -135,7 +136,7 @@ TEST(EncoderEdgeCases, TinyAndOddSizesDecodeToTheirOwnSize) {
     const RgbaImage one = test::constant_image(1, 1, 12, 200, 99, 255);
     for (int level = kBc7MinLevel; level <= kBc7MaxLevel; ++level) {
         const auto blocks =
-            encode_image(BlockFormat::Bc7, one.pixels, 1, 1, {level, best_simd_level()});
+            encode_image(BlockFormat::Bc7, one.pixels, 1, 1, {level, core::best_simd_level()});
         EXPECT_LE(
             max_abs_diff(decode_image(BlockFormat::Bc7, blocks, 1, 1), one.pixels, kChannelsRgba),
             1);
@@ -151,14 +152,15 @@ TEST(EncoderEdgeCases, ConstantBlocksStayWithinOneStep) {
         const std::uint8_t a = trial % 2 ? 255 : next();
         const RgbaImage block = test::constant_image(4, 4, next(), next(), next(), a);
         for (int level = kBc7MinLevel; level <= kBc7MaxLevel; ++level) {
-            const auto bc7 =
-                encode_image(BlockFormat::Bc7, block.pixels, 4, 4, {level, best_simd_level()});
+            const auto bc7 = encode_image(BlockFormat::Bc7, block.pixels, 4, 4,
+                                          {level, core::best_simd_level()});
             EXPECT_LE(max_abs_diff(decode_image(BlockFormat::Bc7, bc7, 4, 4), block.pixels,
                                    kChannelsRgba),
                       1)
                 << "level " << level << " trial " << trial;
         }
-        const auto bc5 = encode_image(BlockFormat::Bc5, block.pixels, 4, 4, {1, best_simd_level()});
+        const auto bc5 =
+            encode_image(BlockFormat::Bc5, block.pixels, 4, 4, {1, core::best_simd_level()});
         EXPECT_EQ(
             max_abs_diff(decode_image(BlockFormat::Bc5, bc5, 4, 4), block.pixels, kChannelsRg), 0);
     }
@@ -171,8 +173,8 @@ TEST(EncoderEdgeCases, OpaqueStaysOpaqueAndAlphaIsKept) {
     for (int level = kBc7MinLevel; level <= kBc7MaxLevel; ++level) {
         const auto o = decode_image(
             BlockFormat::Bc7,
-            encode_image(BlockFormat::Bc7, opaque.pixels, 32, 32, {level, best_simd_level()}), 32,
-            32);
+            encode_image(BlockFormat::Bc7, opaque.pixels, 32, 32, {level, core::best_simd_level()}),
+            32, 32);
         for (std::size_t i = 3; i < o.size(); i += 4) ASSERT_EQ(o[i], 255) << "level " << level;
         const SquaredError alpha = encode_error(BlockFormat::Bc7, cutout, level, 0b1000);
         EXPECT_GT(alpha.psnr(), 35.0) << "alpha channel, level " << level;

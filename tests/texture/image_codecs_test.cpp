@@ -143,7 +143,7 @@ TEST(ImageCodecs, EveryAssetPngAndJpegDecodesAsOpenImageIODoes) {
         if (!is_png && !is_jpeg) continue;
         std::vector<std::uint8_t> bytes;
         std::string error;
-        ASSERT_TRUE(read_file(entry.path(), bytes, error)) << error;
+        ASSERT_TRUE(core::read_file(entry.path(), bytes, error)) << error;
         expect_same_as_oiio(bytes, entry.path().string());
         (is_png ? png : jpeg)++;
     }

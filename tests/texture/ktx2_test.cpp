@@ -142,8 +142,8 @@ console.log(JSON.stringify(out));
     for (std::size_t i = 0; i < cases.size(); ++i) {
         const auto path = dir / ("t" + std::to_string(i) + ".ktx2");
         std::string error;
-        ASSERT_TRUE(
-            write_file_atomic(path, write_ktx2(sample_texture(cases[i].format, 20, 12, 5)), error));
+        ASSERT_TRUE(core::write_file_atomic(
+            path, write_ktx2(sample_texture(cases[i].format, 20, 12, 5)), error));
         files += " '" + path.string() + "'";
     }
     FILE* pipe = popen(("node '" + script.string() + "'" + files + " 2>&1").c_str(), "r");

@@ -75,7 +75,7 @@ std::vector<std::uint8_t> png_bytes(const tex::RgbaImage& img, const std::string
     std::string error;
     if (!tex::write_image_file(dir / "img.png", img, error)) throw std::runtime_error(error);
     std::vector<std::uint8_t> bytes;
-    if (!read_file(dir / "img.png", bytes, error)) throw std::runtime_error(error);
+    if (!core::read_file(dir / "img.png", bytes, error)) throw std::runtime_error(error);
     std::filesystem::remove_all(dir);
     return bytes;
 }

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace sherpa {
+namespace sherpa::core {
 
 void Aabb::expand(glm::vec3 p) {
     if (!valid_) {
@@ -42,4 +42,4 @@ bool is_finite(const glm::mat4& m) {
     return true;
 }
 
-} // namespace sherpa
+} // namespace sherpa::core

@@ -1,6 +1,6 @@
 #include <sherpa/core/cpu_features.h>
 
-namespace sherpa {
+namespace sherpa::core {
 
 std::string_view to_string(SimdLevel s) {
     switch (s) {
@@ -25,4 +25,4 @@ SimdLevel best_simd_level() {
     return SimdLevel::Scalar;
 }
 
-} // namespace sherpa
+} // namespace sherpa::core

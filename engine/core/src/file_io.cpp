@@ -7,7 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-namespace sherpa {
+namespace sherpa::core {
 
 bool read_file(const std::filesystem::path& path, std::vector<std::uint8_t>& out,
                std::string& error) {
@@ -96,4 +96,4 @@ long temp_file_writer_pid(std::string_view filename) {
     return pid;
 }
 
-} // namespace sherpa
+} // namespace sherpa::core

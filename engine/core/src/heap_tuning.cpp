@@ -6,7 +6,7 @@
 #include <malloc.h>
 #endif
 
-namespace sherpa {
+namespace sherpa::core {
 
 void keep_freed_memory_mapped() {
 #if defined(__GLIBC__)
@@ -15,4 +15,4 @@ void keep_freed_memory_mapped() {
 #endif
 }
 
-} // namespace sherpa
+} // namespace sherpa::core

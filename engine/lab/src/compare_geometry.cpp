@@ -46,7 +46,7 @@ std::vector<WorldVertex> world_vertices(const Scene& scene, std::uint32_t mesh_i
 class NearestGrid {
 public:
     explicit NearestGrid(const std::vector<WorldVertex>& v) : v_(v) {
-        Aabb box;
+        core::Aabb box;
         for (const WorldVertex& w : v) box.expand(w.position);
         const float extent =
             box.valid() ? std::max({box.extent().x, box.extent().y, box.extent().z}) : 0.0f;

@@ -92,7 +92,7 @@ FamilyReport CullFamily::run(const Scene& scene, const RunControl& control) cons
                            std::to_string(scene.instances.size()) + " objects");
     detail::Progress progress(control, frusta.size() * (std::size(kCpuMethods) + 1));
     const BoxesSoA boxes = instance_boxes(scene);
-    const SimdLevel simd = best_simd_level();
+    const core::SimdLevel simd = core::best_simd_level();
     std::vector<std::vector<std::uint8_t>> exact(frusta.size());
     for (std::size_t c = 0; c < frusta.size(); ++c) {
         exact[c].resize(boxes.size());
@@ -170,8 +170,9 @@ MethodResult CullFamily::run_gpu(const Scene& scene, const std::vector<Frustum>&
 
 } // namespace
 
-std::vector<CameraSpec> camera_path(const Aabb& bounds, std::uint32_t count) {
-    const Aabb box = bounds.valid() ? bounds : Aabb::from_min_max(glm::vec3(-1), glm::vec3(1));
+std::vector<CameraSpec> camera_path(const core::Aabb& bounds, std::uint32_t count) {
+    const core::Aabb box =
+        bounds.valid() ? bounds : core::Aabb::from_min_max(glm::vec3(-1), glm::vec3(1));
     const glm::vec3 centre = box.center();
     const float radius = std::max(0.5f * glm::length(box.extent()), 1e-6f);
     std::vector<CameraSpec> path;

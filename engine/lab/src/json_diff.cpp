@@ -321,7 +321,7 @@ JsonDiff json_diff(std::string_view json_a, std::string_view json_b) {
 
 bool read_gltf_json(const std::string& path, std::string& text, std::string& error) {
     std::vector<std::uint8_t> bytes;
-    if (!read_file(path, bytes, error)) return false;
+    if (!core::read_file(path, bytes, error)) return false;
     if (bytes.size() < 4 || std::memcmp(bytes.data(), "glTF", 4) != 0) {
         text.assign(bytes.begin(), bytes.end());
         return true;

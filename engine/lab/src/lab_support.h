@@ -45,7 +45,7 @@ public:
         ++done_;
         report();
     }
-    bool stop() const { return is_cancelled(control_.cancel); }
+    bool stop() const { return core::is_cancelled(control_.cancel); }
     // Units skipped (a method that could not run) count as done.
     void finish() {
         done_ = total_;

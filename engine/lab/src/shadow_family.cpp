@@ -27,8 +27,9 @@ constexpr const char* kReference =
 // ones at 40% of it, close up. Framed cameras see the whole scene in every depth slice
 // of the cascade fit, so each cascade is the scene's own sphere (shadow_cascades.cpp:
 // never wider than the scene) and more cascades change nothing; close ones split it.
-std::vector<CameraSpec> orbit(const Aabb& bounds, std::uint32_t count, float aspect) {
-    const Aabb box = bounds.valid() ? bounds : Aabb::from_min_max(glm::vec3(-1), glm::vec3(1));
+std::vector<CameraSpec> orbit(const core::Aabb& bounds, std::uint32_t count, float aspect) {
+    const core::Aabb box =
+        bounds.valid() ? bounds : core::Aabb::from_min_max(glm::vec3(-1), glm::vec3(1));
     FramingOptions framing;
     framing.aspect = aspect;
     std::vector<CameraSpec> out;

@@ -73,7 +73,8 @@ CascadeCamera cascade_camera(const CameraView& v) {
 
 namespace {
 
-CameraView resolve(const CameraSpec& spec, const Aabb& bounds, const std::vector<Camera>& cameras,
+CameraView resolve(const CameraSpec& spec, const core::Aabb& bounds,
+                   const std::vector<Camera>& cameras,
                    const std::vector<PlacedCamera>& placed_cameras, float viewport_aspect) {
     CameraView v;
     v.aspect = spec.aspect > 0.0f ? spec.aspect : viewport_aspect;

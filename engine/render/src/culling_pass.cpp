@@ -26,7 +26,7 @@ namespace sherpa::gpu {
 
 namespace {
 
-bool box_visible(const Frustum& f, const Aabb& box, CullMethod m) {
+bool box_visible(const Frustum& f, const core::Aabb& box, CullMethod m) {
     switch (m) {
     case CullMethod::Sphere:
         return sphere_visible(f, box);
@@ -179,7 +179,7 @@ void CullingPass::test_cpu(FrameContext& f, PassCull& view, bool caster_view, bo
         return;
     }
     view.visible.resize(boxes.size());
-    cull_boxes(view.frustum, boxes, method, SimdLevel::Avx512, view.visible);
+    cull_boxes(view.frustum, boxes, method, core::SimdLevel::Avx512, view.visible);
     view.cpu_tested = true;
     CullStats& st = view.stats;
     if (culling_->hidden_count > 0)
@@ -305,7 +305,7 @@ void CullingPass::record(FrameContext& f) {
         view.stats = CullStats{};
         view.stats.pass = camera ? "camera" : "cascade" + std::to_string(v - 1);
         view.stats.method = settings.cull_method;
-        view.stats.simd = std::min(SimdLevel::Avx512, best_simd_level());
+        view.stats.simd = std::min(core::SimdLevel::Avx512, core::best_simd_level());
         view.stats.total = camera ? n : culling_->casters;
         view.stats.hidden = camera ? culling_->hidden_count : culling_->hidden_casters;
         view.stats.view_projection = camera ? camera_vp : slot.cascades.cull_view_proj[v - 1];
@@ -344,7 +344,8 @@ void CullingPass::record(FrameContext& f) {
             test_cpu(f, view, false, true);
         if (fc.check && view.cpu_tested) {
             std::vector<std::uint8_t> exact(view.visible.size());
-            cull_boxes(view.frustum, culling_->boxes, CullMethod::Exact, SimdLevel::Avx512, exact);
+            cull_boxes(view.frustum, culling_->boxes, CullMethod::Exact, core::SimdLevel::Avx512,
+                       exact);
             std::int64_t fp = 0;
             for (std::size_t i = 0; i < exact.size(); ++i)
                 if ((camera || !culling_->blended[i]) && !culling_->is_hidden(i))

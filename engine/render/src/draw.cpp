@@ -212,7 +212,7 @@ void draw_lines(FrameContext& f, const std::vector<GPULineVertex>& lines) {
     ++slot.draw_calls;
 }
 
-void append_box(std::vector<GPULineVertex>& out, const Aabb& b, glm::vec4 color) {
+void append_box(std::vector<GPULineVertex>& out, const core::Aabb& b, glm::vec4 color) {
     if (!b.valid()) return;
     auto corner = [&](int i) {
         return glm::vec4((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,

@@ -55,6 +55,6 @@ void draw_blended(FrameContext& f, DrawPipeline pipeline, CullStats& tally);
 // A line list in world space, in its own range of the frame's line buffer.
 void draw_lines(FrameContext& f, const std::vector<GPULineVertex>& lines);
 // The 12 edges of a world box as a line list.
-void append_box(std::vector<GPULineVertex>& out, const Aabb& box, glm::vec4 color);
+void append_box(std::vector<GPULineVertex>& out, const core::Aabb& box, glm::vec4 color);
 
 } // namespace sherpa::gpu

@@ -189,7 +189,9 @@ EmissiveLights emissive_lights(const Scene& scene, std::size_t max_triangles) {
                 if (slot.transform.present)
                     uv[k] = glm::vec2(slot.transform.matrix() * glm::vec3(uv[k], 1.0f));
             }
-            if (!valid || !is_finite(p[0]) || !is_finite(p[1]) || !is_finite(p[2])) continue;
+            if (!valid || !core::is_finite(p[0]) || !core::is_finite(p[1]) ||
+                !core::is_finite(p[2]))
+                continue;
             const glm::vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
             const double area = 0.5 * double(glm::length(glm::cross(e1, e2)));
             if (!(area > 0.0) || !std::isfinite(area)) continue; // degenerate: never hit

@@ -93,7 +93,7 @@ struct FrameSlot {
     BufferHandle pose;
     VkDeviceSize pose_capacity = 0;
     bool posed = false;
-    std::vector<Aabb> posed_bounds;
+    std::vector<core::Aabb> posed_bounds;
     std::uint64_t pose_key = 0; // hash of the pose drawn (the shadow cache's key)
     VkDeviceAddress posed_instances = 0, pose_address = 0; // push constants of posed frames
     std::uint32_t highlight_base = 0;
@@ -158,7 +158,7 @@ struct FrameContext {
 };
 
 // World bounds per GPU instance in this frame: posed when the scene moves.
-inline const std::vector<Aabb>& instance_bounds(const FrameContext& f) {
+inline const std::vector<core::Aabb>& instance_bounds(const FrameContext& f) {
     return f.slot.posed ? f.slot.posed_bounds : f.scene->instance_bounds();
 }
 

@@ -17,10 +17,10 @@ namespace {
 // instances are in this frame's pose (an arm raised above the bind pose still casts).
 // A box the pose pushed past the float range is left out: one infinite or NaN corner
 // would make every cascade, and so every shadow lookup, NaN.
-Aabb shadow_bounds(const SceneLights& lights, const FrameContext& frame) {
-    Aabb b = lights.cameras.bounds;
+core::Aabb shadow_bounds(const SceneLights& lights, const FrameContext& frame) {
+    core::Aabb b = lights.cameras.bounds;
     if (frame.slot.posed)
-        for (const Aabb& box : frame.slot.posed_bounds)
+        for (const core::Aabb& box : frame.slot.posed_bounds)
             if (!box.valid() || !box_is_invalid(box.min, box.max)) b.expand(box);
     return b;
 }
@@ -139,7 +139,7 @@ void FrameRecorder::write_frame_data(FrameContext& frame) {
                                : context.info().is_cpu()       ? 1u
                                                                : 4u;
     f.params = glm::uvec4(static_cast<std::uint32_t>(settings.view), count, cascades, taps);
-    const Aabb& bounds = info.cameras.bounds;
+    const core::Aabb& bounds = info.cameras.bounds;
     const float diagonal = bounds.valid() ? glm::length(bounds.extent()) : 1.0f;
     f.overlay = glm::vec4(settings.glyph_length > 0.0f ? settings.glyph_length : 0.02f * diagonal,
                           settings.uv_checker_density,

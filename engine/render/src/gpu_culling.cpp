@@ -108,14 +108,14 @@ void GpuCuller::release() {
     object_instance_.clear();
 }
 
-GPUCullObject make_cull_object(const Aabb& box, std::uint32_t batch, std::uint32_t instance) {
+GPUCullObject make_cull_object(const core::Aabb& box, std::uint32_t batch, std::uint32_t instance) {
     const bool invalid = !box.valid() || box_is_invalid(box.min, box.max);
     return {invalid ? glm::vec3(0.0f) : box.min, batch | (invalid ? kCullInvalidBit : 0u),
             invalid ? glm::vec3(0.0f) : box.max, instance};
 }
 
 void GpuCuller::build(const MeshPass& pass, const Scene& scene) {
-    std::vector<Aabb> bounds;
+    std::vector<core::Aabb> bounds;
     bounds.reserve(scene.instances.size());
     for (const MeshInstance& inst : scene.instances) bounds.push_back(inst.world_bounds);
     std::vector<std::uint32_t> identity(bounds.size());
@@ -130,7 +130,7 @@ void GpuCuller::build(const MeshPass& pass, const Scene& scene) {
     build(pass, bounds, identity, meshes);
 }
 
-void GpuCuller::build(const MeshPass& pass, std::span<const Aabb> bounds,
+void GpuCuller::build(const MeshPass& pass, std::span<const core::Aabb> bounds,
                       std::span<const std::uint32_t> gpu_instance,
                       std::span<const GpuMesh> meshes) {
     const auto flat = pass.flat_batches();

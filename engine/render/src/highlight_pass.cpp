@@ -122,7 +122,7 @@ void HighlightPass::record(FrameContext& f) {
         if (m && s.highlight_vertex && *s.highlight_vertex < m->vertex_count) {
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                               p.get(PipelineId::Glyphs, m->flags));
-            const Aabb& box = instance_bounds(f)[d.gpu_instance];
+            const core::Aabb& box = instance_bounds(f)[d.gpu_instance];
             pc.glyph_length = 0.15f * (box.valid() ? glm::length(box.extent()) : 1.0f);
             pc.color = kHighlightDetailColor;
             for (std::uint32_t kind = 0; kind < 3; ++kind) {

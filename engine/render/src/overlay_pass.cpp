@@ -100,7 +100,7 @@ void OverlayPass::record(FrameContext& f) {
 // Joints inside the skin they move: drawn through every surface, posed as the meshes
 // are (PosePass).
 void OverlayPass::draw_skeleton(FrameContext& f) {
-    const Aabb& bounds = f.lighting.cameras.bounds;
+    const core::Aabb& bounds = f.lighting.cameras.bounds;
     std::vector<GPULineVertex> lines;
     pose_.append_skeleton_lines(lines, f.settings,
                                 0.015f * (bounds.valid() ? glm::length(bounds.extent()) : 1.0f));

@@ -42,7 +42,7 @@ private:
         std::uint32_t targets = 0;   // morph weights it reads
         glm::mat4 world{1.0f};       // as loaded
         glm::mat4 row{1.0f};         // EXT_mesh_gpu_instancing row transform (T * R * S)
-        Aabb local, bounds;          // mesh bounds; world bounds as loaded
+        core::Aabb local, bounds;    // mesh bounds; world bounds as loaded
     };
     void write(FrameSlot& slot, const FrameRequest& settings, const Pose& pose);
 

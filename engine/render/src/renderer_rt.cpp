@@ -92,7 +92,7 @@ RayTracedFrame RayTracedFrames::rt_frame(const FrameRequest& settings,
     // As the rasterizer: no sun or no shadows, and only the facing rule remains.
     f.push.shadow_rays = sun.present && settings.shadows ? std::max(settings.shadow_rays, 1u) : 0u;
     f.push.ao_rays = settings.ao_rays;
-    const Aabb& bounds = state.lights.cameras.bounds;
+    const core::Aabb& bounds = state.lights.cameras.bounds;
     const float diagonal = bounds.valid() ? glm::length(bounds.extent()) : 1.0f;
     f.push.ao_radius = settings.ao_radius > 0.0f ? settings.ao_radius : 0.05f * diagonal;
     return f;

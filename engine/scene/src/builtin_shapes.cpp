@@ -18,7 +18,7 @@ Mesh new_mesh() {
 }
 
 void finish(Mesh& m) {
-    m.local_bounds = Aabb::empty();
+    m.local_bounds = core::Aabb::empty();
     for (const auto& v : m.vertices) m.local_bounds.expand(v.position);
     m.source_vertex_count = static_cast<std::uint32_t>(m.vertices.size());
     m.source_triangle_count = m.triangle_count();

@@ -9,7 +9,7 @@
 
 namespace sherpa {
 
-void BoxesSoA::assign(std::span<const Aabb> boxes) {
+void BoxesSoA::assign(std::span<const core::Aabb> boxes) {
     for (auto* v : {&min_x, &min_y, &min_z, &max_x, &max_y, &max_z}) v->resize(boxes.size());
     invalid.clear();
     for (std::size_t i = 0; i < boxes.size(); ++i) {
@@ -213,15 +213,15 @@ std::size_t sphere_range(const Frustum& f, const BoxesSoA& b, std::size_t begin,
     return visible;
 }
 
-std::size_t run_range(const Frustum& f, const BoxesSoA& b, CullMethod method, SimdLevel level,
+std::size_t run_range(const Frustum& f, const BoxesSoA& b, CullMethod method, core::SimdLevel level,
                       std::size_t begin, std::size_t end, std::uint8_t* out) {
     if (method == CullMethod::Sphere) return sphere_range(f, b, begin, end, out);
     std::size_t visible = 0;
     switch (level) {
-    case SimdLevel::Avx512:
+    case core::SimdLevel::Avx512:
         visible = detail::pvertex_avx512(f, b, begin, end, out);
         break;
-    case SimdLevel::Avx2:
+    case core::SimdLevel::Avx2:
         visible = detail::pvertex_avx2(f, b, begin, end, out);
         break;
     default:
@@ -239,10 +239,10 @@ std::size_t run_range(const Frustum& f, const BoxesSoA& b, CullMethod method, Si
 
 } // namespace
 
-CullCounts cull_boxes(const Frustum& f, const BoxesSoA& boxes, CullMethod method, SimdLevel level,
-                      std::span<std::uint8_t> visible, int threads) {
+CullCounts cull_boxes(const Frustum& f, const BoxesSoA& boxes, CullMethod method,
+                      core::SimdLevel level, std::span<std::uint8_t> visible, int threads) {
     const std::size_t n = boxes.size();
-    level = std::min(level, best_simd_level());
+    level = std::min(level, core::best_simd_level());
     std::size_t count = 0;
     if (threads > 1 && n > 4096) {
         const auto chunks = static_cast<std::int64_t>((n + 4095) / 4096);

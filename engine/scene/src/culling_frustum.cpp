@@ -122,10 +122,11 @@ Frustum frustum_from_view_projection(const glm::mat4& m) {
 }
 
 bool box_is_invalid(glm::vec3 lo, glm::vec3 hi) {
-    return !(is_finite(lo) && is_finite(hi) && lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z);
+    return !(core::is_finite(lo) && core::is_finite(hi) && lo.x <= hi.x && lo.y <= hi.y &&
+             lo.z <= hi.z);
 }
 
-bool sphere_visible(const Frustum& f, const Aabb& box) {
+bool sphere_visible(const Frustum& f, const core::Aabb& box) {
     if (f.empty) return false;
     const glm::vec3 c = box.center();
     const float r = 0.5f * glm::length(box.extent());
@@ -137,25 +138,25 @@ bool sphere_visible(const Frustum& f, const Aabb& box) {
 namespace {
 
 // The box corner farthest along the plane normal (p-vertex), or against it (n-vertex).
-glm::vec3 p_vertex(const Plane& p, const Aabb& b) {
+glm::vec3 p_vertex(const Plane& p, const core::Aabb& b) {
     return {p.normal.x >= 0 ? b.max.x : b.min.x, p.normal.y >= 0 ? b.max.y : b.min.y,
             p.normal.z >= 0 ? b.max.z : b.min.z};
 }
-glm::vec3 n_vertex(const Plane& p, const Aabb& b) {
+glm::vec3 n_vertex(const Plane& p, const core::Aabb& b) {
     return {p.normal.x >= 0 ? b.min.x : b.max.x, p.normal.y >= 0 ? b.min.y : b.max.y,
             p.normal.z >= 0 ? b.min.z : b.max.z};
 }
 
 } // namespace
 
-bool pvertex_visible(const Frustum& f, const Aabb& box) {
+bool pvertex_visible(const Frustum& f, const core::Aabb& box) {
     if (f.empty) return false;
     for (std::uint32_t i = 0; i < f.plane_count; ++i)
         if (f.planes[i].distance(p_vertex(f.planes[i], box)) < 0.0f) return false;
     return true;
 }
 
-bool exact_visible(const Frustum& f, const Aabb& box) {
+bool exact_visible(const Frustum& f, const core::Aabb& box) {
     if (f.empty) return false;
     // Frustum planes: reject on any (the p-vertex test), and accept at once when
     // the box's n-vertex is inside every plane (the box lies wholly inside).

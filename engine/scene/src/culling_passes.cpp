@@ -10,7 +10,7 @@
 namespace sherpa {
 
 BoxesSoA instance_boxes(const Scene& scene) {
-    std::vector<Aabb> boxes(scene.instances.size());
+    std::vector<core::Aabb> boxes(scene.instances.size());
     for (std::size_t i = 0; i < boxes.size(); ++i) boxes[i] = scene.instances[i].world_bounds;
     BoxesSoA soa;
     soa.assign(boxes);
@@ -112,7 +112,7 @@ PassResult cull_pass(const CullInput& input, const Frustum& frustum, glm::vec3 e
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     s.pass = std::move(pass_name);
     s.method = options.method;
-    s.simd = std::min(options.simd, best_simd_level());
+    s.simd = std::min(options.simd, core::best_simd_level());
     s.total = counts.tested; // every instance of the pass (casters only for cascades)
     s.tested = counts.tested;
     s.visible = counts.visible;

@@ -9,12 +9,12 @@ namespace sherpa {
 namespace {
 
 // A box made usable: invalid -> the unit cube, so callers always get a camera.
-Aabb usable(const Aabb& box) {
-    if (box.valid() && is_finite(box.min) && is_finite(box.max)) return box;
-    return Aabb::from_min_max(glm::vec3(-1.0f), glm::vec3(1.0f));
+core::Aabb usable(const core::Aabb& box) {
+    if (box.valid() && core::is_finite(box.min) && core::is_finite(box.max)) return box;
+    return core::Aabb::from_min_max(glm::vec3(-1.0f), glm::vec3(1.0f));
 }
 
-glm::vec3 corner(const Aabb& b, int i) {
+glm::vec3 corner(const core::Aabb& b, int i) {
     return {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
 }
 
@@ -36,8 +36,8 @@ ViewAxes view_axes(glm::vec3 to_eye) {
 
 } // namespace
 
-glm::vec3 auto_view_direction(const Aabb& box_in, glm::vec3 front_hint) {
-    const Aabb box = usable(box_in);
+glm::vec3 auto_view_direction(const core::Aabb& box_in, glm::vec3 front_hint) {
+    const core::Aabb box = usable(box_in);
     glm::vec3 front{0.0f, 0.0f, 1.0f}, side{1.0f, 0.0f, 0.0f};
     const glm::vec2 hint{front_hint.x, front_hint.z};
     if (glm::dot(hint, hint) > 1e-12f) {
@@ -55,8 +55,8 @@ glm::vec3 auto_view_direction(const Aabb& box_in, glm::vec3 front_hint) {
     return glm::normalize(std::cos(el) * horizontal + glm::vec3(0.0f, std::sin(el), 0.0f));
 }
 
-CameraSpec frame_box_along(const Aabb& box_in, glm::vec3 to_eye, const FramingOptions& o) {
-    const Aabb box = usable(box_in);
+CameraSpec frame_box_along(const core::Aabb& box_in, glm::vec3 to_eye, const FramingOptions& o) {
+    const core::Aabb box = usable(box_in);
     const glm::vec3 c = box.center(), half = 0.5f * box.extent();
     const float radius = std::max(glm::length(half), 1e-4f);
     const float m = std::max(o.margin, 0.0f) * radius;
@@ -102,9 +102,9 @@ CameraSpec frame_box_along(const Aabb& box_in, glm::vec3 to_eye, const FramingOp
 
 CameraSpec frame_points_along(std::span<const glm::vec3> points, glm::vec3 to_eye,
                               const FramingOptions& o) {
-    Aabb box;
+    core::Aabb box;
     for (const glm::vec3& p : points)
-        if (is_finite(p)) box.expand(p);
+        if (core::is_finite(p)) box.expand(p);
     if (!box.valid()) return frame_box_along(box, to_eye, o);
     const glm::vec3 c = box.center();
     const float radius = std::max(glm::length(0.5f * box.extent()), 1e-4f);
@@ -122,7 +122,7 @@ CameraSpec frame_points_along(std::span<const glm::vec3> points, glm::vec3 to_ey
     local.reserve(points.size());
     float hi_x = -INFINITY, lo_x = INFINITY, hi_y = -INFINITY, lo_y = INFINITY, z_max = -INFINITY;
     for (const glm::vec3& p : points) {
-        if (!is_finite(p)) continue;
+        if (!core::is_finite(p)) continue;
         const glm::vec3 rel = p - c;
         const glm::vec3 q{glm::dot(rel, right), glm::dot(rel, up), glm::dot(rel, back)};
         local.push_back(q);
@@ -164,7 +164,7 @@ CameraSpec frame_points_along(std::span<const glm::vec3> points, glm::vec3 to_ey
     return s;
 }
 
-CameraSpec frame_box(const Aabb& box, const FramingOptions& options, glm::vec3 front_hint) {
+CameraSpec frame_box(const core::Aabb& box, const FramingOptions& options, glm::vec3 front_hint) {
     return frame_box_along(box, auto_view_direction(box, front_hint), options);
 }
 

@@ -10,12 +10,12 @@
 namespace sherpa {
 namespace {
 
-Aabb bounds_of(const Scene& scene, const Pose* pose, bool skip_backdrop) {
+core::Aabb bounds_of(const Scene& scene, const Pose* pose, bool skip_backdrop) {
     const auto backdrop = [&](std::uint32_t node) {
         return skip_backdrop && std::find(scene.backdrop_nodes.begin(), scene.backdrop_nodes.end(),
                                           node) != scene.backdrop_nodes.end();
     };
-    Aabb box;
+    core::Aabb box;
     if (!pose) {
         for (const MeshInstance& inst : scene.instances)
             if (!backdrop(inst.node_id) && inst.world_bounds.valid()) box.expand(inst.world_bounds);
@@ -37,7 +37,7 @@ Aabb bounds_of(const Scene& scene, const Pose* pose, bool skip_backdrop) {
 constexpr float kMaxFramedCoordinate = 1e18f;
 
 bool frameable(const glm::vec3& v) {
-    return is_finite(v) && std::abs(v.x) <= kMaxFramedCoordinate &&
+    return core::is_finite(v) && std::abs(v.x) <= kMaxFramedCoordinate &&
            std::abs(v.y) <= kMaxFramedCoordinate && std::abs(v.z) <= kMaxFramedCoordinate;
 }
 
@@ -75,29 +75,29 @@ std::vector<glm::vec3> framing_points(const Scene& scene, const Pose* pose) {
     return subject.empty() ? points_of(scene, pose, false) : subject;
 }
 
-glm::vec3 framing_front_hint(const Scene& scene, const Aabb& drawn) {
+glm::vec3 framing_front_hint(const Scene& scene, const core::Aabb& drawn) {
     if (scene.placed_cameras.empty()) return glm::vec3(0.0f);
     const glm::mat4& world = scene.placed_cameras.front().world;
     const glm::vec3 eye = glm::vec3(world[3]);
-    if (drawn.valid() && is_finite(eye)) {
+    if (drawn.valid() && core::is_finite(eye)) {
         const glm::vec3 to_eye = eye - drawn.center();
         if (to_eye.x * to_eye.x + to_eye.z * to_eye.z > 1e-12f) return {to_eye.x, 0.0f, to_eye.z};
     }
     const glm::vec3 back = glm::vec3(world[2]); // the camera looks down its -Z
-    return is_finite(back) ? glm::vec3(back.x, 0.0f, back.z) : glm::vec3(0.0f);
+    return core::is_finite(back) ? glm::vec3(back.x, 0.0f, back.z) : glm::vec3(0.0f);
 }
 
 CameraSpec frame_scene(const Scene& scene, const Pose* pose, const FramingOptions& options) {
     const std::vector<glm::vec3> points = framing_points(scene, pose);
-    Aabb drawn;
+    core::Aabb drawn;
     for (const glm::vec3& p : points) drawn.expand(p);
     if (!drawn.valid()) return frame_box(scene.bounds, options);
     return frame_points_along(points, auto_view_direction(drawn, framing_front_hint(scene, drawn)),
                               options);
 }
 
-Aabb framing_bounds(const Scene& scene, const Pose* pose) {
-    const Aabb subject = bounds_of(scene, pose, true);
+core::Aabb framing_bounds(const Scene& scene, const Pose* pose) {
+    const core::Aabb subject = bounds_of(scene, pose, true);
     return subject.valid() ? subject : bounds_of(scene, pose, false);
 }
 

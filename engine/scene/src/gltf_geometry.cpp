@@ -250,7 +250,7 @@ void import_primitive(ImportContext& ctx, std::uint32_t mesh_index, std::uint32_
     mesh.sources[static_cast<std::size_t>(VertexAttribute::Position)] =
         describe_accessor(model, pos_it->second);
     for (std::uint32_t i = 0; i < vertex_count; ++i)
-        if (!is_finite(mesh.vertices[i].position))
+        if (!core::is_finite(mesh.vertices[i].position))
             fail(where + ".attributes.POSITION[" + std::to_string(i) +
                  "] is not finite (NaN or Inf)");
     read_vec_attribute(ctx, prim, "NORMAL", {3}, vertex_count, where, mesh, VertexAttribute::Normal,

@@ -18,7 +18,7 @@ std::string light_problem(const tinygltf::Light& src, const Light& l) {
         return ".type: \"" + src.type + "\" is not directional, point or spot";
     if (!std::isfinite(l.intensity) || l.intensity < 0.0f)
         return ".intensity: " + number_text(src.intensity) + " is negative or not finite";
-    if (!is_finite(l.color) || l.color.x < 0.0f || l.color.y < 0.0f || l.color.z < 0.0f)
+    if (!core::is_finite(l.color) || l.color.x < 0.0f || l.color.y < 0.0f || l.color.z < 0.0f)
         return ".color: has negative or non-finite components";
     if (l.type == LightType::Spot &&
         !(l.inner_cone >= 0.0f && l.inner_cone < l.outer_cone && l.outer_cone <= 1.5707964f))
@@ -166,7 +166,7 @@ void import_nodes_and_scenes(ImportContext& ctx) {
             for (int k = 0; k < 16; ++k)
                 glm::value_ptr(node.matrix)[k] =
                     static_cast<float>(src.matrix[static_cast<std::size_t>(k)]);
-            if (!is_finite(node.matrix)) fail(where + ".matrix: not finite");
+            if (!core::is_finite(node.matrix)) fail(where + ".matrix: not finite");
         } else if (!src.matrix.empty()) {
             fail(where + ".matrix: has " + std::to_string(src.matrix.size()) + " elements, not 16");
         }
@@ -178,7 +178,7 @@ void import_nodes_and_scenes(ImportContext& ctx) {
             node.rotation =
                 glm::quat(static_cast<float>(src.rotation[3]), static_cast<float>(src.rotation[0]),
                           static_cast<float>(src.rotation[1]), static_cast<float>(src.rotation[2]));
-        if (!is_finite(node.local_transform()))
+        if (!core::is_finite(node.local_transform()))
             fail(where + ": translation/rotation/scale not finite");
         for (int child : src.children) {
             if (child < 0 || static_cast<std::size_t>(child) >= n)

@@ -161,11 +161,11 @@ void import_gpu_instancing(ImportContext& ctx) {
             // Quantized rotations are unit length within their step; renormalised. A
             // zero or non-finite quaternion has no rotation to draw.
             const float len = glm::length(row.rotation);
-            bool ok = is_finite(row.translation) && is_finite(row.scale) && std::isfinite(len) &&
-                      len > 1e-6f;
+            bool ok = core::is_finite(row.translation) && core::is_finite(row.scale) &&
+                      std::isfinite(len) && len > 1e-6f;
             if (ok) {
                 row.rotation /= len;
-                ok = is_finite(row.matrix());
+                ok = core::is_finite(row.matrix());
             }
             if (!ok) {
                 if (dropped++ == 0) first_dropped = r;

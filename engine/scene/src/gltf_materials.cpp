@@ -99,8 +99,8 @@ void read_specular_glossiness(ImportContext& ctx, const tinygltf::Value& e, Mate
     m.base_color_factor = vec_or(e, "diffuseFactor", glm::vec4(1.0f), 4);
     sg.specular_factor = glm::vec3(vec_or(e, "specularFactor", glm::vec4(1.0f), 3));
     sg.glossiness_factor = number_or(e, "glossinessFactor", 1.0f);
-    if (!is_finite(glm::vec3(m.base_color_factor)) || !std::isfinite(m.base_color_factor.w) ||
-        !is_finite(sg.specular_factor) || !std::isfinite(sg.glossiness_factor))
+    if (!core::is_finite(glm::vec3(m.base_color_factor)) || !std::isfinite(m.base_color_factor.w) ||
+        !core::is_finite(sg.specular_factor) || !std::isfinite(sg.glossiness_factor))
         fail(w + ": diffuseFactor, specularFactor and glossinessFactor must be finite");
     m.base_color = e.Has("diffuseTexture") ? read_value_slot(ctx, e.Get("diffuseTexture"),
                                                              w + ".diffuseTexture", kRoleColor)
@@ -151,7 +151,7 @@ MaterialSpecular read_specular(ImportContext& ctx, const tinygltf::Value& e,
     }
     if (e.IsObject() && e.Has("specularColorFactor")) {
         const glm::vec4 c = vec_or(e, "specularColorFactor", glm::vec4(nan), 3);
-        if (!is_finite(glm::vec3(c))) {
+        if (!core::is_finite(glm::vec3(c))) {
             ctx.warn(w + ".specularColorFactor: not three finite numbers; the default [1, 1, 1] "
                          "is used");
         } else if (glm::any(glm::lessThan(glm::vec3(c), glm::vec3(0.0f)))) {
@@ -192,9 +192,9 @@ void check_factors(ImportContext& ctx, MaterialInstance& m, const std::string& w
         value = fallback;
         ctx.warn(where + "." + name + ": not finite; the glTF default is used");
     };
-    reset(!is_finite(glm::vec3(m.base_color_factor)) || !std::isfinite(m.base_color_factor.w),
+    reset(!core::is_finite(glm::vec3(m.base_color_factor)) || !std::isfinite(m.base_color_factor.w),
           m.base_color_factor, defaults.base_color_factor, "pbrMetallicRoughness.baseColorFactor");
-    reset(!is_finite(m.emissive_factor), m.emissive_factor, defaults.emissive_factor,
+    reset(!core::is_finite(m.emissive_factor), m.emissive_factor, defaults.emissive_factor,
           "emissiveFactor");
     reset(!std::isfinite(m.metallic_factor), m.metallic_factor, defaults.metallic_factor,
           "pbrMetallicRoughness.metallicFactor");

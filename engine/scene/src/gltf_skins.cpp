@@ -27,7 +27,7 @@ std::vector<glm::vec3> read_vec3s(ImportContext& ctx, int accessor, std::uint32_
     std::vector<glm::vec3> out(count);
     for (std::uint32_t i = 0; i < count; ++i) {
         out[i] = {values[3 * i], values[3 * i + 1], values[3 * i + 2]};
-        if (!is_finite(out[i]))
+        if (!core::is_finite(out[i]))
             fail(path + "[" + std::to_string(i) + "] is not finite (NaN or Inf)");
     }
     return out;
@@ -199,7 +199,7 @@ void import_skins(ImportContext& ctx) {
                 for (std::size_t j = 0; j < skin.joints.size(); ++j) {
                     for (int k = 0; k < 16; ++k)
                         glm::value_ptr(skin.inverse_bind[j])[k] = v[16 * j + k];
-                    if (!is_finite(skin.inverse_bind[j]))
+                    if (!core::is_finite(skin.inverse_bind[j]))
                         fail(path + "[" + std::to_string(j) + "] is not finite");
                     if (std::abs(glm::determinant(skin.inverse_bind[j])) < 1e-12f) ++degenerate;
                 }

@@ -172,7 +172,7 @@ SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptio
         TangentWorkspace workspace;
 #pragma omp for schedule(dynamic, 1)
         for (std::int64_t i = 0; i < mesh_count; ++i) {
-            if (is_cancelled(options.cancel)) continue;
+            if (core::is_cancelled(options.cancel)) continue;
             Mesh& mesh = scene.meshes[static_cast<std::size_t>(i)];
             MeshTangentReport& out = report.meshes[static_cast<std::size_t>(i)];
             // Reports the mesh as done however the body below leaves it.

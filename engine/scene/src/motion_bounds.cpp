@@ -20,15 +20,15 @@ const std::vector<glm::mat4>* joints_of(const Scene& scene, const Pose& pose, st
 
 // Transformed boxes are computed in float like the positions they bound; this slack
 // (relative to the box's magnitude) covers the rounding of both.
-Aabb padded(const Aabb& b) {
+core::Aabb padded(const core::Aabb& b) {
     if (!b.valid()) return b;
     const glm::vec3 mag = glm::max(glm::abs(b.min), glm::abs(b.max));
     const float pad = 1e-5f * std::max({mag.x, mag.y, mag.z, 1e-30f});
-    return Aabb::from_min_max(b.min - glm::vec3(pad), b.max + glm::vec3(pad));
+    return core::Aabb::from_min_max(b.min - glm::vec3(pad), b.max + glm::vec3(pad));
 }
 
 // A box the pose pushed past the float range (inf, or NaN from inf - inf).
-bool overflows(const Aabb& b) {
+bool overflows(const core::Aabb& b) {
     return b.valid() && box_is_invalid(b.min, b.max);
 }
 
@@ -69,9 +69,9 @@ std::vector<glm::vec3> posed_positions(const Scene& scene, const Pose& pose, std
     return out;
 }
 
-Aabb culling_bounds(const Scene& scene, const Pose& pose, std::uint32_t node,
-                    const PrimitiveInfo& prim, const glm::mat4& instance) {
-    if (prim.engine_mesh < 0) return Aabb::empty();
+core::Aabb culling_bounds(const Scene& scene, const Pose& pose, std::uint32_t node,
+                          const PrimitiveInfo& prim, const glm::mat4& instance) {
+    if (prim.engine_mesh < 0) return core::Aabb::empty();
     const glm::mat4 world = pose.world[node] * instance;
     if (prim.motion < 0)
         return padded(
@@ -80,7 +80,7 @@ Aabb culling_bounds(const Scene& scene, const Pose& pose, std::uint32_t node,
     const PrimitiveMotion& m = scene.motions[static_cast<std::size_t>(prim.motion)];
     const auto* joints = joints_of(scene, pose, node, &m);
     const auto& weights = pose.weights[node];
-    Aabb out;
+    core::Aabb out;
     for (const InfluenceBox& b : m.boxes) {
         glm::vec3 lo = b.base.min, hi = b.base.max;
         for (std::size_t k = 0; k < b.deltas.size() && k < weights.size(); ++k) {
@@ -91,16 +91,16 @@ Aabb culling_bounds(const Scene& scene, const Pose& pose, std::uint32_t node,
         }
         const glm::mat4& to_world =
             joints && b.joint >= 0 ? (*joints)[static_cast<std::size_t>(b.joint)] : world;
-        out.expand(Aabb::from_min_max(lo, hi).transformed(to_world));
+        out.expand(core::Aabb::from_min_max(lo, hi).transformed(to_world));
     }
     return padded(out);
 }
 
-std::vector<Aabb> instance_culling_bounds(const Scene& scene, const Pose& pose) {
+std::vector<core::Aabb> instance_culling_bounds(const Scene& scene, const Pose& pose) {
     std::vector<const PrimitiveInfo*> of_mesh(scene.meshes.size(), nullptr);
     for (const PrimitiveInfo& p : scene.primitives)
         if (p.engine_mesh >= 0) of_mesh[static_cast<std::size_t>(p.engine_mesh)] = &p;
-    std::vector<Aabb> out;
+    std::vector<core::Aabb> out;
     out.reserve(scene.instances.size());
     for (const MeshInstance& inst : scene.instances) {
         const PrimitiveInfo* p = inst.mesh_id < of_mesh.size() ? of_mesh[inst.mesh_id] : nullptr;
@@ -112,7 +112,7 @@ std::vector<Aabb> instance_culling_bounds(const Scene& scene, const Pose& pose) 
 }
 
 void apply_pose_bounds(Scene& scene, const Pose& pose) {
-    const std::vector<Aabb> bounds = instance_culling_bounds(scene, pose);
+    const std::vector<core::Aabb> bounds = instance_culling_bounds(scene, pose);
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
         MeshInstance& inst = scene.instances[i];
         inst.world = pose.world[inst.node_id] * instance_transform(scene, inst);
@@ -133,11 +133,12 @@ PosedBounds posed_scene_bounds(const Scene& scene, const Pose& pose) {
             for (const PrimitiveInfo& p : scene.primitives) {
                 if (p.mesh != static_cast<std::uint32_t>(node.mesh) || p.engine_mesh < 0) continue;
                 const std::vector<glm::vec3> posed = posed_positions(scene, pose, n, p, row);
-                const Aabb culling = culling_bounds(scene, pose, n, p, row);
+                const core::Aabb culling = culling_bounds(scene, pose, n, p, row);
                 // Both boxes leave out what either cannot bound, so the conservative one
                 // still holds the exact one.
-                if (overflows(culling) || !std::all_of(posed.begin(), posed.end(),
-                                                       [](glm::vec3 v) { return is_finite(v); })) {
+                if (overflows(culling) || !std::all_of(posed.begin(), posed.end(), [](glm::vec3 v) {
+                        return core::is_finite(v);
+                    })) {
                     overflow = true;
                     continue;
                 }
@@ -151,7 +152,7 @@ PosedBounds posed_scene_bounds(const Scene& scene, const Pose& pose) {
 }
 
 std::vector<std::uint32_t> posed_overflow_nodes(const Scene& scene, const Pose& pose) {
-    const std::vector<Aabb> boxes = instance_culling_bounds(scene, pose);
+    const std::vector<core::Aabb> boxes = instance_culling_bounds(scene, pose);
     std::vector<std::uint32_t> out;
     for (std::size_t i = 0; i < boxes.size(); ++i) {
         const std::uint32_t node = scene.instances[i].node_id;

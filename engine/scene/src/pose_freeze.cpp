@@ -8,7 +8,7 @@ Scene freeze_pose(const Scene& s, const Pose& pose) {
     Scene out = s;
     out.meshes.clear();
     out.instances.clear();
-    out.bounds = Aabb{};
+    out.bounds = core::Aabb{};
     for (const MeshInstance& inst : s.instances) {
         const PrimitiveInfo* prim = nullptr;
         for (const PrimitiveInfo& p : s.primitives)
@@ -22,7 +22,7 @@ Scene freeze_pose(const Scene& s, const Pose& pose) {
         const PrimitiveMotion* m =
             prim->motion >= 0 ? &s.motions[static_cast<std::size_t>(prim->motion)] : nullptr;
         const std::int32_t skin = s.nodes[inst.node_id].skin;
-        mesh.local_bounds = Aabb{};
+        mesh.local_bounds = core::Aabb{};
         for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
             const std::size_t src = mesh.source_vertex.empty() ? v : mesh.source_vertex[v];
             Vertex& vx = mesh.vertices[v];

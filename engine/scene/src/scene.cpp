@@ -80,7 +80,7 @@ bool select_scene(Scene& scene, std::int32_t scene_index, std::string& error) {
         scene.placed_cameras.clear();
         scene.node_world.assign(scene.nodes.size(), glm::mat4(1.0f));
         scene.displayed_nodes.clear();
-        scene.bounds = Aabb::empty();
+        scene.bounds = core::Aabb::empty();
         return true;
     }
     if (scene_index < 0 || static_cast<std::size_t>(scene_index) >= scene.scenes.size()) {
@@ -93,7 +93,7 @@ bool select_scene(Scene& scene, std::int32_t scene_index, std::string& error) {
     std::vector<PlacedCamera> cameras;
     std::vector<glm::mat4> world(scene.nodes.size(), glm::mat4(1.0f));
     std::vector<std::uint32_t> displayed;
-    Aabb bounds;
+    core::Aabb bounds;
 
     // Iterative DFS: hierarchies can be deep (VC) and the importer has already
     // rejected cycles and multiple parents, so every node is visited once.
@@ -107,7 +107,7 @@ bool select_scene(Scene& scene, std::int32_t scene_index, std::string& error) {
         const Node& node = scene.nodes[id];
         const glm::mat4& m = world[id];
         displayed.push_back(id);
-        if (!is_finite(m)) {
+        if (!core::is_finite(m)) {
             error = "nodes[" + std::to_string(id) + "]: world transform is not finite";
             return false;
         }
@@ -132,7 +132,8 @@ bool select_scene(Scene& scene, std::int32_t scene_index, std::string& error) {
                     // infinite bounds would print as null and frame nothing, and the
                     // vertices would reach the rasterizer as infinities. The instance is
                     // left out, by name; the rest of the scene is shown.
-                    if (!is_finite(inst.world_bounds.min) || !is_finite(inst.world_bounds.max)) {
+                    if (!core::is_finite(inst.world_bounds.min) ||
+                        !core::is_finite(inst.world_bounds.max)) {
                         left_out(scene,
                                  "nodes[" + std::to_string(id) + "]" +
                                      (node.name.empty() ? "" : " \"" + node.name + "\"") +

@@ -20,14 +20,14 @@ std::string_view to_string(LoadStage stage) {
 namespace detail {
 
 bool begin_stage(const LoadOptions& options, LoadStage stage, std::size_t total) {
-    if (is_cancelled(options.cancel)) return false;
+    if (core::is_cancelled(options.cancel)) return false;
     if (options.progress) options.progress(stage, 0, total);
     return true;
 }
 
 bool end_stage(const LoadOptions& options, LoadStage stage, std::size_t total) {
     if (options.progress) options.progress(stage, total, total);
-    return !is_cancelled(options.cancel);
+    return !core::is_cancelled(options.cancel);
 }
 
 bool tangent_stage(Scene& scene, const LoadOptions& options) {

@@ -10,7 +10,7 @@ namespace sherpa {
 
 namespace {
 
-glm::vec3 corner(const Aabb& b, int i) {
+glm::vec3 corner(const core::Aabb& b, int i) {
     return {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
 }
 
@@ -34,15 +34,15 @@ std::optional<glm::vec3> main_light_direction(const Scene& scene, glm::vec3 defa
     return std::nullopt;
 }
 
-Aabb drawable_bounds(const Scene& scene) {
-    Aabb b;
+core::Aabb drawable_bounds(const Scene& scene) {
+    core::Aabb b;
     for (const MeshInstance& inst : scene.instances)
         if (inst.mesh_id < scene.meshes.size() && !scene.meshes[inst.mesh_id].indices.empty())
             b.expand(inst.world_bounds);
     return b;
 }
 
-ShadowCascades fit_shadow_cascades(const CascadeCamera& camera, const Aabb& scene_bounds,
+ShadowCascades fit_shadow_cascades(const CascadeCamera& camera, const core::Aabb& scene_bounds,
                                    glm::vec3 light_dir, std::uint32_t cascades,
                                    std::uint32_t resolution) {
     ShadowCascades out;

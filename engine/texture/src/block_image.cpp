@@ -16,15 +16,15 @@ using KernelFn = void (*)(const std::uint8_t*, int, std::uint8_t*);
 
 // A requested level the CPU lacks falls back to the best one it has, so a caller
 // can never run an illegal instruction.
-KernelFn pick_kernel(BlockFormat format, SimdLevel requested) {
-    const SimdLevel level = std::min(requested, best_simd_level());
+KernelFn pick_kernel(BlockFormat format, core::SimdLevel requested) {
+    const core::SimdLevel level = std::min(requested, core::best_simd_level());
     const bool bc7 = format == BlockFormat::Bc7;
     switch (level) {
-    case SimdLevel::Avx512:
+    case core::SimdLevel::Avx512:
         return bc7 ? avx512::encode_bc7_block_kernel : avx512::encode_bc5_block_kernel;
-    case SimdLevel::Avx2:
+    case core::SimdLevel::Avx2:
         return bc7 ? avx2::encode_bc7_block_kernel : avx2::encode_bc5_block_kernel;
-    case SimdLevel::Scalar:
+    case core::SimdLevel::Scalar:
         break;
     }
     return bc7 ? scalar::encode_bc7_block_kernel : scalar::encode_bc5_block_kernel;

@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 
 bool abandoned_temp_file(std::string_view filename, fs::file_time_type::duration age) {
     if (age > std::chrono::hours(1)) return true;
-    const long pid = temp_file_writer_pid(filename);
+    const long pid = core::temp_file_writer_pid(filename);
     if (pid <= 0 || age < std::chrono::minutes(1)) return false;
     // kill(pid, 0) probes without signalling; ESRCH: no such process. EPERM means
     // it exists (another user's), so the file stays.

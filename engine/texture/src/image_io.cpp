@@ -107,7 +107,7 @@ bool probe_encoded_image(std::span<const std::uint8_t> bytes, std::string_view n
 
 bool read_image_file(const std::filesystem::path& path, RgbaImage& out, std::string& error) {
     std::vector<std::uint8_t> bytes;
-    if (!read_file(path, bytes, error)) return false;
+    if (!core::read_file(path, bytes, error)) return false;
     bool handled = false;
     const bool ok = decode_in_process(bytes, path.string(), out, error, handled);
     if (handled) return ok;
@@ -139,7 +139,7 @@ bool write_image_file(const std::filesystem::path& path, const RgbaImage& image,
             error = path.string() + ": " + error;
             return false;
         }
-        return write_file_atomic(path.string(), encoded, error);
+        return core::write_file_atomic(path.string(), encoded, error);
     }
     std::string why;
     const oiio::PluginApi* api = oiio::plugin(why);
@@ -155,14 +155,14 @@ bool write_png(const std::string& path, std::uint32_t width, std::uint32_t heigh
         error = path + ": " + error;
         return false;
     }
-    return write_file_atomic(path, std::span<const std::uint8_t>(encoded.data(), encoded.size()),
-                             error);
+    return core::write_file_atomic(
+        path, std::span<const std::uint8_t>(encoded.data(), encoded.size()), error);
 }
 
 bool read_png_rgba8(const std::string& path, std::uint32_t& width, std::uint32_t& height,
                     std::vector<std::uint8_t>& rgba, std::string& error) {
     std::vector<std::uint8_t> encoded;
-    if (!read_file(path, encoded, error)) return false;
+    if (!core::read_file(path, encoded, error)) return false;
     RgbaImage image;
     if (!decode_encoded_image(encoded, "image.png", image, error)) {
         error = path + ": " + error;

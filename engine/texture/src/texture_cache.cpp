@@ -128,7 +128,7 @@ CacheLookup TextureCache::load(const Hash128& key, const Hash128& source,
     std::vector<std::uint8_t> bytes;
     std::string error;
     // read_file refuses directories, FIFOs and devices (with their path) unread.
-    if (!read_file(path, bytes, error)) {
+    if (!core::read_file(path, bytes, error)) {
         // Vanished between the check and the read (another process evicted it).
         result.state =
             fs::exists(fs::symlink_status(path, ec)) ? LookupState::Corrupt : LookupState::Missing;
@@ -180,7 +180,7 @@ bool TextureCache::store(const Hash128& key, const Hash128& source, std::string_
         texture.metadata.emplace_back(std::string(kKeyKtxWriter), std::string(kKtxWriterName));
     texture.metadata.emplace_back(std::string(kKeyChecksum), entry_checksum(texture));
     const fs::path path = file_for(key);
-    if (!write_file_atomic(path, write_ktx2(texture), error)) return false;
+    if (!core::write_file_atomic(path, write_ktx2(texture), error)) return false;
     evict(path);
     return true;
 }

@@ -237,7 +237,7 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
         return std::move(set);
     };
     report();
-    if (is_cancelled(opt.cancel)) return stop();
+    if (core::is_cancelled(opt.cancel)) return stop();
 
     // Decode the misses, a few files at a time (OpenImageIO decodes one file on one thread).
     std::vector<RgbaImage> decoded(misses.size());
@@ -245,7 +245,7 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
     std::atomic<std::size_t> next{0};
     auto decode_worker = [&] {
         for (std::size_t i; (i = next++) < misses.size();) {
-            if (is_cancelled(opt.cancel)) return;
+            if (core::is_cancelled(opt.cancel)) return;
             PreparedTexture& t = set.textures[misses[i]];
             const auto start = std::chrono::steady_clock::now();
             // Nothing may escape a worker thread (std::terminate): a failure is this
@@ -267,11 +267,11 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
     for (int w = 0; w < std::max(1, opt.decode_threads) && std::size_t(w) < misses.size(); ++w)
         workers.emplace_back(decode_worker);
     for (auto& w : workers) w.join();
-    if (is_cancelled(opt.cancel)) return stop();
+    if (core::is_cancelled(opt.cancel)) return stop();
 
     // Compress (OpenMP across blocks inside encode_image), then store.
     for (std::size_t i = 0; i < misses.size(); ++i, ++ready, report()) {
-        if (is_cancelled(opt.cancel)) return stop();
+        if (core::is_cancelled(opt.cancel)) return stop();
         PreparedTexture& t = set.textures[misses[i]];
         if (decoded[i].empty()) {
             t.failed = true;

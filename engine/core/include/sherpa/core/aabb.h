@@ -3,7 +3,7 @@
 // that inverted +-FLT_MAX sentinels never leak into later stages.
 #include <glm/glm.hpp>
 
-namespace sherpa {
+namespace sherpa::core {
 
 struct Aabb {
     glm::vec3 min{0.0f};
@@ -28,4 +28,4 @@ struct Aabb {
 bool is_finite(glm::vec3 v);
 bool is_finite(const glm::mat4& m);
 
-} // namespace sherpa
+} // namespace sherpa::core

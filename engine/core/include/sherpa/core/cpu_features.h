@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string_view>
 
-namespace sherpa {
+namespace sherpa::core {
 
 enum class SimdLevel : std::uint8_t { Scalar, Avx2, Avx512 };
 std::string_view to_string(SimdLevel s);
@@ -14,4 +14,4 @@ std::string_view to_string(SimdLevel s);
 // the kernels are compiled with (engine/texture/CMakeLists.txt).
 SimdLevel best_simd_level();
 
-} // namespace sherpa
+} // namespace sherpa::core

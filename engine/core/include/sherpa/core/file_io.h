@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace sherpa {
+namespace sherpa::core {
 
 // Reads a whole regular file. Returns false and fills `error` (naming the file) on
 // failure, also for a directory, FIFO or device, which are refused before any read:
@@ -27,4 +27,4 @@ bool write_file_atomic(const std::filesystem::path& path, std::span<const std::u
 // or 0 when the name is not one or holds no PID.
 long temp_file_writer_pid(std::string_view filename);
 
-} // namespace sherpa
+} // namespace sherpa::core

@@ -2,7 +2,7 @@
 // Process-wide heap settings an application applies once at start-up (never a
 // library: it changes malloc for the whole process).
 
-namespace sherpa {
+namespace sherpa::core {
 
 // A CPU Vulkan device (lavapipe) allocates each frame's working memory (binned
 // triangles, vertex-shader output per draw) from this process's heap and frees it
@@ -16,4 +16,4 @@ namespace sherpa {
 // No-op outside glibc.
 void keep_freed_memory_mapped();
 
-} // namespace sherpa
+} // namespace sherpa::core

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <functional>
 
-namespace sherpa {
+namespace sherpa::core {
 
 // Set from any thread; the operation polls it between units of work and, once it
 // sees it, stops and returns no partial result.
@@ -26,4 +26,4 @@ inline bool is_cancelled(const CancelToken* token) {
 // Called on the thread doing the work (worker threads for parallel stages).
 using ProgressCallback = std::function<void(std::size_t done, std::size_t total)>;
 
-} // namespace sherpa
+} // namespace sherpa::core

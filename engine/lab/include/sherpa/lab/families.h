@@ -153,6 +153,6 @@ bool parse_shadow_method(std::string_view name, std::uint32_t& resolution, std::
 // The culling family's default path around `bounds`: half the cameras orbit outside
 // at the framing distance looking at the centre (everything in view), half stand
 // inside at half the radius looking outward (about half culled); 60 degrees, 16:9.
-std::vector<CameraSpec> camera_path(const Aabb& bounds, std::uint32_t count);
+std::vector<CameraSpec> camera_path(const core::Aabb& bounds, std::uint32_t count);
 
 } // namespace sherpa::lab

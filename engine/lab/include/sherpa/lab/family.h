@@ -77,10 +77,10 @@ struct FamilyReport {
 
 struct RunControl {
     // Units of work done of the total (methods x inputs); called on the running thread.
-    ProgressCallback progress;
+    core::ProgressCallback progress;
     // Polled between units of work; once cancelled run() returns a report with
     // `cancelled` set and no methods.
-    const CancelToken* cancel = nullptr;
+    const core::CancelToken* cancel = nullptr;
 };
 
 class Family {

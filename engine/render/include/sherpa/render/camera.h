@@ -54,7 +54,7 @@ CascadeCamera cascade_camera(const CameraView& view);
 // What resolving a camera reads of a scene: its bounds (auto framing) and its cameras
 // (gltf:N), kept by a renderer between frames without the rest of the Scene.
 struct SceneCameras {
-    Aabb bounds;
+    core::Aabb bounds;
     std::vector<Camera> cameras;
     std::vector<PlacedCamera> placed_cameras;
 };

@@ -21,7 +21,7 @@
 namespace sherpa::gpu {
 
 // GPUCullObject, GPUCullParams: gpu_structs.h, with the engine's other GPU twins.
-GPUCullObject make_cull_object(const Aabb& box, std::uint32_t batch, std::uint32_t instance);
+GPUCullObject make_cull_object(const core::Aabb& box, std::uint32_t batch, std::uint32_t instance);
 GPUCullParams cull_params(const Frustum& frustum, CullMethod method, std::uint32_t object_count);
 
 // Results of one culling run, read back (check mode).
@@ -72,7 +72,7 @@ public:
     // bounds, GPU instance index = scene instance index, index ranges laid out mesh
     // after mesh in one buffer.
     void build(const MeshPass& pass, const Scene& scene);
-    void build(const MeshPass& pass, std::span<const Aabb> bounds,
+    void build(const MeshPass& pass, std::span<const core::Aabb> bounds,
                std::span<const std::uint32_t> gpu_instance, std::span<const GpuMesh> meshes);
 
     // Records: reset the indirect commands from their clear copy, write the frame's

@@ -147,10 +147,10 @@ public:
     const std::vector<GpuMesh>& meshes() const { return meshes_; }
     const std::vector<DrawGroup>& groups() const { return groups_; }
     // World bounds per GPU instance (draw-group order) for sorting and overlays.
-    const std::vector<Aabb>& instance_bounds() const { return instance_bounds_; }
+    const std::vector<core::Aabb>& instance_bounds() const { return instance_bounds_; }
     // Scene instance index per GPU instance (draw-group order).
     const std::vector<std::uint32_t>& scene_instances() const { return scene_instances_; }
-    const Aabb& bounds() const { return bounds_; }
+    const core::Aabb& bounds() const { return bounds_; }
     // Null when no instanced mesh has triangles (then there are no draw groups).
     VkBuffer index_buffer() const {
         return indices_.valid() ? resources_.get(indices_).buffer.get() : VK_NULL_HANDLE;
@@ -184,9 +184,9 @@ private:
     std::vector<GpuMesh> meshes_;
     std::vector<DrawGroup> groups_;
     std::vector<std::pair<AlphaMode, bool>> material_modes_; // per material: alpha, double-sided
-    std::vector<Aabb> instance_bounds_;
+    std::vector<core::Aabb> instance_bounds_;
     std::vector<std::uint32_t> scene_instances_;
-    Aabb bounds_;
+    core::Aabb bounds_;
     GpuMemoryReport memory_;
     std::uint64_t triangles_ = 0;
 };

@@ -46,8 +46,8 @@ struct TextureSettings {
     // Handed to the texture pipeline (tex::PipelineOptions): textures ready of
     // textures, and a token that stops the preparation (the set comes back
     // `cancelled` and empty).
-    ProgressCallback progress;
-    const CancelToken* cancel = nullptr;
+    core::ProgressCallback progress;
+    const core::CancelToken* cancel = nullptr;
 };
 
 } // namespace sherpa::gpu

@@ -50,12 +50,12 @@ std::vector<glm::vec3> posed_positions(const Scene& scene, const Pose& pose, std
 // weights: always contains posed_positions, costs O(joints + targets), not O(vertices).
 // Not finite where the pose leaves the float range (posed_overflow_nodes()): culling
 // then keeps the instance (an invalid box is never culled).
-Aabb culling_bounds(const Scene& scene, const Pose& pose, std::uint32_t node,
-                    const PrimitiveInfo& prim, const glm::mat4& instance = glm::mat4(1.0f));
+core::Aabb culling_bounds(const Scene& scene, const Pose& pose, std::uint32_t node,
+                          const PrimitiveInfo& prim, const glm::mat4& instance = glm::mat4(1.0f));
 
 // Conservative world bounds of every instance (Scene::instances order) in `pose`: its
 // primitive's culling_bounds() on its node (and row). What culling uses while things move.
-std::vector<Aabb> instance_culling_bounds(const Scene& scene, const Pose& pose);
+std::vector<core::Aabb> instance_culling_bounds(const Scene& scene, const Pose& pose);
 
 // Moves `scene`'s instances to `pose` for culling: world matrices from the pose and
 // world_bounds from instance_culling_bounds() (vertices are not changed).
@@ -73,7 +73,7 @@ Scene freeze_pose(const Scene& scene, const Pose& pose);
 // boxes, which stay finite, and its node is listed in `overflow` (once, in displayed
 // order). The static path refuses the same at load (world bounds overflow).
 struct PosedBounds {
-    Aabb exact, culling;
+    core::Aabb exact, culling;
     std::vector<std::uint32_t> overflow; // nodes whose posed bounds leave the float range
 };
 PosedBounds posed_scene_bounds(const Scene& scene, const Pose& pose);

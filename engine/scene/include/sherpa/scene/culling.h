@@ -51,11 +51,11 @@ std::string_view to_string(CullMethod m);
 bool parse_cull_method(std::string_view s, CullMethod& out);
 
 // Single-box tests (valid boxes only).
-bool sphere_visible(const Frustum& f, const Aabb& box);
-bool pvertex_visible(const Frustum& f, const Aabb& box);
+bool sphere_visible(const Frustum& f, const core::Aabb& box);
+bool pvertex_visible(const Frustum& f, const core::Aabb& box);
 // Separating-axis test between the box and the frustum polyhedron (handles an
 // infinite far plane through the corners at infinity).
-bool exact_visible(const Frustum& f, const Aabb& box);
+bool exact_visible(const Frustum& f, const core::Aabb& box);
 // Not valid: non-finite components or min > max on some axis.
 bool box_is_invalid(glm::vec3 min, glm::vec3 max);
 
@@ -69,10 +69,11 @@ struct BoxesSoA {
     // whole block when its bounds are wholly outside a plane or wholly inside every
     // plane. Filled by assign(); arrays changed afterwards need assign() again.
     std::vector<float> block_min_x, block_min_y, block_min_z, block_max_x, block_max_y, block_max_z;
-    void assign(std::span<const Aabb> boxes);
+    void assign(std::span<const core::Aabb> boxes);
     std::size_t size() const { return min_x.size(); }
-    Aabb box(std::size_t i) const {
-        return Aabb::from_min_max({min_x[i], min_y[i], min_z[i]}, {max_x[i], max_y[i], max_z[i]});
+    core::Aabb box(std::size_t i) const {
+        return core::Aabb::from_min_max({min_x[i], min_y[i], min_z[i]},
+                                        {max_x[i], max_y[i], max_z[i]});
     }
 };
 
@@ -85,8 +86,8 @@ struct CullCounts {
 // Culls every box; writes visible[i] = 1 or 0. `visible.size()` must equal
 // `boxes.size()`. `level` above what the CPU supports falls back to the best one.
 // `threads` > 1 splits the range across OpenMP threads.
-CullCounts cull_boxes(const Frustum& f, const BoxesSoA& boxes, CullMethod method, SimdLevel level,
-                      std::span<std::uint8_t> visible, int threads = 1);
+CullCounts cull_boxes(const Frustum& f, const BoxesSoA& boxes, CullMethod method,
+                      core::SimdLevel level, std::span<std::uint8_t> visible, int threads = 1);
 
 namespace detail {
 // p-vertex batch kernels over [begin, end); return the number visible. Exposed

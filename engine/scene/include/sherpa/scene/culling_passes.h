@@ -24,7 +24,7 @@ struct CullStats {
     std::string pass;
     glm::mat4 view_projection{1.0f}; // the volume culled against (set by the caller)
     CullMethod method = CullMethod::PVertex;
-    SimdLevel simd = SimdLevel::Scalar;
+    core::SimdLevel simd = core::SimdLevel::Scalar;
     std::uint64_t total = 0, tested = 0, visible = 0, culled = 0, invalid = 0;
     // Instances of `total` whose node (or an ancestor) is hidden: never tested nor
     // drawn, neither visible nor culled (tested = total - hidden when culling runs).
@@ -50,7 +50,7 @@ struct PassResult {
 
 struct CullOptions {
     CullMethod method = CullMethod::PVertex;
-    SimdLevel simd = SimdLevel::Avx512; // clamped to the CPU's best
+    core::SimdLevel simd = core::SimdLevel::Avx512; // clamped to the CPU's best
     int threads = 1;
     bool count_false_positives = false; // also run the exact test to count them
     // Shadow pass: only shadow casters (not alpha-blended) are in the pass; the

@@ -37,7 +37,7 @@ inline constexpr float kFramingAzimuthDegrees = 35.0f;
 // front is `front_hint`'s horizontal part where it has one; otherwise the horizontal
 // axis (+X or +Z) along which the box is clearly thinner (a character stands wider
 // across its shoulders than deep; a panel is thinnest along its normal), +Z on a tie.
-glm::vec3 auto_view_direction(const Aabb& box, glm::vec3 front_hint = glm::vec3(0.0f));
+glm::vec3 auto_view_direction(const core::Aabb& box, glm::vec3 front_hint = glm::vec3(0.0f));
 
 // Camera at `box`'s centre, looking from `to_eye` (any length > 0; towards the eye),
 // backed off until all 8 corners lie inside the frustum of `options` (with the
@@ -46,10 +46,10 @@ glm::vec3 auto_view_direction(const Aabb& box, glm::vec3 front_hint = glm::vec3(
 // degrees it also stays above the box's top (below its bottom), so the top is seen.
 // Up is +Y (-Z when looking straight down or up); far is infinite. An invalid box
 // frames the unit cube around the origin.
-CameraSpec frame_box_along(const Aabb& box, glm::vec3 to_eye, const FramingOptions& options);
+CameraSpec frame_box_along(const core::Aabb& box, glm::vec3 to_eye, const FramingOptions& options);
 
 // The automatic view: frame_box_along(box, auto_view_direction(box, front_hint), options).
-CameraSpec frame_box(const Aabb& box, const FramingOptions& options,
+CameraSpec frame_box(const core::Aabb& box, const FramingOptions& options,
                      glm::vec3 front_hint = glm::vec3(0.0f));
 
 // Camera looking from `to_eye` (any length > 0) that fits `points` (non-finite ones
@@ -69,7 +69,7 @@ CameraSpec frame_points_along(std::span<const glm::vec3> points, glm::vec3 to_ey
 // one is given (exact: every posed vertex, as `info --time` reports them) else as
 // loaded; without Scene::backdrop_nodes (the built-in ground plane), unless nothing
 // else is drawn. Invalid when nothing is drawn.
-Aabb framing_bounds(const Scene& scene, const Pose* pose = nullptr);
+core::Aabb framing_bounds(const Scene& scene, const Pose* pose = nullptr);
 
 // The world positions of the same vertices (every instance, instancing rows
 // included), posed in `pose` when given; non-finite ones left out.
@@ -79,7 +79,7 @@ std::vector<glm::vec3> framing_points(const Scene& scene, const Pose* pose = nul
 // (its horizontal direction from `drawn`'s centre, else the horizontal part of the
 // direction it looks back along), so that a file that places a camera is seen from
 // the side its author chose; zero (no hint) when the file places none.
-glm::vec3 framing_front_hint(const Scene& scene, const Aabb& drawn);
+glm::vec3 framing_front_hint(const Scene& scene, const core::Aabb& drawn);
 
 // The automatic view of a scene (CLI `--camera auto`, the editor on load and on Frame
 // all): frame_points_along(framing_points(), auto_view_direction(framing_bounds(),

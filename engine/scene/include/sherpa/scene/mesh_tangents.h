@@ -52,10 +52,10 @@ struct SceneTangentOptions {
     bool regenerate = false;
     // Meshes done of meshes in the scene, called on OpenMP worker threads as each
     // mesh finishes; must be thread-safe.
-    ProgressCallback progress;
+    core::ProgressCallback progress;
     // Polled before each mesh: once cancelled the remaining meshes are skipped
     // (the scene is then half done and must be discarded).
-    const CancelToken* cancel = nullptr;
+    const core::CancelToken* cancel = nullptr;
 };
 
 struct SceneTangentReport {

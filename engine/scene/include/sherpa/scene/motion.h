@@ -33,8 +33,8 @@ struct MorphTarget {
 // joints' transforms of that box.
 struct InfluenceBox {
     std::int32_t joint = -1; // index into the skin's joints; -1: not skinned
-    Aabb base;
-    std::vector<Aabb> deltas; // per morph target (empty boxes where it moves nothing)
+    core::Aabb base;
+    std::vector<core::Aabb> deltas; // per morph target (empty boxes where it moves nothing)
 };
 
 // The motion data of one triangle primitive, in the file's vertex order ("source

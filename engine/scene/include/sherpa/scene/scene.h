@@ -72,7 +72,7 @@ struct Mesh {
     std::array<Provenance, kVertexAttributeCount> provenance{};
     std::array<std::optional<AccessorSource>, kVertexAttributeCount> sources;
     std::optional<AccessorSource> index_source;
-    Aabb local_bounds;
+    core::Aabb local_bounds;
     // Counted the glTF way, before unwelding/splitting.
     std::uint32_t source_vertex_count = 0;
     std::uint32_t source_triangle_count = 0;
@@ -202,7 +202,7 @@ struct MeshInstance {
     std::int32_t row = -1; // its node's EXT_mesh_gpu_instancing row (Node::instancing), -1: none
     glm::mat4 world{1.0f}; // node world x the row's T * R * S
     glm::mat4 prev_world{1.0f};
-    Aabb world_bounds;
+    core::Aabb world_bounds;
 };
 
 struct SceneDef {
@@ -256,7 +256,7 @@ struct Scene {
     std::vector<PlacedCamera> placed_cameras;
     std::vector<glm::mat4> node_world;          // identity for nodes outside the displayed scene
     std::vector<std::uint32_t> displayed_nodes; // nodes of the displayed scene, depth-first
-    Aabb bounds;
+    core::Aabb bounds;
     // Nodes that are a stage rather than a subject (the built-in scenes' ground plane):
     // drawn and bounded, but automatic framing leaves them out (framing_bounds()).
     std::vector<std::uint32_t> backdrop_nodes;

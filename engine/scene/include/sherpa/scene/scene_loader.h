@@ -27,7 +27,7 @@ struct LoadOptions {
     std::function<void(LoadStage stage, std::size_t done, std::size_t total)> progress;
     // Polled between stages and between meshes of the tangent stage: a cancelled
     // load returns no scene, `cancelled` set and error "cancelled".
-    const CancelToken* cancel = nullptr;
+    const core::CancelToken* cancel = nullptr;
 };
 
 // Either a scene or an error message naming the source and the problem. A failed

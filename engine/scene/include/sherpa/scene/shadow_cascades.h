@@ -54,7 +54,7 @@ struct ShadowCascades {
 
 // `light_dir`: the direction light travels. Returns count 0 when the bounds are
 // empty or `cascades` is 0; at most kMaxShadowCascades.
-ShadowCascades fit_shadow_cascades(const CascadeCamera& camera, const Aabb& scene_bounds,
+ShadowCascades fit_shadow_cascades(const CascadeCamera& camera, const core::Aabb& scene_bounds,
                                    glm::vec3 light_dir, std::uint32_t cascades,
                                    std::uint32_t resolution);
 
@@ -66,6 +66,6 @@ std::optional<glm::vec3> main_light_direction(const Scene& scene,
 
 // Bounds of the instances that draw (a mesh with triangles): what the renderer
 // uploads and fits its cascades to.
-Aabb drawable_bounds(const Scene& scene);
+core::Aabb drawable_bounds(const Scene& scene);
 
 } // namespace sherpa

@@ -19,9 +19,9 @@ namespace sherpa::tex {
 // Instruction sets the encoders have kernels for: the engine's one SimdLevel
 // (core layer, shared with the scene layer's culling). `best_simd_level()` asks the CPU; callers
 // pass the level explicitly so tests can compare kernels.
-using ::sherpa::best_simd_level;
-using ::sherpa::SimdLevel;
-using ::sherpa::to_string;
+using ::sherpa::core::best_simd_level;
+using ::sherpa::core::SimdLevel;
+using ::sherpa::core::to_string;
 
 struct EncodeSettings {
     int level = kBc7DefaultLevel; // clamped to the format's range

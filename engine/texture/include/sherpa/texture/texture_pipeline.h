@@ -49,14 +49,14 @@ struct PipelineOptions {
     // How long to wait for another process (or thread) making the same cache entry
     // before making it here too.
     std::chrono::milliseconds cache_lock_timeout{std::chrono::minutes(2)};
-    SimdLevel simd = best_simd_level();
+    core::SimdLevel simd = core::best_simd_level();
     // Textures ready of textures to prepare (cache hits count at once, misses as
     // each is compressed); called on the calling thread.
-    ProgressCallback progress;
+    core::ProgressCallback progress;
     // Polled before each decode and each compression: a cancelled run returns a
     // set with `cancelled` set and no textures (cache files already written stay:
     // they are complete entries).
-    const CancelToken* cancel = nullptr;
+    const core::CancelToken* cancel = nullptr;
 };
 
 // Missing: the image's file could not be read (or its bufferView is empty);

@@ -92,14 +92,14 @@ int main(int argc, char** argv) {
     // SHERPA_DEVICE=NVIDIA for a discrete GPU).
     std::unique_ptr<gpu::Context> gpu_context;
     std::unique_ptr<gpu::ResourceManager> gpu_resources;
-    std::unique_ptr<gpu::GpuCuller> gpu_culler;
+    std::unique_ptr<render::GpuCuller> gpu_culler;
     std::string gpu_name = "gpu";
     try {
         gpu::ContextOptions copt;
         copt.validation = false;
         gpu_context = std::make_unique<gpu::Context>(copt);
         gpu_resources = std::make_unique<gpu::ResourceManager>(*gpu_context);
-        gpu_culler = std::make_unique<gpu::GpuCuller>(*gpu_context, *gpu_resources);
+        gpu_culler = std::make_unique<render::GpuCuller>(*gpu_context, *gpu_resources);
         gpu_name = "gpu pvertex";
         std::printf("GPU: %s\n", gpu_context->info().name.c_str());
     } catch (const std::exception& e) {
@@ -180,7 +180,7 @@ int main(int argc, char** argv) {
             const ScenePasses passes = build_mesh_passes(*r.scene);
             gpu_culler->build(passes.forward, *r.scene);
             std::vector<double> ms;
-            gpu::GpuCullReadback rb;
+            render::GpuCullReadback rb;
             for (int k = 0; k < std::max(3, repeat / 3); ++k) {
                 rb = gpu_culler->run(f, CullMethod::PVertex);
                 ms.push_back(rb.gpu_ms);

@@ -55,7 +55,7 @@ struct FrameTime {
     double wall = 0.0, cpu = 0.0;
 };
 
-FrameTime frame_ms(gpu::Renderer& r, const gpu::FrameRequest& s) {
+FrameTime frame_ms(render::Renderer& r, const render::FrameRequest& s) {
     const double t0 = now_ms(), c0 = bench::process_cpu_ms();
     r.render(s);
     return {now_ms() - t0, bench::process_cpu_ms() - c0};
@@ -84,8 +84,8 @@ int main(int argc, char** argv) {
     core::keep_freed_memory_mapped();
     int frames = 5, repeats = 5;
     bool prefilter_only = false;
-    gpu::EnvironmentOptions options;
-    gpu::FrameRequest s;
+    render::EnvironmentOptions options;
+    render::FrameRequest s;
     std::string scene_spec =
         std::string(SHERPA_ASSETS_DIR) + "/gltf/DamagedHelmet/glTF/DamagedHelmet.gltf";
     for (int i = 1; i < argc; ++i) {
@@ -99,8 +99,8 @@ int main(int argc, char** argv) {
         else if (a == "--height" && i + 1 < argc)
             s.height = std::uint32_t(std::atoi(argv[++i]));
         else if (a == "--irradiance" && i + 1 < argc)
-            options.irradiance = std::string(argv[++i]) == "sh9" ? gpu::IrradianceMode::Sh9
-                                                                 : gpu::IrradianceMode::Cube;
+            options.irradiance = std::string(argv[++i]) == "sh9" ? render::IrradianceMode::Sh9
+                                                                 : render::IrradianceMode::Cube;
         else if (a == "--prefilter-only")
             prefilter_only = true;
         else if (!a.empty() && a[0] != '-')
@@ -114,24 +114,24 @@ int main(int argc, char** argv) {
         }
     }
     gpu::Context context;
-    gpu::Renderer renderer(context);
+    render::Renderer renderer(context);
     std::printf("device: %s\n", context.info().name.c_str());
 
     // 1. Prefilter.
-    const auto lights = gpu::installed_studio_lights();
-    gpu::EnvironmentImage image;
+    const auto lights = render::installed_studio_lights();
+    render::EnvironmentImage image;
     const auto studio = std::find_if(lights.begin(), lights.end(), [](const std::string& f) {
         return f.size() >= 10 && f.compare(f.size() - 10, 10, "studio.exr") == 0;
     });
-    image =
-        studio != lights.end() ? gpu::load_environment(*studio).image : gpu::room_environment(1024);
+    image = studio != lights.end() ? render::load_environment(*studio).image
+                                   : render::room_environment(1024);
     std::printf("prefilter %s (%ux%u), %d runs of each, in turn:\n", image.name.c_str(),
                 image.width, image.height, repeats);
     // The first environment after none also makes the split-sum lookup table (the
     // BRDF's, kept while environments follow each other); a switch to another reuses it.
     struct Series {
         std::vector<double> wall, cpu, gpu_ms, pass[5];
-        void add(const gpu::EnvironmentStats& st, double cpu_ms) {
+        void add(const render::EnvironmentStats& st, double cpu_ms) {
             wall.push_back(st.prefilter_ms), cpu.push_back(cpu_ms), gpu_ms.push_back(st.gpu_ms);
             for (int p = 0; p < 5; ++p) pass[p].push_back(st.pass_ms[p]);
         }
@@ -167,17 +167,17 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "error: %s\n", loaded.error.c_str());
         return 1;
     }
-    gpu::Renderer plain(context);
+    render::Renderer plain(context);
     renderer.load(*loaded.scene);
     plain.load(*loaded.scene);
-    const gpu::EnvironmentImage room = gpu::room_environment();
+    const render::EnvironmentImage room = render::room_environment();
     renderer.set_environment(&room, options);
-    gpu::FrameRequest solid = s;
-    solid.background = gpu::Background::Color;
+    render::FrameRequest solid = s;
+    solid.background = render::Background::Color;
     const int rounds = frames * repeats;
     Runs with, with_solid, without;
     std::vector<double> ratio, ratio_cpu, ratio_solid, ratio_solid_cpu;
-    for (gpu::Renderer* r : {&renderer, &plain}) r->render(s), r->render(solid); // warm
+    for (render::Renderer* r : {&renderer, &plain}) r->render(s), r->render(solid); // warm
     for (int i = 0; i < rounds; ++i) {
         const FrameTime a = frame_ms(renderer, s);
         const FrameTime b = frame_ms(renderer, solid);
@@ -199,22 +199,22 @@ int main(int argc, char** argv) {
     // no two frames of the environment's renderer share a view (the background is
     // drawn each frame, never kept).
     {
-        const gpu::CameraView framed =
-            gpu::resolve_camera(s.camera, *loaded.scene, float(s.width) / float(s.height));
+        const render::CameraView framed =
+            render::resolve_camera(s.camera, *loaded.scene, float(s.width) / float(s.height));
         const glm::mat4 to_world = glm::inverse(framed.view);
         const glm::vec3 forward = -glm::vec3(to_world[2]);
         const glm::vec3 centre = framed.position + forward * glm::length(framed.position);
         Pairs moving, moving_solid;
         for (int i = 0; i < rounds; ++i) {
             const float yaw = glm::radians(2.0f * float(i + 1));
-            gpu::FrameRequest m = s;
-            m.camera.kind = gpu::CameraSpec::Kind::Explicit;
+            render::FrameRequest m = s;
+            m.camera.kind = render::CameraSpec::Kind::Explicit;
             m.camera.eye = centre + glm::vec3(glm::rotate(glm::mat4(1.0f), yaw, {0, 1, 0}) *
                                               glm::vec4(framed.position - centre, 0.0f));
             m.camera.target = centre;
             m.camera.fov_degrees = glm::degrees(framed.fov_y);
-            gpu::FrameRequest m_solid = m;
-            m_solid.background = gpu::Background::Color;
+            render::FrameRequest m_solid = m;
+            m_solid.background = render::Background::Color;
             const FrameTime a = frame_ms(renderer, m);
             const FrameTime a_solid = frame_ms(renderer, m_solid);
             const FrameTime b = frame_ms(plain, m);

@@ -39,15 +39,15 @@ double median(std::vector<double> v) {
 }
 
 struct Column {
-    Column(const char* n, const gpu::FrameRequest& r) : name(n), request(r) {}
+    Column(const char* n, const render::FrameRequest& r) : name(n), request(r) {}
     const char* name;
-    gpu::FrameRequest request;
+    render::FrameRequest request;
     std::vector<double> gpu_ms;
     double cpu_ms = 0.0;
     int frames = 0;
 };
 
-void run(gpu::Renderer& renderer, Column& c, int frames) {
+void run(render::Renderer& renderer, Column& c, int frames) {
     const double cpu0 = bench::process_cpu_ms();
     for (int f = 0; f < frames; ++f) c.gpu_ms.push_back(renderer.render(c.request).gpu_ms);
     c.cpu_ms += bench::process_cpu_ms() - cpu0;
@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
     int rounds = 4, frames = 4;
     std::uint32_t bounces = 8;
     bool no_bc = false;
-    gpu::FrameRequest base;
+    render::FrameRequest base;
     base.width = 320;
     base.height = 240;
     std::string spec =
@@ -90,12 +90,12 @@ int main(int argc, char** argv) {
     gpu::ContextOptions options;
     options.validation = false; // the layer's CPU cost would distort the times
     gpu::Context context(options);
-    gpu::RendererOptions renderer_options;
+    render::RendererOptions renderer_options;
     renderer_options.ray_tracing = true;
     renderer_options.textures.cache_dir = tex::default_cache_dir_from_environment();
     renderer_options.textures.force_rgba8 = no_bc;
-    gpu::Renderer renderer(context, renderer_options);
-    const gpu::EnvironmentImage room = gpu::room_environment();
+    render::Renderer renderer(context, renderer_options);
+    const render::EnvironmentImage room = render::room_environment();
     renderer.set_environment(&room);
     LoadResult r = load_scene(spec);
     if (!r) {
@@ -107,11 +107,11 @@ int main(int argc, char** argv) {
     FramingOptions framing;
     framing.fov_y_degrees = base.camera.fov_degrees;
     framing.aspect = float(base.width) / float(base.height);
-    base.camera = gpu::explicit_camera(frame_scene(*r.scene, nullptr, framing));
+    base.camera = render::explicit_camera(frame_scene(*r.scene, nullptr, framing));
 
     Column raster{"raster lit", base};
     Column path{"path traced", base};
-    path.request.renderer = gpu::RendererKind::RayTraced;
+    path.request.renderer = render::RendererKind::RayTraced;
     path.request.path.samples = 1;
     path.request.path.max_bounces = bounces;
     Column direct{"path, 1 bounce", path.request};
@@ -137,11 +137,11 @@ int main(int argc, char** argv) {
                 (path.cpu_ms / path.frames) / (direct.cpu_ms / direct.frames));
     // The last column rendered was `direct`: the full path tracer's error needs its own
     // accumulation, redone here at the sample count measured.
-    gpu::FrameRequest again = path.request;
+    render::FrameRequest again = path.request;
     again.path.samples = std::uint32_t(std::min(path.frames, 64));
     again.path.restart = true;
     renderer.render(again);
-    const gpu::PathTraceError e = gpu::path_trace_error(renderer);
+    const render::PathTraceError e = render::path_trace_error(renderer);
     std::printf("estimated error at %u spp: %.3f%% (mean standard error %.5f of mean luminance "
                 "%.5f)\n",
                 e.samples, 100.0 * e.relative_error, e.mean_standard_error, e.mean_luminance);

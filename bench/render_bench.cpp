@@ -40,7 +40,7 @@ struct FrameTimes {
     double cpu_ms = 0.0;  // mean CPU time per frame, all threads (less sensitive to a busy machine)
 };
 
-FrameTimes measure(gpu::Renderer& renderer, const gpu::FrameRequest& s, int frames) {
+FrameTimes measure(render::Renderer& renderer, const render::FrameRequest& s, int frames) {
     std::vector<double> ms;
     double cpu0 = 0.0;
     for (int f = 0; f < frames + 2; ++f) {
@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
     sherpa::core::keep_freed_memory_mapped();
     int frames = 20;
     bool csv = false, quick = false, lit_only = false, no_bc = false;
-    gpu::FrameRequest lit;
+    render::FrameRequest lit;
     std::vector<std::string> scenes;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--frames") && i + 1 < argc)
@@ -86,9 +86,9 @@ int main(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--csv"))
             csv = true;
         else if (!std::strcmp(argv[i], "--no-prepass"))
-            lit.depth_prepass = gpu::PrepassMode::Off;
+            lit.depth_prepass = render::PrepassMode::Off;
         else if (!std::strcmp(argv[i], "--prepass"))
-            lit.depth_prepass = gpu::PrepassMode::On;
+            lit.depth_prepass = render::PrepassMode::On;
         else if (!std::strcmp(argv[i], "--no-bc")) // RGBA8 textures, as render --no-bc
             no_bc = true;
         else if (!std::strcmp(argv[i], "--no-shadows"))
@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--lit-only")) // for profilers: no floor, no shadow column
             lit_only = quick = true;
         else if (!std::strcmp(argv[i], "--view") && i + 1 < argc) {
-            const auto v = gpu::parse_debug_view(argv[++i]);
+            const auto v = render::parse_debug_view(argv[++i]);
             if (!v) {
                 std::fprintf(stderr, "error: unknown view %s\n", argv[i]);
                 return 2;
@@ -112,10 +112,10 @@ int main(int argc, char** argv) {
     gpu::ContextOptions options;
     options.validation = false; // the layer's CPU cost would distort frame times
     gpu::Context context(options);
-    gpu::RendererOptions renderer_options; // as sherpa-cli render: the user's texture cache
+    render::RendererOptions renderer_options; // as sherpa-cli render: the user's texture cache
     renderer_options.textures.cache_dir = tex::default_cache_dir_from_environment();
     renderer_options.textures.force_rgba8 = no_bc;
-    gpu::Renderer renderer(context, renderer_options);
+    render::Renderer renderer(context, renderer_options);
     std::printf("device: %s, %ux%u, median of %d frames\n", context.info().name.c_str(), lit.width,
                 lit.height, frames);
     if (csv)
@@ -131,9 +131,9 @@ int main(int argc, char** argv) {
             continue;
         }
         renderer.load(*r.scene);
-        gpu::FrameRequest floor = lit;
+        render::FrameRequest floor = lit;
         floor.floor_only = true;
-        gpu::FrameRequest uncached = lit;
+        render::FrameRequest uncached = lit;
         uncached.cache_shadows = false;
         const FrameTimes floor_t = lit_only ? FrameTimes{} : measure(renderer, floor, frames);
         const FrameTimes lit_t = measure(renderer, lit, frames);

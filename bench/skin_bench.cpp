@@ -37,7 +37,7 @@ struct Times {
     std::vector<double> wall, cpu; // per round: median wall ms, mean CPU ms per frame
 };
 
-void measure(gpu::Renderer& r, const gpu::FrameRequest& s, int frames, Times& out) {
+void measure(render::Renderer& r, const render::FrameRequest& s, int frames, Times& out) {
     std::vector<double> ms;
     r.render(s); // warm: pipelines, shadows
     const double cpu0 = bench::process_cpu_ms();
@@ -150,8 +150,8 @@ Pose bent(const Scene& tube, float degrees) {
     return evaluate_pose(copy, -1, 0.0);
 }
 
-double pass_ms(const gpu::FrameStats& f, std::string_view name) {
-    for (const gpu::PassTiming& p : f.passes)
+double pass_ms(const render::FrameStats& f, std::string_view name) {
+    for (const render::PassTiming& p : f.passes)
         if (p.name == name) return p.ms;
     return 0.0;
 }
@@ -161,21 +161,21 @@ void measure_rt(gpu::Context& context, const std::string& name, const Scene& s,
                 const std::vector<std::shared_ptr<const Pose>>& poses, int frames,
                 std::uint32_t width, std::uint32_t height) {
     for (bool refit : {true, false}) {
-        gpu::RendererOptions options;
+        render::RendererOptions options;
         options.ray_tracing = true;
         options.acceleration.refit_posed = refit;
-        gpu::Renderer renderer(context, options);
+        render::Renderer renderer(context, options);
         renderer.load(s);
-        gpu::FrameRequest settings;
+        render::FrameRequest settings;
         settings.width = width;
         settings.height = height;
         settings.shadows = false;
-        settings.view = gpu::DebugView::Normal;
-        settings.renderer = gpu::RendererKind::RayTraced;
+        settings.view = render::DebugView::Normal;
+        settings.renderer = render::RendererKind::RayTraced;
         std::vector<double> pose, blas, tlas, rays;
         for (int f = 0; f < frames; ++f) {
             settings.pose = poses[std::size_t(f) % poses.size()];
-            const gpu::FrameStats st = renderer.render(settings);
+            const render::FrameStats st = renderer.render(settings);
             pose.push_back(pass_ms(st, "pose_vertices"));
             blas.push_back(pass_ms(st, "posed_blas"));
             tlas.push_back(pass_ms(st, "tlas"));
@@ -209,7 +209,7 @@ int main(int argc, char** argv) {
         if (a == "--height") height = std::uint32_t(std::max(16, v));
     }
     gpu::Context context(gpu::ContextOptions{});
-    gpu::Renderer renderer(context);
+    render::Renderer renderer(context);
     std::printf("device: %s, %ux%u lit, %d frames x %d alternating rounds\n",
                 context.info().name.c_str(), width, height, frames, rounds);
     std::printf("%-22s %9s %12s %12s %12s %12s %7s %7s\n", "model", "vertices", "skinned ms",
@@ -258,7 +258,7 @@ int main(int argc, char** argv) {
         const auto pose =
             std::make_shared<const Pose>(evaluate_pose(s, s.animations.empty() ? -1 : 0, t));
         const Scene frozen = freeze_pose(s, *pose);
-        gpu::FrameRequest settings;
+        render::FrameRequest settings;
         settings.width = width;
         settings.height = height;
         settings.pose = pose;
@@ -272,7 +272,7 @@ int main(int argc, char** argv) {
         std::snprintf(camera, sizeof(camera), "eye=%g,%g,%g:target=%g,%g,%g:near=%g", eye.x, eye.y,
                       eye.z, c.x, c.y, c.z, 0.01f * r);
         std::string error;
-        if (!gpu::parse_camera_spec(camera, settings.camera, error)) {
+        if (!render::parse_camera_spec(camera, settings.camera, error)) {
             std::fprintf(stderr, "%s: %s\n", m.name.c_str(), error.c_str());
             return 1;
         }

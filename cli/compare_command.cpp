@@ -202,8 +202,8 @@ int run_compare(Args args) {
     std::vector<std::string> files;
     std::string image;
     bool json = false;
-    gpu::EnvironmentChoice environment; // --image: both lit as render lights its frame
-    gpu::FrameRequest lighting;
+    render::EnvironmentChoice environment; // --image: both lit as render lights its frame
+    render::FrameRequest lighting;
     for (std::size_t i = 0; i < args.size(); ++i) {
         std::string option_error;
         const OptionMatch em =

@@ -27,16 +27,16 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-nlohmann::json side_json(const std::string& file, const gpu::FrameRequest& s) {
+nlohmann::json side_json(const std::string& file, const render::FrameRequest& s) {
     return {{"file", file},
-            {"renderer", gpu::to_string(s.renderer)},
-            {"view", gpu::to_string(s.view)},
+            {"renderer", to_string(s.renderer)},
+            {"view", to_string(s.view)},
             {"texture_lod", s.texture_lod}};
 }
 
-std::string side_text(const std::string& file, const gpu::FrameRequest& s) {
-    std::string out = file + " (" + std::string(gpu::to_string(s.renderer)) + ", " +
-                      std::string(gpu::to_string(s.view));
+std::string side_text(const std::string& file, const render::FrameRequest& s) {
+    std::string out =
+        file + " (" + std::string(to_string(s.renderer)) + ", " + std::string(to_string(s.view));
     if (s.texture_lod >= 0.0f) out += ", texture lod " + std::to_string(s.texture_lod);
     return out + ")";
 }
@@ -60,7 +60,7 @@ OptionMatch parse_compare_option(Args args, std::size_t& i, CompareCliOptions& o
     const std::string_view v = args[++i];
     float number = 0.0f;
     if (a == "--compare") {
-        out.mode = gpu::parse_compare_mode(v);
+        out.mode = render::parse_compare_mode(v);
         if (out.mode)
             out.compare.mode = *out.mode;
         else
@@ -68,10 +68,10 @@ OptionMatch parse_compare_option(Args args, std::size_t& i, CompareCliOptions& o
     } else if (a == "--compare-with") {
         out.with = std::string(v);
     } else if (a == "--compare-renderer") {
-        out.renderer = gpu::parse_renderer(v);
+        out.renderer = render::parse_renderer(v);
         if (!out.renderer) error = "--compare-renderer needs raster or rt";
     } else if (a == "--compare-view") {
-        out.view = gpu::parse_debug_view(v);
+        out.view = render::parse_debug_view(v);
         if (!out.view) error = "--compare-view needs a view name (see --view)";
     } else if (a == "--compare-texture-lod") {
         if (v == "auto")
@@ -110,13 +110,13 @@ OptionMatch parse_compare_option(Args args, std::size_t& i, CompareCliOptions& o
 }
 
 int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
-    gpu::FrameRequest sa = run.settings, sb = run.settings;
-    gpu::SceneSetup setup_a = run.setup, setup_b = run.setup;
+    render::FrameRequest sa = run.settings, sb = run.settings;
+    render::SceneSetup setup_a = run.setup, setup_b = run.setup;
     if (o.renderer) sb.renderer = *o.renderer;
     if (o.view) sb.view = *o.view;
     if (o.texture_lod) sb.texture_lod = *o.texture_lod;
-    const bool rt_a = sa.renderer == gpu::RendererKind::RayTraced;
-    const bool rt_b = sb.renderer == gpu::RendererKind::RayTraced;
+    const bool rt_a = sa.renderer == render::RendererKind::RayTraced;
+    const bool rt_b = sb.renderer == render::RendererKind::RayTraced;
     if ((rt_a || rt_b) && !run.ray_tracing) {
         std::fprintf(stderr, "error: a ray-traced side needs --rt on\n");
         return kExitUsage;
@@ -132,15 +132,15 @@ int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
         scene_b = other.scene.get();
         setup_b.hidden_nodes = nullptr; // --hide-node names side A's nodes: B as loaded
         // One camera for both: 'auto' frames side A's scene, not each its own.
-        if (sa.camera.kind == gpu::CameraSpec::Kind::Auto) {
+        if (sa.camera.kind == render::CameraSpec::Kind::Auto) {
             FramingOptions framing;
             framing.aspect = float(sa.width) / float(sa.height);
             sa.camera = sb.camera =
-                gpu::explicit_camera(frame_scene(*run.scene, sa.pose.get(), framing));
+                render::explicit_camera(frame_scene(*run.scene, sa.pose.get(), framing));
         }
     }
     const std::string file_b = o.with.empty() ? run.scene_name : o.with;
-    gpu::ComparisonStats stats;
+    render::ComparisonStats stats;
     std::vector<std::uint8_t> rgba;
     try {
         gpu::ContextOptions options;
@@ -148,28 +148,28 @@ int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
         options.echo_validation = true;
         options.ray_tracing = run.ray_tracing;
         gpu::Context context(options);
-        gpu::RendererOptions ra_options, rb_options;
+        render::RendererOptions ra_options, rb_options;
         ra_options.ray_tracing = rt_a;
         rb_options.ray_tracing = rt_b;
         ra_options.textures = rb_options.textures = run.textures.gpu_settings();
         if (o.no_bc) rb_options.textures.force_rgba8 = true;
         if (o.quality) rb_options.textures.quality = *o.quality;
-        gpu::Renderer a(context, ra_options), b(context, rb_options);
-        setup_a.streams = gpu::stream_policy(sa);
-        setup_b.streams = gpu::stream_policy(sb);
+        render::Renderer a(context, ra_options), b(context, rb_options);
+        setup_a.streams = render::stream_policy(sa);
+        setup_b.streams = render::stream_policy(sb);
         // Both sides lit by one environment, as the render command's frame is; a side
         // that draws no lit view makes none (no GPU bytes).
-        if (sa.view == gpu::DebugView::Lit || sb.view == gpu::DebugView::Lit) {
+        if (sa.view == render::DebugView::Lit || sb.view == render::DebugView::Lit) {
             const auto environment = make_environment_image(run.environment);
-            if (sa.view == gpu::DebugView::Lit) a.set_environment(environment.get());
-            if (sb.view == gpu::DebugView::Lit) b.set_environment(environment.get());
+            if (sa.view == render::DebugView::Lit) a.set_environment(environment.get());
+            if (sb.view == render::DebugView::Lit) b.set_environment(environment.get());
         }
         a.load(*run.scene, setup_a);
         b.load(*scene_b, setup_b);
         std::vector<double> reduce, composite;
         for (std::uint32_t f = 0; f < run.frames; ++f) {
-            stats = gpu::render_comparison(a, sa, b, sb, o.compare,
-                                           f + 1 == run.frames ? &rgba : nullptr);
+            stats = render::render_comparison(a, sa, b, sb, o.compare,
+                                              f + 1 == run.frames ? &rgba : nullptr);
             reduce.push_back(stats.reduce_ms);
             composite.push_back(stats.composite_ms);
         }
@@ -189,7 +189,7 @@ int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
     const double threshold = std::round(double(o.compare.threshold) * 255.0 * 1000.0) / 1000.0;
     if (o.json) {
         nlohmann::json j{
-            {"mode", gpu::to_string(*o.mode)},
+            {"mode", to_string(*o.mode)},
             {"output", run.output},
             {"width", sa.width},
             {"height", sa.height},
@@ -206,7 +206,7 @@ int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
             {"pass_gpu_ms", {{"reduce", stats.reduce_ms}, {"composite", stats.composite_ms}}}};
         std::cout << j.dump(2) << "\n";
     } else {
-        std::printf("%s: A %s vs B %s\n", std::string(gpu::to_string(*o.mode)).c_str(),
+        std::printf("%s: A %s vs B %s\n", std::string(to_string(*o.mode)).c_str(),
                     side_text(run.scene_name, sa).c_str(), side_text(file_b, sb).c_str());
         std::printf("difference (8-bit steps): mean %.4g max %.0f PSNR %.2f dB, %.2f%% of %llu "
                     "pixels over %g\n",

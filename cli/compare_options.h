@@ -3,7 +3,7 @@
 // command's frame (side A) against side B, which is the same frame with the
 // --compare-* overrides (another file, renderer, view, texture LOD or texture
 // compression), drawn by a second renderer on the same device and composited on
-// the GPU (gpu::render_comparison): the PNG is the split or difference image, the
+// the GPU (render::render_comparison): the PNG is the split or difference image, the
 // statistics go to stdout (JSON with --json).
 #include "cli_common.h"
 #include "texture_cli.h" // OptionMatch, TextureCliOptions
@@ -42,14 +42,14 @@ inline constexpr const char* kCompareOptionsHelp =
     "  --json             the statistics as JSON on stdout\n";
 
 struct CompareCliOptions {
-    std::optional<gpu::CompareMode> mode; // --compare: unset, no comparison
-    std::string with;                     // another file for side B; empty: SCENE
-    std::optional<gpu::RendererKind> renderer;
-    std::optional<gpu::DebugView> view;
+    std::optional<render::CompareMode> mode; // --compare: unset, no comparison
+    std::string with;                        // another file for side B; empty: SCENE
+    std::optional<render::RendererKind> renderer;
+    std::optional<render::DebugView> view;
     std::optional<float> texture_lod;
     bool no_bc = false;
     std::optional<int> quality;
-    gpu::ComparisonSettings compare;
+    render::ComparisonSettings compare;
     bool json = false;
     bool side_b_changed() const {
         return !with.empty() || renderer || view || texture_lod || no_bc || quality;
@@ -64,13 +64,13 @@ OptionMatch parse_compare_option(Args args, std::size_t& i, CompareCliOptions& o
 struct CompareRun {
     const Scene* scene = nullptr; // side A's, loaded
     std::string scene_name;
-    gpu::FrameRequest settings; // side A's
-    gpu::SceneSetup setup;      // side A's (streams: each side's own)
+    render::FrameRequest settings; // side A's
+    render::SceneSetup setup;      // side A's (streams: each side's own)
     TextureCliOptions textures;
     bool validation = false, ray_tracing = true;
-    std::string output;                 // the PNG
-    std::uint32_t frames = 1;           // --frames: comparisons drawn (pass times: their median)
-    gpu::EnvironmentChoice environment; // both sides' (the lit view's), as render's own
+    std::string output;                    // the PNG
+    std::uint32_t frames = 1;              // --frames: comparisons drawn (pass times: their median)
+    render::EnvironmentChoice environment; // both sides' (the lit view's), as render's own
 };
 
 // Renders, writes the PNG and prints the statistics; returns the exit code.

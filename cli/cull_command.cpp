@@ -70,9 +70,10 @@ int run_cull(Args args) {
     }
     if (spec.empty()) return usage_error("no SCENE given", kUsage);
     // The renderer's parser: auto, gltf:N and explicit cameras, as `render` takes them.
-    gpu::CameraSpec camera_spec;
+    render::CameraSpec camera_spec;
     std::string error;
-    if (!gpu::parse_camera_spec(camera_text, camera_spec, error)) return usage_error(error, kUsage);
+    if (!render::parse_camera_spec(camera_text, camera_spec, error))
+        return usage_error(error, kUsage);
     CullOptions options;
     options.count_false_positives = true;
     const bool on_gpu = method_text == "gpu";
@@ -97,10 +98,10 @@ int run_cull(Args args) {
         std::fprintf(stderr, "warning: %s\n", w.c_str());
     if (const std::string hint = file_camera_hint(s, camera_spec); !hint.empty())
         std::fprintf(stderr, "note: %s\n", hint.c_str());
-    gpu::CameraView camera;
+    render::CameraView camera;
     try {
-        camera = gpu::resolve_camera(framed_camera(camera_spec, s, pose.get(), kCullAspect), s,
-                                     kCullAspect);
+        camera = render::resolve_camera(framed_camera(camera_spec, s, pose.get(), kCullAspect), s,
+                                        kCullAspect);
     } catch (const std::invalid_argument& e) {
         std::fprintf(stderr, "error: %.*s: %s\n", int(spec.size()), spec.data(), e.what());
         return kExitLoadError;
@@ -117,7 +118,7 @@ int run_cull(Args args) {
     std::vector<glm::mat4> matrices = {view_projection};
     if (const auto sun = main_light_direction(s)) {
         const ShadowCascades cascades =
-            fit_shadow_cascades(gpu::cascade_camera(camera), drawable_bounds(s), *sun,
+            fit_shadow_cascades(render::cascade_camera(camera), drawable_bounds(s), *sun,
                                 kDefaultShadowCascades, kDefaultShadowResolution);
         CullOptions shadow = options;
         shadow.casters_only = true;
@@ -131,7 +132,7 @@ int run_cull(Args args) {
     }
     if (on_gpu) {
         std::vector<PassResult> gpu_passes;
-        if (!gpu::gpu_cull_passes(s, frusta, passes, gpu_passes, error)) {
+        if (!render::gpu_cull_passes(s, frusta, passes, gpu_passes, error)) {
             std::fprintf(stderr, "error: %s\n", error.c_str());
             return kExitLoadError;
         }

@@ -7,8 +7,8 @@
 
 namespace sherpa::cli {
 
-OptionMatch parse_environment_option(Args args, std::size_t& i, gpu::FrameRequest& settings,
-                                     gpu::EnvironmentChoice& environment, std::string& error) {
+OptionMatch parse_environment_option(Args args, std::size_t& i, render::FrameRequest& settings,
+                                     render::EnvironmentChoice& environment, std::string& error) {
     const std::string_view a = args[i];
     if (a != "--environment" && a != "--environment-rotation" && a != "--environment-intensity" &&
         a != "--background" && a != "--tone-map" && a != "--exposure" && a != "--sun" &&
@@ -33,7 +33,7 @@ OptionMatch parse_environment_option(Args args, std::size_t& i, gpu::FrameReques
             error = "--environment needs room, none or a file";
             return OptionMatch::Bad;
         }
-        environment = gpu::parse_environment_choice(v);
+        environment = render::parse_environment_choice(v);
     } else if (a == "--environment-rotation" || a == "--environment-intensity" ||
                a == "--exposure") {
         if (!parse_number(v, x) || !std::isfinite(x)) {
@@ -53,16 +53,16 @@ OptionMatch parse_environment_option(Args args, std::size_t& i, gpu::FrameReques
                                           : settings.exposure) = x;
     } else if (a == "--background") {
         glm::vec3 color{};
-        const auto b = gpu::parse_background(v, color);
+        const auto b = render::parse_background(v, color);
         if (!b) {
             error = "--background needs environment, blurred or R,G,B (linear, 0 to 1), not '" +
                     std::string(v) + "'";
             return OptionMatch::Bad;
         }
         settings.background = *b;
-        if (*b == gpu::Background::Color) settings.clear_color = glm::vec4(color, 1.0f);
+        if (*b == render::Background::Color) settings.clear_color = glm::vec4(color, 1.0f);
     } else if (a == "--tone-map") {
-        const auto t = gpu::parse_tone_map(v);
+        const auto t = render::parse_tone_map(v);
         if (!t) {
             error = "--tone-map needs neutral, aces, agx or linear, not '" + std::string(v) + "'";
             return OptionMatch::Bad;
@@ -76,16 +76,16 @@ OptionMatch parse_environment_option(Args args, std::size_t& i, gpu::FrameReques
     return OptionMatch::Taken;
 }
 
-std::shared_ptr<const gpu::EnvironmentImage>
-make_environment_image(const gpu::EnvironmentChoice& environment) {
+std::shared_ptr<const render::EnvironmentImage>
+make_environment_image(const render::EnvironmentChoice& environment) {
     std::vector<std::string> warnings;
-    auto image = gpu::make_environment(environment, warnings);
+    auto image = render::make_environment(environment, warnings);
     for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     if (!image) return nullptr;
-    return std::make_shared<const gpu::EnvironmentImage>(std::move(*image));
+    return std::make_shared<const render::EnvironmentImage>(std::move(*image));
 }
 
-void apply_environment(gpu::Renderer& renderer, const gpu::EnvironmentChoice& environment) {
+void apply_environment(render::Renderer& renderer, const render::EnvironmentChoice& environment) {
     renderer.set_environment(make_environment_image(environment).get());
 }
 

@@ -11,9 +11,9 @@
 #include <sherpa/render/environment.h>
 #include <sherpa/render/frame_request.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 class Renderer;
-}
+} // namespace sherpa::render
 
 namespace sherpa::cli {
 
@@ -25,15 +25,15 @@ inline constexpr const char* kEnvironmentOptionsSynopsis =
 
 // If args[i] is one of these options, consumes it and its value (advancing i) into
 // `settings` (--environment into `environment`); Bad sets `error`.
-OptionMatch parse_environment_option(Args args, std::size_t& i, gpu::FrameRequest& settings,
-                                     gpu::EnvironmentChoice& environment, std::string& error);
+OptionMatch parse_environment_option(Args args, std::size_t& i, render::FrameRequest& settings,
+                                     render::EnvironmentChoice& environment, std::string& error);
 
 // Makes the chosen environment (null: none); its warnings (an unreadable file and the
 // fallback used, NaN texels, ...) go to stderr.
-std::shared_ptr<const gpu::EnvironmentImage>
-make_environment_image(const gpu::EnvironmentChoice& environment);
+std::shared_ptr<const render::EnvironmentImage>
+make_environment_image(const render::EnvironmentChoice& environment);
 
 // Makes the chosen environment and gives it to `renderer` (warnings as above).
-void apply_environment(gpu::Renderer& renderer, const gpu::EnvironmentChoice& environment);
+void apply_environment(render::Renderer& renderer, const render::EnvironmentChoice& environment);
 
 } // namespace sherpa::cli

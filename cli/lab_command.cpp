@@ -33,8 +33,8 @@ struct Options {
     bool max_bounces_given = false;
     // The lit frames' environment and display settings (the shadows family), parsed by
     // the options render takes: the room unless --environment says otherwise.
-    gpu::EnvironmentChoice environment;
-    gpu::FrameRequest lighting;
+    render::EnvironmentChoice environment;
+    render::FrameRequest lighting;
 };
 
 // The usage text (main.cpp) lists the engine's families (lab::family_names), the one

@@ -53,7 +53,7 @@ std::string joined(const std::vector<std::string_view>& names) {
 int run_render(Args args) {
     std::string_view spec, out_path, report_path;
     std::string camera_text = "auto";
-    gpu::FrameRequest settings;
+    render::FrameRequest settings;
     std::uint32_t frames = 1;
     bool validation = gpu::ContextOptions::default_validation();
     std::vector<std::uint32_t> hidden_nodes; // --hide-node, in the order given
@@ -63,9 +63,9 @@ int run_render(Args args) {
     std::string variant; // --variant NAME
     CompareCliOptions compare_options;
     std::uint32_t shadow_resolution = kDefaultShadowResolution;
-    gpu::EnvironmentChoice environment; // the room unless --environment says otherwise
-    settings.path.samples = 64;         // the path tracer's samples per pixel unless --spp says
-    settings.path.restart = true;       // each of --frames is an image of its own
+    render::EnvironmentChoice environment; // the room unless --environment says otherwise
+    settings.path.samples = 64;            // the path tracer's samples per pixel unless --spp says
+    settings.path.restart = true;          // each of --frames is an image of its own
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string_view a = args[i];
         std::string option_error;
@@ -105,9 +105,9 @@ int run_render(Args args) {
             (a == "--width" ? settings.width : a == "--height" ? settings.height : frames) = n;
         } else if (a == "--view") {
             auto v = value();
-            auto view = v ? gpu::parse_debug_view(*v) : std::nullopt;
+            auto view = v ? render::parse_debug_view(*v) : std::nullopt;
             if (!view)
-                return usage_error("--view needs one of: " + joined(gpu::debug_view_names()));
+                return usage_error("--view needs one of: " + joined(render::debug_view_names()));
             settings.view = *view;
         } else if (a == "--overlay") {
             // One or more names; also accepted comma-separated or repeated.
@@ -117,13 +117,13 @@ int run_render(Args args) {
                 bool all_known = true;
                 for (std::size_t at = 0; at <= list.size();) {
                     const std::size_t comma = std::min(list.find(',', at), list.size());
-                    if (!gpu::parse_overlay(list.substr(at, comma - at))) all_known = false;
+                    if (!render::parse_overlay(list.substr(at, comma - at))) all_known = false;
                     at = comma + 1;
                 }
                 if (!all_known) break; // not an overlay name: the SCENE, probably
                 for (std::size_t at = 0; at <= list.size();) {
                     const std::size_t comma = std::min(list.find(',', at), list.size());
-                    settings.overlays |= *gpu::parse_overlay(list.substr(at, comma - at));
+                    settings.overlays |= *render::parse_overlay(list.substr(at, comma - at));
                     at = comma + 1;
                 }
                 any = true;
@@ -131,12 +131,12 @@ int run_render(Args args) {
             }
             if (!any)
                 return usage_error("--overlay needs one or more of: " +
-                                   joined(gpu::overlay_names()));
+                                   joined(render::overlay_names()));
         } else if (a == "--camera") {
             auto v = value();
             if (!v) return usage_error("--camera needs a spec");
             std::string error;
-            if (!gpu::parse_camera_spec(*v, settings.camera, error)) return usage_error(error);
+            if (!render::parse_camera_spec(*v, settings.camera, error)) return usage_error(error);
             camera_text = std::string(*v);
         } else if (a == "--report") {
             auto v = value();
@@ -148,7 +148,7 @@ int run_render(Args args) {
                 return usage_error("--glyph-length needs a positive number");
         } else if (a == "--cull") {
             auto v = value();
-            const auto path = v ? gpu::parse_cull_path(*v) : std::nullopt;
+            const auto path = v ? render::parse_cull_path(*v) : std::nullopt;
             if (!path) return usage_error("--cull needs none, cpu or gpu");
             settings.cull = *path;
         } else if (a == "--cull-method") {
@@ -160,9 +160,9 @@ int run_render(Args args) {
         } else if (a == "--freeze-cull") {
             auto v = value();
             if (!v) return usage_error("--freeze-cull needs a camera spec");
-            gpu::CameraSpec frozen;
+            render::CameraSpec frozen;
             std::string error;
-            if (!gpu::parse_camera_spec(*v, frozen, error)) return usage_error(error);
+            if (!render::parse_camera_spec(*v, frozen, error)) return usage_error(error);
             settings.freeze_cull = frozen;
         } else if (a == "--validation") {
             validation = true;
@@ -172,7 +172,7 @@ int run_render(Args args) {
             ray_tracing = *v == "on";
         } else if (a == "--renderer") {
             auto v = value();
-            const auto kind = v ? gpu::parse_renderer(*v) : std::nullopt;
+            const auto kind = v ? render::parse_renderer(*v) : std::nullopt;
             if (!kind) return usage_error("--renderer needs raster or rt");
             settings.renderer = *kind;
         } else if (a == "--texture-lod") {
@@ -189,9 +189,9 @@ int run_render(Args args) {
         } else if (a == "--no-shadows") {
             settings.shadows = false;
         } else if (a == "--prepass") {
-            settings.depth_prepass = gpu::PrepassMode::On;
+            settings.depth_prepass = render::PrepassMode::On;
         } else if (a == "--no-prepass") {
-            settings.depth_prepass = gpu::PrepassMode::Off;
+            settings.depth_prepass = render::PrepassMode::Off;
         } else if (a == "--floor") {
             settings.floor_only = true;
         } else if (!a.empty() && a[0] == '-') {
@@ -206,14 +206,14 @@ int run_render(Args args) {
     if (out_path.empty()) return usage_error("no output given (-o OUT.png)");
     if (!compare_options.mode && (compare_options.side_b_changed() || compare_options.json))
         return usage_error("--compare-* and --json need --compare split|difference");
-    const bool ray_traced = settings.renderer == gpu::RendererKind::RayTraced;
+    const bool ray_traced = settings.renderer == render::RendererKind::RayTraced;
     if (ray_traced && !ray_tracing) return usage_error("--renderer rt needs --rt on");
-    if (ray_traced && !gpu::ray_traced_view(settings.view))
+    if (ray_traced && !render::ray_traced_view(settings.view))
         return usage_error("--renderer rt does not draw view '" +
-                           std::string(gpu::to_string(settings.view)) + "'");
+                           std::string(to_string(settings.view)) + "'");
     if (ray_traced && settings.overlays != 0) return usage_error("--renderer rt draws no overlays");
-    if (!ray_traced && !gpu::raster_view(settings.view))
-        return usage_error("view '" + std::string(gpu::to_string(settings.view)) +
+    if (!ray_traced && !render::raster_view(settings.view))
+        return usage_error("view '" + std::string(to_string(settings.view)) +
                            "' is drawn by rays only (--renderer rt)");
 
     const auto load_start = std::chrono::steady_clock::now();
@@ -237,8 +237,8 @@ int run_render(Args args) {
                                     float(settings.width) / float(settings.height));
     run.settings.camera = settings.camera;
     // What the load fixes: the streams the view reads, missing textures, hidden nodes.
-    gpu::SceneSetup setup;
-    setup.streams = gpu::stream_policy(settings);
+    render::SceneSetup setup;
+    setup.streams = render::stream_policy(settings);
     setup.missing_textures = texture_options.missing;
     if (!hidden_nodes.empty()) {
         auto mask = std::make_shared<std::vector<bool>>(loaded.scene->nodes.size(), false);
@@ -261,20 +261,20 @@ int run_render(Args args) {
         options.echo_validation = true;
         options.ray_tracing = ray_tracing;
         gpu::Context context(options);
-        gpu::RendererOptions renderer_options;
+        render::RendererOptions renderer_options;
         renderer_options.ray_tracing = ray_traced; // acceleration structures built on load
         renderer_options.shadow_resolution = shadow_resolution;
-        gpu::Renderer renderer(context, renderer_options);
+        render::Renderer renderer(context, renderer_options);
         // Only a lit frame is lit by it: other views make no environment (no GPU bytes).
-        if (settings.view == gpu::DebugView::Lit && !settings.floor_only)
+        if (settings.view == render::DebugView::Lit && !settings.floor_only)
             apply_environment(renderer, environment);
         // Textures are prepared (cache lookups, decode, compression) before the upload,
         // as a loader thread would, so the report can time the two apart.
-        const gpu::TextureSettings texture_settings = texture_options.gpu_settings();
+        const render::TextureSettings texture_settings = texture_options.gpu_settings();
         auto start = std::chrono::steady_clock::now();
         const auto textures = tex::prepare_scene_textures(
-            *loaded.scene, gpu::texture_target(context.info(), texture_settings),
-            gpu::texture_pipeline_options(texture_settings));
+            *loaded.scene, render::texture_target(context.info(), texture_settings),
+            render::texture_pipeline_options(texture_settings));
         run.timing.texture_prepare_ms = ms_since(start);
         start = std::chrono::steady_clock::now();
         renderer.load(*loaded.scene, textures, setup);
@@ -290,8 +290,8 @@ int run_render(Args args) {
         run.timing.load_and_first_frame_ms = run.timing.scene_load_ms +
                                              run.timing.texture_prepare_ms +
                                              run.timing.gpu_upload_ms + run.cpu_frame_ms.front();
-        if (ray_traced && settings.view == gpu::DebugView::Lit) {
-            const gpu::PathTraceError e = gpu::path_trace_error(renderer);
+        if (ray_traced && settings.view == render::DebugView::Lit) {
+            const render::PathTraceError e = render::path_trace_error(renderer);
             const double ms = run.frames.back().gpu_ms;
             std::printf("path: %u spp in %.1f ms GPU (%.2f ms per sample), ", e.samples, ms,
                         e.samples ? ms / e.samples : 0.0);
@@ -303,9 +303,9 @@ int run_render(Args args) {
                             "(%.3f%%)\n",
                             e.mean_standard_error, e.mean_luminance, 100.0 * e.relative_error);
         }
-        if (settings.view == gpu::DebugView::ShadowError) {
+        if (settings.view == render::DebugView::ShadowError) {
             // The view's pixel classes counted back (their colours are the engine's).
-            const gpu::ShadowErrorCounts n = gpu::count_shadow_error(rgba);
+            const render::ShadowErrorCounts n = render::count_shadow_error(rgba);
             std::printf("shadow-error: %.3f%% of %llu lit pixels wrong (false shadow %llu, false "
                         "light %llu; agree lit %llu, agree shadowed %llu)\n",
                         n.percent_of_lit_wrong(), (unsigned long long)n.lit(),

@@ -35,14 +35,14 @@ std::string device_type(VkPhysicalDeviceType t) {
 
 // Per prepared texture its record with the GPU side (bindless slot, mip levels,
 // device bytes), and counts by cache state and by format.
-nlohmann::json textures_json(const gpu::SceneTextures& textures,
+nlohmann::json textures_json(const render::SceneTextures& textures,
                              const std::optional<std::filesystem::path>& cache_dir) {
     using nlohmann::json;
     json list = json::array();
     std::map<std::string, int> by_state, by_format;
     for (std::size_t i = 0; i < textures.records().size(); ++i) {
         const tex::PreparedTexture& t = textures.records()[i];
-        const gpu::GpuTexture& g = textures.gpu()[i];
+        const render::GpuTexture& g = textures.gpu()[i];
         json j = texture_json(t);
         j["mips"] = g.mip_levels;
         j["bindless_slot"] = g.slot == kTextureSentinel ? json(nullptr) : json(g.slot);
@@ -62,7 +62,7 @@ nlohmann::json textures_json(const gpu::SceneTextures& textures,
 
 } // namespace
 
-nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run) {
+nlohmann::json render_report_json(render::Renderer& renderer, const RenderRun& run) {
     using nlohmann::json;
     const gpu::DeviceInfo& dev = renderer.context().info();
     json j;
@@ -78,22 +78,22 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
     j["scene"] = run.scene;
     j["width"] = run.settings.width;
     j["height"] = run.settings.height;
-    j["view"] = std::string(gpu::to_string(run.settings.view));
-    j["renderer"] = std::string(gpu::to_string(run.settings.renderer));
+    j["view"] = std::string(to_string(run.settings.view));
+    j["renderer"] = std::string(to_string(run.settings.renderer));
     j["camera"] = run.camera_text;
     j["frames"] = run.frames.size();
 
     // The environment lighting the lit view (absent: none, no GPU bytes) and the display
     // transform.
-    const gpu::EnvironmentStats env = renderer.resident().environment;
-    j["tone_map"] = std::string(gpu::to_string(run.settings.tone_map));
+    const render::EnvironmentStats env = renderer.resident().environment;
+    j["tone_map"] = std::string(to_string(run.settings.tone_map));
     j["exposure"] = run.settings.exposure;
     if (env.present)
         j["environment"] = {{"name", env.name},
                             {"source", {env.source_width, env.source_height}},
                             {"cube_size", env.cube_size},
                             {"specular_levels", env.specular_levels},
-                            {"irradiance", std::string(gpu::to_string(env.irradiance))},
+                            {"irradiance", std::string(to_string(env.irradiance))},
                             {"irradiance_size", env.irradiance_size},
                             {"sheen_size", env.sheen_size},
                             {"sheen_levels", env.sheen_levels},
@@ -103,7 +103,7 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
                             {"prefilter_gpu_ms", env.gpu_ms},
                             {"rotation_degrees", run.settings.environment_rotation},
                             {"intensity", run.settings.environment_intensity},
-                            {"background", std::string(gpu::to_string(run.settings.background))},
+                            {"background", std::string(to_string(run.settings.background))},
                             {"energy_compensation", run.settings.energy_compensation}};
     else
         j["environment"] = nullptr;
@@ -113,9 +113,9 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
         for (std::size_t i = 0; i < std::size(names); ++i) passes[names[i]] = env.pass_ms[i];
         j["environment"]["pass_gpu_ms"] = passes;
     }
-    const gpu::GpuScene* scene = renderer.scene();
+    const render::GpuScene* scene = renderer.scene();
     if (scene) {
-        const gpu::GpuMemoryReport& m = scene->memory();
+        const render::GpuMemoryReport& m = scene->memory();
         j["gpu_memory_bytes"] = {
             {"vertex_streams", m.vertex_streams},
             {"indices", m.indices},
@@ -163,8 +163,8 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
     // shadow maps; medians keep the steady state).
     std::map<std::string, std::vector<double>> per_pass;
     std::vector<double> gpu_ms;
-    for (const gpu::FrameStats& f : run.frames) {
-        for (const gpu::PassTiming& p : f.passes) per_pass[p.name].push_back(p.ms);
+    for (const render::FrameStats& f : run.frames) {
+        for (const render::PassTiming& p : f.passes) per_pass[p.name].push_back(p.ms);
         gpu_ms.push_back(f.gpu_ms);
     }
     json passes = json::object();
@@ -174,7 +174,7 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
                         {"first_frame", run.frames.empty() ? 0.0 : run.frames.front().gpu_ms}};
     j["cpu_frame_ms_median"] = median(run.cpu_frame_ms);
     if (!run.frames.empty()) {
-        const gpu::FrameStats& last = run.frames.back();
+        const render::FrameStats& last = run.frames.back();
         j["pipeline_statistics"] = {
             {"input_assembly_primitives", last.input_primitives},
             {"vertex_shader_invocations", last.vertex_invocations},
@@ -188,7 +188,7 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
         json culling = json::array();
         for (const CullStats& c : last.culling) {
             std::vector<double> cpu, gpu;
-            for (const gpu::FrameStats& f : run.frames)
+            for (const render::FrameStats& f : run.frames)
                 if (const CullStats* same = f.pass(c.pass);
                     same && (c.pass == "camera" || f.shadows_rendered)) {
                     cpu.push_back(same->cpu_ms);
@@ -196,7 +196,7 @@ nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run)
                 }
             json pass = cull_stats_json(c);
             pass["name"] = c.pass;
-            pass["path"] = std::string(gpu::to_string(run.settings.cull));
+            pass["path"] = std::string(to_string(run.settings.cull));
             pass["cpu_ms_median"] = median(cpu);
             pass["gpu_ms_median"] = gpu.empty() ? -1.0 : median(gpu);
             culling.push_back(std::move(pass));

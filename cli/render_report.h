@@ -22,14 +22,14 @@ struct LoadTiming {
 
 struct RenderRun {
     std::string scene;
-    gpu::FrameRequest settings;
+    render::FrameRequest settings;
     std::string camera_text;
-    std::vector<gpu::FrameStats> frames; // every rendered frame, in order
-    std::vector<double> cpu_frame_ms;    // wall time of each frame (submit to completion)
+    std::vector<render::FrameStats> frames; // every rendered frame, in order
+    std::vector<double> cpu_frame_ms;       // wall time of each frame (submit to completion)
     LoadTiming timing;
     std::optional<std::filesystem::path> cache_dir; // texture cache used; nullopt: none
 };
 
-nlohmann::json render_report_json(gpu::Renderer& renderer, const RenderRun& run);
+nlohmann::json render_report_json(render::Renderer& renderer, const RenderRun& run);
 
 } // namespace sherpa::cli

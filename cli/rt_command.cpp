@@ -37,28 +37,28 @@ double ratio(std::uint64_t after, std::uint64_t before) {
 
 // Triangles per second of GPU build time, in millions, over the static BLAS built and
 // timed (0 when none was).
-double mtris_per_s(const gpu::AccelerationStats& s) {
+double mtris_per_s(const render::AccelerationStats& s) {
     double ms = 0.0;
     std::uint64_t triangles = 0;
-    for (const gpu::BlasStats& b : s.blas)
+    for (const render::BlasStats& b : s.blas)
         if (b.built && b.build_ms > 0.0) ms += b.build_ms, triangles += b.triangles;
     return ms > 0.0 ? double(triangles) / (ms * 1e3) : 0.0;
 }
 
 // The same for the posed BLAS's last build or refit (0 when untimed).
-double posed_mtris_per_s(const gpu::PosedStats& p) {
+double posed_mtris_per_s(const render::PosedStats& p) {
     return p.blas_ms > 0.0 ? double(p.triangles) / (p.blas_ms * 1e3) : 0.0;
 }
 
-std::uint64_t built_blas(const gpu::AccelerationStats& s) {
+std::uint64_t built_blas(const render::AccelerationStats& s) {
     std::uint64_t n = 0;
-    for (const gpu::BlasStats& b : s.blas) n += b.built ? 1 : 0;
+    for (const render::BlasStats& b : s.blas) n += b.built ? 1 : 0;
     return n;
 }
 
-nlohmann::json to_json(const gpu::Context& context, const gpu::AccelerationStats& s) {
+nlohmann::json to_json(const gpu::Context& context, const render::AccelerationStats& s) {
     nlohmann::json blas = nlohmann::json::array();
-    for (const gpu::BlasStats& b : s.blas)
+    for (const render::BlasStats& b : s.blas)
         blas.push_back({{"mesh", b.mesh},
                         {"name", b.name},
                         {"geometries", b.geometries},
@@ -71,8 +71,8 @@ nlohmann::json to_json(const gpu::Context& context, const gpu::AccelerationStats
                         {"build_bytes", b.build_bytes},
                         {"compacted_bytes", b.compacted_bytes},
                         {"scratch_bytes", b.scratch_bytes}});
-    const gpu::TlasStats& t = s.tlas;
-    const gpu::PosedStats& p = s.posed;
+    const render::TlasStats& t = s.tlas;
+    const render::PosedStats& p = s.posed;
     return {{"device",
              {{"name", context.info().name},
               {"ray_tracing_enabled", context.info().ray_tracing_enabled},
@@ -122,13 +122,13 @@ nlohmann::json to_json(const gpu::Context& context, const gpu::AccelerationStats
             {"warnings", s.warnings}};
 }
 
-void print_text(const gpu::Context& context, const gpu::AccelerationStats& s) {
+void print_text(const gpu::Context& context, const render::AccelerationStats& s) {
     std::printf("device: %s (ray query %s)\n", context.info().name.c_str(),
                 context.info().ray_query_enabled ? "enabled" : "absent");
     std::printf("%-5s %-24s %6s %8s %10s %9s %12s %12s %6s %12s %5s\n", "mesh", "name", "geoms",
                 "no-AH", "triangles", "build ms", "built B", "compacted B", "ratio", "scratch B",
                 "batch");
-    for (const gpu::BlasStats& b : s.blas) {
+    for (const render::BlasStats& b : s.blas) {
         std::printf("%-5u %-24.24s %6u %8u %10llu ", b.mesh, b.name.c_str(), b.geometries,
                     b.opaque_geometries, (unsigned long long)b.triangles);
         if (!b.built) {
@@ -146,7 +146,7 @@ void print_text(const gpu::Context& context, const gpu::AccelerationStats& s) {
     std::printf("  no-AH: geometries built with VK_GEOMETRY_OPAQUE_BIT, which skip the any-hit "
                 "shader: opaque AND double-sided materials only (single-sided ones run any-hit "
                 "to cull back faces, masked and blended ones for alpha)\n");
-    const gpu::PosedStats& p = s.posed;
+    const render::PosedStats& p = s.posed;
     if (p.blas) {
         std::printf("posed BLAS (skinned or morphed instances, default pose): %llu BLAS (%llu in "
                     "world space), %llu geometries, %llu vertices, %llu triangles; streams %llu "
@@ -162,7 +162,7 @@ void print_text(const gpu::Context& context, const gpu::AccelerationStats& s) {
                         posed_mtris_per_s(p));
         std::printf("%s on pose changes\n", p.refit ? "refit" : "rebuilt");
     }
-    const gpu::TlasStats& t = s.tlas;
+    const render::TlasStats& t = s.tlas;
     std::printf("TLAS: %llu instances of %llu (node, mesh) pairs%s: %llu deduplicated, %llu "
                 "mirrored, %llu hidden, %llu non-finite; %llu B, scratch %llu B, instances %llu "
                 "B, build %.3f ms\n",
@@ -194,7 +194,7 @@ void print_text(const gpu::Context& context, const gpu::AccelerationStats& s) {
 int run_rt(Args args) {
     std::string_view spec;
     bool as_json = false, validation = gpu::ContextOptions::default_validation(), rt = true;
-    gpu::AccelerationSettings settings;
+    render::AccelerationSettings settings;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string_view a = args[i];
         if (a == "--json") {
@@ -238,7 +238,7 @@ int run_rt(Args args) {
                          rt ? "not supported by the device" : "off (--rt off)");
             return kExitLoadError;
         }
-        const auto report = [&](const gpu::AccelerationStats& stats) {
+        const auto report = [&](const render::AccelerationStats& stats) {
             for (const auto& w : stats.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
             if (as_json)
                 std::cout << to_json(context, stats).dump(1) << "\n";
@@ -249,23 +249,23 @@ int run_rt(Args args) {
         const auto no_textures = std::make_shared<const tex::PreparedTextureSet>();
         if (!loaded.scene->motions.empty()) {
             // Posed instances join the TLAS once posed: the Renderer does that on load.
-            gpu::RendererOptions renderer_options;
+            render::RendererOptions renderer_options;
             renderer_options.ray_tracing = true;
             renderer_options.acceleration = settings;
-            gpu::Renderer renderer(context, renderer_options);
-            gpu::SceneSetup setup;
-            setup.missing_textures = gpu::MissingTextures::Neutral;
+            render::Renderer renderer(context, renderer_options);
+            render::SceneSetup setup;
+            setup.missing_textures = render::MissingTextures::Neutral;
             renderer.load(*loaded.scene, no_textures, setup);
             report(*renderer.resident().acceleration);
         } else {
             gpu::ResourceManager resources(context);
             gpu::BindlessTable table(resources);
             {
-                gpu::GpuScene scene(resources, table, *loaded.scene, no_textures,
-                                    gpu::StreamPolicy::UsedByMaterials,
-                                    gpu::MissingTextures::Neutral);
-                gpu::SceneAccelerationStructures structures(resources, *loaded.scene, scene,
-                                                            settings);
+                render::GpuScene scene(resources, table, *loaded.scene, no_textures,
+                                       render::StreamPolicy::UsedByMaterials,
+                                       render::MissingTextures::Neutral);
+                render::SceneAccelerationStructures structures(resources, *loaded.scene, scene,
+                                                               settings);
                 report(structures.stats());
             }
             resources.flush();

@@ -5,7 +5,7 @@
 #include <sherpa/render/gpu_structs.h>
 
 namespace sherpa::cli {
-OptionMatch parse_shadow_option(Args args, std::size_t& i, gpu::FrameRequest& settings,
+OptionMatch parse_shadow_option(Args args, std::size_t& i, render::FrameRequest& settings,
                                 std::uint32_t& resolution, std::string& error) {
     const std::string_view a = args[i];
     const bool integer = a == "--cascades" || a == "--shadow-resolution" || a == "--pcf-taps" ||
@@ -29,8 +29,8 @@ OptionMatch parse_shadow_option(Args args, std::size_t& i, gpu::FrameRequest& se
         return OptionMatch::Bad;
     }
     if (a == "--cascades") {
-        if (n < 1 || n > gpu::kShadowCascades) {
-            error = "--cascades needs 1 to " + std::to_string(gpu::kShadowCascades);
+        if (n < 1 || n > render::kShadowCascades) {
+            error = "--cascades needs 1 to " + std::to_string(render::kShadowCascades);
             return OptionMatch::Bad;
         }
         settings.cascades = n;

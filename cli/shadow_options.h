@@ -21,7 +21,7 @@ inline constexpr const char* kShadowOptionsSynopsis =
 // If args[i] is a shadow option, consumes it and its value (advancing i) into
 // `settings` (--shadow-resolution into `resolution`, a renderer option); Bad sets
 // `error`.
-OptionMatch parse_shadow_option(Args args, std::size_t& i, gpu::FrameRequest& settings,
+OptionMatch parse_shadow_option(Args args, std::size_t& i, render::FrameRequest& settings,
                                 std::uint32_t& resolution, std::string& error);
 
 } // namespace sherpa::cli

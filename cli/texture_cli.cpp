@@ -12,11 +12,11 @@ std::optional<std::filesystem::path> TextureCliOptions::resolved_cache_dir() con
 
 tex::PipelineOptions TextureCliOptions::pipeline_options() const {
     // The options mapped once (gpu_settings()), then as the renderer maps them.
-    return gpu::texture_pipeline_options(gpu_settings());
+    return render::texture_pipeline_options(gpu_settings());
 }
 
-gpu::TextureSettings TextureCliOptions::gpu_settings() const {
-    gpu::TextureSettings s;
+render::TextureSettings TextureCliOptions::gpu_settings() const {
+    render::TextureSettings s;
     s.cache_dir = resolved_cache_dir();
     s.cache_cap_bytes = cache_cap_bytes;
     s.quality = quality;
@@ -40,7 +40,7 @@ OptionMatch parse_texture_option(Args args, std::size_t& i, TextureCliOptions& o
         out.keep_bc7 = true;
     } else if (a == "--missing-textures") {
         const auto v = value();
-        const auto mode = v ? gpu::parse_missing_textures(*v) : std::nullopt;
+        const auto mode = v ? render::parse_missing_textures(*v) : std::nullopt;
         if (!mode) {
             error = "--missing-textures needs checker or neutral";
             return OptionMatch::Bad;

@@ -39,13 +39,13 @@ struct TextureCliOptions {
     int quality = tex::kBc7DefaultLevel;
     bool no_bc = false;
     bool keep_bc7 = false; // render only: no BC7 decoding at upload on CPU devices
-    gpu::MissingTextures missing = gpu::MissingTextures::Checker; // render only
+    render::MissingTextures missing = render::MissingTextures::Checker; // render only
 
     // The directory in use: nullopt with --no-cache, else --cache-dir or the default.
     std::optional<std::filesystem::path> resolved_cache_dir() const;
     // The one mapping of these options: for a renderer (which prepares textures for
-    // its device's gpu::texture_target()) and for the texture pipeline run directly.
-    gpu::TextureSettings gpu_settings() const;
+    // its device's render::texture_target()) and for the texture pipeline run directly.
+    render::TextureSettings gpu_settings() const;
     // gpu_settings() as the texture pipeline's options (BC unless --no-bc).
     tex::PipelineOptions pipeline_options() const;
 };

@@ -55,8 +55,8 @@ std::string wrapped(const std::vector<std::string_view>& names) {
 std::string filled(std::string_view text) {
     const std::pair<std::string_view, std::string> fills[] = {
         {"{families}", joined(lab::family_names(), "|")},
-        {"{views}", wrapped(gpu::debug_view_names())},
-        {"{overlays}", wrapped(gpu::overlay_names())},
+        {"{views}", wrapped(render::debug_view_names())},
+        {"{overlays}", wrapped(render::overlay_names())},
         {"{texture-options}", kTextureOptionsSynopsis},
         {"{texture-help}", kTextureOptionsHelp},
         {"{compare-options}", kCompareOptionsSynopsis},

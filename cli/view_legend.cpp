@@ -19,23 +19,24 @@ const char* colour_word(const std::array<std::uint8_t, 3>& c) {
 
 } // namespace
 
-std::vector<LegendEntry> view_legend(gpu::DebugView view) {
+std::vector<LegendEntry> view_legend(render::DebugView view) {
     std::vector<LegendEntry> out;
-    if (view == gpu::DebugView::Provenance) {
-        for (std::size_t i = 0; i < gpu::kProvenanceColors.size(); ++i)
-            out.push_back({gpu::stored_bytes(gpu::kProvenanceColors[i]),
-                           std::string("tangents ") + gpu::kProvenanceNames[i]});
-    } else if (view == gpu::DebugView::ShadowError) {
-        out.push_back({gpu::stored_bytes(gpu::kShadowAgreeLitColor), "both lit"});
-        out.push_back({gpu::stored_bytes(gpu::kShadowAgreeShadowedColor), "both shadowed"});
-        out.push_back({gpu::stored_bytes(gpu::kShadowFalseShadowColor), "false shadow (maps)"});
-        out.push_back({gpu::stored_bytes(gpu::kShadowFalseLightColor), "false light (maps)"});
+    if (view == render::DebugView::Provenance) {
+        for (std::size_t i = 0; i < render::kProvenanceColors.size(); ++i)
+            out.push_back({render::stored_bytes(render::kProvenanceColors[i]),
+                           std::string("tangents ") + render::kProvenanceNames[i]});
+    } else if (view == render::DebugView::ShadowError) {
+        out.push_back({render::stored_bytes(render::kShadowAgreeLitColor), "both lit"});
+        out.push_back({render::stored_bytes(render::kShadowAgreeShadowedColor), "both shadowed"});
+        out.push_back(
+            {render::stored_bytes(render::kShadowFalseShadowColor), "false shadow (maps)"});
+        out.push_back({render::stored_bytes(render::kShadowFalseLightColor), "false light (maps)"});
     }
     return out;
 }
 
 bool draw_view_legend(std::vector<std::uint8_t>& rgba, std::uint32_t width, std::uint32_t height,
-                      gpu::DebugView view) {
+                      render::DebugView view) {
     const std::vector<LegendEntry> entries = view_legend(view);
     if (entries.empty() || rgba.size() < std::size_t(width) * height * 4) return false;
     constexpr std::uint32_t kRow = tex::kGlyphHeight + 5, kSwatch = tex::kGlyphHeight + 1;
@@ -58,11 +59,11 @@ bool draw_view_legend(std::vector<std::uint8_t>& rgba, std::uint32_t width, std:
     return true;
 }
 
-std::string view_legend_line(gpu::DebugView view) {
+std::string view_legend_line(render::DebugView view) {
     std::string line;
     for (const LegendEntry& e : view_legend(view))
         line += std::string(line.empty() ? "" : ", ") + colour_word(e.colour) + " " + e.name;
-    return line.empty() ? line : "view " + std::string(gpu::to_string(view)) + ": " + line;
+    return line.empty() ? line : "view " + std::string(to_string(view)) + ": " + line;
 }
 
 } // namespace sherpa::cli

@@ -17,13 +17,13 @@ struct LegendEntry {
 };
 
 // Empty for views without classes.
-std::vector<LegendEntry> view_legend(gpu::DebugView view);
+std::vector<LegendEntry> view_legend(render::DebugView view);
 
 // Draws view_legend(view) into the bottom-left corner of `rgba` (width x height, RGBA8
 // rows) when the box takes at most half the width and a third of the height; returns
 // whether it drew. "view NAME: colour name, ..." for stdout either way (empty: none).
 bool draw_view_legend(std::vector<std::uint8_t>& rgba, std::uint32_t width, std::uint32_t height,
-                      gpu::DebugView view);
-std::string view_legend_line(gpu::DebugView view);
+                      render::DebugView view);
+std::string view_legend_line(render::DebugView view);
 
 } // namespace sherpa::cli

@@ -45,7 +45,7 @@ void AccelerationDock::retranslate() {
     updateSummary();
 }
 
-void AccelerationDock::setStats(std::shared_ptr<const gpu::AccelerationStats> stats,
+void AccelerationDock::setStats(std::shared_ptr<const render::AccelerationStats> stats,
                                 const QString& why_none) {
     why_none_ = why_none;
     model_->setStats(std::move(stats));
@@ -86,12 +86,12 @@ void AccelerationDock::syncSelection() {
 }
 
 void AccelerationDock::updateSummary() {
-    const gpu::AccelerationStats* s = model_->stats();
+    const render::AccelerationStats* s = model_->stats();
     if (!s) {
         summary_->setText(why_none_);
         return;
     }
-    const gpu::TlasStats& t = s->tlas;
+    const render::TlasStats& t = s->tlas;
     const double ratio = s->blas_build_bytes() > 0
                              ? double(s->blas_compacted_bytes()) / double(s->blas_build_bytes())
                              : 1.0;

@@ -11,9 +11,9 @@
 class QLabel;
 class QTableView;
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 struct AccelerationStats;
-}
+} // namespace sherpa::render
 
 namespace sherpa::editor {
 
@@ -27,7 +27,7 @@ public:
     void retranslate();
     // The statistics of the scene on the GPU; null with `why_none` saying why there
     // are none (ray tracing off, no device support, no scene).
-    void setStats(std::shared_ptr<const gpu::AccelerationStats> stats, const QString& why_none);
+    void setStats(std::shared_ptr<const render::AccelerationStats> stats, const QString& why_none);
     AccelerationModel* model() const { return model_; }
     QTableView* view() const { return view_; }
     QString summaryText() const;

@@ -8,7 +8,7 @@ namespace sherpa::editor {
 
 AccelerationModel::AccelerationModel(QObject* parent) : QAbstractTableModel(parent) {}
 
-void AccelerationModel::setStats(std::shared_ptr<const gpu::AccelerationStats> stats) {
+void AccelerationModel::setStats(std::shared_ptr<const render::AccelerationStats> stats) {
     beginResetModel();
     stats_ = std::move(stats);
     endResetModel();
@@ -31,7 +31,7 @@ int AccelerationModel::columnCount(const QModelIndex& parent) const {
 
 QVariant AccelerationModel::data(const QModelIndex& index, int role) const {
     if (!index.isValid() || !stats_) return {};
-    const gpu::BlasStats& b = stats_->blas[static_cast<std::size_t>(index.row())];
+    const render::BlasStats& b = stats_->blas[static_cast<std::size_t>(index.row())];
     if (role == MeshRole) return static_cast<int>(b.mesh);
     if (role == Qt::TextAlignmentRole && index.column() != MeshColumn)
         return QVariant(Qt::AlignRight | Qt::AlignVCenter);

@@ -7,9 +7,9 @@
 
 #include <memory>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 struct AccelerationStats;
-}
+} // namespace sherpa::render
 
 namespace sherpa::editor {
 
@@ -30,8 +30,8 @@ public:
 
     explicit AccelerationModel(QObject* parent = nullptr);
     // Null: no structures (ray tracing off, no scene).
-    void setStats(std::shared_ptr<const gpu::AccelerationStats> stats);
-    const gpu::AccelerationStats* stats() const { return stats_.get(); }
+    void setStats(std::shared_ptr<const render::AccelerationStats> stats);
+    const render::AccelerationStats* stats() const { return stats_.get(); }
     // The row of glTF mesh `mesh`, or -1.
     int rowOfMesh(int mesh) const;
 
@@ -41,7 +41,7 @@ public:
     QVariant headerData(int section, Qt::Orientation o, int role) const override;
 
 private:
-    std::shared_ptr<const gpu::AccelerationStats> stats_;
+    std::shared_ptr<const render::AccelerationStats> stats_;
 };
 
 } // namespace sherpa::editor

@@ -89,7 +89,7 @@ void when_layout_settles(MainWindow& window, std::function<void()> then) {
         const QSize size = window.viewport()->pixelSize();
         state->stable = size == state->last ? state->stable + 1 : 0;
         state->last = size;
-        const gpu::FrameRequest& f = window.frames().lastFrame().request;
+        const render::FrameRequest& f = window.frames().lastFrame().request;
         // Drawn at the final size, and the renderer's culling passes read back (the
         // culling dock's pass table), so that a screenshot shows them.
         const bool drawn = !window.viewport()->isExposed() || !window.frames().renderer() ||
@@ -224,7 +224,7 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
             error = QStringLiteral("--environment needs room, none or a file");
             return false;
         }
-        out.environment = gpu::parse_environment_choice(p.value(environment).toStdString());
+        out.environment = render::parse_environment_choice(p.value(environment).toStdString());
     }
     const auto number = [&](const QCommandLineOption& o, float& into) {
         if (!p.isSet(o)) return true;
@@ -248,7 +248,7 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
     }
     if (p.isSet(background)) {
         glm::vec3 color{};
-        const auto b = gpu::parse_background(p.value(background).toStdString(), color);
+        const auto b = render::parse_background(p.value(background).toStdString(), color);
         if (!b) {
             error = QStringLiteral("--background needs environment, blurred or R,G,B (0 to 1), "
                                    "not '%1'")
@@ -256,10 +256,10 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
             return false;
         }
         out.display.background = *b;
-        if (*b == gpu::Background::Color) out.display.backgroundColor = color;
+        if (*b == render::Background::Color) out.display.backgroundColor = color;
     }
     if (p.isSet(tone_map)) {
-        const auto t = gpu::parse_tone_map(p.value(tone_map).toStdString());
+        const auto t = render::parse_tone_map(p.value(tone_map).toStdString());
         if (!t) {
             error = QStringLiteral("--tone-map needs neutral, aces, agx or linear, not '%1'")
                         .arg(p.value(tone_map));

@@ -34,7 +34,7 @@ struct CommandLine {
     QString compare_with;    // side B: rt, view:NAME or a file (empty: the default, rt)
     // The environment (unset: the menu's default, the room) and the display settings
     // (the lit view's lighting and tone mapping) once the window is up.
-    std::optional<gpu::EnvironmentChoice> environment;
+    std::optional<render::EnvironmentChoice> environment;
     ViewportDisplay display;
 };
 

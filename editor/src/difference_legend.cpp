@@ -35,7 +35,7 @@ DifferenceLegend::DifferenceLegend(QWidget* parent) : QWidget(parent) {
     // Full heat at the top: the bar reads like a chart's y axis.
     QImage bar(kBarWidth, kBarHeight, QImage::Format_RGB32);
     for (int y = 0; y < kBarHeight; ++y) {
-        const auto c = gpu::heat_colour(1.0 - double(y) / double(kBarHeight - 1));
+        const auto c = render::heat_colour(1.0 - double(y) / double(kBarHeight - 1));
         for (int x = 0; x < kBarWidth; ++x) bar.setPixel(x, y, qRgb(c[0], c[1], c[2]));
     }
     bar_->setPixmap(QPixmap::fromImage(bar));

@@ -1,6 +1,6 @@
 #pragma once
 // Next to the viewport in Difference mode: the heat map's colour bar (drawn with the
-// engine's gpu::heat_colour, the colours the shader draws), its scale, and the numbers
+// engine's render::heat_colour, the colours the shader draws), its scale, and the numbers
 // of the latest completed frame: mean, max, PSNR, % of pixels over the threshold.
 #include <QWidget>
 

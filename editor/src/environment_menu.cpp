@@ -24,21 +24,21 @@ EnvironmentMenu::EnvironmentMenu(QWidget* parent) : QObject(parent), parent_(par
     none_ = checkable(environment_, source_group_);
     room_ = checkable(environment_, source_group_);
     connect(none_, &QAction::triggered, this, [this] {
-        choice_ = {gpu::EnvironmentChoice::Kind::None, {}};
+        choice_ = {render::EnvironmentChoice::Kind::None, {}};
         Q_EMIT environmentChanged();
     });
     connect(room_, &QAction::triggered, this, [this] {
-        choice_ = {gpu::EnvironmentChoice::Kind::Room, {}};
+        choice_ = {render::EnvironmentChoice::Kind::Room, {}};
         Q_EMIT environmentChanged();
     });
-    const auto lights = gpu::installed_studio_lights();
+    const auto lights = render::installed_studio_lights();
     if (!lights.empty()) environment_->addSeparator();
     for (const std::string& file : lights) {
         QAction* a = checkable(environment_, source_group_);
         a->setData(QString::fromStdString(file));
         a->setText(QFileInfo(QString::fromStdString(file)).completeBaseName());
         connect(a, &QAction::triggered, this, [this, file] {
-            choice_ = {gpu::EnvironmentChoice::Kind::File, file};
+            choice_ = {render::EnvironmentChoice::Kind::File, file};
             Q_EMIT environmentChanged();
         });
         studio_.push_back(a);
@@ -53,7 +53,7 @@ EnvironmentMenu::EnvironmentMenu(QWidget* parent) : QObject(parent), parent_(par
             sync();
             return;
         }
-        choice_ = {gpu::EnvironmentChoice::Kind::File, file.toStdString()};
+        choice_ = {render::EnvironmentChoice::Kind::File, file.toStdString()};
         sync();
         Q_EMIT environmentChanged();
     });
@@ -63,10 +63,10 @@ EnvironmentMenu::EnvironmentMenu(QWidget* parent) : QObject(parent), parent_(par
     bg_environment_ = checkable(background_, background_group_);
     bg_blurred_ = checkable(background_, background_group_);
     bg_color_ = checkable(background_, background_group_);
-    const std::pair<QAction*, gpu::Background> backgrounds[] = {
-        {bg_environment_, gpu::Background::Environment},
-        {bg_blurred_, gpu::Background::Blurred},
-        {bg_color_, gpu::Background::Color}};
+    const std::pair<QAction*, render::Background> backgrounds[] = {
+        {bg_environment_, render::Background::Environment},
+        {bg_blurred_, render::Background::Blurred},
+        {bg_color_, render::Background::Color}};
     for (const auto& [action, b] : backgrounds)
         connect(action, &QAction::triggered, this, [this, b = b] {
             display_.background = b;
@@ -111,9 +111,9 @@ EnvironmentMenu::EnvironmentMenu(QWidget* parent) : QObject(parent), parent_(par
 
     tone_ = new QMenu(parent);
     tone_group_ = new QActionGroup(this);
-    for (const std::string_view name : gpu::tone_map_names()) {
+    for (const std::string_view name : render::tone_map_names()) {
         QAction* a = checkable(tone_, tone_group_);
-        const gpu::ToneMap t = *gpu::parse_tone_map(name);
+        const render::ToneMap t = *render::parse_tone_map(name);
         connect(a, &QAction::triggered, this, [this, t] {
             display_.toneMap = t;
             Q_EMIT displayChanged();
@@ -132,7 +132,7 @@ EnvironmentMenu::EnvironmentMenu(QWidget* parent) : QObject(parent), parent_(par
     retranslate();
 }
 
-void EnvironmentMenu::setChoice(const gpu::EnvironmentChoice& choice) {
+void EnvironmentMenu::setChoice(const render::EnvironmentChoice& choice) {
     choice_ = choice;
     sync();
     Q_EMIT environmentChanged();
@@ -145,7 +145,7 @@ void EnvironmentMenu::setDisplay(const ViewportDisplay& display) {
 }
 
 void EnvironmentMenu::sync() {
-    using Kind = gpu::EnvironmentChoice::Kind;
+    using Kind = render::EnvironmentChoice::Kind;
     none_->setChecked(choice_.kind == Kind::None);
     room_->setChecked(choice_.kind == Kind::Room);
     bool listed = false;
@@ -162,9 +162,9 @@ void EnvironmentMenu::sync() {
     for (QAction* a :
          {rotate_left_, rotate_right_, brighter_, darker_, reset_intensity_, compensation_})
         a->setEnabled(lit);
-    bg_environment_->setChecked(display_.background == gpu::Background::Environment);
-    bg_blurred_->setChecked(display_.background == gpu::Background::Blurred);
-    bg_color_->setChecked(display_.background == gpu::Background::Color);
+    bg_environment_->setChecked(display_.background == render::Background::Environment);
+    bg_blurred_->setChecked(display_.background == render::Background::Blurred);
+    bg_color_->setChecked(display_.background == render::Background::Color);
     sun_->setChecked(display_.sun);
     compensation_->setChecked(display_.energyCompensation);
     for (std::size_t i = 0; i < tone_actions_.size(); ++i)
@@ -175,7 +175,7 @@ void EnvironmentMenu::retranslate() {
     environment_->setTitle(tr("&Environment"));
     none_->setText(tr("&None (Ambient Only)"));
     room_->setText(tr("&Room (Built In)"));
-    const bool other = choice_.kind == gpu::EnvironmentChoice::Kind::File &&
+    const bool other = choice_.kind == render::EnvironmentChoice::Kind::File &&
                        std::none_of(studio_.begin(), studio_.end(), [&](QAction* a) {
                            return a->data().toString().toStdString() == choice_.path;
                        });

@@ -25,11 +25,11 @@ public:
     explicit EnvironmentMenu(QWidget* parent);
     QMenu* environmentMenu() const { return environment_; }
     QMenu* toneMenu() const { return tone_; } // for the View menu
-    const gpu::EnvironmentChoice& choice() const { return choice_; }
+    const render::EnvironmentChoice& choice() const { return choice_; }
     const ViewportDisplay& display() const { return display_; }
 
     // The command line's settings (sherpa --environment, --tone-map ...).
-    void setChoice(const gpu::EnvironmentChoice& choice);
+    void setChoice(const render::EnvironmentChoice& choice);
     void setDisplay(const ViewportDisplay& display);
     void retranslate();
 
@@ -40,7 +40,7 @@ Q_SIGNALS:
 private:
     void sync();
     QWidget* parent_;
-    gpu::EnvironmentChoice choice_;
+    render::EnvironmentChoice choice_;
     ViewportDisplay display_;
     QMenu *environment_, *background_, *tone_;
     QActionGroup *source_group_, *background_group_, *tone_group_;
@@ -48,7 +48,7 @@ private:
         *reset_intensity_, *sun_, *compensation_;
     std::vector<QAction*> studio_; // one per installed studio light
     QAction *bg_environment_, *bg_blurred_, *bg_color_;
-    std::vector<QAction*> tone_actions_; // gpu::ToneMap order
+    std::vector<QAction*> tone_actions_; // render::ToneMap order
     QAction *exposure_up_, *exposure_down_, *exposure_reset_;
 };
 

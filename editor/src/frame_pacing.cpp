@@ -10,7 +10,7 @@ namespace {
 
 // The camera and the frame's size (the orbit camera's aspect follows the size; the
 // request leaves the aspect to the viewport).
-bool same_camera(const gpu::FrameRequest& a, const gpu::FrameRequest& b) {
+bool same_camera(const render::FrameRequest& a, const render::FrameRequest& b) {
     return a.camera.eye == b.camera.eye && a.camera.target == b.camera.target &&
            a.camera.up == b.camera.up && a.camera.fov_degrees == b.camera.fov_degrees &&
            a.camera.aspect == b.camera.aspect && a.width == b.width && a.height == b.height;

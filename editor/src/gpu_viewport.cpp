@@ -15,9 +15,9 @@ GpuViewport::GpuViewport(std::unique_ptr<gpu::Context> context, bool ray_tracing
     : context_(std::move(context)) {
     // Acceleration structures only where the device ray traces: without, nothing
     // RT-related is allocated.
-    gpu::RendererOptions options;
+    render::RendererOptions options;
     options.ray_tracing = ray_tracing;
-    renderer_ = std::make_unique<gpu::Renderer>(*context_, options);
+    renderer_ = std::make_unique<render::Renderer>(*context_, options);
     scene_ = std::make_unique<ViewportScene>(*renderer_);
     presenter_ = std::make_unique<ViewportPresenter>(*context_, *renderer_, *scene_);
     readbacks_ = std::make_unique<ViewportReadbacks>(*context_, *renderer_, *scene_);
@@ -76,7 +76,7 @@ QString GpuViewport::deviceName() const {
 }
 
 tex::TextureTarget GpuViewport::textureTarget() const {
-    return gpu::texture_target(context_->info(), gpu::TextureSettings{});
+    return render::texture_target(context_->info(), render::TextureSettings{});
 }
 
 bool GpuViewport::rayTracing() const {

@@ -19,9 +19,12 @@
 
 class QVulkanInstance;
 
+namespace sherpa::render {
+class Renderer;
+} // namespace sherpa::render
+
 namespace sherpa::gpu {
 class Context;
-class Renderer;
 } // namespace sherpa::gpu
 
 namespace sherpa::editor {
@@ -58,7 +61,7 @@ public:
     // The engine renderer behind the viewport, and through Renderer::context() its
     // device (validation log, resources): for callers on the render thread that use
     // the engine API directly (material variants, the test support's probes).
-    gpu::Renderer& renderer() { return *renderer_; }
+    render::Renderer& renderer() { return *renderer_; }
     // Waits until the queue is idle (the presented frame is on screen).
     void finish();
 
@@ -66,7 +69,7 @@ private:
     GpuViewport(std::unique_ptr<gpu::Context> context, bool ray_tracing);
 
     std::unique_ptr<gpu::Context> context_;
-    std::unique_ptr<gpu::Renderer> renderer_;
+    std::unique_ptr<render::Renderer> renderer_;
     std::unique_ptr<ViewportScene> scene_;
     std::unique_ptr<ViewportPresenter> presenter_;
     std::unique_ptr<ViewportReadbacks> readbacks_;

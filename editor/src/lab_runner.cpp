@@ -101,8 +101,8 @@ template <class F> auto guarded(F f, QString& error) -> decltype(f()) {
 
 } // namespace
 
-void LabRunner::setLighting(const gpu::EnvironmentChoice& environment,
-                            const gpu::FrameRequest& settings) {
+void LabRunner::setLighting(const render::EnvironmentChoice& environment,
+                            const render::FrameRequest& settings) {
     environment_ = environment;
     lighting_ = settings;
 }
@@ -114,12 +114,12 @@ void LabRunner::start(const QString& family_name, const QString& spec) {
                                            settings = lighting_] {
         lower_worker_priority();
         // Lit frames lit as the main view is (the file's warnings are the view's).
-        gpu::Lighting lighting{nullptr, settings};
+        render::Lighting lighting{nullptr, settings};
         if (lab::family_draws_lit_frames(family)) {
             std::vector<std::string> warnings;
-            if (auto image = gpu::make_environment(environment, warnings))
+            if (auto image = render::make_environment(environment, warnings))
                 lighting.environment =
-                    std::make_shared<const gpu::EnvironmentImage>(std::move(*image));
+                    std::make_shared<const render::EnvironmentImage>(std::move(*image));
         }
         std::unique_ptr<lab::Family> family_ptr = lab::make_family(family, lighting);
         auto fail = [this, job](QString error) {

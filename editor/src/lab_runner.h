@@ -30,7 +30,8 @@ public:
     // How the families that draw lit frames (shadows) light them: the main view's
     // environment and display settings. The environment is made by the worker, and only
     // for such a family.
-    void setLighting(const gpu::EnvironmentChoice& environment, const gpu::FrameRequest& settings);
+    void setLighting(const render::EnvironmentChoice& environment,
+                     const render::FrameRequest& settings);
 
     // Runs family `family` ("tangents", "textures", "culling") on the scene `spec`.
     void start(const QString& family, const QString& spec);
@@ -55,8 +56,8 @@ private:
     void end(const std::shared_ptr<Job>& job);
 
     std::shared_ptr<Job> job_; // the run in flight; null: none
-    gpu::EnvironmentChoice environment_{gpu::EnvironmentChoice::Kind::None, {}};
-    gpu::FrameRequest lighting_;
+    render::EnvironmentChoice environment_{render::EnvironmentChoice::Kind::None, {}};
+    render::FrameRequest lighting_;
     // Its own threads: a family runs for seconds, and in the global pool it would hold
     // the thread the scene loader's thumbnails wait for (measured: Box took 29 s to load
     // while a textures run held the pool of a 2-core machine).

@@ -149,7 +149,7 @@ void MainWindow::createControllers() {
         const QSize pixels = viewport_->pixelSize();
         frame.request.width = static_cast<std::uint32_t>(pixels.width());
         frame.request.height = static_cast<std::uint32_t>(pixels.height());
-        frame.request.camera = gpu::explicit_camera(viewport_->camera().pose().spec());
+        frame.request.camera = render::explicit_camera(viewport_->camera().pose().spec());
         views_->fill(frame.request);
         selection_->fill(frame);
         motion_->fill(frame.request);

@@ -79,14 +79,14 @@ void MaterialFieldsModel::buildExtensionRows() {
     const Scene* sc = scene();
     if (!sc || material_ < 0 || std::size_t(material_) >= sc->materials.size()) return;
     // The layout the renderer uploads (texture slots do not move blocks).
-    const gpu::MaterialExtensionBuffer layout = gpu::build_material_extensions(
+    const render::MaterialExtensionBuffer layout = render::build_material_extensions(
         sc->materials, [](const TextureSlot&, sherpa::TextureRole) { return gpu::kWhiteTexture; });
-    const gpu::MaterialExtensionPlace& place = layout.places[std::size_t(material_)];
+    const render::MaterialExtensionPlace& place = layout.places[std::size_t(material_)];
     if (!place.any()) return;
     const MaterialInstance& m = sc->materials[std::size_t(material_)];
-    const int word = int(gpu::kExtensionWordBytes);
+    const int word = int(render::kExtensionWordBytes);
     auto words = [](std::uint32_t w) {
-        return w == gpu::kNoExtension ? tr("absent") : QString::number(w);
+        return w == render::kNoExtension ? tr("absent") : QString::number(w);
     };
     extension_rows_.push_back({int(place.index) * word, QStringLiteral("ext.index"),
                                QStringLiteral("extra.extensions = %1").arg(place.index),
@@ -95,7 +95,7 @@ void MaterialFieldsModel::buildExtensionRows() {
                                    .arg(words(place.ior), words(place.specular),
                                         words(place.clearcoat), words(place.sheen)),
                                -1});
-    if (place.ior != gpu::kNoExtension)
+    if (place.ior != render::kNoExtension)
         extension_rows_.push_back({int(place.ior) * word, QStringLiteral("ext.ior"),
                                    QStringLiteral("KHR_materials_ior.ior"), QStringLiteral("float"),
                                    format::number(*m.ior), -1});
@@ -107,53 +107,54 @@ void MaterialFieldsModel::buildExtensionRows() {
                                    slot.present() ? chain(slot.texture) : tr("default texture"),
                                    slot.present() ? slot.texture : -1});
     };
-    if (place.specular != gpu::kNoExtension) {
+    if (place.specular != render::kNoExtension) {
         const MaterialSpecular& sp = *m.specular;
         const int base = int(place.specular) * word;
         extension_rows_.push_back(
-            {base + int(offsetof(gpu::GPUSpecularBlock, color_factor)),
+            {base + int(offsetof(render::GPUSpecularBlock, color_factor)),
              QStringLiteral("ext.specular.color_factor"),
              QStringLiteral("KHR_materials_specular.specularColorFactor, specularFactor"),
              QStringLiteral("vec4"),
              format::vec(glm::vec4(sp.specular_color_factor, sp.specular_factor)), -1});
-        texture_row(base + int(offsetof(gpu::GPUSpecularBlock, specular_tex)),
+        texture_row(base + int(offsetof(render::GPUSpecularBlock, specular_tex)),
                     "ext.specular.specular_tex", "KHR_materials_specular.specularTexture",
                     sp.specular);
-        texture_row(base + int(offsetof(gpu::GPUSpecularBlock, specular_color_tex)),
+        texture_row(base + int(offsetof(render::GPUSpecularBlock, specular_color_tex)),
                     "ext.specular.specular_color_tex",
                     "KHR_materials_specular.specularColorTexture", sp.specular_color);
     }
-    if (place.clearcoat != gpu::kNoExtension) {
+    if (place.clearcoat != render::kNoExtension) {
         const MaterialClearcoat& cc = *m.clearcoat;
         const int base = int(place.clearcoat) * word;
         extension_rows_.push_back(
-            {base + int(offsetof(gpu::GPUClearcoatBlock, factors)),
+            {base + int(offsetof(render::GPUClearcoatBlock, factors)),
              QStringLiteral("ext.clearcoat.factors"),
              QStringLiteral("KHR_materials_clearcoat.clearcoatFactor, clearcoatRoughnessFactor, "
                             "clearcoatNormalTexture.scale"),
              QStringLiteral("vec4"),
              format::vec(glm::vec4(cc.factor, cc.roughness_factor, cc.normal_scale, 0.0f)), -1});
-        texture_row(base + int(offsetof(gpu::GPUClearcoatBlock, clearcoat_tex)),
+        texture_row(base + int(offsetof(render::GPUClearcoatBlock, clearcoat_tex)),
                     "ext.clearcoat.clearcoat_tex", "KHR_materials_clearcoat.clearcoatTexture",
                     cc.clearcoat);
-        texture_row(base + int(offsetof(gpu::GPUClearcoatBlock, roughness_tex)),
+        texture_row(base + int(offsetof(render::GPUClearcoatBlock, roughness_tex)),
                     "ext.clearcoat.roughness_tex",
                     "KHR_materials_clearcoat.clearcoatRoughnessTexture", cc.roughness);
-        texture_row(base + int(offsetof(gpu::GPUClearcoatBlock, normal_tex)),
+        texture_row(base + int(offsetof(render::GPUClearcoatBlock, normal_tex)),
                     "ext.clearcoat.normal_tex", "KHR_materials_clearcoat.clearcoatNormalTexture",
                     cc.normal);
     }
-    if (place.sheen != gpu::kNoExtension) {
+    if (place.sheen != render::kNoExtension) {
         const MaterialSheen& sh = *m.sheen;
         const int base = int(place.sheen) * word;
         extension_rows_.push_back(
-            {base + int(offsetof(gpu::GPUSheenBlock, factors)), QStringLiteral("ext.sheen.factors"),
+            {base + int(offsetof(render::GPUSheenBlock, factors)),
+             QStringLiteral("ext.sheen.factors"),
              QStringLiteral("KHR_materials_sheen.sheenColorFactor, sheenRoughnessFactor"),
              QStringLiteral("vec4"), format::vec(glm::vec4(sh.color_factor, sh.roughness_factor)),
              -1});
-        texture_row(base + int(offsetof(gpu::GPUSheenBlock, color_tex)), "ext.sheen.color_tex",
+        texture_row(base + int(offsetof(render::GPUSheenBlock, color_tex)), "ext.sheen.color_tex",
                     "KHR_materials_sheen.sheenColorTexture", sh.color);
-        texture_row(base + int(offsetof(gpu::GPUSheenBlock, roughness_tex)),
+        texture_row(base + int(offsetof(render::GPUSheenBlock, roughness_tex)),
                     "ext.sheen.roughness_tex", "KHR_materials_sheen.sheenRoughnessTexture",
                     sh.roughness);
     }
@@ -200,9 +201,9 @@ const SpecularGlossiness* MaterialFieldsModel::specGloss() const {
 QVariant MaterialFieldsModel::specGlossData(int row, int column) const {
     const SpecularGlossiness& sg = *specGloss();
     static constexpr std::size_t kOffsets[] = {
-        offsetof(gpu::GPUMaterialExtra, workflow),
-        offsetof(gpu::GPUMaterialExtra, specular_glossiness),
-        offsetof(gpu::GPUMaterialExtra, specular_glossiness_tex)};
+        offsetof(render::GPUMaterialExtra, workflow),
+        offsetof(render::GPUMaterialExtra, specular_glossiness),
+        offsetof(render::GPUMaterialExtra, specular_glossiness_tex)};
     static constexpr const char* kNames[] = {"extra.workflow", "extra.specular_glossiness",
                                              "extra.specular_glossiness_tex"};
     static constexpr const char* kProperties[] = {
@@ -220,7 +221,8 @@ QVariant MaterialFieldsModel::specGlossData(int row, int column) const {
         return row == 1 ? QStringLiteral("vec4") : QStringLiteral("uint");
     case ValueColumn:
         if (row == 0)
-            return QStringLiteral("%1 (specular-glossiness)").arg(gpu::kWorkflowSpecularGlossiness);
+            return QStringLiteral("%1 (specular-glossiness)")
+                .arg(render::kWorkflowSpecularGlossiness);
         if (row == 1) return format::vec(glm::vec4(sg.specular_factor, sg.glossiness_factor));
         return sg.specular_glossiness.present() ? QString::number(sg.specular_glossiness.texture)
                                                 : tr("default texture");

@@ -13,9 +13,9 @@
 
 #include "scene_session.h"
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 struct MaterialExtensionPlace;
-}
+} // namespace sherpa::render
 
 namespace sherpa::editor {
 
@@ -66,7 +66,7 @@ private:
 
     // Material extensions (KHR_materials_ior, _specular): one row per field of the
     // material's blocks in the extension buffer, its offset the byte offset there
-    // (gpu::build_material_extensions' layout), values from the CPU record.
+    // (render::build_material_extensions' layout), values from the CPU record.
     struct ExtensionRow {
         int offset;
         QString field, property, type, value;
@@ -74,10 +74,11 @@ private:
     };
     void buildExtensionRows();
     // The transmission family's rows (material_fields_transmission.cpp).
-    void appendTransmissionRows(const gpu::MaterialExtensionPlace& place,
+    void appendTransmissionRows(const render::MaterialExtensionPlace& place,
                                 const MaterialInstance& m);
     // KHR_materials_anisotropy's and _iridescence's rows (material_fields_microfacet.cpp).
-    void appendMicrofacetRows(const gpu::MaterialExtensionPlace& place, const MaterialInstance& m);
+    void appendMicrofacetRows(const render::MaterialExtensionPlace& place,
+                              const MaterialInstance& m);
     QVariant extensionData(const ExtensionRow& r, int column, int role) const;
     int specGlossRows() const { return specGloss() ? 3 : 0; }
 

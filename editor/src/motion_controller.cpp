@@ -30,7 +30,7 @@ void MotionController::showTimelineForScene() {
     timeline_.setVisible(scene && (!scene->animations.empty() || !scene->motions.empty()));
 }
 
-void MotionController::fill(gpu::FrameRequest& request) const {
+void MotionController::fill(render::FrameRequest& request) const {
     request.pose = timeline_.playback().pose();
 }
 

@@ -26,7 +26,7 @@ public:
     // The timeline dock shows for scenes with animations or motions.
     void showTimelineForScene();
     // The pose of the next frame (null: the scene as loaded).
-    void fill(gpu::FrameRequest& request) const;
+    void fill(render::FrameRequest& request) const;
 
 private:
     // Warns in the log about nodes the timeline's pose pushes past the float range

@@ -90,7 +90,7 @@ void SelectionController::connectDocks() {
 void SelectionController::fill(ViewportRequest& frame) const {
     const Selection& sel = context_.selection().current();
     frame.hiddenNodes = context_.visibility().hidden();
-    gpu::FrameRequest& request = frame.request;
+    render::FrameRequest& request = frame.request;
     if (const Scene* scene = context_.scene();
         scene && sel.node >= 0 && is_joint(*scene, static_cast<std::uint32_t>(sel.node)))
         request.selected_joint = static_cast<std::uint32_t>(sel.node);
@@ -107,8 +107,8 @@ int SelectionController::pickAt(QPointF ndc) {
     const Scene* scene = context_.scene();
     if (!scene) return -1;
     glm::vec3 origin, direction;
-    viewport_.camera().pose().ray({static_cast<float>(ndc.x()), static_cast<float>(ndc.y())}, origin,
-                           direction);
+    viewport_.camera().pose().ray({static_cast<float>(ndc.x()), static_cast<float>(ndc.y())},
+                                  origin, direction);
     const PickHit hit = pick(*scene, origin, direction, [this](std::size_t i) {
         return context_.visibility().instanceVisible(i);
     });

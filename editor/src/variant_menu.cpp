@@ -53,14 +53,14 @@ void VariantMenu::choose(int variant) {
                              : QString::fromStdString(scene->variants.names[std::size_t(variant)]);
     QPointer<VariantMenu> self(this);
     post_([self, variant, name](GpuViewport& gpu) {
-        const gpu::VariantSwitch s = gpu::set_material_variant(gpu.renderer(), variant);
+        const render::VariantSwitch s = render::set_material_variant(gpu.renderer(), variant);
         QMetaObject::invokeMethod(qApp, [self, s, name] {
             if (self) Q_EMIT self->switched(describe(s, name));
         });
     });
 }
 
-QString VariantMenu::describe(const gpu::VariantSwitch& s, const QString& name) {
+QString VariantMenu::describe(const render::VariantSwitch& s, const QString& name) {
     // With ray tracing: the geometry records that followed, and any TLAS rebuild.
     QString rays;
     if (s.rt_records > 0)

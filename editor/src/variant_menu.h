@@ -2,7 +2,7 @@
 // The Variants menu (KHR_materials_variants): "Default materials" and one entry per
 // variant of the open file, disabled when it has none. Choosing one switches the
 // materials on the render thread without reloading the file
-// (gpu::set_material_variant: only the primitives' material indices change) and says
+// (render::set_material_variant: only the primitives' material indices change) and says
 // what changed, GPU bytes included, through switched(). Self-contained: the window
 // adds it to the menu bar and gives it a way to post render-thread tasks.
 #include <QMenu>
@@ -10,9 +10,9 @@
 
 #include <functional>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 struct VariantSwitch;
-}
+} // namespace sherpa::render
 
 class QActionGroup;
 class QEvent;
@@ -33,7 +33,7 @@ public:
     // Shows `variant` (-1: the defaults); a variant the scene lacks is ignored.
     void choose(int variant);
     // The log line for a switch: variant name, primitives, instances, GPU bytes.
-    static QString describe(const gpu::VariantSwitch& s, const QString& name);
+    static QString describe(const render::VariantSwitch& s, const QString& name);
 
 Q_SIGNALS:
     void switched(const QString& message); // after the render thread switched

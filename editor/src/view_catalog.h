@@ -14,7 +14,7 @@ namespace sherpa::editor {
 struct ViewEntry {
     const char* name; // renderer's name, stable (settings, command line)
     QString label;    // translated
-    std::uint32_t id; // gpu::DebugView value, or the gpu::Overlay bit
+    std::uint32_t id; // render::DebugView value, or the render::Overlay bit
 };
 
 class ViewCatalog {

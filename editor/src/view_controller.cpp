@@ -103,17 +103,17 @@ void ViewController::setGpuCulling(bool gpu) {
     (gpu ? a_.gpu_path : a_.cpu_path)->setChecked(true);
 }
 
-void ViewController::fill(gpu::FrameRequest& request) const {
-    request.view = static_cast<gpu::DebugView>(view_);
+void ViewController::fill(render::FrameRequest& request) const {
+    request.view = static_cast<render::DebugView>(view_);
     request.overlays = overlays_;
     request.uv_checker_density = static_cast<float>(settings_.get(setting::kCheckerDensity));
     if (a_.box_colouring->isChecked()) request.overlays |= ViewCatalog::cullBoxesOverlay();
-    request.cull = a_.gpu_path->isChecked() ? gpu::CullPath::Gpu : gpu::CullPath::Cpu;
+    request.cull = a_.gpu_path->isChecked() ? render::CullPath::Gpu : render::CullPath::Cpu;
     request.cull_method = culling_.method();
     request.cascades = shadow_cascades_;
     request.shadow_pcf_taps = shadow_pcf_taps_;
     if (const auto& frozen = culling_.frozenCamera())
-        request.freeze_cull = gpu::explicit_camera(*frozen);
+        request.freeze_cull = render::explicit_camera(*frozen);
     apply_display(environment_->display(), request);
 }
 
@@ -164,7 +164,7 @@ void ViewController::setupEnvironment() {
 
 // The Lab's lit frames (the shadows family) lit as the viewport is.
 void ViewController::updateLabLighting() {
-    gpu::FrameRequest settings;
+    render::FrameRequest settings;
     apply_display(environment_->display(), settings);
     docks_.lab->runner().setLighting(environment_->choice(), settings);
 }
@@ -172,14 +172,14 @@ void ViewController::updateLabLighting() {
 void ViewController::applyEnvironment() {
     updateLabLighting();
     if (!frames_.renderer()) return; // given to the device once it is ready
-    const gpu::EnvironmentChoice choice = environment_->choice();
+    const render::EnvironmentChoice choice = environment_->choice();
     // The command line's choice and the device becoming ready both ask: build it once.
     if (environment_posted_ && environment_posted_->kind == choice.kind &&
         environment_posted_->path == choice.path)
         return;
     environment_posted_ = choice;
-    const QString name = choice.kind == gpu::EnvironmentChoice::Kind::None ? tr("none")
-                         : choice.kind == gpu::EnvironmentChoice::Kind::Room
+    const QString name = choice.kind == render::EnvironmentChoice::Kind::None ? tr("none")
+                         : choice.kind == render::EnvironmentChoice::Kind::Room
                              ? tr("the room")
                              : QString::fromStdString(choice.path);
     QPointer<ViewController> self(this);

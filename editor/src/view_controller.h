@@ -49,7 +49,7 @@ public:
     // The Environment menu and View › Tone Mapping.
     EnvironmentMenu& environmentMenu() const { return *environment_; }
     // The view, overlays, culling, shadow and display fields of the next frame.
-    void fill(gpu::FrameRequest& request) const;
+    void fill(render::FrameRequest& request) const;
     // The menus' texts and checks in the current language.
     void retranslate();
     // The menu's environment to the viewport (made on the render thread once).
@@ -78,9 +78,9 @@ private:
     RenderController& frames_;
     QMainWindow& window_;
     EnvironmentMenu* environment_ = nullptr;
-    std::optional<gpu::EnvironmentChoice> environment_posted_; // last given to the viewport
-    std::uint32_t view_ = 0;                                   // gpu::DebugView::Lit
-    std::uint32_t overlays_ = 0; // gpu::Overlay bits of the Overlays menu
+    std::optional<render::EnvironmentChoice> environment_posted_; // last given to the viewport
+    std::uint32_t view_ = 0;                                      // render::DebugView::Lit
+    std::uint32_t overlays_ = 0; // render::Overlay bits of the Overlays menu
     // The Lab's shadows family applied; 0 taps: the device's default.
     std::uint32_t shadow_cascades_ = kDefaultShadowCascades, shadow_pcf_taps_ = 0;
 };

@@ -21,7 +21,7 @@ enum class SideB : std::uint8_t {
 struct ViewportComparison {
     ViewportMode mode = ViewportMode::Raster;
     SideB side = SideB::RayTraced;
-    std::uint32_t view = 0; // SideB::OtherView: a gpu::DebugView (ViewCatalog id)
+    std::uint32_t view = 0; // SideB::OtherView: a render::DebugView (ViewCatalog id)
     float divider = 0.5f;   // Split: fraction of the width, A left of it
     // A pixel differs when a channel differs by more than this (sRGB 0..1); a
     // difference of heat_max and above is drawn at full heat; 0: automatic (the 99.9th

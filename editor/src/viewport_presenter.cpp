@@ -12,7 +12,7 @@
 
 namespace sherpa::editor {
 
-ViewportPresenter::ViewportPresenter(gpu::Context& context, gpu::Renderer& renderer,
+ViewportPresenter::ViewportPresenter(gpu::Context& context, render::Renderer& renderer,
                                      const ViewportScene& scene)
     : context_(context), renderer_(renderer), scene_(scene) {}
 
@@ -27,11 +27,11 @@ void ViewportPresenter::releaseSurface() {
     surface_ = 0;
 }
 
-void apply_display(const ViewportDisplay& d, gpu::FrameRequest& settings) {
+void apply_display(const ViewportDisplay& d, render::FrameRequest& settings) {
     settings.environment_rotation = d.environmentRotation;
     settings.environment_intensity = d.environmentIntensity;
     settings.background = d.background;
-    if (d.background == gpu::Background::Color)
+    if (d.background == render::Background::Color)
         settings.clear_color = glm::vec4(d.backgroundColor, 1.0f);
     settings.tone_map = d.toneMap;
     settings.exposure = d.exposure;
@@ -39,14 +39,15 @@ void apply_display(const ViewportDisplay& d, gpu::FrameRequest& settings) {
     settings.energy_compensation = d.energyCompensation;
 }
 
-gpu::FrameRequest drawn_request(const ViewportRequest& frame, float scale, bool reduced_prepass) {
-    gpu::FrameRequest settings = frame.request;
+render::FrameRequest drawn_request(const ViewportRequest& frame, float scale,
+                                   bool reduced_prepass) {
+    render::FrameRequest settings = frame.request;
     // A reduced frame means a slow device while the camera moves: the shadow cascades
     // follow the camera and cost the same at any resolution (DamagedHelmet on lavapipe:
     // 165 of 245 ms), so moving frames go without them; the still frame has them.
     // So does the depth prepass, unless asked for (setReducedFramePrepass).
     if (scale < 1.0f) settings.shadows = false;
-    if (scale < 1.0f && !reduced_prepass) settings.depth_prepass = gpu::PrepassMode::Off;
+    if (scale < 1.0f && !reduced_prepass) settings.depth_prepass = render::PrepassMode::Off;
     // Rays draw the surface only: overlays and the selection are the rasterizer's,
     // and a comparison shows the two sides' surfaces, nothing drawn over one of them.
     if (frame.compare.rays() || frame.compare.comparing()) {
@@ -57,7 +58,7 @@ gpu::FrameRequest drawn_request(const ViewportRequest& frame, float scale, bool 
         settings.highlight_outline.clear();
     }
     if (frame.compare.mode == ViewportMode::RayTraced) {
-        settings.renderer = gpu::RendererKind::RayTraced;
+        settings.renderer = render::RendererKind::RayTraced;
         // The lit view is path traced: one sample per frame, accumulated while
         // nothing changes (the render thread keeps drawing until kPathSamples).
         settings.path.samples = 1;
@@ -66,7 +67,7 @@ gpu::FrameRequest drawn_request(const ViewportRequest& frame, float scale, bool 
     return settings;
 }
 
-void ViewportPresenter::preparePresenter(std::uint64_t surface, const gpu::FrameRequest& frame) {
+void ViewportPresenter::preparePresenter(std::uint64_t surface, const render::FrameRequest& frame) {
     if (!presenter_ || surface_ != surface) {
         presenter_.reset();
         // Not FIFO: the render thread must not block on the display's refresh, and
@@ -104,7 +105,7 @@ PresentOutcome ViewportPresenter::outcome(bool shown) const {
     if (presenter_ && !completed_.passes.empty()) out.gpu_ms = completed_.gpu_ms;
     const auto& h = renderer_.cull_history();
     if (h.size() > 0) {
-        const gpu::CullFrame& f = h[h.size() - 1];
+        const render::CullFrame& f = h[h.size() - 1];
         out.cull_passes = true;
         out.passes = f.passes;
         out.cached_shadows = !f.shadows_rendered;
@@ -115,17 +116,17 @@ PresentOutcome ViewportPresenter::outcome(bool shown) const {
 bool ViewportPresenter::draw(std::uint64_t surface, const ViewportRequest& frame, float scale) {
     refusal_.clear();
     if (!surface || frame.request.width == 0 || frame.request.height == 0) return false;
-    const gpu::FrameRequest settings = drawn_request(frame, scale, reduced_prepass_);
+    const render::FrameRequest settings = drawn_request(frame, scale, reduced_prepass_);
     preparePresenter(surface, frame.request);
     renderer_.set_hidden_nodes(frame.hiddenNodes); // unchanged: one comparison
     if (frame.compare.comparing()) return presentComparison(frame, settings, scale);
     b_ = {}; // side B lives only while comparing
     difference_ = {};
-    std::optional<gpu::PresentedFrame> presented;
+    std::optional<render::PresentedFrame> presented;
     try {
         presented.emplace(renderer_, settings, scale);
     } catch (const gpu::GpuError& e) { // refused before anything was recorded
-        if (settings.renderer != gpu::RendererKind::RayTraced) throw;
+        if (settings.renderer != render::RendererKind::RayTraced) throw;
         refusal_ = QString::fromUtf8(e.what());
         return false;
     }
@@ -138,8 +139,9 @@ bool ViewportPresenter::draw(std::uint64_t surface, const ViewportRequest& frame
 // The accumulation after this frame (the renderer counts it when it records), and its
 // error read back at each power of two from 4 samples (the sums are read back: a cost
 // that halves in frequency as the image converges).
-void ViewportPresenter::notePathSamples(const gpu::FrameRequest& settings) {
-    if (settings.renderer != gpu::RendererKind::RayTraced || settings.view != gpu::DebugView::Lit) {
+void ViewportPresenter::notePathSamples(const render::FrameRequest& settings) {
+    if (settings.renderer != render::RendererKind::RayTraced ||
+        settings.view != render::DebugView::Lit) {
         path_traced_ = false;
         path_samples_ = path_error_samples_ = 0;
         path_error_ = -1.0;
@@ -151,7 +153,7 @@ void ViewportPresenter::notePathSamples(const gpu::FrameRequest& settings) {
     if (n < path_samples_) path_error_ = -1.0; // started over
     path_samples_ = n;
     if (n >= 4 && (n & (n - 1)) == 0 && n != path_error_samples_) {
-        path_error_ = gpu::path_trace_error(renderer_).relative_error;
+        path_error_ = render::path_trace_error(renderer_).relative_error;
         path_error_samples_ = n;
     }
 }

@@ -26,7 +26,8 @@ class ViewportScene;
 class ViewportPresenter {
 public:
     // Draws with `renderer` (side A) on `context`; `scene` is what it holds.
-    ViewportPresenter(gpu::Context& context, gpu::Renderer& renderer, const ViewportScene& scene);
+    ViewportPresenter(gpu::Context& context, render::Renderer& renderer,
+                      const ViewportScene& scene);
     ~ViewportPresenter();
     ViewportPresenter(const ViewportPresenter&) = delete;
     ViewportPresenter& operator=(const ViewportPresenter&) = delete;
@@ -44,39 +45,40 @@ public:
     void setReducedFramePrepass(bool prepass) { reduced_prepass_ = prepass; }
     // What the GPU measured of the latest completed frame (timestamps pass by pass);
     // empty before one and after releaseSurface().
-    const gpu::FrameStats& completed() const { return completed_; }
+    const render::FrameStats& completed() const { return completed_; }
 
     // Accumulation of the path-traced lit view (ray-traced mode) stops at this many
     // samples per pixel; every change starts it over.
     static constexpr std::uint32_t kPathSamples = 1024;
-    static constexpr std::size_t kFramesInFlight = 2; // gpu::Renderer::kFramesInFlight
+    static constexpr std::size_t kFramesInFlight = 2; // render::Renderer::kFramesInFlight
 
 private:
     // present()'s frame; false when it was skipped or refused.
     bool draw(std::uint64_t surface, const ViewportRequest& frame, float scale);
     // What the renderer measured as of the frame just presented.
     PresentOutcome outcome(bool shown) const;
-    void notePathSamples(const gpu::FrameRequest& settings);
-    void preparePresenter(std::uint64_t surface, const gpu::FrameRequest& frame);
+    void notePathSamples(const render::FrameRequest& settings);
+    void preparePresenter(std::uint64_t surface, const render::FrameRequest& frame);
     // viewport_presenter_compare.cpp: side B loaded as `frame` asks, both drawn and
     // composited.
-    bool presentComparison(const ViewportRequest& frame, const gpu::FrameRequest& a, float scale);
+    bool presentComparison(const ViewportRequest& frame, const render::FrameRequest& a,
+                           float scale);
 
     gpu::Context& context_;
-    gpu::Renderer& renderer_;
+    render::Renderer& renderer_;
     const ViewportScene& scene_;
     std::unique_ptr<gpu::Presenter> presenter_;
-    gpu::FrameStats completed_; // of the latest frame known complete (status bar, pass table)
+    render::FrameStats completed_; // of the latest frame known complete (status bar, pass table)
     std::uint64_t surface_ = 0;
     std::uint32_t width_ = 0, height_ = 0;
     bool reduced_prepass_ = false; // setReducedFramePrepass()
     // Side B of a comparison: a second renderer on the same context, with what it was
     // loaded and lit with; made while comparing, freed after.
     struct ComparisonSide {
-        std::unique_ptr<gpu::Renderer> renderer;
+        std::unique_ptr<render::Renderer> renderer;
         SharedSession session;
         bool all_streams = false, ray_tracing = false;
-        std::shared_ptr<const gpu::EnvironmentImage> environment;
+        std::shared_ptr<const render::EnvironmentImage> environment;
     } b_;
     DifferenceNumbers difference_; // of the latest completed comparison frame
     QString refusal_;              // why the last frame was not drawn (the ray tracer refused)
@@ -90,6 +92,6 @@ private:
 // The request of side A as drawn at `scale`: without shadows (and the prepass unless
 // `reduced_prepass`) when reduced, without overlays and highlight where rays draw or
 // two sides are compared, through the path tracer in the ray-traced mode.
-gpu::FrameRequest drawn_request(const ViewportRequest& frame, float scale, bool reduced_prepass);
+render::FrameRequest drawn_request(const ViewportRequest& frame, float scale, bool reduced_prepass);
 
 } // namespace sherpa::editor

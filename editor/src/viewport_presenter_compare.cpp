@@ -19,14 +19,14 @@ namespace sherpa::editor {
 
 namespace {
 
-gpu::FrameRequest side_b_settings(const ViewportRequest& frame, const gpu::FrameRequest& a) {
-    gpu::FrameRequest b = a;
+render::FrameRequest side_b_settings(const ViewportRequest& frame, const render::FrameRequest& a) {
+    render::FrameRequest b = a;
     switch (frame.compare.side) {
     case SideB::RayTraced:
-        b.renderer = gpu::RendererKind::RayTraced;
+        b.renderer = render::RendererKind::RayTraced;
         break;
     case SideB::OtherView:
-        b.view = static_cast<gpu::DebugView>(frame.compare.view);
+        b.view = static_cast<render::DebugView>(frame.compare.view);
         break;
     case SideB::OtherFile:
         // The pose, joint and hidden nodes are the first scene's nodes: the other file
@@ -39,7 +39,7 @@ gpu::FrameRequest side_b_settings(const ViewportRequest& frame, const gpu::Frame
     return b;
 }
 
-DifferenceNumbers numbers(const gpu::ComparisonStats& s, float heat_max) {
+DifferenceNumbers numbers(const render::ComparisonStats& s, float heat_max) {
     DifferenceNumbers out;
     out.valid = s.valid;
     out.pixels = s.pixels;
@@ -54,13 +54,13 @@ DifferenceNumbers numbers(const gpu::ComparisonStats& s, float heat_max) {
 } // namespace
 
 bool ViewportPresenter::presentComparison(const ViewportRequest& frame,
-                                          const gpu::FrameRequest& a_in, float scale) {
+                                          const render::FrameRequest& a_in, float scale) {
     const ViewportComparison& c = frame.compare;
-    gpu::FrameRequest a = a_in;
+    render::FrameRequest a = a_in;
     // Rays have no derivatives: against the ray tracer both sides sample mip 0, so the
     // difference shows the data paths, not two LOD choices (the engine's exactness check).
     if (c.side == SideB::RayTraced) a.texture_lod = 0.0f;
-    const gpu::FrameRequest b = side_b_settings(frame, a);
+    const render::FrameRequest b = side_b_settings(frame, a);
     const SharedSession session =
         c.side == SideB::OtherFile ? frame.compareSession : scene_.session();
     if (!session) {
@@ -69,13 +69,13 @@ bool ViewportPresenter::presentComparison(const ViewportRequest& frame,
     }
     // Side B's renderer, loaded as this frame needs it (another scene, more streams,
     // acceleration structures for rays); reloaded only when one of those changes.
-    const bool all = scene_.allStreams() || gpu::needs_all_streams(b);
-    const bool rays = b.renderer == gpu::RendererKind::RayTraced;
+    const bool all = scene_.allStreams() || render::needs_all_streams(b);
+    const bool rays = b.renderer == render::RendererKind::RayTraced;
     if (!b_.renderer || b_.session != session || b_.all_streams != all || b_.ray_tracing != rays) {
         b_ = {};
-        gpu::RendererOptions options;
+        render::RendererOptions options;
         options.ray_tracing = rays && context_.info().ray_tracing_enabled;
-        b_.renderer = std::make_unique<gpu::Renderer>(context_, options);
+        b_.renderer = std::make_unique<render::Renderer>(context_, options);
         // Lit as side A is: the same environment (frame_request() gives both sides the
         // same display settings).
         b_.environment = scene_.environment();
@@ -91,13 +91,13 @@ bool ViewportPresenter::presentComparison(const ViewportRequest& frame,
         b_.renderer->set_environment(b_.environment.get());
     }
     b_.renderer->set_hidden_nodes(c.side == SideB::OtherFile ? nullptr : frame.hiddenNodes);
-    gpu::ComparisonSettings compare;
-    compare.mode =
-        c.mode == ViewportMode::Split ? gpu::CompareMode::Split : gpu::CompareMode::Difference;
+    render::ComparisonSettings compare;
+    compare.mode = c.mode == ViewportMode::Split ? render::CompareMode::Split
+                                                 : render::CompareMode::Difference;
     compare.divider = c.divider;
     compare.threshold = c.threshold;
     compare.heat_max = c.heat_max;
-    std::optional<gpu::ComparisonFrame> pair;
+    std::optional<render::ComparisonFrame> pair;
     try {
         pair.emplace(renderer_, a, *b_.renderer, b, compare, scale);
     } catch (const gpu::GpuError& e) { // refused before anything was recorded

@@ -9,7 +9,7 @@
 
 namespace sherpa::editor {
 
-ViewportReadbacks::ViewportReadbacks(gpu::Context& context, gpu::Renderer& renderer,
+ViewportReadbacks::ViewportReadbacks(gpu::Context& context, render::Renderer& renderer,
                                      const ViewportScene& scene)
     : context_(context), renderer_(renderer), scene_(scene) {}
 
@@ -18,7 +18,7 @@ ViewportReadbacks::~ViewportReadbacks() = default;
 std::optional<GpuMaterialReadback> ViewportReadbacks::readMaterial(int material) {
     const Scene* scene = scene_.scene();
     if (!scene) return std::nullopt;
-    std::optional<gpu::MaterialReadback> r = gpu::read_material(renderer_, *scene, material);
+    std::optional<render::MaterialReadback> r = render::read_material(renderer_, *scene, material);
     if (!r) return std::nullopt;
     return GpuMaterialReadback{r->record, std::move(r->bindless_to_texture)};
 }
@@ -29,8 +29,8 @@ ViewportReadbacks::checkGpuCulling(const Frustum& frustum, CullMethod method,
     const Scene* scene = scene_.scene();
     if (!scene || scene->instances.empty()) return std::nullopt;
     if (!culler_ || &culler_->scene() != scene)
-        culler_ = std::make_unique<gpu::GpuCullChecker>(context_, renderer_.resources(), *scene);
-    const gpu::GpuCullComparison r = culler_->compare(frustum, method, cpu_visible);
+        culler_ = std::make_unique<render::GpuCullChecker>(context_, renderer_.resources(), *scene);
+    const render::GpuCullComparison r = culler_->compare(frustum, method, cpu_visible);
     return GpuCullResult{r.gpu_ms, static_cast<std::int64_t>(r.visible.size()), r.differences};
 }
 

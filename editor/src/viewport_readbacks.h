@@ -14,10 +14,13 @@
 #include "culling_monitor.h"
 #include "material_dock.h"
 
-namespace sherpa::gpu {
-class Context;
+namespace sherpa::render {
 class GpuCullChecker;
 class Renderer;
+} // namespace sherpa::render
+
+namespace sherpa::gpu {
+class Context;
 } // namespace sherpa::gpu
 
 namespace sherpa::editor {
@@ -26,7 +29,8 @@ class ViewportScene;
 
 class ViewportReadbacks {
 public:
-    ViewportReadbacks(gpu::Context& context, gpu::Renderer& renderer, const ViewportScene& scene);
+    ViewportReadbacks(gpu::Context& context, render::Renderer& renderer,
+                      const ViewportScene& scene);
     ~ViewportReadbacks();
     ViewportReadbacks(const ViewportReadbacks&) = delete;
     ViewportReadbacks& operator=(const ViewportReadbacks&) = delete;
@@ -45,9 +49,9 @@ public:
 
 private:
     gpu::Context& context_;
-    gpu::Renderer& renderer_;
+    render::Renderer& renderer_;
     const ViewportScene& scene_;
-    std::unique_ptr<gpu::GpuCullChecker> culler_; // CPU/GPU agreement checks, built per scene
+    std::unique_ptr<render::GpuCullChecker> culler_; // CPU/GPU agreement checks, built per scene
 };
 
 } // namespace sherpa::editor

@@ -22,23 +22,23 @@ namespace sherpa::editor {
 struct ViewportDisplay {
     float environmentRotation = 0.0f; // degrees about +Y
     float environmentIntensity = 1.0f;
-    gpu::Background background = gpu::Background::Environment;
+    render::Background background = render::Background::Environment;
     glm::vec3 backgroundColor{0.18f, 0.19f, 0.21f}; // linear; Background::Color
-    gpu::ToneMap toneMap = gpu::ToneMap::Neutral;
+    render::ToneMap toneMap = render::ToneMap::Neutral;
     float exposure = 0.0f; // stops
     bool sun = true;       // the default sun (scenes without lights)
     bool energyCompensation = true;
 };
 
-// The display's fields of `settings` (gpu::copy_lighting's): what every view of the
+// The display's fields of `settings` (render::copy_lighting's): what every view of the
 // window lit alike reads (the viewport, a comparison's side B, the Lab).
-void apply_display(const ViewportDisplay& display, gpu::FrameRequest& settings);
+void apply_display(const ViewportDisplay& display, render::FrameRequest& settings);
 
 // What the window wants drawn: the engine's FrameRequest as the window's controllers
 // fill it (full size; ViewportPresenter::present() drops shadows from reduced frames,
 // and overlays and highlight where rays draw), and what the viewport draws around it.
 struct ViewportRequest {
-    gpu::FrameRequest request;
+    render::FrameRequest request;
     // Nodes unchecked in the scene tree (NodeVisibility::hidden()), given to the
     // renderer; null: all shown.
     std::shared_ptr<const std::vector<bool>> hiddenNodes;

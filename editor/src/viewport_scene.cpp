@@ -8,7 +8,7 @@
 
 namespace sherpa::editor {
 
-ViewportScene::ViewportScene(gpu::Renderer& renderer) : renderer_(renderer) {}
+ViewportScene::ViewportScene(render::Renderer& renderer) : renderer_(renderer) {}
 
 ViewportScene::~ViewportScene() = default;
 
@@ -18,15 +18,16 @@ UploadedScene ViewportScene::load(SharedSession session, const ViewportRequest& 
     // policy and missing-texture mode are set before the one upload.
     session_.reset();
     renderer_.unload();
-    missing_ = missing_checker ? gpu::MissingTextures::Checker : gpu::MissingTextures::Neutral;
-    all_streams_ = gpu::needs_all_streams(frame.request);
+    missing_ =
+        missing_checker ? render::MissingTextures::Checker : render::MissingTextures::Neutral;
+    all_streams_ = render::needs_all_streams(frame.request);
     session_ = std::move(session);
     upload();
     UploadedScene out;
-    if (const gpu::GpuScene* scene = renderer_.scene())
+    if (const render::GpuScene* scene = renderer_.scene())
         out.textureBytes = scene->materials().textures().gpu_bytes();
-    if (const gpu::AccelerationStats* stats = renderer_.resident().acceleration)
-        out.acceleration = std::make_shared<const gpu::AccelerationStats>(*stats);
+    if (const render::AccelerationStats* stats = renderer_.resident().acceleration)
+        out.acceleration = std::make_shared<const render::AccelerationStats>(*stats);
     return out;
 }
 
@@ -39,24 +40,24 @@ void ViewportScene::upload() {
     load_session(renderer_, *session_, all_streams_, missing_);
 }
 
-void load_session(gpu::Renderer& renderer, const SceneSession& session, bool all_streams,
-                  gpu::MissingTextures missing) {
+void load_session(render::Renderer& renderer, const SceneSession& session, bool all_streams,
+                  render::MissingTextures missing) {
     // No textures prepared (cancelled, no plan): an empty set, so that load() does
     // not run the texture pipeline on this thread.
     PreparedTextures textures = session.textures;
     if (!textures) textures = std::make_shared<const tex::PreparedTextureSet>();
-    gpu::SceneSetup setup;
+    render::SceneSetup setup;
     setup.streams =
-        all_streams ? gpu::StreamPolicy::AllPresent : gpu::StreamPolicy::UsedByMaterials;
+        all_streams ? render::StreamPolicy::AllPresent : render::StreamPolicy::UsedByMaterials;
     setup.missing_textures = missing;
     renderer.load(*session.scene, std::move(textures), setup); // hidden nodes: per present()
 }
 
-QStringList ViewportScene::setEnvironment(const gpu::EnvironmentChoice& choice) {
+QStringList ViewportScene::setEnvironment(const render::EnvironmentChoice& choice) {
     std::vector<std::string> warnings;
-    auto image = gpu::make_environment(choice, warnings);
+    auto image = render::make_environment(choice, warnings);
     environment_ =
-        image ? std::make_shared<const gpu::EnvironmentImage>(std::move(*image)) : nullptr;
+        image ? std::make_shared<const render::EnvironmentImage>(std::move(*image)) : nullptr;
     renderer_.set_environment(environment_.get());
     // A comparison's side B is lit alike at its next frame (ViewportPresenter).
     QStringList out;
@@ -65,7 +66,7 @@ QStringList ViewportScene::setEnvironment(const gpu::EnvironmentChoice& choice) 
 }
 
 void ViewportScene::useStreamsFor(const ViewportRequest& frame) {
-    const bool all = gpu::needs_all_streams(frame.request);
+    const bool all = render::needs_all_streams(frame.request);
     if (all == all_streams_) return;
     all_streams_ = all;
     upload();

@@ -15,10 +15,10 @@ namespace sherpa {
 struct Scene;
 }
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 struct AccelerationStats;
 class Renderer;
-} // namespace sherpa::gpu
+} // namespace sherpa::render
 
 namespace sherpa::editor {
 
@@ -28,12 +28,12 @@ struct ViewportRequest;
 struct UploadedScene {
     std::uint64_t textureBytes = 0; // the scene's textures
     // A copy of the scene's BLAS/TLAS statistics; null without ray tracing or a scene.
-    std::shared_ptr<const gpu::AccelerationStats> acceleration;
+    std::shared_ptr<const render::AccelerationStats> acceleration;
 };
 
 class ViewportScene {
 public:
-    explicit ViewportScene(gpu::Renderer& renderer);
+    explicit ViewportScene(render::Renderer& renderer);
     ~ViewportScene();
     ViewportScene(const ViewportScene&) = delete;
     ViewportScene& operator=(const ViewportScene&) = delete;
@@ -53,30 +53,32 @@ public:
     // The environment lighting lit frames: made on the GPU now (prefiltered), replacing
     // the one before; Kind::None removes it. Returns the warnings (an unreadable file
     // and the room used instead, NaN texels, ...).
-    QStringList setEnvironment(const gpu::EnvironmentChoice& choice);
+    QStringList setEnvironment(const render::EnvironmentChoice& choice);
 
     // The session on the GPU (null: none) and its scene.
     const SharedSession& session() const { return session_; }
     const Scene* scene() const { return session_ ? session_->scene.get() : nullptr; }
     // Every stream uploaded (a view asked for more than the materials read).
     bool allStreams() const { return all_streams_; }
-    gpu::MissingTextures missingTextures() const { return missing_; }
+    render::MissingTextures missingTextures() const { return missing_; }
     // The environment image lit frames are lit by (null: none).
-    const std::shared_ptr<const gpu::EnvironmentImage>& environment() const { return environment_; }
+    const std::shared_ptr<const render::EnvironmentImage>& environment() const {
+        return environment_;
+    }
 
 private:
     void upload();
 
-    gpu::Renderer& renderer_;
+    render::Renderer& renderer_;
     SharedSession session_; // on the GPU: its scene and prepared textures
     bool all_streams_ = false;
-    gpu::MissingTextures missing_ = gpu::MissingTextures::Checker; // load()
-    std::shared_ptr<const gpu::EnvironmentImage> environment_;
+    render::MissingTextures missing_ = render::MissingTextures::Checker; // load()
+    std::shared_ptr<const render::EnvironmentImage> environment_;
 };
 
 // Loads `session` into `renderer` (side A's upload and side B's): every stream with
 // `all_streams`, else those its materials use; missing textures drawn as `missing`.
-void load_session(gpu::Renderer& renderer, const SceneSession& session, bool all_streams,
-                  gpu::MissingTextures missing);
+void load_session(render::Renderer& renderer, const SceneSession& session, bool all_streams,
+                  render::MissingTextures missing);
 
 } // namespace sherpa::editor

@@ -25,7 +25,7 @@ std::int64_t gpu_object_count(GpuViewport& gpu) {
 
 QStringList last_pass_times(GpuViewport& gpu) {
     QStringList out;
-    for (const gpu::PassTiming& p : gpu.presenter().completed().passes)
+    for (const render::PassTiming& p : gpu.presenter().completed().passes)
         out << QStringLiteral("%1 %2 ms").arg(QString::fromStdString(p.name)).arg(p.ms, 0, 'f', 1);
     return out;
 }

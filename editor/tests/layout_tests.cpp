@@ -164,8 +164,8 @@ void LayoutTests::oneShotFlagsDoNotPersist() {
 
 void LayoutTests::framingIsTheSameEveryRun() {
     if (!vulkan_.isValid()) QSKIP("no Vulkan");
-    gpu::FrameRequest runs[2];
-    for (gpu::FrameRequest& run : runs) {
+    render::FrameRequest runs[2];
+    for (render::FrameRequest& run : runs) {
         std::unique_ptr<MainWindow> w = launch();
         QVERIFY(w);
         w->viewport()->renderNow(); // what screenshot() draws before grabbing

@@ -414,7 +414,7 @@ void RtTests::differenceOfASceneWithItselfIsZero() {
              qPrintable(text));
     // The colour bar is the engine's heat scale: full heat on top, none at the bottom.
     const QImage bar = legend.colourBar();
-    const auto top = gpu::heat_colour(1.0), bottom = gpu::heat_colour(0.0);
+    const auto top = render::heat_colour(1.0), bottom = render::heat_colour(0.0);
     QCOMPARE(bar.pixel(0, 0), qRgb(top[0], top[1], top[2]));
     QCOMPARE(bar.pixel(0, bar.height() - 1), qRgb(bottom[0], bottom[1], bottom[2]));
     // The same file with its source textures (no BC7): the compression's error, small.

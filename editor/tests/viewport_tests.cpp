@@ -32,7 +32,7 @@ using test::load;
 
 namespace {
 
-// Pixels of the highlight colour (sRGB of gpu::kHighlightColor) in the viewport.
+// Pixels of the highlight colour (sRGB of render::kHighlightColor) in the viewport.
 int orangePixels(MainWindow& w) {
     const QImage shot = w.screenshot().convertToFormat(QImage::Format_RGB32);
     const QWidget* vp = w.findChild<QWidget*>(QStringLiteral("viewport"));
@@ -227,7 +227,7 @@ void ViewportTests::gpuCullingAgreesWithCpu() {
         QVERIFY(window_->docks().culling->agreementText().contains(QStringLiteral("✔")));
         QVERIFY(window_->docks().culling->valueText(CullingDock::GpuMs) != QStringLiteral("—"));
         QVERIFY(test::next_frame(*window_));
-        QVERIFY(window_->frames().lastFrame().request.cull == gpu::CullPath::Gpu);
+        QVERIFY(window_->frames().lastFrame().request.cull == render::CullPath::Gpu);
     }
     // Scene switches with the GPU path on: each new scene is checked against its own culler.
     for (const QString& spec :
@@ -243,7 +243,7 @@ void ViewportTests::gpuCullingAgreesWithCpu() {
     QCOMPARE(test::culling_monitor(*window_).history().latest()->gpu_visible, -1);
     QVERIFY(window_->docks().culling->agreementText().contains(QStringLiteral("off")));
     QVERIFY(test::next_frame(*window_));
-    QVERIFY(window_->frames().lastFrame().request.cull == gpu::CullPath::Cpu);
+    QVERIFY(window_->frames().lastFrame().request.cull == render::CullPath::Cpu);
     QCOMPARE(window_->docks().log->errorCount(), errors);
 }
 

@@ -243,15 +243,15 @@ void WindowTests::viewMenuIsTheEngineTable() {
     QVERIFY(views);
     const QList<QAction*> view_actions = views->actions();
     // The rays-only views (ao, shadow-error) are not listed; the rest in table order.
-    std::vector<const gpu::DebugViewInfo*> raster;
-    for (const gpu::DebugViewInfo& v : gpu::kDebugViews)
-        if (gpu::raster_view(v.id)) raster.push_back(&v);
+    std::vector<const render::DebugViewInfo*> raster;
+    for (const render::DebugViewInfo& v : render::kDebugViews)
+        if (render::raster_view(v.id)) raster.push_back(&v);
     const std::size_t raster_views = raster.size();
     QCOMPARE(view_actions.size(), qsizetype(raster_views));
     QCOMPARE(view_actions.at(0)->text(), QStringLiteral("Beleuchtet")); // "Lit", translated
     for (std::size_t i = 0; i < raster_views; ++i)
         QCOMPARE(view_actions.at(qsizetype(i))->text(),
-                 QCoreApplication::translate(gpu::kViewLabelContext, raster[i]->label));
+                 QCoreApplication::translate(render::kViewLabelContext, raster[i]->label));
     QVERIFY(window_->setLanguage(QStringLiteral("en")));
     for (std::size_t i = 0; i < raster_views; ++i) {
         view_actions.at(qsizetype(i))->trigger();
@@ -262,7 +262,7 @@ void WindowTests::viewMenuIsTheEngineTable() {
     QMenu* overlays = submenu(QStringLiteral("&Overlays"));
     QVERIFY(overlays);
     QStringList expected;
-    for (const gpu::OverlayEntry& o : gpu::kOverlays)
+    for (const render::OverlayEntry& o : render::kOverlays)
         if (o.label) expected << QString::fromLatin1(o.label);
     QStringList shown;
     for (QAction* a : overlays->actions()) shown << a->text();

@@ -57,7 +57,7 @@ layout(push_constant, scalar) uniform Push {
 } pc;
 
 #include "sherpa_mesh_flags.glsl" // mesh_flags: HAS_* stream bits, *_SHIFT, NO_CASCADE
-#include "sherpa_views.glsl"      // VIEW_*: sherpa::gpu::kDebugViews
+#include "sherpa_views.glsl"      // VIEW_*: sherpa::render::kDebugViews
 
 bool has(uint bit) { return (pc.mesh_flags & bit) != 0u; }
 

@@ -1,4 +1,4 @@
-// GLSL twins of sherpa::gpu::GPUCullObject / GPUCullParams / VkDrawIndexedIndirectCommand
+// GLSL twins of sherpa::render::GPUCullObject / GPUCullParams / VkDrawIndexedIndirectCommand
 // (engine/render/include/sherpa/render/gpu_structs.h pins every offset). Scalar layout.
 #ifndef SHERPA_CULL_STRUCTS_GLSL
 #define SHERPA_CULL_STRUCTS_GLSL

@@ -30,7 +30,7 @@ vec3 checker_color(vec2 uv, float density) {
 }
 #endif
 
-// Authored: green, generated: yellow, defaulted: red (gpu::kProvenanceColors).
+// Authored: green, generated: yellow, defaulted: red (render::kProvenanceColors).
 vec3 provenance_color(uint p) {
     return PROVENANCE_COLORS[min(p, 2u)];
 }

@@ -1,4 +1,4 @@
-// GLSL twin of sherpa::gpu::GPUGeometryInfo (engine/render/include/sherpa/render/
+// GLSL twin of sherpa::render::GPUGeometryInfo (engine/render/include/sherpa/render/
 // gpu_structs.h pins every offset). Scalar layout; needs GL_EXT_buffer_reference and
 // GL_EXT_shader_explicit_arithmetic_types_int64 (uint64_t addresses).
 #ifndef SHERPA_RT_GEOMETRY_GLSL

@@ -42,7 +42,7 @@ bool surface_view_color(uint view, GPUMaterialData m, GPUMaterialExtra x, vec4 b
     case VIEW_UV1: c = vec3(fract(uv1), 0.0); return true;
     case VIEW_BASE_COLOR: c = base.rgb; return true;
     // Specular-glossiness materials have no metallic value: the metallic view flags
-    // them (SPEC_GLOSS_FLAG, sherpa::gpu::kSpecGlossFlagColor), their roughness is
+    // them (SPEC_GLOSS_FLAG, sherpa::render::kSpecGlossFlagColor), their roughness is
     // 1 - glossiness and their F0 the specular colour (metal-rough: mix(0.04, base, metallic)).
     case VIEW_METALLIC:
         c = x.workflow == WORKFLOW_SPECULAR_GLOSSINESS

@@ -1,4 +1,4 @@
-// Display transforms of the lit view (sherpa::gpu::ToneMap): exposure in stops, then
+// Display transforms of the lit view (sherpa::render::ToneMap): exposure in stops, then
 // Khronos PBR Neutral, ACES (the fit three.js's ACESFilmicToneMapping uses, with its
 // 1/0.6 exposure boost), AgX (three.js's AgXToneMapping) or a clamp. The results are
 // linear sRGB in 0..1; the colour target encodes them. Each curve is three.js's

@@ -236,7 +236,7 @@ TEST(SpecularGlossiness, DebugViewsShowItsOwnFields) {
                          glm::vec3(1.0f - 0.5f * kTexel[3] / 255.0f), "spec-gloss roughness");
     expect_object_pixels(render(sg, "--view specular"), specular_factor * texel_specular,
                          "spec-gloss specular");
-    const auto& flag = sherpa::gpu::kSpecGlossFlagColor;
+    const auto& flag = sherpa::render::kSpecGlossFlagColor;
     expect_object_pixels(render(sg, "--view metallic"), glm::vec3(flag[0], flag[1], flag[2]),
                          "spec-gloss metallic");
     // Metal-rough: the views as before, and F0 = mix(0.04, base, metallic).

@@ -30,13 +30,14 @@ std::shared_ptr<const tex::PreparedTextureSet> no_textures() {
 class AccelerationTest : public GpuTest {
 protected:
     // Builds `scene` on the shared device; `check` sees the statistics.
-    gpu::AccelerationStats build(const Scene& scene, const gpu::AccelerationSettings& s = {}) {
+    render::AccelerationStats build(const Scene& scene,
+                                    const render::AccelerationSettings& s = {}) {
         gpu::ResourceManager& rm = renderer().resources();
         gpu::BindlessTable table(rm);
-        gpu::AccelerationStats stats;
+        render::AccelerationStats stats;
         {
-            gpu::GpuScene gpu_scene(rm, table, scene, no_textures());
-            gpu::SceneAccelerationStructures as(rm, scene, gpu_scene, s);
+            render::GpuScene gpu_scene(rm, table, scene, no_textures());
+            render::SceneAccelerationStructures as(rm, scene, gpu_scene, s);
             stats = as.stats();
             EXPECT_EQ(as.tlas() != VK_NULL_HANDLE, stats.tlas.instances > 0);
             EXPECT_EQ(as.geometry_records() != 0, stats.geometry_records > 0);
@@ -52,7 +53,7 @@ TEST_F(AccelerationTest, RtOffEnablesNothingAndBuffersCarryNoBuildInputUsage) {
     auto usage_of = [&](gpu::Context& ctx, VkDeviceAddress& index_address) {
         gpu::ResourceManager rm(ctx);
         gpu::BindlessTable table(rm);
-        gpu::GpuScene g(rm, table, *scene, no_textures());
+        render::GpuScene g(rm, table, *scene, no_textures());
         index_address = g.index_address();
         return g.memory().geometry_usage;
     };
@@ -83,7 +84,7 @@ TEST_F(AccelerationTest, RtOffEnablesNothingAndBuffersCarryNoBuildInputUsage) {
 TEST_F(AccelerationTest, OneBlasPerGltfMeshOpaqueOnlyForOpaqueMaterials) {
     if (!has_rt()) GTEST_SKIP() << "device without ray tracing";
     auto scene = load("builtin:default");
-    const gpu::AccelerationStats s = build(*scene);
+    const render::AccelerationStats s = build(*scene);
     std::set<std::uint32_t> groups;
     std::uint64_t triangles = 0, opaque = 0;
     for (const Mesh& m : scene->meshes) {
@@ -95,14 +96,14 @@ TEST_F(AccelerationTest, OneBlasPerGltfMeshOpaqueOnlyForOpaqueMaterials) {
     ASSERT_EQ(s.blas.size(), groups.size());
     EXPECT_EQ(s.blas_triangles(), triangles);
     std::uint64_t opaque_geometries = 0;
-    for (const gpu::BlasStats& b : s.blas) {
+    for (const render::BlasStats& b : s.blas) {
         opaque_geometries += b.opaque_geometries;
         EXPECT_GT(b.scratch_bytes, 0u);
         EXPECT_LE(b.compacted_bytes, b.build_bytes);
     }
     EXPECT_EQ(opaque_geometries, opaque);
     EXPECT_LT(opaque_geometries, s.geometry_records); // glass and perforated box
-    EXPECT_EQ(s.geometry_record_bytes, s.geometry_records * sizeof(gpu::GPUGeometryInfo));
+    EXPECT_EQ(s.geometry_record_bytes, s.geometry_records * sizeof(render::GPUGeometryInfo));
     EXPECT_EQ(s.tlas.instances, scene->instances.size()); // one primitive per mesh here
     EXPECT_EQ(s.tlas.deduplicated + s.tlas.hidden + s.tlas.non_finite, 0u);
 }
@@ -127,10 +128,10 @@ TEST_F(AccelerationTest, TlasDeduplicatesHidesMirrorsAndDropsNonFiniteTransforms
     glm::mat4 nan = w;
     nan[3][1] = std::numeric_limits<float>::quiet_NaN();
     place(nan);
-    gpu::AccelerationSettings settings;
+    render::AccelerationSettings settings;
     settings.hidden_nodes.assign(scene->nodes.size(), false);
     settings.hidden_nodes[scene->instances[1].node_id] = true;
-    const gpu::AccelerationStats s = build(*scene, settings);
+    const render::AccelerationStats s = build(*scene, settings);
     EXPECT_EQ(s.tlas.node_mesh_pairs, base + 3);
     EXPECT_EQ(s.tlas.deduplicated, 1u);
     EXPECT_EQ(s.tlas.mirrored, 1u);
@@ -152,11 +153,11 @@ TEST_F(AccelerationTest, DegenerateTrianglesAndEmptyMeshesBuildCleanly) {
         degenerate.indices[t + 2] = a;                       // else a line
     }
     scene->meshes[1].indices.clear();
-    const gpu::AccelerationStats s = build(*scene);
+    const render::AccelerationStats s = build(*scene);
     std::set<std::uint32_t> groups;
     for (const Mesh& m : scene->meshes) groups.insert(m.group_id);
     EXPECT_EQ(s.blas.size(), groups.size() - 1); // the empty mesh has no BLAS
-    for (const gpu::BlasStats& b : s.blas) EXPECT_NE(b.mesh, scene->meshes[1].group_id);
+    for (const render::BlasStats& b : s.blas) EXPECT_NE(b.mesh, scene->meshes[1].group_id);
 }
 
 TEST_F(AccelerationTest, MovedInstancesRefitAndVisibilityChangesRebuild) {
@@ -165,8 +166,8 @@ TEST_F(AccelerationTest, MovedInstancesRefitAndVisibilityChangesRebuild) {
     gpu::ResourceManager& rm = renderer().resources();
     {
         gpu::BindlessTable table(rm);
-        gpu::GpuScene gpu_scene(rm, table, *scene, no_textures());
-        gpu::SceneAccelerationStructures as(rm, *scene, gpu_scene);
+        render::GpuScene gpu_scene(rm, table, *scene, no_textures());
+        render::SceneAccelerationStructures as(rm, *scene, gpu_scene);
         EXPECT_EQ(as.stats().tlas.builds, 1u);
         EXPECT_EQ(as.stats().tlas.refits, 0u);
         // Animation: every instance moves, the set stays: a refit.
@@ -199,21 +200,21 @@ TEST_F(AccelerationTest, MovedInstancesRefitAndVisibilityChangesRebuild) {
 
 TEST(RtPlan, BatchesStayUnderTheScratchBudget) {
     const std::vector<std::uint64_t> scratch = {100, 30, 70, 500, 1, 1};
-    const auto batches = gpu::batch_by_scratch(scratch, 128, 8);
+    const auto batches = render::batch_by_scratch(scratch, 128, 8);
     // Rounded: 104, 32, 72, 504, 8, 8.
     ASSERT_EQ(batches.size(), 4u);
     EXPECT_EQ(batches[0], (std::vector<std::uint32_t>{0}));
     EXPECT_EQ(batches[1], (std::vector<std::uint32_t>{1, 2}));
     EXPECT_EQ(batches[2], (std::vector<std::uint32_t>{3})); // alone over the budget
     EXPECT_EQ(batches[3], (std::vector<std::uint32_t>{4, 5}));
-    EXPECT_TRUE(gpu::batch_by_scratch({}, 128, 8).empty());
+    EXPECT_TRUE(render::batch_by_scratch({}, 128, 8).empty());
 }
 
 TEST(RtPlan, GeometriesFollowPrimitivesOfEachGltfMesh) {
     Scene scene;
     scene.materials.resize(2);
     scene.materials[1].alpha_mode = AlphaMode::Mask;
-    std::vector<gpu::GpuMesh> meshes(4);
+    std::vector<render::GpuMesh> meshes(4);
     for (std::uint32_t i = 0; i < 4; ++i) {
         Mesh m;
         m.group_id = i < 2 ? 0 : i - 1; // mesh 0: primitives 0, 1; mesh 1: 2; mesh 2: 3
@@ -222,9 +223,9 @@ TEST(RtPlan, GeometriesFollowPrimitivesOfEachGltfMesh) {
         scene.meshes.push_back(m);
         meshes[i].index_count = 6;
     }
-    meshes[2].flags = gpu::kMeshLinesBit; // lines: no geometry, so mesh 1 has no BLAS
-    meshes[3].index_count = 0;            // empty: no geometry, no BLAS
-    const auto plans = gpu::plan_blas(scene, meshes);
+    meshes[2].flags = render::kMeshLinesBit; // lines: no geometry, so mesh 1 has no BLAS
+    meshes[3].index_count = 0;               // empty: no geometry, no BLAS
+    const auto plans = render::plan_blas(scene, meshes);
     ASSERT_EQ(plans.size(), 1u);
     EXPECT_EQ(plans[0].group, 0u);
     EXPECT_EQ(plans[0].name, "m0");
@@ -232,7 +233,7 @@ TEST(RtPlan, GeometriesFollowPrimitivesOfEachGltfMesh) {
     EXPECT_FALSE(plans[0].geometries[0].opaque); // single-sided: any-hit culls back faces
     EXPECT_FALSE(plans[0].geometries[1].opaque); // masked: reaches any-hit
     scene.materials[0].double_sided = true;
-    EXPECT_TRUE(gpu::plan_blas(scene, meshes)[0].geometries[0].opaque);
+    EXPECT_TRUE(render::plan_blas(scene, meshes)[0].geometries[0].opaque);
     EXPECT_EQ(plans[0].triangles, 4u);
 }
 
@@ -246,7 +247,7 @@ TEST(RtPlan, PosedBlasPerMovingInstanceWorldSpaceOnlyWhenSkinned) {
     scene.skins.resize(1);
     scene.nodes.resize(3);
     scene.nodes[0].skin = 0; // node 1 draws the skinned mesh without its skin
-    std::vector<gpu::GpuMesh> meshes(3);
+    std::vector<render::GpuMesh> meshes(3);
     for (std::uint32_t i = 0; i < 3; ++i) {
         Mesh m;
         m.group_id = i < 2 ? 0 : 1; // glTF mesh 0: engine meshes 0 (skinned) and 1 (static)
@@ -272,9 +273,9 @@ TEST(RtPlan, PosedBlasPerMovingInstanceWorldSpaceOnlyWhenSkinned) {
         scene.instances.push_back(inst);
     }
     const std::vector<std::uint32_t> gpu_order = {4, 3, 2, 1, 0}; // GPU instance -> scene's
-    const auto plans = gpu::plan_blas(scene, meshes);
+    const auto plans = render::plan_blas(scene, meshes);
     ASSERT_EQ(plans.size(), 2u);
-    const auto posed = gpu::plan_posed_blas(scene, meshes, gpu_order, plans);
+    const auto posed = render::plan_posed_blas(scene, meshes, gpu_order, plans);
     ASSERT_EQ(posed.size(), 3u);
     EXPECT_EQ(posed[0].node, 0u);
     EXPECT_TRUE(posed[0].world_space);
@@ -289,20 +290,21 @@ TEST(RtPlan, PosedBlasPerMovingInstanceWorldSpaceOnlyWhenSkinned) {
     EXPECT_FALSE(posed[2].world_space);
     EXPECT_EQ(posed[2].geometries[0].gpu_instance, 0u);
     // Static meshes: nothing posed.
-    for (gpu::GpuMesh& m : meshes) m.motion = 0;
-    EXPECT_TRUE(gpu::plan_posed_blas(scene, meshes, gpu_order, plans).empty());
+    for (render::GpuMesh& m : meshes) m.motion = 0;
+    EXPECT_TRUE(render::plan_posed_blas(scene, meshes, gpu_order, plans).empty());
 
-    std::vector<gpu::TlasCandidate> candidates = gpu::tlas_candidates(scene, std::vector{0, 1});
+    std::vector<render::TlasCandidate> candidates =
+        render::tlas_candidates(scene, std::vector{0, 1});
     ASSERT_EQ(candidates.size(), 3u); // (0, 0), (1, 0), (2, 1)
     candidates[0].blas = 2;
     candidates[0].world_space = true;
     const std::vector<glm::mat4> pose(3, glm::scale(glm::mat4(1.0f), glm::vec3(2.0f)));
-    const gpu::TlasPlan tlas = gpu::plan_tlas(candidates, {}, pose);
+    const render::TlasPlan tlas = render::plan_tlas(candidates, {}, pose);
     ASSERT_EQ(tlas.instances.size(), 3u);
     EXPECT_EQ(tlas.instances[0].blas, 2u);
     EXPECT_EQ(tlas.instances[0].world, glm::mat4(1.0f));
     EXPECT_EQ(tlas.instances[1].world, pose[1]);
-    EXPECT_EQ(gpu::plan_tlas(candidates, {}).instances[1].world, scene.instances[2].world);
+    EXPECT_EQ(render::plan_tlas(candidates, {}).instances[1].world, scene.instances[2].world);
 }
 
 // EXT_mesh_gpu_instancing: one TLAS candidate per (node, row, glTF mesh), placed at
@@ -332,14 +334,14 @@ TEST(RtPlan, EveryInstancingRowIsATlasInstanceAtNodeWorldTimesRow) {
             inst.world = rows.rows[std::size_t(r)].matrix();
             scene.instances.push_back(inst);
         }
-    const auto candidates = gpu::tlas_candidates(scene, std::vector{0});
+    const auto candidates = render::tlas_candidates(scene, std::vector{0});
     ASSERT_EQ(candidates.size(), 3u) << "one per row, not one per node";
     const std::vector<glm::mat4> pose(1, glm::translate(glm::mat4(1.0f), glm::vec3(0, 5, 0)));
-    const gpu::TlasPlan tlas = gpu::plan_tlas(candidates, {}, pose);
+    const render::TlasPlan tlas = render::plan_tlas(candidates, {}, pose);
     ASSERT_EQ(tlas.instances.size(), 3u);
     for (std::size_t r = 0; r < 3; ++r)
         EXPECT_EQ(tlas.instances[r].world, pose[0] * rows.rows[r].matrix()) << r;
-    EXPECT_EQ(gpu::plan_tlas(candidates, {}).instances[2].world, rows.rows[2].matrix());
+    EXPECT_EQ(render::plan_tlas(candidates, {}).instances[2].world, rows.rows[2].matrix());
 }
 
 } // namespace

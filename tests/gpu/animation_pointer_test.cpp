@@ -119,18 +119,18 @@ TEST(AnimationPointerExtensions, PoseSamplesAndAppliesEveryExtensionValue) {
 }
 
 // The block of type B at word `at` (from the buffer's start) of a read-back material.
-template <class B> B block(const gpu::MaterialReadback& r, std::uint32_t at) {
+template <class B> B block(const render::MaterialReadback& r, std::uint32_t at) {
     B out{};
-    EXPECT_NE(at, gpu::kNoExtension);
+    EXPECT_NE(at, render::kNoExtension);
     const std::size_t first = at - r.extension_first;
     EXPECT_LE((first * 16 + sizeof(B)), r.extension_words.size() * 16);
-    if (at != gpu::kNoExtension && first * 16 + sizeof(B) <= r.extension_words.size() * 16)
+    if (at != render::kNoExtension && first * 16 + sizeof(B) <= r.extension_words.size() * 16)
         std::memcpy(&out, &r.extension_words[first], sizeof(B));
     return out;
 }
 
 // A texture transform without rotation: scale on the diagonal, offset in the third column.
-void expect_uv(const gpu::GPUTextureTransform& uv, glm::vec2 offset, glm::vec2 scale,
+void expect_uv(const render::GPUTextureTransform& uv, glm::vec2 offset, glm::vec2 scale,
                const char* what) {
     SCOPED_TRACE(what);
     EXPECT_NEAR(uv.row0.x, scale.x, 1e-5);
@@ -149,23 +149,23 @@ class AnimationPointerGpu : public GpuTest {};
 TEST_F(AnimationPointerGpu, AnimatedExtensionValuesReachTheGpuRecords) {
     std::unique_ptr<Scene> s = extensions_file();
     ASSERT_TRUE(s);
-    gpu::RendererOptions options;
+    render::RendererOptions options;
     options.textures = test_texture_settings();
-    gpu::Renderer r(context(), options);
+    render::Renderer r(context(), options);
     r.load(*s);
     const std::uint64_t words = r.scene()->materials().extensions().words.size();
-    gpu::FrameRequest f;
+    render::FrameRequest f;
     f.width = 64;
     f.height = 48;
     for (const float t : {0.5f, 1.5f, 0.25f}) {
         SCOPED_TRACE("t = " + std::to_string(t));
         f.pose = std::make_shared<const Pose>(evaluate_pose(*s, 0, t));
         r.render(f);
-        const auto back = gpu::read_material(r, *s, 0);
+        const auto back = render::read_material(r, *s, 0);
         ASSERT_TRUE(back);
         ASSERT_FALSE(back->extension_words.empty());
-        const auto index = block<gpu::GPUExtensionIndex>(*back, back->extension_first);
-        const auto cc = block<gpu::GPUClearcoatBlock>(*back, index.clearcoat);
+        const auto index = block<render::GPUExtensionIndex>(*back, back->extension_first);
+        const auto cc = block<render::GPUClearcoatBlock>(*back, index.clearcoat);
         EXPECT_NEAR(cc.factors.x, lerp(0, 1, t), 1e-6);
         EXPECT_NEAR(cc.factors.y, step(0.2f, 0.6f, t), 1e-6);
         EXPECT_NEAR(cc.factors.z, lerp(1, 0.5f, t), 1e-6);
@@ -175,47 +175,48 @@ TEST_F(AnimationPointerGpu, AnimatedExtensionValuesReachTheGpuRecords) {
         const float rotation = step(0, kPi / 2, t);
         EXPECT_NEAR(cc.normal_uv.row0.x, std::cos(rotation), 1e-5);
         EXPECT_NEAR(std::abs(cc.normal_uv.row0.y), std::sin(rotation), 1e-5);
-        const auto tr = block<gpu::GPUTransmissionBlock>(*back, index.transmission);
+        const auto tr = block<render::GPUTransmissionBlock>(*back, index.transmission);
         EXPECT_NEAR(tr.factor, lerp(0, 1, t), 1e-6);
         expect_uv(tr.uv, {lerp(0, 0.40f, t), lerp(0, 0.5f, t)}, {1, 1}, "transmission");
-        const auto vol = block<gpu::GPUVolumeBlock>(*back, index.volume);
+        const auto vol = block<render::GPUVolumeBlock>(*back, index.volume);
         EXPECT_NEAR(vol.thickness_factor, lerp(0, 2, t), 1e-6);
         EXPECT_NEAR(vol.attenuation.w, attenuation_distance(t), 1e-5);
         EXPECT_NEAR(vol.attenuation.x, lerp(1, 0.2f, t), 1e-6);
         EXPECT_NEAR(vol.attenuation.z, lerp(1, 0.8f, t), 1e-6);
         expect_uv(vol.thickness_uv, {lerp(0, 0.45f, t), lerp(0, 0.5f, t)}, {1, 1}, "thickness");
-        const auto sh = block<gpu::GPUSheenBlock>(*back, index.sheen);
+        const auto sh = block<render::GPUSheenBlock>(*back, index.sheen);
         EXPECT_NEAR(sh.factors.x, lerp(0, 1, t), 1e-6);
         EXPECT_NEAR(sh.factors.y, lerp(0, 0.5f, t), 1e-6);
         EXPECT_NEAR(sh.factors.w, step(0.3f, 0.7f, t), 1e-6);
         expect_uv(sh.color_uv, {lerp(0, 0.30f, t), lerp(0, 0.5f, t)},
                   {lerp(1, 2, t), lerp(1, 4, t)}, "sheen colour");
         expect_uv(sh.roughness_uv, {lerp(0, 0.35f, t), lerp(0, 0.5f, t)}, {1, 1}, "sheen rough");
-        const auto ir = block<gpu::GPUIridescenceBlock>(*back, index.iridescence);
+        const auto ir = block<render::GPUIridescenceBlock>(*back, index.iridescence);
         EXPECT_NEAR(ir.factors.x, lerp(0, 1, t), 1e-6);
         EXPECT_NEAR(ir.factors.y, lerp(1.3f, 2.0f, t), 1e-6);
         EXPECT_NEAR(ir.factors.z, lerp(100, 200, t), 1e-4);
         EXPECT_NEAR(ir.factors.w, lerp(400, 800, t), 1e-4);
         expect_uv(ir.uv, {lerp(0, 0.65f, t), lerp(0, 0.5f, t)}, {1, 1}, "iridescence");
         expect_uv(ir.thickness_uv, {lerp(0, 0.70f, t), lerp(0, 0.5f, t)}, {1, 1}, "film");
-        const auto an = block<gpu::GPUAnisotropyBlock>(*back, index.anisotropy);
+        const auto an = block<render::GPUAnisotropyBlock>(*back, index.anisotropy);
         EXPECT_NEAR(an.factors.x, lerp(0, 1, t), 1e-6);
         EXPECT_NEAR(an.factors.y, std::cos(lerp(0, kPi, t)), 1e-5);
         EXPECT_NEAR(an.factors.z, std::sin(lerp(0, kPi, t)), 1e-5);
         expect_uv(an.uv, {lerp(0, 0.60f, t), lerp(0, 0.5f, t)}, {1, 1}, "anisotropy");
-        EXPECT_NEAR(block<gpu::GPUDispersionBlock>(*back, index.dispersion).dispersion,
+        EXPECT_NEAR(block<render::GPUDispersionBlock>(*back, index.dispersion).dispersion,
                     lerp(0, 1, t), 1e-6);
-        const auto dt = block<gpu::GPUDiffuseTransmissionBlock>(*back, index.diffuse_transmission);
+        const auto dt =
+            block<render::GPUDiffuseTransmissionBlock>(*back, index.diffuse_transmission);
         EXPECT_NEAR(dt.color_factor.w, lerp(0, 1, t), 1e-6);
         EXPECT_NEAR(dt.color_factor.x, lerp(1, 0, t), 1e-6);
         EXPECT_NEAR(dt.color_factor.y, 1.0f, 1e-6);
         expect_uv(dt.uv, {lerp(0, 0.50f, t), lerp(0, 0.5f, t)}, {1, 1}, "diffuse transmission");
         expect_uv(dt.color_uv, {lerp(0, 0.55f, t), lerp(0, 0.5f, t)}, {1, 1}, "dt colour");
-        const auto sp = block<gpu::GPUSpecularBlock>(*back, index.specular);
+        const auto sp = block<render::GPUSpecularBlock>(*back, index.specular);
         expect_uv(sp.specular_uv, {lerp(0, 0.05f, t), lerp(0, 0.5f, t)}, {1, 1}, "specular");
         expect_uv(sp.color_uv, {lerp(0, 0.10f, t), lerp(0, 0.5f, t)}, {1, 1}, "specular colour");
         // Only materials that use an extension have blocks, and animation adds none.
-        const auto plain = gpu::read_material(r, *s, 1);
+        const auto plain = render::read_material(r, *s, 1);
         ASSERT_TRUE(plain);
         EXPECT_TRUE(plain->extension_words.empty());
         EXPECT_EQ(r.scene()->materials().extensions().words.size(), words);

@@ -18,12 +18,12 @@ constexpr const char* kGrazing = "eye=0,0.6,9:target=0,0,-20:fov=60";
 class CheckerTest : public GpuTest {
 protected:
     std::vector<std::uint8_t> render(std::uint32_t size, float density) {
-        gpu::FrameRequest s;
+        render::FrameRequest s;
         s.width = s.height = size;
-        s.view = gpu::DebugView::Uv0Checker;
+        s.view = render::DebugView::Uv0Checker;
         s.uv_checker_density = density;
         std::string error;
-        EXPECT_TRUE(gpu::parse_camera_spec(kGrazing, s.camera, error)) << error;
+        EXPECT_TRUE(render::parse_camera_spec(kGrazing, s.camera, error)) << error;
         return draw(s);
     }
 };

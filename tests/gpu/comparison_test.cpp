@@ -9,18 +9,18 @@ namespace {
 
 TEST(HeatColour, EndpointsAndStops) {
     using C = std::array<std::uint8_t, 3>;
-    EXPECT_EQ(gpu::heat_colour(0.0), (C{0, 0, 0}));
-    EXPECT_EQ(gpu::heat_colour(0.25), (C{0, 0, 255}));
-    EXPECT_EQ(gpu::heat_colour(0.5), (C{255, 0, 0}));
-    EXPECT_EQ(gpu::heat_colour(0.75), (C{255, 255, 0}));
-    EXPECT_EQ(gpu::heat_colour(1.0), (C{255, 255, 255}));
-    EXPECT_EQ(gpu::heat_colour(-3.0), (C{0, 0, 0}));
-    EXPECT_EQ(gpu::heat_colour(7.0), (C{255, 255, 255}));
-    EXPECT_EQ(gpu::heat_colour(NAN), (C{0, 0, 0}));
-    EXPECT_EQ(gpu::parse_compare_mode("split"), gpu::CompareMode::Split);
-    EXPECT_EQ(gpu::parse_compare_mode(gpu::to_string(gpu::CompareMode::Difference)),
-              gpu::CompareMode::Difference);
-    EXPECT_FALSE(gpu::parse_compare_mode("blend"));
+    EXPECT_EQ(render::heat_colour(0.0), (C{0, 0, 0}));
+    EXPECT_EQ(render::heat_colour(0.25), (C{0, 0, 255}));
+    EXPECT_EQ(render::heat_colour(0.5), (C{255, 0, 0}));
+    EXPECT_EQ(render::heat_colour(0.75), (C{255, 255, 0}));
+    EXPECT_EQ(render::heat_colour(1.0), (C{255, 255, 255}));
+    EXPECT_EQ(render::heat_colour(-3.0), (C{0, 0, 0}));
+    EXPECT_EQ(render::heat_colour(7.0), (C{255, 255, 255}));
+    EXPECT_EQ(render::heat_colour(NAN), (C{0, 0, 0}));
+    EXPECT_EQ(render::parse_compare_mode("split"), render::CompareMode::Split);
+    EXPECT_EQ(render::parse_compare_mode(to_string(render::CompareMode::Difference)),
+              render::CompareMode::Difference);
+    EXPECT_FALSE(render::parse_compare_mode("blend"));
 }
 
 // Split: side A's own pixels left of the divider, B's right of it, the divider line
@@ -29,16 +29,16 @@ TEST_F(ComparisonTest, SplitShowsSideALeftAndSideBRight) {
     auto scene = load(gltf_asset("BoxTextured"));
     ASSERT_TRUE(scene);
     auto a = make_renderer(*scene), b = make_renderer(*scene);
-    const gpu::FrameRequest sa = small_settings(*scene, gpu::DebugView::Lit);
-    const gpu::FrameRequest sb = small_settings(*scene, gpu::DebugView::Normal);
+    const render::FrameRequest sa = small_settings(*scene, render::DebugView::Lit);
+    const render::FrameRequest sb = small_settings(*scene, render::DebugView::Normal);
     std::vector<std::uint8_t> alone_a, alone_b, split;
     a->render(sa, &alone_a);
     b->render(sb, &alone_b);
     ASSERT_GT(differing_pixels(alone_a, alone_b, 8), 500u) << "the sides must differ";
-    gpu::ComparisonSettings c;
-    c.mode = gpu::CompareMode::Split;
+    render::ComparisonSettings c;
+    c.mode = render::CompareMode::Split;
     c.divider = 0.25f; // x = 24: pixels 23 and 24 are the line
-    const gpu::ComparisonStats stats = gpu::render_comparison(*a, sa, *b, sb, c, &split);
+    const render::ComparisonStats stats = render::render_comparison(*a, sa, *b, sb, c, &split);
     ASSERT_EQ(split.size(), alone_a.size());
     std::size_t wrong = 0, line = 0;
     for (std::uint32_t y = 0; y < kH; ++y)
@@ -64,12 +64,12 @@ TEST_F(ComparisonTest, DifferenceOfASceneWithItselfIsBlack) {
     auto scene = load(gltf_asset("BoxTextured"));
     ASSERT_TRUE(scene);
     auto a = make_renderer(*scene), b = make_renderer(*scene);
-    const gpu::FrameRequest s = small_settings(*scene, gpu::DebugView::Lit);
-    gpu::ComparisonSettings c;
-    c.mode = gpu::CompareMode::Difference;
+    const render::FrameRequest s = small_settings(*scene, render::DebugView::Lit);
+    render::ComparisonSettings c;
+    c.mode = render::CompareMode::Difference;
     c.heat_max = 0.0f; // automatic: statistics first, composite in a second submission
     std::vector<std::uint8_t> image;
-    const gpu::ComparisonStats stats = gpu::render_comparison(*a, s, *b, s, c, &image);
+    const render::ComparisonStats stats = render::render_comparison(*a, s, *b, s, c, &image);
     if (context().info().timestamps) {
         EXPECT_GT(stats.composite_ms, 0.0);
     }
@@ -94,14 +94,15 @@ TEST_F(ComparisonTest, RasterAgainstRaysMatchesCpuStatisticsAndHeatColours) {
     if (!context().info().ray_tracing_enabled) GTEST_SKIP() << "device without ray tracing";
     auto scene = load(gltf_asset("BoxTextured"));
     ASSERT_TRUE(scene);
-    RasterAndRays r = raster_and_rays(*scene, *scene, gpu::DebugView::BaseColor);
+    RasterAndRays r = raster_and_rays(*scene, *scene, render::DebugView::BaseColor);
     std::vector<std::uint8_t> heat;
     const CpuStats cpu = cpu_stats(r.alone_a, r.alone_b, 2);
     ASSERT_GT(cpu.max, 0.0) << "the test needs a difference";
-    gpu::ComparisonSettings c;
-    c.mode = gpu::CompareMode::Difference;
+    render::ComparisonSettings c;
+    c.mode = render::CompareMode::Difference;
     c.heat_max = 24.0f / 255;
-    const gpu::ComparisonStats stats = gpu::render_comparison(*r.a, r.sa, *r.b, r.sb, c, &heat);
+    const render::ComparisonStats stats =
+        render::render_comparison(*r.a, r.sa, *r.b, r.sb, c, &heat);
     std::printf("raster vs rays: mean %.5f max %.4f psnr %.2f dB over %.2f%% (CPU: %.5f %.4f "
                 "%.2f %.2f%%)\n",
                 stats.mean, stats.max, stats.psnr_db, stats.over_threshold_percent, cpu.mean,
@@ -122,11 +123,11 @@ TEST_F(ComparisonTest, RasterAgainstRaysMatchesCpuStatisticsAndHeatColours) {
 TEST_F(ComparisonTest, ShaderHeatAgreesWithHeatColour) {
     Scene empty;
     auto a = make_renderer(empty), b = make_renderer(empty);
-    gpu::FrameRequest sa;
+    render::FrameRequest sa;
     sa.width = 8;
     sa.height = 4;
     sa.shadows = false;
-    gpu::FrameRequest sb = sa;
+    render::FrameRequest sb = sa;
     sa.clear_color = {0.0f, 0.0f, 0.0f, 1.0f};
     std::vector<std::uint8_t> alone;
     for (float red : {0.002f, 0.01f, 0.05f, 0.2f, 1.0f}) {
@@ -134,12 +135,12 @@ TEST_F(ComparisonTest, ShaderHeatAgreesWithHeatColour) {
         b->render(sb, &alone);
         const int d = alone[0]; // A is black: the difference is B's red byte
         for (float heat_max : {8.0f, 64.0f, 255.0f}) {
-            gpu::ComparisonSettings c;
-            c.mode = gpu::CompareMode::Difference;
+            render::ComparisonSettings c;
+            c.mode = render::CompareMode::Difference;
             c.heat_max = heat_max / 255.0f;
             std::vector<std::uint8_t> heat;
-            const gpu::ComparisonStats s = gpu::render_comparison(*a, sa, *b, sb, c, &heat);
-            const auto want = gpu::heat_colour(d / double(heat_max));
+            const render::ComparisonStats s = render::render_comparison(*a, sa, *b, sb, c, &heat);
+            const auto want = render::heat_colour(d / double(heat_max));
             for (int k = 0; k < 3; ++k)
                 EXPECT_NEAR(heat[k], want[k], 1) << "d " << d << " heat_max " << heat_max;
             EXPECT_DOUBLE_EQ(s.max, d / 255.0);
@@ -157,17 +158,17 @@ TEST_F(ComparisonTest, DegenerateSizesDividersAndSidesNeitherCrashNorLie) {
     Scene empty;
     auto a = make_renderer(*scene), b = make_renderer(empty);
     for (auto [w, h] : {std::pair{1u, 1u}, std::pair{3u, 1u}, std::pair{17u, 5u}}) {
-        gpu::FrameRequest sa = small_settings(*scene, gpu::DebugView::Normal);
+        render::FrameRequest sa = small_settings(*scene, render::DebugView::Normal);
         sa.width = w;
         sa.height = h;
         std::vector<std::uint8_t> alone_a, alone_b, image;
         a->render(sa, &alone_a);
         b->render(sa, &alone_b);
         for (float divider : {-1.0f, 0.0f, 1.0f, 2.0f, NAN}) {
-            gpu::ComparisonSettings c;
+            render::ComparisonSettings c;
             c.divider = divider;
             c.threshold = 0.0f;
-            const gpu::ComparisonStats s = gpu::render_comparison(*a, sa, *b, sa, c, &image);
+            const render::ComparisonStats s = render::render_comparison(*a, sa, *b, sa, c, &image);
             ASSERT_EQ(image.size(), std::size_t(w) * h * 4);
             const CpuStats cpu = cpu_stats(alone_a, alone_b, 0);
             EXPECT_EQ(s.pixels, std::uint64_t(w) * h);
@@ -181,12 +182,12 @@ TEST_F(ComparisonTest, DegenerateSizesDividersAndSidesNeitherCrashNorLie) {
     ASSERT_TRUE(morph);
     if (!context().info().ray_tracing_enabled) return;
     auto raster = make_renderer(*morph), rays = make_renderer(*morph, true);
-    const gpu::FrameRequest sm = small_settings(*morph, gpu::DebugView::Normal);
-    gpu::FrameRequest sr = sm;
-    sr.renderer = gpu::RendererKind::RayTraced;
-    gpu::ComparisonSettings c;
-    c.mode = gpu::CompareMode::Difference;
-    const gpu::ComparisonStats s = gpu::render_comparison(*raster, sm, *rays, sr, c);
+    const render::FrameRequest sm = small_settings(*morph, render::DebugView::Normal);
+    render::FrameRequest sr = sm;
+    sr.renderer = render::RendererKind::RayTraced;
+    render::ComparisonSettings c;
+    c.mode = render::CompareMode::Difference;
+    const render::ComparisonStats s = render::render_comparison(*raster, sm, *rays, sr, c);
     EXPECT_TRUE(s.valid);
     EXPECT_LT(s.over_threshold_percent, 0.5) << "raster and rays of the default pose";
 }

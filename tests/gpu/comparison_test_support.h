@@ -48,15 +48,15 @@ inline CpuStats cpu_stats(const std::vector<std::uint8_t>& a, const std::vector<
     return s;
 }
 
-inline gpu::FrameRequest small_settings(const Scene& scene, gpu::DebugView view) {
-    gpu::FrameRequest s;
+inline render::FrameRequest small_settings(const Scene& scene, render::DebugView view) {
+    render::FrameRequest s;
     s.width = kW;
     s.height = kH;
     s.shadows = false;
     s.view = view;
     FramingOptions framing;
     framing.aspect = float(kW) / float(kH);
-    s.camera = gpu::explicit_camera(frame_box(scene.bounds, framing));
+    s.camera = render::explicit_camera(frame_box(scene.bounds, framing));
     return s;
 }
 
@@ -125,7 +125,7 @@ inline std::size_t heat_mismatches(const std::vector<std::uint8_t>& heat, const 
                                    double heat_max) {
     std::size_t off = 0;
     for (std::size_t p = 0; p < cpu.d.size(); ++p) {
-        const auto want = gpu::heat_colour(cpu.d[p] / heat_max);
+        const auto want = render::heat_colour(cpu.d[p] / heat_max);
         for (int k = 0; k < 3; ++k) off += std::abs(int(heat[4 * p + k]) - int(want[k])) > 1;
     }
     return off;
@@ -134,14 +134,15 @@ inline std::size_t heat_mismatches(const std::vector<std::uint8_t>& heat, const 
 // Side A rasterized, side B ray traced, in `view`, each with its own renderer, and
 // each side's image rendered alone.
 struct RasterAndRays {
-    std::unique_ptr<gpu::Renderer> a, b;
-    gpu::FrameRequest sa, sb;
+    std::unique_ptr<render::Renderer> a, b;
+    render::FrameRequest sa, sb;
     std::vector<std::uint8_t> alone_a, alone_b;
 };
 
 class ComparisonTest : public GpuTest {
 protected:
-    RasterAndRays raster_and_rays(const Scene& a_scene, const Scene& b_scene, gpu::DebugView view) {
+    RasterAndRays raster_and_rays(const Scene& a_scene, const Scene& b_scene,
+                                  render::DebugView view) {
         RasterAndRays r{make_renderer(a_scene),
                         make_renderer(b_scene, true),
                         small_settings(a_scene, view),
@@ -149,17 +150,17 @@ protected:
                         {},
                         {}};
         r.sb = r.sa;
-        r.sb.renderer = gpu::RendererKind::RayTraced;
+        r.sb.renderer = render::RendererKind::RayTraced;
         r.a->render(r.sa, &r.alone_a);
         r.b->render(r.sb, &r.alone_b);
         return r;
     }
-    std::unique_ptr<gpu::Renderer> make_renderer(const Scene& scene, bool rt = false) {
-        gpu::RendererOptions options;
+    std::unique_ptr<render::Renderer> make_renderer(const Scene& scene, bool rt = false) {
+        render::RendererOptions options;
         options.ray_tracing = rt;
         options.textures = test_texture_settings();
-        auto r = std::make_unique<gpu::Renderer>(context(), options);
-        r->load(scene, streams_setup(gpu::StreamPolicy::AllPresent));
+        auto r = std::make_unique<render::Renderer>(context(), options);
+        r->load(scene, streams_setup(render::StreamPolicy::AllPresent));
         return r;
     }
 };

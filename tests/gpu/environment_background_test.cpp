@@ -28,35 +28,35 @@ std::string spheres(bool blend) {
     return gltf;
 }
 
-gpu::FrameRequest wide_view(const char* camera) {
-    gpu::FrameRequest s;
+render::FrameRequest wide_view(const char* camera) {
+    render::FrameRequest s;
     s.width = 160;
     s.height = 90;
     std::string error;
-    EXPECT_TRUE(gpu::parse_camera_spec(camera, s.camera, error)) << error;
+    EXPECT_TRUE(render::parse_camera_spec(camera, s.camera, error)) << error;
     return s;
 }
 
 TEST_F(EnvironmentBackgroundTest, KeptBackgroundIsTheBackgroundDrawnEachFrame) {
     renderer().set_environment(nullptr);
     std::uint64_t without = 0; // the render targets of this size, before any is kept
-    const gpu::EnvironmentImage room = gpu::room_environment(256);
+    const render::EnvironmentImage room = render::room_environment(256);
     renderer().set_environment(&room);
-    const gpu::FrameRequest a = wide_view("eye=2.5,1,6:target=2.5,0,0:fov=50");
+    const render::FrameRequest a = wide_view("eye=2.5,1,6:target=2.5,0,0:fov=50");
     for (const bool blend : {false, true}) {
         auto scene = load(
             write_temp(blend ? "kept_blend.gltf" : "kept_opaque.gltf", spheres(blend)).string());
         renderer().load(*scene);
         // Each a first frame of its key (drawn where no surface is), then the same
         // again (kept, and copied), then again (copied).
-        std::vector<gpu::FrameRequest> views(5, a);
+        std::vector<render::FrameRequest> views(5, a);
         views[1].camera.eye.x += 0.5f; // the view
         views[2].environment_rotation = 40.0f;
         views[3].environment_intensity = 0.5f;
         views[3].exposure = 0.5f;
-        views[4].background = gpu::Background::Blurred;
+        views[4].background = render::Background::Blurred;
         std::vector<std::vector<std::uint8_t>> firsts;
-        for (const gpu::FrameRequest& v : views) {
+        for (const render::FrameRequest& v : views) {
             const auto drawn = draw(v);
             if (without == 0) without = renderer().resident().render_target_bytes;
             const auto kept = draw(v);
@@ -73,8 +73,8 @@ TEST_F(EnvironmentBackgroundTest, KeptBackgroundIsTheBackgroundDrawnEachFrame) {
         const std::uint64_t with = renderer().resident().render_target_bytes;
         EXPECT_GE(with, without + std::uint64_t{a.width} * a.height * 4);
         // A solid background draws no environment and keeps the kept image.
-        gpu::FrameRequest solid = a;
-        solid.background = gpu::Background::Color;
+        render::FrameRequest solid = a;
+        solid.background = render::Background::Color;
         solid.clear_color = glm::vec4(1, 0, 1, 1);
         const auto magenta = draw(solid);
         EXPECT_NE(magenta, firsts[0]);

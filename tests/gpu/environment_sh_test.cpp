@@ -32,10 +32,10 @@ std::vector<glm::vec3> directions() {
 
 TEST(EnvironmentSh9, ConstantRadianceGivesItsIrradianceEverywhere) {
     const glm::vec3 c(0.5f, 1.0f, 2.0f);
-    const gpu::Sh9 sh =
-        gpu::irradiance_sh9(gpu::project_sh9(environment_of(256, [&](glm::vec3) { return c; })));
+    const render::Sh9 sh = render::irradiance_sh9(
+        render::project_sh9(environment_of(256, [&](glm::vec3) { return c; })));
     for (const glm::vec3 n : directions()) {
-        const glm::vec3 e = gpu::evaluate_sh9(sh, n);
+        const glm::vec3 e = render::evaluate_sh9(sh, n);
         for (int k = 0; k < 3; ++k) EXPECT_NEAR(e[k], c[k], 1e-3f * c[k]) << n.x << n.y << n.z;
     }
     // Bands 1 and 2 of a constant are zero.
@@ -47,13 +47,14 @@ TEST(EnvironmentSh9, LinearRadianceGivesTwoThirdsOfItsGradient) {
     // image convention (u from atan2(z, x), v from asin(y)) is checked on every axis.
     const glm::vec3 a(1.0f, 1.0f, 1.0f);
     const glm::vec3 bx(0.8f, 0.0f, 0.0f), by(0.0f, 0.6f, 0.0f), bz(0.0f, 0.0f, -0.7f);
-    const gpu::Sh9 sh = gpu::irradiance_sh9(gpu::project_sh9(environment_of(512, [&](glm::vec3 d) {
-        return a + glm::vec3(glm::dot(bx, d), glm::dot(by, d), glm::dot(bz, d));
-    })));
+    const render::Sh9 sh =
+        render::irradiance_sh9(render::project_sh9(environment_of(512, [&](glm::vec3 d) {
+            return a + glm::vec3(glm::dot(bx, d), glm::dot(by, d), glm::dot(bz, d));
+        })));
     for (const glm::vec3 n : directions()) {
         const glm::vec3 exact =
             a + (2.0f / 3.0f) * glm::vec3(glm::dot(bx, n), glm::dot(by, n), glm::dot(bz, n));
-        const glm::vec3 e = gpu::evaluate_sh9(sh, n);
+        const glm::vec3 e = render::evaluate_sh9(sh, n);
         for (int k = 0; k < 3; ++k)
             EXPECT_NEAR(e[k], exact[k], 2e-3f) << n.x << " " << n.y << " " << n.z;
     }
@@ -63,11 +64,11 @@ TEST(EnvironmentSh9, ClampedCosineLightIsWithinTheKnownBandLimitError) {
     // L = max(0, w.y): irradiance / pi at n = +Y is the integral of cos^2 over the upper
     // hemisphere / pi = 2/3; at n = -Y it is 0. Band 2 keeps most of it: the error of the
     // 9 coefficients is a few hundredths (the clamped cosine's bands above 2).
-    const gpu::Sh9 sh = gpu::irradiance_sh9(gpu::project_sh9(
+    const render::Sh9 sh = render::irradiance_sh9(render::project_sh9(
         environment_of(512, [](glm::vec3 d) { return glm::vec3(std::max(0.0f, d.y)); })));
-    const float up = gpu::evaluate_sh9(sh, glm::vec3(0, 1, 0)).g;
-    const float down = gpu::evaluate_sh9(sh, glm::vec3(0, -1, 0)).g;
-    const float side = gpu::evaluate_sh9(sh, glm::vec3(1, 0, 0)).g;
+    const float up = render::evaluate_sh9(sh, glm::vec3(0, 1, 0)).g;
+    const float down = render::evaluate_sh9(sh, glm::vec3(0, -1, 0)).g;
+    const float side = render::evaluate_sh9(sh, glm::vec3(1, 0, 0)).g;
     // At the horizon, n = +X: the integral of w.y w.x over the quarter sphere where both
     // are positive is 4/3 * 1/2, so irradiance / pi is 2 / (3 pi).
     std::printf("SH9 clamped cosine: up %.4f (2/3), down %.4f (0), side %.4f (%.4f)\n", up, down,
@@ -78,24 +79,24 @@ TEST(EnvironmentSh9, ClampedCosineLightIsWithinTheKnownBandLimitError) {
 }
 
 TEST(EnvironmentSh9, NonFiniteTexelsCountAsBlackAndInvalidImagesGiveZero) {
-    gpu::EnvironmentImage image = environment_of(64, [](glm::vec3) { return glm::vec3(1.0f); });
-    const gpu::Sh9 clean = gpu::project_sh9(image);
+    render::EnvironmentImage image = environment_of(64, [](glm::vec3) { return glm::vec3(1.0f); });
+    const render::Sh9 clean = render::project_sh9(image);
     image.rgba[0] = std::numeric_limits<float>::quiet_NaN();
     image.rgba[5] = std::numeric_limits<float>::infinity();
-    const gpu::Sh9 dirty = gpu::project_sh9(image);
+    const render::Sh9 dirty = render::project_sh9(image);
     for (int k = 0; k < 9; ++k)
         for (int c = 0; c < 3; ++c) {
             EXPECT_TRUE(std::isfinite(dirty[k][c]));
             EXPECT_NEAR(dirty[k][c], clean[k][c], 1e-2f);
         }
-    const gpu::Sh9 none = gpu::project_sh9(gpu::EnvironmentImage{});
+    const render::Sh9 none = render::project_sh9(render::EnvironmentImage{});
     for (const glm::vec3& c : none) EXPECT_EQ(c, glm::vec3(0.0f));
 }
 
 TEST(EnvironmentSh9, ModesParseBothWays) {
-    for (const auto m : {gpu::IrradianceMode::Cube, gpu::IrradianceMode::Sh9})
-        EXPECT_EQ(gpu::parse_irradiance_mode(gpu::to_string(m)), m);
-    EXPECT_FALSE(gpu::parse_irradiance_mode("sh4").has_value());
+    for (const auto m : {render::IrradianceMode::Cube, render::IrradianceMode::Sh9})
+        EXPECT_EQ(render::parse_irradiance_mode(to_string(m)), m);
+    EXPECT_FALSE(render::parse_irradiance_mode("sh4").has_value());
 }
 
 } // namespace

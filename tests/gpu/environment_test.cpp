@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 
 // Removes the environment when a test ends: the renderer is shared by the binary.
 struct EnvironmentGuard {
-    gpu::Renderer& r;
+    render::Renderer& r;
     ~EnvironmentGuard() { r.set_environment(nullptr); }
 };
 
@@ -48,7 +48,7 @@ FurnaceResult EnvironmentTest::furnace(float metallic, bool compensation, int co
                                  sphere_row_gltf(count, metallic))
                           .string());
     renderer().load(*scene);
-    gpu::FrameRequest s = furnace_view(count, 64); // every sphere ~50 px across
+    render::FrameRequest s = furnace_view(count, 64); // every sphere ~50 px across
     s.energy_compensation = compensation;
     const auto rgba = draw(s);
     FurnaceResult out;
@@ -74,7 +74,7 @@ FurnaceResult EnvironmentTest::furnace(float metallic, bool compensation, int co
 
 TEST_F(EnvironmentTest, FurnaceWhiteSpheresReflectOneAtEveryRoughness) {
     EnvironmentGuard guard{renderer()};
-    const gpu::EnvironmentImage uniform = gpu::uniform_environment(glm::vec3(1.0f));
+    const render::EnvironmentImage uniform = render::uniform_environment(glm::vec3(1.0f));
     renderer().set_environment(&uniform);
     constexpr int kCount = 11; // roughness 0, 0.1, .., 1
     for (const float metallic : {0.0f, 1.0f}) {
@@ -102,16 +102,16 @@ TEST_F(EnvironmentTest, FurnaceWhiteSpheresReflectOneAtEveryRoughness) {
 
 TEST_F(EnvironmentTest, Sh9IrradianceKeepsTheFurnaceAndMakesNoCube) {
     EnvironmentGuard guard{renderer()};
-    const gpu::EnvironmentImage uniform = gpu::uniform_environment(glm::vec3(1.0f));
-    gpu::EnvironmentOptions options;
-    options.irradiance = gpu::IrradianceMode::Cube;
+    const render::EnvironmentImage uniform = render::uniform_environment(glm::vec3(1.0f));
+    render::EnvironmentOptions options;
+    options.irradiance = render::IrradianceMode::Cube;
     renderer().set_environment(&uniform, options);
-    const gpu::EnvironmentStats cube = renderer().resident().environment;
+    const render::EnvironmentStats cube = renderer().resident().environment;
     EXPECT_EQ(cube.irradiance_size, 32u);
     // SH9 is the default.
     renderer().set_environment(&uniform);
-    const gpu::EnvironmentStats sh = renderer().resident().environment;
-    EXPECT_EQ(sh.irradiance, gpu::IrradianceMode::Sh9);
+    const render::EnvironmentStats sh = renderer().resident().environment;
+    EXPECT_EQ(sh.irradiance, render::IrradianceMode::Sh9);
     EXPECT_EQ(sh.irradiance_size, 0u);
     // The 32x32 irradiance cube (6 faces of RGBA16F) is not made.
     EXPECT_EQ(cube.bytes - sh.bytes, 32u * 32u * 6u * 8u);
@@ -131,17 +131,17 @@ TEST_F(EnvironmentTest, Sh9IrradianceKeepsTheFurnaceAndMakesNoCube) {
 // brighter where b.n < 0 (blue, whose gradient faces the camera: 2.9 steps).
 TEST_F(EnvironmentTest, Sh9AndCubeIrradianceAgreeOnALinearEnvironment) {
     EnvironmentGuard guard{renderer()};
-    const gpu::EnvironmentImage linear = environment_of(256, [](glm::vec3 d) {
+    const render::EnvironmentImage linear = environment_of(256, [](glm::vec3 d) {
         return glm::vec3(1.0f + 0.8f * d.x, 1.0f + 0.6f * d.y, 1.0f - 0.7f * d.z);
     });
     auto scene = load(write_temp("rough.gltf", sphere_row_gltf(3, 0.0f)).string());
     renderer().load(*scene);
-    gpu::FrameRequest s = furnace_view(3, 64);
-    gpu::EnvironmentOptions options;
-    options.irradiance = gpu::IrradianceMode::Cube;
+    render::FrameRequest s = furnace_view(3, 64);
+    render::EnvironmentOptions options;
+    options.irradiance = render::IrradianceMode::Cube;
     renderer().set_environment(&linear, options);
     const auto cube = draw(s);
-    options.irradiance = gpu::IrradianceMode::Sh9;
+    options.irradiance = render::IrradianceMode::Sh9;
     renderer().set_environment(&linear, options);
     const auto sh = draw(s);
     ASSERT_EQ(cube.size(), sh.size());
@@ -169,8 +169,8 @@ TEST_F(EnvironmentTest, Sh9AndCubeIrradianceAgreeOnALinearEnvironment) {
 }
 
 // An environment whose colour says which axis a direction is nearest.
-gpu::EnvironmentImage axis_environment() {
-    gpu::EnvironmentImage img;
+render::EnvironmentImage axis_environment() {
+    render::EnvironmentImage img;
     img.width = 256;
     img.height = 128;
     img.name = "axes";
@@ -198,7 +198,7 @@ gpu::EnvironmentImage axis_environment() {
 
 TEST_F(EnvironmentTest, BackgroundFollowsTheEquirectangularConventionAndRotation) {
     EnvironmentGuard guard{renderer()};
-    const gpu::EnvironmentImage axes = axis_environment();
+    const render::EnvironmentImage axes = axis_environment();
     renderer().set_environment(&axes);
     renderer().unload();
     struct Case {
@@ -215,11 +215,11 @@ TEST_F(EnvironmentTest, BackgroundFollowsTheEquirectangularConventionAndRotation
         {"eye=0,0,0:target=1,0,0", 90.0f, {0, 0, 255}},
     };
     for (const Case& c : cases) {
-        gpu::FrameRequest s;
+        render::FrameRequest s;
         s.width = s.height = 32;
         std::string error;
-        ASSERT_TRUE(gpu::parse_camera_spec(c.camera, s.camera, error)) << error;
-        s.tone_map = gpu::ToneMap::Linear;
+        ASSERT_TRUE(render::parse_camera_spec(c.camera, s.camera, error)) << error;
+        s.tone_map = render::ToneMap::Linear;
         s.environment_rotation = c.rotation;
         const auto rgba = draw(s);
         const std::uint8_t* p = &rgba[(16 * 32 + 16) * 4];
@@ -233,16 +233,16 @@ TEST_F(EnvironmentTest, BackgroundFollowsTheEquirectangularConventionAndRotation
 // same axis colours behind the camera.
 TEST_F(EnvironmentTest, NarrowAndWideSourcesShowTheSameEnvironment) {
     EnvironmentGuard guard{renderer()};
-    const gpu::EnvironmentImage axes = axis_environment();
+    const render::EnvironmentImage axes = axis_environment();
     renderer().unload();
-    gpu::FrameRequest s;
+    render::FrameRequest s;
     s.width = s.height = 32;
     std::string error;
-    ASSERT_TRUE(gpu::parse_camera_spec("eye=0,0,0:target=0,0,1", s.camera, error)) << error;
-    s.tone_map = gpu::ToneMap::Linear;
+    ASSERT_TRUE(render::parse_camera_spec("eye=0,0,0:target=0,0,1", s.camera, error)) << error;
+    s.tone_map = render::ToneMap::Linear;
     std::vector<std::vector<std::uint8_t>> frames;
     for (std::uint32_t face : {axes.width / 4, 16u}) { // level 0; the source's level 2+
-        gpu::EnvironmentOptions options;
+        render::EnvironmentOptions options;
         options.specular_size = face;
         renderer().set_environment(&axes, options);
         EXPECT_EQ(renderer().resident().environment.cube_size, face);
@@ -258,13 +258,13 @@ TEST_F(EnvironmentTest, NarrowAndWideSourcesShowTheSameEnvironment) {
 
 TEST_F(EnvironmentTest, NoEnvironmentHoldsNothing) {
     renderer().set_environment(nullptr);
-    const gpu::EnvironmentStats none = renderer().resident().environment;
+    const render::EnvironmentStats none = renderer().resident().environment;
     EXPECT_FALSE(none.present);
     EXPECT_EQ(none.bytes, 0u);
     EnvironmentGuard guard{renderer()};
-    const gpu::EnvironmentImage room = gpu::room_environment(512);
+    const render::EnvironmentImage room = render::room_environment(512);
     renderer().set_environment(&room);
-    const gpu::EnvironmentStats made = renderer().resident().environment;
+    const render::EnvironmentStats made = renderer().resident().environment;
     EXPECT_TRUE(made.present);
     EXPECT_EQ(made.cube_size, 128u); // a quarter of the width
     EXPECT_GT(made.bytes, 0u);
@@ -278,20 +278,20 @@ TEST_F(EnvironmentTest, LookupTableIsMadeOnceWhileEnvironmentsFollowEachOther) {
     EnvironmentGuard guard{renderer()};
     auto scene = load(write_temp("lut.gltf", sphere_row_gltf(3, 1.0f)).string());
     renderer().load(*scene);
-    const gpu::FrameRequest s = furnace_view(3, 48);
-    const gpu::EnvironmentImage room = gpu::room_environment(256);
-    const gpu::EnvironmentImage linear = environment_of(
+    const render::FrameRequest s = furnace_view(3, 48);
+    const render::EnvironmentImage room = render::room_environment(256);
+    const render::EnvironmentImage linear = environment_of(
         64, [](glm::vec3 d) { return glm::vec3(1.0f + 0.5f * d.x, 1.0f, 1.0f - 0.5f * d.z); });
     renderer().set_environment(&room);
-    const gpu::EnvironmentStats first = renderer().resident().environment;
+    const render::EnvironmentStats first = renderer().resident().environment;
     renderer().set_environment(&linear);
     renderer().set_environment(&room);
-    const gpu::EnvironmentStats reused = renderer().resident().environment;
+    const render::EnvironmentStats reused = renderer().resident().environment;
     const auto lit_reused = draw(s);
     renderer().set_environment(nullptr);
     EXPECT_EQ(renderer().resident().environment.bytes, 0u);
     renderer().set_environment(&room);
-    const gpu::EnvironmentStats fresh = renderer().resident().environment;
+    const render::EnvironmentStats fresh = renderer().resident().environment;
     const auto lit_fresh = draw(s);
     EXPECT_EQ(first.bytes, reused.bytes); // the table's bytes are counted while it is kept
     EXPECT_EQ(reused.pass_ms[4], 0.0);
@@ -304,19 +304,19 @@ TEST_F(EnvironmentTest, LookupTableIsMadeOnceWhileEnvironmentsFollowEachOther) {
 }
 
 TEST_F(EnvironmentTest, BlenderStudioLightsLoadAndLight) {
-    const auto files = gpu::installed_studio_lights();
+    const auto files = render::installed_studio_lights();
     if (files.empty())
-        GTEST_SKIP() << "blender-data is not installed (" << gpu::kStudioLightsDir << ")";
+        GTEST_SKIP() << "blender-data is not installed (" << render::kStudioLightsDir << ")";
     EXPECT_EQ(files.size(), 8u);
     EnvironmentGuard guard{renderer()};
     for (const std::string& f : files) {
-        const gpu::EnvironmentLoad load = gpu::load_environment(f);
+        const render::EnvironmentLoad load = render::load_environment(f);
         EXPECT_FALSE(load.fallback) << f;
         EXPECT_TRUE(load.warnings.empty()) << f << ": " << load.warnings.front();
         EXPECT_EQ(load.image.width, 1024u) << f;
         EXPECT_EQ(load.image.height, 512u) << f;
     }
-    const gpu::EnvironmentLoad studio = gpu::load_environment(files.front());
+    const render::EnvironmentLoad studio = render::load_environment(files.front());
     renderer().set_environment(&studio.image);
     EXPECT_EQ(renderer().resident().environment.cube_size, 256u);
     EXPECT_EQ(renderer().resident().environment.specular_levels, 6u);
@@ -332,7 +332,7 @@ TEST_F(EnvironmentTest, BadFilesWarnAndFallBackToTheRoom) {
         write_temp("empty.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 0 +X 0\n");
     const fs::path text = write_temp("text.exr", "not an image");
     for (const fs::path& p : {missing, corrupt, empty, text}) {
-        const gpu::EnvironmentLoad load = gpu::load_environment(p.string());
+        const render::EnvironmentLoad load = render::load_environment(p.string());
         EXPECT_TRUE(load.fallback) << p;
         ASSERT_FALSE(load.warnings.empty()) << p;
         EXPECT_NE(load.warnings.front().find(p.string()), std::string::npos)
@@ -355,7 +355,7 @@ void write_image(const fs::path& p, int w, int h, float value) {
 }
 
 // Every failure names the file and falls back to the room.
-void expect_room_fallback(const gpu::EnvironmentLoad& load, const fs::path& p) {
+void expect_room_fallback(const render::EnvironmentLoad& load, const fs::path& p) {
     EXPECT_TRUE(load.fallback) << p;
     ASSERT_FALSE(load.warnings.empty()) << p;
     EXPECT_NE(load.warnings.front().find(p.string()), std::string::npos) << load.warnings.front();
@@ -375,20 +375,20 @@ TEST_F(EnvironmentTest, TruncatedAndUnreadableFilesWarnAndFallBackToTheRoom) {
         const fs::path cut = fs::temp_directory_path() / (std::string("sherpa_env_cut") + ext);
         fs::copy_file(whole, cut, fs::copy_options::overwrite_existing);
         fs::resize_file(cut, size / 3);
-        const gpu::EnvironmentLoad ok = gpu::load_environment(whole.string());
+        const render::EnvironmentLoad ok = render::load_environment(whole.string());
         EXPECT_FALSE(ok.fallback) << whole;
-        expect_room_fallback(gpu::load_environment(cut.string()), cut);
+        expect_room_fallback(render::load_environment(cut.string()), cut);
     }
     // A directory is not an image.
     const fs::path dir = fs::temp_directory_path() / "sherpa_env_dir.exr";
     fs::create_directories(dir);
-    expect_room_fallback(gpu::load_environment(dir.string()), dir);
+    expect_room_fallback(render::load_environment(dir.string()), dir);
 }
 
 TEST_F(EnvironmentTest, OneTexelImageIsAUniformEnvironmentWithAWarning) {
     const fs::path p = fs::temp_directory_path() / "sherpa_env_test_1x1.exr";
     write_image(p, 1, 1, 0.25f);
-    const gpu::EnvironmentLoad load = gpu::load_environment(p.string());
+    const render::EnvironmentLoad load = render::load_environment(p.string());
     EXPECT_FALSE(load.fallback);
     ASSERT_EQ(load.warnings.size(), 1u);
     EXPECT_NE(load.warnings.front().find(p.string()), std::string::npos);
@@ -417,7 +417,7 @@ TEST_F(EnvironmentTest, NonFiniteTexelsAreCountedAndReadAsBlack) {
         ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
         out->close();
     }
-    const gpu::EnvironmentLoad load = gpu::load_environment(p.string());
+    const render::EnvironmentLoad load = render::load_environment(p.string());
     EXPECT_FALSE(load.fallback);
     ASSERT_FALSE(load.warnings.empty());
     EXPECT_NE(load.warnings.front().find("3 texel channels are NaN or infinite"), std::string::npos)

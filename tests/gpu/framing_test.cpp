@@ -22,7 +22,7 @@ float distance_to_box(const core::Aabb& b, glm::vec3 p) {
     return glm::length(glm::max(glm::max(b.min - p, p - b.max), glm::vec3(0.0f)));
 }
 
-void expect_framed(const core::Aabb& b, const gpu::CameraView& v, const std::string& what) {
+void expect_framed(const core::Aabb& b, const render::CameraView& v, const std::string& what) {
     const glm::mat4 vp = v.proj * v.view;
     float widest = 0.0f; // the largest |x| or |y| of a corner in NDC
     for (int i = 0; i < 8; ++i) {
@@ -51,7 +51,8 @@ TEST(AutoFramingTest, EverySampleModelIsInViewFromOutsideAndAbove) {
         ASSERT_TRUE(r) << name << ": " << r.error;
         ASSERT_TRUE(r.scene->bounds.valid()) << name;
         for (float aspect : {0.5f, 1.0f, 16.0f / 9.0f, 3.0f}) {
-            const gpu::CameraView v = gpu::resolve_camera(gpu::CameraSpec{}, *r.scene, aspect);
+            const render::CameraView v =
+                render::resolve_camera(render::CameraSpec{}, *r.scene, aspect);
             expect_framed(r.scene->bounds, v, name + " aspect " + std::to_string(aspect));
         }
     }
@@ -88,7 +89,7 @@ TEST(AutoFramingTest, FramingAlongAGivenDirectionKeepsItAndFits) {
     options.aspect = 1.5f;
     const CameraSpec s = frame_box_along(box, to_eye, options);
     EXPECT_NEAR(glm::dot(glm::normalize(s.eye - s.target), to_eye), 1.0f, 1e-5f);
-    gpu::CameraView v;
+    render::CameraView v;
     v.view = s.view();
     v.proj = s.projection();
     v.position = s.eye;

@@ -42,9 +42,10 @@ const GoldenCase kCases[] = {
     {"alpha_blend_lit", "AlphaBlendModeTest", "lit", 0, kAlphaBlendCamera, 200, 120},
     {"multiuv_uv1_checker", "MultiUVTest", "uv1-checker", 0, "auto", 128, 128},
     {"default_wireframe_aabb", "builtin:default", "lit",
-     gpu::kOverlayWireframe | gpu::kOverlayBounds, "auto", 200, 120},
-    {"box_normals_glyphs", "BoxTextured", "normal", gpu::kOverlayNormals | gpu::kOverlayTangents,
-     "eye=1.5,1.2,2:target=0,0,0", 128, 128, 0.3f},
+     render::kOverlayWireframe | render::kOverlayBounds, "auto", 200, 120},
+    {"box_normals_glyphs", "BoxTextured", "normal",
+     render::kOverlayNormals | render::kOverlayTangents, "eye=1.5,1.2,2:target=0,0,0", 128, 128,
+     0.3f},
 };
 
 std::string scene_spec(const char* scene) {
@@ -58,15 +59,15 @@ TEST_P(GoldenTest, MatchesCommittedImage) {
     const GoldenCase& c = GetParam();
     auto scene = load(scene_spec(c.scene));
     ASSERT_TRUE(scene);
-    gpu::FrameRequest s;
+    render::FrameRequest s;
     s.width = c.width;
     s.height = c.height;
-    s.view = *gpu::parse_debug_view(c.view);
+    s.view = *render::parse_debug_view(c.view);
     s.overlays = c.overlays;
     s.glyph_length = c.glyph_length;
     std::string error;
-    ASSERT_TRUE(gpu::parse_camera_spec(c.camera, s.camera, error)) << error;
-    renderer().load(*scene, streams_setup(gpu::stream_policy(s)));
+    ASSERT_TRUE(render::parse_camera_spec(c.camera, s.camera, error)) << error;
+    renderer().load(*scene, streams_setup(render::stream_policy(s)));
     std::vector<std::uint8_t> actual;
     renderer().render(s, &actual);
     renderer().unload();

@@ -15,8 +15,8 @@ namespace {
 class GpuCullingTest : public GpuTest {
 protected:
     // Index ranges as a GpuScene would lay them out; identity GPU instance ids.
-    static std::vector<gpu::GpuMesh> mesh_ranges(const Scene& s) {
-        std::vector<gpu::GpuMesh> out(s.meshes.size());
+    static std::vector<render::GpuMesh> mesh_ranges(const Scene& s) {
+        std::vector<render::GpuMesh> out(s.meshes.size());
         std::uint32_t first = 0;
         for (std::size_t m = 0; m < s.meshes.size(); ++m) {
             out[m].first_index = first;
@@ -37,9 +37,9 @@ protected:
     }
     // Each batch's compacted instance ids are exactly its objects flagged visible
     // (as multisets: the order within a batch is the GPU's). Returns the ids kept.
-    static std::uint32_t expect_batches_hold_visible(const gpu::GpuCuller& culler,
+    static std::uint32_t expect_batches_hold_visible(const render::GpuCuller& culler,
                                                      const MeshPass& pass,
-                                                     const gpu::GpuCullReadback& r,
+                                                     const render::GpuCullReadback& r,
                                                      const std::string& what) {
         const auto batches = pass.batches();
         EXPECT_EQ(r.instance_counts.size(), batches.size()) << what;
@@ -62,7 +62,7 @@ TEST_F(GpuCullingTest, AgreesWithTheCpuPathForEveryMethod) {
     auto scene = load("builtin:grid?n=10000");
     ASSERT_TRUE(scene);
     ScenePasses passes = build_mesh_passes(*scene);
-    gpu::GpuCuller culler(context(), renderer().resources());
+    render::GpuCuller culler(context(), renderer().resources());
     culler.build(passes.forward, *scene);
     ASSERT_EQ(culler.object_count(), scene->instances.size());
     const CullInput input = prepare_cull_input(*scene);
@@ -76,7 +76,7 @@ TEST_F(GpuCullingTest, AgreesWithTheCpuPathForEveryMethod) {
         for (CullMethod m : {CullMethod::Sphere, CullMethod::PVertex, CullMethod::Exact}) {
             std::vector<std::uint8_t> cpu(input.boxes.size());
             const CullCounts counts = cull_boxes(f, input.boxes, m, core::SimdLevel::Avx512, cpu);
-            const gpu::GpuCullReadback gpu_result = culler.run(f, m);
+            const render::GpuCullReadback gpu_result = culler.run(f, m);
             std::size_t differences = 0, gpu_visible = 0;
             for (std::size_t k = 0; k < gpu_result.visible.size(); ++k) {
                 const std::uint32_t inst = culler.object_instances()[k];
@@ -96,12 +96,12 @@ TEST_F(GpuCullingTest, BatchesHoldExactlyTheirVisibleObjects) {
     auto scene = load("builtin:default");
     ASSERT_TRUE(scene);
     ScenePasses passes = build_mesh_passes(*scene);
-    gpu::GpuCuller culler(context(), renderer().resources());
+    render::GpuCuller culler(context(), renderer().resources());
     culler.build(passes.forward, *scene);
     CameraSpec c;
     std::string error;
     ASSERT_TRUE(parse_camera_spec("eye=0,3,9:target=0,1,0", c, error)) << error;
-    const gpu::GpuCullReadback r =
+    const render::GpuCullReadback r =
         culler.run(frustum_from_view_projection(c.view_projection()), CullMethod::Exact);
     expect_batches_hold_visible(culler, passes.forward, r, "builtin:default");
     if (context().info().timestamps) {
@@ -117,7 +117,7 @@ TEST_F(GpuCullingTest, LongBatchesMeetingInsideASubgroupHoldExactlyTheirVisibleO
     auto scene = load("builtin:grid?n=1000");
     ASSERT_TRUE(scene);
     ScenePasses passes = build_mesh_passes(*scene);
-    gpu::GpuCuller culler(context(), renderer().resources());
+    render::GpuCuller culler(context(), renderer().resources());
     culler.build(passes.forward, *scene);
     ASSERT_EQ(passes.forward.batches().size(), 3u);
     for (const char* spec : {"eye=0,6,20:target=0,0,0", "eye=-30,4,-30:target=10,0,5:fov=35"}) {
@@ -142,12 +142,12 @@ TEST_F(GpuCullingTest, InvalidBoxesAreKeptLikeOnTheCpu) {
     auto b = bounds(*scene);
     b[0] = core::Aabb::from_min_max({NAN, 0, 0}, {1, 1, 1});
     b[1] = core::Aabb::from_min_max({5, 5, 5}, {-5, -5, -5});
-    gpu::GpuCuller culler(context(), renderer().resources());
+    render::GpuCuller culler(context(), renderer().resources());
     culler.build(passes.forward, b, identity(b.size()), mesh_ranges(*scene));
     CameraSpec c;
     std::string error;
     ASSERT_TRUE(parse_camera_spec("eye=0,1000,0:target=0,2000,1", c, error)) << error; // looks away
-    const gpu::GpuCullReadback r =
+    const render::GpuCullReadback r =
         culler.run(frustum_from_view_projection(c.view_projection()), CullMethod::PVertex);
     for (std::size_t k = 0; k < r.visible.size(); ++k) {
         const std::uint32_t inst = culler.object_instances()[k];

@@ -25,15 +25,15 @@ namespace sherpa::test {
 
 // Texture preparation for GPU tests: a cache in the build tree (never the user's),
 // shared by the tests so that the DamagedHelmet textures are compressed once.
-inline gpu::TextureSettings test_texture_settings() {
-    gpu::TextureSettings s;
+inline render::TextureSettings test_texture_settings() {
+    render::TextureSettings s;
     s.cache_dir = std::filesystem::path(SHERPA_TEST_TEXTURE_CACHE);
     return s;
 }
 
 // A scene setup with `streams` uploaded, the rest as by default.
-inline gpu::SceneSetup streams_setup(gpu::StreamPolicy streams) {
-    gpu::SceneSetup setup;
+inline render::SceneSetup streams_setup(render::StreamPolicy streams) {
+    render::SceneSetup setup;
     setup.streams = streams;
     return setup;
 }
@@ -41,9 +41,9 @@ inline gpu::SceneSetup streams_setup(gpu::StreamPolicy streams) {
 // `scene`'s textures prepared for `device` with `settings`, as sherpa-cli render does.
 inline std::shared_ptr<const tex::PreparedTextureSet>
 prepare_for_device(const Scene& scene, const gpu::DeviceInfo& device,
-                   const gpu::TextureSettings& settings) {
-    return tex::prepare_scene_textures(scene, gpu::texture_target(device, settings),
-                                       gpu::texture_pipeline_options(settings));
+                   const render::TextureSettings& settings) {
+    return tex::prepare_scene_textures(scene, render::texture_target(device, settings),
+                                       render::texture_pipeline_options(settings));
 }
 
 // RGBA8 pixels where one of the first `channels` channels differs by more than
@@ -64,15 +64,15 @@ inline std::size_t differing_pixels(const std::vector<std::uint8_t>& a,
 
 struct GpuEnvironment {
     std::unique_ptr<gpu::Context> context;
-    std::unique_ptr<gpu::Renderer> renderer;
+    std::unique_ptr<render::Renderer> renderer;
     GpuEnvironment() {
         core::keep_freed_memory_mapped(); // as every application does, before any device exists
         gpu::ContextOptions options;
         options.validation = true; // every GPU test runs under the Khronos layer
         context = std::make_unique<gpu::Context>(options);
-        gpu::RendererOptions renderer_options;
+        render::RendererOptions renderer_options;
         renderer_options.textures = test_texture_settings();
-        renderer = std::make_unique<gpu::Renderer>(*context, renderer_options);
+        renderer = std::make_unique<render::Renderer>(*context, renderer_options);
     }
     static GpuEnvironment& get() {
         static GpuEnvironment env;
@@ -87,13 +87,13 @@ struct GpuEnvironment {
 class GpuTest : public ::testing::Test {
 protected:
     gpu::Context& context() { return *GpuEnvironment::get().context; }
-    gpu::Renderer& renderer() { return *GpuEnvironment::get().renderer; }
+    render::Renderer& renderer() { return *GpuEnvironment::get().renderer; }
 
     void SetUp() override { seen_ = context().validation().count(); }
     void TearDown() override { expect_no_validation_since(context(), seen_); }
 
     // The frame `s` asks for, as RGBA8 rows (top first).
-    std::vector<std::uint8_t> draw(const gpu::FrameRequest& s) {
+    std::vector<std::uint8_t> draw(const render::FrameRequest& s) {
         std::vector<std::uint8_t> rgba;
         renderer().render(s, &rgba);
         return rgba;

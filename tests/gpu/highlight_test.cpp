@@ -102,11 +102,12 @@ Outline classify_outline(const std::vector<std::uint8_t>& plain,
 
 class HighlightTest : public GpuTest {
 protected:
-    gpu::FrameRequest settings() {
-        gpu::FrameRequest s;
+    render::FrameRequest settings() {
+        render::FrameRequest s;
         s.width = s.height = kHighlightImageSize;
         std::string error;
-        EXPECT_TRUE(gpu::parse_camera_spec("eye=1.5,1.2,2:target=0,0,0", s.camera, error)) << error;
+        EXPECT_TRUE(render::parse_camera_spec("eye=1.5,1.2,2:target=0,0,0", s.camera, error))
+            << error;
         return s;
     }
 };
@@ -116,7 +117,7 @@ TEST_F(HighlightTest, SelectedInstanceIsOutlinedNotTinted) {
     ASSERT_TRUE(scene);
     ASSERT_EQ(scene->instances.size(), 1u);
     renderer().load(*scene);
-    gpu::FrameRequest s = settings();
+    render::FrameRequest s = settings();
     const std::vector<std::uint8_t> plain_rgba = draw(s);
     const Counts plain = count_highlight(plain_rgba);
 
@@ -153,9 +154,10 @@ TEST_F(HighlightTest, DoubleSidedPlaneIsOutlinedToo) {
     ASSERT_TRUE(scene);
     ASSERT_FALSE(scene->instances.empty());
     renderer().load(*scene);
-    gpu::FrameRequest s = settings();
+    render::FrameRequest s = settings();
     std::string error;
-    ASSERT_TRUE(gpu::parse_camera_spec("eye=0.4,2.5,1.2:target=0,0,0", s.camera, error)) << error;
+    ASSERT_TRUE(render::parse_camera_spec("eye=0.4,2.5,1.2:target=0,0,0", s.camera, error))
+        << error;
     const std::vector<std::uint8_t> plain = draw(s);
     s.highlight_instance = 0;
     const std::vector<std::uint8_t> lit = draw(s);
@@ -171,9 +173,9 @@ TEST_F(HighlightTest, SubtreeOutlineAlongsideOtherLineOverlays) {
     auto scene = load("builtin:default");
     ASSERT_TRUE(scene);
     renderer().load(*scene);
-    gpu::FrameRequest s = settings();
+    render::FrameRequest s = settings();
     s.camera = {};
-    s.overlays = gpu::kOverlayBounds | gpu::kOverlayCullBoxes;
+    s.overlays = render::kOverlayBounds | render::kOverlayCullBoxes;
     const Counts plain = count_highlight(draw(s));
     s.highlight_instance = static_cast<std::uint32_t>(scene->instances.size() / 2);
     const Counts one = count_highlight(draw(s));

@@ -19,7 +19,7 @@ TEST_F(LeakTest, TwentyLoadUnloadCyclesOfDamagedHelmetLeaveNothingBehind) {
     // destruction all still run per cycle.
     const auto textures = prepare_for_device(*scene, context().info(), test_texture_settings());
     ASSERT_EQ(textures->textures.size(), 5u);
-    gpu::FrameRequest s;
+    render::FrameRequest s;
     s.width = 32;
     s.height = 32;
     // Baseline after one cycle: pipelines and render targets exist from then on.
@@ -62,7 +62,7 @@ TEST_F(LeakTest, CpuDeviceFramesDoNotFaultTheirWorkingMemoryInAgain) {
     auto scene = load(gltf_asset("2CylinderEngine"));
     ASSERT_TRUE(scene);
     renderer().load(*scene); // textures prepared with the renderer's test_texture_settings()
-    gpu::FrameRequest s;     // 1280x720, lit
+    render::FrameRequest s;  // 1280x720, lit
     for (int i = 0; i < 3; ++i) renderer().render(s); // pipelines, shadow map, first frames
     const long before = minor_page_faults();
     constexpr int kFrames = 10;

@@ -16,8 +16,8 @@ inline const ValidationMessage* message_at(const Scene& s, const std::string& po
     return nullptr;
 }
 
-inline gpu::MaterialExtensionBuffer extension_layout(const Scene& s) {
-    return gpu::build_material_extensions(s.materials, [](const TextureSlot& slot, TextureRole) {
+inline render::MaterialExtensionBuffer extension_layout(const Scene& s) {
+    return render::build_material_extensions(s.materials, [](const TextureSlot& slot, TextureRole) {
         return slot.present() ? 100u + std::uint32_t(slot.texture) : gpu::kWhiteTexture;
     });
 }

@@ -88,26 +88,26 @@ TEST(MaterialExtensions, BadValuesAreWarnedWithTheirPointerAndFallBack) {
 TEST(MaterialExtensions, OnlyMaterialsThatUseAnExtensionHaveBlocks) {
     const LoadResult r = load_data("material_extensions_bad.gltf");
     ASSERT_TRUE(r) << r.error;
-    const gpu::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
+    const render::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     ASSERT_EQ(b.places.size(), r.scene->materials.size());
     std::size_t words = 0;
     for (std::size_t i = 0; i < b.places.size(); ++i) {
         const MaterialInstance& m = r.scene->materials[i];
-        const gpu::MaterialExtensionPlace& p = b.places[i];
+        const render::MaterialExtensionPlace& p = b.places[i];
         EXPECT_EQ(p.any(), m.ior.has_value() || m.specular.has_value() || m.clearcoat.has_value() ||
                                m.sheen.has_value() || m.anisotropy.has_value() ||
                                m.iridescence.has_value())
             << i;
-        EXPECT_EQ(p.anisotropy != gpu::kNoExtension, m.anisotropy.has_value()) << i;
-        EXPECT_EQ(p.iridescence != gpu::kNoExtension, m.iridescence.has_value()) << i;
-        EXPECT_EQ(p.sheen != gpu::kNoExtension, m.sheen.has_value()) << i;
-        EXPECT_EQ(p.ior != gpu::kNoExtension, m.ior.has_value()) << i;
-        EXPECT_EQ(p.specular != gpu::kNoExtension, m.specular.has_value()) << i;
-        EXPECT_EQ(p.clearcoat != gpu::kNoExtension, m.clearcoat.has_value()) << i;
+        EXPECT_EQ(p.anisotropy != render::kNoExtension, m.anisotropy.has_value()) << i;
+        EXPECT_EQ(p.iridescence != render::kNoExtension, m.iridescence.has_value()) << i;
+        EXPECT_EQ(p.sheen != render::kNoExtension, m.sheen.has_value()) << i;
+        EXPECT_EQ(p.ior != render::kNoExtension, m.ior.has_value()) << i;
+        EXPECT_EQ(p.specular != render::kNoExtension, m.specular.has_value()) << i;
+        EXPECT_EQ(p.clearcoat != render::kNoExtension, m.clearcoat.has_value()) << i;
         if (!p.any()) continue;
         words += 3 + (m.ior ? 1 : 0) + (m.specular ? 6 : 0) + (m.clearcoat ? 8 : 0) +
                  (m.sheen ? 6 : 0) + (m.anisotropy ? 4 : 0) + (m.iridescence ? 6 : 0);
-        gpu::GPUExtensionIndex index;
+        render::GPUExtensionIndex index;
         std::memcpy(&index, &b.words[p.index], sizeof index);
         EXPECT_EQ(index.ior, p.ior);
         EXPECT_EQ(index.specular, p.specular);
@@ -116,7 +116,7 @@ TEST(MaterialExtensions, OnlyMaterialsThatUseAnExtensionHaveBlocks) {
         EXPECT_EQ(index.anisotropy, p.anisotropy);
         EXPECT_EQ(index.iridescence, p.iridescence);
         if (m.ior) {
-            gpu::GPUIorBlock ior;
+            render::GPUIorBlock ior;
             std::memcpy(&ior, &b.words[p.ior], sizeof ior);
             EXPECT_EQ(ior.ior, *m.ior);
         }
@@ -124,7 +124,7 @@ TEST(MaterialExtensions, OnlyMaterialsThatUseAnExtensionHaveBlocks) {
     EXPECT_EQ(b.words.size(), words);
     // "missing specular texture" (material 6): its colour texture resolved through the
     // slot function, the specular texture white.
-    gpu::GPUSpecularBlock spec;
+    render::GPUSpecularBlock spec;
     std::memcpy(&spec, &b.words[b.places[6].specular], sizeof spec);
     EXPECT_EQ(spec.specular_color_tex, 100u);
     EXPECT_EQ(spec.specular_tex, gpu::kWhiteTexture);
@@ -134,9 +134,9 @@ TEST(MaterialExtensions, OnlyMaterialsThatUseAnExtensionHaveBlocks) {
 TEST(MaterialExtensions, ASceneWithoutExtensionsHasNoBytes) {
     const LoadResult r = load_scene(test::gltf_asset("DamagedHelmet"));
     ASSERT_TRUE(r) << r.error;
-    const gpu::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
+    const render::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.bytes(), 0u);
-    for (const gpu::MaterialExtensionPlace& p : b.places) EXPECT_FALSE(p.any());
+    for (const render::MaterialExtensionPlace& p : b.places) EXPECT_FALSE(p.any());
 }
 
 TEST(MaterialExtensions, AnIorOnlyMaterialPaysSixtyFourBytes) {
@@ -162,9 +162,9 @@ TEST(MaterialExtensions, ClearcoatIsReadAndPacked) {
     // The clearcoat normal map alone asks for tangents and the TEXCOORD_0 stream.
     EXPECT_TRUE(reads_normal_map(m));
     ASSERT_EQ(extension_texture_slots(m).size(), 3u);
-    const gpu::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
+    const render::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.bytes(), 48u + 128u);
-    gpu::GPUClearcoatBlock c;
+    render::GPUClearcoatBlock c;
     std::memcpy(&c, &b.words[b.places[0].clearcoat], sizeof c);
     EXPECT_EQ(c.factors, glm::vec4(1.0f, 1.0f, 1.0f, 0.0f));
     EXPECT_EQ(c.clearcoat_tex, 100u);
@@ -209,9 +209,9 @@ TEST(MaterialExtensions, SheenIsReadAndPacked) {
     EXPECT_EQ(m.sheen->color.texture, 0);
     EXPECT_TRUE(m.sheen->roughness.transform.present);
     EXPECT_EQ(extension_texture_slots(m).size(), 2u);
-    const gpu::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
+    const render::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.bytes(), 48u + 96u);
-    gpu::GPUSheenBlock s;
+    render::GPUSheenBlock s;
     std::memcpy(&s, &b.words[b.places[0].sheen], sizeof s);
     EXPECT_EQ(s.factors, glm::vec4(1.0f));
     EXPECT_EQ(s.color_tex, 100u);
@@ -251,9 +251,9 @@ TEST(MaterialExtensions, AnisotropyIsReadAndPackedAndAsksForTangents) {
     EXPECT_EQ(r.scene->meshes.at(0).provenance_of(VertexAttribute::Tangent), Provenance::Authored);
     ASSERT_EQ(extension_texture_slots(m).size(), 1u);
     EXPECT_EQ(extension_texture_slots(m)[0].role, kRoleLinear);
-    const gpu::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
+    const render::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.bytes(), 48u + 64u);
-    gpu::GPUAnisotropyBlock a;
+    render::GPUAnisotropyBlock a;
     std::memcpy(&a, &b.words[b.places[0].anisotropy], sizeof a);
     EXPECT_EQ(a.factors, glm::vec4(1.0f, 1.0f, 0.0f, 0.0f));
     EXPECT_EQ(a.texture, 100u);
@@ -278,12 +278,12 @@ TEST(MaterialExtensions, AnisotropyRotationIsStoredAsItsCosineAndSine) {
     const LoadResult r = load_data("material_sweeps/anisotropy_sweep.gltf");
     ASSERT_TRUE(r) << r.error;
     ASSERT_EQ(r.scene->materials.size(), 10u);
-    const gpu::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
+    const render::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.bytes(), 10u * (48u + 64u));
     // Row 2: strength 0.8 at 0, 30, 60, 90 and 135 degrees.
     const float degrees[] = {0.0f, 30.0f, 60.0f, 90.0f, 135.0f};
     for (int i = 0; i < 5; ++i) {
-        gpu::GPUAnisotropyBlock a;
+        render::GPUAnisotropyBlock a;
         std::memcpy(&a, &b.words[b.places[std::size_t(5 + i)].anisotropy], sizeof a);
         const float rad = degrees[i] * 3.14159265f / 180.0f;
         EXPECT_FLOAT_EQ(a.factors.x, 0.8f) << i;
@@ -329,9 +329,9 @@ TEST(MaterialExtensions, IridescenceIsReadAndPacked) {
     EXPECT_TRUE(m.iridescence->thickness.transform.present);
     EXPECT_FALSE(needs_tangents(m));
     ASSERT_EQ(extension_texture_slots(m).size(), 2u);
-    const gpu::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
+    const render::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.bytes(), 48u + 96u);
-    gpu::GPUIridescenceBlock i;
+    render::GPUIridescenceBlock i;
     std::memcpy(&i, &b.words[b.places[0].iridescence], sizeof i);
     EXPECT_EQ(i.factors, glm::vec4(1.0f, 1.3f, 200.0f, 600.0f));
     EXPECT_EQ(i.texture, 100u);

@@ -93,19 +93,19 @@ TEST(MaterialVariants, BadMappingsAreWarnedWithTheirPointerAndKeepTheDefault) {
 
 class VariantSwitch : public GpuTest {
 protected:
-    std::vector<std::uint8_t> frame(gpu::Renderer& r, gpu::CullPath cull) {
-        gpu::FrameRequest s;
+    std::vector<std::uint8_t> frame(render::Renderer& r, render::CullPath cull) {
+        render::FrameRequest s;
         s.width = 160;
         s.height = 120;
         std::string error;
-        EXPECT_TRUE(gpu::parse_camera_spec("eye=0,0,5:target=0,0,0:fov=45", s.camera, error));
+        EXPECT_TRUE(render::parse_camera_spec("eye=0,0,5:target=0,0,0:fov=45", s.camera, error));
         s.cull = cull;
         std::vector<std::uint8_t> rgba;
         r.render(s, &rgba);
         return rgba;
     }
     // The frame of a scene loaded with `variant` already shown.
-    std::vector<std::uint8_t> loaded_with(std::int32_t variant, gpu::CullPath cull) {
+    std::vector<std::uint8_t> loaded_with(std::int32_t variant, render::CullPath cull) {
         std::unique_ptr<Scene> s = load(file("variants.gltf"));
         apply_material_variant(*s, variant);
         renderer().load(*s);
@@ -114,8 +114,8 @@ protected:
 };
 
 TEST_F(VariantSwitch, SwitchedSceneDrawsAsTheSceneLoadedWithTheVariant) {
-    for (const gpu::CullPath cull : {gpu::CullPath::Cpu, gpu::CullPath::Gpu}) {
-        SCOPED_TRACE(std::string(gpu::to_string(cull)));
+    for (const render::CullPath cull : {render::CullPath::Cpu, render::CullPath::Gpu}) {
+        SCOPED_TRACE(std::string(to_string(cull)));
         const auto defaults = loaded_with(-1, cull);
         const auto warm = loaded_with(kWarm, cull);
         const auto cool = loaded_with(kCool, cull);
@@ -125,20 +125,20 @@ TEST_F(VariantSwitch, SwitchedSceneDrawsAsTheSceneLoadedWithTheVariant) {
         std::unique_ptr<Scene> s = load(file("variants.gltf"));
         renderer().load(*s);
         EXPECT_EQ(frame(renderer(), cull), defaults);
-        gpu::VariantSwitch w = gpu::set_material_variant(renderer(), kWarm);
+        render::VariantSwitch w = render::set_material_variant(renderer(), kWarm);
         EXPECT_EQ(w.meshes, 2u);
         EXPECT_EQ(w.instances, 2u);
         EXPECT_EQ(w.gpu_bytes, 8u); // two material words
         EXPECT_FALSE(w.culling_rebuilt);
         EXPECT_EQ(frame(renderer(), cull), warm);
-        gpu::VariantSwitch c = gpu::set_material_variant(renderer(), kCool);
+        render::VariantSwitch c = render::set_material_variant(renderer(), kCool);
         EXPECT_EQ(c.meshes, 3u);
         EXPECT_TRUE(c.culling_rebuilt); // sphere 1 became masked
         EXPECT_EQ(frame(renderer(), cull), cool);
-        gpu::set_material_variant(renderer(), -1);
+        render::set_material_variant(renderer(), -1);
         EXPECT_EQ(frame(renderer(), cull), defaults);
-        EXPECT_EQ(gpu::set_material_variant(renderer(), -1).gpu_bytes, 0u); // unchanged
-        EXPECT_THROW(gpu::set_material_variant(renderer(), 2), std::out_of_range);
+        EXPECT_EQ(render::set_material_variant(renderer(), -1).gpu_bytes, 0u); // unchanged
+        EXPECT_THROW(render::set_material_variant(renderer(), 2), std::out_of_range);
     }
 }
 
@@ -158,22 +158,22 @@ TEST_F(VariantSwitch, RaysFollowTheSwitchedVariant) {
         return s;
     };
     auto traced = [&](const Scene& scene) {
-        gpu::RendererOptions options;
+        render::RendererOptions options;
         options.ray_tracing = true;
         options.textures = test_texture_settings();
-        auto r = std::make_unique<gpu::Renderer>(context(), options);
-        r->load(scene, streams_setup(gpu::StreamPolicy::AllPresent));
+        auto r = std::make_unique<render::Renderer>(context(), options);
+        r->load(scene, streams_setup(render::StreamPolicy::AllPresent));
         return r;
     };
-    gpu::FrameRequest s;
+    render::FrameRequest s;
     s.width = 160;
     s.height = 120;
     s.shadows = false;
     s.path.samples = 4;
     s.path.restart = true; // each lit frame is 4 samples from the same seed
     std::string error;
-    ASSERT_TRUE(gpu::parse_camera_spec("eye=0,0,5:target=0,0,0:fov=45", s.camera, error));
-    auto image = [&](gpu::Renderer& r, gpu::DebugView view, gpu::RendererKind kind) {
+    ASSERT_TRUE(render::parse_camera_spec("eye=0,0,5:target=0,0,0:fov=45", s.camera, error));
+    auto image = [&](render::Renderer& r, render::DebugView view, render::RendererKind kind) {
         s.view = view;
         s.renderer = kind;
         std::vector<std::uint8_t> rgba;
@@ -183,7 +183,7 @@ TEST_F(VariantSwitch, RaysFollowTheSwitchedVariant) {
     std::unique_ptr<Scene> scene = opaque_spheres(-1);
     auto switched = traced(*scene);
     const std::vector<std::uint8_t> defaults_lit =
-        image(*switched, gpu::DebugView::Lit, gpu::RendererKind::RayTraced);
+        image(*switched, render::DebugView::Lit, render::RendererKind::RayTraced);
     struct Step {
         std::int32_t variant;
         std::uint32_t forced_blas;
@@ -191,18 +191,18 @@ TEST_F(VariantSwitch, RaysFollowTheSwitchedVariant) {
     };
     for (const Step step : {Step{kWarm, 0, false}, Step{kCool, 1, true}, Step{-1, 0, true}}) {
         SCOPED_TRACE("variant " + std::to_string(step.variant));
-        const gpu::VariantSwitch v = gpu::set_material_variant(*switched, step.variant);
+        const render::VariantSwitch v = render::set_material_variant(*switched, step.variant);
         EXPECT_GT(v.rt_records, 0u);
         EXPECT_EQ(v.rt_gpu_bytes, 4u * v.rt_records); // material words only
         EXPECT_EQ(v.rt_forced_blas, step.forced_blas);
         EXPECT_EQ(v.tlas_rebuilt, step.tlas_rebuilt);
         int views = 0;
-        for (const gpu::DebugViewInfo& info : gpu::kDebugViews) {
-            if (!gpu::ray_traced_view(info.id) || !gpu::raster_view(info.id) ||
-                info.id == gpu::DebugView::Shadow || info.id == gpu::DebugView::Lit)
+        for (const render::DebugViewInfo& info : render::kDebugViews) {
+            if (!render::ray_traced_view(info.id) || !render::raster_view(info.id) ||
+                info.id == render::DebugView::Shadow || info.id == render::DebugView::Lit)
                 continue;
-            const auto raster = image(*switched, info.id, gpu::RendererKind::Raster);
-            const auto rays = image(*switched, info.id, gpu::RendererKind::RayTraced);
+            const auto raster = image(*switched, info.id, render::RendererKind::Raster);
+            const auto rays = image(*switched, info.id, render::RendererKind::RayTraced);
             const Agreement a = compare(raster, rays, s.width, s.height, 2);
             std::printf("variant %2d %-15s agree %7.3f%% of %5zu (max diff %3d)\n", step.variant,
                         std::string(info.name).c_str(), 100.0 * a.fraction(), a.compared,
@@ -215,10 +215,10 @@ TEST_F(VariantSwitch, RaysFollowTheSwitchedVariant) {
         }
         EXPECT_GE(views, 12);
         // The path tracer: as the file loaded with the variant (same seeds, same bytes).
-        const auto lit = image(*switched, gpu::DebugView::Lit, gpu::RendererKind::RayTraced);
+        const auto lit = image(*switched, render::DebugView::Lit, render::RendererKind::RayTraced);
         std::unique_ptr<Scene> loaded_scene = opaque_spheres(step.variant);
         auto loaded = traced(*loaded_scene);
-        EXPECT_EQ(lit, image(*loaded, gpu::DebugView::Lit, gpu::RendererKind::RayTraced));
+        EXPECT_EQ(lit, image(*loaded, render::DebugView::Lit, render::RendererKind::RayTraced));
         if (step.variant >= 0) {
             EXPECT_GT(differing_pixels(lit, defaults_lit, 8), 300u);
         }

@@ -17,16 +17,16 @@ namespace sherpa::test {
 namespace {
 
 // A camera looking at `box` from the front, a little above, the box filling the view.
-gpu::CameraSpec camera_on(const core::Aabb& box) {
+render::CameraSpec camera_on(const core::Aabb& box) {
     const glm::vec3 c = box.center();
     const float r = std::max(0.5f * glm::length(box.extent()), 1e-3f);
     const glm::vec3 eye = c + glm::normalize(glm::vec3(0.35f, 0.3f, 1.0f)) * (2.2f * r);
     char text[256];
     std::snprintf(text, sizeof(text), "eye=%g,%g,%g:target=%g,%g,%g:near=%g", eye.x, eye.y, eye.z,
                   c.x, c.y, c.z, 0.01f * r);
-    gpu::CameraSpec spec;
+    render::CameraSpec spec;
     std::string error;
-    EXPECT_TRUE(gpu::parse_camera_spec(text, spec, error)) << error;
+    EXPECT_TRUE(render::parse_camera_spec(text, spec, error)) << error;
     return spec;
 }
 
@@ -45,20 +45,20 @@ TEST_F(MotionRenderTest, GpuSkinningAndMorphingMatchTheCpuPosedStaticMesh) {
         const auto pose =
             std::make_shared<const Pose>(evaluate_pose(*scene, 0, mid_time(*scene, 0)));
         const Scene cpu = freeze_pose(*scene, *pose);
-        gpu::FrameRequest s;
+        render::FrameRequest s;
         s.width = 160;
         s.height = 120;
         s.shadows = false;
         s.camera = camera_on(posed_scene_bounds(*scene, *pose).exact);
-        for (gpu::DebugView view : {gpu::DebugView::BaseColor, gpu::DebugView::Normal}) {
+        for (render::DebugView view : {render::DebugView::BaseColor, render::DebugView::Normal}) {
             s.view = view;
-            renderer().load(*scene, streams_setup(gpu::StreamPolicy::AllPresent));
+            renderer().load(*scene, streams_setup(render::StreamPolicy::AllPresent));
             ASSERT_GT(renderer().scene()->memory().motion, 0u) << "moving meshes hold streams";
             s.pose = pose;
             const auto gpu_posed = draw(s);
             s.pose = nullptr; // the scene as loaded: default pose and weights
             const auto gpu_bind = draw(s);
-            renderer().load(cpu, streams_setup(gpu::StreamPolicy::AllPresent));
+            renderer().load(cpu, streams_setup(render::StreamPolicy::AllPresent));
             EXPECT_EQ(renderer().scene()->memory().motion, 0u) << "the CPU-posed copy is static";
             const auto cpu_posed = draw(s);
             const std::size_t pixels = std::size_t{s.width} * s.height;
@@ -66,11 +66,11 @@ TEST_F(MotionRenderTest, GpuSkinningAndMorphingMatchTheCpuPosedStaticMesh) {
             const std::size_t moved = differing_pixels(gpu_posed, gpu_bind, 2);
             std::printf("%s %s: GPU against CPU posing %zu of %zu pixels differ by > 2/255; "
                         "posed against bind pose %zu\n",
-                        name, std::string(gpu::to_string(view)).c_str(), differ, pixels, moved);
-            EXPECT_LE(differ, pixels / 200) << gpu::to_string(view) << ": " << differ << " of "
-                                            << pixels << " pixels differ by more than 2/255";
+                        name, std::string(to_string(view)).c_str(), differ, pixels, moved);
+            EXPECT_LE(differ, pixels / 200) << to_string(view) << ": " << differ << " of " << pixels
+                                            << " pixels differ by more than 2/255";
             // A renderer that ignored the pose would draw the bind pose.
-            EXPECT_GT(moved, pixels / 100) << gpu::to_string(view);
+            EXPECT_GT(moved, pixels / 100) << to_string(view);
         }
     }
     renderer().unload();
@@ -93,7 +93,7 @@ TEST_F(MotionRenderTest, CullingNeverRemovesAMovingInstanceFromTheImage) {
                 const double t = anim.start + (anim.end - anim.start) * k / 5.0;
                 SCOPED_TRACE("animation " + std::to_string(a) + " at " + std::to_string(t));
                 auto pose = std::make_shared<const Pose>(evaluate_pose(*scene, int(a), t));
-                gpu::FrameRequest s;
+                render::FrameRequest s;
                 s.width = 96;
                 s.height = 72;
                 s.pose = pose;
@@ -105,15 +105,15 @@ TEST_F(MotionRenderTest, CullingNeverRemovesAMovingInstanceFromTheImage) {
                 top.min.y = posed.max.y - 0.1f * (posed.max.y - posed.min.y);
                 for (const core::Aabb& look : {posed, top}) {
                     s.camera = camera_on(look);
-                    s.cull = gpu::CullPath::None;
+                    s.cull = render::CullPath::None;
                     s.cull_check = false;
                     const auto all = draw(s);
-                    s.cull = gpu::CullPath::Cpu;
+                    s.cull = render::CullPath::Cpu;
                     const auto cpu = draw(s);
-                    s.cull = gpu::CullPath::Gpu;
+                    s.cull = render::CullPath::Gpu;
                     s.cull_check = true;
                     std::vector<std::uint8_t> gpu_image;
-                    const gpu::FrameStats st = renderer().render(s, &gpu_image);
+                    const render::FrameStats st = renderer().render(s, &gpu_image);
                     EXPECT_EQ(differing_pixels(all, cpu, 0), 0u);
                     EXPECT_EQ(differing_pixels(all, gpu_image, 0), 0u);
                     for (const CullStats& c : st.culling)
@@ -131,7 +131,7 @@ TEST_F(MotionRenderTest, StaticScenesCarryNoMotionBytes) {
         ASSERT_TRUE(scene);
         renderer().load(*scene);
         EXPECT_EQ(renderer().scene()->memory().motion, 0u) << name;
-        for (const gpu::GpuMesh& m : renderer().scene()->meshes()) EXPECT_EQ(m.motion, 0u);
+        for (const render::GpuMesh& m : renderer().scene()->meshes()) EXPECT_EQ(m.motion, 0u);
     }
     renderer().unload();
 }
@@ -144,10 +144,10 @@ TEST_F(MotionRenderTest, JointInfluenceShowsTheSelectedJointsWeight) {
     ASSERT_FALSE(scene->skins.empty());
     ASSERT_GE(scene->skins[0].joints.size(), 2u);
     renderer().load(*scene);
-    gpu::FrameRequest s;
+    render::FrameRequest s;
     s.width = 96;
     s.height = 96;
-    s.view = gpu::DebugView::JointInfluence;
+    s.view = render::DebugView::JointInfluence;
     s.camera = camera_on(posed_scene_bounds(*scene, evaluate_pose(*scene, -1, 0.0)).exact);
     const auto none = draw(s);
     s.selected_joint = scene->skins[0].joints[0];

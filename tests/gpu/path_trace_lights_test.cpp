@@ -82,7 +82,7 @@ bool mentions(const std::vector<std::string>& lines, const std::string& text) {
 TEST(EmissiveLightsCpu, ListFollowsPowerAndSkipsWhatCannotBeSampled) {
     auto scene = load_file(write_temp("pt_lights.gltf", lit_floor_gltf("[1,1,1]", "10")));
     ASSERT_TRUE(scene);
-    const gpu::EmissiveLights lights = gpu::emissive_lights(*scene);
+    const render::EmissiveLights lights = render::emissive_lights(*scene);
     ASSERT_EQ(lights.triangles.size(), 2u);
     EXPECT_NEAR(lights.triangles[0].p0_cdf.w, 0.5f, 1e-6f);
     EXPECT_EQ(lights.triangles[1].p0_cdf.w, 1.0f);
@@ -91,21 +91,21 @@ TEST(EmissiveLightsCpu, ListFollowsPowerAndSkipsWhatCannotBeSampled) {
     EXPECT_NEAR(lights.inv_power, 0.4f, 1e-7f);
     EXPECT_TRUE(lights.warnings.empty());
     // The cap: none sampled past it.
-    EXPECT_TRUE(gpu::emissive_lights(*scene, 1).triangles.empty());
-    EXPECT_TRUE(mentions(gpu::emissive_lights(*scene, 1).warnings, "more than 1 emissive"));
+    EXPECT_TRUE(render::emissive_lights(*scene, 1).triangles.empty());
+    EXPECT_TRUE(mentions(render::emissive_lights(*scene, 1).warnings, "more than 1 emissive"));
 
     // 1e30 strength: a warning at load naming the property, none in the light list.
     auto huge = load_file(write_temp("pt_lights_huge.gltf", lit_floor_gltf("[1,1,1]", "1e30")));
     ASSERT_TRUE(huge);
     EXPECT_TRUE(mentions(huge->warnings, "KHR_materials_emissive_strength.emissiveStrength"));
-    const gpu::EmissiveLights none = gpu::emissive_lights(*huge);
+    const render::EmissiveLights none = render::emissive_lights(*huge);
     EXPECT_TRUE(none.triangles.empty());
     EXPECT_TRUE(mentions(none.warnings, "beyond 1e20"));
     // An infinite factor (1e39 in JSON) is reset at load with a warning: nothing emits.
     auto inf = load_file(write_temp("pt_lights_inf.gltf", lit_floor_gltf("[1e39,0,0]", "1")));
     ASSERT_TRUE(inf);
     EXPECT_TRUE(mentions(inf->warnings, "emissiveFactor: not finite"));
-    EXPECT_TRUE(gpu::emissive_lights(*inf).triangles.empty());
+    EXPECT_TRUE(render::emissive_lights(*inf).triangles.empty());
 }
 
 // The emissive texture's mean over a triangle (at load, on the CPU): a 4 x 2 image, white
@@ -115,30 +115,30 @@ TEST(EmissiveLightsCpu, TextureMeanOverATriangle) {
     for (int y = 0; y < 2; ++y)
         for (int x = 2; x < 4; ++x)
             for (int c = 0; c < 3; ++c) rgba[std::size_t((y * 4 + x) * 4 + c)] = 0;
-    const gpu::LuminanceGrid g = gpu::luminance_grid(4, 2, rgba);
+    const render::LuminanceGrid g = render::luminance_grid(4, 2, rgba);
     ASSERT_EQ(g.width, 4u);
     EXPECT_NEAR(g.mean, 0.5, 1e-6);
     const glm::vec2 left[3] = {{0.0f, 0.0f}, {0.45f, 0.0f}, {0.0f, 1.0f}};
     const glm::vec2 right[3] = {{0.55f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}};
-    EXPECT_NEAR(gpu::mean_over_triangle(g, left), 1.0, 1e-6);
-    EXPECT_NEAR(gpu::mean_over_triangle(g, right), 0.0, 1e-6);
+    EXPECT_NEAR(render::mean_over_triangle(g, left), 1.0, 1e-6);
+    EXPECT_NEAR(render::mean_over_triangle(g, right), 0.0, 1e-6);
     // Repeat wraps a whole period away onto the same texels; clamp holds the edge.
     const glm::vec2 shifted[3] = {{2.0f, -3.0f}, {2.45f, -3.0f}, {2.0f, -2.0f}};
-    EXPECT_NEAR(gpu::mean_over_triangle(g, shifted), 1.0, 1e-6);
+    EXPECT_NEAR(render::mean_over_triangle(g, shifted), 1.0, 1e-6);
     const glm::vec2 beyond[3] = {{1.5f, 0.0f}, {2.0f, 0.0f}, {2.0f, 1.0f}};
-    EXPECT_NEAR(gpu::mean_over_triangle(g, beyond, AddressMode::ClampToEdge), 0.0, 1e-6);
+    EXPECT_NEAR(render::mean_over_triangle(g, beyond, AddressMode::ClampToEdge), 0.0, 1e-6);
     // Mirrored repeat: u in [1, 2) reads the image reversed (white at its right end).
     const glm::vec2 mirrored[3] = {{1.55f, 0.0f}, {2.0f, 0.0f}, {2.0f, 1.0f}};
-    EXPECT_NEAR(gpu::mean_over_triangle(g, mirrored, AddressMode::MirroredRepeat), 1.0, 1e-6);
+    EXPECT_NEAR(render::mean_over_triangle(g, mirrored, AddressMode::MirroredRepeat), 1.0, 1e-6);
     // Non-finite coordinates read a texel, never out of bounds.
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const glm::vec2 broken[3] = {{nan, 0.0f}, {1e30f, -1e30f}, {0.0f, nan}};
-    EXPECT_TRUE(std::isfinite(gpu::mean_over_triangle(g, broken)));
+    EXPECT_TRUE(std::isfinite(render::mean_over_triangle(g, broken)));
     // The grid is box-filtered down to kEmissiveGridSize a side, keeping the mean.
     std::vector<std::uint8_t> big(std::size_t(1024) * 4 * 4, 255);
     for (std::size_t i = 0; i < big.size(); i += 8) big[i] = big[i + 1] = big[i + 2] = 0;
-    const gpu::LuminanceGrid small = gpu::luminance_grid(1024, 4, big);
-    EXPECT_EQ(small.width, gpu::kEmissiveGridSize);
+    const render::LuminanceGrid small = render::luminance_grid(1024, 4, big);
+    EXPECT_EQ(small.width, render::kEmissiveGridSize);
     EXPECT_NEAR(small.mean, 0.5, 1e-6);
     EXPECT_NEAR(small.texels[0], 0.5f, 1e-6f);
 }
@@ -150,7 +150,7 @@ TEST(EmissiveLightsCpu, DamagedHelmetWeighsTrianglesByItsEmissiveTexture) {
     auto scene = load_file(gltf_asset("DamagedHelmet"));
     ASSERT_TRUE(scene);
     const auto start = std::chrono::steady_clock::now();
-    const gpu::EmissiveLights lights = gpu::emissive_lights(*scene);
+    const render::EmissiveLights lights = render::emissive_lights(*scene);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     ASSERT_FALSE(lights.triangles.empty());
@@ -158,7 +158,7 @@ TEST(EmissiveLightsCpu, DamagedHelmetWeighsTrianglesByItsEmissiveTexture) {
     EXPECT_LT(lights.sampled_power, 0.5 * lights.power) << "the texture is mostly black";
     double integral = 0.0;
     float least = 1e30f, most = 0.0f;
-    for (const gpu::EmissiveTriangle& t : lights.triangles) {
+    for (const render::EmissiveTriangle& t : lights.triangles) {
         const double area = 0.5 * glm::length(glm::cross(glm::vec3(t.e1_density), glm::vec3(t.e2)));
         integral += double(t.e1_density.w) * area;
         least = std::min(least, t.emission.y);
@@ -182,7 +182,7 @@ TEST(EmissiveLightsCpu, VariantsThatChangeEmissionGetNoList) {
     ASSERT_TRUE(scene);
     const auto emitter =
         std::find_if(scene->instances.begin(), scene->instances.end(), [&](const MeshInstance& i) {
-            return gpu::emitted_luminance(scene->materials[i.material_id]) > 0.0f;
+            return render::emitted_luminance(scene->materials[i.material_id]) > 0.0f;
         });
     ASSERT_NE(emitter, scene->instances.end());
     MaterialInstance same = scene->materials[emitter->material_id];
@@ -194,47 +194,47 @@ TEST(EmissiveLightsCpu, VariantsThatChangeEmissionGetNoList) {
     scene->variants.names = {"same", "dark"};
     scene->variants.meshes = {
         VariantMeshMapping{emitter->mesh_id, emitter->material_id, {n - 2, -1}}};
-    EXPECT_EQ(gpu::emissive_lights(*scene).triangles.size(), 2u);
+    EXPECT_EQ(render::emissive_lights(*scene).triangles.size(), 2u);
     scene->variants.meshes[0].materials[1] = n - 1;
-    const gpu::EmissiveLights none = gpu::emissive_lights(*scene);
+    const render::EmissiveLights none = render::emissive_lights(*scene);
     EXPECT_TRUE(none.triangles.empty());
     EXPECT_TRUE(mentions(none.warnings, "a material variant changes which surfaces emit"));
 }
 
 class PathTraceLights : public GpuTest {
 protected:
-    static gpu::Renderer& rt() { return path_trace_renderer(); }
+    static render::Renderer& rt() { return path_trace_renderer(); }
     static void TearDownTestSuite() { rt().unload(); }
 
     // The floor from above the light (its single-sided back is invisible from there), in
     // a black environment, no sun.
-    static gpu::FrameRequest view() {
-        gpu::FrameRequest s;
+    static render::FrameRequest view() {
+        render::FrameRequest s;
         s.width = s.height = 64;
         std::string error;
-        EXPECT_TRUE(gpu::parse_camera_spec("eye=0,4,2.5:target=0,0,0:fov=60", s.camera, error));
+        EXPECT_TRUE(render::parse_camera_spec("eye=0,4,2.5:target=0,0,0:fov=60", s.camera, error));
         s.sun = false;
         s.shadows = false;
-        s.tone_map = gpu::ToneMap::Linear;
-        s.background = gpu::Background::Color;
+        s.tone_map = render::ToneMap::Linear;
+        s.background = render::Background::Color;
         s.clear_color = glm::vec4(0, 0, 0, 1);
-        s.renderer = gpu::RendererKind::RayTraced;
+        s.renderer = render::RendererKind::RayTraced;
         s.path.max_bounces = 2;
         return s;
     }
 };
 
 struct BlackEnvironment {
-    gpu::Renderer& r;
-    explicit BlackEnvironment(gpu::Renderer& renderer) : r(renderer) {
-        const gpu::EnvironmentImage black = gpu::uniform_environment(glm::vec3(0.0f));
+    render::Renderer& r;
+    explicit BlackEnvironment(render::Renderer& renderer) : r(renderer) {
+        const render::EnvironmentImage black = render::uniform_environment(glm::vec3(0.0f));
         r.set_environment(&black);
     }
     ~BlackEnvironment() { r.set_environment(nullptr); }
 };
 
 // The mean over the pixels of a path-traced image's mean radiance (rgb averaged).
-double mean_radiance(const gpu::PathTraceImage& img) {
+double mean_radiance(const render::PathTraceImage& img) {
     double sum = 0.0;
     for (std::size_t i = 0; i < img.sums.size(); i += 4)
         sum += (img.sums[i] + img.sums[i + 1] + img.sums[i + 2]) / 3.0;
@@ -248,21 +248,21 @@ struct LightAgainstBsdf {
     double light_error = 0.0, bsdf_error = 0.0; // relative, at 64 spp each
 };
 
-LightAgainstBsdf light_against_bsdf_sampling(gpu::Renderer& r, gpu::FrameRequest s,
+LightAgainstBsdf light_against_bsdf_sampling(render::Renderer& r, render::FrameRequest s,
                                              const char* what) {
     s.path.samples = 64;
     s.path.restart = true;
     r.render(s);
-    const gpu::PathTraceImage light = gpu::read_path_trace(r);
+    const render::PathTraceImage light = render::read_path_trace(r);
     LightAgainstBsdf out;
-    out.light_error = gpu::estimate_error(light).relative_error;
+    out.light_error = render::estimate_error(light).relative_error;
     s.path.light_sampling = false;
     r.render(s);
-    out.bsdf_error = gpu::path_trace_error(r).relative_error;
+    out.bsdf_error = render::path_trace_error(r).relative_error;
     s.path.restart = false;
     s.path.samples = 192;
     r.render(s);
-    const gpu::PathTraceImage bsdf = gpu::read_path_trace(r);
+    const render::PathTraceImage bsdf = render::read_path_trace(r);
     EXPECT_EQ(bsdf.samples, 256u);
     out.light_mean = mean_radiance(light);
     out.bsdf_mean = mean_radiance(bsdf);
@@ -293,7 +293,7 @@ TEST_F(PathTraceLights, TextureWeightedEmitterAgreesWithBsdfSampling) {
     BlackEnvironment black(rt());
     auto scene = load(std::string(SHERPA_TEST_DATA_DIR) + "/textured_emitter.gltf");
     ASSERT_TRUE(scene);
-    EXPECT_EQ(gpu::emissive_lights(*scene).textures_read, 1u);
+    EXPECT_EQ(render::emissive_lights(*scene).textures_read, 1u);
     rt().load(*scene);
     const LightAgainstBsdf r =
         light_against_bsdf_sampling(rt(), view(), "textured emitter over a floor");
@@ -309,12 +309,12 @@ TEST_F(PathTraceLights, AbsurdEmissionGivesAFiniteImage) {
         auto scene =
             load(write_temp("pt_lights_huge.gltf", lit_floor_gltf("[1,1,1]", strength)).string());
         rt().load(*scene);
-        gpu::FrameRequest s = view();
+        render::FrameRequest s = view();
         s.path.samples = 8;
         s.path.restart = true;
         std::vector<std::uint8_t> rgba;
         rt().render(s, &rgba);
-        const gpu::PathTraceImage img = gpu::read_path_trace(rt());
+        const render::PathTraceImage img = render::read_path_trace(rt());
         ASSERT_EQ(img.samples, 8u);
         std::size_t lit = 0;
         for (float v : img.sums) {
@@ -332,7 +332,7 @@ struct BlockMeans {
     std::vector<double> mean, variance;
 };
 
-BlockMeans block_means(const gpu::PathTraceImage& img, std::uint32_t block) {
+BlockMeans block_means(const render::PathTraceImage& img, std::uint32_t block) {
     const std::uint32_t bx = img.width / block, by = img.height / block;
     BlockMeans out{std::vector<double>(std::size_t(bx) * by, 0.0),
                    std::vector<double>(std::size_t(bx) * by, 0.0)};
@@ -356,23 +356,23 @@ BlockMeans block_means(const gpu::PathTraceImage& img, std::uint32_t block) {
 // difference. A choice that dropped a light, or weighted it wrongly, fails in the
 // blocks where that light matters.
 TEST_F(PathTraceLights, OneLightRayConvergesToOneRayPerLight) {
-    const gpu::EnvironmentImage room = gpu::room_environment(256);
+    const render::EnvironmentImage room = render::room_environment(256);
     rt().set_environment(&room);
     auto scene =
         load(write_temp("pt_choice.gltf", lit_floor_gltf("[1,0.9,0.8]", "4", true)).string());
     rt().load(*scene);
-    gpu::FrameRequest s = view();
+    render::FrameRequest s = view();
     s.sun = true;
     s.sun_direction = glm::normalize(glm::vec3(0.4f, -1.0f, 0.3f));
     s.path.samples = 256;
     s.path.restart = true;
     rt().render(s);
-    const gpu::PathTraceImage one = gpu::read_path_trace(rt());
-    const gpu::PathTraceError one_error = gpu::estimate_error(one);
+    const render::PathTraceImage one = render::read_path_trace(rt());
+    const render::PathTraceError one_error = render::estimate_error(one);
     s.path.one_light_ray = false;
     rt().render(s);
-    const gpu::PathTraceImage all = gpu::read_path_trace(rt());
-    const gpu::PathTraceError all_error = gpu::estimate_error(all);
+    const render::PathTraceImage all = render::read_path_trace(rt());
+    const render::PathTraceError all_error = render::estimate_error(all);
     rt().set_environment(nullptr);
     ASSERT_EQ(one.samples, 256u);
     ASSERT_EQ(all.samples, 256u);

@@ -7,12 +7,12 @@
 
 namespace sherpa::test {
 
-inline gpu::Renderer& path_trace_renderer() {
-    static std::unique_ptr<gpu::Renderer> r = [] {
-        gpu::RendererOptions options;
+inline render::Renderer& path_trace_renderer() {
+    static std::unique_ptr<render::Renderer> r = [] {
+        render::RendererOptions options;
         options.ray_tracing = true;
         options.textures = test_texture_settings();
-        return std::make_unique<gpu::Renderer>(*GpuEnvironment::get().context, options);
+        return std::make_unique<render::Renderer>(*GpuEnvironment::get().context, options);
     }();
     return *r;
 }

@@ -19,7 +19,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 // ∫ pdf dω over the sphere, by the midpoint rule on a fine (theta, phi) grid.
-double integrate_pdf(const gpu::EnvironmentDistribution& d) {
+double integrate_pdf(const render::EnvironmentDistribution& d) {
     const int rows = 512, cols = 1024;
     double sum = 0.0;
     for (int r = 0; r < rows; ++r) {
@@ -28,45 +28,46 @@ double integrate_pdf(const gpu::EnvironmentDistribution& d) {
             const double phi = 2.0 * kPi * (c + 0.5) / cols - kPi;
             const glm::vec3 dir(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)),
                                 float(std::sin(theta) * std::sin(phi)));
-            sum +=
-                gpu::environment_pdf(d, dir) * std::sin(theta) * (kPi / rows) * (2.0 * kPi / cols);
+            sum += render::environment_pdf(d, dir) * std::sin(theta) * (kPi / rows) *
+                   (2.0 * kPi / cols);
         }
     }
     return sum;
 }
 
 TEST(PathTraceCpu, EnvironmentDistributionIsADensityThatFollowsLuminance) {
-    const gpu::EnvironmentDistribution room =
-        gpu::environment_distribution(gpu::room_environment());
+    const render::EnvironmentDistribution room =
+        render::environment_distribution(render::room_environment());
     ASSERT_FALSE(room.empty());
-    EXPECT_LE(room.width, gpu::kEnvironmentDistributionWidth);
+    EXPECT_LE(room.width, render::kEnvironmentDistributionWidth);
     EXPECT_NEAR(integrate_pdf(room), 1.0, 0.01);
     // A uniform environment is sampled uniformly over the sphere: 1 / 4pi everywhere.
-    const gpu::EnvironmentDistribution uniform =
-        gpu::environment_distribution(gpu::uniform_environment(glm::vec3(2.0f)));
+    const render::EnvironmentDistribution uniform =
+        render::environment_distribution(render::uniform_environment(glm::vec3(2.0f)));
     for (const glm::vec3 d :
          {glm::vec3(1, 0, 0), glm::vec3(0, 0.8f, 0.6f), glm::vec3(0, -0.6f, 0.8f)})
-        EXPECT_NEAR(gpu::environment_pdf(uniform, d) * 4.0 * kPi, 1.0, 0.02);
+        EXPECT_NEAR(render::environment_pdf(uniform, d) * 4.0 * kPi, 1.0, 0.02);
     // One bright texel takes (almost) all the density.
-    gpu::EnvironmentImage spot = gpu::uniform_environment(glm::vec3(0.0f), 64);
+    render::EnvironmentImage spot = render::uniform_environment(glm::vec3(0.0f), 64);
     spot.rgba[(8 * 64 + 16) * 4 + 1] = 100.0f; // row 8 (elevation ~ 62°), column 16 (-Z)
-    const gpu::EnvironmentDistribution s = gpu::environment_distribution(spot);
+    const render::EnvironmentDistribution s = render::environment_distribution(spot);
     ASSERT_FALSE(s.empty());
     const double theta = kPi * 8.5 / 32.0, phi = 2.0 * kPi * (16.5 / 64.0 - 0.5);
     const glm::vec3 at(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)),
                        float(std::sin(theta) * std::sin(phi)));
     const double texel_solid_angle = (2.0 * kPi / 64.0) * (kPi / 32.0) * std::sin(theta);
-    EXPECT_NEAR(gpu::environment_pdf(s, at) * texel_solid_angle, 1.0, 0.01);
-    EXPECT_EQ(gpu::environment_pdf(s, glm::vec3(0, -1, 0)), 0.0f);
+    EXPECT_NEAR(render::environment_pdf(s, at) * texel_solid_angle, 1.0, 0.01);
+    EXPECT_EQ(render::environment_pdf(s, glm::vec3(0, -1, 0)), 0.0f);
     // Nothing to sample: black, NaN or empty images give an empty distribution.
-    EXPECT_TRUE(gpu::environment_distribution(gpu::uniform_environment(glm::vec3(0.0f))).empty());
-    gpu::EnvironmentImage nan = gpu::uniform_environment(glm::vec3(NAN), 16);
-    EXPECT_TRUE(gpu::environment_distribution(nan).empty());
-    EXPECT_TRUE(gpu::environment_distribution(gpu::EnvironmentImage{}).empty());
+    EXPECT_TRUE(
+        render::environment_distribution(render::uniform_environment(glm::vec3(0.0f))).empty());
+    render::EnvironmentImage nan = render::uniform_environment(glm::vec3(NAN), 16);
+    EXPECT_TRUE(render::environment_distribution(nan).empty());
+    EXPECT_TRUE(render::environment_distribution(render::EnvironmentImage{}).empty());
 }
 
 TEST(PathTraceCpu, ErrorEstimateIsTheStandardErrorOfEachPixelMean) {
-    gpu::PathTraceImage image;
+    render::PathTraceImage image;
     image.width = 2;
     image.height = 1;
     image.samples = 4;
@@ -74,14 +75,14 @@ TEST(PathTraceCpu, ErrorEstimateIsTheStandardErrorOfEachPixelMean) {
     // Pixel 1: four samples of 3: no variance.
     image.sums = {4, 4, 4, 4, 12, 12, 12, 4};
     image.moments = {8, 36};
-    const gpu::PathTraceError e = gpu::estimate_error(image);
+    const render::PathTraceError e = render::estimate_error(image);
     const double se0 = std::sqrt(4.0 / 3.0 / 4.0);
     EXPECT_NEAR(e.mean_luminance, 2.0, 1e-5);
     EXPECT_NEAR(e.mean_standard_error, se0 / 2.0, 1e-5);
     EXPECT_NEAR(e.rms_standard_error, std::sqrt(se0 * se0 / 2.0), 1e-5);
     EXPECT_NEAR(e.relative_error, se0 / 4.0, 1e-5);
     image.samples = 0;
-    EXPECT_EQ(gpu::estimate_error(image).mean_standard_error, 0.0);
+    EXPECT_EQ(render::estimate_error(image).mean_standard_error, 0.0);
 }
 
 // The directional albedo of brdf.glsl's BRDF for a white metal (F0 = 1, so F = 1) at
@@ -118,22 +119,22 @@ double metal_sphere_albedo(double roughness) {
 // One ray-tracing renderer for the GPU tests of this binary.
 class PathTraceTest : public GpuTest {
 protected:
-    static gpu::Renderer& rt() { return path_trace_renderer(); }
+    static render::Renderer& rt() { return path_trace_renderer(); }
     static void TearDownTestSuite() { rt().unload(); }
 
     // A row of `count` white unit spheres (roughness i / (count - 1)), 48 px apart,
     // seen from far away; linear tone mapping at -1 EV on a black background.
-    gpu::FrameRequest sphere_row(int count, float metallic, const char* name) {
+    render::FrameRequest sphere_row(int count, float metallic, const char* name) {
         auto scene = load(write_temp(name, sphere_row_gltf(count, metallic, 96)).string());
         rt().load(*scene);
-        gpu::FrameRequest s = furnace_view(count, 48);
-        s.renderer = gpu::RendererKind::RayTraced;
+        render::FrameRequest s = furnace_view(count, 48);
+        s.renderer = render::RendererKind::RayTraced;
         s.path.restart = true;
         return s;
     }
 
     // Mean red radiance of sphere `index` over the pixels every sample of which hit it.
-    static double sphere_mean(const gpu::PathTraceImage& img, std::uint32_t index) {
+    static double sphere_mean(const render::PathTraceImage& img, std::uint32_t index) {
         double sum = 0.0;
         int n = 0;
         for (std::uint32_t y = 0; y < img.height; ++y)
@@ -149,12 +150,12 @@ protected:
 
     // Sums of the frame of `s` with every sphere but `index` hidden (a sphere in the
     // furnace must not see its neighbours).
-    gpu::PathTraceImage alone(gpu::FrameRequest s, std::uint32_t index, std::uint32_t count) {
+    render::PathTraceImage alone(render::FrameRequest s, std::uint32_t index, std::uint32_t count) {
         auto hidden = std::make_shared<std::vector<bool>>(count, true);
         (*hidden)[index] = false;
         rt().set_hidden_nodes(hidden);
         rt().render(s);
-        gpu::PathTraceImage image = gpu::read_path_trace(rt());
+        render::PathTraceImage image = render::read_path_trace(rt());
         rt().set_hidden_nodes(nullptr); // the next frame shows every sphere again
         return image;
     }
@@ -177,7 +178,7 @@ protected:
 };
 
 struct RemoveEnvironment {
-    gpu::Renderer& r;
+    render::Renderer& r;
     ~RemoveEnvironment() { r.set_environment(nullptr); }
 };
 
@@ -187,20 +188,20 @@ struct RemoveEnvironment {
 // raster's split-sum without energy compensation (its lookup table) is printed beside.
 TEST_F(PathTraceTest, FurnaceMatchesOneForAMirrorAndTheAlbedoOfRoughMetal) {
     RemoveEnvironment guard{rt()};
-    const gpu::EnvironmentImage uniform = gpu::uniform_environment(glm::vec3(1.0f));
+    const render::EnvironmentImage uniform = render::uniform_environment(glm::vec3(1.0f));
     rt().set_environment(&uniform);
     constexpr std::uint32_t kCount = 3; // roughness 0, 0.5, 1
     for (const float metallic : {1.0f, 0.0f}) {
-        gpu::FrameRequest s =
+        render::FrameRequest s =
             sphere_row(kCount, metallic, metallic > 0 ? "pt_metal.gltf" : "pt_dielectric.gltf");
         s.path.samples = 64;
         std::vector<double> pt;
         for (std::uint32_t i = 0; i < kCount; ++i) {
-            const gpu::PathTraceImage img = alone(s, i, kCount);
+            const render::PathTraceImage img = alone(s, i, kCount);
             ASSERT_EQ(img.samples, 64u);
             pt.push_back(sphere_mean(img, i));
         }
-        s.renderer = gpu::RendererKind::Raster;
+        s.renderer = render::RendererKind::Raster;
         s.energy_compensation = false;
         std::vector<std::uint8_t> rgba;
         rt().render(s, &rgba);
@@ -232,20 +233,20 @@ TEST_F(PathTraceTest, FurnaceMatchesOneForAMirrorAndTheAlbedoOfRoughMetal) {
 // give the same sums as all at once; the estimated error halves when spp quadruples.
 TEST_F(PathTraceTest, DeterministicProgressiveAndErrorFallsAsOneOverRootSpp) {
     RemoveEnvironment guard{rt()};
-    const gpu::EnvironmentImage room = gpu::room_environment(256);
+    const render::EnvironmentImage room = render::room_environment(256);
     rt().set_environment(&room);
-    gpu::FrameRequest s = sphere_row(3, 0.0f, "pt_room.gltf");
-    s.tone_map = gpu::ToneMap::Neutral;
+    render::FrameRequest s = sphere_row(3, 0.0f, "pt_room.gltf");
+    s.tone_map = render::ToneMap::Neutral;
     s.exposure = 0.0f;
     s.sun = true; // a sun with its angular radius, traced shadows
-    s.background = gpu::Background::Environment;
+    s.background = render::Background::Environment;
     s.path.samples = 16;
     std::vector<std::uint8_t> a, b;
     rt().render(s, &a);
-    const gpu::PathTraceImage once = gpu::read_path_trace(rt());
+    const render::PathTraceImage once = render::read_path_trace(rt());
     rt().render(s, &b);
     EXPECT_EQ(a, b);
-    EXPECT_EQ(once.sums, gpu::read_path_trace(rt()).sums);
+    EXPECT_EQ(once.sums, render::read_path_trace(rt()).sums);
     s.path.seed = 7;
     rt().render(s, &b);
     EXPECT_NE(a, b);
@@ -253,22 +254,22 @@ TEST_F(PathTraceTest, DeterministicProgressiveAndErrorFallsAsOneOverRootSpp) {
 
     // 4 + 12 samples progressively (nothing changes between the frames).
     s.path.samples = 4;
-    gpu::FrameStats f = rt().render(s);
+    render::FrameStats f = rt().render(s);
     EXPECT_TRUE(f.path.restarted);
-    const gpu::PathTraceError e4 = gpu::path_trace_error(rt());
+    const render::PathTraceError e4 = render::path_trace_error(rt());
     s.path.restart = false;
     s.path.samples = 12;
     f = rt().render(s);
     EXPECT_FALSE(f.path.restarted);
     EXPECT_EQ(f.path.samples, 16u);
     EXPECT_EQ(f.path.added, 12u);
-    const gpu::PathTraceImage progressive = gpu::read_path_trace(rt());
+    const render::PathTraceImage progressive = render::read_path_trace(rt());
     EXPECT_EQ(progressive.sums, once.sums);
     EXPECT_EQ(progressive.moments, once.moments);
-    const gpu::PathTraceError e16 = estimate_error(progressive);
+    const render::PathTraceError e16 = estimate_error(progressive);
     s.path.samples = 48;
     rt().render(s);
-    const gpu::PathTraceError e64 = gpu::path_trace_error(rt());
+    const render::PathTraceError e64 = render::path_trace_error(rt());
     std::printf("estimated error (relative): 4 spp %.5f, 16 spp %.5f, 64 spp %.5f\n",
                 e4.relative_error, e16.relative_error, e64.relative_error);
     EXPECT_NEAR(e4.mean_standard_error / e16.mean_standard_error, 2.0, 0.4);

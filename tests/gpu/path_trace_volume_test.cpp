@@ -72,11 +72,11 @@ std::string slab_row_gltf(const std::vector<float>& thickness, float c, float d)
 class PathTraceVolumeTest : public GpuTest {};
 
 TEST_F(PathTraceVolumeTest, SlabTransmittanceFollowsBeerLambert) {
-    gpu::RendererOptions options;
+    render::RendererOptions options;
     options.ray_tracing = true;
     options.textures = test_texture_settings();
-    gpu::Renderer rt(*GpuEnvironment::get().context, options);
-    const gpu::EnvironmentImage uniform = gpu::uniform_environment(glm::vec3(1.0f));
+    render::Renderer rt(*GpuEnvironment::get().context, options);
+    const render::EnvironmentImage uniform = render::uniform_environment(glm::vec3(1.0f));
     rt.set_environment(&uniform);
     const std::vector<float> thickness = {0.5f, 1.0f, 2.0f};
     const float colour = 0.5f, distance = 1.0f;
@@ -84,12 +84,12 @@ TEST_F(PathTraceVolumeTest, SlabTransmittanceFollowsBeerLambert) {
         load(write_temp("pt_slabs.gltf", slab_row_gltf(thickness, colour, distance)).string());
     EXPECT_TRUE(scene->warnings.empty()) << scene->warnings.front();
     rt.load(*scene);
-    gpu::FrameRequest s = furnace_view(int(thickness.size()), 48);
-    s.renderer = gpu::RendererKind::RayTraced;
+    render::FrameRequest s = furnace_view(int(thickness.size()), 48);
+    s.renderer = render::RendererKind::RayTraced;
     s.path.restart = true;
     s.path.samples = 16;
     rt.render(s);
-    const gpu::PathTraceImage img = gpu::read_path_trace(rt);
+    const render::PathTraceImage img = render::read_path_trace(rt);
     ASSERT_EQ(img.samples, 16u);
     for (std::size_t i = 0; i < thickness.size(); ++i) {
         // The middle of the slab's face: 16 x 16 pixels about the box's centre.

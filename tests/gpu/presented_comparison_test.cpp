@@ -15,13 +15,13 @@ TEST_F(ComparisonTest, PresentedRayTracedFrameIsTheOffscreenImage) {
     auto scene = load(gltf_asset("BoxTextured"));
     ASSERT_TRUE(scene);
     auto r = make_renderer(*scene, true);
-    gpu::FrameRequest s = small_settings(*scene, gpu::DebugView::Normal);
-    s.renderer = gpu::RendererKind::RayTraced;
+    render::FrameRequest s = small_settings(*scene, render::DebugView::Normal);
+    s.renderer = render::RendererKind::RayTraced;
     std::vector<std::uint8_t> offscreen;
     r->render(s, &offscreen);
     for (VkFormat format :
          {VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_B8G8R8A8_UNORM}) {
-        gpu::PresentedFrame frame(*r, s);
+        render::PresentedFrame frame(*r, s);
         const auto shown = present_offscreen(context(), r->resources(), frame, format);
         EXPECT_EQ(differing_pixels(shown, offscreen, 0, 3), 0u) << format;
         ASSERT_FALSE(frame.completed_stats().passes.empty());
@@ -32,9 +32,9 @@ TEST_F(ComparisonTest, PresentedRayTracedFrameIsTheOffscreenImage) {
         }
     }
     // Half resolution: every pixel is one of the reduced image's, scaled up nearest.
-    gpu::PresentedFrame half(*r, s, 0.5f);
+    render::PresentedFrame half(*r, s, 0.5f);
     const auto shown = present_offscreen(context(), r->resources(), half, VK_FORMAT_R8G8B8A8_SRGB);
-    gpu::FrameRequest small = s;
+    render::FrameRequest small = s;
     small.width = kW / 2;
     small.height = kH / 2;
     std::vector<std::uint8_t> reduced;
@@ -48,7 +48,7 @@ TEST_F(ComparisonTest, PresentedRayTracedFrameIsTheOffscreenImage) {
     EXPECT_EQ(wrong, 0u);
 
     // A view the ray tracer does not draw: refused, by the presented frame as by render().
-    s.view = gpu::DebugView::Uv0Checker;
+    s.view = render::DebugView::Uv0Checker;
     std::string offscreen_error, presented_error;
     try {
         r->render(s);
@@ -56,7 +56,7 @@ TEST_F(ComparisonTest, PresentedRayTracedFrameIsTheOffscreenImage) {
         offscreen_error = e.what();
     }
     try {
-        gpu::PresentedFrame refused(*r, s);
+        render::PresentedFrame refused(*r, s);
     } catch (const gpu::GpuError& e) {
         presented_error = e.what();
     }
@@ -72,15 +72,15 @@ TEST_F(ComparisonTest, PresentedComparisonOfTwoRenderersOnOneContext) {
     auto box = load(gltf_asset("BoxTextured"));
     auto plain = load(gltf_asset("Box"));
     ASSERT_TRUE(box && plain);
-    RasterAndRays r = raster_and_rays(*box, *plain, gpu::DebugView::Normal);
+    RasterAndRays r = raster_and_rays(*box, *plain, render::DebugView::Normal);
     auto& [a, b, sa, sb, alone_a, alone_b] = r;
-    gpu::ComparisonSettings c;
-    c.mode = gpu::CompareMode::Difference;
-    gpu::ComparisonFrame frame(*a, sa, *b, sb, c);
+    render::ComparisonSettings c;
+    c.mode = render::CompareMode::Difference;
+    render::ComparisonFrame frame(*a, sa, *b, sb, c);
     const auto composited =
         present_offscreen(context(), a->resources(), frame, VK_FORMAT_B8G8R8A8_SRGB, 4);
     const CpuStats cpu = cpu_stats(alone_a, alone_b, 2);
-    const gpu::ComparisonStats& stats = frame.completed_comparison();
+    const render::ComparisonStats& stats = frame.completed_comparison();
     ASSERT_TRUE(stats.valid);
     EXPECT_NEAR(stats.mean, cpu.mean, 1e-9);
     EXPECT_NEAR(stats.psnr_db, cpu.psnr, 1e-6);
@@ -93,7 +93,7 @@ TEST_F(ComparisonTest, PresentedComparisonOfTwoRenderersOnOneContext) {
     b->render(sb, &again_b);
     EXPECT_EQ(again_a, alone_a);
     EXPECT_EQ(again_b, alone_b);
-    EXPECT_THROW(gpu::ComparisonFrame(*a, sa, *a, sa, c), gpu::GpuError);
+    EXPECT_THROW(render::ComparisonFrame(*a, sa, *a, sa, c), gpu::GpuError);
 }
 
 } // namespace

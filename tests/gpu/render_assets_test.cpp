@@ -31,12 +31,12 @@ class RenderAssetTest : public GpuTest, public ::testing::WithParamInterface<std
 TEST_P(RenderAssetTest, RendersValidationCleanAndDrawsSomething) {
     auto scene = load(GetParam());
     ASSERT_TRUE(scene);
-    gpu::FrameRequest s;
+    render::FrameRequest s;
     s.width = 96;
     s.height = 64;
     renderer().load(*scene);
     std::vector<std::uint8_t> rgba;
-    const gpu::FrameStats stats = renderer().render(s, &rgba);
+    const render::FrameStats stats = renderer().render(s, &rgba);
     ASSERT_EQ(rgba.size(), 96u * 64u * 4u);
     // The clear colour as stored: render an empty frame with the same settings.
     const bool drawable = !renderer().scene()->groups().empty();
@@ -68,15 +68,15 @@ TEST_F(DebugViewTest, EveryViewAndOverlayIsValidationClean) {
     for (const std::string name : {"MultiUVTest", "AlphaBlendModeTest", "BoxVertexColors"}) {
         auto scene = load(gltf_asset(name));
         ASSERT_TRUE(scene);
-        renderer().load(*scene, streams_setup(gpu::StreamPolicy::AllPresent));
-        gpu::FrameRequest s;
+        renderer().load(*scene, streams_setup(render::StreamPolicy::AllPresent));
+        render::FrameRequest s;
         s.width = 64;
         s.height = 48;
-        s.overlays = gpu::kOverlayWireframe | gpu::kOverlayNormals | gpu::kOverlayTangents |
-                     gpu::kOverlayBitangents | gpu::kOverlayBounds;
-        for (std::string_view view : gpu::debug_view_names()) {
-            s.view = *gpu::parse_debug_view(view);
-            if (!gpu::raster_view(s.view)) continue; // rays only (ao, shadow-error)
+        s.overlays = render::kOverlayWireframe | render::kOverlayNormals |
+                     render::kOverlayTangents | render::kOverlayBitangents | render::kOverlayBounds;
+        for (std::string_view view : render::debug_view_names()) {
+            s.view = *render::parse_debug_view(view);
+            if (!render::raster_view(s.view)) continue; // rays only (ao, shadow-error)
             std::vector<std::uint8_t> rgba;
             renderer().render(s, &rgba);
             EXPECT_EQ(rgba.size(), 64u * 48u * 4u) << name << " " << view;
@@ -86,15 +86,15 @@ TEST_F(DebugViewTest, EveryViewAndOverlayIsValidationClean) {
 }
 
 TEST_F(DebugViewTest, NamesRoundTrip) {
-    for (std::string_view name : gpu::debug_view_names()) {
-        auto v = gpu::parse_debug_view(name);
+    for (std::string_view name : render::debug_view_names()) {
+        auto v = render::parse_debug_view(name);
         ASSERT_TRUE(v) << name;
-        EXPECT_EQ(gpu::to_string(*v), name);
+        EXPECT_EQ(to_string(*v), name);
     }
-    EXPECT_FALSE(gpu::parse_debug_view("nonsense"));
-    for (std::string_view name : gpu::overlay_names())
-        EXPECT_TRUE(gpu::parse_overlay(name)) << name;
-    EXPECT_FALSE(gpu::parse_overlay("nonsense"));
+    EXPECT_FALSE(render::parse_debug_view("nonsense"));
+    for (std::string_view name : render::overlay_names())
+        EXPECT_TRUE(render::parse_overlay(name)) << name;
+    EXPECT_FALSE(render::parse_overlay("nonsense"));
 }
 
 // The GPU holds exactly the streams the usage report says materials read (plus
@@ -105,21 +105,22 @@ TEST_F(DebugViewTest, GpuHoldsOnlyTheStreamsTheUsageReportAsksFor) {
         auto scene = load(gltf_asset(name));
         ASSERT_TRUE(scene);
         const UsageReport usage = build_usage_report(*scene);
-        for (gpu::StreamPolicy policy :
-             {gpu::StreamPolicy::UsedByMaterials, gpu::StreamPolicy::AllPresent}) {
+        for (render::StreamPolicy policy :
+             {render::StreamPolicy::UsedByMaterials, render::StreamPolicy::AllPresent}) {
             renderer().load(*scene, streams_setup(policy));
-            const gpu::GpuScene& g = *renderer().scene();
+            const render::GpuScene& g = *renderer().scene();
             for (const PrimitiveUsage& u : usage.primitives) {
                 if (u.instances == 0 || scene->meshes[u.mesh_id].indices.empty()) continue;
                 for (VertexAttribute a : kAllVertexAttributes) {
                     const std::size_t i = std::size_t(a);
-                    const bool expected = a == VertexAttribute::Position || u.used[i] ||
-                                          (policy == gpu::StreamPolicy::AllPresent && u.present[i]);
+                    const bool expected =
+                        a == VertexAttribute::Position || u.used[i] ||
+                        (policy == render::StreamPolicy::AllPresent && u.present[i]);
                     EXPECT_EQ(g.meshes()[u.mesh_id].stream[i] != 0, expected)
                         << name << " mesh " << u.mesh_id << " " << gltf_name(a);
                 }
             }
-            if (policy == gpu::StreamPolicy::UsedByMaterials) {
+            if (policy == render::StreamPolicy::UsedByMaterials) {
                 used_total += g.memory().vertex_streams;
                 unified_total += g.memory().unified_vertex_bytes;
             } else {

@@ -12,24 +12,26 @@ namespace {
 
 TEST(PrepassModeTest, AutoIsOnForGpusAndOnCpuDevicesUpToOneTrianglePerFourPixels) {
     constexpr std::uint64_t kPixels = 1280 * 720;
-    EXPECT_TRUE(gpu::prepass_enabled(gpu::PrepassMode::Auto, false, 15452, kPixels));
-    EXPECT_TRUE(gpu::prepass_enabled(gpu::PrepassMode::Auto, false, 1040409, kPixels));
-    EXPECT_TRUE(gpu::prepass_enabled(gpu::PrepassMode::Auto, true, 15452, kPixels));
-    EXPECT_TRUE(gpu::prepass_enabled(gpu::PrepassMode::Auto, true, kPixels / 4, kPixels));
-    EXPECT_FALSE(gpu::prepass_enabled(gpu::PrepassMode::Auto, true, kPixels / 4 + 1, kPixels));
-    EXPECT_FALSE(gpu::prepass_enabled(gpu::PrepassMode::Auto, true, 1040409, kPixels));
+    EXPECT_TRUE(render::prepass_enabled(render::PrepassMode::Auto, false, 15452, kPixels));
+    EXPECT_TRUE(render::prepass_enabled(render::PrepassMode::Auto, false, 1040409, kPixels));
+    EXPECT_TRUE(render::prepass_enabled(render::PrepassMode::Auto, true, 15452, kPixels));
+    EXPECT_TRUE(render::prepass_enabled(render::PrepassMode::Auto, true, kPixels / 4, kPixels));
+    EXPECT_FALSE(
+        render::prepass_enabled(render::PrepassMode::Auto, true, kPixels / 4 + 1, kPixels));
+    EXPECT_FALSE(render::prepass_enabled(render::PrepassMode::Auto, true, 1040409, kPixels));
     for (bool cpu : {true, false})
         for (std::uint64_t triangles : {std::uint64_t{1}, kPixels}) {
-            EXPECT_TRUE(gpu::prepass_enabled(gpu::PrepassMode::On, cpu, triangles, kPixels));
-            EXPECT_FALSE(gpu::prepass_enabled(gpu::PrepassMode::Off, cpu, triangles, kPixels));
+            EXPECT_TRUE(render::prepass_enabled(render::PrepassMode::On, cpu, triangles, kPixels));
+            EXPECT_FALSE(
+                render::prepass_enabled(render::PrepassMode::Off, cpu, triangles, kPixels));
         }
 }
 
 class RenderPathTest : public GpuTest, public ::testing::WithParamInterface<const char*> {
 protected:
-    std::vector<std::uint8_t> render(const Scene& scene, gpu::StreamPolicy policy,
-                                     gpu::PrepassMode prepass) {
-        gpu::FrameRequest s;
+    std::vector<std::uint8_t> render(const Scene& scene, render::StreamPolicy policy,
+                                     render::PrepassMode prepass) {
+        render::FrameRequest s;
         s.width = 128;
         s.height = 96;
         s.depth_prepass = prepass;
@@ -49,8 +51,10 @@ const char* const kScenes[] = {"DamagedHelmet", "AlphaBlendModeTest", "VertexCol
 TEST_P(RenderPathTest, PrepassOnAndOffShowTheSameImage) {
     auto scene = load(gltf_asset(GetParam()));
     ASSERT_TRUE(scene);
-    const auto with = render(*scene, gpu::StreamPolicy::UsedByMaterials, gpu::PrepassMode::On);
-    const auto without = render(*scene, gpu::StreamPolicy::UsedByMaterials, gpu::PrepassMode::Off);
+    const auto with =
+        render(*scene, render::StreamPolicy::UsedByMaterials, render::PrepassMode::On);
+    const auto without =
+        render(*scene, render::StreamPolicy::UsedByMaterials, render::PrepassMode::Off);
     // Equal depths resolve alike (GREATER_OR_EQUAL after the prepass, GREATER
     // without): only coplanar ties may differ.
     EXPECT_LE(differing_pixels(with, without, 2), with.size() / 4 / 1000) << GetParam();
@@ -62,8 +66,9 @@ TEST_P(RenderPathTest, LitImageDoesNotDependOnTheStreamsUploaded) {
     // shading never reads those streams, so the pixels must not change.
     auto scene = load(gltf_asset(GetParam()));
     ASSERT_TRUE(scene);
-    const auto used = render(*scene, gpu::StreamPolicy::UsedByMaterials, gpu::PrepassMode::Auto);
-    const auto all = render(*scene, gpu::StreamPolicy::AllPresent, gpu::PrepassMode::Auto);
+    const auto used =
+        render(*scene, render::StreamPolicy::UsedByMaterials, render::PrepassMode::Auto);
+    const auto all = render(*scene, render::StreamPolicy::AllPresent, render::PrepassMode::Auto);
     EXPECT_EQ(differing_pixels(used, all, 1), 0u) << GetParam();
 }
 

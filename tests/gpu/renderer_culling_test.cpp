@@ -12,18 +12,18 @@ namespace {
 
 class RendererCullingTest : public GpuTest {
 protected:
-    static gpu::FrameRequest settings(gpu::CullPath path, bool check = false) {
-        gpu::FrameRequest s;
+    static render::FrameRequest settings(render::CullPath path, bool check = false) {
+        render::FrameRequest s;
         s.width = 320;
         s.height = 180;
         std::string error;
-        EXPECT_TRUE(gpu::parse_camera_spec("eye=2,3,6:target=0,0,0", s.camera, error)) << error;
+        EXPECT_TRUE(render::parse_camera_spec("eye=2,3,6:target=0,0,0", s.camera, error)) << error;
         s.cull = path;
         s.cull_check = check;
         s.cache_shadows = false; // every frame culls and draws its cascades
         // The prepass statistics are checked: draw it even where Auto would skip it
         // (a CPU device at this size and density).
-        s.depth_prepass = gpu::PrepassMode::On;
+        s.depth_prepass = render::PrepassMode::On;
         return s;
     }
 };
@@ -32,9 +32,9 @@ TEST_F(RendererCullingTest, GpuPathAgreesWithCpuPathPerPassAndComparesOnlyInChec
     const auto scene = load("builtin:grid?n=2000");
     ASSERT_TRUE(scene);
     renderer().load(*scene);
-    const gpu::FrameStats cpu = renderer().render(settings(gpu::CullPath::Cpu));
-    const gpu::FrameStats gpu = renderer().render(settings(gpu::CullPath::Gpu));
-    const gpu::FrameStats check = renderer().render(settings(gpu::CullPath::Gpu, true));
+    const render::FrameStats cpu = renderer().render(settings(render::CullPath::Cpu));
+    const render::FrameStats gpu = renderer().render(settings(render::CullPath::Gpu));
+    const render::FrameStats check = renderer().render(settings(render::CullPath::Gpu, true));
     ASSERT_EQ(cpu.culling.size(), 4u) << "camera and three cascades";
     ASSERT_EQ(gpu.culling.size(), cpu.culling.size());
     ASSERT_EQ(check.culling.size(), cpu.culling.size());
@@ -70,8 +70,8 @@ TEST_F(RendererCullingTest, GpuPathAgreesWithCpuPathPerPassAndComparesOnlyInChec
     // History: the three frames, newest last.
     const auto& h = renderer().cull_history();
     ASSERT_GE(h.size(), 3u);
-    EXPECT_EQ(h[h.size() - 1].path, gpu::CullPath::Gpu);
-    EXPECT_EQ(h[h.size() - 3].path, gpu::CullPath::Cpu);
+    EXPECT_EQ(h[h.size() - 1].path, render::CullPath::Gpu);
+    EXPECT_EQ(h[h.size() - 3].path, render::CullPath::Cpu);
     EXPECT_EQ(h[h.size() - 1].passes.size(), 4u);
 }
 
@@ -80,9 +80,9 @@ TEST_F(RendererCullingTest, CascadeCullingCutsShadowDrawsWithoutChangingTheImage
     ASSERT_TRUE(scene);
     renderer().load(*scene);
     std::vector<std::uint8_t> none_rgba, cpu_rgba, gpu_rgba;
-    const gpu::FrameStats none = renderer().render(settings(gpu::CullPath::None), &none_rgba);
-    const gpu::FrameStats cpu = renderer().render(settings(gpu::CullPath::Cpu), &cpu_rgba);
-    const gpu::FrameStats gpu = renderer().render(settings(gpu::CullPath::Gpu), &gpu_rgba);
+    const render::FrameStats none = renderer().render(settings(render::CullPath::None), &none_rgba);
+    const render::FrameStats cpu = renderer().render(settings(render::CullPath::Cpu), &cpu_rgba);
+    const render::FrameStats gpu = renderer().render(settings(render::CullPath::Gpu), &gpu_rgba);
     ASSERT_EQ(none.culling.size(), 4u);
     ASSERT_EQ(cpu.culling.size(), 4u);
     for (std::size_t p = 1; p < 4; ++p) {

@@ -24,12 +24,12 @@ namespace {
 class RtExactness : public GpuTest {
 protected:
     // A renderer with ray tracing and every vertex stream, `scene` loaded.
-    std::unique_ptr<gpu::Renderer> renderer_for(const Scene& scene) {
-        gpu::RendererOptions options;
+    std::unique_ptr<render::Renderer> renderer_for(const Scene& scene) {
+        render::RendererOptions options;
         options.ray_tracing = true;
         options.textures = test_texture_settings();
-        auto renderer = std::make_unique<gpu::Renderer>(context(), options);
-        renderer->load(scene, streams_setup(gpu::StreamPolicy::AllPresent));
+        auto renderer = std::make_unique<render::Renderer>(context(), options);
+        renderer->load(scene, streams_setup(render::StreamPolicy::AllPresent));
         return renderer;
     }
 
@@ -38,26 +38,26 @@ protected:
     void check_views(const Scene& scene, const std::string& name, float texture_lod = 0.0f,
                      std::shared_ptr<const Pose> pose = nullptr, std::uint32_t width = 96,
                      std::uint32_t height = 72) {
-        const std::unique_ptr<gpu::Renderer> rays_and_raster = renderer_for(scene);
-        gpu::Renderer& renderer = *rays_and_raster;
-        gpu::FrameRequest s;
+        const std::unique_ptr<render::Renderer> rays_and_raster = renderer_for(scene);
+        render::Renderer& renderer = *rays_and_raster;
+        render::FrameRequest s;
         s.width = width;
         s.height = height;
         s.shadows = false;
         s.texture_lod = texture_lod;
         s.pose = std::move(pose);
         int views = 0;
-        for (const gpu::DebugViewInfo& v : gpu::kDebugViews) {
+        for (const render::DebugViewInfo& v : render::kDebugViews) {
             // The lighting views (shadow, ao, shadow-error) trace further rays: compared
             // in rt_shadow_test.cpp; lit is path traced (path_trace_test.cpp).
-            if (!gpu::ray_traced_view(v.id) || !gpu::raster_view(v.id) ||
-                v.id == gpu::DebugView::Shadow || v.id == gpu::DebugView::Lit)
+            if (!render::ray_traced_view(v.id) || !render::raster_view(v.id) ||
+                v.id == render::DebugView::Shadow || v.id == render::DebugView::Lit)
                 continue;
             s.view = v.id;
             std::vector<std::uint8_t> raster, rays;
-            s.renderer = gpu::RendererKind::Raster;
+            s.renderer = render::RendererKind::Raster;
             renderer.render(s, &raster);
-            s.renderer = gpu::RendererKind::RayTraced;
+            s.renderer = render::RendererKind::RayTraced;
             renderer.render(s, &rays);
             const Agreement a = compare(raster, rays, s.width, s.height, 2);
             std::printf("%-26s %-15s agree %7.3f%% of %5zu (max diff %3d, covered %zu/%zu, holes "
@@ -113,29 +113,29 @@ TEST_F(RtExactness, MaskedDepthPrepassTestsTheShadedAlpha) {
     if (!context().info().ray_tracing_enabled) GTEST_SKIP() << "device without ray tracing";
     struct Case {
         std::string file;
-        gpu::DebugView view;
+        render::DebugView view;
         std::uint32_t width, height; // AlphaBlendModeTest's frames are one pixel wide at 320x240
     };
-    for (const Case& c : {Case{gltf_asset("AlphaBlendModeTest"), gpu::DebugView::Uv0, 320, 240},
+    for (const Case& c : {Case{gltf_asset("AlphaBlendModeTest"), render::DebugView::Uv0, 320, 240},
                           Case{std::string(SHERPA_TEST_DATA_DIR) + "/mask_by_vertex_alpha.gltf",
-                               gpu::DebugView::BaseColor, 96, 72}}) {
+                               render::DebugView::BaseColor, 96, 72}}) {
         auto scene = load(c.file);
         ASSERT_TRUE(scene) << c.file;
-        const std::unique_ptr<gpu::Renderer> rays_and_raster = renderer_for(*scene);
-        gpu::Renderer& renderer = *rays_and_raster;
-        gpu::FrameRequest s;
+        const std::unique_ptr<render::Renderer> rays_and_raster = renderer_for(*scene);
+        render::Renderer& renderer = *rays_and_raster;
+        render::FrameRequest s;
         s.width = c.width;
         s.height = c.height;
         s.shadows = false;
         s.texture_lod = 0.0f;
         s.view = c.view;
         std::vector<std::uint8_t> prepass, direct, rays;
-        s.renderer = gpu::RendererKind::RayTraced;
+        s.renderer = render::RendererKind::RayTraced;
         renderer.render(s, &rays);
-        s.renderer = gpu::RendererKind::Raster;
-        s.depth_prepass = gpu::PrepassMode::On;
+        s.renderer = render::RendererKind::Raster;
+        s.depth_prepass = render::PrepassMode::On;
         renderer.render(s, &prepass);
-        s.depth_prepass = gpu::PrepassMode::Off;
+        s.depth_prepass = render::PrepassMode::Off;
         renderer.render(s, &direct);
         const Agreement with = compare(prepass, rays, s.width, s.height, 2);
         const Agreement without = compare(direct, rays, s.width, s.height, 2);
@@ -162,7 +162,7 @@ struct ExactHit {
     double edge_margin = 1.0;
 };
 
-ExactHit exact_hit(const Scene& scene, const gpu::CameraView& camera, std::uint32_t w,
+ExactHit exact_hit(const Scene& scene, const render::CameraView& camera, std::uint32_t w,
                    std::uint32_t h, std::uint32_t x, std::uint32_t y) {
     const glm::dmat4 inv = glm::inverse(glm::dmat4(camera.proj) * glm::dmat4(camera.view));
     const glm::dvec2 ndc(2.0 * (x + 0.5) / w - 1.0, 1.0 - 2.0 * (y + 0.5) / h);
@@ -217,22 +217,22 @@ TEST_F(RtExactness, CameraRaysFollowTheExactGeometryAtEdges) {
     if (!context().info().ray_tracing_enabled) GTEST_SKIP() << "device without ray tracing";
     auto scene = load(gltf_asset("AlphaBlendModeTest"));
     ASSERT_TRUE(scene);
-    const std::unique_ptr<gpu::Renderer> rays_and_raster = renderer_for(*scene);
-    gpu::FrameRequest s;
+    const std::unique_ptr<render::Renderer> rays_and_raster = renderer_for(*scene);
+    render::FrameRequest s;
     s.width = 320;
     s.height = 240;
     s.shadows = false;
     s.texture_lod = 0.0f;
-    s.view = gpu::DebugView::Tangent;
+    s.view = render::DebugView::Tangent;
     FramingOptions framing;
     framing.fov_y_degrees = s.camera.fov_degrees;
     framing.aspect = float(s.width) / float(s.height);
-    s.camera = gpu::explicit_camera(frame_scene(*scene, nullptr, framing));
-    const gpu::CameraView camera = gpu::resolve_camera(s.camera, *scene, framing.aspect);
+    s.camera = render::explicit_camera(frame_scene(*scene, nullptr, framing));
+    const render::CameraView camera = render::resolve_camera(s.camera, *scene, framing.aspect);
     std::vector<std::uint8_t> rays, raster;
-    s.renderer = gpu::RendererKind::RayTraced;
+    s.renderer = render::RendererKind::RayTraced;
     rays_and_raster->render(s, &rays);
-    s.renderer = gpu::RendererKind::Raster;
+    s.renderer = render::RendererKind::Raster;
     rays_and_raster->render(s, &raster);
     struct Pixel {
         std::uint32_t x, y;
@@ -287,16 +287,16 @@ TEST_F(RtExactness, PosedRaysDifferFromTheBindPoseAndMatchRaster) {
     if (!context().info().ray_tracing_enabled) GTEST_SKIP() << "device without ray tracing";
     auto scene = load(gltf_asset("RiggedSimple"));
     ASSERT_TRUE(scene);
-    const std::unique_ptr<gpu::Renderer> rays_and_raster = renderer_for(*scene);
-    gpu::Renderer& renderer = *rays_and_raster;
-    gpu::FrameRequest s;
+    const std::unique_ptr<render::Renderer> rays_and_raster = renderer_for(*scene);
+    render::Renderer& renderer = *rays_and_raster;
+    render::FrameRequest s;
     s.width = 96;
     s.height = 72;
     s.shadows = false;
-    s.view = gpu::DebugView::Normal;
-    s.renderer = gpu::RendererKind::RayTraced;
-    auto updated = [](const gpu::FrameStats& f) {
-        for (const gpu::PassTiming& p : f.passes)
+    s.view = render::DebugView::Normal;
+    s.renderer = render::RendererKind::RayTraced;
+    auto updated = [](const render::FrameStats& f) {
+        for (const render::PassTiming& p : f.passes)
             if (p.name == "posed_blas") return true;
         return false;
     };
@@ -307,7 +307,7 @@ TEST_F(RtExactness, PosedRaysDifferFromTheBindPoseAndMatchRaster) {
     s.pose = std::make_shared<const Pose>(evaluate_pose(*scene, 0, 0.5));
     EXPECT_EQ(updated(renderer.render(s, &posed)), timed);
     EXPECT_FALSE(updated(renderer.render(s))); // the same pose again: nothing to refit
-    s.renderer = gpu::RendererKind::Raster;
+    s.renderer = render::RendererKind::Raster;
     renderer.render(s, &raster);
     const Agreement moved = compare(bind, posed, s.width, s.height, 2);
     EXPECT_LT(moved.fraction(), 0.8) << "the posed rays show the bind pose";
@@ -315,7 +315,7 @@ TEST_F(RtExactness, PosedRaysDifferFromTheBindPoseAndMatchRaster) {
     EXPECT_GT(same.compared, 100u);
     EXPECT_GE(same.fraction(), 0.995);
     s.pose = nullptr;
-    s.renderer = gpu::RendererKind::RayTraced;
+    s.renderer = render::RendererKind::RayTraced;
     renderer.render(s, &back);
     EXPECT_EQ(compare(bind, back, s.width, s.height, 2).fraction(), 1.0);
 }
@@ -341,23 +341,24 @@ INSTANTIATE_TEST_SUITE_P(SampleModels, RtExactnessTest, ::testing::ValuesIn(all_
 TEST_F(GpuTest, RayTracerRefusesViewsAndOverlaysItDoesNotDraw) {
     if (!context().info().ray_tracing_enabled) GTEST_SKIP() << "device without ray tracing";
     auto scene = load(gltf_asset("Box"));
-    gpu::RendererOptions options;
+    render::RendererOptions options;
     options.ray_tracing = true;
-    gpu::Renderer renderer(context(), options);
+    render::Renderer renderer(context(), options);
     renderer.load(*scene);
-    gpu::FrameRequest s;
+    render::FrameRequest s;
     s.width = 8;
     s.height = 8;
-    s.renderer = gpu::RendererKind::RayTraced;
+    s.renderer = render::RendererKind::RayTraced;
     // Lit is path traced (path_trace_test.cpp); these views have no ray-traced form.
-    for (gpu::DebugView v : {gpu::DebugView::Uv0Checker, gpu::DebugView::GeometricVsShading}) {
+    for (render::DebugView v :
+         {render::DebugView::Uv0Checker, render::DebugView::GeometricVsShading}) {
         s.view = v;
-        EXPECT_THROW(renderer.render(s), std::exception) << gpu::to_string(v);
+        EXPECT_THROW(renderer.render(s), std::exception) << to_string(v);
     }
-    s.view = gpu::DebugView::Normal;
-    s.overlays = gpu::kOverlayNormals;
+    s.view = render::DebugView::Normal;
+    s.overlays = render::kOverlayNormals;
     EXPECT_THROW(renderer.render(s), std::exception);
-    gpu::Renderer raster_only(context());
+    render::Renderer raster_only(context());
     raster_only.load(*scene);
     s.overlays = 0;
     EXPECT_THROW(raster_only.render(s), std::exception); // no acceleration structures

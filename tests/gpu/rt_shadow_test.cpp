@@ -25,19 +25,19 @@ protected:
         scene_ = load(std::string(SHERPA_TEST_DATA_DIR) + "/double_sided_shadow.gltf");
         ASSERT_TRUE(scene_);
         std::string error;
-        ASSERT_TRUE(gpu::parse_camera_spec(kCamera, settings_.camera, error)) << error;
+        ASSERT_TRUE(render::parse_camera_spec(kCamera, settings_.camera, error)) << error;
         ASSERT_TRUE(parse_camera_spec(kCamera, spec_, error)) << error;
         settings_.width = settings_.height = kShadowImageSize;
         settings_.sun_direction = glm::normalize(glm::vec3(0.0f, -1.0f, 1.0f));
-        settings_.view = gpu::DebugView::Shadow;
-        settings_.renderer = gpu::RendererKind::RayTraced;
+        settings_.view = render::DebugView::Shadow;
+        settings_.renderer = render::RendererKind::RayTraced;
     }
 
-    std::unique_ptr<gpu::Renderer> make_renderer(std::uint32_t shadow_resolution = 2048) {
-        gpu::RendererOptions options;
+    std::unique_ptr<render::Renderer> make_renderer(std::uint32_t shadow_resolution = 2048) {
+        render::RendererOptions options;
         options.ray_tracing = true;
         options.shadow_resolution = shadow_resolution;
-        auto r = std::make_unique<gpu::Renderer>(context(), options);
+        auto r = std::make_unique<render::Renderer>(context(), options);
         r->load(*scene_);
         return r;
     }
@@ -77,7 +77,7 @@ protected:
         return true;
     }
 
-    std::vector<std::uint8_t> render(gpu::Renderer& r, const gpu::FrameRequest& s) {
+    std::vector<std::uint8_t> render(render::Renderer& r, const render::FrameRequest& s) {
         std::vector<std::uint8_t> rgba;
         r.render(s, &rgba);
         EXPECT_EQ(rgba.size(), std::size_t{kShadowImageSize} * kShadowImageSize * 4);
@@ -93,7 +93,7 @@ protected:
     }
 
     std::unique_ptr<Scene> scene_;
-    gpu::FrameRequest settings_;
+    render::FrameRequest settings_;
     CameraSpec spec_; // the scene layer's, for its view-projection
 };
 
@@ -118,7 +118,7 @@ TEST_F(RtShadow, HardShadowMatchesTheProjectedOutline) {
 TEST_F(RtShadow, SoftShadowPenumbraWidensWithTheSunsRadius) {
     auto r = make_renderer();
     const auto hard = render(*r, settings_);
-    gpu::FrameRequest s = settings_;
+    render::FrameRequest s = settings_;
     s.shadow_rays = 16;
     s.sun_angular_radius = 0.0f;
     EXPECT_EQ(render(*r, s), hard) << "a point sun with 16 rays is the hard shadow";
@@ -135,13 +135,14 @@ TEST_F(RtShadow, SoftShadowPenumbraWidensWithTheSunsRadius) {
 
 TEST_F(RtShadow, AmbientOcclusionIsOneInTheOpenAndLessUnderTheCaster) {
     auto r = make_renderer();
-    gpu::FrameRequest s = settings_;
-    s.view = gpu::DebugView::AmbientOcclusion;
+    render::FrameRequest s = settings_;
+    s.view = render::DebugView::AmbientOcclusion;
     s.ao_rays = 32;
     s.ao_radius = 2.0f;
     // The plane's front (+Z): nothing in its hemisphere, every ray escapes.
     std::string error;
-    ASSERT_TRUE(gpu::parse_camera_spec("eye=0,0,3:target=0,0,0:fov=50:aspect=1", s.camera, error));
+    ASSERT_TRUE(
+        render::parse_camera_spec("eye=0,0,3:target=0,0,0:fov=50:aspect=1", s.camera, error));
     const auto open = render(*r, s);
     std::size_t plane = 0;
     for (std::size_t p = 0; p < open.size(); p += 4)
@@ -170,10 +171,10 @@ TEST_F(RtShadow, AmbientOcclusionIsOneInTheOpenAndLessUnderTheCaster) {
 TEST_F(RtShadow, CascadesAgreeWithRaysAndTheErrorViewCountsTheDifference) {
     for (std::uint32_t resolution : {4096u, 128u}) {
         auto r = make_renderer(resolution);
-        gpu::FrameRequest s = settings_;
+        render::FrameRequest s = settings_;
         s.shadow_pcf_taps = 1;
         const auto rays = render(*r, s);
-        s.renderer = gpu::RendererKind::Raster;
+        s.renderer = render::RendererKind::Raster;
         const auto maps = render(*r, s);
         std::size_t covered = 0, lit = 0, disagree = 0;
         for (std::size_t p = 0; p < rays.size(); p += 4) {
@@ -188,9 +189,9 @@ TEST_F(RtShadow, CascadesAgreeWithRaysAndTheErrorViewCountsTheDifference) {
             EXPECT_LE(disagree, lit / 50) << disagree << " of " << lit << " lit pixels";
         else
             EXPECT_GT(disagree, 0u) << "128 texels over the scene must miss some pixels";
-        s.renderer = gpu::RendererKind::RayTraced;
-        s.view = gpu::DebugView::ShadowError;
-        const gpu::ShadowErrorCounts n = gpu::count_shadow_error(render(*r, s));
+        s.renderer = render::RendererKind::RayTraced;
+        s.view = render::DebugView::ShadowError;
+        const render::ShadowErrorCounts n = render::count_shadow_error(render(*r, s));
         std::printf("shadow-error at %u: lit %llu agree-shadowed %llu false-shadow %llu "
                     "false-light %llu (image compare: %zu of %zu lit)\n",
                     resolution, (unsigned long long)n.agree_lit,
@@ -204,12 +205,13 @@ TEST_F(RtShadow, CascadesAgreeWithRaysAndTheErrorViewCountsTheDifference) {
 
 TEST_F(RtShadow, RasterRefusesRaysOnlyViews) {
     auto r = make_renderer();
-    gpu::FrameRequest s = settings_;
-    s.renderer = gpu::RendererKind::Raster;
-    for (gpu::DebugView v : {gpu::DebugView::AmbientOcclusion, gpu::DebugView::ShadowError}) {
+    render::FrameRequest s = settings_;
+    s.renderer = render::RendererKind::Raster;
+    for (render::DebugView v :
+         {render::DebugView::AmbientOcclusion, render::DebugView::ShadowError}) {
         s.view = v;
         std::vector<std::uint8_t> rgba;
-        EXPECT_THROW(r->render(s, &rgba), gpu::GpuError) << gpu::to_string(v);
+        EXPECT_THROW(r->render(s, &rgba), gpu::GpuError) << to_string(v);
     }
 }
 

@@ -19,11 +19,11 @@ namespace {
 class SceneTexturesTest : public GpuTest {
 protected:
     std::vector<std::uint8_t> render_helmet(std::shared_ptr<const tex::PreparedTextureSet> set) {
-        gpu::FrameRequest s;
+        render::FrameRequest s;
         s.width = 128;
         s.height = 128;
         std::string error;
-        EXPECT_TRUE(gpu::parse_camera_spec("eye=1.6,0.5,2.6:target=0,0,0", s.camera, error));
+        EXPECT_TRUE(render::parse_camera_spec("eye=1.6,0.5,2.6:target=0,0,0", s.camera, error));
         renderer().load(*helmet_, std::move(set));
         return draw(s);
     }
@@ -40,8 +40,8 @@ protected:
 };
 
 // Blocks as they are, also on CPU devices (which decode BC7 at upload by default).
-gpu::TextureSettings block_settings() {
-    gpu::TextureSettings s = test_texture_settings();
+render::TextureSettings block_settings() {
+    render::TextureSettings s = test_texture_settings();
     s.decode_bc7_on_cpu = false;
     return s;
 }
@@ -62,8 +62,8 @@ TEST_F(SceneTexturesTest, PreparedOnAnotherThreadUploadsBlocksWithFullMipChains)
     worker.join();
     ASSERT_TRUE(set);
     renderer().load(*helmet_, set);
-    const gpu::GpuScene& scene = *renderer().scene();
-    const gpu::SceneTextures& textures = scene.materials().textures();
+    const render::GpuScene& scene = *renderer().scene();
+    const render::SceneTextures& textures = scene.materials().textures();
     ASSERT_EQ(textures.records().size(), 5u);
     ASSERT_EQ(textures.gpu().size(), 5u);
     std::multiset<tex::VkFormat> formats;
@@ -71,7 +71,7 @@ TEST_F(SceneTexturesTest, PreparedOnAnotherThreadUploadsBlocksWithFullMipChains)
     std::uint64_t bytes = 0;
     for (std::size_t i = 0; i < textures.records().size(); ++i) {
         const tex::PreparedTexture& t = textures.records()[i];
-        const gpu::GpuTexture& g = textures.gpu()[i];
+        const render::GpuTexture& g = textures.gpu()[i];
         formats.insert(t.format);
         EXPECT_EQ(g.mip_levels, 12u) << t.source; // 2048 .. 1
         EXPECT_NE(g.slot, kTextureSentinel);
@@ -165,7 +165,7 @@ TEST_F(SceneTexturesTest, RefusesSetsWithoutLevelsOrForAnotherScene) {
 }
 
 TEST_F(SceneTexturesTest, ForcedRgba8FallbackLooksLikeTheBlocksAndCostsFourTimesTheMemory) {
-    gpu::TextureSettings rgba8 = test_texture_settings();
+    render::TextureSettings rgba8 = test_texture_settings();
     rgba8.force_rgba8 = true;
     const auto fallback = prepare_for_device(*helmet_, context().info(), rgba8);
     ASSERT_FALSE(fallback->notices.empty());

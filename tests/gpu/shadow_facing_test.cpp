@@ -30,7 +30,7 @@ class ShadowFacingTest : public GpuTest {
 protected:
     // Renders the scene with and without shadows (writes both next to the test binary
     // when asked, to be looked at).
-    void render_pair(const Scene& scene, gpu::FrameRequest s, const std::string& name) {
+    void render_pair(const Scene& scene, render::FrameRequest s, const std::string& name) {
         renderer().load(scene);
         s.shadows = true;
         renderer().render(s, &lit_);
@@ -62,13 +62,13 @@ TEST_F(ShadowFacingTest, DoubleSidedBackFaceLitFromItsSideShadowsOnlyWhereTheCas
     auto scene = load(std::string(SHERPA_TEST_DATA_DIR) + "/double_sided_shadow.gltf");
     ASSERT_TRUE(scene);
     constexpr std::uint32_t kSize = 200;
-    gpu::FrameRequest s;
+    render::FrameRequest s;
     s.width = s.height = kSize;
     // Behind the plane (its normal is +Z), with the sun on the camera's side at 45 degrees.
     // The caster, white and lit like the plane, does not stand out; its shadow does.
     const char* camera = "eye=0,0,-3:target=0,0,0:fov=50:aspect=1";
     std::string error;
-    ASSERT_TRUE(gpu::parse_camera_spec(camera, s.camera, error)) << error;
+    ASSERT_TRUE(render::parse_camera_spec(camera, s.camera, error)) << error;
     s.sun_direction = glm::normalize(glm::vec3(0.0f, -1.0f, 1.0f));
     render_pair(*scene, s, "double_sided");
 
@@ -119,12 +119,12 @@ TEST_F(ShadowFacingTest, DoubleSidedBackFaceLitFromItsSideShadowsOnlyWhereTheCas
 TEST_F(ShadowFacingTest, TextureSettingsTestCellsAreNotShadowed) {
     auto scene = load(gltf_asset("TextureSettingsTest"));
     ASSERT_TRUE(scene);
-    gpu::FrameRequest s;
+    render::FrameRequest s;
     s.width = 400;
     s.height = 300;
     std::string error;
     // The single- and double-sided rows of the Test and Sample pass columns, face on.
-    ASSERT_TRUE(gpu::parse_camera_spec("eye=1,2.5,8:target=1,2.5,0:fov=25", s.camera, error))
+    ASSERT_TRUE(render::parse_camera_spec("eye=1,2.5,8:target=1,2.5,0:fov=25", s.camera, error))
         << error;
     render_pair(*scene, s, "texture_settings");
     // Cell rectangles in that view (measured on the render), inset by a few pixels:

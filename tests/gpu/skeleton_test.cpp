@@ -48,23 +48,23 @@ int near_projection(const Pixels& rgba, const glm::mat4& view_proj, glm::vec3 wo
 
 class SkeletonTest : public GpuTest {
 protected:
-    static gpu::FrameRequest settings(const Scene& scene) {
-        gpu::FrameRequest s;
+    static render::FrameRequest settings(const Scene& scene) {
+        render::FrameRequest s;
         s.width = s.height = kSize;
         std::string error;
         const glm::vec3 c = scene.bounds.center();
         const float r = glm::length(scene.bounds.extent());
         const glm::vec3 eye = c + glm::vec3(0.3f, 0.2f, 1.0f) * r;
-        EXPECT_TRUE(gpu::parse_camera_spec("eye=" + std::to_string(eye.x) + "," +
-                                               std::to_string(eye.y) + "," + std::to_string(eye.z) +
-                                               ":target=" + std::to_string(c.x) + "," +
-                                               std::to_string(c.y) + "," + std::to_string(c.z),
-                                           s.camera, error))
+        EXPECT_TRUE(render::parse_camera_spec(
+            "eye=" + std::to_string(eye.x) + "," + std::to_string(eye.y) + "," +
+                std::to_string(eye.z) + ":target=" + std::to_string(c.x) + "," +
+                std::to_string(c.y) + "," + std::to_string(c.z),
+            s.camera, error))
             << error;
         return s;
     }
-    static glm::mat4 view_proj(const gpu::FrameRequest& s, const Scene& scene) {
-        const gpu::CameraView v = gpu::resolve_camera(s.camera, scene, 1.0f);
+    static glm::mat4 view_proj(const render::FrameRequest& s, const Scene& scene) {
+        const render::CameraView v = render::resolve_camera(s.camera, scene, 1.0f);
         return v.proj * v.view;
     }
 };
@@ -75,10 +75,10 @@ TEST_F(SkeletonTest, JointsDrawnWhereTheyProjectInBindPoseAndPosed) {
     ASSERT_EQ(scene->skins.size(), 1u);
     ASSERT_FALSE(scene->animations.empty());
     renderer().load(*scene);
-    gpu::FrameRequest s = settings(*scene);
+    render::FrameRequest s = settings(*scene);
     const glm::mat4 vp = view_proj(s, *scene);
     const Pixels plain = draw(s);
-    s.overlays = gpu::kOverlaySkeleton;
+    s.overlays = render::kOverlaySkeleton;
     const Pixels bind = draw(s);
     for (const std::uint32_t j : scene->skins[0].joints) {
         const glm::vec3 p(scene->node_world[j][3]);
@@ -127,9 +127,9 @@ TEST_F(SkeletonTest, SceneWithoutSkinsDrawsNothingMore) {
     auto scene = load(gltf_asset("BoxAnimated"));
     ASSERT_TRUE(scene);
     renderer().load(*scene);
-    gpu::FrameRequest s = settings(*scene);
+    render::FrameRequest s = settings(*scene);
     const Pixels plain = draw(s);
-    s.overlays = gpu::kOverlaySkeleton;
+    s.overlays = render::kOverlaySkeleton;
     EXPECT_EQ(draw(s), plain);
     renderer().unload();
 }
@@ -145,23 +145,23 @@ TEST(SkeletonLines, BonesToParentJointsAndACrossPerJoint) {
     std::vector<glm::mat4> world(4);
     for (int n = 0; n < 4; ++n)
         world[std::size_t(n)] = glm::translate(glm::mat4(1.0f), glm::vec3(0, float(n), 0));
-    std::vector<gpu::GPULineVertex> lines;
-    gpu::append_skeleton(lines, scene.skins, scene.nodes, world, std::nullopt, 0.1f);
+    std::vector<render::GPULineVertex> lines;
+    render::append_skeleton(lines, scene.skins, scene.nodes, world, std::nullopt, 0.1f);
     ASSERT_EQ(lines.size(), 2u * (1 + 3 * 2));                   // one bone, two crosses
     EXPECT_EQ(glm::vec3(lines[0].position), glm::vec3(0, 1, 0)); // from the parent joint
     EXPECT_EQ(glm::vec3(lines[1].position), glm::vec3(0, 3, 0));
-    EXPECT_EQ(lines[0].color, gpu::kBoneColor);
+    EXPECT_EQ(lines[0].color, render::kBoneColor);
 
     lines.clear();
-    gpu::append_skeleton(lines, scene.skins, scene.nodes, world, 3u, 0.1f);
-    EXPECT_EQ(lines[0].color, gpu::kHighlightDetailColor); // the selected joint's bone
+    render::append_skeleton(lines, scene.skins, scene.nodes, world, 3u, 0.1f);
+    EXPECT_EQ(lines[0].color, render::kHighlightDetailColor); // the selected joint's bone
     EXPECT_FLOAT_EQ(glm::length(glm::vec3(lines[3].position - lines[2].position)), 0.4f);
 
     // Joints outside the world matrices and non-finite positions are skipped.
     world[1][3].x = std::numeric_limits<float>::quiet_NaN();
     lines.clear();
-    gpu::append_skeleton(lines, scene.skins, scene.nodes, std::span(world).first(4), std::nullopt,
-                         0.1f);
+    render::append_skeleton(lines, scene.skins, scene.nodes, std::span(world).first(4),
+                            std::nullopt, 0.1f);
     EXPECT_EQ(lines.size(), 2u * 3); // only joint 3's cross: its bone ends at a NaN
 }
 

@@ -94,8 +94,8 @@ inline std::filesystem::path write_temp(const std::string& name, const std::stri
 
 // An equirectangular environment (environment.h's convention) of radiance f(direction),
 // width x width / 2 texels.
-template <typename F> gpu::EnvironmentImage environment_of(std::uint32_t width, F f) {
-    gpu::EnvironmentImage image;
+template <typename F> render::EnvironmentImage environment_of(std::uint32_t width, F f) {
+    render::EnvironmentImage image;
     image.width = width;
     image.height = width / 2;
     image.rgba.resize(std::size_t(image.width) * image.height * 4);
@@ -116,8 +116,8 @@ template <typename F> gpu::EnvironmentImage environment_of(std::uint32_t width, 
 // The furnace view of sphere_row_gltf(count, ...): `px` pixels a sphere, seen from far
 // away with a narrow field of view, no sun or shadows, linear tone mapping at -1 EV (1
 // reads 0.5, clear of the 8-bit ceiling), on a black background.
-inline gpu::FrameRequest furnace_view(int count, std::uint32_t px) {
-    gpu::FrameRequest s;
+inline render::FrameRequest furnace_view(int count, std::uint32_t px) {
+    render::FrameRequest s;
     s.width = px * std::uint32_t(count);
     s.height = px;
     const float mid = 2.5f * float(count - 1) / 2.0f;
@@ -125,12 +125,12 @@ inline gpu::FrameRequest furnace_view(int count, std::uint32_t px) {
     std::snprintf(cam, sizeof(cam), "eye=%g,0,%g:target=%g,0,0:fov=%g", mid, 60.0, mid,
                   2.0 * std::atan(1.25 / 60.0) * 180.0 / 3.14159265358979323846);
     std::string error;
-    EXPECT_TRUE(gpu::parse_camera_spec(cam, s.camera, error)) << error;
+    EXPECT_TRUE(render::parse_camera_spec(cam, s.camera, error)) << error;
     s.sun = false;
     s.shadows = false;
-    s.tone_map = gpu::ToneMap::Linear;
+    s.tone_map = render::ToneMap::Linear;
     s.exposure = -1.0f;
-    s.background = gpu::Background::Color;
+    s.background = render::Background::Color;
     s.clear_color = glm::vec4(0, 0, 0, 1);
     return s;
 }

@@ -111,7 +111,7 @@ TEST_F(SwapchainTest, PresentsFramesAndSurvivesResizeWithoutValidationMessages) 
 
     VkSurfaceKHR surface = make_surface(context, window);
     {
-        gpu::Renderer renderer(context);
+        render::Renderer renderer(context);
         LoadResult scene = load_scene("builtin:default");
         ASSERT_TRUE(scene) << scene.error;
         renderer.load(*scene.scene);
@@ -119,10 +119,10 @@ TEST_F(SwapchainTest, PresentsFramesAndSurvivesResizeWithoutValidationMessages) 
                                  window.height);
         EXPECT_EQ(presenter.extent().width, 160u);
         EXPECT_GE(presenter.image_count(), 2u);
-        gpu::FrameRequest settings;
-        settings.overlays = gpu::kOverlayBounds;
+        render::FrameRequest settings;
+        settings.overlays = render::kOverlayBounds;
         int shown = 0;
-        gpu::PresentedFrame frame(renderer, settings);
+        render::PresentedFrame frame(renderer, settings);
         for (int i = 0; i < 6; ++i) shown += presenter.present_frame(frame) ? 1 : 0;
         EXPECT_GE(shown, 5);
         context.wait_idle(); // both frames in flight have completed
@@ -141,13 +141,13 @@ TEST_F(SwapchainTest, PresentsFramesAndSurvivesResizeWithoutValidationMessages) 
         // view, then kept while the view holds still and copied into the swapchain
         // images (lavapipe's take transfer writes); drawn into the reduced-resolution
         // image at half scale.
-        const gpu::EnvironmentImage room = gpu::room_environment(256);
+        const render::EnvironmentImage room = render::room_environment(256);
         renderer.set_environment(&room);
         presenter.present_frame(frame);
         const std::uint64_t drawn = renderer.resident().render_target_bytes;
         for (int i = 0; i < 4; ++i) presenter.present_frame(frame);
         EXPECT_GE(renderer.resident().render_target_bytes, drawn + 200u * 100u * 4u);
-        gpu::PresentedFrame half(renderer, settings, 0.5f);
+        render::PresentedFrame half(renderer, settings, 0.5f);
         for (int i = 0; i < 3; ++i) presenter.present_frame(half);
         context.wait_idle();
         renderer.set_environment(nullptr);
@@ -170,29 +170,30 @@ TEST_F(SwapchainTest, PresentsRayTracedAndComparisonFrames) {
     {
         LoadResult scene = load_scene("builtin:default");
         ASSERT_TRUE(scene) << scene.error;
-        gpu::Renderer raster(context);
-        gpu::RendererOptions rt_options;
+        render::Renderer raster(context);
+        render::RendererOptions rt_options;
         rt_options.ray_tracing = true;
-        gpu::Renderer rays(context, rt_options);
+        render::Renderer rays(context, rt_options);
         raster.load(*scene.scene);
         rays.load(*scene.scene);
         gpu::Presenter presenter(context, rays.resources(), surface, window.width, window.height);
-        gpu::FrameRequest settings;
-        settings.view = gpu::DebugView::Normal;
-        gpu::FrameRequest rt = settings;
-        rt.renderer = gpu::RendererKind::RayTraced;
+        render::FrameRequest settings;
+        settings.view = render::DebugView::Normal;
+        render::FrameRequest rt = settings;
+        rt.renderer = render::RendererKind::RayTraced;
         for (float scale : {1.0f, 0.5f}) {
-            gpu::PresentedFrame frame(rays, rt, scale);
+            render::PresentedFrame frame(rays, rt, scale);
             for (int i = 0; i < 3; ++i) presenter.present_frame(frame);
         }
         context.wait_idle();
         EXPECT_GT(window.distinct_pixels(), 2u);
-        for (gpu::CompareMode mode : {gpu::CompareMode::Split, gpu::CompareMode::Difference}) {
-            gpu::ComparisonSettings compare;
+        for (render::CompareMode mode :
+             {render::CompareMode::Split, render::CompareMode::Difference}) {
+            render::ComparisonSettings compare;
             compare.mode = mode;
             for (int i = 0; i < 4; ++i) {
                 // Made per frame, as the editor does; a is the presenter's renderer.
-                gpu::ComparisonFrame frame(rays, rt, raster, settings, compare);
+                render::ComparisonFrame frame(rays, rt, raster, settings, compare);
                 presenter.present_frame(frame);
                 if (i == 3) {
                     EXPECT_TRUE(frame.completed_comparison().valid);
@@ -220,7 +221,7 @@ TEST_F(SwapchainTest, ContextWithoutPresentationRefusesASurface) {
     gpu::Context context(options);
     VkSurfaceKHR surface = make_surface(context, window);
     {
-        gpu::Renderer renderer(context);
+        render::Renderer renderer(context);
         EXPECT_THROW(gpu::Presenter(context, renderer.resources(), surface, 64, 64), gpu::GpuError);
     }
     vkDestroySurfaceKHR(context.instance(), surface, nullptr);

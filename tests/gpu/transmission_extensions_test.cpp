@@ -18,7 +18,8 @@ namespace {
 
 using namespace sherpa;
 
-template <typename Block> Block block_at(const gpu::MaterialExtensionBuffer& b, std::uint32_t w) {
+template <typename Block>
+Block block_at(const render::MaterialExtensionBuffer& b, std::uint32_t w) {
     Block out;
     std::memcpy(&out, &b.words.at(w), sizeof out);
     return out;
@@ -96,20 +97,21 @@ TEST(TransmissionExtensions, BadValuesAreWarnedWithTheirPointerAndFallBack) {
 TEST(TransmissionExtensions, BlocksHoldTheValuesAndOnlyUsersPay) {
     const LoadResult r = load_scene((test::data_dir() / "transmission_bad.gltf").string());
     ASSERT_TRUE(r) << r.error;
-    const gpu::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
+    const render::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     std::size_t words = 0;
     for (std::size_t i = 0; i < b.places.size(); ++i) {
         const MaterialInstance& m = r.scene->materials[i];
-        const gpu::MaterialExtensionPlace& p = b.places[i];
-        EXPECT_EQ(p.transmission != gpu::kNoExtension, m.transmission.has_value()) << i;
-        EXPECT_EQ(p.volume != gpu::kNoExtension, m.volume.has_value()) << i;
-        EXPECT_EQ(p.diffuse_transmission != gpu::kNoExtension, m.diffuse_transmission.has_value())
+        const render::MaterialExtensionPlace& p = b.places[i];
+        EXPECT_EQ(p.transmission != render::kNoExtension, m.transmission.has_value()) << i;
+        EXPECT_EQ(p.volume != render::kNoExtension, m.volume.has_value()) << i;
+        EXPECT_EQ(p.diffuse_transmission != render::kNoExtension,
+                  m.diffuse_transmission.has_value())
             << i;
-        EXPECT_EQ(p.dispersion != gpu::kNoExtension, m.dispersion.has_value()) << i;
+        EXPECT_EQ(p.dispersion != render::kNoExtension, m.dispersion.has_value()) << i;
         if (!p.any()) continue;
         words += 3 + (m.transmission ? 3 : 0) + (m.volume ? 4 : 0) +
                  (m.diffuse_transmission ? 6 : 0) + (m.dispersion ? 1 : 0);
-        const auto index = block_at<gpu::GPUExtensionIndex>(b, p.index);
+        const auto index = block_at<render::GPUExtensionIndex>(b, p.index);
         EXPECT_EQ(index.transmission, p.transmission);
         EXPECT_EQ(index.volume, p.volume);
         EXPECT_EQ(index.diffuse_transmission, p.diffuse_transmission);
@@ -119,13 +121,13 @@ TEST(TransmissionExtensions, BlocksHoldTheValuesAndOnlyUsersPay) {
     // Only materials whose transmission can be non-zero make the renderer draw the
     // transmission background: 3, 5, 6 (factor 1) and 8 (0.5).
     EXPECT_EQ(b.transmissive_materials, 4u);
-    const auto t = block_at<gpu::GPUTransmissionBlock>(b, b.places[8].transmission);
+    const auto t = block_at<render::GPUTransmissionBlock>(b, b.places[8].transmission);
     EXPECT_EQ(t.factor, 0.5f);
     EXPECT_EQ(t.texture, 100u);
     EXPECT_EQ(t.uv.row0.w, 1.0f);  // TEXCOORD_1
     EXPECT_EQ(t.uv.row0.x, 2.0f);  // scale
     EXPECT_EQ(t.uv.row0.z, 0.25f); // offset
-    const auto v = block_at<gpu::GPUVolumeBlock>(b, b.places[8].volume);
+    const auto v = block_at<render::GPUVolumeBlock>(b, b.places[8].volume);
     EXPECT_EQ(v.attenuation, glm::vec4(0.5f, 0.25f, 1.0f, 2.0f));
     EXPECT_EQ(v.thickness_factor, 0.3f);
     EXPECT_EQ(v.thickness_tex, 100u);
@@ -134,11 +136,11 @@ TEST(TransmissionExtensions, BlocksHoldTheValuesAndOnlyUsersPay) {
 TEST(TransmissionExtensions, ASceneWithoutThemPaysNothing) {
     const LoadResult r = load_scene((test::data_dir() / "material_sweeps/ior_sweep.gltf").string());
     ASSERT_TRUE(r) << r.error;
-    const gpu::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
+    const render::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.transmissive_materials, 0u);
-    for (const gpu::MaterialExtensionPlace& p : b.places) {
-        EXPECT_EQ(p.transmission, gpu::kNoExtension);
-        EXPECT_EQ(p.volume, gpu::kNoExtension);
+    for (const render::MaterialExtensionPlace& p : b.places) {
+        EXPECT_EQ(p.transmission, render::kNoExtension);
+        EXPECT_EQ(p.volume, render::kNoExtension);
     }
 }
 

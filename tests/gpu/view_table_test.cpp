@@ -46,9 +46,9 @@ std::map<std::string, std::uint32_t> glsl_constants(const std::string& text,
 TEST(DebugViewTable, GeneratedGlslHeaderAgreesWithTheTable) {
     const std::string dir = SHERPA_GLSL_GENERATED_DIR;
     std::map<std::string, std::uint32_t> views, overlays;
-    for (const gpu::DebugViewInfo& v : gpu::kDebugViews)
+    for (const render::DebugViewInfo& v : render::kDebugViews)
         views[glsl_name(v.name)] = static_cast<std::uint32_t>(v.id);
-    for (const gpu::OverlayEntry& o : gpu::kOverlays) overlays[glsl_name(o.name)] = o.bit;
+    for (const render::OverlayEntry& o : render::kOverlays) overlays[glsl_name(o.name)] = o.bit;
     EXPECT_EQ(glsl_constants(read_text(dir + "/sherpa_views.glsl"), "VIEW_"), views);
     EXPECT_EQ(glsl_constants(read_text(dir + "/sherpa_overlays.glsl"), "OVERLAY_"), overlays);
 }
@@ -70,16 +70,16 @@ TEST(DebugViewTable, ForwardShaderHasACaseForEveryViewButLit) {
     const std::set<std::string> surface = view_cases("include/surface_views.glsl");
     cases.insert(surface.begin(), surface.end());
     std::set<std::string> expected, ray_traced;
-    for (const gpu::DebugViewInfo& v : gpu::kDebugViews) {
+    for (const render::DebugViewInfo& v : render::kDebugViews) {
         // lit: `default:`; ao and shadow-error: rays only.
-        if (v.id != gpu::DebugView::Lit && gpu::raster_view(v.id))
+        if (v.id != render::DebugView::Lit && render::raster_view(v.id))
             expected.insert(glsl_name(v.name));
         // The lighting views are traced by rt.rgen (lit: path traced by pt.rgen), not
         // looked up in surface_views.glsl.
-        const bool lighting = v.id == gpu::DebugView::Lit || v.id == gpu::DebugView::Shadow ||
-                              v.id == gpu::DebugView::AmbientOcclusion ||
-                              v.id == gpu::DebugView::ShadowError;
-        if (gpu::ray_traced_view(v.id) && !lighting) ray_traced.insert(glsl_name(v.name));
+        const bool lighting = v.id == render::DebugView::Lit || v.id == render::DebugView::Shadow ||
+                              v.id == render::DebugView::AmbientOcclusion ||
+                              v.id == render::DebugView::ShadowError;
+        if (render::ray_traced_view(v.id) && !lighting) ray_traced.insert(glsl_name(v.name));
     }
     EXPECT_EQ(cases, expected);
     EXPECT_EQ(surface, ray_traced);
@@ -87,12 +87,12 @@ TEST(DebugViewTable, ForwardShaderHasACaseForEveryViewButLit) {
 
 TEST(DebugViewTable, NamesAndLabelsAreUniqueAndComplete) {
     std::set<std::string_view> names;
-    for (const gpu::DebugViewInfo& v : gpu::kDebugViews) {
+    for (const render::DebugViewInfo& v : render::kDebugViews) {
         EXPECT_TRUE(names.insert(v.name).second) << v.name;
         EXPECT_TRUE(v.label && *v.label) << v.name;
     }
     std::uint32_t bits = 0;
-    for (const gpu::OverlayEntry& o : gpu::kOverlays) {
+    for (const render::OverlayEntry& o : render::kOverlays) {
         EXPECT_TRUE(names.insert(o.name).second) << o.name;
         EXPECT_EQ(bits & o.bit, 0u) << o.name;
         bits |= o.bit;
@@ -106,11 +106,11 @@ TEST(DebugViewTable, CliListsEveryName) {
     EXPECT_NE(r.exit_code, 0);
     const CliRun help = run_cli("render --help");
     EXPECT_EQ(help.exit_code, 0);
-    for (const gpu::DebugViewInfo& v : gpu::kDebugViews) {
+    for (const render::DebugViewInfo& v : render::kDebugViews) {
         EXPECT_NE(r.out.find(std::string(v.name)), std::string::npos) << v.name << "\n" << r.out;
         EXPECT_NE(help.out.find(std::string(v.name)), std::string::npos) << v.name;
     }
-    for (const gpu::OverlayEntry& o : gpu::kOverlays)
+    for (const render::OverlayEntry& o : render::kOverlays)
         EXPECT_NE(help.out.find(std::string(o.name)), std::string::npos) << o.name << "\n"
                                                                          << help.out;
 }
@@ -122,8 +122,8 @@ class DebugViewRenderTest : public GpuTest {};
 TEST_F(DebugViewRenderTest, EveryViewRendersAndDiffersFromLit) {
     auto scene = load(gltf_asset("NormalTangentMirrorTest"));
     ASSERT_TRUE(scene);
-    renderer().load(*scene, streams_setup(gpu::StreamPolicy::AllPresent));
-    gpu::FrameRequest s;
+    renderer().load(*scene, streams_setup(render::StreamPolicy::AllPresent));
+    render::FrameRequest s;
     s.width = 64;
     s.height = 64;
     // Only the lit view draws shadows: compare shading, not shadows.
@@ -131,8 +131,8 @@ TEST_F(DebugViewRenderTest, EveryViewRendersAndDiffersFromLit) {
     std::vector<std::uint8_t> lit;
     renderer().render(s, &lit);
     ASSERT_EQ(lit.size(), 64u * 64u * 4u);
-    for (const gpu::DebugViewInfo& v : gpu::kDebugViews) {
-        if (v.id == gpu::DebugView::Lit || !gpu::raster_view(v.id)) continue;
+    for (const render::DebugViewInfo& v : render::kDebugViews) {
+        if (v.id == render::DebugView::Lit || !render::raster_view(v.id)) continue;
         s.view = v.id;
         std::vector<std::uint8_t> rgba;
         renderer().render(s, &rgba);

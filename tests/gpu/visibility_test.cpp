@@ -25,18 +25,18 @@ protected:
         ASSERT_EQ(scene_->nodes.size(), 2u);
         ASSERT_EQ(scene_->nodes[kCaster].name, "caster");
         std::string error;
-        ASSERT_TRUE(gpu::parse_camera_spec(kCamera, settings_.camera, error)) << error;
+        ASSERT_TRUE(render::parse_camera_spec(kCamera, settings_.camera, error)) << error;
         settings_.width = settings_.height = kSize;
         settings_.sun_direction = glm::normalize(glm::vec3(0.0f, -1.0f, 1.0f));
-        settings_.view = gpu::DebugView::Shadow; // lit 255, shadowed 0
+        settings_.view = render::DebugView::Shadow; // lit 255, shadowed 0
         hidden_ = std::make_shared<std::vector<bool>>(2, false);
         (*hidden_)[kCaster] = true;
     }
 
-    std::vector<std::uint8_t> render(gpu::Renderer& r, const gpu::FrameRequest& s,
-                                     gpu::FrameStats* stats = nullptr) {
+    std::vector<std::uint8_t> render(render::Renderer& r, const render::FrameRequest& s,
+                                     render::FrameStats* stats = nullptr) {
         std::vector<std::uint8_t> rgba;
-        const gpu::FrameStats st = r.render(s, &rgba);
+        const render::FrameStats st = r.render(s, &rgba);
         if (stats) *stats = st;
         EXPECT_EQ(rgba.size(), std::size_t{kSize} * kSize * 4);
         return rgba;
@@ -54,7 +54,7 @@ protected:
     }
 
     std::unique_ptr<Scene> scene_;
-    gpu::FrameRequest settings_;
+    render::FrameRequest settings_;
     std::shared_ptr<std::vector<bool>> hidden_;
 };
 
@@ -72,19 +72,20 @@ TEST(VisibilityRule, AHiddenNodeHidesItsSubtreeAndHostileParentsEndTheWalk) {
 }
 
 TEST_F(Visibility, HiddenCasterLeavesNoPixelsNorShadowOnEveryCullPath) {
-    gpu::Renderer r(context());
+    render::Renderer r(context());
     r.load(*scene_);
     std::vector<std::uint8_t> hidden_image;
-    for (const gpu::CullPath path : {gpu::CullPath::None, gpu::CullPath::Cpu, gpu::CullPath::Gpu}) {
-        SCOPED_TRACE(std::string(gpu::to_string(path)));
-        gpu::FrameRequest s = settings_;
+    for (const render::CullPath path :
+         {render::CullPath::None, render::CullPath::Cpu, render::CullPath::Gpu}) {
+        SCOPED_TRACE(std::string(to_string(path)));
+        render::FrameRequest s = settings_;
         s.cull = path;
         const auto shown = render(r, s); // cascades cached from here on
         const auto [shown_dark, shown_bright] = dark_bright(shown);
         EXPECT_GT(shown_dark, 150u) << "the caster's shadow on the plane";
 
         r.set_hidden_nodes(hidden_);
-        gpu::FrameStats st;
+        render::FrameStats st;
         const auto hidden = render(r, s, &st);
         EXPECT_TRUE(st.shadows_rendered) << "cached cascades redrawn when visibility changes";
         const auto [dark, bright] = dark_bright(hidden);
@@ -96,7 +97,7 @@ TEST_F(Visibility, HiddenCasterLeavesNoPixelsNorShadowOnEveryCullPath) {
             SCOPED_TRACE(c.pass);
             EXPECT_EQ(c.hidden, 1u);
             // Hidden instances are neither tested, visible nor culled.
-            if (path == gpu::CullPath::None) {
+            if (path == render::CullPath::None) {
                 EXPECT_EQ(c.visible, c.total - c.hidden);
             } else {
                 EXPECT_EQ(c.tested, c.total - c.hidden);
@@ -104,11 +105,11 @@ TEST_F(Visibility, HiddenCasterLeavesNoPixelsNorShadowOnEveryCullPath) {
             }
         }
         EXPECT_EQ(st.culling[0].visible, 1u) << "only the plane";
-        if (path == gpu::CullPath::Gpu) { // check mode: the CPU test leaves them out too
-            gpu::FrameRequest k = s;
+        if (path == render::CullPath::Gpu) { // check mode: the CPU test leaves them out too
+            render::FrameRequest k = s;
             k.cull_check = true;
             k.cache_shadows = false;
-            gpu::FrameStats checked;
+            render::FrameStats checked;
             EXPECT_EQ(render(r, k, &checked), hidden);
             for (const CullStats& c : checked.culling)
                 EXPECT_EQ(c.cpu_gpu_differences, 0) << c.pass;
@@ -128,12 +129,12 @@ TEST_F(Visibility, HidingTheRootOfASubtreeHidesItsDescendantsInTheRenderer) {
     Scene scene = *scene_;
     scene.nodes[kCaster].parent = 0;
     scene.nodes[0].children = {kCaster};
-    gpu::Renderer r(context());
+    render::Renderer r(context());
     auto root = std::make_shared<std::vector<bool>>(std::vector<bool>{true});
     r.load(scene, {.hidden_nodes = root}); // hidden from the load on
-    gpu::FrameRequest s = settings_;
-    s.view = gpu::DebugView::Lit;
-    gpu::FrameStats st;
+    render::FrameRequest s = settings_;
+    s.view = render::DebugView::Lit;
+    render::FrameStats st;
     const auto image = render(r, s, &st);
     EXPECT_EQ(st.culling[0].hidden, 2u);
     EXPECT_EQ(st.culling[0].visible, 0u);
@@ -143,12 +144,12 @@ TEST_F(Visibility, HidingTheRootOfASubtreeHidesItsDescendantsInTheRenderer) {
 
 TEST_F(Visibility, RayTracedImageAndTlasLeaveTheHiddenNodeOut) {
     if (!context().info().ray_tracing_enabled) GTEST_SKIP() << "device without ray tracing";
-    gpu::RendererOptions options;
+    render::RendererOptions options;
     options.ray_tracing = true;
-    gpu::Renderer r(context(), options);
+    render::Renderer r(context(), options);
     r.load(*scene_);
-    gpu::FrameRequest s = settings_;
-    s.renderer = gpu::RendererKind::RayTraced;
+    render::FrameRequest s = settings_;
+    s.renderer = render::RendererKind::RayTraced;
     const auto shown = render(r, s);
     ASSERT_NE(r.resident().acceleration, nullptr);
     EXPECT_EQ(r.resident().acceleration->tlas.hidden, 0u);
@@ -175,31 +176,32 @@ TEST_F(Visibility, HiddenSkinnedMeshLeavesPosedFramesOnEveryPathAndTheRays) {
         if (scene->nodes[n].mesh >= 0) (*mask)[n] = true; // every mesh node
     const auto pose =
         std::make_shared<const Pose>(evaluate_pose(*scene, 0, 0.37 * scene->animations[0].end));
-    gpu::FrameRequest s;
+    render::FrameRequest s;
     s.width = s.height = kSize;
     const core::Aabb b = scene->bounds;
     const glm::vec3 eye = b.center() + glm::vec3(0.0f, 0.0f, 2.5f * glm::length(b.extent()));
     std::string error;
-    ASSERT_TRUE(gpu::parse_camera_spec(
+    ASSERT_TRUE(render::parse_camera_spec(
         "eye=" + std::to_string(eye.x) + "," + std::to_string(eye.y) + "," + std::to_string(eye.z) +
             ":target=" + std::to_string(b.center().x) + "," + std::to_string(b.center().y) + "," +
             std::to_string(b.center().z),
         s.camera, error))
         << error;
     s.pose = pose;
-    s.view = gpu::DebugView::Shadow; // drawn by both renderers
+    s.view = render::DebugView::Shadow; // drawn by both renderers
     const bool rays = context().info().ray_tracing_enabled;
-    gpu::RendererOptions options;
+    render::RendererOptions options;
     options.ray_tracing = rays;
-    gpu::Renderer r(context(), options);
+    render::Renderer r(context(), options);
     r.load(*scene);
     auto only_clear = [](const std::vector<std::uint8_t>& rgba) {
         for (std::size_t p = 4; p < rgba.size(); ++p)
             if (rgba[p] != rgba[p % 4]) return false;
         return true;
     };
-    for (const gpu::CullPath path : {gpu::CullPath::None, gpu::CullPath::Cpu, gpu::CullPath::Gpu}) {
-        SCOPED_TRACE(std::string(gpu::to_string(path)));
+    for (const render::CullPath path :
+         {render::CullPath::None, render::CullPath::Cpu, render::CullPath::Gpu}) {
+        SCOPED_TRACE(std::string(to_string(path)));
         s.cull = path;
         r.set_hidden_nodes(nullptr);
         const auto shown = render(r, s);
@@ -210,7 +212,7 @@ TEST_F(Visibility, HiddenSkinnedMeshLeavesPosedFramesOnEveryPathAndTheRays) {
         EXPECT_EQ(render(r, s), shown);
     }
     if (!rays) return;
-    s.renderer = gpu::RendererKind::RayTraced;
+    s.renderer = render::RendererKind::RayTraced;
     const auto shown = render(r, s);
     EXPECT_FALSE(only_clear(shown));
     r.set_hidden_nodes(mask);

@@ -28,7 +28,7 @@ std::unique_ptr<Scene> sphere_row(float metallic) {
 }
 
 // Radiance 1 + b.w: smooth, its irradiance known in closed form (environment_sh_test).
-gpu::EnvironmentImage linear_environment() {
+render::EnvironmentImage linear_environment() {
     return test::environment_of(128, [](glm::vec3 d) {
         return glm::vec3(1.0f + 0.5f * d.y, 1.0f + 0.5f * d.x, 1.0f - 0.5f * d.z);
     });
@@ -36,7 +36,7 @@ gpu::EnvironmentImage linear_environment() {
 
 // 48x16 (three spheres), 64 reference samples, one size of prefilter, no shadow maps
 // beyond "off", linear tone mapping at -1 EV on black: the furnace's display.
-lab::LightingFamilyOptions tiny(std::shared_ptr<const gpu::EnvironmentImage> environment) {
+lab::LightingFamilyOptions tiny(std::shared_ptr<const render::EnvironmentImage> environment) {
     lab::LightingFamilyOptions o;
     o.width = 48;
     o.height = 16;
@@ -83,8 +83,8 @@ void print(const lab::FamilyReport& r) {
 TEST(LabLighting, FurnaceMetalAndThePathTracersConvergence) {
     auto scene = sphere_row(1.0f);
     ASSERT_TRUE(scene);
-    auto uniform =
-        std::make_shared<const gpu::EnvironmentImage>(gpu::uniform_environment(glm::vec3(1.0f)));
+    auto uniform = std::make_shared<const render::EnvironmentImage>(
+        render::uniform_environment(glm::vec3(1.0f)));
     const lab::FamilyReport r = lab::make_lighting_family(tiny(uniform))->run(*scene, {});
     if (!ran_cleanly(r)) GTEST_SKIP() << r.methods.front().note;
     print(r);
@@ -135,7 +135,7 @@ TEST(LabLighting, FurnaceMetalAndThePathTracersConvergence) {
 TEST(LabLighting, Sh9AndCubeIrradianceAreBothNearThePathTracerOnASmoothEnvironment) {
     auto scene = sphere_row(0.0f);
     ASSERT_TRUE(scene);
-    auto linear = std::make_shared<const gpu::EnvironmentImage>(linear_environment());
+    auto linear = std::make_shared<const render::EnvironmentImage>(linear_environment());
     lab::LightingFamilyOptions o = tiny(linear);
     const lab::FamilyReport r = lab::make_lighting_family(o)->run(*scene, {});
     if (!ran_cleanly(r)) GTEST_SKIP() << r.methods.front().note;
@@ -159,8 +159,8 @@ TEST(LabLighting, TransmissionIsNearerThePathTracerThanWithoutIt) {
                    lab::lab_load_options());
     ASSERT_TRUE(loaded) << loaded.error;
     lab::LightingFamilyOptions o =
-        tiny(std::make_shared<const gpu::EnvironmentImage>(gpu::room_environment(256)));
-    o.lighting.settings = gpu::FrameRequest{};
+        tiny(std::make_shared<const render::EnvironmentImage>(render::room_environment(256)));
+    o.lighting.settings = render::FrameRequest{};
     o.width = 64;
     o.height = 48;
     o.reference_spp = 32;

@@ -213,7 +213,7 @@ BudgetReport build_budget(const Scene& scene, const BudgetOptions& options) {
     out.categories.push_back(textures);
     const std::uint64_t materials = sizeof(GPUMaterialData) * scene.materials.size();
     out.categories.push_back({"materials", materials, materials, materials});
-    const std::uint64_t instances = sizeof(gpu::GPUInstanceData) * scene.instances.size();
+    const std::uint64_t instances = sizeof(render::GPUInstanceData) * scene.instances.size();
     out.categories.push_back({"instances", instances, instances, instances});
     add_unread(scene, usage, out);
     return out;

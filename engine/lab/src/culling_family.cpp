@@ -141,7 +141,7 @@ MethodResult CullFamily::run_gpu(const Scene& scene, const std::vector<Frustum>&
         co.validation = options_.gpu_validation;
         gpu::Context context(co);
         gpu::ResourceManager resources(context);
-        gpu::GpuCullChecker check(context, resources, scene);
+        render::GpuCullChecker check(context, resources, scene);
         // The first dispatch compiles the pipeline on lavapipe: keep it out of the timing.
         check.compare(frusta.front(), CullMethod::PVertex, {});
         Tally tally;
@@ -149,7 +149,7 @@ MethodResult CullFamily::run_gpu(const Scene& scene, const std::vector<Frustum>&
         std::vector<std::uint8_t> visible(scene.instances.size());
         for (std::size_t c = 0; c < frusta.size(); ++c) {
             if (progress.stop()) return out;
-            const gpu::GpuCullComparison r =
+            const render::GpuCullComparison r =
                 check.compare(frusta[c], CullMethod::PVertex, exact[c]);
             std::fill(visible.begin(), visible.end(), 0);
             for (std::uint32_t i : r.visible) visible[i] = 1;

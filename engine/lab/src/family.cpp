@@ -35,7 +35,7 @@ bool family_draws_lit_frames(std::string_view name) {
     return name == "shadows" || name == "lighting";
 }
 
-std::unique_ptr<Family> make_family(std::string_view name, const gpu::Lighting& lighting) {
+std::unique_ptr<Family> make_family(std::string_view name, const render::Lighting& lighting) {
     if (name == "shadows") {
         ShadowFamilyOptions options;
         options.lighting = lighting;

@@ -40,7 +40,7 @@ bool has_transmission(const Scene& scene) {
 
 // The sun whose cascades the raster draws: the scene's first directional light, else
 // the default sun where the scene has no lights and it is on (frame_data.cpp's rule).
-bool has_shadowing_sun(const Scene& scene, const gpu::FrameRequest& view) {
+bool has_shadowing_sun(const Scene& scene, const render::FrameRequest& view) {
     for (const PlacedLight& pl : scene.placed_lights)
         if (pl.light < scene.lights.size() && scene.lights[pl.light].type == LightType::Directional)
             return true;
@@ -106,31 +106,31 @@ private:
         std::vector<std::uint8_t> rgba;
         double ms = 0.0;
         bool timed = false;
-        gpu::EnvironmentStats environment;
+        render::EnvironmentStats environment;
         std::vector<Failure> failures;
     };
     // A raster renderer for the setups of one shadow resolution, with the environment
     // and scene of the last setup drawn.
     struct Raster {
-        std::unique_ptr<gpu::Renderer> renderer;
+        std::unique_ptr<render::Renderer> renderer;
         std::uint32_t shadow_resolution = 0;
         std::optional<std::string> environment; // key of its EnvironmentOptions
         int transmission = -1;
     };
 
-    gpu::FrameRequest view_settings(const CameraSpec& camera) const {
-        gpu::FrameRequest s;
-        gpu::copy_lighting(options_.lighting.settings, s);
+    render::FrameRequest view_settings(const CameraSpec& camera) const {
+        render::FrameRequest s;
+        render::copy_lighting(options_.lighting.settings, s);
         s.width = options_.width;
         s.height = options_.height;
-        s.camera = gpu::explicit_camera(camera);
+        s.camera = render::explicit_camera(camera);
         s.path.max_bounces = options_.max_bounces;
         return s;
     }
 
     Frame draw(gpu::Context& context, Raster& raster, const Scene& scene, const Scene& stripped,
-               const LightingSetup& setup, const gpu::FrameRequest& view) const;
-    void reference(gpu::Context& context, const Scene& scene, const gpu::FrameRequest& view,
+               const LightingSetup& setup, const render::FrameRequest& view) const;
+    void reference(gpu::Context& context, const Scene& scene, const render::FrameRequest& view,
                    const std::vector<std::int32_t>& ids, FamilyReport& report,
                    const std::vector<LightingMethod>& plan, detail::Progress& progress,
                    std::vector<std::uint8_t>& rgba) const;
@@ -141,20 +141,20 @@ private:
 LightingFamily::Frame LightingFamily::draw(gpu::Context& context, Raster& raster,
                                            const Scene& scene, const Scene& stripped,
                                            const LightingSetup& setup,
-                                           const gpu::FrameRequest& view) const {
+                                           const render::FrameRequest& view) const {
     Frame f;
     const std::size_t seen = context.validation().count();
     const std::string env_key = setup.environment_key();
     if (!raster.renderer || raster.shadow_resolution != setup.shadow_resolution) {
-        gpu::RendererOptions ro;
+        render::RendererOptions ro;
         ro.shadow_resolution = setup.shadow_resolution;
         raster.renderer.reset();
-        raster.renderer = std::make_unique<gpu::Renderer>(context, ro);
+        raster.renderer = std::make_unique<render::Renderer>(context, ro);
         raster.shadow_resolution = setup.shadow_resolution;
         raster.environment.reset();
         raster.transmission = -1;
     }
-    gpu::Renderer& r = *raster.renderer;
+    render::Renderer& r = *raster.renderer;
     if (raster.environment != env_key) {
         r.set_environment(options_.lighting.environment.get(), setup.environment);
         raster.environment = env_key;
@@ -163,7 +163,7 @@ LightingFamily::Frame LightingFamily::draw(gpu::Context& context, Raster& raster
         r.load(setup.transmission ? scene : stripped);
         raster.transmission = int(setup.transmission);
     }
-    gpu::FrameRequest s = view;
+    render::FrameRequest s = view;
     s.shadows = setup.shadows;
     s.cascades = setup.cascades;
     s.shadow_pcf_taps = setup.taps;
@@ -177,7 +177,7 @@ LightingFamily::Frame LightingFamily::draw(gpu::Context& context, Raster& raster
     f.ms = detail::median(ms);
     // The compared image: supersampled, filtered down as the path tracer's box filter.
     const std::uint32_t k = std::max(options_.supersample, 1u);
-    gpu::FrameRequest big = s;
+    render::FrameRequest big = s;
     big.width *= k, big.height *= k;
     std::vector<std::uint8_t> rgba;
     r.render(big, &rgba);
@@ -190,12 +190,13 @@ LightingFamily::Frame LightingFamily::draw(gpu::Context& context, Raster& raster
 }
 
 void LightingFamily::reference(gpu::Context& context, const Scene& scene,
-                               const gpu::FrameRequest& view, const std::vector<std::int32_t>& ids,
-                               FamilyReport& report, const std::vector<LightingMethod>& plan,
-                               detail::Progress& progress, std::vector<std::uint8_t>& rgba) const {
-    gpu::RendererOptions ro;
+                               const render::FrameRequest& view,
+                               const std::vector<std::int32_t>& ids, FamilyReport& report,
+                               const std::vector<LightingMethod>& plan, detail::Progress& progress,
+                               std::vector<std::uint8_t>& rgba) const {
+    render::RendererOptions ro;
     ro.ray_tracing = true;
-    gpu::Renderer renderer(context, ro);
+    render::Renderer renderer(context, ro);
     renderer.set_environment(options_.lighting.environment.get());
     renderer.load(scene);
     const std::size_t seen = context.validation().count();
@@ -207,7 +208,7 @@ void LightingFamily::reference(gpu::Context& context, const Scene& scene,
     std::vector<detail::PathImage> ref = detail::path_trace_series(renderer, view, 0, {spp}, step);
     if (ref.empty() || ref.back().spp != spp) return; // cancelled
     rgba = std::move(ref.back().rgba);
-    const gpu::PathTraceError& e = ref.back().error;
+    const render::PathTraceError& e = ref.back().error;
     const std::vector<std::uint32_t> checkpoints = lighting_convergence_spp(options_);
     const std::vector<detail::PathImage> series =
         detail::path_trace_series(renderer, view, 1, checkpoints, step);
@@ -300,7 +301,7 @@ FamilyReport LightingFamily::run(const Scene& scene, const RunControl& control) 
     framing.aspect = float(options_.width) / float(std::max(options_.height, 1u));
     CameraSpec camera = frame_scene(scene, nullptr, framing);
     camera.aspect = framing.aspect;
-    const gpu::FrameRequest view = view_settings(camera);
+    const render::FrameRequest view = view_settings(camera);
     report.notes.push_back(std::to_string(options_.width) + "x" + std::to_string(options_.height) +
                            ", the framed camera; time: GPU ms of the raster frame, median of " +
                            std::to_string(options_.frames) +

@@ -7,7 +7,7 @@ namespace sherpa::lab {
 namespace detail {
 
 std::string LightingSetup::environment_key() const {
-    return std::string(gpu::to_string(environment.irradiance)) + "/" +
+    return std::string(to_string(environment.irradiance)) + "/" +
            std::to_string(environment.specular_size) + "/" +
            std::to_string(environment.specular_samples);
 }
@@ -28,10 +28,10 @@ std::vector<LightingMethod> lighting_methods(const LightingFamilyOptions& option
             {{std::move(name), std::move(parameters), std::move(description), group}, setup});
     };
     LightingSetup setup;
-    setup.environment.irradiance = gpu::IrradianceMode::Cube;
+    setup.environment.irradiance = render::IrradianceMode::Cube;
     add(LightingGroup::Irradiance, "irradiance", "irradiance cube", "32x32 faces, 48 samples",
         "diffuse environment light from the Lambert-prefiltered irradiance cube", setup);
-    setup.environment.irradiance = gpu::IrradianceMode::Sh9;
+    setup.environment.irradiance = render::IrradianceMode::Sh9;
     add(LightingGroup::Irradiance, "irradiance", "irradiance sh9", "9 coefficients",
         "diffuse environment light from 9 spherical-harmonic coefficients, per pixel", setup);
 
@@ -97,31 +97,31 @@ std::vector<LightingMethod> lighting_methods(const LightingFamilyOptions& option
     return out;
 }
 
-std::vector<PathImage> path_trace_series(gpu::Renderer& renderer, gpu::FrameRequest base,
+std::vector<PathImage> path_trace_series(render::Renderer& renderer, render::FrameRequest base,
                                          std::uint32_t seed, const std::vector<std::uint32_t>& spp,
                                          const std::function<bool()>& step) {
     std::vector<PathImage> out;
-    base.renderer = gpu::RendererKind::RayTraced;
-    base.view = gpu::DebugView::Lit;
+    base.renderer = render::RendererKind::RayTraced;
+    base.view = render::DebugView::Lit;
     base.path.seed = seed;
     std::uint32_t done = 0;
     double ms = 0.0;
     bool first = true;
     for (std::uint32_t target : spp) {
         while (done < target) {
-            gpu::FrameRequest s = base;
+            render::FrameRequest s = base;
             s.path.samples = std::min(kPathLaunch, target - done);
             s.path.restart = first;
             first = false;
             const bool last = done + s.path.samples == target;
             PathImage image;
-            const gpu::FrameStats stats = renderer.render(s, last ? &image.rgba : nullptr);
+            const render::FrameStats stats = renderer.render(s, last ? &image.rgba : nullptr);
             ms += stats.gpu_ms;
             done += s.path.samples;
             if (last) {
                 image.spp = done;
                 image.gpu_ms = ms;
-                image.error = gpu::path_trace_error(renderer);
+                image.error = render::path_trace_error(renderer);
                 out.push_back(std::move(image));
             }
             if (!step()) return out;

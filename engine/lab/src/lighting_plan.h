@@ -17,7 +17,7 @@ enum class LightingGroup { Irradiance, Prefilter, Compensation, Shadows, Transmi
 // What one method draws: the main view's settings with one approximation changed.
 struct LightingSetup {
     LightingGroup group = LightingGroup::Irradiance;
-    gpu::EnvironmentOptions environment;
+    render::EnvironmentOptions environment;
     std::uint32_t shadow_resolution = kDefaultShadowResolution;
     bool shadows = true;
     std::uint32_t cascades = kDefaultShadowCascades, taps = 0; // 0: the device's default
@@ -42,7 +42,7 @@ struct PathImage {
     std::uint32_t spp = 0;
     std::vector<std::uint8_t> rgba;
     double gpu_ms = 0.0; // the accumulation up to here
-    gpu::PathTraceError error;
+    render::PathTraceError error;
 };
 
 // Accumulates with `base` (a path-traced lit frame) and `seed` up to each of `spp`
@@ -50,7 +50,7 @@ struct PathImage {
 // kPathLaunch samples: about a second of lavapipe for DamagedHelmet at 160x120, so that
 // a cancel is seen soon) and returns false to cancel (the images so far are returned).
 inline constexpr std::uint32_t kPathLaunch = 4;
-std::vector<PathImage> path_trace_series(gpu::Renderer& renderer, gpu::FrameRequest base,
+std::vector<PathImage> path_trace_series(render::Renderer& renderer, render::FrameRequest base,
                                          std::uint32_t seed, const std::vector<std::uint32_t>& spp,
                                          const std::function<bool()>& step);
 

@@ -1,8 +1,8 @@
 // render_difference: both scenes rendered from one camera by two renderers and
-// differenced per pixel on the GPU (gpu::render_comparison, the editor's difference
+// differenced per pixel on the GPU (render::render_comparison, the editor's difference
 // view), then laid out as one picture a reader can take in without stdout: the heat
 // over a dimmed side A, both sides at half size, and the legend with its numbers
-// (tex::draw_text's built-in font; the heat colours are gpu::heat_colour's).
+// (tex::draw_text's built-in font; the heat colours are render::heat_colour's).
 #include <sherpa/gpu/context.h>
 #include <sherpa/lab/compare.h>
 #include <sherpa/render/camera.h>
@@ -71,7 +71,7 @@ void draw_legend(tex::RgbaImage& image, const DifferenceImage& d, std::uint32_t 
     const std::uint32_t w = image.width;
     for (std::uint32_t y = 0; y < kBarRows; ++y)
         for (std::uint32_t x = 0; x < w; ++x) {
-            const auto c = gpu::heat_colour(double(x) / std::max(1u, w - 1));
+            const auto c = render::heat_colour(double(x) / std::max(1u, w - 1));
             std::copy(c.begin(), c.end(),
                       image.pixels.begin() + std::ptrdiff_t(4 * ((top + y) * std::size_t(w) + x)));
         }
@@ -108,14 +108,14 @@ DifferenceImage render_difference(const Scene& a, const Scene& b,
     out.threshold = options.threshold;
     const std::uint32_t w = std::max(options.width, 2u), h = std::max(options.height, 2u);
     std::vector<std::uint8_t> heat, side_a, side_b;
-    gpu::ComparisonStats stats;
+    render::ComparisonStats stats;
     try {
         gpu::ContextOptions co;
         co.validation = options.validation;
         gpu::Context context(co);
-        gpu::Renderer renderer_a(context), renderer_b(context);
-        gpu::FrameRequest settings;
-        gpu::copy_lighting(options.lighting.settings, settings);
+        render::Renderer renderer_a(context), renderer_b(context);
+        render::FrameRequest settings;
+        render::copy_lighting(options.lighting.settings, settings);
         renderer_a.set_environment(options.lighting.environment.get());
         renderer_b.set_environment(options.lighting.environment.get());
         settings.width = w, settings.height = h;
@@ -124,16 +124,17 @@ DifferenceImage render_difference(const Scene& a, const Scene& b,
         framing.aspect = float(w) / float(h);
         CameraSpec camera = options.camera ? *options.camera : frame_scene(a, nullptr, framing);
         camera.aspect = framing.aspect;
-        settings.camera = gpu::explicit_camera(camera);
+        settings.camera = render::explicit_camera(camera);
         renderer_a.load(a);
         renderer_b.load(b);
-        gpu::ComparisonSettings compare;
-        compare.mode = gpu::CompareMode::Difference;
+        render::ComparisonSettings compare;
+        compare.mode = render::CompareMode::Difference;
         compare.threshold = float(options.threshold) / 255.0f;
         // One stray pixel would make everything else black at a scale of the largest
         // difference: white is the 99.9th percentile of the pixels that differ at all.
         compare.heat_max = 0.0f;
-        stats = gpu::render_comparison(renderer_a, settings, renderer_b, settings, compare, &heat);
+        stats =
+            render::render_comparison(renderer_a, settings, renderer_b, settings, compare, &heat);
         renderer_a.render(settings, &side_a);
         renderer_b.render(settings, &side_b);
         if (context.validation().count() > 0)

@@ -49,7 +49,7 @@ std::vector<CameraSpec> orbit(const core::Aabb& bounds, std::uint32_t count, flo
 }
 
 struct Tally {
-    gpu::ShadowErrorCounts n;
+    render::ShadowErrorCounts n;
     double ms = 0.0, total_ms = 0.0;
     std::uint32_t timed = 0;
     std::vector<Failure> failures;
@@ -138,10 +138,10 @@ private:
     bool run_resolution(gpu::Context& context, const Scene& scene,
                         const std::vector<CameraSpec>& cameras, std::uint32_t resolution,
                         std::size_t first, FamilyReport& report, detail::Progress& progress) const {
-        gpu::RendererOptions ro;
+        render::RendererOptions ro;
         ro.ray_tracing = true;
         ro.shadow_resolution = resolution;
-        gpu::Renderer renderer(context, ro);
+        render::Renderer renderer(context, ro);
         renderer.set_environment(options_.lighting.environment.get());
         renderer.load(scene);
         std::size_t i = first;
@@ -160,16 +160,16 @@ private:
         return true;
     }
 
-    void measure(gpu::Context& context, gpu::Renderer& renderer, const CameraSpec& camera,
+    void measure(gpu::Context& context, render::Renderer& renderer, const CameraSpec& camera,
                  std::size_t index, std::uint32_t cascades, std::uint32_t taps,
                  Tally& tally) const {
         const std::size_t seen = context.validation().count();
         const double t0 = detail::process_cpu_ms();
-        gpu::FrameRequest s;
-        gpu::copy_lighting(options_.lighting.settings, s);
+        render::FrameRequest s;
+        render::copy_lighting(options_.lighting.settings, s);
         s.width = options_.width;
         s.height = options_.height;
-        s.camera = gpu::explicit_camera(camera);
+        s.camera = render::explicit_camera(camera);
         s.cascades = cascades;
         s.shadow_pcf_taps = taps;
         s.cache_shadows = false;     // every frame pays for its cascades
@@ -181,11 +181,11 @@ private:
             tally.ms += detail::median(ms);
             ++tally.timed;
         }
-        s.renderer = gpu::RendererKind::RayTraced;
-        s.view = gpu::DebugView::ShadowError;
+        s.renderer = render::RendererKind::RayTraced;
+        s.view = render::DebugView::ShadowError;
         std::vector<std::uint8_t> rgba;
         renderer.render(s, &rgba);
-        const gpu::ShadowErrorCounts n = gpu::count_shadow_error(rgba);
+        const render::ShadowErrorCounts n = render::count_shadow_error(rgba);
         const std::string where = "camera " + std::to_string(index);
         if (n.lit() == 0) tally.failures.push_back({"no lit pixels (rays)", where, 1});
         tally.n.agree_lit += n.agree_lit;

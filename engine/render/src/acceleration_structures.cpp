@@ -12,22 +12,22 @@
 
 #include <chrono>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
-ScratchBuffer::ScratchBuffer(ResourceManager& resources, std::uint64_t bytes)
+ScratchBuffer::ScratchBuffer(gpu::ResourceManager& resources, std::uint64_t bytes)
     : resources_(resources), bytes_(bytes) {
     const std::uint64_t alignment = resources.context().info().as_scratch_alignment;
     buffer_ = resources.create_buffer(
         {bytes + alignment,
          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-         MemoryUsage::DeviceLocal, "acceleration-structure scratch"});
+         gpu::MemoryUsage::DeviceLocal, "acceleration-structure scratch"});
     address_ = align_up(resources.get(buffer_).address, alignment);
 }
 
-BuildTimer::BuildTimer(const Context& context, std::uint32_t count)
+BuildTimer::BuildTimer(const gpu::Context& context, std::uint32_t count)
     : context_(context), count_(count) {
     if (!context.info().timestamps || count == 0) return;
-    pool_ = create_query_pool(context.device(), VK_QUERY_TYPE_TIMESTAMP, 2 * count);
+    pool_ = gpu::create_query_pool(context.device(), VK_QUERY_TYPE_TIMESTAMP, 2 * count);
     vkResetQueryPool(context.device(), pool_.get(), 0, 2 * count);
 }
 
@@ -41,11 +41,11 @@ std::vector<double> BuildTimer::read() const {
     std::vector<double> ms(count_, -1.0);
     if (!pool_) return ms;
     std::vector<std::uint64_t> ticks(2 * count_);
-    vk_check(vkGetQueryPoolResults(context_.device(), pool_.get(), 0, 2 * count_,
-                                   ticks.size() * sizeof(std::uint64_t), ticks.data(),
-                                   sizeof(std::uint64_t),
-                                   VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-             "vkGetQueryPoolResults(acceleration-structure builds)");
+    gpu::vk_check(vkGetQueryPoolResults(context_.device(), pool_.get(), 0, 2 * count_,
+                                        ticks.size() * sizeof(std::uint64_t), ticks.data(),
+                                        sizeof(std::uint64_t),
+                                        VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+                  "vkGetQueryPoolResults(acceleration-structure builds)");
     const double ns = context_.info().timestamp_period_ns;
     for (std::uint32_t i = 0; i < count_; ++i)
         ms[i] = double(ticks[2 * i + 1] - ticks[2 * i]) * ns * 1e-6;
@@ -53,12 +53,12 @@ std::vector<double> BuildTimer::read() const {
 }
 
 void build_barrier(VkCommandBuffer cmd) {
-    memory_barrier(cmd, VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-                   VK_ACCESS_2_ACCELERATION_STRUCTURE_WRITE_BIT_KHR,
-                   VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
-                       VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR,
-                   VK_ACCESS_2_ACCELERATION_STRUCTURE_READ_BIT_KHR |
-                       VK_ACCESS_2_ACCELERATION_STRUCTURE_WRITE_BIT_KHR);
+    gpu::memory_barrier(cmd, VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                        VK_ACCESS_2_ACCELERATION_STRUCTURE_WRITE_BIT_KHR,
+                        VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
+                            VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR,
+                        VK_ACCESS_2_ACCELERATION_STRUCTURE_READ_BIT_KHR |
+                            VK_ACCESS_2_ACCELERATION_STRUCTURE_WRITE_BIT_KHR);
 }
 
 std::uint64_t AccelerationStats::blas_triangles() const {
@@ -84,10 +84,10 @@ std::uint64_t AccelerationStats::total_bytes() const {
            geometry_record_bytes + posed.stream_bytes + posed.blas_bytes + posed.scratch_bytes;
 }
 
-SceneAccelerationStructures::SceneAccelerationStructures(ResourceManager& resources,
+SceneAccelerationStructures::SceneAccelerationStructures(gpu::ResourceManager& resources,
                                                          const Scene& scene, const GpuScene& gpu,
                                                          const AccelerationSettings& settings)
-    : resources_(resources), fn_(RayTracingFunctions::load(resources.context())) {
+    : resources_(resources), fn_(gpu::RayTracingFunctions::load(resources.context())) {
     const auto start = std::chrono::steady_clock::now();
     try {
         build_blas(scene, gpu, settings);
@@ -111,7 +111,7 @@ SceneAccelerationStructures::~SceneAccelerationStructures() {
 void SceneAccelerationStructures::update_pose(const PoseFrame& frame) {
     if (posed_) {
         BuildTimer timer(resources_.context(), 2);
-        CommandRecorder rec(resources_.context());
+        gpu::CommandRecorder rec(resources_.context());
         VkCommandBuffer cmd = rec.begin();
         posed_->record(cmd, frame, timer);
         resources_.timeline().wait_for(rec.submit(resources_));
@@ -125,4 +125,4 @@ VkDeviceAddress SceneAccelerationStructures::geometry_records() const {
     return records_.valid() ? resources_.get(records_).address : 0;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -10,7 +10,7 @@
 #include <sherpa/gpu/unique_handle.h>
 #include <sherpa/render/gpu_scene.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 inline std::uint64_t align_up(std::uint64_t v, std::uint64_t a) {
     return a ? (v + a - 1) / a * a : v;
@@ -19,7 +19,7 @@ inline std::uint64_t align_up(std::uint64_t v, std::uint64_t a) {
 // Device-local scratch, released (deferred) when it goes out of scope.
 class ScratchBuffer {
 public:
-    ScratchBuffer(ResourceManager& resources, std::uint64_t bytes);
+    ScratchBuffer(gpu::ResourceManager& resources, std::uint64_t bytes);
     ~ScratchBuffer() { resources_.destroy(buffer_); }
     ScratchBuffer(const ScratchBuffer&) = delete;
     ScratchBuffer& operator=(const ScratchBuffer&) = delete;
@@ -27,8 +27,8 @@ public:
     std::uint64_t bytes() const { return bytes_; }
 
 private:
-    ResourceManager& resources_;
-    BufferHandle buffer_;
+    gpu::ResourceManager& resources_;
+    gpu::BufferHandle buffer_;
     VkDeviceAddress address_ = 0;
     std::uint64_t bytes_ = 0;
 };
@@ -37,7 +37,7 @@ private:
 // without timestamps.
 class BuildTimer {
 public:
-    BuildTimer(const Context& context, std::uint32_t count);
+    BuildTimer(const gpu::Context& context, std::uint32_t count);
     void begin(VkCommandBuffer cmd, std::uint32_t i) const { write(cmd, 2 * i); }
     void end(VkCommandBuffer cmd, std::uint32_t i) const { write(cmd, 2 * i + 1); }
     // Milliseconds per build after the submission completed; -1 where unmeasured.
@@ -46,9 +46,9 @@ public:
 private:
     void write(VkCommandBuffer cmd, std::uint32_t query) const;
 
-    const Context& context_;
+    const gpu::Context& context_;
     std::uint32_t count_;
-    UniqueQueryPool pool_;
+    gpu::UniqueQueryPool pool_;
 };
 
 struct BlasPlan;
@@ -72,4 +72,4 @@ BlasInput describe_blas(const BlasPlan& plan, const GpuScene& gpu,
 // of the structures it built.
 void build_barrier(VkCommandBuffer cmd);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -24,7 +24,7 @@
 #include "background_frag.h"
 #include "background_vert.h"
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 BackgroundPass::BackgroundPass() = default;
 BackgroundPass::~BackgroundPass() {
@@ -49,11 +49,11 @@ void BackgroundPass::release() {
 VkPipeline BackgroundPass::pipeline(FrameContext& f) {
     VkDevice device = f.context.device();
     if (!vert_) {
-        vert_ = create_shader_module(device, spirv_background_vert, "background.vert");
-        frag_ = create_shader_module(device, spirv_background_frag, "background.frag");
+        vert_ = gpu::create_shader_module(device, spirv_background_vert, "background.vert");
+        frag_ = gpu::create_shader_module(device, spirv_background_frag, "background.frag");
     }
     const VkFormat format = f.pipelines.color_format();
-    UniquePipeline& p = pipelines_[format];
+    gpu::UniquePipeline& p = pipelines_[format];
     if (!p) {
         PipelineDesc d{vert_.get(), frag_.get()};
         d.depth = false; // its own rendering, no depth: every pixel is drawn
@@ -83,12 +83,12 @@ bool BackgroundPass::prepare(FrameContext& f) {
         }
     }
     // A moving view (or a target that takes no copies): drawn into the target.
-    transition(f.cmd, {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, kColorTargetReaders,
-                       VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
+    gpu::transition(f.cmd, {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                            VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, kColorTargetReaders,
+                            VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
     draw_whole(f, f.target.view);
-    transition(
+    gpu::transition(
         f.cmd,
         {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
          VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
@@ -99,12 +99,13 @@ bool BackgroundPass::prepare(FrameContext& f) {
 
 // The background over every pixel of `view` (the target's size), in its own rendering.
 void BackgroundPass::draw_whole(FrameContext& f, VkImageView view) {
-    auto color = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+    auto color =
+        gpu::vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
     color.imageView = view;
     color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     color.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE; // every pixel is drawn
     color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    auto ri = vk_init<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
+    auto ri = gpu::vk_init<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
     ri.renderArea = {{0, 0}, {f.target.width, f.target.height}};
     ri.layerCount = 1;
     ri.colorAttachmentCount = 1;
@@ -118,14 +119,14 @@ void BackgroundPass::draw_whole(FrameContext& f, VkImageView view) {
 
 // The background over the whole kept image (no depth: every pixel), left a copy source.
 void BackgroundPass::build_kept(FrameContext& f) {
-    ImagePool& images = f.resources.images();
+    gpu::ImagePool& images = f.resources.images();
     const bool fits = kept_.valid() && images.get(kept_).desc.format == f.target.format &&
                       images.get(kept_).desc.width == f.target.width &&
                       images.get(kept_).desc.height == f.target.height;
     VkImageLayout from = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
     if (!fits) {
         release();
-        ImageDesc d;
+        gpu::ImageDesc d;
         d.format = f.target.format;
         d.width = f.target.width;
         d.height = f.target.height;
@@ -134,41 +135,42 @@ void BackgroundPass::build_kept(FrameContext& f) {
         kept_ = images.create(d);
         from = VK_IMAGE_LAYOUT_UNDEFINED;
     }
-    const Image& kept = images.get(kept_);
+    const gpu::Image& kept = images.get(kept_);
     // Earlier frames may still copy from it: their copies before this frame's drawing.
-    transition(f.cmd, {kept.image.get(), VK_IMAGE_ASPECT_COLOR_BIT, from,
-                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
-                       VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
+    gpu::transition(f.cmd, {kept.image.get(), VK_IMAGE_ASPECT_COLOR_BIT, from,
+                            VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+                            VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
     draw_whole(f, kept.view.get());
     // Copies of this and later frames read it (a barrier orders later submissions too).
-    transition(f.cmd,
-               {kept.image.get(), VK_IMAGE_ASPECT_COLOR_BIT,
-                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
-                VK_ACCESS_2_TRANSFER_READ_BIT});
+    gpu::transition(f.cmd,
+                    {kept.image.get(), VK_IMAGE_ASPECT_COLOR_BIT,
+                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                     VK_ACCESS_2_TRANSFER_READ_BIT});
 }
 
 // The kept background into the target, then the target a colour attachment again.
 void BackgroundPass::copy_kept(FrameContext& f) {
-    const Image& kept = f.resources.images().get(kept_);
+    const gpu::Image& kept = f.resources.images().get(kept_);
     // The target's previous contents do not matter; earlier frames may still read it
     // (a readback copy, a comparison's shaders: the stages begin_camera_rendering waits on).
-    transition(f.cmd, {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kColorTargetReaders, VK_ACCESS_2_NONE,
-                       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
+    gpu::transition(f.cmd,
+                    {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kColorTargetReaders, VK_ACCESS_2_NONE,
+                     VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
     VkImageCopy region{};
     region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.dstSubresource = region.srcSubresource;
     region.extent = {f.target.width, f.target.height, 1};
     vkCmdCopyImage(f.cmd, kept.image.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, f.target.image,
                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-    transition(f.cmd,
-               {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+    gpu::transition(
+        f.cmd, {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                 VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
                 VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                 VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -13,7 +13,7 @@
 
 #include <algorithm>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 BlasInput describe_blas(const BlasPlan& plan, const GpuScene& gpu,
                         VkBuildAccelerationStructureFlagsKHR flags,
@@ -22,7 +22,7 @@ BlasInput describe_blas(const BlasPlan& plan, const GpuScene& gpu,
     for (std::size_t k = 0; k < plan.geometries.size(); ++k) {
         const BlasGeometryPlan& g = plan.geometries[k];
         const GpuMesh& mesh = gpu.meshes()[g.mesh];
-        auto geometry = vk_init<VkAccelerationStructureGeometryKHR>(
+        auto geometry = gpu::vk_init<VkAccelerationStructureGeometryKHR>(
             VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR);
         geometry.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
         // Opaque materials skip any-hit; masked and blended ones reach it (alpha test)
@@ -30,7 +30,7 @@ BlasInput describe_blas(const BlasPlan& plan, const GpuScene& gpu,
         geometry.flags = g.opaque ? VK_GEOMETRY_OPAQUE_BIT_KHR
                                   : VK_GEOMETRY_NO_DUPLICATE_ANY_HIT_INVOCATION_BIT_KHR;
         auto& t = geometry.geometry.triangles;
-        t = vk_init<VkAccelerationStructureGeometryTrianglesDataKHR>(
+        t = gpu::vk_init<VkAccelerationStructureGeometryTrianglesDataKHR>(
             VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR);
         t.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
         t.vertexData.deviceAddress = k < positions.size()
@@ -45,14 +45,14 @@ BlasInput describe_blas(const BlasPlan& plan, const GpuScene& gpu,
         in.ranges.push_back({g.triangles, 0, 0, 0});
         in.max_primitives.push_back(g.triangles);
     }
-    in.info = vk_init<VkAccelerationStructureBuildGeometryInfoKHR>(
+    in.info = gpu::vk_init<VkAccelerationStructureBuildGeometryInfoKHR>(
         VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
     in.info.type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR;
     in.info.flags = flags;
     in.info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
     in.info.geometryCount = static_cast<std::uint32_t>(in.geometries.size());
     in.info.pGeometries = in.geometries.data();
-    in.sizes = vk_init<VkAccelerationStructureBuildSizesInfoKHR>(
+    in.sizes = gpu::vk_init<VkAccelerationStructureBuildSizesInfoKHR>(
         VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR);
     return in;
 }
@@ -60,7 +60,7 @@ BlasInput describe_blas(const BlasPlan& plan, const GpuScene& gpu,
 void SceneAccelerationStructures::build_blas(const Scene& scene, const GpuScene& gpu,
                                              const AccelerationSettings& settings) {
     const std::vector<BlasPlan> plans = plan_blas(scene, gpu.meshes());
-    const Context& context = resources_.context();
+    const gpu::Context& context = resources_.context();
     const VkDevice device = context.device();
 
     // The geometry records, one array for the scene, and the statistics per BLAS.
@@ -117,7 +117,7 @@ void SceneAccelerationStructures::build_blas(const Scene& scene, const GpuScene&
             }
         }
         if (record_mesh_.size() != records.size())
-            throw GpuError("ray tracing: posed geometry records do not copy their BLAS's");
+            throw gpu::GpuError("ray tracing: posed geometry records do not copy their BLAS's");
         stats_.posed = posed_->stats();
     }
     const VkDeviceSize record_bytes = records.size() * sizeof(GPUGeometryInfo);
@@ -125,9 +125,9 @@ void SceneAccelerationStructures::build_blas(const Scene& scene, const GpuScene&
                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
                                              VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
                                              VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                         MemoryUsage::DeviceLocal, "geometry records"});
+                                         gpu::MemoryUsage::DeviceLocal, "geometry records"});
     {
-        UploadBatch batch(resources_);
+        gpu::UploadBatch batch(resources_);
         batch.upload_buffer(records_, 0, records.data(), record_bytes);
         batch.submit_and_wait();
     }
@@ -170,28 +170,28 @@ void SceneAccelerationStructures::build_blas(const Scene& scene, const GpuScene&
     if (batches.empty()) return; // every mesh is instanced posed only (posed_geometry.cpp)
     ScratchBuffer scratch_buffer(resources_, stats_.scratch_buffer_bytes);
 
-    CommandRecorder rec(resources_.context());
+    gpu::CommandRecorder rec(resources_.context());
     for (std::uint32_t b = 0; b < batches.size(); ++b) {
         const auto& batch = batches[b];
         const auto n = static_cast<std::uint32_t>(batch.size());
         BuildTimer timer(context, n);
-        UniqueQueryPool compacted;
+        gpu::UniqueQueryPool compacted;
         if (settings.compact) {
-            compacted = create_query_pool(
+            compacted = gpu::create_query_pool(
                 device, VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR, n);
             vkResetQueryPool(device, compacted.get(), 0, n);
         }
         VkCommandBuffer cmd = rec.begin();
         // The vertex and index uploads are earlier transfers.
-        memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-                       VK_ACCESS_2_SHADER_READ_BIT);
+        gpu::memory_barrier(
+            cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+            VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, VK_ACCESS_2_SHADER_READ_BIT);
         std::vector<VkAccelerationStructureKHR> built;
         VkDeviceAddress offset = 0;
         for (std::uint32_t k = 0; k < n; ++k) {
             const std::uint32_t i = batch[k];
             BlasInput& in = inputs[i];
-            blas_[i] = AccelerationStructure(
+            blas_[i] = gpu::AccelerationStructure(
                 resources_, fn_, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
                 in.sizes.accelerationStructureSize, "BLAS " + stats_.blas[i].name);
             in.info.dstAccelerationStructure = blas_[i].get();
@@ -213,10 +213,11 @@ void SceneAccelerationStructures::build_blas(const Scene& scene, const GpuScene&
         const std::vector<double> ms = timer.read();
         std::vector<VkDeviceSize> compact_sizes(n, 0);
         if (settings.compact)
-            vk_check(vkGetQueryPoolResults(device, compacted.get(), 0, n, n * sizeof(VkDeviceSize),
-                                           compact_sizes.data(), sizeof(VkDeviceSize),
-                                           VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-                     "vkGetQueryPoolResults(compacted sizes)");
+            gpu::vk_check(vkGetQueryPoolResults(device, compacted.get(), 0, n,
+                                                n * sizeof(VkDeviceSize), compact_sizes.data(),
+                                                sizeof(VkDeviceSize),
+                                                VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+                          "vkGetQueryPoolResults(compacted sizes)");
         for (std::uint32_t k = 0; k < n; ++k) {
             BlasStats& s = stats_.blas[batch[k]];
             s.batch = b;
@@ -229,15 +230,15 @@ void SceneAccelerationStructures::build_blas(const Scene& scene, const GpuScene&
 
         // Compaction: a smaller structure per BLAS and a copy; the originals go
         // once the copies completed.
-        std::vector<AccelerationStructure> originals;
+        std::vector<gpu::AccelerationStructure> originals;
         cmd = rec.begin();
         for (std::uint32_t k = 0; k < n; ++k) {
             const std::uint32_t i = batch[k];
             if (compact_sizes[k] == 0 || compact_sizes[k] >= stats_.blas[i].build_bytes) continue;
-            AccelerationStructure small(resources_, fn_,
-                                        VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
-                                        compact_sizes[k], "BLAS " + stats_.blas[i].name);
-            auto copy = vk_init<VkCopyAccelerationStructureInfoKHR>(
+            gpu::AccelerationStructure small(resources_, fn_,
+                                             VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
+                                             compact_sizes[k], "BLAS " + stats_.blas[i].name);
+            auto copy = gpu::vk_init<VkCopyAccelerationStructureInfoKHR>(
                 VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_INFO_KHR);
             copy.src = blas_[i].get();
             copy.dst = small.get();
@@ -251,4 +252,4 @@ void SceneAccelerationStructures::build_blas(const Scene& scene, const GpuScene&
     }
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

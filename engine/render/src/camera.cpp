@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 bool parse_camera_spec(std::string_view text, CameraSpec& spec, std::string& error) {
     spec = CameraSpec{};
@@ -143,4 +143,4 @@ CameraView resolve_camera(const CameraSpec& spec, const SceneCameras& scene,
     return resolve(spec, scene.bounds, scene.cameras, scene.placed_cameras, viewport_aspect);
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

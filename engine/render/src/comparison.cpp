@@ -10,7 +10,7 @@
 #include <cmath>
 #include <limits>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 namespace {
 
 std::uint32_t scaled(std::uint32_t side, float scale) {
@@ -54,10 +54,11 @@ float heat_max_of(const ComparisonSettings& c, const ComparisonStats& latest) {
 
 void check_sides(Renderer& a, Renderer& b) {
     if (&a == &b)
-        throw GpuError("a comparison needs two renderers (one per side): the same renderer was "
-                       "given for both");
+        throw gpu::GpuError(
+            "a comparison needs two renderers (one per side): the same renderer was "
+            "given for both");
     if (&a.context() != &b.context())
-        throw GpuError("a comparison's two renderers must share one Context");
+        throw gpu::GpuError("a comparison's two renderers must share one Context");
 }
 
 } // namespace
@@ -137,7 +138,8 @@ static CompositeInputs record_sides(VkCommandBuffer cmd, std::uint32_t slot, Fra
     return in;
 }
 
-void ComparisonFrame::record(VkCommandBuffer cmd, std::uint32_t slot, const RenderTarget& target) {
+void ComparisonFrame::record(VkCommandBuffer cmd, std::uint32_t slot,
+                             const gpu::RenderTarget& target) {
     FrameRecorder& a = a_.frames();
     const CompositeInputs in = record_sides(cmd, slot, a, a_settings_, b_.frames(), b_settings_,
                                             scaled(target.width, resolution_scale_),
@@ -146,8 +148,8 @@ void ComparisonFrame::record(VkCommandBuffer cmd, std::uint32_t slot, const Rend
     a.comparison().record_composite(cmd, slot, in, target, composite_mode(compare_.mode),
                                     compare_.divider, heat_max_of(compare_, completed_));
     // The submission also completes b's frame: it signals b's timeline too.
-    SubmissionTimeline& timeline = b_.resources().timeline();
-    b_signal_ = vk_init<VkSemaphoreSubmitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO);
+    gpu::SubmissionTimeline& timeline = b_.resources().timeline();
+    b_signal_ = gpu::vk_init<VkSemaphoreSubmitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO);
     b_signal_.semaphore = timeline.semaphore();
     b_signal_.value = timeline.begin_submission();
     b_signal_.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
@@ -168,14 +170,14 @@ ComparisonStats render_comparison(Renderer& a, const FrameRequest& a_settings, R
                                   std::vector<std::uint8_t>* rgba) {
     const std::uint32_t width = a_settings.width, height = a_settings.height;
     if (width == 0 || height == 0 || width > 16384 || height > 16384)
-        throw GpuError("comparison size " + std::to_string(width) + "x" + std::to_string(height) +
-                       " is out of range");
+        throw gpu::GpuError("comparison size " + std::to_string(width) + "x" +
+                            std::to_string(height) + " is out of range");
     ComparisonFrame frame(a, a_settings, b, b_settings, compare);
     FrameRecorder& ai = a.frames();
     constexpr std::uint32_t slot = 0;
     frame.wait_for_slot(slot);
-    const RenderTarget target = ai.targets().offscreen(width, height);
-    CommandRecorder& recorder = ai.slots().recorder(slot);
+    const gpu::RenderTarget target = ai.targets().offscreen(width, height);
+    gpu::CommandRecorder& recorder = ai.slots().recorder(slot);
     // Sides and statistics first; an automatic heat scale needs them before the
     // composite, which then goes in a second submission.
     VkCommandBuffer cmd = recorder.begin();
@@ -184,8 +186,8 @@ ComparisonStats render_comparison(Renderer& a, const FrameRequest& a_settings, R
     ai.comparison().record_stats(cmd, slot, in);
     const bool auto_heat = compare.mode == CompareMode::Difference && compare.heat_max <= 0.0f;
     const auto submit = [&] {
-        SubmissionTimeline& timeline = b.resources().timeline();
-        auto signal = vk_init<VkSemaphoreSubmitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO);
+        gpu::SubmissionTimeline& timeline = b.resources().timeline();
+        auto signal = gpu::vk_init<VkSemaphoreSubmitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO);
         signal.semaphore = timeline.semaphore();
         signal.value = timeline.begin_submission();
         signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
@@ -210,4 +212,4 @@ ComparisonStats render_comparison(Renderer& a, const FrameRequest& a_settings, R
     return frame.completed_;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

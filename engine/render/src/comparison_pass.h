@@ -14,7 +14,7 @@
 #include <optional>
 #include <vector>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 // One side's image, readable by shaders: an RGBA8 UNORM view of the sRGB-encoded
 // bytes (the raster target's alias view, the ray tracer's storage image).
@@ -41,7 +41,7 @@ enum class CompositeMode : std::uint32_t { SideA = 0, Split = 1, Difference = 2 
 
 class ComparisonPass {
 public:
-    ComparisonPass(Context& context, ResourceManager& resources, std::uint32_t slots);
+    ComparisonPass(gpu::Context& context, gpu::ResourceManager& resources, std::uint32_t slots);
     ~ComparisonPass();
     ComparisonPass(const ComparisonPass&) = delete;
     ComparisonPass& operator=(const ComparisonPass&) = delete;
@@ -54,7 +54,7 @@ public:
     // Writes the target (left in target.final_layout). `divider` is a fraction of the
     // width, `heat_max` a difference in 0..1.
     void record_composite(VkCommandBuffer cmd, std::uint32_t slot, const CompositeInputs& in,
-                          const RenderTarget& target, CompositeMode mode, float divider,
+                          const gpu::RenderTarget& target, CompositeMode mode, float divider,
                           float heat_max);
     // What was recorded in `slot` since the last call, once its submission completed.
     ReducedStats take_stats(std::uint32_t slot);
@@ -65,23 +65,23 @@ private:
     void timestamp(VkCommandBuffer cmd, std::uint32_t query, VkPipelineStageFlags2 stage);
     double elapsed_ms(std::uint32_t first_query) const;
 
-    Context& context_;
-    ResourceManager& resources_;
-    UniqueDescriptorSetLayout set_layout_;
-    UniqueDescriptorPool pool_;
-    UniquePipelineLayout layout_;
-    UniquePipeline stats_pipeline_;
-    UniqueShaderModule vert_, frag_;
-    std::map<VkFormat, UniquePipeline> composite_;
-    SamplerHandle sampler_;
-    UniqueQueryPool timestamps_; // null without device timestamps
+    gpu::Context& context_;
+    gpu::ResourceManager& resources_;
+    gpu::UniqueDescriptorSetLayout set_layout_;
+    gpu::UniqueDescriptorPool pool_;
+    gpu::UniquePipelineLayout layout_;
+    gpu::UniquePipeline stats_pipeline_;
+    gpu::UniqueShaderModule vert_, frag_;
+    std::map<VkFormat, gpu::UniquePipeline> composite_;
+    gpu::SamplerHandle sampler_;
+    gpu::UniqueQueryPool timestamps_; // null without device timestamps
     struct Slot {
         VkDescriptorSet set = VK_NULL_HANDLE;
-        BufferHandle stats; // GPUCompareStats, host-visible
+        gpu::BufferHandle stats; // GPUCompareStats, host-visible
         bool stats_pending = false, composite_pending = false;
         std::uint64_t pixels = 0;
     };
     std::vector<Slot> slots_;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -5,9 +5,10 @@
 
 #include <exception>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
-GpuCullChecker::GpuCullChecker(Context& context, ResourceManager& resources, const Scene& scene)
+GpuCullChecker::GpuCullChecker(gpu::Context& context, gpu::ResourceManager& resources,
+                               const Scene& scene)
     : context_(context), resources_(resources), scene_(scene),
       pipeline_(std::make_shared<const GpuCullPipeline>(context)) {
     culler(false);
@@ -54,8 +55,8 @@ bool gpu_cull_passes(const Scene& scene, const std::vector<std::pair<std::string
                      const std::vector<PassResult>& cpu, std::vector<PassResult>& out,
                      std::string& error) {
     try {
-        Context context;
-        ResourceManager resources(context);
+        gpu::Context context;
+        gpu::ResourceManager resources(context);
         GpuCullChecker check(context, resources, scene);
         // Lavapipe compiles the pipeline at its first dispatch (171 ms for the camera
         // pass of a 10k grid): one untimed run keeps that out of `gpu ms`.
@@ -96,4 +97,4 @@ bool gpu_cull_passes(const Scene& scene, const std::vector<std::pair<std::string
     }
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

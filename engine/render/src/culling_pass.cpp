@@ -22,7 +22,7 @@
 #include <numeric>
 #include <span>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 namespace {
 
@@ -42,15 +42,15 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 }
 
 // A device-local list of GPU instance ids (what push constants' instance_ids point at).
-BufferHandle upload_instance_ids(ResourceManager& resources, std::span<const std::uint32_t> ids,
-                                 const char* name) {
+gpu::BufferHandle upload_instance_ids(gpu::ResourceManager& resources,
+                                      std::span<const std::uint32_t> ids, const char* name) {
     const VkDeviceSize bytes = ids.size_bytes();
-    const BufferHandle buffer = resources.create_buffer(
+    const gpu::BufferHandle buffer = resources.create_buffer(
         {bytes,
          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
              VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-         MemoryUsage::DeviceLocal, name});
-    UploadBatch upload(resources);
+         gpu::MemoryUsage::DeviceLocal, name});
+    gpu::UploadBatch upload(resources);
     upload.upload_buffer(buffer, 0, ids.data(), bytes);
     upload.submit_and_wait();
     return buffer;
@@ -58,7 +58,7 @@ BufferHandle upload_instance_ids(ResourceManager& resources, std::span<const std
 
 } // namespace
 
-CullingPass::CullingPass(Context& context, ResourceManager& resources)
+CullingPass::CullingPass(gpu::Context& context, gpu::ResourceManager& resources)
     : context_(context), resources_(resources) {}
 
 CullingPass::~CullingPass() {
@@ -221,10 +221,10 @@ VkDeviceAddress CullingPass::write_posed_objects(FrameContext& f) {
         slot.cull_objects_capacity = bytes;
         slot.cull_objects = resources_.create_buffer(
             {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-             MemoryUsage::Upload, "posed cull objects"});
+             gpu::MemoryUsage::Upload, "posed cull objects"});
         slot.cull_objects_generation = 0; // a new buffer: nothing written yet
     }
-    const Buffer& buf = resources_.get(slot.cull_objects);
+    const gpu::Buffer& buf = resources_.get(slot.cull_objects);
     if (slot.cull_objects_generation == slot.pose_generation &&
         slot.cull_objects_pose == slot.pose_key &&
         slot.cull_objects_version == culling_->objects_version)
@@ -251,7 +251,7 @@ void CullingPass::prepare_buffers(FrameContext& f, std::uint32_t instances) {
         slot.cull_ids = resources_.create_buffer(
             {id_bytes,
              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-             MemoryUsage::Upload, "culled instance ids"});
+             gpu::MemoryUsage::Upload, "culled instance ids"});
     }
     if (slot.culling.path != CullPath::Gpu) return;
     if (culling_->gpu.empty()) build_gpu(*f.scene);
@@ -265,11 +265,11 @@ void CullingPass::prepare_buffers(FrameContext& f, std::uint32_t instances) {
         resources_.destroy(slot.cull_readback);
         slot.cull_readback_capacity = bytes;
         slot.cull_readback = resources_.create_buffer(
-            {bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::Readback, "cull readback"});
+            {bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUsage::Readback, "cull readback"});
     }
     if (!slot.cull_timestamps && context_.info().timestamps)
         slot.cull_timestamps =
-            create_query_pool(context_.device(), VK_QUERY_TYPE_TIMESTAMP, 2 * kMaxCullPasses);
+            gpu::create_query_pool(context_.device(), VK_QUERY_TYPE_TIMESTAMP, 2 * kMaxCullPasses);
     if (slot.cull_timestamps)
         vkResetQueryPool(context_.device(), slot.cull_timestamps.get(), 0, 2 * kMaxCullPasses);
 }
@@ -384,8 +384,8 @@ void CullingPass::record(FrameContext& f) {
         st.cpu_ms = ms_since(t0);
     }
     if (gpu)
-        memory_barrier(f.cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+        gpu::memory_barrier(f.cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                            VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -8,7 +8,7 @@
 
 #include <cstring>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 void CullingPass::read_stats(FrameSlot& slot, const GpuScene* scene, FrameStats& out) {
     out.prepass = slot.prepass;
@@ -86,4 +86,4 @@ void CullingPass::read_stats(FrameSlot& slot, const GpuScene* scene, FrameStats&
     }
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

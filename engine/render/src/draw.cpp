@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 namespace {
 
@@ -197,10 +197,10 @@ void draw_lines(FrameContext& f, const std::vector<GPULineVertex>& lines) {
         slot.lines = f.resources.create_buffer(
             {slot.lines_capacity,
              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-             MemoryUsage::Upload, "overlay lines"});
+             gpu::MemoryUsage::Upload, "overlay lines"});
         offset = 0;
     }
-    const Buffer& buf = f.resources.get(slot.lines);
+    const gpu::Buffer& buf = f.resources.get(slot.lines);
     std::memcpy(static_cast<std::uint8_t*>(buf.mapped) + offset, lines.data(), bytes);
     slot.lines_used = offset + bytes;
     GPUPushConstants pc = slot.push_base;
@@ -227,4 +227,4 @@ void append_box(std::vector<GPULineVertex>& out, const core::Aabb& b, glm::vec4 
             }
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 // Whose draws these are: the camera, or one shadow cascade; with the culling that
 // limits them (null: every instance).
@@ -57,4 +57,4 @@ void draw_lines(FrameContext& f, const std::vector<GPULineVertex>& lines);
 // The 12 edges of a world box as a line list.
 void append_box(std::vector<GPULineVertex>& out, const core::Aabb& box, glm::vec4 color);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

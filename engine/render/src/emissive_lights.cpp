@@ -8,7 +8,7 @@
 #include <cmath>
 #include <optional>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 LuminanceGrid luminance_grid(std::uint32_t width, std::uint32_t height,
                              std::span<const std::uint8_t> rgba8_srgb) {
@@ -241,4 +241,4 @@ EmissiveLights emissive_lights(const Scene& scene, std::size_t max_triangles) {
     return out;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

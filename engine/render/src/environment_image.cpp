@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <numbers>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
@@ -241,4 +241,4 @@ std::vector<std::string_view> tone_map_names() {
     return out;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

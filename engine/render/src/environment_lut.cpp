@@ -8,13 +8,13 @@
 
 #include <chrono>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
-BrdfLut::BrdfLut(Context& context, ResourceManager& resources) : resources_(resources) {
+BrdfLut::BrdfLut(gpu::Context& context, gpu::ResourceManager& resources) : resources_(resources) {
     const auto start = std::chrono::steady_clock::now();
     VkDevice device = context.device();
-    ImagePool& images = resources.images();
-    ImageDesc d;
+    gpu::ImagePool& images = resources.images();
+    gpu::ImageDesc d;
     d.format = VK_FORMAT_R16G16B16A16_SFLOAT;
     d.width = d.height = kSize;
     d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
@@ -23,23 +23,25 @@ BrdfLut::BrdfLut(Context& context, ResourceManager& resources) : resources_(reso
 
     IblLayout layout(device, 1);
     const BrdfLutPass pass(device, layout.layout());
-    const UniqueImageView target = level_view(device, images.get(image_).image.get(), 0, 1);
+    const gpu::UniqueImageView target = level_view(device, images.get(image_).image.get(), 0, 1);
 
-    UniqueQueryPool timestamps;
+    gpu::UniqueQueryPool timestamps;
     if (context.info().timestamps)
-        timestamps = create_query_pool(device, VK_QUERY_TYPE_TIMESTAMP, 2);
-    CommandRecorder rec(context);
+        timestamps = gpu::create_query_pool(device, VK_QUERY_TYPE_TIMESTAMP, 2);
+    gpu::CommandRecorder rec(context);
     VkCommandBuffer cmd = rec.begin();
     const VkImage image = images.get(image_).image.get();
     if (timestamps) {
         vkCmdResetQueryPool(cmd, timestamps.get(), 0, 2);
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps.get(), 0);
     }
-    transition(cmd, {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+    gpu::transition(cmd,
+                    {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                      VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
     pass.record(cmd, layout.bind(VK_NULL_HANDLE, VK_NULL_HANDLE, target.get()), kSize, kSamples);
-    transition(cmd, {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+    gpu::transition(cmd,
+                    {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                      VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
@@ -64,4 +66,4 @@ VkImageView BrdfLut::view() const {
     return resources_.images().get(image_).view.get();
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

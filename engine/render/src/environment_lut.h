@@ -6,14 +6,14 @@
 // without an environment nothing of it stays on the GPU).
 #include <sherpa/gpu/resources.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 class BrdfLut {
 public:
     static constexpr std::uint32_t kSize = 64, kSamples = 128;
 
     // Builds the table on the GPU and waits for it.
-    BrdfLut(Context& context, ResourceManager& resources);
+    BrdfLut(gpu::Context& context, gpu::ResourceManager& resources);
     ~BrdfLut();
     BrdfLut(const BrdfLut&) = delete;
     BrdfLut& operator=(const BrdfLut&) = delete;
@@ -25,9 +25,9 @@ public:
     double build_gpu_ms() const { return build_gpu_ms_; } // the pass, by GPU timestamps
 
 private:
-    ResourceManager& resources_;
-    ImageHandle image_;
+    gpu::ResourceManager& resources_;
+    gpu::ImageHandle image_;
     double build_ms_ = 0.0, build_gpu_ms_ = 0.0;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -18,7 +18,7 @@
 #include <optional>
 #include <vector>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 namespace {
 
 constexpr VkFormat kFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
@@ -31,9 +31,9 @@ std::uint32_t levels_of(std::uint32_t size) {
     return std::uint32_t(std::bit_width(size));
 }
 
-ImageHandle make_cube(ResourceManager& r, std::uint32_t size, std::uint32_t levels,
-                      const char* name, VkImageUsageFlags extra_usage = 0) {
-    ImageDesc d;
+gpu::ImageHandle make_cube(gpu::ResourceManager& r, std::uint32_t size, std::uint32_t levels,
+                           const char* name, VkImageUsageFlags extra_usage = 0) {
+    gpu::ImageDesc d;
     d.format = kFormat;
     d.width = d.height = size;
     d.mip_levels = levels;
@@ -54,21 +54,22 @@ std::uint64_t bytes_of(std::uint32_t size, std::uint32_t levels, std::uint32_t l
 }
 
 void compute_barrier(VkCommandBuffer cmd) {
-    memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                   VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                   VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    gpu::memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 }
 
 } // namespace
 
-EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
+EnvironmentMap::EnvironmentMap(gpu::Context& context, gpu::ResourceManager& resources,
                                const EnvironmentImage& image, const EnvironmentOptions& options,
                                const BrdfLut& lut, bool lut_built)
     : resources_(resources), lut_(lut) {
-    if (!image.valid()) throw GpuError("environment image '" + image.name + "' has no texels");
+    if (!image.valid()) throw gpu::GpuError("environment image '" + image.name + "' has no texels");
     const auto start = std::chrono::steady_clock::now();
     VkDevice device = context.device();
-    ImagePool& images = resources.images();
+    gpu::ImagePool& images = resources.images();
 
     // Sizes: the cube face a quarter of the source's width (90 degrees of 360).
     const std::uint32_t cube = std::clamp<std::uint32_t>(
@@ -105,7 +106,7 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
     const bool float_source =
         equirect_lod == 0.0f &&
         (fp.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0;
-    ImageDesc src_desc;
+    gpu::ImageDesc src_desc;
     src_desc.format = float_source ? kSourceFormat : kFormat;
     src_desc.width = image.width;
     src_desc.height = image.height;
@@ -113,9 +114,9 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
     src_desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
                      VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     src_desc.name = "environment source";
-    ImageHandle source = images.create(src_desc);
+    gpu::ImageHandle source = images.create(src_desc);
     {
-        UploadBatch upload(resources);
+        gpu::UploadBatch upload(resources);
         if (float_source) {
             upload.upload_image(source, image.rgba.data(), image.rgba.size() * sizeof(float));
         } else {
@@ -127,8 +128,8 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
         upload.submit_and_wait();
     }
     // The specular cube's level 0 is the radiance cube's, copied (no shader pass).
-    ImageHandle radiance = make_cube(resources, cube, radiance_levels, "environment radiance",
-                                     VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+    gpu::ImageHandle radiance = make_cube(resources, cube, radiance_levels, "environment radiance",
+                                          VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
     specular_ = make_cube(resources, cube, specular_levels, "environment specular",
                           VK_IMAGE_USAGE_TRANSFER_DST_BIT);
     if (!sh9) irradiance_ = make_cube(resources, kIrradianceSize, 1, "environment irradiance");
@@ -137,14 +138,14 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
                    (sh9 ? 0 : bytes_of(kIrradianceSize, 1, 6)) +
                    bytes_of(kSheenSize, sheen_levels, 6) + lut.bytes();
 
-    auto si = vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+    auto si = gpu::vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
     si.magFilter = si.minFilter = VK_FILTER_LINEAR;
     si.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
     si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     si.maxLod = VK_LOD_CLAMP_NONE;
     sampler_ = images.create_sampler(si);
     si.addressModeU = VK_SAMPLER_ADDRESS_MODE_REPEAT; // the equirectangular seam at -X
-    SamplerHandle equirect_sampler = images.create_sampler(si);
+    gpu::SamplerHandle equirect_sampler = images.create_sampler(si);
 
     IblLayout layout(device, 64);
     const EquirectToCubePass to_cube(device, layout.layout());
@@ -156,17 +157,17 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
     const PrefilterPass charlie(device, layout.layout(), PrefilterPass::Lobe::Charlie);
 
     const VkImageView radiance_view = images.get(radiance).view.get();
-    std::vector<UniqueImageView> views; // level views, alive until the build completes
-    auto target = [&](ImageHandle h, std::uint32_t level, std::uint32_t layers) {
+    std::vector<gpu::UniqueImageView> views; // level views, alive until the build completes
+    auto target = [&](gpu::ImageHandle h, std::uint32_t level, std::uint32_t layers) {
         views.push_back(level_view(device, images.get(h).image.get(), level, layers));
         return views.back().get();
     };
     const VkSampler linear = images.get(sampler_);
 
-    UniqueQueryPool timestamps;
+    gpu::UniqueQueryPool timestamps;
     if (context.info().timestamps)
-        timestamps = create_query_pool(device, VK_QUERY_TYPE_TIMESTAMP, kStamps);
-    CommandRecorder rec(context);
+        timestamps = gpu::create_query_pool(device, VK_QUERY_TYPE_TIMESTAMP, kStamps);
+    gpu::CommandRecorder rec(context);
     VkCommandBuffer cmd = rec.begin();
     if (timestamps) {
         vkCmdResetQueryPool(cmd, timestamps.get(), 0, kStamps);
@@ -179,16 +180,17 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
                                  stamp);
         ++stamp;
     };
-    std::vector<ImageHandle> built{radiance, specular_, sheen_};
+    std::vector<gpu::ImageHandle> built{radiance, specular_, sheen_};
     if (!sh9) built.push_back(irradiance_);
-    for (ImageHandle h : built)
-        transition(cmd,
-                   {images.get(h).image.get(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                    VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                    VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
+    for (gpu::ImageHandle h : built)
+        gpu::transition(
+            cmd, {images.get(h).image.get(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                  VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
     // The source was left SHADER_READ_ONLY by the upload; read it in GENERAL as well.
-    transition(cmd, {images.get(source).image.get(), VK_IMAGE_ASPECT_COLOR_BIT,
+    gpu::transition(cmd,
+                    {images.get(source).image.get(), VK_IMAGE_ASPECT_COLOR_BIT,
                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
                      VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
@@ -209,28 +211,29 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
     // radiance cube's level 0, in transfer layouts for the copy alone.
     const VkImage radiance_image = images.get(radiance).image.get();
     const VkImage specular_image = images.get(specular_).image.get();
-    transition(cmd, {radiance_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+    gpu::transition(cmd,
+                    {radiance_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                      VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
                      VK_ACCESS_2_TRANSFER_READ_BIT, 0, 1});
-    transition(cmd,
-               {specular_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
-                VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, 0, 1});
+    gpu::transition(cmd, {specular_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE,
+                          VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT,
+                          VK_ACCESS_2_TRANSFER_WRITE_BIT, 0, 1});
     VkImageCopy sharp{};
     sharp.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 6};
     sharp.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 6};
     sharp.extent = {cube, cube, 1};
     vkCmdCopyImage(cmd, radiance_image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, specular_image,
                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &sharp);
-    transition(cmd,
-               {radiance_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
-                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, 0, 1});
-    transition(cmd, {specular_image, VK_IMAGE_ASPECT_COLOR_BIT,
-                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-                     VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE, 0, 1});
+    gpu::transition(
+        cmd, {radiance_image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+              VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
+              VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, 0, 1});
+    gpu::transition(cmd, {specular_image, VK_IMAGE_ASPECT_COLOR_BIT,
+                          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+                          VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE, 0, 1});
     compute_barrier(cmd); // the radiance cube's other levels
     for (std::uint32_t l = 1; l < specular_levels; ++l) {
         const float roughness = specular_levels > 1 ? float(l) / float(specular_levels - 1) : 0.0f;
@@ -252,12 +255,12 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
                        kSheenSize >> l, roughness, kSheenSamples, cube, radiance_levels);
     }
     built.erase(built.begin()); // the radiance cube is not read after the build
-    for (ImageHandle h : built)
-        transition(cmd,
-                   {images.get(h).image.get(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
-                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
+    for (gpu::ImageHandle h : built)
+        gpu::transition(
+            cmd, {images.get(h).image.get(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
     mark();
     resources.timeline().wait_for(rec.submit(resources));
     if (timestamps) {
@@ -283,19 +286,19 @@ EnvironmentMap::EnvironmentMap(Context& context, ResourceManager& resources,
 }
 
 EnvironmentMap::~EnvironmentMap() {
-    for (ImageHandle* h : {&specular_, &irradiance_, &sheen_})
+    for (gpu::ImageHandle* h : {&specular_, &irradiance_, &sheen_})
         if (h->valid()) resources_.images().destroy(*h);
     resources_.images().destroy(sampler_);
 }
 
 VkDescriptorImageInfo EnvironmentMap::specular_descriptor() const {
-    const ImagePool& images = resources_.images();
+    const gpu::ImagePool& images = resources_.images();
     return {images.get(sampler_), images.get(specular_).view.get(),
             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
 }
 
 void EnvironmentMap::write_descriptors(VkDevice device, VkDescriptorSet set) const {
-    const ImagePool& images = resources_.images();
+    const gpu::ImagePool& images = resources_.images();
     const VkSampler s = images.get(sampler_);
     const VkDescriptorImageInfo infos[] = {
         {s, images.get(specular_).view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
@@ -306,7 +309,7 @@ void EnvironmentMap::write_descriptors(VkDevice device, VkDescriptorSet set) con
     };
     VkWriteDescriptorSet writes[4];
     for (std::uint32_t i = 0; i < 4; ++i) {
-        writes[i] = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        writes[i] = gpu::vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
         writes[i].dstSet = set;
         writes[i].dstBinding = 4 + i;
         writes[i].descriptorCount = 1;
@@ -316,4 +319,4 @@ void EnvironmentMap::write_descriptors(VkDevice device, VkDescriptorSet set) con
     vkUpdateDescriptorSets(device, 4, writes, 0, nullptr);
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -14,7 +14,7 @@
 #include <sherpa/render/environment.h>
 #include <sherpa/render/environment_sh.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 class EnvironmentMap {
 public:
@@ -31,8 +31,9 @@ public:
     // Builds everything on the GPU and waits for it. `image` must be valid(); `lut`
     // outlives the map (its bytes are counted in stats(), and its build time where
     // `lut_built` says it was made for this environment).
-    EnvironmentMap(Context& context, ResourceManager& resources, const EnvironmentImage& image,
-                   const EnvironmentOptions& options, const BrdfLut& lut, bool lut_built);
+    EnvironmentMap(gpu::Context& context, gpu::ResourceManager& resources,
+                   const EnvironmentImage& image, const EnvironmentOptions& options,
+                   const BrdfLut& lut, bool lut_built);
     ~EnvironmentMap();
     EnvironmentMap(const EnvironmentMap&) = delete;
     EnvironmentMap& operator=(const EnvironmentMap&) = delete;
@@ -48,12 +49,12 @@ public:
     const std::optional<Sh9>& irradiance_sh() const { return irradiance_sh_; }
 
 private:
-    ResourceManager& resources_;
+    gpu::ResourceManager& resources_;
     const BrdfLut& lut_;
-    ImageHandle specular_, irradiance_, sheen_;
-    SamplerHandle sampler_;
+    gpu::ImageHandle specular_, irradiance_, sheen_;
+    gpu::SamplerHandle sampler_;
     EnvironmentStats stats_;
     std::optional<Sh9> irradiance_sh_;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -8,7 +8,7 @@
 #include "ibl_lut_comp.h"
 #include "ibl_prefilter_comp.h"
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 namespace {
 constexpr std::uint32_t kGroup = 8; // local_size_x/y of every ibl_*.comp
 }
@@ -19,38 +19,39 @@ IblLayout::IblLayout(VkDevice device, std::uint32_t max_sets) : device_(device) 
         {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
     };
     set_layout_ =
-        create_descriptor_set_layout(device, bindings, "vkCreateDescriptorSetLayout(ibl)");
+        gpu::create_descriptor_set_layout(device, bindings, "vkCreateDescriptorSetLayout(ibl)");
     const VkDescriptorSetLayout set_layout = set_layout_.get();
     const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(GPUIblPush)};
-    layout_ =
-        create_pipeline_layout(device, {&set_layout, 1}, {&push, 1}, "vkCreatePipelineLayout(ibl)");
+    layout_ = gpu::create_pipeline_layout(device, {&set_layout, 1}, {&push, 1},
+                                          "vkCreatePipelineLayout(ibl)");
     const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, max_sets},
                                           {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, max_sets}};
-    pool_ = create_descriptor_pool(device, max_sets, sizes, "vkCreateDescriptorPool(ibl)");
+    pool_ = gpu::create_descriptor_pool(device, max_sets, sizes, "vkCreateDescriptorPool(ibl)");
 }
 
 VkDescriptorSet IblLayout::bind(VkSampler sampler, VkImageView source, VkImageView destination) {
     const VkDescriptorSetLayout set_layout = set_layout_.get();
-    auto ai = vk_init<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
+    auto ai =
+        gpu::vk_init<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
     ai.descriptorPool = pool_.get();
     ai.descriptorSetCount = 1;
     ai.pSetLayouts = &set_layout;
     VkDescriptorSet set = VK_NULL_HANDLE;
-    vk_check(vkAllocateDescriptorSets(device_, &ai, &set), "vkAllocateDescriptorSets(ibl)");
+    gpu::vk_check(vkAllocateDescriptorSets(device_, &ai, &set), "vkAllocateDescriptorSets(ibl)");
     // Every image of the build stays in GENERAL: levels are written and read in turn.
     const VkDescriptorImageInfo src{sampler, source, VK_IMAGE_LAYOUT_GENERAL};
     const VkDescriptorImageInfo dst{VK_NULL_HANDLE, destination, VK_IMAGE_LAYOUT_GENERAL};
     VkWriteDescriptorSet writes[2];
     std::uint32_t count = 0;
     if (source != VK_NULL_HANDLE) {
-        writes[count] = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        writes[count] = gpu::vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
         writes[count].dstSet = set;
         writes[count].dstBinding = 0;
         writes[count].descriptorCount = 1;
         writes[count].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
         writes[count++].pImageInfo = &src;
     }
-    writes[count] = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+    writes[count] = gpu::vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
     writes[count].dstSet = set;
     writes[count].dstBinding = 1;
     writes[count].descriptorCount = 1;
@@ -64,8 +65,8 @@ IblComputePass::IblComputePass(VkDevice device, VkPipelineLayout layout,
                                std::span<const std::uint32_t> code, const char* what,
                                const VkSpecializationInfo* constants)
     : layout_(layout) {
-    const UniqueShaderModule module = create_shader_module(device, code, what);
-    pipeline_ = create_compute_pipeline(device, layout, module.get(), what, constants);
+    const gpu::UniqueShaderModule module = gpu::create_shader_module(device, code, what);
+    pipeline_ = gpu::create_compute_pipeline(device, layout, module.get(), what, constants);
 }
 
 void IblComputePass::dispatch(VkCommandBuffer cmd, VkDescriptorSet set, const GPUIblPush& push,
@@ -135,16 +136,16 @@ void BrdfLutPass::record(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t
     dispatch(cmd, set, p, 1);
 }
 
-UniqueImageView level_view(VkDevice device, VkImage image, std::uint32_t level,
-                           std::uint32_t layers) {
-    auto vi = vk_init<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
+gpu::UniqueImageView level_view(VkDevice device, VkImage image, std::uint32_t level,
+                                std::uint32_t layers) {
+    auto vi = gpu::vk_init<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
     vi.image = image;
     vi.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
     vi.format = VK_FORMAT_R16G16B16A16_SFLOAT;
     vi.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, layers};
     VkImageView v = VK_NULL_HANDLE;
-    vk_check(vkCreateImageView(device, &vi, nullptr, &v), "vkCreateImageView(ibl level)");
-    return UniqueImageView(device, v);
+    gpu::vk_check(vkCreateImageView(device, &vi, nullptr, &v), "vkCreateImageView(ibl level)");
+    return gpu::UniqueImageView(device, v);
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -10,7 +10,7 @@
 #include <sherpa/gpu/context.h>
 #include <sherpa/gpu/unique_handle.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 // C++ twin of IblPush (shaders/include/ibl_sampling.glsl).
 struct GPUIblPush {
@@ -37,9 +37,9 @@ public:
 
 private:
     VkDevice device_;
-    UniqueDescriptorSetLayout set_layout_;
-    UniquePipelineLayout layout_;
-    UniqueDescriptorPool pool_;
+    gpu::UniqueDescriptorSetLayout set_layout_;
+    gpu::UniquePipelineLayout layout_;
+    gpu::UniqueDescriptorPool pool_;
 };
 
 // Records one dispatch over face_size^2 x `layers` texels.
@@ -52,7 +52,7 @@ protected:
 
 private:
     VkPipelineLayout layout_;
-    UniquePipeline pipeline_;
+    gpu::UniquePipeline pipeline_;
 };
 
 // Equirectangular image -> level 0 of the radiance cube.
@@ -92,7 +92,7 @@ public:
 
 // A storage view of one level (layers 0 .. layers - 1) of an RGBA16F `image`, as the
 // passes write it (image2DArray).
-UniqueImageView level_view(VkDevice device, VkImage image, std::uint32_t level,
-                           std::uint32_t layers);
+gpu::UniqueImageView level_view(VkDevice device, VkImage image, std::uint32_t level,
+                                std::uint32_t layers);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 std::array<float, 9> sh9_basis(glm::vec3 d) {
     const float x = d.x, y = d.y, z = d.z;
@@ -107,4 +107,4 @@ std::optional<IrradianceMode> parse_irradiance_mode(std::string_view name) {
     return std::nullopt;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -3,7 +3,7 @@
 #include "draw.h"
 #include "passes.h"
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 void FloorPass::record(FrameContext& f) {
     if (!f.settings.floor_only) return;
@@ -42,4 +42,4 @@ void ForwardPass::record(FrameContext& f) {
     draw_groups(f, DrawPipeline{PipelineId::Count, view, false}, alpha_, camera_view(f), tally);
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -14,7 +14,7 @@
 #include <sherpa/scene/culling_passes.h>
 #include <sherpa/scene/shadow_cascades.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 class EnvironmentMap;
 struct SceneLights;
@@ -59,15 +59,15 @@ struct FrameCulling {
 
 // Resources of one frame in flight.
 struct FrameSlot {
-    explicit FrameSlot(Context& context) : recorder(context) {}
-    CommandRecorder recorder;
-    BufferHandle frame_data;               // GPUFrameData, host-visible uniform buffer
+    explicit FrameSlot(gpu::Context& context) : recorder(context) {}
+    gpu::CommandRecorder recorder;
+    gpu::BufferHandle frame_data;          // GPUFrameData, host-visible uniform buffer
     VkDescriptorSet set = VK_NULL_HANDLE;  // set 1: frame data + the scene's materials
     std::uint64_t set_generation = ~0ull;  // scene generation the set's materials belong to
     std::uint64_t set_environment = ~0ull; // environment generation the set's maps belong to
-    BufferHandle lines;                    // overlay line vertices, host-visible, grown on demand
+    gpu::BufferHandle lines;               // overlay line vertices, host-visible, grown on demand
     VkDeviceSize lines_capacity = 0, lines_used = 0; // lines_used: bytes written this frame
-    UniqueQueryPool timestamps, statistics;
+    gpu::UniqueQueryPool timestamps, statistics;
     std::uint64_t submission = 0; // timeline value of the last frame recorded here
     bool has_results = false;
     bool shadows_rendered = false;
@@ -77,11 +77,11 @@ struct FrameSlot {
     ShadowCascades cascades;      // fitted this frame (see frame_data.cpp)
     FrameCulling culling;         // see culling_pass.cpp
     CullStats prepass;            // draws and triangles of the depth prepass
-    BufferHandle cull_ids;        // CPU path: compacted ids per view, host-visible
+    gpu::BufferHandle cull_ids;   // CPU path: compacted ids per view, host-visible
     VkDeviceSize cull_ids_capacity = 0;
-    BufferHandle cull_readback; // GPU path: indirect commands (+ visible flags when checking)
+    gpu::BufferHandle cull_readback; // GPU path: indirect commands (+ visible flags when checking)
     VkDeviceSize cull_readback_capacity = 0;
-    UniqueQueryPool cull_timestamps; // two per view around the GPU culling dispatch
+    gpu::UniqueQueryPool cull_timestamps; // two per view around the GPU culling dispatch
     bool history_pushed = false;
     // The frame was ray traced (record_side): two timestamps, no culling or statistics.
     bool ray_traced = false;
@@ -90,7 +90,7 @@ struct FrameSlot {
     // weights and joint highlights, host-visible; and each GPU instance's world bounds
     // in the frame's pose, which culling, sorting and overlays use instead of the
     // scene's static ones.
-    BufferHandle pose;
+    gpu::BufferHandle pose;
     VkDeviceSize pose_capacity = 0;
     bool posed = false;
     std::vector<core::Aabb> posed_bounds;
@@ -103,7 +103,7 @@ struct FrameSlot {
     std::shared_ptr<const Pose> pose_written;
     std::optional<std::uint32_t> joint_written;
     std::uint64_t pose_generation = 0; // 0: nothing written
-    BufferHandle cull_objects;         // GPU path while posed: GPUCullObjects of the posed bounds
+    gpu::BufferHandle cull_objects;    // GPU path while posed: GPUCullObjects of the posed bounds
     VkDeviceSize cull_objects_capacity = 0;
     // The pose (pose_generation, pose_key) whose bounds cull_objects holds.
     std::uint64_t cull_objects_generation = 0, cull_objects_pose = 0;
@@ -112,7 +112,7 @@ struct FrameSlot {
 
 // Culling data of the loaded scene.
 struct SceneCulling {
-    BufferHandle identity;             // gl_InstanceIndex -> itself, per scene
+    gpu::BufferHandle identity;        // gl_InstanceIndex -> itself, per scene
     BoxesSoA boxes;                    // instance bounds, GPU instance order
     std::vector<std::uint8_t> invalid; // per GPU instance: box not valid (never culled)
     std::vector<std::uint8_t> blended; // per GPU instance: alpha mode BLEND
@@ -130,7 +130,7 @@ struct SceneCulling {
     // instance (what unculled draws and overlays index) and group_shown their count.
     std::vector<std::uint8_t> hidden;
     std::uint32_t hidden_count = 0, hidden_casters = 0; // all; not blended
-    BufferHandle shown;
+    gpu::BufferHandle shown;
     std::vector<std::uint32_t> group_shown;
     std::uint64_t objects_version = 1; // bumped when the GPU cullers' objects change
     bool is_hidden(std::uint32_t gpu_instance) const {
@@ -145,9 +145,9 @@ struct FrameContext {
     std::uint32_t slot_index; // which frame in flight: the GPU cullers' block
     Pipelines& pipelines;
     const FrameRequest& settings;
-    const RenderTarget& target;
-    Context& context;
-    ResourceManager& resources;
+    const gpu::RenderTarget& target;
+    gpu::Context& context;
+    gpu::ResourceManager& resources;
     const GpuScene* scene;                       // null: nothing loaded
     SceneCulling* culling;                       // null: nothing loaded
     const SceneLights& lighting;                 // bounds, lights and cameras of the loaded scene
@@ -162,4 +162,4 @@ inline const std::vector<core::Aabb>& instance_bounds(const FrameContext& f) {
     return f.slot.posed ? f.slot.posed_bounds : f.scene->instance_bounds();
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

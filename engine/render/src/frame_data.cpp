@@ -10,7 +10,7 @@
 #include <cmath>
 #include <cstring>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 namespace {
 
 // The bounds shadow cascades are fitted to: the scene's, grown by where its moving
@@ -147,4 +147,4 @@ void FrameRecorder::write_frame_data(FrameContext& frame) {
     std::memcpy(resources->get(slot.frame_data).mapped, &f, sizeof(f));
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -20,7 +20,7 @@
 
 #include <map>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 // The sun the frame is lit and shadowed by (frame_data.cpp).
 struct MainSun {
@@ -56,7 +56,7 @@ public:
     // Swapchain path: waits until frame slot `slot` is free, records the frame into
     // `cmd` (already begun) drawing into `target`. The caller submits `cmd` with the
     // value from `resources().begin_submission()` and passes it to slots().finish().
-    void record_frame(VkCommandBuffer cmd, std::uint32_t slot, const RenderTarget& target,
+    void record_frame(VkCommandBuffer cmd, std::uint32_t slot, const gpu::RenderTarget& target,
                       const FrameRequest& settings);
     // The frames in flight: waiting, submission, command recorders.
     FrameSlots& slots() { return slots_; }
@@ -118,7 +118,7 @@ private:
 // An offscreen frame of `settings` (FrameRequest::renderer picks the raster or the ray
 // tracer) into the recorder's offscreen target, submitted and waited for; with `rgba`,
 // read back as tightly packed sRGB-encoded RGBA8 rows, top row first (Renderer::render()).
-FrameStats render_offscreen(FrameRecorder& frames, ResourceManager& resources,
+FrameStats render_offscreen(FrameRecorder& frames, gpu::ResourceManager& resources,
                             const FrameRequest& settings, std::vector<std::uint8_t>* rgba);
 
 // A comparison side or a presented ray-traced frame (renderer_side.cpp): records
@@ -128,4 +128,4 @@ FrameStats render_offscreen(FrameRecorder& frames, ResourceManager& resources,
 SideImage record_side(FrameRecorder& frames, VkCommandBuffer cmd, std::uint32_t slot,
                       const FrameRequest& settings);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

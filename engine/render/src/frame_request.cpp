@@ -1,6 +1,6 @@
 #include <sherpa/render/frame_request.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 std::string_view to_string(DebugView v) {
     const auto i = static_cast<std::size_t>(v);
@@ -123,4 +123,4 @@ bool prepass_enabled(PrepassMode mode, bool cpu_device, std::uint64_t triangles,
     return !cpu_device || triangles * 4 <= pixels;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -14,7 +14,7 @@
 #include <memory>
 #include <vector>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 class FrameSlots : private SceneStateRefs {
 public:
@@ -38,7 +38,7 @@ public:
     // are read when the slot comes round again.
     void finish(std::uint32_t index, std::uint64_t submission);
     // Slot `index`'s command recorder (offscreen comparisons, comparison.cpp).
-    CommandRecorder& recorder(std::uint32_t index) { return slots_.at(index)->recorder; }
+    gpu::CommandRecorder& recorder(std::uint32_t index) { return slots_.at(index)->recorder; }
     // Set 1's layout (the pipelines' and the transmission pass's).
     VkDescriptorSetLayout layout() const { return frame_layout_.get(); }
     // Points the slot's set at its frame data, the loaded scene's materials, the
@@ -48,11 +48,11 @@ public:
 private:
     void create_frame_sets();
 
-    UniqueDescriptorSetLayout frame_layout_;
-    UniqueDescriptorPool frame_pool_;
-    BufferHandle no_materials_; // bound while no scene is loaded
+    gpu::UniqueDescriptorSetLayout frame_layout_;
+    gpu::UniqueDescriptorPool frame_pool_;
+    gpu::BufferHandle no_materials_; // bound while no scene is loaded
     std::vector<std::unique_ptr<FrameSlot>> slots_;
     std::uint32_t next_slot_ = 0;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

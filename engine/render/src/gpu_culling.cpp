@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cstring>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 namespace {
 
 // The parameters come through a uniform buffer, not a device address: every
@@ -42,23 +42,24 @@ GPUCullParams cull_params(const Frustum& f, CullMethod method, std::uint32_t obj
     return p;
 }
 
-GpuCullPipeline::GpuCullPipeline(const Context& context) {
+GpuCullPipeline::GpuCullPipeline(const gpu::Context& context) {
     const VkDevice device = context.device();
     const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
                                                VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-    set_layout_ =
-        create_descriptor_set_layout(device, {&binding, 1}, "vkCreateDescriptorSetLayout(cull)");
+    set_layout_ = gpu::create_descriptor_set_layout(device, {&binding, 1},
+                                                    "vkCreateDescriptorSetLayout(cull)");
     const VkDescriptorSetLayout set_layout = set_layout_.get();
     const VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(CullPush)};
-    layout_ = create_pipeline_layout(device, {&set_layout, 1}, {&range, 1},
-                                     "vkCreatePipelineLayout(cull)");
-    const UniqueShaderModule module =
-        create_shader_module(device, spirv_cull_comp, "vkCreateShaderModule(cull)");
-    pipeline_ =
-        create_compute_pipeline(device, layout_.get(), module.get(), "vkCreateComputePipelines");
+    layout_ = gpu::create_pipeline_layout(device, {&set_layout, 1}, {&range, 1},
+                                          "vkCreatePipelineLayout(cull)");
+    const gpu::UniqueShaderModule module =
+        gpu::create_shader_module(device, spirv_cull_comp, "vkCreateShaderModule(cull)");
+    pipeline_ = gpu::create_compute_pipeline(device, layout_.get(), module.get(),
+                                             "vkCreateComputePipelines");
 }
 
-GpuCuller::GpuCuller(Context& context, ResourceManager& resources, std::uint32_t parameter_blocks,
+GpuCuller::GpuCuller(gpu::Context& context, gpu::ResourceManager& resources,
+                     std::uint32_t parameter_blocks,
                      std::shared_ptr<const GpuCullPipeline> pipeline)
     : context_(context), resources_(resources),
       pipeline_(pipeline ? std::move(pipeline) : std::make_shared<const GpuCullPipeline>(context)),
@@ -66,26 +67,27 @@ GpuCuller::GpuCuller(Context& context, ResourceManager& resources, std::uint32_t
     const VkDevice device = context.device();
     const std::uint32_t blocks = std::max(parameter_blocks, 1u);
     const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, blocks};
-    pool_ = create_descriptor_pool(device, blocks, {&size, 1}, "vkCreateDescriptorPool(cull)");
+    pool_ = gpu::create_descriptor_pool(device, blocks, {&size, 1}, "vkCreateDescriptorPool(cull)");
     const VkDescriptorPool pool = pool_.get();
     const VkDescriptorSetLayout set_layout = pipeline_->set_layout();
 
     if (context.info().timestamps)
-        timestamps_ = create_query_pool(device, VK_QUERY_TYPE_TIMESTAMP, 2);
+        timestamps_ = gpu::create_query_pool(device, VK_QUERY_TYPE_TIMESTAMP, 2);
     for (std::uint32_t b = 0; b < blocks; ++b) {
         params_.push_back(
             resources_.create_buffer({sizeof(GPUCullParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                      MemoryUsage::Upload, "cull params"}));
-        auto ai =
-            vk_init<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
+                                      gpu::MemoryUsage::Upload, "cull params"}));
+        auto ai = gpu::vk_init<VkDescriptorSetAllocateInfo>(
+            VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
         ai.descriptorPool = pool;
         ai.descriptorSetCount = 1;
         ai.pSetLayouts = &set_layout;
         VkDescriptorSet set = VK_NULL_HANDLE;
-        vk_check(vkAllocateDescriptorSets(device, &ai, &set), "vkAllocateDescriptorSets(cull)");
+        gpu::vk_check(vkAllocateDescriptorSets(device, &ai, &set),
+                      "vkAllocateDescriptorSets(cull)");
         const VkDescriptorBufferInfo info{resources_.get(params_.back()).buffer.get(), 0,
                                           sizeof(GPUCullParams)};
-        auto w = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        auto w = gpu::vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
         w.dstSet = set;
         w.descriptorCount = 1;
         w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
@@ -97,11 +99,11 @@ GpuCuller::GpuCuller(Context& context, ResourceManager& resources, std::uint32_t
 
 GpuCuller::~GpuCuller() {
     release();
-    for (BufferHandle& b : params_) resources_.destroy(b);
+    for (gpu::BufferHandle& b : params_) resources_.destroy(b);
 }
 
 void GpuCuller::release() {
-    for (BufferHandle* b :
+    for (gpu::BufferHandle* b :
          {&objects_, &draws_, &draws_clear_, &counts_, &ids_, &visible_, &readback_})
         if (b->valid()) resources_.destroy(*b);
     objects_count_ = batch_count_ = 0;
@@ -141,7 +143,7 @@ void GpuCuller::build(const MeshPass& pass, std::span<const core::Aabb> bounds,
     for (std::uint32_t b = 0; b < batches.size(); ++b) {
         const IndirectBatch& batch = batches[b];
         if (batch.mesh_id >= meshes.size())
-            throw GpuError("cull batch names mesh " + std::to_string(batch.mesh_id));
+            throw gpu::GpuError("cull batch names mesh " + std::to_string(batch.mesh_id));
         draws[b] = {meshes[batch.mesh_id].index_count, 0, meshes[batch.mesh_id].first_index, 0,
                     batch.first};
         for (std::uint32_t k = batch.first; k < batch.first + batch.count; ++k) {
@@ -166,28 +168,28 @@ void GpuCuller::build(std::span<const GPUCullObject> objects,
     const VkDeviceSize id_bytes = objects.size() * sizeof(std::uint32_t);
     objects_ =
         resources_.create_buffer({object_bytes, kAddressable | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                  MemoryUsage::DeviceLocal, "cull objects"});
+                                  gpu::MemoryUsage::DeviceLocal, "cull objects"});
     draws_clear_ = resources_.create_buffer(
         {draw_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-         MemoryUsage::DeviceLocal, "cull draws (clear copy)"});
+         gpu::MemoryUsage::DeviceLocal, "cull draws (clear copy)"});
     draws_ = resources_.create_buffer({draw_bytes,
                                        kAddressable | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
                                            VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                                            VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                       MemoryUsage::DeviceLocal, "cull draws"});
+                                       gpu::MemoryUsage::DeviceLocal, "cull draws"});
     counts_ = resources_.create_buffer(
         {draws.size() * sizeof(std::uint32_t),
          VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-         MemoryUsage::DeviceLocal, "cull draw counts"});
+         gpu::MemoryUsage::DeviceLocal, "cull draw counts"});
     ids_ = resources_.create_buffer({id_bytes, kAddressable | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                     MemoryUsage::DeviceLocal, "cull instance ids"});
+                                     gpu::MemoryUsage::DeviceLocal, "cull instance ids"});
     visible_ = resources_.create_buffer({id_bytes, kAddressable | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                         MemoryUsage::DeviceLocal, "cull visible flags"});
+                                         gpu::MemoryUsage::DeviceLocal, "cull visible flags"});
     readback_ =
         resources_.create_buffer({2 * id_bytes + draw_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                  MemoryUsage::Readback, "cull readback"});
+                                  gpu::MemoryUsage::Readback, "cull readback"});
     const std::vector<std::uint32_t> ones(draws.size(), 1u); // each batch is one indirect draw
-    UploadBatch upload(resources_);
+    gpu::UploadBatch upload(resources_);
     upload.upload_buffer(objects_, 0, objects.data(), object_bytes);
     upload.upload_buffer(draws_clear_, 0, draws.data(), draw_bytes);
     upload.upload_buffer(counts_, 0, ones.data(), ones.size() * sizeof(std::uint32_t));
@@ -211,23 +213,24 @@ void GpuCuller::record(VkCommandBuffer cmd, const Frustum& frustum, CullMethod m
                        std::uint32_t parameter_block, bool timestamps, VkDeviceAddress objects) {
     if (objects_count_ == 0) return;
     const GPUCullParams params = cull_params(frustum, method, objects_count_);
-    const BufferHandle block = params_.at(parameter_block);
+    const gpu::BufferHandle block = params_.at(parameter_block);
     std::memcpy(resources_.get(block).mapped, &params, sizeof(params));
     timestamps = timestamps && timestamps_.get() != VK_NULL_HANDLE;
     const VkDeviceSize draw_bytes =
         VkDeviceSize{batch_count_} * sizeof(VkDrawIndexedIndirectCommand);
     // Previous readers of the draws (indirect draws, transfers) finish before the reset.
-    memory_barrier(cmd,
-                   VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
-                       VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                   VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
-                       VK_ACCESS_2_TRANSFER_READ_BIT,
-                   VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    gpu::memory_barrier(cmd,
+                        VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT |
+                            VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
+                            VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                        VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT |
+                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT,
+                        VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
     const VkBufferCopy copy{0, 0, draw_bytes};
     vkCmdCopyBuffer(cmd, resources_.get(draws_clear_).buffer.get(), draws(), 1, &copy);
-    memory_barrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    gpu::memory_barrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     if (timestamps) {
         vkCmdResetQueryPool(cmd, timestamps_.get(), 0, 2);
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, timestamps_.get(), 0);
@@ -243,12 +246,12 @@ void GpuCuller::record(VkCommandBuffer cmd, const Frustum& frustum, CullMethod m
     vkCmdDispatch(cmd, (objects_count_ + 255) / 256, 1, 1);
     if (timestamps)
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, timestamps_.get(), 1);
-    memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                   VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                   VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
-                       VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                   VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
-                       VK_ACCESS_2_TRANSFER_READ_BIT);
+    gpu::memory_barrier(
+        cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+        VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
+            VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+        VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
+            VK_ACCESS_2_TRANSFER_READ_BIT);
 }
 
 GpuCullReadback GpuCuller::run(const Frustum& frustum, CullMethod method) {
@@ -263,8 +266,8 @@ GpuCullReadback GpuCuller::run(const Frustum& frustum, CullMethod method) {
     vkCmdCopyBuffer(cmd, resources_.get(visible_).buffer.get(), rb, 1, &vis);
     vkCmdCopyBuffer(cmd, resources_.get(ids_).buffer.get(), rb, 1, &ids);
     vkCmdCopyBuffer(cmd, draws(), rb, 1, &dr);
-    memory_barrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                   VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    gpu::memory_barrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
     resources_.timeline().wait_for(recorder_.submit(resources_));
     const auto* bytes = static_cast<const std::uint8_t*>(resources_.get(readback_).mapped);
     std::vector<std::uint32_t> vis32(n);
@@ -285,4 +288,4 @@ GpuCullReadback GpuCuller::run(const Frustum& frustum, CullMethod method) {
     return out;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

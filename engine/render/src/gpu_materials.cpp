@@ -10,7 +10,7 @@
 
 #include <cstring>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 namespace {
 
 constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
@@ -33,9 +33,10 @@ void GpuMaterials::build(std::span<const MaterialInstance> materials) {
             // A failed texture reads white (the factor alone) or the flat normal, not
             // the checker: the texture pipeline has warned, and a checker would only
             // tint the factor.
-            const std::uint32_t fallback = role == kRoleNormal ? kFlatNormalTexture : kWhiteTexture;
+            const std::uint32_t fallback =
+                role == kRoleNormal ? gpu::kFlatNormalTexture : gpu::kWhiteTexture;
             const std::uint32_t tex = textures_->field_slot(slot, role, fallback);
-            return tex == kCheckerTexture ? fallback : tex;
+            return tex == gpu::kCheckerTexture ? fallback : tex;
         });
     for (const MaterialInstance& m : materials) {
         // Texture fields resolved to bindless slots, absent ones to the defaults.
@@ -47,13 +48,13 @@ void GpuMaterials::build(std::span<const MaterialInstance> materials) {
         x.uv[kSlotOcclusion] = texture_transform(m.occlusion);
         x.uv[kSlotEmissive] = texture_transform(m.emissive);
         x.unlit = m.unlit ? 1u : 0u;
-        x.specular_glossiness_tex = kWhiteTexture;
+        x.specular_glossiness_tex = gpu::kWhiteTexture;
         x.extensions = extensions_.places[data_.size() - 1].index;
         if (const auto& sg = m.specular_glossiness) {
             x.workflow = kWorkflowSpecularGlossiness;
             x.uv[kSlotSpecularGlossiness] = texture_transform(sg->specular_glossiness);
             x.specular_glossiness_tex =
-                textures_->field_slot(sg->specular_glossiness, kRoleColor, kWhiteTexture);
+                textures_->field_slot(sg->specular_glossiness, kRoleColor, gpu::kWhiteTexture);
             x.specular_glossiness = glm::vec4(sg->specular_factor, sg->glossiness_factor);
         }
         extras_data_.push_back(x);
@@ -70,10 +71,10 @@ void GpuMaterials::upload(const Scene& scene) {
     const VkDeviceSize extra_bytes = extras_data_.size() * sizeof(GPUMaterialExtra);
     // Copied out too: the editor's material dock reads records back from this buffer.
     materials_ = resources_.create_buffer({bytes, kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                           MemoryUsage::DeviceLocal, "materials"});
-    extras_ =
-        resources_.create_buffer({extra_bytes, kStorage, MemoryUsage::DeviceLocal, "material uv"});
-    UploadBatch batch(resources_);
+                                           gpu::MemoryUsage::DeviceLocal, "materials"});
+    extras_ = resources_.create_buffer(
+        {extra_bytes, kStorage, gpu::MemoryUsage::DeviceLocal, "material uv"});
+    gpu::UploadBatch batch(resources_);
     batch.upload_buffer(materials_, 0, data_.data(), bytes);
     batch.upload_buffer(extras_, 0, extras_data_.data(), extra_bytes);
     // Only where some material uses a drawn extension (the binding is partially bound).
@@ -81,7 +82,7 @@ void GpuMaterials::upload(const Scene& scene) {
         // Copied out too: the material readback reads a material's blocks.
         extension_buffer_ = resources_.create_buffer(
             {extensions_.bytes(), kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-             MemoryUsage::DeviceLocal, "material extensions"});
+             gpu::MemoryUsage::DeviceLocal, "material extensions"});
         batch.upload_buffer(extension_buffer_, 0, extensions_.words.data(), extensions_.bytes());
     }
     batch.submit_and_wait();
@@ -93,8 +94,8 @@ namespace {
 // Uploads the elements of `now` that differ from `before` (same length), runs of
 // neighbours as one copy; returns the bytes.
 template <class T>
-std::uint64_t upload_changed(UploadBatch& batch, BufferHandle buffer, const std::vector<T>& before,
-                             const std::vector<T>& now) {
+std::uint64_t upload_changed(gpu::UploadBatch& batch, gpu::BufferHandle buffer,
+                             const std::vector<T>& before, const std::vector<T>& now) {
     std::uint64_t bytes = 0;
     for (std::size_t i = 0; i < now.size();) {
         if (std::memcmp(&before[i], &now[i], sizeof(T)) == 0) {
@@ -120,8 +121,8 @@ std::uint64_t GpuMaterials::update(std::span<const MaterialInstance> materials) 
     build(materials);
     // Which materials use an extension does not change with values: same layout.
     if (extensions_.words.size() != words.size())
-        throw GpuError("material update: the extension layout changed");
-    UploadBatch batch(resources_);
+        throw gpu::GpuError("material update: the extension layout changed");
+    gpu::UploadBatch batch(resources_);
     std::uint64_t bytes = upload_changed(batch, materials_, data, data_);
     bytes += upload_changed(batch, extras_, extras, extras_data_);
     if (extension_buffer_.valid())
@@ -130,4 +131,4 @@ std::uint64_t GpuMaterials::update(std::span<const MaterialInstance> materials) 
     return bytes;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

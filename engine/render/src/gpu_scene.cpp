@@ -13,7 +13,7 @@
 #include <numeric>
 #include <tuple>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 namespace {
 
@@ -68,14 +68,14 @@ void append_stream(std::vector<std::uint8_t>& out, const Mesh& mesh, VertexAttri
 
 } // namespace
 
-GpuScene::GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+GpuScene::GpuScene(gpu::ResourceManager& resources, gpu::BindlessTable& table, const Scene& scene,
                    std::shared_ptr<const tex::PreparedTextureSet> textures, StreamPolicy policy,
                    MissingTextures missing)
     : resources_(resources), table_(table), policy_(policy) {
     upload(scene, std::move(textures), missing);
 }
 
-GpuScene::GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+GpuScene::GpuScene(gpu::ResourceManager& resources, gpu::BindlessTable& table, const Scene& scene,
                    const TextureSettings& texture_settings, StreamPolicy policy,
                    MissingTextures missing)
     : resources_(resources), table_(table), policy_(policy) {
@@ -108,11 +108,13 @@ GpuScene::~GpuScene() {
 }
 
 void GpuScene::release() {
-    for (BufferHandle* b : {&vertices_, &indices_, &instances_, &motion_streams_, &motion_meshes_})
+    for (gpu::BufferHandle* b :
+         {&vertices_, &indices_, &instances_, &motion_streams_, &motion_meshes_})
         resources_.destroy(*b);
 }
 
-GpuMaterials::GpuMaterials(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+GpuMaterials::GpuMaterials(gpu::ResourceManager& resources, gpu::BindlessTable& table,
+                           const Scene& scene,
                            std::shared_ptr<const tex::PreparedTextureSet> textures,
                            MissingTextures missing)
     : resources_(resources), textures_(std::make_unique<SceneTextures>(
@@ -147,9 +149,9 @@ void GpuScene::upload_geometry(const Scene& scene) {
         if (mesh.topology() == Topology::Points) g.flags |= kMeshPointsBit;
         if (!instanced[m] || mesh.vertices.empty() || mesh.indices.empty()) continue;
         if (mesh.material_id >= scene.materials.size())
-            throw GpuError("mesh " + std::to_string(m) + " names material " +
-                           std::to_string(mesh.material_id) + " of " +
-                           std::to_string(scene.materials.size()));
+            throw gpu::GpuError("mesh " + std::to_string(m) + " names material " +
+                                std::to_string(mesh.material_id) + " of " +
+                                std::to_string(scene.materials.size()));
 
         // What shading reads; debug views add every authored or generated stream.
         std::array<bool, kVertexAttributeCount> upload =
@@ -175,8 +177,9 @@ void GpuScene::upload_geometry(const Scene& scene) {
         g.vertex_count = static_cast<std::uint32_t>(mesh.vertices.size());
         for (std::uint32_t i : mesh.indices)
             if (i >= mesh.vertices.size())
-                throw GpuError("mesh " + std::to_string(m) + " has index " + std::to_string(i) +
-                               " past its " + std::to_string(mesh.vertices.size()) + " vertices");
+                throw gpu::GpuError("mesh " + std::to_string(m) + " has index " +
+                                    std::to_string(i) + " past its " +
+                                    std::to_string(mesh.vertices.size()) + " vertices");
         indices.insert(indices.end(), mesh.indices.begin(), mesh.indices.end());
         memory_.unified_vertex_bytes += std::uint64_t(sizeof(Vertex)) * mesh.vertices.size() +
                                         (mesh.colors.empty() ? 0 : 16ull * mesh.colors.size());
@@ -191,10 +194,10 @@ void GpuScene::upload_geometry(const Scene& scene) {
     const VkBufferUsageFlags index_usage = VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
                                            VK_BUFFER_USAGE_TRANSFER_DST_BIT | as_input |
                                            (rt ? VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT : 0);
-    UploadBatch batch(resources_);
+    gpu::UploadBatch batch(resources_);
     if (!streams.empty()) {
         vertices_ = resources_.create_buffer(
-            {streams.size(), vertex_usage, MemoryUsage::DeviceLocal, "vertex streams"});
+            {streams.size(), vertex_usage, gpu::MemoryUsage::DeviceLocal, "vertex streams"});
         memory_.geometry_usage |= vertex_usage;
         batch.upload_buffer(vertices_, 0, streams.data(), streams.size());
         const VkDeviceAddress base = resources_.get(vertices_).address;
@@ -204,8 +207,8 @@ void GpuScene::upload_geometry(const Scene& scene) {
     }
     if (!indices.empty()) {
         const VkDeviceSize bytes = indices.size() * sizeof(std::uint32_t);
-        indices_ =
-            resources_.create_buffer({bytes, index_usage, MemoryUsage::DeviceLocal, "indices"});
+        indices_ = resources_.create_buffer(
+            {bytes, index_usage, gpu::MemoryUsage::DeviceLocal, "indices"});
         memory_.geometry_usage |= index_usage;
         batch.upload_buffer(indices_, 0, indices.data(), bytes);
     }
@@ -218,13 +221,13 @@ void GpuScene::upload_geometry(const Scene& scene) {
 // Skinning and morph streams, only for the meshes that move: a static scene makes
 // no buffer and reports 0 motion bytes.
 void GpuScene::upload_motion(const Scene& scene, const std::vector<bool>& instanced,
-                             UploadBatch& batch) {
+                             gpu::UploadBatch& batch) {
     MotionStreams motion = build_motion_streams(scene, instanced);
     if (motion.records.empty()) return;
     VkDeviceAddress base = 0;
     if (!motion.bytes.empty()) {
         motion_streams_ = resources_.create_buffer(
-            {motion.bytes.size(), kStorage, MemoryUsage::DeviceLocal, "motion streams"});
+            {motion.bytes.size(), kStorage, gpu::MemoryUsage::DeviceLocal, "motion streams"});
         batch.upload_buffer(motion_streams_, 0, motion.bytes.data(), motion.bytes.size());
         base = resources_.get(motion_streams_).address;
     }
@@ -240,7 +243,7 @@ void GpuScene::upload_motion(const Scene& scene, const std::vector<bool>& instan
     }
     const VkDeviceSize bytes = motion.records.size() * sizeof(GPUMotionMesh);
     motion_meshes_ =
-        resources_.create_buffer({bytes, kStorage, MemoryUsage::DeviceLocal, "motion meshes"});
+        resources_.create_buffer({bytes, kStorage, gpu::MemoryUsage::DeviceLocal, "motion meshes"});
     batch.upload_buffer(motion_meshes_, 0, motion.records.data(), bytes);
     const VkDeviceAddress records = resources_.get(motion_meshes_).address;
     for (std::size_t m = 0; m < meshes_.size(); ++m)
@@ -302,8 +305,9 @@ void GpuScene::upload_instances(const Scene& scene) {
     }
     if (data.empty()) data.push_back(GPUInstanceData{}); // valid address even for empty scenes
     const VkDeviceSize bytes = data.size() * sizeof(GPUInstanceData);
-    instances_ = resources_.create_buffer({bytes, kStorage, MemoryUsage::DeviceLocal, "instances"});
-    UploadBatch batch(resources_);
+    instances_ =
+        resources_.create_buffer({bytes, kStorage, gpu::MemoryUsage::DeviceLocal, "instances"});
+    gpu::UploadBatch batch(resources_);
     batch.upload_buffer(instances_, 0, data.data(), bytes);
     batch.submit_and_wait();
     memory_.instances = bytes;
@@ -316,8 +320,8 @@ switch_mesh_materials(GpuScene& scene,
     std::vector<std::uint32_t> material_of(scene.meshes_.size(), ~0u); // ~0: unchanged
     for (auto [mesh, material] : meshes) {
         if (mesh >= scene.meshes_.size() || material >= scene.material_modes_.size())
-            throw GpuError("material switch: mesh " + std::to_string(mesh) + " or material " +
-                           std::to_string(material) + " out of range");
+            throw gpu::GpuError("material switch: mesh " + std::to_string(mesh) + " or material " +
+                                std::to_string(material) + " out of range");
         if (scene.meshes_[mesh].material == material) continue;
         scene.meshes_[mesh].material = material;
         material_of[mesh] = material;
@@ -325,7 +329,7 @@ switch_mesh_materials(GpuScene& scene,
     }
     if (out.meshes == 0) return out;
     constexpr VkDeviceSize kWord = offsetof(GPUInstanceData, material);
-    UploadBatch batch(scene.resources_);
+    gpu::UploadBatch batch(scene.resources_);
     for (DrawGroup& g : scene.groups_) {
         const std::uint32_t material = material_of[g.mesh];
         if (material == ~0u || g.material == material) continue;
@@ -346,4 +350,4 @@ switch_mesh_materials(GpuScene& scene,
     return out;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

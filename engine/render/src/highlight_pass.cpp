@@ -18,7 +18,7 @@
 
 #include <algorithm>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 namespace {
 
@@ -137,4 +137,4 @@ void HighlightPass::record(FrameContext& f) {
     vkCmdSetDepthCompareOp(cmd, VK_COMPARE_OP_GREATER_OR_EQUAL);
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

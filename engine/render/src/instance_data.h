@@ -9,7 +9,7 @@
 
 #include <sherpa/render/gpu_structs.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 inline GPUInstanceData make_instance_data(const glm::mat4& world, std::uint32_t material,
                                           std::uint32_t mesh) {
@@ -25,4 +25,4 @@ inline GPUInstanceData make_instance_data(const glm::mat4& world, std::uint32_t 
     return g;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

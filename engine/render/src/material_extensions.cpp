@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstring>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 GPUTextureTransform texture_transform(const TextureSlot& slot) {
     const glm::mat3 m = slot.transform.present ? slot.transform.matrix() : glm::mat3(1.0f);
@@ -147,4 +147,4 @@ MaterialExtensionBuffer build_material_extensions(std::span<const MaterialInstan
     return out;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -7,14 +7,14 @@
 
 #include <cstring>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 std::optional<MaterialReadback> read_material(Renderer& renderer, const Scene& scene,
                                               int material) {
     const GpuScene* gpu_scene = renderer.scene();
     if (!gpu_scene || material < 0 || static_cast<std::size_t>(material) >= scene.materials.size())
         return std::nullopt;
-    ResourceManager& resources = renderer.resources();
+    gpu::ResourceManager& resources = renderer.resources();
     constexpr VkDeviceSize kSize = sizeof(GPUMaterialData);
     // The material's extension words: its index up to the next material's (blocks
     // follow their material's index, in material order).
@@ -30,12 +30,12 @@ std::optional<MaterialReadback> read_material(Renderer& renderer, const Scene& s
             }
     }
     const VkDeviceSize ext_bytes = VkDeviceSize(end - first) * sizeof(glm::uvec4);
-    BufferHandle staging =
+    gpu::BufferHandle staging =
         resources.create_buffer({kSize + ext_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                 MemoryUsage::Readback, "material readback"});
+                                 gpu::MemoryUsage::Readback, "material readback"});
     // One copy out of the device-local material array (and one of the extension
     // buffer), waited on: a dock refresh, not a frame.
-    CommandRecorder recorder(renderer.context());
+    gpu::CommandRecorder recorder(renderer.context());
     const VkCommandBuffer cmd = recorder.begin();
     const VkBufferCopy region{static_cast<VkDeviceSize>(material) * kSize, 0, kSize};
     vkCmdCopyBuffer(cmd, gpu_scene->materials().buffer(), resources.get(staging).buffer.get(), 1,
@@ -46,7 +46,7 @@ std::optional<MaterialReadback> read_material(Renderer& renderer, const Scene& s
                         resources.get(staging).buffer.get(), 1, &words);
     }
     resources.timeline().wait_for(recorder.submit(resources));
-    const Buffer& readback = resources.get(staging);
+    const gpu::Buffer& readback = resources.get(staging);
     // Readback memory may be cached without coherence: make the GPU's writes visible.
     const VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, nullptr,
                                     readback.memory.get(), 0, VK_WHOLE_SIZE};
@@ -73,4 +73,4 @@ std::optional<MaterialReadback> read_material(Renderer& renderer, const Scene& s
     return out;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

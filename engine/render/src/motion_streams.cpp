@@ -2,7 +2,7 @@
 
 #include <cstring>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 namespace {
 
@@ -82,4 +82,4 @@ MotionStreams build_motion_streams(const Scene& scene, const std::vector<bool>& 
     return out;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -8,7 +8,7 @@
 #include <sherpa/render/gpu_structs.h>
 #include <sherpa/scene/scene.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 struct MotionStreams {
     std::vector<std::uint8_t> bytes; // every stream, each 16-byte aligned
@@ -22,4 +22,4 @@ struct MotionStreams {
 // morphs (PrimitiveInfo::motion).
 MotionStreams build_motion_streams(const Scene& scene, const std::vector<bool>& uploaded);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

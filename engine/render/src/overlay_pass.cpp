@@ -11,7 +11,7 @@
 #include <algorithm>
 #include <cstring>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 void OverlayPass::record(FrameContext& f) {
     if (!f.scene) return;
@@ -151,4 +151,4 @@ void OverlayPass::draw_cull_boxes(FrameContext& f) {
     draw_lines(f, lines);
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -9,7 +9,7 @@
 #include <optional>
 #include <vector>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 // Scenes that move (skins, morph targets, animations): each frame, the pose
 // (FrameRequest::pose, else the scene's default pose) into the frame's pose buffer
@@ -23,7 +23,7 @@ public:
     // (pose_of()); nothing without skins. Built for any scene with skins, moving or not.
     void append_skeleton_lines(std::vector<GPULineVertex>& out, const FrameRequest& settings,
                                float joint_size) const;
-    PosePass(ResourceManager& resources) : resources_(resources) {}
+    PosePass(gpu::ResourceManager& resources) : resources_(resources) {}
     void build(const Scene& scene, const GpuScene& gpu); // a scene was loaded
     void reset();                                        // the scene is unloaded
     void record(FrameContext& f) { record(f.slot, f.settings, f.scene != nullptr); }
@@ -46,7 +46,7 @@ private:
     };
     void write(FrameSlot& slot, const FrameRequest& settings, const Pose& pose);
 
-    ResourceManager& resources_;
+    gpu::ResourceManager& resources_;
     bool active_ = false;
     Scene scene_; // nodes, skins, motions and primitives: what culling_bounds() and
                   // the skeleton read
@@ -64,7 +64,7 @@ private:
 class CullingPass {
 public:
     static constexpr std::size_t kHistory = 240;
-    CullingPass(Context& context, ResourceManager& resources);
+    CullingPass(gpu::Context& context, gpu::ResourceManager& resources);
     ~CullingPass();
     void build(const GpuScene& scene); // a scene was loaded
     void reset();                      // the scene is unloaded
@@ -83,8 +83,8 @@ private:
     void prepare_buffers(FrameContext& f, std::uint32_t instances);
     void use_posed_bounds(FrameContext& f);
     VkDeviceAddress write_posed_objects(FrameContext& f);
-    Context& context_;
-    ResourceManager& resources_;
+    gpu::Context& context_;
+    gpu::ResourceManager& resources_;
     std::unique_ptr<SceneCulling> culling_;
     std::vector<CullStats> cascade_stats_; // of the last frame that rendered the cascades
     RingHistory<CullFrame> history_{kHistory};
@@ -94,7 +94,7 @@ private:
 // map that every camera pass samples; re-rendered only when their inputs change.
 class ShadowPass {
 public:
-    ShadowPass(Context& context, ResourceManager& resources, std::uint32_t resolution);
+    ShadowPass(gpu::Context& context, gpu::ResourceManager& resources, std::uint32_t resolution);
     ~ShadowPass();
     // Whether cascades `c` must be drawn this frame (not `cache` or their inputs
     // changed since the map was last drawn); remembers the inputs when so.
@@ -106,11 +106,11 @@ public:
     void record(FrameContext& f);
 
 private:
-    Context& context_;
-    ResourceManager& resources_;
+    gpu::Context& context_;
+    gpu::ResourceManager& resources_;
     std::uint32_t resolution_;
-    ImageHandle map_;
-    SamplerHandle sampler_;
+    gpu::ImageHandle map_;
+    gpu::SamplerHandle sampler_;
     bool valid_ = false;            // drawn at least once
     std::vector<std::uint8_t> key_; // inputs of the cached cascades
 };
@@ -171,10 +171,10 @@ private:
     void draw_whole(FrameContext& f, VkImageView view);
     void build_kept(FrameContext& f);
     void copy_kept(FrameContext& f);
-    UniqueShaderModule vert_, frag_;
-    std::map<VkFormat, UniquePipeline> pipelines_;
-    ResourceManager* resources_ = nullptr;
-    ImageHandle kept_;            // the background of `kept_key_`, TRANSFER_SRC layout
+    gpu::UniqueShaderModule vert_, frag_;
+    std::map<VkFormat, gpu::UniquePipeline> pipelines_;
+    gpu::ResourceManager* resources_ = nullptr;
+    gpu::ImageHandle kept_;       // the background of `kept_key_`, TRANSFER_SRC layout
     std::optional<Key> kept_key_; // what kept_ holds
     std::optional<Key> last_key_; // the last frame's with a background, into a blit target
 };
@@ -198,4 +198,4 @@ public:
     void record(FrameContext& f);
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

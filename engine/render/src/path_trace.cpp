@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -112,4 +112,4 @@ PathTraceError estimate_error(const PathTraceImage& image) {
     return e;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

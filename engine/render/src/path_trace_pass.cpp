@@ -13,7 +13,7 @@
 #include "pt_rgen.h"
 #include "pt_rmiss.h"
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 namespace {
 
 constexpr VkShaderStageFlags kRaygen = VK_SHADER_STAGE_RAYGEN_BIT_KHR;
@@ -27,7 +27,7 @@ constexpr std::uint32_t kBindings = 11;
 // TRANSFER_SRC_OPTIMAL, and back to GENERAL for the next launches.
 void copy_to_buffer(VkCommandBuffer cmd, VkImage image, VkBuffer buffer, VkDeviceSize offset,
                     std::uint32_t width, std::uint32_t height) {
-    ImageTransition t;
+    gpu::ImageTransition t;
     t.image = image;
     t.from = VK_IMAGE_LAYOUT_GENERAL;
     t.to = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
@@ -35,7 +35,7 @@ void copy_to_buffer(VkCommandBuffer cmd, VkImage image, VkBuffer buffer, VkDevic
     t.src_access = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
     t.dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT;
     t.dst_access = VK_ACCESS_2_TRANSFER_READ_BIT;
-    transition(cmd, t);
+    gpu::transition(cmd, t);
     VkBufferImageCopy region{};
     region.bufferOffset = offset;
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
@@ -48,12 +48,12 @@ void copy_to_buffer(VkCommandBuffer cmd, VkImage image, VkBuffer buffer, VkDevic
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
     t.dst_access = VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
                    VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
-    transition(cmd, t);
+    gpu::transition(cmd, t);
 }
 
 } // namespace
 
-PathTracePass::PathTracePass(Context& context, ResourceManager& resources,
+PathTracePass::PathTracePass(gpu::Context& context, gpu::ResourceManager& resources,
                              VkDescriptorSetLayout bindless_layout)
     : context_(context), resources_(resources) {
     VkDevice device = context.device();
@@ -77,23 +77,23 @@ PathTracePass::PathTracePass(Context& context, ResourceManager& resources,
     constexpr VkDescriptorBindingFlags kPartial = VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT;
     const VkDescriptorBindingFlags flags[kBindings] = {0, 0, 0,        0,        0,       kPartial,
                                                        0, 0, kPartial, kPartial, kPartial};
-    auto flags_info = vk_init<VkDescriptorSetLayoutBindingFlagsCreateInfo>(
+    auto flags_info = gpu::vk_init<VkDescriptorSetLayoutBindingFlagsCreateInfo>(
         VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_BINDING_FLAGS_CREATE_INFO);
     flags_info.bindingCount = kBindings;
     flags_info.pBindingFlags = flags;
-    set_layout_ = create_descriptor_set_layout(device, bindings,
-                                               "vkCreateDescriptorSetLayout(path)", 0, &flags_info);
+    set_layout_ = gpu::create_descriptor_set_layout(
+        device, bindings, "vkCreateDescriptorSetLayout(path)", 0, &flags_info);
     const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1},
                                           {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 3},
                                           {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
                                           {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
                                           {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
-    pool_ = create_descriptor_pool(device, 1, sizes, "vkCreateDescriptorPool(path)");
-    set_ = allocate_descriptor_set(device, pool_.get(), set_layout_.get(),
-                                   "vkAllocateDescriptorSets(path)");
+    pool_ = gpu::create_descriptor_pool(device, 1, sizes, "vkCreateDescriptorPool(path)");
+    set_ = gpu::allocate_descriptor_set(device, pool_.get(), set_layout_.get(),
+                                        "vkAllocateDescriptorSets(path)");
     const VkDescriptorSetLayout sets[] = {bindless_layout, set_layout_.get()};
     const VkPushConstantRange push{kAllStages, 0, sizeof(GPUPathPushConstants)};
-    layout_ = create_pipeline_layout(device, sets, {&push, 1}, "vkCreatePipelineLayout(path)");
+    layout_ = gpu::create_pipeline_layout(device, sets, {&push, 1}, "vkCreatePipelineLayout(path)");
     pipeline_ = std::make_unique<RayPipeline>(
         context, resources, layout_.get(),
         RayShaders{spirv_pt_rgen, spirv_pt_rmiss, spirv_pt_rchit, spirv_pt_rahit});
@@ -118,8 +118,9 @@ void PathTracePass::set_distribution(const EnvironmentDistribution& d) {
     distribution_size_ = glm::uvec2(0u);
     if (d.empty()) return;
     const VkDeviceSize bytes = d.cdf.size() * sizeof(float);
-    distribution_ = resources_.create_buffer({bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                              MemoryUsage::Upload, "environment distribution"});
+    distribution_ =
+        resources_.create_buffer({bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                  gpu::MemoryUsage::Upload, "environment distribution"});
     std::memcpy(resources_.get(distribution_).mapped, d.cdf.data(), bytes);
     distribution_size_ = glm::uvec2(d.width, d.height);
 }
@@ -129,8 +130,8 @@ void PathTracePass::set_lights(const EmissiveLights& lights) {
     light_inv_power_ = 0.0f;
     if (lights.triangles.empty()) return;
     const VkDeviceSize bytes = lights.triangles.size() * sizeof(EmissiveTriangle);
-    lights_ = resources_.create_buffer(
-        {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUsage::Upload, "emissive triangles"});
+    lights_ = resources_.create_buffer({bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                        gpu::MemoryUsage::Upload, "emissive triangles"});
     std::memcpy(resources_.get(lights_).mapped, lights.triangles.data(), bytes);
     light_inv_power_ = lights.inv_power;
 }
@@ -141,7 +142,7 @@ void PathTracePass::ensure_targets(VkCommandBuffer cmd, std::uint32_t width, std
     if (shown_.valid() && width == width_ && height == height_) return;
     destroy_targets();
     auto image = [&](VkFormat format, VkImageUsageFlags extra, const char* name) {
-        ImageDesc d;
+        gpu::ImageDesc d;
         d.format = format;
         d.width = width;
         d.height = height;
@@ -152,27 +153,27 @@ void PathTracePass::ensure_targets(VkCommandBuffer cmd, std::uint32_t width, std
     shown_ = image(VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_SAMPLED_BIT, "path-traced image");
     sums_ = image(VK_FORMAT_R32G32B32A32_SFLOAT, 0, "path-traced sums");
     moments_ = image(VK_FORMAT_R32_SFLOAT, 0, "path-traced squared luminance");
-    readback_ = resources_.create_buffer({VkDeviceSize(width) * height * 4,
-                                          VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::Readback,
-                                          "path-traced image readback"});
+    readback_ = resources_.create_buffer(
+        {VkDeviceSize(width) * height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+         gpu::MemoryUsage::Readback, "path-traced image readback"});
     width_ = width;
     height_ = height;
-    for (ImageHandle h : {shown_, sums_, moments_}) {
-        ImageTransition t;
+    for (gpu::ImageHandle h : {shown_, sums_, moments_}) {
+        gpu::ImageTransition t;
         t.image = resources_.images().get(h).image.get();
         t.to = VK_IMAGE_LAYOUT_GENERAL;
         t.dst_stage = VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR;
         t.dst_access = VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-        transition(cmd, t);
+        gpu::transition(cmd, t);
     }
 }
 
 void PathTracePass::write_set(const PathTracedFrame& f) {
-    auto as_write = vk_init<VkWriteDescriptorSetAccelerationStructureKHR>(
+    auto as_write = gpu::vk_init<VkWriteDescriptorSetAccelerationStructureKHR>(
         VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR);
     as_write.accelerationStructureCount = 1;
     as_write.pAccelerationStructures = &f.tlas;
-    const ImagePool& images = resources_.images();
+    const gpu::ImagePool& images = resources_.images();
     const VkDescriptorImageInfo storage[] = {
         {VK_NULL_HANDLE, images.get(shown_).view.get(), VK_IMAGE_LAYOUT_GENERAL},
         {VK_NULL_HANDLE, images.get(sums_).view.get(), VK_IMAGE_LAYOUT_GENERAL},
@@ -184,7 +185,7 @@ void PathTracePass::write_set(const PathTracedFrame& f) {
     std::uint32_t count = 0;
     auto add = [&](std::uint32_t binding, VkDescriptorType type) -> VkWriteDescriptorSet& {
         VkWriteDescriptorSet& w = writes[count++];
-        w = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        w = gpu::vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
         w.dstSet = set_;
         w.dstBinding = binding;
         w.descriptorCount = 1;
@@ -220,9 +221,9 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTracedFrame& f, bool r
     ensure_targets(cmd, f.width, f.height);
     write_set(f);
     // The last frame's launches and copies (an earlier submission) before these.
-    memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
-                   VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR,
-                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    gpu::memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR,
+                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     pipeline_->bind(cmd);
     const VkDescriptorSet sets[] = {f.bindless, set_};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, layout_.get(), 0, 2, sets,
@@ -239,19 +240,20 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTracedFrame& f, bool r
         vkCmdPushConstants(cmd, layout_.get(), kAllStages, 0, sizeof(push), &push);
         pipeline_->trace(cmd, f.width, f.height);
         done += push.samples & kPathSampleCount;
-        memory_barrier(cmd, VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR,
-                       VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR |
-                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT |
-                           VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
-                       VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
-                           VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT);
+        gpu::memory_barrier(
+            cmd, VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR,
+            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+            VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR |
+                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
+                VK_PIPELINE_STAGE_2_COPY_BIT,
+            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
+                VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT);
     } while (done < f.samples);
     if (!readback) return;
     copy_to_buffer(cmd, resources_.images().get(shown_).image.get(),
                    resources_.get(readback_).buffer.get(), 0, f.width, f.height);
-    memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                   VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    gpu::memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
 }
 
 void PathTracePass::read(std::vector<std::uint8_t>& rgba) const {
@@ -265,13 +267,13 @@ void PathTracePass::record_sums_readback(VkCommandBuffer cmd) {
     if (!sums_readback_.valid())
         sums_readback_ =
             resources_.create_buffer({pixels * 20, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                      MemoryUsage::Readback, "path-traced sums readback"});
+                                      gpu::MemoryUsage::Readback, "path-traced sums readback"});
     const VkBuffer dst = resources_.get(sums_readback_).buffer.get();
     copy_to_buffer(cmd, resources_.images().get(sums_).image.get(), dst, 0, width_, height_);
     copy_to_buffer(cmd, resources_.images().get(moments_).image.get(), dst, pixels * 16, width_,
                    height_);
-    memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                   VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    gpu::memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
 }
 
 void PathTracePass::read_sums(PathTraceImage& image) const {
@@ -286,4 +288,4 @@ void PathTracePass::read_sums(PathTraceImage& image) const {
     std::memcpy(image.moments.data(), bytes + pixels * 16, pixels * 4);
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

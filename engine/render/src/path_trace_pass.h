@@ -16,7 +16,7 @@
 #include <memory>
 #include <vector>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 struct PathTracedFrame {
     VkDescriptorSet bindless = VK_NULL_HANDLE;
@@ -38,7 +38,7 @@ public:
     // no single dispatch runs long (a GPU's watchdog, an editor's frame).
     static constexpr std::uint32_t kSamplesPerLaunch = 16;
 
-    PathTracePass(Context& context, ResourceManager& resources,
+    PathTracePass(gpu::Context& context, gpu::ResourceManager& resources,
                   VkDescriptorSetLayout bindless_layout);
     ~PathTracePass();
     PathTracePass(const PathTracePass&) = delete;
@@ -66,18 +66,18 @@ private:
     void write_set(const PathTracedFrame& f);
     void destroy_targets();
 
-    Context& context_;
-    ResourceManager& resources_;
-    UniqueDescriptorSetLayout set_layout_;
-    UniqueDescriptorPool pool_;
+    gpu::Context& context_;
+    gpu::ResourceManager& resources_;
+    gpu::UniqueDescriptorSetLayout set_layout_;
+    gpu::UniqueDescriptorPool pool_;
     VkDescriptorSet set_ = VK_NULL_HANDLE;
-    UniquePipelineLayout layout_;
+    gpu::UniquePipelineLayout layout_;
     std::unique_ptr<RayPipeline> pipeline_;
-    ImageHandle shown_, sums_, moments_;
-    BufferHandle readback_, sums_readback_, distribution_, lights_;
+    gpu::ImageHandle shown_, sums_, moments_;
+    gpu::BufferHandle readback_, sums_readback_, distribution_, lights_;
     float light_inv_power_ = 0.0f;
     glm::uvec2 distribution_size_{0u, 0u};
     std::uint32_t width_ = 0, height_ = 0;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

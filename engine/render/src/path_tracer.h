@@ -6,7 +6,7 @@
 #include "frame_slots.h"
 #include "path_trace_pass.h"
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 class PathTracer : private SceneStateRefs {
 public:
@@ -36,4 +36,4 @@ private:
     std::uint32_t path_samples_ = 0;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -15,21 +15,21 @@
 #include <span>
 #include <vector>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 namespace {
 
-UniqueShaderModule make_module(VkDevice device, std::span<const std::uint32_t> code) {
-    return create_shader_module(device, code, "vkCreateShaderModule");
+gpu::UniqueShaderModule make_module(VkDevice device, std::span<const std::uint32_t> code) {
+    return gpu::create_shader_module(device, code, "vkCreateShaderModule");
 }
 
 } // namespace
 
-UniquePipeline make_graphics_pipeline(VkDevice device, VkPipelineLayout layout,
-                                      VkFormat color_format, const PipelineDesc& d,
-                                      const char* what) {
+gpu::UniquePipeline make_graphics_pipeline(VkDevice device, VkPipelineLayout layout,
+                                           VkFormat color_format, const PipelineDesc& d,
+                                           const char* what) {
     std::vector<VkPipelineShaderStageCreateInfo> stages;
-    auto stage = vk_init<VkPipelineShaderStageCreateInfo>(
+    auto stage = gpu::vk_init<VkPipelineShaderStageCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
     stage.pName = "main";
     stage.stage = VK_SHADER_STAGE_VERTEX_BIT;
@@ -43,23 +43,23 @@ UniquePipeline make_graphics_pipeline(VkDevice device, VkPipelineLayout layout,
         stages.push_back(stage);
     }
     // Vertex pulling: no vertex input bindings at all.
-    auto vertex_input = vk_init<VkPipelineVertexInputStateCreateInfo>(
+    auto vertex_input = gpu::vk_init<VkPipelineVertexInputStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
-    auto assembly = vk_init<VkPipelineInputAssemblyStateCreateInfo>(
+    auto assembly = gpu::vk_init<VkPipelineInputAssemblyStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
     assembly.topology = d.topology;
-    auto viewport = vk_init<VkPipelineViewportStateCreateInfo>(
+    auto viewport = gpu::vk_init<VkPipelineViewportStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
     viewport.viewportCount = 1;
     viewport.scissorCount = 1;
-    auto raster = vk_init<VkPipelineRasterizationStateCreateInfo>(
+    auto raster = gpu::vk_init<VkPipelineRasterizationStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
     raster.polygonMode = d.polygon;
     raster.lineWidth = d.line_width;
-    auto multisample = vk_init<VkPipelineMultisampleStateCreateInfo>(
+    auto multisample = gpu::vk_init<VkPipelineMultisampleStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
     multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-    auto depth = vk_init<VkPipelineDepthStencilStateCreateInfo>(
+    auto depth = gpu::vk_init<VkPipelineDepthStencilStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
     depth.depthTestEnable = VK_TRUE; // compare op and writes are dynamic
     VkPipelineColorBlendAttachmentState attachment{};
@@ -77,7 +77,7 @@ UniquePipeline make_graphics_pipeline(VkDevice device, VkPipelineLayout layout,
         attachment.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
         attachment.alphaBlendOp = VK_BLEND_OP_ADD;
     }
-    auto blend = vk_init<VkPipelineColorBlendStateCreateInfo>(
+    auto blend = gpu::vk_init<VkPipelineColorBlendStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
     blend.attachmentCount = d.color ? 1 : 0;
     blend.pAttachments = &attachment;
@@ -88,19 +88,19 @@ UniquePipeline make_graphics_pipeline(VkDevice device, VkPipelineLayout layout,
         VK_DYNAMIC_STATE_DEPTH_COMPARE_OP,  VK_DYNAMIC_STATE_DEPTH_WRITE_ENABLE,
         VK_DYNAMIC_STATE_DEPTH_BIAS_ENABLE, VK_DYNAMIC_STATE_DEPTH_BIAS,
     };
-    auto dynamic = vk_init<VkPipelineDynamicStateCreateInfo>(
+    auto dynamic = gpu::vk_init<VkPipelineDynamicStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
     dynamic.dynamicStateCount =
         d.depth ? static_cast<std::uint32_t>(std::size(dynamic_states)) : 2u;
     dynamic.pDynamicStates = dynamic_states;
-    auto rendering =
-        vk_init<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
+    auto rendering = gpu::vk_init<VkPipelineRenderingCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
     rendering.colorAttachmentCount = d.color ? 1 : 0;
     rendering.pColorAttachmentFormats = &color_format;
     rendering.depthAttachmentFormat = d.depth ? kDepthFormat : VK_FORMAT_UNDEFINED;
 
     auto ci =
-        vk_init<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
+        gpu::vk_init<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
     ci.pNext = &rendering;
     ci.stageCount = static_cast<std::uint32_t>(stages.size());
     ci.pStages = stages.data();
@@ -114,11 +114,11 @@ UniquePipeline make_graphics_pipeline(VkDevice device, VkPipelineLayout layout,
     ci.pDynamicState = &dynamic;
     ci.layout = layout;
     VkPipeline p = VK_NULL_HANDLE;
-    vk_check(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &p), what);
-    return UniquePipeline(device, p);
+    gpu::vk_check(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &p), what);
+    return gpu::UniquePipeline(device, p);
 }
 
-Pipelines::Pipelines(const Context& context, VkDescriptorSetLayout textures_layout,
+Pipelines::Pipelines(const gpu::Context& context, VkDescriptorSetLayout textures_layout,
                      VkDescriptorSetLayout frame_layout, VkFormat color_format,
                      bool transmission_background)
     : color_format_(color_format),
@@ -131,7 +131,8 @@ Pipelines::Pipelines(const Context& context, VkDescriptorSetLayout textures_layo
     VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                              sizeof(GPUPushConstants)};
     const VkDescriptorSetLayout set_layouts[] = {textures_layout, frame_layout};
-    layout_ = create_pipeline_layout(device, set_layouts, {&push, 1}, "vkCreatePipelineLayout");
+    layout_ =
+        gpu::create_pipeline_layout(device, set_layouts, {&push, 1}, "vkCreatePipelineLayout");
     const VkPipelineLayout layout = layout_.get();
 
     // Kept: forward() variants and MOTION twins are built on first use.
@@ -220,4 +221,4 @@ VkPipeline Pipelines::forward(std::uint32_t view, bool blend, std::uint32_t stre
     return p.get();
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

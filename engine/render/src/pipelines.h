@@ -17,7 +17,7 @@
 #include <sherpa/gpu/unique_handle.h>
 #include <sherpa/render/gpu_structs.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 enum class PipelineId : std::uint32_t {
     PrepassOpaque, // depth only, camera
@@ -37,9 +37,9 @@ inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
 // A depth attachment of the frame's format (the main target's, the transmission
 // background's): drawn into, never sampled.
-inline ImageDesc depth_attachment_desc(std::uint32_t width, std::uint32_t height,
-                                       std::string name) {
-    ImageDesc d;
+inline gpu::ImageDesc depth_attachment_desc(std::uint32_t width, std::uint32_t height,
+                                            std::string name) {
+    gpu::ImageDesc d;
     d.format = kDepthFormat;
     d.width = width;
     d.height = height;
@@ -88,9 +88,9 @@ struct PipelineDesc {
 
 // One graphics pipeline of `d`'s stages ("main"), vertex pulling (no vertex input),
 // dynamic rendering to `color_format` (and kDepthFormat where d.depth).
-UniquePipeline make_graphics_pipeline(VkDevice device, VkPipelineLayout layout,
-                                      VkFormat color_format, const PipelineDesc& d,
-                                      const char* what = "vkCreateGraphicsPipelines");
+gpu::UniquePipeline make_graphics_pipeline(VkDevice device, VkPipelineLayout layout,
+                                           VkFormat color_format, const PipelineDesc& d,
+                                           const char* what = "vkCreateGraphicsPipelines");
 
 // The pipeline of a run of draws: a fixed one, or forward shading of a view, chosen
 // per mesh for the streams it holds.
@@ -104,7 +104,7 @@ class Pipelines {
 public:
     // `transmission_background`: forward shading writes linear radiance and leaves
     // transmissive materials out (TransmissionPass's target; forward.frag constant 2).
-    Pipelines(const Context& context, VkDescriptorSetLayout textures_layout,
+    Pipelines(const gpu::Context& context, VkDescriptorSetLayout textures_layout,
               VkDescriptorSetLayout frame_layout, VkFormat color_format,
               bool transmission_background = false);
     VkPipeline get(PipelineId id) const { return pipelines_[static_cast<std::size_t>(id)].get(); }
@@ -130,15 +130,15 @@ private:
     float point_size_ = 1.0f;
     float line_width_ = 1.0f;
     float outline_width_ = 1.0f;
-    UniquePipelineLayout layout_;
+    gpu::UniquePipelineLayout layout_;
     static constexpr std::size_t kFixedCount = static_cast<std::size_t>(PipelineId::Count);
-    std::array<UniquePipeline, kFixedCount> pipelines_, motion_;
+    std::array<gpu::UniquePipeline, kFixedCount> pipelines_, motion_;
     VkDevice device_;
     // Kept for the forward() variants and the MOTION twins of the fixed pipelines.
-    UniqueShaderModule mesh_vert_, forward_frag_, depth_vert_, glyph_vert_, lines_vert_,
+    gpu::UniqueShaderModule mesh_vert_, forward_frag_, depth_vert_, glyph_vert_, lines_vert_,
         depth_mask_frag_, flat_frag_, floor_frag_;
     std::array<PipelineDesc, kFixedCount> descs_{};
-    std::map<std::tuple<std::uint32_t, bool, std::uint32_t>, UniquePipeline> forward_;
+    std::map<std::tuple<std::uint32_t, bool, std::uint32_t>, gpu::UniquePipeline> forward_;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

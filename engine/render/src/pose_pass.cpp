@@ -12,7 +12,7 @@
 #include <cmath>
 #include <cstring>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 namespace {
 
@@ -158,9 +158,9 @@ void PosePass::write(FrameSlot& slot, const FrameRequest& settings, const Pose& 
         slot.pose_capacity = bytes;
         slot.pose = resources_.create_buffer(
             {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-             MemoryUsage::Upload, "pose"});
+             gpu::MemoryUsage::Upload, "pose"});
     }
-    const Buffer& buf = resources_.get(slot.pose);
+    const gpu::Buffer& buf = resources_.get(slot.pose);
     auto* base = static_cast<std::uint8_t*>(buf.mapped);
     auto* instances = reinterpret_cast<GPUInstanceData*>(base);
     auto* joints = reinterpret_cast<glm::mat4*>(base + instance_bytes);
@@ -212,4 +212,4 @@ void PosePass::write(FrameSlot& slot, const FrameRequest& settings, const Pose& 
     slot.highlight_base = float_base + highlight;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

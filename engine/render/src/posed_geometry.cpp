@@ -8,7 +8,7 @@
 
 #include <array>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 namespace {
 
@@ -21,7 +21,7 @@ bool has(std::uint32_t flags, VertexAttribute a) {
 
 } // namespace
 
-PosedGeometry::PosedGeometry(ResourceManager& resources, const RayTracingFunctions& fn,
+PosedGeometry::PosedGeometry(gpu::ResourceManager& resources, const gpu::RayTracingFunctions& fn,
                              const GpuScene& gpu, std::span<const BlasPlan> plans,
                              std::vector<PosedBlasPlan> posed, bool refit)
     : resources_(resources), fn_(fn), gpu_(gpu), plans_(std::move(posed)), refit_(refit) {
@@ -62,12 +62,12 @@ PosedGeometry::PosedGeometry(ResourceManager& resources, const RayTracingFunctio
          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
              VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
              VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-         MemoryUsage::DeviceLocal, "posed vertices"});
+         gpu::MemoryUsage::DeviceLocal, "posed vertices"});
     stats_.stream_bytes = bytes;
     const VkDeviceAddress base = resources_.get(streams_).address;
     {
         const std::array<std::uint8_t, kZeroRecord> zero{};
-        UploadBatch batch(resources_);
+        gpu::UploadBatch batch(resources_);
         batch.upload_buffer(streams_, 0, zero.data(), zero.size());
         batch.submit_and_wait();
     }
@@ -79,7 +79,7 @@ PosedGeometry::PosedGeometry(ResourceManager& resources, const RayTracingFunctio
         }
 
     // The BLAS: sizes now, builds on the first pose.
-    const Context& context = resources_.context();
+    const gpu::Context& context = resources_.context();
     const VkBuildAccelerationStructureFlagsKHR flags =
         refit ? VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR |
                     VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_UPDATE_BIT_KHR
@@ -116,14 +116,14 @@ PosedGeometry::PosedGeometry(ResourceManager& resources, const RayTracingFunctio
     // The posing pipeline: motion.glsl with MOTION on.
     const VkDevice device = context.device();
     const VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(GPUPoseVerticesPush)};
-    layout_ = create_pipeline_layout(device, {}, {&range, 1}, "vkCreatePipelineLayout(pose)");
-    const UniqueShaderModule module = create_shader_module(device, spirv_pose_vertices_comp,
-                                                           "vkCreateShaderModule(pose vertices)");
+    layout_ = gpu::create_pipeline_layout(device, {}, {&range, 1}, "vkCreatePipelineLayout(pose)");
+    const gpu::UniqueShaderModule module = gpu::create_shader_module(
+        device, spirv_pose_vertices_comp, "vkCreateShaderModule(pose vertices)");
     const VkBool32 on = VK_TRUE;
     const VkSpecializationMapEntry entry{1, 0, sizeof(VkBool32)}; // MOTION
     const VkSpecializationInfo constants{1, &entry, sizeof(on), &on};
-    pipeline_ = create_compute_pipeline(device, layout_.get(), module.get(),
-                                        "vkCreateComputePipelines(pose vertices)", &constants);
+    pipeline_ = gpu::create_compute_pipeline(device, layout_.get(), module.get(),
+                                             "vkCreateComputePipelines(pose vertices)", &constants);
 }
 
 PosedGeometry::~PosedGeometry() {
@@ -172,10 +172,10 @@ void PosedGeometry::record(VkCommandBuffer cmd, const PoseFrame& frame, const Bu
             vkCmdDispatch(cmd, (g.vertices + 63) / 64, 1, 1);
         }
     // Posed vertices feed the builds and, later, the hit shaders.
-    memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_WRITE_BIT,
-                   VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
-                       VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR,
-                   VK_ACCESS_2_SHADER_READ_BIT);
+    gpu::memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
+                            VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR,
+                        VK_ACCESS_2_SHADER_READ_BIT);
     timer.end(cmd, 0);
     timer.begin(cmd, 1);
     const bool update = built_ && refit_;
@@ -203,4 +203,4 @@ void PosedGeometry::finish(const BuildTimer& timer) {
     stats_.blas_ms = ms[1];
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

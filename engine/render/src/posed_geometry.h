@@ -13,12 +13,13 @@
 #include <sherpa/render/acceleration_structures.h>
 #include <sherpa/render/gpu_structs.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 class PosedGeometry {
 public:
-    PosedGeometry(ResourceManager& resources, const RayTracingFunctions& fn, const GpuScene& gpu,
-                  std::span<const BlasPlan> plans, std::vector<PosedBlasPlan> posed, bool refit);
+    PosedGeometry(gpu::ResourceManager& resources, const gpu::RayTracingFunctions& fn,
+                  const GpuScene& gpu, std::span<const BlasPlan> plans,
+                  std::vector<PosedBlasPlan> posed, bool refit);
     ~PosedGeometry();
     PosedGeometry(const PosedGeometry&) = delete;
     PosedGeometry& operator=(const PosedGeometry&) = delete;
@@ -44,21 +45,21 @@ private:
         VkDeviceAddress positions = 0, normals = 0, tangents = 0; // posed; 0: stored streams
     };
 
-    ResourceManager& resources_;
-    const RayTracingFunctions& fn_;
+    gpu::ResourceManager& resources_;
+    const gpu::RayTracingFunctions& fn_;
     const GpuScene& gpu_;
     std::vector<PosedBlasPlan> plans_;
     std::vector<std::vector<Geometry>> geometries_; // per posed BLAS, per geometry
     std::vector<BlasInput> inputs_;
-    std::vector<AccelerationStructure> blas_;
+    std::vector<gpu::AccelerationStructure> blas_;
     std::vector<std::uint32_t> first_record_;
     std::vector<VkDeviceAddress> scratch_; // per BLAS, aligned, in scratch_buffer_
-    BufferHandle streams_;
+    gpu::BufferHandle streams_;
     std::unique_ptr<ScratchBuffer> scratch_buffer_;
-    UniquePipelineLayout layout_;
-    UniquePipeline pipeline_;
+    gpu::UniquePipelineLayout layout_;
+    gpu::UniquePipeline pipeline_;
     bool built_ = false, refit_ = true;
     PosedStats stats_;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

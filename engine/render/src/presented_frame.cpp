@@ -4,15 +4,16 @@
 
 #include <sherpa/render/presented_frame.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 namespace {
 
 // The reduced frame (in TRANSFER_SRC layout) stretched over the whole target, which
 // is left in its final layout.
 void blit_to_target(VkCommandBuffer cmd, VkImage from, VkExtent2D from_size,
-                    const RenderTarget& to) {
-    transition(cmd, {to.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                    const gpu::RenderTarget& to) {
+    gpu::transition(cmd,
+                    {to.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
                      VK_ACCESS_2_NONE, // the acquire wait
                      VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
@@ -25,7 +26,8 @@ void blit_to_target(VkCommandBuffer cmd, VkImage from, VkExtent2D from_size,
                             static_cast<std::int32_t>(to.height), 1};
     vkCmdBlitImage(cmd, from, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, to.image,
                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, to.blit_filter);
-    transition(cmd, {to.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+    gpu::transition(cmd,
+                    {to.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                      to.final_layout, VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                      VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE});
 }
@@ -50,7 +52,8 @@ void PresentedFrame::wait_for_slot(std::uint32_t slot) {
     }
 }
 
-void PresentedFrame::record(VkCommandBuffer cmd, std::uint32_t slot, const RenderTarget& target) {
+void PresentedFrame::record(VkCommandBuffer cmd, std::uint32_t slot,
+                            const gpu::RenderTarget& target) {
     if (settings_.renderer == RendererKind::RayTraced) {
         // The rays' storage image (sRGB-encoded bytes in a UNORM image: no blit converts
         // it right) reaches the target through the comparison pass's composite of side
@@ -82,11 +85,11 @@ void PresentedFrame::record(VkCommandBuffer cmd, std::uint32_t slot, const Rende
     const VkExtent2D size{scaled(target.width), scaled(target.height)};
     settings_.width = size.width;
     settings_.height = size.height;
-    const Image& image =
+    const gpu::Image& image =
         renderer_.frames().targets().scaled(target.format, size.width, size.height);
-    RenderTarget reduced_target{image.image.get(), image.view.get(),
-                                target.format,     size.width,
-                                size.height,       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+    gpu::RenderTarget reduced_target{image.image.get(), image.view.get(),
+                                     target.format,     size.width,
+                                     size.height,       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
     renderer_.frames().record_frame(cmd, slot, reduced_target, settings_);
     blit_to_target(cmd, image.image.get(), size, target);
 }
@@ -95,4 +98,4 @@ void PresentedFrame::submitted(std::uint32_t slot, std::uint64_t submission) {
     renderer_.frames().slots().finish(slot, submission);
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

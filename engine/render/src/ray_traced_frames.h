@@ -11,7 +11,7 @@
 #include "rt_view_pass.h"
 #include "scene_changes.h"
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 class RayTracedFrames : private SceneStateRefs {
 public:
@@ -62,4 +62,4 @@ private:
     PathTraceFrame last_path_; // of the last presented or compared path-traced side
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -9,16 +9,17 @@
 
 #include <cstring>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 RenderTargets::~RenderTargets() {
-    for (ImageHandle* h : {&color_, &depth_, &scaled_, &side_}) resources_.images().destroy(*h);
+    for (gpu::ImageHandle* h : {&color_, &depth_, &scaled_, &side_})
+        resources_.images().destroy(*h);
     resources_.destroy(readback_);
 }
 
-const Image& RenderTargets::depth(std::uint32_t width, std::uint32_t height) {
+const gpu::Image& RenderTargets::depth(std::uint32_t width, std::uint32_t height) {
     if (depth_.valid()) {
-        const ImageDesc& d = resources_.images().get(depth_).desc;
+        const gpu::ImageDesc& d = resources_.images().get(depth_).desc;
         if (d.width == width && d.height == height) return resources_.images().get(depth_);
         resources_.images().destroy(depth_);
     }
@@ -26,14 +27,14 @@ const Image& RenderTargets::depth(std::uint32_t width, std::uint32_t height) {
     return resources_.images().get(depth_);
 }
 
-bool RenderTargets::ensure_color(ImageHandle& image, VkFormat format, std::uint32_t width,
+bool RenderTargets::ensure_color(gpu::ImageHandle& image, VkFormat format, std::uint32_t width,
                                  std::uint32_t height, const char* name) {
     if (image.valid()) {
-        const ImageDesc& d = resources_.images().get(image).desc;
+        const gpu::ImageDesc& d = resources_.images().get(image).desc;
         if (d.format == format && d.width == width && d.height == height) return false;
         resources_.images().destroy(image); // freed once the frames drawing into it are done
     }
-    ImageDesc d;
+    gpu::ImageDesc d;
     d.format = format;
     d.width = width;
     d.height = height;
@@ -45,14 +46,14 @@ bool RenderTargets::ensure_color(ImageHandle& image, VkFormat format, std::uint3
     return true;
 }
 
-RenderTarget RenderTargets::offscreen(std::uint32_t width, std::uint32_t height) {
+gpu::RenderTarget RenderTargets::offscreen(std::uint32_t width, std::uint32_t height) {
     if (ensure_color(color_, kOffscreenFormat, width, height, "offscreen colour")) {
         resources_.destroy(readback_); // sized by the colour target
         readback_ = resources_.create_buffer({VkDeviceSize(width) * height * 4,
                                               VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                              MemoryUsage::Readback, "readback"});
+                                              gpu::MemoryUsage::Readback, "readback"});
     }
-    const Image& color = resources_.images().get(color_);
+    const gpu::Image& color = resources_.images().get(color_);
     return {color.image.get(),
             color.view.get(),
             kOffscreenFormat,
@@ -62,13 +63,14 @@ RenderTarget RenderTargets::offscreen(std::uint32_t width, std::uint32_t height)
             true};
 }
 
-const Image& RenderTargets::scaled(VkFormat format, std::uint32_t width, std::uint32_t height) {
+const gpu::Image& RenderTargets::scaled(VkFormat format, std::uint32_t width,
+                                        std::uint32_t height) {
     ensure_color(scaled_, format, width, height, "reduced-resolution colour");
     return resources_.images().get(scaled_);
 }
 
-const Image& RenderTargets::side(std::uint32_t width, std::uint32_t height) {
-    ImageDesc d;
+const gpu::Image& RenderTargets::side(std::uint32_t width, std::uint32_t height) {
+    gpu::ImageDesc d;
     d.format = kOffscreenFormat;
     d.width = width;
     d.height = height;
@@ -87,7 +89,7 @@ const Image& RenderTargets::side(std::uint32_t width, std::uint32_t height) {
 
 std::uint64_t RenderTargets::bytes() const {
     std::uint64_t bytes = 0;
-    for (ImageHandle h : {color_, depth_, scaled_, side_})
+    for (gpu::ImageHandle h : {color_, depth_, scaled_, side_})
         if (h.valid()) bytes += resources_.images().get(h).allocation_size;
     return bytes;
 }
@@ -100,8 +102,8 @@ void RenderTargets::record_readback(VkCommandBuffer cmd, std::uint32_t width,
     vkCmdCopyImageToBuffer(cmd, resources_.images().get(color_).image.get(),
                            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                            resources_.get(readback_).buffer.get(), 1, &region);
-    memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                   VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    gpu::memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
 }
 
 void RenderTargets::read_offscreen(std::vector<std::uint8_t>& rgba, std::uint32_t width,
@@ -110,4 +112,4 @@ void RenderTargets::read_offscreen(std::vector<std::uint8_t>& rgba, std::uint32_
     std::memcpy(rgba.data(), resources_.get(readback_).mapped, rgba.size());
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -10,40 +10,40 @@
 #include <cstdint>
 #include <vector>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 class RenderTargets {
 public:
     static constexpr VkFormat kOffscreenFormat = VK_FORMAT_R8G8B8A8_SRGB;
-    explicit RenderTargets(ResourceManager& resources) : resources_(resources) {}
+    explicit RenderTargets(gpu::ResourceManager& resources) : resources_(resources) {}
     ~RenderTargets();
     RenderTargets(const RenderTargets&) = delete;
     RenderTargets& operator=(const RenderTargets&) = delete;
 
     // The depth attachment of this size.
-    const Image& depth(std::uint32_t width, std::uint32_t height);
+    const gpu::Image& depth(std::uint32_t width, std::uint32_t height);
     // The offscreen colour target (render(), render_comparison()), left by a frame in
     // TRANSFER_SRC layout, with its readback buffer.
-    RenderTarget offscreen(std::uint32_t width, std::uint32_t height);
+    gpu::RenderTarget offscreen(std::uint32_t width, std::uint32_t height);
     // Its copy into the readback buffer, and the rows read back once complete.
     void record_readback(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height);
     void read_offscreen(std::vector<std::uint8_t>& rgba, std::uint32_t width,
                         std::uint32_t height) const;
     // The presenter's reduced-resolution image (`format`, colour attachment and blit source).
-    const Image& scaled(VkFormat format, std::uint32_t width, std::uint32_t height);
+    const gpu::Image& scaled(VkFormat format, std::uint32_t width, std::uint32_t height);
     // A comparison side's raster image (kOffscreenFormat, sampled through an UNORM alias).
-    const Image& side(std::uint32_t width, std::uint32_t height);
+    const gpu::Image& side(std::uint32_t width, std::uint32_t height);
     // Bytes of these images.
     std::uint64_t bytes() const;
 
 private:
     // Keeps `image` a colour attachment and transfer source of this format and size;
     // true when it was (re)made.
-    bool ensure_color(ImageHandle& image, VkFormat format, std::uint32_t width,
+    bool ensure_color(gpu::ImageHandle& image, VkFormat format, std::uint32_t width,
                       std::uint32_t height, const char* name);
-    ResourceManager& resources_;
-    ImageHandle color_, depth_, scaled_, side_;
-    BufferHandle readback_;
+    gpu::ResourceManager& resources_;
+    gpu::ImageHandle color_, depth_, scaled_, side_;
+    gpu::BufferHandle readback_;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -7,24 +7,24 @@
 #include <sherpa/gpu/vk_helpers.h>
 #include <sherpa/render/gpu_structs.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 FrameSlots::FrameSlots(SceneState& scene_state) : SceneStateRefs(scene_state) {
     for (std::uint32_t i = 0; i < kFramesInFlight; ++i) {
         auto slot = std::make_unique<FrameSlot>(context);
         slot->frame_data =
             resources->create_buffer({sizeof(GPUFrameData), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                      MemoryUsage::Upload, "frame data"});
+                                      gpu::MemoryUsage::Upload, "frame data"});
         slot->timestamps =
-            create_query_pool(context.device(), VK_QUERY_TYPE_TIMESTAMP, kTimestampCount);
+            gpu::create_query_pool(context.device(), VK_QUERY_TYPE_TIMESTAMP, kTimestampCount);
         if (context.info().pipeline_statistics)
-            slot->statistics =
-                create_query_pool(context.device(), VK_QUERY_TYPE_PIPELINE_STATISTICS, 1,
-                                  VK_QUERY_PIPELINE_STATISTIC_INPUT_ASSEMBLY_PRIMITIVES_BIT |
-                                      VK_QUERY_PIPELINE_STATISTIC_VERTEX_SHADER_INVOCATIONS_BIT |
-                                      VK_QUERY_PIPELINE_STATISTIC_CLIPPING_INVOCATIONS_BIT |
-                                      VK_QUERY_PIPELINE_STATISTIC_CLIPPING_PRIMITIVES_BIT |
-                                      VK_QUERY_PIPELINE_STATISTIC_FRAGMENT_SHADER_INVOCATIONS_BIT);
+            slot->statistics = gpu::create_query_pool(
+                context.device(), VK_QUERY_TYPE_PIPELINE_STATISTICS, 1,
+                VK_QUERY_PIPELINE_STATISTIC_INPUT_ASSEMBLY_PRIMITIVES_BIT |
+                    VK_QUERY_PIPELINE_STATISTIC_VERTEX_SHADER_INVOCATIONS_BIT |
+                    VK_QUERY_PIPELINE_STATISTIC_CLIPPING_INVOCATIONS_BIT |
+                    VK_QUERY_PIPELINE_STATISTIC_CLIPPING_PRIMITIVES_BIT |
+                    VK_QUERY_PIPELINE_STATISTIC_FRAGMENT_SHADER_INVOCATIONS_BIT);
         slots_.push_back(std::move(slot));
     }
     create_frame_sets();
@@ -80,30 +80,30 @@ void FrameSlots::create_frame_sets() {
                                                       VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
                                                       VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
                                                       VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT};
-    auto flags_info = vk_init<VkDescriptorSetLayoutBindingFlagsCreateInfo>(
+    auto flags_info = gpu::vk_init<VkDescriptorSetLayoutBindingFlagsCreateInfo>(
         VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_BINDING_FLAGS_CREATE_INFO);
     flags_info.bindingCount = static_cast<std::uint32_t>(std::size(binding_flags));
     flags_info.pBindingFlags = binding_flags;
-    frame_layout_ = create_descriptor_set_layout(
+    frame_layout_ = gpu::create_descriptor_set_layout(
         device, bindings, "vkCreateDescriptorSetLayout(frame)", 0, &flags_info);
     const VkDescriptorPoolSize sizes[] = {
         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFramesInFlight},
         {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3 * kFramesInFlight},
         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 6 * kFramesInFlight}};
-    frame_pool_ =
-        create_descriptor_pool(device, kFramesInFlight, sizes, "vkCreateDescriptorPool(frame)");
+    frame_pool_ = gpu::create_descriptor_pool(device, kFramesInFlight, sizes,
+                                              "vkCreateDescriptorPool(frame)");
     no_materials_ =
         resources->create_buffer({sizeof(GPUMaterialExtra), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                  MemoryUsage::Upload, "no materials"});
+                                  gpu::MemoryUsage::Upload, "no materials"});
     const VkDescriptorSetLayout layout = frame_layout_.get();
     for (auto& slot : slots_) {
-        auto ai =
-            vk_init<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
+        auto ai = gpu::vk_init<VkDescriptorSetAllocateInfo>(
+            VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
         ai.descriptorPool = frame_pool_.get();
         ai.descriptorSetCount = 1;
         ai.pSetLayouts = &layout;
-        vk_check(vkAllocateDescriptorSets(device, &ai, &slot->set),
-                 "vkAllocateDescriptorSets(frame)");
+        gpu::vk_check(vkAllocateDescriptorSets(device, &ai, &slot->set),
+                      "vkAllocateDescriptorSets(frame)");
     }
 }
 
@@ -124,14 +124,14 @@ void FrameSlots::bind_frame_set(FrameSlot& slot, const VkDescriptorImageInfo& sh
         {scene ? scene->materials().extras_buffer() : none, 0, VK_WHOLE_SIZE},
     };
     VkWriteDescriptorSet writes[4];
-    writes[3] = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+    writes[3] = gpu::vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
     writes[3].dstSet = slot.set;
     writes[3].dstBinding = 3;
     writes[3].descriptorCount = 1;
     writes[3].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     writes[3].pImageInfo = &shadow;
     for (std::uint32_t i = 0; i < 3; ++i) {
-        writes[i] = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        writes[i] = gpu::vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
         writes[i].dstSet = slot.set;
         writes[i].dstBinding = i;
         writes[i].descriptorCount = 1;
@@ -144,7 +144,7 @@ void FrameSlots::bind_frame_set(FrameSlot& slot, const VkDescriptorImageInfo& sh
     // its blocks only where GPUMaterialExtra::extensions names one).
     if (const VkBuffer ext = scene ? scene->materials().extensions_buffer() : VK_NULL_HANDLE) {
         const VkDescriptorBufferInfo info{ext, 0, VK_WHOLE_SIZE};
-        auto write = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        auto write = gpu::vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
         write.dstSet = slot.set;
         write.dstBinding = 8;
         write.descriptorCount = 1;
@@ -232,12 +232,12 @@ void FrameSlots::wait(FrameSlot& slot) {
     if (slot.submission) resources->timeline().wait_for(slot.submission);
 }
 
-FrameStats render_offscreen(FrameRecorder& frames, ResourceManager& resources,
+FrameStats render_offscreen(FrameRecorder& frames, gpu::ResourceManager& resources,
                             const FrameRequest& settings, std::vector<std::uint8_t>* rgba) {
     if (settings.width == 0 || settings.height == 0 || settings.width > 16384 ||
         settings.height > 16384)
-        throw GpuError("render size " + std::to_string(settings.width) + "x" +
-                       std::to_string(settings.height) + " is out of range");
+        throw gpu::GpuError("render size " + std::to_string(settings.width) + "x" +
+                            std::to_string(settings.height) + " is out of range");
     if (settings.renderer == RendererKind::RayTraced) {
         // The shadow-error view compares with the rasterizer's cascades at this camera:
         // its shadow view is drawn first (cascades and frame constants in that slot).
@@ -252,14 +252,14 @@ FrameStats render_offscreen(FrameRecorder& frames, ResourceManager& resources,
         return frames.rays().render_rt(settings, rgba, raster_slot);
     }
     if (!raster_view(settings.view))
-        throw GpuError("the rasterizer does not draw view '" +
-                       std::string(to_string(settings.view)) + "' (rays only: --renderer rt)");
+        throw gpu::GpuError("the rasterizer does not draw view '" +
+                            std::string(to_string(settings.view)) + "' (rays only: --renderer rt)");
     FrameSlots& slots = frames.slots();
     RenderTargets& targets = frames.targets();
     const std::uint32_t index = slots.take();
     FrameSlot& slot = slots[index];
     slots.wait(slot);
-    const RenderTarget target = targets.offscreen(settings.width, settings.height);
+    const gpu::RenderTarget target = targets.offscreen(settings.width, settings.height);
     VkCommandBuffer cmd = slot.recorder.begin();
     frames.record_frame(cmd, index, target, settings);
     if (rgba) targets.record_readback(cmd, settings.width, settings.height);
@@ -291,10 +291,10 @@ FrameStats FrameRecorder::read_stats(FrameSlot& slot) {
     culling.read_stats(slot, scene.get(), s);
     if (context.info().timestamps) {
         std::uint64_t ts[kTimestampCount] = {};
-        vk_check(vkGetQueryPoolResults(context.device(), slot.timestamps.get(), 0, kTimestampCount,
-                                       sizeof(ts), ts, sizeof(std::uint64_t),
-                                       VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-                 "vkGetQueryPoolResults(timestamps)");
+        gpu::vk_check(vkGetQueryPoolResults(context.device(), slot.timestamps.get(), 0,
+                                            kTimestampCount, sizeof(ts), ts, sizeof(std::uint64_t),
+                                            VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+                      "vkGetQueryPoolResults(timestamps)");
         const double ns = context.info().timestamp_period_ns;
         for (std::uint32_t i = 0; i + 1 < kTimestampCount; ++i)
             s.passes.push_back({kPassNames[i], double(ts[i + 1] - ts[i]) * ns * 1e-6});
@@ -302,10 +302,10 @@ FrameStats FrameRecorder::read_stats(FrameSlot& slot) {
     }
     if (slot.statistics) {
         std::uint64_t v[5] = {};
-        vk_check(vkGetQueryPoolResults(context.device(), slot.statistics.get(), 0, 1, sizeof(v), v,
-                                       sizeof(v),
-                                       VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-                 "vkGetQueryPoolResults(statistics)");
+        gpu::vk_check(vkGetQueryPoolResults(context.device(), slot.statistics.get(), 0, 1,
+                                            sizeof(v), v, sizeof(v),
+                                            VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+                      "vkGetQueryPoolResults(statistics)");
         // Results come in the order of the statistic bits.
         s.input_primitives = v[0];
         s.vertex_invocations = v[1];
@@ -318,8 +318,8 @@ FrameStats FrameRecorder::read_stats(FrameSlot& slot) {
 
 // The public face: a load goes to the scene state, then the recorder; frames to the recorder.
 
-Renderer::Renderer(Context& context, const RendererOptions& options)
-    : context_(context), resources_(std::make_unique<ResourceManager>(context)),
+Renderer::Renderer(gpu::Context& context, const RendererOptions& options)
+    : context_(context), resources_(std::make_unique<gpu::ResourceManager>(context)),
       scene_(std::make_unique<SceneState>(context, *resources_, options)),
       frames_(std::make_unique<FrameRecorder>(*scene_)) {}
 
@@ -373,11 +373,11 @@ const RingHistory<CullFrame>& Renderer::cull_history() const {
     return frames_->cull_history();
 }
 
-ResourceManager& Renderer::resources() {
+gpu::ResourceManager& Renderer::resources() {
     return *resources_;
 }
 
-Context& Renderer::context() {
+gpu::Context& Renderer::context() {
     return context_;
 }
 
@@ -394,4 +394,4 @@ ResidentStats Renderer::resident() const {
     return out;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <cstring>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 namespace {
 
 bool same(const std::vector<AnimatedProperty>& a, const std::vector<AnimatedProperty>& b) {
@@ -72,4 +72,4 @@ SceneState::animate(const std::vector<AnimatedProperty>& values) {
     return materials;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -3,7 +3,7 @@
 // replaced or removed.
 #include "frame_recorder.h"
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 void Renderer::set_environment(const EnvironmentImage* image, const EnvironmentOptions& options) {
     // Frames in flight may read the old maps (and the background drawn from them):
@@ -13,4 +13,4 @@ void Renderer::set_environment(const EnvironmentImage* image, const EnvironmentO
     resources_->collect_garbage();
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -6,7 +6,7 @@
 
 #include <sherpa/render/gpu_structs.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 namespace {
 
@@ -26,7 +26,7 @@ static_assert(kAfterOverlays + 1 == kTimestampCount);
 } // namespace
 
 void FrameRecorder::record_frame(VkCommandBuffer cmd, std::uint32_t index,
-                                 const RenderTarget& target, const FrameRequest& settings) {
+                                 const gpu::RenderTarget& target, const FrameRequest& settings) {
     changes_.apply_scene_changes(settings, false);
     FrameSlot& slot = slots_[index];
     slots_.wait(slot);
@@ -114,14 +114,15 @@ void FrameRecorder::bind_frame(FrameContext& f) {
 // contents do not matter; with `background`, the target holds the background already
 // and is loaded), dynamic rendering begun, statistics started.
 void FrameRecorder::begin_camera_rendering(FrameContext& f, bool background) {
-    const Image& depth_image = targets_.depth(f.target.width, f.target.height);
+    const gpu::Image& depth_image = targets_.depth(f.target.width, f.target.height);
     if (!background)
-        transition(f.cmd, {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                           VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, kColorTargetReaders,
-                           VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                           VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
-                               VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT});
-    transition(
+        gpu::transition(
+            f.cmd,
+            {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+             VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, kColorTargetReaders, VK_ACCESS_2_NONE,
+             VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+             VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT});
+    gpu::transition(
         f.cmd,
         {depth_image.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
          VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
@@ -131,20 +132,22 @@ void FrameRecorder::begin_camera_rendering(FrameContext& f, bool background) {
          VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
              VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT});
 
-    auto color = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+    auto color =
+        gpu::vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
     color.imageView = f.target.view;
     color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     color.loadOp = background ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
     color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     const glm::vec4 cc = f.settings.clear_color;
     color.clearValue.color = {{cc.r, cc.g, cc.b, cc.a}};
-    auto depth = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+    auto depth =
+        gpu::vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
     depth.imageView = depth_image.view.get();
     depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
     depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
     depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
     depth.clearValue.depthStencil = {0.0f, 0}; // reverse-Z: 0 is infinitely far
-    auto ri = vk_init<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
+    auto ri = gpu::vk_init<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
     ri.renderArea = {{0, 0}, {f.target.width, f.target.height}};
     ri.layerCount = 1;
     ri.colorAttachmentCount = 1;
@@ -169,10 +172,10 @@ void FrameRecorder::end_camera_rendering(FrameContext& f) {
         stage = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
         access = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
     }
-    transition(f.cmd,
-               {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                f.target.final_layout, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, stage, access});
+    gpu::transition(f.cmd, {f.target.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                            VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, f.target.final_layout,
+                            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, stage, access});
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstring>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 namespace {
 
 // FNV-1a over the bytes of each value: what the accumulation is of.
@@ -126,4 +126,4 @@ PathTraceError path_trace_error(Renderer& renderer) {
     return estimate_error(read_path_trace(renderer));
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -12,7 +12,7 @@
 
 #include <cmath>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 namespace {
 
 std::uint8_t srgb_byte(float linear) {
@@ -58,15 +58,16 @@ bool RayTracedFrames::pose_acceleration(FrameSlot& slot, const FrameRequest& set
 
 void RayTracedFrames::check_rt(const FrameRequest& settings) const {
     if (!acceleration)
-        throw GpuError("the ray tracer needs the scene's acceleration structures: create the "
-                       "renderer with RendererOptions::ray_tracing on a device that ray traces");
+        throw gpu::GpuError(
+            "the ray tracer needs the scene's acceleration structures: create the "
+            "renderer with RendererOptions::ray_tracing on a device that ray traces");
     if (!ray_traced_view(settings.view))
-        throw GpuError("the ray tracer does not draw view '" +
-                       std::string(to_string(settings.view)) + "' (it draws " +
-                       ray_traced_view_names() + ")");
+        throw gpu::GpuError("the ray tracer does not draw view '" +
+                            std::string(to_string(settings.view)) + "' (it draws " +
+                            ray_traced_view_names() + ")");
     if (settings.overlays != 0 || settings.highlight_instance ||
         !settings.highlight_outline.empty())
-        throw GpuError("the ray tracer draws no overlays or highlights (raster only)");
+        throw gpu::GpuError("the ray tracer draws no overlays or highlights (raster only)");
 }
 
 RayTracedFrame RayTracedFrames::rt_frame(const FrameRequest& settings,
@@ -147,10 +148,10 @@ FrameStats RayTracedFrames::render_rt(const FrameRequest& settings, std::vector<
     slots_.wait(slot);
     if (timed) {
         std::uint64_t ts[2] = {};
-        vk_check(vkGetQueryPoolResults(context.device(), slot.timestamps.get(), 0, 2, sizeof(ts),
-                                       ts, sizeof(std::uint64_t),
-                                       VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-                 "vkGetQueryPoolResults(rt timestamps)");
+        gpu::vk_check(vkGetQueryPoolResults(context.device(), slot.timestamps.get(), 0, 2,
+                                            sizeof(ts), ts, sizeof(std::uint64_t),
+                                            VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+                      "vkGetQueryPoolResults(rt timestamps)");
         stats.gpu_ms = double(ts[1] - ts[0]) * context.info().timestamp_period_ns * 1e-6;
         stats.passes.push_back({path ? "path_trace" : "rays", stats.gpu_ms});
         for (const PassTiming& p : stats.passes)
@@ -162,4 +163,4 @@ FrameStats RayTracedFrames::render_rt(const FrameRequest& settings, std::vector<
     return stats;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -6,7 +6,7 @@
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/gpu/vk_helpers.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 void RayTracedFrames::check_drawable(const FrameRequest& settings) const {
     if (settings.renderer != RendererKind::RayTraced) return;
@@ -14,7 +14,7 @@ void RayTracedFrames::check_drawable(const FrameRequest& settings) const {
     // It draws the rasterizer's shadow frame first and waits for it (render_offscreen): not
     // inside a frame another recorder owns.
     if (settings.view == DebugView::ShadowError)
-        throw GpuError(
+        throw gpu::GpuError(
             "the shadow-error view is drawn offscreen only (sherpa-cli render, the Lab's "
             "shadows family), not in presented or compared frames");
 }
@@ -32,12 +32,12 @@ SideImage record_side(FrameRecorder& frames, VkCommandBuffer cmd, std::uint32_t 
     if (settings.renderer == RendererKind::RayTraced && rays.traces())
         return rays.record_rt_side(cmd, slot, settings);
     rays.check_drawable(settings);
-    const Image& image = frames.targets().side(settings.width, settings.height);
+    const gpu::Image& image = frames.targets().side(settings.width, settings.height);
     if (settings.renderer == RendererKind::RayTraced) {
         // Nothing with triangles to trace: every ray misses, the clear colour.
         frames.slots().wait_all();
         rays.begin_rt_side(cmd, slot);
-        transition(
+        gpu::transition(
             cmd, {image.image.get(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                   VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -47,7 +47,7 @@ SideImage record_side(FrameRecorder& frames, VkCommandBuffer cmd, std::uint32_t 
         const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
         vkCmdClearColorImage(cmd, image.image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &clear,
                              1, &range);
-        transition(
+        gpu::transition(
             cmd, {image.image.get(), VK_IMAGE_ASPECT_COLOR_BIT,
                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                   VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
@@ -57,7 +57,7 @@ SideImage record_side(FrameRecorder& frames, VkCommandBuffer cmd, std::uint32_t 
         return {image.alias_view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     }
     slot.ray_traced = false;
-    const RenderTarget target{
+    const gpu::RenderTarget target{
         image.image.get(), image.view.get(), FrameRecorder::kOffscreenFormat,
         settings.width,    settings.height,  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     frames.record_frame(cmd, index, target, settings);
@@ -111,13 +111,13 @@ FrameStats RayTracedFrames::read_rt_stats(FrameSlot& slot) {
     if (slot.path_traced) s.path = last_path_;
     if (!slot.has_results || !context.info().timestamps) return s;
     std::uint64_t ts[2] = {};
-    vk_check(vkGetQueryPoolResults(context.device(), slot.timestamps.get(), 0, 2, sizeof(ts), ts,
-                                   sizeof(std::uint64_t),
-                                   VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-             "vkGetQueryPoolResults(rt timestamps)");
+    gpu::vk_check(vkGetQueryPoolResults(context.device(), slot.timestamps.get(), 0, 2, sizeof(ts),
+                                        ts, sizeof(std::uint64_t),
+                                        VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+                  "vkGetQueryPoolResults(rt timestamps)");
     s.gpu_ms = double(ts[1] - ts[0]) * context.info().timestamp_period_ns * 1e-6;
     s.passes.push_back({slot.path_traced ? "path_trace" : "rays", s.gpu_ms});
     return s;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -9,7 +9,7 @@
 
 #include <stdexcept>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 VariantSwitch set_material_variant(Renderer& renderer, std::int32_t variant) {
     return renderer.frames().changes().set_variant(variant);
@@ -56,4 +56,4 @@ VariantSwitch SceneChanges::set_variant(std::int32_t variant) {
     return out;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

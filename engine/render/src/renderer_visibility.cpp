@@ -8,7 +8,7 @@
 // before the next ray-traced frame. An unchanged frame costs two comparisons.
 #include "scene_changes.h"
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 SceneChanges::SceneChanges(SceneState& scene_state, FrameSlots& slots, CullingPass& culling_pass,
                            ShadowPass& shadows)
@@ -49,4 +49,4 @@ void SceneChanges::retire_culling() {
     }
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -7,7 +7,7 @@
 #include <sherpa/render/acceleration_structures.h>
 #include <sherpa/render/gpu_structs.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 SceneAccelerationStructures::MaterialFollow
 SceneAccelerationStructures::follow_materials(const GpuScene& gpu) {
@@ -25,7 +25,7 @@ SceneAccelerationStructures::follow_materials(const GpuScene& gpu) {
     // updated); a mesh without one is in no TLAS instance.
     std::vector<std::pair<AlphaMode, bool>> mode(gpu.meshes().size(), {AlphaMode::Opaque, true});
     for (const DrawGroup& g : gpu.groups()) mode[g.mesh] = {g.alpha, g.double_sided};
-    UploadBatch batch(resources_);
+    gpu::UploadBatch batch(resources_);
     constexpr VkDeviceSize kWord = offsetof(GPUGeometryInfo, material);
     for (std::uint32_t r = 0; r < record_mesh_.size(); ++r) {
         const std::uint32_t material = gpu.meshes()[record_mesh_[r]].material;
@@ -57,4 +57,4 @@ SceneAccelerationStructures::follow_materials(const GpuScene& gpu) {
     return out;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -9,24 +9,24 @@
 #include <cstring>
 #include <vector>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
-RayPipeline::RayPipeline(Context& context, ResourceManager& resources, VkPipelineLayout layout,
-                         const RayShaders& shaders)
-    : context_(context), resources_(resources), fn_(RayTracingFunctions::load(context)) {
+RayPipeline::RayPipeline(gpu::Context& context, gpu::ResourceManager& resources,
+                         VkPipelineLayout layout, const RayShaders& shaders)
+    : context_(context), resources_(resources), fn_(gpu::RayTracingFunctions::load(context)) {
     VkDevice device = context.device();
-    const UniqueShaderModule modules[] = {
-        create_shader_module(device, shaders.raygen, "vkCreateShaderModule(raygen)"),
-        create_shader_module(device, shaders.miss, "vkCreateShaderModule(miss)"),
-        create_shader_module(device, shaders.closest_hit, "vkCreateShaderModule(closest hit)"),
-        create_shader_module(device, shaders.any_hit, "vkCreateShaderModule(any hit)"),
+    const gpu::UniqueShaderModule modules[] = {
+        gpu::create_shader_module(device, shaders.raygen, "vkCreateShaderModule(raygen)"),
+        gpu::create_shader_module(device, shaders.miss, "vkCreateShaderModule(miss)"),
+        gpu::create_shader_module(device, shaders.closest_hit, "vkCreateShaderModule(closest hit)"),
+        gpu::create_shader_module(device, shaders.any_hit, "vkCreateShaderModule(any hit)"),
     };
     const VkShaderStageFlagBits stage_bits[] = {
         VK_SHADER_STAGE_RAYGEN_BIT_KHR, VK_SHADER_STAGE_MISS_BIT_KHR,
         VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR, VK_SHADER_STAGE_ANY_HIT_BIT_KHR};
     std::array<VkPipelineShaderStageCreateInfo, 4> stages{};
     for (std::size_t i = 0; i < stages.size(); ++i) {
-        stages[i] = vk_init<VkPipelineShaderStageCreateInfo>(
+        stages[i] = gpu::vk_init<VkPipelineShaderStageCreateInfo>(
             VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
         stages[i].stage = stage_bits[i];
         stages[i].module = modules[i].get();
@@ -34,7 +34,7 @@ RayPipeline::RayPipeline(Context& context, ResourceManager& resources, VkPipelin
     }
     std::array<VkRayTracingShaderGroupCreateInfoKHR, 3> groups{};
     for (auto& g : groups) {
-        g = vk_init<VkRayTracingShaderGroupCreateInfoKHR>(
+        g = gpu::vk_init<VkRayTracingShaderGroupCreateInfoKHR>(
             VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR);
         g.generalShader = g.closestHitShader = g.anyHitShader = g.intersectionShader =
             VK_SHADER_UNUSED_KHR;
@@ -45,7 +45,7 @@ RayPipeline::RayPipeline(Context& context, ResourceManager& resources, VkPipelin
     groups[2].type = VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR;
     groups[2].closestHitShader = 2;
     groups[2].anyHitShader = 3;
-    auto ci = vk_init<VkRayTracingPipelineCreateInfoKHR>(
+    auto ci = gpu::vk_init<VkRayTracingPipelineCreateInfoKHR>(
         VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR);
     ci.stageCount = static_cast<std::uint32_t>(stages.size());
     ci.pStages = stages.data();
@@ -54,25 +54,26 @@ RayPipeline::RayPipeline(Context& context, ResourceManager& resources, VkPipelin
     ci.maxPipelineRayRecursionDepth = 1; // raygen traces; hit shaders never do
     ci.layout = layout;
     VkPipeline pipeline = VK_NULL_HANDLE;
-    vk_check(
+    gpu::vk_check(
         fn_.create_pipelines(device, VK_NULL_HANDLE, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline),
         "vkCreateRayTracingPipelinesKHR");
-    pipeline_ = UniquePipeline(device, pipeline);
+    pipeline_ = gpu::UniquePipeline(device, pipeline);
 
     // Raygen, miss and hit group, each in its own region at the base alignment; the
     // buffer is over-allocated so the first region's address can be aligned.
-    const DeviceInfo& info = context_.info();
+    const gpu::DeviceInfo& info = context_.info();
     const std::uint32_t handle = info.shader_group_handle_size;
     const VkDeviceSize stride = align_up(handle, info.shader_group_handle_alignment);
     const VkDeviceSize region = align_up(stride, info.shader_group_base_alignment);
     std::vector<std::uint8_t> handles(3 * std::size_t(handle));
-    vk_check(fn_.get_group_handles(device, pipeline_.get(), 0, 3, handles.size(), handles.data()),
-             "vkGetRayTracingShaderGroupHandlesKHR");
+    gpu::vk_check(
+        fn_.get_group_handles(device, pipeline_.get(), 0, 3, handles.size(), handles.data()),
+        "vkGetRayTracingShaderGroupHandlesKHR");
     sbt_ = resources_.create_buffer(
         {3 * region + info.shader_group_base_alignment,
          VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-         MemoryUsage::Upload, "shader binding table"});
-    const Buffer& b = resources_.get(sbt_);
+         gpu::MemoryUsage::Upload, "shader binding table"});
+    const gpu::Buffer& b = resources_.get(sbt_);
     const VkDeviceAddress base = align_up(b.address, info.shader_group_base_alignment);
     auto* bytes = static_cast<std::uint8_t*>(b.mapped) + (base - b.address);
     for (std::uint32_t g = 0; g < 3; ++g)
@@ -94,4 +95,4 @@ void RayPipeline::trace(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t 
     fn_.cmd_trace_rays(cmd, &raygen_, &miss_, &hit_, &callable_, width, height, 1);
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <span>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 struct RayShaders {
     std::span<const std::uint32_t> raygen, miss, closest_hit, any_hit; // SPIR-V
@@ -17,7 +17,7 @@ struct RayShaders {
 
 class RayPipeline {
 public:
-    RayPipeline(Context& context, ResourceManager& resources, VkPipelineLayout layout,
+    RayPipeline(gpu::Context& context, gpu::ResourceManager& resources, VkPipelineLayout layout,
                 const RayShaders& shaders);
     ~RayPipeline();
     RayPipeline(const RayPipeline&) = delete;
@@ -27,12 +27,12 @@ public:
     void trace(VkCommandBuffer cmd, std::uint32_t width, std::uint32_t height) const;
 
 private:
-    Context& context_;
-    ResourceManager& resources_;
-    RayTracingFunctions fn_;
-    UniquePipeline pipeline_;
-    BufferHandle sbt_;
+    gpu::Context& context_;
+    gpu::ResourceManager& resources_;
+    gpu::RayTracingFunctions fn_;
+    gpu::UniquePipeline pipeline_;
+    gpu::BufferHandle sbt_;
     VkStridedDeviceAddressRegionKHR raygen_{}, miss_{}, hit_{}, callable_{};
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -9,7 +9,7 @@
 #include <set>
 #include <tuple>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 std::vector<BlasPlan> plan_blas(const Scene& scene, std::span<const GpuMesh> meshes) {
     // Engine meshes by glTF mesh, in primitive order.
@@ -199,4 +199,4 @@ std::vector<PosedBlasPlan> plan_posed_blas(const Scene& scene, std::span<const G
     return out;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -13,7 +13,7 @@
 #include <sherpa/render/gpu_scene.h>
 #include <sherpa/scene/scene.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 struct BlasGeometryPlan {
     std::uint32_t mesh = 0; // engine mesh (Scene::meshes, GpuScene::meshes)
@@ -111,4 +111,4 @@ std::vector<PosedBlasPlan> plan_posed_blas(const Scene& scene, std::span<const G
                                            std::span<const std::uint32_t> scene_instances,
                                            std::span<const BlasPlan> plans);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

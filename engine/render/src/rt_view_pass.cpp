@@ -12,7 +12,7 @@
 #include "rt_rgen.h"
 #include "rt_rmiss.h"
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 namespace {
 
 constexpr VkShaderStageFlags kHitStages =
@@ -22,7 +22,7 @@ constexpr VkShaderStageFlags kAllStages =
 
 } // namespace
 
-RtViewPass::RtViewPass(Context& context, ResourceManager& resources,
+RtViewPass::RtViewPass(gpu::Context& context, gpu::ResourceManager& resources,
                        VkDescriptorSetLayout bindless_layout)
     : context_(context), resources_(resources) {
     VkDevice device = context.device();
@@ -36,19 +36,20 @@ RtViewPass::RtViewPass(Context& context, ResourceManager& resources,
         {4, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_RAYGEN_BIT_KHR, nullptr},
         {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_RAYGEN_BIT_KHR, nullptr},
     };
-    set_layout_ = create_descriptor_set_layout(device, bindings, "vkCreateDescriptorSetLayout(rt)");
+    set_layout_ =
+        gpu::create_descriptor_set_layout(device, bindings, "vkCreateDescriptorSetLayout(rt)");
     const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1},
                                           {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
                                           {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2},
                                           {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
                                           {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
-    pool_ = create_descriptor_pool(device, 1, sizes, "vkCreateDescriptorPool(rt)");
-    set_ = allocate_descriptor_set(device, pool_.get(), set_layout_.get(),
-                                   "vkAllocateDescriptorSets(rt)");
+    pool_ = gpu::create_descriptor_pool(device, 1, sizes, "vkCreateDescriptorPool(rt)");
+    set_ = gpu::allocate_descriptor_set(device, pool_.get(), set_layout_.get(),
+                                        "vkAllocateDescriptorSets(rt)");
 
     const VkDescriptorSetLayout sets[] = {bindless_layout, set_layout_.get()};
     const VkPushConstantRange push{kAllStages, 0, sizeof(GPURayPushConstants)};
-    layout_ = create_pipeline_layout(device, sets, {&push, 1}, "vkCreatePipelineLayout(rt)");
+    layout_ = gpu::create_pipeline_layout(device, sets, {&push, 1}, "vkCreatePipelineLayout(rt)");
 
     pipeline_ = std::make_unique<RayPipeline>(
         context, resources, layout_.get(),
@@ -64,7 +65,7 @@ void RtViewPass::ensure_target(std::uint32_t width, std::uint32_t height) {
     if (target_.valid() && width == width_ && height == height_) return;
     resources_.images().destroy(target_);
     resources_.destroy(readback_);
-    ImageDesc d;
+    gpu::ImageDesc d;
     d.format = VK_FORMAT_R8G8B8A8_UNORM; // storage: the shader writes sRGB-encoded bytes
     d.width = width;
     d.height = height;
@@ -73,16 +74,16 @@ void RtViewPass::ensure_target(std::uint32_t width, std::uint32_t height) {
     d.name = "ray-traced view";
     target_ = resources_.images().create(d);
     readback_ = resources_.create_buffer({VkDeviceSize(width) * height * 4,
-                                          VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::Readback,
-                                          "ray-traced view readback"});
+                                          VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                          gpu::MemoryUsage::Readback, "ray-traced view readback"});
     width_ = width;
     height_ = height;
 }
 
 void RtViewPass::record(VkCommandBuffer cmd, const RayTracedFrame& f, bool readback) {
     ensure_target(f.width, f.height);
-    const Image& image = resources_.images().get(target_);
-    auto as_write = vk_init<VkWriteDescriptorSetAccelerationStructureKHR>(
+    const gpu::Image& image = resources_.images().get(target_);
+    auto as_write = gpu::vk_init<VkWriteDescriptorSetAccelerationStructureKHR>(
         VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR);
     as_write.accelerationStructureCount = 1;
     as_write.pAccelerationStructures = &f.tlas;
@@ -93,7 +94,7 @@ void RtViewPass::record(VkCommandBuffer cmd, const RayTracedFrame& f, bool readb
     const VkDescriptorBufferInfo frame_info{f.frame_data, 0, VK_WHOLE_SIZE};
     std::array<VkWriteDescriptorSet, 6> writes{};
     for (std::uint32_t i = 0; i < writes.size(); ++i) {
-        writes[i] = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        writes[i] = gpu::vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
         writes[i].dstSet = set_;
         writes[i].dstBinding = i;
         writes[i].descriptorCount = 1;
@@ -115,16 +116,16 @@ void RtViewPass::record(VkCommandBuffer cmd, const RayTracedFrame& f, bool readb
 
     // The cascades were drawn by an earlier submission (render_rt): their depth
     // writes made visible to the rays.
-    memory_barrier(cmd, VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-                   VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-                   VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR,
-                   VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-    ImageTransition t;
+    gpu::memory_barrier(cmd, VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR,
+                        VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    gpu::ImageTransition t;
     t.image = image.image.get();
     t.to = VK_IMAGE_LAYOUT_GENERAL;
     t.dst_stage = VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR;
     t.dst_access = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-    transition(cmd, t);
+    gpu::transition(cmd, t);
     pipeline_->bind(cmd);
     const VkDescriptorSet sets[] = {f.bindless, set_};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, layout_.get(), 0, 2, sets,
@@ -132,11 +133,11 @@ void RtViewPass::record(VkCommandBuffer cmd, const RayTracedFrame& f, bool readb
     vkCmdPushConstants(cmd, layout_.get(), kAllStages, 0, sizeof(f.push), &f.push);
     pipeline_->trace(cmd, f.width, f.height);
     if (!readback) {
-        memory_barrier(cmd, VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR,
-                       VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT |
-                           VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                       VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+        gpu::memory_barrier(cmd, VK_PIPELINE_STAGE_2_RAY_TRACING_SHADER_BIT_KHR,
+                            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT |
+                                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
         return;
     }
     t.from = VK_IMAGE_LAYOUT_GENERAL;
@@ -145,14 +146,14 @@ void RtViewPass::record(VkCommandBuffer cmd, const RayTracedFrame& f, bool readb
     t.src_access = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
     t.dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT;
     t.dst_access = VK_ACCESS_2_TRANSFER_READ_BIT;
-    transition(cmd, t);
+    gpu::transition(cmd, t);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {f.width, f.height, 1};
     vkCmdCopyImageToBuffer(cmd, image.image.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                            resources_.get(readback_).buffer.get(), 1, &region);
-    memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                   VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    gpu::memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
 }
 
 void RtViewPass::read(std::vector<std::uint8_t>& rgba) const {
@@ -160,4 +161,4 @@ void RtViewPass::read(std::vector<std::uint8_t>& rgba) const {
     std::memcpy(rgba.data(), resources_.get(readback_).mapped, rgba.size());
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

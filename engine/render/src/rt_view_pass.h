@@ -14,7 +14,7 @@
 #include <memory>
 #include <vector>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 struct RayTracedFrame {
     VkDescriptorSet bindless = VK_NULL_HANDLE;
@@ -30,7 +30,8 @@ struct RayTracedFrame {
 
 class RtViewPass {
 public:
-    RtViewPass(Context& context, ResourceManager& resources, VkDescriptorSetLayout bindless_layout);
+    RtViewPass(gpu::Context& context, gpu::ResourceManager& resources,
+               VkDescriptorSetLayout bindless_layout);
     ~RtViewPass();
     RtViewPass(const RtViewPass&) = delete;
     RtViewPass& operator=(const RtViewPass&) = delete;
@@ -48,16 +49,16 @@ public:
 private:
     void ensure_target(std::uint32_t width, std::uint32_t height);
 
-    Context& context_;
-    ResourceManager& resources_;
-    UniqueDescriptorSetLayout set_layout_;
-    UniqueDescriptorPool pool_;
+    gpu::Context& context_;
+    gpu::ResourceManager& resources_;
+    gpu::UniqueDescriptorSetLayout set_layout_;
+    gpu::UniqueDescriptorPool pool_;
     VkDescriptorSet set_ = VK_NULL_HANDLE;
-    UniquePipelineLayout layout_;
+    gpu::UniquePipelineLayout layout_;
     std::unique_ptr<RayPipeline> pipeline_;
-    ImageHandle target_;
-    BufferHandle readback_;
+    gpu::ImageHandle target_;
+    gpu::BufferHandle readback_;
     std::uint32_t width_ = 0, height_ = 0;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -8,7 +8,7 @@
 #include "frame_slots.h"
 #include "passes.h"
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 class SceneChanges : private SceneStateRefs {
 public:
@@ -35,4 +35,4 @@ private:
     ShadowPass& shadows_;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -10,9 +10,9 @@
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/scene/visibility.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
-SceneState::SceneState(Context& ctx, ResourceManager& res, const RendererOptions& opts)
+SceneState::SceneState(gpu::Context& ctx, gpu::ResourceManager& res, const RendererOptions& opts)
     : context(ctx), resources(res), options(opts), bindless(res) {}
 
 SceneState::~SceneState() {
@@ -28,8 +28,8 @@ void SceneState::load(const Scene& source, std::unique_ptr<GpuScene> gpu_scene,
     gpu = std::move(gpu_scene);
     if (options.ray_tracing) {
         if (!context.info().ray_tracing_enabled)
-            throw GpuError("ray tracing was asked for but the device does not ray trace "
-                           "(or it was turned off: --rt off)");
+            throw gpu::GpuError("ray tracing was asked for but the device does not ray trace "
+                                "(or it was turned off: --rt off)");
         acceleration = std::make_unique<SceneAccelerationStructures>(resources, source, *gpu,
                                                                      options.acceleration);
         emissive = emissive_lights(source);
@@ -113,4 +113,4 @@ std::vector<std::uint8_t> SceneState::hidden_instances() const {
     return hidden;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

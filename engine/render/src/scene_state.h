@@ -20,7 +20,7 @@
 
 #include <optional>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 // What lighting and camera resolution read of the loaded scene (no whole Scene kept).
 struct SceneLights {
@@ -31,7 +31,8 @@ struct SceneLights {
 
 class SceneState {
 public:
-    SceneState(Context& context, ResourceManager& resources, const RendererOptions& options);
+    SceneState(gpu::Context& context, gpu::ResourceManager& resources,
+               const RendererOptions& options);
     ~SceneState();
     SceneState(const SceneState&) = delete;
     SceneState& operator=(const SceneState&) = delete;
@@ -59,11 +60,11 @@ public:
     std::optional<std::vector<MaterialInstance>>
     animate(const std::vector<AnimatedProperty>& values);
 
-    Context& context;
-    ResourceManager& resources;
+    gpu::Context& context;
+    gpu::ResourceManager& resources;
     const RendererOptions options;
     SceneSetup setup; // of the scene loaded (hidden nodes as set_hidden_nodes() left them)
-    BindlessTable bindless;
+    gpu::BindlessTable bindless;
     std::unique_ptr<GpuScene> gpu; // null: nothing loaded
     // With RendererOptions::ray_tracing: the scene's BLAS/TLAS.
     std::unique_ptr<SceneAccelerationStructures> acceleration;
@@ -119,12 +120,12 @@ struct SceneStateRefs {
         : state(s), context(s.context), resources(&s.resources), bindless(&s.bindless),
           scene(s.gpu), acceleration(s.acceleration), environment(s.environment) {}
     SceneState& state;
-    Context& context;
-    ResourceManager* const resources;
-    BindlessTable* const bindless;
+    gpu::Context& context;
+    gpu::ResourceManager* const resources;
+    gpu::BindlessTable* const bindless;
     const std::unique_ptr<GpuScene>& scene;
     const std::unique_ptr<SceneAccelerationStructures>& acceleration;
     const std::unique_ptr<EnvironmentMap>& environment;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -7,11 +7,11 @@
 
 #include <algorithm>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 namespace {
 
-VkSamplerCreateInfo sampler_info(const SamplerDesc& d, const DeviceInfo& device) {
+VkSamplerCreateInfo sampler_info(const SamplerDesc& d, const gpu::DeviceInfo& device) {
     auto filter = [](Filter f) {
         return f == Filter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
     };
@@ -26,7 +26,7 @@ VkSamplerCreateInfo sampler_info(const SamplerDesc& d, const DeviceInfo& device)
         }
         return VK_SAMPLER_ADDRESS_MODE_REPEAT;
     };
-    auto si = vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+    auto si = gpu::vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
     si.magFilter = filter(d.mag_filter);
     si.minFilter = filter(d.min_filter);
     // Trilinear filtering doubles the texel fetches of every sample; on a CPU
@@ -50,24 +50,27 @@ VkSamplerCreateInfo sampler_info(const SamplerDesc& d, const DeviceInfo& device)
 
 // A set prepared for another scene or device, or whose levels were released after an
 // earlier upload, would create invalid images: refuse it.
-void check_prepared(const tex::PreparedTexture& t, const Scene& scene, const DeviceInfo& device) {
+void check_prepared(const tex::PreparedTexture& t, const Scene& scene,
+                    const gpu::DeviceInfo& device) {
     const std::string what =
         "prepared texture '" + t.source + "' (" + std::string(tex::role_name(t.role)) + ")";
     for (std::int32_t texture : t.textures)
         if (texture < 0 || std::size_t(texture) >= scene.textures.size())
-            throw GpuError(what + " names glTF texture " + std::to_string(texture) + " of " +
-                           std::to_string(scene.textures.size()) + ": prepared for another scene?");
+            throw gpu::GpuError(what + " names glTF texture " + std::to_string(texture) + " of " +
+                                std::to_string(scene.textures.size()) +
+                                ": prepared for another scene?");
     if (tex::is_block_compressed(t.format) && !device.bc_textures)
-        throw GpuError(what + " is " + std::string(tex::vk_format_name(t.format)) + " but " +
-                       device.name + " cannot sample BC formats: prepare with its DeviceInfo");
+        throw gpu::GpuError(what + " is " + std::string(tex::vk_format_name(t.format)) + " but " +
+                            device.name + " cannot sample BC formats: prepare with its DeviceInfo");
     if (t.levels.empty() || t.width == 0 || t.height == 0)
-        throw GpuError(what + " has no levels (released after an earlier upload?)");
+        throw gpu::GpuError(what + " has no levels (released after an earlier upload?)");
     for (std::size_t l = 0; l < t.levels.size(); ++l) {
         const auto level = static_cast<std::uint32_t>(l);
         if (t.levels[l].size() != tex::level_size(t.format, tex::mip_extent(t.width, level),
                                                   tex::mip_extent(t.height, level)))
-            throw GpuError(what + ": mip level " + std::to_string(l) + " has " +
-                           std::to_string(t.levels[l].size()) + " bytes, not what its size needs");
+            throw gpu::GpuError(what + ": mip level " + std::to_string(l) + " has " +
+                                std::to_string(t.levels[l].size()) +
+                                " bytes, not what its size needs");
     }
 }
 
@@ -83,7 +86,7 @@ std::optional<MissingTextures> parse_missing_textures(std::string_view name) {
     return std::nullopt;
 }
 
-tex::TextureTarget texture_target(const DeviceInfo& device, const TextureSettings& settings) {
+tex::TextureTarget texture_target(const gpu::DeviceInfo& device, const TextureSettings& settings) {
     return {device.bc_textures, device.is_cpu() && settings.decode_bc7_on_cpu, device.name};
 }
 
@@ -98,7 +101,8 @@ tex::PipelineOptions texture_pipeline_options(const TextureSettings& settings) {
     return o;
 }
 
-SceneTextures::SceneTextures(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+SceneTextures::SceneTextures(gpu::ResourceManager& resources, gpu::BindlessTable& table,
+                             const Scene& scene,
                              std::shared_ptr<const tex::PreparedTextureSet> prepared,
                              MissingTextures missing)
     : resources_(resources), table_(table), prepared_(std::move(prepared)), missing_(missing) {
@@ -134,12 +138,12 @@ void SceneTextures::upload(const Scene& scene) {
     const std::vector<tex::PreparedTexture>& records = prepared_->textures;
     gpu_.resize(records.size());
     slots_.assign(records.size(), kTextureSentinel);
-    UploadBatch batch(resources_);
+    gpu::UploadBatch batch(resources_);
     for (std::size_t i = 0; i < records.size(); ++i) {
         const tex::PreparedTexture& t = records[i];
         if (t.failed || t.textures.empty()) continue; // the default texture stands in
         check_prepared(t, scene, resources_.context().info());
-        ImageDesc d;
+        gpu::ImageDesc d;
         d.format = static_cast<VkFormat>(t.format);
         d.width = t.width;
         d.height = t.height;
@@ -169,7 +173,7 @@ void SceneTextures::release() {
         if (s != kTextureSentinel) table_.remove(s);
     for (const auto& [key, s] : extra_slots_) table_.remove(s);
     for (GpuTexture& g : gpu_) resources_.images().destroy(g.image);
-    for (SamplerHandle& h : samplers_) resources_.images().destroy(h);
+    for (gpu::SamplerHandle& h : samplers_) resources_.images().destroy(h);
     slots_.clear();
     extra_slots_.clear();
     gpu_.clear();
@@ -203,8 +207,9 @@ std::uint32_t SceneTextures::field_slot(const TextureSlot& s, TextureRole role,
             value = it->second;
     if (value != kTextureSentinel) return value;
     // A present slot whose texture failed draws the checker (colour slots) when asked.
-    return role == kRoleColor && missing_ == MissingTextures::Checker && failed ? kCheckerTexture
-                                                                                : fallback;
+    return role == kRoleColor && missing_ == MissingTextures::Checker && failed
+               ? gpu::kCheckerTexture
+               : fallback;
 }
 
 GPUMaterialData SceneTextures::material(const MaterialInstance& m) const {
@@ -213,12 +218,12 @@ GPUMaterialData SceneTextures::material(const MaterialInstance& m) const {
                      std::uint32_t fallback) { value = field_slot(s, role, fallback); };
     // Emissive without a texture is the factor alone (glTF): white when it emits.
     const bool emits = glm::any(glm::greaterThan(m.emissive_factor, glm::vec3(0.0f)));
-    field(g.base_color_tex, m.base_color, kRoleColor, kWhiteTexture);
-    field(g.emissive_tex, m.emissive, kRoleColor, emits ? kWhiteTexture : kBlackTexture);
-    field(g.metallic_roughness_tex, m.metallic_roughness, kRoleLinear, kWhiteTexture);
-    field(g.occlusion_tex, m.occlusion, kRoleLinear, kWhiteTexture);
-    field(g.normal_tex, m.normal, kRoleNormal, kFlatNormalTexture);
+    field(g.base_color_tex, m.base_color, kRoleColor, gpu::kWhiteTexture);
+    field(g.emissive_tex, m.emissive, kRoleColor, emits ? gpu::kWhiteTexture : gpu::kBlackTexture);
+    field(g.metallic_roughness_tex, m.metallic_roughness, kRoleLinear, gpu::kWhiteTexture);
+    field(g.occlusion_tex, m.occlusion, kRoleLinear, gpu::kWhiteTexture);
+    field(g.normal_tex, m.normal, kRoleNormal, gpu::kFlatNormalTexture);
     return g;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

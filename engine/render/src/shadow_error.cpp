@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 namespace {
 
 bool near(const std::uint8_t* px, const std::array<std::uint8_t, 3>& c) {
@@ -37,4 +37,4 @@ ShadowErrorCounts count_shadow_error(std::span<const std::uint8_t> rgba) {
     return n;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

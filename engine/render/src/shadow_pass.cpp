@@ -5,11 +5,12 @@
 
 #include <cstring>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
-ShadowPass::ShadowPass(Context& context, ResourceManager& resources, std::uint32_t resolution)
+ShadowPass::ShadowPass(gpu::Context& context, gpu::ResourceManager& resources,
+                       std::uint32_t resolution)
     : context_(context), resources_(resources), resolution_(resolution) {
-    ImageDesc d;
+    gpu::ImageDesc d;
     d.format = kDepthFormat;
     d.width = d.height = resolution_;
     d.layers = kMaxCascades;
@@ -21,32 +22,32 @@ ShadowPass::ShadowPass(Context& context, ResourceManager& resources, std::uint32
     d.name = "shadow cascades";
     map_ = resources_.images().create(d);
 
-    auto si = vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+    auto si = gpu::vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
     si.magFilter = si.minFilter = VK_FILTER_LINEAR; // 2x2 percentage-closer filtering per tap
     si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
     si.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE; // outside every cascade: lit
     si.compareEnable = VK_TRUE;
     si.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
     sampler_ = resources_.images().create_sampler(si);
-    const Image& img = resources_.images().get(map_);
+    const gpu::Image& img = resources_.images().get(map_);
 
     // The descriptor names a read-only layout from the start, so the map is cleared
     // (fully lit) and put in that layout before any frame can sample it.
-    CommandRecorder rec(context_);
+    gpu::CommandRecorder rec(context_);
     VkCommandBuffer cmd = rec.begin();
-    transition(cmd,
-               {img.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
+    gpu::transition(cmd, {img.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE,
+                          VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                          VK_ACCESS_2_TRANSFER_WRITE_BIT});
     VkClearDepthStencilValue one{1.0f, 0};
     VkImageSubresourceRange range{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, kMaxCascades};
     vkCmdClearDepthStencilImage(cmd, img.image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &one, 1,
                                 &range);
-    transition(cmd,
-               {img.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_CLEAR_BIT,
-                VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
+    gpu::transition(
+        cmd, {img.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+              VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_CLEAR_BIT,
+              VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+              VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
     resources_.timeline().wait_for(rec.submit(resources_));
 }
 
@@ -79,9 +80,9 @@ std::uint64_t ShadowPass::bytes() const {
 void ShadowPass::record(FrameContext& f) {
     if (f.cascades == 0) return; // no shadows, or the cached map is still valid
     VkCommandBuffer cmd = f.cmd;
-    const Image& map = resources_.images().get(map_);
+    const gpu::Image& map = resources_.images().get(map_);
     const std::uint32_t res = resolution_;
-    transition(
+    gpu::transition(
         cmd,
         {map.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT,
          VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
@@ -91,13 +92,13 @@ void ShadowPass::record(FrameContext& f) {
              VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT});
     for (std::uint32_t c = 0; c < f.cascades; ++c) {
         auto depth =
-            vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+            gpu::vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
         depth.imageView = map.layer_views[c].get();
         depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
         depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
         depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
         depth.clearValue.depthStencil = {1.0f, 0};
-        auto ri = vk_init<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
+        auto ri = gpu::vk_init<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
         ri.renderArea = {{0, 0}, {res, res}};
         ri.layerCount = 1;
         ri.pDepthAttachment = &depth;
@@ -116,13 +117,13 @@ void ShadowPass::record(FrameContext& f) {
         draw_groups(f, DrawPipeline{PipelineId::ShadowMask}, AlphaMode::Mask, view, tally);
         vkCmdEndRendering(cmd);
     }
-    transition(cmd, {map.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT,
-                     VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                     VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
-                     VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-                     VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-                     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
+    gpu::transition(
+        cmd, {map.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+              VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+              VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+              VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+              VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
     valid_ = true;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

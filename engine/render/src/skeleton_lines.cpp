@@ -5,7 +5,7 @@
 
 #include <sherpa/render/frame_request.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 namespace {
 bool finite(const glm::vec3& p) {
@@ -50,4 +50,4 @@ void append_skeleton(std::vector<GPULineVertex>& out, std::span<const Skin> skin
         }
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

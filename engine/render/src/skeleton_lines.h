@@ -12,7 +12,7 @@
 #include <sherpa/render/gpu_structs.h>
 #include <sherpa/scene/scene.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 inline const glm::vec4 kBoneColor{0.92f, 0.92f, 0.92f, 1.0f}; // light grey
 inline const glm::vec4 kJointColor{0.1f, 0.85f, 1.0f, 1.0f};  // cyan
@@ -25,4 +25,4 @@ void append_skeleton(std::vector<GPULineVertex>& out, std::span<const Skin> skin
                      std::span<const Node> nodes, std::span<const glm::mat4> world,
                      std::optional<std::uint32_t> selected_joint, float joint_size);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -11,7 +11,7 @@
 #include <cstring>
 #include <map>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 namespace {
 
@@ -78,7 +78,7 @@ void SceneAccelerationStructures::build_tlas(std::span<const glm::mat4> node_wor
     stats_.tlas.builds = previous.builds;
     stats_.tlas.refits = previous.refits;
     if (plan.instances.empty()) {
-        tlas_ = AccelerationStructure();
+        tlas_ = gpu::AccelerationStructure();
         resources_.destroy(instances_);
         tlas_blas_.clear();
         return;
@@ -92,7 +92,7 @@ void SceneAccelerationStructures::build_tlas(std::span<const glm::mat4> node_wor
             {bytes,
              VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
                  VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-             MemoryUsage::Upload, "TLAS instances"});
+             gpu::MemoryUsage::Upload, "TLAS instances"});
     }
     auto* out = static_cast<VkAccelerationStructureInstanceKHR*>(resources_.get(instances_).mapped);
     for (std::uint32_t i = 0; i < count; ++i) {
@@ -102,8 +102,8 @@ void SceneAccelerationStructures::build_tlas(std::span<const glm::mat4> node_wor
         // 24 bits: more geometry records than that cannot be addressed.
         const std::uint32_t first = first_geometry(p.blas);
         if (first >= (1u << 24))
-            throw GpuError("ray tracing: geometry record " + std::to_string(first) +
-                           " is past the 24-bit instance custom index");
+            throw gpu::GpuError("ray tracing: geometry record " + std::to_string(first) +
+                                " is past the 24-bit instance custom index");
         inst.instanceCustomIndex = first;
         inst.mask = 0xff;
         inst.instanceShaderBindingTableRecordOffset = 0;
@@ -118,13 +118,13 @@ void SceneAccelerationStructures::build_tlas(std::span<const glm::mat4> node_wor
     }
     stats_.tlas.instance_buffer_bytes = resources_.get(instances_).size;
 
-    auto geometry = vk_init<VkAccelerationStructureGeometryKHR>(
+    auto geometry = gpu::vk_init<VkAccelerationStructureGeometryKHR>(
         VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR);
     geometry.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
-    geometry.geometry.instances = vk_init<VkAccelerationStructureGeometryInstancesDataKHR>(
+    geometry.geometry.instances = gpu::vk_init<VkAccelerationStructureGeometryInstancesDataKHR>(
         VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR);
     geometry.geometry.instances.data.deviceAddress = resources_.get(instances_).address;
-    auto info = vk_init<VkAccelerationStructureBuildGeometryInfoKHR>(
+    auto info = gpu::vk_init<VkAccelerationStructureBuildGeometryInfoKHR>(
         VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
     info.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR;
     info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR |
@@ -133,15 +133,16 @@ void SceneAccelerationStructures::build_tlas(std::span<const glm::mat4> node_wor
                       : VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
     info.geometryCount = 1;
     info.pGeometries = &geometry;
-    auto sizes = vk_init<VkAccelerationStructureBuildSizesInfoKHR>(
+    auto sizes = gpu::vk_init<VkAccelerationStructureBuildSizesInfoKHR>(
         VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR);
     const VkDevice device = resources_.context().device();
     fn_.get_build_sizes(device, VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &info, &count,
                         &sizes);
     if (!refit) {
         // The previous TLAS (if any) is unused: every build and update waits for itself.
-        tlas_ = AccelerationStructure(resources_, fn_, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
-                                      sizes.accelerationStructureSize, "TLAS");
+        tlas_ = gpu::AccelerationStructure(resources_, fn_,
+                                           VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
+                                           sizes.accelerationStructureSize, "TLAS");
         tlas_blas_ = order;
     } else {
         info.srcAccelerationStructure = tlas_.get();
@@ -154,7 +155,7 @@ void SceneAccelerationStructures::build_tlas(std::span<const glm::mat4> node_wor
     const VkAccelerationStructureBuildRangeInfoKHR* ranges = &range;
 
     BuildTimer timer(resources_.context(), 1);
-    CommandRecorder rec(resources_.context());
+    gpu::CommandRecorder rec(resources_.context());
     VkCommandBuffer cmd = rec.begin();
     // The BLAS builds (and a previous TLAS build) completed in earlier submissions.
     build_barrier(cmd);
@@ -169,4 +170,4 @@ void SceneAccelerationStructures::build_tlas(std::span<const glm::mat4> node_wor
     stats_.tlas.scratch_bytes = scratch_bytes;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -10,14 +10,14 @@
 #include <algorithm>
 #include <bit>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 namespace {
 
 constexpr VkFormat kRadianceFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 
 } // namespace
 
-TransmissionPass::TransmissionPass(Context& context, ResourceManager& resources,
+TransmissionPass::TransmissionPass(gpu::Context& context, gpu::ResourceManager& resources,
                                    VkDescriptorSetLayout textures_layout,
                                    VkDescriptorSetLayout frame_layout)
     : context_(context), resources_(resources), textures_layout_(textures_layout),
@@ -45,7 +45,7 @@ bool TransmissionPass::active(const FrameContext& f) {
 
 std::uint64_t TransmissionPass::bytes() const {
     std::uint64_t b = 0;
-    for (ImageHandle h : {color_, depth_})
+    for (gpu::ImageHandle h : {color_, depth_})
         if (h.valid()) b += resources_.images().get(h).allocation_size;
     return b;
 }
@@ -56,7 +56,7 @@ void TransmissionPass::ensure_target(FrameContext& f) {
     width_ = f.target.width;
     height_ = f.target.height;
     levels_ = std::bit_width(std::max(width_, height_));
-    ImageDesc c;
+    gpu::ImageDesc c;
     c.format = kRadianceFormat;
     c.width = width_;
     c.height = height_;
@@ -67,17 +67,17 @@ void TransmissionPass::ensure_target(FrameContext& f) {
     color_ = resources_.images().create(c);
     depth_ = resources_.images().create(
         depth_attachment_desc(width_, height_, "transmission background depth"));
-    auto vi = vk_init<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
+    auto vi = gpu::vk_init<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
     vi.image = resources_.images().get(color_).image.get();
     vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
     vi.format = kRadianceFormat;
     vi.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     VkImageView view = VK_NULL_HANDLE;
-    vk_check(vkCreateImageView(context_.device(), &vi, nullptr, &view),
-             "vkCreateImageView(transmission)");
-    level0_ = UniqueImageView(context_.device(), view);
+    gpu::vk_check(vkCreateImageView(context_.device(), &vi, nullptr, &view),
+                  "vkCreateImageView(transmission)");
+    level0_ = gpu::UniqueImageView(context_.device(), view);
     if (!sampler_.valid()) {
-        auto si = vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+        auto si = gpu::vk_init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
         si.magFilter = si.minFilter = VK_FILTER_LINEAR;
         si.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
         si.addressModeU = si.addressModeV = si.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
@@ -97,7 +97,7 @@ void TransmissionPass::prepare(FrameContext& f) {
     const VkDescriptorImageInfo info{resources_.images().get(sampler_),
                                      resources_.images().get(color_).view.get(),
                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    auto write = vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+    auto write = gpu::vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
     write.dstSet = f.slot.set;
     write.dstBinding = 9;
     write.descriptorCount = 1;
@@ -111,16 +111,16 @@ void TransmissionPass::record(FrameContext& f) {
     if (!pipelines_)
         pipelines_ = std::make_unique<Pipelines>(context_, textures_layout_, frame_layout_,
                                                  kRadianceFormat, true);
-    const Image& color = resources_.images().get(color_);
-    const Image& depth = resources_.images().get(depth_);
+    const gpu::Image& color = resources_.images().get(color_);
+    const gpu::Image& depth = resources_.images().get(depth_);
     VkImage image = color.image.get();
     // Level 0 becomes the attachment (an earlier frame's fragment shaders read it).
-    transition(f.cmd,
-               {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, 0, 1});
-    transition(
+    gpu::transition(f.cmd, {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                            VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                            VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
+                            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, 0, 1});
+    gpu::transition(
         f.cmd,
         {depth.image.get(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
          VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
@@ -129,7 +129,7 @@ void TransmissionPass::record(FrameContext& f) {
          VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
          VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
              VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT});
-    auto ca = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+    auto ca = gpu::vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
     ca.imageView = level0_.get();
     ca.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     ca.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
@@ -140,13 +140,13 @@ void TransmissionPass::record(FrameContext& f) {
     const glm::vec3 cc =
         environment_background ? glm::vec3(0.0f) : glm::vec3(f.settings.clear_color);
     ca.clearValue.color = {{cc.r, cc.g, cc.b, 0.0f}};
-    auto da = vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+    auto da = gpu::vk_init<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
     da.imageView = depth.view.get();
     da.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
     da.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
     da.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
     da.clearValue.depthStencil = {0.0f, 0}; // reverse-Z
-    auto ri = vk_init<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
+    auto ri = gpu::vk_init<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
     ri.renderArea = {{0, 0}, {width_, height_}};
     ri.layerCount = 1;
     ri.colorAttachmentCount = 1;
@@ -156,7 +156,7 @@ void TransmissionPass::record(FrameContext& f) {
     set_viewport(f.cmd, width_, height_);
     // The frame's passes with this pass's pipelines and target; its draws are tallied
     // apart (the camera's statistics count the shading draws once).
-    RenderTarget target{image, color.view.get(), kRadianceFormat, width_, height_};
+    gpu::RenderTarget target{image, color.view.get(), kRadianceFormat, width_, height_};
     FrameContext g{f.cmd,     f.slot,      f.slot_index, *pipelines_, f.settings, target,
                    f.context, f.resources, f.scene,      f.culling,   f.lighting};
     g.environment = f.environment;
@@ -171,17 +171,19 @@ void TransmissionPass::record(FrameContext& f) {
     vkCmdEndRendering(f.cmd);
 
     // The mip chain by successive linear blits, each level from the one above.
-    transition(f.cmd, {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                       VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_BLIT_BIT,
-                       VK_ACCESS_2_TRANSFER_READ_BIT, 0, 1});
+    gpu::transition(f.cmd,
+                    {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_BLIT_BIT,
+                     VK_ACCESS_2_TRANSFER_READ_BIT, 0, 1});
     std::int32_t w = static_cast<std::int32_t>(width_), h = static_cast<std::int32_t>(height_);
     for (std::uint32_t level = 1; level < levels_; ++level) {
-        transition(f.cmd, {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                           VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
-                           VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, level, 1});
+        gpu::transition(f.cmd,
+                        {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                         VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
+                         VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, level, 1});
         const std::int32_t nw = std::max(w / 2, 1), nh = std::max(h / 2, 1);
         VkImageBlit blit{};
         blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, 1};
@@ -190,18 +192,19 @@ void TransmissionPass::record(FrameContext& f) {
         blit.dstOffsets[1] = {nw, nh, 1};
         vkCmdBlitImage(f.cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
-        transition(f.cmd, {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                           VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_BLIT_BIT,
-                           VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_BLIT_BIT,
-                           VK_ACCESS_2_TRANSFER_READ_BIT, level, 1});
+        gpu::transition(f.cmd,
+                        {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_BLIT_BIT,
+                         VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_BLIT_BIT,
+                         VK_ACCESS_2_TRANSFER_READ_BIT, level, 1});
         w = nw;
         h = nh;
     }
-    transition(f.cmd,
-               {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_BLIT_BIT,
-                VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_TRANSFER_READ_BIT,
-                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
+    gpu::transition(f.cmd,
+                    {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_BLIT_BIT,
+                     VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_TRANSFER_READ_BIT,
+                     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -10,11 +10,11 @@
 
 #include <memory>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 class TransmissionPass {
 public:
-    TransmissionPass(Context& context, ResourceManager& resources,
+    TransmissionPass(gpu::Context& context, gpu::ResourceManager& resources,
                      VkDescriptorSetLayout textures_layout, VkDescriptorSetLayout frame_layout);
     ~TransmissionPass();
     TransmissionPass(const TransmissionPass&) = delete;
@@ -34,16 +34,16 @@ public:
 private:
     void ensure_target(FrameContext& f);
 
-    Context& context_;
-    ResourceManager& resources_;
+    gpu::Context& context_;
+    gpu::ResourceManager& resources_;
     VkDescriptorSetLayout textures_layout_, frame_layout_;
     std::unique_ptr<Pipelines> pipelines_; // forward.frag with TRANSMISSION_BACKGROUND
-    ImageHandle color_, depth_;
+    gpu::ImageHandle color_, depth_;
     // Level 0 alone: what rendering writes (an attachment view has one level). Not in
     // the pool, so a resize waits for the device before it goes.
-    UniqueImageView level0_;
-    SamplerHandle sampler_;
+    gpu::UniqueImageView level0_;
+    gpu::SamplerHandle sampler_;
     std::uint32_t width_ = 0, height_ = 0, levels_ = 0;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

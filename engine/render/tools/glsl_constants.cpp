@@ -46,24 +46,24 @@ struct Section {
 
 std::string views() {
     std::ostringstream o;
-    for (const gpu::DebugViewInfo& v : gpu::kDebugViews)
+    for (const render::DebugViewInfo& v : render::kDebugViews)
         o << "const uint VIEW_" << glsl_name(v.name) << " = " << u(v.id) << ";\n";
-    const auto& f = gpu::kSpecGlossFlagColor;
+    const auto& f = render::kSpecGlossFlagColor;
     o << "// The metallic view on specular-glossiness materials (no metallic value).\n"
       << "const vec3 SPEC_GLOSS_FLAG = vec3(" << f[0] << ", " << f[1] << ", " << f[2] << ");\n";
     const std::pair<const char*, const std::array<float, 3>*> classes[] = {
-        {"SHADOW_AGREE_LIT", &gpu::kShadowAgreeLitColor},
-        {"SHADOW_AGREE_SHADOWED", &gpu::kShadowAgreeShadowedColor},
-        {"SHADOW_FALSE_SHADOW", &gpu::kShadowFalseShadowColor},
-        {"SHADOW_FALSE_LIGHT", &gpu::kShadowFalseLightColor}};
+        {"SHADOW_AGREE_LIT", &render::kShadowAgreeLitColor},
+        {"SHADOW_AGREE_SHADOWED", &render::kShadowAgreeShadowedColor},
+        {"SHADOW_FALSE_SHADOW", &render::kShadowFalseShadowColor},
+        {"SHADOW_FALSE_LIGHT", &render::kShadowFalseLightColor}};
     o << "// The shadow-error view's classes.\n";
     for (auto [name, c] : classes)
         o << "const vec3 " << name << " = vec3(" << (*c)[0] << ", " << (*c)[1] << ", " << (*c)[2]
           << ");\n";
     o << "// The provenance view's colours: authored, generated, defaulted.\n"
       << "const vec3 PROVENANCE_COLORS[3] = vec3[3](";
-    for (std::size_t i = 0; i < gpu::kProvenanceColors.size(); ++i) {
-        const auto& c = gpu::kProvenanceColors[i];
+    for (std::size_t i = 0; i < render::kProvenanceColors.size(); ++i) {
+        const auto& c = render::kProvenanceColors[i];
         o << (i ? ", " : "") << "vec3(" << c[0] << ", " << c[1] << ", " << c[2] << ")";
     }
     o << ");\n";
@@ -72,7 +72,7 @@ std::string views() {
 
 std::string overlays() {
     std::ostringstream o;
-    for (const gpu::OverlayEntry& ov : gpu::kOverlays)
+    for (const render::OverlayEntry& ov : render::kOverlays)
         o << "const uint OVERLAY_" << glsl_name(ov.name) << " = " << u(ov.bit) << "u;\n";
     return o.str();
 }
@@ -85,33 +85,37 @@ std::string mesh_flags() {
         {VertexAttribute::TexCoord1, "UV1"},     {VertexAttribute::Color0, "COLOR"}};
     static_assert(std::size(streams) == kVertexAttributeCount);
     for (auto [a, name] : streams) o << "const uint HAS_" << name << " = 1u << " << u(a) << ";\n";
-    o << "const uint MESH_LINES = " << hex(gpu::kMeshLinesBit) << "; // topology bits\n";
-    o << "const uint MESH_POINTS = " << hex(gpu::kMeshPointsBit) << ";\n";
-    o << "const uint TANGENT_PROVENANCE_SHIFT = " << gpu::kTangentProvenanceShift
+    o << "const uint MESH_LINES = " << hex(render::kMeshLinesBit) << "; // topology bits\n";
+    o << "const uint MESH_POINTS = " << hex(render::kMeshPointsBit) << ";\n";
+    o << "const uint TANGENT_PROVENANCE_SHIFT = " << render::kTangentProvenanceShift
       << "; // 0 authored, 1 generated, 2 defaulted\n";
-    o << "const uint NORMAL_PROVENANCE_SHIFT = " << gpu::kNormalProvenanceShift << ";\n";
-    o << "const uint GLYPH_KIND_SHIFT = " << gpu::kGlyphKindShift
+    o << "const uint NORMAL_PROVENANCE_SHIFT = " << render::kNormalProvenanceShift << ";\n";
+    o << "const uint GLYPH_KIND_SHIFT = " << render::kGlyphKindShift
       << "; // 0 normal, 1 tangent, 2 bitangent\n";
-    o << "const uint NO_CASCADE = " << hex(gpu::kNoCascade) << ";\n";
-    o << "const uint MESH_MOTION = " << hex(gpu::kMeshMotionBit) << "; // skins or morphs\n";
-    o << "const uint MOTION_SKIN = " << hex(gpu::kMotionSkin) << "; // GPUMotionMesh.flags\n";
-    o << "const uint MOTION_MORPH_POSITIONS = " << hex(gpu::kMotionMorphPositions) << ";\n";
-    o << "const uint MOTION_MORPH_NORMALS = " << hex(gpu::kMotionMorphNormals) << ";\n";
-    o << "const uint MOTION_MORPH_TANGENTS = " << hex(gpu::kMotionMorphTangents) << ";\n";
+    o << "const uint NO_CASCADE = " << hex(render::kNoCascade) << ";\n";
+    o << "const uint MESH_MOTION = " << hex(render::kMeshMotionBit) << "; // skins or morphs\n";
+    o << "const uint MOTION_SKIN = " << hex(render::kMotionSkin) << "; // GPUMotionMesh.flags\n";
+    o << "const uint MOTION_MORPH_POSITIONS = " << hex(render::kMotionMorphPositions) << ";\n";
+    o << "const uint MOTION_MORPH_NORMALS = " << hex(render::kMotionMorphNormals) << ";\n";
+    o << "const uint MOTION_MORPH_TANGENTS = " << hex(render::kMotionMorphTangents) << ";\n";
     return o.str();
 }
 
 std::string texture_slots() {
     std::ostringstream o;
-    const std::pair<gpu::TextureSlotIndex, const char*> slots[] = {
-        {gpu::kSlotBaseColor, "BASE_COLOR"}, {gpu::kSlotMetallicRoughness, "METALLIC_ROUGHNESS"},
-        {gpu::kSlotNormal, "NORMAL"},        {gpu::kSlotOcclusion, "OCCLUSION"},
-        {gpu::kSlotEmissive, "EMISSIVE"},    {gpu::kSlotSpecularGlossiness, "SPECULAR_GLOSSINESS"}};
-    static_assert(std::size(slots) == gpu::kSlotCount);
+    const std::pair<render::TextureSlotIndex, const char*> slots[] = {
+        {render::kSlotBaseColor, "BASE_COLOR"},
+        {render::kSlotMetallicRoughness, "METALLIC_ROUGHNESS"},
+        {render::kSlotNormal, "NORMAL"},
+        {render::kSlotOcclusion, "OCCLUSION"},
+        {render::kSlotEmissive, "EMISSIVE"},
+        {render::kSlotSpecularGlossiness, "SPECULAR_GLOSSINESS"}};
+    static_assert(std::size(slots) == render::kSlotCount);
     for (auto [slot, name] : slots) o << "const uint SLOT_" << name << " = " << u(slot) << ";\n";
-    o << "const uint SLOT_COUNT = " << u(gpu::kSlotCount) << ";\n";
-    o << "const uint WORKFLOW_METALLIC_ROUGHNESS = " << u(gpu::kWorkflowMetallicRoughness) << ";\n";
-    o << "const uint WORKFLOW_SPECULAR_GLOSSINESS = " << u(gpu::kWorkflowSpecularGlossiness)
+    o << "const uint SLOT_COUNT = " << u(render::kSlotCount) << ";\n";
+    o << "const uint WORKFLOW_METALLIC_ROUGHNESS = " << u(render::kWorkflowMetallicRoughness)
+      << ";\n";
+    o << "const uint WORKFLOW_SPECULAR_GLOSSINESS = " << u(render::kWorkflowSpecularGlossiness)
       << ";\n";
     return o.str();
 }
@@ -121,10 +125,10 @@ std::string texture_slots() {
 // them in another order) would compile to different SPIR-V.
 std::vector<Section> sections() {
     std::ostringstream limits, textures, alpha, cull;
-    limits << "const uint MAX_LIGHTS = " << gpu::kMaxLights << ";\n"
-           << "const uint MAX_CASCADES = " << gpu::kMaxCascades
+    limits << "const uint MAX_LIGHTS = " << render::kMaxLights << ";\n"
+           << "const uint MAX_CASCADES = " << render::kMaxCascades
            << "; // array size in the frame block\n"
-           << "const uint SHADOW_CASCADES = " << gpu::kShadowCascades
+           << "const uint SHADOW_CASCADES = " << render::kShadowCascades
            << "; // cascades actually used\n";
     textures << "const uint TEX_WHITE = " << gpu::kWhiteTexture << "u;\n"
              << "const uint TEX_FLAT_NORMAL = " << gpu::kFlatNormalTexture << "u;\n"
@@ -135,29 +139,29 @@ std::vector<Section> sections() {
     cull << "#define CULL_SPHERE " << u(CullMethod::Sphere) << "u\n"
          << "#define CULL_PVERTEX " << u(CullMethod::PVertex) << "u\n"
          << "#define CULL_EXACT " << u(CullMethod::Exact) << "u\n"
-         << "#define CULL_INVALID_BIT " << hex(gpu::kCullInvalidBit) << "\n"
-         << "#define CULL_MAX_SAT_AXES " << gpu::kCullMaxSatAxes << "\n";
+         << "#define CULL_INVALID_BIT " << hex(render::kCullInvalidBit) << "\n"
+         << "#define CULL_MAX_SAT_AXES " << render::kCullMaxSatAxes << "\n";
     return {
-        {"sherpa_frame_limits.glsl", "sherpa::gpu::kMaxLights, kMaxCascades, kShadowCascades",
+        {"sherpa_frame_limits.glsl", "sherpa::render::kMaxLights, kMaxCascades, kShadowCascades",
          limits.str()},
         {"sherpa_mesh_flags.glsl",
          "push constant mesh_flags: stream bits (sherpa::VertexAttribute), provenance and glyph "
          "shifts (gpu_structs.h)",
          mesh_flags()},
-        {"sherpa_views.glsl", "debug views, sherpa::gpu::kDebugViews (debug_views.h)", views()},
+        {"sherpa_views.glsl", "debug views, sherpa::render::kDebugViews (debug_views.h)", views()},
         {"sherpa_overlays.glsl",
-         "overlay bits of FrameRequest::overlays, sherpa::gpu::kOverlays (debug_views.h)",
+         "overlay bits of FrameRequest::overlays, sherpa::render::kOverlays (debug_views.h)",
          overlays()},
         {"sherpa_texture_slots.glsl",
          "texture slots of GPUMaterialExtra.uv, in this order, and its workflows", texture_slots()},
         {"sherpa_material_ext.glsl",
-         "sherpa::gpu::kNoExtension: material extension blocks (gpu_material_ext_structs.h)",
-         "const uint NO_EXTENSION = " + hex(gpu::kNoExtension) + ";\n"},
+         "sherpa::render::kNoExtension: material extension blocks (gpu_material_ext_structs.h)",
+         "const uint NO_EXTENSION = " + hex(render::kNoExtension) + ";\n"},
         {"sherpa_default_textures.glsl", "default bindless textures, sherpa::gpu::kWhiteTexture...",
          textures.str()},
         {"sherpa_alpha_modes.glsl", "sherpa::AlphaMode (scene/material.h)", alpha.str()},
         {"sherpa_cull.glsl",
-         "sherpa::CullMethod (scene/culling.h), sherpa::gpu::kCullInvalidBit, kCullMaxSatAxes",
+         "sherpa::CullMethod (scene/culling.h), sherpa::render::kCullInvalidBit, kCullMaxSatAxes",
          cull.str()},
     };
 }

@@ -88,7 +88,7 @@ struct DifferenceOptions {
     std::optional<CameraSpec> camera;        // unset: scene a framed automatically
     std::uint32_t threshold = 8;
     bool validation = false;
-    gpu::Lighting lighting;                   // both sides lit alike (none by default)
+    render::Lighting lighting;                // both sides lit alike (none by default)
     std::string label_a = "A", label_b = "B"; // drawn over the half-size sides
     std::vector<std::string> captions;        // drawn under the legend, clipped to the width
 };

@@ -75,7 +75,7 @@ make_mesh_compression_family(const MeshCompressionFamilyOptions& options = {});
 // against ray-traced hard shadows (one shadow ray per pixel, the reference). Per
 // camera (`cameras` orbiting the scene, alternately at the framing distance and close
 // up at 40% of it) the renderer's
-// shadow-error view classifies each pixel (gpu::count_shadow_error). Errors: % of the
+// shadow-error view classifies each pixel (render::count_shadow_error). Errors: % of the
 // pixels the rays find lit that the maps get wrong either way (the chart error), split
 // into false shadow and false light, summed over the cameras. Time: GPU ms of the
 // rasterized lit frame with its shadow pass (cascades redrawn every frame), median of
@@ -93,7 +93,7 @@ struct ShadowFamilyOptions {
     bool ray_tracing = true;       // false: as on a device without it (tests)
     bool validation = false;       // Khronos validation on the family's device (tests)
     // The lit frames' environment and display settings (the main view's): none by default.
-    gpu::Lighting lighting;
+    render::Lighting lighting;
 };
 std::unique_ptr<Family> make_shadow_family(const ShadowFamilyOptions& options = {});
 
@@ -132,17 +132,17 @@ struct LightingFamilyOptions {
     bool ray_tracing = true;       // false: as on a device without it (tests)
     bool validation = false;       // Khronos validation on the family's device (tests)
     // The environment and display settings (the main view's): none by default.
-    gpu::Lighting lighting;
+    render::Lighting lighting;
 };
 std::unique_ptr<Family> make_lighting_family(const LightingFamilyOptions& options = {});
 // The convergence checkpoints of `options` (convergence_spp, or the default series).
 std::vector<std::uint32_t> lighting_convergence_spp(const LightingFamilyOptions& options);
 
-// Whether family `name` draws lit frames (and so takes a gpu::Lighting): "shadows",
+// Whether family `name` draws lit frames (and so takes a render::Lighting): "shadows",
 // "lighting".
 bool family_draws_lit_frames(std::string_view name);
 // make_family() with the lit frames lit by `lighting` (the main view's).
-std::unique_ptr<Family> make_family(std::string_view name, const gpu::Lighting& lighting);
+std::unique_ptr<Family> make_family(std::string_view name, const render::Lighting& lighting);
 // A method's name and its settings, both ways: "2048x3 pcf4" is 2048 texels, 3
 // cascades, 4 PCF taps. Parsing fails (false) on anything else.
 std::string shadow_method_name(std::uint32_t resolution, std::uint32_t cascades,

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 struct BlasStats {
     std::uint32_t mesh = 0; // glTF mesh (Mesh::group_id)
@@ -91,4 +91,4 @@ struct AccelerationSettings {
     std::vector<bool> hidden_nodes;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -21,7 +21,7 @@
 #include <sherpa/render/gpu_scene.h>
 #include <sherpa/scene/scene.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 struct TlasCandidate; // rt_plan.h
 
@@ -38,8 +38,8 @@ class PosedGeometry;
 class SceneAccelerationStructures {
 public:
     // `gpu` is `scene` on the GPU (same meshes, buffers with the build-input usage).
-    SceneAccelerationStructures(ResourceManager& resources, const Scene& scene, const GpuScene& gpu,
-                                const AccelerationSettings& settings = {});
+    SceneAccelerationStructures(gpu::ResourceManager& resources, const Scene& scene,
+                                const GpuScene& gpu, const AccelerationSettings& settings = {});
     ~SceneAccelerationStructures();
     SceneAccelerationStructures(const SceneAccelerationStructures&) = delete;
     SceneAccelerationStructures& operator=(const SceneAccelerationStructures&) = delete;
@@ -90,21 +90,21 @@ private:
     VkDeviceAddress blas_address(std::uint32_t blas) const;
     std::uint32_t first_geometry(std::uint32_t blas) const;
 
-    ResourceManager& resources_;
-    RayTracingFunctions fn_;
-    std::vector<AccelerationStructure> blas_; // by stats_.blas
-    std::vector<std::int32_t> blas_of_mesh_;  // per glTF mesh: index into blas_, -1 none
-    std::unique_ptr<PosedGeometry> posed_;    // BLAS blas_.size() + i: posed_'s i-th
-    std::vector<TlasCandidate> candidates_;   // what the TLAS may instance
+    gpu::ResourceManager& resources_;
+    gpu::RayTracingFunctions fn_;
+    std::vector<gpu::AccelerationStructure> blas_; // by stats_.blas
+    std::vector<std::int32_t> blas_of_mesh_;       // per glTF mesh: index into blas_, -1 none
+    std::unique_ptr<PosedGeometry> posed_;         // BLAS blas_.size() + i: posed_'s i-th
+    std::vector<TlasCandidate> candidates_;        // what the TLAS may instance
     std::vector<bool> hidden_;
-    AccelerationStructure tlas_;
+    gpu::AccelerationStructure tlas_;
     std::vector<std::uint32_t> tlas_blas_; // BLAS per TLAS instance, as last built
     // Per geometry record: its engine mesh, whether it was built opaque, its material now.
     std::vector<std::uint32_t> record_mesh_, record_material_;
     std::vector<bool> record_opaque_;
     std::vector<bool> force_no_opaque_; // per BLAS (static, then posed): follow_materials()
-    BufferHandle records_, instances_;
+    gpu::BufferHandle records_, instances_;
     AccelerationStats stats_;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -20,7 +20,7 @@
 #include <sherpa/scene/scene.h>
 #include <sherpa/scene/shadow_cascades.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 struct CameraSpec {
     enum class Kind { Auto, Gltf, Explicit } kind = Kind::Auto;
@@ -69,4 +69,4 @@ glm::mat4 reverse_z_perspective(float fov_y, float aspect, float near_plane, flo
 glm::mat4 reverse_z_orthographic(float half_width, float half_height, float near_plane,
                                  float far_plane);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -16,7 +16,7 @@
 #include <sherpa/gpu/frame_source.h>
 #include <sherpa/render/renderer.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 enum class CompareMode : std::uint32_t { Split, Difference };
 std::string_view to_string(CompareMode m);                            // "split", "difference"
@@ -64,7 +64,7 @@ std::array<std::uint8_t, 3> heat_colour(double t);
 // so the presenter must have been made with a.resources(): the frame also signals
 // b's submission timeline. `a` and `b` must be two renderers on one Context.
 // Stats come from the GPU, for the latest completed frame.
-class ComparisonFrame final : public FrameSource {
+class ComparisonFrame final : public gpu::FrameSource {
 public:
     // Throws GpuError for what either side cannot draw (e.g. a view the ray tracer
     // refuses), before anything is recorded.
@@ -74,7 +74,7 @@ public:
 
     std::uint32_t frames_in_flight() const override { return Renderer::kFramesInFlight; }
     void wait_for_slot(std::uint32_t slot) override;
-    void record(VkCommandBuffer cmd, std::uint32_t slot, const RenderTarget& target) override;
+    void record(VkCommandBuffer cmd, std::uint32_t slot, const gpu::RenderTarget& target) override;
     std::span<const VkSemaphoreSubmitInfo> signals(std::uint32_t slot) const override;
     void submitted(std::uint32_t slot, std::uint64_t submission) override;
 
@@ -102,4 +102,4 @@ ComparisonStats render_comparison(Renderer& a, const FrameRequest& a_settings, R
                                   const FrameRequest& b_settings, const ComparisonSettings& compare,
                                   std::vector<std::uint8_t>* rgba = nullptr);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -13,9 +13,12 @@
 #include <sherpa/scene/culling_passes.h>
 
 namespace sherpa::gpu {
-
 class Context;
 class ResourceManager;
+} // namespace sherpa::gpu
+
+namespace sherpa::render {
+
 class GpuCuller;
 class GpuCullPipeline;
 
@@ -32,7 +35,7 @@ class GpuCullChecker {
 public:
     // Builds the camera culler for `scene` (which must outlive this); the casters'
     // culler is built on first use.
-    GpuCullChecker(Context& context, ResourceManager& resources, const Scene& scene);
+    GpuCullChecker(gpu::Context& context, gpu::ResourceManager& resources, const Scene& scene);
     ~GpuCullChecker();
     GpuCullChecker(const GpuCullChecker&) = delete;
     GpuCullChecker& operator=(const GpuCullChecker&) = delete;
@@ -46,8 +49,8 @@ public:
 
 private:
     GpuCuller& culler(bool casters);
-    Context& context_;
-    ResourceManager& resources_;
+    gpu::Context& context_;
+    gpu::ResourceManager& resources_;
     const Scene& scene_;
     std::shared_ptr<const GpuCullPipeline> pipeline_; // one compile for both cullers
     std::unique_ptr<GpuCuller> camera_, casters_;
@@ -62,4 +65,4 @@ bool gpu_cull_passes(const Scene& scene, const std::vector<std::pair<std::string
                      const std::vector<PassResult>& cpu, std::vector<PassResult>& out,
                      std::string& error);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -19,7 +19,7 @@
 // the editor passes the label through QCoreApplication::translate(kViewLabelContext).
 #define SHERPA_TRANSLATE_NOOP(context, text) text
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 // Values are the VIEW_* constants of the generated shader header (the forward
 // shader's specialization constant), so they are part of the pipeline cache key.
@@ -263,4 +263,4 @@ constexpr std::optional<Overlay> find_overlay(std::string_view name) {
     return std::nullopt;
 }
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 // std430, 64 bytes: GPUEmissiveTriangle in emissive_lights.glsl.
 struct EmissiveTriangle {
@@ -82,4 +82,4 @@ double mean_over_triangle(const LuminanceGrid& grid, const glm::vec2 uv[3],
 EmissiveLights emissive_lights(const Scene& scene,
                                std::size_t max_triangles = kMaxEmissiveTriangles);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

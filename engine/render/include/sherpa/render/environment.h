@@ -14,7 +14,7 @@
 
 #include <glm/glm.hpp>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 // Linear RGB radiance, RGBA float texels, top row first.
 struct EnvironmentImage {
@@ -123,4 +123,4 @@ struct EnvironmentStats {
     std::uint64_t nonfinite = 0; // texels read as 0
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -14,7 +14,7 @@
 
 #include <sherpa/render/environment.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 // Coefficient k of band l, order m is k = l (l + 1) + m: (0,0), (1,-1), (1,0), (1,1),
 // (2,-2), (2,-1), (2,0), (2,1), (2,2). Directions in the image's own frame (+Y up).
@@ -36,4 +36,4 @@ Sh9 irradiance_sh9(const Sh9& radiance);
 // sum_k c_k Y_k(n): with irradiance_sh9()'s coefficients, irradiance / pi along n.
 glm::vec3 evaluate_sh9(const Sh9& coefficients, glm::vec3 n);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -20,7 +20,7 @@
 #include <sherpa/scene/culling.h>
 #include <sherpa/scene/shadow_cascades.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 // Which path culls the camera passes.
 enum class CullPath : std::uint32_t {
@@ -196,4 +196,4 @@ StreamPolicy stream_policy(const FrameRequest& settings);
 bool prepass_enabled(PrepassMode mode, bool cpu_device, std::uint64_t triangles,
                      std::uint64_t pixels);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -18,7 +18,7 @@
 #include <sherpa/scene/culling.h>
 #include <sherpa/scene/mesh_pass.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 // GPUCullObject, GPUCullParams: gpu_structs.h, with the engine's other GPU twins.
 GPUCullObject make_cull_object(const core::Aabb& box, std::uint32_t batch, std::uint32_t instance);
@@ -37,15 +37,15 @@ struct GpuCullReadback {
 // this one), so a renderer with a culler per pass makes it once.
 class GpuCullPipeline {
 public:
-    explicit GpuCullPipeline(const Context& context);
+    explicit GpuCullPipeline(const gpu::Context& context);
     VkPipeline pipeline() const { return pipeline_.get(); }
     VkPipelineLayout layout() const { return layout_.get(); }
     VkDescriptorSetLayout set_layout() const { return set_layout_.get(); }
 
 private:
-    UniqueDescriptorSetLayout set_layout_;
-    UniquePipelineLayout layout_;
-    UniquePipeline pipeline_;
+    gpu::UniqueDescriptorSetLayout set_layout_;
+    gpu::UniquePipelineLayout layout_;
+    gpu::UniquePipeline pipeline_;
 };
 
 class GpuCuller {
@@ -53,7 +53,8 @@ public:
     // `parameter_blocks`: one per frame in flight, so that writing a frame's
     // parameters never races a frame still running on the GPU. `pipeline`: shared
     // with other cullers; null makes one for this culler.
-    GpuCuller(Context& context, ResourceManager& resources, std::uint32_t parameter_blocks = 1,
+    GpuCuller(gpu::Context& context, gpu::ResourceManager& resources,
+              std::uint32_t parameter_blocks = 1,
               std::shared_ptr<const GpuCullPipeline> pipeline = nullptr);
     ~GpuCuller();
     GpuCuller(const GpuCuller&) = delete;
@@ -97,17 +98,17 @@ public:
 
 private:
     void release();
-    Context& context_;
-    ResourceManager& resources_;
+    gpu::Context& context_;
+    gpu::ResourceManager& resources_;
     std::shared_ptr<const GpuCullPipeline> pipeline_;
-    UniqueDescriptorPool pool_;
+    gpu::UniqueDescriptorPool pool_;
     std::vector<VkDescriptorSet> param_sets_; // one per parameter block (uniform buffer)
-    UniqueQueryPool timestamps_;
-    CommandRecorder recorder_;
-    std::vector<BufferHandle> params_;
-    BufferHandle objects_, draws_, draws_clear_, counts_, ids_, visible_, readback_;
+    gpu::UniqueQueryPool timestamps_;
+    gpu::CommandRecorder recorder_;
+    std::vector<gpu::BufferHandle> params_;
+    gpu::BufferHandle objects_, draws_, draws_clear_, counts_, ids_, visible_, readback_;
     std::uint32_t objects_count_ = 0, batch_count_ = 0;
     std::vector<std::uint32_t> object_instance_;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

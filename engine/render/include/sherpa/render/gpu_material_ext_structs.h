@@ -7,7 +7,7 @@
 
 #include <sherpa/render/gpu_structs.h> // GPUTextureTransform
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 // Material extensions (shaders/include/material_ext.glsl): one storage buffer of
 // 16-byte words (set 1, binding 8) that holds, for each material using at least one
@@ -175,4 +175,4 @@ static_assert(offsetof(GPUIridescenceBlock, uv) == 32);
 static_assert(offsetof(GPUIridescenceBlock, thickness_uv) == 64);
 static_assert(sizeof(GPUIridescenceBlock) == 96);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

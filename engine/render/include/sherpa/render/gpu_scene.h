@@ -19,7 +19,7 @@
 #include <sherpa/render/scene_textures.h>
 #include <sherpa/scene/scene.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 struct GpuMemoryReport {
     std::uint64_t vertex_streams = 0, indices = 0, textures = 0, materials = 0, instances = 0;
@@ -66,7 +66,7 @@ struct DrawGroup {
 // textures those slots name.
 class GpuMaterials {
 public:
-    GpuMaterials(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+    GpuMaterials(gpu::ResourceManager& resources, gpu::BindlessTable& table, const Scene& scene,
                  std::shared_ptr<const tex::PreparedTextureSet> textures, MissingTextures missing);
     ~GpuMaterials();
     GpuMaterials(const GpuMaterials&) = delete;
@@ -97,9 +97,9 @@ private:
     void upload(const Scene& scene);
     void build(std::span<const MaterialInstance> materials); // data_, extras_data_, extensions_
 
-    ResourceManager& resources_;
+    gpu::ResourceManager& resources_;
     std::unique_ptr<SceneTextures> textures_;
-    BufferHandle materials_, extras_, extension_buffer_;
+    gpu::BufferHandle materials_, extras_, extension_buffer_;
     MaterialExtensionBuffer extensions_;
     std::vector<GPUMaterialData> data_; // what the buffers hold
     std::vector<GPUMaterialExtra> extras_data_;
@@ -129,13 +129,13 @@ class GpuScene {
 public:
     // Uploads textures the caller prepared (tex::prepare_scene_textures(), possibly on
     // another thread) for this scene.
-    GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+    GpuScene(gpu::ResourceManager& resources, gpu::BindlessTable& table, const Scene& scene,
              std::shared_ptr<const tex::PreparedTextureSet> textures,
              StreamPolicy policy = StreamPolicy::UsedByMaterials,
              MissingTextures missing = MissingTextures::Checker);
     // Prepares the textures itself (on this thread), then uploads; the CPU copies of
     // the texture levels are released after the upload.
-    GpuScene(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+    GpuScene(gpu::ResourceManager& resources, gpu::BindlessTable& table, const Scene& scene,
              const TextureSettings& texture_settings,
              StreamPolicy policy = StreamPolicy::UsedByMaterials,
              MissingTextures missing = MissingTextures::Checker);
@@ -173,14 +173,15 @@ private:
                 MissingTextures missing);
     void upload_geometry(const Scene& scene);
     void upload_instances(const Scene& scene);
-    void upload_motion(const Scene& scene, const std::vector<bool>& instanced, UploadBatch& batch);
+    void upload_motion(const Scene& scene, const std::vector<bool>& instanced,
+                       gpu::UploadBatch& batch);
     void release();
 
-    ResourceManager& resources_;
-    BindlessTable& table_;
+    gpu::ResourceManager& resources_;
+    gpu::BindlessTable& table_;
     StreamPolicy policy_;
     std::unique_ptr<GpuMaterials> materials_;
-    BufferHandle vertices_, indices_, instances_, motion_streams_, motion_meshes_;
+    gpu::BufferHandle vertices_, indices_, instances_, motion_streams_, motion_meshes_;
     std::vector<GpuMesh> meshes_;
     std::vector<DrawGroup> groups_;
     std::vector<std::pair<AlphaMode, bool>> material_modes_; // per material: alpha, double-sided
@@ -191,4 +192,4 @@ private:
     std::uint64_t triangles_ = 0;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

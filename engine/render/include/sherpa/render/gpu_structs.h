@@ -16,7 +16,7 @@
 #include <sherpa/scene/material.h>
 #include <sherpa/scene/vertex.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 inline constexpr std::uint32_t kMaxLights = 16;
 inline constexpr std::uint32_t kMaxCascades = 4;    // array size in GPUFrameData
@@ -365,4 +365,4 @@ struct GPUCompareStats {
 };
 static_assert(sizeof(GPUCompareStats) == 1032);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -10,7 +10,7 @@
 #include <sherpa/core/progress.h>
 #include <sherpa/texture/texture_pipeline.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 enum class StreamPolicy {
     UsedByMaterials, // the default: what shading reads
@@ -50,4 +50,4 @@ struct TextureSettings {
     const core::CancelToken* cancel = nullptr;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -15,7 +15,7 @@
 #include <sherpa/scene/material.h>
 #include <sherpa/scene/texture_records.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 // KHR_texture_transform (and the TEXCOORD set) of a slot as the shaders read it.
 GPUTextureTransform texture_transform(const TextureSlot& slot);
@@ -52,4 +52,4 @@ using ExtensionTextureSlot = std::function<std::uint32_t(const TextureSlot&, Tex
 MaterialExtensionBuffer build_material_extensions(std::span<const MaterialInstance> materials,
                                                   const ExtensionTextureSlot& texture_slot);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -13,7 +13,7 @@ namespace sherpa {
 struct Scene;
 }
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 class Renderer;
 
@@ -31,4 +31,4 @@ struct MaterialReadback {
 // nothing is loaded or the index is out of range. Waits for one copy on the GPU.
 std::optional<MaterialReadback> read_material(Renderer& renderer, const Scene& scene, int material);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

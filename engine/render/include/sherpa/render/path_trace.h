@@ -9,7 +9,7 @@
 
 #include <sherpa/render/environment.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 // Importance sampling of an environment by luminance (shaders/include/env_sampling.glsl):
 // the image box-filtered down to at most `max_width` columns, each texel weighted by its
@@ -51,4 +51,4 @@ struct PathTraceError {
 };
 PathTraceError estimate_error(const PathTraceImage& image);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -7,9 +7,9 @@
 #include <sherpa/gpu/frame_source.h>
 #include <sherpa/render/renderer.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
-class PresentedFrame final : public FrameSource {
+class PresentedFrame final : public gpu::FrameSource {
 public:
     // `settings`' width and height are replaced by the target's. `resolution_scale`
     // below 1 (interaction on slow devices) draws each side at that fraction into an
@@ -24,7 +24,7 @@ public:
 
     std::uint32_t frames_in_flight() const override { return Renderer::kFramesInFlight; }
     void wait_for_slot(std::uint32_t slot) override;
-    void record(VkCommandBuffer cmd, std::uint32_t slot, const RenderTarget& target) override;
+    void record(VkCommandBuffer cmd, std::uint32_t slot, const gpu::RenderTarget& target) override;
     void submitted(std::uint32_t slot, std::uint64_t submission) override;
 
     // Statistics (GPU timestamps, culling) of the latest frame known to be complete:
@@ -39,4 +39,4 @@ private:
     FrameStats completed_;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

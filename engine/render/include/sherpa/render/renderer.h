@@ -31,9 +31,12 @@ struct PreparedTextureSet;
 } // namespace sherpa
 
 namespace sherpa::gpu {
-
 class Context;
 class ResourceManager;
+} // namespace sherpa::gpu
+
+namespace sherpa::render {
+
 class GpuScene;
 class SceneState;
 class FrameRecorder;
@@ -133,7 +136,7 @@ public:
     static constexpr std::uint32_t kFramesInFlight = 2;
     static constexpr std::size_t kCullHistory = 240;
 
-    explicit Renderer(Context& context, const RendererOptions& options = {});
+    explicit Renderer(gpu::Context& context, const RendererOptions& options = {});
     ~Renderer();
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
@@ -170,8 +173,8 @@ public:
     // presented frames), oldest first: what the editor's culling dock charts.
     const RingHistory<CullFrame>& cull_history() const;
 
-    ResourceManager& resources();
-    Context& context();
+    gpu::ResourceManager& resources();
+    gpu::Context& context();
     // The frame sources' narrow interface (PresentedFrame, ComparisonFrame,
     // render_comparison, read_path_trace, set_material_variant): frame slots, targets
     // and passes. Private to the render layer (src/frame_recorder.h); an incomplete
@@ -179,8 +182,8 @@ public:
     FrameRecorder& frames();
 
 private:
-    Context& context_;
-    std::unique_ptr<ResourceManager> resources_;
+    gpu::Context& context_;
+    std::unique_ptr<gpu::ResourceManager> resources_;
     std::unique_ptr<SceneState> scene_;     // what a load fixes
     std::unique_ptr<FrameRecorder> frames_; // what a frame records
 };
@@ -200,4 +203,4 @@ PathTraceImage read_path_trace(Renderer& renderer);
 VariantSwitch set_material_variant(Renderer& renderer, std::int32_t variant);
 PathTraceError path_trace_error(Renderer& renderer);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -8,7 +8,7 @@
 
 #include <sherpa/render/load_settings.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 struct SceneSetup {
     // The vertex streams uploaded: what the materials read, or every stream (debug
@@ -27,4 +27,4 @@ struct SceneSetup {
     std::shared_ptr<const std::vector<bool>> hidden_nodes;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

@@ -24,18 +24,18 @@
 #include <sherpa/texture/texture_pipeline.h>
 #include <sherpa/texture/texture_target.h>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 // What textures are prepared for on `device`: BC where it samples BC7/BC5, BC7
 // decoded to RGBA8 where it is a CPU device and `settings` does not keep the blocks.
-tex::TextureTarget texture_target(const DeviceInfo& device, const TextureSettings& settings);
+tex::TextureTarget texture_target(const gpu::DeviceInfo& device, const TextureSettings& settings);
 // The texture pipeline's options from `settings` (cache, BC7 level, progress, cancel;
 // force_rgba8 turns BC off whatever the target samples).
 tex::PipelineOptions texture_pipeline_options(const TextureSettings& settings);
 
 // One prepared texture on the GPU.
 struct GpuTexture {
-    ImageHandle image;
+    gpu::ImageHandle image;
     std::uint32_t slot = kTextureSentinel; // bindless slot; sentinel when it failed
     std::uint32_t mip_levels = 0;
     std::uint64_t bytes = 0; // device memory of the image
@@ -44,7 +44,7 @@ struct GpuTexture {
 class SceneTextures {
 public:
     // Uploads every texture of `prepared` (prepared for `scene`) that did not fail.
-    SceneTextures(ResourceManager& resources, BindlessTable& table, const Scene& scene,
+    SceneTextures(gpu::ResourceManager& resources, gpu::BindlessTable& table, const Scene& scene,
                   std::shared_ptr<const tex::PreparedTextureSet> prepared,
                   MissingTextures missing = MissingTextures::Checker);
     ~SceneTextures();
@@ -77,8 +77,8 @@ private:
     void upload(const Scene& scene);
     void release();
 
-    ResourceManager& resources_;
-    BindlessTable& table_;
+    gpu::ResourceManager& resources_;
+    gpu::BindlessTable& table_;
     std::shared_ptr<const tex::PreparedTextureSet> prepared_;
     MissingTextures missing_;
     std::vector<GpuTexture> gpu_;
@@ -86,9 +86,9 @@ private:
     // Textures sharing an image with another texture but not its sampler get a slot
     // of their own (same view): (glTF texture, role) -> slot.
     std::map<std::pair<std::int32_t, TextureRole>, std::uint32_t> extra_slots_;
-    std::vector<SamplerHandle> samplers_;
+    std::vector<gpu::SamplerHandle> samplers_;
     std::uint64_t bytes_ = 0;
     std::vector<std::string> warnings_;
 };
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

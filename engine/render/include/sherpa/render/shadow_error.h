@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <span>
 
-namespace sherpa::gpu {
+namespace sherpa::render {
 
 struct ShadowErrorCounts {
     std::uint64_t agree_lit = 0, agree_shadowed = 0;
@@ -26,4 +26,4 @@ struct ShadowErrorCounts {
 // `rgba`: the view's RGBA8 pixels as Renderer::render returns them (4 bytes each).
 ShadowErrorCounts count_shadow_error(std::span<const std::uint8_t> rgba);
 
-} // namespace sherpa::gpu
+} // namespace sherpa::render

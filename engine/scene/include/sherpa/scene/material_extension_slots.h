@@ -3,7 +3,7 @@
 // pipeline prepares (texture_uses), which TEXCOORD streams and tangents a mesh keeps
 // (usage_report, mesh_tangents) and how a texture warning names its use
 // (image_slot_uses) all read it. An extension's slots are listed only where the
-// renderer draws the extension (gpu::build_material_extensions): not on unlit or
+// renderer draws the extension (render::build_material_extensions): not on unlit or
 // specular-glossiness materials.
 #include <sherpa/scene/material.h>
 #include <sherpa/scene/texture_records.h>

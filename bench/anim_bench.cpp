@@ -38,8 +38,8 @@ double median_us(int repeat, double duration, const std::function<void(double)>&
     return us[us.size() / 2];
 }
 
-AnimationSampler keys(std::uint32_t width, int count, std::uint32_t seed) {
-    AnimationSampler s;
+scene::AnimationSampler keys(std::uint32_t width, int count, std::uint32_t seed) {
+    scene::AnimationSampler s;
     s.width = width;
     for (int k = 0; k < count; ++k) {
         s.times.push_back(static_cast<float>(k) / 30.0f);
@@ -51,14 +51,14 @@ AnimationSampler keys(std::uint32_t width, int count, std::uint32_t seed) {
 
 // A binary tree of `joints` nodes skinned by one skin, animated on T/R/S, with one
 // primitive of 8 vertices per joint (each vertex on 4 neighbouring joints).
-Scene generated_rig(std::uint32_t joints) {
-    Scene s;
+scene::Scene generated_rig(std::uint32_t joints) {
+    scene::Scene s;
     s.nodes.resize(joints + 1);
-    Skin skin;
-    Animation anim;
+    scene::Skin skin;
+    scene::Animation anim;
     anim.name = "generated";
     for (std::uint32_t j = 0; j < joints; ++j) {
-        Node& n = s.nodes[j];
+        scene::Node& n = s.nodes[j];
         n.translation = {0.0f, 0.1f, 0.0f};
         if (j > 0) {
             n.parent = static_cast<std::int32_t>((j - 1) / 2);
@@ -66,19 +66,20 @@ Scene generated_rig(std::uint32_t joints) {
         }
         skin.joints.push_back(j);
         skin.inverse_bind.push_back(glm::mat4(1.0f));
-        for (AnimationPath p :
-             {AnimationPath::Translation, AnimationPath::Rotation, AnimationPath::Scale}) {
-            anim.samplers.push_back(keys(p == AnimationPath::Rotation ? 4 : 3, 60, j));
+        for (scene::AnimationPath p :
+             {scene::AnimationPath::Translation, scene::AnimationPath::Rotation,
+              scene::AnimationPath::Scale}) {
+            anim.samplers.push_back(keys(p == scene::AnimationPath::Rotation ? 4 : 3, 60, j));
             anim.channels.push_back({static_cast<std::uint32_t>(anim.samplers.size() - 1), j, p});
         }
     }
     anim.end = 59.0f / 30.0f;
     s.skins.push_back(std::move(skin));
     s.animations.push_back(std::move(anim));
-    Node& holder = s.nodes[joints];
+    scene::Node& holder = s.nodes[joints];
     holder.mesh = 0;
     holder.skin = 0;
-    PrimitiveMotion m;
+    scene::PrimitiveMotion m;
     m.influences = 4;
     for (std::uint32_t v = 0; v < joints * 8; ++v) {
         m.base_positions.push_back({std::sin(float(v)), std::cos(float(v)), 0.01f * float(v)});
@@ -95,7 +96,7 @@ Scene generated_rig(std::uint32_t joints) {
         for (std::uint32_t k = 0; k < 4; ++k)
             m.boxes[m.joints[v * 4 + k]].base.expand(m.base_positions[v]);
     s.motions.push_back(std::move(m));
-    PrimitiveInfo p;
+    scene::PrimitiveInfo p;
     p.engine_mesh = 0; // posed from the motion data only
     p.motion = 0;
     p.vertices = joints * 8;
@@ -105,30 +106,32 @@ Scene generated_rig(std::uint32_t joints) {
     return s;
 }
 
-void report(const char* name, const Scene& s, int repeat) {
+void report(const char* name, const scene::Scene& s, int repeat) {
     const double d = s.animations.empty() ? 0.0 : s.animations[0].end;
     std::size_t joints = 0, channels = 0, vertices = 0;
     for (const auto& sk : s.skins) joints += sk.joints.size();
     for (const auto& a : s.animations) channels += a.channels.size();
     for (const auto& m : s.motions) vertices += m.base_positions.size();
-    const double eval = median_us(repeat, d, [&](double t) { (void)evaluate_pose(s, 0, t); });
-    Pose pose = evaluate_pose(s, 0, 0.5 * d);
+    const double eval =
+        median_us(repeat, d, [&](double t) { (void)scene::evaluate_pose(s, 0, t); });
+    scene::Pose pose = scene::evaluate_pose(s, 0, 0.5 * d);
     double sink = 0.0;
-    auto each_instance = [&](const std::function<void(std::uint32_t, const PrimitiveInfo&)>& f) {
-        for (std::uint32_t n : s.displayed_nodes)
-            for (const auto& p : s.primitives)
-                if (s.nodes[n].mesh >= 0 && p.mesh == static_cast<std::uint32_t>(s.nodes[n].mesh) &&
-                    p.motion >= 0)
-                    f(n, p);
-    };
+    auto each_instance =
+        [&](const std::function<void(std::uint32_t, const scene::PrimitiveInfo&)>& f) {
+            for (std::uint32_t n : s.displayed_nodes)
+                for (const auto& p : s.primitives)
+                    if (s.nodes[n].mesh >= 0 &&
+                        p.mesh == static_cast<std::uint32_t>(s.nodes[n].mesh) && p.motion >= 0)
+                        f(n, p);
+        };
     const double cull = median_us(repeat, d, [&](double) {
-        each_instance([&](std::uint32_t n, const PrimitiveInfo& p) {
-            sink += culling_bounds(s, pose, n, p).max.x;
+        each_instance([&](std::uint32_t n, const scene::PrimitiveInfo& p) {
+            sink += scene::culling_bounds(s, pose, n, p).max.x;
         });
     });
     const double posing = median_us(repeat, d, [&](double) {
-        each_instance([&](std::uint32_t n, const PrimitiveInfo& p) {
-            sink += posed_positions(s, pose, n, p).size();
+        each_instance([&](std::uint32_t n, const scene::PrimitiveInfo& p) {
+            sink += scene::posed_positions(s, pose, n, p).size();
         });
     });
     std::printf("%-22s %6zu joints %6zu channels %7zu vertices | evaluate_pose %8.2f us | "
@@ -145,12 +148,12 @@ int main(int argc, char** argv) {
     std::printf("sherpa-bench-anim: median per frame over %d times, one core\n", repeat);
     const std::string rigged =
         std::string(SHERPA_ASSETS_DIR) + "/gltf/RiggedSimple/glTF/RiggedSimple.gltf";
-    if (auto r = load_scene(rigged))
+    if (auto r = scene::load_scene(rigged))
         report("RiggedSimple", *r.scene, repeat);
     else
         std::printf("RiggedSimple: %s\n", r.error.c_str());
     for (std::uint32_t j : {64u, 256u, 1000u}) {
-        const Scene s = generated_rig(j);
+        const scene::Scene s = generated_rig(j);
         report(("generated " + std::to_string(j)).c_str(), s, repeat);
     }
     return 0;

@@ -89,7 +89,7 @@ bool no_images(tinygltf::Image*, const int, std::string*, std::string*, int, int
 
 tinygltf::Model load_model(const fs::path& path) {
     std::vector<std::uint8_t> bytes = read_bytes(path);
-    if (auto prepared = sherpa::detail::prepared_for_tinygltf(bytes); !prepared.empty())
+    if (auto prepared = sherpa::scene::detail::prepared_for_tinygltf(bytes); !prepared.empty())
         bytes = std::move(prepared);
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(no_images, nullptr);
@@ -149,7 +149,7 @@ Row bench_meshopt(const fs::path& file, int runs) {
     // fresh model copy): freeing them would let the next run reuse touched pages.
     std::vector<std::vector<std::uint8_t>> kept;
     kept.reserve(views.size() * std::size_t(runs));
-    const auto ours = [&] { sherpa::detail::decode_meshopt_views(copies[next++], {}); };
+    const auto ours = [&] { sherpa::scene::detail::decode_meshopt_views(copies[next++], {}); };
     std::tie(row.ours_ms, row.reference_ms) = best_ms_alternating(runs, ours, [&] {
         for (const View& v : views) {
             std::vector<std::uint8_t>& out = kept.emplace_back(v.bytes, 0);
@@ -179,7 +179,7 @@ Row bench_meshopt_decoders(const fs::path& file, int runs, bool vertex) {
     struct Stream {
         std::span<const std::uint8_t> data;
         std::size_t count, stride;
-        sherpa::meshopt::Mode mode;
+        sherpa::scene::meshopt::Mode mode;
         std::vector<std::uint8_t> out;
     };
     std::vector<Stream> streams;
@@ -194,16 +194,16 @@ Row bench_meshopt_decoders(const fs::path& file, int runs, bool vertex) {
             {buffer.data() + number(e, "byteOffset", 0), std::size_t(number(e, "byteLength", 0))},
             std::size_t(number(e, "count", 0)),
             std::size_t(number(e, "byteStride", 0)),
-            mode == "ATTRIBUTES"  ? sherpa::meshopt::Mode::Attributes
-            : mode == "TRIANGLES" ? sherpa::meshopt::Mode::Triangles
-                                  : sherpa::meshopt::Mode::Indices,
+            mode == "ATTRIBUTES"  ? sherpa::scene::meshopt::Mode::Attributes
+            : mode == "TRIANGLES" ? sherpa::scene::meshopt::Mode::Triangles
+                                  : sherpa::scene::meshopt::Mode::Indices,
             {}};
         st.out.resize(st.count * st.stride);
         row.encoded += st.data.size();
         row.decoded += st.out.size();
         streams.push_back(std::move(st));
     }
-    namespace mo = sherpa::meshopt;
+    namespace mo = sherpa::scene::meshopt;
     std::tie(row.ours_ms, row.reference_ms) = best_ms_alternating(
         runs,
         [&] {
@@ -263,10 +263,10 @@ Row bench_draco(const fs::path& file, int runs, const fs::path& scratch) {
         }
     std::vector<tinygltf::Model> copies(std::size_t(runs) + 1, original);
     // Decoded bytes: what the wrapper wrote for the primitives.
-    for (const auto& d : sherpa::detail::decode_draco_primitives(copies.back()))
+    for (const auto& d : sherpa::scene::detail::decode_draco_primitives(copies.back()))
         row.decoded += d.stats.decoded_bytes;
     std::size_t next = 0;
-    const auto ours = [&] { sherpa::detail::decode_draco_primitives(copies[next++]); };
+    const auto ours = [&] { sherpa::scene::detail::decode_draco_primitives(copies[next++]); };
     std::tie(row.ours_ms, row.reference_ms) = best_ms_alternating(runs, ours, [&] {
         for (const auto& [data, size] : streams) {
             draco::DecoderBuffer stream;
@@ -293,10 +293,11 @@ Row bench_draco(const fs::path& file, int runs, const fs::path& scratch) {
 }
 
 double load_ms(const std::string& path, int runs) {
-    sherpa::LoadOptions options;
+    sherpa::scene::LoadOptions options;
     options.generate_tangents = false;
     return best_ms(runs, [&] {
-        if (!sherpa::load_scene(path, options)) throw std::runtime_error(path + ": does not load");
+        if (!sherpa::scene::load_scene(path, options))
+            throw std::runtime_error(path + ": does not load");
     });
 }
 

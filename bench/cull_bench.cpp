@@ -41,8 +41,8 @@ double median_ns_per_object(int repeat, std::size_t n, const std::function<void(
 }
 
 // The floor: touch every byte the p-vertex kernel reads and write what it writes.
-__attribute__((target("avx512f,avx512bw,avx512vl"))) void read_floor_avx512(const BoxesSoA& b,
-                                                                            std::uint8_t* out) {
+__attribute__((target("avx512f,avx512bw,avx512vl"))) void
+read_floor_avx512(const scene::BoxesSoA& b, std::uint8_t* out) {
     const std::size_t n = b.size();
     std::size_t i = 0;
     for (; i + 16 <= n; i += 16) {
@@ -111,22 +111,22 @@ int main(int argc, char** argv) {
     std::printf("%10s %-18s %12s %14s %10s %10s\n", "instances", "method", "ns/object",
                 "false pos.", "visible", "x floor");
     for (std::uint64_t n : sizes) {
-        const LoadResult r = load_scene("builtin:grid?n=" + std::to_string(n));
+        const scene::LoadResult r = scene::load_scene("builtin:grid?n=" + std::to_string(n));
         if (!r) {
             std::fprintf(stderr, "error: %s\n", r.error.c_str());
             return 1;
         }
-        const CullInput input = prepare_cull_input(*r.scene);
+        const scene::CullInput input = scene::prepare_cull_input(*r.scene);
         // A camera in the middle of the grid, 8 units up, looking along +X and a
         // little down: about a quarter of the grid is in view, and many boxes
         // straddle the side planes.
-        CameraSpec cam;
+        scene::CameraSpec cam;
         cam.eye = {0.0f, 8.0f, 0.0f};
         cam.target = {1.0f, 7.8f, 0.35f};
         cam.fov_y_degrees = 50.0f;
-        const Frustum f = frustum_from_view_projection(cam.view_projection());
+        const scene::Frustum f = scene::frustum_from_view_projection(cam.view_projection());
         std::vector<std::uint8_t> out(n), exact(n);
-        cull_boxes(f, input.boxes, CullMethod::Exact, best, exact);
+        scene::cull_boxes(f, input.boxes, scene::CullMethod::Exact, best, exact);
         const double floor_ns =
             median_ns_per_object(repeat, n, [&] { read_floor_avx512(input.boxes, out.data()); });
         auto row = [&](const char* name, double ns, std::int64_t fp, std::uint64_t visible) {
@@ -139,19 +139,19 @@ int main(int argc, char** argv) {
         row("read floor", floor_ns, -1, 0);
         struct Variant {
             const char* name;
-            CullMethod method;
+            scene::CullMethod method;
             core::SimdLevel simd;
         };
         const Variant variants[] = {
-            {"sphere", CullMethod::Sphere, core::SimdLevel::Scalar},
-            {"pvertex scalar", CullMethod::PVertex, core::SimdLevel::Scalar},
-            {"pvertex avx2", CullMethod::PVertex, core::SimdLevel::Avx2},
-            {"pvertex avx512", CullMethod::PVertex, core::SimdLevel::Avx512},
-            {"exact", CullMethod::Exact, best}};
+            {"sphere", scene::CullMethod::Sphere, core::SimdLevel::Scalar},
+            {"pvertex scalar", scene::CullMethod::PVertex, core::SimdLevel::Scalar},
+            {"pvertex avx2", scene::CullMethod::PVertex, core::SimdLevel::Avx2},
+            {"pvertex avx512", scene::CullMethod::PVertex, core::SimdLevel::Avx512},
+            {"exact", scene::CullMethod::Exact, best}};
         for (const Variant& v : variants) {
             if (v.simd > best) continue;
             const double ns = median_ns_per_object(
-                repeat, n, [&] { cull_boxes(f, input.boxes, v.method, v.simd, out); });
+                repeat, n, [&] { scene::cull_boxes(f, input.boxes, v.method, v.simd, out); });
             std::uint64_t visible = 0;
             for (std::uint8_t x : out) visible += x;
             row(v.name, ns, false_positives(out, exact), visible);
@@ -160,14 +160,15 @@ int main(int argc, char** argv) {
             // The kernels stop testing planes once a whole SIMD block is outside, so
             // the view above favours them; from high above, every box is in view and
             // each block runs every plane: the worst case for the fastest path.
-            CameraSpec above;
+            scene::CameraSpec above;
             above.eye = {0.0f, 4.0f * std::sqrt(static_cast<float>(n)), 0.0f};
             above.target = {0.0f, 0.0f, -0.01f};
             above.fov_y_degrees = 90.0f;
             above.aspect = 1.0f;
-            const Frustum all = frustum_from_view_projection(above.view_projection());
-            const double ns = median_ns_per_object(
-                repeat, n, [&] { cull_boxes(all, input.boxes, CullMethod::PVertex, best, out); });
+            const scene::Frustum all = scene::frustum_from_view_projection(above.view_projection());
+            const double ns = median_ns_per_object(repeat, n, [&] {
+                scene::cull_boxes(all, input.boxes, scene::CullMethod::PVertex, best, out);
+            });
             std::uint64_t visible = 0;
             for (std::uint8_t x : out) visible += x;
             row(best == core::SimdLevel::Avx512 ? "pvertex avx512 all"
@@ -177,12 +178,12 @@ int main(int argc, char** argv) {
         }
         if (gpu_culler) {
             // GPU-driven path: compute dispatch time from timestamps, median of runs.
-            const ScenePasses passes = build_mesh_passes(*r.scene);
+            const scene::ScenePasses passes = scene::build_mesh_passes(*r.scene);
             gpu_culler->build(passes.forward, *r.scene);
             std::vector<double> ms;
             render::GpuCullReadback rb;
             for (int k = 0; k < std::max(3, repeat / 3); ++k) {
-                rb = gpu_culler->run(f, CullMethod::PVertex);
+                rb = gpu_culler->run(f, scene::CullMethod::PVertex);
                 ms.push_back(rb.gpu_ms);
             }
             std::sort(ms.begin(), ms.end());
@@ -194,10 +195,10 @@ int main(int argc, char** argv) {
             row(gpu_name.c_str(), ms[ms.size() / 2] * 1e6 / static_cast<double>(n),
                 false_positives(by_instance, exact), visible);
         }
-        CullOptions opt;
+        scene::CullOptions opt;
         opt.simd = best;
-        const double pass_ns =
-            median_ns_per_object(repeat, n, [&] { cull_pass(input, f, cam.eye, opt, "camera"); });
+        const double pass_ns = median_ns_per_object(
+            repeat, n, [&] { scene::cull_pass(input, f, cam.eye, opt, "camera"); });
         row("pass (cull+groups)", pass_ns, -1, 0); // p-vertex pass; see its row for false positives
         std::printf("%10s full camera pass: %.3f ms\n", "",
                     pass_ns * static_cast<double>(n) * 1e-6);

@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
         if (family == QLatin1String("textures")) continue; // too long to block the GUI for
         // The reference: the same runs on the GUI thread (a dock without a worker), the
         // scene loaded before the clock starts (the dock's runs load it inside theirs).
-        LoadResult scene = load_scene(helmet.toStdString(), lab::lab_load_options());
+        scene::LoadResult scene = scene::load_scene(helmet.toStdString(), lab::lab_load_options());
         if (!scene) {
             std::fprintf(stderr, "could not load %s: %s\n", qPrintable(helmet),
                          scene.error.c_str());

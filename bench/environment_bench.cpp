@@ -162,7 +162,7 @@ int main(int argc, char** argv) {
     // one that never had one, drawn in turn frame by frame (with, with a solid
     // background, without), so that machine load hits the three alike; each round's
     // ratio pairs frames drawn next to each other.
-    LoadResult loaded = load_scene(scene_spec);
+    scene::LoadResult loaded = scene::load_scene(scene_spec);
     if (!loaded) {
         std::fprintf(stderr, "error: %s\n", loaded.error.c_str());
         return 1;

@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
         std::uint64_t bytes = 0, triangles = 0;
         for (int r = 0; r < repeat; ++r) {
             reads.push_back(read_all_ms(gltf.parent_path(), bytes));
-            const sherpa::LoadResult res = sherpa::load_scene(gltf.string());
+            const sherpa::scene::LoadResult res = sherpa::scene::load_scene(gltf.string());
             if (!res) {
                 std::fprintf(stderr, "error: %s\n", res.error.c_str());
                 return 1;

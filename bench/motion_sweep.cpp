@@ -27,7 +27,7 @@ bool finite(const glm::mat4& m) {
     return core::is_finite(m);
 }
 
-Outcome sweep(const Scene& s) {
+Outcome sweep(const scene::Scene& s) {
     Outcome o;
     std::vector<double> times = {-DBL_MAX, -3.4e38, -1e30, 1e30, 3.4e38, DBL_MAX};
     for (int a = -1; a < static_cast<int>(s.animations.size()); ++a) {
@@ -35,7 +35,7 @@ Outcome sweep(const Scene& s) {
         std::vector<double> ts = times;
         for (int i = 0; i < 200; ++i) ts.push_back(d * i / 199.0);
         for (double t : ts) {
-            const Pose p = evaluate_pose(s, a, t);
+            const scene::Pose p = scene::evaluate_pose(s, a, t);
             ++o.frames;
             for (const auto& m : p.world) o.non_finite += !finite(m);
             for (const auto& skin : p.joint_matrices)
@@ -46,10 +46,10 @@ Outcome sweep(const Scene& s) {
                 if (s.nodes[n].mesh < 0) continue;
                 for (const auto& prim : s.primitives) {
                     if (prim.mesh != static_cast<std::uint32_t>(s.nodes[n].mesh)) continue;
-                    const core::Aabb box = culling_bounds(s, p, n, prim);
+                    const core::Aabb box = scene::culling_bounds(s, p, n, prim);
                     if (box.valid())
                         o.non_finite += !core::is_finite(box.min) || !core::is_finite(box.max);
-                    for (const glm::vec3& v : posed_positions(s, p, n, prim)) {
+                    for (const glm::vec3& v : scene::posed_positions(s, p, n, prim)) {
                         if (!core::is_finite(v)) {
                             ++o.non_finite;
                             continue;
@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
                 "| case | file | import | frames | non-finite | outside | posed bounds |\n"
                 "| --- | --- | --- | --- | --- | --- | --- |\n");
     for (const Case& c : cases) {
-        const LoadResult r = load_scene(dir + "/" + c.file);
+        const scene::LoadResult r = scene::load_scene(dir + "/" + c.file);
         std::string import;
         if (!r) {
             import = "error: " + r.error.substr(r.error.find(": ") + 2);

@@ -97,17 +97,17 @@ int main(int argc, char** argv) {
     render::Renderer renderer(context, renderer_options);
     const render::EnvironmentImage room = render::room_environment();
     renderer.set_environment(&room);
-    LoadResult r = load_scene(spec);
+    scene::LoadResult r = scene::load_scene(spec);
     if (!r) {
         std::fprintf(stderr, "error: %s\n", r.error.c_str());
         return 1;
     }
     renderer.load(*r.scene);
     // The camera sherpa-cli render's `--camera auto` makes: the scene framed at this aspect.
-    FramingOptions framing;
+    scene::FramingOptions framing;
     framing.fov_y_degrees = base.camera.fov_degrees;
     framing.aspect = float(base.width) / float(base.height);
-    base.camera = render::explicit_camera(frame_scene(*r.scene, nullptr, framing));
+    base.camera = render::explicit_camera(scene::frame_scene(*r.scene, nullptr, framing));
 
     Column raster{"raster lit", base};
     Column path{"path traced", base};

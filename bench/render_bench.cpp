@@ -125,7 +125,7 @@ int main(int argc, char** argv) {
         std::printf("%-26s %9s %9s %9s %6s %8s %13s %10s %8s\n", "scene", "triangles", "floor ms",
                     "lit ms", "ratio", "lit fps", "lit+shadow ms", "floor cpu", "lit cpu");
     for (const std::string& spec : scenes) {
-        LoadResult r = load_scene(spec);
+        scene::LoadResult r = scene::load_scene(spec);
         if (!r) {
             std::fprintf(stderr, "error: %s\n", r.error.c_str());
             continue;

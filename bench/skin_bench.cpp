@@ -61,13 +61,13 @@ double median(std::vector<double> v) {
 // A tube along +Y of `rings` x `segments` vertices on a chain of `joints` joints one
 // unit apart, each vertex weighted between its two nearest joints; the default pose
 // bends every joint by 4 degrees about Z.
-Scene skinned_tube(std::uint32_t joints, std::uint32_t rings, std::uint32_t segments) {
-    Scene s;
-    s.materials.push_back(MaterialInstance{});
+scene::Scene skinned_tube(std::uint32_t joints, std::uint32_t rings, std::uint32_t segments) {
+    scene::Scene s;
+    s.materials.push_back(scene::MaterialInstance{});
     s.nodes.resize(joints + 1);
-    Skin skin;
+    scene::Skin skin;
     for (std::uint32_t j = 0; j < joints; ++j) {
-        Node& n = s.nodes[j];
+        scene::Node& n = s.nodes[j];
         n.translation = {0.0f, j ? 1.0f : 0.0f, 0.0f};
         n.rotation = glm::angleAxis(glm::radians(4.0f), glm::vec3(0, 0, 1));
         if (j > 0) {
@@ -78,11 +78,11 @@ Scene skinned_tube(std::uint32_t joints, std::uint32_t rings, std::uint32_t segm
         skin.inverse_bind.push_back(glm::translate(glm::mat4(1.0f), glm::vec3(0, -float(j), 0)));
     }
     s.skins.push_back(std::move(skin));
-    Node& holder = s.nodes[joints];
+    scene::Node& holder = s.nodes[joints];
     holder.mesh = 0;
     holder.skin = 0;
-    Mesh mesh;
-    PrimitiveMotion m;
+    scene::Mesh mesh;
+    scene::PrimitiveMotion m;
     m.influences = 4;
     m.max_joint = joints - 1;
     m.boxes.resize(joints);
@@ -92,7 +92,7 @@ Scene skinned_tube(std::uint32_t joints, std::uint32_t rings, std::uint32_t segm
         for (std::uint32_t g = 0; g < segments; ++g) {
             const float a = 6.2831853f * float(g) / float(segments);
             const float y = height * float(r) / float(rings - 1);
-            Vertex v;
+            scene::Vertex v;
             v.position = {0.3f * std::cos(a), y, 0.3f * std::sin(a)};
             v.normal = {std::cos(a), 0.0f, std::sin(a)};
             v.uv0 = {float(g) / float(segments), float(r) / float(rings)};
@@ -116,19 +116,19 @@ Scene skinned_tube(std::uint32_t joints, std::uint32_t rings, std::uint32_t segm
                 mesh.indices.push_back(i);
         }
     m.boxes.erase(std::remove_if(m.boxes.begin(), m.boxes.end(),
-                                 [](const InfluenceBox& b) { return !b.base.valid(); }),
+                                 [](const scene::InfluenceBox& b) { return !b.base.valid(); }),
                   m.boxes.end());
-    for (const Vertex& v : mesh.vertices) mesh.local_bounds.expand(v.position);
-    mesh.provenance[std::size_t(VertexAttribute::Normal)] = Provenance::Authored;
-    mesh.provenance[std::size_t(VertexAttribute::TexCoord0)] = Provenance::Authored;
+    for (const scene::Vertex& v : mesh.vertices) mesh.local_bounds.expand(v.position);
+    mesh.provenance[std::size_t(scene::VertexAttribute::Normal)] = scene::Provenance::Authored;
+    mesh.provenance[std::size_t(scene::VertexAttribute::TexCoord0)] = scene::Provenance::Authored;
     mesh.source_vertex_count = static_cast<std::uint32_t>(mesh.vertices.size());
-    PrimitiveInfo p;
+    scene::PrimitiveInfo p;
     p.engine_mesh = 0;
     p.motion = 0;
     p.vertices = mesh.source_vertex_count;
     s.primitives.push_back(p);
     s.motions.push_back(std::move(m));
-    MeshInstance inst;
+    scene::MeshInstance inst;
     inst.node_id = joints;
     inst.world_bounds = mesh.local_bounds;
     s.instances.push_back(inst);
@@ -136,18 +136,18 @@ Scene skinned_tube(std::uint32_t joints, std::uint32_t rings, std::uint32_t segm
     s.displayed_nodes.push_back(joints);
     s.node_world.assign(s.nodes.size(), glm::mat4(1.0f));
     // The scene bounds of the pose drawn (framing, shadows).
-    s.bounds = posed_scene_bounds(s, evaluate_pose(s, -1, 0.0)).exact;
+    s.bounds = scene::posed_scene_bounds(s, scene::evaluate_pose(s, -1, 0.0)).exact;
     return s;
 }
 
 // The tube's pose with every joint bent by `degrees` about Z.
-Pose bent(const Scene& tube, float degrees) {
-    Scene copy;
+scene::Pose bent(const scene::Scene& tube, float degrees) {
+    scene::Scene copy;
     copy.nodes = tube.nodes;
     copy.skins = tube.skins;
-    for (Node& n : copy.nodes)
+    for (scene::Node& n : copy.nodes)
         if (n.mesh < 0) n.rotation = glm::angleAxis(glm::radians(degrees), glm::vec3(0, 0, 1));
-    return evaluate_pose(copy, -1, 0.0);
+    return scene::evaluate_pose(copy, -1, 0.0);
 }
 
 double pass_ms(const render::FrameStats& f, std::string_view name) {
@@ -157,8 +157,8 @@ double pass_ms(const render::FrameStats& f, std::string_view name) {
 }
 
 // Posed ray-traced frames of `s` through `poses` (cycled), refit and rebuild.
-void measure_rt(gpu::Context& context, const std::string& name, const Scene& s,
-                const std::vector<std::shared_ptr<const Pose>>& poses, int frames,
+void measure_rt(gpu::Context& context, const std::string& name, const scene::Scene& s,
+                const std::vector<std::shared_ptr<const scene::Pose>>& poses, int frames,
                 std::uint32_t width, std::uint32_t height) {
     for (bool refit : {true, false}) {
         render::RendererOptions options;
@@ -216,13 +216,13 @@ int main(int argc, char** argv) {
                 "static ms", "skinned cpu", "static cpu", "wall x", "cpu x");
     struct Model {
         std::string name;
-        Scene scene;
+        scene::Scene scene;
     };
     std::vector<Model> models;
     models.push_back({"tube 100k v, 64 joints", skinned_tube(64, 800, 128)});
     for (const char* name : {"RiggedSimple", "AnimatedMorphSphere", "SimpleMorph"}) {
-        LoadResult r = load_scene(std::string(SHERPA_ASSETS_DIR) + "/gltf/" + name + "/glTF/" +
-                                  name + ".gltf");
+        scene::LoadResult r = scene::load_scene(std::string(SHERPA_ASSETS_DIR) + "/gltf/" + name +
+                                                "/glTF/" + name + ".gltf");
         if (!r) {
             std::fprintf(stderr, "%s: %s\n", name, r.error.c_str());
             continue;
@@ -234,15 +234,16 @@ int main(int argc, char** argv) {
         std::printf("%-22s %-8s %10s %10s %10s %10s\n", "model", "BLAS", "pose", "posed BLAS",
                     "TLAS", "rays");
         for (const Model& m : models) {
-            std::vector<std::shared_ptr<const Pose>> poses;
+            std::vector<std::shared_ptr<const scene::Pose>> poses;
             for (int k = 0; k < 8; ++k) {
                 const double f = (k + 0.5) / 8.0;
                 if (m.scene.animations.empty()) {
-                    poses.push_back(std::make_shared<const Pose>(bent(m.scene, 8.0f * float(f))));
+                    poses.push_back(
+                        std::make_shared<const scene::Pose>(bent(m.scene, 8.0f * float(f))));
                 } else {
-                    const Animation& a = m.scene.animations[0];
-                    poses.push_back(std::make_shared<const Pose>(
-                        evaluate_pose(m.scene, 0, a.start + f * (a.end - a.start))));
+                    const scene::Animation& a = m.scene.animations[0];
+                    poses.push_back(std::make_shared<const scene::Pose>(
+                        scene::evaluate_pose(m.scene, 0, a.start + f * (a.end - a.start))));
                 }
             }
             measure_rt(context, m.name, m.scene, poses, frames, width, height);
@@ -250,21 +251,21 @@ int main(int argc, char** argv) {
         return 0;
     }
     for (const Model& m : models) {
-        const Scene& s = m.scene;
+        const scene::Scene& s = m.scene;
         const double t =
             s.animations.empty()
                 ? 0.0
                 : s.animations[0].start + 0.37 * (s.animations[0].end - s.animations[0].start);
-        const auto pose =
-            std::make_shared<const Pose>(evaluate_pose(s, s.animations.empty() ? -1 : 0, t));
-        const Scene frozen = freeze_pose(s, *pose);
+        const auto pose = std::make_shared<const scene::Pose>(
+            scene::evaluate_pose(s, s.animations.empty() ? -1 : 0, t));
+        const scene::Scene frozen = scene::freeze_pose(s, *pose);
         render::FrameRequest settings;
         settings.width = width;
         settings.height = height;
         settings.pose = pose;
         // One camera for both, on the posed geometry (auto framing would frame each
         // scene's bounds as loaded: the moving one's are the bind pose's).
-        const core::Aabb posed = posed_scene_bounds(s, *pose).exact;
+        const core::Aabb posed = scene::posed_scene_bounds(s, *pose).exact;
         const glm::vec3 c = posed.center();
         const float r = std::max(0.5f * glm::length(posed.extent()), 1e-3f);
         const glm::vec3 eye = c + glm::normalize(glm::vec3(0.35f, 0.3f, 1.0f)) * (2.2f * r);
@@ -278,7 +279,7 @@ int main(int argc, char** argv) {
         }
         Times skinned, still;
         std::uint64_t vertices = 0;
-        for (const Mesh& mesh : s.meshes) vertices += mesh.vertices.size();
+        for (const scene::Mesh& mesh : s.meshes) vertices += mesh.vertices.size();
         for (int round = 0; round < rounds; ++round) {
             renderer.load(s);
             measure(renderer, settings, frames, skinned);

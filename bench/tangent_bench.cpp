@@ -72,15 +72,16 @@ void run_set(const Set& set, int repeat, bool with_oracle) {
         ours[i].resize(set.meshes[i].indices.size());
     const Timing cold = best_of(repeat, [&] {
         for (std::size_t i = 0; i < set.meshes.size(); ++i)
-            generate_corner_tangents(set.meshes[i].input(), TangentMethod::MikkTSpace, ours[i]);
+            scene::generate_corner_tangents(set.meshes[i].input(), scene::TangentMethod::MikkTSpace,
+                                            ours[i]);
     });
-    TangentWorkspace workspace;
-    std::vector<std::vector<TangentFallback>> fallbacks(set.meshes.size());
+    scene::TangentWorkspace workspace;
+    std::vector<std::vector<scene::TangentFallback>> fallbacks(set.meshes.size());
     for (std::size_t i = 0; i < set.meshes.size(); ++i) fallbacks[i].resize(ours[i].size());
     const Timing warm = best_of(repeat, [&] {
         for (std::size_t i = 0; i < set.meshes.size(); ++i)
-            generate_corner_tangents(set.meshes[i].input(), TangentMethod::MikkTSpace, ours[i],
-                                     fallbacks[i], &workspace);
+            scene::generate_corner_tangents(set.meshes[i].input(), scene::TangentMethod::MikkTSpace,
+                                            ours[i], fallbacks[i], &workspace);
     });
     const double mtri = double(set.triangles()) / 1e6;
     std::printf("%s: %zu triangles in %zu meshes\n", set.name.c_str(), set.triangles(),
@@ -96,7 +97,7 @@ void run_set(const Set& set, int repeat, bool with_oracle) {
         std::printf("\n");
         return;
     }
-    std::vector<TangentInput> inputs;
+    std::vector<scene::TangentInput> inputs;
     for (const auto& m : set.meshes) inputs.push_back(m.input());
     const tools::OracleResult oracle = tools::run_oracle(
         {SHERPA_NODE, SHERPA_ORACLE_SCRIPT, SHERPA_ORACLE_CACHE, "."}, inputs, repeat);
@@ -105,10 +106,11 @@ void run_set(const Set& set, int repeat, bool with_oracle) {
     for (std::size_t i = 0; i < set.meshes.size(); ++i) {
         std::vector<std::uint8_t> skip(ours[i].size());
         for (std::size_t c = 0; c < skip.size(); ++c) {
-            skip[c] = fallbacks[i][c] != TangentFallback::None;
+            skip[c] = fallbacks[i][c] != scene::TangentFallback::None;
             skipped += skip[c];
         }
-        const TangentComparison cmp = compare_tangents(ours[i], oracle.tangents[i], skip);
+        const scene::TangentComparison cmp =
+            scene::compare_tangents(ours[i], oracle.tangents[i], skip);
         max_angle = std::max(max_angle, cmp.max);
         flips += cmp.flips;
     }
@@ -124,22 +126,23 @@ void run_set(const Set& set, int repeat, bool with_oracle) {
 // A scene of `parts` torus primitives, generated with the glTF load path's function.
 void run_parallel(std::uint32_t parts, std::uint32_t rings, std::uint32_t segments, int repeat,
                   int max_threads) {
-    Scene base;
+    scene::Scene base;
     base.materials.emplace_back();
-    base.materials[0].normal = TextureSlot{0, 0, {}};
+    base.materials[0].normal = scene::TextureSlot{0, 0, {}};
     const bench::BenchMesh torus = bench::make_torus(rings, segments);
     for (std::uint32_t p = 0; p < parts; ++p) {
-        Mesh m;
+        scene::Mesh m;
         m.primitive_index = p;
         for (std::size_t v = 0; v < torus.positions.size(); ++v) {
-            Vertex x;
+            scene::Vertex x;
             x.position = torus.positions[v] + glm::vec3(3.0f * p, 0, 0);
             x.normal = torus.normals[v];
             x.uv0 = torus.uvs[v];
             m.vertices.push_back(x);
         }
         m.indices = torus.indices;
-        m.provenance[static_cast<std::size_t>(VertexAttribute::Tangent)] = Provenance::Defaulted;
+        m.provenance[static_cast<std::size_t>(scene::VertexAttribute::Tangent)] =
+            scene::Provenance::Defaulted;
         base.meshes.push_back(std::move(m));
     }
     const double mtri = double(parts) * torus.triangles() / 1e6;
@@ -147,9 +150,9 @@ void run_parallel(std::uint32_t parts, std::uint32_t rings, std::uint32_t segmen
         omp_set_num_threads(threads);
         double best = 1e30;
         for (int r = 0; r < repeat; ++r) {
-            Scene scene = base; // copied outside the timed region
+            scene::Scene scene = base; // copied outside the timed region
             const auto t0 = std::chrono::steady_clock::now();
-            generate_scene_tangents(scene, {});
+            scene::generate_scene_tangents(scene, {});
             best = std::min(
                 best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         }

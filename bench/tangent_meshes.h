@@ -21,7 +21,7 @@ struct BenchMesh {
     std::vector<glm::vec4> authored; // per vertex, empty if none
     std::vector<std::uint32_t> indices;
     std::size_t triangles() const { return indices.size() / 3; }
-    TangentInput input() const { return {positions, normals, uvs, indices}; }
+    scene::TangentInput input() const { return {positions, normals, uvs, indices}; }
 };
 
 // A torus of rings x segments quads (2 triangles each) with a uv seam where u wraps and a

@@ -33,19 +33,20 @@ double thread_cpu_seconds() {
 
 struct Run {
     std::vector<glm::vec4> tangents;
-    std::vector<TangentFallback> fallbacks;
-    TangentStats stats;
+    std::vector<scene::TangentFallback> fallbacks;
+    scene::TangentStats stats;
     double cpu_seconds = 1e30; // best of the repeats
 };
 
-Run run_method(const bench::BenchMesh& m, TangentMethod method, int repeat) {
+Run run_method(const bench::BenchMesh& m, scene::TangentMethod method, int repeat) {
     Run r;
     r.tangents.resize(m.indices.size());
     r.fallbacks.resize(m.indices.size());
-    TangentWorkspace workspace;
+    scene::TangentWorkspace workspace;
     for (int i = 0; i < repeat; ++i) {
         const double t0 = thread_cpu_seconds();
-        r.stats = generate_corner_tangents(m.input(), method, r.tangents, r.fallbacks, &workspace);
+        r.stats =
+            scene::generate_corner_tangents(m.input(), method, r.tangents, r.fallbacks, &workspace);
         r.cpu_seconds = std::min(r.cpu_seconds, thread_cpu_seconds() - t0);
     }
     return r;
@@ -53,13 +54,13 @@ Run run_method(const bench::BenchMesh& m, TangentMethod method, int repeat) {
 
 // Vertices apply_corner_tangents would add for these tangents.
 std::uint32_t split_count(const bench::BenchMesh& m, const std::vector<glm::vec4>& tangents) {
-    Mesh mesh;
+    scene::Mesh mesh;
     mesh.vertices.resize(m.positions.size());
     mesh.indices = m.indices;
-    return apply_corner_tangents(mesh, tangents);
+    return scene::apply_corner_tangents(mesh, tangents);
 }
 
-std::string stats_columns(const TangentComparison& c) {
+std::string stats_columns(const scene::TangentComparison& c) {
     char buf[160];
     std::snprintf(buf, sizeof buf, "%.6g,%.6g,%.6g,%llu", c.mean, c.p99, c.max,
                   (unsigned long long)c.flips);
@@ -78,12 +79,12 @@ void write_methods(const std::string& path, int repeat, bool with_oracle) {
         std::vector<glm::vec4> authored;
         for (std::uint32_t i : m.indices)
             if (!m.authored.empty()) authored.push_back(m.authored[i]);
-        const Run exact = run_method(m, TangentMethod::MikkTSpace, repeat);
+        const Run exact = run_method(m, scene::TangentMethod::MikkTSpace, repeat);
         std::vector<std::pair<std::string, Run>> runs;
-        for (TangentMethod method : kAllTangentMethods)
-            runs.emplace_back(std::string(to_string(method)), method == TangentMethod::MikkTSpace
-                                                                  ? exact
-                                                                  : run_method(m, method, repeat));
+        for (scene::TangentMethod method : scene::kAllTangentMethods)
+            runs.emplace_back(
+                std::string(to_string(method)),
+                method == scene::TangentMethod::MikkTSpace ? exact : run_method(m, method, repeat));
         if (with_oracle) {
             Run oracle;
             const tools::OracleResult result = tools::run_oracle(
@@ -99,13 +100,14 @@ void write_methods(const std::string& path, int repeat, bool with_oracle) {
             // Corners where exact MikkTSpace fell back carry no exact value to compare.
             std::vector<std::uint8_t> skip(exact.fallbacks.size());
             for (std::size_t c = 0; c < skip.size(); ++c)
-                skip[c] = exact.fallbacks[c] != TangentFallback::None;
+                skip[c] = exact.fallbacks[c] != scene::TangentFallback::None;
             const double ms = 1e3 * run.cpu_seconds / (double(m.triangles()) / 1e6);
             csv << m.name << "," << name << "," << m.triangles() << "," << ms << ","
-                << (authored.empty() ? empty_stats
-                                     : stats_columns(compare_tangents(run.tangents, authored)))
-                << "," << stats_columns(compare_tangents(run.tangents, exact.tangents, skip)) << ","
-                << run.stats.fallbacks() << "," << split_count(m, run.tangents) << "\n";
+                << (authored.empty()
+                        ? empty_stats
+                        : stats_columns(scene::compare_tangents(run.tangents, authored)))
+                << "," << stats_columns(scene::compare_tangents(run.tangents, exact.tangents, skip))
+                << "," << run.stats.fallbacks() << "," << split_count(m, run.tangents) << "\n";
         }
         std::printf("methods: %s done\n", m.name.c_str());
     }
@@ -114,11 +116,11 @@ void write_methods(const std::string& path, int repeat, bool with_oracle) {
 void write_sweep(const std::string& path) {
     std::ofstream csv(path);
     csv << "case,method,corners,fallback_corners";
-    for (std::size_t c = 1; c < kTangentFallbackCauses; ++c)
-        csv << "," << to_string(TangentFallback(c));
+    for (std::size_t c = 1; c < scene::kTangentFallbackCauses; ++c)
+        csv << "," << to_string(scene::TangentFallback(c));
     csv << ",nonfinite_before_guard,nan_in_output,max_error_deg,flips\n";
     for (const bench::SweepCase& s : bench::make_sweep()) {
-        for (TangentMethod method : kAllTangentMethods) {
+        for (scene::TangentMethod method : scene::kAllTangentMethods) {
             const Run r = run_method(s.mesh, method, 1);
             std::uint64_t nan_out = 0;
             for (const glm::vec4& t : r.tangents)
@@ -126,11 +128,12 @@ void write_sweep(const std::string& path) {
                              std::isfinite(t.w));
             std::vector<std::uint8_t> skip(r.fallbacks.size());
             for (std::size_t c = 0; c < skip.size(); ++c)
-                skip[c] = r.fallbacks[c] != TangentFallback::None;
-            const TangentComparison err = compare_tangents(r.tangents, s.expected, skip);
+                skip[c] = r.fallbacks[c] != scene::TangentFallback::None;
+            const scene::TangentComparison err =
+                scene::compare_tangents(r.tangents, s.expected, skip);
             csv << s.mesh.name << "," << to_string(method) << "," << r.tangents.size() << ","
                 << r.stats.fallbacks();
-            for (std::size_t c = 1; c < kTangentFallbackCauses; ++c)
+            for (std::size_t c = 1; c < scene::kTangentFallbackCauses; ++c)
                 csv << "," << r.stats.corners[c];
             csv << "," << r.stats.nonfinite_before_guard << "," << nan_out << "," << err.max << ","
                 << err.flips << "\n";

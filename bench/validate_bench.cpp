@@ -112,7 +112,7 @@ int main(int argc, char** argv) {
     for (const fs::path& f : files) {
         std::vector<double> parse, process, validate, json_ms, js;
         for (int r = 0; r < repeat; ++r) {
-            const auto result = sherpa::load_scene(f.string());
+            const auto result = sherpa::scene::load_scene(f.string());
             if (!result) {
                 std::printf("%s: %s\n", f.string().c_str(), result.error.c_str());
                 return 1;

@@ -68,7 +68,7 @@ double fastest_ms(int repeat, const std::function<void()>& f) {
 } // namespace
 
 bool print_passes(const fs::path& file, int repeat) {
-    using namespace sherpa::detail;
+    using namespace sherpa::scene::detail;
     const std::vector<std::uint8_t> bytes = read_bytes(file);
     nlohmann::json root;
     DocumentOrder order;
@@ -84,7 +84,7 @@ bool print_passes(const fs::path& file, int repeat) {
     }
     const std::vector<std::span<const std::uint8_t>> buffers(owned.begin(), owned.end());
     const std::string base = file.parent_path().string();
-    auto run = [&](ValidationReport& report, auto&& passes) {
+    auto run = [&](scene::ValidationReport& report, auto&& passes) {
         Validation v{report, root, &order, false, false, {}, {}, {}, {}, {}, {}, {}, {}};
         v.base_dir = base;
         passes(v);
@@ -111,7 +111,7 @@ bool print_passes(const fs::path& file, int repeat) {
     std::printf("  validator:");
     for (std::size_t n = 1; n <= std::size(passes); ++n) {
         const double upto = fastest_ms(repeat, [&] {
-            ValidationReport report;
+            scene::ValidationReport report;
             run(report, [&](Validation& v) {
                 for (std::size_t i = 0; i < n; ++i) passes[i].second(v);
             });
@@ -119,7 +119,7 @@ bool print_passes(const fs::path& file, int repeat) {
         std::printf(" %s %.4f", passes[n - 1].first, std::max(upto - before, 0.0));
         before = upto;
     }
-    ValidationReport report;
+    scene::ValidationReport report;
     Validation done{report, root, &order, false, false, {}, {}, {}, {}, {}, {}, {}, {}};
     done.base_dir = base;
     validate_document(done);

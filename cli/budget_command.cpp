@@ -73,7 +73,7 @@ int run_budget(Args args) {
             return usage_error("unexpected argument '" + std::string(args[i]) + "'", kUsage);
     }
     if (spec.empty()) return usage_error("no SCENE given", kUsage);
-    LoadResult loaded = load_scene(spec);
+    scene::LoadResult loaded = scene::load_scene(spec);
     if (!loaded) {
         std::fprintf(stderr, "error: %s\n", loaded.error.c_str());
         return kExitLoadError;

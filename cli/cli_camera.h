@@ -11,7 +11,7 @@
 namespace sherpa::cli {
 
 // Empty unless `camera` is auto and the displayed scene places cameras.
-inline std::string file_camera_hint(const Scene& scene, const render::CameraSpec& camera) {
+inline std::string file_camera_hint(const scene::Scene& scene, const render::CameraSpec& camera) {
     if (camera.kind != render::CameraSpec::Kind::Auto || scene.placed_cameras.empty()) return {};
     std::string names;
     for (std::size_t i = 0; i < scene.placed_cameras.size() && i < 4; ++i) {
@@ -29,13 +29,13 @@ inline std::string file_camera_hint(const Scene& scene, const render::CameraSpec
 // (frame_scene(): the drawn vertices, posed in `pose` when given, the built-in ground
 // plane left out, seen from the side of the file's first camera) for a viewport of
 // `aspect`, with the renderer's framing options.
-inline render::CameraSpec framed_camera(const render::CameraSpec& camera, const Scene& scene,
-                                        const Pose* pose, float aspect) {
+inline render::CameraSpec framed_camera(const render::CameraSpec& camera, const scene::Scene& scene,
+                                        const scene::Pose* pose, float aspect) {
     if (camera.kind != render::CameraSpec::Kind::Auto) return camera;
-    FramingOptions options;
+    scene::FramingOptions options;
     options.fov_y_degrees = camera.fov_degrees;
     options.aspect = aspect;
-    return render::explicit_camera(frame_scene(scene, pose, options));
+    return render::explicit_camera(scene::frame_scene(scene, pose, options));
 }
 
 } // namespace sherpa::cli

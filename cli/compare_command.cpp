@@ -220,8 +220,9 @@ int run_compare(Args args) {
             return usage_error("unexpected argument '" + std::string(args[i]) + "'", kUsage);
     }
     if (files.size() != 2) return usage_error("give two files", kUsage);
-    LoadResult a = load_scene(files[0], lab::lab_load_options());
-    LoadResult b = a ? load_scene(files[1], lab::lab_load_options()) : LoadResult{};
+    scene::LoadResult a = scene::load_scene(files[0], lab::lab_load_options());
+    scene::LoadResult b =
+        a ? scene::load_scene(files[1], lab::lab_load_options()) : scene::LoadResult{};
     if (!a || !b) {
         std::fprintf(stderr, "error: %s\n", (a ? b : a).error.c_str());
         return kExitLoadError;

@@ -121,10 +121,10 @@ int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
         std::fprintf(stderr, "error: a ray-traced side needs --rt on\n");
         return kExitUsage;
     }
-    LoadResult other;
-    const Scene* scene_b = run.scene;
+    scene::LoadResult other;
+    const scene::Scene* scene_b = run.scene;
     if (!o.with.empty()) {
-        other = load_scene(o.with);
+        other = scene::load_scene(o.with);
         if (!other) {
             std::fprintf(stderr, "error: %s\n", other.error.c_str());
             return kExitLoadError;
@@ -133,10 +133,10 @@ int run_comparison(const CompareRun& run, const CompareCliOptions& o) {
         setup_b.hidden_nodes = nullptr; // --hide-node names side A's nodes: B as loaded
         // One camera for both: 'auto' frames side A's scene, not each its own.
         if (sa.camera.kind == render::CameraSpec::Kind::Auto) {
-            FramingOptions framing;
+            scene::FramingOptions framing;
             framing.aspect = float(sa.width) / float(sa.height);
             sa.camera = sb.camera =
-                render::explicit_camera(frame_scene(*run.scene, sa.pose.get(), framing));
+                render::explicit_camera(scene::frame_scene(*run.scene, sa.pose.get(), framing));
         }
     }
     const std::string file_b = o.with.empty() ? run.scene_name : o.with;

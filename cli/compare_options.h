@@ -62,7 +62,7 @@ OptionMatch parse_compare_option(Args args, std::size_t& i, CompareCliOptions& o
 
 // Everything the comparison needs from the render command.
 struct CompareRun {
-    const Scene* scene = nullptr; // side A's, loaded
+    const scene::Scene* scene = nullptr; // side A's, loaded
     std::string scene_name;
     render::FrameRequest settings; // side A's
     render::SceneSetup setup;      // side A's (streams: each side's own)

@@ -28,11 +28,11 @@ constexpr std::string_view kUsage = "cull"; // main.cpp's usage text
 // string's default aspect.
 constexpr float kCullAspect = 16.0f / 9.0f;
 
-nlohmann::json pass_json(const Scene& s, const PassResult& p) {
+nlohmann::json pass_json(const scene::Scene& s, const scene::PassResult& p) {
     nlohmann::json visible = nlohmann::json::array();
     auto add = [&](std::uint32_t i) {
-        const MeshInstance& inst = s.instances[i];
-        const Mesh& m = s.meshes[inst.mesh_id];
+        const scene::MeshInstance& inst = s.instances[i];
+        const scene::Mesh& m = s.meshes[inst.mesh_id];
         visible.push_back({inst.node_id, m.group_id, m.primitive_index});
     };
     for (std::uint32_t i : p.visible_opaque) add(i);
@@ -74,26 +74,26 @@ int run_cull(Args args) {
     std::string error;
     if (!render::parse_camera_spec(camera_text, camera_spec, error))
         return usage_error(error, kUsage);
-    CullOptions options;
+    scene::CullOptions options;
     options.count_false_positives = true;
     const bool on_gpu = method_text == "gpu";
     if (on_gpu)
-        options.method = CullMethod::PVertex; // the GPU runs the p-vertex test
-    else if (!parse_cull_method(method_text, options.method)) {
+        options.method = scene::CullMethod::PVertex; // the GPU runs the p-vertex test
+    else if (!scene::parse_cull_method(method_text, options.method)) {
         return usage_error("unknown method '" + std::string(method_text) + "'", kUsage);
     }
-    const LoadResult r = load_scene(spec);
+    const scene::LoadResult r = scene::load_scene(spec);
     if (!r) {
         std::fprintf(stderr, "error: %s\n", r.error.c_str());
         return kExitLoadError;
     }
     // Posed: every instance culled with its conservative bounds in that pose.
-    const std::shared_ptr<const Pose> pose = resolve_pose(*r.scene, pose_options, error);
+    const std::shared_ptr<const scene::Pose> pose = resolve_pose(*r.scene, pose_options, error);
     if (pose)
-        apply_pose_bounds(*r.scene, *pose);
+        scene::apply_pose_bounds(*r.scene, *pose);
     else if (!error.empty())
         return usage_error(error, kUsage);
-    const Scene& s = *r.scene;
+    const scene::Scene& s = *r.scene;
     if (const std::string w = default_pose_warning(s, pose_options); !w.empty())
         std::fprintf(stderr, "warning: %s\n", w.c_str());
     if (const std::string hint = file_camera_hint(s, camera_spec); !hint.empty())
@@ -107,31 +107,31 @@ int run_cull(Args args) {
         return kExitLoadError;
     }
     const glm::mat4 view_projection = camera.proj * camera.view;
-    const CullInput input = prepare_cull_input(s);
-    std::vector<PassResult> passes;
-    passes.push_back(cull_pass(input, frustum_from_view_projection(view_projection),
-                               camera.position, options, "camera"));
+    const scene::CullInput input = scene::prepare_cull_input(s);
+    std::vector<scene::PassResult> passes;
+    passes.push_back(scene::cull_pass(input, scene::frustum_from_view_projection(view_projection),
+                                      camera.position, options, "camera"));
     // The renderer's cascades for this camera (same fit, light, bounds and defaults),
     // each culled against its volume extended toward the light; casters only.
-    std::vector<std::pair<std::string, Frustum>> frusta = {
-        {"camera", frustum_from_view_projection(view_projection)}};
+    std::vector<std::pair<std::string, scene::Frustum>> frusta = {
+        {"camera", scene::frustum_from_view_projection(view_projection)}};
     std::vector<glm::mat4> matrices = {view_projection};
-    if (const auto sun = main_light_direction(s)) {
-        const ShadowCascades cascades =
-            fit_shadow_cascades(render::cascade_camera(camera), drawable_bounds(s), *sun,
-                                kDefaultShadowCascades, kDefaultShadowResolution);
-        CullOptions shadow = options;
+    if (const auto sun = scene::main_light_direction(s)) {
+        const scene::ShadowCascades cascades = scene::fit_shadow_cascades(
+            render::cascade_camera(camera), scene::drawable_bounds(s), *sun,
+            scene::kDefaultShadowCascades, scene::kDefaultShadowResolution);
+        scene::CullOptions shadow = options;
         shadow.casters_only = true;
         for (std::uint32_t c = 0; c < cascades.count; ++c) {
             frusta.emplace_back("cascade" + std::to_string(c),
-                                frustum_from_view_projection(cascades.cull_view_proj[c]));
+                                scene::frustum_from_view_projection(cascades.cull_view_proj[c]));
             matrices.push_back(cascades.cull_view_proj[c]);
-            passes.push_back(cull_pass(input, frusta.back().second, camera.position, shadow,
-                                       frusta.back().first));
+            passes.push_back(scene::cull_pass(input, frusta.back().second, camera.position, shadow,
+                                              frusta.back().first));
         }
     }
     if (on_gpu) {
-        std::vector<PassResult> gpu_passes;
+        std::vector<scene::PassResult> gpu_passes;
         if (!render::gpu_cull_passes(s, frusta, passes, gpu_passes, error)) {
             std::fprintf(stderr, "error: %s\n", error.c_str());
             return kExitLoadError;
@@ -150,7 +150,7 @@ int run_cull(Args args) {
                     "visible", "culled", "falsepos", "draws", "triangles", "cpu ms", "gpu ms",
                     "cpu!=gpu");
         for (const auto& p : passes) {
-            const CullStats& st = p.stats;
+            const scene::CullStats& st = p.stats;
             std::printf("%-9s %8s %9llu %9llu %8llu %8lld %6llu %10llu %8.3f %8.3f %8lld\n",
                         st.pass.c_str(), st.gpu ? "gpu" : std::string(to_string(st.method)).c_str(),
                         (unsigned long long)st.total, (unsigned long long)st.visible,

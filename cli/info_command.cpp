@@ -25,14 +25,14 @@ void print_extensions(const char* which, const std::vector<std::string>& names) 
     std::printf("  extensions %s:", which);
     for (std::size_t i = 0; i < names.size(); ++i)
         std::printf("%s %s (%s)", i ? "," : "", names[i].c_str(),
-                    is_supported_gltf_extension(names[i]) ? "supported"
-                                                          : "NOT supported: not drawn");
+                    scene::is_supported_gltf_extension(names[i]) ? "supported"
+                                                                 : "NOT supported: not drawn");
     std::printf("\n");
 }
 
-void print_text(const Scene& s, const std::vector<tex::ImageProblem>& problems) {
-    const SourceCounts& c = s.counts;
-    const UsageReport usage = build_usage_report(s);
+void print_text(const scene::Scene& s, const std::vector<tex::ImageProblem>& problems) {
+    const scene::SourceCounts& c = s.counts;
+    const scene::UsageReport usage = scene::build_usage_report(s);
     std::printf("%s\n", s.source.c_str());
     std::printf("  scenes %llu (showing %d)  nodes %llu  meshes %llu  primitives %llu\n",
                 (unsigned long long)c.scenes, s.displayed_scene, (unsigned long long)c.nodes,
@@ -58,11 +58,12 @@ void print_text(const Scene& s, const std::vector<tex::ImageProblem>& problems) 
                 (unsigned long long)usage.used_bytes, (unsigned long long)usage.unified_bytes);
     std::printf("  timings: parse %.2f ms, process %.2f ms, validate %.2f ms\n", s.parse_ms,
                 s.process_ms, s.validation.ms);
-    std::printf("  validation: %zu errors, %zu warnings, %zu infos, %zu hints%s"
-                "   (sherpa-cli validate lists them)\n",
-                s.validation.count(Severity::Error), s.validation.count(Severity::Warning),
-                s.validation.count(Severity::Information), s.validation.count(Severity::Hint),
-                s.validation.truncated ? " (truncated)" : "");
+    std::printf(
+        "  validation: %zu errors, %zu warnings, %zu infos, %zu hints%s"
+        "   (sherpa-cli validate lists them)\n",
+        s.validation.count(scene::Severity::Error), s.validation.count(scene::Severity::Warning),
+        s.validation.count(scene::Severity::Information), s.validation.count(scene::Severity::Hint),
+        s.validation.truncated ? " (truncated)" : "");
     print_extensions("used", s.extensions_used);
     print_extensions("required", s.extensions_required);
     for (const auto& p : problems) std::printf("  warning: texture %s\n", tex::describe(p).c_str());
@@ -78,7 +79,7 @@ constexpr std::string_view kUsage = "info"; // main.cpp's usage text
 int run_info(Args args) {
     std::string_view spec;
     bool as_json = false;
-    LoadOptions options;
+    scene::LoadOptions options;
     PoseOptions pose;
     std::string error, variant;
     for (std::size_t i = 0; i < args.size(); ++i) {
@@ -101,13 +102,13 @@ int run_info(Args args) {
             return usage_error("more than one SCENE given", kUsage);
     }
     if (spec.empty()) return usage_error("no SCENE given", kUsage);
-    LoadResult r = load_scene(spec, options);
+    scene::LoadResult r = scene::load_scene(spec, options);
     if (!r) {
         std::fprintf(stderr, "error: %s\n", r.error.c_str());
         return kExitLoadError;
     }
     if (!apply_variant_option(*r.scene, variant, error)) return usage_error(error, kUsage);
-    const Scene& scene = *r.scene;
+    const scene::Scene& scene = *r.scene;
     std::int32_t animation = -1;
     if (!pose_animation(scene, pose, animation, error)) return usage_error(error, kUsage);
     const bool posed = pose.bind || pose.timed;

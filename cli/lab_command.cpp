@@ -88,7 +88,7 @@ std::unique_ptr<lab::Family> make(const Options& o) {
     return nullptr;
 }
 
-nlohmann::json report_json(const Scene& scene, const lab::FamilyReport& r) {
+nlohmann::json report_json(const scene::Scene& scene, const lab::FamilyReport& r) {
     const std::vector<std::size_t> front = lab::pareto_front(r);
     nlohmann::json methods = nlohmann::json::array();
     for (std::size_t i = 0; i < r.methods.size(); ++i) {
@@ -206,7 +206,7 @@ int run_lab(Args args) {
     if (o.json && o.csv) return usage_error("give at most one of --json and --csv");
     std::unique_ptr<lab::Family> family = make(o);
     if (!family) return usage_error("unknown family '" + o.family + "'");
-    LoadResult loaded = load_scene(o.spec, lab::lab_load_options());
+    scene::LoadResult loaded = scene::load_scene(o.spec, lab::lab_load_options());
     if (!loaded) {
         std::fprintf(stderr, "error: %s\n", loaded.error.c_str());
         return kExitLoadError;

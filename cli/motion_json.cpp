@@ -11,18 +11,18 @@ namespace sherpa::cli {
 
 using nlohmann::json;
 
-json skins_json(const Scene& scene) {
+json skins_json(const scene::Scene& scene) {
     json out = json::array();
-    for (const Skin& s : scene.skins)
+    for (const scene::Skin& s : scene.skins)
         out.push_back({{"name", s.name},
                        {"joints", s.joints},
                        {"skeleton", s.skeleton >= 0 ? json(s.skeleton) : json(nullptr)}});
     return out;
 }
 
-json animations_json(const Scene& scene) {
+json animations_json(const scene::Scene& scene) {
     json out = json::array();
-    for (const Animation& a : scene.animations) {
+    for (const scene::Animation& a : scene.animations) {
         std::map<std::string, int> paths, interpolations;
         std::size_t keyframes = 0;
         for (const auto& c : a.channels) ++paths[std::string(to_string(c.path))];
@@ -31,7 +31,7 @@ json animations_json(const Scene& scene) {
             keyframes += s.times.size();
         }
         json pointers = json::array();
-        for (const PointerChannel& p : a.pointers) pointers.push_back(p.pointer);
+        for (const scene::PointerChannel& p : a.pointers) pointers.push_back(p.pointer);
         out.push_back({{"name", a.name},
                        {"pointer_channels", pointers},
                        {"start", a.start},
@@ -45,7 +45,7 @@ json animations_json(const Scene& scene) {
     return out;
 }
 
-json morph_targets_json(const Scene& scene, const PrimitiveInfo& p) {
+json morph_targets_json(const scene::Scene& scene, const scene::PrimitiveInfo& p) {
     json attributes = json::array();
     if (p.motion >= 0)
         attributes = scene.motions[static_cast<std::size_t>(p.motion)].target_attributes;
@@ -54,17 +54,17 @@ json morph_targets_json(const Scene& scene, const PrimitiveInfo& p) {
             {"default_weights", scene.mesh_weights[p.mesh]}};
 }
 
-PosedReport pose_report(const Scene& scene, std::int32_t animation, double time) {
+PosedReport pose_report(const scene::Scene& scene, std::int32_t animation, double time) {
     PosedReport r;
     r.animation = animation;
     r.time = time;
-    const Pose pose = evaluate_pose(scene, animation, time);
-    r.bounds = posed_scene_bounds(scene, pose);
+    const scene::Pose pose = scene::evaluate_pose(scene, animation, time);
+    r.bounds = scene::posed_scene_bounds(scene, pose);
     r.properties = pose.properties;
     return r;
 }
 
-json posed_json(const Scene& scene, const PosedReport& r) {
+json posed_json(const scene::Scene& scene, const PosedReport& r) {
     const bool contains =
         !r.bounds.exact.valid() ||
         (r.bounds.culling.valid() &&
@@ -78,14 +78,16 @@ json posed_json(const Scene& scene, const PosedReport& r) {
         {"time", r.time},
         {"culling_contains_posed", contains}};
     json warnings = json::array();
-    for (std::uint32_t n : r.bounds.overflow) warnings.push_back(posed_overflow_warning(scene, n));
+    for (std::uint32_t n : r.bounds.overflow)
+        warnings.push_back(scene::posed_overflow_warning(scene, n));
     pose["warnings"] = warnings;
     json properties = json::array();
-    for (const AnimatedProperty& p : r.properties)
+    for (const scene::AnimatedProperty& p : r.properties)
         properties.push_back(
-            {{"pointer", pointer_of(p.target)},
+            {{"pointer", scene::pointer_of(p.target)},
              {"property", to_string(p.target.property)},
-             {"value", std::vector<float>(p.value, p.value + pointer_width(p.target.property))}});
+             {"value",
+              std::vector<float>(p.value, p.value + scene::pointer_width(p.target.property))}});
     return {{"pose", pose},
             {"animated_properties", properties},
             {"posed_bounds", aabb_json(r.bounds.exact)},
@@ -93,14 +95,14 @@ json posed_json(const Scene& scene, const PosedReport& r) {
             {"posed_bounds_overflow", r.bounds.overflow}};
 }
 
-void print_motion_text(const Scene& scene) {
+void print_motion_text(const scene::Scene& scene) {
     for (std::size_t i = 0; i < scene.skins.size(); ++i) {
-        const Skin& s = scene.skins[i];
+        const scene::Skin& s = scene.skins[i];
         std::printf("  skin %zu \"%s\": %zu joints, skeleton %d\n", i, s.name.c_str(),
                     s.joints.size(), s.skeleton);
     }
     for (std::size_t i = 0; i < scene.animations.size(); ++i) {
-        const Animation& a = scene.animations[i];
+        const scene::Animation& a = scene.animations[i];
         std::size_t keys = 0;
         for (const auto& s : a.samplers) keys += s.times.size();
         std::printf("  animation %zu \"%s\": %.3f s, %zu channels, %zu samplers, %zu keyframes\n",
@@ -112,7 +114,7 @@ void print_motion_text(const Scene& scene) {
                         p.morph_targets);
 }
 
-void print_posed_text(const Scene& scene, const PosedReport& r) {
+void print_posed_text(const scene::Scene& scene, const PosedReport& r) {
     const core::Aabb& e = r.bounds.exact;
     const core::Aabb& c = r.bounds.culling;
     std::printf("  pose: animation %d at t = %g s\n", r.animation, r.time);
@@ -123,10 +125,10 @@ void print_posed_text(const Scene& scene, const PosedReport& r) {
         std::printf("  culling bounds [%g %g %g] .. [%g %g %g]\n", c.min.x, c.min.y, c.min.z,
                     c.max.x, c.max.y, c.max.z);
     for (std::uint32_t n : r.bounds.overflow)
-        std::printf("  warning: %s\n", posed_overflow_warning(scene, n).c_str());
-    for (const AnimatedProperty& p : r.properties) {
-        std::printf("  animated %s =", pointer_of(p.target).c_str());
-        for (std::uint32_t k = 0; k < pointer_width(p.target.property); ++k)
+        std::printf("  warning: %s\n", scene::posed_overflow_warning(scene, n).c_str());
+    for (const scene::AnimatedProperty& p : r.properties) {
+        std::printf("  animated %s =", scene::pointer_of(p.target).c_str());
+        for (std::uint32_t k = 0; k < scene::pointer_width(p.target.property); ++k)
             std::printf(" %g", p.value[k]);
         std::printf("\n");
     }

@@ -36,7 +36,7 @@ OptionMatch parse_pose_option(Args args, std::size_t& i, PoseOptions& out, std::
     return OptionMatch::Taken;
 }
 
-bool pose_animation(const Scene& scene, const PoseOptions& options, std::int32_t& animation,
+bool pose_animation(const scene::Scene& scene, const PoseOptions& options, std::int32_t& animation,
                     std::string& error) {
     error.clear();
     if (options.bind && (options.timed || options.animation >= 0)) {
@@ -57,20 +57,21 @@ bool pose_animation(const Scene& scene, const PoseOptions& options, std::int32_t
     return true;
 }
 
-std::shared_ptr<const Pose> resolve_pose(const Scene& scene, const PoseOptions& options,
-                                         std::string& error) {
+std::shared_ptr<const scene::Pose> resolve_pose(const scene::Scene& scene,
+                                                const PoseOptions& options, std::string& error) {
     std::int32_t animation = -1;
     if (!pose_animation(scene, options, animation, error) || !(options.bind || options.timed))
         return nullptr;
-    auto pose = std::make_shared<const Pose>(evaluate_pose(scene, animation, options.time));
+    auto pose =
+        std::make_shared<const scene::Pose>(scene::evaluate_pose(scene, animation, options.time));
     // Drawn and culled anyway (an unbounded instance is never culled), but said.
-    for (std::uint32_t node : posed_overflow_nodes(scene, *pose))
+    for (std::uint32_t node : scene::posed_overflow_nodes(scene, *pose))
         std::fprintf(stderr, "warning: %s: %s\n", scene.source.c_str(),
-                     posed_overflow_warning(scene, node).c_str());
+                     scene::posed_overflow_warning(scene, node).c_str());
     return pose;
 }
 
-std::string default_pose_warning(const Scene& scene, const PoseOptions& options) {
+std::string default_pose_warning(const scene::Scene& scene, const PoseOptions& options) {
     if (options.timed || options.bind || scene.animations.empty()) return {};
     std::string names;
     for (std::size_t i = 0; i < scene.animations.size() && i < 5; ++i)

@@ -26,7 +26,7 @@ OptionMatch parse_pose_option(Args args, std::size_t& i, PoseOptions& out, std::
 // evaluate: -1 for --pose bind and for --time on a file without animations (its
 // default weights), else --animation N (default: the first). False with `error` when
 // they do not fit.
-bool pose_animation(const Scene& scene, const PoseOptions& options, std::int32_t& animation,
+bool pose_animation(const scene::Scene& scene, const PoseOptions& options, std::int32_t& animation,
                     std::string& error);
 
 // The pose the options ask for: null without any (the scene as loaded); the file's
@@ -34,12 +34,12 @@ bool pose_animation(const Scene& scene, const PoseOptions& options, std::int32_t
 // default weights) at time T, clamped to its keys. Empty `error` unless the options
 // do not fit the scene (then null). Nodes whose posed bounds overflow the float range
 // are warned about on stderr.
-std::shared_ptr<const Pose> resolve_pose(const Scene& scene, const PoseOptions& options,
-                                         std::string& error);
+std::shared_ptr<const scene::Pose> resolve_pose(const scene::Scene& scene,
+                                                const PoseOptions& options, std::string& error);
 
 // The warning `render` and `cull` print when the file has animations and no pose was
 // asked for (they then draw the default pose); empty when a pose was asked for or the
 // file has none. The editor has a timeline and says nothing of the kind.
-std::string default_pose_warning(const Scene& scene, const PoseOptions& options);
+std::string default_pose_warning(const scene::Scene& scene, const PoseOptions& options);
 
 } // namespace sherpa::cli

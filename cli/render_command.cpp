@@ -62,7 +62,7 @@ int run_render(Args args) {
     PoseOptions pose_options;
     std::string variant; // --variant NAME
     CompareCliOptions compare_options;
-    std::uint32_t shadow_resolution = kDefaultShadowResolution;
+    std::uint32_t shadow_resolution = scene::kDefaultShadowResolution;
     render::EnvironmentChoice environment; // the room unless --environment says otherwise
     settings.path.samples = 64;            // the path tracer's samples per pixel unless --spp says
     settings.path.restart = true;          // each of --frames is an image of its own
@@ -153,7 +153,7 @@ int run_render(Args args) {
             settings.cull = *path;
         } else if (a == "--cull-method") {
             auto v = value();
-            if (!v || !parse_cull_method(*v, settings.cull_method))
+            if (!v || !scene::parse_cull_method(*v, settings.cull_method))
                 return usage_error("--cull-method needs sphere, pvertex or exact");
         } else if (a == "--cull-check") {
             settings.cull_check = true;
@@ -217,7 +217,7 @@ int run_render(Args args) {
                            "' is drawn by rays only (--renderer rt)");
 
     const auto load_start = std::chrono::steady_clock::now();
-    LoadResult loaded = load_scene(spec);
+    scene::LoadResult loaded = scene::load_scene(spec);
     RenderRun run{std::string(spec), settings, camera_text, {}, {}, {}, std::nullopt};
     run.timing.scene_load_ms = ms_since(load_start);
     if (!loaded) {

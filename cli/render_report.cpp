@@ -45,7 +45,7 @@ nlohmann::json textures_json(const render::SceneTextures& textures,
         const render::GpuTexture& g = textures.gpu()[i];
         json j = texture_json(t);
         j["mips"] = g.mip_levels;
-        j["bindless_slot"] = g.slot == kTextureSentinel ? json(nullptr) : json(g.slot);
+        j["bindless_slot"] = g.slot == scene::kTextureSentinel ? json(nullptr) : json(g.slot);
         j["bytes"] = g.bytes; // device memory of the image
         list.push_back(j);
         ++by_state[std::string(tex::to_string(t.state))];
@@ -186,10 +186,10 @@ nlohmann::json render_report_json(render::Renderer& renderer, const RenderRun& r
         // Per culled pass of the last frame (cascades: of the last frame that rendered
         // them); times are medians over the frames that ran the pass.
         json culling = json::array();
-        for (const CullStats& c : last.culling) {
+        for (const scene::CullStats& c : last.culling) {
             std::vector<double> cpu, gpu;
             for (const render::FrameStats& f : run.frames)
-                if (const CullStats* same = f.pass(c.pass);
+                if (const scene::CullStats* same = f.pass(c.pass);
                     same && (c.pass == "camera" || f.shadows_rendered)) {
                     cpu.push_back(same->cpu_ms);
                     if (same->gpu_ms >= 0.0) gpu.push_back(same->gpu_ms);

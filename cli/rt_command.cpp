@@ -222,7 +222,7 @@ int run_rt(Args args) {
         }
     }
     if (spec.empty()) return usage_error("no SCENE given");
-    LoadResult loaded = load_scene(spec);
+    scene::LoadResult loaded = scene::load_scene(spec);
     if (!loaded) {
         std::fprintf(stderr, "error: %s\n", loaded.error.c_str());
         return kExitLoadError;

@@ -18,14 +18,14 @@ json aabb_json(const core::Aabb& box) {
                 {"max", {box.max.x, box.max.y, box.max.z}}};
 }
 
-json usage_json(const Scene& scene, const UsageReport& report) {
+json usage_json(const scene::Scene& scene, const scene::UsageReport& report) {
     json prims = json::array();
     for (const auto& u : report.primitives) {
         json present = json::array(), used = json::array();
-        for (VertexAttribute a : kAllVertexAttributes) {
+        for (scene::VertexAttribute a : scene::kAllVertexAttributes) {
             const auto i = static_cast<std::size_t>(a);
-            if (u.present[i]) present.push_back(gltf_name(a));
-            if (u.used[i]) used.push_back(gltf_name(a));
+            if (u.present[i]) present.push_back(scene::gltf_name(a));
+            if (u.used[i]) used.push_back(scene::gltf_name(a));
         }
         prims.push_back({{"mesh", u.group_id},
                          {"primitive", u.primitive_index},
@@ -49,16 +49,16 @@ json usage_json(const Scene& scene, const UsageReport& report) {
 json extensions_json(const std::vector<std::string>& names) {
     json out = json::array();
     for (const auto& n : names)
-        out.push_back({{"name", n}, {"supported", is_supported_gltf_extension(n)}});
+        out.push_back({{"name", n}, {"supported", scene::is_supported_gltf_extension(n)}});
     return out;
 }
 
 // Per image: its container; KTX2 files have their level 0 transcoded (as the
 // texture pipeline does, within the texel budget) to tell ETC1S from UASTC and time it.
-json images_json(const Scene& scene) {
+json images_json(const scene::Scene& scene) {
     json out = json::array();
     for (std::size_t i = 0; i < scene.images.size(); ++i) {
-        const ImageRecord& img = scene.images[i];
+        const scene::ImageRecord& img = scene.images[i];
         json e = {{"image", i}, {"uri", img.uri}, {"bytes", img.byte_size}};
         if (tex::is_ktx2(img.encoded)) {
             tex::BasisTexture t;
@@ -82,10 +82,10 @@ json images_json(const Scene& scene) {
     return out;
 }
 
-json gpu_instancing_json(const Scene& scene) {
+json gpu_instancing_json(const scene::Scene& scene) {
     json nodes = json::array();
     std::uint64_t file_rows = 0, drawn_rows = 0, instances = 0;
-    for (const MeshInstance& inst : scene.instances) instances += inst.row >= 0 ? 1 : 0;
+    for (const scene::MeshInstance& inst : scene.instances) instances += inst.row >= 0 ? 1 : 0;
     for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
         const auto& g = scene.nodes[n].instancing;
         if (!g) continue;
@@ -106,8 +106,8 @@ json gpu_instancing_json(const Scene& scene) {
             {"instances", instances}};
 }
 
-json scene_info_json(const Scene& scene) {
-    const SourceCounts& c = scene.counts;
+json scene_info_json(const scene::Scene& scene) {
+    const scene::SourceCounts& c = scene.counts;
     json j = {{"source", scene.source},
               {"scenes", c.scenes},
               {"displayed_scene", scene.displayed_scene},
@@ -133,8 +133,8 @@ json scene_info_json(const Scene& scene) {
         json e = {{"mesh", p.mesh},         {"primitive", p.primitive}, {"mode", to_string(p.mode)},
                   {"vertices", p.vertices}, {"indices", p.indices},     {"triangles", p.triangles},
                   {"material", p.material}, {"attributes", attrs}};
-        if (topology_of(p.mode) == Topology::Lines) e["segments"] = p.segments;
-        if (topology_of(p.mode) == Topology::Points) e["points"] = p.points;
+        if (scene::topology_of(p.mode) == scene::Topology::Lines) e["segments"] = p.segments;
+        if (scene::topology_of(p.mode) == scene::Topology::Points) e["points"] = p.points;
         if (p.compression)
             e["compression"] = {{"codec", p.compression->codec},
                                 {"mode", p.compression->modes},
@@ -142,7 +142,7 @@ json scene_info_json(const Scene& scene) {
                                 {"decoded_bytes", p.compression->decoded_bytes},
                                 {"decode_ms", p.compression->decode_ms}};
         if (p.engine_mesh >= 0) {
-            const Mesh& m = scene.meshes[static_cast<std::size_t>(p.engine_mesh)];
+            const scene::Mesh& m = scene.meshes[static_cast<std::size_t>(p.engine_mesh)];
             e["engine_vertices"] = m.vertices.size();
             e["unwelded"] = m.unwelded;
         } else {
@@ -158,7 +158,7 @@ json scene_info_json(const Scene& scene) {
     j["images_detail"] = images_json(scene);
     j["extensions_used"] = extensions_json(scene.extensions_used);
     j["extensions_required"] = extensions_json(scene.extensions_required);
-    j["usage"] = usage_json(scene, build_usage_report(scene));
+    j["usage"] = usage_json(scene, scene::build_usage_report(scene));
     j["warnings"] = scene.warnings;
     json violations = json::array();
     for (const auto& v : scene.range_violations)
@@ -174,15 +174,15 @@ json scene_info_json(const Scene& scene) {
     j["timings_ms"] = {{"parse", scene.parse_ms},
                        {"process", scene.process_ms},
                        {"validate", scene.validation.ms}};
-    j["validation"] = {{"numErrors", scene.validation.count(Severity::Error)},
-                       {"numWarnings", scene.validation.count(Severity::Warning)},
-                       {"numInfos", scene.validation.count(Severity::Information)},
-                       {"numHints", scene.validation.count(Severity::Hint)},
+    j["validation"] = {{"numErrors", scene.validation.count(scene::Severity::Error)},
+                       {"numWarnings", scene.validation.count(scene::Severity::Warning)},
+                       {"numInfos", scene.validation.count(scene::Severity::Information)},
+                       {"numHints", scene.validation.count(scene::Severity::Hint)},
                        {"truncated", scene.validation.truncated}};
     return j;
 }
 
-nlohmann::json cull_stats_json(const CullStats& st) {
+nlohmann::json cull_stats_json(const scene::CullStats& st) {
     nlohmann::json matrix = nlohmann::json::array();
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r) matrix.push_back(st.view_projection[c][r]);

@@ -9,14 +9,14 @@
 namespace sherpa::cli {
 
 nlohmann::json aabb_json(const core::Aabb& box);
-nlohmann::json usage_json(const Scene& scene, const UsageReport& report);
+nlohmann::json usage_json(const scene::Scene& scene, const scene::UsageReport& report);
 // EXT_mesh_gpu_instancing: per instanced node its rows (in the file, drawn) and
 // accessors; totals, and the drawn instances (of the displayed scene) they make.
-nlohmann::json gpu_instancing_json(const Scene& scene);
+nlohmann::json gpu_instancing_json(const scene::Scene& scene);
 // The `sherpa-cli info --json` object.
-nlohmann::json scene_info_json(const Scene& scene);
+nlohmann::json scene_info_json(const scene::Scene& scene);
 // A culling pass's statistics and the matrix it culled against
 // ("cull_view_projection", column-major), for `cull --json` and `render --report`.
-nlohmann::json cull_stats_json(const CullStats& stats);
+nlohmann::json cull_stats_json(const scene::CullStats& stats);
 
 } // namespace sherpa::cli

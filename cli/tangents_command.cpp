@@ -25,28 +25,28 @@ constexpr std::string_view kUsage = "tangents"; // main.cpp's usage text
 struct Options {
     std::string spec, dump_path;
     bool compare = false, json = false, regenerate = false;
-    TangentMethod method = TangentMethod::MikkTSpace;
+    scene::TangentMethod method = scene::TangentMethod::MikkTSpace;
 };
 
 int usage_error(const std::string& message) {
     return cli::usage_error(message, kUsage);
 }
 
-bool authored(const Mesh& mesh) {
-    return mesh.provenance_of(VertexAttribute::Tangent) == Provenance::Authored;
+bool authored(const scene::Mesh& mesh) {
+    return mesh.provenance_of(scene::VertexAttribute::Tangent) == scene::Provenance::Authored;
 }
 
-int dump(Scene& scene, const Options& o) {
+int dump(scene::Scene& scene, const Options& o) {
     std::ofstream out(o.dump_path);
     if (!out) {
         std::fprintf(stderr, "error: cannot write %s\n", o.dump_path.c_str());
         return kExitLoadError;
     }
     std::uint64_t generated = 0, splits = 0, fallbacks = 0;
-    for (Mesh& mesh : scene.meshes) {
+    for (scene::Mesh& mesh : scene.meshes) {
         if (o.regenerate || !authored(mesh)) {
-            const MeshTangentReport r =
-                generate_mesh_tangents(mesh, normal_uv_set(scene, mesh), o.method);
+            const scene::MeshTangentReport r =
+                scene::generate_mesh_tangents(mesh, scene::normal_uv_set(scene, mesh), o.method);
             ++generated;
             splits += r.split_vertices;
             fallbacks += r.stats.fallbacks();
@@ -54,7 +54,7 @@ int dump(Scene& scene, const Options& o) {
     }
     out << "mesh,primitive,triangle,corner,tx,ty,tz,tw\n";
     char row[256];
-    for (const Mesh& mesh : scene.meshes)
+    for (const scene::Mesh& mesh : scene.meshes)
         for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
             const glm::vec4 t = mesh.vertices[mesh.indices[c]].tangent;
             std::snprintf(row, sizeof row, "%u,%u,%zu,%zu,%.9g,%.9g,%.9g,%.9g\n", mesh.group_id,
@@ -70,13 +70,13 @@ int dump(Scene& scene, const Options& o) {
     return kExitOk;
 }
 
-int compare(const Scene& scene, const Options& o) {
+int compare(const scene::Scene& scene, const Options& o) {
     nlohmann::json rows = nlohmann::json::array();
     if (!o.json)
         std::printf("%-5s %-4s %8s %11s %11s %11s %6s %9s  (%s vs authored, degrees)\n", "mesh",
                     "prim", "corners", "mean", "p99", "max", "flips", "fallback",
                     std::string(to_string(o.method)).c_str());
-    for (const Mesh& mesh : scene.meshes) {
+    for (const scene::Mesh& mesh : scene.meshes) {
         nlohmann::json row = {{"mesh", mesh.group_id},
                               {"primitive", mesh.primitive_index},
                               {"authored", authored(mesh)}};
@@ -87,13 +87,14 @@ int compare(const Scene& scene, const Options& o) {
             rows.push_back(row);
             continue;
         }
-        const MeshTangentInput input = tangent_input_of(mesh, normal_uv_set(scene, mesh));
+        const scene::MeshTangentInput input =
+            scene::tangent_input_of(mesh, scene::normal_uv_set(scene, mesh));
         std::vector<glm::vec4> regenerated(mesh.indices.size()), read(mesh.indices.size());
-        const TangentStats stats =
-            generate_corner_tangents(input.view(mesh), o.method, regenerated);
+        const scene::TangentStats stats =
+            scene::generate_corner_tangents(input.view(mesh), o.method, regenerated);
         for (std::size_t c = 0; c < read.size(); ++c)
             read[c] = mesh.vertices[mesh.indices[c]].tangent;
-        const TangentComparison cmp = compare_tangents(regenerated, read);
+        const scene::TangentComparison cmp = scene::compare_tangents(regenerated, read);
         row.update({{"corners", cmp.corners},
                     {"mean_deg", cmp.mean},
                     {"p99_deg", cmp.p99},
@@ -123,7 +124,7 @@ int run_tangents(Args args) {
         if (a == "--dump" && i + 1 < args.size())
             o.dump_path = std::string(args[++i]);
         else if (a == "--method" && i + 1 < args.size()) {
-            if (!parse_tangent_method(args[++i], o.method))
+            if (!scene::parse_tangent_method(args[++i], o.method))
                 return usage_error("unknown method '" + std::string(args[i]) + "'");
         } else if (a == "--compare")
             o.compare = true;
@@ -141,9 +142,9 @@ int run_tangents(Args args) {
     if (o.spec.empty()) return usage_error("no SCENE given");
     if (o.compare == !o.dump_path.empty())
         return usage_error("give exactly one of --dump FILE and --compare");
-    LoadOptions load;
+    scene::LoadOptions load;
     load.generate_tangents = false; // this command decides what to generate
-    LoadResult r = load_scene(o.spec, load);
+    scene::LoadResult r = scene::load_scene(o.spec, load);
     if (!r) {
         std::fprintf(stderr, "error: %s\n", r.error.c_str());
         return kExitLoadError;

@@ -23,7 +23,8 @@ namespace {
 constexpr std::string_view kUsage = "textures"; // main.cpp's usage text
 
 // Exit 1 when some image could not be exported (each named on stderr).
-int export_source_images(const Scene& scene, const std::filesystem::path& dir, bool as_json) {
+int export_source_images(const scene::Scene& scene, const std::filesystem::path& dir,
+                         bool as_json) {
     const std::vector<tex::SourceExport> exports = tex::export_sources(scene, dir);
     nlohmann::json j = nlohmann::json::array();
     bool failed = false;
@@ -73,7 +74,7 @@ int run_textures(Args args) {
     }
     if (spec.empty()) return usage_error("no SCENE given", kUsage);
     const tex::PipelineOptions options = texture_options.pipeline_options();
-    const LoadResult r = load_scene(spec);
+    const scene::LoadResult r = scene::load_scene(spec);
     if (!r) {
         std::fprintf(stderr, "error: %s\n", r.error.c_str());
         return kExitLoadError;

@@ -32,27 +32,27 @@ constexpr const char* kUsage =
 
 struct FileReport {
     std::string path;
-    std::vector<ValidationMessage> messages; // reported ones, most severe first
+    std::vector<scene::ValidationMessage> messages; // reported ones, most severe first
     std::size_t counts[4] = {0, 0, 0, 0};
     bool truncated = false, refused = false;
     double ms = 0;
 };
 
-FileReport validate_file(const std::string& path, Severity max) {
+FileReport validate_file(const std::string& path, scene::Severity max) {
     FileReport out;
     out.path = path;
-    LoadResult r = load_scene(path);
-    ValidationReport& report = r.scene ? r.scene->validation : r.validation;
+    scene::LoadResult r = scene::load_scene(path);
+    scene::ValidationReport& report = r.scene ? r.scene->validation : r.validation;
     out.refused = !r.scene;
     out.truncated = report.truncated;
     out.ms = report.ms;
-    for (ValidationMessage& m : report.messages) {
+    for (scene::ValidationMessage& m : report.messages) {
         if (m.severity > max) continue;
         ++out.counts[static_cast<int>(m.severity)];
         out.messages.push_back(std::move(m));
     }
     if (out.refused && report.messages.empty()) { // refused before the validator ran
-        out.messages.push_back({"SHERPA_LOAD_REFUSED", r.error, "", Severity::Error});
+        out.messages.push_back({"SHERPA_LOAD_REFUSED", r.error, "", scene::Severity::Error});
         ++out.counts[0];
     }
     std::stable_sort(out.messages.begin(), out.messages.end(),
@@ -116,13 +116,13 @@ std::vector<std::string> gltf_files(const fs::path& dir, std::string& error) {
 int run_validate(Args args) {
     std::string_view target;
     bool as_json = false;
-    Severity max = Severity::Hint;
+    scene::Severity max = scene::Severity::Hint;
     unsigned jobs = 1;
     for (std::size_t i = 0; i < args.size(); ++i) {
         if (args[i] == "--json") {
             as_json = true;
         } else if (args[i] == "--max-severity" && i + 1 < args.size()) {
-            if (!parse_severity(args[++i], max))
+            if (!scene::parse_severity(args[++i], max))
                 return usage_error("--max-severity takes error, warning, info or hint", kUsage);
         } else if (args[i] == "--jobs" && i + 1 < args.size()) {
             if (!parse_number(args[++i], jobs) || jobs == 0 || jobs > 256)

@@ -5,7 +5,7 @@
 namespace sherpa::cli {
 namespace {
 
-std::string material_name(const Scene& scene, std::uint32_t m) {
+std::string material_name(const scene::Scene& scene, std::uint32_t m) {
     std::string out = "materials[" + std::to_string(m) + "]";
     if (m < scene.materials.size() && !scene.materials[m].name.empty())
         out += " \"" + scene.materials[m].name + "\"";
@@ -25,9 +25,9 @@ OptionMatch parse_variant_option(Args args, std::size_t& i, std::string& variant
     return OptionMatch::Taken;
 }
 
-bool apply_variant_option(Scene& scene, const std::string& variant, std::string& error) {
+bool apply_variant_option(scene::Scene& scene, const std::string& variant, std::string& error) {
     if (variant.empty()) return true;
-    const std::int32_t v = find_variant(scene, variant);
+    const std::int32_t v = scene::find_variant(scene, variant);
     if (v < 0) {
         error = "--variant " + variant + ": " + scene.source + " has ";
         if (scene.variants.names.empty()) error += "no material variants";
@@ -35,15 +35,16 @@ bool apply_variant_option(Scene& scene, const std::string& variant, std::string&
             error += (i ? ", \"" : "the variants \"") + scene.variants.names[i] + "\"";
         return false;
     }
-    apply_material_variant(scene, v);
+    scene::apply_material_variant(scene, v);
     return true;
 }
 
-nlohmann::json variants_json(const Scene& scene) {
+nlohmann::json variants_json(const scene::Scene& scene) {
     nlohmann::json out = nlohmann::json::array();
     for (std::size_t v = 0; v < scene.variants.names.size(); ++v) {
         nlohmann::json changes = nlohmann::json::array();
-        for (const VariantChange& c : variant_changes(scene, static_cast<std::int32_t>(v)))
+        for (const scene::VariantChange& c :
+             scene::variant_changes(scene, static_cast<std::int32_t>(v)))
             changes.push_back({{"mesh", c.gltf_mesh},
                                {"primitive", c.primitive},
                                {"from_material", c.from},
@@ -56,15 +57,15 @@ nlohmann::json variants_json(const Scene& scene) {
     return out;
 }
 
-void print_variants_text(const Scene& scene) {
+void print_variants_text(const scene::Scene& scene) {
     const auto& names = scene.variants.names;
     for (std::size_t v = 0; v < names.size(); ++v) {
-        const auto changes = variant_changes(scene, static_cast<std::int32_t>(v));
+        const auto changes = scene::variant_changes(scene, static_cast<std::int32_t>(v));
         std::printf("  variant %zu \"%s\"%s: %zu primitive(s) change material\n", v,
                     names[v].c_str(),
                     scene.variants.active == static_cast<std::int32_t>(v) ? " (shown)" : "",
                     changes.size());
-        for (const VariantChange& c : changes)
+        for (const scene::VariantChange& c : changes)
             std::printf("    mesh %u primitive %u: %s -> %s\n", c.gltf_mesh, c.primitive,
                         material_name(scene, c.from).c_str(), material_name(scene, c.to).c_str());
     }

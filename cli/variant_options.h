@@ -17,10 +17,10 @@ OptionMatch parse_variant_option(Args args, std::size_t& i, std::string& variant
 
 // Shows variant `variant` of `scene` (nothing for an empty name). False with `error`
 // naming the variants the file has when it has none of that name.
-bool apply_variant_option(Scene& scene, const std::string& variant, std::string& error);
+bool apply_variant_option(scene::Scene& scene, const std::string& variant, std::string& error);
 
 // `info`: the variants, and per variant the primitives whose material it changes.
-nlohmann::json variants_json(const Scene& scene);
-void print_variants_text(const Scene& scene);
+nlohmann::json variants_json(const scene::Scene& scene);
+void print_variants_text(const scene::Scene& scene);
 
 } // namespace sherpa::cli

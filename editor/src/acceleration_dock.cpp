@@ -59,11 +59,11 @@ QString AccelerationDock::summaryText() const {
 }
 
 void AccelerationDock::onRowChanged(int row) {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     if (syncing_ || !scene) return;
     const int gltf_mesh = model_->index(row, 0).data(AccelerationModel::MeshRole).toInt();
     // The BLAS is the glTF mesh: its first primitive, as placed by the first node.
-    for (const MeshInstance& inst : scene->instances)
+    for (const scene::MeshInstance& inst : scene->instances)
         if (static_cast<int>(scene->meshes[inst.mesh_id].group_id) == gltf_mesh) {
             Q_EMIT selectMeshRequested(static_cast<int>(inst.mesh_id),
                                        static_cast<int>(inst.node_id));
@@ -72,7 +72,7 @@ void AccelerationDock::onRowChanged(int row) {
 }
 
 void AccelerationDock::syncSelection() {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     const int mesh = context_.selection().current().mesh;
     if (!scene || mesh < 0 || static_cast<std::size_t>(mesh) >= scene->meshes.size()) return;
     const int row =

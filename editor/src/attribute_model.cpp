@@ -23,19 +23,20 @@ void AttributeModel::setMesh(MeshRef mesh) {
     beginResetModel();
     mesh_ = std::move(mesh);
     used_ = {};
-    if (const Mesh* m = mesh_.get())
+    if (const scene::Mesh* m = mesh_.get())
         // The renderer's default upload policy: the streams the material's shading reads.
-        used_ = attributes_used(mesh_.scene->materials[m->material_id], *m);
+        used_ = scene::attributes_used(mesh_.scene->materials[m->material_id], *m);
     endResetModel();
 }
 
 std::uint64_t AttributeModel::gpuBytes(int row) const {
-    const Mesh* m = mesh_.get();
+    const scene::Mesh* m = mesh_.get();
     if (!m) return 0;
     if (row == kIndexRow) return m->indices.size() * sizeof(std::uint32_t);
     const auto a = static_cast<std::size_t>(row);
     if (!used_[a]) return 0;
-    return static_cast<std::uint64_t>(stream_stride(kAllVertexAttributes[a])) * m->vertices.size();
+    return static_cast<std::uint64_t>(stream_stride(scene::kAllVertexAttributes[a])) *
+           m->vertices.size();
 }
 
 int AttributeModel::rowCount(const QModelIndex& parent) const {
@@ -47,10 +48,10 @@ int AttributeModel::columnCount(const QModelIndex& parent) const {
 }
 
 QVariant AttributeModel::data(const QModelIndex& index, int role) const {
-    const Mesh* m = mesh_.get();
+    const scene::Mesh* m = mesh_.get();
     if (!index.isValid() || !m) return {};
     if (role == Qt::ToolTipRole && index.column() == ComponentTypeColumn) {
-        const std::optional<AccessorSource>& s =
+        const std::optional<scene::AccessorSource>& s =
             index.row() == kIndexRow ? m->index_source
                                      : m->sources[static_cast<std::size_t>(index.row())];
         return s ? QStringLiteral("%1 x%2%3")
@@ -62,12 +63,13 @@ QVariant AttributeModel::data(const QModelIndex& index, int role) const {
     if (role != Qt::DisplayRole) return {};
     const int row = index.row();
     const bool is_index = row == kIndexRow;
-    const std::optional<AccessorSource>& src =
+    const std::optional<scene::AccessorSource>& src =
         is_index ? m->index_source : m->sources[static_cast<std::size_t>(row)];
     switch (index.column()) {
     case AttributeColumn:
-        return is_index ? tr("indices")
-                        : format::attribute(kAllVertexAttributes[static_cast<std::size_t>(row)]);
+        return is_index
+                   ? tr("indices")
+                   : format::attribute(scene::kAllVertexAttributes[static_cast<std::size_t>(row)]);
     case ProvenanceColumn:
         if (is_index) return src ? tr("authored") : tr("generated");
         return format::provenance(m->provenance[static_cast<std::size_t>(row)]);

@@ -27,7 +27,7 @@ public:
         GpuBytesColumn,
         ColumnCount
     };
-    static constexpr int kIndexRow = static_cast<int>(kVertexAttributeCount);
+    static constexpr int kIndexRow = static_cast<int>(scene::kVertexAttributeCount);
 
     explicit AttributeModel(QObject* parent = nullptr);
     void setMesh(MeshRef mesh);
@@ -41,7 +41,7 @@ public:
 
 private:
     MeshRef mesh_;
-    std::array<bool, kVertexAttributeCount> used_{};
+    std::array<bool, scene::kVertexAttributeCount> used_{};
 };
 
 } // namespace sherpa::editor

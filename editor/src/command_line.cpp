@@ -45,9 +45,9 @@ const QStringList kModeNames = {QStringLiteral("raster"), QStringLiteral("rt"),
                                 QStringLiteral("split"), QStringLiteral("difference")};
 
 // --compare-with tangents:METHOD: the method, when the name is one (to_string's).
-std::optional<TangentMethod> tangent_method(const QString& name) {
-    TangentMethod m{};
-    if (!parse_tangent_method(name.toStdString(), m)) return std::nullopt;
+std::optional<scene::TangentMethod> tangent_method(const QString& name) {
+    scene::TangentMethod m{};
+    if (!scene::parse_tangent_method(name.toStdString(), m)) return std::nullopt;
     return m;
 }
 
@@ -275,7 +275,7 @@ bool parse_command_line(const QStringList& arguments, CommandLine& out, QString&
     if (out.compare_with.startsWith(QLatin1String("tangents:")) &&
         !tangent_method(out.compare_with.mid(9))) {
         QStringList names;
-        for (const TangentMethod m : kAllTangentMethods)
+        for (const scene::TangentMethod m : scene::kAllTangentMethods)
             names << CompareControls::tangentMethodName(m);
         error = QStringLiteral("--compare-with: unknown tangent method '%1' (one of: %2)")
                     .arg(out.compare_with.mid(9), names.join(QStringLiteral(", ")));

@@ -48,9 +48,10 @@ void CompareController::connectControls() {
     connect(&controls_, &CompareControls::sourceTexturesRequested, this, [this] {
         if (context_.scene()) compareWithFile(context_.sceneSpec(), true);
     });
-    connect(&controls_, &CompareControls::tangentsRequested, this, [this](TangentMethod method) {
-        if (context_.scene()) compareWithTangents(method);
-    });
+    connect(&controls_, &CompareControls::tangentsRequested, this,
+            [this](scene::TangentMethod method) {
+                if (context_.scene()) compareWithTangents(method);
+            });
     connect(&viewport_.divider(), &SplitDivider::moved, &state_, &CompareState::setDivider);
     connect(&loader_, &SceneLoadJob::loaded, this, &CompareController::onOtherLoaded);
     connect(&loader_, &SceneLoadJob::failed, this,
@@ -82,7 +83,7 @@ void CompareController::compareWithFile(const QString& spec, bool source_texture
     loader_.start(spec, loads_.textureTarget(), options);
 }
 
-void CompareController::compareWithTangents(TangentMethod method) {
+void CompareController::compareWithTangents(scene::TangentMethod method) {
     const QString spec = context_.sceneSpec();
     log_.append(LogDock::Level::Info, tr("Side B: loading %1 with tangents by %2…")
                                           .arg(spec, CompareControls::tangentMethodLabel(method)));
@@ -91,13 +92,15 @@ void CompareController::compareWithTangents(TangentMethod method) {
     tangents_ = method;
     loader_.start(spec, loads_.textureTarget(), loads_.textureOptions(), method);
     // What side A's tangents are, so that the difference is read for what it is.
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     if (!scene) return;
     int authored = 0, generated = 0, none = 0;
-    for (const Mesh& m : scene->meshes) {
-        if (m.topology() != Topology::Triangles) continue;
-        const Provenance p = m.provenance_of(VertexAttribute::Tangent);
-        ++(p == Provenance::Authored ? authored : p == Provenance::Generated ? generated : none);
+    for (const scene::Mesh& m : scene->meshes) {
+        if (m.topology() != scene::Topology::Triangles) continue;
+        const scene::Provenance p = m.provenance_of(scene::VertexAttribute::Tangent);
+        ++(p == scene::Provenance::Authored    ? authored
+           : p == scene::Provenance::Generated ? generated
+                                               : none);
     }
     log_.append(LogDock::Level::Info,
                 tr("Side A's tangents: %1 primitive(s) authored, %2 exact MikkTSpace, %3 "

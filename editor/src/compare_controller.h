@@ -47,7 +47,7 @@ public:
     void compareWithFile(const QString& spec, bool source_textures = false);
     // Loads this file again as side B with every triangle primitive's tangents made by
     // `method` (authored ones replaced), from the file's unsplit vertices.
-    void compareWithTangents(TangentMethod method);
+    void compareWithTangents(scene::TangentMethod method);
     // The comparison and side B's other file in the next frame.
     void fill(ViewportRequest& frame) const;
 
@@ -67,10 +67,10 @@ private:
     ViewportWindow& viewport_;
     LoadController& loads_;
     QMainWindow& window_;
-    SceneLoadJob loader_;                   // side B's file
-    SharedSession session_;                 // loaded by it, kept while comparing with it
-    QString label_;                         // what side B shows (the file, its textures)
-    std::optional<TangentMethod> tangents_; // side B's tangents, when regenerated
+    SceneLoadJob loader_;                          // side B's file
+    SharedSession session_;                        // loaded by it, kept while comparing with it
+    QString label_;                                // what side B shows (the file, its textures)
+    std::optional<scene::TangentMethod> tangents_; // side B's tangents, when regenerated
 };
 
 } // namespace sherpa::editor

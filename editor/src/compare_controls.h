@@ -29,8 +29,8 @@ public:
     QMenu* menu() const { return menu_; } // for View › Viewport Mode
     void addToToolBar(QToolBar* bar);
     // The menu's name of a tangent method (translated), and its command-line name.
-    static QString tangentMethodLabel(TangentMethod method);
-    static QString tangentMethodName(TangentMethod method);
+    static QString tangentMethodLabel(scene::TangentMethod method);
+    static QString tangentMethodName(scene::TangentMethod method);
     void retranslate();
 
 Q_SIGNALS:
@@ -39,7 +39,7 @@ Q_SIGNALS:
     // The user chose this file with its source textures (no BC7/BC5): the window loads it.
     void sourceTexturesRequested();
     // The user chose this file with tangents by `method`: the window loads it.
-    void tangentsRequested(sherpa::TangentMethod method);
+    void tangentsRequested(sherpa::scene::TangentMethod method);
 
 private:
     void sync(); // checks, enabled states and button texts from the state

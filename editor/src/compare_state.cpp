@@ -48,7 +48,7 @@ void CompareState::setRayTracing(bool available) {
     Q_EMIT offerChanged();
 }
 
-void CompareState::setOtherFile(const QString& name, std::optional<TangentMethod> tangents) {
+void CompareState::setOtherFile(const QString& name, std::optional<scene::TangentMethod> tangents) {
     offer_.file = name;
     offer_.tangents = name.isEmpty() ? std::nullopt : tangents;
     Q_EMIT offerChanged();

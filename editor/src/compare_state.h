@@ -19,7 +19,7 @@ struct SideBOffer {
     bool ray_tracing = true; // the device ray traces
     QString file;            // the other file's name in the menu; empty: none loaded
     // It is this file with every primitive's tangents made by that method.
-    std::optional<TangentMethod> tangents;
+    std::optional<scene::TangentMethod> tangents;
 };
 
 class CompareState : public QObject {
@@ -41,7 +41,8 @@ public:
     // Without rays, side B falls back from the ray tracer to the normal view.
     void setRayTracing(bool available);
     // Empty `name`: no other file (and no tangents).
-    void setOtherFile(const QString& name, std::optional<TangentMethod> tangents = std::nullopt);
+    void setOtherFile(const QString& name,
+                      std::optional<scene::TangentMethod> tangents = std::nullopt);
 
 Q_SIGNALS:
     void changed();

@@ -22,7 +22,7 @@ bool CullHistory::answer(std::uint64_t serial, const GpuCullResult& result) {
 CullChartSeries cull_chart_series(const CullHistory& history) {
     CullChartSeries out;
     for (std::size_t i = 0; i < history.size(); ++i) {
-        const CullStats& c = history[i].cpu;
+        const scene::CullStats& c = history[i].cpu;
         out.visible << QPointF(static_cast<double>(i), static_cast<double>(c.visible));
         out.culled << QPointF(static_cast<double>(i), static_cast<double>(c.culled));
         out.top = std::max(out.top, static_cast<double>(c.total));

@@ -12,7 +12,7 @@
 namespace sherpa::editor {
 
 struct CullSample {
-    CullStats cpu;
+    scene::CullStats cpu;
     bool frozen = false; // culled with the frozen camera (Culling › Freeze)
     // The GPU culling shader run for the same frustum and method while the GPU path
     // is on (the dock's agreement indicator); -1: not run.
@@ -38,7 +38,7 @@ public:
     // The GPU check's answer for pass `serial`, kept while that pass is the newest;
     // false (dropped) once a newer pass (camera, scene, method) asked again.
     bool answer(std::uint64_t serial, const GpuCullResult& result);
-    void clear() { samples_ = RingHistory<CullSample>(kCapacity); }
+    void clear() { samples_ = scene::RingHistory<CullSample>(kCapacity); }
     std::size_t size() const { return samples_.size(); }
     const CullSample& operator[](std::size_t i) const { return samples_[i]; } // 0 = oldest
     const CullSample* latest() const {
@@ -46,7 +46,7 @@ public:
     }
 
 private:
-    RingHistory<CullSample> samples_{kCapacity};
+    scene::RingHistory<CullSample> samples_{kCapacity};
     std::uint64_t serial_ = 0; // of the newest pass
 };
 

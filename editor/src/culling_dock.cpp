@@ -105,14 +105,14 @@ QString CullingDock::agreementText() const {
     return agreement_->text();
 }
 
-void CullingDock::setRendererPasses(std::vector<CullStats> passes, bool cached_shadows) {
+void CullingDock::setRendererPasses(std::vector<scene::CullStats> passes, bool cached_shadows) {
     renderer_passes_ = std::move(passes);
     cached_shadows_ = cached_shadows;
     showRendererPasses();
 }
 
 void CullingDock::showRendererPasses() {
-    const std::vector<CullStats>& passes = renderer_passes_;
+    const std::vector<scene::CullStats>& passes = renderer_passes_;
     const bool cached_shadows = cached_shadows_;
     passes_title_->setText(
         passes.empty() ? tr("Renderer passes: none (culling off or no frame yet)")
@@ -122,7 +122,7 @@ void CullingDock::showRendererPasses() {
     passes_->setRowCount(static_cast<int>(passes.size()));
     auto ms = [](double v) { return v < 0 ? QStringLiteral("—") : QString::number(v, 'f', 3); };
     for (int r = 0; r < static_cast<int>(passes.size()); ++r) {
-        const CullStats& c = passes[std::size_t(r)];
+        const scene::CullStats& c = passes[std::size_t(r)];
         // Hidden: instances of hidden nodes, neither visible nor culled (tested = total -
         // hidden): the row adds up.
         const QString cells[9] = {QString::fromStdString(c.pass),
@@ -165,7 +165,7 @@ void CullingDock::refresh() {
         culled_series_->clear();
         return;
     }
-    const CullStats& c = s->cpu;
+    const scene::CullStats& c = s->cpu;
     values_[Total]->setText(QString::number(c.total));
     values_[Visible]->setText(QString::number(c.visible));
     values_[Culled]->setText(QString::number(c.culled));

@@ -29,7 +29,7 @@ public:
     // What the renderer culled in its last frame, pass by pass (camera, then each
     // shadow cascade): the passes' table. `cached_shadows`: the cascades were not
     // redrawn this frame, their numbers are those of the frame that drew them.
-    void setRendererPasses(std::vector<CullStats> passes, bool cached_shadows);
+    void setRendererPasses(std::vector<scene::CullStats> passes, bool cached_shadows);
     // The passes' table as shown (for the tests); empty outside it.
     QString passText(int row, int column) const;
     int passRows() const;
@@ -55,7 +55,7 @@ private:
     QLabel* agreement_;
     QLabel* passes_title_;
     QTableWidget* passes_;
-    std::vector<CullStats> renderer_passes_;
+    std::vector<scene::CullStats> renderer_passes_;
     bool cached_shadows_ = false;
     QLabel* method_;
     QChart* chart_;

@@ -30,7 +30,8 @@ CullingMonitor::CullingMonitor(const EditorContext& context, QObject* parent)
     : QObject(parent), context_(context), pacing_([this] { rerun(); }) {
     options_.count_false_positives = true; // the dock shows them; the exact test is cheap
     connect(&context_, &EditorContext::sceneReady, this, [this] {
-        input_ = context_.scene() ? prepare_cull_input(*context_.scene()) : CullInput{};
+        input_ =
+            context_.scene() ? scene::prepare_cull_input(*context_.scene()) : scene::CullInput{};
         pose_.reset();
         history_.clear();
         frozen_.reset();
@@ -38,7 +39,7 @@ CullingMonitor::CullingMonitor(const EditorContext& context, QObject* parent)
     });
 }
 
-void CullingMonitor::setMethod(CullMethod method) {
+void CullingMonitor::setMethod(scene::CullMethod method) {
     options_.method = method;
     rerun();
 }
@@ -56,19 +57,19 @@ void CullingMonitor::setGpuPath(bool gpu) {
     rerun();
 }
 
-void CullingMonitor::update(const CameraSpec& camera) {
+void CullingMonitor::update(const scene::CameraSpec& camera) {
     camera_ = camera;
     pacing_.request();
 }
 
-void CullingMonitor::setPose(std::shared_ptr<const Pose> pose) {
-    const Scene* scene = context_.scene();
+void CullingMonitor::setPose(std::shared_ptr<const scene::Pose> pose) {
+    const scene::Scene* scene = context_.scene();
     if (!scene || pose == pose_) return;
     pose_ = std::move(pose);
     if (pose_)
-        input_.boxes.assign(instance_culling_bounds(*scene, *pose_));
+        input_.boxes.assign(scene::instance_culling_bounds(*scene, *pose_));
     else
-        input_.boxes = instance_boxes(*scene); // as prepare_cull_input() made them
+        input_.boxes = scene::instance_boxes(*scene); // as prepare_cull_input() made them
     // The GPU path's check waits for the render thread: at most a few per second while
     // the timeline plays, not one per tick.
     if (gpu_path_ && gpu_check_) return pacing_.requestWithin(kPosedGpuCheckMs);
@@ -77,17 +78,17 @@ void CullingMonitor::setPose(std::shared_ptr<const Pose> pose) {
 
 void CullingMonitor::rerun() {
     pacing_.cancel();
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     if (!scene) {
         visible_.clear();
         Q_EMIT updated();
         return;
     }
-    const CameraSpec& cam = frozen_ ? *frozen_ : camera_;
-    const Frustum frustum = frustum_from_view_projection(cam.view_projection());
+    const scene::CameraSpec& cam = frozen_ ? *frozen_ : camera_;
+    const scene::Frustum frustum = scene::frustum_from_view_projection(cam.view_projection());
     QElapsedTimer clock; // the CPU pass alone
     clock.start();
-    PassResult pass = cull_pass(input_, frustum, cam.eye, options_, "camera");
+    scene::PassResult pass = scene::cull_pass(input_, frustum, cam.eye, options_, "camera");
     pacing_.ran(static_cast<double>(clock.nsecsElapsed()) / 1e6);
     visible_.assign(scene->instances.size(), 0);
     for (std::uint32_t i : pass.visible_opaque) visible_[i] = 1;

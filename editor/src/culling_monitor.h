@@ -22,7 +22,7 @@ namespace sherpa::editor {
 using GpuCullDone = std::function<void(std::optional<GpuCullResult>)>;
 // Runs the GPU culling for a frustum and compares it with the CPU's visible set (per
 // scene instance) without waiting: the answer comes through `done`, later.
-using GpuCullCheck = std::function<void(const Frustum&, CullMethod,
+using GpuCullCheck = std::function<void(const scene::Frustum&, scene::CullMethod,
                                         std::vector<std::uint8_t> cpu_visible, GpuCullDone done)>;
 
 // When a pass runs: at once while passes are cheap, else coalesced so that culling
@@ -61,11 +61,11 @@ class CullingMonitor : public QObject {
 public:
     explicit CullingMonitor(const EditorContext& context, QObject* parent = nullptr);
 
-    void setMethod(CullMethod method);
-    CullMethod method() const { return options_.method; }
+    void setMethod(scene::CullMethod method);
+    scene::CullMethod method() const { return options_.method; }
     void setFrozen(bool frozen);
     // The camera the culling runs for while frozen; none: the viewport's.
-    const std::optional<CameraSpec>& frozenCamera() const { return frozen_; }
+    const std::optional<scene::CameraSpec>& frozenCamera() const { return frozen_; }
     // The renderer culls on the GPU: each pass also asks `check` (the renderer's
     // GPU culling shader) how far it agrees with the CPU pass; the answer fills the
     // pass's sample when it comes (one for an older pass is dropped) and emits
@@ -73,12 +73,12 @@ public:
     void setGpuPath(bool gpu);
     void setGpuCheck(GpuCullCheck check) { gpu_check_ = std::move(check); }
     // Culls for `camera` (the viewport calls this when the camera moves), paced().
-    void update(const CameraSpec& camera);
+    void update(const scene::CameraSpec& camera);
     // The pose on screen (the timeline's; null: the scene as loaded): instances are
     // culled with their conservative posed bounds (culling_bounds()), as the renderer does.
-    void setPose(std::shared_ptr<const Pose> pose);
+    void setPose(std::shared_ptr<const scene::Pose> pose);
     // The boxes and draw groups the passes cull (per scene, posed).
-    const CullInput& input() const { return input_; }
+    const scene::CullInput& input() const { return input_; }
     const CullHistory& history() const { return history_; }
     PassPacing& pacing() { return pacing_; }
 
@@ -90,13 +90,13 @@ private:
 
     static constexpr int kPosedGpuCheckMs = 200; // pose changes with the GPU check on
     const EditorContext& context_;
-    CullInput input_; // boxes and draw groups, prepared once per scene
-    CullOptions options_;
-    CameraSpec camera_;
-    std::optional<CameraSpec> frozen_;
+    scene::CullInput input_; // boxes and draw groups, prepared once per scene
+    scene::CullOptions options_;
+    scene::CameraSpec camera_;
+    std::optional<scene::CameraSpec> frozen_;
     CullHistory history_;
     std::vector<std::uint8_t> visible_; // per instance, of the last pass (1 visible)
-    std::shared_ptr<const Pose> pose_;
+    std::shared_ptr<const scene::Pose> pose_;
     bool gpu_path_ = false;
     GpuCullCheck gpu_check_;
     PassPacing pacing_;

@@ -27,8 +27,8 @@ public:
     // The loaded scene as one value; null when none is open.
     const SceneSession* session() const { return session_.get(); }
     const SharedSession& sharedSession() const { return session_; }
-    const Scene* scene() const { return session_ ? session_->scene.get() : nullptr; }
-    std::shared_ptr<const Scene> sharedScene() const {
+    const scene::Scene* scene() const { return session_ ? session_->scene.get() : nullptr; }
+    std::shared_ptr<const scene::Scene> sharedScene() const {
         return session_ ? session_->scene : nullptr;
     }
     QString sceneSpec() const { return session_ ? session_->spec : QString(); }

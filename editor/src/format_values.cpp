@@ -75,30 +75,30 @@ QString componentTypeShort(std::int32_t t) {
     return c ? QString::fromLatin1(c->unit) : componentType(t);
 }
 
-QString provenance(Provenance p) {
+QString provenance(scene::Provenance p) {
     switch (p) {
-    case Provenance::Authored:
+    case scene::Provenance::Authored:
         return QCoreApplication::translate("Format", "authored");
-    case Provenance::Generated:
+    case scene::Provenance::Generated:
         return QCoreApplication::translate("Format", "generated");
-    case Provenance::Defaulted:
+    case scene::Provenance::Defaulted:
         return QCoreApplication::translate("Format", "defaulted");
     }
     return {};
 }
 
-QString attribute(VertexAttribute a) {
-    const std::string_view n = gltf_name(a); // glTF semantics are names, not prose
+QString attribute(scene::VertexAttribute a) {
+    const std::string_view n = scene::gltf_name(a); // glTF semantics are names, not prose
     return QString::fromUtf8(n.data(), static_cast<qsizetype>(n.size()));
 }
 
-QString alphaMode(AlphaMode m) {
+QString alphaMode(scene::AlphaMode m) {
     switch (m) {
-    case AlphaMode::Opaque:
+    case scene::AlphaMode::Opaque:
         return QStringLiteral("OPAQUE");
-    case AlphaMode::Mask:
+    case scene::AlphaMode::Mask:
         return QStringLiteral("MASK");
-    case AlphaMode::Blend:
+    case scene::AlphaMode::Blend:
         return QStringLiteral("BLEND");
     }
     return {};
@@ -106,14 +106,14 @@ QString alphaMode(AlphaMode m) {
 
 QString roles(std::uint8_t r) {
     QStringList parts;
-    if (r & kRoleColor) parts << QCoreApplication::translate("Format", "colour (sRGB)");
-    if (r & kRoleLinear) parts << QCoreApplication::translate("Format", "linear data");
-    if (r & kRoleNormal) parts << QCoreApplication::translate("Format", "normal map");
+    if (r & scene::kRoleColor) parts << QCoreApplication::translate("Format", "colour (sRGB)");
+    if (r & scene::kRoleLinear) parts << QCoreApplication::translate("Format", "linear data");
+    if (r & scene::kRoleNormal) parts << QCoreApplication::translate("Format", "normal map");
     return parts.isEmpty() ? QCoreApplication::translate("Format", "unused")
                            : parts.join(QStringLiteral(", "));
 }
 
-QString primitiveMode(PrimitiveMode m) {
+QString primitiveMode(scene::PrimitiveMode m) {
     const std::string_view n = to_string(m);
     return QString::fromUtf8(n.data(), static_cast<qsizetype>(n.size()));
 }

@@ -46,11 +46,11 @@ QString componentTypeShort(std::int32_t gltf_component_type);
 // A number at four significant digits, for tables whose columns must fit a side
 // dock (the vertex table's x, y, z); the exact value goes in the tooltip.
 QString compact(double v);
-QString provenance(Provenance p);
-QString attribute(VertexAttribute a);
-QString alphaMode(AlphaMode m);
+QString provenance(scene::Provenance p);
+QString attribute(scene::VertexAttribute a);
+QString alphaMode(scene::AlphaMode m);
 QString roles(std::uint8_t roles);
-QString primitiveMode(PrimitiveMode m);
+QString primitiveMode(scene::PrimitiveMode m);
 QString yesNo(bool b);
 
 } // namespace format

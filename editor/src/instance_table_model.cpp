@@ -6,14 +6,14 @@ namespace sherpa::editor {
 
 InstanceTableModel::InstanceTableModel(QObject* parent) : QAbstractTableModel(parent) {}
 
-void InstanceTableModel::setNode(std::shared_ptr<const Scene> scene, int node) {
+void InstanceTableModel::setNode(std::shared_ptr<const scene::Scene> scene, int node) {
     beginResetModel();
     scene_ = std::move(scene);
     node_ = node;
     endResetModel();
 }
 
-const NodeInstancing* InstanceTableModel::instancing() const {
+const scene::NodeInstancing* InstanceTableModel::instancing() const {
     if (!scene_ || node_ < 0 || static_cast<std::size_t>(node_) >= scene_->nodes.size())
         return nullptr;
     const auto& g = scene_->nodes[static_cast<std::size_t>(node_)].instancing;
@@ -21,7 +21,7 @@ const NodeInstancing* InstanceTableModel::instancing() const {
 }
 
 int InstanceTableModel::rowCount(const QModelIndex& parent) const {
-    const NodeInstancing* g = instancing();
+    const scene::NodeInstancing* g = instancing();
     return parent.isValid() || !g ? 0 : static_cast<int>(g->rows.size());
 }
 
@@ -30,9 +30,9 @@ int InstanceTableModel::columnCount(const QModelIndex& parent) const {
 }
 
 QVariant InstanceTableModel::data(const QModelIndex& index, int role) const {
-    const NodeInstancing* g = instancing();
+    const scene::NodeInstancing* g = instancing();
     if (!g || !index.isValid() || index.row() >= rowCount()) return {};
-    const InstanceRow& r = g->rows[static_cast<std::size_t>(index.row())];
+    const scene::InstanceRow& r = g->rows[static_cast<std::size_t>(index.row())];
     const int c = index.column();
     // glTF order for the quaternion: x, y, z, w.
     const double value =

@@ -18,8 +18,8 @@ public:
     explicit InstanceTableModel(QObject* parent = nullptr);
 
     // The rows of `node` (none when it is not instanced); `scene` is kept alive.
-    void setNode(std::shared_ptr<const Scene> scene, int node);
-    const NodeInstancing* instancing() const;
+    void setNode(std::shared_ptr<const scene::Scene> scene, int node);
+    const scene::NodeInstancing* instancing() const;
 
     int rowCount(const QModelIndex& parent = {}) const override;
     int columnCount(const QModelIndex& parent = {}) const override;
@@ -27,7 +27,7 @@ public:
     QVariant headerData(int section, Qt::Orientation o, int role) const override;
 
 private:
-    std::shared_ptr<const Scene> scene_;
+    std::shared_ptr<const scene::Scene> scene_;
     int node_ = -1;
 };
 

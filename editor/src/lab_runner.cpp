@@ -130,7 +130,7 @@ void LabRunner::start(const QString& family_name, const QString& spec) {
             });
         };
         if (!family_ptr) return fail(QStringLiteral("unknown family '%1'").arg(family.c_str()));
-        LoadResult loaded = load_scene(path, lab::lab_load_options());
+        scene::LoadResult loaded = scene::load_scene(path, lab::lab_load_options());
         if (job->cancel.cancelled()) return;
         if (!loaded) return fail(QString::fromStdString(loaded.error));
         lab::RunControl control;
@@ -158,7 +158,7 @@ void LabRunner::start(const QString& family_name, const QString& spec) {
     });
 }
 
-void LabRunner::startBudget(std::shared_ptr<const Scene> scene) {
+void LabRunner::startBudget(std::shared_ptr<const scene::Scene> scene) {
     std::shared_ptr<Job> job = begin();
     workers_ << QtConcurrent::run(&pool_, [this, job, scene = std::move(scene)] {
         lower_worker_priority();

@@ -37,7 +37,7 @@ public:
     void start(const QString& family, const QString& spec);
     // Builds the budget report of `scene`, the scene the editor shows (loaded with the
     // options `sherpa-cli budget` uses), without loading it again.
-    void startBudget(std::shared_ptr<const Scene> scene);
+    void startBudget(std::shared_ptr<const scene::Scene> scene);
     void cancel();
     bool running() const { return job_ != nullptr; }
     // Blocks until the worker has returned (tests, shutdown).

@@ -260,7 +260,7 @@ bool MainWindow::setLanguage(const QString& code, bool remember) {
 }
 
 void MainWindow::updateStatus() {
-    const Scene* s = context_.scene();
+    const scene::Scene* s = context_.scene();
     if (!s) {
         scene_label_->setText(
             tr("No scene. Open a glTF file or a built-in scene from the File menu."));

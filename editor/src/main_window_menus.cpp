@@ -102,7 +102,8 @@ void MainWindow::createActions() {
         a.overlay_actions.push_back(act);
     }
     a.method_group = new QActionGroup(this);
-    for (CullMethod m : {CullMethod::Sphere, CullMethod::PVertex, CullMethod::Exact}) {
+    for (scene::CullMethod m :
+         {scene::CullMethod::Sphere, scene::CullMethod::PVertex, scene::CullMethod::Exact}) {
         QAction* act = a.method_group->addAction(QString());
         act->setCheckable(true);
         act->setChecked(m == culling_->method());

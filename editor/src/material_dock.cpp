@@ -55,7 +55,7 @@ void MaterialDock::retranslate() {
 }
 
 void MaterialDock::showMaterial() {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     const int material = context_.selection().current().material;
     if (!scene || material < 0 || static_cast<std::size_t>(material) >= scene->materials.size()) {
         model_->clear();
@@ -63,9 +63,9 @@ void MaterialDock::showMaterial() {
         not_drawn_->hide();
         return;
     }
-    const MaterialInstance& m = scene->materials[static_cast<std::size_t>(material)];
+    const scene::MaterialInstance& m = scene->materials[static_cast<std::size_t>(material)];
     // Loud about what is not drawn: a glass material shown opaque must say so.
-    const std::vector<std::string> missing = unsupported_extensions(m);
+    const std::vector<std::string> missing = scene::unsupported_extensions(m);
     QStringList names;
     for (const std::string& n : missing) names << QString::fromStdString(n);
     not_drawn_->setText(
@@ -77,7 +77,7 @@ void MaterialDock::showMaterial() {
                   .arg(names.size() == 1 ? tr("this extension") : tr("these extensions")));
     not_drawn_->setVisible(!names.isEmpty());
     const QString name = m.name.empty() ? tr("(unnamed)") : QString::fromStdString(m.name);
-    model_->setMaterial(context_.sharedSession(), material, to_gpu_material(m),
+    model_->setMaterial(context_.sharedSession(), material, scene::to_gpu_material(m),
                         MaterialFieldsModel::Source::Cpu);
     header_->setText(tr("Material %1 %2: the importer's CPU record (no renderer attached, so "
                         "texture fields hold glTF texture indices, not bindless slots).")
@@ -98,7 +98,8 @@ QString MaterialDock::notDrawnText() const {
 
 void MaterialDock::showReadback(int material, std::optional<GpuMaterialReadback> gpu) {
     if (!gpu) return;
-    const MaterialInstance& m = context_.scene()->materials[static_cast<std::size_t>(material)];
+    const scene::MaterialInstance& m =
+        context_.scene()->materials[static_cast<std::size_t>(material)];
     const QString name = m.name.empty() ? tr("(unnamed)") : QString::fromStdString(m.name);
     model_->setMaterial(context_.sharedSession(), material, gpu->record,
                         MaterialFieldsModel::Source::GpuReadback,

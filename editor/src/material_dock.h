@@ -21,7 +21,7 @@ class MaterialFieldsModel;
 // What a renderer hands back for one material: the bytes in its buffer and how its
 // bindless texture indices map to Scene::textures.
 struct GpuMaterialReadback {
-    GPUMaterialData record{};
+    scene::GPUMaterialData record{};
     std::vector<int> bindless_to_texture;
 };
 // Asks for material `material`'s record; `done` is called later on the GUI thread

@@ -14,7 +14,7 @@
 namespace sherpa::editor {
 
 void MaterialFieldsModel::appendMicrofacetRows(const render::MaterialExtensionPlace& place,
-                                               const MaterialInstance& m) {
+                                               const scene::MaterialInstance& m) {
     if (place.anisotropy == render::kNoExtension && place.iridescence == render::kNoExtension)
         return;
     const int word = int(render::kExtensionWordBytes);
@@ -22,7 +22,8 @@ void MaterialFieldsModel::appendMicrofacetRows(const render::MaterialExtensionPl
         return w == render::kNoExtension ? tr("absent") : QString::number(w);
     };
     auto add = [&](std::uint32_t block, std::size_t offset, const char* field, const char* property,
-                   const char* type, const QString& value, const TextureSlot* slot = nullptr) {
+                   const char* type, const QString& value,
+                   const scene::TextureSlot* slot = nullptr) {
         extension_rows_.push_back({int(block) * word + int(offset), QString::fromLatin1(field),
                                    QString::fromLatin1(property), QString::fromLatin1(type), value,
                                    slot && slot->present() ? slot->texture : -1});

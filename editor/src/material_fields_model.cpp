@@ -24,34 +24,37 @@ struct Field {
 };
 
 constexpr Field kFields[] = {
-    {offsetof(GPUMaterialData, base_color_factor), "base_color_factor", FieldType::Vec4,
+    {offsetof(scene::GPUMaterialData, base_color_factor), "base_color_factor", FieldType::Vec4,
      "pbrMetallicRoughness.baseColorFactor"},
-    {offsetof(GPUMaterialData, emissive_factor), "emissive_factor", FieldType::Vec4,
+    {offsetof(scene::GPUMaterialData, emissive_factor), "emissive_factor", FieldType::Vec4,
      "emissiveFactor, KHR_materials_emissive_strength"},
-    {offsetof(GPUMaterialData, metallic_factor), "metallic_factor", FieldType::Float,
+    {offsetof(scene::GPUMaterialData, metallic_factor), "metallic_factor", FieldType::Float,
      "pbrMetallicRoughness.metallicFactor"},
-    {offsetof(GPUMaterialData, roughness_factor), "roughness_factor", FieldType::Float,
+    {offsetof(scene::GPUMaterialData, roughness_factor), "roughness_factor", FieldType::Float,
      "pbrMetallicRoughness.roughnessFactor"},
-    {offsetof(GPUMaterialData, normal_scale), "normal_scale", FieldType::Float,
+    {offsetof(scene::GPUMaterialData, normal_scale), "normal_scale", FieldType::Float,
      "normalTexture.scale"},
-    {offsetof(GPUMaterialData, occlusion_strength), "occlusion_strength", FieldType::Float,
+    {offsetof(scene::GPUMaterialData, occlusion_strength), "occlusion_strength", FieldType::Float,
      "occlusionTexture.strength"},
-    {offsetof(GPUMaterialData, base_color_tex), "base_color_tex", FieldType::TextureIndex,
+    {offsetof(scene::GPUMaterialData, base_color_tex), "base_color_tex", FieldType::TextureIndex,
      "pbrMetallicRoughness.baseColorTexture"},
-    {offsetof(GPUMaterialData, emissive_tex), "emissive_tex", FieldType::TextureIndex,
+    {offsetof(scene::GPUMaterialData, emissive_tex), "emissive_tex", FieldType::TextureIndex,
      "emissiveTexture"},
-    {offsetof(GPUMaterialData, metallic_roughness_tex), "metallic_roughness_tex",
+    {offsetof(scene::GPUMaterialData, metallic_roughness_tex), "metallic_roughness_tex",
      FieldType::TextureIndex, "pbrMetallicRoughness.metallicRoughnessTexture"},
-    {offsetof(GPUMaterialData, normal_tex), "normal_tex", FieldType::TextureIndex, "normalTexture"},
-    {offsetof(GPUMaterialData, occlusion_tex), "occlusion_tex", FieldType::TextureIndex,
+    {offsetof(scene::GPUMaterialData, normal_tex), "normal_tex", FieldType::TextureIndex,
+     "normalTexture"},
+    {offsetof(scene::GPUMaterialData, occlusion_tex), "occlusion_tex", FieldType::TextureIndex,
      "occlusionTexture"},
-    {offsetof(GPUMaterialData, alpha_cutoff), "alpha_cutoff", FieldType::Float, "alphaCutoff"},
-    {offsetof(GPUMaterialData, alpha_mode), "alpha_mode", FieldType::AlphaMode, "alphaMode"},
-    {offsetof(GPUMaterialData, double_sided), "double_sided", FieldType::Bool, "doubleSided"},
+    {offsetof(scene::GPUMaterialData, alpha_cutoff), "alpha_cutoff", FieldType::Float,
+     "alphaCutoff"},
+    {offsetof(scene::GPUMaterialData, alpha_mode), "alpha_mode", FieldType::AlphaMode, "alphaMode"},
+    {offsetof(scene::GPUMaterialData, double_sided), "double_sided", FieldType::Bool,
+     "doubleSided"},
 };
 constexpr int kFieldCount = static_cast<int>(sizeof kFields / sizeof kFields[0]);
 
-template <typename T> T read(const GPUMaterialData& r, std::size_t offset) {
+template <typename T> T read(const scene::GPUMaterialData& r, std::size_t offset) {
     T v;
     std::memcpy(&v, reinterpret_cast<const unsigned char*>(&r) + offset, sizeof v);
     return v;
@@ -62,7 +65,7 @@ template <typename T> T read(const GPUMaterialData& r, std::size_t offset) {
 MaterialFieldsModel::MaterialFieldsModel(QObject* parent) : QAbstractTableModel(parent) {}
 
 void MaterialFieldsModel::setMaterial(SharedSession session, int material,
-                                      const GPUMaterialData& record, Source source,
+                                      const scene::GPUMaterialData& record, Source source,
                                       std::vector<int> bindless_to_texture) {
     beginResetModel();
     session_ = std::move(session);
@@ -76,14 +79,15 @@ void MaterialFieldsModel::setMaterial(SharedSession session, int material,
 
 void MaterialFieldsModel::buildExtensionRows() {
     extension_rows_.clear();
-    const Scene* sc = scene();
+    const scene::Scene* sc = scene();
     if (!sc || material_ < 0 || std::size_t(material_) >= sc->materials.size()) return;
     // The layout the renderer uploads (texture slots do not move blocks).
     const render::MaterialExtensionBuffer layout = render::build_material_extensions(
-        sc->materials, [](const TextureSlot&, sherpa::TextureRole) { return gpu::kWhiteTexture; });
+        sc->materials,
+        [](const scene::TextureSlot&, sherpa::scene::TextureRole) { return gpu::kWhiteTexture; });
     const render::MaterialExtensionPlace& place = layout.places[std::size_t(material_)];
     if (!place.any()) return;
-    const MaterialInstance& m = sc->materials[std::size_t(material_)];
+    const scene::MaterialInstance& m = sc->materials[std::size_t(material_)];
     const int word = int(render::kExtensionWordBytes);
     auto words = [](std::uint32_t w) {
         return w == render::kNoExtension ? tr("absent") : QString::number(w);
@@ -101,14 +105,14 @@ void MaterialFieldsModel::buildExtensionRows() {
                                    format::number(*m.ior), -1});
     // One row per texture field: its bindless slot's source chain, or the default.
     auto texture_row = [this](int offset, const char* field, const char* property,
-                              const TextureSlot& slot) {
+                              const scene::TextureSlot& slot) {
         extension_rows_.push_back({offset, QString::fromLatin1(field),
                                    QString::fromLatin1(property), QStringLiteral("uint"),
                                    slot.present() ? chain(slot.texture) : tr("default texture"),
                                    slot.present() ? slot.texture : -1});
     };
     if (place.specular != render::kNoExtension) {
-        const MaterialSpecular& sp = *m.specular;
+        const scene::MaterialSpecular& sp = *m.specular;
         const int base = int(place.specular) * word;
         extension_rows_.push_back(
             {base + int(offsetof(render::GPUSpecularBlock, color_factor)),
@@ -124,7 +128,7 @@ void MaterialFieldsModel::buildExtensionRows() {
                     "KHR_materials_specular.specularColorTexture", sp.specular_color);
     }
     if (place.clearcoat != render::kNoExtension) {
-        const MaterialClearcoat& cc = *m.clearcoat;
+        const scene::MaterialClearcoat& cc = *m.clearcoat;
         const int base = int(place.clearcoat) * word;
         extension_rows_.push_back(
             {base + int(offsetof(render::GPUClearcoatBlock, factors)),
@@ -144,7 +148,7 @@ void MaterialFieldsModel::buildExtensionRows() {
                     cc.normal);
     }
     if (place.sheen != render::kNoExtension) {
-        const MaterialSheen& sh = *m.sheen;
+        const scene::MaterialSheen& sh = *m.sheen;
         const int base = int(place.sheen) * word;
         extension_rows_.push_back(
             {base + int(offsetof(render::GPUSheenBlock, factors)),
@@ -189,7 +193,7 @@ void MaterialFieldsModel::clear() {
     endResetModel();
 }
 
-const SpecularGlossiness* MaterialFieldsModel::specGloss() const {
+const scene::SpecularGlossiness* MaterialFieldsModel::specGloss() const {
     if (!scene() || material_ < 0 || std::size_t(material_) >= scene()->materials.size())
         return nullptr;
     const auto& sg = scene()->materials[std::size_t(material_)].specular_glossiness;
@@ -199,7 +203,7 @@ const SpecularGlossiness* MaterialFieldsModel::specGloss() const {
 // Rows: workflow, specular_glossiness (xyz specularFactor, w glossinessFactor), the
 // texture. The extension's diffuse is in base_color_factor / base_color_tex.
 QVariant MaterialFieldsModel::specGlossData(int row, int column) const {
-    const SpecularGlossiness& sg = *specGloss();
+    const scene::SpecularGlossiness& sg = *specGloss();
     static constexpr std::size_t kOffsets[] = {
         offsetof(render::GPUMaterialExtra, workflow),
         offsetof(render::GPUMaterialExtra, specular_glossiness),
@@ -241,7 +245,7 @@ int MaterialFieldsModel::textureOfRow(int row) const {
     if (!scene() || row < 0 || row >= kFieldCount) return -1;
     if (kFields[row].type != FieldType::TextureIndex) return -1;
     const auto value = read<std::uint32_t>(record_, kFields[row].offset);
-    if (value == kTextureSentinel) return -1;
+    if (value == scene::kTextureSentinel) return -1;
     int texture = static_cast<int>(value);
     if (source_ == Source::GpuReadback)
         texture = value < bindless_to_texture_.size() ? bindless_to_texture_[value] : -1;
@@ -250,11 +254,11 @@ int MaterialFieldsModel::textureOfRow(int row) const {
 }
 
 QString MaterialFieldsModel::chain(int texture) const {
-    const TextureRecord& t = scene()->textures[static_cast<std::size_t>(texture)];
+    const scene::TextureRecord& t = scene()->textures[static_cast<std::size_t>(texture)];
     QString text = tr("texture %1").arg(texture);
     if (!t.name.empty()) text += QStringLiteral(" \"%1\"").arg(QString::fromStdString(t.name));
     if (t.image >= 0) {
-        const ImageRecord& img = scene()->images[static_cast<std::size_t>(t.image)];
+        const scene::ImageRecord& img = scene()->images[static_cast<std::size_t>(t.image)];
         const QString where = !img.uri.empty()
                                   ? QFileInfo(QString::fromStdString(img.uri)).fileName()
                               : img.buffer_view >= 0 ? tr("bufferView %1").arg(img.buffer_view)
@@ -312,9 +316,9 @@ QVariant MaterialFieldsModel::data(const QModelIndex& index, int role) const {
         return QString::fromLatin1(f.name);
     case PropertyColumn:
         // Spec-gloss materials keep their diffuse where the base colour goes.
-        if (specGloss() && f.offset == offsetof(GPUMaterialData, base_color_factor))
+        if (specGloss() && f.offset == offsetof(scene::GPUMaterialData, base_color_factor))
             return QStringLiteral("KHR_materials_pbrSpecularGlossiness.diffuseFactor");
-        if (specGloss() && f.offset == offsetof(GPUMaterialData, base_color_tex))
+        if (specGloss() && f.offset == offsetof(scene::GPUMaterialData, base_color_tex))
             return QStringLiteral("KHR_materials_pbrSpecularGlossiness.diffuseTexture");
         return QString::fromLatin1(f.gltf_property);
     case TypeColumn:
@@ -334,13 +338,13 @@ QVariant MaterialFieldsModel::data(const QModelIndex& index, int role) const {
             return format::number(read<float>(record_, f.offset));
         case FieldType::TextureIndex: {
             const auto v = read<std::uint32_t>(record_, f.offset);
-            return v == kTextureSentinel ? tr("none (0x%1)").arg(v, 8, 16, QLatin1Char('0'))
-                                         : QString::number(v);
+            return v == scene::kTextureSentinel ? tr("none (0x%1)").arg(v, 8, 16, QLatin1Char('0'))
+                                                : QString::number(v);
         }
         case FieldType::AlphaMode: {
             const auto v = read<std::uint32_t>(record_, f.offset);
             return QStringLiteral("%1 (%2)").arg(v).arg(
-                v <= 2 ? format::alphaMode(static_cast<AlphaMode>(v)) : QStringLiteral("?"));
+                v <= 2 ? format::alphaMode(static_cast<scene::AlphaMode>(v)) : QStringLiteral("?"));
         }
         case FieldType::Bool:
             return read<std::uint32_t>(record_, f.offset);

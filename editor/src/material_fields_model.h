@@ -42,11 +42,11 @@ public:
     explicit MaterialFieldsModel(QObject* parent = nullptr);
     // `bindless_to_texture` maps a GPU record's texture fields back to Scene::textures
     // (empty for a CPU record).
-    void setMaterial(SharedSession session, int material, const GPUMaterialData& record,
+    void setMaterial(SharedSession session, int material, const scene::GPUMaterialData& record,
                      Source source, std::vector<int> bindless_to_texture = {});
     void clear();
     Source source() const { return source_; }
-    const GPUMaterialData& record() const { return record_; }
+    const scene::GPUMaterialData& record() const { return record_; }
     // Scene::textures index a texture field refers to, -1 for the sentinel/defaults.
     int textureOfRow(int row) const;
 
@@ -59,10 +59,10 @@ private:
     QString chain(int texture) const;
     // KHR_materials_pbrSpecularGlossiness: the material's extension fields as rows
     // after the GPUMaterialData ones (GPUMaterialExtra, from the CPU record).
-    const SpecularGlossiness* specGloss() const;
+    const scene::SpecularGlossiness* specGloss() const;
     QVariant specGlossData(int row, int column) const;
 
-    const Scene* scene() const { return session_ ? session_->scene.get() : nullptr; }
+    const scene::Scene* scene() const { return session_ ? session_->scene.get() : nullptr; }
 
     // Material extensions (KHR_materials_ior, _specular): one row per field of the
     // material's blocks in the extension buffer, its offset the byte offset there
@@ -75,16 +75,16 @@ private:
     void buildExtensionRows();
     // The transmission family's rows (material_fields_transmission.cpp).
     void appendTransmissionRows(const render::MaterialExtensionPlace& place,
-                                const MaterialInstance& m);
+                                const scene::MaterialInstance& m);
     // KHR_materials_anisotropy's and _iridescence's rows (material_fields_microfacet.cpp).
     void appendMicrofacetRows(const render::MaterialExtensionPlace& place,
-                              const MaterialInstance& m);
+                              const scene::MaterialInstance& m);
     QVariant extensionData(const ExtensionRow& r, int column, int role) const;
     int specGlossRows() const { return specGloss() ? 3 : 0; }
 
     SharedSession session_; // the scene and its thumbnails
     int material_ = -1;
-    GPUMaterialData record_{};
+    scene::GPUMaterialData record_{};
     Source source_ = Source::Cpu;
     std::vector<int> bindless_to_texture_;
     std::vector<ExtensionRow> extension_rows_;

@@ -14,16 +14,17 @@
 namespace sherpa::editor {
 
 void MaterialFieldsModel::appendTransmissionRows(const render::MaterialExtensionPlace& place,
-                                                 const MaterialInstance& m) {
+                                                 const scene::MaterialInstance& m) {
     const int word = int(render::kExtensionWordBytes);
     auto words = [](std::uint32_t w) {
         return w == render::kNoExtension ? tr("absent") : QString::number(w);
     };
-    auto texture = [this](const TextureSlot& slot) {
+    auto texture = [this](const scene::TextureSlot& slot) {
         return slot.present() ? chain(slot.texture) : tr("default texture");
     };
     auto add = [&](std::uint32_t block, std::size_t offset, const char* field, const char* property,
-                   const char* type, const QString& value, const TextureSlot* slot = nullptr) {
+                   const char* type, const QString& value,
+                   const scene::TextureSlot* slot = nullptr) {
         extension_rows_.push_back({int(block) * word + int(offset), QString::fromLatin1(field),
                                    QString::fromLatin1(property), QString::fromLatin1(type), value,
                                    slot && slot->present() ? slot->texture : -1});

@@ -131,12 +131,12 @@ MeshDock::~MeshDock() {
 void MeshDock::retranslate() {
     setWindowTitle(tr("Mesh Attributes"));
     tabs_->setTabText(0, tr("Vertices"));
-    const Mesh* shown = MeshRef{context_.sharedScene(), shown_mesh_}.get();
-    const Topology topology = shown ? shown->topology() : Topology::Triangles;
-    tabs_->setTabText(1, topology == Topology::Lines    ? tr("Segments")
-                         : topology == Topology::Points ? tr("Points")
-                                                        : tr("Triangles"));
-    const NodeInstancing* rows = instances_->instancing();
+    const scene::Mesh* shown = MeshRef{context_.sharedScene(), shown_mesh_}.get();
+    const scene::Topology topology = shown ? shown->topology() : scene::Topology::Triangles;
+    tabs_->setTabText(1, topology == scene::Topology::Lines    ? tr("Segments")
+                         : topology == scene::Topology::Points ? tr("Points")
+                                                               : tr("Triangles"));
+    const scene::NodeInstancing* rows = instances_->instancing();
     tabs_->setTabText(2, rows ? tr("Instances (%1)").arg(rows->rows.size()) : tr("Instances"));
     jump_button_->setText(tr("Jump to vertex"));
     tangent_button_->setText(tr("Compare tangents"));
@@ -167,7 +167,7 @@ void MeshDock::showMesh() {
 }
 
 void MeshDock::updateSummary() {
-    const Mesh* m = MeshRef{context_.sharedScene(), shown_mesh_}.get();
+    const scene::Mesh* m = MeshRef{context_.sharedScene(), shown_mesh_}.get();
     tangent_button_->setEnabled(m != nullptr && m->triangle_count() > 0 &&
                                 !tangent_job_.isRunning());
     jump_button_->setEnabled(m != nullptr);
@@ -179,9 +179,9 @@ void MeshDock::updateSummary() {
     std::uint64_t gpu = 0;
     for (int r = 0; r < attributes_->rowCount(); ++r) gpu += attributes_->gpuBytes(r);
     const QString elements =
-        m->topology() == Topology::Lines    ? tr("%1 line segments").arg(m->element_count())
-        : m->topology() == Topology::Points ? tr("%1 points").arg(m->element_count())
-                                            : tr("%1 triangles").arg(m->triangle_count());
+        m->topology() == scene::Topology::Lines    ? tr("%1 line segments").arg(m->element_count())
+        : m->topology() == scene::Topology::Points ? tr("%1 points").arg(m->element_count())
+                                                   : tr("%1 triangles").arg(m->triangle_count());
     summary_->setText(tr("Mesh %1 primitive %2 \"%3\": %4 vertices (file: %5), %6, "
                          "material %7, %8 on the GPU%9")
                           .arg(m->group_id)
@@ -198,10 +198,10 @@ void MeshDock::updateSummary() {
 
 // "; EXT_meshopt_compression ATTRIBUTES/OCTAHEDRAL, TRIANGLES: 12 KB -> 48 KB in
 // 0.21 ms" for a primitive the file stores compressed, else empty.
-QString MeshDock::compressionText(const Scene& scene, int mesh) {
-    for (const PrimitiveInfo& p : scene.primitives) {
+QString MeshDock::compressionText(const scene::Scene& scene, int mesh) {
+    for (const scene::PrimitiveInfo& p : scene.primitives) {
         if (p.engine_mesh != mesh || !p.compression) continue;
-        const PrimitiveCompression& c = *p.compression;
+        const scene::PrimitiveCompression& c = *p.compression;
         return tr("; %1 %2: %3 → %4 decoded in %5 ms")
             .arg(QString::fromStdString(c.codec), QString::fromStdString(c.modes),
                  format::bytes(c.encoded_bytes), format::bytes(c.decoded_bytes))
@@ -211,15 +211,15 @@ QString MeshDock::compressionText(const Scene& scene, int mesh) {
 }
 
 void MeshDock::computeTangentErrors() {
-    const std::shared_ptr<const Scene> scene = context_.sharedScene();
+    const std::shared_ptr<const scene::Scene> scene = context_.sharedScene();
     const int mesh = shown_mesh_;
     if (!scene || mesh < 0 || tangent_job_.isRunning()) return;
     tangent_button_->setEnabled(false);
     tangent_summary_->setText(tr("Comparing…"));
     tangent_job_.setFuture(
         QtConcurrent::run([scene, mesh]() -> std::shared_ptr<const TangentErrors> {
-            const Mesh& m = scene->meshes[static_cast<std::size_t>(mesh)];
-            const MaterialInstance& mat = scene->materials[m.material_id];
+            const scene::Mesh& m = scene->meshes[static_cast<std::size_t>(mesh)];
+            const scene::MaterialInstance& mat = scene->materials[m.material_id];
             // The uv set the normal texture samples decides the tangent frame.
             const std::uint32_t set = mat.normal.present() ? mat.normal.tex_coord : 0;
             return std::make_shared<const TangentErrors>(tangent_errors(m, set));

@@ -43,7 +43,7 @@ public:
     void jumpToVertex(int vertex);
     // The summary's compression clause for engine mesh `mesh` ("; codec modes: encoded
     // -> decoded in N ms"), empty for a primitive the file does not compress.
-    static QString compressionText(const Scene& scene, int mesh);
+    static QString compressionText(const scene::Scene& scene, int mesh);
 
 Q_SIGNALS:
     void selectVertexRequested(int vertex);

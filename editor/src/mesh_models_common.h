@@ -8,9 +8,9 @@
 namespace sherpa::editor {
 
 struct MeshRef {
-    std::shared_ptr<const Scene> scene; // keeps the data alive across a scene swap
+    std::shared_ptr<const scene::Scene> scene; // keeps the data alive across a scene swap
     int mesh = -1;
-    const Mesh* get() const {
+    const scene::Mesh* get() const {
         return scene && mesh >= 0 && static_cast<std::size_t>(mesh) < scene->meshes.size()
                    ? &scene->meshes[static_cast<std::size_t>(mesh)]
                    : nullptr;

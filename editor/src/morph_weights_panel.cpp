@@ -37,7 +37,7 @@ void MorphWeightsPanel::retranslate() {
     }
 }
 
-void MorphWeightsPanel::setScene(const Scene* scene) {
+void MorphWeightsPanel::setScene(const scene::Scene* scene) {
     for (Group& g : groups_) delete g.box;
     groups_.clear();
     overrides_.clear();
@@ -51,7 +51,7 @@ void MorphWeightsPanel::setScene(const Scene* scene) {
             for (std::size_t n = 0; n < scene->nodes.size() && g.node < 0; ++n)
                 if (scene->nodes[n].mesh == static_cast<std::int32_t>(m))
                     g.node = static_cast<int>(n);
-            for (const Mesh& mesh : scene->meshes)
+            for (const scene::Mesh& mesh : scene->meshes)
                 if (mesh.group_id == g.mesh) { // engine meshes are named "mesh#primitive"
                     g.name = QString::fromStdString(mesh.name.substr(0, mesh.name.rfind('#')));
                     break;
@@ -104,7 +104,7 @@ void MorphWeightsPanel::collect(const Group& g) {
     Q_EMIT overridesChanged();
 }
 
-void MorphWeightsPanel::showPose(const Pose* pose) {
+void MorphWeightsPanel::showPose(const scene::Pose* pose) {
     for (Group& g : groups_) {
         if (g.box->isChecked()) continue;
         const std::vector<float>* w = nullptr;

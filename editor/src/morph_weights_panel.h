@@ -20,9 +20,9 @@ class MorphWeightsPanel : public QWidget {
 public:
     explicit MorphWeightsPanel(QWidget* parent = nullptr);
     // Rebuilds the groups for `scene` (null: none); every override is dropped.
-    void setScene(const Scene* scene);
+    void setScene(const scene::Scene* scene);
     // Shows the pose's weights on the groups that are not overridden.
-    void showPose(const Pose* pose);
+    void showPose(const scene::Pose* pose);
     const MorphOverrides& overrides() const { return overrides_; }
     bool empty() const { return groups_.empty(); }
     // For tests and scripting: overrides mesh `mesh`'s target `target` with `weight`.
@@ -43,7 +43,7 @@ private:
     };
     void collect(const Group& g);
 
-    const Scene* scene_ = nullptr;
+    const scene::Scene* scene_ = nullptr;
     std::vector<Group> groups_;
     MorphOverrides overrides_;
     QVBoxLayout* layout_;

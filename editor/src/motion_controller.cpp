@@ -26,7 +26,7 @@ MotionController::MotionController(EditorContext& context, TimelineDock& timelin
 }
 
 void MotionController::showTimelineForScene() {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     timeline_.setVisible(scene && (!scene->animations.empty() || !scene->motions.empty()));
 }
 
@@ -35,17 +35,17 @@ void MotionController::fill(render::FrameRequest& request) const {
 }
 
 void MotionController::logPoseOverflow() {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     const auto pose = timeline_.playback().pose();
     std::vector<std::uint32_t> nodes;
-    if (scene && pose) nodes = posed_overflow_nodes(*scene, *pose);
+    if (scene && pose) nodes = scene::posed_overflow_nodes(*scene, *pose);
     if (nodes == pose_overflow_logged_) return;
     pose_overflow_logged_ = nodes;
     for (std::uint32_t node : nodes)
         log_.append(LogDock::Level::Warning,
                     tr("At %1 s: %2")
                         .arg(timeline_.playback().clock().time, 0, 'g', 4)
-                        .arg(QString::fromStdString(posed_overflow_warning(*scene, node))));
+                        .arg(QString::fromStdString(scene::posed_overflow_warning(*scene, node))));
 }
 
 } // namespace sherpa::editor

@@ -42,7 +42,7 @@ void PlaybackClock::play(bool play) {
     playing = play;
 }
 
-void Playback::setScene(std::shared_ptr<const Scene> scene) {
+void Playback::setScene(std::shared_ptr<const scene::Scene> scene) {
     scene_ = std::move(scene);
     animation_ = -1;
     clock_.reset(0.0, 0.0);
@@ -54,7 +54,7 @@ void Playback::selectAnimation(int animation) {
                      ? animation
                      : -1;
     if (animation_ >= 0) {
-        const Animation& anim = scene_->animations[static_cast<std::size_t>(animation_)];
+        const scene::Animation& anim = scene_->animations[static_cast<std::size_t>(animation_)];
         clock_.reset(anim.start, anim.end);
     } else {
         clock_.reset(0.0, 0.0);
@@ -64,7 +64,7 @@ void Playback::selectAnimation(int animation) {
 std::vector<double> Playback::keyFractions() const {
     std::vector<double> out;
     if (animation_ < 0) return out;
-    const Animation& anim = scene_->animations[static_cast<std::size_t>(animation_)];
+    const scene::Animation& anim = scene_->animations[static_cast<std::size_t>(animation_)];
     for (const double t : key_times(anim))
         out.push_back(anim.end > anim.start ? (t - anim.start) / (anim.end - anim.start) : 0.0);
     return out;
@@ -78,22 +78,22 @@ bool Playback::updatePose(const MorphOverrides& overrides) {
     return true;
 }
 
-std::vector<double> key_times(const Animation& animation) {
+std::vector<double> key_times(const scene::Animation& animation) {
     std::vector<double> out;
-    for (const AnimationSampler& s : animation.samplers)
+    for (const scene::AnimationSampler& s : animation.samplers)
         out.insert(out.end(), s.times.begin(), s.times.end());
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
 }
 
-std::shared_ptr<const Pose> make_pose(const Scene& scene, std::int32_t animation, double time,
-                                      const MorphOverrides& overrides) {
+std::shared_ptr<const scene::Pose> make_pose(const scene::Scene& scene, std::int32_t animation,
+                                             double time, const MorphOverrides& overrides) {
     if (animation >= static_cast<std::int32_t>(scene.animations.size())) animation = -1;
     if (animation < 0 && overrides.empty()) return nullptr;
-    auto pose = std::make_shared<Pose>(evaluate_pose(scene, animation, time));
+    auto pose = std::make_shared<scene::Pose>(scene::evaluate_pose(scene, animation, time));
     for (std::size_t n = 0; n < scene.nodes.size() && n < pose->weights.size(); ++n) {
-        const Node& node = scene.nodes[n];
+        const scene::Node& node = scene.nodes[n];
         if (node.mesh < 0) continue;
         const auto it = overrides.find(static_cast<std::uint32_t>(node.mesh));
         if (it == overrides.end()) continue;
@@ -103,8 +103,8 @@ std::shared_ptr<const Pose> make_pose(const Scene& scene, std::int32_t animation
     return pose;
 }
 
-bool is_joint(const Scene& scene, std::uint32_t node) {
-    return std::any_of(scene.skins.begin(), scene.skins.end(), [&](const Skin& s) {
+bool is_joint(const scene::Scene& scene, std::uint32_t node) {
+    return std::any_of(scene.skins.begin(), scene.skins.end(), [&](const scene::Skin& s) {
         return std::find(s.joints.begin(), s.joints.end(), node) != s.joints.end();
     });
 }

@@ -36,7 +36,7 @@ struct PlaybackClock {
 };
 
 // Every key time of every sampler of `animation`, sorted, without repeats.
-std::vector<double> key_times(const Animation& animation);
+std::vector<double> key_times(const scene::Animation& animation);
 
 // Per glTF mesh, the morph weights that replace what the animation or the file says,
 // for every node that shows the mesh.
@@ -45,8 +45,8 @@ using MorphOverrides = std::map<std::uint32_t, std::vector<float>>;
 // The pose to draw: `animation` (-1: none, the file's default pose) at `time`, morph
 // weights overridden. Null when there is nothing to pose (no animation, no override),
 // so the renderer draws the scene as loaded.
-std::shared_ptr<const Pose> make_pose(const Scene& scene, std::int32_t animation, double time,
-                                      const MorphOverrides& overrides);
+std::shared_ptr<const scene::Pose> make_pose(const scene::Scene& scene, std::int32_t animation,
+                                             double time, const MorphOverrides& overrides);
 
 // One animation of a scene on a clock and the Pose it makes with the morph weight
 // overrides: the timeline's state, its widgets aside. The pose is made again only
@@ -54,7 +54,7 @@ std::shared_ptr<const Pose> make_pose(const Scene& scene, std::int32_t animation
 class Playback {
 public:
     // Another scene (null: none): no animation, no pose made yet. Held while played.
-    void setScene(std::shared_ptr<const Scene> scene);
+    void setScene(std::shared_ptr<const scene::Scene> scene);
     // -1: none. Puts the clock on the animation's key range, at its start, paused.
     void selectAnimation(int animation);
     int animation() const { return animation_; }
@@ -68,7 +68,7 @@ public:
     // was made from these already. Returns whether it made one.
     bool updatePose(const MorphOverrides& overrides);
     // The pose to draw now; null: the scene as loaded (no animation, no override).
-    std::shared_ptr<const Pose> pose() const { return pose_; }
+    std::shared_ptr<const scene::Pose> pose() const { return pose_; }
 
 private:
     // What pose_ was made from.
@@ -79,14 +79,14 @@ private:
         bool operator==(const PoseInputs&) const = default;
     };
 
-    std::shared_ptr<const Scene> scene_;
+    std::shared_ptr<const scene::Scene> scene_;
     int animation_ = -1;
     PlaybackClock clock_;
-    std::shared_ptr<const Pose> pose_;
+    std::shared_ptr<const scene::Pose> pose_;
     std::optional<PoseInputs> pose_inputs_; // none: make it
 };
 
 // Whether `node` is a joint of any skin of `scene`.
-bool is_joint(const Scene& scene, std::uint32_t node);
+bool is_joint(const scene::Scene& scene, std::uint32_t node);
 
 } // namespace sherpa::editor

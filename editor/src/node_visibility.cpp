@@ -16,7 +16,7 @@ bool NodeVisibility::nodeVisible(int node) const {
 }
 
 bool NodeVisibility::instanceVisible(std::size_t instance) const {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     if (!scene || instance >= scene->instances.size()) return false;
     // Hiding a node hides its subtree, as in every DCC tool.
     const std::uint32_t node = scene->instances[instance].node_id;
@@ -24,13 +24,13 @@ bool NodeVisibility::instanceVisible(std::size_t instance) const {
 }
 
 void NodeVisibility::setNodeVisible(int node, bool visible) {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     if (!scene || node < 0 || static_cast<std::size_t>(node) >= scene->nodes.size()) return;
     if (nodeVisible(node) == visible) return;
     auto mask = hidden_ ? std::make_shared<std::vector<bool>>(*hidden_)
                         : std::make_shared<std::vector<bool>>(scene->nodes.size(), false);
     (*mask)[static_cast<std::size_t>(node)] = !visible;
-    hidden_subtrees_ = hidden_subtrees(scene->nodes, *mask);
+    hidden_subtrees_ = scene::hidden_subtrees(scene->nodes, *mask);
     if (std::find(mask->begin(), mask->end(), true) == mask->end())
         hidden_.reset(); // every node shown again
     else

@@ -40,8 +40,8 @@ void OrbitCamera::fly(glm::vec3 ruf) {
     pose_.target += ruf.x * right + ruf.y * up + ruf.z * pose_.forward();
 }
 
-FramingOptions OrbitCamera::framingOptions() const {
-    FramingOptions options;
+scene::FramingOptions OrbitCamera::framingOptions() const {
+    scene::FramingOptions options;
     options.fov_y_degrees = pose_.fov_degrees;
     options.aspect = pose_.aspect;
     return options;
@@ -49,14 +49,15 @@ FramingOptions OrbitCamera::framingOptions() const {
 
 void OrbitCamera::frame(const core::Aabb& box) {
     if (box.valid())
-        pose_ = orbit_pose_from(frame_box_along(box, -pose_.forward(), framingOptions()), pose_);
+        pose_ =
+            orbit_pose_from(scene::frame_box_along(box, -pose_.forward(), framingOptions()), pose_);
 }
 
-void OrbitCamera::frameAuto(const Scene& scene) {
-    pose_ = orbit_pose_from(frame_scene(scene, nullptr, framingOptions()), pose_);
+void OrbitCamera::frameAuto(const scene::Scene& scene) {
+    pose_ = orbit_pose_from(scene::frame_scene(scene, nullptr, framingOptions()), pose_);
 }
 
-void OrbitCamera::jumpTo(const Scene& scene, std::size_t index) {
+void OrbitCamera::jumpTo(const scene::Scene& scene, std::size_t index) {
     pose_ = orbit_pose_at_camera(scene, index, pose_);
 }
 

@@ -32,15 +32,15 @@ public:
     // The engine's automatic view of the scene (on load and Frame all: frame_scene(),
     // its drawn vertices seen from the side of its first camera), exactly what
     // `sherpa-cli render --camera auto` shows at the same aspect and field of view.
-    void frameAuto(const Scene& scene);
+    void frameAuto(const scene::Scene& scene);
     // Takes a glTF camera's pose and field of view.
-    void jumpTo(const Scene& scene, std::size_t placed_camera);
+    void jumpTo(const scene::Scene& scene, std::size_t placed_camera);
 
     void setAspect(float aspect) { pose_.aspect = aspect > 0.0f ? aspect : 1.0f; }
     const OrbitPose& pose() const { return pose_; }
 
 private:
-    FramingOptions framingOptions() const;
+    scene::FramingOptions framingOptions() const;
 
     OrbitPose pose_;
 };

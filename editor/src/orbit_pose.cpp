@@ -18,8 +18,8 @@ void OrbitPose::axes(glm::vec3& right, glm::vec3& up) const {
     up = glm::cross(right, f);
 }
 
-CameraSpec OrbitPose::spec() const {
-    CameraSpec s;
+scene::CameraSpec OrbitPose::spec() const {
+    scene::CameraSpec s;
     s.eye = eye();
     s.target = target;
     s.up = {0.0f, 1.0f, 0.0f};
@@ -46,7 +46,7 @@ std::string OrbitPose::toString() const {
     return buf;
 }
 
-OrbitPose orbit_pose_from(const CameraSpec& framed, const OrbitPose& lens) {
+OrbitPose orbit_pose_from(const scene::CameraSpec& framed, const OrbitPose& lens) {
     OrbitPose pose = lens;
     const glm::vec3 to_target = framed.target - framed.eye;
     pose.target = framed.target;
@@ -59,11 +59,12 @@ OrbitPose orbit_pose_from(const CameraSpec& framed, const OrbitPose& lens) {
     return pose;
 }
 
-OrbitPose orbit_pose_at_camera(const Scene& scene, std::size_t index, const OrbitPose& current) {
+OrbitPose orbit_pose_at_camera(const scene::Scene& scene, std::size_t index,
+                               const OrbitPose& current) {
     if (index >= scene.placed_cameras.size()) return current;
     OrbitPose pose = current;
-    const PlacedCamera& placed = scene.placed_cameras[index];
-    const Camera& cam = scene.cameras[placed.camera];
+    const scene::PlacedCamera& placed = scene.placed_cameras[index];
+    const scene::Camera& cam = scene.cameras[placed.camera];
     const glm::vec3 e = glm::vec3(placed.world[3]);
     const glm::vec3 f = glm::normalize(-glm::vec3(placed.world[2]));
     // Orbit about a point in front of the camera at the scene's distance.
@@ -72,7 +73,7 @@ OrbitPose orbit_pose_at_camera(const Scene& scene, std::size_t index, const Orbi
     pose.pitch = std::asin(std::clamp(-f.y, -1.0f, 1.0f));
     pose.yaw = std::atan2(-f.x, -f.z);
     pose.target = e + pose.forward() * pose.distance;
-    if (cam.type == CameraType::Perspective) pose.fov_degrees = glm::degrees(cam.yfov);
+    if (cam.type == scene::CameraType::Perspective) pose.fov_degrees = glm::degrees(cam.yfov);
     pose.near_plane = std::max(cam.znear, 1e-4f);
     return pose;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // The viewport camera's state: a target, a distance and a direction (yaw, pitch)
 // with the lens (field of view, aspect, near plane). Plain math, no Qt: the engine's
-// camera (sherpa::CameraSpec, reverse-Z, looking down -Z), rays through the image and
+// camera (sherpa::scene::CameraSpec, reverse-Z, looking down -Z), rays through the image and
 // the camera string. OrbitCamera maps the user's input onto it.
 #include <glm/glm.hpp>
 
@@ -28,7 +28,7 @@ struct OrbitPose {
     glm::vec3 eye() const { return target - forward() * distance; }
     // The view's right and up axes (unit; up is +Y's part across the view).
     void axes(glm::vec3& right, glm::vec3& up) const;
-    CameraSpec spec() const;
+    scene::CameraSpec spec() const;
     // World-space ray through a point in normalised device coordinates (x right, y up).
     void ray(glm::vec2 ndc, glm::vec3& origin, glm::vec3& direction) const;
     // The camera string (camera_spec.h) for --camera and settings.
@@ -37,11 +37,11 @@ struct OrbitPose {
 
 // The pose that looks from `framed.eye` at `framed.target` (about which it then
 // orbits), with `framed`'s near plane and `lens`' field of view and aspect.
-OrbitPose orbit_pose_from(const CameraSpec& framed, const OrbitPose& lens);
+OrbitPose orbit_pose_from(const scene::CameraSpec& framed, const OrbitPose& lens);
 // The pose of the glTF camera `placed_camera` of `scene` (its eye, direction, field
 // of view and near plane), orbiting about a point in front of it at the scene's
 // distance; `current` where the index is out of range.
-OrbitPose orbit_pose_at_camera(const Scene& scene, std::size_t placed_camera,
+OrbitPose orbit_pose_at_camera(const scene::Scene& scene, std::size_t placed_camera,
                                const OrbitPose& current);
 
 } // namespace sherpa::editor

@@ -60,17 +60,17 @@ float ray_segment(glm::vec3 o, glm::vec3 d, glm::vec3 a, glm::vec3 b) {
 
 } // namespace
 
-PickHit pick(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
+PickHit pick(const scene::Scene& scene, glm::vec3 origin, glm::vec3 direction,
              const std::function<bool(std::size_t)>& visible) {
     PickHit best;
     best.distance = std::numeric_limits<float>::infinity();
     const glm::vec3 inv_d = 1.0f / direction;
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
-        const MeshInstance& inst = scene.instances[i];
+        const scene::MeshInstance& inst = scene.instances[i];
         if (!inst.world_bounds.valid() || !visible(i)) continue;
-        const Mesh& mesh = scene.meshes[inst.mesh_id];
+        const scene::Mesh& mesh = scene.meshes[inst.mesh_id];
         core::Aabb box = inst.world_bounds;
-        if (mesh.topology() != Topology::Triangles) {
+        if (mesh.topology() != scene::Topology::Triangles) {
             // Grown by the pick cone's radius there: a flat line's box has no thickness.
             const float r =
                 kThinPickRadius * (glm::length(box.center() - origin) + glm::length(box.extent()));
@@ -82,9 +82,9 @@ PickHit pick(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
         const glm::mat4 to_local = glm::inverse(inst.world);
         const glm::vec3 lo = glm::vec3(to_local * glm::vec4(origin, 1.0f));
         const glm::vec3 ld = glm::vec3(to_local * glm::vec4(direction, 0.0f));
-        if (mesh.topology() != Topology::Triangles) {
+        if (mesh.topology() != scene::Topology::Triangles) {
             // Element e: segment (2e, 2e+1) or point e, reported as `triangle`.
-            const std::size_t per = indices_per_element(mesh.topology());
+            const std::size_t per = scene::indices_per_element(mesh.topology());
             for (std::size_t e = 0; e + per <= mesh.indices.size(); e += per) {
                 const float hit = ray_segment(lo, ld, mesh.vertices[mesh.indices[e]].position,
                                               mesh.vertices[mesh.indices[e + per - 1]].position);

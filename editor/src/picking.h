@@ -20,7 +20,7 @@ struct PickHit {
 };
 
 // `visible(i)` filters instances (hidden nodes are not pickable).
-PickHit pick(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
+PickHit pick(const scene::Scene& scene, glm::vec3 origin, glm::vec3 direction,
              const std::function<bool(std::size_t)>& visible);
 
 } // namespace sherpa::editor

@@ -24,7 +24,7 @@ ReloadController::ReloadController(EditorContext& context, EditorSettings& setti
       menu_(settings_menu.addMenu(QString())), group_(new QActionGroup(this)) {
     connect(file_watch_, &SceneFileWatch::changed, this, &ReloadController::onFilesChanged);
     connect(&context_, &EditorContext::sceneReady, this, [this] {
-        const Scene* scene = context_.scene();
+        const scene::Scene* scene = context_.scene();
         file_watch_->watch(scene ? scene_files(context_.sceneSpec(), *scene) : QStringList());
     });
     for (const bool automatic : {false, true}) {

@@ -99,7 +99,7 @@ void RenderController::connectReadbacks() {
     });
     // Checked on the render thread between frames, answered later: the GUI thread
     // never waits for the frame in flight. A scene not uploaded yet is not compared.
-    culling_.setGpuCheck([this](const Frustum& frustum, CullMethod method,
+    culling_.setGpuCheck([this](const scene::Frustum& frustum, scene::CullMethod method,
                                 std::vector<std::uint8_t> cpu_visible, GpuCullDone done) {
         if (render_)
             render_->post([this, frustum, method, cpu_visible = std::move(cpu_visible),

@@ -33,7 +33,7 @@ QByteArray gltf_json(const QString& path) {
 
 } // namespace
 
-QStringList scene_files(const QString& path, const Scene& scene) {
+QStringList scene_files(const QString& path, const scene::Scene& scene) {
     QStringList files;
     const QFileInfo info(path);
     if (!info.exists()) return files; // builtin:..., or gone
@@ -48,8 +48,8 @@ QStringList scene_files(const QString& path, const Scene& scene) {
         if (uri.isEmpty() || uri.startsWith(QLatin1String("data:"))) continue;
         files << QDir::cleanPath(dir.absoluteFilePath(QUrl::fromPercentEncoding(uri.toUtf8())));
     }
-    for (const ImageRecord& image : scene.images)
-        if (const auto file = image_file_path(scene, image); !file.empty())
+    for (const scene::ImageRecord& image : scene.images)
+        if (const auto file = scene::image_file_path(scene, image); !file.empty())
             files << QDir::cleanPath(dir.absoluteFilePath(QString::fromStdString(file.string())));
     files.removeDuplicates();
     return files;

@@ -8,16 +8,16 @@
 #include <QStringList>
 #include <QTimer>
 
-namespace sherpa {
+namespace sherpa::scene {
 struct Scene;
-}
+} // namespace sherpa::scene
 
 namespace sherpa::editor {
 
 // The files a scene was read from: `path` itself, the buffers its JSON names by
 // URI (data URIs excluded; a GLB's JSON chunk is read), and its external images.
 // Absolute, existing or not (a missing image appears when the exporter writes it).
-QStringList scene_files(const QString& path, const Scene& scene);
+QStringList scene_files(const QString& path, const scene::Scene& scene);
 
 class SceneFileWatch : public QObject {
     Q_OBJECT

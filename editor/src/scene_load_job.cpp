@@ -53,10 +53,11 @@ std::atomic<int> g_in_flight{0};
 
 namespace {
 
-QImage decode_thumbnail(const Scene& scene, const TextureRecord& texture, QSize& source_size) {
+QImage decode_thumbnail(const scene::Scene& scene, const scene::TextureRecord& texture,
+                        QSize& source_size) {
     if (texture.image < 0 || static_cast<std::size_t>(texture.image) >= scene.images.size())
         return {};
-    const ImageRecord& image = scene.images[static_cast<std::size_t>(texture.image)];
+    const scene::ImageRecord& image = scene.images[static_cast<std::size_t>(texture.image)];
     if (!image.pixels.empty() && image.width > 0 && image.height > 0) {
         // Built-in scenes generate raw RGBA8; wrap it without copying, scale copies.
         source_size = QSize(static_cast<int>(image.width), static_cast<int>(image.height));
@@ -120,7 +121,7 @@ QImage prepared_thumbnail(const tex::PreparedTextureSet* set, std::int32_t t, QS
 
 LoadOutcome run_load(const QString& spec, const std::optional<tex::TextureTarget>& target,
                      const tex::PipelineOptions& textures, SceneLoadJob::State* state,
-                     std::optional<TangentMethod> tangents = std::nullopt);
+                     std::optional<scene::TangentMethod> tangents = std::nullopt);
 
 } // namespace
 
@@ -140,7 +141,7 @@ int SceneLoadJob::workersInFlight() {
 
 void SceneLoadJob::start(const QString& spec, const std::optional<tex::TextureTarget>& target,
                          const tex::PipelineOptions& textures,
-                         std::optional<TangentMethod> tangents) {
+                         std::optional<scene::TangentMethod> tangents) {
     cancel();
     spec_ = spec;
     state_ = std::make_shared<State>();
@@ -215,11 +216,11 @@ namespace {
 
 LoadOutcome run_load(const QString& spec, const std::optional<tex::TextureTarget>& target,
                      const tex::PipelineOptions& textures, SceneLoadJob::State* state,
-                     std::optional<TangentMethod> tangents) {
+                     std::optional<scene::TangentMethod> tangents) {
     LoadOutcome out;
     QElapsedTimer clock;
     clock.start();
-    LoadOptions options;
+    scene::LoadOptions options;
     // From the file's own vertices: regenerating on a loaded scene would see the
     // vertices exact MikkTSpace already split, where a welded method welds nothing.
     if (tangents) {
@@ -227,13 +228,14 @@ LoadOutcome run_load(const QString& spec, const std::optional<tex::TextureTarget
         options.tangents.regenerate = true;
     }
     options.cancel = &state->cancel;
-    options.progress = [state](sherpa::LoadStage stage, std::size_t done, std::size_t total) {
-        const LoadStep step = stage == sherpa::LoadStage::Parse      ? LoadStep::Parse
-                              : stage == sherpa::LoadStage::Geometry ? LoadStep::Geometry
-                                                                     : LoadStep::Tangents;
+    options.progress = [state](sherpa::scene::LoadStage stage, std::size_t done,
+                               std::size_t total) {
+        const LoadStep step = stage == sherpa::scene::LoadStage::Parse      ? LoadStep::Parse
+                              : stage == sherpa::scene::LoadStage::Geometry ? LoadStep::Geometry
+                                                                            : LoadStep::Tangents;
         state->report(step, done, total);
     };
-    LoadResult result = load_scene(spec.toStdString(), options);
+    scene::LoadResult result = scene::load_scene(spec.toStdString(), options);
     if (!result) {
         out.cancelled = result.cancelled;
         out.error = QString::fromStdString(result.error);
@@ -242,7 +244,7 @@ LoadOutcome run_load(const QString& spec, const std::optional<tex::TextureTarget
     auto session = std::make_shared<SceneSession>();
     session->spec = spec;
     session->timings.engine_ms = static_cast<double>(clock.nsecsElapsed()) / 1e6;
-    const Scene& scene = *result.scene;
+    const scene::Scene& scene = *result.scene;
     // GPU textures first (texture cache, BC7/BC5), counted per prepared texture: the
     // thumbnails then come from their small mip levels instead of decoding sources.
     clock.restart();

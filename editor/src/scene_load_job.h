@@ -44,7 +44,7 @@ public:
     // where TANGENT is absent and a normal texture needs it).
     void start(const QString& spec, const std::optional<tex::TextureTarget>& target = {},
                const tex::PipelineOptions& textures = {},
-               std::optional<TangentMethod> tangents = std::nullopt);
+               std::optional<scene::TangentMethod> tangents = std::nullopt);
     void cancel();
     bool running() const { return state_ != nullptr; }
     const QString& spec() const { return spec_; }

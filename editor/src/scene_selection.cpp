@@ -13,11 +13,11 @@ void SceneSelection::set(const Selection& selection) {
 }
 
 void SceneSelection::selectNode(int node) {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     Selection s;
     if (!scene || node < 0 || static_cast<std::size_t>(node) >= scene->nodes.size()) return set(s);
     s.node = node;
-    const Node& n = scene->nodes[static_cast<std::size_t>(node)];
+    const scene::Node& n = scene->nodes[static_cast<std::size_t>(node)];
     if (n.mesh >= 0 && static_cast<std::size_t>(n.mesh) < scene->mesh_primitives.size())
         for (std::int32_t m : scene->mesh_primitives[static_cast<std::size_t>(n.mesh)])
             if (m >= 0) {
@@ -30,7 +30,7 @@ void SceneSelection::selectNode(int node) {
 }
 
 void SceneSelection::selectMesh(int mesh, int node) {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     if (!scene || mesh < 0 || static_cast<std::size_t>(mesh) >= scene->meshes.size()) return;
     Selection s;
     s.node = node;

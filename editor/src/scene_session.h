@@ -36,8 +36,8 @@ struct LoadTimings {
 };
 
 struct SceneSession {
-    QString spec;                       // what was opened: a path or a built-in spec
-    std::shared_ptr<const Scene> scene; // never null
+    QString spec;                              // what was opened: a path or a built-in spec
+    std::shared_ptr<const scene::Scene> scene; // never null
     // Prepared on the loader thread for the viewport's device (its
     // tex::TextureTarget); null without a device.
     PreparedTextures textures;

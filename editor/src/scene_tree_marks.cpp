@@ -14,12 +14,12 @@ int at(const std::vector<int>& marks, int i) {
 } // namespace
 
 void SceneTreeModel::rebuildMarks() {
-    const Scene* scene = context_.scene();
-    marks_ = scene ? mark_objects(*scene, scene->validation.messages) : ObjectMarks{};
+    const scene::Scene* scene = context_.scene();
+    marks_ = scene ? scene::mark_objects(*scene, scene->validation.messages) : scene::ObjectMarks{};
 }
 
 int SceneTreeModel::mark(const Item& item) const {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     if (!scene) return -1;
     switch (item.kind) {
     case Kind::Node: { // its own messages, and those of what it draws (items below)

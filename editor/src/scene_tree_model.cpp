@@ -50,7 +50,7 @@ void SceneTreeModel::rebuild() {
     top_.clear();
     node_item_.clear();
     rebuildMarks();
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     if (!scene) return;
     node_item_.assign(scene->nodes.size(), -1);
     std::map<std::pair<std::uint32_t, std::uint32_t>, int> primitive_info;
@@ -61,7 +61,7 @@ void SceneTreeModel::rebuild() {
     // Recursion over the node graph; primitives, lights and cameras hang under their node.
     struct Walker {
         SceneTreeModel& m;
-        const Scene& s;
+        const scene::Scene& s;
         const std::map<std::pair<std::uint32_t, std::uint32_t>, int>& info;
         bool displayed;
         void node(int n, int parent, int depth) {
@@ -69,7 +69,7 @@ void SceneTreeModel::rebuild() {
             const int item = m.addItem(Kind::Node, n, n, parent);
             if (displayed && m.node_item_[static_cast<std::size_t>(n)] < 0)
                 m.node_item_[static_cast<std::size_t>(n)] = item;
-            const Node& nd = s.nodes[static_cast<std::size_t>(n)];
+            const scene::Node& nd = s.nodes[static_cast<std::size_t>(n)];
             if (nd.mesh >= 0 && static_cast<std::size_t>(nd.mesh) < s.mesh_primitives.size()) {
                 const auto& prims = s.mesh_primitives[static_cast<std::size_t>(nd.mesh)];
                 for (std::size_t p = 0; p < prims.size(); ++p) {
@@ -122,7 +122,7 @@ int SceneTreeModel::columnCount(const QModelIndex&) const {
 }
 
 QString SceneTreeModel::name(const Item& it) const {
-    const Scene& s = *context_.scene();
+    const scene::Scene& s = *context_.scene();
     const auto idx = static_cast<std::size_t>(it.index);
     switch (it.kind) {
     case Kind::SceneRoot: {
@@ -160,7 +160,7 @@ QString SceneTreeModel::name(const Item& it) const {
 }
 
 // A node's own transform: what differs from identity, or (full) the whole TRS.
-QString SceneTreeModel::nodeTransform(const Node& n, bool full) const {
+QString SceneTreeModel::nodeTransform(const scene::Node& n, bool full) const {
     if (n.has_matrix) return tr("matrix");
     if (!full) {
         QStringList parts;
@@ -176,13 +176,13 @@ QString SceneTreeModel::nodeTransform(const Node& n, bool full) const {
 }
 
 QString SceneTreeModel::detail(const Item& it, bool full) const {
-    const Scene& s = *context_.scene();
+    const scene::Scene& s = *context_.scene();
     const auto idx = static_cast<std::size_t>(it.index);
     switch (it.kind) {
     case Kind::SceneRoot:
         return it.index == s.displayed_scene ? tr("displayed") : QString();
     case Kind::Node: {
-        const Node& n = s.nodes[idx];
+        const scene::Node& n = s.nodes[idx];
         // EXT_mesh_gpu_instancing: the node's mesh is drawn once per row, not at the node.
         QString instances;
         if (n.instancing)
@@ -195,9 +195,9 @@ QString SceneTreeModel::detail(const Item& it, bool full) const {
         return instances.isEmpty() ? transform : instances + QStringLiteral("  ") + transform;
     }
     case Kind::Primitive: {
-        const PrimitiveInfo& p = s.primitives[idx];
+        const scene::PrimitiveInfo& p = s.primitives[idx];
         if (p.engine_mesh < 0) return tr("skipped: %1").arg(from_std(p.skipped_reason));
-        if (!full && p.mode == PrimitiveMode::Triangles)
+        if (!full && p.mode == scene::PrimitiveMode::Triangles)
             return tr("%1 vertices, %2 triangles").arg(p.vertices).arg(p.triangles);
         return tr("%1, %2 vertices, %3 triangles")
             .arg(format::primitiveMode(p.mode))
@@ -207,14 +207,14 @@ QString SceneTreeModel::detail(const Item& it, bool full) const {
     case Kind::Material:
         return format::alphaMode(s.materials[idx].alpha_mode);
     case Kind::Light: {
-        const Light& l = s.lights[idx];
-        return l.type == LightType::Directional ? tr("directional")
-               : l.type == LightType::Point     ? tr("point")
-                                                : tr("spot");
+        const scene::Light& l = s.lights[idx];
+        return l.type == scene::LightType::Directional ? tr("directional")
+               : l.type == scene::LightType::Point     ? tr("point")
+                                                       : tr("spot");
     }
     case Kind::Camera:
-        return s.cameras[idx].type == CameraType::Perspective ? tr("perspective")
-                                                              : tr("orthographic");
+        return s.cameras[idx].type == scene::CameraType::Perspective ? tr("perspective")
+                                                                     : tr("orthographic");
     case Kind::Skin:
     case Kind::Joint:
     case Kind::Animation:

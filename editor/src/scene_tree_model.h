@@ -65,9 +65,9 @@ private:
     QString name(const Item& item) const;
     // `full`: every value (the tooltip); else short enough for a narrow dock.
     QString detail(const Item& item, bool full = false) const;
-    QString nodeTransform(const Node& node, bool full) const;
+    QString nodeTransform(const scene::Node& node, bool full) const;
     // scene_tree_motion.cpp: skins, joints and animations.
-    void addMotion(const Scene& scene);
+    void addMotion(const scene::Scene& scene);
     QString motionName(const Item& item) const;
     QString motionType(const Item& item) const;
     QString motionDetail(const Item& item, bool full) const;
@@ -76,7 +76,7 @@ private:
     // shown as a marker on its item.
     void rebuildMarks();
     int mark(const Item& item) const;
-    ObjectMarks marks_;
+    scene::ObjectMarks marks_;
 
     const EditorContext& context_;
     std::vector<Item> items_;

@@ -12,19 +12,19 @@
 namespace sherpa::editor {
 
 namespace {
-QString path_name(AnimationPath p) {
+QString path_name(scene::AnimationPath p) {
     return QString::fromLatin1(to_string(p).data(), static_cast<qsizetype>(to_string(p).size()));
 }
-QString interpolation_name(Interpolation i) {
+QString interpolation_name(scene::Interpolation i) {
     return QString::fromLatin1(to_string(i).data(), static_cast<qsizetype>(to_string(i).size()));
 }
-QString node_name(const Scene& s, std::uint32_t n) {
+QString node_name(const scene::Scene& s, std::uint32_t n) {
     if (n >= s.nodes.size() || s.nodes[n].name.empty()) return SceneTreeModel::tr("Node %1").arg(n);
     return QString::fromStdString(s.nodes[n].name);
 }
 } // namespace
 
-void SceneTreeModel::addMotion(const Scene& scene) {
+void SceneTreeModel::addMotion(const scene::Scene& scene) {
     joint_.assign(scene.nodes.size(), 0);
     for (std::size_t k = 0; k < scene.skins.size(); ++k) {
         const int skin = addItem(Kind::Skin, static_cast<int>(k), -1, -1);
@@ -35,7 +35,7 @@ void SceneTreeModel::addMotion(const Scene& scene) {
         }
     }
     for (std::size_t a = 0; a < scene.animations.size(); ++a) {
-        const Animation& anim = scene.animations[a];
+        const scene::Animation& anim = scene.animations[a];
         const int item = addItem(Kind::Animation, static_cast<int>(a), -1, -1);
         for (std::size_t c = 0; c < anim.channels.size(); ++c)
             addItem(Kind::Channel, static_cast<int>(c), static_cast<int>(anim.channels[c].node),
@@ -46,7 +46,7 @@ void SceneTreeModel::addMotion(const Scene& scene) {
 }
 
 QString SceneTreeModel::motionName(const Item& it) const {
-    const Scene& s = *context_.scene();
+    const scene::Scene& s = *context_.scene();
     const auto idx = static_cast<std::size_t>(it.index);
     switch (it.kind) {
     case Kind::Skin: {
@@ -87,11 +87,11 @@ QString SceneTreeModel::motionType(const Item& it) const {
 }
 
 QString SceneTreeModel::motionDetail(const Item& it, bool full) const {
-    const Scene& s = *context_.scene();
+    const scene::Scene& s = *context_.scene();
     const auto idx = static_cast<std::size_t>(it.index);
     switch (it.kind) {
     case Kind::Skin: {
-        const Skin& skin = s.skins[idx];
+        const scene::Skin& skin = s.skins[idx];
         const QString joints = tr("%1 joints").arg(skin.joints.size());
         if (skin.skeleton < 0) return joints;
         return tr("%1, skeleton %2")
@@ -100,7 +100,7 @@ QString SceneTreeModel::motionDetail(const Item& it, bool full) const {
     case Kind::Joint:
         return tr("node %1").arg(it.index);
     case Kind::Animation: {
-        const Animation& a = s.animations[idx];
+        const scene::Animation& a = s.animations[idx];
         const QString text =
             tr("%1 s, %2 channels").arg(a.end - a.start, 0, 'f', 3).arg(a.channels.size());
         if (!full) return text;
@@ -112,15 +112,15 @@ QString SceneTreeModel::motionDetail(const Item& it, bool full) const {
             .arg(a.end, 0, 'f', 3);
     }
     case Kind::Channel: {
-        const Animation& a = s.animations[static_cast<std::size_t>(
+        const scene::Animation& a = s.animations[static_cast<std::size_t>(
             items_[static_cast<std::size_t>(it.parent)].index)];
-        const AnimationChannel& c = a.channels[idx];
+        const scene::AnimationChannel& c = a.channels[idx];
         return tr("%1 %2, sampler %3").arg(node_name(s, c.node), path_name(c.path)).arg(c.sampler);
     }
     case Kind::Sampler: {
-        const Animation& a = s.animations[static_cast<std::size_t>(
+        const scene::Animation& a = s.animations[static_cast<std::size_t>(
             items_[static_cast<std::size_t>(it.parent)].index)];
-        const AnimationSampler& sm = a.samplers[idx];
+        const scene::AnimationSampler& sm = a.samplers[idx];
         const QString text =
             tr("%1, %2 keys").arg(interpolation_name(sm.interpolation)).arg(sm.times.size());
         if (!full || sm.times.empty()) return text;

@@ -24,13 +24,14 @@ namespace {
 
 // A vertex (or triangle) row of the mesh dock for element `element` of an accessor
 // used as `attribute` by `mesh`; -1 when the element is not one row.
-int element_row(const Scene& scene, const AccessorUse& use, std::int64_t element, bool& triangle) {
+int element_row(const scene::Scene& scene, const scene::AccessorUse& use, std::int64_t element,
+                bool& triangle) {
     triangle = false;
     if (element < 0 || use.engine_mesh < 0) return -1;
-    const Mesh& mesh = scene.meshes[static_cast<std::size_t>(use.engine_mesh)];
+    const scene::Mesh& mesh = scene.meshes[static_cast<std::size_t>(use.engine_mesh)];
     if (use.attribute == "indices") { // index i belongs to triangle i / 3 (lists only)
-        triangle =
-            mesh.topology() == Topology::Triangles && mesh.source_mode == PrimitiveMode::Triangles;
+        triangle = mesh.topology() == scene::Topology::Triangles &&
+                   mesh.source_mode == scene::PrimitiveMode::Triangles;
         const std::int64_t row = triangle ? element / 3 : -1;
         return row < static_cast<std::int64_t>(mesh.triangle_count()) ? static_cast<int>(row) : -1;
     }
@@ -91,7 +92,7 @@ void SelectionController::fill(ViewportRequest& frame) const {
     const Selection& sel = context_.selection().current();
     frame.hiddenNodes = context_.visibility().hidden();
     render::FrameRequest& request = frame.request;
-    if (const Scene* scene = context_.scene();
+    if (const scene::Scene* scene = context_.scene();
         scene && sel.node >= 0 && is_joint(*scene, static_cast<std::uint32_t>(sel.node)))
         request.selected_joint = static_cast<std::uint32_t>(sel.node);
     request.highlight_outline = outlinedInstances();
@@ -104,7 +105,7 @@ void SelectionController::fill(ViewportRequest& frame) const {
 }
 
 int SelectionController::pickAt(QPointF ndc) {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     if (!scene) return -1;
     glm::vec3 origin, direction;
     viewport_.camera().pose().ray({static_cast<float>(ndc.x()), static_cast<float>(ndc.y())},
@@ -116,19 +117,19 @@ int SelectionController::pickAt(QPointF ndc) {
         context_.selection().set({});
         return -1;
     }
-    const MeshInstance& inst = scene->instances[static_cast<std::size_t>(hit.instance)];
+    const scene::MeshInstance& inst = scene->instances[static_cast<std::size_t>(hit.instance)];
     context_.selection().selectMesh(static_cast<int>(inst.mesh_id), static_cast<int>(inst.node_id));
     context_.selection().selectTriangle(static_cast<int>(hit.triangle));
     return static_cast<int>(hit.instance);
 }
 
 int SelectionController::selectedInstance() const {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     const Selection& sel = context_.selection().current();
     if (!scene || sel.mesh < 0) return -1;
     // The selected primitive as placed by the selected node (any node when none is).
     for (std::size_t i = 0; i < scene->instances.size(); ++i) {
-        const MeshInstance& inst = scene->instances[i];
+        const scene::MeshInstance& inst = scene->instances[i];
         if (static_cast<int>(inst.mesh_id) == sel.mesh &&
             (sel.node < 0 || static_cast<int>(inst.node_id) == sel.node))
             return static_cast<int>(i);
@@ -137,7 +138,7 @@ int SelectionController::selectedInstance() const {
 }
 
 std::vector<std::uint32_t> SelectionController::outlinedInstances() const {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     const int node = context_.selection().current().node;
     std::vector<std::uint32_t> out;
     if (!scene || node < 0 || static_cast<std::size_t>(node) >= scene->nodes.size()) return out;
@@ -161,7 +162,7 @@ std::vector<std::uint32_t> SelectionController::outlinedInstances() const {
 }
 
 bool SelectionController::selectNodeNamed(const QString& name_or_index) {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     if (!scene) return false;
     bool is_index = false;
     const int index = name_or_index.toInt(&is_index);
@@ -175,14 +176,14 @@ bool SelectionController::selectNodeNamed(const QString& name_or_index) {
 }
 
 void SelectionController::showValidationForScene() {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     docks_.validation->setVisible(scene && !scene->validation.messages.empty());
 }
 
 bool SelectionController::showPointer(const QString& pointer, const QString& message) {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     if (!scene) return false;
-    const PointerTarget t = resolve_pointer(*scene, pointer.toStdString());
+    const scene::PointerTarget t = scene::resolve_pointer(*scene, pointer.toStdString());
     QDockWidget* dock = nullptr;
     QString what;
     const auto selectNode = [&] { // the node itself, in the scene tree
@@ -191,30 +192,30 @@ bool SelectionController::showPointer(const QString& pointer, const QString& mes
         what = tr("node %1").arg(t.node);
     };
     switch (t.kind) {
-    case TargetKind::Node:
-    case TargetKind::SkinJoint:
-    case TargetKind::Camera:
-    case TargetKind::Light:
-    case TargetKind::Skin:
-    case TargetKind::Animation:
-    case TargetKind::AnimationChannel:
-    case TargetKind::AnimationSampler:
+    case scene::TargetKind::Node:
+    case scene::TargetKind::SkinJoint:
+    case scene::TargetKind::Camera:
+    case scene::TargetKind::Light:
+    case scene::TargetKind::Skin:
+    case scene::TargetKind::Animation:
+    case scene::TargetKind::AnimationChannel:
+    case scene::TargetKind::AnimationSampler:
         if (t.node >= 0) {
             selectNode();
         }
         break;
-    case TargetKind::Mesh:
-    case TargetKind::Primitive:
-    case TargetKind::Accessor:
+    case scene::TargetKind::Mesh:
+    case scene::TargetKind::Primitive:
+    case scene::TargetKind::Accessor:
         if (t.engine_mesh >= 0) {
             context_.selection().selectMesh(t.engine_mesh, t.node);
             dock = docks_.mesh;
             what = tr("primitive %1").arg(t.engine_mesh);
-            if (t.kind == TargetKind::Accessor) {
+            if (t.kind == scene::TargetKind::Accessor) {
                 bool triangle = false;
                 const int row =
                     element_row(*scene, t.uses.front(),
-                                element_index_in_message(message.toStdString()), triangle);
+                                scene::element_index_in_message(message.toStdString()), triangle);
                 if (row >= 0 && triangle) context_.selection().selectTriangle(row);
                 if (row >= 0 && !triangle) context_.selection().selectVertex(row);
                 what = tr("accessor %1: %2 of primitive %3")
@@ -229,8 +230,8 @@ bool SelectionController::showPointer(const QString& pointer, const QString& mes
             selectNode();
         }
         break;
-    case TargetKind::Material:
-    case TargetKind::Extension:
+    case scene::TargetKind::Material:
+    case scene::TargetKind::Extension:
         if (t.material >= 0) {
             // A primitive drawn with it is highlighted; the material dock shows it.
             if (t.engine_mesh >= 0) context_.selection().selectMesh(t.engine_mesh, t.node);
@@ -239,8 +240,8 @@ bool SelectionController::showPointer(const QString& pointer, const QString& mes
             what = tr("material %1").arg(t.material);
         }
         break;
-    case TargetKind::Texture:
-    case TargetKind::Image:
+    case scene::TargetKind::Texture:
+    case scene::TargetKind::Image:
         if (t.texture >= 0) {
             context_.selection().selectTexture(t.texture);
             dock = docks_.textures;

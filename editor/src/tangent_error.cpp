@@ -8,18 +8,20 @@
 
 namespace sherpa::editor {
 
-TangentErrors tangent_errors(const Mesh& mesh, std::uint32_t tex_coord) {
+TangentErrors tangent_errors(const scene::Mesh& mesh, std::uint32_t tex_coord) {
     TangentErrors out;
     out.degrees.assign(mesh.vertices.size(), std::numeric_limits<float>::quiet_NaN());
     if (mesh.indices.empty()) return out;
-    const MeshTangentInput input = tangent_input_of(mesh, tex_coord > 1 ? 0 : tex_coord);
+    const scene::MeshTangentInput input =
+        scene::tangent_input_of(mesh, tex_coord > 1 ? 0 : tex_coord);
     std::vector<glm::vec4> regenerated(mesh.indices.size());
-    generate_corner_tangents(input.view(mesh), TangentMethod::MikkTSpace, regenerated);
+    scene::generate_corner_tangents(input.view(mesh), scene::TangentMethod::MikkTSpace,
+                                    regenerated);
     double sum = 0.0;
     std::uint64_t counted = 0;
     for (std::size_t c = 0; c < mesh.indices.size(); ++c) {
         const glm::vec4& authored = mesh.vertices[mesh.indices[c]].tangent;
-        const double angle = tangent_angle_degrees(authored, regenerated[c]);
+        const double angle = scene::tangent_angle_degrees(authored, regenerated[c]);
         if ((authored.w < 0.0f) != (regenerated[c].w < 0.0f)) ++out.flips;
         if (!std::isfinite(angle)) continue;
         float& v = out.degrees[mesh.indices[c]];

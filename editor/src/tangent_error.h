@@ -15,6 +15,6 @@ struct TangentErrors {
 };
 
 // `tex_coord` is the uv set the material's normal texture samples (0 or 1).
-TangentErrors tangent_errors(const Mesh& mesh, std::uint32_t tex_coord);
+TangentErrors tangent_errors(const scene::Mesh& mesh, std::uint32_t tex_coord);
 
 } // namespace sherpa::editor

@@ -21,7 +21,7 @@ void TextureTableModel::setSession(SharedSession session) {
     endResetModel();
 }
 
-const Scene* TextureTableModel::scene() const {
+const scene::Scene* TextureTableModel::scene() const {
     return session_ ? session_->scene.get() : nullptr;
 }
 
@@ -35,7 +35,7 @@ const tex::PreparedTexture* TextureTableModel::preparedRecord(const SceneSession
     if (!set) return nullptr;
     // The first role this texture is prepared in (a texture used as colour and as
     // data has two records; the dock shows one row per glTF texture).
-    for (TextureRole role : {kRoleColor, kRoleLinear, kRoleNormal})
+    for (scene::TextureRole role : {scene::kRoleColor, scene::kRoleLinear, scene::kRoleNormal})
         if (const std::int32_t i = set->find(texture, role); i >= 0)
             return &set->textures[static_cast<std::size_t>(i)];
     return nullptr;
@@ -108,7 +108,7 @@ std::uint64_t TextureTableModel::totalDiskBytes() const {
     if (!scene()) return 0;
     std::set<std::int32_t> images;
     std::uint64_t total = 0;
-    for (const TextureRecord& t : scene()->textures)
+    for (const scene::TextureRecord& t : scene()->textures)
         if (t.image >= 0 && images.insert(t.image).second)
             total += scene()->images[static_cast<std::size_t>(t.image)].byte_size;
     return total;
@@ -125,8 +125,8 @@ int TextureTableModel::columnCount(const QModelIndex& parent) const {
 QVariant TextureTableModel::data(const QModelIndex& index, int role) const {
     if (!index.isValid() || !scene()) return {};
     const auto row = static_cast<std::size_t>(index.row());
-    const TextureRecord& t = scene()->textures[row];
-    const ImageRecord* img =
+    const scene::TextureRecord& t = scene()->textures[row];
+    const scene::ImageRecord* img =
         t.image >= 0 ? &scene()->images[static_cast<std::size_t>(t.image)] : nullptr;
     if (role == Qt::DecorationRole && index.column() == NameColumn && session_ &&
         row < session_->thumbnails.size() && !session_->thumbnails[row].isNull())
@@ -163,7 +163,7 @@ QVariant TextureTableModel::data(const QModelIndex& index, int role) const {
         if (!img || !session_ || static_cast<std::size_t>(t.image) >= session_->image_sizes.size())
             return QStringLiteral("—");
         const QSize s = session_->image_sizes[static_cast<std::size_t>(t.image)];
-        if (image_is_missing(*img))
+        if (scene::image_is_missing(*img))
             return tr("missing: %1").arg(QFileInfo(QString::fromStdString(img->uri)).fileName());
         return s.isEmpty() ? tr("undecodable")
                            : QStringLiteral("%1 × %2").arg(s.width()).arg(s.height());

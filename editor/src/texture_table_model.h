@@ -53,7 +53,7 @@ public:
 private:
     QVariant cacheData(std::size_t row, int column) const; // "—" without a record
 
-    const Scene* scene() const;                      // null without a session
+    const scene::Scene* scene() const;               // null without a session
     const tex::PreparedTextureSet* prepared() const; // null without prepared textures
 
     SharedSession session_;

@@ -144,7 +144,7 @@ void TimelineDock::onAnimationSelected() {
 }
 
 void TimelineDock::onSceneChanged() {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     playback_.setScene(context_.sharedScene());
     // The first animation, paused at its start: what the file shows first.
     const int first = scene && !scene->animations.empty() ? 0 : -1;

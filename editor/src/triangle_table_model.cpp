@@ -13,7 +13,7 @@ void TriangleTableModel::setMesh(MeshRef mesh) {
 }
 
 int TriangleTableModel::rowCount(const QModelIndex& parent) const {
-    const Mesh* m = mesh_.get();
+    const scene::Mesh* m = mesh_.get();
     return parent.isValid() || !m ? 0 : static_cast<int>(m->element_count());
 }
 
@@ -22,12 +22,12 @@ int TriangleTableModel::columnCount(const QModelIndex& parent) const {
 }
 
 QVariant TriangleTableModel::data(const QModelIndex& index, int role) const {
-    const Mesh* m = mesh_.get();
+    const scene::Mesh* m = mesh_.get();
     if (!index.isValid() || !m) return {};
     if (role == Qt::TextAlignmentRole) return int(Qt::AlignRight | Qt::AlignVCenter);
     const bool exact = role == Qt::ToolTipRole || role == format::kExactTextRole;
     if (role != Qt::DisplayRole && !(exact && index.column() == AreaColumn)) return {};
-    const std::size_t per = indices_per_element(m->topology());
+    const std::size_t per = scene::indices_per_element(m->topology());
     const std::size_t t = static_cast<std::size_t>(index.row()) * per;
     switch (index.column()) {
     case IndexColumn:
@@ -38,8 +38,8 @@ QVariant TriangleTableModel::data(const QModelIndex& index, int role) const {
         if (std::size_t(index.column() - V0) >= per) return {};
         return m->indices[t + static_cast<std::size_t>(index.column() - V0)];
     case AreaColumn: {
-        if (m->topology() == Topology::Points) return {};
-        if (m->topology() == Topology::Lines) {
+        if (m->topology() == scene::Topology::Points) return {};
+        if (m->topology() == scene::Topology::Lines) {
             const double length = static_cast<double>(glm::length(
                 m->vertices[m->indices[t + 1]].position - m->vertices[m->indices[t]].position));
             return exact ? format::exact(length) : format::number(length);
@@ -69,8 +69,8 @@ QVariant TriangleTableModel::headerData(int section, Qt::Orientation o, int role
     case V2:
         return tr("vertex 2");
     case AreaColumn: {
-        const Mesh* m = mesh_.get();
-        return m && m->topology() == Topology::Lines ? tr("length") : tr("area");
+        const scene::Mesh* m = mesh_.get();
+        return m && m->topology() == scene::Topology::Lines ? tr("length") : tr("area");
     }
     default:
         return {};

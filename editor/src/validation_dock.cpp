@@ -79,22 +79,22 @@ void ValidationDock::setFilter(const QString& text) {
 }
 
 void ValidationDock::updateSummary() {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     if (!scene) {
         summary_->setText(tr("No scene."));
         return;
     }
-    const ValidationReport& r = scene->validation;
+    const scene::ValidationReport& r = scene->validation;
     if (r.messages.empty()) {
         summary_->setText(tr("No messages: nothing to report about this file."));
         return;
     }
     QString text = tr("%1 errors, %2 warnings, %3 information, %4 hints. Click a message to "
                       "select what it names.")
-                       .arg(r.count(Severity::Error))
-                       .arg(r.count(Severity::Warning))
-                       .arg(r.count(Severity::Information))
-                       .arg(r.count(Severity::Hint));
+                       .arg(r.count(scene::Severity::Error))
+                       .arg(r.count(scene::Severity::Warning))
+                       .arg(r.count(scene::Severity::Information))
+                       .arg(r.count(scene::Severity::Hint));
     if (r.truncated) text += QLatin1Char(' ') + tr("The list is truncated.");
     summary_->setText(text);
 }

@@ -27,8 +27,8 @@ ValidationModel::ValidationModel(const EditorContext& context, QObject* parent)
     rebuild();
 }
 
-const std::vector<ValidationMessage>* ValidationModel::messages() const {
-    const Scene* scene = context_.scene();
+const std::vector<scene::ValidationMessage>* ValidationModel::messages() const {
+    const scene::Scene* scene = context_.scene();
     return scene ? &scene->validation.messages : nullptr;
 }
 
@@ -92,7 +92,7 @@ int ValidationModel::columnCount(const QModelIndex&) const {
 }
 
 QString ValidationModel::display(const Item& it) const {
-    const ValidationMessage& m = (*messages())[static_cast<std::size_t>(it.message)];
+    const scene::ValidationMessage& m = (*messages())[static_cast<std::size_t>(it.message)];
     switch (it.level) {
     case Level::Severity: {
         std::size_t n = 0;
@@ -120,7 +120,7 @@ QString ValidationModel::display(const Item& it) const {
 QVariant ValidationModel::data(const QModelIndex& index, int role) const {
     if (!index.isValid() || !messages()) return {};
     const Item& it = items_[index.internalId()];
-    const ValidationMessage& m = (*messages())[static_cast<std::size_t>(it.message)];
+    const scene::ValidationMessage& m = (*messages())[static_cast<std::size_t>(it.message)];
     switch (role) {
     case Qt::DisplayRole:
         return display(it);

@@ -53,7 +53,7 @@ private:
         std::vector<int> children;
     };
     void rebuild();
-    const std::vector<ValidationMessage>* messages() const;
+    const std::vector<scene::ValidationMessage>* messages() const;
     QString display(const Item& item) const;
 
     const EditorContext& context_;

@@ -26,7 +26,7 @@ void VariantMenu::rebuild() {
     }
     clear();
     variant_ = -1; // a loaded scene shows its default materials
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     const auto& names = scene ? scene->variants.names : std::vector<std::string>{};
     for (int v = -1; v < static_cast<int>(names.size()); ++v) {
         QAction* a = addAction(v < 0 ? QString() : QString::fromStdString(names[std::size_t(v)]));
@@ -42,7 +42,7 @@ void VariantMenu::rebuild() {
 }
 
 void VariantMenu::choose(int variant) {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     if (!scene || variant < -1 || variant >= static_cast<int>(scene->variants.names.size()) ||
         variant == variant_)
         return;

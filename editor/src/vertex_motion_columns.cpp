@@ -21,17 +21,17 @@ std::array<std::uint32_t, 3> bits(const glm::vec3& p) {
 }
 } // namespace
 
-void VertexMotionColumns::set(const Scene* scene, int mesh) {
+void VertexMotionColumns::set(const scene::Scene* scene, int mesh) {
     motion_ = nullptr;
     columns_.clear();
     source_.clear();
     if (!scene || mesh < 0 || static_cast<std::size_t>(mesh) >= scene->meshes.size()) return;
-    for (const PrimitiveInfo& p : scene->primitives)
+    for (const scene::PrimitiveInfo& p : scene->primitives)
         if (p.engine_mesh == mesh && p.motion >= 0 &&
             static_cast<std::size_t>(p.motion) < scene->motions.size())
             motion_ = &scene->motions[static_cast<std::size_t>(p.motion)];
     if (!motion_) return;
-    const Mesh& m = scene->meshes[static_cast<std::size_t>(mesh)];
+    const scene::Mesh& m = scene->meshes[static_cast<std::size_t>(mesh)];
     const std::vector<glm::vec3>& base = motion_->base_positions;
 
     // Engine vertex -> file vertex. Unsplit vertices keep their file index; copies
@@ -56,7 +56,7 @@ void VertexMotionColumns::set(const Scene* scene, int mesh) {
         columns_.push_back({What::Weights});
     }
     for (std::uint32_t t = 0; t < motion_->targets.size(); ++t) {
-        const MorphTarget& target = motion_->targets[t];
+        const scene::MorphTarget& target = motion_->targets[t];
         if (!target.position.empty()) columns_.push_back({What::DeltaPosition, t});
         if (!target.normal.empty()) columns_.push_back({What::DeltaNormal, t});
         if (!target.tangent.empty()) columns_.push_back({What::DeltaTangent, t});
@@ -88,7 +88,7 @@ QString VertexMotionColumns::header(int column) const {
 }
 
 const std::vector<glm::vec3>* VertexMotionColumns::delta(const Column& c) const {
-    const MorphTarget& t = motion_->targets[c.target];
+    const scene::MorphTarget& t = motion_->targets[c.target];
     return c.what == What::DeltaPosition ? &t.position
            : c.what == What::DeltaNormal ? &t.normal
                                          : &t.tangent;

@@ -18,7 +18,7 @@ namespace sherpa::editor {
 class VertexMotionColumns {
 public:
     // `mesh`: index into scene->meshes; no columns for static meshes or a null scene.
-    void set(const Scene* scene, int mesh);
+    void set(const scene::Scene* scene, int mesh);
     int count() const { return static_cast<int>(columns_.size()); }
     QString header(int column) const;
     QString text(std::size_t vertex, int column) const;
@@ -35,7 +35,7 @@ private:
     };
     const std::vector<glm::vec3>* delta(const Column& c) const;
 
-    const PrimitiveMotion* motion_ = nullptr;
+    const scene::PrimitiveMotion* motion_ = nullptr;
     std::vector<Column> columns_;
     std::vector<std::uint32_t> source_; // engine vertex -> file vertex (kNone: no match)
 };

@@ -30,7 +30,7 @@ void VertexTableModel::setTangentErrors(std::shared_ptr<const TangentErrors> err
 }
 
 int VertexTableModel::rowCount(const QModelIndex& parent) const {
-    const Mesh* m = mesh_.get();
+    const scene::Mesh* m = mesh_.get();
     return parent.isValid() || !m ? 0 : static_cast<int>(m->vertices.size());
 }
 
@@ -48,8 +48,8 @@ int VertexTableModel::rowOfVertex(int vertex) const {
 }
 
 double VertexTableModel::value(std::size_t v, int column) const {
-    const Mesh& m = *mesh_.get();
-    const Vertex& x = m.vertices[v];
+    const scene::Mesh& m = *mesh_.get();
+    const scene::Vertex& x = m.vertices[v];
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
     switch (column) {
     case IndexColumn:

@@ -29,12 +29,13 @@ namespace sherpa::editor {
 
 namespace {
 // The Culling › Method menu's order (main_window_menus.cpp).
-constexpr std::array kMenuMethods{CullMethod::Sphere, CullMethod::PVertex, CullMethod::Exact};
+constexpr std::array kMenuMethods{scene::CullMethod::Sphere, scene::CullMethod::PVertex,
+                                  scene::CullMethod::Exact};
 
 // The Lab's name of the culling the viewport does (lab/families.h): the CPU tests by
 // their CullMethod name, the GPU path ("gpu") with its p-vertex test.
-QString culling_in_use(bool gpu, CullMethod method) {
-    if (gpu) return method == CullMethod::PVertex ? QStringLiteral("gpu") : QString();
+QString culling_in_use(bool gpu, scene::CullMethod method) {
+    if (gpu) return method == scene::CullMethod::PVertex ? QStringLiteral("gpu") : QString();
     const std::string_view name = to_string(method);
     return QString::fromLatin1(name.data(), qsizetype(name.size()));
 }
@@ -202,7 +203,7 @@ void ViewController::connectLab() {
             return shadow_pcf_taps_ == 0
                        ? QString()
                        : QString::fromStdString(lab::shadow_method_name(
-                             kDefaultShadowResolution, shadow_cascades_, shadow_pcf_taps_));
+                             scene::kDefaultShadowResolution, shadow_cascades_, shadow_pcf_taps_));
         if (family != QLatin1String("culling")) return QString(); // no switch in the viewport
         return culling_in_use(a_.gpu_path->isChecked(), culling_.method());
     });
@@ -219,7 +220,7 @@ void ViewController::connectLab() {
                            "%3x%3 texels (fixed when its renderer is made), not %4")
                             .arg(cascades)
                             .arg(taps)
-                            .arg(kDefaultShadowResolution)
+                            .arg(scene::kDefaultShadowResolution)
                             .arg(resolution),
                         10000);
                     viewport_.scheduleFrame();
@@ -246,11 +247,11 @@ void ViewController::frameAll() {
 }
 
 void ViewController::frameSelection() {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     const int node = context_.selection().current().node;
     if (!scene || node < 0) return;
     core::Aabb box;
-    for (const MeshInstance& inst : scene->instances)
+    for (const scene::MeshInstance& inst : scene->instances)
         if (static_cast<int>(inst.node_id) == node) box.expand(inst.world_bounds);
     if (!box.valid()) box.expand(glm::vec3(scene->node_world[static_cast<std::size_t>(node)][3]));
     viewport_.camera().frame(box);
@@ -258,7 +259,7 @@ void ViewController::frameSelection() {
 }
 
 void ViewController::jumpToCamera(int node) {
-    const Scene* scene = context_.scene();
+    const scene::Scene* scene = context_.scene();
     if (!scene) return;
     viewport_.input().setAutoFrame(false);
     for (std::size_t i = 0; i < scene->placed_cameras.size(); ++i)
@@ -271,13 +272,13 @@ void ViewController::jumpToCamera(int node) {
 
 void ViewController::fillCamerasMenu(QMenu& menu) {
     menu.clear();
-    const Scene* s = context_.scene();
+    const scene::Scene* s = context_.scene();
     if (!s || s->placed_cameras.empty()) {
         menu.addAction(tr("(the scene has no cameras)"))->setEnabled(false);
         return;
     }
     for (std::size_t i = 0; i < s->placed_cameras.size(); ++i) {
-        const Camera& c = s->cameras[s->placed_cameras[i].camera];
+        const scene::Camera& c = s->cameras[s->placed_cameras[i].camera];
         const QString name =
             c.name.empty() ? tr("Camera %1").arg(i) : QString::fromStdString(c.name);
         const int node = static_cast<int>(s->placed_cameras[i].node);

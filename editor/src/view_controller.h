@@ -82,7 +82,7 @@ private:
     std::uint32_t view_ = 0;                                      // render::DebugView::Lit
     std::uint32_t overlays_ = 0; // render::Overlay bits of the Overlays menu
     // The Lab's shadows family applied; 0 taps: the device's default.
-    std::uint32_t shadow_cascades_ = kDefaultShadowCascades, shadow_pcf_taps_ = 0;
+    std::uint32_t shadow_cascades_ = scene::kDefaultShadowCascades, shadow_pcf_taps_ = 0;
 };
 
 } // namespace sherpa::editor

@@ -16,7 +16,7 @@ ViewportReadbacks::ViewportReadbacks(gpu::Context& context, render::Renderer& re
 ViewportReadbacks::~ViewportReadbacks() = default;
 
 std::optional<GpuMaterialReadback> ViewportReadbacks::readMaterial(int material) {
-    const Scene* scene = scene_.scene();
+    const scene::Scene* scene = scene_.scene();
     if (!scene) return std::nullopt;
     std::optional<render::MaterialReadback> r = render::read_material(renderer_, *scene, material);
     if (!r) return std::nullopt;
@@ -24,9 +24,9 @@ std::optional<GpuMaterialReadback> ViewportReadbacks::readMaterial(int material)
 }
 
 std::optional<GpuCullResult>
-ViewportReadbacks::checkGpuCulling(const Frustum& frustum, CullMethod method,
+ViewportReadbacks::checkGpuCulling(const scene::Frustum& frustum, scene::CullMethod method,
                                    const std::vector<std::uint8_t>& cpu_visible) {
-    const Scene* scene = scene_.scene();
+    const scene::Scene* scene = scene_.scene();
     if (!scene || scene->instances.empty()) return std::nullopt;
     if (!culler_ || &culler_->scene() != scene)
         culler_ = std::make_unique<render::GpuCullChecker>(context_, renderer_.resources(), *scene);

@@ -41,7 +41,8 @@ public:
     // Runs the renderer's GPU culling shader once for `frustum` over every instance
     // of the scene and compares its visible set with `cpu_visible` (per scene
     // instance); nullopt without a scene or instances.
-    std::optional<GpuCullResult> checkGpuCulling(const Frustum& frustum, CullMethod method,
+    std::optional<GpuCullResult> checkGpuCulling(const scene::Frustum& frustum,
+                                                 scene::CullMethod method,
                                                  const std::vector<std::uint8_t>& cpu_visible);
     // Frees what was built for the scene on the GPU (its culling check), before another
     // scene replaces it.

@@ -53,7 +53,7 @@ struct PresentOutcome {
     bool cull_passes = false; // the renderer's culling passes are known
     // The last presented frame's culling passes from the renderer's history (camera,
     // then each cascade); `cached_shadows`: the cascades were reused, not drawn.
-    std::vector<CullStats> passes;
+    std::vector<scene::CullStats> passes;
     bool cached_shadows = false;
     // Not drawn: what the ray tracer refused (a view without a ray formula, a posed
     // frame...); empty when it drew.

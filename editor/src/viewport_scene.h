@@ -11,9 +11,9 @@
 
 #include "scene_session.h"
 
-namespace sherpa {
+namespace sherpa::scene {
 struct Scene;
-}
+} // namespace sherpa::scene
 
 namespace sherpa::render {
 struct AccelerationStats;
@@ -57,7 +57,7 @@ public:
 
     // The session on the GPU (null: none) and its scene.
     const SharedSession& session() const { return session_; }
-    const Scene* scene() const { return session_ ? session_->scene.get() : nullptr; }
+    const scene::Scene* scene() const { return session_ ? session_->scene.get() : nullptr; }
     // Every stream uploaded (a view asked for more than the materials read).
     bool allStreams() const { return all_streams_; }
     render::MissingTextures missingTextures() const { return missing_; }

@@ -30,7 +30,7 @@ void CullingMonitorTests::cullingMonitorFreezes() {
     QCOMPARE(monitor.history().latest()->cpu.total, total);
     QCOMPARE(monitor.history().latest()->cpu.visible, total); // framed: everything in view
     monitor.setFrozen(true);
-    CameraSpec away = cam.pose().spec();
+    scene::CameraSpec away = cam.pose().spec();
     away.target = away.eye + (away.eye - cam.pose().target); // look away from the scene
     monitor.update(away);
     QCOMPARE(monitor.history().latest()->cpu.visible,
@@ -66,7 +66,7 @@ void CullingMonitorTests::cullingMonitorCoalescesExpensivePasses() {
     monitor.pacing().setCoalesceAboveMs(0.0);
     samples = monitor.history().size();
     updated.clear();
-    CameraSpec away = cam.pose().spec();
+    scene::CameraSpec away = cam.pose().spec();
     for (int i = 0; i < 20; ++i) {
         cam.orbit(10.0f, 0.0f);
         monitor.update(cam.pose().spec());

@@ -36,7 +36,7 @@ LoadOutcome show_sweep_material(MaterialFieldsModel& fields, const char* name, i
                               QLatin1String(name) + QStringLiteral(".gltf"));
     if (out.session)
         fields.setMaterial(out.session, index,
-                           to_gpu_material(out.session->scene->materials.at(index)),
+                           scene::to_gpu_material(out.session->scene->materials.at(index)),
                            MaterialFieldsModel::Source::Cpu);
     return out;
 }
@@ -61,7 +61,7 @@ void DockContentTests::instancedNodeShowsItsRowsInTheTreeAndTheTable() {
           QStringLiteral(SHERPA_GLTF_COMPRESS_CACHE "/corpus/2CylinderEngine.instanced.glb")}) {
         const LoadOutcome out = SceneLoadJob::loadNow(file);
         QVERIFY2(out.session, qPrintable(out.error));
-        const Scene& s = *out.session->scene;
+        const scene::Scene& s = *out.session->scene;
         EditorContext context;
         SceneTreeModel tree(context);
         MeshDock dock(context);
@@ -84,7 +84,7 @@ void DockContentTests::instancedNodeShowsItsRowsInTheTreeAndTheTable() {
                          qPrintable(detail));
             context.selection().selectNode(int(n));
             QCOMPARE(dock.instances()->rowCount(), int(rows->rows.size()));
-            const InstanceRow& last = rows->rows.back();
+            const scene::InstanceRow& last = rows->rows.back();
             const int r = dock.instances()->rowCount() - 1;
             QCOMPARE(display(*dock.instances(), r, InstanceTableModel::RowColumn),
                      QString::number(last.file_row));
@@ -107,7 +107,7 @@ void DockContentTests::docksShowCompressionContainerAndSpecGloss() {
     const LoadOutcome draco = SceneLoadJob::loadNow(
         QStringLiteral(SHERPA_GLTF_COMPRESS_CACHE "/corpus/DamagedHelmet.draco.glb"));
     QVERIFY2(draco.session, qPrintable(draco.error));
-    const PrimitiveInfo& p = draco.session->scene->primitives.at(0);
+    const scene::PrimitiveInfo& p = draco.session->scene->primitives.at(0);
     QVERIFY(p.compression);
     const QString text = MeshDock::compressionText(*draco.session->scene, int(p.engine_mesh));
     QVERIFY2(text.contains(QStringLiteral("KHR_draco_mesh_compression ") +
@@ -158,10 +158,10 @@ void DockContentTests::docksShowCompressionContainerAndSpecGloss() {
     QCOMPARE(display(textures, 0, TextureTableModel::ContainerColumn),
              QStringLiteral("ktx2-uastc · zstd"));
 
-    const MaterialInstance& m = box.session->scene->materials.at(0);
+    const scene::MaterialInstance& m = box.session->scene->materials.at(0);
     QVERIFY(m.specular_glossiness);
     MaterialFieldsModel fields;
-    fields.setMaterial(box.session, 0, to_gpu_material(m), MaterialFieldsModel::Source::Cpu);
+    fields.setMaterial(box.session, 0, scene::to_gpu_material(m), MaterialFieldsModel::Source::Cpu);
     QCOMPARE(fields.rowCount(), 14 + 3); // the GPUMaterialData fields, then the extension's
     QCOMPARE(display(fields, 0, MaterialFieldsModel::PropertyColumn),
              QStringLiteral("KHR_materials_pbrSpecularGlossiness.diffuseFactor"));

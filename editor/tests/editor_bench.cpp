@@ -54,8 +54,8 @@ void bench_switch() {
 }
 
 void bench_scroll() {
-    auto scene = std::make_shared<Scene>();
-    Mesh mesh;
+    auto scene = std::make_shared<scene::Scene>();
+    scene::Mesh mesh;
     mesh.vertices.resize(1'000'000);
     for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
         mesh.vertices[i].position = {static_cast<float>(i) * 0.001f,

@@ -305,9 +305,9 @@ void LabTests::clickingAPointAppliesACullingMethod() {
                 "sphere")
             sphere = scatter;
     QVERIFY(sphere);
-    QVERIFY(test::culling_monitor(*window_).method() != CullMethod::Sphere);
+    QVERIFY(test::culling_monitor(*window_).method() != scene::CullMethod::Sphere);
     Q_EMIT sphere->clicked(sphere->at(0));
-    QCOMPARE(test::culling_monitor(*window_).method(), CullMethod::Sphere);
+    QCOMPARE(test::culling_monitor(*window_).method(), scene::CullMethod::Sphere);
     // The chart rings the method now in use.
     bool ringed = false;
     for (QAbstractSeries* s : lab_chart(dock())->series())

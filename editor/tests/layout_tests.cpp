@@ -286,7 +286,7 @@ void LayoutTests::viewportModesAreNotCutOff() {
     std::unique_ptr<MainWindow> w = launch();
     QVERIFY(w);
     // The longest side-B label: this file with tangents by another method.
-    w->comparison().compareWithTangents(TangentMethod::MikkTSpaceWelded);
+    w->comparison().compareWithTangents(scene::TangentMethod::MikkTSpaceWelded);
     QTRY_VERIFY_WITH_TIMEOUT(test::compare_session(*w) != nullptr, 30000);
     w->comparison().state().setMode(ViewportMode::Difference);
     // Numbers of the latest completed frame: a few frames on.
@@ -351,7 +351,7 @@ void LayoutTests::sideBSaysWhenItShowsAndStartsAComparison() {
     QCOMPARE(state.comparison().mode, ViewportMode::Difference);
     // A long side-B name is shortened on the button, whole in its tooltip.
     state.setOtherFile(QStringLiteral("AVeryLongExportedFileNameFromTheExporter_final_v7.gltf"),
-                       TangentMethod::Lengyel);
+                       scene::TangentMethod::Lengyel);
     state.setSide(SideB::OtherFile);
     QVERIFY(side->fontMetrics().horizontalAdvance(side->text()) <= 230);
     QVERIFY(side->toolTip().contains(QStringLiteral("final_v7.gltf")));

@@ -106,7 +106,7 @@ void LoadingTests::progressReportsEveryStage() {
 
 void LoadingTests::cancelDropsTheLoadAndLeaksNothing() {
     QVERIFY(load(*window_, QStringLiteral("builtin:default")));
-    const Scene* before = window_->context().scene();
+    const scene::Scene* before = window_->context().scene();
     // Per-frame buffers (overlay lines, culled ids) are made on first use, per frame
     // in flight: draw a few frames first.
     for (int f = 0; hasGpu() && f < 3; ++f) QVERIFY(test::next_frame(*window_));

@@ -34,28 +34,28 @@ QString display(const QAbstractItemModel& m, int row, int column, const QModelIn
 }
 
 // Checks every node of the displayed scene against its tree item, recursively.
-void check_node(const Scene& s, const SceneTreeModel& model, std::uint32_t n) {
+void check_node(const scene::Scene& s, const SceneTreeModel& model, std::uint32_t n) {
     const QModelIndex item = model.indexOfNode(static_cast<int>(n));
     QVERIFY2(item.isValid(), qPrintable(QStringLiteral("node %1 has no item").arg(n)));
-    const Node& node = s.nodes[n];
+    const scene::Node& node = s.nodes[n];
     const QString name =
         node.name.empty() ? QStringLiteral("Node %1").arg(n) : QString::fromStdString(node.name);
     QCOMPARE(item.data().toString(), name);
     QCOMPARE(item.data(Qt::CheckStateRole).toInt(), static_cast<int>(Qt::Checked));
     int expected = static_cast<int>(node.children.size()) + (node.light >= 0) + (node.camera >= 0);
     if (node.mesh >= 0) {
-        for (const PrimitiveInfo& p : s.primitives)
+        for (const scene::PrimitiveInfo& p : s.primitives)
             expected += p.mesh == static_cast<std::uint32_t>(node.mesh);
     }
     QCOMPARE(model.rowCount(item), expected);
     for (std::uint32_t c : node.children) check_node(s, model, c);
 }
 
-void check_vertex_rows(const Mesh& mesh, const VertexTableModel& model) {
+void check_vertex_rows(const scene::Mesh& mesh, const VertexTableModel& model) {
     QCOMPARE(model.rowCount(), static_cast<int>(mesh.vertices.size()));
     const std::size_t n = mesh.vertices.size();
     for (std::size_t v : {std::size_t{0}, n / 2, n - 1}) {
-        const Vertex& x = mesh.vertices[v];
+        const scene::Vertex& x = mesh.vertices[v];
         const int row = static_cast<int>(v);
         QCOMPARE(display(model, row, VertexTableModel::IndexColumn), QString::number(v));
         for (int c = 0; c < 3; ++c) {
@@ -106,7 +106,7 @@ void ModelTests::everyAssetMatchesTheEngine() {
     QFETCH(QString, name);
     const LoadOutcome out = SceneLoadJob::loadNow(test::asset(name));
     QVERIFY2(out.session, qPrintable(out.error));
-    const Scene& s = *out.session->scene;
+    const scene::Scene& s = *out.session->scene;
     EditorContext context;
     SceneTreeModel tree(context);
     context.setSession(out.session);
@@ -122,13 +122,13 @@ void ModelTests::everyAssetMatchesTheEngine() {
     VertexTableModel vertices;
     TriangleTableModel triangles;
     for (std::size_t m = 0; m < s.meshes.size(); ++m) {
-        const Mesh& mesh = s.meshes[m];
+        const scene::Mesh& mesh = s.meshes[m];
         const MeshRef ref{out.session->scene, static_cast<int>(m)};
         attributes.setMesh(ref);
         vertices.setMesh(ref);
         triangles.setMesh(ref);
-        QCOMPARE(attributes.rowCount(), static_cast<int>(kVertexAttributeCount) + 1);
-        for (std::size_t a = 0; a < kVertexAttributeCount; ++a) {
+        QCOMPARE(attributes.rowCount(), static_cast<int>(scene::kVertexAttributeCount) + 1);
+        for (std::size_t a = 0; a < scene::kVertexAttributeCount; ++a) {
             const int row = static_cast<int>(a);
             QCOMPARE(display(attributes, row, AttributeModel::ProvenanceColumn),
                      format::provenance(mesh.provenance[a]));
@@ -136,8 +136,9 @@ void ModelTests::everyAssetMatchesTheEngine() {
                 QCOMPARE(display(attributes, row, AttributeModel::CountColumn),
                          QString::number(mesh.sources[a]->count));
             const std::uint64_t gpu = attributes.gpuBytes(row);
-            QVERIFY(gpu == 0 || gpu == std::uint64_t{stream_stride(kAllVertexAttributes[a])} *
-                                           mesh.vertices.size());
+            QVERIFY(gpu == 0 ||
+                    gpu == std::uint64_t{stream_stride(scene::kAllVertexAttributes[a])} *
+                               mesh.vertices.size());
         }
         QCOMPARE(attributes.gpuBytes(AttributeModel::kIndexRow), mesh.indices.size() * 4);
         if (!mesh.vertices.empty()) check_vertex_rows(mesh, vertices);
@@ -167,9 +168,9 @@ void ModelTests::everyAssetMatchesTheEngine() {
 void ModelTests::materialFieldsFollowTheGpuLayout() {
     const LoadOutcome out = SceneLoadJob::loadNow(test::asset(QStringLiteral("DamagedHelmet")));
     QVERIFY(out.session);
-    const MaterialInstance& m = out.session->scene->materials[0];
+    const scene::MaterialInstance& m = out.session->scene->materials[0];
     MaterialFieldsModel model;
-    model.setMaterial(out.session, 0, to_gpu_material(m), MaterialFieldsModel::Source::Cpu);
+    model.setMaterial(out.session, 0, scene::to_gpu_material(m), MaterialFieldsModel::Source::Cpu);
     QCOMPARE(model.rowCount(), 14);
     // Offsets strictly increase and end at 76 (80-byte std430 record).
     int last = -1;
@@ -188,7 +189,7 @@ void ModelTests::materialFieldsFollowTheGpuLayout() {
     QVERIFY(
         model.data(model.index(6, MaterialFieldsModel::ChainColumn), Qt::DecorationRole).isValid());
     // A GPU record maps bindless slots back through the table it comes with.
-    GPUMaterialData gpu = to_gpu_material(m);
+    scene::GPUMaterialData gpu = scene::to_gpu_material(m);
     gpu.base_color_tex = 7;
     std::vector<int> table(8, -1);
     table[7] = 3;
@@ -199,12 +200,12 @@ void ModelTests::materialFieldsFollowTheGpuLayout() {
 void ModelTests::materialChainSaysTheCacheState() {
     const LoadOutcome out = SceneLoadJob::loadNow(test::asset(QStringLiteral("BoxTextured")));
     QVERIFY(out.session);
-    const Scene& scene = *out.session->scene;
+    const scene::Scene& scene = *out.session->scene;
     const int texture = scene.materials[0].base_color.texture;
     QVERIFY(texture >= 0);
     MaterialFieldsModel model;
     const auto chain = [&](const SharedSession& session) {
-        model.setMaterial(session, 0, to_gpu_material(scene.materials[0]),
+        model.setMaterial(session, 0, scene::to_gpu_material(scene.materials[0]),
                           MaterialFieldsModel::Source::Cpu);
         return display(model, 6, MaterialFieldsModel::ChainColumn); // base_color_tex
     };
@@ -224,8 +225,8 @@ void ModelTests::materialChainSaysTheCacheState() {
 }
 
 void ModelTests::millionVertexTableSortsByPermutation() {
-    auto scene = std::make_shared<Scene>();
-    Mesh mesh;
+    auto scene = std::make_shared<scene::Scene>();
+    scene::Mesh mesh;
     constexpr std::size_t kSide = 1000;
     mesh.vertices.resize(kSide * kSide);
     for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
@@ -253,8 +254,8 @@ void ModelTests::generatedTangentsAgreeWithRegeneration() {
     // regenerating them must agree to float precision everywhere.
     const LoadOutcome out = SceneLoadJob::loadNow(test::asset(QStringLiteral("DamagedHelmet")));
     QVERIFY(out.session);
-    const Mesh& mesh = out.session->scene->meshes[0];
-    QCOMPARE(mesh.provenance_of(VertexAttribute::Tangent), Provenance::Generated);
+    const scene::Mesh& mesh = out.session->scene->meshes[0];
+    QCOMPARE(mesh.provenance_of(scene::VertexAttribute::Tangent), scene::Provenance::Generated);
     const TangentErrors e = tangent_errors(mesh, 0);
     QCOMPARE(e.degrees.size(), mesh.vertices.size());
     QVERIFY2(e.max < 1e-2, qPrintable(QString::number(e.max)));
@@ -283,7 +284,7 @@ void ModelTests::frameKeepsTheBoxInView() {
         QVERIFY(std::abs(clip.x / clip.w) <= 1.0001f);
         QVERIFY(std::abs(clip.y / clip.w) <= 1.0001f);
     }
-    CameraSpec spec;
+    scene::CameraSpec spec;
     std::string error;
     QVERIFY2(parse_camera_spec(cam.pose().toString(), spec, error), error.c_str());
 }
@@ -291,7 +292,7 @@ void ModelTests::frameKeepsTheBoxInView() {
 void ModelTests::pickHitsTheInstanceUnderTheRay() {
     const LoadOutcome out = SceneLoadJob::loadNow(QStringLiteral("builtin:default"));
     QVERIFY(out.session);
-    const Scene& s = *out.session->scene;
+    const scene::Scene& s = *out.session->scene;
     OrbitCamera cam;
     cam.frame(s.bounds);
     // Aim at the centre of a solid instance from outside the scene: it (or something in
@@ -316,25 +317,25 @@ void ModelTests::pickHitsTheInstanceUnderTheRay() {
 // A line strip along x and a point above it: rays passing within the pick cone hit
 // them (segment / point index in `triangle`), rays further off do not.
 void ModelTests::pickHitsLinesAndPointsWithinACone() {
-    Scene s;
-    auto add = [&](PrimitiveMode mode, std::vector<glm::vec3> positions,
+    scene::Scene s;
+    auto add = [&](scene::PrimitiveMode mode, std::vector<glm::vec3> positions,
                    std::vector<std::uint32_t> indices) {
-        Mesh m;
+        scene::Mesh m;
         m.source_mode = mode;
         for (glm::vec3 p : positions) {
-            m.vertices.push_back(Vertex{});
+            m.vertices.push_back(scene::Vertex{});
             m.vertices.back().position = p;
             m.local_bounds.expand(p);
         }
         m.indices = std::move(indices);
-        MeshInstance inst;
+        scene::MeshInstance inst;
         inst.mesh_id = static_cast<std::uint32_t>(s.meshes.size());
         inst.world_bounds = m.local_bounds;
         s.meshes.push_back(std::move(m));
         s.instances.push_back(inst);
     };
-    add(PrimitiveMode::LineStrip, {{-1, 0, 0}, {0, 0, 0}, {1, 0, 0}}, {0, 1, 1, 2});
-    add(PrimitiveMode::Points, {{0, 2, 0}}, {0});
+    add(scene::PrimitiveMode::LineStrip, {{-1, 0, 0}, {0, 0, 0}, {1, 0, 0}}, {0, 1, 1, 2});
+    add(scene::PrimitiveMode::Points, {{0, 2, 0}}, {0});
     const glm::vec3 down(0, 0, -1);
     auto all = [](std::size_t) { return true; };
     const PickHit line = pick(s, {0.5f, 0.02f, 5.0f}, down, all);
@@ -348,7 +349,7 @@ void ModelTests::pickHitsLinesAndPointsWithinACone() {
     QVERIFY(!pick(s, {0.3f, 2.0f, 5.0f}, down, all));
     // The mesh dock's element table lists them as what they are: segments (two
     // vertices, a length) and points (one vertex, no area).
-    auto shared = std::make_shared<const Scene>(std::move(s));
+    auto shared = std::make_shared<const scene::Scene>(std::move(s));
     TriangleTableModel elements;
     elements.setMesh(MeshRef{shared, 0});
     QCOMPARE(elements.rowCount(), 2);
@@ -451,7 +452,7 @@ void ModelTests::framePacingReducesMovingFramesOnly() {
     QCOMPARE(pacing.again()->frame.request.camera.eye, b.frame.request.camera.eye);
     // A new pose is motion too.
     FrameOrder posed = b;
-    posed.frame.request.pose = std::make_shared<const Pose>();
+    posed.frame.request.pose = std::make_shared<const scene::Pose>();
     QVERIFY(!pacing.still(posed));
     // Scaling off: every frame full size.
     pacing.setOptions({.interactiveScaling = false});

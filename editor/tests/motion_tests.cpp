@@ -30,10 +30,10 @@ using namespace sherpa::editor;
 namespace {
 
 // `name` loaded into `context` (the engine's loader: no textures needed here).
-std::shared_ptr<const Scene> load_into(EditorContext& context, const QString& name) {
-    LoadResult r = load_scene(test::asset(name).toStdString());
+std::shared_ptr<const scene::Scene> load_into(EditorContext& context, const QString& name) {
+    scene::LoadResult r = scene::load_scene(test::asset(name).toStdString());
     if (!r) return nullptr;
-    std::shared_ptr<const Scene> scene(std::move(r.scene));
+    std::shared_ptr<const scene::Scene> scene(std::move(r.scene));
     auto session = std::make_shared<SceneSession>();
     session->spec = test::asset(name);
     session->scene = scene;
@@ -93,7 +93,7 @@ void MotionTests::sceneTreeShowsSkinsJointsAndAnimations() {
     }
     QCOMPARE(cell(tree.indexOfNode(0), SceneTreeModel::TypeColumn), QStringLiteral("node"));
 
-    const Animation& anim = scene->animations[0];
+    const scene::Animation& anim = scene->animations[0];
     const QModelIndex a = tree.index(scenes + 1, 0);
     QCOMPARE(cell(a, SceneTreeModel::TypeColumn), QStringLiteral("animation"));
     QCOMPARE(cell(a, SceneTreeModel::DetailColumn),
@@ -128,8 +128,8 @@ void MotionTests::vertexTableHasJointsWeightsAndMorphDeltas() {
     QVERIFY(rigged);
     VertexTableModel table;
     QCOMPARE(table.columnCount(), static_cast<int>(VertexTableModel::ColumnCount));
-    const PrimitiveInfo* skinned = nullptr;
-    for (const PrimitiveInfo& p : rigged->primitives)
+    const scene::PrimitiveInfo* skinned = nullptr;
+    for (const scene::PrimitiveInfo& p : rigged->primitives)
         if (p.motion >= 0) skinned = &p;
     QVERIFY(skinned);
     table.setMesh({rigged, skinned->engine_mesh});
@@ -140,8 +140,8 @@ void MotionTests::vertexTableHasJointsWeightsAndMorphDeltas() {
     QCOMPARE(table.headerData(VertexTableModel::ColumnCount + 1, Qt::Horizontal, Qt::DisplayRole)
                  .toString(),
              QStringLiteral("WEIGHTS"));
-    const PrimitiveMotion& motion = rigged->motions[std::size_t(skinned->motion)];
-    const Mesh& mesh = rigged->meshes[std::size_t(skinned->engine_mesh)];
+    const scene::PrimitiveMotion& motion = rigged->motions[std::size_t(skinned->motion)];
+    const scene::Mesh& mesh = rigged->meshes[std::size_t(skinned->engine_mesh)];
     for (int row : {0, table.rowCount() / 2, table.rowCount() - 1}) {
         const auto v = static_cast<std::size_t>(table.vertexOfRow(row));
         const std::int64_t f = table.motionColumns().sourceVertex(v);
@@ -168,9 +168,9 @@ void MotionTests::vertexTableHasJointsWeightsAndMorphDeltas() {
     // Morph deltas: one column per target attribute.
     auto morph = load_into(context, QStringLiteral("SimpleMorph"));
     QVERIFY(morph);
-    const PrimitiveInfo& p = morph->primitives[0];
+    const scene::PrimitiveInfo& p = morph->primitives[0];
     QVERIFY(p.motion >= 0);
-    const PrimitiveMotion& m = morph->motions[std::size_t(p.motion)];
+    const scene::PrimitiveMotion& m = morph->motions[std::size_t(p.motion)];
     table.setMesh({morph, p.engine_mesh});
     QCOMPARE(table.columnCount(),
              VertexTableModel::ColumnCount + static_cast<int>(m.targets.size()));
@@ -200,7 +200,7 @@ void MotionTests::timelineListsTheFilesAnimations() {
     QVERIFY(dock.playback().pose());
     // Ticks: every key time of the animation's samplers, once.
     std::vector<double> keys;
-    for (const AnimationSampler& s : scene->animations[0].samplers)
+    for (const scene::AnimationSampler& s : scene->animations[0].samplers)
         keys.insert(keys.end(), s.times.begin(), s.times.end());
     std::sort(keys.begin(), keys.end());
     keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
@@ -223,7 +223,7 @@ void MotionTests::scrubbingChangesThePose() {
     auto scene = load_into(context, QStringLiteral("BoxAnimated"));
     QVERIFY(scene);
     QSignalSpy changed(&dock, &TimelineDock::poseChanged);
-    const Animation& anim = scene->animations[0];
+    const scene::Animation& anim = scene->animations[0];
     const std::uint32_t node = anim.channels[0].node;
     const double t1 = anim.start + 0.25 * (anim.end - anim.start);
     const double t2 = anim.start + 0.6 * (anim.end - anim.start);
@@ -233,17 +233,17 @@ void MotionTests::scrubbingChangesThePose() {
     // The same pose is not made and announced again: retranslating, play then pause
     // before a tick, scrubbing to the same time.
     const qsizetype announced = changed.count();
-    const std::shared_ptr<const Pose> same = dock.playback().pose();
+    const std::shared_ptr<const scene::Pose> same = dock.playback().pose();
     dock.retranslate();
     dock.setPlaying(true);
     dock.setPlaying(false);
     dock.scrubTo(t1);
     QCOMPARE(changed.count(), announced);
     QCOMPARE(dock.playback().pose(), same);
-    QVERIFY(same_matrix(at1, evaluate_pose(*scene, 0, t1).world[node]));
+    QVERIFY(same_matrix(at1, scene::evaluate_pose(*scene, 0, t1).world[node]));
     dock.scrubTo(t2);
-    QVERIFY(
-        same_matrix(dock.playback().pose()->world[node], evaluate_pose(*scene, 0, t2).world[node]));
+    QVERIFY(same_matrix(dock.playback().pose()->world[node],
+                        scene::evaluate_pose(*scene, 0, t2).world[node]));
     QVERIFY(!same_matrix(dock.playback().pose()->world[node], at1));
     QVERIFY(dock.findChild<QLabel*>(QStringLiteral("timelineTime"))
                 ->text()
@@ -252,7 +252,7 @@ void MotionTests::scrubbingChangesThePose() {
     dock.findChild<TimelineSlider*>()->setValue(TimelineDock::kSliderSteps / 2);
     QCOMPARE(dock.playback().clock().time, 0.5 * (anim.start + anim.end));
     QVERIFY(same_matrix(dock.playback().pose()->world[node],
-                        evaluate_pose(*scene, 0, dock.playback().clock().time).world[node]));
+                        scene::evaluate_pose(*scene, 0, dock.playback().clock().time).world[node]));
     // Beyond the range: clamped to the last key.
     dock.scrubTo(anim.end + 100.0);
     QCOMPARE(dock.playback().clock().time, static_cast<double>(anim.end));
@@ -263,7 +263,7 @@ void MotionTests::playLoopAdvancesAndWraps() {
     TimelineDock dock(context);
     auto scene = load_into(context, QStringLiteral("AnimatedCube"));
     QVERIFY(scene);
-    const Animation& anim = scene->animations[0];
+    const scene::Animation& anim = scene->animations[0];
     const double duration = anim.end - anim.start;
     QVERIFY(duration > 0.0);
     dock.advance(0.1); // paused: nothing moves
@@ -277,9 +277,9 @@ void MotionTests::playLoopAdvancesAndWraps() {
     dock.advance(0.25 * duration); // past the end: wraps to a quarter
     QVERIFY(std::abs(dock.playback().clock().time - (anim.start + 0.25 * duration)) < 1e-6);
     QVERIFY(dock.playback().clock().playing);
-    QVERIFY(same_matrix(
-        dock.playback().pose()->world[anim.channels[0].node],
-        evaluate_pose(*scene, 0, dock.playback().clock().time).world[anim.channels[0].node]));
+    QVERIFY(same_matrix(dock.playback().pose()->world[anim.channels[0].node],
+                        scene::evaluate_pose(*scene, 0, dock.playback().clock().time)
+                            .world[anim.channels[0].node]));
     // Without loop the run stops on the last key.
     dock.setLoop(false);
     dock.advance(10.0 * duration);
@@ -305,7 +305,8 @@ void MotionTests::morphSlidersOverrideThePoseWeights() {
     QVERIFY(node >= 0);
     const auto mesh = scene->nodes[std::size_t(node)].mesh;
     dock.scrubTo(1.0);
-    const std::vector<float> animated = evaluate_pose(*scene, 0, 1.0).weights[std::size_t(node)];
+    const std::vector<float> animated =
+        scene::evaluate_pose(*scene, 0, 1.0).weights[std::size_t(node)];
     QCOMPARE(dock.playback().pose()->weights[std::size_t(node)], animated);
     QVERIFY(!dock.findChild<MorphWeightsPanel*>()->setOverride(mesh, 7, 0.5f)); // no such target
     QVERIFY(dock.findChild<MorphWeightsPanel*>()->setOverride(mesh, 1, 0.75f));
@@ -329,23 +330,23 @@ void MotionTests::windowPostsThePoseAndSelectedJoint() {
     QVERIFY(!w->frames().lastFrame().request.pose);
     QVERIFY(test::load(*w, test::asset(QStringLiteral("BoxAnimated"))));
     QVERIFY(w->docks().timeline->isVisible());
-    const Scene& scene = *w->context().scene();
-    const Animation& anim = scene.animations[0];
+    const scene::Scene& scene = *w->context().scene();
+    const scene::Animation& anim = scene.animations[0];
     const std::uint32_t node = anim.channels[0].node;
     for (const double t : {anim.start + 0.3 * (anim.end - anim.start), double(anim.end)}) {
         w->docks().timeline->scrubTo(t);
-        const glm::mat4 expected = evaluate_pose(scene, 0, t).world[node];
+        const glm::mat4 expected = scene::evaluate_pose(scene, 0, t).world[node];
         QTRY_VERIFY(w->frames().lastFrame().request.pose &&
                     same_matrix(w->frames().lastFrame().request.pose->world[node], expected));
         // The culling dock culls the instances where the pose puts them.
-        const Pose pose = evaluate_pose(scene, 0, t);
+        const scene::Pose pose = scene::evaluate_pose(scene, 0, t);
         test::culling_monitor(*w).pacing().flush();
         for (std::size_t i = 0; i < scene.instances.size(); ++i) {
-            const MeshInstance& inst = scene.instances[i];
+            const scene::MeshInstance& inst = scene.instances[i];
             const auto prim = std::find_if(
                 scene.primitives.begin(), scene.primitives.end(),
-                [&](const PrimitiveInfo& p) { return p.engine_mesh == int(inst.mesh_id); });
-            const core::Aabb expected_box = culling_bounds(scene, pose, inst.node_id, *prim);
+                [&](const scene::PrimitiveInfo& p) { return p.engine_mesh == int(inst.mesh_id); });
+            const core::Aabb expected_box = scene::culling_bounds(scene, pose, inst.node_id, *prim);
             const core::Aabb box = test::culling_monitor(*w).input().boxes.box(i);
             QVERIFY(
                 glm::all(glm::lessThan(glm::abs(box.min - expected_box.min), glm::vec3(1e-5f))));

@@ -131,12 +131,12 @@ void RtTests::accelerationDockListsBlasAndSelectsMesh() {
     AccelerationDock& dock = *w.docks().acceleration;
     AccelerationModel& model = *dock.model();
     // Handed over from the render thread after the upload: one BLAS per glTF mesh.
-    const Scene& scene = *w.context().scene();
+    const scene::Scene& scene = *w.context().scene();
     std::set<std::uint32_t> gltf_meshes;
-    for (const Mesh& m : scene.meshes) gltf_meshes.insert(m.group_id);
+    for (const scene::Mesh& m : scene.meshes) gltf_meshes.insert(m.group_id);
     QTRY_COMPARE_WITH_TIMEOUT(model.rowCount(), static_cast<int>(gltf_meshes.size()), 30000);
     std::uint64_t triangles = 0;
-    for (const Mesh& m : scene.meshes) triangles += m.indices.size() / 3;
+    for (const scene::Mesh& m : scene.meshes) triangles += m.indices.size() / 3;
     QCOMPARE(model.stats()->blas_triangles(), triangles);
     QVERIFY(dock.summaryText().contains(QStringLiteral("%1 BLAS").arg(gltf_meshes.size())));
     for (int r = 0; r < model.rowCount(); ++r) {
@@ -341,7 +341,7 @@ void RtTests::draggingMovesTheDivider() {
     ViewportWindow* vp = w.viewport();
     QCOMPARE(vp->divider().fraction().value_or(-1.0f), 0.5f);
     const int y = vp->height() / 2, width = vp->width();
-    const CameraSpec camera = vp->camera().pose().spec();
+    const scene::CameraSpec camera = vp->camera().pose().spec();
     // Grabbed at the line (within the grab zone), dropped at a quarter of the width.
     QTest::mousePress(vp, Qt::LeftButton, Qt::NoModifier, QPoint(width / 2 + 3, y));
     QTest::mouseMove(vp, QPoint(width / 3, y));

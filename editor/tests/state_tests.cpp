@@ -27,7 +27,7 @@
 
 namespace {
 // Where `p` lands in normalised device coordinates through `spec`.
-glm::vec2 ndc_of(const sherpa::CameraSpec& spec, glm::vec3 p) {
+glm::vec2 ndc_of(const sherpa::scene::CameraSpec& spec, glm::vec3 p) {
     const glm::vec4 clip = spec.view_projection() * glm::vec4(p, 1.0f);
     return glm::vec2(clip) / clip.w;
 }
@@ -194,7 +194,7 @@ void StateTests::poseReadsBackFromItsStringAndSpec() {
     pose.distance = 3.5f;
     pose.fov_degrees = 45.0f;
     pose.near_plane = 0.01f;
-    CameraSpec parsed;
+    scene::CameraSpec parsed;
     std::string error;
     QVERIFY2(parse_camera_spec(pose.toString(), parsed, error), error.c_str());
     QVERIFY(near(parsed.eye, pose.eye()));
@@ -211,7 +211,7 @@ void StateTests::poseReadsBackFromItsStringAndSpec() {
     QCOMPARE(again.aspect, 2.0f);
     QCOMPARE(again.near_plane, 0.01f);
     // Straight down is past the pitch limit: the pose keeps a valid up.
-    CameraSpec down;
+    scene::CameraSpec down;
     down.eye = {0, 10, 0};
     down.target = {0, 0, 0};
     const OrbitPose clamped = orbit_pose_from(down, lens);
@@ -220,12 +220,12 @@ void StateTests::poseReadsBackFromItsStringAndSpec() {
 }
 
 void StateTests::poseTakesAGltfCamera() {
-    Scene scene;
-    Camera cam;
+    scene::Scene scene;
+    scene::Camera cam;
     cam.yfov = glm::radians(30.0f);
     cam.znear = 0.2f;
     scene.cameras.push_back(cam);
-    PlacedCamera placed;
+    scene::PlacedCamera placed;
     // At (0, 1, 10), turned 90 degrees about +Y: looks down -X.
     placed.world = glm::translate(glm::mat4(1.0f), glm::vec3(0, 1, 10)) *
                    glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(0, 1, 0));
@@ -285,12 +285,13 @@ void StateTests::cameraInputMovesThePose() {
 }
 
 void StateTests::playbackSelectsPlaysAndPoses() {
-    LoadResult loaded = load_scene(test::asset(QStringLiteral("BoxAnimated")).toStdString());
+    scene::LoadResult loaded =
+        scene::load_scene(test::asset(QStringLiteral("BoxAnimated")).toStdString());
     QVERIFY(loaded);
-    const std::shared_ptr<const Scene> shared(std::move(loaded.scene));
-    const Scene& scene = *shared;
+    const std::shared_ptr<const scene::Scene> shared(std::move(loaded.scene));
+    const scene::Scene& scene = *shared;
     QVERIFY(!scene.animations.empty());
-    const Animation& anim = scene.animations[0];
+    const scene::Animation& anim = scene.animations[0];
     Playback p;
     QVERIFY(p.updatePose({})); // nothing yet: made once, null
     QVERIFY(!p.pose());
@@ -313,14 +314,14 @@ void StateTests::playbackSelectsPlaysAndPoses() {
     QVERIFY(std::is_sorted(ticks.begin(), ticks.end()));
     // The pose is the engine's, made again only when time, animation or overrides change.
     QVERIFY(p.updatePose({}));
-    const std::shared_ptr<const Pose> first = p.pose();
+    const std::shared_ptr<const scene::Pose> first = p.pose();
     QVERIFY(first);
     QVERIFY(!p.updatePose({}));
     QCOMPARE(p.pose(), first);
     const double t = anim.start + 0.4 * (anim.end - anim.start);
     p.clock().scrub(t);
     QVERIFY(p.updatePose({}));
-    const Pose expected = evaluate_pose(scene, 0, t);
+    const scene::Pose expected = scene::evaluate_pose(scene, 0, t);
     const std::uint32_t node = anim.channels[0].node;
     QVERIFY(p.pose()->world[node] == expected.world[node]);
     // The clock's rules: clamped scrubs, NaN ignored, a finished run plays from the start.
@@ -440,10 +441,10 @@ void StateTests::compareStateRules() {
     QVERIFY(!state.offer().ray_tracing);
     QCOMPARE(changed.count(), 0);
     QCOMPARE(offer.count(), 1);
-    state.setOtherFile(QStringLiteral("b.gltf"), TangentMethod::Lengyel);
+    state.setOtherFile(QStringLiteral("b.gltf"), scene::TangentMethod::Lengyel);
     QCOMPARE(state.offer().file, QStringLiteral("b.gltf"));
-    QVERIFY(state.offer().tangents == TangentMethod::Lengyel);
-    state.setOtherFile(QString(), TangentMethod::Lengyel); // no file: no tangents
+    QVERIFY(state.offer().tangents == scene::TangentMethod::Lengyel);
+    state.setOtherFile(QString(), scene::TangentMethod::Lengyel); // no file: no tangents
     QVERIFY(!state.offer().tangents);
     QCOMPARE(changed.count(), 0);
     state.setDivider(0.3f);

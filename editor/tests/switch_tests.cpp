@@ -116,7 +116,7 @@ void SwitchTests::uploadsOfScenesSwitchedThroughAreDropped() {
     window_->frames().renderer()->post([released](GpuViewport&) { released.wait(); });
     const auto open = qScopeGuard([&release] { release.set_value(); });
     std::vector<std::weak_ptr<const SceneSession>> sessions;
-    const Scene* on_gpu = window_->context().scene();
+    const scene::Scene* on_gpu = window_->context().scene();
     for (int i = 0; i < 10; ++i) {
         QVERIFY(test::load(
             *window_, test::asset(i % 2 ? QStringLiteral("BoxTextured") : QStringLiteral("Duck"))));

@@ -27,8 +27,8 @@ using namespace sherpa::editor;
 namespace {
 
 // The tangent family's corners where `method` differs from exact MikkTSpace.
-double differing_corners(const QString& file, TangentMethod method) {
-    const LoadResult loaded = load_scene(file.toStdString(), lab::lab_load_options());
+double differing_corners(const QString& file, scene::TangentMethod method) {
+    const scene::LoadResult loaded = scene::load_scene(file.toStdString(), lab::lab_load_options());
     if (!loaded) return -1.0;
     const lab::FamilyReport report = lab::make_family("tangents")->run(*loaded.scene, {});
     for (const lab::MethodResult& m : report.methods)
@@ -82,7 +82,7 @@ private Q_SLOTS:
 
 private:
     // Side B loaded with `method`, then the numbers of a frame at the viewport's size.
-    DifferenceNumbers differenceWith(TangentMethod method);
+    DifferenceNumbers differenceWith(scene::TangentMethod method);
     DifferenceNumbers currentNumbers(); // of a frame drawn after this call
     void checkValidation();
 
@@ -114,7 +114,7 @@ void TangentCompareTests::checkValidation() {
 void TangentCompareTests::commandLineTakesTangents() {
     CommandLine cl;
     QString error;
-    for (const TangentMethod m : kAllTangentMethods) {
+    for (const scene::TangentMethod m : scene::kAllTangentMethods) {
         const QString side = QStringLiteral("tangents:") + CompareControls::tangentMethodName(m);
         QVERIFY(parse_command_line(
             {QStringLiteral("sherpa"), QStringLiteral("--compare-with"), side}, cl, error));
@@ -126,7 +126,7 @@ void TangentCompareTests::commandLineTakesTangents() {
     QVERIFY2(error.contains(QStringLiteral("mikktspace-welded")), qPrintable(error));
 }
 
-DifferenceNumbers TangentCompareTests::differenceWith(TangentMethod method) {
+DifferenceNumbers TangentCompareTests::differenceWith(scene::TangentMethod method) {
     MainWindow& w = *window_;
     const SharedSession before = test::compare_session(w);
     w.comparison().compareWithTangents(method);
@@ -182,7 +182,7 @@ void TangentCompareTests::methodsDifferWhereTheFamilySaysTheyDo() {
     // Exact MikkTSpace on side B. Without TANGENT in the file side A is exact
     // MikkTSpace too (the glTF rule): identical. With it, A is the file's tangents,
     // which MikkTSpace reproduces to a small fraction of a degree: under a 1/255 step.
-    const DifferenceNumbers exact = differenceWith(TangentMethod::MikkTSpace);
+    const DifferenceNumbers exact = differenceWith(scene::TangentMethod::MikkTSpace);
     QVERIFY(exact.valid);
     QCOMPARE(c.comparison().side, SideB::OtherFile);
     // The log says what side A's tangents are (each of these files has one primitive).
@@ -199,7 +199,8 @@ void TangentCompareTests::methodsDifferWhereTheFamilySaysTheyDo() {
         QVERIFY(std::isinf(exact.psnr_db));
     }
     QCOMPARE(exact.over_threshold_percent, 0.0);
-    for (const TangentMethod m : {TangentMethod::MikkTSpaceWelded, TangentMethod::Lengyel}) {
+    for (const scene::TangentMethod m :
+         {scene::TangentMethod::MikkTSpaceWelded, scene::TangentMethod::Lengyel}) {
         const DifferenceNumbers d = differenceWith(m);
         QVERIFY(d.valid);
         const double corners = differing_corners(file, m);
@@ -227,7 +228,7 @@ void TangentCompareTests::methodsDifferWhereTheFamilySaysTheyDo() {
 void TangentCompareTests::tangentSideFollowsTheFile() {
     MainWindow& w = *window_;
     QVERIFY(test::load(w, test::asset(QStringLiteral("NormalTangentTest"))));
-    QVERIFY(differenceWith(TangentMethod::MikkTSpaceWelded).valid);
+    QVERIFY(differenceWith(scene::TangentMethod::MikkTSpaceWelded).valid);
     // Another scene opened while comparing: side B is that file with the same method.
     QVERIFY(test::load(w, duck_));
     QTRY_VERIFY_WITH_TIMEOUT(test::compare_session(w) && test::compare_session(w)->spec == duck_,

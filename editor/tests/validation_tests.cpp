@@ -149,7 +149,7 @@ void ValidationTests::unsupportedExtensionSelectsTheMaterial() {
     QVERIFY(dock.activatePointer(
         QStringLiteral("/materials/0/extensions/ADOBE_materials_thin_transparency")));
     QCOMPARE(activated.count(), 1);
-    const Scene& scene = *w_->context().scene();
+    const scene::Scene& scene = *w_->context().scene();
     QCOMPARE(w_->context().selection().current().material, 0);
     // The primitive drawn with it is selected: the viewport highlights its instance.
     QCOMPARE(w_->context().selection().current().mesh, scene.mesh_primitives[0][0]);
@@ -191,7 +191,7 @@ void ValidationTests::pointersSelectNodesPrimitivesVerticesAndTextures() {
     QVERIFY(w_->selection().showPointer(
         QStringLiteral("/accessors/3"),
         QStringLiteral("Accessor element at index 7 is NaN or Infinity.")));
-    const Scene& rigged = *w_->context().scene();
+    const scene::Scene& rigged = *w_->context().scene();
     QCOMPARE(w_->context().selection().current().mesh, rigged.mesh_primitives[0][0]);
     QCOMPARE(w_->context().selection().current().node, 1);
     QCOMPARE(w_->context().selection().current().vertex, 7);

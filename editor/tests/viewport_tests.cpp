@@ -62,7 +62,7 @@ bool aspectFollows(const ViewportWindow& v) {
 }
 
 // The largest |x| and |y| in NDC of the box's corners seen by `camera`.
-QPointF ndcExtent(const CameraSpec& camera, const core::Aabb& box) {
+QPointF ndcExtent(const scene::CameraSpec& camera, const core::Aabb& box) {
     QPointF out(0, 0);
     for (int i = 0; i < 8; ++i) {
         const glm::vec4 c((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
@@ -75,7 +75,7 @@ QPointF ndcExtent(const CameraSpec& camera, const core::Aabb& box) {
 }
 
 // The same over points (the drawn vertices automatic framing fits).
-QPointF ndcExtent(const CameraSpec& camera, const std::vector<glm::vec3>& points) {
+QPointF ndcExtent(const scene::CameraSpec& camera, const std::vector<glm::vec3>& points) {
     QPointF out(0, 0);
     for (const glm::vec3& p : points) {
         const glm::vec4 clip = camera.view_projection() * glm::vec4(p, 1.0f);
@@ -162,7 +162,7 @@ void ViewportTests::highlightFollowsSelection() {
     // A node without a mesh (the instance grid's parent) outlines its subtree: every
     // instance placed by a descendant, found here by walking the parents.
     QVERIFY(window_->selection().selectNodeNamed(QStringLiteral("instance grid")));
-    const Scene& scene = *window_->context().scene();
+    const scene::Scene& scene = *window_->context().scene();
     const int grid = window_->context().selection().current().node;
     QCOMPARE(scene.nodes[std::size_t(grid)].mesh, -1);
     std::vector<std::uint32_t> expected;
@@ -187,7 +187,7 @@ void ViewportTests::uncheckedNodeLeavesTheViewport() {
     QVERIFY(test::next_frame(*window_));
     QVERIFY(!window_->frames().lastFrame().hiddenNodes);
     const QImage shown = test::viewport_shot(*window_);
-    const Scene& scene = *window_->context().scene();
+    const scene::Scene& scene = *window_->context().scene();
     int sphere = -1;
     for (std::size_t n = 0; n < scene.nodes.size(); ++n)
         if (scene.nodes[n].name == "sphere") sphere = static_cast<int>(n);
@@ -284,7 +284,7 @@ void ViewportTests::narrowViewportFramesTheHelmet() {
     QWidget* vp = window_->findChild<QWidget*>(QStringLiteral("viewport"));
     QVERIFY(load(*window_, test::asset(QStringLiteral("DamagedHelmet"))));
     // Automatic framing fits the drawn vertices to 80% of the tighter side.
-    const std::vector<glm::vec3> bounds = framing_points(*window_->context().scene());
+    const std::vector<glm::vec3> bounds = scene::framing_points(*window_->context().scene());
     QVERIFY(window_->viewport()->width() > 480);
     vp->setMaximumWidth(330); // the viewport's minimum is 320
     QTRY_VERIFY(vp->width() <= 330);
@@ -308,17 +308,18 @@ void ViewportTests::narrowViewportFramesTheHelmet() {
 
 void ViewportTests::framingIsTheEnginesOnLoadFrameAllAndSelection() {
     // On load and on Frame all (F) the editor shows what `sherpa-cli render --camera
-    // auto` shows (sherpa::frame_scene at the viewport's aspect), looking down on the
+    // auto` shows (sherpa::scene::frame_scene at the viewport's aspect), looking down on the
     // cube; Frame selection (Shift+F) keeps the user's direction.
     QVERIFY(load(*window_, test::asset(QStringLiteral("OrientationTest"))));
     ViewportWindow& vp = *window_->viewport();
     QTRY_VERIFY(aspectFollows(vp));
     const core::Aabb bounds = window_->context().scene()->bounds;
     auto expectAuto = [&](const char* when) {
-        FramingOptions options;
+        scene::FramingOptions options;
         options.aspect = vp.camera().pose().spec().aspect;
         options.fov_y_degrees = vp.camera().pose().fov_degrees;
-        const CameraSpec engine = frame_scene(*window_->context().scene(), nullptr, options);
+        const scene::CameraSpec engine =
+            scene::frame_scene(*window_->context().scene(), nullptr, options);
         const float scale = glm::length(bounds.extent());
         QVERIFY2(glm::length(vp.camera().pose().eye() - engine.eye) < 1e-4f * scale, when);
         QVERIFY2(glm::length(vp.camera().pose().target - engine.target) < 1e-4f * scale, when);
@@ -346,7 +347,7 @@ void ViewportTests::fileCamerasAreOfferedAndSetTheFront() {
     QVERIFY2(window_->docks().log->text().contains(
                  QStringLiteral("The file places 1 camera(s): View › glTF Cameras")),
              qPrintable(window_->docks().log->text()));
-    const Scene& scene = *window_->context().scene();
+    const scene::Scene& scene = *window_->context().scene();
     const glm::vec3 file_eye = glm::vec3(scene.placed_cameras.at(0).world[3]);
     const OrbitCamera& cam = window_->viewport()->camera();
     const auto horizontal = [](glm::vec3 v) { return glm::normalize(glm::vec2(v.x, v.z)); };

@@ -74,7 +74,7 @@ void WindowTests::initTestCase() {
 void WindowTests::opensEveryAsset() {
     for (const QString& name : test::all_assets()) {
         QVERIFY2(load(*window_, test::asset(name)), qPrintable(name));
-        const Scene* s = window_->context().scene();
+        const scene::Scene* s = window_->context().scene();
         QCOMPARE(window_->context().sceneSpec(), test::asset(name));
         // Scenes, then skins and animations.
         QCOMPARE(window_->docks().sceneTree->model()->rowCount(),
@@ -88,7 +88,7 @@ void WindowTests::opensEveryAsset() {
 
 void WindowTests::selectionReachesEveryDock() {
     QVERIFY(load(*window_, test::asset(QStringLiteral("DamagedHelmet"))));
-    const Scene& s = *window_->context().scene();
+    const scene::Scene& s = *window_->context().scene();
     // Select through the tree view as a user would: the node's primitive row.
     QTreeView* tree = window_->docks().sceneTree->view();
     const QModelIndex node = tree->model()->index(0, 0, tree->model()->index(0, 0));
@@ -162,7 +162,7 @@ void WindowTests::pickingSelectsInTheTree() {
 
 void WindowTests::failedLoadKeepsTheScene() {
     QVERIFY(load(*window_, test::asset(QStringLiteral("Box"))));
-    const Scene* before = window_->context().scene();
+    const scene::Scene* before = window_->context().scene();
     const int errors = window_->docks().log->errorCount();
     for (const char* broken : {"invalid_json.gltf", "truncated.glb", "missing_buffer.gltf"}) {
         const QString path = QStringLiteral(SHERPA_TEST_DATA_DIR "/") + QLatin1String(broken);
@@ -189,7 +189,7 @@ void WindowTests::failedLoadKeepsTheScene() {
 
 void WindowTests::cancelKeepsTheScene() {
     QVERIFY(load(*window_, test::asset(QStringLiteral("Box"))));
-    const Scene* before = window_->context().scene();
+    const scene::Scene* before = window_->context().scene();
     QSignalSpy loaded(&window_->loads(), &LoadController::sceneLoaded);
     QSignalSpy canceled(&window_->loads(), &LoadController::loadCanceled);
     window_->loads().openScene(test::asset(QStringLiteral("DamagedHelmet")));

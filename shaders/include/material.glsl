@@ -1,9 +1,9 @@
-// GLSL twin of sherpa::GPUMaterialData (engine/scene/include/sherpa/scene/material.h).
+// GLSL twin of sherpa::scene::GPUMaterialData (engine/scene/include/sherpa/scene/material.h).
 // std430, 80 bytes; the C++ side pins every offset with static_assert.
 #ifndef SHERPA_MATERIAL_GLSL
 #define SHERPA_MATERIAL_GLSL
 
-#include "sherpa_alpha_modes.glsl" // SHERPA_ALPHA_*, generated from sherpa::AlphaMode
+#include "sherpa_alpha_modes.glsl" // SHERPA_ALPHA_*, generated from sherpa::scene::AlphaMode
 
 struct GPUMaterialData {
     vec4 base_color_factor;      // 0

@@ -29,7 +29,7 @@ TEST_P(CompareGltfpack, ErrorsStayWithinTheQuantizationStep) {
                       "2>/dev/null");
     ASSERT_EQ(r.exit_code, 0) << r.out;
     const auto j = nlohmann::json::parse(r.out);
-    const sherpa::LoadResult source = sherpa::load_scene(test::gltf_asset(model));
+    const sherpa::scene::LoadResult source = sherpa::scene::load_scene(test::gltf_asset(model));
     ASSERT_TRUE(source) << source.error;
     const glm::vec3 e = source.scene->bounds.extent();
     glm::vec2 uv_lo(INFINITY), uv_hi(-INFINITY);

@@ -140,10 +140,10 @@ TEST(ExportSource, EveryImageEqualsAnIndependentDecodeOfItsSource) {
 }
 
 TEST(ExportSource, NamesAreUniqueAndFileSafe) {
-    sherpa::Scene scene;
+    sherpa::scene::Scene scene;
     scene.source = "/x/scene.gltf";
     auto image = [](std::string uri, std::string name, int view) {
-        sherpa::ImageRecord r;
+        sherpa::scene::ImageRecord r;
         r.uri = std::move(uri);
         r.name = std::move(name);
         r.buffer_view = view;

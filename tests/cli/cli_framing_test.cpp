@@ -96,15 +96,15 @@ TEST(CliFraming, AutoFramesThePoseDrawn) {
         EXPECT_LE(f.tighter, 0.83) << time;
         EXPECT_FALSE(f.touches_border) << time;
     }
-    const sherpa::LoadResult r = sherpa::load_scene(rigged);
+    const sherpa::scene::LoadResult r = sherpa::scene::load_scene(rigged);
     ASSERT_TRUE(r) << r.error;
-    const sherpa::Pose pose = sherpa::evaluate_pose(*r.scene, 0, 2.0);
-    const sherpa::core::Aabb posed = sherpa::framing_bounds(*r.scene, &pose);
-    const sherpa::core::Aabb exact = sherpa::posed_scene_bounds(*r.scene, pose).exact;
+    const sherpa::scene::Pose pose = sherpa::scene::evaluate_pose(*r.scene, 0, 2.0);
+    const sherpa::core::Aabb posed = sherpa::scene::framing_bounds(*r.scene, &pose);
+    const sherpa::core::Aabb exact = sherpa::scene::posed_scene_bounds(*r.scene, pose).exact;
     EXPECT_EQ(posed.min, exact.min);
     EXPECT_EQ(posed.max, exact.max);
     sherpa::core::Aabb points;
-    for (const glm::vec3& v : sherpa::framing_points(*r.scene, &pose)) points.expand(v);
+    for (const glm::vec3& v : sherpa::scene::framing_points(*r.scene, &pose)) points.expand(v);
     EXPECT_EQ(points.min, exact.min);
     EXPECT_EQ(points.max, exact.max);
 }
@@ -112,13 +112,13 @@ TEST(CliFraming, AutoFramesThePoseDrawn) {
 // The Duck's file places a camera behind and to the right of the duck (-Z, +X): the
 // automatic view looks from that side (35 degrees round from it), not from +Z.
 TEST(CliFraming, AutoLooksFromTheSideOfTheFilesCamera) {
-    const sherpa::LoadResult r = sherpa::load_scene(test::gltf_asset("Duck"));
+    const sherpa::scene::LoadResult r = sherpa::scene::load_scene(test::gltf_asset("Duck"));
     ASSERT_TRUE(r) << r.error;
     ASSERT_FALSE(r.scene->placed_cameras.empty());
-    const sherpa::core::Aabb drawn = sherpa::framing_bounds(*r.scene);
+    const sherpa::core::Aabb drawn = sherpa::scene::framing_bounds(*r.scene);
     const glm::vec3 file_eye = glm::vec3(r.scene->placed_cameras[0].world[3]);
-    sherpa::FramingOptions options;
-    const sherpa::CameraSpec framed = sherpa::frame_scene(*r.scene, nullptr, options);
+    sherpa::scene::FramingOptions options;
+    const sherpa::scene::CameraSpec framed = sherpa::scene::frame_scene(*r.scene, nullptr, options);
     const auto horizontal = [](glm::vec3 v) { return glm::normalize(glm::vec2(v.x, v.z)); };
     const float cosine =
         glm::dot(horizontal(framed.eye - framed.target), horizontal(file_eye - drawn.center()));
@@ -129,9 +129,9 @@ TEST(CliFraming, AutoLooksFromTheSideOfTheFilesCamera) {
 
 // The built-in scene's 40 m ground plane is a stage: framing fits the objects on it.
 TEST(CliFraming, GroundPlaneDoesNotCount) {
-    const sherpa::LoadResult r = sherpa::load_scene("builtin:default");
+    const sherpa::scene::LoadResult r = sherpa::scene::load_scene("builtin:default");
     ASSERT_TRUE(r) << r.error;
-    const sherpa::core::Aabb framed = sherpa::framing_bounds(*r.scene);
+    const sherpa::core::Aabb framed = sherpa::scene::framing_bounds(*r.scene);
     ASSERT_TRUE(framed.valid());
     EXPECT_GT(r.scene->bounds.extent().x, 39.0f);
     // The objects and the instance grid behind them: about 9.5 x 15 m.
@@ -139,7 +139,7 @@ TEST(CliFraming, GroundPlaneDoesNotCount) {
     EXPECT_LT(framed.extent().z, 20.0f);
     EXPECT_GT(framed.extent().x, 8.0f);
     sherpa::core::Aabb points;
-    for (const glm::vec3& v : sherpa::framing_points(*r.scene)) points.expand(v);
+    for (const glm::vec3& v : sherpa::scene::framing_points(*r.scene)) points.expand(v);
     EXPECT_LT(points.extent().x, 12.0f);
     EXPECT_GT(points.extent().x, 8.0f);
 }

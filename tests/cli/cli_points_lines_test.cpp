@@ -99,15 +99,15 @@ TEST(PointsAndLines, ImportedWithTopologyCountsAndBounds) {
     const std::vector<float> square = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
     struct Case {
         int mode;
-        sherpa::Topology topology;
+        sherpa::scene::Topology topology;
         std::uint32_t elements;
     };
     for (const Case c :
-         {Case{0, sherpa::Topology::Points, 4}, Case{1, sherpa::Topology::Lines, 2},
-          Case{2, sherpa::Topology::Lines, 4}, Case{3, sherpa::Topology::Lines, 3}}) {
+         {Case{0, sherpa::scene::Topology::Points, 4}, Case{1, sherpa::scene::Topology::Lines, 2},
+          Case{2, sherpa::scene::Topology::Lines, 4}, Case{3, sherpa::scene::Topology::Lines, 3}}) {
         const std::string path =
             write_gltf("mode" + std::to_string(c.mode) + ".gltf", c.mode, square);
-        const sherpa::LoadResult r = sherpa::load_scene(path);
+        const sherpa::scene::LoadResult r = sherpa::scene::load_scene(path);
         ASSERT_TRUE(r) << r.error;
         ASSERT_EQ(r.scene->meshes.size(), 1u) << "mode " << c.mode;
         EXPECT_EQ(r.scene->meshes[0].topology(), c.topology);
@@ -119,7 +119,8 @@ TEST(PointsAndLines, ImportedWithTopologyCountsAndBounds) {
         const test::CliRun info = test::run_cli("info '" + path + "' --json", "2>/dev/null");
         ASSERT_EQ(info.exit_code, 0) << info.out;
         const auto p = nlohmann::json::parse(info.out).at("primitives_detail").at(0);
-        EXPECT_EQ(p.at(c.topology == sherpa::Topology::Points ? "points" : "segments"), c.elements);
+        EXPECT_EQ(p.at(c.topology == sherpa::scene::Topology::Points ? "points" : "segments"),
+                  c.elements);
         EXPECT_EQ(p.at("triangles"), 0);
         EXPECT_FALSE(p.contains("skipped"));
     }

@@ -97,16 +97,18 @@ int max_difference(const std::vector<std::uint8_t>& a, const std::vector<std::ui
 
 TEST(SpecularGlossiness, ImportedWithItsOwnFields) {
     json m = spec_gloss({0.2f, 0.4f, 0.6f}, {0.1f, 0.2f, 0.3f}, 0.7f);
-    const sherpa::LoadResult r = sherpa::load_scene(suzanne_with("fields.gltf", m, true));
+    const sherpa::scene::LoadResult r =
+        sherpa::scene::load_scene(suzanne_with("fields.gltf", m, true));
     ASSERT_TRUE(r) << r.error;
-    const sherpa::MaterialInstance& mat = r.scene->materials.at(0);
+    const sherpa::scene::MaterialInstance& mat = r.scene->materials.at(0);
     ASSERT_TRUE(mat.specular_glossiness);
     EXPECT_EQ(mat.base_color_factor, glm::vec4(0.2f, 0.4f, 0.6f, 1.0f)) << "diffuseFactor";
     EXPECT_EQ(mat.specular_glossiness->specular_factor, glm::vec3(0.1f, 0.2f, 0.3f));
     EXPECT_FLOAT_EQ(mat.specular_glossiness->glossiness_factor, 0.7f);
     // The extension's schema defaults are ones.
     m["extensions"]["KHR_materials_pbrSpecularGlossiness"] = json::object();
-    const sherpa::LoadResult d = sherpa::load_scene(suzanne_with("defaults.gltf", m, true));
+    const sherpa::scene::LoadResult d =
+        sherpa::scene::load_scene(suzanne_with("defaults.gltf", m, true));
     ASSERT_TRUE(d) << d.error;
     EXPECT_EQ(d.scene->materials.at(0).base_color_factor, glm::vec4(1.0f));
     EXPECT_EQ(d.scene->materials.at(0).specular_glossiness->specular_factor, glm::vec3(1.0f));
@@ -114,7 +116,7 @@ TEST(SpecularGlossiness, ImportedWithItsOwnFields) {
     json doc = test::read_json(suzanne_with("required.gltf", m, true));
     doc["extensionsRequired"] = {"KHR_materials_pbrSpecularGlossiness"};
     std::ofstream(work_dir() / "required.gltf") << doc.dump();
-    EXPECT_TRUE(sherpa::load_scene((work_dir() / "required.gltf").string()));
+    EXPECT_TRUE(sherpa::scene::load_scene((work_dir() / "required.gltf").string()));
 }
 
 TEST(SpecularGlossiness, ShadedByItsDefinition) {

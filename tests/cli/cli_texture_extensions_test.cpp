@@ -83,7 +83,7 @@ TEST_P(TextureExtension, ExtensionImageIsUsedAndRendersValidationClean) {
         const std::string path =
             box_with(std::string(fallback ? "fb_" : "") + c.file,
                      ext_texture(c.extension, c.image, fallback), {c.extension});
-        const sherpa::LoadResult r = sherpa::load_scene(path);
+        const sherpa::scene::LoadResult r = sherpa::scene::load_scene(path);
         ASSERT_TRUE(r) << r.error;
         ASSERT_EQ(r.scene->textures.size(), 1u);
         EXPECT_EQ(r.scene->textures[0].image, c.image) << "the extension's image, not the fallback";
@@ -132,7 +132,7 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(TextureExtension, UnknownImageExtensionFallsBackToTheCoreSource) {
     const std::string path =
         box_with("avif.gltf", ext_texture("EXT_texture_avif", 1, true), {"EXT_texture_avif"});
-    const sherpa::LoadResult r = sherpa::load_scene(path);
+    const sherpa::scene::LoadResult r = sherpa::scene::load_scene(path);
     ASSERT_TRUE(r) << r.error;
     EXPECT_EQ(r.scene->textures.at(0).image, 0);
 }
@@ -141,7 +141,7 @@ TEST(TextureExtension, UnknownImageExtensionFallsBackToTheCoreSource) {
 TEST(TextureExtension, ExtensionSourceOutOfRangeIsNamed) {
     const std::string path =
         box_with("bad.gltf", ext_texture("KHR_texture_basisu", 9, false), {"KHR_texture_basisu"});
-    const sherpa::LoadResult r = sherpa::load_scene(path);
+    const sherpa::scene::LoadResult r = sherpa::scene::load_scene(path);
     EXPECT_FALSE(r);
     EXPECT_NE(
         r.error.find("textures[0].extensions.KHR_texture_basisu.source: image 9 out of range"),

@@ -93,7 +93,8 @@ bool GltfTarget::init(const TargetConfig& config, std::string& error) {
         // Seeds nesting deeper than the importer parses are mutated as bytes only:
         // copying their parsed document recurses once per level and overflowed the
         // stack under AddressSanitizer (tests/data/deep_nesting.gltf).
-        if (detail::json_depth_exceeded_at(seed.text, detail::kMaxJsonDepth) == SIZE_MAX)
+        if (scene::detail::json_depth_exceeded_at(seed.text, scene::detail::kMaxJsonDepth) ==
+            SIZE_MAX)
             seed.doc = nlohmann::json::parse(seed.text.begin(), seed.text.end(), nullptr, false);
         if (seed.doc.is_object() && seed.doc["buffers"].is_array())
             for (const auto& buffer : seed.doc["buffers"]) {
@@ -162,22 +163,22 @@ fs::path GltfTarget::write_case(const Seed& seed, const std::string& name,
 }
 
 std::optional<std::string> GltfTarget::run() {
-    return load(LoadOptions{});
+    return load(scene::LoadOptions{});
 }
 
-std::optional<std::string> GltfTarget::load(const LoadOptions& options) {
-    const LoadResult result = import_gltf(case_path_.string(), options);
+std::optional<std::string> GltfTarget::load(const scene::LoadOptions& options) {
+    const scene::LoadResult result = scene::import_gltf(case_path_.string(), options);
     if (!result) return std::nullopt; // a refusal with a message is a correct outcome
     // A loaded scene must be safe to draw: every index names a vertex.
     for (std::size_t m = 0; m < result.scene->meshes.size(); ++m) {
-        const Mesh& mesh = result.scene->meshes[m];
+        const scene::Mesh& mesh = result.scene->meshes[m];
         for (const std::uint32_t index : mesh.indices)
             if (index >= mesh.vertices.size())
                 return "mesh " + std::to_string(m) + ": index " + std::to_string(index) +
                        " >= vertex count " + std::to_string(mesh.vertices.size());
         // Indices are lists of the mesh's topology (strips, loops and fans arrive
         // converted): 3 per triangle, 2 per line, 1 per point.
-        const std::uint32_t per = indices_per_element(mesh.topology());
+        const std::uint32_t per = scene::indices_per_element(mesh.topology());
         if (mesh.indices.size() % per)
             return "mesh " + std::to_string(m) + ": " + std::to_string(mesh.indices.size()) +
                    " indices are not a multiple of " + std::to_string(per) + " (" +
@@ -228,12 +229,12 @@ fs::path GlbTarget::make_case(Rng& rng) {
 }
 
 fs::path TangentsTarget::make_case(Rng& rng) {
-    method_ = kAllTangentMethods[rng.below(kAllTangentMethods.size())];
+    method_ = scene::kAllTangentMethods[rng.below(scene::kAllTangentMethods.size())];
     return GltfTarget::make_case(rng);
 }
 
 std::optional<std::string> TangentsTarget::run() {
-    LoadOptions options;
+    scene::LoadOptions options;
     options.tangents.regenerate = true; // every triangle mesh, not only normal-mapped ones
     options.tangents.method = method_;
     return load(options);

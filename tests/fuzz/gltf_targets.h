@@ -36,7 +36,7 @@ protected:
     std::filesystem::path write_case(const Seed& seed, const std::string& name,
                                      std::span<const std::uint8_t> bytes);
     // Imports the case with `options` and checks what a loaded scene promises.
-    std::optional<std::string> load(const LoadOptions& options);
+    std::optional<std::string> load(const scene::LoadOptions& options);
 
     TargetConfig config_;
     std::vector<Seed> seeds_;
@@ -60,7 +60,7 @@ public:
     std::optional<std::string> run() override;
 
 private:
-    TangentMethod method_ = TangentMethod::MikkTSpace;
+    scene::TangentMethod method_ = scene::TangentMethod::MikkTSpace;
 };
 
 } // namespace sherpa::fuzz

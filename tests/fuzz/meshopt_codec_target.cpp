@@ -19,7 +19,7 @@
 namespace sherpa::fuzz {
 
 namespace fs = std::filesystem;
-namespace mo = meshopt;
+namespace mo = scene::meshopt;
 using nlohmann::json;
 
 namespace {

@@ -57,7 +57,7 @@ float value(Rng& rng, bool& tame) {
 }
 
 bool overflows(const core::Aabb& b) {
-    return b.valid() && box_is_invalid(b.min, b.max);
+    return b.valid() && scene::box_is_invalid(b.min, b.max);
 }
 
 std::string f2s(double v) {
@@ -89,7 +89,7 @@ bool PoseTarget::init(const TargetConfig& config, std::string& error) {
     for (const char* model : kModels) {
         const fs::path file =
             config.assets_dir / "gltf" / model / "glTF" / (std::string(model) + ".gltf");
-        LoadResult r = import_gltf(file.string(), LoadOptions{});
+        scene::LoadResult r = scene::import_gltf(file.string(), scene::LoadOptions{});
         if (!r) {
             error = file.string() + ": " + r.error;
             return false;
@@ -102,32 +102,34 @@ bool PoseTarget::init(const TargetConfig& config, std::string& error) {
     return true;
 }
 
-void PoseTarget::mutate(Rng& rng, Scene& s, std::string& log) {
+void PoseTarget::mutate(Rng& rng, scene::Scene& s, std::string& log) {
     const std::size_t nodes = s.nodes.size();
     switch (rng.below(6)) {
     case 0: { // a new animation of random channels
-        Animation a;
+        scene::Animation a;
         a.name = "fuzz";
         const std::size_t channels = 1 + rng.below(6);
         for (std::size_t c = 0; c < channels; ++c) {
             const std::uint32_t node = std::uint32_t(rng.below(nodes));
-            const Node& n = s.nodes[node];
-            AnimationChannel ch;
+            const scene::Node& n = s.nodes[node];
+            scene::AnimationChannel ch;
             ch.node = node;
-            ch.path = AnimationPath(rng.below(4));
-            std::uint32_t width = ch.path == AnimationPath::Rotation ? 4 : 3;
-            if (ch.path == AnimationPath::Weights) {
+            ch.path = scene::AnimationPath(rng.below(4));
+            std::uint32_t width = ch.path == scene::AnimationPath::Rotation ? 4 : 3;
+            if (ch.path == scene::AnimationPath::Weights) {
                 if (n.weights.empty())
-                    ch.path = AnimationPath::Translation;
+                    ch.path = scene::AnimationPath::Translation;
                 else
                     width = std::uint32_t(n.weights.size());
             }
-            if (n.has_matrix && ch.path != AnimationPath::Weights) continue; // refused at import
-            AnimationSampler sm;
-            sm.interpolation = Interpolation(rng.below(3));
+            if (n.has_matrix && ch.path != scene::AnimationPath::Weights)
+                continue; // refused at import
+            scene::AnimationSampler sm;
+            sm.interpolation = scene::Interpolation(rng.below(3));
             sm.width = width;
             sm.times = key_times(rng, 1 + rng.below(6), tame_);
-            const std::size_t per_key = sm.interpolation == Interpolation::CubicSpline ? 3 : 1;
+            const std::size_t per_key =
+                sm.interpolation == scene::Interpolation::CubicSpline ? 3 : 1;
             sm.values.resize(sm.times.size() * per_key * width);
             for (float& v : sm.values) v = value(rng, tame_);
             ch.sampler = std::uint32_t(a.samplers.size());
@@ -147,9 +149,9 @@ void PoseTarget::mutate(Rng& rng, Scene& s, std::string& log) {
     }
     case 1: { // values of an existing sampler
         if (s.animations.empty()) return;
-        Animation& a = s.animations[rng.below(s.animations.size())];
+        scene::Animation& a = s.animations[rng.below(s.animations.size())];
         if (a.samplers.empty()) return;
-        AnimationSampler& sm = a.samplers[rng.below(a.samplers.size())];
+        scene::AnimationSampler& sm = a.samplers[rng.below(a.samplers.size())];
         if (sm.values.empty()) return;
         for (std::size_t k = 0, n = 1 + rng.below(8); k < n; ++k) {
             const std::size_t at = rng.below(sm.values.size());
@@ -160,7 +162,7 @@ void PoseTarget::mutate(Rng& rng, Scene& s, std::string& log) {
     }
     case 2: { // an inverse bind matrix
         if (s.skins.empty()) return;
-        Skin& skin = s.skins[rng.below(s.skins.size())];
+        scene::Skin& skin = s.skins[rng.below(s.skins.size())];
         if (skin.inverse_bind.empty()) return;
         const std::size_t j = rng.below(skin.inverse_bind.size());
         for (std::size_t k = 0, n = 1 + rng.below(4); k < n; ++k) {
@@ -171,7 +173,7 @@ void PoseTarget::mutate(Rng& rng, Scene& s, std::string& log) {
         return;
     }
     case 3: { // a node's transform
-        Node& n = s.nodes[rng.below(nodes)];
+        scene::Node& n = s.nodes[rng.below(nodes)];
         if (n.has_matrix) {
             const std::size_t e = rng.below(16);
             n.matrix[int(e / 4)][int(e % 4)] = value(rng, tame_);
@@ -192,7 +194,7 @@ void PoseTarget::mutate(Rng& rng, Scene& s, std::string& log) {
         for (std::uint32_t i = 0; i < nodes; ++i)
             if (!s.nodes[i].weights.empty()) morphed.push_back(i);
         if (morphed.empty()) return;
-        Node& n = s.nodes[morphed[rng.below(morphed.size())]];
+        scene::Node& n = s.nodes[morphed[rng.below(morphed.size())]];
         for (float& w : n.weights)
             if (rng.chance(2)) w = value(rng, tame_);
         log += "morph weights\n";
@@ -203,8 +205,8 @@ void PoseTarget::mutate(Rng& rng, Scene& s, std::string& log) {
 
 fs::path PoseTarget::make_case(Rng& rng) {
     current_ = &seeds_[rng.below(seeds_.size())];
-    Scene& s = current_->scene;
-    const Scene& o = current_->original;
+    scene::Scene& s = current_->scene;
+    const scene::Scene& o = current_->original;
     s.nodes = o.nodes;
     s.skins = o.skins;
     s.animations = o.animations;
@@ -214,7 +216,7 @@ fs::path PoseTarget::make_case(Rng& rng) {
     std::string log = current_->model + "\n";
     for (std::size_t k = 0, n = 1 + rng.below(4); k < n; ++k) mutate(rng, s, log);
     if (animation_ >= 0) {
-        const Animation& a = s.animations[std::size_t(animation_)];
+        const scene::Animation& a = s.animations[std::size_t(animation_)];
         switch (rng.below(8)) {
         case 0:
             time_ = std::numeric_limits<double>::quiet_NaN();
@@ -243,13 +245,13 @@ fs::path PoseTarget::make_case(Rng& rng) {
 }
 
 std::optional<std::string> PoseTarget::run() {
-    const Scene& s = current_->scene;
-    const Pose pose = evaluate_pose(s, animation_, time_);
-    const PosedBounds b = posed_scene_bounds(s, pose);
+    const scene::Scene& s = current_->scene;
+    const scene::Pose pose = scene::evaluate_pose(s, animation_, time_);
+    const scene::PosedBounds b = scene::posed_scene_bounds(s, pose);
     if (overflows(b.exact) || overflows(b.culling))
         return "posed_scene_bounds returned bounds that are not finite";
-    const std::vector<std::uint32_t> overflow = posed_overflow_nodes(s, pose);
-    const std::vector<core::Aabb> boxes = instance_culling_bounds(s, pose);
+    const std::vector<std::uint32_t> overflow = scene::posed_overflow_nodes(s, pose);
+    const std::vector<core::Aabb> boxes = scene::instance_culling_bounds(s, pose);
     for (std::size_t i = 0; i < boxes.size(); ++i)
         if (overflows(boxes[i]) &&
             std::find(overflow.begin(), overflow.end(), s.instances[i].node_id) == overflow.end())
@@ -265,7 +267,7 @@ std::optional<std::string> PoseTarget::run() {
             return "culling bounds do not hold the exact posed bounds";
     }
     if (freeze_) {
-        const Scene frozen = freeze_pose(s, pose);
+        const scene::Scene frozen = scene::freeze_pose(s, pose);
         for (std::size_t m = 0; m < frozen.meshes.size(); ++m)
             for (const std::uint32_t index : frozen.meshes[m].indices)
                 if (index >= frozen.meshes[m].vertices.size())

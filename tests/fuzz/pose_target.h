@@ -17,10 +17,10 @@ public:
 private:
     struct Seed {
         std::string model;
-        Scene original; // as imported
-        Scene scene;    // the case: motion data changed, restored from `original` each case
+        scene::Scene original; // as imported
+        scene::Scene scene;    // the case: motion data changed, restored from `original` each case
     };
-    void mutate(Rng& rng, Scene& scene, std::string& log);
+    void mutate(Rng& rng, scene::Scene& scene, std::string& log);
 
     TargetConfig config_;
     std::vector<Seed> seeds_;

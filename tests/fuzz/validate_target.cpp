@@ -72,10 +72,10 @@ bool ValidateTarget::init(const TargetConfig& config, std::string& error) {
 
 std::optional<std::string> ValidateTarget::run() {
     nlohmann::json root;
-    if (!detail::parse_gltf_document(bytes_, root).empty()) return std::nullopt; // refused
+    if (!scene::detail::parse_gltf_document(bytes_, root).empty()) return std::nullopt; // refused
     const bool glb = bytes_.size() >= 4 && std::equal(bytes_.begin(), bytes_.begin() + 4, "glTF");
-    ValidationReport report;
-    detail::DocumentValidator validator(root, bytes_, glb, report);
+    scene::ValidationReport report;
+    scene::detail::DocumentValidator validator(root, bytes_, glb, report);
     // Buffers as tinygltf would fill them: the BIN chunk, base64 data URIs.
     std::vector<std::vector<std::uint8_t>> owned;
     std::vector<std::span<const std::uint8_t>> buffers;
@@ -106,9 +106,9 @@ std::optional<std::string> ValidateTarget::run() {
     }
     for (const auto& o : owned) buffers.emplace_back(o);
     validator.check_data(buffers);
-    if (report.messages.size() > kMaxValidationMessages)
+    if (report.messages.size() > scene::kMaxValidationMessages)
         return "report keeps more messages than its limit";
-    for (const ValidationMessage& m : report.messages) {
+    for (const scene::ValidationMessage& m : report.messages) {
         if (m.code.empty() || m.message.empty()) return "message without a code or text";
         if (!m.pointer.empty() && m.pointer[0] != '/')
             return m.code + ": pointer '" + m.pointer + "' is not a JSON pointer";

@@ -30,7 +30,7 @@ std::shared_ptr<const tex::PreparedTextureSet> no_textures() {
 class AccelerationTest : public GpuTest {
 protected:
     // Builds `scene` on the shared device; `check` sees the statistics.
-    render::AccelerationStats build(const Scene& scene,
+    render::AccelerationStats build(const scene::Scene& scene,
                                     const render::AccelerationSettings& s = {}) {
         gpu::ResourceManager& rm = renderer().resources();
         gpu::BindlessTable table(rm);
@@ -87,11 +87,11 @@ TEST_F(AccelerationTest, OneBlasPerGltfMeshOpaqueOnlyForOpaqueMaterials) {
     const render::AccelerationStats s = build(*scene);
     std::set<std::uint32_t> groups;
     std::uint64_t triangles = 0, opaque = 0;
-    for (const Mesh& m : scene->meshes) {
+    for (const scene::Mesh& m : scene->meshes) {
         groups.insert(m.group_id);
         triangles += m.indices.size() / 3;
-        const MaterialInstance& material = scene->materials[m.material_id];
-        opaque += material.alpha_mode == AlphaMode::Opaque && material.double_sided;
+        const scene::MaterialInstance& material = scene->materials[m.material_id];
+        opaque += material.alpha_mode == scene::AlphaMode::Opaque && material.double_sided;
     }
     ASSERT_EQ(s.blas.size(), groups.size());
     EXPECT_EQ(s.blas_triangles(), triangles);
@@ -115,10 +115,10 @@ TEST_F(AccelerationTest, TlasDeduplicatesHidesMirrorsAndDropsNonFiniteTransforms
     // New nodes placing instance 0's mesh: once at the same transform (a duplicate),
     // once mirrored, once with a NaN transform.
     auto place = [&](const glm::mat4& world) {
-        MeshInstance inst = scene->instances[0];
+        scene::MeshInstance inst = scene->instances[0];
         inst.node_id = static_cast<std::uint32_t>(scene->nodes.size());
         inst.world = world;
-        scene->nodes.push_back(Node{});
+        scene->nodes.push_back(scene::Node{});
         scene->nodes.back().name = "added";
         scene->instances.push_back(inst);
     };
@@ -146,7 +146,7 @@ TEST_F(AccelerationTest, DegenerateTrianglesAndEmptyMeshesBuildCleanly) {
     if (!has_rt()) GTEST_SKIP() << "device without ray tracing";
     auto scene = load("builtin:default");
     // Mesh 0: every triangle collapsed to a point or a line; mesh 1: no triangles.
-    Mesh& degenerate = scene->meshes[0];
+    scene::Mesh& degenerate = scene->meshes[0];
     for (std::size_t t = 0; t + 2 < degenerate.indices.size(); t += 3) {
         const std::uint32_t a = degenerate.indices[t];
         if ((t / 3) % 2 == 0) degenerate.indices[t + 1] = a; // a point
@@ -155,7 +155,7 @@ TEST_F(AccelerationTest, DegenerateTrianglesAndEmptyMeshesBuildCleanly) {
     scene->meshes[1].indices.clear();
     const render::AccelerationStats s = build(*scene);
     std::set<std::uint32_t> groups;
-    for (const Mesh& m : scene->meshes) groups.insert(m.group_id);
+    for (const scene::Mesh& m : scene->meshes) groups.insert(m.group_id);
     EXPECT_EQ(s.blas.size(), groups.size() - 1); // the empty mesh has no BLAS
     for (const render::BlasStats& b : s.blas) EXPECT_NE(b.mesh, scene->meshes[1].group_id);
 }
@@ -171,7 +171,7 @@ TEST_F(AccelerationTest, MovedInstancesRefitAndVisibilityChangesRebuild) {
         EXPECT_EQ(as.stats().tlas.builds, 1u);
         EXPECT_EQ(as.stats().tlas.refits, 0u);
         // Animation: every instance moves, the set stays: a refit.
-        for (MeshInstance& inst : scene->instances)
+        for (scene::MeshInstance& inst : scene->instances)
             inst.world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.5f, 0.0f)) * inst.world;
         as.update_instances(*scene, {});
         EXPECT_EQ(as.stats().tlas.builds, 1u);
@@ -211,12 +211,12 @@ TEST(RtPlan, BatchesStayUnderTheScratchBudget) {
 }
 
 TEST(RtPlan, GeometriesFollowPrimitivesOfEachGltfMesh) {
-    Scene scene;
+    scene::Scene scene;
     scene.materials.resize(2);
-    scene.materials[1].alpha_mode = AlphaMode::Mask;
+    scene.materials[1].alpha_mode = scene::AlphaMode::Mask;
     std::vector<render::GpuMesh> meshes(4);
     for (std::uint32_t i = 0; i < 4; ++i) {
-        Mesh m;
+        scene::Mesh m;
         m.group_id = i < 2 ? 0 : i - 1; // mesh 0: primitives 0, 1; mesh 1: 2; mesh 2: 3
         m.material_id = i == 1 ? 1 : 0;
         m.name = "m" + std::to_string(m.group_id) + "#" + std::to_string(i);
@@ -242,18 +242,18 @@ TEST(RtPlan, GeometriesFollowPrimitivesOfEachGltfMesh) {
 // the mesh's space (only the moving geometry copied); the TLAS puts world-space
 // instances at the identity and the rest at the pose's node transforms.
 TEST(RtPlan, PosedBlasPerMovingInstanceWorldSpaceOnlyWhenSkinned) {
-    Scene scene;
+    scene::Scene scene;
     scene.materials.resize(1);
     scene.skins.resize(1);
     scene.nodes.resize(3);
     scene.nodes[0].skin = 0; // node 1 draws the skinned mesh without its skin
     std::vector<render::GpuMesh> meshes(3);
     for (std::uint32_t i = 0; i < 3; ++i) {
-        Mesh m;
+        scene::Mesh m;
         m.group_id = i < 2 ? 0 : 1; // glTF mesh 0: engine meshes 0 (skinned) and 1 (static)
         scene.meshes.push_back(m);
         meshes[i].index_count = 6;
-        PrimitiveInfo p;
+        scene::PrimitiveInfo p;
         p.engine_mesh = static_cast<std::int32_t>(i);
         p.motion = i == 0 ? 0 : i == 2 ? 1 : -1;
         scene.primitives.push_back(p);
@@ -266,7 +266,7 @@ TEST(RtPlan, PosedBlasPerMovingInstanceWorldSpaceOnlyWhenSkinned) {
     const std::pair<std::uint32_t, std::uint32_t> placed[] = {
         {0, 0}, {0, 1}, {1, 0}, {1, 1}, {2, 2}};
     for (auto [node, mesh] : placed) {
-        MeshInstance inst;
+        scene::MeshInstance inst;
         inst.node_id = node;
         inst.mesh_id = mesh;
         inst.world = glm::translate(glm::mat4(1.0f), glm::vec3(float(node), 0.0f, 0.0f));
@@ -310,25 +310,25 @@ TEST(RtPlan, PosedBlasPerMovingInstanceWorldSpaceOnlyWhenSkinned) {
 // EXT_mesh_gpu_instancing: one TLAS candidate per (node, row, glTF mesh), placed at
 // the pose's node transform times the row's T * R * S.
 TEST(RtPlan, EveryInstancingRowIsATlasInstanceAtNodeWorldTimesRow) {
-    Scene scene;
+    scene::Scene scene;
     scene.materials.resize(1);
     scene.nodes.resize(1);
-    NodeInstancing rows;
+    scene::NodeInstancing rows;
     for (int r = 0; r < 3; ++r) {
-        InstanceRow row;
+        scene::InstanceRow row;
         row.translation = glm::vec3(float(r), 0.0f, 0.0f);
         row.scale = glm::vec3(float(r + 1));
         rows.rows.push_back(row);
     }
     scene.nodes[0].instancing = rows;
     for (std::uint32_t i = 0; i < 2; ++i) { // glTF mesh 0: two primitives
-        Mesh m;
+        scene::Mesh m;
         m.group_id = 0;
         scene.meshes.push_back(m);
     }
     for (std::int32_t r = 0; r < 3; ++r)
         for (std::uint32_t mesh = 0; mesh < 2; ++mesh) {
-            MeshInstance inst;
+            scene::MeshInstance inst;
             inst.mesh_id = mesh;
             inst.row = r;
             inst.world = rows.rows[std::size_t(r)].matrix();

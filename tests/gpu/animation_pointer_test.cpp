@@ -26,9 +26,9 @@ constexpr std::size_t kSlots = 14;              // extension texture slots anima
 constexpr std::size_t kValid = 18 + kSlots + 2; // the file's valid channels
 constexpr float kPi = 3.14159265358979f;
 
-std::unique_ptr<Scene> extensions_file() {
+std::unique_ptr<scene::Scene> extensions_file() {
     const std::string path = (data_dir() / "animation_pointer" / "extensions.gltf").string();
-    LoadResult r = load_scene(path);
+    scene::LoadResult r = scene::load_scene(path);
     EXPECT_TRUE(r) << path << ": " << r.error;
     return std::move(r.scene);
 }
@@ -51,13 +51,13 @@ float attenuation_distance(float t) {
 }
 
 TEST(AnimationPointerExtensions, EveryObjectModelPointerResolvesAndTheRestAreWarned) {
-    std::unique_ptr<Scene> s = extensions_file();
+    std::unique_ptr<scene::Scene> s = extensions_file();
     ASSERT_TRUE(s);
     ASSERT_EQ(s->animations.size(), 1u);
-    const Animation& a = s->animations[0];
+    const scene::Animation& a = s->animations[0];
     ASSERT_EQ(a.pointers.size(), kValid);
-    for (const PointerChannel& c : a.pointers) {
-        EXPECT_EQ(pointer_of(c.target), c.pointer) << "resolved to another property";
+    for (const scene::PointerChannel& c : a.pointers) {
+        EXPECT_EQ(scene::pointer_of(c.target), c.pointer) << "resolved to another property";
         EXPECT_EQ(c.target.object, 0u);
     }
     // Each refused channel: a warning naming its channel's pointer and the reason.
@@ -81,16 +81,17 @@ TEST(AnimationPointerExtensions, EveryObjectModelPointerResolvesAndTheRestAreWar
 }
 
 TEST(AnimationPointerExtensions, PoseSamplesAndAppliesEveryExtensionValue) {
-    std::unique_ptr<Scene> s = extensions_file();
+    std::unique_ptr<scene::Scene> s = extensions_file();
     ASSERT_TRUE(s);
     for (const float t : {0.5f, 1.5f}) {
         SCOPED_TRACE("t = " + std::to_string(t));
-        const Pose pose = evaluate_pose(*s, 0, t);
+        const scene::Pose pose = scene::evaluate_pose(*s, 0, t);
         ASSERT_EQ(pose.properties.size(), kValid);
-        std::vector<MaterialInstance> materials = s->materials;
-        const auto changed = apply_animated_properties(pose.properties, materials, {}, {}, nullptr);
+        std::vector<scene::MaterialInstance> materials = s->materials;
+        const auto changed =
+            scene::apply_animated_properties(pose.properties, materials, {}, {}, nullptr);
         EXPECT_EQ(changed, std::vector<std::uint32_t>{0});
-        const MaterialInstance& m = materials[0];
+        const scene::MaterialInstance& m = materials[0];
         EXPECT_FLOAT_EQ(m.clearcoat->factor, lerp(0, 1, t));
         EXPECT_FLOAT_EQ(m.clearcoat->roughness_factor, step(0.2f, 0.6f, t));
         EXPECT_FLOAT_EQ(m.clearcoat->normal_scale, lerp(1, 0.5f, t));
@@ -147,7 +148,7 @@ class AnimationPointerGpu : public GpuTest {};
 // from the device and must hold the specification's values (the GPU record the shaders
 // read), while the material without extensions still has no block.
 TEST_F(AnimationPointerGpu, AnimatedExtensionValuesReachTheGpuRecords) {
-    std::unique_ptr<Scene> s = extensions_file();
+    std::unique_ptr<scene::Scene> s = extensions_file();
     ASSERT_TRUE(s);
     render::RendererOptions options;
     options.textures = test_texture_settings();
@@ -159,7 +160,7 @@ TEST_F(AnimationPointerGpu, AnimatedExtensionValuesReachTheGpuRecords) {
     f.height = 48;
     for (const float t : {0.5f, 1.5f, 0.25f}) {
         SCOPED_TRACE("t = " + std::to_string(t));
-        f.pose = std::make_shared<const Pose>(evaluate_pose(*s, 0, t));
+        f.pose = std::make_shared<const scene::Pose>(scene::evaluate_pose(*s, 0, t));
         r.render(f);
         const auto back = render::read_material(r, *s, 0);
         ASSERT_TRUE(back);

@@ -56,7 +56,7 @@ Camera fixed_camera(const sherpa::core::Aabb& bounds) {
 
 struct Hit {
     float t = INFINITY;
-    const sherpa::MeshInstance* instance = nullptr;
+    const sherpa::scene::MeshInstance* instance = nullptr;
     std::size_t triangle = 0; // first index of the triangle hit
     glm::vec2 uv{0};
     bool front = true;
@@ -64,10 +64,10 @@ struct Hit {
 
 // World-space positions per instance, computed once per scene.
 using WorldPositions = std::vector<std::vector<glm::vec3>>;
-WorldPositions world_positions(const sherpa::Scene& scene) {
+WorldPositions world_positions(const sherpa::scene::Scene& scene) {
     WorldPositions out;
-    for (const sherpa::MeshInstance& inst : scene.instances) {
-        const sherpa::Mesh& mesh = scene.meshes[inst.mesh_id];
+    for (const sherpa::scene::MeshInstance& inst : scene.instances) {
+        const sherpa::scene::Mesh& mesh = scene.meshes[inst.mesh_id];
         auto& world = out.emplace_back(mesh.vertices.size());
         for (std::size_t i = 0; i < world.size(); ++i)
             world[i] = glm::vec3(inst.world * glm::vec4(mesh.vertices[i].position, 1.0f));
@@ -76,15 +76,15 @@ WorldPositions world_positions(const sherpa::Scene& scene) {
 }
 
 // Nearest triangle along the ray through pixel (x, y) (pixel centres, row 0 on top).
-Hit cast(const sherpa::Scene& scene, const WorldPositions& positions, const Camera& c, float x,
-         float y, std::uint32_t size) {
+Hit cast(const sherpa::scene::Scene& scene, const WorldPositions& positions, const Camera& c,
+         float x, float y, std::uint32_t size) {
     const float nx = 2.0f * (x + 0.5f) / float(size) - 1.0f;
     const float ny = 1.0f - 2.0f * (y + 0.5f) / float(size);
     const glm::vec3 dir =
         glm::normalize(c.forward + nx * c.tan_half * c.right + ny * c.tan_half * c.up);
     Hit best;
     for (std::size_t k = 0; k < scene.instances.size(); ++k) {
-        const sherpa::MeshInstance& inst = scene.instances[k];
+        const sherpa::scene::MeshInstance& inst = scene.instances[k];
         // Slab test against the instance's world bounds first.
         float t0 = 0, t1 = best.t;
         for (int a = 0; a < 3; ++a) {
@@ -95,7 +95,7 @@ Hit cast(const sherpa::Scene& scene, const WorldPositions& positions, const Came
             t0 = std::max(t0, ta), t1 = std::min(t1, tb);
         }
         if (t0 > t1) continue;
-        const sherpa::Mesh& mesh = scene.meshes[inst.mesh_id];
+        const sherpa::scene::Mesh& mesh = scene.meshes[inst.mesh_id];
         const std::vector<glm::vec3>& world = positions[k];
         for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
             const std::uint32_t i0 = mesh.indices[i], i1 = mesh.indices[i + 1],
@@ -132,9 +132,9 @@ int linear_to_srgb8(float c) {
     return int(std::lround(s * 255.0f));
 }
 
-int wrap(int i, int n, sherpa::AddressMode mode) {
-    if (mode == sherpa::AddressMode::ClampToEdge) return std::clamp(i, 0, n - 1);
-    if (mode == sherpa::AddressMode::MirroredRepeat) {
+int wrap(int i, int n, sherpa::scene::AddressMode mode) {
+    if (mode == sherpa::scene::AddressMode::ClampToEdge) return std::clamp(i, 0, n - 1);
+    if (mode == sherpa::scene::AddressMode::MirroredRepeat) {
         const int period = ((i % (2 * n)) + 2 * n) % (2 * n);
         return period < n ? period : 2 * n - 1 - period;
     }
@@ -183,7 +183,7 @@ struct Expected {
 // mean, if they all lie within kSmooth levels of each other in every channel (alpha
 // too), else nullopt.
 std::optional<Expected> smooth_texels(const Pyramid& pyramid, glm::vec2 uv, float footprint,
-                                      const sherpa::SamplerDesc& sampler) {
+                                      const sherpa::scene::SamplerDesc& sampler) {
     const int first = std::clamp(int(std::floor(std::log2(std::max(footprint, 1.0f)))), 0,
                                  int(pyramid.size()) - 1);
     const int last = std::min(first + 1, int(pyramid.size()) - 1);
@@ -229,9 +229,9 @@ TEST_P(BaseColorAgainstSourceImages, RenderedTexelsEqualTheFilesUnassociatedColo
     const std::string model = GetParam().name;
     const std::uint32_t size = GetParam().size, stride = GetParam().stride;
     const std::string path = sherpa::test::gltf_asset(model);
-    const sherpa::LoadResult loaded = sherpa::load_scene(path);
+    const sherpa::scene::LoadResult loaded = sherpa::scene::load_scene(path);
     ASSERT_TRUE(loaded) << loaded.error;
-    const sherpa::Scene& scene = *loaded.scene;
+    const sherpa::scene::Scene& scene = *loaded.scene;
     const Camera cam = fixed_camera(scene.bounds);
     const glm::vec3 target = cam.eye + cam.forward;
 
@@ -261,13 +261,13 @@ TEST_P(BaseColorAgainstSourceImages, RenderedTexelsEqualTheFilesUnassociatedColo
             const Hit h = cast(scene, positions, cam, float(x), float(y), size);
             if (!h.instance) continue;
             ++tally.hits;
-            const sherpa::MaterialInstance& m = scene.materials[h.instance->material_id];
-            const sherpa::Mesh& mesh = scene.meshes[h.instance->mesh_id];
+            const sherpa::scene::MaterialInstance& m = scene.materials[h.instance->material_id];
+            const sherpa::scene::Mesh& mesh = scene.meshes[h.instance->mesh_id];
             // Only what base colour = factor x texel describes: opaque, UV set 0, no
             // transform or vertex colours, front faces (or double-sided).
             if (!m.base_color.present() || m.base_color.tex_coord != 0 ||
                 m.base_color.transform.present || !mesh.colors.empty() ||
-                m.alpha_mode != sherpa::AlphaMode::Opaque || (!h.front && !m.double_sided)) {
+                m.alpha_mode != sherpa::scene::AlphaMode::Opaque || (!h.front && !m.double_sided)) {
                 ++tally.unsupported;
                 continue;
             }
@@ -280,7 +280,8 @@ TEST_P(BaseColorAgainstSourceImages, RenderedTexelsEqualTheFilesUnassociatedColo
                 ++tally.edge;
                 continue;
             }
-            const sherpa::TextureRecord& tex = scene.textures[std::size_t(m.base_color.texture)];
+            const sherpa::scene::TextureRecord& tex =
+                scene.textures[std::size_t(m.base_color.texture)];
             auto& src = sources[std::size_t(tex.image)];
             if (!src) {
                 const auto file = base_dir / scene.images[std::size_t(tex.image)].uri;

@@ -60,7 +60,7 @@ TEST(ReverseZTest, NearMapsToOneAndInfinityToZero) {
 }
 
 TEST(AutoFrameTest, EveryBoundsCornerIsInsideTheFrustum) {
-    Scene scene;
+    scene::Scene scene;
     scene.bounds = core::Aabb::from_min_max(glm::vec3(-3, 0, -1), glm::vec3(5, 2, 1));
     const render::CameraView v = render::resolve_camera(CameraSpec{}, scene, 16.0f / 9.0f);
     for (int i = 0; i < 8; ++i) {
@@ -74,7 +74,7 @@ TEST(AutoFrameTest, EveryBoundsCornerIsInsideTheFrustum) {
 }
 
 TEST(GltfCameraTest, UnknownIndexIsAnError) {
-    Scene scene;
+    scene::Scene scene;
     CameraSpec s;
     s.kind = CameraSpec::Kind::Gltf;
     s.gltf_index = 0;

@@ -121,7 +121,7 @@ TEST_F(ComparisonTest, RasterAgainstRaysMatchesCpuStatisticsAndHeatColours) {
 // A known difference: two empty scenes whose clear colours differ by a known byte
 // amount in red only; the heat colour at each heat scale is heat_colour()'s.
 TEST_F(ComparisonTest, ShaderHeatAgreesWithHeatColour) {
-    Scene empty;
+    scene::Scene empty;
     auto a = make_renderer(empty), b = make_renderer(empty);
     render::FrameRequest sa;
     sa.width = 8;
@@ -155,7 +155,7 @@ TEST_F(ComparisonTest, ShaderHeatAgreesWithHeatColour) {
 TEST_F(ComparisonTest, DegenerateSizesDividersAndSidesNeitherCrashNorLie) {
     auto scene = load(gltf_asset("Box"));
     ASSERT_TRUE(scene);
-    Scene empty;
+    scene::Scene empty;
     auto a = make_renderer(*scene), b = make_renderer(empty);
     for (auto [w, h] : {std::pair{1u, 1u}, std::pair{3u, 1u}, std::pair{17u, 5u}}) {
         render::FrameRequest sa = small_settings(*scene, render::DebugView::Normal);

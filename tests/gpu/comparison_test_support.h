@@ -48,15 +48,15 @@ inline CpuStats cpu_stats(const std::vector<std::uint8_t>& a, const std::vector<
     return s;
 }
 
-inline render::FrameRequest small_settings(const Scene& scene, render::DebugView view) {
+inline render::FrameRequest small_settings(const scene::Scene& scene, render::DebugView view) {
     render::FrameRequest s;
     s.width = kW;
     s.height = kH;
     s.shadows = false;
     s.view = view;
-    FramingOptions framing;
+    scene::FramingOptions framing;
     framing.aspect = float(kW) / float(kH);
-    s.camera = render::explicit_camera(frame_box(scene.bounds, framing));
+    s.camera = render::explicit_camera(scene::frame_box(scene.bounds, framing));
     return s;
 }
 
@@ -141,7 +141,7 @@ struct RasterAndRays {
 
 class ComparisonTest : public GpuTest {
 protected:
-    RasterAndRays raster_and_rays(const Scene& a_scene, const Scene& b_scene,
+    RasterAndRays raster_and_rays(const scene::Scene& a_scene, const scene::Scene& b_scene,
                                   render::DebugView view) {
         RasterAndRays r{make_renderer(a_scene),
                         make_renderer(b_scene, true),
@@ -155,7 +155,7 @@ protected:
         r.b->render(r.sb, &r.alone_b);
         return r;
     }
-    std::unique_ptr<render::Renderer> make_renderer(const Scene& scene, bool rt = false) {
+    std::unique_ptr<render::Renderer> make_renderer(const scene::Scene& scene, bool rt = false) {
         render::RendererOptions options;
         options.ray_tracing = rt;
         options.textures = test_texture_settings();

@@ -47,7 +47,7 @@ TEST(AutoFramingTest, EverySampleModelIsInViewFromOutsideAndAbove) {
     const auto models = all_gltf_models();
     ASSERT_GE(models.size(), 20u);
     for (const auto& name : models) {
-        const LoadResult r = load_scene(gltf_asset(name));
+        const scene::LoadResult r = scene::load_scene(gltf_asset(name));
         ASSERT_TRUE(r) << name << ": " << r.error;
         ASSERT_TRUE(r.scene->bounds.valid()) << name;
         for (float aspect : {0.5f, 1.0f, 16.0f / 9.0f, 3.0f}) {
@@ -61,11 +61,11 @@ TEST(AutoFramingTest, EverySampleModelIsInViewFromOutsideAndAbove) {
 TEST(AutoFramingTest, LooksAtTheThinnerSideAsTheFrontFromThreeQuartersAbove) {
     // Wide across X (shoulders), thin along Z: the front is +Z.
     const glm::vec3 z_front =
-        auto_view_direction(core::Aabb::from_min_max({-1, 0, -0.2f}, {1, 2, 0.2f}));
+        scene::auto_view_direction(core::Aabb::from_min_max({-1, 0, -0.2f}, {1, 2, 0.2f}));
     EXPECT_GT(z_front.z, std::abs(z_front.x));
     // Thin along X: the model faces +X and is not seen in profile.
     const glm::vec3 x_front =
-        auto_view_direction(core::Aabb::from_min_max({-0.2f, 0, -1}, {0.2f, 2, 1}));
+        scene::auto_view_direction(core::Aabb::from_min_max({-0.2f, 0, -1}, {0.2f, 2, 1}));
     EXPECT_GT(x_front.x, std::abs(x_front.z));
     for (glm::vec3 d : {z_front, x_front}) {
         // Raised (elevation 20..35 degrees) and off the axis (a 3/4 view: both horizontal
@@ -76,8 +76,8 @@ TEST(AutoFramingTest, LooksAtTheThinnerSideAsTheFrontFromThreeQuartersAbove) {
         EXPECT_GT(std::abs(h.y), 0.34f);
     }
     // A hint wins over the extents.
-    const glm::vec3 hinted =
-        auto_view_direction(core::Aabb::from_min_max({-1, 0, -0.2f}, {1, 2, 0.2f}), {-1, 0, 0});
+    const glm::vec3 hinted = scene::auto_view_direction(
+        core::Aabb::from_min_max({-1, 0, -0.2f}, {1, 2, 0.2f}), {-1, 0, 0});
     EXPECT_LT(hinted.x, -std::abs(hinted.z));
 }
 
@@ -85,9 +85,9 @@ TEST(AutoFramingTest, FramingAlongAGivenDirectionKeepsItAndFits) {
     // What the editor's Frame selection does: keep the viewing direction.
     const core::Aabb box = core::Aabb::from_min_max({-3, -1, -2}, {5, 4, 1});
     const glm::vec3 to_eye = glm::normalize(glm::vec3(-1.0f, -0.8f, 2.0f));
-    FramingOptions options;
+    scene::FramingOptions options;
     options.aspect = 1.5f;
-    const CameraSpec s = frame_box_along(box, to_eye, options);
+    const scene::CameraSpec s = scene::frame_box_along(box, to_eye, options);
     EXPECT_NEAR(glm::dot(glm::normalize(s.eye - s.target), to_eye), 1.0f, 1e-5f);
     render::CameraView v;
     v.view = s.view();
@@ -123,9 +123,9 @@ TEST(AutoFramingTest, PointsFillTheTighterSideAndAreCentred) {
     for (const glm::vec3 to_eye :
          {glm::vec3(0.3f, 0.5f, 1.0f), glm::vec3(-1.0f, 0.2f, -0.3f), glm::vec3(0.0f, 1.0f, 0.0f)})
         for (float aspect : {0.5f, 1.0f, 16.0f / 9.0f, 3.0f}) {
-            FramingOptions options;
+            scene::FramingOptions options;
             options.aspect = aspect;
-            const CameraSpec s = frame_points_along(points, to_eye, options);
+            const scene::CameraSpec s = scene::frame_points_along(points, to_eye, options);
             EXPECT_NEAR(glm::dot(glm::normalize(s.eye - s.target), glm::normalize(to_eye)), 1.0f,
                         1e-5f);
             const glm::mat4 vp = s.view_projection();
@@ -157,11 +157,12 @@ TEST(AutoFramingTest, PointsFillTheTighterSideAndAreCentred) {
 // No finite point: the unit cube's framing, never a NaN camera.
 TEST(AutoFramingTest, NoFinitePointsFrameTheUnitCube) {
     const std::vector<glm::vec3> none{glm::vec3(NAN), glm::vec3(INFINITY, 0.0f, 0.0f)};
-    const CameraSpec s = frame_points_along(none, {0, 0, 1}, FramingOptions{});
+    const scene::CameraSpec s = scene::frame_points_along(none, {0, 0, 1}, scene::FramingOptions{});
     EXPECT_TRUE(core::is_finite(s.eye));
     EXPECT_TRUE(core::is_finite(s.target));
     EXPECT_GT(glm::length(s.eye - s.target), 1.0f);
-    const CameraSpec empty = frame_points_along({}, {0, 0, 1}, FramingOptions{});
+    const scene::CameraSpec empty =
+        scene::frame_points_along({}, {0, 0, 1}, scene::FramingOptions{});
     EXPECT_EQ(empty.eye, s.eye);
 }
 

@@ -15,7 +15,7 @@ namespace {
 class GpuCullingTest : public GpuTest {
 protected:
     // Index ranges as a GpuScene would lay them out; identity GPU instance ids.
-    static std::vector<render::GpuMesh> mesh_ranges(const Scene& s) {
+    static std::vector<render::GpuMesh> mesh_ranges(const scene::Scene& s) {
         std::vector<render::GpuMesh> out(s.meshes.size());
         std::uint32_t first = 0;
         for (std::size_t m = 0; m < s.meshes.size(); ++m) {
@@ -25,7 +25,7 @@ protected:
         }
         return out;
     }
-    static std::vector<core::Aabb> bounds(const Scene& s) {
+    static std::vector<core::Aabb> bounds(const scene::Scene& s) {
         std::vector<core::Aabb> b;
         for (const auto& i : s.instances) b.push_back(i.world_bounds);
         return b;
@@ -38,7 +38,7 @@ protected:
     // Each batch's compacted instance ids are exactly its objects flagged visible
     // (as multisets: the order within a batch is the GPU's). Returns the ids kept.
     static std::uint32_t expect_batches_hold_visible(const render::GpuCuller& culler,
-                                                     const MeshPass& pass,
+                                                     const scene::MeshPass& pass,
                                                      const render::GpuCullReadback& r,
                                                      const std::string& what) {
         const auto batches = pass.batches();
@@ -61,21 +61,23 @@ protected:
 TEST_F(GpuCullingTest, AgreesWithTheCpuPathForEveryMethod) {
     auto scene = load("builtin:grid?n=10000");
     ASSERT_TRUE(scene);
-    ScenePasses passes = build_mesh_passes(*scene);
+    scene::ScenePasses passes = scene::build_mesh_passes(*scene);
     render::GpuCuller culler(context(), renderer().resources());
     culler.build(passes.forward, *scene);
     ASSERT_EQ(culler.object_count(), scene->instances.size());
-    const CullInput input = prepare_cull_input(*scene);
+    const scene::CullInput input = scene::prepare_cull_input(*scene);
     for (const char* cam :
          {"eye=0,8,0:target=1,7.8,0.35:fov=50", "eye=-80,40,-80:target=0,0,0",
           "eye=0,0.5,0:target=0,0.5,-1:fov=120:far=30", "eye=10,200,10:target=0,0,0:fov=20"}) {
-        CameraSpec c;
+        scene::CameraSpec c;
         std::string error;
         ASSERT_TRUE(parse_camera_spec(cam, c, error)) << error;
-        const Frustum f = frustum_from_view_projection(c.view_projection());
-        for (CullMethod m : {CullMethod::Sphere, CullMethod::PVertex, CullMethod::Exact}) {
+        const scene::Frustum f = scene::frustum_from_view_projection(c.view_projection());
+        for (scene::CullMethod m :
+             {scene::CullMethod::Sphere, scene::CullMethod::PVertex, scene::CullMethod::Exact}) {
             std::vector<std::uint8_t> cpu(input.boxes.size());
-            const CullCounts counts = cull_boxes(f, input.boxes, m, core::SimdLevel::Avx512, cpu);
+            const scene::CullCounts counts =
+                scene::cull_boxes(f, input.boxes, m, core::SimdLevel::Avx512, cpu);
             const render::GpuCullReadback gpu_result = culler.run(f, m);
             std::size_t differences = 0, gpu_visible = 0;
             for (std::size_t k = 0; k < gpu_result.visible.size(); ++k) {
@@ -95,14 +97,14 @@ TEST_F(GpuCullingTest, AgreesWithTheCpuPathForEveryMethod) {
 TEST_F(GpuCullingTest, BatchesHoldExactlyTheirVisibleObjects) {
     auto scene = load("builtin:default");
     ASSERT_TRUE(scene);
-    ScenePasses passes = build_mesh_passes(*scene);
+    scene::ScenePasses passes = scene::build_mesh_passes(*scene);
     render::GpuCuller culler(context(), renderer().resources());
     culler.build(passes.forward, *scene);
-    CameraSpec c;
+    scene::CameraSpec c;
     std::string error;
     ASSERT_TRUE(parse_camera_spec("eye=0,3,9:target=0,1,0", c, error)) << error;
-    const render::GpuCullReadback r =
-        culler.run(frustum_from_view_projection(c.view_projection()), CullMethod::Exact);
+    const render::GpuCullReadback r = culler.run(
+        scene::frustum_from_view_projection(c.view_projection()), scene::CullMethod::Exact);
     expect_batches_hold_visible(culler, passes.forward, r, "builtin:default");
     if (context().info().timestamps) {
         EXPECT_GE(r.gpu_ms, 0.0);
@@ -116,16 +118,17 @@ TEST_F(GpuCullingTest, BatchesHoldExactlyTheirVisibleObjects) {
 TEST_F(GpuCullingTest, LongBatchesMeetingInsideASubgroupHoldExactlyTheirVisibleObjects) {
     auto scene = load("builtin:grid?n=1000");
     ASSERT_TRUE(scene);
-    ScenePasses passes = build_mesh_passes(*scene);
+    scene::ScenePasses passes = scene::build_mesh_passes(*scene);
     render::GpuCuller culler(context(), renderer().resources());
     culler.build(passes.forward, *scene);
     ASSERT_EQ(passes.forward.batches().size(), 3u);
     for (const char* spec : {"eye=0,6,20:target=0,0,0", "eye=-30,4,-30:target=10,0,5:fov=35"}) {
-        CameraSpec c;
+        scene::CameraSpec c;
         std::string error;
         ASSERT_TRUE(parse_camera_spec(spec, c, error)) << error;
-        const Frustum f = frustum_from_view_projection(c.view_projection());
-        for (CullMethod m : {CullMethod::Sphere, CullMethod::PVertex, CullMethod::Exact}) {
+        const scene::Frustum f = scene::frustum_from_view_projection(c.view_projection());
+        for (scene::CullMethod m :
+             {scene::CullMethod::Sphere, scene::CullMethod::PVertex, scene::CullMethod::Exact}) {
             const std::uint32_t kept = expect_batches_hold_visible(
                 culler, passes.forward, culler.run(f, m),
                 std::string(spec) + ", method " + std::string(to_string(m)));
@@ -138,17 +141,17 @@ TEST_F(GpuCullingTest, LongBatchesMeetingInsideASubgroupHoldExactlyTheirVisibleO
 TEST_F(GpuCullingTest, InvalidBoxesAreKeptLikeOnTheCpu) {
     auto scene = load("builtin:default");
     ASSERT_TRUE(scene);
-    ScenePasses passes = build_mesh_passes(*scene);
+    scene::ScenePasses passes = scene::build_mesh_passes(*scene);
     auto b = bounds(*scene);
     b[0] = core::Aabb::from_min_max({NAN, 0, 0}, {1, 1, 1});
     b[1] = core::Aabb::from_min_max({5, 5, 5}, {-5, -5, -5});
     render::GpuCuller culler(context(), renderer().resources());
     culler.build(passes.forward, b, identity(b.size()), mesh_ranges(*scene));
-    CameraSpec c;
+    scene::CameraSpec c;
     std::string error;
     ASSERT_TRUE(parse_camera_spec("eye=0,1000,0:target=0,2000,1", c, error)) << error; // looks away
-    const render::GpuCullReadback r =
-        culler.run(frustum_from_view_projection(c.view_projection()), CullMethod::PVertex);
+    const render::GpuCullReadback r = culler.run(
+        scene::frustum_from_view_projection(c.view_projection()), scene::CullMethod::PVertex);
     for (std::size_t k = 0; k < r.visible.size(); ++k) {
         const std::uint32_t inst = culler.object_instances()[k];
         EXPECT_EQ(r.visible[k], inst <= 1 ? 1 : 0) << "instance " << inst;

@@ -40,7 +40,7 @@ inline render::SceneSetup streams_setup(render::StreamPolicy streams) {
 
 // `scene`'s textures prepared for `device` with `settings`, as sherpa-cli render does.
 inline std::shared_ptr<const tex::PreparedTextureSet>
-prepare_for_device(const Scene& scene, const gpu::DeviceInfo& device,
+prepare_for_device(const scene::Scene& scene, const gpu::DeviceInfo& device,
                    const render::TextureSettings& settings) {
     return tex::prepare_scene_textures(scene, render::texture_target(device, settings),
                                        render::texture_pipeline_options(settings));
@@ -99,8 +99,8 @@ protected:
         return rgba;
     }
 
-    static std::unique_ptr<Scene> load(const std::string& spec) {
-        LoadResult r = load_scene(spec);
+    static std::unique_ptr<scene::Scene> load(const std::string& spec) {
+        scene::LoadResult r = scene::load_scene(spec);
         EXPECT_TRUE(r) << spec << ": " << r.error;
         return std::move(r.scene);
     }

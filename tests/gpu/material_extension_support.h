@@ -10,16 +10,18 @@
 
 namespace sherpa::test {
 
-inline const ValidationMessage* message_at(const Scene& s, const std::string& pointer) {
-    for (const ValidationMessage& m : s.validation.messages)
+inline const scene::ValidationMessage* message_at(const scene::Scene& s,
+                                                  const std::string& pointer) {
+    for (const scene::ValidationMessage& m : s.validation.messages)
         if (m.pointer == pointer) return &m;
     return nullptr;
 }
 
-inline render::MaterialExtensionBuffer extension_layout(const Scene& s) {
-    return render::build_material_extensions(s.materials, [](const TextureSlot& slot, TextureRole) {
-        return slot.present() ? 100u + std::uint32_t(slot.texture) : gpu::kWhiteTexture;
-    });
+inline render::MaterialExtensionBuffer extension_layout(const scene::Scene& s) {
+    return render::build_material_extensions(
+        s.materials, [](const scene::TextureSlot& slot, scene::TextureRole) {
+            return slot.present() ? 100u + std::uint32_t(slot.texture) : gpu::kWhiteTexture;
+        });
 }
 
 } // namespace sherpa::test

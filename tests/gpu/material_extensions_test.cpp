@@ -23,21 +23,21 @@ namespace {
 
 using namespace sherpa;
 
-LoadResult load_data(const std::string& name) {
-    return load_scene((test::data_dir() / name).string());
+scene::LoadResult load_data(const std::string& name) {
+    return scene::load_scene((test::data_dir() / name).string());
 }
 
-const MaterialInstance& material(const Scene& s, const std::string& name) {
-    for (const MaterialInstance& m : s.materials)
+const scene::MaterialInstance& material(const scene::Scene& s, const std::string& name) {
+    for (const scene::MaterialInstance& m : s.materials)
         if (m.name == name) return m;
     ADD_FAILURE() << "no material " << name;
     return s.materials.front();
 }
 
 TEST(MaterialExtensions, IorAndSpecularAreDrawnNotWarnedAsMissing) {
-    EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_ior"));
-    EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_specular"));
-    const LoadResult r = load_data("material_sweeps/ior_sweep.gltf");
+    EXPECT_TRUE(scene::is_supported_gltf_extension("KHR_materials_ior"));
+    EXPECT_TRUE(scene::is_supported_gltf_extension("KHR_materials_specular"));
+    const scene::LoadResult r = load_data("material_sweeps/ior_sweep.gltf");
     ASSERT_TRUE(r) << r.error;
     for (const std::string& w : r.scene->warnings)
         EXPECT_EQ(w.find("not implemented"), std::string::npos) << w;
@@ -48,15 +48,15 @@ TEST(MaterialExtensions, IorAndSpecularAreDrawnNotWarnedAsMissing) {
 }
 
 TEST(MaterialExtensions, BadValuesAreWarnedWithTheirPointerAndFallBack) {
-    const LoadResult r = load_data("material_extensions_bad.gltf");
+    const scene::LoadResult r = load_data("material_extensions_bad.gltf");
     ASSERT_TRUE(r) << r.error;
-    const Scene& s = *r.scene;
+    const scene::Scene& s = *r.scene;
     // Negative, below 1, infinite (as a float) and non-number ior: warned, 1.5 drawn.
     for (int m : {0, 1, 2, 8}) {
         const std::string p =
             "/materials/" + std::to_string(m) + "/extensions/KHR_materials_ior/ior";
         EXPECT_NE(test::message_at(s, p), nullptr) << p;
-        EXPECT_FLOAT_EQ(*s.materials[std::size_t(m)].ior, kDefaultIor) << p;
+        EXPECT_FLOAT_EQ(*s.materials[std::size_t(m)].ior, scene::kDefaultIor) << p;
     }
     // ior 0 is valid (F0 = 1): no message.
     EXPECT_EQ(test::message_at(s, "/materials/5/extensions/KHR_materials_ior/ior"), nullptr);
@@ -76,7 +76,7 @@ TEST(MaterialExtensions, BadValuesAreWarnedWithTheirPointerAndFallBack) {
         nullptr);
     // A texture index out of range: the material is drawn with default values, said.
     bool defaulted = false;
-    for (const ValidationMessage& m : s.validation.messages)
+    for (const scene::ValidationMessage& m : s.validation.messages)
         defaulted |= m.code == "SHERPA_MATERIAL_DEFAULTED" &&
                      m.message.find("specularTexture") != std::string::npos;
     EXPECT_TRUE(defaulted);
@@ -86,13 +86,13 @@ TEST(MaterialExtensions, BadValuesAreWarnedWithTheirPointerAndFallBack) {
 }
 
 TEST(MaterialExtensions, OnlyMaterialsThatUseAnExtensionHaveBlocks) {
-    const LoadResult r = load_data("material_extensions_bad.gltf");
+    const scene::LoadResult r = load_data("material_extensions_bad.gltf");
     ASSERT_TRUE(r) << r.error;
     const render::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     ASSERT_EQ(b.places.size(), r.scene->materials.size());
     std::size_t words = 0;
     for (std::size_t i = 0; i < b.places.size(); ++i) {
-        const MaterialInstance& m = r.scene->materials[i];
+        const scene::MaterialInstance& m = r.scene->materials[i];
         const render::MaterialExtensionPlace& p = b.places[i];
         EXPECT_EQ(p.any(), m.ior.has_value() || m.specular.has_value() || m.clearcoat.has_value() ||
                                m.sheen.has_value() || m.anisotropy.has_value() ||
@@ -132,7 +132,7 @@ TEST(MaterialExtensions, OnlyMaterialsThatUseAnExtensionHaveBlocks) {
 }
 
 TEST(MaterialExtensions, ASceneWithoutExtensionsHasNoBytes) {
-    const LoadResult r = load_scene(test::gltf_asset("DamagedHelmet"));
+    const scene::LoadResult r = scene::load_scene(test::gltf_asset("DamagedHelmet"));
     ASSERT_TRUE(r) << r.error;
     const render::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.bytes(), 0u);
@@ -140,19 +140,19 @@ TEST(MaterialExtensions, ASceneWithoutExtensionsHasNoBytes) {
 }
 
 TEST(MaterialExtensions, AnIorOnlyMaterialPaysSixtyFourBytes) {
-    const LoadResult r = load_data("material_sweeps/ior_sweep.gltf");
+    const scene::LoadResult r = load_data("material_sweeps/ior_sweep.gltf");
     ASSERT_TRUE(r) << r.error;
     // Its 48-byte index (three words: GPUExtensionIndex) and its 16-byte block.
     EXPECT_EQ(test::extension_layout(*r.scene).bytes(), 10u * 64u);
 }
 
 TEST(MaterialExtensions, ClearcoatIsReadAndPacked) {
-    EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_clearcoat"));
-    const LoadResult r = load_data("material_sweeps/clearcoat_textures.gltf");
+    EXPECT_TRUE(scene::is_supported_gltf_extension("KHR_materials_clearcoat"));
+    const scene::LoadResult r = load_data("material_sweeps/clearcoat_textures.gltf");
     ASSERT_TRUE(r) << r.error;
     for (const std::string& w : r.scene->warnings)
         EXPECT_EQ(w.find("not implemented"), std::string::npos) << w;
-    const MaterialInstance& m = r.scene->materials.at(0);
+    const scene::MaterialInstance& m = r.scene->materials.at(0);
     ASSERT_TRUE(m.clearcoat.has_value());
     EXPECT_FLOAT_EQ(m.clearcoat->factor, 1.0f);
     EXPECT_FLOAT_EQ(m.clearcoat->roughness_factor, 1.0f);
@@ -160,8 +160,8 @@ TEST(MaterialExtensions, ClearcoatIsReadAndPacked) {
     EXPECT_TRUE(m.clearcoat->clearcoat.transform.present);
     EXPECT_EQ(m.clearcoat->normal.texture, 1);
     // The clearcoat normal map alone asks for tangents and the TEXCOORD_0 stream.
-    EXPECT_TRUE(reads_normal_map(m));
-    ASSERT_EQ(extension_texture_slots(m).size(), 3u);
+    EXPECT_TRUE(scene::reads_normal_map(m));
+    ASSERT_EQ(scene::extension_texture_slots(m).size(), 3u);
     const render::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.bytes(), 48u + 128u);
     render::GPUClearcoatBlock c;
@@ -174,9 +174,9 @@ TEST(MaterialExtensions, ClearcoatIsReadAndPacked) {
 }
 
 TEST(MaterialExtensions, BadClearcoatValuesAreWarnedAndFallBack) {
-    const LoadResult r = load_data("material_extensions_bad.gltf");
+    const scene::LoadResult r = load_data("material_extensions_bad.gltf");
     ASSERT_TRUE(r) << r.error;
-    const Scene& s = *r.scene;
+    const scene::Scene& s = *r.scene;
     const std::string cc9 = "/materials/9/extensions/KHR_materials_clearcoat/";
     const std::string cc10 = "/materials/10/extensions/KHR_materials_clearcoat/";
     // -0.5 clamps to 0; a string roughness takes the default 0.
@@ -188,7 +188,7 @@ TEST(MaterialExtensions, BadClearcoatValuesAreWarnedAndFallBack) {
     EXPECT_NE(test::message_at(s, cc10 + "clearcoatFactor"), nullptr);
     EXPECT_NE(test::message_at(s, cc10 + "clearcoatRoughnessFactor"), nullptr);
     EXPECT_NE(test::message_at(s, cc10 + "clearcoatNormalTexture/scale"), nullptr);
-    const MaterialClearcoat& c = *material(s, "clearcoat out of range").clearcoat;
+    const scene::MaterialClearcoat& c = *material(s, "clearcoat out of range").clearcoat;
     EXPECT_FLOAT_EQ(c.factor, 1.0f);
     EXPECT_FLOAT_EQ(c.roughness_factor, 0.0f);
     EXPECT_FLOAT_EQ(c.normal_scale, 1.0f);
@@ -199,16 +199,16 @@ TEST(MaterialExtensions, BadClearcoatValuesAreWarnedAndFallBack) {
 namespace {
 
 TEST(MaterialExtensions, SheenIsReadAndPacked) {
-    EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_sheen"));
-    const LoadResult r = load_data("material_sweeps/sheen_textures.gltf");
+    EXPECT_TRUE(scene::is_supported_gltf_extension("KHR_materials_sheen"));
+    const scene::LoadResult r = load_data("material_sweeps/sheen_textures.gltf");
     ASSERT_TRUE(r) << r.error;
-    const MaterialInstance& m = r.scene->materials.at(0);
+    const scene::MaterialInstance& m = r.scene->materials.at(0);
     ASSERT_TRUE(m.sheen.has_value());
     EXPECT_EQ(m.sheen->color_factor, glm::vec3(1.0f));
     EXPECT_FLOAT_EQ(m.sheen->roughness_factor, 1.0f);
     EXPECT_EQ(m.sheen->color.texture, 0);
     EXPECT_TRUE(m.sheen->roughness.transform.present);
-    EXPECT_EQ(extension_texture_slots(m).size(), 2u);
+    EXPECT_EQ(scene::extension_texture_slots(m).size(), 2u);
     const render::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.bytes(), 48u + 96u);
     render::GPUSheenBlock s;
@@ -220,24 +220,24 @@ TEST(MaterialExtensions, SheenIsReadAndPacked) {
 }
 
 TEST(MaterialExtensions, BadSheenValuesAreWarnedAndFallBack) {
-    const LoadResult r = load_data("material_extensions_bad.gltf");
+    const scene::LoadResult r = load_data("material_extensions_bad.gltf");
     ASSERT_TRUE(r) << r.error;
-    const Scene& s = *r.scene;
+    const scene::Scene& s = *r.scene;
     const std::string at = "/materials/11/extensions/KHR_materials_sheen/";
     EXPECT_NE(test::message_at(s, at + "sheenColorFactor"), nullptr);
     EXPECT_NE(test::message_at(s, at + "sheenRoughnessFactor"), nullptr);
-    const MaterialSheen& sh = *material(s, "bad sheen").sheen;
+    const scene::MaterialSheen& sh = *material(s, "bad sheen").sheen;
     EXPECT_EQ(sh.color_factor, glm::vec3(1.0f, 0.0f, 0.5f));
     EXPECT_FLOAT_EQ(sh.roughness_factor, 0.0f);
 }
 
 TEST(MaterialExtensions, AnisotropyIsReadAndPackedAndAsksForTangents) {
-    EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_anisotropy"));
-    const LoadResult r = load_data("material_sweeps/anisotropy_textures.gltf");
+    EXPECT_TRUE(scene::is_supported_gltf_extension("KHR_materials_anisotropy"));
+    const scene::LoadResult r = load_data("material_sweeps/anisotropy_textures.gltf");
     ASSERT_TRUE(r) << r.error;
     for (const std::string& w : r.scene->warnings)
         EXPECT_EQ(w.find("not implemented"), std::string::npos) << w;
-    const MaterialInstance& m = r.scene->materials.at(0);
+    const scene::MaterialInstance& m = r.scene->materials.at(0);
     ASSERT_TRUE(m.anisotropy.has_value());
     EXPECT_FLOAT_EQ(m.anisotropy->strength, 1.0f);
     EXPECT_FLOAT_EQ(m.anisotropy->rotation, 0.0f);
@@ -245,12 +245,13 @@ TEST(MaterialExtensions, AnisotropyIsReadAndPackedAndAsksForTangents) {
     EXPECT_TRUE(m.anisotropy->texture.transform.present);
     // No normal map, yet the anisotropy's direction lies in the tangent frame: the
     // sphere keeps its authored TANGENT.
-    EXPECT_FALSE(reads_normal_map(m));
-    EXPECT_TRUE(needs_tangents(m));
-    EXPECT_EQ(tangent_uv_set(m), 0u);
-    EXPECT_EQ(r.scene->meshes.at(0).provenance_of(VertexAttribute::Tangent), Provenance::Authored);
-    ASSERT_EQ(extension_texture_slots(m).size(), 1u);
-    EXPECT_EQ(extension_texture_slots(m)[0].role, kRoleLinear);
+    EXPECT_FALSE(scene::reads_normal_map(m));
+    EXPECT_TRUE(scene::needs_tangents(m));
+    EXPECT_EQ(scene::tangent_uv_set(m), 0u);
+    EXPECT_EQ(r.scene->meshes.at(0).provenance_of(scene::VertexAttribute::Tangent),
+              scene::Provenance::Authored);
+    ASSERT_EQ(scene::extension_texture_slots(m).size(), 1u);
+    EXPECT_EQ(scene::extension_texture_slots(m)[0].role, scene::kRoleLinear);
     const render::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.bytes(), 48u + 64u);
     render::GPUAnisotropyBlock a;
@@ -268,14 +269,15 @@ TEST(MaterialExtensions, AnisotropyWithoutAuthoredTangentsGeneratesThem) {
     const std::filesystem::path path =
         std::filesystem::temp_directory_path() / "sherpa_anisotropy_no_tangents.gltf";
     std::ofstream(path) << doc.dump();
-    const LoadResult r = load_scene(path.string());
+    const scene::LoadResult r = scene::load_scene(path.string());
     std::filesystem::remove(path);
     ASSERT_TRUE(r) << r.error;
-    EXPECT_EQ(r.scene->meshes.at(0).provenance_of(VertexAttribute::Tangent), Provenance::Generated);
+    EXPECT_EQ(r.scene->meshes.at(0).provenance_of(scene::VertexAttribute::Tangent),
+              scene::Provenance::Generated);
 }
 
 TEST(MaterialExtensions, AnisotropyRotationIsStoredAsItsCosineAndSine) {
-    const LoadResult r = load_data("material_sweeps/anisotropy_sweep.gltf");
+    const scene::LoadResult r = load_data("material_sweeps/anisotropy_sweep.gltf");
     ASSERT_TRUE(r) << r.error;
     ASSERT_EQ(r.scene->materials.size(), 10u);
     const render::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
@@ -294,9 +296,9 @@ TEST(MaterialExtensions, AnisotropyRotationIsStoredAsItsCosineAndSine) {
 }
 
 TEST(MaterialExtensions, BadAnisotropyValuesAreWarnedAndFallBack) {
-    const LoadResult r = load_data("material_extensions_bad.gltf");
+    const scene::LoadResult r = load_data("material_extensions_bad.gltf");
     ASSERT_TRUE(r) << r.error;
-    const Scene& s = *r.scene;
+    const scene::Scene& s = *r.scene;
     const std::string a12 = "/materials/12/extensions/KHR_materials_anisotropy/";
     const std::string a13 = "/materials/13/extensions/KHR_materials_anisotropy/";
     // 1.5 clamps to 1; a string rotation takes the default 0.
@@ -308,27 +310,27 @@ TEST(MaterialExtensions, BadAnisotropyValuesAreWarnedAndFallBack) {
     // missing: the texture pipeline's warning, the slot reads white.
     EXPECT_NE(test::message_at(s, a13 + "anisotropyStrength"), nullptr);
     EXPECT_NE(test::message_at(s, a13 + "anisotropyRotation"), nullptr);
-    const MaterialAnisotropy& a = *material(s, "anisotropy not finite").anisotropy;
+    const scene::MaterialAnisotropy& a = *material(s, "anisotropy not finite").anisotropy;
     EXPECT_FLOAT_EQ(a.strength, 0.0f);
     EXPECT_FLOAT_EQ(a.rotation, 0.0f);
     EXPECT_EQ(a.texture.texture, 0);
 }
 
 TEST(MaterialExtensions, IridescenceIsReadAndPacked) {
-    EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_iridescence"));
-    const LoadResult r = load_data("material_sweeps/iridescence_textures.gltf");
+    EXPECT_TRUE(scene::is_supported_gltf_extension("KHR_materials_iridescence"));
+    const scene::LoadResult r = load_data("material_sweeps/iridescence_textures.gltf");
     ASSERT_TRUE(r) << r.error;
     for (const std::string& w : r.scene->warnings)
         EXPECT_EQ(w.find("not implemented"), std::string::npos) << w;
-    const MaterialInstance& m = r.scene->materials.at(0);
+    const scene::MaterialInstance& m = r.scene->materials.at(0);
     ASSERT_TRUE(m.iridescence.has_value());
     EXPECT_FLOAT_EQ(m.iridescence->factor, 1.0f);
     EXPECT_FLOAT_EQ(m.iridescence->ior, 1.3f); // the default
     EXPECT_FLOAT_EQ(m.iridescence->thickness_minimum, 200.0f);
     EXPECT_FLOAT_EQ(m.iridescence->thickness_maximum, 600.0f);
     EXPECT_TRUE(m.iridescence->thickness.transform.present);
-    EXPECT_FALSE(needs_tangents(m));
-    ASSERT_EQ(extension_texture_slots(m).size(), 2u);
+    EXPECT_FALSE(scene::needs_tangents(m));
+    ASSERT_EQ(scene::extension_texture_slots(m).size(), 2u);
     const render::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.bytes(), 48u + 96u);
     render::GPUIridescenceBlock i;
@@ -340,16 +342,16 @@ TEST(MaterialExtensions, IridescenceIsReadAndPacked) {
 }
 
 TEST(MaterialExtensions, BadIridescenceValuesAreWarnedAndFallBack) {
-    const LoadResult r = load_data("material_extensions_bad.gltf");
+    const scene::LoadResult r = load_data("material_extensions_bad.gltf");
     ASSERT_TRUE(r) << r.error;
-    const Scene& s = *r.scene;
+    const scene::Scene& s = *r.scene;
     const std::string i14 = "/materials/14/extensions/KHR_materials_iridescence/";
     const std::string i15 = "/materials/15/extensions/KHR_materials_iridescence/";
     // 1.5 clamps to 1; an ior below 1 takes the default 1.3; -10 nm clamps to 0.
     EXPECT_NE(test::message_at(s, i14 + "iridescenceFactor"), nullptr);
     EXPECT_NE(test::message_at(s, i14 + "iridescenceIor"), nullptr);
     EXPECT_NE(test::message_at(s, i14 + "iridescenceThicknessMinimum"), nullptr);
-    const MaterialIridescence& a = *material(s, "bad iridescence").iridescence;
+    const scene::MaterialIridescence& a = *material(s, "bad iridescence").iridescence;
     EXPECT_FLOAT_EQ(a.factor, 1.0f);
     EXPECT_FLOAT_EQ(a.ior, 1.3f);
     EXPECT_FLOAT_EQ(a.thickness_minimum, 0.0f);
@@ -357,7 +359,7 @@ TEST(MaterialExtensions, BadIridescenceValuesAreWarnedAndFallBack) {
     EXPECT_NE(test::message_at(s, i15 + "iridescenceFactor"), nullptr);
     EXPECT_NE(test::message_at(s, i15 + "iridescenceIor"), nullptr);
     EXPECT_NE(test::message_at(s, i15 + "iridescenceThicknessMaximum"), nullptr);
-    const MaterialIridescence& b = *material(s, "iridescence not finite").iridescence;
+    const scene::MaterialIridescence& b = *material(s, "iridescence not finite").iridescence;
     EXPECT_FLOAT_EQ(b.factor, 0.0f);
     EXPECT_FLOAT_EQ(b.ior, 1.3f);
     EXPECT_FLOAT_EQ(b.thickness_maximum, 400.0f);

@@ -29,21 +29,21 @@ std::string file(const char* name) {
 }
 
 TEST(MaterialVariants, ImportReadsNamesAndMappings) {
-    EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_variants"));
-    const LoadResult r = load_scene(file("variants.gltf"));
+    EXPECT_TRUE(scene::is_supported_gltf_extension("KHR_materials_variants"));
+    const scene::LoadResult r = scene::load_scene(file("variants.gltf"));
     ASSERT_TRUE(r) << r.error;
-    const Scene& s = *r.scene;
+    const scene::Scene& s = *r.scene;
     for (const std::string& w : s.warnings) ADD_FAILURE() << w;
     ASSERT_EQ(s.variants.names, (std::vector<std::string>{"Warm", "Cool"}));
-    EXPECT_EQ(find_variant(s, "Cool"), 1);
-    EXPECT_EQ(find_variant(s, "cool"), -1);
+    EXPECT_EQ(scene::find_variant(s, "Cool"), 1);
+    EXPECT_EQ(scene::find_variant(s, "cool"), -1);
     ASSERT_EQ(s.variants.meshes.size(), 3u);
-    EXPECT_EQ(variant_material(s, 0, kWarm), kRed);
-    EXPECT_EQ(variant_material(s, 0, kCool), 0u); // unmapped: the default
-    EXPECT_EQ(variant_material(s, 1, kCool), kMasked);
-    EXPECT_EQ(variant_material(s, 2, -1), 2u);
-    EXPECT_EQ(possible_materials(s, 2), (std::vector<std::uint32_t>{2, kChecker, kGreen}));
-    const auto warm = variant_changes(s, kWarm);
+    EXPECT_EQ(scene::variant_material(s, 0, kWarm), kRed);
+    EXPECT_EQ(scene::variant_material(s, 0, kCool), 0u); // unmapped: the default
+    EXPECT_EQ(scene::variant_material(s, 1, kCool), kMasked);
+    EXPECT_EQ(scene::variant_material(s, 2, -1), 2u);
+    EXPECT_EQ(scene::possible_materials(s, 2), (std::vector<std::uint32_t>{2, kChecker, kGreen}));
+    const auto warm = scene::variant_changes(s, kWarm);
     ASSERT_EQ(warm.size(), 2u);
     EXPECT_EQ(warm[0].gltf_mesh, 0u);
     EXPECT_EQ(warm[0].to, kRed);
@@ -56,23 +56,23 @@ TEST(MaterialVariants, ImportReadsNamesAndMappings) {
 }
 
 TEST(MaterialVariants, ApplyChangesOnlyMaterialIds) {
-    LoadResult r = load_scene(file("variants.gltf"));
+    scene::LoadResult r = scene::load_scene(file("variants.gltf"));
     ASSERT_TRUE(r) << r.error;
-    Scene& s = *r.scene;
+    scene::Scene& s = *r.scene;
     const auto vertices = s.meshes[2].vertices.size();
-    EXPECT_EQ(apply_material_variant(s, kCool), 2u); // spheres 1 and 2
+    EXPECT_EQ(scene::apply_material_variant(s, kCool), 2u); // spheres 1 and 2
     EXPECT_EQ(s.meshes[1].material_id, kMasked);
     EXPECT_EQ(s.instances[2].material_id, kGreen);
     EXPECT_EQ(s.variants.active, int(kCool));
     EXPECT_EQ(s.meshes[2].vertices.size(), vertices);
-    EXPECT_EQ(apply_material_variant(s, -1), 2u);
+    EXPECT_EQ(scene::apply_material_variant(s, -1), 2u);
     EXPECT_EQ(s.meshes[1].material_id, 1u);
 }
 
 TEST(MaterialVariants, BadMappingsAreWarnedWithTheirPointerAndKeepTheDefault) {
-    const LoadResult r = load_scene(file("variants_bad.gltf"));
+    const scene::LoadResult r = scene::load_scene(file("variants_bad.gltf"));
     ASSERT_TRUE(r) << r.error;
-    const Scene& s = *r.scene;
+    const scene::Scene& s = *r.scene;
     const std::string base = "/meshes/0/primitives/0/extensions/KHR_materials_variants/mappings/";
     // The Khronos validator's codes and pointers (all errors there); the file loads.
     const std::pair<std::string, std::string> expected[] = {
@@ -81,14 +81,14 @@ TEST(MaterialVariants, BadMappingsAreWarnedWithTheirPointerAndKeepTheDefault) {
         {base + "2/variants/0", "KHR_MATERIALS_VARIANTS_NON_UNIQUE_VARIANT"},
         {base + "3", "UNDEFINED_PROPERTY"}};
     for (const auto& [p, code] : expected) {
-        const ValidationMessage* m = test::message_at(s, p);
+        const scene::ValidationMessage* m = test::message_at(s, p);
         ASSERT_NE(m, nullptr) << p;
         EXPECT_EQ(m->code, code) << p;
-        EXPECT_EQ(m->severity, Severity::Error) << p;
+        EXPECT_EQ(m->severity, scene::Severity::Error) << p;
     }
-    EXPECT_EQ(variant_material(s, 0, kWarm), 0u);     // material 99: the default
-    EXPECT_EQ(variant_material(s, 0, kCool), kRed);   // the first mapping of Cool is kept
-    EXPECT_EQ(variant_material(s, 2, kCool), kGreen); // other primitives untouched
+    EXPECT_EQ(scene::variant_material(s, 0, kWarm), 0u);     // material 99: the default
+    EXPECT_EQ(scene::variant_material(s, 0, kCool), kRed);   // the first mapping of Cool is kept
+    EXPECT_EQ(scene::variant_material(s, 2, kCool), kGreen); // other primitives untouched
 }
 
 class VariantSwitch : public GpuTest {
@@ -106,8 +106,8 @@ protected:
     }
     // The frame of a scene loaded with `variant` already shown.
     std::vector<std::uint8_t> loaded_with(std::int32_t variant, render::CullPath cull) {
-        std::unique_ptr<Scene> s = load(file("variants.gltf"));
-        apply_material_variant(*s, variant);
+        std::unique_ptr<scene::Scene> s = load(file("variants.gltf"));
+        scene::apply_material_variant(*s, variant);
         renderer().load(*s);
         return frame(renderer(), cull);
     }
@@ -122,7 +122,7 @@ TEST_F(VariantSwitch, SwitchedSceneDrawsAsTheSceneLoadedWithTheVariant) {
         EXPECT_GT(differing_pixels(defaults, warm, 8), 500u);
         EXPECT_GT(differing_pixels(defaults, cool, 8), 500u);
 
-        std::unique_ptr<Scene> s = load(file("variants.gltf"));
+        std::unique_ptr<scene::Scene> s = load(file("variants.gltf"));
         renderer().load(*s);
         EXPECT_EQ(frame(renderer(), cull), defaults);
         render::VariantSwitch w = render::set_material_variant(renderer(), kWarm);
@@ -152,12 +152,13 @@ TEST_F(VariantSwitch, SwitchedSceneDrawsAsTheSceneLoadedWithTheVariant) {
 TEST_F(VariantSwitch, RaysFollowTheSwitchedVariant) {
     if (!context().info().ray_tracing_enabled) GTEST_SKIP() << "device without ray tracing";
     auto opaque_spheres = [&](std::int32_t variant) {
-        std::unique_ptr<Scene> s = load(file("variants.gltf"));
-        for (MaterialInstance& m : s->materials) m.double_sided = m.alpha_mode == AlphaMode::Opaque;
-        apply_material_variant(*s, variant);
+        std::unique_ptr<scene::Scene> s = load(file("variants.gltf"));
+        for (scene::MaterialInstance& m : s->materials)
+            m.double_sided = m.alpha_mode == scene::AlphaMode::Opaque;
+        scene::apply_material_variant(*s, variant);
         return s;
     };
-    auto traced = [&](const Scene& scene) {
+    auto traced = [&](const scene::Scene& scene) {
         render::RendererOptions options;
         options.ray_tracing = true;
         options.textures = test_texture_settings();
@@ -180,7 +181,7 @@ TEST_F(VariantSwitch, RaysFollowTheSwitchedVariant) {
         r.render(s, &rgba);
         return rgba;
     };
-    std::unique_ptr<Scene> scene = opaque_spheres(-1);
+    std::unique_ptr<scene::Scene> scene = opaque_spheres(-1);
     auto switched = traced(*scene);
     const std::vector<std::uint8_t> defaults_lit =
         image(*switched, render::DebugView::Lit, render::RendererKind::RayTraced);
@@ -216,7 +217,7 @@ TEST_F(VariantSwitch, RaysFollowTheSwitchedVariant) {
         EXPECT_GE(views, 12);
         // The path tracer: as the file loaded with the variant (same seeds, same bytes).
         const auto lit = image(*switched, render::DebugView::Lit, render::RendererKind::RayTraced);
-        std::unique_ptr<Scene> loaded_scene = opaque_spheres(step.variant);
+        std::unique_ptr<scene::Scene> loaded_scene = opaque_spheres(step.variant);
         auto loaded = traced(*loaded_scene);
         EXPECT_EQ(lit, image(*loaded, render::DebugView::Lit, render::RendererKind::RayTraced));
         if (step.variant >= 0) {

@@ -30,7 +30,7 @@ render::CameraSpec camera_on(const core::Aabb& box) {
     return spec;
 }
 
-double mid_time(const Scene& s, std::size_t a) {
+double mid_time(const scene::Scene& s, std::size_t a) {
     return s.animations[a].start + 0.37 * (s.animations[a].end - s.animations[a].start);
 }
 
@@ -42,14 +42,14 @@ TEST_F(MotionRenderTest, GpuSkinningAndMorphingMatchTheCpuPosedStaticMesh) {
         const auto scene = load(gltf_asset(name));
         ASSERT_TRUE(scene);
         ASSERT_FALSE(scene->animations.empty());
-        const auto pose =
-            std::make_shared<const Pose>(evaluate_pose(*scene, 0, mid_time(*scene, 0)));
-        const Scene cpu = freeze_pose(*scene, *pose);
+        const auto pose = std::make_shared<const scene::Pose>(
+            scene::evaluate_pose(*scene, 0, mid_time(*scene, 0)));
+        const scene::Scene cpu = scene::freeze_pose(*scene, *pose);
         render::FrameRequest s;
         s.width = 160;
         s.height = 120;
         s.shadows = false;
-        s.camera = camera_on(posed_scene_bounds(*scene, *pose).exact);
+        s.camera = camera_on(scene::posed_scene_bounds(*scene, *pose).exact);
         for (render::DebugView view : {render::DebugView::BaseColor, render::DebugView::Normal}) {
             s.view = view;
             renderer().load(*scene, streams_setup(render::StreamPolicy::AllPresent));
@@ -88,11 +88,12 @@ TEST_F(MotionRenderTest, CullingNeverRemovesAMovingInstanceFromTheImage) {
         ASSERT_TRUE(scene);
         renderer().load(*scene);
         for (std::size_t a = 0; a < scene->animations.size(); ++a) {
-            const Animation& anim = scene->animations[a];
+            const scene::Animation& anim = scene->animations[a];
             for (int k = 0; k <= 5; ++k) { // six times across the animation, both ends included
                 const double t = anim.start + (anim.end - anim.start) * k / 5.0;
                 SCOPED_TRACE("animation " + std::to_string(a) + " at " + std::to_string(t));
-                auto pose = std::make_shared<const Pose>(evaluate_pose(*scene, int(a), t));
+                auto pose =
+                    std::make_shared<const scene::Pose>(scene::evaluate_pose(*scene, int(a), t));
                 render::FrameRequest s;
                 s.width = 96;
                 s.height = 72;
@@ -100,7 +101,7 @@ TEST_F(MotionRenderTest, CullingNeverRemovesAMovingInstanceFromTheImage) {
                 s.cache_shadows = false;
                 // Where things are now: all of the posed bounds, and the top tenth of
                 // them alone (e.g. BoxAnimated's box risen far above its bounds as loaded).
-                const core::Aabb posed = posed_scene_bounds(*scene, *pose).exact;
+                const core::Aabb posed = scene::posed_scene_bounds(*scene, *pose).exact;
                 core::Aabb top = posed;
                 top.min.y = posed.max.y - 0.1f * (posed.max.y - posed.min.y);
                 for (const core::Aabb& look : {posed, top}) {
@@ -116,7 +117,7 @@ TEST_F(MotionRenderTest, CullingNeverRemovesAMovingInstanceFromTheImage) {
                     const render::FrameStats st = renderer().render(s, &gpu_image);
                     EXPECT_EQ(differing_pixels(all, cpu, 0), 0u);
                     EXPECT_EQ(differing_pixels(all, gpu_image, 0), 0u);
-                    for (const CullStats& c : st.culling)
+                    for (const scene::CullStats& c : st.culling)
                         EXPECT_EQ(c.cpu_gpu_differences, 0) << c.pass;
                 }
             }
@@ -148,7 +149,8 @@ TEST_F(MotionRenderTest, JointInfluenceShowsTheSelectedJointsWeight) {
     s.width = 96;
     s.height = 96;
     s.view = render::DebugView::JointInfluence;
-    s.camera = camera_on(posed_scene_bounds(*scene, evaluate_pose(*scene, -1, 0.0)).exact);
+    s.camera =
+        camera_on(scene::posed_scene_bounds(*scene, scene::evaluate_pose(*scene, -1, 0.0)).exact);
     const auto none = draw(s);
     s.selected_joint = scene->skins[0].joints[0];
     const auto first = draw(s);

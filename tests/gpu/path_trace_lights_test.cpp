@@ -66,8 +66,8 @@ std::string lit_floor_gltf(const std::string& emissive, const std::string& stren
     return j.str();
 }
 
-std::unique_ptr<Scene> load_file(const std::filesystem::path& p) {
-    LoadResult r = load_scene(p.string());
+std::unique_ptr<scene::Scene> load_file(const std::filesystem::path& p) {
+    scene::LoadResult r = scene::load_scene(p.string());
     EXPECT_TRUE(r) << p << ": " << r.error;
     return std::move(r.scene);
 }
@@ -126,10 +126,11 @@ TEST(EmissiveLightsCpu, TextureMeanOverATriangle) {
     const glm::vec2 shifted[3] = {{2.0f, -3.0f}, {2.45f, -3.0f}, {2.0f, -2.0f}};
     EXPECT_NEAR(render::mean_over_triangle(g, shifted), 1.0, 1e-6);
     const glm::vec2 beyond[3] = {{1.5f, 0.0f}, {2.0f, 0.0f}, {2.0f, 1.0f}};
-    EXPECT_NEAR(render::mean_over_triangle(g, beyond, AddressMode::ClampToEdge), 0.0, 1e-6);
+    EXPECT_NEAR(render::mean_over_triangle(g, beyond, scene::AddressMode::ClampToEdge), 0.0, 1e-6);
     // Mirrored repeat: u in [1, 2) reads the image reversed (white at its right end).
     const glm::vec2 mirrored[3] = {{1.55f, 0.0f}, {2.0f, 0.0f}, {2.0f, 1.0f}};
-    EXPECT_NEAR(render::mean_over_triangle(g, mirrored, AddressMode::MirroredRepeat), 1.0, 1e-6);
+    EXPECT_NEAR(render::mean_over_triangle(g, mirrored, scene::AddressMode::MirroredRepeat), 1.0,
+                1e-6);
     // Non-finite coordinates read a texel, never out of bounds.
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const glm::vec2 broken[3] = {{nan, 0.0f}, {1e30f, -1e30f}, {0.0f, nan}};
@@ -180,20 +181,20 @@ TEST(EmissiveLightsCpu, DamagedHelmetWeighsTrianglesByItsEmissiveTexture) {
 TEST(EmissiveLightsCpu, VariantsThatChangeEmissionGetNoList) {
     auto scene = load_file(write_temp("pt_lights_variants.gltf", lit_floor_gltf("[1,1,1]", "10")));
     ASSERT_TRUE(scene);
-    const auto emitter =
-        std::find_if(scene->instances.begin(), scene->instances.end(), [&](const MeshInstance& i) {
+    const auto emitter = std::find_if(
+        scene->instances.begin(), scene->instances.end(), [&](const scene::MeshInstance& i) {
             return render::emitted_luminance(scene->materials[i.material_id]) > 0.0f;
         });
     ASSERT_NE(emitter, scene->instances.end());
-    MaterialInstance same = scene->materials[emitter->material_id];
-    MaterialInstance dark = same;
+    scene::MaterialInstance same = scene->materials[emitter->material_id];
+    scene::MaterialInstance dark = same;
     dark.emissive_factor = glm::vec3(0.0f);
     scene->materials.push_back(same);
     scene->materials.push_back(dark);
     const auto n = static_cast<std::int32_t>(scene->materials.size());
     scene->variants.names = {"same", "dark"};
     scene->variants.meshes = {
-        VariantMeshMapping{emitter->mesh_id, emitter->material_id, {n - 2, -1}}};
+        scene::VariantMeshMapping{emitter->mesh_id, emitter->material_id, {n - 2, -1}}};
     EXPECT_EQ(render::emissive_lights(*scene).triangles.size(), 2u);
     scene->variants.meshes[0].materials[1] = n - 1;
     const render::EmissiveLights none = render::emissive_lights(*scene);

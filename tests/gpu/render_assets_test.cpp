@@ -104,20 +104,20 @@ TEST_F(DebugViewTest, GpuHoldsOnlyTheStreamsTheUsageReportAsksFor) {
     for (const auto& name : all_gltf_models()) {
         auto scene = load(gltf_asset(name));
         ASSERT_TRUE(scene);
-        const UsageReport usage = build_usage_report(*scene);
+        const scene::UsageReport usage = scene::build_usage_report(*scene);
         for (render::StreamPolicy policy :
              {render::StreamPolicy::UsedByMaterials, render::StreamPolicy::AllPresent}) {
             renderer().load(*scene, streams_setup(policy));
             const render::GpuScene& g = *renderer().scene();
-            for (const PrimitiveUsage& u : usage.primitives) {
+            for (const scene::PrimitiveUsage& u : usage.primitives) {
                 if (u.instances == 0 || scene->meshes[u.mesh_id].indices.empty()) continue;
-                for (VertexAttribute a : kAllVertexAttributes) {
+                for (scene::VertexAttribute a : scene::kAllVertexAttributes) {
                     const std::size_t i = std::size_t(a);
                     const bool expected =
-                        a == VertexAttribute::Position || u.used[i] ||
+                        a == scene::VertexAttribute::Position || u.used[i] ||
                         (policy == render::StreamPolicy::AllPresent && u.present[i]);
                     EXPECT_EQ(g.meshes()[u.mesh_id].stream[i] != 0, expected)
-                        << name << " mesh " << u.mesh_id << " " << gltf_name(a);
+                        << name << " mesh " << u.mesh_id << " " << scene::gltf_name(a);
                 }
             }
             if (policy == render::StreamPolicy::UsedByMaterials) {

@@ -29,7 +29,7 @@ TEST(PrepassModeTest, AutoIsOnForGpusAndOnCpuDevicesUpToOneTrianglePerFourPixels
 
 class RenderPathTest : public GpuTest, public ::testing::WithParamInterface<const char*> {
 protected:
-    std::vector<std::uint8_t> render(const Scene& scene, render::StreamPolicy policy,
+    std::vector<std::uint8_t> render(const scene::Scene& scene, render::StreamPolicy policy,
                                      render::PrepassMode prepass) {
         render::FrameRequest s;
         s.width = 128;

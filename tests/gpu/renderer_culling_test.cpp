@@ -39,7 +39,7 @@ TEST_F(RendererCullingTest, GpuPathAgreesWithCpuPathPerPassAndComparesOnlyInChec
     ASSERT_EQ(gpu.culling.size(), cpu.culling.size());
     ASSERT_EQ(check.culling.size(), cpu.culling.size());
     for (std::size_t p = 0; p < cpu.culling.size(); ++p) {
-        const CullStats &c = cpu.culling[p], &g = gpu.culling[p], &k = check.culling[p];
+        const scene::CullStats &c = cpu.culling[p], &g = gpu.culling[p], &k = check.culling[p];
         SCOPED_TRACE(c.pass);
         EXPECT_EQ(c.pass, p == 0 ? "camera" : "cascade" + std::to_string(p - 1));
         EXPECT_EQ(g.pass, c.pass);
@@ -51,7 +51,7 @@ TEST_F(RendererCullingTest, GpuPathAgreesWithCpuPathPerPassAndComparesOnlyInChec
         EXPECT_EQ(c.visible + c.culled, c.tested);
         EXPECT_FALSE(c.gpu);
         EXPECT_TRUE(g.gpu);
-        for (const CullStats* s : {&g, &k}) {
+        for (const scene::CullStats* s : {&g, &k}) {
             EXPECT_EQ(s->total, c.total);
             EXPECT_EQ(s->visible, c.visible);
             EXPECT_EQ(s->triangles, c.triangles);

@@ -24,7 +24,7 @@ namespace {
 class RtExactness : public GpuTest {
 protected:
     // A renderer with ray tracing and every vertex stream, `scene` loaded.
-    std::unique_ptr<render::Renderer> renderer_for(const Scene& scene) {
+    std::unique_ptr<render::Renderer> renderer_for(const scene::Scene& scene) {
         render::RendererOptions options;
         options.ray_tracing = true;
         options.textures = test_texture_settings();
@@ -35,8 +35,8 @@ protected:
 
     // Renders every ray-traced view of `scene` both ways at `width` x `height` and
     // checks the agreement. `pose`: a posed frame (null: the file's default pose).
-    void check_views(const Scene& scene, const std::string& name, float texture_lod = 0.0f,
-                     std::shared_ptr<const Pose> pose = nullptr, std::uint32_t width = 96,
+    void check_views(const scene::Scene& scene, const std::string& name, float texture_lod = 0.0f,
+                     std::shared_ptr<const scene::Pose> pose = nullptr, std::uint32_t width = 96,
                      std::uint32_t height = 72) {
         const std::unique_ptr<render::Renderer> rays_and_raster = renderer_for(scene);
         render::Renderer& renderer = *rays_and_raster;
@@ -162,7 +162,7 @@ struct ExactHit {
     double edge_margin = 1.0;
 };
 
-ExactHit exact_hit(const Scene& scene, const render::CameraView& camera, std::uint32_t w,
+ExactHit exact_hit(const scene::Scene& scene, const render::CameraView& camera, std::uint32_t w,
                    std::uint32_t h, std::uint32_t x, std::uint32_t y) {
     const glm::dmat4 inv = glm::inverse(glm::dmat4(camera.proj) * glm::dmat4(camera.view));
     const glm::dvec2 ndc(2.0 * (x + 0.5) / w - 1.0, 1.0 - 2.0 * (y + 0.5) / h);
@@ -170,14 +170,14 @@ ExactHit exact_hit(const Scene& scene, const render::CameraView& camera, std::ui
     const glm::dvec3 o = glm::dvec3(a) / a.w, d = glm::normalize(glm::dvec3(b) / b.w - o);
     ExactHit out;
     double nearest = 1e300;
-    for (const MeshInstance& in : scene.instances) {
-        const Mesh& m = scene.meshes[in.mesh_id];
-        const MaterialInstance& mat = scene.materials[in.material_id];
-        if (m.topology() != Topology::Triangles) continue;
+    for (const scene::MeshInstance& in : scene.instances) {
+        const scene::Mesh& m = scene.meshes[in.mesh_id];
+        const scene::MaterialInstance& mat = scene.materials[in.material_id];
+        if (m.topology() != scene::Topology::Triangles) continue;
         const glm::dmat4 world(in.world);
         for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) {
-            const Vertex* v[3] = {&m.vertices[m.indices[t]], &m.vertices[m.indices[t + 1]],
-                                  &m.vertices[m.indices[t + 2]]};
+            const scene::Vertex* v[3] = {&m.vertices[m.indices[t]], &m.vertices[m.indices[t + 1]],
+                                         &m.vertices[m.indices[t + 2]]};
             glm::dvec3 p[3];
             for (int k = 0; k < 3; ++k)
                 p[k] = glm::dvec3(world * glm::dvec4(glm::dvec3(v[k]->position), 1.0));
@@ -224,10 +224,10 @@ TEST_F(RtExactness, CameraRaysFollowTheExactGeometryAtEdges) {
     s.shadows = false;
     s.texture_lod = 0.0f;
     s.view = render::DebugView::Tangent;
-    FramingOptions framing;
+    scene::FramingOptions framing;
     framing.fov_y_degrees = s.camera.fov_degrees;
     framing.aspect = float(s.width) / float(s.height);
-    s.camera = render::explicit_camera(frame_scene(*scene, nullptr, framing));
+    s.camera = render::explicit_camera(scene::frame_scene(*scene, nullptr, framing));
     const render::CameraView camera = render::resolve_camera(s.camera, *scene, framing.aspect);
     std::vector<std::uint8_t> rays, raster;
     s.renderer = render::RendererKind::RayTraced;
@@ -275,7 +275,7 @@ TEST_F(RtExactness, PosedFramesAgree) {
         ASSERT_FALSE(scene->animations.empty()) << name;
         for (double t : {0.3, 1.1})
             check_views(*scene, name + " t=" + std::to_string(t).substr(0, 3), 0.0f,
-                        std::make_shared<const Pose>(evaluate_pose(*scene, 0, t)));
+                        std::make_shared<const scene::Pose>(scene::evaluate_pose(*scene, 0, t)));
     }
 }
 
@@ -304,7 +304,7 @@ TEST_F(RtExactness, PosedRaysDifferFromTheBindPoseAndMatchRaster) {
     std::vector<std::uint8_t> bind, posed, raster, back;
     // The default pose was applied on load: the first frame poses nothing.
     EXPECT_FALSE(updated(renderer.render(s, &bind)));
-    s.pose = std::make_shared<const Pose>(evaluate_pose(*scene, 0, 0.5));
+    s.pose = std::make_shared<const scene::Pose>(scene::evaluate_pose(*scene, 0, 0.5));
     EXPECT_EQ(updated(renderer.render(s, &posed)), timed);
     EXPECT_FALSE(updated(renderer.render(s))); // the same pose again: nothing to refit
     s.renderer = render::RendererKind::Raster;
@@ -328,7 +328,7 @@ TEST_F(RtExactness, MirroredInstancesAgree) {
     for (const std::string name : {"Box", "TwoSidedPlane", "NormalTangentMirrorTest"}) {
         auto scene = load(gltf_asset(name));
         ASSERT_TRUE(scene);
-        for (MeshInstance& inst : scene->instances)
+        for (scene::MeshInstance& inst : scene->instances)
             inst.world = glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f)) * inst.world;
         check_views(*scene, name + " mirrored");
     }

@@ -92,9 +92,9 @@ protected:
         return n;
     }
 
-    std::unique_ptr<Scene> scene_;
+    std::unique_ptr<scene::Scene> scene_;
     render::FrameRequest settings_;
-    CameraSpec spec_; // the scene layer's, for its view-projection
+    scene::CameraSpec spec_; // the scene layer's, for its view-projection
 };
 
 TEST_F(RtShadow, HardShadowMatchesTheProjectedOutline) {

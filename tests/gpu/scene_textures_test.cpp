@@ -36,7 +36,7 @@ protected:
         renderer().unload();
         GpuTest::TearDown();
     }
-    std::unique_ptr<Scene> helmet_;
+    std::unique_ptr<scene::Scene> helmet_;
 };
 
 // Blocks as they are, also on CPU devices (which decode BC7 at upload by default).
@@ -74,7 +74,7 @@ TEST_F(SceneTexturesTest, PreparedOnAnotherThreadUploadsBlocksWithFullMipChains)
         const render::GpuTexture& g = textures.gpu()[i];
         formats.insert(t.format);
         EXPECT_EQ(g.mip_levels, 12u) << t.source; // 2048 .. 1
-        EXPECT_NE(g.slot, kTextureSentinel);
+        EXPECT_NE(g.slot, scene::kTextureSentinel);
         slots.insert(g.slot);
         // Block data: 1 byte per texel at level 0 (BC7 and BC5 alike), 4/3 over the chain.
         EXPECT_GE(g.bytes, t.bytes_gpu);
@@ -90,22 +90,23 @@ TEST_F(SceneTexturesTest, PreparedOnAnotherThreadUploadsBlocksWithFullMipChains)
     EXPECT_EQ(textures.gpu_bytes(), bytes);
 
     // The material record names exactly those slots.
-    const MaterialInstance& m = helmet_->materials.at(0);
-    const GPUMaterialData g = textures.material(m);
-    EXPECT_EQ(g.base_color_tex, textures.slot(m.base_color.texture, kRoleColor));
-    EXPECT_EQ(g.normal_tex, textures.slot(m.normal.texture, kRoleNormal));
-    EXPECT_EQ(g.emissive_tex, textures.slot(m.emissive.texture, kRoleColor));
-    EXPECT_EQ(g.occlusion_tex, textures.slot(m.occlusion.texture, kRoleLinear));
-    EXPECT_EQ(g.metallic_roughness_tex, textures.slot(m.metallic_roughness.texture, kRoleLinear));
+    const scene::MaterialInstance& m = helmet_->materials.at(0);
+    const scene::GPUMaterialData g = textures.material(m);
+    EXPECT_EQ(g.base_color_tex, textures.slot(m.base_color.texture, scene::kRoleColor));
+    EXPECT_EQ(g.normal_tex, textures.slot(m.normal.texture, scene::kRoleNormal));
+    EXPECT_EQ(g.emissive_tex, textures.slot(m.emissive.texture, scene::kRoleColor));
+    EXPECT_EQ(g.occlusion_tex, textures.slot(m.occlusion.texture, scene::kRoleLinear));
+    EXPECT_EQ(g.metallic_roughness_tex,
+              textures.slot(m.metallic_roughness.texture, scene::kRoleLinear));
     for (std::uint32_t s : {g.base_color_tex, g.normal_tex, g.emissive_tex, g.occlusion_tex,
                             g.metallic_roughness_tex})
         EXPECT_TRUE(slots.count(s)) << s;
 
     // Without its textures the same material reads the default textures.
-    MaterialInstance bare = m;
+    scene::MaterialInstance bare = m;
     bare.base_color = bare.normal = bare.emissive = bare.occlusion = bare.metallic_roughness = {};
     bare.emissive_factor = glm::vec3(0.0f);
-    const GPUMaterialData d = textures.material(bare);
+    const scene::GPUMaterialData d = textures.material(bare);
     EXPECT_EQ(d.base_color_tex, gpu::kWhiteTexture);
     EXPECT_EQ(d.normal_tex, gpu::kFlatNormalTexture);
     EXPECT_EQ(d.emissive_tex, gpu::kBlackTexture);
@@ -156,7 +157,7 @@ TEST_F(SceneTexturesTest, RefusesSetsWithoutLevelsOrForAnotherScene) {
     auto truncated = std::make_shared<tex::PreparedTextureSet>(*good);
     truncated->textures[1].levels[3].pop_back();
     EXPECT_THROW(renderer().load(*helmet_, truncated), gpu::GpuError);
-    Scene other = *helmet_;
+    scene::Scene other = *helmet_;
     other.textures.resize(2); // the set names textures 2..4 too
     EXPECT_THROW(renderer().load(other, good), gpu::GpuError);
     // Nothing half-made stays behind; the good set still loads.

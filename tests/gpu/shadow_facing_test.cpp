@@ -30,7 +30,7 @@ class ShadowFacingTest : public GpuTest {
 protected:
     // Renders the scene with and without shadows (writes both next to the test binary
     // when asked, to be looked at).
-    void render_pair(const Scene& scene, render::FrameRequest s, const std::string& name) {
+    void render_pair(const scene::Scene& scene, render::FrameRequest s, const std::string& name) {
         renderer().load(scene);
         s.shadows = true;
         renderer().render(s, &lit_);
@@ -72,7 +72,7 @@ TEST_F(ShadowFacingTest, DoubleSidedBackFaceLitFromItsSideShadowsOnlyWhereTheCas
     s.sun_direction = glm::normalize(glm::vec3(0.0f, -1.0f, 1.0f));
     render_pair(*scene, s, "double_sided");
 
-    CameraSpec spec;
+    scene::CameraSpec spec;
     ASSERT_TRUE(parse_camera_spec(camera, spec, error)) << error;
     const glm::mat4 inverse = glm::inverse(spec.view_projection());
     auto unproject = [&](float x, float y, float depth) {

@@ -48,7 +48,7 @@ int near_projection(const Pixels& rgba, const glm::mat4& view_proj, glm::vec3 wo
 
 class SkeletonTest : public GpuTest {
 protected:
-    static render::FrameRequest settings(const Scene& scene) {
+    static render::FrameRequest settings(const scene::Scene& scene) {
         render::FrameRequest s;
         s.width = s.height = kSize;
         std::string error;
@@ -63,7 +63,7 @@ protected:
             << error;
         return s;
     }
-    static glm::mat4 view_proj(const render::FrameRequest& s, const Scene& scene) {
+    static glm::mat4 view_proj(const render::FrameRequest& s, const scene::Scene& scene) {
         const render::CameraView v = render::resolve_camera(s.camera, scene, 1.0f);
         return v.proj * v.view;
     }
@@ -89,8 +89,9 @@ TEST_F(SkeletonTest, JointsDrawnWhereTheyProjectInBindPoseAndPosed) {
     // A pose: RiggedSimple's animation turns its joints about their own origins (the
     // bend moves vertices, not joints), so its last joint is also moved sideways, by a
     // third of the scene's size: the crosses must follow the pose's world matrices.
-    const Animation& anim = scene->animations[0];
-    auto pose = std::make_shared<Pose>(evaluate_pose(*scene, 0, 0.5 * (anim.start + anim.end)));
+    const scene::Animation& anim = scene->animations[0];
+    auto pose = std::make_shared<scene::Pose>(
+        scene::evaluate_pose(*scene, 0, 0.5 * (anim.start + anim.end)));
     const std::uint32_t last = scene->skins[0].joints.back();
     pose->world[last] = glm::translate(glm::mat4(1.0f), glm::vec3(0.3f, 0.0f, 0.0f) *
                                                             glm::length(scene->bounds.extent())) *
@@ -135,11 +136,11 @@ TEST_F(SkeletonTest, SceneWithoutSkinsDrawsNothingMore) {
 }
 
 TEST(SkeletonLines, BonesToParentJointsAndACrossPerJoint) {
-    Scene scene;
+    scene::Scene scene;
     scene.nodes.resize(4);
     // 0 (not a joint) -> 1 -> 2 -> 3; the skin's joints 1 and 3: 3's bone skips node 2.
     for (int n = 1; n < 4; ++n) scene.nodes[std::size_t(n)].parent = n - 1;
-    Skin skin;
+    scene::Skin skin;
     skin.joints = {3, 1};
     scene.skins.push_back(skin);
     std::vector<glm::mat4> world(4);

@@ -112,7 +112,7 @@ TEST_F(SwapchainTest, PresentsFramesAndSurvivesResizeWithoutValidationMessages) 
     VkSurfaceKHR surface = make_surface(context, window);
     {
         render::Renderer renderer(context);
-        LoadResult scene = load_scene("builtin:default");
+        scene::LoadResult scene = scene::load_scene("builtin:default");
         ASSERT_TRUE(scene) << scene.error;
         renderer.load(*scene.scene);
         gpu::Presenter presenter(context, renderer.resources(), surface, window.width,
@@ -168,7 +168,7 @@ TEST_F(SwapchainTest, PresentsRayTracedAndComparisonFrames) {
     if (!context.info().ray_tracing_enabled) GTEST_SKIP() << "device without ray tracing";
     VkSurfaceKHR surface = make_surface(context, window);
     {
-        LoadResult scene = load_scene("builtin:default");
+        scene::LoadResult scene = scene::load_scene("builtin:default");
         ASSERT_TRUE(scene) << scene.error;
         render::Renderer raster(context);
         render::RendererOptions rt_options;

@@ -26,16 +26,16 @@ Block block_at(const render::MaterialExtensionBuffer& b, std::uint32_t w) {
 }
 
 TEST(TransmissionExtensions, DrawnOnesAreSupported) {
-    EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_transmission"));
-    EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_volume"));
-    EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_dispersion"));
-    EXPECT_TRUE(is_supported_gltf_extension("KHR_materials_diffuse_transmission"));
-    const LoadResult r =
-        load_scene((test::data_dir() / "material_sweeps/volume_sweep.gltf").string());
+    EXPECT_TRUE(scene::is_supported_gltf_extension("KHR_materials_transmission"));
+    EXPECT_TRUE(scene::is_supported_gltf_extension("KHR_materials_volume"));
+    EXPECT_TRUE(scene::is_supported_gltf_extension("KHR_materials_dispersion"));
+    EXPECT_TRUE(scene::is_supported_gltf_extension("KHR_materials_diffuse_transmission"));
+    const scene::LoadResult r =
+        scene::load_scene((test::data_dir() / "material_sweeps/volume_sweep.gltf").string());
     ASSERT_TRUE(r) << r.error;
     for (const std::string& w : r.scene->warnings)
         EXPECT_EQ(w.find("not implemented"), std::string::npos) << w;
-    const MaterialInstance& m = r.scene->materials[0];
+    const scene::MaterialInstance& m = r.scene->materials[0];
     ASSERT_TRUE(m.transmission && m.volume);
     EXPECT_FLOAT_EQ(m.transmission->factor, 1.0f);
     EXPECT_FLOAT_EQ(m.volume->thickness_factor, 0.8f);
@@ -44,9 +44,10 @@ TEST(TransmissionExtensions, DrawnOnesAreSupported) {
 }
 
 TEST(TransmissionExtensions, BadValuesAreWarnedWithTheirPointerAndFallBack) {
-    const LoadResult r = load_scene((test::data_dir() / "transmission_bad.gltf").string());
+    const scene::LoadResult r =
+        scene::load_scene((test::data_dir() / "transmission_bad.gltf").string());
     ASSERT_TRUE(r) << r.error;
-    const Scene& s = *r.scene;
+    const scene::Scene& s = *r.scene;
     const std::string t = "/extensions/KHR_materials_transmission/transmissionFactor";
     // -0.5 clamps to 0; a string and 1e39 (infinite as a float) take the default 0.
     for (int m : {0, 1, 4}) {
@@ -82,7 +83,7 @@ TEST(TransmissionExtensions, BadValuesAreWarnedWithTheirPointerAndFallBack) {
     EXPECT_EQ(s.materials[7].diffuse_transmission->factor, 1.0f);
     EXPECT_EQ(s.materials[7].diffuse_transmission->color_factor, glm::vec3(1.0f));
     // The good one: its texture slots keep their TEXCOORD set and transform.
-    const MaterialInstance& good = s.materials[8];
+    const scene::MaterialInstance& good = s.materials[8];
     ASSERT_TRUE(good.transmission && good.volume);
     EXPECT_EQ(good.transmission->texture.texture, 0);
     EXPECT_EQ(good.transmission->texture.tex_coord, 1u);
@@ -95,12 +96,13 @@ TEST(TransmissionExtensions, BadValuesAreWarnedWithTheirPointerAndFallBack) {
 }
 
 TEST(TransmissionExtensions, BlocksHoldTheValuesAndOnlyUsersPay) {
-    const LoadResult r = load_scene((test::data_dir() / "transmission_bad.gltf").string());
+    const scene::LoadResult r =
+        scene::load_scene((test::data_dir() / "transmission_bad.gltf").string());
     ASSERT_TRUE(r) << r.error;
     const render::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     std::size_t words = 0;
     for (std::size_t i = 0; i < b.places.size(); ++i) {
-        const MaterialInstance& m = r.scene->materials[i];
+        const scene::MaterialInstance& m = r.scene->materials[i];
         const render::MaterialExtensionPlace& p = b.places[i];
         EXPECT_EQ(p.transmission != render::kNoExtension, m.transmission.has_value()) << i;
         EXPECT_EQ(p.volume != render::kNoExtension, m.volume.has_value()) << i;
@@ -134,7 +136,8 @@ TEST(TransmissionExtensions, BlocksHoldTheValuesAndOnlyUsersPay) {
 }
 
 TEST(TransmissionExtensions, ASceneWithoutThemPaysNothing) {
-    const LoadResult r = load_scene((test::data_dir() / "material_sweeps/ior_sweep.gltf").string());
+    const scene::LoadResult r =
+        scene::load_scene((test::data_dir() / "material_sweeps/ior_sweep.gltf").string());
     ASSERT_TRUE(r) << r.error;
     const render::MaterialExtensionBuffer b = test::extension_layout(*r.scene);
     EXPECT_EQ(b.transmissive_materials, 0u);

@@ -53,21 +53,22 @@ protected:
         return {dark, bright};
     }
 
-    std::unique_ptr<Scene> scene_;
+    std::unique_ptr<scene::Scene> scene_;
     render::FrameRequest settings_;
     std::shared_ptr<std::vector<bool>> hidden_;
 };
 
 TEST(VisibilityRule, AHiddenNodeHidesItsSubtreeAndHostileParentsEndTheWalk) {
-    std::vector<Node> nodes(4);
+    std::vector<scene::Node> nodes(4);
     nodes[1].parent = 0;
     nodes[2].parent = 1;
     nodes[3].parent = 3; // a cycle onto itself
-    EXPECT_EQ(hidden_subtrees(nodes, {}), std::vector<bool>(4, false));
-    EXPECT_EQ(hidden_subtrees(nodes, {false, true}), (std::vector<bool>{false, true, true, false}));
-    EXPECT_EQ(hidden_subtrees(nodes, {true}), (std::vector<bool>{true, true, true, false}));
+    EXPECT_EQ(scene::hidden_subtrees(nodes, {}), std::vector<bool>(4, false));
+    EXPECT_EQ(scene::hidden_subtrees(nodes, {false, true}),
+              (std::vector<bool>{false, true, true, false}));
+    EXPECT_EQ(scene::hidden_subtrees(nodes, {true}), (std::vector<bool>{true, true, true, false}));
     nodes[0].parent = 57; // out of range
-    EXPECT_EQ(hidden_subtrees(nodes, {false, false, false, true}),
+    EXPECT_EQ(scene::hidden_subtrees(nodes, {false, false, false, true}),
               (std::vector<bool>{false, false, false, true}));
 }
 
@@ -93,7 +94,7 @@ TEST_F(Visibility, HiddenCasterLeavesNoPixelsNorShadowOnEveryCullPath) {
         EXPECT_GT(bright, shown_bright + shown_dark / 2)
             << "the plane where caster and shadow were";
         ASSERT_FALSE(st.culling.empty());
-        for (const CullStats& c : st.culling) {
+        for (const scene::CullStats& c : st.culling) {
             SCOPED_TRACE(c.pass);
             EXPECT_EQ(c.hidden, 1u);
             // Hidden instances are neither tested, visible nor culled.
@@ -111,7 +112,7 @@ TEST_F(Visibility, HiddenCasterLeavesNoPixelsNorShadowOnEveryCullPath) {
             k.cache_shadows = false;
             render::FrameStats checked;
             EXPECT_EQ(render(r, k, &checked), hidden);
-            for (const CullStats& c : checked.culling)
+            for (const scene::CullStats& c : checked.culling)
                 EXPECT_EQ(c.cpu_gpu_differences, 0) << c.pass;
         }
         if (hidden_image.empty())
@@ -126,7 +127,7 @@ TEST_F(Visibility, HiddenCasterLeavesNoPixelsNorShadowOnEveryCullPath) {
 
 TEST_F(Visibility, HidingTheRootOfASubtreeHidesItsDescendantsInTheRenderer) {
     // The caster made a child of the plane: hiding the plane hides both.
-    Scene scene = *scene_;
+    scene::Scene scene = *scene_;
     scene.nodes[kCaster].parent = 0;
     scene.nodes[0].children = {kCaster};
     render::Renderer r(context());
@@ -174,8 +175,8 @@ TEST_F(Visibility, HiddenSkinnedMeshLeavesPosedFramesOnEveryPathAndTheRays) {
     auto mask = std::make_shared<std::vector<bool>>(scene->nodes.size(), false);
     for (std::size_t n = 0; n < scene->nodes.size(); ++n)
         if (scene->nodes[n].mesh >= 0) (*mask)[n] = true; // every mesh node
-    const auto pose =
-        std::make_shared<const Pose>(evaluate_pose(*scene, 0, 0.37 * scene->animations[0].end));
+    const auto pose = std::make_shared<const scene::Pose>(
+        scene::evaluate_pose(*scene, 0, 0.37 * scene->animations[0].end));
     render::FrameRequest s;
     s.width = s.height = kSize;
     const core::Aabb b = scene->bounds;

@@ -12,26 +12,26 @@ using namespace sherpa;
 
 // A unit quad in z = 0 (uv = xy), 4 vertices with authored tangents, its material's
 // base colour a 1024x1024 texture; the file also names JOINTS_0 and TEXCOORD_2.
-Scene budget_scene() {
-    Mesh quad;
+scene::Scene budget_scene() {
+    scene::Mesh quad;
     for (int k = 0; k < 4; ++k) {
-        Vertex v;
+        scene::Vertex v;
         v.position = {float(k & 1), float(k >> 1), 0.0f};
         v.uv0 = {v.position.x, v.position.y};
         quad.vertices.push_back(v);
         quad.local_bounds.expand(v.position);
     }
     quad.indices = {0, 1, 3, 0, 3, 2};
-    quad.provenance[std::size_t(VertexAttribute::TexCoord1)] = Provenance::Defaulted;
-    quad.provenance[std::size_t(VertexAttribute::Color0)] = Provenance::Defaulted;
-    Scene s = test::scene_of({quad});
-    ImageRecord img;
+    quad.provenance[std::size_t(scene::VertexAttribute::TexCoord1)] = scene::Provenance::Defaulted;
+    quad.provenance[std::size_t(scene::VertexAttribute::Color0)] = scene::Provenance::Defaulted;
+    scene::Scene s = test::scene_of({quad});
+    scene::ImageRecord img;
     img.width = img.height = 1024;
     img.pixels.assign(std::size_t(1024) * 1024 * 4, 200);
     s.images.push_back(img);
-    s.textures.push_back(TextureRecord{"", 0, -1, kRoleColor});
+    s.textures.push_back(scene::TextureRecord{"", 0, -1, scene::kRoleColor});
     s.materials[0].base_color.texture = 0;
-    PrimitiveInfo p;
+    scene::PrimitiveInfo p;
     p.engine_mesh = 0;
     p.file_attributes = {"POSITION", "NORMAL", "TANGENT", "TEXCOORD_0", "JOINTS_0", "TEXCOORD_2"};
     s.primitives.push_back(p);
@@ -40,7 +40,7 @@ Scene budget_scene() {
 
 TEST(LabBudget, BytesOversizedTexturesAndUnreadAttributes) {
     lab::BudgetOptions o;
-    CameraSpec view; // 90 degrees, 5 units in front of the quad's centre
+    scene::CameraSpec view; // 90 degrees, 5 units in front of the quad's centre
     view.eye = {0.5f, 0.5f, 5.0f}, view.target = {0.5f, 0.5f, 0.0f};
     view.fov_y_degrees = 90.0f;
     o.views = {view};
@@ -71,7 +71,7 @@ TEST(LabBudget, BytesOversizedTexturesAndUnreadAttributes) {
 
 TEST(LabBudget, ANearViewNeedsTheFullTexture) {
     lab::BudgetOptions o;
-    CameraSpec view;
+    scene::CameraSpec view;
     view.eye = {0.5f, 0.5f, 0.2f}, view.target = {0.5f, 0.5f, 0.0f};
     o.views = {view};
     const lab::BudgetReport b = lab::build_budget(budget_scene(), o);

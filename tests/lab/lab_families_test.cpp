@@ -15,7 +15,7 @@ using sherpa::test::failures;
 using sherpa::test::figure;
 
 TEST(LabTangents, WeldedDiffersFromExactInTheKnownCorners) {
-    Scene scene = test::scene_of({test::mirrored_strip()});
+    scene::Scene scene = test::scene_of({test::mirrored_strip()});
     const lab::FamilyReport r = lab::make_tangent_family()->run(scene, {});
     ASSERT_EQ(r.methods.size(), 3u);
     EXPECT_EQ(r.methods[0].method.name, "mikktspace");
@@ -35,9 +35,10 @@ TEST(LabTangents, WeldedDiffersFromExactInTheKnownCorners) {
 }
 
 TEST(LabTangents, AuthoredTangentsAreASecondReference) {
-    Mesh strip = test::mirrored_strip();
-    strip.provenance[std::size_t(VertexAttribute::Tangent)] = Provenance::Authored;
-    for (Vertex& v : strip.vertices) v.tangent = {1, 0, 0, 1}; // right for the left quad only
+    scene::Mesh strip = test::mirrored_strip();
+    strip.provenance[std::size_t(scene::VertexAttribute::Tangent)] = scene::Provenance::Authored;
+    for (scene::Vertex& v : strip.vertices)
+        v.tangent = {1, 0, 0, 1}; // right for the left quad only
     const lab::FamilyReport r = lab::make_tangent_family()->run(test::scene_of({strip}), {});
     // Exact MikkTSpace gives the right quad's 6 corners (-1,0,0,-1).
     EXPECT_EQ(figure(r.methods[0], "authored_flips"), 6.0);
@@ -45,10 +46,10 @@ TEST(LabTangents, AuthoredTangentsAreASecondReference) {
 }
 
 TEST(LabTangents, FailuresNameThePrimitiveAndTheCause) {
-    Mesh flat_uv = test::mirrored_strip();
-    for (Vertex& v : flat_uv.vertices) v.uv0 = {0.5f, 0.5f};
-    Mesh no_uv = test::mirrored_strip();
-    no_uv.provenance[std::size_t(VertexAttribute::TexCoord0)] = Provenance::Defaulted;
+    scene::Mesh flat_uv = test::mirrored_strip();
+    for (scene::Vertex& v : flat_uv.vertices) v.uv0 = {0.5f, 0.5f};
+    scene::Mesh no_uv = test::mirrored_strip();
+    no_uv.provenance[std::size_t(scene::VertexAttribute::TexCoord0)] = scene::Provenance::Defaulted;
     const lab::FamilyReport r = lab::make_tangent_family()->run(
         test::scene_of({test::mirrored_strip(), flat_uv, no_uv}), {});
     for (const lab::MethodResult& m : r.methods) {
@@ -62,7 +63,7 @@ TEST(LabTangents, FailuresNameThePrimitiveAndTheCause) {
 }
 
 TEST(LabFamilies, CancelStopsWithNoMethodsAndProgressReachesTheEnd) {
-    const Scene scene = test::scene_of({test::mirrored_strip(), test::mirrored_strip()});
+    const scene::Scene scene = test::scene_of({test::mirrored_strip(), test::mirrored_strip()});
     core::CancelToken token;
     token.cancel();
     lab::RunControl cancelled;
@@ -90,8 +91,8 @@ TEST(LabFamilies, CancelStopsWithNoMethodsAndProgressReachesTheEnd) {
 
 // Camera at the origin looking down -Z, 90 degrees, square, near 1, far 10: inside
 // means |x| <= -z, |y| <= -z, -10 <= z <= -1.
-Scene cull_scene() {
-    Scene s = test::scene_of({test::mirrored_strip()});
+scene::Scene cull_scene() {
+    scene::Scene s = test::scene_of({test::mirrored_strip()});
     const core::Aabb boxes[] = {
         core::Aabb::from_min_max({-0.5f, -0.5f, -5.5f}, {0.5f, 0.5f, -4.5f}), // in view
         core::Aabb::from_min_max({-0.5f, -0.5f, 4.5f}, {0.5f, 0.5f, 5.5f}),   // behind
@@ -103,7 +104,7 @@ Scene cull_scene() {
         core::Aabb::from_min_max({10.5f, -1.0f, -12.0f}, {20.0f, 1.0f, -9.0f})};
     s.instances.clear();
     for (const core::Aabb& b : boxes) {
-        MeshInstance inst;
+        scene::MeshInstance inst;
         inst.world_bounds = b;
         s.instances.push_back(inst);
         s.bounds.expand(b);
@@ -113,7 +114,7 @@ Scene cull_scene() {
 
 lab::CullFamilyOptions cull_options(bool gpu) {
     lab::CullFamilyOptions o;
-    CameraSpec c;
+    scene::CameraSpec c;
     c.eye = {0, 0, 0}, c.target = {0, 0, -1};
     c.fov_y_degrees = 90.0f, c.aspect = 1.0f, c.near_plane = 1.0f, c.far_plane = 10.0f;
     o.path = {c, c};
@@ -148,14 +149,14 @@ TEST(LabCulling, GpuAgreesWithPVertexUnderValidation) {
 
 TEST(LabCulling, DefaultPathSeesEverythingFromOutsideAndHalfFromInside) {
     const core::Aabb box = core::Aabb::from_min_max(glm::vec3(-1), glm::vec3(1));
-    const std::vector<CameraSpec> path = lab::camera_path(box, 8);
+    const std::vector<scene::CameraSpec> path = lab::camera_path(box, 8);
     ASSERT_EQ(path.size(), 8u);
     for (std::size_t i = 0; i < 4; ++i) EXPECT_GT(glm::length(path[i].eye), std::sqrt(3.0f));
     for (std::size_t i = 4; i < 8; ++i) EXPECT_LT(glm::length(path[i].eye), 1.0f);
 }
 
-ImageRecord generated(std::uint32_t w, std::uint32_t h, bool normal) {
-    ImageRecord img;
+scene::ImageRecord generated(std::uint32_t w, std::uint32_t h, bool normal) {
+    scene::ImageRecord img;
     img.width = w, img.height = h;
     img.mime_type = "image/x-sherpa-rgba8";
     for (std::uint32_t y = 0; y < h; ++y)
@@ -170,11 +171,12 @@ ImageRecord generated(std::uint32_t w, std::uint32_t h, bool normal) {
     return img;
 }
 
-Scene texture_scene() {
-    Scene s = test::scene_of({test::mirrored_strip()});
-    s.images = {generated(24, 20, false), generated(16, 16, true), ImageRecord{}};
+scene::Scene texture_scene() {
+    scene::Scene s = test::scene_of({test::mirrored_strip()});
+    s.images = {generated(24, 20, false), generated(16, 16, true), scene::ImageRecord{}};
     s.images[2].uri = "missing.png";
-    for (int i = 0; i < 3; ++i) s.textures.push_back(TextureRecord{"", i, -1, kRoleNone});
+    for (int i = 0; i < 3; ++i)
+        s.textures.push_back(scene::TextureRecord{"", i, -1, scene::kRoleNone});
     s.materials[0].base_color.texture = 0;
     s.materials[0].normal.texture = 1;
     s.materials[0].occlusion.texture = 2;
@@ -182,10 +184,10 @@ Scene texture_scene() {
 }
 
 TEST(LabTextures, PsnrIsTheCodecsOwnAndMissingImagesAreFailures) {
-    const Scene scene = texture_scene();
+    const scene::Scene scene = texture_scene();
     const lab::FamilyReport r = lab::make_texture_family()->run(scene, {});
     ASSERT_EQ(r.methods.size(), std::size_t(tex::kBc7MaxLevel + 1 + tex::kBc5MaxLevel + 1));
-    const ImageRecord& color = scene.images[0];
+    const scene::ImageRecord& color = scene.images[0];
     for (const lab::MethodResult& m : r.methods) {
         ASSERT_TRUE(m.ran) << m.method.name << " " << m.note;
         // The missing image is an occlusion map: BC7's failure, not BC5's.
@@ -206,7 +208,7 @@ TEST(LabTextures, PsnrIsTheCodecsOwnAndMissingImagesAreFailures) {
 }
 
 TEST(LabTextures, LargeImagesAreSampledAndSaySo) {
-    Scene scene = texture_scene();
+    scene::Scene scene = texture_scene();
     scene.images[0] = generated(300, 260, false);
     lab::TextureFamilyOptions o;
     o.sample_texels = 64 * 64 * 4;

@@ -18,11 +18,11 @@ namespace {
 using namespace sherpa;
 using sherpa::test::figure;
 
-std::unique_ptr<Scene> sphere_row(float metallic) {
+std::unique_ptr<scene::Scene> sphere_row(float metallic) {
     const auto path =
         test::write_temp(metallic > 0 ? "lab_lighting_metal.gltf" : "lab_lighting_dielectric.gltf",
                          test::sphere_row_gltf(3, metallic, 16));
-    LoadResult r = load_scene(path.string(), lab::lab_load_options());
+    scene::LoadResult r = scene::load_scene(path.string(), lab::lab_load_options());
     EXPECT_TRUE(r) << r.error;
     return r ? std::move(r.scene) : nullptr;
 }
@@ -154,9 +154,9 @@ TEST(LabLighting, Sh9AndCubeIrradianceAreBothNearThePathTracerOnASmoothEnvironme
 }
 
 TEST(LabLighting, TransmissionIsNearerThePathTracerThanWithoutIt) {
-    LoadResult loaded =
-        load_scene(std::string(SHERPA_TEST_DATA_DIR) + "/material_sweeps/transmission_sweep.gltf",
-                   lab::lab_load_options());
+    scene::LoadResult loaded = scene::load_scene(std::string(SHERPA_TEST_DATA_DIR) +
+                                                     "/material_sweeps/transmission_sweep.gltf",
+                                                 lab::lab_load_options());
     ASSERT_TRUE(loaded) << loaded.error;
     lab::LightingFamilyOptions o =
         tiny(std::make_shared<const render::EnvironmentImage>(render::room_environment(256)));

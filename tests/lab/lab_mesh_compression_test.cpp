@@ -26,7 +26,7 @@ int bits_of(const lab::MethodResult& m, const char* key) {
 
 TEST(LabMeshCompression, KnownBoundsBytesAndMonotonicErrors) {
     const int n = 20; // 400 vertices, 2166 indices
-    Scene scene = test::scene_of({test::wavy_grid(n)});
+    scene::Scene scene = test::scene_of({test::wavy_grid(n)});
     scene.instances[0].world = glm::scale(glm::mat4(1.0f), glm::vec3(2.0f)); // errors in world
     const lab::FamilyReport r = lab::make_family("mesh-compression")->run(scene, {});
     EXPECT_EQ(r.chart_error, "position_rms");
@@ -97,14 +97,14 @@ TEST(LabMeshCompression, KnownBoundsBytesAndMonotonicErrors) {
 }
 
 TEST(LabMeshCompression, UvErrorInTexelsOfTheBaseColourTexture) {
-    Scene scene = test::scene_of({test::wavy_grid(13)}); // no uv on the grid of 2^vt - 1
+    scene::Scene scene = test::scene_of({test::wavy_grid(13)}); // no uv on the grid of 2^vt - 1
     lab::FamilyReport r = lab::make_family("mesh-compression")->run(scene, {});
     EXPECT_EQ(r.methods[1].error("uv_max_texels"), nullptr) << "no texture, no texel figure";
-    ImageRecord image; // generated in code: the size is in the record
+    scene::ImageRecord image; // generated in code: the size is in the record
     image.width = 512, image.height = 256;
     image.pixels.resize(512 * 256 * 4);
     scene.images.push_back(image);
-    scene.textures.push_back({"base", 0, -1, kRoleColor});
+    scene.textures.push_back({"base", 0, -1, scene::kRoleColor});
     scene.materials[0].base_color.texture = 0;
     r = lab::make_family("mesh-compression")->run(scene, {});
     for (const lab::MethodResult& m : r.methods) {
@@ -121,11 +121,12 @@ TEST(LabMeshCompression, UvErrorInTexelsOfTheBaseColourTexture) {
 }
 
 TEST(LabMeshCompression, TangentFramesThatCollapseAreFailures) {
-    Mesh m = test::mirrored_strip();
-    m.provenance[std::size_t(VertexAttribute::Tangent)] = Provenance::Authored;
+    scene::Mesh m = test::mirrored_strip();
+    m.provenance[std::size_t(scene::VertexAttribute::Tangent)] = scene::Provenance::Authored;
     // Tangents 0.003 rad off the normal: 8-bit snorm rounds the x component to 0,
     // so the bitangent cross(n, t) vanishes; 12 bits keep it.
-    for (Vertex& v : m.vertices) v.tangent = glm::vec4(glm::normalize(glm::vec3(0.003f, 0, 1)), 1);
+    for (scene::Vertex& v : m.vertices)
+        v.tangent = glm::vec4(glm::normalize(glm::vec3(0.003f, 0, 1)), 1);
     const lab::FamilyReport r = lab::make_family("mesh-compression")->run(test::scene_of({m}), {});
     const std::string cause = "tangent frame flipped (bitangent reversed)";
     for (const lab::MethodResult& x : r.methods) {
@@ -137,7 +138,7 @@ TEST(LabMeshCompression, TangentFramesThatCollapseAreFailures) {
 }
 
 TEST(LabMeshCompression, NothingToQuantizeIsSaidNotHidden) {
-    for (const Scene& scene : {test::scene_of({}), test::scene_of({Mesh{}})}) {
+    for (const scene::Scene& scene : {test::scene_of({}), test::scene_of({scene::Mesh{}})}) {
         const lab::FamilyReport r = lab::make_family("mesh-compression")->run(scene, {});
         ASSERT_EQ(r.methods.size(), 16u);
         for (const lab::MethodResult& m : r.methods) {
@@ -146,15 +147,15 @@ TEST(LabMeshCompression, NothingToQuantizeIsSaidNotHidden) {
         }
         EXPECT_FALSE(r.notes.empty());
     }
-    Mesh bad = test::wavy_grid(3);
-    for (Vertex& v : bad.vertices) v.position.x = std::numeric_limits<float>::quiet_NaN();
-    Mesh partly = test::wavy_grid(3);
+    scene::Mesh bad = test::wavy_grid(3);
+    for (scene::Vertex& v : bad.vertices) v.position.x = std::numeric_limits<float>::quiet_NaN();
+    scene::Mesh partly = test::wavy_grid(3);
     partly.vertices[4].position.y = INFINITY;
-    Mesh huge = test::wavy_grid(3); // near FLT_MAX, drawn under a scale of 10
-    for (Vertex& v : huge.vertices) v.position *= 1e37f;
+    scene::Mesh huge = test::wavy_grid(3); // near FLT_MAX, drawn under a scale of 10
+    for (scene::Vertex& v : huge.vertices) v.position *= 1e37f;
     const lab::FamilyReport r =
         lab::make_family("mesh-compression")->run(test::scene_of({bad, partly}), {});
-    Scene far = test::scene_of({huge});
+    scene::Scene far = test::scene_of({huge});
     far.instances[0].world = glm::scale(glm::mat4(1.0f), glm::vec3(10.0f));
     for (const lab::MethodResult& m : lab::make_family("mesh-compression")->run(far, {}).methods) {
         SCOPED_TRACE(m.method.name + " " + m.method.parameters);

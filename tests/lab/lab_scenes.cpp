@@ -6,25 +6,25 @@ namespace sherpa::test {
 namespace {
 
 // Positions, normals and uv0 from the file; counts and bounds from the vertices.
-void finish_uv_mesh(Mesh& m) {
-    m.provenance[std::size_t(VertexAttribute::TexCoord0)] = Provenance::Authored;
-    m.provenance[std::size_t(VertexAttribute::Tangent)] = Provenance::Defaulted;
-    m.provenance[std::size_t(VertexAttribute::TexCoord1)] = Provenance::Defaulted;
-    m.provenance[std::size_t(VertexAttribute::Color0)] = Provenance::Defaulted;
-    for (const Vertex& v : m.vertices) m.local_bounds.expand(v.position);
+void finish_uv_mesh(scene::Mesh& m) {
+    m.provenance[std::size_t(scene::VertexAttribute::TexCoord0)] = scene::Provenance::Authored;
+    m.provenance[std::size_t(scene::VertexAttribute::Tangent)] = scene::Provenance::Defaulted;
+    m.provenance[std::size_t(scene::VertexAttribute::TexCoord1)] = scene::Provenance::Defaulted;
+    m.provenance[std::size_t(scene::VertexAttribute::Color0)] = scene::Provenance::Defaulted;
+    for (const scene::Vertex& v : m.vertices) m.local_bounds.expand(v.position);
     m.source_vertex_count = std::uint32_t(m.vertices.size());
     m.source_triangle_count = std::uint32_t(m.indices.size() / 3);
 }
 
 } // namespace
 
-Mesh mirrored_strip() {
-    Mesh m;
+scene::Mesh mirrored_strip() {
+    scene::Mesh m;
     m.name = "strip";
     // Columns x = 0, 1, 2; rows y = 0, 1. u = x on the left, 2 - x on the right.
     for (int row = 0; row < 2; ++row)
         for (int col = 0; col < 3; ++col) {
-            Vertex v;
+            scene::Vertex v;
             v.position = {float(col), float(row), 0.0f};
             v.normal = {0.0f, 0.0f, 1.0f};
             v.uv0 = {col <= 1 ? float(col) : 2.0f - float(col), 1.0f - float(row)};
@@ -37,13 +37,13 @@ Mesh mirrored_strip() {
     return m;
 }
 
-Mesh wavy_grid(int n) {
-    Mesh m;
+scene::Mesh wavy_grid(int n) {
+    scene::Mesh m;
     m.name = "wavy";
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             const float u = float(i) / float(n - 1), v = float(j) / float(n - 1);
-            Vertex vx;
+            scene::Vertex vx;
             vx.position = {3.0f * u, v, 0.25f + 0.25f * std::sin(7.0f * u + 3.0f * v)};
             vx.normal = glm::normalize(glm::vec3(std::sin(5.0f * u), std::cos(4.0f * v), 1.3f));
             vx.uv0 = {2.0f * u, v};
@@ -59,13 +59,13 @@ Mesh wavy_grid(int n) {
     return m;
 }
 
-Scene scene_of(std::vector<Mesh> meshes) {
-    Scene s;
+scene::Scene scene_of(std::vector<scene::Mesh> meshes) {
+    scene::Scene s;
     s.source = "synthetic";
     s.materials.emplace_back();
     for (std::size_t i = 0; i < meshes.size(); ++i) {
         meshes[i].group_id = std::uint32_t(i);
-        MeshInstance inst;
+        scene::MeshInstance inst;
         inst.mesh_id = std::uint32_t(i);
         inst.world_bounds = meshes[i].local_bounds;
         s.instances.push_back(inst);

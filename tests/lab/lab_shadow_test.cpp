@@ -12,16 +12,16 @@ namespace {
 using namespace sherpa;
 using sherpa::test::figure;
 
-std::unique_ptr<Scene> sunlit_scene() {
-    LoadResult r = load_scene(std::string(SHERPA_TEST_DATA_DIR) + "/double_sided_shadow.gltf",
-                              lab::lab_load_options());
+std::unique_ptr<scene::Scene> sunlit_scene() {
+    scene::LoadResult r = scene::load_scene(
+        std::string(SHERPA_TEST_DATA_DIR) + "/double_sided_shadow.gltf", lab::lab_load_options());
     EXPECT_TRUE(r) << r.error;
     if (!r) return nullptr;
-    Light sun;
-    sun.type = LightType::Directional;
+    scene::Light sun;
+    sun.type = scene::LightType::Directional;
     sun.intensity = 3.0f;
     r.scene->lights.push_back(sun);
-    PlacedLight placed;
+    scene::PlacedLight placed;
     placed.light = std::uint32_t(r.scene->lights.size() - 1);
     placed.direction = glm::normalize(glm::vec3(0.0f, -1.0f, 1.0f));
     r.scene->placed_lights.push_back(placed);

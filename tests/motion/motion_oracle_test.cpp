@@ -33,16 +33,16 @@ double quat_distance(const glm::quat& a, const json& r) {
 // Compares one animation of `file` at `times`; returns the largest differences.
 Agreement compare(const std::string& file, int animation, const std::vector<double>& times) {
     Agreement a;
-    auto loaded = sherpa::load_scene(file);
+    auto loaded = sherpa::scene::load_scene(file);
     EXPECT_TRUE(loaded) << loaded.error;
     if (!loaded) return a;
-    const sherpa::Scene& scene = *loaded.scene;
+    const sherpa::scene::Scene& scene = *loaded.scene;
     const json oracle = test::run_three_oracle(file, animation, times);
     if (!oracle.contains("frames")) return a;
     const double size = glm::length(scene.bounds.extent());
     for (const json& frame : oracle["frames"]) {
         const double t = frame["time"].get<double>();
-        const sherpa::Pose pose = sherpa::evaluate_pose(scene, animation, t);
+        const sherpa::scene::Pose pose = sherpa::scene::evaluate_pose(scene, animation, t);
         for (const json& n : frame["nodes"]) {
             const auto i = n["node"].get<std::size_t>();
             if (scene.nodes[i].has_matrix) continue; // three decomposes it; glTF keeps it
@@ -60,11 +60,11 @@ Agreement compare(const std::string& file, int animation, const std::vector<doub
             const auto node = p["node"].get<std::uint32_t>();
             const auto mesh = p["mesh"].get<std::uint32_t>();
             const auto prim = p["primitive"].get<std::uint32_t>();
-            const sherpa::PrimitiveInfo* info = nullptr;
+            const sherpa::scene::PrimitiveInfo* info = nullptr;
             for (const auto& pi : scene.primitives)
                 if (pi.mesh == mesh && pi.primitive == prim) info = &pi;
             if (!info || info->engine_mesh < 0) continue; // points/lines: not posed by us
-            const auto ours = sherpa::posed_positions(scene, pose, node, *info);
+            const auto ours = sherpa::scene::posed_positions(scene, pose, node, *info);
             const auto& theirs = p["positions"];
             const std::size_t count = theirs.size() / 3;
             EXPECT_EQ(count, info->vertices) << file << " mesh " << mesh;
@@ -96,7 +96,7 @@ class MotionOracle : public ::testing::TestWithParam<std::string> {};
 TEST_P(MotionOracle, PosedVerticesAndNodesAgreeWithThreeJs) {
     const std::string file =
         GetParam().find('/') == std::string::npos ? test::gltf_asset(GetParam()) : GetParam();
-    auto loaded = sherpa::load_scene(file);
+    auto loaded = sherpa::scene::load_scene(file);
     ASSERT_TRUE(loaded) << loaded.error;
     const auto& anims = loaded.scene->animations;
     std::size_t checked_vertices = 0;
@@ -141,7 +141,7 @@ INSTANTIATE_TEST_SUITE_P(
 // translation, rotation, scale), each at 100 times across and a little beyond its keys.
 TEST(MotionOracle, InterpolationTestAgreesAt100Times) {
     const std::string file = std::string(SHERPA_TEST_DATA_DIR) + "/interpolation_test.gltf";
-    auto loaded = sherpa::load_scene(file);
+    auto loaded = sherpa::scene::load_scene(file);
     ASSERT_TRUE(loaded) << loaded.error;
     ASSERT_EQ(loaded.scene->animations.size(), 9u);
     for (int anim = 0; anim < 9; ++anim) {

@@ -43,8 +43,8 @@ INSTANTIATE_TEST_SUITE_P(
     test::case_name);
 
 TEST(AllowedInput, PrimitiveWithoutMaterialUsesTheDefaultWithAWarning) {
-    const sherpa::LoadResult r =
-        sherpa::load_scene((test::data_dir() / "no_material.gltf").string());
+    const sherpa::scene::LoadResult r =
+        sherpa::scene::load_scene((test::data_dir() / "no_material.gltf").string());
     ASSERT_TRUE(r) << r.error;
     const auto& mat = r.scene->materials.at(r.scene->meshes.at(0).material_id);
     EXPECT_EQ(mat.gltf_index, -1);
@@ -54,8 +54,8 @@ TEST(AllowedInput, PrimitiveWithoutMaterialUsesTheDefaultWithAWarning) {
 
 // Load and warn: an unresolved default scene shows scene 0 and says so.
 TEST(AllowedInput, DefaultSceneOutOfRangeShowsTheFirstScene) {
-    const sherpa::LoadResult r =
-        sherpa::load_scene((test::data_dir() / "default_scene_out_of_range.gltf").string());
+    const sherpa::scene::LoadResult r =
+        sherpa::scene::load_scene((test::data_dir() / "default_scene_out_of_range.gltf").string());
     ASSERT_TRUE(r) << r.error;
     EXPECT_EQ(r.scene->displayed_scene, 0);
     bool named = false;
@@ -68,8 +68,8 @@ TEST(AllowedInput, DefaultSceneOutOfRangeShowsTheFirstScene) {
 }
 
 TEST(AllowedInput, EmptyPrimitiveIsSkippedWithoutInvertedBounds) {
-    const sherpa::LoadResult r =
-        sherpa::load_scene((test::data_dir() / "empty_primitive.gltf").string());
+    const sherpa::scene::LoadResult r =
+        sherpa::scene::load_scene((test::data_dir() / "empty_primitive.gltf").string());
     ASSERT_TRUE(r) << r.error;
     EXPECT_TRUE(r.scene->meshes.empty());
     EXPECT_TRUE(r.scene->instances.empty());
@@ -79,10 +79,11 @@ TEST(AllowedInput, EmptyPrimitiveIsSkippedWithoutInvertedBounds) {
 }
 
 TEST(AllowedInput, PointsAreImportedAsPointsAndBounded) {
-    const sherpa::LoadResult r = sherpa::load_scene((test::data_dir() / "points.gltf").string());
+    const sherpa::scene::LoadResult r =
+        sherpa::scene::load_scene((test::data_dir() / "points.gltf").string());
     ASSERT_TRUE(r) << r.error;
     ASSERT_EQ(r.scene->meshes.size(), 1u);
-    EXPECT_EQ(r.scene->meshes[0].topology(), sherpa::Topology::Points);
+    EXPECT_EQ(r.scene->meshes[0].topology(), sherpa::scene::Topology::Points);
     EXPECT_EQ(r.scene->meshes[0].element_count(), 3u);
     EXPECT_EQ(r.scene->meshes[0].triangle_count(), 0u);
     EXPECT_EQ(r.scene->counts.primitives, 1u);
@@ -136,7 +137,7 @@ void mutate_and_load(const std::string& source, const std::string& suffix, int r
         }
         // Relative buffer URIs must still resolve: copy the file next to its .bin.
         const auto target = dir.empty() ? tmp : tmp;
-        const sherpa::LoadResult r = sherpa::load_scene(target.string());
+        const sherpa::scene::LoadResult r = sherpa::scene::load_scene(target.string());
         if (!r) {
             ++failures;
             EXPECT_FALSE(r.error.empty());
@@ -173,7 +174,7 @@ TEST(Fuzz, MutatedGlbNeverCrashes) {
         f.write(reinterpret_cast<const char*>(glb.data()),
                 static_cast<std::streamsize>(glb.size()));
     }
-    const sherpa::LoadResult ok = sherpa::load_scene(path.string());
+    const sherpa::scene::LoadResult ok = sherpa::scene::load_scene(path.string());
     ASSERT_TRUE(ok) << ok.error;
     mutate_and_load(path.string(), ".glb", 400, 2);
     std::filesystem::remove(path);

@@ -9,14 +9,14 @@
 
 namespace {
 
-using sherpa::Provenance;
-using sherpa::VertexAttribute;
+using sherpa::scene::Provenance;
+using sherpa::scene::VertexAttribute;
 
 TEST(BuiltinDefault, HasEverythingTheDebugViewsNeed) {
-    const sherpa::LoadResult r = sherpa::load_scene("builtin:default");
+    const sherpa::scene::LoadResult r = sherpa::scene::load_scene("builtin:default");
     ASSERT_TRUE(r) << r.error;
-    const sherpa::Scene& s = *r.scene;
-    std::set<sherpa::AlphaMode> modes;
+    const sherpa::scene::Scene& s = *r.scene;
+    std::set<sherpa::scene::AlphaMode> modes;
     bool normal_map = false;
     for (const auto& m : s.materials) {
         modes.insert(m.alpha_mode);
@@ -42,7 +42,7 @@ TEST(BuiltinDefault, HasEverythingTheDebugViewsNeed) {
 // Every triangle's geometric normal agrees with its vertex normals: outward,
 // counter-clockwise winding on every generated shape.
 TEST(BuiltinDefault, ShapesWindCounterClockwiseOutward) {
-    const sherpa::LoadResult r = sherpa::load_scene("builtin:default");
+    const sherpa::scene::LoadResult r = sherpa::scene::load_scene("builtin:default");
     ASSERT_TRUE(r) << r.error;
     for (const auto& m : r.scene->meshes) {
         for (std::size_t t = 0; t < m.indices.size(); t += 3) {
@@ -59,7 +59,7 @@ TEST(BuiltinDefault, ShapesWindCounterClockwiseOutward) {
 
 // Mirrored UV islands have opposite signs of the UV-space triangle area.
 TEST(BuiltinDefault, TorusAndBoxHaveMirroredUvIslands) {
-    const sherpa::LoadResult r = sherpa::load_scene("builtin:default");
+    const sherpa::scene::LoadResult r = sherpa::scene::load_scene("builtin:default");
     ASSERT_TRUE(r) << r.error;
     for (const auto& m : r.scene->meshes) {
         if (m.name.find("mirrored") == std::string::npos) continue;
@@ -78,7 +78,8 @@ TEST(BuiltinDefault, TorusAndBoxHaveMirroredUvIslands) {
 
 TEST(BuiltinGrid, PlacesNInstances) {
     for (std::uint64_t n : {1u, 7u, 10000u}) {
-        const sherpa::LoadResult r = sherpa::load_scene("builtin:grid?n=" + std::to_string(n));
+        const sherpa::scene::LoadResult r =
+            sherpa::scene::load_scene("builtin:grid?n=" + std::to_string(n));
         ASSERT_TRUE(r) << r.error;
         EXPECT_EQ(r.scene->instances.size(), n);
         for (const auto& inst : r.scene->instances) ASSERT_TRUE(inst.world_bounds.valid());
@@ -89,7 +90,7 @@ TEST(BuiltinGrid, RejectsBadSpecs) {
     for (const char* spec :
          {"builtin:grid?n=0", "builtin:grid?n=-3", "builtin:grid?n=12x",
           "builtin:grid?n=", "builtin:grid?n=99999999999", "builtin:nothing", "builtin:"}) {
-        const sherpa::LoadResult r = sherpa::load_scene(spec);
+        const sherpa::scene::LoadResult r = sherpa::scene::load_scene(spec);
         EXPECT_FALSE(r) << spec;
         EXPECT_EQ(r.error.rfind(spec, 0), 0u) << r.error;
     }

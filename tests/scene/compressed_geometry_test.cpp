@@ -76,10 +76,10 @@ struct Drawn {
     float uv_extent = 0.0f;
 };
 
-Drawn drawn(const sherpa::Scene& scene) {
+Drawn drawn(const sherpa::scene::Scene& scene) {
     Drawn d;
     for (const auto& inst : scene.instances) {
-        const sherpa::Mesh& mesh = scene.meshes[inst.mesh_id];
+        const sherpa::scene::Mesh& mesh = scene.meshes[inst.mesh_id];
         const auto& slot = scene.materials[inst.material_id].base_color;
         const glm::mat3 uv_matrix = slot.transform.present ? slot.transform.matrix() : glm::mat3(1);
         const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(inst.world)));
@@ -153,9 +153,9 @@ class CompressedFile : public ::testing::TestWithParam<CorpusFile> {};
 TEST_P(CompressedFile, DrawsTheSourceWithinTheQuantizationStep) {
     const CorpusFile& f = GetParam();
     const std::string path = (corpus_dir() / f.file).string();
-    const sherpa::LoadResult compressed = sherpa::load_scene(path);
+    const sherpa::scene::LoadResult compressed = sherpa::scene::load_scene(path);
     ASSERT_TRUE(compressed) << compressed.error;
-    const sherpa::LoadResult source = sherpa::load_scene(test::gltf_asset(f.model));
+    const sherpa::scene::LoadResult source = sherpa::scene::load_scene(test::gltf_asset(f.model));
     ASSERT_TRUE(source) << source.error;
     std::size_t compressed_prims = 0;
     std::uint64_t encoded = 0, decoded = 0;
@@ -244,13 +244,13 @@ TEST(CompressedCorpus, IsPresent) {
 // compressed file lies on a vertex of the source's pose within 1% of the scene's
 // size (rotations are quantized to 12 bits and resampled at 30 Hz; a mis-decoded
 // quaternion turns the box by far more).
-std::vector<glm::vec3> posed_vertices(const sherpa::Scene& scene, double time) {
-    const sherpa::Pose pose = sherpa::evaluate_pose(scene, 0, time);
+std::vector<glm::vec3> posed_vertices(const sherpa::scene::Scene& scene, double time) {
+    const sherpa::scene::Pose pose = sherpa::scene::evaluate_pose(scene, 0, time);
     std::vector<glm::vec3> out;
     for (std::uint32_t n = 0; n < scene.nodes.size(); ++n)
-        for (const sherpa::PrimitiveInfo& p : scene.primitives)
+        for (const sherpa::scene::PrimitiveInfo& p : scene.primitives)
             if (scene.nodes[n].mesh >= 0 && p.mesh == std::uint32_t(scene.nodes[n].mesh)) {
-                const auto v = sherpa::posed_positions(scene, pose, n, p);
+                const auto v = sherpa::scene::posed_positions(scene, pose, n, p);
                 out.insert(out.end(), v.begin(), v.end());
             }
     return out;
@@ -270,8 +270,9 @@ TEST(CompressedCorpus, QuaternionFilteredAnimationPosesLikeTheSource) {
                                   .value("EXT_meshopt_compression", nlohmann::json::object())
                                   .value("filter", "") == "QUATERNION";
     ASSERT_TRUE(quaternion) << "gltfpack no longer filters rotations: the test checks nothing";
-    const sherpa::LoadResult source = sherpa::load_scene(test::gltf_asset("BoxAnimated"));
-    const sherpa::LoadResult compressed = sherpa::load_scene(file.string());
+    const sherpa::scene::LoadResult source =
+        sherpa::scene::load_scene(test::gltf_asset("BoxAnimated"));
+    const sherpa::scene::LoadResult compressed = sherpa::scene::load_scene(file.string());
     ASSERT_TRUE(source) << source.error;
     ASSERT_TRUE(compressed) << compressed.error;
     ASSERT_FALSE(compressed.scene->animations.empty());

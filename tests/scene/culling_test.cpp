@@ -66,7 +66,7 @@ struct RandomCase {
 
 RandomCase random_camera(std::mt19937& rng) {
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-    CameraSpec c;
+    scene::CameraSpec c;
     c.eye = glm::vec3(u(rng), u(rng), u(rng)) * 20.0f;
     c.target =
         c.eye + glm::normalize(glm::vec3(u(rng), u(rng), u(rng)) + glm::vec3(0.0f, 0.0f, 0.01f));
@@ -75,9 +75,9 @@ RandomCase random_camera(std::mt19937& rng) {
     c.near_plane = 0.01f + 0.5f * (1.0f + u(rng));
     c.far_plane = (rng() % 2) ? 0.0f : c.near_plane + 5.0f + 40.0f * (1.0f + u(rng));
     if (rng() % 5 == 0) { // orthographic
-        const glm::mat4 p =
-            orthographic_reverse_z(1.0f + 10.0f * (1.0f + u(rng)), 1.0f + 10.0f * (1.0f + u(rng)),
-                                   -5.0f + 5.0f * u(rng), 20.0f + 20.0f * (1.0f + u(rng)));
+        const glm::mat4 p = scene::orthographic_reverse_z(
+            1.0f + 10.0f * (1.0f + u(rng)), 1.0f + 10.0f * (1.0f + u(rng)), -5.0f + 5.0f * u(rng),
+            20.0f + 20.0f * (1.0f + u(rng)));
         return {p * c.view(), c.eye};
     }
     return {c.view_projection(), c.eye};
@@ -103,16 +103,17 @@ TEST(Culling, EveryMethodAgreesWithTheBruteForceReference) {
     std::uint64_t false_negatives[3] = {}, exact_false_positives = 0;
     for (int cam = 0; cam < 60; ++cam) {
         const RandomCase rc = random_camera(rng);
-        const Frustum f = frustum_from_view_projection(rc.vp);
+        const scene::Frustum f = scene::frustum_from_view_projection(rc.vp);
         std::vector<core::Aabb> boxes;
         for (int b = 0; b < 150; ++b) boxes.push_back(random_box(rng, rc.eye));
-        BoxesSoA soa;
+        scene::BoxesSoA soa;
         soa.assign(boxes);
         std::vector<std::uint8_t> results[3];
-        for (CullMethod m : {CullMethod::Sphere, CullMethod::PVertex, CullMethod::Exact}) {
+        for (scene::CullMethod m :
+             {scene::CullMethod::Sphere, scene::CullMethod::PVertex, scene::CullMethod::Exact}) {
             auto& out = results[static_cast<int>(m)];
             out.resize(boxes.size());
-            cull_boxes(f, soa, m, core::SimdLevel::Avx512, out);
+            scene::cull_boxes(f, soa, m, core::SimdLevel::Avx512, out);
         }
         for (std::size_t i = 0; i < boxes.size(); ++i) {
             const double scale = 1e-5 * std::max({1.0, double(glm::length(boxes[i].max)),
@@ -143,11 +144,11 @@ TEST(Culling, PVertexKeepsBoxesOutsideAFrustumCornerButExactDropsThem) {
     // With a rotated camera the side planes mix all three axes, and boxes outside
     // a frustum edge can straddle both planes' extensions: the p-vertex test keeps
     // them, the exact test must not. Deterministic search for such boxes.
-    CameraSpec c;
+    scene::CameraSpec c;
     std::string error;
     ASSERT_TRUE(parse_camera_spec("eye=0,0,0:target=1,0.7,-1.3:fov=50:aspect=1.5:far=40", c, error))
         << error;
-    const Frustum f = frustum_from_view_projection(c.view_projection());
+    const scene::Frustum f = scene::frustum_from_view_projection(c.view_projection());
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     int found = 0;
@@ -155,10 +156,10 @@ TEST(Culling, PVertexKeepsBoxesOutsideAFrustumCornerButExactDropsThem) {
         const glm::vec3 centre = glm::vec3(u(rng), u(rng), u(rng)) * 30.0f;
         const core::Aabb box =
             core::Aabb::from_min_max(centre - glm::vec3(1.5f), centre + glm::vec3(1.5f));
-        if (!pvertex_visible(f, box) || reference_feasible(c.view_projection(), box, 1e-3))
+        if (!scene::pvertex_visible(f, box) || reference_feasible(c.view_projection(), box, 1e-3))
             continue;
         ++found;
-        EXPECT_FALSE(exact_visible(f, box))
+        EXPECT_FALSE(scene::exact_visible(f, box))
             << "box at " << centre.x << "," << centre.y << "," << centre.z;
     }
     EXPECT_GE(found, 5)
@@ -166,59 +167,62 @@ TEST(Culling, PVertexKeepsBoxesOutsideAFrustumCornerButExactDropsThem) {
 }
 
 TEST(Culling, InvalidBoxesAreReportedAndKept) {
-    CameraSpec c;
+    scene::CameraSpec c;
     c.eye = {0, 0, 10};
     c.target = {0, 0, 0};
-    const Frustum f = frustum_from_view_projection(c.view_projection());
+    const scene::Frustum f = scene::frustum_from_view_projection(c.view_projection());
     std::vector<core::Aabb> boxes = {
         core::Aabb::from_min_max({1000, 0, 0}, {1001, 1, 1}),  // culled
         core::Aabb::from_min_max({NAN, 0, 0}, {1, 1, 1}),      // NaN
         core::Aabb::from_min_max({0, 0, 0}, {INFINITY, 1, 1}), // Inf
         core::Aabb::from_min_max({5000, 1, 1}, {4000, 0, 0}),  // inverted
         core::Aabb::empty()};                                  // never set
-    BoxesSoA soa;
+    scene::BoxesSoA soa;
     soa.assign(boxes);
-    for (CullMethod m : {CullMethod::Sphere, CullMethod::PVertex, CullMethod::Exact})
+    for (scene::CullMethod m :
+         {scene::CullMethod::Sphere, scene::CullMethod::PVertex, scene::CullMethod::Exact})
         for (core::SimdLevel s :
              {core::SimdLevel::Scalar, core::SimdLevel::Avx2, core::SimdLevel::Avx512}) {
             std::vector<std::uint8_t> vis(boxes.size());
-            const CullCounts counts = cull_boxes(f, soa, m, s, vis);
+            const scene::CullCounts counts = scene::cull_boxes(f, soa, m, s, vis);
             EXPECT_EQ(counts.invalid, 4u);
             EXPECT_EQ(vis, (std::vector<std::uint8_t>{0, 1, 1, 1, 1}));
         }
 }
 
 TEST(Culling, FrustumPlanesForInfiniteAndFiniteReverseZ) {
-    CameraSpec c;
+    scene::CameraSpec c;
     c.eye = {0, 0, 0};
     c.target = {0, 0, -1};
-    Frustum inf = frustum_from_view_projection(c.view_projection());
+    scene::Frustum inf = scene::frustum_from_view_projection(c.view_projection());
     EXPECT_EQ(inf.plane_count, 5u);
-    EXPECT_TRUE(pvertex_visible(inf, core::Aabb::from_min_max({-1, -1, -1e6f}, {1, 1, -1e6f + 1})));
-    EXPECT_FALSE(pvertex_visible(inf, core::Aabb::from_min_max({-1, -1, 1}, {1, 1, 2})))
+    EXPECT_TRUE(
+        scene::pvertex_visible(inf, core::Aabb::from_min_max({-1, -1, -1e6f}, {1, 1, -1e6f + 1})));
+    EXPECT_FALSE(scene::pvertex_visible(inf, core::Aabb::from_min_max({-1, -1, 1}, {1, 1, 2})))
         << "behind the eye";
     c.far_plane = 100.0f;
-    Frustum fin = frustum_from_view_projection(c.view_projection());
+    scene::Frustum fin = scene::frustum_from_view_projection(c.view_projection());
     EXPECT_EQ(fin.plane_count, 6u);
-    EXPECT_FALSE(pvertex_visible(fin, core::Aabb::from_min_max({-1, -1, -300}, {1, 1, -200})));
+    EXPECT_FALSE(
+        scene::pvertex_visible(fin, core::Aabb::from_min_max({-1, -1, -300}, {1, 1, -200})));
     for (std::uint32_t i = 0; i < fin.plane_count; ++i)
         EXPECT_NEAR(glm::length(fin.planes[i].normal), 1.0f, 1e-5f);
-    EXPECT_TRUE(frustum_from_view_projection(glm::mat4(NAN)).empty);
+    EXPECT_TRUE(scene::frustum_from_view_projection(glm::mat4(NAN)).empty);
 }
 
 TEST(Culling, SimdPathsMatchScalarOnTheGrid) {
-    const LoadResult r = load_scene("builtin:grid?n=10000");
+    const scene::LoadResult r = scene::load_scene("builtin:grid?n=10000");
     ASSERT_TRUE(r) << r.error;
-    const BoxesSoA boxes = instance_boxes(*r.scene);
-    CameraSpec c;
+    const scene::BoxesSoA boxes = scene::instance_boxes(*r.scene);
+    scene::CameraSpec c;
     std::string error; // LeakSanitizer found `*new std::string` here
     ASSERT_TRUE(parse_camera_spec("eye=20,15,40:target=0,0,0:fov=50", c, error)) << error;
-    const Frustum f = frustum_from_view_projection(c.view_projection());
+    const scene::Frustum f = scene::frustum_from_view_projection(c.view_projection());
     std::vector<std::uint8_t> scalar(boxes.size()), simd(boxes.size());
-    cull_boxes(f, boxes, CullMethod::PVertex, core::SimdLevel::Scalar, scalar);
+    scene::cull_boxes(f, boxes, scene::CullMethod::PVertex, core::SimdLevel::Scalar, scalar);
     for (core::SimdLevel s : {core::SimdLevel::Avx2, core::SimdLevel::Avx512})
         for (int threads : {1, 2}) {
-            cull_boxes(f, boxes, CullMethod::PVertex, s, simd, threads);
+            scene::cull_boxes(f, boxes, scene::CullMethod::PVertex, s, simd, threads);
             EXPECT_EQ(scalar, simd) << to_string(s) << " threads " << threads;
         }
 }
@@ -235,7 +239,7 @@ TEST(Culling, BlockDecisionsEqualBoxByBoxResults) {
     std::uint64_t whole_in = 0, whole_out = 0, mixed = 0;
     for (int cam = 0; cam < 40; ++cam) {
         const RandomCase rc = random_camera(rng);
-        const Frustum f = frustum_from_view_projection(rc.vp);
+        const scene::Frustum f = scene::frustum_from_view_projection(rc.vp);
         std::vector<core::Aabb> boxes;
         const std::size_t count = 8192 + rng() % 700;
         while (boxes.size() < count) {
@@ -250,16 +254,17 @@ TEST(Culling, BlockDecisionsEqualBoxByBoxResults) {
         }
         boxes[rng() % count] = core::Aabb::from_min_max({NAN, 0, 0}, {1, 1, 1});
         boxes[rng() % count] = core::Aabb::from_min_max({3, 3, 3}, {-3, -3, -3});
-        BoxesSoA with_blocks;
+        scene::BoxesSoA with_blocks;
         with_blocks.assign(boxes);
-        BoxesSoA box_by_box = with_blocks;
+        scene::BoxesSoA box_by_box = with_blocks;
         for (auto* v : {&box_by_box.block_min_x, &box_by_box.block_min_y, &box_by_box.block_min_z,
                         &box_by_box.block_max_x, &box_by_box.block_max_y, &box_by_box.block_max_z})
             v->clear();
         std::vector<std::uint8_t> want(count), got(count);
-        cull_boxes(f, box_by_box, CullMethod::PVertex, core::SimdLevel::Avx512, want);
+        scene::cull_boxes(f, box_by_box, scene::CullMethod::PVertex, core::SimdLevel::Avx512, want);
         for (int threads : {1, 2}) {
-            cull_boxes(f, with_blocks, CullMethod::PVertex, core::SimdLevel::Avx512, got, threads);
+            scene::cull_boxes(f, with_blocks, scene::CullMethod::PVertex, core::SimdLevel::Avx512,
+                              got, threads);
             ASSERT_EQ(want, got) << "camera " << cam << ", threads " << threads;
         }
         for (std::size_t b = 0; b + 16 <= count; b += 16) {
@@ -274,16 +279,16 @@ TEST(Culling, BlockDecisionsEqualBoxByBoxResults) {
 }
 
 TEST(CullPass, ListsGroupsAndBackToFrontTransparents) {
-    const LoadResult r = load_scene("builtin:default");
+    const scene::LoadResult r = scene::load_scene("builtin:default");
     ASSERT_TRUE(r) << r.error;
-    CameraSpec c;
+    scene::CameraSpec c;
     std::string error;
     ASSERT_TRUE(parse_camera_spec("eye=0,6,14:target=0,0,0", c, error)) << error;
-    CullOptions opt;
+    scene::CullOptions opt;
     opt.count_false_positives = true;
-    const PassResult p =
-        cull_pass(prepare_cull_input(*r.scene), frustum_from_view_projection(c.view_projection()),
-                  c.eye, opt, "camera");
+    const scene::PassResult p = scene::cull_pass(
+        scene::prepare_cull_input(*r.scene),
+        scene::frustum_from_view_projection(c.view_projection()), c.eye, opt, "camera");
     EXPECT_EQ(p.stats.visible, p.visible_opaque.size() + p.visible_transparent.size());
     EXPECT_GE(p.visible_transparent.size(), 1u);
     EXPECT_GE(p.stats.false_positives, 0);
@@ -294,9 +299,9 @@ TEST(CullPass, ListsGroupsAndBackToFrontTransparents) {
 }
 
 TEST(Cascades, CullVolumeKeepsOffscreenAndLargeCastersAndDropsOnesBehindTheSlice) {
-    const LoadResult r = load_scene("builtin:default");
+    const scene::LoadResult r = scene::load_scene("builtin:default");
     ASSERT_TRUE(r) << r.error;
-    CameraSpec c;
+    scene::CameraSpec c;
     std::string error;
     ASSERT_TRUE(parse_camera_spec("eye=0,1,6:target=0,1,0:far=20", c, error)) << error;
     const glm::vec3 light_dir = glm::normalize(glm::vec3(0.0f, -1.0f, -0.2f));
@@ -312,49 +317,51 @@ TEST(Cascades, CullVolumeKeepsOffscreenAndLargeCastersAndDropsOnesBehindTheSlice
     const core::Aabb deep = core::Aabb::from_min_max({-0.5f, -30.5f, -1.6f}, {0.5f, -29.5f, -0.6f});
     core::Aabb bounds = r.scene->bounds;
     for (const core::Aabb& b : {caster, slab, deep}) bounds.expand(b);
-    const ShadowCascades s = fit_shadow_cascades(cascade_camera(c), bounds, light_dir, 3, 2048);
+    const scene::ShadowCascades s =
+        scene::fit_shadow_cascades(cascade_camera(c), bounds, light_dir, 3, 2048);
     ASSERT_EQ(s.count, 3u);
-    const Frustum cull0 = frustum_from_view_projection(s.cull_view_proj[0]);
-    EXPECT_TRUE(exact_visible(cull0, caster));
-    EXPECT_FALSE(pvertex_visible(frustum_from_view_projection(c.view_projection()), caster))
+    const scene::Frustum cull0 = scene::frustum_from_view_projection(s.cull_view_proj[0]);
+    EXPECT_TRUE(scene::exact_visible(cull0, caster));
+    EXPECT_FALSE(
+        scene::pvertex_visible(scene::frustum_from_view_projection(c.view_projection()), caster))
         << "not in the camera view";
     for (std::uint32_t i = 0; i < s.count; ++i) {
-        const Frustum f = frustum_from_view_projection(s.cull_view_proj[i]);
-        EXPECT_TRUE(pvertex_visible(f, slab)) << "cascade " << i;
-        EXPECT_TRUE(exact_visible(f, slab)) << "cascade " << i;
+        const scene::Frustum f = scene::frustum_from_view_projection(s.cull_view_proj[i]);
+        EXPECT_TRUE(scene::pvertex_visible(f, slab)) << "cascade " << i;
+        EXPECT_TRUE(scene::exact_visible(f, slab)) << "cascade " << i;
     }
-    EXPECT_TRUE(exact_visible(frustum_from_view_projection(s.view_proj[0]), deep))
+    EXPECT_TRUE(scene::exact_visible(scene::frustum_from_view_projection(s.view_proj[0]), deep))
         << "inside the rendered volume, whose depth covers the scene";
-    EXPECT_FALSE(exact_visible(cull0, deep)) << "behind the slice as seen from the light";
+    EXPECT_FALSE(scene::exact_visible(cull0, deep)) << "behind the slice as seen from the light";
 }
 
 TEST(Cascades, MainLightAndBoundsFollowTheRenderer) {
-    const LoadResult r = load_scene("builtin:grid?n=100");
+    const scene::LoadResult r = scene::load_scene("builtin:grid?n=100");
     ASSERT_TRUE(r) << r.error;
-    const auto sun = main_light_direction(*r.scene);
+    const auto sun = scene::main_light_direction(*r.scene);
     ASSERT_TRUE(sun.has_value());
-    for (const PlacedLight& pl : r.scene->placed_lights)
-        if (r.scene->lights[pl.light].type == LightType::Directional) {
+    for (const scene::PlacedLight& pl : r.scene->placed_lights)
+        if (r.scene->lights[pl.light].type == scene::LightType::Directional) {
             EXPECT_NEAR(glm::length(*sun - glm::normalize(pl.direction)), 0.0f, 1e-6f);
             break;
         }
-    const core::Aabb b = drawable_bounds(*r.scene);
+    const core::Aabb b = scene::drawable_bounds(*r.scene);
     EXPECT_EQ(b.min, r.scene->bounds.min);
     EXPECT_EQ(b.max, r.scene->bounds.max);
-    Scene no_lights;
-    const auto fallback = main_light_direction(no_lights);
+    scene::Scene no_lights;
+    const auto fallback = scene::main_light_direction(no_lights);
     ASSERT_TRUE(fallback.has_value());
-    EXPECT_NEAR(glm::length(*fallback - glm::normalize(kDefaultSunDirection)), 0.0f, 1e-6f);
-    Scene point_only;
-    point_only.lights.push_back(Light{});
-    point_only.lights.back().type = LightType::Point;
-    point_only.placed_lights.push_back(PlacedLight{});
-    EXPECT_FALSE(main_light_direction(point_only).has_value())
+    EXPECT_NEAR(glm::length(*fallback - glm::normalize(scene::kDefaultSunDirection)), 0.0f, 1e-6f);
+    scene::Scene point_only;
+    point_only.lights.push_back(scene::Light{});
+    point_only.lights.back().type = scene::LightType::Point;
+    point_only.placed_lights.push_back(scene::PlacedLight{});
+    EXPECT_FALSE(scene::main_light_direction(point_only).has_value())
         << "no directional light: no shadows";
 }
 
 TEST(CameraSpec, ParsesDefaultsAndRejectsBadInput) {
-    CameraSpec c;
+    scene::CameraSpec c;
     std::string error;
     ASSERT_TRUE(parse_camera_spec("eye=1,2,3:target=0,0,0", c, error)) << error;
     EXPECT_EQ(c.up, glm::vec3(0, 1, 0));
@@ -370,7 +377,7 @@ TEST(CameraSpec, ParsesDefaultsAndRejectsBadInput) {
 }
 
 TEST(RingHistory, KeepsTheNewest) {
-    RingHistory<int> h(3);
+    scene::RingHistory<int> h(3);
     for (int i = 0; i < 5; ++i) h.push(i);
     ASSERT_EQ(h.size(), 3u);
     EXPECT_EQ(h[0], 2);

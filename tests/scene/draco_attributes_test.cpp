@@ -31,13 +31,13 @@ std::string corpus(const std::string& file) {
     return (fs::path(SHERPA_GLTF_COMPRESS_CACHE) / "corpus" / file).string();
 }
 
-std::string all_warnings(const sherpa::Scene& s) {
+std::string all_warnings(const sherpa::scene::Scene& s) {
     std::string out;
     for (const auto& w : s.warnings) out += w + "\n";
     return out;
 }
 
-float max_extent(const sherpa::Scene& s) {
+float max_extent(const sherpa::scene::Scene& s) {
     const glm::vec3 e = s.bounds.extent();
     return std::max({e.x, e.y, e.z});
 }
@@ -45,8 +45,9 @@ float max_extent(const sherpa::Scene& s) {
 // Every skinned vertex of the compressed file has a source vertex at the same place
 // (14-bit positions over the extent) with the same four joints and weights within
 // one 12-bit step, and the other way round (Draco's edgebreaker reorders vertices).
-std::size_t unmatched_skin(const sherpa::PrimitiveMotion& a, const sherpa::PrimitiveMotion& b,
-                           float position_tol, float weight_tol) {
+std::size_t unmatched_skin(const sherpa::scene::PrimitiveMotion& a,
+                           const sherpa::scene::PrimitiveMotion& b, float position_tol,
+                           float weight_tol) {
     std::size_t misses = 0;
     const std::uint32_t n = a.influences;
     for (std::size_t i = 0; i < a.base_positions.size(); ++i) {
@@ -69,9 +70,11 @@ std::size_t unmatched_skin(const sherpa::PrimitiveMotion& a, const sherpa::Primi
 }
 
 TEST(DracoAttributes, SkinnedFileKeepsItsJointsAsIntegers) {
-    const sherpa::LoadResult draco = sherpa::load_scene(corpus("RiggedSimple.draco.glb"));
+    const sherpa::scene::LoadResult draco =
+        sherpa::scene::load_scene(corpus("RiggedSimple.draco.glb"));
     ASSERT_TRUE(draco) << draco.error; // was: JOINTS_0 ... (componentType 5126)
-    const sherpa::LoadResult source = sherpa::load_scene(test::gltf_asset("RiggedSimple"));
+    const sherpa::scene::LoadResult source =
+        sherpa::scene::load_scene(test::gltf_asset("RiggedSimple"));
     ASSERT_TRUE(source) << source.error;
     ASSERT_EQ(draco.scene->motions.size(), source.scene->motions.size());
     ASSERT_FALSE(draco.scene->motions.empty());
@@ -89,10 +92,10 @@ TEST(DracoAttributes, SkinnedFileKeepsItsJointsAsIntegers) {
     // Posed by its animation, every vertex lies on a source vertex's pose.
     ASSERT_FALSE(draco.scene->animations.empty());
     for (const double t : {0.3, 1.1, 2.9}) {
-        const sherpa::Pose pa = sherpa::evaluate_pose(*draco.scene, 0, t),
-                           pb = sherpa::evaluate_pose(*source.scene, 0, t);
-        const sherpa::PosedBounds a = sherpa::posed_scene_bounds(*draco.scene, pa),
-                                  b = sherpa::posed_scene_bounds(*source.scene, pb);
+        const sherpa::scene::Pose pa = sherpa::scene::evaluate_pose(*draco.scene, 0, t),
+                                  pb = sherpa::scene::evaluate_pose(*source.scene, 0, t);
+        const sherpa::scene::PosedBounds a = sherpa::scene::posed_scene_bounds(*draco.scene, pa),
+                                         b = sherpa::scene::posed_scene_bounds(*source.scene, pb);
         EXPECT_LE(glm::distance(a.exact.min, b.exact.min), 4 * position_tol) << t;
         EXPECT_LE(glm::distance(a.exact.max, b.exact.max), 4 * position_tol) << t;
     }
@@ -105,11 +108,11 @@ class DracoMorph : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(DracoMorph, PosesLikeTheSource) {
     const std::string model = GetParam();
-    const sherpa::LoadResult draco = sherpa::load_scene(corpus(model + ".draco.glb"));
+    const sherpa::scene::LoadResult draco = sherpa::scene::load_scene(corpus(model + ".draco.glb"));
     ASSERT_TRUE(draco) << draco.error;
-    const sherpa::LoadResult source = sherpa::load_scene(test::gltf_asset(model));
+    const sherpa::scene::LoadResult source = sherpa::scene::load_scene(test::gltf_asset(model));
     ASSERT_TRUE(source) << source.error;
-    const sherpa::Scene &a = *draco.scene, &b = *source.scene;
+    const sherpa::scene::Scene &a = *draco.scene, &b = *source.scene;
     bool said = false;
     for (const auto& p : a.primitives) {
         ASSERT_TRUE(p.compression);
@@ -122,16 +125,16 @@ TEST_P(DracoMorph, PosesLikeTheSource) {
     const float tol = max_extent(b) / float((1 << 14) - 1) * 1.01f;
     for (const double t : {0.0, 0.4, 1.3}) {
         const std::int32_t anim = b.animations.empty() ? -1 : 0;
-        const sherpa::Pose pa = sherpa::evaluate_pose(a, anim, t),
-                           pb = sherpa::evaluate_pose(b, anim, t);
+        const sherpa::scene::Pose pa = sherpa::scene::evaluate_pose(a, anim, t),
+                                  pb = sherpa::scene::evaluate_pose(b, anim, t);
         for (std::size_t p = 0; p < a.primitives.size(); ++p) {
             std::uint32_t node = 0;
             while (node < a.nodes.size() &&
                    a.nodes[node].mesh != std::int32_t(a.primitives[p].mesh))
                 ++node;
             ASSERT_LT(node, a.nodes.size());
-            const auto va = sherpa::posed_positions(a, pa, node, a.primitives[p]);
-            const auto vb = sherpa::posed_positions(b, pb, node, b.primitives[p]);
+            const auto va = sherpa::scene::posed_positions(a, pa, node, a.primitives[p]);
+            const auto vb = sherpa::scene::posed_positions(b, pb, node, b.primitives[p]);
             ASSERT_EQ(va.size(), vb.size());
             float worst = 0.0f; // each vertex to the nearest posed source vertex
             for (const glm::vec3& v : va) {
@@ -150,22 +153,23 @@ INSTANTIATE_TEST_SUITE_P(GltfTransform, DracoMorph,
 // gltf-transform quantize then draco: the integer attributes come back as the
 // accessors declare them (unsigned byte colours, unsigned short UVs, short positions).
 TEST(DracoAttributes, NormalizedIntegersStayNormalizedIntegers) {
-    const sherpa::LoadResult draco =
-        sherpa::load_scene(corpus("BoxVertexColors.quantized.draco.glb"));
+    const sherpa::scene::LoadResult draco =
+        sherpa::scene::load_scene(corpus("BoxVertexColors.quantized.draco.glb"));
     ASSERT_TRUE(draco) << draco.error;
-    const sherpa::LoadResult source = sherpa::load_scene(test::gltf_asset("BoxVertexColors"));
+    const sherpa::scene::LoadResult source =
+        sherpa::scene::load_scene(test::gltf_asset("BoxVertexColors"));
     ASSERT_TRUE(source) << source.error;
     EXPECT_TRUE(draco.scene->range_violations.empty()) << all_warnings(*draco.scene);
-    const sherpa::Mesh& m = draco.scene->meshes.at(0);
-    ASSERT_TRUE(m.sources[std::size_t(sherpa::VertexAttribute::TexCoord0)]);
-    const auto& uv = *m.sources[std::size_t(sherpa::VertexAttribute::TexCoord0)];
+    const sherpa::scene::Mesh& m = draco.scene->meshes.at(0);
+    ASSERT_TRUE(m.sources[std::size_t(sherpa::scene::VertexAttribute::TexCoord0)]);
+    const auto& uv = *m.sources[std::size_t(sherpa::scene::VertexAttribute::TexCoord0)];
     EXPECT_EQ(uv.component_type, 5123);
     EXPECT_TRUE(uv.normalized);
-    const auto& pos = *m.sources[std::size_t(sherpa::VertexAttribute::Position)];
+    const auto& pos = *m.sources[std::size_t(sherpa::scene::VertexAttribute::Position)];
     EXPECT_EQ(pos.component_type, 5122);
     EXPECT_TRUE(pos.normalized);
-    ASSERT_TRUE(m.sources[std::size_t(sherpa::VertexAttribute::Color0)]);
-    EXPECT_EQ(m.sources[std::size_t(sherpa::VertexAttribute::Color0)]->component_type, 5121);
+    ASSERT_TRUE(m.sources[std::size_t(sherpa::scene::VertexAttribute::Color0)]);
+    EXPECT_EQ(m.sources[std::size_t(sherpa::scene::VertexAttribute::Color0)]->component_type, 5121);
     // Colours: every drawn colour is a source colour within one 8-bit step, at a
     // vertex within quantization of a source vertex (world space: quantize moves the
     // dequantization into the node transform).
@@ -205,18 +209,18 @@ std::string edited_duck(const std::string& name, const std::function<void(nlohma
     return out.string();
 }
 
-std::uint64_t triangles(const sherpa::Scene& s) {
+std::uint64_t triangles(const sherpa::scene::Scene& s) {
     std::uint64_t n = 0;
     for (const auto& m : s.meshes) n += m.triangle_count();
     return n;
 }
 
 TEST(DracoModeAndIndices, AStripModeOverTheStreamsTriangleListIsNamed) {
-    const sherpa::LoadResult plain = sherpa::load_scene(corpus("Duck.draco.gltf"));
+    const sherpa::scene::LoadResult plain = sherpa::scene::load_scene(corpus("Duck.draco.gltf"));
     ASSERT_TRUE(plain) << plain.error;
     const std::string path = edited_duck(
         "strip.gltf", [](nlohmann::json& doc) { doc["meshes"][0]["primitives"][0]["mode"] = 5; });
-    const sherpa::LoadResult r = sherpa::load_scene(path);
+    const sherpa::scene::LoadResult r = sherpa::scene::load_scene(path);
     ASSERT_TRUE(r) << r.error;
     EXPECT_NE(all_warnings(*r.scene).find("meshes[0].primitives[0].mode: 5 (TRIANGLE_STRIP) "
                                           "contradicts the Draco stream, which holds 4212 "
@@ -228,12 +232,12 @@ TEST(DracoModeAndIndices, AStripModeOverTheStreamsTriangleListIsNamed) {
 }
 
 TEST(DracoModeAndIndices, MissingIndicesOverOutOfOrderFacesAreNamed) {
-    const sherpa::LoadResult plain = sherpa::load_scene(corpus("Duck.draco.gltf"));
+    const sherpa::scene::LoadResult plain = sherpa::scene::load_scene(corpus("Duck.draco.gltf"));
     ASSERT_TRUE(plain) << plain.error;
     const std::string path = edited_duck("no_indices.gltf", [](nlohmann::json& doc) {
         doc["meshes"][0]["primitives"][0].erase("indices");
     });
-    const sherpa::LoadResult r = sherpa::load_scene(path);
+    const sherpa::scene::LoadResult r = sherpa::scene::load_scene(path);
     ASSERT_TRUE(r) << r.error;
     const std::string w = all_warnings(*r.scene);
     EXPECT_NE(w.find("meshes[0].primitives[0].indices: missing, but the Draco stream's 4212 "

@@ -82,9 +82,9 @@ class EveryAsset : public ::testing::TestWithParam<std::string> {};
 TEST_P(EveryAsset, CountsMatchTheJson) {
     const std::string path = sherpa::test::gltf_asset(GetParam());
     const JsonCounts want = counts_from_json(sherpa::test::read_json(path));
-    const sherpa::LoadResult r = sherpa::load_scene(path);
+    const sherpa::scene::LoadResult r = sherpa::scene::load_scene(path);
     ASSERT_TRUE(r) << r.error;
-    const sherpa::SourceCounts& got = r.scene->counts;
+    const sherpa::scene::SourceCounts& got = r.scene->counts;
     EXPECT_EQ(got.scenes, want.scenes);
     EXPECT_EQ(got.nodes, want.nodes);
     EXPECT_EQ(got.meshes, want.meshes);
@@ -106,17 +106,20 @@ TEST_P(EveryAsset, CountsMatchTheJson) {
 }
 
 TEST_P(EveryAsset, MeshesAreWellFormed) {
-    const sherpa::LoadResult r = sherpa::load_scene(sherpa::test::gltf_asset(GetParam()));
+    const sherpa::scene::LoadResult r =
+        sherpa::scene::load_scene(sherpa::test::gltf_asset(GetParam()));
     ASSERT_TRUE(r) << r.error;
-    for (const sherpa::Mesh& m : r.scene->meshes) {
+    for (const sherpa::scene::Mesh& m : r.scene->meshes) {
         ASSERT_EQ(m.indices.size() % 3, 0u);
         ASSERT_GT(m.indices.size(), 0u);
         for (std::uint32_t i : m.indices) ASSERT_LT(i, m.vertices.size());
         ASSERT_TRUE(m.colors.empty() || m.colors.size() == m.vertices.size());
         ASSERT_LT(m.material_id, r.scene->materials.size());
         ASSERT_TRUE(m.local_bounds.valid());
-        EXPECT_EQ(m.provenance_of(sherpa::VertexAttribute::Position), sherpa::Provenance::Authored);
-        EXPECT_NE(m.provenance_of(sherpa::VertexAttribute::Normal), sherpa::Provenance::Defaulted);
+        EXPECT_EQ(m.provenance_of(sherpa::scene::VertexAttribute::Position),
+                  sherpa::scene::Provenance::Authored);
+        EXPECT_NE(m.provenance_of(sherpa::scene::VertexAttribute::Normal),
+                  sherpa::scene::Provenance::Defaulted);
     }
     for (const auto& inst : r.scene->instances) {
         ASSERT_LT(inst.mesh_id, r.scene->meshes.size());
@@ -187,7 +190,7 @@ void expect_bounds_follow_node_transforms(const std::string& name) {
         for (int child : node.value("children", std::vector<int>{}))
             stack.emplace_back(child, world * json_local(doc["nodes"][child]));
     }
-    const sherpa::LoadResult r = sherpa::load_scene(path);
+    const sherpa::scene::LoadResult r = sherpa::scene::load_scene(path);
     ASSERT_TRUE(r) << r.error;
     const float tol = 1e-4f * glm::length(hi - lo);
     for (int k = 0; k < 3; ++k) {
@@ -204,17 +207,18 @@ TEST(WorldBounds, TwoCylinderEngineFollowsNodeTransforms) {
 }
 
 TEST(Scenes, DefaultSceneAndSelection) {
-    sherpa::LoadResult r = sherpa::load_scene(sherpa::test::gltf_asset("OrientationTest"));
+    sherpa::scene::LoadResult r =
+        sherpa::scene::load_scene(sherpa::test::gltf_asset("OrientationTest"));
     ASSERT_TRUE(r) << r.error;
     EXPECT_EQ(r.scene->displayed_scene, 0);
     std::string error;
-    EXPECT_FALSE(sherpa::select_scene(*r.scene, 5, error));
+    EXPECT_FALSE(sherpa::scene::select_scene(*r.scene, 5, error));
     EXPECT_NE(error.find("out of range"), std::string::npos);
     EXPECT_EQ(r.scene->instances.size(), 13u)
         << "a failed selection must leave the scene unchanged";
-    sherpa::LoadOptions opt;
+    sherpa::scene::LoadOptions opt;
     opt.scene_index = 1;
-    EXPECT_FALSE(sherpa::load_scene(sherpa::test::gltf_asset("OrientationTest"), opt));
+    EXPECT_FALSE(sherpa::scene::load_scene(sherpa::test::gltf_asset("OrientationTest"), opt));
 }
 
 } // namespace

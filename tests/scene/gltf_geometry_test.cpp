@@ -12,7 +12,7 @@
 
 namespace {
 
-using sherpa::VertexAttribute;
+using sherpa::scene::VertexAttribute;
 namespace test = sherpa::test;
 
 glm::vec3 vec3_at(const std::vector<unsigned char>& bin, std::size_t offset) {
@@ -24,9 +24,9 @@ glm::vec3 vec3_at(const std::vector<unsigned char>& bin, std::size_t offset) {
 TEST(FlatNormals, TriangleWithoutIndicesGetsPerpendicularFaceNormals) {
     auto scene = sherpa::test::load_scene_or_fail(test::gltf_asset("TriangleWithoutIndices"));
     ASSERT_TRUE(scene);
-    const sherpa::Mesh& m = scene->meshes.at(0);
+    const sherpa::scene::Mesh& m = scene->meshes.at(0);
     EXPECT_TRUE(m.unwelded);
-    EXPECT_EQ(m.provenance_of(VertexAttribute::Normal), sherpa::Provenance::Generated);
+    EXPECT_EQ(m.provenance_of(VertexAttribute::Normal), sherpa::scene::Provenance::Generated);
     ASSERT_EQ(m.indices.size(), 3u);
     EXPECT_EQ(m.indices, (std::vector<std::uint32_t>{0, 1, 2}))
         << "non-indexed primitives get sequential indices";
@@ -49,13 +49,13 @@ TEST(FlatNormals, SharedVerticesAreUnweldedPerFace) {
     // SimpleMeshes has indexed triangles and no normals.
     auto scene = sherpa::test::load_scene_or_fail(test::gltf_asset("SimpleMeshes"));
     ASSERT_TRUE(scene);
-    const sherpa::Mesh& m = scene->meshes.at(0);
+    const sherpa::scene::Mesh& m = scene->meshes.at(0);
     EXPECT_EQ(m.vertices.size(), m.indices.size());
     EXPECT_EQ(m.source_vertex_count, 3u);
 }
 
 // Corner positions of the mesh's triangles (after unwelding for flat normals).
-std::vector<glm::vec3> corner_positions(const sherpa::Mesh& m) {
+std::vector<glm::vec3> corner_positions(const sherpa::scene::Mesh& m) {
     std::vector<glm::vec3> out;
     for (std::uint32_t i : m.indices) out.push_back(m.vertices[i].position);
     return out;
@@ -81,7 +81,7 @@ TEST(SparseAccessor, SubstitutesValuesFromTheBin) {
         std::memcpy(&idx, bin.data() + 2 * i, 2);
         want.push_back(expected[idx]);
     }
-    const sherpa::Mesh& m = scene->meshes.at(0);
+    const sherpa::scene::Mesh& m = scene->meshes.at(0);
     EXPECT_EQ(corner_positions(m), want);
     EXPECT_EQ(m.source_vertex_count, 14u);
     EXPECT_FLOAT_EQ(scene->bounds.max.y, 4.0f) << "the sparse values raise the top row to y = 4";
@@ -95,7 +95,7 @@ TEST(Interleaved, StridedAttributesMatchTheBin) {
     auto scene = sherpa::test::load_scene_or_fail((dir / "BoxInterleaved.gltf").string());
     ASSERT_TRUE(scene);
     const auto bin = test::read_bytes(dir / "BoxInterleaved.bin");
-    const sherpa::Mesh& m = scene->meshes.at(0);
+    const sherpa::scene::Mesh& m = scene->meshes.at(0);
     ASSERT_EQ(m.vertices.size(), 24u);
     const auto doc = test::read_json((dir / "BoxInterleaved.gltf").string());
     const auto& attrs = doc["meshes"][0]["primitives"][0]["attributes"];
@@ -109,7 +109,7 @@ TEST(Interleaved, StridedAttributesMatchTheBin) {
     // Same box as the non-interleaved sample: identical vertex set.
     auto plain = sherpa::test::load_scene_or_fail(test::gltf_asset("Box"));
     ASSERT_TRUE(plain);
-    auto key = [](const sherpa::Vertex& x) {
+    auto key = [](const sherpa::scene::Vertex& x) {
         return std::array<float, 6>{x.position.x, x.position.y, x.position.z,
                                     x.normal.x,   x.normal.y,   x.normal.z};
     };
@@ -138,8 +138,8 @@ TEST(Topology, StripsAndFansBecomeListsWithGltfWinding) {
 TEST(VertexColors, Color0IsKeptAsItsOwnStream) {
     auto scene = sherpa::test::load_scene_or_fail(test::gltf_asset("BoxVertexColors"));
     ASSERT_TRUE(scene);
-    const sherpa::Mesh& m = scene->meshes.at(0);
-    EXPECT_EQ(m.provenance_of(VertexAttribute::Color0), sherpa::Provenance::Authored);
+    const sherpa::scene::Mesh& m = scene->meshes.at(0);
+    EXPECT_EQ(m.provenance_of(VertexAttribute::Color0), sherpa::scene::Provenance::Authored);
     ASSERT_EQ(m.colors.size(), m.vertices.size());
     for (const auto& c : m.colors) {
         EXPECT_GE(c.a, 0.0f);
@@ -150,22 +150,22 @@ TEST(VertexColors, Color0IsKeptAsItsOwnStream) {
 TEST(Materials, AlphaModesAndGpuLayout) {
     auto scene = sherpa::test::load_scene_or_fail(test::gltf_asset("AlphaBlendModeTest"));
     ASSERT_TRUE(scene);
-    std::set<sherpa::AlphaMode> modes;
+    std::set<sherpa::scene::AlphaMode> modes;
     for (const auto& m : scene->materials) modes.insert(m.alpha_mode);
     EXPECT_EQ(modes.size(), 3u);
     for (const auto& m : scene->materials) {
-        const sherpa::GPUMaterialData g = sherpa::to_gpu_material(m);
+        const sherpa::scene::GPUMaterialData g = sherpa::scene::to_gpu_material(m);
         EXPECT_EQ(g.alpha_mode, static_cast<std::uint32_t>(m.alpha_mode));
         EXPECT_EQ(g.normal_tex, m.normal.present() ? static_cast<std::uint32_t>(m.normal.texture)
-                                                   : sherpa::kTextureSentinel);
+                                                   : sherpa::scene::kTextureSentinel);
         EXPECT_EQ(g.emissive_tex, m.emissive.present()
                                       ? static_cast<std::uint32_t>(m.emissive.texture)
-                                      : sherpa::kTextureSentinel);
+                                      : sherpa::scene::kTextureSentinel);
     }
     // Roles follow use: the normal map texture is a normal-role texture.
     for (const auto& m : scene->materials)
         if (m.normal.present()) {
-            EXPECT_TRUE(scene->textures[m.normal.texture].roles & sherpa::kRoleNormal);
+            EXPECT_TRUE(scene->textures[m.normal.texture].roles & sherpa::scene::kRoleNormal);
         }
 }
 
@@ -198,19 +198,21 @@ TEST(Samplers, AllFiltersAndWrapModes) {
     auto scene = sherpa::test::load_scene_or_fail(test::gltf_asset("TextureSettingsTest"));
     ASSERT_TRUE(scene);
     EXPECT_EQ(scene->samplers.size(), 5u);
-    using sherpa::sampler_from_gltf;
+    using sherpa::scene::sampler_from_gltf;
     EXPECT_EQ(sampler_from_gltf(9728, 9728, 33071, 33648).max_lod, 0.0f)
         << "NEAREST has no mip mode";
     EXPECT_EQ(sampler_from_gltf(9729, 9729, 0, 0).max_lod, 0.0f);
-    EXPECT_EQ(sampler_from_gltf(9729, 9984, 0, 0).mipmap_mode, sherpa::MipmapMode::Nearest);
-    EXPECT_EQ(sampler_from_gltf(9729, 9985, 0, 0).min_filter, sherpa::Filter::Linear);
-    EXPECT_EQ(sampler_from_gltf(9729, 9986, 0, 0).min_filter, sherpa::Filter::Nearest);
-    EXPECT_EQ(sampler_from_gltf(9729, 9986, 0, 0).mipmap_mode, sherpa::MipmapMode::Linear);
-    EXPECT_EQ(sampler_from_gltf(-1, -1, 33071, 33648).wrap_v, sherpa::AddressMode::MirroredRepeat);
-    EXPECT_EQ(sampler_from_gltf(-1, -1, 33071, 33648).wrap_u, sherpa::AddressMode::ClampToEdge);
+    EXPECT_EQ(sampler_from_gltf(9729, 9984, 0, 0).mipmap_mode, sherpa::scene::MipmapMode::Nearest);
+    EXPECT_EQ(sampler_from_gltf(9729, 9985, 0, 0).min_filter, sherpa::scene::Filter::Linear);
+    EXPECT_EQ(sampler_from_gltf(9729, 9986, 0, 0).min_filter, sherpa::scene::Filter::Nearest);
+    EXPECT_EQ(sampler_from_gltf(9729, 9986, 0, 0).mipmap_mode, sherpa::scene::MipmapMode::Linear);
+    EXPECT_EQ(sampler_from_gltf(-1, -1, 33071, 33648).wrap_v,
+              sherpa::scene::AddressMode::MirroredRepeat);
+    EXPECT_EQ(sampler_from_gltf(-1, -1, 33071, 33648).wrap_u,
+              sherpa::scene::AddressMode::ClampToEdge);
     EXPECT_THROW(sampler_from_gltf(9999, 9728, 0, 0), std::invalid_argument);
-    sherpa::TextureRecord no_sampler;
-    EXPECT_EQ(scene->sampler_of(no_sampler), sherpa::SamplerDesc{});
+    sherpa::scene::TextureRecord no_sampler;
+    EXPECT_EQ(scene->sampler_of(no_sampler), sherpa::scene::SamplerDesc{});
 }
 
 TEST(LightsAndCameras, WorldPlacement) {
@@ -219,17 +221,17 @@ TEST(LightsAndCameras, WorldPlacement) {
     ASSERT_TRUE(scene);
     ASSERT_EQ(scene->placed_lights.size(), 2u);
     const auto& sun = scene->placed_lights[0];
-    EXPECT_EQ(scene->lights[sun.light].type, sherpa::LightType::Directional);
+    EXPECT_EQ(scene->lights[sun.light].type, sherpa::scene::LightType::Directional);
     EXPECT_NEAR(sun.direction.y, -1.0f, 1e-5f);
     const auto& spot = scene->placed_lights[1];
-    EXPECT_EQ(scene->lights[spot.light].type, sherpa::LightType::Spot);
+    EXPECT_EQ(scene->lights[spot.light].type, sherpa::scene::LightType::Spot);
     EXPECT_EQ(spot.position, glm::vec3(1, 2, 3));
     EXPECT_FLOAT_EQ(scene->lights[spot.light].outer_cone, 0.5f);
     auto cams = sherpa::test::load_scene_or_fail(test::gltf_asset("Cameras"));
     ASSERT_TRUE(cams);
     ASSERT_EQ(cams->cameras.size(), 2u);
-    EXPECT_EQ(cams->cameras[0].type, sherpa::CameraType::Perspective);
-    EXPECT_EQ(cams->cameras[1].type, sherpa::CameraType::Orthographic);
+    EXPECT_EQ(cams->cameras[0].type, sherpa::scene::CameraType::Perspective);
+    EXPECT_EQ(cams->cameras[1].type, sherpa::scene::CameraType::Orthographic);
     EXPECT_EQ(cams->placed_cameras.size(), 2u);
 }
 
@@ -240,12 +242,12 @@ TEST(Scenes, MultipleScenesAreSelectable) {
     EXPECT_EQ(scene->scenes.size(), 2u);
     EXPECT_FLOAT_EQ(scene->bounds.min.x, 0.0f);
     std::string error;
-    ASSERT_TRUE(sherpa::select_scene(*scene, 1, error)) << error;
+    ASSERT_TRUE(sherpa::scene::select_scene(*scene, 1, error)) << error;
     EXPECT_FLOAT_EQ(scene->bounds.min.x, 10.0f);
     EXPECT_EQ(scene->instances.at(0).node_id, 1u);
-    sherpa::LoadOptions opt;
+    sherpa::scene::LoadOptions opt;
     opt.scene_index = 1;
-    auto second = sherpa::load_scene(path, opt);
+    auto second = sherpa::scene::load_scene(path, opt);
     ASSERT_TRUE(second) << second.error;
     EXPECT_EQ(second.scene->displayed_scene, 1);
 }

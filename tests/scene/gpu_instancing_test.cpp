@@ -17,16 +17,16 @@ namespace {
 
 namespace test = sherpa::test;
 
-sherpa::LoadResult load(const char* file) {
-    return sherpa::load_scene((test::data_dir() / file).string());
+sherpa::scene::LoadResult load(const char* file) {
+    return sherpa::scene::load_scene((test::data_dir() / file).string());
 }
 
-bool has_warning(const sherpa::Scene& s, const std::string& fragment) {
+bool has_warning(const sherpa::scene::Scene& s, const std::string& fragment) {
     return std::any_of(s.warnings.begin(), s.warnings.end(),
                        [&](const std::string& w) { return w.find(fragment) != std::string::npos; });
 }
 
-std::string all_warnings(const sherpa::Scene& s) {
+std::string all_warnings(const sherpa::scene::Scene& s) {
     std::string out;
     for (const auto& w : s.warnings) out += w + "\n";
     return out;
@@ -45,7 +45,7 @@ glm::vec3 apply(const glm::mat4& m, glm::vec3 p) {
 TEST(GpuInstancing, EachRowIsAnInstanceAtNodeWorldTimesTRS) {
     const auto r = load("instancing_basic.gltf");
     ASSERT_TRUE(r) << r.error;
-    const sherpa::Scene& s = *r.scene;
+    const sherpa::scene::Scene& s = *r.scene;
     EXPECT_EQ(all_warnings(s).find("EXT_mesh_gpu_instancing"), std::string::npos)
         << all_warnings(s);
     ASSERT_TRUE(s.nodes[0].instancing);
@@ -62,18 +62,18 @@ TEST(GpuInstancing, EachRowIsAnInstanceAtNodeWorldTimesTRS) {
         const glm::vec3 p = apply(inst.world, {1, 0, 0});
         EXPECT_NEAR(glm::distance(p, expected[row]), 0.0f, 1e-5f) << "row " << row;
         EXPECT_TRUE(inside(inst.world_bounds, p)) << "row " << row;
-        EXPECT_EQ(inst.world, node * sherpa::instance_transform(s, inst));
+        EXPECT_EQ(inst.world, node * sherpa::scene::instance_transform(s, inst));
     }
     EXPECT_EQ(s.node_primitive_pairs(), 3u) << "counted once per row";
     // Posed (the default pose) like the renderer's pose pass and the CPU posing.
-    const sherpa::Pose pose = sherpa::evaluate_pose(s, -1, 0.0);
-    const auto bounds = sherpa::instance_culling_bounds(s, pose);
+    const sherpa::scene::Pose pose = sherpa::scene::evaluate_pose(s, -1, 0.0);
+    const auto bounds = sherpa::scene::instance_culling_bounds(s, pose);
     for (std::size_t i = 0; i < 3; ++i)
         EXPECT_TRUE(inside(bounds[i], apply(s.instances[i].world, {1, 0, 0}))) << i;
-    const sherpa::PosedBounds posed = sherpa::posed_scene_bounds(s, pose);
+    const sherpa::scene::PosedBounds posed = sherpa::scene::posed_scene_bounds(s, pose);
     EXPECT_NEAR(glm::distance(posed.exact.min, s.bounds.min), 0.0f, 1e-5f);
     EXPECT_NEAR(glm::distance(posed.exact.max, s.bounds.max), 0.0f, 1e-5f);
-    const sherpa::Scene frozen = sherpa::freeze_pose(s, pose);
+    const sherpa::scene::Scene frozen = sherpa::scene::freeze_pose(s, pose);
     ASSERT_EQ(frozen.instances.size(), 3u);
     EXPECT_NEAR(glm::distance(frozen.meshes[1].vertices[1].position, expected[1]), 0.0f, 1e-5f);
 }
@@ -133,7 +133,7 @@ TEST(GpuInstancing, AnAccessorIdPast2To31IsIgnoredAndTheNodeDrawnOnce) {
         named |=
             m.code == "SHERPA_VALUE_IGNORED" &&
             m.pointer == "/nodes/0/extensions/EXT_mesh_gpu_instancing/attributes/TRANSLATION" &&
-            m.severity == sherpa::Severity::Warning &&
+            m.severity == sherpa::scene::Severity::Warning &&
             m.message.find("4294967296 is not an accessor index") != std::string::npos;
     EXPECT_TRUE(named);
     EXPECT_TRUE(has_warning(*r.scene, "the node is drawn once")) << all_warnings(*r.scene);
@@ -151,9 +151,9 @@ TEST(GpuInstancing, ANodeWithoutAMeshIsNamed) {
 TEST(GpuInstancing, RowsPastTheInstanceLimitAreNotDrawn) {
     const auto r = load("instancing_over_limit.gltf");
     ASSERT_TRUE(r) << r.error;
-    EXPECT_EQ(r.scene->instances.size(), sherpa::kMaxGpuInstanceRows);
+    EXPECT_EQ(r.scene->instances.size(), sherpa::scene::kMaxGpuInstanceRows);
     EXPECT_EQ(r.scene->nodes[0].instancing->file_rows, 1u << 20);
-    EXPECT_EQ(r.scene->nodes[0].instancing->rows.size(), sherpa::kMaxGpuInstanceRows / 2);
+    EXPECT_EQ(r.scene->nodes[0].instancing->rows.size(), sherpa::scene::kMaxGpuInstanceRows / 2);
     EXPECT_TRUE(has_warning(*r.scene, "rows 524288..1048575 not drawn: the file's instanced rows "
                                       "x primitives reach the limit of 1048576 instances"))
         << all_warnings(*r.scene);

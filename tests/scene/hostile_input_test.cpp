@@ -54,7 +54,7 @@ INSTANTIATE_TEST_SUITE_P(
     test::case_name);
 
 TEST(HostileSizes, CheckedArithmeticNeverWraps) {
-    using namespace sherpa::detail;
+    using namespace sherpa::scene::detail;
     constexpr std::size_t near_max = SIZE_MAX - 15; // the wrapped check passed this
     static_assert(!range_fits(near_max, 32, 100));
     static_assert(range_fits(68, 0, 68) && !range_fits(69, 0, 68));
@@ -93,11 +93,11 @@ TEST(HostilePaths, FifoAsSceneOrBufferIsRefusedWithoutBlocking) {
     std::filesystem::remove_all(dir);
 }
 
-sherpa::LoadResult load_data(const char* file) {
-    return sherpa::load_scene((test::data_dir() / file).string());
+sherpa::scene::LoadResult load_data(const char* file) {
+    return sherpa::scene::load_scene((test::data_dir() / file).string());
 }
 
-bool has_warning(const sherpa::Scene& s, const std::string& fragment) {
+bool has_warning(const sherpa::scene::Scene& s, const std::string& fragment) {
     for (const auto& w : s.warnings)
         if (w.find(fragment) != std::string::npos) return true;
     return false;
@@ -169,12 +169,12 @@ TEST(HostileObjects, WorldBoundsPastTheFloatRangeLeaveTheInstanceOut) {
         if (m.code == "SHERPA_INSTANCE_SKIPPED") {
             ++said;
             EXPECT_EQ(m.pointer, "/nodes/0");
-            EXPECT_EQ(m.severity, sherpa::Severity::Warning);
+            EXPECT_EQ(m.severity, sherpa::scene::Severity::Warning);
         }
     EXPECT_EQ(said, 1u);
     // Selecting the scene again says it once, not once per selection.
     std::string error;
-    ASSERT_TRUE(sherpa::select_scene(*r.scene, 0, error)) << error;
+    ASSERT_TRUE(sherpa::scene::select_scene(*r.scene, 0, error)) << error;
     std::size_t lines = 0;
     for (const auto& w : r.scene->warnings) lines += w.find("overflow the float") != w.npos;
     EXPECT_EQ(lines, 1u);
@@ -207,7 +207,7 @@ TEST(HostileObjects, ImageUriNamingADirectoryLeavesTheImageEmptyWithAWarning) {
 // the bufferView's bytes as an independent JSON reader locates them.
 TEST(HostileObjects, GlbImageBytesComeFromTheirBufferView) {
     const auto path = test::data_dir() / "image_in_glb.glb";
-    const auto r = sherpa::load_scene(path.string());
+    const auto r = sherpa::scene::load_scene(path.string());
     ASSERT_TRUE(r) << r.error;
     const auto bytes = test::read_bytes(path);
     const auto json_length = static_cast<std::size_t>(bytes[12] | bytes[13] << 8);

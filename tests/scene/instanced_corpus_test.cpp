@@ -28,7 +28,7 @@ struct Totals {
     std::uint64_t triangles = 0, row_instances = 0, rows = 0, file_rows = 0, nodes = 0;
 };
 
-Totals totals(const sherpa::Scene& s) {
+Totals totals(const sherpa::scene::Scene& s) {
     Totals t;
     for (const auto& inst : s.instances) {
         t.triangles += s.meshes[inst.mesh_id].triangle_count();
@@ -46,9 +46,10 @@ Totals totals(const sherpa::Scene& s) {
 class InstancedFile : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(InstancedFile, DrawsTheSourcesTrianglesInPlace) {
-    const sherpa::LoadResult inst = sherpa::load_scene(corpus(GetParam()));
+    const sherpa::scene::LoadResult inst = sherpa::scene::load_scene(corpus(GetParam()));
     ASSERT_TRUE(inst) << inst.error;
-    const sherpa::LoadResult source = sherpa::load_scene(test::gltf_asset("2CylinderEngine"));
+    const sherpa::scene::LoadResult source =
+        sherpa::scene::load_scene(test::gltf_asset("2CylinderEngine"));
     ASSERT_TRUE(source) << source.error;
     for (const auto& w : inst.scene->warnings)
         EXPECT_EQ(w.find("EXT_mesh_gpu_instancing"), std::string::npos) << w;
@@ -65,10 +66,10 @@ TEST_P(InstancedFile, DrawsTheSourcesTrianglesInPlace) {
     EXPECT_LE(a.triangles, b.triangles);
     // World bounds within gltfpack's 14-bit position step of the same tool's file
     // without instancing (gltfpack drops geometry that changes the source's bounds).
-    const sherpa::LoadResult plain =
+    const sherpa::scene::LoadResult plain =
         GetParam().find("gt_instance") != std::string::npos
-            ? sherpa::load_scene(test::gltf_asset("2CylinderEngine"))
-            : sherpa::load_scene(corpus("2CylinderEngine.meshopt.glb"));
+            ? sherpa::scene::load_scene(test::gltf_asset("2CylinderEngine"))
+            : sherpa::scene::load_scene(corpus("2CylinderEngine.meshopt.glb"));
     ASSERT_TRUE(plain) << plain.error;
     const glm::vec3 e = plain.scene->bounds.extent();
     const float step = std::max({e.x, e.y, e.z}) / float((1 << 14) - 1);
@@ -77,7 +78,7 @@ TEST_P(InstancedFile, DrawsTheSourcesTrianglesInPlace) {
 }
 
 TEST_P(InstancedFile, InfoCountsTheRows) {
-    const sherpa::LoadResult inst = sherpa::load_scene(corpus(GetParam()));
+    const sherpa::scene::LoadResult inst = sherpa::scene::load_scene(corpus(GetParam()));
     ASSERT_TRUE(inst) << inst.error;
     const Totals t = totals(*inst.scene);
     const test::CliRun r = test::run_cli("info '" + corpus(GetParam()) + "' --json", "2>/dev/null");
@@ -125,7 +126,7 @@ TEST_P(InstancedFile, RendersLikeTheSource) {
 
 // Every row is an instance of the TLAS.
 TEST_P(InstancedFile, TheTlasHoldsEveryRow) {
-    const sherpa::LoadResult inst = sherpa::load_scene(corpus(GetParam()));
+    const sherpa::scene::LoadResult inst = sherpa::scene::load_scene(corpus(GetParam()));
     ASSERT_TRUE(inst) << inst.error;
     const test::CliRun r =
         test::run_cli("rt '" + corpus(GetParam()) + "' --json --validation", "2>/dev/null");

@@ -12,8 +12,8 @@
 namespace sherpa::test {
 
 // The scene of a file that must load; a test failure with the error and null where not.
-inline std::unique_ptr<Scene> load_scene_or_fail(const std::string& path) {
-    LoadResult r = load_scene(path);
+inline std::unique_ptr<scene::Scene> load_scene_or_fail(const std::string& path) {
+    scene::LoadResult r = scene::load_scene(path);
     EXPECT_TRUE(r) << r.error;
     return std::move(r.scene);
 }
@@ -27,7 +27,7 @@ struct BadCase {
 // The load fails with one readable line that starts with "PATH: ", contains
 // `fragment`, holds only printable ASCII (no raw bytes of the file), and no scene.
 inline void expect_clear_load_error(const std::string& path, const std::string& fragment) {
-    const sherpa::LoadResult r = sherpa::load_scene(path);
+    const sherpa::scene::LoadResult r = sherpa::scene::load_scene(path);
     EXPECT_FALSE(r);
     EXPECT_EQ(r.scene, nullptr);
     EXPECT_EQ(r.error.rfind(path + ": ", 0), 0u) << "error must start with the file: " << r.error;
@@ -40,13 +40,13 @@ inline void expect_clear_load_error(const std::string& path, const std::string& 
 // A file with a broken part that loads anyway: the part is skipped or defaulted and a
 // validation message (a SHERPA_ code, or the validator's own) contains `fragment`.
 inline void expect_loads_naming(const std::string& path, const std::string& fragment) {
-    const sherpa::LoadResult r = sherpa::load_scene(path);
+    const sherpa::scene::LoadResult r = sherpa::scene::load_scene(path);
     ASSERT_TRUE(r) << r.error;
     bool named = false;
     for (const auto& m : r.scene->validation.messages)
         named |= m.message.find(fragment) != std::string::npos;
     EXPECT_TRUE(named) << path << " has no message containing: " << fragment;
-    EXPECT_GT(r.scene->validation.count(sherpa::Severity::Error), 0u) << path;
+    EXPECT_GT(r.scene->validation.count(sherpa::scene::Severity::Error), 0u) << path;
 }
 
 // A file whose primitive `mesh`/`primitive` cannot be read: the file loads, the
@@ -55,7 +55,7 @@ inline void expect_loads_naming(const std::string& path, const std::string& frag
 inline void expect_primitive_skipped(const std::string& path, std::uint32_t mesh,
                                      std::uint32_t primitive, const std::string& pointer,
                                      const std::string& fragment) {
-    const sherpa::LoadResult r = sherpa::load_scene(path);
+    const sherpa::scene::LoadResult r = sherpa::scene::load_scene(path);
     ASSERT_TRUE(r) << r.error;
     bool listed = false;
     for (const auto& p : r.scene->primitives)
@@ -67,7 +67,7 @@ inline void expect_primitive_skipped(const std::string& path, std::uint32_t mesh
     bool named = false;
     for (const auto& m : r.scene->validation.messages)
         named |= m.code == "SHERPA_PRIMITIVE_SKIPPED" && m.pointer.rfind(pointer, 0) == 0 &&
-                 m.severity == sherpa::Severity::Error;
+                 m.severity == sherpa::scene::Severity::Error;
     EXPECT_TRUE(named) << path << ": no SHERPA_PRIMITIVE_SKIPPED at " << pointer;
 }
 

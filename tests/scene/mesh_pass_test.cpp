@@ -12,19 +12,19 @@ namespace {
 using namespace sherpa;
 
 // Sorted (key, instance) pairs of a pass: what the GPU would draw, in order.
-std::vector<std::pair<std::uint64_t, std::uint32_t>> draw_list(const MeshPass& p) {
+std::vector<std::pair<std::uint64_t, std::uint32_t>> draw_list(const scene::MeshPass& p) {
     std::vector<std::pair<std::uint64_t, std::uint32_t>> out;
-    for (const FlatBatch& b : p.flat_batches())
+    for (const scene::FlatBatch& b : p.flat_batches())
         out.emplace_back(b.sort_key, p.objects()[b.object].instance);
     return out;
 }
 
-void expect_consistent(const MeshPass& p) {
+void expect_consistent(const scene::MeshPass& p) {
     const auto flat = p.flat_batches();
     ASSERT_EQ(flat.size(), p.live_count());
     for (std::size_t i = 1; i < flat.size(); ++i) ASSERT_LE(flat[i - 1].sort_key, flat[i].sort_key);
     std::uint32_t covered = 0;
-    for (const IndirectBatch& b : p.batches()) {
+    for (const scene::IndirectBatch& b : p.batches()) {
         ASSERT_EQ(b.first, covered);
         for (std::uint32_t k = b.first; k < b.first + b.count; ++k)
             ASSERT_EQ(flat[k].sort_key, (std::uint64_t{b.pipeline} << 32) | b.mesh_id);
@@ -32,7 +32,7 @@ void expect_consistent(const MeshPass& p) {
     }
     ASSERT_EQ(covered, flat.size());
     std::uint32_t batches = 0;
-    for (const MultiBatch& m : p.multi_batches()) {
+    for (const scene::MultiBatch& m : p.multi_batches()) {
         ASSERT_EQ(m.first, batches);
         for (std::uint32_t k = m.first; k < m.first + m.count; ++k)
             ASSERT_EQ(p.batches()[k].pipeline, p.batches()[m.first].pipeline);
@@ -43,7 +43,7 @@ void expect_consistent(const MeshPass& p) {
 
 TEST(MeshPass, IncrementalUpdatesMatchAFullRebuild) {
     std::mt19937 rng(3);
-    MeshPass incremental(MeshPassKind::Forward);
+    scene::MeshPass incremental(scene::MeshPassKind::Forward);
     std::vector<std::pair<std::uint32_t, std::uint32_t>> live; // (handle, instance)
     std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>>
         objects; // instance -> mesh, pipeline
@@ -63,7 +63,7 @@ TEST(MeshPass, IncrementalUpdatesMatchAFullRebuild) {
         }
         incremental.update();
         expect_consistent(incremental);
-        MeshPass full(MeshPassKind::Forward);
+        scene::MeshPass full(scene::MeshPassKind::Forward);
         for (const auto& [h, inst] : live) {
             (void)h;
             const auto& [i, mesh, pipe] = objects[inst];
@@ -80,7 +80,7 @@ TEST(MeshPass, IncrementalUpdatesMatchAFullRebuild) {
 }
 
 TEST(MeshPass, MovesOnlyDirtyTheMovedObject) {
-    MeshPass p(MeshPassKind::Forward);
+    scene::MeshPass p(scene::MeshPassKind::Forward);
     const std::uint32_t a = p.add(0, 1, 0), b = p.add(1, 1, 0);
     p.update();
     EXPECT_EQ(p.dirty().size(), 2u) << "new objects need an upload";
@@ -97,9 +97,9 @@ TEST(MeshPass, MovesOnlyDirtyTheMovedObject) {
 }
 
 TEST(MeshPass, ScenePassesSplitByAlphaMode) {
-    const LoadResult r = load_scene("builtin:default");
+    const scene::LoadResult r = scene::load_scene("builtin:default");
     ASSERT_TRUE(r) << r.error;
-    const ScenePasses passes = build_mesh_passes(*r.scene);
+    const scene::ScenePasses passes = scene::build_mesh_passes(*r.scene);
     EXPECT_EQ(passes.forward.live_count() + passes.transparent.live_count(),
               r.scene->instances.size());
     EXPECT_EQ(passes.shadow.live_count(), passes.forward.live_count());
@@ -109,13 +109,16 @@ TEST(MeshPass, ScenePassesSplitByAlphaMode) {
         << "instances share batches";
     EXPECT_LE(passes.forward.multi_batches().size(), 8u) << "one multi-batch per pipeline state";
     for (const auto& mb : passes.forward.multi_batches()) {
-        const PipelineState st = pipeline_state(passes.forward.batches()[mb.first].pipeline);
-        EXPECT_NE(st.alpha_mode, AlphaMode::Blend);
+        const scene::PipelineState st =
+            scene::pipeline_state(passes.forward.batches()[mb.first].pipeline);
+        EXPECT_NE(st.alpha_mode, scene::AlphaMode::Blend);
     }
-    for (AlphaMode a : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend})
+    for (scene::AlphaMode a :
+         {scene::AlphaMode::Opaque, scene::AlphaMode::Mask, scene::AlphaMode::Blend})
         for (bool ds : {false, true})
             for (bool mir : {false, true}) {
-                const PipelineState st = pipeline_state(pipeline_key(a, ds, mir));
+                const scene::PipelineState st =
+                    scene::pipeline_state(scene::pipeline_key(a, ds, mir));
                 EXPECT_EQ(st.alpha_mode, a);
                 EXPECT_EQ(st.double_sided, ds);
                 EXPECT_EQ(st.mirrored, mir);

@@ -87,9 +87,9 @@ TEST(BrokenMeshopt, UndecodableStreamShowsTheFallbackBytes) {
         }
     ASSERT_GE(broken, 0) << "gltfpack -cf wrote no compressed view";
     std::ofstream(dir / "cut.gltf") << doc.dump();
-    const sherpa::LoadResult whole =
-        sherpa::load_scene((meshopt_corpus() / "Duck.meshopt_fallback.gltf").string());
-    const sherpa::LoadResult cut = sherpa::load_scene((dir / "cut.gltf").string());
+    const sherpa::scene::LoadResult whole =
+        sherpa::scene::load_scene((meshopt_corpus() / "Duck.meshopt_fallback.gltf").string());
+    const sherpa::scene::LoadResult cut = sherpa::scene::load_scene((dir / "cut.gltf").string());
     ASSERT_TRUE(whole) << whole.error;
     ASSERT_TRUE(cut) << cut.error;
     ASSERT_EQ(cut.scene->primitives.size(), whole.scene->primitives.size());
@@ -170,7 +170,7 @@ TEST(BrokenMeshopt, AnimationStreamThatDoesNotDecodeIsNamed) {
         fs::temp_directory_path() / ("sherpa_meshopt_anim_" + std::to_string(::getpid()) + ".glb");
     std::ofstream(path, std::ios::binary)
         .write(reinterpret_cast<const char*>(out.data()), std::streamsize(out.size()));
-    const sherpa::LoadResult r = sherpa::load_scene(path.string());
+    const sherpa::scene::LoadResult r = sherpa::scene::load_scene(path.string());
     fs::remove(path);
     ASSERT_TRUE(r) << r.error;
     bool named = false, skipped = false;

@@ -19,7 +19,7 @@
 
 namespace {
 
-namespace mo = sherpa::meshopt;
+namespace mo = sherpa::scene::meshopt;
 using Bytes = std::vector<std::uint8_t>;
 
 Bytes encode_vertices(const Bytes& data, std::size_t count, std::size_t stride) {
@@ -68,9 +68,10 @@ TEST(MeshoptVertexV0, EveryStrideAndCountMatchesTheLibrary) {
 // UVs, tangents as floats), as the library's encoder sees them.
 TEST(MeshoptVertexV0, RealMeshesMatchTheLibrary) {
     for (const char* model : {"Duck", "DamagedHelmet", "BoxTextured"}) {
-        const sherpa::LoadResult r = sherpa::load_scene(sherpa::test::gltf_asset(model));
+        const sherpa::scene::LoadResult r =
+            sherpa::scene::load_scene(sherpa::test::gltf_asset(model));
         ASSERT_TRUE(r) << r.error;
-        for (const sherpa::Mesh& mesh : r.scene->meshes) {
+        for (const sherpa::scene::Mesh& mesh : r.scene->meshes) {
             constexpr std::size_t stride = sizeof(mesh.vertices[0]);
             static_assert(stride % 4 == 0 && stride <= 256);
             const std::size_t count = mesh.vertices.size();

@@ -17,7 +17,7 @@
 
 namespace {
 
-namespace mo = sherpa::meshopt;
+namespace mo = sherpa::scene::meshopt;
 using Bytes = std::vector<std::uint8_t>;
 
 struct OracleStream {

@@ -20,23 +20,24 @@ TEST(MotionCulling, BoundsHoldEveryPosedVertexAtEveryKeyTime) {
     for (const char* name : {"RiggedSimple", "SimpleMorph", "AnimatedMorphSphere", "AnimatedCube",
                              "BoxAnimated", "AnimatedTriangle", "VC"}) {
         SCOPED_TRACE(name);
-        const LoadResult r = load_scene(gltf_asset(name));
+        const scene::LoadResult r = scene::load_scene(gltf_asset(name));
         ASSERT_TRUE(r) << r.error;
-        const Scene& s = *r.scene;
+        const scene::Scene& s = *r.scene;
         ASSERT_FALSE(s.animations.empty());
         for (std::size_t a = 0; a < s.animations.size(); ++a) {
             std::set<float> times; // every sampled time of the animation
-            for (const AnimationSampler& sampler : s.animations[a].samplers)
+            for (const scene::AnimationSampler& sampler : s.animations[a].samplers)
                 times.insert(sampler.times.begin(), sampler.times.end());
             for (float t : times) {
-                const Pose pose = evaluate_pose(s, static_cast<std::int32_t>(a), t);
-                const std::vector<core::Aabb> bounds = instance_culling_bounds(s, pose);
+                const scene::Pose pose = scene::evaluate_pose(s, static_cast<std::int32_t>(a), t);
+                const std::vector<core::Aabb> bounds = scene::instance_culling_bounds(s, pose);
                 ASSERT_EQ(bounds.size(), s.instances.size());
                 for (std::size_t i = 0; i < s.instances.size(); ++i) {
-                    const MeshInstance& inst = s.instances[i];
-                    for (const PrimitiveInfo& p : s.primitives) {
+                    const scene::MeshInstance& inst = s.instances[i];
+                    for (const scene::PrimitiveInfo& p : s.primitives) {
                         if (p.engine_mesh != static_cast<std::int32_t>(inst.mesh_id)) continue;
-                        for (const glm::vec3& v : posed_positions(s, pose, inst.node_id, p)) {
+                        for (const glm::vec3& v :
+                             scene::posed_positions(s, pose, inst.node_id, p)) {
                             ++checked;
                             const core::Aabb& b = bounds[i];
                             ASSERT_TRUE(b.valid() && glm::all(glm::lessThanEqual(b.min, v)) &&

@@ -15,13 +15,13 @@
 namespace {
 
 namespace test = sherpa::test;
-using sherpa::AnimationPath;
+using sherpa::scene::AnimationPath;
 
 std::string data(const char* name) {
     return (test::data_dir() / name).string();
 }
 
-bool warned(const sherpa::Scene& s, const std::string& fragment) {
+bool warned(const sherpa::scene::Scene& s, const std::string& fragment) {
     for (const auto& w : s.warnings)
         if (w.find(fragment) != std::string::npos) return true;
     return false;
@@ -77,11 +77,11 @@ TEST(MotionImport, MorphTargetsAndDefaultWeights) {
 // sampler; mesh default weights are (0.25, 0.5).
 TEST(MotionEval, HandComputedPoseOfTheGeneratedRig) {
     const auto s = sherpa::test::load_scene_or_fail(data("motion_valid.gltf"));
-    const sherpa::Pose bind = sherpa::evaluate_pose(*s, -1, 0.0);
+    const sherpa::scene::Pose bind = sherpa::scene::evaluate_pose(*s, -1, 0.0);
     EXPECT_EQ(bind.weights[0], (std::vector<float>{0.25f, 0.5f}));
-    const sherpa::Pose pose = sherpa::evaluate_pose(*s, 0, 1.0);
+    const sherpa::scene::Pose pose = sherpa::scene::evaluate_pose(*s, 0, 1.0);
     EXPECT_EQ(pose.weights[0], (std::vector<float>{1.0f, 0.0f}));
-    const auto p = sherpa::posed_positions(*s, pose, 0, s->primitives[0]);
+    const auto p = sherpa::scene::posed_positions(*s, pose, 0, s->primitives[0]);
     ASSERT_EQ(p.size(), 4u);
     // Vertex 3 = (1,1,0) + target 0's delta (0,0,0.25), fully on joint 2: (1,0,0)
     // rotated about z by 1 rad, then up 1.
@@ -104,11 +104,11 @@ TEST(MotionEval, TimesOutsideTheKeysClampAndNaNTimeIsTheFirstKey) {
     const auto& a = s->animations[0];
     float before[4], first[4], after[4], last[4], nan_t[4];
     const auto& rot = a.samplers[a.channels[0].sampler];
-    sherpa::sample_animation(rot, AnimationPath::Rotation, -5.0, before);
-    sherpa::sample_animation(rot, AnimationPath::Rotation, 0.0, first);
-    sherpa::sample_animation(rot, AnimationPath::Rotation, 1e30, after);
-    sherpa::sample_animation(rot, AnimationPath::Rotation, 2.0, last);
-    sherpa::sample_animation(rot, AnimationPath::Rotation, std::nan(""), nan_t);
+    sherpa::scene::sample_animation(rot, AnimationPath::Rotation, -5.0, before);
+    sherpa::scene::sample_animation(rot, AnimationPath::Rotation, 0.0, first);
+    sherpa::scene::sample_animation(rot, AnimationPath::Rotation, 1e30, after);
+    sherpa::scene::sample_animation(rot, AnimationPath::Rotation, 2.0, last);
+    sherpa::scene::sample_animation(rot, AnimationPath::Rotation, std::nan(""), nan_t);
     for (int c = 0; c < 4; ++c) {
         EXPECT_EQ(before[c], first[c]);
         EXPECT_EQ(after[c], last[c]);
@@ -121,23 +121,25 @@ TEST(MotionEval, TimesOutsideTheKeysClampAndNaNTimeIsTheFirstKey) {
 // fuzz target under ASan: heap-buffer-overflow in sample_animation). Every
 // interpolation now lands on the last interval, at the last key's value.
 TEST(MotionEval, TimeJustBelowTheLastKeyStaysInsideTheKeys) {
-    for (const auto interpolation : {sherpa::Interpolation::Step, sherpa::Interpolation::Linear,
-                                     sherpa::Interpolation::CubicSpline}) {
-        sherpa::AnimationSampler s;
+    for (const auto interpolation :
+         {sherpa::scene::Interpolation::Step, sherpa::scene::Interpolation::Linear,
+          sherpa::scene::Interpolation::CubicSpline}) {
+        sherpa::scene::AnimationSampler s;
         s.interpolation = interpolation;
         s.width = 3;
         s.times = {0.0f, 2.0f};
-        const std::size_t per_key = interpolation == sherpa::Interpolation::CubicSpline ? 3 : 1;
+        const std::size_t per_key =
+            interpolation == sherpa::scene::Interpolation::CubicSpline ? 3 : 1;
         for (std::size_t k = 0; k < 2 * per_key; ++k)
             for (float c : {1.0f, 2.0f, 3.0f}) s.values.push_back(c * float(k + 1));
         const double t = std::nextafter(2.0, 0.0);
         ASSERT_EQ(static_cast<float>(t), 2.0f);
         float out[3];
-        sherpa::sample_animation(s, AnimationPath::Translation, t, out);
+        sherpa::scene::sample_animation(s, AnimationPath::Translation, t, out);
         const float* last = &s.values[(per_key == 3 ? 4 : 1) * 3];
         for (int c = 0; c < 3; ++c)
             EXPECT_NEAR(out[c],
-                        interpolation == sherpa::Interpolation::Step
+                        interpolation == sherpa::scene::Interpolation::Step
                             ? s.values[per_key == 3 ? 3 + c : c]
                             : last[c],
                         1e-4f)
@@ -146,7 +148,7 @@ TEST(MotionEval, TimeJustBelowTheLastKeyStaysInsideTheKeys) {
 }
 
 TEST(MotionEval, LinearRotationIsShortestArcSlerp) {
-    sherpa::AnimationSampler s;
+    sherpa::scene::AnimationSampler s;
     s.width = 4;
     s.times = {0.0f, 1.0f};
     // 0 and 270 degrees about z, the second stored negated (q and -q are one rotation):
@@ -154,20 +156,20 @@ TEST(MotionEval, LinearRotationIsShortestArcSlerp) {
     const float h = static_cast<float>(3 * M_PI / 4);
     s.values = {0, 0, 0, 1, 0, 0, -std::sin(h), -std::cos(h)};
     float q[4];
-    sherpa::sample_animation(s, AnimationPath::Rotation, 0.5, q);
+    sherpa::scene::sample_animation(s, AnimationPath::Rotation, 0.5, q);
     const float angle = 2.0f * std::atan2(q[2], q[3]);
     EXPECT_NEAR(std::remainder(angle, 2 * M_PI), -M_PI / 4, 1e-5);
 }
 
 TEST(MotionEval, CubicSplineTangentsScaleByTheKeyInterval) {
-    sherpa::AnimationSampler s;
-    s.interpolation = sherpa::Interpolation::CubicSpline;
+    sherpa::scene::AnimationSampler s;
+    s.interpolation = sherpa::scene::Interpolation::CubicSpline;
     s.width = 3;
     s.times = {0.0f, 2.0f};
     // (in, value, out) per key: value 0 -> 0, out-tangent of key 0 is 1 per second.
     s.values = {0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
     float v[3];
-    sherpa::sample_animation(s, AnimationPath::Translation, 0.5, v);
+    sherpa::scene::sample_animation(s, AnimationPath::Translation, 0.5, v);
     // u = 0.25: h10 = u^3 - 2u^2 + u = 0.140625, times dt = 2.
     EXPECT_NEAR(v[0], 0.28125f, 1e-6f);
 }
@@ -213,8 +215,8 @@ TEST(MotionImport, RepairedInputIsWarnedAndNeverNaN) {
         const auto s = sherpa::test::load_scene_or_fail(data(file));
         EXPECT_TRUE(warned(*s, fragment)) << file;
         for (double t : {0.0, 0.7, 1.5, 2.0, 99.0}) {
-            const auto pose = sherpa::evaluate_pose(*s, 0, t);
-            const auto p = sherpa::posed_positions(*s, pose, 0, s->primitives[0]);
+            const auto pose = sherpa::scene::evaluate_pose(*s, 0, t);
+            const auto p = sherpa::scene::posed_positions(*s, pose, 0, s->primitives[0]);
             for (const auto& v : p) EXPECT_TRUE(sherpa::core::is_finite(v)) << file << " t " << t;
         }
     }
@@ -245,13 +247,14 @@ TEST(MotionBounds, CullingBoundsContainEveryPosedVertex) {
         for (int a = -1; a < static_cast<int>(s->animations.size()); ++a) {
             const double d = a >= 0 ? s->animations[static_cast<std::size_t>(a)].end : 0.0;
             for (int i = 0; i < 50; ++i) {
-                const sherpa::Pose pose = sherpa::evaluate_pose(*s, a, d * i / 49.0);
+                const sherpa::scene::Pose pose = sherpa::scene::evaluate_pose(*s, a, d * i / 49.0);
                 for (std::uint32_t n : s->displayed_nodes) {
                     if (s->nodes[n].mesh < 0) continue;
                     for (const auto& p : s->primitives) {
                         if (p.mesh != static_cast<std::uint32_t>(s->nodes[n].mesh)) continue;
-                        const sherpa::core::Aabb box = sherpa::culling_bounds(*s, pose, n, p);
-                        for (const glm::vec3& v : sherpa::posed_positions(*s, pose, n, p)) {
+                        const sherpa::core::Aabb box =
+                            sherpa::scene::culling_bounds(*s, pose, n, p);
+                        for (const glm::vec3& v : sherpa::scene::posed_positions(*s, pose, n, p)) {
                             ASSERT_TRUE(glm::all(glm::lessThanEqual(box.min, v)) &&
                                         glm::all(glm::lessThanEqual(v, box.max)))
                                 << file << " animation " << a << " step " << i << " node " << n;
@@ -274,8 +277,8 @@ TEST(MotionBounds, PosesPastTheFloatRangeAreNamedAndLeftOut) {
         SCOPED_TRACE(file);
         const auto s = sherpa::test::load_scene_or_fail(data(file));
         ASSERT_TRUE(s);
-        const sherpa::Pose pose = sherpa::evaluate_pose(*s, 0, 1.3);
-        const sherpa::PosedBounds b = sherpa::posed_scene_bounds(*s, pose);
+        const sherpa::scene::Pose pose = sherpa::scene::evaluate_pose(*s, 0, 1.3);
+        const sherpa::scene::PosedBounds b = sherpa::scene::posed_scene_bounds(*s, pose);
         EXPECT_EQ(b.overflow, std::vector<std::uint32_t>{0});
         ASSERT_TRUE(b.exact.valid() && b.culling.valid());
         for (const sherpa::core::Aabb& box : {b.exact, b.culling})
@@ -285,17 +288,17 @@ TEST(MotionBounds, PosesPastTheFloatRangeAreNamedAndLeftOut) {
         EXPECT_TRUE(glm::all(glm::lessThanEqual(b.culling.min, b.exact.min)) &&
                     glm::all(glm::greaterThanEqual(b.culling.max, b.exact.max)));
         // The cheap per-frame check (the editor's, the CLI's render and cull) agrees.
-        EXPECT_EQ(sherpa::posed_overflow_nodes(*s, pose), std::vector<std::uint32_t>{0});
-        const std::string w = sherpa::posed_overflow_warning(*s, 0);
+        EXPECT_EQ(sherpa::scene::posed_overflow_nodes(*s, pose), std::vector<std::uint32_t>{0});
+        const std::string w = sherpa::scene::posed_overflow_warning(*s, 0);
         EXPECT_NE(w.find("nodes[0]"), std::string::npos) << w;
         EXPECT_NE(w.find("overflow the float range"), std::string::npos) << w;
     }
     // Before the huge key (t < 1) the scaled rig is in range: nothing to say.
     const auto s = sherpa::test::load_scene_or_fail(data("pose_overflow_scale.gltf"));
-    const sherpa::Pose early = sherpa::evaluate_pose(*s, 0, 0.5);
-    const sherpa::PosedBounds b = sherpa::posed_scene_bounds(*s, early);
+    const sherpa::scene::Pose early = sherpa::scene::evaluate_pose(*s, 0, 0.5);
+    const sherpa::scene::PosedBounds b = sherpa::scene::posed_scene_bounds(*s, early);
     EXPECT_TRUE(b.overflow.empty());
-    EXPECT_TRUE(sherpa::posed_overflow_nodes(*s, early).empty());
+    EXPECT_TRUE(sherpa::scene::posed_overflow_nodes(*s, early).empty());
     EXPECT_LT(b.exact.min.x, 3.0f) << "the rig is in the bounds again";
 }
 

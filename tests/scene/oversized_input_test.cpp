@@ -110,8 +110,8 @@ INSTANTIATE_TEST_SUITE_P(
 // positions. Before, the importer filled the declared byteLength (1.84 GB of RSS); the
 // address-space half of this test is tests/cli/memory_limit_test.sh.
 TEST(OversizedMeshopt, FallbackBufferDeclaringGigabytesLoadsWhatTheStreamDecodes) {
-    const sherpa::LoadResult r =
-        sherpa::load_scene((test::data_dir() / "meshopt_fallback_1800mb.gltf").string());
+    const sherpa::scene::LoadResult r =
+        sherpa::scene::load_scene((test::data_dir() / "meshopt_fallback_1800mb.gltf").string());
     ASSERT_TRUE(r) << r.error;
     ASSERT_EQ(r.scene->primitives.size(), 1u);
     ASSERT_TRUE(r.scene->primitives[0].compression.has_value());
@@ -134,7 +134,7 @@ TEST(OversizedMeshopt, CountTheStreamCannotHoldSkipsItsPrimitiveBeforeAllocating
 // The file loads (the inspector shows what it can); the primitive that reads past the
 // decoded bytes is skipped, with the reason naming the view.
 TEST(OversizedMeshopt, AccessorPastTheDecodedBytesSkipsItsPrimitiveByName) {
-    const auto r = sherpa::load_scene(
+    const auto r = sherpa::scene::load_scene(
         edited(kMeshopt, "/accessors/0/byteOffset", 12, "meshopt_accessor_past"));
     ASSERT_TRUE(r) << r.error;
     ASSERT_FALSE(r.scene->primitives.empty());
@@ -194,7 +194,7 @@ TEST(FuzzFindings, ImporterReproducersLoadOrFailWithAReason) {
         for (const char* name : {"__case.gltf", "__case.glb"}) {
             const auto file = dir.path() / name;
             if (!std::filesystem::exists(file)) continue;
-            const sherpa::LoadResult r = sherpa::load_scene(file.string());
+            const sherpa::scene::LoadResult r = sherpa::scene::load_scene(file.string());
             EXPECT_TRUE(r || !r.error.empty()) << file;
             ++replayed;
         }

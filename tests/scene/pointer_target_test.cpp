@@ -10,10 +10,10 @@
 
 namespace {
 
-using sherpa::PointerTarget;
-using sherpa::resolve_pointer;
-using sherpa::Severity;
-using sherpa::TargetKind;
+using sherpa::scene::PointerTarget;
+using sherpa::scene::resolve_pointer;
+using sherpa::scene::Severity;
+using sherpa::scene::TargetKind;
 
 TEST(PointerTarget, NodesMeshesPrimitivesAndAccessorsOfASkinnedFile) {
     const auto scene = sherpa::test::load_scene_or_fail(sherpa::test::gltf_asset("RiggedSimple"));
@@ -53,7 +53,7 @@ TEST(PointerTarget, NodesMeshesPrimitivesAndAccessorsOfASkinnedFile) {
     EXPECT_EQ(channel.kind, TargetKind::AnimationChannel);
     EXPECT_EQ(channel.node, 3);
     EXPECT_EQ(scene->animations[0].channels[static_cast<std::size_t>(channel.sub)].path,
-              sherpa::AnimationPath::Rotation);
+              sherpa::scene::AnimationPath::Rotation);
     EXPECT_EQ(resolve_pointer(*scene, "/animations/0/samplers/0").kind,
               TargetKind::AnimationSampler);
 }
@@ -92,7 +92,7 @@ TEST(PointerTarget, LightsAndExtensionNames) {
     const PointerTarget used = resolve_pointer(*glass, "/extensionsUsed/1");
     EXPECT_EQ(used.kind, TargetKind::Extension);
     EXPECT_EQ(used.material, 0) << "ADOBE_materials_thin_transparency: the Glass material";
-    EXPECT_EQ(sherpa::json_pointer_token("a/b~c"), "a~1b~0c");
+    EXPECT_EQ(sherpa::scene::json_pointer_token("a/b~c"), "a~1b~0c");
     // "~1" is an escaped '/' (RFC 6901): the token is a name, not two tokens.
     EXPECT_EQ(resolve_pointer(*glass, "/materials/0/extensions/A~1B").rest, "/extensions/A~1B");
 }
@@ -113,7 +113,7 @@ TEST(PointerTarget, BadPointersResolveToNone) {
 TEST(PointerTarget, MarksCarryTheWorstSeverityPerObject) {
     const auto scene = sherpa::test::load_scene_or_fail(sherpa::test::gltf_asset("RiggedSimple"));
     ASSERT_TRUE(scene);
-    const std::vector<sherpa::ValidationMessage> messages = {
+    const std::vector<sherpa::scene::ValidationMessage> messages = {
         {"ACCESSOR_MAX_MISMATCH", "", "/accessors/3/max/0", Severity::Error},
         {"NODE_EMPTY", "", "/nodes/4", Severity::Information},
         {"X", "", "/nodes/4", Severity::Hint},
@@ -121,7 +121,7 @@ TEST(PointerTarget, MarksCarryTheWorstSeverityPerObject) {
         {"X", "", "/animations/0/channels/3", Severity::Information},
         {"X", "", "/nodes/99", Severity::Error}, // names nothing: marks nothing
     };
-    const sherpa::ObjectMarks marks = sherpa::mark_objects(*scene, messages);
+    const sherpa::scene::ObjectMarks marks = sherpa::scene::mark_objects(*scene, messages);
     const std::size_t mesh = static_cast<std::size_t>(scene->mesh_primitives[0][0]);
     EXPECT_EQ(marks.engine_meshes[mesh], int(Severity::Error));
     EXPECT_EQ(marks.nodes[4], int(Severity::Information));
@@ -134,12 +134,13 @@ TEST(PointerTarget, MarksCarryTheWorstSeverityPerObject) {
 }
 
 TEST(PointerTarget, ElementIndexFromKhronosMessages) {
-    EXPECT_EQ(sherpa::element_index_in_message(
+    EXPECT_EQ(sherpa::scene::element_index_in_message(
                   "Indices accessor element at index 5 has vertex index 10 that exceeds"),
               5);
-    EXPECT_EQ(sherpa::element_index_in_message("Accessor element at index `12` is NaN"), 12);
-    EXPECT_EQ(sherpa::element_index_in_message("Accessor contains 3 element(s) greater"), -1);
-    EXPECT_EQ(sherpa::element_index_in_message("at index "), -1);
+    EXPECT_EQ(sherpa::scene::element_index_in_message("Accessor element at index `12` is NaN"), 12);
+    EXPECT_EQ(sherpa::scene::element_index_in_message("Accessor contains 3 element(s) greater"),
+              -1);
+    EXPECT_EQ(sherpa::scene::element_index_in_message("at index "), -1);
 }
 
 } // namespace

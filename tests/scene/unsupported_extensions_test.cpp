@@ -14,8 +14,8 @@
 
 namespace {
 
-sherpa::LoadResult load_glass() {
-    return sherpa::load_scene(
+sherpa::scene::LoadResult load_glass() {
+    return sherpa::scene::load_scene(
         (sherpa::test::data_dir() / "unsupported_material_extensions.gltf").string());
 }
 
@@ -26,7 +26,7 @@ bool contains(const std::vector<std::string>& lines, const std::string& a, const
 }
 
 TEST(UnsupportedExtensions, TransmissionAndThinTransparencyAreWarnings) {
-    const sherpa::LoadResult r = load_glass();
+    const sherpa::scene::LoadResult r = load_glass();
     ASSERT_TRUE(r) << r.error;
     const auto& w = r.scene->warnings;
     EXPECT_TRUE(contains(w, "ADOBE_materials_thin_transparency", "materials[0] \"Glass\""));
@@ -35,13 +35,14 @@ TEST(UnsupportedExtensions, TransmissionAndThinTransparencyAreWarnings) {
 }
 
 TEST(UnsupportedExtensions, MessagesPointAtTheNameAndTheMaterial) {
-    const sherpa::LoadResult r = load_glass();
+    const sherpa::scene::LoadResult r = load_glass();
     ASSERT_TRUE(r) << r.error;
     std::vector<std::pair<std::string, std::string>> got;
     for (const auto& m : r.scene->validation.messages) {
         // Vendor extensions: the Khronos validator's information that it cannot check them.
-        EXPECT_EQ(m.severity, m.code == "UNSUPPORTED_EXTENSION" ? sherpa::Severity::Information
-                                                                : sherpa::Severity::Warning);
+        EXPECT_EQ(m.severity, m.code == "UNSUPPORTED_EXTENSION"
+                                  ? sherpa::scene::Severity::Information
+                                  : sherpa::scene::Severity::Warning);
         got.emplace_back(m.code, m.pointer);
     }
     const std::vector<std::pair<std::string, std::string>> expected = {
@@ -55,19 +56,19 @@ TEST(UnsupportedExtensions, MessagesPointAtTheNameAndTheMaterial) {
          "/materials/0/extensions/ADOBE_materials_thin_transparency"},
     };
     EXPECT_EQ(got, expected);
-    EXPECT_EQ(r.scene->validation.count(sherpa::Severity::Warning), 4u);
+    EXPECT_EQ(r.scene->validation.count(sherpa::scene::Severity::Warning), 4u);
 }
 
 TEST(UnsupportedExtensions, PerMaterialListAndUses) {
-    const sherpa::LoadResult r = load_glass();
+    const sherpa::scene::LoadResult r = load_glass();
     ASSERT_TRUE(r) << r.error;
     const auto& mats = r.scene->materials;
     ASSERT_GE(mats.size(), 2u);
-    EXPECT_EQ(sherpa::unsupported_extensions(mats[0]),
+    EXPECT_EQ(sherpa::scene::unsupported_extensions(mats[0]),
               (std::vector<std::string>{"ADOBE_materials_clearcoat_specular",
                                         "ADOBE_materials_thin_transparency"}));
-    EXPECT_TRUE(sherpa::unsupported_extensions(mats[1]).empty());
-    const auto uses = sherpa::extension_uses(*r.scene);
+    EXPECT_TRUE(sherpa::scene::unsupported_extensions(mats[1]).empty());
+    const auto uses = sherpa::scene::extension_uses(*r.scene);
     ASSERT_EQ(uses.size(), 3u);
     EXPECT_TRUE(uses[0].supported);
     EXPECT_EQ(uses[0].materials, std::vector<std::uint32_t>{1});
@@ -85,7 +86,7 @@ TEST(UnsupportedExtensions, UndeclaredMaterialExtensionIsAWarningToo) {
     const auto path = std::filesystem::temp_directory_path() /
                       ("sherpa_undeclared_" + std::to_string(::getpid()) + ".gltf");
     std::ofstream(path) << doc.dump();
-    const sherpa::LoadResult r = sherpa::load_scene(path.string());
+    const sherpa::scene::LoadResult r = sherpa::scene::load_scene(path.string());
     std::filesystem::remove(path);
     ASSERT_TRUE(r) << r.error;
     EXPECT_TRUE(contains(r.scene->warnings,
@@ -103,8 +104,8 @@ TEST(UnsupportedExtensions, UndeclaredMaterialExtensionIsAWarningToo) {
 
 // A file whose extensions are all drawn says nothing about extensions.
 TEST(UnsupportedExtensions, SupportedFilesStayQuiet) {
-    const sherpa::LoadResult r =
-        sherpa::load_scene((sherpa::test::data_dir() / "lights_and_extensions.gltf").string());
+    const sherpa::scene::LoadResult r = sherpa::scene::load_scene(
+        (sherpa::test::data_dir() / "lights_and_extensions.gltf").string());
     ASSERT_TRUE(r) << r.error;
     for (const auto& m : r.scene->validation.messages)
         EXPECT_NE(m.code.rfind("SHERPA_", 0), 0u) << m.code << " " << m.pointer;

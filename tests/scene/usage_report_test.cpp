@@ -8,16 +8,16 @@
 
 namespace {
 
-using sherpa::VertexAttribute;
+using sherpa::scene::VertexAttribute;
 constexpr auto idx(VertexAttribute a) {
     return static_cast<std::size_t>(a);
 }
 
-sherpa::UsageReport report_for(const std::string& name,
-                               std::unique_ptr<sherpa::Scene>* keep = nullptr) {
-    sherpa::LoadResult r = sherpa::load_scene(sherpa::test::gltf_asset(name));
+sherpa::scene::UsageReport report_for(const std::string& name,
+                                      std::unique_ptr<sherpa::scene::Scene>* keep = nullptr) {
+    sherpa::scene::LoadResult r = sherpa::scene::load_scene(sherpa::test::gltf_asset(name));
     EXPECT_TRUE(r) << r.error;
-    auto rep = sherpa::build_usage_report(*r.scene);
+    auto rep = sherpa::scene::build_usage_report(*r.scene);
     if (keep) *keep = std::move(r.scene);
     return rep;
 }
@@ -35,20 +35,20 @@ TEST(UsageReport, UntexturedBoxNeedsPositionAndNormalOnly) {
 }
 
 TEST(UsageReport, NormalMapNeedsTangentsEvenWhenNotAuthored) {
-    std::unique_ptr<sherpa::Scene> scene;
+    std::unique_ptr<sherpa::scene::Scene> scene;
     const auto rep = report_for("DamagedHelmet", &scene);
     const auto& u = rep.primitives.at(0);
     // Not authored, so the loader generated them (MikkTSpace): present as Generated.
     EXPECT_TRUE(u.present[idx(VertexAttribute::Tangent)]);
     EXPECT_EQ(scene->meshes.at(0).provenance_of(VertexAttribute::Tangent),
-              sherpa::Provenance::Generated);
+              sherpa::scene::Provenance::Generated);
     EXPECT_TRUE(u.used[idx(VertexAttribute::Tangent)]);
     EXPECT_TRUE(u.used[idx(VertexAttribute::TexCoord0)]);
     EXPECT_FALSE(u.used[idx(VertexAttribute::TexCoord1)]);
 }
 
 TEST(UsageReport, SecondUvSetOnlyWhenATextureReadsIt) {
-    std::unique_ptr<sherpa::Scene> scene;
+    std::unique_ptr<sherpa::scene::Scene> scene;
     const auto rep = report_for("MultiUVTest", &scene);
     EXPECT_TRUE(rep.primitives.at(0).used[idx(VertexAttribute::TexCoord1)]);
     const auto box = report_for("BoxTextured");

@@ -17,14 +17,15 @@ inline std::string case_path(const std::string& name) {
 }
 
 // Whether `r` has a message with `code` at `pointer`.
-inline bool has(const ValidationReport& r, const std::string& code, const std::string& pointer) {
+inline bool has(const scene::ValidationReport& r, const std::string& code,
+                const std::string& pointer) {
     for (const auto& m : r.messages)
         if (m.code == code && m.pointer == pointer) return true;
     return false;
 }
 
 // Every message of `r`, one a line, for failure output.
-inline std::string dump(const ValidationReport& r) {
+inline std::string dump(const scene::ValidationReport& r) {
     std::string s;
     for (const auto& m : r.messages) s += m.code + " " + m.pointer + ": " + m.message + "\n";
     return s;

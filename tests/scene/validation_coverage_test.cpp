@@ -19,8 +19,8 @@
 namespace {
 
 namespace test = sherpa::test;
-using sherpa::Severity;
-using sherpa::ValidationReport;
+using sherpa::scene::Severity;
+using sherpa::scene::ValidationReport;
 
 using test::case_path;
 using test::dump;
@@ -41,8 +41,9 @@ TEST(DocumentOrder, ParseRecordsAttributeNamesAsWritten) {
         {"primitives":[{"extras":{"attributes":{"Z":1,"A":2}},"attributes":{"b":1,"a":2,"b":3}}]}],
         "attributes":{"NOT":1}})";
     nlohmann::json root;
-    sherpa::detail::DocumentOrder order;
-    ASSERT_EQ(sherpa::detail::parse_gltf_document(bytes_of(text), root, nullptr, &order), "");
+    sherpa::scene::detail::DocumentOrder order;
+    ASSERT_EQ(sherpa::scene::detail::parse_gltf_document(bytes_of(text), root, nullptr, &order),
+              "");
     using Names = std::vector<std::string>;
     ASSERT_NE(order.attributes_of(0, 0), nullptr);
     EXPECT_EQ(*order.attributes_of(0, 0), (Names{"TEXCOORD_0", "POSITION", "NORMAL"}));
@@ -57,7 +58,7 @@ TEST(DocumentOrder, ParseRecordsAttributeNamesAsWritten) {
 // POSITION and NORMAL read one view without byteStride: the Khronos validator names
 // the second attribute in document order (NORMAL), which sorted order would not.
 TEST(DocumentOrder, SharedViewNamesTheSecondAttributeAsWritten) {
-    const auto r = sherpa::load_scene(case_path("attributes_share_view.gltf"));
+    const auto r = sherpa::scene::load_scene(case_path("attributes_share_view.gltf"));
     ASSERT_TRUE(r) << r.error;
     EXPECT_TRUE(has(r.scene->validation, "MESH_PRIMITIVE_ACCESSOR_WITHOUT_BYTESTRIDE",
                     "/meshes/0/primitives/0/attributes/NORMAL"))
@@ -73,7 +74,7 @@ TEST(DocumentOrder, SharedViewNamesTheSecondAttributeAsWritten) {
 class LoadsAndNames : public ::testing::TestWithParam<Expect> {};
 
 TEST_P(LoadsAndNames, TheCodeAtItsPointer) {
-    const auto r = sherpa::load_scene(case_path(GetParam().file));
+    const auto r = sherpa::scene::load_scene(case_path(GetParam().file));
     ASSERT_TRUE(r) << r.error;
     EXPECT_TRUE(has(r.scene->validation, GetParam().code, GetParam().pointer))
         << dump(r.scene->validation);
@@ -143,12 +144,12 @@ INSTANTIATE_TEST_SUITE_P(
 // is outside the declared bounds as well as not finite, and index data past its view
 // is read where the buffer holds it.
 TEST(DataChecks, InfinityIsOutOfBoundsAndIndicesPastTheirViewAreRead) {
-    auto r = sherpa::load_scene((test::data_dir() / "inf_position.gltf").string());
+    auto r = sherpa::scene::load_scene((test::data_dir() / "inf_position.gltf").string());
     ValidationReport report = r ? r.scene->validation : r.validation;
     EXPECT_TRUE(has(report, "ACCESSOR_INVALID_FLOAT", "/accessors/0")) << dump(report);
     EXPECT_TRUE(has(report, "ACCESSOR_ELEMENT_OUT_OF_MAX_BOUND", "/accessors/0/max/1"))
         << dump(report);
-    r = sherpa::load_scene((test::data_dir() / "accessor_out_of_range.gltf").string());
+    r = sherpa::scene::load_scene((test::data_dir() / "accessor_out_of_range.gltf").string());
     report = r ? r.scene->validation : r.validation;
     EXPECT_TRUE(has(report, "ACCESSOR_INDEX_OOB", "/meshes/0/primitives/0/indices"))
         << dump(report);
@@ -157,7 +158,7 @@ TEST(DataChecks, InfinityIsOutOfBoundsAndIndicesPastTheirViewAreRead) {
 // A valid sparse accessor (an override inside the declared bounds) gives no error:
 // reading the overrides adds no false message.
 TEST(DataChecks, ValidSparseAccessorHasNoDataErrors) {
-    const auto r = sherpa::load_scene(case_path("sparse_valid.gltf"));
+    const auto r = sherpa::scene::load_scene(case_path("sparse_valid.gltf"));
     ASSERT_TRUE(r) << r.error;
     EXPECT_EQ(r.scene->validation.count(Severity::Error), 0u) << dump(r.scene->validation);
 }
@@ -170,7 +171,7 @@ TEST(MaterialExtension, UndeclaredIsNotReadAndIorZeroIsValid) {
     doc.erase("extensionsUsed");
     auto path = std::filesystem::temp_directory_path() / "sherpa_ext_undeclared.gltf";
     std::ofstream(path) << doc.dump();
-    auto r = sherpa::load_scene(path.string());
+    auto r = sherpa::scene::load_scene(path.string());
     ASSERT_TRUE(r) << r.error;
     EXPECT_TRUE(has(r.scene->validation, "UNDECLARED_EXTENSION",
                     "/materials/0/extensions/KHR_materials_ior"));
@@ -180,7 +181,7 @@ TEST(MaterialExtension, UndeclaredIsNotReadAndIorZeroIsValid) {
     doc["materials"][0]["extensions"]["KHR_materials_ior"]["ior"] = 0;
     path = std::filesystem::temp_directory_path() / "sherpa_ext_ior_zero.gltf";
     std::ofstream(path) << doc.dump();
-    r = sherpa::load_scene(path.string());
+    r = sherpa::scene::load_scene(path.string());
     ASSERT_TRUE(r) << r.error;
     EXPECT_EQ(r.scene->validation.count(Severity::Error), 0u) << dump(r.scene->validation);
 }

@@ -19,7 +19,7 @@
 
 namespace {
 
-namespace kernels = sherpa::detail::kernels;
+namespace kernels = sherpa::scene::detail::kernels;
 
 // `count` elements of N components of C, `stride` bytes apart, from `values` (flat).
 template <typename C>
@@ -242,8 +242,8 @@ TEST(DataPass, BoundsHoldOnlyForValuesReadInFullAndInside) {
             {"bufferView": 0, "byteOffset": 32, "componentType": 5126, "count": 2,
              "type": "SCALAR", "min": [0.1], "max": [0.2]}
         ]})");
-    sherpa::ValidationReport report;
-    sherpa::detail::DocumentValidator validator(root, {}, false, report);
+    sherpa::scene::ValidationReport report;
+    sherpa::scene::detail::DocumentValidator validator(root, {}, false, report);
     const std::span<const std::uint8_t> buffer(reinterpret_cast<const std::uint8_t*>(data),
                                                sizeof data);
     validator.check_data(std::span(&buffer, 1));
@@ -256,7 +256,7 @@ TEST(DataPass, BoundsHoldOnlyForValuesReadInFullAndInside) {
 
 namespace {
 
-bool has(const sherpa::ValidationReport& r, std::string_view code, std::string_view pointer,
+bool has(const sherpa::scene::ValidationReport& r, std::string_view code, std::string_view pointer,
          std::string_view text) {
     for (const auto& m : r.messages)
         if (m.code == code && m.pointer == pointer && m.message.find(text) != std::string::npos)
@@ -297,8 +297,8 @@ TEST(DataPass, SummarizedAccessorsKeepEveryMessage) {
         ],
         "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1},
                                     "indices": 2}]}]})");
-    sherpa::ValidationReport report;
-    sherpa::detail::DocumentValidator validator(root, {}, false, report);
+    sherpa::scene::ValidationReport report;
+    sherpa::scene::detail::DocumentValidator validator(root, {}, false, report);
     const std::span<const std::uint8_t> buffer(bytes);
     validator.check_data(std::span(&buffer, 1));
     EXPECT_TRUE(has(report, "ACCESSOR_MAX_MISMATCH", "/accessors/1/max/2", "(1.500000)"));

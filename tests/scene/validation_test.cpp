@@ -13,8 +13,8 @@
 namespace {
 
 namespace test = sherpa::test;
-using sherpa::Severity;
-using sherpa::ValidationReport;
+using sherpa::scene::Severity;
+using sherpa::scene::ValidationReport;
 
 using test::case_path;
 using test::dump;
@@ -22,7 +22,7 @@ using test::Expect;
 using test::has;
 
 TEST(Validation, ValidFileHasNoErrorsOrWarnings) {
-    const auto r = sherpa::load_scene(case_path("valid.gltf"));
+    const auto r = sherpa::scene::load_scene(case_path("valid.gltf"));
     ASSERT_TRUE(r) << r.error;
     EXPECT_EQ(r.scene->validation.count(Severity::Error), 0u) << dump(r.scene->validation);
     EXPECT_EQ(r.scene->validation.count(Severity::Warning), 0u) << dump(r.scene->validation);
@@ -34,7 +34,7 @@ TEST(Validation, ValidFileHasNoErrorsOrWarnings) {
 class LoadsWithMessage : public ::testing::TestWithParam<Expect> {};
 
 TEST_P(LoadsWithMessage, AndNamesIt) {
-    const auto r = sherpa::load_scene(case_path(GetParam().file));
+    const auto r = sherpa::scene::load_scene(case_path(GetParam().file));
     ASSERT_TRUE(r) << r.error;
     EXPECT_TRUE(has(r.scene->validation, GetParam().code, GetParam().pointer))
         << dump(r.scene->validation);
@@ -88,7 +88,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 // What the specification allows loads without an error, whatever tinygltf thinks.
 TEST(LoadAndWarn, IntegersWrittenAsFloatsLoad) {
-    const auto r = sherpa::load_scene(case_path("integer_as_float.gltf"));
+    const auto r = sherpa::scene::load_scene(case_path("integer_as_float.gltf"));
     ASSERT_TRUE(r) << r.error;
     EXPECT_EQ(r.scene->validation.count(Severity::Error), 0u) << dump(r.scene->validation);
     EXPECT_EQ(r.scene->meshes.size(), 2u);
@@ -98,7 +98,7 @@ TEST(LoadAndWarn, IntegersWrittenAsFloatsLoad) {
 // not a reason to refuse the file: it is read as unspecified (linear or trilinear
 // filtering, repeat wrapping), and the note says which.
 TEST(LoadAndWarn, SamplerValueOutOfItsListIsReadAsUnspecified) {
-    const auto r = sherpa::load_scene(case_path("sampler_bad_filter.gltf"));
+    const auto r = sherpa::scene::load_scene(case_path("sampler_bad_filter.gltf"));
     ASSERT_TRUE(r) << r.error;
     const ValidationReport& v = r.scene->validation;
     EXPECT_TRUE(has(v, "VALUE_NOT_IN_LIST", "/samplers/0/magFilter")) << dump(v);
@@ -108,9 +108,9 @@ TEST(LoadAndWarn, SamplerValueOutOfItsListIsReadAsUnspecified) {
                  m.message.find("linear filtering is used") != std::string::npos;
     EXPECT_TRUE(noted) << dump(v);
     ASSERT_EQ(r.scene->samplers.size(), 1u);
-    EXPECT_EQ(r.scene->samplers[0].mag_filter, sherpa::Filter::Linear);
-    EXPECT_EQ(r.scene->samplers[0].min_filter, sherpa::Filter::Linear); // 9987: trilinear
-    EXPECT_EQ(r.scene->samplers[0].mipmap_mode, sherpa::MipmapMode::Linear);
+    EXPECT_EQ(r.scene->samplers[0].mag_filter, sherpa::scene::Filter::Linear);
+    EXPECT_EQ(r.scene->samplers[0].min_filter, sherpa::scene::Filter::Linear); // 9987: trilinear
+    EXPECT_EQ(r.scene->samplers[0].mipmap_mode, sherpa::scene::MipmapMode::Linear);
 }
 
 TEST(LoadAndWarn, PlaceholderBufferWithoutUriLoadsAndNamesWhatItSkips) {
@@ -118,7 +118,7 @@ TEST(LoadAndWarn, PlaceholderBufferWithoutUriLoadsAndNamesWhatItSkips) {
     doc["buffers"].push_back({{"byteLength", 1024}}); // a placeholder nothing reads
     const auto path = std::filesystem::temp_directory_path() / "sherpa_placeholder_buffer.gltf";
     std::ofstream(path) << doc.dump();
-    const auto r = sherpa::load_scene(path.string());
+    const auto r = sherpa::scene::load_scene(path.string());
     ASSERT_TRUE(r) << r.error;
     EXPECT_EQ(r.scene->meshes.size(), 2u);
     EXPECT_TRUE(has(r.scene->validation, "SHERPA_BUFFER_NOT_LOADED", "/buffers/1"))
@@ -131,7 +131,7 @@ TEST(LoadAndWarn, UnfetchableUriIsAWarningAndItsReadersAreSkipped) {
     doc["buffers"][0]["uri"] = "https://example.invalid/data.bin";
     const auto path = std::filesystem::temp_directory_path() / "sherpa_remote_buffer.gltf";
     std::ofstream(path) << doc.dump();
-    const auto r = sherpa::load_scene(path.string());
+    const auto r = sherpa::scene::load_scene(path.string());
     ASSERT_TRUE(r) << r.error;
     EXPECT_TRUE(has(r.scene->validation, "NON_RELATIVE_URI", "/buffers/0/uri"));
     EXPECT_TRUE(has(r.scene->validation, "SHERPA_BUFFER_NOT_LOADED", "/buffers/0"));
@@ -141,13 +141,13 @@ TEST(LoadAndWarn, UnfetchableUriIsAWarningAndItsReadersAreSkipped) {
 }
 
 TEST(LoadAndWarn, DataUriInGlbLoads) {
-    const auto r = sherpa::load_scene(case_path("glb_data_uri.glb"));
+    const auto r = sherpa::scene::load_scene(case_path("glb_data_uri.glb"));
     ASSERT_TRUE(r) << r.error;
     EXPECT_EQ(r.scene->meshes.size(), 2u);
 }
 
 TEST(LoadAndWarn, RepeatedKeyTimesSkipTheChannelNotTheFile) {
-    const auto r = sherpa::load_scene(case_path("anim_input_non_increasing.gltf"));
+    const auto r = sherpa::scene::load_scene(case_path("anim_input_non_increasing.gltf"));
     ASSERT_TRUE(r) << r.error;
     ASSERT_EQ(r.scene->animations.size(), 1u);
     EXPECT_TRUE(r.scene->animations[0].channels.empty());
@@ -155,7 +155,7 @@ TEST(LoadAndWarn, RepeatedKeyTimesSkipTheChannelNotTheFile) {
 }
 
 TEST(LoadAndWarn, RefusalCarriesTheValidatorsMessages) {
-    const auto r = sherpa::load_scene((test::data_dir() / "version_3.gltf").string());
+    const auto r = sherpa::scene::load_scene((test::data_dir() / "version_3.gltf").string());
     ASSERT_FALSE(r);
     ASSERT_FALSE(r.validation.messages.empty());
     EXPECT_EQ(r.validation.messages.back().code, "SHERPA_LOAD_REFUSED");
@@ -165,7 +165,7 @@ TEST(LoadAndWarn, RefusalCarriesTheValidatorsMessages) {
 // A view past its buffer is still refused (the importer's raw checks), but the report
 // carries the validator's message as well as the refusal.
 TEST(LoadAndWarn, RefusedFileKeepsTheKhronosCode) {
-    const auto r = sherpa::load_scene(case_path("buffer_view_too_long.gltf"));
+    const auto r = sherpa::scene::load_scene(case_path("buffer_view_too_long.gltf"));
     ASSERT_FALSE(r);
     EXPECT_TRUE(has(r.validation, "BUFFER_VIEW_TOO_LONG", "/bufferViews/8/byteLength"))
         << dump(r.validation);
@@ -187,7 +187,7 @@ TEST(LoadAndWarn, RefusedFilesNameTheKhronosCodes) {
         {"fractional_byte_length.gltf", "ACCESSOR_TOO_LONG", "/accessors/0/byteOffset"},
     };
     for (const auto& c : cases) {
-        const auto r = sherpa::load_scene((test::data_dir() / c.file).string());
+        const auto r = sherpa::scene::load_scene((test::data_dir() / c.file).string());
         const ValidationReport& report = r ? r.scene->validation : r.validation;
         EXPECT_TRUE(has(report, c.code, c.pointer)) << c.file << "\n" << dump(report);
     }
@@ -198,7 +198,7 @@ TEST(LoadAndWarn, RefusedFilesNameTheKhronosCodes) {
 TEST(Validation, NoLengthMismatchForBuffersWithoutDataByDesign) {
     for (const auto& path : {test::data_dir() / "compressed_seeds" / "Box.meshopt.glb",
                              test::data_dir() / "validation" / "data_uri_mime.gltf"}) {
-        const auto r = sherpa::load_scene(path.string());
+        const auto r = sherpa::scene::load_scene(path.string());
         const ValidationReport& report = r ? r.scene->validation : r.validation;
         for (const auto& m : report.messages)
             EXPECT_NE(m.code, "BUFFER_BYTE_LENGTH_MISMATCH") << path << "\n" << dump(report);
@@ -206,10 +206,12 @@ TEST(Validation, NoLengthMismatchForBuffersWithoutDataByDesign) {
 }
 
 TEST(Validation, ImporterWarningsBecomeMessagesWithPointers) {
-    EXPECT_EQ(sherpa::detail::pointer_of_path("meshes[0].primitives[1].attributes.POSITION: x"),
-              "/meshes/0/primitives/1/attributes/POSITION");
-    EXPECT_EQ(sherpa::detail::pointer_of_path("animations[2]: 3 channel(s)"), "/animations/2");
-    EXPECT_EQ(sherpa::detail::pointer_of_path("attributes TEXCOORD_2 are not used"), "");
+    EXPECT_EQ(
+        sherpa::scene::detail::pointer_of_path("meshes[0].primitives[1].attributes.POSITION: x"),
+        "/meshes/0/primitives/1/attributes/POSITION");
+    EXPECT_EQ(sherpa::scene::detail::pointer_of_path("animations[2]: 3 channel(s)"),
+              "/animations/2");
+    EXPECT_EQ(sherpa::scene::detail::pointer_of_path("attributes TEXCOORD_2 are not used"), "");
 }
 
 // The hostile reproducers: every one either loads or is refused, never crashes; a
@@ -218,7 +220,7 @@ TEST(Validation, HostileFilesGiveWellFormedReports) {
     for (const auto& e : std::filesystem::directory_iterator(test::data_dir())) {
         const auto ext = e.path().extension();
         if (ext != ".gltf" && ext != ".glb") continue;
-        const auto r = sherpa::load_scene(e.path().string());
+        const auto r = sherpa::scene::load_scene(e.path().string());
         const ValidationReport& report = r ? r.scene->validation : r.validation;
         for (const auto& m : report.messages) {
             EXPECT_FALSE(m.code.empty()) << e.path();

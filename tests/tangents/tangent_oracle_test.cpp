@@ -21,7 +21,7 @@ namespace {
 struct OracleCase {
     std::string model;
     GltfPrimitive primitive;
-    TangentInput input() const {
+    scene::TangentInput input() const {
         return {primitive.positions, primitive.normals, primitive.uvs, primitive.indices};
     }
 };
@@ -33,7 +33,7 @@ TEST(TangentOracle, ExactMikkTSpaceMatchesTheReferenceOnEverySampleModel) {
             if (!p.normals.empty() && !p.uvs.empty() && !p.indices.empty())
                 cases.push_back({model, std::move(p)});
     ASSERT_GE(cases.size(), 10u) << "sample models missing under " << SHERPA_ASSETS_DIR;
-    std::vector<TangentInput> inputs;
+    std::vector<scene::TangentInput> inputs;
     for (const OracleCase& c : cases) inputs.push_back(c.input());
     const OracleResult oracle =
         run_oracle({SHERPA_NODE, SHERPA_ORACLE_SCRIPT, SHERPA_ORACLE_CACHE, "."}, inputs);
@@ -44,11 +44,12 @@ TEST(TangentOracle, ExactMikkTSpaceMatchesTheReferenceOnEverySampleModel) {
         const GltfPrimitive& p = c.primitive;
         const std::vector<glm::vec4>& reference = oracle.tangents[i];
         std::vector<glm::vec4> ours(p.indices.size());
-        std::vector<TangentFallback> fallback(p.indices.size());
-        generate_corner_tangents(c.input(), TangentMethod::MikkTSpace, ours, fallback);
+        std::vector<scene::TangentFallback> fallback(p.indices.size());
+        scene::generate_corner_tangents(c.input(), scene::TangentMethod::MikkTSpace, ours,
+                                        fallback);
         std::vector<std::uint8_t> skip(ours.size(), 0);
         for (std::size_t k = 0; k < ours.size(); ++k) {
-            if (fallback[k] == TangentFallback::None) {
+            if (fallback[k] == scene::TangentFallback::None) {
                 // An angle against a zero vector would read as 0°: rule it out first.
                 EXPECT_FALSE(oracle_unusable(reference[k]))
                     << c.model << " corner " << k << ": a tangent where the oracle has none";
@@ -60,7 +61,7 @@ TEST(TangentOracle, ExactMikkTSpaceMatchesTheReferenceOnEverySampleModel) {
             skip[k] = 1;
             ++skipped;
         }
-        const TangentComparison stats = compare_tangents(ours, reference, skip);
+        const scene::TangentComparison stats = scene::compare_tangents(ours, reference, skip);
         compared += stats.corners;
         const std::string where =
             c.model + " mesh " + std::to_string(p.mesh) + " prim " + std::to_string(p.primitive);
@@ -83,11 +84,11 @@ TEST(TangentOracle, ReproducesAuthoredMirrorTestTangents) {
     for (const GltfPrimitive& p : prims) {
         ASSERT_FALSE(p.tangents.empty());
         std::vector<glm::vec4> ours(p.indices.size());
-        generate_corner_tangents({p.positions, p.normals, p.uvs, p.indices},
-                                 TangentMethod::MikkTSpace, ours);
+        scene::generate_corner_tangents({p.positions, p.normals, p.uvs, p.indices},
+                                        scene::TangentMethod::MikkTSpace, ours);
         std::vector<glm::vec4> authored;
         for (std::uint32_t i : p.indices) authored.push_back(p.tangents[i]);
-        const TangentComparison stats = compare_tangents(ours, authored);
+        const scene::TangentComparison stats = scene::compare_tangents(ours, authored);
         EXPECT_LE(stats.p99, 0.005);
         EXPECT_EQ(stats.flips, 0u);
         std::printf("NormalTangentMirrorTest vs authored: p99 %.2e deg, max %.2e deg\n", stats.p99,

@@ -27,20 +27,20 @@ struct TestMesh {
     void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
         indices.insert(indices.end(), {a, b, c});
     }
-    TangentInput input() const { return {positions, normals, uvs, indices}; }
+    scene::TangentInput input() const { return {positions, normals, uvs, indices}; }
 };
 
 struct Result {
     std::vector<glm::vec4> tangents;
-    std::vector<TangentFallback> fallbacks;
-    TangentStats stats;
+    std::vector<scene::TangentFallback> fallbacks;
+    scene::TangentStats stats;
 };
 
-Result run(const TestMesh& m, TangentMethod method = TangentMethod::MikkTSpace) {
+Result run(const TestMesh& m, scene::TangentMethod method = scene::TangentMethod::MikkTSpace) {
     Result r;
     r.tangents.resize(m.indices.size());
     r.fallbacks.resize(m.indices.size());
-    r.stats = generate_corner_tangents(m.input(), method, r.tangents, r.fallbacks);
+    r.stats = scene::generate_corner_tangents(m.input(), method, r.tangents, r.fallbacks);
     return r;
 }
 
@@ -78,13 +78,13 @@ void expect_finite_unit_orthogonal(const Result& r, const TestMesh& m) {
 }
 
 TEST(Tangents, MethodNamesRoundTrip) {
-    for (TangentMethod m : kAllTangentMethods) {
-        TangentMethod parsed{};
-        ASSERT_TRUE(parse_tangent_method(to_string(m), parsed));
+    for (scene::TangentMethod m : scene::kAllTangentMethods) {
+        scene::TangentMethod parsed{};
+        ASSERT_TRUE(scene::parse_tangent_method(to_string(m), parsed));
         EXPECT_EQ(parsed, m);
     }
-    TangentMethod unused{};
-    EXPECT_FALSE(parse_tangent_method("mikk", unused));
+    scene::TangentMethod unused{};
+    EXPECT_FALSE(scene::parse_tangent_method("mikk", unused));
 }
 
 TEST(Tangents, EmptyInputIsFine) {
@@ -99,24 +99,26 @@ TEST(Tangents, BrokenContractsThrow) {
     std::vector<glm::vec4> out(m.indices.size());
     m.indices.push_back(0);
     std::vector<glm::vec4> wrong(m.indices.size());
-    EXPECT_THROW(generate_corner_tangents(m.input(), TangentMethod::MikkTSpace, wrong),
-                 std::invalid_argument);
+    EXPECT_THROW(
+        scene::generate_corner_tangents(m.input(), scene::TangentMethod::MikkTSpace, wrong),
+        std::invalid_argument);
     m.indices.pop_back();
     m.indices[0] = 17;
-    EXPECT_THROW(generate_corner_tangents(m.input(), TangentMethod::MikkTSpace, out),
+    EXPECT_THROW(scene::generate_corner_tangents(m.input(), scene::TangentMethod::MikkTSpace, out),
                  std::invalid_argument);
     m.indices[0] = 0;
     m.uvs.pop_back();
-    EXPECT_THROW(generate_corner_tangents(m.input(), TangentMethod::MikkTSpace, out),
+    EXPECT_THROW(scene::generate_corner_tangents(m.input(), scene::TangentMethod::MikkTSpace, out),
                  std::invalid_argument);
     m.uvs.push_back({});
     std::vector<glm::vec4> short_out(2);
-    EXPECT_THROW(generate_corner_tangents(m.input(), TangentMethod::MikkTSpace, short_out),
-                 std::invalid_argument);
+    EXPECT_THROW(
+        scene::generate_corner_tangents(m.input(), scene::TangentMethod::MikkTSpace, short_out),
+        std::invalid_argument);
 }
 
 TEST(Tangents, GltfHandednessOnAPlainSquare) {
-    for (TangentMethod method : kAllTangentMethods) {
+    for (scene::TangentMethod method : scene::kAllTangentMethods) {
         const TestMesh m = square();
         const Result r = run(m, method);
         for (const glm::vec4& t : r.tangents) expect_tangent(t, {1, 0, 0}, 1.0f);
@@ -125,7 +127,7 @@ TEST(Tangents, GltfHandednessOnAPlainSquare) {
 }
 
 TEST(Tangents, MirroredUvsFlipTangentAndHandedness) {
-    for (TangentMethod method : kAllTangentMethods) {
+    for (scene::TangentMethod method : scene::kAllTangentMethods) {
         const TestMesh m = square(1.0f, true);
         const Result r = run(m, method);
         for (const glm::vec4& t : r.tangents) expect_tangent(t, {-1, 0, 0}, -1.0f);
@@ -147,7 +149,7 @@ TEST(Tangents, MirrorSeamKeepsBothSidesExact) {
     for (std::size_t k = 0; k < 6; ++k) expect_tangent(r.tangents[k], {-1, 0, 0}, -1.0f);
     for (std::size_t k = 6; k < 12; ++k) expect_tangent(r.tangents[k], {1, 0, 0}, 1.0f);
     // Without splitting, the shared vertices b and c take whichever side wrote last.
-    const Result welded = run(m, TangentMethod::MikkTSpaceWelded);
+    const Result welded = run(m, scene::TangentMethod::MikkTSpaceWelded);
     EXPECT_EQ(welded.tangents[1], welded.tangents[6]);
 }
 
@@ -173,13 +175,13 @@ TEST(Tangents, ZeroAreaUvTriangleFallsBackOrthogonal) {
     const auto a = m.vertex({0, 0, 0}, {0.5f, 0.5f}), b = m.vertex({1, 0, 0}, {0.5f, 0.5f});
     const auto c = m.vertex({0, 1, 0}, {0.5f, 0.5f});
     m.triangle(a, b, c);
-    for (TangentMethod method : kAllTangentMethods) {
+    for (scene::TangentMethod method : scene::kAllTangentMethods) {
         const Result r = run(m, method);
         expect_finite_unit_orthogonal(r, m);
-        EXPECT_EQ(r.stats.count(TangentFallback::DegenerateUv), 3u) << to_string(method);
+        EXPECT_EQ(r.stats.count(scene::TangentFallback::DegenerateUv), 3u) << to_string(method);
     }
     // The textbook Lengyel formula divides by the uv area: that is counted.
-    EXPECT_EQ(run(m, TangentMethod::Lengyel).stats.nonfinite_before_guard, 3u);
+    EXPECT_EQ(run(m, scene::TangentMethod::Lengyel).stats.nonfinite_before_guard, 3u);
 }
 
 TEST(Tangents, CollinearAndCoincidentCornersFallBack) {
@@ -195,15 +197,15 @@ TEST(Tangents, CollinearAndCoincidentCornersFallBack) {
     // back (the reference would still return dP/du along the collinear line). Lengyel,
     // as textbooks write it, keeps the collinear triangle's dP/du.
     const std::size_t expected[] = {9, 9, 6};
-    for (TangentMethod method : kAllTangentMethods) {
+    for (scene::TangentMethod method : scene::kAllTangentMethods) {
         const Result r = run(m, method);
         expect_finite_unit_orthogonal(r, m);
-        EXPECT_EQ(r.stats.count(TangentFallback::DegeneratePosition),
+        EXPECT_EQ(r.stats.count(scene::TangentFallback::DegeneratePosition),
                   expected[static_cast<std::size_t>(method)])
             << to_string(method);
-        EXPECT_EQ(r.stats.fallbacks(), r.stats.count(TangentFallback::DegeneratePosition));
+        EXPECT_EQ(r.stats.fallbacks(), r.stats.count(scene::TangentFallback::DegeneratePosition));
     }
-    expect_tangent(run(m, TangentMethod::Lengyel).tangents[1], {1, 0, 0}, -1.0f);
+    expect_tangent(run(m, scene::TangentMethod::Lengyel).tangents[1], {1, 0, 0}, -1.0f);
 }
 
 // A degenerate triangle attached to a good one takes the good one's tangent at shared
@@ -213,18 +215,18 @@ TEST(Tangents, DegenerateTriangleBorrowsFromItsWeldedNeighbour) {
     m.triangle(0, 1, 1);
     const Result r = run(m);
     expect_tangent(r.tangents[6], {1, 0, 0}, 1.0f);
-    EXPECT_EQ(r.fallbacks[6], TangentFallback::None);
+    EXPECT_EQ(r.fallbacks[6], scene::TangentFallback::None);
 }
 
 TEST(Tangents, NanAndZeroNormalsNeverYieldNan) {
     TestMesh m = square();
     m.normals[0] = glm::vec3(std::numeric_limits<float>::quiet_NaN());
     m.normals[2] = glm::vec3(0.0f);
-    for (TangentMethod method : kAllTangentMethods) {
+    for (scene::TangentMethod method : scene::kAllTangentMethods) {
         const Result r = run(m, method);
         expect_finite_unit_orthogonal(r, m);
-        EXPECT_EQ(r.stats.count(TangentFallback::NonFiniteInput), 2u) << to_string(method);
-        EXPECT_EQ(r.stats.count(TangentFallback::InvalidNormal), 2u) << to_string(method);
+        EXPECT_EQ(r.stats.count(scene::TangentFallback::NonFiniteInput), 2u) << to_string(method);
+        EXPECT_EQ(r.stats.count(scene::TangentFallback::InvalidNormal), 2u) << to_string(method);
     }
 }
 
@@ -232,10 +234,10 @@ TEST(Tangents, NonFinitePositionsAndUvsNeverYieldNan) {
     TestMesh m = square();
     m.positions[1].x = std::numeric_limits<float>::infinity();
     m.uvs[3].y = std::numeric_limits<float>::quiet_NaN();
-    for (TangentMethod method : kAllTangentMethods) {
+    for (scene::TangentMethod method : scene::kAllTangentMethods) {
         const Result r = run(m, method);
         expect_finite_unit_orthogonal(r, m);
-        EXPECT_EQ(r.stats.count(TangentFallback::NonFiniteInput), 6u) << to_string(method);
+        EXPECT_EQ(r.stats.count(scene::TangentFallback::NonFiniteInput), 6u) << to_string(method);
     }
 }
 
@@ -250,7 +252,8 @@ TEST(Tangents, NonUnitNormalsAreRescaledBeforeProjection) {
 
 TEST(Tangents, HugeAndTinyCoordinatesKeepTheirTangent) {
     for (float scale : {1e-30f, 1e-20f, 1e-6f, 1e6f, 1e20f, 1e30f}) {
-        for (TangentMethod method : {TangentMethod::MikkTSpace, TangentMethod::MikkTSpaceWelded}) {
+        for (scene::TangentMethod method :
+             {scene::TangentMethod::MikkTSpace, scene::TangentMethod::MikkTSpaceWelded}) {
             const TestMesh m = square(scale);
             const Result r = run(m, method);
             for (const glm::vec4& t : r.tangents) expect_tangent(t, {1, 0, 0}, 1.0f);
@@ -286,8 +289,8 @@ TEST(Tangents, MethodsAgreeOnSmoothSurfaces) {
         m.triangle(2 * i, 2 * i + 2, 2 * i + 3);
         m.triangle(2 * i, 2 * i + 3, 2 * i + 1);
     }
-    const Result mikk = run(m), welded = run(m, TangentMethod::MikkTSpaceWelded),
-                 lengyel = run(m, TangentMethod::Lengyel);
+    const Result mikk = run(m), welded = run(m, scene::TangentMethod::MikkTSpaceWelded),
+                 lengyel = run(m, scene::TangentMethod::Lengyel);
     EXPECT_EQ(mikk.tangents, welded.tangents);
     for (std::size_t c = 0; c < mikk.tangents.size(); ++c) {
         EXPECT_GT(glm::dot(glm::vec3(mikk.tangents[c]), glm::vec3(lengyel.tangents[c])), 0.999f);
@@ -314,15 +317,15 @@ TEST(Tangents, WorkspaceReuseNeverChangesResults) {
         large.triangle(a, c, d);
         large.triangle(a, a, c); // dropped (repeated vertex)
     }
-    TangentWorkspace workspace;
+    scene::TangentWorkspace workspace;
     for (int round = 0; round < 2; ++round)
         for (const TestMesh* m : {&large, &small, &large})
-            for (TangentMethod method : kAllTangentMethods) {
+            for (scene::TangentMethod method : scene::kAllTangentMethods) {
                 const Result fresh = run(*m, method);
                 std::vector<glm::vec4> reused(m->indices.size());
-                std::vector<TangentFallback> fallbacks(m->indices.size());
-                const TangentStats stats =
-                    generate_corner_tangents(m->input(), method, reused, fallbacks, &workspace);
+                std::vector<scene::TangentFallback> fallbacks(m->indices.size());
+                const scene::TangentStats stats = scene::generate_corner_tangents(
+                    m->input(), method, reused, fallbacks, &workspace);
                 EXPECT_EQ(reused, fresh.tangents) << to_string(method);
                 EXPECT_EQ(fallbacks, fresh.fallbacks) << to_string(method);
                 EXPECT_EQ(stats.corners, fresh.stats.corners) << to_string(method);
@@ -330,19 +333,19 @@ TEST(Tangents, WorkspaceReuseNeverChangesResults) {
 }
 
 TEST(Tangents, StatsAddUp) {
-    TangentStats a, b;
+    scene::TangentStats a, b;
     a.corners[0] = 3;
-    a.corners[static_cast<std::size_t>(TangentFallback::DegenerateUv)] = 2;
-    b.corners[static_cast<std::size_t>(TangentFallback::ZeroResult)] = 1;
+    a.corners[static_cast<std::size_t>(scene::TangentFallback::DegenerateUv)] = 2;
+    b.corners[static_cast<std::size_t>(scene::TangentFallback::ZeroResult)] = 1;
     b.nonfinite_before_guard = 4;
     b.rescaled_normals = 5;
     a += b;
     EXPECT_EQ(a.fallbacks(), 3u);
-    EXPECT_EQ(a.count(TangentFallback::None), 3u);
+    EXPECT_EQ(a.count(scene::TangentFallback::None), 3u);
     EXPECT_EQ(a.nonfinite_before_guard, 4u);
     EXPECT_EQ(a.rescaled_normals, 5u);
-    for (std::size_t c = 0; c < kTangentFallbackCauses; ++c)
-        EXPECT_NE(to_string(TangentFallback(c)), "unknown");
+    for (std::size_t c = 0; c < scene::kTangentFallbackCauses; ++c)
+        EXPECT_NE(to_string(scene::TangentFallback(c)), "unknown");
 }
 
 } // namespace

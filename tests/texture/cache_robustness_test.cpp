@@ -22,15 +22,15 @@ namespace fs = std::filesystem;
 namespace {
 
 // One generated base-colour image on one instance: one cache entry.
-Scene one_texture_scene() {
-    Scene s;
-    ImageRecord img;
+scene::Scene one_texture_scene() {
+    scene::Scene s;
+    scene::ImageRecord img;
     const RgbaImage pixels = test::synthetic_image(16, 12, false, 7);
     img.name = "generated", img.width = pixels.width, img.height = pixels.height;
     img.pixels = pixels.pixels;
     s.images.push_back(img);
-    s.textures = {{"t0", 0, -1, kRoleColor}};
-    MaterialInstance m;
+    s.textures = {{"t0", 0, -1, scene::kRoleColor}};
+    scene::MaterialInstance m;
     m.base_color.texture = 0;
     s.materials = {m};
     s.instances.resize(1);
@@ -50,7 +50,7 @@ bool any_warning_has(const PreparedTextureSet& set, const std::string& a, const 
 
 // The path of the scene's one cache entry in `dir`, made and then removed, so the
 // test can put something else there.
-fs::path vacated_entry(const Scene& scene, const fs::path& dir) {
+fs::path vacated_entry(const scene::Scene& scene, const fs::path& dir) {
     const fs::path entry =
         prepare_textures(scene, test::cache_test_options(dir)).textures[0].cache_file;
     fs::remove(entry);
@@ -69,7 +69,7 @@ pid_t dead_pid() {
 
 TEST(CacheRobustness, EditedPsnrIsNotServedAsHit) {
     const auto dir = test::fresh_temp_dir("cache-psnr");
-    const Scene scene = one_texture_scene();
+    const scene::Scene scene = one_texture_scene();
     const auto first = prepare_textures(scene, test::cache_test_options(dir));
     ASSERT_EQ(first.textures.size(), 1u);
     ASSERT_TRUE(first.textures[0].psnr.has_value());
@@ -92,7 +92,7 @@ TEST(CacheRobustness, EditedPsnrIsNotServedAsHit) {
 
 TEST(CacheRobustness, DirectoryAtEntryPathIsReportedNotSized) {
     const auto dir = test::fresh_temp_dir("cache-dir-entry");
-    const Scene scene = one_texture_scene();
+    const scene::Scene scene = one_texture_scene();
     const fs::path entry = vacated_entry(scene, dir);
     fs::create_directory(entry);
     const auto set = prepare_textures(scene, test::cache_test_options(dir));
@@ -106,7 +106,7 @@ TEST(CacheRobustness, DirectoryAtEntryPathIsReportedNotSized) {
 
 TEST(CacheRobustness, FifoAtEntryPathIsRefusedWithoutBlocking) {
     const auto dir = test::fresh_temp_dir("cache-fifo-entry");
-    const Scene scene = one_texture_scene();
+    const scene::Scene scene = one_texture_scene();
     const fs::path entry = vacated_entry(scene, dir);
     ASSERT_EQ(::mkfifo(entry.c_str(), 0600), 0);
     // Run where a blocked open cannot take the test binary with it; a hang is a
@@ -151,7 +151,7 @@ TEST(CacheRobustness, LiveTempFilesCountAgainstCap) {
 TEST(CacheRobustness, SecondMakerWaitsForFirstAndReusesItsEntry) {
     const auto dir = test::fresh_temp_dir("cache-lock");
     const auto made_elsewhere = test::fresh_temp_dir("cache-lock-other");
-    const Scene scene = one_texture_scene();
+    const scene::Scene scene = one_texture_scene();
     // The entry as another process would leave it.
     const fs::path other_file =
         prepare_textures(scene, test::cache_test_options(made_elsewhere)).textures[0].cache_file;

@@ -20,10 +20,10 @@ namespace {
 // base colour (through two textures sharing the image) and image 1 as normal
 // map; material 1 (alpha-masked) uses image 0 again as base colour; material 2
 // is not instanced, so its image 2 must not be touched.
-Scene small_scene() {
-    Scene s;
+scene::Scene small_scene() {
+    scene::Scene s;
     auto add_image = [&](RgbaImage img, const std::string& name) {
-        ImageRecord rec;
+        scene::ImageRecord rec;
         rec.name = name, rec.uri = name + ".png", rec.mime_type = "image/png";
         rec.encoded = test::png_bytes(img, name);
         rec.byte_size = rec.encoded.size();
@@ -36,13 +36,13 @@ Scene small_scene() {
                               900, 900, 32, 32),
               "normal");
     add_image(test::synthetic_image(8, 8, false, 2), "unused");
-    s.textures = {{"t0", 0, -1, kRoleColor},
-                  {"t1", 0, -1, kRoleColor},
-                  {"t2", 1, -1, kRoleNormal},
-                  {"t3", 2, -1, kRoleColor}};
-    MaterialInstance m0, m1, m2;
+    s.textures = {{"t0", 0, -1, scene::kRoleColor},
+                  {"t1", 0, -1, scene::kRoleColor},
+                  {"t2", 1, -1, scene::kRoleNormal},
+                  {"t3", 2, -1, scene::kRoleColor}};
+    scene::MaterialInstance m0, m1, m2;
     m0.base_color.texture = 0, m0.normal.texture = 2;
-    m1.base_color.texture = 1, m1.alpha_mode = AlphaMode::Mask, m1.alpha_cutoff = 0.4f;
+    m1.base_color.texture = 1, m1.alpha_mode = scene::AlphaMode::Mask, m1.alpha_cutoff = 0.4f;
     m2.base_color.texture = 3;
     s.materials = {m0, m1, m2};
     s.instances.resize(2);
@@ -56,18 +56,18 @@ TEST(TextureUses, DedupeByImageAndSkipUnusedMaterials) {
     const auto uses = collect_texture_uses(small_scene());
     ASSERT_EQ(uses.size(), 2u);
     EXPECT_EQ(uses[0].image, 0);
-    EXPECT_EQ(uses[0].role, kRoleColor);
+    EXPECT_EQ(uses[0].role, scene::kRoleColor);
     EXPECT_EQ(uses[0].textures, (std::vector<std::int32_t>{0, 1}));
     ASSERT_TRUE(uses[0].alpha_cutoff.has_value());
     EXPECT_FLOAT_EQ(*uses[0].alpha_cutoff, 0.4f);
     EXPECT_EQ(uses[1].image, 1);
-    EXPECT_EQ(uses[1].role, kRoleNormal);
+    EXPECT_EQ(uses[1].role, scene::kRoleNormal);
 }
 
 TEST(TextureUses, DifferentCutoffsOnOneImageGetPlainMips) {
-    Scene s = small_scene();
+    scene::Scene s = small_scene();
     // Texture 0 shares image 0 with masked texture 1 (cutoff 0.4); mask it at 0.7 too.
-    s.materials[0].alpha_mode = AlphaMode::Mask, s.materials[0].alpha_cutoff = 0.7f;
+    s.materials[0].alpha_mode = scene::AlphaMode::Mask, s.materials[0].alpha_cutoff = 0.7f;
     auto uses = collect_texture_uses(s);
     ASSERT_EQ(uses[0].image, 0);
     EXPECT_FALSE(uses[0].alpha_cutoff.has_value()); // no one scale keeps both coverages
@@ -79,7 +79,7 @@ TEST(TextureUses, DifferentCutoffsOnOneImageGetPlainMips) {
 
 TEST(TexturePipeline, MissThenHitWithSameLevels) {
     const auto dir = test::fresh_temp_dir("cache-hit");
-    const Scene scene = small_scene();
+    const scene::Scene scene = small_scene();
     const auto first = prepare_textures(scene, test::cache_test_options(dir));
     ASSERT_EQ(first.textures.size(), 2u);
     for (const auto& t : first.textures) {
@@ -92,9 +92,9 @@ TEST(TexturePipeline, MissThenHitWithSameLevels) {
     EXPECT_EQ(first.textures[0].format, VkFormat::Bc7SrgbBlock);
     EXPECT_EQ(first.textures[1].format, VkFormat::Bc5UnormBlock);
     EXPECT_EQ(first.textures[0].levels.size(), 5u); // 24x20 -> 1x1
-    EXPECT_EQ(first.find(1, kRoleColor), 0);
-    EXPECT_EQ(first.find(2, kRoleNormal), 1);
-    EXPECT_EQ(first.find(3, kRoleColor), -1);
+    EXPECT_EQ(first.find(1, scene::kRoleColor), 0);
+    EXPECT_EQ(first.find(2, scene::kRoleNormal), 1);
+    EXPECT_EQ(first.find(3, scene::kRoleColor), -1);
 
     const auto second = prepare_textures(scene, test::cache_test_options(dir));
     for (std::size_t i = 0; i < 2; ++i) {
@@ -112,7 +112,7 @@ TEST(TexturePipeline, MissThenHitWithSameLevels) {
 
 TEST(TexturePipeline, DamagedFilesAreReportedAndReplaced) {
     const auto dir = test::fresh_temp_dir("cache-corrupt");
-    const Scene scene = small_scene();
+    const scene::Scene scene = small_scene();
     const auto first = prepare_textures(scene, test::cache_test_options(dir));
     const auto file = first.textures[0].cache_file;
     std::vector<std::uint8_t> bytes;
@@ -146,23 +146,23 @@ TEST(TexturePipeline, DamagedFilesAreReportedAndReplaced) {
 }
 
 TEST(TexturePipeline, ResolvesMaterialTexturesToBindlessSlots) {
-    const Scene scene = small_scene();
+    const scene::Scene scene = small_scene();
     PipelineOptions o;
     o.bc7_level = 0;
     const auto set = prepare_textures(scene, o);
     const std::vector<std::uint32_t> slots = {7, 9}; // where the GPU layer put set.textures[0], [1]
-    const GPUMaterialData m0 = resolve_material(scene.materials[0], set, slots);
+    const scene::GPUMaterialData m0 = resolve_material(scene.materials[0], set, slots);
     EXPECT_EQ(m0.base_color_tex, 7u);
     EXPECT_EQ(m0.normal_tex, 9u);
-    EXPECT_EQ(m0.emissive_tex, kTextureSentinel);
+    EXPECT_EQ(m0.emissive_tex, scene::kTextureSentinel);
     EXPECT_EQ(resolve_material(scene.materials[1], set, slots).base_color_tex, 7u); // shared image
     EXPECT_EQ(resolve_material(scene.materials[2], set, slots).base_color_tex,
-              kTextureSentinel); // not displayed
+              scene::kTextureSentinel); // not displayed
 }
 
 TEST(TexturePipeline, FileForAnotherRecipeIsStale) {
     const auto dir = test::fresh_temp_dir("cache-stale");
-    const Scene scene = small_scene();
+    const scene::Scene scene = small_scene();
     const auto first = prepare_textures(scene, test::cache_test_options(dir));
     // Put texture 1's valid file where texture 0's key points.
     std::filesystem::copy_file(first.textures[1].cache_file, first.textures[0].cache_file,
@@ -175,7 +175,7 @@ TEST(TexturePipeline, FileForAnotherRecipeIsStale) {
 
 TEST(TexturePipeline, ConcurrentWritersLeaveOneValidFile) {
     const auto dir = test::fresh_temp_dir("cache-concurrent");
-    const Scene scene = small_scene();
+    const scene::Scene scene = small_scene();
     std::vector<PreparedTextureSet> results(4);
     std::vector<std::thread> writers;
     for (auto& r : results)
@@ -291,7 +291,7 @@ namespace {
 
 TEST(TexturePipeline, ProgressCountsEveryTexture) {
     const auto dir = test::fresh_temp_dir("cache-progress");
-    const Scene scene = small_scene();
+    const scene::Scene scene = small_scene();
     std::vector<std::pair<std::size_t, std::size_t>> reports;
     PipelineOptions options = test::cache_test_options(dir);
     options.progress = [&](std::size_t done, std::size_t total) {
@@ -311,7 +311,7 @@ TEST(TexturePipeline, ProgressCountsEveryTexture) {
 
 TEST(TexturePipeline, CancelStopsAndReturnsNothing) {
     const auto dir = test::fresh_temp_dir("cache-cancel");
-    const Scene scene = small_scene();
+    const scene::Scene scene = small_scene();
     core::CancelToken token;
     PipelineOptions options = test::cache_test_options(dir);
     options.cancel = &token;

@@ -15,11 +15,11 @@ using namespace sherpa;
 using namespace sherpa::tex;
 namespace fs = std::filesystem;
 
-Scene generated_images(const std::vector<std::string>& names) {
-    Scene s;
+scene::Scene generated_images(const std::vector<std::string>& names) {
+    scene::Scene s;
     for (const std::string& name : names) {
         const RgbaImage pixels = test::synthetic_image(4, 4, false, 3);
-        ImageRecord img;
+        scene::ImageRecord img;
         img.name = name, img.width = pixels.width, img.height = pixels.height;
         img.pixels = pixels.pixels;
         s.images.push_back(img);
@@ -32,7 +32,7 @@ TEST(SourceExportNames, LongNamesAreShortenedAndKeptApart) {
     const std::string long_b = std::string(300, 'a') + "b"; // same first 120 bytes
     // A multi-byte character across the cut is not split.
     const std::string long_utf8 = std::string(119, 'c') + "\xC3\xA9" + std::string(200, 'c');
-    const Scene scene = generated_images({long_a, long_b, long_utf8, "short"});
+    const scene::Scene scene = generated_images({long_a, long_b, long_utf8, "short"});
     const std::vector<std::string> names = source_export_names(scene);
     ASSERT_EQ(names.size(), 4u);
     EXPECT_EQ(std::set<std::string>(names.begin(), names.end()).size(), 4u);
@@ -50,11 +50,11 @@ TEST(SourceExportNames, LongNamesAreShortenedAndKeptApart) {
 }
 
 TEST(SourceExportNames, BidiControlsAreDropped) {
-    const Scene scene = generated_images({"photo\xE2\x80\xAEgnp.exe",
-                                          "a\xE2\x81\xA6"
-                                          "b\xD8\x9C"
-                                          "c",
-                                          "\xE2\x80\x8F"});
+    const scene::Scene scene = generated_images({"photo\xE2\x80\xAEgnp.exe",
+                                                 "a\xE2\x81\xA6"
+                                                 "b\xD8\x9C"
+                                                 "c",
+                                                 "\xE2\x80\x8F"});
     const std::vector<std::string> names = source_export_names(scene);
     EXPECT_EQ(names[0], "photognp.exe.png");
     EXPECT_EQ(names[1], "abc.png");

@@ -161,7 +161,8 @@ TEST(ImageBombs, SupercompressedKtx2IsRefusedBeforeInflating) {
 // `info`: each bomb is one undecodable texture naming its file and size; the good
 // image of the same material is prepared.
 TEST(ImageBombs, PipelineMarksEachUndecodableAndPreparesTheRest) {
-    const sherpa::LoadResult loaded = sherpa::load_scene(data("image_bombs.gltf").string());
+    const sherpa::scene::LoadResult loaded =
+        sherpa::scene::load_scene(data("image_bombs.gltf").string());
     ASSERT_TRUE(loaded) << loaded.error;
     PipelineOptions options;
     options.bc7_level = 0;

@@ -28,7 +28,7 @@ struct Prepared {
 };
 
 Prepared prepare_alpha_blend_mode_test(bool bc) {
-    const LoadResult r = load_scene(
+    const scene::LoadResult r = scene::load_scene(
         (test::assets_dir() / "gltf/AlphaBlendModeTest/glTF/AlphaBlendModeTest.gltf").string());
     EXPECT_TRUE(r) << r.error;
     Prepared p;
@@ -37,7 +37,7 @@ Prepared prepare_alpha_blend_mode_test(bool bc) {
     options.device_supports_bc = bc;
     p.set = tex::prepare_textures(*r.scene, options);
     for (const tex::PreparedTexture& t : p.set.textures)
-        if (t.source == "AlphaBlendLabels.png" && t.role == kRoleColor) p.labels = &t;
+        if (t.source == "AlphaBlendLabels.png" && t.role == scene::kRoleColor) p.labels = &t;
     return p;
 }
 

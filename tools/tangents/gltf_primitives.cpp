@@ -9,32 +9,32 @@
 namespace sherpa::tools {
 
 std::vector<GltfPrimitive> read_gltf_primitives(const std::string& path) {
-    LoadOptions options;
+    scene::LoadOptions options;
     options.generate_tangents = false; // the file's data only
-    LoadResult loaded = load_scene(path, options);
+    scene::LoadResult loaded = scene::load_scene(path, options);
     if (!loaded) throw std::runtime_error(loaded.error);
-    const Scene& scene = *loaded.scene;
+    const scene::Scene& scene = *loaded.scene;
     std::vector<GltfPrimitive> out;
-    auto has = [](const Mesh& m, VertexAttribute a) {
-        return m.provenance_of(a) == Provenance::Authored;
+    auto has = [](const scene::Mesh& m, scene::VertexAttribute a) {
+        return m.provenance_of(a) == scene::Provenance::Authored;
     };
-    for (const Mesh& mesh : scene.meshes) {
+    for (const scene::Mesh& mesh : scene.meshes) {
         GltfPrimitive g;
         g.mesh = mesh.group_id;
         g.primitive = mesh.primitive_index;
         if (mesh.material_id < scene.materials.size()) {
-            const TextureSlot& normal = scene.materials[mesh.material_id].normal;
+            const scene::TextureSlot& normal = scene.materials[mesh.material_id].normal;
             g.has_normal_texture = normal.present();
             if (g.has_normal_texture) g.tex_coord = normal.tex_coord;
         }
-        const VertexAttribute uv_set =
-            g.tex_coord == 1 ? VertexAttribute::TexCoord1 : VertexAttribute::TexCoord0;
-        for (const Vertex& v : mesh.vertices) {
+        const scene::VertexAttribute uv_set = g.tex_coord == 1 ? scene::VertexAttribute::TexCoord1
+                                                               : scene::VertexAttribute::TexCoord0;
+        for (const scene::Vertex& v : mesh.vertices) {
             g.positions.push_back(v.position);
-            if (has(mesh, VertexAttribute::Normal)) g.normals.push_back(v.normal);
+            if (has(mesh, scene::VertexAttribute::Normal)) g.normals.push_back(v.normal);
             if (has(mesh, uv_set) && g.tex_coord <= 1)
                 g.uvs.push_back(g.tex_coord == 1 ? v.uv1 : v.uv0);
-            if (has(mesh, VertexAttribute::Tangent)) g.tangents.push_back(v.tangent);
+            if (has(mesh, scene::VertexAttribute::Tangent)) g.tangents.push_back(v.tangent);
         }
         g.indices = mesh.indices;
         out.push_back(std::move(g));

@@ -21,7 +21,7 @@ void write_corners(std::ofstream& out, std::span<const T> values,
 
 } // namespace
 
-OracleResult run_oracle(const OracleSetup& setup, const std::vector<TangentInput>& meshes,
+OracleResult run_oracle(const OracleSetup& setup, const std::vector<scene::TangentInput>& meshes,
                         int time_repeats) {
     const std::string in_path = setup.work_dir + "/mikktspace_oracle_in.bin";
     const std::string out_path = setup.work_dir + "/mikktspace_oracle_out.bin";
@@ -29,7 +29,7 @@ OracleResult run_oracle(const OracleSetup& setup, const std::vector<TangentInput
     {
         std::ofstream in(in_path, std::ios::binary);
         write_u32(in, static_cast<std::uint32_t>(meshes.size()));
-        for (const TangentInput& m : meshes) {
+        for (const scene::TangentInput& m : meshes) {
             write_u32(in, static_cast<std::uint32_t>(m.indices.size()));
             write_corners(in, m.positions, m.indices);
             write_corners(in, m.normals, m.indices);
@@ -58,7 +58,7 @@ OracleResult run_oracle(const OracleSetup& setup, const std::vector<TangentInput
                 log >> result.cpu_seconds;
     }
     std::ifstream out(out_path, std::ios::binary);
-    for (const TangentInput& m : meshes) {
+    for (const scene::TangentInput& m : meshes) {
         std::vector<glm::vec4> tangents(m.indices.size());
         out.read(reinterpret_cast<char*>(tangents.data()),
                  std::streamsize(tangents.size() * sizeof(glm::vec4)));
@@ -77,14 +77,14 @@ bool oracle_unusable(const glm::vec4& t) {
     return !finite || (t.x == 0.0f && t.y == 0.0f && t.z == 0.0f);
 }
 
-bool oracle_agrees_with_fallback(const glm::vec4& t, TangentFallback cause) {
+bool oracle_agrees_with_fallback(const glm::vec4& t, scene::TangentFallback cause) {
     if (oracle_unusable(t)) return true;
     // The reference's untouched default (+x, sign -1 before the flip to glTF's +1) is a
     // plausible tangent too, so it only counts where the input itself is degenerate.
     const bool is_default = t.x == 1.0f && t.y == 0.0f && t.z == 0.0f && t.w == 1.0f;
-    return is_default && (cause == TangentFallback::DegenerateUv ||
-                          cause == TangentFallback::DegeneratePosition ||
-                          cause == TangentFallback::NonFiniteInput);
+    return is_default && (cause == scene::TangentFallback::DegenerateUv ||
+                          cause == scene::TangentFallback::DegeneratePosition ||
+                          cause == scene::TangentFallback::NonFiniteInput);
 }
 
 } // namespace sherpa::tools

@@ -27,7 +27,7 @@ struct OracleResult {
 
 // Unindexes each mesh, runs the oracle (timing `time_repeats` runs when > 0) and reads
 // its tangents back. Throws std::runtime_error with the oracle's failure.
-OracleResult run_oracle(const OracleSetup& setup, const std::vector<TangentInput>& meshes,
+OracleResult run_oracle(const OracleSetup& setup, const std::vector<scene::TangentInput>& meshes,
                         int time_repeats = 0);
 
 // Whether the oracle's tangent is no tangent at all: NaN/Inf or zero.
@@ -37,6 +37,6 @@ bool oracle_unusable(const glm::vec4& t);
 // usable tangent, or it left the corner at the reference's default (+x, glTF sign +1),
 // which it does for corners of degenerate triangles that no group reached, and our
 // cause confirms the corner's triangle is degenerate.
-bool oracle_agrees_with_fallback(const glm::vec4& t, TangentFallback cause);
+bool oracle_agrees_with_fallback(const glm::vec4& t, scene::TangentFallback cause);
 
 } // namespace sherpa::tools

@@ -29,15 +29,16 @@ std::uint64_t chain_bytes(std::uint32_t w, std::uint32_t h, bool block_compresse
 // Texel density (texels per world unit) of each triangle of an instance in uv set `set`
 // of a w x h texture, with the triangle's world area, appended to `out` divided by
 // `screen` (pixels per world unit): texels per pixel, area.
-void texel_ratios(const Scene& scene, const MeshInstance& inst, std::uint32_t set, std::uint32_t w,
-                  std::uint32_t h, double screen, std::vector<std::pair<double, double>>& out) {
-    const Mesh& mesh = scene.meshes[inst.mesh_id];
-    if (mesh.topology() != Topology::Triangles) return;
+void texel_ratios(const scene::Scene& scene, const scene::MeshInstance& inst, std::uint32_t set,
+                  std::uint32_t w, std::uint32_t h, double screen,
+                  std::vector<std::pair<double, double>>& out) {
+    const scene::Mesh& mesh = scene.meshes[inst.mesh_id];
+    if (mesh.topology() != scene::Topology::Triangles) return;
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
         glm::dvec3 p[3];
         glm::dvec2 uv[3];
         for (int k = 0; k < 3; ++k) {
-            const Vertex& v = mesh.vertices[mesh.indices[t + std::size_t(k)]];
+            const scene::Vertex& v = mesh.vertices[mesh.indices[t + std::size_t(k)]];
             p[k] = glm::dvec3(inst.world * glm::vec4(v.position, 1.0f));
             uv[k] = glm::dvec2(set == 1 ? v.uv1 : v.uv0) * glm::dvec2(w, h);
         }
@@ -64,11 +65,14 @@ double area_quantile(std::vector<std::pair<double, double>> ratios) {
 
 // Screen pixels per world unit at the instance's nearest point, largest over the
 // views that see it; 0 when none does.
-double max_screen_density(const MeshInstance& inst, const std::vector<CameraSpec>& views,
-                          const std::vector<Frustum>& frusta, std::uint32_t viewport_height) {
+double max_screen_density(const scene::MeshInstance& inst,
+                          const std::vector<scene::CameraSpec>& views,
+                          const std::vector<scene::Frustum>& frusta,
+                          std::uint32_t viewport_height) {
     double best = 0.0;
     for (std::size_t c = 0; c < views.size(); ++c) {
-        if (!inst.world_bounds.valid() || !exact_visible(frusta[c], inst.world_bounds)) continue;
+        if (!inst.world_bounds.valid() || !scene::exact_visible(frusta[c], inst.world_bounds))
+            continue;
         const glm::vec3 nearest =
             glm::clamp(views[c].eye, inst.world_bounds.min, inst.world_bounds.max);
         const double d =
@@ -80,8 +84,8 @@ double max_screen_density(const MeshInstance& inst, const std::vector<CameraSpec
 }
 
 // The uv set of the first slot of `m` that samples `image`, or -1.
-int uv_set_for(const Scene& scene, const MaterialInstance& m, std::int32_t image) {
-    for (const TextureSlot* s :
+int uv_set_for(const scene::Scene& scene, const scene::MaterialInstance& m, std::int32_t image) {
+    for (const scene::TextureSlot* s :
          {&m.base_color, &m.metallic_roughness, &m.normal, &m.occlusion, &m.emissive})
         if (s->present() && std::size_t(s->texture) < scene.textures.size() &&
             scene.textures[std::size_t(s->texture)].image == image)
@@ -97,15 +101,16 @@ struct ImageMeasure {
     double texels_per_pixel = 0.0;
 };
 
-ImageMeasure measure_image(const Scene& scene, std::int32_t image,
-                           const std::vector<CameraSpec>& views, const std::vector<Frustum>& frusta,
-                           std::uint32_t viewport_height, std::vector<std::string>& notes) {
+ImageMeasure measure_image(const scene::Scene& scene, std::int32_t image,
+                           const std::vector<scene::CameraSpec>& views,
+                           const std::vector<scene::Frustum>& frusta, std::uint32_t viewport_height,
+                           std::vector<std::string>& notes) {
     ImageMeasure out;
     tex::RgbaImage decoded;
     std::string error;
-    if (image_is_missing(scene.images[std::size_t(image)])) {
+    if (scene::image_is_missing(scene.images[std::size_t(image)])) {
         notes.push_back("image " + std::to_string(image) +
-                        " not measured: missing: " + image_location(scene, image) +
+                        " not measured: missing: " + scene::image_location(scene, image) +
                         " (the file does not exist or cannot be read)");
         return out;
     }
@@ -117,7 +122,7 @@ ImageMeasure measure_image(const Scene& scene, std::int32_t image,
     out.width = decoded.width;
     out.height = decoded.height;
     std::vector<std::pair<double, double>> ratios;
-    for (const MeshInstance& inst : scene.instances) {
+    for (const scene::MeshInstance& inst : scene.instances) {
         const int set = uv_set_for(scene, scene.materials[inst.material_id], image);
         const double screen = max_screen_density(inst, views, frusta, viewport_height);
         if (set >= 0 && screen > 0.0)
@@ -129,10 +134,10 @@ ImageMeasure measure_image(const Scene& scene, std::int32_t image,
     return out;
 }
 
-void add_unread(const Scene& scene, const UsageReport& usage, BudgetReport& out) {
-    std::map<std::uint32_t, const PrimitiveUsage*> by_mesh;
-    for (const PrimitiveUsage& u : usage.primitives) by_mesh[u.mesh_id] = &u;
-    for (const PrimitiveInfo& p : scene.primitives) {
+void add_unread(const scene::Scene& scene, const scene::UsageReport& usage, BudgetReport& out) {
+    std::map<std::uint32_t, const scene::PrimitiveUsage*> by_mesh;
+    for (const scene::PrimitiveUsage& u : usage.primitives) by_mesh[u.mesh_id] = &u;
+    for (const scene::PrimitiveInfo& p : scene.primitives) {
         if (p.engine_mesh < 0) continue;
         const auto it = by_mesh.find(std::uint32_t(p.engine_mesh));
         const bool drawn = it != by_mesh.end() && it->second->instances > 0;
@@ -145,11 +150,11 @@ void add_unread(const Scene& scene, const UsageReport& usage, BudgetReport& out)
                          "static pose";
             else {
                 bool stream = false;
-                for (VertexAttribute a : kAllVertexAttributes)
-                    if (gltf_name(a) == name) {
+                for (scene::VertexAttribute a : scene::kAllVertexAttributes)
+                    if (scene::gltf_name(a) == name) {
                         stream = true;
                         if (!it->second->used[std::size_t(a)])
-                            reason = a == VertexAttribute::Tangent
+                            reason = a == scene::VertexAttribute::Tangent
                                          ? "no normal texture reads tangents"
                                          : "the material's shading does not read it";
                     }
@@ -162,24 +167,24 @@ void add_unread(const Scene& scene, const UsageReport& usage, BudgetReport& out)
 
 } // namespace
 
-BudgetReport build_budget(const Scene& scene, const BudgetOptions& options) {
+BudgetReport build_budget(const scene::Scene& scene, const BudgetOptions& options) {
     BudgetReport out;
-    const UsageReport usage = build_usage_report(scene);
+    const scene::UsageReport usage = scene::build_usage_report(scene);
     out.categories.push_back(
         {"vertex streams", usage.unified_bytes, usage.used_bytes, usage.used_bytes});
     std::uint64_t index_bytes = 0;
-    for (const PrimitiveUsage& u : usage.primitives)
+    for (const scene::PrimitiveUsage& u : usage.primitives)
         if (u.instances > 0) index_bytes += 4ull * scene.meshes[u.mesh_id].indices.size();
     out.categories.push_back({"indices", index_bytes, index_bytes, index_bytes});
 
-    std::vector<CameraSpec> views = options.views;
+    std::vector<scene::CameraSpec> views = options.views;
     if (views.empty()) { // the outside orbit of the culling path: the scene framed
         views = camera_path(scene.bounds, 32);
         views.resize(16);
     }
-    std::vector<Frustum> frusta;
-    for (const CameraSpec& v : views)
-        frusta.push_back(frustum_from_view_projection(v.view_projection()));
+    std::vector<scene::Frustum> frusta;
+    for (const scene::CameraSpec& v : views)
+        frusta.push_back(scene::frustum_from_view_projection(v.view_projection()));
     out.notes.push_back("views: " + std::to_string(views.size()) + " cameras at " +
                         std::to_string(options.viewport_height) + " px height");
     BudgetCategory textures{"textures", 0, 0, 0};
@@ -206,12 +211,12 @@ BudgetReport build_budget(const Scene& scene, const BudgetOptions& options) {
             reduce > 1 ? chain_bytes(image.width / reduce, image.height / reduce, true) : stored;
         if (reduce > 1)
             out.oversized.push_back({use.image,
-                                     image_location(scene, use.image) + " (" +
+                                     scene::image_location(scene, use.image) + " (" +
                                          std::string(tex::role_name(use.role)) + ")",
                                      image.width, image.height, texels_per_pixel, reduce});
     }
     out.categories.push_back(textures);
-    const std::uint64_t materials = sizeof(GPUMaterialData) * scene.materials.size();
+    const std::uint64_t materials = sizeof(scene::GPUMaterialData) * scene.materials.size();
     out.categories.push_back({"materials", materials, materials, materials});
     const std::uint64_t instances = sizeof(render::GPUInstanceData) * scene.instances.size();
     out.categories.push_back({"instances", instances, instances, instances});

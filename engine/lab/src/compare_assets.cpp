@@ -30,7 +30,7 @@ std::string text(bool v) {
     return v ? "true" : "false";
 }
 
-std::string slot_text(const TextureSlot& s) {
+std::string slot_text(const scene::TextureSlot& s) {
     if (!s.present()) return "none";
     std::string t = "texture " + std::to_string(s.texture) + " uv" + std::to_string(s.tex_coord);
     if (s.transform.present)
@@ -40,7 +40,7 @@ std::string slot_text(const TextureSlot& s) {
 }
 
 // Every compared field of a material as text, by name: one list for both sides.
-std::vector<std::pair<std::string, std::string>> material_fields(const MaterialInstance& m) {
+std::vector<std::pair<std::string, std::string>> material_fields(const scene::MaterialInstance& m) {
     return {{"name", m.name},
             {"base_color_factor", text(m.base_color_factor)},
             {"emissive_factor", text(m.emissive_factor)},
@@ -61,8 +61,8 @@ std::vector<std::pair<std::string, std::string>> material_fields(const MaterialI
             {"emissive_texture", slot_text(m.emissive)}};
 }
 
-std::vector<CountDiff> counts(const Scene& a, const Scene& b) {
-    const SourceCounts &x = a.counts, &y = b.counts;
+std::vector<CountDiff> counts(const scene::Scene& a, const scene::Scene& b) {
+    const scene::SourceCounts &x = a.counts, &y = b.counts;
     return {{"scenes", x.scenes, y.scenes},
             {"nodes", x.nodes, y.nodes},
             {"meshes", x.meshes, y.meshes},
@@ -76,11 +76,11 @@ std::vector<CountDiff> counts(const Scene& a, const Scene& b) {
             {"instances", a.instances.size(), b.instances.size()}};
 }
 
-TextureDiff compare_image(const Scene& a, const Scene& b, std::int32_t i) {
+TextureDiff compare_image(const scene::Scene& a, const scene::Scene& b, std::int32_t i) {
     TextureDiff d;
     d.image = i;
-    d.a = image_location(a, i), d.b = image_location(b, i);
-    const ImageRecord &ia = a.images[std::size_t(i)], &ib = b.images[std::size_t(i)];
+    d.a = scene::image_location(a, i), d.b = scene::image_location(b, i);
+    const scene::ImageRecord &ia = a.images[std::size_t(i)], &ib = b.images[std::size_t(i)];
     d.bytes_a = ia.byte_size, d.bytes_b = ib.byte_size;
     tex::RgbaImage xa, xb;
     std::string error;
@@ -104,7 +104,7 @@ std::uint64_t file_bytes(const std::filesystem::path& path) {
 
 // The file plus the external buffers and images a .gltf names (percent escapes are
 // rare in sample files and left as written: such a file counts 0).
-std::uint64_t total_bytes(const Scene& scene) {
+std::uint64_t total_bytes(const scene::Scene& scene) {
     const std::filesystem::path path(scene.source);
     std::uint64_t total = file_bytes(path);
     std::ifstream in(path);
@@ -122,7 +122,7 @@ std::uint64_t total_bytes(const Scene& scene) {
 
 } // namespace
 
-FileComparison compare_files(const Scene& a, const Scene& b) {
+FileComparison compare_files(const scene::Scene& a, const scene::Scene& b) {
     FileComparison out;
     out.counts = counts(a, b);
     out.primitives = detail::compare_primitives(a, b);
@@ -147,8 +147,8 @@ FileComparison compare_files(const Scene& a, const Scene& b) {
                             " compared");
     out.file_bytes_a = file_bytes(a.source), out.file_bytes_b = file_bytes(b.source);
     out.total_bytes_a = total_bytes(a), out.total_bytes_b = total_bytes(b);
-    for (const ImageRecord& i : a.images) out.image_bytes_a += i.byte_size;
-    for (const ImageRecord& i : b.images) out.image_bytes_b += i.byte_size;
+    for (const scene::ImageRecord& i : a.images) out.image_bytes_a += i.byte_size;
+    for (const scene::ImageRecord& i : b.images) out.image_bytes_b += i.byte_size;
     return out;
 }
 

@@ -6,6 +6,6 @@
 
 namespace sherpa::lab::detail {
 
-std::vector<PrimitiveDiff> compare_primitives(const Scene& a, const Scene& b);
+std::vector<PrimitiveDiff> compare_primitives(const scene::Scene& a, const scene::Scene& b);
 
 } // namespace sherpa::lab::detail

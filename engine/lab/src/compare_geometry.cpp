@@ -17,10 +17,10 @@ struct WorldVertex {
     glm::vec2 uv;
 };
 
-std::vector<WorldVertex> world_vertices(const Scene& scene, std::uint32_t mesh_id) {
-    const Mesh& mesh = scene.meshes[mesh_id];
+std::vector<WorldVertex> world_vertices(const scene::Scene& scene, std::uint32_t mesh_id) {
+    const scene::Mesh& mesh = scene.meshes[mesh_id];
     glm::mat4 world(1.0f);
-    for (const MeshInstance& inst : scene.instances)
+    for (const scene::MeshInstance& inst : scene.instances)
         if (inst.mesh_id == mesh_id) {
             world = inst.world;
             break;
@@ -28,12 +28,12 @@ std::vector<WorldVertex> world_vertices(const Scene& scene, std::uint32_t mesh_i
     const glm::mat3 linear(world), normal_matrix = glm::transpose(glm::inverse(linear));
     glm::mat3 uv_matrix(1.0f);
     if (mesh.material_id < scene.materials.size()) {
-        const TextureTransform& t = scene.materials[mesh.material_id].base_color.transform;
+        const scene::TextureTransform& t = scene.materials[mesh.material_id].base_color.transform;
         if (t.present) uv_matrix = t.matrix();
     }
     std::vector<WorldVertex> out;
     out.reserve(mesh.vertices.size());
-    for (const Vertex& v : mesh.vertices) {
+    for (const scene::Vertex& v : mesh.vertices) {
         const glm::vec3 n = normal_matrix * v.normal, t = linear * glm::vec3(v.tangent);
         out.push_back({glm::vec3(world * glm::vec4(v.position, 1.0f)),
                        glm::length(n) > 0.0f ? glm::normalize(n) : n, glm::vec4(t, v.tangent.w),
@@ -110,7 +110,7 @@ struct Sums {
 };
 
 double angle(glm::vec3 a, glm::vec3 b) {
-    const double d = tangent_angle_degrees(glm::vec4(a, 0.0f), glm::vec4(b, 0.0f));
+    const double d = scene::tangent_angle_degrees(glm::vec4(a, 0.0f), glm::vec4(b, 0.0f));
     return std::isfinite(d) ? d : 180.0;
 }
 
@@ -136,13 +136,13 @@ void one_way(const std::vector<WorldVertex>& from, const std::vector<WorldVertex
     }
 }
 
-bool has_tangents(const Mesh& m) {
-    return m.provenance_of(VertexAttribute::Tangent) != Provenance::Defaulted;
+bool has_tangents(const scene::Mesh& m) {
+    return m.provenance_of(scene::VertexAttribute::Tangent) != scene::Provenance::Defaulted;
 }
 
 } // namespace
 
-std::vector<PrimitiveDiff> compare_primitives(const Scene& a, const Scene& b) {
+std::vector<PrimitiveDiff> compare_primitives(const scene::Scene& a, const scene::Scene& b) {
     std::vector<PrimitiveDiff> out;
     for (std::size_t g = 0; g < a.mesh_primitives.size(); ++g)
         for (std::size_t p = 0; p < a.mesh_primitives[g].size(); ++p) {
@@ -157,7 +157,7 @@ std::vector<PrimitiveDiff> compare_primitives(const Scene& a, const Scene& b) {
                 out.push_back(std::move(d));
                 continue;
             }
-            const Mesh &ma = a.meshes[std::size_t(ia)], &mb = b.meshes[std::size_t(ib)];
+            const scene::Mesh &ma = a.meshes[std::size_t(ia)], &mb = b.meshes[std::size_t(ib)];
             d.vertices_a = ma.source_vertex_count, d.vertices_b = mb.source_vertex_count;
             d.indices_a = ma.indices.size(), d.indices_b = mb.indices.size();
             if (ma.vertices.empty() || mb.vertices.empty()) {

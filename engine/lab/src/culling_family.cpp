@@ -17,7 +17,8 @@
 namespace sherpa::lab {
 namespace {
 
-constexpr CullMethod kCpuMethods[] = {CullMethod::Sphere, CullMethod::PVertex, CullMethod::Exact};
+constexpr scene::CullMethod kCpuMethods[] = {scene::CullMethod::Sphere, scene::CullMethod::PVertex,
+                                             scene::CullMethod::Exact};
 
 // Counts of one method over the path, against the exact test's visible flags.
 struct Tally {
@@ -68,45 +69,45 @@ public:
                 {"exact", "", "separating axes, box against frustum (CPU; the reference)", ""},
                 {"gpu", "test=pvertex", "shaders/cull.comp, p-vertex (Vulkan device)", ""}};
     }
-    FamilyReport run(const Scene& scene, const RunControl& control) const override;
+    FamilyReport run(const scene::Scene& scene, const RunControl& control) const override;
 
 private:
-    MethodResult run_gpu(const Scene& scene, const std::vector<Frustum>& frusta,
+    MethodResult run_gpu(const scene::Scene& scene, const std::vector<scene::Frustum>& frusta,
                          const std::vector<std::vector<std::uint8_t>>& exact,
                          detail::Progress& progress) const;
     CullFamilyOptions options_;
 };
 
-FamilyReport CullFamily::run(const Scene& scene, const RunControl& control) const {
+FamilyReport CullFamily::run(const scene::Scene& scene, const RunControl& control) const {
     FamilyReport report;
     report.family = "culling";
     report.reference = "the exact test (separating axes)";
     report.time_unit = "ns/object";
     report.chart_error = "false_positives";
-    const std::vector<CameraSpec> path =
+    const std::vector<scene::CameraSpec> path =
         options_.path.empty() ? camera_path(scene.bounds, options_.path_length) : options_.path;
-    std::vector<Frustum> frusta;
-    for (const CameraSpec& c : path)
-        frusta.push_back(frustum_from_view_projection(c.view_projection()));
+    std::vector<scene::Frustum> frusta;
+    for (const scene::CameraSpec& c : path)
+        frusta.push_back(scene::frustum_from_view_projection(c.view_projection()));
     report.notes.push_back(std::to_string(path.size()) + " cameras, " +
                            std::to_string(scene.instances.size()) + " objects");
     detail::Progress progress(control, frusta.size() * (std::size(kCpuMethods) + 1));
-    const BoxesSoA boxes = instance_boxes(scene);
+    const scene::BoxesSoA boxes = scene::instance_boxes(scene);
     const core::SimdLevel simd = core::best_simd_level();
     std::vector<std::vector<std::uint8_t>> exact(frusta.size());
     for (std::size_t c = 0; c < frusta.size(); ++c) {
         exact[c].resize(boxes.size());
-        cull_boxes(frusta[c], boxes, CullMethod::Exact, simd, exact[c]);
+        scene::cull_boxes(frusta[c], boxes, scene::CullMethod::Exact, simd, exact[c]);
     }
     std::vector<std::uint8_t> visible(boxes.size());
-    for (CullMethod method : kCpuMethods) {
+    for (scene::CullMethod method : kCpuMethods) {
         Tally tally;
         for (std::size_t c = 0; c < frusta.size(); ++c) {
             if (progress.stop()) return detail::cancelled_report(report.family);
             double best = 1e300;
             for (int r = 0; r < std::max(1, options_.repeat); ++r) {
                 const double t0 = detail::thread_cpu_ms();
-                cull_boxes(frusta[c], boxes, method, simd, visible);
+                scene::cull_boxes(frusta[c], boxes, method, simd, visible);
                 best = std::min(best, detail::thread_cpu_ms() - t0);
             }
             tally.ms += best;
@@ -123,7 +124,8 @@ FamilyReport CullFamily::run(const Scene& scene, const RunControl& control) cons
     return report;
 }
 
-MethodResult CullFamily::run_gpu(const Scene& scene, const std::vector<Frustum>& frusta,
+MethodResult CullFamily::run_gpu(const scene::Scene& scene,
+                                 const std::vector<scene::Frustum>& frusta,
                                  const std::vector<std::vector<std::uint8_t>>& exact,
                                  detail::Progress& progress) const {
     MethodResult out;
@@ -143,14 +145,14 @@ MethodResult CullFamily::run_gpu(const Scene& scene, const std::vector<Frustum>&
         gpu::ResourceManager resources(context);
         render::GpuCullChecker check(context, resources, scene);
         // The first dispatch compiles the pipeline on lavapipe: keep it out of the timing.
-        check.compare(frusta.front(), CullMethod::PVertex, {});
+        check.compare(frusta.front(), scene::CullMethod::PVertex, {});
         Tally tally;
         bool timed = true;
         std::vector<std::uint8_t> visible(scene.instances.size());
         for (std::size_t c = 0; c < frusta.size(); ++c) {
             if (progress.stop()) return out;
             const render::GpuCullComparison r =
-                check.compare(frusta[c], CullMethod::PVertex, exact[c]);
+                check.compare(frusta[c], scene::CullMethod::PVertex, exact[c]);
             std::fill(visible.begin(), visible.end(), 0);
             for (std::uint32_t i : r.visible) visible[i] = 1;
             timed &= r.gpu_ms >= 0.0;
@@ -170,24 +172,24 @@ MethodResult CullFamily::run_gpu(const Scene& scene, const std::vector<Frustum>&
 
 } // namespace
 
-std::vector<CameraSpec> camera_path(const core::Aabb& bounds, std::uint32_t count) {
+std::vector<scene::CameraSpec> camera_path(const core::Aabb& bounds, std::uint32_t count) {
     const core::Aabb box =
         bounds.valid() ? bounds : core::Aabb::from_min_max(glm::vec3(-1), glm::vec3(1));
     const glm::vec3 centre = box.center();
     const float radius = std::max(0.5f * glm::length(box.extent()), 1e-6f);
-    std::vector<CameraSpec> path;
+    std::vector<scene::CameraSpec> path;
     const std::uint32_t outside = (count + 1) / 2, inside = count - outside;
-    const float elevation = glm::radians(kFramingElevationDegrees);
+    const float elevation = glm::radians(scene::kFramingElevationDegrees);
     for (std::uint32_t i = 0; i < outside; ++i) {
         const float az = 2.0f * glm::pi<float>() * float(i) / float(outside);
         const glm::vec3 dir(std::cos(elevation) * std::sin(az), std::sin(elevation),
                             std::cos(elevation) * std::cos(az));
-        path.push_back(frame_box_along(box, dir, FramingOptions{}));
+        path.push_back(scene::frame_box_along(box, dir, scene::FramingOptions{}));
     }
     for (std::uint32_t i = 0; i < inside; ++i) {
         const float az = 2.0f * glm::pi<float>() * (float(i) + 0.5f) / float(inside);
         const glm::vec3 out(std::sin(az), 0.0f, std::cos(az));
-        CameraSpec c;
+        scene::CameraSpec c;
         c.eye = centre + 0.5f * radius * out;
         c.target = c.eye + radius * out;
         c.near_plane = radius * 1e-3f;

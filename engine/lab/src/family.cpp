@@ -11,8 +11,8 @@ const ErrorFigure* MethodResult::error(std::string_view name) const {
     return nullptr;
 }
 
-LoadOptions lab_load_options() {
-    LoadOptions options;
+scene::LoadOptions lab_load_options() {
+    scene::LoadOptions options;
     options.generate_tangents = false;
     return options;
 }
@@ -51,7 +51,7 @@ std::unique_ptr<Family> make_family(std::string_view name, const render::Lightin
 
 namespace detail {
 
-std::string describe_mesh(const Mesh& mesh) {
+std::string describe_mesh(const scene::Mesh& mesh) {
     std::string s = "mesh " + std::to_string(mesh.group_id) + " primitive " +
                     std::to_string(mesh.primitive_index);
     if (!mesh.name.empty()) s += " '" + mesh.name + "'";

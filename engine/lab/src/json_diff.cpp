@@ -39,7 +39,7 @@ void diff_leaves(const json& a, const json& b, const std::string& at, JsonChange
         for (const auto& [k, v] : a.items()) keys.insert(k);
         for (const auto& [k, v] : b.items()) keys.insert(k);
         for (const std::string& k : keys) {
-            const std::string p = at + "/" + json_pointer_token(k);
+            const std::string p = at + "/" + scene::json_pointer_token(k);
             if (!a.contains(k))
                 add(p + ": added " + short_text(b[k]));
             else if (!b.contains(k))
@@ -121,13 +121,15 @@ std::map<std::string, std::int64_t> accessor_uses(const json& doc) {
                 "/meshes/" + std::to_string(m) + "/primitives/" + std::to_string(p);
             if (prim.contains("attributes") && prim["attributes"].is_object())
                 for (const auto& [k, v] : prim["attributes"].items())
-                    add(at + "/attributes/" + json_pointer_token(k), v);
+                    add(at + "/attributes/" + scene::json_pointer_token(k), v);
             if (prim.contains("indices")) add(at + "/indices", prim["indices"]);
             const json& targets = array(prim, "targets");
             for (std::size_t t = 0; t < targets.size(); ++t)
                 if (targets[t].is_object())
                     for (const auto& [k, v] : targets[t].items())
-                        add(at + "/targets/" + std::to_string(t) + "/" + json_pointer_token(k), v);
+                        add(at + "/targets/" + std::to_string(t) + "/" +
+                                scene::json_pointer_token(k),
+                            v);
         }
     }
     const json& skins = array(doc, "skins");
@@ -288,7 +290,7 @@ JsonDiff json_diff(std::string_view json_a, std::string_view json_b) {
     for (const auto& [k, v] : a.items()) keys.insert(k);
     for (const auto& [k, v] : b.items()) keys.insert(k);
     for (const std::string& k : keys) {
-        const std::string at = "/" + json_pointer_token(k);
+        const std::string at = "/" + scene::json_pointer_token(k);
         static const json absent; // null: the property is not there
         const json& va = a.contains(k) ? a[k] : absent;
         const json& vb = b.contains(k) ? b[k] : absent;

@@ -33,7 +33,7 @@ inline double median(std::vector<double> v) {
 }
 
 // "mesh 0 primitive 1 'Helmet'" (the glTF mesh and primitive of an engine mesh).
-std::string describe_mesh(const Mesh& mesh);
+std::string describe_mesh(const scene::Mesh& mesh);
 
 // Counts units of work and reports them; stop() polls the cancel token.
 class Progress {

@@ -32,23 +32,25 @@ std::string fixed(double v, int digits) {
     return buf;
 }
 
-bool has_transmission(const Scene& scene) {
-    for (const MaterialInstance& m : scene.materials)
+bool has_transmission(const scene::Scene& scene) {
+    for (const scene::MaterialInstance& m : scene.materials)
         if (m.transmission && m.transmission->factor > 0.0f) return true;
     return false;
 }
 
 // The sun whose cascades the raster draws: the scene's first directional light, else
 // the default sun where the scene has no lights and it is on (frame_data.cpp's rule).
-bool has_shadowing_sun(const Scene& scene, const render::FrameRequest& view) {
-    for (const PlacedLight& pl : scene.placed_lights)
-        if (pl.light < scene.lights.size() && scene.lights[pl.light].type == LightType::Directional)
+bool has_shadowing_sun(const scene::Scene& scene, const render::FrameRequest& view) {
+    for (const scene::PlacedLight& pl : scene.placed_lights)
+        if (pl.light < scene.lights.size() &&
+            scene.lights[pl.light].type == scene::LightType::Directional)
             return true;
     return scene.placed_lights.empty() && view.sun;
 }
 
 // Why a group cannot be measured on this scene (empty: it can).
-std::string not_applicable(LightingGroup g, const Scene& scene, const LightingFamilyOptions& o) {
+std::string not_applicable(LightingGroup g, const scene::Scene& scene,
+                           const LightingFamilyOptions& o) {
     const bool environment = o.lighting.environment != nullptr;
     switch (g) {
     case LightingGroup::Irradiance:
@@ -72,9 +74,9 @@ std::string not_applicable(LightingGroup g, const Scene& scene, const LightingFa
     return "";
 }
 
-Scene without_transmission(const Scene& scene) {
-    Scene copy = scene;
-    for (MaterialInstance& m : copy.materials) m.transmission.reset();
+scene::Scene without_transmission(const scene::Scene& scene) {
+    scene::Scene copy = scene;
+    for (scene::MaterialInstance& m : copy.materials) m.transmission.reset();
     return copy;
 }
 
@@ -99,7 +101,7 @@ public:
         return out;
     }
 
-    FamilyReport run(const Scene& scene, const RunControl& control) const override;
+    FamilyReport run(const scene::Scene& scene, const RunControl& control) const override;
 
 private:
     struct Frame {
@@ -118,7 +120,7 @@ private:
         int transmission = -1;
     };
 
-    render::FrameRequest view_settings(const CameraSpec& camera) const {
+    render::FrameRequest view_settings(const scene::CameraSpec& camera) const {
         render::FrameRequest s;
         render::copy_lighting(options_.lighting.settings, s);
         s.width = options_.width;
@@ -128,18 +130,19 @@ private:
         return s;
     }
 
-    Frame draw(gpu::Context& context, Raster& raster, const Scene& scene, const Scene& stripped,
-               const LightingSetup& setup, const render::FrameRequest& view) const;
-    void reference(gpu::Context& context, const Scene& scene, const render::FrameRequest& view,
-                   const std::vector<std::int32_t>& ids, FamilyReport& report,
-                   const std::vector<LightingMethod>& plan, detail::Progress& progress,
-                   std::vector<std::uint8_t>& rgba) const;
+    Frame draw(gpu::Context& context, Raster& raster, const scene::Scene& scene,
+               const scene::Scene& stripped, const LightingSetup& setup,
+               const render::FrameRequest& view) const;
+    void reference(gpu::Context& context, const scene::Scene& scene,
+                   const render::FrameRequest& view, const std::vector<std::int32_t>& ids,
+                   FamilyReport& report, const std::vector<LightingMethod>& plan,
+                   detail::Progress& progress, std::vector<std::uint8_t>& rgba) const;
 
     LightingFamilyOptions options_;
 };
 
 LightingFamily::Frame LightingFamily::draw(gpu::Context& context, Raster& raster,
-                                           const Scene& scene, const Scene& stripped,
+                                           const scene::Scene& scene, const scene::Scene& stripped,
                                            const LightingSetup& setup,
                                            const render::FrameRequest& view) const {
     Frame f;
@@ -189,7 +192,7 @@ LightingFamily::Frame LightingFamily::draw(gpu::Context& context, Raster& raster
     return f;
 }
 
-void LightingFamily::reference(gpu::Context& context, const Scene& scene,
+void LightingFamily::reference(gpu::Context& context, const scene::Scene& scene,
                                const render::FrameRequest& view,
                                const std::vector<std::int32_t>& ids, FamilyReport& report,
                                const std::vector<LightingMethod>& plan, detail::Progress& progress,
@@ -266,7 +269,7 @@ void LightingFamily::reference(gpu::Context& context, const Scene& scene,
                 (series.empty() ? "" : ", noise floor " + fixed(d.material_mean[m] * scale, 2)));
 }
 
-FamilyReport LightingFamily::run(const Scene& scene, const RunControl& control) const {
+FamilyReport LightingFamily::run(const scene::Scene& scene, const RunControl& control) const {
     FamilyReport report;
     report.family = std::string(name());
     report.reference = "the path tracer's converged image (render --renderer rt --view lit)";
@@ -297,9 +300,9 @@ FamilyReport LightingFamily::run(const Scene& scene, const RunControl& control) 
     detail::Progress progress(control, launches + plan.size());
     if (progress.stop()) return detail::cancelled_report(report.family);
 
-    FramingOptions framing;
+    scene::FramingOptions framing;
     framing.aspect = float(options_.width) / float(std::max(options_.height, 1u));
-    CameraSpec camera = frame_scene(scene, nullptr, framing);
+    scene::CameraSpec camera = scene::frame_scene(scene, nullptr, framing);
     camera.aspect = framing.aspect;
     const render::FrameRequest view = view_settings(camera);
     report.notes.push_back(std::to_string(options_.width) + "x" + std::to_string(options_.height) +
@@ -319,7 +322,8 @@ FamilyReport LightingFamily::run(const Scene& scene, const RunControl& control) 
         std::vector<std::uint8_t> truth;
         reference(context, scene, view, ids, report, plan, progress, truth);
         if (progress.stop()) return detail::cancelled_report(report.family);
-        const Scene stripped = has_transmission(scene) ? without_transmission(scene) : Scene{};
+        const scene::Scene stripped =
+            has_transmission(scene) ? without_transmission(scene) : scene::Scene{};
         Raster raster;
         std::map<std::string, std::size_t> drawn; // setup key -> method measured with it
         // Setups of one shadow resolution together (each resolution is one renderer), and

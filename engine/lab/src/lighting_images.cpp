@@ -135,12 +135,12 @@ bool finite(glm::vec3 v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-std::vector<Triangle> world_triangles(const Scene& scene) {
+std::vector<Triangle> world_triangles(const scene::Scene& scene) {
     std::vector<Triangle> out;
-    for (const MeshInstance& inst : scene.instances) {
+    for (const scene::MeshInstance& inst : scene.instances) {
         if (inst.mesh_id >= scene.meshes.size()) continue;
-        const Mesh& mesh = scene.meshes[inst.mesh_id];
-        if (mesh.topology() != Topology::Triangles) continue;
+        const scene::Mesh& mesh = scene.meshes[inst.mesh_id];
+        if (mesh.topology() != scene::Topology::Triangles) continue;
         const std::int32_t material = std::int32_t(inst.material_id);
         for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
             Triangle t;
@@ -163,8 +163,9 @@ std::vector<Triangle> world_triangles(const Scene& scene) {
 
 } // namespace
 
-std::vector<std::int32_t> material_id_image(const Scene& scene, const CameraSpec& camera,
-                                            std::uint32_t width, std::uint32_t height) {
+std::vector<std::int32_t> material_id_image(const scene::Scene& scene,
+                                            const scene::CameraSpec& camera, std::uint32_t width,
+                                            std::uint32_t height) {
     std::vector<std::int32_t> ids(std::size_t(width) * height, -1);
     const Bvh bvh(world_triangles(scene));
     const glm::vec3 forward = glm::normalize(camera.target - camera.eye);

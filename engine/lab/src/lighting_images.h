@@ -15,8 +15,9 @@ namespace sherpa::lab::detail {
 // (perspective, its aspect) through a bounding volume hierarchy of the displayed
 // scene's triangles in world space (bind pose; alpha not tested: a masked hole counts
 // as its surface). Lines and points are left out.
-std::vector<std::int32_t> material_id_image(const Scene& scene, const CameraSpec& camera,
-                                            std::uint32_t width, std::uint32_t height);
+std::vector<std::int32_t> material_id_image(const scene::Scene& scene,
+                                            const scene::CameraSpec& camera, std::uint32_t width,
+                                            std::uint32_t height);
 
 // `rgba` (sRGB-encoded RGBA8, (width * factor) x (height * factor)) averaged over
 // factor x factor boxes in linear values and encoded again: width x height.

@@ -18,10 +18,10 @@ enum class LightingGroup { Irradiance, Prefilter, Compensation, Shadows, Transmi
 struct LightingSetup {
     LightingGroup group = LightingGroup::Irradiance;
     render::EnvironmentOptions environment;
-    std::uint32_t shadow_resolution = kDefaultShadowResolution;
+    std::uint32_t shadow_resolution = scene::kDefaultShadowResolution;
     bool shadows = true;
-    std::uint32_t cascades = kDefaultShadowCascades, taps = 0; // 0: the device's default
-    int compensation = -1;                                     // -1: the view's; 0 off; 1 on
+    std::uint32_t cascades = scene::kDefaultShadowCascades, taps = 0; // 0: the device's default
+    int compensation = -1;                                            // -1: the view's; 0 off; 1 on
     bool transmission = true; // false: KHR_materials_transmission dropped from the scene
     std::uint32_t spp = 0;    // the path tracer's samples (group PathTracer)
     // Everything that changes the raster frame: equal keys draw the same frame.

@@ -60,7 +60,7 @@ MethodInfo method_info(const QuantizationPreset& p) {
 }
 
 struct Input {
-    const Mesh* mesh = nullptr;
+    const scene::Mesh* mesh = nullptr;
     glm::mat4 world{1.0f};
     detail::MeshStreams streams;
     // The base colour texture's size in texels (0: none or unreadable), the uv set it
@@ -156,18 +156,20 @@ void measure(const Input& in, const detail::EncodedMesh& e, Tally& t) {
     t.vertex_bytes += e.vertex_bytes, t.index_bytes += e.index_bytes;
 }
 
-detail::MeshStreams streams_of(const Mesh& m) {
+detail::MeshStreams streams_of(const scene::Mesh& m) {
     detail::MeshStreams s;
-    auto has = [&](VertexAttribute a) { return m.provenance_of(a) != Provenance::Defaulted; };
-    for (const Vertex& v : m.vertices) {
+    auto has = [&](scene::VertexAttribute a) {
+        return m.provenance_of(a) != scene::Provenance::Defaulted;
+    };
+    for (const scene::Vertex& v : m.vertices) {
         s.position.push_back(v.position);
-        if (has(VertexAttribute::Normal)) s.normal.push_back(v.normal);
-        if (has(VertexAttribute::Tangent)) s.tangent.push_back(v.tangent);
-        if (has(VertexAttribute::TexCoord0)) s.uv0.push_back(v.uv0);
-        if (has(VertexAttribute::TexCoord1)) s.uv1.push_back(v.uv1);
+        if (has(scene::VertexAttribute::Normal)) s.normal.push_back(v.normal);
+        if (has(scene::VertexAttribute::Tangent)) s.tangent.push_back(v.tangent);
+        if (has(scene::VertexAttribute::TexCoord0)) s.uv0.push_back(v.uv0);
+        if (has(scene::VertexAttribute::TexCoord1)) s.uv1.push_back(v.uv1);
     }
     s.indices = m.indices;
-    s.triangles = m.topology() == Topology::Triangles;
+    s.triangles = m.topology() == scene::Topology::Triangles;
     return s;
 }
 
@@ -175,29 +177,29 @@ detail::MeshStreams streams_of(const Mesh& m) {
 // where the header cannot be read, as for KTX2 here: no texel figure there).
 class ImageSizes {
 public:
-    explicit ImageSizes(const Scene& scene) : scene_(scene) {}
+    explicit ImageSizes(const scene::Scene& scene) : scene_(scene) {}
     glm::dvec2 of(std::int32_t image) {
         if (image < 0 || std::size_t(image) >= scene_.images.size()) return glm::dvec2(0.0);
         const auto [it, fresh] = sizes_.try_emplace(image, 0.0);
         if (!fresh) return it->second;
-        const ImageRecord& img = scene_.images[std::size_t(image)];
+        const scene::ImageRecord& img = scene_.images[std::size_t(image)];
         std::uint32_t w = img.width, h = img.height;
         std::string error;
         if ((w == 0 || h == 0) && !img.encoded.empty() &&
             !tex::probe_encoded_image(img.encoded, tex::image_decoder_hint(img), error, &w, &h))
-            unreadable.push_back(image_location(scene_, image));
+            unreadable.push_back(scene::image_location(scene_, image));
         return it->second = glm::dvec2(w, h);
     }
     std::vector<std::string> unreadable;
 
 private:
-    const Scene& scene_;
+    const scene::Scene& scene_;
     std::map<std::int32_t, glm::dvec2> sizes_;
 };
 
-void set_texture(const Scene& scene, ImageSizes& sizes, Input& in) {
+void set_texture(const scene::Scene& scene, ImageSizes& sizes, Input& in) {
     if (in.mesh->material_id >= scene.materials.size()) return;
-    const TextureSlot& base = scene.materials[in.mesh->material_id].base_color;
+    const scene::TextureSlot& base = scene.materials[in.mesh->material_id].base_color;
     if (!base.present() || std::size_t(base.texture) >= scene.textures.size() || base.tex_coord > 1)
         return;
     in.texels = sizes.of(scene.textures[std::size_t(base.texture)].image);
@@ -207,18 +209,18 @@ void set_texture(const Scene& scene, ImageSizes& sizes, Input& in) {
 
 // The primitives to measure (under their first instance's transform); what cannot be
 // measured at all goes to `failures` for every method.
-std::vector<Input> inputs_of(const Scene& scene, std::vector<Failure>& failures,
+std::vector<Input> inputs_of(const scene::Scene& scene, std::vector<Failure>& failures,
                              ImageSizes& sizes) {
     std::vector<Input> out;
     // Each mesh's first instance, in one pass over the instances (not one per mesh).
-    std::vector<const MeshInstance*> first(scene.meshes.size(), nullptr);
-    for (const MeshInstance& inst : scene.instances)
+    std::vector<const scene::MeshInstance*> first(scene.meshes.size(), nullptr);
+    for (const scene::MeshInstance& inst : scene.instances)
         if (inst.mesh_id < first.size() && !first[inst.mesh_id]) first[inst.mesh_id] = &inst;
     for (std::uint32_t id = 0; id < scene.meshes.size(); ++id) {
-        const Mesh& m = scene.meshes[id];
+        const scene::Mesh& m = scene.meshes[id];
         if (m.vertices.empty()) continue;
         std::uint64_t bad = 0;
-        for (const Vertex& v : m.vertices) bad += !finite(v.position);
+        for (const scene::Vertex& v : m.vertices) bad += !finite(v.position);
         if (bad == m.vertices.size()) {
             failures.push_back({"no finite POSITION", detail::describe_mesh(m), bad});
             continue;
@@ -282,13 +284,14 @@ public:
         for (const QuantizationPreset& p : kMethods) out.push_back(method_info(p));
         return out;
     }
-    FamilyReport run(const Scene& scene, const RunControl& control) const override;
+    FamilyReport run(const scene::Scene& scene, const RunControl& control) const override;
 
 private:
     MeshCompressionFamilyOptions options_;
 };
 
-FamilyReport MeshCompressionFamily::run(const Scene& scene, const RunControl& control) const {
+FamilyReport MeshCompressionFamily::run(const scene::Scene& scene,
+                                        const RunControl& control) const {
     FamilyReport report;
     report.family = "mesh-compression";
     report.reference = "the file's float geometry (positions in world space)";
@@ -317,7 +320,7 @@ FamilyReport MeshCompressionFamily::run(const Scene& scene, const RunControl& co
             progress.step();
         }
     const bool any_vertices = std::any_of(scene.meshes.begin(), scene.meshes.end(),
-                                          [](const Mesh& m) { return !m.vertices.empty(); });
+                                          [](const scene::Mesh& m) { return !m.vertices.empty(); });
     const std::string why =
         any_vertices ? "no primitive with finite positions" : "no mesh primitive with vertices";
     for (std::size_t k = 0; k < infos.size(); ++k) {

@@ -102,7 +102,7 @@ void draw_legend(tex::RgbaImage& image, const DifferenceImage& d, std::uint32_t 
 
 } // namespace
 
-DifferenceImage render_difference(const Scene& a, const Scene& b,
+DifferenceImage render_difference(const scene::Scene& a, const scene::Scene& b,
                                   const DifferenceOptions& options) {
     DifferenceImage out;
     out.threshold = options.threshold;
@@ -120,9 +120,10 @@ DifferenceImage render_difference(const Scene& a, const Scene& b,
         renderer_b.set_environment(options.lighting.environment.get());
         settings.width = w, settings.height = h;
         settings.shadows = false;
-        FramingOptions framing;
+        scene::FramingOptions framing;
         framing.aspect = float(w) / float(h);
-        CameraSpec camera = options.camera ? *options.camera : frame_scene(a, nullptr, framing);
+        scene::CameraSpec camera =
+            options.camera ? *options.camera : scene::frame_scene(a, nullptr, framing);
         camera.aspect = framing.aspect;
         settings.camera = render::explicit_camera(camera);
         renderer_a.load(a);

@@ -27,18 +27,18 @@ constexpr const char* kReference =
 // ones at 40% of it, close up. Framed cameras see the whole scene in every depth slice
 // of the cascade fit, so each cascade is the scene's own sphere (shadow_cascades.cpp:
 // never wider than the scene) and more cascades change nothing; close ones split it.
-std::vector<CameraSpec> orbit(const core::Aabb& bounds, std::uint32_t count, float aspect) {
+std::vector<scene::CameraSpec> orbit(const core::Aabb& bounds, std::uint32_t count, float aspect) {
     const core::Aabb box =
         bounds.valid() ? bounds : core::Aabb::from_min_max(glm::vec3(-1), glm::vec3(1));
-    FramingOptions framing;
+    scene::FramingOptions framing;
     framing.aspect = aspect;
-    std::vector<CameraSpec> out;
+    std::vector<scene::CameraSpec> out;
     const float elevation = glm::radians(20.0f);
     for (std::uint32_t i = 0; i < count; ++i) {
         const float az = 0.6f + 2.0f * glm::pi<float>() * float(i) / float(std::max(count, 1u));
         const glm::vec3 dir(std::cos(elevation) * std::sin(az), std::sin(elevation),
                             std::cos(elevation) * std::cos(az));
-        CameraSpec c = frame_box_along(box, dir, framing);
+        scene::CameraSpec c = scene::frame_box_along(box, dir, framing);
         if (i % 2 == 1) {
             c.eye = c.target + 0.4f * (c.eye - c.target);
             c.near_plane *= 0.4f;
@@ -88,7 +88,7 @@ public:
         return out;
     }
 
-    FamilyReport run(const Scene& scene, const RunControl& control) const override {
+    FamilyReport run(const scene::Scene& scene, const RunControl& control) const override {
         FamilyReport report;
         report.family = std::string(name());
         report.reference = kReference;
@@ -100,7 +100,8 @@ public:
             report.methods.push_back(std::move(r));
         }
         const float aspect = float(options_.width) / float(std::max(options_.height, 1u));
-        const std::vector<CameraSpec> cameras = orbit(scene.bounds, options_.cameras, aspect);
+        const std::vector<scene::CameraSpec> cameras =
+            orbit(scene.bounds, options_.cameras, aspect);
         report.notes.push_back(
             std::to_string(cameras.size()) + " cameras (framed and close up, alternately) at " +
             std::to_string(options_.width) + "x" + std::to_string(options_.height) +
@@ -135,8 +136,8 @@ public:
 private:
     // The methods of one map resolution (one renderer: the resolution is fixed at
     // its creation), from report.methods[first]. False when cancelled.
-    bool run_resolution(gpu::Context& context, const Scene& scene,
-                        const std::vector<CameraSpec>& cameras, std::uint32_t resolution,
+    bool run_resolution(gpu::Context& context, const scene::Scene& scene,
+                        const std::vector<scene::CameraSpec>& cameras, std::uint32_t resolution,
                         std::size_t first, FamilyReport& report, detail::Progress& progress) const {
         render::RendererOptions ro;
         ro.ray_tracing = true;
@@ -160,7 +161,7 @@ private:
         return true;
     }
 
-    void measure(gpu::Context& context, render::Renderer& renderer, const CameraSpec& camera,
+    void measure(gpu::Context& context, render::Renderer& renderer, const scene::CameraSpec& camera,
                  std::size_t index, std::uint32_t cascades, std::uint32_t taps,
                  Tally& tally) const {
         const std::size_t seen = context.validation().count();

@@ -43,7 +43,7 @@ tex::RgbaImage sample_mosaic(tex::RgbaImage image, std::uint64_t texels) {
 }
 
 struct Input {
-    TextureRole role = kRoleColor;
+    scene::TextureRole role = scene::kRoleColor;
     std::string where;
     tex::RgbaImage image; // sampled
     std::uint64_t source_texels = 0;
@@ -63,8 +63,8 @@ std::vector<Method> all_methods() {
     return m;
 }
 
-bool applies(const Method& m, TextureRole role) {
-    return (m.format == tex::BlockFormat::Bc5) == (role == kRoleNormal);
+bool applies(const Method& m, scene::TextureRole role) {
+    return (m.format == tex::BlockFormat::Bc5) == (role == scene::kRoleNormal);
 }
 
 class TextureFamily final : public Family {
@@ -81,13 +81,13 @@ public:
                            m.format == tex::BlockFormat::Bc7 ? "bc7" : "bc5"});
         return out;
     }
-    FamilyReport run(const Scene& scene, const RunControl& control) const override;
+    FamilyReport run(const scene::Scene& scene, const RunControl& control) const override;
 
 private:
     TextureFamilyOptions options_;
 };
 
-FamilyReport TextureFamily::run(const Scene& scene, const RunControl& control) const {
+FamilyReport TextureFamily::run(const scene::Scene& scene, const RunControl& control) const {
     FamilyReport report;
     report.family = "textures";
     report.reference = "the decoded source images";
@@ -101,18 +101,19 @@ FamilyReport TextureFamily::run(const Scene& scene, const RunControl& control) c
     detail::Progress progress(control, units);
     if (progress.stop()) return detail::cancelled_report(report.family);
     std::vector<Input> inputs;
-    std::vector<std::pair<TextureRole, Failure>> failures; // by the role the image has
+    std::vector<std::pair<scene::TextureRole, Failure>> failures; // by the role the image has
     bool sampled = false;
     for (const tex::TextureUse& use : uses) {
         if (progress.stop()) return detail::cancelled_report(report.family);
-        const ImageRecord& img = scene.images[std::size_t(use.image)];
+        const scene::ImageRecord& img = scene.images[std::size_t(use.image)];
         Input in;
         in.role = use.role;
-        in.where = "image " + std::to_string(use.image) + " " + image_location(scene, use.image) +
-                   " (" + std::string(tex::role_name(use.role)) + ")";
+        in.where = "image " + std::to_string(use.image) + " " +
+                   scene::image_location(scene, use.image) + " (" +
+                   std::string(tex::role_name(use.role)) + ")";
         std::string error;
         tex::RgbaImage decoded;
-        if (image_is_missing(img))
+        if (scene::image_is_missing(img))
             failures.push_back({use.role, {"missing", in.where, 1}});
         else if (!tex::decode_image_source(img, decoded, error) || decoded.empty())
             failures.push_back({use.role, {"undecodable: " + error, in.where, 1}});
@@ -145,13 +146,13 @@ FamilyReport TextureFamily::run(const Scene& scene, const RunControl& control) c
                                                   {method.level, simd}, options_.threads);
             r.total_ms += detail::process_cpu_ms() - t0;
             const auto decoded = tex::decode_image(method.format, blocks, im.width, im.height);
-            const unsigned channels = in.role == kRoleNormal ? tex::kChannelsRg
-                                      : im.has_alpha()       ? tex::kChannelsRgba
-                                                             : tex::kChannelsRgb;
+            const unsigned channels = in.role == scene::kRoleNormal ? tex::kChannelsRg
+                                      : im.has_alpha()              ? tex::kChannelsRgba
+                                                                    : tex::kChannelsRgb;
             const tex::SquaredError err = tex::squared_error(im.pixels, decoded, channels);
             pooled += err;
             worst_psnr = std::min(worst_psnr, err.psnr());
-            if (in.role == kRoleNormal)
+            if (in.role == scene::kRoleNormal)
                 angle_sum += tex::normal_angle_error_vs_rgb(im.pixels, decoded).mean();
             mpix += double(im.width) * im.height / 1e6;
             ++count;

@@ -85,7 +85,8 @@ std::uint64_t AccelerationStats::total_bytes() const {
 }
 
 SceneAccelerationStructures::SceneAccelerationStructures(gpu::ResourceManager& resources,
-                                                         const Scene& scene, const GpuScene& gpu,
+                                                         const scene::Scene& scene,
+                                                         const GpuScene& gpu,
                                                          const AccelerationSettings& settings)
     : resources_(resources), fn_(gpu::RayTracingFunctions::load(resources.context())) {
     const auto start = std::chrono::steady_clock::now();

@@ -33,10 +33,10 @@ BlasInput describe_blas(const BlasPlan& plan, const GpuScene& gpu,
         t = gpu::vk_init<VkAccelerationStructureGeometryTrianglesDataKHR>(
             VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR);
         t.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
-        t.vertexData.deviceAddress = k < positions.size()
-                                         ? positions[k]
-                                         : mesh.stream[std::size_t(VertexAttribute::Position)];
-        t.vertexStride = stream_stride(VertexAttribute::Position);
+        t.vertexData.deviceAddress =
+            k < positions.size() ? positions[k]
+                                 : mesh.stream[std::size_t(scene::VertexAttribute::Position)];
+        t.vertexStride = stream_stride(scene::VertexAttribute::Position);
         t.maxVertex = mesh.vertex_count - 1;
         t.indexType = VK_INDEX_TYPE_UINT32;
         t.indexData.deviceAddress =
@@ -57,7 +57,7 @@ BlasInput describe_blas(const BlasPlan& plan, const GpuScene& gpu,
     return in;
 }
 
-void SceneAccelerationStructures::build_blas(const Scene& scene, const GpuScene& gpu,
+void SceneAccelerationStructures::build_blas(const scene::Scene& scene, const GpuScene& gpu,
                                              const AccelerationSettings& settings) {
     const std::vector<BlasPlan> plans = plan_blas(scene, gpu.meshes());
     const gpu::Context& context = resources_.context();
@@ -77,7 +77,8 @@ void SceneAccelerationStructures::build_blas(const Scene& scene, const GpuScene&
         for (const BlasGeometryPlan& g : plan.geometries) {
             const GpuMesh& mesh = gpu.meshes()[g.mesh];
             GPUGeometryInfo r{};
-            for (std::size_t a = 0; a < kVertexAttributeCount; ++a) r.stream[a] = mesh.stream[a];
+            for (std::size_t a = 0; a < scene::kVertexAttributeCount; ++a)
+                r.stream[a] = mesh.stream[a];
             r.indices =
                 gpu.index_address() + VkDeviceAddress(mesh.first_index) * sizeof(std::uint32_t);
             r.material = mesh.material;

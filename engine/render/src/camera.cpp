@@ -26,9 +26,9 @@ bool parse_camera_spec(std::string_view text, CameraSpec& spec, std::string& err
         return true;
     }
     // Explicit cameras: the one parser of the camera string (scene layer).
-    sherpa::CameraSpec parsed;
+    sherpa::scene::CameraSpec parsed;
     std::string parse_error;
-    if (!sherpa::parse_camera_spec(text, parsed, parse_error)) {
+    if (!sherpa::scene::parse_camera_spec(text, parsed, parse_error)) {
         error = "camera '" + std::string(text) + "': " + parse_error;
         return false;
     }
@@ -36,7 +36,7 @@ bool parse_camera_spec(std::string_view text, CameraSpec& spec, std::string& err
     return true;
 }
 
-CameraSpec explicit_camera(const sherpa::CameraSpec& camera) {
+CameraSpec explicit_camera(const sherpa::scene::CameraSpec& camera) {
     CameraSpec spec;
     spec.kind = CameraSpec::Kind::Explicit;
     spec.eye = camera.eye;
@@ -51,15 +51,15 @@ CameraSpec explicit_camera(const sherpa::CameraSpec& camera) {
 
 // One convention for the whole engine: the scene layer's (camera_spec.h).
 glm::mat4 reverse_z_perspective(float fov_y, float aspect, float n, float f) {
-    return perspective_reverse_z(fov_y, aspect, n, f);
+    return scene::perspective_reverse_z(fov_y, aspect, n, f);
 }
 
 glm::mat4 reverse_z_orthographic(float hw, float hh, float n, float f) {
-    return orthographic_reverse_z(hw, hh, n, f);
+    return scene::orthographic_reverse_z(hw, hh, n, f);
 }
 
-CascadeCamera cascade_camera(const CameraView& v) {
-    CascadeCamera c;
+scene::CascadeCamera cascade_camera(const CameraView& v) {
+    scene::CascadeCamera c;
     c.view = v.view;
     c.near_plane = v.near_plane;
     c.far_plane = v.far_plane;
@@ -74,8 +74,8 @@ CascadeCamera cascade_camera(const CameraView& v) {
 namespace {
 
 CameraView resolve(const CameraSpec& spec, const core::Aabb& bounds,
-                   const std::vector<Camera>& cameras,
-                   const std::vector<PlacedCamera>& placed_cameras, float viewport_aspect) {
+                   const std::vector<scene::Camera>& cameras,
+                   const std::vector<scene::PlacedCamera>& placed_cameras, float viewport_aspect) {
     CameraView v;
     v.aspect = spec.aspect > 0.0f ? spec.aspect : viewport_aspect;
     switch (spec.kind) {
@@ -92,8 +92,8 @@ CameraView resolve(const CameraSpec& spec, const core::Aabb& bounds,
             throw std::invalid_argument("camera gltf:" + std::to_string(spec.gltf_index) +
                                         ": the scene places " +
                                         std::to_string(placed_cameras.size()) + " camera(s)");
-        const PlacedCamera& pc = placed_cameras[spec.gltf_index];
-        const Camera& cam = cameras.at(pc.camera);
+        const scene::PlacedCamera& pc = placed_cameras[spec.gltf_index];
+        const scene::Camera& cam = cameras.at(pc.camera);
         // The node transform may scale; the view keeps only rotation and position.
         glm::mat4 world = pc.world;
         for (int c = 0; c < 3; ++c) world[c] = glm::vec4(glm::normalize(glm::vec3(world[c])), 0.0f);
@@ -102,7 +102,7 @@ CameraView resolve(const CameraSpec& spec, const core::Aabb& bounds,
         v.near_plane = cam.znear > 0.0f ? cam.znear : 0.05f;
         v.far_plane = cam.zfar;
         if (spec.aspect <= 0.0f && cam.aspect > 0.0f) v.aspect = cam.aspect;
-        if (cam.type == CameraType::Orthographic) {
+        if (cam.type == scene::CameraType::Orthographic) {
             v.orthographic = true;
             v.ortho_half_height = cam.ymag;
             v.ortho_half_width = cam.ymag * v.aspect; // keep the viewport undistorted
@@ -114,10 +114,10 @@ CameraView resolve(const CameraSpec& spec, const core::Aabb& bounds,
     }
     case CameraSpec::Kind::Auto: {
         // The one framing of the engine (scene layer), shared with the editor.
-        FramingOptions options;
+        scene::FramingOptions options;
         options.fov_y_degrees = spec.fov_degrees;
         options.aspect = v.aspect;
-        const sherpa::CameraSpec framed = frame_box(bounds, options);
+        const sherpa::scene::CameraSpec framed = scene::frame_box(bounds, options);
         v.position = framed.eye;
         v.view = framed.view();
         v.fov_y = glm::radians(framed.fov_y_degrees);
@@ -134,7 +134,8 @@ CameraView resolve(const CameraSpec& spec, const core::Aabb& bounds,
 
 } // namespace
 
-CameraView resolve_camera(const CameraSpec& spec, const Scene& scene, float viewport_aspect) {
+CameraView resolve_camera(const CameraSpec& spec, const scene::Scene& scene,
+                          float viewport_aspect) {
     return resolve(spec, scene.bounds, scene.cameras, scene.placed_cameras, viewport_aspect);
 }
 

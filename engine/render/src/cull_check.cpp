@@ -8,7 +8,7 @@
 namespace sherpa::render {
 
 GpuCullChecker::GpuCullChecker(gpu::Context& context, gpu::ResourceManager& resources,
-                               const Scene& scene)
+                               const scene::Scene& scene)
     : context_(context), resources_(resources), scene_(scene),
       pipeline_(std::make_shared<const GpuCullPipeline>(context)) {
     culler(false);
@@ -21,19 +21,19 @@ GpuCuller& GpuCullChecker::culler(bool casters) {
     if (c) return *c;
     c = std::make_unique<GpuCuller>(context_, resources_, 1, pipeline_);
     if (casters) {
-        c->build(build_mesh_passes(scene_).shadow, scene_);
+        c->build(scene::build_mesh_passes(scene_).shadow, scene_);
     } else {
         // The camera sees every instance.
-        MeshPass pass(MeshPassKind::Forward);
+        scene::MeshPass pass(scene::MeshPassKind::Forward);
         for (std::uint32_t i = 0; i < scene_.instances.size(); ++i)
-            pass.add(i, scene_.instances[i].mesh_id, instance_pipeline_key(scene_, i));
+            pass.add(i, scene_.instances[i].mesh_id, scene::instance_pipeline_key(scene_, i));
         pass.update();
         c->build(pass, scene_);
     }
     return *c;
 }
 
-GpuCullComparison GpuCullChecker::compare(const Frustum& frustum, CullMethod method,
+GpuCullComparison GpuCullChecker::compare(const scene::Frustum& frustum, scene::CullMethod method,
                                           std::span<const std::uint8_t> cpu_visible, bool casters) {
     GpuCuller& c = culler(casters);
     const GpuCullReadback r = c.run(frustum, method);
@@ -51,8 +51,9 @@ GpuCullComparison GpuCullChecker::compare(const Frustum& frustum, CullMethod met
     return out;
 }
 
-bool gpu_cull_passes(const Scene& scene, const std::vector<std::pair<std::string, Frustum>>& frusta,
-                     const std::vector<PassResult>& cpu, std::vector<PassResult>& out,
+bool gpu_cull_passes(const scene::Scene& scene,
+                     const std::vector<std::pair<std::string, scene::Frustum>>& frusta,
+                     const std::vector<scene::PassResult>& cpu, std::vector<scene::PassResult>& out,
                      std::string& error) {
     try {
         gpu::Context context;
@@ -60,18 +61,18 @@ bool gpu_cull_passes(const Scene& scene, const std::vector<std::pair<std::string
         GpuCullChecker check(context, resources, scene);
         // Lavapipe compiles the pipeline at its first dispatch (171 ms for the camera
         // pass of a 10k grid): one untimed run keeps that out of `gpu ms`.
-        if (!frusta.empty()) check.compare(frusta.front().second, CullMethod::PVertex, {});
+        if (!frusta.empty()) check.compare(frusta.front().second, scene::CullMethod::PVertex, {});
         for (std::size_t p = 0; p < frusta.size(); ++p) {
             // Objects the CPU path sees in this pass (casters only for cascades).
             std::vector<std::uint8_t> cpu_visible(scene.instances.size(), 0);
             for (std::uint32_t i : cpu[p].visible_opaque) cpu_visible[i] = 1;
             for (std::uint32_t i : cpu[p].visible_transparent) cpu_visible[i] = 1;
             const GpuCullComparison r =
-                check.compare(frusta[p].second, CullMethod::PVertex, cpu_visible, p > 0);
-            PassResult res;
-            CullStats& st = res.stats;
+                check.compare(frusta[p].second, scene::CullMethod::PVertex, cpu_visible, p > 0);
+            scene::PassResult res;
+            scene::CullStats& st = res.stats;
             st.pass = frusta[p].first;
-            st.method = CullMethod::PVertex;
+            st.method = scene::CullMethod::PVertex;
             st.gpu = true;
             st.gpu_ms = r.gpu_ms;
             st.total = r.objects; // casters only for cascades
@@ -80,7 +81,7 @@ bool gpu_cull_passes(const Scene& scene, const std::vector<std::pair<std::string
                 ++st.visible;
                 st.triangles += scene.meshes[scene.instances[inst].mesh_id].triangle_count();
                 if (scene.materials[scene.instances[inst].material_id].alpha_mode ==
-                    AlphaMode::Blend)
+                    scene::AlphaMode::Blend)
                     res.visible_transparent.push_back(inst);
                 else
                     res.visible_opaque.push_back(inst);

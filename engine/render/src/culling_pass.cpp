@@ -26,14 +26,14 @@ namespace sherpa::render {
 
 namespace {
 
-bool box_visible(const Frustum& f, const core::Aabb& box, CullMethod m) {
+bool box_visible(const scene::Frustum& f, const core::Aabb& box, scene::CullMethod m) {
     switch (m) {
-    case CullMethod::Sphere:
-        return sphere_visible(f, box);
-    case CullMethod::PVertex:
-        return pvertex_visible(f, box);
+    case scene::CullMethod::Sphere:
+        return scene::sphere_visible(f, box);
+    case scene::CullMethod::PVertex:
+        return scene::pvertex_visible(f, box);
     default:
-        return exact_visible(f, box);
+        return scene::exact_visible(f, box);
     }
 }
 
@@ -82,7 +82,7 @@ void CullingPass::build(const GpuScene& scene) {
     culling_->blended.assign(bounds.size(), 0);
     culling_->casters = static_cast<std::uint32_t>(bounds.size());
     for (const DrawGroup& g : scene.groups())
-        if (g.alpha == AlphaMode::Blend) {
+        if (g.alpha == scene::AlphaMode::Blend) {
             std::fill_n(culling_->blended.begin() + g.first_instance, g.instance_count, 1);
             culling_->casters -= g.instance_count;
         }
@@ -132,7 +132,7 @@ void CullingPass::build_gpu(const GpuScene& scene) {
     std::vector<std::uint32_t> instances;
     culling_->group_batch.assign(groups.size(), ~0u);
     for (std::size_t g = 0; g < groups.size(); ++g) {
-        if (groups[g].alpha == AlphaMode::Blend) continue;
+        if (groups[g].alpha == scene::AlphaMode::Blend) continue;
         const GpuMesh& mesh = scene.meshes()[groups[g].mesh];
         culling_->group_batch[g] = static_cast<std::uint32_t>(draws.size());
         // Objects of a batch sit at their GPU instance indices, so each batch's ids
@@ -160,14 +160,14 @@ void CullingPass::build_gpu(const GpuScene& scene) {
 // `caster_view`: a shadow cascade (blended instances cast no shadow).
 // `blended_only`: only the blended instances (GPU path).
 void CullingPass::test_cpu(FrameContext& f, PassCull& view, bool caster_view, bool blended_only) {
-    const CullMethod method = f.settings.cull_method;
+    const scene::CullMethod method = f.settings.cull_method;
     const auto& groups = f.scene->groups();
-    const BoxesSoA& boxes = culling_->boxes;
+    const scene::BoxesSoA& boxes = culling_->boxes;
     view.group_visible.assign(groups.size(), 0);
     if (blended_only) { // writes only the blended instances' flags: no O(instances) work
         view.visible.resize(boxes.size());
         for (std::size_t g = 0; g < groups.size(); ++g) {
-            if (groups[g].alpha != AlphaMode::Blend) continue;
+            if (groups[g].alpha != scene::AlphaMode::Blend) continue;
             for (std::uint32_t k = 0; k < groups[g].instance_count; ++k) {
                 const std::uint32_t i = groups[g].first_instance + k;
                 view.visible[i] = !culling_->is_hidden(i) &&
@@ -179,14 +179,14 @@ void CullingPass::test_cpu(FrameContext& f, PassCull& view, bool caster_view, bo
         return;
     }
     view.visible.resize(boxes.size());
-    cull_boxes(view.frustum, boxes, method, core::SimdLevel::Avx512, view.visible);
+    scene::cull_boxes(view.frustum, boxes, method, core::SimdLevel::Avx512, view.visible);
     view.cpu_tested = true;
-    CullStats& st = view.stats;
+    scene::CullStats& st = view.stats;
     if (culling_->hidden_count > 0)
         for (std::size_t i = 0; i < view.visible.size(); ++i)
             if (culling_->hidden[i]) view.visible[i] = 0;
     for (std::size_t g = 0; g < groups.size(); ++g) {
-        if (caster_view && groups[g].alpha == AlphaMode::Blend) continue; // casts no shadow
+        if (caster_view && groups[g].alpha == scene::AlphaMode::Blend) continue; // casts no shadow
         for (std::uint32_t k = 0; k < groups[g].instance_count; ++k) {
             const std::uint32_t i = groups[g].first_instance + k;
             view.group_visible[g] += view.visible[i];
@@ -281,7 +281,7 @@ void CullingPass::record(FrameContext& f) {
     fc.path = CullPath::None;
     fc.check = false;
     fc.count = 0;
-    slot.prepass = CullStats{};
+    slot.prepass = scene::CullStats{};
     slot.prepass.pass = "depth_prepass";
     slot.history_pushed = false;
     if (!f.scene || !culling_) return;
@@ -302,14 +302,14 @@ void CullingPass::record(FrameContext& f) {
         const bool camera = v == 0;
         view.cpu_tested = false;
         view.gpu = nullptr;
-        view.stats = CullStats{};
+        view.stats = scene::CullStats{};
         view.stats.pass = camera ? "camera" : "cascade" + std::to_string(v - 1);
         view.stats.method = settings.cull_method;
         view.stats.simd = std::min(core::SimdLevel::Avx512, core::best_simd_level());
         view.stats.total = camera ? n : culling_->casters;
         view.stats.hidden = camera ? culling_->hidden_count : culling_->hidden_casters;
         view.stats.view_projection = camera ? camera_vp : slot.cascades.cull_view_proj[v - 1];
-        view.frustum = frustum_from_view_projection(view.stats.view_projection);
+        view.frustum = scene::frustum_from_view_projection(view.stats.view_projection);
         view.ids_offset = VkDeviceSize{v} * n * sizeof(std::uint32_t);
     }
     if (settings.cull == CullPath::None || n == 0) {
@@ -334,7 +334,7 @@ void CullingPass::record(FrameContext& f) {
     const auto& groups = f.scene->groups();
     for (std::uint32_t v = 0; v < fc.count; ++v) {
         PassCull& view = fc.views[v];
-        CullStats& st = view.stats;
+        scene::CullStats& st = view.stats;
         const bool camera = v == 0;
         const auto t0 = std::chrono::steady_clock::now();
         st.tested = st.total - st.hidden;
@@ -344,8 +344,8 @@ void CullingPass::record(FrameContext& f) {
             test_cpu(f, view, false, true);
         if (fc.check && view.cpu_tested) {
             std::vector<std::uint8_t> exact(view.visible.size());
-            cull_boxes(view.frustum, culling_->boxes, CullMethod::Exact, core::SimdLevel::Avx512,
-                       exact);
+            scene::cull_boxes(view.frustum, culling_->boxes, scene::CullMethod::Exact,
+                              core::SimdLevel::Avx512, exact);
             std::int64_t fp = 0;
             for (std::size_t i = 0; i < exact.size(); ++i)
                 if ((camera || !culling_->blended[i]) && !culling_->is_hidden(i))

@@ -28,7 +28,7 @@ void CullingPass::read_stats(FrameSlot& slot, const GpuScene* scene, FrameStats&
         gpu ? static_cast<const std::uint8_t*>(resources_.get(slot.cull_readback).mapped) : nullptr;
     for (std::uint32_t p = 0; p < passes; ++p) {
         const PassCull& pc = fc.views[p];
-        CullStats st = pc.stats; // draws and CPU-path triangles tallied while recording
+        scene::CullStats st = pc.stats; // draws and CPU-path triangles tallied while recording
         if (gpu) {
             const GpuCuller& culler = *pc.gpu;
             std::vector<VkDrawIndexedIndirectCommand> draws(culler.batch_count());
@@ -52,7 +52,8 @@ void CullingPass::read_stats(FrameSlot& slot, const GpuScene* scene, FrameStats&
                 const auto& groups = scene->groups();
                 if (!pc.group_visible.empty())
                     for (std::size_t g = 0; g < groups.size(); ++g)
-                        if (groups[g].alpha == AlphaMode::Blend) visible += pc.group_visible[g];
+                        if (groups[g].alpha == scene::AlphaMode::Blend)
+                            visible += pc.group_visible[g];
                 if (slot.prepass.draw_calls) out.prepass.triangles += triangles;
             }
             st.visible = visible;

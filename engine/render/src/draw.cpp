@@ -14,7 +14,7 @@ void push(VkCommandBuffer cmd, VkPipelineLayout layout, const GPUPushConstants& 
 
 // Draw of one group limited by `cull`, tallied into `tally`; false: nothing to draw.
 bool draw_culled(FrameContext& f, std::size_t group, const PassCull& cull, GPUPushConstants& pc,
-                 CullStats& tally) {
+                 scene::CullStats& tally) {
     const DrawGroup& g = f.scene->groups()[group];
     const GpuMesh& mesh = f.scene->meshes()[g.mesh];
     const VkPipelineLayout layout = f.pipelines.layout();
@@ -85,12 +85,12 @@ void set_depth(VkCommandBuffer cmd, VkCompareOp op, bool write, float bias_const
 }
 
 void set_mesh(GPUPushConstants& pc, const GpuMesh& mesh, std::uint32_t material) {
-    pc.positions = mesh.stream[std::size_t(VertexAttribute::Position)];
-    pc.normals = mesh.stream[std::size_t(VertexAttribute::Normal)];
-    pc.tangents = mesh.stream[std::size_t(VertexAttribute::Tangent)];
-    pc.uv0 = mesh.stream[std::size_t(VertexAttribute::TexCoord0)];
-    pc.uv1 = mesh.stream[std::size_t(VertexAttribute::TexCoord1)];
-    pc.colors = mesh.stream[std::size_t(VertexAttribute::Color0)];
+    pc.positions = mesh.stream[std::size_t(scene::VertexAttribute::Position)];
+    pc.normals = mesh.stream[std::size_t(scene::VertexAttribute::Normal)];
+    pc.tangents = mesh.stream[std::size_t(scene::VertexAttribute::Tangent)];
+    pc.uv0 = mesh.stream[std::size_t(scene::VertexAttribute::TexCoord0)];
+    pc.uv1 = mesh.stream[std::size_t(scene::VertexAttribute::TexCoord1)];
+    pc.colors = mesh.stream[std::size_t(scene::VertexAttribute::Color0)];
     pc.material_id = material;
     pc.mesh_flags = mesh.flags;
     pc.motion = mesh.motion;
@@ -114,8 +114,8 @@ VkDeviceAddress shown_ids(const FrameContext& f, VkDeviceAddress all) {
                                                     : all;
 }
 
-void draw_groups(FrameContext& f, DrawPipeline pipeline, AlphaMode alpha, const DrawView& view,
-                 CullStats& tally) {
+void draw_groups(FrameContext& f, DrawPipeline pipeline, scene::AlphaMode alpha,
+                 const DrawView& view, scene::CullStats& tally) {
     if (!f.scene) return;
     VkCommandBuffer cmd = f.cmd;
     Pipelines& p = f.pipelines;
@@ -144,7 +144,7 @@ void draw_groups(FrameContext& f, DrawPipeline pipeline, AlphaMode alpha, const 
     }
 }
 
-void draw_blended(FrameContext& f, DrawPipeline pipeline, CullStats& tally) {
+void draw_blended(FrameContext& f, DrawPipeline pipeline, scene::CullStats& tally) {
     if (!f.scene) return;
     VkCommandBuffer cmd = f.cmd;
     Pipelines& p = f.pipelines;
@@ -156,7 +156,7 @@ void draw_blended(FrameContext& f, DrawPipeline pipeline, CullStats& tally) {
     std::vector<Item> items;
     const auto& groups = f.scene->groups();
     for (std::uint32_t gi = 0; gi < groups.size(); ++gi) {
-        if (groups[gi].alpha != AlphaMode::Blend) continue;
+        if (groups[gi].alpha != scene::AlphaMode::Blend) continue;
         for (std::uint32_t k = 0; k < groups[gi].instance_count; ++k) {
             const std::uint32_t inst = groups[gi].first_instance + k;
             const glm::vec3 c = instance_bounds(f)[inst].center();

@@ -48,10 +48,10 @@ VkDeviceAddress shown_ids(const FrameContext& f, VkDeviceAddress all);
 
 // Every draw group of `alpha`, single-sided ones with back faces culled; draws and
 // triangles go to `tally`.
-void draw_groups(FrameContext& f, DrawPipeline pipeline, AlphaMode alpha, const DrawView& view,
-                 CullStats& tally);
+void draw_groups(FrameContext& f, DrawPipeline pipeline, scene::AlphaMode alpha,
+                 const DrawView& view, scene::CullStats& tally);
 // Blended instances back to front, one draw each; draws and triangles go to `tally`.
-void draw_blended(FrameContext& f, DrawPipeline pipeline, CullStats& tally);
+void draw_blended(FrameContext& f, DrawPipeline pipeline, scene::CullStats& tally);
 // A line list in world space, in its own range of the frame's line buffer.
 void draw_lines(FrameContext& f, const std::vector<GPULineVertex>& lines);
 // The 12 edges of a world box as a line list.

@@ -45,22 +45,23 @@ LuminanceGrid luminance_grid(std::uint32_t width, std::uint32_t height,
 namespace {
 
 // A texture coordinate wrapped into [0, 1] as the sampler's address mode does.
-float wrap(float u, AddressMode mode) {
+float wrap(float u, scene::AddressMode mode) {
     if (!std::isfinite(u)) return 0.0f;
     switch (mode) {
-    case AddressMode::ClampToEdge:
+    case scene::AddressMode::ClampToEdge:
         return std::clamp(u, 0.0f, 1.0f);
-    case AddressMode::MirroredRepeat: {
+    case scene::AddressMode::MirroredRepeat: {
         const float m = u - 2.0f * std::floor(0.5f * u); // [0, 2)
         return m > 1.0f ? 2.0f - m : m;
     }
-    case AddressMode::Repeat:
+    case scene::AddressMode::Repeat:
         break;
     }
     return u - std::floor(u);
 }
 
-float nearest(const LuminanceGrid& g, glm::vec2 uv, AddressMode wrap_u, AddressMode wrap_v) {
+float nearest(const LuminanceGrid& g, glm::vec2 uv, scene::AddressMode wrap_u,
+              scene::AddressMode wrap_v) {
     const float u = wrap(uv.x, wrap_u), v = wrap(uv.y, wrap_v);
     const std::uint32_t x = std::min(std::uint32_t(u * float(g.width)), g.width - 1);
     const std::uint32_t y = std::min(std::uint32_t(v * float(g.height)), g.height - 1);
@@ -69,8 +70,8 @@ float nearest(const LuminanceGrid& g, glm::vec2 uv, AddressMode wrap_u, AddressM
 
 } // namespace
 
-double mean_over_triangle(const LuminanceGrid& grid, const glm::vec2 uv[3], AddressMode wrap_u,
-                          AddressMode wrap_v) {
+double mean_over_triangle(const LuminanceGrid& grid, const glm::vec2 uv[3],
+                          scene::AddressMode wrap_u, scene::AddressMode wrap_v) {
     if (grid.texels.empty()) return 0.0;
     constexpr int n = 8; // 64 sub-triangles of equal area, each sampled at its centroid
     const glm::vec2 d1 = uv[1] - uv[0], d2 = uv[2] - uv[0];
@@ -90,19 +91,19 @@ double mean_over_triangle(const LuminanceGrid& grid, const glm::vec2 uv[3], Addr
     return sum / double(n * n);
 }
 
-float emitted_luminance(const MaterialInstance& m) {
+float emitted_luminance(const scene::MaterialInstance& m) {
     if (m.unlit) return 0.0f;
     const glm::vec3 e = m.emissive_factor * m.emissive_strength;
     const float lum = 0.2126f * e.r + 0.7152f * e.g + 0.0722f * e.b;
     return std::isfinite(lum) && lum > 0.0f ? lum : 0.0f;
 }
 
-EmissiveLights emissive_lights(const Scene& scene, std::size_t max_triangles) {
+EmissiveLights emissive_lights(const scene::Scene& scene, std::size_t max_triangles) {
     EmissiveLights out;
     std::vector<float> luminance(scene.materials.size(), 0.0f);
     bool any = false;
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
-        const MaterialInstance& m = scene.materials[i];
+        const scene::MaterialInstance& m = scene.materials[i];
         const float lum = emitted_luminance(m);
         if (lum > kMaxEmissiveLuminance) {
             out.warnings.push_back("material " + std::to_string(i) + " '" + m.name +
@@ -122,7 +123,7 @@ EmissiveLights emissive_lights(const Scene& scene, std::size_t max_triangles) {
     }
     // A material variant switched after loading may change what emits: a list of the
     // loaded variant would bias the others, so BSDF sampling alone finds them.
-    for (const VariantMeshMapping& v : scene.variants.meshes)
+    for (const scene::VariantMeshMapping& v : scene.variants.meshes)
         for (std::int32_t m : v.materials)
             if (m >= 0 && std::size_t(m) < luminance.size() &&
                 v.default_material < luminance.size() &&
@@ -136,16 +137,16 @@ EmissiveLights emissive_lights(const Scene& scene, std::size_t max_triangles) {
     // once per image, shared by the materials that use it) and its sampler's wrap modes.
     struct EmissiveTexture {
         const LuminanceGrid* grid = nullptr;
-        AddressMode wrap_u = AddressMode::Repeat, wrap_v = AddressMode::Repeat;
+        scene::AddressMode wrap_u = scene::AddressMode::Repeat, wrap_v = scene::AddressMode::Repeat;
     };
     std::vector<EmissiveTexture> grids(scene.materials.size());
     std::vector<std::optional<LuminanceGrid>> image_grids(scene.images.size());
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
-        const TextureSlot& slot = scene.materials[i].emissive;
+        const scene::TextureSlot& slot = scene.materials[i].emissive;
         if (!(luminance[i] > 0.0f) || !slot.present() || slot.tex_coord > 1 ||
             std::size_t(slot.texture) >= scene.textures.size())
             continue;
-        const TextureRecord& texture = scene.textures[std::size_t(slot.texture)];
+        const scene::TextureRecord& texture = scene.textures[std::size_t(slot.texture)];
         if (texture.image < 0 || std::size_t(texture.image) >= scene.images.size()) continue;
         std::optional<LuminanceGrid>& image_grid = image_grids[std::size_t(texture.image)];
         if (!image_grid) {
@@ -162,28 +163,28 @@ EmissiveLights emissive_lights(const Scene& scene, std::size_t max_triangles) {
             }
         }
         if (image_grid->texels.empty()) continue;
-        const SamplerDesc sampler = scene.sampler_of(texture);
+        const scene::SamplerDesc sampler = scene.sampler_of(texture);
         grids[i] = {&*image_grid, sampler.wrap_u, sampler.wrap_v};
     }
     std::vector<double> power, sampled;
-    for (const MeshInstance& inst : scene.instances) {
+    for (const scene::MeshInstance& inst : scene.instances) {
         if (inst.mesh_id >= scene.meshes.size() || inst.material_id >= luminance.size()) continue;
         const float lum = luminance[inst.material_id];
-        const Mesh& mesh = scene.meshes[inst.mesh_id];
-        if (!(lum > 0.0f) || mesh.topology() != Topology::Triangles) continue;
+        const scene::Mesh& mesh = scene.meshes[inst.mesh_id];
+        if (!(lum > 0.0f) || mesh.topology() != scene::Topology::Triangles) continue;
         for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
             glm::vec3 p[3];
             glm::vec2 uv[3];
             bool valid = true;
             const EmissiveTexture& grid = grids[inst.material_id];
-            const TextureSlot& slot = scene.materials[inst.material_id].emissive;
+            const scene::TextureSlot& slot = scene.materials[inst.material_id].emissive;
             for (int k = 0; k < 3; ++k) {
                 const std::uint32_t v = mesh.indices[t + std::size_t(k)];
                 if (v >= mesh.vertices.size()) {
                     valid = false;
                     break;
                 }
-                const Vertex& vertex = mesh.vertices[v];
+                const scene::Vertex& vertex = mesh.vertices[v];
                 p[k] = glm::vec3(inst.world * glm::vec4(vertex.position, 1.0f));
                 uv[k] = slot.tex_coord == 1 ? vertex.uv1 : vertex.uv0;
                 if (slot.transform.present)

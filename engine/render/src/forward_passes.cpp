@@ -10,24 +10,25 @@ void FloorPass::record(FrameContext& f) {
     // Same triangles, one constant colour: what the rasterizer costs by itself.
     set_depth(f.cmd, VK_COMPARE_OP_GREATER, true);
     const DrawPipeline floor{PipelineId::Floor};
-    for (AlphaMode a : {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend})
+    for (scene::AlphaMode a :
+         {scene::AlphaMode::Opaque, scene::AlphaMode::Mask, scene::AlphaMode::Blend})
         draw_groups(f, floor, a, camera_view(f), f.slot.culling.camera_stats());
 }
 
 void DepthPrepass::record(FrameContext& f) {
     if (f.settings.floor_only || !f.prepass) return;
     set_depth(f.cmd, VK_COMPARE_OP_GREATER, true);
-    draw_groups(f, DrawPipeline{PipelineId::PrepassOpaque}, AlphaMode::Opaque, camera_view(f),
-                f.slot.prepass);
-    draw_groups(f, DrawPipeline{PipelineId::PrepassMask}, AlphaMode::Mask, camera_view(f),
+    draw_groups(f, DrawPipeline{PipelineId::PrepassOpaque}, scene::AlphaMode::Opaque,
+                camera_view(f), f.slot.prepass);
+    draw_groups(f, DrawPipeline{PipelineId::PrepassMask}, scene::AlphaMode::Mask, camera_view(f),
                 f.slot.prepass);
 }
 
 void ForwardPass::record(FrameContext& f) {
     if (f.settings.floor_only) return;
     const auto view = static_cast<std::uint32_t>(f.settings.view);
-    CullStats& tally = f.slot.culling.camera_stats();
-    if (alpha_ == AlphaMode::Blend) {
+    scene::CullStats& tally = f.slot.culling.camera_stats();
+    if (alpha_ == scene::AlphaMode::Blend) {
         // One rule for blended surfaces in both renderers (docs/raytracing/README.md): the
         // lit view blends them over what is behind, back to front; every data view shows
         // the nearest surface as the ray tracer's primary rays do, so blended surfaces

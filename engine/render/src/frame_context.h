@@ -29,11 +29,11 @@ inline constexpr std::uint32_t kMaxCullPasses = 1 + kShadowCascades;
 
 // One culled view of a frame (the camera or one shadow cascade).
 struct PassCull {
-    Frustum frustum;
+    scene::Frustum frustum;
     std::vector<std::uint8_t> visible;        // per GPU instance, where the CPU test ran
     std::vector<std::uint32_t> group_visible; // per draw group (CPU test)
     bool cpu_tested = false;                  // `visible` holds every instance of the pass
-    CullStats stats;
+    scene::CullStats stats;
     VkDeviceSize ids_offset = 0; // CPU path: this view's region of FrameSlot::cull_ids
     GpuCuller* gpu = nullptr;    // GPU path: this view's culler
     VkDeviceSize readback = 0;   // GPU path: offset of this view in FrameSlot::cull_readback
@@ -45,7 +45,7 @@ struct FrameCulling {
     bool check = false;
     std::vector<PassCull> views; // [camera, cascade 0, ..]: see camera() and cascade()
     std::uint32_t count = 0;     // views with statistics this frame
-    CullStats unused;            // tally of draws no view counts (no scene)
+    scene::CullStats unused;     // tally of draws no view counts (no scene)
     // The culling that limits the camera's draws, or null when culling is off.
     PassCull* camera() { return path != CullPath::None && count > 0 ? &views[0] : nullptr; }
     // The same for shadow cascade `c`: null when off or the cascade is not culled.
@@ -53,8 +53,8 @@ struct FrameCulling {
         return path != CullPath::None && 1 + c < count ? &views[1 + c] : nullptr;
     }
     // Where the draws of the camera / cascade `c` are tallied.
-    CullStats& camera_stats() { return count > 0 ? views[0].stats : unused; }
-    CullStats& cascade_stats(std::uint32_t c) { return views.at(1 + c).stats; }
+    scene::CullStats& camera_stats() { return count > 0 ? views[0].stats : unused; }
+    scene::CullStats& cascade_stats(std::uint32_t c) { return views.at(1 + c).stats; }
 };
 
 // Resources of one frame in flight.
@@ -73,11 +73,11 @@ struct FrameSlot {
     bool shadows_rendered = false;
     std::uint64_t draw_calls = 0;
     CameraView camera;
-    GPUPushConstants push_base{}; // scene-wide addresses for this frame
-    ShadowCascades cascades;      // fitted this frame (see frame_data.cpp)
-    FrameCulling culling;         // see culling_pass.cpp
-    CullStats prepass;            // draws and triangles of the depth prepass
-    gpu::BufferHandle cull_ids;   // CPU path: compacted ids per view, host-visible
+    GPUPushConstants push_base{};   // scene-wide addresses for this frame
+    scene::ShadowCascades cascades; // fitted this frame (see frame_data.cpp)
+    FrameCulling culling;           // see culling_pass.cpp
+    scene::CullStats prepass;       // draws and triangles of the depth prepass
+    gpu::BufferHandle cull_ids;     // CPU path: compacted ids per view, host-visible
     VkDeviceSize cull_ids_capacity = 0;
     gpu::BufferHandle cull_readback; // GPU path: indirect commands (+ visible flags when checking)
     VkDeviceSize cull_readback_capacity = 0;
@@ -100,7 +100,7 @@ struct FrameSlot {
     // What this slot's pose buffer holds (PosePass): the pose (null: the default one),
     // the selected joint and the scene's load; a frame asking for the same again
     // (paused, or a file's default pose) reuses it without rewriting.
-    std::shared_ptr<const Pose> pose_written;
+    std::shared_ptr<const scene::Pose> pose_written;
     std::optional<std::uint32_t> joint_written;
     std::uint64_t pose_generation = 0; // 0: nothing written
     gpu::BufferHandle cull_objects;    // GPU path while posed: GPUCullObjects of the posed bounds
@@ -113,7 +113,7 @@ struct FrameSlot {
 // Culling data of the loaded scene.
 struct SceneCulling {
     gpu::BufferHandle identity;        // gl_InstanceIndex -> itself, per scene
-    BoxesSoA boxes;                    // instance bounds, GPU instance order
+    scene::BoxesSoA boxes;             // instance bounds, GPU instance order
     std::vector<std::uint8_t> invalid; // per GPU instance: box not valid (never culled)
     std::vector<std::uint8_t> blended; // per GPU instance: alpha mode BLEND
     std::uint32_t casters = 0;         // instances not blended (the shadow passes)

@@ -21,7 +21,7 @@ core::Aabb shadow_bounds(const SceneLights& lights, const FrameContext& frame) {
     core::Aabb b = lights.cameras.bounds;
     if (frame.slot.posed)
         for (const core::Aabb& box : frame.slot.posed_bounds)
-            if (!box.valid() || !box_is_invalid(box.min, box.max)) b.expand(box);
+            if (!box.valid() || !scene::box_is_invalid(box.min, box.max)) b.expand(box);
     return b;
 }
 
@@ -32,10 +32,10 @@ core::Aabb shadow_bounds(const SceneLights& lights, const FrameContext& frame) {
 MainSun main_sun(const SceneLights& lighting, const FrameRequest& settings) {
     MainSun sun;
     for (std::size_t i = 0; i < lighting.placed_lights.size(); ++i) {
-        const PlacedLight& pl = lighting.placed_lights[i];
+        const scene::PlacedLight& pl = lighting.placed_lights[i];
         if (pl.light >= lighting.lights.size()) continue;
-        const Light& l = lighting.lights[pl.light];
-        if (l.type != LightType::Directional) continue;
+        const scene::Light& l = lighting.lights[pl.light];
+        if (l.type != scene::LightType::Directional) continue;
         sun.present = true;
         sun.direction = glm::normalize(pl.direction);
         sun.radiance = l.color * l.intensity;
@@ -59,16 +59,16 @@ GPUFrameData lighting_constants(const SceneLights& info, const EnvironmentMap* e
     f.sun_radiance = glm::vec4(sun.radiance, 0.0f);
     std::uint32_t count = 0;
     for (std::size_t i = 0; i < info.placed_lights.size(); ++i) {
-        const PlacedLight& pl = info.placed_lights[i];
+        const scene::PlacedLight& pl = info.placed_lights[i];
         if (pl.light >= info.lights.size() || std::int64_t(i) == sun.placed_light) continue;
-        const Light& l = info.lights[pl.light];
+        const scene::Light& l = info.lights[pl.light];
         if (count >= kMaxLights) continue; // beyond the fixed array: not lit (documented limit)
         GPULight& g = f.lights[count++];
         g.position_range = glm::vec4(pl.position, l.range);
         g.direction_type =
-            glm::vec4(glm::normalize(pl.direction), l.type == LightType::Directional ? 0.0f
-                                                    : l.type == LightType::Point     ? 1.0f
-                                                                                     : 2.0f);
+            glm::vec4(glm::normalize(pl.direction), l.type == scene::LightType::Directional ? 0.0f
+                                                    : l.type == scene::LightType::Point     ? 1.0f
+                                                                                            : 2.0f);
         g.color_intensity = glm::vec4(l.color, l.intensity);
         g.cone = glm::vec4(std::cos(l.outer_cone), std::cos(l.inner_cone), 0.0f, 0.0f);
     }
@@ -114,11 +114,11 @@ void FrameRecorder::write_frame_data(FrameContext& frame) {
 
     std::uint32_t cascades = 0;
     frame.cascades = 0;
-    slot.cascades = ShadowCascades{};
+    slot.cascades = scene::ShadowCascades{};
     if (have_sun && settings.shadows && !settings.floor_only && scene &&
         (settings.view == DebugView::Lit || settings.view == DebugView::Shadow)) {
         // The one cascade fit (scene layer), shared with `sherpa-cli cull`.
-        const ShadowCascades c = fit_shadow_cascades(
+        const scene::ShadowCascades c = scene::fit_shadow_cascades(
             cascade_camera(slot.camera), shadow_bounds(info, frame), sun_dir,
             std::min(settings.cascades, kShadowCascades), options.shadow_resolution);
         slot.cascades = c;

@@ -48,7 +48,7 @@ public:
     // The state's scene was loaded from `source` (culling, pose, default pose of the
     // acceleration structures), or is about to be unloaded (every frame waited for,
     // the slots' per-scene buffers freed).
-    void scene_loaded(const Scene& source);
+    void scene_loaded(const scene::Scene& source);
     void scene_unloading();
     // Waits for every frame in flight. Before the environment is replaced or removed,
     // `environment_goes` also frees the background kept for it.
@@ -75,7 +75,7 @@ public:
     // compared frame cannot draw.
     RayTracedFrames& rays() { return rays_; }
     // Culling statistics of the frames read (Renderer::cull_history()).
-    const RingHistory<CullFrame>& cull_history() const { return culling.history(); }
+    const scene::RingHistory<CullFrame>& cull_history() const { return culling.history(); }
     // Between frames: animated properties, visibility, the material variant switch.
     SceneChanges& changes() { return changes_; }
 
@@ -101,7 +101,8 @@ private:
     ShadowPass shadows_;
     FloorPass floor_;
     DepthPrepass prepass_;
-    ForwardPass opaque_{AlphaMode::Opaque}, mask_{AlphaMode::Mask}, blend_{AlphaMode::Blend};
+    ForwardPass opaque_{scene::AlphaMode::Opaque}, mask_{scene::AlphaMode::Mask},
+        blend_{scene::AlphaMode::Blend};
     BackgroundPass background_;
     std::unique_ptr<TransmissionPass> transmission_; // made with the frame slots' set layout
     OverlayPass overlays_{pose_};

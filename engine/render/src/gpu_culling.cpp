@@ -25,7 +25,8 @@ constexpr VkBufferUsageFlags kAddressable =
 
 } // namespace
 
-GPUCullParams cull_params(const Frustum& f, CullMethod method, std::uint32_t object_count) {
+GPUCullParams cull_params(const scene::Frustum& f, scene::CullMethod method,
+                          std::uint32_t object_count) {
     GPUCullParams p{};
     for (std::uint32_t i = 0; i < f.plane_count; ++i)
         p.planes[i] = glm::vec4(f.planes[i].normal, f.planes[i].d);
@@ -111,15 +112,15 @@ void GpuCuller::release() {
 }
 
 GPUCullObject make_cull_object(const core::Aabb& box, std::uint32_t batch, std::uint32_t instance) {
-    const bool invalid = !box.valid() || box_is_invalid(box.min, box.max);
+    const bool invalid = !box.valid() || scene::box_is_invalid(box.min, box.max);
     return {invalid ? glm::vec3(0.0f) : box.min, batch | (invalid ? kCullInvalidBit : 0u),
             invalid ? glm::vec3(0.0f) : box.max, instance};
 }
 
-void GpuCuller::build(const MeshPass& pass, const Scene& scene) {
+void GpuCuller::build(const scene::MeshPass& pass, const scene::Scene& scene) {
     std::vector<core::Aabb> bounds;
     bounds.reserve(scene.instances.size());
-    for (const MeshInstance& inst : scene.instances) bounds.push_back(inst.world_bounds);
+    for (const scene::MeshInstance& inst : scene.instances) bounds.push_back(inst.world_bounds);
     std::vector<std::uint32_t> identity(bounds.size());
     for (std::uint32_t i = 0; i < identity.size(); ++i) identity[i] = i;
     std::vector<GpuMesh> meshes(scene.meshes.size());
@@ -132,7 +133,7 @@ void GpuCuller::build(const MeshPass& pass, const Scene& scene) {
     build(pass, bounds, identity, meshes);
 }
 
-void GpuCuller::build(const MeshPass& pass, std::span<const core::Aabb> bounds,
+void GpuCuller::build(const scene::MeshPass& pass, std::span<const core::Aabb> bounds,
                       std::span<const std::uint32_t> gpu_instance,
                       std::span<const GpuMesh> meshes) {
     const auto flat = pass.flat_batches();
@@ -141,7 +142,7 @@ void GpuCuller::build(const MeshPass& pass, std::span<const core::Aabb> bounds,
     std::vector<VkDrawIndexedIndirectCommand> draws(batches.size());
     std::vector<std::uint32_t> object_instance(flat.size());
     for (std::uint32_t b = 0; b < batches.size(); ++b) {
-        const IndirectBatch& batch = batches[b];
+        const scene::IndirectBatch& batch = batches[b];
         if (batch.mesh_id >= meshes.size())
             throw gpu::GpuError("cull batch names mesh " + std::to_string(batch.mesh_id));
         draws[b] = {meshes[batch.mesh_id].index_count, 0, meshes[batch.mesh_id].first_index, 0,
@@ -209,7 +210,7 @@ VkDeviceAddress GpuCuller::instance_ids() const {
     return resources_.get(ids_).address;
 }
 
-void GpuCuller::record(VkCommandBuffer cmd, const Frustum& frustum, CullMethod method,
+void GpuCuller::record(VkCommandBuffer cmd, const scene::Frustum& frustum, scene::CullMethod method,
                        std::uint32_t parameter_block, bool timestamps, VkDeviceAddress objects) {
     if (objects_count_ == 0) return;
     const GPUCullParams params = cull_params(frustum, method, objects_count_);
@@ -254,7 +255,7 @@ void GpuCuller::record(VkCommandBuffer cmd, const Frustum& frustum, CullMethod m
             VK_ACCESS_2_TRANSFER_READ_BIT);
 }
 
-GpuCullReadback GpuCuller::run(const Frustum& frustum, CullMethod method) {
+GpuCullReadback GpuCuller::run(const scene::Frustum& frustum, scene::CullMethod method) {
     GpuCullReadback out;
     if (objects_count_ == 0) return out;
     VkCommandBuffer cmd = recorder_.begin();

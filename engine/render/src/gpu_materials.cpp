@@ -25,20 +25,20 @@ GpuMaterials::~GpuMaterials() {
     if (extension_buffer_.valid()) resources_.destroy(extension_buffer_);
 }
 
-void GpuMaterials::build(std::span<const MaterialInstance> materials) {
+void GpuMaterials::build(std::span<const scene::MaterialInstance> materials) {
     data_.clear();
     extras_data_.clear();
-    extensions_ =
-        build_material_extensions(materials, [this](const TextureSlot& slot, TextureRole role) {
+    extensions_ = build_material_extensions(
+        materials, [this](const scene::TextureSlot& slot, scene::TextureRole role) {
             // A failed texture reads white (the factor alone) or the flat normal, not
             // the checker: the texture pipeline has warned, and a checker would only
             // tint the factor.
             const std::uint32_t fallback =
-                role == kRoleNormal ? gpu::kFlatNormalTexture : gpu::kWhiteTexture;
+                role == scene::kRoleNormal ? gpu::kFlatNormalTexture : gpu::kWhiteTexture;
             const std::uint32_t tex = textures_->field_slot(slot, role, fallback);
             return tex == gpu::kCheckerTexture ? fallback : tex;
         });
-    for (const MaterialInstance& m : materials) {
+    for (const scene::MaterialInstance& m : materials) {
         // Texture fields resolved to bindless slots, absent ones to the defaults.
         data_.push_back(textures_->material(m));
         GPUMaterialExtra x{};
@@ -53,21 +53,21 @@ void GpuMaterials::build(std::span<const MaterialInstance> materials) {
         if (const auto& sg = m.specular_glossiness) {
             x.workflow = kWorkflowSpecularGlossiness;
             x.uv[kSlotSpecularGlossiness] = texture_transform(sg->specular_glossiness);
-            x.specular_glossiness_tex =
-                textures_->field_slot(sg->specular_glossiness, kRoleColor, gpu::kWhiteTexture);
+            x.specular_glossiness_tex = textures_->field_slot(
+                sg->specular_glossiness, scene::kRoleColor, gpu::kWhiteTexture);
             x.specular_glossiness = glm::vec4(sg->specular_factor, sg->glossiness_factor);
         }
         extras_data_.push_back(x);
     }
     if (data_.empty()) { // keep the addresses valid for scenes without materials
-        data_.push_back(to_gpu_material(MaterialInstance{}));
+        data_.push_back(scene::to_gpu_material(scene::MaterialInstance{}));
         extras_data_.push_back(GPUMaterialExtra{});
     }
 }
 
-void GpuMaterials::upload(const Scene& scene) {
+void GpuMaterials::upload(const scene::Scene& scene) {
     build(scene.materials);
-    const VkDeviceSize bytes = data_.size() * sizeof(GPUMaterialData);
+    const VkDeviceSize bytes = data_.size() * sizeof(scene::GPUMaterialData);
     const VkDeviceSize extra_bytes = extras_data_.size() * sizeof(GPUMaterialExtra);
     // Copied out too: the editor's material dock reads records back from this buffer.
     materials_ = resources_.create_buffer({bytes, kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
@@ -113,8 +113,8 @@ std::uint64_t upload_changed(gpu::UploadBatch& batch, gpu::BufferHandle buffer,
 
 } // namespace
 
-std::uint64_t GpuMaterials::update(std::span<const MaterialInstance> materials) {
-    const std::vector<GPUMaterialData> data = data_;
+std::uint64_t GpuMaterials::update(std::span<const scene::MaterialInstance> materials) {
+    const std::vector<scene::GPUMaterialData> data = data_;
     const std::vector<GPUMaterialExtra> extras = extras_data_;
     const std::vector<glm::uvec4> words = extensions_.words;
     if (materials.empty() || materials.size() != data.size()) return 0;

@@ -21,44 +21,45 @@ constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
                                         VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
                                         VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 
-std::uint32_t provenance_bits(Provenance p) {
+std::uint32_t provenance_bits(scene::Provenance p) {
     switch (p) {
-    case Provenance::Authored:
+    case scene::Provenance::Authored:
         return 0;
-    case Provenance::Generated:
+    case scene::Provenance::Generated:
         return 1;
-    case Provenance::Defaulted:
+    case scene::Provenance::Defaulted:
         return 2;
     }
     return 2;
 }
 
 // One attribute of the interleaved CPU vertex as a tightly packed stream.
-void append_stream(std::vector<std::uint8_t>& out, const Mesh& mesh, VertexAttribute a) {
+void append_stream(std::vector<std::uint8_t>& out, const scene::Mesh& mesh,
+                   scene::VertexAttribute a) {
     const std::size_t at = out.size();
     const std::uint32_t stride = stream_stride(a);
     out.resize(at + std::size_t(stride) * mesh.vertices.size());
     std::uint8_t* dst = out.data() + at;
     for (std::size_t i = 0; i < mesh.vertices.size(); ++i, dst += stride) {
-        const Vertex& v = mesh.vertices[i];
+        const scene::Vertex& v = mesh.vertices[i];
         const void* src = nullptr;
         switch (a) {
-        case VertexAttribute::Position:
+        case scene::VertexAttribute::Position:
             src = &v.position;
             break;
-        case VertexAttribute::Normal:
+        case scene::VertexAttribute::Normal:
             src = &v.normal;
             break;
-        case VertexAttribute::Tangent:
+        case scene::VertexAttribute::Tangent:
             src = &v.tangent;
             break;
-        case VertexAttribute::TexCoord0:
+        case scene::VertexAttribute::TexCoord0:
             src = &v.uv0;
             break;
-        case VertexAttribute::TexCoord1:
+        case scene::VertexAttribute::TexCoord1:
             src = &v.uv1;
             break;
-        case VertexAttribute::Color0:
+        case scene::VertexAttribute::Color0:
             src = &mesh.colors[i];
             break;
         }
@@ -68,16 +69,17 @@ void append_stream(std::vector<std::uint8_t>& out, const Mesh& mesh, VertexAttri
 
 } // namespace
 
-GpuScene::GpuScene(gpu::ResourceManager& resources, gpu::BindlessTable& table, const Scene& scene,
+GpuScene::GpuScene(gpu::ResourceManager& resources, gpu::BindlessTable& table,
+                   const scene::Scene& scene,
                    std::shared_ptr<const tex::PreparedTextureSet> textures, StreamPolicy policy,
                    MissingTextures missing)
     : resources_(resources), table_(table), policy_(policy) {
     upload(scene, std::move(textures), missing);
 }
 
-GpuScene::GpuScene(gpu::ResourceManager& resources, gpu::BindlessTable& table, const Scene& scene,
-                   const TextureSettings& texture_settings, StreamPolicy policy,
-                   MissingTextures missing)
+GpuScene::GpuScene(gpu::ResourceManager& resources, gpu::BindlessTable& table,
+                   const scene::Scene& scene, const TextureSettings& texture_settings,
+                   StreamPolicy policy, MissingTextures missing)
     : resources_(resources), table_(table), policy_(policy) {
     auto prepared = std::const_pointer_cast<tex::PreparedTextureSet>(tex::prepare_scene_textures(
         scene, texture_target(resources.context().info(), texture_settings),
@@ -87,7 +89,8 @@ GpuScene::GpuScene(gpu::ResourceManager& resources, gpu::BindlessTable& table, c
     for (tex::PreparedTexture& t : prepared->textures) decltype(t.levels)().swap(t.levels);
 }
 
-void GpuScene::upload(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
+void GpuScene::upload(const scene::Scene& scene,
+                      std::shared_ptr<const tex::PreparedTextureSet> textures,
                       MissingTextures missing) {
     try {
         materials_ =
@@ -114,7 +117,7 @@ void GpuScene::release() {
 }
 
 GpuMaterials::GpuMaterials(gpu::ResourceManager& resources, gpu::BindlessTable& table,
-                           const Scene& scene,
+                           const scene::Scene& scene,
                            std::shared_ptr<const tex::PreparedTextureSet> textures,
                            MissingTextures missing)
     : resources_(resources), textures_(std::make_unique<SceneTextures>(
@@ -128,25 +131,26 @@ GpuMaterials::GpuMaterials(gpu::ResourceManager& resources, gpu::BindlessTable& 
     }
 }
 
-void GpuScene::upload_geometry(const Scene& scene) {
+void GpuScene::upload_geometry(const scene::Scene& scene) {
     std::vector<bool> instanced(scene.meshes.size(), false);
-    for (const MeshInstance& inst : scene.instances)
+    for (const scene::MeshInstance& inst : scene.instances)
         if (inst.mesh_id < scene.meshes.size()) instanced[inst.mesh_id] = true;
 
     std::vector<std::uint8_t> streams;
     std::vector<std::uint32_t> indices;
-    std::vector<std::array<VkDeviceSize, kVertexAttributeCount>> offsets(scene.meshes.size());
+    std::vector<std::array<VkDeviceSize, scene::kVertexAttributeCount>> offsets(
+        scene.meshes.size());
     meshes_.resize(scene.meshes.size());
     for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
-        const Mesh& mesh = scene.meshes[m];
+        const scene::Mesh& mesh = scene.meshes[m];
         GpuMesh& g = meshes_[m];
         g.material = mesh.material_id;
-        g.flags = provenance_bits(mesh.provenance_of(VertexAttribute::Tangent))
+        g.flags = provenance_bits(mesh.provenance_of(scene::VertexAttribute::Tangent))
                       << kTangentProvenanceShift |
-                  provenance_bits(mesh.provenance_of(VertexAttribute::Normal))
+                  provenance_bits(mesh.provenance_of(scene::VertexAttribute::Normal))
                       << kNormalProvenanceShift;
-        if (mesh.topology() == Topology::Lines) g.flags |= kMeshLinesBit;
-        if (mesh.topology() == Topology::Points) g.flags |= kMeshPointsBit;
+        if (mesh.topology() == scene::Topology::Lines) g.flags |= kMeshLinesBit;
+        if (mesh.topology() == scene::Topology::Points) g.flags |= kMeshPointsBit;
         if (!instanced[m] || mesh.vertices.empty() || mesh.indices.empty()) continue;
         if (mesh.material_id >= scene.materials.size())
             throw gpu::GpuError("mesh " + std::to_string(m) + " names material " +
@@ -154,16 +158,17 @@ void GpuScene::upload_geometry(const Scene& scene) {
                                 std::to_string(scene.materials.size()));
 
         // What shading reads; debug views add every authored or generated stream.
-        std::array<bool, kVertexAttributeCount> upload =
-            mesh_attributes_used(scene, static_cast<std::uint32_t>(m));
+        std::array<bool, scene::kVertexAttributeCount> upload =
+            scene::mesh_attributes_used(scene, static_cast<std::uint32_t>(m));
         if (policy_ == StreamPolicy::AllPresent)
-            for (VertexAttribute a : kAllVertexAttributes)
-                if (mesh.provenance_of(a) != Provenance::Defaulted) upload[std::size_t(a)] = true;
-        upload[std::size_t(VertexAttribute::Position)] = true; // every pass reads positions
+            for (scene::VertexAttribute a : scene::kAllVertexAttributes)
+                if (mesh.provenance_of(a) != scene::Provenance::Defaulted)
+                    upload[std::size_t(a)] = true;
+        upload[std::size_t(scene::VertexAttribute::Position)] = true; // every pass reads positions
         if (mesh.colors.size() != mesh.vertices.size())
-            upload[std::size_t(VertexAttribute::Color0)] = false;
+            upload[std::size_t(scene::VertexAttribute::Color0)] = false;
 
-        for (VertexAttribute a : kAllVertexAttributes) {
+        for (scene::VertexAttribute a : scene::kAllVertexAttributes) {
             const std::size_t ai = std::size_t(a);
             offsets[m][ai] = ~VkDeviceSize(0);
             if (!upload[ai]) continue;
@@ -181,8 +186,9 @@ void GpuScene::upload_geometry(const Scene& scene) {
                                     std::to_string(i) + " past its " +
                                     std::to_string(mesh.vertices.size()) + " vertices");
         indices.insert(indices.end(), mesh.indices.begin(), mesh.indices.end());
-        memory_.unified_vertex_bytes += std::uint64_t(sizeof(Vertex)) * mesh.vertices.size() +
-                                        (mesh.colors.empty() ? 0 : 16ull * mesh.colors.size());
+        memory_.unified_vertex_bytes +=
+            std::uint64_t(sizeof(scene::Vertex)) * mesh.vertices.size() +
+            (mesh.colors.empty() ? 0 : 16ull * mesh.colors.size());
     }
 
     // Ray tracing builds from positions and indices and reads every stream in hit
@@ -202,7 +208,7 @@ void GpuScene::upload_geometry(const Scene& scene) {
         batch.upload_buffer(vertices_, 0, streams.data(), streams.size());
         const VkDeviceAddress base = resources_.get(vertices_).address;
         for (std::size_t m = 0; m < meshes_.size(); ++m)
-            for (std::size_t a = 0; a < kVertexAttributeCount; ++a)
+            for (std::size_t a = 0; a < scene::kVertexAttributeCount; ++a)
                 if (meshes_[m].flags & (1u << a)) meshes_[m].stream[a] = base + offsets[m][a];
     }
     if (!indices.empty()) {
@@ -220,7 +226,7 @@ void GpuScene::upload_geometry(const Scene& scene) {
 
 // Skinning and morph streams, only for the meshes that move: a static scene makes
 // no buffer and reports 0 motion bytes.
-void GpuScene::upload_motion(const Scene& scene, const std::vector<bool>& instanced,
+void GpuScene::upload_motion(const scene::Scene& scene, const std::vector<bool>& instanced,
                              gpu::UploadBatch& batch) {
     MotionStreams motion = build_motion_streams(scene, instanced);
     if (motion.records.empty()) return;
@@ -254,12 +260,13 @@ void GpuScene::upload_motion(const Scene& scene, const std::vector<bool>& instan
     memory_.motion = motion.bytes.size() + bytes;
 }
 
-std::uint64_t update_scene_materials(GpuScene& scene, std::span<const MaterialInstance> materials) {
+std::uint64_t update_scene_materials(GpuScene& scene,
+                                     std::span<const scene::MaterialInstance> materials) {
     return scene.materials_->update(materials);
 }
 
-void GpuScene::upload_instances(const Scene& scene) {
-    for (const MaterialInstance& m : scene.materials)
+void GpuScene::upload_instances(const scene::Scene& scene) {
+    for (const scene::MaterialInstance& m : scene.materials)
         material_modes_.emplace_back(m.alpha_mode, m.double_sided);
     struct Keyed {
         std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, bool, bool>
@@ -268,10 +275,10 @@ void GpuScene::upload_instances(const Scene& scene) {
     };
     std::vector<Keyed> order;
     for (std::uint32_t i = 0; i < scene.instances.size(); ++i) {
-        const MeshInstance& inst = scene.instances[i];
+        const scene::MeshInstance& inst = scene.instances[i];
         if (inst.mesh_id >= meshes_.size() || meshes_[inst.mesh_id].index_count == 0) continue;
         const std::uint32_t material = scene.meshes[inst.mesh_id].material_id;
-        const MaterialInstance& m = scene.materials[material];
+        const scene::MaterialInstance& m = scene.materials[material];
         const bool mirrored = glm::determinant(glm::mat3(inst.world)) < 0.0f;
         order.push_back(
             {{inst.mesh_id, std::uint32_t(m.alpha_mode), material, m.double_sided, mirrored}, i});
@@ -281,7 +288,7 @@ void GpuScene::upload_instances(const Scene& scene) {
 
     std::vector<GPUInstanceData> data;
     for (const Keyed& k : order) {
-        const MeshInstance& inst = scene.instances[k.instance];
+        const scene::MeshInstance& inst = scene.instances[k.instance];
         const GPUInstanceData g = make_instance_data(inst.world, std::get<2>(k.key), inst.mesh_id);
         if (groups_.empty() ||
             std::make_tuple(groups_.back().mesh, std::uint32_t(groups_.back().alpha),
@@ -289,7 +296,7 @@ void GpuScene::upload_instances(const Scene& scene) {
                             groups_.back().mirrored) != k.key) {
             DrawGroup grp;
             grp.mesh = inst.mesh_id;
-            grp.alpha = AlphaMode(std::get<1>(k.key));
+            grp.alpha = scene::AlphaMode(std::get<1>(k.key));
             grp.material = std::get<2>(k.key);
             grp.double_sided = std::get<3>(k.key);
             grp.mirrored = std::get<4>(k.key);

@@ -9,13 +9,13 @@
 
 namespace sherpa::render {
 
-std::optional<MaterialReadback> read_material(Renderer& renderer, const Scene& scene,
+std::optional<MaterialReadback> read_material(Renderer& renderer, const scene::Scene& scene,
                                               int material) {
     const GpuScene* gpu_scene = renderer.scene();
     if (!gpu_scene || material < 0 || static_cast<std::size_t>(material) >= scene.materials.size())
         return std::nullopt;
     gpu::ResourceManager& resources = renderer.resources();
-    constexpr VkDeviceSize kSize = sizeof(GPUMaterialData);
+    constexpr VkDeviceSize kSize = sizeof(scene::GPUMaterialData);
     // The material's extension words: its index up to the next material's (blocks
     // follow their material's index, in material order).
     const MaterialExtensionBuffer& ext = gpu_scene->materials().extensions();
@@ -62,10 +62,11 @@ std::optional<MaterialReadback> read_material(Renderer& renderer, const Scene& s
 
     // Every (texture, role) slot the scene registered, inverted.
     for (std::size_t t = 0; t < scene.textures.size(); ++t)
-        for (TextureRole role : {kRoleColor, kRoleLinear, kRoleNormal}) {
+        for (scene::TextureRole role :
+             {scene::kRoleColor, scene::kRoleLinear, scene::kRoleNormal}) {
             const std::uint32_t slot =
                 gpu_scene->materials().textures().slot(static_cast<std::int32_t>(t), role);
-            if (slot == kTextureSentinel) continue;
+            if (slot == scene::kTextureSentinel) continue;
             if (slot >= out.bindless_to_texture.size())
                 out.bindless_to_texture.resize(slot + 1, -1);
             out.bindless_to_texture[slot] = static_cast<int>(t);

@@ -19,15 +19,15 @@ VkDeviceAddress append(std::vector<std::uint8_t>& out, std::size_t count, std::s
 
 } // namespace
 
-MotionStreams build_motion_streams(const Scene& scene, const std::vector<bool>& uploaded) {
+MotionStreams build_motion_streams(const scene::Scene& scene, const std::vector<bool>& uploaded) {
     MotionStreams out;
     out.record_of_mesh.assign(scene.meshes.size(), -1);
-    for (const PrimitiveInfo& prim : scene.primitives) {
+    for (const scene::PrimitiveInfo& prim : scene.primitives) {
         if (prim.motion < 0 || prim.engine_mesh < 0) continue;
         const auto mesh_index = static_cast<std::size_t>(prim.engine_mesh);
         if (mesh_index >= uploaded.size() || !uploaded[mesh_index]) continue;
-        const Mesh& mesh = scene.meshes[mesh_index];
-        const PrimitiveMotion& m = scene.motions[static_cast<std::size_t>(prim.motion)];
+        const scene::Mesh& mesh = scene.meshes[mesh_index];
+        const scene::PrimitiveMotion& m = scene.motions[static_cast<std::size_t>(prim.motion)];
         const std::size_t vc = mesh.vertices.size();
         auto source = [&](std::size_t v) -> std::size_t {
             return mesh.source_vertex.empty() ? v : mesh.source_vertex[v];
@@ -59,10 +59,10 @@ MotionStreams build_motion_streams(const Scene& scene, const std::vector<bool>& 
         }
         r.target_count = static_cast<std::uint32_t>(m.targets.size());
         // One stream per attribute any target moves (zeros where a target does not).
-        auto morph = [&](std::vector<glm::vec3> MorphTarget::*attr, std::uint32_t bit,
+        auto morph = [&](std::vector<glm::vec3> scene::MorphTarget::*attr, std::uint32_t bit,
                          VkDeviceAddress& address) {
             bool any = false;
-            for (const MorphTarget& t : m.targets) any = any || !(t.*attr).empty();
+            for (const scene::MorphTarget& t : m.targets) any = any || !(t.*attr).empty();
             if (!any) return;
             r.flags |= bit;
             address =
@@ -73,9 +73,9 @@ MotionStreams build_motion_streams(const Scene& scene, const std::vector<bool>& 
                     std::memcpy(dst, &delta, 12);
                 });
         };
-        morph(&MorphTarget::position, kMotionMorphPositions, r.morph_positions);
-        morph(&MorphTarget::normal, kMotionMorphNormals, r.morph_normals);
-        morph(&MorphTarget::tangent, kMotionMorphTangents, r.morph_tangents);
+        morph(&scene::MorphTarget::position, kMotionMorphPositions, r.morph_positions);
+        morph(&scene::MorphTarget::normal, kMotionMorphNormals, r.morph_normals);
+        morph(&scene::MorphTarget::tangent, kMotionMorphTangents, r.morph_tangents);
         out.record_of_mesh[mesh_index] = static_cast<std::int32_t>(out.records.size());
         out.records.push_back(r);
     }

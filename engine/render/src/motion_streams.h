@@ -20,6 +20,6 @@ struct MotionStreams {
 
 // Streams of every engine mesh in `uploaded` (those drawn) whose primitive skins or
 // morphs (PrimitiveInfo::motion).
-MotionStreams build_motion_streams(const Scene& scene, const std::vector<bool>& uploaded);
+MotionStreams build_motion_streams(const scene::Scene& scene, const std::vector<bool>& uploaded);
 
 } // namespace sherpa::render

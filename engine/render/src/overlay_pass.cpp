@@ -123,13 +123,14 @@ void OverlayPass::draw_cull_boxes(FrameContext& f) {
         glm::vec4 color(0.9f, 0.15f, 0.1f, 1.0f);
         if (f.culling && f.culling->is_hidden(i)) continue; // drawn by no pass
         if (camera->visible[i])
-            color = exact_visible(camera->frustum, bounds[i]) ? glm::vec4(0.2f, 0.9f, 0.3f, 1.0f)
-                                                              : glm::vec4(1.0f, 0.9f, 0.1f, 1.0f);
+            color = scene::exact_visible(camera->frustum, bounds[i])
+                        ? glm::vec4(0.2f, 0.9f, 0.3f, 1.0f)
+                        : glm::vec4(1.0f, 0.9f, 0.1f, 1.0f);
         append_box(lines, bounds[i], color);
     }
     // Corners at infinity (infinite far plane) end at twice the scene's size.
     const float reach = 2.0f * glm::length(f.scene->bounds().extent()) + 1.0f;
-    auto append_frustum = [&](const Frustum& frustum, glm::vec4 color) {
+    auto append_frustum = [&](const scene::Frustum& frustum, glm::vec4 color) {
         auto corner = [&](int i) {
             const glm::vec4 c = frustum.corners[static_cast<std::size_t>(i)];
             if (c.w != 0.0f) return glm::vec4(glm::vec3(c), 1.0f);
@@ -146,7 +147,7 @@ void OverlayPass::draw_cull_boxes(FrameContext& f) {
     append_frustum(camera->frustum, glm::vec4(1.0f));
     const auto* frame = static_cast<const GPUFrameData*>(f.resources.get(f.slot.frame_data).mapped);
     for (std::uint32_t c = 0; c < std::min(frame->params.z, kMaxCascades); ++c)
-        append_frustum(frustum_from_view_projection(frame->shadow_view_proj[c]),
+        append_frustum(scene::frustum_from_view_projection(frame->shadow_view_proj[c]),
                        glm::vec4(0.3f, 0.5f, 1.0f, 1.0f));
     draw_lines(f, lines);
 }

@@ -24,15 +24,15 @@ public:
     void append_skeleton_lines(std::vector<GPULineVertex>& out, const FrameRequest& settings,
                                float joint_size) const;
     PosePass(gpu::ResourceManager& resources) : resources_(resources) {}
-    void build(const Scene& scene, const GpuScene& gpu); // a scene was loaded
-    void reset();                                        // the scene is unloaded
+    void build(const scene::Scene& scene, const GpuScene& gpu); // a scene was loaded
+    void reset();                                               // the scene is unloaded
     void record(FrameContext& f) { record(f.slot, f.settings, f.scene != nullptr); }
     // The same for a frame without a FrameContext (the ray tracer's).
     void record(FrameSlot& slot, const FrameRequest& settings, bool scene_loaded);
     // The scene skins, morphs or animates: slots get a pose buffer.
     bool active() const { return active_; }
     // settings.pose where it fits the scene, else the scene's default pose.
-    const Pose& pose_of(const FrameRequest& settings) const;
+    const scene::Pose& pose_of(const FrameRequest& settings) const;
 
 private:
     struct Instance {
@@ -44,13 +44,13 @@ private:
         glm::mat4 row{1.0f};         // EXT_mesh_gpu_instancing row transform (T * R * S)
         core::Aabb local, bounds;    // mesh bounds; world bounds as loaded
     };
-    void write(FrameSlot& slot, const FrameRequest& settings, const Pose& pose);
+    void write(FrameSlot& slot, const FrameRequest& settings, const scene::Pose& pose);
 
     gpu::ResourceManager& resources_;
     bool active_ = false;
-    Scene scene_; // nodes, skins, motions and primitives: what culling_bounds() and
-                  // the skeleton read
-    Pose default_;
+    scene::Scene scene_; // nodes, skins, motions and primitives: what culling_bounds() and
+                         // the skeleton read
+    scene::Pose default_;
     std::vector<Instance> instances_;        // per GPU instance
     std::vector<std::uint32_t> skin_base_;   // first joint matrix of each skin
     std::vector<std::uint32_t> skin_slots_;  // matrices each skin takes
@@ -75,7 +75,7 @@ public:
     void record(FrameContext& f);
     // Statistics of the completed frame in `slot` into `out`; pushes it to history().
     void read_stats(FrameSlot& slot, const GpuScene* scene, FrameStats& out);
-    const RingHistory<CullFrame>& history() const { return history_; }
+    const scene::RingHistory<CullFrame>& history() const { return history_; }
 
 private:
     void build_gpu(const GpuScene& scene);
@@ -86,8 +86,8 @@ private:
     gpu::Context& context_;
     gpu::ResourceManager& resources_;
     std::unique_ptr<SceneCulling> culling_;
-    std::vector<CullStats> cascade_stats_; // of the last frame that rendered the cascades
-    RingHistory<CullFrame> history_{kHistory};
+    std::vector<scene::CullStats> cascade_stats_; // of the last frame that rendered the cascades
+    scene::RingHistory<CullFrame> history_{kHistory};
 };
 
 // The shadow cascades of the main directional light, depth only, into one layered
@@ -98,7 +98,7 @@ public:
     ~ShadowPass();
     // Whether cascades `c` must be drawn this frame (not `cache` or their inputs
     // changed since the map was last drawn); remembers the inputs when so.
-    bool needs_render(const ShadowCascades& c, std::uint64_t scene_generation, bool cache);
+    bool needs_render(const scene::ShadowCascades& c, std::uint64_t scene_generation, bool cache);
     void invalidate() { key_.clear(); } // the scene changed
     VkDescriptorImageInfo descriptor() const;
     std::uint64_t bytes() const;
@@ -132,11 +132,11 @@ public:
 // instances sorted back to front.
 class ForwardPass {
 public:
-    explicit ForwardPass(AlphaMode alpha) : alpha_(alpha) {}
+    explicit ForwardPass(scene::AlphaMode alpha) : alpha_(alpha) {}
     void record(FrameContext& f);
 
 private:
-    AlphaMode alpha_;
+    scene::AlphaMode alpha_;
 };
 
 // The environment behind the surfaces (background_pass.cpp), drawn before them in its

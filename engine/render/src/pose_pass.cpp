@@ -35,22 +35,22 @@ std::uint64_t fnv(std::uint64_t h, const void* data, std::size_t bytes) {
 
 void PosePass::reset() {
     active_ = false;
-    scene_ = Scene{};
-    default_ = Pose{};
+    scene_ = scene::Scene{};
+    default_ = scene::Pose{};
     instances_.clear();
     skin_base_.clear();
     skin_slots_.clear();
     joints_ = weights_ = 0;
 }
 
-void PosePass::build(const Scene& scene, const GpuScene& gpu) {
+void PosePass::build(const scene::Scene& scene, const GpuScene& gpu) {
     reset();
     active_ = !scene.motions.empty() || !scene.animations.empty();
     if (!active_ && scene.skins.empty()) return;
     scene_.nodes = scene.nodes;
     scene_.skins = scene.skins;
     if (!active_) { // a skeleton that moves nothing: the overlay draws it as loaded
-        default_ = evaluate_pose(scene_, -1, 0.0);
+        default_ = scene::evaluate_pose(scene_, -1, 0.0);
         return;
     }
     ++generation_;
@@ -58,8 +58,8 @@ void PosePass::build(const Scene& scene, const GpuScene& gpu) {
     // culling_bounds() reads the per-joint boxes and the target count, not the
     // per-vertex arrays (the largest of the scene, already uploaded): no copy of those.
     scene_.motions.reserve(scene.motions.size());
-    for (const PrimitiveMotion& m : scene.motions) {
-        PrimitiveMotion& c = scene_.motions.emplace_back();
+    for (const scene::PrimitiveMotion& m : scene.motions) {
+        scene::PrimitiveMotion& c = scene_.motions.emplace_back();
         c.mesh = m.mesh;
         c.primitive = m.primitive;
         c.influences = m.influences;
@@ -68,7 +68,7 @@ void PosePass::build(const Scene& scene, const GpuScene& gpu) {
         c.target_attributes = m.target_attributes;
         c.boxes = m.boxes;
     }
-    default_ = evaluate_pose(scene_, -1, 0.0);
+    default_ = scene::evaluate_pose(scene_, -1, 0.0);
     std::vector<std::int32_t> primitive_of_mesh(scene.meshes.size(), -1);
     for (std::size_t p = 0; p < scene.primitives.size(); ++p)
         if (scene.primitives[p].engine_mesh >= 0 && scene.primitives[p].motion >= 0)
@@ -83,18 +83,18 @@ void PosePass::build(const Scene& scene, const GpuScene& gpu) {
     for (const DrawGroup& g : gpu.groups())
         for (std::uint32_t k = 0; k < g.instance_count; ++k) {
             const std::uint32_t i = g.first_instance + k;
-            const MeshInstance& mi = scene.instances[gpu.scene_instances()[i]];
+            const scene::MeshInstance& mi = scene.instances[gpu.scene_instances()[i]];
             Instance& out = instances_[i];
             out.node = mi.node_id;
             out.mesh = g.mesh;
             out.material = g.material;
             out.world = mi.world;
-            out.row = instance_transform(scene, mi);
+            out.row = scene::instance_transform(scene, mi);
             out.local = scene.meshes[g.mesh].local_bounds;
             out.bounds = gpu.instance_bounds()[i];
             out.primitive = primitive_of_mesh[g.mesh];
             if (out.primitive < 0) continue;
-            const PrimitiveMotion& m =
+            const scene::PrimitiveMotion& m =
                 scene.motions[static_cast<std::size_t>(scene.primitives[out.primitive].motion)];
             out.targets = static_cast<std::uint32_t>(m.targets.size());
             weights_ += out.targets;
@@ -112,9 +112,9 @@ void PosePass::build(const Scene& scene, const GpuScene& gpu) {
     }
 }
 
-const Pose& PosePass::pose_of(const FrameRequest& settings) const {
+const scene::Pose& PosePass::pose_of(const FrameRequest& settings) const {
     // A pose of another scene (node or skin counts differ) is not applied.
-    const Pose* p = settings.pose.get();
+    const scene::Pose* p = settings.pose.get();
     const std::size_t nodes = scene_.nodes.size();
     if (p && p->world.size() == nodes && p->weights.size() == nodes &&
         p->joint_matrices.size() == scene_.skins.size())
@@ -147,7 +147,7 @@ void PosePass::record(FrameSlot& slot, const FrameRequest& settings, bool scene_
     slot.pose_generation = generation_;
 }
 
-void PosePass::write(FrameSlot& slot, const FrameRequest& settings, const Pose& pose) {
+void PosePass::write(FrameSlot& slot, const FrameRequest& settings, const scene::Pose& pose) {
     const std::size_t n = instances_.size();
     const VkDeviceSize instance_bytes = std::max<std::size_t>(n, 1) * sizeof(GPUInstanceData);
     const std::uint32_t floats = (weights_ + joints_ + 3) & ~3u;
@@ -197,9 +197,9 @@ void PosePass::write(FrameSlot& slot, const FrameRequest& settings, const Pose& 
                 values[weight_at + k] = k < w.size() && std::isfinite(w[k]) ? w[k] : 0.0f;
             key = fnv(key, w.data(), w.size() * sizeof(float));
             weight_at += in.targets;
-            slot.posed_bounds[i] =
-                culling_bounds(scene_, pose, in.node,
-                               scene_.primitives[static_cast<std::size_t>(in.primitive)], in.row);
+            slot.posed_bounds[i] = scene::culling_bounds(
+                scene_, pose, in.node, scene_.primitives[static_cast<std::size_t>(in.primitive)],
+                in.row);
         } else {
             slot.posed_bounds[i] = world == in.world ? in.bounds : in.local.transformed(world);
         }

@@ -15,7 +15,7 @@ namespace {
 constexpr VkDeviceSize kZeroRecord = 64; // a GPUMotionMesh with no streams, at offset 0
 
 // The shaders' HAS_* bit of a stream in mesh_flags.
-bool has(std::uint32_t flags, VertexAttribute a) {
+bool has(std::uint32_t flags, scene::VertexAttribute a) {
     return (flags & (1u << static_cast<std::uint32_t>(a))) != 0;
 }
 
@@ -46,11 +46,11 @@ PosedGeometry::PosedGeometry(gpu::ResourceManager& resources, const gpu::RayTrac
             geo.motion = mesh.motion;
             if (g.posed) {
                 const VkDeviceSize n = mesh.vertex_count;
-                geo.positions = take(n * stream_stride(VertexAttribute::Position));
-                if (has(mesh.flags, VertexAttribute::Normal))
-                    geo.normals = take(n * stream_stride(VertexAttribute::Normal));
-                if (has(mesh.flags, VertexAttribute::Tangent))
-                    geo.tangents = take(n * stream_stride(VertexAttribute::Tangent));
+                geo.positions = take(n * stream_stride(scene::VertexAttribute::Position));
+                if (has(mesh.flags, scene::VertexAttribute::Normal))
+                    geo.normals = take(n * stream_stride(scene::VertexAttribute::Normal));
+                if (has(mesh.flags, scene::VertexAttribute::Tangent))
+                    geo.tangents = take(n * stream_stride(scene::VertexAttribute::Tangent));
                 stats_.vertices += n;
             }
             out.push_back(geo);
@@ -93,8 +93,9 @@ PosedGeometry::PosedGeometry(gpu::ResourceManager& resources, const gpu::RayTrac
         for (std::size_t k = 0; k < plan.geometries.size(); ++k) {
             const Geometry& g = geometries_[i][k];
             positions.push_back(
-                g.positions ? g.positions
-                            : gpu.meshes()[g.mesh].stream[std::size_t(VertexAttribute::Position)]);
+                g.positions
+                    ? g.positions
+                    : gpu.meshes()[g.mesh].stream[std::size_t(scene::VertexAttribute::Position)]);
         }
         BlasInput& in = inputs_.emplace_back(describe_blas(plan, gpu, flags, positions));
         fn_.get_build_sizes(context.device(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
@@ -137,9 +138,9 @@ void PosedGeometry::append_records(std::vector<GPUGeometryInfo>& records,
         for (std::size_t k = 0; k < geometries_[i].size(); ++k) {
             const Geometry& g = geometries_[i][k];
             GPUGeometryInfo r = records[first_static[plans_[i].plan] + k];
-            if (g.positions) r.stream[std::size_t(VertexAttribute::Position)] = g.positions;
-            if (g.normals) r.stream[std::size_t(VertexAttribute::Normal)] = g.normals;
-            if (g.tangents) r.stream[std::size_t(VertexAttribute::Tangent)] = g.tangents;
+            if (g.positions) r.stream[std::size_t(scene::VertexAttribute::Position)] = g.positions;
+            if (g.normals) r.stream[std::size_t(scene::VertexAttribute::Normal)] = g.normals;
+            if (g.tangents) r.stream[std::size_t(scene::VertexAttribute::Tangent)] = g.tangents;
             records.push_back(r);
         }
     }
@@ -155,9 +156,9 @@ void PosedGeometry::record(VkCommandBuffer cmd, const PoseFrame& frame, const Bu
             GPUPoseVerticesPush push{};
             push.instance =
                 frame.instances + VkDeviceAddress(g.gpu_instance) * sizeof(GPUInstanceData);
-            push.positions = mesh.stream[std::size_t(VertexAttribute::Position)];
-            push.normals = mesh.stream[std::size_t(VertexAttribute::Normal)];
-            push.tangents = mesh.stream[std::size_t(VertexAttribute::Tangent)];
+            push.positions = mesh.stream[std::size_t(scene::VertexAttribute::Position)];
+            push.normals = mesh.stream[std::size_t(scene::VertexAttribute::Normal)];
+            push.tangents = mesh.stream[std::size_t(scene::VertexAttribute::Tangent)];
             push.motion = g.motion;
             push.pose = frame.pose;
             push.out_positions = g.positions;

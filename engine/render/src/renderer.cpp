@@ -176,7 +176,7 @@ Pipelines& FrameRecorder::pipelines_for(VkFormat format) {
     return *p;
 }
 
-void FrameRecorder::scene_loaded(const Scene& source) {
+void FrameRecorder::scene_loaded(const scene::Scene& source) {
     culling.build(*scene);
     pose_.build(source, *scene);
     shadows_.invalidate();
@@ -328,7 +328,7 @@ Renderer::~Renderer() {
     scene_.reset();
 }
 
-void Renderer::load(const Scene& scene, const SceneSetup& setup) {
+void Renderer::load(const scene::Scene& scene, const SceneSetup& setup) {
     unload();
     SceneState& s = *scene_;
     s.load(scene,
@@ -338,7 +338,8 @@ void Renderer::load(const Scene& scene, const SceneSetup& setup) {
     frames_->scene_loaded(scene);
 }
 
-void Renderer::load(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
+void Renderer::load(const scene::Scene& scene,
+                    std::shared_ptr<const tex::PreparedTextureSet> textures,
                     const SceneSetup& setup) {
     unload();
     SceneState& s = *scene_;
@@ -369,7 +370,7 @@ FrameStats Renderer::render(const FrameRequest& settings, std::vector<std::uint8
     return render_offscreen(*frames_, *resources_, settings, rgba);
 }
 
-const RingHistory<CullFrame>& Renderer::cull_history() const {
+const scene::RingHistory<CullFrame>& Renderer::cull_history() const {
     return frames_->cull_history();
 }
 

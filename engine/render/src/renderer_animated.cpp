@@ -15,7 +15,8 @@
 namespace sherpa::render {
 namespace {
 
-bool same(const std::vector<AnimatedProperty>& a, const std::vector<AnimatedProperty>& b) {
+bool same(const std::vector<scene::AnimatedProperty>& a,
+          const std::vector<scene::AnimatedProperty>& b) {
     if (a.size() != b.size()) return false;
     for (std::size_t i = 0; i < a.size(); ++i)
         if (std::memcmp(a[i].value, b[i].value, sizeof a[i].value) != 0 ||
@@ -27,17 +28,18 @@ bool same(const std::vector<AnimatedProperty>& a, const std::vector<AnimatedProp
 
 } // namespace
 
-void SceneState::load_animated(const Scene& source) {
+void SceneState::load_animated(const scene::Scene& source) {
     // Copies only for a file that animates properties: the others keep nothing.
-    const bool animates = std::any_of(source.animations.begin(), source.animations.end(),
-                                      [](const Animation& a) { return !a.pointers.empty(); });
-    base_materials_ = animates ? source.materials : std::vector<MaterialInstance>{};
-    base_lights_ = animates ? source.lights : std::vector<Light>{};
-    base_cameras_ = animates ? source.cameras : std::vector<Camera>{};
+    const bool animates =
+        std::any_of(source.animations.begin(), source.animations.end(),
+                    [](const scene::Animation& a) { return !a.pointers.empty(); });
+    base_materials_ = animates ? source.materials : std::vector<scene::MaterialInstance>{};
+    base_lights_ = animates ? source.lights : std::vector<scene::Light>{};
+    base_cameras_ = animates ? source.cameras : std::vector<scene::Camera>{};
     materials_animated_ = false;
     base_visible_.clear();
     bool hidden = false;
-    for (const Node& n : source.nodes) {
+    for (const scene::Node& n : source.nodes) {
         base_visible_.push_back(n.visible);
         hidden |= !n.visible;
     }
@@ -47,17 +49,17 @@ void SceneState::load_animated(const Scene& source) {
         for (bool v : base_visible_) animated_hidden_.push_back(!v);
 }
 
-std::optional<std::vector<MaterialInstance>>
-SceneState::animate(const std::vector<AnimatedProperty>& values) {
+std::optional<std::vector<scene::MaterialInstance>>
+SceneState::animate(const std::vector<scene::AnimatedProperty>& values) {
     if (!gpu) return std::nullopt;
     if (same(values, animated_) ||
         (base_materials_.empty() && base_lights_.empty() && base_cameras_.empty()))
         return std::nullopt; // the file animates no property
-    std::vector<MaterialInstance> materials = base_materials_;
+    std::vector<scene::MaterialInstance> materials = base_materials_;
     lights.lights = base_lights_;
     lights.cameras.cameras = base_cameras_;
     std::vector<bool> visible = base_visible_;
-    const std::vector<std::uint32_t> touched = apply_animated_properties(
+    const std::vector<std::uint32_t> touched = scene::apply_animated_properties(
         values, materials, lights.lights, lights.cameras.cameras, &visible);
     std::vector<bool> hidden(visible.size());
     bool any_hidden = false;

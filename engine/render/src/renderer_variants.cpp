@@ -28,7 +28,7 @@ VariantSwitch SceneChanges::set_variant(std::int32_t variant) {
     // Frames in flight draw with the groups being changed.
     retire_culling();
     std::vector<std::pair<std::uint32_t, std::uint32_t>> meshes;
-    for (const VariantMeshMapping& m : state.variants.meshes)
+    for (const scene::VariantMeshMapping& m : state.variants.meshes)
         meshes.emplace_back(m.mesh, m.material_for(variant));
     const MaterialSwitch changed = switch_mesh_materials(*state.gpu, meshes);
     if (changed.modes_changed) {

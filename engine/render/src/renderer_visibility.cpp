@@ -16,7 +16,7 @@ SceneChanges::SceneChanges(SceneState& scene_state, FrameSlots& slots, CullingPa
 
 void SceneChanges::apply_scene_changes(const FrameRequest& settings, bool rt) {
     if (!scene) return;
-    static const std::vector<AnimatedProperty> kNone;
+    static const std::vector<scene::AnimatedProperty> kNone;
     if (auto materials = state.animate(settings.pose ? settings.pose->properties : kNone)) {
         slots_.wait_all();
         if (update_scene_materials(*state.gpu, *materials)) {

@@ -23,7 +23,8 @@ SceneAccelerationStructures::follow_materials(const GpuScene& gpu) {
     }
     // Each mesh's alpha mode and sidedness now, from its draw groups (which a switch
     // updated); a mesh without one is in no TLAS instance.
-    std::vector<std::pair<AlphaMode, bool>> mode(gpu.meshes().size(), {AlphaMode::Opaque, true});
+    std::vector<std::pair<scene::AlphaMode, bool>> mode(gpu.meshes().size(),
+                                                        {scene::AlphaMode::Opaque, true});
     for (const DrawGroup& g : gpu.groups()) mode[g.mesh] = {g.alpha, g.double_sided};
     gpu::UploadBatch batch(resources_);
     constexpr VkDeviceSize kWord = offsetof(GPUGeometryInfo, material);
@@ -43,7 +44,8 @@ SceneAccelerationStructures::follow_materials(const GpuScene& gpu) {
             // Built opaque, any-hit never runs: right only for opaque double-sided
             // materials (rt_plan.cpp's rule).
             const auto [alpha, double_sided] = mode[record_mesh_[r]];
-            if (record_opaque_[r] && (alpha != AlphaMode::Opaque || !double_sided)) force[b] = true;
+            if (record_opaque_[r] && (alpha != scene::AlphaMode::Opaque || !double_sided))
+                force[b] = true;
         }
         out.forced_blas += force[b] ? 1 : 0;
     }

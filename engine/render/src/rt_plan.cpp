@@ -11,7 +11,7 @@
 
 namespace sherpa::render {
 
-std::vector<BlasPlan> plan_blas(const Scene& scene, std::span<const GpuMesh> meshes) {
+std::vector<BlasPlan> plan_blas(const scene::Scene& scene, std::span<const GpuMesh> meshes) {
     // Engine meshes by glTF mesh, in primitive order.
     std::vector<std::vector<std::uint32_t>> by_group;
     for (std::uint32_t m = 0; m < scene.meshes.size() && m < meshes.size(); ++m) {
@@ -26,13 +26,14 @@ std::vector<BlasPlan> plan_blas(const Scene& scene, std::span<const GpuMesh> mes
         for (std::uint32_t m : by_group[group]) {
             const GpuMesh& g = meshes[m];
             if ((g.flags & kMeshTopologyBits) != 0 || g.index_count < 3) continue;
-            const Mesh& mesh = scene.meshes[m];
+            const scene::Mesh& mesh = scene.meshes[m];
             BlasGeometryPlan geometry;
             geometry.mesh = m;
             geometry.triangles = g.index_count / 3;
-            geometry.opaque = mesh.material_id < scene.materials.size() &&
-                              scene.materials[mesh.material_id].alpha_mode == AlphaMode::Opaque &&
-                              scene.materials[mesh.material_id].double_sided;
+            geometry.opaque =
+                mesh.material_id < scene.materials.size() &&
+                scene.materials[mesh.material_id].alpha_mode == scene::AlphaMode::Opaque &&
+                scene.materials[mesh.material_id].double_sided;
             plan.triangles += geometry.triangles;
             plan.geometries.push_back(geometry);
             if (plan.name.empty()) plan.name = mesh.name.substr(0, mesh.name.rfind('#'));
@@ -71,11 +72,11 @@ bool finite(const glm::mat4& m) {
 
 } // namespace
 
-std::vector<TlasCandidate> tlas_candidates(const Scene& scene,
+std::vector<TlasCandidate> tlas_candidates(const scene::Scene& scene,
                                            std::span<const std::int32_t> blas_of_group) {
     std::vector<TlasCandidate> out;
     std::set<std::tuple<std::uint32_t, std::int32_t, std::uint32_t>> seen; // (node, row, group)
-    for (const MeshInstance& inst : scene.instances) {
+    for (const scene::MeshInstance& inst : scene.instances) {
         if (inst.mesh_id >= scene.meshes.size()) continue;
         const std::uint32_t group = scene.meshes[inst.mesh_id].group_id;
         if (group >= blas_of_group.size() || blas_of_group[group] < 0) continue;
@@ -85,7 +86,7 @@ std::vector<TlasCandidate> tlas_candidates(const Scene& scene,
         c.group = group;
         c.blas = blas_of_group[group];
         c.world = inst.world;
-        c.row = instance_transform(scene, inst);
+        c.row = scene::instance_transform(scene, inst);
         c.node_name = inst.node_id < scene.nodes.size() ? scene.nodes[inst.node_id].name : "";
         out.push_back(std::move(c));
     }
@@ -141,7 +142,8 @@ TlasPlan plan_tlas(std::span<const TlasCandidate> candidates, const std::vector<
     return plan;
 }
 
-std::vector<PosedBlasPlan> plan_posed_blas(const Scene& scene, std::span<const GpuMesh> meshes,
+std::vector<PosedBlasPlan> plan_posed_blas(const scene::Scene& scene,
+                                           std::span<const GpuMesh> meshes,
                                            std::span<const std::uint32_t> scene_instances,
                                            std::span<const BlasPlan> plans) {
     std::vector<PosedBlasPlan> out;
@@ -156,18 +158,18 @@ std::vector<PosedBlasPlan> plan_posed_blas(const Scene& scene, std::span<const G
     if (!any) return out;
     // Which engine meshes skin (their primitive's motion has joints).
     std::vector<char> skins(meshes.size(), 0);
-    for (const PrimitiveInfo& prim : scene.primitives)
+    for (const scene::PrimitiveInfo& prim : scene.primitives)
         if (prim.engine_mesh >= 0 && prim.motion >= 0 &&
             std::size_t(prim.engine_mesh) < skins.size() &&
             scene.motions[std::size_t(prim.motion)].skinned())
             skins[std::size_t(prim.engine_mesh)] = 1;
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> gpu_instance; // (node, mesh)
     for (std::uint32_t i = 0; i < scene_instances.size(); ++i) {
-        const MeshInstance& inst = scene.instances[scene_instances[i]];
+        const scene::MeshInstance& inst = scene.instances[scene_instances[i]];
         gpu_instance.emplace(std::pair{inst.node_id, inst.mesh_id}, i);
     }
     std::set<std::pair<std::uint32_t, std::uint32_t>> pairs; // (node, group)
-    for (const MeshInstance& inst : scene.instances) {
+    for (const scene::MeshInstance& inst : scene.instances) {
         if (inst.mesh_id >= meshes.size() || meshes[inst.mesh_id].motion == 0) continue;
         const std::uint32_t group = scene.meshes[inst.mesh_id].group_id;
         if (group >= plan_of_group.size() || plan_of_group[group] < 0) continue;

@@ -36,7 +36,7 @@ struct BlasPlan {
 // A BLAS for every glTF mesh with at least one triangle on the GPU, by glTF mesh
 // index. Lines, points and empty primitives (index_count 0: not instanced or no
 // triangles) are left out.
-std::vector<BlasPlan> plan_blas(const Scene& scene, std::span<const GpuMesh> meshes);
+std::vector<BlasPlan> plan_blas(const scene::Scene& scene, std::span<const GpuMesh> meshes);
 
 // Splits builds into batches, in order, so that each batch's scratch (each size
 // rounded up to `alignment`) stays within `budget`; a build that alone exceeds it
@@ -60,7 +60,7 @@ struct TlasCandidate {
 
 // One per (node, row, glTF mesh) of `scene.instances` (its first primitive's), with
 // `blas_of_group[group]` as its BLAS (-1 where the mesh has none).
-std::vector<TlasCandidate> tlas_candidates(const Scene& scene,
+std::vector<TlasCandidate> tlas_candidates(const scene::Scene& scene,
                                            std::span<const std::int32_t> blas_of_group);
 
 struct TlasInstancePlan {
@@ -107,7 +107,8 @@ struct PosedBlasPlan {
 // geometry's engine mesh has motion streams (`meshes[m].motion`) and every geometry
 // is a GPU instance of that node (`scene_instances`: scene instance per GPU
 // instance). Empty for static scenes.
-std::vector<PosedBlasPlan> plan_posed_blas(const Scene& scene, std::span<const GpuMesh> meshes,
+std::vector<PosedBlasPlan> plan_posed_blas(const scene::Scene& scene,
+                                           std::span<const GpuMesh> meshes,
                                            std::span<const std::uint32_t> scene_instances,
                                            std::span<const BlasPlan> plans);
 

@@ -22,7 +22,7 @@ SceneState::~SceneState() {
     gpu.reset();
 }
 
-void SceneState::load(const Scene& source, std::unique_ptr<GpuScene> gpu_scene,
+void SceneState::load(const scene::Scene& source, std::unique_ptr<GpuScene> gpu_scene,
                       const SceneSetup& scene_setup) {
     setup = scene_setup;
     gpu = std::move(gpu_scene);
@@ -100,7 +100,7 @@ std::optional<std::vector<std::uint8_t>> SceneState::take_visibility_change() {
     const std::vector<bool>& given = animated_hidden_.empty() ? asked : merged;
     if (given == hidden_given_) return std::nullopt;
     hidden_given_ = given;
-    hidden_nodes_ = hidden_subtrees(nodes_, given);
+    hidden_nodes_ = scene::hidden_subtrees(nodes_, given);
     tlas_visibility = false;
     ++visibility_version; // the path tracer's accumulation starts over
     return hidden_instances();

@@ -25,8 +25,8 @@ namespace sherpa::render {
 // What lighting and camera resolution read of the loaded scene (no whole Scene kept).
 struct SceneLights {
     SceneCameras cameras; // bounds (the GPU scene's when valid) and the file's cameras
-    std::vector<Light> lights;
-    std::vector<PlacedLight> placed_lights;
+    std::vector<scene::Light> lights;
+    std::vector<scene::PlacedLight> placed_lights;
 };
 
 class SceneState {
@@ -39,7 +39,8 @@ public:
 
     // `gpu_scene` (made from `source`) becomes the loaded scene, set up as `setup` says;
     // with RendererOptions::ray_tracing its acceleration structures are built here.
-    void load(const Scene& source, std::unique_ptr<GpuScene> gpu_scene, const SceneSetup& setup);
+    void load(const scene::Scene& source, std::unique_ptr<GpuScene> gpu_scene,
+              const SceneSetup& setup);
     // The scene leaves (frames using it must be complete).
     void unload();
     // The environment (frames using the old one must be complete); null: none.
@@ -57,8 +58,8 @@ public:
     // applied last and change materials now or did before, the materials to upload
     // (GpuMaterials::update() through update_scene_materials()); nullopt otherwise. A
     // file that animates no property keeps no copies and costs one comparison.
-    std::optional<std::vector<MaterialInstance>>
-    animate(const std::vector<AnimatedProperty>& values);
+    std::optional<std::vector<scene::MaterialInstance>>
+    animate(const std::vector<scene::AnimatedProperty>& values);
 
     gpu::Context& context;
     gpu::ResourceManager& resources;
@@ -82,7 +83,7 @@ public:
     std::uint64_t material_generation = 0;
     // KHR_materials_variants: the loaded scene's mappings and the variant both renderers
     // draw now (SceneChanges::set_variant()).
-    MaterialVariants variants;
+    scene::MaterialVariants variants;
     std::int32_t variant = -1;
     // The split-sum table every environment reads (made with the first, freed with the
     // last); before `environment`, which reads it.
@@ -93,21 +94,21 @@ public:
     std::uint64_t environment_generation = 0; // counts set_environment()
 
 private:
-    void load_animated(const Scene& source);
+    void load_animated(const scene::Scene& source);
 
     // KHR_animation_pointer: the loaded values (copies only for a file that animates
     // properties), the values applied last, the nodes they hide (KHR_node_visibility's
     // loaded values before any animation), whether the last values changed materials.
-    std::vector<MaterialInstance> base_materials_;
-    std::vector<Light> base_lights_;
-    std::vector<Camera> base_cameras_;
+    std::vector<scene::MaterialInstance> base_materials_;
+    std::vector<scene::Light> base_lights_;
+    std::vector<scene::Camera> base_cameras_;
     std::vector<bool> base_visible_; // per node
-    std::vector<AnimatedProperty> animated_;
+    std::vector<scene::AnimatedProperty> animated_;
     std::vector<bool> animated_hidden_;
     bool materials_animated_ = false;
     // Visibility: the loaded scene's nodes (the subtree rule), the node of each GPU
     // instance, the mask last applied (as given) and its subtree-expanded form.
-    std::vector<Node> nodes_;
+    std::vector<scene::Node> nodes_;
     std::vector<std::uint32_t> instance_node_;
     std::vector<bool> hidden_given_, hidden_nodes_;
 };

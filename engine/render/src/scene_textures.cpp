@@ -11,17 +11,17 @@ namespace sherpa::render {
 
 namespace {
 
-VkSamplerCreateInfo sampler_info(const SamplerDesc& d, const gpu::DeviceInfo& device) {
-    auto filter = [](Filter f) {
-        return f == Filter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
+VkSamplerCreateInfo sampler_info(const scene::SamplerDesc& d, const gpu::DeviceInfo& device) {
+    auto filter = [](scene::Filter f) {
+        return f == scene::Filter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
     };
-    auto address = [](AddressMode m) {
+    auto address = [](scene::AddressMode m) {
         switch (m) {
-        case AddressMode::MirroredRepeat:
+        case scene::AddressMode::MirroredRepeat:
             return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
-        case AddressMode::ClampToEdge:
+        case scene::AddressMode::ClampToEdge:
             return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-        case AddressMode::Repeat:
+        case scene::AddressMode::Repeat:
             break;
         }
         return VK_SAMPLER_ADDRESS_MODE_REPEAT;
@@ -32,7 +32,7 @@ VkSamplerCreateInfo sampler_info(const SamplerDesc& d, const gpu::DeviceInfo& de
     // Trilinear filtering doubles the texel fetches of every sample; on a CPU
     // rasterizer (lavapipe) that is the largest cost of a frame, so CPU devices
     // filter within the nearest mip level. GPUs get the sampler as glTF asks.
-    si.mipmapMode = d.mipmap_mode == MipmapMode::Nearest || device.is_cpu()
+    si.mipmapMode = d.mipmap_mode == scene::MipmapMode::Nearest || device.is_cpu()
                         ? VK_SAMPLER_MIPMAP_MODE_NEAREST
                         : VK_SAMPLER_MIPMAP_MODE_LINEAR;
     si.addressModeU = address(d.wrap_u);
@@ -41,7 +41,7 @@ VkSamplerCreateInfo sampler_info(const SamplerDesc& d, const gpu::DeviceInfo& de
     si.maxLod = d.max_lod;
     // Anisotropy costs many texel fetches per sample on a CPU rasterizer; GPUs get 8x.
     if (device.anisotropy && !device.is_cpu() && d.max_lod > 0.0f &&
-        d.min_filter == Filter::Linear) {
+        d.min_filter == scene::Filter::Linear) {
         si.anisotropyEnable = VK_TRUE;
         si.maxAnisotropy = std::min(8.0f, device.max_anisotropy);
     }
@@ -50,7 +50,7 @@ VkSamplerCreateInfo sampler_info(const SamplerDesc& d, const gpu::DeviceInfo& de
 
 // A set prepared for another scene or device, or whose levels were released after an
 // earlier upload, would create invalid images: refuse it.
-void check_prepared(const tex::PreparedTexture& t, const Scene& scene,
+void check_prepared(const tex::PreparedTexture& t, const scene::Scene& scene,
                     const gpu::DeviceInfo& device) {
     const std::string what =
         "prepared texture '" + t.source + "' (" + std::string(tex::role_name(t.role)) + ")";
@@ -102,7 +102,7 @@ tex::PipelineOptions texture_pipeline_options(const TextureSettings& settings) {
 }
 
 SceneTextures::SceneTextures(gpu::ResourceManager& resources, gpu::BindlessTable& table,
-                             const Scene& scene,
+                             const scene::Scene& scene,
                              std::shared_ptr<const tex::PreparedTextureSet> prepared,
                              MissingTextures missing)
     : resources_(resources), table_(table), prepared_(std::move(prepared)), missing_(missing) {
@@ -116,12 +116,12 @@ SceneTextures::SceneTextures(gpu::ResourceManager& resources, gpu::BindlessTable
     }
 }
 
-void SceneTextures::upload(const Scene& scene) {
+void SceneTextures::upload(const scene::Scene& scene) {
     // Samplers: one per distinct description (glTF default included).
-    std::vector<SamplerDesc> descs;
+    std::vector<scene::SamplerDesc> descs;
     std::vector<std::uint32_t> sampler_of_texture(scene.textures.size());
     for (std::size_t t = 0; t < scene.textures.size(); ++t) {
-        const SamplerDesc d = scene.sampler_of(scene.textures[t]);
+        const scene::SamplerDesc d = scene.sampler_of(scene.textures[t]);
         auto it = std::find(descs.begin(), descs.end(), d);
         if (it == descs.end()) {
             descs.push_back(d);
@@ -137,7 +137,7 @@ void SceneTextures::upload(const Scene& scene) {
 
     const std::vector<tex::PreparedTexture>& records = prepared_->textures;
     gpu_.resize(records.size());
-    slots_.assign(records.size(), kTextureSentinel);
+    slots_.assign(records.size(), scene::kTextureSentinel);
     gpu::UploadBatch batch(resources_);
     for (std::size_t i = 0; i < records.size(); ++i) {
         const tex::PreparedTexture& t = records[i];
@@ -170,7 +170,7 @@ void SceneTextures::upload(const Scene& scene) {
 
 void SceneTextures::release() {
     for (std::uint32_t s : slots_)
-        if (s != kTextureSentinel) table_.remove(s);
+        if (s != scene::kTextureSentinel) table_.remove(s);
     for (const auto& [key, s] : extra_slots_) table_.remove(s);
     for (GpuTexture& g : gpu_) resources_.images().destroy(g.image);
     for (gpu::SamplerHandle& h : samplers_) resources_.images().destroy(h);
@@ -189,40 +189,42 @@ std::size_t SceneTextures::image_count() const {
         gpu_.begin(), gpu_.end(), [](const GpuTexture& g) { return g.image.valid(); }));
 }
 
-std::uint32_t SceneTextures::slot(std::int32_t texture, TextureRole role) const {
+std::uint32_t SceneTextures::slot(std::int32_t texture, scene::TextureRole role) const {
     if (auto it = extra_slots_.find({texture, role}); it != extra_slots_.end()) return it->second;
     const std::int32_t i = prepared_->find(texture, role);
-    return i < 0 || std::size_t(i) >= slots_.size() ? kTextureSentinel : slots_[std::size_t(i)];
+    return i < 0 || std::size_t(i) >= slots_.size() ? scene::kTextureSentinel
+                                                    : slots_[std::size_t(i)];
 }
 
-std::uint32_t SceneTextures::field_slot(const TextureSlot& s, TextureRole role,
+std::uint32_t SceneTextures::field_slot(const scene::TextureSlot& s, scene::TextureRole role,
                                         std::uint32_t fallback) const {
     const std::int32_t i = s.present() ? prepared_->find(s.texture, role) : -1;
     const bool failed = i >= 0 && prepared_->textures[std::size_t(i)].failed;
     std::uint32_t value = i >= 0 && std::size_t(i) < slots_.size() && !failed
                               ? slots_[std::size_t(i)]
-                              : kTextureSentinel; // as tex::resolve_material
+                              : scene::kTextureSentinel; // as tex::resolve_material
     if (s.present())
         if (auto it = extra_slots_.find({s.texture, role}); it != extra_slots_.end())
             value = it->second;
-    if (value != kTextureSentinel) return value;
+    if (value != scene::kTextureSentinel) return value;
     // A present slot whose texture failed draws the checker (colour slots) when asked.
-    return role == kRoleColor && missing_ == MissingTextures::Checker && failed
+    return role == scene::kRoleColor && missing_ == MissingTextures::Checker && failed
                ? gpu::kCheckerTexture
                : fallback;
 }
 
-GPUMaterialData SceneTextures::material(const MaterialInstance& m) const {
-    GPUMaterialData g = tex::resolve_material(m, *prepared_, slots_);
-    auto field = [&](std::uint32_t& value, const TextureSlot& s, TextureRole role,
+scene::GPUMaterialData SceneTextures::material(const scene::MaterialInstance& m) const {
+    scene::GPUMaterialData g = tex::resolve_material(m, *prepared_, slots_);
+    auto field = [&](std::uint32_t& value, const scene::TextureSlot& s, scene::TextureRole role,
                      std::uint32_t fallback) { value = field_slot(s, role, fallback); };
     // Emissive without a texture is the factor alone (glTF): white when it emits.
     const bool emits = glm::any(glm::greaterThan(m.emissive_factor, glm::vec3(0.0f)));
-    field(g.base_color_tex, m.base_color, kRoleColor, gpu::kWhiteTexture);
-    field(g.emissive_tex, m.emissive, kRoleColor, emits ? gpu::kWhiteTexture : gpu::kBlackTexture);
-    field(g.metallic_roughness_tex, m.metallic_roughness, kRoleLinear, gpu::kWhiteTexture);
-    field(g.occlusion_tex, m.occlusion, kRoleLinear, gpu::kWhiteTexture);
-    field(g.normal_tex, m.normal, kRoleNormal, gpu::kFlatNormalTexture);
+    field(g.base_color_tex, m.base_color, scene::kRoleColor, gpu::kWhiteTexture);
+    field(g.emissive_tex, m.emissive, scene::kRoleColor,
+          emits ? gpu::kWhiteTexture : gpu::kBlackTexture);
+    field(g.metallic_roughness_tex, m.metallic_roughness, scene::kRoleLinear, gpu::kWhiteTexture);
+    field(g.occlusion_tex, m.occlusion, scene::kRoleLinear, gpu::kWhiteTexture);
+    field(g.normal_tex, m.normal, scene::kRoleNormal, gpu::kFlatNormalTexture);
     return g;
 }
 

@@ -56,7 +56,8 @@ ShadowPass::~ShadowPass() {
     resources_.images().destroy(sampler_);
 }
 
-bool ShadowPass::needs_render(const ShadowCascades& c, std::uint64_t scene_generation, bool cache) {
+bool ShadowPass::needs_render(const scene::ShadowCascades& c, std::uint64_t scene_generation,
+                              bool cache) {
     // The cascades depend only on these inputs: unchanged means the map is reusable.
     const std::uint32_t count = c.count;
     std::vector<std::uint8_t> key(sizeof(c.view_proj) + sizeof(scene_generation) + sizeof(count));
@@ -106,15 +107,16 @@ void ShadowPass::record(FrameContext& f) {
         set_viewport(cmd, res, res);
         // Standard Z for the light; slope-scaled bias against acne on grazing faces.
         set_depth(cmd, VK_COMPARE_OP_LESS, true, 1.0f, 1.5f);
-        CullStats& tally = f.slot.culling.cascade_stats(c);
+        scene::CullStats& tally = f.slot.culling.cascade_stats(c);
         // Casters cull as the camera does: a single-sided surface that the camera
         // cannot see from its back blocks no light arriving at its back either (else
         // TextureSettingsTest's hidden wrong-way polygon shadows the test behind it);
         // double-sided surfaces cast from both sides. The light's viewport is flipped
         // like the camera's, so front faces wind the same way.
         const DrawView view = cascade_view(f, c);
-        draw_groups(f, DrawPipeline{PipelineId::ShadowOpaque}, AlphaMode::Opaque, view, tally);
-        draw_groups(f, DrawPipeline{PipelineId::ShadowMask}, AlphaMode::Mask, view, tally);
+        draw_groups(f, DrawPipeline{PipelineId::ShadowOpaque}, scene::AlphaMode::Opaque, view,
+                    tally);
+        draw_groups(f, DrawPipeline{PipelineId::ShadowMask}, scene::AlphaMode::Mask, view, tally);
         vkCmdEndRendering(cmd);
     }
     gpu::transition(

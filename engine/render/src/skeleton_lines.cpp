@@ -13,15 +13,15 @@ bool finite(const glm::vec3& p) {
 }
 } // namespace
 
-void append_skeleton(std::vector<GPULineVertex>& out, std::span<const Skin> skins,
-                     std::span<const Node> nodes, std::span<const glm::mat4> world,
+void append_skeleton(std::vector<GPULineVertex>& out, std::span<const scene::Skin> skins,
+                     std::span<const scene::Node> nodes, std::span<const glm::mat4> world,
                      std::optional<std::uint32_t> selected_joint, float joint_size) {
     auto position = [&](std::uint32_t node) { return glm::vec3(world[node][3]); };
     auto line = [&](glm::vec3 a, glm::vec3 b, glm::vec4 color) {
         out.push_back({glm::vec4(a, 1.0f), color});
         out.push_back({glm::vec4(b, 1.0f), color});
     };
-    for (const Skin& skin : skins)
+    for (const scene::Skin& skin : skins)
         for (const std::uint32_t joint : skin.joints) {
             if (joint >= world.size() || joint >= nodes.size()) continue;
             const glm::vec3 p = position(joint);

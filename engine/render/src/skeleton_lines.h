@@ -21,8 +21,8 @@ inline const glm::vec4 kJointColor{0.1f, 0.85f, 1.0f, 1.0f};  // cyan
 // Appends the line list. `world` holds one matrix per node (Pose::world or
 // Scene::node_world); joints outside it, and non-finite positions, are skipped.
 // `joint_size`: half the length of a joint cross's arms (world units).
-void append_skeleton(std::vector<GPULineVertex>& out, std::span<const Skin> skins,
-                     std::span<const Node> nodes, std::span<const glm::mat4> world,
+void append_skeleton(std::vector<GPULineVertex>& out, std::span<const scene::Skin> skins,
+                     std::span<const scene::Node> nodes, std::span<const glm::mat4> world,
                      std::optional<std::uint32_t> selected_joint, float joint_size);
 
 } // namespace sherpa::render

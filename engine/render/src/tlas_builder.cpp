@@ -25,7 +25,7 @@ VkTransformMatrixKHR to_vk(const glm::mat4& m) {
 
 } // namespace
 
-void SceneAccelerationStructures::update_instances(const Scene& scene,
+void SceneAccelerationStructures::update_instances(const scene::Scene& scene,
                                                    const std::vector<bool>& hidden_nodes) {
     candidates_ = tlas_candidates(scene, blas_of_mesh_);
     if (posed_) {

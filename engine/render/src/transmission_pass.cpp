@@ -161,13 +161,13 @@ void TransmissionPass::record(FrameContext& f) {
                    f.context, f.resources, f.scene,      f.culling,   f.lighting};
     g.environment = f.environment;
     g.cascades = f.cascades;
-    CullStats tally;
+    scene::CullStats tally;
     set_depth(f.cmd, VK_COMPARE_OP_GREATER, true);
     const auto view = static_cast<std::uint32_t>(DebugView::Lit);
-    draw_groups(g, DrawPipeline{PipelineId::Count, view, false}, AlphaMode::Opaque, camera_view(g),
-                tally);
-    draw_groups(g, DrawPipeline{PipelineId::Count, view, false}, AlphaMode::Mask, camera_view(g),
-                tally);
+    draw_groups(g, DrawPipeline{PipelineId::Count, view, false}, scene::AlphaMode::Opaque,
+                camera_view(g), tally);
+    draw_groups(g, DrawPipeline{PipelineId::Count, view, false}, scene::AlphaMode::Mask,
+                camera_view(g), tally);
     vkCmdEndRendering(f.cmd);
 
     // The mip chain by successive linear blits, each level from the one above.

@@ -79,11 +79,11 @@ std::string overlays() {
 
 std::string mesh_flags() {
     std::ostringstream o;
-    const std::pair<VertexAttribute, const char*> streams[] = {
-        {VertexAttribute::Position, "POSITION"}, {VertexAttribute::Normal, "NORMAL"},
-        {VertexAttribute::Tangent, "TANGENT"},   {VertexAttribute::TexCoord0, "UV0"},
-        {VertexAttribute::TexCoord1, "UV1"},     {VertexAttribute::Color0, "COLOR"}};
-    static_assert(std::size(streams) == kVertexAttributeCount);
+    const std::pair<scene::VertexAttribute, const char*> streams[] = {
+        {scene::VertexAttribute::Position, "POSITION"}, {scene::VertexAttribute::Normal, "NORMAL"},
+        {scene::VertexAttribute::Tangent, "TANGENT"},   {scene::VertexAttribute::TexCoord0, "UV0"},
+        {scene::VertexAttribute::TexCoord1, "UV1"},     {scene::VertexAttribute::Color0, "COLOR"}};
+    static_assert(std::size(streams) == scene::kVertexAttributeCount);
     for (auto [a, name] : streams) o << "const uint HAS_" << name << " = 1u << " << u(a) << ";\n";
     o << "const uint MESH_LINES = " << hex(render::kMeshLinesBit) << "; // topology bits\n";
     o << "const uint MESH_POINTS = " << hex(render::kMeshPointsBit) << ";\n";
@@ -133,19 +133,20 @@ std::vector<Section> sections() {
     textures << "const uint TEX_WHITE = " << gpu::kWhiteTexture << "u;\n"
              << "const uint TEX_FLAT_NORMAL = " << gpu::kFlatNormalTexture << "u;\n"
              << "const uint TEX_BLACK = " << gpu::kBlackTexture << "u;\n";
-    alpha << "#define SHERPA_ALPHA_OPAQUE " << u(AlphaMode::Opaque) << "u\n"
-          << "#define SHERPA_ALPHA_MASK " << u(AlphaMode::Mask) << "u\n"
-          << "#define SHERPA_ALPHA_BLEND " << u(AlphaMode::Blend) << "u\n";
-    cull << "#define CULL_SPHERE " << u(CullMethod::Sphere) << "u\n"
-         << "#define CULL_PVERTEX " << u(CullMethod::PVertex) << "u\n"
-         << "#define CULL_EXACT " << u(CullMethod::Exact) << "u\n"
+    alpha << "#define SHERPA_ALPHA_OPAQUE " << u(scene::AlphaMode::Opaque) << "u\n"
+          << "#define SHERPA_ALPHA_MASK " << u(scene::AlphaMode::Mask) << "u\n"
+          << "#define SHERPA_ALPHA_BLEND " << u(scene::AlphaMode::Blend) << "u\n";
+    cull << "#define CULL_SPHERE " << u(scene::CullMethod::Sphere) << "u\n"
+         << "#define CULL_PVERTEX " << u(scene::CullMethod::PVertex) << "u\n"
+         << "#define CULL_EXACT " << u(scene::CullMethod::Exact) << "u\n"
          << "#define CULL_INVALID_BIT " << hex(render::kCullInvalidBit) << "\n"
          << "#define CULL_MAX_SAT_AXES " << render::kCullMaxSatAxes << "\n";
     return {
         {"sherpa_frame_limits.glsl", "sherpa::render::kMaxLights, kMaxCascades, kShadowCascades",
          limits.str()},
         {"sherpa_mesh_flags.glsl",
-         "push constant mesh_flags: stream bits (sherpa::VertexAttribute), provenance and glyph "
+         "push constant mesh_flags: stream bits (sherpa::scene::VertexAttribute), provenance and "
+         "glyph "
          "shifts (gpu_structs.h)",
          mesh_flags()},
         {"sherpa_views.glsl", "debug views, sherpa::render::kDebugViews (debug_views.h)", views()},
@@ -159,9 +160,10 @@ std::vector<Section> sections() {
          "const uint NO_EXTENSION = " + hex(render::kNoExtension) + ";\n"},
         {"sherpa_default_textures.glsl", "default bindless textures, sherpa::gpu::kWhiteTexture...",
          textures.str()},
-        {"sherpa_alpha_modes.glsl", "sherpa::AlphaMode (scene/material.h)", alpha.str()},
+        {"sherpa_alpha_modes.glsl", "sherpa::scene::AlphaMode (scene/material.h)", alpha.str()},
         {"sherpa_cull.glsl",
-         "sherpa::CullMethod (scene/culling.h), sherpa::render::kCullInvalidBit, kCullMaxSatAxes",
+         "sherpa::scene::CullMethod (scene/culling.h), sherpa::render::kCullInvalidBit, "
+         "kCullMaxSatAxes",
          cull.str()},
     };
 }

@@ -7,7 +7,7 @@
 
 #include <tiny_gltf.h>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 // The declared bound in the decoded domain: glTF states min/max of normalized
@@ -85,4 +85,4 @@ std::string describe_range_violation(const AccessorRangeViolation& v) {
            "); glTF requires exact bounds, the buffer may be corrupt";
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -9,7 +9,7 @@
 
 #include <tiny_gltf.h>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 std::uint32_t component_size(int component_type) {
@@ -344,4 +344,4 @@ AccessorSource describe_accessor(const tinygltf::Model& model, int index) {
     return s;
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

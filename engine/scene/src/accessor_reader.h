@@ -13,7 +13,7 @@ namespace tinygltf {
 class Model;
 }
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 // Decodes accessor `index` into `components` floats per element, applying glTF's
 // normalisation rules and sparse substitution. `where` is the JSON path used in
@@ -52,4 +52,4 @@ std::string describe_range_violation(const AccessorRangeViolation& v);
 // which are never vertex attributes or indices.
 std::uint32_t type_components(int type);
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

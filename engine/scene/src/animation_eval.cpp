@@ -6,7 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-namespace sherpa {
+namespace sherpa::scene {
 namespace {
 
 glm::quat normalised(glm::quat q) {
@@ -165,9 +165,9 @@ Pose evaluate_pose(const Scene& scene, std::int32_t animation, double time) {
     return pose;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene
 
-namespace sherpa {
+namespace sherpa::scene {
 
 std::string_view to_string(Interpolation i) {
     switch (i) {
@@ -195,4 +195,4 @@ std::string_view to_string(AnimationPath p) {
     return "?";
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -11,7 +11,7 @@
 #include <array>
 #include <charconv>
 
-namespace sherpa {
+namespace sherpa::scene {
 namespace {
 
 struct Named {
@@ -275,4 +275,4 @@ std::vector<std::uint32_t> apply_animated_properties(std::span<const AnimatedPro
     return changed;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

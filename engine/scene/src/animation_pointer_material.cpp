@@ -10,7 +10,7 @@
 
 #include <algorithm>
 
-namespace sherpa {
+namespace sherpa::scene {
 namespace {
 
 constexpr const char* kEmissiveStrength = "KHR_materials_emissive_strength";
@@ -356,4 +356,4 @@ bool apply_material_property(const AnimatedProperty& p, MaterialInstance& m) {
     return true;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 // Why `rest` (the pointer after "/materials/M/") cannot be animated on `m` (empty: it
 // can, `out.property` and `out.slot` set).
@@ -20,4 +20,4 @@ std::string material_pointer_path(const AnimatedTarget& target);
 // Writes one material value into `m`; false when `p` is not a material property.
 bool apply_material_property(const AnimatedProperty& p, MaterialInstance& m);
 
-} // namespace sherpa
+} // namespace sherpa::scene

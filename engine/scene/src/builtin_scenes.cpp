@@ -11,7 +11,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtx/quaternion.hpp>
 
-namespace sherpa {
+namespace sherpa::scene {
 namespace {
 
 using detail::make_box;
@@ -263,4 +263,4 @@ LoadResult make_builtin_scene(std::string_view spec) {
     return {std::move(scene), {}};
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

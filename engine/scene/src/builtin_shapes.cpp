@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
@@ -191,4 +191,4 @@ ImageRecord make_disc_mask(std::uint32_t size, std::uint32_t discs_per_side) {
     return img;
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

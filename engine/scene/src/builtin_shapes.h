@@ -3,7 +3,7 @@
 // is chosen to exercise something users debug: UV seams, mirrored UV islands.
 #include <sherpa/scene/scene.h>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 // Ground plane in XZ, facing +Y, with `uv_tiles` repeats of the UV square.
 Mesh make_plane(float size, std::uint32_t segments, float uv_tiles);
@@ -22,4 +22,4 @@ ImageRecord make_checker(std::uint32_t size, std::uint32_t cells);
 // Base colour with round holes: alpha 0 outside the discs, for alpha-mask tests.
 ImageRecord make_disc_mask(std::uint32_t size, std::uint32_t discs_per_side);
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -6,7 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-namespace sherpa {
+namespace sherpa::scene {
 namespace {
 
 bool parse_floats(std::string_view s, float* out, int n) {
@@ -117,4 +117,4 @@ bool parse_camera_spec(std::string_view text, CameraSpec& out, std::string& erro
     return false;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <optional>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 // a + b, or nullopt when it does not fit in std::size_t.
 constexpr std::optional<std::size_t> checked_add(std::size_t a, std::size_t b) {
@@ -26,4 +26,4 @@ constexpr bool range_fits(std::size_t offset, std::size_t length, std::size_t si
     return offset <= size && length <= size - offset;
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

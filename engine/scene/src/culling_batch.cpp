@@ -7,7 +7,7 @@
 #include <immintrin.h>
 #include <limits>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 void BoxesSoA::assign(std::span<const core::Aabb> boxes) {
     for (auto* v : {&min_x, &min_y, &min_z, &max_x, &max_y, &max_z}) v->resize(boxes.size());
@@ -268,4 +268,4 @@ CullCounts cull_boxes(const Frustum& f, const BoxesSoA& boxes, CullMethod method
     return counts;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

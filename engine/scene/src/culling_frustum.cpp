@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 std::string_view to_string(CullMethod m) {
     switch (m) {
@@ -177,4 +177,4 @@ bool exact_visible(const Frustum& f, const core::Aabb& box) {
     return true;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -7,7 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 BoxesSoA instance_boxes(const Scene& scene) {
     std::vector<core::Aabb> boxes(scene.instances.size());
@@ -130,4 +130,4 @@ PassResult cull_pass(const CullInput& input, const Frustum& frustum, glm::vec3 e
     return r;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -12,7 +12,7 @@
 #include <draco/attributes/point_attribute.h>
 #include <tiny_gltf.h>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 template <typename T> T load(const unsigned char* p) {
@@ -193,4 +193,4 @@ std::size_t append_draco_attribute(const draco::PointAttribute& att, std::size_t
     return stride;
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

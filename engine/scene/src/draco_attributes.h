@@ -11,7 +11,7 @@ namespace draco {
 class PointAttribute;
 }
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 // Appends each of `points` points' value of `att` (through Draco's point-to-value
 // map) to `data` as `comps` components of `component_type`, each row padded to a
@@ -25,4 +25,4 @@ std::size_t append_draco_attribute(const draco::PointAttribute& att, std::size_t
                                    int component_type, bool normalized,
                                    std::vector<unsigned char>& data, const std::string& where);
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

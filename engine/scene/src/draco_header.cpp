@@ -3,7 +3,7 @@
 #include <cstring>
 #include <vector>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 constexpr unsigned version(unsigned major, unsigned minor) {
@@ -166,4 +166,4 @@ bool read_draco_counts(std::span<const std::uint8_t> stream, DracoCounts& counts
     return true;
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -16,7 +16,7 @@
 #include <span>
 #include <string>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 enum class DracoMethod : std::uint8_t { Sequential = 0, Edgebreaker = 1 };
 
@@ -39,4 +39,4 @@ struct DracoCounts {
 bool read_draco_counts(std::span<const std::uint8_t> stream, DracoCounts& counts,
                        std::string& error);
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 namespace {
 
@@ -168,4 +168,4 @@ CameraSpec frame_box(const core::Aabb& box, const FramingOptions& options, glm::
     return frame_box_along(box, auto_view_direction(box, front_hint), options);
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

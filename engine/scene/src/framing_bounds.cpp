@@ -7,7 +7,7 @@
 #include <cmath>
 #include <unordered_map>
 
-namespace sherpa {
+namespace sherpa::scene {
 namespace {
 
 core::Aabb bounds_of(const Scene& scene, const Pose* pose, bool skip_backdrop) {
@@ -101,4 +101,4 @@ core::Aabb framing_bounds(const Scene& scene, const Pose* pose) {
     return subject.valid() ? subject : bounds_of(scene, pose, false);
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -1,4 +1,4 @@
-// glTF animations -> sherpa::Animation. Times must be finite and strictly increasing,
+// glTF animations -> sherpa::scene::Animation. Times must be finite and strictly increasing,
 // values finite and as many as the times and interpolation require: anything else is an
 // ImportError naming the sampler, so evaluation never meets NaN or an unsorted key list.
 #include "accessor_reader.h"
@@ -12,7 +12,7 @@
 
 #include <tiny_gltf.h>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 AnimationSampler read_sampler(ImportContext& ctx, const tinygltf::AnimationSampler& src,
@@ -237,4 +237,4 @@ void import_animations(ImportContext& ctx) {
     }
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

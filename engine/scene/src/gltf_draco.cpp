@@ -17,7 +17,7 @@
 #include <draco/mesh/mesh.h>
 #include <tiny_gltf.h>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 constexpr const char* kCodec = "KHR_draco_mesh_compression";
@@ -373,4 +373,4 @@ void attach_draco_compression(std::span<const DecodedDracoPrimitive> decoded, Sc
                 info.compression = d.stats;
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

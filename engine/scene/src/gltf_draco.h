@@ -16,7 +16,7 @@ namespace tinygltf {
 class Model;
 }
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 struct DecodedDracoPrimitive {
     std::uint32_t mesh = 0, primitive = 0;
@@ -42,4 +42,4 @@ std::vector<DecodedDracoPrimitive> decode_draco_primitives(tinygltf::Model& mode
 // Sets PrimitiveInfo::compression of each decoded primitive.
 void attach_draco_compression(std::span<const DecodedDracoPrimitive> decoded, Scene& scene);
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -6,7 +6,7 @@
 #include <sherpa/scene/pointer_target.h>
 #include <sherpa/scene/scene.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 namespace {
 
 // The one table: flipping an extension to supported is one line here.
@@ -137,4 +137,4 @@ std::vector<std::string> unsupported_extension_warnings(const Scene& scene) {
     return out;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

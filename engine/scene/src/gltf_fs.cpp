@@ -7,7 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 std::string kind_of(mode_t mode) {
@@ -90,4 +90,4 @@ tinygltf::FsCallbacks safe_fs_callbacks() {
     return fs;
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -9,7 +9,7 @@
 
 #include <tiny_gltf.h>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 // Reads a whole regular file. On failure returns false and sets `error` to the
 // problem in words, without the path ("is a directory, not a file", "cannot open:
@@ -19,4 +19,4 @@ bool read_regular_file(const std::string& path, std::vector<std::uint8_t>& out, 
 // tinygltf callbacks that read through read_regular_file and expand nothing.
 tinygltf::FsCallbacks safe_fs_callbacks();
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -10,7 +10,7 @@
 
 #include <tiny_gltf.h>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 std::vector<std::uint32_t> to_triangle_list(PrimitiveMode mode,
@@ -382,4 +382,4 @@ void import_meshes(ImportContext& ctx) {
     }
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

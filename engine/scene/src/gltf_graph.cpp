@@ -8,7 +8,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <tiny_gltf.h>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 namespace {
 
@@ -248,4 +248,4 @@ void import_nodes_and_scenes(ImportContext& ctx) {
     }
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

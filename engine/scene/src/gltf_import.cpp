@@ -26,7 +26,7 @@
 
 #include <tiny_gltf.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 namespace {
 
 // The vertex attributes the engine draws with; any other is reported.
@@ -309,4 +309,4 @@ LoadResult import_gltf(const std::string& path, const LoadOptions& options) {
     return failed;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -13,7 +13,7 @@
 
 #include <tiny_gltf.h>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 constexpr const char* kExtension = "EXT_mesh_gpu_instancing";
@@ -189,4 +189,4 @@ void import_gpu_instancing(ImportContext& ctx) {
     }
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -3,7 +3,7 @@
 #include <cstring>
 #include <string_view>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 using nlohmann::json;
@@ -266,4 +266,4 @@ std::vector<std::uint8_t> with_json(const json& root, std::span<const std::uint8
     return out;
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -16,7 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 // Integral floats in integer-valued glTF properties become integers; true when any did.
 bool normalize_integers(nlohmann::json& root);
@@ -43,4 +43,4 @@ std::optional<nlohmann::json> with_channel_nodes(const nlohmann::json& root);
 std::vector<std::uint8_t> with_json(const nlohmann::json& root, std::span<const std::uint8_t> file,
                                     bool glb);
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

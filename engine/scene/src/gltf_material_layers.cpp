@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 // A number property of an extension object: `fallback` where absent; NaN where it is
@@ -140,4 +140,4 @@ MaterialIridescence read_iridescence(ImportContext& ctx, const tinygltf::Value& 
     return i;
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

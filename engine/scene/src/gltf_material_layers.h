@@ -6,7 +6,7 @@
 // input").
 #include "gltf_material_values.h"
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 // `where` is the material's path ("materials[3]").
 MaterialClearcoat read_clearcoat(ImportContext& ctx, const tinygltf::Value& e,
@@ -20,4 +20,4 @@ MaterialAnisotropy read_anisotropy(ImportContext& ctx, const tinygltf::Value& e,
 MaterialIridescence read_iridescence(ImportContext& ctx, const tinygltf::Value& e,
                                      const std::string& where);
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -8,7 +8,7 @@
 
 #include <tiny_gltf.h>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 // A textureInfo inside an extension object; an absent one is an empty slot.
 TextureSlot read_value_slot(ImportContext& ctx, const tinygltf::Value& info,
@@ -22,4 +22,4 @@ glm::vec4 vec_or(const tinygltf::Value& obj, const char* key, glm::vec4 fallback
 void read_volume_extensions(ImportContext& ctx, const tinygltf::ExtensionMap& extensions,
                             MaterialInstance& m, const std::string& where);
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

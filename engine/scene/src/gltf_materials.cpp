@@ -11,7 +11,7 @@
 
 #include <tiny_gltf.h>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 float number_or(const tinygltf::Value& obj, const char* key, float fallback) {
@@ -428,4 +428,4 @@ void import_material(ImportContext& ctx, std::size_t i) {
     }
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

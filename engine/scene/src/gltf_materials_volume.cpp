@@ -9,7 +9,7 @@
 #include <cmath>
 #include <limits>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 // One number of an extension object: absent gives `fallback` silently; not a number,
@@ -127,4 +127,4 @@ void read_volume_extensions(ImportContext& ctx, const tinygltf::ExtensionMap& ex
     }
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

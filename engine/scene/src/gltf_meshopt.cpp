@@ -14,7 +14,7 @@
 
 #include <tiny_gltf.h>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 constexpr const char* kCodecs[] = {"EXT_meshopt_compression", "KHR_meshopt_compression"};
@@ -114,7 +114,7 @@ meshopt::Mode mode_of(const Stream& s) {
 
 // Why the stream cannot be decoded, or empty once `out` holds its decoded (and
 // filtered) bytes. `out` is allocated only for a stream long enough to hold
-// `count` elements at its version (meshopt::minimum_stream_size): the view's declared
+// `count` elements at its version (scene::meshopt::minimum_stream_size): the view's declared
 // byteLength may claim gigabytes that its fallback buffer does not have.
 std::string decode_stream(std::vector<unsigned char>& out, const Stream& s, std::size_t size,
                           std::span<const std::uint8_t> data) {
@@ -274,4 +274,4 @@ void attach_meshopt_compression(const tinygltf::Model& model, std::span<const De
     }
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

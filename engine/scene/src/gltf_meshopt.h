@@ -15,7 +15,7 @@ namespace tinygltf {
 class Model;
 }
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 // What decoding one compressed bufferView did, for inspection.
 struct DecodedView {
@@ -51,4 +51,4 @@ undecodable_primitives(const tinygltf::Model& model, std::span<const DecodedView
 void attach_meshopt_compression(const tinygltf::Model& model, std::span<const DecodedView> views,
                                 Scene& scene);
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

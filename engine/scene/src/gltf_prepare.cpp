@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 using nlohmann::json;
@@ -84,4 +84,4 @@ std::vector<std::uint8_t> prepared_for_tinygltf(std::span<const std::uint8_t> by
     return with_json(root, bytes, glb); // a .glb keeps its BIN chunk
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

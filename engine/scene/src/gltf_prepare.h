@@ -12,7 +12,7 @@
 #include <span>
 #include <vector>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 inline constexpr const char* kDracoIndicesKey = "sherpa_indices";
 
@@ -20,4 +20,4 @@ inline constexpr const char* kDracoIndicesKey = "sherpa_indices";
 // `bytes` passed validate_gltf_bytes.
 std::vector<std::uint8_t> prepared_for_tinygltf(std::span<const std::uint8_t> bytes);
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

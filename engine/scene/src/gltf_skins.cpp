@@ -14,7 +14,7 @@
 
 #include <tiny_gltf.h>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 std::vector<glm::vec3> read_vec3s(ImportContext& ctx, int accessor, std::uint32_t count,
@@ -274,4 +274,4 @@ void import_default_weights(ImportContext& ctx) {
     }
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -13,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 using Bytes = std::span<const std::uint8_t>;
@@ -359,4 +359,4 @@ std::size_t json_depth_exceeded_at(std::span<const std::uint8_t> text, std::size
     return SIZE_MAX;
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

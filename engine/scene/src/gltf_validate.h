@@ -11,7 +11,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 // Deepest JSON nesting Sherpa parses. Real glTF files nest about 10 levels (extras
 // a few more); tinygltf recurses per level and overflowed at ~20,000.
@@ -54,4 +54,4 @@ std::string check_gltf_document(const nlohmann::json& root);
 // would silently turn into 0 or -1 when mistyped.
 std::string check_gltf_properties(const nlohmann::json& root);
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

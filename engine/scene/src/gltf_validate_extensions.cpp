@@ -6,7 +6,7 @@
 
 #include <string_view>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 constexpr const char* kMeshoptCodecs[] = {"EXT_meshopt_compression", "KHR_meshopt_compression"};
@@ -116,4 +116,4 @@ std::string check_extension_properties(const json& root) {
     return c.error;
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

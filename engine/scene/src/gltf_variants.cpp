@@ -9,7 +9,7 @@
 
 #include <tiny_gltf.h>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 constexpr const char* kExtension = "KHR_materials_variants";
@@ -140,4 +140,4 @@ void import_material_variants(ImportContext& ctx) {
     }
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -4,7 +4,7 @@
 #include <array>
 #include <utility>
 
-namespace sherpa {
+namespace sherpa::scene {
 namespace {
 
 int hex_value(char c) {
@@ -101,4 +101,4 @@ std::string image_location(const Scene& scene, std::int32_t image) {
     return "image " + std::to_string(image);
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

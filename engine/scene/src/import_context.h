@@ -12,7 +12,7 @@ namespace tinygltf {
 class Model;
 }
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 struct ImportContext {
     ImportContext(const tinygltf::Model& m, Scene& s) : model(m), scene(s) {}
@@ -62,4 +62,4 @@ void import_nodes_and_scenes(ImportContext& ctx);
 // EXT_mesh_gpu_instancing rows of each node (after nodes and skins; gltf_instancing.cpp).
 void import_gpu_instancing(ImportContext& ctx);
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

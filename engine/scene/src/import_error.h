@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 struct ImportError : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -24,4 +24,4 @@ inline std::string number_text(double v) {
     return text;
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

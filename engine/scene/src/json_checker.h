@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 inline constexpr std::uint64_t kMaxSafe = (std::uint64_t{1} << 53) - 1; // JSON's exact integers
 inline constexpr std::uint64_t kMaxIndex = 0x7FFFFFFF;                  // what tinygltf's int holds
@@ -90,4 +90,4 @@ struct Checker {
 // checked like the core ones: the problem with its JSON path, or "".
 std::string check_extension_properties(const nlohmann::json& root);
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

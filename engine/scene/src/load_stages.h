@@ -2,7 +2,7 @@
 // Progress and cancellation of load_scene's stages (private to the scene layer).
 #include <sherpa/scene/scene_loader.h>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 // Reports `stage` as started; false when the load has been cancelled.
 bool begin_stage(const LoadOptions& options, LoadStage stage, std::size_t total = 1);
@@ -13,4 +13,4 @@ bool end_stage(const LoadOptions& options, LoadStage stage, std::size_t total = 
 bool tangent_stage(Scene& scene, const LoadOptions& options);
 LoadResult cancelled_result();
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -1,6 +1,6 @@
 #include <sherpa/scene/material_extension_slots.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 bool draws_material_extensions(const MaterialInstance& m) {
     return !m.unlit && !m.specular_glossiness;
@@ -68,4 +68,4 @@ std::uint32_t tangent_uv_set(const MaterialInstance& m) {
     return 0;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -4,7 +4,7 @@
 
 #include <sherpa/scene/scene.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 namespace {
 
 const VariantMeshMapping* mapping_of(const Scene& scene, std::uint32_t mesh) {
@@ -66,4 +66,4 @@ std::uint32_t apply_material_variant(Scene& scene, std::int32_t variant) {
     return changed;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

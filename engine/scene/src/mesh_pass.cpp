@@ -4,7 +4,7 @@
 
 #include <glm/glm.hpp>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 std::uint32_t pipeline_key(AlphaMode mode, bool double_sided, bool mirrored) {
     return static_cast<std::uint32_t>(mode) << 2 | (double_sided ? 2u : 0u) | (mirrored ? 1u : 0u);
@@ -111,4 +111,4 @@ ScenePasses build_mesh_passes(const Scene& scene) {
     return passes;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

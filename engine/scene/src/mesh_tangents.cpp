@@ -9,7 +9,7 @@
 
 #include "tangent_internal.h"
 
-namespace sherpa {
+namespace sherpa::scene {
 namespace {
 
 constexpr std::uint32_t kNone = ~0u;
@@ -243,4 +243,4 @@ void add_tangent_warnings(Scene& scene, const SceneTangentReport& report) {
     }
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

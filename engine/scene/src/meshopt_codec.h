@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <span>
 
-namespace sherpa::meshopt {
+namespace sherpa::scene::meshopt {
 
 enum class Status : std::uint8_t {
     Ok,
@@ -102,4 +102,4 @@ struct StreamReader {
     }
 };
 
-} // namespace sherpa::meshopt
+} // namespace sherpa::scene::meshopt

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstring>
 
-namespace sherpa::meshopt {
+namespace sherpa::scene::meshopt {
 namespace {
 
 template <typename T> T load(const std::uint8_t* p) {
@@ -140,4 +140,4 @@ Result apply_filter(Filter filter, std::span<std::uint8_t> data, std::size_t cou
     return {Status::BadArgument, 0};
 }
 
-} // namespace sherpa::meshopt
+} // namespace sherpa::scene::meshopt

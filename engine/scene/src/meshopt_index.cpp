@@ -11,7 +11,7 @@
 // baselines chosen by its low bit), 4 tail bytes.
 #include "meshopt_codec.h"
 
-namespace sherpa::meshopt {
+namespace sherpa::scene::meshopt {
 namespace {
 
 // Unsigned LEB128 of 1-5 bytes; a 5th byte that says "more follows" is invalid.
@@ -194,4 +194,4 @@ Result decode(Mode mode, std::span<std::uint8_t> dst, std::size_t count, std::si
     return {Status::BadArgument, 0};
 }
 
-} // namespace sherpa::meshopt
+} // namespace sherpa::scene::meshopt

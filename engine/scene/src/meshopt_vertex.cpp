@@ -16,7 +16,7 @@
 #include <array>
 #include <cstring>
 
-namespace sherpa::meshopt {
+namespace sherpa::scene::meshopt {
 namespace {
 
 constexpr std::size_t kGroup = 16;     // elements per delta group
@@ -275,4 +275,4 @@ const char* describe(Status status) {
     return "unknown";
 }
 
-} // namespace sherpa::meshopt
+} // namespace sherpa::scene::meshopt

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sherpa {
+namespace sherpa::scene {
 namespace {
 
 const std::vector<glm::mat4>* joints_of(const Scene& scene, const Pose& pose, std::uint32_t node,
@@ -197,4 +197,4 @@ void compute_influence_boxes(PrimitiveMotion& m) {
 }
 
 } // namespace detail
-} // namespace sherpa
+} // namespace sherpa::scene

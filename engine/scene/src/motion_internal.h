@@ -10,7 +10,7 @@ namespace tinygltf {
 struct Primitive;
 }
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 struct ImportContext;
 
@@ -30,4 +30,4 @@ void import_animations(ImportContext& ctx);
 // The per-joint (or whole-primitive) boxes culling uses while the primitive moves.
 void compute_influence_boxes(PrimitiveMotion& m);
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -7,7 +7,7 @@
 
 #include <sherpa/scene/scene.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 namespace {
 
 // RFC 6901 reference tokens; nullopt for a pointer that is not "" or "/...", or a
@@ -399,4 +399,4 @@ std::int64_t element_index_in_message(std::string_view message) {
     return ec == std::errc() && v >= 0 ? v : -1;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -2,7 +2,7 @@
 // independent path, the skinning benchmark's static twin).
 #include <sherpa/scene/animation.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 Scene freeze_pose(const Scene& s, const Pose& pose) {
     Scene out = s;
@@ -71,4 +71,4 @@ Scene freeze_pose(const Scene& s, const Pose& pose) {
     return out;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

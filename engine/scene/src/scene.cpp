@@ -6,7 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 namespace {
 
@@ -176,4 +176,4 @@ bool select_scene(Scene& scene, std::int32_t scene_index, std::string& error) {
     return true;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

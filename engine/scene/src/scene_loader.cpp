@@ -3,7 +3,7 @@
 
 #include "load_stages.h"
 
-namespace sherpa {
+namespace sherpa::scene {
 
 std::string_view to_string(LoadStage stage) {
     switch (stage) {
@@ -72,4 +72,4 @@ LoadResult load_scene(std::string_view spec, const LoadOptions& options) {
     return import_gltf(std::string(spec), options);
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 namespace {
 
@@ -127,4 +127,4 @@ ShadowCascades fit_shadow_cascades(const CascadeCamera& camera, const core::Aabb
     return out;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

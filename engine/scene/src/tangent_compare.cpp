@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 double tangent_angle_degrees(const glm::vec4& a, const glm::vec4& b) {
     const glm::dvec3 x(a), y(b);
@@ -43,4 +43,4 @@ TangentComparison compare_tangents(std::span<const glm::vec4> a, std::span<const
     return out;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -12,7 +12,7 @@
 
 #include "tangent_internal.h"
 
-namespace sherpa::tangent_detail {
+namespace sherpa::scene::tangent_detail {
 
 // acos on [-1, 1] from Abramowitz & Stegun 4.4.46 (|error| <= 2e-8 rad): the angle
 // weights only need float accuracy, and this is several times cheaper than acosf.
@@ -115,4 +115,4 @@ inline bool triangle_corner_angles(const glm::vec3 p[3], const glm::vec3 n[3], f
     return true;
 }
 
-} // namespace sherpa::tangent_detail
+} // namespace sherpa::scene::tangent_detail

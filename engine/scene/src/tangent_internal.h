@@ -11,7 +11,7 @@
 
 #include <sherpa/scene/tangents.h>
 
-namespace sherpa::tangent_detail {
+namespace sherpa::scene::tangent_detail {
 
 // The reference's "non-zero" test: magnitudes at or below FLT_MIN count as zero. NaN is
 // never non-zero.
@@ -172,9 +172,9 @@ struct MeshScratch {
     ScratchVector<glm::vec4> corners;
 };
 
-} // namespace sherpa::tangent_detail
+} // namespace sherpa::scene::tangent_detail
 
-namespace sherpa {
+namespace sherpa::scene {
 // Everything a call allocates, kept between calls that share a workspace.
 struct TangentWorkspace::Buffers {
     tangent_detail::WeldedCorners weld;
@@ -184,9 +184,9 @@ struct TangentWorkspace::Buffers {
     tangent_detail::MethodScratch method;
     tangent_detail::MeshScratch mesh;
 };
-} // namespace sherpa
+} // namespace sherpa::scene
 
-namespace sherpa::tangent_detail {
+namespace sherpa::scene::tangent_detail {
 
 // Fills `weld` (all fields) for the input.
 void weld_corners(const TangentInput& input, WeldedCorners& weld);
@@ -210,4 +210,4 @@ void lengyel_corners(const TangentInput& input, std::span<glm::vec4> out,
                      std::span<std::uint8_t> assigned, std::uint64_t& rescaled_normals,
                      std::uint64_t& nonfinite_unguarded, MethodScratch& scratch);
 
-} // namespace sherpa::tangent_detail
+} // namespace sherpa::scene::tangent_detail

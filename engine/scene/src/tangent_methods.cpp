@@ -5,7 +5,7 @@
 
 #include "tangent_internal.h"
 
-namespace sherpa {
+namespace sherpa::scene {
 
 std::string_view to_string(TangentMethod m) {
     switch (m) {
@@ -238,4 +238,4 @@ TangentStats generate_corner_tangents(const TangentInput& in, TangentMethod meth
     return stats;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

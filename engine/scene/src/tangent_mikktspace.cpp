@@ -29,7 +29,7 @@
 #include "tangent_corner_angles.h"
 #include "tangent_internal.h"
 
-namespace sherpa::tangent_detail {
+namespace sherpa::scene::tangent_detail {
 namespace {
 
 constexpr std::uint8_t kOrientPreserving = 1; // uv winding agrees with position winding
@@ -358,4 +358,4 @@ void mikktspace_corners(const TangentInput& in, std::span<glm::vec4> out,
     }
 }
 
-} // namespace sherpa::tangent_detail
+} // namespace sherpa::scene::tangent_detail

@@ -8,7 +8,7 @@
 
 #include "tangent_internal.h"
 
-namespace sherpa::tangent_detail {
+namespace sherpa::scene::tangent_detail {
 namespace {
 constexpr std::size_t kHugePage = std::size_t(2) << 20;
 std::size_t huge_size(std::size_t bytes) {
@@ -34,4 +34,4 @@ void free_scratch(void* p, std::size_t bytes) noexcept {
         std::free(p);
 }
 
-} // namespace sherpa::tangent_detail
+} // namespace sherpa::scene::tangent_detail

@@ -9,7 +9,7 @@
 
 #include "tangent_internal.h"
 
-namespace sherpa::tangent_detail {
+namespace sherpa::scene::tangent_detail {
 namespace {
 
 constexpr std::uint32_t kNone = ~0u;
@@ -176,4 +176,4 @@ void build_neighbours(std::span<const std::uint32_t> tri_class, std::uint32_t cl
     }
 }
 
-} // namespace sherpa::tangent_detail
+} // namespace sherpa::scene::tangent_detail

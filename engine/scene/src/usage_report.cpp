@@ -1,7 +1,7 @@
 #include <sherpa/scene/material_extension_slots.h>
 #include <sherpa/scene/usage_report.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 std::array<bool, kVertexAttributeCount> attributes_used(const MaterialInstance& material,
                                                         const Mesh& mesh) {
@@ -88,4 +88,4 @@ UsageReport build_usage_report(const Scene& scene) {
     return report;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

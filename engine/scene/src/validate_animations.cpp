@@ -6,7 +6,7 @@
 #include <map>
 #include <tuple>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 std::string type_of(const Json& acc) {
@@ -153,4 +153,4 @@ void validate_animations(Validation& v) {
     }
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

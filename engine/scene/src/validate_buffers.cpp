@@ -7,7 +7,7 @@
 #include <cstring>
 #include <filesystem>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 bool is_data_uri(std::string_view uri) {
@@ -404,4 +404,4 @@ void validate_glb(Validation& v, std::span<const std::uint8_t> b) {
     }
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

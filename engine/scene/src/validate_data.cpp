@@ -14,7 +14,7 @@
 #include <type_traits>
 #include <unordered_map>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 double length3(const Reader& r, std::uint64_t i) {
@@ -266,4 +266,4 @@ void validate_data(Validation& v, Buffers buffers) {
     }
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

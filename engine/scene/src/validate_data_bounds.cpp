@@ -12,7 +12,7 @@
 #include <limits>
 #include <type_traits>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 // Per-component bounds of the finite values, in the component type itself (one typed
@@ -188,4 +188,4 @@ void check_min_max(Validation& v, std::size_t index, const Reader& r, const Summ
     }
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -8,7 +8,7 @@
 
 #include <cstring>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 using Bytes = std::span<const std::uint8_t>;
@@ -153,4 +153,4 @@ void validate_images(Validation& v, std::span<const Bytes> buffers, std::span<co
     }
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -7,7 +7,7 @@
 #include <cctype>
 #include <chrono>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
@@ -72,4 +72,4 @@ void ImportContext::skip(std::string_view code, const std::string& message) {
     add_import_message(scene.validation, code, Severity::Error, message);
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -17,7 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 using Json = nlohmann::json;
 
@@ -194,9 +194,9 @@ std::uint32_t component_size(std::int64_t component_type); // 5126 -> 4, 0 when 
 // a declared clearcoat normal or anisotropy texture.
 bool needs_tangent_space(const Validation& v, const Json& material);
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 // The importer's handle on the validator: the GLB and JSON passes run on construction,
 // the data pass once tinygltf has loaded the buffers; report.ms sums both.
@@ -224,4 +224,4 @@ void add_import_message(ValidationReport& report, std::string_view code, Severit
 // "/meshes/0/primitives/1/attributes/POSITION"
 std::string pointer_of_path(std::string_view text);
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

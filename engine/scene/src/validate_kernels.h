@@ -8,7 +8,7 @@
 #include <limits>
 #include <type_traits>
 
-namespace sherpa::detail::kernels {
+namespace sherpa::scene::detail::kernels {
 
 // A 16-byte vector of C (the GCC/Clang vector extension: SSE2 on x86-64, NEON on
 // ARM): element-wise operators, `?:` chooses per lane.
@@ -323,4 +323,4 @@ inline UnitScan unit_vectors(const std::uint8_t* p, std::uint64_t count, std::ui
     return doubtful ? unit_vectors_exact(p, count, stride, tolerance, sign) : UnitScan{};
 }
 
-} // namespace sherpa::detail::kernels
+} // namespace sherpa::scene::detail::kernels

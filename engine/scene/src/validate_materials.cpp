@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 double num_or(const Json& obj, const char* key, double fallback) {
@@ -317,4 +317,4 @@ void validate_unused(Validation& v) {
     report("materials", materials);
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -6,7 +6,7 @@
 #include <map>
 #include <set>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 bool numbered(std::string_view name, std::string_view prefix, int& n) {
@@ -390,4 +390,4 @@ void validate_meshes(Validation& v) {
     }
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

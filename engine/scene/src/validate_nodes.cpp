@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 bool has_joints(const Json& mesh) {
@@ -274,4 +274,4 @@ void validate_nodes(Validation& v) {
     }
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -12,7 +12,7 @@
 #include <span>
 #include <vector>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 
 using Buffers = std::span<const std::span<const std::uint8_t>>;
 
@@ -117,4 +117,4 @@ void summarize(const AccessorUsage& u, const Reader& r, int component_type, Summ
 // has them.
 void check_min_max(Validation& v, std::size_t index, const Reader& r, const Summary& known);
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

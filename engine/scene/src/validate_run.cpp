@@ -7,7 +7,7 @@
 #include <charconv>
 #include <cmath>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 // Escapes a key for a JSON pointer (RFC 6901: "~" -> "~0", "/" -> "~1").
@@ -342,4 +342,4 @@ void validate_extensions(Validation& v) {
     if (walk_document) walk.walk(v.root, 0);
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

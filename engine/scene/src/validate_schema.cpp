@@ -10,7 +10,7 @@
 #include <cstring>
 #include <initializer_list>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 using schema::Kind;
@@ -322,4 +322,4 @@ void validate_schema(Validation& v) {
     check_version(v);
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

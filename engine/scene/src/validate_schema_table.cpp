@@ -3,7 +3,7 @@
 
 #include <cstring>
 
-namespace sherpa::detail::schema {
+namespace sherpa::scene::detail::schema {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -244,4 +244,4 @@ const Kind* kind_named(const char* name) {
     return nullptr;
 }
 
-} // namespace sherpa::detail::schema
+} // namespace sherpa::scene::detail::schema

@@ -7,7 +7,7 @@
 #include <initializer_list>
 #include <string_view>
 
-namespace sherpa::detail::schema {
+namespace sherpa::scene::detail::schema {
 
 enum class T : std::uint8_t {
     Index,      // integer >= 0 that must resolve into root array `target`
@@ -50,4 +50,4 @@ const Kind* kind_named(const char* name);
 // or null when Sherpa has none.
 const Kind* material_extension_kind(std::string_view name);
 
-} // namespace sherpa::detail::schema
+} // namespace sherpa::scene::detail::schema

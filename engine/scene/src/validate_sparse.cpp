@@ -4,7 +4,7 @@
 
 #include <string>
 
-namespace sherpa::detail {
+namespace sherpa::scene::detail {
 namespace {
 
 constexpr std::uint64_t kMaxZeroBase = std::uint64_t{64} << 20; // without a base view
@@ -76,4 +76,4 @@ std::vector<std::uint8_t> sparse_values(Validation& v, std::size_t i, Buffers bu
     return out;
 }
 
-} // namespace sherpa::detail
+} // namespace sherpa::scene::detail

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 std::string_view to_string(Severity s) {
     switch (s) {
@@ -38,4 +38,4 @@ std::size_t ValidationReport::count(Severity s) const {
                       [s](const ValidationMessage& m) { return m.severity == s; }));
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

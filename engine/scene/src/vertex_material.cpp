@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 std::string_view gltf_name(VertexAttribute a) {
     switch (a) {
@@ -195,4 +195,4 @@ SamplerDesc sampler_from_gltf(int mag_filter, int min_filter, int wrap_s, int wr
     return d;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -1,6 +1,6 @@
 #include <sherpa/scene/visibility.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 std::vector<bool> hidden_subtrees(std::span<const Node> nodes, const std::vector<bool>& hidden) {
     std::vector<bool> out(nodes.size(), false);
@@ -20,4 +20,4 @@ std::vector<bool> hidden_subtrees(std::span<const Node> nodes, const std::vector
     return out;
 }
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -67,9 +67,9 @@ std::string file_safe(std::string_view name) {
     return shortened(std::move(out));
 }
 
-std::string base_name(const Scene& scene, const ImageRecord& img, std::size_t index) {
+std::string base_name(const scene::Scene& scene, const scene::ImageRecord& img, std::size_t index) {
     const std::string n = "image" + std::to_string(index);
-    if (const auto path = image_file_path(scene, img); !path.empty()) {
+    if (const auto path = scene::image_file_path(scene, img); !path.empty()) {
         if (std::string stem = file_safe(path.stem().string()); !stem.empty()) return stem;
         return n;
     }
@@ -88,7 +88,7 @@ std::string lower(std::string s) {
 } // namespace
 
 // The MIME type wins over the URI because embedded images have no URI.
-std::string image_decoder_hint(const ImageRecord& img) {
+std::string image_decoder_hint(const scene::ImageRecord& img) {
     if (img.mime_type == "image/png") return "image.png";
     if (img.mime_type == "image/jpeg") return "image.jpg";
     if (img.mime_type == "image/webp") return "image.webp";
@@ -96,8 +96,8 @@ std::string image_decoder_hint(const ImageRecord& img) {
     return img.uri.substr(slash == std::string::npos ? 0 : slash + 1);
 }
 
-bool decode_image_source(const ImageRecord& img, RgbaImage& out, std::string& error) {
-    if (image_is_missing(img)) {
+bool decode_image_source(const scene::ImageRecord& img, RgbaImage& out, std::string& error) {
+    if (scene::image_is_missing(img)) {
         error =
             "missing: " +
             (!img.uri.empty() ? "'" + img.uri + "' (the file does not exist or cannot be read)"
@@ -117,7 +117,7 @@ bool decode_image_source(const ImageRecord& img, RgbaImage& out, std::string& er
                                 error); // KTX2 by identifier
 }
 
-std::vector<std::string> source_export_names(const Scene& scene) {
+std::vector<std::string> source_export_names(const scene::Scene& scene) {
     std::vector<std::string> names;
     std::set<std::string> taken; // lower-case
     for (std::size_t i = 0; i < scene.images.size(); ++i) {
@@ -133,7 +133,8 @@ std::vector<std::string> source_export_names(const Scene& scene) {
     return names;
 }
 
-std::vector<SourceExport> export_sources(const Scene& scene, const std::filesystem::path& dir) {
+std::vector<SourceExport> export_sources(const scene::Scene& scene,
+                                         const std::filesystem::path& dir) {
     std::vector<SourceExport> out;
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
@@ -142,10 +143,10 @@ std::vector<SourceExport> export_sources(const Scene& scene, const std::filesyst
         SourceExport e;
         e.image = static_cast<std::int32_t>(i);
         e.file = dir / names[i];
-        const std::string where = image_location(scene, e.image);
+        const std::string where = scene::image_location(scene, e.image);
         RgbaImage decoded;
         std::string error;
-        if (image_is_missing(scene.images[i])) {
+        if (scene::image_is_missing(scene.images[i])) {
             e.error = where + ": missing (no bytes to decode)";
         } else if (!decode_image_source(scene.images[i], decoded, error)) {
             e.error = where + ": " + error;

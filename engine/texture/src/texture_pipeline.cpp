@@ -25,27 +25,27 @@ double ms_since(std::chrono::steady_clock::time_point start) {
         .count();
 }
 
-VkFormat output_format(TextureRole role, bool bc) {
-    if (!bc) return role == kRoleColor ? VkFormat::R8G8B8A8Srgb : VkFormat::R8G8B8A8Unorm;
-    return role == kRoleColor    ? VkFormat::Bc7SrgbBlock
-           : role == kRoleNormal ? VkFormat::Bc5UnormBlock
-                                 : VkFormat::Bc7UnormBlock;
+VkFormat output_format(scene::TextureRole role, bool bc) {
+    if (!bc) return role == scene::kRoleColor ? VkFormat::R8G8B8A8Srgb : VkFormat::R8G8B8A8Unorm;
+    return role == scene::kRoleColor    ? VkFormat::Bc7SrgbBlock
+           : role == scene::kRoleNormal ? VkFormat::Bc5UnormBlock
+                                        : VkFormat::Bc7UnormBlock;
 }
 
-MipFilter mip_filter(TextureRole role) {
-    return role == kRoleColor    ? MipFilter::Color
-           : role == kRoleNormal ? MipFilter::Normal
-                                 : MipFilter::Linear;
+MipFilter mip_filter(scene::TextureRole role) {
+    return role == scene::kRoleColor    ? MipFilter::Color
+           : role == scene::kRoleNormal ? MipFilter::Normal
+                                        : MipFilter::Linear;
 }
 
-std::string source_name(const ImageRecord& img, std::int32_t index) {
+std::string source_name(const scene::ImageRecord& img, std::int32_t index) {
     if (!img.uri.empty()) return img.uri;
     if (img.buffer_view >= 0) return "bufferView " + std::to_string(img.buffer_view);
     if (!img.pixels.empty()) return "generated";
     return "image " + std::to_string(index);
 }
 
-Hash128 source_hash(const ImageRecord& img) {
+Hash128 source_hash(const scene::ImageRecord& img) {
     if (!img.encoded.empty()) return hash_bytes(img.encoded);
     // Generated images have no encoded form; their size is part of their identity.
     std::vector<std::uint8_t> bytes(img.pixels);
@@ -55,13 +55,13 @@ Hash128 source_hash(const ImageRecord& img) {
 }
 
 // PSNR of level 0 over the channels the role's shader reads.
-double measure_psnr(TextureRole role, const RgbaImage& source,
+double measure_psnr(scene::TextureRole role, const RgbaImage& source,
                     const std::vector<std::uint8_t>& blocks, VkFormat format) {
     const BlockFormat bf = format == VkFormat::Bc5UnormBlock ? BlockFormat::Bc5 : BlockFormat::Bc7;
     const auto decoded = decode_image(bf, blocks, source.width, source.height);
-    const unsigned channels = role == kRoleNormal  ? kChannelsRg
-                              : source.has_alpha() ? kChannelsRgba
-                                                   : kChannelsRgb;
+    const unsigned channels = role == scene::kRoleNormal ? kChannelsRg
+                              : source.has_alpha()       ? kChannelsRgba
+                                                         : kChannelsRgb;
     return squared_error(source.pixels, decoded, channels).psnr();
 }
 
@@ -102,7 +102,7 @@ std::string failure_warning(const PreparedTexture& t, std::string reason) {
 
 // decode_encoded_image names the image by its decoder hint ("image.png: ..."); the
 // warning names the file already.
-std::string without_hint(const ImageRecord& img, const std::string& error) {
+std::string without_hint(const scene::ImageRecord& img, const std::string& error) {
     const std::string prefix = image_decoder_hint(img) + ": ";
     return error.starts_with(prefix) ? error.substr(prefix.size()) : error;
 }
@@ -143,17 +143,17 @@ std::string describe(const ImageProblem& p) {
     return s;
 }
 
-std::vector<ImageProblem> find_image_problems(const Scene& scene) {
+std::vector<ImageProblem> find_image_problems(const scene::Scene& scene) {
     std::vector<ImageProblem> problems;
     for (std::size_t i = 0; i < scene.images.size(); ++i) {
-        const ImageRecord& img = scene.images[i];
+        const scene::ImageRecord& img = scene.images[i];
         const auto index = static_cast<std::int32_t>(i);
         ImageProblem p{index,
                        CacheState::Missing,
-                       image_location(scene, index),
+                       scene::image_location(scene, index),
                        {},
-                       image_slot_uses(scene, index)};
-        if (!image_is_missing(img)) {
+                       scene::image_slot_uses(scene, index)};
+        if (!scene::image_is_missing(img)) {
             // Headers only: OpenImageIO reads no KTX2, whose header, level index and
             // global data ranges are checked here; the rest are probed. Both check the
             // size against the texel budget, so nothing here inflates or decodes.
@@ -170,7 +170,7 @@ std::vector<ImageProblem> find_image_problems(const Scene& scene) {
     return problems;
 }
 
-PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& opt) {
+PreparedTextureSet prepare_textures(const scene::Scene& scene, const PipelineOptions& opt) {
     PreparedTextureSet set;
     const std::vector<TextureUse> uses = collect_texture_uses(scene);
     std::optional<TextureCache> cache;
@@ -189,23 +189,23 @@ PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& o
 
     std::vector<std::size_t> misses; // indices into set.textures still to be made
     for (const TextureUse& use : uses) {
-        const ImageRecord& img = scene.images[std::size_t(use.image)];
+        const scene::ImageRecord& img = scene.images[std::size_t(use.image)];
         PreparedTexture t;
         t.image = use.image, t.role = use.role, t.textures = use.textures;
         t.source = source_name(img, use.image);
         t.format = output_format(use.role, opt.device_supports_bc);
         t.source_hash = source_hash(img);
         t.recipe = texture_recipe(use, opt);
-        t.location = image_location(scene, use.image);
-        t.uses = image_slot_uses(scene, use.image);
+        t.location = scene::image_location(scene, use.image);
+        t.uses = scene::image_slot_uses(scene, use.image);
         const Hash128 key = cache_key(t.source_hash, t.recipe);
         t.state = CacheState::Miss;
-        if (image_is_missing(img)) {
+        if (scene::image_is_missing(img)) {
             // Nothing to look up or decode: say what is missing and who reads it.
             t.state = CacheState::Missing;
             t.failed = true;
             t.note = "missing: " + t.location;
-            if (const std::string why = image_missing_reason(scene, img); !why.empty())
+            if (const std::string why = scene::image_missing_reason(scene, img); !why.empty())
                 t.note += " (" + why + ")";
             add_once(set.warnings, failure_warning(t, {}));
             set.textures.push_back(std::move(t));

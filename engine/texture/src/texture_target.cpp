@@ -35,8 +35,9 @@ void decode_bc7_levels(PreparedTexture& t) {
 
 } // namespace
 
-std::shared_ptr<const PreparedTextureSet>
-prepare_scene_textures(const Scene& scene, const TextureTarget& target, PipelineOptions options) {
+std::shared_ptr<const PreparedTextureSet> prepare_scene_textures(const scene::Scene& scene,
+                                                                 const TextureTarget& target,
+                                                                 PipelineOptions options) {
     const bool forced_rgba8 = !options.device_supports_bc;
     options.device_supports_bc = target.bc && !forced_rgba8;
     auto set = std::make_shared<PreparedTextureSet>(prepare_textures(scene, options));

@@ -8,11 +8,11 @@
 
 namespace sherpa::tex {
 
-std::string_view role_name(TextureRole role) {
+std::string_view role_name(scene::TextureRole role) {
     switch (role) {
-    case kRoleNormal:
+    case scene::kRoleNormal:
         return "normal";
-    case kRoleLinear:
+    case scene::kRoleLinear:
         return "linear";
     default:
         return "color";
@@ -39,17 +39,19 @@ std::string_view to_string(CacheState state) {
     return "miss";
 }
 
-std::vector<TextureUse> collect_texture_uses(const Scene& scene) {
+std::vector<TextureUse> collect_texture_uses(const scene::Scene& scene) {
     std::set<std::uint32_t> used_materials;
     // Every material an instance can show (KHR_materials_variants included): a variant
     // switch then finds its textures on the GPU.
-    for (const MeshInstance& inst : scene.instances) {
+    for (const scene::MeshInstance& inst : scene.instances) {
         used_materials.insert(inst.material_id); // the instance's own, with or without a mesh
-        for (std::uint32_t m : possible_materials(scene, inst.mesh_id)) used_materials.insert(m);
+        for (std::uint32_t m : scene::possible_materials(scene, inst.mesh_id))
+            used_materials.insert(m);
     }
     std::map<std::pair<std::int32_t, int>, TextureUse> uses;
     std::map<std::pair<std::int32_t, int>, std::set<float>> cutoffs; // of masked materials
-    auto add = [&](const TextureSlot& slot, TextureRole role, std::optional<float> cutoff) {
+    auto add = [&](const scene::TextureSlot& slot, scene::TextureRole role,
+                   std::optional<float> cutoff) {
         if (!slot.present() || std::size_t(slot.texture) >= scene.textures.size()) return;
         const std::int32_t image = scene.textures[std::size_t(slot.texture)].image;
         if (image < 0 || std::size_t(image) >= scene.images.size()) return;
@@ -61,20 +63,21 @@ std::vector<TextureUse> collect_texture_uses(const Scene& scene) {
     };
     for (std::uint32_t id : used_materials) {
         if (id >= scene.materials.size()) continue;
-        const MaterialInstance& m = scene.materials[id];
-        const auto cutoff =
-            m.alpha_mode == AlphaMode::Mask ? std::optional<float>(m.alpha_cutoff) : std::nullopt;
-        add(m.base_color, kRoleColor, cutoff);
-        add(m.emissive, kRoleColor, std::nullopt);
-        add(m.metallic_roughness, kRoleLinear, std::nullopt);
-        add(m.occlusion, kRoleLinear, std::nullopt);
-        add(m.normal, kRoleNormal, std::nullopt);
+        const scene::MaterialInstance& m = scene.materials[id];
+        const auto cutoff = m.alpha_mode == scene::AlphaMode::Mask
+                                ? std::optional<float>(m.alpha_cutoff)
+                                : std::nullopt;
+        add(m.base_color, scene::kRoleColor, cutoff);
+        add(m.emissive, scene::kRoleColor, std::nullopt);
+        add(m.metallic_roughness, scene::kRoleLinear, std::nullopt);
+        add(m.occlusion, scene::kRoleLinear, std::nullopt);
+        add(m.normal, scene::kRoleNormal, std::nullopt);
         // Specular is sRGB colour and glossiness linear alpha: an sRGB format
         // decodes exactly that.
         if (m.specular_glossiness)
-            add(m.specular_glossiness->specular_glossiness, kRoleColor, std::nullopt);
+            add(m.specular_glossiness->specular_glossiness, scene::kRoleColor, std::nullopt);
         // The extensions' slots where they are drawn (material_extension_slots.h).
-        for (const ExtensionTextureSlot& e : extension_texture_slots(m))
+        for (const scene::ExtensionTextureSlot& e : scene::extension_texture_slots(m))
             add(*e.slot, e.role, std::nullopt);
     }
     std::vector<TextureUse> out;
@@ -90,7 +93,7 @@ std::vector<TextureUse> collect_texture_uses(const Scene& scene) {
     return out;
 }
 
-std::int32_t PreparedTextureSet::find(std::int32_t texture, TextureRole role) const {
+std::int32_t PreparedTextureSet::find(std::int32_t texture, scene::TextureRole role) const {
     for (std::size_t i = 0; i < textures.size(); ++i)
         if (textures[i].role == role &&
             std::find(textures[i].textures.begin(), textures[i].textures.end(), texture) !=
@@ -99,20 +102,21 @@ std::int32_t PreparedTextureSet::find(std::int32_t texture, TextureRole role) co
     return -1;
 }
 
-GPUMaterialData resolve_material(const MaterialInstance& material, const PreparedTextureSet& set,
-                                 std::span<const std::uint32_t> bindless_slot) {
-    GPUMaterialData gpu = to_gpu_material(material);
-    auto slot = [&](const TextureSlot& s, TextureRole role) {
+scene::GPUMaterialData resolve_material(const scene::MaterialInstance& material,
+                                        const PreparedTextureSet& set,
+                                        std::span<const std::uint32_t> bindless_slot) {
+    scene::GPUMaterialData gpu = scene::to_gpu_material(material);
+    auto slot = [&](const scene::TextureSlot& s, scene::TextureRole role) {
         const std::int32_t i = s.present() ? set.find(s.texture, role) : -1;
         if (i < 0 || std::size_t(i) >= bindless_slot.size() || set.textures[std::size_t(i)].failed)
-            return kTextureSentinel;
+            return scene::kTextureSentinel;
         return bindless_slot[std::size_t(i)];
     };
-    gpu.base_color_tex = slot(material.base_color, kRoleColor);
-    gpu.emissive_tex = slot(material.emissive, kRoleColor);
-    gpu.metallic_roughness_tex = slot(material.metallic_roughness, kRoleLinear);
-    gpu.occlusion_tex = slot(material.occlusion, kRoleLinear);
-    gpu.normal_tex = slot(material.normal, kRoleNormal);
+    gpu.base_color_tex = slot(material.base_color, scene::kRoleColor);
+    gpu.emissive_tex = slot(material.emissive, scene::kRoleColor);
+    gpu.metallic_roughness_tex = slot(material.metallic_roughness, scene::kRoleLinear);
+    gpu.occlusion_tex = slot(material.occlusion, scene::kRoleLinear);
+    gpu.normal_tex = slot(material.normal, scene::kRoleNormal);
     return gpu;
 }
 

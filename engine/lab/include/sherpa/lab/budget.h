@@ -49,10 +49,10 @@ struct BudgetReport {
 struct BudgetOptions {
     // Empty: the 16 views of camera_path(scene.bounds, 32) (families.h) that orbit
     // outside the bounds, each framing the whole scene.
-    std::vector<CameraSpec> views;
+    std::vector<scene::CameraSpec> views;
     std::uint32_t viewport_height = 2160;
 };
 
-BudgetReport build_budget(const Scene& scene, const BudgetOptions& options = {});
+BudgetReport build_budget(const scene::Scene& scene, const BudgetOptions& options = {});
 
 } // namespace sherpa::lab

@@ -63,7 +63,7 @@ struct FileComparison {
 };
 
 // Both scenes loaded with lab_load_options() (tangents as in the files).
-FileComparison compare_files(const Scene& a, const Scene& b);
+FileComparison compare_files(const scene::Scene& a, const scene::Scene& b);
 
 // Both scenes rendered (lit, no shadows) from `camera` and differenced per pixel:
 // the largest RGB channel difference d (0..255) as a heat map (black, blue, red,
@@ -85,13 +85,14 @@ struct DifferenceImage {
 };
 struct DifferenceOptions {
     std::uint32_t width = 640, height = 360; // of the difference panel
-    std::optional<CameraSpec> camera;        // unset: scene a framed automatically
+    std::optional<scene::CameraSpec> camera; // unset: scene a framed automatically
     std::uint32_t threshold = 8;
     bool validation = false;
     render::Lighting lighting;                // both sides lit alike (none by default)
     std::string label_a = "A", label_b = "B"; // drawn over the half-size sides
     std::vector<std::string> captions;        // drawn under the legend, clipped to the width
 };
-DifferenceImage render_difference(const Scene& a, const Scene& b, const DifferenceOptions& options);
+DifferenceImage render_difference(const scene::Scene& a, const scene::Scene& b,
+                                  const DifferenceOptions& options);
 
 } // namespace sherpa::lab

@@ -43,7 +43,7 @@ std::unique_ptr<Family> make_texture_family(const TextureFamilyOptions& options 
 // summed over the path, as a fraction of the objects tested; false negatives (must be
 // 0; each is a Failure). Time: ns per object tested (GPU: timestamped dispatch).
 struct CullFamilyOptions {
-    std::vector<CameraSpec> path; // empty: camera_path(scene.bounds, path_length)
+    std::vector<scene::CameraSpec> path; // empty: camera_path(scene.bounds, path_length)
     std::uint32_t path_length = 32;
     bool gpu = true;
     bool gpu_validation = false; // Khronos validation on the GPU method's device (tests)
@@ -153,6 +153,6 @@ bool parse_shadow_method(std::string_view name, std::uint32_t& resolution, std::
 // The culling family's default path around `bounds`: half the cameras orbit outside
 // at the framing distance looking at the centre (everything in view), half stand
 // inside at half the radius looking outward (about half culled); 60 degrees, 16:9.
-std::vector<CameraSpec> camera_path(const core::Aabb& bounds, std::uint32_t count);
+std::vector<scene::CameraSpec> camera_path(const core::Aabb& bounds, std::uint32_t count);
 
 } // namespace sherpa::lab

@@ -90,12 +90,12 @@ public:
     virtual std::vector<MethodInfo> methods() const = 0;
     // Measures every method on `scene`. Never throws for bad scene content: what a
     // method cannot handle is a Failure, what cannot run at all a method with ran false.
-    virtual FamilyReport run(const Scene& scene, const RunControl& control) const = 0;
+    virtual FamilyReport run(const scene::Scene& scene, const RunControl& control) const = 0;
 };
 
 // How the Lab loads a scene: tangents as in the file (no generation at load, whose
 // vertex splits would make welded MikkTSpace equal the exact one everywhere).
-LoadOptions lab_load_options();
+scene::LoadOptions lab_load_options();
 
 // "tangents", "textures", "culling", "mesh-compression", "shadows", "lighting".
 std::vector<std::string_view> family_names();

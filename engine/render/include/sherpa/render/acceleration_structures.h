@@ -38,7 +38,7 @@ class PosedGeometry;
 class SceneAccelerationStructures {
 public:
     // `gpu` is `scene` on the GPU (same meshes, buffers with the build-input usage).
-    SceneAccelerationStructures(gpu::ResourceManager& resources, const Scene& scene,
+    SceneAccelerationStructures(gpu::ResourceManager& resources, const scene::Scene& scene,
                                 const GpuScene& gpu, const AccelerationSettings& settings = {});
     ~SceneAccelerationStructures();
     SceneAccelerationStructures(const SceneAccelerationStructures&) = delete;
@@ -53,7 +53,7 @@ public:
     // the same instances remain (same BLAS in the same order), else rebuilt. `scene`
     // is the one the structures were built from, with its instances' world
     // transforms updated. Waits for the build; no frame may be using the TLAS.
-    void update_instances(const Scene& scene, const std::vector<bool>& hidden_nodes);
+    void update_instances(const scene::Scene& scene, const std::vector<bool>& hidden_nodes);
     // Visibility changed (per node, subtree rule applied): the TLAS is rebuilt over
     // the same candidates at their loaded transforms (a posed scene is posed again by
     // the caller). Waits; no frame may be using the TLAS.
@@ -84,7 +84,7 @@ public:
     MaterialFollow follow_materials(const GpuScene& gpu);
 
 private:
-    void build_blas(const Scene& scene, const GpuScene& gpu, const AccelerationSettings& s);
+    void build_blas(const scene::Scene& scene, const GpuScene& gpu, const AccelerationSettings& s);
     // The TLAS over candidates_ (hidden_ excluded) at `node_world` (empty: as loaded).
     void build_tlas(std::span<const glm::mat4> node_world);
     VkDeviceAddress blas_address(std::uint32_t blas) const;

@@ -34,7 +34,7 @@ struct CameraSpec {
 
 // The renderer's camera for an explicit scene-layer camera (what the camera string
 // parses to, or an editor's orbit camera); its aspect only where one was given.
-CameraSpec explicit_camera(const sherpa::CameraSpec& camera);
+CameraSpec explicit_camera(const sherpa::scene::CameraSpec& camera);
 
 // Parses a spec string; on failure returns false and names the problem in `error`.
 bool parse_camera_spec(std::string_view text, CameraSpec& spec, std::string& error);
@@ -49,19 +49,19 @@ struct CameraView {
 };
 
 // What the shadow-cascade fit needs of a resolved camera.
-CascadeCamera cascade_camera(const CameraView& view);
+scene::CascadeCamera cascade_camera(const CameraView& view);
 
 // What resolving a camera reads of a scene: its bounds (auto framing) and its cameras
 // (gltf:N), kept by a renderer between frames without the rest of the Scene.
 struct SceneCameras {
     core::Aabb bounds;
-    std::vector<Camera> cameras;
-    std::vector<PlacedCamera> placed_cameras;
+    std::vector<scene::Camera> cameras;
+    std::vector<scene::PlacedCamera> placed_cameras;
 };
 
 // Resolves a spec against a scene for a viewport aspect (width / height). Throws
 // std::invalid_argument for a glTF camera index the scene lacks.
-CameraView resolve_camera(const CameraSpec& spec, const Scene& scene, float viewport_aspect);
+CameraView resolve_camera(const CameraSpec& spec, const scene::Scene& scene, float viewport_aspect);
 CameraView resolve_camera(const CameraSpec& spec, const SceneCameras& scene, float viewport_aspect);
 
 // Reverse-Z projections (see the convention above); far 0 = infinite.

@@ -35,23 +35,24 @@ class GpuCullChecker {
 public:
     // Builds the camera culler for `scene` (which must outlive this); the casters'
     // culler is built on first use.
-    GpuCullChecker(gpu::Context& context, gpu::ResourceManager& resources, const Scene& scene);
+    GpuCullChecker(gpu::Context& context, gpu::ResourceManager& resources,
+                   const scene::Scene& scene);
     ~GpuCullChecker();
     GpuCullChecker(const GpuCullChecker&) = delete;
     GpuCullChecker& operator=(const GpuCullChecker&) = delete;
 
-    const Scene& scene() const { return scene_; }
+    const scene::Scene& scene() const { return scene_; }
     // Runs `frustum` over every instance (camera) or the shadow casters (`casters`)
     // and compares with `cpu_visible` (per scene instance, 1 = kept; missing
     // entries count as culled).
-    GpuCullComparison compare(const Frustum& frustum, CullMethod method,
+    GpuCullComparison compare(const scene::Frustum& frustum, scene::CullMethod method,
                               std::span<const std::uint8_t> cpu_visible, bool casters = false);
 
 private:
     GpuCuller& culler(bool casters);
     gpu::Context& context_;
     gpu::ResourceManager& resources_;
-    const Scene& scene_;
+    const scene::Scene& scene_;
     std::shared_ptr<const GpuCullPipeline> pipeline_; // one compile for both cullers
     std::unique_ptr<GpuCuller> camera_, casters_;
 };
@@ -61,8 +62,9 @@ private:
 // cascades) and checks each against the CPU p-vertex result `cpu` of the same
 // pass, into `out` (one PassResult per frustum). Returns false with `error` set
 // when no Vulkan device can be used.
-bool gpu_cull_passes(const Scene& scene, const std::vector<std::pair<std::string, Frustum>>& frusta,
-                     const std::vector<PassResult>& cpu, std::vector<PassResult>& out,
+bool gpu_cull_passes(const scene::Scene& scene,
+                     const std::vector<std::pair<std::string, scene::Frustum>>& frusta,
+                     const std::vector<scene::PassResult>& cpu, std::vector<scene::PassResult>& out,
                      std::string& error);
 
 } // namespace sherpa::render

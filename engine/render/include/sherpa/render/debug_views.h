@@ -129,13 +129,13 @@ enum Overlay : std::uint32_t {
 };
 
 // Bit (1 << VertexAttribute) per vertex stream.
-constexpr std::uint32_t stream_bit(VertexAttribute a) {
+constexpr std::uint32_t stream_bit(scene::VertexAttribute a) {
     return 1u << static_cast<std::uint32_t>(a);
 }
-inline constexpr std::uint32_t kNormalStream = stream_bit(VertexAttribute::Normal);
-inline constexpr std::uint32_t kTangentStream = stream_bit(VertexAttribute::Tangent);
-inline constexpr std::uint32_t kUv0Stream = stream_bit(VertexAttribute::TexCoord0);
-inline constexpr std::uint32_t kUv1Stream = stream_bit(VertexAttribute::TexCoord1);
+inline constexpr std::uint32_t kNormalStream = stream_bit(scene::VertexAttribute::Normal);
+inline constexpr std::uint32_t kTangentStream = stream_bit(scene::VertexAttribute::Tangent);
+inline constexpr std::uint32_t kUv0Stream = stream_bit(scene::VertexAttribute::TexCoord0);
+inline constexpr std::uint32_t kUv1Stream = stream_bit(scene::VertexAttribute::TexCoord1);
 
 // The context the editor translates labels in (the editor's former ViewCatalog,
 // whose translations the .ts files hold).

@@ -56,7 +56,7 @@ struct EmissiveLights {
 
 // The luminance a material emits where its emissive texture is white (the weights of
 // the shaders' luminance()). 0 for materials that do not emit or are unlit.
-float emitted_luminance(const MaterialInstance& m);
+float emitted_luminance(const scene::MaterialInstance& m);
 
 // A texture's luminance (linear, from its sRGB texels), box-filtered down to at most
 // kEmissiveGridSize texels a side, for the triangles' means.
@@ -73,13 +73,13 @@ LuminanceGrid luminance_grid(std::uint32_t width, std::uint32_t height,
 // transform): nearest texels at the centroids of 64 equal sub-triangles, wrapped as
 // the sampler wraps.
 double mean_over_triangle(const LuminanceGrid& grid, const glm::vec2 uv[3],
-                          AddressMode wrap_u = AddressMode::Repeat,
-                          AddressMode wrap_v = AddressMode::Repeat);
+                          scene::AddressMode wrap_u = scene::AddressMode::Repeat,
+                          scene::AddressMode wrap_v = scene::AddressMode::Repeat);
 
 // The light list of `scene` as its instances are placed (the default pose). A scene
 // that animates (node animation, skins, morphs) gets none: its triangles move, and a
 // stale list would bias the estimate, so BSDF sampling alone finds them.
-EmissiveLights emissive_lights(const Scene& scene,
+EmissiveLights emissive_lights(const scene::Scene& scene,
                                std::size_t max_triangles = kMaxEmissiveTriangles);
 
 } // namespace sherpa::render

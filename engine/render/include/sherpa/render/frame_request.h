@@ -89,7 +89,7 @@ struct FrameRequest {
     float texture_lod = -1.0f;
     PathTraceSettings path;
     bool shadows = true;
-    std::uint32_t cascades = kDefaultShadowCascades;
+    std::uint32_t cascades = scene::kDefaultShadowCascades;
     // Hardware 2x2 PCF taps per shadow-map lookup (lit and shadow views): 1, 4 or 16;
     // 0 keeps the device's default (1 on CPU devices, 4 on GPUs: frame_data.cpp).
     std::uint32_t shadow_pcf_taps = 0;
@@ -111,7 +111,7 @@ struct FrameRequest {
     glm::vec4 clear_color{0.18f, 0.19f, 0.21f, 1.0f}; // linear
     // Scene lights only; when the scene has no directional light a default sun
     // (and its shadows) is added.
-    glm::vec3 sun_direction = kDefaultSunDirection; // direction light travels
+    glm::vec3 sun_direction = scene::kDefaultSunDirection; // direction light travels
     float sun_intensity = 3.0f;
     // The default sun (and its shadow cascades) on or off; the scene's own lights are
     // drawn either way.
@@ -136,7 +136,7 @@ struct FrameRequest {
     // Culls the camera pass and each shadow cascade (against its volume extended
     // toward the light, see sherpa/scene/shadow_cascades.h).
     CullPath cull = CullPath::Cpu;
-    CullMethod cull_method = CullMethod::PVertex;
+    scene::CullMethod cull_method = scene::CullMethod::PVertex;
     // Check mode: the CPU test also runs on the GPU path, the GPU's visible sets are
     // read back and compared (CullStats::cpu_gpu_differences), and false positives
     // against the exact test are counted. Off, the GPU path does no per-object CPU
@@ -160,7 +160,7 @@ struct FrameRequest {
     // The pose to draw (evaluate_pose(), morph weights possibly overridden by the editor); null:
     // the scene as loaded (bind pose, default weights). Skinned/morphed primitives are deformed
     // on the GPU; culling and shadows use the pose's conservative bounds.
-    std::shared_ptr<const Pose> pose;
+    std::shared_ptr<const scene::Pose> pose;
     // A joint (node index) to highlight: the joint-influence view shows its weight as a heat
     // map, the skeleton overlay draws it in kHighlightDetailColor.
     std::optional<std::uint32_t> selected_joint;

@@ -22,7 +22,8 @@ namespace sherpa::render {
 
 // GPUCullObject, GPUCullParams: gpu_structs.h, with the engine's other GPU twins.
 GPUCullObject make_cull_object(const core::Aabb& box, std::uint32_t batch, std::uint32_t instance);
-GPUCullParams cull_params(const Frustum& frustum, CullMethod method, std::uint32_t object_count);
+GPUCullParams cull_params(const scene::Frustum& frustum, scene::CullMethod method,
+                          std::uint32_t object_count);
 
 // Results of one culling run, read back (check mode).
 struct GpuCullReadback {
@@ -72,20 +73,20 @@ public:
     // For culling without a GpuScene (CLI, tests, benchmarks): the scene's instance
     // bounds, GPU instance index = scene instance index, index ranges laid out mesh
     // after mesh in one buffer.
-    void build(const MeshPass& pass, const Scene& scene);
-    void build(const MeshPass& pass, std::span<const core::Aabb> bounds,
+    void build(const scene::MeshPass& pass, const scene::Scene& scene);
+    void build(const scene::MeshPass& pass, std::span<const core::Aabb> bounds,
                std::span<const std::uint32_t> gpu_instance, std::span<const GpuMesh> meshes);
 
     // Records: reset the indirect commands from their clear copy, write the frame's
     // parameters, dispatch, and make the results visible to indirect draws, vertex
     // shaders and transfers. `objects`: this frame's objects instead of the built
     // ones (the same order, batches and count; e.g. boxes of a moving scene's pose).
-    void record(VkCommandBuffer cmd, const Frustum& frustum, CullMethod method,
+    void record(VkCommandBuffer cmd, const scene::Frustum& frustum, scene::CullMethod method,
                 std::uint32_t parameter_block = 0, bool timestamps = true,
                 VkDeviceAddress objects = 0);
 
     // One synchronous run with readback (tests, CLI, benchmarks).
-    GpuCullReadback run(const Frustum& frustum, CullMethod method);
+    GpuCullReadback run(const scene::Frustum& frustum, scene::CullMethod method);
 
     std::uint32_t object_count() const { return objects_count_; }
     std::uint32_t batch_count() const { return batch_count_; }

@@ -40,7 +40,7 @@ struct GpuMemoryReport {
 };
 
 struct GpuMesh {
-    std::array<VkDeviceAddress, kVertexAttributeCount> stream{}; // 0 = not on the GPU
+    std::array<VkDeviceAddress, scene::kVertexAttributeCount> stream{}; // 0 = not on the GPU
     std::uint32_t flags = 0;       // mesh_flags for shaders (streams, provenance)
     std::uint32_t first_index = 0; // into the shared index buffer
     std::uint32_t index_count = 0;
@@ -54,7 +54,7 @@ struct GpuMesh {
 struct DrawGroup {
     std::uint32_t mesh = 0;
     std::uint32_t material = 0;
-    AlphaMode alpha = AlphaMode::Opaque;
+    scene::AlphaMode alpha = scene::AlphaMode::Opaque;
     bool double_sided = false;
     bool mirrored = false; // negative determinant: front faces wind clockwise
     std::uint32_t first_instance = 0, instance_count = 0;
@@ -66,8 +66,9 @@ struct DrawGroup {
 // textures those slots name.
 class GpuMaterials {
 public:
-    GpuMaterials(gpu::ResourceManager& resources, gpu::BindlessTable& table, const Scene& scene,
-                 std::shared_ptr<const tex::PreparedTextureSet> textures, MissingTextures missing);
+    GpuMaterials(gpu::ResourceManager& resources, gpu::BindlessTable& table,
+                 const scene::Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
+                 MissingTextures missing);
     ~GpuMaterials();
     GpuMaterials(const GpuMaterials&) = delete;
     GpuMaterials& operator=(const GpuMaterials&) = delete;
@@ -91,17 +92,18 @@ public:
     // transforms; the extensions and textures each uses stay): the records are rebuilt
     // on the CPU and only the 16-byte-aligned records that differ are uploaded. Returns
     // the bytes uploaded. The caller waits for the frames in flight first.
-    std::uint64_t update(std::span<const MaterialInstance> materials);
+    std::uint64_t update(std::span<const scene::MaterialInstance> materials);
 
 private:
-    void upload(const Scene& scene);
-    void build(std::span<const MaterialInstance> materials); // data_, extras_data_, extensions_
+    void upload(const scene::Scene& scene);
+    void
+    build(std::span<const scene::MaterialInstance> materials); // data_, extras_data_, extensions_
 
     gpu::ResourceManager& resources_;
     std::unique_ptr<SceneTextures> textures_;
     gpu::BufferHandle materials_, extras_, extension_buffer_;
     MaterialExtensionBuffer extensions_;
-    std::vector<GPUMaterialData> data_; // what the buffers hold
+    std::vector<scene::GPUMaterialData> data_; // what the buffers hold
     std::vector<GPUMaterialExtra> extras_data_;
     std::uint64_t bytes_ = 0;
 };
@@ -123,19 +125,20 @@ switch_mesh_materials(GpuScene& scene,
                       std::span<const std::pair<std::uint32_t, std::uint32_t>> meshes);
 
 // GpuMaterials::update() of `scene`'s materials.
-std::uint64_t update_scene_materials(GpuScene& scene, std::span<const MaterialInstance> materials);
+std::uint64_t update_scene_materials(GpuScene& scene,
+                                     std::span<const scene::MaterialInstance> materials);
 
 class GpuScene {
 public:
     // Uploads textures the caller prepared (tex::prepare_scene_textures(), possibly on
     // another thread) for this scene.
-    GpuScene(gpu::ResourceManager& resources, gpu::BindlessTable& table, const Scene& scene,
+    GpuScene(gpu::ResourceManager& resources, gpu::BindlessTable& table, const scene::Scene& scene,
              std::shared_ptr<const tex::PreparedTextureSet> textures,
              StreamPolicy policy = StreamPolicy::UsedByMaterials,
              MissingTextures missing = MissingTextures::Checker);
     // Prepares the textures itself (on this thread), then uploads; the CPU copies of
     // the texture levels are released after the upload.
-    GpuScene(gpu::ResourceManager& resources, gpu::BindlessTable& table, const Scene& scene,
+    GpuScene(gpu::ResourceManager& resources, gpu::BindlessTable& table, const scene::Scene& scene,
              const TextureSettings& texture_settings,
              StreamPolicy policy = StreamPolicy::UsedByMaterials,
              MissingTextures missing = MissingTextures::Checker);
@@ -166,14 +169,15 @@ public:
     const GpuMaterials& materials() const { return *materials_; }
 
 private:
-    friend std::uint64_t update_scene_materials(GpuScene&, std::span<const MaterialInstance>);
+    friend std::uint64_t update_scene_materials(GpuScene&,
+                                                std::span<const scene::MaterialInstance>);
     friend MaterialSwitch
     switch_mesh_materials(GpuScene&, std::span<const std::pair<std::uint32_t, std::uint32_t>>);
-    void upload(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
+    void upload(const scene::Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
                 MissingTextures missing);
-    void upload_geometry(const Scene& scene);
-    void upload_instances(const Scene& scene);
-    void upload_motion(const Scene& scene, const std::vector<bool>& instanced,
+    void upload_geometry(const scene::Scene& scene);
+    void upload_instances(const scene::Scene& scene);
+    void upload_motion(const scene::Scene& scene, const std::vector<bool>& instanced,
                        gpu::UploadBatch& batch);
     void release();
 
@@ -184,7 +188,8 @@ private:
     gpu::BufferHandle vertices_, indices_, instances_, motion_streams_, motion_meshes_;
     std::vector<GpuMesh> meshes_;
     std::vector<DrawGroup> groups_;
-    std::vector<std::pair<AlphaMode, bool>> material_modes_; // per material: alpha, double-sided
+    std::vector<std::pair<scene::AlphaMode, bool>>
+        material_modes_; // per material: alpha, double-sided
     std::vector<core::Aabb> instance_bounds_;
     std::vector<std::uint32_t> scene_instances_;
     core::Aabb bounds_;

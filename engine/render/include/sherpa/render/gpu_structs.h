@@ -255,12 +255,12 @@ static_assert(sizeof(VkDrawIndexedIndirectCommand) == 20);
 // arrays, so the record reaches each one the mesh has on the GPU by device address
 // (0: absent, read as the shader default), and its first index.
 struct GPUGeometryInfo {
-    VkDeviceAddress stream[kVertexAttributeCount]; // by VertexAttribute
+    VkDeviceAddress stream[scene::kVertexAttributeCount]; // by VertexAttribute
     VkDeviceAddress indices; // the geometry's first index (uint32 triangle list)
     std::uint32_t material;  // into the materials array
     std::uint32_t flags;     // mesh_flags (streams, provenance)
 };
-static_assert(kVertexAttributeCount == 6);
+static_assert(scene::kVertexAttributeCount == 6);
 static_assert(offsetof(GPUGeometryInfo, stream) == 0);
 static_assert(offsetof(GPUGeometryInfo, indices) == 48);
 static_assert(offsetof(GPUGeometryInfo, material) == 56);

@@ -18,7 +18,7 @@
 namespace sherpa::render {
 
 // KHR_texture_transform (and the TEXCOORD set) of a slot as the shaders read it.
-GPUTextureTransform texture_transform(const TextureSlot& slot);
+GPUTextureTransform texture_transform(const scene::TextureSlot& slot);
 
 // Where one material's blocks are, in 16-byte words from the buffer's start
 // (kNoExtension where absent).
@@ -45,11 +45,13 @@ struct MaterialExtensionBuffer {
 
 // The bindless slot of a texture slot in a role (SceneTextures::field_slot), or the
 // default where it is absent or failed: white, the flat normal for kRoleNormal.
-using ExtensionTextureSlot = std::function<std::uint32_t(const TextureSlot&, TextureRole)>;
+using ExtensionTextureSlot =
+    std::function<std::uint32_t(const scene::TextureSlot&, scene::TextureRole)>;
 
 // Pure: the words for `materials`, in material order, each block right after its
 // material's index.
-MaterialExtensionBuffer build_material_extensions(std::span<const MaterialInstance> materials,
-                                                  const ExtensionTextureSlot& texture_slot);
+MaterialExtensionBuffer
+build_material_extensions(std::span<const scene::MaterialInstance> materials,
+                          const ExtensionTextureSlot& texture_slot);
 
 } // namespace sherpa::render

@@ -9,16 +9,16 @@
 
 #include <sherpa/scene/material.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 struct Scene;
-}
+} // namespace sherpa::scene
 
 namespace sherpa::render {
 
 class Renderer;
 
 struct MaterialReadback {
-    GPUMaterialData record{};
+    scene::GPUMaterialData record{};
     std::vector<int> bindless_to_texture; // bindless slot -> scene texture, -1: none
     // The material's words of the extension buffer as the GPU holds them: its
     // GPUExtensionIndex, then its blocks (word offsets in the index are from the
@@ -29,6 +29,7 @@ struct MaterialReadback {
 
 // Material `material` of `scene`, the scene the renderer has loaded; nullopt when
 // nothing is loaded or the index is out of range. Waits for one copy on the GPU.
-std::optional<MaterialReadback> read_material(Renderer& renderer, const Scene& scene, int material);
+std::optional<MaterialReadback> read_material(Renderer& renderer, const scene::Scene& scene,
+                                              int material);
 
 } // namespace sherpa::render

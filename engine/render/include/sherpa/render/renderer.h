@@ -23,8 +23,11 @@
 #include <sherpa/scene/culling_passes.h>
 #include <sherpa/scene/shadow_cascades.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 struct Scene;
+} // namespace sherpa::scene
+
+namespace sherpa {
 namespace tex {
 struct PreparedTextureSet;
 }
@@ -68,11 +71,11 @@ struct FrameStats {
     // statistics come from the last frame that rendered the cascades when they were
     // reused (`shadows_rendered` false). With culling off every instance is visible
     // and nothing is tested.
-    std::vector<CullStats> culling;
-    CullStats prepass;   // depth prepass: draw_calls and triangles only
-    PathTraceFrame path; // a path-traced frame's accumulation
-    const CullStats* pass(std::string_view name) const {
-        for (const CullStats& c : culling)
+    std::vector<scene::CullStats> culling;
+    scene::CullStats prepass; // depth prepass: draw_calls and triangles only
+    PathTraceFrame path;      // a path-traced frame's accumulation
+    const scene::CullStats* pass(std::string_view name) const {
+        for (const scene::CullStats& c : culling)
             if (c.pass == name) return &c;
         return nullptr;
     }
@@ -81,7 +84,7 @@ struct FrameStats {
 // One frame's culling statistics, for the renderer's history.
 struct CullFrame {
     CullPath path = CullPath::None;
-    std::vector<CullStats> passes;
+    std::vector<scene::CullStats> passes;
     bool shadows_rendered = false;
 };
 
@@ -118,7 +121,7 @@ struct VariantSwitch {
 };
 
 struct RendererOptions {
-    std::uint32_t shadow_resolution = kDefaultShadowResolution;
+    std::uint32_t shadow_resolution = scene::kDefaultShadowResolution;
     // How load(scene) without prepared textures prepares them; default: no disk
     // cache, BC where supported.
     TextureSettings textures;
@@ -144,11 +147,11 @@ public:
     // Uploads `scene` as `setup` says, replacing the current one (freed once frames
     // using it finish). Prepares its textures first, on this thread, with
     // RendererOptions::textures.
-    void load(const Scene& scene, const SceneSetup& setup = {});
+    void load(const scene::Scene& scene, const SceneSetup& setup = {});
     // The same with textures already prepared for `scene` (prepare_scene_textures()
     // of the texture layer, for this device's texture_target(), e.g. on a loader
     // thread); only the upload happens here.
-    void load(const Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
+    void load(const scene::Scene& scene, std::shared_ptr<const tex::PreparedTextureSet> textures,
               const SceneSetup& setup = {});
     // The loaded scene's hidden nodes from now on (SceneSetup::hidden_nodes): applied
     // before the next frame; the same mask again costs one comparison.
@@ -171,7 +174,7 @@ public:
 
     // Culling statistics of the last frames whose results were read (render(),
     // presented frames), oldest first: what the editor's culling dock charts.
-    const RingHistory<CullFrame>& cull_history() const;
+    const scene::RingHistory<CullFrame>& cull_history() const;
 
     gpu::ResourceManager& resources();
     gpu::Context& context();

@@ -36,7 +36,7 @@ tex::PipelineOptions texture_pipeline_options(const TextureSettings& settings);
 // One prepared texture on the GPU.
 struct GpuTexture {
     gpu::ImageHandle image;
-    std::uint32_t slot = kTextureSentinel; // bindless slot; sentinel when it failed
+    std::uint32_t slot = scene::kTextureSentinel; // bindless slot; sentinel when it failed
     std::uint32_t mip_levels = 0;
     std::uint64_t bytes = 0; // device memory of the image
 };
@@ -44,7 +44,8 @@ struct GpuTexture {
 class SceneTextures {
 public:
     // Uploads every texture of `prepared` (prepared for `scene`) that did not fail.
-    SceneTextures(gpu::ResourceManager& resources, gpu::BindlessTable& table, const Scene& scene,
+    SceneTextures(gpu::ResourceManager& resources, gpu::BindlessTable& table,
+                  const scene::Scene& scene,
                   std::shared_ptr<const tex::PreparedTextureSet> prepared,
                   MissingTextures missing = MissingTextures::Checker);
     ~SceneTextures();
@@ -61,20 +62,20 @@ public:
     // The material's GPU record with texture fields resolved to bindless slots, absent
     // textures to the default textures, and failed (missing, undecodable) ones as
     // MissingTextures says.
-    GPUMaterialData material(const MaterialInstance& material) const;
+    scene::GPUMaterialData material(const scene::MaterialInstance& material) const;
     // One texture field resolved the same way: its bindless slot, `fallback` when
     // absent, the checker for a failed colour texture when MissingTextures says so.
-    std::uint32_t field_slot(const TextureSlot& slot, TextureRole role,
+    std::uint32_t field_slot(const scene::TextureSlot& slot, scene::TextureRole role,
                              std::uint32_t fallback) const;
     // Bindless slot of glTF texture `texture` read in `role`, or kTextureSentinel.
-    std::uint32_t slot(std::int32_t texture, TextureRole role) const;
+    std::uint32_t slot(std::int32_t texture, scene::TextureRole role) const;
 
     std::uint64_t gpu_bytes() const { return bytes_; } // device memory of all images
     std::size_t image_count() const;
     const std::vector<std::string>& warnings() const { return warnings_; }
 
 private:
-    void upload(const Scene& scene);
+    void upload(const scene::Scene& scene);
     void release();
 
     gpu::ResourceManager& resources_;
@@ -85,7 +86,7 @@ private:
     std::vector<std::uint32_t> slots_; // per record; sentinel where failed
     // Textures sharing an image with another texture but not its sampler get a slot
     // of their own (same view): (glTF texture, role) -> slot.
-    std::map<std::pair<std::int32_t, TextureRole>, std::uint32_t> extra_slots_;
+    std::map<std::pair<std::int32_t, scene::TextureRole>, std::uint32_t> extra_slots_;
     std::vector<gpu::SamplerHandle> samplers_;
     std::uint64_t bytes_ = 0;
     std::vector<std::string> warnings_;

@@ -12,7 +12,7 @@
 #include <sherpa/core/aabb.h>
 #include <sherpa/scene/scene.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 // Every node's transform and morph weights at one time.
 struct Pose {
@@ -86,4 +86,4 @@ std::vector<std::uint32_t> posed_overflow_nodes(const Scene& scene, const Pose& 
 // The warning for an overflowing node: names it and the cause, says what it costs.
 std::string posed_overflow_warning(const Scene& scene, std::uint32_t node);
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -14,7 +14,7 @@
 #include <string_view>
 #include <vector>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 struct Scene;
 struct MaterialInstance;
@@ -143,4 +143,4 @@ std::vector<std::uint32_t> apply_animated_properties(std::span<const AnimatedPro
                                                      std::span<Camera> cameras,
                                                      std::vector<bool>* visible);
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -12,7 +12,7 @@
 
 #include <glm/glm.hpp>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 struct CameraSpec {
     glm::vec3 eye{0.0f, 0.0f, 5.0f};
@@ -40,4 +40,4 @@ glm::mat4 perspective_reverse_z(float fov_y_radians, float aspect, float near_pl
 // Reverse-Z orthographic box: x in [-xmag, xmag], y in [-ymag, ymag], view depth [near, far].
 glm::mat4 orthographic_reverse_z(float xmag, float ymag, float near_plane, float far_plane);
 
-} // namespace sherpa
+} // namespace sherpa::scene

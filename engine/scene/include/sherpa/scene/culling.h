@@ -18,7 +18,7 @@
 #include <sherpa/core/aabb.h>
 #include <sherpa/core/cpu_features.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 struct Plane {
     glm::vec3 normal{0.0f};
@@ -100,4 +100,4 @@ std::size_t pvertex_avx512(const Frustum& f, const BoxesSoA& b, std::size_t begi
                            std::uint8_t* out);
 } // namespace detail
 
-} // namespace sherpa
+} // namespace sherpa::scene

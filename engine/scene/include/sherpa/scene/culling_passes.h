@@ -9,7 +9,7 @@
 #include <sherpa/scene/culling.h>
 #include <sherpa/scene/scene.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 // One instanced draw: consecutive visible instances sharing mesh, alpha mode and
 // double-sidedness (the renderer's pipeline/culling-mode key).
@@ -99,4 +99,4 @@ private:
     std::size_t start_ = 0, size_ = 0;
 };
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -11,7 +11,7 @@
 #include <span>
 #include <vector>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 struct Scene;
 struct Pose;
@@ -87,4 +87,4 @@ glm::vec3 framing_front_hint(const Scene& scene, const core::Aabb& drawn);
 // nothing is drawn.
 CameraSpec frame_scene(const Scene& scene, const Pose* pose, const FramingOptions& options);
 
-} // namespace sherpa
+} // namespace sherpa::scene

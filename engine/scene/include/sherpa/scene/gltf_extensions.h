@@ -13,7 +13,7 @@
 #include <sherpa/scene/material.h>
 #include <sherpa/scene/validation.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 struct Scene;
 
@@ -54,4 +54,4 @@ std::vector<ValidationMessage> unsupported_extension_messages(const Scene& scene
 // declared in extensionsUsed.
 std::vector<std::string> unsupported_extension_warnings(const Scene& scene);
 
-} // namespace sherpa
+} // namespace sherpa::scene

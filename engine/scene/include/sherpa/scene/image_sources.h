@@ -8,7 +8,7 @@
 
 #include <sherpa/scene/scene.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 // The file an external image URI names (percent escapes decoded, relative to the
 // scene file's directory); empty for data URIs, bufferViews and generated images.
@@ -32,4 +32,4 @@ std::vector<std::string> image_slot_uses(const Scene& scene, std::int32_t image)
 // or "data URI", else "image N".
 std::string image_location(const Scene& scene, std::int32_t image);
 
-} // namespace sherpa
+} // namespace sherpa::scene

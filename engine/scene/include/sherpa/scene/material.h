@@ -10,7 +10,7 @@
 
 #include <glm/glm.hpp>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 enum class AlphaMode : std::uint32_t { Opaque = 0, Mask = 1, Blend = 2 };
 std::string_view to_string(AlphaMode m);
@@ -207,4 +207,4 @@ static_assert(offsetof(GPUMaterialData, double_sided) == 76);
 // GPU record with glTF texture indices (or the sentinel) in the texture fields.
 GPUMaterialData to_gpu_material(const MaterialInstance& m);
 
-} // namespace sherpa
+} // namespace sherpa::scene

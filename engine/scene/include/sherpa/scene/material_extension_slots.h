@@ -10,7 +10,7 @@
 
 #include <vector>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 // Whether `m` draws its metallic-roughness extensions (KHR_materials_ior, _specular,
 // _clearcoat...): false for unlit and specular-glossiness materials.
@@ -35,4 +35,4 @@ bool needs_tangents(const MaterialInstance& m);
 // normal map's, else the anisotropy texture's; 0 without any.
 std::uint32_t tangent_uv_set(const MaterialInstance& m);
 
-} // namespace sherpa
+} // namespace sherpa::scene

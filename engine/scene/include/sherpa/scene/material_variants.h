@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 struct Scene;
 
@@ -62,4 +62,4 @@ std::vector<VariantChange> variant_changes(const Scene& scene, std::int32_t vari
 // variant < scene.variants.names.size().
 std::uint32_t apply_material_variant(Scene& scene, std::int32_t variant);
 
-} // namespace sherpa
+} // namespace sherpa::scene

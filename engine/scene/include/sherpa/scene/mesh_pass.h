@@ -12,7 +12,7 @@
 
 #include <sherpa/scene/scene.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 enum class MeshPassKind : std::uint8_t { Forward, Transparent, Shadow };
 
@@ -100,4 +100,4 @@ struct ScenePasses {
 };
 ScenePasses build_mesh_passes(const Scene& scene);
 
-} // namespace sherpa
+} // namespace sherpa::scene

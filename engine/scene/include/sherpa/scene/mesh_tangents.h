@@ -10,7 +10,7 @@
 #include <sherpa/scene/scene.h>
 #include <sherpa/scene/tangents.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 // Writes corner_tangents (one per index, glTF triangle order) into mesh.vertices. A
 // vertex whose corners carry different tangents is duplicated once per further distinct
@@ -71,4 +71,4 @@ SceneTangentReport generate_scene_tangents(Scene& scene, const SceneTangentOptio
 // Appends the report's failures and fallback counts to scene.warnings.
 void add_tangent_warnings(Scene& scene, const SceneTangentReport& report);
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -11,7 +11,7 @@
 #include <sherpa/core/aabb.h>
 #include <sherpa/scene/animation_pointer.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 struct Skin {
     std::string name;
@@ -85,4 +85,4 @@ struct Animation {
     float start = 0.0f, end = 0.0f; // first and last key time over all samplers
 };
 
-} // namespace sherpa
+} // namespace sherpa::scene

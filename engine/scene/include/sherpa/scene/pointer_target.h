@@ -9,7 +9,7 @@
 
 #include <sherpa/scene/validation.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 struct Scene;
 
@@ -87,4 +87,4 @@ ObjectMarks mark_objects(const Scene& scene, const std::vector<ValidationMessage
 // the Khronos validator writes data errors; -1 when it names none.
 std::int64_t element_index_in_message(std::string_view message);
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -18,7 +18,7 @@
 #include <sherpa/scene/validation.h>
 #include <sherpa/scene/vertex.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 // glTF primitive topology (values equal glTF's `mode`).
 enum class PrimitiveMode : std::uint8_t {
@@ -295,4 +295,4 @@ glm::mat4 instance_transform(const Scene& scene, const MeshInstance& instance);
 // a SHERPA_INSTANCE_SKIPPED warning in `scene.validation` and its text in `warnings`.
 bool select_scene(Scene& scene, std::int32_t scene_index, std::string& error);
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -10,7 +10,7 @@
 #include <sherpa/scene/scene.h>
 #include <sherpa/scene/validation.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 // Stages of load_scene, in order (builtin scenes skip Parse).
 enum class LoadStage { Parse, Geometry, Tangents };
@@ -48,4 +48,4 @@ LoadResult import_gltf(const std::string& path, const LoadOptions& options = {})
 // `builtin:default` or `builtin:grid?n=N`.
 LoadResult make_builtin_scene(std::string_view spec);
 
-} // namespace sherpa
+} // namespace sherpa::scene

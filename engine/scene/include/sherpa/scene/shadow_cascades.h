@@ -22,7 +22,7 @@
 #include <sherpa/core/aabb.h>
 #include <sherpa/scene/camera_spec.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 struct Scene;
 
@@ -68,4 +68,4 @@ std::optional<glm::vec3> main_light_direction(const Scene& scene,
 // uploads and fits its cascades to.
 core::Aabb drawable_bounds(const Scene& scene);
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -6,7 +6,7 @@
 
 #include <glm/glm.hpp>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 // Angle in degrees between the xyz parts (computed in double with atan2, so that tiny
 // angles are exact). Non-finite inputs give NaN.
@@ -24,4 +24,4 @@ struct TangentComparison {
 TangentComparison compare_tangents(std::span<const glm::vec4> a, std::span<const glm::vec4> b,
                                    std::span<const std::uint8_t> skip = {});
 
-} // namespace sherpa
+} // namespace sherpa::scene

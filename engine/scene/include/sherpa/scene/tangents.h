@@ -14,7 +14,7 @@
 
 #include <glm/glm.hpp>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 enum class TangentMethod : std::uint8_t {
     MikkTSpace,       // exact MikkTSpace, one tangent per corner (vertices split where needed)
@@ -96,4 +96,4 @@ TangentStats generate_corner_tangents(const TangentInput& input, TangentMethod m
                                       std::span<TangentFallback> fallbacks = {},
                                       TangentWorkspace* workspace = nullptr);
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 // Roles a texture is used in by some material; decides format and colour space.
 enum TextureRole : std::uint8_t {
@@ -52,4 +52,4 @@ struct ImageRecord {
     std::vector<std::uint8_t> pixels;
 };
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -7,7 +7,7 @@
 
 #include <sherpa/scene/scene.h>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 struct PrimitiveUsage {
     std::uint32_t mesh_id = 0;
@@ -38,4 +38,4 @@ std::array<bool, kVertexAttributeCount> mesh_attributes_used(const Scene& scene,
                                                              std::uint32_t mesh);
 UsageReport build_usage_report(const Scene& scene);
 
-} // namespace sherpa
+} // namespace sherpa::scene

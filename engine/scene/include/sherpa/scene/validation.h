@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 // The validator's severities, with its numeric values.
 enum class Severity { Error = 0, Warning = 1, Information = 2, Hint = 3 };
@@ -34,4 +34,4 @@ struct ValidationReport {
 // Most messages one report keeps; the rest are counted in `truncated` only.
 inline constexpr std::size_t kMaxValidationMessages = 10000;
 
-} // namespace sherpa
+} // namespace sherpa::scene

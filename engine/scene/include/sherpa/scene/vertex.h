@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-namespace sherpa {
+namespace sherpa::scene {
 
 // Himalaya's unified 56-byte vertex. The GPU layer uploads only the streams a scene's
 // materials use (see UsageReport); this is the CPU-side interchange format.
@@ -52,4 +52,4 @@ std::string_view to_string(Provenance p);
 // Bytes per vertex of one attribute stream when stored as 32-bit floats on the GPU.
 std::uint32_t stream_stride(VertexAttribute a);
 
-} // namespace sherpa
+} // namespace sherpa::scene

@@ -28,8 +28,8 @@ inline constexpr int kTextureEncoderVersion = 3;
 // One image in one role, as used by the displayed scene's materials.
 struct TextureUse {
     std::int32_t image = -1;
-    TextureRole role = kRoleColor;      // exactly one role bit
-    std::vector<std::int32_t> textures; // glTF texture indices that reach it in this role
+    scene::TextureRole role = scene::kRoleColor; // exactly one role bit
+    std::vector<std::int32_t> textures;          // glTF texture indices that reach it in this role
     // Set when alpha-masked materials use it as base colour, all with this cutoff
     // (mips then keep its alpha coverage); unset when their cutoffs differ.
     std::optional<float> alpha_cutoff;
@@ -37,7 +37,7 @@ struct TextureUse {
 
 // Unique (image, role) pairs over the materials of scene.instances, deduplicated
 // by image (two textures sharing an image share one use), in image order.
-std::vector<TextureUse> collect_texture_uses(const Scene& scene);
+std::vector<TextureUse> collect_texture_uses(const scene::Scene& scene);
 
 struct PipelineOptions {
     std::optional<std::filesystem::path> cache_dir; // nullopt: no cache at all
@@ -72,12 +72,12 @@ enum class CacheState : std::uint8_t {
 };
 // hit, miss, stale, recompressed, fallback, missing, undecodable
 std::string_view to_string(CacheState state);
-std::string_view role_name(TextureRole role); // color, linear, normal
+std::string_view role_name(scene::TextureRole role); // color, linear, normal
 
 struct PreparedTexture {
     std::int32_t image = -1;
     std::string source; // URI, "bufferView N" or "generated"
-    TextureRole role = kRoleColor;
+    scene::TextureRole role = scene::kRoleColor;
     std::vector<std::int32_t> textures;
     VkFormat format = VkFormat::Undefined;
     std::uint32_t width = 0, height = 0;
@@ -105,13 +105,13 @@ struct PreparedTextureSet {
     bool cancelled = false; // PipelineOptions::cancel stopped it: no textures
 
     // Index into `textures` for glTF texture `texture` used in `role`, or -1.
-    std::int32_t find(std::int32_t texture, TextureRole role) const;
+    std::int32_t find(std::int32_t texture, scene::TextureRole role) const;
 };
 
 // Recipe text for one use: everything besides the source that shapes the output.
 std::string texture_recipe(const TextureUse& use, const PipelineOptions& options);
 
-PreparedTextureSet prepare_textures(const Scene& scene, const PipelineOptions& options);
+PreparedTextureSet prepare_textures(const scene::Scene& scene, const PipelineOptions& options);
 
 // An image that cannot become a texture, without running the pipeline: its bytes
 // are missing, or the decoder refuses its header.
@@ -127,13 +127,14 @@ struct ImageProblem {
 std::string describe(const ImageProblem& problem);
 // Every image of `scene` (used or not) that is missing or whose header does not
 // decode, in image order.
-std::vector<ImageProblem> find_image_problems(const Scene& scene);
+std::vector<ImageProblem> find_image_problems(const scene::Scene& scene);
 
 // For the GPU layer once it has uploaded set.textures[i] to bindless slot
 // bindless_slot[i]: the material's GPU record with every texture field resolved to
 // its slot, or kTextureSentinel where the slot has no texture or its texture
 // failed (the GPU layer then binds its default texture).
-GPUMaterialData resolve_material(const MaterialInstance& material, const PreparedTextureSet& set,
-                                 std::span<const std::uint32_t> bindless_slot);
+scene::GPUMaterialData resolve_material(const scene::MaterialInstance& material,
+                                        const PreparedTextureSet& set,
+                                        std::span<const std::uint32_t> bindless_slot);
 
 } // namespace sherpa::tex

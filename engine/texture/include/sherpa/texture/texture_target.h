@@ -26,7 +26,8 @@ struct TextureTarget {
 // where the target samples them and `options.device_supports_bc` allows (false there
 // forces RGBA8 on a device that samples BC: a notice, not a warning), then BC7 decoded
 // for a CPU target. Never null; `cancelled` when options.cancel stopped it.
-std::shared_ptr<const PreparedTextureSet>
-prepare_scene_textures(const Scene& scene, const TextureTarget& target, PipelineOptions options);
+std::shared_ptr<const PreparedTextureSet> prepare_scene_textures(const scene::Scene& scene,
+                                                                 const TextureTarget& target,
+                                                                 PipelineOptions options);
 
 } // namespace sherpa::tex

@@ -251,7 +251,7 @@ void RtTests::variantMenuSwitchesTheRayTracedFrame() {
                               QStringLiteral("/material_sweeps/variants.gltf")));
     w.selection().pickAt(QPointF(0.999, 0.999)); // no selection highlight on the raster side
     QVERIFY(w.views().setDebugView(QStringLiteral("base-color"), false));
-    w.comparison().controls().setMode(ViewportMode::RayTraced);
+    w.comparison().state().setMode(ViewportMode::RayTraced);
     const QImage before = test::viewport_shot(w);
     QMenu* variants = nullptr;
     for (QAction* top : w.menuBar()->actions())
@@ -264,16 +264,16 @@ void RtTests::variantMenuSwitchesTheRayTracedFrame() {
         w.docks().log->text().contains(QStringLiteral("Material variant: Warm")), 30000);
     QCOMPARE(w.context().session(), session); // not reloaded
     const QImage warm = test::viewport_shot(w);
-    QCOMPARE(w.comparison().controls().state().mode, ViewportMode::RayTraced); // not refused
+    QCOMPARE(w.comparison().state().comparison().mode, ViewportMode::RayTraced); // not refused
     QVERIFY(w.frames().lastReport().refused.isEmpty());
     const int changed = differing(before, warm, 0, warm.width());
     QVERIFY2(changed > 200, qPrintable(QStringLiteral("%1 pixels changed").arg(changed)));
-    w.comparison().controls().setMode(ViewportMode::Raster);
+    w.comparison().state().setMode(ViewportMode::Raster);
     const QImage raster = test::viewport_shot(w);
     const int diff = differing(raster, warm, 0, warm.width());
     QVERIFY2(diff < covered(warm) / 20,
              qPrintable(QStringLiteral("%1 of %2").arg(diff).arg(covered(warm))));
-    w.comparison().controls().setMode(ViewportMode::RayTraced);
+    w.comparison().state().setMode(ViewportMode::RayTraced);
     variants->actions().at(0)->trigger(); // back to the defaults
     QTRY_VERIFY_WITH_TIMEOUT(
         w.docks().log->text().contains(QStringLiteral("Material variant: default materials")),

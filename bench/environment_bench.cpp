@@ -1,5 +1,6 @@
 // sherpa-bench-environment [--frames N] [--repeats N] [--width W --height H]
-//                           [--irradiance cube|sh9] [--prefilter-only] [SCENE]
+//                           [--irradiance cube|sh9] [--prefilter-only] [--anisotropy]
+//                           [SCENE]
 // Environment lighting on this device (lavapipe here), same-run ratios:
 //  1. Prefiltering a 1024x512 EXR (Blender's studio lights, else the room at 1024x512):
 //     upload + every compute pass, wall clock and process CPU time (lavapipe's
@@ -16,6 +17,11 @@
 //     so that the background pass's share of a moving view is the difference.
 //  3. No environment pays nothing: the frame of a renderer whose environment was
 //     removed next to one that never had one, and the environment's GPU bytes then (0).
+// With --anisotropy instead: KHR_materials_anisotropy's environment modes
+// (AnisotropyLighting) on SCENE (e.g. tests/data/material_sweeps/anisotropy_sweep.gltf)
+// lit by the room: one renderer draws isotropic, albedo and lobe in turn, one frame
+// each, and each round's ratios to isotropic are taken; and the anisotropic lookup
+// table's bytes and build.
 #include "process_cpu.h"
 
 #include <sherpa/core/heap_tuning.h>
@@ -78,12 +84,53 @@ struct Pairs {
     }
 };
 
+// --anisotropy: the modes' frames in turn (see the top).
+int anisotropy_modes(gpu::Context& context, const std::string& scene_spec,
+                     const render::FrameRequest& s, int rounds) {
+    scene::LoadResult loaded = scene::load_scene(scene_spec);
+    if (!loaded) {
+        std::fprintf(stderr, "error: %s\n", loaded.error.c_str());
+        return 1;
+    }
+    render::Renderer r(context);
+    const render::EnvironmentImage room = render::room_environment();
+    r.set_environment(&room);
+    r.load(*loaded.scene);
+    const render::EnvironmentStats env = r.resident().environment;
+    std::printf("%s: anisotropic table %llu bytes, built in %.2f GPU ms\n", scene_spec.c_str(),
+                static_cast<unsigned long long>(env.anisotropy_lut_bytes),
+                env.anisotropy_lut_gpu_ms);
+    using render::AnisotropyLighting;
+    const AnisotropyLighting modes[] = {AnisotropyLighting::Isotropic, AnisotropyLighting::Albedo,
+                                        AnisotropyLighting::Lobe};
+    render::FrameRequest m[3];
+    Pairs pairs[2]; // albedo, lobe against isotropic
+    for (int k = 0; k < 3; ++k) {
+        m[k] = s;
+        m[k].anisotropy_lighting = modes[k];
+        r.render(m[k]); // warm: pipelines
+    }
+    for (int i = 0; i < rounds; ++i) {
+        const FrameTime iso = frame_ms(r, m[0]);
+        pairs[0].add(frame_ms(r, m[1]), iso);
+        pairs[1].add(frame_ms(r, m[2]), iso);
+    }
+    std::printf("lit %ux%u, %d rounds (median wall ms; CPU ms; ratio: median of the rounds'):\n",
+                s.width, s.height, rounds);
+    std::printf("  isotropic %.1f (CPU %.1f)\n", pairs[0].b.w(), pairs[0].b.c());
+    for (int k = 0; k < 2; ++k)
+        std::printf("  %s %.1f: %.3fx; CPU %.1f: %.3fx\n", k == 0 ? "albedo" : "lobe",
+                    pairs[k].a.w(), median(pairs[k].ratio), pairs[k].a.c(),
+                    median(pairs[k].ratio_cpu));
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
     core::keep_freed_memory_mapped();
     int frames = 5, repeats = 5;
-    bool prefilter_only = false;
+    bool prefilter_only = false, anisotropy = false;
     render::EnvironmentOptions options;
     render::FrameRequest s;
     std::string scene_spec =
@@ -103,19 +150,22 @@ int main(int argc, char** argv) {
                                                                  : render::IrradianceMode::Cube;
         else if (a == "--prefilter-only")
             prefilter_only = true;
+        else if (a == "--anisotropy")
+            anisotropy = true;
         else if (!a.empty() && a[0] != '-')
             scene_spec = a;
         else {
-            std::fprintf(
-                stderr,
-                "usage: sherpa-bench-environment [--frames N] [--repeats N] "
-                "[--width W --height H] [--irradiance cube|sh9] [--prefilter-only] [SCENE]\n");
+            std::fprintf(stderr,
+                         "usage: sherpa-bench-environment [--frames N] [--repeats N] "
+                         "[--width W --height H] [--irradiance cube|sh9] [--prefilter-only] "
+                         "[--anisotropy] [SCENE]\n");
             return 2;
         }
     }
     gpu::Context context;
     render::Renderer renderer(context);
     std::printf("device: %s\n", context.info().name.c_str());
+    if (anisotropy) return anisotropy_modes(context, scene_spec, s, frames * repeats);
 
     // 1. Prefilter.
     const auto lights = render::installed_studio_lights();

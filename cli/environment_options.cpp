@@ -12,7 +12,7 @@ OptionMatch parse_environment_option(Args args, std::size_t& i, render::FrameReq
     const std::string_view a = args[i];
     if (a != "--environment" && a != "--environment-rotation" && a != "--environment-intensity" &&
         a != "--background" && a != "--tone-map" && a != "--exposure" && a != "--sun" &&
-        a != "--energy-compensation")
+        a != "--energy-compensation" && a != "--anisotropy-lighting")
         return OptionMatch::NotMine;
     if (i + 1 >= args.size()) {
         error = std::string(a) + " needs a value";
@@ -68,6 +68,14 @@ OptionMatch parse_environment_option(Args args, std::size_t& i, render::FrameReq
             return OptionMatch::Bad;
         }
         settings.tone_map = *t;
+    } else if (a == "--anisotropy-lighting") {
+        const auto m = render::parse_anisotropy_lighting(v);
+        if (!m) {
+            error = "--anisotropy-lighting needs isotropic, albedo or lobe, not '" +
+                    std::string(v) + "'";
+            return OptionMatch::Bad;
+        }
+        settings.anisotropy_lighting = *m;
     } else if (a == "--sun") {
         return on_off(settings.sun);
     } else {

@@ -21,7 +21,7 @@ inline constexpr const char* kEnvironmentOptionsSynopsis =
     "[--environment room|none|FILE.hdr|FILE.exr] [--environment-rotation DEG]\n"
     "    [--environment-intensity X] [--background environment|blurred|R,G,B]\n"
     "    [--sun on|off] [--energy-compensation on|off] [--tone-map neutral|aces|agx|linear]\n"
-    "    [--exposure EV]";
+    "    [--exposure EV] [--anisotropy-lighting isotropic|albedo|lobe]";
 
 // If args[i] is one of these options, consumes it and its value (advancing i) into
 // `settings` (--environment into `environment`); Bad sets `error`.

@@ -89,28 +89,32 @@ nlohmann::json render_report_json(render::Renderer& renderer, const RenderRun& r
     j["tone_map"] = std::string(to_string(run.settings.tone_map));
     j["exposure"] = run.settings.exposure;
     if (env.present)
-        j["environment"] = {{"name", env.name},
-                            {"source", {env.source_width, env.source_height}},
-                            {"cube_size", env.cube_size},
-                            {"specular_levels", env.specular_levels},
-                            {"irradiance", std::string(to_string(env.irradiance))},
-                            {"irradiance_size", env.irradiance_size},
-                            {"sheen_size", env.sheen_size},
-                            {"sheen_levels", env.sheen_levels},
-                            {"lut_size", env.lut_size},
-                            {"bytes", env.bytes},
-                            {"prefilter_ms", env.prefilter_ms},
-                            {"prefilter_gpu_ms", env.gpu_ms},
-                            {"rotation_degrees", run.settings.environment_rotation},
-                            {"intensity", run.settings.environment_intensity},
-                            {"background", std::string(to_string(run.settings.background))},
-                            {"energy_compensation", run.settings.energy_compensation}};
+        j["environment"] = {
+            {"name", env.name},
+            {"source", {env.source_width, env.source_height}},
+            {"cube_size", env.cube_size},
+            {"specular_levels", env.specular_levels},
+            {"irradiance", std::string(to_string(env.irradiance))},
+            {"irradiance_size", env.irradiance_size},
+            {"sheen_size", env.sheen_size},
+            {"sheen_levels", env.sheen_levels},
+            {"lut_size", env.lut_size},
+            {"anisotropy_lut_bytes", env.anisotropy_lut_bytes},
+            {"bytes", env.bytes},
+            {"prefilter_ms", env.prefilter_ms},
+            {"prefilter_gpu_ms", env.gpu_ms},
+            {"rotation_degrees", run.settings.environment_rotation},
+            {"intensity", run.settings.environment_intensity},
+            {"background", std::string(to_string(run.settings.background))},
+            {"energy_compensation", run.settings.energy_compensation},
+            {"anisotropy_lighting", std::string(to_string(run.settings.anisotropy_lighting))}};
     else
         j["environment"] = nullptr;
     if (env.present) {
         json passes;
         const char* names[] = {"radiance_cube", "specular", "irradiance", "sheen", "lut"};
         for (std::size_t i = 0; i < std::size(names); ++i) passes[names[i]] = env.pass_ms[i];
+        passes["anisotropy_lut"] = env.anisotropy_lut_gpu_ms;
         j["environment"]["pass_gpu_ms"] = passes;
     }
     const render::GpuScene* scene = renderer.scene();

@@ -42,7 +42,8 @@ layout(set = 1, binding = SHERPA_FRAME_BINDING, std140) uniform FrameBlock {
     // w the background's specular level (< 0: a solid colour, no background pass).
     vec4 display;
     // Irradiance / pi as 9 SH coefficients (rgb), read instead of the irradiance cube
-    // where irradiance_sh[0].w is 1 (ibl.glsl's ibl_irradiance).
+    // where irradiance_sh[0].w is 1 (ibl.glsl's ibl_irradiance); irradiance_sh[1].w is
+    // KHR_materials_anisotropy's lighting (ibl.glsl's anisotropy_lighting).
     vec4 irradiance_sh[9];
 } frame;
 #endif

@@ -11,6 +11,9 @@ layout(set = 1, binding = 4) uniform samplerCube ibl_specular_cube;
 layout(set = 1, binding = 5) uniform samplerCube ibl_irradiance_cube;
 layout(set = 1, binding = 6) uniform sampler2D ibl_lut; // r, g GGX scale, bias; b Charlie albedo
 layout(set = 1, binding = 7) uniform samplerCube ibl_sheen_cube;
+// KHR_materials_anisotropy's table (ibl_lut_anisotropic.comp): bound only while the scene
+// has an anisotropic material, so read only for surfaces with an anisotropy strength.
+layout(set = 1, binding = 10) uniform sampler2DArray ibl_anisotropic_lut;
 
 bool has_environment() { return frame.environment.y > 0.0; }
 
@@ -54,6 +57,63 @@ vec3 ibl_brdf_lut(float n_dot_v, float roughness) {
     return textureLod(ibl_lut, vec2(n_dot_v, roughness), 0.0).rgb;
 }
 
+// The anisotropic GGX's (scale, bias) at n.v, perceptual roughness (alpha_b), strength
+// and |cos| of the view's azimuth from the direction: bilinear in (n.v, roughness) by
+// the sampler, linear in strength^2 and |cos| between the table's layers (its nodes).
+vec2 ibl_brdf_lut_anisotropic(float n_dot_v, float roughness, float strength, float cos_phi) {
+    const float STRENGTHS = 8.0, AZIMUTHS = 6.0; // ibl_lut_anisotropic.comp's
+    float si = clamp(strength * strength, 0.0, 1.0) * (STRENGTHS - 1.0);
+    float ai = clamp(abs(cos_phi), 0.0, 1.0) * (AZIMUTHS - 1.0);
+    float s0 = min(floor(si), STRENGTHS - 2.0), a0 = min(floor(ai), AZIMUTHS - 2.0);
+    float layer = s0 * AZIMUTHS + a0;
+    vec2 uv = vec2(n_dot_v, roughness);
+    vec2 e00 = textureLod(ibl_anisotropic_lut, vec3(uv, layer), 0.0).rg;
+    vec2 e01 = textureLod(ibl_anisotropic_lut, vec3(uv, layer + 1.0), 0.0).rg;
+    vec2 e10 = textureLod(ibl_anisotropic_lut, vec3(uv, layer + AZIMUTHS), 0.0).rg;
+    vec2 e11 = textureLod(ibl_anisotropic_lut, vec3(uv, layer + AZIMUTHS + 1.0), 0.0).rg;
+    return mix(mix(e00, e01, ai - a0), mix(e10, e11, ai - a0), si - s0);
+}
+
+// KHR_materials_anisotropy under the environment (frame.irradiance_sh[1].w, C++
+// AnisotropyLighting): 0 the isotropic split-sum along the bent normal (three.js's and
+// the Sample Viewer's form), 1 the anisotropic lobe's own albedo with that read, 2 that
+// albedo with the radiance of taps spread along the direction.
+const float ANISOTROPY_ISOTROPIC = 0.0, ANISOTROPY_ALBEDO = 1.0, ANISOTROPY_LOBE = 2.0;
+float anisotropy_lighting() { return frame.irradiance_sh[1].w; }
+
+// The split-sum (scale, bias) of s's GGX: the isotropic table's `iso`, or for
+// KHR_materials_anisotropy the anisotropic table's at the view's azimuth.
+vec2 ibl_specular_albedo(Surface s, float n_dot_v, float roughness, vec2 iso) {
+    if (s.anisotropy.w <= 0.0 || anisotropy_lighting() == ANISOTROPY_ISOTROPIC) return iso;
+    vec3 across = s.v - s.n * dot(s.n, s.v); // the view in the tangent plane
+    float len = length(across);
+    float cos_phi = len > 1e-6 ? dot(anisotropy_direction(s), across) / len : 1.0;
+    return ibl_brdf_lut_anisotropic(n_dot_v, roughness, s.anisotropy.w, cos_phi);
+}
+
+// The prefiltered radiance s's specular lobe gathers. Isotropic: one read along the
+// reflection (for anisotropy about the bent normal, specular_direction). With
+// ANISOTROPY_LOBE, four reads along the reflections about half vectors tilted along the
+// direction by the quartiles' midpoints (1/8, 3/8, 5/8, 7/8) of GGX's slope distribution
+// along one axis (x / a = u / sqrt(1 - u^2), u = 2 F - 1), at the width alpha_t less the
+// alpha_b each read's prefilter already spreads; reads below the horizon are left out.
+vec3 ibl_specular_radiance(Surface s, float roughness) {
+    if (s.anisotropy.w <= 0.0 || anisotropy_lighting() != ANISOTROPY_LOBE)
+        return ibl_specular(specular_direction(s), roughness);
+    vec3 t = anisotropy_direction(s);
+    vec2 a = anisotropic_alpha(s.roughness, s.anisotropy.w);
+    const float SLOPES[4] = float[](-1.1339, -0.2582, 0.2582, 1.1339);
+    vec3 sum = vec3(0.0);
+    float taps = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        vec3 l = reflect(-s.v, normalize(s.n + (SLOPES[k] * (a.x - a.y)) * t));
+        if (dot(l, s.n) <= 0.0) continue;
+        sum += ibl_specular(l, roughness);
+        taps += 1.0;
+    }
+    return taps > 0.0 ? sum / taps : ibl_specular(reflect(-s.v, s.n), roughness);
+}
+
 // Sheen (KHR_materials_sheen) lit by the environment: Charlie-prefiltered radiance
 // times the Charlie directional albedo; `sheen_levels` are ibl_sheen_cube's levels.
 vec3 ibl_sheen(vec3 n, vec3 v, vec3 sheen_color, float sheen_roughness, float sheen_levels) {
@@ -69,11 +129,13 @@ vec3 ibl_sheen(vec3 n, vec3 v, vec3 sheen_color, float sheen_roughness, float sh
 vec3 environment_light(Surface s) {
     float n_dot_v = clamp(dot(s.n, s.v), 1e-4, 1.0);
     float roughness = clamp(s.roughness, 0.0, 1.0);
-    vec3 lut = ibl_brdf_lut(n_dot_v, roughness);
+    // KHR_materials_anisotropy: the anisotropic lobe's own albedo (the isotropic
+    // table's without it).
+    vec2 lut = ibl_specular_albedo(s, n_dot_v, roughness, ibl_brdf_lut(n_dot_v, roughness).rg);
     // KHR_materials_iridescence: the film's equivalent F0 (s.f0 without it).
     vec3 f0 = iridescent_f0(s, n_dot_v);
     vec3 fss_ess = f0 * lut.r + s.f90 * lut.g; // single-scattering specular albedo
-    vec3 radiance = ibl_specular(specular_direction(s), roughness);
+    vec3 radiance = ibl_specular_radiance(s, roughness);
     vec3 irradiance = ibl_irradiance(s.n);
     vec3 multi = vec3(0.0);
     if (frame.display.z > 0.0) {

@@ -2,6 +2,7 @@
 // bytes in the report (none for a scene without them), their debug views, and the
 // bad-input file rendered without a validation message. Runs with --validation.
 #include "cli/cli_run.h"
+#include "cli/sweep_furnace.h"
 #include "cli/sweep_images.h"
 #include "test_support.h"
 
@@ -28,6 +29,7 @@ std::string matext_temp(const std::string& name) {
 using sherpa::test::CliRun;
 using sherpa::test::run_cli;
 
+using sherpa::test::furnace_front;
 using sherpa::test::kSweepCamera;
 using sherpa::test::Png;
 using sherpa::test::read_png;
@@ -244,82 +246,6 @@ TEST(CliMaterialExtensions, AnisotropyViewsShowStrengthAndDirection) {
     }
     std::filesystem::remove(strength);
     std::filesystem::remove(direction);
-}
-
-// The directional albedo of anisotropic GGX (the specification's D and height-
-// correlated V, Schlick's F of `f0` at v . h) seen along the normal: the integral over
-// half vectors h of F D(h) V (n . l) 4 (v . h), by the midpoint rule (an independent
-// evaluation of the BRDF the path tracer samples).
-double anisotropic_albedo_at_normal(double alpha_t, double alpha_b, double f0) {
-    const double pi = 3.14159265358979;
-    const int thetas = 3000, phis = 720;
-    double sum = 0.0;
-    for (int i = 0; i < thetas; ++i) {
-        const double theta = (i + 0.5) * (pi / 4.0) / thetas; // n . l > 0 needs theta < 45 deg
-        const double ct = std::cos(theta), st = std::sin(theta);
-        const double n_dot_l = 2.0 * ct * ct - 1.0;
-        for (int j = 0; j < phis; ++j) {
-            const double phi = (j + 0.5) * 2.0 * pi / phis;
-            const glm::dvec3 h(st * std::cos(phi), st * std::sin(phi), ct);
-            const glm::dvec3 l = 2.0 * ct * h - glm::dvec3(0.0, 0.0, 1.0);
-            const glm::dvec3 f(h.x / alpha_t, h.y / alpha_b, h.z);
-            const double d = 1.0 / (pi * alpha_t * alpha_b * glm::dot(f, f) * glm::dot(f, f));
-            const double gv = n_dot_l;
-            const double gl = glm::length(glm::dvec3(alpha_t * l.x, alpha_b * l.y, l.z));
-            const double v = 0.5 / (gv + gl);
-            const double fresnel = f0 + (1.0 - f0) * std::pow(1.0 - ct, 5.0);
-            sum += fresnel * d * v * n_dot_l * 4.0 * ct * st * ((pi / 4.0) / thetas) *
-                   (2.0 * pi / phis);
-        }
-    }
-    return sum;
-}
-
-// The path tracer draws anisotropic GGX by its visible normals: in a uniform environment
-// of radiance 1, the smooth white metal of anisotropy_textures.gltf (strength 1 at its
-// front: alpha_t 1, alpha_b 0.09) reflects there the albedo the integral above gives.
-// The rasterizer's split-sum table is isotropic (by the roughness): it keeps the
-// isotropic albedo, by design (docs/materials.md).
-// The linear radiance (per channel) at the front of a one-sphere sweep file, 48x36 seen
-// from 1.5 in front, in a uniform environment of radiance 1 (a 1x1 Radiance HDR),
-// tone curve linear: the mean of 5x5 pixels about the centre (n . v above 0.97).
-glm::dvec3 furnace_front(const std::string& model, const std::string& renderer) {
-    const std::string hdr = matext_temp("furnace.hdr"), png = matext_temp("furnace.png");
-    {
-        std::ofstream out(hdr, std::ios::binary);
-        out << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 1\n";
-        out.write("\x80\x80\x80\x81", 4); // (128, 128, 128, exponent 129): 1
-    }
-    const CliRun r =
-        run_cli("render '" + model + "' -o " + png + " --width 48 --height 36" + " --view lit" +
-                renderer + " --camera eye=0,0,1.5:target=0,0,0:fov=45 --environment '" + hdr +
-                "' --sun off --tone-map linear --exposure 0 --validation --no-cache");
-    EXPECT_EQ(r.exit_code, 0) << r.out;
-    const Png p = read_png(png);
-    std::filesystem::remove(png);
-    std::filesystem::remove(hdr);
-    glm::dvec3 sum(0.0);
-    if (p.rgba.empty()) return sum;
-    for (int y = -2; y <= 2; ++y)
-        for (int x = -2; x <= 2; ++x)
-            for (int ch = 0; ch < 3; ++ch) {
-                const double c = p.at(24 + x, 18 + y)[ch] / 255.0; // sRGB-encoded
-                sum[ch] += c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-            }
-    return sum / 25.0;
-}
-
-TEST(CliMaterialExtensions, PathTracedAnisotropyReflectsItsAlbedoInAFurnace) {
-    // 25 pixels, 6400 paths: the estimate's noise (half the paths leave below the
-    // horizon) is about 0.006.
-    const double traced = furnace_front(sweep("anisotropy_textures"), " --renderer rt --spp 256").r;
-    const double f0 = 0.9; // the metal's base colour
-    const double albedo = anisotropic_albedo_at_normal(1.0, 0.09, f0);
-    const double isotropic = anisotropic_albedo_at_normal(0.09, 0.09, f0);
-    std::printf("furnace: path traced %.4f, anisotropic albedo %.4f (isotropic %.4f)\n", traced,
-                albedo, isotropic);
-    EXPECT_NEAR(traced, albedo, 0.02);
-    EXPECT_LT(albedo, isotropic - 0.02); // the stretched lobe loses energy: measurable here
 }
 
 // The film's Fresnel is one function for both renderers: in a uniform environment, the

@@ -38,6 +38,11 @@ bool has_transmission(const scene::Scene& scene) {
     return false;
 }
 
+bool has_anisotropy(const scene::Scene& scene) {
+    return std::any_of(scene.materials.begin(), scene.materials.end(),
+                       [](const scene::MaterialInstance& m) { return m.anisotropy.has_value(); });
+}
+
 // The sun whose cascades the raster draws: the scene's first directional light, else
 // the default sun where the scene has no lights and it is on (frame_data.cpp's rule).
 bool has_shadowing_sun(const scene::Scene& scene, const render::FrameRequest& view) {
@@ -59,6 +64,10 @@ std::string not_applicable(LightingGroup g, const scene::Scene& scene,
         return environment ? ""
                            : "not applicable: no environment (the sky/ground ambient "
                              "term lights the scene; nothing to prefilter)";
+    case LightingGroup::Anisotropy:
+        return !environment            ? "not applicable: no environment"
+               : has_anisotropy(scene) ? ""
+                                       : "not applicable: no material has KHR_materials_anisotropy";
     case LightingGroup::Shadows:
         return has_shadowing_sun(scene, o.lighting.settings)
                    ? ""
@@ -171,6 +180,7 @@ LightingFamily::Frame LightingFamily::draw(gpu::Context& context, Raster& raster
     s.cascades = setup.cascades;
     s.shadow_pcf_taps = setup.taps;
     if (setup.compensation >= 0) s.energy_compensation = setup.compensation == 1;
+    if (setup.anisotropy >= 0) s.anisotropy_lighting = render::AnisotropyLighting(setup.anisotropy);
     s.cache_shadows = false; // every frame pays for its cascades
     r.render(s, nullptr);    // pipelines made outside the timed frames
     std::vector<double> ms;

@@ -16,7 +16,7 @@ std::string LightingSetup::key() const {
     return environment_key() + "/" + std::to_string(shadow_resolution) + "/" +
            std::to_string(shadows) + "/" + std::to_string(cascades) + "/" + std::to_string(taps) +
            "/" + std::to_string(compensation) + "/" + std::to_string(transmission) + "/" +
-           std::to_string(spp);
+           std::to_string(anisotropy) + "/" + std::to_string(spp);
 }
 
 std::vector<LightingMethod> lighting_methods(const LightingFamilyOptions& options) {
@@ -60,6 +60,20 @@ std::vector<LightingMethod> lighting_methods(const LightingFamilyOptions& option
             on ? "split-sum specular with multiple-scattering energy compensation"
                : "split-sum specular, single scattering only",
             c);
+    }
+
+    using render::AnisotropyLighting;
+    const std::pair<AnisotropyLighting, const char*> anisotropy[] = {
+        {AnisotropyLighting::Isotropic,
+         "the isotropic split-sum table read along a bent normal (three.js's form)"},
+        {AnisotropyLighting::Albedo, "the anisotropic lobe's own split-sum table, one read"},
+        {AnisotropyLighting::Lobe,
+         "the anisotropic table, four reads spread along the anisotropy direction"}};
+    for (const auto& [mode, description] : anisotropy) {
+        LightingSetup a;
+        a.anisotropy = int(mode);
+        add(LightingGroup::Anisotropy, "anisotropy",
+            "anisotropy " + std::string(render::to_string(mode)), "", description, a);
     }
 
     LightingSetup off;

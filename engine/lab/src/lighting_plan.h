@@ -12,7 +12,15 @@
 
 namespace sherpa::lab::detail {
 
-enum class LightingGroup { Irradiance, Prefilter, Compensation, Shadows, Transmission, PathTracer };
+enum class LightingGroup {
+    Irradiance,
+    Prefilter,
+    Compensation,
+    Anisotropy,
+    Shadows,
+    Transmission,
+    PathTracer
+};
 
 // What one method draws: the main view's settings with one approximation changed.
 struct LightingSetup {
@@ -23,6 +31,7 @@ struct LightingSetup {
     std::uint32_t cascades = scene::kDefaultShadowCascades, taps = 0; // 0: the device's default
     int compensation = -1;                                            // -1: the view's; 0 off; 1 on
     bool transmission = true; // false: KHR_materials_transmission dropped from the scene
+    int anisotropy = -1;      // -1: the view's; else a render::AnisotropyLighting
     std::uint32_t spp = 0;    // the path tracer's samples (group PathTracer)
     // Everything that changes the raster frame: equal keys draw the same frame.
     std::string key() const;

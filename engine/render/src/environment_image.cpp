@@ -235,6 +235,25 @@ std::optional<ToneMap> parse_tone_map(std::string_view name) {
     return std::nullopt;
 }
 
+namespace {
+constexpr std::pair<AnisotropyLighting, std::string_view> kAnisotropyLightings[] = {
+    {AnisotropyLighting::Isotropic, "isotropic"},
+    {AnisotropyLighting::Albedo, "albedo"},
+    {AnisotropyLighting::Lobe, "lobe"}};
+}
+
+std::string_view to_string(AnisotropyLighting a) {
+    for (const auto& [k, n] : kAnisotropyLightings)
+        if (k == a) return n;
+    return "?";
+}
+
+std::optional<AnisotropyLighting> parse_anisotropy_lighting(std::string_view name) {
+    for (const auto& [k, n] : kAnisotropyLightings)
+        if (n == name) return k;
+    return std::nullopt;
+}
+
 std::vector<std::string_view> tone_map_names() {
     std::vector<std::string_view> out;
     for (const auto& kv : kToneMaps) out.push_back(kv.second);

@@ -10,20 +10,25 @@
 
 namespace sherpa::render {
 
-BrdfLut::BrdfLut(gpu::Context& context, gpu::ResourceManager& resources) : resources_(resources) {
+BrdfLut::BrdfLut(gpu::Context& context, gpu::ResourceManager& resources, bool anisotropic)
+    : resources_(resources), anisotropic_(anisotropic) {
     const auto start = std::chrono::steady_clock::now();
     VkDevice device = context.device();
     gpu::ImagePool& images = resources.images();
     gpu::ImageDesc d;
     d.format = VK_FORMAT_R16G16B16A16_SFLOAT;
-    d.width = d.height = kSize;
+    d.width = anisotropic ? kAnisotropicNDotV : kSize;
+    d.height = anisotropic ? kAnisotropicRoughness : kSize;
+    d.layers = anisotropic ? kAnisotropicLayers : 1;
+    if (anisotropic) d.view_type = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
     d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
-    d.name = "environment brdf lut";
+    d.name = anisotropic ? "environment anisotropic brdf lut" : "environment brdf lut";
     image_ = images.create(d);
 
     IblLayout layout(device, 1);
-    const BrdfLutPass pass(device, layout.layout());
-    const gpu::UniqueImageView target = level_view(device, images.get(image_).image.get(), 0, 1);
+    const BrdfLutPass pass(device, layout.layout(), anisotropic);
+    const gpu::UniqueImageView target =
+        level_view(device, images.get(image_).image.get(), 0, d.layers);
 
     gpu::UniqueQueryPool timestamps;
     if (context.info().timestamps)
@@ -39,7 +44,8 @@ BrdfLut::BrdfLut(gpu::Context& context, gpu::ResourceManager& resources) : resou
                     {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                      VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
-    pass.record(cmd, layout.bind(VK_NULL_HANDLE, VK_NULL_HANDLE, target.get()), kSize, kSamples);
+    pass.record(cmd, layout.bind(VK_NULL_HANDLE, VK_NULL_HANDLE, target.get()), d.width,
+                anisotropic ? kAnisotropicSamples : kSamples, d.layers);
     gpu::transition(cmd,
                     {image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,

@@ -297,7 +297,8 @@ VkDescriptorImageInfo EnvironmentMap::specular_descriptor() const {
             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
 }
 
-void EnvironmentMap::write_descriptors(VkDevice device, VkDescriptorSet set) const {
+void EnvironmentMap::write_descriptors(VkDevice device, VkDescriptorSet set,
+                                       const BrdfLut* anisotropic_lut) const {
     const gpu::ImagePool& images = resources_.images();
     const VkSampler s = images.get(sampler_);
     const VkDescriptorImageInfo infos[] = {
@@ -306,17 +307,20 @@ void EnvironmentMap::write_descriptors(VkDevice device, VkDescriptorSet set) con
          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
         {s, lut_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
         {s, images.get(sheen_).view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+        {s, anisotropic_lut ? anisotropic_lut->view() : VK_NULL_HANDLE,
+         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
     };
-    VkWriteDescriptorSet writes[4];
-    for (std::uint32_t i = 0; i < 4; ++i) {
+    const std::uint32_t count = anisotropic_lut ? 5 : 4;
+    VkWriteDescriptorSet writes[5];
+    for (std::uint32_t i = 0; i < count; ++i) {
         writes[i] = gpu::vk_init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
         writes[i].dstSet = set;
-        writes[i].dstBinding = 4 + i;
+        writes[i].dstBinding = i < 4 ? 4 + i : 10;
         writes[i].descriptorCount = 1;
         writes[i].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
         writes[i].pImageInfo = &infos[i];
     }
-    vkUpdateDescriptorSets(device, 4, writes, 0, nullptr);
+    vkUpdateDescriptorSets(device, count, writes, 0, nullptr);
 }
 
 } // namespace sherpa::render

@@ -39,8 +39,10 @@ public:
     EnvironmentMap& operator=(const EnvironmentMap&) = delete;
 
     // Bindings 4 (specular), 5 (irradiance; the specular cube, never read, where the
-    // irradiance is SH9), 6 (LUT), 7 (sheen) of a frame set.
-    void write_descriptors(VkDevice device, VkDescriptorSet set) const;
+    // irradiance is SH9), 6 (LUT), 7 (sheen) of a frame set, and 10 the anisotropic
+    // LUT where there is one (null: binding 10 left as it was, never read).
+    void write_descriptors(VkDevice device, VkDescriptorSet set,
+                           const BrdfLut* anisotropic_lut) const;
     const EnvironmentStats& stats() const { return stats_; }
     // The specular cube with its sampler (level 0 is the sharp environment): the path
     // tracer's radiance.

@@ -5,6 +5,7 @@
 
 #include "ibl_downsample_comp.h"
 #include "ibl_equirect_comp.h"
+#include "ibl_lut_anisotropic_comp.h"
 #include "ibl_lut_comp.h"
 #include "ibl_prefilter_comp.h"
 
@@ -125,15 +126,18 @@ void PrefilterPass::record(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32
     dispatch(cmd, set, p, 6);
 }
 
-BrdfLutPass::BrdfLutPass(VkDevice device, VkPipelineLayout layout)
-    : IblComputePass(device, layout, spirv_ibl_lut_comp, "ibl_lut.comp") {}
+BrdfLutPass::BrdfLutPass(VkDevice device, VkPipelineLayout layout, bool anisotropic)
+    : IblComputePass(device, layout,
+                     anisotropic ? std::span<const std::uint32_t>(spirv_ibl_lut_anisotropic_comp)
+                                 : std::span<const std::uint32_t>(spirv_ibl_lut_comp),
+                     anisotropic ? "ibl_lut_anisotropic.comp" : "ibl_lut.comp") {}
 
 void BrdfLutPass::record(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t size,
-                         std::uint32_t samples) const {
+                         std::uint32_t samples, std::uint32_t layers) const {
     GPUIblPush p;
     p.face_size = size;
     p.samples = samples;
-    dispatch(cmd, set, p, 1);
+    dispatch(cmd, set, p, layers);
 }
 
 gpu::UniqueImageView level_view(VkDevice device, VkImage image, std::uint32_t level,

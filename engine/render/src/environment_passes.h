@@ -82,12 +82,14 @@ public:
                 std::uint32_t source_levels) const;
 };
 
-// The split-sum lookup table: GGX scale and bias, Charlie albedo.
+// The split-sum lookup table: GGX scale and bias, Charlie albedo (ibl_lut.comp); or,
+// `anisotropic`, the anisotropic GGX's scale and bias (ibl_lut_anisotropic.comp).
 class BrdfLutPass : IblComputePass {
 public:
-    BrdfLutPass(VkDevice device, VkPipelineLayout layout);
-    void record(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t size,
-                std::uint32_t samples) const;
+    BrdfLutPass(VkDevice device, VkPipelineLayout layout, bool anisotropic = false);
+    // `size` texels of n.v (and of roughness for the isotropic table) in each of `layers`.
+    void record(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t size, std::uint32_t samples,
+                std::uint32_t layers = 1) const;
 };
 
 // A storage view of one level (layers 0 .. layers - 1) of an RGBA16F `image`, as the

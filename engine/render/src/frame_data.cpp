@@ -86,6 +86,7 @@ GPUFrameData lighting_constants(const SceneLights& info, const EnvironmentMap* e
                 f.irradiance_sh[k] = glm::vec4((*sh)[k], 0.0f);
             f.irradiance_sh[0].w = 1.0f;
         }
+        f.irradiance_sh[1].w = float(settings.anisotropy_lighting); // ibl.glsl
     }
     const float background_level =
         !environment || settings.background == Background::Color ? -1.0f

@@ -88,6 +88,7 @@ void copy_lighting(const FrameRequest& from, FrameRequest& to) {
     to.clear_color = from.clear_color;
     to.sun = from.sun;
     to.energy_compensation = from.energy_compensation;
+    to.anisotropy_lighting = from.anisotropy_lighting;
     to.tone_map = from.tone_map;
     to.exposure = from.exposure;
 }

@@ -119,6 +119,7 @@ build_material_extensions(std::span<const scene::MaterialInstance> materials,
             b.texture = texture_slot(a->texture, scene::kRoleLinear);
             b.uv = texture_transform(a->texture);
             place.anisotropy = append(out.words, b);
+            ++out.anisotropic_materials;
         }
         if (const auto& ir = m.iridescence) {
             GPUIridescenceBlock b{};

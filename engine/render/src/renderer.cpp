@@ -69,17 +69,14 @@ void FrameSlots::create_frame_sets() {
         // The transmission background (TransmissionPass, shaders/include/refraction.glsl):
         // partially bound, written only for scenes with a transmissive material.
         {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+        // KHR_materials_anisotropy's split-sum table (ibl.glsl): partially bound, written
+        // only while an environment and a scene with an anisotropic material are loaded.
+        {10, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
     };
-    const VkDescriptorBindingFlags binding_flags[] = {0,
-                                                      0,
-                                                      0,
-                                                      0,
-                                                      VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
-                                                      VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
-                                                      VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
-                                                      VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
-                                                      VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT,
-                                                      VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT};
+    // Bindings 4 and on are partially bound (above).
+    VkDescriptorBindingFlags binding_flags[std::size(bindings)] = {};
+    for (std::size_t i = 4; i < std::size(bindings); ++i)
+        binding_flags[i] = VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT;
     auto flags_info = gpu::vk_init<VkDescriptorSetLayoutBindingFlagsCreateInfo>(
         VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_BINDING_FLAGS_CREATE_INFO);
     flags_info.bindingCount = static_cast<std::uint32_t>(std::size(binding_flags));
@@ -89,7 +86,7 @@ void FrameSlots::create_frame_sets() {
     const VkDescriptorPoolSize sizes[] = {
         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFramesInFlight},
         {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3 * kFramesInFlight},
-        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 6 * kFramesInFlight}};
+        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 7 * kFramesInFlight}};
     frame_pool_ = gpu::create_descriptor_pool(device, kFramesInFlight, sizes,
                                               "vkCreateDescriptorPool(frame)");
     no_materials_ =
@@ -113,7 +110,8 @@ void FrameSlots::bind_frame_set(FrameSlot& slot, const VkDescriptorImageInfo& sh
     if (slot.set_environment != state.environment_generation) {
         // Without an environment the old maps' descriptors stay, never read (ibl.glsl
         // checks frame.environment.y, 0 then): the bindings are partially bound.
-        if (environment) environment->write_descriptors(context.device(), slot.set);
+        if (environment)
+            environment->write_descriptors(context.device(), slot.set, state.anisotropic_lut.get());
         slot.set_environment = state.environment_generation;
     }
     if (slot.set_generation == state.generation) return;
@@ -391,6 +389,11 @@ ResidentStats Renderer::resident() const {
     out.acceleration =
         scene_->acceleration && scene_->gpu ? &scene_->acceleration->stats() : nullptr;
     out.environment = scene_->environment ? scene_->environment->stats() : EnvironmentStats{};
+    if (const BrdfLut* a = scene_->anisotropic_lut.get()) {
+        out.environment.anisotropy_lut_bytes = a->bytes();
+        out.environment.bytes += a->bytes();
+        out.environment.anisotropy_lut_gpu_ms = a->build_gpu_ms();
+    }
     frames_->count_target_bytes(out);
     return out;
 }

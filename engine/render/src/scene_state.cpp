@@ -17,6 +17,7 @@ SceneState::SceneState(gpu::Context& ctx, gpu::ResourceManager& res, const Rende
 
 SceneState::~SceneState() {
     environment.reset();
+    anisotropic_lut.reset();
     brdf_lut.reset();
     acceleration.reset();
     gpu.reset();
@@ -51,6 +52,7 @@ void SceneState::load(const scene::Scene& source, std::unique_ptr<GpuScene> gpu_
     variants = source.variants;
     variant = source.variants.active;
     load_animated(source);
+    update_anisotropic_lut();
 }
 
 void SceneState::unload() {
@@ -63,6 +65,15 @@ void SceneState::unload() {
     instance_node_.clear();
     hidden_given_.clear();
     hidden_nodes_.clear();
+    update_anisotropic_lut();
+}
+
+void SceneState::update_anisotropic_lut() {
+    const bool wanted =
+        environment && gpu && gpu->materials().extensions().anisotropic_materials > 0;
+    if (wanted == (anisotropic_lut != nullptr)) return;
+    anisotropic_lut = wanted ? std::make_unique<BrdfLut>(context, resources, true) : nullptr;
+    ++environment_generation;
 }
 
 void SceneState::set_environment(const EnvironmentImage* image,
@@ -77,6 +88,7 @@ void SceneState::set_environment(const EnvironmentImage* image,
         environment = std::make_unique<EnvironmentMap>(context, resources, *image, env_options,
                                                        *brdf_lut, lut_built);
     }
+    update_anisotropic_lut();
     // The path tracer's sampling distribution, made while the image is at hand.
     environment_sampling.reset();
     if (image && options.ray_tracing)

@@ -89,12 +89,18 @@ public:
     // last); before `environment`, which reads it.
     std::unique_ptr<BrdfLut> brdf_lut;
     std::unique_ptr<EnvironmentMap> environment; // null: none (set_environment)
+    // KHR_materials_anisotropy's table: only while an environment and a scene with an
+    // anisotropic material are both loaded (update_anisotropic_lut).
+    std::unique_ptr<BrdfLut> anisotropic_lut;
     // The path tracer's sampling of the environment (ray tracing only).
     std::unique_ptr<EnvironmentDistribution> environment_sampling;
     std::uint64_t environment_generation = 0; // counts set_environment()
 
 private:
     void load_animated(const scene::Scene& source);
+    // Makes or frees anisotropic_lut as the scene and the environment ask; a change
+    // counts as a new environment (the frame sets bind it again).
+    void update_anisotropic_lut();
 
     // KHR_animation_pointer: the loaded values (copies only for a file that animates
     // properties), the values applied last, the nodes they hide (KHR_node_visibility's

@@ -85,6 +85,14 @@ std::string_view to_string(ToneMap t);
 std::optional<ToneMap> parse_tone_map(std::string_view name);
 std::vector<std::string_view> tone_map_names();
 
+// KHR_materials_anisotropy's environment specular (docs/materials.md): the isotropic
+// split-sum read along a bent normal (three.js's and the Khronos Sample Viewer's form),
+// the anisotropic lobe's own albedo (its split-sum table) with that read, or that albedo
+// with four reads spread along the anisotropy direction.
+enum class AnisotropyLighting : std::uint32_t { Isotropic, Albedo, Lobe };
+std::string_view to_string(AnisotropyLighting a);
+std::optional<AnisotropyLighting> parse_anisotropy_lighting(std::string_view name);
+
 // How the diffuse light of an environment is kept: the Lambert-prefiltered irradiance
 // cube, or 9 spherical-harmonic coefficients (environment_sh.h) evaluated per pixel,
 // which make no cube and no prefilter pass.
@@ -121,6 +129,10 @@ struct EnvironmentStats {
     // Charlie sheen, the lookup table.
     double pass_ms[5] = {};
     std::uint64_t nonfinite = 0; // texels read as 0
+    // KHR_materials_anisotropy's table (in `bytes` too; 0 unless the scene has an
+    // anisotropic material) and its pass's GPU ms.
+    std::uint64_t anisotropy_lut_bytes = 0;
+    double anisotropy_lut_gpu_ms = 0.0;
 };
 
 } // namespace sherpa::render

@@ -51,7 +51,8 @@ struct GPUFrameData {
     glm::vec4 environment; // x intensity, y specular levels (0: none), z cos, w sin of rotation
     glm::vec4 display;     // x 2^exposure, y ToneMap, z energy compensation, w background level
     // Irradiance / pi as 9 SH coefficients (rgb; environment_sh.h), read instead of the
-    // irradiance cube where irradiance_sh[0].w is 1 (IrradianceMode::Sh9).
+    // irradiance cube where irradiance_sh[0].w is 1 (IrradianceMode::Sh9);
+    // irradiance_sh[1].w is FrameRequest::anisotropy_lighting (ibl.glsl).
     glm::vec4 irradiance_sh[9];
 };
 static_assert(offsetof(GPUFrameData, proj) == 64);

@@ -40,6 +40,9 @@ struct MaterialExtensionBuffer {
     // Materials whose transmission can be non-zero: what makes the renderer draw the
     // transmission background (TransmissionPass); 0 costs no target and no pass.
     std::uint32_t transmissive_materials = 0;
+    // Materials with KHR_materials_anisotropy: what makes the environment's anisotropic
+    // lookup table (environment_lut.h); 0 costs none.
+    std::uint32_t anisotropic_materials = 0;
     std::uint64_t bytes() const { return words.size() * sizeof(glm::uvec4); }
 };
 

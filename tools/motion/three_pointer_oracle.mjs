@@ -10,16 +10,10 @@
 //   CACHE_DIR holds node_modules/three and the plugin (install_three_pointer.sh).
 // Node has no image decoding: every texture is a 1x1 DataTexture stand-in (the transforms
 // live on the texture object, its pixels do not matter); buffers are inlined as data URIs.
-import fs from 'node:fs';
-import path from 'node:path';
-import { pathToFileURL } from 'node:url';
-
-globalThis.ProgressEvent ??= class ProgressEvent { // three's FileLoader reports progress
-  constructor(type, init = {}) { Object.assign(this, init, { type }); }
-};
+import { cacheModule, readGltfJson } from './node_gltf.mjs';
 
 const [cache, scenePath, animArg, ...timeArgs] = process.argv.slice(2);
-const mod = (p) => import(pathToFileURL(path.join(cache, 'node_modules', p)).href);
+const mod = (p) => cacheModule(cache, p);
 const THREE = await mod('three/build/three.module.js');
 const { GLTFLoader } = await mod('three/examples/jsm/loaders/GLTFLoader.js');
 const { GLTFAnimationPointerExtension } =
@@ -129,14 +123,10 @@ class StandInTextures {
   }
 }
 
-const json = JSON.parse(fs.readFileSync(scenePath, 'utf8'));
-const dir = path.dirname(scenePath);
-for (const b of json.buffers ?? [])
-  if (b.uri && !b.uri.startsWith('data:'))
-    b.uri = 'data:application/octet-stream;base64,' +
-            fs.readFileSync(path.join(dir, decodeURIComponent(b.uri))).toString('base64');
+const json = readGltfJson(scenePath);
 // Material tracks find their material by name on the scene's meshes (GLTFLoader clones
-// materials per mesh variant, keeping the name): give unnamed ones a unique name.
+// materials per mesh variant, keeping the name): give each a unique one (glTF names
+// need not be unique or present).
 (json.materials ?? []).forEach((m, i) => { m.name = `${m.name ?? 'material'} #${i}`; });
 
 const loader = new GLTFLoader();

@@ -11,6 +11,21 @@ namespace sherpa::cli {
 
 using nlohmann::json;
 
+namespace {
+
+// Property i's pointer as the file writes it: its channel's own (evaluate_pose() gives
+// one property per pointer channel, in order). pointer_of() names a camera's znear and
+// zfar as the perspective ones, also on an orthographic camera.
+std::string property_pointer(const scene::Scene& scene, const PosedReport& r, std::size_t i) {
+    if (r.animation >= 0 && std::size_t(r.animation) < scene.animations.size()) {
+        const auto& pointers = scene.animations[std::size_t(r.animation)].pointers;
+        if (i < pointers.size()) return pointers[i].pointer;
+    }
+    return scene::pointer_of(r.properties[i].target);
+}
+
+} // namespace
+
 json skins_json(const scene::Scene& scene) {
     json out = json::array();
     for (const scene::Skin& s : scene.skins)
@@ -82,12 +97,14 @@ json posed_json(const scene::Scene& scene, const PosedReport& r) {
         warnings.push_back(scene::posed_overflow_warning(scene, n));
     pose["warnings"] = warnings;
     json properties = json::array();
-    for (const scene::AnimatedProperty& p : r.properties)
+    for (std::size_t i = 0; i < r.properties.size(); ++i) {
+        const scene::AnimatedProperty& p = r.properties[i];
         properties.push_back(
-            {{"pointer", scene::pointer_of(p.target)},
+            {{"pointer", property_pointer(scene, r, i)},
              {"property", to_string(p.target.property)},
              {"value",
               std::vector<float>(p.value, p.value + scene::pointer_width(p.target.property))}});
+    }
     return {{"pose", pose},
             {"animated_properties", properties},
             {"posed_bounds", aabb_json(r.bounds.exact)},
@@ -126,8 +143,9 @@ void print_posed_text(const scene::Scene& scene, const PosedReport& r) {
                     c.max.x, c.max.y, c.max.z);
     for (std::uint32_t n : r.bounds.overflow)
         std::printf("  warning: %s\n", scene::posed_overflow_warning(scene, n).c_str());
-    for (const scene::AnimatedProperty& p : r.properties) {
-        std::printf("  animated %s =", scene::pointer_of(p.target).c_str());
+    for (std::size_t i = 0; i < r.properties.size(); ++i) {
+        const scene::AnimatedProperty& p = r.properties[i];
+        std::printf("  animated %s =", property_pointer(scene, r, i).c_str());
         for (std::uint32_t k = 0; k < scene::pointer_width(p.target.property); ++k)
             std::printf(" %g", p.value[k]);
         std::printf("\n");

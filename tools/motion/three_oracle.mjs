@@ -6,26 +6,13 @@
 //   CACHE_DIR holds node_modules/three (install_three.sh); ANIMATION -1: none.
 // Node has no image decoding and no file fetch: buffers are inlined as data URIs and
 // images, textures and materials are dropped (they do not move vertices).
-import fs from 'node:fs';
-import path from 'node:path';
-import { pathToFileURL } from 'node:url';
-
-// three's FileLoader (used for the data URIs) reports progress with a DOM event class.
-globalThis.ProgressEvent ??= class ProgressEvent {
-  constructor(type, init = {}) { Object.assign(this, init, { type }); }
-};
+import { cacheModule, readGltfJson } from './node_gltf.mjs';
 
 const [cache, scenePath, animArg, ...timeArgs] = process.argv.slice(2);
-const mod = (p) => import(pathToFileURL(path.join(cache, 'node_modules', 'three', p)).href);
-const THREE = await mod('build/three.module.js');
-const { GLTFLoader } = await mod('examples/jsm/loaders/GLTFLoader.js');
+const THREE = await cacheModule(cache, 'three/build/three.module.js');
+const { GLTFLoader } = await cacheModule(cache, 'three/examples/jsm/loaders/GLTFLoader.js');
 
-const json = JSON.parse(fs.readFileSync(scenePath, 'utf8'));
-const dir = path.dirname(scenePath);
-for (const b of json.buffers ?? [])
-  if (b.uri && !b.uri.startsWith('data:'))
-    b.uri = 'data:application/octet-stream;base64,' +
-            fs.readFileSync(path.join(dir, decodeURIComponent(b.uri))).toString('base64');
+const json = readGltfJson(scenePath);
 delete json.images; delete json.textures; delete json.samplers; delete json.materials;
 for (const m of json.meshes ?? []) for (const p of m.primitives) delete p.material;
 json.extensionsUsed = (json.extensionsUsed ?? []).filter((e) => e === 'KHR_mesh_quantization');

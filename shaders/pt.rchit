@@ -43,8 +43,6 @@ void main() {
     payload.geometric = dot(g, v) < 0.0 ? -g : g;
     payload.flags = 0u;
     payload.light_luminance = 0.0;
-    payload.transmission_tint = vec3(0.0);
-    payload.diffuse_transmission_tint = vec3(0.0);
     payload.front = h.front ? 1u : 0u;
     // Lines and points have no surface: unlit, as the raster draws them.
     if (x.unlit != 0u || (h.flags & (MESH_LINES | MESH_POINTS)) != 0u) {
@@ -53,6 +51,13 @@ void main() {
         return;
     }
     const vec3 sn = mapped_normal(m, x, t, b, n, h.uv0, h.uv1);
+    // The extension fields of the payload only where the material has extension blocks.
+    const bool extended = x.extensions != NO_EXTENSION;
+    if (extended) {
+        payload.flags = PATH_HIT_EXTENDED;
+        payload.transmission_tint = vec3(0.0);
+        payload.diffuse_transmission_tint = vec3(0.0);
+    }
     Surface s;
     if (x.workflow == WORKFLOW_SPECULAR_GLOSSINESS) {
         const vec4 sg = specular_glossiness(x, h.uv0, h.uv1);
@@ -81,25 +86,29 @@ void main() {
             payload.dispersion = material_dispersion(ext);
         }
     }
-    // KHR_materials_clearcoat (factor 0 without it): the coat, and the emission under it.
-    const Clearcoat cc = material_clearcoat(ext, t, b, n, h.uv0, h.uv1);
-    payload.clearcoat = cc.factor;
-    payload.clearcoat_roughness = cc.roughness;
-    payload.clearcoat_normal = cc.n;
-    // KHR_materials_sheen (black without it).
-    const Sheen sh = material_sheen(ext, h.uv0, h.uv1);
-    payload.sheen_color = sh.color;
-    payload.sheen_roughness = sh.roughness;
     payload.normal = s.n;
     payload.roughness = s.roughness;
     payload.diffuse = s.diffuse;
     payload.f0 = s.f0;
     payload.f90 = s.f90;
-    payload.anisotropy = s.anisotropy;
-    payload.iridescence = s.iridescence;
-    // Emission under the sheen and the coat, as the rasterizer layers it (light sampling
-    // reads it through a ray too; only its choice of triangle uses the bare emission).
-    payload.emission = layers_over(cc, sh, sn, v, emission(m, x, h.uv0, h.uv1), vec3(0.0), vec3(0.0));
+    payload.emission = emission(m, x, h.uv0, h.uv1);
+    if (extended) {
+        // KHR_materials_clearcoat (factor 0 without it): the coat, and the emission under it.
+        const Clearcoat cc = material_clearcoat(ext, t, b, n, h.uv0, h.uv1);
+        payload.clearcoat = cc.factor;
+        payload.clearcoat_roughness = cc.roughness;
+        payload.clearcoat_normal = cc.n;
+        // KHR_materials_sheen (black without it).
+        const Sheen sh = material_sheen(ext, h.uv0, h.uv1);
+        payload.sheen_color = sh.color;
+        payload.sheen_roughness = sh.roughness;
+        payload.anisotropy = s.anisotropy;
+        payload.iridescence = s.iridescence;
+        // Emission under the sheen and the coat, as the rasterizer layers it (light
+        // sampling reads it through a ray too; only its choice of triangle uses the bare
+        // emission).
+        payload.emission = layers_over(cc, sh, sn, v, payload.emission, vec3(0.0), vec3(0.0));
+    }
     // The light list's rule (emissive_lights.cpp): static meshes whose material emits,
     // below the luminance cap; its density for multiple importance sampling.
     if (pc.light_inv_power > 0.0 && (h.flags & MESH_MOTION) == 0u && m.emissive_tex != TEX_BLACK) {

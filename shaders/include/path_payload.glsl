@@ -6,6 +6,11 @@
 const uint PATH_RAY_CAMERA = 0u;  // the camera ray and bounces (closest hit)
 const uint PATH_RAY_SHADOW = 1u;  // visibility toward a light (any hit ends it)
 const uint PATH_HIT_UNLIT = 1u;   // KHR_materials_unlit (or no surface): emission only
+// The material has extension blocks: the fields from transmission_tint on are written.
+// Without it they are not (the closest hit and pt.rgen skip them: on lavapipe every
+// payload field is a store and a load per lane), and mean no transmission, coat, sheen,
+// anisotropy or iridescence.
+const uint PATH_HIT_EXTENDED = 2u;
 
 struct PathPayload {
     vec3 position;  // world hit point
@@ -21,6 +26,7 @@ struct PathPayload {
     vec3 emission;
     float f90; // Surface::f90 (brdf.glsl): 1 but for KHR_materials_specular's dielectrics
     float light_luminance; // emitted luminance if the hit triangle is in the light list, else 0
+    // Written only with PATH_HIT_EXTENDED (below).
     // The transmission family (transmission_sampling.glsl): the transmission lobe's
     // tint (transmission x base colour x (1 - metallic); 0: opaque), the ior, the
     // volume's attenuation (rgb colour, a distance; a < 0: thin-walled, no volume),

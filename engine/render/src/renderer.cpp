@@ -392,6 +392,9 @@ ResidentStats Renderer::resident() const {
         scene_->acceleration && scene_->gpu ? &scene_->acceleration->stats() : nullptr;
     out.environment = scene_->environment ? scene_->environment->stats() : EnvironmentStats{};
     frames_->count_target_bytes(out);
+    const EmissiveLights& e = scene_->emissive;
+    out.emissive = {e.triangles.size(), e.textures_read, e.textures_reused, scene_->emissive_ms,
+                    e.warnings};
     return out;
 }
 

@@ -113,10 +113,15 @@ nlohmann::json report_json(const scene::Scene& scene, const lab::FamilyReport& r
                            {"failures_by_cause", by_cause},
                            {"pareto", std::find(front.begin(), front.end(), i) != front.end()}});
     }
-    return {{"source", scene.source},          {"family", r.family},
-            {"reference", r.reference},        {"time_unit", r.time_unit},
-            {"chart_error", r.chart_error},    {"notes", r.notes},
-            {"chart_x", lab::chart_x_name(r)}, {"methods", methods}};
+    return {{"source", scene.source},
+            {"family", r.family},
+            {"reference", r.reference},
+            {"time_unit", r.time_unit},
+            {"chart_error", r.chart_error},
+            {"notes", r.notes},
+            {"warnings", r.warnings},
+            {"chart_x", lab::chart_x_name(r)},
+            {"methods", methods}};
 }
 
 void print_text(const lab::FamilyReport& r) {
@@ -214,6 +219,8 @@ int run_lab(Args args) {
     if (std::string error; !apply_variant_option(*loaded.scene, o.variant, error))
         return usage_error(error);
     const lab::FamilyReport report = family->run(*loaded.scene, {});
+    // On stderr whatever the format (as render prints its warnings).
+    for (const std::string& w : report.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     if (!o.chart.empty()) {
         const std::string svg = lab::report_svg(report);
         std::string error;

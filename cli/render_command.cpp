@@ -326,13 +326,17 @@ int run_render(Args args) {
         }
         // The importer's warnings, as info prints them (skipped objects, repaired data,
         // what the renderer leaves out: animations without --time, unused attributes), then the
-        // texture pipeline's: nothing the file holds is dropped without a word.
+        // texture pipeline's and the path tracer's: nothing the file holds is dropped without
+        // a word.
         for (const auto& w : loaded.scene->warnings)
             std::fprintf(stderr, "warning: %s\n", w.c_str());
         if (const std::string w = default_pose_warning(*loaded.scene, pose_options); !w.empty())
             std::fprintf(stderr, "warning: %s\n", w.c_str());
         if (!camera_hint.empty()) std::fprintf(stderr, "note: %s\n", camera_hint.c_str());
         for (const auto& w : renderer.scene()->materials().textures().warnings())
+            std::fprintf(stderr, "warning: %s\n", w.c_str());
+        // The path tracer's light list: emitters it cannot sample as lights, and why.
+        for (const auto& w : renderer.resident().emissive.warnings)
             std::fprintf(stderr, "warning: %s\n", w.c_str());
         if (!report_path.empty()) {
             const std::string text = render_report_json(renderer, run).dump(2) + "\n";

@@ -156,6 +156,17 @@ nlohmann::json render_report_json(render::Renderer& renderer, const RenderRun& r
         // What needs no action (how textures were stored for this device).
         j["notices"] = scene->materials().textures().prepared().notices;
         j["textures"] = textures_json(scene->materials().textures(), run.cache_dir);
+        if (renderer.resident().acceleration) {
+            // The path tracer's emissive light list (ray tracing on): what it samples, the
+            // emissive images decoded for it (0 when the texture pipeline gave their
+            // luminance), and why emitters are not sampled.
+            const render::EmissiveLightStats& e = renderer.resident().emissive;
+            j["emissive_lights"] = {{"triangles", e.triangles},
+                                    {"images_decoded", e.images_decoded},
+                                    {"images_from_textures", e.images_reused},
+                                    {"build_ms", e.build_ms},
+                                    {"warnings", e.warnings}};
+        }
     }
     j["load_ms"] = {{"scene_load", run.timing.scene_load_ms},
                     {"texture_prepare", run.timing.texture_prepare_ms},

@@ -264,6 +264,8 @@ void LabDock::showReport() {
                                QString::fromStdString(report->reference),
                                QString::fromStdString(report->time_unit))};
     for (const std::string& n : report->notes) lines << QString::fromStdString(n);
+    for (const std::string& w : report->warnings)
+        lines << tr("Warning: %1").arg(QString::fromStdString(w));
     lines << tr("The line joins the Pareto front; the method in use is ringed.");
     status_->setText(lines.join(QLatin1Char('\n')));
     fillReport();

@@ -139,8 +139,9 @@ void RenderController::uploadScene() {
             // Built on upload (ray tracing on): handed over as data, for this session only.
             QMetaObject::invokeMethod(this, [this, up, session] {
                 docks_.textures->setGpuBytes(static_cast<std::int64_t>(up.textureBytes));
-                if (session == context_.sharedSession())
-                    docks_.acceleration->setStats(up.acceleration, noAccelerationReason());
+                if (session != context_.sharedSession()) return;
+                docks_.acceleration->setStats(up.acceleration, noAccelerationReason());
+                logLightWarnings(session, up.lightWarnings);
             });
         },
         RenderThread::TaskKind::SceneUpload);
@@ -166,6 +167,15 @@ void RenderController::logTextureMessages() {
         docks_.log->append(LogDock::Level::Warning, QString::fromStdString(w));
     for (const std::string& n : prepared->notices)
         docks_.log->append(LogDock::Level::Info, QString::fromStdString(n));
+}
+
+void RenderController::logLightWarnings(const SharedSession& session,
+                                        const std::vector<std::string>& warnings) {
+    // Every upload of the session makes the same list (settings toggles): say it once.
+    if (session == logged_lights_.lock()) return;
+    logged_lights_ = session;
+    for (const std::string& w : warnings)
+        docks_.log->append(LogDock::Level::Warning, QString::fromStdString(w));
 }
 
 void RenderController::updateStreams() {

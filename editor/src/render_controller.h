@@ -78,6 +78,8 @@ private:
     QString noAccelerationReason() const;
     // The uploaded textures' warnings (missing, undecodable...) and notices, once per set.
     void logTextureMessages();
+    // The path tracer's light-list warnings of an upload, logged once per session.
+    void logLightWarnings(const SharedSession& session, const std::vector<std::string>& warnings);
 
     EditorContext& context_;
     CullingMonitor& culling_;
@@ -91,6 +93,7 @@ private:
     bool ray_tracing_ = false;             // the device's renderer ray traces
     bool gpu_failed_ = false;              // a frame threw: stop drawing, say so once
     std::weak_ptr<const tex::PreparedTextureSet> logged_textures_; // logTextureMessages()
+    std::weak_ptr<const SceneSession> logged_lights_;              // logLightWarnings()
     std::unique_ptr<FrameReport> last_report_;
     FrameTimes frame_times_;
     bool first_frame_seen_ = false;

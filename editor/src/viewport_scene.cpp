@@ -28,6 +28,7 @@ UploadedScene ViewportScene::load(SharedSession session, const ViewportRequest& 
         out.textureBytes = scene->materials().textures().gpu_bytes();
     if (const render::AccelerationStats* stats = renderer_.resident().acceleration)
         out.acceleration = std::make_shared<const render::AccelerationStats>(*stats);
+    out.lightWarnings = renderer_.resident().emissive.warnings;
     return out;
 }
 

@@ -5,6 +5,8 @@
 #include <QStringList>
 
 #include <memory>
+#include <string>
+#include <vector>
 
 #include <sherpa/render/environment.h>
 #include <sherpa/render/scene_setup.h>
@@ -29,6 +31,9 @@ struct UploadedScene {
     std::uint64_t textureBytes = 0; // the scene's textures
     // A copy of the scene's BLAS/TLAS statistics; null without ray tracing or a scene.
     std::shared_ptr<const render::AccelerationStats> acceleration;
+    // Why the path tracer samples some or all of the scene's emitters by BSDF sampling
+    // only (render::EmissiveLightStats::warnings); empty without ray tracing.
+    std::vector<std::string> lightWarnings;
 };
 
 class ViewportScene {

@@ -68,6 +68,7 @@ private Q_SLOTS:
     void refusedViewGoesBackToRaster();
     void litIsPathTracedAndAccumulatesAtRest();
     void variantMenuSwitchesTheRayTracedFrame();
+    void emitterWarningsReachTheLog();
     void cleanup();
 
 private:
@@ -292,6 +293,40 @@ void RtTests::refusedViewGoesBackToRaster() {
     const std::uint64_t before = w.viewport()->framesRendered();
     w.viewport()->scheduleFrame();
     QTRY_VERIFY_WITH_TIMEOUT(w.viewport()->framesRendered() > before, 10000);
+    checkValidation();
+}
+
+// The path tracer's emitters it cannot sample as lights (tests/data/make_emitter_warnings.py):
+// each upload with ray tracing on logs why, once, naming the file and the JSON pointer.
+void RtTests::emitterWarningsReachTheLog() {
+    MainWindow& w = *window_;
+    const QString data = QString::fromUtf8(SHERPA_TEST_DATA_DIR) + QLatin1Char('/');
+    const std::pair<const char*, const char*> cases[] = {
+        {"emitter_animated.gltf", "/animations: the scene animates (1 animation)"},
+        {"emitter_variants.gltf", "/meshes/1/primitives/0/extensions/KHR_materials_variants: "
+                                  "material variant 0 'Dark' changes which surfaces emit"},
+        {"emitter_bad_image.gltf", "/materials/1/emissiveTexture: its image (/images/0, "},
+    };
+    for (const auto& [file, problem] : cases) {
+        const QString path = data + QString::fromUtf8(file);
+        const QString line = QStringLiteral("path tracer lights: ") + path + QStringLiteral(": ") +
+                             QString::fromUtf8(problem);
+        QVERIFY(test::load(w, path));
+        QTRY_VERIFY2_WITH_TIMEOUT(w.docks().log->text().contains(line),
+                                  qPrintable(w.docks().log->text()), 30000);
+        // Toggles that upload the same scene again say it no more.
+        QAction* checker = nullptr;
+        for (QAction* top : w.menuBar()->actions())
+            if (top->menu())
+                for (QAction* a : top->menu()->actions())
+                    if (a->text() == QStringLiteral("&Missing Textures as Checker")) checker = a;
+        QVERIFY(checker);
+        checker->trigger();
+        test::viewport_shot(w);
+        checker->trigger();
+        test::viewport_shot(w);
+        QCOMPARE(w.docks().log->text().count(line), 1);
+    }
     checkValidation();
 }
 

@@ -212,6 +212,7 @@ void LightingFamily::reference(gpu::Context& context, const scene::Scene& scene,
     render::Renderer renderer(context, ro);
     renderer.set_environment(options_.lighting.environment.get());
     renderer.load(scene);
+    report.warnings = renderer.resident().emissive.warnings; // the reference's light list
     const std::size_t seen = context.validation().count();
     auto step = [&] {
         progress.step();

@@ -1,46 +1,14 @@
 #include <sherpa/render/emissive_lights.h>
 
-#include <sherpa/texture/mips.h>
+#include <sherpa/scene/image_sources.h>
 #include <sherpa/texture/source_export.h>
+#include <sherpa/texture/texture_pipeline.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <optional>
 
 namespace sherpa::render {
-
-LuminanceGrid luminance_grid(std::uint32_t width, std::uint32_t height,
-                             std::span<const std::uint8_t> rgba8_srgb) {
-    LuminanceGrid g;
-    if (width == 0 || height == 0 || rgba8_srgb.size() < std::size_t(width) * height * 4) return g;
-    std::array<float, 256> linear;
-    for (int i = 0; i < 256; ++i) linear[std::size_t(i)] = tex::srgb_to_linear(float(i) / 255.0f);
-    g.width = std::min(width, kEmissiveGridSize);
-    g.height = std::min(height, kEmissiveGridSize);
-    g.texels.assign(std::size_t(g.width) * g.height, 0.0f);
-    // Each grid texel the mean of the source texels [x w / gw, (x + 1) w / gw).
-    for (std::uint32_t gy = 0; gy < g.height; ++gy) {
-        const std::uint32_t y0 = std::uint32_t(std::uint64_t(gy) * height / g.height);
-        const std::uint32_t y1 = std::uint32_t(std::uint64_t(gy + 1) * height / g.height);
-        for (std::uint32_t gx = 0; gx < g.width; ++gx) {
-            const std::uint32_t x0 = std::uint32_t(std::uint64_t(gx) * width / g.width);
-            const std::uint32_t x1 = std::uint32_t(std::uint64_t(gx + 1) * width / g.width);
-            double sum = 0.0;
-            for (std::uint32_t y = y0; y < y1; ++y)
-                for (std::uint32_t x = x0; x < x1; ++x) {
-                    const std::uint8_t* t = &rgba8_srgb[(std::size_t(y) * width + x) * 4];
-                    sum += 0.2126 * linear[t[0]] + 0.7152 * linear[t[1]] + 0.0722 * linear[t[2]];
-                }
-            const double texel =
-                sum / double(std::max<std::uint64_t>(1, std::uint64_t(y1 - y0) * (x1 - x0)));
-            g.texels[std::size_t(gy) * g.width + gx] = float(texel);
-            g.mean += texel;
-        }
-    }
-    g.mean /= double(g.texels.size());
-    return g;
-}
 
 namespace {
 
@@ -66,6 +34,107 @@ float nearest(const LuminanceGrid& g, glm::vec2 uv, scene::AddressMode wrap_u,
     const std::uint32_t x = std::min(std::uint32_t(u * float(g.width)), g.width - 1);
     const std::uint32_t y = std::min(std::uint32_t(v * float(g.height)), g.height - 1);
     return g.texels[std::size_t(y) * g.width + x];
+}
+
+// What the user reads: the file, the JSON pointer (where one applies) and the problem.
+std::string warning(const scene::Scene& scene, const std::string& pointer,
+                    const std::string& problem) {
+    return "path tracer lights: " + scene.source + ": " + (pointer.empty() ? "" : pointer + ": ") +
+           problem;
+}
+
+std::string material_pointer(const scene::Scene& scene, std::size_t material) {
+    // The default material the importer adds is not in the file.
+    return material < scene.counts.materials ? "/materials/" + std::to_string(material) : "";
+}
+
+std::string quoted_name(const scene::MaterialInstance& m) {
+    return m.name.empty() ? "" : " '" + m.name + "'";
+}
+
+// Why a scene that animates gets no list: its animations, else its first skinned or
+// morphed primitive.
+std::string animation_warning(const scene::Scene& scene) {
+    const std::string what = "its emissive triangles move, so they are found by BSDF sampling "
+                             "only (no light list)";
+    if (!scene.animations.empty())
+        return warning(scene, "/animations",
+                       "the scene animates (" + std::to_string(scene.animations.size()) +
+                           (scene.animations.size() == 1 ? " animation): " : " animations): ") +
+                           what);
+    const scene::PrimitiveMotion& m = scene.motions.front();
+    return warning(
+        scene, "/meshes/" + std::to_string(m.mesh) + "/primitives/" + std::to_string(m.primitive),
+        std::string("the scene animates (this primitive is ") +
+            (m.skinned() ? "skinned" : "morphed") + "): " + what);
+}
+
+// The first variant mapping that changes an emitter's luminance, as a warning; empty
+// when every variant keeps every emitter's.
+std::string variant_warning(const scene::Scene& scene, const std::vector<float>& luminance) {
+    for (const scene::VariantMeshMapping& v : scene.variants.meshes)
+        for (std::size_t k = 0; k < v.materials.size(); ++k) {
+            const std::int32_t m = v.materials[k];
+            if (m < 0 || std::size_t(m) >= luminance.size() ||
+                v.default_material >= luminance.size() ||
+                luminance[std::size_t(m)] == luminance[v.default_material])
+                continue;
+            std::string pointer;
+            for (const scene::PrimitiveInfo& p : scene.primitives)
+                if (p.engine_mesh == std::int32_t(v.mesh))
+                    pointer = "/meshes/" + std::to_string(p.mesh) + "/primitives/" +
+                              std::to_string(p.primitive) + "/extensions/KHR_materials_variants";
+            const std::string name =
+                k < scene.variants.names.size() ? " '" + scene.variants.names[k] + "'" : "";
+            return warning(
+                scene, pointer,
+                "material variant " + std::to_string(k) + name +
+                    " changes which surfaces emit (material " + std::to_string(m) +
+                    quoted_name(scene.materials[std::size_t(m)]) + " emits luminance " +
+                    std::to_string(luminance[std::size_t(m)]) + ", the default material " +
+                    std::to_string(v.default_material) +
+                    quoted_name(scene.materials[v.default_material]) + " " +
+                    std::to_string(luminance[v.default_material]) +
+                    "): its emissive triangles are found by BSDF sampling only (no light list)");
+        }
+    return {};
+}
+
+// The prepared texture of `image`, or null.
+const tex::PreparedTexture* prepared_image(const tex::PreparedTextureSet* set, std::int32_t image) {
+    if (!set) return nullptr;
+    for (const tex::PreparedTexture& t : set->textures)
+        if (t.image == image) return &t;
+    return nullptr;
+}
+
+// The luminance grid of emissive image `image`, read by material `material`: the
+// texture pipeline's when it made one, else decoded here; empty (sampled as if white,
+// with a warning) when the image cannot be read.
+LuminanceGrid image_grid_of(const scene::Scene& scene, std::int32_t image, std::size_t material,
+                            const tex::PreparedTextureSet* textures, EmissiveLights& out) {
+    const tex::PreparedTexture* prepared = prepared_image(textures, image);
+    if (prepared && prepared->luminance) {
+        ++out.textures_reused;
+        return *prepared->luminance;
+    }
+    std::string error;
+    if (prepared && prepared->failed) {
+        error = prepared->note; // the pipeline tried already: "undecodable: ...", "missing: ..."
+    } else {
+        tex::RgbaImage decoded;
+        if (tex::decode_image_source(scene.images[std::size_t(image)], decoded, error)) {
+            ++out.textures_read;
+            return luminance_grid(decoded.width, decoded.height, decoded.pixels);
+        }
+    }
+    const std::string pointer = material_pointer(scene, material);
+    out.warnings.push_back(
+        warning(scene, pointer.empty() ? "" : pointer + "/emissiveTexture",
+                "its image (/images/" + std::to_string(image) + ", " +
+                    scene::image_location(scene, image) + ") cannot be read (" + error +
+                    "): its emissive triangles are weighted as if it were white"));
+    return {};
 }
 
 } // namespace
@@ -98,7 +167,8 @@ float emitted_luminance(const scene::MaterialInstance& m) {
     return std::isfinite(lum) && lum > 0.0f ? lum : 0.0f;
 }
 
-EmissiveLights emissive_lights(const scene::Scene& scene, std::size_t max_triangles) {
+EmissiveLights emissive_lights(const scene::Scene& scene, std::size_t max_triangles,
+                               const tex::PreparedTextureSet* textures) {
     EmissiveLights out;
     std::vector<float> luminance(scene.materials.size(), 0.0f);
     bool any = false;
@@ -106,10 +176,11 @@ EmissiveLights emissive_lights(const scene::Scene& scene, std::size_t max_triang
         const scene::MaterialInstance& m = scene.materials[i];
         const float lum = emitted_luminance(m);
         if (lum > kMaxEmissiveLuminance) {
-            out.warnings.push_back("material " + std::to_string(i) + " '" + m.name +
-                                   "': emitted luminance " + std::to_string(lum) +
-                                   " is beyond 1e20; not sampled as a light (its samples are "
-                                   "capped at 1e20)");
+            out.warnings.push_back(warning(scene, material_pointer(scene, i),
+                                           "material" + quoted_name(m) + ": emitted luminance " +
+                                               std::to_string(lum) +
+                                               " is beyond 1e20; not sampled as a light (its "
+                                               "samples are capped at 1e20)"));
             continue;
         }
         luminance[i] = lum;
@@ -117,22 +188,15 @@ EmissiveLights emissive_lights(const scene::Scene& scene, std::size_t max_triang
     }
     if (!any) return out;
     if (!scene.animations.empty() || !scene.motions.empty()) {
-        out.warnings.push_back("the scene animates: its emissive triangles are found by "
-                               "BSDF sampling only (no light list)");
+        out.warnings.push_back(animation_warning(scene));
         return out;
     }
     // A material variant switched after loading may change what emits: a list of the
     // loaded variant would bias the others, so BSDF sampling alone finds them.
-    for (const scene::VariantMeshMapping& v : scene.variants.meshes)
-        for (std::int32_t m : v.materials)
-            if (m >= 0 && std::size_t(m) < luminance.size() &&
-                v.default_material < luminance.size() &&
-                luminance[std::size_t(m)] != luminance[v.default_material]) {
-                out.warnings.push_back("a material variant changes which surfaces emit: its "
-                                       "emissive triangles are found by BSDF sampling only (no "
-                                       "light list)");
-                return out;
-            }
+    if (std::string w = variant_warning(scene, luminance); !w.empty()) {
+        out.warnings.push_back(std::move(w));
+        return out;
+    }
     // Per emitting material with an emissive texture: its image's luminance grid (decoded
     // once per image, shared by the materials that use it) and its sampler's wrap modes.
     struct EmissiveTexture {
@@ -149,19 +213,8 @@ EmissiveLights emissive_lights(const scene::Scene& scene, std::size_t max_triang
         const scene::TextureRecord& texture = scene.textures[std::size_t(slot.texture)];
         if (texture.image < 0 || std::size_t(texture.image) >= scene.images.size()) continue;
         std::optional<LuminanceGrid>& image_grid = image_grids[std::size_t(texture.image)];
-        if (!image_grid) {
-            tex::RgbaImage decoded;
-            std::string error;
-            if (tex::decode_image_source(scene.images[std::size_t(texture.image)], decoded,
-                                         error)) {
-                image_grid = luminance_grid(decoded.width, decoded.height, decoded.pixels);
-                ++out.textures_read;
-            } else { // sampled as if white: unbiased, only less apt
-                image_grid = LuminanceGrid{};
-                out.warnings.push_back("image " + std::to_string(texture.image) + ": " + error +
-                                       "; its emissive triangles are weighted as if it were white");
-            }
-        }
+        // Sampled as if white when it cannot be read: unbiased, only less apt.
+        if (!image_grid) image_grid = image_grid_of(scene, texture.image, i, textures, out);
         if (image_grid->texels.empty()) continue;
         const scene::SamplerDesc sampler = scene.sampler_of(texture);
         grids[i] = {&*image_grid, sampler.wrap_u, sampler.wrap_v};
@@ -197,9 +250,10 @@ EmissiveLights emissive_lights(const scene::Scene& scene, std::size_t max_triang
             const double area = 0.5 * double(glm::length(glm::cross(e1, e2)));
             if (!(area > 0.0) || !std::isfinite(area)) continue; // degenerate: never hit
             if (out.triangles.size() == max_triangles) {
-                out.warnings.push_back("more than " + std::to_string(max_triangles) +
-                                       " emissive triangles: none sampled as lights");
-                return EmissiveLights{{}, 0.0f, 0.0, 0.0, 0, std::move(out.warnings)};
+                out.warnings.push_back(warning(scene, "",
+                                               "more than " + std::to_string(max_triangles) +
+                                                   " emissive triangles: none sampled as lights"));
+                return EmissiveLights{{}, 0.0f, 0.0, 0.0, 0, 0, std::move(out.warnings)};
             }
             // The texture's mean over the triangle, with a floor (kEmissiveTextureFloor);
             // 1 without a texture. A black texture emits nothing anywhere.
@@ -224,9 +278,10 @@ EmissiveLights emissive_lights(const scene::Scene& scene, std::size_t max_triang
     };
     if (out.triangles.empty() || !representable(total) || !representable(sampled_total)) {
         if (!out.triangles.empty())
-            out.warnings.push_back("the emissive triangles' total power is not representable; "
-                                   "none sampled as lights");
-        return EmissiveLights{{}, 0.0f, 0.0, 0.0, 0, std::move(out.warnings)};
+            out.warnings.push_back(warning(scene, "",
+                                           "the emissive triangles' total power is not "
+                                           "representable; none sampled as lights"));
+        return EmissiveLights{{}, 0.0f, 0.0, 0.0, 0, 0, std::move(out.warnings)};
     }
     double running = 0.0;
     for (std::size_t i = 0; i < out.triangles.size(); ++i) {

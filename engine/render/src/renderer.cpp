@@ -395,6 +395,9 @@ ResidentStats Renderer::resident() const {
         out.environment.anisotropy_lut_gpu_ms = a->build_gpu_ms();
     }
     frames_->count_target_bytes(out);
+    const EmissiveLights& e = scene_->emissive;
+    out.emissive = {e.triangles.size(), e.textures_read, e.textures_reused, scene_->emissive_ms,
+                    e.warnings};
     return out;
 }
 

@@ -9,6 +9,9 @@
 
 #include <sherpa/gpu/gpu_error.h>
 #include <sherpa/scene/visibility.h>
+#include <sherpa/texture/texture_pipeline.h>
+
+#include <chrono>
 
 namespace sherpa::render {
 
@@ -33,7 +36,13 @@ void SceneState::load(const scene::Scene& source, std::unique_ptr<GpuScene> gpu_
                                 "(or it was turned off: --rt off)");
         acceleration = std::make_unique<SceneAccelerationStructures>(resources, source, *gpu,
                                                                      options.acceleration);
-        emissive = emissive_lights(source);
+        // The emissive images' luminance from the texture pipeline (decoded once, or cached).
+        const auto start = std::chrono::steady_clock::now();
+        emissive =
+            emissive_lights(source, kMaxEmissiveTriangles, &gpu->materials().textures().prepared());
+        emissive_ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
     }
     lights.cameras.bounds = gpu->bounds().valid() ? gpu->bounds() : source.bounds;
     lights.cameras.cameras = source.cameras;
@@ -61,6 +70,7 @@ void SceneState::unload() {
     ++generation; // frame sets must stop naming the freed material buffers
     lights = SceneLights{};
     emissive = EmissiveLights{};
+    emissive_ms = 0.0;
     nodes_.clear();
     instance_node_.clear();
     hidden_given_.clear();

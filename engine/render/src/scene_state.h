@@ -76,6 +76,7 @@ public:
     SceneLights lights;
     // The emissive triangles the path tracer samples as lights (ray tracing only).
     EmissiveLights emissive;
+    double emissive_ms = 0.0;     // CPU time the list took at load
     std::uint64_t generation = 0; // counts loads and unloads
     std::uint64_t visibility_version = 0;
     // Counts material uploads after the load (animated materials): the path tracer's

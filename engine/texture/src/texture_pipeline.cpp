@@ -115,6 +115,25 @@ void use_hit(PreparedTexture& t, CacheLookup& found, const PipelineOptions& opt)
     t.bytes_on_disk = found.file_bytes;
     if (const std::string* p = found.texture.find(kKeyPsnr))
         t.psnr = std::strtod(p->c_str(), nullptr);
+    LuminanceGrid grid;
+    if (const std::string* g = found.texture.find(kKeyLuminance);
+        g && decode_luminance_grid(*g, grid))
+        t.luminance = std::make_shared<const LuminanceGrid>(std::move(grid));
+}
+
+// Per image: whether a material that emits (a factor above 0, not unlit) reads it as
+// its emissiveTexture; those images' luminance grids are made while they are decoded.
+std::vector<bool> emissive_images(const scene::Scene& scene) {
+    std::vector<bool> out(scene.images.size(), false);
+    for (const scene::MaterialInstance& m : scene.materials) {
+        const glm::vec3 e = m.emissive_factor * m.emissive_strength;
+        if (m.unlit || !(e.r > 0.0f || e.g > 0.0f || e.b > 0.0f) || !m.emissive.present() ||
+            std::size_t(m.emissive.texture) >= scene.textures.size())
+            continue;
+        const std::int32_t image = scene.textures[std::size_t(m.emissive.texture)].image;
+        if (image >= 0 && std::size_t(image) < out.size()) out[std::size_t(image)] = true;
+    }
+    return out;
 }
 
 } // namespace
@@ -173,6 +192,7 @@ std::vector<ImageProblem> find_image_problems(const scene::Scene& scene) {
 PreparedTextureSet prepare_textures(const scene::Scene& scene, const PipelineOptions& opt) {
     PreparedTextureSet set;
     const std::vector<TextureUse> uses = collect_texture_uses(scene);
+    const std::vector<bool> emissive = emissive_images(scene);
     std::optional<TextureCache> cache;
     if (opt.cache_dir) {
         cache.emplace(*opt.cache_dir, opt.cache_cap_bytes);
@@ -312,12 +332,18 @@ PreparedTextureSet prepare_textures(const scene::Scene& scene, const PipelineOpt
             add_once(set.warnings, failure_warning(t, reason));
             continue;
         }
+        if (emissive[std::size_t(t.image)])
+            t.luminance = std::make_shared<const LuminanceGrid>(
+                luminance_grid(decoded[i].width, decoded[i].height, decoded[i].pixels));
         decoded[i] = {}; // release the pixels early: scenes can hold many large images
         if (!opt.device_supports_bc) t.state = CacheState::Fallback;
         if (!cache) continue;
         Ktx2Texture ktx{t.format, t.width, t.height, t.levels, {}};
         // "inf" for lossless levels; strtod reads it back.
         if (t.psnr) ktx.metadata.emplace_back(std::string(kKeyPsnr), std::to_string(*t.psnr));
+        if (t.luminance)
+            ktx.metadata.emplace_back(std::string(kKeyLuminance),
+                                      encode_luminance_grid(*t.luminance));
         std::string error;
         if (!cache->store(key, t.source_hash, t.recipe, std::move(ktx), error)) {
             t.note = error;

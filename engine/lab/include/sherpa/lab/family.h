@@ -72,7 +72,10 @@ struct FamilyReport {
     std::string chart_x;
     std::vector<MethodResult> methods;
     std::vector<std::string> notes; // what was measured (inputs skipped, sampling)
-    bool cancelled = false;         // RunControl::cancel stopped it: no methods
+    // What the user should know the methods or reference could not do as the file asks
+    // (the path tracer's emitters it cannot sample as lights: file, JSON pointer, problem).
+    std::vector<std::string> warnings;
+    bool cancelled = false; // RunControl::cancel stopped it: no methods
 };
 
 struct RunControl {

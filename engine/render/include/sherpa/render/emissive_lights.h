@@ -5,6 +5,7 @@
 // mean over the triangle) through a CDF. Pure functions over the Scene, tested without
 // a device; shaders/include/emissive_lights.glsl reads the records.
 #include <sherpa/scene/scene.h>
+#include <sherpa/texture/luminance_grid.h>
 
 #include <glm/glm.hpp>
 
@@ -12,6 +13,10 @@
 #include <span>
 #include <string>
 #include <vector>
+
+namespace sherpa::tex {
+struct PreparedTextureSet;
+} // namespace sherpa::tex
 
 namespace sherpa::render {
 
@@ -50,8 +55,11 @@ struct EmissiveLights {
     float inv_power = 0.0f;
     double power = 0.0;                // sum of material luminance x area
     double sampled_power = 0.0;        // sum of the triangles' shares (texture means included)
-    std::uint32_t textures_read = 0;   // emissive images decoded for the triangles' means
-    std::vector<std::string> warnings; // why some or all emitters are not sampled
+    std::uint32_t textures_read = 0;   // emissive images decoded here for the triangles' means
+    std::uint32_t textures_reused = 0; // those whose grid the texture pipeline made instead
+    // Why some or all emitters are not sampled, one line each naming the file, the JSON
+    // pointer where one applies, and the problem ("FILE: /materials/3/emissiveTexture: ...").
+    std::vector<std::string> warnings;
 };
 
 // The luminance a material emits where its emissive texture is white (the weights of
@@ -59,15 +67,11 @@ struct EmissiveLights {
 float emitted_luminance(const scene::MaterialInstance& m);
 
 // A texture's luminance (linear, from its sRGB texels), box-filtered down to at most
-// kEmissiveGridSize texels a side, for the triangles' means.
-inline constexpr std::uint32_t kEmissiveGridSize = 256;
-struct LuminanceGrid {
-    std::uint32_t width = 0, height = 0;
-    std::vector<float> texels; // rows top to bottom (uv (0, 0) is the first texel)
-    double mean = 0.0;
-};
-LuminanceGrid luminance_grid(std::uint32_t width, std::uint32_t height,
-                             std::span<const std::uint8_t> rgba8_srgb);
+// kEmissiveGridSize texels a side, for the triangles' means: the texture layer's
+// (luminance_grid.h), which makes it for emissive images while it decodes them.
+inline constexpr std::uint32_t kEmissiveGridSize = tex::kLuminanceGridSize;
+using LuminanceGrid = tex::LuminanceGrid;
+using tex::luminance_grid;
 
 // The grid's mean over the triangle with texture coordinates `uv` (after the texture
 // transform): nearest texels at the centroids of 64 equal sub-triangles, wrapped as
@@ -78,8 +82,11 @@ double mean_over_triangle(const LuminanceGrid& grid, const glm::vec2 uv[3],
 
 // The light list of `scene` as its instances are placed (the default pose). A scene
 // that animates (node animation, skins, morphs) gets none: its triangles move, and a
-// stale list would bias the estimate, so BSDF sampling alone finds them.
+// stale list would bias the estimate, so BSDF sampling alone finds them. `textures`:
+// the scene's prepared textures, whose luminance grids (and failures) are taken
+// instead of decoding the emissive images again; null: every emissive image is decoded.
 EmissiveLights emissive_lights(const scene::Scene& scene,
-                               std::size_t max_triangles = kMaxEmissiveTriangles);
+                               std::size_t max_triangles = kMaxEmissiveTriangles,
+                               const tex::PreparedTextureSet* textures = nullptr);
 
 } // namespace sherpa::render

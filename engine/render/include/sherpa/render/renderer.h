@@ -88,6 +88,16 @@ struct CullFrame {
     bool shadows_rendered = false;
 };
 
+// The path tracer's emissive light list (render/emissive_lights.h), made at load with
+// ray tracing on.
+struct EmissiveLightStats {
+    std::size_t triangles = 0;         // sampled as lights (0: BSDF sampling only)
+    std::uint32_t images_decoded = 0;  // emissive images decoded for it at load
+    std::uint32_t images_reused = 0;   // those whose luminance the texture pipeline gave
+    double build_ms = 0.0;             // CPU time of the list at load
+    std::vector<std::string> warnings; // why emitters are not sampled: file, pointer, problem
+};
+
 // What a renderer holds between frames (Renderer::resident()).
 struct ResidentStats {
     // The loaded scene's acceleration structures (BLAS/TLAS statistics); null without
@@ -101,6 +111,8 @@ struct ResidentStats {
     // KHR_materials_transmission's background target and its depth (TransmissionPass):
     // 0 unless the scene has a transmissive material and the lit view was drawn.
     std::uint64_t transmission_target_bytes = 0;
+    // The loaded scene's emissive light list (empty without ray tracing or a scene).
+    EmissiveLightStats emissive;
 };
 
 // What set_material_variant() did: the variant now drawn and what changed for it.

@@ -41,7 +41,8 @@ struct Ktx2Texture {
     VkFormat format = VkFormat::Undefined;
     std::uint32_t width = 0, height = 0;
     std::vector<std::vector<std::uint8_t>> levels; // [0] is the full-size level
-    // Key/value metadata. Values are text; they are stored NUL-terminated. The
+    // Key/value metadata. Values are text (or bytes: the NUL the writer adds after each
+    // is the one the reader takes off); they are stored NUL-terminated. The
     // writer adds KTXwriter when absent and sorts keys as the spec requires.
     std::vector<std::pair<std::string, std::string>> metadata;
 

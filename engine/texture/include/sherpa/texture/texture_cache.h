@@ -44,6 +44,8 @@ inline constexpr std::string_view kKeySourceHash = "sherpa.source-hash";
 inline constexpr std::string_view kKeyRecipe = "sherpa.recipe";
 inline constexpr std::string_view kKeyChecksum = "sherpa.checksum";
 inline constexpr std::string_view kKeyPsnr = "sherpa.psnr";
+// An emissive image's luminance grid (encode_luminance_grid(): binary, not text).
+inline constexpr std::string_view kKeyLuminance = "sherpa.emissive-luminance";
 
 // $XDG_CACHE_HOME/sherpa/textures, else $HOME/.cache/sherpa/textures, else a
 // directory under the system temp directory. Takes the variables as arguments

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -16,6 +17,7 @@
 #include <sherpa/scene/scene.h>
 #include <sherpa/texture/block_codecs.h>
 #include <sherpa/texture/ktx2.h>
+#include <sherpa/texture/luminance_grid.h>
 #include <sherpa/texture/texture_cache.h>
 
 namespace sherpa::tex {
@@ -94,6 +96,11 @@ struct PreparedTexture {
     bool failed = false;           // state Missing or Undecodable: no levels
     std::string location;          // the image's file path, else "bufferView N", "data URI"...
     std::vector<std::string> uses; // "material 'NAME' baseColorTexture, ..." (image_slot_uses)
+    // An image an emitting material's emissiveTexture reads: its luminance grid, made from
+    // the decoded source (a miss) or read from the cache entry (a hit on an entry that
+    // holds one); the path tracer's light list reads it instead of decoding the image
+    // again. Null otherwise.
+    std::shared_ptr<const LuminanceGrid> luminance;
 };
 
 struct PreparedTextureSet {

@@ -33,8 +33,8 @@ constexpr Named kCamera[] = {
     {"perspective/aspectRatio", PointerProperty::CameraAspect, nullptr},
     {"perspective/znear", PointerProperty::CameraZnear, nullptr},
     {"perspective/zfar", PointerProperty::CameraZfar, nullptr},
-    {"orthographic/znear", PointerProperty::CameraZnear, nullptr},
-    {"orthographic/zfar", PointerProperty::CameraZfar, nullptr},
+    {"orthographic/znear", PointerProperty::CameraOrthographicZnear, nullptr},
+    {"orthographic/zfar", PointerProperty::CameraOrthographicZfar, nullptr},
     {"orthographic/xmag", PointerProperty::CameraXmag, nullptr},
     {"orthographic/ymag", PointerProperty::CameraYmag, nullptr},
 };
@@ -96,6 +96,8 @@ std::string_view to_string(PointerProperty p) {
                                                   "cameraAspect",
                                                   "cameraZnear",
                                                   "cameraZfar",
+                                                  "cameraOrthographicZnear",
+                                                  "cameraOrthographicZfar",
                                                   "cameraXmag",
                                                   "cameraYmag",
                                                   "nodeVisible"};
@@ -250,9 +252,11 @@ std::vector<std::uint32_t> apply_animated_properties(std::span<const AnimatedPro
             if (o < cameras.size()) cameras[o].aspect = v[0];
             continue;
         case PointerProperty::CameraZnear:
+        case PointerProperty::CameraOrthographicZnear:
             if (o < cameras.size()) cameras[o].znear = v[0];
             continue;
         case PointerProperty::CameraZfar:
+        case PointerProperty::CameraOrthographicZfar:
             if (o < cameras.size()) cameras[o].zfar = v[0];
             continue;
         case PointerProperty::CameraXmag:

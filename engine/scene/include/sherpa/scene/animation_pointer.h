@@ -64,8 +64,11 @@ enum class PointerProperty : std::uint8_t {
     // cameras[object]
     CameraYfov,
     CameraAspect,
-    CameraZnear,
-    CameraZfar,
+    CameraZnear, // perspective/znear
+    CameraZfar,  // perspective/zfar
+    // orthographic/znear, zfar: the same camera fields, their own pointers
+    CameraOrthographicZnear,
+    CameraOrthographicZfar,
     CameraXmag,
     CameraYmag,
     // nodes[object].extensions.KHR_node_visibility.visible (bool: value != 0, stepped)

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <utility>
 
 namespace sherpa::test {
 namespace {
@@ -40,6 +41,29 @@ TEST(EnvironmentSh9, ConstantRadianceGivesItsIrradianceEverywhere) {
     }
     // Bands 1 and 2 of a constant are zero.
     for (int k = 1; k < 9; ++k) EXPECT_NEAR(glm::length(sh[k]), 0.0f, 1e-4f) << k;
+}
+
+TEST(EnvironmentSh9, TinyConstantImagesAreIntegratedExactly) {
+    // Each texel is integrated over its patch of the sphere, not sampled at its centre:
+    // a 1x1 image (one texel for the whole sphere) must give the same irradiance as a
+    // large one. The centre-sample rule gave 0.45 of it at the poles for 1x1.
+    const glm::vec3 c(1.0f, 0.25f, 3.0f);
+    for (const auto [w, h] : {std::pair{1u, 1u}, std::pair{2u, 1u}, std::pair{1u, 2u},
+                              std::pair{3u, 2u}, std::pair{4u, 2u}, std::pair{5u, 3u}}) {
+        render::EnvironmentImage image;
+        image.width = w;
+        image.height = h;
+        image.rgba.assign(std::size_t(4) * w * h, 1.0f);
+        for (std::size_t t = 0; t < std::size_t(w) * h; ++t)
+            for (int k = 0; k < 3; ++k) image.rgba[4 * t + k] = c[k];
+        const render::Sh9 sh = render::irradiance_sh9(render::project_sh9(image));
+        for (const glm::vec3 n : directions()) {
+            const glm::vec3 e = render::evaluate_sh9(sh, n);
+            for (int k = 0; k < 3; ++k)
+                EXPECT_NEAR(e[k], c[k], 1e-4f * c[k]) << w << "x" << h << " at " << n.x << " "
+                                                      << n.y << " " << n.z;
+        }
+    }
 }
 
 TEST(EnvironmentSh9, LinearRadianceGivesTwoThirdsOfItsGradient) {

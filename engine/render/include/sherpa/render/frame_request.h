@@ -130,7 +130,7 @@ struct FrameRequest {
     // metals keep their energy); off shows single scattering alone.
     bool energy_compensation = true;
     // KHR_materials_anisotropy's environment specular (environment.h).
-    AnisotropyLighting anisotropy_lighting = AnisotropyLighting::Albedo;
+    AnisotropyLighting anisotropy_lighting = AnisotropyLighting::Lobe;
     // Display transform of the lit view: exposure in stops (0: radiance unchanged),
     // then the tone curve. Other views show data and are not tone-mapped.
     ToneMap tone_map = ToneMap::Neutral;

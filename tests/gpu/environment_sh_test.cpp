@@ -60,8 +60,8 @@ TEST(EnvironmentSh9, TinyConstantImagesAreIntegratedExactly) {
         for (const glm::vec3 n : directions()) {
             const glm::vec3 e = render::evaluate_sh9(sh, n);
             for (int k = 0; k < 3; ++k)
-                EXPECT_NEAR(e[k], c[k], 1e-4f * c[k]) << w << "x" << h << " at " << n.x << " "
-                                                      << n.y << " " << n.z;
+                EXPECT_NEAR(e[k], c[k], 1e-4f * c[k])
+                    << w << "x" << h << " at " << n.x << " " << n.y << " " << n.z;
         }
     }
 }

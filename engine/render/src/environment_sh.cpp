@@ -41,8 +41,8 @@ Sh9 project_sh9(const EnvironmentImage& image) {
         cos_phi[i] = float((std::sin(p1) - std::sin(p0)) / dphi);
         sin_phi[i] = float((std::cos(p0) - std::cos(p1)) / dphi);
         cos2_phi[i] = float(0.5 + (std::sin(2.0 * p1) - std::sin(2.0 * p0)) / (4.0 * dphi));
-        cos_sin_phi[i] = float((std::sin(p1) * std::sin(p1) - std::sin(p0) * std::sin(p0)) /
-                               (2.0 * dphi));
+        cos_sin_phi[i] =
+            float((std::sin(p1) * std::sin(p1) - std::sin(p0) * std::sin(p0)) / (2.0 * dphi));
     }
     std::array<glm::dvec3, 9> sum{};
     for (std::uint32_t j = 0; j < h; ++j) {

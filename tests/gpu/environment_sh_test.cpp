@@ -48,8 +48,8 @@ TEST(EnvironmentSh9, TinyConstantImagesAreIntegratedExactly) {
     // a 1x1 image (one texel for the whole sphere) must give the same irradiance as a
     // large one. The centre-sample rule gave 0.45 of it at the poles for 1x1.
     const glm::vec3 c(1.0f, 0.25f, 3.0f);
-    for (const auto [w, h] : {std::pair{1u, 1u}, std::pair{2u, 1u}, std::pair{1u, 2u},
-                              std::pair{3u, 2u}, std::pair{4u, 2u}, std::pair{5u, 3u}}) {
+    for (const auto& [w, h] : {std::pair{1u, 1u}, std::pair{2u, 1u}, std::pair{1u, 2u},
+                               std::pair{3u, 2u}, std::pair{4u, 2u}, std::pair{5u, 3u}}) {
         render::EnvironmentImage image;
         image.width = w;
         image.height = h;

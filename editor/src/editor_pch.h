@@ -2,7 +2,9 @@
 // target_precompile_headers): the Qt and standard headers that two or more editor
 // sources include. Parsing Qt's headers was most of each file's compile time (about
 // 7 of 10 s of CPU a file), and CI builds the editor cold. Sources still include what
-// they use; this list only decides what is parsed once.
+// they use; this list only decides what is parsed once. <QVulkanInstance> stays out:
+// it defines VK_NO_PROTOTYPES before vulkan.h, which the engine's headers need with
+// prototypes.
 #pragma once
 
 #include <QAbstractItemModel>
@@ -62,7 +64,6 @@
 #include <QUrl>
 #include <QVBoxLayout>
 #include <QValueAxis>
-#include <QVulkanInstance>
 #include <QWidget>
 #include <QWindow>
 #include <QtConcurrent/QtConcurrentRun>

@@ -861,6 +861,10 @@ PSNR %3
 <context>
     <name>sherpa::editor::LabDock</name>
     <message>
+        <source>Warning: %1</source>
+        <translation>Warning: %1</translation>
+    </message>
+    <message>
         <source>The Lab could not run: %1</source>
         <translation>The Lab could not run: %1</translation>
     </message>

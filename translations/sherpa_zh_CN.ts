@@ -861,6 +861,10 @@ PSNR %3
 <context>
     <name>sherpa::editor::LabDock</name>
     <message>
+        <source>Warning: %1</source>
+        <translation>警告：%1</translation>
+    </message>
+    <message>
         <source>The Lab could not run: %1</source>
         <translation>实验室无法运行：%1</translation>
     </message>

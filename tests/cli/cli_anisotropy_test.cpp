@@ -177,7 +177,7 @@ TEST(CliAnisotropy, OnlyScenesWithAnisotropyMakeTheTable) {
     EXPECT_EQ(with["anisotropy_lut_bytes"].get<std::uint64_t>(), 196608u);
     EXPECT_EQ(without["anisotropy_lut_bytes"].get<std::uint64_t>(), 0u);
     EXPECT_EQ(with["bytes"].get<std::uint64_t>(), without["bytes"].get<std::uint64_t>() + 196608u);
-    EXPECT_EQ(with["anisotropy_lighting"], "albedo");
+    EXPECT_EQ(with["anisotropy_lighting"], "lobe"); // the default
     EXPECT_TRUE(environment_report(sweep("anisotropy_sweep"), " --environment none").is_null());
     std::string pngs[3];
     const char* modes[] = {"isotropic", "albedo", "lobe"};

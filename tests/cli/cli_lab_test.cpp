@@ -166,9 +166,9 @@ TEST(CliLab, LightingJsonShapeAndChart) {
     EXPECT_EQ(j.at("family"), "lighting");
     EXPECT_EQ(j.at("chart_error"), "mean_diff");
     EXPECT_EQ(j.at("time_unit"), "ms/frame");
-    // 2 irradiance, 13 prefilter, 2 compensation, 4 shadows, 2 transmission and the path
-    // tracer at 1 spp (the series stops at 8 / 4).
-    ASSERT_EQ(j.at("methods").size(), 24u);
+    // 2 irradiance, 13 prefilter, 2 compensation, 4 shadows, 2 transmission, 3 anisotropy
+    // and the path tracer at 1 spp (the series stops at 8 / 4).
+    ASSERT_EQ(j.at("methods").size(), 27u);
     const bool rt = j["methods"].back().at("ran").get<bool>();
     if (!rt) GTEST_SKIP() << j["methods"].back().at("note");
     EXPECT_NE(j.at("reference").get<std::string>().find("8 spp"), std::string::npos);
@@ -179,7 +179,7 @@ TEST(CliLab, LightingJsonShapeAndChart) {
     std::set<std::string> groups;
     for (const auto& m : j.at("methods")) {
         groups.insert(m.at("group").get<std::string>());
-        if (m.at("group") == "transmission") {
+        if (m.at("group") == "transmission" || m.at("group") == "anisotropy") {
             EXPECT_FALSE(m.at("ran").get<bool>());
             EXPECT_NE(m.at("note").get<std::string>().find("not applicable"), std::string::npos);
             continue;
@@ -191,7 +191,7 @@ TEST(CliLab, LightingJsonShapeAndChart) {
     }
     EXPECT_EQ(groups,
               (std::set<std::string>{"irradiance", "specular prefilter", "energy compensation",
-                                     "shadows", "transmission", "path tracer"}));
+                                     "shadows", "transmission", "anisotropy", "path tracer"}));
     EXPECT_TRUE(j["methods"].back().at("errors").contains("ms_per_sample"));
     std::ifstream in(svg);
     std::stringstream text;

@@ -63,12 +63,7 @@ TEST_F(PosedVariantSwitch, MaskedVariantOnASkinnedOrMorphedMeshForcesAnyHit) {
         auto check = [&](double t, bool masked, const char* when) {
             SCOPED_TRACE(std::string(when) + " t=" + std::to_string(t));
             s.pose = std::make_shared<const scene::Pose>(scene::evaluate_pose(*scene, 0, t));
-            std::vector<std::uint8_t> raster, rays;
-            s.renderer = render::RendererKind::Raster;
-            renderer.render(s, &raster);
-            s.renderer = render::RendererKind::RayTraced;
-            renderer.render(s, &rays);
-            const Agreement a = compare(raster, rays, s.width, s.height, 2);
+            const Agreement a = rays_against_raster(renderer, s, 2);
             std::printf("%-12s %-14s t=%.1f agree %7.3f%% of %5zu (covered %zu/%zu, holes "
                         "%zu/%zu)\n",
                         name.c_str(), when, t, 100.0 * a.fraction(), a.compared, a.covered_a,

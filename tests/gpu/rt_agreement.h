@@ -7,6 +7,9 @@
 #include <cstdlib>
 #include <vector>
 
+#include <sherpa/render/frame_request.h>
+#include <sherpa/render/renderer.h>
+
 namespace sherpa::test {
 
 struct Agreement {
@@ -62,6 +65,18 @@ inline Agreement compare(const std::vector<std::uint8_t>& a, const std::vector<s
             r.max_difference = std::max(r.max_difference, d);
         }
     return r;
+}
+
+// The frame `s` drawn by the raster and by the ray tracer, compared as compare() does.
+// `s.renderer` is left at RayTraced.
+inline Agreement rays_against_raster(render::Renderer& renderer, render::FrameRequest& s,
+                                     int tolerance) {
+    std::vector<std::uint8_t> raster, rays;
+    s.renderer = render::RendererKind::Raster;
+    renderer.render(s, &raster);
+    s.renderer = render::RendererKind::RayTraced;
+    renderer.render(s, &rays);
+    return compare(raster, rays, s.width, s.height, tolerance);
 }
 
 } // namespace sherpa::test

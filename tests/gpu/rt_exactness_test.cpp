@@ -54,12 +54,7 @@ protected:
                 v.id == render::DebugView::Shadow || v.id == render::DebugView::Lit)
                 continue;
             s.view = v.id;
-            std::vector<std::uint8_t> raster, rays;
-            s.renderer = render::RendererKind::Raster;
-            renderer.render(s, &raster);
-            s.renderer = render::RendererKind::RayTraced;
-            renderer.render(s, &rays);
-            const Agreement a = compare(raster, rays, s.width, s.height, 2);
+            const Agreement a = rays_against_raster(renderer, s, 2);
             std::printf("%-26s %-15s agree %7.3f%% of %5zu (max diff %3d, covered %zu/%zu, holes "
                         "%zu/%zu)\n",
                         name.c_str(), std::string(v.name).c_str(), 100.0 * a.fraction(), a.compared,

@@ -93,7 +93,8 @@ TEST_F(AccelerationTest, OneBlasPerGltfMeshOpaqueOnlyForOpaqueMaterials) {
     for (const scene::Mesh& m : scene->meshes) {
         triangles += m.indices.size() / 3;
         const bool ss = !scene->materials[m.material_id].double_sided;
-        single_sided[m.group_id] = single_sided.contains(m.group_id) ? single_sided[m.group_id] && ss : ss;
+        single_sided[m.group_id] =
+            single_sided.contains(m.group_id) ? single_sided[m.group_id] && ss : ss;
     }
     std::uint64_t opaque = 0;
     for (const scene::Mesh& m : scene->meshes) {

@@ -12,9 +12,8 @@
 namespace sherpa::render {
 
 bool culls_back_faces(const scene::MaterialInstance& material) {
-    const bool volume = material.volume.has_value() &&
-                        (material.transmission.has_value() ||
-                         material.diffuse_transmission.has_value());
+    const bool volume = material.volume.has_value() && (material.transmission.has_value() ||
+                                                        material.diffuse_transmission.has_value());
     return !material.double_sided && !volume;
 }
 

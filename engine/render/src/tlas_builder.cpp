@@ -122,9 +122,8 @@ void SceneAccelerationStructures::build_tlas(std::span<const glm::mat4> node_wor
         // where all its materials are single-sided the traversal culls back faces for
         // the rays that ask (rt.rgen, pt.rgen). Vulkan's default facing (no
         // TRIANGLE_FLIP_FACING) is the hit shaders' front (h.front in rt_hit.glsl).
-        inst.flags = instances_cull(p.blas)
-                         ? 0
-                         : VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
+        inst.flags =
+            instances_cull(p.blas) ? 0 : VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
         // A material switch made a geometry built opaque need any-hit (follow_materials()).
         if (p.blas < force_no_opaque_.size() && force_no_opaque_[p.blas])
             inst.flags |= VK_GEOMETRY_INSTANCE_FORCE_NO_OPAQUE_BIT_KHR;

@@ -69,11 +69,11 @@ public:
 
     // What follow_materials() changed.
     struct MaterialFollow {
-        std::uint32_t records = 0;     // geometry records whose material word was rewritten
-        std::uint64_t gpu_bytes = 0;   // uploaded: those material words
+        std::uint32_t records = 0;       // geometry records whose material word was rewritten
+        std::uint64_t gpu_bytes = 0;     // uploaded: those material words
         std::uint32_t forced_blas = 0;   // BLAS built opaque that now need any-hit
         std::uint32_t unculled_blas = 0; // BLAS built to cull back faces that now must not
-        bool tlas_rebuilt = false;     // at the loaded transforms: the caller poses it again
+        bool tlas_rebuilt = false;       // at the loaded transforms: the caller poses it again
     };
     // After meshes took other materials (KHR_materials_variants): each geometry
     // record's material word follows its mesh's in `gpu`, so hit shaders shade the new
@@ -110,7 +110,7 @@ private:
     // Per geometry record: its engine mesh, whether it was built opaque, its material now.
     std::vector<std::uint32_t> record_mesh_, record_material_;
     std::vector<bool> record_opaque_;
-    std::vector<bool> material_culls_;  // per material: rt_plan.h's culls_back_faces()
+    std::vector<bool> material_culls_; // per material: rt_plan.h's culls_back_faces()
     // Per BLAS (static, then posed), from follow_materials(): its instances force
     // any-hit, or no longer cull back faces (a material of it is now double-sided).
     std::vector<bool> force_no_opaque_, cull_disabled_;

@@ -63,6 +63,7 @@ nlohmann::json to_json(const gpu::Context& context, const render::AccelerationSt
                         {"name", b.name},
                         {"geometries", b.geometries},
                         {"opaque_geometries", b.opaque_geometries},
+                        {"culls_back_faces", b.culls_back_faces},
                         {"triangles", b.triangles},
                         {"first_geometry", b.first_geometry},
                         {"built", b.built},

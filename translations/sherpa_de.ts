@@ -2300,8 +2300,8 @@ Es ist keine Szene geöffnet.</translation>
         <translation>; Raytracer: %1 Geometrie-Einträge, %2 Bytes</translation>
     </message>
     <message>
-        <source>, TLAS rebuilt: any-hit forced on %1 BLAS built opaque</source>
-        <translation>, TLAS neu aufgebaut: Any-Hit erzwungen für %1 opak gebaute BLAS</translation>
+        <source>, TLAS rebuilt: any-hit forced on %1 BLAS built opaque, back-face culling off on %2</source>
+        <translation>, TLAS neu aufgebaut: Any-Hit erzwungen für %1 opak gebaute BLAS, Rückseiten-Culling aus für %2</translation>
     </message>
 </context>
 <context>

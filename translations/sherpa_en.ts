@@ -2300,8 +2300,8 @@ No scene is open.</translation>
         <translation>; ray tracer: %1 geometry record(s), %2 bytes</translation>
     </message>
     <message>
-        <source>, TLAS rebuilt: any-hit forced on %1 BLAS built opaque</source>
-        <translation>, TLAS rebuilt: any-hit forced on %1 BLAS built opaque</translation>
+        <source>, TLAS rebuilt: any-hit forced on %1 BLAS built opaque, back-face culling off on %2</source>
+        <translation>, TLAS rebuilt: any-hit forced on %1 BLAS built opaque, back-face culling off on %2</translation>
     </message>
 </context>
 <context>

@@ -2300,8 +2300,8 @@ No scene is open.</source>
         <translation>；光线追踪器：%1 条几何记录，%2 字节</translation>
     </message>
     <message>
-        <source>, TLAS rebuilt: any-hit forced on %1 BLAS built opaque</source>
-        <translation>，TLAS 已重建：对 %1 个按不透明构建的 BLAS 强制执行 any-hit</translation>
+        <source>, TLAS rebuilt: any-hit forced on %1 BLAS built opaque, back-face culling off on %2</source>
+        <translation>，TLAS 已重建：对 %1 个按不透明构建的 BLAS 强制执行 any-hit，对 %2 个关闭背面剔除</translation>
     </message>
 </context>
 <context>

@@ -68,7 +68,10 @@ QString VariantMenu::describe(const render::VariantSwitch& s, const QString& nam
                    .arg(s.rt_records)
                    .arg(qulonglong(s.rt_gpu_bytes));
     if (s.tlas_rebuilt)
-        rays += tr(", TLAS rebuilt: any-hit forced on %1 BLAS built opaque").arg(s.rt_forced_blas);
+        rays += tr(", TLAS rebuilt: any-hit forced on %1 BLAS built opaque, back-face culling "
+                   "off on %2")
+                    .arg(s.rt_forced_blas)
+                    .arg(s.rt_unculled_blas);
     return tr("Material variant: %1 (%2 primitive(s), %3 draw(s) changed material; %4 GPU bytes "
               "uploaded%5; nothing reloaded).")
         .arg(name)

@@ -29,6 +29,7 @@ void expect_consistent(const json& j, const std::string& scene) {
         EXPECT_GT(b["geometries"].get<int>(), 0);
         EXPECT_GT(b["triangles"].get<std::uint64_t>(), 0u);
         EXPECT_LE(b["opaque_geometries"].get<int>(), b["geometries"].get<int>());
+        EXPECT_TRUE(b["culls_back_faces"].is_boolean());
         EXPECT_EQ(b["first_geometry"].get<std::uint32_t>(), next_record); // one array, in order
         next_record += b["geometries"].get<std::uint32_t>();
         EXPECT_GT(b["scratch_bytes"].get<std::uint64_t>(), 0u);

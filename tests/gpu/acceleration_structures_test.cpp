@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -85,22 +86,33 @@ TEST_F(AccelerationTest, OneBlasPerGltfMeshOpaqueOnlyForOpaqueMaterials) {
     if (!has_rt()) GTEST_SKIP() << "device without ray tracing";
     auto scene = load("builtin:default");
     const render::AccelerationStats s = build(*scene);
-    std::set<std::uint32_t> groups;
-    std::uint64_t triangles = 0, opaque = 0;
+    // Per glTF mesh: whether all its materials are single-sided (the traversal then
+    // culls its back faces), and its opaque materials' sidedness.
+    std::map<std::uint32_t, bool> single_sided;
+    std::uint64_t triangles = 0;
     for (const scene::Mesh& m : scene->meshes) {
-        groups.insert(m.group_id);
         triangles += m.indices.size() / 3;
-        const scene::MaterialInstance& material = scene->materials[m.material_id];
-        opaque += material.alpha_mode == scene::AlphaMode::Opaque && material.double_sided;
+        const bool ss = !scene->materials[m.material_id].double_sided;
+        single_sided[m.group_id] =
+            single_sided.contains(m.group_id) ? single_sided[m.group_id] && ss : ss;
     }
-    ASSERT_EQ(s.blas.size(), groups.size());
+    std::uint64_t opaque = 0;
+    for (const scene::Mesh& m : scene->meshes) {
+        const scene::MaterialInstance& material = scene->materials[m.material_id];
+        opaque += material.alpha_mode == scene::AlphaMode::Opaque &&
+                  (material.double_sided || single_sided[m.group_id]);
+    }
+    ASSERT_EQ(s.blas.size(), single_sided.size());
     EXPECT_EQ(s.blas_triangles(), triangles);
-    std::uint64_t opaque_geometries = 0;
+    std::uint64_t opaque_geometries = 0, culling = 0;
     for (const render::BlasStats& b : s.blas) {
         opaque_geometries += b.opaque_geometries;
+        EXPECT_EQ(b.culls_back_faces, single_sided[b.mesh]) << b.name;
+        culling += b.culls_back_faces ? 1 : 0;
         EXPECT_GT(b.scratch_bytes, 0u);
         EXPECT_LE(b.compacted_bytes, b.build_bytes);
     }
+    EXPECT_GT(culling, 0u);
     EXPECT_EQ(opaque_geometries, opaque);
     EXPECT_LT(opaque_geometries, s.geometry_records); // glass and perforated box
     EXPECT_EQ(s.geometry_record_bytes, s.geometry_records * sizeof(render::GPUGeometryInfo));
@@ -230,11 +242,53 @@ TEST(RtPlan, GeometriesFollowPrimitivesOfEachGltfMesh) {
     EXPECT_EQ(plans[0].group, 0u);
     EXPECT_EQ(plans[0].name, "m0");
     ASSERT_EQ(plans[0].geometries.size(), 2u);
-    EXPECT_FALSE(plans[0].geometries[0].opaque); // single-sided: any-hit culls back faces
+    EXPECT_TRUE(plans[0].cull_back_faces);       // all single-sided
+    EXPECT_TRUE(plans[0].geometries[0].opaque);  // single-sided: the traversal culls
     EXPECT_FALSE(plans[0].geometries[1].opaque); // masked: reaches any-hit
-    scene.materials[0].double_sided = true;
-    EXPECT_TRUE(render::plan_blas(scene, meshes)[0].geometries[0].opaque);
     EXPECT_EQ(plans[0].triangles, 4u);
+}
+
+// Back faces are culled by the traversal only in a mesh whose every material is
+// single-sided and bounds no volume; elsewhere single-sided opaque geometries reach
+// any-hit, which rejects their back faces per material.
+TEST(RtPlan, TheTraversalCullsBackFacesOnlyOfMeshesWhollySingleSided) {
+    scene::Scene scene;
+    scene.materials.resize(3);
+    scene.materials[1].double_sided = true;
+    std::vector<render::GpuMesh> meshes(2);
+    for (std::uint32_t i = 0; i < 2; ++i) {
+        scene::Mesh m;
+        m.group_id = 0;
+        m.material_id = i; // 0 single-sided, then 1 double-sided
+        scene.meshes.push_back(m);
+        meshes[i].index_count = 3;
+    }
+    auto plans = render::plan_blas(scene, meshes);
+    ASSERT_EQ(plans.size(), 1u);
+    EXPECT_FALSE(plans[0].cull_back_faces);
+    EXPECT_FALSE(plans[0].geometries[0].opaque); // single-sided, not culled: any-hit
+    EXPECT_TRUE(plans[0].geometries[1].opaque);  // double-sided
+    scene.meshes[1].material_id = 2;             // both single-sided
+    plans = render::plan_blas(scene, meshes);
+    EXPECT_TRUE(plans[0].cull_back_faces);
+    EXPECT_TRUE(plans[0].geometries[0].opaque && plans[0].geometries[1].opaque);
+    // A volume's back faces bound it: never culled, so any-hit takes the sides.
+    scene.materials[2].volume.emplace();
+    EXPECT_TRUE(render::plan_blas(scene, meshes)[0].cull_back_faces); // no transmission
+    scene.materials[2].transmission.emplace();
+    plans = render::plan_blas(scene, meshes);
+    EXPECT_FALSE(plans[0].cull_back_faces);
+    EXPECT_FALSE(plans[0].geometries[0].opaque || plans[0].geometries[1].opaque);
+    scene.materials[2].transmission.reset();
+    scene.materials[2].diffuse_transmission.emplace();
+    EXPECT_FALSE(render::plan_blas(scene, meshes)[0].cull_back_faces);
+    // A mesh without a material (index past the list) is never culled.
+    scene.meshes[1].material_id = 7;
+    plans = render::plan_blas(scene, meshes);
+    EXPECT_FALSE(plans[0].cull_back_faces);
+    EXPECT_FALSE(plans[0].geometries[1].opaque);
+    EXPECT_TRUE(render::culls_back_faces(scene.materials[0]));
+    EXPECT_FALSE(render::culls_back_faces(scene.materials[1]));
 }
 
 // Posed BLAS: one per (node, glTF mesh) instance with a moving primitive; skinned

@@ -226,5 +226,77 @@ TEST_F(VariantSwitch, RaysFollowTheSwitchedVariant) {
     }
 }
 
+// A variant that brings a double-sided material into a mesh whose materials were all
+// single-sided: the traversal culled that mesh's back faces, and its instances stop
+// culling (TLAS rebuilt, no BLAS rebuilt). Seen from inside sphere 0, its inside shows
+// only while its material is double-sided ("Warm": red), so rays that still culled would
+// show the spheres behind it where the raster draws red.
+TEST_F(VariantSwitch, ADoubleSidedVariantStopsTheTraversalCullingItsMesh) {
+    if (!context().info().ray_tracing_enabled) GTEST_SKIP() << "device without ray tracing";
+    auto red_double_sided = [&](std::int32_t variant) {
+        std::unique_ptr<scene::Scene> s = load(file("variants.gltf"));
+        s->materials[kRed].double_sided = true; // the others single-sided, as in the file
+        scene::apply_material_variant(*s, variant);
+        return s;
+    };
+    render::RendererOptions options;
+    options.ray_tracing = true;
+    options.textures = test_texture_settings();
+    auto traced = [&](const scene::Scene& scene) {
+        auto r = std::make_unique<render::Renderer>(context(), options);
+        r->load(scene, streams_setup(render::StreamPolicy::AllPresent));
+        return r;
+    };
+    std::unique_ptr<scene::Scene> scene = red_double_sided(-1);
+    auto switched = traced(*scene);
+    render::FrameRequest s;
+    s.width = 160;
+    s.height = 120;
+    s.shadows = false;
+    s.path.samples = 4;
+    s.path.restart = true;
+    std::string error;
+    ASSERT_TRUE(render::parse_camera_spec("eye=-1,0,0:target=1,0,0:fov=60", s.camera, error));
+    s.view = render::DebugView::BaseColor;
+    std::vector<std::uint8_t> inside_default;
+    s.renderer = render::RendererKind::Raster;
+    switched->render(s, &inside_default);
+    struct Step {
+        std::int32_t variant;
+        std::uint32_t forced_blas, unculled_blas;
+    };
+    for (const Step step : {Step{kWarm, 0, 1}, Step{kCool, 1, 0}, Step{-1, 0, 0}}) {
+        SCOPED_TRACE("variant " + std::to_string(step.variant));
+        const render::VariantSwitch v = render::set_material_variant(*switched, step.variant);
+        EXPECT_EQ(v.rt_forced_blas, step.forced_blas);
+        EXPECT_EQ(v.rt_unculled_blas, step.unculled_blas);
+        EXPECT_TRUE(v.tlas_rebuilt);
+        // Every pixel (from inside a double-sided sphere nothing shows the clear colour,
+        // so compare()'s coverage does not apply): within 2 of 255 but along silhouettes.
+        s.view = render::DebugView::BaseColor;
+        std::vector<std::uint8_t> raster, rays;
+        s.renderer = render::RendererKind::Raster;
+        switched->render(s, &raster);
+        s.renderer = render::RendererKind::RayTraced;
+        switched->render(s, &rays);
+        const std::size_t differ = differing_pixels(raster, rays, 2, 3);
+        std::printf("variant %2d base colour from inside sphere 0: %zu of %u pixels differ\n",
+                    step.variant, differ, s.width * s.height);
+        EXPECT_LE(differ, s.width * s.height / 100u);
+        if (step.variant == kWarm) {
+            EXPECT_GT(differing_pixels(raster, inside_default, 8), 5000u);
+        }
+        // The path tracer: as the file loaded with the variant, whose BLAS were planned
+        // with that material from the start.
+        s.view = render::DebugView::Lit;
+        s.renderer = render::RendererKind::RayTraced;
+        std::vector<std::uint8_t> lit, loaded_lit;
+        switched->render(s, &lit);
+        std::unique_ptr<scene::Scene> loaded_scene = red_double_sided(step.variant);
+        traced(*loaded_scene)->render(s, &loaded_lit);
+        EXPECT_EQ(lit, loaded_lit);
+    }
+}
+
 } // namespace
 } // namespace sherpa::test

@@ -60,6 +60,8 @@ BlasInput describe_blas(const BlasPlan& plan, const GpuScene& gpu,
 void SceneAccelerationStructures::build_blas(const scene::Scene& scene, const GpuScene& gpu,
                                              const AccelerationSettings& settings) {
     const std::vector<BlasPlan> plans = plan_blas(scene, gpu.meshes());
+    for (const scene::MaterialInstance& m : scene.materials)
+        material_culls_.push_back(culls_back_faces(m));
     const gpu::Context& context = resources_.context();
     const VkDevice device = context.device();
 
@@ -74,6 +76,7 @@ void SceneAccelerationStructures::build_blas(const scene::Scene& scene, const Gp
         s.geometries = static_cast<std::uint32_t>(plan.geometries.size());
         s.triangles = plan.triangles;
         s.first_geometry = static_cast<std::uint32_t>(records.size());
+        s.culls_back_faces = plan.cull_back_faces;
         for (const BlasGeometryPlan& g : plan.geometries) {
             const GpuMesh& mesh = gpu.meshes()[g.mesh];
             GPUGeometryInfo r{};

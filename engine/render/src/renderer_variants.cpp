@@ -43,6 +43,7 @@ VariantSwitch SceneChanges::set_variant(std::int32_t variant) {
         out.rt_records = rt.records;
         out.rt_gpu_bytes = rt.gpu_bytes;
         out.rt_forced_blas = rt.forced_blas;
+        out.rt_unculled_blas = rt.unculled_blas;
         out.tlas_rebuilt = rt.tlas_rebuilt;
         // The rebuilt TLAS holds the loaded transforms: the frame's pose goes in again.
         if (rt.tlas_rebuilt) state.rt_pose_generation = 0;

@@ -11,6 +11,12 @@
 
 namespace sherpa::render {
 
+bool culls_back_faces(const scene::MaterialInstance& material) {
+    const bool volume = material.volume.has_value() && (material.transmission.has_value() ||
+                                                        material.diffuse_transmission.has_value());
+    return !material.double_sided && !volume;
+}
+
 std::vector<BlasPlan> plan_blas(const scene::Scene& scene, std::span<const GpuMesh> meshes) {
     // Engine meshes by glTF mesh, in primitive order.
     std::vector<std::vector<std::uint32_t>> by_group;
@@ -23,6 +29,7 @@ std::vector<BlasPlan> plan_blas(const scene::Scene& scene, std::span<const GpuMe
     for (std::uint32_t group = 0; group < by_group.size(); ++group) {
         BlasPlan plan;
         plan.group = group;
+        plan.cull_back_faces = true;
         for (std::uint32_t m : by_group[group]) {
             const GpuMesh& g = meshes[m];
             if ((g.flags & kMeshTopologyBits) != 0 || g.index_count < 3) continue;
@@ -30,15 +37,23 @@ std::vector<BlasPlan> plan_blas(const scene::Scene& scene, std::span<const GpuMe
             BlasGeometryPlan geometry;
             geometry.mesh = m;
             geometry.triangles = g.index_count / 3;
-            geometry.opaque =
-                mesh.material_id < scene.materials.size() &&
-                scene.materials[mesh.material_id].alpha_mode == scene::AlphaMode::Opaque &&
-                scene.materials[mesh.material_id].double_sided;
+            // Opaque for now when the material is; sidedness decides below, once the
+            // whole mesh is known.
+            const bool has_material = mesh.material_id < scene.materials.size();
+            geometry.opaque = has_material && scene.materials[mesh.material_id].alpha_mode ==
+                                                  scene::AlphaMode::Opaque;
+            if (!has_material || !culls_back_faces(scene.materials[mesh.material_id]))
+                plan.cull_back_faces = false;
             plan.triangles += geometry.triangles;
             plan.geometries.push_back(geometry);
             if (plan.name.empty()) plan.name = mesh.name.substr(0, mesh.name.rfind('#'));
         }
-        if (!plan.geometries.empty()) out.push_back(std::move(plan));
+        if (plan.geometries.empty()) continue;
+        // Without culling, a single-sided geometry's back faces are any-hit's to reject.
+        for (BlasGeometryPlan& g : plan.geometries)
+            g.opaque = g.opaque && (plan.cull_back_faces ||
+                                    scene.materials[scene.meshes[g.mesh].material_id].double_sided);
+        out.push_back(std::move(plan));
     }
     return out;
 }

@@ -57,6 +57,15 @@ std::uint32_t SceneAccelerationStructures::first_geometry(std::uint32_t blas) co
                                : posed_->first_geometry(blas - blas_.size());
 }
 
+std::uint32_t SceneAccelerationStructures::plan_of(std::uint32_t blas) const {
+    return blas < blas_.size() ? blas : posed_->plan(blas - blas_.size()).plan;
+}
+
+bool SceneAccelerationStructures::instances_cull(std::uint32_t blas) const {
+    return stats_.blas[plan_of(blas)].culls_back_faces &&
+           !(blas < cull_disabled_.size() && cull_disabled_[blas]);
+}
+
 void SceneAccelerationStructures::build_tlas(std::span<const glm::mat4> node_world) {
     // Posed instances join once their BLAS were built (the first update_pose()).
     std::vector<TlasCandidate> unposed;
@@ -107,9 +116,14 @@ void SceneAccelerationStructures::build_tlas(std::span<const glm::mat4> node_wor
         inst.instanceCustomIndex = first;
         inst.mask = 0xff;
         inst.instanceShaderBindingTableRecordOffset = 0;
-        // Facing is decided in the hit shaders from the object-space winding (culling
-        // is per material, in rt.rahit, as the rasterizer's), so the hardware culls nothing.
-        inst.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
+        // Facing is the object-space winding (a mirroring instance does not flip it), as
+        // the hit shaders decide it. Where a mesh mixes sidedness, culling is per
+        // material in any-hit (rt.rahit, pt.rahit) and the traversal culls nothing;
+        // where all its materials are single-sided the traversal culls back faces for
+        // the rays that ask (rt.rgen, pt.rgen). Vulkan's default facing (no
+        // TRIANGLE_FLIP_FACING) is the hit shaders' front (h.front in rt_hit.glsl).
+        inst.flags =
+            instances_cull(p.blas) ? 0 : VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
         // A material switch made a geometry built opaque need any-hit (follow_materials()).
         if (p.blas < force_no_opaque_.size() && force_no_opaque_[p.blas])
             inst.flags |= VK_GEOMETRY_INSTANCE_FORCE_NO_OPAQUE_BIT_KHR;

@@ -14,6 +14,9 @@ struct BlasStats {
     std::string name;
     std::uint32_t geometries = 0, opaque_geometries = 0;
     std::uint64_t triangles = 0;
+    // Every material single-sided (and bounding no volume): its instances let the
+    // traversal cull back faces, and its opaque geometries need no any-hit (rt_plan.h).
+    bool culls_back_faces = false;
     std::uint32_t first_geometry = 0; // its first GPUGeometryInfo record
     // False when every instance of the mesh skins or morphs: only their posed BLAS
     // (PosedStats) are built, and this one's sizes are 0.

@@ -1,7 +1,8 @@
 #pragma once
 // A scene's ray-tracing data: one bottom-level acceleration structure per glTF mesh
 // (one geometry per triangle primitive, VK_GEOMETRY_OPAQUE_BIT only for opaque
-// materials, compacted), the GPUGeometryInfo array hit shaders read vertices and
+// materials whose sides need no any-hit, compacted; meshes of single-sided materials
+// let the traversal cull back faces), the GPUGeometryInfo array hit shaders read vertices and
 // materials through, and the top-level structure with one instance per (node, glTF
 // mesh). Built once on scene load, batched under a scratch budget; never per frame
 // (the TLAS is refitted or rebuilt on demand when transforms or visibility change).
@@ -68,19 +69,23 @@ public:
 
     // What follow_materials() changed.
     struct MaterialFollow {
-        std::uint32_t records = 0;     // geometry records whose material word was rewritten
-        std::uint64_t gpu_bytes = 0;   // uploaded: those material words
-        std::uint32_t forced_blas = 0; // BLAS built opaque that now need any-hit
-        bool tlas_rebuilt = false;     // at the loaded transforms: the caller poses it again
+        std::uint32_t records = 0;       // geometry records whose material word was rewritten
+        std::uint64_t gpu_bytes = 0;     // uploaded: those material words
+        std::uint32_t forced_blas = 0;   // BLAS built opaque that now need any-hit
+        std::uint32_t unculled_blas = 0; // BLAS built to cull back faces that now must not
+        bool tlas_rebuilt = false;       // at the loaded transforms: the caller poses it again
     };
     // After meshes took other materials (KHR_materials_variants): each geometry
     // record's material word follows its mesh's in `gpu`, so hit shaders shade the new
-    // material; no BLAS is rebuilt. A geometry built with VK_GEOMETRY_OPAQUE_BIT whose
-    // new material is masked, blended or single-sided needs any-hit: the TLAS instances
+    // material; no BLAS is rebuilt. Where a BLAS built to cull back faces now has a
+    // material that must not (double-sided, or bounding a volume), its instances stop
+    // culling (VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR). A geometry
+    // built with VK_GEOMETRY_OPAQUE_BIT whose new material is masked or blended, or
+    // single-sided where its instances do not cull, needs any-hit: the TLAS instances
     // of its BLAS get VK_GEOMETRY_INSTANCE_FORCE_NO_OPAQUE_BIT_KHR (the other
-    // geometries of those instances then run an any-hit that accepts them) and the TLAS
-    // is rebuilt; the flag goes when no geometry needs it. Waits; no frame may be using
-    // the structures.
+    // geometries of those instances then run an any-hit that accepts them or rejects
+    // their back faces) and the TLAS is rebuilt; the flags go when no geometry needs
+    // them. Waits; no frame may be using the structures.
     MaterialFollow follow_materials(const GpuScene& gpu);
 
 private:
@@ -89,6 +94,9 @@ private:
     void build_tlas(std::span<const glm::mat4> node_world);
     VkDeviceAddress blas_address(std::uint32_t blas) const;
     std::uint32_t first_geometry(std::uint32_t blas) const;
+    std::uint32_t plan_of(std::uint32_t blas) const; // its index in stats_.blas
+    // Whether the TLAS instances of `blas` let the traversal cull back faces.
+    bool instances_cull(std::uint32_t blas) const;
 
     gpu::ResourceManager& resources_;
     gpu::RayTracingFunctions fn_;
@@ -102,7 +110,10 @@ private:
     // Per geometry record: its engine mesh, whether it was built opaque, its material now.
     std::vector<std::uint32_t> record_mesh_, record_material_;
     std::vector<bool> record_opaque_;
-    std::vector<bool> force_no_opaque_; // per BLAS (static, then posed): follow_materials()
+    std::vector<bool> material_culls_; // per material: rt_plan.h's culls_back_faces()
+    // Per BLAS (static, then posed), from follow_materials(): its instances force
+    // any-hit, or no longer cull back faces (a material of it is now double-sided).
+    std::vector<bool> force_no_opaque_, cull_disabled_;
     gpu::BufferHandle records_, instances_;
     AccelerationStats stats_;
 };

@@ -124,11 +124,13 @@ struct VariantSwitch {
     bool culling_rebuilt = false; // an alpha mode or sidedness changed
     // With ray tracing: the geometry records whose material word followed (and their
     // bytes), the BLAS built opaque whose instances now force any-hit (a geometry whose
-    // new material is masked, blended or single-sided), and whether the TLAS was rebuilt
-    // for that. No BLAS is rebuilt.
+    // new material is masked, blended, or single-sided where the traversal does not cull),
+    // the BLAS built to cull back faces whose instances no longer do (a material of it is
+    // now double-sided), and whether the TLAS was rebuilt for those. No BLAS is rebuilt.
     std::uint32_t rt_records = 0;
     std::uint64_t rt_gpu_bytes = 0;
     std::uint32_t rt_forced_blas = 0;
+    std::uint32_t rt_unculled_blas = 0;
     bool tlas_rebuilt = false;
 };
 

@@ -51,10 +51,12 @@ function(sherpa_layer_test target layer)
   if(NOT deferred)
     set_property(DIRECTORY PROPERTY SHERPA_TEST_LABELS_CHECKED TRUE)
     cmake_language(DEFER CALL sherpa_check_test_labels)
+    cmake_language(DEFER CALL sherpa_set_test_environment)
   endif()
   if(arg_GTEST)
     gtest_discover_tests(${target} DISCOVERY_MODE PRE_TEST
-                         PROPERTIES LABELS ${layer} ${arg_PROPERTIES})
+                         PROPERTIES LABELS ${layer} ${arg_PROPERTIES}
+                         ENVIRONMENT_MODIFICATION "${SHERPA_TEST_ENVIRONMENT}")
   endif()
 endfunction()
 
@@ -121,6 +123,23 @@ endfunction()
 # of the whole tree) among its LABELS. Deferred to the end of each directory that
 # registers a test executable (get_test_property sees only the current directory's
 # tests); GoogleTest cases get their label from sherpa_layer_test(... GTEST).
+# What every test's environment adds (CTest ENVIRONMENT_MODIFICATION, which leaves the
+# tests' own ENVIRONMENT alone): one Mesa shader cache for every test, whatever
+# XDG_CACHE_HOME a test or suite points elsewhere (the editor suites isolate theirs).
+# lavapipe's LLVM compiles of the renderer's pipelines are much of a cold test run;
+# with a cache per kind of test each pipeline was compiled once per cache.
+set(SHERPA_TEST_ENVIRONMENT "MESA_SHADER_CACHE_DIR=set:${CMAKE_BINARY_DIR}/test-xdg-cache")
+
+# Gives the tests of the calling directory SHERPA_TEST_ENVIRONMENT (deferred to the end
+# of the directory, like sherpa_check_test_labels; discovered GoogleTest cases get it
+# through sherpa_layer_test).
+function(sherpa_set_test_environment)
+  get_property(tests DIRECTORY PROPERTY TESTS)
+  foreach(test ${tests})
+    set_property(TEST ${test} APPEND PROPERTY ENVIRONMENT_MODIFICATION ${SHERPA_TEST_ENVIRONMENT})
+  endforeach()
+endfunction()
+
 function(sherpa_check_test_labels)
   get_property(tests DIRECTORY PROPERTY TESTS)
   foreach(test ${tests})

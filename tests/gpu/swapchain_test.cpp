@@ -2,7 +2,7 @@
 // types stay out of the engine), a VkSurfaceKHR from it, frames presented under
 // the validation layer, a resize, the environment's background, and the pixels read
 // back from the X server.
-// Run under `xvfb-run -a`; without a display the tests are skipped.
+// Run under Xvfb (CTest: tests/xvfb_exec.sh); without a display the tests are skipped.
 #define VK_USE_PLATFORM_XCB_KHR
 #include <vulkan/vulkan.h>
 #include <xcb/xcb.h>
@@ -100,7 +100,7 @@ gpu::ContextOptions presenting_options() {
 class SwapchainTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no X display (run under xvfb-run -a)";
+        if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no X display (run under Xvfb)";
     }
 };
 

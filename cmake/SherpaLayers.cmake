@@ -36,6 +36,23 @@ function(sherpa_layer_rank layer out)
   set(${out} -1 PARENT_SCOPE)
 endfunction()
 
+# What every test's environment adds (CTest ENVIRONMENT_MODIFICATION, which leaves the
+# tests' own ENVIRONMENT alone): one Mesa shader cache for every test, whatever
+# XDG_CACHE_HOME a test or suite points elsewhere (the editor suites isolate theirs).
+# lavapipe's LLVM compiles of the renderer's pipelines are much of a cold test run;
+# with a cache per kind of test each pipeline was compiled once per cache.
+set(SHERPA_TEST_ENVIRONMENT "MESA_SHADER_CACHE_DIR=set:${CMAKE_BINARY_DIR}/test-xdg-cache")
+
+# Gives the tests of the calling directory SHERPA_TEST_ENVIRONMENT (deferred to the end
+# of the directory, like sherpa_check_test_labels; discovered GoogleTest cases get it
+# through sherpa_layer_test).
+function(sherpa_set_test_environment)
+  get_property(tests DIRECTORY PROPERTY TESTS)
+  foreach(test ${tests})
+    set_property(TEST ${test} APPEND PROPERTY ENVIRONMENT_MODIFICATION ${SHERPA_TEST_ENVIRONMENT})
+  endforeach()
+endfunction()
+
 # Registers test executable `target` as a test of `layer`: its link line is checked by
 # sherpa_check_layer_links(), and every test of its directory must have a layer label. GoogleTest executables pass GTEST [PROPERTIES ...] to
 # have their cases discovered with the layer as CTest LABEL (plus their properties);
@@ -123,23 +140,6 @@ endfunction()
 # of the whole tree) among its LABELS. Deferred to the end of each directory that
 # registers a test executable (get_test_property sees only the current directory's
 # tests); GoogleTest cases get their label from sherpa_layer_test(... GTEST).
-# What every test's environment adds (CTest ENVIRONMENT_MODIFICATION, which leaves the
-# tests' own ENVIRONMENT alone): one Mesa shader cache for every test, whatever
-# XDG_CACHE_HOME a test or suite points elsewhere (the editor suites isolate theirs).
-# lavapipe's LLVM compiles of the renderer's pipelines are much of a cold test run;
-# with a cache per kind of test each pipeline was compiled once per cache.
-set(SHERPA_TEST_ENVIRONMENT "MESA_SHADER_CACHE_DIR=set:${CMAKE_BINARY_DIR}/test-xdg-cache")
-
-# Gives the tests of the calling directory SHERPA_TEST_ENVIRONMENT (deferred to the end
-# of the directory, like sherpa_check_test_labels; discovered GoogleTest cases get it
-# through sherpa_layer_test).
-function(sherpa_set_test_environment)
-  get_property(tests DIRECTORY PROPERTY TESTS)
-  foreach(test ${tests})
-    set_property(TEST ${test} APPEND PROPERTY ENVIRONMENT_MODIFICATION ${SHERPA_TEST_ENVIRONMENT})
-  endforeach()
-endfunction()
-
 function(sherpa_check_test_labels)
   get_property(tests DIRECTORY PROPERTY TESTS)
   foreach(test ${tests})
